@@ -1,0 +1,71 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "cli/Cli.h"
+
+#include <ostream>
+
+#include "vv/core/Error.h"
+
+namespace vv::cli {
+
+namespace {
+
+constexpr const char* kUsageText =
+    "usage: vesselview-cli <command> [options]\n"
+    "\n"
+    "commands:\n"
+    "  info FILE... [--json] [--scale S]   meshes, triangle counts, arrays with ranges and units\n"
+    "  demo -o FILE.vtp [--seed N]         write the synthetic demo vessel tree\n"
+    "  render FILE -o IMAGE.png [--size WxH] [--array NAME]\n"
+    "                                       render a mesh file offscreen to PNG\n"
+    "  --version, --help\n"
+    "\n"
+    "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input,\n"
+    "            4 cannot write output\n";
+
+}  // namespace
+
+int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    if (args.empty()) {
+        err << kUsageText;
+        return kUsage;
+    }
+    const std::string& command = args.front();
+    const std::vector<std::string> rest(args.begin() + 1, args.end());
+    try {
+        if (command == "--help" || command == "-h" || command == "help") {
+            out << kUsageText;
+            return kOk;
+        }
+        if (command == "--version") {
+            out << "vesselview-cli " << VV_VERSION << "\n";
+            return kOk;
+        }
+        if (command == "info") {
+            return infoCommand(rest, out, err);
+        }
+        if (command == "demo") {
+            return demoCommand(rest, out, err);
+        }
+        if (command == "render") {
+            return renderCommand(rest, out, err);
+        }
+        throw UsageError("unknown command '" + command + "'");
+    } catch (const UsageError& e) {
+        err << "vesselview-cli: " << e.what() << "\n\n" << kUsageText;
+        return kUsage;
+    } catch (const OutputError& e) {
+        err << "vesselview-cli: " << e.what() << "\n";
+        return kCannotWrite;
+    } catch (const vv::InvalidArgumentError& e) {
+        err << "vesselview-cli: " << e.what() << "\n";
+        return kUsage;
+    } catch (const vv::Error& e) {
+        err << "vesselview-cli: " << e.what() << "\n";
+        return kInvalidInput;
+    } catch (const std::exception& e) {
+        err << "vesselview-cli: internal error: " << e.what() << "\n";
+        return kInternalError;
+    }
+}
+
+}  // namespace vv::cli
