@@ -1,1 +1,50 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include "vv/core/Image.h"
+
+namespace {
+
+TEST(Image, SizeStrideAndFill) {
+    vv::Image<float> img(5, 3, 1.5F, 8);
+    EXPECT_EQ(img.width(), 5);
+    EXPECT_EQ(img.height(), 3);
+    EXPECT_EQ(img.stride(), 8);
+    EXPECT_EQ(img.pixelCount(), 15U);
+    EXPECT_FLOAT_EQ(img(4, 2), 1.5F);
+    img(4, 2) = 7.0F;
+    // Row y starts stride elements after row y-1.
+    EXPECT_EQ(img.row(2) - img.row(1), 8);
+    EXPECT_FLOAT_EQ(img.data()[2 * 8 + 4], 7.0F);
+}
+
+TEST(Image, DefaultIsEmptyAndBadSizesThrow) {
+    const vv::Image<int> empty;
+    EXPECT_TRUE(empty.empty());
+    EXPECT_TRUE(vv::Image<int>(0, 4).empty());
+    EXPECT_THROW(vv::Image<int>(-1, 4), vv::InvalidArgumentError);
+    EXPECT_THROW(vv::Image<int>(4, 4, 0, 3), vv::InvalidArgumentError);
+}
+
+TEST(Image, SubViewAliasesStorage) {
+    vv::Image<int> img(6, 4, 0);
+    auto sub = img.view().sub(2, 1, 3, 2);
+    EXPECT_EQ(sub.width(), 3);
+    EXPECT_EQ(sub.height(), 2);
+    EXPECT_EQ(sub.stride(), 6);
+    sub(0, 0) = 5;
+    sub(2, 1) = 9;
+    EXPECT_EQ(img(2, 1), 5);
+    EXPECT_EQ(img(4, 2), 9);
+    EXPECT_THROW((void)img.view().sub(4, 0, 3, 1), vv::InvalidArgumentError);
+    EXPECT_THROW((void)img.view().sub(0, -1, 1, 1), vv::InvalidArgumentError);
+}
+
+TEST(Image, ConstViewConversion) {
+    vv::Image<int> img(2, 2, 3);
+    const vv::ImageView<const int> view = img.view();
+    EXPECT_EQ(view(1, 1), 3);
+    EXPECT_EQ(view.data(), img.data());
+}
+
+}  // namespace
