@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <memory>
+#include <stop_token>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "vv/core/Image.h"
+
+namespace vv::vss {
+
+/// A contour pixel of a void region: a vessel pixel 8-adjacent to the region,
+/// at pixel centre (x, y), with its normalised depth z in [0, 1].
+struct ContourPoint {
+    int x = 0;
+    int y = 0;
+    float z = 0.0F;
+};
+
+/// One void region: a 4-connected component of background pixels.
+struct VoidRegion {
+    std::int32_t id = 0;                ///< its value in the label image
+    std::vector<ContourPoint> contour;  ///< may be empty (no vessel at all: no VSS)
+    std::int64_t pixelCount = 0;        ///< number of background pixels in the region
+    int x0 = 0;                         ///< bounding box of its pixels: [x0, x1) × [y0, y1)
+    int y0 = 0;
+    int x1 = 0;
+    int y1 = 0;
+};
+
+/// Label image value of vessel pixels (every void pixel has its region id >= 0).
+inline constexpr std::int32_t kVesselLabel = -1;
+
+enum class SolverKind {
+    Reference,  ///< double precision, every contour pixel: the exact answer
+    Brute,      ///< float, vectorisable, threaded, every contour pixel
+    Step,       ///< the paper's variant: every k-th contour pixel
+    Fast,       ///< the product default: accelerated, meets a tolerance
+};
+
+/// Parses "reference", "brute", "step", "fast"; throws InvalidArgumentError otherwise.
+[[nodiscard]] SolverKind parseSolverKind(std::string_view name);
+[[nodiscard]] std::string_view toString(SolverKind kind) noexcept;
+
+struct SolverOptions {
+    SolverKind kind = SolverKind::Fast;
+    double p = 2.0;                    ///< IDW power, 0.25 <= p <= 64 (wider is allowed but untested)
+    int step = 3;                      ///< Step solver: every k-th contour pixel, k >= 1
+    double tolerance = 0.5 / 255.0;    ///< Fast solver: max abs error of z' (normalised depth)
+};
+
+/// Interpolates z' (VSS.md, "Interpolation") for the void pixels of regions.
+/// Implementations must keep the properties of VSS.md: bounded by the
+/// region's contour depths, no NaN / Inf for any p in range, weights scaled
+/// by the nearest contour distance (computed in log space), invariance.
+class Solver {
+public:
+    Solver() = default;
+    Solver(const Solver&) = delete;
+    Solver& operator=(const Solver&) = delete;
+    Solver(Solver&&) = delete;
+    Solver& operator=(Solver&&) = delete;
+    virtual ~Solver() = default;
+
+    /// Writes z' into out(x, y) for every pixel with labels(x, y) == region.id
+    /// and leaves every other pixel of `out` untouched. A region with an empty
+    /// contour gets NaN (no VSS). May run in parallel internally (vv::parallelFor)
+    /// and may be called concurrently for different regions.
+    /// Throws CancelledError when `stop` is requested.
+    virtual void solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
+                             ImageView<float> out, const std::stop_token& stop) const = 0;
+
+    /// An upper bound of the max abs error of z' this solver guarantees
+    /// (0 for reference / brute up to round-off; the tolerance for fast;
+    /// NaN when there is no guarantee, as for step).
+    [[nodiscard]] virtual double errorBound() const noexcept = 0;
+};
+
+/// Makes the solver selected by `options`. Throws InvalidArgumentError for
+/// p <= 0 or non-finite, step < 1, tolerance <= 0 or non-finite.
+[[nodiscard]] std::unique_ptr<Solver> makeSolver(const SolverOptions& options);
+
+}  // namespace vv::vss
