@@ -15,8 +15,12 @@ constexpr const char* kUsageText =
     "commands:\n"
     "  info FILE... [--json] [--scale S]   meshes, triangle counts, arrays with ranges and units\n"
     "  demo -o FILE.vtp [--seed N]         write the synthetic demo vessel tree\n"
-    "  render FILE -o IMAGE.png [--size WxH] [--array NAME]\n"
-    "                                       render a mesh file offscreen to PNG\n"
+    "  render FILE -o IMAGE.png [--size WxH] [--array NAME|none] [--colormap NAME]\n"
+    "         [--background #rrggbb]        render a mesh file offscreen to PNG\n"
+    "                                       (needs an X display; use xvfb-run -a)\n"
+    "  vss --depth IN.pfm -o OUT.pfm [--p P] [--solver NAME] [--step K] [--tolerance T]\n"
+    "      [--fixed-range A,B] [--labels OUT.png] [--stats]\n"
+    "                                       void space surface of a PFM depth image\n"
     "  --version, --help\n"
     "\n"
     "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input,\n"
@@ -49,6 +53,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         if (command == "render") {
             return renderCommand(rest, out, err);
         }
+        if (command == "vss") {
+            return vssCommand(rest, out, err);
+        }
         throw UsageError("unknown command '" + command + "'");
     } catch (const UsageError& e) {
         err << "vesselview-cli: " << e.what() << "\n\n" << kUsageText;
@@ -56,6 +63,10 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     } catch (const OutputError& e) {
         err << "vesselview-cli: " << e.what() << "\n";
         return kCannotWrite;
+    } catch (const vv::RenderError& e) {
+        // No usable OpenGL: not the input's fault.
+        err << "vesselview-cli: cannot render: " << e.what() << "\n";
+        return kInternalError;
     } catch (const vv::InvalidArgumentError& e) {
         err << "vesselview-cli: " << e.what() << "\n";
         return kUsage;

@@ -1,1 +1,225 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// vesselview-cli render FILE -o IMAGE.png [--size WxH] [--array NAME|none]
+//                            [--colormap NAME] [--background #rrggbb]
+#include <QFile>
+#include <QGuiApplication>
+#include <QImage>
+#include <QString>
+#include <charconv>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cli/Cli.h"
+#include "vv/colormaps/ColorMap.h"
+#include "vv/core/AtomicFile.h"
+#include "vv/core/Error.h"
+#include "vv/io/MeshLoader.h"
+#include "vv/render/MeshRenderer.h"
+#include "vv/render/OffscreenRenderer.h"
+
+namespace vv::cli {
+
+namespace {
+
+struct RenderArguments {
+    std::filesystem::path input;
+    std::filesystem::path output;
+    int width = 1600;
+    int height = 1200;
+    std::optional<std::string> array;  ///< nullopt: default (wss when present); "" = none
+    colormaps::ColorMap colorMap = colormaps::ColorMap::Viridis;
+    glm::vec3 background{0.13F, 0.14F, 0.16F};
+};
+
+int parseInt(const std::string& text, const std::string& what) {
+    int value = 0;
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (ec != std::errc() || ptr != end) {
+        throw UsageError("invalid " + what + " '" + text + "'");
+    }
+    return value;
+}
+
+std::pair<int, int> parseSize(const std::string& text) {
+    const auto x = text.find_first_of("xX");
+    if (x == std::string::npos) {
+        throw UsageError("--size must be WIDTHxHEIGHT (e.g. 1600x1200), got '" + text + "'");
+    }
+    const int w = parseInt(text.substr(0, x), "--size width");
+    const int h = parseInt(text.substr(x + 1), "--size height");
+    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
+        throw UsageError("--size must be within 1x1..16384x16384, got '" + text + "'");
+    }
+    return {w, h};
+}
+
+glm::vec3 parseColor(const std::string& text) {
+    const bool ok = text.size() == 7 && text[0] == '#' &&
+                    text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
+    if (!ok) {
+        throw UsageError("--background must be #rrggbb, got '" + text + "'");
+    }
+    const auto channel = [&](std::size_t at) {
+        return static_cast<float>(std::stoi(text.substr(at, 2), nullptr, 16)) / 255.0F;
+    };
+    return {channel(1), channel(3), channel(5)};
+}
+
+RenderArguments parse(const std::vector<std::string>& args) {
+    RenderArguments parsed;
+    bool haveInput = false;
+    bool haveOutput = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) {
+                throw UsageError("render: " + a + " needs a value");
+            }
+            return args[++i];
+        };
+        if (a == "-o" || a == "--output") {
+            parsed.output = value();
+            haveOutput = true;
+        } else if (a == "--size") {
+            const auto [w, h] = parseSize(value());
+            parsed.width = w;
+            parsed.height = h;
+        } else if (a == "--array") {
+            const std::string& name = value();
+            parsed.array = (name == "none" || name == "None" || name.empty()) ? "" : name;
+        } else if (a == "--colormap") {
+            const std::string& name = value();
+            const auto map = colormaps::colorMapFromName(name);
+            if (!map) {
+                std::string known;
+                for (const auto m : colormaps::allColorMaps()) {
+                    known += (known.empty() ? "" : ", ") + std::string(colormaps::name(m));
+                }
+                throw UsageError("unknown colour map '" + name + "' (known: " + known + ")");
+            }
+            parsed.colorMap = *map;
+        } else if (a == "--background") {
+            parsed.background = parseColor(value());
+        } else if (!a.empty() && a[0] == '-' && a != "-") {
+            throw UsageError("render: unknown option '" + a + "'");
+        } else if (!haveInput) {
+            parsed.input = a;
+            haveInput = true;
+        } else {
+            throw UsageError("render: takes one input file, got a second one '" + a + "'");
+        }
+    }
+    if (!haveInput) {
+        throw UsageError("render: no input file");
+    }
+    if (!haveOutput || parsed.output.empty()) {
+        throw UsageError("render: no output image (-o IMAGE.png)");
+    }
+    return parsed;
+}
+
+/// The application object offscreen rendering needs, made once per process
+/// when the caller has none. Without a display it uses Qt's "offscreen"
+/// platform rather than letting xcb abort the process; rendering then fails
+/// with a RenderError that says OpenGL is missing.
+void ensureGuiApplication() {
+    if (QCoreApplication::instance() != nullptr) {
+        if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
+            throw RenderError("render needs a QGuiApplication, the process has a QCoreApplication");
+        }
+        return;
+    }
+    const bool platformChosen = !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+    const bool haveDisplay =
+        !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    static int argc = 1;
+    static char name[] = "vesselview-cli";
+    static char platformFlag[] = "-platform";
+    static char offscreen[] = "offscreen";
+    static char* argv[] = {name, nullptr, nullptr, nullptr};
+    if (!platformChosen && !haveDisplay) {
+        argv[1] = platformFlag;
+        argv[2] = offscreen;
+        argc = 3;
+    }
+    // Lives until the process ends: Qt allows one application object, and
+    // tearing it down during static destruction is fragile.
+    new QGuiApplication(argc, argv);
+}
+
+}  // namespace
+
+int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    static_cast<void>(err);
+    const RenderArguments parsed = parse(args);
+    // Fail before the (possibly long) load and render when the output cannot be written.
+    {
+        std::error_code ec;
+        const std::filesystem::path folder =
+            parsed.output.has_parent_path() ? parsed.output.parent_path() : ".";
+        if (!std::filesystem::is_directory(folder, ec)) {
+            throw OutputError(parsed.output.string() + ": cannot write: folder '" +
+                              folder.string() + "' does not exist");
+        }
+        if (std::filesystem::is_directory(parsed.output, ec)) {
+            throw OutputError(parsed.output.string() + ": cannot write: it is a folder");
+        }
+    }
+
+    io::Scene scene;
+    scene.meshes.push_back(io::loadMesh(parsed.input));
+
+    render::OffscreenOptions options;
+    options.width = parsed.width;
+    options.height = parsed.height;
+    options.background = parsed.background;
+    options.style.colorMap = parsed.colorMap;
+    options.style.array = parsed.array.value_or(render::defaultArrayName(scene));
+    if (!options.style.array.empty() &&
+        scene.meshes.front().pointArray(options.style.array) == nullptr) {
+        std::string known;
+        for (const auto& name : render::pointArrayNames(scene)) {
+            known += (known.empty() ? "" : ", ") + name;
+        }
+        throw UsageError("'" + parsed.input.string() + "' has no point array '" +
+                         options.style.array + "' (it has: " + (known.empty() ? "none" : known) +
+                         ")");
+    }
+
+    ensureGuiApplication();
+    render::OffscreenRenderer renderer;
+    const QImage image = renderer.render(scene, options);
+
+    try {
+        writeAtomically(parsed.output, [&](const std::filesystem::path& temporary) {
+            // The temporary name has no .png suffix: the format is explicit.
+            if (!image.save(QFile::decodeName(temporary.c_str()), "PNG")) {
+                throw IoError(parsed.output, "cannot write the PNG image");
+            }
+        });
+    } catch (const IoError& e) {
+        throw OutputError(e.what());
+    }
+
+    out << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
+    if (options.style.array.empty()) {
+        out << ", no array";
+    } else {
+        out << ", " << options.style.array << " through " << colormaps::name(parsed.colorMap);
+        if (const auto range = renderer.lastRange()) {
+            out << " over [" << range->first << ", " << range->second << "]";
+        } else {
+            out << ", no finite values";
+        }
+    }
+    out << ")\n";
+    return kOk;
+}
+
+}  // namespace vv::cli

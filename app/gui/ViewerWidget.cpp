@@ -1,1 +1,287 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/ViewerWidget.h"
+
+#include <QGuiApplication>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions>
+#include <QPainter>
+#include <QTimer>
+#include <QWheelEvent>
+#include <cmath>
+
+#include "vv/core/Error.h"
+
+namespace vv::gui {
+
+ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
+    setFormat(requiredFormat());
+    setFocusPolicy(Qt::StrongFocus);
+    setMinimumSize(160, 120);
+    setToolTip(
+        tr("Left-drag: rotate · Right/middle or Shift+left-drag: pan · Wheel: zoom\n"
+           "R: reset view · F: fit to data"));
+}
+
+ViewerWidget::~ViewerWidget() {
+    releaseGl();
+}
+
+QSurfaceFormat ViewerWidget::requiredFormat() {
+    QSurfaceFormat format;
+    format.setRenderableType(QSurfaceFormat::OpenGL);
+    format.setVersion(4, 1);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    format.setStencilBufferSize(8);
+    format.setSamples(4);
+    return format;
+}
+
+void ViewerWidget::installDefaultFormat() {
+    QSurfaceFormat::setDefaultFormat(requiredFormat());
+}
+
+QString ViewerWidget::probeOpenGl() {
+    QOpenGLContext context;
+    context.setFormat(requiredFormat());
+    if (!context.create()) {
+        return tr("No OpenGL context can be created here (platform '%1'). VesselView needs "
+                  "OpenGL 4.1 (core profile): update the graphics driver, or run with Mesa's "
+                  "software renderer (LIBGL_ALWAYS_SOFTWARE=1).")
+            .arg(QGuiApplication::platformName());
+    }
+    const QSurfaceFormat f = context.format();
+    if (context.isOpenGLES() || f.majorVersion() < 4 ||
+        (f.majorVersion() == 4 && f.minorVersion() < 1)) {
+        return tr("VesselView needs OpenGL 4.1 (core profile); this system offers %1 %2.%3. "
+                  "Update the graphics driver, or run with Mesa's software renderer "
+                  "(LIBGL_ALWAYS_SOFTWARE=1).")
+            .arg(context.isOpenGLES() ? QStringLiteral("OpenGL ES") : QStringLiteral("OpenGL"))
+            .arg(f.majorVersion())
+            .arg(f.minorVersion());
+    }
+    return {};
+}
+
+void ViewerWidget::setUnavailable(const QString& reason) {
+    fail(reason);
+    update();
+}
+
+void ViewerWidget::releaseGl() {
+    if (context() == nullptr) {
+        return;
+    }
+    makeCurrent();
+    renderer_.release();
+    doneCurrent();
+}
+
+void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
+    scene_ = std::move(scene);
+    sceneDirty_ = true;
+    framesWithScene_ = 0;
+    camera_.setViewport(width(), height());
+    camera_.reset();
+    camera_.fit(scene_ ? scene_->bounds() : Aabb{});
+    autoFit_ = true;
+    update();
+}
+
+void ViewerWidget::setStyle(const render::MeshStyle& style) {
+    style_ = style;
+    styleDirty_ = true;
+    update();
+}
+
+void ViewerWidget::setBackground(const glm::vec3& color) {
+    background_ = color;
+    update();
+}
+
+void ViewerWidget::setCamera(const render::Camera& camera) {
+    camera_ = camera;
+    camera_.setViewport(width(), height());
+    autoFit_ = false;
+    update();
+}
+
+void ViewerWidget::resetCamera() {
+    camera_.setViewport(width(), height());
+    camera_.reset();
+    autoFit_ = true;
+    update();
+}
+
+void ViewerWidget::fitToData() {
+    camera_.setViewport(width(), height());
+    camera_.fit(scene_ ? scene_->bounds() : camera_.sceneBounds());
+    autoFit_ = true;
+    update();
+}
+
+void ViewerWidget::fail(const QString& message) {
+    if (!error_.isEmpty()) {
+        return;
+    }
+    error_ = message;
+    // Let the caller of paintGL / initializeGL finish first.
+    QTimer::singleShot(0, this, [this] { emit renderFailed(error_); });
+}
+
+void ViewerWidget::showEvent(QShowEvent* event) {
+    QOpenGLWidget::showEvent(event);
+    // A widget that could not make any context never calls initializeGL.
+    QTimer::singleShot(2000, this, [this] {
+        if (isVisible() && error_.isEmpty() && (context() == nullptr || !context()->isValid())) {
+            fail(
+                tr("OpenGL could not be initialised: VesselView needs OpenGL 4.1 (core "
+                   "profile). Update the graphics driver, or run with Mesa's software "
+                   "renderer (LIBGL_ALWAYS_SOFTWARE=1)."));
+            update();
+        }
+    });
+}
+
+void ViewerWidget::initializeGL() {
+    QOpenGLContext* ctx = context();
+    if (ctx == nullptr || !ctx->isValid()) {
+        fail(tr("OpenGL could not be initialised: no valid OpenGL context."));
+        return;
+    }
+    connect(ctx, &QOpenGLContext::aboutToBeDestroyed, this, &ViewerWidget::releaseGl,
+            Qt::UniqueConnection);
+    try {
+        renderer_.initialize();
+        glDescription_ = QString::fromStdString(renderer_.glDescription());
+        sceneDirty_ = true;
+        styleDirty_ = true;
+    } catch (const vv::Error& e) {
+        const QSurfaceFormat f = ctx->format();
+        fail(tr("VesselView needs OpenGL 4.1 (core profile); this system offers OpenGL "
+                "%1.%2.\n\n%3\n\nUpdate the graphics driver, or run with Mesa's software "
+                "renderer (LIBGL_ALWAYS_SOFTWARE=1).")
+                 .arg(f.majorVersion())
+                 .arg(f.minorVersion())
+                 .arg(QString::fromStdString(e.what())));
+    }
+}
+
+void ViewerWidget::resizeGL(int w, int h) {
+    // The camera works in logical pixels, like the mouse events.
+    Q_UNUSED(w);
+    Q_UNUSED(h);
+    camera_.setViewport(width(), height());
+}
+
+void ViewerWidget::paintMessage(const QString& text) {
+    QPainter painter(this);
+    painter.fillRect(rect(), QColor(40, 40, 44));
+    painter.setPen(Qt::white);
+    QFont font = painter.font();
+    font.setPointSizeF(font.pointSizeF() * 1.2);
+    painter.setFont(font);
+    painter.drawText(rect().adjusted(24, 24, -24, -24), Qt::AlignCenter | Qt::TextWordWrap, text);
+}
+
+void ViewerWidget::paintGL() {
+    if (!error_.isEmpty() || !renderer_.initialized()) {
+        paintMessage(error_.isEmpty() ? tr("OpenGL is not available.") : error_);
+        return;
+    }
+    try {
+        if (sceneDirty_) {
+            renderer_.setScene(scene_);
+            sceneDirty_ = false;
+            styleDirty_ = true;
+        }
+        if (styleDirty_) {
+            renderer_.setStyle(style_);
+            styleDirty_ = false;
+        }
+        QOpenGLFunctions* f = context()->functions();
+        f->glClearColor(background_.r, background_.g, background_.b, 1.0F);
+        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        camera_.setViewport(width(), height());
+        if (autoFit_) {
+            // Until the user moves the camera, keep the data framed as the widget resizes.
+            camera_.fit(camera_.sceneBounds());
+        }
+        renderer_.draw(camera_);
+        shownRange_ = renderer_.effectiveRange();
+    } catch (const vv::Error& e) {
+        fail(tr("Drawing failed: %1").arg(QString::fromStdString(e.what())));
+        paintMessage(error_);
+        return;
+    }
+    if (scene_) {
+        ++framesWithScene_;
+    }
+    emit frameRendered();
+}
+
+void ViewerWidget::mousePressEvent(QMouseEvent* event) {
+    lastMouse_ = event->position();
+    const bool shift = (event->modifiers() & Qt::ShiftModifier) != 0;
+    if (event->button() == Qt::LeftButton) {
+        drag_ = shift ? Drag::Pan : Drag::Rotate;
+    } else if (event->button() == Qt::RightButton || event->button() == Qt::MiddleButton) {
+        drag_ = Drag::Pan;
+    }
+    event->accept();
+}
+
+void ViewerWidget::mouseMoveEvent(QMouseEvent* event) {
+    const QPointF position = event->position();
+    const glm::vec2 from(static_cast<float>(lastMouse_.x()), static_cast<float>(lastMouse_.y()));
+    const glm::vec2 to(static_cast<float>(position.x()), static_cast<float>(position.y()));
+    if (drag_ != Drag::None) {
+        autoFit_ = false;
+    }
+    if (drag_ == Drag::Rotate) {
+        camera_.rotate(from, to);
+        update();
+    } else if (drag_ == Drag::Pan) {
+        camera_.pan(to - from);
+        update();
+    }
+    lastMouse_ = position;
+    event->accept();
+}
+
+void ViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
+    if (event->buttons() == Qt::NoButton) {
+        drag_ = Drag::None;
+    }
+    event->accept();
+}
+
+void ViewerWidget::wheelEvent(QWheelEvent* event) {
+    // 120 units = one notch; each notch zooms by 15 %.
+    const double notches = event->angleDelta().y() / 120.0;
+    if (notches != 0.0) {
+        autoFit_ = false;
+        camera_.zoom(static_cast<float>(std::pow(1.15, notches)));
+        update();
+    }
+    event->accept();
+}
+
+void ViewerWidget::keyPressEvent(QKeyEvent* event) {
+    switch (event->key()) {
+        case Qt::Key_R:
+            resetCamera();
+            event->accept();
+            return;
+        case Qt::Key_F:
+            fitToData();
+            event->accept();
+            return;
+        default:
+            QOpenGLWidget::keyPressEvent(event);
+    }
+}
+
+}  // namespace vv::gui

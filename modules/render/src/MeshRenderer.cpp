@@ -1,1 +1,504 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/render/MeshRenderer.h"
+
+#include <QByteArray>
+#include <QFile>
+#include <QOpenGLContext>
+#include <QOpenGLFunctions_4_1_Core>
+#include <QOpenGLVersionFunctionsFactory>
+#include <QSurfaceFormat>
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <string>
+
+#include "vv/core/Error.h"
+
+namespace vv::render {
+
+namespace {
+
+constexpr GLuint kPositionLocation = 0;
+constexpr GLuint kNormalLocation = 1;
+constexpr GLuint kScalarLocation = 2;
+
+struct Vertex {
+    glm::vec3 position;
+    glm::vec3 normal;
+};
+static_assert(sizeof(Vertex) == 6 * sizeof(float), "Vertex must be tightly packed");
+
+std::string lower(std::string s) {
+    std::transform(s.begin(), s.end(), s.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return s;
+}
+
+QByteArray readResource(const QString& path) {
+    QFile file(path);
+    if (!file.open(QIODevice::ReadOnly)) {
+        throw RenderError(path.toStdString(), "cannot read shader resource");
+    }
+    return file.readAll();
+}
+
+std::string shaderLog(QOpenGLFunctions_4_1_Core& gl, GLuint shader) {
+    GLint length = 0;
+    gl.glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    gl.glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    log.resize(std::char_traits<char>::length(log.c_str()));
+    return log;
+}
+
+std::string programLog(QOpenGLFunctions_4_1_Core& gl, GLuint program) {
+    GLint length = 0;
+    gl.glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
+    gl.glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+    log.resize(std::char_traits<char>::length(log.c_str()));
+    return log;
+}
+
+GLuint compileShader(QOpenGLFunctions_4_1_Core& gl, GLenum type, const QString& resource) {
+    const QByteArray source = readResource(resource);
+    const GLuint shader = gl.glCreateShader(type);
+    if (shader == 0) {
+        throw RenderError(resource.toStdString(), "glCreateShader failed");
+    }
+    const char* text = source.constData();
+    const GLint length = static_cast<GLint>(source.size());
+    gl.glShaderSource(shader, 1, &text, &length);
+    gl.glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const std::string log = shaderLog(gl, shader);
+        gl.glDeleteShader(shader);
+        throw RenderError(resource.toStdString(), "shader does not compile:\n" + log);
+    }
+    return shader;
+}
+
+/// The per-vertex (value, valid) pairs of `name` on `mesh`; (0, 0) where the
+/// value is NaN / infinite or the mesh lacks the array.
+std::vector<glm::vec2> scalarsFor(const io::Mesh& mesh, const std::string& name) {
+    std::vector<glm::vec2> out(mesh.vertexCount(), glm::vec2(0.0F));
+    if (name.empty()) {
+        return out;
+    }
+    const io::DataArray* array = mesh.pointArray(name);
+    if (array == nullptr || array->components < 1 || array->tupleCount() != mesh.vertexCount()) {
+        return out;
+    }
+    const auto components = static_cast<std::size_t>(array->components);
+    for (std::size_t i = 0; i < out.size(); ++i) {
+        float value = 0.0F;
+        if (components == 1) {
+            value = array->values[i];
+        } else {
+            double sum = 0.0;
+            for (std::size_t c = 0; c < components; ++c) {
+                const double v = array->values[i * components + c];
+                sum += v * v;
+            }
+            value = static_cast<float>(std::sqrt(sum));
+        }
+        if (std::isfinite(value)) {
+            out[i] = glm::vec2(value, 1.0F);
+        }
+    }
+    return out;
+}
+
+void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what) {
+    const GLenum error = gl.glGetError();
+    if (error == GL_OUT_OF_MEMORY) {
+        throw RenderError(std::string(what) + ": out of GPU memory");
+    }
+    if (error != GL_NO_ERROR) {
+        throw RenderError(std::string(what) + ": OpenGL error 0x" + [error] {
+            char buffer[16];
+            std::snprintf(buffer, sizeof buffer, "%04x", error);
+            return std::string(buffer);
+        }());
+    }
+}
+
+}  // namespace
+
+std::string defaultArrayName(const io::Scene& scene) {
+    for (const auto& wanted : {"wss", "wall_shear_stress", "wallshearstress"}) {
+        for (const auto& mesh : scene.meshes) {
+            for (const auto& array : mesh.pointArrays) {
+                if (lower(array.name) == wanted) {
+                    return array.name;
+                }
+            }
+        }
+    }
+    return {};
+}
+
+std::vector<std::string> pointArrayNames(const io::Scene& scene) {
+    std::vector<std::string> names;
+    for (const auto& mesh : scene.meshes) {
+        for (const auto& array : mesh.pointArrays) {
+            if (std::find(names.begin(), names.end(), array.name) == names.end()) {
+                names.push_back(array.name);
+            }
+        }
+    }
+    return names;
+}
+
+std::optional<std::pair<float, float>> arrayRange(const io::Scene& scene, const std::string& name) {
+    std::optional<std::pair<float, float>> range;
+    for (const auto& mesh : scene.meshes) {
+        const io::DataArray* array = mesh.pointArray(name);
+        if (array == nullptr) {
+            continue;
+        }
+        const auto r = array->finiteRange();
+        if (!r) {
+            continue;
+        }
+        if (!range) {
+            range = r;
+        } else {
+            range->first = std::min(range->first, r->first);
+            range->second = std::max(range->second, r->second);
+        }
+    }
+    return range;
+}
+
+struct MeshRenderer::GpuMesh {
+    GLuint vao = 0;
+    GLuint vertices = 0;
+    GLuint scalars = 0;
+    GLuint indices = 0;
+    GLsizei indexCount = 0;
+};
+
+MeshRenderer::MeshRenderer() = default;
+
+MeshRenderer::~MeshRenderer() {
+    if (context_ != nullptr && QOpenGLContext::currentContext() == context_) {
+        release();
+    }
+    // Otherwise the GL objects go with their context.
+}
+
+QOpenGLFunctions_4_1_Core& MeshRenderer::gl() const {
+    if (gl_ == nullptr) {
+        throw RenderError("MeshRenderer used before initialize()");
+    }
+    if (QOpenGLContext::currentContext() != context_) {
+        throw RenderError("MeshRenderer used without its OpenGL context current");
+    }
+    return *gl_;
+}
+
+bool MeshRenderer::initialized() const noexcept {
+    return gl_ != nullptr && program_ != 0;
+}
+
+void MeshRenderer::initialize() {
+    QOpenGLContext* context = QOpenGLContext::currentContext();
+    if (context == nullptr) {
+        throw RenderError("no current OpenGL context");
+    }
+    const QSurfaceFormat format = context->format();
+    if (context->isOpenGLES() || format.majorVersion() < 4 ||
+        (format.majorVersion() == 4 && format.minorVersion() < 1)) {
+        throw RenderError("OpenGL 4.1 core is needed, the context has " +
+                          std::string(context->isOpenGLES() ? "OpenGL ES " : "OpenGL ") +
+                          std::to_string(format.majorVersion()) + "." +
+                          std::to_string(format.minorVersion()));
+    }
+    auto* functions = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_1_Core>(context);
+    if (functions == nullptr || !functions->initializeOpenGLFunctions()) {
+        throw RenderError("cannot resolve the OpenGL 4.1 core functions");
+    }
+    if (gl_ != nullptr && context_ == context) {
+        release();
+    }
+    gl_ = functions;
+    context_ = context;
+    // Objects of an earlier context are gone with it: upload everything anew.
+    meshes_.clear();
+    program_ = 0;
+    lutTexture_ = 0;
+    uploadedMap_.reset();
+    scalarsUploadedForArray_ = false;
+    auto& f = *gl_;
+
+    const GLuint vertex =
+        compileShader(f, GL_VERTEX_SHADER, QStringLiteral(":/vv/shaders/mesh.vert"));
+    GLuint fragment = 0;
+    try {
+        fragment = compileShader(f, GL_FRAGMENT_SHADER, QStringLiteral(":/vv/shaders/mesh.frag"));
+    } catch (...) {
+        f.glDeleteShader(vertex);
+        throw;
+    }
+    const GLuint program = f.glCreateProgram();
+    f.glAttachShader(program, vertex);
+    f.glAttachShader(program, fragment);
+    f.glBindAttribLocation(program, kPositionLocation, "aPosition");
+    f.glBindAttribLocation(program, kNormalLocation, "aNormal");
+    f.glBindAttribLocation(program, kScalarLocation, "aScalar");
+    f.glBindFragDataLocation(program, 0, "fragColor");
+    f.glLinkProgram(program);
+    f.glDetachShader(program, vertex);
+    f.glDetachShader(program, fragment);
+    f.glDeleteShader(vertex);
+    f.glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    f.glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const std::string log = programLog(f, program);
+        f.glDeleteProgram(program);
+        throw RenderError("mesh shader program does not link:\n" + log);
+    }
+    program_ = program;
+
+    f.glGenTextures(1, &lutTexture_);
+    uploadedMap_.reset();
+    uploadLut();
+    throwOnGlError(f, "MeshRenderer::initialize");
+}
+
+void MeshRenderer::release() noexcept {
+    if (gl_ == nullptr || QOpenGLContext::currentContext() != context_) {
+        meshes_.clear();
+        return;
+    }
+    auto& f = *gl_;
+    for (auto& m : meshes_) {
+        f.glDeleteVertexArrays(1, &m.vao);
+        f.glDeleteBuffers(1, &m.vertices);
+        f.glDeleteBuffers(1, &m.scalars);
+        f.glDeleteBuffers(1, &m.indices);
+    }
+    meshes_.clear();
+    if (lutTexture_ != 0) {
+        f.glDeleteTextures(1, &lutTexture_);
+        lutTexture_ = 0;
+    }
+    if (program_ != 0) {
+        f.glDeleteProgram(program_);
+        program_ = 0;
+    }
+    uploadedMap_.reset();
+    scalarsUploadedForArray_ = false;
+}
+
+void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
+    auto& f = gl();
+    for (auto& m : meshes_) {
+        f.glDeleteVertexArrays(1, &m.vao);
+        f.glDeleteBuffers(1, &m.vertices);
+        f.glDeleteBuffers(1, &m.scalars);
+        f.glDeleteBuffers(1, &m.indices);
+    }
+    meshes_.clear();
+    scene_ = std::move(scene);
+    scalarsUploadedForArray_ = false;
+    updateRange();
+    if (!scene_) {
+        return;
+    }
+
+    for (const auto& mesh : scene_->meshes) {
+        const std::size_t n = mesh.vertexCount();
+        if (mesh.indices.size() > static_cast<std::size_t>(std::numeric_limits<GLsizei>::max()) ||
+            n > std::numeric_limits<std::uint32_t>::max()) {
+            throw InvalidArgumentError(mesh.source,
+                                       "mesh '" + mesh.name + "' is too large to draw at once");
+        }
+        for (const auto index : mesh.indices) {
+            if (index >= n) {
+                throw InvalidArgumentError(
+                    mesh.source, "mesh '" + mesh.name + "' has a triangle index out of range");
+            }
+        }
+        io::Mesh withNormals;
+        const std::vector<glm::vec3>* normals = &mesh.normals;
+        if (mesh.normals.size() != n) {
+            withNormals.positions = mesh.positions;
+            withNormals.indices = mesh.indices;
+            io::computeNormals(withNormals);
+            normals = &withNormals.normals;
+        }
+        std::vector<Vertex> vertices(n);
+        for (std::size_t i = 0; i < n; ++i) {
+            vertices[i] = Vertex{mesh.positions[i], (*normals)[i]};
+        }
+
+        GpuMesh gpu;
+        f.glGenVertexArrays(1, &gpu.vao);
+        f.glGenBuffers(1, &gpu.vertices);
+        f.glGenBuffers(1, &gpu.scalars);
+        f.glGenBuffers(1, &gpu.indices);
+        meshes_.push_back(gpu);  // owned from here on, so errors below do not leak
+
+        f.glBindVertexArray(gpu.vao);
+        f.glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
+        f.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                       vertices.data(), GL_STATIC_DRAW);
+        f.glEnableVertexAttribArray(kPositionLocation);
+        f.glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                                reinterpret_cast<const void*>(offsetof(Vertex, position)));
+        f.glEnableVertexAttribArray(kNormalLocation);
+        f.glVertexAttribPointer(kNormalLocation, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                                reinterpret_cast<const void*>(offsetof(Vertex, normal)));
+
+        f.glBindBuffer(GL_ARRAY_BUFFER, gpu.scalars);
+        f.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n * sizeof(glm::vec2)), nullptr,
+                       GL_DYNAMIC_DRAW);
+        f.glEnableVertexAttribArray(kScalarLocation);
+        f.glVertexAttribPointer(kScalarLocation, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+
+        f.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices);
+        f.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                       static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+                       mesh.indices.data(), GL_STATIC_DRAW);
+        meshes_.back().indexCount = static_cast<GLsizei>(mesh.indices.size());
+        f.glBindVertexArray(0);
+        f.glBindBuffer(GL_ARRAY_BUFFER, 0);
+        throwOnGlError(f, "uploading a mesh");
+    }
+    uploadScalars();
+}
+
+void MeshRenderer::setStyle(const MeshStyle& style) {
+    style_ = style;
+    updateRange();
+    // With the context current, upload now; otherwise draw() catches up.
+    if (gl_ != nullptr && QOpenGLContext::currentContext() == context_) {
+        if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
+            uploadScalars();
+        }
+        uploadLut();
+    }
+}
+
+void MeshRenderer::updateRange() {
+    effectiveRange_.reset();
+    if (scene_ && !style_.array.empty()) {
+        effectiveRange_ = style_.range ? style_.range : arrayRange(*scene_, style_.array);
+    }
+}
+
+void MeshRenderer::uploadScalars() {
+    auto& f = gl();
+    if (!scene_) {
+        return;
+    }
+    for (std::size_t m = 0; m < meshes_.size(); ++m) {
+        const auto scalars = scalarsFor(scene_->meshes[m], style_.array);
+        f.glBindBuffer(GL_ARRAY_BUFFER, meshes_[m].scalars);
+        f.glBufferSubData(GL_ARRAY_BUFFER, 0,
+                          static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
+                          scalars.data());
+    }
+    f.glBindBuffer(GL_ARRAY_BUFFER, 0);
+    throwOnGlError(f, "uploading array values");
+    uploadedArray_ = style_.array;
+    scalarsUploadedForArray_ = true;
+}
+
+void MeshRenderer::uploadLut() {
+    if (uploadedMap_ == style_.colorMap) {
+        return;
+    }
+    auto& f = gl();
+    const auto table = colormaps::lut(style_.colorMap, lutSize_);
+    f.glActiveTexture(GL_TEXTURE0);
+    f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
+    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, lutSize_, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                   table.data());
+    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    f.glBindTexture(GL_TEXTURE_1D, 0);
+    throwOnGlError(f, "uploading the colour map");
+    uploadedMap_ = style_.colorMap;
+}
+
+void MeshRenderer::draw(const Camera& camera) {
+    auto& f = gl();
+    if (program_ == 0) {
+        throw RenderError("MeshRenderer::draw without a shader program");
+    }
+    if (meshes_.empty()) {
+        return;
+    }
+    if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
+        uploadScalars();
+    }
+    uploadLut();
+
+    const glm::mat4 view = camera.viewMatrix();
+    const glm::mat4 projection = camera.projectionMatrix();
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
+    // An array without any finite value shows no-data everywhere.
+    const bool useArray = !style_.array.empty();
+    const std::pair<float, float> range = effectiveRange_.value_or(std::make_pair(0.0F, 1.0F));
+    const glm::vec3 noData = colormaps::noDataColor(style_.colorMap);
+    // Key light a little above and left of the eye: a headlight that still
+    // shows curvature on surfaces facing the viewer.
+    const glm::vec3 light = glm::normalize(glm::vec3(-0.25F, 0.35F, 1.0F));
+
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDepthFunc(GL_LESS);
+    f.glDisable(GL_CULL_FACE);
+    f.glDisable(GL_BLEND);
+    f.glUseProgram(program_);
+    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
+    f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
+    f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
+    f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+    f.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
+    f.glUniform3f(loc("uBaseColor"), style_.vesselColor.r, style_.vesselColor.g,
+                  style_.vesselColor.b);
+    f.glUniform3f(loc("uNoDataColor"), noData.r, noData.g, noData.b);
+    f.glUniform1i(loc("uLut"), 0);
+    f.glUniform1f(loc("uLutSize"), static_cast<float>(lutSize_));
+    f.glUniform2f(loc("uRange"), range.first, range.second);
+    f.glUniform1i(loc("uLighting"), style_.lighting ? 1 : 0);
+    f.glUniform3f(loc("uLightDirection"), light.x, light.y, light.z);
+    f.glUniform1f(loc("uAmbient"), 0.30F);
+    f.glUniform1f(loc("uDiffuse"), 0.70F);
+    f.glUniform1f(loc("uSpecular"), 0.25F);
+    f.glUniform1f(loc("uShininess"), 48.0F);
+    f.glActiveTexture(GL_TEXTURE0);
+    f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
+
+    for (const auto& m : meshes_) {
+        f.glBindVertexArray(m.vao);
+        f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    f.glBindVertexArray(0);
+    f.glBindTexture(GL_TEXTURE_1D, 0);
+    f.glUseProgram(0);
+    throwOnGlError(f, "drawing meshes");
+}
+
+std::string MeshRenderer::glDescription() const {
+    auto& f = gl();
+    const auto text = [&](GLenum name) {
+        const auto* s = reinterpret_cast<const char*>(f.glGetString(name));
+        return s != nullptr ? std::string(s) : std::string("?");
+    };
+    return text(GL_RENDERER) + " / OpenGL " + text(GL_VERSION);
+}
+
+}  // namespace vv::render

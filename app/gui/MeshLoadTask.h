@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QFuture>
+#include <QFutureWatcher>
+#include <QObject>
+#include <QString>
+#include <QStringList>
+#include <filesystem>
+#include <memory>
+#include <stop_token>
+#include <vector>
+
+#include "vv/io/Mesh.h"
+
+namespace vv::gui {
+
+/// Loads mesh files (vv::io::loadScene) or generates the demo tree
+/// (vv::io::generateDemoMesh) on a worker thread, never on the GUI thread.
+///
+/// Progress arrives through progressChanged() (queued to the GUI thread,
+/// throttled); exactly one of loaded(), failed() or cancelled() follows,
+/// emitted on the GUI thread, then finished(). cancel() asks the worker to
+/// stop at its next progress report (std::stop_source). The destructor
+/// cancels and waits for the worker.
+class MeshLoadTask : public QObject {
+    Q_OBJECT
+
+  public:
+    /// A task that loads `files` into one scene, in order.
+    static MeshLoadTask* loadFiles(std::vector<std::filesystem::path> files,
+                                   QObject* parent = nullptr);
+    /// A task that generates the synthetic demo vessel tree.
+    static MeshLoadTask* generateDemo(QObject* parent = nullptr);
+
+    ~MeshLoadTask() override;
+
+    /// Starts the worker; a second call does nothing.
+    void start();
+    /// Asks the worker to stop; cancelled() follows (unless the result was
+    /// already delivered), and a result that arrives anyway is discarded.
+    void cancel();
+    [[nodiscard]] bool isRunning() const;
+
+    /// What the task does, for the status bar ("Loading vessel.vtp").
+    [[nodiscard]] const QString& description() const noexcept { return description_; }
+    /// The files to load (empty for the demo).
+    [[nodiscard]] const std::vector<std::filesystem::path>& files() const noexcept {
+        return files_;
+    }
+
+  signals:
+    /// `fraction` in [0, 1] of the work done, and the current stage.
+    void progressChanged(double fraction, const QString& stage);
+    /// The scene is ready.
+    void loaded(std::shared_ptr<const vv::io::Scene> scene);
+    /// Loading failed; `file` is the file concerned (may be empty), `problem` the reason.
+    void failed(const QString& file, const QString& problem);
+    void cancelled();
+    /// After loaded(), failed() or cancelled().
+    void finished();
+
+  private:
+    struct Result {
+        std::shared_ptr<const io::Scene> scene;
+        QString file;
+        QString problem;
+        bool cancelled = false;
+    };
+
+    MeshLoadTask(std::vector<std::filesystem::path> files, bool demo, QObject* parent);
+    [[nodiscard]] Result work(std::stop_token stop);
+    void deliver();
+
+    std::vector<std::filesystem::path> files_;
+    bool demo_ = false;
+    QString description_;
+    std::stop_source stop_;
+    QFuture<Result> future_;
+    QFutureWatcher<Result> watcher_;
+    bool started_ = false;
+};
+
+}  // namespace vv::gui

@@ -1,0 +1,120 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QString>
+#include <QSurfaceFormat>
+#include <memory>
+
+#include "vv/io/Mesh.h"
+#include "vv/render/Camera.h"
+#include "vv/render/MeshRenderer.h"
+
+namespace vv::gui {
+
+/// The 3-D view: shows a Scene with the MeshRenderer (Blinn-Phong, optional
+/// colour-mapped array) and an orbit camera.
+///
+/// Mouse: left-drag rotates (arcball), right- or middle-drag or shift +
+/// left-drag pans, the wheel zooms. Keys: R resets the view, F fits the data.
+/// When OpenGL 4.1 core is not available the widget paints a message instead
+/// and emits renderFailed().
+class ViewerWidget : public QOpenGLWidget {
+    Q_OBJECT
+
+  public:
+    explicit ViewerWidget(QWidget* parent = nullptr);
+    ~ViewerWidget() override;
+
+    /// The surface format the viewer needs: OpenGL 4.1 core, 24-bit depth, 4x MSAA.
+    [[nodiscard]] static QSurfaceFormat requiredFormat();
+    /// Makes requiredFormat() the application default. Call before the
+    /// QApplication is constructed (as main() does).
+    static void installDefaultFormat();
+    /// Tries to create an OpenGL 4.1 core context (needs a QGuiApplication).
+    /// Returns an empty string when that works, else a message for the user.
+    /// Check before showing a viewer: on platforms without OpenGL, Qt cannot
+    /// compose a window that contains a QOpenGLWidget at all.
+    [[nodiscard]] static QString probeOpenGl();
+
+    /// Marks the viewer unusable (e.g. after probeOpenGl() failed): it paints
+    /// `reason` and emits renderFailed(reason).
+    void setUnavailable(const QString& reason);
+
+    /// Shows `scene` (nullptr clears) and fits the camera to it. The scene is
+    /// shared, never modified.
+    void setScene(std::shared_ptr<const io::Scene> scene);
+    [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
+
+    void setStyle(const render::MeshStyle& style);
+    [[nodiscard]] const render::MeshStyle& style() const noexcept { return style_; }
+
+    /// Background colour, sRGB in [0, 1].
+    void setBackground(const glm::vec3& color);
+    [[nodiscard]] const glm::vec3& background() const noexcept { return background_; }
+
+    [[nodiscard]] const render::Camera& camera() const noexcept { return camera_; }
+    /// Replaces the camera (its viewport follows the widget). Until the next
+    /// setScene(), resetCamera() or fitToData() the view is no longer refitted
+    /// when the widget resizes.
+    void setCamera(const render::Camera& camera);
+
+    /// The colour-map range of the last frame; nullopt when no array is shown.
+    [[nodiscard]] std::optional<std::pair<float, float>> shownRange() const noexcept {
+        return shownRange_;
+    }
+
+    /// Non-empty when OpenGL could not be used; the reason.
+    [[nodiscard]] const QString& renderError() const noexcept { return error_; }
+    /// "renderer / OpenGL version", empty before the first frame.
+    [[nodiscard]] const QString& glDescription() const noexcept { return glDescription_; }
+    /// Frames drawn since the current scene was set.
+    [[nodiscard]] quint64 framesWithScene() const noexcept { return framesWithScene_; }
+
+  public slots:
+    /// Default orientation, fitted to the data.
+    void resetCamera();
+    /// Keeps the orientation, frames the data.
+    void fitToData();
+
+  signals:
+    /// A frame was drawn (emitted at the end of paintGL; connect queued to grab it).
+    void frameRendered();
+    /// OpenGL cannot be used; `message` says why. Emitted at most once.
+    void renderFailed(const QString& message);
+
+  protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
+    void paintGL() override;
+    void showEvent(QShowEvent* event) override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+  private:
+    void fail(const QString& message);
+    void releaseGl();
+    void paintMessage(const QString& text);
+
+    render::MeshRenderer renderer_;
+    render::Camera camera_;
+    render::MeshStyle style_;
+    std::shared_ptr<const io::Scene> scene_;
+    glm::vec3 background_{0.13F, 0.14F, 0.16F};
+    bool sceneDirty_ = false;
+    bool autoFit_ = true;  ///< refit on resize until the user moves the camera
+    bool styleDirty_ = true;
+    QString error_;
+    QString glDescription_;
+    quint64 framesWithScene_ = 0;
+    std::optional<std::pair<float, float>> shownRange_;
+    enum class Drag { None, Rotate, Pan };
+    Drag drag_ = Drag::None;
+    QPointF lastMouse_;
+};
+
+}  // namespace vv::gui

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <optional>
+#include <span>
+#include <string_view>
+#include <vector>
+
+namespace vv::colormaps {
+
+/// The colour maps VesselView knows. Every map is a table of sRGB control
+/// points interpolated linearly in sRGB; adding a map means adding an enum
+/// value here and its table in ColorMap.cpp (allColorMaps() lists them all, in
+/// the order the UI shows them).
+enum class ColorMap : std::uint8_t {
+    Viridis,  ///< matplotlib's viridis: perceptually uniform, dark purple -> yellow
+    Cividis,  ///< matplotlib's cividis: viridis-like, optimised for colour-vision deficiency
+};
+
+/// Every map, in UI order.
+[[nodiscard]] std::span<const ColorMap> allColorMaps() noexcept;
+
+/// Stable lower-case identifier ("viridis"), used in settings and on the command line.
+[[nodiscard]] std::string_view name(ColorMap map) noexcept;
+
+/// Human-readable name ("Viridis").
+[[nodiscard]] std::string_view displayName(ColorMap map) noexcept;
+
+/// The map whose name() equals `name`, ignoring ASCII case; nullopt when none does.
+[[nodiscard]] std::optional<ColorMap> colorMapFromName(std::string_view name) noexcept;
+
+/// The colour a map stands for "no data" (NaN values). It is chosen to be
+/// absent from the map itself, so missing values never read as a value. For
+/// viridis and cividis it is a light neutral grey, sRGB (0.80, 0.80, 0.80).
+/// sample() returns it for NaN; renderers that handle NaN themselves (the GPU
+/// shaders, which cannot rely on NaN arithmetic) must use the same colour.
+[[nodiscard]] glm::vec3 noDataColor(ColorMap map) noexcept;
+
+/// The map's sRGB colour (components in [0, 1]) at `t`. t is clamped to
+/// [0, 1] (so -inf gives the first colour and +inf the last); NaN gives
+/// noDataColor(map). Never throws.
+[[nodiscard]] glm::vec3 sample(ColorMap map, float t) noexcept;
+
+/// A look-up table of `n` entries for a 1-D texture: entry i is
+/// sample(map, i / (n - 1)) in 8-bit sRGB, alpha 255. Entry 0 is the map's
+/// first colour and entry n - 1 its last.
+/// Throws InvalidArgumentError when n < 2 or n > 65536.
+[[nodiscard]] std::vector<glm::u8vec4> lut(ColorMap map, int n);
+
+/// Converts an sRGB colour in [0, 1] to 8-bit RGBA (rounded, clamped; alpha 255).
+[[nodiscard]] glm::u8vec4 toRgba8(const glm::vec3& srgb) noexcept;
+
+/// CIE 1976 lightness L* in [0, 100] of an sRGB colour (D65 white), used to
+/// check and to order maps by lightness.
+[[nodiscard]] float cieLightness(const glm::vec3& srgb) noexcept;
+
+}  // namespace vv::colormaps

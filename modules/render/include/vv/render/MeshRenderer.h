@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <glm/glm.hpp>
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vv/colormaps/ColorMap.h"
+#include "vv/io/Mesh.h"
+#include "vv/render/Camera.h"
+
+class QOpenGLFunctions_4_1_Core;
+class QOpenGLContext;
+
+namespace vv::render {
+
+/// How meshes are shaded. Colours are sRGB in [0, 1]; lighting is applied to
+/// them directly (no linearisation), so a surface facing the light shows the
+/// colour map's colours unchanged.
+struct MeshStyle {
+    /// Point array shown through the colour map; empty = the neutral vessel material.
+    std::string array;
+    colormaps::ColorMap colorMap = colormaps::ColorMap::Viridis;
+    /// Values mapped to the first and last colour of the map; nullopt = the
+    /// finite range of the array over all meshes. Values outside are clamped.
+    std::optional<std::pair<float, float>> range;
+    /// The neutral vessel material, used when no array is chosen.
+    glm::vec3 vesselColor{0.85F, 0.42F, 0.38F};
+    /// Blinn-Phong with a headlight-like key light and ambient; false draws
+    /// flat, unlit colours (exact colour-map colours, for checks and pickers).
+    bool lighting = true;
+};
+
+/// The array to show by default: "wss" (wall shear stress) when some mesh
+/// has a point array of that name (ignoring case; also "wall_shear_stress",
+/// "WallShearStress"), else the empty string (neutral material).
+[[nodiscard]] std::string defaultArrayName(const io::Scene& scene);
+
+/// Point array names over all meshes of a scene, without duplicates, in the
+/// order they are first met.
+[[nodiscard]] std::vector<std::string> pointArrayNames(const io::Scene& scene);
+
+/// The finite value range of point array `name` over all meshes (magnitude for
+/// vectors); nullopt when no mesh has a finite value in it.
+[[nodiscard]] std::optional<std::pair<float, float>> arrayRange(const io::Scene& scene,
+                                                                const std::string& name);
+
+/// Draws a Scene's meshes with OpenGL 4.1 core: position, normal and one
+/// scalar per vertex (taken from the chosen point array; vector arrays show
+/// their magnitude), Blinn-Phong lighting, the array through a 1-D colour-map
+/// texture, and NaN / missing values in the map's noDataColor().
+///
+/// Every member function that touches GL needs the context that was current
+/// at initialize() to be current again. The renderer does not own the
+/// context; call release() (context current) before the context goes away.
+class MeshRenderer {
+  public:
+    MeshRenderer();
+    ~MeshRenderer();
+    MeshRenderer(const MeshRenderer&) = delete;
+    MeshRenderer& operator=(const MeshRenderer&) = delete;
+
+    /// Resolves GL 4.1 core functions and builds the shaders from the
+    /// resources :/vv/shaders/mesh.vert and mesh.frag. Throws RenderError when
+    /// no context is current, the context is not OpenGL >= 4.1 core, or a
+    /// shader does not compile or link (the message has the GL log).
+    void initialize();
+    [[nodiscard]] bool initialized() const noexcept;
+
+    /// Uploads the scene's meshes (replacing any previous ones). The scene is
+    /// kept (shared) to re-upload scalars when the array changes. nullptr clears.
+    /// Meshes without one normal per position get computed normals.
+    /// Throws RenderError when not initialized, the context is not current or
+    /// GL fails (out of memory); InvalidArgumentError (naming the mesh's file)
+    /// for a triangle index out of range or a mesh too large for one draw call.
+    void setScene(std::shared_ptr<const io::Scene> scene);
+    [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
+
+    /// Sets the style. With the context current, re-uploads the per-vertex
+    /// scalars when the array changed and the colour-map texture when the map
+    /// changed (throwing RenderError when GL fails); otherwise draw() does.
+    void setStyle(const MeshStyle& style);
+    [[nodiscard]] const MeshStyle& style() const noexcept { return style_; }
+
+    /// The value range the colour map spans now (the style's range or the
+    /// array's finite range); nullopt when no array is shown or it has no finite value.
+    [[nodiscard]] std::optional<std::pair<float, float>> effectiveRange() const noexcept {
+        return effectiveRange_;
+    }
+
+    /// Draws into the currently bound framebuffer with the camera's matrices.
+    /// Depth test on; does not clear. The caller sets the viewport. A chosen
+    /// array that a mesh lacks, or that has no finite value, shows the map's
+    /// noDataColor(). Throws RenderError when not initialized, the context is
+    /// not current or GL reports an error.
+    void draw(const Camera& camera);
+
+    /// Deletes all GL objects; the context of initialize() must be current.
+    /// Safe to call more than once.
+    void release() noexcept;
+
+    /// The GL strings of the context ("renderer / version"), for logs and About boxes.
+    [[nodiscard]] std::string glDescription() const;
+
+  private:
+    struct GpuMesh;
+    void updateRange();
+    void uploadScalars();
+    void uploadLut();
+    [[nodiscard]] QOpenGLFunctions_4_1_Core& gl() const;
+
+    QOpenGLFunctions_4_1_Core* gl_ = nullptr;
+    QOpenGLContext* context_ = nullptr;
+    unsigned program_ = 0;
+    unsigned lutTexture_ = 0;
+    int lutSize_ = 256;
+    std::vector<GpuMesh> meshes_;
+    std::shared_ptr<const io::Scene> scene_;
+    MeshStyle style_;
+    std::optional<std::pair<float, float>> effectiveRange_;
+    bool scalarsUploadedForArray_ = false;
+    std::string uploadedArray_;
+    std::optional<colormaps::ColorMap> uploadedMap_;
+};
+
+}  // namespace vv::render
