@@ -36,6 +36,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
 int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 /// Thrown when an output file cannot be written; maps to kCannotWrite.
 class OutputError : public std::exception {

@@ -1,1 +1,109 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/vss/Vss.h"
+
+#include <algorithm>
+#include <chrono>
+#include <numeric>
+
+#include "SolverCommon.h"
+#include "vv/core/Error.h"
+#include "vv/core/Parallel.h"
+#include "vv/vss/VoidRegions.h"
+
+namespace vv::vss {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double msSince(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+void throwIfStopped(const std::stop_token& stop) {
+    if (stop.stop_requested()) {
+        throw CancelledError();
+    }
+}
+
+/// Regions with less work than this (pixels * contour pixels) are solved
+/// several at a time, one per thread, instead of one after another (the
+/// direct solvers solve them on the calling thread).
+constexpr double kSmallRegionPairs = detail::kSerialPairs;
+
+}  // namespace
+
+VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask,
+                const Solver& solver, const DepthRange& range, const std::stop_token& stop) {
+    VssResult result;
+    throwIfStopped(stop);
+
+    auto start = Clock::now();
+    NormalizedDepth normalized = normalizeDepth(depth, mask, range);
+    result.dmin = normalized.dmin;
+    result.dmax = normalized.dmax;
+    result.flat = normalized.flat;
+    result.stats.normalizeMs = msSince(start);
+    throwIfStopped(stop);
+
+    start = Clock::now();
+    VoidRegionSet regions = findVoidRegions(normalized.vessel.view(), normalized.z.view());
+    normalized.vessel = Image<std::uint8_t>();
+    result.stats.regionsMs = msSince(start);
+    throwIfStopped(stop);
+
+    start = Clock::now();
+    // z on vessel pixels (NaN elsewhere until solved).
+    result.height = std::move(normalized.z);
+    result.labels = std::move(regions.labels);
+    result.regions = std::move(regions.regions);
+    result.errorBound = solver.errorBound();
+
+    std::vector<std::size_t> order(result.regions.size());
+    std::iota(order.begin(), order.end(), std::size_t{0});
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+        return result.regions[a].pixelCount > result.regions[b].pixelCount;
+    });
+    const auto work = [&](std::size_t i) {
+        const VoidRegion& r = result.regions[i];
+        return static_cast<double>(r.pixelCount) *
+               static_cast<double>(std::max<std::size_t>(1, r.contour.size()));
+    };
+    const ImageView<const std::int32_t> labels = result.labels.view();
+    const ImageView<float> out = result.height.view();
+    std::size_t next = 0;
+    for (; next < order.size() && work(order[next]) >= kSmallRegionPairs; ++next) {
+        solver.solveRegion(labels, result.regions[order[next]], out, stop);
+    }
+    if (next < order.size()) {
+        parallelFor(
+            static_cast<long>(next), static_cast<long>(order.size()), 16,
+            [&](long b, long e) {
+                for (long i = b; i < e; ++i) {
+                    solver.solveRegion(labels, result.regions[order[static_cast<std::size_t>(i)]],
+                                       out, stop);
+                }
+            },
+            stop);
+    }
+    result.stats.interpolateMs = msSince(start);
+    throwIfStopped(stop);
+
+    result.stats.regionCount = result.regions.size();
+    result.stats.contourPixels.reserve(result.regions.size());
+    for (const VoidRegion& r : result.regions) {
+        const auto n = static_cast<std::int64_t>(r.contour.size());
+        result.stats.contourPixels.push_back(n);
+        result.stats.maxContourPixels = std::max(result.stats.maxContourPixels, n);
+        result.stats.voidPixels += r.pixelCount;
+    }
+    return result;
+}
+
+VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask,
+                const VssOptions& options) {
+    const auto solver = makeSolver(options.solver);
+    return solve(depth, mask, *solver, options.range, options.stop);
+}
+
+}  // namespace vv::vss

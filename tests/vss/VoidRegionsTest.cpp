@@ -1,0 +1,208 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <set>
+#include <utility>
+
+#include "VssTestUtil.h"
+#include "vv/core/Error.h"
+#include "vv/vss/VoidRegions.h"
+
+namespace vv::vss {
+namespace {
+
+/// Checks `found` against the independent BFS labelling of `mask`.
+void expectMatchesNaive(const Image<std::uint8_t>& mask, const VoidRegionSet& found,
+                        const std::string& what) {
+    const auto naive = test::naiveRegions(mask.view());
+    ASSERT_EQ(found.regions.size(), naive.contours.size()) << what;
+    for (int y = 0; y < mask.height(); ++y) {
+        for (int x = 0; x < mask.width(); ++x) {
+            ASSERT_EQ(found.labels(x, y), naive.labels(x, y)) << what << " at " << x << ", " << y;
+        }
+    }
+    for (std::size_t i = 0; i < found.regions.size(); ++i) {
+        const VoidRegion& r = found.regions[i];
+        EXPECT_EQ(r.id, static_cast<std::int32_t>(i));
+        EXPECT_EQ(r.pixelCount, naive.counts[i]) << what << " region " << i;
+        // Contour: same set, row-major, no duplicates.
+        std::set<std::pair<int, int>> got;
+        std::pair<int, int> previous{-1, -1};
+        for (const auto& c : r.contour) {
+            const std::pair<int, int> key{c.y, c.x};
+            EXPECT_LT(previous, key) << what << ": region " << i << " contour not row-major";
+            previous = key;
+            got.insert(key);
+        }
+        EXPECT_EQ(got, naive.contours[i]) << what << " region " << i;
+        // Bounding box: tight around the region's pixels.
+        int x0 = mask.width();
+        int y0 = mask.height();
+        int x1 = 0;
+        int y1 = 0;
+        for (int y = 0; y < mask.height(); ++y) {
+            for (int x = 0; x < mask.width(); ++x) {
+                if (naive.labels(x, y) == static_cast<std::int32_t>(i)) {
+                    x0 = std::min(x0, x);
+                    y0 = std::min(y0, y);
+                    x1 = std::max(x1, x + 1);
+                    y1 = std::max(y1, y + 1);
+                }
+            }
+        }
+        EXPECT_EQ(r.x0, x0);
+        EXPECT_EQ(r.y0, y0);
+        EXPECT_EQ(r.x1, x1);
+        EXPECT_EQ(r.y1, y1);
+    }
+}
+
+TEST(VoidRegionsTest, RandomMasksMatchAnIndependentLabelling) {
+    for (std::uint64_t seed = 1; seed <= 20; ++seed) {
+        const auto mask = test::randomMask(64, 48, seed);
+        expectMatchesNaive(mask, findVoidRegions(mask.view()), "seed " + std::to_string(seed));
+    }
+}
+
+TEST(VoidRegionsTest, RandomNoiseMasks) {
+    // Salt-and-pepper masks: many small regions, diagonal touches everywhere.
+    for (std::uint64_t seed = 1; seed <= 10; ++seed) {
+        test::Rng rng(seed);
+        Image<std::uint8_t> mask(37, 29);
+        for (int y = 0; y < 29; ++y) {
+            for (int x = 0; x < 37; ++x) {
+                mask(x, y) = rng.uniform() < 0.45 ? 1 : 0;
+            }
+        }
+        expectMatchesNaive(mask, findVoidRegions(mask.view()), "noise " + std::to_string(seed));
+    }
+}
+
+TEST(VoidRegionsTest, DiagonalBackgroundPixelsAreSeparateRegions) {
+    // 4-connectivity of the background: two void pixels touching at a corner
+    // are two regions, and the vessel pixels between them are in both contours.
+    Image<std::uint8_t> mask(2, 2, 1);
+    mask(0, 0) = 0;
+    mask(1, 1) = 0;
+    const auto found = findVoidRegions(mask.view());
+    ASSERT_EQ(found.regions.size(), 2U);
+    EXPECT_EQ(found.labels(0, 0), 0);
+    EXPECT_EQ(found.labels(1, 1), 1);
+    EXPECT_EQ(found.labels(1, 0), kVesselLabel);
+    EXPECT_EQ(found.regions[0].contour.size(), 2U);
+    EXPECT_EQ(found.regions[1].contour.size(), 2U);
+}
+
+TEST(VoidRegionsTest, SmallAndDegenerateImages) {
+    {
+        const Image<std::uint8_t> mask(1, 1, 0);
+        const auto found = findVoidRegions(mask.view());
+        ASSERT_EQ(found.regions.size(), 1U);
+        EXPECT_TRUE(found.regions[0].contour.empty());
+        EXPECT_EQ(found.regions[0].pixelCount, 1);
+    }
+    {
+        const Image<std::uint8_t> mask(1, 1, 1);
+        const auto found = findVoidRegions(mask.view());
+        EXPECT_TRUE(found.regions.empty());
+        EXPECT_EQ(found.labels(0, 0), kVesselLabel);
+    }
+    {
+        const Image<std::uint8_t> mask(0, 0);
+        const auto found = findVoidRegions(mask.view());
+        EXPECT_TRUE(found.regions.empty());
+    }
+    {
+        // All vessel, all background.
+        const Image<std::uint8_t> full(31, 7, 255);
+        EXPECT_TRUE(findVoidRegions(full.view()).regions.empty());
+        const Image<std::uint8_t> empty(31, 7, 0);
+        const auto found = findVoidRegions(empty.view());
+        ASSERT_EQ(found.regions.size(), 1U);
+        EXPECT_TRUE(found.regions[0].contour.empty());
+        EXPECT_EQ(found.regions[0].pixelCount, 31 * 7);
+        EXPECT_EQ(found.regions[0].x1, 31);
+        EXPECT_EQ(found.regions[0].y1, 7);
+    }
+    for (const bool column : {false, true}) {
+        // 1xN: every vessel pixel splits the line.
+        Image<std::uint8_t> mask(column ? 1 : 50, column ? 50 : 1, 0);
+        for (const int i : {0, 10, 11, 30}) {
+            (column ? mask(0, i) : mask(i, 0)) = 1;
+        }
+        expectMatchesNaive(mask, findVoidRegions(mask.view()), column ? "Nx1" : "1xN");
+        EXPECT_EQ(findVoidRegions(mask.view()).regions.size(), 3U);
+    }
+}
+
+TEST(VoidRegionsTest, ContourDepthsComeFromZAndSizesAreChecked) {
+    auto mask = test::randomMask(20, 15, 3);
+    Image<float> z(20, 15);
+    for (int y = 0; y < 15; ++y) {
+        for (int x = 0; x < 20; ++x) {
+            z(x, y) = static_cast<float>(x * 100 + y);
+        }
+    }
+    const auto found = findVoidRegions(mask.view(), z.view());
+    for (const auto& r : found.regions) {
+        for (const auto& c : r.contour) {
+            EXPECT_EQ(c.z, static_cast<float>(c.x * 100 + c.y));
+        }
+    }
+    const Image<float> wrong(19, 15);
+    EXPECT_THROW(static_cast<void>(findVoidRegions(mask.view(), wrong.view())),
+                 InvalidArgumentError);
+}
+
+TEST(VoidRegionsTest, StridedMaskView) {
+    // A sub-view of a larger mask (stride > width).
+    const auto big = test::randomMask(80, 60, 11);
+    const auto sub = big.view().sub(7, 5, 50, 40);
+    Image<std::uint8_t> copy(50, 40);
+    for (int y = 0; y < 40; ++y) {
+        for (int x = 0; x < 50; ++x) {
+            copy(x, y) = sub(x, y);
+        }
+    }
+    const auto a = findVoidRegions(sub);
+    const auto b = findVoidRegions(copy.view());
+    ASSERT_EQ(a.regions.size(), b.regions.size());
+    for (std::size_t i = 0; i < a.regions.size(); ++i) {
+        EXPECT_EQ(a.regions[i].contour.size(), b.regions[i].contour.size());
+    }
+}
+
+TEST(VoidRegionsTest, Huge7680x4320) {
+    const int w = 7680;
+    const int h = 4320;
+    Image<std::uint8_t> mask(w, h, 0);
+    // A vertical vessel across the image and a small ring: three regions.
+    for (int y = 0; y < h; ++y) {
+        mask(3000, y) = 1;
+    }
+    for (int y = 99; y <= 101; ++y) {
+        for (int x = 99; x <= 101; ++x) {
+            mask(x, y) = 1;
+        }
+    }
+    mask(100, 100) = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const auto found = findVoidRegions(mask.view());
+    const double s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    ASSERT_EQ(found.regions.size(), 3U);
+    EXPECT_EQ(found.regions[0].pixelCount, 3000LL * h - 9);  // left of the line, minus the ring
+    EXPECT_EQ(found.regions[0].contour.size(), static_cast<std::size_t>(h + 8));
+    // Ids in raster order of the first pixel: right of the line (row 0), then the ring.
+    EXPECT_EQ(found.regions[1].pixelCount, static_cast<std::int64_t>(w - 3001) * h);
+    EXPECT_EQ(found.regions[1].contour.size(), static_cast<std::size_t>(h));
+    EXPECT_EQ(found.regions[1].x0, 3001);
+    EXPECT_EQ(found.regions[2].pixelCount, 1);
+    EXPECT_EQ(found.regions[2].contour.size(), 8U);
+    EXPECT_EQ(found.labels(100, 100), 2);
+    EXPECT_LT(s, 5.0) << "labelling 33 Mpixels should take well under a second";
+}
+
+}  // namespace
+}  // namespace vv::vss

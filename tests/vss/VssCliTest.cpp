@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// vesselview-cli vss, through vv::cli::run.
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QString>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "VssTestUtil.h"
+#include "cli/Cli.h"
+#include "vv/vss/Pfm.h"
+
+namespace vv::cli {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path tempDir() {
+    const fs::path dir = fs::path(VV_TEST_TMP) / "vss-cli";
+    fs::create_directories(dir);
+    return dir;
+}
+
+struct Outcome {
+    int code;
+    std::string out;
+    std::string err;
+};
+
+Outcome runCli(const std::vector<std::string>& args) {
+    std::ostringstream out;
+    std::ostringstream err;
+    const int code = run(args, out, err);
+    return {code, out.str(), err.str()};
+}
+
+/// A depth PFM: random vessels, background +Inf (and a few NaN).
+fs::path makeDepth(const std::string& name, int w = 48, int h = 36) {
+    const auto mask = vss::test::randomMask(w, h, 21);
+    auto depth = vss::test::randomDepth(w, h, 21, 50.0, 80.0);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (mask(x, y) == 0) {
+                depth(x, y) = (x + y) % 7 == 0 ? std::numeric_limits<float>::quiet_NaN()
+                                               : std::numeric_limits<float>::infinity();
+            }
+        }
+    }
+    const fs::path file = tempDir() / name;
+    vss::writePfm(file, depth.view());
+    return file;
+}
+
+TEST(VssCliTest, RoundTripPfm) {
+    const fs::path in = makeDepth("in.pfm");
+    const fs::path out = tempDir() / "out.pfm";
+    fs::remove(out);
+    const auto r = runCli(
+        {"vss", "--depth", in.string(), "-o", out.string(), "--p", "4", "--solver", "brute"});
+    ASSERT_EQ(r.code, kOk) << r.err;
+    EXPECT_NE(r.out.find("wrote"), std::string::npos);
+    const auto depth = vss::readPfm(in);
+    const auto height = vss::readPfm(out);
+    ASSERT_EQ(height.width(), depth.width());
+    ASSERT_EQ(height.height(), depth.height());
+    float lo = std::numeric_limits<float>::infinity();
+    float hi = -lo;
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            if (std::isfinite(depth(x, y))) {
+                lo = std::min(lo, depth(x, y));
+                hi = std::max(hi, depth(x, y));
+            }
+        }
+    }
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            const float v = height(x, y);
+            ASSERT_TRUE(std::isfinite(v) && v >= 0.0F && v <= 1.0F) << x << ", " << y;
+            if (std::isfinite(depth(x, y))) {
+                EXPECT_NEAR(v, (depth(x, y) - lo) / (hi - lo), 1e-6);
+            }
+        }
+    }
+}
+
+TEST(VssCliTest, StatsJsonAndLabels) {
+    const fs::path in = makeDepth("stats.pfm");
+    const fs::path out = tempDir() / "stats-out.pfm";
+    const fs::path labels = tempDir() / "labels.png";
+    const auto r =
+        runCli({"vss", "--depth", in.string(), "-o", out.string(), "--stats", "--labels",
+                labels.string(), "--solver", "step", "--step", "2", "--fixed-range", "40,90"});
+    ASSERT_EQ(r.code, kOk) << r.err;
+    for (const char* key :
+         {"\"regions\":", "\"contourPixels\":", "\"maxContourPixels\":", "\"dmin\": 40",
+          "\"dmax\": 90", "\"timeMs\":", "\"normalize\":", "\"interpolate\":",
+          "\"nonFiniteVoidPixels\": 0", "\"solver\": \"step\""}) {
+        EXPECT_NE(r.out.find(key), std::string::npos) << key << " in " << r.out;
+    }
+    EXPECT_EQ(r.out.front(), '{');
+    EXPECT_EQ(r.out.substr(r.out.size() - 2), "}\n");
+    QImage image;
+    ASSERT_TRUE(image.load(QString::fromStdString(labels.string()), "PNG"));
+    EXPECT_EQ(image.width(), 48);
+    EXPECT_EQ(image.height(), 36);
+}
+
+TEST(VssCliTest, EmptyMaskGivesNaNAndCountsIt) {
+    const Image<float> depth(6, 4, std::numeric_limits<float>::infinity());
+    const fs::path in = tempDir() / "nothing.pfm";
+    vss::writePfm(in, depth.view());
+    const fs::path out = tempDir() / "nothing-out.pfm";
+    const auto r = runCli(
+        {"vss", "--depth", in.string(), "-o", out.string(), "--stats", "--solver", "reference"});
+    ASSERT_EQ(r.code, kOk) << r.err;
+    EXPECT_NE(r.out.find("\"nonFiniteVoidPixels\": 24"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"dmin\": null"), std::string::npos) << r.out;
+    EXPECT_TRUE(std::isnan(vss::readPfm(out)(0, 0)));
+}
+
+void writeBytes(const fs::path& file, const std::string& bytes) {
+    std::ofstream out(file, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+TEST(VssCliTest, BadPfmExitsThreeNamingTheFile) {
+    const std::string pixel(4, '\0');
+    const std::pair<const char*, std::string> cases[] = {
+        {"truncated.pfm", "Pf\n4 4\n-1.0\n" + pixel},
+        {"header.pfm", "P6\n4 4\n255\n" + pixel},
+        {"huge.pfm", "Pf\n100000 100000\n-1.0\n" + pixel},
+        {"negative.pfm", "Pf\n-3 2\n-1.0\n" + pixel},
+    };
+    for (const auto& [name, bytes] : cases) {
+        const fs::path file = tempDir() / name;
+        writeBytes(file, bytes);
+        const auto r =
+            runCli({"vss", "--depth", file.string(), "-o", (tempDir() / "never.pfm").string()});
+        EXPECT_EQ(r.code, kInvalidInput) << name << ": " << r.err;
+        EXPECT_NE(r.err.find(file.string()), std::string::npos) << r.err;
+    }
+    const auto missing = runCli({"vss", "--depth", (tempDir() / "missing.pfm").string(), "-o",
+                                 (tempDir() / "never.pfm").string()});
+    EXPECT_EQ(missing.code, kInvalidInput);
+    EXPECT_NE(missing.err.find("missing.pfm"), std::string::npos);
+    EXPECT_FALSE(fs::exists(tempDir() / "never.pfm"));
+}
+
+TEST(VssCliTest, BadOptionsExitTwo) {
+    const fs::path in = makeDepth("opts.pfm", 8, 8);
+    const std::string o = (tempDir() / "opts-out.pfm").string();
+    const std::vector<std::vector<std::string>> bad = {
+        {"vss", "-o", o},
+        {"vss", "--depth", in.string()},
+        {"vss", "--depth", in.string(), "-o", o, "--p", "abc"},
+        {"vss", "--depth", in.string(), "-o", o, "--p", "0"},
+        {"vss", "--depth", in.string(), "-o", o, "--p", "-2"},
+        {"vss", "--depth", in.string(), "-o", o, "--solver", "magic"},
+        {"vss", "--depth", in.string(), "-o", o, "--step", "0"},
+        {"vss", "--depth", in.string(), "-o", o, "--step", "1.5"},
+        {"vss", "--depth", in.string(), "-o", o, "--tolerance", "-1"},
+        {"vss", "--depth", in.string(), "-o", o, "--fixed-range", "5"},
+        {"vss", "--depth", in.string(), "-o", o, "--fixed-range", "9,5"},
+        {"vss", "--depth", in.string(), "-o", o, "--frobnicate"},
+        {"vss", "--depth", in.string(), "-o", o, "--p"},
+    };
+    for (const auto& args : bad) {
+        const auto r = runCli(args);
+        std::string joined;
+        for (const auto& a : args) {
+            joined += a + " ";
+        }
+        EXPECT_EQ(r.code, kUsage) << joined << ": " << r.err;
+    }
+}
+
+TEST(VssCliTest, UnwritableOutputExitsFour) {
+    const fs::path in = makeDepth("w.pfm", 8, 8);
+    const auto r =
+        runCli({"vss", "--depth", in.string(), "-o", (tempDir() / "no-folder" / "x.pfm").string()});
+    EXPECT_EQ(r.code, kCannotWrite) << r.err;
+    const auto folder = runCli({"vss", "--depth", in.string(), "-o", tempDir().string()});
+    EXPECT_EQ(folder.code, kCannotWrite) << folder.err;
+    const auto labels =
+        runCli({"vss", "--depth", in.string(), "-o", (tempDir() / "w-out.pfm").string(), "--labels",
+                (tempDir() / "no-folder" / "l.png").string()});
+    EXPECT_EQ(labels.code, kCannotWrite) << labels.err;
+}
+
+TEST(VssCliTest, UsageMentionsVss) {
+    const auto r = runCli({"--help"});
+    EXPECT_NE(r.out.find("vss --depth"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vv::cli
