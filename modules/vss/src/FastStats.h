@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Counters of the fast VSS solver, for tests and the micro-benchmark.
+#pragma once
+
+#include <cstdint>
+
+namespace vv::vss::detail {
+
+struct FastSolverStats {
+    std::int64_t pixels = 0;          ///< void pixels written
+    std::int64_t fallbackPixels = 0;  ///< pixels recomputed exactly after a failed check
+    std::int64_t leaves = 0;          ///< leaf tiles evaluated
+    std::int64_t nearPairs = 0;       ///< (row of 16 pixels) x (near point) kernel iterations
+    std::int64_t m2l = 0;             ///< multipole-to-local translations
+    std::int64_t dropped = 0;         ///< clusters dropped with their weight bound charged
+    std::int64_t perPixelLeaves = 0;  ///< leaves in per-pixel scale mode
+    std::int64_t exactTiles = 0;      ///< leaves re-evaluated with every contour point
+};
+
+/// Totals since the last reset (all solver instances, all threads).
+FastSolverStats fastSolverStats();
+void resetFastSolverStats();
+
+/// Test hook: multiplies the a-priori error budget (default 1). A loose budget
+/// must not break the guarantee: the per-pixel check then sends pixels to the
+/// exact fall-backs. Affects solvers created afterwards.
+void setFastSolverBudgetScaleForTesting(double scale);
+
+}  // namespace vv::vss::detail

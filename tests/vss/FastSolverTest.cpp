@@ -1,0 +1,699 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The fast VSS solver (modules/vss/src/FastSolver.cpp) against its own exact
+// double-precision reference: the tolerance on every void pixel for every p,
+// the stiff cases, the solveRegion contract. Self-contained: its own labelling,
+// contours and reference, so it depends on no other part of vss.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <bit>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <limits>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "FastKernel.h"
+#include "FastSolver.h"
+#include "FastStats.h"
+#include "vv/core/Error.h"
+#include "vv/core/Image.h"
+#include "vv/vss/Solver.h"
+
+namespace vv::vss {
+namespace {
+
+class Rng {
+  public:
+    explicit Rng(std::uint64_t seed) : s_(seed) {}
+    std::uint64_t next() {
+        std::uint64_t z = (s_ += 0x9e3779b97f4a7c15ULL);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+        return z ^ (z >> 31);
+    }
+    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
+    int range(int lo, int hi) {
+        return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1));
+    }
+
+  private:
+    std::uint64_t s_;
+};
+
+/// Labels (4-connected void components), regions with contours (8-adjacent
+/// vessel pixels) and the normalised depth of vessel pixels.
+struct Scene {
+    Image<std::int32_t> labels;
+    Image<float> z;
+    std::vector<VoidRegion> regions;
+};
+
+Scene makeScene(const Image<std::uint8_t>& mask, const Image<float>& z) {
+    const int w = mask.width();
+    const int h = mask.height();
+    Scene s;
+    s.z = z;
+    s.labels = Image<std::int32_t>(w, h, kVesselLabel);
+    std::vector<std::pair<int, int>> stack;
+    std::int32_t next = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (mask(x, y) != 0 || s.labels(x, y) != kVesselLabel) {
+                continue;
+            }
+            VoidRegion r;
+            r.id = next++;
+            r.x0 = x;
+            r.y0 = y;
+            r.x1 = x + 1;
+            r.y1 = y + 1;
+            s.labels(x, y) = r.id;
+            stack.emplace_back(x, y);
+            while (!stack.empty()) {
+                const auto [cx, cy] = stack.back();
+                stack.pop_back();
+                ++r.pixelCount;
+                r.x0 = std::min(r.x0, cx);
+                r.y0 = std::min(r.y0, cy);
+                r.x1 = std::max(r.x1, cx + 1);
+                r.y1 = std::max(r.y1, cy + 1);
+                const int nx[4] = {cx - 1, cx + 1, cx, cx};
+                const int ny[4] = {cy, cy, cy - 1, cy + 1};
+                for (int k = 0; k < 4; ++k) {
+                    if (nx[k] >= 0 && ny[k] >= 0 && nx[k] < w && ny[k] < h &&
+                        mask(nx[k], ny[k]) == 0 && s.labels(nx[k], ny[k]) == kVesselLabel) {
+                        s.labels(nx[k], ny[k]) = r.id;
+                        stack.emplace_back(nx[k], ny[k]);
+                    }
+                }
+            }
+            s.regions.push_back(r);
+        }
+    }
+    // contours: vessel pixels 8-adjacent to a region pixel
+    Image<std::int32_t> stamp(w, h, -1);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const std::int32_t id = s.labels(x, y);
+            if (id < 0) {
+                continue;
+            }
+            for (int dy = -1; dy <= 1; ++dy) {
+                for (int dx = -1; dx <= 1; ++dx) {
+                    const int vx = x + dx;
+                    const int vy = y + dy;
+                    if (vx < 0 || vy < 0 || vx >= w || vy >= h || mask(vx, vy) == 0) {
+                        continue;
+                    }
+                    // a vessel pixel may border the same region many times: stamp per region
+                    if (stamp(vx, vy) == id) {
+                        continue;
+                    }
+                    bool seen = false;
+                    for (const ContourPoint& c : s.regions[static_cast<std::size_t>(id)].contour) {
+                        if (c.x == vx && c.y == vy) {
+                            seen = true;
+                            break;
+                        }
+                    }
+                    stamp(vx, vy) = id;
+                    if (!seen) {
+                        s.regions[static_cast<std::size_t>(id)].contour.push_back(
+                            {vx, vy, z(vx, vy)});
+                    }
+                }
+            }
+        }
+    }
+    return s;
+}
+
+/// Exact z' in double precision, weights scaled by the nearest distance.
+double referencePixel(const VoidRegion& r, int x, int y, double p) {
+    double dmin2 = std::numeric_limits<double>::infinity();
+    for (const ContourPoint& c : r.contour) {
+        const double dx = x - c.x;
+        const double dy = y - c.y;
+        dmin2 = std::min(dmin2, dx * dx + dy * dy);
+    }
+    double D = 0.0;
+    double N = 0.0;
+    for (const ContourPoint& c : r.contour) {
+        const double dx = x - c.x;
+        const double dy = y - c.y;
+        const double w = std::pow(dmin2 / (dx * dx + dy * dy), p / 2.0);
+        D += w;
+        N += w * c.z;
+    }
+    return N / D;
+}
+
+Image<double> referenceImage(const Scene& s, double p) {
+    Image<double> ref(s.labels.width(), s.labels.height(),
+                      std::numeric_limits<double>::quiet_NaN());
+    for (const VoidRegion& r : s.regions) {
+        if (r.contour.empty()) {
+            continue;
+        }
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                if (s.labels(x, y) == r.id) {
+                    ref(x, y) = referencePixel(r, x, y, p);
+                }
+            }
+        }
+    }
+    return ref;
+}
+
+Image<float> solveAll(const Scene& s, double p, double tol, const std::stop_token& stop = {}) {
+    SolverOptions o;
+    o.kind = SolverKind::Fast;
+    o.p = p;
+    o.tolerance = tol;
+    const auto solver = detail::makeFastSolver(o);
+    EXPECT_EQ(solver->errorBound(), tol);
+    Image<float> out(s.labels.width(), s.labels.height(), -7.0F);
+    for (const VoidRegion& r : s.regions) {
+        solver->solveRegion(s.labels.view(), r, out.view(), stop);
+    }
+    return out;
+}
+
+struct Check {
+    double maxErr = 0.0;
+    long bad = 0;  // non-finite or outside the region's contour depth range
+    long pixels = 0;
+};
+
+Check compare(const Scene& s, const Image<float>& out, const Image<double>& ref) {
+    Check c;
+    for (const VoidRegion& r : s.regions) {
+        float lo = std::numeric_limits<float>::infinity();
+        float hi = -lo;
+        for (const ContourPoint& p : r.contour) {
+            lo = std::min(lo, p.z);
+            hi = std::max(hi, p.z);
+        }
+        for (int y = r.y0; y < r.y1; ++y) {
+            for (int x = r.x0; x < r.x1; ++x) {
+                if (s.labels(x, y) != r.id) {
+                    continue;
+                }
+                ++c.pixels;
+                const float v = out(x, y);
+                if (r.contour.empty()) {
+                    c.bad += std::isnan(v) ? 0 : 1;
+                    continue;
+                }
+                if (!std::isfinite(v) || v < lo || v > hi) {
+                    ++c.bad;
+                    continue;
+                }
+                c.maxErr = std::max(c.maxErr, std::abs(static_cast<double>(v) - ref(x, y)));
+            }
+        }
+    }
+    return c;
+}
+
+void paintLine(Image<std::uint8_t>& m, double x0, double y0, double x1, double y1, double rad) {
+    const int bx0 = std::max(0, static_cast<int>(std::floor(std::min(x0, x1) - rad)));
+    const int bx1 = std::min(m.width() - 1, static_cast<int>(std::ceil(std::max(x0, x1) + rad)));
+    const int by0 = std::max(0, static_cast<int>(std::floor(std::min(y0, y1) - rad)));
+    const int by1 = std::min(m.height() - 1, static_cast<int>(std::ceil(std::max(y0, y1) + rad)));
+    const double vx = x1 - x0;
+    const double vy = y1 - y0;
+    const double len2 = vx * vx + vy * vy;
+    for (int y = by0; y <= by1; ++y) {
+        for (int x = bx0; x <= bx1; ++x) {
+            double t = len2 > 0 ? ((x - x0) * vx + (y - y0) * vy) / len2 : 0.0;
+            t = std::clamp(t, 0.0, 1.0);
+            const double dx = x - (x0 + t * vx);
+            const double dy = y - (y0 + t * vy);
+            if (dx * dx + dy * dy <= rad * rad) {
+                m(x, y) = 1;
+            }
+        }
+    }
+}
+
+enum class MaskKind { Blobs, Lines, Checker, Tree };
+
+/// Seeded masks and depths: blobs, thick lines, a checkerboard patch, a branching tree.
+Scene randomScene(int w, int h, MaskKind kind, std::uint64_t seed) {
+    Rng rng(seed);
+    Image<std::uint8_t> m(w, h, 0);
+    switch (kind) {
+        case MaskKind::Blobs:
+            for (int k = rng.range(3, 8); k > 0; --k) {
+                paintLine(m, rng.uniform() * w, rng.uniform() * h, rng.uniform() * w,
+                          rng.uniform() * h, 0.0);
+                const double cx = rng.uniform() * w;
+                const double cy = rng.uniform() * h;
+                paintLine(m, cx, cy, cx, cy, 1.0 + rng.uniform() * 6.0);
+            }
+            break;
+        case MaskKind::Lines:
+            for (int k = rng.range(2, 6); k > 0; --k) {
+                paintLine(m, rng.uniform() * w, rng.uniform() * h, rng.uniform() * w,
+                          rng.uniform() * h, 0.5 + rng.uniform() * 2.5);
+            }
+            break;
+        case MaskKind::Checker: {
+            const int x0 = rng.range(0, w / 2);
+            const int y0 = rng.range(0, h / 2);
+            for (int y = y0; y < std::min(h, y0 + h / 2); ++y) {
+                for (int x = x0; x < std::min(w, x0 + w / 2); ++x) {
+                    m(x, y) = static_cast<std::uint8_t>((x + y) % 2);
+                }
+            }
+            paintLine(m, 0, rng.uniform() * h, w, rng.uniform() * h, 1.0);
+            break;
+        }
+        case MaskKind::Tree: {
+            struct Br {
+                double x, y, a, r;
+                int depth;
+            };
+            std::vector<Br> todo{{w * 0.5, h * 0.95, -1.5707963, 2.0 + 0.006 * w, 0}};
+            while (!todo.empty()) {
+                Br b = todo.back();
+                todo.pop_back();
+                const double len = (0.15 + 0.2 * rng.uniform()) * std::min(w, h);
+                const double x1 = b.x + len * std::cos(b.a);
+                const double y1 = b.y + len * std::sin(b.a);
+                paintLine(m, b.x, b.y, x1, y1, b.r);
+                if (b.depth < 5) {
+                    todo.push_back(
+                        {x1, y1, b.a - 0.3 - 0.5 * rng.uniform(), b.r * 0.75, b.depth + 1});
+                    todo.push_back(
+                        {x1, y1, b.a + 0.3 + 0.5 * rng.uniform(), b.r * 0.75, b.depth + 1});
+                }
+            }
+            break;
+        }
+    }
+    Image<float> z(w, h, 0.0F);
+    const double gx = rng.uniform();
+    const double gy = rng.uniform();
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const double v = 0.5 + 0.35 * std::sin(gx * 12.0 * x / w + gy * 9.0 * y / h) +
+                             0.15 * (rng.uniform() - 0.5);
+            z(x, y) = static_cast<float>(std::clamp(v, 0.0, 1.0));
+        }
+    }
+    return makeScene(m, z);
+}
+
+const double kPowers[] = {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0};
+const double kTolerances[] = {0.5 / 255.0, 1e-3, 1e-2};
+
+TEST(FastSolverTest, RandomMasksMeetTheToleranceForEveryP) {
+    const MaskKind kinds[] = {MaskKind::Blobs, MaskKind::Lines, MaskKind::Checker, MaskKind::Tree};
+    int sceneIndex = 0;
+    for (const MaskKind kind : kinds) {
+        const Scene s = randomScene(72, 56, kind, 1000 + static_cast<std::uint64_t>(sceneIndex++));
+        for (const double p : kPowers) {
+            const Image<double> ref = referenceImage(s, p);
+            for (const double tol : kTolerances) {
+                const Check c = compare(s, solveAll(s, p, tol), ref);
+                EXPECT_EQ(c.bad, 0) << "kind " << static_cast<int>(kind) << " p " << p;
+                EXPECT_LE(c.maxErr, tol)
+                    << "kind " << static_cast<int>(kind) << " p " << p << " tol " << tol;
+                EXPECT_GT(c.pixels, 0);
+            }
+        }
+    }
+}
+
+TEST(FastSolverTest, LargerTreeExercisesTheFarField) {
+    // Big enough for several quadtree levels, expansions and dropped clusters.
+    const Scene s = randomScene(320, 224, MaskKind::Tree, 77);
+    for (const double p : {1.0, 2.0, 3.3, 8.0, 64.0}) {
+        const Image<double> ref = referenceImage(s, p);
+        detail::resetFastSolverStats();
+        const Check c = compare(s, solveAll(s, p, 0.5 / 255.0), ref);
+        const detail::FastSolverStats st = detail::fastSolverStats();
+        EXPECT_EQ(c.bad, 0) << "p " << p;
+        EXPECT_LE(c.maxErr, 0.5 / 255.0) << "p " << p;
+        EXPECT_EQ(st.pixels, c.pixels);
+        // the a-priori budget should make the exact fallback rare
+        EXPECT_LE(st.fallbackPixels, c.pixels / 100) << "p " << p;
+        if (p <= 8.0) {
+            EXPECT_GT(st.m2l, 0) << "p " << p;
+        }
+    }
+}
+
+TEST(FastSolverTest, TinyTolerancesAndPowersBeyondTheRange) {
+    // Tolerances near float resolution push pixels onto the exact fall-backs;
+    // p beyond 64 (allowed, untested elsewhere) must still be finite and bounded.
+    const Scene s = randomScene(80, 64, MaskKind::Lines, 21);
+    for (const double tol : {2e-5, 1e-6}) {
+        detail::resetFastSolverStats();
+        const Check c = compare(s, solveAll(s, 2.0, tol), referenceImage(s, 2.0));
+        const detail::FastSolverStats st = detail::fastSolverStats();
+        EXPECT_EQ(c.bad, 0) << tol;
+        EXPECT_LE(c.maxErr, tol) << tol;
+        if (tol < 1e-5) {
+            EXPECT_GT(st.fallbackPixels, 0);  // the exact paths did run
+        }
+        std::printf("tol %g: %lld fallback pixels, %lld exact tiles\n", tol,
+                    static_cast<long long>(st.fallbackPixels),
+                    static_cast<long long>(st.exactTiles));
+    }
+    for (const double p : {96.0, 150.0}) {
+        detail::resetFastSolverStats();
+        const Check c = compare(s, solveAll(s, p, 1e-3), referenceImage(s, p));
+        const detail::FastSolverStats st = detail::fastSolverStats();
+        EXPECT_EQ(c.bad, 0) << p;
+        EXPECT_LE(c.maxErr, 1e-3) << p;
+        std::printf("p %g: %lld fallback pixels, %lld exact tiles\n", p,
+                    static_cast<long long>(st.fallbackPixels),
+                    static_cast<long long>(st.exactTiles));
+    }
+    // 1e-4 with a large p: the exact-tile safety net (every contour point in the kernel)
+    for (const double tol : {1e-4, 3e-4}) {
+        detail::resetFastSolverStats();
+        const Check c = compare(s, solveAll(s, 40.0, tol), referenceImage(s, 40.0));
+        const detail::FastSolverStats st = detail::fastSolverStats();
+        EXPECT_EQ(c.bad, 0) << tol;
+        EXPECT_LE(c.maxErr, tol) << tol;
+        std::printf("p 40 tol %g: %lld fallback pixels, %lld exact tiles\n", tol,
+                    static_cast<long long>(st.fallbackPixels),
+                    static_cast<long long>(st.exactTiles));
+    }
+}
+
+TEST(FastSolverTest, TheGuaranteeDoesNotRestOnTheAPrioriBudget) {
+    // With a budget 30x too loose, the a-posteriori check (computed D, rigorous
+    // truncation and round-off bounds) must catch every pixel that would miss
+    // the tolerance: they go to the exact tile / exact pixel fall-backs.
+    const Scene s = randomScene(200, 150, MaskKind::Tree, 8);
+    for (const double p : {2.0, 8.0}) {
+        const Image<double> ref = referenceImage(s, p);
+        detail::setFastSolverBudgetScaleForTesting(30.0);
+        detail::resetFastSolverStats();
+        const Image<float> out = solveAll(s, p, 0.5 / 255.0);
+        const detail::FastSolverStats st = detail::fastSolverStats();
+        detail::setFastSolverBudgetScaleForTesting(1.0);
+        const Check c = compare(s, out, ref);
+        EXPECT_EQ(c.bad, 0) << p;
+        EXPECT_LE(c.maxErr, 0.5 / 255.0) << p;
+        EXPECT_GT(st.fallbackPixels, 0) << p;
+        EXPECT_GT(st.exactTiles, 0) << p;
+    }
+}
+
+TEST(FastSolverTest, RegionOfOnePixelAndSingleVesselPixel) {
+    Image<std::uint8_t> m(5, 5, 1);
+    m(2, 2) = 0;  // one void pixel, 8 contour pixels
+    Image<float> z(5, 5, 0.0F);
+    for (int y = 0; y < 5; ++y) {
+        for (int x = 0; x < 5; ++x) {
+            z(x, y) = 0.1F * static_cast<float>(x) + 0.05F * static_cast<float>(y);
+        }
+    }
+    const Scene s = makeScene(m, z);
+    ASSERT_EQ(s.regions.size(), 1U);
+    EXPECT_EQ(s.regions[0].contour.size(), 8U);
+    for (const double p : kPowers) {
+        const Check c = compare(s, solveAll(s, p, 1e-3), referenceImage(s, p));
+        EXPECT_EQ(c.bad, 0);
+        EXPECT_LE(c.maxErr, 1e-3);
+    }
+    // one vessel pixel in an empty image: z' is its depth everywhere
+    Image<std::uint8_t> m2(40, 30, 0);
+    m2(13, 17) = 1;
+    Image<float> z2(40, 30, 0.625F);
+    const Scene s2 = makeScene(m2, z2);
+    ASSERT_EQ(s2.regions.size(), 1U);
+    const Image<float> out = solveAll(s2, 8.0, 1e-3);
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            if (m2(x, y) == 0) {
+                EXPECT_EQ(out(x, y), 0.625F);
+            }
+        }
+    }
+}
+
+TEST(FastSolverTest, EmptyContourGivesNaNAndOtherPixelsStayUntouched) {
+    Image<std::int32_t> labels(6, 4, 3);
+    labels(0, 0) = 5;
+    VoidRegion r;
+    r.id = 3;
+    r.x0 = 0;
+    r.y0 = 0;
+    r.x1 = 6;
+    r.y1 = 4;
+    r.pixelCount = 23;
+    Image<float> out(6, 4, 2.0F);
+    SolverOptions o;
+    const auto solver = detail::makeFastSolver(o);
+    solver->solveRegion(labels.view(), r, out.view(), {});
+    for (int y = 0; y < 4; ++y) {
+        for (int x = 0; x < 6; ++x) {
+            if (x == 0 && y == 0) {
+                EXPECT_EQ(out(x, y), 2.0F);
+            } else {
+                EXPECT_TRUE(std::isnan(out(x, y)));
+            }
+        }
+    }
+    // 1 x 1 image, all void, no contour
+    Image<std::int32_t> one(1, 1, 0);
+    VoidRegion r1;
+    r1.x1 = 1;
+    r1.y1 = 1;
+    r1.pixelCount = 1;
+    Image<float> o1(1, 1, 0.0F);
+    solver->solveRegion(one.view(), r1, o1.view(), {});
+    EXPECT_TRUE(std::isnan(o1(0, 0)));
+}
+
+TEST(FastSolverTest, OnlyRegionPixelsAreWritten) {
+    const Scene s = randomScene(90, 70, MaskKind::Tree, 5);
+    ASSERT_GE(s.regions.size(), 2U);
+    SolverOptions o;
+    o.p = 3.0;
+    const auto solver = detail::makeFastSolver(o);
+    Image<float> out(90, 70, -7.0F);
+    const VoidRegion& r = s.regions[1];
+    solver->solveRegion(s.labels.view(), r, out.view(), {});
+    for (int y = 0; y < 70; ++y) {
+        for (int x = 0; x < 90; ++x) {
+            if (s.labels(x, y) == r.id) {
+                EXPECT_NE(out(x, y), -7.0F);
+            } else {
+                EXPECT_EQ(out(x, y), -7.0F);
+            }
+        }
+    }
+}
+
+TEST(FastSolverTest, StridedViews) {
+    // Labels and output as sub-views of larger images (stride > width).
+    const Scene s = randomScene(64, 48, MaskKind::Blobs, 9);
+    Image<std::int32_t> bigL(100, 60, kVesselLabel);
+    Image<float> bigO(120, 60, -3.0F);
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            bigL(x + 7, y + 5) = s.labels(x, y);
+        }
+    }
+    const ImageView<std::int32_t> lv = bigL.view().sub(7, 5, 64, 48);
+    const ImageView<float> ov = bigO.view().sub(11, 3, 64, 48);
+    SolverOptions o;
+    o.p = 4.0;
+    const auto solver = detail::makeFastSolver(o);
+    for (const VoidRegion& r : s.regions) {
+        solver->solveRegion(lv, r, ov, {});
+    }
+    const Image<float> direct = solveAll(s, 4.0, o.tolerance);
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 64; ++x) {
+            if (s.labels(x, y) >= 0) {
+                EXPECT_EQ(ov(x, y), direct(x, y));
+            } else {
+                EXPECT_EQ(ov(x, y), -3.0F);
+            }
+        }
+    }
+}
+
+TEST(FastSolverTest, AMillionContourPixelsAroundASmallVoid) {
+    // A 1000 x 1000 block of vessel pixels (given as the contour list) with a
+    // 24 x 24 void hole in it.
+    const int n = 1000;
+    Image<std::int32_t> labels(n, n, kVesselLabel);
+    VoidRegion r;
+    r.id = 0;
+    r.x0 = 480;
+    r.y0 = 470;
+    r.x1 = 504;
+    r.y1 = 494;
+    for (int y = r.y0; y < r.y1; ++y) {
+        for (int x = r.x0; x < r.x1; ++x) {
+            labels(x, y) = 0;
+            ++r.pixelCount;
+        }
+    }
+    Rng rng(4);
+    r.contour.reserve(static_cast<std::size_t>(n) * n);
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            if (labels(x, y) != 0) {
+                r.contour.push_back({x, y, static_cast<float>(rng.uniform())});
+            }
+        }
+    }
+    ASSERT_GE(r.contour.size(), 990000U);
+    Image<float> out(n, n, -1.0F);
+    for (const double p : {0.5, 2.0, 64.0}) {
+        SolverOptions o;
+        o.p = p;
+        const auto t0 = std::chrono::steady_clock::now();
+        detail::makeFastSolver(o)->solveRegion(labels.view(), r, out.view(), {});
+        const double secs =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        EXPECT_LT(secs, 10.0) << "p " << p;
+        double maxErr = 0.0;
+        for (int y = r.y0; y < r.y1; y += 3) {
+            for (int x = r.x0; x < r.x1; x += 3) {
+                maxErr = std::max(maxErr, std::abs(out(x, y) - referencePixel(r, x, y, p)));
+            }
+        }
+        EXPECT_LE(maxErr, o.tolerance) << "p " << p;
+    }
+}
+
+TEST(FastSolverTest, Huge7680x4320SparseImageWithoutOverflow) {
+    // Two vessel specks in opposite corners: distances up to ~8800 px, p = 64.
+    const int w = 7680;
+    const int h = 4320;
+    Image<std::int32_t> labels(w, h, 0);
+    VoidRegion r;
+    r.id = 0;
+    r.x1 = w;
+    r.y1 = h;
+    const int pts[][2] = {{0, 0}, {1, 0}, {w - 1, h - 1}, {w - 2, h - 1}, {w - 1, h - 3}};
+    float zv = 0.0F;
+    for (const auto& q : pts) {
+        labels(q[0], q[1]) = kVesselLabel;
+        r.contour.push_back({q[0], q[1], zv});
+        zv += 0.25F;
+    }
+    r.pixelCount = static_cast<std::int64_t>(w) * h - 5;
+    Image<float> out(w, h, 0.0F);
+    for (const double p : {2.0, 64.0}) {
+        SolverOptions o;
+        o.p = p;
+        detail::makeFastSolver(o)->solveRegion(labels.view(), r, out.view(), {});
+        long bad = 0;
+        double maxErr = 0.0;
+        for (int y = 0; y < h; y += 7) {
+            for (int x = 0; x < w; x += 5) {
+                if (labels(x, y) != 0) {
+                    continue;
+                }
+                const float v = out(x, y);
+                if (!std::isfinite(v) || v < 0.0F || v > 1.0F) {
+                    ++bad;
+                    continue;
+                }
+                maxErr = std::max(maxErr, std::abs(v - referencePixel(r, x, y, p)));
+            }
+        }
+        EXPECT_EQ(bad, 0) << "p " << p;
+        EXPECT_LE(maxErr, o.tolerance) << "p " << p;
+    }
+}
+
+TEST(FastSolverTest, CancellationThrows) {
+    const Scene s = randomScene(200, 150, MaskKind::Tree, 3);
+    std::stop_source src;
+    src.request_stop();
+    EXPECT_THROW(solveAll(s, 2.0, 1e-3, src.get_token()), CancelledError);
+}
+
+TEST(FastSolverTest, Deterministic) {
+    const Scene s = randomScene(300, 200, MaskKind::Tree, 11);
+    const Image<float> a = solveAll(s, 2.5, 0.5 / 255.0);
+    const Image<float> b = solveAll(s, 2.5, 0.5 / 255.0);
+    for (int y = 0; y < 200; ++y) {
+        for (int x = 0; x < 300; ++x) {
+            if (s.labels(x, y) >= 0) {
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(a(x, y)),
+                          std::bit_cast<std::uint32_t>(b(x, y)))
+                    << x << "," << y;
+            }
+        }
+    }
+}
+
+TEST(FastSolverTest, RejectsBadOptionsAndContours) {
+    SolverOptions o;
+    o.p = 0.0;
+    EXPECT_THROW((void)detail::makeFastSolver(o), InvalidArgumentError);
+    o.p = std::numeric_limits<double>::infinity();
+    EXPECT_THROW((void)detail::makeFastSolver(o), InvalidArgumentError);
+    o.p = 2.0;
+    o.tolerance = 0.0;
+    EXPECT_THROW((void)detail::makeFastSolver(o), InvalidArgumentError);
+    o.tolerance = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW((void)detail::makeFastSolver(o), InvalidArgumentError);
+    // a contour point on a pixel of its own void region (distance 0)
+    o.tolerance = 1e-3;
+    Image<std::int32_t> labels(4, 4, 0);
+    VoidRegion r;
+    r.x1 = 4;
+    r.y1 = 4;
+    r.pixelCount = 16;
+    r.contour.push_back({1, 1, 0.5F});
+    r.contour.push_back({5, 5, 0.25F});
+    Image<float> out(4, 4, 0.0F);
+    EXPECT_THROW(detail::makeFastSolver(o)->solveRegion(labels.view(), r, out.view(), {}),
+                 InvalidArgumentError);
+}
+
+TEST(FastSolverTest, KernelLog2AndExp2MeetTheirDocumentedBounds) {
+    // log2: the mantissa part is the same for every exponent; every mantissa.
+    double worstLog = 0.0;
+    for (std::uint32_t m = 0; m < (1U << 23); ++m) {
+        const float x = std::bit_cast<float>(0x3f800000U | m);  // [1, 2)
+        for (const float s : {1.0F, 0x1p-20F, 0x1p20F}) {
+            const float xs = x * s;
+            // the mantissa part's bound plus the rounding of the final sum e + f
+            const double exact = std::log2(static_cast<double>(xs));
+            worstLog =
+                std::max(worstLog, std::abs(static_cast<double>(detail::kernelLog2(xs)) - exact) -
+                                       std::abs(exact) * 0x1p-24);
+            if (s != 1.0F) {
+                break;  // spot-check other binades only for every 1 << 6
+            }
+        }
+    }
+    EXPECT_LE(worstLog, detail::kKernelLog2Error);
+    // exp2 on [-124.5, 0.5]: dense in the fraction, every integer part.
+    double worstExp = 0.0;
+    for (int k = -124; k <= 0; ++k) {
+        for (int i = 0; i <= 4096; ++i) {
+            const float a = static_cast<float>(k) + static_cast<float>(i) / 4096.0F - 0.5F;
+            const double exact = std::exp2(static_cast<double>(a));
+            worstExp = std::max(worstExp, std::abs(detail::kernelExp2(a) / exact - 1.0));
+        }
+    }
+    EXPECT_LE(worstExp, detail::kKernelExp2Error);
+    EXPECT_EQ(detail::kernelExp2(-200.0F), 0.0F);
+    EXPECT_NE(std::string(detail::leafKernelIsa()), "");
+}
+
+}  // namespace
+}  // namespace vv::vss
