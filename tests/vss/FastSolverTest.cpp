@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <stop_token>
 #include <string>
@@ -632,6 +633,45 @@ TEST(FastSolverTest, Deterministic) {
             if (s.labels(x, y) >= 0) {
                 ASSERT_EQ(std::bit_cast<std::uint32_t>(a(x, y)),
                           std::bit_cast<std::uint32_t>(b(x, y)))
+                    << x << "," << y;
+            }
+        }
+    }
+}
+
+TEST(FastSolverTest, SameResultAndCountersWithOneOrTwoThreads) {
+    // Large regions run as parallel tasks that own copies of the parent state,
+    // the rest of the box tree recurses on references to it; counters are kept
+    // per thread and added up per task. Neither may depend on the thread count.
+    const Scene s = randomScene(320, 240, MaskKind::Tree, 5);
+    const Image<double> ref = referenceImage(s, 4.0);
+    const char* old = std::getenv("VV_THREADS");
+    const std::string saved = old != nullptr ? old : "";
+    std::vector<Image<float>> outs;
+    std::vector<std::int64_t> m2l;
+    for (const char* threads : {"1", "2"}) {
+        ::setenv("VV_THREADS", threads, 1);
+        detail::resetFastSolverStats();
+        outs.push_back(solveAll(s, 4.0, 0.5 / 255.0));
+        const detail::FastSolverStats st = detail::fastSolverStats();
+        const Check c = compare(s, outs.back(), ref);
+        EXPECT_EQ(c.bad, 0);
+        EXPECT_LE(c.maxErr, 0.5 / 255.0);
+        EXPECT_EQ(st.pixels, c.pixels) << threads;
+        m2l.push_back(st.m2l);
+    }
+    if (old != nullptr) {
+        ::setenv("VV_THREADS", saved.c_str(), 1);
+    } else {
+        ::unsetenv("VV_THREADS");
+    }
+    EXPECT_GT(m2l[0], 0);
+    EXPECT_EQ(m2l[0], m2l[1]);
+    for (int y = 0; y < 240; ++y) {
+        for (int x = 0; x < 320; ++x) {
+            if (s.labels(x, y) >= 0) {
+                ASSERT_EQ(std::bit_cast<std::uint32_t>(outs[0](x, y)),
+                          std::bit_cast<std::uint32_t>(outs[1](x, y)))
                     << x << "," << y;
             }
         }

@@ -86,27 +86,40 @@
 // MEASURED (bench/vss_fast_micro, synthetic 1280x720 vessel trees, Far /
 // Medium / Close: 93 / 114 / 23 regions, largest contour 10198 / 5637 / 1609;
 // AMD EPYC (Zen 4), 2 vCPUs shared with other jobs, AVX-512 path, tolerance
-// 0.5/255). cpu = process CPU time of one frame, both threads (stable under
-// load); wall = median of 7 runs with 2 threads, taken when the machine was
-// lightly loaded (load average 1.5; on a loaded machine wall ~ 2x cpu):
-//     ms            p = 2         4          8          64
-//     Far      cpu  39          55         73         94
-//              wall 26          33         43          -
-//     Medium   cpu  44          56         67         77
-//              wall 32          38         44          -
-//     Close    cpu  25          30         36         55
-//              wall 16          19         23          -
-// Max error on 4000 sampled pixels 0.5e-6 .. 5e-6 (the tolerance is 2e-3),
-// 0 fallback pixels. Float brute force (Brute solver, same machine, loaded):
-// 1.9-2.7 s Far, 0.6-0.9 s Medium, 0.25-0.35 s Close. So the 16 ms
-// target is met for Close-like frames at p = 2 only; Far / Medium are 1.6-2.8x
-// off. Where the time goes (p = 2, Far, one thread): M2L 20%, near-field
-// kernel 20%, traversal 11%, moments 10%, leaf set-up 7%, L2L 5%.
+// 0.5/255). Command:
+//   cmake --build build-fast2 --target vss_fast_micro &&
+//   build-fast2/bench/vss_fast_micro --runs 7 --p 2,4,8,64
+// cpu = process CPU time of one frame, both threads (min of 7; stable under
+// load); wall = median of 7 runs with 2 threads, machine lightly loaded (load
+// average ~2). Previous version in brackets, measured in the same session:
+//     ms            p = 2          4            8            64
+//     Far      cpu  35.5 (39.6)  51.2 (54.4)  69.7 (75.8)  90.2 (92.5)
+//              wall 20.3 (22.7)  28.6 (30.4)  37.8 (42.3)  48.7 (50.1)
+//     Medium   cpu  40.8 (48.2)  52.6 (60.6)  63.5 (71.6)  73.2 (74.4)
+//              wall 23.9 (28.3)  29.7 (35.0)  35.8 (40.5)  41.9 (41.3)
+//     Close    cpu  22.4 (25.2)  27.0 (30.3)  32.9 (36.3)  51.9 (52.9)
+//              wall 13.5 (15.5)  16.1 (18.1)  19.0 (21.0)  29.5 (29.0)
+// Same decisions as before (identical M2L counts, near pairs, sampled max
+// errors 0.6e-6 .. 5.5e-6 against the tolerance 2e-3, 0 fallback pixels); the
+// gain is overhead: no copies of the parent's local expansion / cluster list
+// per box (children read the parent's, only parallel tasks own copies), scratch
+// vectors reused per thread, counters per thread instead of shared atomics per
+// leaf, chooseOrder without divisions or a 512-entry table. The 16 ms target
+// is met for Close at p = 2 only (Close p = 4 at 16.1); Far / Medium are
+// 1.3-2.4x off. Where the time goes (perf, p = 8 Far, one thread): leaf kernel
+// 29%, M2L 26%, traversal 17%, leaf set-up 6%, moments 3%, L2L 3%.
+// Tried and dropped: the kernel is not division-bound (replacing the division
+// by a product changed nothing at p = 2), and the leaf cost model (exact sum
+// against M2L, factor 0.15 .. 0.6) is flat within 5%.
 //
-// NEXT: cheaper near field for large p (per-row truncation, smaller tiles),
-// fewer translations (radial-moment refined tau, P2L of small clusters
-// vectorised over points), reuse of trees across frames / p, parallel tree
-// build.
+// NEXT: the remaining factor needs fewer near pairs (104 / 186 / 296 per pixel
+// at p = 2 / 4 / 8) and fewer translations, i.e. tighter rigorous bounds: the
+// error bound is driven by the worst pixel of a 16x16 tile (at p = 8 its D is
+// orders of magnitude below the tile's best), so per-pixel or per-half-tile
+// remainder bounds, dz_C measured against the computed z' (the bound is convex
+// in z', Lipschitz with the remainder weight), radial point spread in tau;
+// then reuse of trees across frames / p and a parallel tree build (serial now,
+// ~7% of a frame).
 //
 #include "FastSolver.h"
 
@@ -117,6 +130,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <memory>
 #include <stop_token>
 #include <utility>
 #include <vector>
@@ -145,6 +159,33 @@ AtomicStats& stats() {
     return s;
 }
 std::atomic<double> gBudgetScale{1.0};  // test hook, see FastStats.h
+
+// Per-thread counters, added to the shared atomics once per task / region (atomic
+// updates per leaf from both threads would bounce one cache line between the cores).
+struct LocalStats {
+    std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
+                 perPixelLeaves = 0, exactTiles = 0;
+};
+thread_local LocalStats tlStats;
+void flushStats() {
+    LocalStats& l = tlStats;
+    AtomicStats& s = stats();
+    s.pixels += l.pixels;
+    s.fallbackPixels += l.fallbackPixels;
+    s.leaves += l.leaves;
+    s.nearPairs += l.nearPairs;
+    s.m2l += l.m2l;
+    s.dropped += l.dropped;
+    s.perPixelLeaves += l.perPixelLeaves;
+    s.exactTiles += l.exactTiles;
+    l = LocalStats{};
+}
+struct StatsFlush {  // flushes on every exit, cancellation included
+    StatsFlush() = default;
+    StatsFlush(const StatsFlush&) = delete;
+    StatsFlush& operator=(const StatsFlush&) = delete;
+    ~StatsFlush() { flushStats(); }
+};
 
 // ---------------------------------------------------------------- complex numbers
 // A small complex type: std::complex<double> multiplication goes through a
@@ -242,6 +283,7 @@ struct PowerTables {
     double halfP = 1.0;
     int degree = kM;                             // local expansion degree used
     std::vector<double> c;                       // c_n = (p)_n / n!: coefficients of (1-q)^-p
+    std::vector<double> ratio;                   // max(1, (p+n)/(n+1)) >= t[n+1]/(q t[n])
     std::array<std::array<double, kS>, kS> h{};  // h[l][r] = (-1)^l (p/2)_{l+r} / (l! r!)
     std::array<std::array<double, kS>, kS> binom{};
     // poly[(l * kS + l') * kS + a]: (u+iv)^l (u-iv)^l' = sum_a coefficient * u^(l+l'-a) v^a
@@ -276,6 +318,10 @@ struct PowerTables {
         c[0] = 1.0;
         for (int n = 1; n <= kMaxTerms; ++n) {
             c[n] = c[n - 1] * (p + n - 1) / n;
+        }
+        ratio.resize(kMaxTerms + 1);
+        for (int n = 0; n <= kMaxTerms; ++n) {
+            ratio[static_cast<std::size_t>(n)] = std::max(1.0, (p + n) / (n + 1.0));
         }
         std::array<double, 2 * kS> poch{};
         poch[0] = 1.0;
@@ -317,55 +363,49 @@ struct PowerTables {
 
     // Smallest order m' in [0, degree] whose remainder tail
     // tau_m'(q) = sum_{n>m'} c_n q^n is <= limit; -1 if none. tauOut = tau_m'(q).
+    // The terms beyond the last one summed are bounded by a geometric series:
+    // t[n+1] / t[n] = q (p+n)/(n+1) <= q ratio[n] for every later n.
     int chooseOrder(double q, double limit, double& tauOut) const {
         if (!(q < 1.0) || limit <= 0.0) {
             return -1;
         }
-        std::array<double, kMaxTerms + 1> t;  // t[n] = c_n q^n (no zero fill: hot)
+        std::array<double, kS + 1> t;  // t[n] = c_n q^n, n <= degree + 1 (hot: no fill)
         t[0] = 1.0;
-        int last = 0;
-        double rest = std::numeric_limits<double>::infinity();
         double qn = 1.0;
-        for (int n = 1; n <= kMaxTerms; ++n) {
+        for (int n = 1; n <= degree + 1; ++n) {
             qn *= q;
-            t[n] = c[static_cast<std::size_t>(n)] * qn;
-            last = n;
-            if (n > degree) {
-                if (t[n] > limit) {
-                    return -1;  // the tail is at least this term
-                }
-                // ratio bound of the following terms: q * max(1, (p+n)/(n+1))
-                const double r = q * std::max(1.0, (p + n) / (n + 1.0));
-                if (r < 0.875) {
-                    rest = t[n] * r / (1.0 - r);
-                    break;
-                }
+            t[static_cast<std::size_t>(n)] = c[static_cast<std::size_t>(n)] * qn;
+        }
+        double term = t[static_cast<std::size_t>(degree + 1)];
+        double tail = 0.0;
+        for (int n = degree + 1;; ++n) {
+            tail += term;
+            if (tail > limit) {
+                return -1;  // the tail is at least this partial sum
             }
-        }
-        if (!std::isfinite(rest)) {
-            return -1;
-        }
-        double tail = rest;
-        for (int n = last; n > degree; --n) {
-            tail += t[n];
+            const double r = q * ratio[static_cast<std::size_t>(n)];
+            if (r < 0.875) {
+                tail += term * r / (1.0 - r);
+                break;
+            }
+            if (n >= kMaxTerms) {
+                return -1;
+            }
+            qn *= q;
+            term = c[static_cast<std::size_t>(n + 1)] * qn;
         }
         tail *= 1.0 + 1e-12;
-        if (tail > limit) {
+        if (!(tail <= limit)) {
             return -1;
         }
-        // tail(m'-1) = tail(m') + t[m']
-        std::array<double, kS + 1> tails{};
-        tails[degree] = tail;
-        for (int m = degree; m > 0; --m) {
-            tails[m - 1] = tails[m] + t[m];
+        // tail(m'-1) = tail(m') + t[m']: walk down while it still fits
+        int m = degree;
+        while (m > 0 && tail + t[static_cast<std::size_t>(m)] <= limit) {
+            tail += t[static_cast<std::size_t>(m)];
+            --m;
         }
-        for (int m = 0; m <= degree; ++m) {
-            if (tails[m] <= limit) {
-                tauOut = tails[m];
-                return m;
-            }
-        }
-        return -1;
+        tauOut = tail;
+        return m;
     }
 };
 
@@ -581,11 +621,9 @@ struct Local {
 };
 
 // Shift (exactly) a local expansion from centre/scale (t0, a0) to (t1, a1).
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(Local& loc, int deg,
-                                                                            const PowerTables& tab,
-                                                                            double t0x, double t0y,
-                                                                            double a0, double t1x,
-                                                                            double t1y, double a1) {
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(
+    const Local& src, Local& loc, int deg, const PowerTables& tab, double t0x, double t0y,
+    double a0, double t1x, double t1y, double a1, double f) {
     const double alpha = a1 / a0;
     const Cx beta{(t1x - t0x) / a0, (t1y - t0y) / a0};
     std::array<Cx, kS> bp;
@@ -608,8 +646,8 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(Loca
     std::array<V4, kS * kS> in;
     for (int l = 0; l <= deg; ++l) {
         for (int lp = 0; l + lp <= deg; ++lp) {
-            const Cx d = loc.d[l * kS + lp];
-            const Cx n = loc.n[l * kS + lp];
+            const Cx d = src.d[l * kS + lp];
+            const Cx n = src.n[l * kS + lp];
             in[l * kS + lp] = V4{d.re, d.im, n.re, n.im};
         }
     }
@@ -629,17 +667,9 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(Loca
             for (int lp = jp; j + lp <= deg; ++lp) {
                 acc += cmul4(t[j * kS + lp], conj(coef[lp * kS + jp]));
             }
+            acc *= f;
             loc.d[j * kS + jp] = Cx{acc[0], acc[1]};
             loc.n[j * kS + jp] = Cx{acc[2], acc[3]};
-        }
-    }
-}
-
-void scaleLocal(Local& loc, int deg, double f) {
-    for (int l = 0; l <= deg; ++l) {
-        for (int lp = 0; l + lp <= deg; ++lp) {
-            loc.d[l * kS + lp] = f * loc.d[l * kS + lp];
-            loc.n[l * kS + lp] = f * loc.n[l * kS + lp];
         }
     }
 }
@@ -798,9 +828,14 @@ struct BoxState {
     int level = 0;
     int ix = 0;
     int iy = 0;
-    std::vector<int> list;  // source nodes still to place
+    // source nodes still to place and the parent's local expansion: the
+    // parent's own (listRef / locRef, depth-first recursion: no copies) or,
+    // for parallel tasks, owned copies (list / loc)
+    const std::vector<int>* listRef = nullptr;
+    const Local* locRef = nullptr;
+    std::vector<int> list;
     bool hasLocal = false;
-    Local loc;
+    std::unique_ptr<Local> loc;
     double lx = 0.0, ly = 0.0, la = 1.0;  // centre / scale of loc
     double S = 1.0;                       // scale: loc, E, Dlo, W hold true values times S^p
     double E = 0.0;    // bound of sum_i dz_i |remainder_i| (the z' error is E / D)
@@ -1042,7 +1077,7 @@ void evalLeaf(const Region& rg, const BoxState& st, const BoxGeo& geo,
             b.tolRemaining = static_cast<float>(tolAll);
             leafKernel(b, z2.data(), fail2.data());
             haveExactTile = true;
-            stats().exactTiles += 1;
+            tlStats.exactTiles += 1;
         }
     }
     std::int64_t pixels = 0;
@@ -1070,7 +1105,7 @@ void evalLeaf(const Region& rg, const BoxState& st, const BoxGeo& geo,
             }
         }
     }
-    AtomicStats& s = stats();
+    LocalStats& s = tlStats;
     s.pixels += pixels;
     s.fallbackPixels += fallbacks;
     s.leaves += 1;
@@ -1095,10 +1130,15 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
     const bool leaf = st.level == 0;
 
     // 1. Clusters larger than the box are split (the "split the larger" rule).
-    std::vector<Cand> cands;
-    cands.reserve(st.list.size() * 2);
+    // Scratch reused by every box of this thread (used before the recursion only).
+    thread_local std::vector<Cand> cands;
+    thread_local std::vector<int> stack;
+    thread_local std::vector<double> wLo;
+    thread_local std::vector<int> nearNodes;
+    cands.clear();
     {
-        std::vector<int> stack(st.list.rbegin(), st.list.rend());
+        const std::vector<int>& list = st.listRef != nullptr ? *st.listRef : st.list;
+        stack.assign(list.rbegin(), list.rend());
         while (!stack.empty()) {
             const int nd = stack.back();
             stack.pop_back();
@@ -1127,13 +1167,12 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
     Local loc;
     bool hasLocal = st.hasLocal;
     if (hasLocal) {
-        loc = st.loc;
-        shiftLocal(loc, tab.degree, tab, st.lx, st.ly, st.la, geo.tx, geo.ty, geo.an);
-        scaleLocal(loc, tab.degree, f);
+        shiftLocal(st.locRef != nullptr ? *st.locRef : *st.loc, loc, tab.degree, tab, st.lx, st.ly,
+                   st.la, geo.tx, geo.ty, geo.an, f);
     }
     // 3. Lower bound of D over the box from the whole partition.
     const std::size_t nInitial = cands.size();
-    std::vector<double> wLo(nInitial);
+    wLo.resize(nInitial);
     double DloBox = Dlo;
     for (std::size_t k = 0; k < nInitial; ++k) {
         const Cand& c = cands[k];
@@ -1145,7 +1184,7 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
     double Sacc = st.Sacc;
     double Sexp = st.Sexp;
     std::vector<int> deferred;
-    std::vector<int> nearNodes;
+    nearNodes.clear();
     std::int64_t nM2l = 0;
     std::int64_t nDrop = 0;
     for (std::size_t k = 0; k < cands.size(); ++k) {
@@ -1208,8 +1247,8 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
         }
         nearNodes.push_back(c.node);
     }
-    stats().m2l += nM2l;
-    stats().dropped += nDrop;
+    tlStats.m2l += nM2l;
+    tlStats.dropped += nDrop;
     if (leaf) {
         evalLeaf(rg, st, geo, nearNodes, hasLocal, loc, S, E, W, Sexp);
         return;
@@ -1230,10 +1269,16 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             ch.level = st.level - 1;
             ch.ix = cx;
             ch.iy = cy;
-            ch.list = deferred;
             ch.hasLocal = hasLocal;
-            if (hasLocal) {
-                ch.loc = loc;
+            const bool task = tasks != nullptr && ch.level == taskLevel;
+            if (task) {
+                ch.list = deferred;
+                if (hasLocal) {
+                    ch.loc = std::make_unique<Local>(loc);
+                }
+            } else {
+                ch.listRef = &deferred;
+                ch.locRef = &loc;
             }
             ch.lx = geo.tx;
             ch.ly = geo.ty;
@@ -1244,7 +1289,7 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             ch.W = W;
             ch.Sacc = Sacc;
             ch.Sexp = Sexp;
-            if (tasks != nullptr && ch.level == taskLevel) {
+            if (task) {
                 tasks->push_back(std::move(ch));
             } else {
                 processBox(rg, ch, tasks, taskLevel);
@@ -1446,6 +1491,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     root0.list.push_back(0);
     // Parallel over boxes of 64 x 64 pixels (level 2) for large regions.
     const int taskLevel = (region.pixelCount >= 8192 && top > 2) ? 2 : -1;
+    const StatsFlush flushThis;
     if (taskLevel < 0) {
         processBox(rg, root0, nullptr, -1);
         return;
@@ -1455,6 +1501,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     parallelFor(
         0, static_cast<long>(tasks.size()), 1,
         [&](long b, long e) {
+            const StatsFlush flushTask;
             for (long i = b; i < e; ++i) {
                 processBox(rg, tasks[static_cast<std::size_t>(i)], nullptr, -1);
             }
