@@ -1,1 +1,451 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli info FILE... [--json] [--scale S]`: what a mesh file holds.
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "cli/Cli.h"
+#include "vv/io/MeshLoader.h"
+
+namespace vv::cli {
+
+namespace {
+
+constexpr const char* kInfoUsage =
+    "usage: vesselview-cli info FILE... [--json] [--scale S]\n"
+    "  Loads each mesh (STL, OBJ, PLY, VTK, VTP, VTU) and prints its vertex and\n"
+    "  triangle counts, bounds in mm, and every point / cell array with its\n"
+    "  components, unit, range of the finite values and count of non-finite ones.\n"
+    "  --json     print JSON instead of a table\n"
+    "  --scale S  multiply coordinates by S (file in metres: --scale 1000)\n";
+
+struct ArrayInfo {
+    std::string name;
+    std::string unit;
+    int components = 1;
+    bool integer = false;
+    bool fromCells = false;
+    std::optional<std::pair<float, float>> range;
+    std::size_t nonFinite = 0;
+};
+
+struct MeshInfo {
+    std::string file;
+    std::string name;
+    std::size_t vertices = 0;
+    std::size_t triangles = 0;
+    vv::Aabb bounds;
+    std::vector<ArrayInfo> pointArrays;
+    std::vector<ArrayInfo> cellArrays;
+};
+
+std::vector<ArrayInfo> summarize(const std::vector<vv::io::DataArray>& arrays) {
+    std::vector<ArrayInfo> out;
+    out.reserve(arrays.size());
+    for (const auto& a : arrays) {
+        out.push_back({a.name, a.unit, a.components, a.integer, a.fromCells, a.finiteRange(),
+                       a.nonFiniteCount()});
+    }
+    return out;
+}
+
+/// Six significant digits for people to read.
+std::string humanNumber(double v) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%g", v);
+    return buffer;
+}
+
+/// Shortest round-trip-safe text for a float-sized value; "nan" / "inf" as such.
+std::string formatNumber(double v) {
+    if (!std::isfinite(v)) {
+        return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
+    }
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.9g", v);
+    // Prefer the shorter %g form when it reads back to the same float.
+    char shorter[32];
+    std::snprintf(shorter, sizeof shorter, "%g", v);
+    if (static_cast<float>(std::strtod(shorter, nullptr)) == static_cast<float>(v)) {
+        return shorter;
+    }
+    return buffer;
+}
+
+// ---------------------------------------------------------------------------
+// A tiny JSON writer: objects, arrays, strings, numbers, booleans, null.
+
+/// `text` as a JSON string literal: quotes, backslashes and control characters
+/// escaped; bytes that are not valid UTF-8 become U+FFFD so the output stays
+/// valid UTF-8.
+std::string jsonString(std::string_view text) {
+    std::string out = "\"";
+    const auto* s = reinterpret_cast<const unsigned char*>(text.data());
+    const std::size_t n = text.size();
+    for (std::size_t i = 0; i < n;) {
+        const unsigned char c = s[i];
+        if (c < 0x80) {
+            switch (c) {
+                case '"':
+                    out += "\\\"";
+                    break;
+                case '\\':
+                    out += "\\\\";
+                    break;
+                case '\b':
+                    out += "\\b";
+                    break;
+                case '\f':
+                    out += "\\f";
+                    break;
+                case '\n':
+                    out += "\\n";
+                    break;
+                case '\r':
+                    out += "\\r";
+                    break;
+                case '\t':
+                    out += "\\t";
+                    break;
+                default:
+                    if (c < 0x20 || c == 0x7F) {
+                        char buffer[8];
+                        std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
+                        out += buffer;
+                    } else {
+                        out += static_cast<char>(c);
+                    }
+            }
+            ++i;
+            continue;
+        }
+        // Multi-byte UTF-8: validate length, continuation bytes, overlongs,
+        // surrogates and the U+10FFFF limit.
+        std::size_t length = 0;
+        std::uint32_t code = 0;
+        if (c >= 0xC2 && c <= 0xDF) {
+            length = 2;
+            code = c & 0x1FU;
+        } else if (c >= 0xE0 && c <= 0xEF) {
+            length = 3;
+            code = c & 0x0FU;
+        } else if (c >= 0xF0 && c <= 0xF4) {
+            length = 4;
+            code = c & 0x07U;
+        }
+        bool valid = length > 0 && i + length <= n;
+        for (std::size_t k = 1; valid && k < length; ++k) {
+            valid = (s[i + k] & 0xC0U) == 0x80U;
+            code = (code << 6U) | (s[i + k] & 0x3FU);
+        }
+        if (valid) {
+            valid = !(length == 3 && code < 0x800) && !(length == 4 && code < 0x10000) &&
+                    !(code >= 0xD800 && code <= 0xDFFF) && code <= 0x10FFFF;
+        }
+        if (valid) {
+            out.append(text.substr(i, length));
+            i += length;
+        } else {
+            out += "\\ufffd";
+            ++i;
+        }
+    }
+    out += '"';
+    return out;
+}
+
+class JsonWriter {
+  public:
+    explicit JsonWriter(std::ostream& out) : out_(out) {}
+
+    void beginObject() { open('{'); }
+    void endObject() { close('}'); }
+    void beginArray() { open('['); }
+    void endArray() { close(']'); }
+
+    void key(std::string_view name) {
+        separate();
+        out_ << jsonString(name) << ": ";
+        afterKey_ = true;
+    }
+    void string(std::string_view text) {
+        separate();
+        out_ << jsonString(text);
+    }
+    /// Non-finite numbers have no JSON form: they are written as null.
+    void number(double v) {
+        separate();
+        if (std::isfinite(v)) {
+            out_ << formatNumber(v);
+        } else {
+            out_ << "null";
+        }
+    }
+    void integer(std::uint64_t v) {
+        separate();
+        out_ << v;
+    }
+    void boolean(bool v) {
+        separate();
+        out_ << (v ? "true" : "false");
+    }
+    void null() {
+        separate();
+        out_ << "null";
+    }
+    void finish() { out_ << '\n'; }
+
+  private:
+    void open(char bracket) {
+        separate();
+        out_ << bracket;
+        first_.push_back(true);
+    }
+    void close(char bracket) {
+        const bool empty = first_.back();
+        first_.pop_back();
+        if (!empty) {
+            newline();
+        }
+        out_ << bracket;
+    }
+    void separate() {
+        if (afterKey_) {
+            afterKey_ = false;
+            return;
+        }
+        if (first_.empty()) {
+            return;
+        }
+        if (!first_.back()) {
+            out_ << ',';
+        }
+        first_.back() = false;
+        newline();
+    }
+    void newline() { out_ << '\n' << std::string(first_.size() * 2, ' '); }
+
+    std::ostream& out_;
+    std::vector<bool> first_;  // per open container: nothing written yet
+    bool afterKey_ = false;
+};
+
+void writeJsonArrays(JsonWriter& json, const std::vector<ArrayInfo>& arrays) {
+    json.beginArray();
+    for (const auto& a : arrays) {
+        json.beginObject();
+        json.key("name");
+        json.string(a.name);
+        json.key("unit");
+        json.string(a.unit);
+        json.key("components");
+        json.integer(static_cast<std::uint64_t>(a.components));
+        json.key("integer");
+        json.boolean(a.integer);
+        json.key("from_cells");
+        json.boolean(a.fromCells);
+        json.key("range_of");
+        json.string(a.components == 1 ? "value" : "magnitude");
+        json.key("min");
+        a.range ? json.number(a.range->first) : json.null();
+        json.key("max");
+        a.range ? json.number(a.range->second) : json.null();
+        json.key("non_finite");
+        json.integer(a.nonFinite);
+        json.endObject();
+    }
+    json.endArray();
+}
+
+void writeJson(std::ostream& out, const std::vector<MeshInfo>& meshes) {
+    JsonWriter json(out);
+    json.beginObject();
+    json.key("meshes");
+    json.beginArray();
+    for (const auto& m : meshes) {
+        json.beginObject();
+        json.key("file");
+        json.string(m.file);
+        json.key("name");
+        json.string(m.name);
+        json.key("vertices");
+        json.integer(m.vertices);
+        json.key("triangles");
+        json.integer(m.triangles);
+        json.key("bounds_mm");
+        json.beginObject();
+        const std::pair<const char*, glm::vec3> corners[] = {
+            {"min", m.bounds.min}, {"max", m.bounds.max}, {"size", m.bounds.size()}};
+        for (const auto& [corner, v] : corners) {
+            json.key(corner);
+            json.beginArray();
+            for (int k = 0; k < 3; ++k) {
+                json.number(v[k]);
+            }
+            json.endArray();
+        }
+        json.endObject();
+        json.key("point_arrays");
+        writeJsonArrays(json, m.pointArrays);
+        json.key("cell_arrays");
+        writeJsonArrays(json, m.cellArrays);
+        json.endObject();
+    }
+    json.endArray();
+    json.endObject();
+    json.finish();
+}
+
+// ---------------------------------------------------------------------------
+// Human-readable table
+
+void writeArrayTable(std::ostream& out, const char* title, const std::vector<ArrayInfo>& arrays) {
+    if (arrays.empty()) {
+        out << "  " << title << ": none\n";
+        return;
+    }
+    out << "  " << title << " (" << arrays.size() << "):\n";
+    std::vector<std::vector<std::string>> rows = {
+        {"name", "comp", "unit", "min", "max", "non-finite", "notes"}};
+    for (const auto& a : arrays) {
+        std::string notes;
+        const auto note = [&](const char* text) {
+            notes += notes.empty() ? text : std::string(", ") + text;
+        };
+        if (a.components > 1)
+            note("range of magnitude");
+        if (a.integer)
+            note("integer");
+        if (a.fromCells)
+            note("from cells");
+        rows.push_back({a.name, std::to_string(a.components), a.unit.empty() ? "-" : a.unit,
+                        a.range ? humanNumber(a.range->first) : "-",
+                        a.range ? humanNumber(a.range->second) : "-", std::to_string(a.nonFinite),
+                        notes});
+    }
+    std::vector<std::size_t> width(rows.front().size(), 0);
+    for (const auto& row : rows) {
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            width[c] = std::max(width[c], row[c].size());
+        }
+    }
+    for (const auto& row : rows) {
+        std::string line = "    ";
+        for (std::size_t c = 0; c < row.size(); ++c) {
+            line += row[c];
+            if (c + 1 < row.size()) {
+                line += std::string(width[c] - row[c].size() + 2, ' ');
+            }
+        }
+        while (!line.empty() && line.back() == ' ') {
+            line.pop_back();
+        }
+        out << line << '\n';
+    }
+}
+
+void writeTable(std::ostream& out, const std::vector<MeshInfo>& meshes) {
+    bool first = true;
+    for (const auto& m : meshes) {
+        if (!first) {
+            out << '\n';
+        }
+        first = false;
+        out << m.file << '\n';
+        out << "  name:       " << m.name << '\n';
+        out << "  vertices:   " << m.vertices << '\n';
+        out << "  triangles:  " << m.triangles << '\n';
+        const auto& b = m.bounds;
+        out << "  bounds mm:  x [" << humanNumber(b.min.x) << ", " << humanNumber(b.max.x)
+            << "]  y [" << humanNumber(b.min.y) << ", " << humanNumber(b.max.y) << "]  z ["
+            << humanNumber(b.min.z) << ", " << humanNumber(b.max.z) << "]\n";
+        const glm::vec3 size = b.size();
+        out << "  size mm:    " << humanNumber(size.x) << " x " << humanNumber(size.y) << " x "
+            << humanNumber(size.z) << '\n';
+        writeArrayTable(out, "point arrays", m.pointArrays);
+        writeArrayTable(out, "cell arrays", m.cellArrays);
+    }
+}
+
+double parseScale(const std::string& text) {
+    const char* begin = text.c_str();
+    char* end = nullptr;
+    errno = 0;
+    const double v = std::strtod(begin, &end);
+    if (text.empty() || end != begin + text.size() || errno == ERANGE) {
+        throw UsageError("--scale needs a number, not '" + text + "'");
+    }
+    return v;
+}
+
+}  // namespace
+
+int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
+    std::vector<std::filesystem::path> files;
+    bool json = false;
+    vv::io::MeshLoadOptions options;
+    bool optionsEnded = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        if (optionsEnded || a.empty() || a[0] != '-' || a == "-") {
+            files.emplace_back(a);
+        } else if (a == "--") {
+            optionsEnded = true;
+        } else if (a == "--help" || a == "-h") {
+            out << kInfoUsage;
+            return kOk;
+        } else if (a == "--json") {
+            json = true;
+        } else if (a == "--scale") {
+            if (i + 1 >= args.size()) {
+                throw UsageError("--scale needs a value");
+            }
+            options.scale = parseScale(args[++i]);
+        } else if (a.rfind("--scale=", 0) == 0) {
+            options.scale = parseScale(a.substr(8));
+        } else {
+            throw UsageError("unknown option '" + a + "' for info");
+        }
+    }
+    if (files.empty()) {
+        throw UsageError("info needs at least one mesh FILE");
+    }
+    if (!std::isfinite(options.scale) || !(options.scale > 0.0)) {
+        throw UsageError("--scale must be a finite number > 0, not " + humanNumber(options.scale));
+    }
+
+    // Load everything first: a bad file fails the command before any output,
+    // so the JSON is either complete or absent.
+    std::vector<MeshInfo> meshes;
+    meshes.reserve(files.size());
+    for (const auto& file : files) {
+        const vv::io::Mesh mesh = vv::io::loadMesh(file, options);
+        MeshInfo info;
+        info.file = file.string();
+        info.name = mesh.name;
+        info.vertices = mesh.vertexCount();
+        info.triangles = mesh.triangleCount();
+        info.bounds = mesh.bounds();
+        info.pointArrays = summarize(mesh.pointArrays);
+        info.cellArrays = summarize(mesh.cellArrays);
+        meshes.push_back(std::move(info));
+    }
+    if (json) {
+        writeJson(out, meshes);
+    } else {
+        writeTable(out, meshes);
+    }
+    return kOk;
+}
+
+}  // namespace vv::cli

@@ -10,7 +10,8 @@ std::size_t DataArray::nonFiniteCount() const noexcept {
     const auto n = tupleCount();
     for (std::size_t i = 0; i < n; ++i) {
         for (int c = 0; c < components; ++c) {
-            if (!std::isfinite(values[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)])) {
+            if (!std::isfinite(values[i * static_cast<std::size_t>(components) +
+                                      static_cast<std::size_t>(c)])) {
                 ++count;
                 break;
             }
@@ -28,7 +29,8 @@ std::optional<std::pair<float, float>> DataArray::finiteRange() const {
         double sum = 0.0;
         bool finite = true;
         for (int c = 0; c < components; ++c) {
-            const float v = values[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)];
+            const float v =
+                values[i * static_cast<std::size_t>(components) + static_cast<std::size_t>(c)];
             finite = finite && std::isfinite(v);
             sum += static_cast<double>(v) * v;
         }
@@ -50,7 +52,9 @@ std::optional<std::pair<float, float>> DataArray::finiteRange() const {
     return std::make_pair(lo, hi);
 }
 
-Aabb Mesh::bounds() const noexcept { return boundsOf(positions); }
+Aabb Mesh::bounds() const noexcept {
+    return boundsOf(positions);
+}
 
 const DataArray* Mesh::pointArray(const std::string& arrayName) const noexcept {
     for (const auto& a : pointArrays) {
@@ -80,8 +84,8 @@ void computeNormals(Mesh& mesh) {
             continue;
         }
         // Cross product length is twice the area: area weighting for free.
-        const glm::vec3 face =
-            glm::cross(mesh.positions[b] - mesh.positions[a], mesh.positions[c] - mesh.positions[a]);
+        const glm::vec3 face = glm::cross(mesh.positions[b] - mesh.positions[a],
+                                          mesh.positions[c] - mesh.positions[a]);
         mesh.normals[a] += face;
         mesh.normals[b] += face;
         mesh.normals[c] += face;
