@@ -7,7 +7,7 @@
 // double-precision reference on a pixel sample.
 //
 //   vss_fast_micro [--runs N] [--p 2,4,8,64] [--tol T] [--views far,medium,close]
-//                  [--brute] [--sample K]
+//                  [--brute] [--sample K] [--budget-scale F]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -229,10 +229,14 @@ int main(int argc, char** argv) {
             brute = true;
         } else if (a == "--sample" && more) {
             sample = std::atoi(argv[++i]);
+        } else if (a == "--budget-scale" && more) {
+            // test hook: a looser a-priori budget, to see how much slack the check has
+            detail::setFastSolverBudgetScaleForTesting(std::atof(argv[++i]));
         } else {
             std::fprintf(stderr,
                          "usage: vss_fast_micro [--runs N] [--p 2,4,8] [--tol T] "
-                         "[--views far,medium,close] [--brute] [--sample K]\n");
+                         "[--views far,medium,close] [--brute] [--sample K] "
+                         "[--budget-scale F]\n");
             return 2;
         }
     }

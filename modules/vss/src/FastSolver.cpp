@@ -111,6 +111,24 @@
 // Tried and dropped: the kernel is not division-bound (replacing the division
 // by a product changed nothing at p = 2), and the leaf cost model (exact sum
 // against M2L, factor 0.15 .. 0.6) is flat within 5%.
+// Also tried and dropped (same counters, cpu ms min of 5, Far p = 2 / 8, machine
+// loaded by other builds, base 37.5 / 71.5):
+//  - Dlo(B) as the minimum over the box's four quadrants of sum n_C maxd^-p
+//    (rigorous): near pairs 296 -> 288, M2L -3.5% at p = 8; gain eaten by the
+//    four extra powers per candidate.
+//  - Radial spread in tau: bin each cluster's points by |v_i| <= {0.5, 0.7,
+//    0.85, 1} s; tau_m(q_b) <= (q_b/q)^(m+1) tau_m(q) term by term, so the mean
+//    per-point factor is phi_m tau_m(q), phi_m = sum_b f_b (q_b/q)^(m+1)
+//    (rigorous, cheap). Near pairs 104 -> 93 / 296 -> 267, M2L -13% / -10%,
+//    but cpu 39.5 / 74.7 (+5% / +4%): phi for every candidate at every level
+//    and a larger SrcNode cost more than the saved work; leaves only: worse.
+//  - vss_fast_micro --budget-scale F (a looser a-priori budget; the check keeps
+//    the guarantee): at 3x, p = 8 needs 15% fewer near pairs with 0 fall-backs
+//    but p = 2 already sends 7198 pixels to the fall-back; at 10x, 81% / 20% of
+//    the pixels fail. So at p = 2 the rigorous E is within 3-10x of tol D on
+//    most pixels, i.e. tightening the per-tile allocation (per-pixel D) cannot
+//    pay much there; the ~1000x gap to the measured error is in E itself (sign
+//    cancellation of the remainders, which no per-point bound can use).
 //
 // NEXT: the remaining factor needs fewer near pairs (104 / 186 / 296 per pixel
 // at p = 2 / 4 / 8) and fewer translations, i.e. tighter rigorous bounds: the

@@ -1,0 +1,318 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// vesselview-cli bench [--mesh FILE] [--size WxH] [--views far,medium,close]
+//                      [--p 2,4,8] [--runs N] [--reference-runs N]
+//                      [--solvers LIST] [--tolerances LIST] [--out DIR]
+//                      [--depth-out DIR] [--quick]
+// Error against run time of the VSS solvers (bench/VssBenchmark.h).
+#include <QCoreApplication>
+#include <QGuiApplication>
+#include <charconv>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <system_error>
+#include <vector>
+
+#include "VssBenchmark.h"
+#include "cli/Cli.h"
+#include "vv/core/Error.h"
+#include "vv/io/DemoTree.h"
+#include "vv/io/MeshLoader.h"
+#include "vv/render/ViewPresets.h"
+
+namespace vv::cli {
+
+namespace {
+
+constexpr int kQuickWidth = 256;
+constexpr int kQuickHeight = 144;
+
+struct BenchArguments {
+    std::optional<std::filesystem::path> mesh;
+    std::optional<std::pair<int, int>> size;
+    std::vector<render::ViewPreset> views{render::ViewPreset::Far, render::ViewPreset::Medium,
+                                          render::ViewPreset::Close};
+    std::vector<double> powers{2.0, 4.0, 8.0};
+    std::optional<int> runs;
+    std::optional<int> referenceRuns;
+    std::vector<std::string> solvers{"reference", "brute", "step3", "step5", "fast"};
+    std::vector<double> tolerances255{0.5, 2.0, 8.0};  ///< fast tolerances in units of 1/255
+    std::filesystem::path out = ".";
+    std::optional<std::filesystem::path> depthOut;
+    bool quick = false;
+};
+
+std::vector<std::string> splitList(const std::string& text, const std::string& what) {
+    std::vector<std::string> items;
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item =
+            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        if (item.empty()) {
+            throw UsageError("bench: " + what + " must be a comma-separated list, got '" + text +
+                             "'");
+        }
+        items.push_back(item);
+        if (comma == std::string::npos) {
+            return items;
+        }
+        start = comma + 1;
+    }
+}
+
+double parsePositive(const std::string& text, const std::string& what) {
+    double value = 0.0;
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value) ||
+        !(value > 0.0)) {
+        throw UsageError("bench: " + what + " must be a finite number > 0, got '" + text + "'");
+    }
+    return value;
+}
+
+int parseCount(const std::string& text, const std::string& what, int lo, int hi) {
+    int value = 0;
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (text.empty() || ec != std::errc() || ptr != end || value < lo || value > hi) {
+        throw UsageError("bench: " + what + " must be a whole number in " + std::to_string(lo) +
+                         ".." + std::to_string(hi) + ", got '" + text + "'");
+    }
+    return value;
+}
+
+std::pair<int, int> parseSize(const std::string& text) {
+    const auto x = text.find_first_of("xX");
+    if (x == std::string::npos) {
+        throw UsageError("bench: --size must be WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
+    }
+    return {parseCount(text.substr(0, x), "--size width", 1, 8192),
+            parseCount(text.substr(x + 1), "--size height", 1, 8192)};
+}
+
+BenchArguments parse(const std::vector<std::string>& args) {
+    BenchArguments parsed;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) {
+                throw UsageError("bench: " + a + " needs a value");
+            }
+            return args[++i];
+        };
+        if (a == "--mesh") {
+            parsed.mesh = std::filesystem::path(value());
+        } else if (a == "--size") {
+            parsed.size = parseSize(value());
+        } else if (a == "--views") {
+            parsed.views.clear();
+            for (const std::string& name : splitList(value(), "--views")) {
+                const auto view = render::viewPresetFromName(name);
+                if (!view) {
+                    throw UsageError("bench: unknown view '" + name +
+                                     "' (known: far, medium, close)");
+                }
+                parsed.views.push_back(*view);
+            }
+        } else if (a == "--p") {
+            parsed.powers.clear();
+            for (const std::string& p : splitList(value(), "--p")) {
+                parsed.powers.push_back(parsePositive(p, "--p"));
+            }
+        } else if (a == "--runs") {
+            parsed.runs = parseCount(value(), "--runs", 1, 1000);
+        } else if (a == "--reference-runs") {
+            parsed.referenceRuns = parseCount(value(), "--reference-runs", 1, 1000);
+        } else if (a == "--solvers") {
+            parsed.solvers = splitList(value(), "--solvers");
+        } else if (a == "--tolerances") {
+            parsed.tolerances255.clear();
+            for (const std::string& t : splitList(value(), "--tolerances")) {
+                parsed.tolerances255.push_back(parsePositive(t, "--tolerances"));
+            }
+        } else if (a == "--out") {
+            parsed.out = value();
+            if (parsed.out.empty()) {
+                throw UsageError("bench: --out needs a folder");
+            }
+        } else if (a == "--depth-out") {
+            parsed.depthOut = std::filesystem::path(value());
+            if (parsed.depthOut->empty()) {
+                throw UsageError("bench: --depth-out needs a folder");
+            }
+        } else if (a == "--quick") {
+            parsed.quick = true;
+        } else {
+            throw UsageError("bench: unknown argument '" + a + "'");
+        }
+    }
+    return parsed;
+}
+
+/// The solver settings named on the command line: reference, brute, stepK
+/// (K >= 1), fast (one setting per tolerance).
+std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
+    std::vector<bench::SolverSetting> settings;
+    const std::vector<bench::SolverSetting> defaults = bench::defaultSolverSettings();
+    const auto byLabel = [&](const std::string& label) {
+        for (const auto& s : defaults) {
+            if (s.label == label) {
+                return s;
+            }
+        }
+        throw UsageError("bench: no default solver setting '" + label + "'");
+    };
+    for (const std::string& name : parsed.solvers) {
+        if (name == "reference" || name == "brute") {
+            settings.push_back(byLabel(name));
+        } else if (name.rfind("step", 0) == 0) {
+            const int k = parseCount(name.substr(4), "the step of '" + name + "'", 1, 1000000);
+            bench::SolverSetting s;
+            s.label = "step " + std::to_string(k);
+            s.series = s.label;
+            s.options.kind = vss::SolverKind::Step;
+            s.options.step = k;
+            settings.push_back(s);
+        } else if (name == "fast") {
+            for (const double t : parsed.tolerances255) {
+                bench::SolverSetting s;
+                char text[32];
+                std::snprintf(text, sizeof text, "%g", t);
+                s.label = std::string("fast ") + text + "/255";
+                s.series = "fast";
+                s.options.kind = vss::SolverKind::Fast;
+                s.options.tolerance = t / 255.0;
+                settings.push_back(s);
+            }
+        } else {
+            throw UsageError("bench: unknown solver '" + name +
+                             "' (known: reference, brute, stepK, fast)");
+        }
+    }
+    for (std::size_t i = 0; i < settings.size(); ++i) {
+        for (std::size_t j = 0; j < i; ++j) {
+            if (settings[i].label == settings[j].label) {
+                throw UsageError("bench: solver '" + settings[i].label + "' given twice");
+            }
+        }
+    }
+    return settings;
+}
+
+/// Fonts for the plot need a QGuiApplication; made once per process when the
+/// caller has none, on the offscreen platform unless a display or platform is set.
+void ensureGuiApplication() {
+    if (QCoreApplication::instance() != nullptr) {
+        if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
+            throw Error(
+                "bench: the plot needs a QGuiApplication, the process has a "
+                "QCoreApplication");
+        }
+        return;
+    }
+    const bool platformChosen = !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+    const bool haveDisplay =
+        !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    static int argc = 1;
+    static char name[] = "vesselview-cli";
+    static char platformFlag[] = "-platform";
+    static char offscreen[] = "offscreen";
+    static char* argv[] = {name, nullptr, nullptr, nullptr};
+    if (!platformChosen && !haveDisplay) {
+        argv[1] = platformFlag;
+        argv[2] = offscreen;
+        argc = 3;
+    }
+    // Lives until the process ends (Qt allows one application object).
+    new QGuiApplication(argc, argv);
+}
+
+/// Makes `folder` when missing; OutputError when it cannot be made or is a file.
+void ensureFolder(const std::filesystem::path& folder) {
+    std::error_code ec;
+    std::filesystem::create_directories(folder, ec);
+    if (!std::filesystem::is_directory(folder, ec)) {
+        throw OutputError(folder.string() + ": cannot write: not a folder and cannot be made");
+    }
+}
+
+}  // namespace
+
+int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    const BenchArguments parsed = parse(args);
+
+    bench::VssBenchmarkOptions options;
+    options.width = parsed.size ? parsed.size->first : (parsed.quick ? kQuickWidth : 1280);
+    options.height = parsed.size ? parsed.size->second : (parsed.quick ? kQuickHeight : 720);
+    options.views = parsed.views;
+    options.powers = parsed.powers;
+    options.solvers = solverSettings(parsed);
+    options.runs = parsed.runs.value_or(parsed.quick ? 1 : 5);
+    options.referenceRuns = parsed.referenceRuns.value_or(1);
+    options.log = [&err](std::string_view line) { err << "bench: " << line << "\n" << std::flush; };
+
+    // Fail before the long run when the outputs cannot be written.
+    ensureFolder(parsed.out);
+    if (parsed.depthOut) {
+        ensureFolder(*parsed.depthOut);
+        options.depthOut = *parsed.depthOut;
+    }
+    ensureGuiApplication();
+
+    io::Scene scene;
+    if (parsed.mesh) {
+        scene.meshes.push_back(io::loadMesh(*parsed.mesh));
+    } else {
+        err << "bench: generating the demo vessel tree\n" << std::flush;
+        scene.meshes.push_back(io::generateDemoMesh());
+    }
+
+    bench::VssBenchmarkResult result;
+    try {
+        result = bench::runVssBenchmark(scene, options);
+    } catch (const IoError& e) {
+        throw OutputError(e.what());  // only the depth PFMs are written during the run
+    }
+
+    const std::filesystem::path csv = parsed.out / "vss.csv";
+    const std::filesystem::path table = parsed.out / "vss-table.md";
+    const std::filesystem::path plot = parsed.out / "vss-error-vs-time.png";
+    try {
+        bench::writeCsv(csv, result);
+        bench::writeMarkdown(table, result);
+        bench::writePlot(plot, result);
+    } catch (const IoError& e) {
+        throw OutputError(e.what());
+    }
+
+    out << bench::markdownTable(result);
+    // A solver that promises a bound and misses it is a bug worth shouting about.
+    int failed = 0;
+    for (const bench::VssBenchmarkRow& row : result.rows) {
+        if (!row.failure.empty()) {
+            ++failed;
+            continue;
+        }
+        if (std::isfinite(row.errorBound) && row.errorBound > 0.0 &&
+            !(row.error.maxAbs <= row.errorBound)) {
+            err << "bench: warning: " << render::toString(row.view) << " p=" << row.p << " "
+                << row.solver << ": max error " << row.error.maxAbs << " exceeds its bound "
+                << row.errorBound << "\n";
+        }
+    }
+    if (failed > 0) {
+        err << "bench: warning: " << failed
+            << " setting(s) could not be measured (see the table)\n";
+    }
+    out << "\nwrote " << csv.string() << ", " << table.string() << ", " << plot.string() << "\n";
+    return kOk;
+}
+
+}  // namespace vv::cli

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli bench` through vv::cli::run: a quick run on a small tree.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <QImage>
+#include <QString>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "cli/Cli.h"
+#include "vv/io/DemoTree.h"
+#include "vv/io/MeshWriter.h"
+#include "vv/vss/Pfm.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path testDir() {
+    const fs::path dir =
+        fs::path(VV_TEST_TMP) / "bench-command" / ("run-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// A small demo tree written once as VTP.
+const fs::path& smallTree() {
+    static const fs::path file = [] {
+        vv::io::DemoTreeOptions options;
+        options.generations = 4;
+        options.maxTriangles = 20000;
+        const fs::path f = testDir() / "small-tree.vtp";
+        vv::io::writeVtp(vv::io::generateDemoMesh(options), f);
+        return f;
+    }();
+    return file;
+}
+
+struct BenchRun {
+    int code = -1;
+    std::string out;
+    std::string err;
+};
+
+BenchRun bench(std::vector<std::string> args) {
+    args.insert(args.begin(), "bench");
+    std::ostringstream out;
+    std::ostringstream err;
+    BenchRun r;
+    r.code = vv::cli::run(args, out, err);
+    r.out = out.str();
+    r.err = err.str();
+    return r;
+}
+
+/// CSV without quoted commas in the fields this test reads.
+std::vector<std::map<std::string, std::string>> readCsv(const fs::path& file) {
+    std::ifstream in(file);
+    std::string line;
+    std::vector<std::string> header;
+    std::vector<std::map<std::string, std::string>> rows;
+    const auto split = [](const std::string& text) {
+        std::vector<std::string> fields;
+        std::string field;
+        std::istringstream s(text);
+        while (std::getline(s, field, ',')) {
+            fields.push_back(field);
+        }
+        if (!text.empty() && text.back() == ',') {
+            fields.emplace_back();
+        }
+        return fields;
+    };
+    while (std::getline(in, line)) {
+        if (header.empty()) {
+            header = split(line);
+            continue;
+        }
+        const auto fields = split(line);
+        std::map<std::string, std::string> row;
+        for (std::size_t i = 0; i < header.size() && i < fields.size(); ++i) {
+            row[header[i]] = fields[i];
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+TEST(BenchCommandTest, QuickRunWritesTableCsvPlotAndDepthImages) {
+    const fs::path out = testDir() / "quick";
+    const fs::path depthOut = testDir() / "depth";
+    fs::remove_all(out);
+    fs::remove_all(depthOut);
+    const BenchRun r = bench({"--quick", "--mesh", smallTree().string(), "--out", out.string(),
+                              "--depth-out", depthOut.string()});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    EXPECT_NE(r.out.find("| view | p | solver |"), std::string::npos) << r.out;
+
+    const auto rows = readCsv(out / "vss.csv");
+    // 3 views x 3 p x 7 settings (reference, brute, step 3, step 5, fast x 3).
+    ASSERT_EQ(rows.size(), 3U * 3U * 7U);
+    std::set<std::string> cases;
+    std::map<std::string, int> perSolver;
+    for (const auto& row : rows) {
+        cases.insert(row.at("view") + " " + row.at("p") + " " + row.at("solver"));
+        ++perSolver[row.at("solver")];
+        EXPECT_EQ(row.at("width"), "256");
+        EXPECT_EQ(row.at("height"), "144");
+        EXPECT_EQ(row.at("failure"), "") << row.at("solver");
+        const std::string& kind = row.at("kind");
+        const double maxError = std::stod(row.at("max_abs_error"));
+        EXPECT_GT(std::stoll(row.at("compared_pixels")), 0);
+        EXPECT_GT(std::stoll(row.at("regions")), 0);
+        EXPECT_GT(std::stod(row.at("median_ms")), 0.0);
+        if (kind == "reference") {
+            EXPECT_EQ(maxError, 0.0);
+            EXPECT_EQ(std::stod(row.at("rmse")), 0.0);
+        } else if (kind == "brute") {
+            EXPECT_LT(maxError, 1e-4) << row.at("view") << " p=" << row.at("p");
+        } else if (kind == "fast") {
+            EXPECT_LE(maxError, std::stod(row.at("tolerance")))
+                << row.at("view") << " p=" << row.at("p") << " " << row.at("solver");
+        }
+        EXPECT_LE(std::stod(row.at("rmse")), maxError);
+    }
+    EXPECT_EQ(cases.size(), rows.size());  // one row per view x p x solver
+    for (const char* solver :
+         {"reference", "brute", "step 3", "step 5", "fast 0.5/255", "fast 2/255", "fast 8/255"}) {
+        EXPECT_EQ(perSolver[solver], 9) << solver;
+    }
+
+    const QImage plot(QString::fromStdString((out / "vss-error-vs-time.png").string()));
+    ASSERT_FALSE(plot.isNull());
+    EXPECT_EQ(plot.width(), 1400);
+    EXPECT_EQ(plot.height(), 900);
+    EXPECT_TRUE(fs::is_regular_file(out / "vss-table.md"));
+
+    for (const char* view : {"far", "medium", "close"}) {
+        const auto depth = vv::vss::readPfm(depthOut / (std::string("depth-") + view + ".pfm"));
+        ASSERT_EQ(depth.width(), 256);
+        ASSERT_EQ(depth.height(), 144);
+        int finite = 0;
+        for (int y = 0; y < depth.height(); ++y) {
+            for (int x = 0; x < depth.width(); ++x) {
+                finite += std::isfinite(depth(x, y)) ? 1 : 0;
+            }
+        }
+        EXPECT_GT(finite, 100) << view;
+        EXPECT_LT(finite, 256 * 144) << view;
+    }
+}
+
+TEST(BenchCommandTest, SelectedViewsPowersAndSolvers) {
+    const fs::path out = testDir() / "selected";
+    const BenchRun r =
+        bench({"--quick", "--mesh", smallTree().string(), "--out", out.string(), "--views", "close",
+               "--p", "3", "--solvers", "brute,step2", "--size", "96x64", "--runs", "2"});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    const auto rows = readCsv(out / "vss.csv");
+    ASSERT_EQ(rows.size(), 2U);
+    EXPECT_EQ(rows[0].at("solver"), "brute");
+    EXPECT_EQ(rows[1].at("solver"), "step 2");
+    for (const auto& row : rows) {
+        EXPECT_EQ(row.at("view"), "close");
+        EXPECT_EQ(row.at("p"), "3");
+        EXPECT_EQ(row.at("runs"), "2");
+        EXPECT_EQ(row.at("width"), "96");
+    }
+}
+
+TEST(BenchCommandTest, BadOptionsExitWithUsage) {
+    const std::string out = (testDir() / "bad").string();
+    const std::vector<std::vector<std::string>> bad{
+        {"--size", "0x5"},
+        {"--size", "100"},
+        {"--views", "sideways"},
+        {"--views", "far,,close"},
+        {"--p", "-1"},
+        {"--p", "two"},
+        {"--runs", "0"},
+        {"--runs", "1.5"},
+        {"--solvers", "magic"},
+        {"--solvers", "step0"},
+        {"--solvers", "brute,brute"},
+        {"--tolerances", "0"},
+        {"--bogus"},
+        {"--p"},
+        {"--out"},
+    };
+    for (auto args : bad) {
+        args.insert(args.end(), {"--quick", "--out", out});
+        if (args[0] == "--p" && args.size() == 4) {
+            args = {"--quick", "--out", out, "--p"};  // the value is missing
+        }
+        if (args[0] == "--out" && args.size() == 4) {
+            args = {"--quick", "--out"};
+        }
+        const BenchRun r = bench(args);
+        EXPECT_EQ(r.code, vv::cli::kUsage) << args[0] << " " << (args.size() > 1 ? args[1] : "");
+        EXPECT_NE(r.err.find("bench"), std::string::npos) << r.err;
+    }
+    // A missing mesh is bad input, not a usage error.
+    const BenchRun missing =
+        bench({"--quick", "--mesh", (testDir() / "nope.vtp").string(), "--out", out});
+    EXPECT_EQ(missing.code, vv::cli::kInvalidInput) << missing.err;
+}
+
+}  // namespace
