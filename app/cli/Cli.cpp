@@ -14,13 +14,24 @@ constexpr const char* kUsageText =
     "\n"
     "commands:\n"
     "  info FILE... [--json] [--scale S]   meshes, triangle counts, arrays with ranges and units\n"
-    "  demo -o FILE.vtp [--seed N]         write the synthetic demo vessel tree\n"
+    "  demo -o FILE.vtp [--seed N] [--generations G] [--voxel-size MM]\n"
+    "                                       write the synthetic demo vessel tree\n"
     "  render FILE -o IMAGE.png [--size WxH] [--array NAME|none] [--colormap NAME]\n"
-    "         [--background #rrggbb]        render a mesh file offscreen to PNG\n"
+    "         [--background #rrggbb] [--vss on|off] [--scale cd|pcd|dmd] [--p P]\n"
+    "         [--isolines N] [--solver NAME] [--tolerance T] [--timings]\n"
+    "                                       render a mesh file offscreen to PNG, with the\n"
+    "                                       void space surface (VSS) on by default;\n"
+    "                                       --timings prints per-pass ms as JSON on stdout\n"
     "                                       (needs an X display; use xvfb-run -a)\n"
     "  vss --depth IN.pfm -o OUT.pfm [--p P] [--solver NAME] [--step K] [--tolerance T]\n"
     "      [--fixed-range A,B] [--labels OUT.png] [--stats]\n"
     "                                       void space surface of a PFM depth image\n"
+    "  bench [--mesh FILE] [--size WxH] [--views far,medium,close] [--p 2,4,8] [--runs N]\n"
+    "        [--reference-runs N] [--solvers reference,brute,step3,step5,fast]\n"
+    "        [--tolerances 0.5,2,8] [--out DIR] [--depth-out DIR] [--quick]\n"
+    "                                       VSS solvers: error against run time (Markdown\n"
+    "                                       table; DIR/vss.csv, vss-table.md,\n"
+    "                                       vss-error-vs-time.png; demo tree by default)\n"
     "  --version, --help\n"
     "\n"
     "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input,\n"
@@ -55,6 +66,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "vss") {
             return vssCommand(rest, out, err);
+        }
+        if (command == "bench") {
+            return benchCommand(rest, out, err);
         }
         throw UsageError("unknown command '" + command + "'");
     } catch (const UsageError& e) {

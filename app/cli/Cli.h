@@ -37,6 +37,7 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
 int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 /// Thrown when an output file cannot be written; maps to kCannotWrite.
 class OutputError : public std::exception {

@@ -1,11 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // vesselview-cli render FILE -o IMAGE.png [--size WxH] [--array NAME|none]
 //                            [--colormap NAME] [--background #rrggbb]
+//                            [--vss on|off] [--scale cd|pcd|dmd] [--p P] [--isolines N]
+//                            [--solver NAME] [--tolerance T] [--timings]
+// Needs OpenGL 4.1: a display (headless: xvfb-run -a with QT_QPA_PLATFORM=xcb).
 #include <QFile>
 #include <QGuiApplication>
 #include <QImage>
 #include <QString>
 #include <charconv>
+#include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <optional>
@@ -15,11 +20,14 @@
 
 #include "cli/Cli.h"
 #include "vv/colormaps/ColorMap.h"
+#include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshLoader.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
+#include "vv/render/RenderGraph.h"
+#include "vv/vss/Solver.h"
 
 namespace vv::cli {
 
@@ -33,7 +41,30 @@ struct RenderArguments {
     std::optional<std::string> array;  ///< nullopt: default (wss when present); "" = none
     colormaps::ColorMap colorMap = colormaps::ColorMap::Viridis;
     glm::vec3 background{0.13F, 0.14F, 0.16F};
+    render::VssSettings vss;
+    bool timings = false;
 };
+
+double parseDouble(const std::string& text, const std::string& what) {
+    double value = 0.0;
+    const char* begin = text.data();
+    const char* end = begin + text.size();
+    const auto [ptr, ec] = std::from_chars(begin, end, value);
+    if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
+        throw UsageError("invalid " + what + " '" + text + "'");
+    }
+    return value;
+}
+
+/// Compact JSON number: finite values as is, others as null.
+std::string jsonNumber(double value) {
+    if (!std::isfinite(value)) {
+        return "null";
+    }
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.3f", value);
+    return buffer;
+}
 
 int parseInt(const std::string& text, const std::string& what) {
     int value = 0;
@@ -106,6 +137,46 @@ RenderArguments parse(const std::vector<std::string>& args) {
             parsed.colorMap = *map;
         } else if (a == "--background") {
             parsed.background = parseColor(value());
+        } else if (a == "--vss") {
+            const std::string& v = value();
+            if (v != "on" && v != "off") {
+                throw UsageError("--vss must be on or off, got '" + v + "'");
+            }
+            parsed.vss.enabled = v == "on";
+        } else if (a == "--scale") {
+            const std::string& v = value();
+            const auto scale = colormaps::depthScaleFromName(v);
+            if (!scale) {
+                throw UsageError("unknown depth scale '" + v + "' (known: cd, pcd, dmd)");
+            }
+            parsed.vss.scale = *scale;
+        } else if (a == "--p") {
+            const double p = parseDouble(value(), "--p");
+            if (!(p > 0.0) || p > 64.0) {
+                throw UsageError("--p must be within (0, 64], got " + args[i]);
+            }
+            parsed.vss.solver.p = p;
+        } else if (a == "--isolines") {
+            const int n = parseInt(value(), "--isolines");
+            if (n < 0 || n > 1000) {
+                throw UsageError("--isolines must be within 0..1000, got " + args[i]);
+            }
+            parsed.vss.isoLines = n;
+        } else if (a == "--solver") {
+            try {
+                parsed.vss.solver.kind = vss::parseSolverKind(value());
+            } catch (const InvalidArgumentError&) {
+                throw UsageError("unknown solver '" + args[i] +
+                                 "' (known: reference, brute, step, fast)");
+            }
+        } else if (a == "--tolerance") {
+            const double t = parseDouble(value(), "--tolerance");
+            if (!(t > 0.0)) {
+                throw UsageError("--tolerance must be > 0, got " + args[i]);
+            }
+            parsed.vss.solver.tolerance = t;
+        } else if (a == "--timings") {
+            parsed.timings = true;
         } else if (!a.empty() && a[0] == '-' && a != "-") {
             throw UsageError("render: unknown option '" + a + "'");
         } else if (!haveInput) {
@@ -156,7 +227,6 @@ void ensureGuiApplication() {
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    static_cast<void>(err);
     const RenderArguments parsed = parse(args);
     // Fail before the (possibly long) load and render when the output cannot be written.
     {
@@ -180,6 +250,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     options.height = parsed.height;
     options.background = parsed.background;
     options.style.colorMap = parsed.colorMap;
+    options.vss = parsed.vss;
     options.style.array = parsed.array.value_or(render::defaultArrayName(scene));
     if (!options.style.array.empty() &&
         scene.meshes.front().pointArray(options.style.array) == nullptr) {
@@ -207,18 +278,49 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         throw OutputError(e.what());
     }
 
-    out << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
+    // With --timings, stdout carries only the JSON; the summary goes to stderr.
+    std::ostream& summary = parsed.timings ? err : out;
+    if (parsed.timings) {
+        const auto timings = renderer.lastTimings();
+        out << "{\"width\": " << image.width() << ", \"height\": " << image.height()
+            << ", \"passes\": [";
+        bool first = true;
+        for (const auto& pass : renderer.lastPasses()) {
+            out << (first ? "" : ", ") << "{\"name\": \"" << pass.name << "\", \"state\": \""
+                << render::toString(pass.state) << "\"";
+            for (const auto& t : timings) {
+                if (t.pass == pass.name) {
+                    out << ", \"cpu_ms\": " << jsonNumber(t.cpuMilliseconds) << ", \"gpu_ms\": "
+                        << (t.gpuMilliseconds ? jsonNumber(*t.gpuMilliseconds) : "null");
+                }
+            }
+            out << "}";
+            first = false;
+        }
+        double total = 0.0;
+        for (const auto& t : timings) {
+            total += t.cpuMilliseconds;
+        }
+        const auto& status = renderer.vssStatus();
+        out << "], \"total_cpu_ms\": " << jsonNumber(total)
+            << ", \"vss\": {\"shown\": " << (status.shown ? "true" : "false")
+            << ", \"solve_ms\": " << jsonNumber(status.solveMilliseconds) << "}}\n";
+    }
+    summary << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
     if (options.style.array.empty()) {
-        out << ", no array";
+        summary << ", no array";
     } else {
-        out << ", " << options.style.array << " through " << colormaps::name(parsed.colorMap);
+        summary << ", " << options.style.array << " through " << colormaps::name(parsed.colorMap);
         if (const auto range = renderer.lastRange()) {
-            out << " over [" << range->first << ", " << range->second << "]";
+            summary << " over [" << range->first << ", " << range->second << "]";
         } else {
-            out << ", no finite values";
+            summary << ", no finite values";
         }
     }
-    out << ")\n";
+    if (options.vss.enabled) {
+        summary << ", VSS " << colormaps::name(options.vss.scale) << " p=" << options.vss.solver.p;
+    }
+    summary << ")\n";
     return kOk;
 }
 

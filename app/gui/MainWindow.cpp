@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
@@ -32,6 +33,7 @@
 #include "gui/MeshLoadTask.h"
 #include "gui/ViewerWidget.h"
 #include "vv/colormaps/ColorMap.h"
+#include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshLoader.h"
@@ -182,6 +184,52 @@ void MainWindow::buildToolBar() {
     bar->addWidget(colorMapCombo_);
     connect(arrayCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyStyle);
     connect(colorMapCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyStyle);
+
+    bar->addSeparator();
+    vssAction_ = bar->addAction(tr("VSS"));
+    vssAction_->setObjectName(QStringLiteral("vssToggle"));
+    vssAction_->setCheckable(true);
+    vssAction_->setChecked(viewer_->vssSettings().enabled);
+    vssAction_->setToolTip(
+        tr("Void Space Surface: a depth-coded surface in the space "
+           "between the vessels"));
+    bar->addWidget(new QLabel(tr(" p: "), bar));
+    vssPowerBox_ = new QDoubleSpinBox(bar);
+    vssPowerBox_->setObjectName(QStringLiteral("vssPower"));
+    vssPowerBox_->setRange(0.25, 64.0);
+    vssPowerBox_->setDecimals(2);
+    vssPowerBox_->setSingleStep(0.5);
+    vssPowerBox_->setValue(viewer_->vssSettings().solver.p);
+    vssPowerBox_->setKeyboardTracking(false);  // solve once per entered value, not per digit
+    vssPowerBox_->setToolTip(
+        tr("Interpolation power p: higher values follow the nearest "
+           "vessel more closely"));
+    bar->addWidget(vssPowerBox_);
+    bar->addWidget(new QLabel(tr("  Depth scale: "), bar));
+    depthScaleCombo_ = new QComboBox(bar);
+    depthScaleCombo_->setObjectName(QStringLiteral("depthScaleChooser"));
+    for (const auto scale : colormaps::allDepthScales()) {
+        const auto label = colormaps::displayName(scale);
+        depthScaleCombo_->addItem(
+            QString::fromUtf8(label.data(), static_cast<qsizetype>(label.size())),
+            static_cast<int>(scale));
+    }
+    depthScaleCombo_->setCurrentIndex(
+        depthScaleCombo_->findData(static_cast<int>(viewer_->vssSettings().scale)));
+    bar->addWidget(depthScaleCombo_);
+    connect(vssAction_, &QAction::toggled, this, &MainWindow::applyVss);
+    connect(vssPowerBox_, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyVss);
+    connect(depthScaleCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyVss);
+}
+
+void MainWindow::applyVss() {
+    render::VssSettings settings = viewer_->vssSettings();
+    settings.enabled = vssAction_->isChecked();
+    settings.solver.p = vssPowerBox_->value();
+    settings.scale = static_cast<colormaps::DepthScale>(depthScaleCombo_->currentData().toInt());
+    vssPowerBox_->setEnabled(settings.enabled);
+    depthScaleCombo_->setEnabled(settings.enabled);
+    viewer_->setVssSettings(settings);
 }
 
 void MainWindow::buildStatusBar() {
@@ -466,6 +514,11 @@ void MainWindow::setScreenshotTarget(const QString& path) {
 
 void MainWindow::onFrameRendered() {
     if (!screenshotPending_ || !viewer_->scene() || viewer_->framesWithScene() == 0) {
+        return;
+    }
+    // With the VSS on, wait for the frame that shows the solved surface (the
+    // solve runs on a worker and triggers that frame).
+    if (viewer_->vssSettings().enabled && viewer_->vssStatus().pending) {
         return;
     }
     screenshotPending_ = false;

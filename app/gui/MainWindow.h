@@ -10,7 +10,9 @@
 
 #include "vv/io/Mesh.h"
 
+class QAction;
 class QComboBox;
+class QDoubleSpinBox;
 class QLabel;
 class QMenu;
 class QProgressBar;
@@ -23,7 +25,8 @@ class MeshLoadTask;
 class ViewerWidget;
 
 /// The main window: the 3-D viewer, File / View / Help menus, a toolbar with
-/// the point-array and colour-map choosers, and a status bar with load
+/// the point-array and colour-map choosers and the VSS controls (on/off, p,
+/// depth scale), and a status bar with load
 /// progress and Cancel. Loading and demo generation run on a worker
 /// (MeshLoadTask); errors are shown in a message box naming file and problem.
 class MainWindow : public QMainWindow {
@@ -62,6 +65,11 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] ViewerWidget* viewer() const noexcept { return viewer_; }
     [[nodiscard]] QComboBox* arrayChooser() const noexcept { return arrayCombo_; }
     [[nodiscard]] QComboBox* colorMapChooser() const noexcept { return colorMapCombo_; }
+    /// The toolbar's VSS controls: on/off (checked = on), the IDW power p and
+    /// the depth colour scale.
+    [[nodiscard]] QAction* vssToggle() const noexcept { return vssAction_; }
+    [[nodiscard]] QDoubleSpinBox* vssPowerBox() const noexcept { return vssPowerBox_; }
+    [[nodiscard]] QComboBox* depthScaleChooser() const noexcept { return depthScaleCombo_; }
     [[nodiscard]] bool isLoading() const noexcept { return !task_.isNull(); }
     /// The message of the last load error ("file: problem"); empty if none.
     [[nodiscard]] const QString& lastError() const noexcept { return lastError_; }
@@ -87,6 +95,7 @@ class MainWindow : public QMainWindow {
     void addRecentFiles(const QStringList& files);
     void rebuildRecentMenu();
     void applyStyle();
+    void applyVss();
     void updateRangeLabel();
     void onFrameRendered();
     void finishScreenshot(bool ok, const QString& message);
@@ -98,6 +107,9 @@ class MainWindow : public QMainWindow {
     QLabel* glMessage_ = nullptr;
     QComboBox* arrayCombo_ = nullptr;
     QComboBox* colorMapCombo_ = nullptr;
+    QAction* vssAction_ = nullptr;
+    QDoubleSpinBox* vssPowerBox_ = nullptr;
+    QComboBox* depthScaleCombo_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     QLabel* rangeLabel_ = nullptr;

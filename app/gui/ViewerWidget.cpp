@@ -5,10 +5,10 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QPainter>
 #include <QTimer>
 #include <QWheelEvent>
+#include <algorithm>
 #include <cmath>
 
 #include "vv/core/Error.h"
@@ -81,6 +81,7 @@ void ViewerWidget::releaseGl() {
 
 void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     scene_ = std::move(scene);
+    ++sceneRevision_;
     sceneDirty_ = true;
     framesWithScene_ = 0;
     camera_.setViewport(width(), height());
@@ -93,6 +94,11 @@ void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
 void ViewerWidget::setStyle(const render::MeshStyle& style) {
     style_ = style;
     styleDirty_ = true;
+    update();
+}
+
+void ViewerWidget::setVssSettings(const render::VssSettings& settings) {
+    vss_ = settings;
     update();
 }
 
@@ -155,7 +161,18 @@ void ViewerWidget::initializeGL() {
             Qt::UniqueConnection);
     try {
         renderer_.initialize();
-        glDescription_ = QString::fromStdString(renderer_.glDescription());
+        // Called on the solver's thread: hand the repaint to the GUI thread
+        // (dropped if the widget is gone by then).
+        renderer_.setSolveMode(render::FrameRenderer::SolveMode::Asynchronous, [this] {
+            QMetaObject::invokeMethod(
+                this,
+                [this] {
+                    emit vssSolved();
+                    update();
+                },
+                Qt::QueuedConnection);
+        });
+        glDescription_ = QString::fromStdString(renderer_.meshRenderer().glDescription());
         sceneDirty_ = true;
         styleDirty_ = true;
     } catch (const vv::Error& e) {
@@ -188,29 +205,37 @@ void ViewerWidget::paintMessage(const QString& text) {
 
 void ViewerWidget::paintGL() {
     if (!error_.isEmpty() || !renderer_.initialized()) {
+        // An unusable viewer still paints its message.
         paintMessage(error_.isEmpty() ? tr("OpenGL is not available.") : error_);
         return;
     }
     try {
+        render::MeshRenderer& meshes = renderer_.meshRenderer();
         if (sceneDirty_) {
-            renderer_.setScene(scene_);
+            meshes.setScene(scene_);
+            renderer_.setSceneRevision(sceneRevision_);
             sceneDirty_ = false;
             styleDirty_ = true;
         }
         if (styleDirty_) {
-            renderer_.setStyle(style_);
+            meshes.setStyle(style_);
             styleDirty_ = false;
         }
-        QOpenGLFunctions* f = context()->functions();
-        f->glClearColor(background_.r, background_.g, background_.b, 1.0F);
-        f->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         camera_.setViewport(width(), height());
         if (autoFit_) {
             // Until the user moves the camera, keep the data framed as the widget resizes.
             camera_.fit(camera_.sceneBounds());
         }
-        renderer_.draw(camera_);
-        shownRange_ = renderer_.effectiveRange();
+        // The camera works in logical pixels, the frame in device pixels.
+        const qreal ratio = devicePixelRatioF();
+        const render::FrameTarget target{
+            defaultFramebufferObject(), std::max(1, static_cast<int>(std::lround(width() * ratio))),
+            std::max(1, static_cast<int>(std::lround(height() * ratio)))};
+        render::FrameSettings settings;
+        settings.background = background_;
+        settings.vss = vss_;
+        renderer_.render(camera_, settings, target);
+        shownRange_ = meshes.effectiveRange();
     } catch (const vv::Error& e) {
         fail(tr("Drawing failed: %1").arg(QString::fromStdString(e.what())));
         paintMessage(error_);

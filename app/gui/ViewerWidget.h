@@ -9,12 +9,16 @@
 
 #include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
+#include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
 
 namespace vv::gui {
 
-/// The 3-D view: shows a Scene with the MeshRenderer (Blinn-Phong, optional
-/// colour-mapped array) and an orbit camera.
+/// The 3-D view: shows a Scene through the render graph (FrameRenderer:
+/// vessels with Blinn-Phong and an optional colour-mapped array, and the Void
+/// Space Surface behind them) with an orbit camera. The VSS is solved on a
+/// worker thread: until a new solve arrives the view shows the previous VSS
+/// (same size) or none, then repaints.
 ///
 /// Mouse: left-drag rotates (arcball), right- or middle-drag or shift +
 /// left-drag pans, the wheel zooms. Keys: R resets the view, F fits the data.
@@ -50,6 +54,18 @@ class ViewerWidget : public QOpenGLWidget {
     void setStyle(const render::MeshStyle& style);
     [[nodiscard]] const render::MeshStyle& style() const noexcept { return style_; }
 
+    /// The VSS: on/off, depth scale, p, solver, iso-lines, strengths.
+    void setVssSettings(const render::VssSettings& settings);
+    [[nodiscard]] const render::VssSettings& vssSettings() const noexcept { return vss_; }
+    /// What the last frame showed of the VSS.
+    [[nodiscard]] const render::VssFrameStatus& vssStatus() const noexcept {
+        return renderer_.vssStatus();
+    }
+    /// The passes of the last frame (state, reason, CPU time).
+    [[nodiscard]] const std::vector<render::PassInfo>& lastPasses() const noexcept {
+        return renderer_.lastPasses();
+    }
+
     /// Background colour, sRGB in [0, 1].
     void setBackground(const glm::vec3& color);
     [[nodiscard]] const glm::vec3& background() const noexcept { return background_; }
@@ -81,6 +97,8 @@ class ViewerWidget : public QOpenGLWidget {
   signals:
     /// A frame was drawn (emitted at the end of paintGL; connect queued to grab it).
     void frameRendered();
+    /// A VSS solve for the current view arrived (a repaint follows).
+    void vssSolved();
     /// OpenGL cannot be used; `message` says why. Emitted at most once.
     void renderFailed(const QString& message);
 
@@ -100,7 +118,9 @@ class ViewerWidget : public QOpenGLWidget {
     void releaseGl();
     void paintMessage(const QString& text);
 
-    render::MeshRenderer renderer_;
+    render::FrameRenderer renderer_;
+    render::VssSettings vss_;
+    std::uint64_t sceneRevision_ = 0;
     render::Camera camera_;
     render::MeshStyle style_;
     std::shared_ptr<const io::Scene> scene_;

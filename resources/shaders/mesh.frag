@@ -20,7 +20,14 @@ uniform float uDiffuse;
 uniform float uSpecular;
 uniform float uShininess;
 
-out vec4 fragColor;
+layout(location = 0) out vec4 fragColor;
+// The parameter value for the G-buffer (NaN = no data); ignored when the
+// framebuffer has no second colour attachment.
+layout(location = 1) out float fragParameter;
+
+float parameterValue() {
+    return (uUseArray && vScalar.y >= 0.5) ? vScalar.x : uintBitsToFloat(0x7fc00000u);
+}
 
 vec3 surfaceColor() {
     if (!uUseArray) {
@@ -38,6 +45,7 @@ vec3 surfaceColor() {
 }
 
 void main() {
+    fragParameter = parameterValue();
     vec3 base = surfaceColor();
     if (!uLighting) {
         fragColor = vec4(base, 1.0);

@@ -16,6 +16,11 @@ out vec3 vPositionView;
 out vec3 vNormalView;
 out vec2 vScalar;
 
+// The G-buffer pass and the shading pass draw the same triangles with
+// different fragment shaders; the shading pass tests against the G-buffer's
+// depth with GL_LEQUAL, so positions must be bit-identical in both programs.
+invariant gl_Position;
+
 void main() {
     vec4 positionView = uView * vec4(aPosition, 1.0);
     vPositionView = positionView.xyz;

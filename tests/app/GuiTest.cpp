@@ -3,9 +3,11 @@
 // QT_QPA_PLATFORM=xcb. Without OpenGL 4.1 the tests fail (they never skip).
 #include <gtest/gtest.h>
 
+#include <QAction>
 #include <QApplication>
 #include <QComboBox>
 #include <QDir>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
 #include <QElapsedTimer>
 #include <QFileInfo>
@@ -26,6 +28,8 @@
 
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
+#include "vv/colormaps/DepthScale.h"
+#include "vv/render/RenderGraph.h"
 
 namespace {
 
@@ -177,7 +181,21 @@ class GuiTest : public ::testing::Test {
     void SetUp() override {
         window_ = std::make_unique<MainWindow>();
         window_->resize(900, 600);
+        EXPECT_TRUE(window_->vssToggle()->isChecked());  // on by default
+        // Most tests count vessel pixels against the background: VSS off.
+        window_->vssToggle()->setChecked(false);
         window_->show();
+    }
+
+    /// The state of `pass` in the viewer's last frame.
+    [[nodiscard]] vv::render::PassState passState(const std::string& pass) const {
+        for (const auto& info : window_->viewer()->lastPasses()) {
+            if (info.name == pass) {
+                return info.state;
+            }
+        }
+        ADD_FAILURE() << "no pass " << pass;
+        return vv::render::PassState::Pending;
     }
 
     void TearDown() override {
@@ -234,6 +252,53 @@ TEST_F(GuiTest, ShowsVesselsWithWssColoursAndNeutralWithoutArray) {
     EXPECT_LE(hueBins(neutral), 2U);
     EXPECT_NEAR(static_cast<double>(vesselPixels(neutral, background)), static_cast<double>(vessel),
                 0.05 * static_cast<double>(vessel));
+}
+
+TEST_F(GuiTest, VssControlsShowTheSurfaceSolvedOffTheGuiThread) {
+    using vv::render::PassState;
+    auto* viewer = window_->viewer();
+    window_->setScene(makeScene(), QStringLiteral("vss scene"));
+    ASSERT_TRUE(waitForFrames());
+    EXPECT_EQ(passState("vss-solve"), PassState::Culled);
+    EXPECT_EQ(passState("vss-shading"), PassState::Culled);
+    const QRgb background = backgroundOf(*viewer);
+    const long total = static_cast<long>(viewer->width()) * viewer->height();
+    const long vesselOnly = vesselPixels(viewer->grabFramebuffer(), background);
+
+    // On: the solve runs on the worker; a repaint follows when it arrives.
+    window_->vssToggle()->setChecked(true);
+    EXPECT_TRUE(viewer->vssSettings().enabled);
+    ASSERT_TRUE(waitUntil([&] { return viewer->vssStatus().shown && viewer->vssStatus().current; }))
+        << "the VSS never arrived";
+    const QImage withVss = viewer->grabFramebuffer();
+    withVss.save(QString::fromStdString((testDir() / "gui-vss.png").string()), "PNG");
+    EXPECT_GT(vesselPixels(withVss, background), vesselOnly + total / 4);
+
+    // The depth scale re-shades without re-solving.
+    quint64 frames = viewer->framesWithScene();
+    window_->depthScaleChooser()->setCurrentIndex(window_->depthScaleChooser()->findData(
+        static_cast<int>(vv::colormaps::DepthScale::DarkMeansDeep)));
+    EXPECT_EQ(viewer->vssSettings().scale, vv::colormaps::DepthScale::DarkMeansDeep);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    EXPECT_EQ(passState("vss-solve"), PassState::Cached);
+    EXPECT_EQ(passState("vss-shading"), PassState::Executed);
+
+    // p re-solves (asynchronously), then the new VSS is shown.
+    frames = viewer->framesWithScene();
+    window_->vssPowerBox()->setValue(6.0);
+    EXPECT_DOUBLE_EQ(viewer->vssSettings().solver.p, 6.0);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    EXPECT_EQ(passState("vss-solve"), PassState::Executed);
+    ASSERT_TRUE(waitUntil([&] { return viewer->vssStatus().current; }));
+    EXPECT_FALSE(viewer->vssStatus().pending);
+
+    // Off again: no VSS passes, background in the void.
+    frames = viewer->framesWithScene();
+    window_->vssToggle()->setChecked(false);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    EXPECT_EQ(passState("vss-solve"), PassState::Culled);
+    EXPECT_NEAR(static_cast<double>(vesselPixels(viewer->grabFramebuffer(), background)),
+                static_cast<double>(vesselOnly), 0.02 * static_cast<double>(vesselOnly));
 }
 
 TEST_F(GuiTest, LoadsAFileOnAWorkerAndRemembersIt) {

@@ -138,8 +138,8 @@ TEST_F(RenderCommandTest, RendersAMeshToPngWithVesselPixels) {
     const fs::path input = writeTubeVtk();
     const fs::path output = testDir() / "tube.png";
     fs::remove(output);
-    const auto r = render(
-        {input.string(), "-o", output.string(), "--size", "240x120", "--background", "#ffffff"});
+    const auto r = render({input.string(), "-o", output.string(), "--size", "240x120",
+                           "--background", "#ffffff", "--vss", "off"});
     ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
     EXPECT_NE(r.out.find("wss"), std::string::npos) << r.out;  // the default array
 
@@ -162,7 +162,7 @@ TEST_F(RenderCommandTest, ArrayNoneGivesTheNeutralMaterial) {
     const fs::path input = writeTubeVtk();
     const fs::path output = testDir() / "tube-none.png";
     const auto r = render({input.string(), "-o", output.string(), "--size", "240x120", "--array",
-                           "none", "--background", "#000000"});
+                           "none", "--background", "#000000", "--vss", "off"});
     ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
     QImage image;
     ASSERT_TRUE(image.load(QString::fromStdString(output.string()), "PNG"));
@@ -183,13 +183,124 @@ TEST_F(RenderCommandTest, ChosenArrayAndColourMapAreUsed) {
 TEST_F(RenderCommandTest, StlWithoutArraysRenders) {
     const fs::path input = writeTetraStl();
     const fs::path output = testDir() / "tetra.png";
-    const auto r = render({input.string(), "-o", output.string(), "--size", "100x100"});
+    const auto r =
+        render({input.string(), "-o", output.string(), "--size", "100x100", "--vss", "off"});
     ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
     EXPECT_NE(r.out.find("no array"), std::string::npos) << r.out;
     QImage image;
     ASSERT_TRUE(image.load(QString::fromStdString(output.string()), "PNG"));
     const QRgb background = image.pixel(0, 0);
     EXPECT_GT(countNot(image, background), 100 * 100 / 10);
+}
+
+/// Two tubes at different depths (legacy ASCII VTK, no arrays): the void
+/// between them gets a VSS.
+fs::path writeTwoTubesVtk() {
+    const fs::path file = testDir() / "two-tubes.vtk";
+    constexpr int kSegments = 24;
+    constexpr int kRings = 10;
+    constexpr int kPerTube = (kRings + 1) * kSegments;
+    std::ofstream out(file);
+    out << "# vtk DataFile Version 3.0\ntwo tubes\nASCII\nDATASET POLYDATA\n";
+    out << "POINTS " << 2 * kPerTube << " float\n";
+    for (const auto& [y, z] : {std::pair{3.0, 4.0}, std::pair{-3.0, -4.0}}) {
+        for (int i = 0; i <= kRings; ++i) {
+            for (int j = 0; j < kSegments; ++j) {
+                const double phi = 2.0 * std::numbers::pi * j / kSegments;
+                out << -10.0 + 20.0 * i / kRings << " " << y + std::cos(phi) << " "
+                    << z + std::sin(phi) << "\n";
+            }
+        }
+    }
+    out << "POLYGONS " << 2 * kRings * kSegments * 2 << " " << 2 * kRings * kSegments * 2 * 4
+        << "\n";
+    for (int t = 0; t < 2; ++t) {
+        for (int i = 0; i < kRings; ++i) {
+            for (int j = 0; j < kSegments; ++j) {
+                const int a = t * kPerTube + i * kSegments + j;
+                const int b = t * kPerTube + i * kSegments + (j + 1) % kSegments;
+                out << "3 " << a << " " << a + kSegments << " " << b << "\n";
+                out << "3 " << b << " " << a + kSegments << " " << b + kSegments << "\n";
+            }
+        }
+    }
+    return file;
+}
+
+TEST_F(RenderCommandTest, VssOnColoursTheVoidAndVssOffLeavesTheBackground) {
+    const fs::path input = writeTwoTubesVtk();
+    const fs::path on = testDir() / "two-tubes-vss.png";
+    const fs::path off = testDir() / "two-tubes-plain.png";
+    const auto r = render({input.string(), "-o", on.string(), "--size", "200x150", "--background",
+                           "#000000", "--vss", "on", "--scale", "dmd", "--p", "4", "--isolines",
+                           "5", "--solver", "fast", "--tolerance", "0.002"});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    EXPECT_NE(r.out.find("dark-means-deep"), std::string::npos) << r.out;
+    const auto r2 = render({input.string(), "-o", off.string(), "--size", "200x150", "--background",
+                            "#000000", "--vss", "off"});
+    ASSERT_EQ(r2.code, vv::cli::kOk) << r2.err;
+    QImage withVss;
+    QImage without;
+    ASSERT_TRUE(withVss.load(QString::fromStdString(on.string()), "PNG"));
+    ASSERT_TRUE(without.load(QString::fromStdString(off.string()), "PNG"));
+    long voidPixels = 0;
+    long shaded = 0;
+    for (int y = 0; y < without.height(); ++y) {
+        for (int x = 0; x < without.width(); ++x) {
+            if ((without.pixel(x, y) & 0xFFFFFFU) == 0U) {
+                ++voidPixels;
+                shaded += (withVss.pixel(x, y) & 0xFFFFFFU) != 0U ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(voidPixels, 200 * 150 / 2);
+    // Dark-means-deep is black only at the far end: most void pixels are not.
+    EXPECT_GT(shaded, voidPixels * 8 / 10) << shaded << " of " << voidPixels;
+}
+
+TEST_F(RenderCommandTest, TimingsPrintPerPassJson) {
+    const fs::path input = writeTwoTubesVtk();
+    const fs::path output = testDir() / "timed.png";
+    const auto r =
+        render({input.string(), "-o", output.string(), "--size", "160x120", "--timings"});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    EXPECT_EQ(r.out.front(), '{') << r.out;
+    for (const char* pass :
+         {"geometry", "vessel-shading", "vss-solve", "vss-shading", "composite"}) {
+        EXPECT_NE(r.out.find("\"name\": \"" + std::string(pass) + "\""), std::string::npos)
+            << pass << ": " << r.out;
+    }
+    EXPECT_NE(r.out.find("\"cpu_ms\""), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("\"shown\": true"), std::string::npos) << r.out;
+    EXPECT_EQ(r.out.find("wrote"), std::string::npos) << r.out;  // the summary went to stderr
+    EXPECT_NE(r.err.find("wrote"), std::string::npos) << r.err;
+
+    const auto off = render(
+        {input.string(), "-o", output.string(), "--size", "160x120", "--timings", "--vss", "off"});
+    ASSERT_EQ(off.code, vv::cli::kOk) << off.err;
+    EXPECT_NE(off.out.find("\"name\": \"vss-solve\", \"state\": \"culled\""), std::string::npos)
+        << off.out;
+}
+
+TEST_F(RenderCommandTest, BadVssArgumentsAreUsageErrors) {
+    const fs::path input = writeTubeVtk();
+    const fs::path output = testDir() / "never.png";
+    for (const std::vector<std::string>& extra : {std::vector<std::string>{"--vss", "maybe"},
+                                                  {"--scale", "rainbow"},
+                                                  {"--p", "0"},
+                                                  {"--p", "x"},
+                                                  {"--p", "100"},
+                                                  {"--isolines", "-1"},
+                                                  {"--solver", "magic"},
+                                                  {"--tolerance", "0"},
+                                                  {"--tolerance", "nan"},
+                                                  {"--vss"}}) {
+        std::vector<std::string> args{input.string(), "-o", output.string()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        const auto r = render(args);
+        EXPECT_EQ(r.code, vv::cli::kUsage) << extra.front() << ": " << r.err;
+    }
+    EXPECT_FALSE(fs::exists(output));
 }
 
 TEST_F(RenderCommandTest, BadSizeIsAUsageError) {

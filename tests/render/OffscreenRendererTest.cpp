@@ -172,6 +172,7 @@ TEST_F(OffscreenRendererTest, SphereIsDrawnCentredWithPlausibleCoverage) {
     options.width = 200;
     options.height = 150;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     const QImage image = renderer->render(scene, options);
     keep(image, "sphere");
     ASSERT_EQ(image.size(), QSize(200, 150));
@@ -217,6 +218,7 @@ TEST_F(OffscreenRendererTest, ColourMappedPixelsAreLutColours) {
     options.width = 320;
     options.height = 120;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     options.style.array = "wss";
     options.style.lighting = false;  // exact map colours
     const QImage image = renderer->render(scene, options);
@@ -275,6 +277,7 @@ TEST_F(OffscreenRendererTest, LitColourMappedRenderShowsManyHues) {
     options.width = 320;
     options.height = 120;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     options.style.array = "wss";
     const QImage mapped = renderer->render(scene, options);
     options.style.array.clear();
@@ -305,6 +308,7 @@ TEST_F(OffscreenRendererTest, NanValuesShowTheNoDataColour) {
     options.width = 160;
     options.height = 80;
     options.background = background_;
+    options.vss.enabled = false;       // these tests check the vessels against the background
     options.style.array = "pressure";  // all NaN
     options.style.lighting = false;
     const QImage image = renderer->render(scene, options);
@@ -334,6 +338,7 @@ TEST_F(OffscreenRendererTest, PartlyMissingValuesShowNoDataOnlyWhereMissing) {
     options.width = 320;
     options.height = 120;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     options.style.array = "wss";
     options.style.lighting = false;
     const QImage image = renderer->render(scene, options);
@@ -377,6 +382,7 @@ TEST_F(OffscreenRendererTest, ExplicitRangeClampsValues) {
     options.width = 160;
     options.height = 80;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     options.style.array = "wss";
     options.style.lighting = false;
     options.style.colorMap = vv::colormaps::ColorMap::Cividis;
@@ -415,6 +421,7 @@ TEST_F(OffscreenRendererTest, RendererIsReusableAcrossSizes) {
     scene.meshes.push_back(makeSphere(1.0F, {0, 0, 0}));
     OffscreenOptions options;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     for (const auto& size : {QSize(32, 32), QSize(400, 100), QSize(17, 301)}) {
         options.width = size.width();
         options.height = size.height();
@@ -434,6 +441,7 @@ TEST_F(OffscreenRendererTest, GivenCameraIsUsed) {
     options.width = 100;
     options.height = 100;
     options.background = background_;
+    options.vss.enabled = false;  // these tests check the vessels against the background
     vv::render::Camera camera;
     camera.setViewport(100, 100);
     camera.fit(scene.bounds());

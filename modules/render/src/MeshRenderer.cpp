@@ -84,6 +84,39 @@ GLuint compileShader(QOpenGLFunctions_4_1_Core& gl, GLenum type, const QString& 
     return shader;
 }
 
+/// mesh.vert with `fragmentResource`, attribute locations bound.
+GLuint linkProgram(QOpenGLFunctions_4_1_Core& f, const QString& fragmentResource,
+                   const char* what) {
+    const GLuint vertex =
+        compileShader(f, GL_VERTEX_SHADER, QStringLiteral(":/vv/shaders/mesh.vert"));
+    GLuint fragment = 0;
+    try {
+        fragment = compileShader(f, GL_FRAGMENT_SHADER, fragmentResource);
+    } catch (...) {
+        f.glDeleteShader(vertex);
+        throw;
+    }
+    const GLuint program = f.glCreateProgram();
+    f.glAttachShader(program, vertex);
+    f.glAttachShader(program, fragment);
+    f.glBindAttribLocation(program, kPositionLocation, "aPosition");
+    f.glBindAttribLocation(program, kNormalLocation, "aNormal");
+    f.glBindAttribLocation(program, kScalarLocation, "aScalar");
+    f.glLinkProgram(program);
+    f.glDetachShader(program, vertex);
+    f.glDetachShader(program, fragment);
+    f.glDeleteShader(vertex);
+    f.glDeleteShader(fragment);
+    GLint ok = GL_FALSE;
+    f.glGetProgramiv(program, GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        const std::string log = programLog(f, program);
+        f.glDeleteProgram(program);
+        throw RenderError(std::string(what) + " shader program does not link:\n" + log);
+    }
+    return program;
+}
+
 /// The per-vertex (value, valid) pairs of `name` on `mesh`; (0, 0) where the
 /// value is NaN / infinite or the mesh lacks the array.
 std::vector<glm::vec2> scalarsFor(const io::Mesh& mesh, const std::string& name) {
@@ -130,6 +163,15 @@ void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what) {
 }
 
 }  // namespace
+
+const Lighting& sceneLighting() noexcept {
+    static const Lighting lighting = [] {
+        Lighting l;
+        l.direction = glm::normalize(glm::vec3(-0.25F, 0.35F, 1.0F));
+        return l;
+    }();
+    return lighting;
+}
 
 std::string defaultArrayName(const io::Scene& scene) {
     for (const auto& wanted : {"wss", "wall_shear_stress", "wallshearstress"}) {
@@ -233,40 +275,20 @@ void MeshRenderer::initialize() {
     // Objects of an earlier context are gone with it: upload everything anew.
     meshes_.clear();
     program_ = 0;
+    gbufferProgram_ = 0;
     lutTexture_ = 0;
     uploadedMap_.reset();
     scalarsUploadedForArray_ = false;
     auto& f = *gl_;
 
-    const GLuint vertex =
-        compileShader(f, GL_VERTEX_SHADER, QStringLiteral(":/vv/shaders/mesh.vert"));
-    GLuint fragment = 0;
+    program_ = linkProgram(f, QStringLiteral(":/vv/shaders/mesh.frag"), "mesh");
     try {
-        fragment = compileShader(f, GL_FRAGMENT_SHADER, QStringLiteral(":/vv/shaders/mesh.frag"));
+        gbufferProgram_ = linkProgram(f, QStringLiteral(":/vv/shaders/gbuffer.frag"), "G-buffer");
     } catch (...) {
-        f.glDeleteShader(vertex);
+        f.glDeleteProgram(program_);
+        program_ = 0;
         throw;
     }
-    const GLuint program = f.glCreateProgram();
-    f.glAttachShader(program, vertex);
-    f.glAttachShader(program, fragment);
-    f.glBindAttribLocation(program, kPositionLocation, "aPosition");
-    f.glBindAttribLocation(program, kNormalLocation, "aNormal");
-    f.glBindAttribLocation(program, kScalarLocation, "aScalar");
-    f.glBindFragDataLocation(program, 0, "fragColor");
-    f.glLinkProgram(program);
-    f.glDetachShader(program, vertex);
-    f.glDetachShader(program, fragment);
-    f.glDeleteShader(vertex);
-    f.glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    f.glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        const std::string log = programLog(f, program);
-        f.glDeleteProgram(program);
-        throw RenderError("mesh shader program does not link:\n" + log);
-    }
-    program_ = program;
 
     f.glGenTextures(1, &lutTexture_);
     uploadedMap_.reset();
@@ -294,6 +316,10 @@ void MeshRenderer::release() noexcept {
     if (program_ != 0) {
         f.glDeleteProgram(program_);
         program_ = 0;
+    }
+    if (gbufferProgram_ != 0) {
+        f.glDeleteProgram(gbufferProgram_);
+        gbufferProgram_ = 0;
     }
     uploadedMap_.reset();
     scalarsUploadedForArray_ = false;
@@ -433,7 +459,7 @@ void MeshRenderer::uploadLut() {
     uploadedMap_ = style_.colorMap;
 }
 
-void MeshRenderer::draw(const Camera& camera) {
+void MeshRenderer::draw(const Camera& camera, DepthMode mode) {
     auto& f = gl();
     if (program_ == 0) {
         throw RenderError("MeshRenderer::draw without a shader program");
@@ -453,12 +479,11 @@ void MeshRenderer::draw(const Camera& camera) {
     const bool useArray = !style_.array.empty();
     const std::pair<float, float> range = effectiveRange_.value_or(std::make_pair(0.0F, 1.0F));
     const glm::vec3 noData = colormaps::noDataColor(style_.colorMap);
-    // Key light a little above and left of the eye: a headlight that still
-    // shows curvature on surfaces facing the viewer.
-    const glm::vec3 light = glm::normalize(glm::vec3(-0.25F, 0.35F, 1.0F));
+    const Lighting& light = sceneLighting();
 
     f.glEnable(GL_DEPTH_TEST);
-    f.glDepthFunc(GL_LESS);
+    f.glDepthFunc(mode == DepthMode::Write ? GL_LESS : GL_LEQUAL);
+    f.glDepthMask(mode == DepthMode::Write ? GL_TRUE : GL_FALSE);
     f.glDisable(GL_CULL_FACE);
     f.glDisable(GL_BLEND);
     f.glUseProgram(program_);
@@ -474,11 +499,11 @@ void MeshRenderer::draw(const Camera& camera) {
     f.glUniform1f(loc("uLutSize"), static_cast<float>(lutSize_));
     f.glUniform2f(loc("uRange"), range.first, range.second);
     f.glUniform1i(loc("uLighting"), style_.lighting ? 1 : 0);
-    f.glUniform3f(loc("uLightDirection"), light.x, light.y, light.z);
-    f.glUniform1f(loc("uAmbient"), 0.30F);
-    f.glUniform1f(loc("uDiffuse"), 0.70F);
-    f.glUniform1f(loc("uSpecular"), 0.25F);
-    f.glUniform1f(loc("uShininess"), 48.0F);
+    f.glUniform3f(loc("uLightDirection"), light.direction.x, light.direction.y, light.direction.z);
+    f.glUniform1f(loc("uAmbient"), light.ambient);
+    f.glUniform1f(loc("uDiffuse"), light.diffuse);
+    f.glUniform1f(loc("uSpecular"), light.specular);
+    f.glUniform1f(loc("uShininess"), light.shininess);
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
 
@@ -489,7 +514,43 @@ void MeshRenderer::draw(const Camera& camera) {
     f.glBindVertexArray(0);
     f.glBindTexture(GL_TEXTURE_1D, 0);
     f.glUseProgram(0);
+    f.glDepthMask(GL_TRUE);
     throwOnGlError(f, "drawing meshes");
+}
+
+void MeshRenderer::drawGBuffer(const Camera& camera) {
+    auto& f = gl();
+    if (gbufferProgram_ == 0) {
+        throw RenderError("MeshRenderer::drawGBuffer without a shader program");
+    }
+    if (meshes_.empty()) {
+        return;
+    }
+    const glm::mat4 view = camera.viewMatrix();
+    const glm::mat4 projection = camera.projectionMatrix();
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDepthFunc(GL_LESS);
+    f.glDepthMask(GL_TRUE);
+    f.glDisable(GL_CULL_FACE);
+    f.glDisable(GL_BLEND);
+    f.glUseProgram(gbufferProgram_);
+    const auto loc = [&](const char* name) {
+        return f.glGetUniformLocation(gbufferProgram_, name);
+    };
+    f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
+    f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
+    f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+    const GLint objectId = loc("uObjectId");
+    GLuint id = 1;
+    for (const auto& m : meshes_) {
+        f.glUniform1ui(objectId, id++);
+        f.glBindVertexArray(m.vao);
+        f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    f.glBindVertexArray(0);
+    f.glUseProgram(0);
+    throwOnGlError(f, "drawing the G-buffer");
 }
 
 std::string MeshRenderer::glDescription() const {

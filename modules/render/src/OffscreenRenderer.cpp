@@ -4,7 +4,6 @@
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
-#include <QOpenGLFramebufferObject>
 #include <QOpenGLFunctions_4_1_Core>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QSurfaceFormat>
@@ -79,19 +78,47 @@ OffscreenRenderer::OffscreenRenderer() {
                           versionText(got, context_->isOpenGLES()));
     }
     CurrentContext current(*context_, *surface_);
-    renderer_ = std::make_unique<MeshRenderer>();
+    renderer_ = std::make_unique<FrameRenderer>();
     renderer_->initialize();
-    description_ = renderer_->glDescription();
+    description_ = renderer_->meshRenderer().glDescription();
 }
 
 OffscreenRenderer::~OffscreenRenderer() {
     if (context_ && surface_ && renderer_ && context_->makeCurrent(surface_.get())) {
+        output_.reset();
         renderer_->release();
         context_->doneCurrent();
     }
     renderer_.reset();
     context_.reset();
     surface_.reset();
+}
+
+const std::vector<PassInfo>& OffscreenRenderer::lastPasses() const noexcept {
+    return renderer_->lastPasses();
+}
+
+const VssFrameStatus& OffscreenRenderer::vssStatus() const noexcept {
+    return renderer_->vssStatus();
+}
+
+Image<float> OffscreenRenderer::lastLinearDepth() const {
+    const Image<float>& glOrder = renderer_->lastSolvedDepth();
+    Image<float> out(glOrder.width(), glOrder.height());
+    for (int y = 0; y < glOrder.height(); ++y) {
+        std::copy(glOrder.row(y), glOrder.row(y) + glOrder.width(),
+                  out.row(glOrder.height() - 1 - y));
+    }
+    return out;
+}
+
+const std::string& OffscreenRenderer::lastGraphText() const noexcept {
+    return renderer_->lastGraphText();
+}
+
+std::vector<GlPassTiming> OffscreenRenderer::lastTimings() {
+    CurrentContext current(*context_, *surface_);
+    return renderer_->lastTimings();
 }
 
 QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions& options) {
@@ -106,34 +133,25 @@ QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions&
     if (gl == nullptr) {
         throw RenderError("cannot resolve the OpenGL 4.1 core functions");
     }
-
-    GLint maxSamples = 0;
-    gl->glGetIntegerv(GL_MAX_SAMPLES, &maxSamples);
-    GLint maxRenderbuffer = 0;
-    gl->glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &maxRenderbuffer);
-    if (options.width > maxRenderbuffer || options.height > maxRenderbuffer) {
+    GLint maxTexture = 0;
+    gl->glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxTexture);
+    if (options.width > maxTexture || options.height > maxTexture) {
         throw InvalidArgumentError(
             "image size " + std::to_string(options.width) + "x" + std::to_string(options.height) +
-            " exceeds this GPU's limit of " + std::to_string(maxRenderbuffer) + " pixels per side");
+            " exceeds this GPU's limit of " + std::to_string(maxTexture) + " pixels per side");
     }
-    const int samples = std::clamp(options.samples, 0, static_cast<int>(maxSamples));
-    const QSize size(options.width, options.height);
-
-    QOpenGLFramebufferObjectFormat msFormat;
-    msFormat.setAttachment(QOpenGLFramebufferObject::Depth);
-    msFormat.setSamples(samples > 1 ? samples : 0);
-    msFormat.setInternalTextureFormat(GL_RGBA8);
-    QOpenGLFramebufferObject target(size, msFormat);
-    if (!target.isValid()) {
-        throw RenderError("cannot create a " + std::to_string(options.width) + "x" +
-                          std::to_string(options.height) + " framebuffer with " +
-                          std::to_string(samples) + " samples");
+    const TextureDescriptor descriptor{options.width, options.height, TextureFormat::RGBA8, 1};
+    if (!output_ || !(output_->descriptor() == descriptor)) {
+        output_.reset();
+        output_ = std::make_shared<GlTexture>(*gl, descriptor);
     }
 
     // The shared pointer does not own the scene: it only lives for this call.
     const std::shared_ptr<const io::Scene> view(std::shared_ptr<const io::Scene>(), &scene);
-    renderer_->setScene(view);
-    renderer_->setStyle(options.style);
+    MeshRenderer& meshes = renderer_->meshRenderer();
+    meshes.setScene(view);
+    meshes.setStyle(options.style);
+    renderer_->setSceneRevision(sceneFingerprint(scene));
 
     Camera camera = options.camera.value_or(Camera());
     camera.setViewport(options.width, options.height);
@@ -143,37 +161,33 @@ QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions&
         camera.setSceneBounds(scene.bounds());
     }
 
-    target.bind();
-    gl->glViewport(0, 0, options.width, options.height);
-    gl->glClearColor(options.background.r, options.background.g, options.background.b, 1.0F);
-    gl->glClearDepth(1.0);
-    gl->glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    FrameSettings settings;
+    settings.background = options.background;
+    settings.vss = options.vss;
     try {
-        renderer_->draw(camera);
+        renderer_->render(camera, settings,
+                          FrameTarget{output_->framebuffer(), options.width, options.height});
     } catch (...) {
-        renderer_->setScene(nullptr);
-        target.release();
+        meshes.setScene(nullptr);
         throw;
     }
-    lastRange_ = renderer_->effectiveRange();
-    target.release();
+    lastRange_ = meshes.effectiveRange();
+    meshes.setScene(nullptr);  // free the GPU copies; the scene is not ours to keep
 
-    // Resolve the samples into a plain framebuffer and read it back.
-    QOpenGLFramebufferObject resolved(size, QOpenGLFramebufferObject::NoAttachment, GL_TEXTURE_2D,
-                                      GL_RGBA8);
-    if (!resolved.isValid()) {
-        renderer_->setScene(nullptr);
-        throw RenderError("cannot create the framebuffer to resolve the image into");
-    }
-    const QRect rect(QPoint(0, 0), size);
-    QOpenGLFramebufferObject::blitFramebuffer(&resolved, rect, &target, rect, GL_COLOR_BUFFER_BIT,
-                                              GL_NEAREST);
-    QImage image = resolved.toImage();  // flipped to top-left origin
-    renderer_->setScene(nullptr);       // free the GPU copies; the scene is not ours to keep
+    QImage image(options.width, options.height, QImage::Format_RGBA8888);
     if (image.isNull()) {
-        throw RenderError("cannot read the rendered image back");
+        throw RenderError("cannot allocate the image to read the frame into");
     }
-    return image.convertToFormat(QImage::Format_RGB32);
+    gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, output_->framebuffer());
+    gl->glReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl->glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl->glPixelStorei(GL_PACK_ROW_LENGTH, static_cast<GLint>(image.bytesPerLine() / 4));
+    gl->glReadPixels(0, 0, options.width, options.height, GL_RGBA, GL_UNSIGNED_BYTE, image.bits());
+    gl->glPixelStorei(GL_PACK_ROW_LENGTH, 0);
+    gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    checkGlError(*gl, "reading the rendered image back");
+    // GL rows start at the bottom.
+    return image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
 }
 
 }  // namespace vv::render

@@ -34,6 +34,20 @@ struct MeshStyle {
     bool lighting = true;
 };
 
+/// The light shared by the vessels and the VSS: a key light a little above
+/// and left of the eye (a headlight that still shows curvature on surfaces
+/// facing the viewer) plus ambient, Blinn-Phong. Directions in view space.
+struct Lighting {
+    glm::vec3 direction{0.0F, 0.0F, 1.0F};  ///< towards the light, unit length
+    float ambient = 0.30F;
+    float diffuse = 0.70F;
+    float specular = 0.25F;
+    float shininess = 48.0F;
+};
+
+/// The one Lighting every pass uses.
+[[nodiscard]] const Lighting& sceneLighting() noexcept;
+
 /// The array to show by default: "wss" (wall shear stress) when some mesh
 /// has a point array of that name (ignoring case; also "wall_shear_stress",
 /// "WallShearStress"), else the empty string (neutral material).
@@ -91,12 +105,29 @@ class MeshRenderer {
         return effectiveRange_;
     }
 
-    /// Draws into the currently bound framebuffer with the camera's matrices.
+    /// How draw() uses the depth buffer.
+    enum class DepthMode {
+        Write,     ///< depth test GL_LESS and depth writes (a plain forward pass)
+        TestOnly,  ///< GL_LEQUAL against a depth buffer drawGBuffer() filled, no writes
+    };
+
+    /// Draws into the currently bound framebuffer with the camera's matrices:
+    /// the shaded colour to draw buffer 0 (alpha 1) and the parameter value
+    /// (NaN = no data) to draw buffer 1 when the framebuffer has one.
     /// Depth test on; does not clear. The caller sets the viewport. A chosen
     /// array that a mesh lacks, or that has no finite value, shows the map's
     /// noDataColor(). Throws RenderError when not initialized, the context is
     /// not current or GL reports an error.
-    void draw(const Camera& camera);
+    void draw(const Camera& camera, DepthMode mode = DepthMode::Write);
+
+    /// The geometry pass: draws the meshes into the currently bound G-buffer,
+    /// draw buffer 0 = linear view depth (R32F, distance along the viewing
+    /// axis in scene units), 1 = view-space normal facing the viewer
+    /// (RGBA16F), 2 = object id (R32UI, 1 + mesh index). Depth test GL_LESS
+    /// with writes; does not clear. Same vertex shader as draw(), so a later
+    /// draw(camera, DepthMode::TestOnly) hits exactly the same depths.
+    /// Throws like draw().
+    void drawGBuffer(const Camera& camera);
 
     /// Deletes all GL objects; the context of initialize() must be current.
     /// Safe to call more than once.
@@ -115,6 +146,7 @@ class MeshRenderer {
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
     QOpenGLContext* context_ = nullptr;
     unsigned program_ = 0;
+    unsigned gbufferProgram_ = 0;
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;
     std::vector<GpuMesh> meshes_;

@@ -6,9 +6,11 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
+#include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
 
 class QOffscreenSurface;
@@ -26,14 +28,22 @@ struct OffscreenOptions {
     /// The view; nullopt = the default orientation fitted to the scene.
     /// A given camera gets its viewport set to width x height.
     std::optional<Camera> camera;
-    /// Multisampling samples (anti-aliasing); 0 or 1 = none. Reduced to what
-    /// the GL implementation supports.
+    /// Multisampling samples: kept for compatibility and ignored, because the
+    /// frame's G-buffer is not multisampled (the VSS needs one depth per
+    /// pixel); edge anti-aliasing is a later post-process pass.
     int samples = 4;
+    /// The Void Space Surface: on by default (chromadepth, fast solver).
+    /// With it on, void pixels show the VSS where one exists; off, they show
+    /// the background.
+    VssSettings vss;
 };
 
 /// Renders scenes into images without a window: its own OpenGL 4.1 core
-/// context on a QOffscreenSurface, a multisampled framebuffer object, the
-/// same Camera and MeshRenderer as the viewer.
+/// context on a QOffscreenSurface and the same FrameRenderer (render graph:
+/// G-buffer, VSS solve, VSS shading, composite) as the viewer, solving the
+/// VSS synchronously. The graph's cache lives across render() calls, so a
+/// second render of the same scene and view re-runs only what changed
+/// (e.g. a new colour scale re-shades but does not re-solve).
 ///
 /// Needs a QGuiApplication and must be created, used and destroyed on the
 /// thread that owns it (the GUI thread). With Qt's "offscreen" platform
@@ -60,13 +70,28 @@ class OffscreenRenderer {
         return lastRange_;
     }
 
+    /// The passes of the last render() (state, reason, CPU time): e.g.
+    /// "vss-solve" is Culled with the VSS off and Cached when only the colour
+    /// scale changed.
+    [[nodiscard]] const std::vector<PassInfo>& lastPasses() const noexcept;
+    /// CPU and GPU milliseconds of the passes that ran in the last render().
+    [[nodiscard]] std::vector<GlPassTiming> lastTimings();
+    /// The VSS of the last render().
+    [[nodiscard]] const VssFrameStatus& vssStatus() const noexcept;
+    /// The G-buffer's linear depth read by the last VSS solve (row 0 = top,
+    /// like the image; +Inf on background); empty when no solve ran yet.
+    [[nodiscard]] Image<float> lastLinearDepth() const;
+    /// The last render's graph as text, for debugging.
+    [[nodiscard]] const std::string& lastGraphText() const noexcept;
+
     /// "renderer / OpenGL version" of the context.
     [[nodiscard]] const std::string& glDescription() const noexcept { return description_; }
 
   private:
     std::unique_ptr<QOffscreenSurface> surface_;
     std::unique_ptr<QOpenGLContext> context_;
-    std::unique_ptr<MeshRenderer> renderer_;
+    std::unique_ptr<FrameRenderer> renderer_;
+    std::shared_ptr<GlTexture> output_;
     std::string description_;
     std::optional<std::pair<float, float>> lastRange_;
 };

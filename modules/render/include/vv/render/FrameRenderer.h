@@ -1,0 +1,162 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "vv/colormaps/DepthScale.h"
+#include "vv/core/Image.h"
+#include "vv/io/Mesh.h"
+#include "vv/render/Camera.h"
+#include "vv/render/GlResources.h"
+#include "vv/render/MeshRenderer.h"
+#include "vv/render/RenderGraph.h"
+#include "vv/vss/Solver.h"
+
+class QOpenGLContext;
+
+namespace vv::render {
+
+/// How the Void Space Surface is computed and shaded.
+struct VssSettings {
+    bool enabled = true;
+    colormaps::DepthScale scale = colormaps::DepthScale::Chromadepth;
+    /// Solver, p, tolerance (fast solver by default).
+    vss::SolverOptions solver;
+    int isoLines = 8;               ///< N iso-lines at z' = k / N; 0 = none
+    float isoLineWidth = 1.5F;      ///< pixels
+    float isoLineStrength = 0.55F;  ///< 0..1
+    float lighting = 1.0F;          ///< 0 = flat scale colours, 1 = full Blinn-Phong
+    float opacity = 1.0F;           ///< 0..1, the VSS over the background
+};
+
+/// Everything a frame needs besides the camera, the scene and the mesh style
+/// (which lives in FrameRenderer::meshRenderer()).
+struct FrameSettings {
+    glm::vec3 background{0.13F, 0.14F, 0.16F};  ///< sRGB
+    VssSettings vss;
+};
+
+/// The framebuffer a frame is drawn into: `framebuffer` (0 = the default one)
+/// of width x height device pixels.
+struct FrameTarget {
+    unsigned framebuffer = 0;
+    int width = 1;
+    int height = 1;
+};
+
+/// What the VSS of the last frame was.
+struct VssFrameStatus {
+    bool shown = false;    ///< a VSS was drawn
+    bool current = false;  ///< it belongs to this frame's view (not a previous one)
+    bool pending = false;  ///< a solve for this frame's view is still running
+    double dmin = 0.0;     ///< its depth range in scene units
+    double dmax = 0.0;
+    double solveMilliseconds = 0.0;  ///< wall time of the solve that made it
+};
+
+/// A content hash of a scene's geometry (positions and indices of every
+/// mesh), for the render graph's caching when a scene object is not kept.
+[[nodiscard]] std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept;
+
+/// Renders a frame through the render graph (ARCHITECTURE.md, "How a frame
+/// flows"), with OpenGL 4.1 core:
+///
+///  - "geometry": the vessels into the G-buffer (linear view depth R32F,
+///    normal RGBA16F, object id R32UI, Depth32F); cached while camera,
+///    viewport and scene stay.
+///  - "vessel-shading": the vessel colour (MeshRenderer's material or array
+///    through the colour map, Blinn-Phong) and the parameter value (R32F,
+///    NaN = no data), depth-tested against the G-buffer.
+///  - "vss-solve": reads the linear depth back, solves the VSS (vss::solve,
+///    mask = finite depth) and uploads the height image (R32F); cached while
+///    the depth, p, solver and tolerance stay, so colour scale and iso-line
+///    changes never re-solve. Synchronous, or on a worker thread (see
+///    SolveMode).
+///  - "vss-shading": depth colour scale, iso-lines and height-field lighting.
+///  - "composite": vessels over the VSS over the background, into the target.
+///
+/// With the VSS off, nothing reads the VSS passes' outputs and the graph
+/// culls them. The GL context current at initialize() must be current for
+/// every call that touches GL; call release() before it goes away.
+class FrameRenderer {
+  public:
+    enum class SolveMode {
+        /// The solve runs inside the frame (CLI, offscreen, tests).
+        Synchronous,
+        /// The solve runs on a worker thread; the frame shows the previous
+        /// VSS (same viewport size) or none until the result arrives, then
+        /// `onSolved` is called on the worker thread: schedule a new frame
+        /// from it (e.g. a queued QWidget::update()). A newer request cancels
+        /// a stale solve.
+        Asynchronous,
+    };
+
+    FrameRenderer();
+    ~FrameRenderer();
+    FrameRenderer(const FrameRenderer&) = delete;
+    FrameRenderer& operator=(const FrameRenderer&) = delete;
+    FrameRenderer(FrameRenderer&&) = delete;
+    FrameRenderer& operator=(FrameRenderer&&) = delete;
+
+    /// Builds shaders and GL objects in the current context. Throws
+    /// RenderError when no OpenGL 4.1 core context is current or a shader
+    /// fails.
+    void initialize();
+    [[nodiscard]] bool initialized() const noexcept;
+    /// Deletes every GL object (the context must be current) and stops the
+    /// worker. Safe to call more than once.
+    void release() noexcept;
+
+    /// The mesh renderer: set its scene and style through it (context current).
+    [[nodiscard]] MeshRenderer& meshRenderer() noexcept { return meshes_; }
+
+    /// Tells the graph that the scene's content changed (every value
+    /// different from the last one re-runs the geometry and the solve).
+    void setSceneRevision(std::uint64_t revision) noexcept { sceneRevision_ = revision; }
+
+    /// Synchronous by default. Switching cancels a running solve.
+    void setSolveMode(SolveMode mode, std::function<void()> onSolved = {});
+    [[nodiscard]] SolveMode solveMode() const noexcept { return mode_; }
+
+    /// Draws one frame into `target` and leaves that framebuffer bound.
+    /// Throws RenderError when GL fails, InvalidArgumentError for bad solver
+    /// options (p, tolerance), and what the graph throws.
+    void render(const Camera& camera, const FrameSettings& settings, const FrameTarget& target);
+
+    /// The compiled graph of the last frame (states, reasons, CPU times).
+    [[nodiscard]] const std::vector<PassInfo>& lastPasses() const noexcept { return passes_; }
+    /// The last frame's graph as text (RenderGraph::toText()).
+    [[nodiscard]] const std::string& lastGraphText() const noexcept { return graphText_; }
+    /// CPU and GPU time of the passes that ran in the last frame; waits for
+    /// the GPU timers (context current).
+    [[nodiscard]] const std::vector<GlPassTiming>& lastTimings();
+    [[nodiscard]] const VssFrameStatus& vssStatus() const noexcept { return status_; }
+
+    /// The linear depth the last solve read back from the G-buffer: row 0 is
+    /// the BOTTOM row (GL order), +Inf on background pixels. Empty before the
+    /// first solve. For checks and depth export.
+    [[nodiscard]] const Image<float>& lastSolvedDepth() const noexcept;
+
+    /// Asynchronous mode: blocks until no solve is queued or running (tests).
+    void waitForSolves();
+
+    /// Forgets every cached pass result and pooled texture (context current).
+    void clearCache();
+
+  private:
+    struct Impl;
+    MeshRenderer meshes_;
+    std::unique_ptr<Impl> impl_;
+    SolveMode mode_ = SolveMode::Synchronous;
+    std::uint64_t sceneRevision_ = 0;
+    std::vector<PassInfo> passes_;
+    std::string graphText_;
+    VssFrameStatus status_;
+};
+
+}  // namespace vv::render

@@ -1,0 +1,743 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/render/FrameRenderer.h"
+
+#include <QOpenGLContext>
+#include <QOpenGLFunctions_4_1_Core>
+#include <chrono>
+#include <cmath>
+#include <condition_variable>
+#include <cstring>
+#include <limits>
+#include <mutex>
+#include <optional>
+#include <stop_token>
+#include <thread>
+#include <utility>
+
+#include "vv/colormaps/DepthScale.h"
+#include "vv/core/Error.h"
+#include "vv/core/Image.h"
+#include "vv/render/RenderGraphCache.h"
+#include "vv/vss/DepthNormalization.h"
+#include "vv/vss/Vss.h"
+
+namespace vv::render {
+
+namespace {
+
+constexpr int kScaleLutSize = 256;
+/// The height texture's mark for "no VSS here" (NaN is not portable in GLSL).
+constexpr float kNoVss = -1.0F;
+
+/// FNV-1a over raw bytes.
+class Hasher {
+  public:
+    void bytes(const void* data, std::size_t size) noexcept {
+        const auto* p = static_cast<const unsigned char*>(data);
+        for (std::size_t i = 0; i < size; ++i) {
+            hash_ = (hash_ ^ p[i]) * 1099511628211ULL;
+        }
+    }
+    template <class T>
+    void value(const T& v) noexcept {
+        bytes(&v, sizeof v);
+    }
+    [[nodiscard]] std::uint64_t result() const noexcept { return hash_; }
+
+  private:
+    std::uint64_t hash_ = 14695981039346656037ULL;
+};
+
+/// The solver options as plain bytes for dependsOn (no padding surprises).
+struct SolverKey {
+    double p = 0.0;
+    double tolerance = 0.0;
+    std::int32_t kind = 0;
+    std::int32_t step = 0;
+};
+
+SolverKey solverKey(const vss::SolverOptions& options) noexcept {
+    SolverKey key;
+    key.p = options.p;
+    key.tolerance = options.tolerance;
+    key.kind = static_cast<std::int32_t>(options.kind);
+    key.step = options.step;
+    return key;
+}
+
+/// A solved VSS for one view.
+struct SolvedFrame {
+    std::uint64_t key = 0;  ///< view, viewport, scene and solver it belongs to
+    Image<float> height;    ///< GL row order (bottom row first); NaN = no VSS
+    double dmin = 0.0;
+    double dmax = 0.0;
+    double milliseconds = 0.0;
+};
+
+SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
+                       const vss::SolverOptions& options, const std::stop_token& stop) {
+    const auto start = std::chrono::steady_clock::now();
+    const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
+    vss::VssOptions vssOptions;
+    vssOptions.solver = options;
+    vssOptions.stop = stop;
+    vss::VssResult result = vss::solve(depth.view(), mask.view(), vssOptions);
+    SolvedFrame frame;
+    frame.key = key;
+    frame.height = std::move(result.height);
+    frame.dmin = result.dmin;
+    frame.dmax = result.dmax;
+    frame.milliseconds =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return frame;
+}
+
+/// The latest solved VSS as a graph import: its revision tells the solve
+/// pass when a new one arrived.
+struct SolvedFrameRef {
+    std::shared_ptr<const SolvedFrame> frame;
+};
+
+/// One worker thread solving the latest requested view; a newer request
+/// cancels a running stale one (vss::solve's stop token).
+class SolveWorker {
+  public:
+    struct Job {
+        std::uint64_t key = 0;
+        Image<float> depth;
+        vss::SolverOptions options;
+    };
+
+    explicit SolveWorker(std::function<void()> onSolved)
+        : onSolved_(std::move(onSolved)),
+          thread_([this](const std::stop_token& stop) { run(stop); }) {}
+
+    ~SolveWorker() {
+        {
+            std::lock_guard lock(mutex_);
+            runningStop_.request_stop();
+            pending_.reset();
+        }
+        thread_.request_stop();
+        wake_.notify_all();
+        thread_.join();
+    }
+    SolveWorker(const SolveWorker&) = delete;
+    SolveWorker& operator=(const SolveWorker&) = delete;
+    SolveWorker(SolveWorker&&) = delete;
+    SolveWorker& operator=(SolveWorker&&) = delete;
+
+    void submit(Job job) {
+        {
+            std::lock_guard lock(mutex_);
+            if (running_ && runningKey_ != job.key) {
+                runningStop_.request_stop();
+            }
+            pending_ = std::move(job);
+        }
+        wake_.notify_all();
+    }
+
+    /// True when `key` is queued or being solved.
+    [[nodiscard]] bool requested(std::uint64_t key) const {
+        std::lock_guard lock(mutex_);
+        return (pending_ && pending_->key == key) ||
+               (running_ && runningKey_ == key && !runningStop_.stop_requested());
+    }
+
+    [[nodiscard]] std::pair<std::shared_ptr<const SolvedFrame>, std::uint64_t> latest() const {
+        std::lock_guard lock(mutex_);
+        return {latest_, revision_};
+    }
+
+    void waitIdle() {
+        std::unique_lock lock(mutex_);
+        idle_.wait(lock, [this] { return !pending_ && !running_; });
+    }
+
+  private:
+    void run(const std::stop_token& stop) {
+        for (;;) {
+            Job job;
+            std::stop_token jobStop;
+            {
+                std::unique_lock lock(mutex_);
+                wake_.wait(lock, [&] { return pending_.has_value() || stop.stop_requested(); });
+                if (stop.stop_requested()) {
+                    return;
+                }
+                job = std::move(*pending_);
+                pending_.reset();
+                runningStop_ = std::stop_source();
+                jobStop = runningStop_.get_token();
+                running_ = true;
+                runningKey_ = job.key;
+            }
+            std::shared_ptr<const SolvedFrame> solved;
+            try {
+                solved = std::make_shared<const SolvedFrame>(
+                    solveFrame(job.key, job.depth, job.options, jobStop));
+            } catch (const std::exception&) {
+                // Cancelled, or a failure: the view shows no new VSS; the next
+                // request tries again.
+            }
+            {
+                std::lock_guard lock(mutex_);
+                running_ = false;
+                if (solved) {
+                    latest_ = std::move(solved);
+                    ++revision_;
+                }
+            }
+            idle_.notify_all();
+            if (latest().first && latest().first->key == job.key && onSolved_) {
+                onSolved_();
+            }
+        }
+    }
+
+    std::function<void()> onSolved_;
+    mutable std::mutex mutex_;
+    std::condition_variable wake_;
+    std::condition_variable idle_;
+    std::optional<Job> pending_;
+    bool running_ = false;
+    std::uint64_t runningKey_ = 0;
+    std::stop_source runningStop_;
+    std::shared_ptr<const SolvedFrame> latest_;
+    std::uint64_t revision_ = 0;
+    std::jthread thread_;  // last: starts after, and joins before, the members above go
+};
+
+GlTexture& glTex(const Texture& texture) {
+    return texture.objectAs<GlTexture>();
+}
+
+}  // namespace
+
+std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept {
+    Hasher h;
+    h.value(scene.meshes.size());
+    for (const auto& mesh : scene.meshes) {
+        h.value(mesh.positions.size());
+        h.bytes(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+        h.value(mesh.indices.size());
+        h.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+        h.value(mesh.normals.size());
+        h.bytes(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+    }
+    return h.result();
+}
+
+struct FrameRenderer::Impl {
+    QOpenGLFunctions_4_1_Core* gl = nullptr;
+    QOpenGLContext* context = nullptr;
+    std::unique_ptr<GlResourceAllocator> allocator;
+    std::unique_ptr<RenderGraphCache> cache;
+    std::unique_ptr<GlPassObserver> observer;
+    GLuint vssProgram = 0;
+    GLuint compositeProgram = 0;
+    GLuint emptyVao = 0;
+    GLuint geometryFbo = 0;
+    GLuint shadingFbo = 0;
+    GLuint scaleLut = 0;
+    std::optional<colormaps::DepthScale> uploadedScale;
+    std::unique_ptr<SolveWorker> worker;
+    std::function<void()> onSolved;
+    /// The depth the last solve read.
+    Image<float> lastDepth;
+    /// What the last run of the solve pass did.
+    VssFrameStatus solveStatus;
+    /// What the height texture holds now.
+    bool shown = false;
+    double dmin = 0.0;
+    double dmax = 0.0;
+
+    [[nodiscard]] QOpenGLFunctions_4_1_Core& f() const {
+        if (gl == nullptr) {
+            throw RenderError("FrameRenderer used before initialize()");
+        }
+        if (QOpenGLContext::currentContext() != context) {
+            throw RenderError("FrameRenderer used without its OpenGL context current");
+        }
+        return *gl;
+    }
+
+    void uploadScale(colormaps::DepthScale scale) {
+        if (uploadedScale == scale) {
+            return;
+        }
+        auto& g = f();
+        const auto table = colormaps::lut(scale, kScaleLutSize);
+        g.glBindTexture(GL_TEXTURE_1D, scaleLut);
+        g.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+        g.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, kScaleLutSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                       table.data());
+        g.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        g.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        g.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        g.glBindTexture(GL_TEXTURE_1D, 0);
+        checkGlError(g, "uploading the depth scale");
+        uploadedScale = scale;
+    }
+
+    [[nodiscard]] Image<float> readDepth(const GlTexture& texture) const {
+        auto& g = f();
+        const auto& d = texture.descriptor();
+        Image<float> depth(d.width, d.height);
+        g.glBindFramebuffer(GL_READ_FRAMEBUFFER, texture.framebuffer());
+        g.glReadBuffer(GL_COLOR_ATTACHMENT0);
+        g.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+        g.glReadPixels(0, 0, d.width, d.height, GL_RED, GL_FLOAT, depth.data());
+        g.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+        checkGlError(g, "reading the linear depth back");
+        return depth;
+    }
+
+    /// Uploads `frame` (or "no VSS" when null or of another size).
+    void uploadHeight(const GlTexture& texture, const SolvedFrame* frame) {
+        auto& g = f();
+        const auto& d = texture.descriptor();
+        const bool fits = frame != nullptr && frame->height.width() == d.width &&
+                          frame->height.height() == d.height;
+        std::vector<float> texels(
+            static_cast<std::size_t>(d.width) * static_cast<std::size_t>(d.height), kNoVss);
+        if (fits) {
+            for (int y = 0; y < d.height; ++y) {
+                const float* row = frame->height.row(y);
+                for (int x = 0; x < d.width; ++x) {
+                    const float v = row[x];
+                    texels[static_cast<std::size_t>(y) * static_cast<std::size_t>(d.width) +
+                           static_cast<std::size_t>(x)] = std::isfinite(v) ? v : kNoVss;
+                }
+            }
+        }
+        g.glBindTexture(GL_TEXTURE_2D, texture.texture());
+        g.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        g.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, d.width, d.height, GL_RED, GL_FLOAT,
+                          texels.data());
+        g.glBindTexture(GL_TEXTURE_2D, 0);
+        checkGlError(g, "uploading the VSS");
+        shown = fits && std::isfinite(frame->dmin) && std::isfinite(frame->dmax);
+        dmin = shown ? frame->dmin : 0.0;
+        dmax = shown ? frame->dmax : 0.0;
+    }
+};
+
+FrameRenderer::FrameRenderer() : impl_(std::make_unique<Impl>()) {}
+
+FrameRenderer::~FrameRenderer() {
+    if (impl_->context != nullptr && QOpenGLContext::currentContext() == impl_->context) {
+        release();
+    }
+    impl_->worker.reset();
+}
+
+bool FrameRenderer::initialized() const noexcept {
+    return impl_->gl != nullptr && impl_->vssProgram != 0 && meshes_.initialized();
+}
+
+void FrameRenderer::initialize() {
+    auto& gl = currentGl41();
+    if (impl_->gl != nullptr && impl_->context == QOpenGLContext::currentContext()) {
+        release();
+    }
+    meshes_.initialize();
+    impl_->gl = &gl;
+    impl_->context = QOpenGLContext::currentContext();
+    impl_->cache.reset();
+    impl_->allocator = std::make_unique<GlResourceAllocator>();
+    impl_->cache = std::make_unique<RenderGraphCache>(*impl_->allocator);
+    impl_->observer = std::make_unique<GlPassObserver>();
+    impl_->vssProgram =
+        buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/vss.frag", "VSS shading");
+    impl_->compositeProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert",
+                                           ":/vv/shaders/composite.frag", "composite");
+    gl.glGenVertexArrays(1, &impl_->emptyVao);
+    gl.glGenFramebuffers(1, &impl_->geometryFbo);
+    gl.glGenFramebuffers(1, &impl_->shadingFbo);
+    gl.glGenTextures(1, &impl_->scaleLut);
+    impl_->uploadedScale.reset();
+    impl_->shown = false;
+    checkGlError(gl, "FrameRenderer::initialize");
+}
+
+void FrameRenderer::release() noexcept {
+    impl_->worker.reset();
+    if (impl_->gl == nullptr || QOpenGLContext::currentContext() != impl_->context) {
+        return;
+    }
+    auto& g = *impl_->gl;
+    impl_->cache.reset();  // GL textures die with the context current
+    impl_->allocator.reset();
+    if (impl_->observer) {
+        impl_->observer->release();
+        impl_->observer.reset();
+    }
+    g.glDeleteProgram(impl_->vssProgram);
+    g.glDeleteProgram(impl_->compositeProgram);
+    g.glDeleteVertexArrays(1, &impl_->emptyVao);
+    g.glDeleteFramebuffers(1, &impl_->geometryFbo);
+    g.glDeleteFramebuffers(1, &impl_->shadingFbo);
+    g.glDeleteTextures(1, &impl_->scaleLut);
+    impl_->vssProgram = 0;
+    impl_->compositeProgram = 0;
+    impl_->emptyVao = 0;
+    impl_->geometryFbo = 0;
+    impl_->shadingFbo = 0;
+    impl_->scaleLut = 0;
+    impl_->uploadedScale.reset();
+    impl_->shown = false;
+    meshes_.release();
+    impl_->gl = nullptr;
+    impl_->context = nullptr;
+}
+
+void FrameRenderer::setSolveMode(SolveMode mode, std::function<void()> onSolved) {
+    impl_->worker.reset();
+    mode_ = mode;
+    impl_->onSolved = std::move(onSolved);
+    if (mode_ == SolveMode::Asynchronous) {
+        impl_->worker = std::make_unique<SolveWorker>(impl_->onSolved);
+    }
+}
+
+const Image<float>& FrameRenderer::lastSolvedDepth() const noexcept {
+    return impl_->lastDepth;
+}
+
+void FrameRenderer::waitForSolves() {
+    if (impl_->worker) {
+        impl_->worker->waitIdle();
+    }
+}
+
+void FrameRenderer::clearCache() {
+    if (impl_->cache) {
+        impl_->cache->clear();
+    }
+    impl_->shown = false;
+}
+
+const std::vector<GlPassTiming>& FrameRenderer::lastTimings() {
+    static const std::vector<GlPassTiming> none;
+    if (!impl_->observer) {
+        return none;
+    }
+    return impl_->observer->timings();
+}
+
+void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
+                           const FrameTarget& target) {
+    if (!initialized()) {
+        throw RenderError("FrameRenderer::render before initialize()");
+    }
+    auto& gl = impl_->f();
+    if (target.width < 1 || target.height < 1) {
+        throw InvalidArgumentError("frame size must be at least 1x1, got " +
+                                   std::to_string(target.width) + "x" +
+                                   std::to_string(target.height));
+    }
+    const VssSettings& vssSettings = settings.vss;
+    if (vssSettings.enabled) {
+        static_cast<void>(vss::makeSolver(vssSettings.solver));  // throws for bad options
+    }
+    const int w = target.width;
+    const int h = target.height;
+    const auto size = [&](TextureFormat format) { return TextureDescriptor{w, h, format, 1}; };
+    const glm::mat4 view = camera.viewMatrix();
+    const glm::mat4 projection = camera.projectionMatrix();
+    const glm::ivec2 viewport(w, h);
+    const std::uint64_t sceneRevision = sceneRevision_;
+    Impl& impl = *impl_;
+    MeshRenderer& meshes = meshes_;
+
+    RenderGraph graph(*impl.cache);
+    Handle<Texture> output = graph.importResource(
+        "output",
+        Texture(size(TextureFormat::RGBA8),
+                std::make_shared<GlTexture>(size(TextureFormat::RGBA8), target.framebuffer)),
+        ImportOptions{.target = true, .revision = 0});
+
+    // 1. Geometry: the G-buffer.
+    struct Geometry {
+        Handle<Texture> linearDepth;
+        Handle<Texture> normal;
+        Handle<Texture> objectId;
+        Handle<Texture> depth;
+    };
+    const Geometry& geometry = graph.addPass<Geometry>(
+        "geometry",
+        [&](RenderGraph::Builder& b, Geometry& d) {
+            b.dependsOn("view", view);
+            b.dependsOn("projection", projection);
+            b.dependsOn("viewport", viewport);
+            b.dependsOn("scene", sceneRevision);
+            d.linearDepth =
+                b.write(b.createPersistent<Texture>("linear-depth", size(TextureFormat::R32F)));
+            d.normal = b.write(b.createPersistent<Texture>("normal", size(TextureFormat::RGBA16F)));
+            d.objectId =
+                b.write(b.createPersistent<Texture>("object-id", size(TextureFormat::R32UI)));
+            d.depth = b.write(b.createPersistent<Texture>("depth", size(TextureFormat::Depth32F)));
+        },
+        [&impl, &meshes, camera, w, h](const RenderGraph::Resources& r, const Geometry& d) {
+            auto& g = impl.f();
+            g.glBindFramebuffer(GL_FRAMEBUFFER, impl.geometryFbo);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                     glTex(r.get(d.linearDepth)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
+                                     glTex(r.get(d.normal)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D,
+                                     glTex(r.get(d.objectId)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                     glTex(r.get(d.depth)).texture(), 0);
+            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
+                                      GL_COLOR_ATTACHMENT2};
+            g.glDrawBuffers(3, buffers);
+            if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+                throw RenderError("the G-buffer framebuffer is incomplete");
+            }
+            g.glViewport(0, 0, w, h);
+            g.glDepthMask(GL_TRUE);
+            const float far[4] = {std::numeric_limits<float>::infinity(), 0.0F, 0.0F, 0.0F};
+            const float zero[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+            const GLuint noObject[4] = {0U, 0U, 0U, 0U};
+            const float one = 1.0F;
+            g.glClearBufferfv(GL_COLOR, 0, far);
+            g.glClearBufferfv(GL_COLOR, 1, zero);
+            g.glClearBufferuiv(GL_COLOR, 2, noObject);
+            g.glClearBufferfv(GL_DEPTH, 0, &one);
+            meshes.drawGBuffer(camera);
+            checkGlError(g, "geometry pass");
+        });
+
+    // 2. Vessel shading: colour + parameter, depth-tested against the G-buffer.
+    struct VesselShading {
+        Handle<Texture> depth;
+        Handle<Texture> color;
+        Handle<Texture> parameter;
+    };
+    const VesselShading& vessels = graph.addPass<VesselShading>(
+        "vessel-shading",
+        [&](RenderGraph::Builder& b, VesselShading& d) {
+            d.depth = b.read(geometry.depth);
+            d.color = b.write(b.create<Texture>("vessel-color", size(TextureFormat::RGBA8)));
+            d.parameter = b.write(b.create<Texture>("parameter", size(TextureFormat::R32F)));
+        },
+        [&impl, &meshes, camera, w, h](const RenderGraph::Resources& r, const VesselShading& d) {
+            auto& g = impl.f();
+            g.glBindFramebuffer(GL_FRAMEBUFFER, impl.shadingFbo);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                     glTex(r.get(d.color)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
+                                     glTex(r.get(d.parameter)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                     glTex(r.get(d.depth)).texture(), 0);
+            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            g.glDrawBuffers(2, buffers);
+            if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+                throw RenderError("the vessel shading framebuffer is incomplete");
+            }
+            g.glViewport(0, 0, w, h);
+            const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+            const float noData[4] = {std::numeric_limits<float>::quiet_NaN(), 0.0F, 0.0F, 0.0F};
+            g.glClearBufferfv(GL_COLOR, 0, clear);
+            g.glClearBufferfv(GL_COLOR, 1, noData);
+            meshes.draw(camera, MeshRenderer::DepthMode::TestOnly);
+            checkGlError(g, "vessel shading pass");
+        });
+
+    // 3. VSS solve.
+    struct Solve {
+        Handle<Texture> depth;
+        Handle<SolvedFrameRef> solved;
+        Handle<Texture> height;
+    };
+    const bool async = mode_ == SolveMode::Asynchronous && impl.worker != nullptr;
+    Handle<SolvedFrameRef> solvedImport;
+    if (async) {
+        auto [latest, revision] = impl.worker->latest();
+        solvedImport = graph.importResource("vss-result", SolvedFrameRef{std::move(latest)},
+                                            ImportOptions{.target = false, .revision = revision});
+    }
+    const vss::SolverOptions solverOptions = vssSettings.solver;
+    const SolverKey key = solverKey(solverOptions);
+    Hasher requestHash;
+    requestHash.value(view);
+    requestHash.value(projection);
+    requestHash.value(viewport);
+    requestHash.value(sceneRevision);
+    requestHash.value(key);
+    const std::uint64_t request = requestHash.result();
+    VssFrameStatus& status = impl.solveStatus;
+    const Solve& solve = graph.addPass<Solve>(
+        "vss-solve",
+        [&](RenderGraph::Builder& b, Solve& d) {
+            b.dependsOn("solver", key);
+            d.depth = b.read(geometry.linearDepth);
+            if (async) {
+                d.solved = b.read(solvedImport);
+            }
+            d.height =
+                b.write(b.createPersistent<Texture>("vss-height", size(TextureFormat::R32F)));
+        },
+        [&impl, &status, async, request, solverOptions](const RenderGraph::Resources& r,
+                                                        const Solve& d) {
+            status = VssFrameStatus{};
+            const GlTexture& height = glTex(r.get(d.height));
+            const GlTexture& depthTexture = glTex(r.get(d.depth));
+            if (!async) {
+                impl.lastDepth = impl.readDepth(depthTexture);
+                const SolvedFrame frame = solveFrame(request, impl.lastDepth, solverOptions, {});
+                impl.uploadHeight(height, &frame);
+                status.solveMilliseconds = frame.milliseconds;
+                status.current = true;
+                return;
+            }
+            const auto& latest = r.get(d.solved).frame;
+            if (latest && latest->key == request) {
+                impl.uploadHeight(height, latest.get());
+                status.solveMilliseconds = latest->milliseconds;
+                status.current = true;
+                return;
+            }
+            if (!impl.worker->requested(request)) {
+                impl.lastDepth = impl.readDepth(depthTexture);
+                impl.worker->submit(SolveWorker::Job{request, impl.lastDepth, solverOptions});
+            }
+            status.pending = true;
+            impl.uploadHeight(height, latest.get());  // the previous VSS, or none
+            status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
+        });
+
+    // 4. VSS shading.
+    struct VssShading {
+        Handle<Texture> height;
+        Handle<Texture> color;
+    };
+    const float pixelScale =
+        2.0F * std::tan(glm::radians(camera.fieldOfView()) * 0.5F) / static_cast<float>(h);
+    const VssShading& vssShading = graph.addPass<VssShading>(
+        "vss-shading",
+        [&](RenderGraph::Builder& b, VssShading& d) {
+            d.height = b.read(solve.height);
+            d.color = b.write(b.create<Texture>("vss-color", size(TextureFormat::RGBA8)));
+        },
+        [&impl, vssSettings, pixelScale, w, h](const RenderGraph::Resources& r,
+                                               const VssShading& d) {
+            auto& g = impl.f();
+            impl.uploadScale(vssSettings.scale);
+            const GlTexture& out = glTex(r.get(d.color));
+            g.glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
+            g.glViewport(0, 0, w, h);
+            g.glDisable(GL_DEPTH_TEST);
+            g.glDisable(GL_BLEND);
+            const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+            g.glClearBufferfv(GL_COLOR, 0, clear);
+            if (!impl.shown) {
+                return;
+            }
+            const GLuint program = impl.vssProgram;
+            const auto loc = [&](const char* name) {
+                return g.glGetUniformLocation(program, name);
+            };
+            const Lighting& light = sceneLighting();
+            g.glUseProgram(program);
+            g.glActiveTexture(GL_TEXTURE0);
+            g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.height)).texture());
+            g.glActiveTexture(GL_TEXTURE1);
+            g.glBindTexture(GL_TEXTURE_1D, impl.scaleLut);
+            g.glUniform1i(loc("uHeight"), 0);
+            g.glUniform1i(loc("uScale"), 1);
+            g.glUniform1f(loc("uScaleSize"), static_cast<float>(kScaleLutSize));
+            g.glUniform1f(loc("uDmin"), static_cast<float>(impl.dmin));
+            g.glUniform1f(loc("uDmax"), static_cast<float>(impl.dmax));
+            g.glUniform1f(loc("uPixelScale"), pixelScale);
+            g.glUniform1i(loc("uIsoLines"), std::max(vssSettings.isoLines, 0));
+            g.glUniform1f(loc("uIsoWidth"), std::max(vssSettings.isoLineWidth, 0.0F));
+            g.glUniform1f(loc("uIsoStrength"), vssSettings.isoLineStrength);
+            g.glUniform1f(loc("uLighting"), vssSettings.lighting);
+            g.glUniform1f(loc("uOpacity"), vssSettings.opacity);
+            g.glUniform3f(loc("uLightDirection"), light.direction.x, light.direction.y,
+                          light.direction.z);
+            g.glUniform1f(loc("uAmbient"), light.ambient);
+            g.glUniform1f(loc("uDiffuse"), light.diffuse);
+            g.glUniform1f(loc("uSpecular"), light.specular);
+            g.glUniform1f(loc("uShininess"), light.shininess);
+            g.glBindVertexArray(impl.emptyVao);
+            g.glDrawArrays(GL_TRIANGLES, 0, 3);
+            g.glBindVertexArray(0);
+            g.glBindTexture(GL_TEXTURE_1D, 0);
+            g.glActiveTexture(GL_TEXTURE0);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glUseProgram(0);
+            checkGlError(g, "VSS shading pass");
+        });
+
+    // 5. Composite into the target.
+    struct Composite {
+        Handle<Texture> vessels;
+        Handle<Texture> vss;
+        Handle<Texture> output;
+    };
+    const bool useVss = vssSettings.enabled;
+    const glm::vec3 background = settings.background;
+    graph.addPass<Composite>(
+        "composite",
+        [&](RenderGraph::Builder& b, Composite& d) {
+            d.vessels = b.read(vessels.color);
+            if (useVss) {
+                d.vss = b.read(vssShading.color);
+            }
+            d.output = b.write(output);
+        },
+        [&impl, useVss, background, w, h](const RenderGraph::Resources& r, const Composite& d) {
+            auto& g = impl.f();
+            const GlTexture& out = glTex(r.get(d.output));
+            g.glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
+            g.glViewport(0, 0, w, h);
+            g.glDisable(GL_DEPTH_TEST);
+            g.glDisable(GL_BLEND);
+            const GLuint program = impl.compositeProgram;
+            const auto loc = [&](const char* name) {
+                return g.glGetUniformLocation(program, name);
+            };
+            g.glUseProgram(program);
+            g.glActiveTexture(GL_TEXTURE0);
+            g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.vessels)).texture());
+            g.glActiveTexture(GL_TEXTURE1);
+            g.glBindTexture(GL_TEXTURE_2D, useVss ? glTex(r.get(d.vss)).texture() : 0U);
+            g.glUniform1i(loc("uVessels"), 0);
+            g.glUniform1i(loc("uVss"), 1);
+            g.glUniform1i(loc("uUseVss"), useVss ? 1 : 0);
+            g.glUniform3f(loc("uBackground"), background.r, background.g, background.b);
+            g.glBindVertexArray(impl.emptyVao);
+            g.glDrawArrays(GL_TRIANGLES, 0, 3);
+            g.glBindVertexArray(0);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glActiveTexture(GL_TEXTURE0);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glUseProgram(0);
+            g.glEnable(GL_DEPTH_TEST);
+            checkGlError(g, "composite pass");
+        });
+
+    graph.compile();
+    graph.execute(impl.observer.get());
+    passes_ = graph.passes();
+    graphText_ = graph.toText();
+    gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+    gl.glViewport(0, 0, w, h);
+
+    if (!vssSettings.enabled) {
+        status_ = VssFrameStatus{};
+        return;
+    }
+    // A cached solve pass keeps what it showed last.
+    status_ = impl.solveStatus;
+    status_.shown = impl.shown;
+    status_.dmin = impl.dmin;
+    status_.dmax = impl.dmax;
+}
+
+}  // namespace vv::render
