@@ -10,19 +10,19 @@ namespace vv::cli {
 /// Exit codes of vesselview-cli; scripts rely on them.
 enum ExitCode : int {
     kOk = 0,
-    kInternalError = 1,   ///< a bug or an unexpected failure
-    kUsage = 2,           ///< bad command line
-    kInvalidInput = 3,    ///< input missing, unreadable or invalid
-    kCannotWrite = 4,     ///< output could not be written
+    kInternalError = 1,  ///< a bug or an unexpected failure
+    kUsage = 2,          ///< bad command line
+    kInvalidInput = 3,   ///< input missing, unreadable or invalid
+    kCannotWrite = 4,    ///< output could not be written
 };
 
 /// Thrown by commands for a bad command line; main() maps it to kUsage.
 class UsageError : public std::exception {
-public:
+  public:
     explicit UsageError(std::string message) : message_(std::move(message)) {}
     [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
 
-private:
+  private:
     std::string message_;
 };
 
@@ -41,11 +41,11 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
 
 /// Thrown when an output file cannot be written; maps to kCannotWrite.
 class OutputError : public std::exception {
-public:
+  public:
     explicit OutputError(std::string message) : message_(std::move(message)) {}
     [[nodiscard]] const char* what() const noexcept override { return message_.c_str(); }
 
-private:
+  private:
     std::string message_;
 };
 

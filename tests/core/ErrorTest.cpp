@@ -6,7 +6,8 @@
 namespace {
 
 TEST(Error, WhatNamesFileAndProblem) {
-    const vv::FormatError e(std::filesystem::path("/data/tree.stl"), "truncated after 12 triangles");
+    const vv::FormatError e(std::filesystem::path("/data/tree.stl"),
+                            "truncated after 12 triangles");
     EXPECT_STREQ(e.what(), "/data/tree.stl: truncated after 12 triangles");
     EXPECT_EQ(e.file(), std::filesystem::path("/data/tree.stl"));
     EXPECT_EQ(e.problem(), "truncated after 12 triangles");
@@ -21,10 +22,14 @@ TEST(Error, WithoutFileIsJustTheProblem) {
 TEST(Error, HierarchyCatchesAtRoot) {
     auto thrower = [](int kind) {
         switch (kind) {
-            case 0: throw vv::IoError(std::filesystem::path("a"), "x");
-            case 1: throw vv::FormatError(std::filesystem::path("b"), "y");
-            case 2: throw vv::CancelledError();
-            default: throw vv::RenderError("z");
+            case 0:
+                throw vv::IoError(std::filesystem::path("a"), "x");
+            case 1:
+                throw vv::FormatError(std::filesystem::path("b"), "y");
+            case 2:
+                throw vv::CancelledError();
+            default:
+                throw vv::RenderError("z");
         }
     };
     for (int k = 0; k < 4; ++k) {

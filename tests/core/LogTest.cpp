@@ -15,7 +15,7 @@ void captureSink(vv::log::Level, std::string_view category, std::string_view mes
 }
 
 class LogTest : public ::testing::Test {
-protected:
+  protected:
     void SetUp() override {
         gSeen.clear();
         vv::log::setSink(&captureSink);

@@ -43,7 +43,8 @@ TEST(Parallel, StopRequestedThrowsCancelled) {
     std::stop_source stop;
     stop.request_stop();
     int calls = 0;
-    EXPECT_THROW(vv::parallelFor(0, 100, 1, [&](long, long) { ++calls; }, stop.get_token()),
+    EXPECT_THROW(vv::parallelFor(
+                     0, 100, 1, [&](long, long) { ++calls; }, stop.get_token()),
                  vv::CancelledError);
     EXPECT_EQ(calls, 0);
 }

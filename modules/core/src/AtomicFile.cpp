@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/core/AtomicFile.h"
 
+#include <unistd.h>
+
 #include <atomic>
 #include <string>
 #include <system_error>
-#include <unistd.h>
 
 #include "vv/core/Error.h"
 

@@ -16,8 +16,8 @@ void stderrSink(Level level, std::string_view category, std::string_view message
     static constexpr const char* kNames[] = {"debug", "info", "warning", "error", "off"};
     const std::scoped_lock lock(mutex);
     std::fprintf(stderr, "[%s] %.*s: %.*s\n", kNames[static_cast<int>(level)],
-                 static_cast<int>(category.size()), category.data(), static_cast<int>(message.size()),
-                 message.data());
+                 static_cast<int>(category.size()), category.data(),
+                 static_cast<int>(message.size()), message.data());
 }
 
 std::atomic<Sink> gSink{&stderrSink};
@@ -33,8 +33,8 @@ Level thresholdFor(std::string_view category) {
     std::size_t pos = 0;
     while (pos <= spec.size()) {
         const std::size_t comma = spec.find(',', pos);
-        const std::string_view item =
-            spec.substr(pos, comma == std::string_view::npos ? std::string_view::npos : comma - pos);
+        const std::string_view item = spec.substr(
+            pos, comma == std::string_view::npos ? std::string_view::npos : comma - pos);
         const std::size_t eq = item.find('=');
         if (eq == std::string_view::npos) {
             if (!item.empty()) {
@@ -54,16 +54,24 @@ Level thresholdFor(std::string_view category) {
 }  // namespace
 
 Level parseLevel(std::string_view name) noexcept {
-    if (name == "debug") return Level::Debug;
-    if (name == "warning") return Level::Warning;
-    if (name == "error") return Level::Error;
-    if (name == "off") return Level::Off;
+    if (name == "debug")
+        return Level::Debug;
+    if (name == "warning")
+        return Level::Warning;
+    if (name == "error")
+        return Level::Error;
+    if (name == "off")
+        return Level::Off;
     return Level::Info;
 }
 
-bool Category::enabled(Level level) const { return level >= thresholdFor(name_); }
+bool Category::enabled(Level level) const {
+    return level >= thresholdFor(name_);
+}
 
-void setSink(Sink sink) noexcept { gSink = sink != nullptr ? sink : &stderrSink; }
+void setSink(Sink sink) noexcept {
+    gSink = sink != nullptr ? sink : &stderrSink;
+}
 
 void write(const Category& category, Level level, std::string_view message) {
     if (level == Level::Off || !category.enabled(level)) {

@@ -88,8 +88,8 @@ void parallelFor(long begin, long end, long grain, const std::function<void(long
     }
 }
 
-void parallelForTiles(int width, int height, int tileSize, const std::function<void(const Tile&)>& body,
-                      const std::stop_token& stop) {
+void parallelForTiles(int width, int height, int tileSize,
+                      const std::function<void(const Tile&)>& body, const std::stop_token& stop) {
     if (width <= 0 || height <= 0) {
         return;
     }

@@ -10,7 +10,7 @@ namespace vv {
 /// Root of every exception VesselView throws on purpose. `what()` always names
 /// the file (when there is one) and the problem: "<file>: <problem>".
 class Error : public std::runtime_error {
-public:
+  public:
     /// An error about `file` (may be empty when no file is involved).
     Error(const std::filesystem::path& file, const std::string& problem);
     explicit Error(const std::string& problem);
@@ -20,7 +20,7 @@ public:
     /// The problem alone, without the file name.
     [[nodiscard]] const std::string& problem() const noexcept { return problem_; }
 
-private:
+  private:
     std::filesystem::path file_;
     std::string problem_;
 };
@@ -43,7 +43,7 @@ class InvalidArgumentError : public Error {
 
 /// Long work was cancelled through its stop token.
 class CancelledError : public Error {
-public:
+  public:
     CancelledError() : Error("cancelled") {}
 };
 

@@ -14,7 +14,7 @@ namespace vv {
 /// Views are cheap to copy; they never outlive the storage they point into.
 template <typename T>
 class ImageView {
-public:
+  public:
     ImageView() = default;
     ImageView(T* data, int width, int height, std::ptrdiff_t stride)
         : data_(data), width_(width), height_(height), stride_(stride) {
@@ -50,7 +50,7 @@ public:
         return ImageView<const T>(data_, width_, height_, stride_);
     }
 
-private:
+  private:
     T* data_ = nullptr;
     int width_ = 0;
     int height_ = 0;
@@ -61,7 +61,7 @@ private:
 /// unless a larger stride is asked for (e.g. for alignment).
 template <typename T>
 class Image {
-public:
+  public:
     Image() = default;
     /// Throws InvalidArgumentError for negative sizes or stride < width.
     Image(int width, int height, T fill = T{}, std::ptrdiff_t stride = -1)
@@ -97,7 +97,7 @@ public:
     /// Sets every pixel (padding included) to `value`.
     void fill(const T& value) { std::fill(pixels_.begin(), pixels_.end(), value); }
 
-private:
+  private:
     int width_ = 0;
     int height_ = 0;
     std::ptrdiff_t stride_ = 0;

@@ -15,8 +15,7 @@ namespace vv {
 /// included). Returns when every chunk is done. The first exception thrown by
 /// a body is rethrown here after all threads have stopped. If `stop` is
 /// requested, chunks not yet started are skipped and CancelledError is thrown.
-void parallelFor(long begin, long end, long grain,
-                 const std::function<void(long, long)>& body,
+void parallelFor(long begin, long end, long grain, const std::function<void(long, long)>& body,
                  const std::stop_token& stop = {});
 
 /// A tile of an image: [x0, x1) × [y0, y1).

@@ -11,7 +11,7 @@ namespace vv {
 /// should stop. Both parts are optional; a default Progress reports nowhere and
 /// never stops.
 class Progress {
-public:
+  public:
     using Callback = std::function<void(double fraction, std::string_view stage)>;
 
     Progress() = default;
@@ -31,7 +31,7 @@ public:
     /// A Progress for the sub-range [begin, end) of this one's fraction.
     [[nodiscard]] Progress sub(double begin, double end) const;
 
-private:
+  private:
     Callback callback_;
     std::stop_token stop_;
 };

@@ -3,11 +3,10 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <optional>
 #include <string>
 #include <vector>
-
-#include <glm/glm.hpp>
 
 #include "vv/core/Math.h"
 
@@ -16,12 +15,12 @@ namespace vv::io {
 /// A per-vertex (or per-triangle) data array such as wall shear stress.
 /// Non-finite values are kept as NaN and counted: they mean "no data here".
 struct DataArray {
-    std::string name;          ///< e.g. "wss"
-    std::string unit;          ///< e.g. "Pa"; empty when unknown
-    int components = 1;        ///< 1 = scalar, 3 = vector, ...
-    std::vector<float> values; ///< tuple-major: values[i * components + c]
-    bool integer = false;      ///< true for id / label arrays (segment_id, generation)
-    bool fromCells = false;    ///< converted from a cell array to a point array
+    std::string name;           ///< e.g. "wss"
+    std::string unit;           ///< e.g. "Pa"; empty when unknown
+    int components = 1;         ///< 1 = scalar, 3 = vector, ...
+    std::vector<float> values;  ///< tuple-major: values[i * components + c]
+    bool integer = false;       ///< true for id / label arrays (segment_id, generation)
+    bool fromCells = false;     ///< converted from a cell array to a point array
 
     [[nodiscard]] std::size_t tupleCount() const noexcept {
         return components > 0 ? values.size() / static_cast<std::size_t>(components) : 0;
@@ -36,13 +35,13 @@ struct DataArray {
 /// A triangle surface with per-vertex normals and data arrays, in scene units
 /// (millimetres unless the loader was told otherwise).
 struct Mesh {
-    std::string name;                   ///< shown in the UI; file stem by default
-    std::filesystem::path source;       ///< the file it came from; empty if generated
+    std::string name;              ///< shown in the UI; file stem by default
+    std::filesystem::path source;  ///< the file it came from; empty if generated
     std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;     ///< one per position, unit length
-    std::vector<std::uint32_t> indices; ///< three per triangle
-    std::vector<DataArray> pointArrays; ///< tupleCount() == positions.size()
-    std::vector<DataArray> cellArrays;  ///< tupleCount() == triangleCount()
+    std::vector<glm::vec3> normals;      ///< one per position, unit length
+    std::vector<std::uint32_t> indices;  ///< three per triangle
+    std::vector<DataArray> pointArrays;  ///< tupleCount() == positions.size()
+    std::vector<DataArray> cellArrays;   ///< tupleCount() == triangleCount()
 
     [[nodiscard]] std::size_t vertexCount() const noexcept { return positions.size(); }
     [[nodiscard]] std::size_t triangleCount() const noexcept { return indices.size() / 3; }
