@@ -1,15 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The solver factory and the three direct solvers: reference (double), brute
-// (float, vectorised) and step (brute over every k-th contour pixel).
+// (float, vectorised) and step (brute over every k-th contour pixel, in
+// border-following order).
 #include <algorithm>
 #include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <functional>
 #include <limits>
 #include <string>
 #include <vector>
 
+#include "ContourOrder.h"
 #include "FastMath.h"
 #include "FastSolver.h"
 #include "SolverCommon.h"
@@ -354,18 +357,27 @@ class BruteSolver final : public Solver {
             fillRegion(labels, region, out, std::numeric_limits<float>::quiet_NaN(), stop);
             return;
         }
-        // Every step_-th contour pixel of the region's list (row-major order),
-        // starting with the first.
+        // k = 1 (brute): every contour pixel, in list order. k > 1 (step):
+        // every k-th pixel of the contour in border-following order
+        // (orderAlongBorders: chains of 8-connected pixels walked along the
+        // silhouettes, as the paper's Suzuki contours are), starting with the
+        // first, so every silhouette is sampled evenly along its length. The
+        // list's own row-major order would interleave the walls of different
+        // vessels row by row and could drop a whole wall (docs/benchmarks/vss.md).
         SoaContour c;
         const std::size_t k = static_cast<std::size_t>(step_);
         const std::size_t n = (region.contour.size() + k - 1) / k;
+        std::vector<std::uint32_t> ordered;
+        if (k > 1) {
+            ordered = detail::orderAlongBorders(region.contour).index;
+        }
         c.x.reserve(n);
         c.y.reserve(n);
         c.z.reserve(n);
         float zlo = std::numeric_limits<float>::infinity();
         float zhi = -std::numeric_limits<float>::infinity();
         for (std::size_t i = 0; i < region.contour.size(); i += k) {
-            const ContourPoint& q = region.contour[i];
+            const ContourPoint& q = region.contour[k > 1 ? ordered[i] : i];
             c.x.push_back(static_cast<float>(q.x));
             c.y.push_back(static_cast<float>(q.y));
             c.z.push_back(q.z);

@@ -37,7 +37,7 @@ inline constexpr std::int32_t kVesselLabel = -1;
 enum class SolverKind {
     Reference,  ///< double precision, every contour pixel: the exact answer
     Brute,      ///< float, vectorisable, threaded, every contour pixel
-    Step,       ///< the paper's variant: every k-th contour pixel
+    Step,       ///< the paper's variant: every k-th contour pixel along the borders
     Fast,       ///< the product default: accelerated, meets a tolerance
 };
 
@@ -49,9 +49,17 @@ enum class SolverKind {
 //   x86-64 clone, chosen at load time), threaded over rows. Powers p = 2^k,
 //   k = -2..6, use squarings / square roots, any other p a polynomial
 //   log2 / exp2; measured within 1e-6 of Reference (max abs error of z').
-// - Step: Brute over every k-th pixel of VoidRegion::contour, in its list order
-//   (row-major, see findVoidRegions; the paper used border-following order),
-//   starting with the first. errorBound() is 0 for k = 1 (it is Brute), NaN else.
+// - Step: Brute over every k-th pixel of VoidRegion::contour taken in
+//   border-following order, starting with the first (so a region always keeps
+//   at least one): the contour is first ordered into chains of 8-connected
+//   pixels walked along the silhouettes (a chain starts at the first unvisited
+//   pixel in row-major order and steps to an unvisited 8-neighbour, preferring
+//   the one with the fewest unvisited neighbours, then 4-neighbours; stuck, it
+//   is extended backwards from its start, then the next chain starts), like the
+//   paper's Suzuki contours, so that each silhouette is sampled evenly along its
+//   length. (The list's own row-major order interleaves the walls of different
+//   vessels row by row, and every k-th of it can drop a whole wall.) k = 1 uses
+//   the list order and is Brute. errorBound() is 0 for k = 1, NaN else.
 // Pixels within the region's bounding box are visited row by row; a region
 // with little work (pixels x contour pixels) is solved on the calling thread.
 
