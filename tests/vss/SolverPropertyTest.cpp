@@ -744,9 +744,10 @@ TEST(SolverFactoryTest, ParsesNamesAndValidates) {
     EXPECT_TRUE(std::isnan(makeSolver(ok)->errorBound()));
 }
 
-TEST(StepSolverTest, UsesEveryKthContourPixelInListOrder) {
+TEST(StepSolverTest, UsesEveryKthContourPixelAlongAStraightBorder) {
     // A row of void pixels under a row of vessel pixels with depths 0, 1, 0, 1, ...
-    // Step 2 keeps contour pixels 0, 2, 4, ...: all depth 0.
+    // Along the border (here one straight run) step 2 keeps contour pixels
+    // 0, 2, 4, ...: all depth 0.
     const int w = 20;
     Image<std::uint8_t> mask(w, 2, 0);
     Image<float> depth(w, 2, 0.0F);
