@@ -1,8 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // vesselview-cli render FILE -o IMAGE.png [--size WxH] [--array NAME|none]
-//                            [--colormap NAME] [--background #rrggbb]
+//                            [--colormap NAME] [--bins N] [--background #rrggbb]
+//                            [--cue none|vessel-cd|vessel-pcd|fog|fresnel] [--legends on|off]
 //                            [--vss on|off] [--scale cd|pcd|dmd] [--p P] [--isolines N]
-//                            [--solver NAME] [--tolerance T] [--timings]
+//                            [--solver NAME] [--tolerance T] [--ao on|off] [--aa on|off]
+//                            [--timings]
+//                            [--view far|medium|close|anterior|posterior|left|right|
+//                                    superior|inferior]
+//                            [--depth-out DEPTH.pfm]
 // Needs OpenGL 4.1: a display (headless: xvfb-run -a with QT_QPA_PLATFORM=xcb).
 #include <QFile>
 #include <QGuiApplication>
@@ -16,6 +21,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/Cli.h"
@@ -24,9 +30,12 @@
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshLoader.h"
+#include "vv/render/DepthRasterizer.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/RenderGraph.h"
+#include "vv/render/ViewPresets.h"
+#include "vv/vss/Pfm.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::cli {
@@ -40,9 +49,17 @@ struct RenderArguments {
     int height = 1200;
     std::optional<std::string> array;  ///< nullopt: default (wss when present); "" = none
     colormaps::ColorMap colorMap = colormaps::ColorMap::Viridis;
+    int bins = 0;  ///< colour-map bins, 0 = continuous
+    render::VesselCueSettings cue;
+    bool legends = true;
     glm::vec3 background{0.13F, 0.14F, 0.16F};
     render::VssSettings vss;
+    bool ao = true;  ///< ambient occlusion over vessels + VSS
+    bool aa = true;  ///< FXAA
     bool timings = false;
+    /// --view: nullopt = the default orientation fitted to the bounding box.
+    std::optional<render::NamedView> view;
+    std::filesystem::path depthOutput;  ///< --depth-out; empty = none
 };
 
 double parseDouble(const std::string& text, const std::string& what) {
@@ -135,8 +152,35 @@ RenderArguments parse(const std::vector<std::string>& args) {
                 throw UsageError("unknown colour map '" + name + "' (known: " + known + ")");
             }
             parsed.colorMap = *map;
+        } else if (a == "--bins") {
+            const int n = parseInt(value(), "--bins");
+            if (n != 0 && (n < 2 || n > colormaps::kMaxBins)) {
+                throw UsageError("--bins must be 0 (continuous) or within 2.." +
+                                 std::to_string(colormaps::kMaxBins) + ", got " + args[i]);
+            }
+            parsed.bins = n;
+        } else if (a == "--cue") {
+            const std::string& v = value();
+            const auto cue = render::vesselCueFromName(v);
+            if (!cue) {
+                throw UsageError("unknown vessel cue '" + v +
+                                 "' (known: none, vessel-cd, vessel-pcd, fog, fresnel)");
+            }
+            parsed.cue.cue = *cue;
+        } else if (a == "--legends") {
+            const std::string& v = value();
+            if (v != "on" && v != "off") {
+                throw UsageError("--legends must be on or off, got '" + v + "'");
+            }
+            parsed.legends = v == "on";
         } else if (a == "--background") {
             parsed.background = parseColor(value());
+        } else if (a == "--ao" || a == "--aa") {
+            const std::string& v = value();
+            if (v != "on" && v != "off") {
+                throw UsageError(a + " must be on or off, got '" + v + "'");
+            }
+            (a == "--ao" ? parsed.ao : parsed.aa) = v == "on";
         } else if (a == "--vss") {
             const std::string& v = value();
             if (v != "on" && v != "off") {
@@ -175,6 +219,18 @@ RenderArguments parse(const std::vector<std::string>& args) {
                 throw UsageError("--tolerance must be > 0, got " + args[i]);
             }
             parsed.vss.solver.tolerance = t;
+        } else if (a == "--view") {
+            const std::string& name = value();
+            parsed.view = render::namedViewFromName(name);
+            if (!parsed.view) {
+                throw UsageError("unknown view '" + name + "' (known: " + render::namedViewNames() +
+                                 ")");
+            }
+        } else if (a == "--depth-out") {
+            parsed.depthOutput = value();
+            if (parsed.depthOutput.empty()) {
+                throw UsageError("--depth-out needs a file name");
+            }
         } else if (a == "--timings") {
             parsed.timings = true;
         } else if (!a.empty() && a[0] == '-' && a != "-") {
@@ -228,17 +284,19 @@ void ensureGuiApplication() {
 
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     const RenderArguments parsed = parse(args);
-    // Fail before the (possibly long) load and render when the output cannot be written.
-    {
-        std::error_code ec;
-        const std::filesystem::path folder =
-            parsed.output.has_parent_path() ? parsed.output.parent_path() : ".";
-        if (!std::filesystem::is_directory(folder, ec)) {
-            throw OutputError(parsed.output.string() + ": cannot write: folder '" +
-                              folder.string() + "' does not exist");
+    // Fail before the (possibly long) load and render when an output cannot be written.
+    for (const std::filesystem::path& output : {parsed.output, parsed.depthOutput}) {
+        if (output.empty()) {
+            continue;
         }
-        if (std::filesystem::is_directory(parsed.output, ec)) {
-            throw OutputError(parsed.output.string() + ": cannot write: it is a folder");
+        std::error_code ec;
+        const std::filesystem::path folder = output.has_parent_path() ? output.parent_path() : ".";
+        if (!std::filesystem::is_directory(folder, ec)) {
+            throw OutputError(output.string() + ": cannot write: folder '" + folder.string() +
+                              "' does not exist");
+        }
+        if (std::filesystem::is_directory(output, ec)) {
+            throw OutputError(output.string() + ": cannot write: it is a folder");
         }
     }
 
@@ -250,7 +308,12 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     options.height = parsed.height;
     options.background = parsed.background;
     options.style.colorMap = parsed.colorMap;
+    options.style.bins = parsed.bins;
+    options.cue = parsed.cue;
+    options.legends = parsed.legends;
     options.vss = parsed.vss;
+    options.ao.enabled = parsed.ao;
+    options.antialiasing = parsed.aa;
     options.style.array = parsed.array.value_or(render::defaultArrayName(scene));
     if (!options.style.array.empty() &&
         scene.meshes.front().pointArray(options.style.array) == nullptr) {
@@ -263,9 +326,37 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
                          ")");
     }
 
+    // The camera: a named view (presetCamera fits the vertices), or the
+    // default orientation fitted to the bounding box as OffscreenRenderer does.
+    render::Camera camera;
+    if (parsed.view) {
+        camera = render::presetCamera(scene, parsed.width, parsed.height, parsed.view->preset,
+                                      parsed.view->rotation);
+    } else {
+        camera.setViewport(parsed.width, parsed.height);
+        camera.fit(scene.bounds());
+    }
+    options.camera = camera;
+
     ensureGuiApplication();
     render::OffscreenRenderer renderer;
     const QImage image = renderer.render(scene, options);
+
+    if (!parsed.depthOutput.empty()) {
+        // The G-buffer's depth when the VSS solve read it for this frame,
+        // else the CPU rasteriser with the same camera (same convention:
+        // linear view depth in scene units, +Inf on background, row 0 on top).
+        Image<float> depth =
+            renderer.vssStatus().current ? renderer.lastLinearDepth() : Image<float>();
+        if (depth.width() != parsed.width || depth.height() != parsed.height) {
+            depth = render::rasterizeDepth(scene, camera);
+        }
+        try {
+            vss::writePfm(parsed.depthOutput, std::as_const(depth).view());
+        } catch (const IoError& e) {
+            throw OutputError(e.what());
+        }
+    }
 
     try {
         writeAtomically(parsed.output, [&](const std::filesystem::path& temporary) {
@@ -320,7 +411,13 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (options.vss.enabled) {
         summary << ", VSS " << colormaps::name(options.vss.scale) << " p=" << options.vss.solver.p;
     }
+    if (options.cue.cue != render::VesselCue::None) {
+        summary << ", cue " << render::name(options.cue.cue);
+    }
     summary << ")\n";
+    if (!parsed.depthOutput.empty()) {
+        summary << "wrote " << parsed.depthOutput.string() << " (linear depth, background +Inf)\n";
+    }
     return kOk;
 }
 

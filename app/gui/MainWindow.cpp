@@ -218,6 +218,16 @@ void MainWindow::buildToolBar() {
         depthScaleCombo_->findData(static_cast<int>(viewer_->vssSettings().scale)));
     bar->addWidget(depthScaleCombo_);
     connect(vssAction_, &QAction::toggled, this, &MainWindow::applyVss);
+    QAction* aoAction = bar->addAction(tr("AO"));
+    aoAction->setObjectName(QStringLiteral("aoToggle"));
+    aoAction->setCheckable(true);
+    aoAction->setChecked(viewer_->aoSettings().enabled);
+    aoAction->setToolTip(tr("Ambient occlusion: shade the surface next to the vessels"));
+    connect(aoAction, &QAction::toggled, this, [this](bool on) {
+        render::AoSettings ao = viewer_->aoSettings();
+        ao.enabled = on;
+        viewer_->setAoSettings(ao);
+    });
     connect(vssPowerBox_, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyVss);
     connect(depthScaleCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyVss);
 }

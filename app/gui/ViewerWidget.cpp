@@ -5,17 +5,56 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPaintEvent>
 #include <QPainter>
 #include <QTimer>
 #include <QWheelEvent>
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "vv/core/Error.h"
+#include "vv/render/LegendPainter.h"
 
 namespace vv::gui {
 
+/// Paints the legends (LegendPainter) over the viewer; lets the mouse through.
+class LegendOverlay : public QWidget {
+  public:
+    explicit LegendOverlay(QWidget* parent) : QWidget(parent) {
+        setAttribute(Qt::WA_TransparentForMouseEvents);
+        setAttribute(Qt::WA_NoSystemBackground);
+        setAttribute(Qt::WA_TranslucentBackground);
+        setFocusPolicy(Qt::NoFocus);
+    }
+
+    void setLegends(render::Legends legends) {
+        const bool wasEmpty = legends_.empty();
+        legends_ = std::move(legends);
+        if (!(wasEmpty && legends_.empty())) {
+            update();
+        }
+    }
+
+    [[nodiscard]] const render::Legends& legends() const noexcept { return legends_; }
+
+  protected:
+    void paintEvent(QPaintEvent* event) override {
+        Q_UNUSED(event);
+        if (legends_.empty()) {
+            return;
+        }
+        QPainter painter(this);
+        render::paintLegends(painter, QRectF(rect()), legends_);
+    }
+
+  private:
+    render::Legends legends_;
+};
+
 ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
+    legendOverlay_ = new LegendOverlay(this);
+    legendOverlay_->setGeometry(rect());
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
@@ -99,6 +138,21 @@ void ViewerWidget::setStyle(const render::MeshStyle& style) {
 
 void ViewerWidget::setVssSettings(const render::VssSettings& settings) {
     vss_ = settings;
+    update();
+}
+
+void ViewerWidget::setAoSettings(const render::AoSettings& settings) {
+    ao_ = settings;
+    update();
+}
+
+void ViewerWidget::setVesselCue(const render::VesselCueSettings& cue) {
+    cue_ = cue;
+    update();
+}
+
+void ViewerWidget::setLegendsVisible(bool visible) {
+    legendsVisible_ = visible;
     update();
 }
 
@@ -191,6 +245,11 @@ void ViewerWidget::resizeGL(int w, int h) {
     Q_UNUSED(w);
     Q_UNUSED(h);
     camera_.setViewport(width(), height());
+    legendOverlay_->setGeometry(rect());
+}
+
+const render::Legends& ViewerWidget::shownLegends() const noexcept {
+    return legendOverlay_->legends();
 }
 
 void ViewerWidget::paintMessage(const QString& text) {
@@ -234,8 +293,16 @@ void ViewerWidget::paintGL() {
         render::FrameSettings settings;
         settings.background = background_;
         settings.vss = vss_;
+        settings.ao = ao_;
+        settings.cue = cue_;
         renderer_.render(camera_, settings, target);
         shownRange_ = meshes.effectiveRange();
+        // The legends of the scales in use, over the GL frame.
+        legendOverlay_->setLegends(legendsVisible_
+                                       ? render::legendsFor(scene_.get(), style_, shownRange_,
+                                                            settings, renderer_.vssStatus(),
+                                                            renderer_.lastCueDepthRange())
+                                       : render::Legends{});
     } catch (const vv::Error& e) {
         fail(tr("Drawing failed: %1").arg(QString::fromStdString(e.what())));
         paintMessage(error_);

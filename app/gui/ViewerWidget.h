@@ -10,9 +10,12 @@
 #include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
+#include "vv/render/LegendPainter.h"
 #include "vv/render/MeshRenderer.h"
 
 namespace vv::gui {
+
+class LegendOverlay;
 
 /// The 3-D view: shows a Scene through the render graph (FrameRenderer:
 /// vessels with Blinn-Phong and an optional colour-mapped array, and the Void
@@ -57,6 +60,18 @@ class ViewerWidget : public QOpenGLWidget {
     /// The VSS: on/off, depth scale, p, solver, iso-lines, strengths.
     void setVssSettings(const render::VssSettings& settings);
     [[nodiscard]] const render::VssSettings& vssSettings() const noexcept { return vss_; }
+    /// Ambient occlusion over vessels + VSS (on by default).
+    void setAoSettings(const render::AoSettings& settings);
+    [[nodiscard]] const render::AoSettings& aoSettings() const noexcept { return ao_; }
+    /// The depth cue on the vessels themselves (none by default).
+    void setVesselCue(const render::VesselCueSettings& cue);
+    [[nodiscard]] const render::VesselCueSettings& vesselCue() const noexcept { return cue_; }
+    /// Legends of the scales in use (depth bottom-left, parameter bottom-right),
+    /// painted over the frame; on by default.
+    void setLegendsVisible(bool visible);
+    [[nodiscard]] bool legendsVisible() const noexcept { return legendsVisible_; }
+    /// The legends shown over the last frame (empty when none).
+    [[nodiscard]] const render::Legends& shownLegends() const noexcept;
     /// What the last frame showed of the VSS.
     [[nodiscard]] const render::VssFrameStatus& vssStatus() const noexcept {
         return renderer_.vssStatus();
@@ -120,6 +135,12 @@ class ViewerWidget : public QOpenGLWidget {
 
     render::FrameRenderer renderer_;
     render::VssSettings vss_;
+    render::AoSettings ao_;
+    render::VesselCueSettings cue_;
+    bool legendsVisible_ = true;
+    /// A transparent child over the GL frame that paints the legends (so that
+    /// grabFramebuffer() keeps returning the frame alone).
+    LegendOverlay* legendOverlay_ = nullptr;
     std::uint64_t sceneRevision_ = 0;
     render::Camera camera_;
     render::MeshStyle style_;

@@ -2,6 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Composite: the shaded vessels over the shaded VSS over the background.
 // Vessel pixels keep their own colour: the VSS never covers a vessel.
+// With ambient occlusion, the VSS and (half as much) the vessels darken by
+// the blurred occlusion times the strength.
 
 in vec2 vUv;
 
@@ -9,6 +11,9 @@ uniform sampler2D uVessels;  // RGBA8, alpha 1 on vessel pixels, 0 elsewhere
 uniform sampler2D uVss;      // RGBA8, alpha = VSS opacity (0 where there is no VSS)
 uniform bool uUseVss;
 uniform vec3 uBackground;    // sRGB
+uniform sampler2D uAo;       // R8: blurred occlusion in [0, 1]
+uniform bool uUseAo;
+uniform float uAoStrength;   // 0..1
 
 out vec4 fragColor;
 
@@ -16,10 +21,11 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 vessel = texelFetch(uVessels, p, 0);
     vec3 color = uBackground;
+    float occlusion = uUseAo ? clamp(uAoStrength, 0.0, 1.0) * texelFetch(uAo, p, 0).r : 0.0;
     if (uUseVss) {
         vec4 vss = texelFetch(uVss, p, 0);
-        color = mix(color, vss.rgb, vss.a);
+        color = mix(color, vss.rgb * (1.0 - occlusion), vss.a);
     }
-    color = mix(color, vessel.rgb, vessel.a);
+    color = mix(color, vessel.rgb * (1.0 - 0.5 * occlusion), vessel.a);
     fragColor = vec4(color, 1.0);
 }

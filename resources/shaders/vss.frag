@@ -4,11 +4,20 @@
 // normalised depth z' through a depth colour scale, N iso-lines of constant
 // on-screen width (anti-aliased with the screen-space gradient of z'), and
 // Blinn-Phong with the normals of the height field, lit like the vessels.
+// The slope is a weighted least-squares plane fit over the 5x5 VSS pixels
+// around (never across a vessel contour, where z' meets the vessel's depth
+// and the one-pixel gradient is steep and noisy: that gave bright specular
+// specks along contours and at branch tips); the specular term also fades
+// where few VSS pixels support the fit (next to contours), and the
+// highlight widens and dims where the normal turns fast (Toksvig: the mean of
+// the normals around has length < 1), which removes the small bright specks
+// on the tight bends of the VSS around branch tips.
 // Output: the shaded VSS with alpha 1 where a VSS exists, 0 elsewhere.
 
 in vec2 vUv;
 
 uniform sampler2D uHeight;   // R32F: z' on void pixels, z on vessel pixels, < -0.5 = no VSS
+uniform sampler2D uLinearDepth;  // R32F: vessel depth, +Inf off the vessels
 uniform sampler1D uScale;    // depth colour scale, near (0) to far (1), sRGB
 uniform float uScaleSize;    // texels in uScale
 uniform float uDmin;         // depth range of z in scene units
@@ -55,6 +64,73 @@ float derivative(float minus, float centre, float plus) {
     return 0.0;
 }
 
+bool isVessel(ivec2 p) {
+    return texelFetch(uLinearDepth, p, 0).r < 1e30;
+}
+
+// dz'/dx, dz'/dy per pixel from the VSS pixels in a 5x5 window (Gaussian
+// weights); `support` = the weight of those pixels over the whole window's.
+// Falls back to `fallback` when they do not determine a plane.
+vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, out float support) {
+    float sxx = 0.0;
+    float sxy = 0.0;
+    float syy = 0.0;
+    float sxh = 0.0;
+    float syh = 0.0;
+    float total = 0.0;
+    float used = 0.0;
+    for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+            if (dx == 0 && dy == 0) {
+                continue;
+            }
+            float x = float(dx);
+            float y = float(dy);
+            ivec2 q = p + ivec2(dx, dy);
+            if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) {
+                continue;  // the image border is no contour
+            }
+            float w = exp(-0.25 * (x * x + y * y));
+            total += w;
+            float hq = heightAt(q, size);
+            if (!hasVss(hq) || isVessel(q)) {
+                continue;
+            }
+            float dh = hq - z;
+            used += w;
+            sxx += w * x * x;
+            sxy += w * x * y;
+            syy += w * y * y;
+            sxh += w * x * dh;
+            syh += w * y * dh;
+        }
+    }
+    support = total > 0.0 ? used / total : 0.0;
+    float det = sxx * syy - sxy * sxy;
+    if (det < 0.05 * max(sxx * syy, 1e-12) || used <= 0.0) {
+        return fallback;
+    }
+    return vec2(syy * sxh - sxy * syh, sxx * syh - sxy * sxh) / det;
+}
+
+// The normal from a central difference at p, or none (w = 0) where p or a
+// neighbour is off the VSS or on a vessel; w = -1 off the image.
+vec4 sparseNormal(ivec2 p, ivec2 size, float scale) {
+    if (p.x < 1 || p.y < 1 || p.x >= size.x - 1 || p.y >= size.y - 1) {
+        return vec4(0.0, 0.0, 0.0, -1.0);
+    }
+    float c = heightAt(p, size);
+    float xm = heightAt(p - ivec2(1, 0), size);
+    float xp = heightAt(p + ivec2(1, 0), size);
+    float ym = heightAt(p - ivec2(0, 1), size);
+    float yp = heightAt(p + ivec2(0, 1), size);
+    if (!hasVss(c) || !hasVss(xm) || !hasVss(xp) || !hasVss(ym) || !hasVss(yp) || isVessel(p)) {
+        return vec4(0.0);
+    }
+    vec2 g = 0.5 * vec2(xp - xm, yp - ym);
+    return vec4(normalize(vec3(g * scale, 1.0)), 1.0);
+}
+
 void main() {
     ivec2 size = textureSize(uHeight, 0);
     ivec2 p = ivec2(gl_FragCoord.xy);
@@ -65,6 +141,10 @@ void main() {
     }
     vec2 grad = vec2(derivative(heightAt(p - ivec2(1, 0), size), z, heightAt(p + ivec2(1, 0), size)),
                      derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
+    float support = 1.0;
+    if (!isVessel(p)) {
+        grad = fittedGradient(p, size, z, grad, support);
+    }
 
     // Colour: texel centres, so z' = 0 hits the first entry and 1 the last.
     float t = clamp(z, 0.0, 1.0);
@@ -81,7 +161,27 @@ void main() {
     vec3 v = vec3(0.0, 0.0, 1.0);
     vec3 hv = normalize(l + v);
     float diffuse = max(dot(n, l), 0.0);
-    float specular = diffuse > 0.0 ? pow(max(dot(n, hv), 0.0), uShininess) : 0.0;
+    // Toksvig: normals 3 px around; missing ones count as turned away.
+    float shininess = uShininess;
+    float specularScale = smoothstep(0.55, 0.9, support);
+    if (!isVessel(p)) {
+        float scale = range / pixel;
+        vec3 sum = n;
+        float count = 1.0;
+        const ivec2 around[4] = ivec2[4](ivec2(3, 0), ivec2(-3, 0), ivec2(0, 3), ivec2(0, -3));
+        for (int i = 0; i < 4; ++i) {
+            vec4 m = sparseNormal(p + around[i], size, scale);
+            if (m.w >= 0.0) {
+                sum += m.xyz;
+                count += 1.0;
+            }
+        }
+        float len = clamp(length(sum) / count, 1e-3, 1.0);
+        shininess = len * uShininess / (len + uShininess * (1.0 - len));
+        specularScale *= (1.0 + shininess) / (1.0 + uShininess);
+    }
+    float specular = diffuse > 0.0 ? pow(max(dot(n, hv), 0.0), shininess) : 0.0;
+    specular *= specularScale;
     vec3 lit = base * (uAmbient + uDiffuse * diffuse) + vec3(uSpecular * specular);
     vec3 color = mix(base, min(lit, vec3(1.0)), clamp(uLighting, 0.0, 1.0));
 

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <set>
 #include <string>
+#include <tuple>
 
 #include "vv/colormaps/ColorMap.h"
 #include "vv/core/Error.h"
@@ -41,8 +43,8 @@ TEST(ColorMapTest, CividisEndpointsAndMiddleMatchPublishedValues) {
                0.5F / 255.0F);
 }
 
-TEST(ColorMapTest, LightnessIncreasesMonotonicallyAlongViridisAndCividis) {
-    for (const ColorMap map : vv::colormaps::allColorMaps()) {
+TEST(ColorMapTest, LightnessIncreasesMonotonicallyAlongViridisCividisAndInferno) {
+    for (const ColorMap map : {ColorMap::Viridis, ColorMap::Cividis, ColorMap::Inferno}) {
         float previous = -1.0F;
         for (int i = 0; i <= 1000; ++i) {
             const float l =
@@ -54,6 +56,85 @@ TEST(ColorMapTest, LightnessIncreasesMonotonicallyAlongViridisAndCividis) {
         EXPECT_LT(vv::colormaps::cieLightness(sample(map, 0.0F)), 25.0F) << name(map);
         EXPECT_GT(vv::colormaps::cieLightness(sample(map, 1.0F)), 85.0F) << name(map);
     }
+}
+
+TEST(ColorMapTest, InfernoEndpointsAndMiddleMatchPublishedValues) {
+    expectNear(sample(ColorMap::Inferno, 0.0F), {0.001462F, 0.000466F, 0.013866F}, 1e-6F);
+    expectNear(sample(ColorMap::Inferno, 1.0F), {0.988362F, 0.998364F, 0.644924F}, 1e-6F);
+    // Table entries 64, 128 and 200 (not all control points): within half an 8-bit step.
+    expectNear(sample(ColorMap::Inferno, 64.0F / 255.0F), {0.341500F, 0.062325F, 0.429425F},
+               0.5F / 255.0F);
+    expectNear(sample(ColorMap::Inferno, 128.0F / 255.0F), {0.735683F, 0.215906F, 0.330245F},
+               0.5F / 255.0F);
+    expectNear(sample(ColorMap::Inferno, 230.0F / 255.0F), {0.964394F, 0.843848F, 0.273391F},
+               0.5F / 255.0F);
+}
+
+TEST(ColorMapTest, BlueWhiteRedIsBlueToWhiteToRedAndSymmetricInLightness) {
+    using vv::colormaps::cieLightness;
+    const ColorMap map = ColorMap::BlueWhiteRed;
+    // Published RdBu end and centre colours.
+    expectNear(sample(map, 0.0F), {0x05 / 255.0F, 0x30 / 255.0F, 0x61 / 255.0F}, 1e-6F);
+    expectNear(sample(map, 1.0F), {0x67 / 255.0F, 0x00 / 255.0F, 0x1f / 255.0F}, 1e-6F);
+    const glm::vec3 centre = sample(map, 0.5F);
+    EXPECT_GT(cieLightness(centre), 95.0F);
+    EXPECT_LT(std::max({centre.r, centre.g, centre.b}) - std::min({centre.r, centre.g, centre.b}),
+              0.01F);  // neutral: white
+    float previous = cieLightness(sample(map, 0.0F));
+    for (int i = 1; i <= 500; ++i) {
+        const float t = static_cast<float>(i) / 1000.0F;
+        const glm::vec3 low = sample(map, 0.5F - t);
+        const glm::vec3 high = sample(map, 0.5F + t);
+        // Lightness mirrors around the centre and falls off towards both ends.
+        EXPECT_NEAR(cieLightness(low), cieLightness(high), 5.0F) << "t = 0.5 +- " << t;
+        // Blue below the centre, red above.
+        EXPECT_GT(low.b, low.r) << t;
+        EXPECT_GT(high.r, high.b) << t;
+        const float l = cieLightness(sample(map, t * 1.0F));
+        EXPECT_GT(l, previous) << t;  // lighter towards the centre
+        previous = l;
+    }
+    EXPECT_EQ(vv::colormaps::colorMapFromName("bwr"), ColorMap::BlueWhiteRed);
+    EXPECT_EQ(vv::colormaps::colorMapFromName("Diverging"), ColorMap::BlueWhiteRed);
+}
+
+TEST(ColorMapTest, BinsGiveExactlyNDistinctColoursCoveringTheMap) {
+    for (const ColorMap map : vv::colormaps::allColorMaps()) {
+        for (const int bins : {2, 3, 5, 8, 16}) {
+            std::set<std::tuple<int, int, int>> distinct;
+            for (int i = 0; i <= 4000; ++i) {
+                const auto c =
+                    vv::colormaps::toRgba8(sample(map, static_cast<float>(i) / 4000.0F, bins));
+                distinct.insert({c.r, c.g, c.b});
+            }
+            EXPECT_EQ(distinct.size(), static_cast<std::size_t>(bins)) << name(map) << " " << bins;
+            // First and last bins carry the map's end colours; a bin is constant inside.
+            expectNear(sample(map, 0.0F, bins), sample(map, 0.0F), 0.0F);
+            expectNear(sample(map, 1.0F, bins), sample(map, 1.0F), 0.0F);
+            expectNear(sample(map, 0.99F / static_cast<float>(bins), bins), sample(map, 0.0F),
+                       0.0F);
+            // The bin colours are exactly lut(map, bins).
+            const auto table = vv::colormaps::lut(map, bins);
+            for (int b = 0; b < bins; ++b) {
+                const float mid = (static_cast<float>(b) + 0.5F) / static_cast<float>(bins);
+                EXPECT_EQ(vv::colormaps::binIndex(mid, bins), b);
+                EXPECT_EQ(vv::colormaps::toRgba8(sample(map, mid, bins)),
+                          table[static_cast<std::size_t>(b)]);
+            }
+        }
+        // 0 bins = continuous; NaN stays no-data.
+        expectNear(sample(map, 0.3F, 0), sample(map, 0.3F), 0.0F);
+        expectNear(sample(map, std::numeric_limits<float>::quiet_NaN(), 4),
+                   vv::colormaps::noDataColor(map), 0.0F);
+    }
+    EXPECT_EQ(vv::colormaps::binIndex(1.0F, 4), 3);
+    EXPECT_EQ(vv::colormaps::binIndex(0.25F, 4), 1);
+    EXPECT_EQ(vv::colormaps::binIndex(-1.0F, 4), 0);
+    EXPECT_NO_THROW(vv::colormaps::validateBins(0));
+    EXPECT_NO_THROW(vv::colormaps::validateBins(256));
+    EXPECT_THROW(vv::colormaps::validateBins(1), vv::InvalidArgumentError);
+    EXPECT_THROW(vv::colormaps::validateBins(257), vv::InvalidArgumentError);
+    EXPECT_THROW(vv::colormaps::validateBins(-2), vv::InvalidArgumentError);
 }
 
 TEST(ColorMapTest, TIsClampedAndNanGivesNoDataColour) {

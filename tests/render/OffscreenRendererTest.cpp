@@ -173,6 +173,8 @@ TEST_F(OffscreenRendererTest, SphereIsDrawnCentredWithPlausibleCoverage) {
     options.height = 150;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;   // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     const QImage image = renderer->render(scene, options);
     keep(image, "sphere");
     ASSERT_EQ(image.size(), QSize(200, 150));
@@ -219,6 +221,8 @@ TEST_F(OffscreenRendererTest, ColourMappedPixelsAreLutColours) {
     options.height = 120;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;   // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     options.style.array = "wss";
     options.style.lighting = false;  // exact map colours
     const QImage image = renderer->render(scene, options);
@@ -278,6 +282,8 @@ TEST_F(OffscreenRendererTest, LitColourMappedRenderShowsManyHues) {
     options.height = 120;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     options.style.array = "wss";
     const QImage mapped = renderer->render(scene, options);
     options.style.array.clear();
@@ -309,6 +315,8 @@ TEST_F(OffscreenRendererTest, NanValuesShowTheNoDataColour) {
     options.height = 80;
     options.background = background_;
     options.vss.enabled = false;       // these tests check the vessels against the background
+    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     options.style.array = "pressure";  // all NaN
     options.style.lighting = false;
     const QImage image = renderer->render(scene, options);
@@ -339,6 +347,8 @@ TEST_F(OffscreenRendererTest, PartlyMissingValuesShowNoDataOnlyWhereMissing) {
     options.height = 120;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     options.style.array = "wss";
     options.style.lighting = false;
     const QImage image = renderer->render(scene, options);
@@ -383,6 +393,8 @@ TEST_F(OffscreenRendererTest, ExplicitRangeClampsValues) {
     options.height = 80;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     options.style.array = "wss";
     options.style.lighting = false;
     options.style.colorMap = vv::colormaps::ColorMap::Cividis;
@@ -422,6 +434,8 @@ TEST_F(OffscreenRendererTest, RendererIsReusableAcrossSizes) {
     OffscreenOptions options;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     for (const auto& size : {QSize(32, 32), QSize(400, 100), QSize(17, 301)}) {
         options.width = size.width();
         options.height = size.height();
@@ -442,6 +456,8 @@ TEST_F(OffscreenRendererTest, GivenCameraIsUsed) {
     options.height = 100;
     options.background = background_;
     options.vss.enabled = false;  // these tests check the vessels against the background
+    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
+    options.antialiasing = false;
     vv::render::Camera camera;
     camera.setViewport(100, 100);
     camera.fit(scene.bounds());

@@ -99,6 +99,10 @@ class VssRenderTest : public ::testing::Test {
         o.width = 240;
         o.height = 180;
         o.background = background_;
+        // Exact pixel checks below: no AO darkening, no FXAA blending
+        // (AoAaTest covers those).
+        o.ao.enabled = false;
+        o.antialiasing = false;
         return o;
     }
 

@@ -15,7 +15,7 @@ namespace {
 
 /// One control point: the map's sRGB colour at t = at / 255.
 struct ControlPoint {
-    int at;  ///< position in 1/255 steps, 0..255, strictly increasing within a table
+    float at;  ///< position in 1/255 steps, 0..255, strictly increasing within a table
     float r;
     float g;
     float b;
@@ -78,6 +78,58 @@ constexpr std::array kCividis{
     ControlPoint{255, 0.995737F, 0.909344F, 0.217772F},
 };
 
+// matplotlib's inferno (van der Walt & Smith 2015), chosen from its 256-entry
+// table like the two above.
+constexpr std::array kInferno{
+    ControlPoint{0.0F, 0.001462F, 0.000466F, 0.013866F},
+    ControlPoint{3.0F, 0.004547F, 0.003392F, 0.030909F},
+    ControlPoint{11.0F, 0.022447F, 0.017199F, 0.097327F},
+    ControlPoint{19.0F, 0.056449F, 0.034569F, 0.168414F},
+    ControlPoint{28.0F, 0.104551F, 0.047008F, 0.253430F},
+    ControlPoint{36.0F, 0.155850F, 0.044559F, 0.325338F},
+    ControlPoint{42.0F, 0.197297F, 0.038400F, 0.367535F},
+    ControlPoint{48.0F, 0.238273F, 0.036621F, 0.396353F},
+    ControlPoint{56.0F, 0.290763F, 0.045644F, 0.418637F},
+    ControlPoint{67.0F, 0.360284F, 0.069247F, 0.431497F},
+    ControlPoint{81.0F, 0.447428F, 0.101597F, 0.431080F},
+    ControlPoint{96.0F, 0.540920F, 0.134729F, 0.415123F},
+    ControlPoint{111.0F, 0.633998F, 0.168992F, 0.383704F},
+    ControlPoint{126.0F, 0.724103F, 0.209670F, 0.337424F},
+    ControlPoint{141.0F, 0.807082F, 0.262692F, 0.278898F},
+    ControlPoint{155.0F, 0.873741F, 0.326906F, 0.216886F},
+    ControlPoint{169.0F, 0.926470F, 0.405389F, 0.150292F},
+    ControlPoint{182.0F, 0.961293F, 0.488716F, 0.084289F},
+    ControlPoint{192.0F, 0.978422F, 0.557937F, 0.034931F},
+    ControlPoint{196.0F, 0.982881F, 0.586606F, 0.024661F},
+    ControlPoint{200.0F, 0.985952F, 0.615750F, 0.025592F},
+    ControlPoint{204.0F, 0.987622F, 0.645320F, 0.039886F},
+    ControlPoint{210.0F, 0.987464F, 0.690366F, 0.079990F},
+    ControlPoint{219.0F, 0.981173F, 0.759135F, 0.156863F},
+    ControlPoint{227.0F, 0.969783F, 0.820825F, 0.238686F},
+    ControlPoint{234.0F, 0.956834F, 0.874129F, 0.323974F},
+    ControlPoint{240.0F, 0.947594F, 0.917399F, 0.410665F},
+    ControlPoint{245.0F, 0.947937F, 0.949318F, 0.491426F},
+    ControlPoint{250.0F, 0.961812F, 0.975924F, 0.571925F},
+    ControlPoint{255.0F, 0.988362F, 0.998364F, 0.644924F},
+};
+
+// ColorBrewer's RdBu with 11 classes (Brewer & Harrower, colorbrewer2.org),
+// reversed so that low values are blue: its 11 published colours, evenly
+// spaced, centre #f7f7f7. Lightness falls off alike on both sides.
+constexpr std::array kBlueWhiteRed{
+    ControlPoint{0.0F, 0x05 / 255.0F, 0x30 / 255.0F, 0x61 / 255.0F},
+    ControlPoint{25.5F, 0x21 / 255.0F, 0x66 / 255.0F, 0xac / 255.0F},
+    ControlPoint{51.0F, 0x43 / 255.0F, 0x93 / 255.0F, 0xc3 / 255.0F},
+    ControlPoint{76.5F, 0x92 / 255.0F, 0xc5 / 255.0F, 0xde / 255.0F},
+    ControlPoint{102.0F, 0xd1 / 255.0F, 0xe5 / 255.0F, 0xf0 / 255.0F},
+    ControlPoint{127.5F, 0xf7 / 255.0F, 0xf7 / 255.0F, 0xf7 / 255.0F},
+    ControlPoint{153.0F, 0xfd / 255.0F, 0xdb / 255.0F, 0xc7 / 255.0F},
+    ControlPoint{178.5F, 0xf4 / 255.0F, 0xa5 / 255.0F, 0x82 / 255.0F},
+    ControlPoint{204.0F, 0xd6 / 255.0F, 0x60 / 255.0F, 0x4d / 255.0F},
+    ControlPoint{229.5F, 0xb2 / 255.0F, 0x18 / 255.0F, 0x2b / 255.0F},
+    ControlPoint{255.0F, 0x67 / 255.0F, 0x00 / 255.0F, 0x1f / 255.0F},
+};
+
 /// Everything the module knows about one map.
 struct Definition {
     ColorMap id;
@@ -85,16 +137,26 @@ struct Definition {
     std::string_view displayName;
     std::span<const ControlPoint> points;
     glm::vec3 noData;
+    std::array<std::string_view, 2> aliases{};  ///< other accepted names; empty = none
 };
 
 const glm::vec3 kLightGrey{0.80F, 0.80F, 0.80F};
+const glm::vec3 kMidGrey{0.50F, 0.50F, 0.50F};
 
 const std::array kDefinitions{
-    Definition{ColorMap::Viridis, "viridis", "Viridis", kViridis, kLightGrey},
-    Definition{ColorMap::Cividis, "cividis", "Cividis", kCividis, kLightGrey},
+    Definition{ColorMap::Viridis, "viridis", "Viridis", kViridis, kLightGrey, {}},
+    Definition{ColorMap::Cividis, "cividis", "Cividis", kCividis, kLightGrey, {}},
+    Definition{ColorMap::Inferno, "inferno", "Inferno", kInferno, kLightGrey, {}},
+    Definition{ColorMap::BlueWhiteRed,
+               "blue-white-red",
+               "Blue-white-red (diverging)",
+               kBlueWhiteRed,
+               kMidGrey,
+               {"bwr", "diverging"}},
 };
 
-constexpr std::array kAll{ColorMap::Viridis, ColorMap::Cividis};
+constexpr std::array kAll{ColorMap::Viridis, ColorMap::Cividis, ColorMap::Inferno,
+                          ColorMap::BlueWhiteRed};
 
 static_assert(kAll.size() == kDefinitions.size(), "every map needs a definition");
 
@@ -130,12 +192,15 @@ std::string_view displayName(ColorMap map) noexcept {
 }
 
 std::optional<ColorMap> colorMapFromName(std::string_view text) noexcept {
+    const auto matches = [&](std::string_view candidate) {
+        return !candidate.empty() && candidate.size() == text.size() &&
+               std::equal(candidate.begin(), candidate.end(), text.begin(), [](char a, char b) {
+                   return std::tolower(static_cast<unsigned char>(a)) ==
+                          std::tolower(static_cast<unsigned char>(b));
+               });
+    };
     for (const auto& d : kDefinitions) {
-        if (d.name.size() == text.size() &&
-            std::equal(d.name.begin(), d.name.end(), text.begin(), [](char a, char b) {
-                return std::tolower(static_cast<unsigned char>(a)) ==
-                       std::tolower(static_cast<unsigned char>(b));
-            })) {
+        if (matches(d.name) || matches(d.aliases[0]) || matches(d.aliases[1])) {
             return d.id;
         }
     }
@@ -163,6 +228,28 @@ glm::vec3 sample(ColorMap map, float t) noexcept {
     const float span = static_cast<float>(b.at - a.at);
     const float f = std::clamp((x - static_cast<float>(a.at)) / span, 0.0F, 1.0F);
     return glm::mix(rgb(a), rgb(b), f);
+}
+
+void validateBins(int bins) {
+    if (bins != 0 && (bins < 2 || bins > kMaxBins)) {
+        throw InvalidArgumentError("colour map bins must be 0 (continuous) or within 2.." +
+                                   std::to_string(kMaxBins) + ", got " + std::to_string(bins));
+    }
+}
+
+int binIndex(float t, int bins) noexcept {
+    if (bins < 2 || std::isnan(t)) {
+        return 0;
+    }
+    const float x = std::clamp(t, 0.0F, 1.0F) * static_cast<float>(bins);
+    return std::min(static_cast<int>(std::floor(x)), bins - 1);
+}
+
+glm::vec3 sample(ColorMap map, float t, int bins) noexcept {
+    if (bins < 2 || std::isnan(t)) {
+        return sample(map, t);
+    }
+    return sample(map, static_cast<float>(binIndex(t, bins)) / static_cast<float>(bins - 1));
 }
 
 std::vector<glm::u8vec4> lut(ColorMap map, int n) {

@@ -3,6 +3,7 @@
 
 #include <QOpenGLContext>
 #include <QOpenGLFunctions_4_1_Core>
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
@@ -237,6 +238,9 @@ struct FrameRenderer::Impl {
     std::unique_ptr<GlPassObserver> observer;
     GLuint vssProgram = 0;
     GLuint compositeProgram = 0;
+    GLuint ssaoProgram = 0;
+    GLuint aoBlurProgram = 0;
+    GLuint fxaaProgram = 0;
     GLuint emptyVao = 0;
     GLuint geometryFbo = 0;
     GLuint shadingFbo = 0;
@@ -252,6 +256,12 @@ struct FrameRenderer::Impl {
     bool shown = false;
     double dmin = 0.0;
     double dmax = 0.0;
+    /// The visible vessels' linear depth range ("depth-range" pass).
+    bool visibleRange = false;
+    double visibleDmin = 0.0;
+    double visibleDmax = 0.0;
+    /// The range the last vessel-shading pass normalised its cue with.
+    std::optional<std::pair<double, double>> cueRange;
 
     [[nodiscard]] QOpenGLFunctions_4_1_Core& f() const {
         if (gl == nullptr) {
@@ -353,6 +363,12 @@ void FrameRenderer::initialize() {
         buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/vss.frag", "VSS shading");
     impl_->compositeProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert",
                                            ":/vv/shaders/composite.frag", "composite");
+    impl_->ssaoProgram =
+        buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/ssao.frag", "SSAO");
+    impl_->aoBlurProgram =
+        buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/aoblur.frag", "AO blur");
+    impl_->fxaaProgram =
+        buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/fxaa.frag", "FXAA");
     gl.glGenVertexArrays(1, &impl_->emptyVao);
     gl.glGenFramebuffers(1, &impl_->geometryFbo);
     gl.glGenFramebuffers(1, &impl_->shadingFbo);
@@ -376,12 +392,18 @@ void FrameRenderer::release() noexcept {
     }
     g.glDeleteProgram(impl_->vssProgram);
     g.glDeleteProgram(impl_->compositeProgram);
+    g.glDeleteProgram(impl_->ssaoProgram);
+    g.glDeleteProgram(impl_->aoBlurProgram);
+    g.glDeleteProgram(impl_->fxaaProgram);
     g.glDeleteVertexArrays(1, &impl_->emptyVao);
     g.glDeleteFramebuffers(1, &impl_->geometryFbo);
     g.glDeleteFramebuffers(1, &impl_->shadingFbo);
     g.glDeleteTextures(1, &impl_->scaleLut);
     impl_->vssProgram = 0;
     impl_->compositeProgram = 0;
+    impl_->ssaoProgram = 0;
+    impl_->aoBlurProgram = 0;
+    impl_->fxaaProgram = 0;
     impl_->emptyVao = 0;
     impl_->geometryFbo = 0;
     impl_->shadingFbo = 0;
@@ -511,42 +533,6 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             checkGlError(g, "geometry pass");
         });
 
-    // 2. Vessel shading: colour + parameter, depth-tested against the G-buffer.
-    struct VesselShading {
-        Handle<Texture> depth;
-        Handle<Texture> color;
-        Handle<Texture> parameter;
-    };
-    const VesselShading& vessels = graph.addPass<VesselShading>(
-        "vessel-shading",
-        [&](RenderGraph::Builder& b, VesselShading& d) {
-            d.depth = b.read(geometry.depth);
-            d.color = b.write(b.create<Texture>("vessel-color", size(TextureFormat::RGBA8)));
-            d.parameter = b.write(b.create<Texture>("parameter", size(TextureFormat::R32F)));
-        },
-        [&impl, &meshes, camera, w, h](const RenderGraph::Resources& r, const VesselShading& d) {
-            auto& g = impl.f();
-            g.glBindFramebuffer(GL_FRAMEBUFFER, impl.shadingFbo);
-            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                                     glTex(r.get(d.color)).texture(), 0);
-            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
-                                     glTex(r.get(d.parameter)).texture(), 0);
-            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                     glTex(r.get(d.depth)).texture(), 0);
-            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-            g.glDrawBuffers(2, buffers);
-            if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-                throw RenderError("the vessel shading framebuffer is incomplete");
-            }
-            g.glViewport(0, 0, w, h);
-            const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
-            const float noData[4] = {std::numeric_limits<float>::quiet_NaN(), 0.0F, 0.0F, 0.0F};
-            g.glClearBufferfv(GL_COLOR, 0, clear);
-            g.glClearBufferfv(GL_COLOR, 1, noData);
-            meshes.draw(camera, MeshRenderer::DepthMode::TestOnly);
-            checkGlError(g, "vessel shading pass");
-        });
-
     // 3. VSS solve.
     struct Solve {
         Handle<Texture> depth;
@@ -610,9 +596,132 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
 
+    // 2. Vessel shading: colour + parameter, depth-tested against the G-buffer.
+    // Declared after the solve: a vessel cue normalises depth with the VSS's
+    // dmin / dmax when a VSS is shown, else with the visible vessels' range,
+    // which the "depth-range" pass reads back (cached while the view stays).
+    const VesselCueSettings cueSettings = settings.cue;
+    const bool cueUsesDepth = cueSettings.cue != VesselCue::None;
+    const bool cueUsesVss = cueUsesDepth && vssSettings.enabled;
+    struct DepthRange {
+        Handle<Texture> depth;
+        Handle<Texture> range;
+    };
+    Handle<Texture> visibleRange;
+    if (cueUsesDepth) {
+        visibleRange =
+            graph
+                .addPass<DepthRange>(
+                    "depth-range",
+                    [&](RenderGraph::Builder& b, DepthRange& d) {
+                        d.depth = b.read(geometry.linearDepth);
+                        d.range = b.write(b.createPersistent<Texture>(
+                            "depth-range", TextureDescriptor{1, 1, TextureFormat::RG32F, 1}));
+                    },
+                    [&impl](const RenderGraph::Resources& r, const DepthRange& d) {
+                        const Image<float> depth = impl.readDepth(glTex(r.get(d.depth)));
+                        float lo = std::numeric_limits<float>::infinity();
+                        float hi = -std::numeric_limits<float>::infinity();
+                        for (int y = 0; y < depth.height(); ++y) {
+                            const float* row = depth.row(y);
+                            for (int x = 0; x < depth.width(); ++x) {
+                                if (std::isfinite(row[x])) {
+                                    lo = std::min(lo, row[x]);
+                                    hi = std::max(hi, row[x]);
+                                }
+                            }
+                        }
+                        impl.visibleRange = lo <= hi;
+                        impl.visibleDmin = impl.visibleRange ? lo : 0.0;
+                        impl.visibleDmax = impl.visibleRange ? hi : 0.0;
+                        // Kept on the GPU too (dmin, dmax), for passes that want it there.
+                        auto& g = impl.f();
+                        const float texel[2] = {static_cast<float>(impl.visibleDmin),
+                                                static_cast<float>(impl.visibleDmax)};
+                        g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.range)).texture());
+                        g.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, 1, 1, GL_RG, GL_FLOAT, texel);
+                        g.glBindTexture(GL_TEXTURE_2D, 0);
+                        checkGlError(g, "depth range pass");
+                    })
+                .range;
+    }
+    struct CueKey {
+        std::int32_t cue = 0;
+        float fogStrength = 0.0F;
+        float fresnelExponent = 0.0F;
+        glm::vec3 background{0.0F};
+    };
+    CueKey cueKey;
+    cueKey.cue = static_cast<std::int32_t>(cueSettings.cue);
+    cueKey.fogStrength = cueSettings.fogStrength;
+    cueKey.fresnelExponent = cueSettings.fresnelExponent;
+    cueKey.background = settings.background;
+    struct VesselShading {
+        Handle<Texture> depth;
+        Handle<Texture> range;
+        Handle<Texture> height;
+        Handle<Texture> color;
+        Handle<Texture> parameter;
+    };
+    std::optional<std::pair<double, double>>& cueRange = impl.cueRange;
+    cueRange.reset();
+    const glm::vec3 fogColor = settings.background;
+    const VesselShading& vessels = graph.addPass<VesselShading>(
+        "vessel-shading",
+        [&](RenderGraph::Builder& b, VesselShading& d) {
+            b.dependsOn("cue", cueKey);
+            d.depth = b.read(geometry.depth);
+            if (cueUsesDepth) {
+                d.range = b.read(visibleRange);
+            }
+            if (cueUsesVss) {
+                d.height = b.read(solve.height);
+            }
+            d.color = b.write(b.create<Texture>("vessel-color", size(TextureFormat::RGBA8)));
+            d.parameter = b.write(b.create<Texture>("parameter", size(TextureFormat::R32F)));
+        },
+        [&impl, &meshes, &cueRange, camera, cueSettings, cueUsesDepth, cueUsesVss, fogColor, w, h](
+            const RenderGraph::Resources& r, const VesselShading& d) {
+            auto& g = impl.f();
+            VesselCueParameters cue;
+            cue.cue = cueSettings.cue;
+            cue.fogColor = fogColor;
+            cue.fogStrength = cueSettings.fogStrength;
+            cue.fresnelExponent = cueSettings.fresnelExponent;
+            if (cueUsesDepth) {
+                // The VSS's range when one is shown, else the visible range.
+                const bool fromVss = cueUsesVss && impl.shown;
+                const double lo = fromVss ? impl.dmin : impl.visibleDmin;
+                const double hi = fromVss ? impl.dmax : impl.visibleDmax;
+                cue.dmin = static_cast<float>(lo);
+                cue.dmax = static_cast<float>(hi);
+                cueRange = std::make_pair(lo, hi);
+            }
+            g.glBindFramebuffer(GL_FRAMEBUFFER, impl.shadingFbo);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                     glTex(r.get(d.color)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
+                                     glTex(r.get(d.parameter)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                     glTex(r.get(d.depth)).texture(), 0);
+            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            g.glDrawBuffers(2, buffers);
+            if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+                throw RenderError("the vessel shading framebuffer is incomplete");
+            }
+            g.glViewport(0, 0, w, h);
+            const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+            const float noData[4] = {std::numeric_limits<float>::quiet_NaN(), 0.0F, 0.0F, 0.0F};
+            g.glClearBufferfv(GL_COLOR, 0, clear);
+            g.glClearBufferfv(GL_COLOR, 1, noData);
+            meshes.draw(camera, MeshRenderer::DepthMode::TestOnly, cue);
+            checkGlError(g, "vessel shading pass");
+        });
+
     // 4. VSS shading.
     struct VssShading {
         Handle<Texture> height;
+        Handle<Texture> linearDepth;
         Handle<Texture> color;
     };
     const float pixelScale =
@@ -621,6 +730,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
         "vss-shading",
         [&](RenderGraph::Builder& b, VssShading& d) {
             d.height = b.read(solve.height);
+            d.linearDepth = b.read(geometry.linearDepth);
             d.color = b.write(b.create<Texture>("vss-color", size(TextureFormat::RGBA8)));
         },
         [&impl, vssSettings, pixelScale, w, h](const RenderGraph::Resources& r,
@@ -647,8 +757,11 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.height)).texture());
             g.glActiveTexture(GL_TEXTURE1);
             g.glBindTexture(GL_TEXTURE_1D, impl.scaleLut);
+            g.glActiveTexture(GL_TEXTURE2);
+            g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.linearDepth)).texture());
             g.glUniform1i(loc("uHeight"), 0);
             g.glUniform1i(loc("uScale"), 1);
+            g.glUniform1i(loc("uLinearDepth"), 2);
             g.glUniform1f(loc("uScaleSize"), static_cast<float>(kScaleLutSize));
             g.glUniform1f(loc("uDmin"), static_cast<float>(impl.dmin));
             g.glUniform1f(loc("uDmax"), static_cast<float>(impl.dmax));
@@ -667,6 +780,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glBindVertexArray(impl.emptyVao);
             g.glDrawArrays(GL_TRIANGLES, 0, 3);
             g.glBindVertexArray(0);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glActiveTexture(GL_TEXTURE1);
             g.glBindTexture(GL_TEXTURE_1D, 0);
             g.glActiveTexture(GL_TEXTURE0);
             g.glBindTexture(GL_TEXTURE_2D, 0);
@@ -674,24 +789,131 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             checkGlError(g, "VSS shading pass");
         });
 
-    // 5. Composite into the target.
+    const bool useVss = vssSettings.enabled;
+
+    // 6. Ambient occlusion over vessels + VSS, then a depth-aware blur. Both
+    // outputs persist, so a new colour scale or AO strength reuses them.
+    // Declared always; with AO off nothing reads them and the graph culls them.
+    const AoSettings aoSettings = settings.ao;
+    const bool useAo = aoSettings.enabled && aoSettings.strength > 0.0F;
+    struct Ssao {
+        Handle<Texture> linearDepth;
+        Handle<Texture> normal;
+        Handle<Texture> height;
+        Handle<Texture> raw;
+    };
+    struct AoBlur {
+        Handle<Texture> raw;
+        Handle<Texture> ao;
+    };
+    Handle<Texture> aoTexture;
+    {
+        const float aoRadius = std::max(aoSettings.radius, 1e-6F);
+        const Ssao& ssao = graph.addPass<Ssao>(
+            "ssao",
+            [&](RenderGraph::Builder& b, Ssao& d) {
+                b.dependsOn("radius", aoRadius);
+                b.dependsOn("pixel-scale", pixelScale);
+                d.linearDepth = b.read(geometry.linearDepth);
+                d.normal = b.read(geometry.normal);
+                if (useVss) {
+                    d.height = b.read(solve.height);
+                }
+                d.raw = b.write(b.createPersistent<Texture>("ao-raw", size(TextureFormat::RG32F)));
+            },
+            [&impl, useVss, aoRadius, pixelScale, w, h](const RenderGraph::Resources& r,
+                                                        const Ssao& d) {
+                auto& g = impl.f();
+                g.glBindFramebuffer(GL_FRAMEBUFFER, glTex(r.get(d.raw)).framebuffer());
+                g.glViewport(0, 0, w, h);
+                g.glDisable(GL_DEPTH_TEST);
+                g.glDisable(GL_BLEND);
+                const GLuint program = impl.ssaoProgram;
+                const auto loc = [&](const char* name) {
+                    return g.glGetUniformLocation(program, name);
+                };
+                const bool withVss = useVss && impl.shown;
+                g.glUseProgram(program);
+                g.glActiveTexture(GL_TEXTURE0);
+                g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.linearDepth)).texture());
+                g.glActiveTexture(GL_TEXTURE1);
+                g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.normal)).texture());
+                g.glActiveTexture(GL_TEXTURE2);
+                g.glBindTexture(GL_TEXTURE_2D, withVss ? glTex(r.get(d.height)).texture() : 0U);
+                g.glUniform1i(loc("uLinearDepth"), 0);
+                g.glUniform1i(loc("uNormal"), 1);
+                g.glUniform1i(loc("uHeight"), 2);
+                g.glUniform1i(loc("uUseVss"), withVss ? 1 : 0);
+                g.glUniform1f(loc("uDmin"), static_cast<float>(impl.dmin));
+                g.glUniform1f(loc("uDmax"), static_cast<float>(impl.dmax));
+                g.glUniform1f(loc("uPixelScale"), pixelScale);
+                g.glUniform1f(loc("uRadius"), aoRadius);
+                g.glUniform1i(loc("uSamples"), 12);
+                g.glBindVertexArray(impl.emptyVao);
+                g.glDrawArrays(GL_TRIANGLES, 0, 3);
+                g.glBindVertexArray(0);
+                g.glBindTexture(GL_TEXTURE_2D, 0);
+                g.glActiveTexture(GL_TEXTURE1);
+                g.glBindTexture(GL_TEXTURE_2D, 0);
+                g.glActiveTexture(GL_TEXTURE0);
+                g.glBindTexture(GL_TEXTURE_2D, 0);
+                g.glUseProgram(0);
+                checkGlError(g, "SSAO pass");
+            });
+        aoTexture =
+            graph
+                .addPass<AoBlur>(
+                    "ao-blur",
+                    [&](RenderGraph::Builder& b, AoBlur& d) {
+                        d.raw = b.read(ssao.raw);
+                        d.ao = b.write(b.createPersistent<Texture>("ao", size(TextureFormat::R8)));
+                    },
+                    [&impl, w, h](const RenderGraph::Resources& r, const AoBlur& d) {
+                        auto& g = impl.f();
+                        g.glBindFramebuffer(GL_FRAMEBUFFER, glTex(r.get(d.ao)).framebuffer());
+                        g.glViewport(0, 0, w, h);
+                        g.glDisable(GL_DEPTH_TEST);
+                        g.glDisable(GL_BLEND);
+                        const GLuint program = impl.aoBlurProgram;
+                        g.glUseProgram(program);
+                        g.glActiveTexture(GL_TEXTURE0);
+                        g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.raw)).texture());
+                        g.glUniform1i(g.glGetUniformLocation(program, "uAo"), 0);
+                        g.glBindVertexArray(impl.emptyVao);
+                        g.glDrawArrays(GL_TRIANGLES, 0, 3);
+                        g.glBindVertexArray(0);
+                        g.glBindTexture(GL_TEXTURE_2D, 0);
+                        g.glUseProgram(0);
+                        checkGlError(g, "AO blur pass");
+                    })
+                .ao;
+    }
+
+    // 5. Composite into the target, or into a texture for the FXAA pass.
     struct Composite {
         Handle<Texture> vessels;
         Handle<Texture> vss;
+        Handle<Texture> ao;
         Handle<Texture> output;
     };
-    const bool useVss = vssSettings.enabled;
+    const bool useAa = settings.antialiasing;
+    const float aoStrength = aoSettings.strength;
     const glm::vec3 background = settings.background;
-    graph.addPass<Composite>(
+    const Composite& composite = graph.addPass<Composite>(
         "composite",
         [&](RenderGraph::Builder& b, Composite& d) {
             d.vessels = b.read(vessels.color);
             if (useVss) {
                 d.vss = b.read(vssShading.color);
             }
-            d.output = b.write(output);
+            if (useAo) {
+                d.ao = b.read(aoTexture);
+            }
+            d.output = b.write(useAa ? b.create<Texture>("composited", size(TextureFormat::RGBA8))
+                                     : output);
         },
-        [&impl, useVss, background, w, h](const RenderGraph::Resources& r, const Composite& d) {
+        [&impl, useVss, useAo, aoStrength, background, w, h](const RenderGraph::Resources& r,
+                                                             const Composite& d) {
             auto& g = impl.f();
             const GlTexture& out = glTex(r.get(d.output));
             g.glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
@@ -710,10 +932,17 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glUniform1i(loc("uVessels"), 0);
             g.glUniform1i(loc("uVss"), 1);
             g.glUniform1i(loc("uUseVss"), useVss ? 1 : 0);
+            g.glActiveTexture(GL_TEXTURE2);
+            g.glBindTexture(GL_TEXTURE_2D, useAo ? glTex(r.get(d.ao)).texture() : 0U);
+            g.glUniform1i(loc("uAo"), 2);
+            g.glUniform1i(loc("uUseAo"), useAo ? 1 : 0);
+            g.glUniform1f(loc("uAoStrength"), aoStrength);
             g.glUniform3f(loc("uBackground"), background.r, background.g, background.b);
             g.glBindVertexArray(impl.emptyVao);
             g.glDrawArrays(GL_TRIANGLES, 0, 3);
             g.glBindVertexArray(0);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glActiveTexture(GL_TEXTURE1);
             g.glBindTexture(GL_TEXTURE_2D, 0);
             g.glActiveTexture(GL_TEXTURE0);
             g.glBindTexture(GL_TEXTURE_2D, 0);
@@ -722,10 +951,51 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             checkGlError(g, "composite pass");
         });
 
+    // 7. FXAA of the composited frame into the target.
+    struct Fxaa {
+        Handle<Texture> input;
+        Handle<Texture> output;
+    };
+    if (useAa) {
+        graph.addPass<Fxaa>(
+            "fxaa",
+            [&](RenderGraph::Builder& b, Fxaa& d) {
+                d.input = b.read(composite.output);
+                d.output = b.write(output);
+            },
+            [&impl, w, h](const RenderGraph::Resources& r, const Fxaa& d) {
+                auto& g = impl.f();
+                g.glBindFramebuffer(GL_FRAMEBUFFER, glTex(r.get(d.output)).framebuffer());
+                g.glViewport(0, 0, w, h);
+                g.glDisable(GL_DEPTH_TEST);
+                g.glDisable(GL_BLEND);
+                const GLuint program = impl.fxaaProgram;
+                g.glUseProgram(program);
+                g.glActiveTexture(GL_TEXTURE0);
+                // Bilinear taps here only; pooled textures are nearest otherwise.
+                g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.input)).texture());
+                g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+                g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+                g.glUniform1i(g.glGetUniformLocation(program, "uColor"), 0);
+                g.glUniform2f(g.glGetUniformLocation(program, "uTexel"),
+                              1.0F / static_cast<float>(w), 1.0F / static_cast<float>(h));
+                g.glBindVertexArray(impl.emptyVao);
+                g.glDrawArrays(GL_TRIANGLES, 0, 3);
+                g.glBindVertexArray(0);
+                g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+                g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+                g.glBindTexture(GL_TEXTURE_2D, 0);
+                g.glUseProgram(0);
+                g.glEnable(GL_DEPTH_TEST);
+                checkGlError(g, "FXAA pass");
+            });
+    }
+
     graph.compile();
     graph.execute(impl.observer.get());
     passes_ = graph.passes();
     graphText_ = graph.toText();
+    cueRange_ = impl.cueRange;
     gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     gl.glViewport(0, 0, w, h);
 

@@ -8,6 +8,7 @@
 #include <QOpenGLVersionFunctionsFactory>
 #include <QSurfaceFormat>
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstddef>
@@ -164,6 +165,80 @@ void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what) {
 
 }  // namespace
 
+namespace {
+
+constexpr std::array kAllCues{VesselCue::None, VesselCue::Chromadepth, VesselCue::PseudoChromadepth,
+                              VesselCue::Fog, VesselCue::Fresnel};
+constexpr int kCueLutSize = 256;
+/// Texture unit of the cue's depth-scale table (unit 0 holds the colour map).
+constexpr GLint kCueLutUnit = 1;
+
+}  // namespace
+
+std::span<const VesselCue> allVesselCues() noexcept {
+    return kAllCues;
+}
+
+std::string_view name(VesselCue cue) noexcept {
+    switch (cue) {
+        case VesselCue::None:
+            return "none";
+        case VesselCue::Chromadepth:
+            return "vessel-cd";
+        case VesselCue::PseudoChromadepth:
+            return "vessel-pcd";
+        case VesselCue::Fog:
+            return "fog";
+        case VesselCue::Fresnel:
+            return "fresnel";
+    }
+    return "none";
+}
+
+std::string_view displayName(VesselCue cue) noexcept {
+    switch (cue) {
+        case VesselCue::None:
+            return "None";
+        case VesselCue::Chromadepth:
+            return "Vessel chromadepth";
+        case VesselCue::PseudoChromadepth:
+            return "Vessel pseudo-chromadepth";
+        case VesselCue::Fog:
+            return "Depth fog";
+        case VesselCue::Fresnel:
+            return "Fresnel-edge pseudo-chromadepth";
+    }
+    return "None";
+}
+
+std::optional<VesselCue> vesselCueFromName(std::string_view text) noexcept {
+    for (const VesselCue cue : kAllCues) {
+        const std::string_view n = name(cue);
+        if (n.size() == text.size() &&
+            std::equal(n.begin(), n.end(), text.begin(), [](char a, char b) {
+                return std::tolower(static_cast<unsigned char>(a)) ==
+                       std::tolower(static_cast<unsigned char>(b));
+            })) {
+            return cue;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<colormaps::DepthScale> cueDepthScale(VesselCue cue) noexcept {
+    switch (cue) {
+        case VesselCue::Chromadepth:
+            return colormaps::DepthScale::Chromadepth;
+        case VesselCue::PseudoChromadepth:
+        case VesselCue::Fresnel:
+            return colormaps::DepthScale::PseudoChromadepth;
+        case VesselCue::None:
+        case VesselCue::Fog:
+            return std::nullopt;
+    }
+    return std::nullopt;
+}
+
 const Lighting& sceneLighting() noexcept {
     static const Lighting lighting = [] {
         Lighting l;
@@ -277,7 +352,9 @@ void MeshRenderer::initialize() {
     program_ = 0;
     gbufferProgram_ = 0;
     lutTexture_ = 0;
+    cueLutTexture_ = 0;
     uploadedMap_.reset();
+    uploadedCueScale_.reset();
     scalarsUploadedForArray_ = false;
     auto& f = *gl_;
 
@@ -291,6 +368,7 @@ void MeshRenderer::initialize() {
     }
 
     f.glGenTextures(1, &lutTexture_);
+    f.glGenTextures(1, &cueLutTexture_);
     uploadedMap_.reset();
     uploadLut();
     throwOnGlError(f, "MeshRenderer::initialize");
@@ -313,6 +391,11 @@ void MeshRenderer::release() noexcept {
         f.glDeleteTextures(1, &lutTexture_);
         lutTexture_ = 0;
     }
+    if (cueLutTexture_ != 0) {
+        f.glDeleteTextures(1, &cueLutTexture_);
+        cueLutTexture_ = 0;
+    }
+    uploadedCueScale_.reset();
     if (program_ != 0) {
         f.glDeleteProgram(program_);
         program_ = 0;
@@ -404,6 +487,7 @@ void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
 }
 
 void MeshRenderer::setStyle(const MeshStyle& style) {
+    colormaps::validateBins(style.bins);
     style_ = style;
     updateRange();
     // With the context current, upload now; otherwise draw() catches up.
@@ -441,25 +525,50 @@ void MeshRenderer::uploadScalars() {
 }
 
 void MeshRenderer::uploadLut() {
-    if (uploadedMap_ == style_.colorMap) {
+    const int bins = style_.bins >= 2 ? style_.bins : 0;
+    if (uploadedMap_ == style_.colorMap && uploadedBins_ == bins) {
         return;
     }
     auto& f = gl();
-    const auto table = colormaps::lut(style_.colorMap, lutSize_);
+    // Binned: exactly the bins' colours (colormaps::lut(map, bins)), nearest
+    // filtering, the shader picks the bin's texel centre.
+    const int size = bins >= 2 ? bins : lutSize_;
+    const auto table = colormaps::lut(style_.colorMap, size);
+    const GLint filter = bins >= 2 ? GL_NEAREST : GL_LINEAR;
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
     f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, lutSize_, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+    f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, table.data());
+    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, filter);
+    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, filter);
+    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    f.glBindTexture(GL_TEXTURE_1D, 0);
+    throwOnGlError(f, "uploading the colour map");
+    uploadedMap_ = style_.colorMap;
+    uploadedBins_ = bins;
+}
+
+void MeshRenderer::uploadCueLut(colormaps::DepthScale scale) {
+    if (uploadedCueScale_ == scale) {
+        return;
+    }
+    auto& f = gl();
+    const auto table = colormaps::lut(scale, kCueLutSize);
+    f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
+    f.glBindTexture(GL_TEXTURE_1D, cueLutTexture_);
+    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, kCueLutSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                    table.data());
     f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     f.glBindTexture(GL_TEXTURE_1D, 0);
-    throwOnGlError(f, "uploading the colour map");
-    uploadedMap_ = style_.colorMap;
+    f.glActiveTexture(GL_TEXTURE0);
+    throwOnGlError(f, "uploading the vessel cue's depth scale");
+    uploadedCueScale_ = scale;
 }
 
-void MeshRenderer::draw(const Camera& camera, DepthMode mode) {
+void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
     auto& f = gl();
     if (program_ == 0) {
         throw RenderError("MeshRenderer::draw without a shader program");
@@ -471,6 +580,10 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode) {
         uploadScalars();
     }
     uploadLut();
+    const auto cueScale = cueDepthScale(cue.cue);
+    if (cueScale) {
+        uploadCueLut(*cueScale);
+    }
 
     const glm::mat4 view = camera.viewMatrix();
     const glm::mat4 projection = camera.projectionMatrix();
@@ -497,6 +610,14 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode) {
     f.glUniform3f(loc("uNoDataColor"), noData.r, noData.g, noData.b);
     f.glUniform1i(loc("uLut"), 0);
     f.glUniform1f(loc("uLutSize"), static_cast<float>(lutSize_));
+    f.glUniform1i(loc("uBins"), uploadedBins_);
+    f.glUniform1i(loc("uCue"), static_cast<GLint>(cue.cue));
+    f.glUniform1i(loc("uCueLut"), kCueLutUnit);
+    f.glUniform1f(loc("uCueLutSize"), static_cast<float>(kCueLutSize));
+    f.glUniform2f(loc("uCueDepthRange"), cue.dmin, cue.dmax);
+    f.glUniform3f(loc("uFogColor"), cue.fogColor.r, cue.fogColor.g, cue.fogColor.b);
+    f.glUniform1f(loc("uFogStrength"), std::clamp(cue.fogStrength, 0.0F, 1.0F));
+    f.glUniform1f(loc("uFresnelExponent"), std::max(cue.fresnelExponent, 0.0F));
     f.glUniform2f(loc("uRange"), range.first, range.second);
     f.glUniform1i(loc("uLighting"), style_.lighting ? 1 : 0);
     f.glUniform3f(loc("uLightDirection"), light.direction.x, light.direction.y, light.direction.z);
@@ -504,6 +625,8 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode) {
     f.glUniform1f(loc("uDiffuse"), light.diffuse);
     f.glUniform1f(loc("uSpecular"), light.specular);
     f.glUniform1f(loc("uShininess"), light.shininess);
+    f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
+    f.glBindTexture(GL_TEXTURE_1D, cueScale ? cueLutTexture_ : 0U);
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
 
@@ -512,6 +635,9 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode) {
         f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
     }
     f.glBindVertexArray(0);
+    f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
+    f.glBindTexture(GL_TEXTURE_1D, 0);
+    f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_1D, 0);
     f.glUseProgram(0);
     f.glDepthMask(GL_TRUE);

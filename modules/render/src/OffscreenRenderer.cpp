@@ -11,6 +11,7 @@
 #include <string>
 
 #include "vv/core/Error.h"
+#include "vv/render/LegendPainter.h"
 
 namespace vv::render {
 
@@ -98,6 +99,11 @@ const std::vector<PassInfo>& OffscreenRenderer::lastPasses() const noexcept {
     return renderer_->lastPasses();
 }
 
+const std::optional<std::pair<double, double>>& OffscreenRenderer::lastCueDepthRange()
+    const noexcept {
+    return renderer_->lastCueDepthRange();
+}
+
 const VssFrameStatus& OffscreenRenderer::vssStatus() const noexcept {
     return renderer_->vssStatus();
 }
@@ -164,6 +170,9 @@ QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions&
     FrameSettings settings;
     settings.background = options.background;
     settings.vss = options.vss;
+    settings.cue = options.cue;
+    settings.ao = options.ao;
+    settings.antialiasing = options.antialiasing;
     try {
         renderer_->render(camera, settings,
                           FrameTarget{output_->framebuffer(), options.width, options.height});
@@ -187,7 +196,12 @@ QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions&
     gl->glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     checkGlError(*gl, "reading the rendered image back");
     // GL rows start at the bottom.
-    return image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
+    QImage result = image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
+    if (options.legends) {
+        paintLegends(result, legendsFor(&scene, options.style, lastRange_, settings,
+                                        renderer_->vssStatus(), renderer_->lastCueDepthRange()));
+    }
+    return result;
 }
 
 }  // namespace vv::render

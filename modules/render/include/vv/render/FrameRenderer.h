@@ -5,7 +5,9 @@
 #include <functional>
 #include <glm/glm.hpp>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vv/colormaps/DepthScale.h"
@@ -34,11 +36,33 @@ struct VssSettings {
     float opacity = 1.0F;           ///< 0..1, the VSS over the background
 };
 
+/// A depth cue on the vessels themselves (pass 5, for comparison with the
+/// VSS). Its depth range is the VSS's dmin / dmax when a VSS is shown, else
+/// the visible vessels' linear depth range.
+struct VesselCueSettings {
+    VesselCue cue = VesselCue::None;
+    float fogStrength = 0.8F;      ///< Fog: blend towards the background at the far end
+    float fresnelExponent = 1.0F;  ///< Fresnel: k in (1 - |n.v|)^k
+};
+
+/// Screen-space ambient occlusion over the vessels and the VSS ("ssao" and
+/// "ao-blur" passes): darkens the VSS next to the vessels (and the vessels
+/// half as much), so they look anchored on the surface.
+struct AoSettings {
+    bool enabled = true;
+    float radius = 3.0F;    ///< scene units (mm for the demo)
+    float strength = 0.8F;  ///< 0..1: how much full occlusion darkens
+};
+
 /// Everything a frame needs besides the camera, the scene and the mesh style
 /// (which lives in FrameRenderer::meshRenderer()).
 struct FrameSettings {
     glm::vec3 background{0.13F, 0.14F, 0.16F};  ///< sRGB
     VssSettings vss;
+    VesselCueSettings cue;
+    AoSettings ao;
+    /// FXAA on the composited frame ("fxaa" pass, last).
+    bool antialiasing = true;
 };
 
 /// The framebuffer a frame is drawn into: `framebuffer` (0 = the default one)
@@ -70,15 +94,24 @@ struct VssFrameStatus {
 ///    normal RGBA16F, object id R32UI, Depth32F); cached while camera,
 ///    viewport and scene stay.
 ///  - "vessel-shading": the vessel colour (MeshRenderer's material or array
-///    through the colour map, Blinn-Phong) and the parameter value (R32F,
-///    NaN = no data), depth-tested against the G-buffer.
+///    through the colour map, Blinn-Phong, optionally a VesselCue) and the
+///    parameter value (R32F, NaN = no data), depth-tested against the
+///    G-buffer. A cue that needs depth reads the VSS's dmin / dmax (after
+///    "vss-solve") or, without a shown VSS, the visible range that
+///    "depth-range" reads back (cached while the view stays).
 ///  - "vss-solve": reads the linear depth back, solves the VSS (vss::solve,
 ///    mask = finite depth) and uploads the height image (R32F); cached while
 ///    the depth, p, solver and tolerance stay, so colour scale and iso-line
 ///    changes never re-solve. Synchronous, or on a worker thread (see
 ///    SolveMode).
 ///  - "vss-shading": depth colour scale, iso-lines and height-field lighting.
-///  - "composite": vessels over the VSS over the background, into the target.
+///  - "ssao", "ao-blur" (AoSettings::enabled): occlusion from the linear
+///    depth and the VSS height, then a depth-aware blur; cached while depth,
+///    VSS and radius stay (the colour scale does not re-run them).
+///  - "composite": vessels over the VSS over the background, darkened by the
+///    AO, into the target (or, with anti-aliasing, into a texture).
+///  - "fxaa" (FrameSettings::antialiasing): FXAA into the target. The
+///    G-buffer stays single-sampled, so the solve's depth is unchanged.
 ///
 /// With the VSS off, nothing reads the VSS passes' outputs and the graph
 /// culls them. The GL context current at initialize() must be current for
@@ -136,6 +169,12 @@ class FrameRenderer {
     /// the GPU timers (context current).
     [[nodiscard]] const std::vector<GlPassTiming>& lastTimings();
     [[nodiscard]] const VssFrameStatus& vssStatus() const noexcept { return status_; }
+    /// The depth range (dmin, dmax, scene units) the last frame's vessel cue
+    /// normalised with; nullopt when the cue was None.
+    [[nodiscard]] const std::optional<std::pair<double, double>>& lastCueDepthRange()
+        const noexcept {
+        return cueRange_;
+    }
 
     /// The linear depth the last solve read back from the G-buffer: row 0 is
     /// the BOTTOM row (GL order), +Inf on background pixels. Empty before the
@@ -157,6 +196,7 @@ class FrameRenderer {
     std::vector<PassInfo> passes_;
     std::string graphText_;
     VssFrameStatus status_;
+    std::optional<std::pair<double, double>> cueRange_;
 };
 
 }  // namespace vv::render

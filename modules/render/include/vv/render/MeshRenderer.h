@@ -1,14 +1,18 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <string_view>
 #include <utility>
 #include <vector>
 
 #include "vv/colormaps/ColorMap.h"
+#include "vv/colormaps/DepthScale.h"
 #include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
 
@@ -24,6 +28,9 @@ struct MeshStyle {
     /// Point array shown through the colour map; empty = the neutral vessel material.
     std::string array;
     colormaps::ColorMap colorMap = colormaps::ColorMap::Viridis;
+    /// Discrete bins of the colour map: 0 = continuous, 2..colormaps::kMaxBins
+    /// = that many equal bins (colormaps::sample(map, t, bins)).
+    int bins = 0;
     /// Values mapped to the first and last colour of the map; nullopt = the
     /// finite range of the array over all meshes. Values outside are clamped.
     std::optional<std::pair<float, float>> range;
@@ -32,6 +39,42 @@ struct MeshStyle {
     /// Blinn-Phong with a headlight-like key light and ambient; false draws
     /// flat, unlit colours (exact colour-map colours, for checks and pickers).
     bool lighting = true;
+};
+
+/// A depth cue on the vessel surface itself, the comparison techniques for
+/// the VSS (issue 4, pass 5). Depth is normalised to t = (d - dmin) /
+/// (dmax - dmin), d the linear view depth, 0 = nearest.
+enum class VesselCue : std::uint8_t {
+    None,               ///< baseline: no depth cue on the vessels
+    Chromadepth,        ///< the vessel coloured by the chromadepth scale (red near -> blue far)
+    PseudoChromadepth,  ///< Ropinski et al. 2006: the red (near) -> blue (far) scale
+    Fog,                ///< Kersten-Oertel et al. 2014: blend towards the background by t
+    /// Behrendt et al. 2017: the pseudo-chromadepth colour at silhouettes,
+    /// weighted by the Fresnel term (1 - |n.v|)^k; the interior keeps its
+    /// parameter / neutral colour.
+    Fresnel,
+};
+
+/// Every cue, in UI order.
+[[nodiscard]] std::span<const VesselCue> allVesselCues() noexcept;
+/// Command-line identifier: "none", "vessel-cd", "vessel-pcd", "fog", "fresnel".
+[[nodiscard]] std::string_view name(VesselCue cue) noexcept;
+/// Human-readable name ("Vessel pseudo-chromadepth").
+[[nodiscard]] std::string_view displayName(VesselCue cue) noexcept;
+/// The cue whose name() equals `name`, ignoring ASCII case; nullopt when none does.
+[[nodiscard]] std::optional<VesselCue> vesselCueFromName(std::string_view name) noexcept;
+/// The depth scale a cue colours with (chromadepth for Chromadepth, pseudo-
+/// chromadepth for PseudoChromadepth and Fresnel); nullopt for None and Fog.
+[[nodiscard]] std::optional<colormaps::DepthScale> cueDepthScale(VesselCue cue) noexcept;
+
+/// What MeshRenderer::draw() needs to apply a cue.
+struct VesselCueParameters {
+    VesselCue cue = VesselCue::None;
+    float dmin = 0.0F;             ///< linear view depth mapped to t = 0, scene units
+    float dmax = 0.0F;             ///< ... to t = 1; dmax - dmin tiny: t = 0 everywhere
+    glm::vec3 fogColor{0.0F};      ///< sRGB, the frame's background
+    float fogStrength = 0.8F;      ///< Fog: blend weight at t = 1 (0..1)
+    float fresnelExponent = 1.0F;  ///< Fresnel: k in (1 - |n.v|)^k
 };
 
 /// The light shared by the vessels and the VSS: a key light a little above
@@ -95,7 +138,8 @@ class MeshRenderer {
 
     /// Sets the style. With the context current, re-uploads the per-vertex
     /// scalars when the array changed and the colour-map texture when the map
-    /// changed (throwing RenderError when GL fails); otherwise draw() does.
+    /// or its bins changed (throwing RenderError when GL fails); otherwise
+    /// draw() does. Throws InvalidArgumentError for bins out of range.
     void setStyle(const MeshStyle& style);
     [[nodiscard]] const MeshStyle& style() const noexcept { return style_; }
 
@@ -118,7 +162,9 @@ class MeshRenderer {
     /// array that a mesh lacks, or that has no finite value, shows the map's
     /// noDataColor(). Throws RenderError when not initialized, the context is
     /// not current or GL reports an error.
-    void draw(const Camera& camera, DepthMode mode = DepthMode::Write);
+    /// `cue` adds a depth cue on the vessels (default: none).
+    void draw(const Camera& camera, DepthMode mode = DepthMode::Write,
+              const VesselCueParameters& cue = {});
 
     /// The geometry pass: draws the meshes into the currently bound G-buffer,
     /// draw buffer 0 = linear view depth (R32F, distance along the viewing
@@ -141,6 +187,7 @@ class MeshRenderer {
     void updateRange();
     void uploadScalars();
     void uploadLut();
+    void uploadCueLut(colormaps::DepthScale scale);
     [[nodiscard]] QOpenGLFunctions_4_1_Core& gl() const;
 
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
@@ -156,6 +203,9 @@ class MeshRenderer {
     bool scalarsUploadedForArray_ = false;
     std::string uploadedArray_;
     std::optional<colormaps::ColorMap> uploadedMap_;
+    int uploadedBins_ = 0;
+    unsigned cueLutTexture_ = 0;
+    std::optional<colormaps::DepthScale> uploadedCueScale_;
 };
 
 }  // namespace vv::render

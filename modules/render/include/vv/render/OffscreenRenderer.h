@@ -30,12 +30,22 @@ struct OffscreenOptions {
     std::optional<Camera> camera;
     /// Multisampling samples: kept for compatibility and ignored, because the
     /// frame's G-buffer is not multisampled (the VSS needs one depth per
-    /// pixel); edge anti-aliasing is a later post-process pass.
+    /// pixel); edges are anti-aliased by FXAA instead (`antialiasing`).
     int samples = 4;
     /// The Void Space Surface: on by default (chromadepth, fast solver).
     /// With it on, void pixels show the VSS where one exists; off, they show
     /// the background.
     VssSettings vss;
+    /// A depth cue on the vessels themselves (none by default).
+    VesselCueSettings cue;
+    /// Ambient occlusion over vessels + VSS (on by default).
+    AoSettings ao;
+    /// FXAA on the final image (on by default); the VSS input is unaffected.
+    bool antialiasing = true;
+    /// Paint the legends of the scales in use onto the image (LegendPainter):
+    /// the depth legend when a VSS is shown, the parameter legend when an
+    /// array is shown. Off by default; the CLI turns it on.
+    bool legends = false;
 };
 
 /// Renders scenes into images without a window: its own OpenGL 4.1 core
@@ -76,6 +86,9 @@ class OffscreenRenderer {
     [[nodiscard]] const std::vector<PassInfo>& lastPasses() const noexcept;
     /// CPU and GPU milliseconds of the passes that ran in the last render().
     [[nodiscard]] std::vector<GlPassTiming> lastTimings();
+    /// The depth range the last render()'s vessel cue used; nullopt without a cue.
+    [[nodiscard]] const std::optional<std::pair<double, double>>& lastCueDepthRange()
+        const noexcept;
     /// The VSS of the last render().
     [[nodiscard]] const VssFrameStatus& vssStatus() const noexcept;
     /// The G-buffer's linear depth read by the last VSS solve (row 0 = top,
