@@ -3,6 +3,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <string>
 
 #include "vv/core/Error.h"
@@ -13,6 +15,7 @@
 namespace {
 
 using vv::Image;
+using vv::render::AnatomicalView;
 using vv::render::ViewPreset;
 
 constexpr int kWidth = 640;
@@ -184,6 +187,155 @@ TEST(ViewPresetsTest, BoxOverloadPutsEveryCornerInsideTheCentralPart) {
     const auto noMesh = vv::render::presetCamera(vv::io::Scene{}, 100, 100, ViewPreset::Far);
     EXPECT_TRUE(std::isfinite(noMesh.distance()));
     EXPECT_GT(noMesh.distance(), 0.0F);
+}
+
+/// A small axis-aligned box (12 triangles) centred at `c` with half-size `h`.
+void addBox(vv::io::Mesh& mesh, const glm::vec3& c, float h) {
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (int i = 0; i < 8; ++i) {
+        mesh.positions.emplace_back(c.x + ((i & 1) != 0 ? h : -h), c.y + ((i & 2) != 0 ? h : -h),
+                                    c.z + ((i & 4) != 0 ? h : -h));
+    }
+    constexpr std::array<std::uint32_t, 36> kFaces{0, 1, 3, 0, 3, 2, 4, 6, 7, 4, 7, 5,
+                                                   0, 4, 5, 0, 5, 1, 2, 3, 7, 2, 7, 6,
+                                                   0, 2, 6, 0, 6, 4, 1, 5, 7, 1, 7, 3};
+    for (const std::uint32_t i : kFaces) {
+        mesh.indices.push_back(base + i);
+    }
+}
+
+/// Centre of the pixels within 0.5 of the smallest depth of `depth` (the
+/// front face of the nearest object); (-1, -1) when nothing is drawn.
+glm::vec2 nearestCentroid(const Image<float>& depth) {
+    float nearest = std::numeric_limits<float>::infinity();
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            nearest = std::min(nearest, depth(x, y));
+        }
+    }
+    glm::dvec2 sum{0.0};
+    long n = 0;
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            if (std::isfinite(depth(x, y)) && depth(x, y) < nearest + 0.5F) {
+                sum += glm::dvec2(x + 0.5, y + 0.5);
+                ++n;
+            }
+        }
+    }
+    return n == 0 ? glm::vec2(-1.0F) : glm::vec2(sum / static_cast<double>(n));
+}
+
+/// Pixel coordinates (origin top-left, +y down) of world point `p` seen by `camera`.
+glm::vec2 pixelOf(const vv::render::Camera& camera, const glm::vec3& p) {
+    const glm::vec4 clip = camera.projectionMatrix() * camera.viewMatrix() * glm::vec4(p, 1.0F);
+    const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+    return {(ndc.x + 1.0F) * 0.5F * static_cast<float>(camera.viewportWidth()),
+            (1.0F - ndc.y) * 0.5F * static_cast<float>(camera.viewportHeight())};
+}
+
+TEST(ViewPresetsTest, AnatomicalNamesRoundTrip) {
+    ASSERT_EQ(vv::render::allAnatomicalViews().size(), 6U);
+    for (const AnatomicalView v : vv::render::allAnatomicalViews()) {
+        EXPECT_EQ(vv::render::anatomicalViewFromName(vv::render::toString(v)), v);
+        const auto named = vv::render::namedViewFromName(vv::render::toString(v));
+        ASSERT_TRUE(named.has_value());
+        EXPECT_EQ(named->preset, ViewPreset::Far);
+        EXPECT_NEAR(std::abs(glm::dot(named->rotation, vv::render::anatomicalRotation(v))), 1.0F,
+                    1e-6F);
+    }
+    EXPECT_EQ(vv::render::anatomicalViewFromName("Superior"), AnatomicalView::Superior);
+    EXPECT_FALSE(vv::render::anatomicalViewFromName("far").has_value());
+    EXPECT_FALSE(vv::render::anatomicalViewFromName("front").has_value());
+    const auto close = vv::render::namedViewFromName("CLOSE");
+    ASSERT_TRUE(close.has_value());
+    EXPECT_EQ(close->preset, ViewPreset::Close);
+    EXPECT_FLOAT_EQ(close->rotation.w, 1.0F);
+    EXPECT_FALSE(vv::render::namedViewFromName("sideways").has_value());
+    EXPECT_EQ(vv::render::namedViewNames(),
+              "far, medium, close, anterior, posterior, left, right, superior, inferior");
+}
+
+TEST(ViewPresetsTest, AnatomicalCamerasLookFromTheirSide) {
+    vv::Aabb box;
+    box.extend(glm::vec3(-40.0F, -20.0F, -60.0F));
+    box.extend(glm::vec3(40.0F, 30.0F, 60.0F));
+    for (const AnatomicalView v : vv::render::allAnatomicalViews()) {
+        SCOPED_TRACE(std::string(vv::render::toString(v)));
+        const glm::vec3 side = vv::render::anatomicalSide(v);
+        const glm::vec3 up = vv::render::anatomicalUp(v);
+        EXPECT_NEAR(glm::length(side), 1.0F, 1e-6F);
+        EXPECT_NEAR(glm::dot(side, up), 0.0F, 1e-6F);
+        const auto camera = vv::render::presetCamera(box, 400, 300, ViewPreset::Far,
+                                                     vv::render::anatomicalRotation(v));
+        EXPECT_NEAR(glm::dot(camera.forward(), -side), 1.0F, 1e-5F);
+        EXPECT_NEAR(glm::dot(camera.up(), up), 1.0F, 1e-5F);
+        // The eye is on that side of the box, outside it.
+        const glm::vec3 offset = camera.eye() - box.center();
+        EXPECT_GT(glm::dot(offset, side), 0.0F);
+        EXPECT_NEAR(glm::length(glm::cross(offset, side)), 0.0F, 1e-3F * glm::length(offset));
+        const glm::vec3 eye = camera.eye();
+        EXPECT_FALSE(glm::all(glm::greaterThanEqual(eye, box.min)) &&
+                     glm::all(glm::lessThanEqual(eye, box.max)));
+    }
+    // The radiological conventions: the anterior view shows the patient's left
+    // (+x) on the screen's right, and so does the inferior view.
+    const glm::vec3 left{1.0F, 0.0F, 0.0F};
+    const auto right = [](AnatomicalView v) {
+        return vv::render::anatomicalRotation(v) * glm::vec3(1.0F, 0.0F, 0.0F);
+    };
+    EXPECT_NEAR(glm::dot(right(AnatomicalView::Anterior), left), 1.0F, 1e-5F);
+    EXPECT_NEAR(glm::dot(right(AnatomicalView::Inferior), left), 1.0F, 1e-5F);
+    EXPECT_NEAR(glm::dot(right(AnatomicalView::Posterior), left), -1.0F, 1e-5F);
+    EXPECT_NEAR(glm::dot(right(AnatomicalView::Superior), left), -1.0F, 1e-5F);
+}
+
+TEST(ViewPresetsTest, AnatomicalViewsSeeTheMarkersWhereTheyShouldBe) {
+    // A box in the middle and markers on the patient's left (+x), anterior
+    // (-y) and superior (+z) sides; nothing on the right, posterior, inferior.
+    const glm::vec3 leftMarker{30.0F, 0.0F, 0.0F};
+    const glm::vec3 anteriorMarker{0.0F, -30.0F, 0.0F};
+    const glm::vec3 superiorMarker{0.0F, 0.0F, 30.0F};
+    vv::io::Scene scene;
+    vv::io::Mesh mesh;
+    addBox(mesh, glm::vec3(0.0F), 10.0F);
+    for (const glm::vec3& m : {leftMarker, anteriorMarker, superiorMarker}) {
+        addBox(mesh, m, 3.0F);
+    }
+    scene.meshes.push_back(std::move(mesh));
+    const int w = 320;
+    const int h = 240;
+    for (const AnatomicalView v : vv::render::allAnatomicalViews()) {
+        SCOPED_TRACE(std::string(vv::render::toString(v)));
+        const auto camera = vv::render::presetCamera(scene, w, h, ViewPreset::Far,
+                                                     vv::render::anatomicalRotation(v));
+        const Image<float> depth = vv::render::rasterizeDepth(scene, camera);
+        // The nearest front face is the marker on the camera's side, or the
+        // middle box where that side has none.
+        const glm::vec3 side = vv::render::anatomicalSide(v);
+        glm::vec3 nearest{0.0F};
+        for (const glm::vec3& m : {leftMarker, anteriorMarker, superiorMarker}) {
+            if (glm::dot(m, side) > 1.0F) {
+                nearest = m;
+            }
+        }
+        const float halfSize = nearest == glm::vec3(0.0F) ? 10.0F : 3.0F;
+        const glm::vec2 expected = pixelOf(camera, nearest + halfSize * side);
+        const glm::vec2 found = nearestCentroid(depth);
+        EXPECT_NEAR(found.x, expected.x, 1.5F);
+        EXPECT_NEAR(found.y, expected.y, 1.5F);
+    }
+    // Screen layout: from the front the left marker is right of the middle box
+    // and the superior one above it; from above, anterior is up.
+    const auto anterior = vv::render::presetCamera(
+        scene, w, h, ViewPreset::Far, vv::render::anatomicalRotation(AnatomicalView::Anterior));
+    const glm::vec2 middle = pixelOf(anterior, glm::vec3(0.0F));
+    EXPECT_GT(pixelOf(anterior, leftMarker).x, middle.x + 20.0F);
+    EXPECT_LT(pixelOf(anterior, superiorMarker).y, middle.y - 20.0F);
+    const auto superior = vv::render::presetCamera(
+        scene, w, h, ViewPreset::Far, vv::render::anatomicalRotation(AnatomicalView::Superior));
+    EXPECT_LT(pixelOf(superior, anteriorMarker).y, pixelOf(superior, glm::vec3(0.0F)).y - 20.0F);
+    EXPECT_LT(pixelOf(superior, leftMarker).x, pixelOf(superior, glm::vec3(0.0F)).x - 20.0F);
 }
 
 }  // namespace

@@ -71,7 +71,105 @@ Camera finish(Camera camera, float far, ViewPreset preset) {
     return camera;
 }
 
+constexpr std::array<AnatomicalView, 6> kAnatomicalViews{
+    AnatomicalView::Anterior, AnatomicalView::Posterior, AnatomicalView::Left,
+    AnatomicalView::Right,    AnatomicalView::Superior,  AnatomicalView::Inferior};
+
 }  // namespace
+
+std::span<const AnatomicalView> allAnatomicalViews() noexcept {
+    return kAnatomicalViews;
+}
+
+std::string_view toString(AnatomicalView view) noexcept {
+    switch (view) {
+        case AnatomicalView::Anterior:
+            return "anterior";
+        case AnatomicalView::Posterior:
+            return "posterior";
+        case AnatomicalView::Left:
+            return "left";
+        case AnatomicalView::Right:
+            return "right";
+        case AnatomicalView::Superior:
+            return "superior";
+        case AnatomicalView::Inferior:
+            return "inferior";
+    }
+    return "unknown";
+}
+
+std::optional<AnatomicalView> anatomicalViewFromName(std::string_view name) noexcept {
+    for (const AnatomicalView view : kAnatomicalViews) {
+        if (equalsIgnoringCase(name, toString(view))) {
+            return view;
+        }
+    }
+    return std::nullopt;
+}
+
+glm::vec3 anatomicalSide(AnatomicalView view) noexcept {
+    // LPS: +x left, +y posterior, +z superior.
+    switch (view) {
+        case AnatomicalView::Anterior:
+            return {0.0F, -1.0F, 0.0F};
+        case AnatomicalView::Posterior:
+            return {0.0F, 1.0F, 0.0F};
+        case AnatomicalView::Left:
+            return {1.0F, 0.0F, 0.0F};
+        case AnatomicalView::Right:
+            return {-1.0F, 0.0F, 0.0F};
+        case AnatomicalView::Superior:
+            return {0.0F, 0.0F, 1.0F};
+        case AnatomicalView::Inferior:
+            return {0.0F, 0.0F, -1.0F};
+    }
+    return {0.0F, -1.0F, 0.0F};
+}
+
+glm::vec3 anatomicalUp(AnatomicalView view) noexcept {
+    switch (view) {
+        case AnatomicalView::Superior:
+        case AnatomicalView::Inferior:
+            return {0.0F, -1.0F, 0.0F};  // anterior
+        case AnatomicalView::Anterior:
+        case AnatomicalView::Posterior:
+        case AnatomicalView::Left:
+        case AnatomicalView::Right:
+            break;
+    }
+    return {0.0F, 0.0F, 1.0F};  // superior
+}
+
+glm::quat anatomicalRotation(AnatomicalView view) noexcept {
+    // Columns of the camera-to-world rotation: the camera's x (right), y (up)
+    // and z (towards the viewer, i.e. -forward) axes in world coordinates.
+    const glm::vec3 back = anatomicalSide(view);
+    const glm::vec3 up = anatomicalUp(view);
+    const glm::vec3 right = glm::cross(up, back);
+    return glm::normalize(glm::quat_cast(glm::mat3(right, up, back)));
+}
+
+std::optional<NamedView> namedViewFromName(std::string_view name) noexcept {
+    if (const auto preset = viewPresetFromName(name)) {
+        return NamedView{*preset, glm::quat(1.0F, 0.0F, 0.0F, 0.0F)};
+    }
+    if (const auto view = anatomicalViewFromName(name)) {
+        return NamedView{ViewPreset::Far, anatomicalRotation(*view)};
+    }
+    return std::nullopt;
+}
+
+std::string namedViewNames() {
+    std::string names;
+    for (const ViewPreset preset : kPresets) {
+        names += (names.empty() ? "" : ", ") + std::string(toString(preset));
+    }
+    for (const AnatomicalView view : kAnatomicalViews) {
+        names += ", " + std::string(toString(view));
+    }
+    return names;
+}
 
 std::span<const ViewPreset> allViewPresets() noexcept {
     return kPresets;
