@@ -18,6 +18,7 @@
 
 #include "VssBenchmark.h"
 #include "cli/Cli.h"
+#include "cli/GuiApplication.h"
 #include "vv/core/Error.h"
 #include "vv/io/DemoTree.h"
 #include "vv/io/MeshLoader.h"
@@ -204,34 +205,6 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
         }
     }
     return settings;
-}
-
-/// Fonts for the plot need a QGuiApplication; made once per process when the
-/// caller has none, on the offscreen platform unless a display or platform is set.
-void ensureGuiApplication() {
-    if (QCoreApplication::instance() != nullptr) {
-        if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
-            throw Error(
-                "bench: the plot needs a QGuiApplication, the process has a "
-                "QCoreApplication");
-        }
-        return;
-    }
-    const bool platformChosen = !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
-    const bool haveDisplay =
-        !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
-    static int argc = 1;
-    static char name[] = "vesselview-cli";
-    static char platformFlag[] = "-platform";
-    static char offscreen[] = "offscreen";
-    static char* argv[] = {name, nullptr, nullptr, nullptr};
-    if (!platformChosen && !haveDisplay) {
-        argv[1] = platformFlag;
-        argv[2] = offscreen;
-        argc = 3;
-    }
-    // Lives until the process ends (Qt allows one application object).
-    new QGuiApplication(argc, argv);
 }
 
 /// Makes `folder` when missing; OutputError when it cannot be made or is a file.

@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "cli/Cli.h"
+#include "cli/GuiApplication.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
@@ -249,35 +250,6 @@ RenderArguments parse(const std::vector<std::string>& args) {
         throw UsageError("render: no output image (-o IMAGE.png)");
     }
     return parsed;
-}
-
-/// The application object offscreen rendering needs, made once per process
-/// when the caller has none. Without a display it uses Qt's "offscreen"
-/// platform rather than letting xcb abort the process; rendering then fails
-/// with a RenderError that says OpenGL is missing.
-void ensureGuiApplication() {
-    if (QCoreApplication::instance() != nullptr) {
-        if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
-            throw RenderError("render needs a QGuiApplication, the process has a QCoreApplication");
-        }
-        return;
-    }
-    const bool platformChosen = !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
-    const bool haveDisplay =
-        !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
-    static int argc = 1;
-    static char name[] = "vesselview-cli";
-    static char platformFlag[] = "-platform";
-    static char offscreen[] = "offscreen";
-    static char* argv[] = {name, nullptr, nullptr, nullptr};
-    if (!platformChosen && !haveDisplay) {
-        argv[1] = platformFlag;
-        argv[2] = offscreen;
-        argc = 3;
-    }
-    // Lives until the process ends: Qt allows one application object, and
-    // tearing it down during static destruction is fragile.
-    new QGuiApplication(argc, argv);
 }
 
 }  // namespace

@@ -5,8 +5,6 @@
 #include <QFile>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions_4_1_Core>
-#include <QOpenGLVersionFunctionsFactory>
-#include <QSurfaceFormat>
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -18,6 +16,7 @@
 #include <string>
 
 #include "vv/core/Error.h"
+#include "vv/render/GlResources.h"
 
 namespace vv::render {
 
@@ -326,22 +325,9 @@ bool MeshRenderer::initialized() const noexcept {
 }
 
 void MeshRenderer::initialize() {
+    // Throws RenderError without a current OpenGL 4.1 core context.
+    QOpenGLFunctions_4_1_Core* functions = &currentGl41();
     QOpenGLContext* context = QOpenGLContext::currentContext();
-    if (context == nullptr) {
-        throw RenderError("no current OpenGL context");
-    }
-    const QSurfaceFormat format = context->format();
-    if (context->isOpenGLES() || format.majorVersion() < 4 ||
-        (format.majorVersion() == 4 && format.minorVersion() < 1)) {
-        throw RenderError("OpenGL 4.1 core is needed, the context has " +
-                          std::string(context->isOpenGLES() ? "OpenGL ES " : "OpenGL ") +
-                          std::to_string(format.majorVersion()) + "." +
-                          std::to_string(format.minorVersion()));
-    }
-    auto* functions = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_1_Core>(context);
-    if (functions == nullptr || !functions->initializeOpenGLFunctions()) {
-        throw RenderError("cannot resolve the OpenGL 4.1 core functions");
-    }
     if (gl_ != nullptr && context_ == context) {
         release();
     }

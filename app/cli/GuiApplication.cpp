@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "cli/GuiApplication.h"
+
+#include <QCoreApplication>
+#include <QGuiApplication>
+
+#include "vv/core/Error.h"
+
+namespace vv::cli {
+
+void ensureGuiApplication() {
+    if (QCoreApplication::instance() != nullptr) {
+        if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
+            throw RenderError("a QGuiApplication is needed, the process has a QCoreApplication");
+        }
+        return;
+    }
+    const bool platformChosen = !qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM");
+    const bool haveDisplay =
+        !qEnvironmentVariableIsEmpty("DISPLAY") || !qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY");
+    static int argc = 1;
+    static char name[] = "vesselview-cli";
+    static char platformFlag[] = "-platform";
+    static char offscreen[] = "offscreen";
+    static char* argv[] = {name, nullptr, nullptr, nullptr};
+    if (!platformChosen && !haveDisplay) {
+        argv[1] = platformFlag;
+        argv[2] = offscreen;
+        argc = 3;
+    }
+    // Lives until the process ends: tearing it down during static
+    // destruction is fragile.
+    new QGuiApplication(argc, argv);
+}
+
+}  // namespace vv::cli

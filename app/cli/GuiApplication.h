@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+namespace vv::cli {
+
+/// Makes sure the process has a QGuiApplication (needed for OpenGL contexts
+/// and for fonts), creating one the first time: on Qt's default platform
+/// when a display (or QT_QPA_PLATFORM) is set, else on the "offscreen"
+/// platform, so that a missing X server gives a clear RenderError later
+/// instead of xcb aborting the process. The application lives until the
+/// process ends (Qt allows one per process).
+/// Throws vv::RenderError when the process already has a QCoreApplication
+/// that is not a QGuiApplication.
+void ensureGuiApplication();
+
+}  // namespace vv::cli
