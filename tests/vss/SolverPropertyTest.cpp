@@ -584,9 +584,6 @@ TEST_P(SolverTest, PowerLimits) {
 }
 
 TEST_P(SolverTest, Huge7680x4320SparseMask) {
-    if (GetParam().kind == SolverKind::Step) {
-        GTEST_SKIP() << "step 1 runs the brute kernel, covered by brute";
-    }
     MAKE_SOLVER_OR_SKIP(solver, GetParam(), 64.0);
     const int w = 7680;
     const int h = 4320;
@@ -626,9 +623,6 @@ TEST_P(SolverTest, Huge7680x4320SparseMask) {
 }
 
 TEST_P(SolverTest, AMillionContourPixels) {
-    if (GetParam().kind == SolverKind::Reference || GetParam().kind == SolverKind::Step) {
-        GTEST_SKIP() << "brute and fast only";
-    }
     // A 4x4 void block in a 1002 x 1000 vessel image whose region lists every
     // vessel pixel as contour: about 10^6 contour pixels for 16 void pixels.
     const int w = 1002;
