@@ -8,6 +8,7 @@
 #include <limits>
 #include <map>
 #include <memory>
+#include <ostream>
 #include <string>
 #include <tuple>
 #include <utility>
@@ -28,6 +29,11 @@ struct SolverCase {
     SolverKind kind;
     int step;
 };
+
+// Readable parameter values in test listings (and so in ctest's test names).
+void PrintTo(const SolverCase& solverCase, std::ostream* os) {
+    *os << solverCase.name;
+}
 
 const SolverCase kSolvers[] = {
     {"reference", SolverKind::Reference, 1},
