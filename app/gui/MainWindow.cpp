@@ -26,6 +26,7 @@
 #include <QToolBar>
 #include <QUrl>
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <vector>
@@ -156,6 +157,12 @@ void MainWindow::buildMenus() {
     reset->setShortcut(Qt::Key_R);
     QAction* fit = view->addAction(tr("&Fit to Data"), viewer_, &ViewerWidget::fitToData);
     fit->setShortcut(Qt::Key_F);
+    view->addSeparator();
+    legendsAction_ = view->addAction(tr("Show &Legends"));
+    legendsAction_->setObjectName(QStringLiteral("legendsToggle"));
+    legendsAction_->setCheckable(true);
+    legendsAction_->setChecked(viewer_->legendsVisible());
+    connect(legendsAction_, &QAction::toggled, viewer_, &ViewerWidget::setLegendsVisible);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     help->addAction(tr("&About VesselView"), this, &MainWindow::showAbout);
@@ -228,6 +235,23 @@ void MainWindow::buildToolBar() {
         ao.enabled = on;
         viewer_->setAoSettings(ao);
     });
+    bar->addSeparator();
+    bar->addWidget(new QLabel(tr(" Vessel cue: "), bar));
+    cueCombo_ = new QComboBox(bar);
+    cueCombo_->setObjectName(QStringLiteral("vesselCueChooser"));
+    cueCombo_->setToolTip(tr("A depth cue on the vessels themselves, for comparison"));
+    for (const auto cue : render::allVesselCues()) {
+        const auto label = render::displayName(cue);
+        cueCombo_->addItem(QString::fromUtf8(label.data(), static_cast<qsizetype>(label.size())),
+                           static_cast<int>(cue));
+    }
+    cueCombo_->setCurrentIndex(cueCombo_->findData(static_cast<int>(viewer_->vesselCue().cue)));
+    bar->addWidget(cueCombo_);
+    connect(cueCombo_, &QComboBox::currentIndexChanged, this, [this] {
+        render::VesselCueSettings cue = viewer_->vesselCue();
+        cue.cue = static_cast<render::VesselCue>(cueCombo_->currentData().toInt());
+        viewer_->setVesselCue(cue);
+    });
     connect(vssPowerBox_, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyVss);
     connect(depthScaleCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyVss);
 }
@@ -245,6 +269,8 @@ void MainWindow::applyVss() {
 void MainWindow::buildStatusBar() {
     statusLabel_ = new QLabel(tr("Ready"), this);
     rangeLabel_ = new QLabel(this);
+    vssLabel_ = new QLabel(this);
+    vssLabel_->setObjectName(QStringLiteral("vssQualityLabel"));
     progressBar_ = new QProgressBar(this);
     progressBar_->setRange(0, 1000);
     progressBar_->setMaximumWidth(240);
@@ -258,6 +284,7 @@ void MainWindow::buildStatusBar() {
         }
     });
     statusBar()->addWidget(statusLabel_, 1);
+    statusBar()->addPermanentWidget(vssLabel_);
     statusBar()->addPermanentWidget(rangeLabel_);
     statusBar()->addPermanentWidget(progressBar_);
     statusBar()->addPermanentWidget(cancelButton_);
@@ -522,7 +549,21 @@ void MainWindow::setScreenshotTarget(const QString& path) {
     }
 }
 
+void MainWindow::updateVssLabel() {
+    const render::VssFrameStatus& status = viewer_->vssStatus();
+    if (!viewer_->scene() || !viewer_->vssSettings().enabled) {
+        vssLabel_->clear();
+    } else if (!status.shown) {
+        vssLabel_->setText(status.pending ? tr("VSS: solving…") : tr("VSS: none"));
+    } else if (status.preview || !status.current) {
+        vssLabel_->setText(tr("VSS: preview"));
+    } else {
+        vssLabel_->setText(tr("VSS: exact, %1 ms").arg(std::lround(status.solveMilliseconds)));
+    }
+}
+
 void MainWindow::onFrameRendered() {
+    updateVssLabel();
     if (!screenshotPending_ || !viewer_->scene() || viewer_->framesWithScene() == 0) {
         return;
     }

@@ -70,6 +70,12 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QAction* vssToggle() const noexcept { return vssAction_; }
     [[nodiscard]] QDoubleSpinBox* vssPowerBox() const noexcept { return vssPowerBox_; }
     [[nodiscard]] QComboBox* depthScaleChooser() const noexcept { return depthScaleCombo_; }
+    /// The depth cue on the vessels (toolbar; item data = VesselCue as int).
+    [[nodiscard]] QComboBox* vesselCueChooser() const noexcept { return cueCombo_; }
+    /// View > Show Legends (checked = legends drawn).
+    [[nodiscard]] QAction* legendsToggle() const noexcept { return legendsAction_; }
+    /// The status bar's VSS quality: "VSS: preview", "VSS: exact, N ms", …
+    [[nodiscard]] QLabel* vssQualityLabel() const noexcept { return vssLabel_; }
     [[nodiscard]] bool isLoading() const noexcept { return !task_.isNull(); }
     /// The message of the last load error ("file: problem"); empty if none.
     [[nodiscard]] const QString& lastError() const noexcept { return lastError_; }
@@ -98,6 +104,7 @@ class MainWindow : public QMainWindow {
     void applyVss();
     void updateRangeLabel();
     void onFrameRendered();
+    void updateVssLabel();
     void finishScreenshot(bool ok, const QString& message);
     void showAbout();
 
@@ -110,6 +117,9 @@ class MainWindow : public QMainWindow {
     QAction* vssAction_ = nullptr;
     QDoubleSpinBox* vssPowerBox_ = nullptr;
     QComboBox* depthScaleCombo_ = nullptr;
+    QComboBox* cueCombo_ = nullptr;
+    QAction* legendsAction_ = nullptr;
+    QLabel* vssLabel_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     QLabel* rangeLabel_ = nullptr;

@@ -55,6 +55,10 @@ class LegendOverlay : public QWidget {
 ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
     legendOverlay_ = new LegendOverlay(this);
     legendOverlay_->setGeometry(rect());
+    settleTimer_ = new QTimer(this);
+    settleTimer_->setSingleShot(true);
+    settleTimer_->setInterval(settleDelayMs_);
+    connect(settleTimer_, &QTimer::timeout, this, &ViewerWidget::settle);
     setFormat(requiredFormat());
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
@@ -154,6 +158,37 @@ void ViewerWidget::setVesselCue(const render::VesselCueSettings& cue) {
 void ViewerWidget::setLegendsVisible(bool visible) {
     legendsVisible_ = visible;
     update();
+}
+
+void ViewerWidget::setProgressiveRefinement(bool on) {
+    progressive_ = on;
+    if (!on) {
+        settle();
+    }
+}
+
+void ViewerWidget::setSettleDelay(int milliseconds) {
+    settleDelayMs_ = std::max(milliseconds, 0);
+    settleTimer_->setInterval(settleDelayMs_);
+}
+
+void ViewerWidget::cameraChanged() {
+    autoFit_ = false;
+    if (progressive_) {
+        moving_ = true;
+        settleTimer_->start();  // restarts: the camera settles settleDelay() after the last change
+    }
+    update();
+}
+
+void ViewerWidget::settle() {
+    settleTimer_->stop();
+    if (!moving_) {
+        return;
+    }
+    moving_ = false;
+    emit cameraSettled();
+    update();  // the next frame asks for the exact VSS
 }
 
 void ViewerWidget::setBackground(const glm::vec3& color) {
@@ -294,6 +329,11 @@ void ViewerWidget::paintGL() {
         settings.background = background_;
         settings.vss = vss_;
         settings.ao = ao_;
+        if (moving_) {
+            // Preview while the camera moves: a quicker solve, no occlusion.
+            settings.vss.preview = true;
+            settings.ao.enabled = false;
+        }
         settings.cue = cue_;
         renderer_.render(camera_, settings, target);
         shownRange_ = meshes.effectiveRange();
@@ -329,15 +369,12 @@ void ViewerWidget::mouseMoveEvent(QMouseEvent* event) {
     const QPointF position = event->position();
     const glm::vec2 from(static_cast<float>(lastMouse_.x()), static_cast<float>(lastMouse_.y()));
     const glm::vec2 to(static_cast<float>(position.x()), static_cast<float>(position.y()));
-    if (drag_ != Drag::None) {
-        autoFit_ = false;
-    }
     if (drag_ == Drag::Rotate) {
         camera_.rotate(from, to);
-        update();
+        cameraChanged();
     } else if (drag_ == Drag::Pan) {
         camera_.pan(to - from);
-        update();
+        cameraChanged();
     }
     lastMouse_ = position;
     event->accept();
@@ -346,6 +383,7 @@ void ViewerWidget::mouseMoveEvent(QMouseEvent* event) {
 void ViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
     if (event->buttons() == Qt::NoButton) {
         drag_ = Drag::None;
+        settle();  // released: the camera stopped, show the exact VSS now
     }
     event->accept();
 }
@@ -354,9 +392,8 @@ void ViewerWidget::wheelEvent(QWheelEvent* event) {
     // 120 units = one notch; each notch zooms by 15 %.
     const double notches = event->angleDelta().y() / 120.0;
     if (notches != 0.0) {
-        autoFit_ = false;
         camera_.zoom(static_cast<float>(std::pow(1.15, notches)));
-        update();
+        cameraChanged();
     }
     event->accept();
 }

@@ -5,8 +5,10 @@
 #include <QPoint>
 #include <QString>
 #include <QSurfaceFormat>
+#include <QTimer>
 #include <memory>
 
+#include "vv/core/Image.h"
 #include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
@@ -22,6 +24,12 @@ class LegendOverlay;
 /// Space Surface behind them) with an orbit camera. The VSS is solved on a
 /// worker thread: until a new solve arrives the view shows the previous VSS
 /// (same size) or none, then repaints.
+///
+/// Progressive refinement: while the camera moves (a drag in progress, or
+/// within settleDelay() of the last camera change) frames ask for a preview
+/// solve (VssSettings::preview: fast solver, loose tolerance) and skip the
+/// ambient occlusion; when the mouse is released or the settle timer fires,
+/// the exact solve follows by itself. A newer request cancels a stale solve.
 ///
 /// Mouse: left-drag rotates (arcball), right- or middle-drag or shift +
 /// left-drag pans, the wheel zooms. Keys: R resets the view, F fits the data.
@@ -76,6 +84,18 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] const render::VssFrameStatus& vssStatus() const noexcept {
         return renderer_.vssStatus();
     }
+    /// Progressive refinement on (default) or off (every frame asks for the exact VSS).
+    void setProgressiveRefinement(bool on);
+    [[nodiscard]] bool progressiveRefinement() const noexcept { return progressive_; }
+    /// How long after the last camera change the camera counts as stopped (ms).
+    void setSettleDelay(int milliseconds);
+    [[nodiscard]] int settleDelay() const noexcept { return settleDelayMs_; }
+    /// True while the camera moves (frames use the preview VSS).
+    [[nodiscard]] bool cameraMoving() const noexcept { return moving_; }
+    /// The worker's solve counters (submitted, completed, cancelled).
+    [[nodiscard]] render::SolveCounters solveCounters() const { return renderer_.solveCounters(); }
+    /// The VSS height the last frame showed (GL row order; empty when none).
+    [[nodiscard]] Image<float> shownVssHeight() const { return renderer_.shownHeight(); }
     /// The passes of the last frame (state, reason, CPU time).
     [[nodiscard]] const std::vector<render::PassInfo>& lastPasses() const noexcept {
         return renderer_.lastPasses();
@@ -114,6 +134,8 @@ class ViewerWidget : public QOpenGLWidget {
     void frameRendered();
     /// A VSS solve for the current view arrived (a repaint follows).
     void vssSolved();
+    /// The camera stopped moving; the exact VSS is requested by the next frame.
+    void cameraSettled();
     /// OpenGL cannot be used; `message` says why. Emitted at most once.
     void renderFailed(const QString& message);
 
@@ -132,6 +154,9 @@ class ViewerWidget : public QOpenGLWidget {
     void fail(const QString& message);
     void releaseGl();
     void paintMessage(const QString& text);
+    /// A camera change by the user: preview quality until it settles.
+    void cameraChanged();
+    void settle();
 
     render::FrameRenderer renderer_;
     render::VssSettings vss_;
@@ -156,6 +181,10 @@ class ViewerWidget : public QOpenGLWidget {
     enum class Drag { None, Rotate, Pan };
     Drag drag_ = Drag::None;
     QPointF lastMouse_;
+    bool progressive_ = true;
+    bool moving_ = false;
+    int settleDelayMs_ = 150;
+    QTimer* settleTimer_ = nullptr;
 };
 
 }  // namespace vv::gui

@@ -73,10 +73,12 @@ struct SolvedFrame {
     double dmin = 0.0;
     double dmax = 0.0;
     double milliseconds = 0.0;
+    bool preview = false;  ///< a preview-quality solve
 };
 
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
-                       const vss::SolverOptions& options, const std::stop_token& stop) {
+                       const vss::SolverOptions& options, bool preview,
+                       const std::stop_token& stop) {
     const auto start = std::chrono::steady_clock::now();
     const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
     vss::VssOptions vssOptions;
@@ -88,6 +90,7 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     frame.height = std::move(result.height);
     frame.dmin = result.dmin;
     frame.dmax = result.dmax;
+    frame.preview = preview;
     frame.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return frame;
@@ -107,6 +110,7 @@ class SolveWorker {
         std::uint64_t key = 0;
         Image<float> depth;
         vss::SolverOptions options;
+        bool preview = false;
     };
 
     explicit SolveWorker(std::function<void()> onSolved)
@@ -135,6 +139,7 @@ class SolveWorker {
                 runningStop_.request_stop();
             }
             pending_ = std::move(job);
+            ++counters_.submitted;
         }
         wake_.notify_all();
     }
@@ -149,6 +154,11 @@ class SolveWorker {
     [[nodiscard]] std::pair<std::shared_ptr<const SolvedFrame>, std::uint64_t> latest() const {
         std::lock_guard lock(mutex_);
         return {latest_, revision_};
+    }
+
+    [[nodiscard]] SolveCounters counters() const {
+        std::lock_guard lock(mutex_);
+        return counters_;
     }
 
     void waitIdle() {
@@ -175,12 +185,14 @@ class SolveWorker {
                 runningKey_ = job.key;
             }
             std::shared_ptr<const SolvedFrame> solved;
+            bool cancelled = false;
             try {
                 solved = std::make_shared<const SolvedFrame>(
-                    solveFrame(job.key, job.depth, job.options, jobStop));
+                    solveFrame(job.key, job.depth, job.options, job.preview, jobStop));
+            } catch (const CancelledError&) {
+                cancelled = true;
             } catch (const std::exception&) {
-                // Cancelled, or a failure: the view shows no new VSS; the next
-                // request tries again.
+                // A failure: the view shows no new VSS; the next request tries again.
             }
             {
                 std::lock_guard lock(mutex_);
@@ -188,6 +200,10 @@ class SolveWorker {
                 if (solved) {
                     latest_ = std::move(solved);
                     ++revision_;
+                    ++counters_.completed;
+                }
+                if (cancelled) {
+                    ++counters_.cancelled;
                 }
             }
             idle_.notify_all();
@@ -207,6 +223,7 @@ class SolveWorker {
     std::stop_source runningStop_;
     std::shared_ptr<const SolvedFrame> latest_;
     std::uint64_t revision_ = 0;
+    SolveCounters counters_;
     std::jthread thread_;  // last: starts after, and joins before, the members above go
 };
 
@@ -215,6 +232,17 @@ GlTexture& glTex(const Texture& texture) {
 }
 
 }  // namespace
+
+vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept {
+    vss::SolverOptions options = settings.solver;
+    if (settings.preview) {
+        options.kind = vss::SolverKind::Fast;
+        if (!(options.tolerance >= settings.previewTolerance)) {
+            options.tolerance = settings.previewTolerance;
+        }
+    }
+    return options;
+}
 
 std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept {
     Hasher h;
@@ -254,6 +282,7 @@ struct FrameRenderer::Impl {
     VssFrameStatus solveStatus;
     /// What the height texture holds now.
     bool shown = false;
+    std::shared_ptr<const SolvedFrame> shownFrame;
     double dmin = 0.0;
     double dmax = 0.0;
     /// The visible vessels' linear depth range ("depth-range" pass).
@@ -305,7 +334,7 @@ struct FrameRenderer::Impl {
     }
 
     /// Uploads `frame` (or "no VSS" when null or of another size).
-    void uploadHeight(const GlTexture& texture, const SolvedFrame* frame) {
+    void uploadHeight(const GlTexture& texture, const std::shared_ptr<const SolvedFrame>& frame) {
         auto& g = f();
         const auto& d = texture.descriptor();
         const bool fits = frame != nullptr && frame->height.width() == d.width &&
@@ -329,6 +358,7 @@ struct FrameRenderer::Impl {
         g.glBindTexture(GL_TEXTURE_2D, 0);
         checkGlError(g, "uploading the VSS");
         shown = fits && std::isfinite(frame->dmin) && std::isfinite(frame->dmax);
+        shownFrame = shown ? frame : nullptr;
         dmin = shown ? frame->dmin : 0.0;
         dmax = shown ? frame->dmax : 0.0;
     }
@@ -375,6 +405,7 @@ void FrameRenderer::initialize() {
     gl.glGenTextures(1, &impl_->scaleLut);
     impl_->uploadedScale.reset();
     impl_->shown = false;
+    impl_->shownFrame.reset();
     checkGlError(gl, "FrameRenderer::initialize");
 }
 
@@ -410,6 +441,7 @@ void FrameRenderer::release() noexcept {
     impl_->scaleLut = 0;
     impl_->uploadedScale.reset();
     impl_->shown = false;
+    impl_->shownFrame.reset();
     meshes_.release();
     impl_->gl = nullptr;
     impl_->context = nullptr;
@@ -439,6 +471,15 @@ void FrameRenderer::clearCache() {
         impl_->cache->clear();
     }
     impl_->shown = false;
+    impl_->shownFrame.reset();
+}
+
+SolveCounters FrameRenderer::solveCounters() const {
+    return impl_->worker ? impl_->worker->counters() : SolveCounters{};
+}
+
+Image<float> FrameRenderer::shownHeight() const {
+    return impl_->shownFrame ? impl_->shownFrame->height : Image<float>{};
 }
 
 const std::vector<GlPassTiming>& FrameRenderer::lastTimings() {
@@ -462,7 +503,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     }
     const VssSettings& vssSettings = settings.vss;
     if (vssSettings.enabled) {
-        static_cast<void>(vss::makeSolver(vssSettings.solver));  // throws for bad options
+        // Throws for bad options.
+        static_cast<void>(vss::makeSolver(effectiveSolverOptions(vssSettings)));
     }
     const int w = target.width;
     const int h = target.height;
@@ -546,7 +588,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
         solvedImport = graph.importResource("vss-result", SolvedFrameRef{std::move(latest)},
                                             ImportOptions{.target = false, .revision = revision});
     }
-    const vss::SolverOptions solverOptions = vssSettings.solver;
+    const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
+    const bool preview = vssSettings.preview;
     const SolverKey key = solverKey(solverOptions);
     Hasher requestHash;
     requestHash.value(view);
@@ -554,12 +597,14 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     requestHash.value(viewport);
     requestHash.value(sceneRevision);
     requestHash.value(key);
+    requestHash.value(preview);
     const std::uint64_t request = requestHash.result();
     VssFrameStatus& status = impl.solveStatus;
     const Solve& solve = graph.addPass<Solve>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Solve& d) {
             b.dependsOn("solver", key);
+            b.dependsOn("preview", preview);
             d.depth = b.read(geometry.linearDepth);
             if (async) {
                 d.solved = b.read(solvedImport);
@@ -567,32 +612,34 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             d.height =
                 b.write(b.createPersistent<Texture>("vss-height", size(TextureFormat::R32F)));
         },
-        [&impl, &status, async, request, solverOptions](const RenderGraph::Resources& r,
-                                                        const Solve& d) {
+        [&impl, &status, async, request, solverOptions, preview](const RenderGraph::Resources& r,
+                                                                 const Solve& d) {
             status = VssFrameStatus{};
             const GlTexture& height = glTex(r.get(d.height));
             const GlTexture& depthTexture = glTex(r.get(d.depth));
             if (!async) {
                 impl.lastDepth = impl.readDepth(depthTexture);
-                const SolvedFrame frame = solveFrame(request, impl.lastDepth, solverOptions, {});
-                impl.uploadHeight(height, &frame);
-                status.solveMilliseconds = frame.milliseconds;
+                const auto frame = std::make_shared<const SolvedFrame>(
+                    solveFrame(request, impl.lastDepth, solverOptions, preview, {}));
+                impl.uploadHeight(height, frame);
+                status.solveMilliseconds = frame->milliseconds;
                 status.current = true;
                 return;
             }
             const auto& latest = r.get(d.solved).frame;
             if (latest && latest->key == request) {
-                impl.uploadHeight(height, latest.get());
+                impl.uploadHeight(height, latest);
                 status.solveMilliseconds = latest->milliseconds;
                 status.current = true;
                 return;
             }
             if (!impl.worker->requested(request)) {
                 impl.lastDepth = impl.readDepth(depthTexture);
-                impl.worker->submit(SolveWorker::Job{request, impl.lastDepth, solverOptions});
+                impl.worker->submit(
+                    SolveWorker::Job{request, impl.lastDepth, solverOptions, preview});
             }
             status.pending = true;
-            impl.uploadHeight(height, latest.get());  // the previous VSS, or none
+            impl.uploadHeight(height, latest);  // the previous VSS, or none
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
 
@@ -1008,6 +1055,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     status_.shown = impl.shown;
     status_.dmin = impl.dmin;
     status_.dmax = impl.dmax;
+    status_.preview = impl.shownFrame != nullptr && impl.shownFrame->preview;
 }
 
 }  // namespace vv::render

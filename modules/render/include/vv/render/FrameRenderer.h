@@ -34,7 +34,15 @@ struct VssSettings {
     float isoLineStrength = 0.55F;  ///< 0..1
     float lighting = 1.0F;          ///< 0 = flat scale colours, 1 = full Blinn-Phong
     float opacity = 1.0F;           ///< 0..1, the VSS over the background
+    /// Progressive refinement: a preview solve (while the camera moves) uses
+    /// the fast solver with at least `previewTolerance`, so it finishes sooner;
+    /// the exact solve (preview = false) uses `solver` as given.
+    bool preview = false;
+    double previewTolerance = 8.0 / 255.0;
 };
+
+/// The solver options a VSS solve with `settings` uses (preview or exact).
+[[nodiscard]] vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept;
 
 /// A depth cue on the vessels themselves (pass 5, for comparison with the
 /// VSS). Its depth range is the VSS's dmin / dmax when a VSS is shown, else
@@ -81,6 +89,14 @@ struct VssFrameStatus {
     double dmin = 0.0;     ///< its depth range in scene units
     double dmax = 0.0;
     double solveMilliseconds = 0.0;  ///< wall time of the solve that made it
+    bool preview = false;            ///< the shown VSS is a preview solve (VssSettings::preview)
+};
+
+/// Asynchronous solves so far (FrameRenderer::solveCounters()).
+struct SolveCounters {
+    std::uint64_t submitted = 0;  ///< jobs handed to the worker
+    std::uint64_t completed = 0;  ///< solves that finished
+    std::uint64_t cancelled = 0;  ///< running solves stopped by a newer request
 };
 
 /// A content hash of a scene's geometry (positions and indices of every
@@ -183,6 +199,12 @@ class FrameRenderer {
 
     /// Asynchronous mode: blocks until no solve is queued or running (tests).
     void waitForSolves();
+    /// Asynchronous mode: how many solves were submitted, finished, cancelled
+    /// since setSolveMode() (all zero in synchronous mode).
+    [[nodiscard]] SolveCounters solveCounters() const;
+    /// The VSS height the last frame showed (GL row order, NaN = no VSS);
+    /// empty when none was shown. A copy, for checks.
+    [[nodiscard]] Image<float> shownHeight() const;
 
     /// Forgets every cached pass result and pooled texture (context current).
     void clearCache();

@@ -1,0 +1,343 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Progressive VSS refinement in the viewer: a preview solve while the camera
+// moves, the exact one after it stops, stale solves cancelled; and a
+// benchmark-style run rotating the demo at 1280x720 (numbers printed, not
+// asserted). Run under `xvfb-run -a` with QT_QPA_PLATFORM=xcb.
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QComboBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QThread>
+#include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <vector>
+
+#include "gui/MainWindow.h"
+#include "gui/ViewerWidget.h"
+#include "vv/io/MeshLoader.h"
+#include "vv/render/MeshRenderer.h"
+
+namespace {
+
+using vv::gui::ViewerWidget;
+
+void ensureApplication() {
+    if (QCoreApplication::instance() != nullptr) {
+        return;
+    }
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY") &&
+        qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+    }
+    ViewerWidget::installDefaultFormat();
+    static int argc = 1;
+    static char name[] = "vv_gui_tests";
+    static char* argv[] = {name, nullptr};
+    new QApplication(argc, argv);  // kept for the whole process
+}
+
+bool waitUntil(const std::function<bool()>& done, int timeoutMs = 60000) {
+    QElapsedTimer timer;
+    timer.start();
+    while (!done() && timer.elapsed() < timeoutMs) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
+        if (!done()) {
+            QThread::msleep(1);
+        }
+    }
+    return done();
+}
+
+/// A tube of radius r from a to b (axis along x or y).
+void addTube(vv::io::Mesh& mesh, glm::vec3 a, glm::vec3 b, float r) {
+    constexpr int kSegments = 24;
+    constexpr int kRings = 24;
+    const glm::vec3 axis = glm::normalize(b - a);
+    const glm::vec3 u = glm::normalize(glm::cross(axis, glm::vec3(0, 0, 1)));
+    const glm::vec3 v = glm::cross(axis, u);
+    const auto base = static_cast<std::uint32_t>(mesh.positions.size());
+    for (int i = 0; i <= kRings; ++i) {
+        const glm::vec3 c = a + (b - a) * (static_cast<float>(i) / kRings);
+        for (int j = 0; j < kSegments; ++j) {
+            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) / kSegments;
+            const glm::vec3 n = std::cos(phi) * u + std::sin(phi) * v;
+            mesh.positions.push_back(c + r * n);
+            mesh.normals.push_back(n);
+        }
+    }
+    for (std::uint32_t i = 0; i < kRings; ++i) {
+        for (std::uint32_t j = 0; j < kSegments; ++j) {
+            const std::uint32_t p = base + i * kSegments + j;
+            const std::uint32_t q = base + i * kSegments + (j + 1) % kSegments;
+            mesh.indices.insert(mesh.indices.end(),
+                                {p, p + kSegments, q, q, p + kSegments, q + kSegments});
+        }
+    }
+}
+
+/// Three tubes at different depths: a VSS with a real slope between them.
+std::shared_ptr<const vv::io::Scene> makeScene() {
+    auto scene = std::make_shared<vv::io::Scene>();
+    vv::io::Mesh mesh;
+    mesh.name = "tubes";
+    addTube(mesh, {-20, -12, 0}, {20, -12, 0}, 2.0F);
+    addTube(mesh, {-20, 12, -25}, {20, 12, -25}, 2.0F);
+    addTube(mesh, {0, -20, -10}, {0, 20, -10}, 1.5F);
+    scene->meshes.push_back(std::move(mesh));
+    return scene;
+}
+
+class Drag {
+  public:
+    explicit Drag(ViewerWidget& viewer)
+        : viewer_(viewer), at_(viewer.width() / 2.0, viewer.height() / 2.0) {
+        QMouseEvent press(QEvent::MouseButtonPress, at_, viewer_.mapToGlobal(at_), Qt::LeftButton,
+                          Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(&viewer_, &press);
+    }
+    void moveBy(QPointF delta) {
+        at_ += delta;
+        QMouseEvent move(QEvent::MouseMove, at_, viewer_.mapToGlobal(at_), Qt::NoButton,
+                         Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(&viewer_, &move);
+    }
+    void release() {
+        QMouseEvent up(QEvent::MouseButtonRelease, at_, viewer_.mapToGlobal(at_), Qt::LeftButton,
+                       Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(&viewer_, &up);
+    }
+
+  private:
+    ViewerWidget& viewer_;
+    QPointF at_;
+};
+
+bool exactShown(const ViewerWidget& viewer) {
+    const auto& s = viewer.vssStatus();
+    return s.shown && s.current && !s.preview && !s.pending;
+}
+
+bool previewShown(const ViewerWidget& viewer) {
+    const auto& s = viewer.vssStatus();
+    return s.shown && s.current && s.preview;
+}
+
+/// Largest |a - b| over pixels where both are finite; -1 when sizes differ
+/// or no pixel is comparable.
+double maxDifference(const vv::Image<float>& a, const vv::Image<float>& b, long* compared) {
+    *compared = 0;
+    if (a.width() != b.width() || a.height() != b.height() || a.width() == 0) {
+        return -1.0;
+    }
+    double worst = 0.0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const float p = a.row(y)[x];
+            const float q = b.row(y)[x];
+            if (std::isfinite(p) && std::isfinite(q)) {
+                worst = std::max(worst, static_cast<double>(std::abs(p - q)));
+                ++*compared;
+            }
+        }
+    }
+    return *compared > 0 ? worst : -1.0;
+}
+
+class ProgressiveTest : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { ensureApplication(); }
+
+    void TearDown() override {
+        window_.reset();
+        QCoreApplication::processEvents();
+    }
+
+    /// A main window at `w` x `h` showing `scene` with the VSS on.
+    ViewerWidget& open(std::shared_ptr<const vv::io::Scene> scene, int w, int h,
+                       const vv::render::VssSettings* vss = nullptr) {
+        window_ = std::make_unique<vv::gui::MainWindow>();
+        window_->resize(w, h);
+        ViewerWidget& viewer = *window_->viewer();
+        if (vss != nullptr) {
+            viewer.setVssSettings(*vss);
+        }
+        window_->setScene(std::move(scene), QStringLiteral("progressive"));
+        window_->show();
+        return viewer;
+    }
+
+    std::unique_ptr<vv::gui::MainWindow> window_;
+};
+
+TEST_F(ProgressiveTest, PreviewWhileRotatingThenExactWithinTheTolerance) {
+    ViewerWidget& viewer = open(makeScene(), 800, 600);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) || !viewer.renderError().isEmpty(); }))
+        << "the first exact VSS never arrived";
+    ASSERT_TRUE(viewer.renderError().isEmpty()) << viewer.renderError().toStdString();
+    EXPECT_FALSE(viewer.cameraMoving());
+    EXPECT_TRUE(waitUntil([&] {
+        return window_->vssQualityLabel()->text().startsWith(QStringLiteral("VSS: exact"));
+    })) << window_->vssQualityLabel()->text().toStdString();
+
+    // Hold the button after the drag: the settle timer alone decides (long here).
+    viewer.setSettleDelay(600000);
+    Drag drag(viewer);
+    drag.moveBy({60, 25});
+    EXPECT_TRUE(viewer.cameraMoving());
+    ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); })) << "no preview VSS arrived";
+    EXPECT_TRUE(viewer.cameraMoving());
+    // AO is skipped while moving.
+    for (const auto& pass : viewer.lastPasses()) {
+        if (pass.name == "ssao") {
+            EXPECT_EQ(pass.state, vv::render::PassState::Culled);
+        }
+    }
+    EXPECT_TRUE(waitUntil([&] {
+        return window_->vssQualityLabel()->text() == QStringLiteral("VSS: preview");
+    })) << window_->vssQualityLabel()->text().toStdString();
+    const vv::Image<float> preview = viewer.shownVssHeight();
+
+    // Released: the camera stopped, the exact solve of the same view follows.
+    drag.release();
+    EXPECT_FALSE(viewer.cameraMoving());
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); })) << "no exact VSS after stopping";
+    const vv::Image<float> exact = viewer.shownVssHeight();
+    EXPECT_TRUE(waitUntil([&] {
+        return window_->vssQualityLabel()->text().startsWith(QStringLiteral("VSS: exact"));
+    })) << window_->vssQualityLabel()->text().toStdString();
+
+    // Both are fast-solver results within their tolerance of the true z', so
+    // they differ by at most the sum of the two tolerances.
+    const vv::render::VssSettings& vss = viewer.vssSettings();
+    const double bound = vss.previewTolerance + vss.solver.tolerance + 1e-5;
+    long compared = 0;
+    const double worst = maxDifference(preview, exact, &compared);
+    EXPECT_GT(compared, static_cast<long>(preview.width()) * preview.height() / 4);
+    EXPECT_GE(worst, 0.0);
+    EXPECT_LE(worst, bound) << "preview and exact VSS differ by " << worst;
+    std::printf("[progressive] preview vs exact: max |dz'| = %.4f (bound %.4f) over %ld pixels\n",
+                worst, bound, compared);
+}
+
+TEST_F(ProgressiveTest, WheelZoomSettlesByTheTimer) {
+    ViewerWidget& viewer = open(makeScene(), 640, 480);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
+    viewer.setSettleDelay(150);
+    const QPointF centre(viewer.width() / 2.0, viewer.height() / 2.0);
+    QWheelEvent wheel(centre, viewer.mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(&viewer, &wheel);
+    EXPECT_TRUE(viewer.cameraMoving());
+    bool settled = false;
+    QObject::connect(&viewer, &ViewerWidget::cameraSettled, [&] { settled = true; });
+    ASSERT_TRUE(waitUntil([&] { return settled; }, 10000)) << "the settle timer never fired";
+    EXPECT_FALSE(viewer.cameraMoving());
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
+}
+
+TEST_F(ProgressiveTest, RotatingDuringAnExactSolveCancelsIt) {
+    // The reference solver (every contour pixel, double precision) makes the
+    // exact solve slow enough to be interrupted; the preview stays fast.
+    vv::render::VssSettings vss;
+    vss.solver.kind = vv::vss::SolverKind::Reference;
+    ViewerWidget& viewer = open(makeScene(), 800, 600, &vss);
+    ASSERT_TRUE(waitUntil([&] {
+        return viewer.framesWithScene() > 0 && viewer.vssStatus().pending &&
+               viewer.solveCounters().submitted >= 1;
+    }));
+    QThread::msleep(30);            // the worker has picked the exact job up
+    viewer.setSettleDelay(600000);  // the held drag stays a preview
+    const auto before = viewer.solveCounters();
+    EXPECT_EQ(before.cancelled, 0U);
+    EXPECT_EQ(before.completed, 0U) << "the exact solve finished too fast to be interrupted";
+
+    Drag drag(viewer);
+    drag.moveBy({50, 10});
+    ASSERT_TRUE(waitUntil([&] { return viewer.solveCounters().cancelled >= 1; }))
+        << "the stale exact solve was not cancelled";
+    ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
+    drag.release();
+    // The preview, then the exact solve of the new view.
+    EXPECT_TRUE(
+        waitUntil([&] { return viewer.solveCounters().submitted >= before.submitted + 2; }));
+    EXPECT_TRUE(viewer.vssStatus().pending);
+}
+
+/// Benchmark-style: 30 rotations of the demo at 1280x720, each waiting for
+/// its frame, then the time from the release until the exact VSS is shown.
+/// Prints the numbers (docs/benchmarks/render.md); asserts only that it works.
+// A benchmark, not a test of speed: it prints a table and is run by hand (see
+// docs/benchmarks/render.md) with --gtest_also_run_disabled_tests.
+TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
+    auto scene = std::make_shared<const vv::io::Scene>(
+        vv::io::loadScene({std::filesystem::path(VV_DEMO_VTP)}));
+    ViewerWidget& viewer = open(scene, 1280, 720);
+    // The viewer itself at 1280x720, whatever the toolbars take.
+    ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > 0; }));
+    const QSize extra = window_->size() - viewer.size();
+    window_->resize(QSize(1280, 720) + extra);
+    ASSERT_TRUE(waitUntil([&] { return viewer.size() == QSize(1280, 720) && exactShown(viewer); }))
+        << viewer.width() << "x" << viewer.height();
+
+    for (const bool progressive : {true, false}) {
+        viewer.setProgressiveRefinement(progressive);
+        viewer.setSettleDelay(150);
+        ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
+        const auto countersBefore = viewer.solveCounters();
+        std::vector<double> frameMs;
+        int withCurrentVss = 0;
+        int previews = 0;
+        Drag drag(viewer);
+        QElapsedTimer total;
+        total.start();
+        for (int i = 0; i < 30; ++i) {
+            const quint64 frames = viewer.framesWithScene();
+            QElapsedTimer t;
+            t.start();
+            drag.moveBy({12, 3});
+            ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
+            frameMs.push_back(static_cast<double>(t.nsecsElapsed()) / 1e6);
+            const auto& s = viewer.vssStatus();
+            withCurrentVss += (s.shown && s.current) ? 1 : 0;
+            previews += s.preview ? 1 : 0;
+        }
+        const double totalMs = static_cast<double>(total.nsecsElapsed()) / 1e6;
+        QElapsedTimer settle;
+        settle.start();
+        drag.release();
+        ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); })) << "no exact VSS after rotating";
+        const double exactMs = static_cast<double>(settle.nsecsElapsed()) / 1e6;
+        const auto countersAfter = viewer.solveCounters();
+
+        std::vector<double> sorted = frameMs;
+        std::sort(sorted.begin(), sorted.end());
+        const double median = sorted[sorted.size() / 2];
+        std::printf(
+            "[bench] progressive=%s 1280x720 demo: 30 rotations in %.0f ms = %.1f fps; frame ms "
+            "median %.0f, min %.0f, max %.0f; frames with this view's VSS %d/30 (preview %d); "
+            "release -> exact VSS shown %.0f ms (solve %.0f ms); solves submitted %llu, "
+            "completed %llu, cancelled %llu\n",
+            progressive ? "on" : "off", totalMs, 30000.0 / totalMs, median, sorted.front(),
+            sorted.back(), withCurrentVss, previews, exactMs, viewer.vssStatus().solveMilliseconds,
+            static_cast<unsigned long long>(countersAfter.submitted - countersBefore.submitted),
+            static_cast<unsigned long long>(countersAfter.completed - countersBefore.completed),
+            static_cast<unsigned long long>(countersAfter.cancelled - countersBefore.cancelled));
+        std::fflush(stdout);
+        if (progressive) {
+            EXPECT_GT(previews, 0) << "no rotation frame showed the preview VSS";
+        } else {
+            EXPECT_EQ(previews, 0);
+        }
+    }
+}
+
+}  // namespace
