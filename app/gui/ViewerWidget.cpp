@@ -187,8 +187,54 @@ void ViewerWidget::settle() {
         return;
     }
     moving_ = false;
+    bool requested = false;
+    if (error_.isEmpty() && renderer_.initialized() && !autoFit_) {
+        // The last preview frame read back the depth of this very view (same
+        // camera, same render size): start the exact solve now, and let its
+        // arrival (vssSolved) draw the one frame that shows it.
+        try {
+            requested = renderer_.requestSolve(camera_, frameSettings(), frameTarget());
+        } catch (const vv::Error&) {
+            requested = false;  // the next frame reports bad options
+        }
+    }
+    if (requested) {
+        ++solvesRequestedOnSettle_;
+    }
     emit cameraSettled();
-    update();  // the next frame asks for the exact VSS
+    if (!requested) {
+        update();  // the next frame reads the depth back and asks for the exact VSS
+    }
+}
+
+void ViewerWidget::setInteractiveScale(float scale) {
+    interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
+    update();
+}
+
+render::FrameSettings ViewerWidget::frameSettings() const {
+    render::FrameSettings settings;
+    settings.background = background_;
+    settings.vss = vss_;
+    settings.ao = ao_;
+    settings.cue = cue_;
+    if (moving_) {
+        // Preview while the camera moves: a quicker solve, no occlusion, and
+        // a reduced render size when the resolution of the target does not
+        // already make the frame cheap.
+        settings.vss.preview = true;
+        settings.ao.enabled = false;
+        settings.resolutionScale = interactiveScale_;
+    }
+    return settings;
+}
+
+render::FrameTarget ViewerWidget::frameTarget() const {
+    // The camera works in logical pixels, the frame in device pixels.
+    const qreal ratio = devicePixelRatioF();
+    return render::FrameTarget{defaultFramebufferObject(),
+                               std::max(1, static_cast<int>(std::lround(width() * ratio))),
+                               std::max(1, static_cast<int>(std::lround(height() * ratio)))};
 }
 
 void ViewerWidget::setBackground(const glm::vec3& color) {
@@ -320,22 +366,11 @@ void ViewerWidget::paintGL() {
             // Until the user moves the camera, keep the data framed as the widget resizes.
             camera_.fit(camera_.sceneBounds());
         }
-        // The camera works in logical pixels, the frame in device pixels.
-        const qreal ratio = devicePixelRatioF();
-        const render::FrameTarget target{
-            defaultFramebufferObject(), std::max(1, static_cast<int>(std::lround(width() * ratio))),
-            std::max(1, static_cast<int>(std::lround(height() * ratio)))};
-        render::FrameSettings settings;
-        settings.background = background_;
-        settings.vss = vss_;
-        settings.ao = ao_;
-        if (moving_) {
-            // Preview while the camera moves: a quicker solve, no occlusion.
-            settings.vss.preview = true;
-            settings.ao.enabled = false;
-        }
-        settings.cue = cue_;
+        const render::FrameTarget target = frameTarget();
+        const render::FrameSettings settings = frameSettings();
         renderer_.render(camera_, settings, target);
+        const glm::ivec2 rendered = renderer_.lastRenderSize();
+        lastRenderSize_ = QSize(rendered.x, rendered.y);
         shownRange_ = meshes.effectiveRange();
         // The legends of the scales in use, over the GL frame.
         legendOverlay_->setLegends(legendsVisible_

@@ -3,6 +3,7 @@
 
 #include <QOpenGLWidget>
 #include <QPoint>
+#include <QSize>
 #include <QString>
 #include <QSurfaceFormat>
 #include <QTimer>
@@ -28,8 +29,12 @@ class LegendOverlay;
 /// Progressive refinement: while the camera moves (a drag in progress, or
 /// within settleDelay() of the last camera change) frames ask for a preview
 /// solve (VssSettings::preview: fast solver, loose tolerance) and skip the
-/// ambient occlusion; when the mouse is released or the settle timer fires,
-/// the exact solve follows by itself. A newer request cancels a stale solve.
+/// ambient occlusion, and are rendered at interactiveScale() of the full
+/// resolution (upscaled into the widget). When the mouse is released or the
+/// settle timer fires, the exact solve follows by itself: at once from the
+/// depth the last preview frame read back when that frame was rendered at
+/// full resolution (a frame follows when the solve arrives), else through
+/// the next, full-resolution frame. A newer request cancels a stale solve.
 ///
 /// Mouse: left-drag rotates (arcball), right- or middle-drag or shift +
 /// left-drag pans, the wheel zooms. Keys: R resets the view, F fits the data.
@@ -90,6 +95,18 @@ class ViewerWidget : public QOpenGLWidget {
     /// How long after the last camera change the camera counts as stopped (ms).
     void setSettleDelay(int milliseconds);
     [[nodiscard]] int settleDelay() const noexcept { return settleDelayMs_; }
+    /// Render size of frames while the camera moves, relative to the widget,
+    /// in [0.1, 1] (default 0.5: a quarter of the pixels). 1 = full size,
+    /// which lets the exact solve start from the last preview frame's depth.
+    void setInteractiveScale(float scale);
+    [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
+    /// The size (device pixels) the passes of the last frame ran at.
+    [[nodiscard]] QSize lastRenderSize() const noexcept { return lastRenderSize_; }
+    /// How often settling started the exact solve directly from the last
+    /// preview frame's depth (no frame drawn in between).
+    [[nodiscard]] quint64 solvesRequestedOnSettle() const noexcept {
+        return solvesRequestedOnSettle_;
+    }
     /// True while the camera moves (frames use the preview VSS).
     [[nodiscard]] bool cameraMoving() const noexcept { return moving_; }
     /// The worker's solve counters (submitted, completed, cancelled).
@@ -134,7 +151,7 @@ class ViewerWidget : public QOpenGLWidget {
     void frameRendered();
     /// A VSS solve for the current view arrived (a repaint follows).
     void vssSolved();
-    /// The camera stopped moving; the exact VSS is requested by the next frame.
+    /// The camera stopped moving; the exact VSS is requested (at once, or by the next frame).
     void cameraSettled();
     /// OpenGL cannot be used; `message` says why. Emitted at most once.
     void renderFailed(const QString& message);
@@ -157,6 +174,9 @@ class ViewerWidget : public QOpenGLWidget {
     /// A camera change by the user: preview quality until it settles.
     void cameraChanged();
     void settle();
+    /// What the next frame renders with (preview settings while moving).
+    [[nodiscard]] render::FrameSettings frameSettings() const;
+    [[nodiscard]] render::FrameTarget frameTarget() const;
 
     render::FrameRenderer renderer_;
     render::VssSettings vss_;
@@ -184,6 +204,9 @@ class ViewerWidget : public QOpenGLWidget {
     bool progressive_ = true;
     bool moving_ = false;
     int settleDelayMs_ = 150;
+    float interactiveScale_ = 0.5F;
+    QSize lastRenderSize_;
+    quint64 solvesRequestedOnSettle_ = 0;
     QTimer* settleTimer_ = nullptr;
 };
 

@@ -227,6 +227,37 @@ class SolveWorker {
     std::jthread thread_;  // last: starts after, and joins before, the members above go
 };
 
+/// The size the passes of a frame run at (FrameSettings::resolutionScale).
+glm::ivec2 renderSizeFor(const FrameSettings& settings, const FrameTarget& target) noexcept {
+    const float scale = std::isfinite(settings.resolutionScale)
+                            ? std::clamp(settings.resolutionScale, 0.1F, 1.0F)
+                            : 1.0F;
+    const auto scaledSize = [scale](int n) {
+        return std::max(1, static_cast<int>(std::lround(static_cast<float>(n) * scale)));
+    };
+    return {scaledSize(target.width), scaledSize(target.height)};
+}
+
+/// What a solve request depends on besides the solver: view, render size, scene.
+std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
+                      const glm::ivec2& viewport, std::uint64_t sceneRevision) noexcept {
+    Hasher h;
+    h.value(view);
+    h.value(projection);
+    h.value(viewport);
+    h.value(sceneRevision);
+    return h.result();
+}
+
+/// The key of a solve of the view `view` with `options` (preview or exact).
+std::uint64_t requestKey(std::uint64_t view, const SolverKey& options, bool preview) noexcept {
+    Hasher h;
+    h.value(view);
+    h.value(options);
+    h.value(preview);
+    return h.result();
+}
+
 GlTexture& glTex(const Texture& texture) {
     return texture.objectAs<GlTexture>();
 }
@@ -276,8 +307,9 @@ struct FrameRenderer::Impl {
     std::optional<colormaps::DepthScale> uploadedScale;
     std::unique_ptr<SolveWorker> worker;
     std::function<void()> onSolved;
-    /// The depth the last solve read.
+    /// The depth the last solve read, and the view (viewKey) it shows.
     Image<float> lastDepth;
+    std::optional<std::uint64_t> lastDepthView;
     /// What the last run of the solve pass did.
     VssFrameStatus solveStatus;
     /// What the height texture holds now.
@@ -472,6 +504,33 @@ void FrameRenderer::clearCache() {
     }
     impl_->shown = false;
     impl_->shownFrame.reset();
+    impl_->lastDepthView.reset();
+}
+
+bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& settings,
+                                 const FrameTarget& target) {
+    const VssSettings& vssSettings = settings.vss;
+    if (mode_ != SolveMode::Asynchronous || impl_->worker == nullptr || !vssSettings.enabled ||
+        !impl_->lastDepthView || impl_->lastDepth.width() == 0) {
+        return false;
+    }
+    const glm::ivec2 renderSize = renderSizeFor(settings, target);
+    const std::uint64_t depthView =
+        viewKey(camera.viewMatrix(), camera.projectionMatrix(), renderSize, sceneRevision_);
+    if (depthView != *impl_->lastDepthView || impl_->lastDepth.width() != renderSize.x ||
+        impl_->lastDepth.height() != renderSize.y) {
+        return false;  // the depth shows another view: the next frame reads it back
+    }
+    const vss::SolverOptions options = effectiveSolverOptions(vssSettings);
+    static_cast<void>(vss::makeSolver(options));  // throws for bad options, like render()
+    const std::uint64_t request = requestKey(depthView, solverKey(options), vssSettings.preview);
+    const auto latest = impl_->worker->latest().first;
+    if ((latest && latest->key == request) || impl_->worker->requested(request)) {
+        return true;
+    }
+    impl_->worker->submit(
+        SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview});
+    return true;
 }
 
 SolveCounters FrameRenderer::solveCounters() const {
@@ -506,9 +565,17 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
         // Throws for bad options.
         static_cast<void>(vss::makeSolver(effectiveSolverOptions(vssSettings)));
     }
-    const int w = target.width;
-    const int h = target.height;
+    // The passes run at the (possibly reduced) render size; the last pass
+    // draws into the target at its full size.
+    const int targetW = target.width;
+    const int targetH = target.height;
+    const glm::ivec2 renderSize = renderSizeFor(settings, target);
+    const int w = renderSize.x;
+    const int h = renderSize.y;
+    const bool scaled = w != targetW || h != targetH;
+    renderSize_ = {w, h};
     const auto size = [&](TextureFormat format) { return TextureDescriptor{w, h, format, 1}; };
+    const TextureDescriptor targetDescriptor{targetW, targetH, TextureFormat::RGBA8, 1};
     const glm::mat4 view = camera.viewMatrix();
     const glm::mat4 projection = camera.projectionMatrix();
     const glm::ivec2 viewport(w, h);
@@ -519,8 +586,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     RenderGraph graph(*impl.cache);
     Handle<Texture> output = graph.importResource(
         "output",
-        Texture(size(TextureFormat::RGBA8),
-                std::make_shared<GlTexture>(size(TextureFormat::RGBA8), target.framebuffer)),
+        Texture(targetDescriptor,
+                std::make_shared<GlTexture>(targetDescriptor, target.framebuffer)),
         ImportOptions{.target = true, .revision = 0});
 
     // 1. Geometry: the G-buffer.
@@ -591,14 +658,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
     const bool preview = vssSettings.preview;
     const SolverKey key = solverKey(solverOptions);
-    Hasher requestHash;
-    requestHash.value(view);
-    requestHash.value(projection);
-    requestHash.value(viewport);
-    requestHash.value(sceneRevision);
-    requestHash.value(key);
-    requestHash.value(preview);
-    const std::uint64_t request = requestHash.result();
+    const std::uint64_t depthView = viewKey(view, projection, viewport, sceneRevision);
+    const std::uint64_t request = requestKey(depthView, key, preview);
     VssFrameStatus& status = impl.solveStatus;
     const Solve& solve = graph.addPass<Solve>(
         "vss-solve",
@@ -612,13 +673,14 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             d.height =
                 b.write(b.createPersistent<Texture>("vss-height", size(TextureFormat::R32F)));
         },
-        [&impl, &status, async, request, solverOptions, preview](const RenderGraph::Resources& r,
-                                                                 const Solve& d) {
+        [&impl, &status, async, request, depthView, solverOptions, preview](
+            const RenderGraph::Resources& r, const Solve& d) {
             status = VssFrameStatus{};
             const GlTexture& height = glTex(r.get(d.height));
             const GlTexture& depthTexture = glTex(r.get(d.depth));
             if (!async) {
                 impl.lastDepth = impl.readDepth(depthTexture);
+                impl.lastDepthView = depthView;
                 const auto frame = std::make_shared<const SolvedFrame>(
                     solveFrame(request, impl.lastDepth, solverOptions, preview, {}));
                 impl.uploadHeight(height, frame);
@@ -635,6 +697,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             }
             if (!impl.worker->requested(request)) {
                 impl.lastDepth = impl.readDepth(depthTexture);
+                impl.lastDepthView = depthView;
                 impl.worker->submit(
                     SolveWorker::Job{request, impl.lastDepth, solverOptions, preview});
             }
@@ -943,7 +1006,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
         Handle<Texture> ao;
         Handle<Texture> output;
     };
-    const bool useAa = settings.antialiasing;
+    // A reduced render size always ends with the FXAA pass, which also upscales.
+    const bool useAa = settings.antialiasing || scaled;
     const float aoStrength = aoSettings.strength;
     const glm::vec3 background = settings.background;
     const Composite& composite = graph.addPass<Composite>(
@@ -1010,10 +1074,10 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                 d.input = b.read(composite.output);
                 d.output = b.write(output);
             },
-            [&impl, w, h](const RenderGraph::Resources& r, const Fxaa& d) {
+            [&impl, targetW, targetH](const RenderGraph::Resources& r, const Fxaa& d) {
                 auto& g = impl.f();
                 g.glBindFramebuffer(GL_FRAMEBUFFER, glTex(r.get(d.output)).framebuffer());
-                g.glViewport(0, 0, w, h);
+                g.glViewport(0, 0, targetW, targetH);
                 g.glDisable(GL_DEPTH_TEST);
                 g.glDisable(GL_BLEND);
                 const GLuint program = impl.fxaaProgram;
@@ -1025,7 +1089,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                 g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
                 g.glUniform1i(g.glGetUniformLocation(program, "uColor"), 0);
                 g.glUniform2f(g.glGetUniformLocation(program, "uTexel"),
-                              1.0F / static_cast<float>(w), 1.0F / static_cast<float>(h));
+                              1.0F / static_cast<float>(targetW),
+                              1.0F / static_cast<float>(targetH));
                 g.glBindVertexArray(impl.emptyVao);
                 g.glDrawArrays(GL_TRIANGLES, 0, 3);
                 g.glBindVertexArray(0);
@@ -1044,7 +1109,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     graphText_ = graph.toText();
     cueRange_ = impl.cueRange;
     gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-    gl.glViewport(0, 0, w, h);
+    gl.glViewport(0, 0, targetW, targetH);
 
     if (!vssSettings.enabled) {
         status_ = VssFrameStatus{};

@@ -71,6 +71,11 @@ struct FrameSettings {
     AoSettings ao;
     /// FXAA on the composited frame ("fxaa" pass, last).
     bool antialiasing = true;
+    /// Render size relative to the target, in [0.1, 1]: below 1 every pass
+    /// (G-buffer, solve, shading) runs at the reduced size and the "fxaa"
+    /// pass (always run then) upscales into the target with bilinear taps.
+    /// For interactive frames on slow rasterisers; 1 = full resolution.
+    float resolutionScale = 1.0F;
 };
 
 /// The framebuffer a frame is drawn into: `framebuffer` (0 = the default one)
@@ -177,6 +182,10 @@ class FrameRenderer {
     /// options (p, tolerance), and what the graph throws.
     void render(const Camera& camera, const FrameSettings& settings, const FrameTarget& target);
 
+    /// The size the last frame's passes ran at (device pixels): the target's
+    /// size scaled by FrameSettings::resolutionScale.
+    [[nodiscard]] glm::ivec2 lastRenderSize() const noexcept { return renderSize_; }
+
     /// The compiled graph of the last frame (states, reasons, CPU times).
     [[nodiscard]] const std::vector<PassInfo>& lastPasses() const noexcept { return passes_; }
     /// The last frame's graph as text (RenderGraph::toText()).
@@ -196,6 +205,18 @@ class FrameRenderer {
     /// the BOTTOM row (GL order), +Inf on background pixels. Empty before the
     /// first solve. For checks and depth export.
     [[nodiscard]] const Image<float>& lastSolvedDepth() const noexcept;
+
+    /// Asynchronous mode: requests the solve that render(camera, settings,
+    /// target) would request, from the linear depth the last solve request
+    /// read back, when that depth shows the same view (camera, render size,
+    /// scene revision): e.g. the exact solve as soon as the camera stops,
+    /// reusing the last preview frame's depth, without drawing a frame first.
+    /// Returns true when that solve is now queued, running or done (onSolved
+    /// follows when it finishes); false, doing nothing, when the depth shows
+    /// another view, the VSS is off or the mode is synchronous. Needs no GL
+    /// context. Throws InvalidArgumentError for bad solver options.
+    bool requestSolve(const Camera& camera, const FrameSettings& settings,
+                      const FrameTarget& target);
 
     /// Asynchronous mode: blocks until no solve is queued or running (tests).
     void waitForSolves();
@@ -219,6 +240,7 @@ class FrameRenderer {
     std::string graphText_;
     VssFrameStatus status_;
     std::optional<std::pair<double, double>> cueRange_;
+    glm::ivec2 renderSize_{0, 0};
 };
 
 }  // namespace vv::render
