@@ -30,6 +30,21 @@ constexpr int kScaleLutSize = 256;
 /// The height texture's mark for "no VSS here" (NaN is not portable in GLSL).
 constexpr float kNoVss = -1.0F;
 
+/// Draws the full-screen triangle of fullscreen.vert with `vao`, then leaves
+/// no state behind: no texture (1-D or 2-D) on units 0 .. units-1 (unit 0
+/// active afterwards), no program.
+void drawFullscreenAndUnbind(QOpenGLFunctions_4_1_Core& g, GLuint vao, int units) {
+    g.glBindVertexArray(vao);
+    g.glDrawArrays(GL_TRIANGLES, 0, 3);
+    g.glBindVertexArray(0);
+    for (int unit = units - 1; unit >= 0; --unit) {
+        g.glActiveTexture(static_cast<GLenum>(GL_TEXTURE0 + unit));
+        g.glBindTexture(GL_TEXTURE_2D, 0);
+        g.glBindTexture(GL_TEXTURE_1D, 0);
+    }
+    g.glUseProgram(0);
+}
+
 /// FNV-1a over raw bytes.
 class Hasher {
   public:
@@ -887,15 +902,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glUniform1f(loc("uDiffuse"), light.diffuse);
             g.glUniform1f(loc("uSpecular"), light.specular);
             g.glUniform1f(loc("uShininess"), light.shininess);
-            g.glBindVertexArray(impl.emptyVao);
-            g.glDrawArrays(GL_TRIANGLES, 0, 3);
-            g.glBindVertexArray(0);
-            g.glBindTexture(GL_TEXTURE_2D, 0);
-            g.glActiveTexture(GL_TEXTURE1);
-            g.glBindTexture(GL_TEXTURE_1D, 0);
-            g.glActiveTexture(GL_TEXTURE0);
-            g.glBindTexture(GL_TEXTURE_2D, 0);
-            g.glUseProgram(0);
+            drawFullscreenAndUnbind(g, impl.emptyVao, 3);
             checkGlError(g, "VSS shading pass");
         });
 
@@ -959,15 +966,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                 g.glUniform1f(loc("uPixelScale"), pixelScale);
                 g.glUniform1f(loc("uRadius"), aoRadius);
                 g.glUniform1i(loc("uSamples"), 12);
-                g.glBindVertexArray(impl.emptyVao);
-                g.glDrawArrays(GL_TRIANGLES, 0, 3);
-                g.glBindVertexArray(0);
-                g.glBindTexture(GL_TEXTURE_2D, 0);
-                g.glActiveTexture(GL_TEXTURE1);
-                g.glBindTexture(GL_TEXTURE_2D, 0);
-                g.glActiveTexture(GL_TEXTURE0);
-                g.glBindTexture(GL_TEXTURE_2D, 0);
-                g.glUseProgram(0);
+                drawFullscreenAndUnbind(g, impl.emptyVao, 3);
                 checkGlError(g, "SSAO pass");
             });
         aoTexture =
@@ -989,11 +988,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                         g.glActiveTexture(GL_TEXTURE0);
                         g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.raw)).texture());
                         g.glUniform1i(g.glGetUniformLocation(program, "uAo"), 0);
-                        g.glBindVertexArray(impl.emptyVao);
-                        g.glDrawArrays(GL_TRIANGLES, 0, 3);
-                        g.glBindVertexArray(0);
-                        g.glBindTexture(GL_TEXTURE_2D, 0);
-                        g.glUseProgram(0);
+                        drawFullscreenAndUnbind(g, impl.emptyVao, 1);
                         checkGlError(g, "AO blur pass");
                     })
                 .ao;
@@ -1049,15 +1044,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glUniform1i(loc("uUseAo"), useAo ? 1 : 0);
             g.glUniform1f(loc("uAoStrength"), aoStrength);
             g.glUniform3f(loc("uBackground"), background.r, background.g, background.b);
-            g.glBindVertexArray(impl.emptyVao);
-            g.glDrawArrays(GL_TRIANGLES, 0, 3);
-            g.glBindVertexArray(0);
-            g.glBindTexture(GL_TEXTURE_2D, 0);
-            g.glActiveTexture(GL_TEXTURE1);
-            g.glBindTexture(GL_TEXTURE_2D, 0);
-            g.glActiveTexture(GL_TEXTURE0);
-            g.glBindTexture(GL_TEXTURE_2D, 0);
-            g.glUseProgram(0);
+            drawFullscreenAndUnbind(g, impl.emptyVao, 3);
             g.glEnable(GL_DEPTH_TEST);
             checkGlError(g, "composite pass");
         });
