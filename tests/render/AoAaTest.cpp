@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "RenderTestUtil.h"
 #include "vv/core/Error.h"
 #include "vv/io/DemoTree.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -24,39 +25,9 @@ using vv::render::OffscreenOptions;
 using vv::render::OffscreenRenderer;
 using vv::render::PassState;
 
-/// A tube of radius `radius` along x from x0 to x0 + length, axis at (y, z).
-vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z) {
-    constexpr int kSegments = 48;
-    constexpr int kRings = 24;
-    vv::io::Mesh mesh;
-    mesh.name = "tube";
-    for (int i = 0; i <= kRings; ++i) {
-        const float s = static_cast<float>(i) / static_cast<float>(kRings);
-        for (int j = 0; j < kSegments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) /
-                              static_cast<float>(kSegments);
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            mesh.positions.push_back(glm::vec3(x0 + s * length, y, z) + radius * n);
-            mesh.normals.push_back(n);
-        }
-    }
-    const auto segs = static_cast<std::uint32_t>(kSegments);
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(kRings); ++i) {
-        for (std::uint32_t j = 0; j < segs; ++j) {
-            const std::uint32_t a = i * segs + j;
-            const std::uint32_t b = i * segs + (j + 1) % segs;
-            mesh.indices.insert(mesh.indices.end(), {a, a + segs, b, b, a + segs, b + segs});
-        }
-    }
-    return mesh;
-}
-
 /// A near tube on top and a far tube below (as in VssRenderTest).
 vv::io::Scene twoTubes() {
-    vv::io::Scene scene;
-    scene.meshes.push_back(makeTube(1.0F, -10.0F, 20.0F, 3.0F, 4.0F));
-    scene.meshes.push_back(makeTube(1.0F, -10.0F, 20.0F, -3.0F, -4.0F));
-    return scene;
+    return vv::render::test::twoTubes(1.0F, 4.0F, 48, 24);
 }
 
 double luma(QRgb p) {
@@ -94,56 +65,13 @@ std::vector<int> distanceTo(const std::vector<bool>& mask, int w, int h, int cap
     return d;
 }
 
-class AoAaTest : public ::testing::Test {
+class AoAaTest : public vv::render::test::GlRenderTest {
   protected:
-    static void SetUpTestSuite() {
-        if (QGuiApplication::instance() == nullptr) {
-            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-                qEnvironmentVariableIsEmpty("DISPLAY") &&
-                qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
-                qputenv("QT_QPA_PLATFORM", "offscreen");
-            }
-            static int argc = 1;
-            static char name[] = "vv_render_tests";
-            static char* argv[] = {name, nullptr};
-            new QGuiApplication(argc, argv);
-        }
-    }
-
-    static std::unique_ptr<OffscreenRenderer> makeRenderer() {
-        try {
-            return std::make_unique<OffscreenRenderer>();
-        } catch (const vv::Error& e) {
-            ADD_FAILURE() << "no offscreen renderer (run under xvfb-run with "
-                             "QT_QPA_PLATFORM=xcb): "
-                          << e.what();
-            return nullptr;
-        }
-    }
-
     static void keep(const QImage& image, const std::string& name) {
-        image.save(QString(VV_TEST_TMP) + "/aoaa-" + QString::fromStdString(name) + ".png", "PNG");
+        vv::render::test::saveImage(image, "aoaa-", name);
     }
 
-    static PassState state(const OffscreenRenderer& renderer, const std::string& pass) {
-        for (const auto& info : renderer.lastPasses()) {
-            if (info.name == pass) {
-                return info.state;
-            }
-        }
-        ADD_FAILURE() << "no pass " << pass;
-        return PassState::Pending;
-    }
-
-    static OffscreenOptions options() {
-        OffscreenOptions o;
-        o.width = 240;
-        o.height = 180;
-        o.background = {26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
-        o.antialiasing = false;
-        o.ao.enabled = false;
-        return o;
-    }
+    static OffscreenOptions options() { return vv::render::test::exactOptions(240, 180); }
 
     /// Vessel pixels: those that differ from the background with the VSS off.
     static std::vector<bool> vesselMask(OffscreenRenderer& renderer, const vv::io::Scene& scene,

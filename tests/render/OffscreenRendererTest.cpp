@@ -11,6 +11,7 @@
 #include <numbers>
 #include <set>
 
+#include "RenderTestUtil.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/core/Error.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -53,28 +54,15 @@ vv::io::Mesh makeSphere(float radius, glm::vec3 center, int slices = 48, int sta
 /// An open tube along x from 0 to `length` with a "wss" array rising along it
 /// from 0 to 10 and a "pressure" array that is NaN everywhere.
 vv::io::Mesh makeTube(float radius, float length, int segments = 32, int rings = 40) {
-    vv::io::Mesh mesh;
-    mesh.name = "tube";
+    vv::io::Mesh mesh =
+        vv::render::test::makeTube(radius, 0.0F, length, 0.0F, 0.0F, segments, rings);
     vv::io::DataArray wss{"wss", "Pa", 1, {}, false, false};
     vv::io::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
     for (int i = 0; i <= rings; ++i) {
         const float s = static_cast<float>(i) / static_cast<float>(rings);
         for (int j = 0; j < segments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) /
-                              static_cast<float>(segments);
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            mesh.positions.push_back(glm::vec3(s * length, 0.0F, 0.0F) + radius * n);
-            mesh.normals.push_back(n);
             wss.values.push_back(10.0F * s);
             pressure.values.push_back(std::numeric_limits<float>::quiet_NaN());
-        }
-    }
-    const auto segs = static_cast<std::uint32_t>(segments);
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(rings); ++i) {
-        for (std::uint32_t j = 0; j < segs; ++j) {
-            const std::uint32_t a = i * segs + j;
-            const std::uint32_t b = i * segs + (j + 1) % segs;
-            mesh.indices.insert(mesh.indices.end(), {a, a + segs, b, b, a + segs, b + segs});
         }
     }
     mesh.pointArrays.push_back(std::move(wss));
@@ -82,10 +70,7 @@ vv::io::Mesh makeTube(float radius, float length, int segments = 32, int rings =
     return mesh;
 }
 
-glm::vec3 toVec(QRgb p) {
-    return {static_cast<float>(qRed(p)) / 255.0F, static_cast<float>(qGreen(p)) / 255.0F,
-            static_cast<float>(qBlue(p)) / 255.0F};
-}
+using vv::render::test::toVec;
 
 QRgb toRgb(const glm::vec3& c) {
     const auto u = vv::colormaps::toRgba8(c);
@@ -116,45 +101,19 @@ std::vector<QPoint> interiorPixels(const QImage& image, QRgb background) {
     return out;
 }
 
-class OffscreenRendererTest : public ::testing::Test {
+class OffscreenRendererTest : public vv::render::test::GlRenderTest {
   protected:
-    static void SetUpTestSuite() {
-        if (QGuiApplication::instance() == nullptr) {
-            // Without any display, xcb would abort the process; the offscreen
-            // platform lets the tests fail with a message saying GL is missing.
-            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-                qEnvironmentVariableIsEmpty("DISPLAY") &&
-                qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
-                qputenv("QT_QPA_PLATFORM", "offscreen");
-            }
-            static int argc = 1;
-            static char name[] = "vv_render_tests";
-            static char* argv[] = {name, nullptr};
-            // Kept for the whole process: Qt allows one application object.
-            new QGuiApplication(argc, argv);
-        }
-    }
-
-    /// A renderer, or a test failure naming why there is none.
-    static std::unique_ptr<OffscreenRenderer> makeRenderer() {
-        try {
-            return std::make_unique<OffscreenRenderer>();
-        } catch (const vv::Error& e) {
-            ADD_FAILURE() << "no offscreen renderer (run under xvfb-run with "
-                             "QT_QPA_PLATFORM=xcb): "
-                          << e.what();
-            return nullptr;
-        }
-    }
-
     /// Saves `image` under VV_TEST_TMP for people to look at.
     static void keep(const QImage& image, const char* name) {
-        image.save(QString(VV_TEST_TMP) + "/render-" + name + ".png", "PNG");
+        vv::render::test::saveImage(image, "render-", name);
     }
 
-    // Exactly representable in 8 bits, so cleared pixels compare equal.
-    const glm::vec3 background_{26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
-    const QRgb backgroundRgb_ = toRgb(background_);
+    /// Options of the given size that show the vessels against the background.
+    static OffscreenOptions flatOptions(int width, int height) {
+        OffscreenOptions options = vv::render::test::exactOptions(width, height);
+        options.vss.enabled = false;  // these tests check the vessels against the background
+        return options;
+    }
 };
 
 TEST_F(OffscreenRendererTest, ContextIsOpenGl41OrNewer) {
@@ -168,13 +127,7 @@ TEST_F(OffscreenRendererTest, SphereIsDrawnCentredWithPlausibleCoverage) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeSphere(5.0F, {100.0F, -20.0F, 3.0F}));
-    OffscreenOptions options;
-    options.width = 200;
-    options.height = 150;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;   // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(200, 150);
     const QImage image = renderer->render(scene, options);
     keep(image, "sphere");
     ASSERT_EQ(image.size(), QSize(200, 150));
@@ -216,13 +169,7 @@ TEST_F(OffscreenRendererTest, ColourMappedPixelsAreLutColours) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
-    OffscreenOptions options;
-    options.width = 320;
-    options.height = 120;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;   // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(320, 120);
     options.style.array = "wss";
     options.style.lighting = false;  // exact map colours
     const QImage image = renderer->render(scene, options);
@@ -277,13 +224,7 @@ TEST_F(OffscreenRendererTest, LitColourMappedRenderShowsManyHues) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
-    OffscreenOptions options;
-    options.width = 320;
-    options.height = 120;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(320, 120);
     options.style.array = "wss";
     const QImage mapped = renderer->render(scene, options);
     options.style.array.clear();
@@ -310,13 +251,7 @@ TEST_F(OffscreenRendererTest, NanValuesShowTheNoDataColour) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
-    OffscreenOptions options;
-    options.width = 160;
-    options.height = 80;
-    options.background = background_;
-    options.vss.enabled = false;       // these tests check the vessels against the background
-    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(160, 80);
     options.style.array = "pressure";  // all NaN
     options.style.lighting = false;
     const QImage image = renderer->render(scene, options);
@@ -342,13 +277,7 @@ TEST_F(OffscreenRendererTest, PartlyMissingValuesShowNoDataOnlyWhereMissing) {
         }
     }
     scene.meshes.push_back(std::move(tube));
-    OffscreenOptions options;
-    options.width = 320;
-    options.height = 120;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(320, 120);
     options.style.array = "wss";
     options.style.lighting = false;
     const QImage image = renderer->render(scene, options);
@@ -388,13 +317,7 @@ TEST_F(OffscreenRendererTest, ExplicitRangeClampsValues) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
-    OffscreenOptions options;
-    options.width = 160;
-    options.height = 80;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(160, 80);
     options.style.array = "wss";
     options.style.lighting = false;
     options.style.colorMap = vv::colormaps::ColorMap::Cividis;
@@ -431,11 +354,7 @@ TEST_F(OffscreenRendererTest, RendererIsReusableAcrossSizes) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeSphere(1.0F, {0, 0, 0}));
-    OffscreenOptions options;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(32, 32);  // the size is set per frame below
     for (const auto& size : {QSize(32, 32), QSize(400, 100), QSize(17, 301)}) {
         options.width = size.width();
         options.height = size.height();
@@ -451,13 +370,7 @@ TEST_F(OffscreenRendererTest, GivenCameraIsUsed) {
     ASSERT_TRUE(renderer);
     vv::io::Scene scene;
     scene.meshes.push_back(makeSphere(1.0F, {0, 0, 0}));
-    OffscreenOptions options;
-    options.width = 100;
-    options.height = 100;
-    options.background = background_;
-    options.vss.enabled = false;  // these tests check the vessels against the background
-    options.ao.enabled = false;  // exact colours: no AO darkening, no FXAA blending
-    options.antialiasing = false;
+    OffscreenOptions options = flatOptions(100, 100);
     vv::render::Camera camera;
     camera.setViewport(100, 100);
     camera.fit(scene.bounds());

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "RenderTestUtil.h"
 #include "vv/core/Error.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -25,39 +26,10 @@ using vv::render::OffscreenRenderer;
 using vv::render::PassState;
 using vv::render::VesselCue;
 
-/// A tube of radius `radius` along x (x0 .. x0 + length) with its axis at (y, z).
-vv::io::Mesh tube(float radius, float x0, float length, float y, float z) {
-    constexpr int kAround = 40;
-    constexpr int kAlong = 16;
-    vv::io::Mesh mesh;
-    mesh.name = "tube";
-    for (int i = 0; i <= kAlong; ++i) {
-        const float x = x0 + length * static_cast<float>(i) / static_cast<float>(kAlong);
-        for (int j = 0; j < kAround; ++j) {
-            const float angle = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) /
-                                static_cast<float>(kAround);
-            const glm::vec3 normal{0.0F, std::cos(angle), std::sin(angle)};
-            mesh.positions.push_back(glm::vec3(x, y, z) + radius * normal);
-            mesh.normals.push_back(normal);
-        }
-    }
-    const auto around = static_cast<std::uint32_t>(kAround);
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(kAlong); ++i) {
-        for (std::uint32_t j = 0; j < around; ++j) {
-            const std::uint32_t a = i * around + j;
-            const std::uint32_t b = i * around + (j + 1) % around;
-            mesh.indices.insert(mesh.indices.end(), {a, a + around, b, b, a + around, b + around});
-        }
-    }
-    return mesh;
-}
-
 /// Near tube on top (z = +5), far tube below (z = -5); the default camera
 /// looks down -z with +y up. The near one carries an array "speed" (m/s).
 vv::io::Scene twoTubes() {
-    vv::io::Scene scene;
-    scene.meshes.push_back(tube(1.5F, -10.0F, 20.0F, 3.0F, 5.0F));
-    scene.meshes.push_back(tube(1.5F, -10.0F, 20.0F, -3.0F, -5.0F));
+    vv::io::Scene scene = vv::render::test::twoTubes(1.5F, 5.0F, 40, 16);
     for (auto& mesh : scene.meshes) {
         vv::io::DataArray speed;
         speed.name = "speed";
@@ -72,42 +44,17 @@ vv::io::Scene twoTubes() {
 }
 
 glm::vec3 rgb(QRgb p) {
-    return glm::vec3(qRed(p), qGreen(p), qBlue(p)) / 255.0F;
+    return vv::render::test::toVec(p);
 }
 
 float distance(QRgb a, QRgb b) {
     return glm::length(rgb(a) - rgb(b));
 }
 
-class VesselCueTest : public ::testing::Test {
+class VesselCueTest : public vv::render::test::GlRenderTest {
   protected:
-    static void SetUpTestSuite() {
-        if (QGuiApplication::instance() == nullptr) {
-            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-                qEnvironmentVariableIsEmpty("DISPLAY") &&
-                qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
-                qputenv("QT_QPA_PLATFORM", "offscreen");
-            }
-            static int argc = 1;
-            static char name[] = "vv_render_tests";
-            static char* argv[] = {name, nullptr};
-            new QGuiApplication(argc, argv);
-        }
-    }
-
-    static std::unique_ptr<OffscreenRenderer> makeRenderer() {
-        try {
-            return std::make_unique<OffscreenRenderer>();
-        } catch (const vv::Error& e) {
-            ADD_FAILURE() << "no offscreen renderer (run under xvfb-run with "
-                             "QT_QPA_PLATFORM=xcb): "
-                          << e.what();
-            return nullptr;
-        }
-    }
-
     static void keep(const QImage& image, const std::string& name) {
-        image.save(QString(VV_TEST_TMP) + "/cue-" + QString::fromStdString(name) + ".png", "PNG");
+        vv::render::test::saveImage(image, "cue-", name);
     }
 
     OffscreenOptions options(VesselCue cue, bool vss = false) const {
@@ -119,16 +66,6 @@ class VesselCueTest : public ::testing::Test {
         o.cue.cue = cue;
         o.style.array.clear();
         return o;
-    }
-
-    static PassState state(const OffscreenRenderer& renderer, const std::string& pass) {
-        for (const auto& info : renderer.lastPasses()) {
-            if (info.name == pass) {
-                return info.state;
-            }
-        }
-        ADD_FAILURE() << "no pass " << pass;
-        return PassState::Pending;
     }
 
     /// The vessel rows [first, last] of the top (near) and bottom (far) tube
@@ -149,9 +86,6 @@ class VesselCueTest : public ::testing::Test {
         }
         return {runs[0], runs[1]};
     }
-
-    const glm::vec3 background_{26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
-    const QRgb backgroundRgb_ = qRgb(26, 51, 77);
 };
 
 TEST_F(VesselCueTest, DepthColourCuesPaintTheNearTubeRedAndTheFarTubeBlue) {

@@ -12,6 +12,7 @@
 #include <numbers>
 #include <string>
 
+#include "RenderTestUtil.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
@@ -25,95 +26,23 @@ using vv::render::OffscreenOptions;
 using vv::render::OffscreenRenderer;
 using vv::render::PassState;
 
-/// A closed-looking tube (open ends) of radius `radius` along x from x0 to
-/// x0 + length, its axis at (y, z).
-vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z) {
-    constexpr int kSegments = 32;
-    constexpr int kRings = 24;
-    vv::io::Mesh mesh;
-    mesh.name = "tube";
-    for (int i = 0; i <= kRings; ++i) {
-        const float s = static_cast<float>(i) / static_cast<float>(kRings);
-        for (int j = 0; j < kSegments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) /
-                              static_cast<float>(kSegments);
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            mesh.positions.push_back(glm::vec3(x0 + s * length, y, z) + radius * n);
-            mesh.normals.push_back(n);
-        }
-    }
-    const auto segs = static_cast<std::uint32_t>(kSegments);
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(kRings); ++i) {
-        for (std::uint32_t j = 0; j < segs; ++j) {
-            const std::uint32_t a = i * segs + j;
-            const std::uint32_t b = i * segs + (j + 1) % segs;
-            mesh.indices.insert(mesh.indices.end(), {a, a + segs, b, b, a + segs, b + segs});
-        }
-    }
-    return mesh;
-}
-
 /// A near tube on top (z = +4) and a far tube below (z = -4): seen from the
 /// default camera (looking down -z, +y up) the void between them runs from
 /// near (top) to far (bottom).
 vv::io::Scene twoTubes() {
-    vv::io::Scene scene;
-    scene.meshes.push_back(makeTube(1.0F, -10.0F, 20.0F, 3.0F, 4.0F));
-    scene.meshes.push_back(makeTube(1.0F, -10.0F, 20.0F, -3.0F, -4.0F));
-    return scene;
+    return vv::render::test::twoTubes(1.0F, 4.0F, 32, 24);
 }
 
-class VssRenderTest : public ::testing::Test {
+class VssRenderTest : public vv::render::test::GlRenderTest {
   protected:
-    static void SetUpTestSuite() {
-        if (QGuiApplication::instance() == nullptr) {
-            if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-                qEnvironmentVariableIsEmpty("DISPLAY") &&
-                qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
-                qputenv("QT_QPA_PLATFORM", "offscreen");
-            }
-            static int argc = 1;
-            static char name[] = "vv_render_tests";
-            static char* argv[] = {name, nullptr};
-            new QGuiApplication(argc, argv);
-        }
-    }
-
-    static std::unique_ptr<OffscreenRenderer> makeRenderer() {
-        try {
-            return std::make_unique<OffscreenRenderer>();
-        } catch (const vv::Error& e) {
-            ADD_FAILURE() << "no offscreen renderer (run under xvfb-run with "
-                             "QT_QPA_PLATFORM=xcb): "
-                          << e.what();
-            return nullptr;
-        }
-    }
-
     static void keep(const QImage& image, const std::string& name) {
-        image.save(QString(VV_TEST_TMP) + "/vss-" + QString::fromStdString(name) + ".png", "PNG");
+        vv::render::test::saveImage(image, "vss-", name);
     }
 
     OffscreenOptions options() const {
-        OffscreenOptions o;
-        o.width = 240;
-        o.height = 180;
-        o.background = background_;
         // Exact pixel checks below: no AO darkening, no FXAA blending
         // (AoAaTest covers those).
-        o.ao.enabled = false;
-        o.antialiasing = false;
-        return o;
-    }
-
-    static PassState state(const OffscreenRenderer& renderer, const std::string& pass) {
-        for (const auto& info : renderer.lastPasses()) {
-            if (info.name == pass) {
-                return info.state;
-            }
-        }
-        ADD_FAILURE() << "no pass " << pass;
-        return PassState::Pending;
+        return vv::render::test::exactOptions(240, 180);
     }
 
     /// The rows of column x that are vessel (non-void) in a VSS-off image.
@@ -124,9 +53,6 @@ class VssRenderTest : public ::testing::Test {
         }
         return out;
     }
-
-    const glm::vec3 background_{26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
-    const QRgb backgroundRgb_ = qRgb(26, 51, 77);
 };
 
 TEST_F(VssRenderTest, VssOffShowsBackgroundInTheVoidAndCullsTheVssPasses) {

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "RenderTestUtil.h"
+
+#include <QGuiApplication>
+#include <QString>
+#include <cmath>
+#include <cstdint>
+#include <numbers>
+
+#include "vv/core/Error.h"
+
+namespace vv::render::test {
+
+void ensureGuiApplication() {
+    if (QGuiApplication::instance() == nullptr) {
+        // Without any display, xcb would abort the process; the offscreen
+        // platform lets the tests fail with a message saying GL is missing.
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
+            qEnvironmentVariableIsEmpty("DISPLAY") &&
+            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
+            qputenv("QT_QPA_PLATFORM", "offscreen");
+        }
+        static int argc = 1;
+        static char name[] = "vv_render_tests";
+        static char* argv[] = {name, nullptr};
+        // Kept for the whole process: Qt allows one application object.
+        new QGuiApplication(argc, argv);
+    }
+}
+
+std::unique_ptr<OffscreenRenderer> makeRenderer() {
+    try {
+        return std::make_unique<OffscreenRenderer>();
+    } catch (const vv::Error& e) {
+        ADD_FAILURE() << "no offscreen renderer (run under xvfb-run with "
+                         "QT_QPA_PLATFORM=xcb): "
+                      << e.what();
+        return nullptr;
+    }
+}
+
+PassState passState(const OffscreenRenderer& renderer, const std::string& pass) {
+    for (const auto& info : renderer.lastPasses()) {
+        if (info.name == pass) {
+            return info.state;
+        }
+    }
+    ADD_FAILURE() << "no pass " << pass;
+    return PassState::Pending;
+}
+
+void saveImage(const QImage& image, const std::string& prefix, const std::string& name) {
+    image.save(QString(VV_TEST_TMP) + "/" + QString::fromStdString(prefix) +
+                   QString::fromStdString(name) + ".png",
+               "PNG");
+}
+
+vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
+                      int rings) {
+    vv::io::Mesh mesh;
+    mesh.name = "tube";
+    for (int i = 0; i <= rings; ++i) {
+        const float s = static_cast<float>(i) / static_cast<float>(rings);
+        for (int j = 0; j < segments; ++j) {
+            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) /
+                              static_cast<float>(segments);
+            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
+            mesh.positions.push_back(glm::vec3(x0 + s * length, y, z) + radius * n);
+            mesh.normals.push_back(n);
+        }
+    }
+    const auto segs = static_cast<std::uint32_t>(segments);
+    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(rings); ++i) {
+        for (std::uint32_t j = 0; j < segs; ++j) {
+            const std::uint32_t a = i * segs + j;
+            const std::uint32_t b = i * segs + (j + 1) % segs;
+            mesh.indices.insert(mesh.indices.end(), {a, a + segs, b, b, a + segs, b + segs});
+        }
+    }
+    return mesh;
+}
+
+vv::io::Scene twoTubes(float radius, float z, int segments, int rings) {
+    vv::io::Scene scene;
+    scene.meshes.push_back(makeTube(radius, -10.0F, 20.0F, 3.0F, z, segments, rings));
+    scene.meshes.push_back(makeTube(radius, -10.0F, 20.0F, -3.0F, -z, segments, rings));
+    return scene;
+}
+
+OffscreenOptions exactOptions(int width, int height) {
+    OffscreenOptions o;
+    o.width = width;
+    o.height = height;
+    o.background = {26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
+    o.ao.enabled = false;
+    o.antialiasing = false;
+    return o;
+}
+
+glm::vec3 toVec(QRgb p) {
+    return {static_cast<float>(qRed(p)) / 255.0F, static_cast<float>(qGreen(p)) / 255.0F,
+            static_cast<float>(qBlue(p)) / 255.0F};
+}
+
+}  // namespace vv::render::test

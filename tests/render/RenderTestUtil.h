@@ -1,0 +1,64 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Helpers shared by the GL render tests (offscreen, real OpenGL 4.1 context):
+// the QGuiApplication / renderer fixture, tube test scenes, option set-up and
+// pixel helpers.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QImage>
+#include <QRgb>
+#include <glm/glm.hpp>
+#include <memory>
+#include <string>
+
+#include "vv/io/Mesh.h"
+#include "vv/render/OffscreenRenderer.h"
+
+namespace vv::render::test {
+
+/// Creates the process-wide QGuiApplication (offscreen platform without a display).
+void ensureGuiApplication();
+
+/// A renderer, or a test failure naming why there is none.
+std::unique_ptr<OffscreenRenderer> makeRenderer();
+
+/// The state of pass `pass` in the renderer's last frame (a failure if absent).
+PassState passState(const OffscreenRenderer& renderer, const std::string& pass);
+
+/// Saves `image` as VV_TEST_TMP/<prefix><name>.png for people to look at.
+void saveImage(const QImage& image, const std::string& prefix, const std::string& name);
+
+/// An open tube of `radius` along x (x0 .. x0 + length), axis at (y, z).
+vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
+                      int rings);
+
+/// A near tube on top (y = 3, z = +z) and a far tube below (y = -3, z = -z), x in -10 .. 10.
+vv::io::Scene twoTubes(float radius, float z, int segments, int rings);
+
+/// Options of the given size on the test background, AO and FXAA off (exact pixels).
+OffscreenOptions exactOptions(int width, int height);
+
+/// An 8-bit pixel as a colour in [0, 1].
+glm::vec3 toVec(QRgb p);
+
+/// Base fixture: a QGuiApplication for the suite, the test background and renderer helpers.
+class GlRenderTest : public ::testing::Test {
+  protected:
+    /// Creates the QGuiApplication once per process.
+    static void SetUpTestSuite() { ensureGuiApplication(); }
+
+    /// A renderer, or a test failure naming why there is none.
+    static std::unique_ptr<OffscreenRenderer> makeRenderer() { return test::makeRenderer(); }
+
+    /// The state of `pass` in the last frame.
+    static PassState state(const OffscreenRenderer& renderer, const std::string& pass) {
+        return passState(renderer, pass);
+    }
+
+    // Exactly representable in 8 bits, so cleared pixels compare equal.
+    const glm::vec3 background_{26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
+    const QRgb backgroundRgb_ = qRgb(26, 51, 77);
+};
+
+}  // namespace vv::render::test
