@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/core/Log.h"
 
+#include <array>
 #include <atomic>
 #include <cstdio>
 #include <cstdlib>
@@ -13,14 +14,18 @@ namespace {
 
 void stderrSink(Level level, std::string_view category, std::string_view message) {
     static std::mutex mutex;
-    static constexpr const char* kNames[] = {"debug", "info", "warning", "error", "off"};
+    static constexpr std::array<std::string_view, 5> kNames = {"debug", "info", "warning", "error",
+                                                               "off"};
+    std::string line;
+    line.reserve(category.size() + message.size() + 16);
+    line.append("[").append(kNames.at(static_cast<std::size_t>(level))).append("] ");
+    line.append(category).append(": ").append(message).append("\n");
     const std::scoped_lock lock(mutex);
-    std::fprintf(stderr, "[%s] %.*s: %.*s\n", kNames[static_cast<int>(level)],
-                 static_cast<int>(category.size()), category.data(),
-                 static_cast<int>(message.size()), message.data());
+    std::fwrite(line.data(), 1, line.size(), stderr);
 }
 
-std::atomic<Sink> gSink{&stderrSink};
+// The one process-wide sink; atomic so setSink() may race with write().
+std::atomic<Sink> gSink{&stderrSink};  // NOLINT(cppcoreguidelines-avoid-non-const-global-variables)
 
 // Threshold for `category` from VV_LOG: "level" or "cat=level,cat=level".
 Level thresholdFor(std::string_view category) {
@@ -54,14 +59,18 @@ Level thresholdFor(std::string_view category) {
 }  // namespace
 
 Level parseLevel(std::string_view name) noexcept {
-    if (name == "debug")
+    if (name == "debug") {
         return Level::Debug;
-    if (name == "warning")
+    }
+    if (name == "warning") {
         return Level::Warning;
-    if (name == "error")
+    }
+    if (name == "error") {
         return Level::Error;
-    if (name == "off")
+    }
+    if (name == "off") {
         return Level::Off;
+    }
     return Level::Info;
 }
 

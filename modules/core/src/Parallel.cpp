@@ -25,7 +25,7 @@ int workerCount() {
             // fall through to the hardware count
         }
     }
-    return std::max(1U, std::thread::hardware_concurrency());
+    return static_cast<int>(std::max(1U, std::thread::hardware_concurrency()));
 }
 
 void parallelFor(long begin, long end, long grain, const std::function<void(long, long)>& body,

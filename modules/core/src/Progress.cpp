@@ -22,13 +22,12 @@ void Progress::throwIfCancelled() const {
 
 Progress Progress::sub(double begin, double end) const {
     if (!callback_) {
-        return Progress({}, stop_);
+        return {{}, stop_};
     }
-    return Progress(
-        [parent = callback_, begin, end](double f, std::string_view stage) {
-            parent(begin + (end - begin) * std::clamp(f, 0.0, 1.0), stage);
-        },
-        stop_);
+    return {[parent = callback_, begin, end](double f, std::string_view stage) {
+                parent(begin + (end - begin) * std::clamp(f, 0.0, 1.0), stage);
+            },
+            stop_};
 }
 
 }  // namespace vv
