@@ -19,6 +19,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "FastKernel.h"
@@ -27,6 +28,7 @@
 #include "vv/core/Image.h"
 #include "vv/core/Parallel.h"
 #include "vv/vss/Solver.h"
+#include "vv/vss/VoidRegions.h"
 
 namespace {
 
@@ -94,71 +96,13 @@ Frame makeFrame(int w, int h, double scale, double ox, double oy, std::uint64_t 
                 {x1, y1, b.a + spread * (0.6 + 0.8 * rng.uniform()), b.r * 0.72, z1, b.d + 1});
         }
     }
+    // The library's labelling and contours (tested in VoidRegionsTest).
+    VoidRegionSet set = findVoidRegions(mask.view(), depth.view());
     Frame f;
-    f.labels = Image<std::int32_t>(w, h, kVesselLabel);
-    std::vector<std::pair<int, int>> stack;
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            if (mask(x, y) != 0 || f.labels(x, y) != kVesselLabel) {
-                continue;
-            }
-            VoidRegion r;
-            r.id = static_cast<std::int32_t>(f.regions.size());
-            r.x0 = x;
-            r.y0 = y;
-            r.x1 = x + 1;
-            r.y1 = y + 1;
-            f.labels(x, y) = r.id;
-            stack.emplace_back(x, y);
-            while (!stack.empty()) {
-                const auto [cx, cy] = stack.back();
-                stack.pop_back();
-                ++r.pixelCount;
-                r.x0 = std::min(r.x0, cx);
-                r.y0 = std::min(r.y0, cy);
-                r.x1 = std::max(r.x1, cx + 1);
-                r.y1 = std::max(r.y1, cy + 1);
-                const int nx[4] = {cx - 1, cx + 1, cx, cx};
-                const int ny[4] = {cy, cy, cy - 1, cy + 1};
-                for (int k = 0; k < 4; ++k) {
-                    if (nx[k] >= 0 && ny[k] >= 0 && nx[k] < w && ny[k] < h &&
-                        mask(nx[k], ny[k]) == 0 && f.labels(nx[k], ny[k]) == kVesselLabel) {
-                        f.labels(nx[k], ny[k]) = r.id;
-                        stack.emplace_back(nx[k], ny[k]);
-                    }
-                }
-            }
-            f.voidPixels += r.pixelCount;
-            f.regions.push_back(r);
-        }
-    }
-    // contours: vessel pixels 8-adjacent to each region (deduplicated per region)
-    std::vector<std::vector<std::int32_t>> seen(static_cast<std::size_t>(h),
-                                                std::vector<std::int32_t>());
-    Image<std::int32_t> stamp(w, h, -1);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            if (mask(x, y) == 0) {
-                continue;
-            }
-            std::int32_t ids[9];
-            int nIds = 0;
-            for (int dy = -1; dy <= 1; ++dy) {
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const int vx = x + dx, vy = y + dy;
-                    if (vx < 0 || vy < 0 || vx >= w || vy >= h) {
-                        continue;
-                    }
-                    const std::int32_t id = f.labels(vx, vy);
-                    if (id >= 0 && std::find(ids, ids + nIds, id) == ids + nIds) {
-                        ids[nIds++] = id;
-                    }
-                }
-            }
-            for (int k = 0; k < nIds; ++k) {
-                f.regions[static_cast<std::size_t>(ids[k])].contour.push_back({x, y, depth(x, y)});
-            }
-        }
+    f.labels = std::move(set.labels);
+    f.regions = std::move(set.regions);
+    for (const VoidRegion& r : f.regions) {
+        f.voidPixels += r.pixelCount;
     }
     return f;
 }

@@ -26,6 +26,7 @@
 #include <numbers>
 #include <set>
 
+#include "ImageStats.h"
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
 #include "vv/colormaps/DepthScale.h"
@@ -134,18 +135,7 @@ long vesselPixels(const QImage& image, QRgb background) {
     return count;
 }
 
-std::size_t hueBins(const QImage& image) {
-    std::set<int> bins;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor c(image.pixel(x, y));
-            if (c.hsvSaturation() > 60 && c.value() > 60) {
-                bins.insert(c.hsvHue() / 15);
-            }
-        }
-    }
-    return bins.size();
-}
+using vv::test::hueBins;
 
 class GuiTest : public ::testing::Test {
   protected:

@@ -16,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "ImageStats.h"
 #include "cli/Cli.h"
 
 namespace {
@@ -113,18 +114,7 @@ long countNot(const QImage& image, QRgb background) {
     return count;
 }
 
-std::size_t hueBins(const QImage& image) {
-    std::set<int> bins;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            const QColor c(image.pixel(x, y));
-            if (c.hsvSaturation() > 60 && c.value() > 60) {
-                bins.insert(c.hsvHue() / 15);
-            }
-        }
-    }
-    return bins.size();
-}
+using vv::test::hueBins;
 
 class RenderCommandTest : public ::testing::Test {
   protected:
