@@ -9,10 +9,13 @@ in vec3 vNormalView;
 in vec2 vScalar;
 
 uniform uint uObjectId;  // 1 + the mesh's index in the scene; 0 = no object
+uniform bool uUseArray;  // false: no array shown, the parameter is NaN everywhere
 
 layout(location = 0) out float fragLinearDepth;
-layout(location = 1) out vec4 fragNormal;  // view space, facing the viewer, w = 1
+// View space, facing the viewer; w = 1 where the parameter value is valid, else 0.
+layout(location = 1) out vec4 fragNormal;
 layout(location = 2) out uint fragObjectId;
+layout(location = 3) out float fragParameter;  // the array value, NaN = no data
 
 void main() {
     fragLinearDepth = -vPositionView.z;
@@ -20,6 +23,9 @@ void main() {
     if (dot(n, -vPositionView) < 0.0) {
         n = -n;
     }
-    fragNormal = vec4(n, 1.0);
+    // A fragment between a valid and an invalid vertex belongs to the nearer one.
+    bool valid = uUseArray && vScalar.y >= 0.5;
+    fragNormal = vec4(n, valid ? 1.0 : 0.0);
     fragObjectId = uObjectId;
+    fragParameter = valid ? vScalar.x : uintBitsToFloat(0x7fc00000u);
 }

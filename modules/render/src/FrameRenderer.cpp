@@ -8,10 +8,12 @@
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <mutex>
 #include <optional>
 #include <stop_token>
+#include <string>
 #include <thread>
 #include <utility>
 
@@ -610,8 +612,11 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
         Handle<Texture> linearDepth;
         Handle<Texture> normal;
         Handle<Texture> objectId;
+        Handle<Texture> parameter;
         Handle<Texture> depth;
     };
+    // The G-buffer's parameter values change with the array shown.
+    const std::uint64_t arrayKey = std::hash<std::string>{}(meshes.style().array);
     const Geometry& geometry = graph.addPass<Geometry>(
         "geometry",
         [&](RenderGraph::Builder& b, Geometry& d) {
@@ -619,11 +624,14 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             b.dependsOn("projection", projection);
             b.dependsOn("viewport", viewport);
             b.dependsOn("scene", sceneRevision);
+            b.dependsOn("array", arrayKey);
             d.linearDepth =
                 b.write(b.createPersistent<Texture>("linear-depth", size(TextureFormat::R32F)));
             d.normal = b.write(b.createPersistent<Texture>("normal", size(TextureFormat::RGBA16F)));
             d.objectId =
                 b.write(b.createPersistent<Texture>("object-id", size(TextureFormat::R32UI)));
+            d.parameter =
+                b.write(b.createPersistent<Texture>("parameter", size(TextureFormat::R32F)));
             d.depth = b.write(b.createPersistent<Texture>("depth", size(TextureFormat::Depth32F)));
         },
         [&impl, &meshes, camera, w, h](const RenderGraph::Resources& r, const Geometry& d) {
@@ -635,11 +643,13 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                                      glTex(r.get(d.normal)).texture(), 0);
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT2, GL_TEXTURE_2D,
                                      glTex(r.get(d.objectId)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT3, GL_TEXTURE_2D,
+                                     glTex(r.get(d.parameter)).texture(), 0);
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
                                      glTex(r.get(d.depth)).texture(), 0);
             const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1,
-                                      GL_COLOR_ATTACHMENT2};
-            g.glDrawBuffers(3, buffers);
+                                      GL_COLOR_ATTACHMENT2, GL_COLOR_ATTACHMENT3};
+            g.glDrawBuffers(4, buffers);
             if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
                 throw RenderError("the G-buffer framebuffer is incomplete");
             }
@@ -651,7 +661,9 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             const float one = 1.0F;
             g.glClearBufferfv(GL_COLOR, 0, far);
             g.glClearBufferfv(GL_COLOR, 1, zero);
+            const float noData[4] = {std::numeric_limits<float>::quiet_NaN(), 0.0F, 0.0F, 0.0F};
             g.glClearBufferuiv(GL_COLOR, 2, noObject);
+            g.glClearBufferfv(GL_COLOR, 3, noData);
             g.glClearBufferfv(GL_DEPTH, 0, &one);
             meshes.drawGBuffer(camera);
             checkGlError(g, "geometry pass");
@@ -721,7 +733,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
 
-    // 2. Vessel shading: colour + parameter, depth-tested against the G-buffer.
+    // 2. Vessel shading: deferred, from the G-buffer (one shaded sample per pixel).
     // Declared after the solve: a vessel cue normalises depth with the VSS's
     // dmin / dmax when a VSS is shown, else with the visible vessels' range,
     // which the "depth-range" pass reads back (cached while the view stays).
@@ -782,11 +794,13 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     cueKey.fresnelExponent = cueSettings.fresnelExponent;
     cueKey.background = settings.background;
     struct VesselShading {
-        Handle<Texture> depth;
+        Handle<Texture> linearDepth;
+        Handle<Texture> normal;
+        Handle<Texture> objectId;
+        Handle<Texture> parameter;
         Handle<Texture> range;
         Handle<Texture> height;
         Handle<Texture> color;
-        Handle<Texture> parameter;
     };
     std::optional<std::pair<double, double>>& cueRange = impl.cueRange;
     cueRange.reset();
@@ -795,7 +809,10 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
         "vessel-shading",
         [&](RenderGraph::Builder& b, VesselShading& d) {
             b.dependsOn("cue", cueKey);
-            d.depth = b.read(geometry.depth);
+            d.linearDepth = b.read(geometry.linearDepth);
+            d.normal = b.read(geometry.normal);
+            d.objectId = b.read(geometry.objectId);
+            d.parameter = b.read(geometry.parameter);
             if (cueUsesDepth) {
                 d.range = b.read(visibleRange);
             }
@@ -803,7 +820,6 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                 d.height = b.read(solve.height);
             }
             d.color = b.write(b.create<Texture>("vessel-color", size(TextureFormat::RGBA8)));
-            d.parameter = b.write(b.create<Texture>("parameter", size(TextureFormat::R32F)));
         },
         [&impl, &meshes, &cueRange, camera, cueSettings, cueUsesDepth, cueUsesVss, fogColor, w, h](
             const RenderGraph::Resources& r, const VesselShading& d) {
@@ -825,21 +841,19 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glBindFramebuffer(GL_FRAMEBUFFER, impl.shadingFbo);
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
                                      glTex(r.get(d.color)).texture(), 0);
-            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
-                                     glTex(r.get(d.parameter)).texture(), 0);
-            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
-                                     glTex(r.get(d.depth)).texture(), 0);
-            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
-            g.glDrawBuffers(2, buffers);
+            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0};
+            g.glDrawBuffers(1, buffers);
             if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
                 throw RenderError("the vessel shading framebuffer is incomplete");
             }
             g.glViewport(0, 0, w, h);
-            const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
-            const float noData[4] = {std::numeric_limits<float>::quiet_NaN(), 0.0F, 0.0F, 0.0F};
-            g.glClearBufferfv(GL_COLOR, 0, clear);
-            g.glClearBufferfv(GL_COLOR, 1, noData);
-            meshes.draw(camera, MeshRenderer::DepthMode::TestOnly, cue);
+            meshes.shadeGBuffer(
+                camera,
+                MeshRenderer::GBufferTextures{.linearDepth = glTex(r.get(d.linearDepth)).texture(),
+                                              .normal = glTex(r.get(d.normal)).texture(),
+                                              .parameter = glTex(r.get(d.parameter)).texture(),
+                                              .objectId = glTex(r.get(d.objectId)).texture()},
+                cue);
             checkGlError(g, "vessel shading pass");
         });
 

@@ -8,7 +8,9 @@
 #include <QSurfaceFormat>
 #include <algorithm>
 #include <cstdio>
+#include <span>
 #include <string>
+#include <vector>
 
 #include "vv/core/Error.h"
 
@@ -253,15 +255,26 @@ std::string readShader(std::string_view resource) {
     return file.readAll().toStdString();
 }
 
-GLuint compile(QOpenGLFunctions_4_1_Core& gl, GLenum type, std::string_view resource) {
-    const std::string source = readShader(resource);
+/// One shader from the concatenation of `resources` (the first has #version).
+GLuint compile(QOpenGLFunctions_4_1_Core& gl, GLenum type,
+               std::span<const std::string_view> resources) {
+    std::vector<std::string> sources;
+    std::string names;
+    for (const std::string_view resource : resources) {
+        sources.push_back(readShader(resource));
+        names += (names.empty() ? "" : " + ") + std::string(resource);
+    }
+    std::vector<const char*> texts;
+    std::vector<GLint> lengths;
+    for (const std::string& source : sources) {
+        texts.push_back(source.c_str());
+        lengths.push_back(static_cast<GLint>(source.size()));
+    }
     const GLuint shader = gl.glCreateShader(type);
     if (shader == 0) {
-        throw RenderError(std::string(resource), "glCreateShader failed");
+        throw RenderError(names, "glCreateShader failed");
     }
-    const char* text = source.c_str();
-    const auto length = static_cast<GLint>(source.size());
-    gl.glShaderSource(shader, 1, &text, &length);
+    gl.glShaderSource(shader, static_cast<GLsizei>(texts.size()), texts.data(), lengths.data());
     gl.glCompileShader(shader);
     GLint ok = GL_FALSE;
     gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
@@ -270,8 +283,9 @@ GLuint compile(QOpenGLFunctions_4_1_Core& gl, GLenum type, std::string_view reso
         gl.glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &size);
         std::string log(static_cast<std::size_t>(std::max(size, 1)), '\0');
         gl.glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
+        log.resize(std::char_traits<char>::length(log.c_str()));
         gl.glDeleteShader(shader);
-        throw RenderError(std::string(resource), "shader does not compile:\n" + log);
+        throw RenderError(names, "shader does not compile:\n" + log);
     }
     return shader;
 }
@@ -280,10 +294,17 @@ GLuint compile(QOpenGLFunctions_4_1_Core& gl, GLenum type, std::string_view reso
 
 unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexResource,
                       std::string_view fragmentResource, std::string_view what) {
-    const GLuint vertex = compile(gl, GL_VERTEX_SHADER, vertexResource);
+    const std::string_view fragment[] = {fragmentResource};
+    return buildProgram(gl, vertexResource, std::span<const std::string_view>(fragment), what);
+}
+
+unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexResource,
+                      std::span<const std::string_view> fragmentResources, std::string_view what) {
+    const std::string_view vertexParts[] = {vertexResource};
+    const GLuint vertex = compile(gl, GL_VERTEX_SHADER, vertexParts);
     GLuint fragment = 0;
     try {
-        fragment = compile(gl, GL_FRAGMENT_SHADER, fragmentResource);
+        fragment = compile(gl, GL_FRAGMENT_SHADER, fragmentResources);
     } catch (...) {
         gl.glDeleteShader(vertex);
         throw;
@@ -304,6 +325,7 @@ unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexReso
         gl.glGetProgramiv(program, GL_INFO_LOG_LENGTH, &size);
         std::string log(static_cast<std::size_t>(std::max(size, 1)), '\0');
         gl.glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
+        log.resize(std::char_traits<char>::length(log.c_str()));
         gl.glDeleteProgram(program);
         throw RenderError(std::string(what) + " shader program does not link:\n" + log);
     }

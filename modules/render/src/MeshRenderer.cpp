@@ -38,84 +38,8 @@ std::string lower(std::string s) {
     return s;
 }
 
-QByteArray readResource(const QString& path) {
-    QFile file(path);
-    if (!file.open(QIODevice::ReadOnly)) {
-        throw RenderError(path.toStdString(), "cannot read shader resource");
-    }
-    return file.readAll();
-}
-
-std::string shaderLog(QOpenGLFunctions_4_1_Core& gl, GLuint shader) {
-    GLint length = 0;
-    gl.glGetShaderiv(shader, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    gl.glGetShaderInfoLog(shader, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    log.resize(std::char_traits<char>::length(log.c_str()));
-    return log;
-}
-
-std::string programLog(QOpenGLFunctions_4_1_Core& gl, GLuint program) {
-    GLint length = 0;
-    gl.glGetProgramiv(program, GL_INFO_LOG_LENGTH, &length);
-    std::string log(static_cast<std::size_t>(std::max(length, 1)), '\0');
-    gl.glGetProgramInfoLog(program, static_cast<GLsizei>(log.size()), nullptr, log.data());
-    log.resize(std::char_traits<char>::length(log.c_str()));
-    return log;
-}
-
-GLuint compileShader(QOpenGLFunctions_4_1_Core& gl, GLenum type, const QString& resource) {
-    const QByteArray source = readResource(resource);
-    const GLuint shader = gl.glCreateShader(type);
-    if (shader == 0) {
-        throw RenderError(resource.toStdString(), "glCreateShader failed");
-    }
-    const char* text = source.constData();
-    const GLint length = static_cast<GLint>(source.size());
-    gl.glShaderSource(shader, 1, &text, &length);
-    gl.glCompileShader(shader);
-    GLint ok = GL_FALSE;
-    gl.glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        const std::string log = shaderLog(gl, shader);
-        gl.glDeleteShader(shader);
-        throw RenderError(resource.toStdString(), "shader does not compile:\n" + log);
-    }
-    return shader;
-}
-
-/// mesh.vert with `fragmentResource`, attribute locations bound.
-GLuint linkProgram(QOpenGLFunctions_4_1_Core& f, const QString& fragmentResource,
-                   const char* what) {
-    const GLuint vertex =
-        compileShader(f, GL_VERTEX_SHADER, QStringLiteral(":/vv/shaders/mesh.vert"));
-    GLuint fragment = 0;
-    try {
-        fragment = compileShader(f, GL_FRAGMENT_SHADER, fragmentResource);
-    } catch (...) {
-        f.glDeleteShader(vertex);
-        throw;
-    }
-    const GLuint program = f.glCreateProgram();
-    f.glAttachShader(program, vertex);
-    f.glAttachShader(program, fragment);
-    f.glBindAttribLocation(program, kPositionLocation, "aPosition");
-    f.glBindAttribLocation(program, kNormalLocation, "aNormal");
-    f.glBindAttribLocation(program, kScalarLocation, "aScalar");
-    f.glLinkProgram(program);
-    f.glDetachShader(program, vertex);
-    f.glDetachShader(program, fragment);
-    f.glDeleteShader(vertex);
-    f.glDeleteShader(fragment);
-    GLint ok = GL_FALSE;
-    f.glGetProgramiv(program, GL_LINK_STATUS, &ok);
-    if (ok != GL_TRUE) {
-        const std::string log = programLog(f, program);
-        f.glDeleteProgram(program);
-        throw RenderError(std::string(what) + " shader program does not link:\n" + log);
-    }
-    return program;
-}
+constexpr std::string_view kMaterial = ":/vv/shaders/vessel_shading.glsl";
+constexpr std::string_view kMeshVertex = ":/vv/shaders/mesh.vert";
 
 /// The per-vertex (value, valid) pairs of `name` on `mesh`; (0, 0) where the
 /// value is NaN / infinite or the mesh lacks the array.
@@ -171,6 +95,8 @@ constexpr std::array kAllCues{VesselCue::None, VesselCue::Chromadepth, VesselCue
 constexpr int kCueLutSize = 256;
 /// Texture unit of the cue's depth-scale table (unit 0 holds the colour map).
 constexpr GLint kCueLutUnit = 1;
+/// shadeGBuffer() binds the G-buffer's four textures from this unit on.
+constexpr GLint kGBufferFirstUnit = 2;
 
 }  // namespace
 
@@ -337,6 +263,8 @@ void MeshRenderer::initialize() {
     meshes_.clear();
     program_ = 0;
     gbufferProgram_ = 0;
+    deferredProgram_ = 0;
+    emptyVao_ = 0;
     lutTexture_ = 0;
     cueLutTexture_ = 0;
     uploadedMap_.reset();
@@ -344,14 +272,24 @@ void MeshRenderer::initialize() {
     scalarsUploadedForArray_ = false;
     auto& f = *gl_;
 
-    program_ = linkProgram(f, QStringLiteral(":/vv/shaders/mesh.frag"), "mesh");
+    // mesh.vert binds its attributes with layout qualifiers.
+    const std::string_view forward[] = {kMaterial, ":/vv/shaders/mesh.frag"};
+    const std::string_view deferred[] = {kMaterial, ":/vv/shaders/vessel.frag"};
+    program_ = buildProgram(f, kMeshVertex, forward, "mesh");
     try {
-        gbufferProgram_ = linkProgram(f, QStringLiteral(":/vv/shaders/gbuffer.frag"), "G-buffer");
+        gbufferProgram_ = buildProgram(f, kMeshVertex, ":/vv/shaders/gbuffer.frag", "G-buffer");
+        deferredProgram_ =
+            buildProgram(f, ":/vv/shaders/fullscreen.vert", deferred, "deferred vessel shading");
     } catch (...) {
         f.glDeleteProgram(program_);
         program_ = 0;
+        if (gbufferProgram_ != 0) {
+            f.glDeleteProgram(gbufferProgram_);
+            gbufferProgram_ = 0;
+        }
         throw;
     }
+    f.glGenVertexArrays(1, &emptyVao_);
 
     f.glGenTextures(1, &lutTexture_);
     f.glGenTextures(1, &cueLutTexture_);
@@ -389,6 +327,14 @@ void MeshRenderer::release() noexcept {
     if (gbufferProgram_ != 0) {
         f.glDeleteProgram(gbufferProgram_);
         gbufferProgram_ = 0;
+    }
+    if (deferredProgram_ != 0) {
+        f.glDeleteProgram(deferredProgram_);
+        deferredProgram_ = 0;
+    }
+    if (emptyVao_ != 0) {
+        f.glDeleteVertexArrays(1, &emptyVao_);
+        emptyVao_ = 0;
     }
     uploadedMap_.reset();
     scalarsUploadedForArray_ = false;
@@ -554,42 +500,25 @@ void MeshRenderer::uploadCueLut(colormaps::DepthScale scale) {
     uploadedCueScale_ = scale;
 }
 
-void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
-    auto& f = gl();
-    if (program_ == 0) {
-        throw RenderError("MeshRenderer::draw without a shader program");
-    }
-    if (meshes_.empty()) {
-        return;
-    }
+void MeshRenderer::prepareMaterial(const VesselCueParameters& cue) {
     if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
         uploadScalars();
     }
     uploadLut();
-    const auto cueScale = cueDepthScale(cue.cue);
-    if (cueScale) {
+    if (const auto cueScale = cueDepthScale(cue.cue)) {
         uploadCueLut(*cueScale);
     }
+}
 
-    const glm::mat4 view = camera.viewMatrix();
-    const glm::mat4 projection = camera.projectionMatrix();
-    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
-    // An array without any finite value shows no-data everywhere.
+void MeshRenderer::useMaterial(unsigned program, const VesselCueParameters& cue) {
+    auto& f = gl();
     const bool useArray = !style_.array.empty();
+    // An array without any finite value shows no-data everywhere.
     const std::pair<float, float> range = effectiveRange_.value_or(std::make_pair(0.0F, 1.0F));
     const glm::vec3 noData = colormaps::noDataColor(style_.colorMap);
     const Lighting& light = sceneLighting();
-
-    f.glEnable(GL_DEPTH_TEST);
-    f.glDepthFunc(mode == DepthMode::Write ? GL_LESS : GL_LEQUAL);
-    f.glDepthMask(mode == DepthMode::Write ? GL_TRUE : GL_FALSE);
-    f.glDisable(GL_CULL_FACE);
-    f.glDisable(GL_BLEND);
-    f.glUseProgram(program_);
-    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
-    f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
-    f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
-    f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+    f.glUseProgram(program);
+    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program, name); };
     f.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
     f.glUniform3f(loc("uBaseColor"), style_.vesselColor.r, style_.vesselColor.g,
                   style_.vesselColor.b);
@@ -612,22 +541,92 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
     f.glUniform1f(loc("uSpecular"), light.specular);
     f.glUniform1f(loc("uShininess"), light.shininess);
     f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
-    f.glBindTexture(GL_TEXTURE_1D, cueScale ? cueLutTexture_ : 0U);
+    f.glBindTexture(GL_TEXTURE_1D, cueDepthScale(cue.cue) ? cueLutTexture_ : 0U);
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
+}
 
-    for (const auto& m : meshes_) {
-        f.glBindVertexArray(m.vao);
-        f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
-    }
-    f.glBindVertexArray(0);
+void MeshRenderer::unbindMaterial() {
+    auto& f = gl();
     f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
     f.glBindTexture(GL_TEXTURE_1D, 0);
     f.glActiveTexture(GL_TEXTURE0);
     f.glBindTexture(GL_TEXTURE_1D, 0);
     f.glUseProgram(0);
+}
+
+void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
+    auto& f = gl();
+    if (program_ == 0) {
+        throw RenderError("MeshRenderer::draw without a shader program");
+    }
+    if (meshes_.empty()) {
+        return;
+    }
+    prepareMaterial(cue);
+    const glm::mat4 view = camera.viewMatrix();
+    const glm::mat4 projection = camera.projectionMatrix();
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
+
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDepthFunc(mode == DepthMode::Write ? GL_LESS : GL_LEQUAL);
+    f.glDepthMask(mode == DepthMode::Write ? GL_TRUE : GL_FALSE);
+    f.glDisable(GL_CULL_FACE);
+    f.glDisable(GL_BLEND);
+    useMaterial(program_, cue);
+    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
+    f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
+    f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
+    f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+    for (const auto& m : meshes_) {
+        f.glBindVertexArray(m.vao);
+        f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    f.glBindVertexArray(0);
+    unbindMaterial();
     f.glDepthMask(GL_TRUE);
     throwOnGlError(f, "drawing meshes");
+}
+
+void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbuffer,
+                                const VesselCueParameters& cue) {
+    auto& f = gl();
+    if (deferredProgram_ == 0) {
+        throw RenderError("MeshRenderer::shadeGBuffer without a shader program");
+    }
+    prepareMaterial(cue);
+    f.glDisable(GL_DEPTH_TEST);
+    f.glDepthMask(GL_FALSE);
+    f.glDisable(GL_BLEND);
+    useMaterial(deferredProgram_, cue);
+    const auto loc = [&](const char* name) {
+        return f.glGetUniformLocation(deferredProgram_, name);
+    };
+    // A perspective projection maps view x / -z to ndc x * P[0][0] (y likewise).
+    const glm::mat4 projection = camera.projectionMatrix();
+    f.glUniform2f(loc("uViewScale"), 1.0F / projection[0][0], 1.0F / projection[1][1]);
+    const std::array<std::pair<const char*, unsigned>, 4> inputs = {{
+        {"uLinearDepth", gbuffer.linearDepth},
+        {"uNormal", gbuffer.normal},
+        {"uParameter", gbuffer.parameter},
+        {"uObjectId", gbuffer.objectId},
+    }};
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        const auto unit = static_cast<GLint>(kGBufferFirstUnit + i);
+        f.glUniform1i(loc(inputs[i].first), unit);
+        f.glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(unit));
+        f.glBindTexture(GL_TEXTURE_2D, inputs[i].second);
+    }
+    f.glBindVertexArray(emptyVao_);
+    f.glDrawArrays(GL_TRIANGLES, 0, 3);
+    f.glBindVertexArray(0);
+    for (std::size_t i = 0; i < inputs.size(); ++i) {
+        f.glActiveTexture(GL_TEXTURE0 + static_cast<GLenum>(kGBufferFirstUnit + i));
+        f.glBindTexture(GL_TEXTURE_2D, 0);
+    }
+    unbindMaterial();
+    f.glDepthMask(GL_TRUE);
+    throwOnGlError(f, "shading the vessels from the G-buffer");
 }
 
 void MeshRenderer::drawGBuffer(const Camera& camera) {
@@ -637,6 +636,9 @@ void MeshRenderer::drawGBuffer(const Camera& camera) {
     }
     if (meshes_.empty()) {
         return;
+    }
+    if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
+        uploadScalars();
     }
     const glm::mat4 view = camera.viewMatrix();
     const glm::mat4 projection = camera.projectionMatrix();
@@ -653,6 +655,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera) {
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+    f.glUniform1i(loc("uUseArray"), style_.array.empty() ? 0 : 1);
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
     for (const auto& m : meshes_) {

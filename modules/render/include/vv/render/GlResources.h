@@ -4,6 +4,7 @@
 #include <chrono>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -146,5 +147,12 @@ namespace vv::render {
 /// compile or the program does not link.
 [[nodiscard]] unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexResource,
                                     std::string_view fragmentResource, std::string_view what);
+
+/// Like buildProgram() above, with a fragment shader made of several resources
+/// concatenated in order (the first one starts with #version; e.g. a shared
+/// material followed by a main()). Errors name every part.
+[[nodiscard]] unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexResource,
+                                    std::span<const std::string_view> fragmentResources,
+                                    std::string_view what);
 
 }  // namespace vv::render

@@ -169,11 +169,30 @@ class MeshRenderer {
     /// The geometry pass: draws the meshes into the currently bound G-buffer,
     /// draw buffer 0 = linear view depth (R32F, distance along the viewing
     /// axis in scene units), 1 = view-space normal facing the viewer
-    /// (RGBA16F), 2 = object id (R32UI, 1 + mesh index). Depth test GL_LESS
+    /// (RGBA16F, w = 1 where the parameter is valid, else 0), 2 = object id
+    /// (R32UI, 1 + mesh index), 3 = parameter value (R32F, NaN = no data or
+    /// no array chosen; ignored without a fourth attachment). Depth test GL_LESS
     /// with writes; does not clear. Same vertex shader as draw(), so a later
     /// draw(camera, DepthMode::TestOnly) hits exactly the same depths.
     /// Throws like draw().
     void drawGBuffer(const Camera& camera);
+
+    /// The G-buffer drawGBuffer() filled, as GL texture names.
+    struct GBufferTextures {
+        unsigned linearDepth = 0;  ///< R32F
+        unsigned normal = 0;       ///< RGBA16F, w = 1 where the parameter is valid
+        unsigned parameter = 0;    ///< R32F
+        unsigned objectId = 0;     ///< R32UI
+    };
+
+    /// Deferred shading: one full-screen triangle into the currently bound
+    /// framebuffer (draw buffer 0), every covered G-buffer pixel shaded with
+    /// the same material as draw() (colour, alpha 1), uncovered pixels
+    /// (object id 0) cleared to transparent black. No depth test; the caller
+    /// sets the viewport to the G-buffer's size. `camera` must be the one
+    /// the G-buffer was drawn with. Throws like draw().
+    void shadeGBuffer(const Camera& camera, const GBufferTextures& gbuffer,
+                      const VesselCueParameters& cue = {});
 
     /// Deletes all GL objects; the context of initialize() must be current.
     /// Safe to call more than once.
@@ -188,12 +207,19 @@ class MeshRenderer {
     void uploadScalars();
     void uploadLut();
     void uploadCueLut(colormaps::DepthScale scale);
+    /// Uploads what the material needs (scalars, LUTs) if stale.
+    void prepareMaterial(const VesselCueParameters& cue);
+    /// Makes `program` current with the material's uniforms and LUT textures.
+    void useMaterial(unsigned program, const VesselCueParameters& cue);
+    void unbindMaterial();
     [[nodiscard]] QOpenGLFunctions_4_1_Core& gl() const;
 
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
     QOpenGLContext* context_ = nullptr;
     unsigned program_ = 0;
     unsigned gbufferProgram_ = 0;
+    unsigned deferredProgram_ = 0;
+    unsigned emptyVao_ = 0;
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;
     std::vector<GpuMesh> meshes_;
