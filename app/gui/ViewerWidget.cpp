@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/ViewerWidget.h"
 
+#include <QFutureWatcher>
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
@@ -9,11 +10,14 @@
 #include <QPainter>
 #include <QTimer>
 #include <QWheelEvent>
+#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <utility>
 
 #include "vv/core/Error.h"
+#include "vv/core/Log.h"
+#include "vv/io/MeshSimplify.h"
 #include "vv/render/LegendPainter.h"
 
 namespace vv::gui {
@@ -68,6 +72,8 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 ViewerWidget::~ViewerWidget() {
+    cancelPreviewGeometry();
+    previewFuture_.waitForFinished();
     releaseGl();
 }
 
@@ -124,6 +130,7 @@ void ViewerWidget::releaseGl() {
 
 void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     scene_ = std::move(scene);
+    startPreviewGeometry();
     ++sceneRevision_;
     sceneDirty_ = true;
     framesWithScene_ = 0;
@@ -132,6 +139,56 @@ void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     camera_.fit(scene_ ? scene_->bounds() : Aabb{});
     autoFit_ = true;
     update();
+}
+
+void ViewerWidget::cancelPreviewGeometry() {
+    previewStop_.request_stop();
+    previewStop_ = std::stop_source();
+    previewScene_.reset();
+    previewDirty_ = true;
+}
+
+void ViewerWidget::startPreviewGeometry() {
+    cancelPreviewGeometry();
+    std::size_t triangles = 0;
+    if (scene_) {
+        for (const io::Mesh& mesh : scene_->meshes) {
+            triangles += mesh.triangleCount();
+        }
+    }
+    // Not worth it below 1.5x the budget: the full meshes are cheap enough.
+    if (previewTriangles_ == 0 || triangles * 2 <= previewTriangles_ * 3) {
+        return;
+    }
+    const std::shared_ptr<const io::Scene> scene = scene_;
+    const std::size_t budget = previewTriangles_;
+    previewFuture_ = QtConcurrent::run(
+        [scene, budget, stop = previewStop_.get_token()]() -> std::shared_ptr<const io::Scene> {
+            try {
+                return std::make_shared<const io::Scene>(
+                    io::simplifiedScene(*scene, budget, Progress({}, stop)));
+            } catch (const CancelledError&) {
+                return nullptr;
+            } catch (const vv::Error& e) {
+                // No preview: moving frames draw the full meshes.
+                static const log::Category category{"vv.gui"};
+                log::warning(category, std::string("no simplified geometry: ") + e.what());
+                return nullptr;
+            }
+        });
+    auto* watcher = new QFutureWatcher<std::shared_ptr<const io::Scene>>(this);
+    connect(watcher, &QFutureWatcher<std::shared_ptr<const io::Scene>>::finished, this,
+            [this, watcher, scene] {
+                watcher->deleteLater();
+                std::shared_ptr<const io::Scene> preview = watcher->result();
+                if (!preview || scene != scene_) {
+                    return;  // cancelled, failed, or built for an older scene
+                }
+                previewScene_ = std::move(preview);
+                previewDirty_ = true;
+                emit previewGeometryReady();
+            });
+    watcher->setFuture(previewFuture_);
 }
 
 void ViewerWidget::setStyle(const render::MeshStyle& style) {
@@ -225,6 +282,7 @@ render::FrameSettings ViewerWidget::frameSettings() const {
         settings.vss.preview = true;
         settings.ao.enabled = false;
         settings.resolutionScale = interactiveScale_;
+        settings.simplifiedGeometry = true;
     }
     return settings;
 }
@@ -356,6 +414,11 @@ void ViewerWidget::paintGL() {
             renderer_.setSceneRevision(sceneRevision_);
             sceneDirty_ = false;
             styleDirty_ = true;
+            previewDirty_ = true;
+        }
+        if (previewDirty_) {
+            meshes.setPreviewScene(previewScene_);
+            previewDirty_ = false;
         }
         if (styleDirty_) {
             meshes.setStyle(style_);

@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QFuture>
 #include <QOpenGLWidget>
 #include <QPoint>
 #include <QSize>
 #include <QString>
 #include <QSurfaceFormat>
 #include <QTimer>
+#include <cstddef>
 #include <memory>
+#include <stop_token>
 
 #include "vv/core/Image.h"
 #include "vv/io/Mesh.h"
@@ -35,6 +38,10 @@ class LegendOverlay;
 /// depth the last preview frame read back when that frame was rendered at
 /// full resolution (a frame follows when the solve arrives), else through
 /// the next, full-resolution frame. A newer request cancels a stale solve.
+/// Scenes with more than previewTriangles() triangles also get a simplified
+/// copy (io::simplifiedScene, built on a worker thread after setScene()) that
+/// the geometry pass draws while the camera moves: on software rasterisers
+/// the triangle count, not the pixel count, bounds those frames.
 ///
 /// Mouse: left-drag rotates (arcball), right- or middle-drag or shift +
 /// left-drag pans, the wheel zooms. Keys: R resets the view, F fits the data.
@@ -100,6 +107,17 @@ class ViewerWidget : public QOpenGLWidget {
     /// which lets the exact solve start from the last preview frame's depth.
     void setInteractiveScale(float scale);
     [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
+    /// Triangle budget of the simplified geometry drawn while the camera
+    /// moves (default 60,000); 0 = always draw the full meshes. Applies to
+    /// scenes set afterwards.
+    void setPreviewTriangles(std::size_t triangles) noexcept { previewTriangles_ = triangles; }
+    [[nodiscard]] std::size_t previewTriangles() const noexcept { return previewTriangles_; }
+    /// True once the simplified geometry of the current scene is ready.
+    [[nodiscard]] bool hasPreviewGeometry() const noexcept { return previewScene_ != nullptr; }
+    /// True when the last frame drew the simplified geometry.
+    [[nodiscard]] bool lastFrameSimplified() const noexcept {
+        return renderer_.lastFrameSimplified();
+    }
     /// The size (device pixels) the passes of the last frame ran at.
     [[nodiscard]] QSize lastRenderSize() const noexcept { return lastRenderSize_; }
     /// How often settling started the exact solve directly from the last
@@ -147,6 +165,8 @@ class ViewerWidget : public QOpenGLWidget {
     void fitToData();
 
   signals:
+    /// The simplified geometry of the current scene is ready (hasPreviewGeometry()).
+    void previewGeometryReady();
     /// A frame was drawn (emitted at the end of paintGL; connect queued to grab it).
     void frameRendered();
     /// A VSS solve for the current view arrived (a repaint follows).
@@ -174,6 +194,9 @@ class ViewerWidget : public QOpenGLWidget {
     /// A camera change by the user: preview quality until it settles.
     void cameraChanged();
     void settle();
+    /// Starts building the simplified geometry of scene_ (cancelling an older build).
+    void startPreviewGeometry();
+    void cancelPreviewGeometry();
     /// What the next frame renders with (preview settings while moving).
     [[nodiscard]] render::FrameSettings frameSettings() const;
     [[nodiscard]] render::FrameTarget frameTarget() const;
@@ -190,6 +213,11 @@ class ViewerWidget : public QOpenGLWidget {
     render::Camera camera_;
     render::MeshStyle style_;
     std::shared_ptr<const io::Scene> scene_;
+    std::shared_ptr<const io::Scene> previewScene_;  ///< simplified scene_, or null
+    bool previewDirty_ = false;                      ///< previewScene_ not uploaded yet
+    std::size_t previewTriangles_ = 60000;
+    std::stop_source previewStop_;
+    QFuture<std::shared_ptr<const io::Scene>> previewFuture_;
     glm::vec3 background_{0.13F, 0.14F, 0.16F};
     bool sceneDirty_ = false;
     bool autoFit_ = true;  ///< refit on resize until the user moves the camera

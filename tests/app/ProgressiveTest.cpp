@@ -338,6 +338,36 @@ TEST_F(ProgressiveTest, SettlingAtFullResolutionRequestsTheExactSolveWithoutAFra
               static_cast<int>(std::lround(viewer.width() * ratio)));
 }
 
+TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
+    window_ = std::make_unique<vv::gui::MainWindow>();
+    window_->resize(800, 600);
+    ViewerWidget& viewer = *window_->viewer();
+    viewer.setPreviewTriangles(400);  // the tubes have far more: a preview is built
+    int ready = 0;
+    QObject::connect(&viewer, &ViewerWidget::previewGeometryReady, [&ready] { ++ready; });
+    window_->setScene(makeScene(), QStringLiteral("simplified"));
+    window_->show();
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && viewer.hasPreviewGeometry(); }));
+    EXPECT_EQ(ready, 1);
+    EXPECT_FALSE(viewer.lastFrameSimplified());  // still frames draw the full meshes
+
+    viewer.setSettleDelay(600000);
+    Drag drag(viewer);
+    const quint64 frames = viewer.framesWithScene();
+    drag.moveBy(QPointF(15, 4));
+    ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
+    EXPECT_TRUE(viewer.cameraMoving());
+    EXPECT_TRUE(viewer.lastFrameSimplified());
+    drag.release();
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.cameraMoving(); }));
+    EXPECT_FALSE(viewer.lastFrameSimplified());  // the exact VSS is solved on the full meshes
+
+    // A new scene drops the old preview until its own is ready.
+    viewer.setPreviewTriangles(0);
+    window_->setScene(makeScene(), QStringLiteral("no preview"));
+    EXPECT_FALSE(viewer.hasPreviewGeometry());
+}
+
 /// Benchmark-style: 30 rotations of the demo at 1280x720, each waiting for
 /// its frame, then the time from the release until the exact VSS is shown.
 /// Prints the numbers (docs/benchmarks/render.md); asserts only that it works.
@@ -353,6 +383,9 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     window_->resize(QSize(1280, 720) + extra);
     ASSERT_TRUE(waitUntil([&] { return viewer.size() == QSize(1280, 720) && exactShown(viewer); }))
         << viewer.width() << "x" << viewer.height();
+    // The simplified geometry for moving frames is built in the background.
+    ASSERT_TRUE(waitUntil([&] { return viewer.hasPreviewGeometry(); }));
+    std::printf("[bench] preview geometry: at most %zu triangles\n", viewer.previewTriangles());
 
     // Progressive at half and at full interactive resolution, then off.
     struct Config {

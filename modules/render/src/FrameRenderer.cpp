@@ -524,6 +524,11 @@ void FrameRenderer::clearCache() {
     impl_->lastDepthView.reset();
 }
 
+std::uint64_t FrameRenderer::geometryRevision(const FrameSettings& settings) const noexcept {
+    const bool simplified = settings.simplifiedGeometry && meshes_.hasPreviewScene();
+    return sceneRevision_ * 2U + (simplified ? 1U : 0U);
+}
+
 bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& settings,
                                  const FrameTarget& target) {
     const VssSettings& vssSettings = settings.vss;
@@ -532,8 +537,8 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
         return false;
     }
     const glm::ivec2 renderSize = renderSizeFor(settings, target);
-    const std::uint64_t depthView =
-        viewKey(camera.viewMatrix(), camera.projectionMatrix(), renderSize, sceneRevision_);
+    const std::uint64_t depthView = viewKey(camera.viewMatrix(), camera.projectionMatrix(),
+                                            renderSize, geometryRevision(settings));
     if (depthView != *impl_->lastDepthView || impl_->lastDepth.width() != renderSize.x ||
         impl_->lastDepth.height() != renderSize.y) {
         return false;  // the depth shows another view: the next frame reads it back
@@ -596,7 +601,10 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     const glm::mat4 view = camera.viewMatrix();
     const glm::mat4 projection = camera.projectionMatrix();
     const glm::ivec2 viewport(w, h);
-    const std::uint64_t sceneRevision = sceneRevision_;
+    // The scene's revision, told apart for the simplified (preview) geometry.
+    const bool simplified = settings.simplifiedGeometry && meshes_.hasPreviewScene();
+    lastSimplified_ = simplified;
+    const std::uint64_t sceneRevision = geometryRevision(settings);
     Impl& impl = *impl_;
     MeshRenderer& meshes = meshes_;
 
@@ -634,7 +642,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                 b.write(b.createPersistent<Texture>("parameter", size(TextureFormat::R32F)));
             d.depth = b.write(b.createPersistent<Texture>("depth", size(TextureFormat::Depth32F)));
         },
-        [&impl, &meshes, camera, w, h](const RenderGraph::Resources& r, const Geometry& d) {
+        [&impl, &meshes, camera, simplified, w, h](const RenderGraph::Resources& r,
+                                                   const Geometry& d) {
             auto& g = impl.f();
             g.glBindFramebuffer(GL_FRAMEBUFFER, impl.geometryFbo);
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
@@ -665,7 +674,7 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             g.glClearBufferuiv(GL_COLOR, 2, noObject);
             g.glClearBufferfv(GL_COLOR, 3, noData);
             g.glClearBufferfv(GL_DEPTH, 0, &one);
-            meshes.drawGBuffer(camera);
+            meshes.drawGBuffer(camera, simplified);
             checkGlError(g, "geometry pass");
         });
 

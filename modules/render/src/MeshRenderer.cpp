@@ -261,6 +261,8 @@ void MeshRenderer::initialize() {
     context_ = context;
     // Objects of an earlier context are gone with it: upload everything anew.
     meshes_.clear();
+    previewMeshes_.clear();
+    previewScene_.reset();
     program_ = 0;
     gbufferProgram_ = 0;
     deferredProgram_ = 0;
@@ -301,16 +303,13 @@ void MeshRenderer::initialize() {
 void MeshRenderer::release() noexcept {
     if (gl_ == nullptr || QOpenGLContext::currentContext() != context_) {
         meshes_.clear();
+        previewMeshes_.clear();
+        previewScene_.reset();
         return;
     }
     auto& f = *gl_;
-    for (auto& m : meshes_) {
-        f.glDeleteVertexArrays(1, &m.vao);
-        f.glDeleteBuffers(1, &m.vertices);
-        f.glDeleteBuffers(1, &m.scalars);
-        f.glDeleteBuffers(1, &m.indices);
-    }
-    meshes_.clear();
+    deleteMeshes(meshes_);
+    deleteMeshes(previewMeshes_);
     if (lutTexture_ != 0) {
         f.glDeleteTextures(1, &lutTexture_);
         lutTexture_ = 0;
@@ -340,23 +339,20 @@ void MeshRenderer::release() noexcept {
     scalarsUploadedForArray_ = false;
 }
 
-void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
+void MeshRenderer::deleteMeshes(std::vector<GpuMesh>& meshes) {
     auto& f = gl();
-    for (auto& m : meshes_) {
+    for (auto& m : meshes) {
         f.glDeleteVertexArrays(1, &m.vao);
         f.glDeleteBuffers(1, &m.vertices);
         f.glDeleteBuffers(1, &m.scalars);
         f.glDeleteBuffers(1, &m.indices);
     }
-    meshes_.clear();
-    scene_ = std::move(scene);
-    scalarsUploadedForArray_ = false;
-    updateRange();
-    if (!scene_) {
-        return;
-    }
+    meshes.clear();
+}
 
-    for (const auto& mesh : scene_->meshes) {
+void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& target) {
+    auto& f = gl();
+    for (const auto& mesh : scene.meshes) {
         const std::size_t n = mesh.vertexCount();
         if (mesh.indices.size() > static_cast<std::size_t>(std::numeric_limits<GLsizei>::max()) ||
             n > std::numeric_limits<std::uint32_t>::max()) {
@@ -387,7 +383,7 @@ void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
         f.glGenBuffers(1, &gpu.vertices);
         f.glGenBuffers(1, &gpu.scalars);
         f.glGenBuffers(1, &gpu.indices);
-        meshes_.push_back(gpu);  // owned from here on, so errors below do not leak
+        target.push_back(gpu);  // owned from here on, so errors below do not leak
 
         f.glBindVertexArray(gpu.vao);
         f.glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
@@ -410,11 +406,42 @@ void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
         f.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
                        static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                        mesh.indices.data(), GL_STATIC_DRAW);
-        meshes_.back().indexCount = static_cast<GLsizei>(mesh.indices.size());
+        target.back().indexCount = static_cast<GLsizei>(mesh.indices.size());
         f.glBindVertexArray(0);
         f.glBindBuffer(GL_ARRAY_BUFFER, 0);
         throwOnGlError(f, "uploading a mesh");
     }
+}
+
+void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
+    deleteMeshes(meshes_);
+    deleteMeshes(previewMeshes_);
+    previewScene_.reset();
+    scene_ = std::move(scene);
+    scalarsUploadedForArray_ = false;
+    updateRange();
+    if (!scene_) {
+        return;
+    }
+    uploadMeshes(*scene_, meshes_);
+    uploadScalars();
+}
+
+void MeshRenderer::setPreviewScene(std::shared_ptr<const io::Scene> preview) {
+    deleteMeshes(previewMeshes_);
+    previewScene_.reset();
+    if (!preview) {
+        return;
+    }
+    if (!scene_ || preview->meshes.size() != scene_->meshes.size()) {
+        throw InvalidArgumentError(
+            "the preview scene must have one mesh for each mesh of the scene (" +
+            std::to_string(preview->meshes.size()) + " for " +
+            std::to_string(scene_ ? scene_->meshes.size() : 0) + ")");
+    }
+    previewScene_ = std::move(preview);
+    uploadMeshes(*previewScene_, previewMeshes_);
+    scalarsUploadedForArray_ = false;
     uploadScalars();
 }
 
@@ -443,12 +470,18 @@ void MeshRenderer::uploadScalars() {
     if (!scene_) {
         return;
     }
-    for (std::size_t m = 0; m < meshes_.size(); ++m) {
-        const auto scalars = scalarsFor(scene_->meshes[m], style_.array);
-        f.glBindBuffer(GL_ARRAY_BUFFER, meshes_[m].scalars);
-        f.glBufferSubData(GL_ARRAY_BUFFER, 0,
-                          static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
-                          scalars.data());
+    const auto upload = [&](const io::Scene& scene, const std::vector<GpuMesh>& meshes) {
+        for (std::size_t m = 0; m < meshes.size(); ++m) {
+            const auto scalars = scalarsFor(scene.meshes[m], style_.array);
+            f.glBindBuffer(GL_ARRAY_BUFFER, meshes[m].scalars);
+            f.glBufferSubData(GL_ARRAY_BUFFER, 0,
+                              static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
+                              scalars.data());
+        }
+    };
+    upload(*scene_, meshes_);
+    if (previewScene_) {
+        upload(*previewScene_, previewMeshes_);
     }
     f.glBindBuffer(GL_ARRAY_BUFFER, 0);
     throwOnGlError(f, "uploading array values");
@@ -629,7 +662,7 @@ void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbu
     throwOnGlError(f, "shading the vessels from the G-buffer");
 }
 
-void MeshRenderer::drawGBuffer(const Camera& camera) {
+void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
     auto& f = gl();
     if (gbufferProgram_ == 0) {
         throw RenderError("MeshRenderer::drawGBuffer without a shader program");
@@ -658,7 +691,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera) {
     f.glUniform1i(loc("uUseArray"), style_.array.empty() ? 0 : 1);
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
-    for (const auto& m : meshes_) {
+    for (const auto& m : preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_) {
         f.glUniform1ui(objectId, id++);
         f.glBindVertexArray(m.vao);
         f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);

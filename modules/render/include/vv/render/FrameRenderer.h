@@ -76,6 +76,12 @@ struct FrameSettings {
     /// pass (always run then) upscales into the target with bilinear taps.
     /// For interactive frames on slow rasterisers; 1 = full resolution.
     float resolutionScale = 1.0F;
+    /// Draw the G-buffer from the mesh renderer's preview scene (a simplified
+    /// copy, MeshRenderer::setPreviewScene) when it has one: for frames while
+    /// the camera moves, where triangle count, not pixels, bounds the frame
+    /// time of software rasterisers. The VSS of such a frame is solved on that
+    /// geometry's depth (a preview, never cached as the exact one).
+    bool simplifiedGeometry = false;
 };
 
 /// The framebuffer a frame is drawn into: `framebuffer` (0 = the default one)
@@ -185,6 +191,8 @@ class FrameRenderer {
     /// The size the last frame's passes ran at (device pixels): the target's
     /// size scaled by FrameSettings::resolutionScale.
     [[nodiscard]] glm::ivec2 lastRenderSize() const noexcept { return renderSize_; }
+    /// True when the last frame's G-buffer came from the simplified (preview) meshes.
+    [[nodiscard]] bool lastFrameSimplified() const noexcept { return lastSimplified_; }
 
     /// The compiled graph of the last frame (states, reasons, CPU times).
     [[nodiscard]] const std::vector<PassInfo>& lastPasses() const noexcept { return passes_; }
@@ -235,7 +243,11 @@ class FrameRenderer {
     MeshRenderer meshes_;
     std::unique_ptr<Impl> impl_;
     SolveMode mode_ = SolveMode::Synchronous;
+    /// The scene revision, odd when `settings` draw the simplified geometry.
+    [[nodiscard]] std::uint64_t geometryRevision(const FrameSettings& settings) const noexcept;
+
     std::uint64_t sceneRevision_ = 0;
+    bool lastSimplified_ = false;
     std::vector<PassInfo> passes_;
     std::string graphText_;
     VssFrameStatus status_;

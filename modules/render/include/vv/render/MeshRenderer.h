@@ -136,6 +136,14 @@ class MeshRenderer {
     void setScene(std::shared_ptr<const io::Scene> scene);
     [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
 
+    /// Uploads a simplified copy of the current scene (io::simplifiedScene)
+    /// that drawGBuffer(camera, true) draws instead, e.g. while the camera
+    /// moves; nullptr clears it, and setScene() clears it too. Same throws as
+    /// setScene(), and InvalidArgumentError when its mesh count differs from
+    /// the scene's.
+    void setPreviewScene(std::shared_ptr<const io::Scene> preview);
+    [[nodiscard]] bool hasPreviewScene() const noexcept { return !previewMeshes_.empty(); }
+
     /// Sets the style. With the context current, re-uploads the per-vertex
     /// scalars when the array changed and the colour-map texture when the map
     /// or its bins changed (throwing RenderError when GL fails); otherwise
@@ -174,8 +182,9 @@ class MeshRenderer {
     /// no array chosen; ignored without a fourth attachment). Depth test GL_LESS
     /// with writes; does not clear. Same vertex shader as draw(), so a later
     /// draw(camera, DepthMode::TestOnly) hits exactly the same depths.
+    /// With `preview` and a preview scene set, draws that one instead.
     /// Throws like draw().
-    void drawGBuffer(const Camera& camera);
+    void drawGBuffer(const Camera& camera, bool preview = false);
 
     /// The G-buffer drawGBuffer() filled, as GL texture names.
     struct GBufferTextures {
@@ -204,6 +213,9 @@ class MeshRenderer {
   private:
     struct GpuMesh;
     void updateRange();
+    void deleteMeshes(std::vector<GpuMesh>& meshes);
+    /// Checks and uploads `scene`'s meshes into `target` (scalars left for uploadScalars()).
+    void uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& target);
     void uploadScalars();
     void uploadLut();
     void uploadCueLut(colormaps::DepthScale scale);
@@ -223,7 +235,9 @@ class MeshRenderer {
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;
     std::vector<GpuMesh> meshes_;
+    std::vector<GpuMesh> previewMeshes_;
     std::shared_ptr<const io::Scene> scene_;
+    std::shared_ptr<const io::Scene> previewScene_;
     MeshStyle style_;
     std::optional<std::pair<float, float>> effectiveRange_;
     bool scalarsUploadedForArray_ = false;
