@@ -68,36 +68,41 @@ bool isVessel(ivec2 p) {
     return texelFetch(uLinearDepth, p, 0).r < 1e30;
 }
 
-// dz'/dx, dz'/dy per pixel from the VSS pixels in a 5x5 window (Gaussian
-// weights); `support` = the weight of those pixels over the whole window's.
-// Falls back to `fallback` when they do not determine a plane.
-vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, out float support) {
+// dz'/dx, dz'/dy per pixel: a weighted least-squares plane (offset and
+// slope, so the centre's own value does not pin it) through the VSS pixels of
+// a 5x5 window of samples `stride` pixels apart (Gaussian weights in samples);
+// `support` = the weight of those pixels over the whole window's. Falls back
+// to `fallback` when they do not determine a plane.
+vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, int stride, out float support) {
+    float sw = 0.0;
+    float sx = 0.0;
+    float sy = 0.0;
+    float sh = 0.0;
     float sxx = 0.0;
     float sxy = 0.0;
     float syy = 0.0;
     float sxh = 0.0;
     float syh = 0.0;
     float total = 0.0;
-    float used = 0.0;
     for (int dy = -2; dy <= 2; ++dy) {
         for (int dx = -2; dx <= 2; ++dx) {
-            if (dx == 0 && dy == 0) {
-                continue;
-            }
-            float x = float(dx);
-            float y = float(dy);
-            ivec2 q = p + ivec2(dx, dy);
+            ivec2 q = p + ivec2(dx, dy) * stride;
             if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) {
                 continue;  // the image border is no contour
             }
-            float w = exp(-0.25 * (x * x + y * y));
+            float w = exp(-0.25 * float(dx * dx + dy * dy));
             total += w;
             float hq = heightAt(q, size);
             if (!hasVss(hq) || isVessel(q)) {
                 continue;
             }
+            float x = float(dx * stride);
+            float y = float(dy * stride);
             float dh = hq - z;
-            used += w;
+            sw += w;
+            sx += w * x;
+            sy += w * y;
+            sh += w * dh;
             sxx += w * x * x;
             sxy += w * x * y;
             syy += w * y * y;
@@ -105,12 +110,21 @@ vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, out float suppo
             syh += w * y * dh;
         }
     }
-    support = total > 0.0 ? used / total : 0.0;
-    float det = sxx * syy - sxy * sxy;
-    if (det < 0.05 * max(sxx * syy, 1e-12) || used <= 0.0) {
+    support = total > 0.0 ? sw / total : 0.0;
+    if (sw <= 0.0) {
         return fallback;
     }
-    return vec2(syy * sxh - sxy * syh, sxx * syh - sxy * sxh) / det;
+    // Centred sums: the plane's offset drops out.
+    float cxx = sxx - sx * sx / sw;
+    float cxy = sxy - sx * sy / sw;
+    float cyy = syy - sy * sy / sw;
+    float cxh = sxh - sx * sh / sw;
+    float cyh = syh - sy * sh / sw;
+    float det = cxx * cyy - cxy * cxy;
+    if (det < 0.05 * max(cxx * cyy, 1e-12)) {
+        return fallback;
+    }
+    return vec2(cyy * cxh - cxy * cyh, cxx * cyh - cxy * cxh) / det;
 }
 
 // The normal from a central difference at p, or none (w = 0) where p or a
@@ -143,7 +157,14 @@ void main() {
                      derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
     float support = 1.0;
     if (!isVessel(p)) {
-        grad = fittedGradient(p, size, z, grad, support);
+        grad = fittedGradient(p, size, z, grad, 1, support);
+        if (support < 0.999) {
+            // Next to a contour the silhouette's pixel staircase ripples the
+            // nearest VSS pixels (dark specks along the edges under the
+            // light): fit over a window twice as wide there.
+            float wide = 1.0;
+            grad = fittedGradient(p, size, z, grad, 2, wide);
+        }
     }
 
     // Colour: texel centres, so z' = 0 hits the first entry and 1 the last.
