@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// `vesselview-cli info FILE... [--json] [--scale S]`: what a mesh file holds.
+// `vesselview-cli info PATH... [--json] [--scale S]`: what a mesh file holds,
+// or which series a DICOM file / folder / DICOMDIR holds.
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -15,6 +17,8 @@
 #include <vector>
 
 #include "cli/Cli.h"
+#include "vv/core/Error.h"
+#include "vv/io/Dicom.h"
 #include "vv/io/MeshLoader.h"
 
 namespace vv::cli {
@@ -22,10 +26,14 @@ namespace vv::cli {
 namespace {
 
 constexpr const char* kInfoUsage =
-    "usage: vesselview-cli info FILE... [--json] [--scale S]\n"
+    "usage: vesselview-cli info PATH... [--json] [--scale S]\n"
     "  Loads each mesh (STL, OBJ, PLY, VTK, VTP, VTU) and prints its vertex and\n"
     "  triangle counts, bounds in mm, and every point / cell array with its\n"
     "  components, unit, range of the finite values and count of non-finite ones.\n"
+    "  A DICOM file, a folder (searched recursively) or a DICOMDIR instead lists\n"
+    "  its studies and series (UID, modality, description, images, size, spacing,\n"
+    "  transfer syntax, whether it can be loaded) and the files that were skipped,\n"
+    "  with the reason; patient names and IDs are never printed.\n"
     "  --json     print JSON instead of a table\n"
     "  --scale S  multiply coordinates by S (file in metres: --scale 1000)\n";
 
@@ -267,10 +275,7 @@ void writeJsonArrays(JsonWriter& json, const std::vector<ArrayInfo>& arrays) {
     json.endArray();
 }
 
-void writeJson(std::ostream& out, const std::vector<MeshInfo>& meshes) {
-    JsonWriter json(out);
-    json.beginObject();
-    json.key("meshes");
+void writeMeshArray(JsonWriter& json, const std::vector<MeshInfo>& meshes) {
     json.beginArray();
     for (const auto& m : meshes) {
         json.beginObject();
@@ -302,6 +307,13 @@ void writeJson(std::ostream& out, const std::vector<MeshInfo>& meshes) {
         json.endObject();
     }
     json.endArray();
+}
+
+void writeJson(std::ostream& out, const std::vector<MeshInfo>& meshes) {
+    JsonWriter json(out);
+    json.beginObject();
+    json.key("meshes");
+    writeMeshArray(json, meshes);
     json.endObject();
     json.finish();
 }
@@ -377,6 +389,181 @@ void writeTable(std::ostream& out, const std::vector<MeshInfo>& meshes) {
     }
 }
 
+// ---------------------------------------------------------------------------
+// DICOM: what scanDicom found under a path. Patients are numbered, never named.
+
+struct DicomInfo {
+    std::string path;
+    vv::io::DicomScanResult scan;
+};
+
+/// True when `path` is read as DICOM: a folder, a DICOMDIR, a .dcm file or a
+/// file with the DICM prefix — unless its extension names a mesh format.
+bool isDicomPath(const std::filesystem::path& path) {
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    const auto& meshes = vv::io::supportedMeshExtensions();
+    if (std::find(meshes.begin(), meshes.end(), ext) != meshes.end()) {
+        return false;
+    }
+    return vv::io::looksLikeDicom(path);
+}
+
+std::string spacingText(const vv::io::DicomSeries& s) {
+    if (!s.pixelSpacing) {
+        return "unknown";
+    }
+    std::string t = humanNumber(s.pixelSpacing->x) + " x " + humanNumber(s.pixelSpacing->y);
+    if (s.sliceSpacing) {
+        t += " x " + humanNumber(*s.sliceSpacing);
+    }
+    return t + " mm";
+}
+
+void writeDicomTable(std::ostream& out, const DicomInfo& d) {
+    const auto series = d.scan.allSeries();
+    out << d.path << "\n";
+    out << "  DICOM: " << d.scan.filesExamined << " files, " << series.size() << " series, "
+        << d.scan.skipped.size() << " skipped\n";
+    int patientNumber = 0;
+    for (const auto& p : d.scan.patients) {
+        ++patientNumber;
+        out << "  patient " << patientNumber << "\n";
+        for (const auto& st : p.studies) {
+            out << "    study " << (st.studyInstanceUid.empty() ? "(no UID)" : st.studyInstanceUid);
+            if (!st.date.empty()) {
+                out << "  " << st.date;
+            }
+            if (!st.description.empty()) {
+                out << "  \"" << st.description << "\"";
+            }
+            out << "\n";
+            for (const auto& s : st.series) {
+                out << "      series "
+                    << (s.seriesInstanceUid.empty() ? "(no UID)" : s.seriesInstanceUid) << "\n";
+                out << "        modality:    " << (s.modality.empty() ? "-" : s.modality);
+                if (s.seriesNumber) {
+                    out << "  (series number " << *s.seriesNumber << ")";
+                }
+                out << "\n";
+                if (!s.description.empty()) {
+                    out << "        description: " << s.description << "\n";
+                }
+                out << "        images:      " << s.imageCount
+                    << (s.multiFrame ? " (multi-frame)" : "") << " in " << s.files.size()
+                    << (s.files.size() == 1 ? " file\n" : " files\n");
+                out << "        size:        " << s.columns << " x " << s.rows
+                    << (s.mixedSizes ? " (mixed sizes)" : "") << "\n";
+                out << "        spacing:     " << spacingText(s) << "\n";
+                out << "        syntax:      " << s.transferSyntaxName << "\n";
+                out << "        loadable:    "
+                    << (s.unsupportedReason.empty() ? std::string("yes")
+                                                    : "no: " + s.unsupportedReason)
+                    << "\n";
+            }
+        }
+    }
+    if (!d.scan.skipped.empty()) {
+        out << "  skipped (" << d.scan.skipped.size() << "):\n";
+        for (const auto& k : d.scan.skipped) {
+            out << "    " << k.file.string() << ": " << k.reason << "\n";
+        }
+    }
+}
+
+void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
+    json.beginArray();
+    for (const auto& d : dicoms) {
+        json.beginObject();
+        json.key("path");
+        json.string(d.path);
+        json.key("files_examined");
+        json.integer(d.scan.filesExamined);
+        json.key("patients");
+        json.beginArray();
+        for (const auto& p : d.scan.patients) {
+            json.beginObject();
+            json.key("studies");
+            json.beginArray();
+            for (const auto& st : p.studies) {
+                json.beginObject();
+                json.key("study_instance_uid");
+                json.string(st.studyInstanceUid);
+                json.key("date");
+                json.string(st.date);
+                json.key("description");
+                json.string(st.description);
+                json.key("series");
+                json.beginArray();
+                for (const auto& s : st.series) {
+                    json.beginObject();
+                    json.key("series_instance_uid");
+                    json.string(s.seriesInstanceUid);
+                    json.key("modality");
+                    json.string(s.modality);
+                    json.key("description");
+                    json.string(s.description);
+                    json.key("series_number");
+                    s.seriesNumber ? json.number(*s.seriesNumber) : json.null();
+                    json.key("images");
+                    json.integer(s.imageCount);
+                    json.key("files");
+                    json.integer(s.files.size());
+                    json.key("multi_frame");
+                    json.boolean(s.multiFrame);
+                    json.key("rows");
+                    json.integer(static_cast<std::uint64_t>(s.rows));
+                    json.key("columns");
+                    json.integer(static_cast<std::uint64_t>(s.columns));
+                    json.key("mixed_sizes");
+                    json.boolean(s.mixedSizes);
+                    json.key("pixel_spacing_mm");
+                    if (s.pixelSpacing) {
+                        json.beginArray();
+                        json.number(s.pixelSpacing->x);
+                        json.number(s.pixelSpacing->y);
+                        json.endArray();
+                    } else {
+                        json.null();
+                    }
+                    json.key("slice_spacing_mm");
+                    s.sliceSpacing ? json.number(*s.sliceSpacing) : json.null();
+                    json.key("transfer_syntax");
+                    json.string(s.transferSyntaxName);
+                    json.key("transfer_syntax_uid");
+                    json.string(s.transferSyntaxUid);
+                    json.key("sop_class_uid");
+                    json.string(s.sopClassUid);
+                    json.key("loadable");
+                    json.boolean(s.unsupportedReason.empty());
+                    json.key("unsupported_reason");
+                    json.string(s.unsupportedReason);
+                    json.endObject();
+                }
+                json.endArray();
+                json.endObject();
+            }
+            json.endArray();
+            json.endObject();
+        }
+        json.endArray();
+        json.key("skipped");
+        json.beginArray();
+        for (const auto& k : d.scan.skipped) {
+            json.beginObject();
+            json.key("file");
+            json.string(k.file.string());
+            json.key("reason");
+            json.string(k.reason);
+            json.endObject();
+        }
+        json.endArray();
+        json.endObject();
+    }
+    json.endArray();
+}
+
 double parseScale(const std::string& text) {
     const char* begin = text.c_str();
     char* end = nullptr;
@@ -418,7 +605,7 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         }
     }
     if (files.empty()) {
-        throw UsageError("info needs at least one mesh FILE");
+        throw UsageError("info needs at least one mesh FILE or DICOM path");
     }
     if (!std::isfinite(options.scale) || !(options.scale > 0.0)) {
         throw UsageError("--scale must be a finite number > 0, not " + humanNumber(options.scale));
@@ -427,8 +614,23 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     // Load everything first: a bad file fails the command before any output,
     // so the JSON is either complete or absent.
     std::vector<MeshInfo> meshes;
+    std::vector<DicomInfo> dicoms;
     meshes.reserve(files.size());
     for (const auto& file : files) {
+        if (isDicomPath(file)) {
+            DicomInfo d{file.string(), vv::io::scanDicom(file)};
+            if (d.scan.allSeries().empty()) {
+                std::string why = "holds no DICOM image series";
+                if (d.scan.skipped.size() == 1) {
+                    why += " (" + d.scan.skipped.front().reason + ")";
+                } else if (!d.scan.skipped.empty()) {
+                    why += " (" + std::to_string(d.scan.skipped.size()) + " files skipped)";
+                }
+                throw vv::FormatError(file, why);
+            }
+            dicoms.push_back(std::move(d));
+            continue;
+        }
         const vv::io::Mesh mesh = vv::io::loadMesh(file, options);
         MeshInfo info;
         info.file = file.string();
@@ -441,9 +643,28 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         meshes.push_back(std::move(info));
     }
     if (json) {
-        writeJson(out, meshes);
+        if (dicoms.empty()) {
+            writeJson(out, meshes);
+        } else {
+            JsonWriter writer(out);
+            writer.beginObject();
+            if (!meshes.empty()) {
+                writer.key("meshes");
+                writeMeshArray(writer, meshes);
+            }
+            writer.key("dicom");
+            writeDicomJson(writer, dicoms);
+            writer.endObject();
+            writer.finish();
+        }
     } else {
         writeTable(out, meshes);
+        for (std::size_t i = 0; i < dicoms.size(); ++i) {
+            if (i > 0 || !meshes.empty()) {
+                out << '\n';
+            }
+            writeDicomTable(out, dicoms[i]);
+        }
     }
     return kOk;
 }

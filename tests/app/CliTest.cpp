@@ -632,4 +632,132 @@ TEST_F(CliTest, ExecutableJsonParsesWithPython) {
     EXPECT_EQ(r.out, "ok\n");
 }
 
+// DICOM ---------------------------------------------------------------------
+// `info` on DICOM files and folders. The files are written byte by byte here
+// (explicit VR little endian) so that this test needs no DICOM library.
+
+std::string dicomElement(std::uint16_t group, std::uint16_t element, const char* vr,
+                         std::string value) {
+    const bool pixels = std::strcmp(vr, "OW") == 0 || std::strcmp(vr, "OB") == 0;
+    if (value.size() % 2 != 0) {
+        value += std::strcmp(vr, "UI") == 0 || pixels ? '\0' : ' ';
+    }
+    std::string e;
+    const auto u16 = [&](std::uint32_t v) {
+        e += static_cast<char>(v & 0xFFU);
+        e += static_cast<char>((v >> 8U) & 0xFFU);
+    };
+    u16(group);
+    u16(element);
+    e += vr;
+    if (pixels) {
+        u16(0);
+        u16(static_cast<std::uint32_t>(value.size()) & 0xFFFFU);
+        u16(static_cast<std::uint32_t>(value.size()) >> 16U);
+    } else {
+        u16(static_cast<std::uint32_t>(value.size()));
+    }
+    return e + value;
+}
+
+std::string u16Value(std::uint16_t v) {
+    return std::string{static_cast<char>(v & 0xFFU), static_cast<char>(v >> 8U)};
+}
+
+/// A 16 x 16 CT slice at z (stored values z * 10 + i, rescale -1024).
+void writeDicomSlice(const fs::path& file, const std::string& series, int z) {
+    const std::string sop = series + "." + std::to_string(z + 1);
+    std::string meta = dicomElement(0x0002, 0x0001, "OB", std::string("\0\1", 2)) +
+                       dicomElement(0x0002, 0x0002, "UI", "1.2.840.10008.5.1.4.1.1.2") +
+                       dicomElement(0x0002, 0x0003, "UI", sop) +
+                       dicomElement(0x0002, 0x0010, "UI", "1.2.840.10008.1.2.1");
+    std::string length(4, '\0');
+    for (int b = 0; b < 4; ++b) {
+        length[static_cast<std::size_t>(b)] = static_cast<char>((meta.size() >> (8U * b)) & 0xFFU);
+    }
+    meta = dicomElement(0x0002, 0x0000, "UL", length) + meta;
+    std::string pixels;
+    for (int n = 0; n < 256; ++n) {
+        pixels += u16Value(static_cast<std::uint16_t>(z * 10 + n % 16));
+    }
+    const std::string data =
+        dicomElement(0x0008, 0x0016, "UI", "1.2.840.10008.5.1.4.1.1.2") +
+        dicomElement(0x0008, 0x0018, "UI", sop) + dicomElement(0x0008, 0x0060, "CS", "CT") +
+        dicomElement(0x0008, 0x103E, "LO", "cli angio") +
+        dicomElement(0x0010, 0x0010, "PN", "Hiddenname^Pat") +
+        dicomElement(0x0010, 0x0020, "LO", "PID-HIDDEN-99") +
+        dicomElement(0x0020, 0x000D, "UI", "1.2.826.0.1.3680043.99.1") +
+        dicomElement(0x0020, 0x000E, "UI", series) +
+        dicomElement(0x0020, 0x0032, "DS", "0\\0\\" + std::to_string(2 * z)) +
+        dicomElement(0x0020, 0x0037, "DS", "1\\0\\0\\0\\1\\0") +
+        dicomElement(0x0028, 0x0002, "US", u16Value(1)) +
+        dicomElement(0x0028, 0x0004, "CS", "MONOCHROME2") +
+        dicomElement(0x0028, 0x0010, "US", u16Value(16)) +
+        dicomElement(0x0028, 0x0011, "US", u16Value(16)) +
+        dicomElement(0x0028, 0x0030, "DS", "0.5\\0.5") +
+        dicomElement(0x0028, 0x0100, "US", u16Value(16)) +
+        dicomElement(0x0028, 0x0101, "US", u16Value(16)) +
+        dicomElement(0x0028, 0x0102, "US", u16Value(15)) +
+        dicomElement(0x0028, 0x0103, "US", u16Value(1)) +
+        dicomElement(0x0028, 0x1052, "DS", "-1024") + dicomElement(0x0028, 0x1053, "DS", "1") +
+        dicomElement(0x7FE0, 0x0010, "OW", pixels);
+    std::ofstream(file, std::ios::binary) << std::string(128, '\0') << "DICM" << meta << data;
+}
+
+constexpr const char* kCliSeries = "1.2.826.0.1.3680043.99.1.7";
+
+TEST_F(CliTest, DicomInfoListsTheSeriesOfAFolder) {
+    fs::create_directories(dir_ / "dicom" / "nested");
+    for (int z = 0; z < 3; ++z) {
+        writeDicomSlice(dir_ / "dicom" / (z == 1 ? "nested" : "") / ("slice" + std::to_string(z)),
+                        kCliSeries, z);
+    }
+    write("dicom/readme.txt", "not DICOM");
+    const Result r = runCli({"info", (dir_ / "dicom").string()});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    EXPECT_THAT(r.out, HasSubstr(kCliSeries));
+    EXPECT_THAT(r.out, HasSubstr("modality:    CT"));
+    EXPECT_THAT(r.out, HasSubstr("description: cli angio"));
+    EXPECT_THAT(r.out, HasSubstr("images:      3 in 3 files"));
+    EXPECT_THAT(r.out, HasSubstr("size:        16 x 16"));
+    EXPECT_THAT(r.out, HasSubstr("spacing:     0.5 x 0.5 x 2 mm"));
+    EXPECT_THAT(r.out, HasSubstr("loadable:    yes"));
+    EXPECT_THAT(r.out, HasSubstr("readme.txt: not a DICOM file"));
+    EXPECT_THAT(r.out, Not(HasSubstr("Hiddenname")));
+    EXPECT_THAT(r.out, Not(HasSubstr("PID-HIDDEN")));
+}
+
+TEST_F(CliTest, DicomInfoOnOneFileAndAsJson) {
+    writeDicomSlice(dir_ / "one.dcm", kCliSeries, 4);
+    Result r = runCli({"info", (dir_ / "one.dcm").string()});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    EXPECT_THAT(r.out, HasSubstr("images:      1 in 1 file"));
+    r = runCli({"info", "--json", (dir_ / "one.dcm").string()});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    Json doc;
+    ASSERT_NO_THROW(doc = JsonParser(r.out).parse()) << r.out;
+    const Json& study = doc["dicom"].array.at(0)["patients"].array.at(0)["studies"].array.at(0);
+    const Json& series = study["series"].array.at(0);
+    EXPECT_EQ(series["series_instance_uid"].string, kCliSeries);
+    EXPECT_EQ(series["modality"].string, "CT");
+    EXPECT_EQ(series["images"].number, 1.0);
+    EXPECT_EQ(series["rows"].number, 16.0);
+    EXPECT_EQ(series["pixel_spacing_mm"].array.size(), 2U);
+    EXPECT_TRUE(series["loadable"].boolean);
+    EXPECT_FALSE(doc.has("meshes"));
+    EXPECT_THAT(r.out, Not(HasSubstr("Hiddenname")));
+}
+
+TEST_F(CliTest, DicomInfoWithoutImagesExitsWithThree) {
+    fs::create_directories(dir_ / "empty");
+    write("empty/notes.txt", "nothing here");
+    Result r = runCli({"info", (dir_ / "empty").string()});
+    EXPECT_EQ(r.code, vv::cli::kInvalidInput);
+    EXPECT_THAT(r.err, HasSubstr("no DICOM image series"));
+    EXPECT_THAT(r.err, HasSubstr("empty"));
+    EXPECT_EQ(r.out, "");
+    r = runCli({"info", (dir_ / "no-such-folder" / "x.dcm").string()});
+    EXPECT_EQ(r.code, vv::cli::kInvalidInput);
+}
+
 }  // namespace
