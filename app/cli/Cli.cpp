@@ -3,6 +3,7 @@
 
 #include <ostream>
 
+#include "vv/Version.h"
 #include "vv/core/Error.h"
 
 namespace vv::cli {
@@ -64,7 +65,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
             return kOk;
         }
         if (command == "--version") {
-            out << "vesselview-cli " << VV_VERSION << "\n";
+            out << "vesselview-cli " << vv::kVersion << "\n";
             return kOk;
         }
         if (command == "info") {

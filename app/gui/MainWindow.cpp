@@ -7,6 +7,7 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDir>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
@@ -19,6 +20,7 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -29,10 +31,18 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
+#include "common/ResourcePaths.h"
 #include "gui/MeshLoadTask.h"
+#include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/panels/DataPanel.h"
+#include "gui/panels/DisplayPanel.h"
+#include "gui/panels/FunctionalPanel.h"
+#include "gui/panels/PanelUtil.h"
+#include "gui/panels/VssPanel.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
@@ -46,6 +56,12 @@ namespace {
 
 constexpr int kMaxRecentFiles = 8;
 const char* const kRecentFilesKey = "recentFiles";
+const char* const kGeometryKey = "mainWindow/geometry";
+const char* const kLayoutKey = "mainWindow/layout";
+/// Bump when the docks change so that an old saved layout is not applied.
+constexpr int kLayoutVersion = 1;
+/// The side panels' initial width (logical pixels).
+constexpr int kDockWidth = 330;
 /// Screenshot mode gives up when no frame was saved within this time.
 constexpr int kScreenshotTimeoutMs = 10 * 60 * 1000;
 
@@ -70,17 +86,6 @@ QStringList localFiles(const QMimeData* mime, bool supportedOnly) {
         }
     }
     return files;
-}
-
-/// "wss [Pa]" for an array that has a unit somewhere in the scene, else "wss".
-QString arrayLabel(const io::Scene& scene, const std::string& name) {
-    for (const auto& mesh : scene.meshes) {
-        const io::DataArray* array = mesh.pointArray(name);
-        if (array != nullptr && !array->unit.empty()) {
-            return QString::fromStdString(name + " [" + array->unit + "]");
-        }
-    }
-    return QString::fromStdString(name);
 }
 
 }  // namespace
@@ -121,9 +126,16 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connect(viewer_, &ViewerWidget::frameRendered, this, &MainWindow::onFrameRendered,
             Qt::QueuedConnection);
 
-    buildMenus();
+    buildDocks();
     buildToolBar();
+    buildMenus();
     buildStatusBar();
+    defaultLayout_ = saveState(kLayoutVersion);
+    const QSettings settings;
+    restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray());
+    restoreState(settings.value(QLatin1String(kLayoutKey)).toByteArray(), kLayoutVersion);
+    restoreViewSettings(*viewer_, settings);
+    syncControls();
     if (!glProblem.isEmpty()) {
         viewer_->setUnavailable(glProblem);  // renderFailed() shows the message
     }
@@ -162,108 +174,209 @@ void MainWindow::buildMenus() {
     legendsAction_->setObjectName(QStringLiteral("legendsToggle"));
     legendsAction_->setCheckable(true);
     legendsAction_->setChecked(viewer_->legendsVisible());
-    connect(legendsAction_, &QAction::toggled, viewer_, &ViewerWidget::setLegendsVisible);
+    connect(legendsAction_, &QAction::toggled, this, [this](bool on) {
+        viewer_->setLegendsVisible(on);
+        syncControls();
+    });
+    view->addAction(vssAction_);
+    view->addAction(aoAction_);
+    view->addAction(cvdAction_);
+    view->addSeparator();
+    QMenu* panelsMenu = view->addMenu(tr("&Panels"));
+    for (QDockWidget* dock : docks_) {
+        panelsMenu->addAction(dock->toggleViewAction());
+    }
+    panelsMenu->addSeparator();
+    panelsMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
+    view->addSeparator();
+    QAction* defaults =
+        view->addAction(tr("Reset to &Defaults"), this, &MainWindow::resetToDefaults);
+    defaults->setObjectName(QStringLiteral("resetToDefaults"));
+    defaults->setToolTip(tr("Display settings and panel layout as in a fresh installation"));
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
+    keys->setShortcut(QKeySequence::HelpContents);
     help->addAction(tr("&About VesselView"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::buildDocks() {
+    vssPanel_ = new panels::VssPanel(viewer_, this);
+    functionalPanel_ = new panels::FunctionalPanel(viewer_, this);
+    displayPanel_ = new panels::DisplayPanel(viewer_, this);
+    dataPanel_ = new panels::DataPanel(viewer_, this);
+    const std::pair<QWidget*, QString> panels[] = {
+        {vssPanel_, tr("Void Space Surface")},
+        {functionalPanel_, tr("Functional parameters")},
+        {displayPanel_, tr("Display")},
+        {dataPanel_, tr("Data")},
+    };
+    for (const auto& [panel, title] : panels) {
+        auto* dock = new QDockWidget(title, this);
+        dock->setObjectName(panel->objectName() + QStringLiteral("Dock"));
+        auto* scroll = new QScrollArea(dock);
+        scroll->setWidget(panel);
+        scroll->setWidgetResizable(true);
+        scroll->setFrameShape(QFrame::NoFrame);
+        dock->setWidget(scroll);
+        addDockWidget(Qt::RightDockWidgetArea, dock);
+        if (!docks_.isEmpty()) {
+            tabifyDockWidget(docks_.front(), dock);
+        }
+        docks_ << dock;
+    }
+    docks_.front()->raise();
+    resizeDocks({docks_.front()}, {kDockWidth}, Qt::Horizontal);
+    connect(vssPanel_, &panels::VssPanel::changed, this, &MainWindow::syncControls);
+    connect(functionalPanel_, &panels::FunctionalPanel::changed, this, &MainWindow::syncControls);
+    connect(displayPanel_, &panels::DisplayPanel::changed, this, &MainWindow::syncControls);
 }
 
 void MainWindow::buildToolBar() {
     QToolBar* bar = addToolBar(tr("Display"));
     bar->setObjectName(QStringLiteral("displayToolBar"));
     bar->setMovable(false);
-    bar->addWidget(new QLabel(tr(" Array: "), bar));
-    arrayCombo_ = new QComboBox(bar);
-    arrayCombo_->setObjectName(QStringLiteral("arrayChooser"));
-    arrayCombo_->setSizeAdjustPolicy(QComboBox::AdjustToContents);
-    arrayCombo_->setToolTip(tr("Point array shown on the vessel wall through the colour map"));
-    arrayCombo_->addItem(tr("None"), QString());
-    bar->addWidget(arrayCombo_);
-    bar->addWidget(new QLabel(tr("  Colour map: "), bar));
-    colorMapCombo_ = new QComboBox(bar);
-    colorMapCombo_->setObjectName(QStringLiteral("colorMapChooser"));
-    for (const auto map : colormaps::allColorMaps()) {
-        colorMapCombo_->addItem(
-            QString::fromUtf8(colormaps::displayName(map).data(),
-                              static_cast<qsizetype>(colormaps::displayName(map).size())),
-            static_cast<int>(map));
-    }
-    bar->addWidget(colorMapCombo_);
-    connect(arrayCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyStyle);
-    connect(colorMapCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyStyle);
-
-    bar->addSeparator();
     vssAction_ = bar->addAction(tr("VSS"));
     vssAction_->setObjectName(QStringLiteral("vssToggle"));
     vssAction_->setCheckable(true);
     vssAction_->setChecked(viewer_->vssSettings().enabled);
     vssAction_->setToolTip(
-        tr("Void Space Surface: a depth-coded surface in the space "
-           "between the vessels"));
-    bar->addWidget(new QLabel(tr(" p: "), bar));
-    vssPowerBox_ = new QDoubleSpinBox(bar);
-    vssPowerBox_->setObjectName(QStringLiteral("vssPower"));
-    vssPowerBox_->setRange(0.25, 64.0);
-    vssPowerBox_->setDecimals(2);
-    vssPowerBox_->setSingleStep(0.5);
-    vssPowerBox_->setValue(viewer_->vssSettings().solver.p);
-    vssPowerBox_->setKeyboardTracking(false);  // solve once per entered value, not per digit
-    vssPowerBox_->setToolTip(
-        tr("Interpolation power p: higher values follow the nearest "
-           "vessel more closely"));
-    bar->addWidget(vssPowerBox_);
-    bar->addWidget(new QLabel(tr("  Depth scale: "), bar));
-    depthScaleCombo_ = new QComboBox(bar);
-    depthScaleCombo_->setObjectName(QStringLiteral("depthScaleChooser"));
-    for (const auto scale : colormaps::allDepthScales()) {
-        const auto label = colormaps::displayName(scale);
-        depthScaleCombo_->addItem(
-            QString::fromUtf8(label.data(), static_cast<qsizetype>(label.size())),
-            static_cast<int>(scale));
-    }
-    depthScaleCombo_->setCurrentIndex(
-        depthScaleCombo_->findData(static_cast<int>(viewer_->vssSettings().scale)));
-    bar->addWidget(depthScaleCombo_);
-    connect(vssAction_, &QAction::toggled, this, &MainWindow::applyVss);
-    QAction* aoAction = bar->addAction(tr("AO"));
-    aoAction->setObjectName(QStringLiteral("aoToggle"));
-    aoAction->setCheckable(true);
-    aoAction->setChecked(viewer_->aoSettings().enabled);
-    aoAction->setToolTip(tr("Ambient occlusion: shade the surface next to the vessels"));
-    connect(aoAction, &QAction::toggled, this, [this](bool on) {
+        tr("Void Space Surface: a depth-coded surface in the space between the vessels"));
+    connect(vssAction_, &QAction::toggled, this, [this](bool on) {
+        render::VssSettings vss = viewer_->vssSettings();
+        vss.enabled = on;
+        viewer_->setVssSettings(vss);
+        syncControls();
+    });
+    aoAction_ = bar->addAction(tr("AO"));
+    aoAction_->setObjectName(QStringLiteral("aoToggle"));
+    aoAction_->setCheckable(true);
+    aoAction_->setChecked(viewer_->aoSettings().enabled);
+    aoAction_->setToolTip(tr("Ambient occlusion: shade the surface next to the vessels"));
+    connect(aoAction_, &QAction::toggled, this, [this](bool on) {
         render::AoSettings ao = viewer_->aoSettings();
         ao.enabled = on;
         viewer_->setAoSettings(ao);
+        syncControls();
     });
     bar->addSeparator();
-    bar->addWidget(new QLabel(tr(" Vessel cue: "), bar));
-    cueCombo_ = new QComboBox(bar);
-    cueCombo_->setObjectName(QStringLiteral("vesselCueChooser"));
-    cueCombo_->setToolTip(tr("A depth cue on the vessels themselves, for comparison"));
-    for (const auto cue : render::allVesselCues()) {
-        const auto label = render::displayName(cue);
-        cueCombo_->addItem(QString::fromUtf8(label.data(), static_cast<qsizetype>(label.size())),
-                           static_cast<int>(cue));
-    }
-    cueCombo_->setCurrentIndex(cueCombo_->findData(static_cast<int>(viewer_->vesselCue().cue)));
-    bar->addWidget(cueCombo_);
-    connect(cueCombo_, &QComboBox::currentIndexChanged, this, [this] {
-        render::VesselCueSettings cue = viewer_->vesselCue();
-        cue.cue = static_cast<render::VesselCue>(cueCombo_->currentData().toInt());
-        viewer_->setVesselCue(cue);
-    });
-    connect(vssPowerBox_, &QDoubleSpinBox::valueChanged, this, &MainWindow::applyVss);
-    connect(depthScaleCombo_, &QComboBox::currentIndexChanged, this, &MainWindow::applyVss);
+    cvdAction_ = bar->addAction(tr("Colour-blind safe"));
+    cvdAction_->setObjectName(QStringLiteral("colorBlindSafeToggle"));
+    cvdAction_->setCheckable(true);
+    cvdAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_B));
+    cvdAction_->setToolTip(
+        tr("Colour-blind-safe mode (%1): dark-means-deep on the VSS, cividis on the vessels, "
+           "no red/green depth cue")
+            .arg(cvdAction_->shortcut().toString(QKeySequence::NativeText)));
+    connect(cvdAction_, &QAction::toggled, this, &MainWindow::setColorBlindSafe);
 }
 
-void MainWindow::applyVss() {
-    render::VssSettings settings = viewer_->vssSettings();
-    settings.enabled = vssAction_->isChecked();
-    settings.solver.p = vssPowerBox_->value();
-    settings.scale = static_cast<colormaps::DepthScale>(depthScaleCombo_->currentData().toInt());
-    vssPowerBox_->setEnabled(settings.enabled);
-    depthScaleCombo_->setEnabled(settings.enabled);
-    viewer_->setVssSettings(settings);
+void MainWindow::setColorBlindSafe(bool on) {
+    const DisplayState current = displayState(*viewer_);
+    if (on) {
+        beforeColorBlindSafe_ = current;
+        applyDisplayState(*viewer_, colorBlindSafe(current));
+    } else {
+        // Back to the colours from before (the defaults when the view was
+        // already safe); everything else stays as it is now.
+        const DisplayState before = beforeColorBlindSafe_.value_or(DisplayState{});
+        DisplayState restored = current;
+        restored.vss.scale = before.vss.scale;
+        restored.style.colorMap = before.style.colorMap;
+        restored.cue.cue = before.cue.cue;
+        applyDisplayState(*viewer_, restored);
+        beforeColorBlindSafe_.reset();
+    }
+    syncControls();
+}
+
+void MainWindow::syncControls() {
+    vssPanel_->syncFromViewer();
+    functionalPanel_->syncFromViewer();
+    displayPanel_->syncFromViewer();
+    const QSignalBlocker vss(vssAction_);
+    vssAction_->setChecked(viewer_->vssSettings().enabled);
+    const QSignalBlocker ao(aoAction_);
+    aoAction_->setChecked(viewer_->aoSettings().enabled);
+    const QSignalBlocker cvd(cvdAction_);
+    cvdAction_->setChecked(isColorBlindSafe(displayState(*viewer_)));
+    if (legendsAction_ != nullptr) {
+        const QSignalBlocker legends(legendsAction_);
+        legendsAction_->setChecked(viewer_->legendsVisible());
+    }
+    updateRangeLabel();
+}
+
+QComboBox* MainWindow::arrayChooser() const {
+    return functionalPanel_->arrayChooser();
+}
+
+QComboBox* MainWindow::colorMapChooser() const {
+    return functionalPanel_->colorMapChooser();
+}
+
+QDoubleSpinBox* MainWindow::vssPowerBox() const {
+    return vssPanel_->powerBox();
+}
+
+QComboBox* MainWindow::depthScaleChooser() const {
+    return vssPanel_->scaleChooser();
+}
+
+QComboBox* MainWindow::vesselCueChooser() const {
+    return displayPanel_->vesselCueChooser();
+}
+
+void MainWindow::resetToDefaults() {
+    resetViewSettings(*viewer_);
+    beforeColorBlindSafe_.reset();
+    resetLayout();
+    syncControls();
+}
+
+QString MainWindow::shortcutSummary() const {
+    QStringList rows;
+    const auto row = [&rows](const QString& what, const QString& keys) {
+        rows << QStringLiteral("<tr><td>%1</td><td><b>%2</b></td></tr>")
+                    .arg(what.toHtmlEscaped(), keys.toHtmlEscaped());
+    };
+    const std::function<void(const QMenu*)> collect = [&](const QMenu* menu) {
+        for (const QAction* action : menu->actions()) {
+            if (action->menu() != nullptr) {
+                collect(action->menu());
+            } else if (!action->shortcut().isEmpty()) {
+                row(action->text().remove(QLatin1Char('&')),
+                    action->shortcut().toString(QKeySequence::NativeText));
+            }
+        }
+    };
+    for (const QAction* action : menuBar()->actions()) {
+        if (action->menu() != nullptr) {
+            collect(action->menu());
+        }
+    }
+    row(tr("Rotate"), tr("left drag"));
+    row(tr("Pan"), tr("right or middle drag, Shift + left drag"));
+    row(tr("Zoom"), tr("mouse wheel"));
+    return QStringLiteral("<table cellspacing=\"6\">") + rows.join(QString()) +
+           QStringLiteral("</table>");
+}
+
+void MainWindow::showShortcuts() {
+    auto* box = new QMessageBox(QMessageBox::NoIcon, tr("Keyboard Shortcuts"), shortcutSummary(),
+                                QMessageBox::Close, this);
+    box->setObjectName(QStringLiteral("shortcutsBox"));
+    box->setTextFormat(Qt::RichText);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::resetLayout() {
+    restoreState(defaultLayout_, kLayoutVersion);
+    for (QDockWidget* dock : docks_) {
+        dock->show();
+    }
+    docks_.front()->raise();
 }
 
 void MainWindow::buildStatusBar() {
@@ -302,17 +415,9 @@ QString MainWindow::meshFileFilter() {
 }
 
 std::optional<QString> MainWindow::findDemoFile() {
-    const QString fromEnv = qEnvironmentVariable("VV_DEMO_FILE");
-    if (!fromEnv.isEmpty()) {
-        return fromEnv;
-    }
-    const QDir exeDir(QCoreApplication::applicationDirPath());
-    for (const char* relative :
-         {"../resources/demo/vessel-tree.vtp", "../share/vesselview/demo/vessel-tree.vtp"}) {
-        const QString candidate = QDir::cleanPath(exeDir.filePath(QString::fromLatin1(relative)));
-        if (QFileInfo(candidate).isFile()) {
-            return candidate;
-        }
+    // $VV_DEMO_FILE, else relative to the binary: build tree or install prefix.
+    if (const auto demo = vv::app::findDemoFile()) {
+        return QFileInfo(*demo).absoluteFilePath();
     }
     return std::nullopt;
 }
@@ -374,6 +479,7 @@ void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
                 } else {
                     title = tr("demo vessel tree");
                 }
+                sceneFiles_ = files;
                 setScene(std::move(scene), title);
                 addRecentFiles(files);
             });
@@ -415,20 +521,10 @@ void MainWindow::taskFinished() {
 
 void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString& title) {
     viewer_->setScene(scene);
-    {
-        const QSignalBlocker blocker(arrayCombo_);
-        arrayCombo_->clear();
-        arrayCombo_->addItem(tr("None"), QString());
-        if (scene) {
-            for (const auto& name : render::pointArrayNames(*scene)) {
-                arrayCombo_->addItem(arrayLabel(*scene, name), QString::fromStdString(name));
-            }
-            const int index =
-                arrayCombo_->findData(QString::fromStdString(render::defaultArrayName(*scene)));
-            arrayCombo_->setCurrentIndex(std::max(index, 0));
-        }
-    }
-    applyStyle();
+    functionalPanel_->sceneChanged();
+    dataPanel_->sceneChanged(title, sceneFiles_);
+    sceneFiles_.clear();
+    syncControls();
     setWindowTitle(title.isEmpty() ? QStringLiteral("VesselView")
                                    : title + QStringLiteral(" — VesselView"));
     if (scene) {
@@ -448,15 +544,6 @@ void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString&
     emit sceneShown();
 }
 
-void MainWindow::applyStyle() {
-    render::MeshStyle style = viewer_->style();
-    style.array = arrayCombo_->currentData().toString().toStdString();
-    style.colorMap = static_cast<colormaps::ColorMap>(colorMapCombo_->currentData().toInt());
-    style.range.reset();
-    viewer_->setStyle(style);
-    updateRangeLabel();
-}
-
 void MainWindow::updateRangeLabel() {
     const auto& scene = viewer_->scene();
     const std::string& array = viewer_->style().array;
@@ -464,13 +551,15 @@ void MainWindow::updateRangeLabel() {
         rangeLabel_->clear();
         return;
     }
-    const auto range = render::arrayRange(*scene, array);
+    // The range in use: the chosen one, else the array's full range.
+    const auto range =
+        viewer_->style().range ? viewer_->style().range : render::arrayRange(*scene, array);
     if (!range) {
-        rangeLabel_->setText(tr("%1: no data").arg(arrayLabel(*scene, array)));
+        rangeLabel_->setText(tr("%1: no data").arg(panels::arrayLabel(*scene, array)));
         return;
     }
     rangeLabel_->setText(tr("%1: %2 – %3")
-                             .arg(arrayLabel(*scene, array))
+                             .arg(panels::arrayLabel(*scene, array))
                              .arg(static_cast<double>(range->first), 0, 'g', 4)
                              .arg(static_cast<double>(range->second), 0, 'g', 4));
 }
@@ -538,6 +627,11 @@ void MainWindow::rebuildRecentMenu() {
 }
 
 void MainWindow::setScreenshotTarget(const QString& path) {
+    if (!path.isEmpty()) {
+        // Screenshots show the default display, not what was remembered.
+        resetViewSettings(*viewer_);
+        syncControls();
+    }
     screenshotPath_ = path;
     screenshotPending_ = !path.isEmpty();
     if (screenshotPending_) {
@@ -564,6 +658,8 @@ void MainWindow::updateVssLabel() {
 
 void MainWindow::onFrameRendered() {
     updateVssLabel();
+    vssPanel_->updateStatus();
+    displayPanel_->frameRendered();
     if (!screenshotPending_ || !viewer_->scene() || viewer_->framesWithScene() == 0) {
         return;
     }
@@ -621,20 +717,30 @@ void MainWindow::closeEvent(QCloseEvent* event) {
     if (task_) {
         task_->cancel();
     }
+    if (screenshotPath_.isEmpty()) {
+        QSettings settings;
+        settings.setValue(QLatin1String(kGeometryKey), saveGeometry());
+        settings.setValue(QLatin1String(kLayoutKey), saveState(kLayoutVersion));
+        saveViewSettings(*viewer_, settings);
+    }
     event->accept();
 }
 
-void MainWindow::showAbout() {
+QString MainWindow::aboutText() const {
     const QString gl =
         viewer_->glDescription().isEmpty() ? tr("not initialised") : viewer_->glDescription();
-    QMessageBox::about(
-        this, tr("About VesselView"),
-        tr("<h3>VesselView %1</h3>"
-           "<p>A workstation for vessel trees: meshes with wall shear stress, pressure and "
-           "other parameters on the vessel wall, and Void Space Surfaces.</p>"
-           "<p>OpenGL: %2<br>Qt: %3</p>"
-           "<p>Licensed under the GNU General Public License, version 3 or later.</p>")
-            .arg(QStringLiteral(VV_VERSION), gl.toHtmlEscaped(), QString::fromLatin1(qVersion())));
+    // VTK, OpenCV and DCMTK stay inside the modules (no version API yet).
+    return tr("<h3>VesselView %1</h3>"
+              "<p>A workstation for vessel trees: meshes with wall shear stress, pressure and "
+              "other parameters on the vessel wall, and Void Space Surfaces.</p>"
+              "<p>OpenGL: %2<br>Qt: %3 (built with %4)</p>"
+              "<p>Licensed under the GNU General Public License, version 3 or later.</p>")
+        .arg(QStringLiteral(VV_VERSION), gl.toHtmlEscaped(), QString::fromLatin1(qVersion()),
+             QStringLiteral(QT_VERSION_STR));
+}
+
+void MainWindow::showAbout() {
+    QMessageBox::about(this, tr("About VesselView"), aboutText());
 }
 
 }  // namespace vv::gui

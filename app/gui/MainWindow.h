@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QByteArray>
+#include <QList>
 #include <QMainWindow>
 #include <QPointer>
 #include <QString>
@@ -8,10 +10,12 @@
 #include <memory>
 #include <optional>
 
+#include "gui/DisplayPreset.h"
 #include "vv/io/Mesh.h"
 
 class QAction;
 class QComboBox;
+class QDockWidget;
 class QDoubleSpinBox;
 class QLabel;
 class QMenu;
@@ -24,11 +28,21 @@ namespace vv::gui {
 class MeshLoadTask;
 class ViewerWidget;
 
-/// The main window: the 3-D viewer, File / View / Help menus, a toolbar with
-/// the point-array and colour-map choosers and the VSS controls (on/off, p,
-/// depth scale), and a status bar with load
-/// progress and Cancel. Loading and demo generation run on a worker
-/// (MeshLoadTask); errors are shown in a message box naming file and problem.
+namespace panels {
+class DataPanel;
+class DisplayPanel;
+class FunctionalPanel;
+class VssPanel;
+}  // namespace panels
+
+/// The main window: the 3-D viewer, File / View / Help menus, a toolbar
+/// (VSS on/off, ambient occlusion, colour-blind-safe mode), the side panels
+/// as dock widgets ("Void Space Surface", "Functional parameters",
+/// "Display", "Data"; their layout is restored from QSettings), and a status
+/// bar with load progress and Cancel. Loading and demo generation run on a
+/// worker (MeshLoadTask); errors are shown in a message box naming file and
+/// problem. The viewer holds the settings: every control writes it and all
+/// controls then show what it holds (syncControls()).
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -45,7 +59,8 @@ class MainWindow : public QMainWindow {
     /// window title. Selects the default array (wss when present).
     void setScene(std::shared_ptr<const io::Scene> scene, const QString& title);
 
-    /// Screenshot mode: once data is shown, save the viewer's frame to `path`
+    /// Screenshot mode: the default display settings (not the remembered
+    /// ones; see ViewSettings.h); once data is shown, save the viewer's frame to `path`
     /// (PNG, written atomically) and quit the application with exit code 0,
     /// or 1 (message on stderr) when loading, rendering or saving fails.
     /// Message boxes are not shown in this mode.
@@ -63,15 +78,38 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] static QStringList recentFiles();
 
     [[nodiscard]] ViewerWidget* viewer() const noexcept { return viewer_; }
-    [[nodiscard]] QComboBox* arrayChooser() const noexcept { return arrayCombo_; }
-    [[nodiscard]] QComboBox* colorMapChooser() const noexcept { return colorMapCombo_; }
-    /// The toolbar's VSS controls: on/off (checked = on), the IDW power p and
-    /// the depth colour scale.
+    /// The "Functional parameters" panel's array chooser (item 0 "None" with
+    /// empty data, then the point arrays, data = array name) and colour map.
+    [[nodiscard]] QComboBox* arrayChooser() const;
+    [[nodiscard]] QComboBox* colorMapChooser() const;
+    /// The VSS on/off toggle (toolbar and menu; checked = on), and the VSS
+    /// panel's IDW power p and depth colour scale.
     [[nodiscard]] QAction* vssToggle() const noexcept { return vssAction_; }
-    [[nodiscard]] QDoubleSpinBox* vssPowerBox() const noexcept { return vssPowerBox_; }
-    [[nodiscard]] QComboBox* depthScaleChooser() const noexcept { return depthScaleCombo_; }
-    /// The depth cue on the vessels (toolbar; item data = VesselCue as int).
-    [[nodiscard]] QComboBox* vesselCueChooser() const noexcept { return cueCombo_; }
+    [[nodiscard]] QDoubleSpinBox* vssPowerBox() const;
+    [[nodiscard]] QComboBox* depthScaleChooser() const;
+    /// The depth cue on the vessels (Display panel; item data = VesselCue as int).
+    [[nodiscard]] QComboBox* vesselCueChooser() const;
+    /// View > Colour-Blind-Safe Mode (Ctrl+Shift+B; also on the toolbar):
+    /// checking it applies colorBlindSafe() to the view, unchecking restores
+    /// the depth scale, colour map and cue from before. It shows checked
+    /// whenever the view is colour-blind safe (isColorBlindSafe()).
+    [[nodiscard]] QAction* colorBlindSafeToggle() const noexcept { return cvdAction_; }
+    [[nodiscard]] panels::VssPanel* vssPanel() const noexcept { return vssPanel_; }
+    [[nodiscard]] panels::FunctionalPanel* functionalPanel() const noexcept {
+        return functionalPanel_;
+    }
+    [[nodiscard]] panels::DisplayPanel* displayPanel() const noexcept { return displayPanel_; }
+    [[nodiscard]] panels::DataPanel* dataPanel() const noexcept { return dataPanel_; }
+    /// View > Panels > Reset Layout: the docks as in a fresh window.
+    void resetLayout();
+    /// View > Reset to Defaults: the display settings of a fresh viewer
+    /// (resetViewSettings()) and the default layout. Data, array and range stay.
+    void resetToDefaults();
+    /// Help > Keyboard Shortcuts: every menu action with a shortcut, and the
+    /// mouse, as an HTML table.
+    [[nodiscard]] QString shortcutSummary() const;
+    /// Help > About: versions of VesselView, OpenGL and Qt (HTML).
+    [[nodiscard]] QString aboutText() const;
     /// View > Show Legends (checked = legends drawn).
     [[nodiscard]] QAction* legendsToggle() const noexcept { return legendsAction_; }
     /// The status bar's VSS quality: "VSS: preview", "VSS: exact, N ms", …
@@ -92,32 +130,41 @@ class MainWindow : public QMainWindow {
     void closeEvent(QCloseEvent* event) override;
 
   private:
+    void buildDocks();
     void buildMenus();
     void buildToolBar();
     void buildStatusBar();
+    /// Every control shows the viewer's current settings.
+    void syncControls();
+    void setColorBlindSafe(bool on);
     void startTask(MeshLoadTask* task, const QStringList& files);
     void taskFinished();
     void showError(const QString& title, const QString& message);
     void addRecentFiles(const QStringList& files);
     void rebuildRecentMenu();
-    void applyStyle();
-    void applyVss();
     void updateRangeLabel();
     void onFrameRendered();
     void updateVssLabel();
     void finishScreenshot(bool ok, const QString& message);
     void showAbout();
+    void showShortcuts();
 
     QStackedWidget* stack_ = nullptr;
     ViewerWidget* viewer_ = nullptr;
     std::unique_ptr<ViewerWidget> detachedViewer_;  ///< owns viewer_ when GL is unavailable
     QLabel* glMessage_ = nullptr;
-    QComboBox* arrayCombo_ = nullptr;
-    QComboBox* colorMapCombo_ = nullptr;
+    panels::VssPanel* vssPanel_ = nullptr;
+    panels::FunctionalPanel* functionalPanel_ = nullptr;
+    panels::DisplayPanel* displayPanel_ = nullptr;
+    panels::DataPanel* dataPanel_ = nullptr;
+    QList<QDockWidget*> docks_;
+    QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;
-    QDoubleSpinBox* vssPowerBox_ = nullptr;
-    QComboBox* depthScaleCombo_ = nullptr;
-    QComboBox* cueCombo_ = nullptr;
+    QAction* aoAction_ = nullptr;
+    QAction* cvdAction_ = nullptr;
+    /// The display before the colour-blind-safe mode was switched on.
+    std::optional<DisplayState> beforeColorBlindSafe_;
+    QStringList sceneFiles_;  ///< the files of the scene being loaded / shown
     QAction* legendsAction_ = nullptr;
     QLabel* vssLabel_ = nullptr;
     QMenu* recentMenu_ = nullptr;

@@ -1,0 +1,315 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/panels/DisplayPanel.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGridLayout>
+#include <QLabel>
+#include <QSlider>
+#include <QToolButton>
+#include <cmath>
+
+#include "gui/ViewerWidget.h"
+#include "gui/panels/PanelUtil.h"
+#include "vv/render/MeshRenderer.h"
+#include "vv/render/ViewPresets.h"
+
+namespace vv::gui::panels {
+
+namespace {
+
+glm::vec3 toVec(const QColor& color) {
+    return {static_cast<float>(color.redF()), static_cast<float>(color.greenF()),
+            static_cast<float>(color.blueF())};
+}
+
+/// The background choices; the first is the viewer's default.
+struct BackgroundChoice {
+    const char* label;  ///< translated in the panel's context
+    glm::vec3 color;
+};
+const BackgroundChoice kBackgrounds[] = {
+    {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Dark grey"), {0.13F, 0.14F, 0.16F}},
+    {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Black"), {0.0F, 0.0F, 0.0F}},
+    {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Mid grey"), {0.5F, 0.5F, 0.5F}},
+    {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "White"), {1.0F, 1.0F, 1.0F}},
+};
+
+QString capitalised(std::string_view name) {
+    QString text = fromUtf8(name);
+    if (!text.isEmpty()) {
+        text[0] = text[0].toUpper();
+    }
+    return text;
+}
+
+}  // namespace
+
+DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
+    : QWidget(parent), viewer_(viewer) {
+    setObjectName(QStringLiteral("displayPanel"));
+    auto* form = new QFormLayout(this);
+
+    cue_ = new QComboBox(this);
+    cue_->setObjectName(QStringLiteral("vesselCueChooser"));
+    cue_->setToolTip(tr("A depth cue on the vessels themselves, for comparison with the VSS"));
+    for (const auto cue : render::allVesselCues()) {
+        cue_->addItem(fromUtf8(render::displayName(cue)), static_cast<int>(cue));
+    }
+    form->addRow(tr("Vessel cue:"), cue_);
+    fogStrength_ = new QSlider(Qt::Horizontal, this);
+    fogStrength_->setObjectName(QStringLiteral("fogStrength"));
+    fogStrength_->setRange(0, 100);
+    form->addRow(tr("Fog strength:"), fogStrength_);
+    fresnelExponent_ = new QDoubleSpinBox(this);
+    fresnelExponent_->setObjectName(QStringLiteral("fresnelExponent"));
+    fresnelExponent_->setRange(0.25, 8.0);
+    fresnelExponent_->setSingleStep(0.25);
+    fresnelExponent_->setKeyboardTracking(false);
+    form->addRow(tr("Fresnel exponent:"), fresnelExponent_);
+
+    background_ = new QComboBox(this);
+    background_->setObjectName(QStringLiteral("backgroundChooser"));
+    background_->setToolTip(tr("Colour behind the vessels and the VSS"));
+    for (const BackgroundChoice& choice : kBackgrounds) {
+        background_->addItem(tr(choice.label), toQColor(choice.color));
+    }
+    background_->addItem(tr("Custom…"), QColor());
+    form->addRow(tr("Background:"), background_);
+    vesselColor_ = new QToolButton(this);
+    vesselColor_->setObjectName(QStringLiteral("vesselColor"));
+    vesselColor_->setMinimumWidth(64);
+    form->addRow(tr("Vessel colour:"), vesselColor_);
+    connect(vesselColor_, &QToolButton::clicked, this, &DisplayPanel::chooseVesselColor);
+
+    cameraButtons_ = new QWidget(this);
+    auto* grid = new QGridLayout(cameraButtons_);
+    grid->setContentsMargins(0, 0, 0, 0);
+    int column = 0;
+    for (const auto preset : render::allViewPresets()) {
+        auto* button = new QToolButton(cameraButtons_);
+        const QString name = capitalised(render::toString(preset));
+        button->setObjectName(QStringLiteral("view") + name);
+        button->setText(presetLabel(preset));
+        grid->addWidget(button, 0, column++);
+        connect(button, &QToolButton::clicked, this, [this, preset] {
+            if (const auto& scene = viewer_->scene()) {
+                viewer_->setCamera(render::presetCamera(*scene, std::max(1, viewer_->width()),
+                                                        std::max(1, viewer_->height()), preset));
+                emit changed();
+            }
+        });
+    }
+    int index = 0;
+    for (const auto view : render::allAnatomicalViews()) {
+        auto* button = new QToolButton(cameraButtons_);
+        const QString name = capitalised(render::toString(view));
+        button->setObjectName(QStringLiteral("view") + name);
+        button->setText(anatomicalLabel(view));
+        grid->addWidget(button, 1 + index / 3, index % 3);
+        ++index;
+        connect(button, &QToolButton::clicked, this, [this, view] {
+            if (const auto& scene = viewer_->scene()) {
+                viewer_->setCamera(render::presetCamera(
+                    *scene, std::max(1, viewer_->width()), std::max(1, viewer_->height()),
+                    render::ViewPreset::Far, render::anatomicalRotation(view)));
+                emit changed();
+            }
+        });
+    }
+    form->addRow(tr("Camera:"), cameraButtons_);
+
+    legends_ = new QCheckBox(tr("Show legends"), this);
+    legends_->setObjectName(QStringLiteral("displayLegends"));
+    legends_->setToolTip(tr("Depth and parameter legends over the view"));
+    form->addRow(legends_);
+    performance_ = new QCheckBox(tr("Performance overlay"), this);
+    performance_->setObjectName(QStringLiteral("displayPerformance"));
+    performance_->setToolTip(tr("The last frame's render passes and their CPU time in ms"));
+    form->addRow(performance_);
+
+    // Over the viewer's top-left corner, like the legends.
+    overlay_ = new QLabel(viewer_);
+    overlay_->setObjectName(QStringLiteral("performanceOverlay"));
+    overlay_->setAttribute(Qt::WA_TransparentForMouseEvents);
+    overlay_->setStyleSheet(
+        QStringLiteral("QLabel { background: rgba(0, 0, 0, 160); color: white; padding: 4px; "
+                       "font-family: monospace; }"));
+    overlay_->move(8, 8);
+    overlay_->hide();
+
+    makeNarrow(this);
+    syncFromViewer();
+
+    auto applyCueLater = [this] {
+        if (!syncing_) {
+            applyCue();
+        }
+    };
+    connect(cue_, &QComboBox::currentIndexChanged, this, applyCueLater);
+    connect(fogStrength_, &QSlider::valueChanged, this, applyCueLater);
+    connect(fresnelExponent_, &QDoubleSpinBox::valueChanged, this, applyCueLater);
+    connect(background_, &QComboBox::currentIndexChanged, this, [this] {
+        if (!syncing_) {
+            applyBackground();
+        }
+    });
+    connect(legends_, &QCheckBox::toggled, this, [this](bool on) {
+        if (!syncing_) {
+            viewer_->setLegendsVisible(on);
+            emit changed();
+        }
+    });
+    connect(performance_, &QCheckBox::toggled, this, [this](bool on) {
+        overlay_->setVisible(on);
+        frameRendered();
+    });
+}
+
+QString DisplayPanel::presetLabel(render::ViewPreset preset) {
+    switch (preset) {
+        case render::ViewPreset::Far:
+            return tr("Far");
+        case render::ViewPreset::Medium:
+            return tr("Medium");
+        case render::ViewPreset::Close:
+            return tr("Close");
+    }
+    return {};
+}
+
+QString DisplayPanel::anatomicalLabel(render::AnatomicalView view) {
+    switch (view) {
+        case render::AnatomicalView::Anterior:
+            return tr("Anterior");
+        case render::AnatomicalView::Posterior:
+            return tr("Posterior");
+        case render::AnatomicalView::Left:
+            return tr("Left");
+        case render::AnatomicalView::Right:
+            return tr("Right");
+        case render::AnatomicalView::Superior:
+            return tr("Superior");
+        case render::AnatomicalView::Inferior:
+            return tr("Inferior");
+    }
+    return {};
+}
+
+void DisplayPanel::applyCue() {
+    render::VesselCueSettings cue = viewer_->vesselCue();
+    cue.cue = static_cast<render::VesselCue>(cue_->currentData().toInt());
+    cue.fogStrength = static_cast<float>(fogStrength_->value()) / 100.0F;
+    cue.fresnelExponent = static_cast<float>(fresnelExponent_->value());
+    viewer_->setVesselCue(cue);
+    updateApplicability();
+    emit changed();
+}
+
+void DisplayPanel::applyBackground() {
+    QColor color = background_->currentData().value<QColor>();
+    if (!color.isValid()) {  // Custom…
+        color =
+            QColorDialog::getColor(toQColor(viewer_->background()), this, tr("Background colour"));
+        if (!color.isValid()) {
+            syncFromViewer();
+            return;
+        }
+    }
+    viewer_->setBackground(toVec(color));
+    syncFromViewer();
+    emit changed();
+}
+
+void DisplayPanel::chooseVesselColor() {
+    auto* dialog = new QColorDialog(toQColor(viewer_->style().vesselColor), this);
+    dialog->setObjectName(QStringLiteral("vesselColorDialog"));
+    dialog->setWindowTitle(tr("Vessel colour"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QColorDialog::colorSelected, this, [this](const QColor& color) {
+        render::MeshStyle style = viewer_->style();
+        style.vesselColor = toVec(color);
+        viewer_->setStyle(style);
+        syncFromViewer();
+        emit changed();
+    });
+    dialog->open();
+}
+
+void DisplayPanel::syncFromViewer() {
+    syncing_ = true;
+    const render::VesselCueSettings& cue = viewer_->vesselCue();
+    cue_->setCurrentIndex(cue_->findData(static_cast<int>(cue.cue)));
+    fogStrength_->setValue(static_cast<int>(std::lround(cue.fogStrength * 100.0F)));
+    fresnelExponent_->setValue(static_cast<double>(cue.fresnelExponent));
+    const QColor background = toQColor(viewer_->background());
+    int index = background_->count() - 1;  // Custom…
+    for (int i = 0; i + 1 < background_->count(); ++i) {
+        if (background_->itemData(i).value<QColor>().rgb() == background.rgb()) {
+            index = i;
+        }
+    }
+    background_->setCurrentIndex(index);
+    legends_->setChecked(viewer_->legendsVisible());
+    const QColor vessel = toQColor(viewer_->style().vesselColor);
+    vesselColor_->setText(vessel.name());
+    vesselColor_->setStyleSheet(QStringLiteral("QToolButton { background-color: %1; color: %2; }")
+                                    .arg(vessel.name(), vessel.lightnessF() > 0.5
+                                                            ? QStringLiteral("black")
+                                                            : QStringLiteral("white")));
+    syncing_ = false;
+    updateApplicability();
+}
+
+void DisplayPanel::updateApplicability() {
+    const auto cue = viewer_->vesselCue().cue;
+    setApplicable(fogStrength_, cue == render::VesselCue::Fog,
+                  tr("How far the farthest vessels fade into the background"),
+                  tr("Only the depth fog cue uses this"));
+    setApplicable(fresnelExponent_, cue == render::VesselCue::Fresnel,
+                  tr("k in (1 - |n·v|)^k: higher values keep the colour nearer the silhouette"),
+                  tr("Only the Fresnel edge cue uses this"));
+    const bool hasScene = viewer_->scene() != nullptr;
+    setApplicable(vesselColor_, viewer_->style().array.empty(),
+                  tr("Material colour of the vessels when no array colours them"),
+                  tr("An array colours the vessels; choose the array None to use a material "
+                     "colour"));
+    for (auto* button : cameraButtons_->findChildren<QToolButton*>()) {
+        setApplicable(button, hasScene, tr("Move the camera to this view of the data"),
+                      tr("No data loaded"));
+    }
+}
+
+void DisplayPanel::frameRendered() {
+    if (!overlay_->isVisible()) {
+        return;
+    }
+    QStringList lines;
+    double total = 0.0;
+    for (const auto& pass : viewer_->lastPasses()) {
+        if (pass.milliseconds) {
+            lines << QStringLiteral("%1 %2 ms")
+                         .arg(QString::fromStdString(pass.name), -14)
+                         .arg(*pass.milliseconds, 6, 'f', 2);
+            total += *pass.milliseconds;
+        } else {
+            lines << QStringLiteral("%1 %2")
+                         .arg(QString::fromStdString(pass.name), -14)
+                         .arg(pass.state == render::PassState::Culled ? tr("culled")
+                                                                      : tr("cached"));
+        }
+    }
+    if (lines.isEmpty()) {
+        lines << tr("no frame yet");
+    } else {
+        lines << tr("total (CPU) %1 ms").arg(total, 6, 'f', 2);
+    }
+    overlay_->setText(lines.join(QLatin1Char('\n')));
+    overlay_->adjustSize();
+    overlay_->raise();
+}
+
+}  // namespace vv::gui::panels

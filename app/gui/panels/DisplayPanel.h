@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+#include <glm/glm.hpp>
+
+#include "vv/render/ViewPresets.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QSlider;
+class QLabel;
+class QToolButton;
+
+namespace vv::gui {
+
+class ViewerWidget;
+
+namespace panels {
+
+/// The "Display" panel: the comparison cue on the vessels (none, vessel
+/// chromadepth / pseudo-chromadepth, fog, Fresnel edge), the vessels'
+/// material colour (used when no array colours them), the background,
+/// camera presets (Far, Medium, Close and the six anatomical views), the
+/// legends, and a performance overlay over the viewer (the last frame's
+/// passes with their CPU milliseconds).
+class DisplayPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit DisplayPanel(ViewerWidget* viewer, QWidget* parent = nullptr);
+
+    [[nodiscard]] QComboBox* vesselCueChooser() const noexcept { return cue_; }
+    [[nodiscard]] QComboBox* backgroundChooser() const noexcept { return background_; }
+    /// Opens a colour dialog (objectName "vesselColorDialog", window-modal,
+    /// not blocking) for the vessels' material colour.
+    [[nodiscard]] QToolButton* vesselColorButton() const noexcept { return vesselColor_; }
+    [[nodiscard]] QCheckBox* legendsBox() const noexcept { return legends_; }
+    [[nodiscard]] QCheckBox* performanceBox() const noexcept { return performance_; }
+    /// The overlay label over the viewer (hidden unless performanceBox() is checked).
+    [[nodiscard]] QLabel* performanceOverlay() const noexcept { return overlay_; }
+    // The camera buttons have objectName "viewFar", "viewMedium", "viewClose",
+    // "viewAnterior", … (findChild).
+
+  public slots:
+    /// Shows the viewer's current settings (without writing them back).
+    void syncFromViewer();
+    /// Refreshes the performance overlay from the last frame.
+    void frameRendered();
+
+  signals:
+    void changed();
+
+  private:
+    [[nodiscard]] static QString presetLabel(render::ViewPreset preset);
+    [[nodiscard]] static QString anatomicalLabel(render::AnatomicalView view);
+    void applyCue();
+    void applyBackground();
+    void chooseVesselColor();
+    void updateApplicability();
+
+    ViewerWidget* viewer_;
+    QComboBox* cue_ = nullptr;
+    QSlider* fogStrength_ = nullptr;
+    QDoubleSpinBox* fresnelExponent_ = nullptr;
+    QComboBox* background_ = nullptr;
+    QToolButton* vesselColor_ = nullptr;
+    QCheckBox* legends_ = nullptr;
+    QCheckBox* performance_ = nullptr;
+    QLabel* overlay_ = nullptr;
+    QWidget* cameraButtons_ = nullptr;
+    bool syncing_ = false;
+};
+
+}  // namespace panels
+}  // namespace vv::gui

@@ -1,0 +1,44 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QColor>
+#include <QString>
+#include <QVariant>
+#include <QWidget>
+#include <glm/glm.hpp>
+#include <string>
+#include <string_view>
+
+namespace vv::io {
+struct Scene;
+}
+
+namespace vv::gui::panels {
+
+/// A QString of UTF-8 text (the modules' names and labels).
+inline QString fromUtf8(std::string_view text) {
+    return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
+}
+
+/// Enables `widget` and shows `toolTip`, or disables it and shows `whyNot`
+/// as its tooltip, so that a control that does not apply says why.
+inline void setApplicable(QWidget* widget, bool applicable, const QString& toolTip,
+                          const QString& whyNot) {
+    widget->setEnabled(applicable);
+    widget->setToolTip(applicable ? toolTip : whyNot);
+}
+
+/// An sRGB colour with components in [0, 1] as a QColor.
+inline QColor toQColor(const glm::vec3& srgb) {
+    return QColor::fromRgbF(srgb.r, srgb.g, srgb.b);
+}
+
+/// "wss [Pa]" for a point array with a unit on some mesh of `scene`, else "wss".
+[[nodiscard]] QString arrayLabel(const io::Scene& scene, const std::string& name);
+
+/// Lets the panels' controls shrink to the dock's width instead of asking
+/// for their widest item / longest value (combo boxes elide, spin boxes
+/// scroll their text).
+void makeNarrow(QWidget* panel);
+
+}  // namespace vv::gui::panels

@@ -1,0 +1,275 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/panels/VssPanel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QSignalBlocker>
+#include <QSlider>
+#include <QSpinBox>
+#include <algorithm>
+#include <cmath>
+
+#include "gui/ViewerWidget.h"
+#include "gui/panels/PanelUtil.h"
+#include "vv/colormaps/DepthScale.h"
+#include "vv/core/Error.h"
+#include "vv/vss/Solver.h"
+
+namespace vv::gui::panels {
+
+namespace {
+
+constexpr int kPercent = 100;
+
+int percent(float fraction) {
+    return static_cast<int>(std::lround(fraction * kPercent));
+}
+
+}  // namespace
+
+double VssPanel::powerFromSlider(int position) noexcept {
+    const double t = std::clamp(position, 0, kSliderSteps) / static_cast<double>(kSliderSteps);
+    return kMinPower * std::pow(kMaxPower / kMinPower, t);
+}
+
+int VssPanel::sliderFromPower(double p) noexcept {
+    if (!(p > kMinPower)) {
+        return 0;
+    }
+    const double t = std::log(p / kMinPower) / std::log(kMaxPower / kMinPower);
+    return std::clamp(static_cast<int>(std::lround(t * kSliderSteps)), 0, kSliderSteps);
+}
+
+VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), viewer_(viewer) {
+    setObjectName(QStringLiteral("vssPanel"));
+    auto* form = new QFormLayout(this);
+
+    enabled_ = new QCheckBox(tr("Show the Void Space Surface"), this);
+    enabled_->setObjectName(QStringLiteral("vssEnabled"));
+    enabled_->setToolTip(tr("A depth-coded surface in the space between the vessels"));
+    form->addRow(enabled_);
+
+    powerSlider_ = new QSlider(Qt::Horizontal, this);
+    powerSlider_->setObjectName(QStringLiteral("vssPowerSlider"));
+    powerSlider_->setRange(0, kSliderSteps);
+    powerBox_ = new QDoubleSpinBox(this);
+    powerBox_->setObjectName(QStringLiteral("vssPower"));
+    powerBox_->setRange(kMinPower, kMaxPower);
+    powerBox_->setDecimals(2);
+    powerBox_->setSingleStep(0.25);
+    powerBox_->setKeyboardTracking(false);  // one solve per entered value, not per digit
+    auto* powerRow = new QHBoxLayout;
+    powerRow->addWidget(powerSlider_, 1);
+    powerRow->addWidget(powerBox_);
+    form->addRow(tr("Power p:"), powerRow);
+
+    solver_ = new QComboBox(this);
+    solver_->setObjectName(QStringLiteral("vssSolver"));
+    solver_->addItem(tr("Fast (with tolerance)"), static_cast<int>(vss::SolverKind::Fast));
+    solver_->addItem(tr("Exact"), static_cast<int>(vss::SolverKind::Brute));
+    solver_->addItem(tr("Paper's step"), static_cast<int>(vss::SolverKind::Step));
+    form->addRow(tr("Solver:"), solver_);
+    tolerance_ = new QDoubleSpinBox(this);
+    tolerance_->setObjectName(QStringLiteral("vssTolerance"));
+    tolerance_->setRange(0.05, 32.0);
+    tolerance_->setDecimals(2);
+    tolerance_->setSingleStep(0.25);
+    tolerance_->setSuffix(tr(" / 255"));
+    tolerance_->setKeyboardTracking(false);
+    form->addRow(tr("Tolerance:"), tolerance_);
+    step_ = new QSpinBox(this);
+    step_->setObjectName(QStringLiteral("vssStep"));
+    step_->setRange(1, 64);
+    step_->setKeyboardTracking(false);
+    form->addRow(tr("Step k:"), step_);
+
+    scale_ = new QComboBox(this);
+    scale_->setObjectName(QStringLiteral("depthScaleChooser"));
+    for (const auto scale : colormaps::allDepthScales()) {
+        scale_->addItem(fromUtf8(colormaps::displayName(scale)), static_cast<int>(scale));
+    }
+    form->addRow(tr("Colour scale:"), scale_);
+
+    isoLines_ = new QSpinBox(this);
+    isoLines_->setObjectName(QStringLiteral("vssIsoLines"));
+    isoLines_->setRange(0, 64);
+    isoLines_->setSpecialValueText(tr("None"));
+    form->addRow(tr("Iso-lines:"), isoLines_);
+    isoStrength_ = new QSlider(Qt::Horizontal, this);
+    isoStrength_->setObjectName(QStringLiteral("vssIsoStrength"));
+    isoStrength_->setRange(0, kPercent);
+    form->addRow(tr("Iso-line strength:"), isoStrength_);
+    lighting_ = new QSlider(Qt::Horizontal, this);
+    lighting_->setObjectName(QStringLiteral("vssLighting"));
+    lighting_->setRange(0, kPercent);
+    form->addRow(tr("Lighting:"), lighting_);
+
+    ao_ = new QCheckBox(tr("Ambient occlusion"), this);
+    ao_->setObjectName(QStringLiteral("aoEnabled"));
+    form->addRow(ao_);
+    aoRadius_ = new QDoubleSpinBox(this);
+    aoRadius_->setObjectName(QStringLiteral("aoRadius"));
+    aoRadius_->setRange(0.1, 100.0);
+    aoRadius_->setDecimals(1);
+    aoRadius_->setSingleStep(0.5);
+    aoRadius_->setKeyboardTracking(false);
+    form->addRow(tr("AO radius:"), aoRadius_);
+
+    status_ = new QLabel(this);
+    status_->setObjectName(QStringLiteral("vssStatus"));
+    status_->setWordWrap(true);
+    form->addRow(status_);
+
+    makeNarrow(this);
+    powerBox_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    powerBox_->setFixedWidth(powerBox_->sizeHint().width());
+    syncFromViewer();
+
+    connect(powerSlider_, &QSlider::valueChanged, this, [this](int position) {
+        if (!syncing_) {
+            powerBox_->setValue(powerFromSlider(position));  // applies through the spin box
+        }
+    });
+    connect(powerBox_, &QDoubleSpinBox::valueChanged, this, [this](double p) {
+        if (!syncing_) {
+            const QSignalBlocker blocker(powerSlider_);
+            powerSlider_->setValue(sliderFromPower(p));
+            apply();
+        }
+    });
+    auto applyLater = [this] {
+        if (!syncing_) {
+            apply();
+        }
+    };
+    connect(enabled_, &QCheckBox::toggled, this, applyLater);
+    connect(solver_, &QComboBox::currentIndexChanged, this, applyLater);
+    connect(tolerance_, &QDoubleSpinBox::valueChanged, this, applyLater);
+    connect(step_, &QSpinBox::valueChanged, this, applyLater);
+    connect(scale_, &QComboBox::currentIndexChanged, this, applyLater);
+    connect(isoLines_, &QSpinBox::valueChanged, this, applyLater);
+    connect(isoStrength_, &QSlider::valueChanged, this, applyLater);
+    connect(lighting_, &QSlider::valueChanged, this, applyLater);
+    connect(ao_, &QCheckBox::toggled, this, applyLater);
+    connect(aoRadius_, &QDoubleSpinBox::valueChanged, this, applyLater);
+}
+
+void VssPanel::syncFromViewer() {
+    syncing_ = true;
+    const render::VssSettings& vss = viewer_->vssSettings();
+    const render::AoSettings& ao = viewer_->aoSettings();
+    enabled_->setChecked(vss.enabled);
+    powerBox_->setValue(vss.solver.p);
+    powerSlider_->setValue(sliderFromPower(vss.solver.p));
+    int solverIndex = solver_->findData(static_cast<int>(vss.solver.kind));
+    if (solverIndex < 0) {  // the reference solver is exact too
+        solverIndex = solver_->findData(static_cast<int>(vss::SolverKind::Brute));
+    }
+    solver_->setCurrentIndex(solverIndex);
+    tolerance_->setValue(vss.solver.tolerance * 255.0);
+    step_->setValue(vss.solver.step);
+    scale_->setCurrentIndex(scale_->findData(static_cast<int>(vss.scale)));
+    isoLines_->setValue(vss.isoLines);
+    isoStrength_->setValue(percent(vss.isoLineStrength));
+    lighting_->setValue(percent(vss.lighting));
+    ao_->setChecked(ao.enabled);
+    aoRadius_->setValue(static_cast<double>(ao.radius));
+    syncing_ = false;
+    updateApplicability();
+    updateBound();
+    updateStatus();
+}
+
+void VssPanel::apply() {
+    render::VssSettings vss = viewer_->vssSettings();
+    vss.enabled = enabled_->isChecked();
+    vss.solver.p = powerBox_->value();
+    const auto kind = static_cast<vss::SolverKind>(solver_->currentData().toInt());
+    // Keep the reference solver while "Exact" stays selected.
+    if (!(kind == vss::SolverKind::Brute && vss.solver.kind == vss::SolverKind::Reference)) {
+        vss.solver.kind = kind;
+    }
+    vss.solver.tolerance = tolerance_->value() / 255.0;
+    vss.solver.step = step_->value();
+    vss.scale = static_cast<colormaps::DepthScale>(scale_->currentData().toInt());
+    vss.isoLines = isoLines_->value();
+    vss.isoLineStrength = static_cast<float>(isoStrength_->value()) / kPercent;
+    vss.lighting = static_cast<float>(lighting_->value()) / kPercent;
+    viewer_->setVssSettings(vss);
+    render::AoSettings ao = viewer_->aoSettings();
+    ao.enabled = ao_->isChecked();
+    ao.radius = static_cast<float>(aoRadius_->value());
+    viewer_->setAoSettings(ao);
+    updateApplicability();
+    updateBound();
+    updateStatus();
+    emit changed();
+}
+
+void VssPanel::updateApplicability() {
+    const bool on = enabled_->isChecked();
+    const QString off = tr("Turn the Void Space Surface on to change this");
+    const auto kind = static_cast<vss::SolverKind>(solver_->currentData().toInt());
+    setApplicable(powerSlider_, on, tr("Interpolation power p (logarithmic, 0.25 to 64)"), off);
+    setApplicable(powerBox_, on,
+                  tr("Interpolation power p: higher values follow the nearest vessel more "
+                     "closely"),
+                  off);
+    setApplicable(solver_, on, tr("How the surface is interpolated: speed against accuracy"), off);
+    setApplicable(tolerance_, on && kind == vss::SolverKind::Fast,
+                  tr("Largest error of the fast solver, in 1/255 of the depth range"),
+                  on ? tr("Only the fast solver has a tolerance") : off);
+    setApplicable(step_, on && kind == vss::SolverKind::Step,
+                  tr("The paper's approximation: every k-th contour pixel"),
+                  on ? tr("Only the paper's step solver uses k") : off);
+    setApplicable(scale_, on, tr("Colours of depth on the surface"), off);
+    setApplicable(isoLines_, on, tr("Lines of equal depth on the surface"), off);
+    setApplicable(isoStrength_, on && isoLines_->value() > 0, tr("How dark the iso-lines are"),
+                  on ? tr("No iso-lines are drawn (set a count first)") : off);
+    setApplicable(lighting_, on, tr("0: flat colours, 100: fully lit surface"), off);
+    ao_->setToolTip(tr("Shade the surface next to the vessels, so they look anchored on it"));
+    setApplicable(aoRadius_, ao_->isChecked(), tr("Reach of the ambient occlusion, scene units"),
+                  tr("Ambient occlusion is off"));
+}
+
+void VssPanel::updateBound() {
+    const render::VssSettings& vss = viewer_->vssSettings();
+    try {
+        // errorBound() is the solver's own promise (0 exact, NaN none).
+        const double error = vss::makeSolver(render::effectiveSolverOptions(vss))->errorBound();
+        if (std::isnan(error)) {
+            bound_ = tr("no error bound (step solver)");
+        } else if (error == 0.0) {
+            bound_ = tr("exact");
+        } else {
+            bound_ = tr("error ≤ %1 / 255").arg(error * 255.0, 0, 'g', 3);
+        }
+    } catch (const vv::Error& e) {
+        bound_ = QString::fromStdString(e.what());
+    }
+}
+
+void VssPanel::updateStatus() {
+    const render::VssSettings& vss = viewer_->vssSettings();
+    if (!vss.enabled) {
+        status_->setText(tr("Void Space Surface off"));
+        return;
+    }
+    const render::VssFrameStatus& status = viewer_->vssStatus();
+    QString solve;
+    if (status.pending) {
+        solve = tr("solving…");
+    } else if (status.shown) {
+        solve = status.preview ? tr("preview, %1 ms").arg(std::lround(status.solveMilliseconds))
+                               : tr("solved in %1 ms").arg(std::lround(status.solveMilliseconds));
+    } else {
+        solve = tr("not solved yet");
+    }
+    status_->setText(tr("Solve: %1; %2").arg(solve, bound_));
+}
+
+}  // namespace vv::gui::panels

@@ -1,0 +1,80 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QWidget>
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSlider;
+class QSpinBox;
+
+namespace vv::gui {
+
+class ViewerWidget;
+
+namespace panels {
+
+/// The "Void Space Surface" panel: on/off, the IDW power p (logarithmic slider
+/// 0.25-64 and a spin box), solver quality (fast with tolerance, exact, the
+/// paper's every-k-th-contour-pixel step), depth colour scale, iso-lines,
+/// lighting, ambient occlusion, and the last solve's time and error bound.
+/// Every control writes the viewer at once and then emits changed().
+class VssPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    /// Slider positions of the logarithmic p slider: 0 = kMinPower, kSliderSteps = kMaxPower.
+    static constexpr int kSliderSteps = 1000;
+    static constexpr double kMinPower = 0.25;
+    static constexpr double kMaxPower = 64.0;
+
+    explicit VssPanel(ViewerWidget* viewer, QWidget* parent = nullptr);
+
+    /// p of a slider position, and the nearest position of p (clamped).
+    [[nodiscard]] static double powerFromSlider(int position) noexcept;
+    [[nodiscard]] static int sliderFromPower(double p) noexcept;
+
+    [[nodiscard]] QCheckBox* enabledBox() const noexcept { return enabled_; }
+    [[nodiscard]] QSlider* powerSlider() const noexcept { return powerSlider_; }
+    [[nodiscard]] QDoubleSpinBox* powerBox() const noexcept { return powerBox_; }
+    [[nodiscard]] QComboBox* solverChooser() const noexcept { return solver_; }
+    [[nodiscard]] QComboBox* scaleChooser() const noexcept { return scale_; }
+    [[nodiscard]] QLabel* statusLabel() const noexcept { return status_; }
+
+  public slots:
+    /// Shows the viewer's current settings (without writing them back).
+    void syncFromViewer();
+    /// Updates the solve time / error bound read-out from the last frame.
+    void updateStatus();
+
+  signals:
+    /// The panel changed the viewer's settings.
+    void changed();
+
+  private:
+    void apply();
+    void updateApplicability();
+    void updateBound();
+
+    ViewerWidget* viewer_;
+    QCheckBox* enabled_ = nullptr;
+    QSlider* powerSlider_ = nullptr;
+    QDoubleSpinBox* powerBox_ = nullptr;
+    QComboBox* solver_ = nullptr;
+    QDoubleSpinBox* tolerance_ = nullptr;
+    QSpinBox* step_ = nullptr;
+    QComboBox* scale_ = nullptr;
+    QSpinBox* isoLines_ = nullptr;
+    QSlider* isoStrength_ = nullptr;
+    QSlider* lighting_ = nullptr;
+    QCheckBox* ao_ = nullptr;
+    QDoubleSpinBox* aoRadius_ = nullptr;
+    QLabel* status_ = nullptr;
+    QString bound_;  ///< the error bound of the current settings, as shown
+    bool syncing_ = false;
+};
+
+}  // namespace panels
+}  // namespace vv::gui

@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A MainWindow under a real display (xvfb-run, QT_QPA_PLATFORM=xcb) for the
+// panel and colour-blind-safe tests: one QApplication per process, settings
+// in a throw-away folder, helpers to wait for frames and to build scenes.
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include <QApplication>
+#include <QDir>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QThread>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <numbers>
+#include <string>
+
+#include "gui/MainWindow.h"
+#include "gui/ViewerWidget.h"
+#include "vv/io/Mesh.h"
+
+namespace vv::test {
+
+namespace fs = std::filesystem;
+
+/// This process's folder under the build tree (screenshots, settings).
+inline fs::path panelTestDir() {
+    const fs::path dir = fs::path(VV_TEST_TMP) / "gui-panels" /
+                         ("run-" + std::to_string(QCoreApplication::applicationPid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// Processes events until `done` holds or `timeoutMs` passed; returns `done()`.
+inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
+    QElapsedTimer timer;
+    timer.start();
+    while (!done() && timer.elapsed() < timeoutMs) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        QThread::msleep(2);
+    }
+    return done();
+}
+
+/// A tube along x with "wss" (0..30, rising along it) and "pressure" arrays.
+inline std::shared_ptr<const io::Scene> makeTubeScene(bool withArrays = true) {
+    auto scene = std::make_shared<io::Scene>();
+    io::Mesh tube;
+    tube.name = "tube";
+    io::DataArray wss{"wss", "Pa", 1, {}, false, false};
+    io::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
+    constexpr int kSegments = 32;
+    constexpr int kRings = 30;
+    for (int i = 0; i <= kRings; ++i) {
+        for (int j = 0; j < kSegments; ++j) {
+            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) / kSegments;
+            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
+            tube.positions.push_back(glm::vec3(30.0F * static_cast<float>(i) / kRings, 0, 0) +
+                                     2.0F * n);
+            tube.normals.push_back(n);
+            wss.values.push_back(static_cast<float>(i));
+            pressure.values.push_back(100.0F - static_cast<float>(i));
+        }
+    }
+    for (std::uint32_t i = 0; i < kRings; ++i) {
+        for (std::uint32_t j = 0; j < kSegments; ++j) {
+            const std::uint32_t a = i * kSegments + j;
+            const std::uint32_t b = i * kSegments + (j + 1) % kSegments;
+            tube.indices.insert(tube.indices.end(),
+                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
+        }
+    }
+    if (withArrays) {
+        tube.pointArrays.push_back(std::move(pressure));
+        tube.pointArrays.push_back(std::move(wss));
+    }
+    scene->meshes.push_back(std::move(tube));
+    return scene;
+}
+
+/// Fraction of the pixels whose colour differs by more than 8 (of 255) in any
+/// channel between two images of the same size (1 when the sizes differ).
+inline double changedFraction(const QImage& a, const QImage& b) {
+    if (a.size() != b.size() || a.isNull()) {
+        return 1.0;
+    }
+    long changed = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y);
+            const QRgb q = b.pixel(x, y);
+            const int d = std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                                    std::abs(qBlue(p) - qBlue(q))});
+            changed += d > 8 ? 1 : 0;
+        }
+    }
+    return static_cast<double>(changed) / (static_cast<double>(a.width()) * a.height());
+}
+
+class GuiFixture : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        if (QCoreApplication::instance() != nullptr) {
+            return;
+        }
+        const QString config = QString::fromStdString((panelTestDir() / "config").string());
+        QDir(config).removeRecursively();
+        qputenv("XDG_CONFIG_HOME", config.toUtf8());
+        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
+            qEnvironmentVariableIsEmpty("DISPLAY") &&
+            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
+            qputenv("QT_QPA_PLATFORM", "offscreen");  // fails with a message instead of aborting
+        }
+        gui::ViewerWidget::installDefaultFormat();
+        static int argc = 1;
+        static char name[] = "vv_gui_panel_tests";
+        static char* argv[] = {name, nullptr};
+        new QApplication(argc, argv);  // kept for the whole process
+        QCoreApplication::setOrganizationName(QStringLiteral("VesselViewPanelTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("VesselViewPanelTest"));
+    }
+
+    static void TearDownTestSuite() {
+        std::error_code ec;
+        fs::remove_all(panelTestDir() / "config", ec);
+    }
+
+    void SetUp() override {
+        window_ = std::make_unique<gui::MainWindow>();
+        window_->resize(1100, 700);
+        window_->show();
+    }
+
+    void TearDown() override {
+        window_.reset();
+        QCoreApplication::processEvents();
+    }
+
+    /// Waits for `frames` frames with the current scene; false (and a test
+    /// failure) when OpenGL is missing or they do not come.
+    [[nodiscard]] bool waitForFrames(quint64 frames = 1) const {
+        const auto* viewer = window_->viewer();
+        const bool ok = waitUntil([&] {
+            return !viewer->renderError().isEmpty() || viewer->framesWithScene() >= frames;
+        });
+        EXPECT_TRUE(viewer->renderError().isEmpty())
+            << viewer->renderError().toStdString() << " (run under xvfb-run, QT_QPA_PLATFORM=xcb)";
+        EXPECT_TRUE(ok) << "no frame was drawn";
+        return ok && viewer->renderError().isEmpty();
+    }
+
+    /// Waits until the VSS of the current view is shown (exact, not pending).
+    [[nodiscard]] bool waitForVss() const {
+        const auto* viewer = window_->viewer();
+        const bool ok = waitUntil([&] {
+            const auto& s = viewer->vssStatus();
+            return !viewer->renderError().isEmpty() ||
+                   (s.shown && s.current && !s.pending && !s.preview);
+        });
+        const auto& s = viewer->vssStatus();
+        EXPECT_TRUE(ok) << "the VSS never arrived: shown " << s.shown << " current " << s.current
+                        << " pending " << s.pending << " preview " << s.preview;
+        return ok && viewer->renderError().isEmpty();
+    }
+
+    std::unique_ptr<gui::MainWindow> window_;
+};
+
+}  // namespace vv::test

@@ -1,0 +1,418 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The side panels: every control changes the viewer's settings at once,
+// controls that do not apply are disabled with a tooltip saying why, and the
+// dock layout is restored from the settings.
+#include <QAbstractButton>
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QMouseEvent>
+#include <QSlider>
+#include <QSpinBox>
+#include <QToolButton>
+#include <QTreeWidget>
+#include <algorithm>
+#include <limits>
+#include <numeric>
+
+#include "GuiFixture.h"
+#include "gui/panels/DataPanel.h"
+#include "gui/panels/DisplayPanel.h"
+#include "gui/panels/FunctionalPanel.h"
+#include "gui/panels/HistogramWidget.h"
+#include "gui/panels/VssPanel.h"
+
+namespace vv::test {
+namespace {
+
+using gui::panels::FunctionalPanel;
+using gui::panels::VssPanel;
+
+/// Every disabled control inside `root` has a tooltip (says why).
+void expectDisabledControlsExplained(const QWidget* root, const char* where) {
+    int disabled = 0;
+    for (QWidget* w : root->findChildren<QWidget*>()) {
+        const bool control = qobject_cast<QAbstractButton*>(w) != nullptr ||
+                             qobject_cast<QComboBox*>(w) != nullptr ||
+                             qobject_cast<QAbstractSpinBox*>(w) != nullptr ||
+                             qobject_cast<QAbstractSlider*>(w) != nullptr ||
+                             qobject_cast<QLineEdit*>(w) != nullptr;
+        // Parts of other controls (line edits inside spin boxes, a combo box's
+        // pop-up with its scroll bars) belong to their owner.
+        if (!control || w->window() != root->window() ||
+            qobject_cast<QAbstractSpinBox*>(w->parentWidget()) != nullptr ||
+            qobject_cast<QComboBox*>(w->parentWidget()) != nullptr) {
+            continue;
+        }
+        if (!w->isEnabled()) {
+            ++disabled;
+            EXPECT_FALSE(w->toolTip().isEmpty()) << where << ": " << w->objectName().toStdString()
+                                                 << " is disabled without a reason";
+        }
+    }
+    EXPECT_GT(disabled, 0) << where << ": nothing was disabled, so nothing was checked";
+}
+
+template <typename T>
+T* child(const QObject* parent, const char* name) {
+    T* found = parent->findChild<T*>(QString::fromLatin1(name));
+    EXPECT_NE(found, nullptr) << name;
+    return found;
+}
+
+class PanelsTest : public GuiFixture {};
+
+TEST(FunctionalPanelPercentile, InterpolatesOrderStatisticsAndIgnoresNonFinite) {
+    std::vector<float> values;
+    for (int i = 100; i >= 0; --i) {
+        values.push_back(static_cast<float>(i));
+    }
+    values.push_back(std::numeric_limits<float>::quiet_NaN());
+    values.push_back(std::numeric_limits<float>::infinity());
+    EXPECT_DOUBLE_EQ(*FunctionalPanel::percentile(values, 2.0), 2.0);
+    EXPECT_DOUBLE_EQ(*FunctionalPanel::percentile(values, 98.0), 98.0);
+    EXPECT_DOUBLE_EQ(*FunctionalPanel::percentile(values, 0.0), 0.0);
+    EXPECT_DOUBLE_EQ(*FunctionalPanel::percentile({1.0F, 2.0F}, 50.0), 1.5);
+    // One outlier among many: the 98th percentile ignores it, the maximum would not.
+    std::vector<float> outlier(99, 1.0F);
+    outlier.push_back(1000.0F);
+    EXPECT_DOUBLE_EQ(*FunctionalPanel::percentile(outlier, 98.0), 1.0);
+    EXPECT_FALSE(FunctionalPanel::percentile({std::numeric_limits<float>::quiet_NaN()}, 50.0));
+}
+
+TEST_F(PanelsTest, PowerSliderIsLogarithmicFromAQuarterTo64) {
+    EXPECT_DOUBLE_EQ(VssPanel::powerFromSlider(0), 0.25);
+    EXPECT_DOUBLE_EQ(VssPanel::powerFromSlider(VssPanel::kSliderSteps), 64.0);
+    EXPECT_NEAR(VssPanel::powerFromSlider(VssPanel::kSliderSteps / 2), 4.0, 1e-12);
+    EXPECT_NEAR(VssPanel::powerFromSlider(VssPanel::kSliderSteps / 4), 1.0, 1e-12);
+    EXPECT_EQ(VssPanel::sliderFromPower(2.0), 375);
+    EXPECT_EQ(VssPanel::sliderFromPower(1000.0), VssPanel::kSliderSteps);
+    EXPECT_EQ(VssPanel::sliderFromPower(0.01), 0);
+
+    auto* panel = window_->vssPanel();
+    auto* viewer = window_->viewer();
+    panel->powerSlider()->setValue(VssPanel::kSliderSteps / 2);
+    EXPECT_NEAR(viewer->vssSettings().solver.p, 4.0, 1e-9);
+    EXPECT_NEAR(panel->powerBox()->value(), 4.0, 1e-9);
+    panel->powerBox()->setValue(64.0);
+    EXPECT_DOUBLE_EQ(viewer->vssSettings().solver.p, 64.0);
+    EXPECT_EQ(panel->powerSlider()->value(), VssPanel::kSliderSteps);
+    EXPECT_DOUBLE_EQ(panel->powerBox()->minimum(), 0.25);
+    EXPECT_DOUBLE_EQ(panel->powerBox()->maximum(), 64.0);
+}
+
+TEST_F(PanelsTest, VssPanelControlsChangeTheViewer) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    auto* panel = window_->vssPanel();
+    auto* viewer = window_->viewer();
+
+    auto* solver = panel->solverChooser();
+    auto* tolerance = child<QDoubleSpinBox>(panel, "vssTolerance");
+    auto* step = child<QSpinBox>(panel, "vssStep");
+    EXPECT_TRUE(tolerance->isEnabled());  // fast by default
+    EXPECT_FALSE(step->isEnabled());
+    EXPECT_FALSE(step->toolTip().isEmpty());
+    tolerance->setValue(2.0);
+    EXPECT_NEAR(viewer->vssSettings().solver.tolerance, 2.0 / 255.0, 1e-12);
+    EXPECT_TRUE(panel->statusLabel()->text().contains(QStringLiteral("2 / 255")))
+        << panel->statusLabel()->text().toStdString();
+
+    solver->setCurrentIndex(solver->findData(static_cast<int>(vss::SolverKind::Step)));
+    EXPECT_EQ(viewer->vssSettings().solver.kind, vss::SolverKind::Step);
+    EXPECT_TRUE(step->isEnabled());
+    EXPECT_FALSE(tolerance->isEnabled());
+    step->setValue(5);
+    EXPECT_EQ(viewer->vssSettings().solver.step, 5);
+    EXPECT_TRUE(panel->statusLabel()->text().contains(QStringLiteral("no error bound")));
+    solver->setCurrentIndex(solver->findData(static_cast<int>(vss::SolverKind::Brute)));
+    EXPECT_EQ(viewer->vssSettings().solver.kind, vss::SolverKind::Brute);
+    EXPECT_TRUE(panel->statusLabel()->text().contains(QStringLiteral("exact")));
+
+    panel->scaleChooser()->setCurrentIndex(
+        panel->scaleChooser()->findData(static_cast<int>(colormaps::DepthScale::DarkMeansDeep)));
+    EXPECT_EQ(viewer->vssSettings().scale, colormaps::DepthScale::DarkMeansDeep);
+
+    auto* isoLines = child<QSpinBox>(panel, "vssIsoLines");
+    auto* isoStrength = child<QSlider>(panel, "vssIsoStrength");
+    isoLines->setValue(12);
+    EXPECT_EQ(viewer->vssSettings().isoLines, 12);
+    isoStrength->setValue(30);
+    EXPECT_FLOAT_EQ(viewer->vssSettings().isoLineStrength, 0.30F);
+    isoLines->setValue(0);
+    EXPECT_FALSE(isoStrength->isEnabled());
+    EXPECT_TRUE(isoStrength->toolTip().contains(QStringLiteral("iso-lines")));
+    child<QSlider>(panel, "vssLighting")->setValue(40);
+    EXPECT_FLOAT_EQ(viewer->vssSettings().lighting, 0.40F);
+
+    auto* ao = child<QCheckBox>(panel, "aoEnabled");
+    auto* radius = child<QDoubleSpinBox>(panel, "aoRadius");
+    radius->setValue(7.5);
+    EXPECT_FLOAT_EQ(viewer->aoSettings().radius, 7.5F);
+    ao->setChecked(false);
+    EXPECT_FALSE(viewer->aoSettings().enabled);
+    EXPECT_FALSE(radius->isEnabled());
+
+    // The solve time shows up next to the controls once the exact solve arrived.
+    ASSERT_TRUE(waitForVss());
+    ASSERT_TRUE(waitUntil([&] {
+        return panel->statusLabel()->text().contains(QStringLiteral("solved in"));
+    })) << panel->statusLabel()->text().toStdString();
+    window_->grab().save(QString::fromStdString((panelTestDir() / "vss.png").string()));
+
+    // Re-shading settings re-run only the shading: the VSS is not solved again.
+    const quint64 frames = viewer->framesWithScene();
+    const auto solves = viewer->solveCounters().submitted;
+    isoLines->setValue(4);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    EXPECT_EQ(viewer->solveCounters().submitted, solves);
+    for (const auto& pass : viewer->lastPasses()) {
+        if (pass.name == "vss-solve") {
+            EXPECT_EQ(pass.state, render::PassState::Cached);
+        }
+    }
+
+    // Off: the panel's check box and the toolbar toggle agree, the rest is disabled.
+    panel->enabledBox()->setChecked(false);
+    EXPECT_FALSE(viewer->vssSettings().enabled);
+    EXPECT_FALSE(window_->vssToggle()->isChecked());
+    EXPECT_FALSE(panel->powerBox()->isEnabled());
+    expectDisabledControlsExplained(panel, "VSS panel");
+    window_->vssToggle()->setChecked(true);
+    EXPECT_TRUE(panel->enabledBox()->isChecked());
+    EXPECT_TRUE(panel->powerBox()->isEnabled());
+}
+
+TEST_F(PanelsTest, FunctionalPanelChoosesArrayMapBinsAndRange) {
+    auto* panel = window_->functionalPanel();
+    auto* viewer = window_->viewer();
+    // No data: nothing applies, and each control says so.
+    EXPECT_FALSE(panel->arrayChooser()->isEnabled());
+    EXPECT_TRUE(panel->arrayChooser()->toolTip().contains(QStringLiteral("No data")));
+    expectDisabledControlsExplained(panel, "functional panel, no data");
+
+    // A mesh without arrays.
+    window_->setScene(makeTubeScene(false), QStringLiteral("bare"));
+    EXPECT_FALSE(panel->arrayChooser()->isEnabled());
+    EXPECT_TRUE(panel->arrayChooser()->toolTip().contains(QStringLiteral("no point arrays")));
+    expectDisabledControlsExplained(panel, "functional panel, no arrays");
+
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    ASSERT_EQ(panel->arrayChooser()->count(), 3);  // None, pressure, wss
+    EXPECT_EQ(viewer->style().array, "wss");
+    EXPECT_TRUE(panel->arrayChooser()->isEnabled());
+    // The histogram holds every value of wss: 31 rings of 32 vertices.
+    const auto& counts = panel->histogram()->counts();
+    EXPECT_EQ(std::accumulate(counts.begin(), counts.end(), 0), 31 * 32);
+    EXPECT_DOUBLE_EQ(panel->histogram()->minimum(), 0.0);
+    EXPECT_DOUBLE_EQ(panel->histogram()->maximum(), 30.0);
+
+    // The colour map changes the vessels in the rendered frame at once.
+    const QImage viridis = viewer->grabFramebuffer();
+    quint64 frames = viewer->framesWithScene();
+    panel->colorMapChooser()->setCurrentIndex(
+        panel->colorMapChooser()->findData(static_cast<int>(colormaps::ColorMap::Inferno)));
+    EXPECT_EQ(viewer->style().colorMap, colormaps::ColorMap::Inferno);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    EXPECT_GT(changedFraction(viridis, viewer->grabFramebuffer()), 0.02);
+    auto* bins = child<QSpinBox>(panel, "functionalBins");
+    bins->setValue(6);
+    EXPECT_EQ(viewer->style().bins, 6);
+    bins->setValue(1);
+    EXPECT_EQ(viewer->style().bins, 0);  // continuous
+
+    // Percentile 2-98 of 0..30 (32 copies of each integer: the 2nd percentile is 0).
+    auto* mode = panel->rangeModeChooser();
+    auto* lo = child<QDoubleSpinBox>(panel, "functionalRangeMin");
+    auto* hi = child<QDoubleSpinBox>(panel, "functionalRangeMax");
+    EXPECT_FALSE(lo->isEnabled());
+    EXPECT_FALSE(lo->toolTip().isEmpty());
+    mode->setCurrentIndex(mode->findData(static_cast<int>(FunctionalPanel::RangeMode::Percentile)));
+    ASSERT_TRUE(viewer->style().range.has_value());
+    std::vector<float> values;
+    for (int i = 0; i <= 30; ++i) {
+        values.insert(values.end(), 32, static_cast<float>(i));
+    }
+    EXPECT_FLOAT_EQ(viewer->style().range->first,
+                    static_cast<float>(*FunctionalPanel::percentile(values, 2.0)));
+    EXPECT_FLOAT_EQ(viewer->style().range->second,
+                    static_cast<float>(*FunctionalPanel::percentile(values, 98.0)));
+    EXPECT_DOUBLE_EQ(panel->histogram()->rangeLow(),
+                     static_cast<double>(viewer->style().range->first));
+
+    mode->setCurrentIndex(mode->findData(static_cast<int>(FunctionalPanel::RangeMode::Manual)));
+    EXPECT_TRUE(lo->isEnabled());
+    lo->setValue(5.0);
+    hi->setValue(20.0);
+    ASSERT_TRUE(viewer->style().range.has_value());
+    EXPECT_FLOAT_EQ(viewer->style().range->first, 5.0F);
+    EXPECT_FLOAT_EQ(viewer->style().range->second, 20.0F);
+    EXPECT_DOUBLE_EQ(panel->histogram()->rangeHigh(), 20.0);
+    window_->findChild<QDockWidget*>(QStringLiteral("functionalPanelDock"))->raise();
+    QCoreApplication::processEvents();
+    window_->grab().save(QString::fromStdString((panelTestDir() / "functional.png").string()));
+
+    // Dragging the upper handle on the histogram moves the range's end.
+    auto* histogram = panel->histogram();
+    ASSERT_GT(histogram->width(), 100);
+    const QPointF from(histogram->xOfValue(20.0), histogram->height() / 2.0);
+    const QPointF to(histogram->xOfValue(25.0), histogram->height() / 2.0);
+    QMouseEvent press(QEvent::MouseButtonPress, from, histogram->mapToGlobal(from), Qt::LeftButton,
+                      Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent move(QEvent::MouseMove, to, histogram->mapToGlobal(to), Qt::NoButton,
+                     Qt::LeftButton, Qt::NoModifier);
+    QMouseEvent release(QEvent::MouseButtonRelease, to, histogram->mapToGlobal(to), Qt::LeftButton,
+                        Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(histogram, &press);
+    QCoreApplication::sendEvent(histogram, &move);
+    QCoreApplication::sendEvent(histogram, &release);
+    ASSERT_TRUE(viewer->style().range.has_value());
+    EXPECT_FLOAT_EQ(viewer->style().range->first, 5.0F);
+    EXPECT_NEAR(viewer->style().range->second, 25.0F, 0.2F);
+    EXPECT_NEAR(hi->value(), 25.0, 0.2);
+    EXPECT_EQ(panel->rangeMode(), FunctionalPanel::RangeMode::Manual);
+    mode->setCurrentIndex(mode->findData(static_cast<int>(FunctionalPanel::RangeMode::Auto)));
+    EXPECT_FALSE(viewer->style().range.has_value());
+
+    panel->arrayChooser()->setCurrentIndex(
+        panel->arrayChooser()->findData(QStringLiteral("pressure")));
+    EXPECT_EQ(viewer->style().array, "pressure");
+    EXPECT_DOUBLE_EQ(panel->histogram()->minimum(), 70.0);
+    EXPECT_EQ(child<QLineEdit>(panel, "functionalLegendTitle")->text(),
+              QStringLiteral("pressure [mmHg]"));
+
+    panel->arrayChooser()->setCurrentIndex(0);  // None
+    EXPECT_TRUE(viewer->style().array.empty());
+    EXPECT_FALSE(panel->colorMapChooser()->isEnabled());
+    EXPECT_TRUE(panel->colorMapChooser()->toolTip().contains(QStringLiteral("Choose an array")));
+    expectDisabledControlsExplained(panel, "functional panel, no array chosen");
+}
+
+TEST_F(PanelsTest, DisplayPanelSetsCueBackgroundCameraLegendsAndOverlay) {
+    auto* panel = window_->displayPanel();
+    auto* viewer = window_->viewer();
+    // Camera presets need data.
+    auto* close = child<QToolButton>(panel, "viewClose");
+    EXPECT_FALSE(close->isEnabled());
+    expectDisabledControlsExplained(panel, "display panel, no data");
+
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    EXPECT_TRUE(close->isEnabled());
+
+    auto* cue = panel->vesselCueChooser();
+    const QImage noCue = viewer->grabFramebuffer();
+    const quint64 frames = viewer->framesWithScene();
+    cue->setCurrentIndex(cue->findData(static_cast<int>(render::VesselCue::Fog)));
+    EXPECT_EQ(viewer->vesselCue().cue, render::VesselCue::Fog);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    EXPECT_GT(changedFraction(noCue, viewer->grabFramebuffer()), 0.01);
+    auto* fog = child<QSlider>(panel, "fogStrength");
+    auto* fresnel = child<QDoubleSpinBox>(panel, "fresnelExponent");
+    EXPECT_TRUE(fog->isEnabled());
+    EXPECT_FALSE(fresnel->isEnabled());
+    EXPECT_TRUE(fresnel->toolTip().contains(QStringLiteral("Fresnel")));
+    fog->setValue(30);
+    EXPECT_FLOAT_EQ(viewer->vesselCue().fogStrength, 0.30F);
+    cue->setCurrentIndex(cue->findData(static_cast<int>(render::VesselCue::Fresnel)));
+    EXPECT_TRUE(fresnel->isEnabled());
+    EXPECT_FALSE(fog->isEnabled());
+    fresnel->setValue(2.5);
+    EXPECT_FLOAT_EQ(viewer->vesselCue().fresnelExponent, 2.5F);
+    cue->setCurrentIndex(cue->findData(static_cast<int>(render::VesselCue::Fog)));
+
+    // The material colour applies only without an array.
+    auto* vesselColor = panel->vesselColorButton();
+    EXPECT_FALSE(vesselColor->isEnabled());  // wss colours the vessels
+    EXPECT_TRUE(vesselColor->toolTip().contains(QStringLiteral("array")));
+    window_->arrayChooser()->setCurrentIndex(0);
+    EXPECT_TRUE(vesselColor->isEnabled());
+    vesselColor->click();
+    auto* dialog = window_->findChild<QColorDialog*>(QStringLiteral("vesselColorDialog"));
+    ASSERT_NE(dialog, nullptr);
+    dialog->setCurrentColor(QColor(51, 102, 204));
+    dialog->accept();
+    EXPECT_NEAR(viewer->style().vesselColor.b, 0.8F, 1e-3F);
+    EXPECT_NEAR(viewer->style().vesselColor.r, 0.2F, 1e-3F);
+    window_->arrayChooser()->setCurrentIndex(
+        window_->arrayChooser()->findData(QStringLiteral("wss")));
+
+    auto* background = panel->backgroundChooser();
+    background->setCurrentIndex(background->findText(QStringLiteral("White")));
+    EXPECT_EQ(viewer->background(), glm::vec3(1.0F));
+
+    child<QToolButton>(panel, "viewFar")->click();
+    const float far = viewer->camera().distance();
+    close->click();
+    EXPECT_LT(viewer->camera().distance(), far);
+    const glm::quat before = viewer->camera().rotation();
+    child<QToolButton>(panel, "viewSuperior")->click();
+    EXPECT_GT(
+        glm::length(glm::vec4(
+            viewer->camera().rotation().x - before.x, viewer->camera().rotation().y - before.y,
+            viewer->camera().rotation().z - before.z, viewer->camera().rotation().w - before.w)),
+        0.1F);
+
+    panel->legendsBox()->setChecked(false);
+    EXPECT_FALSE(viewer->legendsVisible());
+    window_->legendsToggle()->setChecked(true);
+    EXPECT_TRUE(panel->legendsBox()->isChecked());
+
+    panel->performanceBox()->setChecked(true);
+    const quint64 framesNow = viewer->framesWithScene();
+    viewer->update();
+    ASSERT_TRUE(waitForFrames(framesNow + 1));
+    ASSERT_TRUE(waitUntil([&] {
+        return panel->performanceOverlay()->text().contains(QStringLiteral("geometry"));
+    })) << panel->performanceOverlay()->text().toStdString();
+    EXPECT_TRUE(panel->performanceOverlay()->isVisible());
+    EXPECT_TRUE(panel->performanceOverlay()->text().contains(QStringLiteral("ms")));
+    window_->findChild<QDockWidget*>(QStringLiteral("displayPanelDock"))->raise();
+    QCoreApplication::processEvents();
+    window_->grab().save(QString::fromStdString((panelTestDir() / "display.png").string()));
+}
+
+TEST_F(PanelsTest, DataPanelListsMeshesAndArrays) {
+    auto* panel = window_->dataPanel();
+    EXPECT_EQ(panel->meshTree()->topLevelItemCount(), 0);
+    window_->setScene(makeTubeScene(), QStringLiteral("tube scene"));
+    ASSERT_EQ(panel->meshTree()->topLevelItemCount(), 1);
+    const QTreeWidgetItem* mesh = panel->meshTree()->topLevelItem(0);
+    EXPECT_EQ(mesh->text(0), QStringLiteral("tube"));
+    EXPECT_EQ(mesh->text(1), QLocale().toString(31 * 32));
+    ASSERT_EQ(mesh->childCount(), 2);
+    EXPECT_EQ(mesh->child(1)->text(0), QStringLiteral("wss [Pa]"));
+    EXPECT_TRUE(mesh->child(1)->text(1).contains(QStringLiteral("30")));
+    EXPECT_EQ(panel->fileLabel()->text(), QStringLiteral("tube scene"));
+    // Visibility is shown but cannot be switched yet.
+    EXPECT_FALSE(mesh->flags().testFlag(Qt::ItemIsEnabled));
+    EXPECT_FALSE(mesh->toolTip(1).isEmpty());
+}
+
+TEST_F(PanelsTest, DockLayoutIsRestoredAndCanBeReset) {
+    auto docks = window_->findChildren<QDockWidget*>();
+    ASSERT_EQ(docks.size(), 4);
+    QDockWidget* data = window_->findChild<QDockWidget*>(QStringLiteral("dataPanelDock"));
+    ASSERT_NE(data, nullptr);
+    EXPECT_FALSE(data->isHidden());
+    data->hide();
+    window_->close();  // saves the layout
+    window_ = std::make_unique<gui::MainWindow>();
+    window_->show();
+    data = window_->findChild<QDockWidget*>(QStringLiteral("dataPanelDock"));
+    ASSERT_NE(data, nullptr);
+    EXPECT_TRUE(data->isHidden());
+    window_->resetLayout();
+    EXPECT_FALSE(data->isHidden());
+    window_->close();  // the next tests start from the default layout again
+}
+
+}  // namespace
+}  // namespace vv::test
