@@ -245,21 +245,35 @@ void ViewerWidget::settle() {
     }
     moving_ = false;
     bool requested = false;
+    bool prepared = false;
     if (error_.isEmpty() && renderer_.initialized() && !autoFit_) {
         // The last preview frame read back the depth of this very view (same
         // camera, same render size): start the exact solve now, and let its
         // arrival (vssSolved) draw the one frame that shows it.
         try {
             requested = renderer_.requestSolve(camera_, frameSettings(), frameTarget());
+            if (!requested) {
+                // The last frame was smaller or drew the simplified meshes:
+                // draw only this view's full G-buffer and start its solve; the
+                // solve's arrival draws the frame (its G-buffer then cached).
+                makeCurrent();
+                prepared = renderer_.prepareSolve(camera_, frameSettings(), frameTarget());
+                doneCurrent();
+            }
         } catch (const vv::Error&) {
-            requested = false;  // the next frame reports bad options
+            doneCurrent();
+            requested = false;  // the next frame reports the problem
+            prepared = false;
         }
     }
     if (requested) {
         ++solvesRequestedOnSettle_;
     }
+    if (prepared) {
+        ++solvesPreparedOnSettle_;
+    }
     emit cameraSettled();
-    if (!requested) {
+    if (!requested && !prepared) {
         update();  // the next frame reads the depth back and asks for the exact VSS
     }
 }

@@ -125,6 +125,12 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] quint64 solvesRequestedOnSettle() const noexcept {
         return solvesRequestedOnSettle_;
     }
+    /// How often settling drew only the G-buffer and started the exact solve
+    /// from it (FrameRenderer::prepareSolve), because the last preview frame
+    /// had another size or the simplified meshes.
+    [[nodiscard]] quint64 solvesPreparedOnSettle() const noexcept {
+        return solvesPreparedOnSettle_;
+    }
     /// True while the camera moves (frames use the preview VSS).
     [[nodiscard]] bool cameraMoving() const noexcept { return moving_; }
     /// The worker's solve counters (submitted, completed, cancelled).
@@ -235,6 +241,7 @@ class ViewerWidget : public QOpenGLWidget {
     float interactiveScale_ = 0.5F;
     QSize lastRenderSize_;
     quint64 solvesRequestedOnSettle_ = 0;
+    quint64 solvesPreparedOnSettle_ = 0;
     QTimer* settleTimer_ = nullptr;
 };
 

@@ -271,7 +271,9 @@ TEST_F(ProgressiveTest, RotatingDuringAnExactSolveCancelsIt) {
     // The preview, then the exact solve of the new view.
     EXPECT_TRUE(
         waitUntil([&] { return viewer.solveCounters().submitted >= before.submitted + 2; }));
-    EXPECT_TRUE(viewer.vssStatus().pending);
+    // The exact one was started by the settling itself (from a G-buffer drawn
+    // for it), not by a frame.
+    EXPECT_EQ(viewer.solvesPreparedOnSettle() + viewer.solvesRequestedOnSettle(), 1U);
 }
 
 TEST_F(ProgressiveTest, ReducedResolutionWhileMovingThenFull) {
@@ -298,12 +300,27 @@ TEST_F(ProgressiveTest, ReducedResolutionWhileMovingThenFull) {
     EXPECT_EQ(viewer.shownVssHeight().width(), half.width());
 
     // Settled: the preview depth has the wrong size for the exact solve, so
-    // the next frame (full size) reads it back and requests it.
+    // settling draws only the full-size G-buffer and submits the exact solve
+    // from it, without a frame; the solve's arrival draws the one frame.
+    const quint64 preparedBefore = viewer.solvesPreparedOnSettle();
+    const auto countersBefore = viewer.solveCounters();
+    const quint64 framesBeforeRelease = viewer.framesWithScene();
     drag.release();
     EXPECT_EQ(viewer.solvesRequestedOnSettle(), directBefore);
+    EXPECT_EQ(viewer.solvesPreparedOnSettle(), preparedBefore + 1);
+    EXPECT_EQ(viewer.solveCounters().submitted, countersBefore.submitted + 1);
+    EXPECT_EQ(viewer.framesWithScene(), framesBeforeRelease);  // nothing drawn yet
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
     EXPECT_EQ(viewer.lastRenderSize(), full);
     EXPECT_EQ(viewer.shownVssHeight().width(), full.width());
+    // The frame that shows it found the G-buffer of the settled view cached.
+    const auto& passes = viewer.lastPasses();
+    const auto geometry = std::find_if(passes.begin(), passes.end(),
+                                       [](const auto& p) { return p.name == "geometry"; });
+    ASSERT_NE(geometry, passes.end());
+    EXPECT_EQ(geometry->state, vv::render::PassState::Cached) << geometry->reason;
+    // And no second solve was needed.
+    EXPECT_EQ(viewer.solveCounters().submitted, countersBefore.submitted + 1);
 }
 
 TEST_F(ProgressiveTest, SettlingAtFullResolutionRequestsTheExactSolveWithoutAFrame) {

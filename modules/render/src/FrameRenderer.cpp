@@ -90,7 +90,8 @@ struct SolvedFrame {
     double dmin = 0.0;
     double dmax = 0.0;
     double milliseconds = 0.0;
-    bool preview = false;  ///< a preview-quality solve
+    bool preview = false;     ///< a preview-quality solve
+    double errorBound = 0.0;  ///< the solver's bound on |z' error|; NaN = none
 };
 
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
@@ -108,6 +109,7 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     frame.dmin = result.dmin;
     frame.dmax = result.dmax;
     frame.preview = preview;
+    frame.errorBound = result.errorBound;
     frame.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return frame;
@@ -211,6 +213,7 @@ class SolveWorker {
             } catch (const std::exception&) {
                 // A failure: the view shows no new VSS; the next request tries again.
             }
+            bool notify = false;
             {
                 std::lock_guard lock(mutex_);
                 running_ = false;
@@ -218,13 +221,17 @@ class SolveWorker {
                     latest_ = std::move(solved);
                     ++revision_;
                     ++counters_.completed;
+                    // A result that a queued request already supersedes is
+                    // kept (frames show it until the newer one arrives) but
+                    // wakes nobody: its repaint would be a wasted frame.
+                    notify = !pending_.has_value();
                 }
                 if (cancelled) {
                     ++counters_.cancelled;
                 }
             }
             idle_.notify_all();
-            if (latest().first && latest().first->key == job.key && onSolved_) {
+            if (notify && onSolved_) {
                 onSolved_();
             }
         }
@@ -573,6 +580,20 @@ const std::vector<GlPassTiming>& FrameRenderer::lastTimings() {
 
 void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                            const FrameTarget& target) {
+    renderGraph(camera, settings, target, false);
+}
+
+bool FrameRenderer::prepareSolve(const Camera& camera, const FrameSettings& settings,
+                                 const FrameTarget& target) {
+    if (mode_ != SolveMode::Asynchronous || impl_->worker == nullptr || !settings.vss.enabled) {
+        return false;
+    }
+    renderGraph(camera, settings, target, true);
+    return true;
+}
+
+void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& settings,
+                                const FrameTarget& target, bool solveOnly) {
     if (!initialized()) {
         throw RenderError("FrameRenderer::render before initialize()");
     }
@@ -741,6 +762,17 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
             impl.uploadHeight(height, latest);  // the previous VSS, or none
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
+
+    if (solveOnly) {
+        // prepareSolve(): the G-buffer and the solve's submission, nothing shaded.
+        graph.markTarget(solve.height);
+        graph.compile();
+        graph.execute(impl.observer.get());
+        passes_ = graph.passes();
+        graphText_ = graph.toText();
+        gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+        return;
+    }
 
     // 2. Vessel shading: deferred, from the G-buffer (one shaded sample per pixel).
     // Declared after the solve: a vessel cue normalises depth with the VSS's
@@ -1131,6 +1163,8 @@ void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
     status_.dmin = impl.dmin;
     status_.dmax = impl.dmax;
     status_.preview = impl.shownFrame != nullptr && impl.shownFrame->preview;
+    status_.errorBound = impl.shownFrame != nullptr ? impl.shownFrame->errorBound
+                                                    : std::numeric_limits<double>::quiet_NaN();
 }
 
 }  // namespace vv::render

@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <functional>
 #include <glm/glm.hpp>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -101,6 +102,10 @@ struct VssFrameStatus {
     double dmax = 0.0;
     double solveMilliseconds = 0.0;  ///< wall time of the solve that made it
     bool preview = false;            ///< the shown VSS is a preview solve (VssSettings::preview)
+    /// The shown solve's guaranteed bound on |z' - z'_exact| (its solver's
+    /// errorBound(): 0 for exact solvers, the tolerance for fast ones); NaN
+    /// when the solver gives none (the paper's step, k > 1) or no VSS is shown.
+    double errorBound = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// Asynchronous solves so far (FrameRenderer::solveCounters()).
@@ -152,7 +157,8 @@ class FrameRenderer {
         /// VSS (same viewport size) or none until the result arrives, then
         /// `onSolved` is called on the worker thread: schedule a new frame
         /// from it (e.g. a queued QWidget::update()). A newer request cancels
-        /// a stale solve.
+        /// a stale solve; a stale solve that finishes while a newer request is
+        /// queued is kept for display but does not call `onSolved`.
         Asynchronous,
     };
 
@@ -187,6 +193,15 @@ class FrameRenderer {
     /// Throws RenderError when GL fails, InvalidArgumentError for bad solver
     /// options (p, tolerance), and what the graph throws.
     void render(const Camera& camera, const FrameSettings& settings, const FrameTarget& target);
+
+    /// Asynchronous mode with the VSS on: runs only the geometry pass of this
+    /// view and submits its solve, shading nothing (the target is left
+    /// untouched but bound). For the moment the camera settles: the exact
+    /// solve starts at once instead of after a whole frame, and the frame
+    /// drawn when it arrives finds the G-buffer cached. Returns false and
+    /// does nothing otherwise. Throws like render().
+    bool prepareSolve(const Camera& camera, const FrameSettings& settings,
+                      const FrameTarget& target);
 
     /// The size the last frame's passes ran at (device pixels): the target's
     /// size scaled by FrameSettings::resolutionScale.
@@ -243,6 +258,8 @@ class FrameRenderer {
     MeshRenderer meshes_;
     std::unique_ptr<Impl> impl_;
     SolveMode mode_ = SolveMode::Synchronous;
+    void renderGraph(const Camera& camera, const FrameSettings& settings, const FrameTarget& target,
+                     bool solveOnly);
     /// The scene revision, odd when `settings` draw the simplified geometry.
     [[nodiscard]] std::uint64_t geometryRevision(const FrameSettings& settings) const noexcept;
 
