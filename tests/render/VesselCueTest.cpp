@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <QColor>
+#include <QFont>
+#include <QFontMetricsF>
 #include <QGuiApplication>
 #include <QImage>
 #include <cmath>
@@ -281,6 +283,30 @@ TEST_F(VesselCueTest, LegendsArePaintedExactlyWhenTheirScalesAreUsed) {
         }
         EXPECT_EQ(masked, off) << c.vss << c.array;
     }
+}
+
+TEST(LegendTitleTest, NarrowLegendsShortenTheDepthTitleInsteadOfCuttingIt) {
+    vv::render::test::ensureGuiApplication();  // fonts need one
+    vv::render::DepthLegend legend;
+    legend.unit = "mm";
+    const std::vector<std::string> titles = vv::render::depthLegendTitles(legend);
+    ASSERT_EQ(titles.size(), 3U);
+    EXPECT_EQ(titles.front(), vv::render::depthLegendTitle(legend));
+    EXPECT_EQ(titles.back(), "Depth (mm)");
+    QStringList list;
+    for (const auto& t : titles) {
+        list.push_back(QString::fromStdString(t));
+    }
+    QFont font;
+    font.setPixelSize(14);
+    const QFontMetricsF metrics(font);
+    const double full = metrics.horizontalAdvance(list.front());
+    const double shortest = metrics.horizontalAdvance(list.back());
+    ASSERT_LT(shortest, full);
+    EXPECT_EQ(vv::render::fittingTitle(metrics, list, full + 1.0), list.front());
+    EXPECT_EQ(vv::render::fittingTitle(metrics, list, full - 1.0), list[1]);
+    EXPECT_EQ(vv::render::fittingTitle(metrics, list, shortest + 0.5), list.back());
+    EXPECT_EQ(vv::render::fittingTitle(metrics, list, 1.0), list.back());  // the caller elides it
 }
 
 TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {

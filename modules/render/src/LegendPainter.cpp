@@ -8,6 +8,7 @@
 #include <QPainter>
 #include <QPen>
 #include <QString>
+#include <QStringList>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -115,7 +116,9 @@ QImage strip(const std::vector<glm::u8vec4>& table) {
 }
 
 /// One legend box: title, colour bar, ticks and labels.
-void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QString& title,
+/// `titles`: the title, then shorter forms of it; the first that fits is
+/// drawn, else the last one elided.
+void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStringList& titles,
               const QImage& bar, const std::vector<LegendTick>& ticks) {
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(0, 0, 0, 170));
@@ -128,6 +131,7 @@ void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStr
     const QRectF inner = box.adjusted(m.pad, m.pad, -m.pad, -m.pad);
     painter.setPen(QColor(245, 245, 245));
     const QRectF titleRect(inner.left(), inner.top(), inner.width(), m.font * 1.3);
+    const QString title = fittingTitle(fm, titles, inner.width());
     painter.drawText(titleRect, Qt::AlignLeft | Qt::AlignVCenter,
                      fm.elidedText(title, Qt::ElideRight, inner.width()));
 
@@ -211,6 +215,20 @@ std::string depthLegendTitle(const DepthLegend& legend) {
     return "Depth behind nearest vessel" + (legend.unit.empty() ? "" : " (" + legend.unit + ")");
 }
 
+std::vector<std::string> depthLegendTitles(const DepthLegend& legend) {
+    const std::string unit = legend.unit.empty() ? "" : " (" + legend.unit + ")";
+    return {depthLegendTitle(legend), "Depth behind vessel" + unit, "Depth" + unit};
+}
+
+QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles, double width) {
+    for (const QString& candidate : titles) {
+        if (metrics.horizontalAdvance(candidate) <= width) {
+            return candidate;
+        }
+    }
+    return titles.isEmpty() ? QString() : titles.back();
+}
+
 std::string parameterLegendTitle(const ParameterLegend& legend) {
     return legend.name + (legend.unit.empty() ? "" : " (" + legend.unit + ")");
 }
@@ -277,14 +295,18 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
     painter.setRenderHint(QPainter::TextAntialiasing, true);
     if (legends.depth) {
         const DepthLegend& d = *legends.depth;
-        paintBox(painter, layout.depth, m, QString::fromStdString(depthLegendTitle(d)),
-                 strip(colormaps::lut(d.scale, 256)), depthLegendTicks(d.dmin, d.dmax));
+        QStringList titles;
+        for (const std::string& t : depthLegendTitles(d)) {
+            titles.push_back(QString::fromStdString(t));
+        }
+        paintBox(painter, layout.depth, m, titles, strip(colormaps::lut(d.scale, 256)),
+                 depthLegendTicks(d.dmin, d.dmax));
     }
     if (legends.parameter) {
         const ParameterLegend& p = *legends.parameter;
         const int entries = p.bins >= 2 ? p.bins : 256;
         auto ticks = legendTicks(static_cast<double>(p.min), static_cast<double>(p.max));
-        paintBox(painter, layout.parameter, m, QString::fromStdString(parameterLegendTitle(p)),
+        paintBox(painter, layout.parameter, m, {QString::fromStdString(parameterLegendTitle(p))},
                  strip(colormaps::lut(p.map, entries)), ticks);
     }
     painter.restore();

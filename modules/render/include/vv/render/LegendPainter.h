@@ -2,6 +2,8 @@
 #pragma once
 
 #include <QRectF>
+#include <QString>
+#include <QStringList>
 #include <optional>
 #include <string>
 #include <utility>
@@ -13,6 +15,7 @@
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
 
+class QFontMetricsF;
 class QImage;
 class QPainter;
 
@@ -65,6 +68,12 @@ struct LegendTick {
 
 /// "Depth behind nearest vessel (mm)".
 [[nodiscard]] std::string depthLegendTitle(const DepthLegend& legend);
+/// depthLegendTitle() and shorter forms for narrow legends ("Depth (mm)" last).
+[[nodiscard]] std::vector<std::string> depthLegendTitles(const DepthLegend& legend);
+/// The first of `titles` no wider than `width` in `metrics`, else the last one
+/// (the caller elides it).
+[[nodiscard]] QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles,
+                                   double width);
 /// "wss (Pa)", or the name alone without a unit.
 [[nodiscard]] std::string parameterLegendTitle(const ParameterLegend& legend);
 
