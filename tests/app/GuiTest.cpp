@@ -26,6 +26,7 @@
 #include <numbers>
 #include <set>
 
+#include "GuiFixture.h"
 #include "ImageStats.h"
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
@@ -63,38 +64,9 @@ bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
     return done();
 }
 
-/// A tube along x with "wss" rising along it, and a sphere beside it.
+/// A tube along x with "wss" rising along it and "pressure" falling (GuiFixture.h).
 std::shared_ptr<const vv::io::Scene> makeScene() {
-    auto scene = std::make_shared<vv::io::Scene>();
-    vv::io::Mesh tube;
-    tube.name = "tube";
-    vv::io::DataArray wss{"wss", "Pa", 1, {}, false, false};
-    vv::io::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
-    constexpr int kSegments = 32;
-    constexpr int kRings = 30;
-    for (int i = 0; i <= kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) / kSegments;
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            tube.positions.push_back(glm::vec3(30.0F * static_cast<float>(i) / kRings, 0, 0) +
-                                     2.0F * n);
-            tube.normals.push_back(n);
-            wss.values.push_back(static_cast<float>(i));
-            pressure.values.push_back(100.0F - static_cast<float>(i));
-        }
-    }
-    for (std::uint32_t i = 0; i < kRings; ++i) {
-        for (std::uint32_t j = 0; j < kSegments; ++j) {
-            const std::uint32_t a = i * kSegments + j;
-            const std::uint32_t b = i * kSegments + (j + 1) % kSegments;
-            tube.indices.insert(tube.indices.end(),
-                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
-        }
-    }
-    tube.pointArrays.push_back(std::move(pressure));
-    tube.pointArrays.push_back(std::move(wss));
-    scene->meshes.push_back(std::move(tube));
-    return scene;
+    return vv::test::makeTubeScene();
 }
 
 fs::path writeTetraStl(const std::string& name) {
