@@ -33,6 +33,9 @@ uniform float uAmbient;
 uniform float uDiffuse;
 uniform float uSpecular;
 uniform float uShininess;
+// Preview frames while the camera moves: normals from one-pixel differences
+// only (no plane fit, no Toksvig), about a fifth of the texture reads.
+uniform bool uQuickNormals;
 
 out vec4 fragColor;
 
@@ -156,7 +159,18 @@ void main() {
     vec2 grad = vec2(derivative(heightAt(p - ivec2(1, 0), size), z, heightAt(p + ivec2(1, 0), size)),
                      derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
     float support = 1.0;
-    if (!isVessel(p)) {
+    bool vessel = isVessel(p);
+    if (!vessel && uQuickNormals) {
+        // Never across a contour: vessel neighbours count as missing.
+        ivec2 dx = ivec2(1, 0);
+        ivec2 dy = ivec2(0, 1);
+        float xm = isVessel(p - dx) ? -1.0 : heightAt(p - dx, size);
+        float xp = isVessel(p + dx) ? -1.0 : heightAt(p + dx, size);
+        float ym = isVessel(p - dy) ? -1.0 : heightAt(p - dy, size);
+        float yp = isVessel(p + dy) ? -1.0 : heightAt(p + dy, size);
+        grad = vec2(derivative(xm, z, xp), derivative(ym, z, yp));
+        support = (hasVss(xm) && hasVss(xp) && hasVss(ym) && hasVss(yp)) ? 1.0 : 0.0;
+    } else if (!vessel) {
         grad = fittedGradient(p, size, z, grad, 1, support);
         if (support < 0.999) {
             // Next to a contour the silhouette's pixel staircase ripples the
@@ -185,7 +199,7 @@ void main() {
     // Toksvig: normals 3 px around; missing ones count as turned away.
     float shininess = uShininess;
     float specularScale = smoothstep(0.55, 0.9, support);
-    if (!isVessel(p)) {
+    if (!vessel && !uQuickNormals) {
         float scale = range / pixel;
         vec3 sum = n;
         float count = 1.0;

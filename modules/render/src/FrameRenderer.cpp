@@ -957,6 +957,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glUniform1f(loc("uDiffuse"), light.diffuse);
             g.glUniform1f(loc("uSpecular"), light.specular);
             g.glUniform1f(loc("uShininess"), light.shininess);
+            // Preview frames (camera moving): one-pixel differences, no fit.
+            g.glUniform1i(loc("uQuickNormals"), vssSettings.preview ? 1 : 0);
             drawFullscreenAndUnbind(g, impl.emptyVao, 3);
             checkGlError(g, "VSS shading pass");
         });
