@@ -3,6 +3,7 @@
 
 #include <ostream>
 
+#include "cli/ReportCommand.h"
 #include "vv/Version.h"
 #include "vv/core/Error.h"
 
@@ -23,7 +24,10 @@ constexpr const char* kUsageText =
     "         [--cue none|vessel-cd|vessel-pcd|fog|fresnel] [--legends on|off] [--bins N]\n"
     "         [--view far|medium|close|anterior|posterior|left|right|superior|inferior]\n"
     "         [--depth-out DEPTH.pfm] [--ao on|off] [--aa on|off]\n"
-    "                                       render a mesh file offscreen to PNG, with the\n"
+    "         DICOM input (a folder, DICOMDIR, image or SEG file): [--series UID]\n"
+    "         [--threshold LO:HI] [--components N] [--seed I,J,K] [--bone-removal on|off]\n"
+    "         [--triangles N]   segments the vessels (CT default 200:700 HU)\n"
+    "                                       render a mesh file or DICOM vessels offscreen to PNG, with the\n"
     "                                       void space surface (VSS) on by default;\n"
     "                                       --timings prints per-pass ms as JSON on stdout;\n"
     "                                       colour maps: viridis, cividis, inferno,\n"
@@ -36,6 +40,18 @@ constexpr const char* kUsageText =
     "                                       (+x left, +y posterior, +z superior);\n"
     "                                       --depth-out writes the linear depth (PFM,\n"
     "                                       background +Inf) that `vss --depth` reads\n"
+    "  report FILE -o REPORT.pdf [render options as for render] [--png IMAGE.png]\n"
+    "         [--transparent] [--dicom-sc SC.dcm] [--dicom-pdf DOC.dcm] [--paper a4|letter]\n"
+    "         [--title TEXT] [--note TEXT] [--second-view VIEW] [--below V] [--above V]\n"
+    "         [--anonymise] [DICOM options as for render]\n"
+    "  report --batch LIST.txt --out-dir DIR [--formats pdf,png,dicom-sc,dicom-pdf] [...]\n"
+    "                                       PDF report (view at 300 dpi, legends, parameter\n"
+    "                                       statistics per object with area below / above\n"
+    "                                       V, settings, findings), PNG up to 8K, DICOM\n"
+    "                                       Secondary Capture / Encapsulated PDF in a new\n"
+    "                                       study (DICOM input: the source study and its\n"
+    "                                       patient block); --batch: one input a line, a summary,\n"
+    "                                       exit code of the first failure\n"
     "  vss --depth IN.pfm -o OUT.pfm [--p P] [--solver NAME] [--step K] [--tolerance T]\n"
     "      [--fixed-range A,B] [--labels OUT.png] [--stats]\n"
     "                                       void space surface of a PFM depth image\n"
@@ -76,6 +92,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "render") {
             return renderCommand(rest, out, err);
+        }
+        if (command == "report") {
+            return reportCommand(rest, out, err);
         }
         if (command == "vss") {
             return vssCommand(rest, out, err);

@@ -8,12 +8,15 @@
 //                            [--view far|medium|close|anterior|posterior|left|right|
 //                                    superior|inferior]
 //                            [--depth-out DEPTH.pfm]
+// FILE may be a mesh file or DICOM (a folder, a DICOMDIR, a file): the series is
+// segmented into vessel surfaces, see io::setSceneSourceOption:
+//                            [--series UID] [--threshold LO:HI] [--components N]
+//                            [--seed I,J,K] [--bone-removal on|off] [--triangles N]
 // Needs OpenGL 4.1: a display (headless: xvfb-run -a with QT_QPA_PLATFORM=xcb).
 #include <QFile>
 #include <QGuiApplication>
 #include <QImage>
 #include <QString>
-#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -26,11 +29,13 @@
 
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
+#include "cli/RenderOptions.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshLoader.h"
+#include "vv/io/SceneSource.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -43,36 +48,13 @@ namespace vv::cli {
 
 namespace {
 
-struct RenderArguments {
+struct RenderArguments : RenderOptionValues {
     std::filesystem::path input;
     std::filesystem::path output;
-    int width = 1600;
-    int height = 1200;
-    std::optional<std::string> array;  ///< nullopt: default (wss when present); "" = none
-    colormaps::ColorMap colorMap = colormaps::ColorMap::Viridis;
-    int bins = 0;  ///< colour-map bins, 0 = continuous
-    render::VesselCueSettings cue;
-    bool legends = true;
-    glm::vec3 background{0.13F, 0.14F, 0.16F};
-    render::VssSettings vss;
-    bool ao = true;  ///< ambient occlusion over vessels + VSS
-    bool aa = true;  ///< FXAA
     bool timings = false;
-    /// --view: nullopt = the default orientation fitted to the bounding box.
-    std::optional<render::NamedView> view;
     std::filesystem::path depthOutput;  ///< --depth-out; empty = none
+    io::SceneSourceOptions source;      ///< DICOM: series, segmentation, surface
 };
-
-double parseDouble(const std::string& text, const std::string& what) {
-    double value = 0.0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
-        throw UsageError("invalid " + what + " '" + text + "'");
-    }
-    return value;
-}
 
 /// Compact JSON number: finite values as is, others as null.
 std::string jsonNumber(double value) {
@@ -82,42 +64,6 @@ std::string jsonNumber(double value) {
     char buffer[32];
     std::snprintf(buffer, sizeof buffer, "%.3f", value);
     return buffer;
-}
-
-int parseInt(const std::string& text, const std::string& what) {
-    int value = 0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end) {
-        throw UsageError("invalid " + what + " '" + text + "'");
-    }
-    return value;
-}
-
-std::pair<int, int> parseSize(const std::string& text) {
-    const auto x = text.find_first_of("xX");
-    if (x == std::string::npos) {
-        throw UsageError("--size must be WIDTHxHEIGHT (e.g. 1600x1200), got '" + text + "'");
-    }
-    const int w = parseInt(text.substr(0, x), "--size width");
-    const int h = parseInt(text.substr(x + 1), "--size height");
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
-        throw UsageError("--size must be within 1x1..16384x16384, got '" + text + "'");
-    }
-    return {w, h};
-}
-
-glm::vec3 parseColor(const std::string& text) {
-    const bool ok = text.size() == 7 && text[0] == '#' &&
-                    text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
-    if (!ok) {
-        throw UsageError("--background must be #rrggbb, got '" + text + "'");
-    }
-    const auto channel = [&](std::size_t at) {
-        return static_cast<float>(std::stoi(text.substr(at, 2), nullptr, 16)) / 255.0F;
-    };
-    return {channel(1), channel(3), channel(5)};
 }
 
 RenderArguments parse(const std::vector<std::string>& args) {
@@ -135,98 +81,8 @@ RenderArguments parse(const std::vector<std::string>& args) {
         if (a == "-o" || a == "--output") {
             parsed.output = value();
             haveOutput = true;
-        } else if (a == "--size") {
-            const auto [w, h] = parseSize(value());
-            parsed.width = w;
-            parsed.height = h;
-        } else if (a == "--array") {
-            const std::string& name = value();
-            parsed.array = (name == "none" || name == "None" || name.empty()) ? "" : name;
-        } else if (a == "--colormap") {
-            const std::string& name = value();
-            const auto map = colormaps::colorMapFromName(name);
-            if (!map) {
-                std::string known;
-                for (const auto m : colormaps::allColorMaps()) {
-                    known += (known.empty() ? "" : ", ") + std::string(colormaps::name(m));
-                }
-                throw UsageError("unknown colour map '" + name + "' (known: " + known + ")");
-            }
-            parsed.colorMap = *map;
-        } else if (a == "--bins") {
-            const int n = parseInt(value(), "--bins");
-            if (n != 0 && (n < 2 || n > colormaps::kMaxBins)) {
-                throw UsageError("--bins must be 0 (continuous) or within 2.." +
-                                 std::to_string(colormaps::kMaxBins) + ", got " + args[i]);
-            }
-            parsed.bins = n;
-        } else if (a == "--cue") {
-            const std::string& v = value();
-            const auto cue = render::vesselCueFromName(v);
-            if (!cue) {
-                throw UsageError("unknown vessel cue '" + v +
-                                 "' (known: none, vessel-cd, vessel-pcd, fog, fresnel)");
-            }
-            parsed.cue.cue = *cue;
-        } else if (a == "--legends") {
-            const std::string& v = value();
-            if (v != "on" && v != "off") {
-                throw UsageError("--legends must be on or off, got '" + v + "'");
-            }
-            parsed.legends = v == "on";
-        } else if (a == "--background") {
-            parsed.background = parseColor(value());
-        } else if (a == "--ao" || a == "--aa") {
-            const std::string& v = value();
-            if (v != "on" && v != "off") {
-                throw UsageError(a + " must be on or off, got '" + v + "'");
-            }
-            (a == "--ao" ? parsed.ao : parsed.aa) = v == "on";
-        } else if (a == "--vss") {
-            const std::string& v = value();
-            if (v != "on" && v != "off") {
-                throw UsageError("--vss must be on or off, got '" + v + "'");
-            }
-            parsed.vss.enabled = v == "on";
-        } else if (a == "--scale") {
-            const std::string& v = value();
-            const auto scale = colormaps::depthScaleFromName(v);
-            if (!scale) {
-                throw UsageError("unknown depth scale '" + v + "' (known: cd, pcd, dmd)");
-            }
-            parsed.vss.scale = *scale;
-        } else if (a == "--p") {
-            const double p = parseDouble(value(), "--p");
-            if (!(p > 0.0) || p > 64.0) {
-                throw UsageError("--p must be within (0, 64], got " + args[i]);
-            }
-            parsed.vss.solver.p = p;
-        } else if (a == "--isolines") {
-            const int n = parseInt(value(), "--isolines");
-            if (n < 0 || n > 1000) {
-                throw UsageError("--isolines must be within 0..1000, got " + args[i]);
-            }
-            parsed.vss.isoLines = n;
-        } else if (a == "--solver") {
-            try {
-                parsed.vss.solver.kind = vss::parseSolverKind(value());
-            } catch (const InvalidArgumentError&) {
-                throw UsageError("unknown solver '" + args[i] +
-                                 "' (known: reference, brute, step, fast)");
-            }
-        } else if (a == "--tolerance") {
-            const double t = parseDouble(value(), "--tolerance");
-            if (!(t > 0.0)) {
-                throw UsageError("--tolerance must be > 0, got " + args[i]);
-            }
-            parsed.vss.solver.tolerance = t;
-        } else if (a == "--view") {
-            const std::string& name = value();
-            parsed.view = render::namedViewFromName(name);
-            if (!parsed.view) {
-                throw UsageError("unknown view '" + name + "' (known: " + render::namedViewNames() +
-                                 ")");
-            }
+        } else if (parseRenderOption(args, i, parsed, "render")) {
+            // a shared render option (RenderOptions.h)
         } else if (a == "--depth-out") {
             parsed.depthOutput = value();
             if (parsed.depthOutput.empty()) {
@@ -234,6 +90,9 @@ RenderArguments parse(const std::vector<std::string>& args) {
             }
         } else if (a == "--timings") {
             parsed.timings = true;
+        } else if (io::setSceneSourceOption(a, i + 1 < args.size() ? args[i + 1] : std::string(),
+                                            parsed.source)) {
+            ++i;  // a DICOM option and its value
         } else if (!a.empty() && a[0] == '-' && a != "-") {
             throw UsageError("render: unknown option '" + a + "'");
         } else if (!haveInput) {
@@ -258,57 +117,17 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     const RenderArguments parsed = parse(args);
     // Fail before the (possibly long) load and render when an output cannot be written.
     for (const std::filesystem::path& output : {parsed.output, parsed.depthOutput}) {
-        if (output.empty()) {
-            continue;
-        }
-        std::error_code ec;
-        const std::filesystem::path folder = output.has_parent_path() ? output.parent_path() : ".";
-        if (!std::filesystem::is_directory(folder, ec)) {
-            throw OutputError(output.string() + ": cannot write: folder '" + folder.string() +
-                              "' does not exist");
-        }
-        if (std::filesystem::is_directory(output, ec)) {
-            throw OutputError(output.string() + ": cannot write: it is a folder");
+        if (!output.empty()) {
+            checkOutputPath(output);
         }
     }
 
-    io::Scene scene;
-    scene.meshes.push_back(io::loadMesh(parsed.input));
+    // A mesh file, or DICOM segmented into vessel surfaces.
+    io::SceneSourceReport source;
+    const io::Scene scene = io::loadSceneSource(parsed.input, parsed.source, {}, &source);
 
-    render::OffscreenOptions options;
-    options.width = parsed.width;
-    options.height = parsed.height;
-    options.background = parsed.background;
-    options.style.colorMap = parsed.colorMap;
-    options.style.bins = parsed.bins;
-    options.cue = parsed.cue;
-    options.legends = parsed.legends;
-    options.vss = parsed.vss;
-    options.ao.enabled = parsed.ao;
-    options.antialiasing = parsed.aa;
-    options.style.array = parsed.array.value_or(render::defaultArrayName(scene));
-    if (!options.style.array.empty() &&
-        scene.meshes.front().pointArray(options.style.array) == nullptr) {
-        std::string known;
-        for (const auto& name : render::pointArrayNames(scene)) {
-            known += (known.empty() ? "" : ", ") + name;
-        }
-        throw UsageError("'" + parsed.input.string() + "' has no point array '" +
-                         options.style.array + "' (it has: " + (known.empty() ? "none" : known) +
-                         ")");
-    }
-
-    // The camera: a named view (presetCamera fits the vertices), or the
-    // default orientation fitted to the bounding box as OffscreenRenderer does.
-    render::Camera camera;
-    if (parsed.view) {
-        camera = render::presetCamera(scene, parsed.width, parsed.height, parsed.view->preset,
-                                      parsed.view->rotation);
-    } else {
-        camera.setViewport(parsed.width, parsed.height);
-        camera.fit(scene.bounds());
-    }
-    options.camera = camera;
+    const render::OffscreenOptions options = offscreenOptions(parsed, scene, parsed.input);
+    const render::Camera camera = *options.camera;
 
     ensureGuiApplication();
     render::OffscreenRenderer renderer;
@@ -368,6 +187,19 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         out << "], \"total_cpu_ms\": " << jsonNumber(total)
             << ", \"vss\": {\"shown\": " << (status.shown ? "true" : "false")
             << ", \"solve_ms\": " << jsonNumber(status.solveMilliseconds) << "}}\n";
+    }
+    if (source.fromVolume) {
+        summary << "segmented series " << source.seriesInstanceUid << " (" << source.volumeDims.x
+                << "x" << source.volumeDims.y << "x" << source.volumeDims.z
+                << "): " << source.range.rule << ", kept " << source.componentsKept << " of "
+                << source.componentsFound << " components, " << source.boneComponents
+                << " bone-like removed, " << scene.meshes.front().triangleCount() << " triangles\n";
+    } else if (source.fromSegmentationObject) {
+        summary << "read " << scene.meshes.size() << " segment(s) from the DICOM SEG:";
+        for (const io::Mesh& mesh : scene.meshes) {
+            summary << " '" << mesh.name << "'";
+        }
+        summary << "\n";
     }
     summary << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
     if (options.style.array.empty()) {

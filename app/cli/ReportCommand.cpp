@@ -1,0 +1,443 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// vesselview-cli report INPUT -o OUT.pdf [render options] [--png OUT.png]
+//                       [--dicom-sc OUT.dcm] [--dicom-pdf OUT.dcm] [--transparent]
+//                       [--anonymise] [--note TEXT] [--title TEXT] [--second-view VIEW]
+//                       [--paper a4|letter] [--below V] [--above V]
+//                       [DICOM options as for render: --series UID, --threshold LO:HI, ...]
+// vesselview-cli report --batch LIST.txt --out-dir DIR [--formats pdf,png,dicom-sc,dicom-pdf]
+//                       [the same options]
+#include "cli/ReportCommand.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <set>
+#include <string>
+#include <vector>
+
+#include "cli/Cli.h"
+#include "cli/GuiApplication.h"
+#include "cli/RenderOptions.h"
+#include "vv/core/Error.h"
+#include "vv/io/Dicom.h"
+#include "vv/io/SceneSource.h"
+#include "vv/render/MeshRenderer.h"
+#include "vv/render/OffscreenRenderer.h"
+#include "vv/report/DicomExport.h"
+#include "vv/report/DicomSource.h"
+#include "vv/report/ParameterStats.h"
+#include "vv/report/PdfReport.h"
+#include "vv/report/ViewExport.h"
+#include "vv/vss/Solver.h"
+
+namespace vv::cli {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// What one input produces; empty paths are not written.
+struct Outputs {
+    fs::path pdf;
+    fs::path png;
+    fs::path dicomSc;
+    fs::path dicomPdf;
+};
+
+struct ReportArguments : RenderOptionValues {
+    fs::path input;
+    Outputs outputs;
+    fs::path batch;
+    fs::path outDir;
+    std::set<std::string> formats{"pdf"};
+    bool transparent = false;
+    bool anonymise = false;
+    std::string note;
+    std::string title = "Vessel tree report";
+    std::optional<render::NamedView> secondView;
+    std::string secondViewName;
+    report::PaperSize paper = report::PaperSize::A4;
+    report::StatsThresholds thresholds;
+    io::SceneSourceOptions source;  ///< DICOM: series, segmentation, surface
+};
+
+ReportArguments parse(const std::vector<std::string>& args) {
+    ReportArguments parsed;
+    bool haveInput = false;
+    bool haveFormats = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) {
+                throw UsageError("report: " + a + " needs a value");
+            }
+            return args[++i];
+        };
+        const auto path = [&]() {
+            const fs::path p = value();
+            if (p.empty()) {
+                throw UsageError("report: " + a + " needs a file name");
+            }
+            return p;
+        };
+        if (a == "-o" || a == "--output") {
+            parsed.outputs.pdf = path();
+        } else if (a == "--png") {
+            parsed.outputs.png = path();
+        } else if (a == "--dicom-sc") {
+            parsed.outputs.dicomSc = path();
+        } else if (a == "--dicom-pdf") {
+            parsed.outputs.dicomPdf = path();
+        } else if (a == "--batch") {
+            parsed.batch = path();
+        } else if (a == "--out-dir") {
+            parsed.outDir = path();
+        } else if (a == "--formats") {
+            parsed.formats.clear();
+            std::string list = value() + ",";
+            for (std::size_t at = 0, comma; (comma = list.find(',', at)) != std::string::npos;
+                 at = comma + 1) {
+                const std::string f = list.substr(at, comma - at);
+                if (f != "pdf" && f != "png" && f != "dicom-sc" && f != "dicom-pdf") {
+                    throw UsageError("unknown report format '" + f +
+                                     "' (known: pdf, png, dicom-sc, dicom-pdf)");
+                }
+                parsed.formats.insert(f);
+            }
+            haveFormats = true;
+        } else if (a == "--transparent") {
+            parsed.transparent = true;
+        } else if (a == "--anonymise" || a == "--anonymize") {
+            parsed.anonymise = true;
+        } else if (a == "--note") {
+            parsed.note = value();
+        } else if (a == "--title") {
+            parsed.title = value();
+        } else if (a == "--second-view") {
+            parsed.secondViewName = value();
+            parsed.secondView = render::namedViewFromName(parsed.secondViewName);
+            if (!parsed.secondView) {
+                throw UsageError("unknown view '" + parsed.secondViewName +
+                                 "' (known: " + render::namedViewNames() + ")");
+            }
+        } else if (a == "--paper") {
+            const auto paper = report::paperSizeFromName(value());
+            if (!paper) {
+                throw UsageError("--paper must be a4 or letter, got '" + args[i] + "'");
+            }
+            parsed.paper = *paper;
+        } else if (a == "--below") {
+            parsed.thresholds.below = parseDouble(value(), "--below");
+        } else if (a == "--above") {
+            parsed.thresholds.above = parseDouble(value(), "--above");
+        } else if (parseRenderOption(args, i, parsed, "report")) {
+            // a shared render option (RenderOptions.h)
+        } else if (io::setSceneSourceOption(a, i + 1 < args.size() ? args[i + 1] : std::string(),
+                                            parsed.source)) {
+            ++i;  // a DICOM option and its value
+        } else if (!a.empty() && a[0] == '-' && a != "-") {
+            throw UsageError("report: unknown option '" + a + "'");
+        } else if (!haveInput) {
+            parsed.input = a;
+            haveInput = true;
+        } else {
+            throw UsageError("report: takes one input file, got a second one '" + a + "'");
+        }
+    }
+    if (parsed.width > report::kMaxExportSide || parsed.height > report::kMaxExportSide ||
+        static_cast<long long>(parsed.width) * parsed.height > report::kMaxExportPixels) {
+        throw UsageError("report: --size must be at most 8K (7680x4320)");
+    }
+    if (!parsed.batch.empty()) {
+        if (haveInput || !parsed.outputs.pdf.empty() || !parsed.outputs.png.empty() ||
+            !parsed.outputs.dicomSc.empty() || !parsed.outputs.dicomPdf.empty()) {
+            throw UsageError(
+                "report: --batch takes no INPUT, -o, --png or --dicom-*; "
+                "choose the outputs with --formats");
+        }
+        if (parsed.outDir.empty()) {
+            throw UsageError("report: --batch needs --out-dir DIR");
+        }
+        return parsed;
+    }
+    if (haveFormats || !parsed.outDir.empty()) {
+        throw UsageError("report: --formats and --out-dir go with --batch");
+    }
+    if (!haveInput) {
+        throw UsageError("report: no input file");
+    }
+    if (parsed.outputs.pdf.empty()) {
+        throw UsageError("report: no output report (-o REPORT.pdf)");
+    }
+    return parsed;
+}
+
+bool samePath(const fs::path& a, const fs::path& b) {
+    std::error_code ec;
+    return fs::weakly_canonical(fs::absolute(a), ec) == fs::weakly_canonical(fs::absolute(b), ec);
+}
+
+/// Refuses outputs that are the input or each other.
+void checkOutputs(const fs::path& input, const Outputs& outputs) {
+    std::vector<fs::path> all;
+    for (const fs::path* p : {&outputs.pdf, &outputs.png, &outputs.dicomSc, &outputs.dicomPdf}) {
+        if (p->empty()) {
+            continue;
+        }
+        if (samePath(*p, input)) {
+            throw UsageError("report: output '" + p->string() + "' would overwrite the input");
+        }
+        for (const fs::path& other : all) {
+            if (samePath(*p, other)) {
+                throw UsageError("report: '" + p->string() + "' is given as two outputs");
+            }
+        }
+        all.push_back(*p);
+    }
+    for (const fs::path& p : all) {
+        checkOutputPath(p);
+    }
+}
+
+/// Maps an IoError of writing to OutputError (exit code 4).
+template <typename Write>
+void writing(Write&& write) {
+    try {
+        write();
+    } catch (const IoError& e) {
+        throw OutputError(e.what());
+    }
+}
+
+std::string viewCaption(const std::string& name) {
+    if (name.empty()) {
+        return "Default view, the whole tree fitted";
+    }
+    std::string caption = name;
+    caption[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(caption[0])));
+    return caption + " view";
+}
+
+/// Loads `input`, renders and writes every requested output.
+void produce(const ReportArguments& a, const fs::path& input, const Outputs& outputs,
+             render::OffscreenRenderer& renderer, std::ostream& out) {
+    // A mesh file, or DICOM segmented into vessel surfaces.
+    io::SceneSourceReport loaded;
+    const io::Scene scene = io::loadSceneSource(input, a.source, {}, &loaded);
+    const render::OffscreenOptions base = offscreenOptions(a, scene, input);
+    // The study of this input's DICOM exports: the source study (and its
+    // patient) for DICOM data, else a new one without patient.
+    report::DicomStudy study = report::newStudy();
+    if (loaded.fromVolume || loaded.fromSegmentationObject) {
+        if (const auto source =
+                report::sourceStudy(io::scanDicom(input), loaded.seriesInstanceUid)) {
+            study = source->study;
+        }
+    }
+    if (a.anonymise && study.patient) {
+        study.patient->anonymise = true;
+    }
+
+    // The report's views: 300 dpi across the content width, the --size aspect.
+    const int pdfWidth = report::reportImageWidth(a.paper);
+    const int pdfHeight = std::max(
+        1, static_cast<int>(std::lround(pdfWidth * static_cast<double>(a.height) / a.width)));
+    const auto reportView = [&](const RenderOptionValues& values, const std::string& name) {
+        report::ViewExportOptions options;
+        options.render = base;
+        options.render.width = pdfWidth;
+        options.render.height = pdfHeight;
+        options.render.camera = cameraFor(values, scene, pdfWidth, pdfHeight);
+        options.legends = false;  // painted by the report as vectors
+        report::RenderedView view = report::renderView(renderer, scene, options);
+        return std::pair{report::ReportView{view.image, viewCaption(name), view.legends},
+                         view.range};
+    };
+
+    if (!outputs.png.empty() || !outputs.dicomSc.empty()) {
+        report::ViewExportOptions options;
+        options.render = base;
+        options.legends = a.legends;
+        options.transparentBackground = a.transparent;
+        const report::RenderedView view = report::renderView(renderer, scene, options);
+        if (!outputs.png.empty()) {
+            writing([&] { report::writePng(outputs.png, view.image); });
+            out << "wrote " << outputs.png.string() << " (" << view.image.width() << "x"
+                << view.image.height() << (a.transparent ? ", transparent background" : "")
+                << ")\n";
+        }
+        if (!outputs.dicomSc.empty()) {
+            writing(
+                [&] { (void)report::writeSecondaryCapture(outputs.dicomSc, view.image, study); });
+            out << "wrote " << outputs.dicomSc.string() << " (DICOM Secondary Capture)\n";
+        }
+    }
+    if (outputs.pdf.empty() && outputs.dicomPdf.empty()) {
+        return;
+    }
+
+    report::ReportContent content;
+    content.title = a.title;
+    content.sources.push_back(fs::absolute(input));
+    auto [view, range] = reportView(a, a.viewName);
+    content.view = std::move(view);
+    if (a.secondView) {
+        RenderOptionValues second = a;
+        second.view = a.secondView;
+        content.secondView = reportView(second, a.secondViewName).first;
+    }
+    if (!base.style.array.empty() && range) {
+        report::ReportParameter parameter;
+        parameter.name = base.style.array;
+        for (const io::Mesh& mesh : scene.meshes) {
+            if (const io::DataArray* data = mesh.pointArray(parameter.name)) {
+                parameter.unit = data->unit;
+                break;
+            }
+        }
+        parameter.range = *range;
+        parameter.map = base.style.colorMap;
+        parameter.bins = base.style.bins;
+        parameter.thresholds = a.thresholds;
+        if (!a.thresholds.below && !a.thresholds.above && parameter.name == "wss") {
+            parameter.thresholds.below = 0.4;  // low wall shear stress, Pa
+        }
+        parameter.stats = report::parameterStats(scene, parameter.name, parameter.thresholds);
+        content.parameter = std::move(parameter);
+    }
+    content.settings.vss = base.vss;
+    content.settings.errorBound = vss::makeSolver(base.vss.solver)->errorBound();
+    content.settings.cue = base.cue;
+    content.settings.ambientOcclusion = base.ao.enabled;
+    content.settings.antialiasing = base.antialiasing;
+    content.settings.view = a.viewName.empty() ? "default (fitted)" : a.viewName;
+    content.findings = a.note;
+    content.patient = study.patient;  // none for meshes: no patient block
+
+    const QByteArray pdf = report::renderPdf(content, a.paper);
+    if (!outputs.pdf.empty()) {
+        writing([&] { report::writePdfBytes(outputs.pdf, pdf); });
+        out << "wrote " << outputs.pdf.string() << " (PDF report, "
+            << (a.paper == report::PaperSize::A4 ? "A4" : "Letter") << ")\n";
+    }
+    if (!outputs.dicomPdf.empty()) {
+        writing([&] { (void)report::writeEncapsulatedPdf(outputs.dicomPdf, pdf, a.title, study); });
+        out << "wrote " << outputs.dicomPdf.string() << " (DICOM Encapsulated PDF)\n";
+    }
+}
+
+/// The inputs listed in `list`: one path a line, relative to the list's folder;
+/// blank lines and lines starting with # are skipped.
+std::vector<fs::path> readList(const fs::path& list) {
+    std::ifstream in(list);
+    if (!in) {
+        throw IoError(list, "cannot read the batch list");
+    }
+    std::vector<fs::path> inputs;
+    std::string line;
+    while (std::getline(in, line)) {
+        const auto first = line.find_first_not_of(" \t\r");
+        if (first == std::string::npos || line[first] == '#') {
+            continue;
+        }
+        const auto last = line.find_last_not_of(" \t\r");
+        fs::path p = line.substr(first, last - first + 1);
+        if (p.is_relative()) {
+            p = list.parent_path() / p;
+        }
+        inputs.push_back(p.lexically_normal());
+    }
+    if (inputs.empty()) {
+        throw FormatError(list, "the batch list names no input");
+    }
+    return inputs;
+}
+
+/// The exit code run() gives `error` (Cli.h).
+int exitCode(const std::exception_ptr& error) {
+    try {
+        std::rethrow_exception(error);
+    } catch (const UsageError&) {
+        return kUsage;
+    } catch (const OutputError&) {
+        return kCannotWrite;
+    } catch (const RenderError&) {
+        return kInternalError;
+    } catch (const InvalidArgumentError&) {
+        return kUsage;
+    } catch (const Error&) {
+        return kInvalidInput;
+    } catch (...) {
+        return kInternalError;
+    }
+}
+
+int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {
+    const std::vector<fs::path> inputs = readList(a.batch);
+    std::error_code ec;
+    if (!fs::is_directory(a.outDir, ec)) {
+        throw OutputError(a.outDir.string() + ": cannot write: the output folder does not exist");
+    }
+    for (const fs::path& input : inputs) {
+        if (samePath(input.parent_path().empty() ? fs::path(".") : input.parent_path(), a.outDir)) {
+            throw UsageError("report: --out-dir '" + a.outDir.string() + "' holds input '" +
+                             input.string() + "': write the reports into another folder");
+        }
+    }
+    ensureGuiApplication();
+    render::OffscreenRenderer renderer;
+    std::set<std::string> stems;
+    int firstFailure = kOk;
+    std::size_t failed = 0;
+    for (const fs::path& input : inputs) {
+        std::string stem = input.stem().string();
+        for (int n = 2; !stems.insert(stem).second; ++n) {
+            stem = input.stem().string() + "-" + std::to_string(n);
+        }
+        Outputs outputs;
+        const auto name = [&](const std::string& format, const std::string& suffix) {
+            return a.formats.count(format) != 0 ? a.outDir / (stem + suffix) : fs::path();
+        };
+        outputs.pdf = name("pdf", ".pdf");
+        outputs.png = name("png", ".png");
+        outputs.dicomSc = name("dicom-sc", "-sc.dcm");
+        outputs.dicomPdf = name("dicom-pdf", "-report.dcm");
+        try {
+            checkOutputs(input, outputs);
+            produce(a, input, outputs, renderer, out);
+        } catch (const std::exception& e) {
+            const int code = exitCode(std::current_exception());
+            err << "vesselview-cli: report: " << input.string() << ": " << e.what() << "\n";
+            if (firstFailure == kOk) {
+                firstFailure = code;
+            }
+            ++failed;
+        }
+    }
+    out << "report: " << inputs.size() - failed << " of " << inputs.size() << " inputs done";
+    if (failed > 0) {
+        out << ", " << failed << " failed";
+    }
+    out << " (" << a.outDir.string() << ")\n";
+    return firstFailure;
+}
+
+}  // namespace
+
+int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    const ReportArguments parsed = parse(args);
+    if (!parsed.batch.empty()) {
+        return runBatch(parsed, out, err);
+    }
+    checkOutputs(parsed.input, parsed.outputs);
+    ensureGuiApplication();
+    render::OffscreenRenderer renderer;
+    produce(parsed, parsed.input, parsed.outputs, renderer, out);
+    return kOk;
+}
+
+}  // namespace vv::cli

@@ -1,0 +1,90 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QByteArray>
+#include <QDateTime>
+#include <QImage>
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vv/colormaps/ColorMap.h"
+#include "vv/render/FrameRenderer.h"
+#include "vv/render/LegendPainter.h"
+#include "vv/report/ParameterStats.h"
+#include "vv/report/ReportPatient.h"
+
+namespace vv::report {
+
+enum class PaperSize {
+    A4,      ///< 210 x 297 mm
+    Letter,  ///< 8.5 x 11 in
+};
+
+/// "a4" / "letter" (ASCII case-insensitive); nullopt otherwise.
+[[nodiscard]] std::optional<PaperSize> paperSizeFromName(std::string_view name) noexcept;
+
+/// Pixels across the report's content width at 300 dpi for `paper`: render
+/// the views at least this wide (wider is fine; narrower is refused).
+[[nodiscard]] int reportImageWidth(PaperSize paper) noexcept;
+
+/// One rendered view in the report. The image carries no legends: the
+/// report paints `legends` over it as vectors (render::paintLegends, the same
+/// boxes as on screen, at the size they have on a 1100-pixel-wide view).
+struct ReportView {
+    QImage image;
+    std::string caption;  ///< e.g. "Far view, default orientation"
+    render::Legends legends;
+};
+
+/// The parameter part of a report: only when the scene shows an array.
+struct ReportParameter {
+    std::string name;                           ///< the point array
+    std::string unit;                           ///< e.g. "Pa"; empty when unknown
+    std::pair<float, float> range{0.0F, 1.0F};  ///< the colour map's range
+    colormaps::ColorMap map = colormaps::ColorMap::Viridis;
+    int bins = 0;
+    StatsThresholds thresholds;
+    std::vector<ParameterStats> stats;  ///< one row per object
+};
+
+/// The rendering settings the report lists.
+struct ReportSettings {
+    render::VssSettings vss;
+    double errorBound = 0.0;  ///< of the solver (vss::Solver::errorBound); NaN = none
+    render::VesselCueSettings cue;
+    bool ambientOcclusion = true;
+    bool antialiasing = true;
+    std::string view;  ///< the camera, e.g. "far"
+};
+
+/// Everything the PDF report shows. Absent parts are left out of the page
+/// (no patient block without `patient`, no parameter legend and table
+/// without `parameter`, no second view without `secondView`).
+struct ReportContent {
+    std::string title = "Vessel tree report";
+    std::optional<ReportPatient> patient;
+    std::vector<std::filesystem::path> sources;  ///< the data files
+    ReportView view;
+    std::optional<ReportView> secondView;
+    std::optional<ReportParameter> parameter;
+    ReportSettings settings;
+    std::string findings;  ///< free text; may have several lines
+    QDateTime created = QDateTime::currentDateTime();
+};
+
+/// The report as PDF bytes on `paper`. Throws InvalidArgumentError when the
+/// view is missing or narrower than reportImageWidth(paper) (print resolution).
+[[nodiscard]] QByteArray renderPdf(const ReportContent& content, PaperSize paper);
+
+/// renderPdf() written to `path` atomically (no partial file on failure, an
+/// existing file untouched). Throws InvalidArgumentError as renderPdf(),
+/// IoError naming `path` when it cannot be written.
+void writePdf(const std::filesystem::path& path, const ReportContent& content, PaperSize paper);
+
+/// Writes PDF bytes made by renderPdf() to `path` atomically (as writePdf).
+/// Throws IoError naming `path` when it cannot be written.
+void writePdfBytes(const std::filesystem::path& path, const QByteArray& pdf);
+
+}  // namespace vv::report

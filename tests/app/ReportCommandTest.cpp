@@ -1,0 +1,322 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli report` through vv::cli::run. Rendering needs OpenGL: run
+// under `xvfb-run -a` (QT_QPA_PLATFORM=xcb). The PDF text is read back with
+// pdftotext (poppler-utils) and the DICOM files with dcmdump (dcmtk). The
+// DICOM input is the synthetic CTA series of tests/io (SyntheticCta.h).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <QImage>
+#include <QString>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "DicomTestUtil.h"
+#include "SyntheticCta.h"
+#include "cli/Cli.h"
+#include "vv/io/Mesh.h"
+#include "vv/io/MeshWriter.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path testDir() {
+    const fs::path dir =
+        fs::path(VV_TEST_TMP) / "report-command" / ("run-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// A fresh empty folder `name` in testDir().
+fs::path freshDir(const std::string& name) {
+    const fs::path dir = testDir() / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// An open tube along x (radius 1, length 20) with "wss" (Pa) rising 0..10.
+vv::io::Mesh tube(bool withArray) {
+    constexpr int kSegments = 24;
+    constexpr int kRings = 20;
+    vv::io::Mesh mesh;
+    mesh.name = "tube";
+    std::vector<float> wss;
+    for (int i = 0; i <= kRings; ++i) {
+        for (int j = 0; j < kSegments; ++j) {
+            const double phi = 2.0 * std::numbers::pi * j / kSegments;
+            mesh.positions.emplace_back(20.0F * static_cast<float>(i) / kRings,
+                                        static_cast<float>(std::cos(phi)),
+                                        static_cast<float>(std::sin(phi)));
+            wss.push_back(10.0F * static_cast<float>(i) / kRings);
+        }
+    }
+    for (int i = 0; i < kRings; ++i) {
+        for (int j = 0; j < kSegments; ++j) {
+            const auto a = static_cast<std::uint32_t>(i * kSegments + j);
+            const auto b = static_cast<std::uint32_t>(i * kSegments + (j + 1) % kSegments);
+            mesh.indices.insert(mesh.indices.end(),
+                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
+        }
+    }
+    if (withArray) {
+        mesh.pointArrays.push_back(vv::io::DataArray{.name = "wss",
+                                                     .unit = "Pa",
+                                                     .components = 1,
+                                                     .values = wss,
+                                                     .integer = false,
+                                                     .fromCells = false});
+    }
+    vv::io::computeNormals(mesh);
+    return mesh;
+}
+
+/// The tube written as `dir`/`name`.vtp.
+fs::path writeTube(const fs::path& dir, const std::string& name, bool withArray = true) {
+    const fs::path file = dir / (name + ".vtp");
+    vv::io::writeVtp(tube(withArray), file);
+    return file;
+}
+
+struct RunResult {
+    int code;
+    std::string out;
+    std::string err;
+};
+
+RunResult report(const std::vector<std::string>& rest) {
+    std::vector<std::string> args{"report"};
+    args.insert(args.end(), rest.begin(), rest.end());
+    std::ostringstream out;
+    std::ostringstream err;
+    const int code = vv::cli::run(args, out, err);
+    return {code, out.str(), err.str()};
+}
+
+/// `command`'s exit status; its output in `output`.
+int shell(const std::string& command, std::string& output) {
+    output.clear();
+    FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) {
+        return -1;
+    }
+    std::array<char, 4096> buffer{};
+    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) {
+        output += buffer.data();
+    }
+    const int status = ::pclose(pipe);
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+std::string pdfText(const fs::path& pdf) {
+    std::string text;
+    EXPECT_EQ(shell("pdftotext -layout '" + pdf.string() + "' -", text), 0)
+        << "pdftotext (poppler-utils; scripts/setup-deps): " << text;
+    return text;
+}
+
+std::size_t fileCount(const fs::path& dir) {
+    std::size_t n = 0;
+    for ([[maybe_unused]] const auto& e : fs::directory_iterator(dir)) {
+        ++n;
+    }
+    return n;
+}
+
+TEST(ReportCommandTest, WritesPdfPngAndDicom) {
+    const fs::path dir = freshDir("single");
+    const fs::path input = writeTube(dir, "tube");
+    const fs::path out = freshDir("single-out");
+    const auto r = report({input.string(),
+                           "-o",
+                           (out / "r.pdf").string(),
+                           "--png",
+                           (out / "v.png").string(),
+                           "--dicom-sc",
+                           (out / "sc.dcm").string(),
+                           "--dicom-pdf",
+                           (out / "doc.dcm").string(),
+                           "--size",
+                           "400x300",
+                           "--note",
+                           "Low WSS proximal.",
+                           "--second-view",
+                           "anterior",
+                           "--paper",
+                           "letter",
+                           "--transparent",
+                           "--below",
+                           "1"});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    EXPECT_NE(r.out.find("PDF report, Letter"), std::string::npos) << r.out;
+
+    const std::string text = pdfText(out / "r.pdf");
+    for (const char* expected :
+         {"Vessel tree report", "tube.vtp", "Low WSS proximal.", "Second view", "Anterior view",
+          "Parameter statistics", "wss (Pa)", "Area <", "10.0 %", "Rendering settings"}) {
+        EXPECT_NE(text.find(expected), std::string::npos) << "missing '" << expected << "' in\n"
+                                                          << text;
+    }
+    EXPECT_EQ(text.find("Patient"), std::string::npos);  // meshes carry no patient data
+
+    QImage png;
+    ASSERT_TRUE(png.load(QString::fromStdString((out / "v.png").string()), "PNG"));
+    EXPECT_EQ(png.size(), QSize(400, 300));
+    EXPECT_TRUE(png.hasAlphaChannel());
+
+    // Both DICOM files parse and share one new study.
+    const auto studyUid = [](const std::string& dump) {
+        const auto at = dump.find("(0020,000d) UI [");
+        return at == std::string::npos ? std::string()
+                                       : dump.substr(at + 16, dump.find(']', at) - at - 16);
+    };
+    std::string dump;
+    ASSERT_EQ(shell("dcmdump '" + (out / "sc.dcm").string() + "'", dump), 0) << dump;
+    EXPECT_NE(dump.find("SecondaryCaptureImageStorage"), std::string::npos);
+    EXPECT_NE(dump.find("US 300"), std::string::npos);  // Rows
+    const std::string study = studyUid(dump);
+    EXPECT_GT(study.size(), 10U) << dump;
+    ASSERT_EQ(shell("dcmdump '" + (out / "doc.dcm").string() + "'", dump), 0) << dump;
+    EXPECT_NE(dump.find("EncapsulatedPDFStorage"), std::string::npos);
+    EXPECT_NE(dump.find("[application/pdf]"), std::string::npos);
+    EXPECT_EQ(studyUid(dump), study);
+    EXPECT_EQ(fileCount(out), 4U);  // no temporary files left
+}
+
+TEST(ReportCommandTest, UsageErrors) {
+    const fs::path dir = freshDir("usage");
+    const fs::path input = writeTube(dir, "tube");
+    const std::string in = input.string();
+    const std::string pdf = (dir / "r.pdf").string();
+    EXPECT_EQ(report({in}).code, vv::cli::kUsage);  // no -o
+    EXPECT_EQ(report({in, "-o", pdf, "--paper", "a5"}).code, vv::cli::kUsage);
+    EXPECT_EQ(report({in, "-o", pdf, "--second-view", "sideways"}).code, vv::cli::kUsage);
+    EXPECT_EQ(report({in, "-o", pdf, "--size", "8000x100"}).code, vv::cli::kUsage);
+    EXPECT_EQ(report({in, "-o", pdf, "--frobnicate"}).code, vv::cli::kUsage);
+    EXPECT_EQ(report({in, "-o", pdf, "--png", pdf}).code, vv::cli::kUsage);  // twice
+    EXPECT_EQ(report({in, "-o", pdf, "--out-dir", dir.string()}).code, vv::cli::kUsage);
+    EXPECT_EQ(report({"--batch", "list.txt", "-o", pdf}).code, vv::cli::kUsage);
+    EXPECT_EQ(report({"--batch", "list.txt"}).code, vv::cli::kUsage);  // no --out-dir
+    // Never over the input.
+    const auto over = report({in, "-o", pdf, "--png", in});
+    EXPECT_EQ(over.code, vv::cli::kUsage);
+    EXPECT_NE(over.err.find("would overwrite the input"), std::string::npos) << over.err;
+    EXPECT_TRUE(fs::exists(input));
+    EXPECT_EQ(fileCount(dir), 1U);  // only the input: nothing was written
+}
+
+TEST(ReportCommandTest, UnwritableOutputFailsWithCode4) {
+    const fs::path dir = freshDir("unwritable");
+    const fs::path input = writeTube(dir, "tube");
+    // The parent of the output is a regular file (works as root, too).
+    const auto r = report({input.string(), "-o", (input / "r.pdf").string()});
+    EXPECT_EQ(r.code, vv::cli::kCannotWrite) << r.err;
+    const auto missing = report({input.string(), "-o", (dir / "no" / "r.pdf").string()});
+    EXPECT_EQ(missing.code, vv::cli::kCannotWrite);
+    EXPECT_EQ(fileCount(dir), 1U);
+}
+
+TEST(ReportCommandTest, BatchGoesOnAfterAFailureAndSummarises) {
+    const fs::path dir = freshDir("batch-in");
+    const fs::path sub = dir / "sub";
+    fs::create_directories(sub);
+    writeTube(dir, "first");
+    writeTube(sub, "first");  // same stem: gets a suffix
+    std::ofstream(dir / "broken.vtp") << "not a mesh";
+    {
+        std::ofstream list(dir / "list.txt");
+        list << "# cases\nfirst.vtp\n\nbroken.vtp\nsub/first.vtp\n";
+    }
+    const fs::path out = freshDir("batch-out");
+    const auto r = report({"--batch", (dir / "list.txt").string(), "--out-dir", out.string(),
+                           "--formats", "pdf,png", "--size", "320x240", "--vss", "off"});
+    EXPECT_EQ(r.code, vv::cli::kInvalidInput) << r.out << r.err;
+    EXPECT_NE(r.out.find("2 of 3 inputs done, 1 failed"), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("broken.vtp"), std::string::npos) << r.err;
+    EXPECT_TRUE(fs::exists(out / "first.pdf"));
+    EXPECT_TRUE(fs::exists(out / "first.png"));
+    EXPECT_TRUE(fs::exists(out / "first-2.pdf"));
+    EXPECT_TRUE(fs::exists(out / "first-2.png"));
+    EXPECT_EQ(fileCount(out), 4U);
+
+    // The output folder must not be an input's folder.
+    const auto next = report({"--batch", (dir / "list.txt").string(), "--out-dir", dir.string()});
+    EXPECT_EQ(next.code, vv::cli::kUsage) << next.err;
+}
+
+TEST(ReportCommandTest, DicomInputGoesIntoTheSourceStudyWithItsPatient) {
+    const fs::path dir = freshDir("dicom");
+    const auto cta = vv::test::makeSyntheticCta({64, 64, 48}, 3);
+    const std::string series = vv::test::writeCtSeries(dir / "series", cta.volume);
+    // The source study UID, as the series files carry it.
+    std::string dump;
+    const fs::path first = *fs::directory_iterator(dir / "series");
+    ASSERT_EQ(shell("dcmdump '" + first.string() + "'", dump), 0) << dump;
+    const auto studyUid = [](const std::string& text) {
+        const auto at = text.find("(0020,000d) UI [");
+        return at == std::string::npos ? std::string()
+                                       : text.substr(at + 16, text.find(']', at) - at - 16);
+    };
+    const std::string study = studyUid(dump);
+    ASSERT_GT(study.size(), 10U);
+
+    for (const bool anonymise : {false, true}) {
+        const fs::path out = freshDir(anonymise ? "dicom-anon-out" : "dicom-out");
+        std::vector<std::string> args{(dir / "series").string(),
+                                      "-o",
+                                      (out / "r.pdf").string(),
+                                      "--dicom-sc",
+                                      (out / "sc.dcm").string(),
+                                      "--dicom-pdf",
+                                      (out / "doc.dcm").string(),
+                                      "--size",
+                                      "320x240",
+                                      "--vss",
+                                      "off",
+                                      "--series",
+                                      series,
+                                      "--threshold",
+                                      "200:700",
+                                      "--triangles",
+                                      "20000"};
+        if (anonymise) {
+            args.emplace_back("--anonymise");
+        }
+        const auto r = report(args);
+        ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+        const std::string text = pdfText(out / "r.pdf");
+        EXPECT_NE(text.find("Patient and study"), std::string::npos) << text;
+        for (const std::string file : {"sc.dcm", "doc.dcm"}) {
+            ASSERT_EQ(shell("dcmdump '" + (out / file).string() + "'", dump), 0) << dump;
+            EXPECT_EQ(studyUid(dump), study) << file;  // the source study
+            EXPECT_NE(dump.find("[VesselView report]"), std::string::npos) << file;
+            if (anonymise) {
+                EXPECT_EQ(dump.find("Secretname"), std::string::npos) << file;
+                EXPECT_EQ(dump.find(vv::test::kPatientId), std::string::npos) << file;
+                EXPECT_NE(dump.find("PatientIdentityRemoved"), std::string::npos) << file;
+            } else {
+                EXPECT_NE(dump.find(vv::test::kPatientName), std::string::npos) << file;
+                EXPECT_NE(dump.find(vv::test::kPatientId), std::string::npos) << file;
+            }
+        }
+        if (anonymise) {
+            EXPECT_EQ(text.find("Secretname"), std::string::npos) << text;
+            EXPECT_EQ(text.find(vv::test::kPatientId), std::string::npos) << text;
+            EXPECT_NE(text.find("anonymised"), std::string::npos) << text;
+        } else {
+            EXPECT_NE(text.find("Secretname, Jane"), std::string::npos) << text;
+            EXPECT_NE(text.find(vv::test::kPatientId), std::string::npos) << text;
+        }
+    }
+}
+
+}  // namespace

@@ -1,0 +1,186 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The PDF report: content, paper sizes, what is left out, atomic writing.
+// Reads the text back with pdftotext (poppler-utils, scripts/setup-deps).
+#include <gtest/gtest.h>
+
+#include <QTimeZone>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "ReportTestUtil.h"
+#include "vv/core/Error.h"
+#include "vv/report/PdfReport.h"
+
+namespace vv::report {
+namespace {
+
+namespace fs = std::filesystem;
+
+class PdfReportTest : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() { test::ensureGuiApplication(); }
+
+    static ReportContent content(PaperSize paper) {
+        ReportContent c;
+        c.title = "Carotid study";
+        c.sources = {"/data/case-17/vessels.vtp"};
+        const int width = reportImageWidth(paper);
+        c.view.image = test::testImage(width, width * 3 / 4);
+        c.view.caption = "Far view";
+        c.view.legends.depth =
+            render::DepthLegend{colormaps::DepthScale::Chromadepth, 10.0, 52.0, "mm"};
+        c.settings.errorBound = 0.5 / 255.0;
+        c.settings.view = "far";
+        c.findings = "Low wall shear stress at the distal bifurcation.";
+        c.created = QDateTime(QDate(2026, 3, 4), QTime(9, 30), QTimeZone::utc());
+        return c;
+    }
+
+    static void addParameter(ReportContent& c) {
+        ReportParameter p;
+        p.name = "wss";
+        p.unit = "Pa";
+        p.range = {0.25F, 3.5F};
+        p.thresholds.below = 0.4;
+        ParameterStats s;
+        s.object = "left ICA";
+        s.triangles = 100;
+        s.area = 12.0;
+        s.coveredFraction = 1.0;
+        s.min = 0.125;
+        s.mean = 1.5;
+        s.max = 3.25;
+        s.fractionBelow = 0.0625;
+        p.stats = {s, s};
+        p.stats[1].object = "right ICA";
+        c.view.legends.parameter =
+            render::ParameterLegend{"wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0};
+        c.parameter = p;
+    }
+
+    /// The PDF's text (pdftotext -layout).
+    static std::string text(const QByteArray& pdf, const std::string& name) {
+        static const fs::path dir = test::testDir("pdf-text");
+        const fs::path file = dir / (name + ".pdf");
+        {
+            std::ofstream out(file, std::ios::binary);
+            out.write(pdf.constData(), pdf.size());
+        }
+        std::string output;
+        EXPECT_EQ(test::runTool("pdftotext -layout '" + file.string() + "' -", output), 0)
+            << "pdftotext (poppler-utils) missing? run scripts/setup-deps: " << output;
+        return output;
+    }
+};
+
+TEST_F(PdfReportTest, A4ReportHoldsEverySection) {
+    ReportContent c = content(PaperSize::A4);
+    addParameter(c);
+    ReportPatient patient;
+    patient.name = "Doe^Jane";
+    patient.id = "PID-0042";
+    patient.birthDate = "19600215";
+    patient.sex = "F";
+    patient.studyDate = "20260301";
+    patient.accession = "ACC-9";
+    patient.referringPhysician = "Smith^John";
+    c.patient = patient;
+    const QByteArray pdf = renderPdf(c, PaperSize::A4);
+    ASSERT_TRUE(pdf.startsWith("%PDF-"));
+    EXPECT_TRUE(pdf.contains("/MediaBox [0 0 595.000000 842.000000]"));  // A4 in points
+    const std::string t = text(pdf, "a4");
+    for (const char* expected : {"Carotid study",
+                                 "VesselView",
+                                 "2026-03-04 09:30",
+                                 "Patient and study",
+                                 "Doe, Jane",
+                                 "PID-0042",
+                                 "1960-02-15",
+                                 "ACC-9",
+                                 "Smith, John",
+                                 "vessels.vtp",
+                                 "/data/case-17",
+                                 "Parameter statistics",
+                                 "left ICA",
+                                 "right ICA",
+                                 "0.125",
+                                 "1.50",
+                                 "3.25",
+                                 "6.3 %",
+                                 "Area <",
+                                 "0.4",
+                                 "Rendering settings",
+                                 "Chromadepth",
+                                 "Findings",
+                                 "Low wall shear stress at the distal bifurcation.",
+                                 "Page 1 of"}) {
+        EXPECT_NE(t.find(expected), std::string::npos) << "missing '" << expected << "' in\n" << t;
+    }
+}
+
+TEST_F(PdfReportTest, AnonymisedPatientShowsNoIdentifiers) {
+    ReportContent c = content(PaperSize::A4);
+    ReportPatient patient;
+    patient.name = "Doe^Jane";
+    patient.id = "PID-0042";
+    patient.anonymise = true;
+    c.patient = patient;
+    const std::string t = text(renderPdf(c, PaperSize::A4), "anonymised");
+    EXPECT_EQ(t.find("Doe"), std::string::npos);
+    EXPECT_EQ(t.find("PID-0042"), std::string::npos);
+    EXPECT_NE(t.find("anonymised"), std::string::npos);
+}
+
+TEST_F(PdfReportTest, LetterWithoutPatientOrParameterLeavesThemOut) {
+    const ReportContent c = content(PaperSize::Letter);
+    const QByteArray pdf = renderPdf(c, PaperSize::Letter);
+    EXPECT_TRUE(pdf.contains("/MediaBox [0 0 612.000000 792.000000]"));  // Letter in points
+    const std::string t = text(pdf, "letter");
+    EXPECT_EQ(t.find("Patient"), std::string::npos);
+    EXPECT_EQ(t.find("Parameter statistics"), std::string::npos);
+    EXPECT_NE(t.find("Rendering settings"), std::string::npos);
+    EXPECT_NE(t.find("Depth behind nearest vessel"), std::string::npos);  // the legend
+}
+
+TEST_F(PdfReportTest, RefusesViewsBelowPrintResolution) {
+    ReportContent c = content(PaperSize::A4);
+    c.view.image = test::testImage(800, 600);
+    EXPECT_THROW((void)renderPdf(c, PaperSize::A4), InvalidArgumentError);
+    EXPECT_GE(reportImageWidth(PaperSize::A4), 2000);  // 174 mm at 300 dpi
+    EXPECT_GT(reportImageWidth(PaperSize::Letter), reportImageWidth(PaperSize::A4));
+    EXPECT_EQ(paperSizeFromName("Letter"), PaperSize::Letter);
+    EXPECT_FALSE(paperSizeFromName("a5"));
+}
+
+TEST_F(PdfReportTest, FailedWriteLeavesNoFileAndKeepsTheOldOne) {
+    const fs::path dir = test::testDir("pdf-atomic");
+    // The parent is a regular file: nothing can be created.
+    const fs::path blocker = dir / "not-a-folder";
+    std::ofstream(blocker) << "x";
+    EXPECT_THROW(writePdf(blocker / "r.pdf", content(PaperSize::A4), PaperSize::A4), IoError);
+    // The target is a folder: the rename fails, the folder is untouched and
+    // no temporary file remains.
+    const fs::path occupied = dir / "occupied.pdf";
+    fs::create_directories(occupied);
+    std::ofstream(occupied / "keep") << "keep";
+    EXPECT_THROW(writePdf(occupied, content(PaperSize::A4), PaperSize::A4), IoError);
+    EXPECT_TRUE(fs::exists(occupied / "keep"));
+    EXPECT_EQ(test::listing(dir), "not-a-folder occupied.pdf ");
+    // An invalid report does not replace an existing one.
+    const fs::path existing = dir / "existing.pdf";
+    std::ofstream(existing) << "old";
+    ReportContent bad = content(PaperSize::A4);
+    bad.view.image = QImage();
+    EXPECT_THROW(writePdf(existing, bad, PaperSize::A4), InvalidArgumentError);
+    std::ifstream in(existing);
+    std::stringstream old;
+    old << in.rdbuf();
+    EXPECT_EQ(old.str(), "old");
+    // And a good one does.
+    writePdf(existing, content(PaperSize::A4), PaperSize::A4);
+    EXPECT_GT(fs::file_size(existing), 10000U);
+}
+
+}  // namespace
+}  // namespace vv::report

@@ -1,0 +1,36 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Helpers of the report tests: a QGuiApplication, a per-process folder,
+// small scenes, running tools.
+#pragma once
+
+#include <QImage>
+#include <filesystem>
+#include <string>
+
+#include "vv/io/Mesh.h"
+
+namespace vv::report::test {
+
+/// The process-wide QGuiApplication (offscreen platform without a display).
+void ensureGuiApplication();
+
+/// A fresh folder for this process under VV_TEST_TMP/report/<name>.
+std::filesystem::path testDir(const std::string& name);
+
+/// An open tube of radius 1 along x (0 .. 20), axis on the x axis, with point
+/// array "wss" (unit Pa) rising linearly from 0 at x = 0 to 10 at x = 20.
+io::Mesh makeTube(const std::string& name);
+
+/// A view-like test image (gradient), width x height, RGB32.
+QImage testImage(int width, int height);
+
+/// Runs `command` through the shell; its exit status, its stdout + stderr in `output`.
+int runTool(const std::string& command, std::string& output);
+
+/// True when `tool` is on PATH.
+bool haveTool(const std::string& tool);
+
+/// Names of the files in `dir`.
+std::string listing(const std::filesystem::path& dir);
+
+}  // namespace vv::report::test
