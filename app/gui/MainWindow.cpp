@@ -2,6 +2,7 @@
 #include "gui/MainWindow.h"
 
 #include <QAction>
+#include <QActionGroup>
 #include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
@@ -35,7 +36,9 @@
 #include <vector>
 
 #include "common/ResourcePaths.h"
+#include "gui/MeasureOverlay.h"
 #include "gui/MeshLoadTask.h"
+#include "gui/Translations.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
 #include "gui/panels/DataPanel.h"
@@ -48,7 +51,9 @@
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshLoader.h"
+#include "vv/io/Versions.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/vss/Versions.h"
 
 namespace vv::gui {
 
@@ -161,6 +166,28 @@ void MainWindow::buildMenus() {
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
     file->addSeparator();
+    QAction* openSessionAction = file->addAction(tr("Open &Session…"), this, [this] {
+        const QString path = QFileDialog::getOpenFileName(this, tr("Open session"), QString(),
+                                                          tr("VesselView sessions (*.vvs)"));
+        if (!path.isEmpty()) {
+            openSession(path);
+        }
+    });
+    openSessionAction->setObjectName(QStringLiteral("openSession"));
+    QAction* saveSessionAction = file->addAction(tr("Save Session &As…"), this, [this] {
+        QString path = QFileDialog::getSaveFileName(this, tr("Save session"), QString(),
+                                                    tr("VesselView sessions (*.vvs)"));
+        if (path.isEmpty()) {
+            return;
+        }
+        if (QFileInfo(path).suffix().isEmpty()) {
+            path += QStringLiteral(".vvs");
+        }
+        saveSessionTo(path);
+    });
+    saveSessionAction->setObjectName(QStringLiteral("saveSession"));
+    saveSessionAction->setShortcut(QKeySequence::Save);
+    file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
@@ -182,6 +209,25 @@ void MainWindow::buildMenus() {
     view->addAction(aoAction_);
     view->addAction(cvdAction_);
     view->addSeparator();
+    measureAction_ = view->addAction(tr("&Measure Distance"));
+    measureAction_->setObjectName(QStringLiteral("measureToggle"));
+    measureAction_->setCheckable(true);
+    measureAction_->setShortcut(Qt::Key_M);
+    measureAction_->setToolTip(
+        tr("Click two points on the vessels: their distance and depth difference "
+           "(Ctrl + click works without this mode)"));
+    connect(measureAction_, &QAction::toggled, this, [this](bool on) {
+        viewer_->setMeasureMode(on);
+        if (!on) {
+            clearMeasurement();
+        } else if (measurePoints_.isEmpty()) {
+            measureLabel_->setText(tr("Measure: click a point on a vessel"));
+        }
+    });
+    QAction* clearMeasure =
+        view->addAction(tr("&Clear Measurement"), this, &MainWindow::clearMeasurement);
+    clearMeasure->setShortcut(Qt::SHIFT | Qt::Key_M);
+    view->addSeparator();
     QMenu* panelsMenu = view->addMenu(tr("&Panels"));
     for (QDockWidget* dock : docks_) {
         panelsMenu->addAction(dock->toggleViewAction());
@@ -193,6 +239,31 @@ void MainWindow::buildMenus() {
         view->addAction(tr("Reset to &Defaults"), this, &MainWindow::resetToDefaults);
     defaults->setObjectName(QStringLiteral("resetToDefaults"));
     defaults->setToolTip(tr("Display settings and panel layout as in a fresh installation"));
+
+    // View > Language: stored in QSettings, applied at the next start.
+    QMenu* language = view->addMenu(tr("&Language"));
+    language->setObjectName(QStringLiteral("languageMenu"));
+    auto* languages = new QActionGroup(language);
+    const QString chosen = QSettings().value(QLatin1String(kLanguageKey)).toString();
+    const auto addLanguage = [&](const QString& code, const QString& label) {
+        QAction* action = language->addAction(label);
+        action->setData(code);
+        action->setCheckable(true);
+        action->setChecked(code == chosen);
+        languages->addAction(action);
+        connect(action, &QAction::triggered, this, [this, code] {
+            QSettings().setValue(QLatin1String(kLanguageKey), code);
+            auto* box = new QMessageBox(QMessageBox::Information, tr("Language"),
+                                        tr("The language changes when VesselView starts again."),
+                                        QMessageBox::Ok, this);
+            box->setAttribute(Qt::WA_DeleteOnClose);
+            box->open();
+        });
+    };
+    addLanguage(QString(), tr("System Default"));
+    for (const QString& code : availableLanguages()) {
+        addLanguage(code, languageName(code));
+    }
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
@@ -358,6 +429,7 @@ QString MainWindow::shortcutSummary() const {
     row(tr("Rotate"), tr("left drag"));
     row(tr("Pan"), tr("right or middle drag, Shift + left drag"));
     row(tr("Zoom"), tr("mouse wheel"));
+    row(tr("Pick a point to measure"), tr("Ctrl + click (any click in Measure mode)"));
     return QStringLiteral("<table cellspacing=\"6\">") + rows.join(QString()) +
            QStringLiteral("</table>");
 }
@@ -397,6 +469,13 @@ void MainWindow::buildStatusBar() {
         }
     });
     statusBar()->addWidget(statusLabel_, 1);
+    measureLabel_ = new QLabel(this);
+    measureLabel_->setObjectName(QStringLiteral("measureLabel"));
+    measureOverlay_ = new MeasureOverlay(viewer_);
+    statusBar()->addPermanentWidget(measureLabel_);
+    connect(viewer_, &ViewerWidget::pointPicked, this, &MainWindow::addMeasurePoint);
+    connect(viewer_, &ViewerWidget::pickMissed, this,
+            [this] { measureLabel_->setText(tr("Measure: no vessel under the mouse")); });
     statusBar()->addPermanentWidget(vssLabel_);
     statusBar()->addPermanentWidget(rangeLabel_);
     statusBar()->addPermanentWidget(progressBar_);
@@ -480,6 +559,11 @@ void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
                     title = tr("demo vessel tree");
                 }
                 sceneFiles_ = files;
+                shownFiles_.clear();
+                for (const auto& path : task->files()) {
+                    shownFiles_
+                        << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
+                }
                 setScene(std::move(scene), title);
                 addRecentFiles(files);
             });
@@ -490,6 +574,7 @@ void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
                     what = QString::fromStdString(task->files().front().string());
                 }
                 const QString message = what.isEmpty() ? problem : tr("%1: %2").arg(what, problem);
+                pendingSession_.reset();  // its files did not load
                 showError(tr("Cannot open"), message);
             });
     connect(task, &MeshLoadTask::cancelled, this, [this] {
@@ -520,10 +605,21 @@ void MainWindow::taskFinished() {
 }
 
 void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString& title) {
+    clearMeasurement();  // points on the old data mean nothing on the new
     viewer_->setScene(scene);
     functionalPanel_->sceneChanged();
     dataPanel_->sceneChanged(title, sceneFiles_);
     sceneFiles_.clear();
+    if (pendingSession_) {
+        // A session being opened: its settings and camera, now that its data is shown.
+        const Session session = *pendingSession_;
+        pendingSession_.reset();
+        applySession(*viewer_, session);
+        if (!session.layout.isEmpty()) {
+            restoreState(session.layout, kLayoutVersion);
+        }
+        QTimer::singleShot(0, this, &MainWindow::sessionApplied);
+    }
     syncControls();
     setWindowTitle(title.isEmpty() ? QStringLiteral("VesselView")
                                    : title + QStringLiteral(" — VesselView"));
@@ -542,6 +638,74 @@ void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString&
     }
     lastError_.clear();
     emit sceneShown();
+}
+
+void MainWindow::addMeasurePoint(const ProbeResult& point) {
+    if (measurePoints_.size() >= 2) {
+        measurePoints_.clear();
+    }
+    measurePoints_ << point;
+    measureOverlay_->setPoints(measurePoints_);
+    const auto where = [](const ProbeResult& p) {
+        return p.objectName.isEmpty() ? tr("object %1").arg(p.meshIndex + 1) : p.objectName;
+    };
+    if (measurePoints_.size() == 1) {
+        measureLabel_->setText(tr("Measure: A on %1, %2 mm deep; click a second point")
+                                   .arg(where(point))
+                                   .arg(static_cast<double>(point.depthBelowNearest), 0, 'f', 1));
+        return;
+    }
+    const Measurement m = measure(measurePoints_[0], measurePoints_[1]);
+    const double depth = static_cast<double>(m.depthDifference);
+    const QString deeper = std::abs(depth) < 0.05 ? tr("same depth")
+                           : depth > 0.0 ? tr("B deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1)
+                                         : tr("A deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1);
+    measureLabel_->setText(
+        tr("Distance A–B: %1 mm; %2").arg(static_cast<double>(m.distance), 0, 'f', 1).arg(deeper));
+}
+
+void MainWindow::clearMeasurement() {
+    measurePoints_.clear();
+    measureOverlay_->setPoints(measurePoints_);
+    measureLabel_->setText(measureAction_ != nullptr && measureAction_->isChecked()
+                               ? tr("Measure: click a point on a vessel")
+                               : QString());
+}
+
+bool MainWindow::saveSessionTo(const QString& path) {
+    Session session = captureSession(*viewer_, viewer_->scene() ? shownFiles_ : QStringList());
+    session.layout = saveState(kLayoutVersion);
+    try {
+        saveSession(std::filesystem::path(QFile::encodeName(path).toStdString()), session);
+    } catch (const vv::Error& e) {
+        showError(tr("Cannot save the session"), QString::fromStdString(e.what()));
+        return false;
+    }
+    statusLabel_->setText(tr("Session saved to %1").arg(path));
+    return true;
+}
+
+bool MainWindow::openSession(const QString& path) {
+    Session session;
+    try {
+        session = loadSession(std::filesystem::path(QFile::encodeName(path).toStdString()));
+    } catch (const vv::Error& e) {
+        showError(tr("Cannot open the session"), QString::fromStdString(e.what()));
+        return false;
+    }
+    if (session.files.isEmpty()) {
+        setScene(nullptr, QString());
+        applySession(*viewer_, session);
+        if (!session.layout.isEmpty()) {
+            restoreState(session.layout, kLayoutVersion);
+        }
+        syncControls();
+        QTimer::singleShot(0, this, &MainWindow::sessionApplied);
+        return true;
+    }
+    pendingSession_ = session;
+    openFiles(session.files);
+    return true;
 }
 
 void MainWindow::updateRangeLabel() {
@@ -700,12 +864,25 @@ void MainWindow::finishScreenshot(bool ok, const QString& message) {
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-    if (!localFiles(event->mimeData(), true).isEmpty()) {
+    const QStringList any = localFiles(event->mimeData(), false);
+    const bool session = std::any_of(any.begin(), any.end(), [](const QString& f) {
+        return QFileInfo(f).suffix().compare(QLatin1String(kSessionSuffix), Qt::CaseInsensitive) ==
+               0;
+    });
+    if (session || !localFiles(event->mimeData(), true).isEmpty()) {
         event->acceptProposedAction();
     }
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
+    for (const QString& file : localFiles(event->mimeData(), false)) {
+        if (QFileInfo(file).suffix().compare(QLatin1String(kSessionSuffix), Qt::CaseInsensitive) ==
+            0) {
+            event->acceptProposedAction();
+            openSession(file);
+            return;
+        }
+    }
     const QStringList files = localFiles(event->mimeData(), true);
     if (!files.isEmpty()) {
         event->acceptProposedAction();
@@ -729,14 +906,24 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 QString MainWindow::aboutText() const {
     const QString gl =
         viewer_->glDescription().isEmpty() ? tr("not initialised") : viewer_->glDescription();
-    // VTK, OpenCV and DCMTK stay inside the modules (no version API yet).
+    QStringList libraries;
+    libraries << QStringLiteral("Qt %1 (%2)")
+                     .arg(QString::fromLatin1(qVersion()),
+                          tr("built with %1").arg(QStringLiteral(QT_VERSION_STR)));
+    for (const auto& library : io::libraryVersions()) {
+        libraries << QString::fromStdString(library.name + " " + library.version);
+    }
+    libraries << QStringLiteral("OpenCV ") + QString::fromStdString(vss::openCvVersion());
+    for (QString& library : libraries) {
+        library = library.toHtmlEscaped();
+    }
     return tr("<h3>VesselView %1</h3>"
               "<p>A workstation for vessel trees: meshes with wall shear stress, pressure and "
               "other parameters on the vessel wall, and Void Space Surfaces.</p>"
-              "<p>OpenGL: %2<br>Qt: %3 (built with %4)</p>"
+              "<p>OpenGL: %2</p><p>Libraries: %3</p>"
               "<p>Licensed under the GNU General Public License, version 3 or later.</p>")
-        .arg(QStringLiteral(VV_VERSION), gl.toHtmlEscaped(), QString::fromLatin1(qVersion()),
-             QStringLiteral(QT_VERSION_STR));
+        .arg(QStringLiteral(VV_VERSION), gl.toHtmlEscaped(),
+             libraries.join(QStringLiteral("<br>")));
 }
 
 void MainWindow::showAbout() {

@@ -11,6 +11,8 @@
 #include <optional>
 
 #include "gui/DisplayPreset.h"
+#include "gui/Session.h"
+#include "gui/ViewerWidget.h"
 #include "vv/io/Mesh.h"
 
 class QAction;
@@ -25,6 +27,7 @@ class QStackedWidget;
 
 namespace vv::gui {
 
+class MeasureOverlay;
 class MeshLoadTask;
 class ViewerWidget;
 
@@ -74,6 +77,18 @@ class MainWindow : public QMainWindow {
     /// The File > Open dialog's name filters, from supportedMeshExtensions().
     [[nodiscard]] static QString meshFileFilter();
 
+    /// File > Save Session: the shown files, camera, display settings and
+    /// panel layout to `path` (.vvs, written atomically). Returns false after
+    /// showing an error (message box naming the file) when that fails.
+    bool saveSessionTo(const QString& path);
+    /// File > Open Session: reads `path` (any supported version), loads its
+    /// files and then applies its camera and settings (sessionApplied()).
+    /// Returns false after showing an error naming the file when the session
+    /// cannot be read; nothing changes then.
+    bool openSession(const QString& path);
+    /// The files of the scene on screen (absolute; the demo's file too).
+    [[nodiscard]] const QStringList& shownFiles() const noexcept { return shownFiles_; }
+
     /// Recently opened files (most recent first, at most 8), from QSettings.
     [[nodiscard]] static QStringList recentFiles();
 
@@ -108,12 +123,26 @@ class MainWindow : public QMainWindow {
     /// Help > Keyboard Shortcuts: every menu action with a shortcut, and the
     /// mouse, as an HTML table.
     [[nodiscard]] QString shortcutSummary() const;
-    /// Help > About: versions of VesselView, OpenGL and Qt (HTML).
+    /// Help > About: versions of VesselView, OpenGL, Qt, VTK, DCMTK and OpenCV (HTML).
     [[nodiscard]] QString aboutText() const;
     /// View > Show Legends (checked = legends drawn).
     [[nodiscard]] QAction* legendsToggle() const noexcept { return legendsAction_; }
     /// The status bar's VSS quality: "VSS: preview", "VSS: exact, N ms", …
     [[nodiscard]] QLabel* vssQualityLabel() const noexcept { return vssLabel_; }
+    /// View > Measure (M): while checked, left clicks on vessels pick points
+    /// (Ctrl + click always does). Two picked points give their 3-D distance
+    /// and depth difference in measureLabel(); a third click starts anew.
+    [[nodiscard]] QAction* measureToggle() const noexcept { return measureAction_; }
+    [[nodiscard]] QLabel* measureLabel() const noexcept { return measureLabel_; }
+    /// The markers of the picked points over the viewer.
+    [[nodiscard]] MeasureOverlay* measureOverlay() const noexcept { return measureOverlay_; }
+    /// The picked points of the measurement in progress (0, 1 or 2).
+    [[nodiscard]] const QList<ProbeResult>& measurePoints() const noexcept {
+        return measurePoints_;
+    }
+    /// Adds a picked point (what a click on the viewer does).
+    void addMeasurePoint(const ProbeResult& point);
+    void clearMeasurement();
     [[nodiscard]] bool isLoading() const noexcept { return !task_.isNull(); }
     /// The message of the last load error ("file: problem"); empty if none.
     [[nodiscard]] const QString& lastError() const noexcept { return lastError_; }
@@ -123,6 +152,8 @@ class MainWindow : public QMainWindow {
     void sceneShown();
     /// A load finished with an error (after the message box was opened).
     void loadFailed(const QString& message);
+    /// A session's camera and settings were applied (after its files loaded).
+    void sessionApplied();
 
   protected:
     void dragEnterEvent(QDragEnterEvent* event) override;
@@ -167,6 +198,12 @@ class MainWindow : public QMainWindow {
     QStringList sceneFiles_;  ///< the files of the scene being loaded / shown
     QAction* legendsAction_ = nullptr;
     QLabel* vssLabel_ = nullptr;
+    QAction* measureAction_ = nullptr;
+    QLabel* measureLabel_ = nullptr;
+    MeasureOverlay* measureOverlay_ = nullptr;
+    QList<ProbeResult> measurePoints_;
+    QStringList shownFiles_;
+    std::optional<Session> pendingSession_;  ///< applied once its files are shown
     QMenu* recentMenu_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     QLabel* rangeLabel_ = nullptr;

@@ -3,16 +3,19 @@
 
 #include <QFutureWatcher>
 #include <QGuiApplication>
+#include <QHelpEvent>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QTimer>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "vv/core/Error.h"
@@ -68,7 +71,8 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
     setMinimumSize(160, 120);
     setToolTip(
         tr("Left-drag: rotate · Right/middle or Shift+left-drag: pan · Wheel: zoom\n"
-           "R: reset view · F: fit to data"));
+           "R: reset view · F: fit to data · Ctrl+click: measure"));
+    setHoverProbe(true);
 }
 
 ViewerWidget::~ViewerWidget() {
@@ -468,6 +472,8 @@ void ViewerWidget::paintGL() {
 
 void ViewerWidget::mousePressEvent(QMouseEvent* event) {
     lastMouse_ = event->position();
+    pressPosition_ = event->position();  // probe: a click picks
+    pressMoved_ = false;
     const bool shift = (event->modifiers() & Qt::ShiftModifier) != 0;
     if (event->button() == Qt::LeftButton) {
         drag_ = shift ? Drag::Pan : Drag::Rotate;
@@ -481,6 +487,13 @@ void ViewerWidget::mouseMoveEvent(QMouseEvent* event) {
     const QPointF position = event->position();
     const glm::vec2 from(static_cast<float>(lastMouse_.x()), static_cast<float>(lastMouse_.y()));
     const glm::vec2 to(static_cast<float>(position.x()), static_cast<float>(position.y()));
+    if (drag_ != Drag::None) {  // probe: a drag is not a click; no tooltip while moving
+        const QPointF moved = position - pressPosition_;
+        pressMoved_ = pressMoved_ || moved.manhattanLength() > 3.0;
+        hoverTimer_->stop();
+    } else if (hoverProbe_) {
+        hoverTimer_->start();
+    }
     if (drag_ == Drag::Rotate) {
         camera_.rotate(from, to);
         cameraChanged();
@@ -493,6 +506,7 @@ void ViewerWidget::mouseMoveEvent(QMouseEvent* event) {
 }
 
 void ViewerWidget::mouseReleaseEvent(QMouseEvent* event) {
+    maybePick(event);  // probe
     if (event->buttons() == Qt::NoButton) {
         drag_ = Drag::None;
         settle();  // released: the camera stopped, show the exact VSS now
@@ -524,5 +538,150 @@ void ViewerWidget::keyPressEvent(QKeyEvent* event) {
             QOpenGLWidget::keyPressEvent(event);
     }
 }
+
+// --- Probe and measurement -------------------------------------------------
+
+namespace {
+
+/// Over a vessel, Qt's tooltip event shows the probe instead of the viewer's
+/// mouse help (which would otherwise replace the hover probe after a moment).
+class ProbeToolTipFilter : public QObject {
+  public:
+    explicit ProbeToolTipFilter(ViewerWidget* viewer) : QObject(viewer), viewer_(viewer) {}
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override {
+        if (watched == viewer_ && event->type() == QEvent::ToolTip && viewer_->hoverProbe()) {
+            const auto* help = static_cast<QHelpEvent*>(event);
+            if (const auto result = viewer_->probeAt(QPointF(help->pos()))) {
+                QToolTip::showText(help->globalPos(), ViewerWidget::probeText(*result), viewer_);
+                return true;
+            }
+        }
+        return QObject::eventFilter(watched, event);
+    }
+
+  private:
+    ViewerWidget* viewer_;
+};
+
+}  // namespace
+
+Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept {
+    return Measurement{glm::length(b.worldPosition - a.worldPosition),
+                       b.linearDepth - a.linearDepth};
+}
+
+std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
+    if (!error_.isEmpty() || !renderer_.initialized() || scene_ == nullptr ||
+        lastRenderSize_.isEmpty() || width() < 1 || height() < 1) {
+        return std::nullopt;
+    }
+    // Logical widget pixels -> the last frame's render pixels (GL rows, bottom up).
+    const double sx = static_cast<double>(lastRenderSize_.width()) / width();
+    const double sy = static_cast<double>(lastRenderSize_.height()) / height();
+    const int x = static_cast<int>(std::floor(position.x() * sx));
+    const int y = lastRenderSize_.height() - 1 - static_cast<int>(std::floor(position.y() * sy));
+    makeCurrent();
+    const auto read = [&]() -> std::optional<render::ProbeSample> {
+        try {
+            auto texel = renderer_.probe(camera_, x, y);
+            const std::pair<quint64, std::uint64_t> key{framesWithScene_, sceneRevision_};
+            if (texel && nearestKey_ != key) {
+                const auto range = renderer_.visibleDepthRange();
+                nearestDepth_ = range ? std::optional<float>(range->first) : std::nullopt;
+                nearestKey_ = key;
+            }
+            return texel;
+        } catch (const vv::Error& e) {
+            static const log::Category category{"vv.gui"};
+            log::warning(category, std::string("probe failed: ") + e.what());
+            return std::nullopt;
+        }
+    };
+    const std::optional<render::ProbeSample> sample = read();
+    doneCurrent();
+    if (!sample || sample->objectId == 0 || sample->objectId > scene_->meshes.size()) {
+        return std::nullopt;
+    }
+    ProbeResult result;
+    result.widgetPosition = position;
+    result.meshIndex = static_cast<int>(sample->objectId - 1U);
+    const io::Mesh& mesh = scene_->meshes[static_cast<std::size_t>(result.meshIndex)];
+    result.objectName = QString::fromStdString(mesh.name);
+    result.arrayName = QString::fromStdString(style_.array);
+    if (const io::DataArray* array =
+            style_.array.empty() ? nullptr : mesh.pointArray(style_.array)) {
+        result.unit = QString::fromStdString(array->unit);
+    }
+    result.value = style_.array.empty() ? std::numeric_limits<float>::quiet_NaN() : sample->value;
+    result.linearDepth = sample->linearDepth;
+    result.depthBelowNearest =
+        std::max(0.0F, sample->linearDepth - nearestDepth_.value_or(sample->linearDepth));
+    result.worldPosition = sample->worldPosition;
+    return result;
+}
+
+QString ViewerWidget::probeText(const ProbeResult& result) {
+    QStringList lines;
+    lines << (result.objectName.isEmpty() ? tr("Object %1").arg(result.meshIndex + 1)
+                                          : result.objectName);
+    if (!result.arrayName.isEmpty()) {
+        const QString value = std::isfinite(result.value)
+                                  ? QString::number(static_cast<double>(result.value), 'g', 4)
+                                  : tr("no data");
+        lines << (result.unit.isEmpty() || !std::isfinite(result.value)
+                      ? tr("%1: %2").arg(result.arrayName, value)
+                      : tr("%1: %2 %3").arg(result.arrayName, value, result.unit));
+    }
+    lines << tr("Depth: %1 mm behind the nearest vessel point")
+                 .arg(QString::number(static_cast<double>(result.depthBelowNearest), 'f', 1));
+    return lines.join(QLatin1Char('\n'));
+}
+
+void ViewerWidget::setHoverProbe(bool on) {
+    hoverProbe_ = on;
+    if (hoverTimer_ == nullptr) {
+        hoverTimer_ = new QTimer(this);
+        hoverTimer_->setSingleShot(true);
+        hoverTimer_->setInterval(120);
+        connect(hoverTimer_, &QTimer::timeout, this, &ViewerWidget::hoverProbeNow);
+        installEventFilter(new ProbeToolTipFilter(this));
+    }
+    if (on) {
+        setMouseTracking(true);
+    } else {
+        hoverTimer_->stop();
+    }
+}
+
+void ViewerWidget::hoverProbeNow() {
+    if (!hoverProbe_ || drag_ != Drag::None) {
+        return;
+    }
+    const QPointF position = lastMouse_;  // where the mouse came to rest
+    if (const auto result = probeAt(position)) {
+        QToolTip::showText(mapToGlobal(position.toPoint()), probeText(*result), this);
+    } else {
+        QToolTip::hideText();
+    }
+}
+
+void ViewerWidget::maybePick(QMouseEvent* event) {
+    if (event->button() != Qt::LeftButton || pressMoved_) {
+        return;
+    }
+    const bool ctrl = (event->modifiers() & Qt::ControlModifier) != 0;
+    if (!measureMode_ && !ctrl) {
+        return;
+    }
+    if (const auto result = probeAt(event->position())) {
+        emit pointPicked(*result);
+    } else {
+        emit pickMissed();
+    }
+}
+
+// --- end probe -------------------------------------------------------------
 
 }  // namespace vv::gui

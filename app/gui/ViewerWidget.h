@@ -10,6 +10,7 @@
 #include <QTimer>
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <stop_token>
 
 #include "vv/core/Image.h"
@@ -22,6 +23,30 @@
 namespace vv::gui {
 
 class LegendOverlay;
+
+// --- Probe and measurement ---------------------------------------------------
+/// What the viewer shows at one point of the widget (ViewerWidget::probeAt).
+struct ProbeResult {
+    QPointF widgetPosition;    ///< logical widget coordinates that were probed
+    int meshIndex = -1;        ///< index into the scene's meshes
+    QString objectName;        ///< the mesh's name
+    QString arrayName;         ///< the array shown; empty when none
+    QString unit;              ///< the array's unit; empty when unknown
+    float value = 0.0F;        ///< the array's value; NaN when none is shown / no data here
+    float linearDepth = 0.0F;  ///< distance along the viewing axis (scene units: mm)
+    /// Depth behind the nearest visible vessel point (linear depth minus the
+    /// smallest visible linear depth), mm.
+    float depthBelowNearest = 0.0F;
+    glm::vec3 worldPosition{0.0F};  ///< scene coordinates (mm)
+};
+/// Two picked points: their 3-D distance and depth difference (b - a; > 0:
+/// b lies deeper), mm.
+struct Measurement {
+    float distance = 0.0F;
+    float depthDifference = 0.0F;
+};
+[[nodiscard]] Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept;
+// --- end probe -------------------------------------------------------------
 
 /// The 3-D view: shows a Scene through the render graph (FrameRenderer:
 /// vessels with Blinn-Phong and an optional colour-mapped array, and the Void
@@ -164,6 +189,24 @@ class ViewerWidget : public QOpenGLWidget {
     /// Frames drawn since the current scene was set.
     [[nodiscard]] quint64 framesWithScene() const noexcept { return framesWithScene_; }
 
+    // --- Probe and measurement -------------------------------------------
+    /// What the last frame shows at `position` (logical widget coordinates):
+    /// object, value, depth; nullopt when no vessel is there, no frame was
+    /// drawn or OpenGL is unavailable. Makes the context current; reads three
+    /// texels (and, once per frame, the whole depth for the nearest point).
+    [[nodiscard]] std::optional<ProbeResult> probeAt(const QPointF& position);
+    /// The tooltip text for `result`: object, value with unit, depth.
+    [[nodiscard]] static QString probeText(const ProbeResult& result);
+    /// Hover probe: a tooltip with probeText() while the mouse rests on a
+    /// vessel (on by default).
+    void setHoverProbe(bool on);
+    [[nodiscard]] bool hoverProbe() const noexcept { return hoverProbe_; }
+    /// Measure mode: a left click (press and release without moving) picks
+    /// a point (pointPicked). Ctrl + left click picks in any mode.
+    void setMeasureMode(bool on) noexcept { measureMode_ = on; }
+    [[nodiscard]] bool measureMode() const noexcept { return measureMode_; }
+    // --- end probe -------------------------------------------------------
+
   public slots:
     /// Default orientation, fitted to the data.
     void resetCamera();
@@ -181,6 +224,10 @@ class ViewerWidget : public QOpenGLWidget {
     void cameraSettled();
     /// OpenGL cannot be used; `message` says why. Emitted at most once.
     void renderFailed(const QString& message);
+    /// A point was picked (measure mode click or Ctrl + click on a vessel).
+    void pointPicked(const vv::gui::ProbeResult& result);
+    /// A pick landed on the background (no vessel under the mouse).
+    void pickMissed();
 
   protected:
     void initializeGL() override;
@@ -243,6 +290,19 @@ class ViewerWidget : public QOpenGLWidget {
     quint64 solvesRequestedOnSettle_ = 0;
     quint64 solvesPreparedOnSettle_ = 0;
     QTimer* settleTimer_ = nullptr;
+    // --- Probe and measurement -------------------------------------------
+    void hoverProbeNow();
+    /// Handles a left-button release: picks when it was a click.
+    void maybePick(QMouseEvent* event);
+    bool hoverProbe_ = false;
+    bool measureMode_ = false;
+    QTimer* hoverTimer_ = nullptr;
+    QPointF pressPosition_;
+    bool pressMoved_ = false;
+    /// visibleDepthRange() of the frame framesWithScene_ / sceneRevision_.
+    std::optional<std::pair<quint64, std::uint64_t>> nearestKey_;
+    std::optional<float> nearestDepth_;
+    // --- end probe -------------------------------------------------------
 };
 
 }  // namespace vv::gui

@@ -1,12 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // vesselview: the GUI. `vesselview [FILE...]` opens files (the demo when none);
-// `vesselview --screenshot OUT.png [FILE...]` saves the first frame and quits.
+// `vesselview --screenshot OUT.png [FILE...]` saves the first frame and quits;
+// `--lang de` chooses the language (default: View > Language, else the system's).
 #include <QApplication>
 #include <QCommandLineParser>
+#include <QCoreApplication>
 #include <QLoggingCategory>
+#include <QSettings>
 #include <QString>
 
 #include "gui/MainWindow.h"
+#include "gui/Translations.h"
 #include "gui/ViewerWidget.h"
 #include "vv/core/Log.h"
 
@@ -37,6 +41,22 @@ void qtSink(vv::log::Level level, std::string_view category, std::string_view me
     }
 }
 
+/// The value of --lang / --lang=X in the raw arguments (read before the
+/// parser so that its help text is translated too); empty when not given.
+QString languageArgument(const QStringList& arguments) {
+    for (qsizetype i = 1; i < arguments.size(); ++i) {
+        const QString& a = arguments[i];
+        if ((a == QLatin1String("--lang") || a == QLatin1String("-lang")) &&
+            i + 1 < arguments.size()) {
+            return arguments[i + 1];
+        }
+        if (a.startsWith(QLatin1String("--lang="))) {
+            return a.mid(7);
+        }
+    }
+    return {};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -47,20 +67,31 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName(QStringLiteral("VesselView"));
     QApplication::setApplicationVersion(QStringLiteral(VV_VERSION));
     vv::log::setSink(&qtSink);
+    vv::gui::installTranslations(
+        app, vv::gui::chooseLanguage(languageArgument(QCoreApplication::arguments()), QSettings()));
 
     QCommandLineParser parser;
-    parser.setApplicationDescription(
-        QStringLiteral("Vessel tree workstation. Opens the given mesh files, or the demo."));
+    parser.setApplicationDescription(QCoreApplication::translate(
+        "main", "Vessel tree workstation. Opens the given mesh files, or the demo."));
     parser.addHelpOption();
     parser.addVersionOption();
     const QCommandLineOption screenshot(
         QStringLiteral("screenshot"),
-        QStringLiteral("Save the first frame with the data to <png> and quit."),
+        QCoreApplication::translate("main",
+                                    "Save the first frame with the data to <png> and quit."),
         QStringLiteral("png"));
     parser.addOption(screenshot);
-    parser.addPositionalArgument(QStringLiteral("files"),
-                                 QStringLiteral("Mesh files (STL, OBJ, PLY, VTK, VTP, VTU)."),
-                                 QStringLiteral("[files...]"));
+    const QCommandLineOption lang(
+        QStringLiteral("lang"),
+        QCoreApplication::translate(
+            "main", "User interface language, e.g. en or de (default: the system's)."),
+        QStringLiteral("language"));
+    parser.addOption(lang);
+    parser.addPositionalArgument(
+        QStringLiteral("files"),
+        QCoreApplication::translate(
+            "main", "Mesh files (STL, OBJ, PLY, VTK, VTP, VTU), or one session file (.vvs)."),
+        QStringLiteral("[files...]"));
     parser.process(app);
 
     vv::gui::MainWindow window;
@@ -71,6 +102,9 @@ int main(int argc, char** argv) {
     const QStringList files = parser.positionalArguments();
     if (files.isEmpty()) {
         window.openDemo();
+    } else if (files.size() == 1 &&
+               files.front().endsWith(QLatin1String(".vvs"), Qt::CaseInsensitive)) {
+        window.openSession(files.front());
     } else {
         window.openFiles(files);
     }

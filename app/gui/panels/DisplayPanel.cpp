@@ -57,7 +57,7 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     cue_->setObjectName(QStringLiteral("vesselCueChooser"));
     cue_->setToolTip(tr("A depth cue on the vessels themselves, for comparison with the VSS"));
     for (const auto cue : render::allVesselCues()) {
-        cue_->addItem(fromUtf8(render::displayName(cue)), static_cast<int>(cue));
+        cue_->addItem(engineName(render::displayName(cue)), static_cast<int>(cue));
     }
     form->addRow(tr("Vessel cue:"), cue_);
     fogStrength_ = new QSlider(Qt::Horizontal, this);

@@ -58,7 +58,7 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     map_ = new QComboBox(this);
     map_->setObjectName(QStringLiteral("colorMapChooser"));
     for (const auto map : colormaps::allColorMaps()) {
-        map_->addItem(fromUtf8(colormaps::displayName(map)), static_cast<int>(map));
+        map_->addItem(engineName(colormaps::displayName(map)), static_cast<int>(map));
     }
     form->addRow(tr("Colour map:"), map_);
     bins_ = new QSpinBox(this);

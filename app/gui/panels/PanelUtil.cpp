@@ -3,11 +3,41 @@
 
 #include <QAbstractSpinBox>
 #include <QComboBox>
+#include <QCoreApplication>
 #include <QFormLayout>
+#include <QtGlobal>
 
 #include "vv/io/Mesh.h"
 
 namespace vv::gui::panels {
+
+namespace {
+
+// The modules' display names, for lupdate (translated by engineName()).
+[[maybe_unused]] const char* const kEngineNames[] = {
+    // colormaps::displayName(ColorMap)
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Viridis"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Cividis"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Inferno"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Blue-white-red (diverging)"),
+    // colormaps::displayName(DepthScale)
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Chromadepth"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Pseudo-chromadepth"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Dark means deep"),
+    // render::displayName(VesselCue)
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "None"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Vessel chromadepth"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Vessel pseudo-chromadepth"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Depth fog"),
+    QT_TRANSLATE_NOOP("vv::gui::panels::EngineNames", "Fresnel-edge pseudo-chromadepth"),
+};
+
+}  // namespace
+
+QString engineName(std::string_view name) {
+    const QByteArray utf8(name.data(), static_cast<qsizetype>(name.size()));
+    return QCoreApplication::translate("vv::gui::panels::EngineNames", utf8.constData());
+}
 
 QString arrayLabel(const io::Scene& scene, const std::string& name) {
     for (const auto& mesh : scene.meshes) {

@@ -20,6 +20,11 @@ inline QString fromUtf8(std::string_view text) {
     return QString::fromUtf8(text.data(), static_cast<qsizetype>(text.size()));
 }
 
+/// A name the modules define in English (colour maps, depth scales, vessel
+/// cues: their displayName()), translated for the user (context
+/// "vv::gui::panels::EngineNames"); unknown names come back unchanged.
+[[nodiscard]] QString engineName(std::string_view name);
+
 /// Enables `widget` and shows `toolTip`, or disables it and shows `whyNot`
 /// as its tooltip, so that a control that does not apply says why.
 inline void setApplicable(QWidget* widget, bool applicable, const QString& toolTip,

@@ -90,7 +90,7 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     scale_ = new QComboBox(this);
     scale_->setObjectName(QStringLiteral("depthScaleChooser"));
     for (const auto scale : colormaps::allDepthScales()) {
-        scale_->addItem(fromUtf8(colormaps::displayName(scale)), static_cast<int>(scale));
+        scale_->addItem(engineName(colormaps::displayName(scale)), static_cast<int>(scale));
     }
     form->addRow(tr("Colour scale:"), scale_);
 

@@ -1169,4 +1169,133 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                                     : std::numeric_limits<double>::quiet_NaN();
 }
 
+// --- Probe (G-buffer read-back of single pixels) ---------------------------
+
+namespace {
+
+/// Restores the read framebuffer binding when it goes out of scope.
+class ReadFramebufferGuard {
+  public:
+    explicit ReadFramebufferGuard(QOpenGLFunctions_4_1_Core& g) : g_(g) {
+        GLint bound = 0;
+        g_.glGetIntegerv(GL_READ_FRAMEBUFFER_BINDING, &bound);
+        previous_ = static_cast<GLuint>(bound);
+        GLint buffer = 0;
+        g_.glGetIntegerv(GL_READ_BUFFER, &buffer);
+        previousBuffer_ = static_cast<GLenum>(buffer);
+    }
+    ~ReadFramebufferGuard() {
+        g_.glBindFramebuffer(GL_READ_FRAMEBUFFER, previous_);
+        g_.glReadBuffer(previousBuffer_);
+    }
+    ReadFramebufferGuard(const ReadFramebufferGuard&) = delete;
+    ReadFramebufferGuard& operator=(const ReadFramebufferGuard&) = delete;
+    ReadFramebufferGuard(ReadFramebufferGuard&&) = delete;
+    ReadFramebufferGuard& operator=(ReadFramebufferGuard&&) = delete;
+
+  private:
+    QOpenGLFunctions_4_1_Core& g_;
+    GLuint previous_ = 0;
+    GLenum previousBuffer_ = GL_BACK;
+};
+
+/// True when the G-buffer framebuffer has its attachments (a geometry pass ran).
+bool gbufferReadable(QOpenGLFunctions_4_1_Core& g, GLuint fbo) {
+    if (fbo == 0) {
+        return false;
+    }
+    g.glBindFramebuffer(GL_READ_FRAMEBUFFER, fbo);
+    GLint type = GL_NONE;
+    g.glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+    return type == GL_TEXTURE &&
+           g.glCheckFramebufferStatus(GL_READ_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+}  // namespace
+
+std::optional<ProbeSample> FrameRenderer::probe(const Camera& camera, int x, int y) const {
+    if (!initialized() || renderSize_.x < 1 || renderSize_.y < 1 || x < 0 || y < 0 ||
+        x >= renderSize_.x || y >= renderSize_.y) {
+        return std::nullopt;
+    }
+    auto& g = impl_->f();
+    const ReadFramebufferGuard guard(g);
+    if (!gbufferReadable(g, impl_->geometryFbo)) {
+        return std::nullopt;
+    }
+    ProbeSample sample;
+    g.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    g.glReadBuffer(GL_COLOR_ATTACHMENT2);
+    GLuint id = 0;
+    g.glReadPixels(x, y, 1, 1, GL_RED_INTEGER, GL_UNSIGNED_INT, &id);
+    g.glReadBuffer(GL_COLOR_ATTACHMENT0);
+    g.glReadPixels(x, y, 1, 1, GL_RED, GL_FLOAT, &sample.linearDepth);
+    g.glReadBuffer(GL_COLOR_ATTACHMENT3);
+    g.glReadPixels(x, y, 1, 1, GL_RED, GL_FLOAT, &sample.value);
+    checkGlError(g, "probing the G-buffer");
+    if (id == 0 || !std::isfinite(sample.linearDepth) || sample.linearDepth <= 0.0F) {
+        return std::nullopt;
+    }
+    sample.objectId = id;
+    // Pixel centre -> NDC -> view space at the linear depth d (z_view = -d).
+    const glm::mat4 projection = camera.projectionMatrix();
+    const float d = sample.linearDepth;
+    const float ndcX =
+        (static_cast<float>(x) + 0.5F) / static_cast<float>(renderSize_.x) * 2.0F - 1.0F;
+    const float ndcY =
+        (static_cast<float>(y) + 0.5F) / static_cast<float>(renderSize_.y) * 2.0F - 1.0F;
+    const float zView = -d;
+    // clip.x = P[0][0] x + P[2][0] z, clip.w = -z = d (glm: P[column][row]).
+    sample.viewPosition =
+        glm::vec3((ndcX * d - projection[2][0] * zView) / projection[0][0],
+                  (ndcY * d - projection[2][1] * zView) / projection[1][1], zView);
+    sample.worldPosition =
+        glm::vec3(glm::inverse(camera.viewMatrix()) * glm::vec4(sample.viewPosition, 1.0F));
+    return sample;
+}
+
+std::optional<std::pair<float, float>> FrameRenderer::visibleDepthRange() const {
+    if (!initialized() || renderSize_.x < 1 || renderSize_.y < 1) {
+        return std::nullopt;
+    }
+    auto& g = impl_->f();
+    const ReadFramebufferGuard guard(g);
+    if (!gbufferReadable(g, impl_->geometryFbo)) {
+        return std::nullopt;
+    }
+    GLint width = 0;
+    GLint height = 0;
+    // The attachment's own size (the render size of the frame that drew it).
+    GLint texture = 0;
+    g.glGetFramebufferAttachmentParameteriv(GL_READ_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                            GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &texture);
+    g.glBindTexture(GL_TEXTURE_2D, static_cast<GLuint>(texture));
+    g.glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_WIDTH, &width);
+    g.glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &height);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    if (width < 1 || height < 1) {
+        return std::nullopt;
+    }
+    std::vector<float> depth(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
+    g.glReadBuffer(GL_COLOR_ATTACHMENT0);
+    g.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    g.glReadPixels(0, 0, width, height, GL_RED, GL_FLOAT, depth.data());
+    checkGlError(g, "reading the visible depth range");
+    float lo = std::numeric_limits<float>::infinity();
+    float hi = -std::numeric_limits<float>::infinity();
+    for (const float v : depth) {
+        if (std::isfinite(v)) {
+            lo = std::min(lo, v);
+            hi = std::max(hi, v);
+        }
+    }
+    if (lo > hi) {
+        return std::nullopt;
+    }
+    return std::make_pair(lo, hi);
+}
+
+// --- end probe -------------------------------------------------------------
+
 }  // namespace vv::render

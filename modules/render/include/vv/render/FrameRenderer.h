@@ -115,6 +115,18 @@ struct SolveCounters {
     std::uint64_t cancelled = 0;  ///< running solves stopped by a newer request
 };
 
+// --- Probe (G-buffer read-back of single pixels) -------------------------
+/// What the last frame's G-buffer holds at one pixel (FrameRenderer::probe).
+struct ProbeSample {
+    std::uint32_t objectId = 0;  ///< 1 + the mesh's index in the scene (never 0 here)
+    float linearDepth = 0.0F;    ///< distance along the viewing axis, scene units, > 0
+    /// The shown array's value; NaN when no array is shown or the vertex has no data.
+    float value = 0.0F;
+    glm::vec3 viewPosition{0.0F};   ///< view space (the eye at the origin, looking down -z)
+    glm::vec3 worldPosition{0.0F};  ///< scene coordinates
+};
+// --- end probe -------------------------------------------------------------
+
 /// A content hash of a scene's geometry (positions and indices of every
 /// mesh), for the render graph's caching when a scene object is not kept.
 [[nodiscard]] std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept;
@@ -252,6 +264,22 @@ class FrameRenderer {
 
     /// Forgets every cached pass result and pooled texture (context current).
     void clearCache();
+
+    // --- Probe (G-buffer read-back of single pixels) ---------------------
+    /// Reads pixel (x, y) of the last frame's G-buffer: x, y in render-size
+    /// pixels (lastRenderSize()), row 0 at the BOTTOM (GL order). `camera`
+    /// must be the camera that frame was rendered with (its aspect and field
+    /// of view turn the depth into a position). Returns nullopt when no frame
+    /// was rendered yet, (x, y) is outside the render size, or no vessel
+    /// covers the pixel. Reads three texels (cheap enough per mouse move).
+    /// Context current; throws RenderError when GL fails.
+    [[nodiscard]] std::optional<ProbeSample> probe(const Camera& camera, int x, int y) const;
+    /// The visible vessels' linear depth range (min, max; scene units) in the
+    /// last frame's G-buffer, nullopt when no vessel is visible or no frame
+    /// was rendered. Reads the whole linear depth back (a few ms): cache the
+    /// result per frame. Context current; throws RenderError when GL fails.
+    [[nodiscard]] std::optional<std::pair<float, float>> visibleDepthRange() const;
+    // --- end probe -------------------------------------------------------
 
   private:
     struct Impl;

@@ -1,0 +1,42 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QList>
+#include <QPointF>
+#include <QWidget>
+#include <optional>
+
+#include "gui/ViewerWidget.h"
+
+namespace vv::gui {
+
+/// Marks the picked measurement points over the viewer: "A", "B", the line
+/// between them and the distance. A transparent child of the viewer that lets
+/// the mouse through and follows its size; the points are world positions,
+/// projected with the viewer's current camera at every repaint (call
+/// update() after a frame), so they stay on the vessels as the camera moves.
+/// Not part of the GL frame (grabFramebuffer() stays the frame alone).
+class MeasureOverlay : public QWidget {
+    Q_OBJECT
+
+  public:
+    explicit MeasureOverlay(ViewerWidget* viewer);
+
+    /// The points to mark (0, 1 or 2; more are ignored).
+    void setPoints(const QList<ProbeResult>& points);
+    [[nodiscard]] const QList<ProbeResult>& points() const noexcept { return points_; }
+
+    /// Where `point` appears in the viewer now (logical widget coordinates);
+    /// nullopt when it lies behind the camera.
+    [[nodiscard]] std::optional<QPointF> project(const ProbeResult& point) const;
+
+  protected:
+    void paintEvent(QPaintEvent* event) override;
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    ViewerWidget* viewer_;
+    QList<ProbeResult> points_;
+};
+
+}  // namespace vv::gui

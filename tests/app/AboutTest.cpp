@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Help > About names the versions of Qt, VTK, DCMTK and OpenCV; the German
+// translation reaches the main window's menus.
+#include <QAction>
+#include <QCoreApplication>
+#include <QMenuBar>
+#include <QRegularExpression>
+#include <QSettings>
+#include <QTranslator>
+
+#include "GuiFixture.h"
+#include "gui/Translations.h"
+#include "vv/io/Versions.h"
+#include "vv/vss/Versions.h"
+
+namespace vv::test {
+namespace {
+
+const QRegularExpression kVersion(QStringLiteral("^\\d+\\.\\d+"));
+
+TEST(LibraryVersions, ReportRealVersions) {
+    const auto versions = io::libraryVersions();
+    ASSERT_EQ(versions.size(), 2U);
+    EXPECT_EQ(versions[0].name, "VTK");
+    EXPECT_EQ(versions[1].name, "DCMTK");
+    for (const auto& v : versions) {
+        EXPECT_TRUE(kVersion.match(QString::fromStdString(v.version)).hasMatch())
+            << v.name << " " << v.version;
+    }
+    EXPECT_TRUE(kVersion.match(QString::fromStdString(vss::openCvVersion())).hasMatch())
+        << vss::openCvVersion();
+}
+
+TEST(Languages, CommandLineBeatsSettingsBeatsSystem) {
+    const fs::path file = panelTestDir() / "language.ini";
+    std::error_code ec;
+    fs::remove(file, ec);
+    QSettings settings(QString::fromStdString(file.string()), QSettings::IniFormat);
+    EXPECT_EQ(gui::chooseLanguage(QString(), settings), QString());  // the system's
+    settings.setValue(QLatin1String(gui::kLanguageKey), QStringLiteral("de"));
+    EXPECT_EQ(gui::chooseLanguage(QString(), settings), QStringLiteral("de"));
+    EXPECT_EQ(gui::chooseLanguage(QStringLiteral("en"), settings), QStringLiteral("en"));
+    EXPECT_TRUE(gui::availableLanguages().contains(QStringLiteral("en")));
+    EXPECT_EQ(gui::languageName(QStringLiteral("de")), QStringLiteral("Deutsch"));
+    EXPECT_EQ(gui::languageName(QStringLiteral("en")), QStringLiteral("English"));
+}
+
+class AboutTest : public GuiFixture {};
+
+TEST_F(AboutTest, AboutBoxNamesTheLibraries) {
+    const QString about = window_->aboutText();
+    EXPECT_TRUE(about.contains(QStringLiteral("Qt ") + QString::fromLatin1(qVersion())))
+        << about.toStdString();
+    for (const auto& v : io::libraryVersions()) {
+        EXPECT_TRUE(about.contains(QString::fromStdString(v.name + " " + v.version)))
+            << about.toStdString();
+    }
+    EXPECT_TRUE(
+        about.contains(QStringLiteral("OpenCV ") + QString::fromStdString(vss::openCvVersion())))
+        << about.toStdString();
+}
+
+TEST_F(AboutTest, GermanTranslationReachesTheMenus) {
+    QTranslator german;
+    ASSERT_TRUE(german.load(QStringLiteral("vesselview_de"), QStringLiteral(VV_QM_DIR)));
+    QCoreApplication::installTranslator(&german);
+    auto window = std::make_unique<gui::MainWindow>();
+    QStringList menus;
+    for (const QAction* action : window->menuBar()->actions()) {
+        menus << action->text();
+    }
+    const QString about = window->aboutText();
+    window.reset();
+    QCoreApplication::removeTranslator(&german);
+    EXPECT_TRUE(menus.contains(QStringLiteral("&Datei"))) << menus.join(' ').toStdString();
+    EXPECT_TRUE(menus.contains(QStringLiteral("&Ansicht"))) << menus.join(' ').toStdString();
+    EXPECT_TRUE(about.contains(QStringLiteral("Bibliotheken"))) << about.toStdString();
+}
+
+}  // namespace
+}  // namespace vv::test

@@ -1,0 +1,203 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The probe (object, value, depth under the mouse) and the two-point
+// measurement, on a tube of radius 2 along x (0..30) seen from +z: its front
+// line (y = 0, z = 2) is the nearest visible vessel point everywhere.
+#include <QAction>
+#include <QCoreApplication>
+#include <QHelpEvent>
+#include <QLabel>
+#include <QLineF>
+#include <QMouseEvent>
+#include <QToolTip>
+#include <cmath>
+#include <optional>
+
+#include "GuiFixture.h"
+#include "gui/MeasureOverlay.h"
+
+namespace vv::test {
+namespace {
+
+/// Sends a mouse event of `type` at `position` (logical widget coordinates).
+void sendMouse(QWidget* widget, QEvent::Type type, const QPointF& position, Qt::MouseButton button,
+               Qt::KeyboardModifiers modifiers) {
+    const Qt::MouseButtons buttons =
+        type == QEvent::MouseButtonPress ? Qt::MouseButtons(button) : Qt::MouseButtons();
+    QMouseEvent event(type, position, widget->mapToGlobal(position), button, buttons, modifiers);
+    QCoreApplication::sendEvent(widget, &event);
+}
+
+void click(QWidget* widget, const QPointF& position, Qt::KeyboardModifiers modifiers = {}) {
+    sendMouse(widget, QEvent::MouseButtonPress, position, Qt::LeftButton, modifiers);
+    sendMouse(widget, QEvent::MouseButtonRelease, position, Qt::LeftButton, modifiers);
+}
+
+class ProbeTest : public GuiFixture {
+  protected:
+    /// Shows the tube (VSS off: not needed here) and waits for a frame at full size.
+    bool showTube() {
+        window_->vssToggle()->setChecked(false);
+        window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+        if (!waitForFrames(1)) {
+            return false;
+        }
+        auto* viewer = window_->viewer();
+        // A settled frame: rendered at the full size.
+        return waitUntil([&] {
+            const QSize device = viewer->size() * viewer->devicePixelRatioF();
+            return !viewer->cameraMoving() && viewer->lastRenderSize() == device;
+        });
+    }
+
+    /// The widget's centre row at fraction `fx` of its width.
+    [[nodiscard]] QPointF onAxis(double fx) const {
+        const auto* viewer = window_->viewer();
+        return {fx * viewer->width(), 0.5 * viewer->height()};
+    }
+};
+
+TEST_F(ProbeTest, ProbeGivesObjectValueUnitAndDepth) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    ASSERT_EQ(viewer->style().array, "wss");
+
+    const auto centre = viewer->probeAt(onAxis(0.5));
+    ASSERT_TRUE(centre.has_value()) << "no vessel at the centre of the view";
+    EXPECT_EQ(centre->meshIndex, 0);
+    EXPECT_EQ(centre->objectName, QStringLiteral("tube"));
+    EXPECT_EQ(centre->arrayName, QStringLiteral("wss"));
+    EXPECT_EQ(centre->unit, QStringLiteral("Pa"));
+    // wss = ring index = x (the tube is 30 long with 30 rings).
+    EXPECT_NEAR(centre->value, centre->worldPosition.x, 0.6F);
+    EXPECT_NEAR(centre->worldPosition.x, 15.0F, 1.0F);
+    EXPECT_NEAR(centre->worldPosition.y, 0.0F, 0.15F);
+    EXPECT_NEAR(centre->worldPosition.z, 2.0F, 0.1F);
+    EXPECT_NEAR(centre->depthBelowNearest, 0.0F, 0.1F);
+    EXPECT_GT(centre->linearDepth, 0.0F);
+
+    // Off-axis, towards the silhouette: deeper by 2 - z (a circle of radius 2).
+    bool sawDeeper = false;
+    for (int dy = 4; dy < viewer->height() / 2; dy += 4) {
+        const auto p = viewer->probeAt(QPointF(0.5 * viewer->width(), 0.5 * viewer->height() - dy));
+        if (!p) {
+            break;
+        }
+        EXPECT_NEAR(p->depthBelowNearest, 2.0F - p->worldPosition.z, 0.12F) << "dy " << dy;
+        EXPECT_NEAR(std::hypot(p->worldPosition.y, p->worldPosition.z), 2.0F, 0.1F);
+        sawDeeper = sawDeeper || p->depthBelowNearest > 0.5F;
+    }
+    EXPECT_TRUE(sawDeeper) << "the probe never reached the tube's flank";
+
+    // The background: nothing. Outside the widget: nothing.
+    EXPECT_FALSE(viewer->probeAt(QPointF(0.5 * viewer->width(), 2.0)).has_value());
+    EXPECT_FALSE(viewer->probeAt(QPointF(-5.0, -5.0)).has_value());
+
+    const QString text = gui::ViewerWidget::probeText(*centre);
+    EXPECT_TRUE(text.contains(QStringLiteral("tube"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral(" Pa"))) << text.toStdString();
+    EXPECT_TRUE(text.contains(QStringLiteral("mm"))) << text.toStdString();
+}
+
+TEST_F(ProbeTest, NoArrayMeansNoValue) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    render::MeshStyle style = viewer->style();
+    style.array.clear();
+    viewer->setStyle(style);
+    const quint64 before = viewer->framesWithScene();
+    ASSERT_TRUE(waitForFrames(before + 1));
+    const auto p = viewer->probeAt(onAxis(0.5));
+    ASSERT_TRUE(p.has_value());
+    EXPECT_TRUE(std::isnan(p->value));
+    EXPECT_TRUE(p->arrayName.isEmpty());
+    EXPECT_FALSE(gui::ViewerWidget::probeText(*p).contains(QStringLiteral("Pa")));
+}
+
+TEST_F(ProbeTest, HoverShowsTooltip) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    ASSERT_TRUE(viewer->hoverProbe());
+    QToolTip::hideText();
+    sendMouse(viewer, QEvent::MouseMove, onAxis(0.5), Qt::NoButton, {});
+    EXPECT_TRUE(waitUntil(
+        [] { return QToolTip::isVisible() && QToolTip::text().contains(QStringLiteral("tube")); },
+        5000))
+        << "tooltip: " << QToolTip::text().toStdString();
+    QToolTip::hideText();
+
+    // Qt's own tooltip event: over a vessel the probe, not the mouse help.
+    const QPoint at = onAxis(0.5).toPoint();
+    QHelpEvent help(QEvent::ToolTip, at, viewer->mapToGlobal(at));
+    QCoreApplication::sendEvent(viewer, &help);
+    EXPECT_TRUE(QToolTip::text().contains(QStringLiteral("tube")))
+        << QToolTip::text().toStdString();
+    QToolTip::hideText();
+}
+
+TEST_F(ProbeTest, TwoClickedPointsGiveDistanceAndDepthDifference) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    struct {
+        int n = 0;
+        [[nodiscard]] int count() const { return n; }
+    } picked;
+    QObject::connect(viewer, &gui::ViewerWidget::pointPicked, window_.get(),
+                     [&picked] { ++picked.n; });
+
+    // A plain click does not pick; Ctrl + click does.
+    click(viewer, onAxis(0.3));
+    EXPECT_EQ(picked.count(), 0);
+    click(viewer, onAxis(0.3), Qt::ControlModifier);
+    ASSERT_EQ(picked.count(), 1);
+    ASSERT_EQ(window_->measurePoints().size(), 1);
+
+    // In measure mode a plain click picks the second point.
+    window_->measureToggle()->setChecked(true);
+    click(viewer, onAxis(0.7));
+    ASSERT_EQ(picked.count(), 2);
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    const auto& a = window_->measurePoints()[0];
+    const auto& b = window_->measurePoints()[1];
+    const gui::Measurement m = gui::measure(a, b);
+    // Both on the front line: the distance is their x difference, no depth difference.
+    EXPECT_GT(b.worldPosition.x - a.worldPosition.x, 4.0F);
+    EXPECT_NEAR(m.distance, b.worldPosition.x - a.worldPosition.x, 0.2F);
+    EXPECT_NEAR(m.depthDifference, 0.0F, 0.1F);
+    // The markers sit where the points were clicked (the probe's world
+    // position projected back with the camera).
+    const auto* overlay = window_->measureOverlay();
+    EXPECT_TRUE(overlay->isVisible());
+    ASSERT_EQ(overlay->points().size(), 2);
+    const auto markA = overlay->project(a);
+    const auto markB = overlay->project(b);
+    ASSERT_TRUE(markA && markB);
+    EXPECT_LT(QLineF(*markA, onAxis(0.3)).length(), 2.0);
+    EXPECT_LT(QLineF(*markB, onAxis(0.7)).length(), 2.0);
+    const QString label = window_->measureLabel()->text();
+    EXPECT_TRUE(label.contains(QString::number(static_cast<double>(m.distance), 'f', 1)))
+        << label.toStdString();
+
+    // A third click starts a new measurement; the background is no pick.
+    click(viewer, QPointF(viewer->width() / 2.0, 2.0));
+    EXPECT_EQ(picked.count(), 2);
+    click(viewer, onAxis(0.5));
+    EXPECT_EQ(window_->measurePoints().size(), 1);
+    window_->measureToggle()->setChecked(false);
+    EXPECT_TRUE(window_->measurePoints().isEmpty());
+    EXPECT_FALSE(window_->measureOverlay()->isVisible());
+}
+
+TEST_F(ProbeTest, MeasureOfKnownPoints) {
+    gui::ProbeResult a;
+    gui::ProbeResult b;
+    a.worldPosition = glm::vec3(1.0F, 2.0F, 3.0F);
+    b.worldPosition = glm::vec3(4.0F, 6.0F, 3.0F);
+    a.linearDepth = 10.0F;
+    b.linearDepth = 7.5F;
+    const gui::Measurement m = gui::measure(a, b);
+    EXPECT_FLOAT_EQ(m.distance, 5.0F);
+    EXPECT_FLOAT_EQ(m.depthDifference, -2.5F);
+}
+
+}  // namespace
+}  // namespace vv::test

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Saved sessions (.vvs): JSON round trip, the version-0 converter, clear
+// errors for bad files (never a crash), and save -> load giving the same image.
+#include <QAction>
+#include <QByteArray>
+#include <QFile>
+#include <QMessageBox>
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "GuiFixture.h"
+#include "gui/Session.h"
+#include "vv/core/Error.h"
+
+namespace vv::test {
+namespace {
+
+fs::path sessionDir() {
+    const fs::path dir = panelTestDir() / "sessions";
+    fs::create_directories(dir);
+    return dir;
+}
+
+fs::path writeText(const std::string& name, const QByteArray& text) {
+    const fs::path path = sessionDir() / name;
+    QFile f(QString::fromStdString(path.string()));
+    EXPECT_TRUE(f.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    f.write(text);
+    return path;
+}
+
+gui::Session sampleSession() {
+    gui::Session s;
+    s.files = {QStringLiteral("/data/a.vtp"), QStringLiteral("/data/b.stl")};
+    s.cameraTarget = glm::vec3(1.5F, -2.0F, 3.25F);
+    s.cameraDistance = 42.0F;
+    s.cameraRotation = glm::normalize(glm::quat(0.9F, 0.1F, -0.3F, 0.2F));
+    s.fieldOfView = 40.0F;
+    s.vss.enabled = false;
+    s.vss.scale = colormaps::DepthScale::DarkMeansDeep;
+    s.vss.solver.kind = vss::SolverKind::Step;
+    s.vss.solver.p = 5.5;
+    s.vss.solver.step = 4;
+    s.vss.solver.tolerance = 0.01;
+    s.vss.isoLines = 3;
+    s.vss.isoLineStrength = 0.25F;
+    s.vss.lighting = 0.5F;
+    s.ao.enabled = false;
+    s.ao.radius = 6.0F;
+    s.ao.strength = 0.4F;
+    s.cue.cue = render::VesselCue::Fog;
+    s.cue.fogStrength = 0.3F;
+    s.style.array = "pressure";
+    s.style.colorMap = colormaps::ColorMap::Cividis;
+    s.style.bins = 7;
+    s.style.range = std::make_pair(-1.5F, 20.0F);
+    s.style.vesselColor = glm::vec3(0.25F, 0.5F, 0.75F);
+    s.background = glm::vec3(1.0F, 1.0F, 1.0F);
+    s.legends = false;
+    s.layout = QByteArray("layout bytes");
+    return s;
+}
+
+void expectSame(const gui::Session& a, const gui::Session& b) {
+    EXPECT_EQ(a.files, b.files);
+    EXPECT_EQ(a.cameraTarget, b.cameraTarget);
+    EXPECT_FLOAT_EQ(a.cameraDistance, b.cameraDistance);
+    EXPECT_NEAR(glm::dot(a.cameraRotation, b.cameraRotation), 1.0F, 1e-6F);
+    EXPECT_FLOAT_EQ(a.fieldOfView, b.fieldOfView);
+    EXPECT_EQ(a.vss.enabled, b.vss.enabled);
+    EXPECT_EQ(a.vss.scale, b.vss.scale);
+    EXPECT_EQ(a.vss.solver.kind, b.vss.solver.kind);
+    EXPECT_DOUBLE_EQ(a.vss.solver.p, b.vss.solver.p);
+    EXPECT_EQ(a.vss.solver.step, b.vss.solver.step);
+    EXPECT_DOUBLE_EQ(a.vss.solver.tolerance, b.vss.solver.tolerance);
+    EXPECT_EQ(a.vss.isoLines, b.vss.isoLines);
+    EXPECT_FLOAT_EQ(a.vss.isoLineStrength, b.vss.isoLineStrength);
+    EXPECT_FLOAT_EQ(a.vss.lighting, b.vss.lighting);
+    EXPECT_EQ(a.ao.enabled, b.ao.enabled);
+    EXPECT_FLOAT_EQ(a.ao.radius, b.ao.radius);
+    EXPECT_FLOAT_EQ(a.ao.strength, b.ao.strength);
+    EXPECT_EQ(a.cue.cue, b.cue.cue);
+    EXPECT_FLOAT_EQ(a.cue.fogStrength, b.cue.fogStrength);
+    EXPECT_EQ(a.style.array, b.style.array);
+    EXPECT_EQ(a.style.colorMap, b.style.colorMap);
+    EXPECT_EQ(a.style.bins, b.style.bins);
+    EXPECT_EQ(a.style.range, b.style.range);
+    EXPECT_EQ(a.style.vesselColor, b.style.vesselColor);
+    EXPECT_EQ(a.background, b.background);
+    EXPECT_EQ(a.legends, b.legends);
+    EXPECT_EQ(a.layout, b.layout);
+}
+
+/// The session error for `json`: the FormatError's message ("" when none was thrown).
+std::string errorFor(const std::string& name, const QByteArray& json) {
+    const fs::path path = writeText(name, json);
+    try {
+        static_cast<void>(gui::loadSession(path));
+    } catch (const FormatError& e) {
+        EXPECT_EQ(e.file(), path);
+        EXPECT_NE(std::string(e.what()).find(name), std::string::npos) << e.what();
+        return e.problem();
+    }
+    return {};
+}
+
+/// The valid sample as JSON with `from` replaced by `to` (exactly once).
+QByteArray sampleWith(const QByteArray& from, const QByteArray& to) {
+    QByteArray json = gui::sessionToJson(sampleSession(), sessionDir() / "x.vvs");
+    EXPECT_EQ(json.count(from), 1) << from.toStdString();
+    return json.replace(from, to);
+}
+
+TEST(SessionFile, RoundTripKeepsEverything) {
+    const gui::Session s = sampleSession();
+    const fs::path path = sessionDir() / "round-trip.vvs";
+    gui::saveSession(path, s);
+    expectSame(gui::loadSession(path), s);
+    // Atomic write: no temporary file stays behind.
+    for (const auto& entry : fs::directory_iterator(sessionDir())) {
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    }
+    const QByteArray json = gui::sessionToJson(s, path);
+    EXPECT_TRUE(json.contains("\"version\": 1")) << json.toStdString();
+}
+
+TEST(SessionFile, RelativeFilesResolveAgainstTheSessionFolder) {
+    QByteArray json = sampleWith("\"/data/a.vtp\"", "\"meshes/a.vtp\"");
+    const gui::Session s = gui::sessionFromJson(json, sessionDir() / "rel.vvs");
+    EXPECT_EQ(s.files.front().toStdString(), (sessionDir() / "meshes" / "a.vtp").string());
+}
+
+TEST(SessionFile, VersionZeroIsConverted) {
+    // The prototype's layout: no version, flat settings with ViewSettings keys.
+    const QByteArray v0 = R"({
+        "files": ["tree.vtp"],
+        "camera": {"target": [1, 2, 3], "distance": 10, "rotation": [1, 0, 0, 0],
+                   "fieldOfView": 35},
+        "settings": {"vss": true, "depthScale": "dark-means-deep", "power": 3.5,
+                     "solver": "step", "step": 5, "isoLines": 4, "ao": false,
+                     "aoRadius": 2.5, "colorMap": "cividis", "bins": 6, "vesselCue": 3,
+                     "background": [0, 0, 0], "legends": false, "array": "wss"}
+    })";
+    const fs::path path = writeText("old-v0.vvs", v0);
+    const gui::Session s = gui::loadSession(path);
+    EXPECT_EQ(s.files.front().toStdString(), (sessionDir() / "tree.vtp").string());
+    EXPECT_FLOAT_EQ(s.cameraDistance, 10.0F);
+    EXPECT_FLOAT_EQ(s.fieldOfView, 35.0F);
+    EXPECT_EQ(s.vss.scale, colormaps::DepthScale::DarkMeansDeep);
+    EXPECT_DOUBLE_EQ(s.vss.solver.p, 3.5);
+    EXPECT_EQ(s.vss.solver.kind, vss::SolverKind::Step);
+    EXPECT_EQ(s.vss.solver.step, 5);
+    EXPECT_EQ(s.vss.isoLines, 4);
+    EXPECT_FALSE(s.ao.enabled);
+    EXPECT_FLOAT_EQ(s.ao.radius, 2.5F);
+    EXPECT_EQ(s.style.colorMap, colormaps::ColorMap::Cividis);
+    EXPECT_EQ(s.style.bins, 6);
+    EXPECT_EQ(s.cue.cue, render::allVesselCues()[3]);
+    EXPECT_EQ(s.background, glm::vec3(0.0F));
+    EXPECT_FALSE(s.legends);
+    EXPECT_EQ(s.style.array, "wss");
+    // Keys version 0 did not have take today's defaults.
+    EXPECT_FLOAT_EQ(s.vss.opacity, render::VssSettings{}.opacity);
+    EXPECT_FLOAT_EQ(s.ao.strength, render::AoSettings{}.strength);
+    // A bad value in a version-0 file is reported under its converted name.
+    const std::string problem =
+        errorFor("old-v0-bad.vvs", QByteArray(v0).replace("\"power\": 3.5", "\"power\": \"x\""));
+    EXPECT_NE(problem.find("view.vss.p"), std::string::npos) << problem;
+}
+
+TEST(SessionFile, BadFilesGiveClearErrors) {
+    const QByteArray good = gui::sessionToJson(sampleSession(), sessionDir() / "x.vvs");
+    struct Case {
+        const char* name;
+        QByteArray json;
+        const char* expected;  ///< part of the message
+    };
+    const Case cases[] = {
+        {"empty.vvs", "", "JSON"},
+        {"truncated.vvs", good.left(good.size() / 2), "JSON"},
+        {"array.vvs", "[1, 2]", "not an object"},
+        {"future.vvs", sampleWith("\"version\": 1", "\"version\": 99"), "newer"},
+        {"no-version.vvs", sampleWith("\"version\": 1,", ""), "'version' is missing"},
+        {"version-text.vvs", sampleWith("\"version\": 1", "\"version\": \"1\""), "'version'"},
+        {"wrong-format.vvs", sampleWith("\"vesselview-session\"", "\"other\""), "'format'"},
+        {"no-camera.vvs", sampleWith("\"camera\"", "\"kamera\""), "'camera' is missing"},
+        {"distance-text.vvs", sampleWith("\"distance\": 42", "\"distance\": \"far\""),
+         "'camera.distance' must be a number"},
+        {"distance-negative.vvs", sampleWith("\"distance\": 42", "\"distance\": -1"),
+         "'camera.distance'"},
+        {"nan.vvs", sampleWith("\"distance\": 42", "\"distance\": NaN"), "JSON"},
+        {"infinite.vvs", sampleWith("\"distance\": 42", "\"distance\": 1e999"), "JSON"},
+        {"p-range.vvs", sampleWith("\"p\": 5.5", "\"p\": 100"), "'view.vss.p'"},
+        {"scale-name.vvs", sampleWith("\"dark-means-deep\"", "\"rainbow\""), "view.vss.scale"},
+        {"solver-name.vvs", sampleWith("\"solver\": \"step\"", "\"solver\": \"magic\""),
+         "view.vss.solver"},
+        {"cue-name.vvs", sampleWith("\"cue\": \"fog\"", "\"cue\": \"smoke\""), "view.cue.cue"},
+        {"bins.vvs", sampleWith("\"bins\": 7", "\"bins\": 2.5"), "whole number"},
+        {"range.vvs", sampleWith("\"range\": [", "\"range\": [30, "), "view.style.range"},
+        {"files.vvs", sampleWith("\"files\": [", "\"files\": [3, "), "files[0]"},
+        {"legends.vvs", sampleWith("\"legends\": false", "\"legends\": 0"), "view.legends"},
+        {"colour.vvs", sampleWith("\"background\": [", "\"background\": [2, "), "view.background"},
+    };
+    for (const Case& c : cases) {
+        const std::string problem = errorFor(c.name, c.json);
+        EXPECT_NE(problem.find(c.expected), std::string::npos)
+            << c.name << ": got \"" << problem << "\", expected \"" << c.expected << "\"";
+    }
+    EXPECT_THROW(static_cast<void>(gui::loadSession(sessionDir() / "does-not-exist.vvs")), IoError);
+    EXPECT_THROW(gui::saveSession(sessionDir() / "no-such-dir" / "s.vvs", sampleSession()),
+                 IoError);
+}
+
+class SessionTest : public GuiFixture {};
+
+TEST_F(SessionTest, BadSessionShowsErrorAndKeepsTheView) {
+    const fs::path path = writeText("broken.vvs", "{\"version\": 1, \"files\": [");
+    const double p = window_->viewer()->vssSettings().solver.p;
+    EXPECT_FALSE(window_->openSession(QString::fromStdString(path.string())));
+    EXPECT_TRUE(window_->lastError().contains(QStringLiteral("broken.vvs")))
+        << window_->lastError().toStdString();
+    EXPECT_DOUBLE_EQ(window_->viewer()->vssSettings().solver.p, p);
+    auto* box = window_->findChild<QMessageBox*>(QStringLiteral("errorMessageBox"));
+    ASSERT_NE(box, nullptr);
+    box->close();
+}
+
+TEST_F(SessionTest, SaveThenOpenGivesTheSameImage) {
+    window_->openFiles({QStringLiteral(VV_DEMO_VTP)});
+    ASSERT_TRUE(waitUntil([&] { return window_->viewer()->scene() != nullptr; }, 60000));
+    ASSERT_TRUE(waitForFrames(1));
+    auto* viewer = window_->viewer();
+    // A view unlike the defaults: camera turned and moved, settings changed.
+    render::Camera camera = viewer->camera();
+    camera.rotateView(0.6F, glm::vec3(0.0F, 1.0F, 0.0F));
+    camera.zoom(1.4F);
+    viewer->setCamera(camera);
+    render::VssSettings vss = viewer->vssSettings();
+    vss.scale = colormaps::DepthScale::PseudoChromadepth;
+    vss.solver.p = 4.0;
+    vss.isoLines = 5;
+    viewer->setVssSettings(vss);
+    render::MeshStyle style = viewer->style();
+    style.colorMap = colormaps::ColorMap::Inferno;
+    viewer->setStyle(style);
+    viewer->setVesselCue({render::VesselCue::Fog, 0.6F, 1.0F});
+    ASSERT_TRUE(waitForVss());
+    const QImage before = viewer->grabFramebuffer();
+
+    const render::Camera savedCamera = viewer->camera();
+    const QString path = QString::fromStdString((sessionDir() / "view.vvs").string());
+    ASSERT_TRUE(window_->saveSessionTo(path));
+    ASSERT_EQ(window_->shownFiles().size(), 1);
+
+    // A fresh window from the defaults, then the session.
+    window_ = std::make_unique<gui::MainWindow>();
+    window_->resize(1100, 700);
+    window_->show();
+    bool applied = false;
+    QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
+                     [&applied] { applied = true; });
+    ASSERT_TRUE(window_->openSession(path));
+    ASSERT_TRUE(waitUntil([&] { return applied; }, 60000)) << "the session was never applied";
+    viewer = window_->viewer();
+    EXPECT_EQ(viewer->vssSettings().scale, colormaps::DepthScale::PseudoChromadepth);
+    EXPECT_DOUBLE_EQ(viewer->vssSettings().solver.p, 4.0);
+    EXPECT_EQ(viewer->style().colorMap, colormaps::ColorMap::Inferno);
+    EXPECT_EQ(viewer->vesselCue().cue, render::VesselCue::Fog);
+    EXPECT_NEAR(viewer->camera().distance(), savedCamera.distance(),
+                1e-4F * savedCamera.distance());
+    EXPECT_NEAR(std::abs(glm::dot(viewer->camera().rotation(), savedCamera.rotation())), 1.0F,
+                1e-5F);
+    EXPECT_LT(glm::length(viewer->camera().target() - savedCamera.target()), 1e-3F);
+    ASSERT_TRUE(waitForVss());
+    // Frames follow the settings (and the exact VSS) asynchronously: poll.
+    QImage after;
+    waitUntil(
+        [&] {
+            after = viewer->grabFramebuffer();
+            return changedFraction(before, after) < 0.01;
+        },
+        30000);
+    ASSERT_EQ(after.size(), before.size());
+    const double changed = changedFraction(before, after);
+    EXPECT_LT(changed, 0.01) << "the reopened session looks different";
+    if (changed >= 0.01) {
+        before.save(QString::fromStdString((sessionDir() / "before.png").string()));
+        after.save(QString::fromStdString((sessionDir() / "after.png").string()));
+    }
+}
+
+}  // namespace
+}  // namespace vv::test

@@ -1,0 +1,1013 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="de" sourcelanguage="en">
+<context>
+    <name>main</name>
+    <message>
+        <source>Vessel tree workstation. Opens the given mesh files, or the demo.</source>
+        <translation>Arbeitsplatz für Gefäßbäume. Öffnet die angegebenen Netzdateien oder die Demo.</translation>
+    </message>
+    <message>
+        <source>Save the first frame with the data to &lt;png&gt; and quit.</source>
+        <translation>Das erste Bild mit den Daten als &lt;png&gt; speichern und beenden.</translation>
+    </message>
+    <message>
+        <source>User interface language, e.g. en or de (default: the system&apos;s).</source>
+        <translation>Sprache der Benutzeroberfläche, z. B. en oder de (Standard: die des Systems).</translation>
+    </message>
+    <message>
+        <source>Mesh files (STL, OBJ, PLY, VTK, VTP, VTU), or one session file (.vvs).</source>
+        <translation>Netzdateien (STL, OBJ, PLY, VTK, VTP, VTU) oder eine Sitzungsdatei (.vvs).</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::MainWindow</name>
+    <message>
+        <source>OpenGL 4.1 is not available</source>
+        <translation>OpenGL 4.1 ist nicht verfügbar</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Datei</translation>
+    </message>
+    <message>
+        <source>&amp;Open…</source>
+        <translation>Ö&amp;ffnen…</translation>
+    </message>
+    <message>
+        <source>Open vessel meshes</source>
+        <translation>Gefäßnetze öffnen</translation>
+    </message>
+    <message>
+        <source>Open &amp;Demo</source>
+        <translation>&amp;Demo öffnen</translation>
+    </message>
+    <message>
+        <source>Open &amp;Recent</source>
+        <translation>&amp;Zuletzt geöffnet</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Beenden</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Camera</source>
+        <translation>Kamera &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to Data</source>
+        <translation>An Daten an&amp;passen</translation>
+    </message>
+    <message>
+        <source>Show &amp;Legends</source>
+        <translation>&amp;Legenden anzeigen</translation>
+    </message>
+    <message>
+        <source>&amp;Measure Distance</source>
+        <translation>Abstand &amp;messen</translation>
+    </message>
+    <message>
+        <source>Click two points on the vessels: their distance and depth difference (Ctrl + click works without this mode)</source>
+        <translation>Zwei Punkte auf den Gefäßen anklicken: ihr Abstand und ihr Tiefenunterschied (Strg + Klick geht auch ohne diesen Modus)</translation>
+    </message>
+    <message>
+        <source>Measure: click a point on a vessel</source>
+        <translation>Messen: einen Punkt auf einem Gefäß anklicken</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Measurement</source>
+        <translation>Messung &amp;löschen</translation>
+    </message>
+    <message>
+        <source>&amp;Panels</source>
+        <translation>&amp;Seitenleisten</translation>
+    </message>
+    <message>
+        <source>&amp;Reset Layout</source>
+        <translation>Anordnung &amp;zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Reset to &amp;Defaults</source>
+        <translation>Auf &amp;Standardwerte zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Display settings and panel layout as in a fresh installation</source>
+        <translation>Darstellungseinstellungen und Anordnung der Seitenleisten wie nach einer Neuinstallation</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>The language changes when VesselView starts again.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von VesselView.</translation>
+    </message>
+    <message>
+        <source>System Default</source>
+        <translation>Systemstandard</translation>
+    </message>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Hilfe</translation>
+    </message>
+    <message>
+        <source>&amp;Keyboard Shortcuts</source>
+        <translation>&amp;Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>&amp;About VesselView</source>
+        <translation>&amp;Über VesselView</translation>
+    </message>
+    <message>
+        <source>Void Space Surface</source>
+        <translation>Void Space Surface</translation>
+    </message>
+    <message>
+        <source>Functional parameters</source>
+        <translation>Funktionelle Parameter</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Darstellung</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <source>VSS</source>
+        <translation>VSS</translation>
+    </message>
+    <message>
+        <source>Void Space Surface: a depth-coded surface in the space between the vessels</source>
+        <translation>Void Space Surface: eine tiefenkodierte Fläche im Raum zwischen den Gefäßen</translation>
+    </message>
+    <message>
+        <source>AO</source>
+        <translation>AO</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion: shade the surface next to the vessels</source>
+        <translation>Umgebungsverdeckung (Ambient Occlusion): die Fläche neben den Gefäßen abschatten</translation>
+    </message>
+    <message>
+        <source>Colour-blind safe</source>
+        <translation>Farbenblind-Modus</translation>
+    </message>
+    <message>
+        <source>Colour-blind-safe mode (%1): dark-means-deep on the VSS, cividis on the vessels, no red/green depth cue</source>
+        <translation>Modus für Farbfehlsichtige (%1): „Dunkel bedeutet tief“ auf der VSS, Cividis auf den Gefäßen, kein rot-grüner Tiefenhinweis</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <source>left drag</source>
+        <translation>Ziehen mit linker Maustaste</translation>
+    </message>
+    <message>
+        <source>Pan</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>right or middle drag, Shift + left drag</source>
+        <translation>Ziehen mit rechter oder mittlerer Maustaste, Umschalt + Ziehen mit linker Maustaste</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>Zoomen</translation>
+    </message>
+    <message>
+        <source>mouse wheel</source>
+        <translation>Mausrad</translation>
+    </message>
+    <message>
+        <source>Keyboard Shortcuts</source>
+        <translation>Tastenkürzel</translation>
+    </message>
+    <message>
+        <source>Ready</source>
+        <translation>Bereit</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <source>Measure: no vessel under the mouse</source>
+        <translation>Messen: kein Gefäß unter dem Mauszeiger</translation>
+    </message>
+    <message>
+        <source>Meshes (%1)</source>
+        <translation>Netze (%1)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n files</source>
+        <translation>
+            <numerusform>%n Datei</numerusform>
+            <numerusform>%n Dateien</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>demo vessel tree</source>
+        <translation>Demo-Gefäßbaum</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>Cannot open</source>
+        <translation>Öffnen nicht möglich</translation>
+    </message>
+    <message>
+        <source>Cancelled</source>
+        <translation>Abgebrochen</translation>
+    </message>
+    <message>
+        <source>loading was cancelled</source>
+        <translation>das Laden wurde abgebrochen</translation>
+    </message>
+    <message>
+        <source>1 mesh</source>
+        <translation>1 Netz</translation>
+    </message>
+    <message>
+        <source>%1 meshes</source>
+        <translation>%1 Netze</translation>
+    </message>
+    <message>
+        <source>%1: %2, %3 triangles</source>
+        <translation>%1: %2, %3 Dreiecke</translation>
+    </message>
+    <message>
+        <source>object %1</source>
+        <translation>Objekt %1</translation>
+    </message>
+    <message>
+        <source>Measure: A on %1, %2 mm deep; click a second point</source>
+        <translation>Messen: A auf %1, %2 mm tief; einen zweiten Punkt anklicken</translation>
+    </message>
+    <message>
+        <source>same depth</source>
+        <translation>gleiche Tiefe</translation>
+    </message>
+    <message>
+        <source>B deeper by %1 mm</source>
+        <translation>B um %1 mm tiefer</translation>
+    </message>
+    <message>
+        <source>A deeper by %1 mm</source>
+        <translation>A um %1 mm tiefer</translation>
+    </message>
+    <message>
+        <source>Distance A–B: %1 mm; %2</source>
+        <translation>Abstand A–B: %1 mm; %2</translation>
+    </message>
+    <message>
+        <source>%1: no data</source>
+        <translation>%1: keine Daten</translation>
+    </message>
+    <message>
+        <source>%1: %2 – %3</source>
+        <translation>%1: %2 – %3</translation>
+    </message>
+    <message>
+        <source>&amp;Clear Recent Files</source>
+        <translation>Liste &amp;leeren</translation>
+    </message>
+    <message>
+        <source>timed out waiting for the data to be shown</source>
+        <translation>Zeitüberschreitung beim Warten auf die Anzeige der Daten</translation>
+    </message>
+    <message>
+        <source>VSS: solving…</source>
+        <translation>VSS: wird berechnet…</translation>
+    </message>
+    <message>
+        <source>VSS: none</source>
+        <translation>VSS: keine</translation>
+    </message>
+    <message>
+        <source>VSS: preview</source>
+        <translation>VSS: Vorschau</translation>
+    </message>
+    <message>
+        <source>VSS: exact, %1 ms</source>
+        <translation>VSS: exakt, %1 ms</translation>
+    </message>
+    <message>
+        <source>the viewer&apos;s frame could not be read</source>
+        <translation>das Bild der Ansicht konnte nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>saved %1 (%2 x %3)</source>
+        <translation>%1 gespeichert (%2 x %3)</translation>
+    </message>
+    <message>
+        <source>not initialised</source>
+        <translation>nicht initialisiert</translation>
+    </message>
+    <message>
+        <source>About VesselView</source>
+        <translation>Über VesselView</translation>
+    </message>
+    <message>
+        <source>Open &amp;Session…</source>
+        <translation>&amp;Sitzung öffnen…</translation>
+    </message>
+    <message>
+        <source>Open session</source>
+        <translation>Sitzung öffnen</translation>
+    </message>
+    <message>
+        <source>VesselView sessions (*.vvs)</source>
+        <translation>VesselView-Sitzungen (*.vvs)</translation>
+    </message>
+    <message>
+        <source>Save Session &amp;As…</source>
+        <translation>Sitzung speichern &amp;unter…</translation>
+    </message>
+    <message>
+        <source>Save session</source>
+        <translation>Sitzung speichern</translation>
+    </message>
+    <message>
+        <source>Cannot save the session</source>
+        <translation>Die Sitzung kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Session saved to %1</source>
+        <translation>Sitzung gespeichert unter %1</translation>
+    </message>
+    <message>
+        <source>Cannot open the session</source>
+        <translation>Die Sitzung kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>built with %1</source>
+        <translation>erstellt mit %1</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;VesselView %1&lt;/h3&gt;&lt;p&gt;A workstation for vessel trees: meshes with wall shear stress, pressure and other parameters on the vessel wall, and Void Space Surfaces.&lt;/p&gt;&lt;p&gt;OpenGL: %2&lt;/p&gt;&lt;p&gt;Libraries: %3&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;VesselView %1&lt;/h3&gt;&lt;p&gt;Ein Arbeitsplatz für Gefäßbäume: Oberflächennetze mit Wandschubspannung, Druck und weiteren Parametern auf der Gefäßwand sowie Void Space Surfaces.&lt;/p&gt;&lt;p&gt;OpenGL: %2&lt;/p&gt;&lt;p&gt;Bibliotheken: %3&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder neuer.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Pick a point to measure</source>
+        <translation>Einen Messpunkt wählen</translation>
+    </message>
+    <message>
+        <source>Ctrl + click (any click in Measure mode)</source>
+        <translation>Strg + Klick (im Messmodus jeder Klick)</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::MeasureOverlay</name>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::MeshLoadTask</name>
+    <message>
+        <source>Generating the demo vessel tree</source>
+        <translation>Demo-Gefäßbaum wird erzeugt</translation>
+    </message>
+    <message>
+        <source>Loading %1</source>
+        <translation>%1 wird geladen</translation>
+    </message>
+    <message numerus="yes">
+        <source>Loading %n file(s)</source>
+        <translation>
+            <numerusform>%n Datei wird geladen</numerusform>
+            <numerusform>%n Dateien werden geladen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>unexpected error: %1</source>
+        <translation>unerwarteter Fehler: %1</translation>
+    </message>
+    <message>
+        <source>unexpected error</source>
+        <translation>unerwarteter Fehler</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::ViewerWidget</name>
+    <message>
+        <source>No OpenGL context can be created here (platform &apos;%1&apos;). VesselView needs OpenGL 4.1 (core profile): update the graphics driver, or run with Mesa&apos;s software renderer (LIBGL_ALWAYS_SOFTWARE=1).</source>
+        <translation>Hier lässt sich kein OpenGL-Kontext erzeugen (Plattform „%1“). VesselView benötigt OpenGL 4.1 (Core Profile): Grafiktreiber aktualisieren oder mit dem Software-Renderer von Mesa starten (LIBGL_ALWAYS_SOFTWARE=1).</translation>
+    </message>
+    <message>
+        <source>VesselView needs OpenGL 4.1 (core profile); this system offers %1 %2.%3. Update the graphics driver, or run with Mesa&apos;s software renderer (LIBGL_ALWAYS_SOFTWARE=1).</source>
+        <translation>VesselView benötigt OpenGL 4.1 (Core Profile); dieses System bietet %1 %2.%3. Grafiktreiber aktualisieren oder mit dem Software-Renderer von Mesa starten (LIBGL_ALWAYS_SOFTWARE=1).</translation>
+    </message>
+    <message>
+        <source>OpenGL could not be initialised: VesselView needs OpenGL 4.1 (core profile). Update the graphics driver, or run with Mesa&apos;s software renderer (LIBGL_ALWAYS_SOFTWARE=1).</source>
+        <translation>OpenGL konnte nicht initialisiert werden: VesselView benötigt OpenGL 4.1 (Core Profile). Grafiktreiber aktualisieren oder mit dem Software-Renderer von Mesa starten (LIBGL_ALWAYS_SOFTWARE=1).</translation>
+    </message>
+    <message>
+        <source>OpenGL could not be initialised: no valid OpenGL context.</source>
+        <translation>OpenGL konnte nicht initialisiert werden: kein gültiger OpenGL-Kontext.</translation>
+    </message>
+    <message>
+        <source>VesselView needs OpenGL 4.1 (core profile); this system offers OpenGL %1.%2.
+
+%3
+
+Update the graphics driver, or run with Mesa&apos;s software renderer (LIBGL_ALWAYS_SOFTWARE=1).</source>
+        <translation>VesselView benötigt OpenGL 4.1 (Core Profile); dieses System bietet OpenGL %1.%2.
+
+%3
+
+Grafiktreiber aktualisieren oder mit dem Software-Renderer von Mesa starten (LIBGL_ALWAYS_SOFTWARE=1).</translation>
+    </message>
+    <message>
+        <source>OpenGL is not available.</source>
+        <translation>OpenGL ist nicht verfügbar.</translation>
+    </message>
+    <message>
+        <source>Drawing failed: %1</source>
+        <translation>Zeichnen fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Object %1</source>
+        <translation>Objekt %1</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>keine Daten</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+    <message>
+        <source>%1: %2 %3</source>
+        <translation>%1: %2 %3</translation>
+    </message>
+    <message>
+        <source>Depth: %1 mm behind the nearest vessel point</source>
+        <translation>Tiefe: %1 mm hinter dem nächstgelegenen Gefäßpunkt</translation>
+    </message>
+    <message>
+        <source>Left-drag: rotate · Right/middle or Shift+left-drag: pan · Wheel: zoom
+R: reset view · F: fit to data · Ctrl+click: measure</source>
+        <translation>Ziehen links: drehen · Ziehen rechts/Mitte oder Umschalt+links: verschieben · Mausrad: zoomen
+R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::DataPanel</name>
+    <message>
+        <source>Object / array</source>
+        <translation>Objekt / Datenfeld</translation>
+    </message>
+    <message>
+        <source>Vertices</source>
+        <translation>Eckpunkte</translation>
+    </message>
+    <message>
+        <source>Triangles</source>
+        <translation>Dreiecke</translation>
+    </message>
+    <message>
+        <source>No data loaded</source>
+        <translation>Keine Daten geladen</translation>
+    </message>
+    <message>
+        <source>Generated</source>
+        <translation>Erzeugt</translation>
+    </message>
+    <message>
+        <source>Every mesh of a scene is drawn; hiding single meshes is not supported yet</source>
+        <translation>Jedes Netz einer Szene wird gezeichnet; einzelne Netze auszublenden wird noch nicht unterstützt</translation>
+    </message>
+    <message>
+        <source>%1 – %2</source>
+        <translation>%1 – %2</translation>
+    </message>
+    <message>
+        <source>no data</source>
+        <translation>keine Daten</translation>
+    </message>
+    <message>
+        <source>Point array (range of its finite values)</source>
+        <translation>Punktdatenfeld (Bereich seiner endlichen Werte)</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::DisplayPanel</name>
+    <message>
+        <source>Dark grey</source>
+        <translation>Dunkelgrau</translation>
+    </message>
+    <message>
+        <source>Black</source>
+        <translation>Schwarz</translation>
+    </message>
+    <message>
+        <source>Mid grey</source>
+        <translation>Mittelgrau</translation>
+    </message>
+    <message>
+        <source>White</source>
+        <translation>Weiß</translation>
+    </message>
+    <message>
+        <source>A depth cue on the vessels themselves, for comparison with the VSS</source>
+        <translation>Ein Tiefenhinweis auf den Gefäßen selbst, zum Vergleich mit der VSS</translation>
+    </message>
+    <message>
+        <source>Vessel cue:</source>
+        <translation>Gefäß-Tiefenhinweis:</translation>
+    </message>
+    <message>
+        <source>Fog strength:</source>
+        <translation>Nebelstärke:</translation>
+    </message>
+    <message>
+        <source>Fresnel exponent:</source>
+        <translation>Fresnel-Exponent:</translation>
+    </message>
+    <message>
+        <source>Colour behind the vessels and the VSS</source>
+        <translation>Farbe hinter den Gefäßen und der VSS</translation>
+    </message>
+    <message>
+        <source>Custom…</source>
+        <translation>Benutzerdefiniert…</translation>
+    </message>
+    <message>
+        <source>Background:</source>
+        <translation>Hintergrund:</translation>
+    </message>
+    <message>
+        <source>Vessel colour:</source>
+        <translation>Gefäßfarbe:</translation>
+    </message>
+    <message>
+        <source>Camera:</source>
+        <translation>Kamera:</translation>
+    </message>
+    <message>
+        <source>Show legends</source>
+        <translation>Legenden anzeigen</translation>
+    </message>
+    <message>
+        <source>Depth and parameter legends over the view</source>
+        <translation>Tiefen- und Parameterlegenden über der Ansicht</translation>
+    </message>
+    <message>
+        <source>Performance overlay</source>
+        <translation>Leistungsanzeige</translation>
+    </message>
+    <message>
+        <source>The last frame&apos;s render passes and their CPU time in ms</source>
+        <translation>Die Render-Durchläufe des letzten Bildes und ihre CPU-Zeit in ms</translation>
+    </message>
+    <message>
+        <source>Far</source>
+        <translation>Fern</translation>
+    </message>
+    <message>
+        <source>Medium</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Nah</translation>
+    </message>
+    <message>
+        <source>Anterior</source>
+        <translation>Anterior</translation>
+    </message>
+    <message>
+        <source>Posterior</source>
+        <translation>Posterior</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Links</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Rechts</translation>
+    </message>
+    <message>
+        <source>Superior</source>
+        <translation>Superior</translation>
+    </message>
+    <message>
+        <source>Inferior</source>
+        <translation>Inferior</translation>
+    </message>
+    <message>
+        <source>Background colour</source>
+        <translation>Hintergrundfarbe</translation>
+    </message>
+    <message>
+        <source>Vessel colour</source>
+        <translation>Gefäßfarbe</translation>
+    </message>
+    <message>
+        <source>How far the farthest vessels fade into the background</source>
+        <translation>Wie stark die entferntesten Gefäße in den Hintergrund übergehen</translation>
+    </message>
+    <message>
+        <source>Only the depth fog cue uses this</source>
+        <translation>Nur der Tiefennebel verwendet diesen Wert</translation>
+    </message>
+    <message>
+        <source>k in (1 - |n·v|)^k: higher values keep the colour nearer the silhouette</source>
+        <translation>k in (1 - |n·v|)^k: höhere Werte halten die Farbe näher an der Silhouette</translation>
+    </message>
+    <message>
+        <source>Only the Fresnel edge cue uses this</source>
+        <translation>Nur der Fresnel-Kantenhinweis verwendet diesen Wert</translation>
+    </message>
+    <message>
+        <source>Material colour of the vessels when no array colours them</source>
+        <translation>Materialfarbe der Gefäße, wenn kein Datenfeld sie einfärbt</translation>
+    </message>
+    <message>
+        <source>An array colours the vessels; choose the array None to use a material colour</source>
+        <translation>Ein Datenfeld färbt die Gefäße ein; für eine Materialfarbe das Datenfeld „Keines“ wählen</translation>
+    </message>
+    <message>
+        <source>Move the camera to this view of the data</source>
+        <translation>Die Kamera auf diese Ansicht der Daten stellen</translation>
+    </message>
+    <message>
+        <source>No data loaded</source>
+        <translation>Keine Daten geladen</translation>
+    </message>
+    <message>
+        <source>culled</source>
+        <translation>entfallen</translation>
+    </message>
+    <message>
+        <source>cached</source>
+        <translation>zwischengespeichert</translation>
+    </message>
+    <message>
+        <source>no frame yet</source>
+        <translation>noch kein Bild</translation>
+    </message>
+    <message>
+        <source>total (CPU) %1 ms</source>
+        <translation>gesamt (CPU) %1 ms</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::EngineNames</name>
+    <message>
+        <source>Viridis</source>
+        <translation>Viridis</translation>
+    </message>
+    <message>
+        <source>Cividis</source>
+        <translation>Cividis</translation>
+    </message>
+    <message>
+        <source>Inferno</source>
+        <translation>Inferno</translation>
+    </message>
+    <message>
+        <source>Blue-white-red (diverging)</source>
+        <translation>Blau-Weiß-Rot (divergierend)</translation>
+    </message>
+    <message>
+        <source>Chromadepth</source>
+        <translation>Chromadepth</translation>
+    </message>
+    <message>
+        <source>Pseudo-chromadepth</source>
+        <translation>Pseudo-Chromadepth</translation>
+    </message>
+    <message>
+        <source>Dark means deep</source>
+        <translation>Dunkel bedeutet tief</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Kein</translation>
+    </message>
+    <message>
+        <source>Vessel chromadepth</source>
+        <translation>Gefäß-Chromadepth</translation>
+    </message>
+    <message>
+        <source>Vessel pseudo-chromadepth</source>
+        <translation>Gefäß-Pseudo-Chromadepth</translation>
+    </message>
+    <message>
+        <source>Depth fog</source>
+        <translation>Tiefennebel</translation>
+    </message>
+    <message>
+        <source>Fresnel-edge pseudo-chromadepth</source>
+        <translation>Pseudo-Chromadepth mit Fresnel-Kante</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::FunctionalPanel</name>
+    <message>
+        <source>None</source>
+        <translation>Keines</translation>
+    </message>
+    <message>
+        <source>Array:</source>
+        <translation>Datenfeld:</translation>
+    </message>
+    <message>
+        <source>Colour map:</source>
+        <translation>Farbtabelle:</translation>
+    </message>
+    <message>
+        <source>Continuous</source>
+        <translation>Stufenlos</translation>
+    </message>
+    <message>
+        <source> bins</source>
+        <translation> Stufen</translation>
+    </message>
+    <message>
+        <source>Discrete:</source>
+        <translation>Diskret:</translation>
+    </message>
+    <message>
+        <source>Auto (full range)</source>
+        <translation>Automatisch (ganzer Bereich)</translation>
+    </message>
+    <message>
+        <source>Percentile 2–98</source>
+        <translation>Perzentil 2–98</translation>
+    </message>
+    <message>
+        <source>Manual</source>
+        <translation>Manuell</translation>
+    </message>
+    <message>
+        <source>Range:</source>
+        <translation>Bereich:</translation>
+    </message>
+    <message>
+        <source>Min / max:</source>
+        <translation>Min. / max.:</translation>
+    </message>
+    <message>
+        <source>No-data colour:</source>
+        <translation>Farbe ohne Daten:</translation>
+    </message>
+    <message>
+        <source>Legend title:</source>
+        <translation>Legendentitel:</translation>
+    </message>
+    <message>
+        <source>No data loaded</source>
+        <translation>Keine Daten geladen</translation>
+    </message>
+    <message>
+        <source>The loaded meshes have no point arrays</source>
+        <translation>Die geladenen Netze haben keine Punktdatenfelder</translation>
+    </message>
+    <message>
+        <source>Choose an array to colour the vessels with</source>
+        <translation>Ein Datenfeld zum Einfärben der Gefäße wählen</translation>
+    </message>
+    <message>
+        <source>Point array shown on the vessel wall through the colour map</source>
+        <translation>Punktdatenfeld, das über die Farbtabelle auf der Gefäßwand dargestellt wird</translation>
+    </message>
+    <message>
+        <source>Colour map of the array&apos;s values</source>
+        <translation>Farbtabelle für die Werte des Datenfelds</translation>
+    </message>
+    <message>
+        <source>Continuous colours, or the range cut into N equal bins</source>
+        <translation>Stufenlose Farben oder der Bereich in N gleich große Stufen geteilt</translation>
+    </message>
+    <message>
+        <source>Values mapped to the first and last colour: the full range, the 2nd to 98th percentile, or typed in</source>
+        <translation>Werte, die auf die erste und letzte Farbe abgebildet werden: der ganze Bereich, das 2. bis 98. Perzentil oder eingegeben</translation>
+    </message>
+    <message>
+        <source>Values at the first / last colour of the map</source>
+        <translation>Werte an der ersten / letzten Farbe der Tabelle</translation>
+    </message>
+    <message>
+        <source>Choose the Manual range to type values</source>
+        <translation>Den Bereich „Manuell“ wählen, um Werte einzugeben</translation>
+    </message>
+    <message>
+        <source>Distribution of the array; the lines mark the range (drag them to change it)</source>
+        <translation>Verteilung des Datenfelds; die Linien markieren den Bereich (zum Ändern ziehen)</translation>
+    </message>
+    <message>
+        <source>Values without data (NaN) are drawn in this colour, which the colour map fixes (it never occurs in the map itself)</source>
+        <translation>Werte ohne Daten (NaN) erscheinen in dieser Farbe, die die Farbtabelle festlegt (sie kommt in der Tabelle selbst nie vor)</translation>
+    </message>
+    <message>
+        <source>The legend is titled with the array&apos;s name and unit; the renderer does not take a custom title yet</source>
+        <translation>Die Legende trägt Name und Einheit des Datenfelds als Titel; ein eigener Titel wird noch nicht unterstützt</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::HistogramWidget</name>
+    <message>
+        <source>No values</source>
+        <translation>Keine Werte</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::VssPanel</name>
+    <message>
+        <source>Show the Void Space Surface</source>
+        <translation>Void Space Surface anzeigen</translation>
+    </message>
+    <message>
+        <source>A depth-coded surface in the space between the vessels</source>
+        <translation>Eine tiefenkodierte Fläche im Raum zwischen den Gefäßen</translation>
+    </message>
+    <message>
+        <source>Power p:</source>
+        <translation>Exponent p:</translation>
+    </message>
+    <message>
+        <source>Fast (with tolerance)</source>
+        <translation>Schnell (mit Toleranz)</translation>
+    </message>
+    <message>
+        <source>Exact</source>
+        <translation>Exakt</translation>
+    </message>
+    <message>
+        <source>Paper&apos;s step</source>
+        <translation>Schrittweite der Publikation</translation>
+    </message>
+    <message>
+        <source>Solver:</source>
+        <translation>Löser:</translation>
+    </message>
+    <message>
+        <source> / 255</source>
+        <translation> / 255</translation>
+    </message>
+    <message>
+        <source>Tolerance:</source>
+        <translation>Toleranz:</translation>
+    </message>
+    <message>
+        <source>Step k:</source>
+        <translation>Schrittweite k:</translation>
+    </message>
+    <message>
+        <source>Colour scale:</source>
+        <translation>Farbskala:</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Iso-lines:</source>
+        <translation>Isolinien:</translation>
+    </message>
+    <message>
+        <source>Iso-line strength:</source>
+        <translation>Stärke der Isolinien:</translation>
+    </message>
+    <message>
+        <source>Lighting:</source>
+        <translation>Beleuchtung:</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Umgebungsverdeckung</translation>
+    </message>
+    <message>
+        <source>AO radius:</source>
+        <translation>AO-Radius:</translation>
+    </message>
+    <message>
+        <source>Turn the Void Space Surface on to change this</source>
+        <translation>Zum Ändern die Void Space Surface einschalten</translation>
+    </message>
+    <message>
+        <source>Interpolation power p (logarithmic, 0.25 to 64)</source>
+        <translation>Interpolationsexponent p (logarithmisch, 0,25 bis 64)</translation>
+    </message>
+    <message>
+        <source>Interpolation power p: higher values follow the nearest vessel more closely</source>
+        <translation>Interpolationsexponent p: höhere Werte folgen dem nächstgelegenen Gefäß enger</translation>
+    </message>
+    <message>
+        <source>How the surface is interpolated: speed against accuracy</source>
+        <translation>Wie die Fläche interpoliert wird: Geschwindigkeit gegen Genauigkeit</translation>
+    </message>
+    <message>
+        <source>Largest error of the fast solver, in 1/255 of the depth range</source>
+        <translation>Größter Fehler des schnellen Lösers, in 1/255 des Tiefenbereichs</translation>
+    </message>
+    <message>
+        <source>Only the fast solver has a tolerance</source>
+        <translation>Nur der schnelle Löser hat eine Toleranz</translation>
+    </message>
+    <message>
+        <source>The paper&apos;s approximation: every k-th contour pixel</source>
+        <translation>Die Näherung der Publikation: jedes k-te Konturpixel</translation>
+    </message>
+    <message>
+        <source>Only the paper&apos;s step solver uses k</source>
+        <translation>Nur der Schrittweiten-Löser der Publikation verwendet k</translation>
+    </message>
+    <message>
+        <source>Colours of depth on the surface</source>
+        <translation>Farben der Tiefe auf der Fläche</translation>
+    </message>
+    <message>
+        <source>Lines of equal depth on the surface</source>
+        <translation>Linien gleicher Tiefe auf der Fläche</translation>
+    </message>
+    <message>
+        <source>How dark the iso-lines are</source>
+        <translation>Wie dunkel die Isolinien sind</translation>
+    </message>
+    <message>
+        <source>No iso-lines are drawn (set a count first)</source>
+        <translation>Es werden keine Isolinien gezeichnet (zuerst eine Anzahl einstellen)</translation>
+    </message>
+    <message>
+        <source>0: flat colours, 100: fully lit surface</source>
+        <translation>0: flache Farben, 100: voll beleuchtete Fläche</translation>
+    </message>
+    <message>
+        <source>Shade the surface next to the vessels, so they look anchored on it</source>
+        <translation>Die Fläche neben den Gefäßen abschatten, sodass diese auf ihr verankert wirken</translation>
+    </message>
+    <message>
+        <source>Reach of the ambient occlusion, scene units</source>
+        <translation>Reichweite der Umgebungsverdeckung, in Szeneneinheiten</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion is off</source>
+        <translation>Die Umgebungsverdeckung ist ausgeschaltet</translation>
+    </message>
+    <message>
+        <source>no error bound (step solver)</source>
+        <translation>keine Fehlerschranke (Schrittweiten-Löser)</translation>
+    </message>
+    <message>
+        <source>exact</source>
+        <translation>exakt</translation>
+    </message>
+    <message>
+        <source>error ≤ %1 / 255</source>
+        <translation>Fehler ≤ %1 / 255</translation>
+    </message>
+    <message>
+        <source>Void Space Surface off</source>
+        <translation>Void Space Surface aus</translation>
+    </message>
+    <message>
+        <source>solving…</source>
+        <translation>wird berechnet…</translation>
+    </message>
+    <message>
+        <source>preview, %1 ms</source>
+        <translation>Vorschau, %1 ms</translation>
+    </message>
+    <message>
+        <source>solved in %1 ms</source>
+        <translation>berechnet in %1 ms</translation>
+    </message>
+    <message>
+        <source>not solved yet</source>
+        <translation>noch nicht berechnet</translation>
+    </message>
+    <message>
+        <source>Solve: %1; %2</source>
+        <translation>Berechnung: %1; %2</translation>
+    </message>
+</context>
+</TS>

@@ -1,0 +1,24 @@
+<?xml version="1.0" encoding="utf-8"?>
+<!DOCTYPE TS>
+<TS version="2.1" language="en" sourcelanguage="en">
+<context>
+    <name>vv::gui::MainWindow</name>
+    <message numerus="yes">
+        <source>%n files</source>
+        <translation>
+            <numerusform>%n file</numerusform>
+            <numerusform>%n files</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::MeshLoadTask</name>
+    <message numerus="yes">
+        <source>Loading %n file(s)</source>
+        <translation>
+            <numerusform>Loading %n file</numerusform>
+            <numerusform>Loading %n files</numerusform>
+        </translation>
+    </message>
+</context>
+</TS>
