@@ -8,6 +8,7 @@
 #include <QGuiApplication>
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -233,6 +234,37 @@ TEST_F(VssRenderTest, ScaleAndIsoLinesReShadeWithoutReSolvingButPAndTheCameraReS
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Cached);
+}
+
+TEST_F(VssRenderTest, AFixedDepthRangeIsUsedAndReSolvesWhenItChanges) {
+    auto renderer = makeRenderer();
+    ASSERT_TRUE(renderer);
+    const auto scene = twoTubes();
+    auto o = options();
+    const QImage visible = renderer->render(scene, o);
+    const auto& status = renderer->vssStatus();
+    ASSERT_TRUE(status.shown);
+    const double visibleMin = status.dmin;
+    const double visibleMax = status.dmax;
+    ASSERT_LT(visibleMin, visibleMax);
+
+    // A fixed range twice as deep as the visible one, starting at the same depth.
+    o.vss.range.mode = vv::vss::RangeMode::Fixed;
+    o.vss.range.dmin = visibleMin;
+    o.vss.range.dmax = visibleMin + 2.0 * (visibleMax - visibleMin);
+    const QImage fixed = renderer->render(scene, o);
+    EXPECT_EQ(state(*renderer, "geometry"), PassState::Cached);
+    EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
+    EXPECT_DOUBLE_EQ(renderer->vssStatus().dmin, o.vss.range.dmin);
+    EXPECT_DOUBLE_EQ(renderer->vssStatus().dmax, o.vss.range.dmax);
+    EXPECT_NE(visible, fixed);  // the far tube is now half way down the scale
+    (void)renderer->render(scene, o);
+    EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Cached);
+
+    o.vss.range.dmax = o.vss.range.dmin - 1.0;
+    EXPECT_THROW((void)renderer->render(scene, o), vv::InvalidArgumentError);
+    o.vss.range.dmax = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW((void)renderer->render(scene, o), vv::InvalidArgumentError);
 }
 
 TEST_F(VssRenderTest, GBufferLinearDepthMatchesTheCpuRasteriser) {

@@ -70,16 +70,25 @@ class Hasher {
 struct SolverKey {
     double p = 0.0;
     double tolerance = 0.0;
+    double rangeMin = 0.0;  ///< fixed depth range; 0, 0 when visible
+    double rangeMax = 0.0;
     std::int32_t kind = 0;
     std::int32_t step = 0;
+    std::int32_t rangeMode = 0;
+    std::int32_t padding = 0;
 };
 
-SolverKey solverKey(const vss::SolverOptions& options) noexcept {
+SolverKey solverKey(const vss::SolverOptions& options, const vss::DepthRange& range) noexcept {
     SolverKey key;
     key.p = options.p;
     key.tolerance = options.tolerance;
     key.kind = static_cast<std::int32_t>(options.kind);
     key.step = options.step;
+    key.rangeMode = static_cast<std::int32_t>(range.mode);
+    if (range.mode == vss::RangeMode::Fixed) {
+        key.rangeMin = range.dmin;
+        key.rangeMax = range.dmax;
+    }
     return key;
 }
 
@@ -96,11 +105,12 @@ struct SolvedFrame {
 
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
-                       const std::stop_token& stop) {
+                       const vss::DepthRange& range, const std::stop_token& stop) {
     const auto start = std::chrono::steady_clock::now();
     const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
     vss::VssOptions vssOptions;
     vssOptions.solver = options;
+    vssOptions.range = range;
     vssOptions.stop = stop;
     vss::VssResult result = vss::solve(depth.view(), mask.view(), vssOptions);
     SolvedFrame frame;
@@ -130,6 +140,7 @@ class SolveWorker {
         Image<float> depth;
         vss::SolverOptions options;
         bool preview = false;
+        vss::DepthRange range;
     };
 
     explicit SolveWorker(std::function<void()> onSolved)
@@ -207,7 +218,7 @@ class SolveWorker {
             bool cancelled = false;
             try {
                 solved = std::make_shared<const SolvedFrame>(
-                    solveFrame(job.key, job.depth, job.options, job.preview, jobStop));
+                    solveFrame(job.key, job.depth, job.options, job.preview, job.range, jobStop));
             } catch (const CancelledError&) {
                 cancelled = true;
             } catch (const std::exception&) {
@@ -552,13 +563,14 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
     }
     const vss::SolverOptions options = effectiveSolverOptions(vssSettings);
     static_cast<void>(vss::makeSolver(options));  // throws for bad options, like render()
-    const std::uint64_t request = requestKey(depthView, solverKey(options), vssSettings.preview);
+    const std::uint64_t request =
+        requestKey(depthView, solverKey(options, vssSettings.range), vssSettings.preview);
     const auto latest = impl_->worker->latest().first;
     if ((latest && latest->key == request) || impl_->worker->requested(request)) {
         return true;
     }
-    impl_->worker->submit(
-        SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview});
+    impl_->worker->submit(SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview,
+                                           vssSettings.range});
     return true;
 }
 
@@ -607,6 +619,13 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     if (vssSettings.enabled) {
         // Throws for bad options.
         static_cast<void>(vss::makeSolver(effectiveSolverOptions(vssSettings)));
+        const vss::DepthRange& range = vssSettings.range;
+        if (range.mode == vss::RangeMode::Fixed &&
+            (!std::isfinite(range.dmin) || !std::isfinite(range.dmax) || range.dmin > range.dmax)) {
+            throw InvalidArgumentError("a fixed VSS depth range needs finite min <= max, got [" +
+                                       std::to_string(range.dmin) + ", " +
+                                       std::to_string(range.dmax) + "]");
+        }
     }
     // The passes run at the (possibly reduced) render size; the last pass
     // draws into the target at its full size.
@@ -714,7 +733,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     }
     const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
     const bool preview = vssSettings.preview;
-    const SolverKey key = solverKey(solverOptions);
+    const vss::DepthRange depthRange = vssSettings.range;
+    const SolverKey key = solverKey(solverOptions, depthRange);
     const std::uint64_t depthView = viewKey(view, projection, viewport, sceneRevision);
     const std::uint64_t request = requestKey(depthView, key, preview);
     VssFrameStatus& status = impl.solveStatus;
@@ -730,7 +750,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             d.height =
                 b.write(b.createPersistent<Texture>("vss-height", size(TextureFormat::R32F)));
         },
-        [&impl, &status, async, request, depthView, solverOptions, preview](
+        [&impl, &status, async, request, depthView, solverOptions, preview, depthRange](
             const RenderGraph::Resources& r, const Solve& d) {
             status = VssFrameStatus{};
             const GlTexture& height = glTex(r.get(d.height));
@@ -739,7 +759,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
                 const auto frame = std::make_shared<const SolvedFrame>(
-                    solveFrame(request, impl.lastDepth, solverOptions, preview, {}));
+                    solveFrame(request, impl.lastDepth, solverOptions, preview, depthRange, {}));
                 impl.uploadHeight(height, frame);
                 status.solveMilliseconds = frame->milliseconds;
                 status.current = true;
@@ -756,7 +776,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
                 impl.worker->submit(
-                    SolveWorker::Job{request, impl.lastDepth, solverOptions, preview});
+                    SolveWorker::Job{request, impl.lastDepth, solverOptions, preview, depthRange});
             }
             status.pending = true;
             impl.uploadHeight(height, latest);  // the previous VSS, or none

@@ -18,6 +18,7 @@
 #include "vv/render/GlResources.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/RenderGraph.h"
+#include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Solver.h"
 
 class QOpenGLContext;
@@ -40,6 +41,11 @@ struct VssSettings {
     /// the exact solve (preview = false) uses `solver` as given.
     bool preview = false;
     double previewTolerance = 8.0 / 255.0;
+    /// The depth range z is normalised over (VSS.md): the visible vessels'
+    /// min / max (default: the scale adapts to each view), or a fixed range
+    /// in scene units (the colours keep their depth across views; depths
+    /// outside clamp). Bad fixed ranges throw InvalidArgumentError at render().
+    vss::DepthRange range;
 };
 
 /// The solver options a VSS solve with `settings` uses (preview or exact).
