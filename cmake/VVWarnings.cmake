@@ -1,6 +1,8 @@
 # SPDX-License-Identifier: GPL-3.0-or-later
 # vv_target_defaults(<target>): the project's warning set, applied to every
 # target we own. Warnings become errors with -DVV_WERROR=ON (CI, presets).
+get_filename_component(VV_SANITIZER_DIR "${CMAKE_CURRENT_LIST_DIR}/../tests/sanitizers" ABSOLUTE)
+
 function(vv_target_defaults target)
   target_compile_features(${target} PUBLIC cxx_std_20)
   target_compile_options(${target} PRIVATE
@@ -15,6 +17,18 @@ function(vv_target_defaults target)
     # GCC's flow analysis reports false -Wmaybe-uninitialized positives on
     # sanitizer-instrumented code (the asan preset), e.g. in SIMD lanes.
     target_compile_options(${target} PRIVATE -Wno-maybe-uninitialized)
+  endif()
+  if(CMAKE_CXX_FLAGS MATCHES "-fsanitize")
+    # Sanitizer builds: every executable carries the project's default
+    # ASan / UBSan / LSan options and the LSan suppressions of third-party
+    # libraries (tests/sanitizers/SanitizerDefaults.cpp, lsan.supp).
+    get_target_property(type ${target} TYPE)
+    if(type STREQUAL "EXECUTABLE")
+      target_sources(${target} PRIVATE ${VV_SANITIZER_DIR}/SanitizerDefaults.cpp)
+      set_property(SOURCE ${VV_SANITIZER_DIR}/SanitizerDefaults.cpp
+        TARGET_DIRECTORY ${target} APPEND PROPERTY COMPILE_DEFINITIONS
+        "VV_LSAN_SUPPRESSIONS=\"${VV_SANITIZER_DIR}/lsan.supp\"")
+    endif()
   endif()
   if(VV_WERROR)
     target_compile_options(${target} PRIVATE -Werror)

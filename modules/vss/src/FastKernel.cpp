@@ -5,7 +5,6 @@
 // run time, so PCs without AVX2 still run it.
 #include "FastKernel.h"
 
-#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -15,10 +14,27 @@ namespace {
 
 using vf = float __attribute__((vector_size(64)));
 using vi = std::int32_t __attribute__((vector_size(64)));
+using vu = std::uint32_t __attribute__((vector_size(64)));
 constexpr int kLanes = 16;
 static_assert(kLanes == kLeafTile);
 
+// Every function below that takes or returns a vector is always inlined: the
+// kernel is compiled for AVX-512, AVX2 and baseline in one file, and each ISA
+// passes a 64-byte vector by value differently (zmm / 2 ymm / memory), so an
+// out-of-line call between them would read its arguments from the wrong place
+// (what -Wno-psabi silences). The same goes for library templates: an -O0
+// build does not inline std::bit_cast<vi>(vf), and the AVX-512 kernel calling
+// the baseline instantiation read a null pointer (UBSan in the asan preset);
+// asInt / asFloat use the builtin behind it, which is no call at any -O.
 #define VV_FAST_INLINE inline __attribute__((always_inline))
+
+VV_FAST_INLINE vi asInt(vf x) {
+    return __builtin_bit_cast(vi, x);
+}
+
+VV_FAST_INLINE vf asFloat(vi x) {
+    return __builtin_bit_cast(vf, x);
+}
 
 VV_FAST_INLINE vf splat(float v) {
     return vf{} + v;
@@ -30,9 +46,9 @@ VV_FAST_INLINE vf splat(float v) {
 // (approximation error 1.5e-8; with float round-off |error| <= kKernelLog2Error,
 // checked exhaustively over all mantissas in FastSolverTest).
 VV_FAST_INLINE void vlog2Parts(vf x, vf& e, vf& f) {
-    const vi bits = std::bit_cast<vi>(x);
+    const vi bits = asInt(x);
     vi ex = (bits >> 23) - 127;
-    const vf m0 = std::bit_cast<vf>((bits & 0x007fffff) | 0x3f800000);
+    const vf m0 = asFloat((bits & 0x007fffff) | 0x3f800000);
     const vi big = m0 > 1.41421356F;
     const vf m = big ? m0 * 0.5F : m0;
     ex -= big;  // big is -1 where true
@@ -48,7 +64,7 @@ VV_FAST_INLINE void vlog2Parts(vf x, vf& e, vf& f) {
     q = q * t - 0.72134735448F;
     q = q * t + 1.44269504F;
     // int -> float for |ex| < 2^22 through the 1.5 * 2^23 bias
-    e = std::bit_cast<vf>(ex + 0x4B400000) - 12582912.0F;
+    e = asFloat(ex + 0x4B400000) - 12582912.0F;
     f = t * q;
 }
 
@@ -75,8 +91,12 @@ VV_FAST_INLINE vf vexp2(vf a) {
     p = p * f + 0.240226509F;
     p = p * f + 0.693147207F;
     p = p * f + 1.0F;
-    const vi ki = std::bit_cast<vi>(t) - 0x4B400000;
-    const vf r = std::bit_cast<vf>(std::bit_cast<vi>(p) + (ki << 23));
+    const vi ki = asInt(t) - 0x4B400000;
+    // exponent arithmetic in unsigned lanes: lanes with a out of range (e.g.
+    // d = 0 at a contour pixel of the tile, not a region pixel; its result is
+    // discarded) wrap instead of overflowing a signed int (UB; UBSan).
+    const vu bitsR = __builtin_bit_cast(vu, p) + (__builtin_bit_cast(vu, ki) << 23);
+    const vf r = __builtin_bit_cast(vf, bitsR);
     return ki < -125 ? vf{} : r;
 }
 
@@ -220,22 +240,28 @@ VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32
             const vf rhsSafe = rhs > 1e-37F ? rhs : splat(1.0F);
             const vf l2 = vlog2(rhsSafe);
             const vi pass = (rhs > 1e-37F) & (lhs <= l2 - 1e-4F);
-            ok = std::bit_cast<vf>(pass);
+            ok = asFloat(pass);
         } else {
             d = accD + farD;
             nn = accN + farN;
             const vi pass = d * a.tolRemaining >= a.errAbs;
-            ok = std::bit_cast<vf>(pass);
+            ok = asFloat(pass);
         }
         vf z = a.zref + nn / d;
         const vi finite = (z >= a.zmin - 1.0F) & (z <= a.zmax + 1.0F);  // false for NaN / Inf
         z = z < a.zmin ? splat(a.zmin) : z;
         z = z > a.zmax ? splat(a.zmax) : z;
-        const vi good = std::bit_cast<vi>(ok) & finite;
+        const vi good = asInt(ok) & finite;
         std::uint32_t fail = 0;
         for (int x = 0; x < kLanes; ++x) {
             zOut[row * kLanes + x] = z[x];
-            fail |= (good[x] == 0 ? 1U : 0U) << x;
+            // Two statements on purpose: GCC 12 at -O0 with -fsanitize=shift,bounds
+            // miscompiles a vector subscript inside the shift's operand (the
+            // bounds check reads a garbage index: false "index 1065353216 out of
+            // bounds" and a SEGV in the asan preset). No cost when optimised
+            // (vss_fast_micro: same CPU time).
+            const std::uint32_t bad = good[x] == 0 ? 1U : 0U;
+            fail |= bad << x;
         }
         failRows[row] = fail;
     }

@@ -234,11 +234,26 @@ inline Cx& operator+=(Cx& a, Cx b) {
 using Square = std::array<Cx, kS * kS>;
 
 // Two complex numbers side by side (D and N parts): [a.re, a.im, b.re, b.im].
+//
+// A V4 never crosses a call boundary by value. This file is compiled for
+// baseline x86-64 and, in its target_clones functions, for x86-64-v3 as well,
+// and the two pass a 32-byte vector differently (baseline: in memory; AVX: in
+// a ymm register; GCC's -Wpsabi note). An out-of-line helper taking or
+// returning a V4 by value, called from an AVX clone, reads its argument from
+// the wrong place: at -O0 (the asan preset, nothing inlined) cmul4(V4, Cx)
+// crashed exactly so. Hence the helpers below take and give V4 by reference
+// and are always inlined, so the optimised code is the same as before.
 using V4 = double __attribute__((vector_size(32)));
-inline V4 cmul4(V4 v, Cx c) {
+// out = v * c per complex half
+[[gnu::always_inline]] inline void cmul4(V4& out, const V4& v, Cx c) {
     const V4 sw = __builtin_shufflevector(v, v, 1, 0, 3, 2);
-    return v * c.re + sw * V4{-c.im, c.im, -c.im, c.im};
-}  // [l * kS + l'], valid for l + l' <= degree
+    out = v * c.re + sw * V4{-c.im, c.im, -c.im, c.im};
+}
+// acc += v * c per complex half
+[[gnu::always_inline]] inline void cmulAdd4(V4& acc, const V4& v, Cx c) {
+    const V4 sw = __builtin_shufflevector(v, v, 1, 0, 3, 2);
+    acc += v * c.re + sw * V4{-c.im, c.im, -c.im, c.im};
+}
 
 // ---------------------------------------------------------------- fast scalar powers
 // log2 / exp2 in double for the bounds of the traversal (the C library's pow
@@ -611,7 +626,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void buildMoments(
                 for (int jp = 0; r + jp <= d; ++jp) {
                     V4 acc{0.0, 0.0, 0.0, 0.0};
                     for (int j = 0; j <= r; ++j) {
-                        acc += cmul4(full[j * kS + jp], coef[r * kS + j]);
+                        cmulAdd4(acc, full[j * kS + jp], coef[r * kS + j]);
                     }
                     t[r * kS + jp] = acc;
                 }
@@ -620,7 +635,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void buildMoments(
                 for (int rp = 0; rp <= r && r + rp <= d; ++rp) {
                     V4 acc{0.0, 0.0, 0.0, 0.0};
                     for (int jp = 0; jp <= rp; ++jp) {
-                        acc += cmul4(t[r * kS + jp], conj(coef[rp * kS + jp]));
+                        cmulAdd4(acc, t[r * kS + jp], conj(coef[rp * kS + jp]));
                     }
                     mD[lay.idx[r][rp]] += Cx{acc[0], acc[1]};
                     mN[lay.idx[r][rp]] += Cx{acc[2], acc[3]};
@@ -674,7 +689,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(
         for (int j = 0; j + lp <= deg; ++j) {
             V4 acc{0.0, 0.0, 0.0, 0.0};
             for (int l = j; l + lp <= deg; ++l) {
-                acc += cmul4(in[l * kS + lp], coef[l * kS + j]);
+                cmulAdd4(acc, in[l * kS + lp], coef[l * kS + j]);
             }
             t[j * kS + lp] = acc;
         }
@@ -683,7 +698,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(
         for (int jp = 0; j + jp <= deg; ++jp) {
             V4 acc{0.0, 0.0, 0.0, 0.0};
             for (int lp = jp; j + lp <= deg; ++lp) {
-                acc += cmul4(t[j * kS + lp], conj(coef[lp * kS + jp]));
+                cmulAdd4(acc, t[j * kS + lp], conj(coef[lp * kS + jp]));
             }
             acc *= f;
             loc.d[j * kS + jp] = Cx{acc[0], acc[1]};
@@ -728,7 +743,8 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void m2l(
     for (int r = 0; r <= mo; ++r) {
         for (int rp = 0; rp <= r && r + rp <= mo; ++rp) {
             const int ix = lay.idx[r][rp];
-            const V4 v = cmul4(V4{mD[ix].re, mD[ix].im, mN[ix].re, mN[ix].im}, rot[r - rp]);
+            V4 v;
+            cmul4(v, V4{mD[ix].re, mD[ix].im, mN[ix].re, mN[ix].im}, rot[r - rp]);
             mt[r * kS + rp] = v;
             mt[rp * kS + r] = v * V4{1.0, -1.0, 1.0, -1.0};
         }
@@ -751,7 +767,9 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void m2l(
                 acc += g[lp][rp] *
                        pre[static_cast<std::size_t>((l * kS + rp) * kS + (mo - l - lp - rp))];
             }
-            const V4 v = cmul4(acc, rot[l - lp]) * wR;
+            V4 v;
+            cmul4(v, acc, rot[l - lp]);
+            v *= wR;
             loc.d[l * kS + lp] += Cx{v[0], v[1]};
             loc.n[l * kS + lp] += Cx{v[2], v[3]};
             if (lp != l) {
