@@ -78,6 +78,12 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
 ViewerWidget::~ViewerWidget() {
     cancelPreviewGeometry();
     previewFuture_.waitForFinished();
+    // ~QOpenGLWidget destroys the context after this body, when this object is
+    // only a QOpenGLWidget and renderer_ is gone: its aboutToBeDestroyed must
+    // not call releaseGl again (UBSan: downcast of a QOpenGLWidget, asan preset).
+    if (QOpenGLContext* ctx = context()) {
+        disconnect(ctx, &QOpenGLContext::aboutToBeDestroyed, this, &ViewerWidget::releaseGl);
+    }
     releaseGl();
 }
 

@@ -161,6 +161,14 @@ class ReferenceSolver final : public Solver {
 // OpenMP runtime), which lets GCC vectorise the float sums; only integer
 // selects inside them (a float compare would keep GCC from vectorising).
 
+/// Contour points per block of the weighted sums: float partial sums over a
+/// block (a vectorised `omp simd` reduction), blocks added in double. The
+/// round-off of a sum then grows with the block, not with the contour, and
+/// does not depend on how many lanes the compiler splits the reduction into
+/// (one at -O0: a million float additions in a row missed the brute solver's
+/// tolerance in the asan build; the baseline and AVX2 clones differ too).
+constexpr std::size_t kSumBlock = 1024;
+
 struct SoaContour {
     std::vector<float> x;
     std::vector<float> y;
@@ -203,19 +211,26 @@ template <int K>
                                                     const float* __restrict cz, std::size_t n,
                                                     float px, float py, float dmin2,
                                                     float negHalfP) {
-    float sw = 0.0F;
-    float swz = 0.0F;
+    double sw = 0.0;
+    double swz = 0.0;
     const float inv = 1.0F / dmin2;
-#pragma omp simd reduction(+ : sw, swz)
-    for (std::size_t i = 0; i < n; ++i) {
-        const float dx = cx[i] - px;
-        const float dy = cy[i] - py;
-        const float t = (dx * dx + dy * dy) * inv;
-        const float w = detail::fastExp2(negHalfP * detail::fastLog2(t));
-        sw += w;
-        swz += w * cz[i];
+    for (std::size_t b = 0; b < n; b += kSumBlock) {
+        const std::size_t e = std::min(n, b + kSumBlock);
+        float bw = 0.0F;
+        float bwz = 0.0F;
+#pragma omp simd reduction(+ : bw, bwz)
+        for (std::size_t i = b; i < e; ++i) {
+            const float dx = cx[i] - px;
+            const float dy = cy[i] - py;
+            const float t = (dx * dx + dy * dy) * inv;
+            const float w = detail::fastExp2(negHalfP * detail::fastLog2(t));
+            bw += w;
+            bwz += w * cz[i];
+        }
+        sw += bw;
+        swz += bwz;
     }
-    return swz / sw;
+    return static_cast<float>(swz / sw);
 }
 
 /// The nearest squared distance from (px, py) to the contour.
@@ -282,24 +297,33 @@ template <int K>
                 }
             }
             float dmin2 = std::numeric_limits<float>::infinity();
-            float sw = 0.0F;
-            float swz = 0.0F;
-#pragma omp simd reduction(min : dmin2) reduction(+ : sw, swz)
-            for (std::size_t i = 0; i < n; ++i) {
-                const float dx = cx[i] - px;
-                const float dy = cy[i] - py;
-                const float d2 = dx * dx + dy * dy;
-                dmin2 = d2 < dmin2 ? d2 : dmin2;
-                const float w = powerOfTwoWeight<K>(s / d2);
-                sw += w;
-                swz += w * cz[i];
+            double sw = 0.0;
+            double swz = 0.0;
+            for (std::size_t b = 0; b < n; b += kSumBlock) {
+                const std::size_t e = std::min(n, b + kSumBlock);
+                float bmin2 = std::numeric_limits<float>::infinity();
+                float bw = 0.0F;
+                float bwz = 0.0F;
+#pragma omp simd reduction(min : bmin2) reduction(+ : bw, bwz)
+                for (std::size_t i = b; i < e; ++i) {
+                    const float dx = cx[i] - px;
+                    const float dy = cy[i] - py;
+                    const float d2 = dx * dx + dy * dy;
+                    bmin2 = d2 < bmin2 ? d2 : bmin2;
+                    const float w = powerOfTwoWeight<K>(s / d2);
+                    bw += w;
+                    bwz += w * cz[i];
+                }
+                dmin2 = std::min(dmin2, bmin2);
+                sw += bw;
+                swz += bwz;
             }
             if (dmin2 == 0.0F) {
                 out[x] = coincidentMean(cx, cy, cz, n, px, py);
                 chained = false;
                 continue;
             }
-            out[x] = swz / sw;
+            out[x] = static_cast<float>(swz / sw);
             s = dmin2;
             chained = true;
         }
