@@ -316,6 +316,12 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
         {QStringLiteral("isoLineStrength"), static_cast<double>(s.vss.isoLineStrength)},
         {QStringLiteral("lighting"), static_cast<double>(s.vss.lighting)},
         {QStringLiteral("opacity"), static_cast<double>(s.vss.opacity)},
+        {QStringLiteral("range"),
+         s.vss.range.mode == vss::RangeMode::Fixed
+             ? QJsonObject{{QStringLiteral("mode"), QStringLiteral("fixed")},
+                           {QStringLiteral("near"), s.vss.range.dmin},
+                           {QStringLiteral("far"), s.vss.range.dmax}}
+             : QJsonObject{{QStringLiteral("mode"), QStringLiteral("visible")}}},
     };
     const QJsonObject ao{
         {QStringLiteral("enabled"), s.ao.enabled},
@@ -429,6 +435,20 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
         s.vss.isoLineStrength = r.real(o, w, "isoLineStrength", 0.0, 1.0);
         s.vss.lighting = r.real(o, w, "lighting", 0.0, 1.0);
         s.vss.opacity = r.real(o, w, "opacity", 0.0, 1.0);
+        // Optional in version 1 (files written before it: the visible range).
+        if (o.contains(QStringLiteral("range"))) {
+            const QString rw = w + QStringLiteral(".range");
+            const QJsonObject range = r.object(o, w, "range");
+            const QString mode = r.string(range, rw, "mode");
+            if (mode == QStringLiteral("fixed")) {
+                s.vss.range.mode = vss::RangeMode::Fixed;
+                s.vss.range.dmin = r.number(range, rw, "near", -1.0e9, 1.0e9);
+                s.vss.range.dmax = r.number(range, rw, "far", s.vss.range.dmin, 1.0e9);
+            } else if (mode != QStringLiteral("visible")) {
+                r.fail(rw + QStringLiteral(".mode"),
+                       QStringLiteral("must be \"visible\" or \"fixed\", not \"%1\"").arg(mode));
+            }
+        }
     }
     {
         const QString w = v + QStringLiteral(".ao");

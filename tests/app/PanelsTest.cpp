@@ -27,6 +27,7 @@
 #include "gui/panels/FunctionalPanel.h"
 #include "gui/panels/HistogramWidget.h"
 #include "gui/panels/VssPanel.h"
+#include "vv/vss/DepthNormalization.h"
 
 namespace vv::test {
 namespace {
@@ -187,6 +188,38 @@ TEST_F(PanelsTest, VssPanelControlsChangeTheViewer) {
     window_->vssToggle()->setChecked(true);
     EXPECT_TRUE(panel->enabledBox()->isChecked());
     EXPECT_TRUE(panel->powerBox()->isEnabled());
+}
+
+TEST_F(PanelsTest, FixingTheDepthRangeStartsFromTheRangeOnScreen) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    auto* panel = window_->vssPanel();
+    auto* viewer = window_->viewer();
+    ASSERT_TRUE(waitUntil([&] { return viewer->vssStatus().shown; }));
+    const double shownMin = viewer->vssStatus().dmin;
+    const double shownMax = viewer->vssStatus().dmax;
+
+    // Visible (default): near / far do not apply, and say why.
+    EXPECT_EQ(viewer->vssSettings().range.mode, vss::RangeMode::Visible);
+    EXPECT_FALSE(panel->rangeMinBox()->isEnabled());
+    EXPECT_FALSE(panel->rangeMinBox()->toolTip().isEmpty());
+
+    auto* mode = panel->rangeChooser();
+    mode->setCurrentIndex(mode->findData(static_cast<int>(vss::RangeMode::Fixed)));
+    const render::VssSettings& fixed = viewer->vssSettings();
+    EXPECT_EQ(fixed.range.mode, vss::RangeMode::Fixed);
+    EXPECT_NEAR(fixed.range.dmin, shownMin, 0.05);  // the boxes show one decimal
+    EXPECT_NEAR(fixed.range.dmax, shownMax, 0.05);
+    EXPECT_TRUE(panel->rangeMaxBox()->isEnabled());
+
+    // Far follows near: never an inverted range.
+    panel->rangeMinBox()->setValue(shownMax + 10.0);
+    EXPECT_GE(viewer->vssSettings().range.dmax, viewer->vssSettings().range.dmin);
+    ASSERT_TRUE(waitForFrames());
+    EXPECT_TRUE(viewer->renderError().isEmpty()) << viewer->renderError().toStdString();
+
+    mode->setCurrentIndex(mode->findData(static_cast<int>(vss::RangeMode::Visible)));
+    EXPECT_EQ(viewer->vssSettings().range.mode, vss::RangeMode::Visible);
 }
 
 TEST_F(PanelsTest, FunctionalPanelChoosesArrayMapBinsAndRange) {

@@ -4,6 +4,8 @@
 #include <QAction>
 #include <QByteArray>
 #include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QMessageBox>
 #include <cmath>
 #include <filesystem>
@@ -46,6 +48,9 @@ gui::Session sampleSession() {
     s.vss.isoLines = 3;
     s.vss.isoLineStrength = 0.25F;
     s.vss.lighting = 0.5F;
+    s.vss.range.mode = vss::RangeMode::Fixed;
+    s.vss.range.dmin = 80.0;
+    s.vss.range.dmax = 215.5;
     s.ao.enabled = false;
     s.ao.radius = 6.0F;
     s.ao.strength = 0.4F;
@@ -70,6 +75,9 @@ void expectSame(const gui::Session& a, const gui::Session& b) {
     EXPECT_FLOAT_EQ(a.fieldOfView, b.fieldOfView);
     EXPECT_EQ(a.vss.enabled, b.vss.enabled);
     EXPECT_EQ(a.vss.scale, b.vss.scale);
+    EXPECT_EQ(a.vss.range.mode, b.vss.range.mode);
+    EXPECT_DOUBLE_EQ(a.vss.range.dmin, b.vss.range.dmin);
+    EXPECT_DOUBLE_EQ(a.vss.range.dmax, b.vss.range.dmax);
     EXPECT_EQ(a.vss.solver.kind, b.vss.solver.kind);
     EXPECT_DOUBLE_EQ(a.vss.solver.p, b.vss.solver.p);
     EXPECT_EQ(a.vss.solver.step, b.vss.solver.step);
@@ -123,6 +131,28 @@ TEST(SessionFile, RoundTripKeepsEverything) {
     }
     const QByteArray json = gui::sessionToJson(s, path);
     EXPECT_TRUE(json.contains("\"version\": 1")) << json.toStdString();
+}
+
+TEST(SessionFile, TheDepthRangeIsOptionalAndChecked) {
+    // Written before the range existed: the visible range.
+    QByteArray json = gui::sessionToJson(sampleSession(), sessionDir() / "x.vvs");
+    const QJsonDocument doc = QJsonDocument::fromJson(json);
+    QJsonObject root = doc.object();
+    QJsonObject view = root.value(QStringLiteral("view")).toObject();
+    QJsonObject vssObject = view.value(QStringLiteral("vss")).toObject();
+    vssObject.remove(QStringLiteral("range"));
+    view.insert(QStringLiteral("vss"), vssObject);
+    root.insert(QStringLiteral("view"), view);
+    const gui::Session old =
+        gui::sessionFromJson(QJsonDocument(root).toJson(), sessionDir() / "old.vvs");
+    EXPECT_EQ(old.vss.range.mode, vss::RangeMode::Visible);
+    // Far before near, and an unknown mode, are refused with the field's name.
+    EXPECT_NE(errorFor("range-far.vvs", sampleWith("\"far\": 215.5", "\"far\": 10"))
+                  .find("view.vss.range.far"),
+              std::string::npos);
+    EXPECT_NE(errorFor("range-mode.vvs", sampleWith("\"fixed\"", "\"sideways\""))
+                  .find("view.vss.range.mode"),
+              std::string::npos);
 }
 
 TEST(SessionFile, RelativeFilesResolveAgainstTheSessionFolder) {

@@ -17,6 +17,7 @@
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
+#include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::gui::panels {
@@ -119,6 +120,26 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     aoRadius_->setKeyboardTracking(false);
     form->addRow(tr("AO radius:"), aoRadius_);
 
+    rangeMode_ = new QComboBox(this);
+    rangeMode_->setObjectName(QStringLiteral("vssRangeMode"));
+    rangeMode_->addItem(tr("Visible vessels"), static_cast<int>(vss::RangeMode::Visible));
+    rangeMode_->addItem(tr("Fixed"), static_cast<int>(vss::RangeMode::Fixed));
+    form->addRow(tr("Depth range:"), rangeMode_);
+    rangeMin_ = new QDoubleSpinBox(this);
+    rangeMin_->setObjectName(QStringLiteral("vssRangeMin"));
+    rangeMax_ = new QDoubleSpinBox(this);
+    rangeMax_->setObjectName(QStringLiteral("vssRangeMax"));
+    for (QDoubleSpinBox* box : {rangeMin_, rangeMax_}) {
+        box->setRange(-1.0e6, 1.0e6);
+        box->setDecimals(1);
+        box->setSuffix(tr(" mm"));
+        box->setKeyboardTracking(false);
+    }
+    auto* rangeRow = new QHBoxLayout;
+    rangeRow->addWidget(rangeMin_);
+    rangeRow->addWidget(rangeMax_);
+    form->addRow(tr("Near / far:"), rangeRow);
+
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("vssStatus"));
     status_->setWordWrap(true);
@@ -156,6 +177,23 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     connect(lighting_, &QSlider::valueChanged, this, applyLater);
     connect(ao_, &QCheckBox::toggled, this, applyLater);
     connect(aoRadius_, &QDoubleSpinBox::valueChanged, this, applyLater);
+    connect(rangeMode_, &QComboBox::currentIndexChanged, this, [this] {
+        if (syncing_) {
+            return;
+        }
+        // Fixing starts from the range on screen, so nothing jumps.
+        const render::VssFrameStatus& status = viewer_->vssStatus();
+        if (rangeMode_->currentData().toInt() == static_cast<int>(vss::RangeMode::Fixed) &&
+            status.shown && std::isfinite(status.dmin) && std::isfinite(status.dmax)) {
+            const QSignalBlocker blockMin(rangeMin_);
+            const QSignalBlocker blockMax(rangeMax_);
+            rangeMin_->setValue(status.dmin);
+            rangeMax_->setValue(status.dmax);
+        }
+        apply();
+    });
+    connect(rangeMin_, &QDoubleSpinBox::valueChanged, this, applyLater);
+    connect(rangeMax_, &QDoubleSpinBox::valueChanged, this, applyLater);
 }
 
 void VssPanel::syncFromViewer() {
@@ -178,6 +216,11 @@ void VssPanel::syncFromViewer() {
     lighting_->setValue(percent(vss.lighting));
     ao_->setChecked(ao.enabled);
     aoRadius_->setValue(static_cast<double>(ao.radius));
+    rangeMode_->setCurrentIndex(rangeMode_->findData(static_cast<int>(vss.range.mode)));
+    if (vss.range.mode == vss::RangeMode::Fixed) {
+        rangeMin_->setValue(vss.range.dmin);
+        rangeMax_->setValue(vss.range.dmax);
+    }
     syncing_ = false;
     updateApplicability();
     updateBound();
@@ -199,6 +242,16 @@ void VssPanel::apply() {
     vss.isoLines = isoLines_->value();
     vss.isoLineStrength = static_cast<float>(isoStrength_->value()) / kPercent;
     vss.lighting = static_cast<float>(lighting_->value()) / kPercent;
+    vss.range.mode = static_cast<vss::RangeMode>(rangeMode_->currentData().toInt());
+    if (vss.range.mode == vss::RangeMode::Fixed) {
+        // Near never beyond far: the far box follows.
+        if (rangeMax_->value() < rangeMin_->value()) {
+            const QSignalBlocker blocker(rangeMax_);
+            rangeMax_->setValue(rangeMin_->value());
+        }
+        vss.range.dmin = rangeMin_->value();
+        vss.range.dmax = rangeMax_->value();
+    }
     viewer_->setVssSettings(vss);
     render::AoSettings ao = viewer_->aoSettings();
     ao.enabled = ao_->isChecked();
@@ -234,6 +287,16 @@ void VssPanel::updateApplicability() {
     ao_->setToolTip(tr("Shade the surface next to the vessels, so they look anchored on it"));
     setApplicable(aoRadius_, ao_->isChecked(), tr("Reach of the ambient occlusion, scene units"),
                   tr("Ambient occlusion is off"));
+    setApplicable(rangeMode_, on,
+                  tr("Visible: the scale spans the vessels in view; fixed: colours keep their "
+                     "depth when the view changes"),
+                  off);
+    const bool fixed = rangeMode_->currentData().toInt() == static_cast<int>(vss::RangeMode::Fixed);
+    for (QDoubleSpinBox* box : {rangeMin_, rangeMax_}) {
+        setApplicable(box, on && fixed,
+                      tr("Depths mapped to the near and far end of the scale (viewing distance)"),
+                      on ? tr("Choose a fixed depth range first") : off);
+    }
 }
 
 void VssPanel::updateBound() {

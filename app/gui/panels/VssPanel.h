@@ -19,7 +19,9 @@ namespace panels {
 /// The "Void Space Surface" panel: on/off, the IDW power p (logarithmic slider
 /// 0.25-64 and a spin box), solver quality (fast with tolerance, exact, the
 /// paper's every-k-th-contour-pixel step), depth colour scale, iso-lines,
-/// lighting, ambient occlusion, and the last solve's time and error bound.
+/// lighting, ambient occlusion, the depth range (the visible vessels', or a
+/// fixed one in mm that keeps colours across views; choosing "fixed" starts
+/// from the range on screen), and the last solve's time and error bound.
 /// Every control writes the viewer at once and then emits changed().
 class VssPanel : public QWidget {
     Q_OBJECT
@@ -42,6 +44,9 @@ class VssPanel : public QWidget {
     [[nodiscard]] QComboBox* solverChooser() const noexcept { return solver_; }
     [[nodiscard]] QComboBox* scaleChooser() const noexcept { return scale_; }
     [[nodiscard]] QLabel* statusLabel() const noexcept { return status_; }
+    [[nodiscard]] QComboBox* rangeChooser() const noexcept { return rangeMode_; }
+    [[nodiscard]] QDoubleSpinBox* rangeMinBox() const noexcept { return rangeMin_; }
+    [[nodiscard]] QDoubleSpinBox* rangeMaxBox() const noexcept { return rangeMax_; }
 
   public slots:
     /// Shows the viewer's current settings (without writing them back).
@@ -71,6 +76,9 @@ class VssPanel : public QWidget {
     QSlider* lighting_ = nullptr;
     QCheckBox* ao_ = nullptr;
     QDoubleSpinBox* aoRadius_ = nullptr;
+    QComboBox* rangeMode_ = nullptr;  ///< visible vessels / fixed
+    QDoubleSpinBox* rangeMin_ = nullptr;
+    QDoubleSpinBox* rangeMax_ = nullptr;
     QLabel* status_ = nullptr;
     QString bound_;  ///< the error bound of the current settings, as shown
     bool syncing_ = false;
