@@ -424,9 +424,43 @@ TEST_F(PanelsTest, DataPanelListsMeshesAndArrays) {
     EXPECT_EQ(mesh->child(1)->text(0), QStringLiteral("wss [Pa]"));
     EXPECT_TRUE(mesh->child(1)->text(1).contains(QStringLiteral("30")));
     EXPECT_EQ(panel->fileLabel()->text(), QStringLiteral("tube scene"));
-    // Visibility is shown but cannot be switched yet.
-    EXPECT_FALSE(mesh->flags().testFlag(Qt::ItemIsEnabled));
-    EXPECT_FALSE(mesh->toolTip(1).isEmpty());
+    // Visibility: a check box per mesh, all shown.
+    EXPECT_TRUE(mesh->flags().testFlag(Qt::ItemIsUserCheckable));
+    EXPECT_TRUE(mesh->flags().testFlag(Qt::ItemIsEnabled));
+    EXPECT_EQ(mesh->checkState(0), Qt::Checked);
+}
+
+TEST_F(PanelsTest, DataPanelHidesAndShowsSingleMeshes) {
+    // The tube and a copy of it beside it.
+    auto scene = std::make_shared<io::Scene>(*makeTubeScene());
+    io::Mesh copy = scene->meshes.front();
+    copy.name = "copy";
+    for (auto& p : copy.positions) {
+        p.y += 8.0F;
+    }
+    scene->meshes.push_back(std::move(copy));
+    window_->setScene(scene, QStringLiteral("two tubes"));
+    auto* viewer = window_->viewer();
+    ASSERT_TRUE(waitForFrames());
+    const QImage both = viewer->grabFramebuffer();
+    auto* tree = window_->dataPanel()->meshTree();
+    ASSERT_EQ(tree->topLevelItemCount(), 2);
+
+    tree->topLevelItem(1)->setCheckState(0, Qt::Unchecked);
+    EXPECT_EQ(viewer->style().hidden, std::vector<std::size_t>{1});
+    ASSERT_TRUE(waitForFrames());
+    const QImage one = viewer->grabFramebuffer();
+    EXPECT_GT(changedFraction(both, one), 0.01);  // the copy is gone (and the VSS changed)
+
+    tree->topLevelItem(1)->setCheckState(0, Qt::Checked);
+    EXPECT_TRUE(viewer->style().hidden.empty());
+    ASSERT_TRUE(waitForFrames());
+    EXPECT_LT(changedFraction(both, viewer->grabFramebuffer()), 0.01);
+
+    // A new scene shows every mesh again.
+    tree->topLevelItem(0)->setCheckState(0, Qt::Unchecked);
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    EXPECT_TRUE(viewer->style().hidden.empty());
 }
 
 TEST_F(PanelsTest, DockLayoutIsRestoredAndCanBeReset) {

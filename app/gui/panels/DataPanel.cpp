@@ -31,14 +31,40 @@ DataPanel::DataPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), v
     tree_->setRootIsDecorated(true);
     layout->addWidget(tree_, 1);
     sceneChanged({}, {});
+    connect(tree_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
+        if (!filling_ && column == NameColumn && item->parent() == nullptr) {
+            applyVisibility();
+        }
+    });
+}
+
+void DataPanel::applyVisibility() {
+    render::MeshStyle style = viewer_->style();
+    style.hidden.clear();
+    for (int i = 0; i < tree_->topLevelItemCount(); ++i) {
+        if (tree_->topLevelItem(i)->checkState(NameColumn) != Qt::Checked) {
+            style.hidden.push_back(static_cast<std::size_t>(i));
+        }
+    }
+    if (style.hidden != viewer_->style().hidden) {
+        viewer_->setStyle(style);
+        emit changed();
+    }
 }
 
 void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
+    filling_ = true;
     tree_->clear();
+    if (!viewer_->style().hidden.empty()) {  // a new scene starts with every mesh shown
+        render::MeshStyle style = viewer_->style();
+        style.hidden.clear();
+        viewer_->setStyle(style);
+    }
     const auto& scene = viewer_->scene();
     if (!scene) {
         file_->setText(tr("No data loaded"));
         file_->setToolTip({});
+        filling_ = false;
         return;
     }
     QStringList names;
@@ -57,12 +83,9 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
         item->setToolTip(NameColumn, mesh.source.empty()
                                          ? tr("Generated")
                                          : QString::fromStdString(mesh.source.string()));
-        // Visibility: shown, but not switchable yet.
-        item->setFlags((item->flags() | Qt::ItemIsUserCheckable) & ~Qt::ItemIsEnabled);
+        // Visibility: the check box shows or hides the mesh.
+        item->setFlags(item->flags() | Qt::ItemIsUserCheckable);
         item->setCheckState(NameColumn, Qt::Checked);
-        item->setToolTip(VerticesColumn,
-                         tr("Every mesh of a scene is drawn; hiding single meshes is not "
-                            "supported yet"));
         for (const auto& array : mesh.pointArrays) {
             float lo = std::numeric_limits<float>::infinity();
             float hi = -lo;
@@ -86,6 +109,7 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
         }
         item->setExpanded(true);
     }
+    filling_ = false;
 }
 
 }  // namespace vv::gui::panels

@@ -33,10 +33,18 @@ class DataPanel : public QWidget {
     [[nodiscard]] QTreeWidget* meshTree() const noexcept { return tree_; }
     [[nodiscard]] QLabel* fileLabel() const noexcept { return file_; }
 
+  signals:
+    /// The panel changed the viewer's settings (a mesh shown or hidden).
+    void changed();
+
   private:
+    /// The style's hidden meshes from the check boxes.
+    void applyVisibility();
+
     ViewerWidget* viewer_;
     QLabel* file_ = nullptr;
     QTreeWidget* tree_ = nullptr;
+    bool filling_ = false;  ///< sceneChanged() is filling the tree
 };
 
 }  // namespace panels

@@ -664,7 +664,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> depth;
     };
     // The G-buffer's parameter values change with the array shown.
-    const std::uint64_t arrayKey = std::hash<std::string>{}(meshes.style().array);
+    std::uint64_t arrayKey = std::hash<std::string>{}(meshes.style().array);
+    for (const std::size_t hidden : meshes.style().hidden) {  // and with the meshes shown
+        arrayKey = arrayKey * 1099511628211ULL ^ (hidden + 1);
+    }
     const Geometry& geometry = graph.addPass<Geometry>(
         "geometry",
         [&](RenderGraph::Builder& b, Geometry& d) {

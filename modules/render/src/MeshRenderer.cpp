@@ -588,6 +588,10 @@ void MeshRenderer::unbindMaterial() {
     f.glUseProgram(0);
 }
 
+bool MeshStyle::visible(std::size_t mesh) const noexcept {
+    return std::find(hidden.begin(), hidden.end(), mesh) == hidden.end();
+}
+
 void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
     auto& f = gl();
     if (program_ == 0) {
@@ -611,9 +615,12 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
-    for (const auto& m : meshes_) {
-        f.glBindVertexArray(m.vao);
-        f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+    for (std::size_t i = 0; i < meshes_.size(); ++i) {
+        if (!style_.visible(i)) {
+            continue;
+        }
+        f.glBindVertexArray(meshes_[i].vao);
+        f.glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
     }
     f.glBindVertexArray(0);
     unbindMaterial();
@@ -691,10 +698,15 @@ void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
     f.glUniform1i(loc("uUseArray"), style_.array.empty() ? 0 : 1);
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
-    for (const auto& m : preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_) {
+    const std::vector<GpuMesh>& drawn =
+        preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_;
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
         f.glUniform1ui(objectId, id++);
-        f.glBindVertexArray(m.vao);
-        f.glDrawElements(GL_TRIANGLES, m.indexCount, GL_UNSIGNED_INT, nullptr);
+        if (!style_.visible(i)) {
+            continue;  // hidden: its id stays reserved
+        }
+        f.glBindVertexArray(drawn[i].vao);
+        f.glDrawElements(GL_TRIANGLES, drawn[i].indexCount, GL_UNSIGNED_INT, nullptr);
     }
     f.glBindVertexArray(0);
     f.glUseProgram(0);

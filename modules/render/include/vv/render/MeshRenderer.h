@@ -39,6 +39,12 @@ struct MeshStyle {
     /// Blinn-Phong with a headlight-like key light and ambient; false draws
     /// flat, unlit colours (exact colour-map colours, for checks and pickers).
     bool lighting = true;
+    /// Indices (into Scene::meshes) of meshes not drawn; out-of-range
+    /// indices are ignored. Hidden meshes keep their object ids.
+    std::vector<std::size_t> hidden;
+
+    /// True unless `mesh` is listed in `hidden`.
+    [[nodiscard]] bool visible(std::size_t mesh) const noexcept;
 };
 
 /// A depth cue on the vessel surface itself, the comparison techniques for
