@@ -27,6 +27,7 @@
 #include "gui/panels/FunctionalPanel.h"
 #include "gui/panels/HistogramWidget.h"
 #include "gui/panels/VssPanel.h"
+#include "vv/render/LegendPainter.h"
 #include "vv/vss/DepthNormalization.h"
 
 namespace vv::test {
@@ -220,6 +221,43 @@ TEST_F(PanelsTest, FixingTheDepthRangeStartsFromTheRangeOnScreen) {
 
     mode->setCurrentIndex(mode->findData(static_cast<int>(vss::RangeMode::Visible)));
     EXPECT_EQ(viewer->vssSettings().range.mode, vss::RangeMode::Visible);
+}
+
+TEST_F(PanelsTest, FunctionalPanelSetsTheNoDataColourAndTheLegendTitle) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    auto* panel = window_->functionalPanel();
+    auto* viewer = window_->viewer();
+    ASSERT_FALSE(viewer->style().array.empty());  // wss by default
+    auto* title = child<QLineEdit>(panel, "functionalLegendTitle");
+    auto* nan = child<QToolButton>(panel, "functionalNanColor");
+    EXPECT_TRUE(title->isEnabled());
+    EXPECT_TRUE(nan->isEnabled());
+    EXPECT_EQ(title->text(), QStringLiteral("wss [Pa]"));  // the default title
+    EXPECT_TRUE(viewer->style().legendTitle.empty());
+
+    title->setText(QStringLiteral("Wall shear stress (Pa)"));
+    emit title->editingFinished();
+    EXPECT_EQ(viewer->style().legendTitle, "Wall shear stress (Pa)");
+    const quint64 frames = viewer->framesWithScene();
+    ASSERT_TRUE(waitUntil([&] { return viewer->framesWithScene() > frames; }));
+    ASSERT_TRUE(viewer->shownLegends().parameter.has_value());
+    EXPECT_EQ(render::parameterLegendTitle(*viewer->shownLegends().parameter),
+              "Wall shear stress (Pa)");
+
+    panel->setNoDataColor(QColor(255, 0, 255));
+    ASSERT_TRUE(viewer->style().noDataColor.has_value());
+    EXPECT_FLOAT_EQ(viewer->style().noDataColor->g, 0.0F);
+    EXPECT_EQ(nan->text(), QStringLiteral("#ff00ff"));
+    panel->setNoDataColor(QColor());  // back to the map's own
+    EXPECT_FALSE(viewer->style().noDataColor.has_value());
+
+    // No array: neither applies, and the tooltips say why.
+    auto* array = panel->arrayChooser();
+    array->setCurrentIndex(array->findData(QString()));
+    EXPECT_FALSE(title->isEnabled());
+    EXPECT_FALSE(title->toolTip().isEmpty());
+    EXPECT_TRUE(viewer->style().legendTitle.empty());  // a title belongs to its array
 }
 
 TEST_F(PanelsTest, FunctionalPanelChoosesArrayMapBinsAndRange) {

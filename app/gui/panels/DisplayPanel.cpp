@@ -21,11 +21,6 @@ namespace vv::gui::panels {
 
 namespace {
 
-glm::vec3 toVec(const QColor& color) {
-    return {static_cast<float>(color.redF()), static_cast<float>(color.greenF()),
-            static_cast<float>(color.blueF())};
-}
-
 /// The background choices; the first is the viewer's default.
 struct BackgroundChoice {
     const char* label;  ///< translated in the panel's context

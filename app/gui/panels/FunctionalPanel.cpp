@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/panels/FunctionalPanel.h"
 
+#include <QColorDialog>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -119,6 +120,8 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     connect(rangeMode_, &QComboBox::currentIndexChanged, this, applyLater);
     connect(min_, &QDoubleSpinBox::valueChanged, this, applyLater);
     connect(max_, &QDoubleSpinBox::valueChanged, this, applyLater);
+    connect(nanColor_, &QToolButton::clicked, this, &FunctionalPanel::chooseNoDataColor);
+    connect(legendTitle_, &QLineEdit::editingFinished, this, applyLater);
     // Dragging a range handle on the histogram types the range in.
     connect(histogram_, &HistogramWidget::rangeEdited, this, [this](double lo, double hi) {
         syncing_ = true;
@@ -174,11 +177,12 @@ void FunctionalPanel::arrayChosen() {
     if (lo && hi) {
         percentileRange_ = {static_cast<float>(*lo), static_cast<float>(*hi)};
     }
-    // A typed range belongs to the array it was typed for.
+    // A typed range and a typed title belong to the array they were typed for.
     if (rangeMode() == RangeMode::Manual) {
         const QSignalBlocker blocker(rangeMode_);
         rangeMode_->setCurrentIndex(rangeMode_->findData(static_cast<int>(RangeMode::Auto)));
     }
+    legendTitle_->clear();
     apply();
 }
 
@@ -199,6 +203,11 @@ void FunctionalPanel::apply() {
                                     static_cast<float>(std::max(max_->value(), min_->value()))};
             break;
     }
+    // The default title (name and unit) is no custom title.
+    const QString title = legendTitle_->text().trimmed();
+    const bool custom = !title.isEmpty() && !style.array.empty() && viewer_->scene() &&
+                        title != arrayLabel(*viewer_->scene(), style.array);
+    style.legendTitle = custom ? title.toStdString() : std::string();
     viewer_->setStyle(style);
     syncFromViewer();
     emit changed();
@@ -228,7 +237,9 @@ void FunctionalPanel::syncFromViewer() {
         max_->setValue(static_cast<double>(shown->second));
         histogram_->setRange(static_cast<double>(shown->first), static_cast<double>(shown->second));
     }
-    if (!style.array.empty() && viewer_->scene()) {
+    if (!style.legendTitle.empty()) {
+        legendTitle_->setText(QString::fromStdString(style.legendTitle));
+    } else if (!style.array.empty() && viewer_->scene()) {
         legendTitle_->setText(arrayLabel(*viewer_->scene(), style.array));
     } else {
         legendTitle_->clear();
@@ -238,9 +249,34 @@ void FunctionalPanel::syncFromViewer() {
     updateApplicability();
 }
 
+void FunctionalPanel::setNoDataColor(const QColor& color) {
+    render::MeshStyle style = viewer_->style();
+    if (color.isValid()) {
+        style.noDataColor = toVec(color);
+    } else {
+        style.noDataColor.reset();
+    }
+    viewer_->setStyle(style);
+    syncFromViewer();
+    emit changed();
+}
+
+void FunctionalPanel::chooseNoDataColor() {
+    auto* dialog = new QColorDialog(nanColor_->palette().button().color(), this);
+    dialog->setObjectName(QStringLiteral("noDataColorDialog"));
+    dialog->setWindowTitle(tr("No-data colour"));
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    const auto map = static_cast<colormaps::ColorMap>(map_->currentData().toInt());
+    dialog->setCurrentColor(
+        toQColor(viewer_->style().noDataColor.value_or(colormaps::noDataColor(map))));
+    connect(dialog, &QColorDialog::colorSelected, this, &FunctionalPanel::setNoDataColor);
+    dialog->open();
+}
+
 void FunctionalPanel::updateNanColor() {
     const auto map = static_cast<colormaps::ColorMap>(map_->currentData().toInt());
-    const QColor color = toQColor(colormaps::noDataColor(map));
+    const QColor color =
+        toQColor(viewer_->style().noDataColor.value_or(colormaps::noDataColor(map)));
     nanColor_->setStyleSheet(
         QStringLiteral("QToolButton { background-color: %1; }").arg(color.name()));
     nanColor_->setText(color.name());
@@ -273,13 +309,12 @@ void FunctionalPanel::updateApplicability() {
                   tr("Distribution of the array; the lines mark the range (drag them to change "
                      "it)"),
                   whyNot);
-    // Not adjustable yet: the renderer's no-data colour and legend title are fixed.
-    setApplicable(nanColor_, false, {},
-                  tr("Values without data (NaN) are drawn in this colour, which the colour "
-                     "map fixes (it never occurs in the map itself)"));
-    setApplicable(legendTitle_, false, {},
-                  tr("The legend is titled with the array's name and unit; the renderer "
-                     "does not take a custom title yet"));
+    setApplicable(nanColor_, chosen,
+                  tr("Colour of vertices without a value (NaN). By default each map has one "
+                     "that never occurs in the map itself"),
+                  whyNot);
+    setApplicable(legendTitle_, chosen,
+                  tr("Title of the parameter legend (default: the array's name and unit)"), whyNot);
 }
 
 }  // namespace vv::gui::panels

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QColor>
 #include <QWidget>
 #include <optional>
 #include <utility>
@@ -55,12 +56,16 @@ class FunctionalPanel : public QWidget {
   public slots:
     /// Shows the viewer's current style (without writing it back).
     void syncFromViewer();
+    /// Sets the no-data colour (an invalid colour: the map's own); what the
+    /// button's colour dialog calls.
+    void setNoDataColor(const QColor& color);
 
   signals:
     void changed();
 
   private:
     void apply();
+    void chooseNoDataColor();
     void arrayChosen();
     void updateApplicability();
     void updateNanColor();

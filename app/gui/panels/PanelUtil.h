@@ -38,6 +38,12 @@ inline QColor toQColor(const glm::vec3& srgb) {
     return QColor::fromRgbF(srgb.r, srgb.g, srgb.b);
 }
 
+/// A QColor as sRGB components in [0, 1].
+inline glm::vec3 toVec(const QColor& color) {
+    return {static_cast<float>(color.redF()), static_cast<float>(color.greenF()),
+            static_cast<float>(color.blueF())};
+}
+
 /// "wss [Pa]" for a point array with a unit on some mesh of `scene`, else "wss".
 [[nodiscard]] QString arrayLabel(const io::Scene& scene, const std::string& name);
 

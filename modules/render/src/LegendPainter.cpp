@@ -230,6 +230,9 @@ QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles, do
 }
 
 std::string parameterLegendTitle(const ParameterLegend& legend) {
+    if (!legend.title.empty()) {
+        return legend.title;
+    }
     return legend.name + (legend.unit.empty() ? "" : " (" + legend.unit + ")");
 }
 
@@ -253,6 +256,7 @@ Legends legendsFor(const io::Scene* scene, const MeshStyle& style,
         parameter.max = range->second;
         parameter.map = style.colorMap;
         parameter.bins = style.bins;
+        parameter.title = style.legendTitle;
         if (scene != nullptr) {
             for (const auto& mesh : scene->meshes) {
                 if (const io::DataArray* array = mesh.pointArray(style.array)) {

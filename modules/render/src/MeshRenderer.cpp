@@ -548,7 +548,7 @@ void MeshRenderer::useMaterial(unsigned program, const VesselCueParameters& cue)
     const bool useArray = !style_.array.empty();
     // An array without any finite value shows no-data everywhere.
     const std::pair<float, float> range = effectiveRange_.value_or(std::make_pair(0.0F, 1.0F));
-    const glm::vec3 noData = colormaps::noDataColor(style_.colorMap);
+    const glm::vec3 noData = style_.noDataColor.value_or(colormaps::noDataColor(style_.colorMap));
     const Lighting& light = sceneLighting();
     f.glUseProgram(program);
     const auto loc = [&](const char* name) { return f.glGetUniformLocation(program, name); };

@@ -38,7 +38,8 @@ struct ParameterLegend {
     float min = 0.0F;  ///< value at the map's first colour
     float max = 1.0F;  ///< ... at its last
     colormaps::ColorMap map = colormaps::ColorMap::Viridis;
-    int bins = 0;  ///< colormaps bins (0 = continuous)
+    int bins = 0;       ///< colormaps bins (0 = continuous)
+    std::string title;  ///< replaces "name (unit)" when not empty (MeshStyle::legendTitle)
 };
 
 /// The legends a frame shows; each only when its scale is used.
@@ -74,7 +75,7 @@ struct LegendTick {
 /// (the caller elides it).
 [[nodiscard]] QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles,
                                    double width);
-/// "wss (Pa)", or the name alone without a unit.
+/// "wss (Pa)", or the name alone without a unit; the legend's own title when it has one.
 [[nodiscard]] std::string parameterLegendTitle(const ParameterLegend& legend);
 
 /// The legends for a frame: the depth legend when the VSS is on and shown

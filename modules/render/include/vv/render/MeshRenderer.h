@@ -36,6 +36,11 @@ struct MeshStyle {
     std::optional<std::pair<float, float>> range;
     /// The neutral vessel material, used when no array is chosen.
     glm::vec3 vesselColor{0.85F, 0.42F, 0.38F};
+    /// Colour of vertices without a value (NaN, or a mesh without the array);
+    /// nullopt = the map's colormaps::noDataColor(), which the map never uses.
+    std::optional<glm::vec3> noDataColor;
+    /// Title of the parameter legend; empty = "name (unit)" of the array.
+    std::string legendTitle;
     /// Blinn-Phong with a headlight-like key light and ambient; false draws
     /// flat, unlit colours (exact colour-map colours, for checks and pickers).
     bool lighting = true;
