@@ -377,6 +377,25 @@
         <source>Ctrl + click (any click in Measure mode)</source>
         <translation>Strg + Klick (im Messmodus jeder Klick)</translation>
     </message>
+    <message>
+        <source>Open &amp;Folder…</source>
+        <translation>&amp;Ordner öffnen…</translation>
+    </message>
+    <message>
+        <source>Open DICOM folder</source>
+        <translation>DICOM-Ordner öffnen</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: no DICOM images found (%n file(s) skipped)</source>
+        <translation>
+            <numerusform>%1: keine DICOM-Bilder gefunden (%n Datei übersprungen)</numerusform>
+            <numerusform>%1: keine DICOM-Bilder gefunden (%n Dateien übersprungen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Choose a series</source>
+        <translation>Serie auswählen</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -409,6 +428,117 @@
     <message>
         <source>unexpected error</source>
         <translation>unerwarteter Fehler</translation>
+    </message>
+    <message>
+        <source>Reading the DICOM headers of %1</source>
+        <translation>DICOM-Header von %1 werden gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SeriesDialog</name>
+    <message>
+        <source>Choose a DICOM Series</source>
+        <translation>DICOM-Serie auswählen</translation>
+    </message>
+    <message>
+        <source>Patient / study / series</source>
+        <translation>Patient / Studie / Serie</translation>
+    </message>
+    <message>
+        <source>Modality</source>
+        <translation>Modalität</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Images</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Größe</translation>
+    </message>
+    <message>
+        <source>Spacing (mm)</source>
+        <translation>Abstand (mm)</translation>
+    </message>
+    <message>
+        <source>Patient %1</source>
+        <translation>Patient %1</translation>
+    </message>
+    <message>
+        <source>Patient: %1</source>
+        <translation>Patient: %1</translation>
+    </message>
+    <message>
+        <source>Study</source>
+        <translation>Studie</translation>
+    </message>
+    <message>
+        <source>Study %1</source>
+        <translation>Studie %1</translation>
+    </message>
+    <message>
+        <source>Series %1</source>
+        <translation>Serie %1</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>Serie</translation>
+    </message>
+    <message>
+        <source>%1 × %2</source>
+        <translation>%1 × %2</translation>
+    </message>
+    <message>
+        <source>%1 — cannot be loaded: %2</source>
+        <translation>%1 — kann nicht geladen werden: %2</translation>
+    </message>
+    <message>
+        <source>Skipped files: %1</source>
+        <translation>Übersprungene Dateien: %1</translation>
+    </message>
+    <message>
+        <source>Vessel segmentation</source>
+        <translation>Gefäßsegmentierung</translation>
+    </message>
+    <message>
+        <source>Default for the modality</source>
+        <translation>Vorgabe der Modalität</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <source>Threshold range:</source>
+        <translation>Schwellwertbereich:</translation>
+    </message>
+    <message>
+        <source>Keep this many of the largest connected components</source>
+        <translation>So viele der größten zusammenhängenden Komponenten behalten</translation>
+    </message>
+    <message>
+        <source>Components to keep:</source>
+        <translation>Behaltene Komponenten:</translation>
+    </message>
+    <message>
+        <source>Remove bone-like components</source>
+        <translation>Knochenähnliche Komponenten entfernen</translation>
+    </message>
+    <message>
+        <source>Load Series</source>
+        <translation>Serie laden</translation>
+    </message>
+    <message>
+        <source>CT angiography: 200 to 700 HU</source>
+        <translation>CT-Angiographie: 200 bis 700 HU</translation>
+    </message>
+    <message>
+        <source>from the histogram when loaded</source>
+        <translation>beim Laden aus dem Histogramm</translation>
     </message>
 </context>
 <context>

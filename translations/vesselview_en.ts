@@ -10,6 +10,13 @@
             <numerusform>%n files</numerusform>
         </translation>
     </message>
+    <message numerus="yes">
+        <source>%1: no DICOM images found (%n file(s) skipped)</source>
+        <translation>
+            <numerusform>%1: no DICOM images found (%n file skipped)</numerusform>
+            <numerusform>%1: no DICOM images found (%n files skipped)</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeshLoadTask</name>

@@ -9,6 +9,8 @@
 
 namespace vv::cli {
 
+int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+
 namespace {
 
 constexpr const char* kUsageText =
@@ -18,6 +20,7 @@ constexpr const char* kUsageText =
     "  info FILE... [--json] [--scale S]   meshes, triangle counts, arrays with ranges and units\n"
     "  demo -o FILE.vtp [--seed N] [--generations G] [--voxel-size MM]\n"
     "                                       write the synthetic demo vessel tree\n"
+    "  demo --dicom DIR                     write it voxelised as a CT angiography series\n"
     "  render FILE -o IMAGE.png [--size WxH] [--array NAME|none] [--colormap NAME]\n"
     "         [--background #rrggbb] [--vss on|off] [--scale cd|pcd|dmd] [--p P]\n"
     "         [--isolines N] [--solver NAME] [--tolerance T] [--timings]\n"
@@ -101,6 +104,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "bench") {
             return benchCommand(rest, out, err);
+        }
+        if (command == "soak") {  // hidden: scripts/soak (SoakCommand.cpp)
+            return soakCommand(rest, out, err);
         }
         throw UsageError("unknown command '" + command + "'");
     } catch (const UsageError& e) {

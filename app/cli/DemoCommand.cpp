@@ -1,10 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `vesselview-cli demo -o FILE.vtp [--seed N] [--generations G] [--voxel-size MM]`:
-// writes the synthetic demo vessel tree.
+// writes the synthetic demo vessel tree; `demo --dicom DIR` writes it as a CT series.
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -16,6 +17,7 @@
 
 #include "cli/Cli.h"
 #include "vv/core/Error.h"
+#include "vv/io/DemoCtSeries.h"
 #include "vv/io/DemoTree.h"
 #include "vv/io/MeshWriter.h"
 
@@ -25,8 +27,13 @@ namespace {
 
 constexpr const char* kDemoUsage =
     "usage: vesselview-cli demo -o FILE.vtp [--seed N] [--generations G] [--voxel-size MM]\n"
+    "       vesselview-cli demo --dicom DIR\n"
     "  Writes the synthetic demo vessel tree with pressure [mmHg], wss [Pa],\n"
     "  segment_id and generation point arrays as VTK XML polydata.\n"
+    "  --dicom DIR         instead: write the tree (4 generations) voxelised as a\n"
+    "                      CT angiography series into DIR (lumen ~400 HU, tissue\n"
+    "                      ~40 HU with noise, a bone-like block ~1000 HU; 96 x 96\n"
+    "                      x 80 voxels, one file per slice)\n"
     "  -o, --output FILE   the .vtp file to write (required)\n"
     "  --seed N            random seed (same seed, same tree)\n"
     "  --generations G     branching generations, 1..10 (default 6)\n"
@@ -70,11 +77,36 @@ bool hasVtpExtension(const std::filesystem::path& file) {
     return ext == ".vtp";
 }
 
+/// `demo --dicom DIR`: the voxelised demo tree as a CT series.
+int writeDemoDicom(const std::filesystem::path& folder, std::ostream& out) {
+    std::error_code ec;
+    if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec)) {
+        throw OutputError(folder.string() + ": cannot write: not a folder");
+    }
+    const vv::io::DemoCt cta = vv::io::generateDemoCt();
+    std::string uid;
+    try {
+        uid = vv::io::writeCtSeries(folder, cta.volume);
+    } catch (const vv::IoError& e) {
+        throw OutputError(e.what());
+    }
+    const glm::ivec3 dims = cta.volume.dims();
+    const glm::dvec3 spacing = cta.volume.spacing();
+    char size[96];
+    std::snprintf(size, sizeof size, "%d x %d x %d voxels, %.3g x %.3g x %.3g mm", dims.x, dims.y,
+                  dims.z, spacing.x, spacing.y, spacing.z);
+    out << "wrote " << folder.string() << ": CT series of " << dims.z << " slices, " << size
+        << ", series " << uid << "\n";
+    return kOk;
+}
+
 }  // namespace
 
 int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
     std::filesystem::path output;
+    std::filesystem::path dicomFolder;
     vv::io::DemoTreeOptions options;
+    bool treeOptionGiven = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         // "--name value" or "--name=value"
@@ -101,20 +133,34 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         }
         if (name == "-o" || name == "--output") {
             output = takeValue();
+        } else if (name == "--dicom") {
+            dicomFolder = takeValue();
+            if (dicomFolder.empty()) {
+                throw UsageError("--dicom needs a folder");
+            }
         } else if (name == "--seed") {
             options.seed = parseUnsigned(name, takeValue());
+            treeOptionGiven = true;
         } else if (name == "--generations") {
             options.generations = parseInt(name, takeValue());
+            treeOptionGiven = true;
         } else if (name == "--voxel-size") {
             options.voxelSizeMm = parseDouble(name, takeValue());
+            treeOptionGiven = true;
         } else if (!a.empty() && a[0] == '-') {
             throw UsageError("unknown option '" + a + "' for demo");
         } else {
             throw UsageError("unexpected argument '" + a + "' for demo (the output goes after -o)");
         }
     }
+    if (!dicomFolder.empty()) {
+        if (!output.empty() || treeOptionGiven) {
+            throw UsageError("demo --dicom DIR takes no other option");
+        }
+        return writeDemoDicom(dicomFolder, out);
+    }
     if (output.empty()) {
-        throw UsageError("demo needs an output file: -o FILE.vtp");
+        throw UsageError("demo needs an output file: -o FILE.vtp or --dicom DIR");
     }
     if (!hasVtpExtension(output)) {
         throw UsageError("the demo output must be a .vtp file, not '" + output.string() + "'");

@@ -38,6 +38,7 @@
 #include "common/ResourcePaths.h"
 #include "gui/MeasureOverlay.h"
 #include "gui/MeshLoadTask.h"
+#include "gui/SeriesDialog.h"
 #include "gui/Translations.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
@@ -51,6 +52,7 @@
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshLoader.h"
+#include "vv/io/SceneSource.h"
 #include "vv/io/Versions.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/vss/Versions.h"
@@ -162,6 +164,13 @@ void MainWindow::buildMenus() {
         }
     });
     open->setShortcut(QKeySequence::Open);
+    QAction* openFolder = file->addAction(tr("Open &Folder…"), this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(this, tr("Open DICOM folder"));
+        if (!folder.isEmpty()) {
+            openDicom(folder);
+        }
+    });
+    openFolder->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_O));
     file->addAction(tr("Open &Demo"), this, &MainWindow::openDemo);
     recentMenu_ = file->addMenu(tr("Open &Recent"));
     rebuildRecentMenu();
@@ -514,6 +523,38 @@ void MainWindow::openFiles(const QStringList& files) {
         return;
     }
     startTask(MeshLoadTask::loadFiles(std::move(paths), this), names);
+}
+
+void MainWindow::openDicom(const QString& path) {
+    if (path.isEmpty()) {
+        return;
+    }
+    MeshLoadTask* task = MeshLoadTask::scanDicom(QFile::encodeName(path).toStdString(), this);
+    connect(task, &MeshLoadTask::scanned, this,
+            [this, path](std::shared_ptr<const io::DicomScanResult> scan) {
+                if (scan->allSeries().empty()) {
+                    const int skipped = static_cast<int>(scan->skipped.size());
+                    showError(tr("Cannot open"),
+                              tr("%1: no DICOM images found (%n file(s) skipped)", nullptr, skipped)
+                                  .arg(path));
+                    return;
+                }
+                statusLabel_->setText(tr("Choose a series"));
+                auto* dialog = new SeriesDialog(*scan, this);
+                dialog->setAttribute(Qt::WA_DeleteOnClose);
+                connect(dialog, &QDialog::accepted, this, [this, dialog, path] {
+                    std::vector<std::filesystem::path> paths{QFile::encodeName(path).toStdString()};
+                    startTask(MeshLoadTask::loadFiles(std::move(paths),
+                                                      dialog->sceneSourceOptions(), this),
+                              {path});
+                });
+                connect(dialog, &QDialog::rejected, this,
+                        [this] { statusLabel_->setText(tr("Ready")); });
+                dialog->open();
+                emit seriesDialogShown(dialog);
+            });
+    // No files for the title / recent list: the chosen series' task has them.
+    startTask(task, {});
 }
 
 void MainWindow::openDemo() {
@@ -869,7 +910,10 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
         return QFileInfo(f).suffix().compare(QLatin1String(kSessionSuffix), Qt::CaseInsensitive) ==
                0;
     });
-    if (session || !localFiles(event->mimeData(), true).isEmpty()) {
+    const bool dicom = std::any_of(any.begin(), any.end(), [](const QString& f) {
+        return QFileInfo(f).isDir() || io::isDicomSource(QFile::encodeName(f).toStdString());
+    });
+    if (session || dicom || !localFiles(event->mimeData(), true).isEmpty()) {
         event->acceptProposedAction();
     }
 }
@@ -887,6 +931,15 @@ void MainWindow::dropEvent(QDropEvent* event) {
     if (!files.isEmpty()) {
         event->acceptProposedAction();
         openFiles(files);
+        return;
+    }
+    // A folder, DICOMDIR or DICOM file: the series chooser (the first one dropped).
+    for (const QString& file : localFiles(event->mimeData(), false)) {
+        if (QFileInfo(file).isDir() || io::isDicomSource(QFile::encodeName(file).toStdString())) {
+            event->acceptProposedAction();
+            openDicom(file);
+            return;
+        }
     }
 }
 

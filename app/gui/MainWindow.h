@@ -29,6 +29,7 @@ namespace vv::gui {
 
 class MeasureOverlay;
 class MeshLoadTask;
+class SeriesDialog;
 class ViewerWidget;
 
 namespace panels {
@@ -55,6 +56,14 @@ class MainWindow : public QMainWindow {
 
     /// Loads `files` (one scene) on a worker; cancels a load in progress.
     void openFiles(const QStringList& files);
+    /// File > Open Folder… and dropped folders / DICOM files: reads the DICOM
+    /// headers under `path` (a folder, a DICOMDIR or a DICOM file) on a
+    /// worker with progress and Cancel, then shows the series chooser
+    /// (SeriesDialog, window-modal, not blocking; seriesDialogShown()) and,
+    /// once accepted, loads the chosen series on a worker: segmented into
+    /// vessel surfaces with the options chosen there. A path without any
+    /// image series shows an error message naming it.
+    void openDicom(const QString& path);
     /// Opens the demo: $VV_DEMO_FILE, else the bundled vessel-tree.vtp (build
     /// tree or installed), else generates it on a worker.
     void openDemo();
@@ -154,6 +163,8 @@ class MainWindow : public QMainWindow {
     void loadFailed(const QString& message);
     /// A session's camera and settings were applied (after its files loaded).
     void sessionApplied();
+    /// The series chooser of openDicom() is open.
+    void seriesDialogShown(vv::gui::SeriesDialog* dialog);
 
   protected:
     void dragEnterEvent(QDragEnterEvent* event) override;

@@ -12,6 +12,7 @@
 #include "vv/core/Progress.h"
 #include "vv/io/DemoTree.h"
 #include "vv/io/MeshLoader.h"
+#include "vv/io/SceneSource.h"
 
 namespace vv::gui {
 
@@ -24,15 +25,32 @@ QString toQString(const std::filesystem::path& path) {
 }  // namespace
 
 MeshLoadTask* MeshLoadTask::loadFiles(std::vector<std::filesystem::path> files, QObject* parent) {
-    return new MeshLoadTask(std::move(files), false, parent);
+    return new MeshLoadTask(std::move(files), false, {}, parent);
+}
+
+MeshLoadTask* MeshLoadTask::loadFiles(std::vector<std::filesystem::path> files,
+                                      io::SceneSourceOptions dicomOptions, QObject* parent) {
+    return new MeshLoadTask(std::move(files), false, std::move(dicomOptions), parent);
+}
+
+MeshLoadTask* MeshLoadTask::scanDicom(std::filesystem::path path, QObject* parent) {
+    auto* task = new MeshLoadTask({std::move(path)}, false, {}, parent);
+    task->scan_ = true;
+    task->description_ =
+        tr("Reading the DICOM headers of %1").arg(toQString(task->files_.front().filename()));
+    return task;
 }
 
 MeshLoadTask* MeshLoadTask::generateDemo(QObject* parent) {
-    return new MeshLoadTask({}, true, parent);
+    return new MeshLoadTask({}, true, {}, parent);
 }
 
-MeshLoadTask::MeshLoadTask(std::vector<std::filesystem::path> files, bool demo, QObject* parent)
-    : QObject(parent), files_(std::move(files)), demo_(demo) {
+MeshLoadTask::MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
+                           io::SceneSourceOptions dicomOptions, QObject* parent)
+    : QObject(parent),
+      files_(std::move(files)),
+      demo_(demo),
+      dicomOptions_(std::move(dicomOptions)) {
     if (demo_) {
         description_ = tr("Generating the demo vessel tree");
     } else if (files_.size() == 1) {
@@ -91,11 +109,30 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
         std::move(stop));
     try {
         progress.throwIfCancelled();
+        if (scan_) {
+            result.scan = std::make_shared<const io::DicomScanResult>(
+                io::scanDicom(files_.front(), progress));
+            return result;
+        }
         auto scene = std::make_shared<io::Scene>();
         if (demo_) {
             scene->meshes.push_back(io::generateDemoMesh({}, progress));
-        } else {
+        } else if (std::none_of(files_.begin(), files_.end(),
+                                [](const auto& f) { return io::isDicomSource(f); })) {
             *scene = io::loadScene(files_, {}, progress);
+        } else {
+            // DICOM sources are segmented one by one; meshes load as before.
+            const double n = static_cast<double>(files_.size());
+            for (std::size_t i = 0; i < files_.size(); ++i) {
+                const Progress part =
+                    progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);
+                io::Scene one = io::isDicomSource(files_[i])
+                                    ? io::loadSceneSource(files_[i], dicomOptions_, part)
+                                    : io::loadScene({files_[i]}, {}, part);
+                for (auto& mesh : one.meshes) {
+                    scene->meshes.push_back(std::move(mesh));
+                }
+            }
         }
         result.scene = std::move(scene);
     } catch (const CancelledError&) {
@@ -116,6 +153,8 @@ void MeshLoadTask::deliver() {
     // A cancel that came too late to stop the worker still discards its result.
     if (result.cancelled || stop_.stop_requested()) {
         emit cancelled();
+    } else if (result.scan) {
+        emit scanned(result.scan);
     } else if (result.scene) {
         emit loaded(result.scene);
     } else {

@@ -12,14 +12,18 @@
 #include <vector>
 
 #include "vv/io/Mesh.h"
+#include "vv/io/SceneSource.h"
 
 namespace vv::gui {
 
-/// Loads mesh files (vv::io::loadScene) or generates the demo tree
-/// (vv::io::generateDemoMesh) on a worker thread, never on the GUI thread.
+/// Loads mesh files (vv::io::loadScene), DICOM sources — a folder, a DICOMDIR
+/// or a DICOM file, segmented into vessel surfaces (vv::io::loadSceneSource)
+/// — or generates the demo tree (vv::io::generateDemoMesh) on a worker
+/// thread, never on the GUI thread.
 ///
 /// Progress arrives through progressChanged() (queued to the GUI thread,
-/// throttled); exactly one of loaded(), failed() or cancelled() follows,
+/// throttled); exactly one of loaded() (scanned() for a
+/// scanDicom task), failed() or cancelled() follows,
 /// emitted on the GUI thread, then finished(). cancel() asks the worker to
 /// stop at its next progress report (std::stop_source). The destructor
 /// cancels and waits for the worker.
@@ -27,9 +31,17 @@ class MeshLoadTask : public QObject {
     Q_OBJECT
 
   public:
-    /// A task that loads `files` into one scene, in order.
+    /// A task that loads `files` into one scene, in order. Paths that are
+    /// DICOM sources (vv::io::isDicomSource) go through loadSceneSource()
+    /// with `dicomOptions` (default: the only series, modality defaults);
+    /// when there are none, the meshes load with loadScene() as one batch.
     static MeshLoadTask* loadFiles(std::vector<std::filesystem::path> files,
                                    QObject* parent = nullptr);
+    static MeshLoadTask* loadFiles(std::vector<std::filesystem::path> files,
+                                   io::SceneSourceOptions dicomOptions, QObject* parent);
+    /// A task that reads the DICOM headers under `path` (vv::io::scanDicom)
+    /// and delivers them through scanned() instead of loaded().
+    static MeshLoadTask* scanDicom(std::filesystem::path path, QObject* parent = nullptr);
     /// A task that generates the synthetic demo vessel tree.
     static MeshLoadTask* generateDemo(QObject* parent = nullptr);
 
@@ -52,28 +64,35 @@ class MeshLoadTask : public QObject {
   signals:
     /// `fraction` in [0, 1] of the work done, and the current stage.
     void progressChanged(double fraction, const QString& stage);
+    /// The DICOM headers are read (scanDicom tasks).
+    void scanned(std::shared_ptr<const vv::io::DicomScanResult> scan);
     /// The scene is ready.
     void loaded(std::shared_ptr<const vv::io::Scene> scene);
-    /// Loading failed; `file` is the file concerned (may be empty), `problem` the reason.
+    /// Loading (or scanning) failed; `file` is the file concerned (may be empty), `problem` the
+    /// reason.
     void failed(const QString& file, const QString& problem);
     void cancelled();
-    /// After loaded(), failed() or cancelled().
+    /// After loaded(), scanned(), failed() or cancelled().
     void finished();
 
   private:
     struct Result {
         std::shared_ptr<const io::Scene> scene;
+        std::shared_ptr<const io::DicomScanResult> scan;
         QString file;
         QString problem;
         bool cancelled = false;
     };
 
-    MeshLoadTask(std::vector<std::filesystem::path> files, bool demo, QObject* parent);
+    MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
+                 io::SceneSourceOptions dicomOptions, QObject* parent);
     [[nodiscard]] Result work(std::stop_token stop);
     void deliver();
 
     std::vector<std::filesystem::path> files_;
     bool demo_ = false;
+    bool scan_ = false;
+    io::SceneSourceOptions dicomOptions_;
     QString description_;
     std::stop_source stop_;
     QFuture<Result> future_;

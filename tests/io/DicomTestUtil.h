@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "vv/io/DemoCtSeries.h"
 #include "vv/io/Volume.h"
 
 namespace vv::test {
@@ -209,53 +210,16 @@ inline void writeEnhanced(const std::filesystem::path& file, const TestSlice& s,
     }
 }
 
-/// Writes `volume` (values in HU) as a CT series in `folder`, one file per
-/// slice (explicit VR little endian, unsigned 16-bit stored values, Rescale
-/// Slope 1 / Intercept -1024): new Study / Series / SOP Instance UIDs, Image
-/// Orientation / Position from volume.indexToWorld() (row direction = column
-/// 0, column direction = column 1, slice k at origin + k * column 2), Pixel
-/// Spacing from the column lengths, Slice Thickness = the step along the
-/// normal. Instance numbers run backwards so that only positions give the
-/// order. Returns the Series Instance UID. Throws std::runtime_error.
+/// Writes `volume` (values in HU) as a CT series in `folder` with the fake
+/// patient above: vv::io::writeCtSeries() (instance numbers run backwards, so
+/// that only positions give the order). Returns the Series Instance UID.
 inline std::string writeCtSeries(const std::filesystem::path& folder, const vv::io::Volume& volume,
                                  const std::string& description = "synthetic CTA") {
-    std::filesystem::create_directories(folder);
-    const glm::dmat4& m = volume.indexToWorld();
-    const glm::dvec3 c0(m[0]);
-    const glm::dvec3 c1(m[1]);
-    const glm::dvec3 c2(m[2]);
-    const glm::dvec3 origin(m[3]);
-    const glm::dvec3 row = glm::normalize(c0);
-    const glm::dvec3 column = glm::normalize(c1);
-    const glm::dvec3 normal = glm::normalize(glm::cross(row, column));
-    TestSlice s;
-    s.columns = volume.dims().x;
-    s.rows = volume.dims().y;
-    s.isSigned = false;
-    s.bitsStored = 16;
-    s.intercept = -1024.0;
-    s.slope = 1.0;
-    s.orientation = std::array<double, 6>{row.x, row.y, row.z, column.x, column.y, column.z};
-    s.pixelSpacing = {glm::length(c1), glm::length(c0)};
-    s.sliceThickness = std::abs(glm::dot(c2, normal));
-    s.studyUid = newUid();
-    s.seriesUid = newUid();
-    s.description = description;
-    s.stored.resize(static_cast<std::size_t>(s.rows) * static_cast<std::size_t>(s.columns));
-    for (int k = 0; k < volume.dims().z; ++k) {
-        for (int j = 0; j < s.rows; ++j) {
-            for (int i = 0; i < s.columns; ++i) {
-                const double hu = std::round(static_cast<double>(volume.value(i, j, k)));
-                s.stored[static_cast<std::size_t>(j) * static_cast<std::size_t>(s.columns) +
-                         static_cast<std::size_t>(i)] =
-                    static_cast<std::int32_t>(std::clamp(hu + 1024.0, 0.0, 65535.0));
-            }
-        }
-        s.position = origin + static_cast<double>(k) * c2;
-        s.instanceNumber = volume.dims().z - k;
-        writeSlice(folder / ("slice" + std::to_string(k) + ".dcm"), s);
-    }
-    return s.seriesUid;
+    vv::io::CtSeriesWriteOptions options;
+    options.seriesDescription = description;
+    options.patientName = kPatientName;
+    options.patientId = kPatientId;
+    return vv::io::writeCtSeries(folder, volume, options);
 }
 
 }  // namespace vv::test

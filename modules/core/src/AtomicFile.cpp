@@ -4,6 +4,8 @@
 #include <unistd.h>
 
 #include <atomic>
+#include <cstdint>
+#include <filesystem>
 #include <string>
 #include <system_error>
 
@@ -12,6 +14,23 @@
 namespace vv {
 
 namespace fs = std::filesystem;
+
+namespace {
+
+/// " (no space left on device: the disk is full)" when the file system of
+/// `folder` has (almost) no room left, else empty: a failed write says why.
+/// Called before the partial file is removed, while it still fills the disk.
+std::string diskFullNote(const fs::path& folder) {
+    std::error_code ec;
+    const fs::space_info space = fs::space(folder, ec);
+    constexpr std::uintmax_t kAlmostFull = 64 * 1024;
+    if (ec || (space.available >= kAlmostFull && space.free >= kAlmostFull)) {
+        return {};
+    }
+    return " (no space left on device: the disk is full)";
+}
+
+}  // namespace
 
 void writeAtomically(const fs::path& target, const std::function<void(const fs::path&)>& write) {
     static std::atomic<unsigned> counter{0};
@@ -28,12 +47,22 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
                   std::to_string(counter.fetch_add(1)));
     try {
         write(temporary);
+    } catch (const IoError& e) {
+        const std::string full = diskFullNote(folder);
+        fs::remove(temporary, ec);
+        if (full.empty()) {
+            throw;
+        }
+        throw IoError(target, e.problem() + full);
     } catch (...) {
         fs::remove(temporary, ec);
         throw;
     }
     if (!fs::exists(temporary, ec)) {
-        throw IoError(target, "cannot write: nothing was written (no permission or disk full?)");
+        const std::string full = diskFullNote(folder);
+        throw IoError(target,
+                      "cannot write: nothing was written" +
+                          (full.empty() ? std::string(" (no permission or disk full?)") : full));
     }
     fs::rename(temporary, target, ec);
     if (ec) {

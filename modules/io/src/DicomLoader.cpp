@@ -513,7 +513,8 @@ DicomVolume loadDicomVolume(const fs::path& path, std::string_view seriesInstanc
         if (all.size() > 1) {
             std::string list;
             for (const auto* s : all) {
-                list += "\n  " + s->seriesInstanceUid;
+                list += "\n  " + (s->seriesInstanceUid.empty() ? std::string("(no UID)")
+                                                               : s->seriesInstanceUid);
             }
             throw FormatError(path, "holds " + std::to_string(all.size()) +
                                         " series; choose one by its Series Instance UID:" + list);

@@ -176,6 +176,10 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
             if (*count > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
                 throw bad("element count " + printable(words[2]) + " is absurd");
             }
+            constexpr std::size_t kMaxElements = 1000;  // the check below is quadratic
+            if (elements.size() >= kMaxElements) {
+                throw bad("more than " + std::to_string(kMaxElements) + " elements: corrupt file");
+            }
             if (std::any_of(elements.begin(), elements.end(),
                             [&](const PlyElement& e) { return e.name == words[1]; })) {
                 throw bad("a second element called '" + printable(words[1]) + "'");
@@ -202,6 +206,13 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
             if (property.type.size == 0)
                 throw bad("unknown property type");
             const auto& existing = elements.back().properties;
+            // Real files have a handful; the duplicate check below (and
+            // vtkPLY's property look-ups) are quadratic in the count.
+            constexpr std::size_t kMaxProperties = 1000;
+            if (existing.size() >= kMaxProperties) {
+                throw bad("more than " + std::to_string(kMaxProperties) +
+                          " properties in one element: corrupt file");
+            }
             if (std::any_of(existing.begin(), existing.end(),
                             [&](const PlyProperty& p) { return p.name == property.name; })) {
                 throw bad("a second property called '" + printable(property.name) + "'");

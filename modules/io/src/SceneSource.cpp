@@ -158,7 +158,9 @@ Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& options,
     if (fs::is_regular_file(path, ec) && upperName != "DICOMDIR" && uid.empty()) {
         const DicomScanResult one = scanDicom(path, progress.sub(0.0, 0.01));
         const auto series = one.allSeries();
-        if (series.size() == 1) {
+        // Without a UID the file cannot be matched to its folder's series:
+        // it is loaded on its own (and its own problem reported).
+        if (series.size() == 1 && !series.front()->seriesInstanceUid.empty()) {
             uid = series.front()->seriesInstanceUid;
             where = path.has_parent_path() ? path.parent_path() : fs::path(".");
         }

@@ -1,0 +1,252 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli soak FRAMES [--mesh FILE] [--size WxH] [--every N]`
+// (hidden; scripts/soak runs it): renders FRAMES frames in one process with
+// the camera and the settings changing every frame, and checks that resident
+// memory does not grow (issue 9, docs/reliability.md).
+#include <QGuiApplication>
+#include <QImage>
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cli/Cli.h"
+#include "cli/GuiApplication.h"
+#include "cli/RenderOptions.h"
+#include "vv/colormaps/ColorMap.h"
+#include "vv/colormaps/DepthScale.h"
+#include "vv/core/Error.h"
+#include "vv/io/DemoTree.h"
+#include "vv/io/MeshLoader.h"
+#include "vv/render/Camera.h"
+#include "vv/render/OffscreenRenderer.h"
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
+namespace vv::cli {
+
+namespace {
+
+constexpr const char* kSoakUsage =
+    "usage: vesselview-cli soak FRAMES [--mesh FILE] [--size WxH] [--every N]\n"
+    "                               [--resize-every N] [--trim]\n"
+    "  Renders FRAMES frames (>= 101) offscreen in one process, changing the camera\n"
+    "  and the settings (VSS, scale, p, iso-lines, colour map, array, AO, FXAA,\n"
+    "  cue, legends, size) every frame; OpenGL errors are checked after every\n"
+    "  frame (a GL error fails the frame). Prints resident memory (VmRSS) after\n"
+    "  frame 100 and at the end, and every N frames (default 1000). RSS swings by\n"
+    "  tens of MiB within a frame (transient buffers), so it is read after every\n"
+    "  frame and each figure is the peak over a window of 100 frames: frames\n"
+    "  1..100 and the last 100. Exit 1 when the end is more than 5% above.\n"
+    "  --mesh FILE  the scene (default: the demo tree, generated in memory)\n"
+    "  --size WxH   the base image size (default 640x480)\n"
+    "  --resize-every N  switch between the base size and 3/4 of it every N\n"
+    "               frames (default 500; 0 = never)\n"
+    "  --trim       return freed heap to the system (malloc_trim) before each\n"
+    "               reading: tells a leak from allocator high-water marks\n";
+
+/// VmRSS of this process in KiB, from /proc/self/status; 0 when unknown.
+/// With `trim`, first returns the free heap to the system.
+std::uint64_t residentKiB(bool trim) {
+#if defined(__GLIBC__)
+    if (trim) {
+        malloc_trim(0);
+    }
+#else
+    (void)trim;
+#endif
+    std::ifstream status("/proc/self/status");
+    std::string line;
+    while (std::getline(status, line)) {
+        if (line.rfind("VmRSS:", 0) == 0) {
+            return std::strtoull(line.c_str() + 6, nullptr, 10);
+        }
+    }
+    return 0;
+}
+
+std::string mib(std::uint64_t kib) {
+    char buffer[32];
+    std::snprintf(buffer, sizeof buffer, "%.1f MiB", static_cast<double>(kib) / 1024.0);
+    return buffer;
+}
+
+}  // namespace
+
+int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    long frames = 0;
+    std::filesystem::path meshFile;
+    int width = 640;
+    int height = 480;
+    long every = 1000;
+    long resizeEvery = 500;
+    bool trim = false;
+    for (std::size_t i = 0; i < args.size(); ++i) {
+        const std::string& a = args[i];
+        const auto value = [&]() -> const std::string& {
+            if (i + 1 >= args.size()) {
+                throw UsageError("soak: " + a + " needs a value");
+            }
+            return args[++i];
+        };
+        if (a == "--help" || a == "-h") {
+            out << kSoakUsage;
+            return kOk;
+        }
+        if (a == "--mesh") {
+            meshFile = value();
+        } else if (a == "--size") {
+            const std::string& size = value();
+            const auto x = size.find('x');
+            if (x == std::string::npos) {
+                throw UsageError("soak: --size needs WxH, not '" + size + "'");
+            }
+            width = parseInt(size.substr(0, x), "--size width");
+            height = parseInt(size.substr(x + 1), "--size height");
+            if (width < 16 || height < 16 || width > 4096 || height > 4096) {
+                throw UsageError("soak: --size must be within 16..4096 per side");
+            }
+        } else if (a == "--resize-every") {
+            resizeEvery = std::max(0, parseInt(value(), "--resize-every"));
+        } else if (a == "--trim") {
+            trim = true;
+        } else if (a == "--every") {
+            every = std::max(1, parseInt(value(), "--every"));
+        } else if (!a.empty() && a[0] != '-' && frames == 0) {
+            frames = parseInt(a, "FRAMES");
+        } else {
+            throw UsageError("soak: unexpected argument '" + a + "'");
+        }
+    }
+    if (frames < 101) {
+        throw UsageError("soak: FRAMES must be at least 101");
+    }
+
+    io::Scene scene;
+    scene.meshes.push_back(meshFile.empty() ? io::generateDemoMesh() : io::loadMesh(meshFile));
+    std::vector<std::string> arrays = {""};
+    for (const auto& a : scene.meshes.front().pointArrays) {
+        arrays.push_back(a.name);
+    }
+    const Aabb bounds = scene.bounds();
+
+    ensureGuiApplication();
+    render::OffscreenRenderer renderer;
+    out << "soak: " << frames << " frames of " << scene.meshes.front().triangleCount()
+        << " triangles at " << width << "x" << height << " (3/4 of it every " << resizeEvery
+        << " frames), " << renderer.glDescription() << "\n";
+    out.flush();
+
+    constexpr std::array<colormaps::DepthScale, 3> kScales = {
+        colormaps::DepthScale::Chromadepth, colormaps::DepthScale::PseudoChromadepth,
+        colormaps::DepthScale::DarkMeansDeep};
+    constexpr std::array<colormaps::ColorMap, 4> kMaps = {
+        colormaps::ColorMap::Viridis, colormaps::ColorMap::Cividis, colormaps::ColorMap::Inferno,
+        colormaps::ColorMap::BlueWhiteRed};
+    constexpr std::array<render::VesselCue, 5> kCues = {
+        render::VesselCue::None, render::VesselCue::Chromadepth,
+        render::VesselCue::PseudoChromadepth, render::VesselCue::Fog, render::VesselCue::Fresnel};
+    constexpr std::array<double, 4> kPowers = {2.0, 4.0, 1.0, 8.0};
+
+    std::uint64_t after100 = 0;  // peak over frames 1..100
+    std::uint64_t end = 0;       // peak over the last 100 frames
+    std::uint64_t lapPeak = 0;   // peak since the last progress line
+    const auto start = std::chrono::steady_clock::now();
+    auto lapStart = start;
+    for (long f = 1; f <= frames; ++f) {
+        const auto k = static_cast<std::size_t>(f);
+        render::OffscreenOptions options;
+        const bool small = resizeEvery > 0 && (f / resizeEvery) % 2 == 1;
+        options.width = small ? width * 3 / 4 : width;
+        options.height = small ? height * 3 / 4 : height;
+        render::Camera camera;
+        camera.setViewport(options.width, options.height);
+        camera.fit(bounds);
+        camera.rotateView(static_cast<float>(f) * 0.037F, glm::vec3(0.0F, 0.0F, 1.0F));
+        camera.rotateView(static_cast<float>(f % 97) * 0.011F, glm::vec3(1.0F, 0.0F, 0.0F));
+        camera.pan(glm::vec2(static_cast<float>(f % 13) - 6.0F, static_cast<float>(f % 7) - 3.0F));
+        options.camera = camera;
+        options.style.array = arrays[(k / 3) % arrays.size()];
+        options.style.colorMap = kMaps[(k / 5) % kMaps.size()];
+        options.style.bins = (f / 7) % 3 == 0 ? 0 : static_cast<int>(2 + (k / 7) % 9);
+        options.vss.enabled = f % 11 != 0;
+        options.vss.scale = kScales[(k / 4) % kScales.size()];
+        options.vss.solver.p = kPowers[(k / 9) % kPowers.size()];
+        options.vss.isoLines = static_cast<int>((k / 2) % 13);
+        options.vss.preview = f % 6 == 0;
+        options.cue.cue = kCues[(k / 13) % kCues.size()];
+        options.ao.enabled = f % 5 != 0;
+        options.antialiasing = f % 3 != 0;
+        options.legends = f % 17 == 0;
+        options.background = glm::vec3(0.1F + 0.05F * static_cast<float>(f % 4), 0.14F, 0.16F);
+        try {
+            const QImage image = renderer.render(scene, options);
+            if (image.width() != options.width || image.height() != options.height) {
+                err << "vesselview-cli: soak: frame " << f << " has the wrong size\n";
+                return kInternalError;
+            }
+        } catch (const RenderError& e) {
+            // OffscreenRenderer::render reads glGetError after the frame (GL
+            // errors are sticky, so one raised anywhere in the frame shows).
+            err << "vesselview-cli: soak: frame " << f << ": " << e.what() << "\n";
+            return kInternalError;
+        }
+        const std::uint64_t rss = residentKiB(trim);
+        lapPeak = std::max(lapPeak, rss);
+        if (f <= 100) {
+            after100 = std::max(after100, rss);
+        }
+        if (f > frames - 100) {
+            end = std::max(end, rss);
+        }
+        if (f == 100) {
+            out << "frames 1-100: peak resident " << mib(after100) << "\n";
+        }
+        if (f % every == 0 || f == frames) {
+            const auto now = std::chrono::steady_clock::now();
+            const double lap = std::chrono::duration<double>(now - lapStart).count();
+            const long lapFrames = f % every == 0 ? every : f % every;
+            lapStart = now;
+            char line[160];
+            std::snprintf(line, sizeof line,
+                          "frame %ld: resident %s (peak since last %s), %.1f ms/frame\n", f,
+                          mib(rss).c_str(), mib(lapPeak).c_str(),
+                          1000.0 * lap / static_cast<double>(lapFrames));
+            lapPeak = 0;
+            out << line;
+            out.flush();
+        }
+    }
+    const double seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double growth =
+        after100 > 0 ? 100.0 * (static_cast<double>(end) / static_cast<double>(after100) - 1.0)
+                     : 0.0;
+    char summary[240];
+    std::snprintf(summary, sizeof summary,
+                  "soak: %ld frames in %.0f s (%.1f ms/frame); peak resident over frames 1-100 %s, "
+                  "over the last 100 %s (%+.2f%%)\n",
+                  frames, seconds, 1000.0 * seconds / static_cast<double>(frames),
+                  mib(after100).c_str(), mib(end).c_str(), growth);
+    out << summary;
+    if (after100 == 0 || end == 0) {
+        err << "vesselview-cli: soak: cannot read VmRSS from /proc/self/status\n";
+        return kInternalError;
+    }
+    if (growth > 5.0) {
+        err << "vesselview-cli: soak: resident memory grew by more than 5% after frame 100\n";
+        return kInternalError;
+    }
+    return kOk;
+}
+
+}  // namespace vv::cli

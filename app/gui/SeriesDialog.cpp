@@ -1,0 +1,236 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/SeriesDialog.h"
+
+#include <QCheckBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTreeWidget>
+#include <QTreeWidgetItemIterator>
+#include <QVBoxLayout>
+#include <algorithm>
+
+namespace vv::gui {
+
+namespace {
+
+constexpr int kUidRole = Qt::UserRole + 1;
+enum Column { Name, Modality, Description, Images, Size, Spacing, ColumnCount };
+
+QString fromStd(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+bool isCt(const io::DicomSeries& s) {
+    return s.modality == "CT";
+}
+
+void greyOut(QTreeWidgetItem* item) {
+    item->setFlags(item->flags() & ~(Qt::ItemIsSelectable | Qt::ItemIsEnabled));
+}
+
+}  // namespace
+
+SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
+    : QDialog(parent), scan_(scan) {
+    setWindowTitle(tr("Choose a DICOM Series"));
+    setObjectName(QStringLiteral("seriesDialog"));
+    resize(900, 560);
+
+    tree_ = new QTreeWidget(this);
+    tree_->setObjectName(QStringLiteral("seriesTree"));
+    tree_->setColumnCount(ColumnCount);
+    tree_->setHeaderLabels({tr("Patient / study / series"), tr("Modality"), tr("Description"),
+                            tr("Images"), tr("Size"), tr("Spacing (mm)")});
+    tree_->setSelectionMode(QAbstractItemView::SingleSelection);
+    tree_->setAlternatingRowColors(true);
+
+    QTreeWidgetItem* first = nullptr;
+    for (std::size_t p = 0; p < scan_.patients.size(); ++p) {
+        const io::DicomPatient& patient = scan_.patients[p];
+        auto* patientItem = new QTreeWidgetItem(tree_);
+        QString name = fromStd(patient.name);
+        name.replace(QLatin1Char('^'), QLatin1Char(' '));
+        patientItem->setText(Name, name.trimmed().isEmpty()
+                                       ? tr("Patient %1").arg(p + 1)
+                                       : tr("Patient: %1").arg(name.trimmed()));
+        patientItem->setFlags(Qt::ItemIsEnabled);
+        for (const io::DicomStudy& study : patient.studies) {
+            auto* studyItem = new QTreeWidgetItem(patientItem);
+            QString date = fromStd(study.date);
+            if (date.size() == 8) {
+                date = date.left(4) + QLatin1Char('-') + date.mid(4, 2) + QLatin1Char('-') +
+                       date.mid(6, 2);
+            }
+            studyItem->setText(Name, date.isEmpty() ? tr("Study") : tr("Study %1").arg(date));
+            studyItem->setText(Description, fromStd(study.description));
+            studyItem->setFlags(Qt::ItemIsEnabled);
+            for (const io::DicomSeries& series : study.series) {
+                auto* item = new QTreeWidgetItem(studyItem);
+                item->setData(Name, kUidRole, fromStd(series.seriesInstanceUid));
+                item->setText(Name, series.seriesNumber ? tr("Series %1").arg(*series.seriesNumber)
+                                                        : tr("Series"));
+                item->setToolTip(Name, fromStd(series.seriesInstanceUid));
+                item->setText(Modality, fromStd(series.modality));
+                item->setText(Description, fromStd(series.description));
+                item->setText(Images, QString::number(series.imageCount));
+                item->setText(Size, tr("%1 × %2").arg(series.columns).arg(series.rows));
+                QString spacing;
+                if (series.pixelSpacing) {
+                    spacing = QStringLiteral("%1 × %2")
+                                  .arg(series.pixelSpacing->x, 0, 'g', 4)
+                                  .arg(series.pixelSpacing->y, 0, 'g', 4);
+                    if (series.sliceSpacing) {
+                        spacing += QStringLiteral(" × %1").arg(*series.sliceSpacing, 0, 'g', 4);
+                    }
+                }
+                item->setText(Spacing, spacing);
+                if (!series.unsupportedReason.empty()) {
+                    item->setText(Description, tr("%1 — cannot be loaded: %2")
+                                                   .arg(fromStd(series.description),
+                                                        fromStd(series.unsupportedReason)));
+                    greyOut(item);
+                } else if (first == nullptr) {
+                    first = item;
+                }
+            }
+        }
+    }
+    if (!scan_.skipped.empty()) {
+        auto* skipped = new QTreeWidgetItem(tree_);
+        skipped->setText(Name, tr("Skipped files: %1").arg(scan_.skipped.size()));
+        skipped->setFlags(Qt::ItemIsEnabled);
+        for (const io::DicomSkippedFile& file : scan_.skipped) {
+            auto* item = new QTreeWidgetItem(skipped);
+            item->setText(Name, fromStd(file.file.filename().string()));
+            item->setToolTip(Name, fromStd(file.file.string()));
+            item->setText(Description, fromStd(file.reason));
+            greyOut(item);
+        }
+    }
+    tree_->expandAll();
+    for (int c = 0; c < ColumnCount; ++c) {
+        tree_->resizeColumnToContents(c);
+    }
+
+    // Segmentation options.
+    auto* options = new QGroupBox(tr("Vessel segmentation"), this);
+    auto* form = new QFormLayout(options);
+    autoThreshold_ = new QCheckBox(tr("Default for the modality"), options);
+    autoThreshold_->setChecked(true);
+    lower_ = new QDoubleSpinBox(options);
+    upper_ = new QDoubleSpinBox(options);
+    for (QDoubleSpinBox* box : {lower_, upper_}) {
+        box->setRange(-100000.0, 100000.0);
+        box->setDecimals(0);
+        box->setEnabled(false);
+    }
+    lower_->setValue(200.0);
+    upper_->setValue(700.0);
+    thresholdRule_ = new QLabel(options);
+    auto* range = new QHBoxLayout;
+    range->addWidget(autoThreshold_);
+    range->addWidget(lower_);
+    range->addWidget(new QLabel(tr("to"), options));
+    range->addWidget(upper_);
+    range->addWidget(thresholdRule_, 1);
+    form->addRow(tr("Threshold range:"), range);
+    components_ = new QSpinBox(options);
+    components_->setRange(1, 255);
+    components_->setValue(1);
+    components_->setToolTip(tr("Keep this many of the largest connected components"));
+    form->addRow(tr("Components to keep:"), components_);
+    bone_ = new QCheckBox(tr("Remove bone-like components"), options);
+    form->addRow(QString(), bone_);
+    connect(autoThreshold_, &QCheckBox::toggled, this, [this](bool automatic) {
+        lower_->setEnabled(!automatic);
+        upper_->setEnabled(!automatic);
+    });
+
+    buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons_->button(QDialogButtonBox::Ok)->setText(tr("Load Series"));
+    connect(buttons_, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(tree_, 1);
+    layout->addWidget(options);
+    layout->addWidget(buttons_);
+
+    connect(tree_, &QTreeWidget::itemSelectionChanged, this, &SeriesDialog::selectionChanged);
+    connect(tree_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+        if (!item->data(Name, kUidRole).toString().isEmpty() && item->isSelected()) {
+            accept();
+        }
+    });
+    if (first != nullptr) {
+        tree_->setCurrentItem(first);
+        first->setSelected(true);
+    }
+    selectionChanged();
+}
+
+const io::DicomSeries* SeriesDialog::currentSeries() const {
+    const QString uid = selectedSeriesUid();
+    return uid.isEmpty() ? nullptr : scan_.findSeries(uid.toStdString());
+}
+
+QString SeriesDialog::selectedSeriesUid() const {
+    const QList<QTreeWidgetItem*> items = tree_->selectedItems();
+    return items.isEmpty() ? QString() : items.front()->data(Name, kUidRole).toString();
+}
+
+bool SeriesDialog::selectSeries(const QString& uid) {
+    for (QTreeWidgetItemIterator it(tree_); *it != nullptr; ++it) {
+        if ((*it)->data(Name, kUidRole).toString() == uid &&
+            ((*it)->flags() & Qt::ItemIsSelectable) != 0) {
+            tree_->clearSelection();
+            tree_->setCurrentItem(*it);
+            (*it)->setSelected(true);
+            return true;
+        }
+    }
+    return false;
+}
+
+void SeriesDialog::selectionChanged() {
+    const io::DicomSeries* series = currentSeries();
+    buttons_->button(QDialogButtonBox::Ok)->setEnabled(series != nullptr);
+    if (series == nullptr) {
+        return;
+    }
+    // The modality's defaults (as vv::io::segmentVessels would choose them).
+    bone_->setChecked(isCt(*series));
+    if (isCt(*series)) {
+        thresholdRule_->setText(tr("CT angiography: 200 to 700 HU"));
+        if (autoThreshold_->isChecked()) {
+            lower_->setValue(200.0);
+            upper_->setValue(700.0);
+        }
+    } else {
+        thresholdRule_->setText(tr("from the histogram when loaded"));
+    }
+}
+
+io::SceneSourceOptions SeriesDialog::sceneSourceOptions() const {
+    io::SceneSourceOptions options;
+    options.seriesInstanceUid = selectedSeriesUid().toStdString();
+    if (!autoThreshold_->isChecked()) {
+        io::ThresholdRange range;
+        range.lower = static_cast<float>(std::min(lower_->value(), upper_->value()));
+        range.upper = static_cast<float>(std::max(lower_->value(), upper_->value()));
+        range.rule = "chosen in the series dialog";
+        options.segmentation.range = range;
+    }
+    options.segmentation.keepComponents = components_->value();
+    options.segmentation.removeBone = bone_->isChecked();
+    return options;
+}
+
+}  // namespace vv::gui

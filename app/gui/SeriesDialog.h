@@ -1,0 +1,63 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QDialog>
+#include <QString>
+
+#include "vv/io/Dicom.h"
+#include "vv/io/SceneSource.h"
+
+class QCheckBox;
+class QDialogButtonBox;
+class QDoubleSpinBox;
+class QLabel;
+class QSpinBox;
+class QTreeWidget;
+class QTreeWidgetItem;
+
+namespace vv::gui {
+
+/// The DICOM series chooser: a tree of patients → studies → series (modality,
+/// description, image count, size, spacing) as vv::io::scanDicom() found
+/// them, series that cannot be loaded and skipped files greyed with their
+/// reason, and the segmentation options (threshold range with the
+/// modality's default, components to keep, bone removal). The patient name
+/// is shown here for the user to recognise their data, and nowhere else.
+/// The first loadable series is selected; OK is enabled while a loadable
+/// series is selected.
+class SeriesDialog : public QDialog {
+    Q_OBJECT
+
+  public:
+    explicit SeriesDialog(const io::DicomScanResult& scan, QWidget* parent = nullptr);
+
+    /// The chosen series' UID; empty when none is selected.
+    [[nodiscard]] QString selectedSeriesUid() const;
+    /// Selects the series with this UID (when loadable); false when not listed.
+    bool selectSeries(const QString& uid);
+    /// The chosen series and segmentation options for loadSceneSource().
+    [[nodiscard]] io::SceneSourceOptions sceneSourceOptions() const;
+
+    [[nodiscard]] QTreeWidget* tree() const noexcept { return tree_; }
+    [[nodiscard]] QCheckBox* automaticThreshold() const noexcept { return autoThreshold_; }
+    [[nodiscard]] QDoubleSpinBox* lowerThreshold() const noexcept { return lower_; }
+    [[nodiscard]] QDoubleSpinBox* upperThreshold() const noexcept { return upper_; }
+    [[nodiscard]] QSpinBox* componentsBox() const noexcept { return components_; }
+    [[nodiscard]] QCheckBox* boneRemoval() const noexcept { return bone_; }
+
+  private:
+    void selectionChanged();
+    [[nodiscard]] const io::DicomSeries* currentSeries() const;
+
+    io::DicomScanResult scan_;
+    QTreeWidget* tree_ = nullptr;
+    QCheckBox* autoThreshold_ = nullptr;
+    QDoubleSpinBox* lower_ = nullptr;
+    QDoubleSpinBox* upper_ = nullptr;
+    QLabel* thresholdRule_ = nullptr;
+    QSpinBox* components_ = nullptr;
+    QCheckBox* bone_ = nullptr;
+    QDialogButtonBox* buttons_ = nullptr;
+};
+
+}  // namespace vv::gui
