@@ -30,6 +30,7 @@ constexpr const char* kUsageText =
     "         DICOM input (a folder, DICOMDIR, image or SEG file): [--series UID]\n"
     "         [--threshold LO:HI] [--components N] [--seed I,J,K] [--bone-removal on|off]\n"
     "         [--triangles N]   segments the vessels (CT default 200:700 HU)\n"
+    "         [--raycast [--iso HU]]   ray casts the volume instead (no segmentation)\n"
     "                                       render a mesh file or DICOM vessels offscreen to PNG, with the\n"
     "                                       void space surface (VSS) on by default;\n"
     "                                       --timings prints per-pass ms as JSON on stdout;\n"

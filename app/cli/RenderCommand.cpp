@@ -12,6 +12,9 @@
 // segmented into vessel surfaces, see io::setSceneSourceOption:
 //                            [--series UID] [--threshold LO:HI] [--components N]
 //                            [--seed I,J,K] [--bone-removal on|off] [--triangles N]
+// or, with --raycast [--iso HU], ray cast directly as an iso-surface (volume
+// depth source; no segmentation, no mesh): the iso value defaults to the lower
+// threshold (--threshold, else the modality's default range).
 // Needs OpenGL 4.1: a display (headless: xvfb-run -a with QT_QPA_PLATFORM=xcb).
 #include <QFile>
 #include <QGuiApplication>
@@ -21,6 +24,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -34,8 +38,10 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
+#include "vv/io/Dicom.h"
 #include "vv/io/MeshLoader.h"
 #include "vv/io/SceneSource.h"
+#include "vv/io/VolumeSegmentation.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -54,7 +60,23 @@ struct RenderArguments : RenderOptionValues {
     bool timings = false;
     std::filesystem::path depthOutput;  ///< --depth-out; empty = none
     io::SceneSourceOptions source;      ///< DICOM: series, segmentation, surface
+    bool raycast = false;               ///< --raycast: the volume as depth source
+    std::optional<float> iso;           ///< --iso HU
 };
+
+/// --raycast: a scene of the volume's eight corners, only for fitting the camera.
+io::Scene cornerScene(const io::Volume& volume) {
+    io::Mesh corners;
+    const glm::dvec3 last = glm::dvec3(volume.dims() - 1);
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 ijk((c & 1) != 0 ? last.x : 0.0, (c & 2) != 0 ? last.y : 0.0,
+                             (c & 4) != 0 ? last.z : 0.0);
+        corners.positions.emplace_back(volume.worldPosition(ijk));
+    }
+    io::Scene scene;
+    scene.meshes.push_back(std::move(corners));
+    return scene;
+}
 
 /// Compact JSON number: finite values as is, others as null.
 std::string jsonNumber(double value) {
@@ -90,6 +112,10 @@ RenderArguments parse(const std::vector<std::string>& args) {
             }
         } else if (a == "--timings") {
             parsed.timings = true;
+        } else if (a == "--raycast") {
+            parsed.raycast = true;
+        } else if (a == "--iso") {
+            parsed.iso = static_cast<float>(parseDouble(value(), "--iso"));
         } else if (io::setSceneSourceOption(a, i + 1 < args.size() ? args[i + 1] : std::string(),
                                             parsed.source)) {
             ++i;  // a DICOM option and its value
@@ -108,6 +134,13 @@ RenderArguments parse(const std::vector<std::string>& args) {
     if (!haveOutput || parsed.output.empty()) {
         throw UsageError("render: no output image (-o IMAGE.png)");
     }
+    if (parsed.iso && !parsed.raycast) {
+        throw UsageError("render: --iso needs --raycast");
+    }
+    if (parsed.raycast && !parsed.depthOutput.empty() && !parsed.vss.enabled) {
+        // The depth comes from the VSS solve's read-back; the CPU rasteriser has no volumes.
+        throw UsageError("render: --depth-out with --raycast needs the VSS on");
+    }
     return parsed;
 }
 
@@ -124,9 +157,31 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
 
     // A mesh file, or DICOM segmented into vessel surfaces.
     io::SceneSourceReport source;
-    const io::Scene scene = io::loadSceneSource(parsed.input, parsed.source, {}, &source);
+    io::Scene scene;
+    std::shared_ptr<const io::Volume> volume;  // --raycast
+    float iso = 0.0F;
+    if (parsed.raycast) {
+        if (!io::isDicomSource(parsed.input)) {
+            throw UsageError(
+                "render: --raycast needs DICOM (a folder, a DICOMDIR or a file), got '" +
+                parsed.input.string() + "'");
+        }
+        io::DicomVolume loaded =
+            io::loadDicomVolume(parsed.input, parsed.source.seriesInstanceUid, parsed.source.dicom);
+        source.seriesInstanceUid = loaded.seriesInstanceUid;
+        source.volumeDims = loaded.volume.dims();
+        volume = std::make_shared<const io::Volume>(std::move(loaded.volume));
+        iso = parsed.iso.value_or(parsed.source.segmentation.range
+                                      ? parsed.source.segmentation.range->lower
+                                      : io::defaultThresholdRange(*volume).lower);
+    } else {
+        scene = io::loadSceneSource(parsed.input, parsed.source, {}, &source);
+    }
 
-    const render::OffscreenOptions options = offscreenOptions(parsed, scene, parsed.input);
+    render::OffscreenOptions options =
+        offscreenOptions(parsed, volume ? cornerScene(*volume) : scene, parsed.input);
+    options.volume = volume;
+    options.isoValue = iso;
     const render::Camera camera = *options.camera;
 
     ensureGuiApplication();
@@ -188,7 +243,11 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
             << ", \"vss\": {\"shown\": " << (status.shown ? "true" : "false")
             << ", \"solve_ms\": " << jsonNumber(status.solveMilliseconds) << "}}\n";
     }
-    if (source.fromVolume) {
+    if (volume) {
+        summary << "ray cast series " << source.seriesInstanceUid << " (" << source.volumeDims.x
+                << "x" << source.volumeDims.y << "x" << source.volumeDims.z << ") at iso " << iso
+                << (volume->unit().empty() ? "" : " " + volume->unit()) << "\n";
+    } else if (source.fromVolume) {
         summary << "segmented series " << source.seriesInstanceUid << " (" << source.volumeDims.x
                 << "x" << source.volumeDims.y << "x" << source.volumeDims.z
                 << "): " << source.range.rule << ", kept " << source.componentsKept << " of "

@@ -450,6 +450,7 @@ void FrameRenderer::initialize() {
         release();
     }
     meshes_.initialize();
+    volume_.initialize();
     impl_->gl = &gl;
     impl_->context = QOpenGLContext::currentContext();
     impl_->cache.reset();
@@ -510,6 +511,7 @@ void FrameRenderer::release() noexcept {
     impl_->shown = false;
     impl_->shownFrame.reset();
     meshes_.release();
+    volume_.release();
     impl_->gl = nullptr;
     impl_->context = nullptr;
 }
@@ -544,8 +546,24 @@ void FrameRenderer::clearCache() {
 
 std::uint64_t FrameRenderer::geometryRevision(const FrameSettings& settings) const noexcept {
     const bool simplified = settings.simplifiedGeometry && meshes_.hasPreviewScene();
-    return sceneRevision_ * 2U + (simplified ? 1U : 0U);
+    std::uint64_t revision = sceneRevision_ * 2U + (simplified ? 1U : 0U);
+    if (volume_.volume()) {
+        // Volume depth source: its revision tells depth views apart too.
+        revision ^= (volumeRevision_ + 1U) * 0x9E3779B97F4A7C15ULL;
+    }
+    return revision;
 }
+
+// --- Volume depth source (issue 5) ------------------------------------------
+void FrameRenderer::setVolume(std::shared_ptr<const io::Volume> volume, float isoValue) {
+    if (volume == volume_.volume() && (!volume || isoValue == volumeIso_)) {
+        return;
+    }
+    volume_.setVolume(std::move(volume));
+    volumeIso_ = isoValue;
+    ++volumeRevision_;
+}
+// --- end volume depth source -------------------------------------------------
 
 bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& settings,
                                  const FrameTarget& target) {
@@ -647,6 +665,9 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const std::uint64_t sceneRevision = geometryRevision(settings);
     Impl& impl = *impl_;
     MeshRenderer& meshes = meshes_;
+    VolumeRenderer& volumeRenderer = volume_;  // volume depth source
+    const std::uint64_t volumeRevision = volume_.volume() ? volumeRevision_ : 0U;
+    const float volumeIso = volumeIso_;
 
     RenderGraph graph(*impl.cache);
     Handle<Texture> output = graph.importResource(
@@ -676,6 +697,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             b.dependsOn("viewport", viewport);
             b.dependsOn("scene", sceneRevision);
             b.dependsOn("array", arrayKey);
+            b.dependsOn("volume", volumeRevision);  // volume depth source
+            b.dependsOn("iso", volumeIso);
             d.linearDepth =
                 b.write(b.createPersistent<Texture>("linear-depth", size(TextureFormat::R32F)));
             d.normal = b.write(b.createPersistent<Texture>("normal", size(TextureFormat::RGBA16F)));
@@ -685,8 +708,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 b.write(b.createPersistent<Texture>("parameter", size(TextureFormat::R32F)));
             d.depth = b.write(b.createPersistent<Texture>("depth", size(TextureFormat::Depth32F)));
         },
-        [&impl, &meshes, camera, simplified, w, h](const RenderGraph::Resources& r,
-                                                   const Geometry& d) {
+        [&impl, &meshes, &volumeRenderer, volumeIso, camera, simplified, w, h](
+            const RenderGraph::Resources& r, const Geometry& d) {
             auto& g = impl.f();
             g.glBindFramebuffer(GL_FRAMEBUFFER, impl.geometryFbo);
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
@@ -718,6 +741,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glClearBufferfv(GL_COLOR, 3, noData);
             g.glClearBufferfv(GL_DEPTH, 0, &one);
             meshes.drawGBuffer(camera, simplified);
+            // Volume depth source: after the meshes, depth-tested against them.
+            const auto& scene = meshes.scene();
+            volumeRenderer.drawGBuffer(
+                camera, volumeIso, static_cast<unsigned>(scene ? scene->meshes.size() : 0U) + 1U);
             checkGlError(g, "geometry pass");
         });
 

@@ -158,13 +158,19 @@ QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions&
     meshes.setScene(view);
     meshes.setStyle(options.style);
     renderer_->setSceneRevision(sceneFingerprint(scene));
+    // Volume depth source: ray cast after the meshes; its box joins the bounds.
+    renderer_->setVolume(options.volume, options.isoValue);
+    Aabb bounds = scene.bounds();
+    if (options.volume && !options.volume->empty()) {
+        bounds.extend(options.volume->worldBounds());
+    }
 
     Camera camera = options.camera.value_or(Camera());
     camera.setViewport(options.width, options.height);
     if (!options.camera) {
-        camera.fit(scene.bounds());
+        camera.fit(bounds);
     } else {
-        camera.setSceneBounds(scene.bounds());
+        camera.setSceneBounds(bounds);
     }
 
     FrameSettings settings;

@@ -18,6 +18,7 @@
 #include "vv/render/GlResources.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/RenderGraph.h"
+#include "vv/render/VolumeRenderer.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Solver.h"
 
@@ -199,6 +200,18 @@ class FrameRenderer {
     /// The mesh renderer: set its scene and style through it (context current).
     [[nodiscard]] MeshRenderer& meshRenderer() noexcept { return meshes_; }
 
+    // --- Volume depth source (issue 5) ------------------------------------
+    /// A volume drawn into the G-buffer after the meshes by first-hit
+    /// iso-surface ray casting at `isoValue` (VolumeRenderer), so the VSS,
+    /// shading and cues work on it as on meshes; nullptr = none. The volume
+    /// is treated as immutable (a changed one needs a new object). Its object
+    /// id is 1 + the number of meshes. Needs no GL context (uploads lazily).
+    void setVolume(std::shared_ptr<const io::Volume> volume, float isoValue);
+    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+        return volume_.volume();
+    }
+    // --- end volume depth source -------------------------------------------
+
     /// Tells the graph that the scene's content changed (every value
     /// different from the last one re-runs the geometry and the solve).
     void setSceneRevision(std::uint64_t revision) noexcept { sceneRevision_ = revision; }
@@ -290,6 +303,11 @@ class FrameRenderer {
   private:
     struct Impl;
     MeshRenderer meshes_;
+    // Volume depth source: the ray caster, its iso value and a revision that
+    // changes with either (geometry pass dependsOn, depth view keys).
+    VolumeRenderer volume_;
+    float volumeIso_ = 0.0F;
+    std::uint64_t volumeRevision_ = 0;
     std::unique_ptr<Impl> impl_;
     SolveMode mode_ = SolveMode::Synchronous;
     void renderGraph(const Camera& camera, const FrameSettings& settings, const FrameTarget& target,

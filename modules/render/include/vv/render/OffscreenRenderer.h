@@ -46,6 +46,12 @@ struct OffscreenOptions {
     /// the depth legend when a VSS is shown, the parameter legend when an
     /// array is shown. Off by default; the CLI turns it on.
     bool legends = false;
+    /// Volume depth source: a volume ray cast into the G-buffer after the
+    /// scene's meshes (FrameRenderer::setVolume) at the iso value `isoValue`
+    /// (its units, e.g. HU); nullptr = none. Its world bounds join the
+    /// scene's for the default camera and the clip planes.
+    std::shared_ptr<const io::Volume> volume;
+    float isoValue = 150.0F;
 };
 
 /// Renders scenes into images without a window: its own OpenGL 4.1 core
