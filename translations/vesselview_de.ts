@@ -629,10 +629,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Erzeugt</translation>
     </message>
     <message>
-        <source>Every mesh of a scene is drawn; hiding single meshes is not supported yet</source>
-        <translation>Jedes Netz einer Szene wird gezeichnet; einzelne Netze auszublenden wird noch nicht unterstützt</translation>
-    </message>
-    <message>
         <source>%1 – %2</source>
         <translation>%1 – %2</translation>
     </message>
@@ -954,12 +950,16 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Verteilung des Datenfelds; die Linien markieren den Bereich (zum Ändern ziehen)</translation>
     </message>
     <message>
-        <source>Values without data (NaN) are drawn in this colour, which the colour map fixes (it never occurs in the map itself)</source>
-        <translation>Werte ohne Daten (NaN) erscheinen in dieser Farbe, die die Farbtabelle festlegt (sie kommt in der Tabelle selbst nie vor)</translation>
+        <source>No-data colour</source>
+        <translation>Farbe ohne Daten</translation>
     </message>
     <message>
-        <source>The legend is titled with the array&apos;s name and unit; the renderer does not take a custom title yet</source>
-        <translation>Die Legende trägt Name und Einheit des Datenfelds als Titel; ein eigener Titel wird noch nicht unterstützt</translation>
+        <source>Colour of vertices without a value (NaN). By default each map has one that never occurs in the map itself</source>
+        <translation>Farbe der Punkte ohne Wert (NaN). Standardmäßig hat jede Farbtabelle eine eigene, die in der Tabelle selbst nicht vorkommt</translation>
+    </message>
+    <message>
+        <source>Title of the parameter legend (default: the array&apos;s name and unit)</source>
+        <translation>Titel der Parameterlegende (Standard: Name und Einheit des Datenfelds)</translation>
     </message>
 </context>
 <context>
@@ -1138,6 +1138,38 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Solve: %1; %2</source>
         <translation>Berechnung: %1; %2</translation>
+    </message>
+    <message>
+        <source>Visible vessels</source>
+        <translation>Sichtbare Gefäße</translation>
+    </message>
+    <message>
+        <source>Fixed</source>
+        <translation>Fest</translation>
+    </message>
+    <message>
+        <source>Depth range:</source>
+        <translation>Tiefenbereich:</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Near / far:</source>
+        <translation>Nah / fern:</translation>
+    </message>
+    <message>
+        <source>Visible: the scale spans the vessels in view; fixed: colours keep their depth when the view changes</source>
+        <translation>Sichtbar: die Skala umfasst die Gefäße im Bild; fest: die Farben behalten ihre Tiefe, wenn sich die Ansicht ändert</translation>
+    </message>
+    <message>
+        <source>Depths mapped to the near and far end of the scale (viewing distance)</source>
+        <translation>Tiefen am nahen und fernen Ende der Skala (Abstand vom Betrachter)</translation>
+    </message>
+    <message>
+        <source>Choose a fixed depth range first</source>
+        <translation>Zuerst einen festen Tiefenbereich wählen</translation>
     </message>
 </context>
 </TS>
