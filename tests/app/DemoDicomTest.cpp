@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "CliRun.h"
 #include "cli/Cli.h"
 #include "vv/io/Dicom.h"
 
@@ -22,32 +23,16 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path testDir() {
-    return fs::path(VV_TEST_TMP) / "demo-dicom" / ("run-" + std::to_string(::getpid()));
+    return vv::test::processTestDir("demo-dicom");
 }
 
-struct RunResult {
-    int code;
-    std::string out;
-    std::string err;
-};
+using RunResult = vv::test::CliRunResult;
 
 RunResult run(const std::vector<std::string>& args) {
-    std::ostringstream out;
-    std::ostringstream err;
-    const int code = vv::cli::run(args, out, err);
-    return {code, out.str(), err.str()};
+    return vv::test::runCli(args);
 }
 
-long litPixels(const QImage& image) {
-    long count = 0;
-    for (int y = 0; y < image.height(); ++y) {
-        for (int x = 0; x < image.width(); ++x) {
-            const QRgb p = image.pixel(x, y);
-            count += qRed(p) + qGreen(p) + qBlue(p) > 60 ? 1 : 0;
-        }
-    }
-    return count;
-}
+using vv::test::litPixels;
 
 class DemoDicomTest : public ::testing::Test {
   protected:

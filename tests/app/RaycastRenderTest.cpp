@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "CliRun.h"
 #include "DicomTestUtil.h"
 #include "SyntheticCta.h"
 #include "cli/Cli.h"
@@ -24,20 +25,13 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path testDir() {
-    return fs::path(VV_TEST_TMP) / "raycast-render" / ("run-" + std::to_string(::getpid()));
+    return vv::test::processTestDir("raycast-render");
 }
 
-struct RunResult {
-    int code;
-    std::string out;
-    std::string err;
-};
+using RunResult = vv::test::CliRunResult;
 
 RunResult run(const std::vector<std::string>& args) {
-    std::ostringstream out;
-    std::ostringstream err;
-    const int code = vv::cli::run(args, out, err);
-    return {code, out.str(), err.str()};
+    return vv::test::runCli(args);
 }
 
 class RaycastRenderTest : public ::testing::Test {
