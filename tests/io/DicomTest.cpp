@@ -5,6 +5,7 @@
 // progress and cancel on a 256 x 256 x 200 series, no patient data in messages.
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <atomic>
@@ -711,12 +712,20 @@ class DicomBigSeries : public ::testing::Test {
     static constexpr int kSize = 256;
     static constexpr int kSlices = 200;
     static fs::path dir() { return fs::path(VV_TEST_TMP) / "dicom" / "big-256x256x200"; }
+    /// Written once and kept between runs. ctest runs each test in its own
+    /// process, two at a time: each writes into its own staging folder and
+    /// renames it into place (atomic; the loser uses the winner's series).
     static void SetUpTestSuite() {
         if (fs::exists(dir() / "complete")) {
             return;
         }
-        fs::remove_all(dir());
-        fs::create_directories(dir());
+        std::error_code ec;
+        if (fs::exists(dir()) && !fs::exists(dir() / "complete")) {
+            fs::remove_all(dir(), ec);  // left over from an interrupted run
+        }
+        const fs::path staging = dir().string() + ".staging-" + std::to_string(::getpid());
+        fs::remove_all(staging);
+        fs::create_directories(staging);
         const std::string series = "1.2.826.0.1.3680043.99.256200";
         std::vector<int> names(kSlices);
         for (int k = 0; k < kSlices; ++k) {
@@ -733,9 +742,13 @@ class DicomBigSeries : public ::testing::Test {
                 }
             }
             vv::test::writeSlice(
-                dir() / ("CT" + std::to_string(names[static_cast<std::size_t>(k)])), s);
+                staging / ("CT" + std::to_string(names[static_cast<std::size_t>(k)])), s);
         }
-        std::ofstream(dir() / "complete") << "ok\n";
+        std::ofstream(staging / "complete") << "ok\n";
+        fs::rename(staging, dir(), ec);
+        if (ec) {
+            fs::remove_all(staging, ec);  // another process was first
+        }
     }
 };
 
