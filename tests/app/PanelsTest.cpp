@@ -480,19 +480,31 @@ TEST_F(PanelsTest, DataPanelHidesAndShowsSingleMeshes) {
     window_->setScene(scene, QStringLiteral("two tubes"));
     auto* viewer = window_->viewer();
     ASSERT_TRUE(waitForFrames());
+    ASSERT_TRUE(waitUntil([&] {
+        const auto& s = viewer->vssStatus();
+        return s.shown && s.current && !s.pending;
+    }));
     const QImage both = viewer->grabFramebuffer();
     auto* tree = window_->dataPanel()->meshTree();
     ASSERT_EQ(tree->topLevelItemCount(), 2);
 
+    // A frame of the current view with its own (not a stale) VSS.
+    const auto settled = [&] {
+        const quint64 frames = viewer->framesWithScene();
+        return waitUntil([&] {
+            const auto& s = viewer->vssStatus();
+            return viewer->framesWithScene() > frames && s.shown && s.current && !s.pending;
+        });
+    };
     tree->topLevelItem(1)->setCheckState(0, Qt::Unchecked);
     EXPECT_EQ(viewer->style().hidden, std::vector<std::size_t>{1});
-    ASSERT_TRUE(waitForFrames());
+    ASSERT_TRUE(settled());
     const QImage one = viewer->grabFramebuffer();
     EXPECT_GT(changedFraction(both, one), 0.01);  // the copy is gone (and the VSS changed)
 
     tree->topLevelItem(1)->setCheckState(0, Qt::Checked);
     EXPECT_TRUE(viewer->style().hidden.empty());
-    ASSERT_TRUE(waitForFrames());
+    ASSERT_TRUE(settled());
     EXPECT_LT(changedFraction(both, viewer->grabFramebuffer()), 0.01);
 
     // A new scene shows every mesh again.
