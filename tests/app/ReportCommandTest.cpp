@@ -4,12 +4,10 @@
 // pdftotext (poppler-utils) and the DICOM files with dcmdump (dcmtk). The
 // DICOM input is the synthetic CTA series of tests/io (SyntheticCta.h).
 #include <gtest/gtest.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <QImage>
 #include <QString>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -20,6 +18,7 @@
 #include <vector>
 
 #include "DicomTestUtil.h"
+#include "ReportTestUtil.h"
 #include "SyntheticCta.h"
 #include "cli/Cli.h"
 #include "vv/io/Mesh.h"
@@ -102,24 +101,11 @@ RunResult report(const std::vector<std::string>& rest) {
     return {code, out.str(), err.str()};
 }
 
-/// `command`'s exit status; its output in `output`.
-int shell(const std::string& command, std::string& output) {
-    output.clear();
-    FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-    if (pipe == nullptr) {
-        return -1;
-    }
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) {
-        output += buffer.data();
-    }
-    const int status = ::pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using vv::report::test::runTool;
 
 std::string pdfText(const fs::path& pdf) {
     std::string text;
-    EXPECT_EQ(shell("pdftotext -layout '" + pdf.string() + "' -", text), 0)
+    EXPECT_EQ(runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0)
         << "pdftotext (poppler-utils; scripts/setup-deps): " << text;
     return text;
 }
@@ -180,12 +166,12 @@ TEST(ReportCommandTest, WritesPdfPngAndDicom) {
                                        : dump.substr(at + 16, dump.find(']', at) - at - 16);
     };
     std::string dump;
-    ASSERT_EQ(shell("dcmdump '" + (out / "sc.dcm").string() + "'", dump), 0) << dump;
+    ASSERT_EQ(runTool("dcmdump '" + (out / "sc.dcm").string() + "'", dump), 0) << dump;
     EXPECT_NE(dump.find("SecondaryCaptureImageStorage"), std::string::npos);
     EXPECT_NE(dump.find("US 300"), std::string::npos);  // Rows
     const std::string study = studyUid(dump);
     EXPECT_GT(study.size(), 10U) << dump;
-    ASSERT_EQ(shell("dcmdump '" + (out / "doc.dcm").string() + "'", dump), 0) << dump;
+    ASSERT_EQ(runTool("dcmdump '" + (out / "doc.dcm").string() + "'", dump), 0) << dump;
     EXPECT_NE(dump.find("EncapsulatedPDFStorage"), std::string::npos);
     EXPECT_NE(dump.find("[application/pdf]"), std::string::npos);
     EXPECT_EQ(studyUid(dump), study);
@@ -260,7 +246,7 @@ TEST(ReportCommandTest, DicomInputGoesIntoTheSourceStudyWithItsPatient) {
     // The source study UID, as the series files carry it.
     std::string dump;
     const fs::path first = *fs::directory_iterator(dir / "series");
-    ASSERT_EQ(shell("dcmdump '" + first.string() + "'", dump), 0) << dump;
+    ASSERT_EQ(runTool("dcmdump '" + first.string() + "'", dump), 0) << dump;
     const auto studyUid = [](const std::string& text) {
         const auto at = text.find("(0020,000d) UI [");
         return at == std::string::npos ? std::string()
@@ -296,7 +282,7 @@ TEST(ReportCommandTest, DicomInputGoesIntoTheSourceStudyWithItsPatient) {
         const std::string text = pdfText(out / "r.pdf");
         EXPECT_NE(text.find("Patient and study"), std::string::npos) << text;
         for (const std::string file : {"sc.dcm", "doc.dcm"}) {
-            ASSERT_EQ(shell("dcmdump '" + (out / file).string() + "'", dump), 0) << dump;
+            ASSERT_EQ(runTool("dcmdump '" + (out / file).string() + "'", dump), 0) << dump;
             EXPECT_EQ(studyUid(dump), study) << file;  // the source study
             EXPECT_NE(dump.find("[VesselView report]"), std::string::npos) << file;
             if (anonymise) {
