@@ -281,9 +281,19 @@ TEST(ReportCommandTest, DicomInputGoesIntoTheSourceStudyWithItsPatient) {
         ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
         const std::string text = pdfText(out / "r.pdf");
         EXPECT_NE(text.find("Patient and study"), std::string::npos) << text;
+        std::string pseudonym;
         for (const std::string file : {"sc.dcm", "doc.dcm"}) {
             ASSERT_EQ(runTool("dcmdump '" + (out / file).string() + "'", dump), 0) << dump;
-            EXPECT_EQ(studyUid(dump), study) << file;  // the source study
+            if (anonymise) {  // a pseudonymous study, the same for both instances
+                EXPECT_NE(studyUid(dump), study) << file;
+                EXPECT_EQ(studyUid(dump).rfind("2.25.", 0), 0U) << file;
+                if (pseudonym.empty()) {
+                    pseudonym = studyUid(dump);
+                }
+                EXPECT_EQ(studyUid(dump), pseudonym) << file;
+            } else {
+                EXPECT_EQ(studyUid(dump), study) << file;  // the source study
+            }
             EXPECT_NE(dump.find("[VesselView report]"), std::string::npos) << file;
             if (anonymise) {
                 EXPECT_EQ(dump.find("Secretname"), std::string::npos) << file;

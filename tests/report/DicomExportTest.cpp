@@ -9,14 +9,17 @@
 #include <gtest/gtest.h>
 
 #include <QPainter>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "ReportTestUtil.h"
 #include "vv/core/Error.h"
 #include "vv/report/DicomExport.h"
 #include "vv/report/DicomSource.h"
+#include "vv/report/PdfReport.h"
 
 namespace vv::report {
 namespace {
@@ -150,33 +153,224 @@ TEST_F(DicomExportTest, EncapsulatedPdfReadsBack) {
     EXPECT_FALSE(fs::exists(dir / "bad.dcm"));
 }
 
-TEST_F(DicomExportTest, AnonymisedExportHasNoIdentifiers) {
+/// The attributes of DICOM PS3.15 Table E.1-1 (Basic Application Level
+/// Confidentiality Profile) that an export could carry: identifiers, dates and
+/// times, people, places, devices, free text and UIDs. After an anonymised
+/// export each must be absent or empty, except the UIDs, which must be new.
+struct ProfileAttribute {
+    DcmTagKey tag;
+    bool uid = false;  ///< action U: replaced by a new UID
+};
+
+std::vector<ProfileAttribute> basicProfile() {
+    std::vector<ProfileAttribute> list;
+    const auto blank = [&](Uint16 g, Uint16 e) { list.push_back({DcmTagKey(g, e), false}); };
+    const auto fresh = [&](Uint16 g, Uint16 e) { list.push_back({DcmTagKey(g, e), true}); };
+    // Dates and times of the study, series, acquisition, content and instance.
+    for (const Uint16 e : {0x0012, 0x0013, 0x0020, 0x0021, 0x0022, 0x0023, 0x0024, 0x0025, 0x002A,
+                           0x0030, 0x0031, 0x0032, 0x0033, 0x0034, 0x0035, 0x0201}) {
+        blank(0x0008, e);
+    }
+    // Accession, institution, referring physician, station, descriptions, staff.
+    for (const Uint16 e : {0x0050, 0x0080, 0x0081, 0x0082, 0x0090, 0x0092, 0x0094, 0x0096,
+                           0x1010, 0x1030, 0x1040, 0x1048, 0x1049, 0x1050, 0x1052, 0x1060,
+                           0x1062, 0x1070, 0x1072, 0x1080, 0x1084, 0x2111, 0x4000}) {
+        blank(0x0008, e);
+    }
+    // Patient module and patient study: names, IDs, dates, contacts, history.
+    for (const Uint16 e : {0x0010, 0x0020, 0x0021, 0x0022, 0x0030, 0x0032, 0x0040, 0x0050, 0x1000,
+                           0x1001, 0x1002, 0x1005, 0x1010, 0x1020, 0x1030, 0x1040, 0x1060, 0x1080,
+                           0x1081, 0x1090, 0x2000, 0x2110, 0x2150, 0x2152, 0x2154, 0x2160, 0x2180,
+                           0x21A0, 0x21B0, 0x21C0, 0x21D0, 0x21F0, 0x2203, 0x4000}) {
+        blank(0x0010, e);
+    }
+    blank(0x0018, 0x1000);  // Device Serial Number
+    blank(0x0018, 0x1030);  // Protocol Name
+    blank(0x0018, 0x700A);  // Detector ID
+    blank(0x0020, 0x0010);  // Study ID
+    blank(0x0020, 0x4000);  // Image Comments
+    blank(0x0032, 0x1032);  // Requesting Physician
+    blank(0x0032, 0x1060);  // Requested Procedure Description
+    blank(0x0032, 0x4000);  // Study Comments
+    blank(0x0038, 0x0010);  // Admission ID
+    blank(0x0038, 0x0300);  // Current Patient Location
+    blank(0x0038, 0x0400);  // Patient's Institution Residence
+    blank(0x0040, 0x0006);  // Scheduled Performing Physician's Name
+    blank(0x0040, 0x0244);  // Performed Procedure Step Start Date
+    blank(0x0040, 0x0253);  // Performed Procedure Step ID
+    blank(0x0040, 0x1001);  // Requested Procedure ID
+    blank(0x0040, 0xA730);  // Content Sequence
+    blank(0x0400, 0x0561);  // Original Attributes Sequence
+    fresh(0x0008, 0x0014);  // Instance Creator UID
+    fresh(0x0008, 0x0018);  // SOP Instance UID
+    fresh(0x0008, 0x1155);  // Referenced SOP Instance UID
+    fresh(0x0020, 0x000D);  // Study Instance UID
+    fresh(0x0020, 0x000E);  // Series Instance UID
+    fresh(0x0020, 0x0052);  // Frame of Reference UID
+    fresh(0x0020, 0x0200);  // Synchronization Frame of Reference UID
+    fresh(0x0040, 0xA124);  // UID
+    fresh(0x0088, 0x0140);  // Storage Media File-set UID
+    return list;
+}
+
+/// Every attribute an anonymised export may hold: the ones above (then empty
+/// or new) and those that never carry anything of the patient's.
+bool allowedInAnonymisedExport(const DcmTagKey& tag) {
+    for (const ProfileAttribute& a : basicProfile()) {
+        if (a.tag == tag) {
+            return true;
+        }
+    }
+    static const std::vector<DcmTagKey> fixed = {DCM_SpecificCharacterSet,
+                                                 DCM_ImageType,
+                                                 DCM_SOPClassUID,
+                                                 DCM_Modality,
+                                                 DCM_ConversionType,
+                                                 DCM_Manufacturer,
+                                                 DCM_SeriesDescription /* "VesselView report" */,
+                                                 DCM_PatientIdentityRemoved,
+                                                 DCM_DeidentificationMethod,
+                                                 DCM_DeidentificationMethodCodeSequence,
+                                                 DCM_SeriesNumber,
+                                                 DCM_InstanceNumber,
+                                                 DCM_PatientOrientation,
+                                                 DCM_Laterality,
+                                                 DCM_SoftwareVersions,
+                                                 DCM_BurnedInAnnotation,
+                                                 DCM_LossyImageCompression,
+                                                 DCM_SamplesPerPixel,
+                                                 DCM_PhotometricInterpretation,
+                                                 DCM_PlanarConfiguration,
+                                                 DCM_Rows,
+                                                 DCM_Columns,
+                                                 DCM_BitsAllocated,
+                                                 DCM_BitsStored,
+                                                 DCM_HighBit,
+                                                 DCM_PixelRepresentation,
+                                                 DCM_LongitudinalTemporalInformationModified,
+                                                 DCM_PixelData,
+                                                 DCM_ConceptNameCodeSequence,
+                                                 DCM_DocumentTitle,
+                                                 DCM_MIMETypeOfEncapsulatedDocument,
+                                                 DCM_EncapsulatedDocumentLength,
+                                                 DCM_EncapsulatedDocument};
+    return std::find(fixed.begin(), fixed.end(), tag) != fixed.end();
+}
+
+TEST_F(DicomExportTest, AnonymisedExportFollowsTheBasicConfidentialityProfile) {
     const fs::path dir = test::testDir("dicom-anon");
-    DicomStudy study = newStudy();
+    // A source study with every identifying field set to a recognisable value.
+    DicomStudy study;
+    study.studyInstanceUid = "1.2.826.0.1.3680043.2.1125.4242";
+    study.studyId = "STUDY-77";
+    study.studyDate = "20230102";
+    study.studyTime = "101112";
     ReportPatient patient;
     patient.name = "Doe^Jane";
     patient.id = "PID-0042";
     patient.birthDate = "19600215";
+    patient.sex = "F";
+    patient.studyDate = "20230102";
     patient.accession = "ACC-9";
     patient.referringPhysician = "Smith^John";
     patient.anonymise = true;
     study.patient = patient;
-    const fs::path file = dir / "sc.dcm";
-    (void)writeSecondaryCapture(file, test::testImage(16, 8), study);
-    DcmFileFormat format;
-    ASSERT_TRUE(format.loadFile(OFFilename(file.c_str())).good());
-    DcmDataset& data = *format.getDataset();
-    for (const DcmTagKey& tag : {DCM_PatientName, DCM_PatientID, DCM_PatientBirthDate,
-                                 DCM_AccessionNumber, DCM_ReferringPhysicianName}) {
-        EXPECT_TRUE(has(data, tag)) << DcmTag(tag).getTagName();  // type 2: present, empty
-        EXPECT_EQ(get(data, tag), "") << DcmTag(tag).getTagName();
+    const std::vector<std::string> identifying = {
+        "Doe",    "Jane",  "PID-0042", "19600215", "20230102",
+        "101112", "ACC-9", "Smith",    "STUDY-77", "1.2.826.0.1.3680043.2.1125.4242"};
+
+    // The report PDF lists a source folder named after the patient.
+    ReportContent content;
+    content.patient = patient;
+    content.sources = {"/data/Doe_Jane_PID-0042/IM0001.dcm"};
+    content.view.image = test::testImage(reportImageWidth(PaperSize::A4), 400);
+    content.view.caption = "Far view";
+    const QByteArray pdf = renderPdf(content, PaperSize::A4);
+
+    const fs::path sc = dir / "sc.dcm";
+    const fs::path doc = dir / "doc.dcm";
+    const std::string scSop = writeSecondaryCapture(sc, test::testImage(16, 8), study);
+    const std::string docSop = writeEncapsulatedPdf(doc, pdf, "Vessel tree report", study);
+
+    std::string studyUid;
+    for (const fs::path& file : {sc, doc}) {
+        SCOPED_TRACE(file.filename().string());
+        DcmFileFormat format;
+        ASSERT_TRUE(format.loadFile(OFFilename(file.c_str())).good());
+        DcmDataset& data = *format.getDataset();
+        for (const ProfileAttribute& a : basicProfile()) {
+            const std::string name = DcmTag(a.tag).getTagName();
+            if (!a.uid) {
+                DcmElement* element = nullptr;
+                if (data.findAndGetElement(a.tag, element).good()) {
+                    EXPECT_EQ(element->getLength(), 0U) << name << " is not empty";
+                }
+                continue;
+            }
+            const std::string value = get(data, a.tag);
+            EXPECT_NE(value, study.studyInstanceUid) << name;
+        }
+        // Nothing outside the profile's list and the known-safe attributes.
+        for (unsigned long i = 0; i < data.card(); ++i) {
+            const DcmTagKey tag = data.getElement(i)->getTag();
+            EXPECT_TRUE(allowedInAnonymisedExport(tag))
+                << DcmTag(tag).getTagName() << " " << tag.toString() << " is not known to be safe";
+        }
+        EXPECT_EQ(get(data, DCM_PatientIdentityRemoved), "YES");
+        EXPECT_EQ(get(data, DCM_LongitudinalTemporalInformationModified), "REMOVED");
+        DcmItem* code = nullptr;
+        ASSERT_TRUE(
+            data.findAndGetSequenceItem(DCM_DeidentificationMethodCodeSequence, code, 0).good());
+        OFString codeValue;
+        code->findAndGetOFString(DCM_CodeValue, codeValue);
+        EXPECT_EQ(codeValue, "113100");
+        // Type 2 attributes stay present (empty), as the IODs require.
+        for (const DcmTagKey& tag : {DCM_PatientName, DCM_PatientID, DCM_PatientBirthDate,
+                                     DCM_PatientSex, DCM_StudyDate, DCM_AccessionNumber}) {
+            EXPECT_TRUE(has(data, tag)) << DcmTag(tag).getTagName();
+        }
+        // One pseudonymous study for both instances: a valid UID (PS3.5 B.2).
+        const std::string uid = get(data, DCM_StudyInstanceUID);
+        EXPECT_EQ(uid.rfind("2.25.", 0), 0U) << uid;
+        EXPECT_LE(uid.size(), 64U);
+        EXPECT_EQ(uid.find_first_not_of("0123456789.", 0), std::string::npos) << uid;
+        if (studyUid.empty()) {
+            studyUid = uid;
+        }
+        EXPECT_EQ(uid, studyUid);
+
+        std::ifstream in(file, std::ios::binary);
+        const std::string raw((std::istreambuf_iterator<char>(in)),
+                              std::istreambuf_iterator<char>());
+        for (const std::string& value : identifying) {
+            EXPECT_EQ(raw.find(value), std::string::npos) << value << " is in the file";
+        }
+        validate(file);
     }
-    EXPECT_EQ(get(data, DCM_PatientIdentityRemoved), "YES");
-    std::ifstream in(file, std::ios::binary);
-    const std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    EXPECT_EQ(raw.find("Doe"), std::string::npos);
-    EXPECT_EQ(raw.find("PID-0042"), std::string::npos);
-    validate(file);
+    EXPECT_NE(scSop, docSop);
+
+    // The encapsulated report's text names nobody either.
+    const fs::path pdfFile = dir / "report.pdf";
+    {
+        std::ofstream out(pdfFile, std::ios::binary);
+        out.write(pdf.constData(), pdf.size());
+    }
+    std::string text;
+    ASSERT_EQ(test::runTool("pdftotext -layout '" + pdfFile.string() + "' -", text), 0) << text;
+    EXPECT_NE(text.find("anonymised"), std::string::npos) << text;
+    for (const std::string& value : identifying) {
+        EXPECT_EQ(text.find(value), std::string::npos) << value << " is in the PDF:\n" << text;
+    }
+}
+
+TEST_F(DicomExportTest, AnonymisedUidsArePseudonymsWithinOneRun) {
+    const std::string a = anonymisedUid("1.2.3.4");
+    EXPECT_EQ(anonymisedUid("1.2.3.4"), a);  // the report's instances share a study
+    EXPECT_NE(anonymisedUid("1.2.3.5"), a);
+    EXPECT_NE(a, "1.2.3.4");
+    EXPECT_EQ(a.rfind("2.25.", 0), 0U);
+    EXPECT_LE(a.size(), 64U);
+    EXPECT_GT(a.size(), 5U + 30U);  // a 128-bit number has 30+ digits almost always
 }
 
 TEST_F(DicomExportTest, UidsAreFreshAndFailuresLeaveNoFile) {

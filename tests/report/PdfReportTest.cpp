@@ -126,10 +126,19 @@ TEST_F(PdfReportTest, AnonymisedPatientShowsNoIdentifiers) {
     patient.id = "PID-0042";
     patient.anonymise = true;
     c.patient = patient;
+    // Patient data folders are often named after the patient.
+    c.sources = {"/data/Doe_Jane_PID-0042/CTA/IM0001.dcm",
+                 "/data/Doe_Jane_PID-0042/CTA/IM0002.dcm"};
     const std::string t = text(renderPdf(c, PaperSize::A4), "anonymised");
-    EXPECT_EQ(t.find("Doe"), std::string::npos);
-    EXPECT_EQ(t.find("PID-0042"), std::string::npos);
+    EXPECT_EQ(t.find("Doe"), std::string::npos) << t;
+    EXPECT_EQ(t.find("PID-0042"), std::string::npos) << t;
+    EXPECT_EQ(t.find("IM0001"), std::string::npos) << t;
     EXPECT_NE(t.find("anonymised"), std::string::npos);
+    EXPECT_NE(t.find("2 (names withheld"), std::string::npos) << t;
+
+    c.patient->anonymise = false;  // not anonymised: the files are listed
+    const std::string shown = text(renderPdf(c, PaperSize::A4), "identified");
+    EXPECT_NE(shown.find("IM0001.dcm"), std::string::npos) << shown;
 }
 
 TEST_F(PdfReportTest, LetterWithoutPatientOrParameterLeavesThemOut) {

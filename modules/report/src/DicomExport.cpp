@@ -5,14 +5,20 @@
 #include <dcmtk/dcmdata/dcdatset.h>
 #include <dcmtk/dcmdata/dcdeftag.h>
 #include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcitem.h>
+#include <dcmtk/dcmdata/dcsequen.h>
 #include <dcmtk/dcmdata/dcuid.h>
 #include <dcmtk/dcmdata/dcxfer.h>
 
+#include <QByteArray>
+#include <QCryptographicHash>
 #include <QLocale>
 #include <QPainter>
 #include <QTimeZone>
+#include <array>
 #include <cstdint>
 #include <cstring>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -40,6 +46,39 @@ void put(DcmDataset& data, const DcmTagKey& tag, const std::string& value,
     }
 }
 
+bool anonymised(const DicomStudy& study) {
+    return study.patient && study.patient->anonymise;
+}
+
+/// Puts `value`, or nothing when anonymising: for type 3 attributes that the
+/// basic confidentiality profile removes (dates and times of the instance).
+void putUnlessAnonymised(DcmDataset& data, const DcmTagKey& tag, const std::string& value,
+                         const std::filesystem::path& path, const DicomStudy& study) {
+    if (!anonymised(study)) {
+        put(data, tag, value, path);
+    }
+}
+
+/// Puts `value`, or an empty value when anonymising (type 2 attributes).
+void putOrEmpty(DcmDataset& data, const DcmTagKey& tag, const std::string& value,
+                const std::filesystem::path& path, const DicomStudy& study) {
+    put(data, tag, anonymised(study) ? std::string() : value, path);
+}
+
+/// De-identification Method Code Sequence: one item, the basic profile (DCM 113100).
+void putDeidentificationCode(DcmDataset& data, const std::filesystem::path& path) {
+    auto* item = new DcmItem();  // owned by the sequence once inserted
+    const bool ok =
+        item->putAndInsertString(DCM_CodeValue, "113100").good() &&
+        item->putAndInsertString(DCM_CodingSchemeDesignator, "DCM").good() &&
+        item->putAndInsertString(DCM_CodeMeaning, "Basic Application Confidentiality Profile")
+            .good();
+    if (!ok || data.insertSequenceItem(DCM_DeidentificationMethodCodeSequence, item).bad()) {
+        delete item;  // NOLINT(cppcoreguidelines-owning-memory): not inserted
+        throw IoError(path, "cannot set the de-identification method code");
+    }
+}
+
 /// Patient, General Study, General Series (parts), General / SC Equipment and
 /// SOP Common: what both instances share.
 void putCommon(DcmDataset& data, const std::filesystem::path& path, const char* sopClass,
@@ -49,8 +88,8 @@ void putCommon(DcmDataset& data, const std::filesystem::path& path, const char* 
     put(data, DCM_SOPClassUID, sopClass, path);
     put(data, DCM_SOPInstanceUID, sopInstance, path);
     const QDateTime now = QDateTime::currentDateTime();
-    put(data, DCM_InstanceCreationDate, dicomDate(now), path);
-    put(data, DCM_InstanceCreationTime, dicomTime(now), path);
+    putUnlessAnonymised(data, DCM_InstanceCreationDate, dicomDate(now), path, study);
+    putUnlessAnonymised(data, DCM_InstanceCreationTime, dicomTime(now), path, study);
 
     // Patient module: type 2 attributes present, empty when not known or anonymised.
     const bool known = study.patient && !study.patient->anonymise;
@@ -61,18 +100,24 @@ void putCommon(DcmDataset& data, const std::filesystem::path& path, const char* 
     put(data, DCM_PatientID, field(&ReportPatient::id), path);
     put(data, DCM_PatientBirthDate, field(&ReportPatient::birthDate), path);
     put(data, DCM_PatientSex, field(&ReportPatient::sex), path);
-    if (study.patient && study.patient->anonymise) {
+    if (anonymised(study)) {
         put(data, DCM_PatientIdentityRemoved, "YES", path);
-        put(data, DCM_DeidentificationMethod, "VesselView: patient identifiers removed", path);
+        put(data, DCM_DeidentificationMethod, "DICOM PS3.15 E.1 Basic Profile (VesselView)", path);
+        putDeidentificationCode(data, path);
+        put(data, DCM_LongitudinalTemporalInformationModified, "REMOVED", path);
     }
 
-    // General Study.
-    put(data, DCM_StudyInstanceUID, study.studyInstanceUid, path);
+    // General Study. Anonymised: a pseudonymous Study Instance UID, no dates,
+    // no study ID (the profile's U, Z and Z).
+    put(data, DCM_StudyInstanceUID,
+        anonymised(study) ? anonymisedUid(study.studyInstanceUid) : study.studyInstanceUid, path);
     const bool sourceDate = !study.studyDate.empty();
-    put(data, DCM_StudyDate, sourceDate ? study.studyDate : dicomDate(study.studyDateTime), path);
-    put(data, DCM_StudyTime, sourceDate ? study.studyTime : dicomTime(study.studyDateTime), path);
+    putOrEmpty(data, DCM_StudyDate, sourceDate ? study.studyDate : dicomDate(study.studyDateTime),
+               path, study);
+    putOrEmpty(data, DCM_StudyTime, sourceDate ? study.studyTime : dicomTime(study.studyDateTime),
+               path, study);
     put(data, DCM_ReferringPhysicianName, field(&ReportPatient::referringPhysician), path);
-    put(data, DCM_StudyID, study.studyId, path);
+    putOrEmpty(data, DCM_StudyID, study.studyId, path, study);
     put(data, DCM_AccessionNumber, field(&ReportPatient::accession), path);
 
     // General Series.
@@ -80,8 +125,8 @@ void putCommon(DcmDataset& data, const std::filesystem::path& path, const char* 
     put(data, DCM_SeriesInstanceUID, newDicomUid(), path);
     put(data, DCM_SeriesNumber, std::to_string(series.seriesNumber), path);
     put(data, DCM_SeriesDescription, series.description, path);
-    put(data, DCM_SeriesDate, dicomDate(series.contentDateTime), path);
-    put(data, DCM_SeriesTime, dicomTime(series.contentDateTime), path);
+    putUnlessAnonymised(data, DCM_SeriesDate, dicomDate(series.contentDateTime), path, study);
+    putUnlessAnonymised(data, DCM_SeriesTime, dicomTime(series.contentDateTime), path, study);
 
     // General Equipment and SC Equipment (WSD: workstation).
     put(data, DCM_Manufacturer, "VesselView", path);
@@ -89,8 +134,8 @@ void putCommon(DcmDataset& data, const std::filesystem::path& path, const char* 
     put(data, DCM_ConversionType, "WSD", path);
 
     put(data, DCM_InstanceNumber, "1", path);
-    put(data, DCM_ContentDate, dicomDate(series.contentDateTime), path);
-    put(data, DCM_ContentTime, dicomTime(series.contentDateTime), path);
+    putOrEmpty(data, DCM_ContentDate, dicomDate(series.contentDateTime), path, study);
+    putOrEmpty(data, DCM_ContentTime, dicomTime(series.contentDateTime), path, study);
 }
 
 void save(DcmFileFormat& file, const std::filesystem::path& path) {
@@ -105,6 +150,44 @@ void save(DcmFileFormat& file, const std::filesystem::path& path) {
 }
 
 }  // namespace
+
+std::string anonymisedUid(const std::string& uid) {
+    // 16 random bytes, drawn once per process: the same source UID maps to the
+    // same pseudonym within one run, and to unrelated ones in different runs.
+    static const QByteArray salt = [] {
+        std::random_device device;
+        QByteArray bytes;
+        for (int i = 0; i < 4; ++i) {
+            const auto word = static_cast<std::uint32_t>(device());
+            bytes.append(reinterpret_cast<const char*>(&word), sizeof word);
+        }
+        return bytes;
+    }();
+    QCryptographicHash hash(QCryptographicHash::Sha256);
+    hash.addData(salt);
+    hash.addData(QByteArrayView(uid.data(), static_cast<qsizetype>(uid.size())));
+    const QByteArray digest = hash.result();
+    // PS3.5 B.2: "2.25." followed by a 128-bit integer in decimal: the first
+    // 16 bytes of the digest (big-endian) divided by 10 until nothing is left.
+    std::array<unsigned, 16> number{};
+    for (std::size_t i = 0; i < number.size(); ++i) {
+        number[i] = static_cast<std::uint8_t>(digest[static_cast<qsizetype>(i)]);
+    }
+    std::string digits;
+    bool zero = false;
+    while (!zero) {
+        unsigned remainder = 0;
+        zero = true;
+        for (unsigned& byte : number) {
+            const unsigned current = remainder * 256U + byte;
+            byte = current / 10U;
+            remainder = current % 10U;
+            zero = zero && byte == 0U;
+        }
+        digits.insert(digits.begin(), static_cast<char>('0' + remainder));
+    }
+    return "2.25." + digits;
+}
 
 std::string newDicomUid() {
     char uid[100] = {};
@@ -152,8 +235,10 @@ std::string writeSecondaryCapture(const std::filesystem::path& path, const QImag
     put(data, DCM_ImageType, "DERIVED\\SECONDARY", path);
     put(data, DCM_BurnedInAnnotation, "NO", path);
     put(data, DCM_LossyImageCompression, "00", path);
-    put(data, DCM_DateOfSecondaryCapture, dicomDate(series.contentDateTime), path);
-    put(data, DCM_TimeOfSecondaryCapture, dicomTime(series.contentDateTime), path);
+    putUnlessAnonymised(data, DCM_DateOfSecondaryCapture, dicomDate(series.contentDateTime), path,
+                        study);
+    putUnlessAnonymised(data, DCM_TimeOfSecondaryCapture, dicomTime(series.contentDateTime), path,
+                        study);
     // Image Pixel: 8-bit RGB, interleaved.
     const auto u16 = [&](const DcmTagKey& tag, unsigned value) {
         if (data.putAndInsertUint16(tag, static_cast<Uint16>(value)).bad()) {
@@ -189,11 +274,11 @@ std::string writeEncapsulatedPdf(const std::filesystem::path& path, const QByteA
     const std::string sopInstance = newDicomUid();
     putCommon(data, path, UID_EncapsulatedPDFStorage, sopInstance, "DOC", study, series);
     // Encapsulated Document module.
-    put(data, DCM_AcquisitionDateTime,
-        QLocale::c()
-            .toString(series.contentDateTime, QStringLiteral("yyyyMMddHHmmss"))
-            .toStdString(),
-        path);
+    putOrEmpty(data, DCM_AcquisitionDateTime,
+               QLocale::c()
+                   .toString(series.contentDateTime, QStringLiteral("yyyyMMddHHmmss"))
+                   .toStdString(),
+               path, study);
     // The PDF shows the patient block unless there is none or it is anonymised.
     const bool identifies = study.patient && !study.patient->anonymise;
     put(data, DCM_BurnedInAnnotation, identifies ? "YES" : "NO", path);

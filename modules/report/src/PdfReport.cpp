@@ -451,11 +451,18 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
         if (!content.sources.empty()) {
             flow.heading(QStringLiteral("Data"), mm(8.0));
             std::vector<std::pair<QString, QString>> files;
-            for (const auto& source : content.sources) {
-                const QFileInfo info(QFile::decodeName(source.c_str()));
-                files.emplace_back(
-                    files.empty() ? QStringLiteral("Source files") : QString(),
-                    info.fileName() + QStringLiteral("  \u2014  ") + info.absolutePath());
+            if (content.patient && content.patient->anonymise) {
+                // Folder and file names of patient data often carry names or IDs.
+                files.emplace_back(QStringLiteral("Source files"),
+                                   QStringLiteral("%1 (names withheld: anonymised report)")
+                                       .arg(content.sources.size()));
+            } else {
+                for (const auto& source : content.sources) {
+                    const QFileInfo info(QFile::decodeName(source.c_str()));
+                    files.emplace_back(
+                        files.empty() ? QStringLiteral("Source files") : QString(),
+                        info.fileName() + QStringLiteral("  \u2014  ") + info.absolutePath());
+                }
             }
             fieldGrid(flow, files, 1, true);
         }

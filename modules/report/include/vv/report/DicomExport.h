@@ -21,8 +21,13 @@ struct DicomStudy {
     std::string studyDate;  ///< the source study's Study Date (DA); empty = from studyDateTime
     std::string studyTime;  ///< ... Study Time (TM); used only with studyDate
     /// The patient module; nullopt writes it empty (type 2 attributes present
-    /// without value). With patient->anonymise the identifiers are left empty
-    /// and Patient Identity Removed is YES.
+    /// without value). With patient->anonymise the export follows the Basic
+    /// Application Level Confidentiality Profile (DICOM PS3.15 E.1): the patient
+    /// identifiers, accession number, referring physician, study ID and every
+    /// date and time are left empty (type 2) or left out (type 3), the Study
+    /// Instance UID becomes anonymisedUid() of the source's, and Patient
+    /// Identity Removed (YES), De-identification Method (+ code 113100) and
+    /// Longitudinal Temporal Information Modified (REMOVED) say so.
     std::optional<ReportPatient> patient;
 };
 
@@ -38,6 +43,13 @@ struct DicomSeries {
 
 /// A fresh DICOM UID (DCMTK's root and generator).
 [[nodiscard]] std::string newDicomUid();
+
+/// The pseudonym of `uid` in anonymised exports: "2.25." + a 128-bit number
+/// (PS3.5 B.2) from SHA-256 of a per-process random salt and `uid`. The same
+/// `uid` gives the same pseudonym within one process (the report's instances
+/// stay in one study) and an unrelated one in another process; it cannot be
+/// traced back to `uid`.
+[[nodiscard]] std::string anonymisedUid(const std::string& uid);
 
 /// Writes `image` as a Secondary Capture Image Storage instance (RGB, 8 bits,
 /// modality OT, conversion type WSD) in a new series of `study` to `path`,

@@ -65,7 +65,9 @@ struct ReportSettings {
 struct ReportContent {
     std::string title = "Vessel tree report";
     std::optional<ReportPatient> patient;
-    std::vector<std::filesystem::path> sources;  ///< the data files
+    /// The data files: name and folder each; only their count when the
+    /// patient is anonymised (folder and file names often identify patients).
+    std::vector<std::filesystem::path> sources;
     ReportView view;
     std::optional<ReportView> secondView;
     std::optional<ReportParameter> parameter;
