@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <string>
@@ -42,11 +43,13 @@ constexpr const char* kSoakUsage =
     "  Renders FRAMES frames (>= 101) offscreen in one process, changing the camera\n"
     "  and the settings (VSS, scale, p, iso-lines, colour map, array, AO, FXAA,\n"
     "  cue, legends, size) every frame; OpenGL errors are checked after every\n"
-    "  frame (a GL error fails the frame). Prints resident memory (VmRSS) after\n"
-    "  frame 100 and at the end, and every N frames (default 1000). RSS swings by\n"
-    "  tens of MiB within a frame (transient buffers), so it is read after every\n"
-    "  frame and each figure is the peak over a window of 100 frames: frames\n"
-    "  1..100 and the last 100. Exit 1 when the end is more than 5% above.\n"
+    "  frame (a GL error fails the frame). Reads resident memory (VmRSS) after\n"
+    "  every frame and prints it every N frames (default 1000). Readings swing by\n"
+    "  tens of MiB from frame to frame (transient buffers, GL objects the driver\n"
+    "  frees late), so the memory in use is the floor (lowest reading) over a\n"
+    "  window of 100 frames: a leak raises it, a transient does not. Exit 1 when\n"
+    "  the floor of the last 100 frames is more than 5% above that of frames\n"
+    "  1..100; the peaks of both windows are printed too.\n"
     "  --mesh FILE  the scene (default: the demo tree, generated in memory)\n"
     "  --size WxH   the base image size (default 640x480)\n"
     "  --resize-every N  switch between the base size and 3/4 of it every N\n"
@@ -159,7 +162,9 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
 
     std::uint64_t after100 = 0;  // peak over frames 1..100
     std::uint64_t end = 0;       // peak over the last 100 frames
-    std::uint64_t lapPeak = 0;   // peak since the last progress line
+    std::uint64_t floor100 = std::numeric_limits<std::uint64_t>::max();  // lowest, frames 1..100
+    std::uint64_t floorEnd = std::numeric_limits<std::uint64_t>::max();  // lowest, last 100
+    std::uint64_t lapPeak = 0;  // peak since the last progress line
     const auto start = std::chrono::steady_clock::now();
     auto lapStart = start;
     for (long f = 1; f <= frames; ++f) {
@@ -204,12 +209,14 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         lapPeak = std::max(lapPeak, rss);
         if (f <= 100) {
             after100 = std::max(after100, rss);
+            floor100 = std::min(floor100, rss);
         }
         if (f > frames - 100) {
             end = std::max(end, rss);
+            floorEnd = std::min(floorEnd, rss);
         }
         if (f == 100) {
-            out << "frames 1-100: peak resident " << mib(after100) << "\n";
+            out << "frames 1-100: resident " << mib(floor100) << " .. " << mib(after100) << "\n";
         }
         if (f % every == 0 || f == frames) {
             const auto now = std::chrono::steady_clock::now();
@@ -228,17 +235,20 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double growth =
-        after100 > 0 ? 100.0 * (static_cast<double>(end) / static_cast<double>(after100) - 1.0)
-                     : 0.0;
-    char summary[240];
+    const auto percent = [](std::uint64_t before, std::uint64_t after) {
+        return before > 0 ? 100.0 * (static_cast<double>(after) / static_cast<double>(before) - 1.0)
+                          : 0.0;
+    };
+    const double growth = percent(floor100, floorEnd);
+    char summary[320];
     std::snprintf(summary, sizeof summary,
-                  "soak: %ld frames in %.0f s (%.1f ms/frame); peak resident over frames 1-100 %s, "
-                  "over the last 100 %s (%+.2f%%)\n",
+                  "soak: %ld frames in %.0f s (%.1f ms/frame); resident in use (floor) over "
+                  "frames 1-100 %s, over the last 100 %s (%+.2f%%); peaks %s and %s (%+.2f%%)\n",
                   frames, seconds, 1000.0 * seconds / static_cast<double>(frames),
-                  mib(after100).c_str(), mib(end).c_str(), growth);
+                  mib(floor100).c_str(), mib(floorEnd).c_str(), growth, mib(after100).c_str(),
+                  mib(end).c_str(), percent(after100, end));
     out << summary;
-    if (after100 == 0 || end == 0) {
+    if (floor100 == 0 || floorEnd == 0) {
         err << "vesselview-cli: soak: cannot read VmRSS from /proc/self/status\n";
         return kInternalError;
     }
