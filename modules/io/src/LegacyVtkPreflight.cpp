@@ -243,10 +243,21 @@ LegacyDataset preflightLegacyVtk(const fs::path& file, std::uintmax_t size, Pref
     const auto skipArray = [&](std::uint64_t values, const std::string& type) {
         fits(values, std::to_string(values) + " values");
         if (!binary) {
+            // vtkDataReader reads numbers with operator>>: on text glued to a
+            // number ("0POLYGONS0") it loses its place in the file and later
+            // dereferences a null pointer (found by fuzzing). Numbers only.
+            const bool numeric = legacyBinaryBytes(type, 0).has_value();
             for (std::uint64_t k = 0; k < values; ++k) {
                 if (!tokens.next(token)) {
                     throw bad("the data ends early (" + std::to_string(k) + " of " +
                               std::to_string(values) + " values): truncated file");
+                }
+                if (numeric) {
+                    char* end = nullptr;
+                    static_cast<void>(std::strtod(token.c_str(), &end));
+                    if (end != token.c_str() + token.size()) {
+                        throw bad("'" + printable(token) + "' where a number belongs");
+                    }
                 }
                 if ((k & 0xFFFFU) == 0) {
                     tick(reader.position());

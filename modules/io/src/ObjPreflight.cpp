@@ -25,6 +25,8 @@ void preflightObj(const fs::path& file, PreflightTicker& tick) {
     std::uint64_t lineNumber = 0;
     std::int64_t counts[3] = {0, 0, 0};  // v, vt, vn
     int faceForm = -1;                   // bit 0 vertex, 1 texture, 2 normal
+    bool haveFaces = false;
+    bool haveLinesOrPoints = false;
     constexpr std::size_t kMaxLine = 1 << 16;
     while (reader.readLine(line, kMaxLine, truncated)) {
         ++lineNumber;
@@ -91,7 +93,9 @@ void preflightObj(const fs::path& file, PreflightTicker& tick) {
                     }
                     from = slash + 1;
                 }
-                if (parts.size() > 3 || parts[0].empty()) {
+                // A trailing '/' ("2/", "2//", "2/1/") makes vtkOBJReader read
+                // texture coordinates or normals that do not exist (a crash).
+                if (parts.size() > 3 || parts[0].empty() || parts.back().empty()) {
                     throw FormatError(file, "line " + std::to_string(lineNumber) + ": '" +
                                                 printable(ref) + "' is not a valid reference");
                 }
@@ -127,6 +131,15 @@ void preflightObj(const fs::path& file, PreflightTicker& tick) {
                                                 "texture coordinates or normals)");
                 }
                 elementForm = form;
+            }
+            // vtkOBJReader gives its cell arrays (GroupIds) one value per face
+            // only, so with line or point elements as well, filters that copy
+            // cell data read past their end (found by fuzzing).
+            (key == "f" ? haveFaces : haveLinesOrPoints) = true;
+            if (haveFaces && haveLinesOrPoints) {
+                throw FormatError(file, "line " + std::to_string(lineNumber) +
+                                            ": faces mixed with line ('l') or point ('p') "
+                                            "elements are not supported");
             }
             if (key == "f" && elementForm >= 0) {
                 if (faceForm >= 0 && elementForm != faceForm) {

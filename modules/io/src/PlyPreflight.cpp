@@ -152,6 +152,15 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
             return FormatError(file, "PLY header line " + std::to_string(headerLines) + " ('" +
                                          printable(line, 80) + "'): " + why);
         };
+        // vtkPLY splits header words at spaces and tabs only: another control
+        // character ("element\f vertex") makes an unknown keyword, and the
+        // properties after it crash vtkPLY::add_property (found by fuzzing).
+        if (std::any_of(line.begin(), line.end(), [](char c) {
+                const auto u = static_cast<unsigned char>(c);
+                return (u < 0x20 && c != '\t') || u == 0x7F;
+            })) {
+            throw bad("a control character in the header");
+        }
         if (words[0] == "comment" || words[0] == "obj_info") {
             continue;
         }
@@ -231,6 +240,27 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
         throw FormatError(file, "the PLY header names no format");
     }
 
+    // vtkPLYReader reads the vertex and face elements where they start only
+    // when no other element comes before them: it reads another element's
+    // data as vertices or faces otherwise (out-of-bounds reads and crashes,
+    // found by fuzzing). Other elements are fine after both.
+    bool otherElementSeen = false;
+    for (const auto& element : elements) {
+        const bool known = element.name == "vertex" || element.name == "face";
+        if (known && otherElementSeen) {
+            throw FormatError(file, "the PLY element '" + printable(element.name) +
+                                        "' follows another element; VTK's PLY reader "
+                                        "needs 'vertex' and 'face' first");
+        }
+        otherElementSeen = otherElementSeen || !known;
+        // vtkPLY frees an invalid pointer when it closes a file with an
+        // element without properties (found by fuzzing).
+        if (element.properties.empty()) {
+            throw FormatError(
+                file, "the PLY element '" + printable(element.name) + "' has no properties");
+        }
+    }
+
     PlyData data;
     const PlyElement* vertex = nullptr;
     for (auto& element : elements) {
@@ -250,7 +280,10 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
                 extra.element = element.name;
                 extra.name = property.name;
                 extra.integer = property.type.integer;
-                extra.values.reserve(static_cast<std::size_t>(element.count));
+                // The count is not checked against the file yet: reserve no
+                // more than the file could hold (a value takes >= 1 byte).
+                extra.values.reserve(
+                    static_cast<std::size_t>(std::min<std::uint64_t>(element.count, size)));
                 data.extras.push_back(std::move(extra));
             }
         }

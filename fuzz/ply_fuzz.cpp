@@ -1,0 +1,12 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// libFuzzer target "ply": one input through vv::fuzz::feedMesh(..., ".ply")
+// (FuzzBodies.h). A vv::Error is an expected refusal; anything else is a finding.
+#include <cstddef>
+#include <cstdint>
+
+#include "FuzzBodies.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+    static_cast<void>(vv::fuzz::feedMesh(vv::fuzz::Bytes(data, size), ".ply"));
+    return 0;
+}
