@@ -21,6 +21,152 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::ExportImageDialog</name>
+    <message>
+        <source>Export Image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Export image</source>
+        <translation>Bild exportieren</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Datei:</translation>
+    </message>
+    <message>
+        <source>View size (%1 × %2)</source>
+        <translation>Ansichtsgröße (%1 × %2)</translation>
+    </message>
+    <message>
+        <source>Full HD (1920 × 1080)</source>
+        <translation>Full HD (1920 × 1080)</translation>
+    </message>
+    <message>
+        <source>4K UHD (3840 × 2160)</source>
+        <translation>4K UHD (3840 × 2160)</translation>
+    </message>
+    <message>
+        <source>8K UHD (7680 × 4320)</source>
+        <translation>8K UHD (7680 × 4320)</translation>
+    </message>
+    <message>
+        <source>Custom</source>
+        <translation>Benutzerdefiniert</translation>
+    </message>
+    <message>
+        <source>&amp;Size:</source>
+        <translation>&amp;Größe:</translation>
+    </message>
+    <message>
+        <source> px</source>
+        <translation> px</translation>
+    </message>
+    <message>
+        <source>Width × height:</source>
+        <translation>Breite × Höhe:</translation>
+    </message>
+    <message>
+        <source>&amp;Keep the view&apos;s aspect ratio</source>
+        <translation>Seitenverhältnis der Ansicht &amp;beibehalten</translation>
+    </message>
+    <message>
+        <source>The image shows exactly what the view shows; presets fit the view into their size</source>
+        <translation>Das Bild zeigt genau, was die Ansicht zeigt; Vorgaben passen die Ansicht in ihre Größe ein</translation>
+    </message>
+    <message>
+        <source>&amp;Legends</source>
+        <translation>&amp;Legenden</translation>
+    </message>
+    <message>
+        <source>&amp;Transparent background</source>
+        <translation>&amp;Transparenter Hintergrund</translation>
+    </message>
+    <message>
+        <source>Pixels without vessels or VSS get alpha 0</source>
+        <translation>Pixel ohne Gefäße oder VSS erhalten Alpha 0</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>Choose a file name for the image.</source>
+        <translation>Wählen Sie einen Dateinamen für das Bild.</translation>
+    </message>
+    <message>
+        <source>%1 is a folder; choose a file name for the image.</source>
+        <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen für das Bild.</translation>
+    </message>
+    <message>
+        <source>%1 × %2 pixels is larger than 8K: images are at most 7680 × 4320 pixels (either way round).</source>
+        <translation>%1 × %2 Pixel ist größer als 8K: Bilder haben höchstens 7680 × 4320 Pixel (in beiden Ausrichtungen).</translation>
+    </message>
+    <message>
+        <source>There is no data on screen to export.</source>
+        <translation>Es werden keine Daten angezeigt, die exportiert werden könnten.</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>%1 wird exportiert</translation>
+    </message>
+    <message>
+        <source>Rendering %1 × %2</source>
+        <translation>Rendern mit %1 × %2</translation>
+    </message>
+    <message>
+        <source>Writing the PNG file</source>
+        <translation>PNG-Datei wird geschrieben</translation>
+    </message>
+    <message>
+        <source>Exported %1 (%2 × %3%4)</source>
+        <translation>%1 exportiert (%2 × %3%4)</translation>
+    </message>
+    <message>
+        <source>, transparent background</source>
+        <translation>, transparenter Hintergrund</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::ExportWorker</name>
+    <message>
+        <source>unexpected error</source>
+        <translation>unerwarteter Fehler</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Export</source>
+        <translation>Export</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <source>Export cancelled: nothing was written</source>
+        <translation>Export abgebrochen: es wurde nichts geschrieben</translation>
+    </message>
+    <message>
+        <source>Export failed: %1</source>
+        <translation>Export fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Cannot export</source>
+        <translation>Export nicht möglich</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::MainWindow</name>
     <message>
         <source>OpenGL 4.1 is not available</source>
@@ -396,6 +542,22 @@
         <source>Choose a series</source>
         <translation>Serie auswählen</translation>
     </message>
+    <message>
+        <source>&amp;Export Image…</source>
+        <translation>Bild &amp;exportieren…</translation>
+    </message>
+    <message>
+        <source>Export Re&amp;port…</source>
+        <translation>Be&amp;richt exportieren…</translation>
+    </message>
+    <message>
+        <source>Segmentation</source>
+        <translation>Segmentierung</translation>
+    </message>
+    <message>
+        <source>Open data first: there is nothing to export</source>
+        <translation>Zuerst Daten öffnen: es gibt nichts zu exportieren</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -432,6 +594,192 @@
     <message>
         <source>Reading the DICOM headers of %1</source>
         <translation>DICOM-Header von %1 werden gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::ReportDialog</name>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Export Report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>&amp;Report (PDF):</source>
+        <translation>&amp;Bericht (PDF):</translation>
+    </message>
+    <message>
+        <source>Export report</source>
+        <translation>Bericht exportieren</translation>
+    </message>
+    <message>
+        <source>PDF documents (*.pdf)</source>
+        <translation>PDF-Dokumente (*.pdf)</translation>
+    </message>
+    <message>
+        <source>A4</source>
+        <translation>A4</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter</translation>
+    </message>
+    <message>
+        <source>&amp;Paper:</source>
+        <translation>&amp;Papier:</translation>
+    </message>
+    <message>
+        <source>Findings, printed at the end of the report</source>
+        <translation>Befund, am Ende des Berichts gedruckt</translation>
+    </message>
+    <message>
+        <source>&amp;Findings:</source>
+        <translation>Be&amp;fund:</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keine</translation>
+    </message>
+    <message>
+        <source>Far</source>
+        <translation>Fern</translation>
+    </message>
+    <message>
+        <source>Medium</source>
+        <translation>Mittel</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Nah</translation>
+    </message>
+    <message>
+        <source>Anterior</source>
+        <translation>Anterior</translation>
+    </message>
+    <message>
+        <source>Posterior</source>
+        <translation>Posterior</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Links</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Rechts</translation>
+    </message>
+    <message>
+        <source>Superior</source>
+        <translation>Superior</translation>
+    </message>
+    <message>
+        <source>Inferior</source>
+        <translation>Inferior</translation>
+    </message>
+    <message>
+        <source>A second image from a camera preset, below the view</source>
+        <translation>Ein zweites Bild aus einer Kameravorgabe, unter der Ansicht</translation>
+    </message>
+    <message>
+        <source>&amp;Second view:</source>
+        <translation>&amp;Zweite Ansicht:</translation>
+    </message>
+    <message>
+        <source>No parameter is shown on the vessels: the report has no statistics</source>
+        <translation>Auf den Gefäßen wird kein Parameter angezeigt: der Bericht enthält keine Statistik</translation>
+    </message>
+    <message>
+        <source>Statistics:</source>
+        <translation>Statistik:</translation>
+    </message>
+    <message>
+        <source>Area &amp;below</source>
+        <translation>Fläche &amp;unter</translation>
+    </message>
+    <message>
+        <source>Area abo&amp;ve</source>
+        <translation>Fläche &amp;über</translation>
+    </message>
+    <message>
+        <source>&amp;Anonymise the patient</source>
+        <translation>Patienten &amp;anonymisieren</translation>
+    </message>
+    <message>
+        <source>Only for data loaded from DICOM: these meshes carry no patient data, so the report has no patient block</source>
+        <translation>Nur für aus DICOM geladene Daten: diese Netze enthalten keine Patientendaten, daher hat der Bericht keinen Patientenblock</translation>
+    </message>
+    <message>
+        <source>Print &quot;anonymised&quot; instead of the patient&apos;s data and leave the identifiers out of the DICOM exports</source>
+        <translation>„anonymisiert“ statt der Patientendaten drucken und die Kennungen in den DICOM-Exporten weglassen</translation>
+    </message>
+    <message>
+        <source>DICOM Secondary &amp;Capture</source>
+        <translation>DICOM Secondary &amp;Capture</translation>
+    </message>
+    <message>
+        <source>DICOM files (*.dcm)</source>
+        <translation>DICOM-Dateien (*.dcm)</translation>
+    </message>
+    <message>
+        <source>DICOM Encapsulated P&amp;DF</source>
+        <translation>DICOM Encapsulated P&amp;DF</translation>
+    </message>
+    <message>
+        <source>PNG &amp;image</source>
+        <translation>PNG-B&amp;ild</translation>
+    </message>
+    <message>
+        <source>PNG images (*.png)</source>
+        <translation>PNG-Bilder (*.png)</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>There is no data on screen to report on.</source>
+        <translation>Es werden keine Daten angezeigt, über die berichtet werden könnte.</translation>
+    </message>
+    <message>
+        <source>PDF report</source>
+        <translation>PDF-Bericht</translation>
+    </message>
+    <message>
+        <source>Choose a file name for the %1.</source>
+        <translation>Wählen Sie einen Dateinamen für: %1.</translation>
+    </message>
+    <message>
+        <source>%1 is a folder; choose a file name for the %2.</source>
+        <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen für: %2.</translation>
+    </message>
+    <message>
+        <source>%1: the folder %2 does not exist.</source>
+        <translation>%1: der Ordner %2 existiert nicht.</translation>
+    </message>
+    <message>
+        <source>%1 is chosen for two outputs.</source>
+        <translation>%1 ist für zwei Ausgaben gewählt.</translation>
+    </message>
+    <message>
+        <source>%1 is the data file shown: choose another name.</source>
+        <translation>%1 ist die angezeigte Datendatei: wählen Sie einen anderen Namen.</translation>
+    </message>
+    <message>
+        <source>Exporting the report %1</source>
+        <translation>Bericht %1 wird exportiert</translation>
+    </message>
+    <message>
+        <source>Exported %1</source>
+        <translation>%1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SegmentationTask</name>
+    <message>
+        <source>unexpected error: %1</source>
+        <translation>unerwarteter Fehler: %1</translation>
     </message>
 </context>
 <context>
@@ -605,6 +953,10 @@ R: reset view · F: fit to data · Ctrl+click: measure</source>
         <translation>Ziehen links: drehen · Ziehen rechts/Mitte oder Umschalt+links: verschieben · Mausrad: zoomen
 R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translation>
     </message>
+    <message>
+        <source>Volume (iso-surface at %1)</source>
+        <translation>Volumen (Isofläche bei %1)</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::DataPanel</name>
@@ -639,6 +991,54 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Point array (range of its finite values)</source>
         <translation>Punktdatenfeld (Bereich seiner endlichen Werte)</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Farbe</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Deckkraft</translation>
+    </message>
+    <message>
+        <source>Array</source>
+        <translation>Datenfeld</translation>
+    </message>
+    <message>
+        <source>Colour of %1</source>
+        <translation>Farbe von %1</translation>
+    </message>
+    <message>
+        <source>Scene array</source>
+        <translation>Datenfeld der Szene</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Keines</translation>
+    </message>
+    <message>
+        <source>The object is hidden: tick it to show it</source>
+        <translation>Das Objekt ist ausgeblendet: zum Anzeigen ankreuzen</translation>
+    </message>
+    <message>
+        <source>Material colour of this object when no array colours it</source>
+        <translation>Materialfarbe dieses Objekts, wenn kein Datenfeld es einfärbt</translation>
+    </message>
+    <message>
+        <source>An array colours this object; choose the array None to use a material colour</source>
+        <translation>Ein Datenfeld färbt dieses Objekt ein; für eine Materialfarbe das Datenfeld „Keines“ wählen</translation>
+    </message>
+    <message>
+        <source>Below 100 % the surface and the VSS behind it show through; 0 % hides the object</source>
+        <translation>Unter 100 % scheinen die Oberfläche und die VSS dahinter durch; 0 % blendet das Objekt aus</translation>
+    </message>
+    <message>
+        <source>The array this object shows: the scene&apos;s (Functional panel), none, or one of its own point arrays</source>
+        <translation>Das Datenfeld, das dieses Objekt zeigt: das der Szene (Bereich Funktionelle Parameter), keines oder eines seiner eigenen Punktdatenfelder</translation>
+    </message>
+    <message>
+        <source>This object has no point arrays</source>
+        <translation>Dieses Objekt hat keine Punktdatenfelder</translation>
     </message>
 </context>
 <context>
@@ -802,6 +1202,26 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>total (CPU) %1 ms</source>
         <translation>gesamt (CPU) %1 ms</translation>
+    </message>
+    <message>
+        <source>Reset</source>
+        <translation>Zurücksetzen</translation>
+    </message>
+    <message>
+        <source>Light:</source>
+        <translation>Licht:</translation>
+    </message>
+    <message>
+        <source>Where the light comes from, around the view: 0° = from the eye, positive = from the right</source>
+        <translation>Woher das Licht kommt, um die Ansicht herum: 0° = vom Auge, positiv = von rechts</translation>
+    </message>
+    <message>
+        <source>Where the light comes from, above or below: positive = from above</source>
+        <translation>Woher das Licht kommt, oben oder unten: positiv = von oben</translation>
+    </message>
+    <message>
+        <source>The default light: a little above and left of the eye</source>
+        <translation>Das Standardlicht: etwas über und links vom Auge</translation>
     </message>
 </context>
 <context>
@@ -967,6 +1387,265 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>No values</source>
         <translation>Keine Werte</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::SegmentationPanel</name>
+    <message>
+        <source>Surface mesh</source>
+        <translation>Oberflächennetz</translation>
+    </message>
+    <message>
+        <source>Ray-cast iso-surface</source>
+        <translation>Ray-Casting-Isofläche</translation>
+    </message>
+    <message>
+        <source>Surface mesh: the segmented vessels. Ray-cast iso-surface: the volume itself, without segmentation, cut at the iso value</source>
+        <translation>Oberflächennetz: die segmentierten Gefäße. Ray-Casting-Isofläche: das Volumen selbst, ohne Segmentierung, beim Isowert geschnitten</translation>
+    </message>
+    <message>
+        <source>Show volume as:</source>
+        <translation>Volumen zeigen als:</translation>
+    </message>
+    <message>
+        <source>Iso value:</source>
+        <translation>Isowert:</translation>
+    </message>
+    <message>
+        <source>Voxels at or above this value may be vessels</source>
+        <translation>Voxel ab diesem Wert können Gefäße sein</translation>
+    </message>
+    <message>
+        <source>Voxels at or below this value may be vessels</source>
+        <translation>Voxel bis zu diesem Wert können Gefäße sein</translation>
+    </message>
+    <message>
+        <source>to</source>
+        <translation>bis</translation>
+    </message>
+    <message>
+        <source>Threshold:</source>
+        <translation>Schwellenwert:</translation>
+    </message>
+    <message>
+        <source>Default</source>
+        <translation>Standard</translation>
+    </message>
+    <message>
+        <source>Largest components</source>
+        <translation>Größte Komponenten</translation>
+    </message>
+    <message>
+        <source>Component under seed</source>
+        <translation>Komponente unter dem Saatpunkt</translation>
+    </message>
+    <message>
+        <source>Keep:</source>
+        <translation>Behalten:</translation>
+    </message>
+    <message>
+        <source>Components:</source>
+        <translation>Komponenten:</translation>
+    </message>
+    <message>
+        <source>Seed:</source>
+        <translation>Saatpunkt:</translation>
+    </message>
+    <message>
+        <source>Remove bone-like components</source>
+        <translation>Knochenartige Komponenten entfernen</translation>
+    </message>
+    <message>
+        <source>Drop bright components mostly made of voxels of 1000 HU or more (CT); a vessel touching bone is dropped with it</source>
+        <translation>Helle Komponenten entfernen, die überwiegend aus Voxeln ab 1000 HU bestehen (CT); ein Gefäß, das Knochen berührt, wird mit entfernt</translation>
+    </message>
+    <message>
+        <source>All</source>
+        <translation>Alle</translation>
+    </message>
+    <message>
+        <source>Decimate the surface to about this many triangles (All: none)</source>
+        <translation>Die Oberfläche auf etwa so viele Dreiecke reduzieren (Alle: keine Reduktion)</translation>
+    </message>
+    <message>
+        <source>Surface triangles:</source>
+        <translation>Dreiecke der Oberfläche:</translation>
+    </message>
+    <message>
+        <source>Pick Seed</source>
+        <translation>Saatpunkt wählen</translation>
+    </message>
+    <message>
+        <source>Click a vessel in the 3-D view: keep only the component under that point</source>
+        <translation>Ein Gefäß in der 3-D-Ansicht anklicken: nur die Komponente unter diesem Punkt behalten</translation>
+    </message>
+    <message>
+        <source>Live preview</source>
+        <translation>Live-Vorschau</translation>
+    </message>
+    <message>
+        <source>Show a quick segmentation of a downsampled copy whenever a control changes</source>
+        <translation>Bei jeder Änderung eine schnelle Segmentierung einer verkleinerten Kopie zeigen</translation>
+    </message>
+    <message>
+        <source>Apply</source>
+        <translation>Anwenden</translation>
+    </message>
+    <message>
+        <source>Segment the whole volume at full resolution</source>
+        <translation>Das ganze Volumen in voller Auflösung segmentieren</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Volume: %1 × %2 × %3 voxels%4</source>
+        <translation>Volumen: %1 × %2 × %3 Voxel%4</translation>
+    </message>
+    <message>
+        <source>Default: computing…</source>
+        <translation>Standard: wird berechnet…</translation>
+    </message>
+    <message>
+        <source>No volume</source>
+        <translation>Kein Volumen</translation>
+    </message>
+    <message>
+        <source>(%1, %2, %3): %4</source>
+        <translation>(%1, %2, %3): %4</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keiner</translation>
+    </message>
+    <message>
+        <source>Only for scenes segmented from a CT or MR series: open one with File &gt; Open Folder…</source>
+        <translation>Nur für Szenen, die aus einer CT- oder MR-Serie segmentiert wurden: eine mit Datei &gt; Ordner öffnen… laden</translation>
+    </message>
+    <message>
+        <source>Default: %1 to %2</source>
+        <translation>Standard: %1 bis %2</translation>
+    </message>
+    <message>
+        <source>Default: none (the volume holds a single value)</source>
+        <translation>Standard: keiner (das Volumen enthält nur einen Wert)</translation>
+    </message>
+    <message>
+        <source>Wait for Apply to finish, or cancel it</source>
+        <translation>Warten, bis Anwenden fertig ist, oder es abbrechen</translation>
+    </message>
+    <message>
+        <source>The segmentation shapes the surface mesh: show the volume as a surface mesh to change it</source>
+        <translation>Die Segmentierung formt das Oberflächennetz: zum Ändern das Volumen als Oberflächennetz zeigen</translation>
+    </message>
+    <message>
+        <source>The iso-surface that rays stop at; follows the lower threshold until edited</source>
+        <translation>Die Isofläche, an der die Strahlen anhalten; folgt dem unteren Schwellenwert, bis sie geändert wird</translation>
+    </message>
+    <message>
+        <source>Only for the ray-cast iso-surface display</source>
+        <translation>Nur für die Anzeige als Ray-Casting-Isofläche</translation>
+    </message>
+    <message>
+        <source>Keep this many of the largest components</source>
+        <translation>So viele der größten Komponenten behalten</translation>
+    </message>
+    <message>
+        <source>The seed mode keeps the one component under the seed</source>
+        <translation>Der Saatpunkt-Modus behält die eine Komponente unter dem Saatpunkt</translation>
+    </message>
+    <message>
+        <source>Use the default range of the volume&apos;s modality</source>
+        <translation>Den Standardbereich der Modalität des Volumens verwenden</translation>
+    </message>
+    <message>
+        <source>The default range is not known yet</source>
+        <translation>Der Standardbereich ist noch nicht bekannt</translation>
+    </message>
+    <message>
+        <source>Show the volume as a surface mesh to apply a segmentation</source>
+        <translation>Zum Anwenden einer Segmentierung das Volumen als Oberflächennetz zeigen</translation>
+    </message>
+    <message>
+        <source>Pick a seed first</source>
+        <translation>Zuerst einen Saatpunkt wählen</translation>
+    </message>
+    <message>
+        <source>Apply is running</source>
+        <translation>Anwenden läuft</translation>
+    </message>
+    <message>
+        <source>Stop Apply; the scene stays as it is</source>
+        <translation>Anwenden abbrechen; die Szene bleibt, wie sie ist</translation>
+    </message>
+    <message>
+        <source>Nothing to cancel</source>
+        <translation>Nichts abzubrechen</translation>
+    </message>
+    <message>
+        <source>Pick a seed: turn on Pick Seed and click a vessel</source>
+        <translation>Einen Saatpunkt wählen: „Saatpunkt wählen“ einschalten und ein Gefäß anklicken</translation>
+    </message>
+    <message>
+        <source>No preview: %1</source>
+        <translation>Keine Vorschau: %1</translation>
+    </message>
+    <message>
+        <source>full resolution</source>
+        <translation>volle Auflösung</translation>
+    </message>
+    <message>
+        <source>one voxel in %1 per axis</source>
+        <translation>ein Voxel von %1 je Achse</translation>
+    </message>
+    <message>
+        <source>Preview (%1): %2 triangles; components kept: %3</source>
+        <translation>Vorschau (%1): %2 Dreiecke; behaltene Komponenten: %3</translation>
+    </message>
+    <message>
+        <source>Apply for full resolution</source>
+        <translation>Anwenden für volle Auflösung</translation>
+    </message>
+    <message>
+        <source>Apply failed: %1</source>
+        <translation>Anwenden fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>Apply cancelled; the scene is unchanged</source>
+        <translation>Anwenden abgebrochen; die Szene ist unverändert</translation>
+    </message>
+    <message>
+        <source>Segmenting at full resolution…</source>
+        <translation>Segmentierung in voller Auflösung…</translation>
+    </message>
+    <message>
+        <source>Segmented: %1 triangles; components kept: %2 of %3</source>
+        <translation>Segmentiert: %1 Dreiecke; behaltene Komponenten: %2 von %3</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Wird abgebrochen…</translation>
+    </message>
+    <message>
+        <source>Ray-cast iso-surface at %1</source>
+        <translation>Ray-Casting-Isofläche bei %1</translation>
+    </message>
+    <message>
+        <source>The point lies outside the volume: no seed there</source>
+        <translation>Der Punkt liegt außerhalb des Volumens: dort ist kein Saatpunkt möglich</translation>
+    </message>
+    <message>
+        <source>Voxel (%1, %2, %3) holds %4, outside the threshold range %5 to %6: no component there. Click on a vessel, or widen the range.</source>
+        <translation>Voxel (%1, %2, %3) hat %4, außerhalb des Schwellenbereichs %5 bis %6: dort gibt es keine Komponente. Ein Gefäß anklicken oder den Bereich erweitern.</translation>
+    </message>
+    <message>
+        <source>Seed at voxel %1</source>
+        <translation>Saatpunkt bei Voxel %1</translation>
+    </message>
+    <message>
+        <source>No surface under the mouse: click on a vessel</source>
+        <translation>Keine Oberfläche unter der Maus: ein Gefäß anklicken</translation>
     </message>
 </context>
 <context>

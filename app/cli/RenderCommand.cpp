@@ -7,7 +7,9 @@
 //                            [--timings]
 //                            [--view far|medium|close|anterior|posterior|left|right|
 //                                    superior|inferior]
-//                            [--depth-out DEPTH.pfm]
+//                            [--depth-out DEPTH.pfm] [--tile N]
+// --tile N renders in tiles of at most N pixels per side (small GPUs; the
+// image is the same, report::renderView); not with --timings / --depth-out.
 // FILE may be a mesh file or DICOM (a folder, a DICOMDIR, a file): the series is
 // segmented into vessel surfaces, see io::setSceneSourceOption:
 //                            [--series UID] [--threshold LO:HI] [--components N]
@@ -43,10 +45,12 @@
 #include "vv/io/SceneSource.h"
 #include "vv/io/VolumeSegmentation.h"
 #include "vv/render/DepthRasterizer.h"
+#include "vv/render/LegendPainter.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/RenderGraph.h"
 #include "vv/render/ViewPresets.h"
+#include "vv/report/ViewExport.h"
 #include "vv/vss/Pfm.h"
 #include "vv/vss/Solver.h"
 
@@ -62,6 +66,7 @@ struct RenderArguments : RenderOptionValues {
     io::SceneSourceOptions source;      ///< DICOM: series, segmentation, surface
     bool raycast = false;               ///< --raycast: the volume as depth source
     std::optional<float> iso;           ///< --iso HU
+    int maxTileSide = 0;                ///< --tile N; 0 = one piece
 };
 
 /// --raycast: a scene of the volume's eight corners, only for fitting the camera.
@@ -112,6 +117,8 @@ RenderArguments parse(const std::vector<std::string>& args) {
             }
         } else if (a == "--timings") {
             parsed.timings = true;
+        } else if (a == "--tile") {
+            parsed.maxTileSide = parseTileSide(value());
         } else if (a == "--raycast") {
             parsed.raycast = true;
         } else if (a == "--iso") {
@@ -136,6 +143,10 @@ RenderArguments parse(const std::vector<std::string>& args) {
     }
     if (parsed.iso && !parsed.raycast) {
         throw UsageError("render: --iso needs --raycast");
+    }
+    if (parsed.maxTileSide > 0 && (parsed.timings || !parsed.depthOutput.empty())) {
+        // Both describe one frame's G-buffer and passes; tiles have many.
+        throw UsageError("render: --tile cannot be combined with --timings or --depth-out");
     }
     if (parsed.raycast && !parsed.depthOutput.empty() && !parsed.vss.enabled) {
         // The depth comes from the VSS solve's read-back; the CPU rasteriser has no volumes.
@@ -186,7 +197,22 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
 
     ensureGuiApplication();
     render::OffscreenRenderer renderer;
-    const QImage image = renderer.render(scene, options);
+    QImage image;
+    int tiles = 1;
+    if (parsed.maxTileSide > 0) {
+        report::ViewExportOptions tiled;
+        tiled.render = options;
+        tiled.legends = false;  // painted below as render() paints them
+        tiled.maxTileSide = parsed.maxTileSide;
+        report::RenderedView view = report::renderView(renderer, scene, tiled);
+        if (options.legends) {
+            render::paintLegends(view.image, view.legends);
+        }
+        image = std::move(view.image);
+        tiles = view.tiles;
+    } else {
+        image = renderer.render(scene, options);
+    }
 
     if (!parsed.depthOutput.empty()) {
         // The G-buffer's depth when the VSS solve read it for this frame,
@@ -261,6 +287,9 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         summary << "\n";
     }
     summary << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
+    if (tiles > 1) {
+        summary << " in " << tiles << " tiles";
+    }
     if (options.style.array.empty()) {
         summary << ", no array";
     } else {

@@ -10,6 +10,7 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/report/ViewExport.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::cli {
@@ -70,6 +71,32 @@ int parseInt(const std::string& text, const std::string& what) {
         throw UsageError("invalid " + what + " '" + text + "'");
     }
     return value;
+}
+
+render::LightAngles parseLightAngles(const std::string& text) {
+    const auto comma = text.find(',');
+    if (comma == std::string::npos) {
+        throw UsageError("--light must be AZIMUTH,ELEVATION in degrees (e.g. -30,20), got '" +
+                         text + "'");
+    }
+    render::LightAngles angles;
+    angles.azimuth = static_cast<float>(parseDouble(text.substr(0, comma), "--light azimuth"));
+    angles.elevation = static_cast<float>(parseDouble(text.substr(comma + 1), "--light elevation"));
+    if (std::abs(angles.azimuth) > 180.0F || std::abs(angles.elevation) > 90.0F) {
+        throw UsageError(
+            "--light needs an azimuth within -180..180 and an elevation within -90..90, got '" +
+            text + "'");
+    }
+    return angles;
+}
+
+int parseTileSide(const std::string& text) {
+    const int side = parseInt(text, "--tile");
+    if (side < report::kMinTileSide) {
+        throw UsageError("--tile must be at least " + std::to_string(report::kMinTileSide) +
+                         " pixels, got '" + text + "'");
+    }
+    return side;
 }
 
 bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
@@ -162,6 +189,8 @@ bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
                              ")");
         }
         parsed.viewName = name;
+    } else if (a == "--light") {
+        parsed.light = parseLightAngles(value());
     } else {
         return false;
     }
@@ -189,6 +218,7 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values, cons
     options.background = values.background;
     options.style.colorMap = values.colorMap;
     options.style.bins = values.bins;
+    options.style.light = values.light;
     options.cue = values.cue;
     options.legends = values.legends;
     options.vss = values.vss;

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The render options shared by `render` and `report`: --size, --array,
 // --colormap, --bins, --cue, --legends, --background, --ao, --aa, --vss,
-// --scale, --p, --isolines, --solver, --tolerance, --view.
+// --scale, --p, --isolines, --solver, --tolerance, --view, --light.
 #pragma once
 
 #include <cstddef>
@@ -35,7 +35,13 @@ struct RenderOptionValues {
     /// --view: nullopt = the default orientation fitted to the bounding box.
     std::optional<render::NamedView> view;
     std::string viewName;  ///< as given to --view; empty = default
+    /// --light AZ,EL: the key light's azimuth and elevation in degrees.
+    render::LightAngles light;
 };
+
+/// "AZ,EL" (degrees; azimuth -180..180, elevation -90..90) as light angles.
+/// Throws UsageError naming --light for anything else.
+[[nodiscard]] render::LightAngles parseLightAngles(const std::string& text);
 
 /// When args[i] is one of the shared render options, reads it and its value
 /// (leaving i on the value) into `values` and returns true; else returns false
@@ -43,6 +49,11 @@ struct RenderOptionValues {
 /// message starts with `command` for a missing one).
 bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
                        RenderOptionValues& values, const std::string& command);
+
+/// `render --tile N`: the largest side of one rendered piece, at least
+/// report::kMinTileSide (larger images are rendered in tiles that give the
+/// same image, report::renderView). Throws UsageError otherwise.
+[[nodiscard]] int parseTileSide(const std::string& text);
 
 /// `text` as a finite double / an int; UsageError naming `what` otherwise.
 double parseDouble(const std::string& text, const std::string& what);

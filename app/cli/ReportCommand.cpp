@@ -8,11 +8,8 @@
 //                       [the same options]
 #include "cli/ReportCommand.h"
 
-#include <algorithm>
-#include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <memory>
 #include <optional>
 #include <ostream>
 #include <set>
@@ -23,16 +20,11 @@
 #include "cli/GuiApplication.h"
 #include "cli/RenderOptions.h"
 #include "vv/core/Error.h"
-#include "vv/io/Dicom.h"
 #include "vv/io/SceneSource.h"
-#include "vv/render/MeshRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
-#include "vv/report/DicomExport.h"
-#include "vv/report/DicomSource.h"
-#include "vv/report/ParameterStats.h"
 #include "vv/report/PdfReport.h"
+#include "vv/report/ReportJob.h"
 #include "vv/report/ViewExport.h"
-#include "vv/vss/Solver.h"
 
 namespace vv::cli {
 
@@ -40,13 +32,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-/// What one input produces; empty paths are not written.
-struct Outputs {
-    fs::path pdf;
-    fs::path png;
-    fs::path dicomSc;
-    fs::path dicomPdf;
-};
+using Outputs = report::ReportOutputs;
 
 struct ReportArguments : RenderOptionValues {
     fs::path input;
@@ -78,7 +64,7 @@ ReportArguments parse(const std::vector<std::string>& args) {
             return args[++i];
         };
         const auto path = [&]() {
-            const fs::path p = value();
+            fs::path p = value();
             if (p.empty()) {
                 throw UsageError("report: " + a + " needs a file name");
             }
@@ -99,8 +85,8 @@ ReportArguments parse(const std::vector<std::string>& args) {
         } else if (a == "--formats") {
             parsed.formats.clear();
             std::string list = value() + ",";
-            for (std::size_t at = 0, comma; (comma = list.find(',', at)) != std::string::npos;
-                 at = comma + 1) {
+            for (std::size_t at = 0, comma = list.find(','); comma != std::string::npos;
+                 at = comma + 1, comma = list.find(',', at)) {
                 const std::string f = list.substr(at, comma - at);
                 if (f != "pdf" && f != "png" && f != "dicom-sc" && f != "dicom-pdf") {
                     throw UsageError("unknown report format '" + f +
@@ -203,130 +189,40 @@ void checkOutputs(const fs::path& input, const Outputs& outputs) {
     }
 }
 
-/// Maps an IoError of writing to OutputError (exit code 4).
-template <typename Write>
-void writing(Write&& write) {
-    try {
-        write();
-    } catch (const IoError& e) {
-        throw OutputError(e.what());
-    }
-}
-
-std::string viewCaption(const std::string& name) {
-    if (name.empty()) {
-        return "Default view, the whole tree fitted";
-    }
-    std::string caption = name;
-    caption[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(caption[0])));
-    return caption + " view";
-}
-
-/// Loads `input`, renders and writes every requested output.
+/// Loads `input`, renders and writes every requested output (report::runReportJob).
 void produce(const ReportArguments& a, const fs::path& input, const Outputs& outputs,
              render::OffscreenRenderer& renderer, std::ostream& out) {
     // A mesh file, or DICOM segmented into vessel surfaces.
     io::SceneSourceReport loaded;
     const io::Scene scene = io::loadSceneSource(input, a.source, {}, &loaded);
-    const render::OffscreenOptions base = offscreenOptions(a, scene, input);
-    // The study of this input's DICOM exports: the source study (and its
-    // patient) for DICOM data, else a new one without patient.
-    report::DicomStudy study = report::newStudy();
+    report::ReportJobOptions job;
+    job.view = offscreenOptions(a, scene, input);
+    job.viewCaption = report::namedViewCaption(a.viewName);
+    job.viewDescription = a.viewName.empty() ? "default (fitted)" : a.viewName;
+    job.secondView = a.secondView;
+    job.secondViewName = a.secondViewName;
+    job.legends = a.legends;
+    job.transparent = a.transparent;
+    job.anonymise = a.anonymise;
+    job.title = a.title;
+    job.findings = a.note;
+    job.paper = a.paper;
+    job.thresholds = a.thresholds;
+    job.source.files = {input};
     if (loaded.fromVolume || loaded.fromSegmentationObject) {
-        if (const auto source =
-                report::sourceStudy(io::scanDicom(input), loaded.seriesInstanceUid)) {
-            study = source->study;
-        }
+        // The exports join the source study (and its patient).
+        job.source.dicomPath = input;
+        job.source.seriesInstanceUid = loaded.seriesInstanceUid;
     }
-    if (a.anonymise && study.patient) {
-        study.patient->anonymise = true;
+    job.outputs = outputs;
+    std::vector<report::WrittenOutput> written;
+    try {
+        written = report::runReportJob(renderer, scene, job);
+    } catch (const report::ReportWriteError& e) {
+        throw OutputError(e.what());  // exit code 4
     }
-
-    // The report's views: 300 dpi across the content width, the --size aspect.
-    const int pdfWidth = report::reportImageWidth(a.paper);
-    const int pdfHeight = std::max(
-        1, static_cast<int>(std::lround(pdfWidth * static_cast<double>(a.height) / a.width)));
-    const auto reportView = [&](const RenderOptionValues& values, const std::string& name) {
-        report::ViewExportOptions options;
-        options.render = base;
-        options.render.width = pdfWidth;
-        options.render.height = pdfHeight;
-        options.render.camera = cameraFor(values, scene, pdfWidth, pdfHeight);
-        options.legends = false;  // painted by the report as vectors
-        report::RenderedView view = report::renderView(renderer, scene, options);
-        return std::pair{report::ReportView{view.image, viewCaption(name), view.legends},
-                         view.range};
-    };
-
-    if (!outputs.png.empty() || !outputs.dicomSc.empty()) {
-        report::ViewExportOptions options;
-        options.render = base;
-        options.legends = a.legends;
-        options.transparentBackground = a.transparent;
-        const report::RenderedView view = report::renderView(renderer, scene, options);
-        if (!outputs.png.empty()) {
-            writing([&] { report::writePng(outputs.png, view.image); });
-            out << "wrote " << outputs.png.string() << " (" << view.image.width() << "x"
-                << view.image.height() << (a.transparent ? ", transparent background" : "")
-                << ")\n";
-        }
-        if (!outputs.dicomSc.empty()) {
-            writing(
-                [&] { (void)report::writeSecondaryCapture(outputs.dicomSc, view.image, study); });
-            out << "wrote " << outputs.dicomSc.string() << " (DICOM Secondary Capture)\n";
-        }
-    }
-    if (outputs.pdf.empty() && outputs.dicomPdf.empty()) {
-        return;
-    }
-
-    report::ReportContent content;
-    content.title = a.title;
-    content.sources.push_back(fs::absolute(input));
-    auto [view, range] = reportView(a, a.viewName);
-    content.view = std::move(view);
-    if (a.secondView) {
-        RenderOptionValues second = a;
-        second.view = a.secondView;
-        content.secondView = reportView(second, a.secondViewName).first;
-    }
-    if (!base.style.array.empty() && range) {
-        report::ReportParameter parameter;
-        parameter.name = base.style.array;
-        for (const io::Mesh& mesh : scene.meshes) {
-            if (const io::DataArray* data = mesh.pointArray(parameter.name)) {
-                parameter.unit = data->unit;
-                break;
-            }
-        }
-        parameter.range = *range;
-        parameter.map = base.style.colorMap;
-        parameter.bins = base.style.bins;
-        parameter.thresholds = a.thresholds;
-        if (!a.thresholds.below && !a.thresholds.above && parameter.name == "wss") {
-            parameter.thresholds.below = 0.4;  // low wall shear stress, Pa
-        }
-        parameter.stats = report::parameterStats(scene, parameter.name, parameter.thresholds);
-        content.parameter = std::move(parameter);
-    }
-    content.settings.vss = base.vss;
-    content.settings.errorBound = vss::makeSolver(base.vss.solver)->errorBound();
-    content.settings.cue = base.cue;
-    content.settings.ambientOcclusion = base.ao.enabled;
-    content.settings.antialiasing = base.antialiasing;
-    content.settings.view = a.viewName.empty() ? "default (fitted)" : a.viewName;
-    content.findings = a.note;
-    content.patient = study.patient;  // none for meshes: no patient block
-
-    const QByteArray pdf = report::renderPdf(content, a.paper);
-    if (!outputs.pdf.empty()) {
-        writing([&] { report::writePdfBytes(outputs.pdf, pdf); });
-        out << "wrote " << outputs.pdf.string() << " (PDF report, "
-            << (a.paper == report::PaperSize::A4 ? "A4" : "Letter") << ")\n";
-    }
-    if (!outputs.dicomPdf.empty()) {
-        writing([&] { (void)report::writeEncapsulatedPdf(outputs.dicomPdf, pdf, a.title, study); });
-        out << "wrote " << outputs.dicomPdf.string() << " (DICOM Encapsulated PDF)\n";
+    for (const report::WrittenOutput& file : written) {
+        out << "wrote " << file.path.string() << " (" << file.description << ")\n";
     }
 }
 
@@ -400,7 +296,7 @@ int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {
         }
         Outputs outputs;
         const auto name = [&](const std::string& format, const std::string& suffix) {
-            return a.formats.count(format) != 0 ? a.outDir / (stem + suffix) : fs::path();
+            return a.formats.contains(format) ? a.outDir / (stem + suffix) : fs::path();
         };
         outputs.pdf = name("pdf", ".pdf");
         outputs.png = name("png", ".png");

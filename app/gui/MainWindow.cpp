@@ -36,8 +36,10 @@
 #include <vector>
 
 #include "common/ResourcePaths.h"
+#include "gui/ExportImageDialog.h"
 #include "gui/MeasureOverlay.h"
 #include "gui/MeshLoadTask.h"
+#include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/Translations.h"
 #include "gui/ViewSettings.h"
@@ -46,6 +48,7 @@
 #include "gui/panels/DisplayPanel.h"
 #include "gui/panels/FunctionalPanel.h"
 #include "gui/panels/PanelUtil.h"
+#include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/VssPanel.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
@@ -197,6 +200,22 @@ void MainWindow::buildMenus() {
     saveSessionAction->setObjectName(QStringLiteral("saveSession"));
     saveSessionAction->setShortcut(QKeySequence::Save);
     file->addSeparator();
+    exportImageAction_ = file->addAction(tr("&Export Image…"), this, [this] {
+        auto* dialog = new ExportImageDialog(*viewer_, this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
+    exportImageAction_->setObjectName(QStringLiteral("exportImage"));
+    exportImageAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
+    exportReportAction_ = file->addAction(tr("Export Re&port…"), this, [this] {
+        auto* dialog = new ReportDialog(*viewer_, reportSource(), this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
+    exportReportAction_->setObjectName(QStringLiteral("exportReport"));
+    exportReportAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    updateExportActions();
+    file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
 
@@ -285,11 +304,11 @@ void MainWindow::buildDocks() {
     functionalPanel_ = new panels::FunctionalPanel(viewer_, this);
     displayPanel_ = new panels::DisplayPanel(viewer_, this);
     dataPanel_ = new panels::DataPanel(viewer_, this);
+    segmentationPanel_ = new panels::SegmentationPanel(viewer_, this);
     const std::pair<QWidget*, QString> panels[] = {
-        {vssPanel_, tr("Void Space Surface")},
-        {functionalPanel_, tr("Functional parameters")},
-        {displayPanel_, tr("Display")},
-        {dataPanel_, tr("Data")},
+        {vssPanel_, tr("Void Space Surface")},    {functionalPanel_, tr("Functional parameters")},
+        {displayPanel_, tr("Display")},           {dataPanel_, tr("Data")},
+        {segmentationPanel_, tr("Segmentation")},
     };
     for (const auto& [panel, title] : panels) {
         auto* dock = new QDockWidget(title, this);
@@ -310,6 +329,11 @@ void MainWindow::buildDocks() {
     connect(vssPanel_, &panels::VssPanel::changed, this, &MainWindow::syncControls);
     connect(functionalPanel_, &panels::FunctionalPanel::changed, this, &MainWindow::syncControls);
     connect(displayPanel_, &panels::DisplayPanel::changed, this, &MainWindow::syncControls);
+    connect(dataPanel_, &panels::DataPanel::changed, this, &MainWindow::syncControls);
+    connect(segmentationPanel_, &panels::SegmentationPanel::sceneReady, this,
+            &MainWindow::showSegmentedScene);
+    connect(segmentationPanel_, &panels::SegmentationPanel::statusMessage, this,
+            [this](const QString& message) { statusLabel_->setText(message); });
 }
 
 void MainWindow::buildToolBar() {
@@ -374,6 +398,7 @@ void MainWindow::syncControls() {
     vssPanel_->syncFromViewer();
     functionalPanel_->syncFromViewer();
     displayPanel_->syncFromViewer();
+    dataPanel_->syncFromViewer();
     const QSignalBlocker vss(vssAction_);
     vssAction_->setChecked(viewer_->vssSettings().enabled);
     const QSignalBlocker ao(aoAction_);
@@ -605,7 +630,17 @@ void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
                     shownFiles_
                         << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
                 }
+                const io::SceneSourceReport& source = task->dicomReport();
+                shownSeriesUid_ = source.fromVolume || source.fromSegmentationObject
+                                      ? source.seriesInstanceUid
+                                      : std::string();
                 setScene(std::move(scene), title);
+                // A DICOM image series: keep its volume for the Segmentation panel.
+                if (source.volume) {
+                    volume_ = source.volume;
+                    segmentationPanel_->setVolume(volume_, task->dicomOptions().segmentation,
+                                                  source.range, task->dicomOptions().surface);
+                }
                 addRecentFiles(files);
             });
     connect(task, &MeshLoadTask::failed, this,
@@ -646,6 +681,23 @@ void MainWindow::taskFinished() {
 }
 
 void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString& title) {
+    // A scene from elsewhere: no volume behind it (a DICOM load sets it afterwards).
+    volume_.reset();
+    segmentationPanel_->setVolume(nullptr);
+    showScene(std::move(scene), title);
+}
+
+void MainWindow::showSegmentedScene(std::shared_ptr<const io::Scene> scene, const QString& status) {
+    render::Camera camera = viewer_->camera();
+    sceneFiles_ = shownFiles_;
+    showScene(std::move(scene), sceneTitle_);
+    camera.setSceneBounds(viewer_->dataBounds());  // clip planes of the new scene
+    viewer_->setCamera(camera);
+    statusLabel_->setText(status);
+}
+
+void MainWindow::showScene(std::shared_ptr<const io::Scene> scene, const QString& title) {
+    sceneTitle_ = title;
     clearMeasurement();  // points on the old data mean nothing on the new
     viewer_->setScene(scene);
     functionalPanel_->sceneChanged();
@@ -678,7 +730,29 @@ void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString&
         statusLabel_->setText(tr("Ready"));
     }
     lastError_.clear();
+    updateExportActions();
     emit sceneShown();
+}
+
+void MainWindow::updateExportActions() {
+    const bool shown = viewer_->scene() != nullptr;
+    for (QAction* action : {exportImageAction_, exportReportAction_}) {
+        action->setEnabled(shown);
+        action->setToolTip(shown ? QString() : tr("Open data first: there is nothing to export"));
+    }
+}
+
+report::ReportSource MainWindow::reportSource() const {
+    report::ReportSource source;
+    for (const QString& file : shownFiles_) {
+        const std::filesystem::path path(QFile::encodeName(file).toStdString());
+        source.files.push_back(path);
+        if (source.dicomPath.empty() && io::isDicomSource(path)) {
+            source.dicomPath = path;
+            source.seriesInstanceUid = shownSeriesUid_;
+        }
+    }
+    return source;
 }
 
 void MainWindow::addMeasurePoint(const ProbeResult& point) {

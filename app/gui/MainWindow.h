@@ -14,6 +14,8 @@
 #include "gui/Session.h"
 #include "gui/ViewerWidget.h"
 #include "vv/io/Mesh.h"
+#include "vv/io/Volume.h"
+#include "vv/report/ReportJob.h"
 
 class QAction;
 class QComboBox;
@@ -36,6 +38,7 @@ namespace panels {
 class DataPanel;
 class DisplayPanel;
 class FunctionalPanel;
+class SegmentationPanel;
 class VssPanel;
 }  // namespace panels
 
@@ -124,6 +127,15 @@ class MainWindow : public QMainWindow {
     }
     [[nodiscard]] panels::DisplayPanel* displayPanel() const noexcept { return displayPanel_; }
     [[nodiscard]] panels::DataPanel* dataPanel() const noexcept { return dataPanel_; }
+    /// The "Segmentation" panel: re-segments volume() (disabled without one).
+    [[nodiscard]] panels::SegmentationPanel* segmentationPanel() const noexcept {
+        return segmentationPanel_;
+    }
+    /// The volume the shown scene was segmented from (a DICOM image series),
+    /// kept for re-segmenting without reading the files; null otherwise.
+    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+        return volume_;
+    }
     /// View > Panels > Reset Layout: the docks as in a fresh window.
     void resetLayout();
     /// View > Reset to Defaults: the display settings of a fresh viewer
@@ -152,6 +164,14 @@ class MainWindow : public QMainWindow {
     /// Adds a picked point (what a click on the viewer does).
     void addMeasurePoint(const ProbeResult& point);
     void clearMeasurement();
+    /// File > Export Image… (Ctrl+E) and File > Export Report… (Ctrl+Shift+E):
+    /// open ExportImageDialog / ReportDialog; disabled, with a tooltip saying
+    /// why, while no scene is shown.
+    [[nodiscard]] QAction* exportImageAction() const noexcept { return exportImageAction_; }
+    [[nodiscard]] QAction* exportReportAction() const noexcept { return exportReportAction_; }
+    /// Where the shown scene came from, for the report: the shown files and,
+    /// for DICOM data, the path and series it was loaded from.
+    [[nodiscard]] report::ReportSource reportSource() const;
     [[nodiscard]] bool isLoading() const noexcept { return !task_.isNull(); }
     /// The message of the last load error ("file: problem"); empty if none.
     [[nodiscard]] const QString& lastError() const noexcept { return lastError_; }
@@ -179,6 +199,11 @@ class MainWindow : public QMainWindow {
     /// Every control shows the viewer's current settings.
     void syncControls();
     void setColorBlindSafe(bool on);
+    /// setScene() without forgetting volume(): what a load and the
+    /// Segmentation panel's scenes go through.
+    void showScene(std::shared_ptr<const io::Scene> scene, const QString& title);
+    /// A scene from the Segmentation panel in place of the shown one; the camera stays.
+    void showSegmentedScene(std::shared_ptr<const io::Scene> scene, const QString& status);
     void startTask(MeshLoadTask* task, const QStringList& files);
     void taskFinished();
     void showError(const QString& title, const QString& message);
@@ -199,6 +224,9 @@ class MainWindow : public QMainWindow {
     panels::FunctionalPanel* functionalPanel_ = nullptr;
     panels::DisplayPanel* displayPanel_ = nullptr;
     panels::DataPanel* dataPanel_ = nullptr;
+    panels::SegmentationPanel* segmentationPanel_ = nullptr;
+    std::shared_ptr<const io::Volume> volume_;  ///< see volume()
+    QString sceneTitle_;                        ///< the title of the shown scene
     QList<QDockWidget*> docks_;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;
@@ -221,6 +249,10 @@ class MainWindow : public QMainWindow {
     QProgressBar* progressBar_ = nullptr;
     QPushButton* cancelButton_ = nullptr;
     QPointer<MeshLoadTask> task_;
+    QAction* exportImageAction_ = nullptr;
+    QAction* exportReportAction_ = nullptr;
+    std::string shownSeriesUid_;  ///< the DICOM series shown; empty for meshes
+    void updateExportActions();
     QString lastError_;
     QString screenshotPath_;
     bool screenshotPending_ = false;

@@ -126,9 +126,13 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
             for (std::size_t i = 0; i < files_.size(); ++i) {
                 const Progress part =
                     progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);
+                io::SceneSourceReport report;
                 io::Scene one = io::isDicomSource(files_[i])
-                                    ? io::loadSceneSource(files_[i], dicomOptions_, part)
+                                    ? io::loadSceneSource(files_[i], dicomOptions_, part, &report)
                                     : io::loadScene({files_[i]}, {}, part);
+                if (io::isDicomSource(files_[i])) {
+                    result.dicomReport = std::move(report);
+                }
                 for (auto& mesh : one.meshes) {
                     scene->meshes.push_back(std::move(mesh));
                 }
@@ -156,6 +160,7 @@ void MeshLoadTask::deliver() {
     } else if (result.scan) {
         emit scanned(result.scan);
     } else if (result.scene) {
+        dicomReport_ = result.dicomReport;
         emit loaded(result.scene);
     } else {
         emit failed(result.file, result.problem);

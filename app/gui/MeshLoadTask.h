@@ -60,6 +60,14 @@ class MeshLoadTask : public QObject {
     [[nodiscard]] const std::vector<std::filesystem::path>& files() const noexcept {
         return files_;
     }
+    /// The DICOM options the task loads with.
+    [[nodiscard]] const io::SceneSourceOptions& dicomOptions() const noexcept {
+        return dicomOptions_;
+    }
+    /// From loaded() on: what loading the last DICOM source did, with the
+    /// volume an image series was segmented from (volume null for a DICOM
+    /// SEG; all empty when only meshes were loaded).
+    [[nodiscard]] const io::SceneSourceReport& dicomReport() const noexcept { return dicomReport_; }
 
   signals:
     /// `fraction` in [0, 1] of the work done, and the current stage.
@@ -79,6 +87,7 @@ class MeshLoadTask : public QObject {
     struct Result {
         std::shared_ptr<const io::Scene> scene;
         std::shared_ptr<const io::DicomScanResult> scan;
+        io::SceneSourceReport dicomReport;
         QString file;
         QString problem;
         bool cancelled = false;
@@ -93,6 +102,7 @@ class MeshLoadTask : public QObject {
     bool demo_ = false;
     bool scan_ = false;
     io::SceneSourceOptions dicomOptions_;
+    io::SceneSourceReport dicomReport_;
     QString description_;
     std::stop_source stop_;
     QFuture<Result> future_;

@@ -9,6 +9,7 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 #include <QJsonValue>
+#include <algorithm>
 #include <cmath>
 #include <string>
 
@@ -250,6 +251,59 @@ QJsonObject migrate(QJsonObject root, const Reader& reader) {
     return root;
 }
 
+/// Per object: "visible", "opacity", "color" (null = the vessel colour) and
+/// "array" (null = the scene's array, "" = none), in mesh order.
+QJsonArray objectsToJson(const render::MeshStyle& style) {
+    QJsonArray objects;
+    std::size_t count = style.objects.size();
+    for (const std::size_t hidden : style.hidden) {
+        count = std::max(count, hidden + 1);
+    }
+    for (std::size_t i = 0; i < count; ++i) {
+        const render::ObjectStyle& o = style.object(i);
+        const bool hidden =
+            std::find(style.hidden.begin(), style.hidden.end(), i) != style.hidden.end();
+        objects.append(QJsonObject{
+            {QStringLiteral("visible"), !hidden},
+            {QStringLiteral("opacity"), static_cast<double>(o.opacity)},
+            {QStringLiteral("color"), o.color ? QJsonValue(array3(*o.color)) : QJsonValue()},
+            {QStringLiteral("array"),
+             o.array ? QJsonValue(QString::fromStdString(*o.array)) : QJsonValue()},
+        });
+    }
+    return objects;
+}
+
+/// The objects objectsToJson() wrote, into `style` (objects and hidden).
+void readObjects(const Reader& r, const QJsonValue& value, const QString& where,
+                 render::MeshStyle& style) {
+    if (!value.isArray()) {
+        r.fail(where, QStringLiteral("must be an array"));
+    }
+    style.objects.clear();
+    style.hidden.clear();
+    const QJsonArray objects = value.toArray();
+    for (qsizetype i = 0; i < objects.size(); ++i) {
+        const QString w = where + QStringLiteral("[%1]").arg(i);
+        if (!objects[i].isObject()) {
+            r.fail(w, QStringLiteral("must be an object"));
+        }
+        const QJsonObject o = objects[i].toObject();
+        render::ObjectStyle object;
+        object.opacity = r.real(o, w, "opacity", 0.0, 1.0);
+        if (const QJsonValue color = r.get(o, w, "color"); !color.isNull()) {
+            object.color = r.vec3(o, w, "color", 0.0, 1.0);
+        }
+        if (const QJsonValue array = r.get(o, w, "array"); !array.isNull()) {
+            object.array = r.string(o, w, "array").toStdString();
+        }
+        if (!r.boolean(o, w, "visible")) {
+            style.hidden.push_back(static_cast<std::size_t>(i));
+        }
+        style.objects.push_back(std::move(object));
+    }
+}
+
 }  // namespace
 
 Session captureSession(const ViewerWidget& viewer, const QStringList& files) {
@@ -343,6 +397,9 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
         {QStringLiteral("bins"), s.style.bins},
         {QStringLiteral("range"), range},
         {QStringLiteral("vesselColor"), array3(s.style.vesselColor)},
+        {QStringLiteral("light"), QJsonArray{static_cast<double>(s.style.light.azimuth),
+                                             static_cast<double>(s.style.light.elevation)}},
+        {QStringLiteral("objects"), objectsToJson(s.style)},
     };
     const QJsonObject view{
         {QStringLiteral("vss"), vss},
@@ -495,6 +552,20 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
             s.style.range = std::make_pair(static_cast<float>(n[0]), static_cast<float>(n[1]));
         }
         s.style.vesselColor = r.vec3(o, w, "vesselColor", 0.0, 1.0);
+        // Optional (older sessions have neither): the light and the objects' styles.
+        if (const QJsonValue light = o.value(QLatin1String("light")); !light.isUndefined()) {
+            const QString field = w + QStringLiteral(".light");
+            const auto n = r.numbers(light, field, 2, -180.0, 180.0);
+            if (std::abs(n[1]) > 90.0) {
+                r.fail(field + QStringLiteral("[1]"),
+                       QStringLiteral("(elevation) must be within [-90, 90]"));
+            }
+            s.style.light.azimuth = static_cast<float>(n[0]);
+            s.style.light.elevation = static_cast<float>(n[1]);
+        }
+        if (const QJsonValue objects = o.value(QLatin1String("objects")); !objects.isUndefined()) {
+            readObjects(r, objects, w + QStringLiteral(".objects"), s.style);
+        }
     }
     s.background = r.vec3(view, v, "background", 0.0, 1.0);
     s.legends = r.boolean(view, v, "legends");

@@ -27,10 +27,16 @@ class ViewerWidget;
 ///                 "ao": { "enabled", "radius", "strength" },
 ///                 "cue": { "cue", "fogStrength", "fresnelExponent" },
 ///                 "style": { "array", "colorMap", "bins",
-///                            "range": null | [lo, hi], "vesselColor": [r, g, b] },
+///                            "range": null | [lo, hi], "vesselColor": [r, g, b],
+///                            "light": [azimuth, elevation],      // optional
+///                            "objects": [ { "visible", "opacity",   // optional,
+///                                "color": null | [r, g, b],         // per mesh
+///                                "array": null | "" | name } ] },
 ///                 "background": [r, g, b], "legends": true },
 ///       "layout": "<base64 QMainWindow::saveState>" }      // optional
 ///
+/// "light" and "objects" came later within version 1: a session without
+/// them loads with the default light and every object in the scene's style.
 /// Versions: 1 is the current one. Version 0 is the layout of the first
 /// prototype (no "version" key; the display settings as one flat "settings"
 /// object with the keys of ViewSettings.h); migrateSession() converts it. A

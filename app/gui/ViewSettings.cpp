@@ -80,6 +80,8 @@ void saveViewSettings(const ViewerWidget& viewer, QSettings& settings) {
     settings.setValue(key("background"), toList(viewer.background()));
     settings.setValue(key("vesselColor"), toList(viewer.style().vesselColor));
     settings.setValue(key("legends"), viewer.legendsVisible());
+    settings.setValue(key("lightAzimuth"), static_cast<double>(viewer.style().light.azimuth));
+    settings.setValue(key("lightElevation"), static_cast<double>(viewer.style().light.elevation));
 }
 
 void restoreViewSettings(ViewerWidget& viewer, const QSettings& settings) {
@@ -124,6 +126,12 @@ void restoreViewSettings(ViewerWidget& viewer, const QSettings& settings) {
         style.bins = bins;
     }
     style.vesselColor = colorValue(settings, "vesselColor").value_or(style.vesselColor);
+    style.light.azimuth = static_cast<float>(
+        finiteOr(value(settings, "lightAzimuth", static_cast<double>(style.light.azimuth)),
+                 static_cast<double>(style.light.azimuth), -180.0, 180.0));
+    style.light.elevation = static_cast<float>(
+        finiteOr(value(settings, "lightElevation", static_cast<double>(style.light.elevation)),
+                 static_cast<double>(style.light.elevation), -90.0, 90.0));
     viewer.setStyle(style);
 
     render::VesselCueSettings cue = viewer.vesselCue();
@@ -149,6 +157,7 @@ void resetViewSettings(ViewerWidget& viewer) {
     style.colorMap = defaults.colorMap;
     style.bins = defaults.bins;
     style.vesselColor = defaults.vesselColor;
+    style.light = defaults.light;
     viewer.setStyle(style);
     viewer.setVesselCue(render::VesselCueSettings{});
     viewer.setBackground(render::FrameSettings{}.background);

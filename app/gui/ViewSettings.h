@@ -10,8 +10,8 @@ class ViewerWidget;
 /// The viewer's display settings remembered between sessions, under the
 /// group "view/" of a QSettings: the VSS (on/off, depth scale, p, solver,
 /// tolerance, step, iso-lines, lighting), ambient occlusion, the colour map
-/// and bins, the vessels' material colour, the vessel cue, the background
-/// and the legends. The array and
+/// and bins, the vessels' material colour, the vessel cue, the background,
+/// the legends and the light direction. The array and
 /// range are not stored (they belong to the data).
 
 /// Writes the viewer's settings into `settings`.

@@ -146,9 +146,29 @@ void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     framesWithScene_ = 0;
     camera_.setViewport(width(), height());
     camera_.reset();
-    camera_.fit(scene_ ? scene_->bounds() : Aabb{});
+    camera_.fit(dataBounds());
     autoFit_ = true;
     update();
+}
+
+void ViewerWidget::setVolume(std::shared_ptr<const io::Volume> volume, float isoValue) {
+    volume_ = std::move(volume);
+    isoValue_ = isoValue;
+    renderer_.setVolume(volume_, isoValue_);  // uploads lazily, no context needed
+    framesWithScene_ = 0;
+    nearestKey_.reset();
+    if (const Aabb box = dataBounds(); !box.empty()) {
+        camera_.setSceneBounds(box);  // clip planes; the view stays
+    }
+    update();
+}
+
+Aabb ViewerWidget::dataBounds() const noexcept {
+    Aabb box = scene_ ? scene_->bounds() : Aabb{};
+    if (volume_ && !volume_->empty()) {
+        box.extend(volume_->worldBounds());
+    }
+    return box;
 }
 
 void ViewerWidget::cancelPreviewGeometry() {
@@ -340,7 +360,8 @@ void ViewerWidget::resetCamera() {
 
 void ViewerWidget::fitToData() {
     camera_.setViewport(width(), height());
-    camera_.fit(scene_ ? scene_->bounds() : camera_.sceneBounds());
+    const Aabb box = dataBounds();
+    camera_.fit(box.empty() ? camera_.sceneBounds() : box);
     autoFit_ = true;
     update();
 }
@@ -470,7 +491,7 @@ void ViewerWidget::paintGL() {
         paintMessage(error_);
         return;
     }
-    if (scene_) {
+    if (scene_ || volume_) {
         ++framesWithScene_;
     }
     emit frameRendered();
@@ -579,7 +600,7 @@ Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept {
 }
 
 std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
-    if (!error_.isEmpty() || !renderer_.initialized() || scene_ == nullptr ||
+    if (!error_.isEmpty() || !renderer_.initialized() || (scene_ == nullptr && !volume_) ||
         lastRenderSize_.isEmpty() || width() < 1 || height() < 1) {
         return std::nullopt;
     }
@@ -607,24 +628,32 @@ std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
     };
     const std::optional<render::ProbeSample> sample = read();
     doneCurrent();
-    if (!sample || sample->objectId == 0 || sample->objectId > scene_->meshes.size()) {
+    const std::size_t meshCount = scene_ ? scene_->meshes.size() : 0U;
+    if (!sample || sample->objectId == 0 || sample->objectId > meshCount + (volume_ ? 1U : 0U)) {
         return std::nullopt;
     }
     ProbeResult result;
     result.widgetPosition = position;
-    result.meshIndex = static_cast<int>(sample->objectId - 1U);
-    const io::Mesh& mesh = scene_->meshes[static_cast<std::size_t>(result.meshIndex)];
-    result.objectName = QString::fromStdString(mesh.name);
-    result.arrayName = QString::fromStdString(style_.array);
-    if (const io::DataArray* array =
-            style_.array.empty() ? nullptr : mesh.pointArray(style_.array)) {
-        result.unit = QString::fromStdString(array->unit);
-    }
-    result.value = style_.array.empty() ? std::numeric_limits<float>::quiet_NaN() : sample->value;
     result.linearDepth = sample->linearDepth;
     result.depthBelowNearest =
         std::max(0.0F, sample->linearDepth - nearestDepth_.value_or(sample->linearDepth));
     result.worldPosition = sample->worldPosition;
+    if (sample->objectId > meshCount) {
+        // The ray-cast volume (object id 1 + mesh count): position and depth, no value.
+        result.objectName = tr("Volume (iso-surface at %1)").arg(static_cast<double>(isoValue_));
+        result.value = std::numeric_limits<float>::quiet_NaN();
+        return result;
+    }
+    result.meshIndex = static_cast<int>(sample->objectId - 1U);
+    const io::Mesh& mesh = scene_->meshes[static_cast<std::size_t>(result.meshIndex)];
+    result.objectName = QString::fromStdString(mesh.name);
+    // The array this object shows (its own choice or the scene's).
+    const std::string& shown = style_.arrayOf(static_cast<std::size_t>(result.meshIndex));
+    result.arrayName = QString::fromStdString(shown);
+    if (const io::DataArray* array = shown.empty() ? nullptr : mesh.pointArray(shown)) {
+        result.unit = QString::fromStdString(array->unit);
+    }
+    result.value = shown.empty() ? std::numeric_limits<float>::quiet_NaN() : sample->value;
     return result;
 }
 

@@ -15,6 +15,7 @@
 
 #include "vv/core/Image.h"
 #include "vv/io/Mesh.h"
+#include "vv/io/Volume.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
@@ -28,7 +29,7 @@ class LegendOverlay;
 /// What the viewer shows at one point of the widget (ViewerWidget::probeAt).
 struct ProbeResult {
     QPointF widgetPosition;    ///< logical widget coordinates that were probed
-    int meshIndex = -1;        ///< index into the scene's meshes
+    int meshIndex = -1;        ///< index into the scene's meshes; -1: the ray-cast volume
     QString objectName;        ///< the mesh's name
     QString arrayName;         ///< the array shown; empty when none
     QString unit;              ///< the array's unit; empty when unknown
@@ -98,6 +99,19 @@ class ViewerWidget : public QOpenGLWidget {
     /// shared, never modified.
     void setScene(std::shared_ptr<const io::Scene> scene);
     [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
+    /// Ray casts `volume` as the iso-surface at `isoValue` after the scene's
+    /// meshes (FrameRenderer::setVolume): the VSS, AO, cues and the probe
+    /// work on it as on meshes (its probe gives position and depth, no
+    /// value). nullptr = none. Keeps the camera; the volume's box joins the
+    /// bounds that fitToData() and setScene() frame and that decide the clip
+    /// planes. The volume is shared, never modified.
+    void setVolume(std::shared_ptr<const io::Volume> volume, float isoValue);
+    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+        return volume_;
+    }
+    [[nodiscard]] float isoValue() const noexcept { return isoValue_; }
+    /// The bounds of what is shown: the scene's and the volume's box.
+    [[nodiscard]] Aabb dataBounds() const noexcept;
 
     void setStyle(const render::MeshStyle& style);
     [[nodiscard]] const render::MeshStyle& style() const noexcept { return style_; }
@@ -266,6 +280,8 @@ class ViewerWidget : public QOpenGLWidget {
     render::Camera camera_;
     render::MeshStyle style_;
     std::shared_ptr<const io::Scene> scene_;
+    std::shared_ptr<const io::Volume> volume_;  ///< ray cast after the meshes, or null
+    float isoValue_ = 0.0F;
     std::shared_ptr<const io::Scene> previewScene_;  ///< simplified scene_, or null
     bool previewDirty_ = false;                      ///< previewScene_ not uploaded yet
     std::size_t previewTriangles_ = 60000;

@@ -1,6 +1,7 @@
 #version 410 core
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Composite: the shaded vessels over the shaded VSS over the background.
+// Composite: the translucent objects over the shaded vessels over the shaded
+// VSS over the background.
 // Vessel pixels keep their own colour: the VSS never covers a vessel.
 // With ambient occlusion, the VSS and (half as much) the vessels darken by
 // the blurred occlusion times the strength.
@@ -14,6 +15,9 @@ uniform vec3 uBackground;    // sRGB
 uniform sampler2D uAo;       // R8: blurred occlusion in [0, 1]
 uniform bool uUseAo;
 uniform float uAoStrength;   // 0..1
+// The translucent objects (premultiplied colour, coverage), over everything.
+uniform sampler2D uTranslucent;
+uniform bool uUseTranslucent;
 
 out vec4 fragColor;
 
@@ -27,5 +31,9 @@ void main() {
         color = mix(color, vss.rgb * (1.0 - occlusion), vss.a);
     }
     color = mix(color, vessel.rgb * (1.0 - 0.5 * occlusion), vessel.a);
+    if (uUseTranslucent) {
+        vec4 layer = texelFetch(uTranslucent, p, 0);
+        color = layer.rgb + color * (1.0 - layer.a);
+    }
     fragColor = vec4(color, 1.0);
 }

@@ -18,6 +18,7 @@ uniform bool uUseVss;
 uniform float uDmin;             // the VSS's depth range in scene units
 uniform float uDmax;
 uniform float uPixelScale;       // 2 tan(fov / 2) / H
+uniform vec2 uAxisOffset;        // the view axis's pixel minus the centre (off-axis tiles; else 0)
 uniform float uRadius;           // scene units
 uniform int uSamples;
 
@@ -52,7 +53,7 @@ float vssDepth(ivec2 p) {
 }
 
 vec3 viewPosition(vec2 pixelCentre, float depth) {
-    return vec3((pixelCentre - 0.5 * vec2(gSize)) * uPixelScale * depth, -depth);
+    return vec3((pixelCentre - 0.5 * vec2(gSize) - uAxisOffset) * uPixelScale * depth, -depth);
 }
 
 // The VSS's normal from its VSS neighbours only (never across a contour):

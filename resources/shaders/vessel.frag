@@ -10,15 +10,32 @@ uniform sampler2D uLinearDepth;  // R32F, linear view depth; +inf = no vessel
 uniform sampler2D uNormal;       // RGBA16F, view-space normal, w = 1 where the value is valid
 uniform sampler2D uParameter;    // R32F, the array value
 uniform usampler2D uObjectId;    // R32UI, 0 = no vessel
+// Per object, row = object id: texel 0 = (material colour, uses an array),
+// texel 1 = (range min, range max, opacity, 0). Ids above uObjectCount (e.g.
+// a volume) show the material of the uniforms.
+uniform sampler2D uObjects;
+uniform int uObjectCount;
 // View-space position of a pixel: xy = (ndc.xy * uViewScale) * depth, z = -depth
 // (perspective: uViewScale = (tan(fovy / 2) * aspect, tan(fovy / 2))).
 uniform vec2 uViewScale;
+// Off-axis frusta (tiles of a larger image): the NDC shift P[2][0], P[2][1]; else 0.
+uniform vec2 uViewOffset;
 
 layout(location = 0) out vec4 fragColor;
 
+Material objectMaterial(uint id) {
+    if (int(id) > uObjectCount) {
+        return uniformMaterial();
+    }
+    vec4 a = texelFetch(uObjects, ivec2(0, int(id)), 0);
+    vec4 b = texelFetch(uObjects, ivec2(1, int(id)), 0);
+    return Material(a.w >= 0.5, a.rgb, b.xy);
+}
+
 void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
-    if (texelFetch(uObjectId, p, 0).r == 0u) {
+    uint id = texelFetch(uObjectId, p, 0).r;
+    if (id == 0u) {
         fragColor = vec4(0.0);
         return;
     }
@@ -26,6 +43,7 @@ void main() {
     vec4 normal = texelFetch(uNormal, p, 0);
     float value = texelFetch(uParameter, p, 0).r;
     vec2 ndc = vUv * 2.0 - 1.0;
-    vec3 positionView = vec3(ndc * uViewScale * depth, -depth);
-    fragColor = vec4(shadeVessel(positionView, normal.xyz, value, normal.w >= 0.5), 1.0);
+    vec3 positionView = vec3((ndc + uViewOffset) * uViewScale * depth, -depth);
+    fragColor = vec4(
+        shadeVessel(objectMaterial(id), positionView, normal.xyz, value, normal.w >= 0.5), 1.0);
 }

@@ -6,12 +6,15 @@
 // Blinn-Phong with a key light near the eye plus ambient, optionally a depth
 // cue on the vessel itself (VesselCue in MeshRenderer.h).
 
+// The scene's material (per object in the forward passes: MeshRenderer sets
+// these before each object; the deferred pass reads a per-object table).
 uniform bool uUseArray;          // false: neutral material
 uniform vec3 uBaseColor;         // neutral material, sRGB
 uniform vec3 uNoDataColor;       // for NaN / missing values, sRGB
 uniform sampler1D uLut;          // colour map, sRGB, linear filtering
 uniform float uLutSize;          // texels in uLut
 uniform vec2 uRange;             // values mapped to the first and last LUT entry
+uniform float uOpacity;          // forward passes: the object's opacity (premultiplied output)
 uniform int uBins;               // >= 2: uLut holds exactly uBins bin colours (nearest)
 // Vessel cue: 0 none, 1 chromadepth, 2 pseudo-chromadepth, 3 fog, 4 Fresnel-edge
 // pseudo-chromadepth (the values of VesselCue).
@@ -29,16 +32,29 @@ uniform float uDiffuse;
 uniform float uSpecular;
 uniform float uShininess;
 
+// What one object shows: an array through the colour map over `range`, or
+// the neutral material `base`.
+struct Material {
+    bool useArray;
+    vec3 base;
+    vec2 range;
+};
+
+// The material of the uniforms.
+Material uniformMaterial() {
+    return Material(uUseArray, uBaseColor, uRange);
+}
+
 // The colour of a value of the array (valid = false: no data) or the neutral material.
-vec3 surfaceColor(float value, bool valid) {
-    if (!uUseArray) {
-        return uBaseColor;
+vec3 surfaceColor(Material m, float value, bool valid) {
+    if (!m.useArray) {
+        return m.base;
     }
     if (!valid) {
         return uNoDataColor;
     }
-    float span = uRange.y - uRange.x;
-    float t = span > 0.0 ? clamp((value - uRange.x) / span, 0.0, 1.0) : 0.5;
+    float span = m.range.y - m.range.x;
+    float t = span > 0.0 ? clamp((value - m.range.x) / span, 0.0, 1.0) : 0.5;
     if (uBins >= 2) {
         // The bin's texel centre: bin = min(floor(t * N), N - 1), like colormaps::binIndex.
         float bins = float(uBins);
@@ -65,8 +81,8 @@ vec3 cueScale(float t) {
 
 // The shaded vessel colour at a view-space position with its (not
 // necessarily unit) view-space normal.
-vec3 shadeVessel(vec3 positionView, vec3 normalView, float value, bool valid) {
-    vec3 base = surfaceColor(value, valid);
+vec3 shadeVessel(Material m, vec3 positionView, vec3 normalView, float value, bool valid) {
+    vec3 base = surfaceColor(m, value, valid);
     vec3 n = normalize(normalView);
     vec3 v = normalize(-positionView);
     // Two-sided: open meshes and inconsistent windings show their inside lit too.

@@ -515,7 +515,7 @@ TEST_F(PanelsTest, DataPanelHidesAndShowsSingleMeshes) {
 
 TEST_F(PanelsTest, DockLayoutIsRestoredAndCanBeReset) {
     auto docks = window_->findChildren<QDockWidget*>();
-    ASSERT_EQ(docks.size(), 4);
+    ASSERT_EQ(docks.size(), 5);
     QDockWidget* data = window_->findChild<QDockWidget*>(QStringLiteral("dataPanelDock"));
     ASSERT_NE(data, nullptr);
     EXPECT_FALSE(data->isHidden());

@@ -7,7 +7,9 @@
 #include <QColor>
 #include <QImage>
 #include <QString>
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -351,6 +353,63 @@ TEST_F(RenderCommandTest, MissingOrBadInputExitsWithCode3) {
     const auto bad = render({garbage.string(), "-o", output.string()});
     EXPECT_EQ(bad.code, vv::cli::kInvalidInput) << bad.err;
     EXPECT_FALSE(fs::exists(output));
+}
+
+}  // namespace
+
+namespace {
+
+/// Pixels whose largest channel differs by more than 8 levels.
+long countDifferent(const QImage& a, const QImage& b) {
+    long count = 0;
+    for (int y = 0; y < a.height(); ++y) {
+        for (int x = 0; x < a.width(); ++x) {
+            const QRgb p = a.pixel(x, y);
+            const QRgb q = b.pixel(x, y);
+            count += std::max({std::abs(qRed(p) - qRed(q)), std::abs(qGreen(p) - qGreen(q)),
+                               std::abs(qBlue(p) - qBlue(q))}) > 8
+                         ? 1
+                         : 0;
+        }
+    }
+    return count;
+}
+
+TEST_F(RenderCommandTest, TileRendersInTilesTheSameImage) {
+    const fs::path input = writeTubeVtk();
+    const fs::path whole = testDir() / "whole.png";
+    const fs::path tiled = testDir() / "tiled.png";
+    const std::vector<std::string> common{input.string(), "--size", "700x500", "--isolines", "8"};
+    std::vector<std::string> args = common;
+    args.insert(args.end(), {"-o", whole.string()});
+    const auto one = render(args);
+    ASSERT_EQ(one.code, vv::cli::kOk) << one.err;
+    EXPECT_EQ(one.out.find("tiles"), std::string::npos) << one.out;
+    args = common;
+    args.insert(args.end(), {"-o", tiled.string(), "--tile", "256"});
+    const auto parts = render(args);
+    ASSERT_EQ(parts.code, vv::cli::kOk) << parts.err;
+    EXPECT_NE(parts.out.find(" tiles"), std::string::npos) << parts.out;  // "in N tiles"
+    const QImage a(QString::fromStdString(whole.string()));
+    const QImage b(QString::fromStdString(tiled.string()));
+    ASSERT_EQ(a.size(), QSize(700, 500));
+    ASSERT_EQ(b.size(), a.size());
+    EXPECT_GT(countNot(a, a.pixel(0, 0)), 1000);  // not an empty view
+    // Fewer than 0.1 % of the pixels differ visibly.
+    EXPECT_LT(countDifferent(a, b), 350);
+
+    // Too small, not a number, or with options that describe one frame.
+    const fs::path never = testDir() / "never-tiled.png";
+    for (const std::vector<std::string>& extra :
+         {std::vector<std::string>{"--tile", "10"}, std::vector<std::string>{"--tile", "big"},
+          std::vector<std::string>{"--tile", "256", "--timings"},
+          std::vector<std::string>{"--tile", "256", "--depth-out",
+                                   (testDir() / "d.pfm").string()}}) {
+        args = {input.string(), "-o", never.string()};
+        args.insert(args.end(), extra.begin(), extra.end());
+        EXPECT_EQ(render(args).code, vv::cli::kUsage) << extra.front() << " " << extra[1];
+    }
+    EXPECT_FALSE(fs::exists(never));
 }
 
 }  // namespace

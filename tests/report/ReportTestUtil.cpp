@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "ReportTestUtil.h"
 
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -10,6 +11,8 @@
 #include <cstdio>
 #include <numbers>
 #include <set>
+
+#include "vv/core/Error.h"
 
 namespace vv::report::test {
 
@@ -24,6 +27,15 @@ void ensureGuiApplication() {
         static char name[] = "vv_report_tests";
         static char* argv[] = {name, nullptr};
         new QGuiApplication(argc, argv);  // kept for the whole process
+    }
+}
+
+std::unique_ptr<render::OffscreenRenderer> makeRenderer() {
+    try {
+        return std::make_unique<render::OffscreenRenderer>();
+    } catch (const Error& e) {
+        ADD_FAILURE() << "no OpenGL (run under xvfb-run -a, QT_QPA_PLATFORM=xcb): " << e.what();
+        return nullptr;
     }
 }
 

@@ -5,14 +5,20 @@
 
 #include <QImage>
 #include <filesystem>
+#include <memory>
 #include <string>
 
 #include "vv/io/Mesh.h"
+#include "vv/render/OffscreenRenderer.h"
 
 namespace vv::report::test {
 
 /// The process-wide QGuiApplication (offscreen platform without a display).
 void ensureGuiApplication();
+
+/// An offscreen renderer, or null after a test failure saying that there is
+/// no OpenGL (run under xvfb-run -a, QT_QPA_PLATFORM=xcb).
+std::unique_ptr<render::OffscreenRenderer> makeRenderer();
 
 /// A fresh folder for this process under VV_TEST_TMP/report/<name>.
 std::filesystem::path testDir(const std::string& name);

@@ -92,6 +92,7 @@ TEST_F(ViewExportTest, SizeLimits) {
     auto r = renderer();
     ASSERT_TRUE(r);
     EXPECT_GE(maxRenderSide(), 4096);
+    EXPECT_EQ(r->maxRenderSide(), maxRenderSide());  // what renderView() uses
     EXPECT_THROW((void)renderView(*r, scene_, options(7681, 100)), InvalidArgumentError);
     EXPECT_THROW((void)renderView(*r, scene_, options(7680, 4321)), InvalidArgumentError);
     EXPECT_THROW((void)renderView(*r, scene_, options(0, 100)), InvalidArgumentError);

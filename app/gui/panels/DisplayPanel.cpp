@@ -7,6 +7,7 @@
 #include <QDoubleSpinBox>
 #include <QFormLayout>
 #include <QGridLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QSlider>
 #include <QToolButton>
@@ -80,6 +81,37 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     form->addRow(tr("Vessel colour:"), vesselColor_);
     connect(vesselColor_, &QToolButton::clicked, this, &DisplayPanel::chooseVesselColor);
 
+    // The key light: azimuth about the view's up axis, elevation above its horizon.
+    auto* light = new QWidget(this);
+    auto* lightRow = new QHBoxLayout(light);
+    lightRow->setContentsMargins(0, 0, 0, 0);
+    const auto angleBox = [&](const char* name, double limit) {
+        auto* box = new QDoubleSpinBox(light);
+        box->setObjectName(QLatin1String(name));
+        box->setRange(-limit, limit);
+        box->setDecimals(1);
+        box->setSingleStep(5.0);
+        box->setSuffix(QStringLiteral("°"));
+        box->setKeyboardTracking(false);
+        lightRow->addWidget(box);
+        return box;
+    };
+    lightAzimuth_ = angleBox("lightAzimuth", 180.0);
+    lightAzimuth_->setWrapping(true);
+    lightElevation_ = angleBox("lightElevation", 90.0);
+    lightReset_ = new QToolButton(light);
+    lightReset_->setObjectName(QStringLiteral("lightReset"));
+    lightReset_->setText(tr("Reset"));
+    lightRow->addWidget(lightReset_);
+    form->addRow(tr("Light:"), light);
+    connect(lightReset_, &QToolButton::clicked, this, [this] {
+        render::MeshStyle style = viewer_->style();
+        style.light = render::LightAngles{};
+        viewer_->setStyle(style);
+        syncFromViewer();
+        emit changed();
+    });
+
     cameraButtons_ = new QWidget(this);
     auto* grid = new QGridLayout(cameraButtons_);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -147,6 +179,13 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     connect(cue_, &QComboBox::currentIndexChanged, this, applyCueLater);
     connect(fogStrength_, &QSlider::valueChanged, this, applyCueLater);
     connect(fresnelExponent_, &QDoubleSpinBox::valueChanged, this, applyCueLater);
+    const auto applyLightLater = [this] {
+        if (!syncing_) {
+            applyLight();
+        }
+    };
+    connect(lightAzimuth_, &QDoubleSpinBox::valueChanged, this, applyLightLater);
+    connect(lightElevation_, &QDoubleSpinBox::valueChanged, this, applyLightLater);
     connect(background_, &QComboBox::currentIndexChanged, this, [this] {
         if (!syncing_) {
             applyBackground();
@@ -234,8 +273,18 @@ void DisplayPanel::chooseVesselColor() {
     dialog->open();
 }
 
+void DisplayPanel::applyLight() {
+    render::MeshStyle style = viewer_->style();
+    style.light.azimuth = static_cast<float>(lightAzimuth_->value());
+    style.light.elevation = static_cast<float>(lightElevation_->value());
+    viewer_->setStyle(style);
+    emit changed();
+}
+
 void DisplayPanel::syncFromViewer() {
     syncing_ = true;
+    lightAzimuth_->setValue(static_cast<double>(viewer_->style().light.azimuth));
+    lightElevation_->setValue(static_cast<double>(viewer_->style().light.elevation));
     const render::VesselCueSettings& cue = viewer_->vesselCue();
     cue_->setCurrentIndex(cue_->findData(static_cast<int>(cue.cue)));
     fogStrength_->setValue(static_cast<int>(std::lround(cue.fogStrength * 100.0F)));
@@ -272,6 +321,15 @@ void DisplayPanel::updateApplicability() {
                   tr("Material colour of the vessels when no array colours them"),
                   tr("An array colours the vessels; choose the array None to use a material "
                      "colour"));
+    const QString noData = tr("No data loaded");
+    setApplicable(lightAzimuth_, hasScene,
+                  tr("Where the light comes from, around the view: 0° = from the eye, positive = "
+                     "from the right"),
+                  noData);
+    setApplicable(lightElevation_, hasScene,
+                  tr("Where the light comes from, above or below: positive = from above"), noData);
+    setApplicable(lightReset_, hasScene,
+                  tr("The default light: a little above and left of the eye"), noData);
     for (auto* button : cameraButtons_->findChildren<QToolButton*>()) {
         setApplicable(button, hasScene, tr("Move the camera to this view of the data"),
                       tr("No data loaded"));

@@ -22,8 +22,9 @@ namespace panels {
 /// The "Display" panel: the comparison cue on the vessels (none, vessel
 /// chromadepth / pseudo-chromadepth, fog, Fresnel edge), the vessels'
 /// material colour (used when no array colours them), the background,
-/// camera presets (Far, Medium, Close and the six anatomical views), the
-/// legends, and a performance overlay over the viewer (the last frame's
+/// the key light's direction (azimuth, elevation; shared by the vessels, the
+/// VSS and translucent objects), camera presets (Far, Medium, Close and the
+/// six anatomical views), the legends, and a performance overlay over the viewer (the last frame's
 /// passes with their CPU milliseconds).
 class DisplayPanel : public QWidget {
     Q_OBJECT
@@ -37,6 +38,12 @@ class DisplayPanel : public QWidget {
     /// not blocking) for the vessels' material colour.
     [[nodiscard]] QToolButton* vesselColorButton() const noexcept { return vesselColor_; }
     [[nodiscard]] QCheckBox* legendsBox() const noexcept { return legends_; }
+    /// The light's azimuth (-180..180 degrees, 0 = from the eye, > 0 = from the right).
+    [[nodiscard]] QDoubleSpinBox* lightAzimuthBox() const noexcept { return lightAzimuth_; }
+    /// The light's elevation (-90..90 degrees, > 0 = from above).
+    [[nodiscard]] QDoubleSpinBox* lightElevationBox() const noexcept { return lightElevation_; }
+    /// Puts the light back to its default direction.
+    [[nodiscard]] QToolButton* lightResetButton() const noexcept { return lightReset_; }
     [[nodiscard]] QCheckBox* performanceBox() const noexcept { return performance_; }
     /// The overlay label over the viewer (hidden unless performanceBox() is checked).
     [[nodiscard]] QLabel* performanceOverlay() const noexcept { return overlay_; }
@@ -58,6 +65,7 @@ class DisplayPanel : public QWidget {
     void applyCue();
     void applyBackground();
     void chooseVesselColor();
+    void applyLight();
     void updateApplicability();
 
     ViewerWidget* viewer_;
@@ -66,6 +74,9 @@ class DisplayPanel : public QWidget {
     QDoubleSpinBox* fresnelExponent_ = nullptr;
     QComboBox* background_ = nullptr;
     QToolButton* vesselColor_ = nullptr;
+    QDoubleSpinBox* lightAzimuth_ = nullptr;
+    QDoubleSpinBox* lightElevation_ = nullptr;
+    QToolButton* lightReset_ = nullptr;
     QCheckBox* legends_ = nullptr;
     QCheckBox* performance_ = nullptr;
     QLabel* overlay_ = nullptr;

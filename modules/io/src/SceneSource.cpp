@@ -194,8 +194,9 @@ Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& options,
     DicomVolume loaded = chosen != nullptr
                              ? loadDicomSeries(*chosen, options.dicom, progress.sub(0.05, 0.5))
                              : loadDicomVolume(where, uid, options.dicom, progress.sub(0.05, 0.5));
+    auto volume = std::make_shared<const Volume>(std::move(loaded.volume));
     const Segmentation segmentation =
-        segmentVessels(loaded.volume, options.segmentation, progress.sub(0.5, 0.7));
+        segmentVessels(*volume, options.segmentation, progress.sub(0.5, 0.7));
     Mesh mesh = extractSurface(segmentation.labelMap, {}, options.surface, progress.sub(0.7, 1.0));
     mesh.name = "vessels";
     mesh.source = path;
@@ -203,12 +204,13 @@ Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& options,
     if (report != nullptr) {
         report->fromVolume = true;
         report->seriesInstanceUid = loaded.seriesInstanceUid;
-        report->volumeDims = loaded.volume.dims();
+        report->volumeDims = volume->dims();
         report->range = segmentation.range;
         report->componentsFound = segmentation.componentsFound;
         report->componentsKept = segmentation.labelMap.components.size();
         report->boneComponents = segmentation.boneComponents;
         report->warnings = std::move(loaded.warnings);
+        report->volume = std::move(volume);
     }
     return scene;
 }

@@ -201,7 +201,19 @@ float Camera::nearPlane() const noexcept {
 }
 
 glm::mat4 Camera::projectionMatrix() const noexcept {
-    return glm::perspective(glm::radians(fovDegrees_), aspect(), nearPlane(), farPlane());
+    const glm::mat4 full =
+        glm::perspective(glm::radians(fovDegrees_), aspect(), nearPlane(), farPlane());
+    // setWindow() checked the window's size, so tileProjection() cannot throw.
+    return window_ ? tileProjection(full, width_, height_, *window_) : full;
+}
+
+void Camera::setWindow(const PixelRect& window) {
+    if (window.width < 1 || window.height < 1) {
+        throw InvalidArgumentError("a camera window needs at least 1x1 pixels, got " +
+                                   std::to_string(window.width) + "x" +
+                                   std::to_string(window.height));
+    }
+    window_ = window;
 }
 
 }  // namespace vv::render

@@ -358,6 +358,15 @@ struct FrameRenderer::Impl {
     double visibleDmax = 0.0;
     /// The range the last vessel-shading pass normalised its cue with.
     std::optional<std::pair<double, double>> cueRange;
+    /// The cue the last vessel-shading pass drew with (the translucent pass's too).
+    VesselCueParameters shadedCue;
+    /// Tiled rendering: the frame's VSS solved outside (setExternalVss), its
+    /// version (0 = none) and the frame's visible depth range.
+    std::shared_ptr<const SolvedFrame> external;
+    std::uint64_t externalVersion = 0;
+    std::optional<std::pair<double, double>> externalVisible;
+    /// renderDepth(): the linear depth the "depth-readback" pass read.
+    Image<float> depthReadback;
 
     [[nodiscard]] QOpenGLFunctions_4_1_Core& f() const {
         if (gl == nullptr) {
@@ -610,7 +619,32 @@ const std::vector<GlPassTiming>& FrameRenderer::lastTimings() {
 
 void FrameRenderer::render(const Camera& camera, const FrameSettings& settings,
                            const FrameTarget& target) {
-    renderGraph(camera, settings, target, false);
+    renderGraph(camera, settings, target, GraphMode::Frame);
+}
+
+Image<float> FrameRenderer::renderDepth(const Camera& camera, const FrameSettings& settings,
+                                        const FrameTarget& target) {
+    renderGraph(camera, settings, target, GraphMode::DepthOnly);
+    return std::move(impl_->depthReadback);
+}
+
+void FrameRenderer::setExternalVss(std::optional<ExternalVss> external) {
+    if (!external) {
+        impl_->external.reset();
+        impl_->externalVersion = 0;
+        impl_->externalVisible.reset();
+        return;
+    }
+    auto frame = std::make_shared<SolvedFrame>();
+    frame->height = std::move(external->height);
+    frame->dmin = external->dmin;
+    frame->dmax = external->dmax;
+    frame->milliseconds = external->solveMilliseconds;
+    frame->errorBound = external->errorBound;
+    impl_->external = std::move(frame);
+    // Never 0, so that "none" and an external VSS are told apart.
+    impl_->externalVersion = external->version * 2U + 1U;
+    impl_->externalVisible = external->visibleRange;
 }
 
 bool FrameRenderer::prepareSolve(const Camera& camera, const FrameSettings& settings,
@@ -618,12 +652,12 @@ bool FrameRenderer::prepareSolve(const Camera& camera, const FrameSettings& sett
     if (mode_ != SolveMode::Asynchronous || impl_->worker == nullptr || !settings.vss.enabled) {
         return false;
     }
-    renderGraph(camera, settings, target, true);
+    renderGraph(camera, settings, target, GraphMode::SolveOnly);
     return true;
 }
 
 void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& settings,
-                                const FrameTarget& target, bool solveOnly) {
+                                const FrameTarget& target, GraphMode mode) {
     if (!initialized()) {
         throw RenderError("FrameRenderer::render before initialize()");
     }
@@ -670,6 +704,13 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const float volumeIso = volumeIso_;
 
     RenderGraph graph(*impl.cache);
+    // Compiles and runs the graph as built so far and keeps what it did.
+    const auto runGraph = [&] {
+        graph.compile();
+        graph.execute(impl.observer.get());
+        passes_ = graph.passes();
+        graphText_ = graph.toText();
+    };
     Handle<Texture> output = graph.importResource(
         "output",
         Texture(targetDescriptor,
@@ -684,11 +725,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> parameter;
         Handle<Texture> depth;
     };
-    // The G-buffer's parameter values change with the array shown.
-    std::uint64_t arrayKey = std::hash<std::string>{}(meshes.style().array);
-    for (const std::size_t hidden : meshes.style().hidden) {  // and with the meshes shown
-        arrayKey = arrayKey * 1099511628211ULL ^ (hidden + 1);
-    }
+    // The G-buffer's parameter values change with the arrays shown and the opaque meshes.
+    const std::uint64_t arrayKey = meshes.style().geometryKey();
     const Geometry& geometry = graph.addPass<Geometry>(
         "geometry",
         [&](RenderGraph::Builder& b, Geometry& d) {
@@ -748,6 +786,25 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             checkGlError(g, "geometry pass");
         });
 
+    if (mode == GraphMode::DepthOnly) {
+        // renderDepth(): the G-buffer's linear depth read back, nothing shaded.
+        struct DepthReadback {
+            Handle<Texture> depth;
+        };
+        graph.addPass<DepthReadback>(
+            "depth-readback",
+            [&](RenderGraph::Builder& b, DepthReadback& d) {
+                b.sideEffect();
+                d.depth = b.read(geometry.linearDepth);
+            },
+            [&impl](const RenderGraph::Resources& r, const DepthReadback& d) {
+                impl.depthReadback = impl.readDepth(glTex(r.get(d.depth)));
+            });
+        runGraph();
+        gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+        return;
+    }
+
     // 3. VSS solve.
     struct Solve {
         Handle<Texture> depth;
@@ -768,11 +825,22 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const std::uint64_t depthView = viewKey(view, projection, viewport, sceneRevision);
     const std::uint64_t request = requestKey(depthView, key, preview);
     VssFrameStatus& status = impl.solveStatus;
+    // Tiled rendering: the frame's VSS comes from outside (setExternalVss).
+    const std::shared_ptr<const SolvedFrame> external = impl.external;
+    const std::uint64_t externalVersion = impl.externalVersion;
+    if (external && vssSettings.enabled && external->height.width() != 0 &&
+        (external->height.width() != w || external->height.height() != h)) {
+        throw InvalidArgumentError(
+            "the external VSS is " + std::to_string(external->height.width()) + "x" +
+            std::to_string(external->height.height()) + ", the frame renders at " +
+            std::to_string(w) + "x" + std::to_string(h));
+    }
     const Solve& solve = graph.addPass<Solve>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Solve& d) {
             b.dependsOn("solver", key);
             b.dependsOn("preview", preview);
+            b.dependsOn("external", externalVersion);
             d.depth = b.read(geometry.linearDepth);
             if (async) {
                 d.solved = b.read(solvedImport);
@@ -780,11 +848,17 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             d.height =
                 b.write(b.createPersistent<Texture>("vss-height", size(TextureFormat::R32F)));
         },
-        [&impl, &status, async, request, depthView, solverOptions, preview, depthRange](
+        [&impl, &status, async, request, depthView, solverOptions, preview, depthRange, external](
             const RenderGraph::Resources& r, const Solve& d) {
             status = VssFrameStatus{};
             const GlTexture& height = glTex(r.get(d.height));
             const GlTexture& depthTexture = glTex(r.get(d.depth));
+            if (external) {
+                impl.uploadHeight(height, external);
+                status.solveMilliseconds = external->milliseconds;
+                status.current = true;
+                return;
+            }
             if (!async) {
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
@@ -813,13 +887,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
 
-    if (solveOnly) {
+    if (mode == GraphMode::SolveOnly) {
         // prepareSolve(): the G-buffer and the solve's submission, nothing shaded.
         graph.markTarget(solve.height);
-        graph.compile();
-        graph.execute(impl.observer.get());
-        passes_ = graph.passes();
-        graphText_ = graph.toText();
+        runGraph();
         gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
         return;
     }
@@ -842,20 +913,29 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 .addPass<DepthRange>(
                     "depth-range",
                     [&](RenderGraph::Builder& b, DepthRange& d) {
+                        b.dependsOn("external", externalVersion);
                         d.depth = b.read(geometry.linearDepth);
                         d.range = b.write(b.createPersistent<Texture>(
                             "depth-range", TextureDescriptor{1, 1, TextureFormat::RG32F, 1}));
                     },
-                    [&impl](const RenderGraph::Resources& r, const DepthRange& d) {
-                        const Image<float> depth = impl.readDepth(glTex(r.get(d.depth)));
-                        float lo = std::numeric_limits<float>::infinity();
-                        float hi = -std::numeric_limits<float>::infinity();
-                        for (int y = 0; y < depth.height(); ++y) {
-                            const float* row = depth.row(y);
-                            for (int x = 0; x < depth.width(); ++x) {
-                                if (std::isfinite(row[x])) {
-                                    lo = std::min(lo, row[x]);
-                                    hi = std::max(hi, row[x]);
+                    [&impl, external](const RenderGraph::Resources& r, const DepthRange& d) {
+                        double lo = std::numeric_limits<double>::infinity();
+                        double hi = -std::numeric_limits<double>::infinity();
+                        if (external) {
+                            // Tiled rendering: the whole frame's range, not this part's.
+                            if (impl.externalVisible) {
+                                lo = impl.externalVisible->first;
+                                hi = impl.externalVisible->second;
+                            }
+                        } else {
+                            const Image<float> depth = impl.readDepth(glTex(r.get(d.depth)));
+                            for (int y = 0; y < depth.height(); ++y) {
+                                const float* row = depth.row(y);
+                                for (int x = 0; x < depth.width(); ++x) {
+                                    if (std::isfinite(row[x])) {
+                                        lo = std::min(lo, static_cast<double>(row[x]));
+                                        hi = std::max(hi, static_cast<double>(row[x]));
+                                    }
                                 }
                             }
                         }
@@ -938,6 +1018,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 throw RenderError("the vessel shading framebuffer is incomplete");
             }
             g.glViewport(0, 0, w, h);
+            impl.shadedCue = cue;
             meshes.shadeGBuffer(
                 camera,
                 MeshRenderer::GBufferTextures{.linearDepth = glTex(r.get(d.linearDepth)).texture(),
@@ -954,8 +1035,17 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> linearDepth;
         Handle<Texture> color;
     };
+    // Scene units per pixel per unit of depth; a tile (Camera::window) keeps
+    // the full view's pixel size: P[1][1] grew by the full height / the tile's.
     const float pixelScale =
-        2.0F * std::tan(glm::radians(camera.fieldOfView()) * 0.5F) / static_cast<float>(h);
+        camera.window()
+            ? 2.0F / (projection[1][1] * static_cast<float>(h))
+            : 2.0F * std::tan(glm::radians(camera.fieldOfView()) * 0.5F) / static_cast<float>(h);
+    // Where the view axis meets the frame, in pixels from its centre: 0
+    // except for off-axis tiles (P[2][0], P[2][1] are the NDC shift).
+    const glm::vec2 axisOffset(-0.5F * projection[2][0] * static_cast<float>(w),
+                               -0.5F * projection[2][1] * static_cast<float>(h));
+    const Lighting vssLight = lightingFor(meshes.style().light);  // the vessels' key light
     const VssShading& vssShading = graph.addPass<VssShading>(
         "vss-shading",
         [&](RenderGraph::Builder& b, VssShading& d) {
@@ -963,8 +1053,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             d.linearDepth = b.read(geometry.linearDepth);
             d.color = b.write(b.create<Texture>("vss-color", size(TextureFormat::RGBA8)));
         },
-        [&impl, vssSettings, pixelScale, w, h](const RenderGraph::Resources& r,
-                                               const VssShading& d) {
+        [&impl, vssSettings, vssLight, pixelScale, w, h](const RenderGraph::Resources& r,
+                                                         const VssShading& d) {
             auto& g = impl.f();
             impl.uploadScale(vssSettings.scale);
             const GlTexture& out = glTex(r.get(d.color));
@@ -981,7 +1071,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             const auto loc = [&](const char* name) {
                 return g.glGetUniformLocation(program, name);
             };
-            const Lighting& light = sceneLighting();
+            const Lighting& light = vssLight;
             g.glUseProgram(program);
             g.glActiveTexture(GL_TEXTURE0);
             g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.height)).texture());
@@ -1015,6 +1105,51 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
 
     const bool useVss = vssSettings.enabled;
 
+    // Translucent objects (opacity < 1, not in the G-buffer): drawn forward,
+    // back to front, over a copy of the opaque depth into a premultiplied
+    // layer that the composite lays over the frame. Declared always; with no
+    // translucent object nothing reads it and the graph culls it.
+    struct Translucent {
+        Handle<Texture> opaqueDepth;
+        Handle<Texture> vessels;  // only to run after vessel-shading (its cue range)
+        Handle<Texture> depth;
+        Handle<Texture> layer;
+    };
+    const bool useTranslucent = meshes.hasTranslucent();
+    const Translucent& translucent = graph.addPass<Translucent>(
+        "translucent",
+        [&](RenderGraph::Builder& b, Translucent& d) {
+            d.opaqueDepth = b.read(geometry.depth);
+            d.vessels = b.read(vessels.color);
+            d.depth =
+                b.write(b.create<Texture>("translucent-depth", size(TextureFormat::Depth32F)));
+            d.layer = b.write(b.create<Texture>("translucent-color", size(TextureFormat::RGBA16F)));
+        },
+        [&impl, &meshes, camera, simplified, w, h](const RenderGraph::Resources& r,
+                                                   const Translucent& d) {
+            auto& g = impl.f();
+            g.glBindFramebuffer(GL_FRAMEBUFFER, impl.shadingFbo);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                                     glTex(r.get(d.layer)).texture(), 0);
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D,
+                                     glTex(r.get(d.depth)).texture(), 0);
+            const GLenum buffers[] = {GL_COLOR_ATTACHMENT0};
+            g.glDrawBuffers(1, buffers);
+            if (g.glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+                throw RenderError("the translucent framebuffer is incomplete");
+            }
+            g.glBindFramebuffer(GL_READ_FRAMEBUFFER, glTex(r.get(d.opaqueDepth)).framebuffer());
+            g.glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+            g.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+            g.glViewport(0, 0, w, h);
+            const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+            g.glClearBufferfv(GL_COLOR, 0, clear);
+            meshes.drawTranslucent(camera, impl.shadedCue, simplified);
+            // shadingFbo is shared with vessel-shading, which has no depth.
+            g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
+            checkGlError(g, "translucent pass");
+        });
+
     // 6. Ambient occlusion over vessels + VSS, then a depth-aware blur. Both
     // outputs persist, so a new colour scale or AO strength reuses them.
     // Declared always; with AO off nothing reads them and the graph culls them.
@@ -1038,6 +1173,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             [&](RenderGraph::Builder& b, Ssao& d) {
                 b.dependsOn("radius", aoRadius);
                 b.dependsOn("pixel-scale", pixelScale);
+                b.dependsOn("axis-offset", axisOffset);
                 d.linearDepth = b.read(geometry.linearDepth);
                 d.normal = b.read(geometry.normal);
                 if (useVss) {
@@ -1045,8 +1181,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 }
                 d.raw = b.write(b.createPersistent<Texture>("ao-raw", size(TextureFormat::RG32F)));
             },
-            [&impl, useVss, aoRadius, pixelScale, w, h](const RenderGraph::Resources& r,
-                                                        const Ssao& d) {
+            [&impl, useVss, aoRadius, pixelScale, axisOffset, w, h](const RenderGraph::Resources& r,
+                                                                    const Ssao& d) {
                 auto& g = impl.f();
                 g.glBindFramebuffer(GL_FRAMEBUFFER, glTex(r.get(d.raw)).framebuffer());
                 g.glViewport(0, 0, w, h);
@@ -1071,6 +1207,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 g.glUniform1f(loc("uDmin"), static_cast<float>(impl.dmin));
                 g.glUniform1f(loc("uDmax"), static_cast<float>(impl.dmax));
                 g.glUniform1f(loc("uPixelScale"), pixelScale);
+                g.glUniform2f(loc("uAxisOffset"), axisOffset.x, axisOffset.y);
                 g.glUniform1f(loc("uRadius"), aoRadius);
                 g.glUniform1i(loc("uSamples"), 12);
                 drawFullscreenAndUnbind(g, impl.emptyVao, 3);
@@ -1106,6 +1243,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> vessels;
         Handle<Texture> vss;
         Handle<Texture> ao;
+        Handle<Texture> translucent;
         Handle<Texture> output;
     };
     // A reduced render size always ends with the FXAA pass, which also upscales.
@@ -1122,11 +1260,14 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             if (useAo) {
                 d.ao = b.read(aoTexture);
             }
+            if (useTranslucent) {
+                d.translucent = b.read(translucent.layer);
+            }
             d.output = b.write(useAa ? b.create<Texture>("composited", size(TextureFormat::RGBA8))
                                      : output);
         },
-        [&impl, useVss, useAo, aoStrength, background, w, h](const RenderGraph::Resources& r,
-                                                             const Composite& d) {
+        [&impl, useVss, useAo, useTranslucent, aoStrength, background, w, h](
+            const RenderGraph::Resources& r, const Composite& d) {
             auto& g = impl.f();
             const GlTexture& out = glTex(r.get(d.output));
             g.glBindFramebuffer(GL_FRAMEBUFFER, out.framebuffer());
@@ -1151,7 +1292,12 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glUniform1i(loc("uUseAo"), useAo ? 1 : 0);
             g.glUniform1f(loc("uAoStrength"), aoStrength);
             g.glUniform3f(loc("uBackground"), background.r, background.g, background.b);
-            drawFullscreenAndUnbind(g, impl.emptyVao, 3);
+            g.glActiveTexture(GL_TEXTURE3);
+            g.glBindTexture(GL_TEXTURE_2D,
+                            useTranslucent ? glTex(r.get(d.translucent)).texture() : 0U);
+            g.glUniform1i(loc("uTranslucent"), 3);
+            g.glUniform1i(loc("uUseTranslucent"), useTranslucent ? 1 : 0);
+            drawFullscreenAndUnbind(g, impl.emptyVao, 4);
             g.glEnable(GL_DEPTH_TEST);
             checkGlError(g, "composite pass");
         });
@@ -1197,10 +1343,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             });
     }
 
-    graph.compile();
-    graph.execute(impl.observer.get());
-    passes_ = graph.passes();
-    graphText_ = graph.toText();
+    runGraph();
     cueRange_ = impl.cueRange;
     gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     gl.glViewport(0, 0, targetW, targetH);

@@ -3,6 +3,7 @@
 
 #include <QFile>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QOpenGLFunctions_4_1_Core>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QSurfaceFormat>
@@ -27,6 +28,16 @@ std::string hex(GLenum value) {
 }
 
 }  // namespace
+
+int maxRenderSide(QOpenGLFunctions& gl) {
+    GLint texture = 0;
+    GLint renderbuffer = 0;
+    GLint viewport[2] = {0, 0};
+    gl.glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+    gl.glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &renderbuffer);
+    gl.glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+    return std::min({texture, renderbuffer, viewport[0], viewport[1]});
+}
 
 void checkGlError(QOpenGLFunctions_4_1_Core& gl, std::string_view what) {
     const GLenum error = gl.glGetError();

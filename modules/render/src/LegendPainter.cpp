@@ -249,23 +249,40 @@ Legends legendsFor(const io::Scene* scene, const MeshStyle& style,
     }
     const bool cueReplacesColors = settings.cue.cue == VesselCue::Chromadepth ||
                                    settings.cue.cue == VesselCue::PseudoChromadepth;
-    if (!style.array.empty() && range && !cueReplacesColors) {
+    if (cueReplacesColors) {
+        return legends;
+    }
+    // Without a scene, the scene's array alone (nothing tells what objects show).
+    const std::vector<std::string> arrays =
+        scene != nullptr ? shownArrays(*scene, style)
+                         : (style.array.empty() ? std::vector<std::string>{}
+                                                : std::vector<std::string>{style.array});
+    for (const std::string& name : arrays) {
+        const bool sceneArray = name == style.array;
+        const auto shown = sceneArray ? range : objectArrayRange(*scene, style, name);
+        if (!shown) {
+            continue;
+        }
         ParameterLegend parameter;
-        parameter.name = style.array;
-        parameter.min = range->first;
-        parameter.max = range->second;
+        parameter.name = name;
+        parameter.min = shown->first;
+        parameter.max = shown->second;
         parameter.map = style.colorMap;
         parameter.bins = style.bins;
-        parameter.title = style.legendTitle;
+        parameter.title = sceneArray ? style.legendTitle : std::string();
         if (scene != nullptr) {
             for (const auto& mesh : scene->meshes) {
-                if (const io::DataArray* array = mesh.pointArray(style.array)) {
+                if (const io::DataArray* array = mesh.pointArray(name)) {
                     parameter.unit = array->unit;
                     break;
                 }
             }
         }
-        legends.parameter = std::move(parameter);
+        if (!legends.parameter) {
+            legends.parameter = std::move(parameter);
+        } else {
+            legends.moreParameters.push_back(std::move(parameter));
+        }
     }
     return legends;
 }
@@ -283,6 +300,10 @@ LegendLayout legendLayout(const QRectF& area, const Legends& legends) {
     }
     if (legends.parameter) {
         layout.parameter = QRectF(area.right() - m.margin - m.width, top, m.width, m.height);
+        for (std::size_t i = 0; i < legends.moreParameters.size(); ++i) {
+            layout.moreParameters.push_back(layout.parameter.translated(
+                0.0, -static_cast<double>(i + 1) * (m.height + m.margin * 0.5)));
+        }
     }
     return layout;
 }
@@ -306,12 +327,17 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
         paintBox(painter, layout.depth, m, titles, strip(colormaps::lut(d.scale, 256)),
                  depthLegendTicks(d.dmin, d.dmax));
     }
-    if (legends.parameter) {
-        const ParameterLegend& p = *legends.parameter;
+    const auto paintParameter = [&](const ParameterLegend& p, const QRectF& box) {
         const int entries = p.bins >= 2 ? p.bins : 256;
         auto ticks = legendTicks(static_cast<double>(p.min), static_cast<double>(p.max));
-        paintBox(painter, layout.parameter, m, {QString::fromStdString(parameterLegendTitle(p))},
+        paintBox(painter, box, m, {QString::fromStdString(parameterLegendTitle(p))},
                  strip(colormaps::lut(p.map, entries)), ticks);
+    };
+    if (legends.parameter) {
+        paintParameter(*legends.parameter, layout.parameter);
+        for (std::size_t i = 0; i < legends.moreParameters.size(); ++i) {
+            paintParameter(legends.moreParameters[i], layout.moreParameters[i]);
+        }
     }
     painter.restore();
 }

@@ -72,6 +72,20 @@ std::vector<glm::vec2> scalarsFor(const io::Mesh& mesh, const std::string& name)
     return out;
 }
 
+void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what);
+
+/// Ends a texture upload to `target` on the active unit: `filter` for
+/// minification and magnification, clamped s, unbound, unit 0 active again;
+/// throws RenderError naming `what` when GL reports an error.
+void finishUpload(QOpenGLFunctions_4_1_Core& f, GLenum target, GLint filter, const char* what) {
+    f.glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+    f.glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+    f.glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    f.glBindTexture(target, 0);
+    f.glActiveTexture(GL_TEXTURE0);
+    throwOnGlError(f, what);
+}
+
 void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what) {
     const GLenum error = gl.glGetError();
     if (error == GL_OUT_OF_MEMORY) {
@@ -97,6 +111,36 @@ constexpr int kCueLutSize = 256;
 constexpr GLint kCueLutUnit = 1;
 /// shadeGBuffer() binds the G-buffer's four textures from this unit on.
 constexpr GLint kGBufferFirstUnit = 2;
+/// ... and the per-object table to this one.
+constexpr GLint kObjectTableUnit = kGBufferFirstUnit + 4;
+
+/// Hashes `value` into `hash` (FNV-1a step per byte).
+void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) noexcept {
+    const auto* p = static_cast<const unsigned char*>(data);
+    for (std::size_t i = 0; i < size; ++i) {
+        hash = (hash ^ p[i]) * 1099511628211ULL;
+    }
+}
+
+/// Widens `range` by the finite range of `mesh`'s point array `name`, if any.
+void widenRange(std::optional<std::pair<float, float>>& range, const io::Mesh& mesh,
+                const std::string& name) {
+    const io::DataArray* array = mesh.pointArray(name);
+    const auto r = array != nullptr ? array->finiteRange() : std::nullopt;
+    if (!r) {
+        return;
+    }
+    if (!range) {
+        range = r;
+    } else {
+        range->first = std::min(range->first, r->first);
+        range->second = std::max(range->second, r->second);
+    }
+}
+
+bool inUnitRange(float v) noexcept {
+    return std::isfinite(v) && v >= 0.0F && v <= 1.0F;
+}
 
 }  // namespace
 
@@ -164,6 +208,20 @@ std::optional<colormaps::DepthScale> cueDepthScale(VesselCue cue) noexcept {
     return std::nullopt;
 }
 
+glm::vec3 lightDirection(const LightAngles& angles) {
+    if (!std::isfinite(angles.azimuth) || !std::isfinite(angles.elevation) ||
+        std::abs(angles.azimuth) > 180.0F || std::abs(angles.elevation) > 90.0F) {
+        throw InvalidArgumentError(
+            "the light direction must have an azimuth within -180..180 and "
+            "an elevation within -90..90 degrees, got " +
+            std::to_string(angles.azimuth) + ", " + std::to_string(angles.elevation));
+    }
+    const float a = glm::radians(angles.azimuth);
+    const float e = glm::radians(angles.elevation);
+    return glm::normalize(
+        glm::vec3(std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)));
+}
+
 const Lighting& sceneLighting() noexcept {
     static const Lighting lighting = [] {
         Lighting l;
@@ -171,6 +229,56 @@ const Lighting& sceneLighting() noexcept {
         return l;
     }();
     return lighting;
+}
+
+Lighting lightingFor(const LightAngles& angles) {
+    Lighting l = sceneLighting();
+    if (!(angles == LightAngles{})) {
+        l.direction = lightDirection(angles);
+    }
+    return l;
+}
+
+void validateStyle(const MeshStyle& style) {
+    static_cast<void>(lightDirection(style.light));
+    for (std::size_t i = 0; i < style.objects.size(); ++i) {
+        const ObjectStyle& o = style.objects[i];
+        const bool colorOk = !o.color || (inUnitRange(o.color->r) && inUnitRange(o.color->g) &&
+                                          inUnitRange(o.color->b));
+        if (!inUnitRange(o.opacity) || !colorOk) {
+            throw InvalidArgumentError("object " + std::to_string(i) +
+                                       ": opacity and colour components must be within 0..1");
+        }
+    }
+}
+
+std::vector<std::string> shownArrays(const io::Scene& scene, const MeshStyle& style) {
+    std::vector<std::string> arrays;
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        const std::string& a = style.arrayOf(i);
+        if (!style.visible(i) || a.empty() || scene.meshes[i].pointArray(a) == nullptr ||
+            std::find(arrays.begin(), arrays.end(), a) != arrays.end()) {
+            continue;
+        }
+        if (a == style.array) {
+            arrays.insert(arrays.begin(), a);
+        } else {
+            arrays.push_back(a);
+        }
+    }
+    return arrays;
+}
+
+std::optional<std::pair<float, float>> objectArrayRange(const io::Scene& scene,
+                                                        const MeshStyle& style,
+                                                        const std::string& name) {
+    std::optional<std::pair<float, float>> range;
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
+        if (style.arrayOf(i) == name) {
+            widenRange(range, scene.meshes[i], name);
+        }
+    }
+    return range;
 }
 
 std::string defaultArrayName(const io::Scene& scene) {
@@ -201,20 +309,7 @@ std::vector<std::string> pointArrayNames(const io::Scene& scene) {
 std::optional<std::pair<float, float>> arrayRange(const io::Scene& scene, const std::string& name) {
     std::optional<std::pair<float, float>> range;
     for (const auto& mesh : scene.meshes) {
-        const io::DataArray* array = mesh.pointArray(name);
-        if (array == nullptr) {
-            continue;
-        }
-        const auto r = array->finiteRange();
-        if (!r) {
-            continue;
-        }
-        if (!range) {
-            range = r;
-        } else {
-            range->first = std::min(range->first, r->first);
-            range->second = std::max(range->second, r->second);
-        }
+        widenRange(range, mesh, name);
     }
     return range;
 }
@@ -225,9 +320,10 @@ struct MeshRenderer::GpuMesh {
     GLuint scalars = 0;
     GLuint indices = 0;
     GLsizei indexCount = 0;
+    glm::vec3 center{0.0F};  ///< of the bounding box, for sorting translucent objects
 };
 
-MeshRenderer::MeshRenderer() = default;
+MeshRenderer::MeshRenderer() : lighting_(sceneLighting()) {}
 
 MeshRenderer::~MeshRenderer() {
     if (context_ != nullptr && QOpenGLContext::currentContext() == context_) {
@@ -269,6 +365,8 @@ void MeshRenderer::initialize() {
     emptyVao_ = 0;
     lutTexture_ = 0;
     cueLutTexture_ = 0;
+    objectTexture_ = 0;
+    objectsStale_ = true;
     uploadedMap_.reset();
     uploadedCueScale_.reset();
     scalarsUploadedForArray_ = false;
@@ -295,6 +393,7 @@ void MeshRenderer::initialize() {
 
     f.glGenTextures(1, &lutTexture_);
     f.glGenTextures(1, &cueLutTexture_);
+    f.glGenTextures(1, &objectTexture_);
     uploadedMap_.reset();
     uploadLut();
     throwOnGlError(f, "MeshRenderer::initialize");
@@ -318,6 +417,11 @@ void MeshRenderer::release() noexcept {
         f.glDeleteTextures(1, &cueLutTexture_);
         cueLutTexture_ = 0;
     }
+    if (objectTexture_ != 0) {
+        f.glDeleteTextures(1, &objectTexture_);
+        objectTexture_ = 0;
+    }
+    objectsStale_ = true;
     uploadedCueScale_.reset();
     if (program_ != 0) {
         f.glDeleteProgram(program_);
@@ -407,6 +511,15 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
                        static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                        mesh.indices.data(), GL_STATIC_DRAW);
         target.back().indexCount = static_cast<GLsizei>(mesh.indices.size());
+        if (!mesh.positions.empty()) {
+            glm::vec3 lo = mesh.positions.front();
+            glm::vec3 hi = lo;
+            for (const auto& p : mesh.positions) {
+                lo = glm::min(lo, p);
+                hi = glm::max(hi, p);
+            }
+            target.back().center = 0.5F * (lo + hi);
+        }
         f.glBindVertexArray(0);
         f.glBindBuffer(GL_ARRAY_BUFFER, 0);
         throwOnGlError(f, "uploading a mesh");
@@ -419,6 +532,7 @@ void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
     previewScene_.reset();
     scene_ = std::move(scene);
     scalarsUploadedForArray_ = false;
+    objectsStale_ = true;
     updateRange();
     if (!scene_) {
         return;
@@ -447,11 +561,14 @@ void MeshRenderer::setPreviewScene(std::shared_ptr<const io::Scene> preview) {
 
 void MeshRenderer::setStyle(const MeshStyle& style) {
     colormaps::validateBins(style.bins);
+    validateStyle(style);
     style_ = style;
+    lighting_ = lightingFor(style_.light);
+    objectsStale_ = true;
     updateRange();
     // With the context current, upload now; otherwise draw() catches up.
     if (gl_ != nullptr && QOpenGLContext::currentContext() == context_) {
-        if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
+        if (scalarsStale()) {
             uploadScalars();
         }
         uploadLut();
@@ -460,9 +577,91 @@ void MeshRenderer::setStyle(const MeshStyle& style) {
 
 void MeshRenderer::updateRange() {
     effectiveRange_.reset();
-    if (scene_ && !style_.array.empty()) {
+    objectRanges_.clear();
+    if (!scene_) {
+        return;
+    }
+    if (!style_.array.empty()) {
         effectiveRange_ = style_.range ? style_.range : arrayRange(*scene_, style_.array);
     }
+    for (std::size_t i = 0; i < scene_->meshes.size(); ++i) {
+        const std::string& name = style_.arrayOf(i);
+        if (name.empty() || name == style_.array ||
+            std::any_of(objectRanges_.begin(), objectRanges_.end(),
+                        [&](const auto& entry) { return entry.first == name; })) {
+            continue;
+        }
+        objectRanges_.emplace_back(name, objectArrayRange(*scene_, style_, name));
+    }
+}
+
+std::optional<std::pair<float, float>> MeshRenderer::objectRange(std::size_t mesh) const {
+    const std::string& name = style_.arrayOf(mesh);
+    if (name.empty()) {
+        return std::nullopt;
+    }
+    if (name == style_.array) {
+        return effectiveRange_;
+    }
+    for (const auto& [array, range] : objectRanges_) {
+        if (array == name) {
+            return range;
+        }
+    }
+    return std::nullopt;
+}
+
+bool MeshRenderer::scalarsStale() const noexcept {
+    if (!scalarsUploadedForArray_ || !scene_) {
+        return true;
+    }
+    for (std::size_t i = 0; i < scene_->meshes.size(); ++i) {
+        if (i >= uploadedArrays_.size() || uploadedArrays_[i] != style_.arrayOf(i)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void MeshRenderer::uploadObjects() {
+    if (!objectsStale_) {
+        return;
+    }
+    auto& f = gl();
+    GLint maxSize = 0;
+    f.glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    const std::size_t count = scene_ ? scene_->meshes.size() : 0U;
+    // Row = object id (row 0 unused). Objects beyond the largest texture keep
+    // the scene's material (vessel.frag falls back to the uniforms).
+    const std::size_t rows = std::min(count + 1, static_cast<std::size_t>(std::max(maxSize, 1)));
+    std::vector<glm::vec4> table(rows * 2, glm::vec4(0.0F));
+    for (std::size_t id = 1; id < rows; ++id) {
+        const std::size_t mesh = id - 1;
+        const ObjectStyle& o = style_.object(mesh);
+        const glm::vec3 color = o.color.value_or(style_.vesselColor);
+        const bool useArray = !style_.arrayOf(mesh).empty();
+        const auto range = objectRange(mesh).value_or(std::make_pair(0.0F, 1.0F));
+        table[id * 2] = glm::vec4(color, useArray ? 1.0F : 0.0F);
+        table[id * 2 + 1] = glm::vec4(range.first, range.second, o.opacity, 0.0F);
+    }
+    f.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
+    f.glBindTexture(GL_TEXTURE_2D, objectTexture_);
+    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    f.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2, static_cast<GLsizei>(rows), 0, GL_RGBA,
+                   GL_FLOAT, table.data());
+    finishUpload(f, GL_TEXTURE_2D, GL_NEAREST, "uploading the per-object styles");
+    objectsStale_ = false;
+}
+
+void MeshRenderer::useObject(unsigned program, std::size_t index) {
+    auto& f = gl();
+    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program, name); };
+    const ObjectStyle& o = style_.object(index);
+    const glm::vec3 color = o.color.value_or(style_.vesselColor);
+    const auto range = objectRange(index).value_or(std::make_pair(0.0F, 1.0F));
+    f.glUniform1i(loc("uUseArray"), style_.arrayOf(index).empty() ? 0 : 1);
+    f.glUniform3f(loc("uBaseColor"), color.r, color.g, color.b);
+    f.glUniform2f(loc("uRange"), range.first, range.second);
 }
 
 void MeshRenderer::uploadScalars() {
@@ -472,7 +671,7 @@ void MeshRenderer::uploadScalars() {
     }
     const auto upload = [&](const io::Scene& scene, const std::vector<GpuMesh>& meshes) {
         for (std::size_t m = 0; m < meshes.size(); ++m) {
-            const auto scalars = scalarsFor(scene.meshes[m], style_.array);
+            const auto scalars = scalarsFor(scene.meshes[m], style_.arrayOf(m));
             f.glBindBuffer(GL_ARRAY_BUFFER, meshes[m].scalars);
             f.glBufferSubData(GL_ARRAY_BUFFER, 0,
                               static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
@@ -485,7 +684,10 @@ void MeshRenderer::uploadScalars() {
     }
     f.glBindBuffer(GL_ARRAY_BUFFER, 0);
     throwOnGlError(f, "uploading array values");
-    uploadedArray_ = style_.array;
+    uploadedArrays_.clear();
+    for (std::size_t m = 0; m < scene_->meshes.size(); ++m) {
+        uploadedArrays_.push_back(style_.arrayOf(m));
+    }
     scalarsUploadedForArray_ = true;
 }
 
@@ -504,11 +706,7 @@ void MeshRenderer::uploadLut() {
     f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
     f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, table.data());
-    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, filter);
-    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, filter);
-    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    f.glBindTexture(GL_TEXTURE_1D, 0);
-    throwOnGlError(f, "uploading the colour map");
+    finishUpload(f, GL_TEXTURE_1D, filter, "uploading the colour map");
     uploadedMap_ = style_.colorMap;
     uploadedBins_ = bins;
 }
@@ -524,19 +722,15 @@ void MeshRenderer::uploadCueLut(colormaps::DepthScale scale) {
     f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
     f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, kCueLutSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
                    table.data());
-    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    f.glTexParameteri(GL_TEXTURE_1D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    f.glBindTexture(GL_TEXTURE_1D, 0);
-    f.glActiveTexture(GL_TEXTURE0);
-    throwOnGlError(f, "uploading the vessel cue's depth scale");
+    finishUpload(f, GL_TEXTURE_1D, GL_LINEAR, "uploading the vessel cue's depth scale");
     uploadedCueScale_ = scale;
 }
 
 void MeshRenderer::prepareMaterial(const VesselCueParameters& cue) {
-    if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
+    if (scalarsStale()) {
         uploadScalars();
     }
+    uploadObjects();
     uploadLut();
     if (const auto cueScale = cueDepthScale(cue.cue)) {
         uploadCueLut(*cueScale);
@@ -549,7 +743,7 @@ void MeshRenderer::useMaterial(unsigned program, const VesselCueParameters& cue)
     // An array without any finite value shows no-data everywhere.
     const std::pair<float, float> range = effectiveRange_.value_or(std::make_pair(0.0F, 1.0F));
     const glm::vec3 noData = style_.noDataColor.value_or(colormaps::noDataColor(style_.colorMap));
-    const Lighting& light = sceneLighting();
+    const Lighting& light = lighting_;
     f.glUseProgram(program);
     const auto loc = [&](const char* name) { return f.glGetUniformLocation(program, name); };
     f.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
@@ -573,6 +767,13 @@ void MeshRenderer::useMaterial(unsigned program, const VesselCueParameters& cue)
     f.glUniform1f(loc("uDiffuse"), light.diffuse);
     f.glUniform1f(loc("uSpecular"), light.specular);
     f.glUniform1f(loc("uShininess"), light.shininess);
+    f.glUniform1f(loc("uOpacity"), 1.0F);
+    f.glUniform1i(loc("uObjects"), kObjectTableUnit);
+    GLint rows = 0;
+    f.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
+    f.glBindTexture(GL_TEXTURE_2D, objectTexture_);
+    f.glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &rows);
+    f.glUniform1i(loc("uObjectCount"), std::max(rows - 1, 0));
     f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
     f.glBindTexture(GL_TEXTURE_1D, cueDepthScale(cue.cue) ? cueLutTexture_ : 0U);
     f.glActiveTexture(GL_TEXTURE0);
@@ -581,6 +782,8 @@ void MeshRenderer::useMaterial(unsigned program, const VesselCueParameters& cue)
 
 void MeshRenderer::unbindMaterial() {
     auto& f = gl();
+    f.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
+    f.glBindTexture(GL_TEXTURE_2D, 0);
     f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
     f.glBindTexture(GL_TEXTURE_1D, 0);
     f.glActiveTexture(GL_TEXTURE0);
@@ -589,7 +792,47 @@ void MeshRenderer::unbindMaterial() {
 }
 
 bool MeshStyle::visible(std::size_t mesh) const noexcept {
-    return std::find(hidden.begin(), hidden.end(), mesh) == hidden.end();
+    return std::find(hidden.begin(), hidden.end(), mesh) == hidden.end() &&
+           object(mesh).opacity > 0.0F;
+}
+
+const ObjectStyle& MeshStyle::object(std::size_t mesh) const noexcept {
+    static const ObjectStyle defaults;
+    return mesh < objects.size() ? objects[mesh] : defaults;
+}
+
+const std::string& MeshStyle::arrayOf(std::size_t mesh) const noexcept {
+    const ObjectStyle& o = object(mesh);
+    return o.array ? *o.array : array;
+}
+
+bool MeshStyle::translucent(std::size_t mesh) const noexcept {
+    return visible(mesh) && object(mesh).opacity < 1.0F;
+}
+
+bool MeshStyle::opaque(std::size_t mesh) const noexcept {
+    return visible(mesh) && object(mesh).opacity >= 1.0F;
+}
+
+std::uint64_t MeshStyle::geometryKey() const noexcept {
+    std::uint64_t hash = 14695981039346656037ULL;
+    hashBytes(hash, array.data(), array.size());
+    for (const std::size_t index : hidden) {
+        hashBytes(hash, &index, sizeof index);
+    }
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (!objects[i].array && objects[i].opacity >= 1.0F) {
+            continue;  // as if it were not listed (its colour is not in the G-buffer)
+        }
+        const std::string& shown = arrayOf(i);
+        const std::uint64_t size = shown.size();
+        const bool drawn = opaque(i);
+        hashBytes(hash, &i, sizeof i);
+        hashBytes(hash, &size, sizeof size);
+        hashBytes(hash, shown.data(), shown.size());
+        hashBytes(hash, &drawn, sizeof drawn);
+    }
+    return hash;
 }
 
 void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
@@ -619,6 +862,7 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
         if (!style_.visible(i)) {
             continue;
         }
+        useObject(program_, i);
         f.glBindVertexArray(meshes_[i].vao);
         f.glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
     }
@@ -645,6 +889,8 @@ void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbu
     // A perspective projection maps view x / -z to ndc x * P[0][0] (y likewise).
     const glm::mat4 projection = camera.projectionMatrix();
     f.glUniform2f(loc("uViewScale"), 1.0F / projection[0][0], 1.0F / projection[1][1]);
+    // Off-axis frusta (tiles, Camera::setWindow) shift NDC by P[2][0], P[2][1].
+    f.glUniform2f(loc("uViewOffset"), projection[2][0], projection[2][1]);
     const std::array<std::pair<const char*, unsigned>, 4> inputs = {{
         {"uLinearDepth", gbuffer.linearDepth},
         {"uNormal", gbuffer.normal},
@@ -669,6 +915,71 @@ void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbu
     throwOnGlError(f, "shading the vessels from the G-buffer");
 }
 
+bool MeshRenderer::hasTranslucent() const noexcept {
+    for (std::size_t i = 0; i < meshes_.size(); ++i) {
+        if (style_.translucent(i)) {
+            return true;
+        }
+    }
+    return false;
+}
+
+void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParameters& cue,
+                                   bool preview) {
+    auto& f = gl();
+    if (program_ == 0) {
+        throw RenderError("MeshRenderer::drawTranslucent without a shader program");
+    }
+    const std::vector<GpuMesh>& drawn =
+        preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_;
+    const glm::mat4 view = camera.viewMatrix();
+    // Back to front: the farthest bounding-box centre (most negative view z) first.
+    std::vector<std::pair<float, std::size_t>> order;
+    for (std::size_t i = 0; i < drawn.size(); ++i) {
+        if (style_.translucent(i)) {
+            order.emplace_back((view * glm::vec4(drawn[i].center, 1.0F)).z, i);
+        }
+    }
+    if (order.empty()) {
+        return;
+    }
+    std::sort(order.begin(), order.end());
+    prepareMaterial(cue);
+    const glm::mat4 projection = camera.projectionMatrix();
+    const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
+    useMaterial(program_, cue);
+    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
+    f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
+    f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
+    f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
+    f.glEnable(GL_DEPTH_TEST);
+    f.glDisable(GL_CULL_FACE);
+    // Premultiplied "over": colour * opacity + destination * (1 - opacity).
+    f.glBlendFuncSeparate(GL_ONE, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+    for (const auto& [z, i] : order) {
+        useObject(program_, i);
+        f.glUniform1f(loc("uOpacity"), style_.object(i).opacity);
+        f.glBindVertexArray(drawn[i].vao);
+        // Its nearest surface into the depth buffer, then only that surface blended.
+        f.glDisable(GL_BLEND);
+        f.glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+        f.glDepthMask(GL_TRUE);
+        f.glDepthFunc(GL_LESS);
+        f.glDrawElements(GL_TRIANGLES, drawn[i].indexCount, GL_UNSIGNED_INT, nullptr);
+        f.glEnable(GL_BLEND);
+        f.glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        f.glDepthMask(GL_FALSE);
+        f.glDepthFunc(GL_LEQUAL);
+        f.glDrawElements(GL_TRIANGLES, drawn[i].indexCount, GL_UNSIGNED_INT, nullptr);
+    }
+    f.glBindVertexArray(0);
+    unbindMaterial();
+    f.glDisable(GL_BLEND);
+    f.glDepthMask(GL_TRUE);
+    f.glDepthFunc(GL_LESS);
+    throwOnGlError(f, "drawing translucent objects");
+}
+
 void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
     auto& f = gl();
     if (gbufferProgram_ == 0) {
@@ -677,7 +988,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
     if (meshes_.empty()) {
         return;
     }
-    if (!scalarsUploadedForArray_ || uploadedArray_ != style_.array) {
+    if (scalarsStale()) {
         uploadScalars();
     }
     const glm::mat4 view = camera.viewMatrix();
@@ -695,16 +1006,17 @@ void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
-    f.glUniform1i(loc("uUseArray"), style_.array.empty() ? 0 : 1);
+    const GLint useArray = loc("uUseArray");
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
     const std::vector<GpuMesh>& drawn =
         preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_;
     for (std::size_t i = 0; i < drawn.size(); ++i) {
         f.glUniform1ui(objectId, id++);
-        if (!style_.visible(i)) {
-            continue;  // hidden: its id stays reserved
+        if (!style_.opaque(i)) {
+            continue;  // hidden or translucent: its id stays reserved
         }
+        f.glUniform1i(useArray, style_.arrayOf(i).empty() ? 0 : 1);
         f.glBindVertexArray(drawn[i].vao);
         f.glDrawElements(GL_TRIANGLES, drawn[i].indexCount, GL_UNSIGNED_INT, nullptr);
     }

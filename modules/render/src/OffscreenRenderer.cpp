@@ -4,6 +4,7 @@
 #include <QGuiApplication>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QOpenGLFunctions_4_1_Core>
 #include <QOpenGLVersionFunctionsFactory>
 #include <QSurfaceFormat>
@@ -11,6 +12,7 @@
 #include <string>
 
 #include "vv/core/Error.h"
+#include "vv/render/GlResources.h"
 #include "vv/render/LegendPainter.h"
 
 namespace vv::render {
@@ -52,19 +54,34 @@ class CurrentContext {
 
 }  // namespace
 
-OffscreenRenderer::OffscreenRenderer() {
+std::unique_ptr<QOffscreenSurface> OffscreenRenderer::createSurface() {
     if (QGuiApplication::instance() == nullptr ||
         qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
         throw RenderError("offscreen rendering needs a QGuiApplication");
     }
-    const QSurfaceFormat format = requestedFormat();
-    surface_ = std::make_unique<QOffscreenSurface>();
-    surface_->setFormat(format);
-    surface_->create();
-    if (!surface_->isValid()) {
+    auto surface = std::make_unique<QOffscreenSurface>();
+    surface->setFormat(requestedFormat());
+    surface->create();
+    if (!surface->isValid()) {
         throw RenderError("no OpenGL 4.1 context: cannot create an offscreen surface (platform '" +
                           QGuiApplication::platformName().toStdString() + "')");
     }
+    return surface;
+}
+
+OffscreenRenderer::OffscreenRenderer() : ownSurface_(createSurface()), surface_(ownSurface_.get()) {
+    createContext();
+}
+
+OffscreenRenderer::OffscreenRenderer(QOffscreenSurface& surface) : surface_(&surface) {
+    if (QGuiApplication::instance() == nullptr) {
+        throw RenderError("offscreen rendering needs a QGuiApplication");
+    }
+    createContext();
+}
+
+void OffscreenRenderer::createContext() {
+    const QSurfaceFormat format = requestedFormat();
     context_ = std::make_unique<QOpenGLContext>();
     context_->setFormat(format);
     if (!context_->create()) {
@@ -85,14 +102,14 @@ OffscreenRenderer::OffscreenRenderer() {
 }
 
 OffscreenRenderer::~OffscreenRenderer() {
-    if (context_ && surface_ && renderer_ && context_->makeCurrent(surface_.get())) {
+    if (context_ && surface_ != nullptr && renderer_ && context_->makeCurrent(surface_)) {
         output_.reset();
         renderer_->release();
         context_->doneCurrent();
     }
     renderer_.reset();
     context_.reset();
-    surface_.reset();
+    ownSurface_.reset();
 }
 
 const std::vector<PassInfo>& OffscreenRenderer::lastPasses() const noexcept {
@@ -108,14 +125,106 @@ const VssFrameStatus& OffscreenRenderer::vssStatus() const noexcept {
     return renderer_->vssStatus();
 }
 
-Image<float> OffscreenRenderer::lastLinearDepth() const {
-    const Image<float>& glOrder = renderer_->lastSolvedDepth();
+namespace {
+
+/// `glOrder` (bottom row first) with row 0 on top, like the image.
+Image<float> topRowFirst(const Image<float>& glOrder) {
     Image<float> out(glOrder.width(), glOrder.height());
     for (int y = 0; y < glOrder.height(); ++y) {
         std::copy(glOrder.row(y), glOrder.row(y) + glOrder.width(),
                   out.row(glOrder.height() - 1 - y));
     }
     return out;
+}
+
+void checkSize(const OffscreenOptions& options) {
+    if (options.width < 1 || options.height < 1 || options.width > kMaxSize ||
+        options.height > kMaxSize) {
+        throw InvalidArgumentError("image size must be within 1..16384 pixels per side, got " +
+                                   std::to_string(options.width) + "x" +
+                                   std::to_string(options.height));
+    }
+}
+
+FrameSettings frameSettings(const OffscreenOptions& options) {
+    FrameSettings settings;
+    settings.background = options.background;
+    settings.vss = options.vss;
+    settings.cue = options.cue;
+    settings.ao = options.ao;
+    settings.antialiasing = options.antialiasing;
+    return settings;
+}
+
+}  // namespace
+
+Image<float> OffscreenRenderer::lastLinearDepth() const {
+    return topRowFirst(renderer_->lastSolvedDepth());
+}
+
+Camera OffscreenRenderer::cameraFor(const io::Scene& scene, const OffscreenOptions& options) {
+    Aabb bounds = scene.bounds();
+    if (options.volume && !options.volume->empty()) {
+        bounds.extend(options.volume->worldBounds());
+    }
+    Camera camera = options.camera.value_or(Camera());
+    if (camera.window()) {
+        const PixelRect& window = *camera.window();
+        if (window.width != options.width || window.height != options.height) {
+            throw InvalidArgumentError("the camera's window is " + std::to_string(window.width) +
+                                       "x" + std::to_string(window.height) + ", the image " +
+                                       std::to_string(options.width) + "x" +
+                                       std::to_string(options.height));
+        }
+    } else {
+        camera.setViewport(options.width, options.height);
+    }
+    if (!options.camera) {
+        camera.fit(bounds);
+    } else {
+        camera.setSceneBounds(bounds);
+    }
+    return camera;
+}
+
+Camera OffscreenRenderer::setUpScene(const io::Scene& scene, const OffscreenOptions& options) {
+    const Camera camera = cameraFor(scene, options);
+    // The shared pointer does not own the scene: it only lives for this call.
+    const std::shared_ptr<const io::Scene> view(std::shared_ptr<const io::Scene>(), &scene);
+    MeshRenderer& meshes = renderer_->meshRenderer();
+    meshes.setScene(view);
+    meshes.setStyle(options.style);
+    renderer_->setSceneRevision(sceneFingerprint(scene));
+    // Volume depth source: ray cast after the meshes; its box joins the bounds.
+    renderer_->setVolume(options.volume, options.isoValue);
+    return camera;
+}
+
+Image<float> OffscreenRenderer::renderDepth(const io::Scene& scene,
+                                            const OffscreenOptions& options) {
+    checkSize(options);
+    CurrentContext current(*context_, *surface_);
+    const Camera camera = setUpScene(scene, options);
+    Image<float> depth;
+    try {
+        depth = renderer_->renderDepth(camera, frameSettings(options),
+                                       FrameTarget{0, options.width, options.height});
+    } catch (...) {
+        renderer_->meshRenderer().setScene(nullptr);
+        throw;
+    }
+    renderer_->meshRenderer().setScene(nullptr);
+    return topRowFirst(depth);
+}
+
+void OffscreenRenderer::setExternalVss(std::optional<ExternalVss> external) {
+    renderer_->setExternalVss(std::move(external));
+}
+
+void OffscreenRenderer::clearCache() {
+    CurrentContext current(*context_, *surface_);
+    output_.reset();
+    renderer_->clearCache();
 }
 
 const std::string& OffscreenRenderer::lastGraphText() const noexcept {
@@ -127,13 +236,13 @@ std::vector<GlPassTiming> OffscreenRenderer::lastTimings() {
     return renderer_->lastTimings();
 }
 
+int OffscreenRenderer::maxRenderSide() {
+    CurrentContext current(*context_, *surface_);
+    return render::maxRenderSide(*context_->functions());
+}
+
 QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions& options) {
-    if (options.width < 1 || options.height < 1 || options.width > kMaxSize ||
-        options.height > kMaxSize) {
-        throw InvalidArgumentError("image size must be within 1..16384 pixels per side, got " +
-                                   std::to_string(options.width) + "x" +
-                                   std::to_string(options.height));
-    }
+    checkSize(options);
     CurrentContext current(*context_, *surface_);
     auto* gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_1_Core>(context_.get());
     if (gl == nullptr) {
@@ -152,33 +261,9 @@ QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions&
         output_ = std::make_shared<GlTexture>(*gl, descriptor);
     }
 
-    // The shared pointer does not own the scene: it only lives for this call.
-    const std::shared_ptr<const io::Scene> view(std::shared_ptr<const io::Scene>(), &scene);
+    const Camera camera = setUpScene(scene, options);
     MeshRenderer& meshes = renderer_->meshRenderer();
-    meshes.setScene(view);
-    meshes.setStyle(options.style);
-    renderer_->setSceneRevision(sceneFingerprint(scene));
-    // Volume depth source: ray cast after the meshes; its box joins the bounds.
-    renderer_->setVolume(options.volume, options.isoValue);
-    Aabb bounds = scene.bounds();
-    if (options.volume && !options.volume->empty()) {
-        bounds.extend(options.volume->worldBounds());
-    }
-
-    Camera camera = options.camera.value_or(Camera());
-    camera.setViewport(options.width, options.height);
-    if (!options.camera) {
-        camera.fit(bounds);
-    } else {
-        camera.setSceneBounds(bounds);
-    }
-
-    FrameSettings settings;
-    settings.background = options.background;
-    settings.vss = options.vss;
-    settings.cue = options.cue;
-    settings.ao = options.ao;
-    settings.antialiasing = options.antialiasing;
+    const FrameSettings settings = frameSettings(options);
     try {
         renderer_->render(camera, settings,
                           FrameTarget{output_->framebuffer(), options.width, options.height});

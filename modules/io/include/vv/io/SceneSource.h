@@ -5,6 +5,7 @@
 // DICOMDIR or a file) whose series is segmented into vessel surfaces.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -36,6 +37,9 @@ struct SceneSourceReport {
     std::size_t componentsKept = 0;
     std::size_t boneComponents = 0;
     std::vector<DicomWarning> warnings;
+    /// The loaded volume (fromVolume), kept so that it can be segmented
+    /// again without reading the files (the GUI's Segmentation panel).
+    std::shared_ptr<const Volume> volume;
 };
 
 /// Loads `path` as a scene: a mesh file (loadMesh(), by extension) gives one

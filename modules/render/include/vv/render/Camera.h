@@ -3,8 +3,10 @@
 
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <optional>
 
 #include "vv/core/Math.h"
+#include "vv/render/TileProjection.h"
 
 namespace vv::render {
 
@@ -83,6 +85,15 @@ class Camera {
     [[nodiscard]] glm::mat4 viewMatrix() const noexcept;
     /// OpenGL-style perspective projection (clip z in [-w, w]).
     [[nodiscard]] glm::mat4 projectionMatrix() const noexcept;
+    /// Tiled rendering: restricts projectionMatrix() to the rectangle `window`
+    /// of the viewport (an off-axis sub-frustum, tileProjection()), so that a
+    /// frame of window.width x window.height pixels shows exactly those pixels
+    /// of the full view. Nothing else (fit, gestures, near / far) changes.
+    /// Throws InvalidArgumentError for a width or height below 1.
+    void setWindow(const PixelRect& window);
+    void clearWindow() noexcept { window_.reset(); }
+    /// The window set by setWindow(); nullopt = the whole viewport.
+    [[nodiscard]] const std::optional<PixelRect>& window() const noexcept { return window_; }
     /// Near and far plane distances from the eye, derived from the scene bounds.
     [[nodiscard]] float nearPlane() const noexcept;
     [[nodiscard]] float farPlane() const noexcept;
@@ -101,6 +112,7 @@ class Camera {
     glm::vec3 target_{0.0F};
     float distance_ = 4.0F;
     glm::quat rotation_{1.0F, 0.0F, 0.0F, 0.0F};
+    std::optional<PixelRect> window_;  ///< tiled rendering: the part of the viewport drawn
 };
 
 }  // namespace vv::render

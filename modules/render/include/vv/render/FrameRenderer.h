@@ -134,6 +134,26 @@ struct ProbeSample {
 };
 // --- end probe -------------------------------------------------------------
 
+/// A VSS solved outside the renderer for a whole frame, for frames drawn in
+/// parts (tiled export, report::renderView): the solve of the full image's
+/// depth, cut to the part being drawn, plus the full frame's ranges, so that
+/// every part shades, occludes and cues alike (FrameRenderer::setExternalVss).
+struct ExternalVss {
+    /// Must change whenever anything below changes: the passes that use it
+    /// re-run when it does (the render graph caches by it).
+    std::uint64_t version = 0;
+    /// z' on void pixels, z on vessel pixels, NaN = no VSS, at the frame's
+    /// render size in GL row order (bottom row first); empty = no VSS.
+    Image<float> height;
+    double dmin = 0.0;  ///< the range z is normalised over, scene units
+    double dmax = 0.0;
+    double solveMilliseconds = 0.0;
+    double errorBound = std::numeric_limits<double>::quiet_NaN();
+    /// The whole frame's visible vessel depth range (what a vessel cue uses
+    /// without a VSS); nullopt when no vessel is visible.
+    std::optional<std::pair<double, double>> visibleRange;
+};
+
 /// A content hash of a scene's geometry (positions and indices of every
 /// mesh), for the render graph's caching when a scene object is not kept.
 [[nodiscard]] std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept;
@@ -159,8 +179,13 @@ struct ProbeSample {
 ///  - "ssao", "ao-blur" (AoSettings::enabled): occlusion from the linear
 ///    depth and the VSS height, then a depth-aware blur; cached while depth,
 ///    VSS and radius stay (the colour scale does not re-run them).
-///  - "composite": vessels over the VSS over the background, darkened by the
-///    AO, into the target (or, with anti-aliasing, into a texture).
+///  - "translucent": objects with opacity below 1 (ObjectStyle::opacity),
+///    which the G-buffer leaves out, drawn forward back to front over a copy
+///    of the opaque depth into a premultiplied layer
+///    (MeshRenderer::drawTranslucent); culled when no object is translucent.
+///  - "composite": the translucent layer over the vessels over the VSS over
+///    the background, darkened by the AO, into the target (or, with
+///    anti-aliasing, into a texture).
 ///  - "fxaa" (FrameSettings::antialiasing): FXAA into the target. The
 ///    G-buffer stays single-sampled, so the solve's depth is unchanged.
 ///
@@ -224,6 +249,19 @@ class FrameRenderer {
     /// Throws RenderError when GL fails, InvalidArgumentError for bad solver
     /// options (p, tolerance), and what the graph throws.
     void render(const Camera& camera, const FrameSettings& settings, const FrameTarget& target);
+
+    /// Runs only the geometry pass of this view (cached like render()'s) and
+    /// returns the G-buffer's linear depth at the render size: GL row order
+    /// (bottom row first), +Inf on background. Shades nothing; the target is
+    /// left untouched but bound. Throws like render().
+    [[nodiscard]] Image<float> renderDepth(const Camera& camera, const FrameSettings& settings,
+                                           const FrameTarget& target);
+
+    /// Frames drawn while `external` is set show its VSS instead of solving
+    /// one (its height must have the render size: else render() throws
+    /// InvalidArgumentError) and take a vessel cue's range from it;
+    /// nullopt = solve as usual. Needs no GL context.
+    void setExternalVss(std::optional<ExternalVss> external);
 
     /// Asynchronous mode with the VSS on: runs only the geometry pass of this
     /// view and submits its solve, shading nothing (the target is left
@@ -310,8 +348,11 @@ class FrameRenderer {
     std::uint64_t volumeRevision_ = 0;
     std::unique_ptr<Impl> impl_;
     SolveMode mode_ = SolveMode::Synchronous;
+    /// What renderGraph() runs: the whole frame, up to the solve
+    /// (prepareSolve) or the geometry only (renderDepth).
+    enum class GraphMode { Frame, SolveOnly, DepthOnly };
     void renderGraph(const Camera& camera, const FrameSettings& settings, const FrameTarget& target,
-                     bool solveOnly);
+                     GraphMode mode);
     /// The scene revision, odd when `settings` draw the simplified geometry.
     [[nodiscard]] std::uint64_t geometryRevision(const FrameSettings& settings) const noexcept;
 

@@ -13,6 +13,7 @@
 #include "vv/render/RenderGraphResources.h"
 
 class QOpenGLContext;
+class QOpenGLFunctions;
 class QOpenGLFunctions_4_1_Core;
 
 namespace vv::render {
@@ -136,6 +137,10 @@ void checkGlError(QOpenGLFunctions_4_1_Core& gl, std::string_view what);
 /// The OpenGL 4.1 core functions of the current context. Throws RenderError
 /// when no context is current or it is not OpenGL >= 4.1 core.
 [[nodiscard]] QOpenGLFunctions_4_1_Core& currentGl41();
+
+/// The largest width and height the current context renders in one piece:
+/// min(GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE, GL_MAX_VIEWPORT_DIMS).
+[[nodiscard]] int maxRenderSide(QOpenGLFunctions& gl);
 
 }  // namespace vv::render
 

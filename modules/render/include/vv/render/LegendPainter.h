@@ -45,8 +45,14 @@ struct ParameterLegend {
 /// The legends a frame shows; each only when its scale is used.
 struct Legends {
     std::optional<DepthLegend> depth;
+    /// The first array shown (the scene's array when an object shows it).
     std::optional<ParameterLegend> parameter;
-    [[nodiscard]] bool empty() const noexcept { return !depth && !parameter; }
+    /// One more per further array that objects show (ObjectStyle::array),
+    /// stacked above `parameter`; empty when `parameter` is absent.
+    std::vector<ParameterLegend> moreParameters;
+    [[nodiscard]] bool empty() const noexcept {
+        return !depth && !parameter && moreParameters.empty();
+    }
 };
 
 /// One labelled tick of a legend bar.
@@ -83,7 +89,9 @@ struct LegendTick {
 /// colours by a depth scale (its scale over `cueRange`); the parameter legend
 /// when an array is shown (`range` set) and no cue replaces its colours
 /// (vessel chromadepth / pseudo-chromadepth). The unit is the first mesh's
-/// that has the array.
+/// that has the array. With a scene, one parameter legend per array that
+/// visible objects show (shownArrays(): the scene's array over `range`,
+/// others over objectArrayRange()), none when no visible object shows one.
 [[nodiscard]] Legends legendsFor(const io::Scene* scene, const MeshStyle& style,
                                  const std::optional<std::pair<float, float>>& range,
                                  const FrameSettings& settings, const VssFrameStatus& status,
@@ -95,6 +103,8 @@ struct LegendTick {
 struct LegendLayout {
     QRectF depth;      ///< null when there is no depth legend
     QRectF parameter;  ///< null when there is no parameter legend
+    /// Legends::moreParameters, each above the one before.
+    std::vector<QRectF> moreParameters;
 };
 
 /// The boxes paintLegends() covers in `area`.

@@ -21,6 +21,37 @@ class QOpenGLContext;
 
 namespace vv::render {
 
+/// The key light's direction in view space, in degrees: `azimuth` turns it
+/// about the view's up axis (0 = from the eye, > 0 = from the right, within
+/// [-180, 180]), `elevation` lifts it above the view's horizontal plane
+/// (> 0 = from above, within [-90, 90]). The default is the headlight-like
+/// key light a little above and left of the eye.
+struct LightAngles {
+    float azimuth = -14.036243F;
+    float elevation = 18.754912F;
+    bool operator==(const LightAngles&) const = default;
+};
+
+/// The unit vector towards the light: (cos e sin a, sin e, cos e cos a).
+/// Throws InvalidArgumentError for angles that are not finite or out of range.
+[[nodiscard]] glm::vec3 lightDirection(const LightAngles& angles);
+
+/// What one object (mesh) of a scene looks like, beyond the scene's style.
+struct ObjectStyle {
+    /// Neutral material colour of this object (sRGB); nullopt = MeshStyle::vesselColor.
+    std::optional<glm::vec3> color;
+    /// In [0, 1]: 1 = opaque; below 1 the object is drawn in the "translucent"
+    /// pass over the composited frame, not into the G-buffer (the VSS and the
+    /// AO see through it); 0 = not drawn, like a hidden object.
+    float opacity = 1.0F;
+    /// nullopt = the scene's array (MeshStyle::array); "" = none (the neutral
+    /// material); else the point array of that name (a mesh lacking it shows
+    /// no-data). An array other than the scene's spans its own automatic
+    /// range over the objects that show it, through the same colour map.
+    std::optional<std::string> array;
+    bool operator==(const ObjectStyle&) const = default;
+};
+
 /// How meshes are shaded. Colours are sRGB in [0, 1]; lighting is applied to
 /// them directly (no linearisation), so a surface facing the light shows the
 /// colour map's colours unchanged.
@@ -41,16 +72,48 @@ struct MeshStyle {
     std::optional<glm::vec3> noDataColor;
     /// Title of the parameter legend; empty = "name (unit)" of the array.
     std::string legendTitle;
-    /// Blinn-Phong with a headlight-like key light and ambient; false draws
+    /// Blinn-Phong with the key light (`light`) and ambient; false draws
     /// flat, unlit colours (exact colour-map colours, for checks and pickers).
     bool lighting = true;
     /// Indices (into Scene::meshes) of meshes not drawn; out-of-range
     /// indices are ignored. Hidden meshes keep their object ids.
     std::vector<std::size_t> hidden;
+    /// Per object (index into Scene::meshes) colour, opacity and array;
+    /// objects beyond the end use ObjectStyle{}.
+    std::vector<ObjectStyle> objects;
+    /// The key light of the vessels, the VSS and the translucent objects.
+    LightAngles light;
 
-    /// True unless `mesh` is listed in `hidden`.
+    /// True unless `mesh` is listed in `hidden` or has opacity 0.
     [[nodiscard]] bool visible(std::size_t mesh) const noexcept;
+    /// The style of `mesh` (a default one beyond `objects`).
+    [[nodiscard]] const ObjectStyle& object(std::size_t mesh) const noexcept;
+    /// The array `mesh` shows: its own choice, else `array`; empty = none.
+    [[nodiscard]] const std::string& arrayOf(std::size_t mesh) const noexcept;
+    /// Visible and with opacity below 1: drawn in the translucent pass.
+    [[nodiscard]] bool translucent(std::size_t mesh) const noexcept;
+    /// Visible and opaque: drawn into the G-buffer.
+    [[nodiscard]] bool opaque(std::size_t mesh) const noexcept;
+    /// A hash of what the geometry pass writes: the array of each object and
+    /// which objects are drawn opaque (for the render graph's cache).
+    [[nodiscard]] std::uint64_t geometryKey() const noexcept;
 };
+
+/// Throws InvalidArgumentError unless every object's opacity is within
+/// [0, 1] and its colour within [0, 1], and the light angles are valid.
+void validateStyle(const MeshStyle& style);
+
+/// The arrays that visible objects of `scene` show and have (a mesh without
+/// its array shows no-data), without duplicates: the
+/// scene's array (style.array) first when one shows it, then the others in
+/// the order of the objects.
+[[nodiscard]] std::vector<std::string> shownArrays(const io::Scene& scene, const MeshStyle& style);
+
+/// The automatic range of an array other than the scene's: its finite range
+/// over the objects that show it (arrayOf); nullopt when none has a finite value.
+[[nodiscard]] std::optional<std::pair<float, float>> objectArrayRange(const io::Scene& scene,
+                                                                      const MeshStyle& style,
+                                                                      const std::string& name);
 
 /// A depth cue on the vessel surface itself, the comparison techniques for
 /// the VSS (issue 4, pass 5). Depth is normalised to t = (d - dmin) /
@@ -88,9 +151,10 @@ struct VesselCueParameters {
     float fresnelExponent = 1.0F;  ///< Fresnel: k in (1 - |n.v|)^k
 };
 
-/// The light shared by the vessels and the VSS: a key light a little above
-/// and left of the eye (a headlight that still shows curvature on surfaces
-/// facing the viewer) plus ambient, Blinn-Phong. Directions in view space.
+/// The light shared by the vessels and the VSS: a key light (by default a
+/// little above and left of the eye: a headlight that still shows curvature
+/// on surfaces facing the viewer; MeshStyle::light moves it) plus ambient,
+/// Blinn-Phong. Directions in view space.
 struct Lighting {
     glm::vec3 direction{0.0F, 0.0F, 1.0F};  ///< towards the light, unit length
     float ambient = 0.30F;
@@ -99,8 +163,10 @@ struct Lighting {
     float shininess = 48.0F;
 };
 
-/// The one Lighting every pass uses.
+/// The default Lighting (LightAngles{}).
 [[nodiscard]] const Lighting& sceneLighting() noexcept;
+/// sceneLighting() with the key light at `angles` (throws like lightDirection()).
+[[nodiscard]] Lighting lightingFor(const LightAngles& angles);
 
 /// The array to show by default: "wss" (wall shear stress) when some mesh
 /// has a point array of that name (ignoring case; also "wall_shear_stress",
@@ -167,6 +233,9 @@ class MeshRenderer {
     [[nodiscard]] std::optional<std::pair<float, float>> effectiveRange() const noexcept {
         return effectiveRange_;
     }
+    /// The range the colour map spans on object `mesh`: effectiveRange() for
+    /// the scene's array, objectArrayRange() for another; nullopt for none.
+    [[nodiscard]] std::optional<std::pair<float, float>> objectRange(std::size_t mesh) const;
 
     /// How draw() uses the depth buffer.
     enum class DepthMode {
@@ -214,6 +283,19 @@ class MeshRenderer {
     void shadeGBuffer(const Camera& camera, const GBufferTextures& gbuffer,
                       const VesselCueParameters& cue = {});
 
+    /// The translucent pass: draws the visible objects with opacity below 1
+    /// into the currently bound framebuffer, premultiplied (colour * opacity,
+    /// opacity) over what it holds, back to front by the view depth of each
+    /// object's bounding-box centre. Each object first writes its depth
+    /// (colour masked), then draws its nearest surface with GL_LEQUAL, so an
+    /// object shows one layer of itself; the bound depth buffer must hold the
+    /// opaque depth (a copy: it is written). Same material, light and
+    /// parameter colours as draw(). Does not clear. Throws like draw().
+    void drawTranslucent(const Camera& camera, const VesselCueParameters& cue = {},
+                         bool preview = false);
+    /// True when some visible object has opacity below 1.
+    [[nodiscard]] bool hasTranslucent() const noexcept;
+
     /// Deletes all GL objects; the context of initialize() must be current.
     /// Safe to call more than once.
     void release() noexcept;
@@ -228,6 +310,12 @@ class MeshRenderer {
     /// Checks and uploads `scene`'s meshes into `target` (scalars left for uploadScalars()).
     void uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& target);
     void uploadScalars();
+    /// True when the uploaded per-vertex values are not those of the style's arrays.
+    [[nodiscard]] bool scalarsStale() const noexcept;
+    /// Uploads the per-object table (colour, array on/off, range, opacity by object id).
+    void uploadObjects();
+    /// Sets the per-object material uniforms of `program` for mesh `index`.
+    void useObject(unsigned program, std::size_t index);
     void uploadLut();
     void uploadCueLut(colormaps::DepthScale scale);
     /// Uploads what the material needs (scalars, LUTs) if stale.
@@ -252,7 +340,13 @@ class MeshRenderer {
     MeshStyle style_;
     std::optional<std::pair<float, float>> effectiveRange_;
     bool scalarsUploadedForArray_ = false;
-    std::string uploadedArray_;
+    /// The array each mesh's uploaded values come from.
+    std::vector<std::string> uploadedArrays_;
+    /// Ranges of the arrays objects show besides the scene's (objectArrayRange).
+    std::vector<std::pair<std::string, std::optional<std::pair<float, float>>>> objectRanges_;
+    unsigned objectTexture_ = 0;
+    bool objectsStale_ = true;
+    Lighting lighting_;
     std::optional<colormaps::ColorMap> uploadedMap_;
     int uploadedBins_ = 0;
     unsigned cueLutTexture_ = 0;

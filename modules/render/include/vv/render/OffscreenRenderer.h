@@ -26,7 +26,9 @@ struct OffscreenOptions {
     glm::vec3 background{0.13F, 0.14F, 0.16F};
     MeshStyle style;
     /// The view; nullopt = the default orientation fitted to the scene.
-    /// A given camera gets its viewport set to width x height.
+    /// A given camera gets its viewport set to width x height, unless it has
+    /// a window (Camera::setWindow: one tile of a larger image): then its
+    /// viewport stays and the window must be width x height.
     std::optional<Camera> camera;
     /// Multisampling samples: kept for compatibility and ignored, because the
     /// frame's G-buffer is not multisampled (the VSS needs one depth per
@@ -61,15 +63,31 @@ struct OffscreenOptions {
 /// second render of the same scene and view re-runs only what changed
 /// (e.g. a new colour scale re-shades but does not re-solve).
 ///
-/// Needs a QGuiApplication and must be created, used and destroyed on the
-/// thread that owns it (the GUI thread). With Qt's "offscreen" platform
-/// plugin there may be no OpenGL at all; use xcb (under Xvfb when headless).
+/// Needs a QGuiApplication. A renderer is created, used and destroyed on one
+/// thread: its OpenGL context belongs to that thread. The default
+/// constructor makes its own QOffscreenSurface, so it works on the GUI thread
+/// only (Qt creates and destroys surfaces there). To render on a worker
+/// thread, create the surface on the GUI thread with createSurface() and
+/// construct the renderer on the worker with it (the context is created and
+/// made current there; Qt allows a surface to be used from another thread).
+/// With Qt's "offscreen" platform plugin there may be no OpenGL at all; use
+/// xcb (under Xvfb when headless).
 class OffscreenRenderer {
   public:
-    /// Creates the context. Throws RenderError when there is no
-    /// QGuiApplication or no OpenGL 4.1 core context can be made (the message
-    /// says so and what was obtained instead), or the shaders fail.
+    /// Creates the surface and the context (on the GUI thread). Throws
+    /// RenderError when there is no QGuiApplication or no OpenGL 4.1 core
+    /// context can be made (the message says so and what was obtained
+    /// instead), or the shaders fail.
     OffscreenRenderer();
+    /// Creates the context on the calling thread (may be a worker) for
+    /// `surface`, which was made by createSurface() on the GUI thread, is not
+    /// owned, and must outlive the renderer (destroy it on the GUI thread
+    /// afterwards). Throws as the default constructor.
+    explicit OffscreenRenderer(QOffscreenSurface& surface);
+    /// A surface in the format the renderer needs. Call on the GUI thread.
+    /// Throws RenderError when there is no QGuiApplication or the surface
+    /// cannot be created.
+    [[nodiscard]] static std::unique_ptr<QOffscreenSurface> createSurface();
     ~OffscreenRenderer();
     OffscreenRenderer(const OffscreenRenderer&) = delete;
     OffscreenRenderer& operator=(const OffscreenRenderer&) = delete;
@@ -79,6 +97,22 @@ class OffscreenRenderer {
     /// QImage::Format_RGB32. Throws InvalidArgumentError for a size out of
     /// range and RenderError when GL fails (framebuffer, out of memory).
     [[nodiscard]] QImage render(const io::Scene& scene, const OffscreenOptions& options);
+
+    /// Renders only the G-buffer of `scene` (like render()) and returns its
+    /// linear depth: width x height, row 0 = top, +Inf on background. Throws
+    /// like render().
+    [[nodiscard]] Image<float> renderDepth(const io::Scene& scene, const OffscreenOptions& options);
+
+    /// The camera render() draws `scene` with for `options`. Throws
+    /// InvalidArgumentError when the camera's window does not match the size.
+    [[nodiscard]] static Camera cameraFor(const io::Scene& scene, const OffscreenOptions& options);
+
+    /// The following renders show `external`'s VSS instead of solving one
+    /// (FrameRenderer::setExternalVss); nullopt = solve as usual.
+    void setExternalVss(std::optional<ExternalVss> external);
+
+    /// Forgets the cached passes and frees their textures (GPU memory).
+    void clearCache();
 
     /// The value range the colour map spanned in the last render(); nullopt
     /// when no array was shown.
@@ -106,8 +140,21 @@ class OffscreenRenderer {
     /// "renderer / OpenGL version" of the context.
     [[nodiscard]] const std::string& glDescription() const noexcept { return description_; }
 
+    /// The largest width and height this context renders in one piece:
+    /// min(GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE, GL_MAX_VIEWPORT_DIMS),
+    /// queried in the renderer's own context (so on the thread that uses it;
+    /// no surface is created).
+    [[nodiscard]] int maxRenderSide();
+
   private:
-    std::unique_ptr<QOffscreenSurface> surface_;
+    /// Creates the context on `surface_` and the frame renderer.
+    void createContext();
+    /// Hands `scene` and the options' style and volume to the frame renderer
+    /// (context current); returns the camera.
+    Camera setUpScene(const io::Scene& scene, const OffscreenOptions& options);
+
+    std::unique_ptr<QOffscreenSurface> ownSurface_;  ///< null with a borrowed surface
+    QOffscreenSurface* surface_ = nullptr;
     std::unique_ptr<QOpenGLContext> context_;
     std::unique_ptr<FrameRenderer> renderer_;
     std::shared_ptr<GlTexture> output_;

@@ -6,6 +6,7 @@
 #include <optional>
 #include <utility>
 
+#include "vv/core/Progress.h"
 #include "vv/io/Mesh.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
@@ -30,7 +31,20 @@ struct ViewExportOptions {
     /// partly covered pixels (anti-aliased edges, a VSS with opacity < 1, fog)
     /// get the matching partial alpha.
     bool transparentBackground = false;
+    /// The largest side, in pixels, of one rendered piece. Larger images are
+    /// rendered in tiles (see renderView()). 0 = automatic: in one piece when
+    /// the frame fits maxRenderSide() and kAutoTileBudgetBytes of GPU memory,
+    /// else in tiles of kAutoTileSide. Else at least kMinTileSide.
+    int maxTileSide = 0;
 };
+
+/// Automatic tiling: the GPU memory one piece may take (the frame's textures,
+/// about kFrameBytesPerPixel per pixel), and the tile side beyond it.
+inline constexpr long long kAutoTileBudgetBytes = 1LL << 30;
+inline constexpr long long kFrameBytesPerPixel = 56;
+inline constexpr int kAutoTileSide = 4096;
+/// The smallest maxTileSide accepted.
+inline constexpr int kMinTileSide = 64;
 
 /// A rendered view and what it shows.
 struct RenderedView {
@@ -42,22 +56,42 @@ struct RenderedView {
     std::optional<std::pair<float, float>> range;
     /// The VSS of the frame (shown, dmin / dmax, solve time).
     render::VssFrameStatus vss;
+    /// How many pieces the image was rendered in (1 = one piece).
+    int tiles = 1;
 };
 
 /// The largest width and height this machine's OpenGL can render offscreen in
 /// one piece: min(GL_MAX_TEXTURE_SIZE, GL_MAX_RENDERBUFFER_SIZE,
-/// GL_MAX_VIEWPORT_DIMS), from a probe context. Needs a QGuiApplication.
+/// GL_MAX_VIEWPORT_DIMS), from a probe context made on the calling thread (a
+/// QOffscreenSurface: call it on the GUI thread; renderView() asks its
+/// renderer instead, OffscreenRenderer::maxRenderSide()). Needs a QGuiApplication.
 /// Throws RenderError when no OpenGL context can be made.
 [[nodiscard]] int maxRenderSide();
 
-/// Renders the view with `renderer` (one frame; the VSS is solved once on the
-/// full frame's depth). Sizes up to 8K (kMaxExportSide per side,
+/// Renders the view with `renderer`. Sizes up to 8K (kMaxExportSide per side,
 /// kMaxExportPixels in all) are accepted.
-/// Throws InvalidArgumentError for a size out of that range, RenderError when
-/// the size exceeds what this GPU renders in one piece (maxRenderSide(); the
-/// message gives the limit) or GL fails.
+///
+/// In one piece when it fits (ViewExportOptions::maxTileSide,
+/// OffscreenRenderer::maxRenderSide());
+/// else, or when the automatic one-piece render fails with a RenderError (out
+/// of GPU memory, incomplete framebuffer), in tiles that give the same image:
+///  1. every tile's G-buffer depth (an off-axis sub-frustum of the same
+///     camera, render::tileProjection) is read back into the full image's
+///     depth;
+///  2. the VSS is solved once on that full depth (its depth range, the
+///     vessel cue's and the legends' come from the full frame);
+///  3. every tile is drawn with its cut of that solve (render::ExternalVss)
+///     and a guard band as wide as the screen-space passes reach (SSAO, its
+///     blur, VSS normals, FXAA; at most a quarter of the tile side), which is
+///     cropped away.
+/// The legends are painted on the whole image afterwards.
+/// `progress` gets the fraction done per tile and stops between tiles and
+/// inside the solve (CancelledError).
+/// Throws InvalidArgumentError for a size out of range or maxTileSide in
+/// 1..kMinTileSide-1 or negative, RenderError when GL fails, CancelledError.
 [[nodiscard]] RenderedView renderView(render::OffscreenRenderer& renderer, const io::Scene& scene,
-                                      const ViewExportOptions& options);
+                                      const ViewExportOptions& options,
+                                      const Progress& progress = {});
 
 /// Writes `image` as PNG to `path` atomically (temporary file in the target
 /// folder, then rename): on failure no partial file remains and an existing

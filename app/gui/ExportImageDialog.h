@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QSize>
+#include <QString>
+
+#include "gui/ExportWorker.h"
+
+class QCheckBox;
+class QComboBox;
+class QLineEdit;
+class QSpinBox;
+
+namespace vv::gui {
+
+class ViewerWidget;
+
+/// File > Export Image…: the current view (camera and every display setting
+/// of the viewer) as a PNG file at the view's size, a preset (1920 x 1080,
+/// 3840 x 2160, 7680 x 4320) or a custom size up to 8K
+/// (report::kMaxExportSide, report::kMaxExportPixels; larger sizes are
+/// refused with a message), optionally keeping the view's aspect ratio, with
+/// or without legends, on the background or transparent. accept() checks the
+/// fields (a message box says what is wrong; the dialog stays open), remembers
+/// the folder, and renders with report::renderView() on an ExportWorker
+/// (progress dialog with Cancel; written atomically; the outcome in the main
+/// window's status bar or a message box naming the file and the problem).
+class ExportImageDialog : public ExportDialog {
+    Q_OBJECT
+
+  public:
+    ExportImageDialog(const ViewerWidget& viewer, QWidget* parent = nullptr);
+
+    /// Size chooser items (item data = the preset's index here).
+    enum SizePreset { ViewSize = 0, FullHd, Uhd4k, Uhd8k, Custom };
+
+    [[nodiscard]] QLineEdit* fileEdit() const noexcept { return file_; }
+    [[nodiscard]] QComboBox* sizeChooser() const noexcept { return sizes_; }
+    [[nodiscard]] QSpinBox* widthBox() const noexcept { return width_; }
+    [[nodiscard]] QSpinBox* heightBox() const noexcept { return height_; }
+    [[nodiscard]] QCheckBox* keepAspectBox() const noexcept { return keepAspect_; }
+    [[nodiscard]] QCheckBox* legendsBox() const noexcept { return legends_; }
+    [[nodiscard]] QCheckBox* transparentBox() const noexcept { return transparent_; }
+
+    /// The size the fields ask for.
+    [[nodiscard]] QSize imageSize() const;
+    /// What is wrong with the fields (no file, size beyond 8K); empty when fine.
+    [[nodiscard]] QString problem() const override;
+
+  protected:
+    ExportWorker* startExport() override;
+
+  private:
+    void presetChosen();
+    void widthEdited();
+    void heightEdited();
+    [[nodiscard]] QSize viewSize() const;
+    [[nodiscard]] double viewAspect() const;
+
+    const ViewerWidget& viewer_;
+    QLineEdit* file_ = nullptr;
+    QComboBox* sizes_ = nullptr;
+    QSpinBox* width_ = nullptr;
+    QSpinBox* height_ = nullptr;
+    QCheckBox* keepAspect_ = nullptr;
+    QCheckBox* legends_ = nullptr;
+    QCheckBox* transparent_ = nullptr;
+};
+
+/// The folder exports were last written to (QSettings "export/folder"), else
+/// the user's pictures / home folder.
+[[nodiscard]] QString lastExportFolder();
+/// Remembers the folder of `file` for the next export dialog.
+void rememberExportFolder(const QString& file);
+
+}  // namespace vv::gui

@@ -1,0 +1,212 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/ExportWorker.h"
+
+#include <QMainWindow>
+#include <QMessageBox>
+#include <QOffscreenSurface>
+#include <QProgressDialog>
+#include <QStatusBar>
+#include <QTimer>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "gui/ViewerWidget.h"
+#include "vv/core/Error.h"
+
+namespace vv::gui {
+
+namespace {
+
+/// How long the status bar shows the outcome of an export (ms).
+constexpr int kStatusTimeoutMs = 15000;
+
+}  // namespace
+
+render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int width, int height) {
+    render::OffscreenOptions options;
+    options.width = width;
+    options.height = height;
+    options.background = viewer.background();
+    options.style = viewer.style();
+    options.vss = viewer.vssSettings();
+    options.vss.preview = false;  // the exact VSS, as the view shows once settled
+    options.cue = viewer.vesselCue();
+    options.ao = viewer.aoSettings();
+    options.antialiasing = true;  // the viewer always runs FXAA
+    options.legends = false;
+    options.camera = viewer.camera();
+    options.volume = viewer.volume();  // a ray-cast volume, when one is shown
+    options.isoValue = viewer.isoValue();
+    return options;
+}
+
+QSize viewPixelSize(const ViewerWidget& viewer) {
+    const qreal ratio = viewer.devicePixelRatioF();
+    return {std::max(1, static_cast<int>(std::lround(viewer.width() * ratio))),
+            std::max(1, static_cast<int>(std::lround(viewer.height() * ratio)))};
+}
+
+void showExportProblem(QWidget* parent, const QString& title, const QString& message) {
+    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, parent);
+    box->setObjectName(QStringLiteral("exportProblemBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+ExportWorker* ExportWorker::launch(QString description, Job job, QWidget* dialog) {
+    QWidget* owner = dialog->parentWidget() != nullptr ? dialog->parentWidget() : dialog;
+    auto* worker = new ExportWorker(std::move(description), std::move(job), owner);
+    if (auto* window = qobject_cast<QMainWindow*>(owner)) {
+        watch(worker, window);
+    } else {
+        connect(worker, &ExportWorker::finished, worker, &QObject::deleteLater);
+    }
+    worker->start();
+    return worker;
+}
+
+void ExportDialog::accept() {
+    const QString wrong = problem();
+    if (!wrong.isEmpty()) {
+        showExportProblem(this, windowTitle(), wrong);
+        return;
+    }
+    emit exportStarted(startExport());
+    QDialog::accept();
+}
+
+ExportWorker::ExportWorker(QString description, Job job, QObject* parent)
+    : QObject(parent), description_(std::move(description)), job_(std::move(job)) {}
+
+ExportWorker::~ExportWorker() {
+    thread_.request_stop();
+    if (thread_.joinable()) {
+        thread_.join();
+    }
+    surface_.reset();  // on the GUI thread, after the worker's context is gone
+}
+
+void ExportWorker::start() {
+    if (started_) {
+        return;
+    }
+    started_ = true;
+    running_ = true;
+    try {
+        surface_ = render::OffscreenRenderer::createSurface();
+    } catch (const vv::Error& e) {
+        const QString message = QString::fromStdString(e.what());
+        QTimer::singleShot(0, this, [this, message] { deliver(Outcome::Failed, message); });
+        return;
+    }
+    thread_ = std::jthread(
+        [this, surface = surface_.get()](const std::stop_token& stop) { run(*surface, stop); });
+}
+
+void ExportWorker::cancel() {
+    thread_.request_stop();
+}
+
+void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) {
+    // On the worker: touches only job_ (immutable while running) and emits
+    // signals, which reach the GUI thread queued.
+    // Throttled: a signal per 0.5 % or new stage (the engine may report from several threads).
+    std::mutex mutex;
+    int shownPermille = -1;
+    std::string shownStage;
+    const Progress progress(
+        [&](double fraction, std::string_view stage) {
+            const int permille =
+                static_cast<int>(std::lround(std::clamp(fraction, 0.0, 1.0) * 1000.0));
+            const std::lock_guard lock(mutex);
+            if (std::abs(permille - shownPermille) < 5 && stage == shownStage) {
+                return;
+            }
+            shownPermille = permille;
+            shownStage = stage;
+            emit progressChanged(permille / 1000.0, QString::fromStdString(shownStage));
+        },
+        stop);
+    Outcome outcome = Outcome::Failed;
+    QString message;
+    try {
+        render::OffscreenRenderer renderer(surface);
+        progress.throwIfCancelled();
+        message = job_(renderer, progress);
+        outcome = Outcome::Succeeded;
+    } catch (const CancelledError&) {
+        outcome = Outcome::Cancelled;
+    } catch (const std::exception& e) {
+        message = QString::fromStdString(e.what());
+    } catch (...) {
+        message = tr("unexpected error");
+    }
+    QMetaObject::invokeMethod(
+        this, [this, outcome, message] { deliver(outcome, message); }, Qt::QueuedConnection);
+}
+
+void ExportWorker::deliver(Outcome outcome, const QString& message) {
+    running_ = false;
+    switch (outcome) {
+        case Outcome::Succeeded:
+            emit succeeded(message);
+            break;
+        case Outcome::Failed:
+            emit failed(message);
+            break;
+        case Outcome::Cancelled:
+            emit cancelled();
+            break;
+    }
+    emit finished();
+}
+
+void ExportWorker::watch(ExportWorker* worker, QMainWindow* window) {
+    auto* dialog = new QProgressDialog(worker->description(), tr("Cancel"), 0, 1000, window);
+    dialog->setObjectName(QStringLiteral("exportProgress"));
+    dialog->setWindowTitle(tr("Export"));
+    dialog->setWindowModality(Qt::WindowModal);
+    dialog->setAutoClose(false);
+    dialog->setAutoReset(false);
+    dialog->setMinimumDuration(0);
+    dialog->setValue(0);
+    connect(worker, &QObject::destroyed, dialog, &QObject::deleteLater);
+    connect(dialog, &QProgressDialog::canceled, worker, [worker, dialog] {
+        worker->cancel();
+        dialog->setLabelText(tr("Cancelling…"));
+    });
+    connect(worker, &ExportWorker::progressChanged, dialog,
+            [worker, dialog](double fraction, const QString& stage) {
+                if (!dialog->wasCanceled()) {
+                    dialog->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
+                    dialog->setLabelText(stage.isEmpty() ? worker->description()
+                                                         : worker->description() +
+                                                               QStringLiteral("\n") + stage);
+                }
+            });
+    connect(worker, &ExportWorker::succeeded, window, [window](const QString& message) {
+        window->statusBar()->showMessage(message, kStatusTimeoutMs);
+    });
+    connect(worker, &ExportWorker::cancelled, window, [window] {
+        window->statusBar()->showMessage(tr("Export cancelled: nothing was written"),
+                                         kStatusTimeoutMs);
+    });
+    connect(worker, &ExportWorker::failed, window, [window](const QString& message) {
+        window->statusBar()->showMessage(tr("Export failed: %1").arg(message), kStatusTimeoutMs);
+        // Window-modal but not blocking: the event loop (and tests) keep running.
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot export"), message,
+                                    QMessageBox::Ok, window);
+        box->setObjectName(QStringLiteral("exportErrorBox"));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    connect(worker, &ExportWorker::finished, dialog, &QProgressDialog::close);
+    connect(worker, &ExportWorker::finished, worker, &QObject::deleteLater);
+    dialog->show();
+}
+
+}  // namespace vv::gui

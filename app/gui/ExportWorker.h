@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QDialog>
+#include <QObject>
+#include <QSize>
+#include <QString>
+#include <functional>
+#include <memory>
+#include <stop_token>
+#include <thread>
+
+#include "vv/core/Progress.h"
+#include "vv/render/OffscreenRenderer.h"
+
+class QMainWindow;
+class QOffscreenSurface;
+class QWidget;
+
+namespace vv::gui {
+
+class ViewerWidget;
+
+/// Offscreen options that reproduce what `viewer` shows: its camera,
+/// background, mesh style (array, colour map, range, bins), ray-cast volume, VSS (the exact
+/// solve, never the preview), vessel cue, ambient occlusion and FXAA, at
+/// width x height pixels. Legends are left to report::renderView().
+[[nodiscard]] render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int width,
+                                                          int height);
+
+/// The viewer's size in device pixels (what "View size" exports).
+[[nodiscard]] QSize viewPixelSize(const ViewerWidget& viewer);
+
+/// A window-modal, non-blocking warning box over `parent` (object name
+/// "exportProblemBox") for a dialog field that is wrong.
+void showExportProblem(QWidget* parent, const QString& title, const QString& message);
+
+/// Runs one export job on its own worker thread, never on the GUI thread.
+///
+/// start() creates the OffscreenSurface on the GUI thread (Qt requires it
+/// there) and starts a std::jthread that makes an OffscreenRenderer on that
+/// surface (its OpenGL context is created and current on the worker), runs
+/// the job and destroys the renderer there. Progress arrives through
+/// progressChanged() (queued, throttled); then exactly one of succeeded(),
+/// failed() or cancelled(), and finished(), all on the GUI thread. cancel()
+/// asks the job to stop at its next progress report. The destructor cancels
+/// and waits for the worker (at most the step running), then frees the
+/// surface on the GUI thread.
+class ExportWorker : public QObject {
+    Q_OBJECT
+
+  public:
+    /// Runs on the worker with a renderer of that thread; returns the status
+    /// bar message. Throws vv::Error (CancelledError when stopped).
+    using Job =
+        std::function<QString(render::OffscreenRenderer& renderer, const Progress& progress)>;
+
+    ExportWorker(QString description, Job job, QObject* parent = nullptr);
+    ~ExportWorker() override;
+    ExportWorker(const ExportWorker&) = delete;
+    ExportWorker& operator=(const ExportWorker&) = delete;
+    ExportWorker(ExportWorker&&) = delete;
+    ExportWorker& operator=(ExportWorker&&) = delete;
+
+    /// Starts the worker (call on the GUI thread); a second call does nothing.
+    void start();
+    /// Asks the job to stop; cancelled() follows unless it already finished.
+    void cancel();
+    [[nodiscard]] bool isRunning() const noexcept { return running_; }
+    /// What the job does, for the progress dialog ("Exporting view.png").
+    [[nodiscard]] const QString& description() const noexcept { return description_; }
+
+    /// A window-modal progress dialog with Cancel for `worker` (deleted with
+    /// it), and the outcome in `window`: a status bar message on success, a
+    /// message box naming the file and the problem on failure. The worker
+    /// deletes itself when finished.
+    static void watch(ExportWorker* worker, QMainWindow* window);
+    /// A started worker for `job`, owned by `dialog`'s parent (the main
+    /// window, which watch()es it) so that it outlives the dialog.
+    static ExportWorker* launch(QString description, Job job, QWidget* dialog);
+
+  signals:
+    void progressChanged(double fraction, const QString& stage);
+    void succeeded(const QString& message);
+    /// "file: problem".
+    void failed(const QString& message);
+    void cancelled();
+    /// After succeeded(), failed() or cancelled().
+    void finished();
+
+  private:
+    enum class Outcome { Succeeded, Failed, Cancelled };
+    void run(QOffscreenSurface& surface, const std::stop_token& stop);
+    void deliver(Outcome outcome, const QString& message);
+
+    QString description_;
+    Job job_;
+    std::unique_ptr<QOffscreenSurface> surface_;
+    bool started_ = false;
+    bool running_ = false;
+    std::jthread thread_;  // last: joins before the members above go
+};
+
+/// A dialog whose Export button (accept()) checks the fields and starts an
+/// ExportWorker: ExportImageDialog, ReportDialog.
+class ExportDialog : public QDialog {
+    Q_OBJECT
+
+  public:
+    using QDialog::QDialog;
+
+    /// What is wrong with the fields; empty when they are fine.
+    [[nodiscard]] virtual QString problem() const = 0;
+
+    /// With a problem(): shows it in a message box (showExportProblem) and
+    /// stays open. Else starts the export (exportStarted()) and closes.
+    void accept() override;
+
+  signals:
+    /// The export was started on `worker` (watched by the main window).
+    void exportStarted(vv::gui::ExportWorker* worker);
+
+  protected:
+    /// Remembers the choices (QSettings) and returns the started worker
+    /// (ExportWorker::launch). Called only when problem() is empty.
+    virtual ExportWorker* startExport() = 0;
+};
+
+}  // namespace vv::gui

@@ -1,0 +1,279 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/ReportDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDir>
+#include <QDoubleSpinBox>
+#include <QFile>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFormLayout>
+#include <QHBoxLayout>
+#include <QLineEdit>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <utility>
+#include <vector>
+
+#include "gui/ExportImageDialog.h"
+#include "gui/ExportWorker.h"
+#include "gui/ViewerWidget.h"
+#include "vv/render/ViewPresets.h"
+
+namespace vv::gui {
+
+namespace {
+
+const char* const kPaperKey = "report/paper";
+const char* const kAnonymiseKey = "report/anonymise";
+
+std::filesystem::path toPath(const QString& file) {
+    return {QFile::encodeName(file).toStdString()};
+}
+
+/// The browse button beside `edit`: a save dialog for `filter`.
+QHBoxLayout* withBrowse(QLineEdit* edit, const QString& title, const QString& filter,
+                        QWidget* parent) {
+    auto* browse = new QPushButton(ReportDialog::tr("Browse…"), parent);
+    QObject::connect(browse, &QPushButton::clicked, parent, [edit, title, filter, parent] {
+        const QString chosen = QFileDialog::getSaveFileName(parent, title, edit->text(), filter);
+        if (!chosen.isEmpty()) {
+            edit->setText(chosen);
+        }
+    });
+    auto* row = new QHBoxLayout;
+    row->addWidget(edit, 1);
+    row->addWidget(browse);
+    return row;
+}
+
+/// `pdf` with its suffix replaced: "report.pdf" -> "report-sc.dcm".
+QString besidePdf(const QString& pdf, const QString& suffix) {
+    const QFileInfo info(pdf);
+    return QDir(info.path()).filePath(info.completeBaseName() + suffix);
+}
+
+}  // namespace
+
+ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource source, QWidget* parent)
+    : ExportDialog(parent), viewer_(viewer), source_(std::move(source)) {
+    setObjectName(QStringLiteral("reportDialog"));
+    setWindowTitle(tr("Export Report"));
+    const QSettings settings;
+    form_ = new QFormLayout(this);
+
+    pdf_ = new QLineEdit(QDir(lastExportFolder()).filePath(QStringLiteral("report.pdf")), this);
+    form_->addRow(tr("&Report (PDF):"),
+                  withBrowse(pdf_, tr("Export report"), tr("PDF documents (*.pdf)"), this));
+
+    paper_ = new QComboBox(this);
+    paper_->addItem(tr("A4"), static_cast<int>(report::PaperSize::A4));
+    paper_->addItem(tr("Letter"), static_cast<int>(report::PaperSize::Letter));
+    const int paper = paper_->findData(settings.value(QLatin1String(kPaperKey), 0).toInt());
+    paper_->setCurrentIndex(std::max(0, paper));
+    form_->addRow(tr("&Paper:"), paper_);
+
+    findings_ = new QPlainTextEdit(this);
+    findings_->setPlaceholderText(tr("Findings, printed at the end of the report"));
+    findings_->setTabChangesFocus(true);
+    form_->addRow(tr("&Findings:"), findings_);
+
+    secondView_ = new QComboBox(this);
+    secondView_->addItem(tr("None"), QString());
+    const std::array<std::pair<const char*, QString>, 9> views{{
+        {"far", tr("Far")},
+        {"medium", tr("Medium")},
+        {"close", tr("Close")},
+        {"anterior", tr("Anterior")},
+        {"posterior", tr("Posterior")},
+        {"left", tr("Left")},
+        {"right", tr("Right")},
+        {"superior", tr("Superior")},
+        {"inferior", tr("Inferior")},
+    }};
+    for (const auto& [name, label] : views) {
+        secondView_->addItem(label, QString::fromLatin1(name));
+    }
+    secondView_->setToolTip(tr("A second image from a camera preset, below the view"));
+    form_->addRow(tr("&Second view:"), secondView_);
+
+    // Statistics thresholds: only with a parameter on the vessels.
+    const std::string& array = viewer.style().array;
+    const auto threshold = [this, &array](QCheckBox*& box, QDoubleSpinBox*& value,
+                                          const QString& label) {
+        box = new QCheckBox(label, this);
+        value = new QDoubleSpinBox(this);
+        value->setRange(-1e9, 1e9);
+        value->setDecimals(3);
+        value->setEnabled(false);
+        connect(box, &QCheckBox::toggled, value, &QWidget::setEnabled);
+        if (array.empty()) {
+            box->setEnabled(false);
+            box->setToolTip(
+                tr("No parameter is shown on the vessels: the report has no "
+                   "statistics"));
+        }
+        auto* row = new QHBoxLayout;
+        row->addWidget(box);
+        row->addWidget(value, 1);
+        return row;
+    };
+    form_->addRow(tr("Statistics:"), threshold(below_, belowValue_, tr("Area &below")));
+    form_->addRow(QString(), threshold(above_, aboveValue_, tr("Area abo&ve")));
+    if (array == "wss") {
+        below_->setChecked(true);  // low wall shear stress, as the CLI's default
+        belowValue_->setValue(0.4);
+    }
+
+    anonymise_ = new QCheckBox(tr("&Anonymise the patient"), this);
+    if (source_.dicomPath.empty()) {
+        anonymise_->setEnabled(false);
+        anonymise_->setToolTip(
+            tr("Only for data loaded from DICOM: these meshes carry no patient "
+               "data, so the report has no patient block"));
+    } else {
+        anonymise_->setChecked(settings.value(QLatin1String(kAnonymiseKey), false).toBool());
+        anonymise_->setToolTip(
+            tr("Print \"anonymised\" instead of the patient's data and leave the identifiers out "
+               "of the DICOM exports"));
+    }
+    form_->addRow(QString(), anonymise_);
+
+    dicomSc_ = addOutput(tr("DICOM Secondary &Capture"), dicomScPath_, QStringLiteral("-sc.dcm"),
+                         tr("DICOM files (*.dcm)"));
+    dicomPdf_ = addOutput(tr("DICOM Encapsulated P&DF"), dicomPdfPath_,
+                          QStringLiteral("-report.dcm"), tr("DICOM files (*.dcm)"));
+    png_ = addOutput(tr("PNG &image"), pngPath_, QStringLiteral(".png"), tr("PNG images (*.png)"));
+
+    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons->button(QDialogButtonBox::Ok)->setText(tr("&Export"));
+    connect(buttons, &QDialogButtonBox::accepted, this, &ReportDialog::accept);
+    connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    form_->addRow(buttons);
+}
+
+QCheckBox* ReportDialog::addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
+                                   const QString& filter) {
+    auto* box = new QCheckBox(label, this);
+    edit = new QLineEdit(this);
+    edit->setEnabled(false);
+    QLineEdit* path = edit;
+    connect(box, &QCheckBox::toggled, this, [this, path, suffix](bool on) {
+        path->setEnabled(on);
+        if (on && path->text().isEmpty()) {
+            path->setText(besidePdf(pdf_->text(), suffix));
+        }
+    });
+    form_->addRow(box, withBrowse(edit, label, filter, this));
+    return box;
+}
+
+report::ReportJobOptions ReportDialog::jobOptions() const {
+    report::ReportJobOptions job;
+    const QSize size = viewPixelSize(viewer_);
+    job.view = currentViewOptions(viewer_, size.width(), size.height());
+    // Report text is English, like the rest of the PDF.
+    job.viewCaption = "The view as shown on screen";
+    job.viewDescription = "as shown on screen";
+    const QString second = secondView_->currentData().toString();
+    if (!second.isEmpty()) {
+        job.secondView = render::namedViewFromName(second.toStdString());
+        job.secondViewName = second.toStdString();
+    }
+    job.legends = viewer_.legendsVisible();
+    job.anonymise = anonymise_->isEnabled() && anonymise_->isChecked();
+    job.findings = findings_->toPlainText().toStdString();
+    job.paper = static_cast<report::PaperSize>(paper_->currentData().toInt());
+    if (below_->isEnabled() && below_->isChecked()) {
+        job.thresholds.below = belowValue_->value();
+    }
+    if (above_->isEnabled() && above_->isChecked()) {
+        job.thresholds.above = aboveValue_->value();
+    }
+    job.source = source_;
+    job.outputs.pdf = toPath(pdf_->text().trimmed());
+    const auto optional = [](const QCheckBox* box, const QLineEdit* edit) {
+        return box->isChecked() ? toPath(edit->text().trimmed()) : std::filesystem::path();
+    };
+    job.outputs.dicomSc = optional(dicomSc_, dicomScPath_);
+    job.outputs.dicomPdf = optional(dicomPdf_, dicomPdfPath_);
+    job.outputs.png = optional(png_, pngPath_);
+    return job;
+}
+
+QString ReportDialog::problem() const {
+    if (!viewer_.scene()) {
+        return tr("There is no data on screen to report on.");
+    }
+    const report::ReportJobOptions job = jobOptions();
+    std::vector<std::pair<std::filesystem::path, QString>> outputs{
+        {job.outputs.pdf, tr("PDF report")}};
+    const std::array<std::pair<const QCheckBox*, const std::filesystem::path*>, 3> optional{
+        {{dicomSc_, &job.outputs.dicomSc},
+         {dicomPdf_, &job.outputs.dicomPdf},
+         {png_, &job.outputs.png}}};
+    for (const auto& [box, path] : optional) {
+        if (box->isChecked()) {
+            outputs.emplace_back(*path, box->text().remove(QLatin1Char('&')));
+        }
+    }
+    std::vector<std::filesystem::path> seen;
+    for (const auto& [path, what] : outputs) {
+        if (path.empty()) {
+            return tr("Choose a file name for the %1.").arg(what);
+        }
+        const QFileInfo info(QFile::decodeName(path.c_str()));
+        if (info.isDir()) {
+            return tr("%1 is a folder; choose a file name for the %2.").arg(info.filePath(), what);
+        }
+        if (!info.absoluteDir().exists()) {
+            return tr("%1: the folder %2 does not exist.")
+                .arg(info.filePath(), info.absolutePath());
+        }
+        const auto same = [&info](const std::filesystem::path& other) {
+            return QFileInfo(QFile::decodeName(other.c_str())).absoluteFilePath() ==
+                   info.absoluteFilePath();
+        };
+        if (std::any_of(seen.begin(), seen.end(), same)) {
+            return tr("%1 is chosen for two outputs.").arg(info.filePath());
+        }
+        if (std::any_of(source_.files.begin(), source_.files.end(), same)) {
+            return tr("%1 is the data file shown: choose another name.").arg(info.filePath());
+        }
+        seen.push_back(path);
+    }
+    return {};
+}
+
+ExportWorker* ReportDialog::startExport() {
+    const report::ReportJobOptions job = jobOptions();
+    QSettings settings;
+    rememberExportFolder(pdf_->text().trimmed());
+    settings.setValue(QLatin1String(kPaperKey), paper_->currentData().toInt());
+    if (anonymise_->isEnabled()) {
+        settings.setValue(QLatin1String(kAnonymiseKey), anonymise_->isChecked());
+    }
+    const std::shared_ptr<const io::Scene> scene = viewer_.scene();
+    const QString pdf = pdf_->text().trimmed();
+    return ExportWorker::launch(
+        tr("Exporting the report %1").arg(QFileInfo(pdf).fileName()),
+        [scene, job](render::OffscreenRenderer& renderer, const Progress& progress) {
+            const auto written = report::runReportJob(renderer, *scene, job, progress);
+            QStringList files;
+            for (const auto& file : written) {
+                files << QFile::decodeName(file.path.c_str());
+            }
+            return tr("Exported %1").arg(files.join(QStringLiteral(", ")));
+        },
+        this);
+}
+
+}  // namespace vv::gui

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QString>
+
+#include "gui/ExportWorker.h"
+#include "vv/report/ReportJob.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLineEdit;
+class QPlainTextEdit;
+
+namespace vv::gui {
+
+class ViewerWidget;
+
+/// File > Export Report…: the PDF report of the current view (its camera and
+/// display settings, exactly what is on screen) with the options of
+/// `vesselview-cli report`: paper (A4 / Letter), findings (free text), a
+/// second view (a camera preset), the statistics thresholds (area below /
+/// above a value; only with a parameter shown), anonymise (only for DICOM
+/// data: otherwise disabled with a tooltip, as there is no patient block),
+/// and optional DICOM Secondary Capture, DICOM Encapsulated PDF and PNG
+/// outputs. accept() checks the fields (a message box says what is wrong),
+/// remembers the folder, paper and anonymise choice (QSettings), and runs
+/// report::runReportJob() on an ExportWorker with progress and Cancel.
+class ReportDialog : public ExportDialog {
+    Q_OBJECT
+
+  public:
+    /// `source`: the shown data files; its dicomPath is set when they came
+    /// from DICOM (enables anonymise).
+    ReportDialog(const ViewerWidget& viewer, report::ReportSource source,
+                 QWidget* parent = nullptr);
+
+    [[nodiscard]] QLineEdit* pdfEdit() const noexcept { return pdf_; }
+    /// Items "A4", "Letter" (item data = report::PaperSize as int).
+    [[nodiscard]] QComboBox* paperChooser() const noexcept { return paper_; }
+    [[nodiscard]] QPlainTextEdit* findingsEdit() const noexcept { return findings_; }
+    /// Item 0 "None" (empty data), then the view names (data = the name).
+    [[nodiscard]] QComboBox* secondViewChooser() const noexcept { return secondView_; }
+    [[nodiscard]] QCheckBox* belowBox() const noexcept { return below_; }
+    [[nodiscard]] QDoubleSpinBox* belowValue() const noexcept { return belowValue_; }
+    [[nodiscard]] QCheckBox* aboveBox() const noexcept { return above_; }
+    [[nodiscard]] QDoubleSpinBox* aboveValue() const noexcept { return aboveValue_; }
+    [[nodiscard]] QCheckBox* anonymiseBox() const noexcept { return anonymise_; }
+    [[nodiscard]] QCheckBox* dicomScBox() const noexcept { return dicomSc_; }
+    [[nodiscard]] QLineEdit* dicomScEdit() const noexcept { return dicomScPath_; }
+    [[nodiscard]] QCheckBox* dicomPdfBox() const noexcept { return dicomPdf_; }
+    [[nodiscard]] QLineEdit* dicomPdfEdit() const noexcept { return dicomPdfPath_; }
+    [[nodiscard]] QCheckBox* pngBox() const noexcept { return png_; }
+    [[nodiscard]] QLineEdit* pngEdit() const noexcept { return pngPath_; }
+
+    /// The job the fields describe (view = the viewer's, at its size).
+    [[nodiscard]] report::ReportJobOptions jobOptions() const;
+    /// What is wrong with the fields (no PDF name, two outputs on one file,
+    /// an output over a data file, a missing folder); empty when fine.
+    [[nodiscard]] QString problem() const override;
+
+  protected:
+    ExportWorker* startExport() override;
+
+  private:
+    /// One optional output: a check box and a path, filled from the PDF's name.
+    QCheckBox* addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
+                         const QString& filter);
+
+    const ViewerWidget& viewer_;
+    report::ReportSource source_;
+    QLineEdit* pdf_ = nullptr;
+    QComboBox* paper_ = nullptr;
+    QPlainTextEdit* findings_ = nullptr;
+    QComboBox* secondView_ = nullptr;
+    QCheckBox* below_ = nullptr;
+    QDoubleSpinBox* belowValue_ = nullptr;
+    QCheckBox* above_ = nullptr;
+    QDoubleSpinBox* aboveValue_ = nullptr;
+    QCheckBox* anonymise_ = nullptr;
+    QCheckBox* dicomSc_ = nullptr;
+    QLineEdit* dicomScPath_ = nullptr;
+    QCheckBox* dicomPdf_ = nullptr;
+    QLineEdit* dicomPdfPath_ = nullptr;
+    QCheckBox* png_ = nullptr;
+    QLineEdit* pngPath_ = nullptr;
+    QFormLayout* form_ = nullptr;
+};
+
+}  // namespace vv::gui

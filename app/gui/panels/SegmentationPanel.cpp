@@ -1,0 +1,643 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/panels/SegmentationPanel.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLocale>
+#include <QMouseEvent>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSignalBlocker>
+#include <QSpinBox>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "gui/SegmentationTask.h"
+#include "gui/ViewerWidget.h"
+#include "gui/panels/PanelUtil.h"
+#include "vv/core/Error.h"
+
+namespace vv::gui::panels {
+
+namespace {
+
+/// Delay between the last change of a control and its preview.
+constexpr int kDebounceMs = 300;
+/// The preview's surface is decimated to at most this many triangles.
+constexpr int kPreviewTriangles = 40000;
+/// A seed taken from a surface point may lie this many voxels from it.
+constexpr int kSeedRadius = 2;
+/// A click moves the mouse by less than this (Manhattan length, pixels).
+constexpr double kClickSlop = 4.0;
+constexpr int kMaxTriangles = 10000000;
+constexpr int kTriangleStep = 10000;
+
+}  // namespace
+
+SegmentationPanel::SegmentationPanel(ViewerWidget* viewer, QWidget* parent)
+    : QWidget(parent), viewer_(viewer), debounce_(new QTimer(this)) {
+    setObjectName(QStringLiteral("segmentationPanel"));
+    debounce_->setSingleShot(true);
+    debounce_->setInterval(kDebounceMs);
+    connect(debounce_, &QTimer::timeout, this, &SegmentationPanel::startPreview);
+    buildControls();
+    makeNarrow(this);
+    viewer_->installEventFilter(this);
+    setVolume(nullptr);
+}
+
+void SegmentationPanel::buildControls() {
+    auto* outer = new QVBoxLayout(this);
+    auto* top = new QFormLayout;
+    outer->addLayout(top);
+    volumeLabel_ = new QLabel(this);
+    volumeLabel_->setObjectName(QStringLiteral("segmentationVolume"));
+    volumeLabel_->setWordWrap(true);
+    top->addRow(volumeLabel_);
+
+    displayBox_ = new QComboBox(this);
+    displayBox_->setObjectName(QStringLiteral("volumeDisplay"));
+    displayBox_->addItem(tr("Surface mesh"), static_cast<int>(Display::SurfaceMesh));
+    displayBox_->addItem(tr("Ray-cast iso-surface"), static_cast<int>(Display::RaycastIsoSurface));
+    displayBox_->setToolTip(
+        tr("Surface mesh: the segmented vessels. Ray-cast iso-surface: the volume itself, "
+           "without segmentation, cut at the iso value"));
+    top->addRow(tr("Show volume as:"), displayBox_);
+    connect(displayBox_, &QComboBox::currentIndexChanged, this,
+            [this] { setDisplay(static_cast<Display>(displayBox_->currentData().toInt())); });
+    iso_ = new QDoubleSpinBox(this);
+    iso_->setObjectName(QStringLiteral("isoValue"));
+    iso_->setDecimals(0);
+    iso_->setKeyboardTracking(false);
+    top->addRow(tr("Iso value:"), iso_);
+    connect(iso_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+        if (filling_) {
+            return;
+        }
+        isoFollowsLower_ = false;
+        if (display_ == Display::RaycastIsoSurface && volume_) {
+            viewer_->setVolume(volume_, static_cast<float>(value));
+        }
+    });
+
+    segmentation_ = new QWidget(this);
+    auto* form = new QFormLayout(segmentation_);
+    form->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(segmentation_);
+    lower_ = new QDoubleSpinBox(segmentation_);
+    lower_->setObjectName(QStringLiteral("thresholdLower"));
+    upper_ = new QDoubleSpinBox(segmentation_);
+    upper_->setObjectName(QStringLiteral("thresholdUpper"));
+    for (QDoubleSpinBox* box : {lower_, upper_}) {
+        box->setDecimals(0);
+        box->setKeyboardTracking(false);  // one preview per entered value
+    }
+    lower_->setToolTip(tr("Voxels at or above this value may be vessels"));
+    upper_->setToolTip(tr("Voxels at or below this value may be vessels"));
+    auto* range = new QHBoxLayout;
+    range->addWidget(lower_, 1);
+    range->addWidget(new QLabel(tr("to"), segmentation_));
+    range->addWidget(upper_, 1);
+    form->addRow(tr("Threshold:"), range);
+    default_ = new QPushButton(tr("Default"), segmentation_);
+    default_->setObjectName(QStringLiteral("thresholdDefault"));
+    defaultLabel_ = new QLabel(segmentation_);
+    defaultLabel_->setObjectName(QStringLiteral("thresholdDefaultLabel"));
+    defaultLabel_->setWordWrap(true);
+    auto* defaults = new QHBoxLayout;
+    defaults->addWidget(defaultLabel_, 1);
+    defaults->addWidget(default_);
+    form->addRow(defaults);
+    connect(default_, &QPushButton::clicked, this, [this] {
+        if (defaultRange_) {
+            const QSignalBlocker block(upper_);
+            upper_->setValue(static_cast<double>(defaultRange_->upper));
+            lower_->setValue(static_cast<double>(defaultRange_->lower));  // previews once
+            optionsChanged();
+        }
+    });
+    connect(lower_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
+        if (isoFollowsLower_ && !filling_) {
+            const QSignalBlocker block(iso_);
+            iso_->setValue(value);
+        }
+        optionsChanged();
+    });
+    connect(upper_, &QDoubleSpinBox::valueChanged, this, &SegmentationPanel::optionsChanged);
+
+    mode_ = new QComboBox(segmentation_);
+    mode_->setObjectName(QStringLiteral("componentMode"));
+    mode_->addItem(tr("Largest components"), static_cast<int>(Mode::Largest));
+    mode_->addItem(tr("Component under seed"), static_cast<int>(Mode::Seed));
+    form->addRow(tr("Keep:"), mode_);
+    connect(mode_, &QComboBox::currentIndexChanged, this, [this] {
+        updateApplicability();
+        optionsChanged();
+    });
+    components_ = new QSpinBox(segmentation_);
+    components_->setObjectName(QStringLiteral("componentCount"));
+    components_->setRange(1, 255);
+    components_->setKeyboardTracking(false);
+    form->addRow(tr("Components:"), components_);
+    connect(components_, &QSpinBox::valueChanged, this, &SegmentationPanel::optionsChanged);
+    seedLabel_ = new QLabel(segmentation_);
+    seedLabel_->setObjectName(QStringLiteral("seedLabel"));
+    seedLabel_->setWordWrap(true);
+    seedLabel_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    form->addRow(tr("Seed:"), seedLabel_);
+    bone_ = new QCheckBox(tr("Remove bone-like components"), segmentation_);
+    bone_->setObjectName(QStringLiteral("boneRemoval"));
+    bone_->setToolTip(
+        tr("Drop bright components mostly made of voxels of 1000 HU or more (CT); a vessel "
+           "touching bone is dropped with it"));
+    form->addRow(bone_);
+    connect(bone_, &QCheckBox::toggled, this, &SegmentationPanel::optionsChanged);
+    triangles_ = new QSpinBox(segmentation_);
+    triangles_->setObjectName(QStringLiteral("surfaceTriangles"));
+    triangles_->setRange(0, kMaxTriangles);
+    triangles_->setSingleStep(kTriangleStep);
+    triangles_->setSpecialValueText(tr("All"));
+    triangles_->setKeyboardTracking(false);
+    triangles_->setToolTip(tr("Decimate the surface to about this many triangles (All: none)"));
+    form->addRow(tr("Surface triangles:"), triangles_);
+    connect(triangles_, &QSpinBox::valueChanged, this, &SegmentationPanel::optionsChanged);
+
+    // Pick seed and preview stay usable in the ray-cast display.
+    pickSeed_ = new QPushButton(tr("Pick Seed"), this);
+    pickSeed_->setObjectName(QStringLiteral("pickSeed"));
+    pickSeed_->setCheckable(true);
+    pickSeed_->setToolTip(
+        tr("Click a vessel in the 3-D view: keep only the component under that point"));
+    preview_ = new QCheckBox(tr("Live preview"), this);
+    preview_->setObjectName(QStringLiteral("segmentationPreview"));
+    preview_->setChecked(true);
+    preview_->setToolTip(
+        tr("Show a quick segmentation of a downsampled copy whenever a control changes"));
+    connect(preview_, &QCheckBox::toggled, this, [this](bool on) {
+        if (on && dirty_) {
+            debounce_->start();
+        } else if (!on) {
+            stopPreview();
+        }
+    });
+    auto* seedRow = new QHBoxLayout;
+    seedRow->addWidget(pickSeed_);
+    seedRow->addWidget(preview_, 1);
+    outer->addLayout(seedRow);
+
+    apply_ = new QPushButton(tr("Apply"), this);
+    apply_->setObjectName(QStringLiteral("segmentationApply"));
+    apply_->setToolTip(tr("Segment the whole volume at full resolution"));
+    connect(apply_, &QPushButton::clicked, this, &SegmentationPanel::apply);
+    cancel_ = new QPushButton(tr("Cancel"), this);
+    cancel_->setObjectName(QStringLiteral("segmentationCancel"));
+    connect(cancel_, &QPushButton::clicked, this, &SegmentationPanel::cancelApply);
+    progress_ = new QProgressBar(this);
+    progress_->setRange(0, 1000);
+    progress_->setTextVisible(false);
+    auto* applyRow = new QHBoxLayout;
+    applyRow->addWidget(apply_);
+    applyRow->addWidget(progress_, 1);
+    applyRow->addWidget(cancel_);
+    outer->addLayout(applyRow);
+    message_ = new QLabel(this);
+    message_->setObjectName(QStringLiteral("segmentationMessage"));
+    message_->setWordWrap(true);
+    message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    outer->addWidget(message_);
+    outer->addStretch(1);
+}
+
+void SegmentationPanel::setVolume(std::shared_ptr<const io::Volume> volume,
+                                  const io::SegmentationOptions& options,
+                                  const io::ThresholdRange& range,
+                                  const io::SurfaceOptions& surface) {
+    stopPreview();
+    abandon(applyTask_);
+    if (display_ == Display::RaycastIsoSurface) {
+        viewer_->setVolume(nullptr, 0.0F);
+    }
+    display_ = Display::SurfaceMesh;
+    meshScene_.reset();
+    volume_ = std::move(volume);
+    defaultRange_.reset();
+    seed_ = options.seed;
+    dirty_ = false;
+    isoFollowsLower_ = true;
+    lastOutcome_.reset();
+    pickSeed_->setChecked(false);
+    progress_->setValue(0);
+    message_->clear();
+
+    filling_ = true;
+    {
+        const QSignalBlocker blockDisplay(displayBox_);
+        const QSignalBlocker blockLower(lower_);
+        const QSignalBlocker blockUpper(upper_);
+        const QSignalBlocker blockMode(mode_);
+        const QSignalBlocker blockComponents(components_);
+        const QSignalBlocker blockBone(bone_);
+        const QSignalBlocker blockTriangles(triangles_);
+        displayBox_->setCurrentIndex(0);
+        if (volume_) {
+            // Room beyond the values in the volume, so any range can be typed.
+            const auto [lo, hi] = volume_->valueRange();
+            const double span = std::max(1.0, static_cast<double>(hi) - static_cast<double>(lo));
+            const QString suffix = volume_->unit().empty()
+                                       ? QString()
+                                       : QStringLiteral(" ") + fromUtf8(volume_->unit());
+            for (QDoubleSpinBox* box : {lower_, upper_, iso_}) {
+                box->setRange(static_cast<double>(lo) - span, static_cast<double>(hi) + span);
+                box->setSuffix(suffix);
+            }
+            const io::ThresholdRange used = options.range.value_or(range);
+            lower_->setValue(static_cast<double>(used.lower));
+            upper_->setValue(static_cast<double>(used.upper));
+            iso_->setValue(static_cast<double>(used.lower));
+            components_->setValue(std::clamp(options.keepComponents, 1, 255));
+            mode_->setCurrentIndex(options.seed ? 1 : 0);
+            bone_->setChecked(options.removeBone.value_or(volume_->modality() == "CT" ||
+                                                          volume_->unit() == "HU"));
+            triangles_->setValue(
+                static_cast<int>(std::min<std::size_t>(surface.targetTriangles, kMaxTriangles)));
+            const glm::ivec3 d = volume_->dims();
+            volumeLabel_->setText(
+                tr("Volume: %1 × %2 × %3 voxels%4")
+                    .arg(d.x)
+                    .arg(d.y)
+                    .arg(d.z)
+                    .arg(volume_->modality().empty()
+                             ? QString()
+                             : QStringLiteral(", ") + fromUtf8(volume_->modality())));
+            defaultLabel_->setText(tr("Default: computing…"));
+            startDefaultRange();
+        } else {
+            volumeLabel_->setText(tr("No volume"));
+            defaultLabel_->clear();
+        }
+    }
+    filling_ = false;
+    seedLabel_->setText(
+        seed_ && volume_
+            ? tr("(%1, %2, %3): %4")
+                  .arg(seed_->x)
+                  .arg(seed_->y)
+                  .arg(seed_->z)
+                  .arg(valueText(static_cast<double>(volume_->value(seed_->x, seed_->y, seed_->z))))
+            : tr("none"));
+    setApplicable(this, volume_ != nullptr, QString(),
+                  tr("Only for scenes segmented from a CT or MR series: open one with "
+                     "File > Open Folder…"));
+    updateApplicability();
+}
+
+void SegmentationPanel::startDefaultRange() {
+    // The modality default: a histogram pass for MR, so not on the GUI thread.
+    const std::shared_ptr<const io::Volume> volume = volume_;
+    auto* watcher = new QFutureWatcher<std::optional<io::ThresholdRange>>(this);
+    connect(
+        watcher, &QFutureWatcher<std::optional<io::ThresholdRange>>::finished, this,
+        [this, watcher, volume] {
+            watcher->deleteLater();
+            if (volume != volume_) {
+                return;  // computed for an older volume
+            }
+            defaultRange_ = watcher->result();
+            defaultLabel_->setText(
+                defaultRange_ ? tr("Default: %1 to %2")
+                                    .arg(valueText(static_cast<double>(defaultRange_->lower)),
+                                         valueText(static_cast<double>(defaultRange_->upper)))
+                              : tr("Default: none (the volume holds a single value)"));
+            // The rule behind it (the engine's words: "CT angiography default …").
+            defaultLabel_->setToolTip(defaultRange_ ? fromUtf8(defaultRange_->rule) : QString());
+            updateApplicability();
+        });
+    watcher->setFuture(QtConcurrent::run([volume]() -> std::optional<io::ThresholdRange> {
+        try {
+            return io::defaultThresholdRange(*volume);
+        } catch (const vv::Error&) {
+            return std::nullopt;
+        }
+    }));
+}
+
+QString SegmentationPanel::valueText(double value) const {
+    const QString number = QLocale().toString(value, 'f', 0);
+    return volume_ && !volume_->unit().empty()
+               ? number + QStringLiteral(" ") + fromUtf8(volume_->unit())
+               : number;
+}
+
+io::SegmentationOptions SegmentationPanel::segmentationOptions() const {
+    io::SegmentationOptions options;
+    io::ThresholdRange range;
+    range.lower = static_cast<float>(std::min(lower_->value(), upper_->value()));
+    range.upper = static_cast<float>(std::max(lower_->value(), upper_->value()));
+    range.rule = "chosen in the Segmentation panel";
+    options.range = range;
+    options.keepComponents = components_->value();
+    if (static_cast<Mode>(mode_->currentData().toInt()) == Mode::Seed) {
+        options.seed = seed_;
+    }
+    options.removeBone = bone_->isChecked();
+    return options;
+}
+
+io::SurfaceOptions SegmentationPanel::surfaceOptions() const {
+    io::SurfaceOptions surface;
+    surface.targetTriangles = static_cast<std::size_t>(triangles_->value());
+    return surface;
+}
+
+void SegmentationPanel::updateApplicability() {
+    const bool applying = isApplying();
+    const bool raycast = display_ == Display::RaycastIsoSurface;
+    const bool seedMode = static_cast<Mode>(mode_->currentData().toInt()) == Mode::Seed;
+    setApplicable(segmentation_, !applying && !raycast, QString(),
+                  applying ? tr("Wait for Apply to finish, or cancel it")
+                           : tr("The segmentation shapes the surface mesh: show the volume "
+                                "as a surface mesh to change it"));
+    setApplicable(displayBox_, !applying, displayBox_->toolTip(),
+                  tr("Wait for Apply to finish, or cancel it"));
+    setApplicable(iso_, raycast,
+                  tr("The iso-surface that rays stop at; follows the lower threshold until "
+                     "edited"),
+                  tr("Only for the ray-cast iso-surface display"));
+    setApplicable(components_, !seedMode, tr("Keep this many of the largest components"),
+                  tr("The seed mode keeps the one component under the seed"));
+    setApplicable(default_, defaultRange_.has_value(),
+                  tr("Use the default range of the volume's modality"),
+                  tr("The default range is not known yet"));
+    setApplicable(pickSeed_, !applying, pickSeed_->toolTip(),
+                  tr("Wait for Apply to finish, or cancel it"));
+    const bool seedMissing = seedMode && !seed_;
+    setApplicable(apply_, !applying && !raycast && !seedMissing,
+                  tr("Segment the whole volume at full resolution"),
+                  raycast       ? tr("Show the volume as a surface mesh to apply a segmentation")
+                  : seedMissing ? tr("Pick a seed first")
+                                : tr("Apply is running"));
+    cancel_->setEnabled(applying);
+    cancel_->setToolTip(applying ? tr("Stop Apply; the scene stays as it is")
+                                 : tr("Nothing to cancel"));
+    progress_->setVisible(applying);
+}
+
+void SegmentationPanel::showMessage(const QString& text) {
+    message_->setText(text);
+    emit statusMessage(text);
+}
+
+void SegmentationPanel::optionsChanged() {
+    if (filling_ || !volume_) {
+        return;
+    }
+    dirty_ = true;
+    if (preview_->isChecked()) {
+        debounce_->start();  // restarts: one preview 300 ms after the last change
+    }
+}
+
+SegmentationTask* SegmentationPanel::makeTask(int step, int maxTriangles) {
+    SegmentationRequest request;
+    request.volume = volume_;
+    request.segmentation = segmentationOptions();
+    request.surface = surfaceOptions();
+    if (maxTriangles > 0 &&
+        (request.surface.targetTriangles == 0 ||
+         request.surface.targetTriangles > static_cast<std::size_t>(maxTriangles))) {
+        request.surface.targetTriangles = static_cast<std::size_t>(maxTriangles);
+    }
+    request.step = step;
+    return new SegmentationTask(std::move(request), this);
+}
+
+void SegmentationPanel::abandon(QPointer<SegmentationTask>& task) {
+    if (!task.isNull()) {
+        // Its result is no longer wanted; it deletes itself once the worker stops.
+        disconnect(task, nullptr, this, nullptr);
+        connect(task, &SegmentationTask::finished, task, &QObject::deleteLater);
+        task->cancel();
+        task = nullptr;
+    }
+}
+
+void SegmentationPanel::stopPreview() {
+    debounce_->stop();
+    abandon(previewTask_);
+}
+
+bool SegmentationPanel::isPreviewing() const {
+    return debounce_->isActive() || !previewTask_.isNull();
+}
+
+void SegmentationPanel::startPreview() {
+    debounce_->stop();
+    if (!volume_ || isApplying() || display_ == Display::RaycastIsoSurface) {
+        return;
+    }
+    const io::SegmentationOptions options = segmentationOptions();
+    if (static_cast<Mode>(mode_->currentData().toInt()) == Mode::Seed && !options.seed) {
+        showMessage(tr("Pick a seed: turn on Pick Seed and click a vessel"));
+        return;
+    }
+    stopPreview();  // a newer change wins
+    const int step = previewStep(volume_->dims());
+    SegmentationTask* task = makeTask(step, kPreviewTriangles);
+    previewTask_ = task;
+    connect(task, &SegmentationTask::succeeded, this, &SegmentationPanel::previewDone);
+    connect(task, &SegmentationTask::failed, this,
+            [this](const QString& problem) { showMessage(tr("No preview: %1").arg(problem)); });
+    connect(task, &SegmentationTask::finished, this, [this, task] {
+        if (previewTask_ == task) {
+            previewTask_ = nullptr;
+        }
+        task->deleteLater();
+    });
+    task->start();
+}
+
+void SegmentationPanel::previewDone(const std::shared_ptr<const SegmentationOutcome>& outcome) {
+    lastOutcome_ = outcome;
+    ++previewsShown_;
+    const QString sampling = outcome->step == 1 ? tr("full resolution")
+                                                : tr("one voxel in %1 per axis").arg(outcome->step);
+    const QString what = tr("Preview (%1): %2 triangles; components kept: %3")
+                             .arg(sampling)
+                             .arg(QLocale().toString(static_cast<qulonglong>(outcome->triangles)))
+                             .arg(outcome->componentsKept);
+    message_->setText(what + QStringLiteral("; ") + tr("Apply for full resolution"));
+    emit sceneReady(outcome->scene, what + QStringLiteral(" — ") + tr("Apply for full resolution"));
+}
+
+void SegmentationPanel::apply() {
+    if (!volume_ || isApplying() || display_ == Display::RaycastIsoSurface) {
+        return;
+    }
+    stopPreview();
+    SegmentationTask* task = makeTask(1, 0);
+    applyTask_ = task;
+    connect(task, &SegmentationTask::progressChanged, this, [this](double fraction) {
+        progress_->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
+    });
+    connect(task, &SegmentationTask::succeeded, this, &SegmentationPanel::applyDone);
+    connect(task, &SegmentationTask::failed, this, [this](const QString& problem) {
+        showMessage(tr("Apply failed: %1").arg(problem));
+        emit applyFinished(false);
+    });
+    connect(task, &SegmentationTask::cancelled, this, [this] {
+        showMessage(tr("Apply cancelled; the scene is unchanged"));
+        emit applyFinished(false);
+    });
+    connect(task, &SegmentationTask::finished, this, [this, task] {
+        if (applyTask_ == task) {
+            applyTask_ = nullptr;
+        }
+        task->deleteLater();
+        updateApplicability();
+    });
+    progress_->setValue(0);
+    message_->setText(tr("Segmenting at full resolution…"));
+    task->start();
+    updateApplicability();
+}
+
+void SegmentationPanel::applyDone(const std::shared_ptr<const SegmentationOutcome>& outcome) {
+    lastOutcome_ = outcome;
+    dirty_ = false;
+    const QString what = tr("Segmented: %1 triangles; components kept: %2 of %3")
+                             .arg(QLocale().toString(static_cast<qulonglong>(outcome->triangles)))
+                             .arg(outcome->componentsKept)
+                             .arg(outcome->componentsFound);
+    message_->setText(what);
+    emit sceneReady(outcome->scene, what);
+    emit applyFinished(true);
+}
+
+void SegmentationPanel::cancelApply() {
+    if (!applyTask_.isNull()) {
+        applyTask_->cancel();
+        message_->setText(tr("Cancelling…"));
+    }
+}
+
+bool SegmentationPanel::isApplying() const {
+    return !applyTask_.isNull();
+}
+
+void SegmentationPanel::setDisplay(Display display) {
+    if (!volume_ || display == display_ || isApplying()) {
+        const QSignalBlocker block(displayBox_);
+        displayBox_->setCurrentIndex(static_cast<int>(display_));
+        return;
+    }
+    display_ = display;
+    {
+        const QSignalBlocker block(displayBox_);
+        displayBox_->setCurrentIndex(static_cast<int>(display_));
+    }
+    if (display_ == Display::RaycastIsoSurface) {
+        stopPreview();
+        meshScene_ = viewer_->scene();
+        const auto iso = static_cast<float>(iso_->value());
+        viewer_->setVolume(volume_, iso);
+        emit sceneReady(std::make_shared<const io::Scene>(),
+                        tr("Ray-cast iso-surface at %1").arg(valueText(static_cast<double>(iso))));
+    } else {
+        viewer_->setVolume(nullptr, 0.0F);
+        std::shared_ptr<const io::Scene> scene = std::move(meshScene_);
+        meshScene_.reset();
+        emit sceneReady(scene, tr("Surface mesh"));
+        if (dirty_ && preview_->isChecked()) {
+            debounce_->start();
+        }
+    }
+    updateApplicability();
+}
+
+bool SegmentationPanel::pickSeed(const glm::vec3& world) {
+    if (!volume_) {
+        return false;
+    }
+    const glm::dvec3 ijk(volume_->worldToIndex() * glm::dvec4(glm::dvec3(world), 1.0));
+    const glm::ivec3 dims = volume_->dims();
+    const glm::ivec3 nearest(static_cast<int>(std::lround(ijk.x)),
+                             static_cast<int>(std::lround(ijk.y)),
+                             static_cast<int>(std::lround(ijk.z)));
+    if (!std::isfinite(ijk.x) || !std::isfinite(ijk.y) || !std::isfinite(ijk.z) ||
+        glm::any(glm::lessThan(nearest, glm::ivec3(0))) ||
+        glm::any(glm::greaterThanEqual(nearest, dims))) {
+        showMessage(tr("The point lies outside the volume: no seed there"));
+        return false;
+    }
+    const io::SegmentationOptions options = segmentationOptions();
+    const float lower = options.range->lower;
+    const float upper = options.range->upper;
+    const std::optional<glm::ivec3> voxel =
+        nearestVoxelInRange(*volume_, ijk, lower, upper, kSeedRadius);
+    if (!voxel) {
+        showMessage(
+            tr("Voxel (%1, %2, %3) holds %4, outside the threshold range %5 to %6: no component "
+               "there. Click on a vessel, or widen the range.")
+                .arg(nearest.x)
+                .arg(nearest.y)
+                .arg(nearest.z)
+                .arg(
+                    valueText(static_cast<double>(volume_->value(nearest.x, nearest.y, nearest.z))),
+                    valueText(static_cast<double>(lower)), valueText(static_cast<double>(upper))));
+        return false;
+    }
+    seed_ = voxel;
+    const QString where =
+        tr("(%1, %2, %3): %4")
+            .arg(voxel->x)
+            .arg(voxel->y)
+            .arg(voxel->z)
+            .arg(valueText(static_cast<double>(volume_->value(voxel->x, voxel->y, voxel->z))));
+    seedLabel_->setText(where);
+    pickSeed_->setChecked(false);
+    showMessage(tr("Seed at voxel %1").arg(where));
+    if (mode_->currentIndex() != static_cast<int>(Mode::Seed)) {
+        mode_->setCurrentIndex(static_cast<int>(Mode::Seed));  // previews via optionsChanged
+    } else {
+        optionsChanged();
+    }
+    updateApplicability();
+    return true;
+}
+
+void SegmentationPanel::pickAt(const QPointF& position) {
+    if (const auto result = viewer_->probeAt(position)) {
+        pickSeed(result->worldPosition);
+    } else {
+        showMessage(tr("No surface under the mouse: click on a vessel"));
+    }
+}
+
+bool SegmentationPanel::eventFilter(QObject* watched, QEvent* event) {
+    if (watched == viewer_ && pickSeed_->isChecked() && volume_) {
+        const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
+        if (mouse != nullptr && event->type() == QEvent::MouseButtonPress) {
+            pressed_ = mouse->button() == Qt::LeftButton;
+            pressPosition_ = mouse->position();
+        } else if (mouse != nullptr && event->type() == QEvent::MouseButtonRelease && pressed_) {
+            pressed_ = false;
+            if (mouse->button() == Qt::LeftButton &&
+                (mouse->position() - pressPosition_).manhattanLength() < kClickSlop) {
+                pickAt(mouse->position());
+            }
+        }
+    }
+    return QWidget::eventFilter(watched, event);
+}
+
+}  // namespace vv::gui::panels

@@ -1,0 +1,200 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QPointF>
+#include <QPointer>
+#include <QString>
+#include <QWidget>
+#include <glm/glm.hpp>
+#include <memory>
+#include <optional>
+
+#include "vv/io/Mesh.h"
+#include "vv/io/Volume.h"
+#include "vv/io/VolumeSegmentation.h"
+#include "vv/io/VolumeSurface.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QProgressBar;
+class QPushButton;
+class QSpinBox;
+class QTimer;
+
+namespace vv::gui {
+
+class SegmentationTask;
+struct SegmentationOutcome;
+class ViewerWidget;
+
+namespace panels {
+
+/// The "Segmentation" panel: re-segments the volume a DICOM scene came from,
+/// without reading the files again. Disabled (with a tooltip saying why)
+/// unless setVolume() gave it a volume.
+///
+/// Controls: how to show the volume (a surface mesh, or the ray-cast
+/// iso-surface at an iso value that follows the lower threshold until it is
+/// edited), the threshold range (with the modality's default and a Default
+/// button), keep the largest components (how many) or the component under a
+/// seed, bone removal, the surface's triangle target, "Pick seed", live
+/// Preview (on by default) and Apply.
+///
+/// Preview: 300 ms after the last change, a worker (SegmentationTask)
+/// segments every previewStep()-th voxel and extracts a coarse surface;
+/// sceneReady() hands it over, marked as a preview. A newer change cancels a
+/// running preview. Apply segments at full resolution on a worker with
+/// progress and Cancel; a failed or cancelled Apply leaves the scene alone.
+/// Seed: with "Pick seed" on, a click on the viewer (press and release
+/// without moving) probes it (ViewerWidget::probeAt; the mesh or the ray-cast
+/// iso-surface) and pickSeed() takes the point.
+class SegmentationPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    /// How the volume is shown (displayChooser()'s item data).
+    enum class Display { SurfaceMesh = 0, RaycastIsoSurface = 1 };
+    /// Which components are kept (modeChooser()'s item data).
+    enum class Mode { Largest = 0, Seed = 1 };
+
+    /// The tasks are children: deleting the panel cancels and waits for them.
+    explicit SegmentationPanel(ViewerWidget* viewer, QWidget* parent = nullptr);
+
+    /// The volume the shown scene was segmented from with `options` (the
+    /// range actually used: `range`) and `surface`; nullptr: the scene did not
+    /// come from a volume, and the panel is disabled. Cancels running work and
+    /// goes back to the surface mesh display (without emitting sceneReady).
+    void setVolume(std::shared_ptr<const io::Volume> volume,
+                   const io::SegmentationOptions& options = {},
+                   const io::ThresholdRange& range = {}, const io::SurfaceOptions& surface = {});
+    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+        return volume_;
+    }
+
+    /// The options the controls hold (full-resolution voxel indices).
+    [[nodiscard]] io::SegmentationOptions segmentationOptions() const;
+    [[nodiscard]] io::SurfaceOptions surfaceOptions() const;
+
+    /// Takes the seed from a world point (mm; e.g. a click's
+    /// ProbeResult::worldPosition): the voxel nearest to it within the
+    /// threshold range, at most two voxels away (a point on a surface lies
+    /// between the inside and the outside). Shows i, j, k and its value and
+    /// switches to "component under seed". When no such voxel exists (the
+    /// point is outside the volume or in the background) the message says so
+    /// and nothing else changes; returns false then.
+    bool pickSeed(const glm::vec3& world);
+    [[nodiscard]] const std::optional<glm::ivec3>& seed() const noexcept { return seed_; }
+
+    /// Starts a preview of the current controls at once (what the debounce
+    /// timer does); nothing when there is no volume, Apply is running, the
+    /// volume is ray cast, or the seed mode has no seed yet.
+    void startPreview();
+    /// Apply: the full-resolution segmentation on a worker.
+    void apply();
+    /// Stops a running Apply; the scene stays.
+    void cancelApply();
+    [[nodiscard]] bool isApplying() const;
+    /// A preview is waiting for its debounce or running.
+    [[nodiscard]] bool isPreviewing() const;
+    /// Shows the volume as a surface mesh or as its ray-cast iso-surface.
+    void setDisplay(Display display);
+    [[nodiscard]] Display display() const noexcept { return display_; }
+
+    /// What the last preview / Apply produced (null before the first).
+    [[nodiscard]] const std::shared_ptr<const SegmentationOutcome>& lastOutcome() const noexcept {
+        return lastOutcome_;
+    }
+    /// Previews shown since construction.
+    [[nodiscard]] int previewsShown() const noexcept { return previewsShown_; }
+
+    [[nodiscard]] QComboBox* displayChooser() const noexcept { return displayBox_; }
+    [[nodiscard]] QDoubleSpinBox* isoBox() const noexcept { return iso_; }
+    [[nodiscard]] QDoubleSpinBox* lowerBox() const noexcept { return lower_; }
+    [[nodiscard]] QDoubleSpinBox* upperBox() const noexcept { return upper_; }
+    [[nodiscard]] QPushButton* defaultButton() const noexcept { return default_; }
+    [[nodiscard]] QLabel* defaultLabel() const noexcept { return defaultLabel_; }
+    [[nodiscard]] QComboBox* modeChooser() const noexcept { return mode_; }
+    [[nodiscard]] QSpinBox* componentsBox() const noexcept { return components_; }
+    [[nodiscard]] QCheckBox* boneRemovalBox() const noexcept { return bone_; }
+    [[nodiscard]] QSpinBox* trianglesBox() const noexcept { return triangles_; }
+    [[nodiscard]] QPushButton* pickSeedButton() const noexcept { return pickSeed_; }
+    [[nodiscard]] QLabel* seedLabel() const noexcept { return seedLabel_; }
+    [[nodiscard]] QCheckBox* previewBox() const noexcept { return preview_; }
+    [[nodiscard]] QPushButton* applyButton() const noexcept { return apply_; }
+    [[nodiscard]] QPushButton* cancelButton() const noexcept { return cancel_; }
+    [[nodiscard]] QProgressBar* progressBar() const noexcept { return progress_; }
+    /// Results, seed problems and errors.
+    [[nodiscard]] QLabel* messageLabel() const noexcept { return message_; }
+
+  signals:
+    /// Show `scene` instead of the current one, keeping the camera; `status`
+    /// is for the status bar (a preview says "Preview"). The ray-cast
+    /// display hands over an empty scene (the volume is on the viewer).
+    void sceneReady(std::shared_ptr<const vv::io::Scene> scene, const QString& status);
+    /// A message for the status bar (errors, seed problems, cancelled).
+    void statusMessage(const QString& message);
+    /// An Apply ended (true: its scene was handed over).
+    void applyFinished(bool applied);
+
+  protected:
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    void buildControls();
+    /// A control changed the options: preview after the debounce delay.
+    void optionsChanged();
+    void updateApplicability();
+    void showMessage(const QString& text);
+    void startDefaultRange();
+    [[nodiscard]] QString valueText(double value) const;
+    [[nodiscard]] SegmentationTask* makeTask(int step, int maxTriangles);
+    void previewDone(const std::shared_ptr<const SegmentationOutcome>& outcome);
+    void applyDone(const std::shared_ptr<const SegmentationOutcome>& outcome);
+    void stopPreview();
+    /// Cancels `task` without waiting; its result is dropped. Sets it to null.
+    void abandon(QPointer<SegmentationTask>& task);
+    void pickAt(const QPointF& position);
+
+    ViewerWidget* viewer_;
+    std::shared_ptr<const io::Volume> volume_;
+    std::optional<io::ThresholdRange> defaultRange_;
+    std::optional<glm::ivec3> seed_;
+    Display display_ = Display::SurfaceMesh;
+    /// The mesh scene shown before switching to the ray-cast display.
+    std::shared_ptr<const io::Scene> meshScene_;
+    std::shared_ptr<const SegmentationOutcome> lastOutcome_;
+    QPointer<SegmentationTask> previewTask_;
+    QPointer<SegmentationTask> applyTask_;
+    QTimer* debounce_ = nullptr;
+    bool dirty_ = false;  ///< the controls differ from the shown segmentation
+    bool isoFollowsLower_ = true;
+    bool filling_ = false;  ///< setVolume() is filling the controls
+    int previewsShown_ = 0;
+    QPointF pressPosition_;
+    bool pressed_ = false;
+
+    QComboBox* displayBox_ = nullptr;
+    QDoubleSpinBox* iso_ = nullptr;
+    QWidget* segmentation_ = nullptr;  ///< the segmentation controls (disabled when ray cast)
+    QDoubleSpinBox* lower_ = nullptr;
+    QDoubleSpinBox* upper_ = nullptr;
+    QPushButton* default_ = nullptr;
+    QLabel* defaultLabel_ = nullptr;
+    QComboBox* mode_ = nullptr;
+    QSpinBox* components_ = nullptr;
+    QCheckBox* bone_ = nullptr;
+    QSpinBox* triangles_ = nullptr;
+    QPushButton* pickSeed_ = nullptr;
+    QLabel* seedLabel_ = nullptr;
+    QCheckBox* preview_ = nullptr;
+    QPushButton* apply_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QLabel* message_ = nullptr;
+    QLabel* volumeLabel_ = nullptr;
+};
+
+}  // namespace panels
+}  // namespace vv::gui

@@ -1,0 +1,101 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vv/core/Error.h"
+#include "vv/core/Progress.h"
+#include "vv/io/Mesh.h"
+#include "vv/render/OffscreenRenderer.h"
+#include "vv/render/ViewPresets.h"
+#include "vv/report/ParameterStats.h"
+#include "vv/report/PdfReport.h"
+
+namespace vv::report {
+
+/// Where the data of a report came from.
+struct ReportSource {
+    /// The data files, listed in the report (made absolute).
+    std::vector<std::filesystem::path> files;
+    /// DICOM data: the path the series was loaded from (folder, DICOMDIR or
+    /// file); empty for meshes (then there is no patient block and the DICOM
+    /// exports go into a new study).
+    std::filesystem::path dicomPath;
+    /// The loaded series; empty = the only image series under dicomPath.
+    std::string seriesInstanceUid;
+};
+
+/// The files of one report; empty paths are not written.
+struct ReportOutputs {
+    std::filesystem::path pdf;
+    std::filesystem::path png;       ///< the view as an image (legends, transparency as asked)
+    std::filesystem::path dicomSc;   ///< that image as DICOM Secondary Capture
+    std::filesystem::path dicomPdf;  ///< the PDF as DICOM Encapsulated PDF
+};
+
+/// Everything one report needs besides the scene.
+struct ReportJobOptions {
+    /// The view: camera, style (array, colour map, range), VSS, cue, AO, FXAA,
+    /// background. width x height is the size of the PNG / Secondary Capture
+    /// and the aspect of the report's views (rendered 300 dpi wide). Without a
+    /// camera the view is the default orientation fitted to the scene.
+    render::OffscreenOptions view;
+    /// Caption under the view in the PDF, e.g. "Far view".
+    std::string viewCaption = "Default view, the whole tree fitted";
+    /// The camera as the settings table names it, e.g. "far".
+    std::string viewDescription = "default (fitted)";
+    /// An optional second view (a preset camera on the scene) and its name.
+    std::optional<render::NamedView> secondView;
+    std::string secondViewName;
+    bool legends = true;       ///< legends on the PNG / Secondary Capture
+    bool transparent = false;  ///< transparent background of the PNG
+    /// Print "anonymised" for the patient and leave the identifiers out of the
+    /// DICOM exports (only meaningful for DICOM data).
+    bool anonymise = false;
+    std::string title = "Vessel tree report";
+    std::string findings;  ///< free text, may have several lines
+    PaperSize paper = PaperSize::A4;
+    /// Thresholds of the area fractions; with neither given and the array
+    /// "wss", "below 0.4" (low wall shear stress, Pa).
+    StatsThresholds thresholds;
+    ReportSource source;
+    ReportOutputs outputs;
+};
+
+/// One file the job wrote.
+struct WrittenOutput {
+    std::filesystem::path path;
+    std::string description;  ///< e.g. "PDF report, A4", "1600x1200, transparent background"
+};
+
+/// Thrown when an output cannot be written: the file and the reason.
+class ReportWriteError : public IoError {
+  public:
+    using IoError::IoError;
+};
+
+/// Caption of a named view for the report: "Far view", "Anterior view";
+/// an empty name gives the default view's caption.
+[[nodiscard]] std::string namedViewCaption(const std::string& name);
+
+/// Builds the report of `scene` and writes every requested output: renders
+/// the view(s) with `renderer` (which must belong to the calling thread),
+/// computes the parameter statistics, lays out the PDF and reads the patient
+/// and study from the DICOM source. Everything is computed in memory first;
+/// only then are the outputs written, each atomically, in the order PNG,
+/// Secondary Capture, PDF, Encapsulated PDF. `progress` is told each step and
+/// checked for a stop between steps (a render itself is not interrupted):
+/// a cancelled job throws CancelledError before anything is written, so no
+/// output file is created or changed. Returns the files written.
+/// Throws InvalidArgumentError (size beyond 8K, no outputs, a bad threshold),
+/// RenderError (GL), IoError / FormatError reading the DICOM source,
+/// ReportWriteError when an output cannot be written (outputs before it stay
+/// written), CancelledError.
+std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer, const io::Scene& scene,
+                                        const ReportJobOptions& options,
+                                        const Progress& progress = {});
+
+}  // namespace vv::report

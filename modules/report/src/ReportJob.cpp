@@ -1,0 +1,228 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/report/ReportJob.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <functional>
+#include <utility>
+
+#include "vv/io/Dicom.h"
+#include "vv/render/MeshRenderer.h"
+#include "vv/report/DicomExport.h"
+#include "vv/report/DicomSource.h"
+#include "vv/report/ViewExport.h"
+#include "vv/vss/Solver.h"
+
+namespace vv::report {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/// The job's steps as shares of the whole, in the order they run.
+class Steps {
+  public:
+    explicit Steps(const Progress& progress, double total)
+        : progress_(progress), total_(std::max(total, 1.0)) {}
+
+    /// The next step of `weight`: checks for a stop, reports its start and
+    /// returns the sub-progress for it.
+    Progress next(double weight, std::string_view stage) {
+        const double begin = done_ / total_;
+        done_ += weight;
+        const double end = std::min(1.0, done_ / total_);
+        progress_.report(begin, stage);
+        progress_.throwIfCancelled();  // also a stop asked for while reporting
+        return progress_.sub(begin, end);
+    }
+
+  private:
+    const Progress& progress_;
+    double total_;
+    double done_ = 0.0;
+};
+
+constexpr double kRenderWeight = 4.0;
+constexpr double kScanWeight = 1.0;
+constexpr double kPdfWeight = 1.0;
+constexpr double kWriteWeight = 0.5;
+
+/// The study the DICOM exports go into: the source's (with its patient) for
+/// DICOM data, else a new one.
+DicomStudy studyOf(const ReportSource& source, bool anonymise, const Progress& progress) {
+    DicomStudy study = newStudy();
+    if (source.dicomPath.empty()) {
+        return study;
+    }
+    const io::DicomScanResult scan = io::scanDicom(source.dicomPath, progress);
+    std::string uid = source.seriesInstanceUid;
+    if (scan.findSeries(uid) == nullptr) {
+        // The only image series under the path, as loadSceneSource() takes it.
+        const auto all = scan.allSeries();
+        uid = all.size() == 1 ? all.front()->seriesInstanceUid : std::string();
+    }
+    if (const auto found = sourceStudy(scan, uid)) {
+        study = found->study;
+    }
+    if (anonymise && study.patient) {
+        study.patient->anonymise = true;
+    }
+    return study;
+}
+
+/// The parameter section: only when an array is shown and had a range.
+std::optional<ReportParameter> parameterOf(const io::Scene& scene,
+                                           const render::OffscreenOptions& view,
+                                           const std::optional<std::pair<float, float>>& range,
+                                           const StatsThresholds& thresholds) {
+    if (view.style.array.empty() || !range) {
+        return std::nullopt;
+    }
+    ReportParameter parameter;
+    parameter.name = view.style.array;
+    for (const io::Mesh& mesh : scene.meshes) {
+        if (const io::DataArray* data = mesh.pointArray(parameter.name)) {
+            parameter.unit = data->unit;
+            break;
+        }
+    }
+    parameter.range = *range;
+    parameter.map = view.style.colorMap;
+    parameter.bins = view.style.bins;
+    parameter.thresholds = thresholds;
+    if (!thresholds.below && !thresholds.above && parameter.name == "wss") {
+        parameter.thresholds.below = 0.4;  // low wall shear stress, Pa
+    }
+    parameter.stats = parameterStats(scene, parameter.name, parameter.thresholds);
+    return parameter;
+}
+
+/// Runs `write`; an IoError becomes a ReportWriteError (same file, same problem).
+void writing(const std::function<void()>& write) {
+    try {
+        write();
+    } catch (const ReportWriteError&) {
+        throw;
+    } catch (const IoError& e) {
+        throw ReportWriteError(e.file(), e.problem());
+    }
+}
+
+}  // namespace
+
+std::string namedViewCaption(const std::string& name) {
+    if (name.empty()) {
+        return "Default view, the whole tree fitted";
+    }
+    std::string caption = name;
+    caption[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(caption[0])));
+    return caption + " view";
+}
+
+std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer, const io::Scene& scene,
+                                        const ReportJobOptions& options, const Progress& progress) {
+    const ReportOutputs& out = options.outputs;
+    const bool image = !out.png.empty() || !out.dicomSc.empty();
+    const bool report = !out.pdf.empty() || !out.dicomPdf.empty();
+    if (!image && !report) {
+        throw InvalidArgumentError("report: no output file given");
+    }
+    const render::OffscreenOptions& base = options.view;
+    double total = (image ? kRenderWeight * (options.transparent ? 1.5 : 1.0) : 0.0) +
+                   (report ? kRenderWeight * (options.secondView ? 2.0 : 1.0) + kPdfWeight : 0.0) +
+                   kWriteWeight;
+    total += options.source.dicomPath.empty() ? 0.0 : kScanWeight;
+    Steps steps(progress, total);
+
+    // The study of the DICOM exports and the patient block.
+    DicomStudy study = newStudy();
+    if (!options.source.dicomPath.empty()) {
+        study = studyOf(options.source, options.anonymise,
+                        steps.next(kScanWeight, "Reading the patient and study"));
+    }
+
+    std::optional<RenderedView> shown;
+    if (image) {
+        const Progress rendering =
+            steps.next(kRenderWeight * (options.transparent ? 1.5 : 1.0), "Rendering the image");
+        ViewExportOptions view;
+        view.render = base;
+        view.legends = options.legends;
+        view.transparentBackground = options.transparent;
+        shown = renderView(renderer, scene, view, rendering);
+    }
+
+    QByteArray pdf;
+    if (report) {
+        // The report's views: 300 dpi across the content width, the view's aspect.
+        const int width = reportImageWidth(options.paper);
+        const int height = std::max(
+            1,
+            static_cast<int>(std::lround(width * static_cast<double>(base.height) / base.width)));
+        const auto reportView = [&](const std::optional<render::Camera>& camera,
+                                    const std::string& caption, const Progress& rendering) {
+            ViewExportOptions view;
+            view.render = base;
+            view.render.width = width;
+            view.render.height = height;
+            view.render.camera = camera;
+            view.legends = false;  // painted by the report as vectors
+            RenderedView rendered = renderView(renderer, scene, view, rendering);
+            return std::pair{ReportView{rendered.image, caption, rendered.legends}, rendered.range};
+        };
+        ReportContent content;
+        content.title = options.title;
+        for (const fs::path& file : options.source.files) {
+            content.sources.push_back(fs::absolute(file));
+        }
+        auto [view, range] = reportView(base.camera, options.viewCaption,
+                                        steps.next(kRenderWeight, "Rendering the report's view"));
+        content.view = std::move(view);
+        if (options.secondView) {
+            const Progress rendering = steps.next(kRenderWeight, "Rendering the second view");
+            content.secondView =
+                reportView(render::presetCamera(scene, width, height, options.secondView->preset,
+                                                options.secondView->rotation),
+                           namedViewCaption(options.secondViewName), rendering)
+                    .first;
+        }
+        steps.next(kPdfWeight, "Laying out the PDF");
+        content.parameter = parameterOf(scene, base, range, options.thresholds);
+        content.settings.vss = base.vss;
+        content.settings.errorBound = vss::makeSolver(base.vss.solver)->errorBound();
+        content.settings.cue = base.cue;
+        content.settings.ambientOcclusion = base.ao.enabled;
+        content.settings.antialiasing = base.antialiasing;
+        content.settings.view = options.viewDescription;
+        content.findings = options.findings;
+        content.patient = study.patient;  // none for meshes: no patient block
+        pdf = renderPdf(content, options.paper);
+    }
+
+    // Last chance to stop: from here on the outputs are written.
+    steps.next(kWriteWeight, "Writing the files");
+    std::vector<WrittenOutput> written;
+    if (!out.png.empty()) {
+        writing([&] { writePng(out.png, shown->image); });
+        written.push_back({out.png, std::to_string(shown->image.width()) + "x" +
+                                        std::to_string(shown->image.height()) +
+                                        (options.transparent ? ", transparent background" : "")});
+    }
+    if (!out.dicomSc.empty()) {
+        writing([&] { (void)writeSecondaryCapture(out.dicomSc, shown->image, study); });
+        written.push_back({out.dicomSc, "DICOM Secondary Capture"});
+    }
+    if (!out.pdf.empty()) {
+        writing([&] { writePdfBytes(out.pdf, pdf); });
+        written.push_back({out.pdf, std::string("PDF report, ") +
+                                        (options.paper == PaperSize::A4 ? "A4" : "Letter")});
+    }
+    if (!out.dicomPdf.empty()) {
+        writing([&] { (void)writeEncapsulatedPdf(out.dicomPdf, pdf, options.title, study); });
+        written.push_back({out.dicomPdf, "DICOM Encapsulated PDF"});
+    }
+    return written;
+}
+
+}  // namespace vv::report

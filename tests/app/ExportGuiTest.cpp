@@ -1,0 +1,347 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// File > Export Image… and File > Export Report… driven programmatically
+// (fields set, accept()), and the export worker: rendering on its own thread
+// while the GUI thread's event loop keeps running. Needs a display:
+// xvfb-run -a, QT_QPA_PLATFORM=xcb. PDFs are read back with pdftotext / pdfinfo.
+#include <QAction>
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDoubleSpinBox>
+#include <QImage>
+#include <QLineEdit>
+#include <QMessageBox>
+#include <QPlainTextEdit>
+#include <QPointer>
+#include <QSpinBox>
+#include <QTimer>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <memory>
+#include <string>
+
+#include "GuiFixture.h"
+#include "ReportTestUtil.h"
+#include "gui/ExportImageDialog.h"
+#include "gui/ExportWorker.h"
+#include "gui/ReportDialog.h"
+#include "vv/io/DemoCtSeries.h"
+#include "vv/report/ViewExport.h"
+
+namespace vv::test {
+namespace {
+
+std::string readAll(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+/// What a finished worker reported.
+struct Outcome {
+    bool finished = false;
+    bool succeeded = false;
+    bool cancelled = false;
+    QString message;
+};
+
+/// Records the outcome of `worker` into `outcome`.
+void record(gui::ExportWorker* worker, const std::shared_ptr<Outcome>& outcome) {
+    QObject::connect(worker, &gui::ExportWorker::succeeded, [outcome](const QString& message) {
+        outcome->succeeded = true;
+        outcome->message = message;
+    });
+    QObject::connect(worker, &gui::ExportWorker::failed,
+                     [outcome](const QString& message) { outcome->message = message; });
+    QObject::connect(worker, &gui::ExportWorker::cancelled,
+                     [outcome] { outcome->cancelled = true; });
+    QObject::connect(worker, &gui::ExportWorker::finished, [outcome] { outcome->finished = true; });
+}
+
+class ExportGuiTest : public GuiFixture {
+  protected:
+    void SetUp() override {
+        GuiFixture::SetUp();
+        dir_ = panelTestDir() / ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+
+    /// Shows the tube (wss on the vessels) and waits for its exact VSS.
+    bool showTube() {
+        window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+        return waitForFrames() && waitForVss();
+    }
+
+    /// Accepts `dialog` and waits until the export it started has finished.
+    template <typename Dialog>
+    std::shared_ptr<Outcome> exportWith(Dialog& dialog) {
+        auto outcome = std::make_shared<Outcome>();
+        QObject::connect(&dialog, &Dialog::exportStarted,
+                         [outcome](gui::ExportWorker* worker) { record(worker, outcome); });
+        dialog.accept();
+        EXPECT_TRUE(waitUntil([&] { return outcome->finished; }, 120000)) << "no end of export";
+        return outcome;
+    }
+
+    /// An image export of the current view at width x height.
+    QImage exportImage(const std::string& name, int width, int height, bool legends,
+                       bool transparent) {
+        gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
+        const fs::path file = dir_ / name;
+        dialog.fileEdit()->setText(QString::fromStdString(file.string()));
+        dialog.keepAspectBox()->setChecked(false);
+        dialog.widthBox()->setValue(width);
+        dialog.heightBox()->setValue(height);
+        dialog.legendsBox()->setChecked(legends);
+        dialog.transparentBox()->setChecked(transparent);
+        const auto outcome = exportWith(dialog);
+        EXPECT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+        QImage image;
+        EXPECT_TRUE(image.load(QString::fromStdString(file.string()), "PNG")) << file;
+        return image;
+    }
+
+    fs::path dir_;
+};
+
+TEST_F(ExportGuiTest, MenuEntriesNeedAScene) {
+    QAction* image = window_->exportImageAction();
+    QAction* report = window_->exportReportAction();
+    ASSERT_NE(image, nullptr);
+    ASSERT_NE(report, nullptr);
+    EXPECT_FALSE(image->isEnabled());
+    EXPECT_FALSE(report->isEnabled());
+    EXPECT_FALSE(image->toolTip().isEmpty());
+    EXPECT_EQ(image->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_E));
+    EXPECT_EQ(report->shortcut(), QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    EXPECT_TRUE(image->isEnabled());
+    EXPECT_TRUE(report->isEnabled());
+}
+
+TEST_F(ExportGuiTest, ImageHasTheSizeAskedForAndLegendsAndTransparencyShow) {
+    ASSERT_TRUE(showTube());
+    const QImage withLegends = exportImage("legends.png", 640, 400, true, false);
+    const QImage without = exportImage("plain.png", 640, 400, false, false);
+    EXPECT_EQ(withLegends.size(), QSize(640, 400));
+    EXPECT_EQ(without.size(), QSize(640, 400));
+    // The legends cover part of the image, not all of it.
+    const double changed = changedFraction(withLegends, without);
+    EXPECT_GT(changed, 0.002);
+    EXPECT_LT(changed, 0.3);
+
+    // The VSS fills the void around the tube: switched off, that void is background.
+    window_->vssToggle()->setChecked(false);
+    const QImage transparent = exportImage("transparent.png", 640, 400, false, true);
+    ASSERT_TRUE(transparent.hasAlphaChannel());
+    EXPECT_EQ(qAlpha(transparent.pixel(1, 1)), 0);  // background corner
+    long clear = 0;
+    long opaque = 0;
+    for (int y = 0; y < transparent.height(); ++y) {
+        for (int x = 0; x < transparent.width(); ++x) {
+            const int alpha = qAlpha(transparent.pixel(x, y));
+            clear += alpha == 0 ? 1 : 0;
+            opaque += alpha == 255 ? 1 : 0;
+        }
+    }
+    EXPECT_GT(clear, 640L * 400 / 10);  // the background
+    EXPECT_GT(opaque, 640L * 4);        // the tube
+}
+
+TEST_F(ExportGuiTest, KeepAspectFollowsTheViewAndLargerThan8KIsRefused) {
+    ASSERT_TRUE(showTube());
+    gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
+    const QSize view = gui::viewPixelSize(*window_->viewer());
+    EXPECT_EQ(dialog.imageSize(), view);  // "View size" first
+    dialog.sizeChooser()->setCurrentIndex(
+        dialog.sizeChooser()->findData(gui::ExportImageDialog::Uhd4k));
+    const QSize fitted = dialog.imageSize();
+    EXPECT_TRUE(fitted.width() == 3840 || fitted.height() == 2160);
+    EXPECT_LE(fitted.width(), 3840);
+    EXPECT_LE(fitted.height(), 2160);
+    EXPECT_NEAR(static_cast<double>(fitted.width()) / fitted.height(),
+                static_cast<double>(view.width()) / view.height(), 0.01);
+
+    dialog.keepAspectBox()->setChecked(false);
+    dialog.widthBox()->setValue(8000);
+    dialog.heightBox()->setValue(4000);
+    EXPECT_FALSE(dialog.problem().isEmpty());
+    const fs::path file = dir_ / "huge.png";
+    dialog.fileEdit()->setText(QString::fromStdString(file.string()));
+    bool started = false;
+    QObject::connect(&dialog, &gui::ExportImageDialog::exportStarted,
+                     [&started] { started = true; });
+    dialog.accept();
+    EXPECT_FALSE(started);
+    EXPECT_NE(dialog.findChild<QMessageBox*>(QStringLiteral("exportProblemBox")), nullptr);
+    EXPECT_FALSE(fs::exists(file));
+}
+
+TEST_F(ExportGuiTest, ReportHasTheFindingsAndThePaperChosen) {
+    ASSERT_TRUE(showTube());
+    for (const bool letter : {false, true}) {
+        gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+        const fs::path pdf = dir_ / (letter ? "letter.pdf" : "a4.pdf");
+        dialog.pdfEdit()->setText(QString::fromStdString(pdf.string()));
+        dialog.paperChooser()->setCurrentIndex(letter ? 1 : 0);
+        dialog.findingsEdit()->setPlainText(
+            QStringLiteral("Low wall shear stress distally.\nNo stenosis."));
+        dialog.secondViewChooser()->setCurrentIndex(
+            dialog.secondViewChooser()->findData(QStringLiteral("anterior")));
+        dialog.pngBox()->setChecked(true);
+        const fs::path png = dir_ / (letter ? "letter.png" : "a4.png");
+        EXPECT_EQ(dialog.pngEdit()->text().toStdString(), png.string());  // beside the PDF
+        const auto outcome = exportWith(dialog);
+        ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+        EXPECT_TRUE(fs::exists(png));
+
+        std::string text;
+        ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0)
+            << text;
+        EXPECT_NE(text.find("Low wall shear stress distally."), std::string::npos) << text;
+        EXPECT_NE(text.find("No stenosis."), std::string::npos) << text;
+        EXPECT_NE(text.find("Anterior view"), std::string::npos) << text;
+        EXPECT_EQ(text.find("Patient"), std::string::npos) << text;  // a mesh: no patient
+        std::string info;
+        ASSERT_EQ(report::test::runTool("pdfinfo '" + pdf.string() + "'", info), 0) << info;
+        EXPECT_NE(info.find(letter ? "612 x 792 pts" : "595 x 842 pts (A4)"), std::string::npos)
+            << info;
+    }
+}
+
+TEST_F(ExportGuiTest, AnonymiseOnlyForDicomData) {
+    ASSERT_TRUE(showTube());
+    const gui::ReportDialog mesh(*window_->viewer(), window_->reportSource(), window_.get());
+    EXPECT_FALSE(mesh.anonymiseBox()->isEnabled());
+    EXPECT_FALSE(mesh.anonymiseBox()->isChecked());
+    EXPECT_FALSE(mesh.anonymiseBox()->toolTip().isEmpty());
+    EXPECT_FALSE(mesh.jobOptions().anonymise);
+
+    report::ReportSource dicom;
+    dicom.dicomPath = dir_ / "series";
+    gui::ReportDialog fromDicom(*window_->viewer(), dicom, window_.get());
+    EXPECT_TRUE(fromDicom.anonymiseBox()->isEnabled());
+    fromDicom.anonymiseBox()->setChecked(true);
+    EXPECT_TRUE(fromDicom.jobOptions().anonymise);
+}
+
+TEST_F(ExportGuiTest, DicomDataGivesThePatientBlockAndAnonymiseHidesIt) {
+    const fs::path series = fs::absolute(dir_ / "series");
+    io::DemoCtOptions ct;
+    ct.dims = {64, 64, 48};
+    io::CtSeriesWriteOptions write;
+    write.patientName = "Testpatient^Erika";
+    write.patientId = "EXPORT-42";
+    const std::string uid = io::writeCtSeries(series, io::generateDemoCt(ct).volume, write);
+    window_->openFiles({QString::fromStdString(series.string())});
+    ASSERT_TRUE(waitUntil(
+        [&] { return window_->viewer()->scene() != nullptr || !window_->lastError().isEmpty(); },
+        300000));
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    const report::ReportSource source = window_->reportSource();
+    EXPECT_EQ(source.dicomPath, series);
+    EXPECT_EQ(source.seriesInstanceUid, uid);
+    for (const bool anonymise : {false, true}) {
+        gui::ReportDialog dialog(*window_->viewer(), source, window_.get());
+        ASSERT_TRUE(dialog.anonymiseBox()->isEnabled());
+        dialog.anonymiseBox()->setChecked(anonymise);
+        const fs::path pdf = dir_ / (anonymise ? "anonymous.pdf" : "named.pdf");
+        dialog.pdfEdit()->setText(QString::fromStdString(pdf.string()));
+        const auto outcome = exportWith(dialog);
+        ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+        std::string text;
+        ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0);
+        EXPECT_NE(text.find("Patient and study"), std::string::npos) << text;
+        EXPECT_EQ(text.find("Testpatient") == std::string::npos, anonymise) << text;
+        EXPECT_EQ(text.find("EXPORT-42") == std::string::npos, anonymise) << text;
+        EXPECT_EQ(text.find("anonymised") != std::string::npos, anonymise) << text;
+    }
+}
+
+TEST_F(ExportGuiTest, ReportChecksItsOutputs) {
+    ASSERT_TRUE(showTube());
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    dialog.pdfEdit()->setText(QString::fromStdString((dir_ / "r.pdf").string()));
+    EXPECT_TRUE(dialog.problem().isEmpty()) << dialog.problem().toStdString();
+    dialog.dicomPdfBox()->setChecked(true);
+    dialog.dicomPdfEdit()->setText(dialog.pdfEdit()->text());  // the same file twice
+    EXPECT_FALSE(dialog.problem().isEmpty());
+    dialog.dicomPdfEdit()->setText(QString::fromStdString((dir_ / "no" / "d.dcm").string()));
+    EXPECT_FALSE(dialog.problem().isEmpty());  // no such folder
+    // Statistics thresholds are there for the wss on the vessels (the CLI's default).
+    EXPECT_TRUE(dialog.belowBox()->isEnabled());
+    EXPECT_TRUE(dialog.belowBox()->isChecked());
+    EXPECT_DOUBLE_EQ(dialog.belowValue()->value(), 0.4);
+}
+
+TEST_F(ExportGuiTest, CancelLeavesNoFileAndKeepsAnExistingOne) {
+    ASSERT_TRUE(showTube());
+    const fs::path pdf = dir_ / "existing.pdf";
+    std::ofstream(pdf) << "the old report";
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    dialog.pdfEdit()->setText(QString::fromStdString(pdf.string()));
+    dialog.dicomScBox()->setChecked(true);
+    const fs::path sc = dir_ / "existing-sc.dcm";
+    auto outcome = std::make_shared<Outcome>();
+    QObject::connect(&dialog, &gui::ReportDialog::exportStarted,
+                     [outcome](gui::ExportWorker* worker) {
+                         record(worker, outcome);
+                         worker->cancel();  // at once, as a click on Cancel
+                     });
+    dialog.accept();
+    ASSERT_TRUE(waitUntil([&] { return outcome->finished; }, 120000));
+    EXPECT_TRUE(outcome->cancelled);
+    EXPECT_FALSE(outcome->succeeded);
+    EXPECT_EQ(readAll(pdf), "the old report");
+    EXPECT_FALSE(fs::exists(sc));
+    EXPECT_EQ(report::test::listing(dir_), "existing.pdf ");
+}
+
+TEST_F(ExportGuiTest, WorkerRendersWhileTheEventLoopRunsAndMatchesTheGuiThread) {
+    ASSERT_TRUE(showTube());
+    report::ViewExportOptions options;
+    options.render = gui::currentViewOptions(*window_->viewer(), 1920, 1080);
+    options.legends = false;
+    const auto scene = window_->viewer()->scene();
+    auto image = std::make_shared<QImage>();
+    auto* worker = new gui::ExportWorker(
+        QStringLiteral("test render"),
+        [scene, options, image](render::OffscreenRenderer& renderer, const Progress&) {
+            *image = report::renderView(renderer, *scene, options).image;
+            return QString();
+        },
+        window_.get());
+    auto outcome = std::make_shared<Outcome>();
+    record(worker, outcome);
+    // A 10 ms timer on the GUI thread counts how often the event loop ran it.
+    int ticks = 0;
+    QTimer timer;
+    QObject::connect(&timer, &QTimer::timeout, [&ticks] { ++ticks; });
+    timer.start(10);
+    QElapsedTimer clock;
+    clock.start();
+    worker->start();
+    ASSERT_TRUE(waitUntil([&] { return outcome->finished; }, 120000));
+    const qint64 elapsed = clock.elapsed();
+    timer.stop();
+    delete worker;
+    ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+    RecordProperty("render_ms", static_cast<int>(elapsed));
+    RecordProperty("timer_ticks", ticks);
+    // The GUI thread kept running its timer through the render (which takes
+    // far longer than 10 ms here): at least a third of the ticks it was due.
+    EXPECT_GT(elapsed, 100);
+    EXPECT_GE(ticks, static_cast<int>(elapsed / 30)) << ticks << " ticks in " << elapsed << " ms";
+
+    // The same view rendered on the GUI thread.
+    render::OffscreenRenderer renderer;
+    const QImage reference = report::renderView(renderer, *scene, options).image;
+    ASSERT_EQ(image->size(), QSize(1920, 1080));
+    EXPECT_LT(changedFraction(*image, reference), 0.001);
+    QImage blank(image->size(), image->format());
+    blank.fill(Qt::black);
+    EXPECT_GT(changedFraction(*image, blank), 0.01);  // not an empty frame
+}
+
+}  // namespace
+}  // namespace vv::test

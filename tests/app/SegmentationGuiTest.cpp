@@ -1,0 +1,479 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The Segmentation panel: re-segmenting a loaded DICOM volume with a live
+// preview on a worker, Apply / Cancel, a seed picked by clicking the view,
+// and the ray-cast iso-surface display. Run under `xvfb-run -a` with
+// QT_QPA_PLATFORM=xcb (OpenGL 4.1 needed).
+#include <gtest/gtest.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDockWidget>
+#include <QDoubleSpinBox>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QMouseEvent>
+#include <QPointer>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QStatusBar>
+#include <QTimer>
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <optional>
+
+#include "GuiFixture.h"
+#include "SyntheticCta.h"
+#include "gui/MainWindow.h"
+#include "gui/SegmentationTask.h"
+#include "gui/SeriesDialog.h"
+#include "gui/panels/SegmentationPanel.h"
+#include "vv/io/DemoCtSeries.h"
+
+namespace vv::test {
+namespace {
+
+using gui::panels::SegmentationPanel;
+
+fs::path seriesDir() {
+    return panelTestDir() / "segmentation-cta";
+}
+
+/// The number of vertices of `scene` whose world position satisfies `keep`.
+template <typename Predicate>
+std::size_t countVertices(const io::Scene& scene, Predicate keep) {
+    std::size_t n = 0;
+    for (const auto& mesh : scene.meshes) {
+        for (const glm::vec3& p : mesh.positions) {
+            n += keep(glm::dvec3(p)) ? 1U : 0U;
+        }
+    }
+    return n;
+}
+
+std::size_t vertexCount(const io::Scene& scene) {
+    return countVertices(scene, [](const glm::dvec3&) { return true; });
+}
+
+/// The fraction of the pixels of `image` off the background colour `srgb`.
+double litFraction(const QImage& image, const glm::vec3& srgb) {
+    const glm::ivec3 bg(glm::round(srgb * 255.0F));
+    long lit = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            const QRgb p = image.pixel(x, y);
+            const int d = std::max(
+                {std::abs(qRed(p) - bg.r), std::abs(qGreen(p) - bg.g), std::abs(qBlue(p) - bg.b)});
+            lit += d > 12 ? 1 : 0;
+        }
+    }
+    return static_cast<double>(lit) / (static_cast<double>(image.width()) * image.height());
+}
+
+std::size_t triangleCount(const io::Scene& scene) {
+    std::size_t n = 0;
+    for (const auto& mesh : scene.meshes) {
+        n += mesh.triangleCount();
+    }
+    return n;
+}
+
+/// A 64 x 64 x 48 synthetic CTA of a 3-generation tree with a bone block
+/// beside it (~1000 HU, about 6 mm from the tree), written as a CT series.
+class SegmentationGuiTest : public GuiFixture {
+  protected:
+    static void SetUpTestSuite() {
+        GuiFixture::SetUpTestSuite();
+        fs::remove_all(seriesDir());
+        cta_ = std::make_unique<SyntheticCta>(makeSyntheticCta({64, 64, 48}, 3));
+        io::writeCtSeries(seriesDir(), cta_->volume);
+    }
+    static void TearDownTestSuite() {
+        std::error_code ec;
+        fs::remove_all(seriesDir(), ec);
+        cta_.reset();
+        GuiFixture::TearDownTestSuite();
+    }
+
+    [[nodiscard]] SegmentationPanel* panel() const { return window_->segmentationPanel(); }
+
+    /// Opens the series through File > Open Folder's path, lets `choose`
+    /// adjust the series dialog, accepts it and waits for the vessels.
+    void openSeries(const std::function<void(gui::SeriesDialog&)>& choose = {}) {
+        QPointer<gui::SeriesDialog> dialog;
+        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
+        window_->openDicom(QString::fromStdString(seriesDir().string()));
+        ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
+        ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
+        if (choose) {
+            choose(*dialog);
+        }
+        dialog->accept();
+        ASSERT_TRUE(waitUntil(
+            [&] { return window_->volume() != nullptr || !window_->lastError().isEmpty(); },
+            60000));
+        ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+        ASSERT_NE(window_->viewer()->scene(), nullptr);
+        ASSERT_TRUE(waitForFrames(1));
+    }
+
+    /// Waits for the next preview (after the debounce) and returns how long
+    /// the GUI thread went without processing a 5 ms timer meanwhile.
+    [[nodiscard]] qint64 waitForPreview(int previewsBefore) const {
+        QElapsedTimer sinceTick;
+        sinceTick.start();
+        qint64 longestGap = 0;
+        QTimer ticker;
+        ticker.setInterval(5);
+        QObject::connect(&ticker, &QTimer::timeout,
+                         [&] { longestGap = std::max(longestGap, sinceTick.restart()); });
+        ticker.start();
+        EXPECT_TRUE(waitUntil(
+            [&] { return panel()->previewsShown() > previewsBefore && !panel()->isPreviewing(); },
+            30000))
+            << "no preview: " << panel()->messageLabel()->text().toStdString();
+        return longestGap;
+    }
+
+    /// Scans the viewer for a pixel whose probe lands where `want` holds.
+    [[nodiscard]] std::optional<gui::ProbeResult> findPixel(
+        const std::function<bool(const glm::dvec3&)>& want) const {
+        gui::ViewerWidget* viewer = window_->viewer();
+        constexpr int kStep = 6;
+        for (int y = kStep; y < viewer->height(); y += kStep) {
+            for (int x = kStep; x < viewer->width(); x += kStep) {
+                auto hit = viewer->probeAt(QPointF(x, y));
+                if (hit && want(glm::dvec3(hit->worldPosition))) {
+                    return hit;
+                }
+            }
+        }
+        return std::nullopt;
+    }
+
+    /// A left click (press and release in place) on the viewer.
+    void click(const QPointF& position) const {
+        gui::ViewerWidget* viewer = window_->viewer();
+        const QPointF global = viewer->mapToGlobal(position);
+        QMouseEvent press(QEvent::MouseButtonPress, position, global, Qt::LeftButton,
+                          Qt::LeftButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(viewer, &press);
+        QMouseEvent release(QEvent::MouseButtonRelease, position, global, Qt::LeftButton,
+                            Qt::NoButton, Qt::NoModifier);
+        QCoreApplication::sendEvent(viewer, &release);
+    }
+
+    [[nodiscard]] QString statusText() const {
+        QStringList texts;
+        for (const QLabel* label : window_->statusBar()->findChildren<QLabel*>()) {
+            texts << label->text();
+        }
+        return texts.join(QLatin1Char('|'));
+    }
+
+    /// The largest voxel side, mm.
+    [[nodiscard]] static double voxelSize() {
+        const glm::dvec3 s = cta_->volume.spacing();
+        return std::max({s.x, s.y, s.z});
+    }
+
+    static inline std::unique_ptr<SyntheticCta> cta_;
+};
+
+TEST(SegmentationTaskTest, DownsamplingKeepsWorldPositionsAndFindsInRangeSeeds) {
+    io::Volume volume({9, 8, 7}, io::VoxelType::Int16);
+    glm::dmat4 m(1.0);
+    m[0] = glm::dvec4(0.5, 0.0, 0.0, 0.0);
+    m[1] = glm::dvec4(0.0, 0.7, 0.1, 0.0);
+    m[2] = glm::dvec4(0.0, 0.0, 1.5, 0.0);
+    m[3] = glm::dvec4(-3.0, 2.0, 1.0, 1.0);
+    volume.setIndexToWorld(m);
+    volume.setModality("CT");
+    for (std::size_t n = 0; n < volume.voxelCount(); ++n) {
+        volume.setValueAt(n, static_cast<float>(n % 1000));
+    }
+    const io::Volume coarse = gui::downsampledVolume(volume, 2);
+    EXPECT_EQ(coarse.dims(), glm::ivec3(5, 4, 4));
+    EXPECT_EQ(coarse.modality(), "CT");
+    for (const glm::ivec3 c : {glm::ivec3(0, 0, 0), glm::ivec3(4, 3, 3), glm::ivec3(2, 1, 3)}) {
+        EXPECT_EQ(coarse.value(c.x, c.y, c.z), volume.value(2 * c.x, 2 * c.y, 2 * c.z));
+        const glm::dvec3 a = coarse.worldPosition(glm::dvec3(c));
+        const glm::dvec3 b = volume.worldPosition(glm::dvec3(2 * c));
+        EXPECT_LT(glm::length(a - b), 1e-9);
+    }
+    EXPECT_THROW((void)gui::downsampledVolume(volume, 0), InvalidArgumentError);
+
+    // The seed search: the nearest in-range voxel within the radius, else none.
+    io::Volume ball({11, 11, 11}, io::VoxelType::Int16);
+    ball.setValueAt(ball.index(7, 5, 5), 400.0F);
+    ball.setValueAt(ball.index(3, 5, 5), 400.0F);
+    const auto near = gui::nearestVoxelInRange(ball, {6.2, 5.0, 5.0}, 200.0F, 700.0F, 2);
+    ASSERT_TRUE(near.has_value());
+    EXPECT_EQ(*near, glm::ivec3(7, 5, 5));
+    EXPECT_FALSE(gui::nearestVoxelInRange(ball, {5.0, 5.0, 5.0}, 200.0F, 700.0F, 1).has_value());
+    EXPECT_FALSE(gui::nearestVoxelInRange(ball, {6.2, 5.0, 5.0}, 500.0F, 700.0F, 3).has_value());
+
+    // Previews: at least every 2nd voxel, within the budget, not below 8 voxels an axis.
+    EXPECT_EQ(gui::previewStep({64, 64, 48}, 400000), 2);
+    EXPECT_EQ(gui::previewStep({512, 512, 400}, 400000), 7);
+    EXPECT_EQ(gui::previewStep({512, 512, 12}, 400000), 1);
+}
+
+TEST_F(SegmentationGuiTest, PanelIsOnlyEnabledForScenesFromAVolume) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    EXPECT_FALSE(panel()->isEnabled());
+    EXPECT_TRUE(panel()->toolTip().contains(QStringLiteral("Open Folder")))
+        << panel()->toolTip().toStdString();
+    EXPECT_EQ(window_->volume(), nullptr);
+
+    openSeries();
+    ASSERT_NE(window_->volume(), nullptr);
+    EXPECT_EQ(window_->volume()->dims(), cta_->volume.dims());
+    EXPECT_TRUE(panel()->isEnabled());
+    // CT defaults from the load, and the modality default shown.
+    EXPECT_DOUBLE_EQ(panel()->lowerBox()->value(), 200.0);
+    EXPECT_DOUBLE_EQ(panel()->upperBox()->value(), 700.0);
+    EXPECT_TRUE(panel()->boneRemovalBox()->isChecked());
+    ASSERT_TRUE(waitUntil([&] { return panel()->defaultButton()->isEnabled(); }));
+    EXPECT_TRUE(panel()->defaultLabel()->text().contains(QStringLiteral("700")));
+    window_->findChild<QDockWidget*>(QStringLiteral("segmentationPanelDock"))->raise();
+    QCoreApplication::processEvents();
+    window_->grab().save(
+        QString::fromStdString((panelTestDir() / "segmentation-panel.png").string()));
+
+    // A mesh scene again: disabled, the volume forgotten.
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    EXPECT_FALSE(panel()->isEnabled());
+    EXPECT_EQ(window_->volume(), nullptr);
+}
+
+TEST_F(SegmentationGuiTest, ThresholdChangesPreviewOnAWorker) {
+    openSeries();
+    const auto loaded = window_->viewer()->scene();
+    const Aabb treeBounds = loaded->bounds();
+    // No bone removal and a range above the lumen: only the bone block is left.
+    const int before = panel()->previewsShown();
+    panel()->boneRemovalBox()->setChecked(false);
+    panel()->upperBox()->setValue(3000.0);
+    panel()->lowerBox()->setValue(800.0);
+    EXPECT_TRUE(panel()->isPreviewing());
+    EXPECT_EQ(window_->viewer()->scene(), loaded);  // debounced: not there yet
+    // Started at once, it returns before the result: the work runs on a worker.
+    panel()->startPreview();
+    EXPECT_TRUE(panel()->isPreviewing());
+    EXPECT_EQ(window_->viewer()->scene(), loaded);
+    const qint64 gap = waitForPreview(before);
+    ASSERT_NE(panel()->lastOutcome(), nullptr);
+    const auto& block = *panel()->lastOutcome();
+    // The GUI thread kept running (its longest stall is a frame of the new scene).
+    std::cout << "[ figures ] preview, step " << block.step << ": " << block.milliseconds
+              << " ms on the worker; longest GUI stall " << gap << " ms\n";
+    EXPECT_LT(gap, 5000);
+    EXPECT_EQ(block.step, 2);
+    const auto shown = window_->viewer()->scene();
+    ASSERT_EQ(shown, block.scene);
+    ASSERT_EQ(shown->meshes.size(), 1U);
+    EXPECT_EQ(shown->meshes[0].name, "vessels (preview)");
+    EXPECT_TRUE(statusText().contains(QStringLiteral("Preview"))) << statusText().toStdString();
+    // Every vertex of the preview lies at the bone block (two coarse voxels of slack).
+    const double margin = 2.0 * block.step * voxelSize();
+    EXPECT_EQ(countVertices(*shown, [&](const glm::dvec3& p) { return !cta_->inBone(p, margin); }),
+              0U);
+    EXPECT_LT(glm::length(shown->bounds().size()), 0.6F * glm::length(treeBounds.size()));
+
+    // Back to the CT default range and bone removal: the tree again, far larger than the block.
+    ASSERT_TRUE(waitUntil([&] { return panel()->defaultButton()->isEnabled(); }));
+    const int again = panel()->previewsShown();
+    panel()->defaultButton()->click();
+    panel()->boneRemovalBox()->setChecked(true);
+    (void)waitForPreview(again);
+    const auto tree = window_->viewer()->scene();
+    EXPECT_DOUBLE_EQ(panel()->lowerBox()->value(), 200.0);
+    EXPECT_GT(countVertices(*tree, [&](const glm::dvec3& p) { return !cta_->inBone(p, margin); }),
+              vertexCount(*tree) / 2);
+    EXPECT_GT(glm::length(tree->bounds().size()), 0.8F * glm::length(treeBounds.size()));
+    EXPECT_NE(triangleCount(*tree), triangleCount(*shown));
+}
+
+TEST_F(SegmentationGuiTest, ApplyReplacesTheSceneAtFullResolutionKeepingTheCamera) {
+    openSeries();
+    window_->viewer()->setCamera(window_->viewer()->camera());  // fixed from here on
+    const render::Camera camera = window_->viewer()->camera();
+    const int before = panel()->previewsShown();
+    panel()->lowerBox()->setValue(250.0);
+    (void)waitForPreview(before);
+    const std::size_t previewTriangles = triangleCount(*window_->viewer()->scene());
+
+    bool applied = false;
+    QObject::connect(panel(), &SegmentationPanel::applyFinished, window_.get(),
+                     [&applied](bool ok) { applied = ok; });
+    panel()->applyButton()->click();
+    EXPECT_TRUE(panel()->isApplying());
+    EXPECT_FALSE(panel()->applyButton()->isEnabled());
+    EXPECT_TRUE(panel()->cancelButton()->isEnabled());
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 60000));
+    ASSERT_TRUE(applied) << panel()->messageLabel()->text().toStdString();
+    const auto scene = window_->viewer()->scene();
+    ASSERT_EQ(scene->meshes.size(), 1U);
+    EXPECT_EQ(scene->meshes[0].name, "vessels");
+    EXPECT_EQ(panel()->lastOutcome()->step, 1);
+    EXPECT_GT(triangleCount(*scene), previewTriangles);
+    EXPECT_EQ(window_->viewer()->camera().target(), camera.target());
+    EXPECT_FLOAT_EQ(window_->viewer()->camera().distance(), camera.distance());
+    EXPECT_TRUE(waitForFrames(1));
+}
+
+TEST_F(SegmentationGuiTest, CancelledApplyKeepsTheScene) {
+    openSeries();
+    const auto loaded = window_->viewer()->scene();
+    std::optional<bool> applied;
+    QObject::connect(panel(), &SegmentationPanel::applyFinished, window_.get(),
+                     [&applied](bool ok) { applied = ok; });
+    panel()->apply();
+    ASSERT_TRUE(panel()->isApplying());
+    panel()->cancelButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 60000));
+    ASSERT_TRUE(applied.has_value());
+    EXPECT_FALSE(*applied);
+    EXPECT_EQ(window_->viewer()->scene(), loaded);
+    EXPECT_TRUE(panel()->messageLabel()->text().contains(QStringLiteral("cancelled")));
+    EXPECT_TRUE(panel()->applyButton()->isEnabled());
+}
+
+TEST_F(SegmentationGuiTest, ClickedSeedKeepsOnlyItsStructure) {
+    // Tree and bone block both kept: no bone removal, a range up to 3000 HU.
+    openSeries([](gui::SeriesDialog& dialog) {
+        dialog.automaticThreshold()->setChecked(false);
+        dialog.lowerThreshold()->setValue(200.0);
+        dialog.upperThreshold()->setValue(3000.0);
+        dialog.componentsBox()->setValue(2);
+        dialog.boneRemoval()->setChecked(false);
+    });
+    const auto both = window_->viewer()->scene();
+    const double voxel = voxelSize();
+    ASSERT_GT(countVertices(*both, [&](const glm::dvec3& p) { return cta_->inBone(p, voxel); }),
+              0U);
+    const auto onBlock = findPixel([&](const glm::dvec3& p) { return cta_->inBone(p, voxel); });
+    const auto onTree =
+        findPixel([&](const glm::dvec3& p) { return !cta_->inBone(p, 3.0 * voxel); });
+    ASSERT_TRUE(onBlock && onTree);
+
+    // A click with Pick Seed on: the seed, its value, the seed mode, a preview of the block.
+    panel()->pickSeedButton()->setChecked(true);
+    const int before = panel()->previewsShown();
+    click(onBlock->widgetPosition);
+    ASSERT_TRUE(panel()->seed().has_value()) << panel()->messageLabel()->text().toStdString();
+    EXPECT_FALSE(panel()->pickSeedButton()->isChecked());
+    EXPECT_EQ(panel()->modeChooser()->currentIndex(),
+              static_cast<int>(SegmentationPanel::Mode::Seed));
+    EXPECT_FALSE(panel()->componentsBox()->isEnabled());
+    const glm::ivec3 s = *panel()->seed();
+    EXPECT_TRUE(panel()->seedLabel()->text().contains(QString::number(s.x)));
+    EXPECT_GE(cta_->volume.value(s.x, s.y, s.z), 200.0F);
+    (void)waitForPreview(before);
+    const double coarseMargin = 2.0 * panel()->lastOutcome()->step * voxel;
+    EXPECT_EQ(countVertices(*window_->viewer()->scene(),
+                            [&](const glm::dvec3& p) { return !cta_->inBone(p, coarseMargin); }),
+              0U);
+
+    // Apply: the block at full resolution, nothing of the tree.
+    panel()->apply();
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 60000));
+    const auto block = window_->viewer()->scene();
+    ASSERT_EQ(panel()->lastOutcome()->scene, block);
+    EXPECT_EQ(panel()->lastOutcome()->componentsKept, 1U);
+    EXPECT_EQ(countVertices(*block, [&](const glm::dvec3& p) { return !cta_->inBone(p, voxel); }),
+              0U);
+
+    // A seed on the tree (where it was clicked before): the tree alone.
+    ASSERT_TRUE(panel()->pickSeed(onTree->worldPosition));
+    panel()->apply();
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 60000));
+    const auto tree = window_->viewer()->scene();
+    ASSERT_EQ(panel()->lastOutcome()->scene, tree);
+    EXPECT_EQ(countVertices(*tree, [&](const glm::dvec3& p) { return cta_->inBone(p, 0.0); }), 0U);
+    EXPECT_GT(vertexCount(*tree), 0U);
+}
+
+TEST_F(SegmentationGuiTest, SeedInTheBackgroundExplainsAndKeepsTheScene) {
+    openSeries();
+    const auto loaded = window_->viewer()->scene();
+    // Voxel (1, 1, 1): tissue, about 40 HU, far from the tree.
+    const glm::vec3 tissue(cta_->volume.worldPosition({1.0, 1.0, 1.0}));
+    ASSERT_LT(cta_->volume.value(1, 1, 1), 200.0F);
+    EXPECT_FALSE(panel()->pickSeed(tissue));
+    EXPECT_FALSE(panel()->seed().has_value());
+    const QString message = panel()->messageLabel()->text();
+    EXPECT_TRUE(message.contains(QStringLiteral("outside the threshold range")))
+        << message.toStdString();
+    EXPECT_TRUE(message.contains(QStringLiteral("no component there")));
+    EXPECT_TRUE(message.contains(QStringLiteral("(1, 1, 1)")));
+    EXPECT_EQ(panel()->modeChooser()->currentIndex(),
+              static_cast<int>(SegmentationPanel::Mode::Largest));
+    EXPECT_FALSE(panel()->isPreviewing());
+    // Outside the volume altogether.
+    EXPECT_FALSE(panel()->pickSeed(glm::vec3(cta_->volume.worldPosition({-20.0, 0.0, 0.0}))));
+    EXPECT_TRUE(panel()->messageLabel()->text().contains(QStringLiteral("outside the volume")));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(window_->viewer()->scene(), loaded);
+}
+
+TEST_F(SegmentationGuiTest, RaycastDisplayShowsTheVolumeWithVssAndSwitchesBack) {
+    openSeries();
+    gui::ViewerWidget* viewer = window_->viewer();
+    const auto meshes = viewer->scene();
+    ASSERT_TRUE(waitForVss());
+    EXPECT_FALSE(panel()->isoBox()->isEnabled());
+
+    auto* chooser = panel()->displayChooser();
+    chooser->setCurrentIndex(
+        chooser->findData(static_cast<int>(SegmentationPanel::Display::RaycastIsoSurface)));
+    EXPECT_EQ(panel()->display(), SegmentationPanel::Display::RaycastIsoSurface);
+    ASSERT_EQ(viewer->volume(), window_->volume());
+    EXPECT_FLOAT_EQ(viewer->isoValue(), 200.0F);  // the lower threshold
+    EXPECT_TRUE(panel()->isoBox()->isEnabled());
+    EXPECT_FALSE(panel()->lowerBox()->isEnabled());
+    EXPECT_FALSE(panel()->applyButton()->isEnabled());
+    ASSERT_NE(viewer->scene(), nullptr);
+    EXPECT_TRUE(viewer->scene()->meshes.empty());
+    ASSERT_TRUE(waitForFrames(2));
+    ASSERT_TRUE(waitForVss());
+    const QImage image = viewer->grabFramebuffer();
+    // Vessels and VSS cover a good part of the view: pixels off the background.
+    EXPECT_GT(litFraction(image, viewer->background()), 0.05);
+    EXPECT_TRUE(viewer->vssStatus().shown);
+    image.save(QString::fromStdString((panelTestDir() / "segmentation-raycast.png").string()));
+
+    // The probe on the ray-cast iso-surface: position and depth, no value.
+    const auto hit = findPixel([](const glm::dvec3&) { return true; });
+    ASSERT_TRUE(hit.has_value());
+    EXPECT_EQ(hit->meshIndex, -1);
+    EXPECT_TRUE(std::isnan(hit->value));
+    EXPECT_GT(hit->linearDepth, 0.0F);
+    EXPECT_TRUE(cta_->volume.worldBounds().min.x - 1.0F <= hit->worldPosition.x &&
+                hit->worldPosition.x <= cta_->volume.worldBounds().max.x + 1.0F);
+    // A seed picked on the iso-surface.
+    EXPECT_TRUE(panel()->pickSeed(hit->worldPosition))
+        << panel()->messageLabel()->text().toStdString();
+
+    // A higher iso value ray casts a different surface.
+    panel()->isoBox()->setValue(600.0);
+    EXPECT_FLOAT_EQ(viewer->isoValue(), 600.0F);
+
+    // Back to the surface mesh: the meshes as before, no volume.
+    chooser->setCurrentIndex(
+        chooser->findData(static_cast<int>(SegmentationPanel::Display::SurfaceMesh)));
+    EXPECT_EQ(viewer->volume(), nullptr);
+    EXPECT_EQ(viewer->scene(), meshes);
+    EXPECT_TRUE(panel()->lowerBox()->isEnabled());
+    ASSERT_TRUE(waitForFrames(2));
+    // Drawn as before, not clipped away by the volume's clip planes.
+    EXPECT_GT(litFraction(viewer->grabFramebuffer(), viewer->background()), 0.05);
+}
+
+}  // namespace
+}  // namespace vv::test
