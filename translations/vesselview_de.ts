@@ -1647,6 +1647,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>No surface under the mouse: click on a vessel</source>
         <translation>Keine Oberfläche unter der Maus: ein Gefäß anklicken</translation>
     </message>
+    <message>
+        <source>The volume cannot be ray cast here: %1</source>
+        <translation>Das Volumen kann hier nicht per Raycasting dargestellt werden: %1</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::VssPanel</name>

@@ -487,7 +487,18 @@ void ViewerWidget::paintGL() {
                                                             renderer_.lastCueDepthRange())
                                        : render::Legends{});
     } catch (const vv::Error& e) {
-        fail(tr("Drawing failed: %1").arg(QString::fromStdString(e.what())));
+        const QString why = QString::fromStdString(e.what());
+        if (volume_) {
+            // Most likely the volume (too big for a 3-D texture or the GPU's
+            // memory): drop it and go on with the scene. When the error was
+            // another, the next frame fails without a volume and says so.
+            volume_.reset();
+            renderer_.setVolume(nullptr, 0.0F);
+            QTimer::singleShot(0, this, [this, why] { emit volumeFailed(why); });
+            update();
+            return;
+        }
+        fail(tr("Drawing failed: %1").arg(why));
         paintMessage(error_);
         return;
     }

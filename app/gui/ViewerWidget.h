@@ -238,6 +238,10 @@ class ViewerWidget : public QOpenGLWidget {
     void cameraSettled();
     /// OpenGL cannot be used; `message` says why. Emitted at most once.
     void renderFailed(const QString& message);
+    /// Drawing failed while a volume was ray cast (e.g. larger than this
+    /// GPU's 3-D textures or memory): the viewer dropped the volume and goes
+    /// on drawing the scene; `message` says why.
+    void volumeFailed(const QString& message);
     /// A point was picked (measure mode click or Ctrl + click on a vessel).
     void pointPicked(const vv::gui::ProbeResult& result);
     /// A pick landed on the background (no vessel under the mouse).

@@ -475,5 +475,36 @@ TEST_F(SegmentationGuiTest, RaycastDisplayShowsTheVolumeWithVssAndSwitchesBack) 
     EXPECT_GT(litFraction(viewer->grabFramebuffer(), viewer->background()), 0.05);
 }
 
+TEST_F(SegmentationGuiTest, VolumeTooBigToRayCastFallsBackToTheSurface) {
+    openSeries();
+    gui::ViewerWidget* viewer = window_->viewer();
+    const auto meshes = viewer->scene();
+    // 40,000 slices: more than any GPU's 3-D texture side (llvmpipe: 2048).
+    auto huge = std::make_shared<io::Volume>(glm::ivec3(2, 2, 40000), io::VoxelType::Int16);
+    panel()->setVolume(huge);
+    bool volumeFailed = false;
+    bool renderFailed = false;
+    QObject::connect(viewer, &gui::ViewerWidget::volumeFailed, viewer,
+                     [&](const QString&) { volumeFailed = true; });
+    QObject::connect(viewer, &gui::ViewerWidget::renderFailed, viewer,
+                     [&](const QString&) { renderFailed = true; });
+    auto* chooser = panel()->displayChooser();
+    chooser->setCurrentIndex(
+        chooser->findData(static_cast<int>(SegmentationPanel::Display::RaycastIsoSurface)));
+    ASSERT_TRUE(waitUntil([&] { return volumeFailed || renderFailed; }, 30000));
+    EXPECT_TRUE(volumeFailed);
+    EXPECT_FALSE(renderFailed);
+    // The panel is back on the surface, says why, and the viewer goes on drawing.
+    EXPECT_TRUE(
+        waitUntil([&] { return panel()->display() == SegmentationPanel::Display::SurfaceMesh; }));
+    EXPECT_EQ(viewer->volume(), nullptr);
+    EXPECT_EQ(viewer->scene(), meshes);
+    EXPECT_NE(panel()->messageLabel()->text().indexOf(QStringLiteral("cannot be ray cast")), -1)
+        << panel()->messageLabel()->text().toStdString();
+    ASSERT_TRUE(waitForFrames(2));
+    EXPECT_GT(litFraction(viewer->grabFramebuffer(), viewer->background()), 0.05);
+    EXPECT_FALSE(renderFailed);
+}
+
 }  // namespace
 }  // namespace vv::test

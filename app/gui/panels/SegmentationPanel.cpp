@@ -53,6 +53,12 @@ SegmentationPanel::SegmentationPanel(ViewerWidget* viewer, QWidget* parent)
     buildControls();
     makeNarrow(this);
     viewer_->installEventFilter(this);
+    connect(viewer_, &ViewerWidget::volumeFailed, this, [this](const QString& why) {
+        if (display_ == Display::RaycastIsoSurface) {
+            setDisplay(Display::SurfaceMesh);
+            showMessage(tr("The volume cannot be ray cast here: %1").arg(why));
+        }
+    });
     setVolume(nullptr);
 }
 
