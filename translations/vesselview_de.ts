@@ -1040,6 +1040,18 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>This object has no point arrays</source>
         <translation>Dieses Objekt hat keine Punktdatenfelder</translation>
     </message>
+    <message>
+        <source>DICOM Series…</source>
+        <translation>DICOM-Serien…</translation>
+    </message>
+    <message>
+        <source>Choose a DICOM folder and browse its patients, studies and series</source>
+        <translation>Einen DICOM-Ordner wählen und seine Patienten, Studien und Serien durchsuchen</translation>
+    </message>
+    <message>
+        <source>Browse the patients, studies and series of %1 and load another series</source>
+        <translation>Patienten, Studien und Serien von %1 durchsuchen und eine andere Serie laden</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::DisplayPanel</name>

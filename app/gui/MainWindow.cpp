@@ -330,6 +330,14 @@ void MainWindow::buildDocks() {
     connect(functionalPanel_, &panels::FunctionalPanel::changed, this, &MainWindow::syncControls);
     connect(displayPanel_, &panels::DisplayPanel::changed, this, &MainWindow::syncControls);
     connect(dataPanel_, &panels::DataPanel::changed, this, &MainWindow::syncControls);
+    connect(dataPanel_, &panels::DataPanel::browseSeries, this, [this](const QString& path) {
+        const QString folder =
+            path.isEmpty() ? QFileDialog::getExistingDirectory(this, tr("Open DICOM folder"))
+                           : path;
+        if (!folder.isEmpty()) {
+            openDicom(folder);
+        }
+    });
     connect(segmentationPanel_, &panels::SegmentationPanel::sceneReady, this,
             &MainWindow::showSegmentedScene);
     connect(segmentationPanel_, &panels::SegmentationPanel::statusMessage, this,
@@ -702,6 +710,14 @@ void MainWindow::showScene(std::shared_ptr<const io::Scene> scene, const QString
     viewer_->setScene(scene);
     functionalPanel_->sceneChanged();
     dataPanel_->sceneChanged(title, sceneFiles_);
+    QString dicomSource;
+    for (const QString& file : sceneFiles_) {
+        if (io::isDicomSource(std::filesystem::path(QFile::encodeName(file).toStdString()))) {
+            dicomSource = file;
+            break;
+        }
+    }
+    dataPanel_->setDicomSource(dicomSource);
     sceneFiles_.clear();
     if (pendingSession_) {
         // A session being opened: its settings and camera, now that its data is shown.

@@ -22,6 +22,7 @@
 #include "GuiFixture.h"
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
+#include "gui/panels/DataPanel.h"
 #include "vv/io/DemoCtSeries.h"
 
 namespace {
@@ -120,6 +121,23 @@ TEST_F(DicomGuiTest, FolderWithTwoSeriesShowsTheChooserAndLoadsVessels) {
         QString::fromStdString((vv::test::panelTestDir() / "dicom-vessels.png").string()));
     // The patient name is not in the window title or the status bar.
     EXPECT_FALSE(window_->windowTitle().contains(QStringLiteral("Demo")));
+
+    // The Data panel's series browser reopens the chooser on the same folder.
+    QPushButton* browse = window_->dataPanel()->seriesButton();
+    ASSERT_NE(browse, nullptr);
+    EXPECT_TRUE(browse->toolTip().contains(QStringLiteral("two")))
+        << browse->toolTip().toStdString();
+    dialog.clear();
+    browse->click();
+    ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
+    ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
+    int listed = 0;
+    for (QTreeWidgetItemIterator it(dialog->tree()); *it != nullptr; ++it) {
+        listed += (*it)->text(0).startsWith(QStringLiteral("Series")) ? 1 : 0;
+    }
+    EXPECT_EQ(listed, 2);
+    dialog->reject();
+    EXPECT_EQ(window_->viewer()->scene(), scene);  // browsing changes nothing
 }
 
 TEST_F(DicomGuiTest, DroppedSeriesFolderLoadsWithChosenOptions) {

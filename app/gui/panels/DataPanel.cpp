@@ -7,6 +7,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
 #include <QToolButton>
@@ -70,12 +71,26 @@ DataPanel::DataPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), v
     tree_->header()->setStretchLastSection(false);
     tree_->setRootIsDecorated(true);
     layout->addWidget(tree_, 1);
+    series_ = new QPushButton(tr("DICOM Series…"), this);
+    series_->setObjectName(QStringLiteral("dicomSeries"));
+    connect(series_, &QPushButton::clicked, this, [this] { emit browseSeries(dicomSource_); });
+    layout->addWidget(series_);
+    setDicomSource({});
     sceneChanged({}, {});
     connect(tree_, &QTreeWidget::itemChanged, this, [this](QTreeWidgetItem* item, int column) {
         if (!filling_ && column == NameColumn && item->parent() == nullptr) {
             applyVisibility();
         }
     });
+}
+
+void DataPanel::setDicomSource(const QString& dicomSource) {
+    dicomSource_ = dicomSource;
+    series_->setToolTip(
+        dicomSource.isEmpty()
+            ? tr("Choose a DICOM folder and browse its patients, studies and series")
+            : tr("Browse the patients, studies and series of %1 and load another series")
+                  .arg(QFileInfo(dicomSource).fileName()));
 }
 
 QToolButton* DataPanel::colorButton(int index) const {

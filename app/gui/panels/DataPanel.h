@@ -9,6 +9,7 @@
 
 class QComboBox;
 class QLabel;
+class QPushButton;
 class QSpinBox;
 class QToolButton;
 class QTreeWidget;
@@ -67,9 +68,18 @@ class DataPanel : public QWidget {
     /// writing them back), e.g. after a session was applied.
     void syncFromViewer();
 
+    /// "DICOM Series…": browses the series of `dicomSource` (the folder, DICOMDIR
+    /// or file the shown scene came from) when it is not empty, else asks for
+    /// a DICOM folder. Emits browseSeries(dicomSource); the main window opens
+    /// the series chooser on it.
+    void setDicomSource(const QString& dicomSource);
+    [[nodiscard]] QPushButton* seriesButton() const noexcept { return series_; }
+
   signals:
     /// The panel changed the viewer's settings (visibility, colour, opacity, array).
     void changed();
+    /// The "DICOM Series…" button: browse the series at `path` (empty: choose a folder).
+    void browseSeries(const QString& path);
 
   private:
     /// The style's hidden meshes from the check boxes.
@@ -84,6 +94,8 @@ class DataPanel : public QWidget {
     ViewerWidget* viewer_;
     QLabel* file_ = nullptr;
     QTreeWidget* tree_ = nullptr;
+    QPushButton* series_ = nullptr;
+    QString dicomSource_;
     bool filling_ = false;  ///< sceneChanged() / syncFromViewer() is filling the tree
 };
 
