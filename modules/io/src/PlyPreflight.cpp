@@ -351,6 +351,16 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
                     throw FormatError(
                         file, "the PLY line for " + where() + " has no line end: truncated file");
                 }
+                // vtkPLY splits data words at spaces and tabs only: another
+                // control character (e.g. a vertical tab) leaves it a word short
+                // and it reads past the line (found by fuzzing).
+                if (std::any_of(line.begin(), line.end(), [](char c) {
+                        const auto u = static_cast<unsigned char>(c);
+                        return (u < 0x20 && c != '\t' && c != '\r') || u == 0x7F;
+                    })) {
+                    throw FormatError(file, "the PLY line for " + where() +
+                                                " has a control character: corrupt file");
+                }
                 const auto words = splitWords(line);
                 std::size_t w = 0;
                 const auto number = [&](std::string_view token, const char* what) {
