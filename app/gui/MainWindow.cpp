@@ -806,6 +806,17 @@ void MainWindow::clearMeasurement() {
 bool MainWindow::saveSessionTo(const QString& path) {
     Session session = captureSession(*viewer_, viewer_->scene() ? shownFiles_ : QStringList());
     session.layout = saveState(kLayoutVersion);
+    if (viewer_->scene() && !shownSeriesUid_.empty()) {
+        // DICOM data: the series, and for an image series the Segmentation
+        // panel's settings, so that the session reopens without asking.
+        io::SceneSourceOptions dicom;
+        dicom.seriesInstanceUid = shownSeriesUid_;
+        if (volume_) {
+            dicom.segmentation = segmentationPanel_->segmentationOptions();
+            dicom.surface = segmentationPanel_->surfaceOptions();
+        }
+        session.dicom = dicom;
+    }
     try {
         saveSession(std::filesystem::path(QFile::encodeName(path).toStdString()), session);
     } catch (const vv::Error& e) {
@@ -835,6 +846,12 @@ bool MainWindow::openSession(const QString& path) {
         return true;
     }
     pendingSession_ = session;
+    if (session.dicom && session.files.size() == 1) {
+        std::vector<std::filesystem::path> paths{
+            QFile::encodeName(session.files.front()).toStdString()};
+        startTask(MeshLoadTask::loadFiles(std::move(paths), *session.dicom, this), session.files);
+        return true;
+    }
     openFiles(session.files);
     return true;
 }

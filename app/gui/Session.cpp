@@ -343,6 +343,65 @@ void applySession(ViewerWidget& viewer, const Session& session) {
     viewer.setCamera(camera);
 }
 
+/// The "dicom" object: the series and its segmentation.
+QJsonObject dicomToJson(const io::SceneSourceOptions& d) {
+    const io::SegmentationOptions& seg = d.segmentation;
+    QJsonObject o{
+        {QStringLiteral("series"), QString::fromStdString(d.seriesInstanceUid)},
+        {QStringLiteral("components"), seg.keepComponents},
+        {QStringLiteral("triangles"), static_cast<double>(d.surface.targetTriangles)},
+    };
+    if (seg.range) {
+        o.insert(QStringLiteral("threshold"), QJsonArray{static_cast<double>(seg.range->lower),
+                                                         static_cast<double>(seg.range->upper)});
+    }
+    if (seg.seed) {
+        o.insert(QStringLiteral("seed"), QJsonArray{seg.seed->x, seg.seed->y, seg.seed->z});
+    }
+    if (seg.removeBone) {
+        o.insert(QStringLiteral("boneRemoval"), *seg.removeBone);
+    }
+    return o;
+}
+
+/// Reads the "dicom" object (see dicomToJson).
+io::SceneSourceOptions readDicom(const Reader& r, const QJsonValue& value) {
+    const QString w = QStringLiteral("dicom");
+    if (!value.isObject()) {
+        r.fail(w, QStringLiteral("must be an object"));
+    }
+    const QJsonObject o = value.toObject();
+    io::SceneSourceOptions d;
+    d.seriesInstanceUid = r.string(o, w, "series").toStdString();
+    d.segmentation.keepComponents = r.integer(o, w, "components", 1, 255);
+    d.surface.targetTriangles = static_cast<std::size_t>(r.number(o, w, "triangles", 0.0, 1e9));
+    if (const QJsonValue t = o.value(QLatin1String("threshold")); !t.isUndefined()) {
+        const auto n = r.numbers(t, w + QStringLiteral(".threshold"), 2, -kHuge, kHuge);
+        if (!(n[0] <= n[1])) {
+            r.fail(w + QStringLiteral(".threshold"), QStringLiteral("must have lower <= upper"));
+        }
+        io::ThresholdRange range;
+        range.lower = static_cast<float>(n[0]);
+        range.upper = static_cast<float>(n[1]);
+        range.rule = "saved in the session";
+        d.segmentation.range = range;
+    }
+    if (const QJsonValue seed = o.value(QLatin1String("seed")); !seed.isUndefined()) {
+        const auto n = r.numbers(seed, w + QStringLiteral(".seed"), 3, 0.0, 1e6);
+        for (const double c : n) {
+            if (c != std::floor(c)) {
+                r.fail(w + QStringLiteral(".seed"), QStringLiteral("must be voxel indices"));
+            }
+        }
+        d.segmentation.seed =
+            glm::ivec3(static_cast<int>(n[0]), static_cast<int>(n[1]), static_cast<int>(n[2]));
+    }
+    if (o.contains(QLatin1String("boneRemoval"))) {
+        d.segmentation.removeBone = r.boolean(o, w, "boneRemoval");
+    }
+    return d;
+}
+
 QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
     static_cast<void>(file);
     QJsonArray files;
@@ -416,6 +475,9 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
     };
     if (!s.layout.isEmpty()) {
         root.insert(QStringLiteral("layout"), QString::fromLatin1(s.layout.toBase64()));
+    }
+    if (s.dicom) {
+        root.insert(QStringLiteral("dicom"), dicomToJson(*s.dicom));
     }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
@@ -574,6 +636,9 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
             r.fail(QStringLiteral("layout"), QStringLiteral("must be a string"));
         }
         s.layout = QByteArray::fromBase64(layout.toString().toLatin1());
+    }
+    if (const QJsonValue dicom = root.value(QLatin1String("dicom")); !dicom.isUndefined()) {
+        s.dicom = readDicom(r, dicom);
     }
     return s;
 }

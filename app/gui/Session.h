@@ -6,7 +6,9 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <optional>
 
+#include "vv/io/SceneSource.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
 
@@ -54,6 +56,12 @@ struct Session {
     glm::vec3 background{0.13F, 0.14F, 0.16F};
     bool legends = true;
     QByteArray layout;  ///< QMainWindow::saveState(); empty = keep the current one
+    /// DICOM data (files holds its folder, DICOMDIR or file): the series and
+    /// how it was segmented into surfaces, so that opening the session loads
+    /// the same vessels without asking. Only seriesInstanceUid, segmentation
+    /// (range, keepComponents, seed, removeBone) and surface.targetTriangles
+    /// are stored. Absent for meshes (and in older sessions).
+    std::optional<io::SceneSourceOptions> dicom;
 };
 
 /// The version saveSession() writes.

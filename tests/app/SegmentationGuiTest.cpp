@@ -30,6 +30,7 @@
 #include "gui/MainWindow.h"
 #include "gui/SegmentationTask.h"
 #include "gui/SeriesDialog.h"
+#include "gui/Session.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "vv/io/DemoCtSeries.h"
 
@@ -473,6 +474,45 @@ TEST_F(SegmentationGuiTest, RaycastDisplayShowsTheVolumeWithVssAndSwitchesBack) 
     ASSERT_TRUE(waitForFrames(2));
     // Drawn as before, not clipped away by the volume's clip planes.
     EXPECT_GT(litFraction(viewer->grabFramebuffer(), viewer->background()), 0.05);
+}
+
+TEST_F(SegmentationGuiTest, SessionReopensTheSeriesWithItsSegmentation) {
+    openSeries();
+    // A segmentation other than the default: threshold 300..700 HU, applied.
+    panel()->lowerBox()->setValue(300.0);
+    bool applied = false;
+    QObject::connect(panel(), &SegmentationPanel::applyFinished, window_.get(),
+                     [&applied](bool ok) { applied = ok; });
+    panel()->applyButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 60000));
+    ASSERT_TRUE(applied) << panel()->messageLabel()->text().toStdString();
+    const std::size_t triangles = triangleCount(*window_->viewer()->scene());
+
+    const fs::path file = panelTestDir() / "dicom-session.vvs";
+    ASSERT_TRUE(window_->saveSessionTo(QString::fromStdString(file.string())));
+    const gui::Session saved = gui::loadSession(file);
+    ASSERT_TRUE(saved.dicom.has_value());
+    EXPECT_FALSE(saved.dicom->seriesInstanceUid.empty());
+    ASSERT_TRUE(saved.dicom->segmentation.range.has_value());
+    EXPECT_FLOAT_EQ(saved.dicom->segmentation.range->lower, 300.0F);
+
+    // Reopened: the same vessels, without the series chooser.
+    window_->setScene(nullptr, QString());
+    bool dialogShown = false;
+    bool sessionApplied = false;
+    QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                     [&](gui::SeriesDialog*) { dialogShown = true; });
+    QObject::connect(window_.get(), &gui::MainWindow::sessionApplied, window_.get(),
+                     [&] { sessionApplied = true; });
+    ASSERT_TRUE(window_->openSession(QString::fromStdString(file.string())));
+    ASSERT_TRUE(
+        waitUntil([&] { return sessionApplied || !window_->lastError().isEmpty(); }, 60000));
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    EXPECT_FALSE(dialogShown);
+    ASSERT_NE(window_->viewer()->scene(), nullptr);
+    EXPECT_EQ(triangleCount(*window_->viewer()->scene()), triangles);
+    EXPECT_NE(window_->volume(), nullptr);
+    EXPECT_DOUBLE_EQ(panel()->lowerBox()->value(), 300.0);
 }
 
 TEST_F(SegmentationGuiTest, VolumeTooBigToRayCastFallsBackToTheSurface) {

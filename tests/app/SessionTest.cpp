@@ -155,6 +155,39 @@ TEST(SessionFile, TheDepthRangeIsOptionalAndChecked) {
               std::string::npos);
 }
 
+TEST(SessionFile, TheDicomSourceRoundTripsAndIsChecked) {
+    gui::Session s = sampleSession();
+    EXPECT_FALSE(gui::sessionFromJson(gui::sessionToJson(s, sessionDir() / "x.vvs"),
+                                      sessionDir() / "x.vvs")
+                     .dicom.has_value());  // meshes: none
+    io::SceneSourceOptions dicom;
+    dicom.seriesInstanceUid = "1.2.826.0.1.3680043.2.1125.5";
+    dicom.segmentation.range = io::ThresholdRange{250.0F, 650.0F, "chosen"};
+    dicom.segmentation.keepComponents = 3;
+    dicom.segmentation.seed = glm::ivec3(4, 5, 6);
+    dicom.segmentation.removeBone = false;
+    dicom.surface.targetTriangles = 12345;
+    s.dicom = dicom;
+    const QByteArray json = gui::sessionToJson(s, sessionDir() / "dicom.vvs");
+    const gui::Session back = gui::sessionFromJson(json, sessionDir() / "dicom.vvs");
+    ASSERT_TRUE(back.dicom.has_value());
+    EXPECT_EQ(back.dicom->seriesInstanceUid, dicom.seriesInstanceUid);
+    ASSERT_TRUE(back.dicom->segmentation.range.has_value());
+    EXPECT_FLOAT_EQ(back.dicom->segmentation.range->lower, 250.0F);
+    EXPECT_FLOAT_EQ(back.dicom->segmentation.range->upper, 650.0F);
+    EXPECT_EQ(back.dicom->segmentation.keepComponents, 3);
+    EXPECT_EQ(back.dicom->segmentation.seed, glm::ivec3(4, 5, 6));
+    EXPECT_EQ(back.dicom->segmentation.removeBone, std::optional<bool>(false));
+    EXPECT_EQ(back.dicom->surface.targetTriangles, 12345U);
+
+    QByteArray bad = json;
+    bad.replace("\"components\": 3", "\"components\": 0");
+    EXPECT_NE(errorFor("dicom-components.vvs", bad).find("dicom.components"), std::string::npos);
+    bad = json;
+    bad.replace("650", "-650");
+    EXPECT_NE(errorFor("dicom-threshold.vvs", bad).find("dicom.threshold"), std::string::npos);
+}
+
 TEST(SessionFile, RelativeFilesResolveAgainstTheSessionFolder) {
     QByteArray json = sampleWith("\"/data/a.vtp\"", "\"meshes/a.vtp\"");
     const gui::Session s = gui::sessionFromJson(json, sessionDir() / "rel.vvs");
