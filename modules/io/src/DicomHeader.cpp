@@ -8,6 +8,8 @@
 #include <dcmtk/dcmdata/dcfilefo.h>
 #include <dcmtk/dcmdata/dcmetinf.h>
 #include <dcmtk/dcmdata/dcpixel.h>
+#include <dcmtk/dcmdata/dcpixseq.h>
+#include <dcmtk/dcmdata/dcpxitem.h>
 #include <dcmtk/dcmdata/dcrledrg.h>
 #include <dcmtk/dcmdata/dcsequen.h>
 #include <dcmtk/dcmdata/dcuid.h>
@@ -497,6 +499,61 @@ std::uint64_t nativeFrameBits(const FileHeader& h) {
 
 // ---------------------------------------------------------------------------
 
+namespace {
+
+/// RLE Lossless (PS3.5 A.4.2): one fragment per frame, each starting with a
+/// 64-byte header of 1..15 segment offsets, the first 64, increasing and
+/// inside the fragment. DCMTK's RLE decoder reads past its input on a
+/// fragment that breaks this (found by fuzzing), so it is checked first.
+void checkRleFragments(DcmPixelData& pixel, std::uint64_t frames, const fs::path& path) {
+    DcmPixelSequence* sequence = nullptr;
+    if (pixel.getEncapsulatedRepresentation(EXS_RLELossless, nullptr, sequence).bad() ||
+        sequence == nullptr || sequence->card() < 2) {
+        throw FormatError(path, "the RLE pixel data has no fragments");
+    }
+    const unsigned long fragments = sequence->card() - 1;  // item 0: the offset table
+    if (fragments != frames) {
+        throw FormatError(path, "the RLE pixel data has " + std::to_string(fragments) +
+                                    " fragments for " + std::to_string(frames) +
+                                    " frames (RLE needs one per frame)");
+    }
+    const auto le32 = [](const Uint8* p) {
+        return static_cast<std::uint32_t>(p[0]) | (static_cast<std::uint32_t>(p[1]) << 8U) |
+               (static_cast<std::uint32_t>(p[2]) << 16U) |
+               (static_cast<std::uint32_t>(p[3]) << 24U);
+    };
+    for (unsigned long i = 1; i <= fragments; ++i) {
+        const std::string which =
+            "RLE fragment " + std::to_string(i) + " of " + std::to_string(fragments);
+        DcmPixelItem* item = nullptr;
+        Uint8* data = nullptr;
+        if (sequence->getItem(item, i).bad() || item == nullptr ||
+            item->getUint8Array(data).bad()) {
+            throw FormatError(path, "cannot read " + which);
+        }
+        const std::uint32_t length = item->getLength();
+        if (data == nullptr || length < 64) {
+            throw FormatError(path, which + " is shorter than its 64-byte header");
+        }
+        const std::uint32_t segments = le32(data);
+        if (segments < 1 || segments > 15) {
+            throw FormatError(path, which + " declares " + std::to_string(segments) +
+                                        " segments (1..15 allowed)");
+        }
+        std::uint32_t previous = 0;
+        for (std::uint32_t k = 0; k < segments; ++k) {
+            const std::uint32_t offset = le32(data + 4 + 4 * k);
+            if ((k == 0 && offset != 64) || (k > 0 && offset <= previous) || offset >= length) {
+                throw FormatError(path, which + " has a bad segment offset (" +
+                                            std::to_string(offset) + "): corrupt pixel data");
+            }
+            previous = offset;
+        }
+    }
+}
+
+}  // namespace
+
 struct FrameReader::Impl {
     fs::path file;
     std::unique_ptr<DcmFileFormat> ff;
@@ -531,6 +588,12 @@ struct FrameReader::Impl {
         pixel = dynamic_cast<DcmPixelData*>(e);
         if (pixel == nullptr) {
             throw FormatError(path, "pixel data element of an unexpected type");
+        }
+        if (f->getDataset()->getOriginalXfer() == EXS_RLELossless) {
+            Sint32 frames = 1;
+            (void)f->getDataset()->findAndGetSint32(DCM_NumberOfFrames, frames);
+            checkRleFragments(*pixel, static_cast<std::uint64_t>(std::max<Sint32>(frames, 1)),
+                              path);
         }
         ff = std::move(f);
         file = path;
