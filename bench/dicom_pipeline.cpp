@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "vv/core/Error.h"
+#include "vv/core/ProcessMemory.h"
 #include "vv/io/DemoCtSeries.h"
 #include "vv/io/Dicom.h"
 #include "vv/io/VolumeSegmentation.h"
@@ -30,17 +31,6 @@
 namespace {
 
 namespace fs = std::filesystem;
-
-std::int64_t statusKb(const std::string& key) {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.rfind(key, 0) == 0) {
-            return std::stoll(line.substr(key.size()));
-        }
-    }
-    return -1;
-}
 
 struct StepFigures {
     std::string name;
@@ -52,16 +42,16 @@ struct StepFigures {
 
 /// Runs `step`, measuring wall time and the growth of the resident peak.
 StepFigures measure(const std::string& name, const std::function<std::string()>& step) {
-    std::ofstream("/proc/self/clear_refs") << "5" << std::flush;
-    const std::int64_t before = statusKb("VmRSS:");
+    (void)vv::resetPeakResident();
+    const double before = static_cast<double>(vv::residentKiB().value_or(0));
     const auto start = std::chrono::steady_clock::now();
     StepFigures f;
     f.name = name;
     f.note = step();
     f.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const std::int64_t peak = statusKb("VmHWM:");
-    f.residentBeforeMb = static_cast<double>(before) / 1024.0;
-    f.peakGrowthMb = static_cast<double>(peak - before) / 1024.0;
+    const double peak = static_cast<double>(vv::peakResidentKiB().value_or(0));
+    f.residentBeforeMb = before / 1024.0;
+    f.peakGrowthMb = (peak - before) / 1024.0;
     std::fprintf(stderr, "%s: %.1f s\n", name.c_str(), f.seconds);
     return f;
 }

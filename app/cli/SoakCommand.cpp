@@ -24,6 +24,7 @@
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
+#include "vv/core/ProcessMemory.h"
 #include "vv/io/DemoTree.h"
 #include "vv/io/MeshLoader.h"
 #include "vv/render/Camera.h"
@@ -59,7 +60,7 @@ constexpr const char* kSoakUsage =
 
 /// VmRSS of this process in KiB, from /proc/self/status; 0 when unknown.
 /// With `trim`, first returns the free heap to the system.
-std::uint64_t residentKiB(bool trim) {
+std::uint64_t residentAfterTrimKiB(bool trim) {
 #if defined(__GLIBC__)
     if (trim) {
         malloc_trim(0);
@@ -67,14 +68,7 @@ std::uint64_t residentKiB(bool trim) {
 #else
     (void)trim;
 #endif
-    std::ifstream status("/proc/self/status");
-    std::string line;
-    while (std::getline(status, line)) {
-        if (line.rfind("VmRSS:", 0) == 0) {
-            return std::strtoull(line.c_str() + 6, nullptr, 10);
-        }
-    }
-    return 0;
+    return vv::residentKiB().value_or(0);
 }
 
 std::string mib(std::uint64_t kib) {
@@ -205,7 +199,7 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
             err << "vesselview-cli: soak: frame " << f << ": " << e.what() << "\n";
             return kInternalError;
         }
-        const std::uint64_t rss = residentKiB(trim);
+        const std::uint64_t rss = residentAfterTrimKiB(trim);
         lapPeak = std::max(lapPeak, rss);
         if (f <= 100) {
             after100 = std::max(after100, rss);

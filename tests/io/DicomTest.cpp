@@ -23,6 +23,7 @@
 #include "DicomTestUtil.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
+#include "vv/core/ProcessMemory.h"
 #include "vv/io/Dicom.h"
 #include "vv/io/Volume.h"
 
@@ -695,18 +696,6 @@ TEST(DicomLoad, TruncatedPixelDataIsAClearError) {
     }
 }
 
-/// A "Key:   123 kB" line of /proc/self/status, in kB; -1 when absent.
-std::int64_t statusKb(const std::string& key) {
-    std::ifstream in("/proc/self/status");
-    std::string line;
-    while (std::getline(in, line)) {
-        if (line.rfind(key, 0) == 0) {
-            return std::stoll(line.substr(key.size()));
-        }
-    }
-    return -1;
-}
-
 class DicomBigSeries : public ::testing::Test {
   protected:
     static constexpr int kSize = 256;
@@ -762,11 +751,10 @@ TEST_F(DicomBigSeries, LoadsWithProgressWithinMemory) {
     const vv::Progress progress([&](double f, std::string_view) { fractions.push_back(f); }, {});
     // Peak memory: reset the high-water mark (Linux: clear_refs 5), load,
     // and compare the peak's growth with the volume's size.
-    const bool peakReset =
-        static_cast<bool>(std::ofstream("/proc/self/clear_refs") << "5" << std::flush);
-    const std::int64_t before = statusKb("VmRSS:");
+    const bool peakReset = vv::resetPeakResident();
+    const std::int64_t before = static_cast<std::int64_t>(vv::residentKiB().value_or(0));
     const auto v = vv::io::loadDicomSeries(series, {}, progress);
-    const std::int64_t peak = statusKb("VmHWM:");
+    const std::int64_t peak = static_cast<std::int64_t>(vv::peakResidentKiB().value_or(0));
     if (peakReset && before > 0 && peak > 0) {
         const double grownBytes = static_cast<double>(peak - before) * 1024.0;
         std::printf("peak growth %.1f MB for a %.1f MB volume\n", grownBytes / 1e6,
