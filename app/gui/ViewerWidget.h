@@ -180,6 +180,20 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] const std::vector<render::PassInfo>& lastPasses() const noexcept {
         return renderer_.lastPasses();
     }
+    /// Benchmarks: when on, every frame waits for its GPU timers and keeps
+    /// the per-pass CPU / GPU times (lastTimings()) and the wall time of
+    /// paintGL (lastPaintMilliseconds()). Off by default: waiting for the
+    /// timers stalls the pipeline on real GPUs.
+    void setRecordTimings(bool on) noexcept { recordTimings_ = on; }
+    /// The last frame's per-pass times (empty unless setRecordTimings(true)).
+    [[nodiscard]] const std::vector<render::GlPassTiming>& lastTimings() const noexcept {
+        return timings_;
+    }
+    /// Wall time of the last paintGL in milliseconds (with setRecordTimings(true)).
+    [[nodiscard]] double lastPaintMilliseconds() const noexcept { return paintMilliseconds_; }
+    /// Wall time of the last settle (the exact solve's request or the
+    /// G-buffer it needs; with setRecordTimings(true)).
+    [[nodiscard]] double lastSettleMilliseconds() const noexcept { return settleMilliseconds_; }
 
     /// Background colour, sRGB in [0, 1].
     void setBackground(const glm::vec3& color);
@@ -310,6 +324,10 @@ class ViewerWidget : public QOpenGLWidget {
     quint64 solvesRequestedOnSettle_ = 0;
     quint64 solvesPreparedOnSettle_ = 0;
     QTimer* settleTimer_ = nullptr;
+    bool recordTimings_ = false;
+    std::vector<render::GlPassTiming> timings_;
+    double paintMilliseconds_ = 0.0;
+    double settleMilliseconds_ = 0.0;
     // --- Probe and measurement -------------------------------------------
     void hoverProbeNow();
     /// Handles a left-button release: picks when it was a click.

@@ -33,9 +33,15 @@ uniform float uAmbient;
 uniform float uDiffuse;
 uniform float uSpecular;
 uniform float uShininess;
-// Preview frames while the camera moves: normals from one-pixel differences
-// only (no plane fit, no Toksvig), about a fifth of the texture reads.
-uniform bool uQuickNormals;
+// Preview frames while the camera moves are built with QUICK_NORMALS
+// defined (a variant, not a uniform: llvmpipe runs both sides of a branch):
+// normals from one-pixel differences only (no plane fit, no Toksvig), about
+// a fifth of the texture reads.
+#ifdef QUICK_NORMALS
+const bool kQuickNormals = true;
+#else
+const bool kQuickNormals = false;
+#endif
 
 out vec4 fragColor;
 
@@ -160,7 +166,7 @@ void main() {
                      derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
     float support = 1.0;
     bool vessel = isVessel(p);
-    if (!vessel && uQuickNormals) {
+    if (!vessel && kQuickNormals) {
         // Never across a contour: vessel neighbours count as missing.
         ivec2 dx = ivec2(1, 0);
         ivec2 dy = ivec2(0, 1);
@@ -199,7 +205,7 @@ void main() {
     // Toksvig: normals 3 px around; missing ones count as turned away.
     float shininess = uShininess;
     float specularScale = smoothstep(0.55, 0.9, support);
-    if (!vessel && !uQuickNormals) {
+    if (!vessel && !kQuickNormals) {
         float scale = range / pixel;
         vec3 sum = n;
         float count = 1.0;

@@ -17,8 +17,10 @@
 #include <cstdio>
 #include <filesystem>
 #include <functional>
+#include <map>
 #include <memory>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "gui/MainWindow.h"
@@ -385,6 +387,36 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     EXPECT_FALSE(viewer.hasPreviewGeometry());
 }
 
+/// Per-pass GPU milliseconds (CPU where a pass has no GPU time) collected
+/// over frames, printed as medians: where a frame's time goes.
+class PassTable {
+  public:
+    void add(const ViewerWidget& viewer) {
+        for (const auto& t : viewer.lastTimings()) {
+            ms_[t.pass].push_back(t.gpuMilliseconds.value_or(t.cpuMilliseconds));
+        }
+        paint_.push_back(viewer.lastPaintMilliseconds());
+    }
+    void print(const char* label) {
+        std::printf("[bench]   %s, median ms per pass over %zu frames:", label, paint_.size());
+        for (auto& [pass, values] : ms_) {
+            std::printf(" %s %.1f (%zu)", pass.c_str(), median(values), values.size());
+        }
+        std::printf("; paintGL %.1f\n", median(paint_));
+    }
+
+  private:
+    static double median(std::vector<double>& v) {
+        if (v.empty()) {
+            return 0.0;
+        }
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    }
+    std::map<std::string, std::vector<double>> ms_;
+    std::vector<double> paint_;
+};
+
 /// Benchmark-style: 30 rotations of the demo at 1280x720, each waiting for
 /// its frame, then the time from the release until the exact VSS is shown.
 /// Prints the numbers (docs/benchmarks/render.md); asserts only that it works.
@@ -394,6 +426,10 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     auto scene = std::make_shared<const vv::io::Scene>(
         vv::io::loadScene({std::filesystem::path(VV_DEMO_VTP)}));
     ViewerWidget& viewer = open(scene, 1280, 720);
+    // VV_BENCH_PASSES=1: per-pass GPU times too (waiting for the timers
+    // serialises the frame a little, so fps are measured without them).
+    const bool passTimes = qEnvironmentVariableIntValue("VV_BENCH_PASSES") != 0;
+    viewer.setRecordTimings(passTimes);
     // The viewer itself at 1280x720, whatever the toolbars take.
     ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > 0; }));
     const QSize extra = window_->size() - viewer.size();
@@ -421,6 +457,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         std::vector<double> frameMs;
         int withCurrentVss = 0;
         int previews = 0;
+        PassTable moving;
+        PassTable settling;
         Drag drag(viewer);
         QElapsedTimer total;
         total.start();
@@ -431,6 +469,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             drag.moveBy({12, 3});
             ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
             frameMs.push_back(static_cast<double>(t.nsecsElapsed()) / 1e6);
+            moving.add(viewer);
             movingSize = viewer.lastRenderSize();
             const auto& s = viewer.vssStatus();
             withCurrentVss += (s.shown && s.current) ? 1 : 0;
@@ -440,8 +479,11 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         QElapsedTimer settle;
         settle.start();
         const quint64 framesAtRelease = viewer.framesWithScene();
+        const QMetaObject::Connection settleFrames = QObject::connect(
+            &viewer, &ViewerWidget::frameRendered, [&] { settling.add(viewer); });
         drag.release();
         ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); })) << "no exact VSS after rotating";
+        QObject::disconnect(settleFrames);
         const double exactMs = static_cast<double>(settle.nsecsElapsed()) / 1e6;
         const quint64 framesAfterRelease = viewer.framesWithScene() - framesAtRelease;
         const bool direct = viewer.solvesRequestedOnSettle() > directBefore;
@@ -463,6 +505,12 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             static_cast<unsigned long long>(countersAfter.submitted - countersBefore.submitted),
             static_cast<unsigned long long>(countersAfter.completed - countersBefore.completed),
             static_cast<unsigned long long>(countersAfter.cancelled - countersBefore.cancelled));
+        if (passTimes) {
+            moving.print("moving");
+        std::printf("[bench]   settle (exact solve requested / G-buffer prepared): %.1f ms\n",
+                    viewer.lastSettleMilliseconds());
+        settling.print("after release");
+        }
         std::fflush(stdout);
         if (progressive) {
             EXPECT_GT(previews, 0) << "no rotation frame showed the preview VSS";

@@ -331,6 +331,7 @@ struct FrameRenderer::Impl {
     std::unique_ptr<RenderGraphCache> cache;
     std::unique_ptr<GlPassObserver> observer;
     GLuint vssProgram = 0;
+    GLuint vssQuickProgram = 0;  ///< vss.frag with QUICK_NORMALS (preview frames)
     GLuint compositeProgram = 0;
     GLuint ssaoProgram = 0;
     GLuint aoBlurProgram = 0;
@@ -466,8 +467,12 @@ void FrameRenderer::initialize() {
     impl_->allocator = std::make_unique<GlResourceAllocator>();
     impl_->cache = std::make_unique<RenderGraphCache>(*impl_->allocator);
     impl_->observer = std::make_unique<GlPassObserver>();
+    const std::string_view vssFragment[] = {":/vv/shaders/vss.frag"};
+    const std::string_view quickNormals[] = {"QUICK_NORMALS"};
     impl_->vssProgram =
         buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/vss.frag", "VSS shading");
+    impl_->vssQuickProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert", vssFragment,
+                                          "VSS shading (quick normals)", quickNormals);
     impl_->compositeProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert",
                                            ":/vv/shaders/composite.frag", "composite");
     impl_->ssaoProgram =
@@ -499,6 +504,7 @@ void FrameRenderer::release() noexcept {
         impl_->observer.reset();
     }
     g.glDeleteProgram(impl_->vssProgram);
+    g.glDeleteProgram(impl_->vssQuickProgram);
     g.glDeleteProgram(impl_->compositeProgram);
     g.glDeleteProgram(impl_->ssaoProgram);
     g.glDeleteProgram(impl_->aoBlurProgram);
@@ -508,6 +514,7 @@ void FrameRenderer::release() noexcept {
     g.glDeleteFramebuffers(1, &impl_->shadingFbo);
     g.glDeleteTextures(1, &impl_->scaleLut);
     impl_->vssProgram = 0;
+    impl_->vssQuickProgram = 0;
     impl_->compositeProgram = 0;
     impl_->ssaoProgram = 0;
     impl_->aoBlurProgram = 0;
@@ -1067,7 +1074,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             if (!impl.shown) {
                 return;
             }
-            const GLuint program = impl.vssProgram;
+            // Preview frames (camera moving): one-pixel differences, no fit.
+            const GLuint program = vssSettings.preview ? impl.vssQuickProgram : impl.vssProgram;
             const auto loc = [&](const char* name) {
                 return g.glGetUniformLocation(program, name);
             };
@@ -1097,8 +1105,6 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glUniform1f(loc("uDiffuse"), light.diffuse);
             g.glUniform1f(loc("uSpecular"), light.specular);
             g.glUniform1f(loc("uShininess"), light.shininess);
-            // Preview frames (camera moving): one-pixel differences, no fit.
-            g.glUniform1i(loc("uQuickNormals"), vssSettings.preview ? 1 : 0);
             drawFullscreenAndUnbind(g, impl.emptyVao, 3);
             checkGlError(g, "VSS shading pass");
         });
@@ -1246,8 +1252,11 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> translucent;
         Handle<Texture> output;
     };
-    // A reduced render size always ends with the FXAA pass, which also upscales.
-    const bool useAa = settings.antialiasing || scaled;
+    // With anti-aliasing the FXAA pass draws into the target (upscaling a
+    // reduced render size with its bilinear taps); without it, a reduced
+    // render size ends with a bilinear blit into the target ("upscale").
+    const bool useFxaa = settings.antialiasing;
+    const bool useAa = useFxaa || scaled;
     const float aoStrength = aoSettings.strength;
     const glm::vec3 background = settings.background;
     const Composite& composite = graph.addPass<Composite>(
@@ -1307,7 +1316,25 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> input;
         Handle<Texture> output;
     };
-    if (useAa) {
+    if (useAa && !useFxaa) {
+        // A bilinear blit: far cheaper than a shader pass at the target size
+        // on software rasterisers, for frames that favour speed (moving).
+        graph.addPass<Fxaa>(
+            "upscale",
+            [&](RenderGraph::Builder& b, Fxaa& d) {
+                d.input = b.read(composite.output);
+                d.output = b.write(output);
+            },
+            [&impl, w, h, targetW, targetH](const RenderGraph::Resources& r, const Fxaa& d) {
+                auto& g = impl.f();
+                g.glBindFramebuffer(GL_READ_FRAMEBUFFER, glTex(r.get(d.input)).framebuffer());
+                g.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, glTex(r.get(d.output)).framebuffer());
+                g.glBlitFramebuffer(0, 0, w, h, 0, 0, targetW, targetH, GL_COLOR_BUFFER_BIT,
+                                    GL_LINEAR);
+                g.glBindFramebuffer(GL_FRAMEBUFFER, glTex(r.get(d.output)).framebuffer());
+                checkGlError(g, "upscale pass");
+            });
+    } else if (useAa) {
         graph.addPass<Fxaa>(
             "fxaa",
             [&](RenderGraph::Builder& b, Fxaa& d) {

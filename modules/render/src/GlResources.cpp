@@ -266,14 +266,29 @@ std::string readShader(std::string_view resource) {
     return file.readAll().toStdString();
 }
 
-/// One shader from the concatenation of `resources` (the first has #version).
+/// One shader from the concatenation of `resources` (the first has #version),
+/// with `#define NAME` for each of `defines` right after the #version line.
 GLuint compile(QOpenGLFunctions_4_1_Core& gl, GLenum type,
-               std::span<const std::string_view> resources) {
+               std::span<const std::string_view> resources,
+               std::span<const std::string_view> defines = {}) {
     std::vector<std::string> sources;
     std::string names;
     for (const std::string_view resource : resources) {
         sources.push_back(readShader(resource));
         names += (names.empty() ? "" : " + ") + std::string(resource);
+    }
+    if (!defines.empty() && !sources.empty()) {
+        std::string& first = sources.front();
+        const std::size_t versionEnd = first.find('\n');
+        if (first.rfind("#version", 0) != 0 || versionEnd == std::string::npos) {
+            throw RenderError(names, "shader does not start with a #version line");
+        }
+        std::string lines;
+        for (const std::string_view name : defines) {
+            lines += "#define " + std::string(name) + "\n";
+            names += " [" + std::string(name) + "]";
+        }
+        first.insert(versionEnd + 1, lines);
     }
     std::vector<const char*> texts;
     std::vector<GLint> lengths;
@@ -310,12 +325,13 @@ unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexReso
 }
 
 unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexResource,
-                      std::span<const std::string_view> fragmentResources, std::string_view what) {
+                      std::span<const std::string_view> fragmentResources, std::string_view what,
+                      std::span<const std::string_view> fragmentDefines) {
     const std::string_view vertexParts[] = {vertexResource};
     const GLuint vertex = compile(gl, GL_VERTEX_SHADER, vertexParts);
     GLuint fragment = 0;
     try {
-        fragment = compile(gl, GL_FRAGMENT_SHADER, fragmentResources);
+        fragment = compile(gl, GL_FRAGMENT_SHADER, fragmentResources, fragmentDefines);
     } catch (...) {
         gl.glDeleteShader(vertex);
         throw;

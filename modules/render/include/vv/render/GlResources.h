@@ -155,9 +155,14 @@ namespace vv::render {
 
 /// Like buildProgram() above, with a fragment shader made of several resources
 /// concatenated in order (the first one starts with #version; e.g. a shared
-/// material followed by a main()). Errors name every part.
+/// material followed by a main()), and with `#define NAME` for each of
+/// `fragmentDefines` right after its #version line: compile-time variants of
+/// one shader (software rasterisers such as llvmpipe run both sides of a
+/// branch on a uniform, so a variant is what actually skips the work).
+/// Errors name every part and define.
 [[nodiscard]] unsigned buildProgram(QOpenGLFunctions_4_1_Core& gl, std::string_view vertexResource,
                                     std::span<const std::string_view> fragmentResources,
-                                    std::string_view what);
+                                    std::string_view what,
+                                    std::span<const std::string_view> fragmentDefines = {});
 
 }  // namespace vv::render
