@@ -976,8 +976,9 @@ void MainWindow::onFrameRendered() {
         return;
     }
     // With the VSS on, wait for the frame that shows the solved surface (the
-    // solve runs on a worker and triggers that frame).
-    if (viewer_->vssSettings().enabled && viewer_->vssStatus().pending) {
+    // solve runs on a worker and triggers that frame), and for its occlusion.
+    if ((viewer_->vssSettings().enabled && viewer_->vssStatus().pending) ||
+        viewer_->occlusionDeferred()) {
         return;
     }
     screenshotPending_ = false;

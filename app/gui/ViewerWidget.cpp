@@ -68,6 +68,10 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
     settleTimer_->setInterval(settleDelayMs_);
     connect(settleTimer_, &QTimer::timeout, this, &ViewerWidget::settle);
     setFormat(requiredFormat());
+    // The widget's buffer keeps its frame between paints, so that repaints
+    // nobody asked a new frame for (an overlay child redrawing, an expose)
+    // reuse it instead of running the whole graph again (paintGL).
+    setUpdateBehavior(QOpenGLWidget::PartialUpdate);
     setFocusPolicy(Qt::StrongFocus);
     setMinimumSize(160, 120);
     setToolTip(
@@ -131,7 +135,7 @@ QString ViewerWidget::probeOpenGl() {
 
 void ViewerWidget::setUnavailable(const QString& reason) {
     fail(reason);
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::releaseGl() {
@@ -153,7 +157,7 @@ void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     camera_.reset();
     camera_.fit(dataBounds());
     autoFit_ = true;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setVolume(std::shared_ptr<const io::Volume> volume, float isoValue) {
@@ -165,7 +169,7 @@ void ViewerWidget::setVolume(std::shared_ptr<const io::Volume> volume, float iso
     if (const Aabb box = dataBounds(); !box.empty()) {
         camera_.setSceneBounds(box);  // clip planes; the view stays
     }
-    update();
+    requestFrame();
 }
 
 Aabb ViewerWidget::dataBounds() const noexcept {
@@ -229,27 +233,27 @@ void ViewerWidget::startPreviewGeometry() {
 void ViewerWidget::setStyle(const render::MeshStyle& style) {
     style_ = style;
     styleDirty_ = true;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setVssSettings(const render::VssSettings& settings) {
     vss_ = settings;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setAoSettings(const render::AoSettings& settings) {
     ao_ = settings;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setVesselCue(const render::VesselCueSettings& cue) {
     cue_ = cue;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setLegendsVisible(bool visible) {
     legendsVisible_ = visible;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setProgressiveRefinement(bool on) {
@@ -270,7 +274,7 @@ void ViewerWidget::cameraChanged() {
         moving_ = true;
         settleTimer_->start();  // restarts: the camera settles settleDelay() after the last change
     }
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::settle() {
@@ -279,6 +283,8 @@ void ViewerWidget::settle() {
         return;
     }
     moving_ = false;
+    // The exact VSS first, the occlusion in the frame after (paintGL).
+    deferOcclusion_ = ao_.enabled;
     QElapsedTimer settleTimer;
     settleTimer.start();
     bool requested = false;
@@ -312,13 +318,13 @@ void ViewerWidget::settle() {
     }
     emit cameraSettled();
     if (!requested && !prepared) {
-        update();  // the next frame reads the depth back and asks for the exact VSS
+        requestFrame();  // the next frame reads the depth back and asks for the exact VSS
     }
 }
 
 void ViewerWidget::setInteractiveScale(float scale) {
     interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
-    update();
+    requestFrame();
 }
 
 render::FrameSettings ViewerWidget::frameSettings() const {
@@ -337,6 +343,8 @@ render::FrameSettings ViewerWidget::frameSettings() const {
         settings.antialiasing = false;
         settings.resolutionScale = interactiveScale_;
         settings.simplifiedGeometry = true;
+    } else if (deferOcclusion_) {
+        settings.ao.enabled = false;
     }
     return settings;
 }
@@ -351,21 +359,21 @@ render::FrameTarget ViewerWidget::frameTarget() const {
 
 void ViewerWidget::setBackground(const glm::vec3& color) {
     background_ = color;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::setCamera(const render::Camera& camera) {
     camera_ = camera;
     camera_.setViewport(width(), height());
     autoFit_ = false;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::resetCamera() {
     camera_.setViewport(width(), height());
     camera_.reset();
     autoFit_ = true;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::fitToData() {
@@ -373,7 +381,7 @@ void ViewerWidget::fitToData() {
     const Aabb box = dataBounds();
     camera_.fit(box.empty() ? camera_.sceneBounds() : box);
     autoFit_ = true;
-    update();
+    requestFrame();
 }
 
 void ViewerWidget::fail(const QString& message) {
@@ -394,7 +402,7 @@ void ViewerWidget::showEvent(QShowEvent* event) {
                 tr("OpenGL could not be initialised: VesselView needs OpenGL 4.1 (core "
                    "profile). Update the graphics driver, or run with Mesa's software "
                    "renderer (LIBGL_ALWAYS_SOFTWARE=1)."));
-            update();
+            requestFrame();
         }
     });
 }
@@ -416,13 +424,19 @@ void ViewerWidget::initializeGL() {
                 this,
                 [this] {
                     emit vssSolved();
-                    update();
+                    // A newer solve is under way (e.g. the exact one after the
+                    // camera settled): its own arrival draws the frame that
+                    // shows it; a frame now would only delay it.
+                    if (!renderer_.solveInProgress()) {
+                        requestFrame();
+                    }
                 },
                 Qt::QueuedConnection);
         });
         glDescription_ = QString::fromStdString(renderer_.meshRenderer().glDescription());
         sceneDirty_ = true;
         styleDirty_ = true;
+        frameDirty_ = true;
     } catch (const vv::Error& e) {
         const QSurfaceFormat f = ctx->format();
         fail(tr("VesselView needs OpenGL 4.1 (core profile); this system offers OpenGL "
@@ -434,10 +448,16 @@ void ViewerWidget::initializeGL() {
     }
 }
 
+void ViewerWidget::requestFrame() {
+    frameDirty_ = true;
+    update();
+}
+
 void ViewerWidget::resizeGL(int w, int h) {
     // The camera works in logical pixels, like the mouse events.
     Q_UNUSED(w);
     Q_UNUSED(h);
+    frameDirty_ = true;  // a new buffer: nothing to reuse
     camera_.setViewport(width(), height());
     legendOverlay_->setGeometry(rect());
 }
@@ -462,6 +482,14 @@ void ViewerWidget::paintGL() {
         paintMessage(error_.isEmpty() ? tr("OpenGL is not available.") : error_);
         return;
     }
+    if (!frameDirty_) {
+        // A repaint without a new frame requested (requestFrame): an overlay
+        // child redrew or the window was exposed. The buffer still holds the
+        // last frame (PartialUpdate); drawing it again would cost a whole
+        // frame (hundreds of ms on software rasterisers) for the same pixels.
+        return;
+    }
+    frameDirty_ = false;  // requests made while drawing ask for the next frame
     QElapsedTimer paintTimer;
     paintTimer.start();
     try {
@@ -492,6 +520,14 @@ void ViewerWidget::paintGL() {
         if (recordTimings_) {
             timings_ = renderer_.lastTimings();
         }
+        if (deferOcclusion_ && !moving_) {
+            const render::VssFrameStatus& status = renderer_.vssStatus();
+            if (!status.pending && !status.preview) {
+                // The exact VSS (or no VSS at all) is on screen: now the occlusion.
+                deferOcclusion_ = false;
+                QTimer::singleShot(0, this, &ViewerWidget::requestFrame);
+            }
+        }
         const glm::ivec2 rendered = renderer_.lastRenderSize();
         lastRenderSize_ = QSize(rendered.x, rendered.y);
         shownRange_ = meshes.effectiveRange();
@@ -510,7 +546,7 @@ void ViewerWidget::paintGL() {
             volume_.reset();
             renderer_.setVolume(nullptr, 0.0F);
             QTimer::singleShot(0, this, [this, why] { emit volumeFailed(why); });
-            update();
+            requestFrame();
             return;
         }
         fail(tr("Drawing failed: %1").arg(why));

@@ -172,6 +172,11 @@ class ViewerWidget : public QOpenGLWidget {
     }
     /// True while the camera moves (frames use the preview VSS).
     [[nodiscard]] bool cameraMoving() const noexcept { return moving_; }
+    /// True from the moment the camera settles until the frame with the
+    /// exact VSS is on screen: those frames leave out the ambient occlusion
+    /// (the slowest pass on software rasterisers), and the frame right after
+    /// adds it, so the exact VSS shows as early as it can.
+    [[nodiscard]] bool occlusionDeferred() const noexcept { return deferOcclusion_; }
     /// The worker's solve counters (submitted, completed, cancelled).
     [[nodiscard]] render::SolveCounters solveCounters() const { return renderer_.solveCounters(); }
     /// The VSS height the last frame showed (GL row order; empty when none).
@@ -276,6 +281,9 @@ class ViewerWidget : public QOpenGLWidget {
     void fail(const QString& message);
     void releaseGl();
     void paintMessage(const QString& text);
+    /// Asks for a new frame: paintGL draws only after such a request (or a
+    /// resize / new context); other repaints keep the last frame.
+    void requestFrame();
     /// A camera change by the user: preview quality until it settles.
     void cameraChanged();
     void settle();
@@ -318,6 +326,8 @@ class ViewerWidget : public QOpenGLWidget {
     QPointF lastMouse_;
     bool progressive_ = true;
     bool moving_ = false;
+    bool frameDirty_ = true;       ///< a new frame was requested (requestFrame)
+    bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO
     int settleDelayMs_ = 150;
     float interactiveScale_ = 0.5F;
     QSize lastRenderSize_;

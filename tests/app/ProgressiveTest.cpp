@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QComboBox>
 #include <QElapsedTimer>
+#include <QImage>
 #include <QLabel>
 #include <QMouseEvent>
 #include <QThread>
@@ -230,6 +231,101 @@ TEST_F(ProgressiveTest, PreviewWhileRotatingThenExactWithinTheTolerance) {
     EXPECT_LE(worst, bound) << "preview and exact VSS differ by " << worst;
     std::printf("[progressive] preview vs exact: max |dz'| = %.4f (bound %.4f) over %ld pixels\n",
                 worst, bound, compared);
+}
+
+// Settling shows the exact VSS as early as it can: that frame leaves out the
+// ambient occlusion, and the frame right after adds it without solving again.
+TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusion) {
+    ViewerWidget& viewer = open(makeScene(), 640, 480);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) || !viewer.renderError().isEmpty(); }));
+    ASSERT_TRUE(viewer.renderError().isEmpty()) << viewer.renderError().toStdString();
+    const auto passState = [&](const char* name) {
+        for (const auto& pass : viewer.lastPasses()) {
+            if (pass.name == name) {
+                return pass.state;
+            }
+        }
+        return vv::render::PassState::Pending;  // not in the graph
+    };
+    EXPECT_EQ(passState("ssao"), vv::render::PassState::Executed);
+    EXPECT_FALSE(viewer.occlusionDeferred());
+
+    // Every frame from the release on is recorded: (exact VSS shown, AO state).
+    struct Seen {
+        bool exact;
+        vv::render::PassState ssao;
+    };
+    std::vector<Seen> frames;
+    viewer.setSettleDelay(600000);
+    Drag drag(viewer);
+    drag.moveBy({40, 10});
+    ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
+    const QMetaObject::Connection record =
+        QObject::connect(&viewer, &ViewerWidget::frameRendered,
+                         [&] { frames.push_back({exactShown(viewer), passState("ssao")}); });
+    drag.release();
+    EXPECT_TRUE(viewer.occlusionDeferred());
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.occlusionDeferred(); }));
+    const auto solved = viewer.solveCounters().completed;
+    ASSERT_TRUE(waitUntil([&] {
+        return !frames.empty() && frames.back().exact &&
+               frames.back().ssao == vv::render::PassState::Executed;
+    })) << "the occlusion never followed the exact VSS";
+    QObject::disconnect(record);
+
+    // The first frame with the exact VSS had no occlusion; the one after had it.
+    std::size_t firstExact = frames.size();
+    for (std::size_t i = 0; i < frames.size(); ++i) {
+        if (frames[i].exact) {
+            firstExact = i;
+            break;
+        }
+    }
+    ASSERT_LT(firstExact + 1, frames.size());
+    EXPECT_NE(frames[firstExact].ssao, vv::render::PassState::Executed);
+    EXPECT_EQ(frames[firstExact + 1].ssao, vv::render::PassState::Executed);
+    EXPECT_TRUE(frames[firstExact + 1].exact);
+    EXPECT_EQ(viewer.solveCounters().completed, solved) << "adding the occlusion solved again";
+}
+
+// A repaint nobody asked a frame for (an overlay child redrawing, an expose)
+// keeps the last frame instead of running the whole graph again; a change
+// of what is shown draws a new one.
+TEST_F(ProgressiveTest, RepaintsWithoutAChangeKeepTheLastFrame) {
+    ViewerWidget& viewer = open(makeScene(), 400, 300);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.occlusionDeferred(); }));
+    // Let every frame that was asked for be drawn.
+    quint64 frames = viewer.framesWithScene();
+    for (int i = 0; i < 20; ++i) {
+        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        QThread::msleep(10);
+        if (viewer.framesWithScene() != frames) {
+            frames = viewer.framesWithScene();
+            i = 0;
+        }
+    }
+    const QImage before = viewer.grabFramebuffer();
+
+    // Qt-side repaints: the widget itself and its legend overlay child.
+    static_cast<QWidget&>(viewer).repaint();
+    for (QWidget* child : viewer.findChildren<QWidget*>()) {
+        child->repaint();
+    }
+    QCoreApplication::processEvents(QEventLoop::AllEvents, 50);
+    EXPECT_EQ(viewer.framesWithScene(), frames) << "a repaint without a change drew a new frame";
+    const QImage kept = viewer.grabFramebuffer();
+    ASSERT_EQ(kept.size(), before.size());
+    EXPECT_TRUE(kept == before) << "the kept frame is not the last one drawn";
+
+    // A real change draws a frame: the background, shown once the VSS is off.
+    vv::render::VssSettings off = viewer.vssSettings();
+    off.enabled = false;
+    viewer.setVssSettings(off);
+    viewer.setBackground({1.0F, 0.0F, 0.0F});
+    ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
+    const QImage after = viewer.grabFramebuffer();
+    EXPECT_EQ(after.pixelColor(0, 0), QColor(255, 0, 0));
+    EXPECT_NE(before.pixelColor(0, 0), QColor(255, 0, 0));
 }
 
 TEST_F(ProgressiveTest, WheelZoomSettlesByTheTimer) {
@@ -480,7 +576,19 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         settle.start();
         const quint64 framesAtRelease = viewer.framesWithScene();
         const QMetaObject::Connection settleFrames = QObject::connect(
-            &viewer, &ViewerWidget::frameRendered, [&] { settling.add(viewer); });
+            &viewer, &ViewerWidget::frameRendered, [&] {
+                settling.add(viewer);
+                if (passTimes) {
+                    std::printf("[bench]   frame after release (%s, %.0f ms after it):",
+                                exactShown(viewer) ? "exact VSS" : "no exact VSS yet",
+                                static_cast<double>(settle.nsecsElapsed()) / 1e6);
+                    for (const auto& t : viewer.lastTimings()) {
+                        std::printf(" %s %.1f", t.pass.c_str(),
+                                    t.gpuMilliseconds.value_or(t.cpuMilliseconds));
+                    }
+                    std::printf("; paintGL %.1f\n", viewer.lastPaintMilliseconds());
+                }
+            });
         drag.release();
         ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); })) << "no exact VSS after rotating";
         QObject::disconnect(settleFrames);

@@ -181,6 +181,12 @@ class SolveWorker {
                (running_ && runningKey_ == key && !runningStop_.stop_requested());
     }
 
+    /// True when a solve is queued or running (and not being stopped).
+    [[nodiscard]] bool busy() const {
+        std::lock_guard lock(mutex_);
+        return pending_.has_value() || (running_ && !runningStop_.stop_requested());
+    }
+
     [[nodiscard]] std::pair<std::shared_ptr<const SolvedFrame>, std::uint64_t> latest() const {
         std::lock_guard lock(mutex_);
         return {latest_, revision_};
@@ -543,6 +549,10 @@ void FrameRenderer::setSolveMode(SolveMode mode, std::function<void()> onSolved)
 
 const Image<float>& FrameRenderer::lastSolvedDepth() const noexcept {
     return impl_->lastDepth;
+}
+
+bool FrameRenderer::solveInProgress() const {
+    return impl_->worker != nullptr && impl_->worker->busy();
 }
 
 void FrameRenderer::waitForSolves() {

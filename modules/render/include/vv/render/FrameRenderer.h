@@ -310,6 +310,10 @@ class FrameRenderer {
     bool requestSolve(const Camera& camera, const FrameSettings& settings,
                       const FrameTarget& target);
 
+    /// Asynchronous mode: true while a solve is queued or running. A result
+    /// that arrives while this holds is already stale (a newer request will
+    /// arrive after it): no need to draw a frame for it.
+    [[nodiscard]] bool solveInProgress() const;
     /// Asynchronous mode: blocks until no solve is queued or running (tests).
     void waitForSolves();
     /// Asynchronous mode: how many solves were submitted, finished, cancelled
