@@ -42,6 +42,13 @@ const bool kQuickNormals = true;
 #else
 const bool kQuickNormals = false;
 #endif
+// Exact frames are built with SLOPE_TEXTURE defined when the solver's thread
+// fitted the slopes already (vss::fittedSlopes: the same fit as
+// fittedGradient below, once per solve instead of every frame):
+// uSlope = (dz'/dx, dz'/dy, support, 1) on void pixels.
+#ifdef SLOPE_TEXTURE
+uniform sampler2D uSlope;
+#endif
 
 out vec4 fragColor;
 
@@ -177,6 +184,11 @@ void main() {
         grad = vec2(derivative(xm, z, xp), derivative(ym, z, yp));
         support = (hasVss(xm) && hasVss(xp) && hasVss(ym) && hasVss(yp)) ? 1.0 : 0.0;
     } else if (!vessel) {
+#ifdef SLOPE_TEXTURE
+        vec4 fitted = texelFetch(uSlope, p, 0);
+        grad = fitted.xy;
+        support = fitted.z;
+#else
         grad = fittedGradient(p, size, z, grad, 1, support);
         if (support < 0.999) {
             // Next to a contour the silhouette's pixel staircase ripples the
@@ -185,6 +197,7 @@ void main() {
             float wide = 1.0;
             grad = fittedGradient(p, size, z, grad, 2, wide);
         }
+#endif
     }
 
     // Colour: texel centres, so z' = 0 hits the first entry and 1 the last.

@@ -2,7 +2,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdint>
+#include <random>
+#include <stop_token>
 #include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 #include <limits>
 
 #include "vv/core/Error.h"
@@ -118,6 +122,193 @@ TEST(HeightFieldNormalsTest, FlatAndExtremeScales) {
     EXPECT_THROW(static_cast<void>(heightFieldNormals(z.view(), 1.0, 0.0)), InvalidArgumentError);
     EXPECT_THROW(static_cast<void>(heightFieldNormals(z.view(), std::nan(""), 1.0)),
                  InvalidArgumentError);
+}
+
+// --- fittedSlopes ------------------------------------------------------------
+
+/// The plane fit written out per pixel, as the VSS shader did it: the
+/// reference the separable implementation must reproduce.
+glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>& vessels, int px,
+                          int py) {
+    const int w = height.width();
+    const int h = height.height();
+    const auto has = [&](int x, int y) {
+        return x >= 0 && y >= 0 && x < w && y < h && std::isfinite(height(x, y));
+    };
+    const auto diff = [&](bool m, bool p, double minus, double centre, double plus) {
+        if (m && p) {
+            return 0.5 * (plus - minus);
+        }
+        if (p) {
+            return plus - centre;
+        }
+        if (m) {
+            return centre - minus;
+        }
+        return 0.0;
+    };
+    const double z = height(px, py);
+    glm::dvec2 grad(
+        diff(has(px - 1, py), has(px + 1, py), has(px - 1, py) ? height(px - 1, py) : 0.0, z,
+             has(px + 1, py) ? height(px + 1, py) : 0.0),
+        diff(has(px, py - 1), has(px, py + 1), has(px, py - 1) ? height(px, py - 1) : 0.0, z,
+             has(px, py + 1) ? height(px, py + 1) : 0.0));
+    double support = 0.0;
+    for (int stride = 1; stride <= 2; ++stride) {
+        double sw = 0, sx = 0, sy = 0, sh = 0, sxx = 0, sxy = 0, syy = 0, sxh = 0, syh = 0;
+        double total = 0;
+        for (int dy = -2; dy <= 2; ++dy) {
+            for (int dx = -2; dx <= 2; ++dx) {
+                const int qx = px + dx * stride;
+                const int qy = py + dy * stride;
+                if (qx < 0 || qy < 0 || qx >= w || qy >= h) {
+                    continue;
+                }
+                const double wt = std::exp(-0.25 * (dx * dx + dy * dy));
+                total += wt;
+                if (!std::isfinite(height(qx, qy)) || vessels(qx, qy) != 0) {
+                    continue;
+                }
+                const double x = dx * stride;
+                const double y = dy * stride;
+                const double d = height(qx, qy) - z;
+                sw += wt;
+                sx += wt * x;
+                sy += wt * y;
+                sh += wt * d;
+                sxx += wt * x * x;
+                sxy += wt * x * y;
+                syy += wt * y * y;
+                sxh += wt * x * d;
+                syh += wt * y * d;
+            }
+        }
+        if (stride == 1) {
+            support = sw / total;
+        }
+        if (sw > 0) {
+            const double cxx = sxx - sx * sx / sw;
+            const double cxy = sxy - sx * sy / sw;
+            const double cyy = syy - sy * sy / sw;
+            const double cxh = sxh - sx * sh / sw;
+            const double cyh = syh - sy * sh / sw;
+            const double det = cxx * cyy - cxy * cxy;
+            if (det >= 0.05 * std::max(cxx * cyy, 1e-12)) {
+                grad = {(cyy * cxh - cxy * cyh) / det, (cxx * cyh - cxy * cxh) / det};
+            }
+        }
+        if (support >= 0.999) {
+            break;  // the wide window only next to a contour
+        }
+    }
+    return glm::dvec3(grad, support);
+}
+
+TEST(FittedSlopesTest, ATiltedPlaneHasItsSlopeEverywhere) {
+    Image<float> z(40, 30);
+    Image<std::uint8_t> vessels(40, 30, 0);
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            z(x, y) = 0.2F + 0.01F * x - 0.004F * y;
+        }
+    }
+    const auto s = fittedSlopes(z.view(), vessels.view());
+    for (int y = 0; y < 30; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            EXPECT_NEAR(s(x, y).x, 0.01F, 1e-6) << x << "," << y;
+            EXPECT_NEAR(s(x, y).y, -0.004F, 1e-6) << x << "," << y;
+            EXPECT_FLOAT_EQ(s(x, y).z, 1.0F);  // the image border is no contour
+            EXPECT_EQ(s(x, y).w, 1.0F);
+        }
+    }
+}
+
+TEST(FittedSlopesTest, NeverReachesAcrossAContour) {
+    // A disc of vessel pixels whose depth is far off the VSS's plane.
+    Image<float> z(48, 48);
+    Image<std::uint8_t> vessels(48, 48, 0);
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 48; ++x) {
+            const bool vessel = (x - 24) * (x - 24) + (y - 20) * (y - 20) < 64;
+            vessels(x, y) = vessel ? 1 : 0;
+            z(x, y) = vessel ? 5.0F : 0.5F + 0.003F * x + 0.002F * y;
+        }
+    }
+    const auto s = fittedSlopes(z.view(), vessels.view());
+    int nearContour = 0;
+    for (int y = 0; y < 48; ++y) {
+        for (int x = 0; x < 48; ++x) {
+            if (vessels(x, y) != 0) {
+                EXPECT_EQ(s(x, y), glm::vec4(0.0F)) << x << "," << y;
+                continue;
+            }
+            EXPECT_NEAR(s(x, y).x, 0.003F, 1e-5) << x << "," << y;
+            EXPECT_NEAR(s(x, y).y, 0.002F, 1e-5) << x << "," << y;
+            nearContour += s(x, y).z < 0.999F ? 1 : 0;
+        }
+    }
+    EXPECT_GT(nearContour, 40);  // the ring next to the disc has less support
+}
+
+TEST(FittedSlopesTest, EqualsThePerPixelFitOnRandomScenes) {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<float> u(0.0F, 1.0F);
+    for (int scene = 0; scene < 4; ++scene) {
+        const int w = 37 + scene * 11;
+        const int h = 29 + scene * 5;
+        Image<float> z(w, h);
+        Image<std::uint8_t> vessels(w, h, 0);
+        // Smooth VSS, random vessel blobs, a few holes without a VSS.
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                z(x, y) = 0.5F + 0.3F * std::sin(0.21F * x + scene) * std::cos(0.17F * y);
+            }
+        }
+        for (int blob = 0; blob < 6; ++blob) {
+            const int cx = static_cast<int>(u(rng) * w);
+            const int cy = static_cast<int>(u(rng) * h);
+            const int r = 2 + static_cast<int>(u(rng) * 5);
+            for (int y = 0; y < h; ++y) {
+                for (int x = 0; x < w; ++x) {
+                    if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) {
+                        vessels(x, y) = 1;
+                        z(x, y) = u(rng);
+                    }
+                }
+            }
+        }
+        for (int hole = 0; hole < 10; ++hole) {
+            z(static_cast<int>(u(rng) * w), static_cast<int>(u(rng) * h)) = kNaN;
+        }
+        const auto s = fittedSlopes(z.view(), vessels.view());
+        double worst = 0.0;
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                if (vessels(x, y) != 0 || !std::isfinite(z(x, y))) {
+                    EXPECT_EQ(s(x, y), glm::vec4(0.0F));
+                    continue;
+                }
+                const glm::dvec3 ref = referenceSlope(z, vessels, x, y);
+                worst = std::max({worst, std::abs(s(x, y).x - ref.x), std::abs(s(x, y).y - ref.y),
+                                  std::abs(s(x, y).z - ref.z)});
+                EXPECT_EQ(s(x, y).w, 1.0F);
+            }
+        }
+        EXPECT_LT(worst, 2e-6) << "scene " << scene;
+    }
+}
+
+TEST(FittedSlopesTest, RejectsMismatchedSizesAndStops) {
+    Image<float> z(8, 8, 0.5F);
+    Image<std::uint8_t> vessels(8, 7, 0);
+    EXPECT_THROW(static_cast<void>(fittedSlopes(z.view(), vessels.view())), InvalidArgumentError);
+    Image<std::uint8_t> fits(8, 8, 0);
+    std::stop_source stop;
+    stop.request_stop();
+    EXPECT_THROW(static_cast<void>(fittedSlopes(z.view(), fits.view(), stop.get_token())),
+                 CancelledError);
+    const auto empty = fittedSlopes(Image<float>(0, 0).view(), Image<std::uint8_t>(0, 0).view());
+    EXPECT_EQ(empty.width(), 0);
 }
 
 }  // namespace

@@ -22,6 +22,7 @@
 #include "vv/core/Image.h"
 #include "vv/render/RenderGraphCache.h"
 #include "vv/vss/DepthNormalization.h"
+#include "vv/vss/Shading.h"
 #include "vv/vss/Vss.h"
 
 namespace vv::render {
@@ -101,7 +102,16 @@ struct SolvedFrame {
     double milliseconds = 0.0;
     bool preview = false;     ///< a preview-quality solve
     double errorBound = 0.0;  ///< the solver's bound on |z' error|; NaN = none
+    /// The lighting's plane-fit slopes (vss::fittedSlopes), same order and
+    /// size as `height`; empty for previews (quick normals) and above
+    /// kMaxCpuSlopePixels (the shader fits them itself there).
+    Image<glm::vec4> slopes;
 };
+
+/// Frames up to this many pixels (4K UHD) get their VSS slopes from the
+/// solver's thread (16 bytes a pixel, CPU and texture); larger ones (big
+/// exports) let the shader fit them, slower but without the memory.
+constexpr long long kMaxCpuSlopePixels = 3840LL * 2160LL;
 
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
@@ -120,6 +130,11 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     frame.dmax = result.dmax;
     frame.preview = preview;
     frame.errorBound = result.errorBound;
+    if (!preview && !frame.height.empty() &&
+        static_cast<long long>(frame.height.width()) * frame.height.height() <=
+            kMaxCpuSlopePixels) {
+        frame.slopes = vss::fittedSlopes(frame.height.view(), mask.view(), stop);
+    }
     frame.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
     return frame;
@@ -338,6 +353,7 @@ struct FrameRenderer::Impl {
     std::unique_ptr<GlPassObserver> observer;
     GLuint vssProgram = 0;
     GLuint vssQuickProgram = 0;  ///< vss.frag with QUICK_NORMALS (preview frames)
+    GLuint vssSlopeProgram = 0;  ///< vss.frag with SLOPE_TEXTURE (slopes from the solver)
     GLuint compositeProgram = 0;
     GLuint ssaoProgram = 0;
     GLuint aoBlurProgram = 0;
@@ -354,6 +370,8 @@ struct FrameRenderer::Impl {
     std::optional<std::uint64_t> lastDepthView;
     /// What the last run of the solve pass did.
     VssFrameStatus solveStatus;
+    /// True when the slope texture holds the shown VSS's slopes (SolvedFrame::slopes).
+    bool shownSlopes = false;
     /// What the height texture holds now.
     bool shown = false;
     std::shared_ptr<const SolvedFrame> shownFrame;
@@ -445,6 +463,26 @@ struct FrameRenderer::Impl {
         dmin = shown ? frame->dmin : 0.0;
         dmax = shown ? frame->dmax : 0.0;
     }
+
+    /// After uploadHeight(): the shown frame's slopes into `texture` when it
+    /// has them at the texture's size (shownSlopes), else nothing.
+    void uploadSlopes(const GlTexture& texture) {
+        const auto& d = texture.descriptor();
+        shownSlopes = shown && shownFrame->slopes.width() == d.width &&
+                      shownFrame->slopes.height() == d.height;
+        if (!shownSlopes) {
+            return;
+        }
+        auto& g = f();
+        g.glBindTexture(GL_TEXTURE_2D, texture.texture());
+        g.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+        g.glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(shownFrame->slopes.stride()));
+        g.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, d.width, d.height, GL_RGBA, GL_FLOAT,
+                          shownFrame->slopes.row(0));
+        g.glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+        g.glBindTexture(GL_TEXTURE_2D, 0);
+        checkGlError(g, "uploading the VSS slopes");
+    }
 };
 
 FrameRenderer::FrameRenderer() : impl_(std::make_unique<Impl>()) {}
@@ -479,6 +517,9 @@ void FrameRenderer::initialize() {
         buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/vss.frag", "VSS shading");
     impl_->vssQuickProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert", vssFragment,
                                           "VSS shading (quick normals)", quickNormals);
+    const std::string_view slopeTexture[] = {"SLOPE_TEXTURE"};
+    impl_->vssSlopeProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert", vssFragment,
+                                          "VSS shading (fitted slopes)", slopeTexture);
     impl_->compositeProgram = buildProgram(gl, ":/vv/shaders/fullscreen.vert",
                                            ":/vv/shaders/composite.frag", "composite");
     impl_->ssaoProgram =
@@ -493,6 +534,7 @@ void FrameRenderer::initialize() {
     gl.glGenTextures(1, &impl_->scaleLut);
     impl_->uploadedScale.reset();
     impl_->shown = false;
+    impl_->shownSlopes = false;
     impl_->shownFrame.reset();
     checkGlError(gl, "FrameRenderer::initialize");
 }
@@ -511,6 +553,7 @@ void FrameRenderer::release() noexcept {
     }
     g.glDeleteProgram(impl_->vssProgram);
     g.glDeleteProgram(impl_->vssQuickProgram);
+    g.glDeleteProgram(impl_->vssSlopeProgram);
     g.glDeleteProgram(impl_->compositeProgram);
     g.glDeleteProgram(impl_->ssaoProgram);
     g.glDeleteProgram(impl_->aoBlurProgram);
@@ -521,6 +564,7 @@ void FrameRenderer::release() noexcept {
     g.glDeleteTextures(1, &impl_->scaleLut);
     impl_->vssProgram = 0;
     impl_->vssQuickProgram = 0;
+    impl_->vssSlopeProgram = 0;
     impl_->compositeProgram = 0;
     impl_->ssaoProgram = 0;
     impl_->aoBlurProgram = 0;
@@ -531,6 +575,7 @@ void FrameRenderer::release() noexcept {
     impl_->scaleLut = 0;
     impl_->uploadedScale.reset();
     impl_->shown = false;
+    impl_->shownSlopes = false;
     impl_->shownFrame.reset();
     meshes_.release();
     volume_.release();
@@ -566,6 +611,7 @@ void FrameRenderer::clearCache() {
         impl_->cache->clear();
     }
     impl_->shown = false;
+    impl_->shownSlopes = false;
     impl_->shownFrame.reset();
     impl_->lastDepthView.reset();
 }
@@ -827,6 +873,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> depth;
         Handle<SolvedFrameRef> solved;
         Handle<Texture> height;
+        Handle<Texture> slope;
     };
     const bool async = mode_ == SolveMode::Asynchronous && impl.worker != nullptr;
     Handle<SolvedFrameRef> solvedImport;
@@ -852,6 +899,9 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             std::to_string(external->height.height()) + ", the frame renders at " +
             std::to_string(w) + "x" + std::to_string(h));
     }
+    // The slopes the solver's thread fits for the lighting: at the render
+    // size up to kMaxCpuSlopePixels, else a stand-in texel (the shader fits).
+    const bool cpuSlopes = static_cast<long long>(w) * h <= kMaxCpuSlopePixels;
     const Solve& solve = graph.addPass<Solve>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Solve& d) {
@@ -864,14 +914,22 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             }
             d.height =
                 b.write(b.createPersistent<Texture>("vss-height", size(TextureFormat::R32F)));
+            d.slope = b.write(b.createPersistent<Texture>(
+                "vss-slope", cpuSlopes ? size(TextureFormat::RGBA32F)
+                                       : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
         },
         [&impl, &status, async, request, depthView, solverOptions, preview, depthRange, external](
             const RenderGraph::Resources& r, const Solve& d) {
             status = VssFrameStatus{};
-            const GlTexture& height = glTex(r.get(d.height));
+            const GlTexture& heightTexture = glTex(r.get(d.height));
+            const GlTexture& slopeTexture = glTex(r.get(d.slope));
+            const auto upload = [&](const std::shared_ptr<const SolvedFrame>& frame) {
+                impl.uploadHeight(heightTexture, frame);
+                impl.uploadSlopes(slopeTexture);
+            };
             const GlTexture& depthTexture = glTex(r.get(d.depth));
             if (external) {
-                impl.uploadHeight(height, external);
+                upload(external);
                 status.solveMilliseconds = external->milliseconds;
                 status.current = true;
                 return;
@@ -881,14 +939,14 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 impl.lastDepthView = depthView;
                 const auto frame = std::make_shared<const SolvedFrame>(
                     solveFrame(request, impl.lastDepth, solverOptions, preview, depthRange, {}));
-                impl.uploadHeight(height, frame);
+                upload(frame);
                 status.solveMilliseconds = frame->milliseconds;
                 status.current = true;
                 return;
             }
             const auto& latest = r.get(d.solved).frame;
             if (latest && latest->key == request) {
-                impl.uploadHeight(height, latest);
+                upload(latest);
                 status.solveMilliseconds = latest->milliseconds;
                 status.current = true;
                 return;
@@ -900,7 +958,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                     SolveWorker::Job{request, impl.lastDepth, solverOptions, preview, depthRange});
             }
             status.pending = true;
-            impl.uploadHeight(height, latest);  // the previous VSS, or none
+            upload(latest);  // the previous VSS, or none
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
 
@@ -1049,6 +1107,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     // 4. VSS shading.
     struct VssShading {
         Handle<Texture> height;
+        Handle<Texture> slope;
         Handle<Texture> linearDepth;
         Handle<Texture> color;
     };
@@ -1067,6 +1126,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         "vss-shading",
         [&](RenderGraph::Builder& b, VssShading& d) {
             d.height = b.read(solve.height);
+            d.slope = b.read(solve.slope);
             d.linearDepth = b.read(geometry.linearDepth);
             d.color = b.write(b.create<Texture>("vss-color", size(TextureFormat::RGBA8)));
         },
@@ -1084,8 +1144,13 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             if (!impl.shown) {
                 return;
             }
-            // Preview frames (camera moving): one-pixel differences, no fit.
-            const GLuint program = vssSettings.preview ? impl.vssQuickProgram : impl.vssProgram;
+            // Preview frames (camera moving): one-pixel differences, no fit;
+            // exact ones: the slopes the solver's thread fitted, or (none, e.g.
+            // an external VSS or a huge frame) the shader fits them itself.
+            const bool slopes = !vssSettings.preview && impl.shownSlopes;
+            const GLuint program = vssSettings.preview ? impl.vssQuickProgram
+                                   : slopes            ? impl.vssSlopeProgram
+                                                       : impl.vssProgram;
             const auto loc = [&](const char* name) {
                 return g.glGetUniformLocation(program, name);
             };
@@ -1100,6 +1165,11 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glUniform1i(loc("uHeight"), 0);
             g.glUniform1i(loc("uScale"), 1);
             g.glUniform1i(loc("uLinearDepth"), 2);
+            if (slopes) {
+                g.glActiveTexture(GL_TEXTURE3);
+                g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.slope)).texture());
+                g.glUniform1i(loc("uSlope"), 3);
+            }
             g.glUniform1f(loc("uScaleSize"), static_cast<float>(kScaleLutSize));
             g.glUniform1f(loc("uDmin"), static_cast<float>(impl.dmin));
             g.glUniform1f(loc("uDmax"), static_cast<float>(impl.dmax));
