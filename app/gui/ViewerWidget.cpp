@@ -8,6 +8,7 @@
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QOpenGLFunctions>
 #include <QPaintEvent>
 #include <QPainter>
 #include <QTimer>
@@ -15,6 +16,7 @@
 #include <QWheelEvent>
 #include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
@@ -322,7 +324,38 @@ void ViewerWidget::settle() {
     }
 }
 
+namespace {
+/// The scales dynamic resolution steps through, each ~0.84 of the one
+/// before (~0.7 of its pixels). Discrete, so that the size holds still while
+/// the time fits: a new size cannot show the last preview VSS (a VSS is only
+/// shown at the size it was solved at).
+constexpr std::array<float, 9> kScaleSteps = {1.0F, 0.84F, 0.71F, 0.6F, 0.5F,
+                                              0.42F, 0.35F, 0.3F, 0.25F};
+}  // namespace
+
+void ViewerWidget::adaptInteractiveScale(double milliseconds) {
+    // The step at or below the current scale.
+    std::size_t step = kScaleSteps.size() - 1;
+    for (std::size_t i = 0; i < kScaleSteps.size(); ++i) {
+        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F) {
+            step = i;
+            break;
+        }
+    }
+    if (milliseconds > 1.15 * frameBudgetMs_ && step + 1 < kScaleSteps.size()) {
+        ++step;  // too slow: ~0.7 of the pixels
+    } else if (milliseconds < 0.6 * frameBudgetMs_ && step > 0) {
+        --step;  // ~1.4x the pixels would still fit
+    }
+    interactiveScale_ = kScaleSteps[step];
+}
+
+void ViewerWidget::setFrameBudget(double milliseconds) {
+    frameBudgetMs_ = std::isfinite(milliseconds) ? std::max(milliseconds, 0.0) : 0.0;
+}
+
 void ViewerWidget::setInteractiveScale(float scale) {
+    frameBudgetMs_ = 0.0;  // a fixed scale
     interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
     requestFrame();
 }
@@ -519,6 +552,11 @@ void ViewerWidget::paintGL() {
         renderer_.render(camera_, settings, target);
         if (recordTimings_) {
             timings_ = renderer_.lastTimings();
+        }
+        if (moving_ && frameBudgetMs_ > 0.0) {
+            // Dynamic resolution: this frame's drawing time sets the next one's size.
+            context()->functions()->glFinish();
+            adaptInteractiveScale(static_cast<double>(paintTimer.nsecsElapsed()) / 1e6);
         }
         if (deferOcclusion_ && !moving_) {
             const render::VssFrameStatus& status = renderer_.vssStatus();

@@ -144,8 +144,23 @@ class ViewerWidget : public QOpenGLWidget {
     /// Render size of frames while the camera moves, relative to the widget,
     /// in [0.1, 1] (default 0.5: a quarter of the pixels). 1 = full size,
     /// which lets the exact solve start from the last preview frame's depth.
+    /// Setting it fixes the scale (setFrameBudget(0)).
     void setInteractiveScale(float scale);
+    /// The scale the next moving frame renders at (adapted to the frame
+    /// budget unless fixed).
     [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
+    /// Dynamic resolution while the camera moves: after each moving frame the
+    /// interactive scale steps down (1, 0.84, 0.71, ... kMinInteractiveScale:
+    /// ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
+    /// and up when it took under 0.6 x, so slow machines keep their frame
+    /// rate and fast ones get full-size frames; in between the size holds
+    /// (a preview VSS shows only at the size it was solved at). Default 30 ms of drawing (on software OpenGL the window's
+    /// composition adds ~15-20 ms at 720p, so this aims at 20 fps there);
+    /// 0 = a fixed scale. Each moving frame then waits for the GL to finish
+    /// (glFinish) to measure itself. Non-finite or negative values count as 0.
+    void setFrameBudget(double milliseconds);
+    [[nodiscard]] double frameBudget() const noexcept { return frameBudgetMs_; }
+    static constexpr float kMinInteractiveScale = 0.25F;
     /// Triangle budget of the simplified geometry drawn while the camera
     /// moves (default 60,000); 0 = always draw the full meshes. Applies to
     /// scenes set afterwards.
@@ -284,6 +299,9 @@ class ViewerWidget : public QOpenGLWidget {
     /// Asks for a new frame: paintGL draws only after such a request (or a
     /// resize / new context); other repaints keep the last frame.
     void requestFrame();
+    /// Dynamic resolution: the next moving frame's scale after one that took
+    /// `milliseconds` to draw (setFrameBudget).
+    void adaptInteractiveScale(double milliseconds);
     /// A camera change by the user: preview quality until it settles.
     void cameraChanged();
     void settle();
@@ -330,6 +348,7 @@ class ViewerWidget : public QOpenGLWidget {
     bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO
     int settleDelayMs_ = 150;
     float interactiveScale_ = 0.5F;
+    double frameBudgetMs_ = 30.0;
     QSize lastRenderSize_;
     quint64 solvesRequestedOnSettle_ = 0;
     quint64 solvesPreparedOnSettle_ = 0;

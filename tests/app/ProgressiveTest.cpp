@@ -328,6 +328,38 @@ TEST_F(ProgressiveTest, RepaintsWithoutAChangeKeepTheLastFrame) {
     EXPECT_NE(before.pixelColor(0, 0), QColor(255, 0, 0));
 }
 
+// Dynamic resolution: moving frames shrink when they take longer than the
+// budget and grow back to full size when they are fast; a set scale stays.
+TEST_F(ProgressiveTest, MovingFramesAdaptTheirSizeToTheFrameBudget) {
+    ViewerWidget& viewer = open(makeScene(), 640, 480);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
+    EXPECT_GT(viewer.frameBudget(), 0.0);  // on by default
+    viewer.setSettleDelay(600000);
+    const auto rotate = [&](int moves) {
+        Drag drag(viewer);
+        for (int i = 0; i < moves; ++i) {
+            const quint64 frames = viewer.framesWithScene();
+            drag.moveBy({6, 2});
+            EXPECT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
+        }
+        drag.release();
+        EXPECT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.occlusionDeferred(); }));
+    };
+    // No frame fits in 0.01 ms: down to the smallest scale.
+    viewer.setFrameBudget(0.01);
+    rotate(12);
+    EXPECT_FLOAT_EQ(viewer.interactiveScale(), ViewerWidget::kMinInteractiveScale);
+    // Every frame fits in 100 s: up to full size, which the last moving frame used.
+    viewer.setFrameBudget(1e5);
+    rotate(12);
+    EXPECT_FLOAT_EQ(viewer.interactiveScale(), 1.0F);
+    // A set scale is fixed.
+    viewer.setInteractiveScale(0.5F);
+    EXPECT_EQ(viewer.frameBudget(), 0.0);
+    rotate(3);
+    EXPECT_FLOAT_EQ(viewer.interactiveScale(), 0.5F);
+}
+
 TEST_F(ProgressiveTest, WheelZoomSettlesByTheTimer) {
     ViewerWidget& viewer = open(makeScene(), 640, 480);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
@@ -378,6 +410,7 @@ TEST_F(ProgressiveTest, ReducedResolutionWhileMovingThenFull) {
     ViewerWidget& viewer = open(makeScene(), 800, 600);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
     EXPECT_FLOAT_EQ(viewer.interactiveScale(), 0.5F);
+    viewer.setInteractiveScale(0.5F);  // fixed: no dynamic resolution here
     const qreal ratio = viewer.devicePixelRatioF();
     const QSize full(static_cast<int>(std::lround(viewer.width() * ratio)),
                      static_cast<int>(std::lround(viewer.height() * ratio)));
@@ -540,11 +573,15 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     struct Config {
         bool progressive;
         float scale;
+        double budget;  // > 0: dynamic resolution from `scale` on
     };
-    for (const Config config : {Config{true, 0.5F}, Config{true, 1.0F}, Config{false, 1.0F}}) {
+    for (const Config config : {Config{true, 0.5F, 30.0}, Config{true, 0.5F, 0.0},
+                                Config{true, 1.0F, 0.0}, Config{false, 1.0F, 0.0}}) {
         const bool progressive = config.progressive;
         viewer.setProgressiveRefinement(progressive);
         viewer.setInteractiveScale(config.scale);
+        viewer.setFrameBudget(config.budget);
+        std::printf("[bench] frame budget %.0f ms (0 = fixed scale)\n", config.budget);
         viewer.setSettleDelay(150);
         ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
         const auto countersBefore = viewer.solveCounters();
