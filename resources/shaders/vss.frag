@@ -45,7 +45,8 @@ const bool kQuickNormals = false;
 // Exact frames are built with SLOPE_TEXTURE defined when the solver's thread
 // fitted the slopes already (vss::fittedSlopes: the same fit as
 // fittedGradient below, once per solve instead of every frame):
-// uSlope = (dz'/dx, dz'/dy, support, 1) on void pixels.
+// uSlope = (dz'/dx, dz'/dy, support, coherence) on void pixels, the
+// coherence being Toksvig's length below (vss::addNormalCoherence).
 #ifdef SLOPE_TEXTURE
 uniform sampler2D uSlope;
 #endif
@@ -173,6 +174,9 @@ void main() {
                      derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
     float support = 1.0;
     bool vessel = isVessel(p);
+#ifdef SLOPE_TEXTURE
+    vec4 fitted = vec4(0.0, 0.0, 1.0, 1.0);
+#endif
     if (!vessel && kQuickNormals) {
         // Never across a contour: vessel neighbours count as missing.
         ivec2 dx = ivec2(1, 0);
@@ -185,7 +189,7 @@ void main() {
         support = (hasVss(xm) && hasVss(xp) && hasVss(ym) && hasVss(yp)) ? 1.0 : 0.0;
     } else if (!vessel) {
 #ifdef SLOPE_TEXTURE
-        vec4 fitted = texelFetch(uSlope, p, 0);
+        fitted = texelFetch(uSlope, p, 0);
         grad = fitted.xy;
         support = fitted.z;
 #else
@@ -218,6 +222,13 @@ void main() {
     // Toksvig: normals 3 px around; missing ones count as turned away.
     float shininess = uShininess;
     float specularScale = smoothstep(0.55, 0.9, support);
+#ifdef SLOPE_TEXTURE
+    if (!vessel) {
+        float len = clamp(fitted.w, 1e-3, 1.0);
+        shininess = len * uShininess / (len + uShininess * (1.0 - len));
+        specularScale *= (1.0 + shininess) / (1.0 + uShininess);
+    }
+#else
     if (!vessel && !kQuickNormals) {
         float scale = range / pixel;
         vec3 sum = n;
@@ -234,6 +245,7 @@ void main() {
         shininess = len * uShininess / (len + uShininess * (1.0 - len));
         specularScale *= (1.0 + shininess) / (1.0 + uShininess);
     }
+#endif
     float specular = diffuse > 0.0 ? pow(max(dot(n, hv), 0.0), shininess) : 0.0;
     specular *= specularScale;
     vec3 lit = base * (uAmbient + uDiffuse * diffuse) + vec3(uSpecular * specular);

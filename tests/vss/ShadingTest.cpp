@@ -311,5 +311,40 @@ TEST(FittedSlopesTest, RejectsMismatchedSizesAndStops) {
     EXPECT_EQ(empty.width(), 0);
 }
 
+TEST(NormalCoherenceTest, OneOnAPlaneLessWhereANeighbourIsAVessel) {
+    Image<float> z(40, 40);
+    Image<std::uint8_t> vessels(40, 40, 0);
+    for (int y = 0; y < 40; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            // A vessel column at x = 20..21 (its depth far off the plane).
+            vessels(x, y) = (x == 20 || x == 21) ? 1 : 0;
+            z(x, y) = vessels(x, y) != 0 ? 3.0F : 0.3F + 0.01F * x + 0.005F * y;
+        }
+    }
+    auto slopes = fittedSlopes(z.view(), vessels.view());
+    addNormalCoherence(slopes, z.view(), vessels.view(), SlopeScale{10.0, 60.0, 0.002});
+    for (int y = 0; y < 40; ++y) {
+        for (int x = 0; x < 40; ++x) {
+            const float c = slopes(x, y).w;
+            if (vessels(x, y) != 0) {
+                EXPECT_EQ(c, 0.0F);
+            } else if (x <= 15 || x >= 26) {
+                // All normals around are the plane's (or off the image).
+                EXPECT_NEAR(c, 1.0F, 1e-6) << x << "," << y;
+            } else if ((x == 18 || x == 23) && y >= 1 && y <= 38) {
+                // 3 px away lies a vessel pixel: a zero normal of five (or four;
+                // rows 0 and 39 leave out neighbours within a pixel of the border).
+                EXPECT_LE(c, 0.8F + 1e-6F) << x << "," << y;
+                EXPECT_GT(c, 0.5F) << x << "," << y;
+            }
+        }
+    }
+    EXPECT_THROW(addNormalCoherence(slopes, z.view(), vessels.view(), SlopeScale{0.0, 1.0, 0.0}),
+                 InvalidArgumentError);
+    Image<std::uint8_t> small(4, 4, 0);
+    EXPECT_THROW(addNormalCoherence(slopes, z.view(), small.view(), SlopeScale{0.0, 1.0, 1.0}),
+                 InvalidArgumentError);
+}
+
 }  // namespace
 }  // namespace vv::vss

@@ -113,9 +113,21 @@ struct SolvedFrame {
 /// exports) let the shader fit them, slower but without the memory.
 constexpr long long kMaxCpuSlopePixels = 3840LL * 2160LL;
 
+/// Scene units per pixel per unit of depth of `camera` at a render height of
+/// `height` pixels; a tile (Camera::window) keeps the full view's pixel size:
+/// P[1][1] grew by the full height / the tile's.
+float pixelScaleOf(const Camera& camera, int height) {
+    return camera.window() ? 2.0F / (camera.projectionMatrix()[1][1] * static_cast<float>(height))
+                           : 2.0F * std::tan(glm::radians(camera.fieldOfView()) * 0.5F) /
+                                 static_cast<float>(height);
+}
+
+/// Solves the VSS of `depth`; exact solves also get their lighting slopes
+/// (`pixelScale`: pixelScaleOf the view, for the normals' coherence).
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
-                       const vss::DepthRange& range, const std::stop_token& stop) {
+                       const vss::DepthRange& range, float pixelScale,
+                       const std::stop_token& stop) {
     const auto start = std::chrono::steady_clock::now();
     const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
     vss::VssOptions vssOptions;
@@ -134,6 +146,10 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
         static_cast<long long>(frame.height.width()) * frame.height.height() <=
             kMaxCpuSlopePixels) {
         frame.slopes = vss::fittedSlopes(frame.height.view(), mask.view(), stop);
+        if (std::isfinite(frame.dmin) && std::isfinite(frame.dmax) && pixelScale > 0.0F) {
+            vss::addNormalCoherence(frame.slopes, frame.height.view(), mask.view(),
+                                    vss::SlopeScale{frame.dmin, frame.dmax, pixelScale});
+        }
     }
     frame.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -156,6 +172,7 @@ class SolveWorker {
         vss::SolverOptions options;
         bool preview = false;
         vss::DepthRange range;
+        float pixelScale = 0.0F;  ///< pixelScaleOf the view (slopes' normals)
     };
 
     explicit SolveWorker(std::function<void()> onSolved)
@@ -239,7 +256,8 @@ class SolveWorker {
             bool cancelled = false;
             try {
                 solved = std::make_shared<const SolvedFrame>(
-                    solveFrame(job.key, job.depth, job.options, job.preview, job.range, jobStop));
+                    solveFrame(job.key, job.depth, job.options, job.preview, job.range,
+                               job.pixelScale, jobStop));
             } catch (const CancelledError&) {
                 cancelled = true;
             } catch (const std::exception&) {
@@ -660,7 +678,8 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
         return true;
     }
     impl_->worker->submit(SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview,
-                                           vssSettings.range});
+                                           vssSettings.range,
+                                           pixelScaleOf(camera, renderSize.y)});
     return true;
 }
 
@@ -902,6 +921,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     // The slopes the solver's thread fits for the lighting: at the render
     // size up to kMaxCpuSlopePixels, else a stand-in texel (the shader fits).
     const bool cpuSlopes = static_cast<long long>(w) * h <= kMaxCpuSlopePixels;
+    const float solvePixelScale = pixelScaleOf(camera, h);
     const Solve& solve = graph.addPass<Solve>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Solve& d) {
@@ -918,8 +938,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 "vss-slope", cpuSlopes ? size(TextureFormat::RGBA32F)
                                        : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
         },
-        [&impl, &status, async, request, depthView, solverOptions, preview, depthRange, external](
-            const RenderGraph::Resources& r, const Solve& d) {
+        [&impl, &status, async, request, depthView, solverOptions, preview, depthRange, external,
+         solvePixelScale](const RenderGraph::Resources& r, const Solve& d) {
             status = VssFrameStatus{};
             const GlTexture& heightTexture = glTex(r.get(d.height));
             const GlTexture& slopeTexture = glTex(r.get(d.slope));
@@ -938,7 +958,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
                 const auto frame = std::make_shared<const SolvedFrame>(
-                    solveFrame(request, impl.lastDepth, solverOptions, preview, depthRange, {}));
+                    solveFrame(request, impl.lastDepth, solverOptions, preview, depthRange,
+                               solvePixelScale, {}));
                 upload(frame);
                 status.solveMilliseconds = frame->milliseconds;
                 status.current = true;
@@ -955,7 +976,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
                 impl.worker->submit(
-                    SolveWorker::Job{request, impl.lastDepth, solverOptions, preview, depthRange});
+                    SolveWorker::Job{request, impl.lastDepth, solverOptions, preview, depthRange,
+                                     solvePixelScale});
             }
             status.pending = true;
             upload(latest);  // the previous VSS, or none
@@ -1111,12 +1133,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> linearDepth;
         Handle<Texture> color;
     };
-    // Scene units per pixel per unit of depth; a tile (Camera::window) keeps
-    // the full view's pixel size: P[1][1] grew by the full height / the tile's.
-    const float pixelScale =
-        camera.window()
-            ? 2.0F / (projection[1][1] * static_cast<float>(h))
-            : 2.0F * std::tan(glm::radians(camera.fieldOfView()) * 0.5F) / static_cast<float>(h);
+    // Scene units per pixel per unit of depth.
+    const float pixelScale = pixelScaleOf(camera, h);
     // Where the view axis meets the frame, in pixels from its centre: 0
     // except for off-axis tiles (P[2][0], P[2][1] are the NDC shift).
     const glm::vec2 axisOffset(-0.5F * projection[2][0] * static_cast<float>(w),

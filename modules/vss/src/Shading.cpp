@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
 #include <limits>
 #include <string>
 #include <vector>
@@ -312,6 +314,62 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
         throw CancelledError();
     }
     return slopes;
+}
+
+void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
+                        ImageView<const std::uint8_t> vessels, const SlopeScale& scale) {
+    const int w = height.width();
+    const int h = height.height();
+    if (slopes.width() != w || slopes.height() != h || vessels.width() != w ||
+        vessels.height() != h) {
+        throw InvalidArgumentError("addNormalCoherence: slopes, height and vessel mask differ in size");
+    }
+    if (!std::isfinite(scale.dmin) || !std::isfinite(scale.dmax) ||
+        !std::isfinite(scale.pixelScale) || scale.pixelScale <= 0.0) {
+        throw InvalidArgumentError("addNormalCoherence: needs a finite depth range and pixelScale > 0");
+    }
+    const double range = std::max(scale.dmax - scale.dmin, 0.0);
+    const auto unit = [](double gx, double gy) {
+        const double len = std::sqrt(gx * gx + gy * gy + 1.0);
+        return glm::dvec3(gx / len, gy / len, 1.0 / len);
+    };
+    constexpr std::array<std::array<int, 2>, 4> kAround = {{{3, 0}, {-3, 0}, {0, 3}, {0, -3}}};
+    parallelFor(0, h, 32, [&](long begin, long end) {
+        for (int y = static_cast<int>(begin); y < static_cast<int>(end); ++y) {
+            glm::vec4* out = slopes.row(y);
+            for (int x = 0; x < w; ++x) {
+                if (out[x].w == 0.0F) {
+                    continue;
+                }
+                const double t = std::clamp(static_cast<double>(height(x, y)), 0.0, 1.0);
+                const double pixel = std::max((scale.dmin + t * range) * scale.pixelScale, 1e-12);
+                const double k = range / pixel;
+                glm::dvec3 sum = unit(out[x].x * k, out[x].y * k);
+                double count = 1.0;
+                for (const auto& o : kAround) {
+                    const int qx = x + o[0];
+                    const int qy = y + o[1];
+                    if (qx < 1 || qy < 1 || qx >= w - 1 || qy >= h - 1) {
+                        continue;  // off the image: left out
+                    }
+                    count += 1.0;
+                    const float c = height(qx, qy);
+                    const float xm = height(qx - 1, qy);
+                    const float xp = height(qx + 1, qy);
+                    const float ym = height(qx, qy - 1);
+                    const float yp = height(qx, qy + 1);
+                    if (vessels(qx, qy) != 0 || !std::isfinite(c) || !std::isfinite(xm) ||
+                        !std::isfinite(xp) || !std::isfinite(ym) || !std::isfinite(yp)) {
+                        continue;  // no normal there: a zero one
+                    }
+                    sum += unit(0.5 * (static_cast<double>(xp) - xm) * k,
+                                0.5 * (static_cast<double>(yp) - ym) * k);
+                }
+                out[x].w =
+                    static_cast<float>(std::clamp(glm::length(sum) / count, 1e-3, 1.0));
+            }
+        }
+    });
 }
 
 }  // namespace vv::vss

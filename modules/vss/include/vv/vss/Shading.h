@@ -63,4 +63,27 @@ struct IsoLevel {
                                             ImageView<const std::uint8_t> vessels,
                                             const std::stop_token& stop = {});
 
+/// What turns a slope in z' per pixel into a slope in scene units: the
+/// depth range z is normalised over and the pixel size per unit of depth
+/// (2 tan(fov / 2) / image height for a perspective view).
+struct SlopeScale {
+    double dmin = 0.0;
+    double dmax = 0.0;
+    double pixelScale = 0.0;
+};
+
+/// Toksvig's coherence of the VSS normals around each void pixel of
+/// `slopes` (from fittedSlopes), written into its w: |mean of the normal and
+/// the four normals 3 pixels away| in [1e-3, 1] (1 = a flat neighbourhood);
+/// the shader widens and dims the highlight where it is below 1. A
+/// neighbour's normal is its central difference when it and its four
+/// neighbours have a VSS and it is no vessel pixel, else it counts as a zero
+/// normal (turned away); neighbours within a pixel of the image border are
+/// left out. Normals in scene units: slope * (dmax - dmin) / (depth *
+/// pixelScale) with depth = dmin + z' (dmax - dmin) at the centre pixel.
+/// Pixels with w = 0 (no fitted slope) stay 0. Throws InvalidArgumentError
+/// when the sizes differ or `scale` is not finite with pixelScale > 0.
+void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
+                        ImageView<const std::uint8_t> vessels, const SlopeScale& scale);
+
 }  // namespace vv::vss
