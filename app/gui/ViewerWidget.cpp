@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/ViewerWidget.h"
-#include <QElapsedTimer>
 
+#include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QGuiApplication>
 #include <QHelpEvent>
@@ -329,8 +329,8 @@ namespace {
 /// before (~0.7 of its pixels). Discrete, so that the size holds still while
 /// the time fits: a new size cannot show the last preview VSS (a VSS is only
 /// shown at the size it was solved at).
-constexpr std::array<float, 9> kScaleSteps = {1.0F, 0.84F, 0.71F, 0.6F, 0.5F,
-                                              0.42F, 0.35F, 0.3F, 0.25F};
+constexpr std::array<float, 9> kScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F, 0.5F,
+                                              0.42F, 0.35F, 0.3F,  0.25F};
 }  // namespace
 
 void ViewerWidget::adaptInteractiveScale(double milliseconds) {

@@ -154,10 +154,10 @@ class ViewerWidget : public QOpenGLWidget {
     /// ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
     /// and up when it took under 0.6 x, so slow machines keep their frame
     /// rate and fast ones get full-size frames; in between the size holds
-    /// (a preview VSS shows only at the size it was solved at). Default 30 ms of drawing (on software OpenGL the window's
-    /// composition adds ~15-20 ms at 720p, so this aims at 20 fps there);
-    /// 0 = a fixed scale. Each moving frame then waits for the GL to finish
-    /// (glFinish) to measure itself. Non-finite or negative values count as 0.
+    /// (a preview VSS shows only at the size it was solved at). Default 30 ms of drawing (on
+    /// software OpenGL the window's composition adds ~15-20 ms at 720p, so this aims at 20 fps
+    /// there); 0 = a fixed scale. Each moving frame then waits for the GL to finish (glFinish) to
+    /// measure itself. Non-finite or negative values count as 0.
     void setFrameBudget(double milliseconds);
     [[nodiscard]] double frameBudget() const noexcept { return frameBudgetMs_; }
     static constexpr float kMinInteractiveScale = 0.25F;

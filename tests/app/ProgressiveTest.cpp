@@ -261,8 +261,9 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusion) {
     drag.moveBy({40, 10});
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
     const QMetaObject::Connection record =
-        QObject::connect(&viewer, &ViewerWidget::frameRendered,
-                         [&] { frames.push_back({exactShown(viewer), passState("ssao")}); });
+        QObject::connect(&viewer, &ViewerWidget::frameRendered, [&] {
+            frames.push_back({exactShown(viewer), passState("ssao")});
+        });
     drag.release();
     EXPECT_TRUE(viewer.occlusionDeferred());
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.occlusionDeferred(); }));
@@ -612,8 +613,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         QElapsedTimer settle;
         settle.start();
         const quint64 framesAtRelease = viewer.framesWithScene();
-        const QMetaObject::Connection settleFrames = QObject::connect(
-            &viewer, &ViewerWidget::frameRendered, [&] {
+        const QMetaObject::Connection settleFrames =
+            QObject::connect(&viewer, &ViewerWidget::frameRendered, [&] {
                 settling.add(viewer);
                 if (passTimes) {
                     std::printf("[bench]   frame after release (%s, %.0f ms after it):",
@@ -652,9 +653,9 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             static_cast<unsigned long long>(countersAfter.cancelled - countersBefore.cancelled));
         if (passTimes) {
             moving.print("moving");
-        std::printf("[bench]   settle (exact solve requested / G-buffer prepared): %.1f ms\n",
-                    viewer.lastSettleMilliseconds());
-        settling.print("after release");
+            std::printf("[bench]   settle (exact solve requested / G-buffer prepared): %.1f ms\n",
+                        viewer.lastSettleMilliseconds());
+            settling.print("after release");
         }
         std::fflush(stdout);
         if (progressive) {

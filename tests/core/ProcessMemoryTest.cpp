@@ -1,6 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
-
 #include <sys/mman.h>
 
 #include <cstddef>
@@ -20,7 +19,8 @@ TEST(ProcessMemory, ResidentAndPeakFollowAnAllocation) {
         // malloc may keep freed memory (and AddressSanitizer's quarantine
         // does), which would leave the resident size up after the block.
         const std::size_t size = 64U << 20U;
-        void* block = mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        void* block =
+            mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
         ASSERT_NE(block, MAP_FAILED);
         std::memset(block, 1, size);
         const auto during = vv::residentKiB();

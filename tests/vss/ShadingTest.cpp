@@ -3,11 +3,11 @@
 
 #include <cmath>
 #include <cstdint>
-#include <random>
-#include <stop_token>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
+#include <random>
+#include <stop_token>
 
 #include "vv/core/Error.h"
 #include "vv/vss/Shading.h"

@@ -678,8 +678,7 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
         return true;
     }
     impl_->worker->submit(SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview,
-                                           vssSettings.range,
-                                           pixelScaleOf(camera, renderSize.y)});
+                                           vssSettings.range, pixelScaleOf(camera, renderSize.y)});
     return true;
 }
 
@@ -975,9 +974,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             if (!impl.worker->requested(request)) {
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
-                impl.worker->submit(
-                    SolveWorker::Job{request, impl.lastDepth, solverOptions, preview, depthRange,
-                                     solvePixelScale});
+                impl.worker->submit(SolveWorker::Job{request, impl.lastDepth, solverOptions,
+                                                     preview, depthRange, solvePixelScale});
             }
             status.pending = true;
             upload(latest);  // the previous VSS, or none

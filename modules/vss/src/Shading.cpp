@@ -229,7 +229,8 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                     m[static_cast<std::size_t>(x)] = fit ? 1.0 : 0.0;
                     mh[static_cast<std::size_t>(x)] = fit ? static_cast<double>(hr[x]) : 0.0;
                 }
-                const std::size_t base = static_cast<std::size_t>(r - r0) * static_cast<std::size_t>(w);
+                const std::size_t base =
+                    static_cast<std::size_t>(r - r0) * static_cast<std::size_t>(w);
                 for (int x = 0; x < w; ++x) {
                     double a0 = 0.0;
                     double a1 = 0.0;
@@ -297,8 +298,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                     // The one-pixel difference (vessel neighbours count here).
                     const glm::dvec2 difference(
                         derivative(x, w, [&](int j) { return static_cast<double>(hr[j]); }),
-                        derivative(y, h,
-                                   [&](int j) { return static_cast<double>(height(x, j)); }));
+                        derivative(y, h, [&](int j) { return static_cast<double>(height(x, j)); }));
                     glm::dvec2 slope = planeSlope(pm, difference);
                     if (support < 0.999) {
                         // Next to a contour: the wider window over the staircase.
@@ -322,11 +322,13 @@ void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
     const int h = height.height();
     if (slopes.width() != w || slopes.height() != h || vessels.width() != w ||
         vessels.height() != h) {
-        throw InvalidArgumentError("addNormalCoherence: slopes, height and vessel mask differ in size");
+        throw InvalidArgumentError(
+            "addNormalCoherence: slopes, height and vessel mask differ in size");
     }
     if (!std::isfinite(scale.dmin) || !std::isfinite(scale.dmax) ||
         !std::isfinite(scale.pixelScale) || scale.pixelScale <= 0.0) {
-        throw InvalidArgumentError("addNormalCoherence: needs a finite depth range and pixelScale > 0");
+        throw InvalidArgumentError(
+            "addNormalCoherence: needs a finite depth range and pixelScale > 0");
     }
     const double range = std::max(scale.dmax - scale.dmin, 0.0);
     const auto unit = [](double gx, double gy) {
@@ -365,8 +367,7 @@ void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
                     sum += unit(0.5 * (static_cast<double>(xp) - xm) * k,
                                 0.5 * (static_cast<double>(yp) - ym) * k);
                 }
-                out[x].w =
-                    static_cast<float>(std::clamp(glm::length(sum) / count, 1e-3, 1.0));
+                out[x].w = static_cast<float>(std::clamp(glm::length(sum) / count, 1e-3, 1.0));
             }
         }
     });
