@@ -274,6 +274,10 @@ void ViewerWidget::cameraChanged() {
     autoFit_ = false;
     if (progressive_) {
         moving_ = true;
+        cameraMoved_ = true;  // this frame may set the next move's size
+        if (frameBudgetMs_ > 0.0) {
+            interactiveScale_ = nextInteractiveScale_;
+        }
         settleTimer_->start();  // restarts: the camera settles settleDelay() after the last change
     }
     requestFrame();
@@ -347,7 +351,7 @@ void ViewerWidget::adaptInteractiveScale(double milliseconds) {
     } else if (milliseconds < 0.6 * frameBudgetMs_ && step > 0) {
         --step;  // ~1.4x the pixels would still fit
     }
-    interactiveScale_ = kScaleSteps[step];
+    nextInteractiveScale_ = kScaleSteps[step];
 }
 
 void ViewerWidget::setFrameBudget(double milliseconds) {
@@ -357,6 +361,7 @@ void ViewerWidget::setFrameBudget(double milliseconds) {
 void ViewerWidget::setInteractiveScale(float scale) {
     frameBudgetMs_ = 0.0;  // a fixed scale
     interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
+    nextInteractiveScale_ = interactiveScale_;
     requestFrame();
 }
 
@@ -553,11 +558,14 @@ void ViewerWidget::paintGL() {
         if (recordTimings_) {
             timings_ = renderer_.lastTimings();
         }
-        if (moving_ && frameBudgetMs_ > 0.0) {
-            // Dynamic resolution: this frame's drawing time sets the next one's size.
+        if (moving_ && cameraMoved_ && frameBudgetMs_ > 0.0) {
+            // Dynamic resolution: this frame's drawing time sets the size of
+            // the next camera move's frames. Frames in between (a preview
+            // solve arrived) keep this size: the preview was solved at it.
             context()->functions()->glFinish();
             adaptInteractiveScale(static_cast<double>(paintTimer.nsecsElapsed()) / 1e6);
         }
+        cameraMoved_ = false;
         if (deferOcclusion_ && !moving_) {
             const render::VssFrameStatus& status = renderer_.vssStatus();
             if (!status.pending && !status.preview) {

@@ -146,8 +146,8 @@ class ViewerWidget : public QOpenGLWidget {
     /// which lets the exact solve start from the last preview frame's depth.
     /// Setting it fixes the scale (setFrameBudget(0)).
     void setInteractiveScale(float scale);
-    /// The scale the next moving frame renders at (adapted to the frame
-    /// budget unless fixed).
+    /// The scale moving frames render at; with a frame budget the next
+    /// camera move takes the size the last one's timing chose.
     [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
     /// Dynamic resolution while the camera moves: after each moving frame the
     /// interactive scale steps down (1, 0.84, 0.71, ... kMinInteractiveScale:
@@ -348,7 +348,9 @@ class ViewerWidget : public QOpenGLWidget {
     bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO
     int settleDelayMs_ = 150;
     float interactiveScale_ = 0.5F;
+    float nextInteractiveScale_ = 0.5F;  ///< dynamic resolution: from the next camera move on
     double frameBudgetMs_ = 30.0;
+    bool cameraMoved_ = false;  ///< the camera changed since the last frame
     QSize lastRenderSize_;
     quint64 solvesRequestedOnSettle_ = 0;
     quint64 solvesPreparedOnSettle_ = 0;
