@@ -673,6 +673,21 @@ TEST_F(MeshLoaderTest, VtpWithPointAndCellArrays) {
     EXPECT_EQ(label->values[11], 2.0F);
 }
 
+// VTK's XML reader slows to a crawl on millions of elements (4 million
+// empty tags: ~20 s): the check refuses a file with more than 200,000 tags
+// before VTK reads it, and walks the tags in linear time.
+TEST_F(MeshLoaderTest, VtpWithHundredsOfThousandsOfTagsIsRefusedBeforeVtkReadsIt) {
+    std::string text =
+        "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" "
+        "byte_order=\"LittleEndian\">\n<PolyData>\n";
+    for (int i = 0; i < 300000; ++i) {
+        text += "<a/>";
+    }
+    text += "</PolyData></VTKFile>\n";
+    const auto file = write("many-tags.vtp", text);
+    expectRefused<vv::FormatError>(file, "more than 200000 XML tags");
+}
+
 TEST_F(MeshLoaderTest, VtuOuterSurfaceIsExtracted) {
     const auto file = write("tets.vtu", twoTetsVtu());
     const Mesh m = loadMesh(file);
