@@ -918,9 +918,11 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             std::to_string(w) + "x" + std::to_string(h));
     }
     // The slopes the solver's thread fits for the lighting: at the render
-    // size up to kMaxCpuSlopePixels, else a stand-in texel (the shader fits).
-    const bool cpuSlopes = static_cast<long long>(w) * h <= kMaxCpuSlopePixels;
-    const float solvePixelScale = pixelScaleOf(camera, h);
+    // size up to kMaxCpuSlopePixels, else (and for an external VSS, which
+    // brings none) a stand-in texel, and the shader fits them itself.
+    const bool cpuSlopes = !external && static_cast<long long>(w) * h <= kMaxCpuSlopePixels;
+    // Scene units per pixel per unit of depth (slopes' normals, shading, AO).
+    const float pixelScale = pixelScaleOf(camera, h);
     const Solve& solve = graph.addPass<Solve>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Solve& d) {
@@ -938,13 +940,17 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                        : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
         },
         [&impl, &status, async, request, depthView, solverOptions, preview, depthRange, external,
-         solvePixelScale](const RenderGraph::Resources& r, const Solve& d) {
+         pixelScale](const RenderGraph::Resources& r, const Solve& d) {
             status = VssFrameStatus{};
             const GlTexture& heightTexture = glTex(r.get(d.height));
             const GlTexture& slopeTexture = glTex(r.get(d.slope));
             const auto upload = [&](const std::shared_ptr<const SolvedFrame>& frame) {
                 impl.uploadHeight(heightTexture, frame);
-                impl.uploadSlopes(slopeTexture);
+                if (preview) {
+                    impl.shownSlopes = false;  // quick normals: the slopes are not read
+                } else {
+                    impl.uploadSlopes(slopeTexture);
+                }
             };
             const GlTexture& depthTexture = glTex(r.get(d.depth));
             if (external) {
@@ -956,9 +962,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             if (!async) {
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
-                const auto frame = std::make_shared<const SolvedFrame>(
-                    solveFrame(request, impl.lastDepth, solverOptions, preview, depthRange,
-                               solvePixelScale, {}));
+                const auto frame = std::make_shared<const SolvedFrame>(solveFrame(
+                    request, impl.lastDepth, solverOptions, preview, depthRange, pixelScale, {}));
                 upload(frame);
                 status.solveMilliseconds = frame->milliseconds;
                 status.current = true;
@@ -975,7 +980,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 impl.lastDepth = impl.readDepth(depthTexture);
                 impl.lastDepthView = depthView;
                 impl.worker->submit(SolveWorker::Job{request, impl.lastDepth, solverOptions,
-                                                     preview, depthRange, solvePixelScale});
+                                                     preview, depthRange, pixelScale});
             }
             status.pending = true;
             upload(latest);  // the previous VSS, or none
@@ -1131,8 +1136,6 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> linearDepth;
         Handle<Texture> color;
     };
-    // Scene units per pixel per unit of depth.
-    const float pixelScale = pixelScaleOf(camera, h);
     // Where the view axis meets the frame, in pixels from its centre: 0
     // except for off-axis tiles (P[2][0], P[2][1] are the NDC shift).
     const glm::vec2 axisOffset(-0.5F * projection[2][0] * static_cast<float>(w),
