@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <glm/geometric.hpp>
@@ -8,6 +9,7 @@
 #include <limits>
 #include <random>
 #include <stop_token>
+#include <utility>
 
 #include "vv/core/Error.h"
 #include "vv/vss/Shading.h"
@@ -250,36 +252,48 @@ TEST(FittedSlopesTest, NeverReachesAcrossAContour) {
     EXPECT_GT(nearContour, 40);  // the ring next to the disc has less support
 }
 
-TEST(FittedSlopesTest, EqualsThePerPixelFitOnRandomScenes) {
-    std::mt19937 rng(7);
+/// A smooth VSS with random vessel blobs (random depths) and a few holes
+/// without a VSS, of size (37 + 11 i) x (29 + 5 i) for scene i.
+struct RandomScene {
+    Image<float> z;
+    Image<std::uint8_t> vessels;
+};
+
+RandomScene randomScene(int scene, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0F, 1.0F);
-    for (int scene = 0; scene < 4; ++scene) {
-        const int w = 37 + scene * 11;
-        const int h = 29 + scene * 5;
-        Image<float> z(w, h);
-        Image<std::uint8_t> vessels(w, h, 0);
-        // Smooth VSS, random vessel blobs, a few holes without a VSS.
+    const int w = 37 + scene * 11;
+    const int h = 29 + scene * 5;
+    RandomScene out{Image<float>(w, h), Image<std::uint8_t>(w, h, 0)};
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            out.z(x, y) = 0.5F + 0.3F * std::sin(0.21F * x + scene) * std::cos(0.17F * y);
+        }
+    }
+    for (int blob = 0; blob < 6; ++blob) {
+        const int cx = static_cast<int>(u(rng) * w);
+        const int cy = static_cast<int>(u(rng) * h);
+        const int r = 2 + static_cast<int>(u(rng) * 5);
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x) {
-                z(x, y) = 0.5F + 0.3F * std::sin(0.21F * x + scene) * std::cos(0.17F * y);
-            }
-        }
-        for (int blob = 0; blob < 6; ++blob) {
-            const int cx = static_cast<int>(u(rng) * w);
-            const int cy = static_cast<int>(u(rng) * h);
-            const int r = 2 + static_cast<int>(u(rng) * 5);
-            for (int y = 0; y < h; ++y) {
-                for (int x = 0; x < w; ++x) {
-                    if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) {
-                        vessels(x, y) = 1;
-                        z(x, y) = u(rng);
-                    }
+                if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) {
+                    out.vessels(x, y) = 1;
+                    out.z(x, y) = u(rng);
                 }
             }
         }
-        for (int hole = 0; hole < 10; ++hole) {
-            z(static_cast<int>(u(rng) * w), static_cast<int>(u(rng) * h)) = kNaN;
-        }
+    }
+    for (int hole = 0; hole < 10; ++hole) {
+        out.z(static_cast<int>(u(rng) * w), static_cast<int>(u(rng) * h)) = kNaN;
+    }
+    return out;
+}
+
+TEST(FittedSlopesTest, EqualsThePerPixelFitOnRandomScenes) {
+    std::mt19937 rng(7);
+    for (int scene = 0; scene < 4; ++scene) {
+        const auto [z, vessels] = randomScene(scene, rng);
+        const int w = z.width();
+        const int h = z.height();
         const auto s = fittedSlopes(z.view(), vessels.view());
         double worst = 0.0;
         for (int y = 0; y < h; ++y) {
@@ -309,6 +323,68 @@ TEST(FittedSlopesTest, RejectsMismatchedSizesAndStops) {
                  CancelledError);
     const auto empty = fittedSlopes(Image<float>(0, 0).view(), Image<std::uint8_t>(0, 0).view());
     EXPECT_EQ(empty.width(), 0);
+}
+
+/// Toksvig's coherence at (x, y) literally as Shading.h defines it, in double.
+double referenceCoherence(const Image<float>& z, const Image<std::uint8_t>& vessels,
+                          const glm::vec4& slope, int x, int y, const SlopeScale& scale) {
+    const int w = z.width();
+    const int h = z.height();
+    const double range = scale.dmax - scale.dmin;
+    const double depth = scale.dmin + std::clamp(static_cast<double>(z(x, y)), 0.0, 1.0) * range;
+    const double k = range / (depth * scale.pixelScale);
+    const auto unit = [](double gx, double gy) {
+        return glm::dvec3(gx, gy, 1.0) / std::sqrt(gx * gx + gy * gy + 1.0);
+    };
+    glm::dvec3 sum = unit(slope.x * k, slope.y * k);
+    int count = 1;
+    for (const auto& [dx, dy] : {std::pair{3, 0}, {-3, 0}, {0, 3}, {0, -3}}) {
+        const int qx = x + dx;
+        const int qy = y + dy;
+        if (qx < 1 || qy < 1 || qx > w - 2 || qy > h - 2) {
+            continue;
+        }
+        ++count;
+        bool normal = vessels(qx, qy) == 0;
+        for (const auto& [ox, oy] : {std::pair{0, 0}, {1, 0}, {-1, 0}, {0, 1}, {0, -1}}) {
+            normal = normal && std::isfinite(z(qx + ox, qy + oy));
+        }
+        if (normal) {
+            sum += unit(0.5 * (static_cast<double>(z(qx + 1, qy)) - z(qx - 1, qy)) * k,
+                        0.5 * (static_cast<double>(z(qx, qy + 1)) - z(qx, qy - 1)) * k);
+        }
+    }
+    return std::clamp(glm::length(sum) / count, 1e-3, 1.0);
+}
+
+TEST(NormalCoherenceTest, EqualsTheDefinitionOnRandomScenes) {
+    std::mt19937 rng(11);
+    for (int scene = 0; scene < 4; ++scene) {
+        const auto [z, vessels] = randomScene(scene, rng);
+        const auto slopes = fittedSlopes(z.view(), vessels.view());
+        auto coherent = slopes;
+        // Steep enough in scene units that the normals differ visibly.
+        const SlopeScale scale{20.0, 80.0 + 40.0 * scene, 0.01};
+        addNormalCoherence(coherent, z.view(), vessels.view(), scale);
+        double worst = 0.0;
+        int below = 0;
+        for (int y = 0; y < z.height(); ++y) {
+            for (int x = 0; x < z.width(); ++x) {
+                const glm::vec4 s = slopes(x, y);
+                const glm::vec4 c = coherent(x, y);
+                EXPECT_EQ(glm::vec3(c), glm::vec3(s)) << "only w changes";
+                if (s.w == 0.0F) {
+                    EXPECT_EQ(c.w, 0.0F);
+                    continue;
+                }
+                const double ref = referenceCoherence(z, vessels, s, x, y, scale);
+                worst = std::max(worst, std::abs(c.w - ref));
+                below += ref < 0.99 ? 1 : 0;
+            }
+        }
+        EXPECT_LT(worst, 2e-5) << "scene " << scene;
+        EXPECT_GT(below, 50) << "scene " << scene << ": too few pixels test the sum";
+    }
 }
 
 TEST(NormalCoherenceTest, OneOnAPlaneLessWhereANeighbourIsAVessel) {

@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -115,22 +116,28 @@ struct PlaneMoments {
     double syh = 0.0;
 };
 
-/// The slope of the least-squares plane of `m`, or `fallback` when the sums
-/// do not determine one (no pixel, or ill-conditioned).
-glm::dvec2 planeSlope(const PlaneMoments& m, glm::dvec2 fallback) {
+/// The slope of the least-squares plane of `m`, or nothing when the sums do
+/// not determine one (no pixel, or ill-conditioned).
+std::optional<glm::dvec2> planeSlope(const PlaneMoments& m) {
     if (m.sw <= 0.0) {
-        return fallback;
+        return std::nullopt;
     }
-    const double cxx = m.sxx - m.sx * m.sx / m.sw;
-    const double cxy = m.sxy - m.sx * m.sy / m.sw;
-    const double cyy = m.syy - m.sy * m.sy / m.sw;
-    const double cxh = m.sxh - m.sx * m.sh / m.sw;
-    const double cyh = m.syh - m.sy * m.sh / m.sw;
+    // One division each for 1 / sw and 1 / det: divisions dominate this
+    // function's cost, and it runs on every void pixel.
+    const double inv = 1.0 / m.sw;
+    const double mx = m.sx * inv;
+    const double my = m.sy * inv;
+    const double cxx = m.sxx - m.sx * mx;
+    const double cxy = m.sxy - m.sx * my;
+    const double cyy = m.syy - m.sy * my;
+    const double cxh = m.sxh - mx * m.sh;
+    const double cyh = m.syh - my * m.sh;
     const double det = cxx * cyy - cxy * cxy;
     if (!(det >= 0.05 * std::max(cxx * cyy, 1e-12))) {
-        return fallback;
+        return std::nullopt;
     }
-    return {(cyy * cxh - cxy * cyh) / det, (cxx * cyh - cxy * cxh) / det};
+    const double invDet = 1.0 / det;
+    return glm::dvec2((cyy * cxh - cxy * cyh) * invDet, (cxx * cyh - cxy * cxh) * invDet);
 }
 
 /// True where the plane fit may use the pixel: a void pixel with a VSS.
@@ -140,8 +147,9 @@ bool fittable(ImageView<const float> height, ImageView<const std::uint8_t> vesse
 
 /// The plane fit over the 5x5 window of samples `stride` pixels apart,
 /// summed directly (for the few pixels that need the wide window).
-glm::dvec2 directSlope(ImageView<const float> height, ImageView<const std::uint8_t> vessels, int px,
-                       int py, int stride, glm::dvec2 fallback) {
+std::optional<glm::dvec2> directSlope(ImageView<const float> height,
+                                      ImageView<const std::uint8_t> vessels, int px, int py,
+                                      int stride) {
     PlaneMoments m;
     for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
         const int y = py + dy * stride;
@@ -169,7 +177,7 @@ glm::dvec2 directSlope(ImageView<const float> height, ImageView<const std::uint8
             m.syh += w * oy * hv;
         }
     }
-    return planeSlope(m, fallback);
+    return planeSlope(m);
 }
 
 /// Per-row sums along x of the separable fit (structure of arrays).
@@ -295,15 +303,23 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                     }
                     const double total = columnTotal[static_cast<std::size_t>(x)] * rowTotal;
                     const double support = total > 0.0 ? pm.sw / total : 0.0;
-                    // The one-pixel difference (vessel neighbours count here).
-                    const glm::dvec2 difference(
-                        derivative(x, w, [&](int j) { return static_cast<double>(hr[j]); }),
-                        derivative(y, h, [&](int j) { return static_cast<double>(height(x, j)); }));
-                    glm::dvec2 slope = planeSlope(pm, difference);
+                    std::optional<glm::dvec2> fit = planeSlope(pm);
                     if (support < 0.999) {
                         // Next to a contour: the wider window over the staircase.
-                        slope = directSlope(height, vessels, x, y, 2, slope);
+                        if (const std::optional<glm::dvec2> wide =
+                                directSlope(height, vessels, x, y, 2)) {
+                            fit = wide;
+                        }
                     }
+                    // Else the one-pixel difference (vessel neighbours count here).
+                    const glm::dvec2 slope =
+                        fit ? *fit
+                            : glm::dvec2(
+                                  derivative(x, w,
+                                             [&](int j) { return static_cast<double>(hr[j]); }),
+                                  derivative(y, h, [&](int j) {
+                                      return static_cast<double>(height(x, j));
+                                  }));
                     out[x] = glm::vec4(static_cast<float>(slope.x), static_cast<float>(slope.y),
                                        static_cast<float>(support), 1.0F);
                 }
@@ -331,43 +347,108 @@ void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
             "addNormalCoherence: needs a finite depth range and pixelScale > 0");
     }
     const double range = std::max(scale.dmax - scale.dmin, 0.0);
-    const auto unit = [](double gx, double gy) {
-        const double len = std::sqrt(gx * gx + gy * gy + 1.0);
-        return glm::dvec3(gx / len, gy / len, 1.0 / len);
-    };
-    constexpr std::array<std::array<int, 2>, 4> kAround = {{{3, 0}, {-3, 0}, {0, 3}, {0, -3}}};
-    parallelFor(0, h, 32, [&](long begin, long end) {
+    // The neighbours' central differences, once per pixel (each is read by
+    // four centres), as planes: x, y and a weight, 1 where the pixel has a
+    // normal and 0 where it has none (a vessel, no VSS at it or a neighbour,
+    // or within a pixel of the border; its difference stays 0).
+    Image<float> diffX(w, h, 0.0F);
+    Image<float> diffY(w, h, 0.0F);
+    Image<float> diffW(w, h, 0.0F);
+    parallelFor(1, h - 1, 64, [&](long begin, long end) {
         for (int y = static_cast<int>(begin); y < static_cast<int>(end); ++y) {
-            glm::vec4* out = slopes.row(y);
-            for (int x = 0; x < w; ++x) {
-                if (out[x].w == 0.0F) {
+            const float* above = height.row(y - 1);
+            const float* row = height.row(y);
+            const float* below = height.row(y + 1);
+            const std::uint8_t* vr = vessels.row(y);
+            float* dx = diffX.row(y);
+            float* dy = diffY.row(y);
+            float* dw = diffW.row(y);
+            for (int x = 1; x + 1 < w; ++x) {
+                if (vr[x] != 0 || !std::isfinite(row[x]) || !std::isfinite(row[x - 1]) ||
+                    !std::isfinite(row[x + 1]) || !std::isfinite(above[x]) ||
+                    !std::isfinite(below[x])) {
                     continue;
                 }
-                const double t = std::clamp(static_cast<double>(height(x, y)), 0.0, 1.0);
+                dx[x] = 0.5F * (row[x + 1] - row[x - 1]);
+                dy[x] = 0.5F * (below[x] - above[x]);
+                dw[x] = 1.0F;
+            }
+        }
+    });
+    // Per row, branch-free loops over planes (the compiler vectorises them):
+    // float, since this runs five times per void pixel and the coherence
+    // only scales a highlight.
+    constexpr int kReach = 3;
+    parallelFor(0, h, 32, [&](long begin, long end) {
+        std::vector<float> k(static_cast<std::size_t>(w));
+        std::vector<float> sx(static_cast<std::size_t>(w));
+        std::vector<float> sy(static_cast<std::size_t>(w));
+        std::vector<float> sz(static_cast<std::size_t>(w));
+        const std::vector<float> one(static_cast<std::size_t>(w), 1.0F);
+        std::vector<float> cx(static_cast<std::size_t>(w));  // the centre's slope
+        std::vector<float> cy(static_cast<std::size_t>(w));
+        // Adds gw times the unit normal of (gx, gy) * k over [x0, x1).
+        const auto addUnits = [&](const float* gx, const float* gy, const float* gw, int x0,
+                                  int x1) {
+            float* ox = sx.data();
+            float* oy = sy.data();
+            float* oz = sz.data();
+            const float* kk = k.data();
+#pragma omp simd
+            for (int x = x0; x < x1; ++x) {
+                const float ax = gx[x] * kk[x];
+                const float ay = gy[x] * kk[x];
+                const float inv = gw[x] / std::sqrt(ax * ax + ay * ay + 1.0F);
+                ox[x] += ax * inv;
+                oy[x] += ay * inv;
+                oz[x] += inv;
+            }
+        };
+        for (int y = static_cast<int>(begin); y < static_cast<int>(end); ++y) {
+            glm::vec4* out = slopes.row(y);
+            const float* row = height.row(y);
+            for (int x = 0; x < w; ++x) {
+                const auto i = static_cast<std::size_t>(x);
+                const double t = std::clamp(static_cast<double>(row[x]), 0.0, 1.0);
                 const double pixel = std::max((scale.dmin + t * range) * scale.pixelScale, 1e-12);
-                const double k = range / pixel;
-                glm::dvec3 sum = unit(out[x].x * k, out[x].y * k);
-                double count = 1.0;
-                for (const auto& o : kAround) {
-                    const int qx = x + o[0];
-                    const int qy = y + o[1];
-                    if (qx < 1 || qy < 1 || qx >= w - 1 || qy >= h - 1) {
-                        continue;  // off the image: left out
-                    }
-                    count += 1.0;
-                    const float c = height(qx, qy);
-                    const float xm = height(qx - 1, qy);
-                    const float xp = height(qx + 1, qy);
-                    const float ym = height(qx, qy - 1);
-                    const float yp = height(qx, qy + 1);
-                    if (vessels(qx, qy) != 0 || !std::isfinite(c) || !std::isfinite(xm) ||
-                        !std::isfinite(xp) || !std::isfinite(ym) || !std::isfinite(yp)) {
-                        continue;  // no normal there: a zero one
-                    }
-                    sum += unit(0.5 * (static_cast<double>(xp) - xm) * k,
-                                0.5 * (static_cast<double>(yp) - ym) * k);
+                k[i] = static_cast<float>(range / pixel);
+                cx[i] = out[x].x;
+                cy[i] = out[x].y;
+                sx[i] = 0.0F;
+                sy[i] = 0.0F;
+                sz[i] = 0.0F;
+            }
+            addUnits(cx.data(), cy.data(), one.data(), 0, w);
+            const bool upIn = y - kReach >= 1;
+            const bool downIn = y + kReach < h - 1;
+            if (upIn) {
+                addUnits(diffX.row(y - kReach), diffY.row(y - kReach), diffW.row(y - kReach), 0, w);
+            }
+            if (downIn) {
+                addUnits(diffX.row(y + kReach), diffY.row(y + kReach), diffW.row(y + kReach), 0, w);
+            }
+            // Left and right neighbours: shifted planes, in range only.
+            addUnits(diffX.row(y) - kReach, diffY.row(y) - kReach, diffW.row(y) - kReach,
+                     1 + kReach, w);
+            addUnits(diffX.row(y) + kReach, diffY.row(y) + kReach, diffW.row(y) + kReach, 0,
+                     w - 1 - kReach);
+            // How many neighbours count (those within a pixel of the border
+            // are left out): above and below need an inner column, left and
+            // right an inner row.
+            const bool innerRow = y >= 1 && y < h - 1;
+            const float verticalCount = (upIn ? 1.0F : 0.0F) + (downIn ? 1.0F : 0.0F);
+            for (int x = 0; x < w; ++x) {
+                if (out[x].w == 0.0F) {
+                    continue;  // no fitted slope: stays 0
                 }
-                out[x].w = static_cast<float>(std::clamp(glm::length(sum) / count, 1e-3, 1.0));
+                const auto i = static_cast<std::size_t>(x);
+                const bool innerColumn = x >= 1 && x < w - 1;
+                const float horizontalCount =
+                    innerRow ? (x - kReach >= 1 ? 1.0F : 0.0F) + (x + kReach < w - 1 ? 1.0F : 0.0F)
+                             : 0.0F;
+                const float count = 1.0F + horizontalCount + (innerColumn ? verticalCount : 0.0F);
+                const float length = std::sqrt(sx[i] * sx[i] + sy[i] * sy[i] + sz[i] * sz[i]);
+                out[x].w = std::clamp(length / count, 1e-3F, 1.0F);
             }
         }
     });
