@@ -69,6 +69,20 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
     settleTimer_->setSingleShot(true);
     settleTimer_->setInterval(settleDelayMs_);
     connect(settleTimer_, &QTimer::timeout, this, &ViewerWidget::settle);
+    previewArrivalTimer_ = new QTimer(this);
+    previewArrivalTimer_->setSingleShot(true);
+    previewArrivalTimer_->setInterval(kPreviewArrivalDelayMs);
+    connect(previewArrivalTimer_, &QTimer::timeout, this, &ViewerWidget::requestFrame);
+    frameClock_.start();
+    connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
+        if (budgetFrameStart_) {
+            // Drawing plus Qt composing the window: what the frame rate sees
+            // (on software OpenGL the composition alone takes ~15 ms at 720p).
+            adaptInteractiveScale(
+                static_cast<double>(frameClock_.nsecsElapsed() - *budgetFrameStart_) / 1e6);
+            budgetFrameStart_.reset();
+        }
+    });
     setFormat(requiredFormat());
     // The widget's buffer keeps its frame between paints, so that repaints
     // nobody asked a new frame for (an overlay child redrawing, an expose)
@@ -185,8 +199,20 @@ Aabb ViewerWidget::dataBounds() const noexcept {
 void ViewerWidget::cancelPreviewGeometry() {
     previewStop_.request_stop();
     previewStop_ = std::stop_source();
-    previewScene_.reset();
+    previewScenes_.clear();
     previewDirty_ = true;
+}
+
+std::vector<std::size_t> ViewerWidget::previewLevelTriangles() const {
+    std::vector<std::size_t> levels;
+    for (const auto& preview : previewScenes_) {
+        std::size_t triangles = 0;
+        for (const io::Mesh& mesh : preview->meshes) {
+            triangles += mesh.triangleCount();
+        }
+        levels.push_back(triangles);
+    }
+    return levels;
 }
 
 void ViewerWidget::startPreviewGeometry() {
@@ -198,37 +224,53 @@ void ViewerWidget::startPreviewGeometry() {
         }
     }
     // Not worth it below 1.5x the budget: the full meshes are cheap enough.
-    if (previewTriangles_ == 0 || triangles * 2 <= previewTriangles_ * 3) {
+    const auto worthIt = [](std::size_t have, std::size_t budget) {
+        return budget > 0 && have * 2 > budget * 3;
+    };
+    if (!worthIt(triangles, previewTriangles_)) {
         return;
     }
     const std::shared_ptr<const io::Scene> scene = scene_;
     const std::size_t budget = previewTriangles_;
     previewFuture_ = QtConcurrent::run(
-        [scene, budget, stop = previewStop_.get_token()]() -> std::shared_ptr<const io::Scene> {
+        [scene, budget, worthIt, stop = previewStop_.get_token()]() -> PreviewScenes {
             try {
-                return std::make_shared<const io::Scene>(
+                // The budget, then a third of it from that copy (cheap): the
+                // renderer draws the coarser one into small moving frames.
+                PreviewScenes levels;
+                auto fine = std::make_shared<const io::Scene>(
                     io::simplifiedScene(*scene, budget, Progress({}, stop)));
+                std::size_t fineTriangles = 0;
+                for (const io::Mesh& mesh : fine->meshes) {
+                    fineTriangles += mesh.triangleCount();
+                }
+                levels.push_back(fine);
+                const std::size_t coarse = budget / kPreviewLevelRatio;
+                if (worthIt(fineTriangles, coarse)) {
+                    levels.push_back(std::make_shared<const io::Scene>(
+                        io::simplifiedScene(*fine, coarse, Progress({}, stop))));
+                }
+                return levels;
             } catch (const CancelledError&) {
-                return nullptr;
+                return {};
             } catch (const vv::Error& e) {
                 // No preview: moving frames draw the full meshes.
                 static const log::Category category{"vv.gui"};
                 log::warning(category, std::string("no simplified geometry: ") + e.what());
-                return nullptr;
+                return {};
             }
         });
-    auto* watcher = new QFutureWatcher<std::shared_ptr<const io::Scene>>(this);
-    connect(watcher, &QFutureWatcher<std::shared_ptr<const io::Scene>>::finished, this,
-            [this, watcher, scene] {
-                watcher->deleteLater();
-                std::shared_ptr<const io::Scene> preview = watcher->result();
-                if (!preview || scene != scene_) {
-                    return;  // cancelled, failed, or built for an older scene
-                }
-                previewScene_ = std::move(preview);
-                previewDirty_ = true;
-                emit previewGeometryReady();
-            });
+    auto* watcher = new QFutureWatcher<PreviewScenes>(this);
+    connect(watcher, &QFutureWatcher<PreviewScenes>::finished, this, [this, watcher, scene] {
+        watcher->deleteLater();
+        PreviewScenes previews = watcher->result();
+        if (previews.empty() || scene != scene_) {
+            return;  // cancelled, failed, or built for an older scene
+        }
+        previewScenes_ = std::move(previews);
+        previewDirty_ = true;
+        emit previewGeometryReady();
+    });
     watcher->setFuture(previewFuture_);
 }
 
@@ -289,6 +331,7 @@ void ViewerWidget::settle() {
         return;
     }
     moving_ = false;
+    previewArrivalTimer_->stop();  // the settled frames show the newest VSS
     // The exact VSS first, the occlusion in the frame after (paintGL).
     deferOcclusion_ = ao_.enabled;
     QElapsedTimer settleTimer;
@@ -465,9 +508,19 @@ void ViewerWidget::initializeGL() {
                     // A newer solve is under way (e.g. the exact one after the
                     // camera settled): its own arrival draws the frame that
                     // shows it; a frame now would only delay it.
-                    if (!renderer_.solveInProgress()) {
-                        requestFrame();
+                    if (renderer_.solveInProgress()) {
+                        return;
                     }
+                    if (moving_) {
+                        // The next camera move's frame shows this preview
+                        // anyway: a frame of its own only when the camera
+                        // pauses (no move within the delay).
+                        if (!previewArrivalTimer_->isActive()) {
+                            previewArrivalTimer_->start();
+                        }
+                        return;
+                    }
+                    requestFrame();
                 },
                 Qt::QueuedConnection);
         });
@@ -530,6 +583,7 @@ void ViewerWidget::paintGL() {
     frameDirty_ = false;  // requests made while drawing ask for the next frame
     QElapsedTimer paintTimer;
     paintTimer.start();
+    const qint64 paintStart = frameClock_.nsecsElapsed();
     try {
         render::MeshRenderer& meshes = renderer_.meshRenderer();
         if (sceneDirty_) {
@@ -540,7 +594,7 @@ void ViewerWidget::paintGL() {
             previewDirty_ = true;
         }
         if (previewDirty_) {
-            meshes.setPreviewScene(previewScene_);
+            meshes.setPreviewScenes(previewScenes_);
             previewDirty_ = false;
         }
         if (styleDirty_) {
@@ -559,11 +613,15 @@ void ViewerWidget::paintGL() {
             timings_ = renderer_.lastTimings();
         }
         if (moving_ && cameraMoved_ && frameBudgetMs_ > 0.0) {
-            // Dynamic resolution: this frame's drawing time sets the size of
-            // the next camera move's frames. Frames in between (a preview
-            // solve arrived) keep this size: the preview was solved at it.
+            // Dynamic resolution: this frame's time, up to the swap of the
+            // window's composed frame (frameSwapped), sets the size of the
+            // next camera move's frames. Frames in between (a preview solve
+            // arrived) keep this size: the preview was solved at it.
             context()->functions()->glFinish();
-            adaptInteractiveScale(static_cast<double>(paintTimer.nsecsElapsed()) / 1e6);
+            budgetFrameStart_ = paintStart;
+        }
+        if (cameraMoved_) {
+            previewArrivalTimer_->stop();  // this frame showed the newest preview
         }
         cameraMoved_ = false;
         if (deferOcclusion_ && !moving_) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QElapsedTimer>
 #include <QFuture>
 #include <QOpenGLWidget>
 #include <QPoint>
@@ -154,20 +155,32 @@ class ViewerWidget : public QOpenGLWidget {
     /// ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
     /// and up when it took under 0.6 x, so slow machines keep their frame
     /// rate and fast ones get full-size frames; in between the size holds
-    /// (a preview VSS shows only at the size it was solved at). Default 30 ms of drawing (on
-    /// software OpenGL the window's composition adds ~15-20 ms at 720p, so this aims at 20 fps
-    /// there); 0 = a fixed scale. Each moving frame then waits for the GL to finish (glFinish) to
+    /// (a preview VSS shows only at the size it was solved at). A frame's time
+    /// runs from paintGL to the swap of the window Qt composes (frameSwapped),
+    /// since that is what the frame rate sees: on software OpenGL the
+    /// composition alone takes ~15 ms at 720p. Default 30 ms; 0 = a fixed
+    /// scale. Each moving frame then waits for the GL to finish (glFinish) to
     /// measure itself. Non-finite or negative values count as 0.
     void setFrameBudget(double milliseconds);
     [[nodiscard]] double frameBudget() const noexcept { return frameBudgetMs_; }
     static constexpr float kMinInteractiveScale = 0.25F;
     /// Triangle budget of the simplified geometry drawn while the camera
     /// moves (default 60,000); 0 = always draw the full meshes. Applies to
-    /// scenes set afterwards.
+    /// scenes set afterwards. A second, coarser copy (a third of the budget)
+    /// is built from the first; moving frames draw the finest copy with
+    /// about one triangle per MeshRenderer's kPixelsPerPreviewTriangle
+    /// pixels of their render size (render::choosePreviewLevel), so small
+    /// frames on software rasterisers draw fewer triangles.
     void setPreviewTriangles(std::size_t triangles) noexcept { previewTriangles_ = triangles; }
     [[nodiscard]] std::size_t previewTriangles() const noexcept { return previewTriangles_; }
     /// True once the simplified geometry of the current scene is ready.
-    [[nodiscard]] bool hasPreviewGeometry() const noexcept { return previewScene_ != nullptr; }
+    [[nodiscard]] bool hasPreviewGeometry() const noexcept { return !previewScenes_.empty(); }
+    /// Triangles of each simplified level, finest first (empty until ready).
+    [[nodiscard]] std::vector<std::size_t> previewLevelTriangles() const;
+    /// The meshes the last frame drew: 0 = the scene's, k = simplified level k.
+    [[nodiscard]] std::size_t lastGeometryLevel() const noexcept {
+        return renderer_.lastGeometryLevel();
+    }
     /// True when the last frame drew the simplified geometry.
     [[nodiscard]] bool lastFrameSimplified() const noexcept {
         return renderer_.lastFrameSimplified();
@@ -300,8 +313,12 @@ class ViewerWidget : public QOpenGLWidget {
     /// resize / new context); other repaints keep the last frame.
     void requestFrame();
     /// Dynamic resolution: the next moving frame's scale after one that took
-    /// `milliseconds` to draw (setFrameBudget).
+    /// `milliseconds` from paintGL to the swap (setFrameBudget).
     void adaptInteractiveScale(double milliseconds);
+    QElapsedTimer frameClock_;  ///< started with the widget
+    /// frameClock_ at the start of a camera-move frame that measures itself
+    /// for the frame budget, until its swap (frameSwapped).
+    std::optional<qint64> budgetFrameStart_;
     /// A camera change by the user: preview quality until it settles.
     void cameraChanged();
     void settle();
@@ -326,11 +343,14 @@ class ViewerWidget : public QOpenGLWidget {
     std::shared_ptr<const io::Scene> scene_;
     std::shared_ptr<const io::Volume> volume_;  ///< ray cast after the meshes, or null
     float isoValue_ = 0.0F;
-    std::shared_ptr<const io::Scene> previewScene_;  ///< simplified scene_, or null
-    bool previewDirty_ = false;                      ///< previewScene_ not uploaded yet
+    using PreviewScenes = std::vector<std::shared_ptr<const io::Scene>>;
+    /// The second simplified level has previewTriangles_ / this many triangles.
+    static constexpr std::size_t kPreviewLevelRatio = 3;
+    PreviewScenes previewScenes_;  ///< simplified copies of scene_, finest first; or none
+    bool previewDirty_ = false;    ///< previewScenes_ not uploaded yet
     std::size_t previewTriangles_ = 60000;
     std::stop_source previewStop_;
-    QFuture<std::shared_ptr<const io::Scene>> previewFuture_;
+    QFuture<PreviewScenes> previewFuture_;
     glm::vec3 background_{0.13F, 0.14F, 0.16F};
     bool sceneDirty_ = false;
     bool autoFit_ = true;  ///< refit on resize until the user moves the camera
@@ -355,6 +375,12 @@ class ViewerWidget : public QOpenGLWidget {
     quint64 solvesRequestedOnSettle_ = 0;
     quint64 solvesPreparedOnSettle_ = 0;
     QTimer* settleTimer_ = nullptr;
+    /// While the camera moves, a preview solve's arrival draws a frame only
+    /// when no camera move drew one within this delay (the camera paused):
+    /// during a drag the next move's frame shows the preview anyway, and a
+    /// frame per arrival would double the work per mouse move.
+    static constexpr int kPreviewArrivalDelayMs = 60;
+    QTimer* previewArrivalTimer_ = nullptr;
     bool recordTimings_ = false;
     std::vector<render::GlPassTiming> timings_;
     double paintMilliseconds_ = 0.0;

@@ -634,9 +634,19 @@ void FrameRenderer::clearCache() {
     impl_->lastDepthView.reset();
 }
 
-std::uint64_t FrameRenderer::geometryRevision(const FrameSettings& settings) const noexcept {
-    const bool simplified = settings.simplifiedGeometry && meshes_.hasPreviewScene();
-    std::uint64_t revision = sceneRevision_ * 2U + (simplified ? 1U : 0U);
+std::size_t FrameRenderer::geometryLevel(const FrameSettings& settings,
+                                         glm::ivec2 renderSize) const {
+    if (!settings.simplifiedGeometry || !meshes_.hasPreviewScene()) {
+        return 0;
+    }
+    return meshes_.previewLevelFor(static_cast<long long>(renderSize.x) * renderSize.y);
+}
+
+std::uint64_t FrameRenderer::geometryRevision(const FrameSettings& settings,
+                                              glm::ivec2 renderSize) const {
+    // Up to 7 preview levels told apart (there are two).
+    const std::uint64_t level = std::min<std::uint64_t>(geometryLevel(settings, renderSize), 7U);
+    std::uint64_t revision = sceneRevision_ * 8U + level;
     if (volume_.volume()) {
         // Volume depth source: its revision tells depth views apart too.
         revision ^= (volumeRevision_ + 1U) * 0x9E3779B97F4A7C15ULL;
@@ -664,7 +674,7 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
     }
     const glm::ivec2 renderSize = renderSizeFor(settings, target);
     const std::uint64_t depthView = viewKey(camera.viewMatrix(), camera.projectionMatrix(),
-                                            renderSize, geometryRevision(settings));
+                                            renderSize, geometryRevision(settings, renderSize));
     if (depthView != *impl_->lastDepthView || impl_->lastDepth.width() != renderSize.x ||
         impl_->lastDepth.height() != renderSize.y) {
         return false;  // the depth shows another view: the next frame reads it back
@@ -774,10 +784,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const glm::mat4 view = camera.viewMatrix();
     const glm::mat4 projection = camera.projectionMatrix();
     const glm::ivec2 viewport(w, h);
-    // The scene's revision, told apart for the simplified (preview) geometry.
-    const bool simplified = settings.simplifiedGeometry && meshes_.hasPreviewScene();
-    lastSimplified_ = simplified;
-    const std::uint64_t sceneRevision = geometryRevision(settings);
+    // The scene's revision, told apart for each simplified (preview) level.
+    const std::size_t meshLevel = geometryLevel(settings, renderSize);
+    lastGeometryLevel_ = meshLevel;
+    const std::uint64_t sceneRevision = geometryRevision(settings, renderSize);
     Impl& impl = *impl_;
     MeshRenderer& meshes = meshes_;
     VolumeRenderer& volumeRenderer = volume_;  // volume depth source
@@ -827,7 +837,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 b.write(b.createPersistent<Texture>("parameter", size(TextureFormat::R32F)));
             d.depth = b.write(b.createPersistent<Texture>("depth", size(TextureFormat::Depth32F)));
         },
-        [&impl, &meshes, &volumeRenderer, volumeIso, camera, simplified, w, h](
+        [&impl, &meshes, &volumeRenderer, volumeIso, camera, meshLevel, w, h](
             const RenderGraph::Resources& r, const Geometry& d) {
             auto& g = impl.f();
             g.glBindFramebuffer(GL_FRAMEBUFFER, impl.geometryFbo);
@@ -859,7 +869,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glClearBufferuiv(GL_COLOR, 2, noObject);
             g.glClearBufferfv(GL_COLOR, 3, noData);
             g.glClearBufferfv(GL_DEPTH, 0, &one);
-            meshes.drawGBuffer(camera, simplified);
+            meshes.drawGBuffer(camera, meshLevel);
             // Volume depth source: after the meshes, depth-tested against them.
             const auto& scene = meshes.scene();
             volumeRenderer.drawGBuffer(
@@ -1230,8 +1240,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 b.write(b.create<Texture>("translucent-depth", size(TextureFormat::Depth32F)));
             d.layer = b.write(b.create<Texture>("translucent-color", size(TextureFormat::RGBA16F)));
         },
-        [&impl, &meshes, camera, simplified, w, h](const RenderGraph::Resources& r,
-                                                   const Translucent& d) {
+        [&impl, &meshes, camera, meshLevel, w, h](const RenderGraph::Resources& r,
+                                                  const Translucent& d) {
             auto& g = impl.f();
             g.glBindFramebuffer(GL_FRAMEBUFFER, impl.shadingFbo);
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
@@ -1249,7 +1259,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             g.glViewport(0, 0, w, h);
             const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
             g.glClearBufferfv(GL_COLOR, 0, clear);
-            meshes.drawTranslucent(camera, impl.shadedCue, simplified);
+            meshes.drawTranslucent(camera, impl.shadedCue, meshLevel);
             // shadingFbo is shared with vessel-shading, which has no depth.
             g.glFramebufferTexture2D(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_TEXTURE_2D, 0, 0);
             checkGlError(g, "translucent pass");

@@ -357,8 +357,7 @@ void MeshRenderer::initialize() {
     context_ = context;
     // Objects of an earlier context are gone with it: upload everything anew.
     meshes_.clear();
-    previewMeshes_.clear();
-    previewScene_.reset();
+    previews_.clear();
     program_ = 0;
     gbufferProgram_ = 0;
     deferredProgram_ = 0;
@@ -402,13 +401,12 @@ void MeshRenderer::initialize() {
 void MeshRenderer::release() noexcept {
     if (gl_ == nullptr || QOpenGLContext::currentContext() != context_) {
         meshes_.clear();
-        previewMeshes_.clear();
-        previewScene_.reset();
+        previews_.clear();
         return;
     }
     auto& f = *gl_;
     deleteMeshes(meshes_);
-    deleteMeshes(previewMeshes_);
+    deletePreviews();
     if (lutTexture_ != 0) {
         f.glDeleteTextures(1, &lutTexture_);
         lutTexture_ = 0;
@@ -528,8 +526,7 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
 
 void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
     deleteMeshes(meshes_);
-    deleteMeshes(previewMeshes_);
-    previewScene_.reset();
+    deletePreviews();
     scene_ = std::move(scene);
     scalarsUploadedForArray_ = false;
     objectsStale_ = true;
@@ -541,22 +538,88 @@ void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
     uploadScalars();
 }
 
+void MeshRenderer::deletePreviews() {
+    for (PreviewLevel& level : previews_) {
+        deleteMeshes(level.meshes);
+    }
+    previews_.clear();
+}
+
 void MeshRenderer::setPreviewScene(std::shared_ptr<const io::Scene> preview) {
-    deleteMeshes(previewMeshes_);
-    previewScene_.reset();
-    if (!preview) {
+    std::vector<std::shared_ptr<const io::Scene>> previews;
+    if (preview) {
+        previews.push_back(std::move(preview));
+    }
+    setPreviewScenes(std::move(previews));
+}
+
+void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>> previews) {
+    deletePreviews();
+    std::erase(previews, nullptr);
+    if (previews.empty()) {
         return;
     }
-    if (!scene_ || preview->meshes.size() != scene_->meshes.size()) {
-        throw InvalidArgumentError(
-            "the preview scene must have one mesh for each mesh of the scene (" +
-            std::to_string(preview->meshes.size()) + " for " +
-            std::to_string(scene_ ? scene_->meshes.size() : 0) + ")");
+    for (const auto& preview : previews) {
+        if (!scene_ || preview->meshes.size() != scene_->meshes.size()) {
+            throw InvalidArgumentError(
+                "the preview scene must have one mesh for each mesh of the scene (" +
+                std::to_string(preview->meshes.size()) + " for " +
+                std::to_string(scene_ ? scene_->meshes.size() : 0) + ")");
+        }
     }
-    previewScene_ = std::move(preview);
-    uploadMeshes(*previewScene_, previewMeshes_);
+    for (auto& preview : previews) {
+        PreviewLevel level;
+        for (const io::Mesh& mesh : preview->meshes) {
+            level.triangles += mesh.triangleCount();
+        }
+        level.scene = std::move(preview);
+        previews_.push_back(std::move(level));
+    }
+    std::stable_sort(
+        previews_.begin(), previews_.end(),
+        [](const PreviewLevel& a, const PreviewLevel& b) { return a.triangles > b.triangles; });
+    try {
+        for (PreviewLevel& level : previews_) {
+            uploadMeshes(*level.scene, level.meshes);
+        }
+    } catch (...) {
+        deletePreviews();
+        throw;
+    }
     scalarsUploadedForArray_ = false;
     uploadScalars();
+}
+
+std::vector<std::size_t> MeshRenderer::previewTriangles() const {
+    std::vector<std::size_t> triangles;
+    for (const PreviewLevel& level : previews_) {
+        triangles.push_back(level.triangles);
+    }
+    return triangles;
+}
+
+std::size_t MeshRenderer::previewLevelFor(long long pixels) const {
+    return choosePreviewLevel(previewTriangles(), pixels);
+}
+
+const std::vector<MeshRenderer::GpuMesh>& MeshRenderer::meshesOf(std::size_t level) const noexcept {
+    if (level == 0 || previews_.empty()) {
+        return meshes_;
+    }
+    return previews_[std::min(level, previews_.size()) - 1].meshes;
+}
+
+std::size_t choosePreviewLevel(std::span<const std::size_t> triangles, long long pixels) noexcept {
+    if (triangles.empty()) {
+        return 0;
+    }
+    const long long budget = std::max(pixels, 0LL) / kPixelsPerPreviewTriangle;
+    for (std::size_t i = 0; i < triangles.size(); ++i) {
+        if (static_cast<long long>(triangles[i]) <= budget) {
+            return i + 1;
+        }
+    }
+    return triangles.size();
 }
 
 void MeshRenderer::setStyle(const MeshStyle& style) {
@@ -679,8 +742,8 @@ void MeshRenderer::uploadScalars() {
         }
     };
     upload(*scene_, meshes_);
-    if (previewScene_) {
-        upload(*previewScene_, previewMeshes_);
+    for (const PreviewLevel& level : previews_) {
+        upload(*level.scene, level.meshes);
     }
     f.glBindBuffer(GL_ARRAY_BUFFER, 0);
     throwOnGlError(f, "uploading array values");
@@ -925,13 +988,12 @@ bool MeshRenderer::hasTranslucent() const noexcept {
 }
 
 void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParameters& cue,
-                                   bool preview) {
+                                   std::size_t level) {
     auto& f = gl();
     if (program_ == 0) {
         throw RenderError("MeshRenderer::drawTranslucent without a shader program");
     }
-    const std::vector<GpuMesh>& drawn =
-        preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_;
+    const std::vector<GpuMesh>& drawn = meshesOf(level);
     const glm::mat4 view = camera.viewMatrix();
     // Back to front: the farthest bounding-box centre (most negative view z) first.
     std::vector<std::pair<float, std::size_t>> order;
@@ -980,7 +1042,7 @@ void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParamete
     throwOnGlError(f, "drawing translucent objects");
 }
 
-void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
+void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     auto& f = gl();
     if (gbufferProgram_ == 0) {
         throw RenderError("MeshRenderer::drawGBuffer without a shader program");
@@ -1009,8 +1071,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, bool preview) {
     const GLint useArray = loc("uUseArray");
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
-    const std::vector<GpuMesh>& drawn =
-        preview && !previewMeshes_.empty() ? previewMeshes_ : meshes_;
+    const std::vector<GpuMesh>& drawn = meshesOf(level);
     for (std::size_t i = 0; i < drawn.size(); ++i) {
         f.glUniform1ui(objectId, id++);
         if (!style_.opaque(i)) {

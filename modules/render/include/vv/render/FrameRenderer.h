@@ -84,10 +84,12 @@ struct FrameSettings {
     /// pass (always run then) upscales into the target with bilinear taps.
     /// For interactive frames on slow rasterisers; 1 = full resolution.
     float resolutionScale = 1.0F;
-    /// Draw the G-buffer from the mesh renderer's preview scene (a simplified
-    /// copy, MeshRenderer::setPreviewScene) when it has one: for frames while
-    /// the camera moves, where triangle count, not pixels, bounds the frame
-    /// time of software rasterisers. The VSS of such a frame is solved on that
+    /// Draw the G-buffer from one of the mesh renderer's preview scenes
+    /// (simplified copies, MeshRenderer::setPreviewScenes) when it has any,
+    /// the level chosen for the render size (MeshRenderer::previewLevelFor:
+    /// about one triangle per kPixelsPerPreviewTriangle pixels): for frames
+    /// while the camera moves, where triangle count, not pixels, bounds the
+    /// frame time of software rasterisers. The VSS of such a frame is solved on that
     /// geometry's depth (a preview, never cached as the exact one).
     bool simplifiedGeometry = false;
 };
@@ -276,7 +278,10 @@ class FrameRenderer {
     /// size scaled by FrameSettings::resolutionScale.
     [[nodiscard]] glm::ivec2 lastRenderSize() const noexcept { return renderSize_; }
     /// True when the last frame's G-buffer came from the simplified (preview) meshes.
-    [[nodiscard]] bool lastFrameSimplified() const noexcept { return lastSimplified_; }
+    [[nodiscard]] bool lastFrameSimplified() const noexcept { return lastGeometryLevel_ > 0; }
+    /// The meshes the last frame drew: 0 = the scene's, k = preview level k
+    /// (MeshRenderer::drawGBuffer).
+    [[nodiscard]] std::size_t lastGeometryLevel() const noexcept { return lastGeometryLevel_; }
 
     /// The compiled graph of the last frame (states, reasons, CPU times).
     [[nodiscard]] const std::vector<PassInfo>& lastPasses() const noexcept { return passes_; }
@@ -357,11 +362,16 @@ class FrameRenderer {
     enum class GraphMode { Frame, SolveOnly, DepthOnly };
     void renderGraph(const Camera& camera, const FrameSettings& settings, const FrameTarget& target,
                      GraphMode mode);
-    /// The scene revision, odd when `settings` draw the simplified geometry.
-    [[nodiscard]] std::uint64_t geometryRevision(const FrameSettings& settings) const noexcept;
+    /// The meshes a frame of `settings` at `renderSize` draws: 0 = the
+    /// scene's, k = the mesh renderer's preview level k (previewLevelFor).
+    [[nodiscard]] std::size_t geometryLevel(const FrameSettings& settings,
+                                            glm::ivec2 renderSize) const;
+    /// The scene revision told apart for geometryLevel().
+    [[nodiscard]] std::uint64_t geometryRevision(const FrameSettings& settings,
+                                                 glm::ivec2 renderSize) const;
 
     std::uint64_t sceneRevision_ = 0;
-    bool lastSimplified_ = false;
+    std::size_t lastGeometryLevel_ = 0;
     std::vector<PassInfo> passes_;
     std::string graphText_;
     VssFrameStatus status_;

@@ -182,6 +182,19 @@ struct Lighting {
 [[nodiscard]] std::optional<std::pair<float, float>> arrayRange(const io::Scene& scene,
                                                                 const std::string& name);
 
+/// Pixels per triangle below which a finer preview level gains nothing
+/// visible: choosePreviewLevel() keeps about one triangle per this many
+/// pixels of the frame.
+constexpr long long kPixelsPerPreviewTriangle = 3;
+
+/// The preview level (1-based, as MeshRenderer::drawGBuffer) for a frame of
+/// `pixels` pixels among levels of `triangles` (most first): the finest level
+/// with at most pixels / kPixelsPerPreviewTriangle triangles, else the
+/// coarsest; 0 when there is no level. On software rasterisers the triangle
+/// count bounds small frames, so smaller frames draw coarser copies.
+[[nodiscard]] std::size_t choosePreviewLevel(std::span<const std::size_t> triangles,
+                                             long long pixels) noexcept;
+
 /// Draws a Scene's meshes with OpenGL 4.1 core: position, normal and one
 /// scalar per vertex (taken from the chosen point array; vector arrays show
 /// their magnitude), Blinn-Phong lighting, the array through a 1-D colour-map
@@ -213,13 +226,22 @@ class MeshRenderer {
     void setScene(std::shared_ptr<const io::Scene> scene);
     [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
 
-    /// Uploads a simplified copy of the current scene (io::simplifiedScene)
-    /// that drawGBuffer(camera, true) draws instead, e.g. while the camera
-    /// moves; nullptr clears it, and setScene() clears it too. Same throws as
-    /// setScene(), and InvalidArgumentError when its mesh count differs from
-    /// the scene's.
+    /// Uploads simplified copies of the current scene (io::simplifiedScene),
+    /// in any order, replacing earlier ones; drawGBuffer(camera, level) draws
+    /// level 1 = the copy with the most triangles, 2 = the next, ... instead
+    /// of the scene, e.g. while the camera moves. Null entries are left out;
+    /// an empty list clears them, and setScene() clears them too. Same throws
+    /// as setScene(), and InvalidArgumentError when a copy's mesh count
+    /// differs from the scene's (then no copy is kept).
+    void setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>> previews);
+    /// setPreviewScenes() with one copy (nullptr: none).
     void setPreviewScene(std::shared_ptr<const io::Scene> preview);
-    [[nodiscard]] bool hasPreviewScene() const noexcept { return !previewMeshes_.empty(); }
+    [[nodiscard]] bool hasPreviewScene() const noexcept { return !previews_.empty(); }
+    /// Triangles of each preview level, level 1 first (most triangles).
+    [[nodiscard]] std::vector<std::size_t> previewTriangles() const;
+    /// The preview level for a frame of `pixels` pixels
+    /// (choosePreviewLevel over previewTriangles()); 0 without previews.
+    [[nodiscard]] std::size_t previewLevelFor(long long pixels) const;
 
     /// Sets the style. With the context current, re-uploads the per-vertex
     /// scalars when the array changed and the colour-map texture when the map
@@ -262,9 +284,10 @@ class MeshRenderer {
     /// no array chosen; ignored without a fourth attachment). Depth test GL_LESS
     /// with writes; does not clear. Same vertex shader as draw(), so a later
     /// draw(camera, DepthMode::TestOnly) hits exactly the same depths.
-    /// With `preview` and a preview scene set, draws that one instead.
-    /// Throws like draw().
-    void drawGBuffer(const Camera& camera, bool preview = false);
+    /// `level` 0 draws the scene; k >= 1 draws preview level k
+    /// (setPreviewScenes; the coarsest when k exceeds the levels, the scene
+    /// when there are none). Throws like draw().
+    void drawGBuffer(const Camera& camera, std::size_t level = 0);
 
     /// The G-buffer drawGBuffer() filled, as GL texture names.
     struct GBufferTextures {
@@ -291,8 +314,9 @@ class MeshRenderer {
     /// object shows one layer of itself; the bound depth buffer must hold the
     /// opaque depth (a copy: it is written). Same material, light and
     /// parameter colours as draw(). Does not clear. Throws like draw().
+    /// `level` chooses the meshes as in drawGBuffer().
     void drawTranslucent(const Camera& camera, const VesselCueParameters& cue = {},
-                         bool preview = false);
+                         std::size_t level = 0);
     /// True when some visible object has opacity below 1.
     [[nodiscard]] bool hasTranslucent() const noexcept;
 
@@ -334,9 +358,17 @@ class MeshRenderer {
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;
     std::vector<GpuMesh> meshes_;
-    std::vector<GpuMesh> previewMeshes_;
     std::shared_ptr<const io::Scene> scene_;
-    std::shared_ptr<const io::Scene> previewScene_;
+    /// One simplified copy of scene_ and its uploaded meshes.
+    struct PreviewLevel {
+        std::shared_ptr<const io::Scene> scene;
+        std::vector<GpuMesh> meshes;
+        std::size_t triangles = 0;
+    };
+    std::vector<PreviewLevel> previews_;  ///< most triangles first
+    /// The meshes `level` draws (drawGBuffer).
+    [[nodiscard]] const std::vector<GpuMesh>& meshesOf(std::size_t level) const noexcept;
+    void deletePreviews();
     MeshStyle style_;
     std::optional<std::pair<float, float>> effectiveRange_;
     bool scalarsUploadedForArray_ = false;
