@@ -202,8 +202,8 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] bool cameraMoving() const noexcept { return moving_; }
     /// True from the moment the camera settles until the frame with the
     /// exact VSS is on screen: those frames leave out the ambient occlusion
-    /// (the slowest pass on software rasterisers), and the frame right after
-    /// adds it, so the exact VSS shows as early as it can.
+    /// (the slowest pass on software rasterisers) and FXAA, and the frame
+    /// right after adds them, so the exact VSS shows as early as it can.
     [[nodiscard]] bool occlusionDeferred() const noexcept { return deferOcclusion_; }
     /// The worker's solve counters (submitted, completed, cancelled).
     [[nodiscard]] render::SolveCounters solveCounters() const { return renderer_.solveCounters(); }
@@ -365,7 +365,7 @@ class ViewerWidget : public QOpenGLWidget {
     bool progressive_ = true;
     bool moving_ = false;
     bool frameDirty_ = true;       ///< a new frame was requested (requestFrame)
-    bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO
+    bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO, no FXAA
     int settleDelayMs_ = 150;
     float interactiveScale_ = 0.5F;
     float nextInteractiveScale_ = 0.5F;  ///< dynamic resolution: from the next camera move on

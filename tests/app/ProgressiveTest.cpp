@@ -235,7 +235,7 @@ TEST_F(ProgressiveTest, PreviewWhileRotatingThenExactWithinTheTolerance) {
 
 // Settling shows the exact VSS as early as it can: that frame leaves out the
 // ambient occlusion, and the frame right after adds it without solving again.
-TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusion) {
+TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
     ViewerWidget& viewer = open(makeScene(), 640, 480);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) || !viewer.renderError().isEmpty(); }));
     ASSERT_TRUE(viewer.renderError().isEmpty()) << viewer.renderError().toStdString();
@@ -248,12 +248,14 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusion) {
         return vv::render::PassState::Pending;  // not in the graph
     };
     EXPECT_EQ(passState("ssao"), vv::render::PassState::Executed);
+    EXPECT_EQ(passState("fxaa"), vv::render::PassState::Executed);
     EXPECT_FALSE(viewer.occlusionDeferred());
 
-    // Every frame from the release on is recorded: (exact VSS shown, AO state).
+    // Every frame from the release on is recorded: (exact VSS shown, AO and FXAA states).
     struct Seen {
         bool exact;
         vv::render::PassState ssao;
+        vv::render::PassState fxaa;
     };
     std::vector<Seen> frames;
     viewer.setSettleDelay(600000);
@@ -262,7 +264,7 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusion) {
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
     const QMetaObject::Connection record =
         QObject::connect(&viewer, &ViewerWidget::frameRendered, [&] {
-            frames.push_back({exactShown(viewer), passState("ssao")});
+            frames.push_back({exactShown(viewer), passState("ssao"), passState("fxaa")});
         });
     drag.release();
     EXPECT_TRUE(viewer.occlusionDeferred());
@@ -284,7 +286,9 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusion) {
     }
     ASSERT_LT(firstExact + 1, frames.size());
     EXPECT_NE(frames[firstExact].ssao, vv::render::PassState::Executed);
+    EXPECT_NE(frames[firstExact].fxaa, vv::render::PassState::Executed);
     EXPECT_EQ(frames[firstExact + 1].ssao, vv::render::PassState::Executed);
+    EXPECT_EQ(frames[firstExact + 1].fxaa, vv::render::PassState::Executed);
     EXPECT_TRUE(frames[firstExact + 1].exact);
     EXPECT_EQ(viewer.solveCounters().completed, solved) << "adding the occlusion solved again";
 }
