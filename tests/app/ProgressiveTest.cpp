@@ -256,6 +256,7 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
         bool exact;
         vv::render::PassState ssao;
         vv::render::PassState fxaa;
+        vv::render::PassState vessels;
     };
     std::vector<Seen> frames;
     viewer.setSettleDelay(600000);
@@ -264,10 +265,15 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
     const QMetaObject::Connection record =
         QObject::connect(&viewer, &ViewerWidget::frameRendered, [&] {
-            frames.push_back({exactShown(viewer), passState("ssao"), passState("fxaa")});
+            frames.push_back({exactShown(viewer), passState("ssao"), passState("fxaa"),
+                              passState("vessel-shading")});
         });
+    const quint64 prepared = viewer.solvesPreparedOnSettle();
     drag.release();
     EXPECT_TRUE(viewer.occlusionDeferred());
+    // The moving frames were smaller: settling drew this view's G-buffer,
+    // started the solve and shaded the vessels meanwhile.
+    EXPECT_EQ(viewer.solvesPreparedOnSettle(), prepared + 1);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.occlusionDeferred(); }));
     const auto solved = viewer.solveCounters().completed;
     ASSERT_TRUE(waitUntil([&] {
@@ -291,6 +297,26 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
     EXPECT_EQ(frames[firstExact + 1].fxaa, vv::render::PassState::Executed);
     EXPECT_TRUE(frames[firstExact + 1].exact);
     EXPECT_EQ(viewer.solveCounters().completed, solved) << "adding the occlusion solved again";
+    // The vessels were shaded while the solve ran: the exact frame reused them.
+    EXPECT_EQ(frames[firstExact].vessels, vv::render::PassState::Cached);
+
+    // Kept vessel colours follow the style: another vessel colour re-shades them.
+    const QImage before = viewer.grabFramebuffer();
+    vv::render::MeshStyle style = viewer.style();
+    style.vesselColor = glm::vec3(0.9F, 0.1F, 0.1F);
+    const quint64 count = viewer.framesWithScene();
+    viewer.setStyle(style);
+    ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > count; }));
+    EXPECT_EQ(passState("vessel-shading"), vv::render::PassState::Executed);
+    const QImage after = viewer.grabFramebuffer();
+    ASSERT_EQ(before.size(), after.size());
+    int changed = 0;
+    for (int y = 0; y < before.height(); y += 2) {
+        for (int x = 0; x < before.width(); x += 2) {
+            changed += before.pixel(x, y) != after.pixel(x, y) ? 1 : 0;
+        }
+    }
+    EXPECT_GT(changed, 100) << "the vessels kept their old colour";
 }
 
 // A repaint nobody asked a frame for (an overlay child redrawing, an expose)

@@ -997,14 +997,6 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             status.solveMilliseconds = latest ? latest->milliseconds : 0.0;
         });
 
-    if (mode == GraphMode::SolveOnly) {
-        // prepareSolve(): the G-buffer and the solve's submission, nothing shaded.
-        graph.markTarget(solve.height);
-        runGraph();
-        gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
-        return;
-    }
-
     // 2. Vessel shading: deferred, from the G-buffer (one shaded sample per pixel).
     // Declared after the solve: a vessel cue normalises depth with the VSS's
     // dmin / dmax when a VSS is shown, else with the visible vessels' range,
@@ -1084,12 +1076,16 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         Handle<Texture> color;
     };
     std::optional<std::pair<double, double>>& cueRange = impl.cueRange;
-    cueRange.reset();
     const glm::vec3 fogColor = settings.background;
+    // The viewer's vessel colours are kept across frames: prepareSolve()
+    // shades them while the solve runs, and the frame that shows the solve
+    // reuses them. Elsewhere (exports, the CLI) their storage is pooled.
+    const bool keepVesselColor = async;
     const VesselShading& vessels = graph.addPass<VesselShading>(
         "vessel-shading",
         [&](RenderGraph::Builder& b, VesselShading& d) {
             b.dependsOn("cue", cueKey);
+            b.dependsOn("shading", meshes.shadingRevision());  // style, light, scene
             d.linearDepth = b.read(geometry.linearDepth);
             d.normal = b.read(geometry.normal);
             d.objectId = b.read(geometry.objectId);
@@ -1100,11 +1096,17 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             if (cueUsesVss) {
                 d.height = b.read(solve.height);
             }
-            d.color = b.write(b.create<Texture>("vessel-color", size(TextureFormat::RGBA8)));
+            d.color = b.write(
+                keepVesselColor
+                    ? b.createPersistent<Texture>("vessel-color", size(TextureFormat::RGBA8))
+                    : b.create<Texture>("vessel-color", size(TextureFormat::RGBA8)));
         },
         [&impl, &meshes, &cueRange, camera, cueSettings, cueUsesDepth, cueUsesVss, fogColor, w, h](
             const RenderGraph::Resources& r, const VesselShading& d) {
             auto& g = impl.f();
+            // Set here, not while building the graph: a frame that reuses
+            // these colours keeps the range they were shaded with.
+            cueRange.reset();
             VesselCueParameters cue;
             cue.cue = cueSettings.cue;
             cue.fogColor = fogColor;
@@ -1138,6 +1140,19 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                 cue);
             checkGlError(g, "vessel shading pass");
         });
+
+    if (mode == GraphMode::SolveOnly) {
+        // prepareSolve(): the G-buffer and the solve's submission, and the
+        // vessels' shading when it does not read the VSS (its colours are
+        // then reused by the frame that shows the solve).
+        graph.markTarget(solve.height);
+        if (keepVesselColor && !cueUsesVss) {
+            graph.markTarget(vessels.color);
+        }
+        runGraph();
+        gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
+        return;
+    }
 
     // 4. VSS shading.
     struct VssShading {

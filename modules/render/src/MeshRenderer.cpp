@@ -366,6 +366,7 @@ void MeshRenderer::initialize() {
     cueLutTexture_ = 0;
     objectTexture_ = 0;
     objectsStale_ = true;
+    ++shadingRevision_;
     uploadedMap_.reset();
     uploadedCueScale_.reset();
     scalarsUploadedForArray_ = false;
@@ -527,6 +528,7 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
 void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
     deleteMeshes(meshes_);
     deletePreviews();
+    ++shadingRevision_;
     scene_ = std::move(scene);
     scalarsUploadedForArray_ = false;
     objectsStale_ = true;
@@ -555,6 +557,7 @@ void MeshRenderer::setPreviewScene(std::shared_ptr<const io::Scene> preview) {
 
 void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>> previews) {
     deletePreviews();
+    ++shadingRevision_;
     std::erase(previews, nullptr);
     if (previews.empty()) {
         return;
@@ -628,6 +631,7 @@ void MeshRenderer::setStyle(const MeshStyle& style) {
     style_ = style;
     lighting_ = lightingFor(style_.light);
     objectsStale_ = true;
+    ++shadingRevision_;
     updateRange();
     // With the context current, upload now; otherwise draw() catches up.
     if (gl_ != nullptr && QOpenGLContext::currentContext() == context_) {

@@ -249,6 +249,10 @@ class MeshRenderer {
     /// draw() does. Throws InvalidArgumentError for bins out of range.
     void setStyle(const MeshStyle& style);
     [[nodiscard]] const MeshStyle& style() const noexcept { return style_; }
+    /// Changes with everything shadeGBuffer() reads besides its G-buffer and
+    /// cue: each setStyle(), setScene(), setPreviewScenes() and initialize(),
+    /// so a graph pass that keeps its shaded colours can depend on it.
+    [[nodiscard]] std::uint64_t shadingRevision() const noexcept { return shadingRevision_; }
 
     /// The value range the colour map spans now (the style's range or the
     /// array's finite range); nullopt when no array is shown or it has no finite value.
@@ -378,6 +382,7 @@ class MeshRenderer {
     std::vector<std::pair<std::string, std::optional<std::pair<float, float>>>> objectRanges_;
     unsigned objectTexture_ = 0;
     bool objectsStale_ = true;
+    std::uint64_t shadingRevision_ = 0;
     Lighting lighting_;
     std::optional<colormaps::ColorMap> uploadedMap_;
     int uploadedBins_ = 0;
