@@ -583,7 +583,8 @@ void ViewerWidget::paintGL() {
         // frame (hundreds of ms on software rasterisers) for the same pixels.
         return;
     }
-    frameDirty_ = false;  // requests made while drawing ask for the next frame
+    frameDirty_ = false;        // requests made while drawing ask for the next frame
+    budgetFrameStart_.reset();  // only a camera-move frame below measures itself
     QElapsedTimer paintTimer;
     paintTimer.start();
     const qint64 paintStart = frameClock_.nsecsElapsed();

@@ -54,7 +54,8 @@ struct Measurement {
 /// vessels with Blinn-Phong and an optional colour-mapped array, and the Void
 /// Space Surface behind them) with an orbit camera. The VSS is solved on a
 /// worker thread: until a new solve arrives the view shows the previous VSS
-/// (same size) or none, then repaints.
+/// (same size) or none, then repaints (during a drag only when the camera
+/// pauses: the next move's frame shows it anyway).
 ///
 /// Progressive refinement: while the camera moves (a drag in progress, or
 /// within settleDelay() of the last camera change) frames ask for a preview
@@ -65,10 +66,11 @@ struct Measurement {
 /// depth the last preview frame read back when that frame was rendered at
 /// full resolution (a frame follows when the solve arrives), else through
 /// the next, full-resolution frame. A newer request cancels a stale solve.
-/// Scenes with more than previewTriangles() triangles also get a simplified
-/// copy (io::simplifiedScene, built on a worker thread after setScene()) that
-/// the geometry pass draws while the camera moves: on software rasterisers
-/// the triangle count, not the pixel count, bounds those frames.
+/// Scenes with more than previewTriangles() triangles also get simplified
+/// copies (io::simplifiedScene, built on a worker thread after setScene())
+/// that the geometry pass draws while the camera moves, the coarser one in
+/// small frames: on software rasterisers the triangle count, not the pixel
+/// count, bounds those frames.
 ///
 /// Mouse: left-drag rotates (arcball), right- or middle-drag or shift +
 /// left-drag pans, the wheel zooms. Keys: R resets the view, F fits the data.

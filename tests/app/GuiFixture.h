@@ -153,14 +153,17 @@ class GuiFixture : public ::testing::Test {
         return ok && viewer->renderError().isEmpty();
     }
 
-    /// Waits until the VSS of the current view is shown (exact, not pending).
-    [[nodiscard]] bool waitForVss() const {
+    /// Waits until the VSS of the current view is shown (exact, not pending),
+    /// at most `timeoutMs`.
+    [[nodiscard]] bool waitForVss(int timeoutMs = 30000) const {
         const auto* viewer = window_->viewer();
-        const bool ok = waitUntil([&] {
-            const auto& s = viewer->vssStatus();
-            return !viewer->renderError().isEmpty() ||
-                   (s.shown && s.current && !s.pending && !s.preview);
-        });
+        const bool ok = waitUntil(
+            [&] {
+                const auto& s = viewer->vssStatus();
+                return !viewer->renderError().isEmpty() ||
+                       (s.shown && s.current && !s.pending && !s.preview);
+            },
+            timeoutMs);
         const auto& s = viewer->vssStatus();
         EXPECT_TRUE(ok) << "the VSS never arrived: shown " << s.shown << " current " << s.current
                         << " pending " << s.pending << " preview " << s.preview;
