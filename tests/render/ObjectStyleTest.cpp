@@ -8,7 +8,6 @@
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
-#include <QSurfaceFormat>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -58,13 +57,7 @@ vv::io::Scene scene() {
 class FrameHarness {
   public:
     FrameHarness(int width, int height) : width_(width), height_(height) {
-        QSurfaceFormat format;
-        format.setVersion(4, 1);
-        format.setProfile(QSurfaceFormat::CoreProfile);
-        surface_.setFormat(format);
-        surface_.create();
-        context_.setFormat(format);
-        if (!context_.create() || !context_.makeCurrent(&surface_)) {
+        if (!vv::render::test::makeGl41Current(surface_, context_)) {
             throw vv::RenderError("no OpenGL 4.1 context for the test");
         }
         fbo_ = std::make_unique<QOpenGLFramebufferObject>(width, height);

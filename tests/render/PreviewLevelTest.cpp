@@ -2,9 +2,15 @@
 // choosePreviewLevel: which simplified copy a moving frame of a given size draws.
 #include <gtest/gtest.h>
 
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
 #include <cstddef>
+#include <memory>
 #include <vector>
 
+#include "RenderTestUtil.h"
+#include "vv/core/Error.h"
+#include "vv/io/MeshSimplify.h"
 #include "vv/render/MeshRenderer.h"
 
 namespace vv::render {
@@ -33,6 +39,74 @@ TEST(PreviewLevelTest, TinyOrEmptyFramesTakeTheCoarsestLevel) {
     EXPECT_EQ(choosePreviewLevel(levels, -5), 3U);
     EXPECT_EQ(choosePreviewLevel(levels, 3000LL * kPixelsPerPreviewTriangle), 2U);
     EXPECT_EQ(choosePreviewLevel(std::vector<std::size_t>{5000}, 10), 1U);
+}
+
+/// A current OpenGL 4.1 core context for MeshRenderer's uploads.
+class PreviewScenesTest : public test::GlRenderTest {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(test::makeGl41Current(surface_, context_))
+            << "no OpenGL 4.1 context (run under xvfb-run, QT_QPA_PLATFORM=xcb)";
+        meshes_.initialize();
+    }
+    void TearDown() override {
+        meshes_.release();
+        context_.doneCurrent();
+    }
+
+    static std::size_t trianglesOf(const io::Scene& scene) {
+        std::size_t n = 0;
+        for (const io::Mesh& mesh : scene.meshes) {
+            n += mesh.triangleCount();
+        }
+        return n;
+    }
+
+    QOffscreenSurface surface_;
+    QOpenGLContext context_;
+    MeshRenderer meshes_;
+};
+
+TEST_F(PreviewScenesTest, LevelsAreKeptFinestFirstAndChosenBySize) {
+    const auto scene = std::make_shared<const io::Scene>(test::twoTubes(1.0F, 2.0F, 48, 48));
+    const std::size_t full = trianglesOf(*scene);
+    meshes_.setScene(scene);
+    const std::uint64_t afterScene = meshes_.shadingRevision();
+    auto fine = std::make_shared<const io::Scene>(io::simplifiedScene(*scene, full / 2));
+    auto coarse = std::make_shared<const io::Scene>(io::simplifiedScene(*scene, full / 8));
+    // Any order, null entries left out.
+    meshes_.setPreviewScenes({coarse, nullptr, fine});
+    EXPECT_NE(meshes_.shadingRevision(), afterScene);
+    ASSERT_TRUE(meshes_.hasPreviewScene());
+    const std::vector<std::size_t> levels = meshes_.previewTriangles();
+    ASSERT_EQ(levels.size(), 2U);
+    EXPECT_EQ(levels[0], trianglesOf(*fine));
+    EXPECT_EQ(levels[1], trianglesOf(*coarse));
+    EXPECT_GT(levels[0], levels[1]);
+    EXPECT_EQ(meshes_.previewLevelFor(1LL << 40), 1U);
+    EXPECT_EQ(meshes_.previewLevelFor(1), 2U);
+
+    // A new style changes the shading revision; a new scene drops the levels.
+    const std::uint64_t beforeStyle = meshes_.shadingRevision();
+    meshes_.setStyle(MeshStyle{});
+    EXPECT_NE(meshes_.shadingRevision(), beforeStyle);
+    meshes_.setScene(scene);
+    EXPECT_FALSE(meshes_.hasPreviewScene());
+    EXPECT_EQ(meshes_.previewLevelFor(1), 0U);
+}
+
+TEST_F(PreviewScenesTest, ACopyWithAnotherMeshCountIsRefusedAndNoneIsKept) {
+    const auto scene = std::make_shared<const io::Scene>(test::twoTubes(1.0F, 2.0F, 24, 24));
+    meshes_.setScene(scene);
+    auto good = std::make_shared<const io::Scene>(io::simplifiedScene(*scene, 200));
+    auto oneMesh = std::make_shared<io::Scene>();
+    oneMesh->meshes.push_back(scene->meshes.front());
+    EXPECT_THROW(meshes_.setPreviewScenes({good, oneMesh}), InvalidArgumentError);
+    EXPECT_FALSE(meshes_.hasPreviewScene());
+    meshes_.setPreviewScene(good);
+    EXPECT_TRUE(meshes_.hasPreviewScene());
+    meshes_.setPreviewScene(nullptr);
+    EXPECT_FALSE(meshes_.hasPreviewScene());
 }
 
 }  // namespace

@@ -3,6 +3,7 @@
 
 #include <QGuiApplication>
 #include <QString>
+#include <QSurfaceFormat>
 #include <cmath>
 #include <cstdint>
 #include <numbers>
@@ -26,6 +27,16 @@ void ensureGuiApplication() {
         // Kept for the whole process: Qt allows one application object.
         new QGuiApplication(argc, argv);
     }
+}
+
+bool makeGl41Current(QOffscreenSurface& surface, QOpenGLContext& context) {
+    QSurfaceFormat format;
+    format.setVersion(4, 1);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    surface.setFormat(format);
+    surface.create();
+    context.setFormat(format);
+    return context.create() && context.makeCurrent(&surface);
 }
 
 std::unique_ptr<OffscreenRenderer> makeRenderer() {

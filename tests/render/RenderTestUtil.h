@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <QOffscreenSurface>
+#include <QOpenGLContext>
 #include <QRgb>
 #include <glm/glm.hpp>
 #include <memory>
@@ -22,6 +24,10 @@ void ensureGuiApplication();
 
 /// A renderer, or a test failure naming why there is none.
 std::unique_ptr<OffscreenRenderer> makeRenderer();
+
+/// Creates `surface` and `context` for OpenGL 4.1 core and makes the context
+/// current; false when the platform has none (e.g. no display).
+[[nodiscard]] bool makeGl41Current(QOffscreenSurface& surface, QOpenGLContext& context);
 
 /// The state of pass `pass` in the renderer's last frame (a failure if absent).
 PassState passState(const OffscreenRenderer& renderer, const std::string& pass);
