@@ -733,10 +733,7 @@ void MainWindow::showScene(std::shared_ptr<const io::Scene> scene, const QString
     setWindowTitle(title.isEmpty() ? QStringLiteral("VesselView")
                                    : title + QStringLiteral(" — VesselView"));
     if (scene) {
-        std::size_t triangles = 0;
-        for (const auto& mesh : scene->meshes) {
-            triangles += mesh.triangleCount();
-        }
+        const std::size_t triangles = scene->triangleCount();
         const QString meshes =
             scene->meshes.size() == 1 ? tr("1 mesh") : tr("%1 meshes").arg(scene->meshes.size());
         statusLabel_->setText(

@@ -206,23 +206,14 @@ void ViewerWidget::cancelPreviewGeometry() {
 std::vector<std::size_t> ViewerWidget::previewLevelTriangles() const {
     std::vector<std::size_t> levels;
     for (const auto& preview : previewScenes_) {
-        std::size_t triangles = 0;
-        for (const io::Mesh& mesh : preview->meshes) {
-            triangles += mesh.triangleCount();
-        }
-        levels.push_back(triangles);
+        levels.push_back(preview->triangleCount());
     }
     return levels;
 }
 
 void ViewerWidget::startPreviewGeometry() {
     cancelPreviewGeometry();
-    std::size_t triangles = 0;
-    if (scene_) {
-        for (const io::Mesh& mesh : scene_->meshes) {
-            triangles += mesh.triangleCount();
-        }
-    }
+    const std::size_t triangles = scene_ ? scene_->triangleCount() : 0;
     // Not worth it below 1.5x the budget: the full meshes are cheap enough.
     const auto worthIt = [](std::size_t have, std::size_t budget) {
         return budget > 0 && have * 2 > budget * 3;
@@ -240,13 +231,9 @@ void ViewerWidget::startPreviewGeometry() {
                 PreviewScenes levels;
                 auto fine = std::make_shared<const io::Scene>(
                     io::simplifiedScene(*scene, budget, Progress({}, stop)));
-                std::size_t fineTriangles = 0;
-                for (const io::Mesh& mesh : fine->meshes) {
-                    fineTriangles += mesh.triangleCount();
-                }
                 levels.push_back(fine);
                 const std::size_t coarse = budget / kPreviewLevelRatio;
-                if (worthIt(fineTriangles, coarse)) {
+                if (worthIt(fine->triangleCount(), coarse)) {
                     levels.push_back(std::make_shared<const io::Scene>(
                         io::simplifiedScene(*fine, coarse, Progress({}, stop))));
                 }

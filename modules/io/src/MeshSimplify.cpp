@@ -143,10 +143,7 @@ Mesh simplifiedMesh(const Mesh& mesh, std::size_t targetTriangles, const Progres
 }
 
 Scene simplifiedScene(const Scene& scene, std::size_t targetTriangles, const Progress& progress) {
-    std::size_t total = 0;
-    for (const Mesh& mesh : scene.meshes) {
-        total += mesh.triangleCount();
-    }
+    const std::size_t total = scene.triangleCount();
     Scene out;
     std::size_t done = 0;
     for (const Mesh& mesh : scene.meshes) {

@@ -635,18 +635,16 @@ void FrameRenderer::clearCache() {
 }
 
 std::size_t FrameRenderer::geometryLevel(const FrameSettings& settings,
-                                         glm::ivec2 renderSize) const {
+                                         glm::ivec2 renderSize) const noexcept {
     if (!settings.simplifiedGeometry || !meshes_.hasPreviewScene()) {
         return 0;
     }
     return meshes_.previewLevelFor(static_cast<long long>(renderSize.x) * renderSize.y);
 }
 
-std::uint64_t FrameRenderer::geometryRevision(const FrameSettings& settings,
-                                              glm::ivec2 renderSize) const {
+std::uint64_t FrameRenderer::geometryRevision(std::size_t level) const noexcept {
     // Up to 7 preview levels told apart (there are two).
-    const std::uint64_t level = std::min<std::uint64_t>(geometryLevel(settings, renderSize), 7U);
-    std::uint64_t revision = sceneRevision_ * 8U + level;
+    std::uint64_t revision = sceneRevision_ * 8U + std::min<std::uint64_t>(level, 7U);
     if (volume_.volume()) {
         // Volume depth source: its revision tells depth views apart too.
         revision ^= (volumeRevision_ + 1U) * 0x9E3779B97F4A7C15ULL;
@@ -673,8 +671,9 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
         return false;
     }
     const glm::ivec2 renderSize = renderSizeFor(settings, target);
-    const std::uint64_t depthView = viewKey(camera.viewMatrix(), camera.projectionMatrix(),
-                                            renderSize, geometryRevision(settings, renderSize));
+    const std::uint64_t depthView =
+        viewKey(camera.viewMatrix(), camera.projectionMatrix(), renderSize,
+                geometryRevision(geometryLevel(settings, renderSize)));
     if (depthView != *impl_->lastDepthView || impl_->lastDepth.width() != renderSize.x ||
         impl_->lastDepth.height() != renderSize.y) {
         return false;  // the depth shows another view: the next frame reads it back
@@ -787,7 +786,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     // The scene's revision, told apart for each simplified (preview) level.
     const std::size_t meshLevel = geometryLevel(settings, renderSize);
     lastGeometryLevel_ = meshLevel;
-    const std::uint64_t sceneRevision = geometryRevision(settings, renderSize);
+    const std::uint64_t sceneRevision = geometryRevision(meshLevel);
     Impl& impl = *impl_;
     MeshRenderer& meshes = meshes_;
     VolumeRenderer& volumeRenderer = volume_;  // volume depth source

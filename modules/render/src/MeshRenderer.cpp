@@ -358,6 +358,7 @@ void MeshRenderer::initialize() {
     // Objects of an earlier context are gone with it: upload everything anew.
     meshes_.clear();
     previews_.clear();
+    previewTriangles_.clear();
     program_ = 0;
     gbufferProgram_ = 0;
     deferredProgram_ = 0;
@@ -403,6 +404,7 @@ void MeshRenderer::release() noexcept {
     if (gl_ == nullptr || QOpenGLContext::currentContext() != context_) {
         meshes_.clear();
         previews_.clear();
+        previewTriangles_.clear();
         return;
     }
     auto& f = *gl_;
@@ -545,6 +547,7 @@ void MeshRenderer::deletePreviews() {
         deleteMeshes(level.meshes);
     }
     previews_.clear();
+    previewTriangles_.clear();
 }
 
 void MeshRenderer::setPreviewScene(std::shared_ptr<const io::Scene> preview) {
@@ -570,17 +573,13 @@ void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>
                 std::to_string(scene_ ? scene_->meshes.size() : 0) + ")");
         }
     }
+    std::stable_sort(previews.begin(), previews.end(), [](const auto& a, const auto& b) {
+        return a->triangleCount() > b->triangleCount();
+    });
     for (auto& preview : previews) {
-        PreviewLevel level;
-        for (const io::Mesh& mesh : preview->meshes) {
-            level.triangles += mesh.triangleCount();
-        }
-        level.scene = std::move(preview);
-        previews_.push_back(std::move(level));
+        previewTriangles_.push_back(preview->triangleCount());
+        previews_.push_back(PreviewLevel{std::move(preview), {}});
     }
-    std::stable_sort(
-        previews_.begin(), previews_.end(),
-        [](const PreviewLevel& a, const PreviewLevel& b) { return a.triangles > b.triangles; });
     try {
         for (PreviewLevel& level : previews_) {
             uploadMeshes(*level.scene, level.meshes);
@@ -593,16 +592,8 @@ void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>
     uploadScalars();
 }
 
-std::vector<std::size_t> MeshRenderer::previewTriangles() const {
-    std::vector<std::size_t> triangles;
-    for (const PreviewLevel& level : previews_) {
-        triangles.push_back(level.triangles);
-    }
-    return triangles;
-}
-
-std::size_t MeshRenderer::previewLevelFor(long long pixels) const {
-    return choosePreviewLevel(previewTriangles(), pixels);
+std::size_t MeshRenderer::previewLevelFor(long long pixels) const noexcept {
+    return choosePreviewLevel(previewTriangles_, pixels);
 }
 
 const std::vector<MeshRenderer::GpuMesh>& MeshRenderer::meshesOf(std::size_t level) const noexcept {

@@ -54,6 +54,14 @@ struct Mesh {
 struct Scene {
     std::vector<Mesh> meshes;
     [[nodiscard]] Aabb bounds() const noexcept;
+    /// Triangles of all meshes.
+    [[nodiscard]] std::size_t triangleCount() const noexcept {
+        std::size_t n = 0;
+        for (const Mesh& mesh : meshes) {
+            n += mesh.triangleCount();
+        }
+        return n;
+    }
 };
 
 /// Recomputes area-weighted per-vertex normals from the triangles.

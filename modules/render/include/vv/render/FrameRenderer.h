@@ -365,10 +365,9 @@ class FrameRenderer {
     /// The meshes a frame of `settings` at `renderSize` draws: 0 = the
     /// scene's, k = the mesh renderer's preview level k (previewLevelFor).
     [[nodiscard]] std::size_t geometryLevel(const FrameSettings& settings,
-                                            glm::ivec2 renderSize) const;
-    /// The scene revision told apart for geometryLevel().
-    [[nodiscard]] std::uint64_t geometryRevision(const FrameSettings& settings,
-                                                 glm::ivec2 renderSize) const;
+                                            glm::ivec2 renderSize) const noexcept;
+    /// The scene revision told apart for geometry `level` (geometryLevel()).
+    [[nodiscard]] std::uint64_t geometryRevision(std::size_t level) const noexcept;
 
     std::uint64_t sceneRevision_ = 0;
     std::size_t lastGeometryLevel_ = 0;

@@ -238,10 +238,12 @@ class MeshRenderer {
     void setPreviewScene(std::shared_ptr<const io::Scene> preview);
     [[nodiscard]] bool hasPreviewScene() const noexcept { return !previews_.empty(); }
     /// Triangles of each preview level, level 1 first (most triangles).
-    [[nodiscard]] std::vector<std::size_t> previewTriangles() const;
+    [[nodiscard]] const std::vector<std::size_t>& previewTriangles() const noexcept {
+        return previewTriangles_;
+    }
     /// The preview level for a frame of `pixels` pixels
     /// (choosePreviewLevel over previewTriangles()); 0 without previews.
-    [[nodiscard]] std::size_t previewLevelFor(long long pixels) const;
+    [[nodiscard]] std::size_t previewLevelFor(long long pixels) const noexcept;
 
     /// Sets the style. With the context current, re-uploads the per-vertex
     /// scalars when the array changed and the colour-map texture when the map
@@ -367,9 +369,9 @@ class MeshRenderer {
     struct PreviewLevel {
         std::shared_ptr<const io::Scene> scene;
         std::vector<GpuMesh> meshes;
-        std::size_t triangles = 0;
     };
-    std::vector<PreviewLevel> previews_;  ///< most triangles first
+    std::vector<PreviewLevel> previews_;         ///< most triangles first
+    std::vector<std::size_t> previewTriangles_;  ///< each level's triangles, same order
     /// The meshes `level` draws (drawGBuffer).
     [[nodiscard]] const std::vector<GpuMesh>& meshesOf(std::size_t level) const noexcept;
     void deletePreviews();
