@@ -183,6 +183,12 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] std::size_t lastGeometryLevel() const noexcept {
         return renderer_.lastGeometryLevel();
     }
+    /// MeshRenderer::setBackFaceCulling (on by default); off for comparisons.
+    void setBackFaceCulling(bool on) noexcept { renderer_.meshRenderer().setBackFaceCulling(on); }
+    /// How many meshes the last frame's G-buffer drew with back-face culling.
+    [[nodiscard]] std::size_t lastCulledMeshes() const noexcept {
+        return renderer_.meshRenderer().lastCulledMeshes();
+    }
     /// True when the last frame drew the simplified geometry.
     [[nodiscard]] bool lastFrameSimplified() const noexcept {
         return renderer_.lastFrameSimplified();

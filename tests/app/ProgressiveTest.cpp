@@ -26,6 +26,7 @@
 
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
+#include "vv/io/DemoTree.h"
 #include "vv/io/MeshLoader.h"
 #include "vv/render/MeshRenderer.h"
 
@@ -603,6 +604,29 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     EXPECT_FALSE(viewer.hasPreviewGeometry());
 }
 
+TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout) {
+    vv::io::DemoTreeOptions demo;
+    demo.generations = 3;
+    demo.maxTriangles = 20000;
+    auto tree = std::make_shared<vv::io::Scene>();
+    tree->meshes.push_back(vv::io::generateDemoMesh(demo));
+    ViewerWidget& viewer = open(tree, 400, 300);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
+    EXPECT_EQ(viewer.lastCulledMeshes(), 1U);  // watertight, seen from outside
+    viewer.setBackFaceCulling(false);
+    const quint64 frames = viewer.framesWithScene();
+    Drag drag(viewer);
+    drag.moveBy(QPointF(10, 2));
+    ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
+    EXPECT_EQ(viewer.lastCulledMeshes(), 0U);
+    drag.release();
+    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
+
+    ViewerWidget& tubes = open(makeScene(), 400, 300);
+    ASSERT_TRUE(waitUntil([&] { return exactShown(tubes); }));
+    EXPECT_EQ(tubes.lastCulledMeshes(), 0U);  // open ends: the inside can be seen
+}
+
 /// Per-pass GPU milliseconds (CPU where a pass has no GPU time) collected
 /// over frames, printed as medians: where a frame's time goes.
 class PassTable {
@@ -646,6 +670,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     // serialises the frame a little, so fps are measured without them).
     const bool passTimes = qEnvironmentVariableIntValue("VV_BENCH_PASSES") != 0;
     viewer.setRecordTimings(passTimes);
+    // VV_BENCH_CULLING=0: both sides of every triangle drawn (the old way).
+    viewer.setBackFaceCulling(qEnvironmentVariable("VV_BENCH_CULLING") != QStringLiteral("0"));
     // The viewer itself at 1280x720, whatever the toolbars take.
     ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > 0; }));
     const QSize extra = window_->size() - viewer.size();
@@ -695,6 +721,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         const quint64 directBefore = viewer.solvesRequestedOnSettle();
         QSize movingSize;
         std::size_t movingLevel = 0;
+        std::size_t movingCulled = 0;
         std::vector<double> frameMs;
         std::vector<double> paintMs;  // paintGL of the frame each move waited for
         int withCurrentVss = 0;
@@ -715,6 +742,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             moving.add(viewer);
             movingSize = viewer.lastRenderSize();
             movingLevel = viewer.lastGeometryLevel();
+            movingCulled = viewer.lastCulledMeshes();
             const auto& s = viewer.vssStatus();
             withCurrentVss += (s.shown && s.current) ? 1 : 0;
             previews += s.preview ? 1 : 0;
@@ -752,8 +780,9 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         // The rest of a frame is Qt composing the window and the event loop.
         std::printf(
             "[bench]   moving frames: paintGL median %.1f ms (min %.1f, max %.1f), "
-            "geometry level %zu (0 = full meshes)\n",
-            paintMs[paintMs.size() / 2], paintMs.front(), paintMs.back(), movingLevel);
+            "geometry level %zu (0 = full meshes), meshes culled %zu\n",
+            paintMs[paintMs.size() / 2], paintMs.front(), paintMs.back(), movingLevel,
+            movingCulled);
         std::printf(
             "[bench] progressive=%s interactive scale %.2f (rendered %dx%d while moving) 1280x720 "
             "demo: 30 rotations in %.0f ms = %.1f fps; frame ms "

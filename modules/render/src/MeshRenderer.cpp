@@ -16,6 +16,8 @@
 #include <string>
 
 #include "vv/core/Error.h"
+#include "vv/io/MeshTopology.h"
+#include "vv/render/BackFaceCulling.h"
 #include "vv/render/GlResources.h"
 
 namespace vv::render {
@@ -321,6 +323,10 @@ struct MeshRenderer::GpuMesh {
     GLuint indices = 0;
     GLsizei indexCount = 0;
     glm::vec3 center{0.0F};  ///< of the bounding box, for sorting translucent objects
+    Aabb bounds;
+    /// The mesh it was uploaded from, owned by scene_ or a preview level's scene.
+    const io::Mesh* source = nullptr;
+    io::SurfaceClosure closure = io::SurfaceClosure::Open;
 };
 
 MeshRenderer::MeshRenderer() : lighting_(sceneLighting()) {}
@@ -512,15 +518,12 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
                        static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
                        mesh.indices.data(), GL_STATIC_DRAW);
         target.back().indexCount = static_cast<GLsizei>(mesh.indices.size());
-        if (!mesh.positions.empty()) {
-            glm::vec3 lo = mesh.positions.front();
-            glm::vec3 hi = lo;
-            for (const auto& p : mesh.positions) {
-                lo = glm::min(lo, p);
-                hi = glm::max(hi, p);
-            }
-            target.back().center = 0.5F * (lo + hi);
+        target.back().bounds = mesh.bounds();
+        if (!target.back().bounds.empty()) {
+            target.back().center = 0.5F * (target.back().bounds.min + target.back().bounds.max);
         }
+        target.back().source = &mesh;
+        target.back().closure = io::surfaceClosure(mesh);
         f.glBindVertexArray(0);
         f.glBindBuffer(GL_ARRAY_BUFFER, 0);
         throwOnGlError(f, "uploading a mesh");
@@ -909,9 +912,9 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthFunc(mode == DepthMode::Write ? GL_LESS : GL_LEQUAL);
     f.glDepthMask(mode == DepthMode::Write ? GL_TRUE : GL_FALSE);
-    f.glDisable(GL_CULL_FACE);
     f.glDisable(GL_BLEND);
     useMaterial(program_, cue);
+    lastCulledMeshes_ = 0;
     const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
@@ -921,9 +924,11 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
             continue;
         }
         useObject(program_, i);
+        cullFor(meshes_[i], view, projection);
         f.glBindVertexArray(meshes_[i].vao);
         f.glDrawElements(GL_TRIANGLES, meshes_[i].indexCount, GL_UNSIGNED_INT, nullptr);
     }
+    f.glDisable(GL_CULL_FACE);
     f.glBindVertexArray(0);
     unbindMaterial();
     f.glDepthMask(GL_TRUE);
@@ -1054,7 +1059,6 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     f.glEnable(GL_DEPTH_TEST);
     f.glDepthFunc(GL_LESS);
     f.glDepthMask(GL_TRUE);
-    f.glDisable(GL_CULL_FACE);
     f.glDisable(GL_BLEND);
     f.glUseProgram(gbufferProgram_);
     const auto loc = [&](const char* name) {
@@ -1067,18 +1071,37 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
     const std::vector<GpuMesh>& drawn = meshesOf(level);
+    lastCulledMeshes_ = 0;
     for (std::size_t i = 0; i < drawn.size(); ++i) {
         f.glUniform1ui(objectId, id++);
         if (!style_.opaque(i)) {
             continue;  // hidden or translucent: its id stays reserved
         }
         f.glUniform1i(useArray, style_.arrayOf(i).empty() ? 0 : 1);
+        cullFor(drawn[i], view, projection);
         f.glBindVertexArray(drawn[i].vao);
         f.glDrawElements(GL_TRIANGLES, drawn[i].indexCount, GL_UNSIGNED_INT, nullptr);
     }
+    f.glDisable(GL_CULL_FACE);
     f.glBindVertexArray(0);
     f.glUseProgram(0);
     throwOnGlError(f, "drawing the G-buffer");
+}
+
+void MeshRenderer::cullFor(const GpuMesh& mesh, const glm::mat4& view,
+                           const glm::mat4& projection) {
+    auto& f = gl();
+    const CullFace faces =
+        backFaceCulling_ && mesh.source != nullptr
+            ? cullableFaces(*mesh.source, mesh.closure, mesh.bounds, view, projection)
+            : CullFace::None;
+    if (faces == CullFace::None) {
+        f.glDisable(GL_CULL_FACE);
+        return;
+    }
+    f.glEnable(GL_CULL_FACE);
+    f.glCullFace(faces == CullFace::Back ? GL_BACK : GL_FRONT);
+    ++lastCulledMeshes_;
 }
 
 std::string MeshRenderer::glDescription() const {

@@ -227,6 +227,17 @@ void OffscreenRenderer::clearCache() {
     renderer_->clearCache();
 }
 
+void OffscreenRenderer::setBackFaceCulling(bool enabled) {
+    // The G-buffer is meant to come out the same either way, so no pass
+    // depends on the switch: forget the cached ones, so the next render draws.
+    clearCache();
+    renderer_->meshRenderer().setBackFaceCulling(enabled);
+}
+
+std::size_t OffscreenRenderer::lastCulledMeshes() const noexcept {
+    return renderer_->meshRenderer().lastCulledMeshes();
+}
+
 const std::string& OffscreenRenderer::lastGraphText() const noexcept {
     return renderer_->lastGraphText();
 }

@@ -226,6 +226,7 @@ class FrameRenderer {
 
     /// The mesh renderer: set its scene and style through it (context current).
     [[nodiscard]] MeshRenderer& meshRenderer() noexcept { return meshes_; }
+    [[nodiscard]] const MeshRenderer& meshRenderer() const noexcept { return meshes_; }
 
     // --- Volume depth source (issue 5) ------------------------------------
     /// A volume drawn into the G-buffer after the meshes by first-hit

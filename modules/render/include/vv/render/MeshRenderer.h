@@ -256,6 +256,15 @@ class MeshRenderer {
     /// so a graph pass that keeps its shaded colours can depend on it.
     [[nodiscard]] std::uint64_t shadingRevision() const noexcept { return shadingRevision_; }
 
+    /// Back-face culling where it changes no pixel (render::cullableFaces:
+    /// closed surfaces seen from outside); on by default. On llvmpipe it
+    /// halves the geometry pass of a closed vessel tree. Off draws both sides
+    /// of every triangle (for comparisons and benchmarks).
+    void setBackFaceCulling(bool enabled) noexcept { backFaceCulling_ = enabled; }
+    [[nodiscard]] bool backFaceCulling() const noexcept { return backFaceCulling_; }
+    /// How many meshes the last drawGBuffer() or draw() drew with culling.
+    [[nodiscard]] std::size_t lastCulledMeshes() const noexcept { return lastCulledMeshes_; }
+
     /// The value range the colour map spans now (the style's range or the
     /// array's finite range); nullopt when no array is shown or it has no finite value.
     [[nodiscard]] std::optional<std::pair<float, float>> effectiveRange() const noexcept {
@@ -340,6 +349,8 @@ class MeshRenderer {
     /// Checks and uploads `scene`'s meshes into `target` (scalars left for uploadScalars()).
     void uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& target);
     void uploadScalars();
+    /// Enables culling for the next draw of `mesh` where cullableFaces() allows it.
+    void cullFor(const GpuMesh& mesh, const glm::mat4& view, const glm::mat4& projection);
     /// True when the uploaded per-vertex values are not those of the style's arrays.
     [[nodiscard]] bool scalarsStale() const noexcept;
     /// Uploads the per-object table (colour, array on/off, range, opacity by object id).
@@ -385,6 +396,8 @@ class MeshRenderer {
     unsigned objectTexture_ = 0;
     bool objectsStale_ = true;
     std::uint64_t shadingRevision_ = 0;
+    bool backFaceCulling_ = true;
+    std::size_t lastCulledMeshes_ = 0;
     Lighting lighting_;
     std::optional<colormaps::ColorMap> uploadedMap_;
     int uploadedBins_ = 0;

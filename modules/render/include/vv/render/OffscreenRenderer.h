@@ -114,6 +114,11 @@ class OffscreenRenderer {
     /// Forgets the cached passes and frees their textures (GPU memory).
     void clearCache();
 
+    /// MeshRenderer::setBackFaceCulling for the following renders (on by default).
+    void setBackFaceCulling(bool enabled);
+    /// MeshRenderer::lastCulledMeshes of the last render's G-buffer.
+    [[nodiscard]] std::size_t lastCulledMeshes() const noexcept;
+
     /// The value range the colour map spanned in the last render(); nullopt
     /// when no array was shown.
     [[nodiscard]] std::optional<std::pair<float, float>> lastRange() const noexcept {
