@@ -190,6 +190,49 @@ struct RowSums {
     }
 };
 
+/// One image row's PlaneMoments, one entry per pixel (structure of arrays,
+/// so the sums and the plane solve run as vector loops).
+struct RowMoments {
+    std::vector<double> sw, sx, sy, sxx, sxy, syy, sh, sxh, syh;
+    std::vector<double> slopeX, slopeY;
+    std::vector<std::uint8_t> fitted;  // 1 where planeSlope() would give a slope
+    explicit RowMoments(std::size_t n) {
+        for (auto* v : {&sw, &sx, &sy, &sxx, &sxy, &syy, &sh, &sxh, &syh, &slopeX, &slopeY}) {
+            v->assign(n, 0.0);
+        }
+        fitted.assign(n, 0);
+    }
+    void clear() {
+        for (auto* v : {&sw, &sx, &sy, &sxx, &sxy, &syy, &sh, &sxh, &syh}) {
+            std::fill(v->begin(), v->end(), 0.0);
+        }
+    }
+    /// planeSlope() of every entry, branch-free: the same operations in the
+    /// same order, so the same bits.
+    void solvePlanes() {
+        const std::size_t n = sw.size();
+#pragma omp simd
+        for (std::size_t i = 0; i < n; ++i) {
+            const bool some = sw[i] > 0.0;
+            const double inv = 1.0 / (some ? sw[i] : 1.0);
+            const double mx = sx[i] * inv;
+            const double my = sy[i] * inv;
+            const double cxx = sxx[i] - sx[i] * mx;
+            const double cxy = sxy[i] - sx[i] * my;
+            const double cyy = syy[i] - sy[i] * my;
+            const double cxh = sxh[i] - mx * sh[i];
+            const double cyh = syh[i] - my * sh[i];
+            const double det = cxx * cyy - cxy * cxy;
+            const double product = cxx * cyy;
+            const bool ok = some && det >= 0.05 * (product < 1e-12 ? 1e-12 : product);
+            const double invDet = 1.0 / (ok ? det : 1.0);
+            slopeX[i] = (cyy * cxh - cxy * cyh) * invDet;
+            slopeY[i] = (cxx * cyh - cxy * cxh) * invDet;
+            fitted[i] = ok ? 1 : 0;
+        }
+    }
+};
+
 }  // namespace
 
 Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std::uint8_t> vessels,
@@ -222,49 +265,60 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
         [&](long begin, long end) {
             const int y0 = static_cast<int>(begin);
             const int y1 = static_cast<int>(end);
-            // Rows y0 - 2 .. y1 + 1 (inside the image) summed along x.
-            const int r0 = std::max(0, y0 - kFitRadius);
-            const int r1 = std::min(h, y1 + kFitRadius);
+            // Rows y0 - 2 .. y1 + 1 summed along x; rows outside the image
+            // stay zero, and each row is padded with two zero columns on
+            // either side, so the loops need no bounds (a zero term changes
+            // no sum).
+            const int r0 = y0 - kFitRadius;
+            const int r1 = y1 + kFitRadius;
+            const auto uw = static_cast<std::size_t>(w);
             RowSums sums;
-            sums.resize(static_cast<std::size_t>(r1 - r0) * static_cast<std::size_t>(w));
-            std::vector<double> m(static_cast<std::size_t>(w));
-            std::vector<double> mh(static_cast<std::size_t>(w));
-            for (int r = r0; r < r1; ++r) {
+            sums.resize(static_cast<std::size_t>(r1 - r0) * uw);
+            std::vector<double> m(uw + 2 * kFitRadius, 0.0);
+            std::vector<double> mh(uw + 2 * kFitRadius, 0.0);
+            for (int r = std::max(0, r0); r < std::min(h, r1); ++r) {
                 const float* hr = height.row(r);
                 const std::uint8_t* vr = vessels.row(r);
                 for (int x = 0; x < w; ++x) {
                     const bool fit = vr[x] == 0 && std::isfinite(hr[x]);
-                    m[static_cast<std::size_t>(x)] = fit ? 1.0 : 0.0;
-                    mh[static_cast<std::size_t>(x)] = fit ? static_cast<double>(hr[x]) : 0.0;
+                    m[static_cast<std::size_t>(x + kFitRadius)] = fit ? 1.0 : 0.0;
+                    mh[static_cast<std::size_t>(x + kFitRadius)] =
+                        fit ? static_cast<double>(hr[x]) : 0.0;
                 }
-                const std::size_t base =
-                    static_cast<std::size_t>(r - r0) * static_cast<std::size_t>(w);
-                for (int x = 0; x < w; ++x) {
-                    double a0 = 0.0;
-                    double a1 = 0.0;
-                    double a2 = 0.0;
-                    double h0 = 0.0;
-                    double h1 = 0.0;
-                    const int lo = std::max(-kFitRadius, -x);
-                    const int hi = std::min(kFitRadius, w - 1 - x);
-                    for (int dx = lo; dx <= hi; ++dx) {
-                        const auto q = static_cast<std::size_t>(x + dx);
-                        const double g = kFitTaps[static_cast<std::size_t>(dx + kFitRadius)];
-                        const double gm = g * m[q];
-                        const double gh = g * mh[q];
-                        a0 += gm;
-                        a1 += gm * dx;
-                        a2 += gm * dx * dx;
-                        h0 += gh;
-                        h1 += gh * dx;
+                const std::size_t base = static_cast<std::size_t>(r - r0) * uw;
+                double* a0 = sums.a0.data() + base;
+                double* a1 = sums.a1.data() + base;
+                double* a2 = sums.a2.data() + base;
+                double* h0 = sums.h0.data() + base;
+                double* h1 = sums.h1.data() + base;
+                const double* mp = m.data();
+                const double* hp = mh.data();
+#pragma omp simd
+                for (std::size_t x = 0; x < uw; ++x) {
+                    double s0 = 0.0;
+                    double s1 = 0.0;
+                    double s2 = 0.0;
+                    double t0 = 0.0;
+                    double t1 = 0.0;
+                    for (int k = 0; k <= 2 * kFitRadius; ++k) {
+                        const double dx = k - kFitRadius;
+                        const double g = kFitTaps[static_cast<std::size_t>(k)];
+                        const double gm = g * mp[x + static_cast<std::size_t>(k)];
+                        const double gh = g * hp[x + static_cast<std::size_t>(k)];
+                        s0 += gm;
+                        s1 += gm * dx;
+                        s2 += gm * dx * dx;
+                        t0 += gh;
+                        t1 += gh * dx;
                     }
-                    sums.a0[base + static_cast<std::size_t>(x)] = a0;
-                    sums.a1[base + static_cast<std::size_t>(x)] = a1;
-                    sums.a2[base + static_cast<std::size_t>(x)] = a2;
-                    sums.h0[base + static_cast<std::size_t>(x)] = h0;
-                    sums.h1[base + static_cast<std::size_t>(x)] = h1;
+                    a0[x] = s0;
+                    a1[x] = s1;
+                    a2[x] = s2;
+                    h0[x] = t0;
+                    h1[x] = t1;
                 }
             }
+            RowMoments pm(uw);
             for (int y = y0; y < y1; ++y) {
                 if (stop.stop_requested()) {
                     return;  // parallelFor throws CancelledError
@@ -272,38 +326,50 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                 const float* hr = height.row(y);
                 const std::uint8_t* vr = vessels.row(y);
                 glm::vec4* out = slopes.row(y);
-                const int lo = std::max(-kFitRadius, -y);
-                const int hi = std::min(kFitRadius, h - 1 - y);
                 double rowTotal = 0.0;
-                for (int dy = lo; dy <= hi; ++dy) {
-                    rowTotal += kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
+                for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
+                    if (y + dy >= 0 && y + dy < h) {
+                        rowTotal += kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
+                    }
                 }
+                pm.clear();
+                for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
+                    const double g = kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
+                    const std::size_t base = static_cast<std::size_t>(y + dy - r0) * uw;
+                    const double* a0 = sums.a0.data() + base;
+                    const double* a1 = sums.a1.data() + base;
+                    const double* a2 = sums.a2.data() + base;
+                    const double* h0 = sums.h0.data() + base;
+                    const double* h1 = sums.h1.data() + base;
+                    const double fy = dy;
+#pragma omp simd
+                    for (std::size_t x = 0; x < uw; ++x) {
+                        const double b0 = g * a0[x];
+                        const double b1 = g * a1[x];
+                        const double c0 = g * h0[x];
+                        pm.sw[x] += b0;
+                        pm.sx[x] += b1;
+                        pm.sy[x] += b0 * fy;
+                        pm.sxx[x] += g * a2[x];
+                        pm.sxy[x] += b1 * fy;
+                        pm.syy[x] += b0 * fy * fy;
+                        pm.sh[x] += c0;
+                        pm.sxh[x] += g * h1[x];
+                        pm.syh[x] += c0 * fy;
+                    }
+                }
+                pm.solvePlanes();
                 for (int x = 0; x < w; ++x) {
                     if (vr[x] != 0 || !std::isfinite(hr[x])) {
                         continue;  // vessel or no VSS: (0, 0, 0, 0)
                     }
-                    PlaneMoments pm;
-                    for (int dy = lo; dy <= hi; ++dy) {
-                        const double g = kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
-                        const std::size_t i =
-                            static_cast<std::size_t>(y + dy - r0) * static_cast<std::size_t>(w) +
-                            static_cast<std::size_t>(x);
-                        const double a0 = g * sums.a0[i];
-                        const double a1 = g * sums.a1[i];
-                        const double h0 = g * sums.h0[i];
-                        pm.sw += a0;
-                        pm.sx += a1;
-                        pm.sy += a0 * dy;
-                        pm.sxx += g * sums.a2[i];
-                        pm.sxy += a1 * dy;
-                        pm.syy += a0 * dy * dy;
-                        pm.sh += h0;
-                        pm.sxh += g * sums.h1[i];
-                        pm.syh += h0 * dy;
+                    const auto i = static_cast<std::size_t>(x);
+                    const double total = columnTotal[i] * rowTotal;
+                    const double support = total > 0.0 ? pm.sw[i] / total : 0.0;
+                    std::optional<glm::dvec2> fit;
+                    if (pm.fitted[i] != 0) {
+                        fit = glm::dvec2(pm.slopeX[i], pm.slopeY[i]);
                     }
-                    const double total = columnTotal[static_cast<std::size_t>(x)] * rowTotal;
-                    const double support = total > 0.0 ? pm.sw / total : 0.0;
-                    std::optional<glm::dvec2> fit = planeSlope(pm);
                     if (support < 0.999) {
                         // Next to a contour: the wider window over the staircase.
                         if (const std::optional<glm::dvec2> wide =
