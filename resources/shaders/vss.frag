@@ -170,10 +170,20 @@ void main() {
         fragColor = vec4(0.0);
         return;
     }
-    vec2 grad = vec2(derivative(heightAt(p - ivec2(1, 0), size), z, heightAt(p + ivec2(1, 0), size)),
-                     derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
     float support = 1.0;
     bool vessel = isVessel(p);
+    // The one-pixel central difference: the slope on vessel pixels, and the
+    // per-pixel fit's fallback. The quick and the slope-texture variants
+    // take void pixels' slopes elsewhere, so they read these four heights
+    // only for vessel pixels (llvmpipe skips a branch no pixel of a block takes).
+    vec2 grad = vec2(0.0);
+#if defined(QUICK_NORMALS) || defined(SLOPE_TEXTURE)
+    if (vessel)
+#endif
+    {
+        grad = vec2(derivative(heightAt(p - ivec2(1, 0), size), z, heightAt(p + ivec2(1, 0), size)),
+                    derivative(heightAt(p - ivec2(0, 1), size), z, heightAt(p + ivec2(0, 1), size)));
+    }
 #ifdef SLOPE_TEXTURE
     vec4 fitted = vec4(0.0, 0.0, 1.0, 1.0);
 #endif
