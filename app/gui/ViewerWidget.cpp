@@ -63,6 +63,8 @@ class LegendOverlay : public QWidget {
 };
 
 ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
+    // The closures are checked by startClosureCheck() on a worker thread.
+    renderer_.meshRenderer().setClosureCheck(render::MeshRenderer::ClosureCheck::Deferred);
     legendOverlay_ = new LegendOverlay(this);
     legendOverlay_->setGeometry(rect());
     settleTimer_ = new QTimer(this);
@@ -99,6 +101,7 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
 ViewerWidget::~ViewerWidget() {
     cancelPreviewGeometry();
     previewFuture_.waitForFinished();
+    closureFuture_.waitForFinished();
     // ~QOpenGLWidget destroys the context after this body, when this object is
     // only a QOpenGLWidget and renderer_ is gone: its aboutToBeDestroyed must
     // not call releaseGl again (UBSan: downcast of a QOpenGLWidget, asan preset).
@@ -166,6 +169,7 @@ void ViewerWidget::releaseGl() {
 void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     scene_ = std::move(scene);
     startPreviewGeometry();
+    startClosureCheck();
     ++sceneRevision_;
     sceneDirty_ = true;
     framesWithScene_ = 0;
@@ -200,7 +204,49 @@ void ViewerWidget::cancelPreviewGeometry() {
     previewStop_.request_stop();
     previewStop_ = std::stop_source();
     previewScenes_.clear();
+    previewClosures_.clear();
     previewDirty_ = true;
+}
+
+namespace {
+
+/// io::surfaceClosure of every mesh; Open for a mesh it refuses (bad
+/// indices: the upload reports those).
+std::vector<io::SurfaceClosure> closuresOf(const io::Scene& scene) {
+    std::vector<io::SurfaceClosure> closures;
+    closures.reserve(scene.meshes.size());
+    for (const io::Mesh& mesh : scene.meshes) {
+        try {
+            closures.push_back(io::surfaceClosure(mesh));
+        } catch (const vv::Error&) {
+            closures.push_back(io::SurfaceClosure::Open);
+        }
+    }
+    return closures;
+}
+
+}  // namespace
+
+void ViewerWidget::startClosureCheck() {
+    sceneClosures_.clear();
+    closuresKnown_ = false;
+    closuresDirty_ = false;
+    if (!scene_) {
+        return;
+    }
+    const std::shared_ptr<const io::Scene> scene = scene_;
+    closureFuture_ = QtConcurrent::run([scene] { return closuresOf(*scene); });
+    auto* watcher = new QFutureWatcher<Closures>(this);
+    connect(watcher, &QFutureWatcher<Closures>::finished, this, [this, watcher, scene] {
+        watcher->deleteLater();
+        if (scene != scene_) {
+            return;  // checked for an older scene
+        }
+        sceneClosures_ = watcher->result();
+        closuresKnown_ = true;
+        closuresDirty_ = true;  // the next frame culls; this one's pixels stay right
+    });
+    watcher->setFuture(closureFuture_);
 }
 
 std::vector<std::size_t> ViewerWidget::previewLevelTriangles() const {
@@ -224,18 +270,22 @@ void ViewerWidget::startPreviewGeometry() {
     const std::shared_ptr<const io::Scene> scene = scene_;
     const std::size_t budget = previewTriangles_;
     previewFuture_ = QtConcurrent::run(
-        [scene, budget, worthIt, stop = previewStop_.get_token()]() -> PreviewScenes {
+        [scene, budget, worthIt, stop = previewStop_.get_token()]() -> PreviewGeometry {
             try {
                 // The budget, then a third of it from that copy (cheap): the
                 // renderer draws the coarser one into small moving frames.
-                PreviewScenes levels;
+                // Decimation may open a surface, so each copy is checked.
+                PreviewGeometry levels;
                 auto fine = std::make_shared<const io::Scene>(
                     io::simplifiedScene(*scene, budget, Progress({}, stop)));
-                levels.push_back(fine);
+                levels.scenes.push_back(fine);
+                levels.closures.push_back(closuresOf(*fine));
                 const std::size_t coarse = budget / kPreviewLevelRatio;
                 if (worthIt(fine->triangleCount(), coarse)) {
-                    levels.push_back(std::make_shared<const io::Scene>(
-                        io::simplifiedScene(*fine, coarse, Progress({}, stop))));
+                    auto coarser = std::make_shared<const io::Scene>(
+                        io::simplifiedScene(*fine, coarse, Progress({}, stop)));
+                    levels.closures.push_back(closuresOf(*coarser));
+                    levels.scenes.push_back(std::move(coarser));
                 }
                 return levels;
             } catch (const CancelledError&) {
@@ -247,14 +297,15 @@ void ViewerWidget::startPreviewGeometry() {
                 return {};
             }
         });
-    auto* watcher = new QFutureWatcher<PreviewScenes>(this);
-    connect(watcher, &QFutureWatcher<PreviewScenes>::finished, this, [this, watcher, scene] {
+    auto* watcher = new QFutureWatcher<PreviewGeometry>(this);
+    connect(watcher, &QFutureWatcher<PreviewGeometry>::finished, this, [this, watcher, scene] {
         watcher->deleteLater();
-        PreviewScenes previews = watcher->result();
-        if (previews.empty() || scene != scene_) {
+        PreviewGeometry previews = watcher->result();
+        if (previews.scenes.empty() || scene != scene_) {
             return;  // cancelled, failed, or built for an older scene
         }
-        previewScenes_ = std::move(previews);
+        previewScenes_ = std::move(previews.scenes);
+        previewClosures_ = std::move(previews.closures);
         previewDirty_ = true;
         emit previewGeometryReady();
     });
@@ -583,10 +634,18 @@ void ViewerWidget::paintGL() {
             sceneDirty_ = false;
             styleDirty_ = true;
             previewDirty_ = true;
+            closuresDirty_ = closuresKnown_;  // the upload left every mesh Open
         }
         if (previewDirty_) {
             meshes.setPreviewScenes(previewScenes_);
+            for (std::size_t level = 0; level < previewClosures_.size(); ++level) {
+                meshes.setSurfaceClosures(level + 1, previewClosures_[level]);
+            }
             previewDirty_ = false;
+        }
+        if (closuresDirty_ && scene_) {
+            meshes.setSurfaceClosures(0, sceneClosures_);
+            closuresDirty_ = false;
         }
         if (styleDirty_) {
             meshes.setStyle(style_);

@@ -16,6 +16,7 @@
 
 #include "vv/core/Image.h"
 #include "vv/io/Mesh.h"
+#include "vv/io/MeshTopology.h"
 #include "vv/io/Volume.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
@@ -185,6 +186,10 @@ class ViewerWidget : public QOpenGLWidget {
     }
     /// MeshRenderer::setBackFaceCulling (on by default); off for comparisons.
     void setBackFaceCulling(bool on) noexcept { renderer_.meshRenderer().setBackFaceCulling(on); }
+    /// True once the closures of the current scene's meshes (checked on a
+    /// worker thread after setScene()) are known; until then every mesh is
+    /// drawn two-sided.
+    [[nodiscard]] bool surfaceClosuresKnown() const noexcept { return closuresKnown_; }
     /// How many meshes the last frame's G-buffer drew with back-face culling.
     [[nodiscard]] std::size_t lastCulledMeshes() const noexcept {
         return renderer_.meshRenderer().lastCulledMeshes();
@@ -332,6 +337,8 @@ class ViewerWidget : public QOpenGLWidget {
     void settle();
     /// Starts building the simplified geometry of scene_ (cancelling an older build).
     void startPreviewGeometry();
+    /// Starts io::surfaceClosure of scene_'s meshes on a worker thread.
+    void startClosureCheck();
     void cancelPreviewGeometry();
     /// What the next frame renders with (preview settings while moving).
     [[nodiscard]] render::FrameSettings frameSettings() const;
@@ -352,13 +359,26 @@ class ViewerWidget : public QOpenGLWidget {
     std::shared_ptr<const io::Volume> volume_;  ///< ray cast after the meshes, or null
     float isoValue_ = 0.0F;
     using PreviewScenes = std::vector<std::shared_ptr<const io::Scene>>;
+    /// One io::SurfaceClosure per mesh of a scene.
+    using Closures = std::vector<io::SurfaceClosure>;
+    /// What the background job makes: the simplified copies and their closures.
+    struct PreviewGeometry {
+        PreviewScenes scenes;
+        std::vector<Closures> closures;
+    };
     /// The second simplified level has previewTriangles_ / this many triangles.
     static constexpr std::size_t kPreviewLevelRatio = 3;
-    PreviewScenes previewScenes_;  ///< simplified copies of scene_, finest first; or none
-    bool previewDirty_ = false;    ///< previewScenes_ not uploaded yet
+    PreviewScenes previewScenes_;            ///< simplified copies of scene_, finest first; or none
+    std::vector<Closures> previewClosures_;  ///< theirs, same order
+    bool previewDirty_ = false;              ///< previewScenes_ not uploaded yet
     std::size_t previewTriangles_ = 60000;
     std::stop_source previewStop_;
-    QFuture<PreviewScenes> previewFuture_;
+    QFuture<PreviewGeometry> previewFuture_;
+    /// scene_'s closures (back-face culling), checked on a worker thread.
+    Closures sceneClosures_;
+    bool closuresKnown_ = false;  ///< sceneClosures_ belong to scene_
+    bool closuresDirty_ = false;  ///< known but not handed to the renderer yet
+    QFuture<Closures> closureFuture_;
     glm::vec3 background_{0.13F, 0.14F, 0.16F};
     bool sceneDirty_ = false;
     bool autoFit_ = true;  ///< refit on resize until the user moves the camera

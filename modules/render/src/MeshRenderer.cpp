@@ -523,7 +523,9 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
             target.back().center = 0.5F * (target.back().bounds.min + target.back().bounds.max);
         }
         target.back().source = &mesh;
-        target.back().closure = io::surfaceClosure(mesh);
+        if (closureCheck_ == ClosureCheck::Now) {
+            target.back().closure = io::surfaceClosure(mesh);
+        }
         f.glBindVertexArray(0);
         f.glBindBuffer(GL_ARRAY_BUFFER, 0);
         throwOnGlError(f, "uploading a mesh");
@@ -1086,6 +1088,35 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     f.glBindVertexArray(0);
     f.glUseProgram(0);
     throwOnGlError(f, "drawing the G-buffer");
+}
+
+void MeshRenderer::setSurfaceClosures(std::size_t level,
+                                      const std::vector<io::SurfaceClosure>& closures) {
+    if (level > previews_.size()) {
+        throw InvalidArgumentError("no geometry level " + std::to_string(level) + " (" +
+                                   std::to_string(previews_.size()) + " preview levels)");
+    }
+    std::vector<GpuMesh>& meshes = level == 0 ? meshes_ : previews_[level - 1].meshes;
+    if (closures.size() != meshes.size()) {
+        throw InvalidArgumentError("level " + std::to_string(level) + " has " +
+                                   std::to_string(meshes.size()) + " meshes, not " +
+                                   std::to_string(closures.size()));
+    }
+    for (std::size_t i = 0; i < meshes.size(); ++i) {
+        meshes[i].closure = closures[i];
+    }
+}
+
+std::optional<io::SurfaceClosure> MeshRenderer::surfaceClosure(std::size_t level,
+                                                               std::size_t mesh) const noexcept {
+    if (level > previews_.size()) {
+        return std::nullopt;
+    }
+    const std::vector<GpuMesh>& meshes = level == 0 ? meshes_ : previews_[level - 1].meshes;
+    if (mesh >= meshes.size()) {
+        return std::nullopt;
+    }
+    return meshes[mesh].closure;
 }
 
 void MeshRenderer::cullFor(const GpuMesh& mesh, const glm::mat4& view,
