@@ -813,8 +813,9 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             static_cast<unsigned long long>(countersAfter.completed - countersBefore.completed),
             static_cast<unsigned long long>(countersAfter.cancelled - countersBefore.cancelled));
         std::printf(
-            "[bench]   release -> exact VSS: %.0f ms of CPU time in this process (%d cores)\n",
-            exactCpuMs, QThread::idealThreadCount());
+            "[bench]   release -> exact VSS: %.0f ms of CPU time in this process (%d cores); "
+            "meshes culled in its G-buffer %zu\n",
+            exactCpuMs, QThread::idealThreadCount(), viewer.lastCulledMeshes());
         if (passTimes) {
             moving.print("moving");
             std::printf("[bench]   settle (exact solve requested / G-buffer prepared): %.1f ms\n",
