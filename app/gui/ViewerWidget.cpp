@@ -18,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <exception>
 #include <limits>
 #include <utility>
 
@@ -210,16 +211,16 @@ void ViewerWidget::cancelPreviewGeometry() {
 
 namespace {
 
-/// io::surfaceClosure of every mesh; Open for a mesh it refuses (bad
-/// indices: the upload reports those).
+/// io::surfaceClosure of every mesh; Open (drawn two-sided, always right)
+/// for a mesh it refuses (bad indices: the upload reports those) or has no
+/// memory to check.
 std::vector<io::SurfaceClosure> closuresOf(const io::Scene& scene) {
-    std::vector<io::SurfaceClosure> closures;
-    closures.reserve(scene.meshes.size());
-    for (const io::Mesh& mesh : scene.meshes) {
+    std::vector<io::SurfaceClosure> closures(scene.meshes.size(), io::SurfaceClosure::Open);
+    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         try {
-            closures.push_back(io::surfaceClosure(mesh));
-        } catch (const vv::Error&) {
-            closures.push_back(io::SurfaceClosure::Open);
+            closures[i] = io::surfaceClosure(scene.meshes[i]);
+        } catch (const std::exception&) {
+            // stays Open
         }
     }
     return closures;
