@@ -64,8 +64,6 @@ class LegendOverlay : public QWidget {
 };
 
 ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
-    // The closures are checked by startClosureCheck() on a worker thread.
-    renderer_.meshRenderer().setClosureCheck(render::MeshRenderer::ClosureCheck::Deferred);
     legendOverlay_ = new LegendOverlay(this);
     legendOverlay_->setGeometry(rect());
     settleTimer_ = new QTimer(this);
@@ -211,19 +209,14 @@ void ViewerWidget::cancelPreviewGeometry() {
 
 namespace {
 
-/// io::surfaceClosure of every mesh; Open (drawn two-sided, always right)
-/// for a mesh it refuses (bad indices: the upload reports those) or has no
-/// memory to check.
+/// io::surfaceClosures, or every mesh Open (drawn two-sided, always right)
+/// when the check fails (bad indices: the upload reports those; no memory).
 std::vector<io::SurfaceClosure> closuresOf(const io::Scene& scene) {
-    std::vector<io::SurfaceClosure> closures(scene.meshes.size(), io::SurfaceClosure::Open);
-    for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
-        try {
-            closures[i] = io::surfaceClosure(scene.meshes[i]);
-        } catch (const std::exception&) {
-            // stays Open
-        }
+    try {
+        return io::surfaceClosures(scene);
+    } catch (const std::exception&) {
+        return std::vector<io::SurfaceClosure>(scene.meshes.size(), io::SurfaceClosure::Open);
     }
-    return closures;
 }
 
 }  // namespace
@@ -668,7 +661,6 @@ void ViewerWidget::paintGL() {
             // window's composed frame (frameSwapped), sets the size of the
             // next camera move's frames. Frames in between (a preview solve
             // arrived) keep this size: the preview was solved at it.
-            context()->functions()->glFinish();
             budgetFrameStart_ = paintStart;
         }
         if (cameraMoved_) {

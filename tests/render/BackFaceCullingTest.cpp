@@ -210,6 +210,26 @@ TEST_F(CulledRenderTest, TheDemoTreeFromOutsideIsCulledAndLooksTheSame) {
     (void)expectSame(scene, options, "demo_close");
 }
 
+TEST_F(CulledRenderTest, EachSceneIsCulledByItsOwnClosures) {
+    // One renderer, one mesh each: the closed tube, the same tube open (its
+    // caps removed: the inside shows through the ends), then closed again.
+    // Closures kept from the previous scene would cull the open one.
+    io::Scene closed;
+    closed.meshes.push_back(cappedTube(2.0F, -10.0F, 20.0F, 0.0F, 0.0F));
+    io::Scene open = closed;
+    open.meshes[0].indices.resize(open.meshes[0].indices.size() - 6 * 24);
+    ASSERT_EQ(io::surfaceClosure(open.meshes[0]), io::SurfaceClosure::Open);
+    auto renderer = makeRenderer();
+    ASSERT_TRUE(renderer);
+    const OffscreenOptions options = test::exactOptions(120, 90);
+    (void)renderer->renderDepth(closed, options);
+    EXPECT_EQ(renderer->lastCulledMeshes(), 1U);
+    (void)renderer->renderDepth(open, options);
+    EXPECT_EQ(renderer->lastCulledMeshes(), 0U);
+    (void)renderer->renderDepth(closed, options);
+    EXPECT_EQ(renderer->lastCulledMeshes(), 1U);
+}
+
 TEST_F(CulledRenderTest, InsideAClosedTubeNothingIsCulledAndTheWallsShow) {
     io::Scene scene;
     scene.meshes.push_back(cappedTube(2.0F, -10.0F, 20.0F, 0.0F, 0.0F));

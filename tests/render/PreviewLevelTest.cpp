@@ -12,6 +12,7 @@
 #include "RenderTestUtil.h"
 #include "vv/core/Error.h"
 #include "vv/io/MeshSimplify.h"
+#include "vv/io/MeshTopology.h"
 #include "vv/render/MeshRenderer.h"
 
 namespace vv::render {
@@ -110,26 +111,22 @@ TEST_F(PreviewScenesTest, ACopyWithAnotherMeshCountIsRefusedAndNoneIsKept) {
     EXPECT_FALSE(meshes_.hasPreviewScene());
 }
 
-TEST_F(PreviewScenesTest, ClosuresAreCheckedAtUploadOrHandedInPerLevel) {
+TEST_F(PreviewScenesTest, ClosuresAreHandedInPerLevelAndEveryUploadStartsOpen) {
     // One closed cube (outward) and one open tube.
     auto scene = std::make_shared<io::Scene>();
     scene->meshes.push_back(vv::test::cube(glm::vec3(0.0F), 2.0F));
     scene->meshes.push_back(test::makeTube(1.0F, -10.0F, 20.0F, 3.0F, 0.0F, 24, 24));
-    meshes_.setScene(scene);  // ClosureCheck::Now by default
-    EXPECT_EQ(meshes_.surfaceClosure(0, 0), io::SurfaceClosure::ClosedOutward);
-    EXPECT_EQ(meshes_.surfaceClosure(0, 1), io::SurfaceClosure::Open);
-    EXPECT_EQ(meshes_.surfaceClosure(0, 2), std::nullopt);
-    EXPECT_EQ(meshes_.surfaceClosure(1, 0), std::nullopt);
-
-    // Deferred: everything Open (two-sided) until the closures come in.
-    meshes_.setClosureCheck(MeshRenderer::ClosureCheck::Deferred);
+    // Everything Open (two-sided) until the closures come in.
     meshes_.setScene(scene);
     EXPECT_EQ(meshes_.surfaceClosure(0, 0), io::SurfaceClosure::Open);
+    EXPECT_EQ(meshes_.surfaceClosure(0, 2), std::nullopt);
+    EXPECT_EQ(meshes_.surfaceClosure(1, 0), std::nullopt);
     auto copy = std::make_shared<const io::Scene>(*scene);
     meshes_.setPreviewScene(copy);
     EXPECT_EQ(meshes_.surfaceClosure(1, 0), io::SurfaceClosure::Open);
-    const std::vector<io::SurfaceClosure> closures{io::SurfaceClosure::ClosedOutward,
-                                                   io::SurfaceClosure::Open};
+    const std::vector<io::SurfaceClosure> closures = io::surfaceClosures(*scene);
+    ASSERT_EQ(closures, (std::vector<io::SurfaceClosure>{io::SurfaceClosure::ClosedOutward,
+                                                         io::SurfaceClosure::Open}));
     meshes_.setSurfaceClosures(0, closures);
     meshes_.setSurfaceClosures(1, closures);
     EXPECT_EQ(meshes_.surfaceClosure(0, 0), io::SurfaceClosure::ClosedOutward);

@@ -141,4 +141,13 @@ SurfaceClosure surfaceClosure(const Mesh& mesh) {
     return SurfaceClosure::Open;
 }
 
+std::vector<SurfaceClosure> surfaceClosures(const Scene& scene) {
+    std::vector<SurfaceClosure> closures;
+    closures.reserve(scene.meshes.size());
+    for (const Mesh& mesh : scene.meshes) {
+        closures.push_back(surfaceClosure(mesh));
+    }
+    return closures;
+}
+
 }  // namespace vv::io

@@ -522,10 +522,7 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
         if (!target.back().bounds.empty()) {
             target.back().center = 0.5F * (target.back().bounds.min + target.back().bounds.max);
         }
-        target.back().source = &mesh;
-        if (closureCheck_ == ClosureCheck::Now) {
-            target.back().closure = io::surfaceClosure(mesh);
-        }
+        target.back().source = &mesh;  // Open until setSurfaceClosures()
         f.glBindVertexArray(0);
         f.glBindBuffer(GL_ARRAY_BUFFER, 0);
         throwOnGlError(f, "uploading a mesh");

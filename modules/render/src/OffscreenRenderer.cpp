@@ -192,9 +192,15 @@ Camera OffscreenRenderer::setUpScene(const io::Scene& scene, const OffscreenOpti
     // The shared pointer does not own the scene: it only lives for this call.
     const std::shared_ptr<const io::Scene> view(std::shared_ptr<const io::Scene>(), &scene);
     MeshRenderer& meshes = renderer_->meshRenderer();
-    meshes.setScene(view);
+    meshes.setScene(view);  // checks the indices before surfaceClosures reads them
+    const std::uint64_t fingerprint = sceneFingerprint(scene);
+    if (!closures_ || closures_->first != fingerprint) {
+        // Once per scene content, not once per render (tiles, report views).
+        closures_.emplace(fingerprint, io::surfaceClosures(scene));
+    }
+    meshes.setSurfaceClosures(0, closures_->second);
     meshes.setStyle(options.style);
-    renderer_->setSceneRevision(sceneFingerprint(scene));
+    renderer_->setSceneRevision(fingerprint);
     // Volume depth source: ray cast after the meshes; its box joins the bounds.
     renderer_->setVolume(options.volume, options.isoValue);
     return camera;

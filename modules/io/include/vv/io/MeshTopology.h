@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <vector>
+
 #include "vv/io/Mesh.h"
 
 namespace vv::io {
@@ -28,5 +30,8 @@ enum class SurfaceClosure {
 /// Throws InvalidArgumentError (naming the mesh's source) for an index out
 /// of range or an index count that is not a multiple of 3.
 [[nodiscard]] SurfaceClosure surfaceClosure(const Mesh& mesh);
+
+/// surfaceClosure() of each of the scene's meshes, in order. Throws like it.
+[[nodiscard]] std::vector<SurfaceClosure> surfaceClosures(const Scene& scene);
 
 }  // namespace vv::io

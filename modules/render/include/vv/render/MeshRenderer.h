@@ -263,19 +263,13 @@ class MeshRenderer {
     /// of every triangle (for comparisons and benchmarks).
     void setBackFaceCulling(bool enabled) noexcept { backFaceCulling_ = enabled; }
     [[nodiscard]] bool backFaceCulling() const noexcept { return backFaceCulling_; }
-    /// When setScene() and setPreviewScenes() learn which meshes are closed
-    /// (io::surfaceClosure, O(triangles): ~25 ms for 300k triangles here).
-    enum class ClosureCheck {
-        Now,       ///< computed during the upload (the default)
-        Deferred,  ///< left Open (drawn two-sided) until setSurfaceClosures()
-    };
-    /// For the following setScene() / setPreviewScenes() calls; the viewer
-    /// defers the check to a worker thread, so the GUI thread only uploads.
-    void setClosureCheck(ClosureCheck check) noexcept { closureCheck_ = check; }
     /// The closures of geometry level `level` (0 = the scene, k = preview
-    /// level k), one per mesh in order, e.g. computed on another thread from
-    /// the same scene. Throws InvalidArgumentError for a level that does not
-    /// exist or a count that differs from the level's meshes.
+    /// level k), one per mesh in order (io::surfaceClosures of the same
+    /// scene, e.g. computed on another thread: O(triangles), ~25 ms for 300k
+    /// here). setScene() and setPreviewScenes() leave their meshes Open
+    /// (drawn two-sided, no culling) until then. Throws InvalidArgumentError
+    /// for a level that does not exist or a count that differs from the
+    /// level's meshes.
     void setSurfaceClosures(std::size_t level, const std::vector<io::SurfaceClosure>& closures);
     /// The closure culling uses for mesh `mesh` of level `level`; nullopt when
     /// there is no such mesh.
@@ -416,7 +410,6 @@ class MeshRenderer {
     bool objectsStale_ = true;
     std::uint64_t shadingRevision_ = 0;
     bool backFaceCulling_ = true;
-    ClosureCheck closureCheck_ = ClosureCheck::Now;
     std::size_t lastCulledMeshes_ = 0;
     Lighting lighting_;
     std::optional<colormaps::ColorMap> uploadedMap_;

@@ -2,13 +2,16 @@
 #pragma once
 
 #include <QImage>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vv/io/Mesh.h"
+#include "vv/io/MeshTopology.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
@@ -165,6 +168,8 @@ class OffscreenRenderer {
     std::shared_ptr<GlTexture> output_;
     std::string description_;
     std::optional<std::pair<float, float>> lastRange_;
+    /// The last scene's sceneFingerprint and io::surfaceClosures.
+    std::optional<std::pair<std::uint64_t, std::vector<io::SurfaceClosure>>> closures_;
 };
 
 }  // namespace vv::render
