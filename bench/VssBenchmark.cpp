@@ -268,19 +268,19 @@ ErrorStats compareToReference(ImageView<const float> result, ImageView<const flo
     return stats;
 }
 
-Image<float> benchmarkDepth(const io::Scene& scene, render::ViewPreset view, int width,
+Image<float> benchmarkDepth(const scene::Scene& scene, render::ViewPreset view, int width,
                             int height) {
     const render::Camera camera = render::presetCamera(scene, width, height, view);
     return render::rasterizeDepth(scene, camera);
 }
 
-VssBenchmarkResult runVssBenchmark(const io::Scene& scene, const VssBenchmarkOptions& options) {
+VssBenchmarkResult runVssBenchmark(const scene::Scene& scene, const VssBenchmarkOptions& options) {
     validate(options);
     VssBenchmarkResult result;
     result.width = options.width;
     result.height = options.height;
     result.threads = workerCount();
-    for (const io::Mesh& mesh : scene.meshes) {
+    for (const scene::Mesh& mesh : scene.meshes) {
         result.triangles += mesh.triangleCount();
         result.sceneName += (result.sceneName.empty() ? "" : " + ") + mesh.name;
     }

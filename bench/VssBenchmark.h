@@ -14,8 +14,8 @@
 #include <vector>
 
 #include "vv/core/Image.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/ViewPresets.h"
+#include "vv/scene/Mesh.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::bench {
@@ -114,7 +114,7 @@ struct VssBenchmarkResult {
 /// The depth image of `scene` in `view` at width × height, through
 /// render::presetCamera (vertex fit) and render::rasterizeDepth: linear depth,
 /// +Inf background. Throws as those do.
-[[nodiscard]] Image<float> benchmarkDepth(const io::Scene& scene, render::ViewPreset view,
+[[nodiscard]] Image<float> benchmarkDepth(const scene::Scene& scene, render::ViewPreset view,
                                           int width, int height);
 
 /// Runs the benchmark. For every view and p the reference solver runs first
@@ -125,7 +125,7 @@ struct VssBenchmarkResult {
 /// Throws InvalidArgumentError for bad options (sizes, runs < 1, no view /
 /// power / solver, duplicate labels, p not finite or <= 0), IoError when a
 /// depth PFM cannot be written, CancelledError when stopped.
-[[nodiscard]] VssBenchmarkResult runVssBenchmark(const io::Scene& scene,
+[[nodiscard]] VssBenchmarkResult runVssBenchmark(const scene::Scene& scene,
                                                  const VssBenchmarkOptions& options);
 
 /// The rows as a GitHub Markdown table (times in ms, errors in normalised

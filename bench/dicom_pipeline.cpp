@@ -4,7 +4,7 @@
 // cancellable, without holding more than ~2× the volume in memory"): header
 // scan, volume assembly, vessel segmentation, surface extraction. Prints a
 // Markdown table (docs/benchmarks/dicom.md). The series is the voxelised demo
-// tree (vv::io::generateDemoCt) written once with DCMTK and kept.
+// tree (vv::demo::generateDemoCt) written once with DCMTK and kept.
 //
 //   dicom_pipeline [--dims 512,512,600] [--dir DIR] [--triangles N]
 //
@@ -23,10 +23,11 @@
 
 #include "vv/core/Error.h"
 #include "vv/core/ProcessMemory.h"
-#include "vv/io/DemoCtSeries.h"
-#include "vv/io/Dicom.h"
-#include "vv/io/VolumeSegmentation.h"
-#include "vv/io/VolumeSurface.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/segmentation/VolumeSegmentation.h"
+#include "vv/segmentation/VolumeSurface.h"
 
 namespace {
 
@@ -94,18 +95,18 @@ int run(int argc, char** argv) {
     if (!fs::exists(dir / "complete")) {
         fs::remove_all(dir);
         rows.push_back(measure("write series (once)", [&] {
-            vv::io::DemoCtOptions options;
+            vv::demo::DemoCtOptions options;
             options.dims = dims;
-            const vv::io::DemoCt ct = vv::io::generateDemoCt(options);
-            (void)vv::io::writeCtSeries(dir, ct.volume);
+            const vv::demo::DemoCt ct = vv::demo::generateDemoCt(options);
+            (void)vv::dicom::writeCtSeries(dir, ct.volume);
             std::ofstream(dir / "complete") << "ok\n";
             return std::string("voxelised demo tree");
         }));
     }
 
-    vv::io::DicomScanResult scan;
+    vv::dicom::DicomScanResult scan;
     rows.push_back(measure("scan headers", [&] {
-        scan = vv::io::scanDicom(dir);
+        scan = vv::dicom::scanDicom(dir);
         return std::to_string(scan.allSeries().size()) + " series";
     }));
     if (scan.allSeries().size() != 1) {
@@ -113,26 +114,27 @@ int run(int argc, char** argv) {
     }
     std::size_t progressCalls = 0;
     const vv::Progress progress([&](double, std::string_view) { ++progressCalls; }, {});
-    vv::io::DicomVolume loaded;
+    vv::dicom::DicomVolume loaded;
     double volumeMb = 0.0;
     rows.push_back(measure("load volume", [&] {
-        loaded = vv::io::loadDicomSeries(*scan.allSeries()[0], {}, progress);
+        loaded = vv::dicom::loadDicomSeries(*scan.allSeries()[0], {}, progress);
         volumeMb = static_cast<double>(loaded.volume.byteSize()) / (1024.0 * 1024.0);
         char note[128];
         std::snprintf(note, sizeof note, "%.0f MiB volume, %zu progress reports", volumeMb,
                       progressCalls);
         return std::string(note);
     }));
-    vv::io::Segmentation segmentation;
+    vv::segmentation::Segmentation segmentation;
     rows.push_back(measure("segment (CTA default, bone removal)", [&] {
-        segmentation = vv::io::segmentVessels(loaded.volume);
+        segmentation = vv::segmentation::segmentVessels(loaded.volume);
         return std::to_string(segmentation.labelMap.components.size()) + " component(s) of " +
                std::to_string(segmentation.componentsFound);
     }));
     rows.push_back(measure("surface (flying edges, smoothing, decimation)", [&] {
-        vv::io::SurfaceOptions options;
+        vv::segmentation::SurfaceOptions options;
         options.targetTriangles = triangles;
-        const vv::io::Mesh mesh = vv::io::extractSurface(segmentation.labelMap, {}, options);
+        const vv::scene::Mesh mesh =
+            vv::segmentation::extractSurface(segmentation.labelMap, {}, options);
         return std::to_string(mesh.triangleCount()) + " triangles";
     }));
 

@@ -9,8 +9,8 @@
 #include <system_error>
 
 #include "vv/core/Error.h"
-#include "vv/io/Dicom.h"
-#include "vv/io/MeshLoader.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/meshio/MeshLoader.h"
 #include "vv/vss/Pfm.h"
 
 namespace vv::fuzz {
@@ -82,15 +82,15 @@ std::filesystem::path writeScratch(std::string_view name, Bytes bytes) {
 
 Outcome feedMesh(Bytes bytes, std::string_view extension) {
     const std::filesystem::path file = writeScratch("input" + std::string(extension), bytes);
-    return run(file, [&] { static_cast<void>(io::loadMesh(file)); });
+    return run(file, [&] { static_cast<void>(meshio::loadMesh(file)); });
 }
 
 Outcome feedDicom(Bytes bytes) {
     const std::filesystem::path file = writeScratch("input.dcm", bytes);
     return run(file, [&] {
-        io::DicomLoadOptions options;
+        dicom::DicomLoadOptions options;
         options.memoryLimitBytes = 256ULL << 20U;
-        static_cast<void>(io::loadDicomVolume(file, {}, options));
+        static_cast<void>(dicom::loadDicomVolume(file, {}, options));
     });
 }
 

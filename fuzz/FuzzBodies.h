@@ -38,11 +38,11 @@ struct Outcome {
 [[nodiscard]] std::filesystem::path writeScratch(std::string_view name, Bytes bytes);
 
 /// Mesh targets: the bytes as a file with `extension` (".stl", ".obj",
-/// ".ply", ".vtp", ".vtk") through vv::io::loadMesh (the preflight checks,
+/// ".ply", ".vtp", ".vtk") through vv::meshio::loadMesh (the preflight checks,
 /// then the VTK reader and the conversion), as the application loads it.
 [[nodiscard]] Outcome feedMesh(Bytes bytes, std::string_view extension);
 
-/// dicom: the bytes as a .dcm file through vv::io::loadDicomVolume (scan the
+/// dicom: the bytes as a .dcm file through vv::dicom::loadDicomVolume (scan the
 /// headers, then decode the pixels of its series) with a 256 MiB memory limit.
 [[nodiscard]] Outcome feedDicom(Bytes bytes);
 

@@ -16,9 +16,10 @@
 #include <utility>
 
 #include "vv/core/Image.h"
-#include "vv/io/DemoCtSeries.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshWriter.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/meshio/MeshWriter.h"
 #include "vv/vss/Pfm.h"
 
 namespace fs = std::filesystem;
@@ -34,12 +35,12 @@ void writeBytes(const fs::path& file, const std::string& bytes) {
 }
 
 void dicomSeeds(const fs::path& dir) {
-    vv::io::DemoCtOptions options;
+    vv::demo::DemoCtOptions options;
     options.dims = {8, 8, 8};
     options.generations = 1;
-    const vv::io::DemoCt ct = vv::io::generateDemoCt(options);
+    const vv::demo::DemoCt ct = vv::demo::generateDemoCt(options);
     const fs::path series = dir / "series";
-    static_cast<void>(vv::io::writeCtSeries(series, ct.volume));
+    static_cast<void>(vv::dicom::writeCtSeries(series, ct.volume));
     // Two slices are enough: every slice has the same structure.
     fs::copy_file(series / "slice0.dcm", dir / "demo-slice0.dcm",
                   fs::copy_options::overwrite_existing);
@@ -49,10 +50,10 @@ void dicomSeeds(const fs::path& dir) {
 }
 
 void vtpSeeds(const fs::path& dir) {
-    vv::io::DemoTreeOptions options;
+    vv::demo::DemoTreeOptions options;
     options.generations = 1;
     options.voxelSizeMm = 2.0;
-    vv::io::writeVtp(vv::io::generateDemoMesh(options), dir / "demo-tree.vtp");
+    vv::meshio::writeVtp(vv::demo::generateDemoMesh(options), dir / "demo-tree.vtp");
 }
 
 void pfmSeeds(const fs::path& dir) {

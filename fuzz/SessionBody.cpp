@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The session target's body: separate because it needs the GUI library
-// (app/gui/Session.cpp); the others need only vv::io and vv::vss.
+// (app/gui/Session.cpp); the others need only vv::meshio, vv::dicom and vv::vss.
 #include <QByteArray>
 
 #include "FuzzBodies.h"

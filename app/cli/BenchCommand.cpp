@@ -20,8 +20,8 @@
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
 #include "vv/core/Error.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshLoader.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshLoader.h"
 #include "vv/render/ViewPresets.h"
 
 namespace vv::cli {
@@ -239,12 +239,12 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     }
     ensureGuiApplication();
 
-    io::Scene scene;
+    scene::Scene scene;
     if (parsed.mesh) {
-        scene.meshes.push_back(io::loadMesh(*parsed.mesh));
+        scene.meshes.push_back(meshio::loadMesh(*parsed.mesh));
     } else {
         err << "bench: generating the demo vessel tree\n" << std::flush;
-        scene.meshes.push_back(io::generateDemoMesh());
+        scene.meshes.push_back(demo::generateDemoMesh());
     }
 
     bench::VssBenchmarkResult result;

@@ -17,9 +17,10 @@
 
 #include "cli/Cli.h"
 #include "vv/core/Error.h"
-#include "vv/io/DemoCtSeries.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshWriter.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/meshio/MeshWriter.h"
 
 namespace vv::cli {
 
@@ -83,10 +84,10 @@ int writeDemoDicom(const std::filesystem::path& folder, std::ostream& out) {
     if (std::filesystem::exists(folder, ec) && !std::filesystem::is_directory(folder, ec)) {
         throw OutputError(folder.string() + ": cannot write: not a folder");
     }
-    const vv::io::DemoCt cta = vv::io::generateDemoCt();
+    const vv::demo::DemoCt cta = vv::demo::generateDemoCt();
     std::string uid;
     try {
-        uid = vv::io::writeCtSeries(folder, cta.volume);
+        uid = vv::dicom::writeCtSeries(folder, cta.volume);
     } catch (const vv::IoError& e) {
         throw OutputError(e.what());
     }
@@ -105,7 +106,7 @@ int writeDemoDicom(const std::filesystem::path& folder, std::ostream& out) {
 int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
     std::filesystem::path output;
     std::filesystem::path dicomFolder;
-    vv::io::DemoTreeOptions options;
+    vv::demo::DemoTreeOptions options;
     bool treeOptionGiven = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -176,9 +177,9 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     }
 
     // Out-of-range options throw InvalidArgumentError, which run() maps to a usage error.
-    const vv::io::Mesh mesh = vv::io::generateDemoMesh(options);
+    const vv::scene::Mesh mesh = vv::demo::generateDemoMesh(options);
     try {
-        vv::io::writeVtp(mesh, output);
+        vv::meshio::writeVtp(mesh, output);
     } catch (const vv::IoError& e) {
         throw OutputError(e.what());
     } catch (const vv::InvalidArgumentError& e) {

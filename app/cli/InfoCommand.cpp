@@ -18,8 +18,8 @@
 
 #include "cli/Cli.h"
 #include "vv/core/Error.h"
-#include "vv/io/Dicom.h"
-#include "vv/io/MeshLoader.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/meshio/MeshLoader.h"
 
 namespace vv::cli {
 
@@ -57,7 +57,7 @@ struct MeshInfo {
     std::vector<ArrayInfo> cellArrays;
 };
 
-std::vector<ArrayInfo> summarize(const std::vector<vv::io::DataArray>& arrays) {
+std::vector<ArrayInfo> summarize(const std::vector<vv::scene::DataArray>& arrays) {
     std::vector<ArrayInfo> out;
     out.reserve(arrays.size());
     for (const auto& a : arrays) {
@@ -394,7 +394,7 @@ void writeTable(std::ostream& out, const std::vector<MeshInfo>& meshes) {
 
 struct DicomInfo {
     std::string path;
-    vv::io::DicomScanResult scan;
+    vv::dicom::DicomScanResult scan;
 };
 
 /// True when `path` is read as DICOM: a folder, a DICOMDIR, a .dcm file or a
@@ -403,14 +403,14 @@ bool isDicomPath(const std::filesystem::path& path) {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
                    [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-    const auto& meshes = vv::io::supportedMeshExtensions();
+    const auto& meshes = vv::meshio::supportedMeshExtensions();
     if (std::find(meshes.begin(), meshes.end(), ext) != meshes.end()) {
         return false;
     }
-    return vv::io::looksLikeDicom(path);
+    return vv::dicom::looksLikeDicom(path);
 }
 
-std::string spacingText(const vv::io::DicomSeries& s) {
+std::string spacingText(const vv::dicom::DicomSeries& s) {
     if (!s.pixelSpacing) {
         return "unknown";
     }
@@ -580,7 +580,7 @@ double parseScale(const std::string& text) {
 int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
     std::vector<std::filesystem::path> files;
     bool json = false;
-    vv::io::MeshLoadOptions options;
+    vv::meshio::MeshLoadOptions options;
     bool optionsEnded = false;
     for (std::size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
@@ -618,7 +618,7 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     meshes.reserve(files.size());
     for (const auto& file : files) {
         if (isDicomPath(file)) {
-            DicomInfo d{file.string(), vv::io::scanDicom(file)};
+            DicomInfo d{file.string(), vv::dicom::scanDicom(file)};
             if (d.scan.allSeries().empty()) {
                 std::string why = "holds no DICOM image series";
                 if (d.scan.skipped.size() == 1) {
@@ -631,7 +631,7 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
             dicoms.push_back(std::move(d));
             continue;
         }
-        const vv::io::Mesh mesh = vv::io::loadMesh(file, options);
+        const vv::scene::Mesh mesh = vv::meshio::loadMesh(file, options);
         MeshInfo info;
         info.file = file.string();
         info.name = mesh.name;

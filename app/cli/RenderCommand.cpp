@@ -11,7 +11,7 @@
 // --tile N renders in tiles of at most N pixels per side (small GPUs; the
 // image is the same, report::renderView); not with --timings / --depth-out.
 // FILE may be a mesh file or DICOM (a folder, a DICOMDIR, a file): the series is
-// segmented into vessel surfaces, see io::setSceneSourceOption:
+// segmented into vessel surfaces, see segmentation::setSceneSourceOption:
 //                            [--series UID] [--threshold LO:HI] [--components N]
 //                            [--seed I,J,K] [--bone-removal on|off] [--triangles N]
 // or, with --raycast [--iso HU], ray cast directly as an iso-surface (volume
@@ -40,10 +40,8 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
-#include "vv/io/Dicom.h"
-#include "vv/io/MeshLoader.h"
-#include "vv/io/SceneSource.h"
-#include "vv/io/VolumeSegmentation.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/meshio/MeshLoader.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/MeshRenderer.h"
@@ -51,6 +49,8 @@
 #include "vv/render/RenderGraph.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/report/ViewExport.h"
+#include "vv/segmentation/SceneSource.h"
+#include "vv/segmentation/VolumeSegmentation.h"
 #include "vv/vss/Pfm.h"
 #include "vv/vss/Solver.h"
 
@@ -62,23 +62,23 @@ struct RenderArguments : RenderOptionValues {
     std::filesystem::path input;
     std::filesystem::path output;
     bool timings = false;
-    std::filesystem::path depthOutput;  ///< --depth-out; empty = none
-    io::SceneSourceOptions source;      ///< DICOM: series, segmentation, surface
-    bool raycast = false;               ///< --raycast: the volume as depth source
-    std::optional<float> iso;           ///< --iso HU
-    int maxTileSide = 0;                ///< --tile N; 0 = one piece
+    std::filesystem::path depthOutput;        ///< --depth-out; empty = none
+    segmentation::SceneSourceOptions source;  ///< DICOM: series, segmentation, surface
+    bool raycast = false;                     ///< --raycast: the volume as depth source
+    std::optional<float> iso;                 ///< --iso HU
+    int maxTileSide = 0;                      ///< --tile N; 0 = one piece
 };
 
 /// --raycast: a scene of the volume's eight corners, only for fitting the camera.
-io::Scene cornerScene(const io::Volume& volume) {
-    io::Mesh corners;
+scene::Scene cornerScene(const scene::Volume& volume) {
+    scene::Mesh corners;
     const glm::dvec3 last = glm::dvec3(volume.dims() - 1);
     for (int c = 0; c < 8; ++c) {
         const glm::dvec3 ijk((c & 1) != 0 ? last.x : 0.0, (c & 2) != 0 ? last.y : 0.0,
                              (c & 4) != 0 ? last.z : 0.0);
         corners.positions.emplace_back(volume.worldPosition(ijk));
     }
-    io::Scene scene;
+    scene::Scene scene;
     scene.meshes.push_back(std::move(corners));
     return scene;
 }
@@ -123,8 +123,8 @@ RenderArguments parse(const std::vector<std::string>& args) {
             parsed.raycast = true;
         } else if (a == "--iso") {
             parsed.iso = static_cast<float>(parseDouble(value(), "--iso"));
-        } else if (io::setSceneSourceOption(a, i + 1 < args.size() ? args[i + 1] : std::string(),
-                                            parsed.source)) {
+        } else if (segmentation::setSceneSourceOption(
+                       a, i + 1 < args.size() ? args[i + 1] : std::string(), parsed.source)) {
             ++i;  // a DICOM option and its value
         } else if (!a.empty() && a[0] == '-' && a != "-") {
             throw UsageError("render: unknown option '" + a + "'");
@@ -167,26 +167,26 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     }
 
     // A mesh file, or DICOM segmented into vessel surfaces.
-    io::SceneSourceReport source;
-    io::Scene scene;
-    std::shared_ptr<const io::Volume> volume;  // --raycast
+    segmentation::SceneSourceReport source;
+    scene::Scene scene;
+    std::shared_ptr<const scene::Volume> volume;  // --raycast
     float iso = 0.0F;
     if (parsed.raycast) {
-        if (!io::isDicomSource(parsed.input)) {
+        if (!segmentation::isDicomSource(parsed.input)) {
             throw UsageError(
                 "render: --raycast needs DICOM (a folder, a DICOMDIR or a file), got '" +
                 parsed.input.string() + "'");
         }
-        io::DicomVolume loaded =
-            io::loadDicomVolume(parsed.input, parsed.source.seriesInstanceUid, parsed.source.dicom);
+        dicom::DicomVolume loaded = dicom::loadDicomVolume(
+            parsed.input, parsed.source.seriesInstanceUid, parsed.source.dicom);
         source.seriesInstanceUid = loaded.seriesInstanceUid;
         source.volumeDims = loaded.volume.dims();
-        volume = std::make_shared<const io::Volume>(std::move(loaded.volume));
+        volume = std::make_shared<const scene::Volume>(std::move(loaded.volume));
         iso = parsed.iso.value_or(parsed.source.segmentation.range
                                       ? parsed.source.segmentation.range->lower
-                                      : io::defaultThresholdRange(*volume).lower);
+                                      : segmentation::defaultThresholdRange(*volume).lower);
     } else {
-        scene = io::loadSceneSource(parsed.input, parsed.source, {}, &source);
+        scene = segmentation::loadSceneSource(parsed.input, parsed.source, {}, &source);
     }
 
     render::OffscreenOptions options =
@@ -281,7 +281,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
                 << " bone-like removed, " << scene.meshes.front().triangleCount() << " triangles\n";
     } else if (source.fromSegmentationObject) {
         summary << "read " << scene.meshes.size() << " segment(s) from the DICOM SEG:";
-        for (const io::Mesh& mesh : scene.meshes) {
+        for (const scene::Mesh& mesh : scene.meshes) {
             summary << " '" << mesh.name << "'";
         }
         summary << "\n";

@@ -197,7 +197,7 @@ bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
     return true;
 }
 
-render::Camera cameraFor(const RenderOptionValues& values, const io::Scene& scene, int width,
+render::Camera cameraFor(const RenderOptionValues& values, const scene::Scene& scene, int width,
                          int height) {
     render::Camera camera;
     if (values.view) {
@@ -210,7 +210,8 @@ render::Camera cameraFor(const RenderOptionValues& values, const io::Scene& scen
     return camera;
 }
 
-render::OffscreenOptions offscreenOptions(const RenderOptionValues& values, const io::Scene& scene,
+render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
+                                          const scene::Scene& scene,
                                           const std::filesystem::path& input) {
     render::OffscreenOptions options;
     options.width = values.width;

@@ -12,10 +12,10 @@
 #include <vector>
 
 #include "vv/colormaps/ColorMap.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::cli {
 
@@ -62,14 +62,14 @@ int parseInt(const std::string& text, const std::string& what);
 /// The camera of `values` for `scene` at width x height: the named view
 /// (presetCamera fits the vertices) or the default orientation fitted to the
 /// bounding box, as OffscreenRenderer does.
-[[nodiscard]] render::Camera cameraFor(const RenderOptionValues& values, const io::Scene& scene,
+[[nodiscard]] render::Camera cameraFor(const RenderOptionValues& values, const scene::Scene& scene,
                                        int width, int height);
 
 /// Offscreen options for `scene` from `values` (camera included). The array
 /// defaults to render::defaultArrayName(scene). Throws UsageError when the
 /// first mesh (loaded from `input`) has no such point array.
 [[nodiscard]] render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
-                                                        const io::Scene& scene,
+                                                        const scene::Scene& scene,
                                                         const std::filesystem::path& input);
 
 /// Throws OutputError when `output` cannot be a new file: its folder does not

@@ -20,11 +20,11 @@
 #include "cli/GuiApplication.h"
 #include "cli/RenderOptions.h"
 #include "vv/core/Error.h"
-#include "vv/io/SceneSource.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/report/PdfReport.h"
 #include "vv/report/ReportJob.h"
 #include "vv/report/ViewExport.h"
+#include "vv/segmentation/SceneSource.h"
 
 namespace vv::cli {
 
@@ -48,7 +48,7 @@ struct ReportArguments : RenderOptionValues {
     std::string secondViewName;
     report::PaperSize paper = report::PaperSize::A4;
     report::StatsThresholds thresholds;
-    io::SceneSourceOptions source;  ///< DICOM: series, segmentation, surface
+    segmentation::SceneSourceOptions source;  ///< DICOM: series, segmentation, surface
 };
 
 ReportArguments parse(const std::vector<std::string>& args) {
@@ -122,8 +122,8 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.thresholds.above = parseDouble(value(), "--above");
         } else if (parseRenderOption(args, i, parsed, "report")) {
             // a shared render option (RenderOptions.h)
-        } else if (io::setSceneSourceOption(a, i + 1 < args.size() ? args[i + 1] : std::string(),
-                                            parsed.source)) {
+        } else if (segmentation::setSceneSourceOption(
+                       a, i + 1 < args.size() ? args[i + 1] : std::string(), parsed.source)) {
             ++i;  // a DICOM option and its value
         } else if (!a.empty() && a[0] == '-' && a != "-") {
             throw UsageError("report: unknown option '" + a + "'");
@@ -193,8 +193,8 @@ void checkOutputs(const fs::path& input, const Outputs& outputs) {
 void produce(const ReportArguments& a, const fs::path& input, const Outputs& outputs,
              render::OffscreenRenderer& renderer, std::ostream& out) {
     // A mesh file, or DICOM segmented into vessel surfaces.
-    io::SceneSourceReport loaded;
-    const io::Scene scene = io::loadSceneSource(input, a.source, {}, &loaded);
+    segmentation::SceneSourceReport loaded;
+    const scene::Scene scene = segmentation::loadSceneSource(input, a.source, {}, &loaded);
     report::ReportJobOptions job;
     job.view = offscreenOptions(a, scene, input);
     job.viewCaption = report::namedViewCaption(a.viewName);

@@ -25,8 +25,8 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
 #include "vv/core/ProcessMemory.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshLoader.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshLoader.h"
 #include "vv/render/Camera.h"
 #include "vv/render/OffscreenRenderer.h"
 
@@ -128,8 +128,9 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         throw UsageError("soak: FRAMES must be at least 101");
     }
 
-    io::Scene scene;
-    scene.meshes.push_back(meshFile.empty() ? io::generateDemoMesh() : io::loadMesh(meshFile));
+    scene::Scene scene;
+    scene.meshes.push_back(meshFile.empty() ? demo::generateDemoMesh()
+                                            : meshio::loadMesh(meshFile));
     std::vector<std::string> arrays = {""};
     for (const auto& a : scene.meshes.front().pointArrays) {
         arrays.push_back(a.name);

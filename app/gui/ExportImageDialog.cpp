@@ -210,7 +210,7 @@ ExportWorker* ExportImageDialog::startExport() {
     options.render = currentViewOptions(viewer_, size.width(), size.height());
     options.legends = legends_->isChecked();
     options.transparentBackground = transparent_->isChecked();
-    const std::shared_ptr<const io::Scene> scene = viewer_.scene();
+    const std::shared_ptr<const scene::Scene> scene = viewer_.scene();
     const std::filesystem::path target(QFile::encodeName(file).toStdString());
     const bool transparent = options.transparentBackground;
     return ExportWorker::launch(

@@ -54,10 +54,11 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
-#include "vv/io/MeshLoader.h"
-#include "vv/io/SceneSource.h"
-#include "vv/io/Versions.h"
+#include "vv/dicom/Versions.h"
+#include "vv/meshio/MeshLoader.h"
+#include "vv/meshio/Versions.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/segmentation/SceneSource.h"
 #include "vv/vss/Versions.h"
 
 namespace vv::gui {
@@ -77,7 +78,7 @@ constexpr int kScreenshotTimeoutMs = 10 * 60 * 1000;
 
 bool hasSupportedExtension(const QString& file) {
     const QString suffix = "." + QFileInfo(file).suffix().toLower();
-    const auto& extensions = io::supportedMeshExtensions();
+    const auto& extensions = meshio::supportedMeshExtensions();
     return std::any_of(extensions.begin(), extensions.end(),
                        [&](const std::string& e) { return suffix == QString::fromStdString(e); });
 }
@@ -528,7 +529,7 @@ void MainWindow::buildStatusBar() {
 
 QString MainWindow::meshFileFilter() {
     QStringList patterns;
-    for (const auto& extension : io::supportedMeshExtensions()) {
+    for (const auto& extension : meshio::supportedMeshExtensions()) {
         const QString e = QString::fromStdString(extension);
         patterns << "*" + e << "*" + e.toUpper();
     }
@@ -564,7 +565,7 @@ void MainWindow::openDicom(const QString& path) {
     }
     MeshLoadTask* task = MeshLoadTask::scanDicom(QFile::encodeName(path).toStdString(), this);
     connect(task, &MeshLoadTask::scanned, this,
-            [this, path](std::shared_ptr<const io::DicomScanResult> scan) {
+            [this, path](std::shared_ptr<const dicom::DicomScanResult> scan) {
                 if (scan->allSeries().empty()) {
                     const int skipped = static_cast<int>(scan->skipped.size());
                     showError(tr("Cannot open"),
@@ -621,7 +622,7 @@ void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
                 }
             });
     connect(task, &MeshLoadTask::loaded, this,
-            [this, task, files](std::shared_ptr<const io::Scene> scene) {
+            [this, task, files](std::shared_ptr<const scene::Scene> scene) {
                 QString title;
                 if (files.size() == 1) {
                     title = QFileInfo(files.front()).fileName();
@@ -638,7 +639,7 @@ void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
                     shownFiles_
                         << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
                 }
-                const io::SceneSourceReport& source = task->dicomReport();
+                const segmentation::SceneSourceReport& source = task->dicomReport();
                 shownSeriesUid_ = source.fromVolume || source.fromSegmentationObject
                                       ? source.seriesInstanceUid
                                       : std::string();
@@ -688,14 +689,15 @@ void MainWindow::taskFinished() {
     }
 }
 
-void MainWindow::setScene(std::shared_ptr<const io::Scene> scene, const QString& title) {
+void MainWindow::setScene(std::shared_ptr<const scene::Scene> scene, const QString& title) {
     // A scene from elsewhere: no volume behind it (a DICOM load sets it afterwards).
     volume_.reset();
     segmentationPanel_->setVolume(nullptr);
     showScene(std::move(scene), title);
 }
 
-void MainWindow::showSegmentedScene(std::shared_ptr<const io::Scene> scene, const QString& status) {
+void MainWindow::showSegmentedScene(std::shared_ptr<const scene::Scene> scene,
+                                    const QString& status) {
     render::Camera camera = viewer_->camera();
     sceneFiles_ = shownFiles_;
     showScene(std::move(scene), sceneTitle_);
@@ -704,7 +706,7 @@ void MainWindow::showSegmentedScene(std::shared_ptr<const io::Scene> scene, cons
     statusLabel_->setText(status);
 }
 
-void MainWindow::showScene(std::shared_ptr<const io::Scene> scene, const QString& title) {
+void MainWindow::showScene(std::shared_ptr<const scene::Scene> scene, const QString& title) {
     sceneTitle_ = title;
     clearMeasurement();  // points on the old data mean nothing on the new
     viewer_->setScene(scene);
@@ -712,7 +714,8 @@ void MainWindow::showScene(std::shared_ptr<const io::Scene> scene, const QString
     dataPanel_->sceneChanged(title, sceneFiles_);
     QString dicomSource;
     for (const QString& file : sceneFiles_) {
-        if (io::isDicomSource(std::filesystem::path(QFile::encodeName(file).toStdString()))) {
+        if (segmentation::isDicomSource(
+                std::filesystem::path(QFile::encodeName(file).toStdString()))) {
             dicomSource = file;
             break;
         }
@@ -760,7 +763,7 @@ report::ReportSource MainWindow::reportSource() const {
     for (const QString& file : shownFiles_) {
         const std::filesystem::path path(QFile::encodeName(file).toStdString());
         source.files.push_back(path);
-        if (source.dicomPath.empty() && io::isDicomSource(path)) {
+        if (source.dicomPath.empty() && segmentation::isDicomSource(path)) {
             source.dicomPath = path;
             source.seriesInstanceUid = shownSeriesUid_;
         }
@@ -806,7 +809,7 @@ bool MainWindow::saveSessionTo(const QString& path) {
     if (viewer_->scene() && !shownSeriesUid_.empty()) {
         // DICOM data: the series, and for an image series the Segmentation
         // panel's settings, so that the session reopens without asking.
-        io::SceneSourceOptions dicom;
+        segmentation::SceneSourceOptions dicom;
         dicom.seriesInstanceUid = shownSeriesUid_;
         if (volume_) {
             dicom.segmentation = segmentationPanel_->segmentationOptions();
@@ -1016,7 +1019,8 @@ void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
                0;
     });
     const bool dicom = std::any_of(any.begin(), any.end(), [](const QString& f) {
-        return QFileInfo(f).isDir() || io::isDicomSource(QFile::encodeName(f).toStdString());
+        return QFileInfo(f).isDir() ||
+               segmentation::isDicomSource(QFile::encodeName(f).toStdString());
     });
     if (session || dicom || !localFiles(event->mimeData(), true).isEmpty()) {
         event->acceptProposedAction();
@@ -1040,7 +1044,8 @@ void MainWindow::dropEvent(QDropEvent* event) {
     }
     // A folder, DICOMDIR or DICOM file: the series chooser (the first one dropped).
     for (const QString& file : localFiles(event->mimeData(), false)) {
-        if (QFileInfo(file).isDir() || io::isDicomSource(QFile::encodeName(file).toStdString())) {
+        if (QFileInfo(file).isDir() ||
+            segmentation::isDicomSource(QFile::encodeName(file).toStdString())) {
             event->acceptProposedAction();
             openDicom(file);
             return;
@@ -1068,9 +1073,8 @@ QString MainWindow::aboutText() const {
     libraries << QStringLiteral("Qt %1 (%2)")
                      .arg(QString::fromLatin1(qVersion()),
                           tr("built with %1").arg(QStringLiteral(QT_VERSION_STR)));
-    for (const auto& library : io::libraryVersions()) {
-        libraries << QString::fromStdString(library.name + " " + library.version);
-    }
+    libraries << QStringLiteral("VTK ") + QString::fromStdString(meshio::vtkVersion());
+    libraries << QStringLiteral("DCMTK ") + QString::fromStdString(dicom::dcmtkVersion());
     libraries << QStringLiteral("OpenCV ") + QString::fromStdString(vss::openCvVersion());
     for (QString& library : libraries) {
         library = library.toHtmlEscaped();

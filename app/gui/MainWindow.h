@@ -13,9 +13,9 @@
 #include "gui/DisplayPreset.h"
 #include "gui/Session.h"
 #include "gui/ViewerWidget.h"
-#include "vv/io/Mesh.h"
-#include "vv/io/Volume.h"
 #include "vv/report/ReportJob.h"
+#include "vv/scene/Mesh.h"
+#include "vv/scene/Volume.h"
 
 class QAction;
 class QComboBox;
@@ -72,7 +72,7 @@ class MainWindow : public QMainWindow {
     void openDemo();
     /// Shows an already loaded scene (nullptr clears); `title` names it in the
     /// window title. Selects the default array (wss when present).
-    void setScene(std::shared_ptr<const io::Scene> scene, const QString& title);
+    void setScene(std::shared_ptr<const scene::Scene> scene, const QString& title);
 
     /// Screenshot mode: the default display settings (not the remembered
     /// ones; see ViewSettings.h); once data is shown, save the viewer's frame to `path`
@@ -133,7 +133,7 @@ class MainWindow : public QMainWindow {
     }
     /// The volume the shown scene was segmented from (a DICOM image series),
     /// kept for re-segmenting without reading the files; null otherwise.
-    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return volume_;
     }
     /// View > Panels > Reset Layout: the docks as in a fresh window.
@@ -201,9 +201,9 @@ class MainWindow : public QMainWindow {
     void setColorBlindSafe(bool on);
     /// setScene() without forgetting volume(): what a load and the
     /// Segmentation panel's scenes go through.
-    void showScene(std::shared_ptr<const io::Scene> scene, const QString& title);
+    void showScene(std::shared_ptr<const scene::Scene> scene, const QString& title);
     /// A scene from the Segmentation panel in place of the shown one; the camera stays.
-    void showSegmentedScene(std::shared_ptr<const io::Scene> scene, const QString& status);
+    void showSegmentedScene(std::shared_ptr<const scene::Scene> scene, const QString& status);
     void startTask(MeshLoadTask* task, const QStringList& files);
     void taskFinished();
     void showError(const QString& title, const QString& message);
@@ -225,8 +225,8 @@ class MainWindow : public QMainWindow {
     panels::DisplayPanel* displayPanel_ = nullptr;
     panels::DataPanel* dataPanel_ = nullptr;
     panels::SegmentationPanel* segmentationPanel_ = nullptr;
-    std::shared_ptr<const io::Volume> volume_;  ///< see volume()
-    QString sceneTitle_;                        ///< the title of the shown scene
+    std::shared_ptr<const scene::Volume> volume_;  ///< see volume()
+    QString sceneTitle_;                           ///< the title of the shown scene
     QList<QDockWidget*> docks_;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;

@@ -10,9 +10,9 @@
 
 #include "vv/core/Error.h"
 #include "vv/core/Progress.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshLoader.h"
-#include "vv/io/SceneSource.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshLoader.h"
+#include "vv/segmentation/SceneSource.h"
 
 namespace vv::gui {
 
@@ -29,7 +29,8 @@ MeshLoadTask* MeshLoadTask::loadFiles(std::vector<std::filesystem::path> files, 
 }
 
 MeshLoadTask* MeshLoadTask::loadFiles(std::vector<std::filesystem::path> files,
-                                      io::SceneSourceOptions dicomOptions, QObject* parent) {
+                                      segmentation::SceneSourceOptions dicomOptions,
+                                      QObject* parent) {
     return new MeshLoadTask(std::move(files), false, std::move(dicomOptions), parent);
 }
 
@@ -46,7 +47,7 @@ MeshLoadTask* MeshLoadTask::generateDemo(QObject* parent) {
 }
 
 MeshLoadTask::MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
-                           io::SceneSourceOptions dicomOptions, QObject* parent)
+                           segmentation::SceneSourceOptions dicomOptions, QObject* parent)
     : QObject(parent),
       files_(std::move(files)),
       demo_(demo),
@@ -110,27 +111,28 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
     try {
         progress.throwIfCancelled();
         if (scan_) {
-            result.scan = std::make_shared<const io::DicomScanResult>(
-                io::scanDicom(files_.front(), progress));
+            result.scan = std::make_shared<const dicom::DicomScanResult>(
+                dicom::scanDicom(files_.front(), progress));
             return result;
         }
-        auto scene = std::make_shared<io::Scene>();
+        auto scene = std::make_shared<scene::Scene>();
         if (demo_) {
-            scene->meshes.push_back(io::generateDemoMesh({}, progress));
+            scene->meshes.push_back(demo::generateDemoMesh({}, progress));
         } else if (std::none_of(files_.begin(), files_.end(),
-                                [](const auto& f) { return io::isDicomSource(f); })) {
-            *scene = io::loadScene(files_, {}, progress);
+                                [](const auto& f) { return segmentation::isDicomSource(f); })) {
+            *scene = meshio::loadScene(files_, {}, progress);
         } else {
             // DICOM sources are segmented one by one; meshes load as before.
             const double n = static_cast<double>(files_.size());
             for (std::size_t i = 0; i < files_.size(); ++i) {
                 const Progress part =
                     progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);
-                io::SceneSourceReport report;
-                io::Scene one = io::isDicomSource(files_[i])
-                                    ? io::loadSceneSource(files_[i], dicomOptions_, part, &report)
-                                    : io::loadScene({files_[i]}, {}, part);
-                if (io::isDicomSource(files_[i])) {
+                segmentation::SceneSourceReport report;
+                scene::Scene one =
+                    segmentation::isDicomSource(files_[i])
+                        ? segmentation::loadSceneSource(files_[i], dicomOptions_, part, &report)
+                        : meshio::loadScene({files_[i]}, {}, part);
+                if (segmentation::isDicomSource(files_[i])) {
                     result.dicomReport = std::move(report);
                 }
                 for (auto& mesh : one.meshes) {

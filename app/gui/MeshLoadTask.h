@@ -11,14 +11,14 @@
 #include <stop_token>
 #include <vector>
 
-#include "vv/io/Mesh.h"
-#include "vv/io/SceneSource.h"
+#include "vv/scene/Mesh.h"
+#include "vv/segmentation/SceneSource.h"
 
 namespace vv::gui {
 
-/// Loads mesh files (vv::io::loadScene), DICOM sources — a folder, a DICOMDIR
-/// or a DICOM file, segmented into vessel surfaces (vv::io::loadSceneSource)
-/// — or generates the demo tree (vv::io::generateDemoMesh) on a worker
+/// Loads mesh files (vv::meshio::loadScene), DICOM sources — a folder, a DICOMDIR
+/// or a DICOM file, segmented into vessel surfaces (vv::segmentation::loadSceneSource)
+/// — or generates the demo tree (vv::demo::generateDemoMesh) on a worker
 /// thread, never on the GUI thread.
 ///
 /// Progress arrives through progressChanged() (queued to the GUI thread,
@@ -32,14 +32,14 @@ class MeshLoadTask : public QObject {
 
   public:
     /// A task that loads `files` into one scene, in order. Paths that are
-    /// DICOM sources (vv::io::isDicomSource) go through loadSceneSource()
+    /// DICOM sources (vv::segmentation::isDicomSource) go through loadSceneSource()
     /// with `dicomOptions` (default: the only series, modality defaults);
     /// when there are none, the meshes load with loadScene() as one batch.
     static MeshLoadTask* loadFiles(std::vector<std::filesystem::path> files,
                                    QObject* parent = nullptr);
     static MeshLoadTask* loadFiles(std::vector<std::filesystem::path> files,
-                                   io::SceneSourceOptions dicomOptions, QObject* parent);
-    /// A task that reads the DICOM headers under `path` (vv::io::scanDicom)
+                                   segmentation::SceneSourceOptions dicomOptions, QObject* parent);
+    /// A task that reads the DICOM headers under `path` (vv::dicom::scanDicom)
     /// and delivers them through scanned() instead of loaded().
     static MeshLoadTask* scanDicom(std::filesystem::path path, QObject* parent = nullptr);
     /// A task that generates the synthetic demo vessel tree.
@@ -61,21 +61,23 @@ class MeshLoadTask : public QObject {
         return files_;
     }
     /// The DICOM options the task loads with.
-    [[nodiscard]] const io::SceneSourceOptions& dicomOptions() const noexcept {
+    [[nodiscard]] const segmentation::SceneSourceOptions& dicomOptions() const noexcept {
         return dicomOptions_;
     }
     /// From loaded() on: what loading the last DICOM source did, with the
     /// volume an image series was segmented from (volume null for a DICOM
     /// SEG; all empty when only meshes were loaded).
-    [[nodiscard]] const io::SceneSourceReport& dicomReport() const noexcept { return dicomReport_; }
+    [[nodiscard]] const segmentation::SceneSourceReport& dicomReport() const noexcept {
+        return dicomReport_;
+    }
 
   signals:
     /// `fraction` in [0, 1] of the work done, and the current stage.
     void progressChanged(double fraction, const QString& stage);
     /// The DICOM headers are read (scanDicom tasks).
-    void scanned(std::shared_ptr<const vv::io::DicomScanResult> scan);
+    void scanned(std::shared_ptr<const vv::dicom::DicomScanResult> scan);
     /// The scene is ready.
-    void loaded(std::shared_ptr<const vv::io::Scene> scene);
+    void loaded(std::shared_ptr<const vv::scene::Scene> scene);
     /// Loading (or scanning) failed; `file` is the file concerned (may be empty), `problem` the
     /// reason.
     void failed(const QString& file, const QString& problem);
@@ -85,24 +87,24 @@ class MeshLoadTask : public QObject {
 
   private:
     struct Result {
-        std::shared_ptr<const io::Scene> scene;
-        std::shared_ptr<const io::DicomScanResult> scan;
-        io::SceneSourceReport dicomReport;
+        std::shared_ptr<const scene::Scene> scene;
+        std::shared_ptr<const dicom::DicomScanResult> scan;
+        segmentation::SceneSourceReport dicomReport;
         QString file;
         QString problem;
         bool cancelled = false;
     };
 
     MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
-                 io::SceneSourceOptions dicomOptions, QObject* parent);
+                 segmentation::SceneSourceOptions dicomOptions, QObject* parent);
     [[nodiscard]] Result work(std::stop_token stop);
     void deliver();
 
     std::vector<std::filesystem::path> files_;
     bool demo_ = false;
     bool scan_ = false;
-    io::SceneSourceOptions dicomOptions_;
-    io::SceneSourceReport dicomReport_;
+    segmentation::SceneSourceOptions dicomOptions_;
+    segmentation::SceneSourceReport dicomReport_;
     QString description_;
     std::stop_source stop_;
     QFuture<Result> future_;

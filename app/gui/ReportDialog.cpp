@@ -261,7 +261,7 @@ ExportWorker* ReportDialog::startExport() {
     if (anonymise_->isEnabled()) {
         settings.setValue(QLatin1String(kAnonymiseKey), anonymise_->isChecked());
     }
-    const std::shared_ptr<const io::Scene> scene = viewer_.scene();
+    const std::shared_ptr<const scene::Scene> scene = viewer_.scene();
     const QString pdf = pdf_->text().trimmed();
     return ExportWorker::launch(
         tr("Exporting the report %1").arg(QFileInfo(pdf).fileName()),

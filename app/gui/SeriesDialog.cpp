@@ -27,7 +27,7 @@ QString fromStd(const std::string& s) {
     return QString::fromStdString(s);
 }
 
-bool isCt(const io::DicomSeries& s) {
+bool isCt(const dicom::DicomSeries& s) {
     return s.modality == "CT";
 }
 
@@ -37,7 +37,7 @@ void greyOut(QTreeWidgetItem* item) {
 
 }  // namespace
 
-SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
+SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     : QDialog(parent), scan_(scan) {
     setWindowTitle(tr("Choose a DICOM Series"));
     setObjectName(QStringLiteral("seriesDialog"));
@@ -53,7 +53,7 @@ SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
 
     QTreeWidgetItem* first = nullptr;
     for (std::size_t p = 0; p < scan_.patients.size(); ++p) {
-        const io::DicomPatient& patient = scan_.patients[p];
+        const dicom::DicomPatient& patient = scan_.patients[p];
         auto* patientItem = new QTreeWidgetItem(tree_);
         QString name = fromStd(patient.name);
         name.replace(QLatin1Char('^'), QLatin1Char(' '));
@@ -61,7 +61,7 @@ SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
                                        ? tr("Patient %1").arg(p + 1)
                                        : tr("Patient: %1").arg(name.trimmed()));
         patientItem->setFlags(Qt::ItemIsEnabled);
-        for (const io::DicomStudy& study : patient.studies) {
+        for (const dicom::DicomStudy& study : patient.studies) {
             auto* studyItem = new QTreeWidgetItem(patientItem);
             QString date = fromStd(study.date);
             if (date.size() == 8) {
@@ -71,7 +71,7 @@ SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
             studyItem->setText(Name, date.isEmpty() ? tr("Study") : tr("Study %1").arg(date));
             studyItem->setText(Description, fromStd(study.description));
             studyItem->setFlags(Qt::ItemIsEnabled);
-            for (const io::DicomSeries& series : study.series) {
+            for (const dicom::DicomSeries& series : study.series) {
                 auto* item = new QTreeWidgetItem(studyItem);
                 item->setData(Name, kUidRole, fromStd(series.seriesInstanceUid));
                 item->setText(Name, series.seriesNumber ? tr("Series %1").arg(*series.seriesNumber)
@@ -106,7 +106,7 @@ SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
         auto* skipped = new QTreeWidgetItem(tree_);
         skipped->setText(Name, tr("Skipped files: %1").arg(scan_.skipped.size()));
         skipped->setFlags(Qt::ItemIsEnabled);
-        for (const io::DicomSkippedFile& file : scan_.skipped) {
+        for (const dicom::DicomSkippedFile& file : scan_.skipped) {
             auto* item = new QTreeWidgetItem(skipped);
             item->setText(Name, fromStd(file.file.filename().string()));
             item->setToolTip(Name, fromStd(file.file.string()));
@@ -176,7 +176,7 @@ SeriesDialog::SeriesDialog(const io::DicomScanResult& scan, QWidget* parent)
     selectionChanged();
 }
 
-const io::DicomSeries* SeriesDialog::currentSeries() const {
+const dicom::DicomSeries* SeriesDialog::currentSeries() const {
     const QString uid = selectedSeriesUid();
     return uid.isEmpty() ? nullptr : scan_.findSeries(uid.toStdString());
 }
@@ -200,12 +200,12 @@ bool SeriesDialog::selectSeries(const QString& uid) {
 }
 
 void SeriesDialog::selectionChanged() {
-    const io::DicomSeries* series = currentSeries();
+    const dicom::DicomSeries* series = currentSeries();
     buttons_->button(QDialogButtonBox::Ok)->setEnabled(series != nullptr);
     if (series == nullptr) {
         return;
     }
-    // The modality's defaults (as vv::io::segmentVessels would choose them).
+    // The modality's defaults (as vv::segmentation::segmentVessels would choose them).
     bone_->setChecked(isCt(*series));
     if (isCt(*series)) {
         thresholdRule_->setText(tr("CT angiography: 200 to 700 HU"));
@@ -218,11 +218,11 @@ void SeriesDialog::selectionChanged() {
     }
 }
 
-io::SceneSourceOptions SeriesDialog::sceneSourceOptions() const {
-    io::SceneSourceOptions options;
+segmentation::SceneSourceOptions SeriesDialog::sceneSourceOptions() const {
+    segmentation::SceneSourceOptions options;
     options.seriesInstanceUid = selectedSeriesUid().toStdString();
     if (!autoThreshold_->isChecked()) {
-        io::ThresholdRange range;
+        segmentation::ThresholdRange range;
         range.lower = static_cast<float>(std::min(lower_->value(), upper_->value()));
         range.upper = static_cast<float>(std::max(lower_->value(), upper_->value()));
         range.rule = "chosen in the series dialog";

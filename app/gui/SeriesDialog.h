@@ -4,8 +4,8 @@
 #include <QDialog>
 #include <QString>
 
-#include "vv/io/Dicom.h"
-#include "vv/io/SceneSource.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/segmentation/SceneSource.h"
 
 class QCheckBox;
 class QDialogButtonBox;
@@ -18,7 +18,7 @@ class QTreeWidgetItem;
 namespace vv::gui {
 
 /// The DICOM series chooser: a tree of patients → studies → series (modality,
-/// description, image count, size, spacing) as vv::io::scanDicom() found
+/// description, image count, size, spacing) as vv::dicom::scanDicom() found
 /// them, series that cannot be loaded and skipped files greyed with their
 /// reason, and the segmentation options (threshold range with the
 /// modality's default, components to keep, bone removal). The patient name
@@ -29,14 +29,14 @@ class SeriesDialog : public QDialog {
     Q_OBJECT
 
   public:
-    explicit SeriesDialog(const io::DicomScanResult& scan, QWidget* parent = nullptr);
+    explicit SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent = nullptr);
 
     /// The chosen series' UID; empty when none is selected.
     [[nodiscard]] QString selectedSeriesUid() const;
     /// Selects the series with this UID (when loadable); false when not listed.
     bool selectSeries(const QString& uid);
     /// The chosen series and segmentation options for loadSceneSource().
-    [[nodiscard]] io::SceneSourceOptions sceneSourceOptions() const;
+    [[nodiscard]] segmentation::SceneSourceOptions sceneSourceOptions() const;
 
     [[nodiscard]] QTreeWidget* tree() const noexcept { return tree_; }
     [[nodiscard]] QCheckBox* automaticThreshold() const noexcept { return autoThreshold_; }
@@ -47,9 +47,9 @@ class SeriesDialog : public QDialog {
 
   private:
     void selectionChanged();
-    [[nodiscard]] const io::DicomSeries* currentSeries() const;
+    [[nodiscard]] const dicom::DicomSeries* currentSeries() const;
 
-    io::DicomScanResult scan_;
+    dicom::DicomScanResult scan_;
     QTreeWidget* tree_ = nullptr;
     QCheckBox* autoThreshold_ = nullptr;
     QDoubleSpinBox* lower_ = nullptr;

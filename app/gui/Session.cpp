@@ -344,8 +344,8 @@ void applySession(ViewerWidget& viewer, const Session& session) {
 }
 
 /// The "dicom" object: the series and its segmentation.
-QJsonObject dicomToJson(const io::SceneSourceOptions& d) {
-    const io::SegmentationOptions& seg = d.segmentation;
+QJsonObject dicomToJson(const segmentation::SceneSourceOptions& d) {
+    const segmentation::SegmentationOptions& seg = d.segmentation;
     QJsonObject o{
         {QStringLiteral("series"), QString::fromStdString(d.seriesInstanceUid)},
         {QStringLiteral("components"), seg.keepComponents},
@@ -365,13 +365,13 @@ QJsonObject dicomToJson(const io::SceneSourceOptions& d) {
 }
 
 /// Reads the "dicom" object (see dicomToJson).
-io::SceneSourceOptions readDicom(const Reader& r, const QJsonValue& value) {
+segmentation::SceneSourceOptions readDicom(const Reader& r, const QJsonValue& value) {
     const QString w = QStringLiteral("dicom");
     if (!value.isObject()) {
         r.fail(w, QStringLiteral("must be an object"));
     }
     const QJsonObject o = value.toObject();
-    io::SceneSourceOptions d;
+    segmentation::SceneSourceOptions d;
     d.seriesInstanceUid = r.string(o, w, "series").toStdString();
     d.segmentation.keepComponents = r.integer(o, w, "components", 1, 255);
     d.surface.targetTriangles = static_cast<std::size_t>(r.number(o, w, "triangles", 0.0, 1e9));
@@ -380,7 +380,7 @@ io::SceneSourceOptions readDicom(const Reader& r, const QJsonValue& value) {
         if (!(n[0] <= n[1])) {
             r.fail(w + QStringLiteral(".threshold"), QStringLiteral("must have lower <= upper"));
         }
-        io::ThresholdRange range;
+        segmentation::ThresholdRange range;
         range.lower = static_cast<float>(n[0]);
         range.upper = static_cast<float>(n[1]);
         range.rule = "saved in the session";

@@ -8,9 +8,9 @@
 #include <glm/gtc/quaternion.hpp>
 #include <optional>
 
-#include "vv/io/SceneSource.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/segmentation/SceneSource.h"
 
 namespace vv::gui {
 
@@ -61,7 +61,7 @@ struct Session {
     /// the same vessels without asking. Only seriesInstanceUid, segmentation
     /// (range, keepComponents, seed, removeBone) and surface.targetTriangles
     /// are stored. Absent for meshes (and in older sessions).
-    std::optional<io::SceneSourceOptions> dicom;
+    std::optional<segmentation::SceneSourceOptions> dicom;
 };
 
 /// The version saveSession() writes.

@@ -24,7 +24,7 @@
 
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
-#include "vv/io/MeshSimplify.h"
+#include "vv/meshio/MeshSimplify.h"
 #include "vv/render/LegendPainter.h"
 
 namespace vv::gui {
@@ -165,7 +165,7 @@ void ViewerWidget::releaseGl() {
     doneCurrent();
 }
 
-void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
+void ViewerWidget::setScene(std::shared_ptr<const scene::Scene> scene) {
     scene_ = std::move(scene);
     startPreviewGeometry();
     startClosureCheck();
@@ -179,7 +179,7 @@ void ViewerWidget::setScene(std::shared_ptr<const io::Scene> scene) {
     requestFrame();
 }
 
-void ViewerWidget::setVolume(std::shared_ptr<const io::Volume> volume, float isoValue) {
+void ViewerWidget::setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue) {
     volume_ = std::move(volume);
     isoValue_ = isoValue;
     renderer_.setVolume(volume_, isoValue_);  // uploads lazily, no context needed
@@ -209,13 +209,13 @@ void ViewerWidget::cancelPreviewGeometry() {
 
 namespace {
 
-/// io::surfaceClosures, or every mesh Open (drawn two-sided, always right)
+/// scene::surfaceClosures, or every mesh Open (drawn two-sided, always right)
 /// when the check fails (bad indices: the upload reports those; no memory).
-std::vector<io::SurfaceClosure> closuresOf(const io::Scene& scene) {
+std::vector<scene::SurfaceClosure> closuresOf(const scene::Scene& scene) {
     try {
-        return io::surfaceClosures(scene);
+        return scene::surfaceClosures(scene);
     } catch (const std::exception&) {
-        return std::vector<io::SurfaceClosure>(scene.meshes.size(), io::SurfaceClosure::Open);
+        return std::vector<scene::SurfaceClosure>(scene.meshes.size(), scene::SurfaceClosure::Open);
     }
 }
 
@@ -228,7 +228,7 @@ void ViewerWidget::startClosureCheck() {
     if (!scene_) {
         return;
     }
-    const std::shared_ptr<const io::Scene> scene = scene_;
+    const std::shared_ptr<const scene::Scene> scene = scene_;
     closureFuture_ = QtConcurrent::run([scene] { return closuresOf(*scene); });
     auto* watcher = new QFutureWatcher<Closures>(this);
     connect(watcher, &QFutureWatcher<Closures>::finished, this, [this, watcher, scene] {
@@ -261,7 +261,7 @@ void ViewerWidget::startPreviewGeometry() {
     if (!worthIt(triangles, previewTriangles_)) {
         return;
     }
-    const std::shared_ptr<const io::Scene> scene = scene_;
+    const std::shared_ptr<const scene::Scene> scene = scene_;
     const std::size_t budget = previewTriangles_;
     previewFuture_ = QtConcurrent::run(
         [scene, budget, worthIt, stop = previewStop_.get_token()]() -> PreviewGeometry {
@@ -270,14 +270,14 @@ void ViewerWidget::startPreviewGeometry() {
                 // renderer draws the coarser one into small moving frames.
                 // Decimation may open a surface, so each copy is checked.
                 PreviewGeometry levels;
-                auto fine = std::make_shared<const io::Scene>(
-                    io::simplifiedScene(*scene, budget, Progress({}, stop)));
+                auto fine = std::make_shared<const scene::Scene>(
+                    meshio::simplifiedScene(*scene, budget, Progress({}, stop)));
                 levels.scenes.push_back(fine);
                 levels.closures.push_back(closuresOf(*fine));
                 const std::size_t coarse = budget / kPreviewLevelRatio;
                 if (worthIt(fine->triangleCount(), coarse)) {
-                    auto coarser = std::make_shared<const io::Scene>(
-                        io::simplifiedScene(*fine, coarse, Progress({}, stop)));
+                    auto coarser = std::make_shared<const scene::Scene>(
+                        meshio::simplifiedScene(*fine, coarse, Progress({}, stop)));
                     levels.closures.push_back(closuresOf(*coarser));
                     levels.scenes.push_back(std::move(coarser));
                 }
@@ -855,12 +855,12 @@ std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
         return result;
     }
     result.meshIndex = static_cast<int>(sample->objectId - 1U);
-    const io::Mesh& mesh = scene_->meshes[static_cast<std::size_t>(result.meshIndex)];
+    const scene::Mesh& mesh = scene_->meshes[static_cast<std::size_t>(result.meshIndex)];
     result.objectName = QString::fromStdString(mesh.name);
     // The array this object shows (its own choice or the scene's).
     const std::string& shown = style_.arrayOf(static_cast<std::size_t>(result.meshIndex));
     result.arrayName = QString::fromStdString(shown);
-    if (const io::DataArray* array = shown.empty() ? nullptr : mesh.pointArray(shown)) {
+    if (const scene::DataArray* array = shown.empty() ? nullptr : mesh.pointArray(shown)) {
         result.unit = QString::fromStdString(array->unit);
     }
     result.value = shown.empty() ? std::numeric_limits<float>::quiet_NaN() : sample->value;

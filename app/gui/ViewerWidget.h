@@ -15,13 +15,13 @@
 #include <stop_token>
 
 #include "vv/core/Image.h"
-#include "vv/io/Mesh.h"
-#include "vv/io/MeshTopology.h"
-#include "vv/io/Volume.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/scene/Mesh.h"
+#include "vv/scene/MeshTopology.h"
+#include "vv/scene/Volume.h"
 
 namespace vv::gui {
 
@@ -68,7 +68,7 @@ struct Measurement {
 /// full resolution (a frame follows when the solve arrives), else through
 /// the next, full-resolution frame. A newer request cancels a stale solve.
 /// Scenes with more than previewTriangles() triangles also get simplified
-/// copies (io::simplifiedScene, built on a worker thread after setScene())
+/// copies (meshio::simplifiedScene, built on a worker thread after setScene())
 /// that the geometry pass draws while the camera moves, the coarser one in
 /// small frames: on software rasterisers the triangle count, not the pixel
 /// count, bounds those frames.
@@ -101,16 +101,18 @@ class ViewerWidget : public QOpenGLWidget {
 
     /// Shows `scene` (nullptr clears) and fits the camera to it. The scene is
     /// shared, never modified.
-    void setScene(std::shared_ptr<const io::Scene> scene);
-    [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
+    void setScene(std::shared_ptr<const scene::Scene> scene);
+    [[nodiscard]] const std::shared_ptr<const scene::Scene>& scene() const noexcept {
+        return scene_;
+    }
     /// Ray casts `volume` as the iso-surface at `isoValue` after the scene's
     /// meshes (FrameRenderer::setVolume): the VSS, AO, cues and the probe
     /// work on it as on meshes (its probe gives position and depth, no
     /// value). nullptr = none. Keeps the camera; the volume's box joins the
     /// bounds that fitToData() and setScene() frame and that decide the clip
     /// planes. The volume is shared, never modified.
-    void setVolume(std::shared_ptr<const io::Volume> volume, float isoValue);
-    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+    void setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue);
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return volume_;
     }
     [[nodiscard]] float isoValue() const noexcept { return isoValue_; }
@@ -337,7 +339,7 @@ class ViewerWidget : public QOpenGLWidget {
     void settle();
     /// Starts building the simplified geometry of scene_ (cancelling an older build).
     void startPreviewGeometry();
-    /// Starts io::surfaceClosure of scene_'s meshes on a worker thread.
+    /// Starts scene::surfaceClosure of scene_'s meshes on a worker thread.
     void startClosureCheck();
     void cancelPreviewGeometry();
     /// What the next frame renders with (preview settings while moving).
@@ -355,12 +357,12 @@ class ViewerWidget : public QOpenGLWidget {
     std::uint64_t sceneRevision_ = 0;
     render::Camera camera_;
     render::MeshStyle style_;
-    std::shared_ptr<const io::Scene> scene_;
-    std::shared_ptr<const io::Volume> volume_;  ///< ray cast after the meshes, or null
+    std::shared_ptr<const scene::Scene> scene_;
+    std::shared_ptr<const scene::Volume> volume_;  ///< ray cast after the meshes, or null
     float isoValue_ = 0.0F;
-    using PreviewScenes = std::vector<std::shared_ptr<const io::Scene>>;
-    /// One io::SurfaceClosure per mesh of a scene.
-    using Closures = std::vector<io::SurfaceClosure>;
+    using PreviewScenes = std::vector<std::shared_ptr<const scene::Scene>>;
+    /// One scene::SurfaceClosure per mesh of a scene.
+    using Closures = std::vector<scene::SurfaceClosure>;
     /// What the background job makes: the simplified copies and their closures.
     struct PreviewGeometry {
         PreviewScenes scenes;

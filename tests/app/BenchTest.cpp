@@ -15,8 +15,8 @@
 #include <vector>
 
 #include "cli/Cli.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshWriter.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshWriter.h"
 #include "vv/vss/Pfm.h"
 
 namespace {
@@ -33,11 +33,11 @@ fs::path testDir() {
 /// A small demo tree written once as VTP.
 const fs::path& smallTree() {
     static const fs::path file = [] {
-        vv::io::DemoTreeOptions options;
+        vv::demo::DemoTreeOptions options;
         options.generations = 4;
         options.maxTriangles = 20000;
         const fs::path f = testDir() / "small-tree.vtp";
-        vv::io::writeVtp(vv::io::generateDemoMesh(options), f);
+        vv::meshio::writeVtp(vv::demo::generateDemoMesh(options), f);
         return f;
     }();
     return file;

@@ -23,8 +23,8 @@
 #include <vector>
 
 #include "cli/Cli.h"
-#include "vv/io/MeshLoader.h"
-#include "vv/io/MeshWriter.h"
+#include "vv/meshio/MeshLoader.h"
+#include "vv/meshio/MeshWriter.h"
 
 namespace {
 
@@ -312,25 +312,25 @@ class CliTest : public ::testing::Test {
     /// with one NaN, an all-NaN point array "gap", an int cell array "label".
     fs::path tetraVtp(const std::string& name = "tetra.vtp") const {
         const float nan = std::numeric_limits<float>::quiet_NaN();
-        vv::io::Mesh m;
+        vv::scene::Mesh m;
         m.positions = {{0, 0, 0}, {10, 0, 0}, {0, 20, 0}, {0, 0, 30}};
         m.indices = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
-        vv::io::computeNormals(m);
-        vv::io::DataArray wss;
+        vv::scene::computeNormals(m);
+        vv::scene::DataArray wss;
         wss.name = "wss";
         wss.unit = "Pa";
         wss.values = {0.5F, nan, 2.5F, 1.0F};
-        vv::io::DataArray gap;
+        vv::scene::DataArray gap;
         gap.name = "gap";
         gap.values = {nan, nan, nan, nan};
-        vv::io::DataArray label;
+        vv::scene::DataArray label;
         label.name = "label";
         label.integer = true;
         label.values = {1, 2, 3, 4};
         m.pointArrays = {wss, gap};
         m.cellArrays = {label};
         const auto file = dir_ / name;
-        vv::io::writeVtp(m, file);
+        vv::meshio::writeVtp(m, file);
         return file;
     }
 
@@ -538,7 +538,7 @@ TEST_F(CliTest, DemoWritesALoadableTree) {
     ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
     EXPECT_THAT(r.out, HasSubstr(file.string()));
     EXPECT_THAT(r.out, HasSubstr("vertices"));
-    const vv::io::Mesh mesh = vv::io::loadMesh(file);
+    const vv::scene::Mesh mesh = vv::meshio::loadMesh(file);
     EXPECT_GT(mesh.triangleCount(), 100U);
     EXPECT_THAT(r.out, HasSubstr(std::to_string(mesh.triangleCount()) + " triangles"));
     const auto* pressure = mesh.pointArray("pressure");

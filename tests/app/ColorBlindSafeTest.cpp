@@ -24,7 +24,7 @@
 #include "gui/DisplayPreset.h"
 #include "gui/panels/VssPanel.h"
 #include "vv/colormaps/ColorVision.h"
-#include "vv/io/MeshLoader.h"
+#include "vv/meshio/MeshLoader.h"
 
 namespace vv::test {
 namespace {
@@ -157,9 +157,9 @@ TEST_F(ColorBlindSafeTest, OneSwitchInMenuAndToolbarWithShortcut) {
 }
 
 TEST_F(ColorBlindSafeTest, DemoFrameHasNoRedGreenConfusionPairs) {
-    window_->setScene(
-        std::make_shared<const io::Scene>(io::loadScene({std::filesystem::path(VV_DEMO_VTP)})),
-        QStringLiteral("demo"));
+    window_->setScene(std::make_shared<const scene::Scene>(
+                          meshio::loadScene({std::filesystem::path(VV_DEMO_VTP)})),
+                      QStringLiteral("demo"));
     auto* viewer = window_->viewer();
     ASSERT_TRUE(waitForFrames());
     ASSERT_TRUE(waitForVss());

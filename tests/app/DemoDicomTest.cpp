@@ -16,7 +16,7 @@
 
 #include "CliRun.h"
 #include "cli/Cli.h"
-#include "vv/io/Dicom.h"
+#include "vv/dicom/Dicom.h"
 
 namespace {
 
@@ -62,19 +62,19 @@ TEST_F(DemoDicomTest, WritesAValidCtSeries) {
     }
     EXPECT_EQ(files, 80U);
 
-    const vv::io::DicomScanResult scan = vv::io::scanDicom(series());
+    const vv::dicom::DicomScanResult scan = vv::dicom::scanDicom(series());
     ASSERT_EQ(scan.patients.size(), 1U);
     ASSERT_EQ(scan.patients[0].studies.size(), 1U);
     ASSERT_EQ(scan.patients[0].studies[0].series.size(), 1U);
     EXPECT_TRUE(scan.skipped.empty());
-    const vv::io::DicomSeries& s = scan.patients[0].studies[0].series[0];
+    const vv::dicom::DicomSeries& s = scan.patients[0].studies[0].series[0];
     EXPECT_EQ(s.modality, "CT");
     EXPECT_EQ(s.imageCount, 80U);
     EXPECT_TRUE(s.unsupportedReason.empty()) << s.unsupportedReason;
 
-    const vv::io::DicomVolume loaded = vv::io::loadDicomVolume(series());
+    const vv::dicom::DicomVolume loaded = vv::dicom::loadDicomVolume(series());
     EXPECT_TRUE(loaded.warnings.empty());
-    const vv::io::Volume& v = loaded.volume;
+    const vv::scene::Volume& v = loaded.volume;
     EXPECT_EQ(v.dims(), glm::ivec3(96, 96, 80));
     // Tissue ~40 HU, lumen ~400 HU, bone ~1000 HU: the extremes are present.
     float lo = 1e9F;

@@ -23,7 +23,8 @@
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
 #include "gui/panels/DataPanel.h"
-#include "vv/io/DemoCtSeries.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/dicom/SeriesWriter.h"
 
 namespace {
 
@@ -41,18 +42,18 @@ class DicomGuiTest : public vv::test::GuiFixture {
     static void SetUpTestSuite() {
         GuiFixture::SetUpTestSuite();
         fs::remove_all(dicomDir());
-        vv::io::DemoCtOptions options;
+        vv::demo::DemoCtOptions options;
         options.dims = {64, 64, 48};
         options.generations = 3;
-        const vv::io::DemoCt cta = vv::io::generateDemoCt(options);
-        vv::io::CtSeriesWriteOptions write;
+        const vv::demo::DemoCt cta = vv::demo::generateDemoCt(options);
+        vv::dicom::CtSeriesWriteOptions write;
         write.seriesDescription = "demo CTA";
         write.patientName = "Demo^Patient";
-        demoUid_ = vv::io::writeCtSeries(dicomDir() / "two" / "a", cta.volume, write);
+        demoUid_ = vv::dicom::writeCtSeries(dicomDir() / "two" / "a", cta.volume, write);
         options.dims = {32, 32, 24};
-        const vv::io::DemoCt small = vv::io::generateDemoCt(options);
+        const vv::demo::DemoCt small = vv::demo::generateDemoCt(options);
         write.seriesDescription = "small CTA";
-        smallUid_ = vv::io::writeCtSeries(dicomDir() / "two" / "b", small.volume, write);
+        smallUid_ = vv::dicom::writeCtSeries(dicomDir() / "two" / "b", small.volume, write);
         std::ofstream(dicomDir() / "two" / "notes.txt") << "not DICOM\n";
         fs::create_directories(dicomDir() / "empty" / "sub");
         std::ofstream(dicomDir() / "empty" / "readme.txt") << "no images here\n";
@@ -100,7 +101,7 @@ TEST_F(DicomGuiTest, FolderWithTwoSeriesShowsTheChooserAndLoadsVessels) {
     ASSERT_TRUE(dialog->selectSeries(QString::fromStdString(demoUid_)));
     EXPECT_TRUE(dialog->boneRemoval()->isChecked());
     EXPECT_TRUE(dialog->automaticThreshold()->isChecked());
-    const vv::io::SceneSourceOptions options = dialog->sceneSourceOptions();
+    const vv::segmentation::SceneSourceOptions options = dialog->sceneSourceOptions();
     EXPECT_EQ(options.seriesInstanceUid, demoUid_);
     EXPECT_FALSE(options.segmentation.range.has_value());
     EXPECT_EQ(options.segmentation.keepComponents, 1);
@@ -159,7 +160,7 @@ TEST_F(DicomGuiTest, DroppedSeriesFolderLoadsWithChosenOptions) {
     dialog->automaticThreshold()->setChecked(false);
     dialog->componentsBox()->setValue(2);
     dialog->boneRemoval()->setChecked(false);
-    const vv::io::SceneSourceOptions options = dialog->sceneSourceOptions();
+    const vv::segmentation::SceneSourceOptions options = dialog->sceneSourceOptions();
     ASSERT_TRUE(options.segmentation.range.has_value());
     EXPECT_FLOAT_EQ(options.segmentation.range->lower, 200.0F);
     EXPECT_FLOAT_EQ(options.segmentation.range->upper, 700.0F);

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `vesselview-cli render DICOM_DIR`: the synthetic CTA round-trip series
-// (tests/io/SyntheticCta.h, written with DCMTK) segmented, extracted and
+// (tests/support/SyntheticCta.h, written with DCMTK) segmented, extracted and
 // rendered headlessly. Needs OpenGL: run under `xvfb-run -a` (QT_QPA_PLATFORM=xcb).
 #include <gtest/gtest.h>
 #include <unistd.h>

@@ -25,7 +25,8 @@
 #include "gui/ExportImageDialog.h"
 #include "gui/ExportWorker.h"
 #include "gui/ReportDialog.h"
-#include "vv/io/DemoCtSeries.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/dicom/SeriesWriter.h"
 #include "vv/report/ViewExport.h"
 
 namespace vv::test {
@@ -227,12 +228,12 @@ TEST_F(ExportGuiTest, AnonymiseOnlyForDicomData) {
 
 TEST_F(ExportGuiTest, DicomDataGivesThePatientBlockAndAnonymiseHidesIt) {
     const fs::path series = fs::absolute(dir_ / "series");
-    io::DemoCtOptions ct;
+    demo::DemoCtOptions ct;
     ct.dims = {64, 64, 48};
-    io::CtSeriesWriteOptions write;
+    dicom::CtSeriesWriteOptions write;
     write.patientName = "Testpatient^Erika";
     write.patientId = "EXPORT-42";
-    const std::string uid = io::writeCtSeries(series, io::generateDemoCt(ct).volume, write);
+    const std::string uid = dicom::writeCtSeries(series, demo::generateDemoCt(ct).volume, write);
     window_->openFiles({QString::fromStdString(series.string())});
     ASSERT_TRUE(waitUntil(
         [&] { return window_->viewer()->scene() != nullptr || !window_->lastError().isEmpty(); },

@@ -21,7 +21,7 @@
 
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
-#include "vv/io/Mesh.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::test {
 
@@ -47,12 +47,12 @@ inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) 
 }
 
 /// A tube along x with "wss" (0..30, rising along it) and "pressure" arrays.
-inline std::shared_ptr<const io::Scene> makeTubeScene(bool withArrays = true) {
-    auto scene = std::make_shared<io::Scene>();
-    io::Mesh tube;
+inline std::shared_ptr<const scene::Scene> makeTubeScene(bool withArrays = true) {
+    auto scene = std::make_shared<scene::Scene>();
+    scene::Mesh tube;
     tube.name = "tube";
-    io::DataArray wss{"wss", "Pa", 1, {}, false, false};
-    io::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
+    scene::DataArray wss{"wss", "Pa", 1, {}, false, false};
+    scene::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
     constexpr int kSegments = 32;
     constexpr int kRings = 30;
     for (int i = 0; i <= kRings; ++i) {

@@ -65,7 +65,7 @@ bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
 }
 
 /// A tube along x with "wss" rising along it and "pressure" falling (GuiFixture.h).
-std::shared_ptr<const vv::io::Scene> makeScene() {
+std::shared_ptr<const vv::scene::Scene> makeScene() {
     return vv::test::makeTubeScene();
 }
 

@@ -32,7 +32,7 @@ TEST(LightOption, GoodValuesBecomeTheLightAngles) {
     EXPECT_FLOAT_EQ(v.light.azimuth, 12.5F);
     // The default is the renderer's default light; offscreenOptions passes it on.
     EXPECT_EQ(vv::cli::RenderOptionValues{}.light, vv::render::LightAngles{});
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     vv::cli::RenderOptionValues values;
     values.light = {45.0F, 10.0F};
     values.array = "";

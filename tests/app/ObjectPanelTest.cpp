@@ -28,9 +28,9 @@ namespace {
 class ObjectPanelTest : public GuiFixture {
   protected:
     /// The tube (with arrays) and a copy beside it without arrays.
-    static std::shared_ptr<const io::Scene> twoObjects() {
-        auto scene = std::make_shared<io::Scene>(*makeTubeScene());
-        io::Mesh copy = scene->meshes.front();
+    static std::shared_ptr<const scene::Scene> twoObjects() {
+        auto scene = std::make_shared<scene::Scene>(*makeTubeScene());
+        scene::Mesh copy = scene->meshes.front();
         copy.name = "copy";
         copy.pointArrays.clear();
         for (auto& p : copy.positions) {
@@ -41,7 +41,7 @@ class ObjectPanelTest : public GuiFixture {
     }
 
     /// Shows `scene` and waits for its first frame and exact VSS.
-    [[nodiscard]] bool show(std::shared_ptr<const io::Scene> scene) {
+    [[nodiscard]] bool show(std::shared_ptr<const scene::Scene> scene) {
         window_->setScene(std::move(scene), QStringLiteral("objects"));
         return waitForFrames() && waitForVss();
     }

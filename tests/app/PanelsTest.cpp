@@ -472,8 +472,8 @@ TEST_F(PanelsTest, DataPanelListsMeshesAndArrays) {
 
 TEST_F(PanelsTest, DataPanelHidesAndShowsSingleMeshes) {
     // The tube and a copy of it beside it.
-    auto scene = std::make_shared<io::Scene>(*makeTubeScene());
-    io::Mesh copy = scene->meshes.front();
+    auto scene = std::make_shared<scene::Scene>(*makeTubeScene());
+    scene::Mesh copy = scene->meshes.front();
     copy.name = "copy";
     for (auto& p : copy.positions) {
         p.y += 8.0F;

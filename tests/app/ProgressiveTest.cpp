@@ -27,8 +27,8 @@
 
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshLoader.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshLoader.h"
 #include "vv/render/MeshRenderer.h"
 
 namespace {
@@ -63,7 +63,7 @@ bool waitUntil(const std::function<bool()>& done, int timeoutMs = 60000) {
 }
 
 /// A tube of radius r from a to b (axis along x or y).
-void addTube(vv::io::Mesh& mesh, glm::vec3 a, glm::vec3 b, float r) {
+void addTube(vv::scene::Mesh& mesh, glm::vec3 a, glm::vec3 b, float r) {
     constexpr int kSegments = 24;
     constexpr int kRings = 24;
     const glm::vec3 axis = glm::normalize(b - a);
@@ -90,9 +90,9 @@ void addTube(vv::io::Mesh& mesh, glm::vec3 a, glm::vec3 b, float r) {
 }
 
 /// Three tubes at different depths: a VSS with a real slope between them.
-std::shared_ptr<const vv::io::Scene> makeScene() {
-    auto scene = std::make_shared<vv::io::Scene>();
-    vv::io::Mesh mesh;
+std::shared_ptr<const vv::scene::Scene> makeScene() {
+    auto scene = std::make_shared<vv::scene::Scene>();
+    vv::scene::Mesh mesh;
     mesh.name = "tubes";
     addTube(mesh, {-20, -12, 0}, {20, -12, 0}, 2.0F);
     addTube(mesh, {-20, 12, -25}, {20, 12, -25}, 2.0F);
@@ -167,7 +167,7 @@ class ProgressiveTest : public ::testing::Test {
     }
 
     /// A main window at `w` x `h` showing `scene` with the VSS on.
-    ViewerWidget& open(std::shared_ptr<const vv::io::Scene> scene, int w, int h,
+    ViewerWidget& open(std::shared_ptr<const vv::scene::Scene> scene, int w, int h,
                        const vv::render::VssSettings* vss = nullptr) {
         window_ = std::make_unique<vv::gui::MainWindow>();
         window_->resize(w, h);
@@ -606,11 +606,11 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
 }
 
 TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout) {
-    vv::io::DemoTreeOptions demo;
+    vv::demo::DemoTreeOptions demo;
     demo.generations = 3;
     demo.maxTriangles = 20000;
-    auto tree = std::make_shared<vv::io::Scene>();
-    tree->meshes.push_back(vv::io::generateDemoMesh(demo));
+    auto tree = std::make_shared<vv::scene::Scene>();
+    tree->meshes.push_back(vv::demo::generateDemoMesh(demo));
     ViewerWidget& viewer = open(tree, 400, 300);
     // The closures are checked on a worker thread; frames before that draw
     // both sides.
@@ -674,8 +674,8 @@ class PassTable {
 // A benchmark, not a test of speed: it prints a table and is run by hand (see
 // docs/benchmarks/render.md) with --gtest_also_run_disabled_tests.
 TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
-    auto scene = std::make_shared<const vv::io::Scene>(
-        vv::io::loadScene({std::filesystem::path(VV_DEMO_VTP)}));
+    auto scene = std::make_shared<const vv::scene::Scene>(
+        vv::meshio::loadScene({std::filesystem::path(VV_DEMO_VTP)}));
     ViewerWidget& viewer = open(scene, 1280, 720);
     // VV_BENCH_PASSES=1: per-pass GPU times too (waiting for the timers
     // serialises the frame a little, so fps are measured without them).

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `vesselview-cli render DICOM_DIR --raycast [--iso HU]`: the synthetic CTA
-// series (tests/io/SyntheticCta.h, written with DCMTK) ray cast directly as an
+// series (tests/support/SyntheticCta.h, written with DCMTK) ray cast directly as an
 // iso-surface (volume depth source, no segmentation) with the VSS.
 // Needs OpenGL: run under `xvfb-run -a` (QT_QPA_PLATFORM=xcb).
 #include <gtest/gtest.h>
@@ -18,6 +18,7 @@
 #include "DicomTestUtil.h"
 #include "SyntheticCta.h"
 #include "cli/Cli.h"
+#include "vv/dicom/SeriesWriter.h"
 #include "vv/vss/Pfm.h"
 
 namespace {

@@ -2,7 +2,7 @@
 // `vesselview-cli report` through vv::cli::run. Rendering needs OpenGL: run
 // under `xvfb-run -a` (QT_QPA_PLATFORM=xcb). The PDF text is read back with
 // pdftotext (poppler-utils) and the DICOM files with dcmdump (dcmtk). The
-// DICOM input is the synthetic CTA series of tests/io (SyntheticCta.h).
+// DICOM input is the synthetic CTA series of tests/support (SyntheticCta.h).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -21,8 +21,9 @@
 #include "ReportTestUtil.h"
 #include "SyntheticCta.h"
 #include "cli/Cli.h"
-#include "vv/io/Mesh.h"
-#include "vv/io/MeshWriter.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/meshio/MeshWriter.h"
+#include "vv/scene/Mesh.h"
 
 namespace {
 
@@ -44,10 +45,10 @@ fs::path freshDir(const std::string& name) {
 }
 
 /// An open tube along x (radius 1, length 20) with "wss" (Pa) rising 0..10.
-vv::io::Mesh tube(bool withArray) {
+vv::scene::Mesh tube(bool withArray) {
     constexpr int kSegments = 24;
     constexpr int kRings = 20;
-    vv::io::Mesh mesh;
+    vv::scene::Mesh mesh;
     mesh.name = "tube";
     std::vector<float> wss;
     for (int i = 0; i <= kRings; ++i) {
@@ -68,21 +69,21 @@ vv::io::Mesh tube(bool withArray) {
         }
     }
     if (withArray) {
-        mesh.pointArrays.push_back(vv::io::DataArray{.name = "wss",
-                                                     .unit = "Pa",
-                                                     .components = 1,
-                                                     .values = wss,
-                                                     .integer = false,
-                                                     .fromCells = false});
+        mesh.pointArrays.push_back(vv::scene::DataArray{.name = "wss",
+                                                        .unit = "Pa",
+                                                        .components = 1,
+                                                        .values = wss,
+                                                        .integer = false,
+                                                        .fromCells = false});
     }
-    vv::io::computeNormals(mesh);
+    vv::scene::computeNormals(mesh);
     return mesh;
 }
 
 /// The tube written as `dir`/`name`.vtp.
 fs::path writeTube(const fs::path& dir, const std::string& name, bool withArray = true) {
     const fs::path file = dir / (name + ".vtp");
-    vv::io::writeVtp(tube(withArray), file);
+    vv::meshio::writeVtp(tube(withArray), file);
     return file;
 }
 

@@ -32,7 +32,8 @@
 #include "gui/SeriesDialog.h"
 #include "gui/Session.h"
 #include "gui/panels/SegmentationPanel.h"
-#include "vv/io/DemoCtSeries.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/dicom/SeriesWriter.h"
 
 namespace vv::test {
 namespace {
@@ -45,7 +46,7 @@ fs::path seriesDir() {
 
 /// The number of vertices of `scene` whose world position satisfies `keep`.
 template <typename Predicate>
-std::size_t countVertices(const io::Scene& scene, Predicate keep) {
+std::size_t countVertices(const scene::Scene& scene, Predicate keep) {
     std::size_t n = 0;
     for (const auto& mesh : scene.meshes) {
         for (const glm::vec3& p : mesh.positions) {
@@ -55,7 +56,7 @@ std::size_t countVertices(const io::Scene& scene, Predicate keep) {
     return n;
 }
 
-std::size_t vertexCount(const io::Scene& scene) {
+std::size_t vertexCount(const scene::Scene& scene) {
     return countVertices(scene, [](const glm::dvec3&) { return true; });
 }
 
@@ -74,7 +75,7 @@ double litFraction(const QImage& image, const glm::vec3& srgb) {
     return static_cast<double>(lit) / (static_cast<double>(image.width()) * image.height());
 }
 
-std::size_t triangleCount(const io::Scene& scene) {
+std::size_t triangleCount(const scene::Scene& scene) {
     std::size_t n = 0;
     for (const auto& mesh : scene.meshes) {
         n += mesh.triangleCount();
@@ -90,7 +91,7 @@ class SegmentationGuiTest : public GuiFixture {
         GuiFixture::SetUpTestSuite();
         fs::remove_all(seriesDir());
         cta_ = std::make_unique<SyntheticCta>(makeSyntheticCta({64, 64, 48}, 3));
-        io::writeCtSeries(seriesDir(), cta_->volume);
+        dicom::writeCtSeries(seriesDir(), cta_->volume);
     }
     static void TearDownTestSuite() {
         std::error_code ec;
@@ -184,45 +185,6 @@ class SegmentationGuiTest : public GuiFixture {
 
     static inline std::unique_ptr<SyntheticCta> cta_;
 };
-
-TEST(SegmentationTaskTest, DownsamplingKeepsWorldPositionsAndFindsInRangeSeeds) {
-    io::Volume volume({9, 8, 7}, io::VoxelType::Int16);
-    glm::dmat4 m(1.0);
-    m[0] = glm::dvec4(0.5, 0.0, 0.0, 0.0);
-    m[1] = glm::dvec4(0.0, 0.7, 0.1, 0.0);
-    m[2] = glm::dvec4(0.0, 0.0, 1.5, 0.0);
-    m[3] = glm::dvec4(-3.0, 2.0, 1.0, 1.0);
-    volume.setIndexToWorld(m);
-    volume.setModality("CT");
-    for (std::size_t n = 0; n < volume.voxelCount(); ++n) {
-        volume.setValueAt(n, static_cast<float>(n % 1000));
-    }
-    const io::Volume coarse = gui::downsampledVolume(volume, 2);
-    EXPECT_EQ(coarse.dims(), glm::ivec3(5, 4, 4));
-    EXPECT_EQ(coarse.modality(), "CT");
-    for (const glm::ivec3 c : {glm::ivec3(0, 0, 0), glm::ivec3(4, 3, 3), glm::ivec3(2, 1, 3)}) {
-        EXPECT_EQ(coarse.value(c.x, c.y, c.z), volume.value(2 * c.x, 2 * c.y, 2 * c.z));
-        const glm::dvec3 a = coarse.worldPosition(glm::dvec3(c));
-        const glm::dvec3 b = volume.worldPosition(glm::dvec3(2 * c));
-        EXPECT_LT(glm::length(a - b), 1e-9);
-    }
-    EXPECT_THROW((void)gui::downsampledVolume(volume, 0), InvalidArgumentError);
-
-    // The seed search: the nearest in-range voxel within the radius, else none.
-    io::Volume ball({11, 11, 11}, io::VoxelType::Int16);
-    ball.setValueAt(ball.index(7, 5, 5), 400.0F);
-    ball.setValueAt(ball.index(3, 5, 5), 400.0F);
-    const auto near = gui::nearestVoxelInRange(ball, {6.2, 5.0, 5.0}, 200.0F, 700.0F, 2);
-    ASSERT_TRUE(near.has_value());
-    EXPECT_EQ(*near, glm::ivec3(7, 5, 5));
-    EXPECT_FALSE(gui::nearestVoxelInRange(ball, {5.0, 5.0, 5.0}, 200.0F, 700.0F, 1).has_value());
-    EXPECT_FALSE(gui::nearestVoxelInRange(ball, {6.2, 5.0, 5.0}, 500.0F, 700.0F, 3).has_value());
-
-    // Previews: at least every 2nd voxel, within the budget, not below 8 voxels an axis.
-    EXPECT_EQ(gui::previewStep({64, 64, 48}, 400000), 2);
-    EXPECT_EQ(gui::previewStep({512, 512, 400}, 400000), 7);
-    EXPECT_EQ(gui::previewStep({512, 512, 12}, 400000), 1);
-}
 
 TEST_F(SegmentationGuiTest, PanelIsOnlyEnabledForScenesFromAVolume) {
     window_->setScene(makeTubeScene(), QStringLiteral("tube"));
@@ -520,7 +482,7 @@ TEST_F(SegmentationGuiTest, VolumeTooBigToRayCastFallsBackToTheSurface) {
     gui::ViewerWidget* viewer = window_->viewer();
     const auto meshes = viewer->scene();
     // 40,000 slices: more than any GPU's 3-D texture side (llvmpipe: 2048).
-    auto huge = std::make_shared<io::Volume>(glm::ivec3(2, 2, 40000), io::VoxelType::Int16);
+    auto huge = std::make_shared<scene::Volume>(glm::ivec3(2, 2, 40000), scene::VoxelType::Int16);
     panel()->setVolume(huge);
     bool volumeFailed = false;
     bool renderFailed = false;

@@ -160,9 +160,9 @@ TEST(SessionFile, TheDicomSourceRoundTripsAndIsChecked) {
     EXPECT_FALSE(gui::sessionFromJson(gui::sessionToJson(s, sessionDir() / "x.vvs"),
                                       sessionDir() / "x.vvs")
                      .dicom.has_value());  // meshes: none
-    io::SceneSourceOptions dicom;
+    segmentation::SceneSourceOptions dicom;
     dicom.seriesInstanceUid = "1.2.826.0.1.3680043.2.1125.5";
-    dicom.segmentation.range = io::ThresholdRange{250.0F, 650.0F, "chosen"};
+    dicom.segmentation.range = segmentation::ThresholdRange{250.0F, 650.0F, "chosen"};
     dicom.segmentation.keepComponents = 3;
     dicom.segmentation.seed = glm::ivec3(4, 5, 6);
     dicom.segmentation.removeBone = false;

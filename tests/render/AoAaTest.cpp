@@ -16,7 +16,7 @@
 
 #include "RenderTestUtil.h"
 #include "vv/core/Error.h"
-#include "vv/io/DemoTree.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/render/OffscreenRenderer.h"
 
 namespace {
@@ -26,7 +26,7 @@ using vv::render::OffscreenRenderer;
 using vv::render::PassState;
 
 /// A near tube on top and a far tube below (as in VssRenderTest).
-vv::io::Scene twoTubes() {
+vv::scene::Scene twoTubes() {
     return vv::render::test::twoTubes(1.0F, 4.0F, 48, 24);
 }
 
@@ -74,7 +74,7 @@ class AoAaTest : public vv::render::test::GlRenderTest {
     static OffscreenOptions options() { return vv::render::test::exactOptions(240, 180); }
 
     /// Vessel pixels: those that differ from the background with the VSS off.
-    static std::vector<bool> vesselMask(OffscreenRenderer& renderer, const vv::io::Scene& scene,
+    static std::vector<bool> vesselMask(OffscreenRenderer& renderer, const vv::scene::Scene& scene,
                                         OffscreenOptions o) {
         o.vss.enabled = false;
         o.ao.enabled = false;
@@ -239,10 +239,10 @@ TEST_F(AoAaTest, VssLightingHasNoBrightSpecksAlongContours) {
     ASSERT_TRUE(renderer);
     // A small demo tree: many branch tips and bends, where the old
     // one-pixel gradient gave isolated specular specks next to contours.
-    vv::io::DemoTreeOptions demo;
+    vv::demo::DemoTreeOptions demo;
     demo.generations = 5;
-    vv::io::Scene scene;
-    scene.meshes.push_back(vv::io::generateDemoMesh(demo));
+    vv::scene::Scene scene;
+    scene.meshes.push_back(vv::demo::generateDemoMesh(demo));
     auto o = options();
     o.width = 640;
     o.height = 360;

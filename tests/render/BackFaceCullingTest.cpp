@@ -11,12 +11,12 @@
 #include <glm/gtc/quaternion.hpp>
 #include <limits>
 
-#include "../support/TestMeshes.h"
 #include "RenderTestUtil.h"
-#include "vv/io/DemoTree.h"
-#include "vv/io/MeshTopology.h"
+#include "TestMeshes.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/render/BackFaceCulling.h"
 #include "vv/render/OffscreenRenderer.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace vv::render {
 namespace {
@@ -27,10 +27,10 @@ using vv::test::merged;
 
 /// test::makeTube with both ends capped by a fan: closed, wound like the
 /// tube (clockwise seen from outside).
-io::Mesh cappedTube(float radius, float x0, float length, float y, float z) {
+scene::Mesh cappedTube(float radius, float x0, float length, float y, float z) {
     constexpr int kSegments = 24;
     constexpr int kRings = 8;
-    io::Mesh mesh = test::makeTube(radius, x0, length, y, z, kSegments, kRings);
+    scene::Mesh mesh = test::makeTube(radius, x0, length, y, z, kSegments, kRings);
     mesh.normals.clear();
     const auto segs = static_cast<std::uint32_t>(kSegments);
     const auto first = static_cast<std::uint32_t>(mesh.positions.size());
@@ -55,15 +55,15 @@ View looking(glm::vec3 eye, glm::vec3 at, float nearPlane) {
             glm::perspective(glm::radians(40.0F), 1.25F, nearPlane, 100.0F)};
 }
 
-CullFace decide(const io::Mesh& mesh, const View& v) {
-    return cullableFaces(mesh, io::surfaceClosure(mesh), mesh.bounds(), v.view, v.projection);
+CullFace decide(const scene::Mesh& mesh, const View& v) {
+    return cullableFaces(mesh, scene::surfaceClosure(mesh), mesh.bounds(), v.view, v.projection);
 }
 
 TEST(BackFaceCullingTest, AClosedSurfaceSeenFromOutsideCullsItsBackOrItsFrontIfInward) {
-    const io::Mesh outward = cube(glm::vec3(0.0F));
+    const scene::Mesh outward = cube(glm::vec3(0.0F));
     const View v = looking({4.0F, 3.0F, 2.0F}, {0.5F, 0.5F, 0.5F}, 0.1F);
     EXPECT_EQ(decide(outward, v), CullFace::Back);
-    io::Mesh inward = outward;
+    scene::Mesh inward = outward;
     flipAll(inward);
     EXPECT_EQ(decide(inward, v), CullFace::Front);
     // A mirrored projection turns the screen's winding around.
@@ -74,13 +74,13 @@ TEST(BackFaceCullingTest, AClosedSurfaceSeenFromOutsideCullsItsBackOrItsFrontIfI
 }
 
 TEST(BackFaceCullingTest, AnOpenSurfaceIsNeverCulled) {
-    io::Mesh open = cube(glm::vec3(0.0F));
+    scene::Mesh open = cube(glm::vec3(0.0F));
     open.indices.resize(open.indices.size() - 6);  // one face removed
     EXPECT_EQ(decide(open, looking({4.0F, 3.0F, 2.0F}, {0.5F, 0.5F, 0.5F}, 0.1F)), CullFace::None);
 }
 
 TEST(BackFaceCullingTest, AnEyeInsideTheSolidOrANearPlaneThroughItCullsNothing) {
-    const io::Mesh mesh = cube(glm::vec3(0.0F));
+    const scene::Mesh mesh = cube(glm::vec3(0.0F));
     // Inside: every surface it sees is a back face.
     EXPECT_EQ(decide(mesh, looking({0.5F, 0.5F, 0.5F}, {0.5F, 2.0F, 0.5F}, 0.01F)), CullFace::None);
     // Outside, but the near plane (at y = 0.5) cuts the cube: through the cut
@@ -92,7 +92,7 @@ TEST(BackFaceCullingTest, AnEyeInsideTheSolidOrANearPlaneThroughItCullsNothing) 
 
 TEST(BackFaceCullingTest, AnEyeBetweenPartsCountsTheWindingToKnowItIsOutside) {
     // Two cubes; the eye between them is inside the mesh's bounds.
-    const io::Mesh two = merged(cube(glm::vec3(0.0F)), cube(glm::vec3(3.0F, 0.0F, 0.0F)));
+    const scene::Mesh two = merged(cube(glm::vec3(0.0F)), cube(glm::vec3(3.0F, 0.0F, 0.0F)));
     EXPECT_EQ(decide(two, looking({2.0F, 0.5F, 0.5F}, {4.0F, 0.5F, 0.5F}, 0.01F)), CullFace::Back);
     // Inside the second cube.
     EXPECT_EQ(decide(two, looking({3.5F, 0.5F, 0.5F}, {5.0F, 0.5F, 0.5F}, 0.01F)), CullFace::None);
@@ -101,21 +101,21 @@ TEST(BackFaceCullingTest, AnEyeBetweenPartsCountsTheWindingToKnowItIsOutside) {
               CullFace::None);
     // A hollow box: a big outward cube around a small inward one is one
     // surface with an outward part and an inward part, so it is open to culling.
-    io::Mesh cavity = cube(glm::vec3(1.0F), 1.0F);
+    scene::Mesh cavity = cube(glm::vec3(1.0F), 1.0F);
     flipAll(cavity);
-    const io::Mesh hollow = merged(cube(glm::vec3(0.0F), 3.0F), cavity);
-    EXPECT_EQ(io::surfaceClosure(hollow), io::SurfaceClosure::Open);
+    const scene::Mesh hollow = merged(cube(glm::vec3(0.0F), 3.0F), cavity);
+    EXPECT_EQ(scene::surfaceClosure(hollow), scene::SurfaceClosure::Open);
     EXPECT_EQ(decide(hollow, looking({6.0F, 5.0F, 4.0F}, {1.5F, 1.5F, 1.5F}, 0.1F)),
               CullFace::None);
 }
 
 TEST(BackFaceCullingTest, NonFiniteMatricesCullNothing) {
-    const io::Mesh mesh = cube(glm::vec3(0.0F));
+    const scene::Mesh mesh = cube(glm::vec3(0.0F));
     View v = looking({4.0F, 3.0F, 2.0F}, {0.5F, 0.5F, 0.5F}, 0.1F);
     v.view[3][0] = std::numeric_limits<float>::quiet_NaN();
     EXPECT_EQ(decide(mesh, v), CullFace::None);
-    EXPECT_EQ(cullableFaces(mesh, io::SurfaceClosure::ClosedOutward, mesh.bounds(), glm::mat4(0.0F),
-                            glm::mat4(1.0F)),
+    EXPECT_EQ(cullableFaces(mesh, scene::SurfaceClosure::ClosedOutward, mesh.bounds(),
+                            glm::mat4(0.0F), glm::mat4(1.0F)),
               CullFace::None);
 }
 
@@ -128,7 +128,7 @@ class CulledRenderTest : public test::GlRenderTest {
         QImage image;
         std::size_t culled = 0;
     };
-    Result renderWith(OffscreenRenderer& renderer, const io::Scene& scene,
+    Result renderWith(OffscreenRenderer& renderer, const scene::Scene& scene,
                       const OffscreenOptions& options, bool culling) {
         renderer.setBackFaceCulling(culling);
         Result r;
@@ -143,7 +143,7 @@ class CulledRenderTest : public test::GlRenderTest {
     /// the front one, a hair nearer or farther: such pixels are allowed, one
     /// in a thousand, each within 1e-3 of its depth. A wrong face culled
     /// would move every vessel pixel to the far side.
-    std::size_t expectSame(const io::Scene& scene, const OffscreenOptions& options,
+    std::size_t expectSame(const scene::Scene& scene, const OffscreenOptions& options,
                            const std::string& name) {
         auto renderer = makeRenderer();
         if (!renderer) {
@@ -193,12 +193,12 @@ class CulledRenderTest : public test::GlRenderTest {
 };
 
 TEST_F(CulledRenderTest, TheDemoTreeFromOutsideIsCulledAndLooksTheSame) {
-    io::DemoTreeOptions demo;
+    demo::DemoTreeOptions demo;
     demo.generations = 4;
     demo.maxTriangles = 60000;
-    io::Scene scene;
-    scene.meshes.push_back(io::generateDemoMesh(demo));
-    ASSERT_EQ(io::surfaceClosure(scene.meshes[0]), io::SurfaceClosure::ClosedOutward);
+    scene::Scene scene;
+    scene.meshes.push_back(demo::generateDemoMesh(demo));
+    ASSERT_EQ(scene::surfaceClosure(scene.meshes[0]), scene::SurfaceClosure::ClosedOutward);
     OffscreenOptions options = test::exactOptions(320, 240);
     options.style.array = "wss";
     options.vss.enabled = true;
@@ -214,11 +214,11 @@ TEST_F(CulledRenderTest, EachSceneIsCulledByItsOwnClosures) {
     // One renderer, one mesh each: the closed tube, the same tube open (its
     // caps removed: the inside shows through the ends), then closed again.
     // Closures kept from the previous scene would cull the open one.
-    io::Scene closed;
+    scene::Scene closed;
     closed.meshes.push_back(cappedTube(2.0F, -10.0F, 20.0F, 0.0F, 0.0F));
-    io::Scene open = closed;
+    scene::Scene open = closed;
     open.meshes[0].indices.resize(open.meshes[0].indices.size() - 6 * 24);
-    ASSERT_EQ(io::surfaceClosure(open.meshes[0]), io::SurfaceClosure::Open);
+    ASSERT_EQ(scene::surfaceClosure(open.meshes[0]), scene::SurfaceClosure::Open);
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
     const OffscreenOptions options = test::exactOptions(120, 90);
@@ -231,9 +231,9 @@ TEST_F(CulledRenderTest, EachSceneIsCulledByItsOwnClosures) {
 }
 
 TEST_F(CulledRenderTest, InsideAClosedTubeNothingIsCulledAndTheWallsShow) {
-    io::Scene scene;
+    scene::Scene scene;
     scene.meshes.push_back(cappedTube(2.0F, -10.0F, 20.0F, 0.0F, 0.0F));
-    ASSERT_EQ(io::surfaceClosure(scene.meshes[0]), io::SurfaceClosure::ClosedInward);
+    ASSERT_EQ(scene::surfaceClosure(scene.meshes[0]), scene::SurfaceClosure::ClosedInward);
     OffscreenOptions options = test::exactOptions(160, 120);
     Camera outside = OffscreenRenderer::cameraFor(scene, options);
     options.camera = outside;
@@ -249,7 +249,7 @@ TEST_F(CulledRenderTest, InsideAClosedTubeNothingIsCulledAndTheWallsShow) {
 }
 
 TEST_F(CulledRenderTest, BetweenTwoClosedTubesBothAreCulled) {
-    io::Scene scene;
+    scene::Scene scene;
     scene.meshes.push_back(cappedTube(1.0F, -10.0F, 20.0F, 3.0F, 0.0F));
     scene.meshes.push_back(cappedTube(1.0F, -10.0F, 20.0F, -3.0F, 0.0F));
     OffscreenOptions options = test::exactOptions(160, 120);

@@ -126,8 +126,8 @@ TEST(DepthRasterizerTest, CameraOverloadGivesTheDistanceToAFacingQuad) {
     camera.fit(bounds);
     camera.setTarget(glm::vec3(0.0F));
     camera.setDistance(6.0F);
-    vv::io::Scene scene;
-    vv::io::Mesh mesh;
+    vv::scene::Scene scene;
+    vv::scene::Mesh mesh;
     mesh.positions = {{-1, -1, 0}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0}};
     mesh.indices = {0, 1, 2, 0, 2, 3};
     scene.meshes.push_back(mesh);

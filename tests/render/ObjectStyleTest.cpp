@@ -30,9 +30,9 @@ using vv::render::OffscreenOptions;
 using vv::render::PassState;
 
 /// Adds a point array `name` = a * x + b to every mesh.
-void addArray(vv::io::Scene& scene, const std::string& name, float a, float b) {
+void addArray(vv::scene::Scene& scene, const std::string& name, float a, float b) {
     for (auto& mesh : scene.meshes) {
-        vv::io::DataArray array;
+        vv::scene::DataArray array;
         array.name = name;
         array.unit = "u";
         array.components = 1;
@@ -45,8 +45,8 @@ void addArray(vv::io::Scene& scene, const std::string& name, float a, float b) {
 
 /// The near tube on top (mesh 0, z = +4) and the far one below (mesh 1), with
 /// arrays "speed" (1..3) and "pressure" (100..300).
-vv::io::Scene scene() {
-    vv::io::Scene s = vv::render::test::twoTubes(1.5F, 4.0F, 40, 16);
+vv::scene::Scene scene() {
+    vv::scene::Scene s = vv::render::test::twoTubes(1.5F, 4.0F, 40, 16);
     addArray(s, "speed", 0.1F, 2.0F);
     addArray(s, "pressure", 10.0F, 200.0F);
     return s;
@@ -72,8 +72,8 @@ class FrameHarness {
     FrameHarness(const FrameHarness&) = delete;
     FrameHarness& operator=(const FrameHarness&) = delete;
 
-    void setScene(const vv::io::Scene& s) {
-        renderer_.meshRenderer().setScene(std::make_shared<const vv::io::Scene>(s));
+    void setScene(const vv::scene::Scene& s) {
+        renderer_.meshRenderer().setScene(std::make_shared<const vv::scene::Scene>(s));
         camera_.setViewport(width_, height_);
         camera_.fit(s.bounds());
     }
@@ -230,7 +230,7 @@ TEST_F(ObjectStyleTest, ObjectColourChangesOnlyThatObjectsPixels) {
 TEST_F(ObjectStyleTest, AnObjectsOwnArrayColoursOnlyItWithItsOwnRange) {
     const auto harness = makeHarness();
     ASSERT_TRUE(harness);
-    const vv::io::Scene s = scene();
+    const vv::scene::Scene s = scene();
     harness->setScene(s);
     MeshStyle style;
     style.array = "speed";
@@ -279,7 +279,7 @@ TEST_F(ObjectStyleTest, AnObjectsOwnArrayColoursOnlyItWithItsOwnRange) {
 TEST_F(ObjectStyleTest, HalfOpacityShowsTheVssThroughAndZeroHides) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    const vv::io::Scene s = scene();
+    const vv::scene::Scene s = scene();
     // Where the near tube is: the pixels it covers alone, without a VSS.
     OffscreenOptions alone = options(false);
     alone.style.hidden = {1};
@@ -317,7 +317,7 @@ TEST_F(ObjectStyleTest, HalfOpacityShowsTheVssThroughAndZeroHides) {
 }
 
 TEST_F(ObjectStyleTest, ASecondArrayAddsASecondLegend) {
-    vv::io::Scene s = scene();
+    vv::scene::Scene s = scene();
     MeshStyle style;
     style.array = "speed";
     vv::render::FrameSettings settings;
@@ -369,7 +369,7 @@ TEST_F(ObjectStyleTest, ASecondArrayAddsASecondLegend) {
 TEST_F(ObjectStyleTest, LightDirectionReshadesVesselsAndVssWithoutANewSolve) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    const vv::io::Scene s = scene();
+    const vv::scene::Scene s = scene();
     const QImage vesselsOnly = renderer->render(s, options(false));
     OffscreenOptions o = options(true);
     const QImage before = renderer->render(s, o);

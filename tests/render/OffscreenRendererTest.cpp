@@ -22,10 +22,10 @@ using vv::render::OffscreenOptions;
 using vv::render::OffscreenRenderer;
 
 /// A UV sphere of `radius` around `center` with a "wss" array equal to z.
-vv::io::Mesh makeSphere(float radius, glm::vec3 center, int slices = 48, int stacks = 24) {
-    vv::io::Mesh mesh;
+vv::scene::Mesh makeSphere(float radius, glm::vec3 center, int slices = 48, int stacks = 24) {
+    vv::scene::Mesh mesh;
     mesh.name = "sphere";
-    vv::io::DataArray wss{"wss", "Pa", 1, {}, false, false};
+    vv::scene::DataArray wss{"wss", "Pa", 1, {}, false, false};
     for (int i = 0; i <= stacks; ++i) {
         const float theta =
             std::numbers::pi_v<float> * static_cast<float>(i) / static_cast<float>(stacks);
@@ -53,11 +53,11 @@ vv::io::Mesh makeSphere(float radius, glm::vec3 center, int slices = 48, int sta
 
 /// An open tube along x from 0 to `length` with a "wss" array rising along it
 /// from 0 to 10 and a "pressure" array that is NaN everywhere.
-vv::io::Mesh makeTube(float radius, float length, int segments = 32, int rings = 40) {
-    vv::io::Mesh mesh =
+vv::scene::Mesh makeTube(float radius, float length, int segments = 32, int rings = 40) {
+    vv::scene::Mesh mesh =
         vv::render::test::makeTube(radius, 0.0F, length, 0.0F, 0.0F, segments, rings);
-    vv::io::DataArray wss{"wss", "Pa", 1, {}, false, false};
-    vv::io::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
+    vv::scene::DataArray wss{"wss", "Pa", 1, {}, false, false};
+    vv::scene::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
     for (int i = 0; i <= rings; ++i) {
         const float s = static_cast<float>(i) / static_cast<float>(rings);
         for (int j = 0; j < segments; ++j) {
@@ -125,7 +125,7 @@ TEST_F(OffscreenRendererTest, ContextIsOpenGl41OrNewer) {
 TEST_F(OffscreenRendererTest, SphereIsDrawnCentredWithPlausibleCoverage) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeSphere(5.0F, {100.0F, -20.0F, 3.0F}));
     OffscreenOptions options = flatOptions(200, 150);
     const QImage image = renderer->render(scene, options);
@@ -167,7 +167,7 @@ TEST_F(OffscreenRendererTest, SphereIsDrawnCentredWithPlausibleCoverage) {
 TEST_F(OffscreenRendererTest, ColourMappedPixelsAreLutColours) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(320, 120);
     options.style.array = "wss";
@@ -222,7 +222,7 @@ TEST_F(OffscreenRendererTest, ColourMappedPixelsAreLutColours) {
 TEST_F(OffscreenRendererTest, LitColourMappedRenderShowsManyHues) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(320, 120);
     options.style.array = "wss";
@@ -249,7 +249,7 @@ TEST_F(OffscreenRendererTest, LitColourMappedRenderShowsManyHues) {
 TEST_F(OffscreenRendererTest, NanValuesShowTheNoDataColour) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(160, 80);
     options.style.array = "pressure";  // all NaN
@@ -268,8 +268,8 @@ TEST_F(OffscreenRendererTest, NanValuesShowTheNoDataColour) {
 TEST_F(OffscreenRendererTest, PartlyMissingValuesShowNoDataOnlyWhereMissing) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
-    vv::io::Mesh tube = makeTube(1.0F, 20.0F);
+    vv::scene::Scene scene;
+    vv::scene::Mesh tube = makeTube(1.0F, 20.0F);
     // NaN on the right half only.
     for (std::size_t i = 0; i < tube.vertexCount(); ++i) {
         if (tube.positions[i].x > 10.5F) {
@@ -315,7 +315,7 @@ TEST_F(OffscreenRendererTest, PartlyMissingValuesShowNoDataOnlyWhereMissing) {
 TEST_F(OffscreenRendererTest, ExplicitRangeClampsValues) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(160, 80);
     options.style.array = "wss";
@@ -334,7 +334,7 @@ TEST_F(OffscreenRendererTest, ExplicitRangeClampsValues) {
 TEST_F(OffscreenRendererTest, EmptySceneIsAllBackground) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    const vv::io::Scene scene;
+    const vv::scene::Scene scene;
     OffscreenOptions options;
     options.width = 64;
     options.height = 48;
@@ -352,7 +352,7 @@ TEST_F(OffscreenRendererTest, EmptySceneIsAllBackground) {
 TEST_F(OffscreenRendererTest, RendererIsReusableAcrossSizes) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeSphere(1.0F, {0, 0, 0}));
     OffscreenOptions options = flatOptions(32, 32);  // the size is set per frame below
     for (const auto& size : {QSize(32, 32), QSize(400, 100), QSize(17, 301)}) {
@@ -368,7 +368,7 @@ TEST_F(OffscreenRendererTest, RendererIsReusableAcrossSizes) {
 TEST_F(OffscreenRendererTest, GivenCameraIsUsed) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeSphere(1.0F, {0, 0, 0}));
     OffscreenOptions options = flatOptions(100, 100);
     vv::render::Camera camera;
@@ -387,7 +387,7 @@ TEST_F(OffscreenRendererTest, GivenCameraIsUsed) {
 TEST_F(OffscreenRendererTest, BadSizesAreRejected) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    const vv::io::Scene scene;
+    const vv::scene::Scene scene;
     OffscreenOptions options;
     options.width = 0;
     EXPECT_THROW((void)renderer->render(scene, options), vv::InvalidArgumentError);
@@ -399,7 +399,7 @@ TEST_F(OffscreenRendererTest, BadSizesAreRejected) {
 TEST_F(OffscreenRendererTest, MeshWithBadIndexIsRejected) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeSphere(1.0F, {0, 0, 0}));
     scene.meshes[0].indices.back() = 1000000;
     OffscreenOptions options;
@@ -412,7 +412,7 @@ TEST_F(OffscreenRendererTest, MeshWithBadIndexIsRejected) {
 }
 
 TEST(ArrayHelpersTest, DefaultArrayIsWssIgnoringCase) {
-    vv::io::Scene scene;
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 2.0F, 4, 2));
     EXPECT_EQ(vv::render::defaultArrayName(scene), "wss");
     scene.meshes[0].pointArrays[0].name = "WSS";

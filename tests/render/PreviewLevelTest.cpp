@@ -8,12 +8,12 @@
 #include <memory>
 #include <vector>
 
-#include "../support/TestMeshes.h"
 #include "RenderTestUtil.h"
+#include "TestMeshes.h"
 #include "vv/core/Error.h"
-#include "vv/io/MeshSimplify.h"
-#include "vv/io/MeshTopology.h"
+#include "vv/meshio/MeshSimplify.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace vv::render {
 namespace {
@@ -56,9 +56,9 @@ class PreviewScenesTest : public test::GlRenderTest {
         context_.doneCurrent();
     }
 
-    static std::size_t trianglesOf(const io::Scene& scene) {
+    static std::size_t trianglesOf(const scene::Scene& scene) {
         std::size_t n = 0;
-        for (const io::Mesh& mesh : scene.meshes) {
+        for (const scene::Mesh& mesh : scene.meshes) {
             n += mesh.triangleCount();
         }
         return n;
@@ -70,12 +70,12 @@ class PreviewScenesTest : public test::GlRenderTest {
 };
 
 TEST_F(PreviewScenesTest, LevelsAreKeptFinestFirstAndChosenBySize) {
-    const auto scene = std::make_shared<const io::Scene>(test::twoTubes(1.0F, 2.0F, 48, 48));
+    const auto scene = std::make_shared<const scene::Scene>(test::twoTubes(1.0F, 2.0F, 48, 48));
     const std::size_t full = trianglesOf(*scene);
     meshes_.setScene(scene);
     const std::uint64_t afterScene = meshes_.shadingRevision();
-    auto fine = std::make_shared<const io::Scene>(io::simplifiedScene(*scene, full / 2));
-    auto coarse = std::make_shared<const io::Scene>(io::simplifiedScene(*scene, full / 8));
+    auto fine = std::make_shared<const scene::Scene>(meshio::simplifiedScene(*scene, full / 2));
+    auto coarse = std::make_shared<const scene::Scene>(meshio::simplifiedScene(*scene, full / 8));
     // Any order, null entries left out.
     meshes_.setPreviewScenes({coarse, nullptr, fine});
     EXPECT_NE(meshes_.shadingRevision(), afterScene);
@@ -98,10 +98,10 @@ TEST_F(PreviewScenesTest, LevelsAreKeptFinestFirstAndChosenBySize) {
 }
 
 TEST_F(PreviewScenesTest, ACopyWithAnotherMeshCountIsRefusedAndNoneIsKept) {
-    const auto scene = std::make_shared<const io::Scene>(test::twoTubes(1.0F, 2.0F, 24, 24));
+    const auto scene = std::make_shared<const scene::Scene>(test::twoTubes(1.0F, 2.0F, 24, 24));
     meshes_.setScene(scene);
-    auto good = std::make_shared<const io::Scene>(io::simplifiedScene(*scene, 200));
-    auto oneMesh = std::make_shared<io::Scene>();
+    auto good = std::make_shared<const scene::Scene>(meshio::simplifiedScene(*scene, 200));
+    auto oneMesh = std::make_shared<scene::Scene>();
     oneMesh->meshes.push_back(scene->meshes.front());
     EXPECT_THROW(meshes_.setPreviewScenes({good, oneMesh}), InvalidArgumentError);
     EXPECT_FALSE(meshes_.hasPreviewScene());
@@ -113,31 +113,32 @@ TEST_F(PreviewScenesTest, ACopyWithAnotherMeshCountIsRefusedAndNoneIsKept) {
 
 TEST_F(PreviewScenesTest, ClosuresAreHandedInPerLevelAndEveryUploadStartsOpen) {
     // One closed cube (outward) and one open tube.
-    auto scene = std::make_shared<io::Scene>();
+    auto scene = std::make_shared<scene::Scene>();
     scene->meshes.push_back(vv::test::cube(glm::vec3(0.0F), 2.0F));
     scene->meshes.push_back(test::makeTube(1.0F, -10.0F, 20.0F, 3.0F, 0.0F, 24, 24));
     // Everything Open (two-sided) until the closures come in.
     meshes_.setScene(scene);
-    EXPECT_EQ(meshes_.surfaceClosure(0, 0), io::SurfaceClosure::Open);
+    EXPECT_EQ(meshes_.surfaceClosure(0, 0), scene::SurfaceClosure::Open);
     EXPECT_EQ(meshes_.surfaceClosure(0, 2), std::nullopt);
     EXPECT_EQ(meshes_.surfaceClosure(1, 0), std::nullopt);
-    auto copy = std::make_shared<const io::Scene>(*scene);
+    auto copy = std::make_shared<const scene::Scene>(*scene);
     meshes_.setPreviewScene(copy);
-    EXPECT_EQ(meshes_.surfaceClosure(1, 0), io::SurfaceClosure::Open);
-    const std::vector<io::SurfaceClosure> closures = io::surfaceClosures(*scene);
-    ASSERT_EQ(closures, (std::vector<io::SurfaceClosure>{io::SurfaceClosure::ClosedOutward,
-                                                         io::SurfaceClosure::Open}));
+    EXPECT_EQ(meshes_.surfaceClosure(1, 0), scene::SurfaceClosure::Open);
+    const std::vector<scene::SurfaceClosure> closures = scene::surfaceClosures(*scene);
+    ASSERT_EQ(closures, (std::vector<scene::SurfaceClosure>{scene::SurfaceClosure::ClosedOutward,
+                                                            scene::SurfaceClosure::Open}));
     meshes_.setSurfaceClosures(0, closures);
     meshes_.setSurfaceClosures(1, closures);
-    EXPECT_EQ(meshes_.surfaceClosure(0, 0), io::SurfaceClosure::ClosedOutward);
-    EXPECT_EQ(meshes_.surfaceClosure(1, 0), io::SurfaceClosure::ClosedOutward);
-    EXPECT_EQ(meshes_.surfaceClosure(1, 1), io::SurfaceClosure::Open);
+    EXPECT_EQ(meshes_.surfaceClosure(0, 0), scene::SurfaceClosure::ClosedOutward);
+    EXPECT_EQ(meshes_.surfaceClosure(1, 0), scene::SurfaceClosure::ClosedOutward);
+    EXPECT_EQ(meshes_.surfaceClosure(1, 1), scene::SurfaceClosure::Open);
     // Wrong counts and missing levels are refused.
-    EXPECT_THROW(meshes_.setSurfaceClosures(0, {io::SurfaceClosure::Open}), InvalidArgumentError);
+    EXPECT_THROW(meshes_.setSurfaceClosures(0, {scene::SurfaceClosure::Open}),
+                 InvalidArgumentError);
     EXPECT_THROW(meshes_.setSurfaceClosures(2, closures), InvalidArgumentError);
     // A new upload starts Open again.
     meshes_.setScene(scene);
-    EXPECT_EQ(meshes_.surfaceClosure(0, 0), io::SurfaceClosure::Open);
+    EXPECT_EQ(meshes_.surfaceClosure(0, 0), scene::SurfaceClosure::Open);
 }
 
 }  // namespace

@@ -66,9 +66,9 @@ void saveImage(const QImage& image, const std::string& prefix, const std::string
                "PNG");
 }
 
-vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
-                      int rings) {
-    vv::io::Mesh mesh;
+vv::scene::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
+                         int rings) {
+    vv::scene::Mesh mesh;
     mesh.name = "tube";
     for (int i = 0; i <= rings; ++i) {
         const float s = static_cast<float>(i) / static_cast<float>(rings);
@@ -91,8 +91,8 @@ vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z, in
     return mesh;
 }
 
-vv::io::Scene twoTubes(float radius, float z, int segments, int rings) {
-    vv::io::Scene scene;
+vv::scene::Scene twoTubes(float radius, float z, int segments, int rings) {
+    vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(radius, -10.0F, 20.0F, 3.0F, z, segments, rings));
     scene.meshes.push_back(makeTube(radius, -10.0F, 20.0F, -3.0F, -z, segments, rings));
     return scene;

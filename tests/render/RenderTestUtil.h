@@ -14,8 +14,8 @@
 #include <memory>
 #include <string>
 
-#include "vv/io/Mesh.h"
 #include "vv/render/OffscreenRenderer.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::render::test {
 
@@ -36,11 +36,11 @@ PassState passState(const OffscreenRenderer& renderer, const std::string& pass);
 void saveImage(const QImage& image, const std::string& prefix, const std::string& name);
 
 /// An open tube of `radius` along x (x0 .. x0 + length), axis at (y, z).
-vv::io::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
-                      int rings);
+vv::scene::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
+                         int rings);
 
 /// A near tube on top (y = 3, z = +z) and a far tube below (y = -3, z = -z), x in -10 .. 10.
-vv::io::Scene twoTubes(float radius, float z, int segments, int rings);
+vv::scene::Scene twoTubes(float radius, float z, int segments, int rings);
 
 /// Options of the given size on the test background, AO and FXAA off (exact pixels).
 OffscreenOptions exactOptions(int width, int height);

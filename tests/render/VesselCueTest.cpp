@@ -30,10 +30,10 @@ using vv::render::VesselCue;
 
 /// Near tube on top (z = +5), far tube below (z = -5); the default camera
 /// looks down -z with +y up. The near one carries an array "speed" (m/s).
-vv::io::Scene twoTubes() {
-    vv::io::Scene scene = vv::render::test::twoTubes(1.5F, 5.0F, 40, 16);
+vv::scene::Scene twoTubes() {
+    vv::scene::Scene scene = vv::render::test::twoTubes(1.5F, 5.0F, 40, 16);
     for (auto& mesh : scene.meshes) {
-        vv::io::DataArray speed;
+        vv::scene::DataArray speed;
         speed.name = "speed";
         speed.unit = "m/s";
         speed.components = 1;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "vv/core/Error.h"
-#include "vv/io/DemoTree.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/render/ViewPresets.h"
 
@@ -22,10 +22,10 @@ constexpr int kWidth = 640;
 constexpr int kHeight = 360;
 
 /// The default demo tree, made once (it takes a moment).
-const vv::io::Scene& demoScene() {
-    static const vv::io::Scene scene = [] {
-        vv::io::Scene s;
-        s.meshes.push_back(vv::io::generateDemoMesh());
+const vv::scene::Scene& demoScene() {
+    static const vv::scene::Scene scene = [] {
+        vv::scene::Scene s;
+        s.meshes.push_back(vv::demo::generateDemoMesh());
         return s;
     }();
     return scene;
@@ -184,13 +184,13 @@ TEST(ViewPresetsTest, BoxOverloadPutsEveryCornerInsideTheCentralPart) {
     const auto empty = vv::render::presetCamera(vv::Aabb{}, 100, 100, ViewPreset::Close);
     EXPECT_TRUE(std::isfinite(empty.distance()));
     EXPECT_GT(empty.distance(), 0.0F);
-    const auto noMesh = vv::render::presetCamera(vv::io::Scene{}, 100, 100, ViewPreset::Far);
+    const auto noMesh = vv::render::presetCamera(vv::scene::Scene{}, 100, 100, ViewPreset::Far);
     EXPECT_TRUE(std::isfinite(noMesh.distance()));
     EXPECT_GT(noMesh.distance(), 0.0F);
 }
 
 /// A small axis-aligned box (12 triangles) centred at `c` with half-size `h`.
-void addBox(vv::io::Mesh& mesh, const glm::vec3& c, float h) {
+void addBox(vv::scene::Mesh& mesh, const glm::vec3& c, float h) {
     const auto base = static_cast<std::uint32_t>(mesh.positions.size());
     for (int i = 0; i < 8; ++i) {
         mesh.positions.emplace_back(c.x + ((i & 1) != 0 ? h : -h), c.y + ((i & 2) != 0 ? h : -h),
@@ -296,8 +296,8 @@ TEST(ViewPresetsTest, AnatomicalViewsSeeTheMarkersWhereTheyShouldBe) {
     const glm::vec3 leftMarker{30.0F, 0.0F, 0.0F};
     const glm::vec3 anteriorMarker{0.0F, -30.0F, 0.0F};
     const glm::vec3 superiorMarker{0.0F, 0.0F, 30.0F};
-    vv::io::Scene scene;
-    vv::io::Mesh mesh;
+    vv::scene::Scene scene;
+    vv::scene::Mesh mesh;
     addBox(mesh, glm::vec3(0.0F), 10.0F);
     for (const glm::vec3& m : {leftMarker, anteriorMarker, superiorMarker}) {
         addBox(mesh, m, 3.0F);

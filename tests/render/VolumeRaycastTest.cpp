@@ -16,9 +16,9 @@
 
 #include "RenderTestUtil.h"
 #include "vv/core/Error.h"
-#include "vv/io/Volume.h"
 #include "vv/render/Camera.h"
 #include "vv/render/OffscreenRenderer.h"
+#include "vv/scene/Volume.h"
 
 namespace {
 
@@ -37,8 +37,9 @@ const glm::dvec3 kOrigin{-19.2, -25.6, -35.2};  ///< voxel (0, 0, 0): the grid c
 
 /// 64^3 voxels, 1000 inside the balls and 0 outside with a linear 2 mm edge:
 /// the 500 iso-surface is the sphere of each ball's radius.
-std::shared_ptr<vv::io::Volume> ballVolume(const std::vector<Ball>& balls, bool sheared = false) {
-    auto v = std::make_shared<vv::io::Volume>(glm::ivec3(64), vv::io::VoxelType::Int16);
+std::shared_ptr<vv::scene::Volume> ballVolume(const std::vector<Ball>& balls,
+                                              bool sheared = false) {
+    auto v = std::make_shared<vv::scene::Volume>(glm::ivec3(64), vv::scene::VoxelType::Int16);
     glm::dmat4 m(1.0);
     m[0] = glm::dvec4(kSpacing.x, 0, 0, 0);
     m[1] = glm::dvec4(0, kSpacing.y, 0, 0);
@@ -73,7 +74,7 @@ std::shared_ptr<vv::io::Volume> ballVolume(const std::vector<Ball>& balls, bool 
 }
 
 /// The camera OffscreenRenderer uses for `options` without a camera.
-Camera fittedCamera(const vv::io::Volume& volume, int width, int height) {
+Camera fittedCamera(const vv::scene::Volume& volume, int width, int height) {
     Camera camera;
     camera.setViewport(width, height);
     camera.fit(volume.worldBounds());
@@ -115,7 +116,7 @@ class VolumeRaycastTest : public vv::render::test::GlRenderTest {
     static constexpr int kW = 160;
     static constexpr int kH = 120;
 
-    [[nodiscard]] OffscreenOptions options(std::shared_ptr<const vv::io::Volume> volume) const {
+    [[nodiscard]] OffscreenOptions options(std::shared_ptr<const vv::scene::Volume> volume) const {
         OffscreenOptions o = vv::render::test::exactOptions(kW, kH);
         o.volume = std::move(volume);
         o.isoValue = static_cast<float>(kIso);
@@ -132,7 +133,7 @@ TEST_P(VolumeRaycastGridTest, BallDepthMatchesTheAnalyticSphere) {
     const Ball ball{{1.0, -2.0, 3.0}, 12.0};
     const bool sheared = GetParam();
     const auto volume = ballVolume({ball}, sheared);
-    const QImage image = renderer->render(vv::io::Scene{}, options(volume));
+    const QImage image = renderer->render(vv::scene::Scene{}, options(volume));
     vv::render::test::saveImage(image, "raycast-", sheared ? "ball-sheared" : "ball");
     const auto depth = renderer->lastLinearDepth();
     ASSERT_EQ(depth.width(), kW);
@@ -181,9 +182,9 @@ TEST_F(VolumeRaycastTest, VssSpansTheVoidBetweenTwoBalls) {
     const auto volume = ballVolume({nearBall, farBall});
     auto o = options(volume);
     o.vss.enabled = false;
-    const QImage off = renderer->render(vv::io::Scene{}, o);
+    const QImage off = renderer->render(vv::scene::Scene{}, o);
     o.vss.enabled = true;
-    const QImage on = renderer->render(vv::io::Scene{}, o);
+    const QImage on = renderer->render(vv::scene::Scene{}, o);
     vv::render::test::saveImage(off, "raycast-", "two-balls-off");
     vv::render::test::saveImage(on, "raycast-", "two-balls-vss");
     const Camera camera = fittedCamera(*volume, kW, kH);
@@ -220,7 +221,7 @@ TEST_F(VolumeRaycastTest, MeshesAndTheVolumeDepthTestTogether) {
     const int cy = kH / 2;
     for (const double tubeZ : {15.0, -20.0}) {
         // A tube along x through the view axis, in front of or behind the ball.
-        vv::io::Scene scene;
+        vv::scene::Scene scene;
         scene.meshes.push_back(vv::render::test::makeTube(2.0F, -20.0F, 40.0F, 0.0F,
                                                           static_cast<float>(tubeZ), 32, 16));
         auto o = options(volume);
@@ -243,20 +244,20 @@ TEST_F(VolumeRaycastTest, TheGeometryPassIsCachedUntilVolumeOrIsoChange) {
     auto o = options(volume);
     const Camera camera = fittedCamera(*volume, kW, kH);
     o.camera = camera;
-    static_cast<void>(renderer->render(vv::io::Scene{}, o));
+    static_cast<void>(renderer->render(vv::scene::Scene{}, o));
     EXPECT_EQ(state(*renderer, "geometry"), vv::render::PassState::Executed);
-    static_cast<void>(renderer->render(vv::io::Scene{}, o));
+    static_cast<void>(renderer->render(vv::scene::Scene{}, o));
     EXPECT_EQ(state(*renderer, "geometry"), vv::render::PassState::Cached);
     const float before = renderer->lastLinearDepth().row(kH / 2)[kW / 2];
     // A higher iso value shrinks the ball (1000 * (0.5 - (r - 10) / 2) = 900 at r = 9.2).
     o.isoValue = 900.0F;
-    static_cast<void>(renderer->render(vv::io::Scene{}, o));
+    static_cast<void>(renderer->render(vv::scene::Scene{}, o));
     EXPECT_EQ(state(*renderer, "geometry"), vv::render::PassState::Executed);
     const float after = renderer->lastLinearDepth().row(kH / 2)[kW / 2];
     EXPECT_NEAR(after - before, 0.8F, 0.2F);
     // Another volume object re-runs it too.
     o.volume = ballVolume({Ball{{0.0, 0.0, 0.0}, 10.0}});
-    static_cast<void>(renderer->render(vv::io::Scene{}, o));
+    static_cast<void>(renderer->render(vv::scene::Scene{}, o));
     EXPECT_EQ(state(*renderer, "geometry"), vv::render::PassState::Executed);
 }
 
@@ -264,16 +265,16 @@ TEST_F(VolumeRaycastTest, RefusesVolumesBeyondTheThreeDTextureLimit) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);
     auto o = options(
-        std::make_shared<vv::io::Volume>(glm::ivec3(70000, 1, 1), vv::io::VoxelType::Int16));
+        std::make_shared<vv::scene::Volume>(glm::ivec3(70000, 1, 1), vv::scene::VoxelType::Int16));
     try {
-        static_cast<void>(renderer->render(vv::io::Scene{}, o));
+        static_cast<void>(renderer->render(vv::scene::Scene{}, o));
         FAIL() << "expected a RenderError";
     } catch (const vv::RenderError& e) {
         EXPECT_NE(std::string(e.what()).find("3-D texture limit"), std::string::npos) << e.what();
     }
     // The renderer still works afterwards with a volume that fits.
     o.volume = ballVolume({Ball{{0.0, 0.0, 0.0}, 8.0}});
-    const QImage image = renderer->render(vv::io::Scene{}, o);
+    const QImage image = renderer->render(vv::scene::Scene{}, o);
     EXPECT_NE(image.pixel(kW / 2, kH / 2), backgroundRgb_);
 }
 

@@ -30,7 +30,7 @@ using vv::render::PassState;
 /// A near tube on top (z = +4) and a far tube below (z = -4): seen from the
 /// default camera (looking down -z, +y up) the void between them runs from
 /// near (top) to far (bottom).
-vv::io::Scene twoTubes() {
+vv::scene::Scene twoTubes() {
     return vv::render::test::twoTubes(1.0F, 4.0F, 32, 24);
 }
 

@@ -387,14 +387,14 @@ TEST_F(DicomExportTest, UidsAreFreshAndFailuresLeaveNoFile) {
 }
 
 TEST_F(DicomExportTest, ExportsOfDicomDataJoinTheSourceStudy) {
-    io::DicomScanResult scan;
-    io::DicomPatient patient;
+    dicom::DicomScanResult scan;
+    dicom::DicomPatient patient;
     patient.name = "Roe^Richard";
     patient.id = "P-7";
-    io::DicomStudy study;
+    dicom::DicomStudy study;
     study.studyInstanceUid = "1.2.826.0.1.3680043.2.1125.77";
     study.date = "20250102";
-    io::DicomSeries series;
+    dicom::DicomSeries series;
     series.seriesInstanceUid = "1.2.826.0.1.3680043.2.1125.77.1";
     study.series.push_back(series);
     patient.studies.push_back(study);

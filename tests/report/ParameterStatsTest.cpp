@@ -41,9 +41,9 @@ TEST(AreaFraction, MatchesMonteCarlo) {
 }
 
 TEST(ParameterStats, AreaWeightedOverTheTube) {
-    io::Scene scene;
+    scene::Scene scene;
     scene.meshes.push_back(test::makeTube("left"));
-    io::Mesh noArray = test::makeTube("no array");
+    scene::Mesh noArray = test::makeTube("no array");
     noArray.pointArrays.clear();
     scene.meshes.push_back(std::move(noArray));
     const auto stats = parameterStats(scene, "wss", {0.4, 8.0});
@@ -67,17 +67,17 @@ TEST(ParameterStats, AreaWeightedOverTheTube) {
 TEST(ParameterStats, WeightsByAreaAndSkipsMissingValues) {
     // Two triangles: a large one (area 2) with value 1, a small one (area 0.5)
     // with value 3, and a third with a NaN corner that is left out.
-    io::Mesh mesh;
+    scene::Mesh mesh;
     mesh.name = "patch";
     mesh.positions = {{0, 0, 0},  {2, 0, 0},  {0, 2, 0},  {10, 0, 0}, {11, 0, 0},
                       {10, 1, 0}, {20, 0, 0}, {21, 0, 0}, {20, 1, 0}};
     mesh.indices = {0, 1, 2, 3, 4, 5, 6, 7, 8};
-    io::DataArray a;
+    scene::DataArray a;
     a.name = "wss";
     const float nan = std::numeric_limits<float>::quiet_NaN();
     a.values = {1, 1, 1, 3, 3, 3, 5, nan, 5};
     mesh.pointArrays.push_back(a);
-    io::Scene scene;
+    scene::Scene scene;
     scene.meshes.push_back(mesh);
     const auto stats = parameterStats(scene, "wss", {2.0, std::nullopt});
     ASSERT_EQ(stats.size(), 1U);
@@ -90,16 +90,16 @@ TEST(ParameterStats, WeightsByAreaAndSkipsMissingValues) {
 }
 
 TEST(ParameterStats, VectorArraysUseTheMagnitude) {
-    io::Mesh mesh;
+    scene::Mesh mesh;
     mesh.name = "v";
     mesh.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
     mesh.indices = {0, 1, 2};
-    io::DataArray a;
+    scene::DataArray a;
     a.name = "velocity";
     a.components = 3;
     a.values = {3, 4, 0, 0, 0, 5, 5, 0, 0};
     mesh.pointArrays.push_back(a);
-    io::Scene scene;
+    scene::Scene scene;
     scene.meshes.push_back(mesh);
     const auto stats = parameterStats(scene, "velocity", {});
     ASSERT_EQ(stats.size(), 1U);
@@ -108,7 +108,7 @@ TEST(ParameterStats, VectorArraysUseTheMagnitude) {
 }
 
 TEST(ParameterStats, RejectsBadArguments) {
-    io::Scene scene;
+    scene::Scene scene;
     EXPECT_THROW((void)parameterStats(scene, "", {}), InvalidArgumentError);
     EXPECT_THROW((void)parameterStats(scene, "wss", {std::numeric_limits<double>::infinity(), {}}),
                  InvalidArgumentError);

@@ -57,11 +57,11 @@ class ReportJobTest : public ::testing::Test {
         return o;
     }
 
-    static io::Scene scene_;
+    static scene::Scene scene_;
     std::unique_ptr<render::OffscreenRenderer> renderer_;
 };
 
-io::Scene ReportJobTest::scene_;
+scene::Scene ReportJobTest::scene_;
 
 TEST_F(ReportJobTest, WritesEveryOutputAndReportsProgressInOrder) {
     const fs::path dir = test::testDir("job-all");

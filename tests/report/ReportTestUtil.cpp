@@ -47,17 +47,17 @@ std::filesystem::path testDir(const std::string& name) {
     return dir;
 }
 
-io::Mesh makeTube(const std::string& name) {
+scene::Mesh makeTube(const std::string& name) {
     constexpr int kSegments = 32;
     constexpr int kRings = 40;
-    io::Mesh mesh;
+    scene::Mesh mesh;
     mesh.name = name;
-    io::DataArray wss{.name = "wss",
-                      .unit = "Pa",
-                      .components = 1,
-                      .values = {},
-                      .integer = false,
-                      .fromCells = false};
+    scene::DataArray wss{.name = "wss",
+                         .unit = "Pa",
+                         .components = 1,
+                         .values = {},
+                         .integer = false,
+                         .fromCells = false};
     for (int i = 0; i <= kRings; ++i) {
         for (int j = 0; j < kSegments; ++j) {
             const double phi = 2.0 * std::numbers::pi * j / kSegments;
@@ -75,7 +75,7 @@ io::Mesh makeTube(const std::string& name) {
         }
     }
     mesh.pointArrays.push_back(std::move(wss));
-    io::computeNormals(mesh);
+    scene::computeNormals(mesh);
     return mesh;
 }
 

@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
-#include "vv/io/Mesh.h"
 #include "vv/render/OffscreenRenderer.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::report::test {
 
@@ -25,7 +25,7 @@ std::filesystem::path testDir(const std::string& name);
 
 /// An open tube of radius 1 along x (0 .. 20), axis on the x axis, with point
 /// array "wss" (unit Pa) rising linearly from 0 at x = 0 to 10 at x = 20.
-io::Mesh makeTube(const std::string& name);
+scene::Mesh makeTube(const std::string& name);
 
 /// A view-like test image (gradient), width x height, RGB32.
 QImage testImage(int width, int height);

@@ -22,7 +22,7 @@
 #include "vv/core/Error.h"
 #include "vv/core/Image.h"
 #include "vv/core/Progress.h"
-#include "vv/io/DemoTree.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/render/TileProjection.h"
 #include "vv/report/ViewExport.h"
 
@@ -93,10 +93,10 @@ class TiledExportTest : public ::testing::Test {
   protected:
     static void SetUpTestSuite() {
         test::ensureGuiApplication();
-        io::DemoTreeOptions demo;
+        demo::DemoTreeOptions demo;
         demo.generations = 4;
         demo.voxelSizeMm = 0.4;
-        scene_.meshes.push_back(io::generateDemoMesh(demo));
+        scene_.meshes.push_back(demo::generateDemoMesh(demo));
     }
 
     static std::unique_ptr<render::OffscreenRenderer> renderer() { return test::makeRenderer(); }
@@ -115,10 +115,10 @@ class TiledExportTest : public ::testing::Test {
         return o;
     }
 
-    static io::Scene scene_;
+    static scene::Scene scene_;
 };
 
-io::Scene TiledExportTest::scene_;
+scene::Scene TiledExportTest::scene_;
 
 /// The share of pixels whose largest channel (alpha included) differs by more than `levels`.
 double shareDifferent(const QImage& a, const QImage& b, int levels) {
@@ -137,7 +137,7 @@ double shareDifferent(const QImage& a, const QImage& b, int levels) {
 }
 
 /// Renders `options` in one piece and in tiles of 256 and checks they match.
-void expectTilesMatchOnePiece(render::OffscreenRenderer& r, const io::Scene& scene,
+void expectTilesMatchOnePiece(render::OffscreenRenderer& r, const scene::Scene& scene,
                               ViewExportOptions options) {
     options.maxTileSide = 0;
     const RenderedView one = renderView(r, scene, options);

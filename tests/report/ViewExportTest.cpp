@@ -44,10 +44,10 @@ class ViewExportTest : public ::testing::Test {
         return o;
     }
 
-    static io::Scene scene_;
+    static scene::Scene scene_;
 };
 
-io::Scene ViewExportTest::scene_;
+scene::Scene ViewExportTest::scene_;
 
 TEST_F(ViewExportTest, TransparentBackgroundKeepsTheVesselOpaque) {
     auto r = renderer();

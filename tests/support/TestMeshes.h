@@ -7,14 +7,14 @@
 #include <glm/glm.hpp>
 #include <utility>
 
-#include "vv/io/Mesh.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::test {
 
 /// An axis-aligned cube from `lo` to `lo + size`, its triangles
 /// counter-clockwise seen from outside (normals outward).
-inline io::Mesh cube(glm::vec3 lo = glm::vec3(0.0F), float size = 1.0F) {
-    io::Mesh mesh;
+inline scene::Mesh cube(glm::vec3 lo = glm::vec3(0.0F), float size = 1.0F) {
+    scene::Mesh mesh;
     mesh.name = "cube";
     for (int i = 0; i < 8; ++i) {
         mesh.positions.push_back(lo + size * glm::vec3(static_cast<float>(i & 1),
@@ -31,19 +31,19 @@ inline io::Mesh cube(glm::vec3 lo = glm::vec3(0.0F), float size = 1.0F) {
 }
 
 /// Turns triangle `triangle` around (swaps two of its corners).
-inline void flip(io::Mesh& mesh, std::size_t triangle) {
+inline void flip(scene::Mesh& mesh, std::size_t triangle) {
     std::swap(mesh.indices[3 * triangle + 1], mesh.indices[3 * triangle + 2]);
 }
 
 /// Turns every triangle around.
-inline void flipAll(io::Mesh& mesh) {
+inline void flipAll(scene::Mesh& mesh) {
     for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
         flip(mesh, t);
     }
 }
 
 /// `b`'s vertices and triangles appended to `a`'s (no welding).
-inline io::Mesh merged(io::Mesh a, const io::Mesh& b) {
+inline scene::Mesh merged(scene::Mesh a, const scene::Mesh& b) {
     const auto offset = static_cast<std::uint32_t>(a.positions.size());
     a.positions.insert(a.positions.end(), b.positions.begin(), b.positions.end());
     for (const std::uint32_t i : b.indices) {

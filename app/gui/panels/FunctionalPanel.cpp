@@ -161,7 +161,7 @@ std::vector<float> FunctionalPanel::arrayValues() const {
         return values;
     }
     for (const auto& mesh : scene->meshes) {
-        if (const io::DataArray* array = mesh.pointArray(name)) {
+        if (const scene::DataArray* array = mesh.pointArray(name)) {
             values.insert(values.end(), array->values.begin(), array->values.end());
         }
     }

@@ -7,7 +7,7 @@
 #include <QFormLayout>
 #include <QtGlobal>
 
-#include "vv/io/Mesh.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::gui::panels {
 
@@ -39,9 +39,9 @@ QString engineName(std::string_view name) {
     return QCoreApplication::translate("vv::gui::panels::EngineNames", utf8.constData());
 }
 
-QString arrayLabel(const io::Scene& scene, const std::string& name) {
+QString arrayLabel(const scene::Scene& scene, const std::string& name) {
     for (const auto& mesh : scene.meshes) {
-        const io::DataArray* array = mesh.pointArray(name);
+        const scene::DataArray* array = mesh.pointArray(name);
         if (array != nullptr && !array->unit.empty()) {
             return QString::fromStdString(name + " [" + array->unit + "]");
         }

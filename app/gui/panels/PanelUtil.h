@@ -9,7 +9,7 @@
 #include <string>
 #include <string_view>
 
-namespace vv::io {
+namespace vv::scene {
 struct Scene;
 }
 
@@ -45,7 +45,7 @@ inline glm::vec3 toVec(const QColor& color) {
 }
 
 /// "wss [Pa]" for a point array with a unit on some mesh of `scene`, else "wss".
-[[nodiscard]] QString arrayLabel(const io::Scene& scene, const std::string& name);
+[[nodiscard]] QString arrayLabel(const scene::Scene& scene, const std::string& name);
 
 /// Lets the panels' controls shrink to the dock's width instead of asking
 /// for their widest item / longest value (combo boxes elide, spin boxes

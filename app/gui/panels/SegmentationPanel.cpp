@@ -224,10 +224,10 @@ void SegmentationPanel::buildControls() {
     outer->addStretch(1);
 }
 
-void SegmentationPanel::setVolume(std::shared_ptr<const io::Volume> volume,
-                                  const io::SegmentationOptions& options,
-                                  const io::ThresholdRange& range,
-                                  const io::SurfaceOptions& surface) {
+void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
+                                  const segmentation::SegmentationOptions& options,
+                                  const segmentation::ThresholdRange& range,
+                                  const segmentation::SurfaceOptions& surface) {
     stopPreview();
     abandon(applyTask_);
     if (display_ == Display::RaycastIsoSurface) {
@@ -266,7 +266,7 @@ void SegmentationPanel::setVolume(std::shared_ptr<const io::Volume> volume,
                 box->setRange(static_cast<double>(lo) - span, static_cast<double>(hi) + span);
                 box->setSuffix(suffix);
             }
-            const io::ThresholdRange used = options.range.value_or(range);
+            const segmentation::ThresholdRange used = options.range.value_or(range);
             lower_->setValue(static_cast<double>(used.lower));
             upper_->setValue(static_cast<double>(used.upper));
             iso_->setValue(static_cast<double>(used.lower));
@@ -309,10 +309,10 @@ void SegmentationPanel::setVolume(std::shared_ptr<const io::Volume> volume,
 
 void SegmentationPanel::startDefaultRange() {
     // The modality default: a histogram pass for MR, so not on the GUI thread.
-    const std::shared_ptr<const io::Volume> volume = volume_;
-    auto* watcher = new QFutureWatcher<std::optional<io::ThresholdRange>>(this);
+    const std::shared_ptr<const scene::Volume> volume = volume_;
+    auto* watcher = new QFutureWatcher<std::optional<segmentation::ThresholdRange>>(this);
     connect(
-        watcher, &QFutureWatcher<std::optional<io::ThresholdRange>>::finished, this,
+        watcher, &QFutureWatcher<std::optional<segmentation::ThresholdRange>>::finished, this,
         [this, watcher, volume] {
             watcher->deleteLater();
             if (volume != volume_) {
@@ -328,9 +328,9 @@ void SegmentationPanel::startDefaultRange() {
             defaultLabel_->setToolTip(defaultRange_ ? fromUtf8(defaultRange_->rule) : QString());
             updateApplicability();
         });
-    watcher->setFuture(QtConcurrent::run([volume]() -> std::optional<io::ThresholdRange> {
+    watcher->setFuture(QtConcurrent::run([volume]() -> std::optional<segmentation::ThresholdRange> {
         try {
-            return io::defaultThresholdRange(*volume);
+            return segmentation::defaultThresholdRange(*volume);
         } catch (const vv::Error&) {
             return std::nullopt;
         }
@@ -344,9 +344,9 @@ QString SegmentationPanel::valueText(double value) const {
                : number;
 }
 
-io::SegmentationOptions SegmentationPanel::segmentationOptions() const {
-    io::SegmentationOptions options;
-    io::ThresholdRange range;
+segmentation::SegmentationOptions SegmentationPanel::segmentationOptions() const {
+    segmentation::SegmentationOptions options;
+    segmentation::ThresholdRange range;
     range.lower = static_cast<float>(std::min(lower_->value(), upper_->value()));
     range.upper = static_cast<float>(std::max(lower_->value(), upper_->value()));
     range.rule = "chosen in the Segmentation panel";
@@ -359,8 +359,8 @@ io::SegmentationOptions SegmentationPanel::segmentationOptions() const {
     return options;
 }
 
-io::SurfaceOptions SegmentationPanel::surfaceOptions() const {
-    io::SurfaceOptions surface;
+segmentation::SurfaceOptions SegmentationPanel::surfaceOptions() const {
+    segmentation::SurfaceOptions surface;
     surface.targetTriangles = static_cast<std::size_t>(triangles_->value());
     return surface;
 }
@@ -414,7 +414,7 @@ void SegmentationPanel::optionsChanged() {
 }
 
 SegmentationTask* SegmentationPanel::makeTask(int step, int maxTriangles) {
-    SegmentationRequest request;
+    segmentation::SegmentationRequest request;
     request.volume = volume_;
     request.segmentation = segmentationOptions();
     request.surface = surfaceOptions();
@@ -451,13 +451,13 @@ void SegmentationPanel::startPreview() {
     if (!volume_ || isApplying() || display_ == Display::RaycastIsoSurface) {
         return;
     }
-    const io::SegmentationOptions options = segmentationOptions();
+    const segmentation::SegmentationOptions options = segmentationOptions();
     if (static_cast<Mode>(mode_->currentData().toInt()) == Mode::Seed && !options.seed) {
         showMessage(tr("Pick a seed: turn on Pick Seed and click a vessel"));
         return;
     }
     stopPreview();  // a newer change wins
-    const int step = previewStep(volume_->dims());
+    const int step = segmentation::previewStep(volume_->dims());
     SegmentationTask* task = makeTask(step, kPreviewTriangles);
     previewTask_ = task;
     connect(task, &SegmentationTask::succeeded, this, &SegmentationPanel::previewDone);
@@ -472,7 +472,8 @@ void SegmentationPanel::startPreview() {
     task->start();
 }
 
-void SegmentationPanel::previewDone(const std::shared_ptr<const SegmentationOutcome>& outcome) {
+void SegmentationPanel::previewDone(
+    const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome) {
     lastOutcome_ = outcome;
     ++previewsShown_;
     const QString sampling = outcome->step == 1 ? tr("full resolution")
@@ -517,7 +518,8 @@ void SegmentationPanel::apply() {
     updateApplicability();
 }
 
-void SegmentationPanel::applyDone(const std::shared_ptr<const SegmentationOutcome>& outcome) {
+void SegmentationPanel::applyDone(
+    const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome) {
     lastOutcome_ = outcome;
     dirty_ = false;
     const QString what = tr("Segmented: %1 triangles; components kept: %2 of %3")
@@ -556,11 +558,11 @@ void SegmentationPanel::setDisplay(Display display) {
         meshScene_ = viewer_->scene();
         const auto iso = static_cast<float>(iso_->value());
         viewer_->setVolume(volume_, iso);
-        emit sceneReady(std::make_shared<const io::Scene>(),
+        emit sceneReady(std::make_shared<const scene::Scene>(),
                         tr("Ray-cast iso-surface at %1").arg(valueText(static_cast<double>(iso))));
     } else {
         viewer_->setVolume(nullptr, 0.0F);
-        std::shared_ptr<const io::Scene> scene = std::move(meshScene_);
+        std::shared_ptr<const scene::Scene> scene = std::move(meshScene_);
         meshScene_.reset();
         emit sceneReady(scene, tr("Surface mesh"));
         if (dirty_ && preview_->isChecked()) {
@@ -585,11 +587,11 @@ bool SegmentationPanel::pickSeed(const glm::vec3& world) {
         showMessage(tr("The point lies outside the volume: no seed there"));
         return false;
     }
-    const io::SegmentationOptions options = segmentationOptions();
+    const segmentation::SegmentationOptions options = segmentationOptions();
     const float lower = options.range->lower;
     const float upper = options.range->upper;
     const std::optional<glm::ivec3> voxel =
-        nearestVoxelInRange(*volume_, ijk, lower, upper, kSeedRadius);
+        segmentation::nearestVoxelInRange(*volume_, ijk, lower, upper, kSeedRadius);
     if (!voxel) {
         showMessage(
             tr("Voxel (%1, %2, %3) holds %4, outside the threshold range %5 to %6: no component "

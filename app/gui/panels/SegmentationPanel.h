@@ -9,10 +9,10 @@
 #include <memory>
 #include <optional>
 
-#include "vv/io/Mesh.h"
-#include "vv/io/Volume.h"
-#include "vv/io/VolumeSegmentation.h"
-#include "vv/io/VolumeSurface.h"
+#include "vv/scene/Mesh.h"
+#include "vv/scene/Volume.h"
+#include "vv/segmentation/VolumeSegmentation.h"
+#include "vv/segmentation/VolumeSurface.h"
 
 class QCheckBox;
 class QComboBox;
@@ -23,10 +23,13 @@ class QPushButton;
 class QSpinBox;
 class QTimer;
 
+namespace vv::segmentation {
+struct SegmentationOutcome;
+}  // namespace vv::segmentation
+
 namespace vv::gui {
 
 class SegmentationTask;
-struct SegmentationOutcome;
 class ViewerWidget;
 
 namespace panels {
@@ -66,16 +69,17 @@ class SegmentationPanel : public QWidget {
     /// range actually used: `range`) and `surface`; nullptr: the scene did not
     /// come from a volume, and the panel is disabled. Cancels running work and
     /// goes back to the surface mesh display (without emitting sceneReady).
-    void setVolume(std::shared_ptr<const io::Volume> volume,
-                   const io::SegmentationOptions& options = {},
-                   const io::ThresholdRange& range = {}, const io::SurfaceOptions& surface = {});
-    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+    void setVolume(std::shared_ptr<const scene::Volume> volume,
+                   const segmentation::SegmentationOptions& options = {},
+                   const segmentation::ThresholdRange& range = {},
+                   const segmentation::SurfaceOptions& surface = {});
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return volume_;
     }
 
     /// The options the controls hold (full-resolution voxel indices).
-    [[nodiscard]] io::SegmentationOptions segmentationOptions() const;
-    [[nodiscard]] io::SurfaceOptions surfaceOptions() const;
+    [[nodiscard]] segmentation::SegmentationOptions segmentationOptions() const;
+    [[nodiscard]] segmentation::SurfaceOptions surfaceOptions() const;
 
     /// Takes the seed from a world point (mm; e.g. a click's
     /// ProbeResult::worldPosition): the voxel nearest to it within the
@@ -103,7 +107,8 @@ class SegmentationPanel : public QWidget {
     [[nodiscard]] Display display() const noexcept { return display_; }
 
     /// What the last preview / Apply produced (null before the first).
-    [[nodiscard]] const std::shared_ptr<const SegmentationOutcome>& lastOutcome() const noexcept {
+    [[nodiscard]] const std::shared_ptr<const segmentation::SegmentationOutcome>& lastOutcome()
+        const noexcept {
         return lastOutcome_;
     }
     /// Previews shown since construction.
@@ -132,7 +137,7 @@ class SegmentationPanel : public QWidget {
     /// Show `scene` instead of the current one, keeping the camera; `status`
     /// is for the status bar (a preview says "Preview"). The ray-cast
     /// display hands over an empty scene (the volume is on the viewer).
-    void sceneReady(std::shared_ptr<const vv::io::Scene> scene, const QString& status);
+    void sceneReady(std::shared_ptr<const vv::scene::Scene> scene, const QString& status);
     /// A message for the status bar (errors, seed problems, cancelled).
     void statusMessage(const QString& message);
     /// An Apply ended (true: its scene was handed over).
@@ -150,21 +155,21 @@ class SegmentationPanel : public QWidget {
     void startDefaultRange();
     [[nodiscard]] QString valueText(double value) const;
     [[nodiscard]] SegmentationTask* makeTask(int step, int maxTriangles);
-    void previewDone(const std::shared_ptr<const SegmentationOutcome>& outcome);
-    void applyDone(const std::shared_ptr<const SegmentationOutcome>& outcome);
+    void previewDone(const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome);
+    void applyDone(const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome);
     void stopPreview();
     /// Cancels `task` without waiting; its result is dropped. Sets it to null.
     void abandon(QPointer<SegmentationTask>& task);
     void pickAt(const QPointF& position);
 
     ViewerWidget* viewer_;
-    std::shared_ptr<const io::Volume> volume_;
-    std::optional<io::ThresholdRange> defaultRange_;
+    std::shared_ptr<const scene::Volume> volume_;
+    std::optional<segmentation::ThresholdRange> defaultRange_;
     std::optional<glm::ivec3> seed_;
     Display display_ = Display::SurfaceMesh;
     /// The mesh scene shown before switching to the ray-cast display.
-    std::shared_ptr<const io::Scene> meshScene_;
-    std::shared_ptr<const SegmentationOutcome> lastOutcome_;
+    std::shared_ptr<const scene::Scene> meshScene_;
+    std::shared_ptr<const segmentation::SegmentationOutcome> lastOutcome_;
     QPointer<SegmentationTask> previewTask_;
     QPointer<SegmentationTask> applyTask_;
     QTimer* debounce_ = nullptr;

@@ -46,7 +46,7 @@ std::optional<std::array<glm::dvec3, 4>> nearRectangle(const glm::dmat4& viewPro
 /// the ray origin + t * direction (t > 0): +1 for each crossing along a
 /// triangle's normal (leaving), -1 against it (entering). nullopt when the
 /// ray grazes an edge or a triangle's plane, or starts on the surface.
-std::optional<int> windingAlong(const io::Mesh& mesh, const glm::dvec3& origin,
+std::optional<int> windingAlong(const scene::Mesh& mesh, const glm::dvec3& origin,
                                 const glm::dvec3& direction) noexcept {
     constexpr double kEdge = 1e-9;  // barycentric margin that counts as "on an edge"
     int winding = 0;
@@ -92,7 +92,7 @@ std::optional<int> windingAlong(const io::Mesh& mesh, const glm::dvec3& origin,
 }
 
 /// True when some triangle's bounding box meets `box` (float, the margin is in `box`).
-bool anyTriangleMeets(const io::Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi) noexcept {
+bool anyTriangleMeets(const scene::Mesh& mesh, const glm::vec3& lo, const glm::vec3& hi) noexcept {
     const auto& p = mesh.positions;
     const auto& index = mesh.indices;
     for (std::size_t t = 0; t + 2 < index.size(); t += 3) {
@@ -111,9 +111,9 @@ bool anyTriangleMeets(const io::Mesh& mesh, const glm::vec3& lo, const glm::vec3
 
 }  // namespace
 
-CullFace cullableFaces(const io::Mesh& mesh, io::SurfaceClosure closure, const Aabb& bounds,
+CullFace cullableFaces(const scene::Mesh& mesh, scene::SurfaceClosure closure, const Aabb& bounds,
                        const glm::mat4& view, const glm::mat4& projection) noexcept {
-    if (closure == io::SurfaceClosure::Open || bounds.empty()) {
+    if (closure == scene::SurfaceClosure::Open || bounds.empty()) {
         return CullFace::None;
     }
     const glm::dmat4 viewProjection = glm::dmat4(projection) * glm::dmat4(view);
@@ -163,7 +163,7 @@ CullFace cullableFaces(const io::Mesh& mesh, io::SurfaceClosure closure, const A
         }
     }
     const bool mirrored = determinant > 0.0;
-    const bool outward = closure == io::SurfaceClosure::ClosedOutward;
+    const bool outward = closure == scene::SurfaceClosure::ClosedOutward;
     return outward != mirrored ? CullFace::Back : CullFace::Front;
 }
 

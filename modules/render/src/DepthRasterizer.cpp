@@ -351,11 +351,11 @@ Image<float> rasterizeDepth(std::span<const TriangleList> lists, const glm::mat4
     return depth;
 }
 
-Image<float> rasterizeDepth(const io::Scene& scene, const Camera& camera,
+Image<float> rasterizeDepth(const scene::Scene& scene, const Camera& camera,
                             const std::stop_token& stop) {
     std::vector<TriangleList> lists;
     lists.reserve(scene.meshes.size());
-    for (const io::Mesh& mesh : scene.meshes) {
+    for (const scene::Mesh& mesh : scene.meshes) {
         lists.push_back(TriangleList{mesh.positions, mesh.indices});
     }
     return rasterizeDepth(lists, camera.viewMatrix(), camera.projectionMatrix(),

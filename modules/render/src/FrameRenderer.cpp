@@ -349,7 +349,7 @@ vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept 
     return options;
 }
 
-std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept {
+std::uint64_t sceneFingerprint(const scene::Scene& scene) noexcept {
     Hasher h;
     h.value(scene.meshes.size());
     for (const auto& mesh : scene.meshes) {
@@ -653,7 +653,7 @@ std::uint64_t FrameRenderer::geometryRevision(std::size_t level) const noexcept 
 }
 
 // --- Volume depth source (issue 5) ------------------------------------------
-void FrameRenderer::setVolume(std::shared_ptr<const io::Volume> volume, float isoValue) {
+void FrameRenderer::setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue) {
     if (volume == volume_.volume() && (!volume || isoValue == volumeIso_)) {
         return;
     }

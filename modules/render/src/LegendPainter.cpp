@@ -236,7 +236,7 @@ std::string parameterLegendTitle(const ParameterLegend& legend) {
     return legend.name + (legend.unit.empty() ? "" : " (" + legend.unit + ")");
 }
 
-Legends legendsFor(const io::Scene* scene, const MeshStyle& style,
+Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
                    const std::optional<std::pair<float, float>>& range,
                    const FrameSettings& settings, const VssFrameStatus& status,
                    const std::optional<std::pair<double, double>>& cueRange) {
@@ -272,7 +272,7 @@ Legends legendsFor(const io::Scene* scene, const MeshStyle& style,
         parameter.title = sceneArray ? style.legendTitle : std::string();
         if (scene != nullptr) {
             for (const auto& mesh : scene->meshes) {
-                if (const io::DataArray* array = mesh.pointArray(name)) {
+                if (const scene::DataArray* array = mesh.pointArray(name)) {
                     parameter.unit = array->unit;
                     break;
                 }

@@ -16,9 +16,9 @@
 #include <string>
 
 #include "vv/core/Error.h"
-#include "vv/io/MeshTopology.h"
 #include "vv/render/BackFaceCulling.h"
 #include "vv/render/GlResources.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace vv::render {
 
@@ -45,12 +45,12 @@ constexpr std::string_view kMeshVertex = ":/vv/shaders/mesh.vert";
 
 /// The per-vertex (value, valid) pairs of `name` on `mesh`; (0, 0) where the
 /// value is NaN / infinite or the mesh lacks the array.
-std::vector<glm::vec2> scalarsFor(const io::Mesh& mesh, const std::string& name) {
+std::vector<glm::vec2> scalarsFor(const scene::Mesh& mesh, const std::string& name) {
     std::vector<glm::vec2> out(mesh.vertexCount(), glm::vec2(0.0F));
     if (name.empty()) {
         return out;
     }
-    const io::DataArray* array = mesh.pointArray(name);
+    const scene::DataArray* array = mesh.pointArray(name);
     if (array == nullptr || array->components < 1 || array->tupleCount() != mesh.vertexCount()) {
         return out;
     }
@@ -125,9 +125,9 @@ void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) noexcept
 }
 
 /// Widens `range` by the finite range of `mesh`'s point array `name`, if any.
-void widenRange(std::optional<std::pair<float, float>>& range, const io::Mesh& mesh,
+void widenRange(std::optional<std::pair<float, float>>& range, const scene::Mesh& mesh,
                 const std::string& name) {
-    const io::DataArray* array = mesh.pointArray(name);
+    const scene::DataArray* array = mesh.pointArray(name);
     const auto r = array != nullptr ? array->finiteRange() : std::nullopt;
     if (!r) {
         return;
@@ -254,7 +254,7 @@ void validateStyle(const MeshStyle& style) {
     }
 }
 
-std::vector<std::string> shownArrays(const io::Scene& scene, const MeshStyle& style) {
+std::vector<std::string> shownArrays(const scene::Scene& scene, const MeshStyle& style) {
     std::vector<std::string> arrays;
     for (std::size_t i = 0; i < scene.meshes.size(); ++i) {
         const std::string& a = style.arrayOf(i);
@@ -271,7 +271,7 @@ std::vector<std::string> shownArrays(const io::Scene& scene, const MeshStyle& st
     return arrays;
 }
 
-std::optional<std::pair<float, float>> objectArrayRange(const io::Scene& scene,
+std::optional<std::pair<float, float>> objectArrayRange(const scene::Scene& scene,
                                                         const MeshStyle& style,
                                                         const std::string& name) {
     std::optional<std::pair<float, float>> range;
@@ -283,7 +283,7 @@ std::optional<std::pair<float, float>> objectArrayRange(const io::Scene& scene,
     return range;
 }
 
-std::string defaultArrayName(const io::Scene& scene) {
+std::string defaultArrayName(const scene::Scene& scene) {
     for (const auto& wanted : {"wss", "wall_shear_stress", "wallshearstress"}) {
         for (const auto& mesh : scene.meshes) {
             for (const auto& array : mesh.pointArrays) {
@@ -296,7 +296,7 @@ std::string defaultArrayName(const io::Scene& scene) {
     return {};
 }
 
-std::vector<std::string> pointArrayNames(const io::Scene& scene) {
+std::vector<std::string> pointArrayNames(const scene::Scene& scene) {
     std::vector<std::string> names;
     for (const auto& mesh : scene.meshes) {
         for (const auto& array : mesh.pointArrays) {
@@ -308,7 +308,8 @@ std::vector<std::string> pointArrayNames(const io::Scene& scene) {
     return names;
 }
 
-std::optional<std::pair<float, float>> arrayRange(const io::Scene& scene, const std::string& name) {
+std::optional<std::pair<float, float>> arrayRange(const scene::Scene& scene,
+                                                  const std::string& name) {
     std::optional<std::pair<float, float>> range;
     for (const auto& mesh : scene.meshes) {
         widenRange(range, mesh, name);
@@ -325,8 +326,8 @@ struct MeshRenderer::GpuMesh {
     glm::vec3 center{0.0F};  ///< of the bounding box, for sorting translucent objects
     Aabb bounds;
     /// The mesh it was uploaded from, owned by scene_ or a preview level's scene.
-    const io::Mesh* source = nullptr;
-    io::SurfaceClosure closure = io::SurfaceClosure::Open;
+    const scene::Mesh* source = nullptr;
+    scene::SurfaceClosure closure = scene::SurfaceClosure::Open;
 };
 
 MeshRenderer::MeshRenderer() : lighting_(sceneLighting()) {}
@@ -461,7 +462,7 @@ void MeshRenderer::deleteMeshes(std::vector<GpuMesh>& meshes) {
     meshes.clear();
 }
 
-void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& target) {
+void MeshRenderer::uploadMeshes(const scene::Scene& scene, std::vector<GpuMesh>& target) {
     auto& f = gl();
     for (const auto& mesh : scene.meshes) {
         const std::size_t n = mesh.vertexCount();
@@ -476,12 +477,12 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
                     mesh.source, "mesh '" + mesh.name + "' has a triangle index out of range");
             }
         }
-        io::Mesh withNormals;
+        scene::Mesh withNormals;
         const std::vector<glm::vec3>* normals = &mesh.normals;
         if (mesh.normals.size() != n) {
             withNormals.positions = mesh.positions;
             withNormals.indices = mesh.indices;
-            io::computeNormals(withNormals);
+            scene::computeNormals(withNormals);
             normals = &withNormals.normals;
         }
         std::vector<Vertex> vertices(n);
@@ -529,7 +530,7 @@ void MeshRenderer::uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& ta
     }
 }
 
-void MeshRenderer::setScene(std::shared_ptr<const io::Scene> scene) {
+void MeshRenderer::setScene(std::shared_ptr<const scene::Scene> scene) {
     deleteMeshes(meshes_);
     deletePreviews();
     ++shadingRevision_;
@@ -552,15 +553,15 @@ void MeshRenderer::deletePreviews() {
     previewTriangles_.clear();
 }
 
-void MeshRenderer::setPreviewScene(std::shared_ptr<const io::Scene> preview) {
-    std::vector<std::shared_ptr<const io::Scene>> previews;
+void MeshRenderer::setPreviewScene(std::shared_ptr<const scene::Scene> preview) {
+    std::vector<std::shared_ptr<const scene::Scene>> previews;
     if (preview) {
         previews.push_back(std::move(preview));
     }
     setPreviewScenes(std::move(previews));
 }
 
-void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>> previews) {
+void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const scene::Scene>> previews) {
     deletePreviews();
     ++shadingRevision_;
     std::erase(previews, nullptr);
@@ -729,7 +730,7 @@ void MeshRenderer::uploadScalars() {
     if (!scene_) {
         return;
     }
-    const auto upload = [&](const io::Scene& scene, const std::vector<GpuMesh>& meshes) {
+    const auto upload = [&](const scene::Scene& scene, const std::vector<GpuMesh>& meshes) {
         for (std::size_t m = 0; m < meshes.size(); ++m) {
             const auto scalars = scalarsFor(scene.meshes[m], style_.arrayOf(m));
             f.glBindBuffer(GL_ARRAY_BUFFER, meshes[m].scalars);
@@ -1088,7 +1089,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
 }
 
 void MeshRenderer::setSurfaceClosures(std::size_t level,
-                                      const std::vector<io::SurfaceClosure>& closures) {
+                                      const std::vector<scene::SurfaceClosure>& closures) {
     if (level > previews_.size()) {
         throw InvalidArgumentError("no geometry level " + std::to_string(level) + " (" +
                                    std::to_string(previews_.size()) + " preview levels)");
@@ -1104,8 +1105,8 @@ void MeshRenderer::setSurfaceClosures(std::size_t level,
     }
 }
 
-std::optional<io::SurfaceClosure> MeshRenderer::surfaceClosure(std::size_t level,
-                                                               std::size_t mesh) const noexcept {
+std::optional<scene::SurfaceClosure> MeshRenderer::surfaceClosure(std::size_t level,
+                                                                  std::size_t mesh) const noexcept {
     if (level > previews_.size()) {
         return std::nullopt;
     }

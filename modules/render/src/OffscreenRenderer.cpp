@@ -162,7 +162,7 @@ Image<float> OffscreenRenderer::lastLinearDepth() const {
     return topRowFirst(renderer_->lastSolvedDepth());
 }
 
-Camera OffscreenRenderer::cameraFor(const io::Scene& scene, const OffscreenOptions& options) {
+Camera OffscreenRenderer::cameraFor(const scene::Scene& scene, const OffscreenOptions& options) {
     Aabb bounds = scene.bounds();
     if (options.volume && !options.volume->empty()) {
         bounds.extend(options.volume->worldBounds());
@@ -187,16 +187,16 @@ Camera OffscreenRenderer::cameraFor(const io::Scene& scene, const OffscreenOptio
     return camera;
 }
 
-Camera OffscreenRenderer::setUpScene(const io::Scene& scene, const OffscreenOptions& options) {
+Camera OffscreenRenderer::setUpScene(const scene::Scene& scene, const OffscreenOptions& options) {
     const Camera camera = cameraFor(scene, options);
     // The shared pointer does not own the scene: it only lives for this call.
-    const std::shared_ptr<const io::Scene> view(std::shared_ptr<const io::Scene>(), &scene);
+    const std::shared_ptr<const scene::Scene> view(std::shared_ptr<const scene::Scene>(), &scene);
     MeshRenderer& meshes = renderer_->meshRenderer();
     meshes.setScene(view);  // checks the indices before surfaceClosures reads them
     const std::uint64_t fingerprint = sceneFingerprint(scene);
     if (!closures_ || closures_->first != fingerprint) {
         // Once per scene content, not once per render (tiles, report views).
-        closures_.emplace(fingerprint, io::surfaceClosures(scene));
+        closures_.emplace(fingerprint, scene::surfaceClosures(scene));
     }
     meshes.setSurfaceClosures(0, closures_->second);
     meshes.setStyle(options.style);
@@ -206,7 +206,7 @@ Camera OffscreenRenderer::setUpScene(const io::Scene& scene, const OffscreenOpti
     return camera;
 }
 
-Image<float> OffscreenRenderer::renderDepth(const io::Scene& scene,
+Image<float> OffscreenRenderer::renderDepth(const scene::Scene& scene,
                                             const OffscreenOptions& options) {
     checkSize(options);
     CurrentContext current(*context_, *surface_);
@@ -258,7 +258,7 @@ int OffscreenRenderer::maxRenderSide() {
     return render::maxRenderSide(*context_->functions());
 }
 
-QImage OffscreenRenderer::render(const io::Scene& scene, const OffscreenOptions& options) {
+QImage OffscreenRenderer::render(const scene::Scene& scene, const OffscreenOptions& options) {
     checkSize(options);
     CurrentContext current(*context_, *surface_);
     auto* gl = QOpenGLVersionFunctionsFactory::get<QOpenGLFunctions_4_1_Core>(context_.get());

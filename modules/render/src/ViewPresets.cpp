@@ -241,19 +241,19 @@ Camera presetCamera(const Aabb& bounds, int width, int height, ViewPreset preset
     return finish(camera, far, preset);
 }
 
-Camera presetCamera(const io::Scene& scene, int width, int height, ViewPreset preset,
+Camera presetCamera(const scene::Scene& scene, int width, int height, ViewPreset preset,
                     const glm::quat& rotation) {
     const Aabb bounds = scene.bounds();
     Camera camera = baseCamera(bounds, width, height, rotation);
     bool anyVertex = false;
-    for (const io::Mesh& mesh : scene.meshes) {
+    for (const scene::Mesh& mesh : scene.meshes) {
         anyVertex = anyVertex || !mesh.positions.empty();
     }
     if (!anyVertex) {
         return presetCamera(bounds, width, height, preset, rotation);
     }
     const float far = farDistance(camera, [&](const auto& visit) {
-        for (const io::Mesh& mesh : scene.meshes) {
+        for (const scene::Mesh& mesh : scene.meshes) {
             for (const glm::vec3& p : mesh.positions) {
                 if (isFinite(p)) {
                     visit(p);

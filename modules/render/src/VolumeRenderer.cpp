@@ -46,7 +46,7 @@ void VolumeRenderer::release() noexcept {
     context_ = nullptr;
 }
 
-void VolumeRenderer::setVolume(std::shared_ptr<const io::Volume> volume) noexcept {
+void VolumeRenderer::setVolume(std::shared_ptr<const scene::Volume> volume) noexcept {
     if (volume == volume_) {
         return;
     }
@@ -56,7 +56,7 @@ void VolumeRenderer::setVolume(std::shared_ptr<const io::Volume> volume) noexcep
 
 void VolumeRenderer::upload() {
     auto& g = *gl_;
-    const io::Volume& v = *volume_;
+    const scene::Volume& v = *volume_;
     const glm::ivec3 dims = v.dims();
     GLint max3d = 0;
     g.glGetIntegerv(GL_MAX_3D_TEXTURE_SIZE, &max3d);
@@ -71,7 +71,7 @@ void VolumeRenderer::upload() {
     }
     g.glBindTexture(GL_TEXTURE_3D, texture_);
     g.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    if (v.voxelType() == io::VoxelType::Int16) {
+    if (v.voxelType() == scene::VoxelType::Int16) {
         // Signed shorts into a float format are normalised (c / 32767) by GL;
         // the shader scales back. Half floats keep ~0.05 % of the value.
         g.glTexImage3D(GL_TEXTURE_3D, 0, GL_R16F, dims.x, dims.y, dims.z, 0, GL_RED, GL_SHORT,

@@ -3,11 +3,11 @@
 
 namespace vv::report {
 
-std::optional<SourceStudy> sourceStudy(const io::DicomScanResult& scan,
+std::optional<SourceStudy> sourceStudy(const dicom::DicomScanResult& scan,
                                        std::string_view seriesInstanceUid) {
-    for (const io::DicomPatient& patient : scan.patients) {
-        for (const io::DicomStudy& study : patient.studies) {
-            for (const io::DicomSeries& series : study.series) {
+    for (const dicom::DicomPatient& patient : scan.patients) {
+        for (const dicom::DicomStudy& study : patient.studies) {
+            for (const dicom::DicomSeries& series : study.series) {
                 if (series.seriesInstanceUid != seriesInstanceUid) {
                     continue;
                 }

@@ -14,7 +14,7 @@ namespace vv::report {
 namespace {
 
 /// The value of tuple `i` (the magnitude for vectors).
-double valueAt(const io::DataArray& array, std::size_t i) {
+double valueAt(const scene::DataArray& array, std::size_t i) {
     const auto n = static_cast<std::size_t>(std::max(array.components, 1));
     if (n == 1) {
         return static_cast<double>(array.values[i]);
@@ -50,7 +50,7 @@ double areaFractionBelow(double a, double b, double c, double threshold) noexcep
     return 1.0 - (f[2] - threshold) * (f[2] - threshold) / ((f[2] - f[1]) * (f[2] - f[0]));
 }
 
-std::vector<ParameterStats> parameterStats(const io::Scene& scene, const std::string& array,
+std::vector<ParameterStats> parameterStats(const scene::Scene& scene, const std::string& array,
                                            const StatsThresholds& thresholds) {
     if (array.empty()) {
         throw InvalidArgumentError("parameter statistics need an array name");
@@ -61,8 +61,8 @@ std::vector<ParameterStats> parameterStats(const io::Scene& scene, const std::st
         }
     }
     std::vector<ParameterStats> result;
-    for (const io::Mesh& mesh : scene.meshes) {
-        const io::DataArray* data = mesh.pointArray(array);
+    for (const scene::Mesh& mesh : scene.meshes) {
+        const scene::DataArray* data = mesh.pointArray(array);
         if (data == nullptr || data->tupleCount() != mesh.positions.size()) {
             continue;
         }

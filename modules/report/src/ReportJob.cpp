@@ -7,7 +7,7 @@
 #include <functional>
 #include <utility>
 
-#include "vv/io/Dicom.h"
+#include "vv/dicom/Dicom.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/report/DicomExport.h"
 #include "vv/report/DicomSource.h"
@@ -55,7 +55,7 @@ DicomStudy studyOf(const ReportSource& source, bool anonymise, const Progress& p
     if (source.dicomPath.empty()) {
         return study;
     }
-    const io::DicomScanResult scan = io::scanDicom(source.dicomPath, progress);
+    const dicom::DicomScanResult scan = dicom::scanDicom(source.dicomPath, progress);
     std::string uid = source.seriesInstanceUid;
     if (scan.findSeries(uid) == nullptr) {
         // The only image series under the path, as loadSceneSource() takes it.
@@ -72,7 +72,7 @@ DicomStudy studyOf(const ReportSource& source, bool anonymise, const Progress& p
 }
 
 /// The parameter section: only when an array is shown and had a range.
-std::optional<ReportParameter> parameterOf(const io::Scene& scene,
+std::optional<ReportParameter> parameterOf(const scene::Scene& scene,
                                            const render::OffscreenOptions& view,
                                            const std::optional<std::pair<float, float>>& range,
                                            const StatsThresholds& thresholds) {
@@ -81,8 +81,8 @@ std::optional<ReportParameter> parameterOf(const io::Scene& scene,
     }
     ReportParameter parameter;
     parameter.name = view.style.array;
-    for (const io::Mesh& mesh : scene.meshes) {
-        if (const io::DataArray* data = mesh.pointArray(parameter.name)) {
+    for (const scene::Mesh& mesh : scene.meshes) {
+        if (const scene::DataArray* data = mesh.pointArray(parameter.name)) {
             parameter.unit = data->unit;
             break;
         }
@@ -120,8 +120,9 @@ std::string namedViewCaption(const std::string& name) {
     return caption + " view";
 }
 
-std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer, const io::Scene& scene,
-                                        const ReportJobOptions& options, const Progress& progress) {
+std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
+                                        const scene::Scene& scene, const ReportJobOptions& options,
+                                        const Progress& progress) {
     const ReportOutputs& out = options.outputs;
     const bool image = !out.png.empty() || !out.dicomSc.empty();
     const bool report = !out.pdf.empty() || !out.dicomPdf.empty();

@@ -72,7 +72,7 @@ std::uint64_t nextTileVersion() {
 
 /// The frame without its legends (renderView paints them), over the
 /// background or, with a transparent one, unmixed from two renders.
-QImage renderFrame(render::OffscreenRenderer& renderer, const io::Scene& scene,
+QImage renderFrame(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                    const render::OffscreenOptions& frame, bool transparent) {
     if (!transparent) {
         return renderer.render(scene, frame);
@@ -174,7 +174,7 @@ int guardBand(const render::OffscreenOptions& frame, const render::Camera& camer
 
 /// Pass 1 of a tiled render: the full image's linear depth (row 0 = top,
 /// +Inf on background), read back tile by tile.
-Image<float> tiledDepth(render::OffscreenRenderer& renderer, const io::Scene& scene,
+Image<float> tiledDepth(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                         const render::OffscreenOptions& frame, const render::Camera& camera,
                         int side, const Progress& progress) {
     Image<float> depth(frame.width, frame.height, std::numeric_limits<float>::infinity());
@@ -230,7 +230,7 @@ class ExternalVssScope {
 };
 
 /// A tiled render of `frame` (no legends) into result.image; sets result.tiles.
-void renderTiled(render::OffscreenRenderer& renderer, const io::Scene& scene,
+void renderTiled(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                  const render::OffscreenOptions& frame, bool transparent, int side,
                  const Progress& progress, RenderedView& result) {
     const render::Camera camera = render::OffscreenRenderer::cameraFor(scene, frame);
@@ -305,7 +305,7 @@ int maxRenderSide() {
     return side;
 }
 
-RenderedView renderView(render::OffscreenRenderer& renderer, const io::Scene& scene,
+RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                         const ViewExportOptions& options, const Progress& progress) {
     const int width = options.render.width;
     const int height = options.render.height;

@@ -7,9 +7,9 @@ namespace vv::log {
 
 enum class Level { Debug = 0, Info = 1, Warning = 2, Error = 3, Off = 4 };
 
-/// A named logging category ("vv.io", "vv.vss", ...). Categories are cheap
+/// A named logging category ("vv.dicom", "vv.vss", ...). Categories are cheap
 /// constants; their threshold comes from the environment variable VV_LOG,
-/// e.g. `VV_LOG=debug` or `VV_LOG=vv.io=debug,vv.vss=warning` (default: info).
+/// e.g. `VV_LOG=debug` or `VV_LOG=vv.dicom=debug,vv.vss=warning` (default: info).
 class Category {
   public:
     explicit constexpr Category(std::string_view name) : name_(name) {}

@@ -4,8 +4,8 @@
 #include <glm/glm.hpp>
 
 #include "vv/core/Math.h"
-#include "vv/io/Mesh.h"
-#include "vv/io/MeshTopology.h"
+#include "vv/scene/Mesh.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace vv::render {
 
@@ -18,7 +18,7 @@ enum class CullFace {
 
 /// The faces of `mesh` that a draw with `view` and `projection` (OpenGL
 /// conventions, counter-clockwise front faces) may cull, given its closure
-/// (io::surfaceClosure) and its bounds.
+/// (scene::surfaceClosure) and its bounds.
 ///
 /// Culling the far side of a closed surface changes nothing only when every
 /// pixel's ray starts outside the solid: then the first surface it meets is
@@ -32,7 +32,7 @@ enum class CullFace {
 ///
 /// O(1) when the near-plane rectangle is outside `bounds`, else O(triangles).
 /// Assumes, like surfaceClosure, that the surface does not pass through itself.
-[[nodiscard]] CullFace cullableFaces(const io::Mesh& mesh, io::SurfaceClosure closure,
+[[nodiscard]] CullFace cullableFaces(const scene::Mesh& mesh, scene::SurfaceClosure closure,
                                      const Aabb& bounds, const glm::mat4& view,
                                      const glm::mat4& projection) noexcept;
 

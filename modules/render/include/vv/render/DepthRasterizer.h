@@ -7,8 +7,8 @@
 #include <stop_token>
 
 #include "vv/core/Image.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::render {
 
@@ -53,7 +53,7 @@ struct TriangleList {
 
 /// Every mesh of `scene` seen through `camera` (its view and projection
 /// matrices), at the camera's viewport size. Throws as above.
-[[nodiscard]] Image<float> rasterizeDepth(const io::Scene& scene, const Camera& camera,
+[[nodiscard]] Image<float> rasterizeDepth(const scene::Scene& scene, const Camera& camera,
                                           const std::stop_token& stop = {});
 
 }  // namespace vv::render

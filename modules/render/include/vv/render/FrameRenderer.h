@@ -13,12 +13,12 @@
 
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Image.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
 #include "vv/render/GlResources.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/RenderGraph.h"
 #include "vv/render/VolumeRenderer.h"
+#include "vv/scene/Mesh.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Solver.h"
 
@@ -158,7 +158,7 @@ struct ExternalVss {
 
 /// A content hash of a scene's geometry (positions and indices of every
 /// mesh), for the render graph's caching when a scene object is not kept.
-[[nodiscard]] std::uint64_t sceneFingerprint(const io::Scene& scene) noexcept;
+[[nodiscard]] std::uint64_t sceneFingerprint(const scene::Scene& scene) noexcept;
 
 /// Renders a frame through the render graph (ARCHITECTURE.md, "How a frame
 /// flows"), with OpenGL 4.1 core:
@@ -234,8 +234,8 @@ class FrameRenderer {
     /// shading and cues work on it as on meshes; nullptr = none. The volume
     /// is treated as immutable (a changed one needs a new object). Its object
     /// id is 1 + the number of meshes. Needs no GL context (uploads lazily).
-    void setVolume(std::shared_ptr<const io::Volume> volume, float isoValue);
-    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+    void setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue);
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return volume_.volume();
     }
     // --- end volume depth source -------------------------------------------

@@ -11,9 +11,9 @@
 
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/scene/Mesh.h"
 
 class QFontMetricsF;
 class QImage;
@@ -92,7 +92,7 @@ struct LegendTick {
 /// that has the array. With a scene, one parameter legend per array that
 /// visible objects show (shownArrays(): the scene's array over `range`,
 /// others over objectArrayRange()), none when no visible object shows one.
-[[nodiscard]] Legends legendsFor(const io::Scene* scene, const MeshStyle& style,
+[[nodiscard]] Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
                                  const std::optional<std::pair<float, float>>& range,
                                  const FrameSettings& settings, const VssFrameStatus& status,
                                  const std::optional<std::pair<double, double>>& cueRange);

@@ -13,9 +13,9 @@
 
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
-#include "vv/io/Mesh.h"
-#include "vv/io/MeshTopology.h"
 #include "vv/render/Camera.h"
+#include "vv/scene/Mesh.h"
+#include "vv/scene/MeshTopology.h"
 
 class QOpenGLFunctions_4_1_Core;
 class QOpenGLContext;
@@ -108,11 +108,12 @@ void validateStyle(const MeshStyle& style);
 /// its array shows no-data), without duplicates: the
 /// scene's array (style.array) first when one shows it, then the others in
 /// the order of the objects.
-[[nodiscard]] std::vector<std::string> shownArrays(const io::Scene& scene, const MeshStyle& style);
+[[nodiscard]] std::vector<std::string> shownArrays(const scene::Scene& scene,
+                                                   const MeshStyle& style);
 
 /// The automatic range of an array other than the scene's: its finite range
 /// over the objects that show it (arrayOf); nullopt when none has a finite value.
-[[nodiscard]] std::optional<std::pair<float, float>> objectArrayRange(const io::Scene& scene,
+[[nodiscard]] std::optional<std::pair<float, float>> objectArrayRange(const scene::Scene& scene,
                                                                       const MeshStyle& style,
                                                                       const std::string& name);
 
@@ -172,15 +173,15 @@ struct Lighting {
 /// The array to show by default: "wss" (wall shear stress) when some mesh
 /// has a point array of that name (ignoring case; also "wall_shear_stress",
 /// "WallShearStress"), else the empty string (neutral material).
-[[nodiscard]] std::string defaultArrayName(const io::Scene& scene);
+[[nodiscard]] std::string defaultArrayName(const scene::Scene& scene);
 
 /// Point array names over all meshes of a scene, without duplicates, in the
 /// order they are first met.
-[[nodiscard]] std::vector<std::string> pointArrayNames(const io::Scene& scene);
+[[nodiscard]] std::vector<std::string> pointArrayNames(const scene::Scene& scene);
 
 /// The finite value range of point array `name` over all meshes (magnitude for
 /// vectors); nullopt when no mesh has a finite value in it.
-[[nodiscard]] std::optional<std::pair<float, float>> arrayRange(const io::Scene& scene,
+[[nodiscard]] std::optional<std::pair<float, float>> arrayRange(const scene::Scene& scene,
                                                                 const std::string& name);
 
 /// Pixels per triangle below which a finer preview level gains nothing
@@ -224,19 +225,21 @@ class MeshRenderer {
     /// Throws RenderError when not initialized, the context is not current or
     /// GL fails (out of memory); InvalidArgumentError (naming the mesh's file)
     /// for a triangle index out of range or a mesh too large for one draw call.
-    void setScene(std::shared_ptr<const io::Scene> scene);
-    [[nodiscard]] const std::shared_ptr<const io::Scene>& scene() const noexcept { return scene_; }
+    void setScene(std::shared_ptr<const scene::Scene> scene);
+    [[nodiscard]] const std::shared_ptr<const scene::Scene>& scene() const noexcept {
+        return scene_;
+    }
 
-    /// Uploads simplified copies of the current scene (io::simplifiedScene),
+    /// Uploads simplified copies of the current scene (meshio::simplifiedScene),
     /// in any order, replacing earlier ones; drawGBuffer(camera, level) draws
     /// level 1 = the copy with the most triangles, 2 = the next, ... instead
     /// of the scene, e.g. while the camera moves. Null entries are left out;
     /// an empty list clears them, and setScene() clears them too. Same throws
     /// as setScene(), and InvalidArgumentError when a copy's mesh count
     /// differs from the scene's (then no copy is kept).
-    void setPreviewScenes(std::vector<std::shared_ptr<const io::Scene>> previews);
+    void setPreviewScenes(std::vector<std::shared_ptr<const scene::Scene>> previews);
     /// setPreviewScenes() with one copy (nullptr: none).
-    void setPreviewScene(std::shared_ptr<const io::Scene> preview);
+    void setPreviewScene(std::shared_ptr<const scene::Scene> preview);
     [[nodiscard]] bool hasPreviewScene() const noexcept { return !previews_.empty(); }
     /// Triangles of each preview level, level 1 first (most triangles).
     [[nodiscard]] const std::vector<std::size_t>& previewTriangles() const noexcept {
@@ -264,17 +267,17 @@ class MeshRenderer {
     void setBackFaceCulling(bool enabled) noexcept { backFaceCulling_ = enabled; }
     [[nodiscard]] bool backFaceCulling() const noexcept { return backFaceCulling_; }
     /// The closures of geometry level `level` (0 = the scene, k = preview
-    /// level k), one per mesh in order (io::surfaceClosures of the same
+    /// level k), one per mesh in order (scene::surfaceClosures of the same
     /// scene, e.g. computed on another thread: O(triangles), ~25 ms for 300k
     /// here). setScene() and setPreviewScenes() leave their meshes Open
     /// (drawn two-sided, no culling) until then. Throws InvalidArgumentError
     /// for a level that does not exist or a count that differs from the
     /// level's meshes.
-    void setSurfaceClosures(std::size_t level, const std::vector<io::SurfaceClosure>& closures);
+    void setSurfaceClosures(std::size_t level, const std::vector<scene::SurfaceClosure>& closures);
     /// The closure culling uses for mesh `mesh` of level `level`; nullopt when
     /// there is no such mesh.
-    [[nodiscard]] std::optional<io::SurfaceClosure> surfaceClosure(std::size_t level,
-                                                                   std::size_t mesh) const noexcept;
+    [[nodiscard]] std::optional<scene::SurfaceClosure> surfaceClosure(
+        std::size_t level, std::size_t mesh) const noexcept;
     /// How many meshes the last drawGBuffer() or draw() drew with culling.
     [[nodiscard]] std::size_t lastCulledMeshes() const noexcept { return lastCulledMeshes_; }
 
@@ -360,7 +363,7 @@ class MeshRenderer {
     void updateRange();
     void deleteMeshes(std::vector<GpuMesh>& meshes);
     /// Checks and uploads `scene`'s meshes into `target` (scalars left for uploadScalars()).
-    void uploadMeshes(const io::Scene& scene, std::vector<GpuMesh>& target);
+    void uploadMeshes(const scene::Scene& scene, std::vector<GpuMesh>& target);
     void uploadScalars();
     /// Enables culling for the next draw of `mesh` where cullableFaces() allows it.
     void cullFor(const GpuMesh& mesh, const glm::mat4& view, const glm::mat4& projection);
@@ -388,10 +391,10 @@ class MeshRenderer {
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;
     std::vector<GpuMesh> meshes_;
-    std::shared_ptr<const io::Scene> scene_;
+    std::shared_ptr<const scene::Scene> scene_;
     /// One simplified copy of scene_ and its uploaded meshes.
     struct PreviewLevel {
-        std::shared_ptr<const io::Scene> scene;
+        std::shared_ptr<const scene::Scene> scene;
         std::vector<GpuMesh> meshes;
     };
     std::vector<PreviewLevel> previews_;         ///< most triangles first

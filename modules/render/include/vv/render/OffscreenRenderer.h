@@ -10,11 +10,11 @@
 #include <utility>
 #include <vector>
 
-#include "vv/io/Mesh.h"
-#include "vv/io/MeshTopology.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/scene/Mesh.h"
+#include "vv/scene/MeshTopology.h"
 
 class QOffscreenSurface;
 class QOpenGLContext;
@@ -55,7 +55,7 @@ struct OffscreenOptions {
     /// scene's meshes (FrameRenderer::setVolume) at the iso value `isoValue`
     /// (its units, e.g. HU); nullptr = none. Its world bounds join the
     /// scene's for the default camera and the clip planes.
-    std::shared_ptr<const io::Volume> volume;
+    std::shared_ptr<const scene::Volume> volume;
     float isoValue = 150.0F;
 };
 
@@ -99,16 +99,18 @@ class OffscreenRenderer {
     /// at options.width x options.height. Returns an opaque image in
     /// QImage::Format_RGB32. Throws InvalidArgumentError for a size out of
     /// range and RenderError when GL fails (framebuffer, out of memory).
-    [[nodiscard]] QImage render(const io::Scene& scene, const OffscreenOptions& options);
+    [[nodiscard]] QImage render(const scene::Scene& scene, const OffscreenOptions& options);
 
     /// Renders only the G-buffer of `scene` (like render()) and returns its
     /// linear depth: width x height, row 0 = top, +Inf on background. Throws
     /// like render().
-    [[nodiscard]] Image<float> renderDepth(const io::Scene& scene, const OffscreenOptions& options);
+    [[nodiscard]] Image<float> renderDepth(const scene::Scene& scene,
+                                           const OffscreenOptions& options);
 
     /// The camera render() draws `scene` with for `options`. Throws
     /// InvalidArgumentError when the camera's window does not match the size.
-    [[nodiscard]] static Camera cameraFor(const io::Scene& scene, const OffscreenOptions& options);
+    [[nodiscard]] static Camera cameraFor(const scene::Scene& scene,
+                                          const OffscreenOptions& options);
 
     /// The following renders show `external`'s VSS instead of solving one
     /// (FrameRenderer::setExternalVss); nullopt = solve as usual.
@@ -159,7 +161,7 @@ class OffscreenRenderer {
     void createContext();
     /// Hands `scene` and the options' style and volume to the frame renderer
     /// (context current); returns the camera.
-    Camera setUpScene(const io::Scene& scene, const OffscreenOptions& options);
+    Camera setUpScene(const scene::Scene& scene, const OffscreenOptions& options);
 
     std::unique_ptr<QOffscreenSurface> ownSurface_;  ///< null with a borrowed surface
     QOffscreenSurface* surface_ = nullptr;
@@ -168,8 +170,8 @@ class OffscreenRenderer {
     std::shared_ptr<GlTexture> output_;
     std::string description_;
     std::optional<std::pair<float, float>> lastRange_;
-    /// The last scene's sceneFingerprint and io::surfaceClosures.
-    std::optional<std::pair<std::uint64_t, std::vector<io::SurfaceClosure>>> closures_;
+    /// The last scene's sceneFingerprint and scene::surfaceClosures.
+    std::optional<std::pair<std::uint64_t, std::vector<scene::SurfaceClosure>>> closures_;
 };
 
 }  // namespace vv::render

@@ -8,8 +8,8 @@
 #include <string_view>
 
 #include "vv/core/Math.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/Camera.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::render {
 
@@ -115,7 +115,8 @@ struct NamedView {
 /// corners of its bounding box (tighter: the tree then just keeps the 10 %
 /// margin). The target is still the centre of scene.bounds(). A scene without
 /// vertices behaves as an empty box.
-[[nodiscard]] Camera presetCamera(const io::Scene& scene, int width, int height, ViewPreset preset,
+[[nodiscard]] Camera presetCamera(const scene::Scene& scene, int width, int height,
+                                  ViewPreset preset,
                                   const glm::quat& rotation = glm::quat(1.0F, 0.0F, 0.0F, 0.0F));
 
 }  // namespace vv::render

@@ -4,8 +4,8 @@
 #include <glm/glm.hpp>
 #include <memory>
 
-#include "vv/io/Volume.h"
 #include "vv/render/Camera.h"
+#include "vv/scene/Volume.h"
 
 class QOpenGLContext;
 class QOpenGLFunctions_4_1_Core;
@@ -47,8 +47,8 @@ class VolumeRenderer {
     /// The volume to draw (nullptr = none). Treated as immutable: setting the
     /// same object again keeps the uploaded texture; a changed volume needs a
     /// new object. Uploads lazily, at the next drawGBuffer().
-    void setVolume(std::shared_ptr<const io::Volume> volume) noexcept;
-    [[nodiscard]] const std::shared_ptr<const io::Volume>& volume() const noexcept {
+    void setVolume(std::shared_ptr<const scene::Volume> volume) noexcept;
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return volume_;
     }
 
@@ -67,7 +67,7 @@ class VolumeRenderer {
     unsigned program_ = 0;
     unsigned vao_ = 0;
     unsigned texture_ = 0;
-    std::shared_ptr<const io::Volume> volume_;
+    std::shared_ptr<const scene::Volume> volume_;
     bool uploaded_ = false;
     float valueScale_ = 1.0F;  ///< texel value -> volume value (Int16 is normalised)
 };

@@ -4,7 +4,7 @@
 #include <optional>
 #include <string_view>
 
-#include "vv/io/Dicom.h"
+#include "vv/dicom/Dicom.h"
 #include "vv/report/DicomExport.h"
 #include "vv/report/ReportPatient.h"
 
@@ -23,7 +23,7 @@ struct SourceStudy {
 
 /// The patient and study of series `seriesInstanceUid` in `scan`; nullopt
 /// when the scan has no such series.
-[[nodiscard]] std::optional<SourceStudy> sourceStudy(const io::DicomScanResult& scan,
+[[nodiscard]] std::optional<SourceStudy> sourceStudy(const dicom::DicomScanResult& scan,
                                                      std::string_view seriesInstanceUid);
 
 }  // namespace vv::report

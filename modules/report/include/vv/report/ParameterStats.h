@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "vv/io/Mesh.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::report {
 
@@ -36,7 +36,7 @@ struct ParameterStats {
 /// The statistics of point array `array` on each mesh of `scene` that has it
 /// (meshes without it, or without a triangle with finite values, are left out).
 /// Throws InvalidArgumentError when `array` is empty or a threshold is not finite.
-[[nodiscard]] std::vector<ParameterStats> parameterStats(const io::Scene& scene,
+[[nodiscard]] std::vector<ParameterStats> parameterStats(const scene::Scene& scene,
                                                          const std::string& array,
                                                          const StatsThresholds& thresholds);
 

@@ -8,11 +8,11 @@
 
 #include "vv/core/Error.h"
 #include "vv/core/Progress.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/report/ParameterStats.h"
 #include "vv/report/PdfReport.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::report {
 
@@ -94,8 +94,8 @@ class ReportWriteError : public IoError {
 /// RenderError (GL), IoError / FormatError reading the DICOM source,
 /// ReportWriteError when an output cannot be written (outputs before it stay
 /// written), CancelledError.
-std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer, const io::Scene& scene,
-                                        const ReportJobOptions& options,
+std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
+                                        const scene::Scene& scene, const ReportJobOptions& options,
                                         const Progress& progress = {});
 
 }  // namespace vv::report

@@ -7,10 +7,10 @@
 #include <utility>
 
 #include "vv/core/Progress.h"
-#include "vv/io/Mesh.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/OffscreenRenderer.h"
+#include "vv/scene/Mesh.h"
 
 namespace vv::report {
 
@@ -89,8 +89,8 @@ struct RenderedView {
 /// inside the solve (CancelledError).
 /// Throws InvalidArgumentError for a size out of range or maxTileSide in
 /// 1..kMinTileSide-1 or negative, RenderError when GL fails, CancelledError.
-[[nodiscard]] RenderedView renderView(render::OffscreenRenderer& renderer, const io::Scene& scene,
-                                      const ViewExportOptions& options,
+[[nodiscard]] RenderedView renderView(render::OffscreenRenderer& renderer,
+                                      const scene::Scene& scene, const ViewExportOptions& options,
                                       const Progress& progress = {});
 
 /// Writes `image` as PNG to `path` atomically (temporary file in the target

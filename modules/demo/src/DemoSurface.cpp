@@ -1,0 +1,953 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The surface of a vessel tree: a narrow-band signed distance field (smooth
+// union of tubes along the centrelines) sampled slab by slab, flying edges at
+// 0, windowed-sinc smoothing, outward normals, and per-vertex pressure, wall
+// shear stress, segment id and generation. See docs/demo-data.md.
+#include <vtkCallbackCommand.h>
+#include <vtkCellArray.h>
+#include <vtkCommand.h>
+#include <vtkFloatArray.h>
+#include <vtkFlyingEdges3D.h>
+#include <vtkImageData.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkPolyDataAlgorithm.h>
+#include <vtkPolyDataNormals.h>
+#include <vtkSmartPointer.h>
+#include <vtkWindowedSincPolyDataFilter.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <numbers>
+#include <span>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include "DemoTreeDetail.h"
+#include "vv/core/Error.h"
+#include "vv/core/Parallel.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/vtkext/VtkConvert.h"
+
+namespace vv::demo {
+
+namespace {
+
+// Grid and field (see docs/demo-data.md).
+constexpr int kBinVoxels = 8;                   // bins of 8^3 voxels for the narrow band
+constexpr int kSlabVoxels = 4 * kBinVoxels;     // voxel layers extracted at a time
+constexpr int kMaxAxisVoxels = 4096;            // keeps float index coordinates exact enough
+constexpr double kMaxVoxels = 256e6;            // bounds the time; slabs bound the memory
+constexpr double kZeroGuardVoxels = 0.05;       // field values kept this far from 0
+constexpr double kTargetTriangles = 300000.0;   // the automatic voxel size aims here
+constexpr double kTrianglesPerVoxelArea = 2.9;  // flying edges, measured: per h^2 of surface
+constexpr double kVoxelsPerRadius = 2.0;        // automatic: >= 4 voxels across a diameter
+constexpr double kBandVoxels = 3.0;             // the field is exact within this band
+constexpr double kMinRadiusVoxels = 1.25;       // thinner vessels are drawn this thick
+constexpr double kBlendPerRadius = 0.6;         // smooth-union width / radius of the added tube
+constexpr float kFar = 1e30F;
+
+// Finishing and point data.
+constexpr int kSmoothingIterations = 20;
+constexpr double kSmoothingPassBand = 0.05;
+constexpr double kWssBump = 0.15;      // +-15 % near junctions
+constexpr double kWssBumpRadii = 2.0;  // within 2 radii of a junction
+
+// Progress of the stages. Extraction may run up to kMaxExtractions times,
+// each on a coarser grid, to stay within the triangle limit; attempt i
+// reports in [kExtractEnds[i], kExtractEnds[i + 1]].
+constexpr int kMaxExtractions = 4;
+constexpr std::array<double, kMaxExtractions + 1> kExtractEnds = {0.0, 0.45, 0.5, 0.53, 0.55};
+constexpr double kSmoothEnd = 0.85;
+constexpr double kNormalsEnd = 0.9;
+
+/// One straight piece of a centreline, with what the field and the point data need.
+struct Piece {
+    glm::vec3 a{0.0F};
+    glm::vec3 ab{0.0F};
+    float invLength2 = 0.0F;  // 0 for a degenerate piece
+    float length = 0.0F;
+    float arcStart = 0.0F;  // arc length of a along its segment, mm
+    float radius = 0.0F;    // drawn radius, mm
+    float blend = 0.0F;     // smooth-union width, mm
+    int segment = 0;
+};
+
+struct Grid {
+    glm::dvec3 origin{0.0};
+    double spacing = 0.0;
+    int nx = 0;
+    int ny = 0;
+    int nz = 0;
+    [[nodiscard]] double voxelCount() const {
+        return static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nz);
+    }
+    [[nodiscard]] bool tooLarge() const {
+        return voxelCount() > kMaxVoxels || std::max({nx, ny, nz}) > kMaxAxisVoxels;
+    }
+};
+
+double drawnRadius(double radius, double spacing) {
+    return std::max(radius, kMinRadiusVoxels * spacing);
+}
+
+/// The grid around the tree for a voxel size: the centrelines' box padded by
+/// the thickest drawn radius, the blend width, the band and two voxels.
+Grid makeGrid(const VesselTree& tree, double spacing) {
+    Aabb box;
+    double padding = 0.0;
+    for (const auto& s : tree.segments) {
+        box.extend(boundsOf(s.centerline));
+        const double r = drawnRadius(s.radiusMm, spacing);
+        padding = std::max(padding, r * (1.0 + kBlendPerRadius));
+    }
+    padding += (kBandVoxels + 2.0) * spacing;
+    Grid grid;
+    grid.spacing = spacing;
+    grid.origin = glm::dvec3(box.min) - padding;
+    const glm::dvec3 size = glm::dvec3(box.max) - glm::dvec3(box.min) + 2.0 * padding;
+    const auto cells = [&](double extent) {
+        const double n = std::ceil(extent / spacing) + 1.0;
+        if (n > 1e6) {
+            throw InvalidArgumentError("vessel surface: voxel size " + std::to_string(spacing) +
+                                       " mm is far too small for a tree " + std::to_string(extent) +
+                                       " mm across");
+        }
+        return static_cast<int>(n);
+    };
+    grid.nx = cells(size.x);
+    grid.ny = cells(size.y);
+    grid.nz = cells(size.z);
+    return grid;
+}
+
+/// Triangles flying edges makes for the tree's tubes at a voxel size (estimate).
+double expectedTriangles(double area, double spacing) {
+    return kTrianglesPerVoxelArea * area / (spacing * spacing);
+}
+
+/// The automatic voxel size: kVoxelsPerRadius across the thinnest radius, or
+/// finer if that is needed for about kTargetTriangles; then coarser if needed
+/// to stay below 90 % of maxTriangles (when not 0) and within the grid limits.
+double automaticVoxelSize(const VesselTree& tree, int maxTriangles) {
+    double thinnest = std::numeric_limits<double>::max();
+    double area = 0.0;
+    for (const auto& s : tree.segments) {
+        thinnest = std::min(thinnest, s.radiusMm);
+        area += 2.0 * std::numbers::pi * s.radiusMm * s.lengthMm;
+    }
+    double spacing = std::min(thinnest / kVoxelsPerRadius,
+                              std::sqrt(kTrianglesPerVoxelArea * area / kTargetTriangles));
+    if (maxTriangles > 0 && expectedTriangles(area, spacing) > 0.9 * maxTriangles) {
+        spacing = std::sqrt(kTrianglesPerVoxelArea * area / (0.9 * maxTriangles));
+    }
+    for (int i = 0; i < 16; ++i) {
+        const Grid grid = makeGrid(tree, spacing);
+        if (!grid.tooLarge()) {
+            break;
+        }
+        const double longest = std::max({grid.nx, grid.ny, grid.nz});
+        spacing *=
+            1.01 * std::max(std::cbrt(grid.voxelCount() / kMaxVoxels), longest / kMaxAxisVoxels);
+    }
+    return spacing;
+}
+
+std::vector<Piece> makePieces(const VesselTree& tree, double spacing) {
+    std::vector<Piece> pieces;
+    for (const auto& s : tree.segments) {
+        const auto radius = static_cast<float>(drawnRadius(s.radiusMm, spacing));
+        double arc = 0.0;
+        for (std::size_t i = 0; i + 1 < s.centerline.size(); ++i) {
+            Piece p;
+            p.a = s.centerline[i];
+            p.ab = s.centerline[i + 1] - s.centerline[i];
+            const double length = glm::length(glm::dvec3(p.ab));
+            p.length = static_cast<float>(length);
+            p.invLength2 = length > 0.0 ? static_cast<float>(1.0 / (length * length)) : 0.0F;
+            p.arcStart = static_cast<float>(arc);
+            p.radius = radius;
+            p.blend = static_cast<float>(kBlendPerRadius) * radius;
+            p.segment = s.id;
+            pieces.push_back(p);
+            arc += length;
+        }
+    }
+    return pieces;
+}
+
+/// Pieces binned into a coarse grid: a bin lists (in piece order, so grouped by
+/// segment) every piece whose box padded by radius + blend + band reaches it.
+/// Outside those boxes a piece cannot change the clamped field.
+struct Bins {
+    glm::dvec3 origin{0.0};
+    double size = 0.0;
+    int nx = 0;
+    int ny = 0;
+    int nz = 0;
+    std::vector<std::uint32_t> start;  // nx * ny * nz + 1 offsets into items
+    std::vector<std::uint32_t> items;  // piece indices
+    /// The items of one segment within a bin.
+    struct Run {
+        int segment = 0;
+        std::uint32_t begin = 0;
+        std::uint32_t end = 0;
+    };
+    std::vector<std::uint32_t> runStart;  // nx * ny * nz + 1 offsets into runs
+    std::vector<Run> runs;                // per bin in segment order
+    std::size_t maxRunsPerBin = 0;
+
+    [[nodiscard]] long count() const { return static_cast<long>(nx) * ny * nz; }
+    [[nodiscard]] std::span<const std::uint32_t> at(long bin) const {
+        const auto b = static_cast<std::size_t>(bin);
+        return {items.data() + start[b], items.data() + start[b + 1]};
+    }
+    [[nodiscard]] std::span<const Run> runsAt(long bin) const {
+        const auto b = static_cast<std::size_t>(bin);
+        return {runs.data() + runStart[b], runs.data() + runStart[b + 1]};
+    }
+    [[nodiscard]] long binOf(const glm::vec3& p) const {
+        const auto index = [&](float v, double o, int n) {
+            const double i = std::floor((static_cast<double>(v) - o) / size);
+            return static_cast<long>(std::clamp(i, 0.0, static_cast<double>(n - 1)));
+        };
+        return index(p.x, origin.x, nx) +
+               static_cast<long>(nx) *
+                   (index(p.y, origin.y, ny) + static_cast<long>(ny) * index(p.z, origin.z, nz));
+    }
+};
+
+Bins makeBins(const Grid& grid, const std::vector<Piece>& pieces, double band) {
+    Bins bins;
+    bins.origin = grid.origin - 0.5 * grid.spacing;  // bin edges between voxel centres
+    bins.size = kBinVoxels * grid.spacing;
+    bins.nx = (grid.nx + kBinVoxels - 1) / kBinVoxels;
+    bins.ny = (grid.ny + kBinVoxels - 1) / kBinVoxels;
+    bins.nz = (grid.nz + kBinVoxels - 1) / kBinVoxels;
+
+    struct Range {
+        int x0, x1, y0, y1, z0, z1;
+    };
+    std::vector<Range> ranges(pieces.size());
+    const auto clampBin = [&](double v, double o, int n) {
+        return static_cast<int>(
+            std::clamp(std::floor((v - o) / bins.size), 0.0, static_cast<double>(n - 1)));
+    };
+    std::vector<std::uint32_t> counts(static_cast<std::size_t>(bins.count()) + 1, 0);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const Piece& p = pieces[i];
+        const glm::dvec3 a(p.a);
+        const glm::dvec3 b = a + glm::dvec3(p.ab);
+        const double pad = static_cast<double>(p.radius) + static_cast<double>(p.blend) + band;
+        const glm::dvec3 lo = glm::min(a, b) - pad;
+        const glm::dvec3 hi = glm::max(a, b) + pad;
+        Range& r = ranges[i];
+        r = {clampBin(lo.x, bins.origin.x, bins.nx), clampBin(hi.x, bins.origin.x, bins.nx),
+             clampBin(lo.y, bins.origin.y, bins.ny), clampBin(hi.y, bins.origin.y, bins.ny),
+             clampBin(lo.z, bins.origin.z, bins.nz), clampBin(hi.z, bins.origin.z, bins.nz)};
+        for (int z = r.z0; z <= r.z1; ++z) {
+            for (int y = r.y0; y <= r.y1; ++y) {
+                for (int x = r.x0; x <= r.x1; ++x) {
+                    ++counts[static_cast<std::size_t>(
+                        x + bins.nx * (y + static_cast<long>(bins.ny) * z))];
+                }
+            }
+        }
+    }
+    bins.start.assign(counts.size(), 0);
+    std::uint64_t total = 0;
+    for (std::size_t b = 0; b + 1 < counts.size(); ++b) {
+        bins.start[b] = static_cast<std::uint32_t>(total);
+        total += counts[b];
+        if (total > std::numeric_limits<std::uint32_t>::max()) {
+            throw InvalidArgumentError("vessel surface: too many centreline pieces per bin");
+        }
+    }
+    bins.start.back() = static_cast<std::uint32_t>(total);
+    bins.items.resize(static_cast<std::size_t>(total));
+    std::vector<std::uint32_t> fill(bins.start.begin(), bins.start.end() - 1);
+    for (std::size_t i = 0; i < pieces.size(); ++i) {
+        const Range& r = ranges[i];
+        for (int z = r.z0; z <= r.z1; ++z) {
+            for (int y = r.y0; y <= r.y1; ++y) {
+                for (int x = r.x0; x <= r.x1; ++x) {
+                    const auto b = static_cast<std::size_t>(
+                        x + bins.nx * (y + static_cast<long>(bins.ny) * z));
+                    bins.items[fill[b]++] = static_cast<std::uint32_t>(i);
+                }
+            }
+        }
+    }
+    // Pieces were listed in piece order, so each bin's items come grouped by
+    // segment, in segment order.
+    bins.runStart.assign(counts.size(), 0);
+    for (std::size_t b = 0; b + 1 < counts.size(); ++b) {
+        bins.runStart[b] = static_cast<std::uint32_t>(bins.runs.size());
+        for (std::uint32_t k = bins.start[b]; k < bins.start[b + 1]; ++k) {
+            const int segment = pieces[bins.items[k]].segment;
+            if (bins.runs.size() == bins.runStart[b] || bins.runs.back().segment != segment) {
+                bins.runs.push_back({segment, k, k});
+            }
+            bins.runs.back().end = k + 1;
+        }
+        bins.maxRunsPerBin =
+            std::max<std::size_t>(bins.maxRunsPerBin, bins.runs.size() - bins.runStart[b]);
+    }
+    bins.runStart.back() = static_cast<std::uint32_t>(bins.runs.size());
+    return bins;
+}
+
+/// What the field needs to know about a segment besides its pieces.
+struct SegmentShape {
+    int parent = -1;
+    float blend = 0.0F;  // smooth-union width, mm
+};
+
+std::vector<SegmentShape> makeShapes(const VesselTree& tree, double spacing) {
+    std::vector<SegmentShape> shapes;
+    shapes.reserve(tree.segments.size());
+    for (const auto& s : tree.segments) {
+        // As in makePieces, bit for bit: the bins are padded with the pieces' blend.
+        const auto radius = static_cast<float>(drawnRadius(s.radiusMm, spacing));
+        shapes.push_back({s.parent, static_cast<float>(kBlendPerRadius) * radius});
+    }
+    return shapes;
+}
+
+/// Polynomial smooth minimum of width k: min(a, b) away from a == b, blended
+/// (and at most k / 4 lower) where they are within k of each other.
+inline float smoothMin(float a, float b, float k) {
+    const float h = std::max(k - std::abs(a - b), 0.0F) / k;
+    return std::min(a, b) - h * h * k * 0.25F;
+}
+
+/// Closest point parameter t in [0, 1] on the piece and the squared distance.
+inline float pieceDistance2(const Piece& piece, const glm::vec3& p, float& t) {
+    const glm::vec3 ap = p - piece.a;
+    t = std::clamp(glm::dot(ap, piece.ab) * piece.invLength2, 0.0F, 1.0F);
+    const glm::vec3 d = ap - piece.ab * t;
+    return glm::dot(d, d);
+}
+
+/// The field at p from the pieces of one bin. Per segment the exact distance
+/// d to its tube (minimum over its pieces); then the minimum over the terms
+/// smin(d_child, d_parent, k_child) and smin(d_a, d_b, min(k_a, k_b)) for
+/// siblings a, b: every pair of segments meeting at a junction is blended,
+/// everything else joined by a plain minimum. A pair term changes only where
+/// both members are within band + k, which is why a segment missing from the
+/// bin (further than band + k) cannot change the clamped field: the narrow
+/// band is exact. `distance` has room for the bin's runs. kFar for no runs.
+inline float fieldAt(const glm::vec3& p, std::span<const Bins::Run> runs,
+                     const std::vector<std::uint32_t>& items, const std::vector<Piece>& pieces,
+                     const std::vector<SegmentShape>& shapes, float* distance) {
+    const std::size_t n = runs.size();
+    for (std::size_t a = 0; a < n; ++a) {
+        float d = kFar;
+        for (std::uint32_t k = runs[a].begin; k < runs[a].end; ++k) {
+            const Piece& piece = pieces[items[k]];
+            float t = 0.0F;
+            d = std::min(d, std::sqrt(pieceDistance2(piece, p, t)) - piece.radius);
+        }
+        distance[a] = d;
+    }
+    float result = kFar;
+    for (std::size_t a = 0; a < n; ++a) {
+        const SegmentShape& shape = shapes[static_cast<std::size_t>(runs[a].segment)];
+        float term = distance[a];
+        // Runs are in segment order and parents come first: look before a.
+        for (std::size_t b = 0; b < a; ++b) {
+            if (runs[b].segment == shape.parent) {
+                term = smoothMin(distance[a], distance[b], shape.blend);
+                break;
+            }
+        }
+        result = std::min(result, term);
+        if (shape.parent < 0) {
+            continue;
+        }
+        for (std::size_t b = a + 1; b < n; ++b) {
+            const SegmentShape& other = shapes[static_cast<std::size_t>(runs[b].segment)];
+            if (other.parent == shape.parent) {
+                result = std::min(result, smoothMin(distance[a], distance[b],
+                                                    std::min(shape.blend, other.blend)));
+            }
+        }
+    }
+    return result;
+}
+
+/// Samples the field for the voxel layers z0..z1 (all x and y) into values,
+/// x fastest. Values within a small guard of 0 are moved to +-guard, so that
+/// no surface point lies on (or rounds onto) a grid point or grid plane.
+void sampleSlab(const Grid& grid, const std::vector<Piece>& pieces, const Bins& bins,
+                const std::vector<SegmentShape>& shapes, float band, int z0, int z1, float* values,
+                const std::stop_token& stop) {
+    const long nx = grid.nx;
+    const long ny = grid.ny;
+    const glm::vec3 origin(grid.origin);
+    const auto h = static_cast<float>(grid.spacing);
+    const float guard = static_cast<float>(kZeroGuardVoxels) * h;
+    const long layer0 = z0 / kBinVoxels;
+    const long layer1 = z1 / kBinVoxels;
+    const long binsPerLayer = static_cast<long>(bins.nx) * bins.ny;
+    const auto body = [&](long begin, long end) {
+        std::vector<float> distance(bins.maxRunsPerBin);
+        for (long i = begin; i < end; ++i) {
+            const long layer = layer0 + i / binsPerLayer;
+            const long bx = (i % binsPerLayer) % bins.nx;
+            const long by = (i % binsPerLayer) / bins.nx;
+            const auto runs = bins.runsAt(bx + bins.nx * (by + bins.ny * layer));
+            const long x0 = bx * kBinVoxels;
+            const long y0 = by * kBinVoxels;
+            const long x1 = std::min(nx, x0 + kBinVoxels);
+            const long y1 = std::min(ny, y0 + kBinVoxels);
+            const long zBegin = std::max<long>(z0, layer * kBinVoxels);
+            const long zEnd = std::min<long>(z1 + 1, (layer + 1) * kBinVoxels);
+            for (long z = zBegin; z < zEnd; ++z) {
+                for (long y = y0; y < y1; ++y) {
+                    float* row = values + ((z - z0) * ny + y) * nx;
+                    if (runs.empty()) {
+                        std::fill(row + x0, row + x1, band);
+                        continue;
+                    }
+                    for (long x = x0; x < x1; ++x) {
+                        const glm::vec3 p =
+                            origin + h * glm::vec3(static_cast<float>(x), static_cast<float>(y),
+                                                   static_cast<float>(z));
+                        float v = std::clamp(
+                            fieldAt(p, runs, bins.items, pieces, shapes, distance.data()), -band,
+                            band);
+                        if (std::abs(v) < guard) {
+                            v = v < 0.0F ? -guard : guard;
+                        }
+                        row[x] = v;
+                    }
+                }
+            }
+        }
+    };
+    parallelFor(0, binsPerLayer * (layer1 - layer0 + 1), 4, body, stop);
+}
+
+/// Points of a slab's output that lie on a grid plane z = const, by their
+/// (x, y) voxel cell, to join them with the next slab's.
+class PlanePoints {
+  public:
+    explicit PlanePoints(long nx) : nx_(nx) {}
+    void clear() { cells_.clear(); }
+    [[nodiscard]] bool empty() const { return cells_.empty(); }
+    void add(const glm::vec3& p, vtkIdType id) {
+        cells_.emplace(key(cellOf(p.x), cellOf(p.y)), Entry{p, id});
+    }
+    /// The id of the point within tolerance of p in (x, y), or -1.
+    [[nodiscard]] vtkIdType find(const glm::vec3& p, float tolerance) const {
+        const long cx = cellOf(p.x);
+        const long cy = cellOf(p.y);
+        for (long dy = -1; dy <= 1; ++dy) {
+            for (long dx = -1; dx <= 1; ++dx) {
+                const auto [first, last] = cells_.equal_range(key(cx + dx, cy + dy));
+                for (auto it = first; it != last; ++it) {
+                    if (std::abs(it->second.p.x - p.x) <= tolerance &&
+                        std::abs(it->second.p.y - p.y) <= tolerance) {
+                        return it->second.id;
+                    }
+                }
+            }
+        }
+        return -1;
+    }
+
+  private:
+    struct Entry {
+        glm::vec3 p;
+        vtkIdType id;
+    };
+    static long cellOf(float v) { return static_cast<long>(std::floor(v)); }
+    [[nodiscard]] long key(long cx, long cy) const { return (cx + 1) + (nx_ + 3) * (cy + 1); }
+    long nx_;
+    std::unordered_multimap<long, Entry> cells_;
+};
+
+/// The zero level of the field, built slab by slab (kSlabVoxels layers of
+/// voxels at a time, neighbours sharing one layer) so that the whole grid
+/// never needs to be in memory; slabs the narrow band does not reach are
+/// skipped. Flying edges runs in index space (origin 0, spacing 1, the slab's
+/// z extent), so the points a slab makes on its last layer are the next
+/// slab's points on its first layer; they are joined into one point.
+vtkSmartPointer<vtkPolyData> extractSurface(const Grid& grid, const std::vector<Piece>& pieces,
+                                            const Bins& bins,
+                                            const std::vector<SegmentShape>& shapes, float band,
+                                            const Progress& progress) {
+    const std::string_view stage = "Extracting surface";
+    // Surface points are at least this far (in voxels) from any grid plane
+    // they do not lie in, thanks to the guard; joining tolerates a quarter.
+    const auto tolerance = static_cast<float>(0.25 * kZeroGuardVoxels / (2.0 * kBandVoxels));
+    std::vector<glm::vec3> points;  // index space
+    std::vector<vtkIdType> triangles;
+    PlanePoints below(grid.nx);  // previous slab's points on this slab's first layer
+    PlanePoints above(grid.nx);
+    const long binsPerLayer = static_cast<long>(bins.nx) * bins.ny;
+    const int slabCount = std::max(1, (grid.nz - 1 + kSlabVoxels - 1) / kSlabVoxels);
+    auto scalars = vtkSmartPointer<vtkFloatArray>::New();
+    for (int slab = 0; slab < slabCount; ++slab) {
+        progress.report(static_cast<double>(slab) / slabCount, stage);
+        const int z0 = slab * kSlabVoxels;
+        const int z1 = std::min(grid.nz - 1, z0 + kSlabVoxels);
+        const long firstBin = binsPerLayer * (z0 / kBinVoxels);
+        const long endBin = binsPerLayer * (z1 / kBinVoxels + 1);
+        if (bins.start[static_cast<std::size_t>(firstBin)] ==
+            bins.start[static_cast<std::size_t>(endBin)]) {
+            below.clear();  // no piece reaches the slab: no surface in it
+            continue;
+        }
+        auto image = vtkSmartPointer<vtkImageData>::New();
+        image->SetExtent(0, grid.nx - 1, 0, grid.ny - 1, z0, z1);
+        image->SetOrigin(0.0, 0.0, 0.0);
+        image->SetSpacing(1.0, 1.0, 1.0);
+        scalars->SetNumberOfTuples(static_cast<vtkIdType>(grid.nx) * grid.ny * (z1 - z0 + 1));
+        image->GetPointData()->SetScalars(scalars);
+        sampleSlab(grid, pieces, bins, shapes, band, z0, z1, scalars->GetPointer(0),
+                   progress.stopToken());
+
+        auto extract = vtkSmartPointer<vtkFlyingEdges3D>::New();
+        extract->SetInputData(image);
+        extract->SetNumberOfContours(1);
+        extract->SetValue(0, 0.0);
+        extract->ComputeNormalsOff();
+        extract->ComputeGradientsOff();
+        extract->ComputeScalarsOff();
+        extract->InterpolateAttributesOff();
+        extract->Update();
+        vtkPolyData* out = extract->GetOutput();
+
+        const vtkIdType localCount = out->GetNumberOfPoints();
+        std::vector<vtkIdType> globalId(static_cast<std::size_t>(localCount));
+        above.clear();
+        for (vtkIdType i = 0; i < localCount; ++i) {
+            double x[3];
+            out->GetPoint(i, x);
+            const glm::vec3 p(static_cast<float>(x[0]), static_cast<float>(x[1]),
+                              static_cast<float>(x[2]));
+            vtkIdType id = -1;
+            if (std::abs(p.z - static_cast<float>(z0)) <= tolerance) {
+                id = below.find(p, tolerance);
+                if (id < 0) {
+                    throw Error(
+                        "vessel surface: internal error, slabs do not join at voxel layer " +
+                        std::to_string(z0));
+                }
+            } else {
+                id = static_cast<vtkIdType>(points.size());
+                points.push_back(p);
+            }
+            if (std::abs(p.z - static_cast<float>(z1)) <= tolerance) {
+                above.add(p, id);
+            }
+            globalId[static_cast<std::size_t>(i)] = id;
+        }
+        vtkCellArray* polys = out->GetPolys();
+        vtkIdType count = 0;
+        const vtkIdType* ids = nullptr;
+        for (polys->InitTraversal(); polys->GetNextCell(count, ids) != 0;) {
+            if (count != 3) {
+                throw Error("vessel surface: internal error, flying edges made a non-triangle");
+            }
+            for (vtkIdType k = 0; k < 3; ++k) {
+                triangles.push_back(globalId[static_cast<std::size_t>(ids[k])]);
+            }
+        }
+        std::swap(below, above);
+    }
+    progress.report(1.0, stage);
+
+    auto worldPoints = vtkSmartPointer<vtkPoints>::New();
+    worldPoints->SetDataTypeToFloat();
+    worldPoints->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec3 w = grid.origin + grid.spacing * glm::dvec3(points[i]);
+        worldPoints->SetPoint(static_cast<vtkIdType>(i), w.x, w.y, w.z);
+    }
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    cells->AllocateExact(static_cast<vtkIdType>(triangles.size() / 3),
+                         static_cast<vtkIdType>(triangles.size()));
+    for (std::size_t t = 0; t < triangles.size(); t += 3) {
+        cells->InsertNextCell(3, triangles.data() + t);
+    }
+    auto surface = vtkSmartPointer<vtkPolyData>::New();
+    surface->SetPoints(worldPoints);
+    surface->SetPolys(cells);
+    return surface;
+}
+
+/// Forwards a VTK filter's progress to a Progress; on cancellation (or any
+/// exception from the callback) asks the filter to abort and keeps the
+/// exception for the caller, so nothing is thrown through VTK.
+struct VtkProgressHook {
+    const Progress* progress = nullptr;
+    std::string_view stage;
+    std::mutex mutex;
+    std::exception_ptr error;
+
+    static void forward(vtkObject* caller, unsigned long /*event*/, void* clientData,
+                        void* callData) {
+        auto* hook = static_cast<VtkProgressHook*>(clientData);
+        const std::scoped_lock lock(hook->mutex);
+        if (hook->error) {
+            return;
+        }
+        const double fraction = callData != nullptr ? *static_cast<double*>(callData) : 0.0;
+        try {
+            hook->progress->report(fraction, hook->stage);
+        } catch (...) {
+            hook->error = std::current_exception();
+            if (auto* algorithm = vtkAlgorithm::SafeDownCast(caller)) {
+                algorithm->AbortExecuteOn();
+            }
+        }
+    }
+};
+
+/// Runs the filter with progress forwarding; returns a copy of its output
+/// (so the filter and its input can go). Rethrows a cancellation.
+vtkSmartPointer<vtkPolyData> runFilter(vtkPolyDataAlgorithm* filter, const Progress& progress,
+                                       std::string_view stage) {
+    progress.report(0.0, stage);
+    VtkProgressHook hook;
+    hook.progress = &progress;
+    hook.stage = stage;
+    auto command = vtkSmartPointer<vtkCallbackCommand>::New();
+    command->SetCallback(&VtkProgressHook::forward);
+    command->SetClientData(&hook);
+    const unsigned long tag = filter->AddObserver(vtkCommand::ProgressEvent, command);
+    filter->Update();
+    filter->RemoveObserver(tag);
+    if (hook.error) {
+        std::rethrow_exception(hook.error);
+    }
+    progress.report(1.0, stage);
+    auto output = vtkSmartPointer<vtkPolyData>::New();
+    output->ShallowCopy(filter->GetOutput());
+    return output;
+}
+
+/// Per segment: what the point data need besides the tree.
+struct SegmentData {
+    float pressureIn = 0.0F;
+    float pressureOut = 0.0F;
+    float length = 0.0F;
+    float wss = 0.0F;
+    float bumpWidth = 0.0F;  // kWssBumpRadii radii
+    float emerges = 0.0F;    // arc length where it leaves its parent's tube: the parent's radius
+    bool hasParent = false;
+    bool hasChildren = false;
+    glm::vec3 dividerDirection{0.0F};  // towards the siblings, across the start tangent
+    float generation = 0.0F;
+};
+
+std::vector<SegmentData> makeSegmentData(const VesselTree& tree) {
+    const auto& segments = tree.segments;
+    std::vector<glm::dvec3> startTangent(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const auto& line = segments[i].centerline;
+        const glm::dvec3 d = glm::dvec3(line[1]) - glm::dvec3(line[0]);
+        const double len = glm::length(d);
+        startTangent[i] = len > 0.0 ? d / len : glm::dvec3(0.0);
+    }
+    std::vector<SegmentData> data(segments.size());
+    for (std::size_t i = 0; i < segments.size(); ++i) {
+        const auto& s = segments[i];
+        SegmentData& d = data[i];
+        d.pressureIn = static_cast<float>(s.pressureInMmHg);
+        d.pressureOut = static_cast<float>(s.pressureOutMmHg);
+        d.length = static_cast<float>(s.lengthMm);
+        d.wss = static_cast<float>(s.wssPa);
+        d.bumpWidth = static_cast<float>(kWssBumpRadii * s.radiusMm);
+        d.emerges = s.parent >= 0
+                        ? static_cast<float>(segments[static_cast<std::size_t>(s.parent)].radiusMm)
+                        : 0.0F;
+        d.hasParent = s.parent >= 0;
+        d.hasChildren = !s.children.empty();
+        d.generation = static_cast<float>(s.generation);
+        if (d.hasParent) {
+            glm::dvec3 towards(0.0);
+            for (const int sibling : segments[static_cast<std::size_t>(s.parent)].children) {
+                if (sibling != s.id) {
+                    towards += startTangent[static_cast<std::size_t>(sibling)];
+                }
+            }
+            towards -= startTangent[i] * glm::dot(towards, startTangent[i]);
+            const double len = glm::length(towards);
+            d.dividerDirection = len > 1e-9 ? glm::vec3(towards / len) : glm::vec3(0.0F);
+        }
+    }
+    return data;
+}
+
+/// A smooth bump: 1 at distance 0, falling to 0 (with zero slope) at width.
+inline float bump(float distance, float width) {
+    if (!(distance < width)) {
+        return 0.0F;
+    }
+    const float u = distance / width;
+    const float v = 1.0F - u * u;
+    return v * v;
+}
+
+/// Nearest centreline piece of p by distance to the drawn tube wall; ties go to
+/// the lower piece index. Searches p's bin, or everything when the bin is empty.
+std::uint32_t nearestPiece(const glm::vec3& p, const std::vector<Piece>& pieces, const Bins& bins,
+                           float& tOut) {
+    auto candidates = bins.at(bins.binOf(p));
+    std::uint32_t best = 0;
+    float bestDistance = std::numeric_limits<float>::max();
+    const auto visit = [&](std::uint32_t index) {
+        float t = 0.0F;
+        const Piece& piece = pieces[index];
+        const float d = std::sqrt(pieceDistance2(piece, p, t)) - piece.radius;
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = index;
+            tOut = t;
+        }
+    };
+    if (candidates.empty()) {
+        for (std::uint32_t i = 0; i < pieces.size(); ++i) {
+            visit(i);
+        }
+    } else {
+        for (const std::uint32_t index : candidates) {
+            visit(index);
+        }
+    }
+    return best;
+}
+
+void addPointData(scene::Mesh& mesh, const VesselTree& tree, const std::vector<Piece>& pieces,
+                  const Bins& bins, const Progress& progress) {
+    const std::vector<SegmentData> segments = makeSegmentData(tree);
+    const std::size_t n = mesh.positions.size();
+    scene::DataArray pressure{"pressure", "mmHg", 1, std::vector<float>(n), false, false};
+    scene::DataArray wss{"wss", "Pa", 1, std::vector<float>(n), false, false};
+    scene::DataArray segmentId{"segment_id", "", 1, std::vector<float>(n), true, false};
+    scene::DataArray generation{"generation", "", 1, std::vector<float>(n), true, false};
+
+    const auto body = [&](long begin, long end) {
+        for (long v = begin; v < end; ++v) {
+            const auto i = static_cast<std::size_t>(v);
+            const glm::vec3& p = mesh.positions[i];
+            float t = 0.0F;
+            const Piece& piece = pieces[nearestPiece(p, pieces, bins, t)];
+            const SegmentData& s = segments[static_cast<std::size_t>(piece.segment)];
+            const float arc = piece.arcStart + t * piece.length;
+            const float along = s.length > 0.0F ? std::clamp(arc / s.length, 0.0F, 1.0F) : 0.0F;
+            pressure.values[i] = s.pressureIn + (s.pressureOut - s.pressureIn) * along;
+
+            float factor = 1.0F;
+            if (s.hasChildren) {
+                // Into the junction the cross-section widens and the flow slows.
+                factor *= 1.0F - static_cast<float>(kWssBump) * bump(s.length - arc, s.bumpWidth);
+            }
+            if (s.hasParent) {
+                // Out of it the flow divider (facing the siblings) sees more
+                // shear, the outer wall less.
+                const glm::vec3 radial = p - (piece.a + piece.ab * t);
+                const float len = glm::length(radial);
+                const float facing = len > 0.0F ? glm::dot(radial / len, s.dividerDirection) : 0.0F;
+                factor *= 1.0F + static_cast<float>(kWssBump) * facing *
+                                     bump(std::max(0.0F, arc - s.emerges), s.bumpWidth);
+            }
+            wss.values[i] = s.wss * factor;
+            segmentId.values[i] = static_cast<float>(piece.segment);
+            generation.values[i] = s.generation;
+        }
+    };
+    constexpr long kBatches = 5;
+    const auto total = static_cast<long>(n);
+    for (long batch = 0; batch < kBatches; ++batch) {
+        progress.report(static_cast<double>(batch) / kBatches, "Assigning vessel data");
+        parallelFor(total * batch / kBatches, total * (batch + 1) / kBatches, 2048, body,
+                    progress.stopToken());
+    }
+    mesh.pointArrays.push_back(std::move(pressure));
+    mesh.pointArrays.push_back(std::move(wss));
+    mesh.pointArrays.push_back(std::move(segmentId));
+    mesh.pointArrays.push_back(std::move(generation));
+    progress.report(1.0, "Assigning vessel data");
+}
+
+/// Makes the triangles wind counter-clockwise seen from outside (positive
+/// signed volume), flipping triangles and normals when they do not.
+void orientOutward(scene::Mesh& mesh) {
+    double volume6 = 0.0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
+        const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
+        const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
+        volume6 += glm::dot(a, glm::cross(b, c));
+    }
+    if (volume6 < 0.0) {
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+        }
+        for (auto& normal : mesh.normals) {
+            normal = -normal;
+        }
+    }
+}
+
+/// Keeps only the connected component with the most triangles. The tubes are
+/// joined by construction; anything else flying edges finds can only be a
+/// speck a voxel or two wide (sampling of a thin tube or of a blend).
+void keepLargestComponent(scene::Mesh& mesh) {
+    const std::size_t vertexCount = mesh.positions.size();
+    std::vector<std::uint32_t> parent(vertexCount);
+    for (std::uint32_t v = 0; v < vertexCount; ++v) {
+        parent[v] = v;
+    }
+    const auto find = [&](std::uint32_t v) {
+        while (parent[v] != v) {
+            parent[v] = parent[parent[v]];
+            v = parent[v];
+        }
+        return v;
+    };
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const std::uint32_t a = find(mesh.indices[t]);
+        parent[find(mesh.indices[t + 1])] = a;
+        parent[find(mesh.indices[t + 2])] = a;
+    }
+    std::vector<std::size_t> triangles(vertexCount, 0);
+    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
+        ++triangles[find(mesh.indices[t])];
+    }
+    const auto largest = static_cast<std::uint32_t>(
+        std::max_element(triangles.begin(), triangles.end()) - triangles.begin());
+    if (triangles[largest] * 3 == mesh.indices.size()) {
+        return;  // one component
+    }
+    std::vector<std::uint32_t> newIndex(vertexCount, std::numeric_limits<std::uint32_t>::max());
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;
+    std::vector<std::uint32_t> indices;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        if (find(mesh.indices[t]) != largest) {
+            continue;
+        }
+        for (std::size_t k = 0; k < 3; ++k) {
+            const std::uint32_t v = mesh.indices[t + k];
+            if (newIndex[v] == std::numeric_limits<std::uint32_t>::max()) {
+                newIndex[v] = static_cast<std::uint32_t>(positions.size());
+                positions.push_back(mesh.positions[v]);
+                normals.push_back(mesh.normals[v]);
+            }
+            indices.push_back(newIndex[v]);
+        }
+    }
+    mesh.positions = std::move(positions);
+    mesh.normals = std::move(normals);
+    mesh.indices = std::move(indices);
+}
+
+/// Everything one extraction at a voxel size needs and makes; the pieces and
+/// bins are used again for the point data.
+struct Extraction {
+    std::vector<Piece> pieces;
+    Bins bins;
+    vtkSmartPointer<vtkPolyData> surface;
+};
+
+Extraction extractAt(const VesselTree& tree, double spacing, const Progress& progress) {
+    const Grid grid = makeGrid(tree, spacing);
+    if (grid.tooLarge()) {
+        throw InvalidArgumentError(
+            "vessel surface: voxel size " + std::to_string(spacing) + " mm needs a grid of " +
+            std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " x " +
+            std::to_string(grid.nz) + " voxels, more than the limit of " +
+            std::to_string(static_cast<long long>(kMaxVoxels)) + " voxels or " +
+            std::to_string(kMaxAxisVoxels) + " along an axis; use a larger voxel size");
+    }
+    const auto band = static_cast<float>(kBandVoxels * spacing);
+    Extraction extraction;
+    extraction.pieces = makePieces(tree, spacing);
+    extraction.bins = makeBins(grid, extraction.pieces, static_cast<double>(band));
+    extraction.surface = extractSurface(grid, extraction.pieces, extraction.bins,
+                                        makeShapes(tree, spacing), band, progress);
+    if (extraction.surface->GetNumberOfPolys() == 0) {
+        throw Error("vessel surface: the distance field has no zero level (empty surface)");
+    }
+    return extraction;
+}
+
+}  // namespace
+
+scene::Mesh buildVesselSurface(const VesselTree& tree, const DemoTreeOptions& options,
+                               const Progress& progress) {
+    detail::validateDemoOptions(options);
+    detail::validateVesselTree(tree);
+    progress.throwIfCancelled();
+
+    // Extract; over the triangle limit, extract again on a coarser grid (a
+    // fresh flying-edges surface stays watertight, unlike a decimated one).
+    double spacing = options.voxelSizeMm > 0.0 ? options.voxelSizeMm
+                                               : automaticVoxelSize(tree, options.maxTriangles);
+    Extraction extraction;
+    for (int attempt = 0;; ++attempt) {
+        const auto i = static_cast<std::size_t>(attempt);
+        extraction = extractAt(tree, spacing, progress.sub(kExtractEnds[i], kExtractEnds[i + 1]));
+        const auto triangles = static_cast<double>(extraction.surface->GetNumberOfPolys());
+        if (options.maxTriangles == 0 || triangles <= options.maxTriangles) {
+            break;
+        }
+        if (attempt + 1 == kMaxExtractions) {
+            throw Error("vessel surface: could not get below " +
+                        std::to_string(options.maxTriangles) + " triangles (still " +
+                        std::to_string(static_cast<long long>(triangles)) + ")");
+        }
+        spacing *= 1.02 * std::sqrt(triangles / (0.95 * options.maxTriangles));
+    }
+    vtkSmartPointer<vtkPolyData> surface = std::move(extraction.surface);
+    progress.report(kExtractEnds.back(), "Extracting surface");
+
+    if (options.smooth) {
+        auto smoother = vtkSmartPointer<vtkWindowedSincPolyDataFilter>::New();
+        smoother->SetInputData(surface);
+        smoother->SetNumberOfIterations(kSmoothingIterations);
+        smoother->SetPassBand(kSmoothingPassBand);
+        smoother->BoundarySmoothingOff();
+        smoother->FeatureEdgeSmoothingOff();
+        smoother->NonManifoldSmoothingOn();
+        smoother->NormalizeCoordinatesOn();
+        surface =
+            runFilter(smoother, progress.sub(kExtractEnds.back(), kSmoothEnd), "Smoothing surface");
+    }
+
+    auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
+    normals->SetInputData(surface);
+    normals->SplittingOff();
+    normals->ConsistencyOn();
+    normals->AutoOrientNormalsOff();
+    normals->ComputePointNormalsOn();
+    normals->ComputeCellNormalsOff();
+    surface = runFilter(normals, progress.sub(kSmoothEnd, kNormalsEnd), "Computing normals");
+
+    scene::Mesh mesh = meshio::detail::meshFromPolyData(surface, {});
+    surface = nullptr;
+    if (!mesh.pointArrays.empty() || !mesh.cellArrays.empty()) {
+        throw Error("vessel surface: internal error, unexpected data arrays on the surface");
+    }
+    keepLargestComponent(mesh);
+    orientOutward(mesh);
+    mesh.name = "vessel tree";
+    addPointData(mesh, tree, extraction.pieces, extraction.bins, progress.sub(kNormalsEnd, 1.0));
+    return mesh;
+}
+
+}  // namespace vv::demo

@@ -1,0 +1,40 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// Writes a volume as a CT image series (DCMTK, one file per slice): the demo
+// series (`vesselview-cli demo --dicom`) and the tests' synthetic series.
+
+#include <filesystem>
+#include <string>
+
+#include "vv/core/Progress.h"
+#include "vv/scene/Volume.h"
+
+namespace vv::dicom {
+
+struct CtSeriesWriteOptions {
+    std::string seriesDescription = "synthetic CTA";
+    std::string studyDescription = "VesselView demo";
+    std::string patientName = "VesselView^Demo";  ///< synthetic; never logged
+    std::string patientId = "VV-DEMO";
+    /// Instance numbers run backwards (slice 0 = highest number), so that
+    /// readers that sort by instance number instead of position go wrong.
+    bool reverseInstanceNumbers = true;
+};
+
+/// Writes `volume` (values in HU) as a CT series into `folder` (created when
+/// missing), one file "slice<k>.dcm" per slice, each written atomically:
+/// CT Image Storage, explicit VR little endian, unsigned 16-bit stored values
+/// with Rescale Slope 1 / Intercept -1024 (values clamped to -1024..64511),
+/// new Study / Series / Frame of Reference / SOP Instance UIDs, Image
+/// Orientation (Patient) from indexToWorld() columns 0 and 1, Image Position
+/// (Patient) of slice k = origin + k × column 2, Pixel Spacing from the column
+/// lengths, Slice Thickness and Spacing Between Slices = the step along the
+/// normal. Returns the Series Instance UID. Reports progress ("Writing the
+/// CT series"); throws IoError (naming the file), InvalidArgumentError for an
+/// empty volume or a degenerate geometry, CancelledError (files already
+/// written stay).
+std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volume& volume,
+                          const CtSeriesWriteOptions& options = {}, const Progress& progress = {});
+
+}  // namespace vv::dicom

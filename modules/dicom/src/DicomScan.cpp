@@ -1,0 +1,374 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// scanDicom: files -> patients / studies / series. Reads headers only.
+#include <unistd.h>
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <string_view>
+#include <tuple>
+
+#include "DicomHeader.h"
+#include "vv/core/Error.h"
+#include "vv/core/Log.h"
+#include "vv/dicom/Dicom.h"
+
+namespace vv::dicom {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+const log::Category kLog("vv.dicom");
+
+/// Resolves a DICOMDIR Referenced File ID below `root`, trying the exact
+/// name first and then a case-insensitive match per component (media
+/// written in upper case, copied to a case-sensitive file system).
+fs::path resolveReferenced(const fs::path& root, const std::string& id) {
+    fs::path exact = root / id;
+    std::error_code ec;
+    if (fs::exists(exact, ec)) {
+        return exact;
+    }
+    fs::path current = root;
+    std::stringstream parts(id);
+    std::string part;
+    while (std::getline(parts, part, '/')) {
+        if (part.empty()) {
+            continue;
+        }
+        fs::path next;
+        for (fs::directory_iterator it(current, ec), end; !ec && it != end; it.increment(ec)) {
+            const std::string name = it->path().filename().string();
+            if (name.size() == part.size() &&
+                std::equal(name.begin(), name.end(), part.begin(), [](char a, char b) {
+                    return std::tolower(static_cast<unsigned char>(a)) ==
+                           std::tolower(static_cast<unsigned char>(b));
+                })) {
+                next = it->path();
+                break;
+            }
+        }
+        if (next.empty()) {
+            return exact;  // reported as missing
+        }
+        current = next;
+    }
+    return current;
+}
+
+struct SeriesBuilder {
+    DicomSeries series;
+    std::vector<double> positionsAlongNormal;
+    std::string patientName, patientId;
+    std::string studyDescription, studyDate;
+    std::optional<std::array<double, 6>> orientation;
+    bool mixedOrientation = false;
+};
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v[v.size() / 2];
+}
+
+}  // namespace
+
+std::vector<const DicomSeries*> DicomScanResult::allSeries() const {
+    std::vector<const DicomSeries*> out;
+    for (const auto& p : patients) {
+        for (const auto& st : p.studies) {
+            for (const auto& se : st.series) {
+                out.push_back(&se);
+            }
+        }
+    }
+    return out;
+}
+
+const DicomSeries* DicomScanResult::findSeries(std::string_view uid) const {
+    for (const DicomSeries* s : allSeries()) {
+        if (s->seriesInstanceUid == uid) {
+            return s;
+        }
+    }
+    return nullptr;
+}
+
+bool looksLikeDicom(const fs::path& path) {
+    std::error_code ec;
+    if (fs::is_directory(path, ec)) {
+        return true;
+    }
+    if (!fs::is_regular_file(path, ec)) {
+        return false;
+    }
+    std::string name = path.filename().string();
+    std::transform(name.begin(), name.end(), name.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+    if (name == "DICOMDIR") {
+        return true;
+    }
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    if (ext == ".dcm" || ext == ".dicom") {
+        return true;
+    }
+    std::ifstream in(path, std::ios::binary);
+    std::array<char, 132> b{};
+    in.read(b.data(), b.size());
+    return in.gcount() == 132 && std::string_view(b.data() + 128, 4) == "DICM";
+}
+
+std::uint64_t availableMemoryBytes() {
+    std::uint64_t available = 0;
+    {
+        std::ifstream in("/proc/meminfo");
+        std::string key;
+        std::uint64_t value = 0;
+        std::string unit;
+        while (in >> key >> value) {
+            std::getline(in, unit);
+            if (key == "MemAvailable:") {
+                available = value * 1024;
+                break;
+            }
+        }
+    }
+    if (available == 0) {
+        const long pages = sysconf(_SC_AVPHYS_PAGES);
+        const long size = sysconf(_SC_PAGESIZE);
+        if (pages > 0 && size > 0) {
+            available = static_cast<std::uint64_t>(pages) * static_cast<std::uint64_t>(size);
+        }
+    }
+    // A cgroup v2 limit (containers) may be tighter than the machine.
+    std::ifstream maxFile("/sys/fs/cgroup/memory.max");
+    std::ifstream currentFile("/sys/fs/cgroup/memory.current");
+    std::string max;
+    std::uint64_t current = 0;
+    if (maxFile >> max && max != "max" && currentFile >> current) {
+        try {
+            const std::uint64_t limit = std::stoull(max);
+            const std::uint64_t left = limit > current ? limit - current : 0;
+            available = std::min(available, left);
+        } catch (const std::exception&) {
+            // unreadable limit: keep the machine's figure
+        }
+    }
+    return available;
+}
+
+DicomScanResult scanDicom(const fs::path& path, const Progress& progress) {
+    std::error_code ec;
+    if (!fs::exists(path, ec)) {
+        throw IoError(path, "does not exist");
+    }
+    DicomScanResult result;
+    std::vector<fs::path> files;
+    std::vector<DicomSkippedFile> missing;
+    std::optional<detail::FileHeader> single;  // a single file, read once
+
+    progress.report(0.0, "Listing DICOM files");
+    if (fs::is_directory(path, ec)) {
+        fs::recursive_directory_iterator it(path, fs::directory_options::skip_permission_denied,
+                                            ec);
+        if (ec) {
+            throw IoError(path, "cannot be listed (" + ec.message() + ")");
+        }
+        for (fs::recursive_directory_iterator end; it != end; it.increment(ec)) {
+            if (ec) {
+                break;
+            }
+            std::error_code fec;
+            if (it->is_regular_file(fec)) {
+                files.push_back(it->path());
+                if (files.size() % 1024 == 0) {
+                    progress.throwIfCancelled();
+                }
+            }
+        }
+        std::sort(files.begin(), files.end());
+    } else {
+        // A DICOMDIR given directly: follow its references.
+        detail::FileHeader h = detail::readHeader(path);
+        if (h.isDicomdir) {
+            result.filesExamined = 1;
+            const fs::path root = path.parent_path();
+            for (const auto& id : h.dicomdirFiles) {
+                const fs::path f = resolveReferenced(root, id);
+                if (fs::is_regular_file(f, ec)) {
+                    files.push_back(f);
+                } else {
+                    missing.push_back({f, "referenced by the DICOMDIR but missing"});
+                }
+            }
+            std::sort(files.begin(), files.end());
+            files.erase(std::unique(files.begin(), files.end()), files.end());
+            if (h.dicomdirFiles.empty()) {
+                result.skipped.push_back({path, "DICOMDIR that lists no files"});
+            }
+        } else {
+            files.push_back(path);
+            single = std::move(h);
+        }
+    }
+
+    // Key: patient, study, series.
+    std::map<std::string, SeriesBuilder> bySeries;
+    std::size_t done = 0;
+    for (const auto& file : files) {
+        progress.report(
+            static_cast<double>(done) / static_cast<double>(std::max<std::size_t>(files.size(), 1)),
+            "Reading DICOM headers");
+        ++done;
+        ++result.filesExamined;
+        detail::FileHeader h;
+        try {
+            h = single ? std::move(*single) : detail::readHeader(file);
+        } catch (const std::bad_alloc&) {
+            h.file = file;
+            h.skipReason = "header too large to read";
+        }
+        if (!h.skipReason.empty()) {
+            result.skipped.push_back({file, h.skipReason});
+            log::debug(kLog, file.string() + ": skipped: " + h.skipReason);
+            continue;
+        }
+        const std::string seriesKey =
+            h.seriesUid.empty() ? "(no Series Instance UID) " + file.string() : h.seriesUid;
+        auto [it, fresh] = bySeries.try_emplace(seriesKey);
+        SeriesBuilder& b = it->second;
+        DicomSeries& s = b.series;
+        if (fresh) {
+            s.seriesInstanceUid = h.seriesUid;
+            s.studyInstanceUid = h.studyUid;
+            s.frameOfReferenceUid = h.frameOfReferenceUid;
+            s.modality = h.modality;
+            s.description = h.seriesDescription;
+            s.seriesNumber = h.seriesNumber;
+            s.sopClassUid = h.sopClassUid;
+            s.transferSyntaxUid = h.transferSyntaxUid;
+            s.transferSyntaxName = h.transferSyntaxName;
+            s.rows = h.rows;
+            s.columns = h.columns;
+            s.pixelSpacing = h.shared.pixelSpacing;
+            if (!s.pixelSpacing && !h.perFrame.empty()) {
+                s.pixelSpacing = h.perFrame.front().pixelSpacing;
+            }
+            s.unsupportedReason = h.unsupportedReason;
+            b.patientName = h.patientName;
+            b.patientId = h.patientId;
+            b.studyDescription = h.studyDescription;
+            b.studyDate = h.studyDate;
+            b.orientation = h.shared.orientation;
+            if (!b.orientation && !h.perFrame.empty()) {
+                b.orientation = h.perFrame.front().orientation;
+            }
+        } else {
+            if (h.rows != s.rows || h.columns != s.columns) {
+                s.mixedSizes = true;
+            }
+            if (s.unsupportedReason.empty()) {
+                s.unsupportedReason = h.unsupportedReason;
+            }
+        }
+        // Orientations that differ (a localizer) are known from headers alone.
+        const auto differs = [&](const std::optional<std::array<double, 6>>& o) {
+            if (!o || !b.orientation) {
+                return false;
+            }
+            for (std::size_t k = 0; k < 6; ++k) {
+                if (std::abs((*o)[k] - (*b.orientation)[k]) > 1e-3) {
+                    return true;
+                }
+            }
+            return false;
+        };
+        bool mixedOrientation = differs(h.shared.orientation);
+        for (const auto& f : h.perFrame) {
+            mixedOrientation = mixedOrientation || differs(f.orientation);
+        }
+        b.mixedOrientation = b.mixedOrientation || mixedOrientation;
+        if (mixedOrientation && s.unsupportedReason.empty()) {
+            s.unsupportedReason =
+                "images of different orientations (a localizer?); one volume needs one orientation";
+        }
+        s.files.push_back(file);
+        s.imageCount += static_cast<std::size_t>(h.frames);
+        s.multiFrame = s.multiFrame || h.frames > 1;
+        // Positions along the normal, for the slice spacing shown in lists.
+        if (b.orientation) {
+            const auto& o = *b.orientation;
+            const glm::dvec3 n =
+                glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
+            if (!h.perFrame.empty()) {
+                for (const auto& f : h.perFrame) {
+                    if (f.position) {
+                        b.positionsAlongNormal.push_back(glm::dot(*f.position, n));
+                    }
+                }
+            } else if (h.shared.position) {
+                b.positionsAlongNormal.push_back(glm::dot(*h.shared.position, n));
+                if (h.frameStep && h.frames > 1) {
+                    b.positionsAlongNormal.push_back(
+                        glm::dot(*h.shared.position + *h.frameStep, n));
+                }
+            }
+        }
+    }
+    progress.report(1.0, "Reading DICOM headers");
+
+    // Group into patients and studies.
+    std::map<std::string, DicomPatient> patients;  // key: ID + name
+    std::map<std::string, std::map<std::string, DicomStudy>> studies;
+    for (auto& [key, b] : bySeries) {
+        DicomSeries& s = b.series;
+        auto& pos = b.positionsAlongNormal;
+        if (pos.size() >= 2 && !b.mixedOrientation) {
+            std::sort(pos.begin(), pos.end());
+            std::vector<double> gaps;
+            for (std::size_t i = 1; i < pos.size(); ++i) {
+                if (pos[i] - pos[i - 1] > 1e-4) {
+                    gaps.push_back(pos[i] - pos[i - 1]);
+                }
+            }
+            if (!gaps.empty()) {
+                s.sliceSpacing = median(gaps);
+            }
+        }
+        const std::string patientKey = b.patientId + '\x1f' + b.patientName;
+        DicomPatient& p = patients[patientKey];
+        p.id = b.patientId;
+        p.name = b.patientName;
+        DicomStudy& st = studies[patientKey][s.studyInstanceUid];
+        st.studyInstanceUid = s.studyInstanceUid;
+        st.description = b.studyDescription;
+        st.date = b.studyDate;
+        st.series.push_back(std::move(s));
+    }
+    for (auto& [patientKey, p] : patients) {
+        for (auto& [uid, st] : studies[patientKey]) {
+            std::sort(st.series.begin(), st.series.end(),
+                      [](const DicomSeries& a, const DicomSeries& b) {
+                          return std::tuple(a.seriesNumber.value_or(0), a.seriesInstanceUid) <
+                                 std::tuple(b.seriesNumber.value_or(0), b.seriesInstanceUid);
+                      });
+            p.studies.push_back(std::move(st));
+        }
+        std::sort(p.studies.begin(), p.studies.end(), [](const DicomStudy& a, const DicomStudy& b) {
+            return std::tie(a.date, a.studyInstanceUid) < std::tie(b.date, b.studyInstanceUid);
+        });
+        result.patients.push_back(std::move(p));
+    }
+    result.skipped.insert(result.skipped.end(), missing.begin(), missing.end());
+    log::debug(kLog, path.string() + ": " + std::to_string(bySeries.size()) + " series, " +
+                         std::to_string(result.skipped.size()) + " files skipped");
+    return result;
+}
+
+}  // namespace vv::dicom

@@ -1,0 +1,227 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/dicom/ExportObjects.h"
+
+#include <dcmtk/config/osconfig.h>  // must come first
+#include <dcmtk/dcmdata/dcdatset.h>
+#include <dcmtk/dcmdata/dcdeftag.h>
+#include <dcmtk/dcmdata/dcfilefo.h>
+#include <dcmtk/dcmdata/dcitem.h>
+#include <dcmtk/dcmdata/dcsequen.h>
+#include <dcmtk/dcmdata/dcuid.h>
+#include <dcmtk/dcmdata/dcxfer.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "vv/core/AtomicFile.h"
+#include "vv/core/Error.h"
+#include "vv/dicom/Uid.h"
+
+namespace vv::dicom {
+
+namespace {
+
+void put(DcmDataset& data, const DcmTagKey& tag, const std::string& value,
+         const std::filesystem::path& path) {
+    const OFCondition status = data.putAndInsertOFStringArray(tag, OFString(value.c_str()));
+    if (status.bad()) {
+        throw IoError(path, std::string("cannot set DICOM attribute ") + DcmTag(tag).getTagName() +
+                                ": " + status.text());
+    }
+}
+
+bool anonymised(const ExportStudy& study) {
+    return study.patient && study.patient->anonymise;
+}
+
+/// Puts `value`, or nothing when anonymising: for type 3 attributes that the
+/// basic confidentiality profile removes (dates and times of the instance).
+void putUnlessAnonymised(DcmDataset& data, const DcmTagKey& tag, const std::string& value,
+                         const std::filesystem::path& path, const ExportStudy& study) {
+    if (!anonymised(study)) {
+        put(data, tag, value, path);
+    }
+}
+
+/// Puts `value`, or an empty value when anonymising (type 2 attributes).
+void putOrEmpty(DcmDataset& data, const DcmTagKey& tag, const std::string& value,
+                const std::filesystem::path& path, const ExportStudy& study) {
+    put(data, tag, anonymised(study) ? std::string() : value, path);
+}
+
+/// De-identification Method Code Sequence: one item, the basic profile (DCM 113100).
+void putDeidentificationCode(DcmDataset& data, const std::filesystem::path& path) {
+    auto* item = new DcmItem();  // owned by the sequence once inserted
+    const bool ok =
+        item->putAndInsertString(DCM_CodeValue, "113100").good() &&
+        item->putAndInsertString(DCM_CodingSchemeDesignator, "DCM").good() &&
+        item->putAndInsertString(DCM_CodeMeaning, "Basic Application Confidentiality Profile")
+            .good();
+    if (!ok || data.insertSequenceItem(DCM_DeidentificationMethodCodeSequence, item).bad()) {
+        delete item;  // NOLINT(cppcoreguidelines-owning-memory): not inserted
+        throw IoError(path, "cannot set the de-identification method code");
+    }
+}
+
+/// Patient, General Study, General Series (parts), General / SC Equipment and
+/// SOP Common: what both instances share.
+void putCommon(DcmDataset& data, const std::filesystem::path& path, const char* sopClass,
+               const std::string& sopInstance, const std::string& modality,
+               const ExportStudy& study, const ExportSeries& series) {
+    put(data, DCM_SpecificCharacterSet, "ISO_IR 192", path);  // UTF-8
+    put(data, DCM_SOPClassUID, sopClass, path);
+    put(data, DCM_SOPInstanceUID, sopInstance, path);
+    putUnlessAnonymised(data, DCM_InstanceCreationDate, series.creationDate, path, study);
+    putUnlessAnonymised(data, DCM_InstanceCreationTime, series.creationTime, path, study);
+
+    // Patient module: type 2 attributes present, empty when not known or anonymised.
+    const bool known = study.patient && !study.patient->anonymise;
+    const auto field = [&](const std::string ExportPatient::*member) {
+        return known ? (*study.patient).*member : std::string();
+    };
+    put(data, DCM_PatientName, field(&ExportPatient::name), path);
+    put(data, DCM_PatientID, field(&ExportPatient::id), path);
+    put(data, DCM_PatientBirthDate, field(&ExportPatient::birthDate), path);
+    put(data, DCM_PatientSex, field(&ExportPatient::sex), path);
+    if (anonymised(study)) {
+        put(data, DCM_PatientIdentityRemoved, "YES", path);
+        put(data, DCM_DeidentificationMethod, "DICOM PS3.15 E.1 Basic Profile (VesselView)", path);
+        putDeidentificationCode(data, path);
+        put(data, DCM_LongitudinalTemporalInformationModified, "REMOVED", path);
+    }
+
+    // General Study. Anonymised: no dates, no study ID (the profile's Z and Z);
+    // the caller gives a pseudonymous Study Instance UID.
+    put(data, DCM_StudyInstanceUID, study.studyInstanceUid, path);
+    putOrEmpty(data, DCM_StudyDate, study.studyDate, path, study);
+    putOrEmpty(data, DCM_StudyTime, study.studyTime, path, study);
+    put(data, DCM_ReferringPhysicianName, field(&ExportPatient::referringPhysician), path);
+    putOrEmpty(data, DCM_StudyID, study.studyId, path, study);
+    put(data, DCM_AccessionNumber, field(&ExportPatient::accession), path);
+
+    // General Series.
+    put(data, DCM_Modality, modality, path);
+    put(data, DCM_SeriesInstanceUID, newUid(), path);
+    put(data, DCM_SeriesNumber, std::to_string(series.seriesNumber), path);
+    put(data, DCM_SeriesDescription, series.description, path);
+    putUnlessAnonymised(data, DCM_SeriesDate, series.contentDate, path, study);
+    putUnlessAnonymised(data, DCM_SeriesTime, series.contentTime, path, study);
+
+    // General Equipment and SC Equipment (WSD: workstation).
+    put(data, DCM_Manufacturer, "VesselView", path);
+    put(data, DCM_SoftwareVersions, series.softwareVersion, path);
+    put(data, DCM_ConversionType, "WSD", path);
+
+    put(data, DCM_InstanceNumber, "1", path);
+    putOrEmpty(data, DCM_ContentDate, series.contentDate, path, study);
+    putOrEmpty(data, DCM_ContentTime, series.contentTime, path, study);
+}
+
+void save(DcmFileFormat& file, const std::filesystem::path& path) {
+    writeAtomically(path, [&](const std::filesystem::path& temporary) {
+        const OFCondition status =
+            file.saveFile(OFFilename(temporary.c_str()), EXS_LittleEndianExplicit,
+                          EET_ExplicitLength, EGL_recalcGL, EPD_noChange, 0, 0, EWM_fileformat);
+        if (status.bad()) {
+            throw IoError(path, std::string("cannot write the DICOM file: ") + status.text());
+        }
+    });
+}
+
+}  // namespace
+
+std::string writeSecondaryCapture(const std::filesystem::path& path, const RgbImage& image,
+                                  const ExportStudy& study, const ExportSeries& series) {
+    if (image.width < 1 || image.height < 1 || image.width > 65535 || image.height > 65535) {
+        throw InvalidArgumentError(path,
+                                   "Secondary Capture: the image must be 1..65535 pixels "
+                                   "per side");
+    }
+    const auto width = static_cast<std::size_t>(image.width);
+    const auto height = static_cast<std::size_t>(image.height);
+    if (image.pixels.size() != width * height * 3) {
+        throw InvalidArgumentError(path, "Secondary Capture: the image has " +
+                                             std::to_string(image.pixels.size()) +
+                                             " bytes, not 3 per pixel");
+    }
+    // OB / OW must have an even length.
+    std::vector<Uint8> pixels(image.pixels.begin(), image.pixels.end());
+    if (pixels.size() % 2 != 0) {
+        pixels.push_back(0);
+    }
+
+    DcmFileFormat file;
+    DcmDataset& data = *file.getDataset();
+    const std::string sopInstance = newUid();
+    putCommon(data, path, UID_SecondaryCaptureImageStorage, sopInstance, "OT", study, series);
+    // General Series (Laterality: type 2C, empty: not a paired structure),
+    // General Image, SC Image.
+    put(data, DCM_Laterality, "", path);
+    put(data, DCM_PatientOrientation, "", path);
+    put(data, DCM_ImageType, "DERIVED\\SECONDARY", path);
+    put(data, DCM_BurnedInAnnotation, "NO", path);
+    put(data, DCM_LossyImageCompression, "00", path);
+    putUnlessAnonymised(data, DCM_DateOfSecondaryCapture, series.contentDate, path, study);
+    putUnlessAnonymised(data, DCM_TimeOfSecondaryCapture, series.contentTime, path, study);
+    // Image Pixel: 8-bit RGB, interleaved.
+    const auto u16 = [&](const DcmTagKey& tag, unsigned value) {
+        if (data.putAndInsertUint16(tag, static_cast<Uint16>(value)).bad()) {
+            throw IoError(path, "cannot set the image pixel attributes");
+        }
+    };
+    u16(DCM_SamplesPerPixel, 3);
+    put(data, DCM_PhotometricInterpretation, "RGB", path);
+    u16(DCM_PlanarConfiguration, 0);
+    u16(DCM_Rows, static_cast<unsigned>(height));
+    u16(DCM_Columns, static_cast<unsigned>(width));
+    u16(DCM_BitsAllocated, 8);
+    u16(DCM_BitsStored, 8);
+    u16(DCM_HighBit, 7);
+    u16(DCM_PixelRepresentation, 0);
+    if (data.putAndInsertUint8Array(DCM_PixelData, pixels.data(),
+                                    static_cast<unsigned long>(pixels.size()))
+            .bad()) {
+        throw IoError(path, "cannot set the pixel data");
+    }
+    save(file, path);
+    return sopInstance;
+}
+
+std::string writeEncapsulatedPdf(const std::filesystem::path& path, std::string_view pdf,
+                                 const std::string& title, const ExportStudy& study,
+                                 const ExportSeries& series) {
+    if (pdf.substr(0, 5) != "%PDF-") {
+        throw InvalidArgumentError(path, "Encapsulated PDF: the document is not a PDF");
+    }
+    DcmFileFormat file;
+    DcmDataset& data = *file.getDataset();
+    const std::string sopInstance = newUid();
+    putCommon(data, path, UID_EncapsulatedPDFStorage, sopInstance, "DOC", study, series);
+    // Encapsulated Document module.
+    putOrEmpty(data, DCM_AcquisitionDateTime, series.contentDate + series.contentTime, path, study);
+    // The PDF shows the patient block unless there is none or it is anonymised.
+    const bool identifies = study.patient && !study.patient->anonymise;
+    put(data, DCM_BurnedInAnnotation, identifies ? "YES" : "NO", path);
+    if (data.insertEmptyElement(DCM_ConceptNameCodeSequence).bad()) {
+        throw IoError(path, "cannot set the concept name");
+    }
+    put(data, DCM_DocumentTitle, title, path);
+    put(data, DCM_MIMETypeOfEncapsulatedDocument, "application/pdf", path);
+    // OB must have an even length: pad with one NUL and record the real length.
+    std::vector<Uint8> bytes(pdf.begin(), pdf.end());
+    if (bytes.size() % 2 != 0) {
+        bytes.push_back(0);
+    }
+    if (data.putAndInsertUint32(DCM_EncapsulatedDocumentLength, static_cast<Uint32>(pdf.size()))
+            .bad() ||
+        data.putAndInsertUint8Array(DCM_EncapsulatedDocument, bytes.data(),
+                                    static_cast<unsigned long>(bytes.size()))
+            .bad()) {
+        throw IoError(path, "cannot set the encapsulated document");
+    }
+    save(file, path);
+    return sopInstance;
+}
+
+}  // namespace vv::dicom

@@ -1,0 +1,514 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// preflightLegacyVtk (MeshPreflight.h): the legacy VTK tokenizer and walk.
+#include <algorithm>
+#include <cctype>
+#include <cerrno>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "ByteReader.h"
+#include "MeshPreflight.h"
+#include "PreflightCommon.h"
+#include "vv/core/Error.h"
+#include "vv/meshio/vtkext/VtkConvert.h"
+
+namespace vv::meshio::detail {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// Bytes `values` values of legacy VTK type `type` take in a binary file;
+/// nullopt for types without a fixed binary size (string, variant) or unknown.
+std::optional<std::uint64_t> legacyBinaryBytes(const std::string& type, std::uint64_t values) {
+    if (type == "bit") {
+        return values / 8 + (values % 8 != 0 ? 1 : 0);
+    }
+    std::uint64_t size = 0;
+    if (type == "unsigned_char" || type == "char" || type == "signed_char" ||
+        type == "vtktypeint8" || type == "vtktypeuint8") {
+        size = 1;
+    } else if (type == "short" || type == "unsigned_short" || type == "vtktypeint16" ||
+               type == "vtktypeuint16") {
+        size = 2;
+    } else if (type == "int" || type == "unsigned_int" || type == "float" ||
+               type == "vtkidtype" ||  // written as 32-bit int
+               type == "vtktypeint32" || type == "vtktypeuint32" || type == "vtktypefloat32") {
+        size = 4;
+    } else if (type == "double" || type == "vtktypeint64" || type == "vtktypeuint64" ||
+               type == "vtktypefloat64" || type == "long" || type == "unsigned_long") {
+        size = 8;  // long: sizeof(long) on the LP64 platforms we build for
+    } else {
+        return std::nullopt;
+    }
+    return mulSat(values, size);
+}
+
+bool isLegacyTypeName(const std::string& word) {
+    return legacyBinaryBytes(word, 0).has_value() || word == "string" || word == "utf8_string" ||
+           word == "variant";
+}
+
+/// Whitespace-separated tokens of a legacy VTK file as vtkDataReader reads
+/// them: strings of at most 255 characters; tokens can be pushed back.
+class LegacyTokens {
+  public:
+    explicit LegacyTokens(ByteReader& reader) : reader_(reader) {}
+
+    bool next(std::string& token) {
+        if (!pending_.empty()) {
+            token = std::move(pending_.back());
+            pending_.pop_back();
+            return true;
+        }
+        token.clear();
+        char c = 0;
+        do {
+            if (!reader_.read(&c, 1)) {
+                return false;
+            }
+        } while (std::isspace(static_cast<unsigned char>(c)) != 0);
+        token += c;
+        while (token.size() < 255 && reader_.peek(c) &&
+               std::isspace(static_cast<unsigned char>(c)) == 0) {
+            reader_.read(&c, 1);
+            token += c;
+        }
+        return true;
+    }
+    void pushBack(std::string token) { pending_.push_back(std::move(token)); }
+    [[nodiscard]] bool hasPending() const noexcept { return !pending_.empty(); }
+
+    /// Consumes the rest of the current line, as vtkDataReader does before binary data.
+    void skipRestOfLine() {
+        char c = 0;
+        while (reader_.read(&c, 1) && c != '\n') {
+        }
+    }
+
+  private:
+    ByteReader& reader_;
+    std::vector<std::string> pending_;
+};
+
+/// The keywords vtkDataReader knows; it compares by prefix ("cells\x01" is "cells").
+const std::string& legacyKeyword(const std::string& lowered) {
+    static const std::vector<std::string> keywords = {
+        "dataset",         "points",        "vertices",     "lines",      "polygons",
+        "triangle_strips", "cells",         "cell_types",   "point_data", "cell_data",
+        "scalars",         "color_scalars", "vectors",      "normals",    "tensors6",
+        "tensors",         "global_ids",    "pedigree_ids", "edge_flags", "texture_coordinates",
+        "lookup_table",    "field",         "metadata"};
+    static const std::string none;
+    for (const auto& k : keywords) {
+        if (lowered.rfind(k, 0) == 0) {
+            return k;
+        }
+    }
+    return none;
+}
+
+}  // namespace
+
+LegacyDataset preflightLegacyVtk(const fs::path& file, std::uintmax_t size, PreflightTicker& tick) {
+    ByteReader reader(file);
+    std::string line;
+    bool truncated = false;
+    constexpr const char* kMagic = "# vtk DataFile Version";
+    if (!reader.readLine(line, 256, truncated) || line.rfind(kMagic, 0) != 0) {
+        throw FormatError(file, "not a legacy VTK file (no '# vtk DataFile Version' line)");
+    }
+    // Parsed as vtkDataReader does: anything but "%d.%d" means version 0,
+    // which selects the old cell format.
+    int major = 0;
+    int minor = 0;
+    if (std::sscanf(line.c_str() + std::strlen(kMagic), "%d.%d", &major, &minor) != 2) {
+        major = 0;
+    }
+    if (!reader.readLine(line, 256, truncated)) {  // title
+        throw FormatError(file, "the legacy VTK header is truncated");
+    }
+    LegacyTokens tokens(reader);
+    std::string token;
+    if (!tokens.next(token)) {
+        throw FormatError(file, "the legacy VTK header is truncated");
+    }
+    const std::string encoding = lower(token);
+    if (encoding.rfind("ascii", 0) != 0 && encoding.rfind("binary", 0) != 0) {
+        throw FormatError(file, "the legacy VTK header says '" + printable(token) +
+                                    "' where ASCII or BINARY belongs");
+    }
+    const bool binary = encoding.rfind("binary", 0) == 0;
+
+    const auto bad = [&](const std::string& what) {
+        return FormatError(
+            file, "legacy VTK data near byte " + std::to_string(reader.position()) + ": " + what);
+    };
+    const auto fits = [&](std::uint64_t values, const std::string& what) {
+        if (values > size) {  // every value takes at least one byte
+            throw bad(what + " declared, but the file has only " + std::to_string(size) +
+                      " bytes: corrupt or truncated");
+        }
+    };
+    // A count as `stream >> n` reads it: the leading digits of the next token;
+    // what follows them stays for the next read. Required: VTK's handling of
+    // a missing count is not safe.
+    const auto count = [&](const std::string& what) -> std::uint64_t {
+        if (!tokens.next(token)) {
+            throw bad("the file ends where " + what + " belongs: truncated");
+        }
+        const std::size_t start = token[0] == '+' ? 1 : 0;
+        std::size_t end = start;
+        while (end < token.size() && std::isdigit(static_cast<unsigned char>(token[end])) != 0) {
+            ++end;
+        }
+        if (end == start) {
+            throw bad("'" + printable(token) + "' where " + what + " belongs");
+        }
+        const std::uint64_t value = parseCount(std::string_view(token).substr(start, end - start))
+                                        .value_or(std::numeric_limits<std::uint64_t>::max());
+        if (end < token.size()) {
+            tokens.pushBack(token.substr(end));
+        }
+        return value;
+    };
+    const auto word = [&](const std::string& what) {
+        std::string w;
+        if (!tokens.next(w)) {
+            throw bad("the file ends where " + what + " belongs: truncated");
+        }
+        return w;
+    };
+    const auto dataType = [&] {
+        std::string type = lower(word("a data type"));
+        if (!isLegacyTypeName(type)) {
+            throw bad("unknown data type '" + printable(type) + "'");
+        }
+        if (binary && !legacyBinaryBytes(type, 0)) {
+            throw bad("binary arrays of type '" + type + "' are not supported");
+        }
+        return type;
+    };
+    // Reads `n` ints as vtkDataReader reads cell data: ASCII numbers or
+    // big-endian int32 after the end of the keyword line.
+    const auto readInts = [&](std::uint64_t n, const auto& use) {
+        if (binary) {
+            if (tokens.hasPending()) {
+                throw bad("unexpected text before binary cell data");
+            }
+            tokens.skipRestOfLine();
+            for (std::uint64_t i = 0; i < n; ++i) {
+                unsigned char b[4];
+                if (!reader.read(b, 4)) {
+                    throw bad("the binary cell data ends early: truncated file");
+                }
+                const std::uint32_t u = (std::uint32_t{b[0]} << 24U) |
+                                        (std::uint32_t{b[1]} << 16U) | (std::uint32_t{b[2]} << 8U) |
+                                        std::uint32_t{b[3]};
+                use(static_cast<std::int64_t>(static_cast<std::int32_t>(u)));
+                if ((i & 0xFFFFU) == 0) {
+                    tick(reader.position());
+                }
+            }
+            return;
+        }
+        for (std::uint64_t i = 0; i < n; ++i) {
+            if (!tokens.next(token)) {
+                throw bad("the cell data ends early: truncated file");
+            }
+            char* end = nullptr;
+            errno = 0;
+            const long long v = std::strtoll(token.c_str(), &end, 10);
+            if (end != token.c_str() + token.size() || errno == ERANGE ||
+                v < std::numeric_limits<std::int32_t>::min() ||
+                v > std::numeric_limits<std::int32_t>::max()) {
+                throw bad("'" + printable(token) + "' where a cell index or size belongs");
+            }
+            use(static_cast<std::int64_t>(v));
+            if ((i & 0xFFFFU) == 0) {
+                tick(reader.position());
+            }
+        }
+    };
+    // Skips an array of `values` values: its bytes in a binary file (after the
+    // end of the keyword line), its numbers in an ASCII one.
+    const auto skipArray = [&](std::uint64_t values, const std::string& type) {
+        fits(values, std::to_string(values) + " values");
+        if (!binary) {
+            // vtkDataReader reads numbers with operator>>: on text glued to a
+            // number ("0POLYGONS0") it loses its place in the file and later
+            // dereferences a null pointer (found by fuzzing). Numbers only.
+            const bool numeric = legacyBinaryBytes(type, 0).has_value();
+            for (std::uint64_t k = 0; k < values; ++k) {
+                if (!tokens.next(token)) {
+                    throw bad("the data ends early (" + std::to_string(k) + " of " +
+                              std::to_string(values) + " values): truncated file");
+                }
+                if (numeric) {
+                    char* end = nullptr;
+                    static_cast<void>(std::strtod(token.c_str(), &end));
+                    if (end != token.c_str() + token.size()) {
+                        throw bad("'" + printable(token) + "' where a number belongs");
+                    }
+                }
+                if ((k & 0xFFFFU) == 0) {
+                    tick(reader.position());
+                }
+            }
+            return;
+        }
+        if (tokens.hasPending()) {
+            throw bad("unexpected text before binary data");
+        }
+        tokens.skipRestOfLine();
+        if (!reader.skip(legacyBinaryBytes(type, values).value_or(0))) {
+            throw bad("the binary data ends early: truncated file");
+        }
+        tick(reader.position());
+    };
+    // METADATA blocks (information keys, component names) follow arrays;
+    // skipped up to the next keyword.
+    const auto skipMetadata = [&] {
+        while (tokens.next(token)) {
+            const std::string& key = legacyKeyword(lower(token));
+            if (!key.empty() && key != "metadata") {
+                tokens.pushBack(token);
+                return;
+            }
+        }
+    };
+
+    if (!tokens.next(token) || legacyKeyword(lower(token)) != "dataset") {
+        throw bad("expected DATASET after the header");
+    }
+    const std::string type = lower(word("the dataset type"));
+    LegacyDataset dataset = LegacyDataset::PolyData;
+    if (type.rfind("polydata", 0) == 0) {
+        dataset = LegacyDataset::PolyData;
+    } else if (type.rfind("unstructured_grid", 0) == 0) {
+        dataset = LegacyDataset::UnstructuredGrid;
+    } else {
+        std::string upper = type;
+        std::transform(upper.begin(), upper.end(), upper.begin(),
+                       [](unsigned char c) { return static_cast<char>(std::toupper(c)); });
+        throw FormatError(file, "the legacy VTK file holds a " + printable(upper) +
+                                    " dataset; only POLYDATA and UNSTRUCTURED_GRID are supported");
+    }
+    const bool grid = dataset == LegacyDataset::UnstructuredGrid;
+
+    std::optional<std::uint64_t> pointCount;
+    std::uint64_t cellTotal = 0;             // all cells (POLYDATA: of every section)
+    std::optional<std::uint64_t> gridCells;  // UNSTRUCTURED_GRID: cells of CELLS
+    std::vector<std::int32_t> cellSizes;     // their sizes (files before version 5)
+    std::optional<std::vector<std::int32_t>> cellTypes;
+    std::uint64_t tuples = 0;  // of the current POINT_DATA / CELL_DATA
+    bool inAttributes = false;
+
+    const auto readField = [&] {
+        (void)word("a field name");
+        const std::uint64_t arrays = count("a field array count");
+        fits(arrays, std::to_string(arrays) + " field arrays");
+        for (std::uint64_t i = 0; i < arrays; ++i) {
+            const std::string name = word("a field array name");
+            if (lower(name) == "null_array") {
+                continue;
+            }
+            const std::uint64_t components = count("a component count");
+            const std::uint64_t n = count("a tuple count");
+            const std::string arrayType = dataType();
+            skipArray(mulSat(components, n), arrayType);
+            if (tokens.next(token)) {
+                if (legacyKeyword(lower(token)) == "metadata") {
+                    skipMetadata();
+                } else {
+                    tokens.pushBack(token);
+                }
+            }
+        }
+    };
+
+    while (tokens.next(token)) {
+        tick(reader.position());
+        const std::string& key = legacyKeyword(lower(token));
+        const bool geometry = key == "points" || key == "vertices" || key == "lines" ||
+                              key == "polygons" || key == "triangle_strips" || key == "cells" ||
+                              key == "cell_types";
+        if (key.empty() || key == "dataset" || (geometry && inAttributes)) {
+            throw bad("unexpected '" + printable(token) + "'");
+        }
+        if (key == "metadata") {
+            skipMetadata();
+        } else if (key == "field") {
+            readField();
+        } else if (key == "points") {
+            const std::uint64_t n = count("the point count");
+            fits(mulSat(3, n), std::to_string(n) + " points");
+            const std::string pointType = dataType();
+            skipArray(mulSat(3, n), pointType);
+            pointCount = n;
+        } else if (key == "cell_types") {
+            if (!grid) {
+                throw bad("CELL_TYPES in a POLYDATA file");
+            }
+            const std::uint64_t n = count("the cell type count");
+            fits(n, std::to_string(n) + " cell types");
+            std::vector<std::int32_t> types;
+            readInts(n, [&](std::int64_t v) {
+                if (detail::supportedCellPointCount(static_cast<int>(v)) < 0) {
+                    throw FormatError(file, "the legacy VTK file has cells of type " +
+                                                std::to_string(v) +
+                                                ", which is not supported (only linear and "
+                                                "common quadratic cells are)");
+                }
+                types.push_back(static_cast<std::int32_t>(v));
+            });
+            cellTypes = std::move(types);
+        } else if (geometry) {
+            if ((key == "cells") != grid) {
+                throw bad(key + " in a " + (grid ? "UNSTRUCTURED_GRID" : "POLYDATA") + " file");
+            }
+            const std::uint64_t a = count("a cell count");
+            const std::uint64_t b = count("a connectivity size");
+            fits(a, std::to_string(a) + " " + key);
+            fits(b, std::to_string(b) + " connectivity values");
+            std::uint64_t cells = 0;
+            std::vector<std::int32_t> sizes;
+            if (major >= 5) {
+                // Offsets and connectivity arrays; their content is checked after reading.
+                for (const char* part : {"offsets", "connectivity"}) {
+                    if (lower(word(part)).rfind(part, 0) != 0) {
+                        throw bad("expected " + std::string(part) + " in the " + key + " section");
+                    }
+                    const std::string partType = dataType();
+                    skipArray(std::string(part) == "offsets" ? a : b, partType);
+                }
+                cells = a > 0 ? a - 1 : 0;
+            } else {
+                // "n id1 ... idn" records filling exactly b values.
+                std::int64_t left = 0;  // ids still to come in the current record
+                readInts(b, [&](std::int64_t v) {
+                    if (left > 0) {
+                        --left;
+                        return;
+                    }
+                    if (v < 0) {
+                        throw bad("a cell in the " + key + " section has a negative size");
+                    }
+                    ++cells;
+                    left = v;
+                    if (grid) {
+                        sizes.push_back(static_cast<std::int32_t>(v));
+                    }
+                });
+                if (left != 0) {
+                    throw bad("the last cell of the " + key + " section runs past its size");
+                }
+                if (cells != a) {
+                    throw bad("the " + key + " section declares " + std::to_string(a) +
+                              " cells but holds " + std::to_string(cells));
+                }
+            }
+            if (grid) {
+                gridCells = cells;
+                cellSizes = std::move(sizes);
+                cellTotal = cells;
+            } else {
+                cellTotal += cells;
+            }
+        } else if (key == "point_data" || key == "cell_data") {
+            tuples = count("a tuple count");
+            const bool points = key == "point_data";
+            const std::uint64_t expected = points ? pointCount.value_or(0) : cellTotal;
+            if (tuples != expected) {
+                throw bad(std::string(points ? "POINT_DATA" : "CELL_DATA") + " declares " +
+                          std::to_string(tuples) + " values for " + std::to_string(expected) +
+                          (points ? " points" : " cells"));
+            }
+            inAttributes = true;
+        } else if (!inAttributes) {
+            throw bad("'" + printable(token) + "' outside POINT_DATA / CELL_DATA");
+        } else if (key == "scalars") {
+            (void)word("an array name");
+            const std::string arrayType = dataType();
+            std::uint64_t components = 1;
+            std::string next = lower(word("LOOKUP_TABLE"));
+            if (next != "lookup_table") {
+                tokens.pushBack(next);
+                components = count("a component count");
+                if (components < 1 || components > 4) {
+                    throw bad("scalars with " + std::to_string(components) + " components");
+                }
+                next = lower(word("LOOKUP_TABLE"));
+            }
+            if (next != "lookup_table") {
+                throw bad("expected LOOKUP_TABLE after SCALARS");
+            }
+            (void)word("a lookup table name");
+            skipArray(mulSat(components, tuples), arrayType);
+        } else if (key == "color_scalars") {
+            (void)word("an array name");
+            const std::uint64_t components = count("a component count");
+            skipArray(mulSat(components, tuples), binary ? "unsigned_char" : "float");
+        } else if (key == "lookup_table") {
+            (void)word("a lookup table name");
+            const std::uint64_t colours = count("a colour count");
+            skipArray(mulSat(4, colours), binary ? "unsigned_char" : "float");
+        } else if (key == "texture_coordinates") {
+            (void)word("an array name");
+            const std::uint64_t dimension = count("a dimension");
+            if (dimension < 1 || dimension > 3) {
+                throw bad("texture coordinates of dimension " + std::to_string(dimension));
+            }
+            const std::string arrayType = dataType();
+            skipArray(mulSat(dimension, tuples), arrayType);
+        } else {
+            // vectors, normals, tensors, tensors6, global_ids, pedigree_ids, edge_flags
+            const std::uint64_t components = key == "tensors"                         ? 9
+                                             : key == "tensors6"                      ? 6
+                                             : (key == "vectors" || key == "normals") ? 3
+                                                                                      : 1;
+            (void)word("an array name");
+            const std::string arrayType = dataType();
+            skipArray(mulSat(components, tuples), arrayType);
+        }
+        if (key != "metadata" && key != "field" && tokens.next(token)) {
+            if (legacyKeyword(lower(token)) == "metadata") {
+                skipMetadata();
+            } else {
+                tokens.pushBack(token);
+            }
+        }
+    }
+    if (grid) {
+        if (gridCells.has_value() != cellTypes.has_value()) {
+            throw FormatError(file,
+                              "the legacy VTK file has cells without cell types, or "
+                              "cell types without cells");
+        }
+        if (gridCells && cellTypes->size() != *gridCells) {
+            throw FormatError(file, "the legacy VTK file has " + std::to_string(*gridCells) +
+                                        " cells but " + std::to_string(cellTypes->size()) +
+                                        " cell types");
+        }
+        for (std::size_t c = 0; cellTypes && c < cellSizes.size() && c < cellTypes->size(); ++c) {
+            const int expected = detail::supportedCellPointCount((*cellTypes)[c]);
+            if ((expected > 0 && cellSizes[c] != expected) || (expected == 0 && cellSizes[c] < 1)) {
+                throw FormatError(file, "cell " + std::to_string(c) + " of type " +
+                                            std::to_string((*cellTypes)[c]) + " has " +
+                                            std::to_string(cellSizes[c]) +
+                                            " points (corrupt file)");
+            }
+        }
+    }
+    return dataset;
+}
+
+}  // namespace vv::meshio::detail

@@ -1,0 +1,240 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Writing VTP: round trips through the loader, atomic writes, failures.
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "vv/core/Error.h"
+#include "vv/meshio/MeshLoader.h"
+#include "vv/meshio/MeshWriter.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::HasSubstr;
+using vv::scene::DataArray;
+using vv::scene::Mesh;
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+
+class MeshWriterTest : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::path(VV_TEST_TMP) / "io-writer" /
+               (std::string(info->test_suite_name()) + "." + info->name());
+        fs::remove_all(dir_);
+        fs::create_directories(dir_);
+    }
+
+    /// Names of everything in the test folder.
+    [[nodiscard]] std::vector<std::string> listing() const {
+        std::vector<std::string> names;
+        for (const auto& entry : fs::directory_iterator(dir_)) {
+            names.push_back(entry.path().filename().string());
+        }
+        std::sort(names.begin(), names.end());
+        return names;
+    }
+
+    fs::path dir_;
+};
+
+/// An octahedron (6 vertices, 8 triangles) with arrays of every kind.
+Mesh sampleMesh() {
+    Mesh m;
+    m.name = "sample";
+    m.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 2, 0}, {0, -2, 0}, {0, 0, 3}, {0, 0, -3}};
+    m.indices = {0, 2, 4, 2, 1, 4, 1, 3, 4, 3, 0, 4, 2, 0, 5, 1, 2, 5, 3, 1, 5, 0, 3, 5};
+    vv::scene::computeNormals(m);
+
+    DataArray pressure;
+    pressure.name = "pressure";
+    pressure.unit = "mmHg";
+    pressure.values = {80.5F, 81.25F, kNaN, 90.0F, -3.5F, 1e6F};
+    DataArray velocity;
+    velocity.name = "velocity";
+    velocity.unit = "m/s";
+    velocity.components = 3;
+    for (int i = 0; i < 6; ++i) {
+        velocity.values.insert(velocity.values.end(), {static_cast<float>(i), 0.5F, -1.0F});
+    }
+    DataArray segment;
+    segment.name = "segment_id";
+    segment.integer = true;
+    segment.values = {0, 1, 1, 2, 3, 70000};
+    m.pointArrays = {pressure, velocity, segment};
+
+    DataArray label;
+    label.name = "label";
+    label.integer = true;
+    label.values = {1, 1, 2, 2, 3, 3, 4, 4};
+    DataArray area;
+    area.name = "area";
+    area.unit = "mm^2";
+    area.values = {0.5F, 1.5F, 2.5F, kNaN, 4.5F, 5.5F, 6.5F, 7.5F};
+    m.cellArrays = {label, area};
+    return m;
+}
+
+void expectSameArray(const DataArray& a, const DataArray& b) {
+    SCOPED_TRACE(a.name);
+    EXPECT_EQ(a.name, b.name);
+    EXPECT_EQ(a.unit, b.unit);
+    EXPECT_EQ(a.components, b.components);
+    EXPECT_EQ(a.integer, b.integer);
+    EXPECT_EQ(a.fromCells, b.fromCells);
+    ASSERT_EQ(a.values.size(), b.values.size());
+    for (std::size_t i = 0; i < a.values.size(); ++i) {
+        if (std::isnan(a.values[i])) {
+            EXPECT_TRUE(std::isnan(b.values[i])) << "value " << i;
+        } else {
+            EXPECT_EQ(a.values[i], b.values[i]) << "value " << i;
+        }
+    }
+    EXPECT_EQ(a.nonFiniteCount(), b.nonFiniteCount());
+    EXPECT_EQ(a.finiteRange(), b.finiteRange());
+}
+
+TEST_F(MeshWriterTest, RoundTripKeepsEverything) {
+    const Mesh original = sampleMesh();
+    const auto file = dir_ / "sample.vtp";
+    vv::meshio::writeVtp(original, file);
+
+    vv::meshio::MeshLoadOptions options;
+    options.cellArraysToPoints = false;
+    const Mesh loaded = vv::meshio::loadMesh(file, options);
+    EXPECT_EQ(loaded.vertexCount(), original.vertexCount());
+    EXPECT_EQ(loaded.triangleCount(), original.triangleCount());
+    EXPECT_EQ(loaded.positions, original.positions);
+    EXPECT_EQ(loaded.indices, original.indices);
+    ASSERT_EQ(loaded.normals.size(), original.normals.size());
+    for (std::size_t i = 0; i < loaded.normals.size(); ++i) {
+        EXPECT_NEAR(glm::length(loaded.normals[i] - original.normals[i]), 0.0F, 1e-6F);
+    }
+    ASSERT_EQ(loaded.pointArrays.size(), original.pointArrays.size());
+    for (std::size_t i = 0; i < loaded.pointArrays.size(); ++i) {
+        expectSameArray(original.pointArrays[i], loaded.pointArrays[i]);
+    }
+    ASSERT_EQ(loaded.cellArrays.size(), original.cellArrays.size());
+    for (std::size_t i = 0; i < loaded.cellArrays.size(); ++i) {
+        expectSameArray(original.cellArrays[i], loaded.cellArrays[i]);
+    }
+    EXPECT_EQ(loaded.name, "sample");
+}
+
+TEST_F(MeshWriterTest, ConvertedArraysAreNotWrittenTwice) {
+    const auto first = dir_ / "first.vtp";
+    vv::meshio::writeVtp(sampleMesh(), first);
+    const Mesh loaded = vv::meshio::loadMesh(first);  // adds label and area as point arrays
+    ASSERT_EQ(loaded.pointArrays.size(), 5U);
+    EXPECT_TRUE(loaded.pointArrays[3].fromCells);
+
+    const auto second = dir_ / "second.vtp";
+    vv::meshio::writeVtp(loaded, second);
+    const Mesh again = vv::meshio::loadMesh(second);
+    ASSERT_EQ(again.pointArrays.size(), loaded.pointArrays.size());
+    for (std::size_t i = 0; i < again.pointArrays.size(); ++i) {
+        expectSameArray(loaded.pointArrays[i], again.pointArrays[i]);
+    }
+    ASSERT_EQ(again.cellArrays.size(), loaded.cellArrays.size());
+}
+
+TEST_F(MeshWriterTest, FileIsCompressedBinaryXmlWithUnitsInNames) {
+    const auto file = dir_ / "sample.vtp";
+    vv::meshio::writeVtp(sampleMesh(), file);
+    std::ifstream in(file, std::ios::binary);
+    const std::string text((std::istreambuf_iterator<char>(in)), {});
+    EXPECT_THAT(text, HasSubstr("<VTKFile type=\"PolyData\""));
+    EXPECT_THAT(text, HasSubstr("compressor=\"vtkZLibDataCompressor\""));
+    EXPECT_THAT(text, HasSubstr("format=\"binary\""));
+    EXPECT_THAT(text, ::testing::Not(HasSubstr("format=\"ascii\"")));
+    EXPECT_THAT(text, HasSubstr("Name=\"pressure [mmHg]\""));
+    EXPECT_THAT(text, HasSubstr("Name=\"area [mm^2]\""));
+    EXPECT_THAT(text, HasSubstr("type=\"Int32\" Name=\"segment_id\""));
+}
+
+TEST_F(MeshWriterTest, IntegerArrayWithNaNIsWrittenAsFloat) {
+    Mesh m = sampleMesh();
+    m.pointArrays[2].values[1] = kNaN;  // segment_id: NaN cannot be an int
+    const auto file = dir_ / "nan-ids.vtp";
+    vv::meshio::writeVtp(m, file);
+    vv::meshio::MeshLoadOptions options;
+    options.cellArraysToPoints = false;
+    const Mesh loaded = vv::meshio::loadMesh(file, options);
+    const auto* ids = loaded.pointArray("segment_id");
+    ASSERT_NE(ids, nullptr);
+    EXPECT_FALSE(ids->integer);
+    EXPECT_TRUE(std::isnan(ids->values[1]));
+    EXPECT_EQ(ids->values[5], 70000.0F);
+}
+
+TEST_F(MeshWriterTest, OverwritesAtomicallyAndLeavesNoTemporaryFiles) {
+    const auto file = dir_ / "mesh.vtp";
+    { std::ofstream(file) << "old content"; }
+    vv::meshio::writeVtp(sampleMesh(), file);
+    vv::meshio::writeVtp(sampleMesh(), file);
+    EXPECT_EQ(listing(), std::vector<std::string>{"mesh.vtp"});
+    EXPECT_EQ(vv::meshio::loadMesh(file).vertexCount(), 6U);
+}
+
+TEST_F(MeshWriterTest, MissingFolderThrowsIoErrorAndLeavesNothing) {
+    const auto file = dir_ / "missing" / "mesh.vtp";
+    try {
+        vv::meshio::writeVtp(sampleMesh(), file);
+        FAIL() << "no exception";
+    } catch (const vv::IoError& e) {
+        EXPECT_THAT(e.what(), HasSubstr(file.string()));
+        EXPECT_EQ(e.file(), file);
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "missing"));
+    EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(MeshWriterTest, FolderAsTargetOrParentThrowsIoError) {
+    fs::create_directories(dir_ / "taken.vtp");
+    EXPECT_THROW(vv::meshio::writeVtp(sampleMesh(), dir_ / "taken.vtp"), vv::IoError);
+    { std::ofstream(dir_ / "plain-file") << "x"; }
+    EXPECT_THROW(vv::meshio::writeVtp(sampleMesh(), dir_ / "plain-file" / "mesh.vtp"), vv::IoError);
+    EXPECT_EQ(listing(), (std::vector<std::string>{"plain-file", "taken.vtp"}));
+}
+
+TEST_F(MeshWriterTest, InconsistentMeshIsRefusedWithoutWriting) {
+    const auto file = dir_ / "bad.vtp";
+    Mesh outOfRange = sampleMesh();
+    outOfRange.indices[4] = 6;
+    EXPECT_THROW(vv::meshio::writeVtp(outOfRange, file), vv::InvalidArgumentError);
+    Mesh shortArray = sampleMesh();
+    shortArray.pointArrays[0].values.pop_back();
+    EXPECT_THROW(vv::meshio::writeVtp(shortArray, file), vv::InvalidArgumentError);
+    Mesh duplicate = sampleMesh();
+    duplicate.cellArrays[1].name = "label";
+    EXPECT_THROW(vv::meshio::writeVtp(duplicate, file), vv::InvalidArgumentError);
+    Mesh unnamed = sampleMesh();
+    unnamed.pointArrays[1].name.clear();
+    EXPECT_THROW(vv::meshio::writeVtp(unnamed, file), vv::InvalidArgumentError);
+    EXPECT_TRUE(listing().empty());
+}
+
+TEST_F(MeshWriterTest, MeshWithoutNormalsOrArrays) {
+    Mesh m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+    m.indices = {0, 1, 2};
+    const auto file = dir_ / "plain.vtp";
+    vv::meshio::writeVtp(m, file);
+    const Mesh loaded = vv::meshio::loadMesh(file);
+    EXPECT_EQ(loaded.triangleCount(), 1U);
+    ASSERT_EQ(loaded.normals.size(), 3U);
+    EXPECT_NEAR(loaded.normals[0].z, 1.0F, 1e-6F);
+    EXPECT_TRUE(loaded.pointArrays.empty());
+    EXPECT_TRUE(loaded.cellArrays.empty());
+}
+
+}  // namespace
