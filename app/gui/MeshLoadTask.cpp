@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/MeshLoadTask.h"
 
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -59,31 +58,21 @@ MeshLoadTask::MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
     } else {
         description_ = tr("Loading %n file(s)", nullptr, static_cast<int>(files_.size()));
     }
-    connect(&watcher_, &QFutureWatcher<Result>::finished, this, &MeshLoadTask::deliver);
+    connect(&run_.watcher(), &QFutureWatcher<Result>::finished, this, &MeshLoadTask::deliver);
 }
 
-MeshLoadTask::~MeshLoadTask() {
-    stop_.request_stop();
-    if (started_) {
-        future_.waitForFinished();
-    }
-}
+MeshLoadTask::~MeshLoadTask() = default;
 
 void MeshLoadTask::start() {
-    if (started_) {
-        return;
-    }
-    started_ = true;
-    future_ = QtConcurrent::run([this, stop = stop_.get_token()] { return work(stop); });
-    watcher_.setFuture(future_);
+    run_.start([this](std::stop_token stop) { return work(std::move(stop)); });
 }
 
 void MeshLoadTask::cancel() {
-    stop_.request_stop();
+    run_.cancel();
 }
 
 bool MeshLoadTask::isRunning() const {
-    return started_ && !future_.isFinished();
+    return run_.isRunning();
 }
 
 MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
@@ -155,9 +144,9 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
 }
 
 void MeshLoadTask::deliver() {
-    const Result result = future_.result();
+    const Result result = run_.result();
     // A cancel that came too late to stop the worker still discards its result.
-    if (result.cancelled || stop_.stop_requested()) {
+    if (result.cancelled || run_.stopRequested()) {
         emit cancelled();
     } else if (result.scan) {
         emit scanned(result.scan);

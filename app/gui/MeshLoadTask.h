@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include <QFuture>
-#include <QFutureWatcher>
 #include <QObject>
 #include <QString>
 #include <QStringList>
@@ -11,6 +9,7 @@
 #include <stop_token>
 #include <vector>
 
+#include "gui/WorkerRun.h"
 #include "vv/scene/Mesh.h"
 #include "vv/segmentation/SceneSource.h"
 
@@ -106,10 +105,7 @@ class MeshLoadTask : public QObject {
     segmentation::SceneSourceOptions dicomOptions_;
     segmentation::SceneSourceReport dicomReport_;
     QString description_;
-    std::stop_source stop_;
-    QFuture<Result> future_;
-    QFutureWatcher<Result> watcher_;
-    bool started_ = false;
+    WorkerRun<Result> run_;  ///< last: waits for the worker before the members it reads go
 };
 
 }  // namespace vv::gui

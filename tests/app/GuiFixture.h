@@ -19,6 +19,7 @@
 #include <numbers>
 #include <string>
 
+#include "TestMeshes.h"
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
 #include "vv/scene/Mesh.h"
@@ -46,37 +47,15 @@ inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) 
     return done();
 }
 
-/// A tube along x with "wss" (0..30, rising along it) and "pressure" arrays.
+/// A tube along x (radius 2, length 30) with "wss" (0..30, rising along it)
+/// and "pressure" (100..70, falling) arrays.
 inline std::shared_ptr<const scene::Scene> makeTubeScene(bool withArrays = true) {
     auto scene = std::make_shared<scene::Scene>();
-    scene::Mesh tube;
-    tube.name = "tube";
-    scene::DataArray wss{"wss", "Pa", 1, {}, false, false};
-    scene::DataArray pressure{"pressure", "mmHg", 1, {}, false, false};
-    constexpr int kSegments = 32;
-    constexpr int kRings = 30;
-    for (int i = 0; i <= kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) / kSegments;
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            tube.positions.push_back(glm::vec3(30.0F * static_cast<float>(i) / kRings, 0, 0) +
-                                     2.0F * n);
-            tube.normals.push_back(n);
-            wss.values.push_back(static_cast<float>(i));
-            pressure.values.push_back(100.0F - static_cast<float>(i));
-        }
-    }
-    for (std::uint32_t i = 0; i < kRings; ++i) {
-        for (std::uint32_t j = 0; j < kSegments; ++j) {
-            const std::uint32_t a = i * kSegments + j;
-            const std::uint32_t b = i * kSegments + (j + 1) % kSegments;
-            tube.indices.insert(tube.indices.end(),
-                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
-        }
-    }
+    scene::Mesh tube = vv::test::tube(
+        {.radius = 2.0F, .start = glm::vec3(0.0F), .length = 30.0F, .segments = 32, .rings = 30});
     if (withArrays) {
-        tube.pointArrays.push_back(std::move(pressure));
-        tube.pointArrays.push_back(std::move(wss));
+        vv::test::addAxialArray(tube, "pressure", "mmHg", 0.0F, [](float x) { return 100.0F - x; });
+        vv::test::addAxialArray(tube, "wss", "Pa", 0.0F, [](float x) { return x; });
     }
     scene->meshes.push_back(std::move(tube));
     return scene;

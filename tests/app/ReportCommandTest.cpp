@@ -20,6 +20,7 @@
 #include "DicomTestUtil.h"
 #include "ReportTestUtil.h"
 #include "SyntheticCta.h"
+#include "TestMeshes.h"
 #include "cli/Cli.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/meshio/MeshWriter.h"
@@ -46,37 +47,11 @@ fs::path freshDir(const std::string& name) {
 
 /// An open tube along x (radius 1, length 20) with "wss" (Pa) rising 0..10.
 vv::scene::Mesh tube(bool withArray) {
-    constexpr int kSegments = 24;
-    constexpr int kRings = 20;
-    vv::scene::Mesh mesh;
-    mesh.name = "tube";
-    std::vector<float> wss;
-    for (int i = 0; i <= kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const double phi = 2.0 * std::numbers::pi * j / kSegments;
-            mesh.positions.emplace_back(20.0F * static_cast<float>(i) / kRings,
-                                        static_cast<float>(std::cos(phi)),
-                                        static_cast<float>(std::sin(phi)));
-            wss.push_back(10.0F * static_cast<float>(i) / kRings);
-        }
-    }
-    for (int i = 0; i < kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const auto a = static_cast<std::uint32_t>(i * kSegments + j);
-            const auto b = static_cast<std::uint32_t>(i * kSegments + (j + 1) % kSegments);
-            mesh.indices.insert(mesh.indices.end(),
-                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
-        }
-    }
+    vv::scene::Mesh mesh = vv::test::tube(
+        {.radius = 1.0F, .start = glm::vec3(0.0F), .length = 20.0F, .segments = 24, .rings = 20});
     if (withArray) {
-        mesh.pointArrays.push_back(vv::scene::DataArray{.name = "wss",
-                                                        .unit = "Pa",
-                                                        .components = 1,
-                                                        .values = wss,
-                                                        .integer = false,
-                                                        .fromCells = false});
+        vv::test::addAxialArray(mesh, "wss", "Pa", 0.0F, [](float x) { return 0.5F * x; });
     }
-    vv::scene::computeNormals(mesh);
     return mesh;
 }
 

@@ -1,7 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 
+#include <limits>
+
 #include "vv/core/Image.h"
+#include "vv/core/ImageRange.h"
 
 namespace {
 
@@ -45,6 +48,26 @@ TEST(Image, ConstViewConversion) {
     const vv::ImageView<const int> view = img.view();
     EXPECT_EQ(view(1, 1), 3);
     EXPECT_EQ(view.data(), img.data());
+}
+
+TEST(Image, FiniteRangeSkipsNonFiniteValuesAndRespectsTheView) {
+    constexpr float kInf = std::numeric_limits<float>::infinity();
+    constexpr float kNan = std::numeric_limits<float>::quiet_NaN();
+    vv::Image<float> depth(4, 3, kInf);
+    EXPECT_FALSE(vv::finiteRange(depth.view()).has_value());  // all background
+    depth(1, 1) = 7.5F;
+    depth(2, 1) = kNan;
+    depth(3, 2) = -kInf;
+    depth(0, 2) = 2.25F;
+    depth(3, 0) = 1.0F;  // outside the sub-view below
+    const auto all = vv::finiteRange(depth.view());
+    ASSERT_TRUE(all.has_value());
+    EXPECT_EQ(all->first, 1.0F);
+    EXPECT_EQ(all->second, 7.5F);
+    const auto part = vv::finiteRange(depth.view().sub(0, 1, 3, 2));
+    ASSERT_TRUE(part.has_value());
+    EXPECT_EQ(part->first, 2.25F);
+    EXPECT_EQ(part->second, 7.5F);
 }
 
 }  // namespace

@@ -16,6 +16,7 @@
 #include "vv/core/Error.h"
 #include "vv/core/Progress.h"
 #include "vv/demo/DemoTree.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace {
 
@@ -143,17 +144,6 @@ SurfaceTopology topologyOf(const Mesh& mesh) {
     return topology;
 }
 
-double signedVolume(const Mesh& mesh) {
-    double volume6 = 0.0;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
-        const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
-        const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
-        volume6 += glm::dot(a, glm::cross(b, c));
-    }
-    return volume6 / 6.0;
-}
-
 /// The tube volume sum(pi r^2 L), ignoring overlaps at the junctions.
 double tubeVolume(const VesselTree& tree) {
     double volume = 0.0;
@@ -176,7 +166,7 @@ void expectValidSurface(const Mesh& mesh, const VesselTree& tree, const DemoTree
 
     // Outward: positive enclosed volume, close to the tubes' volume, and vertex
     // normals agreeing with the triangles' winding.
-    const double volume = signedVolume(mesh);
+    const double volume = vv::scene::signedVolume(mesh);
     EXPECT_GT(volume, 0.0);
     EXPECT_NEAR(volume / tubeVolume(tree), 1.0, 0.3);
     std::vector<glm::dvec3> faceSum(mesh.positions.size(), glm::dvec3(0.0));

@@ -8,47 +8,10 @@
 #include <cstdint>
 #include <numbers>
 
+#include "TestMeshes.h"
 #include "vv/core/Error.h"
 
 namespace vv::render::test {
-
-void ensureGuiApplication() {
-    if (QGuiApplication::instance() == nullptr) {
-        // Without any display, xcb would abort the process; the offscreen
-        // platform lets the tests fail with a message saying GL is missing.
-        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-            qEnvironmentVariableIsEmpty("DISPLAY") &&
-            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-        }
-        static int argc = 1;
-        static char name[] = "vv_render_tests";
-        static char* argv[] = {name, nullptr};
-        // Kept for the whole process: Qt allows one application object.
-        new QGuiApplication(argc, argv);
-    }
-}
-
-bool makeGl41Current(QOffscreenSurface& surface, QOpenGLContext& context) {
-    QSurfaceFormat format;
-    format.setVersion(4, 1);
-    format.setProfile(QSurfaceFormat::CoreProfile);
-    surface.setFormat(format);
-    surface.create();
-    context.setFormat(format);
-    return context.create() && context.makeCurrent(&surface);
-}
-
-std::unique_ptr<OffscreenRenderer> makeRenderer() {
-    try {
-        return std::make_unique<OffscreenRenderer>();
-    } catch (const vv::Error& e) {
-        ADD_FAILURE() << "no offscreen renderer (run under xvfb-run with "
-                         "QT_QPA_PLATFORM=xcb): "
-                      << e.what();
-        return nullptr;
-    }
-}
 
 PassState passState(const OffscreenRenderer& renderer, const std::string& pass) {
     for (const auto& info : renderer.lastPasses()) {
@@ -68,27 +31,11 @@ void saveImage(const QImage& image, const std::string& prefix, const std::string
 
 vv::scene::Mesh makeTube(float radius, float x0, float length, float y, float z, int segments,
                          int rings) {
-    vv::scene::Mesh mesh;
-    mesh.name = "tube";
-    for (int i = 0; i <= rings; ++i) {
-        const float s = static_cast<float>(i) / static_cast<float>(rings);
-        for (int j = 0; j < segments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) /
-                              static_cast<float>(segments);
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            mesh.positions.push_back(glm::vec3(x0 + s * length, y, z) + radius * n);
-            mesh.normals.push_back(n);
-        }
-    }
-    const auto segs = static_cast<std::uint32_t>(segments);
-    for (std::uint32_t i = 0; i < static_cast<std::uint32_t>(rings); ++i) {
-        for (std::uint32_t j = 0; j < segs; ++j) {
-            const std::uint32_t a = i * segs + j;
-            const std::uint32_t b = i * segs + (j + 1) % segs;
-            mesh.indices.insert(mesh.indices.end(), {a, a + segs, b, b, a + segs, b + segs});
-        }
-    }
-    return mesh;
+    return vv::test::tube({.radius = radius,
+                           .start = glm::vec3(x0, y, z),
+                           .length = length,
+                           .segments = segments,
+                           .rings = rings});
 }
 
 vv::scene::Scene twoTubes(float radius, float z, int segments, int rings) {

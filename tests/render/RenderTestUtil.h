@@ -14,20 +14,18 @@
 #include <memory>
 #include <string>
 
+#include "GlTestSupport.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/scene/Mesh.h"
 
 namespace vv::render::test {
 
-/// Creates the process-wide QGuiApplication (offscreen platform without a display).
-void ensureGuiApplication();
-
+using vv::test::ensureGuiApplication;
+using vv::test::makeGl41Current;
 /// A renderer, or a test failure naming why there is none.
-std::unique_ptr<OffscreenRenderer> makeRenderer();
-
-/// Creates `surface` and `context` for OpenGL 4.1 core and makes the context
-/// current; false when the platform has none (e.g. no display).
-[[nodiscard]] bool makeGl41Current(QOffscreenSurface& surface, QOpenGLContext& context);
+inline std::unique_ptr<OffscreenRenderer> makeRenderer() {
+    return vv::test::makeOffscreenRenderer();
+}
 
 /// The state of pass `pass` in the renderer's last frame (a failure if absent).
 PassState passState(const OffscreenRenderer& renderer, const std::string& pass);

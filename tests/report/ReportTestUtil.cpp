@@ -12,32 +12,10 @@
 #include <numbers>
 #include <set>
 
+#include "TestMeshes.h"
 #include "vv/core/Error.h"
 
 namespace vv::report::test {
-
-void ensureGuiApplication() {
-    if (QGuiApplication::instance() == nullptr) {
-        if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") &&
-            qEnvironmentVariableIsEmpty("DISPLAY") &&
-            qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY")) {
-            qputenv("QT_QPA_PLATFORM", "offscreen");
-        }
-        static int argc = 1;
-        static char name[] = "vv_report_tests";
-        static char* argv[] = {name, nullptr};
-        new QGuiApplication(argc, argv);  // kept for the whole process
-    }
-}
-
-std::unique_ptr<render::OffscreenRenderer> makeRenderer() {
-    try {
-        return std::make_unique<render::OffscreenRenderer>();
-    } catch (const Error& e) {
-        ADD_FAILURE() << "no OpenGL (run under xvfb-run -a, QT_QPA_PLATFORM=xcb): " << e.what();
-        return nullptr;
-    }
-}
 
 std::filesystem::path testDir(const std::string& name) {
     const std::filesystem::path dir =
@@ -48,34 +26,10 @@ std::filesystem::path testDir(const std::string& name) {
 }
 
 scene::Mesh makeTube(const std::string& name) {
-    constexpr int kSegments = 32;
-    constexpr int kRings = 40;
-    scene::Mesh mesh;
+    scene::Mesh mesh = vv::test::tube(
+        {.radius = 1.0F, .start = glm::vec3(0.0F), .length = 20.0F, .segments = 32, .rings = 40});
     mesh.name = name;
-    scene::DataArray wss{.name = "wss",
-                         .unit = "Pa",
-                         .components = 1,
-                         .values = {},
-                         .integer = false,
-                         .fromCells = false};
-    for (int i = 0; i <= kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const double phi = 2.0 * std::numbers::pi * j / kSegments;
-            const float x = 20.0F * static_cast<float>(i) / kRings;
-            mesh.positions.emplace_back(x, std::cos(phi), std::sin(phi));
-            wss.values.push_back(x * 0.5F);
-        }
-    }
-    for (int i = 0; i < kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const auto a = static_cast<std::uint32_t>(i * kSegments + j);
-            const auto b = static_cast<std::uint32_t>(i * kSegments + (j + 1) % kSegments);
-            mesh.indices.insert(mesh.indices.end(),
-                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
-        }
-    }
-    mesh.pointArrays.push_back(std::move(wss));
-    scene::computeNormals(mesh);
+    vv::test::addAxialArray(mesh, "wss", "Pa", 0.0F, [](float x) { return 0.5F * x; });
     return mesh;
 }
 

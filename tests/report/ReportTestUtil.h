@@ -8,17 +8,18 @@
 #include <memory>
 #include <string>
 
+#include "GlTestSupport.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/scene/Mesh.h"
 
 namespace vv::report::test {
 
-/// The process-wide QGuiApplication (offscreen platform without a display).
-void ensureGuiApplication();
-
+using vv::test::ensureGuiApplication;
 /// An offscreen renderer, or null after a test failure saying that there is
 /// no OpenGL (run under xvfb-run -a, QT_QPA_PLATFORM=xcb).
-std::unique_ptr<render::OffscreenRenderer> makeRenderer();
+inline std::unique_ptr<render::OffscreenRenderer> makeRenderer() {
+    return vv::test::makeOffscreenRenderer();
+}
 
 /// A fresh folder for this process under VV_TEST_TMP/report/<name>.
 std::filesystem::path testDir(const std::string& name);

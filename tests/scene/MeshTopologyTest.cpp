@@ -32,6 +32,23 @@ TEST(MeshTopologyTest, EveryTriangleTurnedMakesItClosedInward) {
     EXPECT_EQ(surfaceClosure(mesh), SurfaceClosure::ClosedInward);
 }
 
+TEST(MeshTopologyTest, SignedVolumeAndOrientOutwardTurnAnInsideOutCube) {
+    const Mesh outward = cube(glm::vec3(3.0F, -1.0F, 2.0F), 2.0F);
+    EXPECT_NEAR(signedVolume(outward), 8.0, 1e-9);
+    Mesh mesh = outward;
+    EXPECT_FALSE(orientOutward(mesh));  // already outward: unchanged
+    EXPECT_EQ(mesh.indices, outward.indices);
+    flipAll(mesh);
+    mesh.normals.assign(mesh.positions.size(), glm::vec3(0.0F, 0.0F, 1.0F));
+    EXPECT_NEAR(signedVolume(mesh), -8.0, 1e-9);
+    EXPECT_TRUE(orientOutward(mesh));
+    EXPECT_NEAR(signedVolume(mesh), 8.0, 1e-9);
+    EXPECT_EQ(surfaceClosure(mesh), SurfaceClosure::ClosedOutward);
+    for (const glm::vec3& n : mesh.normals) {
+        EXPECT_EQ(n, glm::vec3(0.0F, 0.0F, -1.0F));  // turned with the triangles
+    }
+}
+
 TEST(MeshTopologyTest, AMissingTriangleLeavesItOpen) {
     Mesh mesh = cube();
     mesh.indices.resize(mesh.indices.size() - 3);

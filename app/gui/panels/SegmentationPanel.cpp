@@ -6,7 +6,6 @@
 #include <QDoubleSpinBox>
 #include <QEvent>
 #include <QFormLayout>
-#include <QFutureWatcher>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLocale>
@@ -17,7 +16,6 @@
 #include <QSpinBox>
 #include <QTimer>
 #include <QVBoxLayout>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -310,15 +308,19 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
 void SegmentationPanel::startDefaultRange() {
     // The modality default: a histogram pass for MR, so not on the GUI thread.
     const std::shared_ptr<const scene::Volume> volume = volume_;
-    auto* watcher = new QFutureWatcher<std::optional<segmentation::ThresholdRange>>(this);
-    connect(
-        watcher, &QFutureWatcher<std::optional<segmentation::ThresholdRange>>::finished, this,
-        [this, watcher, volume] {
-            watcher->deleteLater();
+    defaultRangeRun_.start(
+        [volume](const std::stop_token&) -> std::optional<segmentation::ThresholdRange> {
+            try {
+                return segmentation::defaultThresholdRange(*volume);
+            } catch (const vv::Error&) {
+                return std::nullopt;
+            }
+        },
+        [this, volume](std::optional<segmentation::ThresholdRange> range) {
             if (volume != volume_) {
                 return;  // computed for an older volume
             }
-            defaultRange_ = watcher->result();
+            defaultRange_ = std::move(range);
             defaultLabel_->setText(
                 defaultRange_ ? tr("Default: %1 to %2")
                                     .arg(valueText(static_cast<double>(defaultRange_->lower)),
@@ -328,13 +330,6 @@ void SegmentationPanel::startDefaultRange() {
             defaultLabel_->setToolTip(defaultRange_ ? fromUtf8(defaultRange_->rule) : QString());
             updateApplicability();
         });
-    watcher->setFuture(QtConcurrent::run([volume]() -> std::optional<segmentation::ThresholdRange> {
-        try {
-            return segmentation::defaultThresholdRange(*volume);
-        } catch (const vv::Error&) {
-            return std::nullopt;
-        }
-    }));
 }
 
 QString SegmentationPanel::valueText(double value) const {

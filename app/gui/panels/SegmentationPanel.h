@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "gui/WorkerRun.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
 #include "vv/segmentation/VolumeSegmentation.h"
@@ -165,6 +166,8 @@ class SegmentationPanel : public QWidget {
     ViewerWidget* viewer_;
     std::shared_ptr<const scene::Volume> volume_;
     std::optional<segmentation::ThresholdRange> defaultRange_;
+    /// Computes the modality default range of volume_ on a worker.
+    LatestRun<std::optional<segmentation::ThresholdRange>> defaultRangeRun_{this};
     std::optional<glm::ivec3> seed_;
     Display display_ = Display::SurfaceMesh;
     /// The mesh scene shown before switching to the ray-cast display.

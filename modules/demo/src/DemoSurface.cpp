@@ -3,9 +3,7 @@
 // union of tubes along the centrelines) sampled slab by slab, flying edges at
 // 0, windowed-sinc smoothing, outward normals, and per-vertex pressure, wall
 // shear stress, segment id and generation. See docs/demo-data.md.
-#include <vtkCallbackCommand.h>
 #include <vtkCellArray.h>
-#include <vtkCommand.h>
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
 #include <vtkImageData.h>
@@ -21,9 +19,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
-#include <exception>
 #include <limits>
-#include <mutex>
 #include <numbers>
 #include <span>
 #include <string>
@@ -35,7 +31,9 @@
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 #include "vv/demo/DemoTree.h"
+#include "vv/meshio/vtkext/RunAlgorithm.h"
 #include "vv/meshio/vtkext/VtkConvert.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace vv::demo {
 
@@ -587,51 +585,15 @@ vtkSmartPointer<vtkPolyData> extractSurface(const Grid& grid, const std::vector<
     return surface;
 }
 
-/// Forwards a VTK filter's progress to a Progress; on cancellation (or any
-/// exception from the callback) asks the filter to abort and keeps the
-/// exception for the caller, so nothing is thrown through VTK.
-struct VtkProgressHook {
-    const Progress* progress = nullptr;
-    std::string_view stage;
-    std::mutex mutex;
-    std::exception_ptr error;
-
-    static void forward(vtkObject* caller, unsigned long /*event*/, void* clientData,
-                        void* callData) {
-        auto* hook = static_cast<VtkProgressHook*>(clientData);
-        const std::scoped_lock lock(hook->mutex);
-        if (hook->error) {
-            return;
-        }
-        const double fraction = callData != nullptr ? *static_cast<double*>(callData) : 0.0;
-        try {
-            hook->progress->report(fraction, hook->stage);
-        } catch (...) {
-            hook->error = std::current_exception();
-            if (auto* algorithm = vtkAlgorithm::SafeDownCast(caller)) {
-                algorithm->AbortExecuteOn();
-            }
-        }
-    }
-};
-
-/// Runs the filter with progress forwarding; returns a copy of its output
-/// (so the filter and its input can go). Rethrows a cancellation.
+/// Runs the filter with meshio's progress forwarding and error capture
+/// (meshio::detail::runAlgorithm); returns a copy of its output (so the
+/// filter and its input can go). Throws CancelledError when cancelled and
+/// FormatError when the filter reports an error.
 vtkSmartPointer<vtkPolyData> runFilter(vtkPolyDataAlgorithm* filter, const Progress& progress,
                                        std::string_view stage) {
     progress.report(0.0, stage);
-    VtkProgressHook hook;
-    hook.progress = &progress;
-    hook.stage = stage;
-    auto command = vtkSmartPointer<vtkCallbackCommand>::New();
-    command->SetCallback(&VtkProgressHook::forward);
-    command->SetClientData(&hook);
-    const unsigned long tag = filter->AddObserver(vtkCommand::ProgressEvent, command);
-    filter->Update();
-    filter->RemoveObserver(tag);
-    if (hook.error) {
-        std::rethrow_exception(hook.error);
-    }
+    meshio::detail::runAlgorithm(filter, {}, "demo surface", progress, 0.0, 1.0,
+                                 std::string(stage));
     progress.report(1.0, stage);
     auto output = vtkSmartPointer<vtkPolyData>::New();
     output->ShallowCopy(filter->GetOutput());
@@ -783,26 +745,6 @@ void addPointData(scene::Mesh& mesh, const VesselTree& tree, const std::vector<P
     progress.report(1.0, "Assigning vessel data");
 }
 
-/// Makes the triangles wind counter-clockwise seen from outside (positive
-/// signed volume), flipping triangles and normals when they do not.
-void orientOutward(scene::Mesh& mesh) {
-    double volume6 = 0.0;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
-        const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
-        const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
-        volume6 += glm::dot(a, glm::cross(b, c));
-    }
-    if (volume6 < 0.0) {
-        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
-        }
-        for (auto& normal : mesh.normals) {
-            normal = -normal;
-        }
-    }
-}
-
 /// Keeps only the connected component with the most triangles. The tubes are
 /// joined by construction; anything else flying edges finds can only be a
 /// speck a voxel or two wide (sampling of a thin tube or of a blend).
@@ -944,7 +886,7 @@ scene::Mesh buildVesselSurface(const VesselTree& tree, const DemoTreeOptions& op
         throw Error("vessel surface: internal error, unexpected data arrays on the surface");
     }
     keepLargestComponent(mesh);
-    orientOutward(mesh);
+    scene::orientOutward(mesh);
     mesh.name = "vessel tree";
     addPointData(mesh, tree, extraction.pieces, extraction.bins, progress.sub(kNormalsEnd, 1.0));
     return mesh;

@@ -8,6 +8,7 @@
 #include <vtkSmartPointer.h>
 
 #include <exception>
+#include <mutex>
 #include <new>
 
 #include "vv/core/Error.h"
@@ -19,7 +20,10 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// Filters that run in parallel (vtkSMPTools) may report progress from their
+/// worker threads: the relay is locked.
 struct ProgressRelay {
+    std::mutex mutex;
     const Progress* progress = nullptr;
     vtkAlgorithm* algorithm = nullptr;
     double begin = 0.0;
@@ -31,7 +35,11 @@ struct ProgressRelay {
 
 void onProgress(vtkObject* /*caller*/, unsigned long /*event*/, void* clientData, void* callData) {
     auto* relay = static_cast<ProgressRelay*>(clientData);
-    if (relay == nullptr || relay->cancelled || relay->error || callData == nullptr) {
+    if (relay == nullptr || callData == nullptr) {
+        return;
+    }
+    const std::scoped_lock lock(relay->mutex);
+    if (relay->cancelled || relay->error) {
         return;
     }
     const double fraction = *static_cast<const double*>(callData);

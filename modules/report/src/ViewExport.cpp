@@ -19,6 +19,7 @@
 
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
+#include "vv/core/ImageRange.h"
 #include "vv/render/GlResources.h"
 #include "vv/render/TileProjection.h"
 #include "vv/vss/DepthNormalization.h"
@@ -124,25 +125,6 @@ render::OffscreenOptions tileOptions(const render::OffscreenOptions& frame,
     return options;
 }
 
-/// The min / max of the finite values of `depth`; nullopt when there are none.
-std::optional<std::pair<double, double>> finiteRange(const Image<float>& depth) {
-    float lo = std::numeric_limits<float>::infinity();
-    float hi = -std::numeric_limits<float>::infinity();
-    for (int y = 0; y < depth.height(); ++y) {
-        const float* row = depth.row(y);
-        for (int x = 0; x < depth.width(); ++x) {
-            if (std::isfinite(row[x])) {
-                lo = std::min(lo, row[x]);
-                hi = std::max(hi, row[x]);
-            }
-        }
-    }
-    if (lo > hi) {
-        return std::nullopt;
-    }
-    return std::make_pair(static_cast<double>(lo), static_cast<double>(hi));
-}
-
 /// `rect` of `image` (row 0 = top) in GL row order (bottom row first).
 Image<float> cutForGl(const Image<float>& image, const render::PixelRect& rect) {
     Image<float> out(rect.width, rect.height);
@@ -195,7 +177,10 @@ Image<float> tiledDepth(render::OffscreenRenderer& renderer, const scene::Scene&
 render::ExternalVss solveWholeFrame(const Image<float>& depth, const render::VssSettings& settings,
                                     const Progress& progress) {
     render::ExternalVss solved;
-    solved.visibleRange = finiteRange(depth);
+    if (const auto range = finiteRange(depth.view())) {
+        solved.visibleRange =
+            std::make_pair(static_cast<double>(range->first), static_cast<double>(range->second));
+    }
     if (!settings.enabled) {
         return solved;
     }

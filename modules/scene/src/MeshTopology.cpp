@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <numeric>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vv/core/Error.h"
@@ -148,6 +149,30 @@ std::vector<SurfaceClosure> surfaceClosures(const Scene& scene) {
         closures.push_back(surfaceClosure(mesh));
     }
     return closures;
+}
+
+double signedVolume(const Mesh& mesh) noexcept {
+    double volume6 = 0.0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
+        const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
+        const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
+        volume6 += glm::dot(a, glm::cross(b, c));
+    }
+    return volume6 / 6.0;
+}
+
+bool orientOutward(Mesh& mesh) noexcept {
+    if (!(signedVolume(mesh) < 0.0)) {
+        return false;
+    }
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
+    }
+    for (glm::vec3& normal : mesh.normals) {
+        normal = -normal;
+    }
+    return true;
 }
 
 }  // namespace vv::scene

@@ -20,25 +20,13 @@
 #include "vv/meshio/MeshSimplify.h"
 #include "vv/meshio/vtkext/RunAlgorithm.h"
 #include "vv/meshio/vtkext/VtkConvert.h"
+#include "vv/scene/MeshTopology.h"
 
 namespace vv::segmentation {
 
 namespace {
 
 constexpr const char* kStage = "Extracting surface";
-
-/// Six times the signed volume enclosed by the triangles (positive when
-/// they are wound counter-clockwise seen from outside).
-double signedVolume6(const scene::Mesh& mesh) {
-    double sum = 0.0;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
-        const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
-        const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
-        sum += glm::dot(a, glm::cross(b, c));
-    }
-    return sum;
-}
 
 }  // namespace
 
@@ -140,11 +128,7 @@ scene::Mesh extractSurface(const scene::LabelMap& map, const std::vector<std::ui
     mesh.pointArrays.clear();
     mesh.cellArrays.clear();
     mesh.name = "vessels";
-    if (signedVolume6(mesh) < 0.0) {
-        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-            std::swap(mesh.indices[t + 1], mesh.indices[t + 2]);
-        }
-    }
+    scene::orientOutward(mesh);  // a mirroring indexToWorld turns the triangles inside out
     progress.report(0.65, kStage);
     if (options.targetTriangles != 0 && mesh.triangleCount() > options.targetTriangles) {
         mesh = meshio::simplifiedMesh(mesh, options.targetTriangles, progress.sub(0.65, 0.99));

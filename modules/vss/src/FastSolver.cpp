@@ -83,61 +83,8 @@
 // pixel S_x = min(nearest near point, far-cluster bound) with the check done
 // in log2; weights are then (S_x/d)^p <= 1 and the nearest is 1.
 //
-// MEASURED (bench/vss_fast_micro, synthetic 1280x720 vessel trees, Far /
-// Medium / Close: 93 / 114 / 23 regions, largest contour 10198 / 5637 / 1609;
-// AMD EPYC (Zen 4), 2 vCPUs shared with other jobs, AVX-512 path, tolerance
-// 0.5/255). Command:
-//   cmake --build build-fast2 --target vss_fast_micro &&
-//   build-fast2/bench/vss_fast_micro --runs 7 --p 2,4,8,64
-// cpu = process CPU time of one frame, both threads (min of 7; stable under
-// load); wall = median of 7 runs with 2 threads, machine lightly loaded (load
-// average ~2). Previous version in brackets, measured in the same session:
-//     ms            p = 2          4            8            64
-//     Far      cpu  35.5 (39.6)  51.2 (54.4)  69.7 (75.8)  90.2 (92.5)
-//              wall 20.3 (22.7)  28.6 (30.4)  37.8 (42.3)  48.7 (50.1)
-//     Medium   cpu  40.8 (48.2)  52.6 (60.6)  63.5 (71.6)  73.2 (74.4)
-//              wall 23.9 (28.3)  29.7 (35.0)  35.8 (40.5)  41.9 (41.3)
-//     Close    cpu  22.4 (25.2)  27.0 (30.3)  32.9 (36.3)  51.9 (52.9)
-//              wall 13.5 (15.5)  16.1 (18.1)  19.0 (21.0)  29.5 (29.0)
-// Same decisions as before (identical M2L counts, near pairs, sampled max
-// errors 0.6e-6 .. 5.5e-6 against the tolerance 2e-3, 0 fallback pixels); the
-// gain is overhead: no copies of the parent's local expansion / cluster list
-// per box (children read the parent's, only parallel tasks own copies), scratch
-// vectors reused per thread, counters per thread instead of shared atomics per
-// leaf, chooseOrder without divisions or a 512-entry table. The 16 ms target
-// is met for Close at p = 2 only (Close p = 4 at 16.1); Far / Medium are
-// 1.3-2.4x off. Where the time goes (perf, p = 8 Far, one thread): leaf kernel
-// 29%, M2L 26%, traversal 17%, leaf set-up 6%, moments 3%, L2L 3%.
-// Tried and dropped: the kernel is not division-bound (replacing the division
-// by a product changed nothing at p = 2), and the leaf cost model (exact sum
-// against M2L, factor 0.15 .. 0.6) is flat within 5%.
-// Also tried and dropped (same counters, cpu ms min of 5, Far p = 2 / 8, machine
-// loaded by other builds, base 37.5 / 71.5):
-//  - Dlo(B) as the minimum over the box's four quadrants of sum n_C maxd^-p
-//    (rigorous): near pairs 296 -> 288, M2L -3.5% at p = 8; gain eaten by the
-//    four extra powers per candidate.
-//  - Radial spread in tau: bin each cluster's points by |v_i| <= {0.5, 0.7,
-//    0.85, 1} s; tau_m(q_b) <= (q_b/q)^(m+1) tau_m(q) term by term, so the mean
-//    per-point factor is phi_m tau_m(q), phi_m = sum_b f_b (q_b/q)^(m+1)
-//    (rigorous, cheap). Near pairs 104 -> 93 / 296 -> 267, M2L -13% / -10%,
-//    but cpu 39.5 / 74.7 (+5% / +4%): phi for every candidate at every level
-//    and a larger SrcNode cost more than the saved work; leaves only: worse.
-//  - vss_fast_micro --budget-scale F (a looser a-priori budget; the check keeps
-//    the guarantee): at 3x, p = 8 needs 15% fewer near pairs with 0 fall-backs
-//    but p = 2 already sends 7198 pixels to the fall-back; at 10x, 81% / 20% of
-//    the pixels fail. So at p = 2 the rigorous E is within 3-10x of tol D on
-//    most pixels, i.e. tightening the per-tile allocation (per-pixel D) cannot
-//    pay much there; the ~1000x gap to the measured error is in E itself (sign
-//    cancellation of the remainders, which no per-point bound can use).
-//
-// NEXT: the remaining factor needs fewer near pairs (104 / 186 / 296 per pixel
-// at p = 2 / 4 / 8) and fewer translations, i.e. tighter rigorous bounds: the
-// error bound is driven by the worst pixel of a 16x16 tile (at p = 8 its D is
-// orders of magnitude below the tile's best), so per-pixel or per-half-tile
-// remainder bounds, dz_C measured against the computed z' (the bound is convex
-// in z', Lipschitz with the remainder weight), radial point spread in tau;
-// then reuse of trees across frames / p and a parallel tree build (serial now,
-// ~7% of a frame).
+// MEASURED: docs/benchmarks/vss.md, "Fast solver: design log" (timings of
+// bench/vss_fast_micro, what was tried and dropped, what is next).
 //
 #include "FastSolver.h"
 
@@ -154,6 +101,7 @@
 #include <vector>
 
 #include "FastKernel.h"
+#include "FastMath.h"
 #include "FastStats.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
@@ -205,110 +153,7 @@ struct StatsFlush {  // flushes on every exit, cancellation included
     ~StatsFlush() { flushStats(); }
 };
 
-// ---------------------------------------------------------------- complex numbers
-// A small complex type: std::complex<double> multiplication goes through a
-// NaN-recovering library call without -ffast-math; our values are finite.
-// Trivial on purpose: scratch arrays of Cx are not zero-filled (Cx{} is zero).
-struct Cx {
-    double re;
-    double im;
-};
-inline Cx operator+(Cx a, Cx b) {
-    return {a.re + b.re, a.im + b.im};
-}
-inline Cx operator*(Cx a, Cx b) {
-    return {a.re * b.re - a.im * b.im, a.re * b.im + a.im * b.re};
-}
-inline Cx operator*(double s, Cx a) {
-    return {s * a.re, s * a.im};
-}
-inline Cx conj(Cx a) {
-    return {a.re, -a.im};
-}
-inline Cx& operator+=(Cx& a, Cx b) {
-    a.re += b.re;
-    a.im += b.im;
-    return a;
-}
-
 using Square = std::array<Cx, kS * kS>;
-
-// Two complex numbers side by side (D and N parts): [a.re, a.im, b.re, b.im].
-//
-// A V4 never crosses a call boundary by value. This file is compiled for
-// baseline x86-64 and, in its target_clones functions, for x86-64-v3 as well,
-// and the two pass a 32-byte vector differently (baseline: in memory; AVX: in
-// a ymm register; GCC's -Wpsabi note). An out-of-line helper taking or
-// returning a V4 by value, called from an AVX clone, reads its argument from
-// the wrong place: at -O0 (the asan preset, nothing inlined) cmul4(V4, Cx)
-// crashed exactly so. Hence the helpers below take and give V4 by reference
-// and are always inlined, so the optimised code is the same as before.
-using V4 = double __attribute__((vector_size(32)));
-// out = v * c per complex half
-[[gnu::always_inline]] inline void cmul4(V4& out, const V4& v, Cx c) {
-    const V4 sw = __builtin_shufflevector(v, v, 1, 0, 3, 2);
-    out = v * c.re + sw * V4{-c.im, c.im, -c.im, c.im};
-}
-// acc += v * c per complex half
-[[gnu::always_inline]] inline void cmulAdd4(V4& acc, const V4& v, Cx c) {
-    const V4 sw = __builtin_shufflevector(v, v, 1, 0, 3, 2);
-    acc += v * c.re + sw * V4{-c.im, c.im, -c.im, c.im};
-}
-
-// ---------------------------------------------------------------- fast scalar powers
-// log2 / exp2 in double for the bounds of the traversal (the C library's pow
-// would take a fifth of the run time). log2: t = (m-1)/(m+1), |t| <= 0.1716,
-// 2/ln2 * atanh(t) to t^17 (truncation < 1e-15). exp2: 2^f, |f| <= 1/2, Taylor
-// to degree 11 (truncation < 3e-13), times 2^k. Relative error of
-// exp2(y log2 x) below 1e-13 for |y log2 x| < 2000; every bound that uses
-// them carries a relative margin of 1e-9.
-inline double log2d(double x) {
-    // x > 0 finite; normal range only (the ratios here are within 1e-300 .. 1e300)
-    const auto bits = std::bit_cast<std::uint64_t>(x);
-    int e = static_cast<int>((bits >> 52) & 0x7ff) - 1023;
-    double m = std::bit_cast<double>((bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL);
-    if (m > 1.4142135623730951) {
-        m *= 0.5;
-        ++e;
-    }
-    const double t = (m - 1.0) / (m + 1.0);
-    const double t2 = t * t;
-    constexpr double kInvOdd[9] = {1.0,      1.0 / 3,  1.0 / 5,  1.0 / 7, 1.0 / 9,
-                                   1.0 / 11, 1.0 / 13, 1.0 / 15, 1.0 / 17};
-    double s = kInvOdd[8];
-    for (int k = 7; k >= 0; --k) {
-        s = s * t2 + kInvOdd[k];
-    }
-    return static_cast<double>(e) + 2.8853900817779268 * t * s;  // 2/ln2
-}
-inline double exp2d(double y) {
-    if (y < -1000.0) {
-        return y < -1100.0 ? 0.0 : std::exp2(y);  // denormal range: the library
-    }
-    if (y > 1020.0) {
-        return y > 1100.0 ? std::numeric_limits<double>::infinity() : std::exp2(y);
-    }
-    const double k = std::floor(y + 0.5);
-    const double g = (y - k) * 0.69314718055994531;
-    // e^g, |g| <= 0.347: Taylor to degree 11 (truncation < 3e-13 relative),
-    // evaluated in two interleaved halves to shorten the dependency chain
-    const double g2 = g * g;
-    const double even =
-        1.0 + g2 * (1.0 / 2 +
-                    g2 * (1.0 / 24 + g2 * (1.0 / 720 + g2 * (1.0 / 40320 + g2 * (1.0 / 3628800)))));
-    const double odd =
-        1.0 +
-        g2 * (1.0 / 6 +
-              g2 * (1.0 / 120 + g2 * (1.0 / 5040 + g2 * (1.0 / 362880 + g2 * (1.0 / 39916800)))));
-    const double s = even + g * odd;
-    // s in [0.7, 1.42]: scale by 2^k through the exponent field (k in [-1000, 1020])
-    return std::bit_cast<double>(std::bit_cast<std::uint64_t>(s) +
-                                 (static_cast<std::uint64_t>(static_cast<std::int64_t>(k)) << 52));
-}
-// (ratio2)^(p/2) for squared-distance ratios.
-inline double powHalf(double ratio2, double halfP) {
-    return exp2d(halfP * log2d(ratio2));
-}
 
 // ---------------------------------------------------------------- per-p tables
 struct PowerTables {

@@ -34,4 +34,14 @@ enum class SurfaceClosure {
 /// surfaceClosure() of each of the scene's meshes, in order. Throws like it.
 [[nodiscard]] std::vector<SurfaceClosure> surfaceClosures(const Scene& scene);
 
+/// The volume the triangles enclose, signed: positive when they wind
+/// counter-clockwise seen from outside (cubic scene units; meaningful for a
+/// closed surface). Indices must be in range (surfaceClosure() checks them).
+[[nodiscard]] double signedVolume(const Mesh& mesh) noexcept;
+
+/// Makes the triangles wind counter-clockwise seen from outside: when
+/// signedVolume() is negative, every triangle is flipped and every normal
+/// negated. Returns true when it flipped. Indices must be in range.
+bool orientOutward(Mesh& mesh) noexcept;
+
 }  // namespace vv::scene
