@@ -30,6 +30,16 @@ std::string shortestText(float value) {
     return shortest(value);
 }
 
+std::string readableText(double value) {
+    if (!std::isfinite(value)) {
+        return shortest(value);
+    }
+    std::array<char, 64> buffer{};
+    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                         std::chars_format::general, 6);
+    return ec == std::errc() ? std::string(buffer.data(), end) : std::string("nan");
+}
+
 std::optional<double> parseFiniteNumber(std::string_view text) noexcept {
     double value = 0.0;
     const char* end = text.data() + text.size();

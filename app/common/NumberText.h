@@ -17,6 +17,10 @@ namespace vv::app {
 /// (0.1F gives "0.1", not the double's "0.10000000149011612").
 [[nodiscard]] std::string shortestText(float value);
 
+/// `value` for people to read in messages and help: at most six significant
+/// digits ("0.000196078", "0.55", "1e+12"); C locale.
+[[nodiscard]] std::string readableText(double value);
+
 /// `text` as a finite double (all of it, C locale); nullopt otherwise.
 [[nodiscard]] std::optional<double> parseFiniteNumber(std::string_view text) noexcept;
 /// `text` as an int (all of it, decimal); nullopt otherwise.

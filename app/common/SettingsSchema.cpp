@@ -308,7 +308,7 @@ const std::vector<Setting>& table() {
          .min = 2,
          .max = colormaps::kMaxBins,
          .zeroAllowed = true,
-         .label = QT_TRANSLATE_NOOP("vv::app::Settings", "Bins"),
+         .label = QT_TRANSLATE_NOOP("vv::app::Settings", "Colour-map bins"),
          .field = field([](auto& d) -> auto& { return d.style.bins; })},
         {.key = "style.range[0]",
          .min = -kMaxArrayValue,
@@ -483,7 +483,7 @@ std::string choiceNames(const Setting& setting) {
 }
 
 std::string validValues(const Setting& s) {
-    const std::string range = shortestText(s.min) + ".." + shortestText(s.max);
+    const std::string range = readableText(s.min) + ".." + readableText(s.max);
     switch (s.type) {
         case Bool:
             return "on or off";
@@ -620,8 +620,12 @@ std::string settingText(const Setting& s, const SettingValue& value) {
             return std::get<bool>(value) ? "on" : "off";
         case Int:
             return std::to_string(std::get<int>(value));
-        case Real:
-            return shortestText(std::get<double>(value));
+        case Real: {
+            // A float field's value as the float it is ("0.55", not 0.550000011920929).
+            const double v = std::get<double>(value);
+            const auto f = static_cast<float>(v);
+            return static_cast<double>(f) == v ? shortestText(f) : shortestText(v);
+        }
         case Choice:
             return std::string(s.choices->name(std::get<int>(value)));
         case Color:
