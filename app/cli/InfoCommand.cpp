@@ -78,24 +78,17 @@ void writeJsonArrays(JsonWriter& json, const std::vector<ArrayInfo>& arrays) {
     json.beginArray();
     for (const auto& a : arrays) {
         json.beginObject();
-        json.key("name");
-        json.string(a.name);
-        json.key("unit");
-        json.string(a.unit);
-        json.key("components");
-        json.integer(static_cast<std::uint64_t>(a.components));
-        json.key("integer");
-        json.boolean(a.integer);
-        json.key("from_cells");
-        json.boolean(a.fromCells);
-        json.key("range_of");
-        json.string(a.components == 1 ? "value" : "magnitude");
+        json.member("name", a.name);
+        json.member("unit", a.unit);
+        json.member("components", static_cast<std::uint64_t>(a.components));
+        json.member("integer", a.integer);
+        json.member("from_cells", a.fromCells);
+        json.member("range_of", a.components == 1 ? "value" : "magnitude");
         json.key("min");
         a.range ? json.number(a.range->first) : json.null();
         json.key("max");
         a.range ? json.number(a.range->second) : json.null();
-        json.key("non_finite");
-        json.integer(a.nonFinite);
+        json.member("non_finite", a.nonFinite);
         json.endObject();
     }
     json.endArray();
@@ -105,14 +98,10 @@ void writeMeshArray(JsonWriter& json, const std::vector<MeshInfo>& meshes) {
     json.beginArray();
     for (const auto& m : meshes) {
         json.beginObject();
-        json.key("file");
-        json.string(m.file);
-        json.key("name");
-        json.string(m.name);
-        json.key("vertices");
-        json.integer(m.vertices);
-        json.key("triangles");
-        json.integer(m.triangles);
+        json.member("file", m.file);
+        json.member("name", m.name);
+        json.member("vertices", m.vertices);
+        json.member("triangles", m.triangles);
         json.key("bounds_mm");
         json.beginObject();
         const std::pair<const char*, glm::vec3> corners[] = {
@@ -302,10 +291,8 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
     json.beginArray();
     for (const auto& d : dicoms) {
         json.beginObject();
-        json.key("path");
-        json.string(d.path);
-        json.key("files_examined");
-        json.integer(d.scan.filesExamined);
+        json.member("path", d.path);
+        json.member("files_examined", d.scan.filesExamined);
         json.key("patients");
         json.beginArray();
         for (const auto& p : d.scan.patients) {
@@ -314,36 +301,24 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
             json.beginArray();
             for (const auto& st : p.studies) {
                 json.beginObject();
-                json.key("study_instance_uid");
-                json.string(st.studyInstanceUid);
-                json.key("date");
-                json.string(st.date);
-                json.key("description");
-                json.string(st.description);
+                json.member("study_instance_uid", st.studyInstanceUid);
+                json.member("date", st.date);
+                json.member("description", st.description);
                 json.key("series");
                 json.beginArray();
                 for (const auto& s : st.series) {
                     json.beginObject();
-                    json.key("series_instance_uid");
-                    json.string(s.seriesInstanceUid);
-                    json.key("modality");
-                    json.string(s.modality);
-                    json.key("description");
-                    json.string(s.description);
+                    json.member("series_instance_uid", s.seriesInstanceUid);
+                    json.member("modality", s.modality);
+                    json.member("description", s.description);
                     json.key("series_number");
                     s.seriesNumber ? json.integer(*s.seriesNumber) : json.null();
-                    json.key("images");
-                    json.integer(s.imageCount);
-                    json.key("files");
-                    json.integer(s.files.size());
-                    json.key("multi_frame");
-                    json.boolean(s.multiFrame);
-                    json.key("rows");
-                    json.integer(static_cast<std::uint64_t>(s.rows));
-                    json.key("columns");
-                    json.integer(static_cast<std::uint64_t>(s.columns));
-                    json.key("mixed_sizes");
-                    json.boolean(s.mixedSizes);
+                    json.member("images", s.imageCount);
+                    json.member("files", s.files.size());
+                    json.member("multi_frame", s.multiFrame);
+                    json.member("rows", static_cast<std::uint64_t>(s.rows));
+                    json.member("columns", static_cast<std::uint64_t>(s.columns));
+                    json.member("mixed_sizes", s.mixedSizes);
                     json.key("pixel_spacing_mm");
                     if (s.pixelSpacing) {
                         json.beginArray();
@@ -355,16 +330,11 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
                     }
                     json.key("slice_spacing_mm");
                     s.sliceSpacing ? json.number(*s.sliceSpacing) : json.null();
-                    json.key("transfer_syntax");
-                    json.string(s.transferSyntaxName);
-                    json.key("transfer_syntax_uid");
-                    json.string(s.transferSyntaxUid);
-                    json.key("sop_class_uid");
-                    json.string(s.sopClassUid);
-                    json.key("loadable");
-                    json.boolean(s.unsupportedReason.empty());
-                    json.key("unsupported_reason");
-                    json.string(s.unsupportedReason);
+                    json.member("transfer_syntax", s.transferSyntaxName);
+                    json.member("transfer_syntax_uid", s.transferSyntaxUid);
+                    json.member("sop_class_uid", s.sopClassUid);
+                    json.member("loadable", s.unsupportedReason.empty());
+                    json.member("unsupported_reason", s.unsupportedReason);
                     json.endObject();
                 }
                 json.endArray();
@@ -378,10 +348,8 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
         json.beginArray();
         for (const auto& k : d.scan.skipped) {
             json.beginObject();
-            json.key("file");
-            json.string(k.file.string());
-            json.key("reason");
-            json.string(k.reason);
+            json.member("file", k.file.string());
+            json.member("reason", k.reason);
             json.endObject();
         }
         json.endArray();

@@ -47,7 +47,25 @@ class JsonWriter {
     /// Ends the document with a newline.
     void finish();
 
+    /// A member of the open object: key(name), then the value as its type
+    /// says (text, a number, an integer, a boolean).
+    template <typename T>
+    void member(std::string_view name, const T& value) {
+        key(name);
+        write(value);
+    }
+
   private:
+    void write(std::string_view text) { string(text); }
+    void write(const char* text) { string(text); }
+    void write(const std::string& text) { string(text); }
+    void write(double v) { number(v); }
+    void write(float v) { number(v); }
+    void write(bool v) { boolean(v); }
+    template <std::integral T>
+    void write(T v) {
+        integer(v);
+    }
     void raw(const std::string& text);
     void open(char bracket);
     void close(char bracket);

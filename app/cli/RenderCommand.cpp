@@ -147,23 +147,18 @@ RenderArguments parse(const std::vector<std::string>& args) {
 void writeTimings(std::ostream& out, render::OffscreenRenderer& renderer, const QImage& image) {
     JsonWriter json(out, JsonWriter::Layout::OneLine);
     json.beginObject();
-    json.key("width");
-    json.integer(image.width());
-    json.key("height");
-    json.integer(image.height());
+    json.member("width", image.width());
+    json.member("height", image.height());
     json.key("passes");
     json.beginArray();
     const auto timings = renderer.lastTimings();
     for (const auto& pass : renderer.lastPasses()) {
         json.beginObject();
-        json.key("name");
-        json.string(pass.name);
-        json.key("state");
-        json.string(render::toString(pass.state));
+        json.member("name", pass.name);
+        json.member("state", render::toString(pass.state));
         for (const auto& t : timings) {
             if (t.pass == pass.name) {
-                json.key("cpu_ms");
-                json.number(t.cpuMilliseconds);
+                json.member("cpu_ms", t.cpuMilliseconds);
                 json.key("gpu_ms");
                 t.gpuMilliseconds ? json.number(*t.gpuMilliseconds) : json.null();
             }
@@ -175,15 +170,12 @@ void writeTimings(std::ostream& out, render::OffscreenRenderer& renderer, const 
     for (const auto& t : timings) {
         total += t.cpuMilliseconds;
     }
-    json.key("total_cpu_ms");
-    json.number(total);
+    json.member("total_cpu_ms", total);
     const auto& status = renderer.vssStatus();
     json.key("vss");
     json.beginObject();
-    json.key("shown");
-    json.boolean(status.shown);
-    json.key("solve_ms");
-    json.number(status.solveMilliseconds);
+    json.member("shown", status.shown);
+    json.member("solve_ms", status.solveMilliseconds);
     json.endObject();
     json.endObject();
     json.finish();

@@ -157,50 +157,30 @@ int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
         const auto& s = result.stats;
         JsonWriter json(out, JsonWriter::Layout::OneLine);
         json.beginObject();
-        json.key("width");
-        json.integer(depth.width());
-        json.key("height");
-        json.integer(depth.height());
-        json.key("solver");
-        json.string(vss::toString(parsed.solver.kind));
-        json.key("p");
-        json.number(parsed.solver.p);
-        json.key("regions");
-        json.integer(s.regionCount);
+        json.member("width", depth.width());
+        json.member("height", depth.height());
+        json.member("solver", vss::toString(parsed.solver.kind));
+        json.member("p", parsed.solver.p);
+        json.member("regions", s.regionCount);
         json.key("contourPixels");
         json.beginArray();
         for (const std::int64_t n : s.contourPixels) {
             json.integer(n);
         }
         json.endArray();
-        const std::pair<const char*, std::int64_t> counts[] = {
-            {"maxContourPixels", s.maxContourPixels}, {"voidPixels", s.voidPixels}};
-        for (const auto& [key, n] : counts) {
-            json.key(key);
-            json.integer(n);
-        }
-        const std::pair<const char*, double> numbers[] = {{"dmin", result.dmin},
-                                                          {"dmax", result.dmax}};
-        for (const auto& [key, v] : numbers) {
-            json.key(key);
-            json.number(v);
-        }
-        json.key("flat");
-        json.boolean(result.flat);
-        json.key("errorBound");
-        json.number(result.errorBound);
+        json.member("maxContourPixels", s.maxContourPixels);
+        json.member("voidPixels", s.voidPixels);
+        json.member("dmin", result.dmin);
+        json.member("dmax", result.dmax);
+        json.member("flat", result.flat);
+        json.member("errorBound", result.errorBound);
         json.key("timeMs");
         json.beginObject();
-        const std::pair<const char*, double> times[] = {{"normalize", s.normalizeMs},
-                                                        {"regions", s.regionsMs},
-                                                        {"interpolate", s.interpolateMs}};
-        for (const auto& [key, ms] : times) {
-            json.key(key);
-            json.number(ms);
-        }
+        json.member("normalize", s.normalizeMs);
+        json.member("regions", s.regionsMs);
+        json.member("interpolate", s.interpolateMs);
         json.endObject();
-        json.key("nonFiniteVoidPixels");
-        json.integer(nonFiniteVoid);
+        json.member("nonFiniteVoidPixels", nonFiniteVoid);
         json.endObject();
         json.finish();
     } else {

@@ -13,10 +13,10 @@
 #include <cmath>
 #include <string>
 
+#include "common/SceneFiles.h"
 #include "common/SessionReader.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
-#include "vv/io/MeshLoader.h"
 
 namespace vv::app {
 
@@ -226,29 +226,8 @@ io::Scene loadSessionScene(const Session& session, const std::filesystem::path& 
                    QStringLiteral("names a file that does not exist: %1").arg(session.files[i]));
         }
     }
-    const io::SceneSourceOptions dicom = session.dicom.value_or(io::SceneSourceOptions{});
-    if (std::none_of(paths.begin(), paths.end(),
-                     [](const auto& p) { return io::isDicomSource(p); })) {
-        return io::loadScene(paths, {}, progress);
-    }
-    // DICOM sources are segmented one by one; meshes load as before.
-    io::Scene scene;
-    const double n = static_cast<double>(paths.size());
-    for (std::size_t i = 0; i < paths.size(); ++i) {
-        const Progress part =
-            progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);
-        io::SceneSourceReport loaded;
-        const bool dicomSource = io::isDicomSource(paths[i]);
-        io::Scene one = dicomSource ? io::loadSceneSource(paths[i], dicom, part, &loaded)
-                                    : io::loadScene({paths[i]}, {}, part);
-        if (dicomSource && report != nullptr) {
-            *report = std::move(loaded);
-        }
-        for (auto& mesh : one.meshes) {
-            scene.meshes.push_back(std::move(mesh));
-        }
-    }
-    return scene;
+    return loadSceneFiles(paths, session.dicom.value_or(io::SceneSourceOptions{}), progress,
+                          report);
 }
 
 void applySessionCamera(const Session& session, render::Camera& camera) {

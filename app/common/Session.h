@@ -90,13 +90,11 @@ void saveSession(const std::filesystem::path& file, const Session& session);
 [[nodiscard]] Session loadSession(const std::filesystem::path& file);
 
 /// Loads the data of `session` (read from `file`) into one scene as the GUI
-/// does when it opens the session: its files in order, DICOM sources
-/// segmented with `session.dicom` (default: the only series), the meshes as
-/// one batch. `report` (optional) says what loading the last DICOM source
-/// did. Throws FormatError naming `file` and the field ("files[1]") when a
-/// file does not exist or the session names none, and as
-/// io::loadScene / io::loadSceneSource otherwise (CancelledError through
-/// `progress`).
+/// does when it opens the session (loadSceneFiles: its files in order, DICOM
+/// sources segmented with `session.dicom`, default the only series).
+/// `report` (optional) says what loading the last DICOM source did. Throws
+/// FormatError naming `file` and the field ("files[1]") when a file does not
+/// exist or the session names none, and as loadSceneFiles otherwise.
 [[nodiscard]] io::Scene loadSessionScene(const Session& session, const std::filesystem::path& file,
                                          const Progress& progress = {},
                                          io::SceneSourceReport* report = nullptr);

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/StoredSettings.h"
 #include "vv/core/Error.h"
 
 namespace vv::app::detail {
@@ -14,27 +15,7 @@ QString text(std::string_view s) {
 }
 
 QJsonValue settingToJson(const Setting& setting, const SettingValue& value) {
-    if (std::holds_alternative<NoValue>(value)) {
-        return QJsonValue(QJsonValue::Null);
-    }
-    switch (setting.type) {
-        case SettingType::Bool:
-            return std::get<bool>(value);
-        case SettingType::Int:
-            return std::get<int>(value);
-        case SettingType::Real:
-            return std::get<double>(value);
-        case SettingType::Choice:
-            return text(setting.choices->name(std::get<int>(value)));
-        case SettingType::Color: {
-            const glm::vec3& c = std::get<glm::vec3>(value);
-            return QJsonArray{static_cast<double>(c.r), static_cast<double>(c.g),
-                              static_cast<double>(c.b)};
-        }
-        case SettingType::Text:
-            return QString::fromStdString(std::get<std::string>(value));
-    }
-    return {};
+    return QJsonValue::fromVariant(settingToVariant(setting, value));
 }
 
 void SessionReader::fail(const QString& field, const QString& problem) const {

@@ -9,8 +9,6 @@
 #include <limits>
 #include <optional>
 
-#include "common/SettingsSchema.h"
-
 namespace vv::app {
 
 namespace {
@@ -18,33 +16,6 @@ namespace {
 QString storeKey(const Setting& s) {
     return QStringLiteral("view/") +
            QString::fromUtf8(s.storedKey.data(), static_cast<qsizetype>(s.storedKey.size()));
-}
-
-QVariant toVariant(const Setting& s, const SettingValue& value) {
-    switch (s.type) {
-        case SettingType::Bool:
-            return std::get<bool>(value);
-        case SettingType::Int:
-            return std::get<int>(value);
-        case SettingType::Real:
-            return std::get<double>(value);
-        case SettingType::Choice: {
-            const int v = std::get<int>(value);
-            if (s.storedAsIndex) {
-                return v;
-            }
-            const std::string_view name = s.choices->name(v);
-            return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
-        }
-        case SettingType::Color: {
-            const glm::vec3& c = std::get<glm::vec3>(value);
-            return QVariantList{static_cast<double>(c.r), static_cast<double>(c.g),
-                                static_cast<double>(c.b)};
-        }
-        case SettingType::Text:
-            return QString::fromStdString(std::get<std::string>(value));
-    }
-    return {};
 }
 
 std::optional<double> number(const QVariant& v) {
@@ -120,10 +91,40 @@ std::optional<SettingValue> fromVariant(const Setting& s, const QVariant& v) {
 
 }  // namespace
 
+QVariant settingToVariant(const Setting& s, const SettingValue& value, bool indexChoices) {
+    if (std::holds_alternative<NoValue>(value)) {
+        return {};
+    }
+    switch (s.type) {
+        case SettingType::Bool:
+            return std::get<bool>(value);
+        case SettingType::Int:
+            return std::get<int>(value);
+        case SettingType::Real:
+            return std::get<double>(value);
+        case SettingType::Choice: {
+            const int v = std::get<int>(value);
+            if (indexChoices && s.storedAsIndex) {
+                return v;
+            }
+            const std::string_view name = s.choices->name(v);
+            return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
+        }
+        case SettingType::Color: {
+            const glm::vec3& c = std::get<glm::vec3>(value);
+            return QVariantList{static_cast<double>(c.r), static_cast<double>(c.g),
+                                static_cast<double>(c.b)};
+        }
+        case SettingType::Text:
+            return QString::fromStdString(std::get<std::string>(value));
+    }
+    return {};
+}
+
 void writeStoredSettings(const DisplaySettings& settings, QSettings& store) {
     for (const Setting& s : settingsSchema()) {
         if (!s.storedKey.empty()) {
-            store.setValue(storeKey(s), toVariant(s, s.field.get(settings)));
+            store.setValue(storeKey(s), settingToVariant(s, s.field.get(settings), true));
         }
     }
 }

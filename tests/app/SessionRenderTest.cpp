@@ -13,13 +13,13 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <numbers>
 #include <string>
 #include <vector>
 
 #include "CliRun.h"
 #include "cli/Cli.h"
 #include "common/Session.h"
+#include "vv/io/DemoTree.h"
 #include "vv/io/Mesh.h"
 #include "vv/io/MeshWriter.h"
 
@@ -39,43 +39,25 @@ std::string readAll(const fs::path& file) {
     return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
 }
 
-/// A tube along x with a "wss" array rising along it, as VTP.
-fs::path writeTube() {
-    const fs::path file = dir() / "tube.vtp";
-    io::Mesh tube;
-    tube.name = "tube";
-    io::DataArray wss{"wss", "Pa", 1, {}, false, false};
-    constexpr int kSegments = 24;
-    constexpr int kRings = 20;
-    for (int i = 0; i <= kRings; ++i) {
-        for (int j = 0; j < kSegments; ++j) {
-            const float phi = 2.0F * std::numbers::pi_v<float> * static_cast<float>(j) / kSegments;
-            const glm::vec3 n{0.0F, std::cos(phi), std::sin(phi)};
-            tube.positions.push_back(glm::vec3(20.0F * static_cast<float>(i) / kRings, 0, 0) + n);
-            tube.normals.push_back(n);
-            wss.values.push_back(static_cast<float>(i));
-        }
+/// A small demo tree (with its "wss" array), as VTP.
+fs::path writeTree() {
+    const fs::path file = dir() / "tree.vtp";
+    if (!fs::exists(file)) {
+        io::DemoTreeOptions options;
+        options.generations = 3;
+        options.voxelSizeMm = 1.0;
+        io::writeVtp(io::generateDemoMesh(options), file);
     }
-    for (std::uint32_t i = 0; i < kRings; ++i) {
-        for (std::uint32_t j = 0; j < kSegments; ++j) {
-            const std::uint32_t a = i * kSegments + j;
-            const std::uint32_t b = i * kSegments + (j + 1) % kSegments;
-            tube.indices.insert(tube.indices.end(),
-                                {a, a + kSegments, b, b, a + kSegments, b + kSegments});
-        }
-    }
-    tube.pointArrays.push_back(std::move(wss));
-    io::writeVtp(tube, file);
     return file;
 }
 
-/// A session of the tube unlike the defaults: a turned camera, the
+/// A session of the tree unlike the defaults: a turned camera, the
 /// dark-means-deep scale, p = 4, iso-lines, inferno, a light, no legends.
-app::Session tubeSession() {
+app::Session treeSession() {
     app::Session s;
-    s.files = {QString::fromStdString(writeTube().string())};
-    s.cameraTarget = glm::vec3(10.0F, 0.0F, 0.0F);
-    s.cameraDistance = 30.0F;
+    s.files = {QString::fromStdString(writeTree().string())};
+    s.cameraTarget = glm::vec3(0.0F, 0.0F, 20.0F);
+    s.cameraDistance = 120.0F;
     s.cameraRotation = glm::normalize(glm::quat(0.9F, 0.2F, 0.3F, 0.0F));
     s.vss.scale = colormaps::DepthScale::DarkMeansDeep;
     s.vss.solver.p = 4.0;
@@ -120,10 +102,10 @@ CliRunResult render(const fs::path& session, const fs::path& output,
 }
 
 TEST(SessionRender, RendersTheSessionAndOptionsAfterItOverrideIt) {
-    const fs::path session = save("tube.vvs", tubeSession());
-    app::Session chromadepth = tubeSession();
+    const fs::path session = save("tree.vvs", treeSession());
+    app::Session chromadepth = treeSession();
     chromadepth.vss.scale = colormaps::DepthScale::Chromadepth;
-    const fs::path other = save("tube-cd.vvs", chromadepth);
+    const fs::path other = save("tree-cd.vvs", chromadepth);
 
     const auto a = render(session, dir() / "a.png");
     ASSERT_EQ(a.code, cli::kOk) << a.err;
@@ -151,7 +133,7 @@ TEST(SessionRender, RendersTheSessionAndOptionsAfterItOverrideIt) {
 }
 
 TEST(SessionRender, AMissingFileExitsThreeNamingTheSessionAndTheField) {
-    app::Session s = tubeSession();
+    app::Session s = treeSession();
     s.files << QString::fromStdString((dir() / "gone.vtp").string());
     const fs::path session = save("missing.vvs", s);
     for (const char* command : {"render", "report"}) {
@@ -166,7 +148,7 @@ TEST(SessionRender, AMissingFileExitsThreeNamingTheSessionAndTheField) {
 }
 
 TEST(SessionRender, BadValuesExitThreeNamingTheSessionAndTheField) {
-    const fs::path good = save("good.vvs", tubeSession());
+    const fs::path good = save("good.vvs", treeSession());
     struct Case {
         const char* name;
         QByteArray from;
@@ -193,7 +175,7 @@ TEST(SessionRender, BadValuesExitThreeNamingTheSessionAndTheField) {
 }
 
 TEST(SessionRender, SessionsDoNotMixWithOtherInputs) {
-    const fs::path session = save("plain.vvs", tubeSession());
+    const fs::path session = save("plain.vvs", treeSession());
     const std::string out = (dir() / "x.png").string();
     EXPECT_EQ(runCli({"render", "in.vtp", "--session", session.string(), "-o", out}).code,
               cli::kUsage);
