@@ -3,7 +3,6 @@
 
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <ostream>
 
 #include "common/NumberText.h"
@@ -41,9 +40,10 @@ std::string jsonString(std::string_view text) {
                     break;
                 default:
                     if (c < 0x20 || c == 0x7F) {
-                        char buffer[8];
-                        std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                        out += buffer;
+                        constexpr std::string_view kHex = "0123456789abcdef";
+                        out += "\\u00";
+                        out += kHex[c / 16];
+                        out += kHex[c % 16];
                     } else {
                         out += static_cast<char>(c);
                     }

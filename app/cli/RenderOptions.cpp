@@ -2,6 +2,7 @@
 #include "cli/RenderOptions.h"
 
 #include <algorithm>
+#include <array>
 #include <tuple>
 #include <utility>
 
@@ -31,8 +32,8 @@ void readSetting(Arguments& a, const app::Setting& setting, app::DisplaySettings
 /// options and camera. The settings sessions do not hold (FXAA) stay.
 void useSession(const std::filesystem::path& file, RenderOptionValues& values) {
     app::Session session = app::loadSession(file);  // IoError, FormatError: exit code 3
-    const app::DisplaySettings before = values;
-    static_cast<app::DisplaySettings&>(values) = session;
+    const app::DisplaySettings before = static_cast<const app::DisplaySettings&>(values);
+    static_cast<app::DisplaySettings&>(values) = static_cast<const app::DisplaySettings&>(session);
     for (const app::Setting& s : app::settingsSchema()) {
         if (s.session == app::SessionForm::None && s.field.set != nullptr) {
             s.field.set(values, s.field.get(before));
@@ -66,8 +67,8 @@ render::LightAngles parseLightAngles(const std::string& text) {
                          text + "'");
     }
     app::DisplaySettings parsed;
-    const std::pair<const char*, std::string> parts[] = {
-        {"style.light[0]", text.substr(0, comma)}, {"style.light[1]", text.substr(comma + 1)}};
+    const std::array<std::pair<const char*, std::string>, 2> parts{
+        {{"style.light[0]", text.substr(0, comma)}, {"style.light[1]", text.substr(comma + 1)}}};
     for (const auto& [key, part] : parts) {
         const app::Setting& setting = app::setting(key);
         try {

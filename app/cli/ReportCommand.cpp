@@ -11,6 +11,7 @@
 #include "cli/ReportCommand.h"
 
 #include <QFile>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -192,12 +193,9 @@ std::vector<fs::path> sessionFiles(const app::Session& session) {
 
 /// The DICOM source of a session's files: the last one (as loadSessionScene reports it).
 fs::path lastDicomSource(const std::vector<fs::path>& files) {
-    for (auto it = files.rbegin(); it != files.rend(); ++it) {
-        if (io::isDicomSource(*it)) {
-            return *it;
-        }
-    }
-    return {};
+    const auto found = std::find_if(files.rbegin(), files.rend(),
+                                    [](const fs::path& f) { return io::isDicomSource(f); });
+    return found != files.rend() ? *found : fs::path();
 }
 
 /// Loads `input`, renders and writes every requested output (report::runReportJob).

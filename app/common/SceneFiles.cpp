@@ -17,7 +17,7 @@ io::Scene loadSceneFiles(const std::vector<std::filesystem::path>& files,
     }
     // DICOM sources are segmented one by one; meshes load as before.
     io::Scene scene;
-    const double n = static_cast<double>(files.size());
+    const auto n = static_cast<double>(files.size());
     for (std::size_t i = 0; i < files.size(); ++i) {
         const Progress part =
             progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);

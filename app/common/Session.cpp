@@ -204,7 +204,7 @@ Session loadSession(const std::filesystem::path& file) {
     if (!in.open(QIODevice::ReadOnly)) {
         throw IoError(file, "cannot read the session: " + in.errorString().toStdString());
     }
-    constexpr qint64 kMaxBytes = 16 * 1024 * 1024;
+    constexpr qint64 kMaxBytes = qint64{16} * 1024 * 1024;
     if (in.size() > kMaxBytes) {
         throw FormatError(file, "not a session: larger than 16 MiB");
     }

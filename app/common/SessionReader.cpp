@@ -28,7 +28,7 @@ QString SessionReader::path(const QString& where, const char* key) {
 }
 
 QJsonValue SessionReader::get(const QJsonObject& o, const QString& where, const char* key) const {
-    const QJsonValue v = o.value(QLatin1String(key));
+    QJsonValue v = o.value(QLatin1String(key));
     if (v.isUndefined()) {
         fail(path(where, key), QStringLiteral("is missing"));
     }

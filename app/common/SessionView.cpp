@@ -113,7 +113,7 @@ void readDepthRange(const SessionReader& r, const QJsonObject& vssObject, const 
 /// The colour range: null (the array's own) or [min, max].
 QJsonValue colorRangeToJson(const DisplaySettings& d) {
     if (!d.style.range) {
-        return QJsonValue(QJsonValue::Null);
+        return {QJsonValue::Null};
     }
     return QJsonArray{static_cast<double>(d.style.range->first),
                       static_cast<double>(d.style.range->second)};
@@ -206,7 +206,8 @@ void insertSetting(QJsonObject& view, const Setting& s, const QJsonValue& value)
     insertAt(view, key.parents, key.name, value);
 }
 
-QJsonObject viewToJson(const DisplaySettings& d) {
+QJsonObject viewToJson(const DisplaySettings& settings) {
+    const DisplaySettings& d = settings;
     QJsonObject view;
     for (const Setting& s : settingsSchema()) {
         if (!inView(s)) {
@@ -227,7 +228,9 @@ QJsonObject viewToJson(const DisplaySettings& d) {
     return view;
 }
 
-void readView(const SessionReader& r, const QJsonObject& view, DisplaySettings& d) {
+void readView(const SessionReader& reader, const QJsonObject& view, DisplaySettings& settings) {
+    const SessionReader& r = reader;
+    DisplaySettings& d = settings;
     const QString top = QStringLiteral("view");
     for (const Setting& s : settingsSchema()) {
         if (!inView(s)) {

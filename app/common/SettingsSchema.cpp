@@ -418,7 +418,7 @@ std::string quoted(std::string_view text) {
 
 std::string colorText(const glm::vec3& c) {
     std::string text = "#";
-    constexpr char kHex[] = "0123456789abcdef";
+    constexpr std::string_view kHex = "0123456789abcdef";
     for (int i = 0; i < 3; ++i) {
         const int byte = static_cast<int>(std::lround(std::clamp(c[i], 0.0F, 1.0F) * 255.0F));
         text += kHex[byte / 16];
@@ -483,7 +483,7 @@ std::string choiceNames(const Setting& setting) {
 }
 
 std::string validValues(const Setting& s) {
-    const std::string range = readableText(s.min) + ".." + readableText(s.max);
+    std::string range = readableText(s.min) + ".." + readableText(s.max);
     switch (s.type) {
         case Bool:
             return "on or off";

@@ -111,7 +111,7 @@ QVariant settingToVariant(const Setting& s, const SettingValue& value, bool inde
             return QString::fromUtf8(name.data(), static_cast<qsizetype>(name.size()));
         }
         case SettingType::Color: {
-            const glm::vec3& c = std::get<glm::vec3>(value);
+            const auto& c = std::get<glm::vec3>(value);
             return QVariantList{static_cast<double>(c.r), static_cast<double>(c.g),
                                 static_cast<double>(c.b)};
         }
