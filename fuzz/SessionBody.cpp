@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The session target's body: separate because it needs the GUI library
-// (app/gui/Session.cpp); the others need only vv::meshio, vv::dicom and vv::vss.
+// The session target's body: separate because it needs the app's common
+// library (app/common/Session.cpp); the others need only vv::meshio, vv::dicom and vv::vss.
 #include <QByteArray>
 
 #include "FuzzBodies.h"
-#include "gui/Session.h"
+#include "common/Session.h"
 #include "vv/core/Error.h"
 
 namespace vv::fuzz {
@@ -17,7 +17,7 @@ Outcome feedSession(Bytes bytes) {
     const QByteArray json(reinterpret_cast<const char*>(bytes.data()),
                           static_cast<qsizetype>(bytes.size()));
     try {
-        static_cast<void>(gui::sessionFromJson(json, outcome.file));
+        static_cast<void>(app::sessionFromJson(json, outcome.file));
         outcome.loaded = true;
     } catch (const vv::Error& e) {
         outcome.error = e.what();

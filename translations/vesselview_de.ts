@@ -21,6 +21,149 @@
     </message>
 </context>
 <context>
+    <name>vv::app::Settings</name>
+    <message>
+        <source>Show the Void Space Surface</source>
+        <translation>Void Space Surface anzeigen</translation>
+    </message>
+    <message>
+        <source>Power p</source>
+        <translation>Exponent p</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Tolerance</source>
+        <translation>Toleranz</translation>
+    </message>
+    <message>
+        <source>Step k</source>
+        <translation>Schrittweite k</translation>
+    </message>
+    <message>
+        <source>Colour scale</source>
+        <translation>Farbskala</translation>
+    </message>
+    <message>
+        <source>Iso-lines</source>
+        <translation>Isolinien</translation>
+    </message>
+    <message>
+        <source>Iso-line width</source>
+        <translation>Breite der Isolinien</translation>
+    </message>
+    <message>
+        <source>Iso-line strength</source>
+        <translation>Stärke der Isolinien</translation>
+    </message>
+    <message>
+        <source>Lighting</source>
+        <translation>Beleuchtung</translation>
+    </message>
+    <message>
+        <source>VSS opacity</source>
+        <translation>Deckkraft der VSS</translation>
+    </message>
+    <message>
+        <source>Depth range</source>
+        <translation>Tiefenbereich</translation>
+    </message>
+    <message>
+        <source>Near depth</source>
+        <translation>Nahe Tiefe</translation>
+    </message>
+    <message>
+        <source>Far depth</source>
+        <translation>Ferne Tiefe</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Umgebungsverdeckung</translation>
+    </message>
+    <message>
+        <source>AO radius</source>
+        <translation>AO-Radius</translation>
+    </message>
+    <message>
+        <source>AO strength</source>
+        <translation>AO-Stärke</translation>
+    </message>
+    <message>
+        <source>Vessel cue</source>
+        <translation>Gefäß-Tiefenhinweis</translation>
+    </message>
+    <message>
+        <source>Fog strength</source>
+        <translation>Nebelstärke</translation>
+    </message>
+    <message>
+        <source>Fresnel exponent</source>
+        <translation>Fresnel-Exponent</translation>
+    </message>
+    <message>
+        <source>Array</source>
+        <translation>Datenfeld</translation>
+    </message>
+    <message>
+        <source>Colour map</source>
+        <translation>Farbtabelle</translation>
+    </message>
+    <message>
+        <source>Colour range minimum</source>
+        <translation>Minimum des Farbbereichs</translation>
+    </message>
+    <message>
+        <source>Colour range maximum</source>
+        <translation>Maximum des Farbbereichs</translation>
+    </message>
+    <message>
+        <source>No-data colour</source>
+        <translation>Farbe ohne Daten</translation>
+    </message>
+    <message>
+        <source>Legend title</source>
+        <translation>Legendentitel</translation>
+    </message>
+    <message>
+        <source>Vessel colour</source>
+        <translation>Gefäßfarbe</translation>
+    </message>
+    <message>
+        <source>Light azimuth</source>
+        <translation>Azimut des Lichts</translation>
+    </message>
+    <message>
+        <source>Light elevation</source>
+        <translation>Elevation des Lichts</translation>
+    </message>
+    <message>
+        <source>Opacity</source>
+        <translation>Deckkraft</translation>
+    </message>
+    <message>
+        <source>Object colour</source>
+        <translation>Objektfarbe</translation>
+    </message>
+    <message>
+        <source>Background</source>
+        <translation>Hintergrund</translation>
+    </message>
+    <message>
+        <source>Show legends</source>
+        <translation>Legenden anzeigen</translation>
+    </message>
+    <message>
+        <source>Anti-aliasing (FXAA)</source>
+        <translation>Kantenglättung (FXAA)</translation>
+    </message>
+    <message>
+        <source>Colour-map bins</source>
+        <translation>Farbstufen</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ExportImageDialog</name>
     <message>
         <source>Export Image</source>
@@ -997,10 +1140,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Farbe</translation>
     </message>
     <message>
-        <source>Opacity</source>
-        <translation>Deckkraft</translation>
-    </message>
-    <message>
         <source>Array</source>
         <translation>Datenfeld</translation>
     </message>
@@ -1076,18 +1215,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Ein Tiefenhinweis auf den Gefäßen selbst, zum Vergleich mit der VSS</translation>
     </message>
     <message>
-        <source>Vessel cue:</source>
-        <translation>Gefäß-Tiefenhinweis:</translation>
-    </message>
-    <message>
-        <source>Fog strength:</source>
-        <translation>Nebelstärke:</translation>
-    </message>
-    <message>
-        <source>Fresnel exponent:</source>
-        <translation>Fresnel-Exponent:</translation>
-    </message>
-    <message>
         <source>Colour behind the vessels and the VSS</source>
         <translation>Farbe hinter den Gefäßen und der VSS</translation>
     </message>
@@ -1096,20 +1223,8 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Benutzerdefiniert…</translation>
     </message>
     <message>
-        <source>Background:</source>
-        <translation>Hintergrund:</translation>
-    </message>
-    <message>
-        <source>Vessel colour:</source>
-        <translation>Gefäßfarbe:</translation>
-    </message>
-    <message>
         <source>Camera:</source>
         <translation>Kamera:</translation>
-    </message>
-    <message>
-        <source>Show legends</source>
-        <translation>Legenden anzeigen</translation>
     </message>
     <message>
         <source>Depth and parameter legends over the view</source>
@@ -1294,24 +1409,12 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Keines</translation>
     </message>
     <message>
-        <source>Array:</source>
-        <translation>Datenfeld:</translation>
-    </message>
-    <message>
-        <source>Colour map:</source>
-        <translation>Farbtabelle:</translation>
-    </message>
-    <message>
         <source>Continuous</source>
         <translation>Stufenlos</translation>
     </message>
     <message>
         <source> bins</source>
         <translation> Stufen</translation>
-    </message>
-    <message>
-        <source>Discrete:</source>
-        <translation>Diskret:</translation>
     </message>
     <message>
         <source>Auto (full range)</source>
@@ -1332,14 +1435,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Min / max:</source>
         <translation>Min. / max.:</translation>
-    </message>
-    <message>
-        <source>No-data colour:</source>
-        <translation>Farbe ohne Daten:</translation>
-    </message>
-    <message>
-        <source>Legend title:</source>
-        <translation>Legendentitel:</translation>
     </message>
     <message>
         <source>No data loaded</source>
@@ -1667,16 +1762,8 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
 <context>
     <name>vv::gui::panels::VssPanel</name>
     <message>
-        <source>Show the Void Space Surface</source>
-        <translation>Void Space Surface anzeigen</translation>
-    </message>
-    <message>
         <source>A depth-coded surface in the space between the vessels</source>
         <translation>Eine tiefenkodierte Fläche im Raum zwischen den Gefäßen</translation>
-    </message>
-    <message>
-        <source>Power p:</source>
-        <translation>Exponent p:</translation>
     </message>
     <message>
         <source>Fast (with tolerance)</source>
@@ -1691,56 +1778,12 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Schrittweite der Publikation</translation>
     </message>
     <message>
-        <source>Solver:</source>
-        <translation>Löser:</translation>
-    </message>
-    <message>
-        <source> / 255</source>
-        <translation> / 255</translation>
-    </message>
-    <message>
-        <source>Tolerance:</source>
-        <translation>Toleranz:</translation>
-    </message>
-    <message>
-        <source>Step k:</source>
-        <translation>Schrittweite k:</translation>
-    </message>
-    <message>
-        <source>Colour scale:</source>
-        <translation>Farbskala:</translation>
-    </message>
-    <message>
         <source>None</source>
         <translation>Keine</translation>
     </message>
     <message>
-        <source>Iso-lines:</source>
-        <translation>Isolinien:</translation>
-    </message>
-    <message>
-        <source>Iso-line strength:</source>
-        <translation>Stärke der Isolinien:</translation>
-    </message>
-    <message>
-        <source>Lighting:</source>
-        <translation>Beleuchtung:</translation>
-    </message>
-    <message>
-        <source>Ambient occlusion</source>
-        <translation>Umgebungsverdeckung</translation>
-    </message>
-    <message>
-        <source>AO radius:</source>
-        <translation>AO-Radius:</translation>
-    </message>
-    <message>
         <source>Turn the Void Space Surface on to change this</source>
         <translation>Zum Ändern die Void Space Surface einschalten</translation>
-    </message>
-    <message>
-        <source>Interpolation power p (logarithmic, 0.25 to 64)</source>
-        <translation>Interpolationsexponent p (logarithmisch, 0,25 bis 64)</translation>
     </message>
     <message>
         <source>Interpolation power p: higher values follow the nearest vessel more closely</source>
@@ -1843,14 +1886,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Fest</translation>
     </message>
     <message>
-        <source>Depth range:</source>
-        <translation>Tiefenbereich:</translation>
-    </message>
-    <message>
-        <source> mm</source>
-        <translation> mm</translation>
-    </message>
-    <message>
         <source>Near / far:</source>
         <translation>Nah / fern:</translation>
     </message>
@@ -1865,6 +1900,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Choose a fixed depth range first</source>
         <translation>Zuerst einen festen Tiefenbereich wählen</translation>
+    </message>
+    <message>
+        <source>Interpolation power p (logarithmic, %L1 to %L2)</source>
+        <translation>Interpolationsexponent p (logarithmisch, %L1 bis %L2)</translation>
     </message>
 </context>
 </TS>

@@ -6,19 +6,18 @@
 // Error against run time of the VSS solvers (bench/VssBenchmark.h).
 #include <QCoreApplication>
 #include <QGuiApplication>
-#include <charconv>
 #include <cmath>
-#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <ostream>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include "VssBenchmark.h"
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
+#include "cli/OutputFiles.h"
 #include "vv/core/Error.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
@@ -46,75 +45,25 @@ struct BenchArguments {
     bool quick = false;
 };
 
-std::vector<std::string> splitList(const std::string& text, const std::string& what) {
-    std::vector<std::string> items;
-    std::size_t start = 0;
-    while (true) {
-        const std::size_t comma = text.find(',', start);
-        const std::string item =
-            text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-        if (item.empty()) {
-            throw UsageError("bench: " + what + " must be a comma-separated list, got '" + text +
-                             "'");
-        }
-        items.push_back(item);
-        if (comma == std::string::npos) {
-            return items;
-        }
-        start = comma + 1;
-    }
-}
-
 double parsePositive(const std::string& text, const std::string& what) {
-    double value = 0.0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value) ||
-        !(value > 0.0)) {
-        throw UsageError("bench: " + what + " must be a finite number > 0, got '" + text + "'");
+    const double value = parseNumber(text, "bench: " + what);
+    if (!(value > 0.0)) {
+        throw UsageError("bench: " + what + " must be > 0, got '" + text + "'");
     }
     return value;
-}
-
-int parseCount(const std::string& text, const std::string& what, int lo, int hi) {
-    int value = 0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (text.empty() || ec != std::errc() || ptr != end || value < lo || value > hi) {
-        throw UsageError("bench: " + what + " must be a whole number in " + std::to_string(lo) +
-                         ".." + std::to_string(hi) + ", got '" + text + "'");
-    }
-    return value;
-}
-
-std::pair<int, int> parseSize(const std::string& text) {
-    const auto x = text.find_first_of("xX");
-    if (x == std::string::npos) {
-        throw UsageError("bench: --size must be WIDTHxHEIGHT (e.g. 1280x720), got '" + text + "'");
-    }
-    return {parseCount(text.substr(0, x), "--size width", 1, 8192),
-            parseCount(text.substr(x + 1), "--size height", 1, 8192)};
 }
 
 BenchArguments parse(const std::vector<std::string>& args) {
     BenchArguments parsed;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw UsageError("bench: " + a + " needs a value");
-            }
-            return args[++i];
-        };
+    for (Arguments arg("bench", args); arg.next();) {
+        const std::string& a = arg.name();
         if (a == "--mesh") {
-            parsed.mesh = std::filesystem::path(value());
+            parsed.mesh = arg.path();
         } else if (a == "--size") {
-            parsed.size = parseSize(value());
+            parsed.size = parseSize(arg.value(), "bench: --size", 1, 8192);
         } else if (a == "--views") {
             parsed.views.clear();
-            for (const std::string& name : splitList(value(), "--views")) {
+            for (const std::string& name : splitList(arg.value(), "bench: --views")) {
                 const auto view = render::viewPresetFromName(name);
                 if (!view) {
                     throw UsageError("bench: unknown view '" + name +
@@ -124,34 +73,29 @@ BenchArguments parse(const std::vector<std::string>& args) {
             }
         } else if (a == "--p") {
             parsed.powers.clear();
-            for (const std::string& p : splitList(value(), "--p")) {
+            for (const std::string& p : splitList(arg.value(), "bench: --p")) {
                 parsed.powers.push_back(parsePositive(p, "--p"));
             }
         } else if (a == "--runs") {
-            parsed.runs = parseCount(value(), "--runs", 1, 1000);
+            parsed.runs = parseWholeNumber(arg.value(), "bench: --runs", 1, 1000);
         } else if (a == "--reference-runs") {
-            parsed.referenceRuns = parseCount(value(), "--reference-runs", 1, 1000);
+            parsed.referenceRuns =
+                parseWholeNumber(arg.value(), "bench: --reference-runs", 1, 1000);
         } else if (a == "--solvers") {
-            parsed.solvers = splitList(value(), "--solvers");
+            parsed.solvers = splitList(arg.value(), "bench: --solvers");
         } else if (a == "--tolerances") {
             parsed.tolerances255.clear();
-            for (const std::string& t : splitList(value(), "--tolerances")) {
+            for (const std::string& t : splitList(arg.value(), "bench: --tolerances")) {
                 parsed.tolerances255.push_back(parsePositive(t, "--tolerances"));
             }
         } else if (a == "--out") {
-            parsed.out = value();
-            if (parsed.out.empty()) {
-                throw UsageError("bench: --out needs a folder");
-            }
+            parsed.out = arg.path();
         } else if (a == "--depth-out") {
-            parsed.depthOut = std::filesystem::path(value());
-            if (parsed.depthOut->empty()) {
-                throw UsageError("bench: --depth-out needs a folder");
-            }
+            parsed.depthOut = arg.path();
         } else if (a == "--quick") {
             parsed.quick = true;
         } else {
-            throw UsageError("bench: unknown argument '" + a + "'");
+            arg.fail("unknown argument '" + arg.current() + "'");
         }
     }
     return parsed;
@@ -174,7 +118,8 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
         if (name == "reference" || name == "brute") {
             settings.push_back(byLabel(name));
         } else if (name.rfind("step", 0) == 0) {
-            const int k = parseCount(name.substr(4), "the step of '" + name + "'", 1, 1000000);
+            const int k =
+                parseWholeNumber(name.substr(4), "bench: the step of '" + name + "'", 1, 1000000);
             bench::SolverSetting s;
             s.label = "step " + std::to_string(k);
             s.series = s.label;
@@ -207,15 +152,6 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
     return settings;
 }
 
-/// Makes `folder` when missing; OutputError when it cannot be made or is a file.
-void ensureFolder(const std::filesystem::path& folder) {
-    std::error_code ec;
-    std::filesystem::create_directories(folder, ec);
-    if (!std::filesystem::is_directory(folder, ec)) {
-        throw OutputError(folder.string() + ": cannot write: not a folder and cannot be made");
-    }
-}
-
 }  // namespace
 
 int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -232,9 +168,9 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     options.log = [&err](std::string_view line) { err << "bench: " << line << "\n" << std::flush; };
 
     // Fail before the long run when the outputs cannot be written.
-    ensureFolder(parsed.out);
+    ensureOutputFolder(parsed.out);
     if (parsed.depthOut) {
-        ensureFolder(*parsed.depthOut);
+        ensureOutputFolder(*parsed.depthOut);
         options.depthOut = *parsed.depthOut;
     }
     ensureGuiApplication();

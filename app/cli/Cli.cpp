@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/Cli.h"
 
+#include <algorithm>
 #include <ostream>
+#include <string>
 
 #include "cli/ReportCommand.h"
+#include "common/SettingsSchema.h"
 #include "vv/Version.h"
 #include "vv/core/Error.h"
 
@@ -49,10 +52,17 @@ constexpr const char* kUsageText =
     "                                       (+x left, +y posterior, +z superior);\n"
     "                                       --depth-out writes the linear depth (PFM,\n"
     "                                       background +Inf) that `vss --depth` reads\n"
+    "  render --session F.vvs -o IMAGE.png [options as for render]\n"
+    "                                       what the GUI saved in the session: its files\n"
+    "                                       (DICOM: the stored series and segmentation),\n"
+    "                                       camera and display settings, as File > Export\n"
+    "                                       Image renders them; options after --session\n"
+    "                                       override it\n"
     "  report FILE -o REPORT.pdf [render options as for render] [--png IMAGE.png]\n"
     "         [--transparent] [--dicom-sc SC.dcm] [--dicom-pdf DOC.dcm] [--paper a4|letter]\n"
     "         [--title TEXT] [--note TEXT] [--second-view VIEW] [--below V] [--above V]\n"
     "         [--anonymise] [DICOM options as for render]\n"
+    "  report --session F.vvs -o REPORT.pdf [options as for report]\n"
     "  report --batch LIST.txt --out-dir DIR [--formats pdf,png,dicom-sc,dicom-pdf] [...]\n"
     "                                       PDF report (view at 300 dpi, legends, parameter\n"
     "                                       statistics per object with area below / above\n"
@@ -72,8 +82,68 @@ constexpr const char* kUsageText =
     "                                       vss-error-vs-time.png; demo tree by default)\n"
     "  --version, --help\n"
     "\n"
-    "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input,\n"
+    "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input\n"
+    "            (also a session naming a missing file or holding a bad value),\n"
     "            4 cannot write output\n";
+
+/// What a setting's option takes ("on|off", "N", "#rrggbb", the names).
+std::string metavar(const app::Setting& s) {
+    switch (s.type) {
+        case app::SettingType::Bool:
+            return "on|off";
+        case app::SettingType::Int:
+            return "N";
+        case app::SettingType::Real:
+            return "X";
+        case app::SettingType::Choice: {
+            std::string names = app::choiceNames(s);
+            std::replace(names.begin(), names.end(), ',', '|');
+            std::erase(names, ' ');
+            return names;
+        }
+        case app::SettingType::Color:
+            return "#rrggbb";
+        case app::SettingType::Text:
+            return "TEXT";
+    }
+    return {};
+}
+
+/// "Label: range unit, default value" of a setting's option.
+std::string settingSummary(const app::Setting& s) {
+    std::string text = s.label;
+    if (s.type == app::SettingType::Int || s.type == app::SettingType::Real) {
+        text += ": " + app::validValues(s) + (s.unit.empty() ? "" : " " + std::string(s.unit));
+    }
+    if (s.type != app::SettingType::Text) {
+        text += ", default " + app::settingText(s, app::defaultValue(s));
+    }
+    return text;
+}
+
+/// `--help`: every display setting with an option, from the settings schema.
+std::string settingsHelp() {
+    constexpr std::size_t kColumn = 39;
+    std::string text = "\ndisplay settings of render and report (sessions hold them too):\n";
+    for (const app::Setting& s : app::settingsSchema()) {
+        if (s.cliOption.empty()) {
+            continue;
+        }
+        std::string line = "  " + std::string(s.cliOption) + " ";
+        std::string summary = settingSummary(s);
+        if (s.key == "style.light[0]") {  // --light AZ,EL: two settings
+            line += "AZ,EL";
+        } else if (s.key == "style.light[1]") {
+            line.clear();
+        } else {
+            line += metavar(s);
+        }
+        line += line.size() + 1 > kColumn ? "\n" + std::string(kColumn, ' ')
+                                          : std::string(kColumn - line.size(), ' ');
+        text += line + summary + "\n";
+    }
+    return text;
+}
 
 }  // namespace
 
@@ -86,7 +156,7 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
     const std::vector<std::string> rest(args.begin() + 1, args.end());
     try {
         if (command == "--help" || command == "-h" || command == "help") {
-            out << kUsageText;
+            out << kUsageText << settingsHelp();
             return kOk;
         }
         if (command == "--version") {

@@ -15,7 +15,9 @@
 #include <system_error>
 #include <vector>
 
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
+#include "cli/OutputFiles.h"
 #include "vv/core/Error.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
@@ -49,24 +51,6 @@ std::uint64_t parseUnsigned(const std::string& option, const std::string& text) 
     const unsigned long long v = digits ? std::strtoull(text.c_str(), &end, 10) : 0;
     if (!digits || errno == ERANGE) {
         throw UsageError(option + " needs a whole number >= 0, not '" + text + "'");
-    }
-    return v;
-}
-
-int parseInt(const std::string& option, const std::string& text) {
-    const std::uint64_t v = parseUnsigned(option, text);
-    if (v > static_cast<std::uint64_t>(std::numeric_limits<int>::max())) {
-        throw UsageError(option + " is out of range: " + text);
-    }
-    return static_cast<int>(v);
-}
-
-double parseDouble(const std::string& option, const std::string& text) {
-    errno = 0;
-    char* end = nullptr;
-    const double v = std::strtod(text.c_str(), &end);
-    if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) {
-        throw UsageError(option + " needs a number, not '" + text + "'");
     }
     return v;
 }
@@ -108,50 +92,29 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     std::filesystem::path dicomFolder;
     vv::demo::DemoTreeOptions options;
     bool treeOptionGiven = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        // "--name value" or "--name=value"
-        std::string name = a;
-        std::string value;
-        bool hasValue = false;
-        if (const auto eq = a.find('='); a.rfind("--", 0) == 0 && eq != std::string::npos) {
-            name = a.substr(0, eq);
-            value = a.substr(eq + 1);
-            hasValue = true;
-        }
-        const auto takeValue = [&]() -> std::string {
-            if (hasValue) {
-                return value;
-            }
-            if (i + 1 >= args.size()) {
-                throw UsageError(name + " needs a value");
-            }
-            return args[++i];
-        };
+    for (Arguments arg("demo", args); arg.next();) {
+        const std::string& name = arg.name();
         if (name == "--help" || name == "-h") {
             out << kDemoUsage;
             return kOk;
         }
         if (name == "-o" || name == "--output") {
-            output = takeValue();
+            output = arg.value();
         } else if (name == "--dicom") {
-            dicomFolder = takeValue();
-            if (dicomFolder.empty()) {
-                throw UsageError("--dicom needs a folder");
-            }
+            dicomFolder = arg.path();
         } else if (name == "--seed") {
-            options.seed = parseUnsigned(name, takeValue());
+            options.seed = parseUnsigned(name, arg.value());
             treeOptionGiven = true;
         } else if (name == "--generations") {
-            options.generations = parseInt(name, takeValue());
+            options.generations = parseWholeNumber(arg.value(), name, 0);
             treeOptionGiven = true;
         } else if (name == "--voxel-size") {
-            options.voxelSizeMm = parseDouble(name, takeValue());
+            options.voxelSizeMm = parseNumber(arg.value(), name);
             treeOptionGiven = true;
-        } else if (!a.empty() && a[0] == '-') {
-            throw UsageError("unknown option '" + a + "' for demo");
+        } else if (arg.isOption()) {
+            arg.fail("unknown option '" + arg.current() + "'");
         } else {
-            throw UsageError("unexpected argument '" + a + "' for demo (the output goes after -o)");
+            arg.fail("unexpected argument '" + arg.current() + "' (the output goes after -o)");
         }
     }
     if (!dicomFolder.empty()) {
@@ -168,13 +131,7 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     }
 
     // Fail before the (slow) generation when the output folder is missing.
-    const std::filesystem::path folder =
-        output.has_parent_path() ? output.parent_path() : std::filesystem::path(".");
-    std::error_code ec;
-    if (!std::filesystem::is_directory(folder, ec)) {
-        throw OutputError(output.string() + ": cannot write: folder '" + folder.string() +
-                          "' does not exist");
-    }
+    checkOutputPath(output);
 
     // Out-of-range options throw InvalidArgumentError, which run() maps to a usage error.
     const vv::scene::Mesh mesh = vv::demo::generateDemoMesh(options);

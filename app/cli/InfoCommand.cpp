@@ -3,11 +3,9 @@
 // or which series a DICOM file / folder / DICOMDIR holds.
 #include <algorithm>
 #include <cctype>
-#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -16,7 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
+#include "cli/JsonWriter.h"
 #include "vv/core/Error.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/meshio/MeshLoader.h"
@@ -74,202 +74,21 @@ std::string humanNumber(double v) {
     return buffer;
 }
 
-/// Shortest round-trip-safe text for a float-sized value; "nan" / "inf" as such.
-std::string formatNumber(double v) {
-    if (!std::isfinite(v)) {
-        return std::isnan(v) ? "nan" : (v > 0 ? "inf" : "-inf");
-    }
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.9g", v);
-    // Prefer the shorter %g form when it reads back to the same float.
-    char shorter[32];
-    std::snprintf(shorter, sizeof shorter, "%g", v);
-    if (static_cast<float>(std::strtod(shorter, nullptr)) == static_cast<float>(v)) {
-        return shorter;
-    }
-    return buffer;
-}
-
-// ---------------------------------------------------------------------------
-// A tiny JSON writer: objects, arrays, strings, numbers, booleans, null.
-
-/// `text` as a JSON string literal: quotes, backslashes and control characters
-/// escaped; bytes that are not valid UTF-8 become U+FFFD so the output stays
-/// valid UTF-8.
-std::string jsonString(std::string_view text) {
-    std::string out = "\"";
-    const auto* s = reinterpret_cast<const unsigned char*>(text.data());
-    const std::size_t n = text.size();
-    for (std::size_t i = 0; i < n;) {
-        const unsigned char c = s[i];
-        if (c < 0x80) {
-            switch (c) {
-                case '"':
-                    out += "\\\"";
-                    break;
-                case '\\':
-                    out += "\\\\";
-                    break;
-                case '\b':
-                    out += "\\b";
-                    break;
-                case '\f':
-                    out += "\\f";
-                    break;
-                case '\n':
-                    out += "\\n";
-                    break;
-                case '\r':
-                    out += "\\r";
-                    break;
-                case '\t':
-                    out += "\\t";
-                    break;
-                default:
-                    if (c < 0x20 || c == 0x7F) {
-                        char buffer[8];
-                        std::snprintf(buffer, sizeof buffer, "\\u%04x", c);
-                        out += buffer;
-                    } else {
-                        out += static_cast<char>(c);
-                    }
-            }
-            ++i;
-            continue;
-        }
-        // Multi-byte UTF-8: validate length, continuation bytes, overlongs,
-        // surrogates and the U+10FFFF limit.
-        std::size_t length = 0;
-        std::uint32_t code = 0;
-        if (c >= 0xC2 && c <= 0xDF) {
-            length = 2;
-            code = c & 0x1FU;
-        } else if (c >= 0xE0 && c <= 0xEF) {
-            length = 3;
-            code = c & 0x0FU;
-        } else if (c >= 0xF0 && c <= 0xF4) {
-            length = 4;
-            code = c & 0x07U;
-        }
-        bool valid = length > 0 && i + length <= n;
-        for (std::size_t k = 1; valid && k < length; ++k) {
-            valid = (s[i + k] & 0xC0U) == 0x80U;
-            code = (code << 6U) | (s[i + k] & 0x3FU);
-        }
-        if (valid) {
-            valid = !(length == 3 && code < 0x800) && !(length == 4 && code < 0x10000) &&
-                    !(code >= 0xD800 && code <= 0xDFFF) && code <= 0x10FFFF;
-        }
-        if (valid) {
-            out.append(text.substr(i, length));
-            i += length;
-        } else {
-            out += "\\ufffd";
-            ++i;
-        }
-    }
-    out += '"';
-    return out;
-}
-
-class JsonWriter {
-  public:
-    explicit JsonWriter(std::ostream& out) : out_(out) {}
-
-    void beginObject() { open('{'); }
-    void endObject() { close('}'); }
-    void beginArray() { open('['); }
-    void endArray() { close(']'); }
-
-    void key(std::string_view name) {
-        separate();
-        out_ << jsonString(name) << ": ";
-        afterKey_ = true;
-    }
-    void string(std::string_view text) {
-        separate();
-        out_ << jsonString(text);
-    }
-    /// Non-finite numbers have no JSON form: they are written as null.
-    void number(double v) {
-        separate();
-        if (std::isfinite(v)) {
-            out_ << formatNumber(v);
-        } else {
-            out_ << "null";
-        }
-    }
-    void integer(std::uint64_t v) {
-        separate();
-        out_ << v;
-    }
-    void boolean(bool v) {
-        separate();
-        out_ << (v ? "true" : "false");
-    }
-    void null() {
-        separate();
-        out_ << "null";
-    }
-    void finish() { out_ << '\n'; }
-
-  private:
-    void open(char bracket) {
-        separate();
-        out_ << bracket;
-        first_.push_back(true);
-    }
-    void close(char bracket) {
-        const bool empty = first_.back();
-        first_.pop_back();
-        if (!empty) {
-            newline();
-        }
-        out_ << bracket;
-    }
-    void separate() {
-        if (afterKey_) {
-            afterKey_ = false;
-            return;
-        }
-        if (first_.empty()) {
-            return;
-        }
-        if (!first_.back()) {
-            out_ << ',';
-        }
-        first_.back() = false;
-        newline();
-    }
-    void newline() { out_ << '\n' << std::string(first_.size() * 2, ' '); }
-
-    std::ostream& out_;
-    std::vector<bool> first_;  // per open container: nothing written yet
-    bool afterKey_ = false;
-};
-
 void writeJsonArrays(JsonWriter& json, const std::vector<ArrayInfo>& arrays) {
     json.beginArray();
     for (const auto& a : arrays) {
         json.beginObject();
-        json.key("name");
-        json.string(a.name);
-        json.key("unit");
-        json.string(a.unit);
-        json.key("components");
-        json.integer(static_cast<std::uint64_t>(a.components));
-        json.key("integer");
-        json.boolean(a.integer);
-        json.key("from_cells");
-        json.boolean(a.fromCells);
-        json.key("range_of");
-        json.string(a.components == 1 ? "value" : "magnitude");
+        json.member("name", a.name);
+        json.member("unit", a.unit);
+        json.member("components", static_cast<std::uint64_t>(a.components));
+        json.member("integer", a.integer);
+        json.member("from_cells", a.fromCells);
+        json.member("range_of", a.components == 1 ? "value" : "magnitude");
         json.key("min");
         a.range ? json.number(a.range->first) : json.null();
         json.key("max");
         a.range ? json.number(a.range->second) : json.null();
-        json.key("non_finite");
-        json.integer(a.nonFinite);
+        json.member("non_finite", a.nonFinite);
         json.endObject();
     }
     json.endArray();
@@ -279,14 +98,10 @@ void writeMeshArray(JsonWriter& json, const std::vector<MeshInfo>& meshes) {
     json.beginArray();
     for (const auto& m : meshes) {
         json.beginObject();
-        json.key("file");
-        json.string(m.file);
-        json.key("name");
-        json.string(m.name);
-        json.key("vertices");
-        json.integer(m.vertices);
-        json.key("triangles");
-        json.integer(m.triangles);
+        json.member("file", m.file);
+        json.member("name", m.name);
+        json.member("vertices", m.vertices);
+        json.member("triangles", m.triangles);
         json.key("bounds_mm");
         json.beginObject();
         const std::pair<const char*, glm::vec3> corners[] = {
@@ -476,10 +291,8 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
     json.beginArray();
     for (const auto& d : dicoms) {
         json.beginObject();
-        json.key("path");
-        json.string(d.path);
-        json.key("files_examined");
-        json.integer(d.scan.filesExamined);
+        json.member("path", d.path);
+        json.member("files_examined", d.scan.filesExamined);
         json.key("patients");
         json.beginArray();
         for (const auto& p : d.scan.patients) {
@@ -488,36 +301,24 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
             json.beginArray();
             for (const auto& st : p.studies) {
                 json.beginObject();
-                json.key("study_instance_uid");
-                json.string(st.studyInstanceUid);
-                json.key("date");
-                json.string(st.date);
-                json.key("description");
-                json.string(st.description);
+                json.member("study_instance_uid", st.studyInstanceUid);
+                json.member("date", st.date);
+                json.member("description", st.description);
                 json.key("series");
                 json.beginArray();
                 for (const auto& s : st.series) {
                     json.beginObject();
-                    json.key("series_instance_uid");
-                    json.string(s.seriesInstanceUid);
-                    json.key("modality");
-                    json.string(s.modality);
-                    json.key("description");
-                    json.string(s.description);
+                    json.member("series_instance_uid", s.seriesInstanceUid);
+                    json.member("modality", s.modality);
+                    json.member("description", s.description);
                     json.key("series_number");
-                    s.seriesNumber ? json.number(*s.seriesNumber) : json.null();
-                    json.key("images");
-                    json.integer(s.imageCount);
-                    json.key("files");
-                    json.integer(s.files.size());
-                    json.key("multi_frame");
-                    json.boolean(s.multiFrame);
-                    json.key("rows");
-                    json.integer(static_cast<std::uint64_t>(s.rows));
-                    json.key("columns");
-                    json.integer(static_cast<std::uint64_t>(s.columns));
-                    json.key("mixed_sizes");
-                    json.boolean(s.mixedSizes);
+                    s.seriesNumber ? json.integer(*s.seriesNumber) : json.null();
+                    json.member("images", s.imageCount);
+                    json.member("files", s.files.size());
+                    json.member("multi_frame", s.multiFrame);
+                    json.member("rows", static_cast<std::uint64_t>(s.rows));
+                    json.member("columns", static_cast<std::uint64_t>(s.columns));
+                    json.member("mixed_sizes", s.mixedSizes);
                     json.key("pixel_spacing_mm");
                     if (s.pixelSpacing) {
                         json.beginArray();
@@ -529,16 +330,11 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
                     }
                     json.key("slice_spacing_mm");
                     s.sliceSpacing ? json.number(*s.sliceSpacing) : json.null();
-                    json.key("transfer_syntax");
-                    json.string(s.transferSyntaxName);
-                    json.key("transfer_syntax_uid");
-                    json.string(s.transferSyntaxUid);
-                    json.key("sop_class_uid");
-                    json.string(s.sopClassUid);
-                    json.key("loadable");
-                    json.boolean(s.unsupportedReason.empty());
-                    json.key("unsupported_reason");
-                    json.string(s.unsupportedReason);
+                    json.member("transfer_syntax", s.transferSyntaxName);
+                    json.member("transfer_syntax_uid", s.transferSyntaxUid);
+                    json.member("sop_class_uid", s.sopClassUid);
+                    json.member("loadable", s.unsupportedReason.empty());
+                    json.member("unsupported_reason", s.unsupportedReason);
                     json.endObject();
                 }
                 json.endArray();
@@ -552,27 +348,14 @@ void writeDicomJson(JsonWriter& json, const std::vector<DicomInfo>& dicoms) {
         json.beginArray();
         for (const auto& k : d.scan.skipped) {
             json.beginObject();
-            json.key("file");
-            json.string(k.file.string());
-            json.key("reason");
-            json.string(k.reason);
+            json.member("file", k.file.string());
+            json.member("reason", k.reason);
             json.endObject();
         }
         json.endArray();
         json.endObject();
     }
     json.endArray();
-}
-
-double parseScale(const std::string& text) {
-    const char* begin = text.c_str();
-    char* end = nullptr;
-    errno = 0;
-    const double v = std::strtod(begin, &end);
-    if (text.empty() || end != begin + text.size() || errno == ERANGE) {
-        throw UsageError("--scale needs a number, not '" + text + "'");
-    }
-    return v;
 }
 
 }  // namespace
@@ -582,33 +365,30 @@ int infoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     bool json = false;
     vv::meshio::MeshLoadOptions options;
     bool optionsEnded = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (optionsEnded || a.empty() || a[0] != '-' || a == "-") {
-            files.emplace_back(a);
-        } else if (a == "--") {
+    for (Arguments a("info", args); a.next();) {
+        const std::string& arg = a.current();
+        if (optionsEnded || !a.isOption()) {
+            files.emplace_back(arg);
+        } else if (arg == "--") {
             optionsEnded = true;
-        } else if (a == "--help" || a == "-h") {
+        } else if (arg == "--help" || arg == "-h") {
             out << kInfoUsage;
             return kOk;
-        } else if (a == "--json") {
+        } else if (arg == "--json") {
             json = true;
-        } else if (a == "--scale") {
-            if (i + 1 >= args.size()) {
-                throw UsageError("--scale needs a value");
-            }
-            options.scale = parseScale(args[++i]);
-        } else if (a.rfind("--scale=", 0) == 0) {
-            options.scale = parseScale(a.substr(8));
+        } else if (arg == "--scale") {
+            options.scale = parseNumber(a.value(), "--scale");
+        } else if (arg.rfind("--scale=", 0) == 0) {
+            options.scale = parseNumber(std::string_view(arg).substr(8), "--scale");
         } else {
-            throw UsageError("unknown option '" + a + "' for info");
+            a.fail("unknown option '" + arg + "'");
         }
     }
     if (files.empty()) {
         throw UsageError("info needs at least one mesh FILE or DICOM path");
     }
-    if (!std::isfinite(options.scale) || !(options.scale > 0.0)) {
-        throw UsageError("--scale must be a finite number > 0, not " + humanNumber(options.scale));
+    if (!(options.scale > 0.0)) {
+        throw UsageError("--scale must be > 0, not " + humanNumber(options.scale));
     }
 
     // Load everything first: a bad file fails the command before any output,

@@ -8,6 +8,11 @@
 //                            [--view far|medium|close|anterior|posterior|left|right|
 //                                    superior|inferior]
 //                            [--depth-out DEPTH.pfm] [--tile N]
+//                            [every display setting with an option in SettingsSchema.h]
+// vesselview-cli render --session F.vvs -o IMAGE.png [options]
+// --session renders what the GUI saved: its files (DICOM: with the stored
+// series and segmentation), camera and display settings, through
+// report::renderView as File > Export Image does; options after it override it.
 // --tile N renders in tiles of at most N pixels per side (small GPUs; the
 // image is the same, report::renderView); not with --timings / --depth-out.
 // FILE may be a mesh file or DICOM (a folder, a DICOMDIR, a file): the series is
@@ -18,13 +23,9 @@
 // depth source; no segmentation, no mesh): the iso value defaults to the lower
 // threshold (--threshold, else the modality's default range).
 // Needs OpenGL 4.1: a display (headless: xvfb-run -a with QT_QPA_PLATFORM=xcb).
-#include <QFile>
 #include <QGuiApplication>
 #include <QImage>
-#include <QString>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <memory>
 #include <optional>
@@ -33,12 +34,14 @@
 #include <utility>
 #include <vector>
 
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
+#include "cli/JsonWriter.h"
+#include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
-#include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/meshio/MeshLoader.h"
@@ -59,14 +62,13 @@ namespace vv::cli {
 namespace {
 
 struct RenderArguments : RenderOptionValues {
-    std::filesystem::path input;
+    std::filesystem::path input;  ///< FILE, or the --session file
     std::filesystem::path output;
     bool timings = false;
-    std::filesystem::path depthOutput;        ///< --depth-out; empty = none
-    segmentation::SceneSourceOptions source;  ///< DICOM: series, segmentation, surface
-    bool raycast = false;                     ///< --raycast: the volume as depth source
-    std::optional<float> iso;                 ///< --iso HU
-    int maxTileSide = 0;                      ///< --tile N; 0 = one piece
+    std::filesystem::path depthOutput;  ///< --depth-out; empty = none
+    bool raycast = false;               ///< --raycast: the volume as depth source
+    std::optional<float> iso;           ///< --iso HU
+    int maxTileSide = 0;                ///< --tile N; 0 = one piece
 };
 
 /// --raycast: a scene of the volume's eight corners, only for fitting the camera.
@@ -83,59 +85,45 @@ scene::Scene cornerScene(const scene::Volume& volume) {
     return scene;
 }
 
-/// Compact JSON number: finite values as is, others as null.
-std::string jsonNumber(double value) {
-    if (!std::isfinite(value)) {
-        return "null";
-    }
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.3f", value);
-    return buffer;
-}
-
 RenderArguments parse(const std::vector<std::string>& args) {
     RenderArguments parsed;
     bool haveInput = false;
     bool haveOutput = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw UsageError("render: " + a + " needs a value");
-            }
-            return args[++i];
-        };
-        if (a == "-o" || a == "--output") {
-            parsed.output = value();
+    for (Arguments a("render", args); a.next();) {
+        const std::string& name = a.name();
+        if (name == "-o" || name == "--output") {
+            parsed.output = a.value();
             haveOutput = true;
-        } else if (parseRenderOption(args, i, parsed, "render")) {
+        } else if (parseRenderOption(a, parsed)) {
             // a shared render option (RenderOptions.h)
-        } else if (a == "--depth-out") {
-            parsed.depthOutput = value();
-            if (parsed.depthOutput.empty()) {
-                throw UsageError("--depth-out needs a file name");
-            }
-        } else if (a == "--timings") {
+        } else if (name == "--depth-out") {
+            parsed.depthOutput = a.path();
+        } else if (name == "--timings") {
             parsed.timings = true;
-        } else if (a == "--tile") {
-            parsed.maxTileSide = parseTileSide(value());
-        } else if (a == "--raycast") {
+        } else if (name == "--tile") {
+            parsed.maxTileSide = parseTileSide(a.value());
+        } else if (name == "--raycast") {
             parsed.raycast = true;
-        } else if (a == "--iso") {
-            parsed.iso = static_cast<float>(parseDouble(value(), "--iso"));
-        } else if (segmentation::setSceneSourceOption(
-                       a, i + 1 < args.size() ? args[i + 1] : std::string(), parsed.source)) {
-            ++i;  // a DICOM option and its value
-        } else if (!a.empty() && a[0] == '-' && a != "-") {
-            throw UsageError("render: unknown option '" + a + "'");
+        } else if (name == "--iso") {
+            parsed.iso = static_cast<float>(parseNumber(a.value(), "--iso"));
+        } else if (a.isOption()) {
+            a.fail("unknown option '" + a.current() + "'");
         } else if (!haveInput) {
-            parsed.input = a;
+            parsed.input = a.current();
             haveInput = true;
         } else {
-            throw UsageError("render: takes one input file, got a second one '" + a + "'");
+            a.fail("takes one input file, got a second one '" + a.current() + "'");
         }
     }
-    if (!haveInput) {
+    if (parsed.session) {
+        if (haveInput) {
+            throw UsageError("render: --session names the input files; give no FILE with it");
+        }
+        if (parsed.raycast) {
+            throw UsageError("render: --raycast cannot be combined with --session");
+        }
+        parsed.input = parsed.sessionFile;
+    } else if (!haveInput) {
         throw UsageError("render: no input file");
     }
     if (!haveOutput || parsed.output.empty()) {
@@ -153,6 +141,44 @@ RenderArguments parse(const std::vector<std::string>& args) {
         throw UsageError("render: --depth-out with --raycast needs the VSS on");
     }
     return parsed;
+}
+
+/// --timings: the passes of the last frame and their times, as one line of JSON.
+void writeTimings(std::ostream& out, render::OffscreenRenderer& renderer, const QImage& image) {
+    JsonWriter json(out, JsonWriter::Layout::OneLine);
+    json.beginObject();
+    json.member("width", image.width());
+    json.member("height", image.height());
+    json.key("passes");
+    json.beginArray();
+    const auto timings = renderer.lastTimings();
+    for (const auto& pass : renderer.lastPasses()) {
+        json.beginObject();
+        json.member("name", pass.name);
+        json.member("state", render::toString(pass.state));
+        for (const auto& t : timings) {
+            if (t.pass == pass.name) {
+                json.member("cpu_ms", t.cpuMilliseconds);
+                json.key("gpu_ms");
+                t.gpuMilliseconds ? json.number(*t.gpuMilliseconds) : json.null();
+            }
+        }
+        json.endObject();
+    }
+    json.endArray();
+    double total = 0.0;
+    for (const auto& t : timings) {
+        total += t.cpuMilliseconds;
+    }
+    json.member("total_cpu_ms", total);
+    const auto& status = renderer.vssStatus();
+    json.key("vss");
+    json.beginObject();
+    json.member("shown", status.shown);
+    json.member("solve_ms", status.solveMilliseconds);
+    json.endObject();
+    json.endObject();
+    json.finish();
 }
 
 }  // namespace
@@ -185,6 +211,8 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         iso = parsed.iso.value_or(parsed.source.segmentation.range
                                       ? parsed.source.segmentation.range->lower
                                       : segmentation::defaultThresholdRange(*volume).lower);
+    } else if (parsed.session) {
+        scene = loadSessionInput(parsed, &source);
     } else {
         scene = segmentation::loadSceneSource(parsed.input, parsed.source, {}, &source);
     }
@@ -199,7 +227,17 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     render::OffscreenRenderer renderer;
     QImage image;
     int tiles = 1;
-    if (parsed.maxTileSide > 0) {
+    if (parsed.session) {
+        // Exactly what the GUI's File > Export Image gives at this size:
+        // report::renderView, the legends scaled with the image.
+        report::ViewExportOptions exported;
+        exported.render = options;
+        exported.legends = options.legends;
+        exported.maxTileSide = parsed.maxTileSide;
+        report::RenderedView view = report::renderView(renderer, scene, exported);
+        image = std::move(view.image);
+        tiles = view.tiles;
+    } else if (parsed.maxTileSide > 0) {
         report::ViewExportOptions tiled;
         tiled.render = options;
         tiled.legends = false;  // painted below as render() paints them
@@ -230,44 +268,12 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         }
     }
 
-    try {
-        writeAtomically(parsed.output, [&](const std::filesystem::path& temporary) {
-            // The temporary name has no .png suffix: the format is explicit.
-            if (!image.save(QFile::decodeName(temporary.c_str()), "PNG")) {
-                throw IoError(parsed.output, "cannot write the PNG image");
-            }
-        });
-    } catch (const IoError& e) {
-        throw OutputError(e.what());
-    }
+    writePngOutput(parsed.output, image);
 
     // With --timings, stdout carries only the JSON; the summary goes to stderr.
     std::ostream& summary = parsed.timings ? err : out;
     if (parsed.timings) {
-        const auto timings = renderer.lastTimings();
-        out << "{\"width\": " << image.width() << ", \"height\": " << image.height()
-            << ", \"passes\": [";
-        bool first = true;
-        for (const auto& pass : renderer.lastPasses()) {
-            out << (first ? "" : ", ") << "{\"name\": \"" << pass.name << "\", \"state\": \""
-                << render::toString(pass.state) << "\"";
-            for (const auto& t : timings) {
-                if (t.pass == pass.name) {
-                    out << ", \"cpu_ms\": " << jsonNumber(t.cpuMilliseconds) << ", \"gpu_ms\": "
-                        << (t.gpuMilliseconds ? jsonNumber(*t.gpuMilliseconds) : "null");
-                }
-            }
-            out << "}";
-            first = false;
-        }
-        double total = 0.0;
-        for (const auto& t : timings) {
-            total += t.cpuMilliseconds;
-        }
-        const auto& status = renderer.vssStatus();
-        out << "], \"total_cpu_ms\": " << jsonNumber(total)
-            << ", \"vss\": {\"shown\": " << (status.shown ? "true" : "false")
-            << ", \"solve_ms\": " << jsonNumber(status.solveMilliseconds) << "}}\n";
+        writeTimings(out, renderer, image);
     }
     if (volume) {
         summary << "ray cast series " << source.seriesInstanceUid << " (" << source.volumeDims.x
@@ -286,6 +292,11 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         }
         summary << "\n";
     }
+    if (parsed.session) {
+        summary << "session " << parsed.sessionFile.string() << ": " << parsed.session->files.size()
+                << " file(s), " << scene.meshes.size() << " mesh(es), its camera"
+                << (parsed.sessionCamera ? "" : " replaced by --view") << "\n";
+    }
     summary << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
     if (tiles > 1) {
         summary << " in " << tiles << " tiles";
@@ -293,7 +304,8 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (options.style.array.empty()) {
         summary << ", no array";
     } else {
-        summary << ", " << options.style.array << " through " << colormaps::name(parsed.colorMap);
+        summary << ", " << options.style.array << " through "
+                << colormaps::name(options.style.colorMap);
         if (const auto range = renderer.lastRange()) {
             summary << " over [" << range->first << ", " << range->second << "]";
         } else {

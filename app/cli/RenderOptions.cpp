@@ -1,77 +1,64 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "cli/RenderOptions.h"
 
-#include <charconv>
-#include <cmath>
-#include <system_error>
+#include <algorithm>
+#include <array>
+#include <tuple>
 #include <utility>
 
 #include "cli/Cli.h"
-#include "vv/colormaps/DepthScale.h"
+#include "common/SettingsSchema.h"
 #include "vv/core/Error.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/report/ViewExport.h"
-#include "vv/vss/Solver.h"
 
 namespace vv::cli {
 
 namespace {
 
-std::pair<int, int> parseSize(const std::string& text) {
-    const auto x = text.find_first_of("xX");
-    if (x == std::string::npos) {
-        throw UsageError("--size must be WIDTHxHEIGHT (e.g. 1600x1200), got '" + text + "'");
+constexpr int kMaxSide = 16384;
+
+void readSetting(Arguments& a, const app::Setting& setting, app::DisplaySettings& settings) {
+    const std::string option = a.name();
+    const std::string& text = a.value();
+    try {
+        setting.field.set(settings, app::parseSettingText(setting, text));
+    } catch (const InvalidArgumentError& e) {
+        throw UsageError(option + " " + e.problem());
     }
-    const int w = parseInt(text.substr(0, x), "--size width");
-    const int h = parseInt(text.substr(x + 1), "--size height");
-    if (w < 1 || h < 1 || w > 16384 || h > 16384) {
-        throw UsageError("--size must be within 1x1..16384x16384, got '" + text + "'");
-    }
-    return {w, h};
 }
 
-glm::vec3 parseColor(const std::string& text) {
-    const bool ok = text.size() == 7 && text[0] == '#' &&
-                    text.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos;
-    if (!ok) {
-        throw UsageError("--background must be #rrggbb, got '" + text + "'");
+/// --session: every display setting the session holds, its files, DICOM
+/// options and camera. The settings sessions do not hold (FXAA) stay.
+void useSession(const std::filesystem::path& file, RenderOptionValues& values) {
+    app::Session session = app::loadSession(file);  // IoError, FormatError: exit code 3
+    const app::DisplaySettings before = static_cast<const app::DisplaySettings&>(values);
+    static_cast<app::DisplaySettings&>(values) = static_cast<const app::DisplaySettings&>(session);
+    for (const app::Setting& s : app::settingsSchema()) {
+        if (s.session == app::SessionForm::None && s.field.set != nullptr) {
+            s.field.set(values, s.field.get(before));
+        }
     }
-    const auto channel = [&](std::size_t at) {
-        return static_cast<float>(std::stoi(text.substr(at, 2), nullptr, 16)) / 255.0F;
-    };
-    return {channel(1), channel(3), channel(5)};
+    values.array = session.style.array;
+    values.arrayFromSession = true;
+    values.light = session.style.light;
+    values.view.reset();
+    values.viewName.clear();
+    values.sessionCamera = true;
+    values.source = session.dicom.value_or(segmentation::SceneSourceOptions{});
+    values.sessionFile = file;
+    values.session = std::move(session);
 }
 
-bool parseOnOff(const std::string& option, const std::string& v) {
-    if (v != "on" && v != "off") {
-        throw UsageError(option + " must be on or off, got '" + v + "'");
+std::string joined(const std::vector<std::string>& names) {
+    std::string text;
+    for (const auto& name : names) {
+        text += (text.empty() ? "" : ", ") + name;
     }
-    return v == "on";
+    return text.empty() ? "none" : text;
 }
 
 }  // namespace
-
-double parseDouble(const std::string& text, const std::string& what) {
-    double value = 0.0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end || !std::isfinite(value)) {
-        throw UsageError("invalid " + what + " '" + text + "'");
-    }
-    return value;
-}
-
-int parseInt(const std::string& text, const std::string& what) {
-    int value = 0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (ec != std::errc() || ptr != end) {
-        throw UsageError("invalid " + what + " '" + text + "'");
-    }
-    return value;
-}
 
 render::LightAngles parseLightAngles(const std::string& text) {
     const auto comma = text.find(',');
@@ -79,126 +66,76 @@ render::LightAngles parseLightAngles(const std::string& text) {
         throw UsageError("--light must be AZIMUTH,ELEVATION in degrees (e.g. -30,20), got '" +
                          text + "'");
     }
-    render::LightAngles angles;
-    angles.azimuth = static_cast<float>(parseDouble(text.substr(0, comma), "--light azimuth"));
-    angles.elevation = static_cast<float>(parseDouble(text.substr(comma + 1), "--light elevation"));
-    if (std::abs(angles.azimuth) > 180.0F || std::abs(angles.elevation) > 90.0F) {
-        throw UsageError(
-            "--light needs an azimuth within -180..180 and an elevation within -90..90, got '" +
-            text + "'");
+    app::DisplaySettings parsed;
+    const std::array<std::pair<const char*, std::string>, 2> parts{
+        {{"style.light[0]", text.substr(0, comma)}, {"style.light[1]", text.substr(comma + 1)}}};
+    for (const auto& [key, part] : parts) {
+        const app::Setting& setting = app::setting(key);
+        try {
+            setting.field.set(parsed, app::parseSettingText(setting, part));
+        } catch (const InvalidArgumentError& e) {
+            throw UsageError("--light: the " + std::string(setting.label) + " " + e.problem() +
+                             " (in '" + text + "')");
+        }
     }
-    return angles;
+    return parsed.style.light;
+}
+
+void parseSettingValue(Arguments& args, std::string_view key, app::DisplaySettings& settings) {
+    readSetting(args, app::setting(key), settings);
 }
 
 int parseTileSide(const std::string& text) {
-    const int side = parseInt(text, "--tile");
-    if (side < report::kMinTileSide) {
-        throw UsageError("--tile must be at least " + std::to_string(report::kMinTileSide) +
-                         " pixels, got '" + text + "'");
-    }
-    return side;
+    return parseWholeNumber(text, "--tile", report::kMinTileSide);
 }
 
-bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
-                       RenderOptionValues& parsed, const std::string& command) {
-    const std::string& a = args[i];
-    const auto value = [&]() -> const std::string& {
-        if (i + 1 >= args.size()) {
-            throw UsageError(command + ": " + a + " needs a value");
-        }
-        return args[++i];
-    };
-    if (a == "--size") {
-        const auto [w, h] = parseSize(value());
-        parsed.width = w;
-        parsed.height = h;
-    } else if (a == "--array") {
-        const std::string& name = value();
-        parsed.array = (name == "none" || name == "None" || name.empty()) ? "" : name;
-    } else if (a == "--colormap") {
-        const std::string& name = value();
-        const auto map = colormaps::colorMapFromName(name);
-        if (!map) {
-            std::string known;
-            for (const auto m : colormaps::allColorMaps()) {
-                known += (known.empty() ? "" : ", ") + std::string(colormaps::name(m));
-            }
-            throw UsageError("unknown colour map '" + name + "' (known: " + known + ")");
-        }
-        parsed.colorMap = *map;
-    } else if (a == "--bins") {
-        const int n = parseInt(value(), "--bins");
-        if (n != 0 && (n < 2 || n > colormaps::kMaxBins)) {
-            throw UsageError("--bins must be 0 (continuous) or within 2.." +
-                             std::to_string(colormaps::kMaxBins) + ", got " + args[i]);
-        }
-        parsed.bins = n;
-    } else if (a == "--cue") {
-        const std::string& v = value();
-        const auto cue = render::vesselCueFromName(v);
-        if (!cue) {
-            throw UsageError("unknown vessel cue '" + v +
-                             "' (known: none, vessel-cd, vessel-pcd, fog, fresnel)");
-        }
-        parsed.cue.cue = *cue;
-    } else if (a == "--legends") {
-        parsed.legends = parseOnOff(a, value());
-    } else if (a == "--background") {
-        parsed.background = parseColor(value());
-    } else if (a == "--ao" || a == "--aa") {
-        (a == "--ao" ? parsed.ao : parsed.aa) = parseOnOff(a, value());
-    } else if (a == "--vss") {
-        parsed.vss.enabled = parseOnOff(a, value());
-    } else if (a == "--scale") {
-        const std::string& v = value();
-        const auto scale = colormaps::depthScaleFromName(v);
-        if (!scale) {
-            throw UsageError("unknown depth scale '" + v + "' (known: cd, pcd, dmd)");
-        }
-        parsed.vss.scale = *scale;
-    } else if (a == "--p") {
-        const double p = parseDouble(value(), "--p");
-        if (!(p > 0.0) || p > 64.0) {
-            throw UsageError("--p must be within (0, 64], got " + args[i]);
-        }
-        parsed.vss.solver.p = p;
-    } else if (a == "--isolines") {
-        const int n = parseInt(value(), "--isolines");
-        if (n < 0 || n > 1000) {
-            throw UsageError("--isolines must be within 0..1000, got " + args[i]);
-        }
-        parsed.vss.isoLines = n;
-    } else if (a == "--solver") {
-        try {
-            parsed.vss.solver.kind = vss::parseSolverKind(value());
-        } catch (const InvalidArgumentError&) {
-            throw UsageError("unknown solver '" + args[i] +
-                             "' (known: reference, brute, step, fast)");
-        }
-    } else if (a == "--tolerance") {
-        const double t = parseDouble(value(), "--tolerance");
-        if (!(t > 0.0)) {
-            throw UsageError("--tolerance must be > 0, got " + args[i]);
-        }
-        parsed.vss.solver.tolerance = t;
-    } else if (a == "--view") {
-        const std::string& name = value();
-        parsed.view = render::namedViewFromName(name);
-        if (!parsed.view) {
-            throw UsageError("unknown view '" + name + "' (known: " + render::namedViewNames() +
+bool parseRenderOption(Arguments& a, RenderOptionValues& values) {
+    const std::string& name = a.name();
+    if (name == "--size") {
+        std::tie(values.width, values.height) = parseSize(a.value(), "--size", 1, kMaxSide);
+    } else if (name == "--array") {
+        const std::string& array = a.value();
+        values.array = (array == "none" || array == "None" || array.empty()) ? "" : array;
+        values.arrayFromSession = false;
+    } else if (name == "--light") {
+        values.light = parseLightAngles(a.value());
+    } else if (name == "--view") {
+        const std::string& view = a.value();
+        values.view = render::namedViewFromName(view);
+        if (!values.view) {
+            throw UsageError("unknown view '" + view + "' (known: " + render::namedViewNames() +
                              ")");
         }
-        parsed.viewName = name;
-    } else if (a == "--light") {
-        parsed.light = parseLightAngles(value());
+        values.viewName = view;
+        values.sessionCamera = false;
+    } else if (name == "--session") {
+        useSession(a.path(), values);
+    } else if (segmentation::setSceneSourceOption(name, a.peekValue(), values.source)) {
+        a.takeValue();  // a DICOM option and its value
+    } else if (const app::Setting* setting = app::settingForOption(name)) {
+        readSetting(a, *setting, values);  // a display setting's own option ("--p 4")
     } else {
         return false;
     }
     return true;
 }
 
+bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
+                       RenderOptionValues& values, const std::string& command) {
+    Arguments a(command, args, i);
+    a.next();
+    const bool parsed = parseRenderOption(a, values);
+    if (parsed) {
+        i = a.position();
+    }
+    return parsed;
+}
+
 render::Camera cameraFor(const RenderOptionValues& values, const scene::Scene& scene, int width,
                          int height) {
+    if (values.session && values.sessionCamera) {
+        return app::sessionCamera(*values.session, scene.bounds(), width, height);
+    }
     render::Camera camera;
     if (values.view) {
         camera =
@@ -210,6 +147,13 @@ render::Camera cameraFor(const RenderOptionValues& values, const scene::Scene& s
     return camera;
 }
 
+scene::Scene loadSessionInput(const RenderOptionValues& values,
+                              segmentation::SceneSourceReport* report) {
+    app::Session session = values.session.value();
+    session.dicom = values.source;  // the session's, unless options after --session changed it
+    return app::loadSessionScene(session, values.sessionFile, {}, report);
+}
+
 render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
                                           const scene::Scene& scene,
                                           const std::filesystem::path& input) {
@@ -217,38 +161,30 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
     options.width = values.width;
     options.height = values.height;
     options.background = values.background;
-    options.style.colorMap = values.colorMap;
-    options.style.bins = values.bins;
+    options.style = values.style;
     options.style.light = values.light;
+    options.style.array = values.array.value_or(render::defaultArrayName(scene));
     options.cue = values.cue;
     options.legends = values.legends;
     options.vss = values.vss;
-    options.ao.enabled = values.ao;
-    options.antialiasing = values.aa;
-    options.style.array = values.array.value_or(render::defaultArrayName(scene));
-    if (!options.style.array.empty() && !scene.meshes.empty() &&
-        scene.meshes.front().pointArray(options.style.array) == nullptr) {
-        std::string known;
-        for (const auto& name : render::pointArrayNames(scene)) {
-            known += (known.empty() ? "" : ", ") + name;
+    options.ao = values.ao;
+    options.antialiasing = values.antialiasing;
+    const std::string& array = options.style.array;
+    const auto known = render::pointArrayNames(scene);
+    if (values.session && values.arrayFromSession) {
+        // As the GUI: a mesh without the array shows "no data"; none having it is an error.
+        if (!array.empty() && std::find(known.begin(), known.end(), array) == known.end()) {
+            throw FormatError(values.sessionFile, "session field 'view.style.array' names '" +
+                                                      array + "', which no mesh of its files has " +
+                                                      "(they have: " + joined(known) + ")");
         }
-        throw UsageError("'" + input.string() + "' has no point array '" + options.style.array +
-                         "' (it has: " + (known.empty() ? "none" : known) + ")");
+    } else if (!array.empty() && !scene.meshes.empty() &&
+               scene.meshes.front().pointArray(array) == nullptr) {
+        throw UsageError("'" + input.string() + "' has no point array '" + array +
+                         "' (it has: " + joined(known) + ")");
     }
     options.camera = cameraFor(values, scene, values.width, values.height);
     return options;
-}
-
-void checkOutputPath(const std::filesystem::path& output) {
-    std::error_code ec;
-    const std::filesystem::path folder = output.has_parent_path() ? output.parent_path() : ".";
-    if (!std::filesystem::is_directory(folder, ec)) {
-        throw OutputError(output.string() + ": cannot write: folder '" + folder.string() +
-                          "' does not exist");
-    }
-    if (std::filesystem::is_directory(output, ec)) {
-        throw OutputError(output.string() + ": cannot write: it is a folder");
-    }
 }
 
 }  // namespace vv::cli

@@ -4,10 +4,14 @@
 //                       [--anonymise] [--note TEXT] [--title TEXT] [--second-view VIEW]
 //                       [--paper a4|letter] [--below V] [--above V]
 //                       [DICOM options as for render: --series UID, --threshold LO:HI, ...]
+// vesselview-cli report --session F.vvs -o OUT.pdf [the same options]: the
+//                       session's files, camera and display settings (as render --session)
 // vesselview-cli report --batch LIST.txt --out-dir DIR [--formats pdf,png,dicom-sc,dicom-pdf]
 //                       [the same options]
 #include "cli/ReportCommand.h"
 
+#include <QFile>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -16,8 +20,10 @@
 #include <string>
 #include <vector>
 
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
+#include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
 #include "vv/core/Error.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -48,46 +54,29 @@ struct ReportArguments : RenderOptionValues {
     std::string secondViewName;
     report::PaperSize paper = report::PaperSize::A4;
     report::StatsThresholds thresholds;
-    segmentation::SceneSourceOptions source;  ///< DICOM: series, segmentation, surface
 };
 
 ReportArguments parse(const std::vector<std::string>& args) {
     ReportArguments parsed;
     bool haveInput = false;
     bool haveFormats = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw UsageError("report: " + a + " needs a value");
-            }
-            return args[++i];
-        };
-        const auto path = [&]() {
-            fs::path p = value();
-            if (p.empty()) {
-                throw UsageError("report: " + a + " needs a file name");
-            }
-            return p;
-        };
-        if (a == "-o" || a == "--output") {
-            parsed.outputs.pdf = path();
-        } else if (a == "--png") {
-            parsed.outputs.png = path();
-        } else if (a == "--dicom-sc") {
-            parsed.outputs.dicomSc = path();
-        } else if (a == "--dicom-pdf") {
-            parsed.outputs.dicomPdf = path();
-        } else if (a == "--batch") {
-            parsed.batch = path();
-        } else if (a == "--out-dir") {
-            parsed.outDir = path();
-        } else if (a == "--formats") {
+    for (Arguments a("report", args); a.next();) {
+        const std::string& name = a.name();
+        if (name == "-o" || name == "--output") {
+            parsed.outputs.pdf = a.path();
+        } else if (name == "--png") {
+            parsed.outputs.png = a.path();
+        } else if (name == "--dicom-sc") {
+            parsed.outputs.dicomSc = a.path();
+        } else if (name == "--dicom-pdf") {
+            parsed.outputs.dicomPdf = a.path();
+        } else if (name == "--batch") {
+            parsed.batch = a.path();
+        } else if (name == "--out-dir") {
+            parsed.outDir = a.path();
+        } else if (name == "--formats") {
             parsed.formats.clear();
-            std::string list = value() + ",";
-            for (std::size_t at = 0, comma = list.find(','); comma != std::string::npos;
-                 at = comma + 1, comma = list.find(',', at)) {
-                const std::string f = list.substr(at, comma - at);
+            for (const std::string& f : splitList(a.value(), "report: --formats")) {
                 if (f != "pdf" && f != "png" && f != "dicom-sc" && f != "dicom-pdf") {
                     throw UsageError("unknown report format '" + f +
                                      "' (known: pdf, png, dicom-sc, dicom-pdf)");
@@ -95,44 +84,49 @@ ReportArguments parse(const std::vector<std::string>& args) {
                 parsed.formats.insert(f);
             }
             haveFormats = true;
-        } else if (a == "--transparent") {
+        } else if (name == "--transparent") {
             parsed.transparent = true;
-        } else if (a == "--anonymise" || a == "--anonymize") {
+        } else if (name == "--anonymise" || name == "--anonymize") {
             parsed.anonymise = true;
-        } else if (a == "--note") {
-            parsed.note = value();
-        } else if (a == "--title") {
-            parsed.title = value();
-        } else if (a == "--second-view") {
-            parsed.secondViewName = value();
+        } else if (name == "--note") {
+            parsed.note = a.value();
+        } else if (name == "--title") {
+            parsed.title = a.value();
+        } else if (name == "--second-view") {
+            parsed.secondViewName = a.value();
             parsed.secondView = render::namedViewFromName(parsed.secondViewName);
             if (!parsed.secondView) {
                 throw UsageError("unknown view '" + parsed.secondViewName +
                                  "' (known: " + render::namedViewNames() + ")");
             }
-        } else if (a == "--paper") {
-            const auto paper = report::paperSizeFromName(value());
+        } else if (name == "--paper") {
+            const std::string& paperName = a.value();
+            const auto paper = report::paperSizeFromName(paperName);
             if (!paper) {
-                throw UsageError("--paper must be a4 or letter, got '" + args[i] + "'");
+                throw UsageError("--paper must be a4 or letter, got '" + paperName + "'");
             }
             parsed.paper = *paper;
-        } else if (a == "--below") {
-            parsed.thresholds.below = parseDouble(value(), "--below");
-        } else if (a == "--above") {
-            parsed.thresholds.above = parseDouble(value(), "--above");
-        } else if (parseRenderOption(args, i, parsed, "report")) {
+        } else if (name == "--below") {
+            parsed.thresholds.below = parseNumber(a.value(), "--below");
+        } else if (name == "--above") {
+            parsed.thresholds.above = parseNumber(a.value(), "--above");
+        } else if (parseRenderOption(a, parsed)) {
             // a shared render option (RenderOptions.h)
-        } else if (segmentation::setSceneSourceOption(
-                       a, i + 1 < args.size() ? args[i + 1] : std::string(), parsed.source)) {
-            ++i;  // a DICOM option and its value
-        } else if (!a.empty() && a[0] == '-' && a != "-") {
-            throw UsageError("report: unknown option '" + a + "'");
+        } else if (a.isOption()) {
+            a.fail("unknown option '" + a.current() + "'");
         } else if (!haveInput) {
-            parsed.input = a;
+            parsed.input = a.current();
             haveInput = true;
         } else {
-            throw UsageError("report: takes one input file, got a second one '" + a + "'");
+            a.fail("takes one input file, got a second one '" + a.current() + "'");
         }
+    }
+    if (parsed.session) {
+        if (haveInput || !parsed.batch.empty()) {
+            throw UsageError("report: --session names the input files; give no FILE or --batch");
+        }
+        parsed.input = parsed.sessionFile;
+        haveInput = true;
     }
     if (parsed.width > report::kMaxExportSide || parsed.height > report::kMaxExportSide ||
         static_cast<long long>(parsed.width) * parsed.height > report::kMaxExportPixels) {
@@ -189,16 +183,36 @@ void checkOutputs(const fs::path& input, const Outputs& outputs) {
     }
 }
 
+std::vector<fs::path> sessionFiles(const app::Session& session) {
+    std::vector<fs::path> files;
+    for (const QString& file : session.files) {
+        files.emplace_back(QFile::encodeName(file).toStdString());
+    }
+    return files;
+}
+
+/// The DICOM source of a session's files: the last one (as loadSessionScene reports it).
+fs::path lastDicomSource(const std::vector<fs::path>& files) {
+    const auto found = std::find_if(files.rbegin(), files.rend(), [](const fs::path& f) {
+        return segmentation::isDicomSource(f);
+    });
+    return found != files.rend() ? *found : fs::path();
+}
+
 /// Loads `input`, renders and writes every requested output (report::runReportJob).
 void produce(const ReportArguments& a, const fs::path& input, const Outputs& outputs,
              render::OffscreenRenderer& renderer, std::ostream& out) {
-    // A mesh file, or DICOM segmented into vessel surfaces.
+    // A mesh file, DICOM segmented into vessel surfaces, or a session's files.
     segmentation::SceneSourceReport loaded;
-    const scene::Scene scene = segmentation::loadSceneSource(input, a.source, {}, &loaded);
+    const scene::Scene scene = a.session
+                                   ? loadSessionInput(a, &loaded)
+                                   : segmentation::loadSceneSource(input, a.source, {}, &loaded);
     report::ReportJobOptions job;
     job.view = offscreenOptions(a, scene, input);
     job.viewCaption = report::namedViewCaption(a.viewName);
-    job.viewDescription = a.viewName.empty() ? "default (fitted)" : a.viewName;
+    job.viewDescription = !a.viewName.empty() ? a.viewName
+                          : a.sessionCamera   ? "as saved in the session"
+                                              : "default (fitted)";
     job.secondView = a.secondView;
     job.secondViewName = a.secondViewName;
     job.legends = a.legends;
@@ -208,10 +222,10 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
     job.findings = a.note;
     job.paper = a.paper;
     job.thresholds = a.thresholds;
-    job.source.files = {input};
+    job.source.files = a.session ? sessionFiles(*a.session) : std::vector<fs::path>{input};
     if (loaded.fromVolume || loaded.fromSegmentationObject) {
         // The exports join the source study (and its patient).
-        job.source.dicomPath = input;
+        job.source.dicomPath = a.session ? lastDicomSource(job.source.files) : input;
         job.source.seriesInstanceUid = loaded.seriesInstanceUid;
     }
     job.outputs = outputs;

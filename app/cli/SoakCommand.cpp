@@ -16,11 +16,12 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
-#include "cli/RenderOptions.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
@@ -87,41 +88,26 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     long every = 1000;
     long resizeEvery = 500;
     bool trim = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw UsageError("soak: " + a + " needs a value");
-            }
-            return args[++i];
-        };
+    for (Arguments arg("soak", args); arg.next();) {
+        const std::string& a = arg.name();
         if (a == "--help" || a == "-h") {
             out << kSoakUsage;
             return kOk;
         }
         if (a == "--mesh") {
-            meshFile = value();
+            meshFile = arg.path();
         } else if (a == "--size") {
-            const std::string& size = value();
-            const auto x = size.find('x');
-            if (x == std::string::npos) {
-                throw UsageError("soak: --size needs WxH, not '" + size + "'");
-            }
-            width = parseInt(size.substr(0, x), "--size width");
-            height = parseInt(size.substr(x + 1), "--size height");
-            if (width < 16 || height < 16 || width > 4096 || height > 4096) {
-                throw UsageError("soak: --size must be within 16..4096 per side");
-            }
+            std::tie(width, height) = parseSize(arg.value(), "soak: --size", 16, 4096);
         } else if (a == "--resize-every") {
-            resizeEvery = std::max(0, parseInt(value(), "--resize-every"));
+            resizeEvery = std::max(0, parseWholeNumber(arg.value(), "soak: --resize-every"));
         } else if (a == "--trim") {
             trim = true;
         } else if (a == "--every") {
-            every = std::max(1, parseInt(value(), "--every"));
-        } else if (!a.empty() && a[0] != '-' && frames == 0) {
-            frames = parseInt(a, "FRAMES");
+            every = std::max(1, parseWholeNumber(arg.value(), "soak: --every"));
+        } else if (!arg.isOption() && frames == 0) {
+            frames = parseWholeNumber(a, "soak: FRAMES");
         } else {
-            throw UsageError("soak: unexpected argument '" + a + "'");
+            arg.fail("unexpected argument '" + arg.current() + "'");
         }
     }
     if (frames < 101) {

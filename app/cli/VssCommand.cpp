@@ -2,23 +2,21 @@
 // vesselview-cli vss --depth IN.pfm [--p P] [--solver NAME] [--step K]
 //                    [--tolerance T] [--fixed-range A,B] -o OUT.pfm
 //                    [--labels OUT.png] [--stats]
-#include <QFile>
 #include <QImage>
-#include <charconv>
 #include <cmath>
 #include <cstdint>
 #include <filesystem>
-#include <iomanip>
-#include <limits>
 #include <optional>
 #include <ostream>
-#include <sstream>
 #include <string>
-#include <system_error>
 #include <vector>
 
+#include "cli/Arguments.h"
 #include "cli/Cli.h"
-#include "vv/core/AtomicFile.h"
+#include "cli/JsonWriter.h"
+#include "cli/OutputFiles.h"
+#include "cli/RenderOptions.h"
+#include "common/DisplaySettings.h"
 #include "vv/core/Error.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Pfm.h"
@@ -38,74 +36,49 @@ struct VssArguments {
     bool stats = false;
 };
 
-double parseNumber(const std::string& text, const std::string& what) {
-    double value = 0.0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (text.empty() || ec != std::errc() || ptr != end || !std::isfinite(value)) {
-        throw UsageError("vss: " + what + " must be a finite number, got '" + text + "'");
-    }
-    return value;
-}
-
-int parseCount(const std::string& text, const std::string& what) {
-    int value = 0;
-    const char* begin = text.data();
-    const char* end = begin + text.size();
-    const auto [ptr, ec] = std::from_chars(begin, end, value);
-    if (text.empty() || ec != std::errc() || ptr != end) {
-        throw UsageError("vss: " + what + " must be a whole number, got '" + text + "'");
-    }
-    return value;
-}
-
 VssArguments parse(const std::vector<std::string>& args) {
     VssArguments parsed;
     bool haveDepth = false;
     bool haveOutput = false;
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        const auto value = [&]() -> const std::string& {
-            if (i + 1 >= args.size()) {
-                throw UsageError("vss: " + a + " needs a value");
-            }
-            return args[++i];
-        };
-        if (a == "--depth") {
-            parsed.depth = value();
+    // p, solver, step and tolerance are the display settings' (SettingsSchema.h).
+    app::DisplaySettings settings;
+    for (Arguments a("vss", args); a.next();) {
+        const std::string& name = a.name();
+        if (name == "--depth") {
+            parsed.depth = a.value();
             haveDepth = true;
-        } else if (a == "-o" || a == "--output") {
-            parsed.output = value();
+        } else if (name == "-o" || name == "--output") {
+            parsed.output = a.value();
             haveOutput = true;
-        } else if (a == "--labels") {
-            parsed.labels = std::filesystem::path(value());
-        } else if (a == "--p") {
-            parsed.solver.p = parseNumber(value(), "--p");
-        } else if (a == "--solver") {
-            parsed.solver.kind = vss::parseSolverKind(value());
-        } else if (a == "--step") {
-            parsed.solver.step = parseCount(value(), "--step");
-        } else if (a == "--tolerance") {
-            parsed.solver.tolerance = parseNumber(value(), "--tolerance");
-        } else if (a == "--fixed-range") {
-            const std::string& text = value();
+        } else if (name == "--labels") {
+            parsed.labels = a.path();
+        } else if (name == "--p") {
+            parseSettingValue(a, "vss.p", settings);
+        } else if (name == "--solver") {
+            parseSettingValue(a, "vss.solver", settings);
+        } else if (name == "--step") {
+            parseSettingValue(a, "vss.step", settings);
+        } else if (name == "--tolerance") {
+            parseSettingValue(a, "vss.tolerance", settings);
+        } else if (name == "--fixed-range") {
+            const std::string& text = a.value();
             const auto comma = text.find(',');
             if (comma == std::string::npos) {
-                throw UsageError("vss: --fixed-range must be DMIN,DMAX, got '" + text + "'");
+                a.fail("--fixed-range must be DMIN,DMAX, got '" + text + "'");
             }
             parsed.range.mode = vss::RangeMode::Fixed;
-            parsed.range.dmin = parseNumber(text.substr(0, comma), "--fixed-range DMIN");
-            parsed.range.dmax = parseNumber(text.substr(comma + 1), "--fixed-range DMAX");
+            parsed.range.dmin = parseNumber(text.substr(0, comma), "vss: --fixed-range DMIN");
+            parsed.range.dmax = parseNumber(text.substr(comma + 1), "vss: --fixed-range DMAX");
             if (parsed.range.dmin > parsed.range.dmax) {
-                throw UsageError("vss: --fixed-range needs DMIN <= DMAX, got '" + text + "'");
+                a.fail("--fixed-range needs DMIN <= DMAX, got '" + text + "'");
             }
-        } else if (a == "--stats") {
+        } else if (name == "--stats") {
             parsed.stats = true;
         } else {
-            throw UsageError("vss: unknown argument '" + a + "'");
+            a.fail("unknown argument '" + a.current() + "'");
         }
     }
+    parsed.solver = settings.vss.solver;
     if (!haveDepth || parsed.depth.empty()) {
         throw UsageError("vss: no input depth image (--depth IN.pfm)");
     }
@@ -113,29 +86,6 @@ VssArguments parse(const std::vector<std::string>& args) {
         throw UsageError("vss: no output image (-o OUT.pfm)");
     }
     return parsed;
-}
-
-/// Throws OutputError when `file` can certainly not be written (no folder, a folder).
-void checkWritable(const std::filesystem::path& file) {
-    std::error_code ec;
-    const std::filesystem::path folder = file.has_parent_path() ? file.parent_path() : ".";
-    if (!std::filesystem::is_directory(folder, ec)) {
-        throw OutputError(file.string() + ": cannot write: folder '" + folder.string() +
-                          "' does not exist");
-    }
-    if (std::filesystem::is_directory(file, ec)) {
-        throw OutputError(file.string() + ": cannot write: it is a folder");
-    }
-}
-
-/// JSON number, or null when not finite.
-std::string json(double v) {
-    if (!std::isfinite(v)) {
-        return "null";
-    }
-    std::ostringstream s;
-    s << std::setprecision(17) << v;
-    return s.str();
 }
 
 void writeLabels(const std::filesystem::path& file, const vss::VssResult& result) {
@@ -165,15 +115,7 @@ void writeLabels(const std::filesystem::path& file, const vss::VssResult& result
             }
         }
     }
-    try {
-        writeAtomically(file, [&](const std::filesystem::path& temporary) {
-            if (!image.save(QFile::decodeName(temporary.c_str()), "PNG")) {
-                throw IoError(file, "cannot write the PNG image");
-            }
-        });
-    } catch (const IoError& e) {
-        throw OutputError(e.what());
-    }
+    writePngOutput(file, image);
 }
 
 }  // namespace
@@ -182,9 +124,9 @@ int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
     static_cast<void>(err);
     const VssArguments parsed = parse(args);
     const auto solver = vss::makeSolver(parsed.solver);  // bad options: InvalidArgumentError
-    checkWritable(parsed.output);
+    checkOutputPath(parsed.output);
     if (parsed.labels) {
-        checkWritable(*parsed.labels);
+        checkOutputPath(*parsed.labels);
     }
 
     const Image<float> depth = vss::readPfm(parsed.depth);  // IoError / FormatError: exit 3
@@ -213,22 +155,34 @@ int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ost
 
     if (parsed.stats) {
         const auto& s = result.stats;
-        out << "{\"width\": " << depth.width() << ", \"height\": " << depth.height()
-            << ", \"solver\": \"" << vss::toString(parsed.solver.kind) << "\""
-            << ", \"p\": " << json(parsed.solver.p) << ", \"regions\": " << s.regionCount
-            << ", \"contourPixels\": [";
-        for (std::size_t i = 0; i < s.contourPixels.size(); ++i) {
-            out << (i == 0 ? "" : ", ") << s.contourPixels[i];
+        JsonWriter json(out, JsonWriter::Layout::OneLine);
+        json.beginObject();
+        json.member("width", depth.width());
+        json.member("height", depth.height());
+        json.member("solver", vss::toString(parsed.solver.kind));
+        json.member("p", parsed.solver.p);
+        json.member("regions", s.regionCount);
+        json.key("contourPixels");
+        json.beginArray();
+        for (const std::int64_t n : s.contourPixels) {
+            json.integer(n);
         }
-        out << "], \"maxContourPixels\": " << s.maxContourPixels
-            << ", \"voidPixels\": " << s.voidPixels << ", \"dmin\": " << json(result.dmin)
-            << ", \"dmax\": " << json(result.dmax)
-            << ", \"flat\": " << (result.flat ? "true" : "false")
-            << ", \"errorBound\": " << json(result.errorBound)
-            << ", \"timeMs\": {\"normalize\": " << json(s.normalizeMs)
-            << ", \"regions\": " << json(s.regionsMs)
-            << ", \"interpolate\": " << json(s.interpolateMs) << "}"
-            << ", \"nonFiniteVoidPixels\": " << nonFiniteVoid << "}\n";
+        json.endArray();
+        json.member("maxContourPixels", s.maxContourPixels);
+        json.member("voidPixels", s.voidPixels);
+        json.member("dmin", result.dmin);
+        json.member("dmax", result.dmax);
+        json.member("flat", result.flat);
+        json.member("errorBound", result.errorBound);
+        json.key("timeMs");
+        json.beginObject();
+        json.member("normalize", s.normalizeMs);
+        json.member("regions", s.regionsMs);
+        json.member("interpolate", s.interpolateMs);
+        json.endObject();
+        json.member("nonFiniteVoidPixels", nonFiniteVoid);
+        json.endObject();
+        json.finish();
     } else {
         out << "wrote " << parsed.output.string() << " (" << depth.width() << "x" << depth.height()
             << ", " << result.stats.regionCount << " void regions, solver "

@@ -17,6 +17,7 @@
 #include "DicomTestUtil.h"
 #include "SyntheticCta.h"
 #include "cli/Cli.h"
+#include "common/Session.h"
 
 namespace {
 
@@ -130,6 +131,44 @@ TEST_F(DicomRenderTest, RefusesBadDicomOptions) {
     EXPECT_EQ(r.code, 3);
     EXPECT_NE(r.err.find("1.2.3.4"), std::string::npos) << r.err;
     EXPECT_FALSE(fs::exists(output));
+}
+
+// A session of DICOM data reopens with its series and segmentation: the same
+// vessels as the command line's options give.
+TEST_F(DicomRenderTest, SessionsReloadTheStoredSeriesAndSegmentation) {
+    vv::app::Session session;
+    session.files = {QString::fromStdString((testDir() / "series").string())};
+    vv::segmentation::SceneSourceOptions dicom;
+    dicom.seriesInstanceUid = uid_;
+    dicom.segmentation.range = vv::segmentation::ThresholdRange{250.0F, 700.0F, "chosen"};
+    dicom.segmentation.keepComponents = 2;
+    dicom.segmentation.removeBone = false;
+    dicom.surface.targetTriangles = 20000;
+    session.dicom = dicom;
+    session.vss.enabled = false;
+    session.legends = false;
+    session.background = glm::vec3(0.0F);
+    const fs::path file = testDir() / "cta.vvs";
+    vv::app::saveSession(file, session);
+
+    const fs::path fromSession = testDir() / "session.png";
+    const RunResult r = run({"render", "--session", file.string(), "-o", fromSession.string(),
+                             "--size", "320x240", "--view", "anterior"});
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("segmented series " + uid_), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("saved in the session"), std::string::npos) << r.out;  // its threshold
+    EXPECT_NE(r.out.find("0 bone-like removed"), std::string::npos) << r.out;
+    const fs::path direct = testDir() / "direct.png";
+    auto args = renderArgs(direct);
+    args.insert(args.end(),
+                {"--series", uid_, "--threshold", "250:700", "--components", "2", "--bone-removal",
+                 "off", "--triangles", "20000", "--view", "anterior"});
+    ASSERT_EQ(run(args).code, 0);
+    const QImage a(QString::fromStdString(fromSession.string()));
+    const QImage b(QString::fromStdString(direct.string()));
+    ASSERT_FALSE(a.isNull());
+    EXPECT_GT(litPixels(a), 320L * 240L / 50L);
+    EXPECT_EQ(a, b) << "the session's DICOM options did not reach the segmentation";
 }
 
 }  // namespace

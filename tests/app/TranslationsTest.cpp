@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The GUI's translations (translations/*.ts): German complete and finished,
 // placeholders and mnemonics kept, English plural forms given, no string in
-// app/gui that the .ts files lack (lupdate run into a temporary file), and
+// app/gui or app/common that the .ts files lack (lupdate run into a temporary file), and
 // the compiled .qm translating at run time. No display, no network.
 #include <gtest/gtest.h>
 
@@ -160,7 +160,8 @@ TEST(Translations, EnglishPluralFormsAreGiven) {
 }
 
 TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
-    // lupdate over app/gui into a temporary file: the strings the sources have now.
+    // lupdate over app/gui and app/common (the settings' labels) into a
+    // temporary file: the strings the sources have now.
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
     const QString fresh = dir.filePath(QStringLiteral("fresh_de.ts"));
@@ -171,7 +172,8 @@ TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
                    QStringLiteral("-I"), QStringLiteral(VV_SOURCE_DIR "/app"),
                    QStringLiteral("-source-language"), QStringLiteral("en"),
                    QStringLiteral("-target-language"), QStringLiteral("de"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/gui"), QStringLiteral("-ts"), fresh});
+                   QStringLiteral(VV_SOURCE_DIR "/app/gui"),
+                   QStringLiteral(VV_SOURCE_DIR "/app/common"), QStringLiteral("-ts"), fresh});
     ASSERT_TRUE(lupdate.waitForFinished(120000)) << "lupdate did not finish";
     ASSERT_EQ(lupdate.exitCode(), 0) << lupdate.readAll().toStdString();
 

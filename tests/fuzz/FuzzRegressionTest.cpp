@@ -49,11 +49,9 @@ vv::fuzz::Outcome feed(const std::string& target, vv::fuzz::Bytes bytes) {
     if (target == "pfm") {
         return vv::fuzz::feedPfm(bytes);
     }
-#ifndef VV_FUZZ_NO_SESSION
     if (target == "session") {
         return vv::fuzz::feedSession(bytes);
     }
-#endif
     return vv::fuzz::feedMesh(bytes, "." + target);
 }
 
@@ -85,11 +83,7 @@ TEST_P(FuzzRegression, EveryFileLoadsOrFailsWithAMessageNamingIt) {
 }
 
 std::vector<std::string> targets() {
-    std::vector<std::string> names = vv::fuzz::targetNames();
-#ifdef VV_FUZZ_NO_SESSION
-    std::erase(names, std::string("session"));
-#endif
-    return names;
+    return vv::fuzz::targetNames();
 }
 
 INSTANTIATE_TEST_SUITE_P(Targets, FuzzRegression, ::testing::ValuesIn(targets()),

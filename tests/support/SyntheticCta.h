@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // A CT-angiography-like volume of the synthetic demo tree for the
 // segmentation / surface round-trip tests: the library's generateDemoCt()
-// (vv/io/DemoCtSeries.h) under the names the tests use.
+// (vv/demo/DemoCtSeries.h, vv/dicom/SeriesWriter.h) under the names the tests use.
 #pragma once
 
 #include <glm/glm.hpp>

@@ -61,7 +61,7 @@ DataPanel::DataPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), v
     tree_->setObjectName(QStringLiteral("dataMeshes"));
     tree_->setColumnCount(ColumnCount);
     tree_->setHeaderLabels({tr("Object / array"), tr("Vertices"), tr("Triangles"), tr("Colour"),
-                            tr("Opacity"), tr("Array")});
+                            settingLabel("objects[].opacity"), tr("Array")});
     // Shown in the order name, colour, opacity, array, counts (the columns'
     // logical numbers stay), each as wide as it needs: the controls stay in view.
     for (const int column : {ColorColumn, OpacityColumn, ArrayColumn}) {
@@ -175,13 +175,11 @@ void DataPanel::addObjectControls(QTreeWidgetItem* item, int index) {
 
     auto* opacity = new QSpinBox(tree_);
     opacity->setObjectName(QStringLiteral("objectOpacity%1").arg(index));
-    opacity->setRange(0, 100);
-    opacity->setSingleStep(10);
-    opacity->setSuffix(QStringLiteral(" %"));
+    setUpForSetting(opacity, "objects[].opacity");
     opacity->setKeyboardTracking(false);
-    connect(opacity, &QSpinBox::valueChanged, this, [this, index](int percent) {
+    connect(opacity, &QSpinBox::valueChanged, this, [this, index](int shown) {
         changeObject(index, [&](render::ObjectStyle& o) {
-            o.opacity = static_cast<float>(percent) / 100.0F;
+            o.opacity = static_cast<float>(fromControl("objects[].opacity", shown));
         });
     });
     tree_->setItemWidget(item, OpacityColumn, opacity);
@@ -291,7 +289,8 @@ void DataPanel::syncFromViewer() {
         }
         if (QSpinBox* opacity = opacityBox(i)) {
             const QSignalBlocker block(opacity);
-            opacity->setValue(static_cast<int>(std::lround(o.opacity * 100.0F)));
+            opacity->setValue(static_cast<int>(
+                std::lround(toControl("objects[].opacity", static_cast<double>(o.opacity)))));
         }
         if (QComboBox* array = arrayChooser(i)) {
             const QSignalBlocker block(array);

@@ -55,17 +55,16 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     for (const auto cue : render::allVesselCues()) {
         cue_->addItem(engineName(render::displayName(cue)), static_cast<int>(cue));
     }
-    form->addRow(tr("Vessel cue:"), cue_);
+    form->addRow(settingFormLabel("cue.cue"), cue_);
     fogStrength_ = new QSlider(Qt::Horizontal, this);
     fogStrength_->setObjectName(QStringLiteral("fogStrength"));
-    fogStrength_->setRange(0, 100);
-    form->addRow(tr("Fog strength:"), fogStrength_);
+    setUpForSetting(fogStrength_, "cue.fogStrength");
+    form->addRow(settingFormLabel("cue.fogStrength"), fogStrength_);
     fresnelExponent_ = new QDoubleSpinBox(this);
     fresnelExponent_->setObjectName(QStringLiteral("fresnelExponent"));
-    fresnelExponent_->setRange(0.25, 8.0);
-    fresnelExponent_->setSingleStep(0.25);
+    setUpForSetting(fresnelExponent_, "cue.fresnelExponent");
     fresnelExponent_->setKeyboardTracking(false);
-    form->addRow(tr("Fresnel exponent:"), fresnelExponent_);
+    form->addRow(settingFormLabel("cue.fresnelExponent"), fresnelExponent_);
 
     background_ = new QComboBox(this);
     background_->setObjectName(QStringLiteral("backgroundChooser"));
@@ -74,31 +73,28 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
         background_->addItem(tr(choice.label), toQColor(choice.color));
     }
     background_->addItem(tr("Custom…"), QColor());
-    form->addRow(tr("Background:"), background_);
+    form->addRow(settingFormLabel("background"), background_);
     vesselColor_ = new QToolButton(this);
     vesselColor_->setObjectName(QStringLiteral("vesselColor"));
     vesselColor_->setMinimumWidth(64);
-    form->addRow(tr("Vessel colour:"), vesselColor_);
+    form->addRow(settingFormLabel("style.vesselColor"), vesselColor_);
     connect(vesselColor_, &QToolButton::clicked, this, &DisplayPanel::chooseVesselColor);
 
     // The key light: azimuth about the view's up axis, elevation above its horizon.
     auto* light = new QWidget(this);
     auto* lightRow = new QHBoxLayout(light);
     lightRow->setContentsMargins(0, 0, 0, 0);
-    const auto angleBox = [&](const char* name, double limit) {
+    const auto angleBox = [&](const char* name, std::string_view key) {
         auto* box = new QDoubleSpinBox(light);
         box->setObjectName(QLatin1String(name));
-        box->setRange(-limit, limit);
-        box->setDecimals(1);
-        box->setSingleStep(5.0);
-        box->setSuffix(QStringLiteral("°"));
+        setUpForSetting(box, key);
         box->setKeyboardTracking(false);
         lightRow->addWidget(box);
         return box;
     };
-    lightAzimuth_ = angleBox("lightAzimuth", 180.0);
+    lightAzimuth_ = angleBox("lightAzimuth", "style.light[0]");
     lightAzimuth_->setWrapping(true);
-    lightElevation_ = angleBox("lightElevation", 90.0);
+    lightElevation_ = angleBox("lightElevation", "style.light[1]");
     lightReset_ = new QToolButton(light);
     lightReset_->setObjectName(QStringLiteral("lightReset"));
     lightReset_->setText(tr("Reset"));
@@ -149,7 +145,7 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     }
     form->addRow(tr("Camera:"), cameraButtons_);
 
-    legends_ = new QCheckBox(tr("Show legends"), this);
+    legends_ = new QCheckBox(settingLabel("legends"), this);
     legends_->setObjectName(QStringLiteral("displayLegends"));
     legends_->setToolTip(tr("Depth and parameter legends over the view"));
     form->addRow(legends_);
@@ -236,7 +232,7 @@ QString DisplayPanel::anatomicalLabel(render::AnatomicalView view) {
 void DisplayPanel::applyCue() {
     render::VesselCueSettings cue = viewer_->vesselCue();
     cue.cue = static_cast<render::VesselCue>(cue_->currentData().toInt());
-    cue.fogStrength = static_cast<float>(fogStrength_->value()) / 100.0F;
+    cue.fogStrength = static_cast<float>(fromControl("cue.fogStrength", fogStrength_->value()));
     cue.fresnelExponent = static_cast<float>(fresnelExponent_->value());
     viewer_->setVesselCue(cue);
     updateApplicability();
@@ -287,7 +283,8 @@ void DisplayPanel::syncFromViewer() {
     lightElevation_->setValue(static_cast<double>(viewer_->style().light.elevation));
     const render::VesselCueSettings& cue = viewer_->vesselCue();
     cue_->setCurrentIndex(cue_->findData(static_cast<int>(cue.cue)));
-    fogStrength_->setValue(static_cast<int>(std::lround(cue.fogStrength * 100.0F)));
+    fogStrength_->setValue(static_cast<int>(
+        std::lround(toControl("cue.fogStrength", static_cast<double>(cue.fogStrength)))));
     fresnelExponent_->setValue(static_cast<double>(cue.fresnelExponent));
     const QColor background = toQColor(viewer_->background());
     int index = background_->count() - 1;  // Custom…

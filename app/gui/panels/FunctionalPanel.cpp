@@ -13,6 +13,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/SettingsSchema.h"
 #include "gui/ViewerWidget.h"
 #include "gui/panels/HistogramWidget.h"
 #include "gui/panels/PanelUtil.h"
@@ -20,12 +21,6 @@
 #include "vv/render/MeshRenderer.h"
 
 namespace vv::gui::panels {
-
-namespace {
-
-constexpr double kValueLimit = 1e12;
-
-}  // namespace
 
 std::optional<double> FunctionalPanel::percentile(std::vector<float> values, double p) {
     std::erase_if(values, [](float v) { return !std::isfinite(v); });
@@ -54,20 +49,22 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     array_ = new QComboBox(this);
     array_->setObjectName(QStringLiteral("arrayChooser"));
     array_->addItem(tr("None"), QString());
-    form->addRow(tr("Array:"), array_);
+    form->addRow(settingFormLabel("style.array"), array_);
 
     map_ = new QComboBox(this);
     map_->setObjectName(QStringLiteral("colorMapChooser"));
     for (const auto map : colormaps::allColorMaps()) {
         map_->addItem(engineName(colormaps::displayName(map)), static_cast<int>(map));
     }
-    form->addRow(tr("Colour map:"), map_);
+    form->addRow(settingFormLabel("style.colorMap"), map_);
     bins_ = new QSpinBox(this);
     bins_->setObjectName(QStringLiteral("functionalBins"));
-    bins_->setRange(1, colormaps::kMaxBins);  // 1 stands for continuous
+    // The setting's range, and one below its fewest bins standing for continuous (0).
+    const app::Setting& bins = app::setting("style.bins");
+    bins_->setRange(static_cast<int>(bins.min) - 1, static_cast<int>(bins.max));
     bins_->setSpecialValueText(tr("Continuous"));
     bins_->setSuffix(tr(" bins"));
-    form->addRow(tr("Discrete:"), bins_);
+    form->addRow(settingFormLabel("style.bins"), bins_);
 
     rangeMode_ = new QComboBox(this);
     rangeMode_->setObjectName(QStringLiteral("functionalRangeMode"));
@@ -79,9 +76,9 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     min_->setObjectName(QStringLiteral("functionalRangeMin"));
     max_ = new QDoubleSpinBox(this);
     max_->setObjectName(QStringLiteral("functionalRangeMax"));
+    setUpForSetting(min_, "style.range[0]");
+    setUpForSetting(max_, "style.range[1]");
     for (QDoubleSpinBox* box : {min_, max_}) {
-        box->setRange(-kValueLimit, kValueLimit);
-        box->setDecimals(3);
         box->setKeyboardTracking(false);
     }
     auto* rangeRow = new QHBoxLayout;
@@ -96,11 +93,11 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     nanColor_->setObjectName(QStringLiteral("functionalNanColor"));
     nanColor_->setAutoRaise(false);
     nanColor_->setMinimumWidth(48);
-    form->addRow(tr("No-data colour:"), nanColor_);
+    form->addRow(settingFormLabel("style.noDataColor"), nanColor_);
 
     legendTitle_ = new QLineEdit(this);
     legendTitle_->setObjectName(QStringLiteral("functionalLegendTitle"));
-    form->addRow(tr("Legend title:"), legendTitle_);
+    form->addRow(settingFormLabel("style.legendTitle"), legendTitle_);
 
     makeNarrow(this);
     sceneChanged();

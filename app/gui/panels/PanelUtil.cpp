@@ -4,9 +4,14 @@
 #include <QAbstractSpinBox>
 #include <QComboBox>
 #include <QCoreApplication>
+#include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QSlider>
+#include <QSpinBox>
 #include <QtGlobal>
+#include <cmath>
 
+#include "common/SettingsSchema.h"
 #include "vv/scene/Mesh.h"
 
 namespace vv::gui::panels {
@@ -37,6 +42,44 @@ namespace {
 QString engineName(std::string_view name) {
     const QByteArray utf8(name.data(), static_cast<qsizetype>(name.size()));
     return QCoreApplication::translate("vv::gui::panels::EngineNames", utf8.constData());
+}
+
+QString settingLabel(std::string_view key) {
+    return QCoreApplication::translate(app::kSettingsContext, app::setting(key).label);
+}
+
+QString settingFormLabel(std::string_view key) {
+    return settingLabel(key) + QLatin1Char(':');
+}
+
+void setUpForSetting(QDoubleSpinBox* box, std::string_view key) {
+    const app::Setting& s = app::setting(key);
+    box->setDecimals(s.widget.decimals);
+    box->setRange(s.min * s.widget.scale, s.max * s.widget.scale);
+    box->setSingleStep(s.widget.step);
+    box->setSuffix(fromUtf8(s.widget.suffix));
+}
+
+void setUpForSetting(QSpinBox* box, std::string_view key) {
+    const app::Setting& s = app::setting(key);
+    box->setRange(static_cast<int>(std::lround(s.min * s.widget.scale)),
+                  static_cast<int>(std::lround(s.max * s.widget.scale)));
+    box->setSingleStep(static_cast<int>(std::lround(s.widget.step)));
+    box->setSuffix(fromUtf8(s.widget.suffix));
+}
+
+void setUpForSetting(QSlider* slider, std::string_view key) {
+    const app::Setting& s = app::setting(key);
+    slider->setRange(static_cast<int>(std::lround(s.min * s.widget.scale)),
+                     static_cast<int>(std::lround(s.max * s.widget.scale)));
+}
+
+double toControl(std::string_view key, double value) {
+    return value * app::setting(key).widget.scale;
+}
+
+double fromControl(std::string_view key, double shown) {
+    return shown / app::setting(key).widget.scale;
 }
 
 QString arrayLabel(const scene::Scene& scene, const std::string& name) {

@@ -9,6 +9,10 @@
 #include <string>
 #include <string_view>
 
+class QDoubleSpinBox;
+class QSlider;
+class QSpinBox;
+
 namespace vv::scene {
 struct Scene;
 }
@@ -46,6 +50,24 @@ inline glm::vec3 toVec(const QColor& color) {
 
 /// "wss [Pa]" for a point array with a unit on some mesh of `scene`, else "wss".
 [[nodiscard]] QString arrayLabel(const scene::Scene& scene, const std::string& name);
+
+// --- Controls of the settings schema (common/SettingsSchema.h) --------------
+// Their ranges, decimals, steps, suffixes and labels come from the setting
+// `key` ("vss.p"); a control shows the value times the setting's widget scale
+// (percent: 100, tolerance in 1/255: 255).
+
+/// The setting's label, translated ("Power p").
+[[nodiscard]] QString settingLabel(std::string_view key);
+/// As a form row's label ("Power p:").
+[[nodiscard]] QString settingFormLabel(std::string_view key);
+/// Range, decimals, step and suffix of a spin box for the setting `key`.
+void setUpForSetting(QDoubleSpinBox* box, std::string_view key);
+void setUpForSetting(QSpinBox* box, std::string_view key);
+/// The range of a slider for the setting `key` (whole steps of the scaled value).
+void setUpForSetting(QSlider* slider, std::string_view key);
+/// A value of the setting `key` as its control shows it, and back.
+[[nodiscard]] double toControl(std::string_view key, double value);
+[[nodiscard]] double fromControl(std::string_view key, double shown);
 
 /// Lets the panels' controls shrink to the dock's width instead of asking
 /// for their widest item / longest value (combo boxes elide, spin boxes

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "common/SettingsSchema.h"
 #include "gui/ViewerWidget.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/DepthScale.h"
@@ -24,24 +25,30 @@ namespace vv::gui::panels {
 
 namespace {
 
-constexpr int kPercent = 100;
+/// A slider's position for the setting `key` (a fraction shown in percent).
+int sliderPosition(std::string_view key, float value) {
+    return static_cast<int>(std::lround(toControl(key, static_cast<double>(value))));
+}
 
-int percent(float fraction) {
-    return static_cast<int>(std::lround(fraction * kPercent));
+/// The setting `key`'s value at a slider's position.
+float sliderValue(std::string_view key, const QSlider* slider) {
+    return static_cast<float>(fromControl(key, slider->value()));
 }
 
 }  // namespace
 
 double VssPanel::powerFromSlider(int position) noexcept {
+    const app::Setting& p = app::setting("vss.p");
     const double t = std::clamp(position, 0, kSliderSteps) / static_cast<double>(kSliderSteps);
-    return kMinPower * std::pow(kMaxPower / kMinPower, t);
+    return p.min * std::pow(p.max / p.min, t);
 }
 
-int VssPanel::sliderFromPower(double p) noexcept {
-    if (!(p > kMinPower)) {
+int VssPanel::sliderFromPower(double power) noexcept {
+    const app::Setting& p = app::setting("vss.p");
+    if (!(power > p.min)) {
         return 0;
     }
-    const double t = std::log(p / kMinPower) / std::log(kMaxPower / kMinPower);
+    const double t = std::log(power / p.min) / std::log(p.max / p.min);
     return std::clamp(static_cast<int>(std::lround(t * kSliderSteps)), 0, kSliderSteps);
 }
 
@@ -49,7 +56,7 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     setObjectName(QStringLiteral("vssPanel"));
     auto* form = new QFormLayout(this);
 
-    enabled_ = new QCheckBox(tr("Show the Void Space Surface"), this);
+    enabled_ = new QCheckBox(settingLabel("vss.enabled"), this);
     enabled_->setObjectName(QStringLiteral("vssEnabled"));
     enabled_->setToolTip(tr("A depth-coded surface in the space between the vessels"));
     form->addRow(enabled_);
@@ -59,80 +66,72 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     powerSlider_->setRange(0, kSliderSteps);
     powerBox_ = new QDoubleSpinBox(this);
     powerBox_->setObjectName(QStringLiteral("vssPower"));
-    powerBox_->setRange(kMinPower, kMaxPower);
-    powerBox_->setDecimals(2);
-    powerBox_->setSingleStep(0.25);
+    setUpForSetting(powerBox_, "vss.p");
     powerBox_->setKeyboardTracking(false);  // one solve per entered value, not per digit
     auto* powerRow = new QHBoxLayout;
     powerRow->addWidget(powerSlider_, 1);
     powerRow->addWidget(powerBox_);
-    form->addRow(tr("Power p:"), powerRow);
+    form->addRow(settingFormLabel("vss.p"), powerRow);
 
     solver_ = new QComboBox(this);
     solver_->setObjectName(QStringLiteral("vssSolver"));
     solver_->addItem(tr("Fast (with tolerance)"), static_cast<int>(vss::SolverKind::Fast));
     solver_->addItem(tr("Exact"), static_cast<int>(vss::SolverKind::Brute));
     solver_->addItem(tr("Paper's step"), static_cast<int>(vss::SolverKind::Step));
-    form->addRow(tr("Solver:"), solver_);
+    form->addRow(settingFormLabel("vss.solver"), solver_);
     tolerance_ = new QDoubleSpinBox(this);
     tolerance_->setObjectName(QStringLiteral("vssTolerance"));
-    tolerance_->setRange(0.05, 32.0);
-    tolerance_->setDecimals(2);
-    tolerance_->setSingleStep(0.25);
-    tolerance_->setSuffix(tr(" / 255"));
+    setUpForSetting(tolerance_, "vss.tolerance");
     tolerance_->setKeyboardTracking(false);
-    form->addRow(tr("Tolerance:"), tolerance_);
+    form->addRow(settingFormLabel("vss.tolerance"), tolerance_);
     step_ = new QSpinBox(this);
     step_->setObjectName(QStringLiteral("vssStep"));
-    step_->setRange(1, 64);
+    setUpForSetting(step_, "vss.step");
     step_->setKeyboardTracking(false);
-    form->addRow(tr("Step k:"), step_);
+    form->addRow(settingFormLabel("vss.step"), step_);
 
     scale_ = new QComboBox(this);
     scale_->setObjectName(QStringLiteral("depthScaleChooser"));
     for (const auto scale : colormaps::allDepthScales()) {
         scale_->addItem(engineName(colormaps::displayName(scale)), static_cast<int>(scale));
     }
-    form->addRow(tr("Colour scale:"), scale_);
+    form->addRow(settingFormLabel("vss.scale"), scale_);
 
     isoLines_ = new QSpinBox(this);
     isoLines_->setObjectName(QStringLiteral("vssIsoLines"));
-    isoLines_->setRange(0, 64);
+    setUpForSetting(isoLines_, "vss.isoLines");
     isoLines_->setSpecialValueText(tr("None"));
-    form->addRow(tr("Iso-lines:"), isoLines_);
+    form->addRow(settingFormLabel("vss.isoLines"), isoLines_);
     isoStrength_ = new QSlider(Qt::Horizontal, this);
     isoStrength_->setObjectName(QStringLiteral("vssIsoStrength"));
-    isoStrength_->setRange(0, kPercent);
-    form->addRow(tr("Iso-line strength:"), isoStrength_);
+    setUpForSetting(isoStrength_, "vss.isoLineStrength");
+    form->addRow(settingFormLabel("vss.isoLineStrength"), isoStrength_);
     lighting_ = new QSlider(Qt::Horizontal, this);
     lighting_->setObjectName(QStringLiteral("vssLighting"));
-    lighting_->setRange(0, kPercent);
-    form->addRow(tr("Lighting:"), lighting_);
+    setUpForSetting(lighting_, "vss.lighting");
+    form->addRow(settingFormLabel("vss.lighting"), lighting_);
 
-    ao_ = new QCheckBox(tr("Ambient occlusion"), this);
+    ao_ = new QCheckBox(settingLabel("ao.enabled"), this);
     ao_->setObjectName(QStringLiteral("aoEnabled"));
     form->addRow(ao_);
     aoRadius_ = new QDoubleSpinBox(this);
     aoRadius_->setObjectName(QStringLiteral("aoRadius"));
-    aoRadius_->setRange(0.1, 100.0);
-    aoRadius_->setDecimals(1);
-    aoRadius_->setSingleStep(0.5);
+    setUpForSetting(aoRadius_, "ao.radius");
     aoRadius_->setKeyboardTracking(false);
-    form->addRow(tr("AO radius:"), aoRadius_);
+    form->addRow(settingFormLabel("ao.radius"), aoRadius_);
 
     rangeMode_ = new QComboBox(this);
     rangeMode_->setObjectName(QStringLiteral("vssRangeMode"));
     rangeMode_->addItem(tr("Visible vessels"), static_cast<int>(vss::RangeMode::Visible));
     rangeMode_->addItem(tr("Fixed"), static_cast<int>(vss::RangeMode::Fixed));
-    form->addRow(tr("Depth range:"), rangeMode_);
+    form->addRow(settingFormLabel("vss.range.mode"), rangeMode_);
     rangeMin_ = new QDoubleSpinBox(this);
     rangeMin_->setObjectName(QStringLiteral("vssRangeMin"));
     rangeMax_ = new QDoubleSpinBox(this);
     rangeMax_->setObjectName(QStringLiteral("vssRangeMax"));
+    setUpForSetting(rangeMin_, "vss.range.near");
+    setUpForSetting(rangeMax_, "vss.range.far");
     for (QDoubleSpinBox* box : {rangeMin_, rangeMax_}) {
-        box->setRange(-1.0e6, 1.0e6);
-        box->setDecimals(1);
-        box->setSuffix(tr(" mm"));
         box->setKeyboardTracking(false);
     }
     auto* rangeRow = new QHBoxLayout;
@@ -208,12 +207,12 @@ void VssPanel::syncFromViewer() {
         solverIndex = solver_->findData(static_cast<int>(vss::SolverKind::Brute));
     }
     solver_->setCurrentIndex(solverIndex);
-    tolerance_->setValue(vss.solver.tolerance * 255.0);
+    tolerance_->setValue(toControl("vss.tolerance", vss.solver.tolerance));
     step_->setValue(vss.solver.step);
     scale_->setCurrentIndex(scale_->findData(static_cast<int>(vss.scale)));
     isoLines_->setValue(vss.isoLines);
-    isoStrength_->setValue(percent(vss.isoLineStrength));
-    lighting_->setValue(percent(vss.lighting));
+    isoStrength_->setValue(sliderPosition("vss.isoLineStrength", vss.isoLineStrength));
+    lighting_->setValue(sliderPosition("vss.lighting", vss.lighting));
     ao_->setChecked(ao.enabled);
     aoRadius_->setValue(static_cast<double>(ao.radius));
     rangeMode_->setCurrentIndex(rangeMode_->findData(static_cast<int>(vss.range.mode)));
@@ -236,12 +235,12 @@ void VssPanel::apply() {
     if (!(kind == vss::SolverKind::Brute && vss.solver.kind == vss::SolverKind::Reference)) {
         vss.solver.kind = kind;
     }
-    vss.solver.tolerance = tolerance_->value() / 255.0;
+    vss.solver.tolerance = fromControl("vss.tolerance", tolerance_->value());
     vss.solver.step = step_->value();
     vss.scale = static_cast<colormaps::DepthScale>(scale_->currentData().toInt());
     vss.isoLines = isoLines_->value();
-    vss.isoLineStrength = static_cast<float>(isoStrength_->value()) / kPercent;
-    vss.lighting = static_cast<float>(lighting_->value()) / kPercent;
+    vss.isoLineStrength = sliderValue("vss.isoLineStrength", isoStrength_);
+    vss.lighting = sliderValue("vss.lighting", lighting_);
     vss.range.mode = static_cast<vss::RangeMode>(rangeMode_->currentData().toInt());
     if (vss.range.mode == vss::RangeMode::Fixed) {
         // Near never beyond far: the far box follows.
@@ -267,7 +266,9 @@ void VssPanel::updateApplicability() {
     const bool on = enabled_->isChecked();
     const QString off = tr("Turn the Void Space Surface on to change this");
     const auto kind = static_cast<vss::SolverKind>(solver_->currentData().toInt());
-    setApplicable(powerSlider_, on, tr("Interpolation power p (logarithmic, 0.25 to 64)"), off);
+    const app::Setting& p = app::setting("vss.p");
+    setApplicable(powerSlider_, on,
+                  tr("Interpolation power p (logarithmic, %L1 to %L2)").arg(p.min).arg(p.max), off);
     setApplicable(powerBox_, on,
                   tr("Interpolation power p: higher values follow the nearest vessel more "
                      "closely"),

@@ -17,26 +17,25 @@ class ViewerWidget;
 namespace panels {
 
 /// The "Void Space Surface" panel: on/off, the IDW power p (logarithmic slider
-/// 0.25-64 and a spin box), solver quality (fast with tolerance, exact, the
-/// paper's every-k-th-contour-pixel step), depth colour scale, iso-lines,
-/// lighting, ambient occlusion, the depth range (the visible vessels', or a
-/// fixed one in mm that keeps colours across views; choosing "fixed" starts
-/// from the range on screen), and the last solve's time and error bound.
-/// Every control writes the viewer at once and then emits changed().
+/// over the setting's range, 0.25-64, and a spin box), solver quality (fast with tolerance, exact,
+/// the paper's every-k-th-contour-pixel step), depth colour scale, iso-lines, lighting, ambient
+/// occlusion, the depth range (the visible vessels', or a fixed one in mm that keeps colours across
+/// views; choosing "fixed" starts from the range on screen), and the last solve's time and error
+/// bound. Every control writes the viewer at once and then emits changed(). Ranges, steps and
+/// labels come from the settings schema (common/SettingsSchema.h).
 class VssPanel : public QWidget {
     Q_OBJECT
 
   public:
-    /// Slider positions of the logarithmic p slider: 0 = kMinPower, kSliderSteps = kMaxPower.
+    /// Slider positions of the logarithmic p slider: 0 = the setting's
+    /// minimum, kSliderSteps = its maximum (SettingsSchema.h, "vss.p").
     static constexpr int kSliderSteps = 1000;
-    static constexpr double kMinPower = 0.25;
-    static constexpr double kMaxPower = 64.0;
 
     explicit VssPanel(ViewerWidget* viewer, QWidget* parent = nullptr);
 
     /// p of a slider position, and the nearest position of p (clamped).
     [[nodiscard]] static double powerFromSlider(int position) noexcept;
-    [[nodiscard]] static int sliderFromPower(double p) noexcept;
+    [[nodiscard]] static int sliderFromPower(double power) noexcept;
 
     [[nodiscard]] QCheckBox* enabledBox() const noexcept { return enabled_; }
     [[nodiscard]] QSlider* powerSlider() const noexcept { return powerSlider_; }

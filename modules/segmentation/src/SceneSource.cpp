@@ -217,4 +217,30 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
     return scene;
 }
 
+scene::Scene loadSceneSources(const std::vector<std::filesystem::path>& files,
+                              const SceneSourceOptions& options, const Progress& progress,
+                              SceneSourceReport* report) {
+    if (std::none_of(files.begin(), files.end(), [](const auto& f) { return isDicomSource(f); })) {
+        return meshio::loadScene(files, options.mesh, progress);
+    }
+    // DICOM sources are segmented one by one; meshes load as before.
+    scene::Scene scene;
+    const auto n = static_cast<double>(files.size());
+    for (std::size_t i = 0; i < files.size(); ++i) {
+        const Progress part =
+            progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);
+        SceneSourceReport loaded;
+        const bool dicomSource = isDicomSource(files[i]);
+        scene::Scene one = dicomSource ? loadSceneSource(files[i], options, part, &loaded)
+                                       : meshio::loadScene({files[i]}, options.mesh, part);
+        if (dicomSource && report != nullptr) {
+            *report = std::move(loaded);
+        }
+        for (auto& mesh : one.meshes) {
+            scene.meshes.push_back(std::move(mesh));
+        }
+    }
+    return scene;
+}
+
 }  // namespace vv::segmentation

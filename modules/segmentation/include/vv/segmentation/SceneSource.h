@@ -60,6 +60,18 @@ struct SceneSourceReport {
                                            const Progress& progress = {},
                                            SceneSourceReport* report = nullptr);
 
+/// Loads `files` into one scene, in order, as the GUI and a session open
+/// them: DICOM sources (isDicomSource()) through loadSceneSource() with
+/// `options` one by one, the meshes with meshio::loadScene() (as one batch
+/// when there is no DICOM source). `report`, when given, says what loading
+/// the last DICOM source did. Reports progress over all files. Throws as
+/// meshio::loadScene() / loadSceneSource() (IoError, FormatError, ...,
+/// CancelledError).
+[[nodiscard]] scene::Scene loadSceneSources(const std::vector<std::filesystem::path>& files,
+                                            const SceneSourceOptions& options = {},
+                                            const Progress& progress = {},
+                                            SceneSourceReport* report = nullptr);
+
 /// The command-line spelling of the DICOM options, shared by the CLI commands
 /// that open a scene (render, report): when `name` is one of
 ///   --series UID           the series to load

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+/// Numbers as text for machines (JSON, CSV, messages that quote values):
+/// always the C locale, whatever the process locale (QCoreApplication sets
+/// it from the environment), and round-trippable.
+namespace vv::app {
+
+/// The shortest text that reads back as exactly `value` ("0.5", "2",
+/// "1e+20", "-0.1"); "nan", "inf", "-inf" when not finite.
+[[nodiscard]] std::string shortestText(double value);
+/// As above for a float: the shortest text that reads back as this float
+/// (0.1F gives "0.1", not the double's "0.10000000149011612").
+[[nodiscard]] std::string shortestText(float value);
+
+/// `value` for people to read in messages and help: at most six significant
+/// digits ("0.000196078", "0.55", "1e+12"); C locale.
+[[nodiscard]] std::string readableText(double value);
+
+/// `text` as a finite double (all of it, C locale); nullopt otherwise.
+[[nodiscard]] std::optional<double> parseFiniteNumber(std::string_view text) noexcept;
+/// `text` as an int (all of it, decimal); nullopt otherwise.
+[[nodiscard]] std::optional<int> parseWholeNumber(std::string_view text) noexcept;
+
+}  // namespace vv::app
