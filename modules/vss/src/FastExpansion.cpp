@@ -14,21 +14,9 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void shiftLocal(
     double a0, double t1x, double t1y, double a1, double f) {
     const double alpha = a1 / a0;
     const Cx beta{(t1x - t0x) / a0, (t1y - t0y) / a0};
-    std::array<Cx, kS> bp;
-    std::array<double, kS> ap;
-    bp[0] = {1.0, 0.0};
-    ap[0] = 1.0;
-    for (int r = 1; r <= deg; ++r) {
-        bp[r] = bp[r - 1] * beta;
-        ap[r] = ap[r - 1] * alpha;
-    }
     // coef[l][j] = binom(l,j) alpha^j beta^(l-j), shared by D and N and both passes
     std::array<Cx, kS * kS> coef;
-    for (int l = 0; l <= deg; ++l) {
-        for (int j = 0; j <= l; ++j) {
-            coef[l * kS + j] = (tab.binom[l][j] * ap[j]) * bp[l - j];
-        }
-    }
+    tab.shiftCoefficients(alpha, beta, deg, coef);
     // t[j][l'] = sum_{l>=j} coef[l][j] L[l][l'];  L'[j][j'] = sum_{l'>=j'} conj(coef[l'][j'])
     // t[j][l'] with D and N side by side in V4
     std::array<V4, kS * kS> in;

@@ -124,21 +124,9 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void buildMoments(
             const SrcNode& ch = tree.nodes[ck];
             const double alpha = ch.sn / nd.sn;
             const Cx beta{(ch.cx - nd.cx) / nd.sn, (ch.cy - nd.cy) / nd.sn};
-            std::array<Cx, kS> bp;
-            std::array<double, kS> ap;
-            bp[0] = {1.0, 0.0};
-            ap[0] = 1.0;
-            for (int r = 1; r <= d; ++r) {
-                bp[r] = bp[r - 1] * beta;
-                ap[r] = ap[r - 1] * alpha;
-            }
             // (alpha v + beta)^r = sum_j coef[r][j] v^j
             std::array<Cx, kS * kS> coef;
-            for (int r = 0; r <= d; ++r) {
-                for (int j = 0; j <= r; ++j) {
-                    coef[r * kS + j] = (tab.binom[r][j] * ap[j]) * bp[r - j];
-                }
-            }
+            tab.shiftCoefficients(alpha, beta, d, coef);
             const Cx* srcD = &tree.momD[ck * mc];
             const Cx* srcN = &tree.momN[ck * mc];
             std::array<V4, kS * kS> full;  // full child moments (D, N), r + r' <= d

@@ -48,6 +48,27 @@ struct PowerTables {
         return powHalf(ratio2, halfP);
     }
 
+    /// coef[r * kS + j] = binom(r, j) alpha^j beta^(r-j) for j <= r <= deg: the
+    /// coefficients of (alpha v + beta)^r = sum_j coef[r][j] v^j, with which
+    /// moments (M2M) and local expansions (L2L) change centre and scale.
+    /// Always inlined: its callers are target_clones (FastMath.h).
+    [[gnu::always_inline]] void shiftCoefficients(double alpha, Cx beta, int deg,
+                                                  std::array<Cx, kS * kS>& coef) const {
+        std::array<Cx, kS> bp;
+        std::array<double, kS> ap;
+        bp[0] = {1.0, 0.0};
+        ap[0] = 1.0;
+        for (int r = 1; r <= deg; ++r) {
+            bp[r] = bp[r - 1] * beta;
+            ap[r] = ap[r - 1] * alpha;
+        }
+        for (int r = 0; r <= deg; ++r) {
+            for (int j = 0; j <= r; ++j) {
+                coef[r * kS + j] = (binom[r][j] * ap[j]) * bp[r - j];
+            }
+        }
+    }
+
     /// Builds every table for p (no checks: p is positive and finite). Chooses
     /// the expansion degree: 10 for p <= 16, 8 above.
     explicit PowerTables(double pIn);
