@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The surface of a vessel tree: a narrow-band signed distance field (smooth
 // union of tubes along the centrelines) sampled slab by slab, flying edges at
-// 0, windowed-sinc smoothing, outward normals, and per-vertex pressure, wall
-// shear stress, segment id and generation. See docs/demo-data.md.
+// 0, windowed-sinc smoothing, outward normals; the per-vertex flow data come
+// from DemoFlowFields.cpp. See docs/demo-data.md.
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
@@ -27,6 +27,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "DemoSurfaceDetail.h"
 #include "DemoTreeDetail.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
@@ -38,6 +39,10 @@
 namespace vv::demo {
 
 namespace {
+
+using detail::Bins;
+using detail::Piece;
+using detail::pieceDistance2;
 
 // Grid and field (see docs/demo-data.md).
 constexpr int kBinVoxels = 8;                   // bins of 8^3 voxels for the narrow band
@@ -53,11 +58,9 @@ constexpr double kMinRadiusVoxels = 1.25;       // thinner vessels are drawn thi
 constexpr double kBlendPerRadius = 0.6;         // smooth-union width / radius of the added tube
 constexpr float kFar = 1e30F;
 
-// Finishing and point data.
+// Finishing.
 constexpr int kSmoothingIterations = 20;
 constexpr double kSmoothingPassBand = 0.05;
-constexpr double kWssBump = 0.15;      // +-15 % near junctions
-constexpr double kWssBumpRadii = 2.0;  // within 2 radii of a junction
 
 // Progress of the stages. Extraction may run up to kMaxExtractions times,
 // each on a coarser grid, to stay within the triangle limit; attempt i
@@ -66,18 +69,6 @@ constexpr int kMaxExtractions = 4;
 constexpr std::array<double, kMaxExtractions + 1> kExtractEnds = {0.0, 0.45, 0.5, 0.53, 0.55};
 constexpr double kSmoothEnd = 0.85;
 constexpr double kNormalsEnd = 0.9;
-
-/// One straight piece of a centreline, with what the field and the point data need.
-struct Piece {
-    glm::vec3 a{0.0F};
-    glm::vec3 ab{0.0F};
-    float invLength2 = 0.0F;  // 0 for a degenerate piece
-    float length = 0.0F;
-    float arcStart = 0.0F;  // arc length of a along its segment, mm
-    float radius = 0.0F;    // drawn radius, mm
-    float blend = 0.0F;     // smooth-union width, mm
-    int segment = 0;
-};
 
 struct Grid {
     glm::dvec3 origin{0.0};
@@ -182,47 +173,6 @@ std::vector<Piece> makePieces(const VesselTree& tree, double spacing) {
     return pieces;
 }
 
-/// Pieces binned into a coarse grid: a bin lists (in piece order, so grouped by
-/// segment) every piece whose box padded by radius + blend + band reaches it.
-/// Outside those boxes a piece cannot change the clamped field.
-struct Bins {
-    glm::dvec3 origin{0.0};
-    double size = 0.0;
-    int nx = 0;
-    int ny = 0;
-    int nz = 0;
-    std::vector<std::uint32_t> start;  // nx * ny * nz + 1 offsets into items
-    std::vector<std::uint32_t> items;  // piece indices
-    /// The items of one segment within a bin.
-    struct Run {
-        int segment = 0;
-        std::uint32_t begin = 0;
-        std::uint32_t end = 0;
-    };
-    std::vector<std::uint32_t> runStart;  // nx * ny * nz + 1 offsets into runs
-    std::vector<Run> runs;                // per bin in segment order
-    std::size_t maxRunsPerBin = 0;
-
-    [[nodiscard]] long count() const { return static_cast<long>(nx) * ny * nz; }
-    [[nodiscard]] std::span<const std::uint32_t> at(long bin) const {
-        const auto b = static_cast<std::size_t>(bin);
-        return {items.data() + start[b], items.data() + start[b + 1]};
-    }
-    [[nodiscard]] std::span<const Run> runsAt(long bin) const {
-        const auto b = static_cast<std::size_t>(bin);
-        return {runs.data() + runStart[b], runs.data() + runStart[b + 1]};
-    }
-    [[nodiscard]] long binOf(const glm::vec3& p) const {
-        const auto index = [&](float v, double o, int n) {
-            const double i = std::floor((static_cast<double>(v) - o) / size);
-            return static_cast<long>(std::clamp(i, 0.0, static_cast<double>(n - 1)));
-        };
-        return index(p.x, origin.x, nx) +
-               static_cast<long>(nx) *
-                   (index(p.y, origin.y, ny) + static_cast<long>(ny) * index(p.z, origin.z, nz));
-    }
-};
-
 Bins makeBins(const Grid& grid, const std::vector<Piece>& pieces, double band) {
     Bins bins;
     bins.origin = grid.origin - 0.5 * grid.spacing;  // bin edges between voxel centres
@@ -325,14 +275,6 @@ std::vector<SegmentShape> makeShapes(const VesselTree& tree, double spacing) {
 inline float smoothMin(float a, float b, float k) {
     const float h = std::max(k - std::abs(a - b), 0.0F) / k;
     return std::min(a, b) - h * h * k * 0.25F;
-}
-
-/// Closest point parameter t in [0, 1] on the piece and the squared distance.
-inline float pieceDistance2(const Piece& piece, const glm::vec3& p, float& t) {
-    const glm::vec3 ap = p - piece.a;
-    t = std::clamp(glm::dot(ap, piece.ab) * piece.invLength2, 0.0F, 1.0F);
-    const glm::vec3 d = ap - piece.ab * t;
-    return glm::dot(d, d);
 }
 
 /// The field at p from the pieces of one bin. Per segment the exact distance
@@ -600,151 +542,6 @@ vtkSmartPointer<vtkPolyData> runFilter(vtkPolyDataAlgorithm* filter, const Progr
     return output;
 }
 
-/// Per segment: what the point data need besides the tree.
-struct SegmentData {
-    float pressureIn = 0.0F;
-    float pressureOut = 0.0F;
-    float length = 0.0F;
-    float wss = 0.0F;
-    float bumpWidth = 0.0F;  // kWssBumpRadii radii
-    float emerges = 0.0F;    // arc length where it leaves its parent's tube: the parent's radius
-    bool hasParent = false;
-    bool hasChildren = false;
-    glm::vec3 dividerDirection{0.0F};  // towards the siblings, across the start tangent
-    float generation = 0.0F;
-};
-
-std::vector<SegmentData> makeSegmentData(const VesselTree& tree) {
-    const auto& segments = tree.segments;
-    std::vector<glm::dvec3> startTangent(segments.size());
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        const auto& line = segments[i].centerline;
-        const glm::dvec3 d = glm::dvec3(line[1]) - glm::dvec3(line[0]);
-        const double len = glm::length(d);
-        startTangent[i] = len > 0.0 ? d / len : glm::dvec3(0.0);
-    }
-    std::vector<SegmentData> data(segments.size());
-    for (std::size_t i = 0; i < segments.size(); ++i) {
-        const auto& s = segments[i];
-        SegmentData& d = data[i];
-        d.pressureIn = static_cast<float>(s.pressureInMmHg);
-        d.pressureOut = static_cast<float>(s.pressureOutMmHg);
-        d.length = static_cast<float>(s.lengthMm);
-        d.wss = static_cast<float>(s.wssPa);
-        d.bumpWidth = static_cast<float>(kWssBumpRadii * s.radiusMm);
-        d.emerges = s.parent >= 0
-                        ? static_cast<float>(segments[static_cast<std::size_t>(s.parent)].radiusMm)
-                        : 0.0F;
-        d.hasParent = s.parent >= 0;
-        d.hasChildren = !s.children.empty();
-        d.generation = static_cast<float>(s.generation);
-        if (d.hasParent) {
-            glm::dvec3 towards(0.0);
-            for (const int sibling : segments[static_cast<std::size_t>(s.parent)].children) {
-                if (sibling != s.id) {
-                    towards += startTangent[static_cast<std::size_t>(sibling)];
-                }
-            }
-            towards -= startTangent[i] * glm::dot(towards, startTangent[i]);
-            const double len = glm::length(towards);
-            d.dividerDirection = len > 1e-9 ? glm::vec3(towards / len) : glm::vec3(0.0F);
-        }
-    }
-    return data;
-}
-
-/// A smooth bump: 1 at distance 0, falling to 0 (with zero slope) at width.
-inline float bump(float distance, float width) {
-    if (!(distance < width)) {
-        return 0.0F;
-    }
-    const float u = distance / width;
-    const float v = 1.0F - u * u;
-    return v * v;
-}
-
-/// Nearest centreline piece of p by distance to the drawn tube wall; ties go to
-/// the lower piece index. Searches p's bin, or everything when the bin is empty.
-std::uint32_t nearestPiece(const glm::vec3& p, const std::vector<Piece>& pieces, const Bins& bins,
-                           float& tOut) {
-    auto candidates = bins.at(bins.binOf(p));
-    std::uint32_t best = 0;
-    float bestDistance = std::numeric_limits<float>::max();
-    const auto visit = [&](std::uint32_t index) {
-        float t = 0.0F;
-        const Piece& piece = pieces[index];
-        const float d = std::sqrt(pieceDistance2(piece, p, t)) - piece.radius;
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = index;
-            tOut = t;
-        }
-    };
-    if (candidates.empty()) {
-        for (std::uint32_t i = 0; i < pieces.size(); ++i) {
-            visit(i);
-        }
-    } else {
-        for (const std::uint32_t index : candidates) {
-            visit(index);
-        }
-    }
-    return best;
-}
-
-void addPointData(scene::Mesh& mesh, const VesselTree& tree, const std::vector<Piece>& pieces,
-                  const Bins& bins, const Progress& progress) {
-    const std::vector<SegmentData> segments = makeSegmentData(tree);
-    const std::size_t n = mesh.positions.size();
-    scene::DataArray pressure{"pressure", "mmHg", 1, std::vector<float>(n), false, false};
-    scene::DataArray wss{"wss", "Pa", 1, std::vector<float>(n), false, false};
-    scene::DataArray segmentId{"segment_id", "", 1, std::vector<float>(n), true, false};
-    scene::DataArray generation{"generation", "", 1, std::vector<float>(n), true, false};
-
-    const auto body = [&](long begin, long end) {
-        for (long v = begin; v < end; ++v) {
-            const auto i = static_cast<std::size_t>(v);
-            const glm::vec3& p = mesh.positions[i];
-            float t = 0.0F;
-            const Piece& piece = pieces[nearestPiece(p, pieces, bins, t)];
-            const SegmentData& s = segments[static_cast<std::size_t>(piece.segment)];
-            const float arc = piece.arcStart + t * piece.length;
-            const float along = s.length > 0.0F ? std::clamp(arc / s.length, 0.0F, 1.0F) : 0.0F;
-            pressure.values[i] = s.pressureIn + (s.pressureOut - s.pressureIn) * along;
-
-            float factor = 1.0F;
-            if (s.hasChildren) {
-                // Into the junction the cross-section widens and the flow slows.
-                factor *= 1.0F - static_cast<float>(kWssBump) * bump(s.length - arc, s.bumpWidth);
-            }
-            if (s.hasParent) {
-                // Out of it the flow divider (facing the siblings) sees more
-                // shear, the outer wall less.
-                const glm::vec3 radial = p - (piece.a + piece.ab * t);
-                const float len = glm::length(radial);
-                const float facing = len > 0.0F ? glm::dot(radial / len, s.dividerDirection) : 0.0F;
-                factor *= 1.0F + static_cast<float>(kWssBump) * facing *
-                                     bump(std::max(0.0F, arc - s.emerges), s.bumpWidth);
-            }
-            wss.values[i] = s.wss * factor;
-            segmentId.values[i] = static_cast<float>(piece.segment);
-            generation.values[i] = s.generation;
-        }
-    };
-    constexpr long kBatches = 5;
-    const auto total = static_cast<long>(n);
-    for (long batch = 0; batch < kBatches; ++batch) {
-        progress.report(static_cast<double>(batch) / kBatches, "Assigning vessel data");
-        parallelFor(total * batch / kBatches, total * (batch + 1) / kBatches, 2048, body,
-                    progress.stopToken());
-    }
-    mesh.pointArrays.push_back(std::move(pressure));
-    mesh.pointArrays.push_back(std::move(wss));
-    mesh.pointArrays.push_back(std::move(segmentId));
-    mesh.pointArrays.push_back(std::move(generation));
-    progress.report(1.0, "Assigning vessel data");
-}
-
 /// Keeps only the connected component with the most triangles. The tubes are
 /// joined by construction; anything else flying edges finds can only be a
 /// speck a voxel or two wide (sampling of a thin tube or of a blend).
@@ -888,7 +685,8 @@ scene::Mesh buildVesselSurface(const VesselTree& tree, const DemoTreeOptions& op
     keepLargestComponent(mesh);
     scene::orientOutward(mesh);
     mesh.name = "vessel tree";
-    addPointData(mesh, tree, extraction.pieces, extraction.bins, progress.sub(kNormalsEnd, 1.0));
+    detail::addFlowFields(mesh, tree, extraction.pieces, extraction.bins,
+                          progress.sub(kNormalsEnd, 1.0));
     return mesh;
 }
 

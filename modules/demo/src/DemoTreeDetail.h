@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Private to vv::meshio: what DemoTree.cpp and DemoSurface.cpp share.
+// Private to vv::demo: what DemoTree.cpp and DemoSurface.cpp share.
 #pragma once
 
 #include "vv/demo/DemoTree.h"

@@ -92,13 +92,13 @@ inline Cx& operator+=(Cx& a, Cx b) {
 
 // Two complex numbers side by side (D and N parts): [a.re, a.im, b.re, b.im].
 //
-// A V4 never crosses a call boundary by value. FastSolver.cpp is compiled for
-// baseline x86-64 and, in its target_clones functions, for x86-64-v3 as well,
-// and the two pass a 32-byte vector differently (baseline: in memory; AVX: in
-// a ymm register; GCC's -Wpsabi note). An out-of-line helper taking or
-// returning a V4 by value, called from an AVX clone, reads its argument from
-// the wrong place: at -O0 (the asan preset, nothing inlined) cmul4(V4, Cx)
-// crashed exactly so. Hence the helpers below take and give V4 by reference
+// A V4 never crosses a call boundary by value. The fast solver is compiled for
+// baseline x86-64 and, in its target_clones functions (FastSourceTree.cpp,
+// FastExpansion.cpp), for x86-64-v3 as well, and the two pass a 32-byte vector
+// differently (baseline: in memory; AVX: in a ymm register; GCC's -Wpsabi
+// note). An out-of-line helper taking or returning a V4 by value, called from
+// an AVX clone, reads its argument from the wrong place: at -O0 (the asan
+// preset, nothing inlined) cmul4(V4, Cx) crashed exactly so. Hence the helpers below take and give V4 by reference
 // and are always inlined, so the optimised code is the same as before.
 using V4 = double __attribute__((vector_size(32)));
 // out = v * c per complex half
