@@ -85,12 +85,20 @@ struct RenderGraph::Impl {
         std::uint64_t generation = 0;             ///< persistent storage generation
     };
 
+    /// A render target a pass declared: attachments it writes.
+    struct DeclaredTarget {
+        std::string name;
+        std::vector<VersionRef> colors;
+        std::optional<VersionRef> depth;
+    };
+
     struct Pass {
         std::string name;
         std::unique_ptr<PassCallback> callback;
         std::vector<VersionRef> reads;
         std::vector<VersionRef> writes;
         std::vector<detail::PassParameter> parameters;
+        std::vector<DeclaredTarget> renderTargets;
         bool sideEffect = false;
         int refCount = 0;
         bool culled = false;
@@ -109,7 +117,9 @@ struct RenderGraph::Impl {
     std::optional<std::string> brokenBy;
     bool compiled = false;
     bool executed = false;
+    bool executeFailed = false;
     CpuPassTimer timer;
+    Blackboard blackboard;
 
     // ---- building --------------------------------------------------------
 
@@ -737,11 +747,136 @@ void RenderGraph::execute(PassObserver* observer) {
             observer->endFrame();
         }
     } catch (...) {
+        impl.executeFailed = true;
         impl.releaseTransients();
         cache.endFrame();
         throw;
     }
     cache.endFrame();
+}
+
+Blackboard& RenderGraph::blackboard() noexcept {
+    return impl_->blackboard;
+}
+
+const Blackboard& RenderGraph::blackboard() const noexcept {
+    return impl_->blackboard;
+}
+
+void RenderGraph::throwMissingEntry(std::size_t pass, std::string_view name) const {
+    throw RenderGraphError("render graph: pass " + inQuotes(impl_->passes[pass].name) + " reads " +
+                           inQuotes(name) + ", which no pass put on the blackboard");
+}
+
+std::uint32_t RenderGraph::declareRenderTarget(std::size_t pass, std::string_view name,
+                                               const RenderTargetAttachments& attachments) {
+    impl_->requireBuilding();
+    Impl::Pass& owner = impl_->passes[pass];
+    const std::string what = "pass " + inQuotes(owner.name) + " declares render target ";
+    if (name.empty()) {
+        throw RenderGraphError("render graph: " + what + "without a name");
+    }
+    for (const auto& declared : owner.renderTargets) {
+        if (declared.name == name) {
+            throw RenderGraphError("render graph: " + what + inQuotes(name) + " twice");
+        }
+    }
+    if (attachments.colors.empty() && !attachments.depth.valid()) {
+        throw RenderGraphError("render graph: " + what + inQuotes(name) + " without attachments");
+    }
+    const auto written = [&](Handle<Texture> handle) {
+        const std::string user = what + inQuotes(name);
+        impl_->checkedResource(handle.index(), typeid(Texture), user);
+        const VersionRef ref{handle.index(), handle.version()};
+        if (!contains(owner.writes, ref)) {
+            throw RenderGraphError("render graph: " + user + " with " +
+                                   inQuotes(impl_->resources[ref.index].name) + " version " +
+                                   std::to_string(ref.version) +
+                                   ", which it does not write (write() it first)");
+        }
+        return ref;
+    };
+    Impl::DeclaredTarget target;
+    target.name = std::string(name);
+    for (const Handle<Texture>& color : attachments.colors) {
+        target.colors.push_back(written(color));
+    }
+    if (attachments.depth.valid()) {
+        target.depth = written(attachments.depth);
+    }
+    owner.renderTargets.push_back(std::move(target));
+    return static_cast<std::uint32_t>(owner.renderTargets.size() - 1);
+}
+
+RenderTarget RenderGraph::resolveRenderTarget(std::size_t pass, RenderTargetId id) const {
+    const Impl::Pass& owner = impl_->passes[pass];
+    if (!id.valid() || id.index_ >= owner.renderTargets.size()) {
+        throw RenderGraphError("render graph: pass " + inQuotes(owner.name) +
+                               " uses a render target it did not declare");
+    }
+    const Impl::DeclaredTarget& declared = owner.renderTargets[id.index_];
+    const auto texture = [&](VersionRef ref) {
+        return static_cast<const Texture*>(
+            access(pass, ref.index, ref.version, typeid(Texture), true));
+    };
+    RenderTarget target;
+    target.name = declared.name;
+    for (const VersionRef& color : declared.colors) {
+        target.colors.push_back(texture(color));
+    }
+    if (declared.depth.has_value()) {
+        target.depth = texture(*declared.depth);
+    }
+    const Texture& first = target.colors.empty() ? *target.depth : *target.colors.front();
+    target.width = first.descriptor().width;
+    target.height = first.descriptor().height;
+    const auto sameSize = [&](const Texture* t) {
+        return t->descriptor().width == target.width && t->descriptor().height == target.height;
+    };
+    if (!std::all_of(target.colors.begin(), target.colors.end(), sameSize) ||
+        (target.depth != nullptr && !sameSize(target.depth))) {
+        throw RenderGraphError("render graph: render target " + inQuotes(declared.name) +
+                               " of pass " + inQuotes(owner.name) +
+                               " has attachments of different sizes");
+    }
+    return target;
+}
+
+const void* RenderGraph::resultOf(std::uint32_t index, std::uint32_t version,
+                                  std::type_index type) const {
+    const Impl& impl = *impl_;
+    if (!impl.executed || impl.executeFailed) {
+        throw RenderGraphError("render graph: results exist after a successful execute()");
+    }
+    if (index >= impl.resources.size() || impl.resources[index].type != type) {
+        throw RenderGraphError(
+            "render graph: result() of a handle that is invalid, of another type or of another "
+            "graph");
+    }
+    const Impl::Resource& resource = impl.resources[index];
+    if (resource.kind == ResourceKind::Transient) {
+        throw RenderGraphError("render graph: " + inQuotes(resource.name) +
+                               " is transient: its storage went back to the pool after the "
+                               "frame (make it persistent to read it afterwards)");
+    }
+    if (version != Impl::latestVersion(resource)) {
+        throw RenderGraphError("render graph: result() of " + inQuotes(resource.name) +
+                               " version " + std::to_string(version) + ", but version " +
+                               std::to_string(Impl::latestVersion(resource)) + " is its latest");
+    }
+    const Impl::Version& latest = resource.versions[version];
+    if (latest.writer.has_value()) {
+        const PassState state = impl.passes[*latest.writer].state;
+        if (state != PassState::Executed && state != PassState::Cached) {
+            return nullptr;
+        }
+    } else if (resource.kind != ResourceKind::Imported) {
+        return nullptr;
+    }
+    if (resource.kind == ResourceKind::Imported) {
+        return resource.imported->get();
+    }
+    return resource.bound != nullptr ? resource.bound->get() : nullptr;
 }
 
 bool RenderGraph::compiled() const noexcept {
@@ -762,6 +897,9 @@ std::vector<PassInfo> RenderGraph::passes() const {
         info.writes = impl_->named(pass.writes);
         for (const auto& parameter : pass.parameters) {
             info.parameters.push_back(parameter.key);
+        }
+        for (const auto& target : pass.renderTargets) {
+            info.renderTargets.push_back(target.name);
         }
         info.reason = pass.reason;
         info.milliseconds = pass.milliseconds;
