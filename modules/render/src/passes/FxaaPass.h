@@ -1,0 +1,24 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <glm/glm.hpp>
+
+#include "passes/PassContext.h"
+#include "vv/render/RenderGraph.h"
+
+namespace vv::render {
+
+struct FxaaInputs {
+    PassContext context;
+    glm::ivec2 targetSize{1, 1};
+};
+
+struct FxaaOutputs {
+    Handle<Texture> output;  ///< the new version of board::kOutput
+};
+
+/// "fxaa": FXAA of board::kComposited into board::kOutput at the target's
+/// size (bilinear taps, so a reduced render size is upscaled on the way).
+FxaaOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs);
+
+}  // namespace vv::render
