@@ -23,7 +23,6 @@
 #include "passes/PassContext.h"
 #include "passes/SsaoPass.h"
 #include "passes/TranslucentPass.h"
-#include "passes/UpscalePass.h"
 #include "passes/VesselShadingPass.h"
 #include "passes/VssShadingPass.h"
 #include "passes/VssSolvePass.h"

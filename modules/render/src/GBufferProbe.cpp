@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "passes/DepthRangePass.h"
 #include "vv/render/GlResources.h"
 
 namespace vv::render {
@@ -103,21 +104,7 @@ std::optional<std::pair<float, float>> GBufferProbe::visibleDepthRange(
         depth_ = std::make_shared<const Image<float>>(
             readRedChannel(g, frame_->linearDepth.objectAs<GlTexture>()));
     }
-    float lo = std::numeric_limits<float>::infinity();
-    float hi = -std::numeric_limits<float>::infinity();
-    for (int y = 0; y < depth_->height(); ++y) {
-        const float* row = depth_->row(y);
-        for (int x = 0; x < depth_->width(); ++x) {
-            if (std::isfinite(row[x])) {
-                lo = std::min(lo, row[x]);
-                hi = std::max(hi, row[x]);
-            }
-        }
-    }
-    if (lo > hi) {
-        return std::nullopt;
-    }
-    return std::make_pair(lo, hi);
+    return finiteDepthRange(*depth_);
 }
 
 }  // namespace vv::render

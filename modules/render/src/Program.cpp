@@ -47,7 +47,8 @@ Program& Program::operator=(Program&& other) noexcept {
 }
 
 void Program::release() noexcept {
-    if (id_ != 0 && gl_ != nullptr && QOpenGLContext::currentContext() == context_) {
+    if (id_ != 0 && gl_ != nullptr && context_ != nullptr &&
+        QOpenGLContext::currentContext() == context_) {
         gl_->glDeleteProgram(id_);
     }
     id_ = 0;

@@ -21,10 +21,7 @@ struct Data {
 void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const Data& d) {
     const PassContext& context = in.context;
     auto& g = *context.gl;
-    context.bindRenderTarget(r, d.target);
-    g.glViewport(0, 0, in.size.x, in.size.y);
-    g.glDisable(GL_DEPTH_TEST);
-    g.glDisable(GL_BLEND);
+    context.beginFullscreen(r, d.target, in.size);
     const Program& program = context.programs->composite;
     program.use();
     g.glActiveTexture(GL_TEXTURE0);
@@ -65,11 +62,10 @@ CompositeOutputs addCompositePass(RenderGraph& graph, const CompositeInputs& inp
             if (inputs.useTranslucent) {
                 d.translucent = b.read<Texture>(board::kTranslucentColor);
             }
-            d.out.color = b.write(
-                inputs.toTexture ? b.create<Texture>(board::kComposited,
-                                                     TextureDescriptor{inputs.size.x, inputs.size.y,
-                                                                       TextureFormat::RGBA8, 1})
-                                 : graph.blackboard().get<Texture>(board::kOutput));
+            d.out.color = b.write(inputs.toTexture
+                                      ? b.create<Texture>(board::kComposited,
+                                                          sized(inputs.size, TextureFormat::RGBA8))
+                                      : graph.blackboard().get<Texture>(board::kOutput));
             d.target =
                 b.declareRenderTarget("composite", RenderTargetAttachments{{d.out.color}, {}});
         },

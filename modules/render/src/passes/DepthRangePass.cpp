@@ -7,28 +7,23 @@
 
 namespace vv::render {
 
-namespace {
-
-/// The finite values' range of `depth`; nullopt when it has none.
-std::optional<std::pair<double, double>> finiteRange(const Image<float>& depth) {
-    double lo = std::numeric_limits<double>::infinity();
-    double hi = -std::numeric_limits<double>::infinity();
+std::optional<std::pair<float, float>> finiteDepthRange(const Image<float>& depth) {
+    float lo = std::numeric_limits<float>::infinity();
+    float hi = -std::numeric_limits<float>::infinity();
     for (int y = 0; y < depth.height(); ++y) {
         const float* row = depth.row(y);
         for (int x = 0; x < depth.width(); ++x) {
             if (std::isfinite(row[x])) {
-                lo = std::min(lo, static_cast<double>(row[x]));
-                hi = std::max(hi, static_cast<double>(row[x]));
+                lo = std::min(lo, row[x]);
+                hi = std::max(hi, row[x]);
             }
         }
     }
-    if (!(lo <= hi)) {
+    if (lo > hi) {
         return std::nullopt;
     }
     return std::make_pair(lo, hi);
 }
-
-}  // namespace
 
 DepthRangeOutputs addDepthRangePass(RenderGraph& graph, const DepthRangeInputs& inputs) {
     struct Data {
@@ -49,7 +44,10 @@ DepthRangeOutputs addDepthRangePass(RenderGraph& graph, const DepthRangeInputs& 
         [external = inputs.external](const RenderGraph::Resources& r, const Data& d) {
             VisibleDepthRange visible;
             if (!external) {
-                visible.range = finiteRange(*r.get(d.depth).value().image);
+                if (const auto range = finiteDepthRange(*r.get(d.depth).value().image)) {
+                    visible.range = std::make_pair(static_cast<double>(range->first),
+                                                   static_cast<double>(range->second));
+                }
             } else if (const auto& whole = r.get(d.external).visibleRange;
                        whole && whole->first <= whole->second) {
                 visible.range = whole;  // the whole frame's range, not this part's

@@ -16,6 +16,10 @@ struct DepthRangeOutputs {
     Handle<CpuValue<VisibleDepthRange>> range;  ///< persistent: cached while the view stays
 };
 
+/// The min / max of the finite values of `depth` (the visible vessels'
+/// linear depth range of a G-buffer's depth); nullopt when there are none.
+[[nodiscard]] std::optional<std::pair<float, float>> finiteDepthRange(const Image<float>& depth);
+
 /// "depth-range": the visible vessels' linear depth range from
 /// board::kLinearDepthImage (finite texels), for a vessel cue without a
 /// shown VSS. Puts board::kVisibleDepthRange.

@@ -13,9 +13,6 @@ GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs
         GeometryOutputs out;
         RenderTargetId target;
     };
-    const auto size = [&](TextureFormat format) {
-        return TextureDescriptor{inputs.size.x, inputs.size.y, format, 1};
-    };
     const Data& data = graph.addPass<Data>(
         "geometry",
         [&](RenderGraph::Builder& b, Data& d) {
@@ -27,16 +24,16 @@ GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs
             b.dependsOn("volume", inputs.volumeRevision);  // volume depth source
             b.dependsOn("iso", inputs.volumeIso);
             GeometryOutputs& out = d.out;
-            out.linearDepth = b.write(
-                b.createPersistent<Texture>(board::kLinearDepth, size(TextureFormat::R32F)));
-            out.normal =
-                b.write(b.createPersistent<Texture>(board::kNormal, size(TextureFormat::RGBA16F)));
-            out.objectId =
-                b.write(b.createPersistent<Texture>(board::kObjectId, size(TextureFormat::R32UI)));
-            out.parameter =
-                b.write(b.createPersistent<Texture>(board::kParameter, size(TextureFormat::R32F)));
-            out.depth =
-                b.write(b.createPersistent<Texture>(board::kDepth, size(TextureFormat::Depth32F)));
+            out.linearDepth = b.write(b.createPersistent<Texture>(
+                board::kLinearDepth, sized(inputs.size, TextureFormat::R32F)));
+            out.normal = b.write(b.createPersistent<Texture>(
+                board::kNormal, sized(inputs.size, TextureFormat::RGBA16F)));
+            out.objectId = b.write(b.createPersistent<Texture>(
+                board::kObjectId, sized(inputs.size, TextureFormat::R32UI)));
+            out.parameter = b.write(b.createPersistent<Texture>(
+                board::kParameter, sized(inputs.size, TextureFormat::R32F)));
+            out.depth = b.write(b.createPersistent<Texture>(
+                board::kDepth, sized(inputs.size, TextureFormat::Depth32F)));
             d.target = b.declareRenderTarget(
                 "gbuffer",
                 RenderTargetAttachments{{out.linearDepth, out.normal, out.objectId, out.parameter},

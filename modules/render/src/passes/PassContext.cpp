@@ -63,6 +63,14 @@ unsigned PassContext::bindRenderTarget(const RenderGraph::Resources& resources,
     return fbo;
 }
 
+void PassContext::beginFullscreen(const RenderGraph::Resources& resources, RenderTargetId id,
+                                  glm::ivec2 size) const {
+    bindRenderTarget(resources, id);
+    gl->glViewport(0, 0, size.x, size.y);
+    gl->glDisable(GL_DEPTH_TEST);
+    gl->glDisable(GL_BLEND);
+}
+
 const GlTexture& glTex(const Texture& texture) {
     return texture.objectAs<GlTexture>();
 }

@@ -5,6 +5,7 @@
 // programs, the framebuffers of declared render targets, the depth-scale
 // texture and the mesh and volume renderers that draw. Internal to vv::render.
 
+#include <glm/glm.hpp>
 #include <optional>
 
 #include "vv/colormaps/DepthScale.h"
@@ -74,7 +75,16 @@ struct PassContext {
     /// Binds (GL_FRAMEBUFFER) the framebuffer of render target `id` of the
     /// running pass; returns it. Throws like GlFramebufferCache::framebuffer().
     unsigned bindRenderTarget(const RenderGraph::Resources& resources, RenderTargetId id) const;
+    /// What a full-screen pass starts with: bindRenderTarget(), a viewport of
+    /// `size`, no depth test, no blending.
+    void beginFullscreen(const RenderGraph::Resources& resources, RenderTargetId id,
+                         glm::ivec2 size) const;
 };
+
+/// A single-sampled texture of `size` and `format`.
+[[nodiscard]] inline TextureDescriptor sized(glm::ivec2 size, TextureFormat format) noexcept {
+    return TextureDescriptor{size.x, size.y, format, 1};
+}
 
 /// The GL texture behind a graph texture; throws RenderGraphError for another backend's.
 [[nodiscard]] const GlTexture& glTex(const Texture& texture);

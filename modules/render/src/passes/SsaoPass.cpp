@@ -23,10 +23,7 @@ struct SsaoData {
 void occlude(const SsaoInputs& in, const RenderGraph::Resources& r, const SsaoData& d) {
     const PassContext& context = in.context;
     auto& g = *context.gl;
-    context.bindRenderTarget(r, d.target);
-    g.glViewport(0, 0, in.size.x, in.size.y);
-    g.glDisable(GL_DEPTH_TEST);
-    g.glDisable(GL_BLEND);
+    context.beginFullscreen(r, d.target, in.size);
     const SolvedFrame* vss = in.useVss ? r.get(d.shown).value().frame.get() : nullptr;
     const Program& program = context.programs->ssao;
     program.use();
@@ -66,8 +63,7 @@ SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs) {
                 d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
             }
             d.out.raw = b.write(b.createPersistent<Texture>(
-                board::kAoRaw,
-                TextureDescriptor{inputs.size.x, inputs.size.y, TextureFormat::RG32F, 1}));
+                board::kAoRaw, sized(inputs.size, TextureFormat::RG32F)));
             d.target = b.declareRenderTarget("ssao", RenderTargetAttachments{{d.out.raw}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const SsaoData& d) { occlude(inputs, r, d); });
@@ -85,17 +81,14 @@ AoBlurOutputs addAoBlurPass(RenderGraph& graph, const AoBlurInputs& inputs) {
         "ao-blur",
         [&](RenderGraph::Builder& b, Data& d) {
             d.raw = b.read<Texture>(board::kAoRaw);
-            d.out.ao = b.write(b.createPersistent<Texture>(
-                board::kAo, TextureDescriptor{inputs.size.x, inputs.size.y, TextureFormat::R8, 1}));
+            d.out.ao = b.write(
+                b.createPersistent<Texture>(board::kAo, sized(inputs.size, TextureFormat::R8)));
             d.target = b.declareRenderTarget("ao", RenderTargetAttachments{{d.out.ao}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const Data& d) {
             const PassContext& context = inputs.context;
             auto& g = *context.gl;
-            context.bindRenderTarget(r, d.target);
-            g.glViewport(0, 0, inputs.size.x, inputs.size.y);
-            g.glDisable(GL_DEPTH_TEST);
-            g.glDisable(GL_BLEND);
+            context.beginFullscreen(r, d.target, inputs.size);
             const Program& program = context.programs->aoBlur;
             program.use();
             g.glActiveTexture(GL_TEXTURE0);

@@ -15,18 +15,15 @@ TranslucentOutputs addTranslucentPass(RenderGraph& graph, const TranslucentInput
         TranslucentOutputs out;
         RenderTargetId target;
     };
-    const auto size = [&](TextureFormat format) {
-        return TextureDescriptor{inputs.size.x, inputs.size.y, format, 1};
-    };
     const Data& data = graph.addPass<Data>(
         "translucent",
         [&](RenderGraph::Builder& b, Data& d) {
             d.opaqueDepth = b.read<Texture>(board::kDepth);
             d.cue = b.read<CpuValue<ShadedCue>>(board::kVesselCue);
-            d.depth =
-                b.write(b.create<Texture>("translucent-depth", size(TextureFormat::Depth32F)));
-            d.out.layer =
-                b.write(b.create<Texture>(board::kTranslucentColor, size(TextureFormat::RGBA16F)));
+            d.depth = b.write(b.create<Texture>("translucent-depth",
+                                                sized(inputs.size, TextureFormat::Depth32F)));
+            d.out.layer = b.write(b.create<Texture>(board::kTranslucentColor,
+                                                    sized(inputs.size, TextureFormat::RGBA16F)));
             d.target = b.declareRenderTarget("translucent",
                                              RenderTargetAttachments{{d.out.layer}, d.depth});
         },

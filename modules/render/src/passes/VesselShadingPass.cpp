@@ -55,7 +55,7 @@ VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadin
     cueKey.fogStrength = inputs.cue.fogStrength;
     cueKey.fresnelExponent = inputs.cue.fresnelExponent;
     cueKey.background = inputs.background;
-    const TextureDescriptor colorFormat{inputs.size.x, inputs.size.y, TextureFormat::RGBA8, 1};
+    const TextureDescriptor colorFormat = sized(inputs.size, TextureFormat::RGBA8);
     const Data& data = graph.addPass<Data>(
         "vessel-shading",
         [&](RenderGraph::Builder& b, Data& d) {

@@ -22,10 +22,7 @@ void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Da
     auto& g = *context.gl;
     const VssSettings& settings = in.settings;
     context.scaleLut->upload(settings.scale);
-    context.bindRenderTarget(r, d.target);
-    g.glViewport(0, 0, in.size.x, in.size.y);
-    g.glDisable(GL_DEPTH_TEST);
-    g.glDisable(GL_BLEND);
+    context.beginFullscreen(r, d.target, in.size);
     const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
     g.glClearBufferfv(GL_COLOR, 0, clear);
     const ShownVss& shown = r.get(d.shown).value();
@@ -84,9 +81,8 @@ VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& 
             d.slope = b.read<Texture>(board::kVssSlope);
             d.linearDepth = b.read<Texture>(board::kLinearDepth);
             d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
-            d.out.color = b.write(b.create<Texture>(
-                board::kVssColor,
-                TextureDescriptor{inputs.size.x, inputs.size.y, TextureFormat::RGBA8, 1}));
+            d.out.color = b.write(
+                b.create<Texture>(board::kVssColor, sized(inputs.size, TextureFormat::RGBA8)));
             d.target = b.declareRenderTarget("vss", RenderTargetAttachments{{d.out.color}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const Data& d) { shade(inputs, r, d); });

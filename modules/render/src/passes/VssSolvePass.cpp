@@ -137,9 +137,6 @@ SolverKey solverKey(const vss::SolverOptions& options, const vss::DepthRange& ra
 }
 
 VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs) {
-    const auto size = [&](TextureFormat format) {
-        return TextureDescriptor{inputs.size.x, inputs.size.y, format, 1};
-    };
     const Data& data = graph.addPass<Data>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Data& d) {
@@ -153,11 +150,11 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
                 d.solved = b.read<SolvedFrameRef>(board::kSolvedImport);
             }
             VssSolveOutputs& out = d.out;
-            out.height =
-                b.write(b.createPersistent<Texture>(board::kVssHeight, size(TextureFormat::R32F)));
+            out.height = b.write(b.createPersistent<Texture>(
+                board::kVssHeight, sized(inputs.size, TextureFormat::R32F)));
             out.slope = b.write(b.createPersistent<Texture>(
                 board::kVssSlope, inputs.cpuSlopes
-                                      ? size(TextureFormat::RGBA32F)
+                                      ? sized(inputs.size, TextureFormat::RGBA32F)
                                       : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
             out.shown = b.write(b.createPersistent<CpuValue<ShownVss>>(board::kShownVss, {}));
             out.input = b.write(b.createPersistent<CpuValue<SolveInput>>(board::kSolveInput, {}));

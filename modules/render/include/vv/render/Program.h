@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QPointer>
 #include <cstddef>
 #include <functional>
 #include <glm/glm.hpp>
@@ -19,7 +20,8 @@ namespace vv::render {
 ///
 /// Made with the context current (buildProgram()); that context must be
 /// current whenever it is used. Deleted by release() or the destructor when
-/// its context is current (otherwise it dies with the context). Move-only.
+/// its context is current (otherwise it dies with the context, and a
+/// destroyed context's program is never deleted in another). Move-only.
 class Program {
   public:
     /// An empty program (valid() false).
@@ -70,7 +72,7 @@ class Program {
     };
 
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
-    QOpenGLContext* context_ = nullptr;
+    QPointer<QOpenGLContext> context_;  ///< null once that context is destroyed
     unsigned id_ = 0;
     mutable std::unordered_map<std::string, int, NameHash, std::equal_to<>> locations_;
 };
