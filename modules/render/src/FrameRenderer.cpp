@@ -204,6 +204,33 @@ struct FrameRenderer::Impl {
                            .volume = &volume};
     }
 
+    /// Puts the frame's target on the blackboard (board::kOutput).
+    void importTarget(RenderGraph& graph, const FrameTarget& target) const {
+        const TextureDescriptor descriptor{target.width, target.height, TextureFormat::RGBA8, 1};
+        graph.blackboard().put(
+            board::kOutput,
+            graph.importResource(
+                board::kOutput,
+                Texture(descriptor, std::make_shared<GlTexture>(descriptor, target.framebuffer)),
+                ImportOptions{.target = true, .revision = 0}));
+    }
+
+    /// Puts what the solve takes from outside on the blackboard: the
+    /// worker's latest solve (asynchronous mode) and the external VSS.
+    void importSolveInputs(RenderGraph& graph, bool async) const {
+        if (async) {
+            auto [latest, revision] = worker->latest();
+            graph.blackboard().put(
+                board::kSolvedImport,
+                graph.importResource(board::kSolvedImport, SolvedFrameRef{std::move(latest)},
+                                     ImportOptions{.target = false, .revision = revision}));
+        }
+        graph.blackboard().put(
+            board::kExternalVss,
+            graph.importResource(board::kExternalVss, ExternalFrame{external, externalVisible},
+                                 ImportOptions{.revision = externalVersion}));
+    }
+
     /// Takes what a frame's graph produced for the renderer's API.
     void keepResults(const RenderGraph& graph, const GeometryOutputs& geometry,
                      Handle<CpuValue<DepthImage>> depth, const VssSolveOutputs* solve) {
@@ -221,7 +248,8 @@ struct FrameRenderer::Impl {
         if (const ShownVss* shown = resultValue(graph, solve->shown)) {
             shownFrame = shown->frame;
         }
-        if (const SolveInput* input = resultValue(graph, solve->input); input && input->depth) {
+        if (const SolveInput* input = resultValue(graph, solve->input);
+            input != nullptr && input->depth) {
             lastDepth = input->depth;
             lastDepthView = input->view;
         }
@@ -481,14 +509,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const float pixelScale = pixelScaleOf(camera, size.y);
 
     RenderGraph graph(*impl.cache);
-    Blackboard& blackboard = graph.blackboard();
-    const TextureDescriptor targetDescriptor{target.width, target.height, TextureFormat::RGBA8, 1};
-    blackboard.put(
-        board::kOutput,
-        graph.importResource("output",
-                             Texture(targetDescriptor, std::make_shared<GlTexture>(
-                                                           targetDescriptor, target.framebuffer)),
-                             ImportOptions{.target = true, .revision = 0}));
+    impl.importTarget(graph, target);
     const auto& scene = meshes_.scene();
     const GeometryOutputs geometry = addGeometryPass(
         graph, GeometryInputs{.context = context,
@@ -519,16 +540,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
 
     // The solve: inline, or on the worker (whose latest solve is an import).
     const bool async = mode_ == SolveMode::Asynchronous && impl.worker != nullptr;
-    if (async) {
-        auto [latest, revision] = impl.worker->latest();
-        blackboard.put(board::kSolvedImport,
-                       graph.importResource(board::kSolvedImport, SolvedFrameRef{std::move(latest)},
-                                            ImportOptions{.target = false, .revision = revision}));
-    }
-    blackboard.put(
-        board::kExternalVss,
-        graph.importResource(board::kExternalVss, ExternalFrame{external, impl.externalVisible},
-                             ImportOptions{.revision = impl.externalVersion}));
+    impl.importSolveInputs(graph, async);
     const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
     const std::uint64_t depthView = viewKey(camera.viewMatrix(), projection, size, sceneRevision);
     const VssSolveOutputs solve = addVssSolvePass(

@@ -13,9 +13,7 @@
 
 namespace vv::render {
 
-using detail::contains;
 using detail::inQuotes;
-using detail::VersionRef;
 
 void RenderGraph::Impl::validateReads() const {
     for (const Pass& pass : passes) {

@@ -49,7 +49,7 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
 }  // namespace
 
 CompositeOutputs addCompositePass(RenderGraph& graph, const CompositeInputs& inputs) {
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "composite",
         [&](RenderGraph::Builder& b, Data& d) {
             d.vessels = b.read<Texture>(board::kVesselColor);

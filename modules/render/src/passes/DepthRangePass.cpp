@@ -31,7 +31,7 @@ DepthRangeOutputs addDepthRangePass(RenderGraph& graph, const DepthRangeInputs& 
         Handle<ExternalFrame> external;
         DepthRangeOutputs out;
     };
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "depth-range",
         [&](RenderGraph::Builder& b, Data& d) {
             d.external = b.read<ExternalFrame>(board::kExternalVss);

@@ -10,7 +10,7 @@ DepthReadbackOutputs addDepthReadbackPass(RenderGraph& graph, const DepthReadbac
         Handle<Texture> depth;
         DepthReadbackOutputs out;
     };
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "depth-readback",
         [](RenderGraph::Builder& b, Data& d) {
             d.depth = b.read<Texture>(board::kLinearDepth);

@@ -20,7 +20,7 @@ struct FinalData {
 /// A pass named `name` from board::kComposited into board::kOutput.
 template <class Execute>
 FinalOutputs addFinalPass(RenderGraph& graph, std::string_view name, Execute execute) {
-    const FinalData& data = graph.addPass<FinalData>(
+    const auto& data = graph.addPass<FinalData>(
         name,
         [&](RenderGraph::Builder& b, FinalData& d) {
             d.input = b.read<Texture>(board::kComposited);

@@ -13,7 +13,7 @@ GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs
         GeometryOutputs out;
         RenderTargetId target;
     };
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "geometry",
         [&](RenderGraph::Builder& b, Data& d) {
             b.dependsOn("view", inputs.camera.viewMatrix());

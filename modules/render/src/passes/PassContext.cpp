@@ -56,11 +56,9 @@ void DepthScaleLut::upload(colormaps::DepthScale scale) {
     uploaded_ = scale;
 }
 
-unsigned PassContext::bindRenderTarget(const RenderGraph::Resources& resources,
-                                       RenderTargetId id) const {
-    const unsigned fbo = framebuffers->framebuffer(resources.renderTarget(id));
-    gl->glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-    return fbo;
+void PassContext::bindRenderTarget(const RenderGraph::Resources& resources,
+                                   RenderTargetId id) const {
+    gl->glBindFramebuffer(GL_FRAMEBUFFER, framebuffers->framebuffer(resources.renderTarget(id)));
 }
 
 void PassContext::beginFullscreen(const RenderGraph::Resources& resources, RenderTargetId id,

@@ -73,8 +73,8 @@ struct PassContext {
     VolumeRenderer* volume = nullptr;
 
     /// Binds (GL_FRAMEBUFFER) the framebuffer of render target `id` of the
-    /// running pass; returns it. Throws like GlFramebufferCache::framebuffer().
-    unsigned bindRenderTarget(const RenderGraph::Resources& resources, RenderTargetId id) const;
+    /// running pass. Throws like GlFramebufferCache::framebuffer().
+    void bindRenderTarget(const RenderGraph::Resources& resources, RenderTargetId id) const;
     /// What a full-screen pass starts with: bindRenderTarget(), a viewport of
     /// `size`, no depth test, no blending.
     void beginFullscreen(const RenderGraph::Resources& resources, RenderTargetId id,

@@ -50,7 +50,7 @@ void occlude(const SsaoInputs& in, const RenderGraph::Resources& r, const SsaoDa
 }  // namespace
 
 SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs) {
-    const SsaoData& data = graph.addPass<SsaoData>(
+    const auto& data = graph.addPass<SsaoData>(
         "ssao",
         [&](RenderGraph::Builder& b, SsaoData& d) {
             b.dependsOn("radius", inputs.radius);
@@ -77,7 +77,7 @@ AoBlurOutputs addAoBlurPass(RenderGraph& graph, const AoBlurInputs& inputs) {
         AoBlurOutputs out;
         RenderTargetId target;
     };
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "ao-blur",
         [&](RenderGraph::Builder& b, Data& d) {
             d.raw = b.read<Texture>(board::kAoRaw);

@@ -15,7 +15,7 @@ TranslucentOutputs addTranslucentPass(RenderGraph& graph, const TranslucentInput
         TranslucentOutputs out;
         RenderTargetId target;
     };
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "translucent",
         [&](RenderGraph::Builder& b, Data& d) {
             d.opaqueDepth = b.read<Texture>(board::kDepth);

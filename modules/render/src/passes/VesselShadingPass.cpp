@@ -56,7 +56,7 @@ VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadin
     cueKey.fresnelExponent = inputs.cue.fresnelExponent;
     cueKey.background = inputs.background;
     const TextureDescriptor colorFormat = sized(inputs.size, TextureFormat::RGBA8);
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "vessel-shading",
         [&](RenderGraph::Builder& b, Data& d) {
             b.dependsOn("cue", cueKey);

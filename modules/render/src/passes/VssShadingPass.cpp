@@ -74,7 +74,7 @@ void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Da
 }  // namespace
 
 VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& inputs) {
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "vss-shading",
         [&](RenderGraph::Builder& b, Data& d) {
             d.height = b.read<Texture>(board::kVssHeight);

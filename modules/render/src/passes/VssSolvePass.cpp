@@ -137,7 +137,7 @@ SolverKey solverKey(const vss::SolverOptions& options, const vss::DepthRange& ra
 }
 
 VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs) {
-    const Data& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<Data>(
         "vss-solve",
         [&](RenderGraph::Builder& b, Data& d) {
             b.dependsOn("solver", solverKey(inputs.options, inputs.range));
