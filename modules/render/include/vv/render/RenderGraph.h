@@ -129,14 +129,19 @@ struct ResourceInfo {
 ///
 ///     RenderGraph graph(cache);
 ///     auto screen = graph.importResource("screen", screenTexture, {.target = true});
-///     struct Geo { Handle<Texture> depth; };
+///     struct Geo { Handle<Texture> depth; RenderTargetId target; };
 ///     const auto& geo = graph.addPass<Geo>("geometry",
 ///         [&](RenderGraph::Builder& b, Geo& d) {
 ///             b.dependsOn("camera", camera.viewMatrix());
 ///             d.depth = b.write(b.createPersistent<Texture>("depth", depthFormat));
+///             d.target = b.declareRenderTarget("gbuffer", {{d.depth}, {}});
 ///         },
-///         [=](const RenderGraph::Resources& r, const Geo& d) { draw(r.get(d.depth)); });
-///     ... more passes ...
+///         [camera](const RenderGraph::Resources& r, const Geo& d) {
+///             bind(r.renderTarget(d.target));
+///             draw(camera);
+///         });
+///     graph.blackboard().put("depth", geo.depth);
+///     ... more passes, each reading what it needs: b.read<Texture>("depth") ...
 ///     graph.execute(&glObserver);
 ///
 /// Rules (RenderGraphError unless said otherwise):
