@@ -5,9 +5,6 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
-#include <QOffscreenSurface>
-#include <QOpenGLContext>
-#include <QOpenGLFramebufferObject>
 #include <cmath>
 #include <memory>
 #include <string>
@@ -28,6 +25,7 @@ using vv::render::MeshStyle;
 using vv::render::ObjectStyle;
 using vv::render::OffscreenOptions;
 using vv::render::PassState;
+using vv::render::test::FrameHarness;
 
 /// Adds a point array `name` = a * x + b to every mesh.
 void addArray(vv::scene::Scene& scene, const std::string& name, float a, float b) {
@@ -51,63 +49,6 @@ vv::scene::Scene scene() {
     addArray(s, "pressure", 10.0F, 200.0F);
     return s;
 }
-
-/// A FrameRenderer in its own context, drawing into an FBO, so that a test can
-/// read the object id of every pixel (FrameRenderer::probe) beside its colour.
-class FrameHarness {
-  public:
-    FrameHarness(int width, int height) : width_(width), height_(height) {
-        if (!vv::render::test::makeGl41Current(surface_, context_)) {
-            throw vv::RenderError("no OpenGL 4.1 context for the test");
-        }
-        fbo_ = std::make_unique<QOpenGLFramebufferObject>(width, height);
-        renderer_.initialize();
-    }
-    ~FrameHarness() {
-        context_.makeCurrent(&surface_);
-        renderer_.release();
-        fbo_.reset();
-        context_.doneCurrent();
-    }
-    FrameHarness(const FrameHarness&) = delete;
-    FrameHarness& operator=(const FrameHarness&) = delete;
-
-    void setScene(const vv::scene::Scene& s) {
-        renderer_.meshRenderer().setScene(std::make_shared<const vv::scene::Scene>(s));
-        camera_.setViewport(width_, height_);
-        camera_.fit(s.bounds());
-    }
-
-    QImage render(const MeshStyle& style, const vv::render::FrameSettings& settings) {
-        renderer_.meshRenderer().setStyle(style);
-        renderer_.render(camera_, settings,
-                         vv::render::FrameTarget{fbo_->handle(), width_, height_});
-        return fbo_->toImage().convertToFormat(QImage::Format_RGB32);
-    }
-
-    /// Object id per pixel of the last frame, rows top-down like the image.
-    std::vector<std::uint32_t> objectIds() {
-        std::vector<std::uint32_t> ids(static_cast<std::size_t>(width_ * height_), 0U);
-        for (int y = 0; y < height_; ++y) {
-            for (int x = 0; x < width_; ++x) {
-                const auto sample = renderer_.probe(camera_, x, height_ - 1 - y);
-                ids[static_cast<std::size_t>(y * width_ + x)] = sample ? sample->objectId : 0U;
-            }
-        }
-        return ids;
-    }
-
-    vv::render::FrameRenderer& renderer() noexcept { return renderer_; }
-
-  private:
-    int width_;
-    int height_;
-    QOffscreenSurface surface_;
-    QOpenGLContext context_;
-    std::unique_ptr<QOpenGLFramebufferObject> fbo_;
-    vv::render::FrameRenderer renderer_;
-    vv::render::Camera camera_;
-};
 
 class ObjectStyleTest : public vv::render::test::GlRenderTest {
   protected:

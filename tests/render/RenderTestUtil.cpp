@@ -13,6 +13,44 @@
 
 namespace vv::render::test {
 
+FrameHarness::FrameHarness(int width, int height) : width_(width), height_(height) {
+    if (!makeGl41Current(surface_, context_)) {
+        throw vv::RenderError("no OpenGL 4.1 context for the test");
+    }
+    fbo_ = std::make_unique<QOpenGLFramebufferObject>(width, height);
+    renderer_.initialize();
+}
+
+FrameHarness::~FrameHarness() {
+    context_.makeCurrent(&surface_);
+    renderer_.release();
+    fbo_.reset();
+    context_.doneCurrent();
+}
+
+void FrameHarness::setScene(const vv::scene::Scene& scene) {
+    renderer_.meshRenderer().setScene(std::make_shared<const vv::scene::Scene>(scene));
+    camera_.setViewport(width_, height_);
+    camera_.fit(scene.bounds());
+}
+
+QImage FrameHarness::render(const MeshStyle& style, const FrameSettings& settings) {
+    renderer_.meshRenderer().setStyle(style);
+    renderer_.render(camera_, settings, FrameTarget{fbo_->handle(), width_, height_});
+    return fbo_->toImage().convertToFormat(QImage::Format_RGB32);
+}
+
+std::vector<std::uint32_t> FrameHarness::objectIds() {
+    std::vector<std::uint32_t> ids(static_cast<std::size_t>(width_ * height_), 0U);
+    for (int y = 0; y < height_; ++y) {
+        for (int x = 0; x < width_; ++x) {
+            const auto sample = renderer_.probe(camera_, x, height_ - 1 - y);
+            ids[static_cast<std::size_t>(y * width_ + x)] = sample ? sample->objectId : 0U;
+        }
+    }
+    return ids;
+}
+
 PassState passState(const OffscreenRenderer& renderer, const std::string& pass) {
     for (const auto& info : renderer.lastPasses()) {
         if (info.name == pass) {

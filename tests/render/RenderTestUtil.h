@@ -9,12 +9,16 @@
 #include <QImage>
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
+#include <QOpenGLFramebufferObject>
 #include <QRgb>
+#include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "GlTestSupport.h"
+#include "vv/render/FrameRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/scene/Mesh.h"
 
@@ -45,6 +49,38 @@ OffscreenOptions exactOptions(int width, int height);
 
 /// An 8-bit pixel as a colour in [0, 1].
 glm::vec3 toVec(QRgb p);
+
+/// A FrameRenderer in its own context, drawing into an FBO, so that a test can
+/// read the object id of every pixel (FrameRenderer::probe) beside its colour.
+class FrameHarness {
+  public:
+    /// Throws RenderError when there is no OpenGL 4.1 context.
+    FrameHarness(int width, int height);
+    ~FrameHarness();
+    FrameHarness(const FrameHarness&) = delete;
+    FrameHarness& operator=(const FrameHarness&) = delete;
+    FrameHarness(FrameHarness&&) = delete;
+    FrameHarness& operator=(FrameHarness&&) = delete;
+
+    /// Shows `scene` with the camera fitted to it.
+    void setScene(const vv::scene::Scene& scene);
+    /// Draws a frame of `style` and `settings`; its pixels.
+    QImage render(const MeshStyle& style, const FrameSettings& settings);
+    /// Object id per pixel of the last frame, rows top-down like the image.
+    std::vector<std::uint32_t> objectIds();
+
+    FrameRenderer& renderer() noexcept { return renderer_; }
+    [[nodiscard]] const Camera& camera() const noexcept { return camera_; }
+
+  private:
+    int width_;
+    int height_;
+    QOffscreenSurface surface_;
+    QOpenGLContext context_;
+    std::unique_ptr<QOpenGLFramebufferObject> fbo_;
+    FrameRenderer renderer_;
+    Camera camera_;
+};
 
 /// Base fixture: a QGuiApplication for the suite, the test background and renderer helpers.
 class GlRenderTest : public ::testing::Test {

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "vv/core/Error.h"
+#include "vv/render/GlFramebufferCache.h"
 
 namespace vv::render {
 
@@ -149,6 +150,9 @@ GlTexture::GlTexture(const TextureDescriptor& descriptor, unsigned fbo) noexcept
     : descriptor_(descriptor), fbo_(fbo) {}
 
 GlTexture::~GlTexture() {
+    if (const auto cache = framebufferCache_.lock()) {
+        cache->forget(texture_);
+    }
     if (!owned_ || gl_ == nullptr || QOpenGLContext::currentContext() != context_) {
         return;
     }
@@ -160,11 +164,28 @@ unsigned GlTexture::target() const noexcept {
     return descriptor_.samples > 1 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;
 }
 
-GlResourceAllocator::GlResourceAllocator() : gl_(&currentGl41()) {}
+Image<float> readRedChannel(QOpenGLFunctions_4_1_Core& gl, const GlTexture& texture) {
+    const auto& d = texture.descriptor();
+    Image<float> image(d.width, d.height);
+    gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, texture.framebuffer());
+    gl.glReadBuffer(GL_COLOR_ATTACHMENT0);
+    gl.glPixelStorei(GL_PACK_ALIGNMENT, 4);
+    gl.glReadPixels(0, 0, d.width, d.height, GL_RED, GL_FLOAT, image.data());
+    gl.glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    checkGlError(gl, "reading a texture back");
+    return image;
+}
+
+GlResourceAllocator::GlResourceAllocator()
+    : gl_(&currentGl41()), framebuffers_(std::make_shared<GlFramebufferCache>(*gl_)) {}
+
+GlResourceAllocator::~GlResourceAllocator() = default;
 
 std::unique_ptr<TextureObject> GlResourceAllocator::createTexture(
     const TextureDescriptor& descriptor) {
-    return std::make_unique<GlTexture>(*gl_, descriptor);
+    auto texture = std::make_unique<GlTexture>(*gl_, descriptor);
+    texture->setFramebufferCache(framebuffers_);
+    return texture;
 }
 
 GlPassObserver::GlPassObserver() : gl_(&currentGl41()), context_(QOpenGLContext::currentContext()) {

@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <string_view>
 
 #include "vv/core/Error.h"
 #include "vv/render/BackFaceCulling.h"
@@ -350,7 +351,7 @@ QOpenGLFunctions_4_1_Core& MeshRenderer::gl() const {
 }
 
 bool MeshRenderer::initialized() const noexcept {
-    return gl_ != nullptr && program_ != 0;
+    return gl_ != nullptr && program_.valid();
 }
 
 void MeshRenderer::initialize() {
@@ -366,9 +367,9 @@ void MeshRenderer::initialize() {
     meshes_.clear();
     previews_.clear();
     previewTriangles_.clear();
-    program_ = 0;
-    gbufferProgram_ = 0;
-    deferredProgram_ = 0;
+    program_ = Program();
+    gbufferProgram_ = Program();
+    deferredProgram_ = Program();
     emptyVao_ = 0;
     lutTexture_ = 0;
     cueLutTexture_ = 0;
@@ -383,18 +384,14 @@ void MeshRenderer::initialize() {
     // mesh.vert binds its attributes with layout qualifiers.
     const std::string_view forward[] = {kMaterial, ":/vv/shaders/mesh.frag"};
     const std::string_view deferred[] = {kMaterial, ":/vv/shaders/vessel.frag"};
-    program_ = buildProgram(f, kMeshVertex, forward, "mesh");
     try {
-        gbufferProgram_ = buildProgram(f, kMeshVertex, ":/vv/shaders/gbuffer.frag", "G-buffer");
+        program_ = Program(f, kMeshVertex, forward, "mesh");
+        gbufferProgram_ = Program(f, kMeshVertex, ":/vv/shaders/gbuffer.frag", "G-buffer");
         deferredProgram_ =
-            buildProgram(f, ":/vv/shaders/fullscreen.vert", deferred, "deferred vessel shading");
+            Program(f, ":/vv/shaders/fullscreen.vert", deferred, "deferred vessel shading");
     } catch (...) {
-        f.glDeleteProgram(program_);
-        program_ = 0;
-        if (gbufferProgram_ != 0) {
-            f.glDeleteProgram(gbufferProgram_);
-            gbufferProgram_ = 0;
-        }
+        program_.release();
+        gbufferProgram_.release();
         throw;
     }
     f.glGenVertexArrays(1, &emptyVao_);
@@ -431,18 +428,9 @@ void MeshRenderer::release() noexcept {
     }
     objectsStale_ = true;
     uploadedCueScale_.reset();
-    if (program_ != 0) {
-        f.glDeleteProgram(program_);
-        program_ = 0;
-    }
-    if (gbufferProgram_ != 0) {
-        f.glDeleteProgram(gbufferProgram_);
-        gbufferProgram_ = 0;
-    }
-    if (deferredProgram_ != 0) {
-        f.glDeleteProgram(deferredProgram_);
-        deferredProgram_ = 0;
-    }
+    program_.release();
+    gbufferProgram_.release();
+    deferredProgram_.release();
     if (emptyVao_ != 0) {
         f.glDeleteVertexArrays(1, &emptyVao_);
         emptyVao_ = 0;
@@ -714,9 +702,9 @@ void MeshRenderer::uploadObjects() {
     objectsStale_ = false;
 }
 
-void MeshRenderer::useObject(unsigned program, std::size_t index) {
+void MeshRenderer::useObject(const Program& program, std::size_t index) {
     auto& f = gl();
-    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program, name); };
+    const auto loc = [&](std::string_view name) { return program.location(name); };
     const ObjectStyle& o = style_.object(index);
     const glm::vec3 color = o.color.value_or(style_.vesselColor);
     const auto range = objectRange(index).value_or(std::make_pair(0.0F, 1.0F));
@@ -798,15 +786,15 @@ void MeshRenderer::prepareMaterial(const VesselCueParameters& cue) {
     }
 }
 
-void MeshRenderer::useMaterial(unsigned program, const VesselCueParameters& cue) {
+void MeshRenderer::useMaterial(const Program& program, const VesselCueParameters& cue) {
     auto& f = gl();
     const bool useArray = !style_.array.empty();
     // An array without any finite value shows no-data everywhere.
     const std::pair<float, float> range = effectiveRange_.value_or(std::make_pair(0.0F, 1.0F));
     const glm::vec3 noData = style_.noDataColor.value_or(colormaps::noDataColor(style_.colorMap));
     const Lighting& light = lighting_;
-    f.glUseProgram(program);
-    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program, name); };
+    program.use();
+    const auto loc = [&](std::string_view name) { return program.location(name); };
     f.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
     f.glUniform3f(loc("uBaseColor"), style_.vesselColor.r, style_.vesselColor.g,
                   style_.vesselColor.b);
@@ -898,7 +886,7 @@ std::uint64_t MeshStyle::geometryKey() const noexcept {
 
 void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
     auto& f = gl();
-    if (program_ == 0) {
+    if (!program_.valid()) {
         throw RenderError("MeshRenderer::draw without a shader program");
     }
     if (meshes_.empty()) {
@@ -915,7 +903,7 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
     f.glDisable(GL_BLEND);
     useMaterial(program_, cue);
     lastCulledMeshes_ = 0;
-    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
+    const auto loc = [&](std::string_view name) { return program_.location(name); };
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
@@ -938,7 +926,7 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
 void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbuffer,
                                 const VesselCueParameters& cue) {
     auto& f = gl();
-    if (deferredProgram_ == 0) {
+    if (!deferredProgram_.valid()) {
         throw RenderError("MeshRenderer::shadeGBuffer without a shader program");
     }
     prepareMaterial(cue);
@@ -946,9 +934,7 @@ void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbu
     f.glDepthMask(GL_FALSE);
     f.glDisable(GL_BLEND);
     useMaterial(deferredProgram_, cue);
-    const auto loc = [&](const char* name) {
-        return f.glGetUniformLocation(deferredProgram_, name);
-    };
+    const auto loc = [&](std::string_view name) { return deferredProgram_.location(name); };
     // A perspective projection maps view x / -z to ndc x * P[0][0] (y likewise).
     const glm::mat4 projection = camera.projectionMatrix();
     f.glUniform2f(loc("uViewScale"), 1.0F / projection[0][0], 1.0F / projection[1][1]);
@@ -990,7 +976,7 @@ bool MeshRenderer::hasTranslucent() const noexcept {
 void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParameters& cue,
                                    std::size_t level) {
     auto& f = gl();
-    if (program_ == 0) {
+    if (!program_.valid()) {
         throw RenderError("MeshRenderer::drawTranslucent without a shader program");
     }
     const std::vector<GpuMesh>& drawn = meshesOf(level);
@@ -1010,7 +996,7 @@ void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParamete
     const glm::mat4 projection = camera.projectionMatrix();
     const glm::mat3 normalMatrix = glm::transpose(glm::inverse(glm::mat3(view)));
     useMaterial(program_, cue);
-    const auto loc = [&](const char* name) { return f.glGetUniformLocation(program_, name); };
+    const auto loc = [&](std::string_view name) { return program_.location(name); };
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
@@ -1044,7 +1030,7 @@ void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParamete
 
 void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     auto& f = gl();
-    if (gbufferProgram_ == 0) {
+    if (!gbufferProgram_.valid()) {
         throw RenderError("MeshRenderer::drawGBuffer without a shader program");
     }
     if (meshes_.empty()) {
@@ -1060,10 +1046,8 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     f.glDepthFunc(GL_LESS);
     f.glDepthMask(GL_TRUE);
     f.glDisable(GL_BLEND);
-    f.glUseProgram(gbufferProgram_);
-    const auto loc = [&](const char* name) {
-        return f.glGetUniformLocation(gbufferProgram_, name);
-    };
+    gbufferProgram_.use();
+    const auto loc = [&](std::string_view name) { return gbufferProgram_.location(name); };
     f.glUniformMatrix4fv(loc("uView"), 1, GL_FALSE, &view[0][0]);
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);

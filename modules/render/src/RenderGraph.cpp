@@ -1,34 +1,19 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// Declaring passes and resources, and executing the compiled graph.
 #include "vv/render/RenderGraph.h"
 
 #include <algorithm>
-#include <functional>
-#include <queue>
 #include <string>
 #include <utility>
-#include <variant>
 #include <vector>
+
+#include "RenderGraphImpl.h"
 
 namespace vv::render {
 
-namespace {
-
-/// One version of one resource, by index.
-struct VersionRef {
-    std::uint32_t index = 0;
-    std::uint32_t version = 0;
-    friend bool operator==(const VersionRef&, const VersionRef&) = default;
-};
-
-std::string inQuotes(std::string_view name) {
-    return "'" + std::string(name) + "'";
-}
-
-bool contains(const std::vector<VersionRef>& refs, VersionRef ref) {
-    return std::find(refs.begin(), refs.end(), ref) != refs.end();
-}
-
-}  // namespace
+using detail::contains;
+using detail::inQuotes;
+using detail::VersionRef;
 
 std::string_view toString(PassState state) noexcept {
     switch (state) {
@@ -56,452 +41,184 @@ std::string_view toString(ResourceKind kind) noexcept {
     return "unknown";
 }
 
-struct RenderGraph::Impl {
-    /// One version of a resource: who writes it, who reads it.
-    struct Version {
-        std::optional<std::size_t> writer;  ///< none for version 0
-        std::vector<std::size_t> readers;
-        bool target = false;
-        int refCount = 0;         ///< compile(): consumers left after culling
-        std::uint64_t stamp = 0;  ///< execute(): identifies the content
-    };
+void RenderGraph::Impl::requireBuilding() const {
+    if (compiled) {
+        throw RenderGraphError("render graph: cannot declare passes or resources after compile()");
+    }
+}
 
-    struct Resource {
-        Resource(std::string_view resourceName, std::type_index resourceType,
-                 ResourceKind resourceKind)
-            : name(resourceName), type(resourceType), kind(resourceKind) {}
-
-        std::string name;
-        std::type_index type;
-        ResourceKind kind = ResourceKind::Transient;
-        std::unique_ptr<detail::ErasedDescriptor> descriptor;  ///< created resources
-        std::unique_ptr<detail::ErasedResource> imported;      ///< imported resources
-        std::string description;
-        ImportOptions importOptions;
-        std::vector<Version> versions;
-        std::optional<std::size_t> firstUse;  ///< positions in `order`
-        std::optional<std::size_t> lastUse;
-        detail::ErasedResource* bound = nullptr;  ///< storage while executing
-        std::uint64_t generation = 0;             ///< persistent storage generation
-    };
-
-    struct Pass {
-        std::string name;
-        std::unique_ptr<PassCallback> callback;
-        std::vector<VersionRef> reads;
-        std::vector<VersionRef> writes;
-        std::vector<detail::PassParameter> parameters;
-        bool sideEffect = false;
-        int refCount = 0;
-        bool culled = false;
-        std::optional<std::size_t> order;
-        PassState state = PassState::Pending;
-        std::string reason;
-        std::optional<double> milliseconds;
-    };
-
-    explicit Impl(RenderGraphCache& graphCache) : cache(&graphCache) {}
-
-    RenderGraphCache* cache;
-    std::vector<Pass> passes;
-    std::vector<Resource> resources;
-    std::vector<std::size_t> order;  ///< surviving passes in execution order
-    std::optional<std::string> brokenBy;
-    bool compiled = false;
-    bool executed = false;
-    CpuPassTimer timer;
-
-    // ---- building --------------------------------------------------------
-
-    void requireBuilding() const {
-        if (compiled) {
-            throw RenderGraphError(
-                "render graph: cannot declare passes or resources after compile()");
+void RenderGraph::Impl::requireNewResourceName(std::string_view name) const {
+    if (name.empty()) {
+        throw RenderGraphError("render graph: a resource needs a name");
+    }
+    for (const Resource& resource : resources) {
+        if (resource.name == name) {
+            throw RenderGraphError("render graph: two resources are named " + inQuotes(name));
         }
     }
+}
 
-    void requireNewResourceName(std::string_view name) const {
-        if (name.empty()) {
-            throw RenderGraphError("render graph: a resource needs a name");
+RenderGraph::Impl::Resource& RenderGraph::Impl::checkedResource(std::uint32_t index,
+                                                                std::type_index type,
+                                                                const std::string& user) {
+    if (index >= resources.size() || resources[index].type != type) {
+        throw RenderGraphError(
+            "render graph: " + user +
+            " uses a handle that is invalid, of another type or of another graph");
+    }
+    return resources[index];
+}
+
+std::uint32_t RenderGraph::Impl::latestVersion(const Resource& resource) noexcept {
+    return static_cast<std::uint32_t>(resource.versions.size() - 1);
+}
+
+void RenderGraph::Impl::bindLongLivedResources() {
+    for (Resource& resource : resources) {
+        if (!resource.firstUse.has_value()) {
+            continue;
         }
-        for (const Resource& resource : resources) {
-            if (resource.name == name) {
-                throw RenderGraphError("render graph: two resources are named " + inQuotes(name));
-            }
+        if (resource.kind == ResourceKind::Persistent) {
+            const auto binding = cache->bindPersistent(resource.name, *resource.descriptor);
+            resource.bound = binding.resource;
+            resource.generation = binding.generation;
+        } else if (resource.kind == ResourceKind::Imported) {
+            resource.bound = resource.imported.get();
+            resource.versions.front().stamp = resource.importOptions.revision;
         }
     }
+}
 
-    /// The resource behind a handle, checked. `user` describes who uses it.
-    Resource& checkedResource(std::uint32_t index, std::type_index type, const std::string& user) {
-        if (index >= resources.size() || resources[index].type != type) {
-            throw RenderGraphError(
-                "render graph: " + user +
-                " uses a handle that is invalid, of another type or of another graph");
-        }
-        return resources[index];
-    }
-
-    [[nodiscard]] static std::uint32_t latestVersion(const Resource& resource) noexcept {
-        return static_cast<std::uint32_t>(resource.versions.size() - 1);
-    }
-
-    // ---- compiling -------------------------------------------------------
-
-    void validateReads() const {
-        for (const Pass& pass : passes) {
-            for (const VersionRef& read : pass.reads) {
-                const Resource& resource = resources[read.index];
-                if (read.version == 0 && resource.kind != ResourceKind::Imported) {
-                    throw RenderGraphError("render graph: pass " + inQuotes(pass.name) + " reads " +
-                                           inQuotes(resource.name) +
-                                           " version 0, which no pass writes (write it before "
-                                           "reading it)");
-                }
-            }
+void RenderGraph::Impl::releaseTransients() noexcept {
+    for (Resource& resource : resources) {
+        if (resource.kind == ResourceKind::Transient && resource.bound != nullptr) {
+            cache->release(*resource.bound);
+            resource.bound = nullptr;
         }
     }
+}
 
-    void checkPersistentWriters() const {
-        for (const Resource& resource : resources) {
-            if (resource.kind != ResourceKind::Persistent || resource.versions.size() <= 2) {
-                continue;
-            }
-            throw RenderGraphError("render graph: persistent resource " + inQuotes(resource.name) +
-                                   " is written by " +
-                                   inQuotes(passes[*resource.versions[1].writer].name) + " and " +
-                                   inQuotes(passes[*resource.versions[2].writer].name) +
-                                   "; a persistent resource may have one writer per frame");
+detail::PassSignature RenderGraph::Impl::signatureOf(const Pass& pass) const {
+    detail::PassSignature signature;
+    signature.parameters = pass.parameters;
+    for (const VersionRef& read : pass.reads) {
+        const Resource& resource = resources[read.index];
+        signature.inputs.push_back(
+            {resource.name, read.version, resource.versions[read.version].stamp});
+    }
+    for (const VersionRef& write : pass.writes) {
+        const Resource& resource = resources[write.index];
+        if (resource.kind == ResourceKind::Persistent) {
+            signature.outputs.push_back({resource.name, write.version, resource.generation});
         }
     }
+    return signature;
+}
 
-    void markImportedTargets() {
-        for (Resource& resource : resources) {
-            if (resource.kind == ResourceKind::Imported && resource.importOptions.target) {
-                resource.versions.back().target = true;
-            }
+std::optional<std::string> RenderGraph::Impl::reasonToRun(const Pass& pass,
+                                                          const detail::PassSignature& now) const {
+    if (pass.sideEffect) {
+        return "has side effects";
+    }
+    for (const VersionRef& write : pass.writes) {
+        const Resource& resource = resources[write.index];
+        if (resource.kind != ResourceKind::Persistent) {
+            return "writes " + std::string(toString(resource.kind)) + " " + inQuotes(resource.name);
         }
     }
-
-    /// All passes in an order that respects every dependency: writer before
-    /// readers, readers of a version before the writer of the next one,
-    /// writers of one resource in version order. Among ready passes the one
-    /// declared first goes first, so without stale reads this is declaration
-    /// order. Throws RenderGraphError naming a cycle.
-    [[nodiscard]] std::vector<std::size_t> sortPasses() const {
-        const std::size_t count = passes.size();
-        std::vector<std::vector<std::size_t>> successors(count);
-        std::vector<std::vector<std::size_t>> predecessors(count);
-        auto addEdge = [&](std::size_t from, std::size_t to) {
-            successors[from].push_back(to);
-            predecessors[to].push_back(from);
-        };
-        for (const Resource& resource : resources) {
-            for (std::size_t v = 0; v < resource.versions.size(); ++v) {
-                const Version& version = resource.versions[v];
-                if (version.writer.has_value()) {
-                    for (const std::size_t reader : version.readers) {
-                        addEdge(*version.writer, reader);
-                    }
-                }
-                if (v + 1 < resource.versions.size()) {
-                    const std::size_t nextWriter = *resource.versions[v + 1].writer;
-                    for (const std::size_t reader : version.readers) {
-                        if (reader != nextWriter) {
-                            addEdge(reader, nextWriter);
-                        }
-                    }
-                    if (version.writer.has_value() && *version.writer != nextWriter) {
-                        addEdge(*version.writer, nextWriter);
-                    }
-                }
-            }
-        }
-
-        std::vector<std::size_t> inDegree(count);
-        std::priority_queue<std::size_t, std::vector<std::size_t>, std::greater<>> ready;
-        for (std::size_t p = 0; p < count; ++p) {
-            inDegree[p] = predecessors[p].size();
-            if (inDegree[p] == 0) {
-                ready.push(p);
-            }
-        }
-        std::vector<std::size_t> sorted;
-        std::vector<bool> done(count, false);
-        while (!ready.empty()) {
-            const std::size_t p = ready.top();
-            ready.pop();
-            sorted.push_back(p);
-            done[p] = true;
-            for (const std::size_t next : successors[p]) {
-                if (--inDegree[next] == 0) {
-                    ready.push(next);
-                }
-            }
-        }
-        if (sorted.size() < count) {
-            throw RenderGraphError("render graph: the passes form a cycle: " +
-                                   describeCycle(predecessors, done));
-        }
-        return sorted;
+    const detail::PassSignature* last = cache->lookupRun(pass.name);
+    if (last == nullptr) {
+        return std::string("first run");
     }
-
-    /// Every pass left over by the sort has a left-over predecessor, so
-    /// walking predecessors from one of them must come back to a pass seen.
-    [[nodiscard]] std::string describeCycle(
-        const std::vector<std::vector<std::size_t>>& predecessors,
-        const std::vector<bool>& done) const {
-        std::size_t current = 0;
-        while (done[current]) {
-            ++current;
-        }
-        std::vector<std::size_t> path{current};
-        while (true) {
-            const auto& preds = predecessors[current];
-            const auto pred =
-                *std::find_if(preds.begin(), preds.end(), [&](std::size_t p) { return !done[p]; });
-            const auto seen = std::find(path.begin(), path.end(), pred);
-            if (seen != path.end()) {
-                // path runs against the edges: path[i + 1] -> path[i].
-                const auto start = static_cast<std::size_t>(seen - path.begin());
-                std::string text = inQuotes(passes[path[start]].name);
-                for (std::size_t i = path.size() - 1; i > start; --i) {
-                    text += " -> " + inQuotes(passes[path[i]].name);
-                }
-                text += " -> " + inQuotes(passes[path[start]].name);
-                return text +
-                       " (a pass reads what it writes, or reads a version older than one "
-                       "that must be written before it runs)";
-            }
-            path.push_back(pred);
-            current = pred;
+    if (auto change = parameterChange(last->parameters, now.parameters)) {
+        return change;
+    }
+    if (auto change = inputChange(last->inputs, now.inputs)) {
+        return change;
+    }
+    if (last->outputs != now.outputs) {
+        return std::string("its persistent outputs have new storage");
+    }
+    for (const VersionRef& write : pass.writes) {
+        const Resource& resource = resources[write.index];
+        if (!cache->versionStamp(resource.name, write.version).has_value()) {
+            return "no cached content for " + inQuotes(resource.name);
         }
     }
+    return std::nullopt;
+}
 
-    /// Reference-count culling: a pass counts its written versions (+1 for
-    /// side effects), a version counts its readers (+1 for targets); what
-    /// drops to zero is culled and releases what it reads.
-    void cull() {
-        struct VersionNode {
-            std::uint32_t index;
-            std::uint32_t version;
-        };
-        std::vector<std::variant<std::size_t, VersionNode>> unused;
-        for (std::size_t p = 0; p < passes.size(); ++p) {
-            Pass& pass = passes[p];
-            pass.culled = false;
-            pass.refCount = static_cast<int>(pass.writes.size()) + (pass.sideEffect ? 1 : 0);
-            if (pass.refCount == 0) {
-                unused.emplace_back(p);
-            }
+std::optional<std::string> RenderGraph::Impl::parameterChange(
+    const std::vector<detail::PassParameter>& last, const std::vector<detail::PassParameter>& now) {
+    for (const auto& parameter : now) {
+        const auto before = std::find_if(last.begin(), last.end(),
+                                         [&](const auto& old) { return old.key == parameter.key; });
+        if (before == last.end()) {
+            return "new parameter " + inQuotes(parameter.key);
         }
-        for (std::uint32_t r = 0; r < resources.size(); ++r) {
-            auto& versions = resources[r].versions;
-            for (std::uint32_t v = 0; v < versions.size(); ++v) {
-                versions[v].refCount =
-                    static_cast<int>(versions[v].readers.size()) + (versions[v].target ? 1 : 0);
-                if (versions[v].refCount == 0 && versions[v].writer.has_value()) {
-                    unused.emplace_back(VersionNode{r, v});
-                }
-            }
-        }
-        while (!unused.empty()) {
-            const auto node = unused.back();
-            unused.pop_back();
-            if (const auto* version = std::get_if<VersionNode>(&node)) {
-                const std::size_t writer =
-                    *resources[version->index].versions[version->version].writer;
-                if (--passes[writer].refCount == 0) {
-                    unused.emplace_back(writer);
-                }
-                continue;
-            }
-            Pass& pass = passes[std::get<std::size_t>(node)];
-            pass.culled = true;
-            for (const VersionRef& read : pass.reads) {
-                Version& version = resources[read.index].versions[read.version];
-                if (--version.refCount == 0 && version.writer.has_value()) {
-                    unused.emplace_back(VersionNode{read.index, read.version});
-                }
-            }
+        if (before->value != parameter.value) {
+            return "parameter " + inQuotes(parameter.key) + " changed";
         }
     }
+    if (last.size() != now.size()) {
+        return std::string("a parameter was dropped");
+    }
+    return std::nullopt;
+}
 
-    void computeLifetimes() {
-        for (Resource& resource : resources) {
-            resource.firstUse.reset();
-            resource.lastUse.reset();
+std::optional<std::string> RenderGraph::Impl::inputChange(
+    const std::vector<detail::InputStamp>& last, const std::vector<detail::InputStamp>& now) {
+    for (const auto& input : now) {
+        const auto before = std::find_if(last.begin(), last.end(), [&](const auto& old) {
+            return old.resource == input.resource && old.version == input.version;
+        });
+        const std::string name = inQuotes(input.resource) + " v" + std::to_string(input.version);
+        if (before == last.end()) {
+            return "new input " + name;
         }
-        for (std::size_t position = 0; position < order.size(); ++position) {
-            const Pass& pass = passes[order[position]];
-            for (const auto* refs : {&pass.reads, &pass.writes}) {
-                for (const VersionRef& ref : *refs) {
-                    Resource& resource = resources[ref.index];
-                    if (!resource.firstUse.has_value()) {
-                        resource.firstUse = position;
-                    }
-                    resource.lastUse = position;
-                }
-            }
+        if (before->stamp != input.stamp) {
+            return "input " + name + " changed";
         }
     }
+    if (last.size() != now.size()) {
+        return std::string("an input was dropped");
+    }
+    return std::nullopt;
+}
 
-    // ---- executing -------------------------------------------------------
+void RenderGraph::Impl::reuseOutputs(Pass& pass) {
+    for (const VersionRef& write : pass.writes) {
+        Resource& resource = resources[write.index];
+        resource.versions[write.version].stamp =
+            cache->versionStamp(resource.name, write.version).value_or(0);
+    }
+}
 
-    /// Storage for persistent and imported resources used this frame.
-    void bindLongLivedResources() {
-        for (Resource& resource : resources) {
-            if (!resource.firstUse.has_value()) {
-                continue;
-            }
-            if (resource.kind == ResourceKind::Persistent) {
-                const auto binding = cache->bindPersistent(resource.name, *resource.descriptor);
-                resource.bound = binding.resource;
-                resource.generation = binding.generation;
-            } else if (resource.kind == ResourceKind::Imported) {
-                resource.bound = resource.imported.get();
-                resource.versions.front().stamp = resource.importOptions.revision;
-            }
+void RenderGraph::Impl::stampOutputs(Pass& pass) {
+    for (const VersionRef& write : pass.writes) {
+        Resource& resource = resources[write.index];
+        const std::uint64_t stamp = cache->newStamp();
+        resource.versions[write.version].stamp = stamp;
+        if (resource.kind == ResourceKind::Persistent) {
+            cache->setVersionStamp(resource.name, write.version, stamp);
         }
     }
+}
 
-    void releaseTransients() noexcept {
-        for (Resource& resource : resources) {
-            if (resource.kind == ResourceKind::Transient && resource.bound != nullptr) {
-                cache->release(*resource.bound);
-                resource.bound = nullptr;
-            }
-        }
+std::vector<ResourceVersion> RenderGraph::Impl::named(const std::vector<VersionRef>& refs) const {
+    std::vector<ResourceVersion> result;
+    result.reserve(refs.size());
+    for (const VersionRef& ref : refs) {
+        result.push_back({resources[ref.index].name, ref.version});
     }
+    return result;
+}
 
-    [[nodiscard]] detail::PassSignature signatureOf(const Pass& pass) const {
-        detail::PassSignature signature;
-        signature.parameters = pass.parameters;
-        for (const VersionRef& read : pass.reads) {
-            const Resource& resource = resources[read.index];
-            signature.inputs.push_back(
-                {resource.name, read.version, resource.versions[read.version].stamp});
-        }
-        for (const VersionRef& write : pass.writes) {
-            const Resource& resource = resources[write.index];
-            if (resource.kind == ResourceKind::Persistent) {
-                signature.outputs.push_back({resource.name, write.version, resource.generation});
-            }
-        }
-        return signature;
+void RenderGraph::Impl::requireCompiled() const {
+    if (!compiled) {
+        throw RenderGraphError("render graph: compile() first");
     }
-
-    /// Why `pass` must run this frame; nullopt when its cached result holds.
-    [[nodiscard]] std::optional<std::string> reasonToRun(const Pass& pass,
-                                                         const detail::PassSignature& now) const {
-        if (pass.sideEffect) {
-            return "has side effects";
-        }
-        for (const VersionRef& write : pass.writes) {
-            const Resource& resource = resources[write.index];
-            if (resource.kind != ResourceKind::Persistent) {
-                return "writes " + std::string(toString(resource.kind)) + " " +
-                       inQuotes(resource.name);
-            }
-        }
-        const detail::PassSignature* last = cache->lookupRun(pass.name);
-        if (last == nullptr) {
-            return std::string("first run");
-        }
-        if (auto change = parameterChange(last->parameters, now.parameters)) {
-            return change;
-        }
-        if (auto change = inputChange(last->inputs, now.inputs)) {
-            return change;
-        }
-        if (last->outputs != now.outputs) {
-            return std::string("its persistent outputs have new storage");
-        }
-        for (const VersionRef& write : pass.writes) {
-            const Resource& resource = resources[write.index];
-            if (!cache->versionStamp(resource.name, write.version).has_value()) {
-                return "no cached content for " + inQuotes(resource.name);
-            }
-        }
-        return std::nullopt;
-    }
-
-    [[nodiscard]] static std::optional<std::string> parameterChange(
-        const std::vector<detail::PassParameter>& last,
-        const std::vector<detail::PassParameter>& now) {
-        for (const auto& parameter : now) {
-            const auto before = std::find_if(last.begin(), last.end(), [&](const auto& old) {
-                return old.key == parameter.key;
-            });
-            if (before == last.end()) {
-                return "new parameter " + inQuotes(parameter.key);
-            }
-            if (before->value != parameter.value) {
-                return "parameter " + inQuotes(parameter.key) + " changed";
-            }
-        }
-        if (last.size() != now.size()) {
-            return std::string("a parameter was dropped");
-        }
-        return std::nullopt;
-    }
-
-    [[nodiscard]] static std::optional<std::string> inputChange(
-        const std::vector<detail::InputStamp>& last, const std::vector<detail::InputStamp>& now) {
-        for (const auto& input : now) {
-            const auto before = std::find_if(last.begin(), last.end(), [&](const auto& old) {
-                return old.resource == input.resource && old.version == input.version;
-            });
-            const std::string name =
-                inQuotes(input.resource) + " v" + std::to_string(input.version);
-            if (before == last.end()) {
-                return "new input " + name;
-            }
-            if (before->stamp != input.stamp) {
-                return "input " + name + " changed";
-            }
-        }
-        if (last.size() != now.size()) {
-            return std::string("an input was dropped");
-        }
-        return std::nullopt;
-    }
-
-    /// A skipped pass's outputs keep the content stamps of its last run.
-    void reuseOutputs(Pass& pass) {
-        for (const VersionRef& write : pass.writes) {
-            Resource& resource = resources[write.index];
-            resource.versions[write.version].stamp =
-                cache->versionStamp(resource.name, write.version).value_or(0);
-        }
-    }
-
-    /// A pass that ran gave its outputs new content.
-    void stampOutputs(Pass& pass) {
-        for (const VersionRef& write : pass.writes) {
-            Resource& resource = resources[write.index];
-            const std::uint64_t stamp = cache->newStamp();
-            resource.versions[write.version].stamp = stamp;
-            if (resource.kind == ResourceKind::Persistent) {
-                cache->setVersionStamp(resource.name, write.version, stamp);
-            }
-        }
-    }
-
-    [[nodiscard]] std::vector<ResourceVersion> named(const std::vector<VersionRef>& refs) const {
-        std::vector<ResourceVersion> result;
-        result.reserve(refs.size());
-        for (const VersionRef& ref : refs) {
-            result.push_back({resources[ref.index].name, ref.version});
-        }
-        return result;
-    }
-
-    void requireCompiled() const {
-        if (!compiled) {
-            throw RenderGraphError("render graph: compile() first");
-        }
-    }
-};
+}
 
 RenderGraph::RenderGraph(RenderGraphCache& cache) : impl_(std::make_unique<Impl>(cache)) {}
 
@@ -634,33 +351,44 @@ void RenderGraph::declareTarget(std::uint32_t index, std::uint32_t version, std:
     resource.versions[version].target = true;
 }
 
-void RenderGraph::compile() {
-    Impl& impl = *impl_;
-    if (impl.compiled) {
-        return;
+std::uint32_t RenderGraph::declareRenderTarget(std::size_t pass, std::string_view name,
+                                               const RenderTargetAttachments& attachments) {
+    impl_->requireBuilding();
+    Impl::Pass& owner = impl_->passes[pass];
+    const std::string what = "pass " + inQuotes(owner.name) + " declares render target ";
+    if (name.empty()) {
+        throw RenderGraphError("render graph: " + what + "without a name");
     }
-    if (impl.brokenBy.has_value()) {
-        throw RenderGraphError("render graph: the setup of pass " + inQuotes(*impl.brokenBy) +
-                               " threw; build a new graph");
-    }
-    impl.validateReads();
-    impl.checkPersistentWriters();
-    impl.markImportedTargets();
-    const std::vector<std::size_t> sorted = impl.sortPasses();
-    impl.cull();
-    impl.order.clear();
-    for (const std::size_t p : sorted) {
-        Impl::Pass& pass = impl.passes[p];
-        if (pass.culled) {
-            pass.state = PassState::Culled;
-            pass.reason = "nothing reads its outputs";
-        } else {
-            pass.order = impl.order.size();
-            impl.order.push_back(p);
+    for (const auto& declared : owner.renderTargets) {
+        if (declared.name == name) {
+            throw RenderGraphError("render graph: " + what + inQuotes(name) + " twice");
         }
     }
-    impl.computeLifetimes();
-    impl.compiled = true;
+    if (attachments.colors.empty() && !attachments.depth.valid()) {
+        throw RenderGraphError("render graph: " + what + inQuotes(name) + " without attachments");
+    }
+    const auto written = [&](Handle<Texture> handle) {
+        const std::string user = what + inQuotes(name);
+        impl_->checkedResource(handle.index(), typeid(Texture), user);
+        const VersionRef ref{handle.index(), handle.version()};
+        if (!contains(owner.writes, ref)) {
+            throw RenderGraphError("render graph: " + user + " with " +
+                                   inQuotes(impl_->resources[ref.index].name) + " version " +
+                                   std::to_string(ref.version) +
+                                   ", which it does not write (write() it first)");
+        }
+        return ref;
+    };
+    Impl::DeclaredTarget target;
+    target.name = std::string(name);
+    for (const Handle<Texture>& color : attachments.colors) {
+        target.colors.push_back(written(color));
+    }
+    if (attachments.depth.valid()) {
+        target.depth = written(attachments.depth);
+    }
+    owner.renderTargets.push_back(std::move(target));
+    return static_cast<std::uint32_t>(owner.renderTargets.size() - 1);
 }
 
 void RenderGraph::execute(PassObserver* observer) {
@@ -737,93 +465,12 @@ void RenderGraph::execute(PassObserver* observer) {
             observer->endFrame();
         }
     } catch (...) {
+        impl.executeFailed = true;
         impl.releaseTransients();
         cache.endFrame();
         throw;
     }
     cache.endFrame();
-}
-
-bool RenderGraph::compiled() const noexcept {
-    return impl_->compiled;
-}
-
-std::vector<PassInfo> RenderGraph::passes() const {
-    impl_->requireCompiled();
-    std::vector<PassInfo> infos;
-    infos.reserve(impl_->passes.size());
-    for (const Impl::Pass& pass : impl_->passes) {
-        PassInfo info;
-        info.name = pass.name;
-        info.state = pass.state;
-        info.sideEffect = pass.sideEffect;
-        info.order = pass.order;
-        info.reads = impl_->named(pass.reads);
-        info.writes = impl_->named(pass.writes);
-        for (const auto& parameter : pass.parameters) {
-            info.parameters.push_back(parameter.key);
-        }
-        info.reason = pass.reason;
-        info.milliseconds = pass.milliseconds;
-        infos.push_back(std::move(info));
-    }
-    return infos;
-}
-
-std::vector<ResourceInfo> RenderGraph::resources() const {
-    impl_->requireCompiled();
-    std::vector<ResourceInfo> infos;
-    infos.reserve(impl_->resources.size());
-    for (const Impl::Resource& resource : impl_->resources) {
-        ResourceInfo info;
-        info.name = resource.name;
-        info.kind = resource.kind;
-        info.description = resource.description;
-        info.versions = static_cast<std::uint32_t>(resource.versions.size());
-        for (std::uint32_t v = 0; v < resource.versions.size(); ++v) {
-            if (resource.versions[v].target) {
-                info.targetVersions.push_back(v);
-            }
-        }
-        if (resource.firstUse.has_value()) {
-            info.firstUse = impl_->passes[impl_->order[*resource.firstUse]].name;
-            info.lastUse = impl_->passes[impl_->order[*resource.lastUse]].name;
-        }
-        infos.push_back(std::move(info));
-    }
-    return infos;
-}
-
-const std::vector<PassTiming>& RenderGraph::timings() const noexcept {
-    return impl_->timer.timings();
-}
-
-void* RenderGraph::access(std::size_t pass, std::uint32_t index, std::uint32_t version,
-                          std::type_index type, bool forWrite) const {
-    const Impl::Pass& user = impl_->passes[pass];
-    if (index >= impl_->resources.size() || impl_->resources[index].type != type) {
-        throw RenderGraphError("render graph: pass " + inQuotes(user.name) +
-                               " uses a handle that is invalid, of another type or of another "
-                               "graph");
-    }
-    const Impl::Resource& resource = impl_->resources[index];
-    const VersionRef ref{index, version};
-    const bool declared = contains(user.writes, ref) || (!forWrite && contains(user.reads, ref));
-    const std::string what = inQuotes(resource.name) + " version " + std::to_string(version);
-    if (!declared) {
-        throw RenderGraphError("render graph: pass " + inQuotes(user.name) + " accesses " + what +
-                               (forWrite ? " for writing, but its setup did not write it"
-                                         : ", but its setup neither reads nor writes it"));
-    }
-    if (resource.bound == nullptr) {
-        throw RenderGraphError("render graph: pass " + inQuotes(user.name) + " accesses " + what +
-                               " outside execute()");
-    }
-    return resource.bound->get();
-}
-
-std::string_view RenderGraph::passName(std::size_t pass) const {
-    return impl_->passes[pass].name;
 }
 
 }  // namespace vv::render

@@ -62,6 +62,8 @@ struct RenderGraphCache::State {
         auto& bucket = pool[descriptor.hash()];
         for (const auto& slot : bucket) {
             if (!slot->inUse && slot->descriptor->equals(descriptor)) {
+                // Another resource (or an expired one) held it: its content is stale.
+                slot->descriptor->recycle(*slot->resource);
                 markInUse(*slot);
                 return *slot;
             }

@@ -174,6 +174,13 @@ std::string RenderGraph::toText() const {
             }
             text += "  depends on: " + keys + "\n";
         }
+        if (!pass.renderTargets.empty()) {
+            std::string names;
+            for (const std::string& name : pass.renderTargets) {
+                names += (names.empty() ? "" : ", ") + name;
+            }
+            text += "  render targets: " + names + "\n";
+        }
     }
     text += "resources:\n";
     for (const ResourceInfo& resource : resourceList) {

@@ -4,6 +4,7 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions_4_1_Core>
 #include <string>
+#include <string_view>
 #include <utility>
 
 #include "vv/core/Error.h"
@@ -24,8 +25,8 @@ void VolumeRenderer::initialize() {
     }
     gl_ = &gl;
     context_ = QOpenGLContext::currentContext();
-    program_ = buildProgram(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/raycast.frag",
-                            "volume ray casting");
+    program_ = Program(gl, ":/vv/shaders/fullscreen.vert", ":/vv/shaders/raycast.frag",
+                       "volume ray casting");
     gl.glGenVertexArrays(1, &vao_);
     uploaded_ = false;
     checkGlError(gl, "VolumeRenderer::initialize");
@@ -35,10 +36,9 @@ void VolumeRenderer::release() noexcept {
     if (gl_ == nullptr || QOpenGLContext::currentContext() != context_) {
         return;
     }
-    gl_->glDeleteProgram(program_);
     gl_->glDeleteVertexArrays(1, &vao_);
     gl_->glDeleteTextures(1, &texture_);
-    program_ = 0;
+    program_.release();
     vao_ = 0;
     texture_ = 0;
     uploaded_ = false;
@@ -97,7 +97,7 @@ void VolumeRenderer::upload() {
 }
 
 void VolumeRenderer::drawGBuffer(const Camera& camera, float isoValue, unsigned objectId) {
-    if (gl_ == nullptr || program_ == 0) {
+    if (gl_ == nullptr || !program_.valid()) {
         throw RenderError("VolumeRenderer::drawGBuffer before initialize()");
     }
     if (QOpenGLContext::currentContext() != context_) {
@@ -126,8 +126,8 @@ void VolumeRenderer::drawGBuffer(const Camera& camera, float isoValue, unsigned 
     g.glDepthMask(GL_TRUE);
     g.glDisable(GL_CULL_FACE);
     g.glDisable(GL_BLEND);
-    g.glUseProgram(program_);
-    const auto loc = [&](const char* name) { return g.glGetUniformLocation(program_, name); };
+    program_.use();
+    const auto loc = [&](std::string_view name) { return program_.location(name); };
     g.glUniformMatrix4fv(loc("uInverseProjection"), 1, GL_FALSE, &inverseProjection[0][0]);
     g.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projectionF[0][0]);
     g.glUniformMatrix4fv(loc("uViewToIndex"), 1, GL_FALSE, &viewToIndex[0][0]);

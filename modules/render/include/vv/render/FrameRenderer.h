@@ -166,17 +166,18 @@ struct ExternalVss {
 ///  - "geometry": the vessels into the G-buffer (linear view depth R32F,
 ///    normal RGBA16F, object id R32UI, Depth32F); cached while camera,
 ///    viewport and scene stay.
+///  - "depth-readback": the linear depth read back to the CPU, once per
+///    G-buffer (cached with it), for the solve and the depth range.
+///  - "vss-solve": solves the VSS of that depth (vss::solve, mask = finite
+///    depth) and uploads the height image (R32F); cached while the depth,
+///    p, solver and tolerance stay, so colour scale and iso-line changes
+///    never re-solve. Synchronous, or on a worker thread (see SolveMode).
 ///  - "vessel-shading": the vessel colour (MeshRenderer's material or array
-///    through the colour map, Blinn-Phong, optionally a VesselCue) and the
-///    parameter value (R32F, NaN = no data), depth-tested against the
-///    G-buffer. A cue that needs depth reads the VSS's dmin / dmax (after
-///    "vss-solve") or, without a shown VSS, the visible range that
-///    "depth-range" reads back (cached while the view stays).
-///  - "vss-solve": reads the linear depth back, solves the VSS (vss::solve,
-///    mask = finite depth) and uploads the height image (R32F); cached while
-///    the depth, p, solver and tolerance stay, so colour scale and iso-line
-///    changes never re-solve. Synchronous, or on a worker thread (see
-///    SolveMode).
+///    through the colour map, Blinn-Phong, optionally a VesselCue), deferred
+///    from the G-buffer. A cue that needs depth reads the VSS's dmin / dmax
+///    ("vss-solve") or, without a shown VSS, the visible range that
+///    "depth-range" finds in the read-back depth (cached while the view
+///    stays).
 ///  - "vss-shading": depth colour scale, iso-lines and height-field lighting.
 ///  - "ssao", "ao-blur" (AoSettings::enabled): occlusion from the linear
 ///    depth and the VSS height, then a depth-aware blur; cached while depth,
@@ -343,8 +344,10 @@ class FrameRenderer {
     [[nodiscard]] std::optional<ProbeSample> probe(const Camera& camera, int x, int y) const;
     /// The visible vessels' linear depth range (min, max; scene units) in the
     /// last frame's G-buffer, nullopt when no vessel is visible or no frame
-    /// was rendered. Reads the whole linear depth back (a few ms): cache the
-    /// result per frame. Context current; throws RenderError when GL fails.
+    /// was rendered. Uses the depth the frame read back ("depth-readback")
+    /// when it did; otherwise reads the whole linear depth back once (a few
+    /// ms) and keeps it for that frame. Context current; throws RenderError
+    /// when GL fails.
     [[nodiscard]] std::optional<std::pair<float, float>> visibleDepthRange() const;
     // --- end probe -------------------------------------------------------
 

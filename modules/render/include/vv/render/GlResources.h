@@ -7,8 +7,10 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
+#include "vv/core/Image.h"
 #include "vv/render/RenderGraphObserver.h"
 #include "vv/render/RenderGraphResources.h"
 
@@ -17,6 +19,8 @@ class QOpenGLFunctions;
 class QOpenGLFunctions_4_1_Core;
 
 namespace vv::render {
+
+class GlFramebufferCache;
 
 /// A graph texture on the GPU: a GL texture and a framebuffer object with it
 /// attached (colour attachment 0, or the depth attachment for Depth32F), or a
@@ -48,6 +52,12 @@ class GlTexture final : public TextureObject {
     /// GL_TEXTURE_2D or GL_TEXTURE_2D_MULTISAMPLE.
     [[nodiscard]] unsigned target() const noexcept;
 
+    /// The framebuffer cache to tell when this texture dies (so that it
+    /// drops the framebuffers it is attached to); the allocator sets it.
+    void setFramebufferCache(std::weak_ptr<GlFramebufferCache> cache) noexcept {
+        framebufferCache_ = std::move(cache);
+    }
+
   private:
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
     QOpenGLContext* context_ = nullptr;
@@ -55,7 +65,13 @@ class GlTexture final : public TextureObject {
     unsigned texture_ = 0;
     unsigned fbo_ = 0;
     bool owned_ = false;
+    std::weak_ptr<GlFramebufferCache> framebufferCache_;
 };
+
+/// Reads the first channel of a single-sampled float texture (e.g. the
+/// R32F linear depth) back to main memory: row 0 is the BOTTOM row (GL
+/// order). Leaves no read framebuffer bound. Throws RenderError when GL fails.
+[[nodiscard]] Image<float> readRedChannel(QOpenGLFunctions_4_1_Core& gl, const GlTexture& texture);
 
 /// GL internal format, pixel format and type of a graph texture format, e.g.
 /// R32F -> (GL_R32F, GL_RED, GL_FLOAT).
@@ -67,16 +83,27 @@ struct GlFormat {
 [[nodiscard]] GlFormat glFormat(TextureFormat format) noexcept;
 
 /// Makes GlTexture objects in the context current at construction (which
-/// must be current whenever the graph allocates). Throws RenderError from
-/// the constructor when no OpenGL 4.1 core context is current.
+/// must be current whenever the graph allocates), and the framebuffers of
+/// the render targets passes declare from them. Throws RenderError from the
+/// constructor when no OpenGL 4.1 core context is current.
 class GlResourceAllocator final : public ResourceAllocator {
   public:
     GlResourceAllocator();
+    ~GlResourceAllocator() override;
+    GlResourceAllocator(const GlResourceAllocator&) = delete;
+    GlResourceAllocator& operator=(const GlResourceAllocator&) = delete;
+    GlResourceAllocator(GlResourceAllocator&&) = delete;
+    GlResourceAllocator& operator=(GlResourceAllocator&&) = delete;
+
     [[nodiscard]] std::unique_ptr<TextureObject> createTexture(
         const TextureDescriptor& descriptor) override;
 
+    /// The framebuffers of declared render targets (GlFramebufferCache).
+    [[nodiscard]] GlFramebufferCache& framebuffers() noexcept { return *framebuffers_; }
+
   private:
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
+    std::shared_ptr<GlFramebufferCache> framebuffers_;
 };
 
 /// One pass's time in a frame: CPU (wall clock of the execute callback) and

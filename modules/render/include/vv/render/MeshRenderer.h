@@ -14,6 +14,7 @@
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/render/Camera.h"
+#include "vv/render/Program.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/MeshTopology.h"
 
@@ -372,21 +373,21 @@ class MeshRenderer {
     /// Uploads the per-object table (colour, array on/off, range, opacity by object id).
     void uploadObjects();
     /// Sets the per-object material uniforms of `program` for mesh `index`.
-    void useObject(unsigned program, std::size_t index);
+    void useObject(const Program& program, std::size_t index);
     void uploadLut();
     void uploadCueLut(colormaps::DepthScale scale);
     /// Uploads what the material needs (scalars, LUTs) if stale.
     void prepareMaterial(const VesselCueParameters& cue);
     /// Makes `program` current with the material's uniforms and LUT textures.
-    void useMaterial(unsigned program, const VesselCueParameters& cue);
+    void useMaterial(const Program& program, const VesselCueParameters& cue);
     void unbindMaterial();
     [[nodiscard]] QOpenGLFunctions_4_1_Core& gl() const;
 
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
     QOpenGLContext* context_ = nullptr;
-    unsigned program_ = 0;
-    unsigned gbufferProgram_ = 0;
-    unsigned deferredProgram_ = 0;
+    Program program_;
+    Program gbufferProgram_;
+    Program deferredProgram_;
     unsigned emptyVao_ = 0;
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;

@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "vv/render/Blackboard.h"
 #include "vv/render/RenderGraphCache.h"
 #include "vv/render/RenderGraphDetail.h"
 #include "vv/render/RenderGraphHandle.h"
@@ -60,6 +61,38 @@ struct ResourceVersion {
     friend bool operator==(const ResourceVersion&, const ResourceVersion&) = default;
 };
 
+/// The attachments of a render target that a pass declares
+/// (RenderGraph::Builder::declareRenderTarget): textures the pass writes,
+/// drawn into at once. The backend gives a framebuffer for the set.
+struct RenderTargetAttachments {
+    std::vector<Handle<Texture>> colors;  ///< colour attachment i draws into colors[i]
+    Handle<Texture> depth;                ///< invalid = no depth attachment
+};
+
+/// Names one render target of one pass; made by Builder::declareRenderTarget.
+class RenderTargetId {
+  public:
+    constexpr RenderTargetId() noexcept = default;
+    [[nodiscard]] constexpr bool valid() const noexcept { return index_ != kInvalid; }
+    friend constexpr bool operator==(RenderTargetId, RenderTargetId) noexcept = default;
+
+  private:
+    friend class RenderGraph;
+    static constexpr std::uint32_t kInvalid = 0xFFFFFFFFU;
+    constexpr explicit RenderTargetId(std::uint32_t index) noexcept : index_(index) {}
+    std::uint32_t index_ = kInvalid;
+};
+
+/// A declared render target while its pass executes: the textures behind
+/// its attachments (all of one size) — what a backend needs to bind it.
+struct RenderTarget {
+    std::string_view name;
+    std::vector<const Texture*> colors;  ///< in attachment order
+    const Texture* depth = nullptr;      ///< null = none
+    int width = 0;
+    int height = 0;
+};
+
 /// A pass of a compiled graph, for tests, dumps and the UI.
 struct PassInfo {
     std::string name;
@@ -68,9 +101,10 @@ struct PassInfo {
     std::optional<std::size_t> order;  ///< position in execution order; none when culled
     std::vector<ResourceVersion> reads;
     std::vector<ResourceVersion> writes;
-    std::vector<std::string> parameters;  ///< keys given to dependsOn()
-    std::string reason;                   ///< after execute(): why it ran or was skipped
-    std::optional<double> milliseconds;   ///< CPU time, when it ran
+    std::vector<std::string> parameters;     ///< keys given to dependsOn()
+    std::vector<std::string> renderTargets;  ///< names given to declareRenderTarget()
+    std::string reason;                      ///< after execute(): why it ran or was skipped
+    std::optional<double> milliseconds;      ///< CPU time, when it ran
 };
 
 /// A resource of a compiled graph.
@@ -95,14 +129,19 @@ struct ResourceInfo {
 ///
 ///     RenderGraph graph(cache);
 ///     auto screen = graph.importResource("screen", screenTexture, {.target = true});
-///     struct Geo { Handle<Texture> depth; };
+///     struct Geo { Handle<Texture> depth; RenderTargetId target; };
 ///     const auto& geo = graph.addPass<Geo>("geometry",
 ///         [&](RenderGraph::Builder& b, Geo& d) {
 ///             b.dependsOn("camera", camera.viewMatrix());
 ///             d.depth = b.write(b.createPersistent<Texture>("depth", depthFormat));
+///             d.target = b.declareRenderTarget("gbuffer", {{d.depth}, {}});
 ///         },
-///         [=](const RenderGraph::Resources& r, const Geo& d) { draw(r.get(d.depth)); });
-///     ... more passes ...
+///         [camera](const RenderGraph::Resources& r, const Geo& d) {
+///             bind(r.renderTarget(d.target));
+///             draw(camera);
+///         });
+///     graph.blackboard().put("depth", geo.depth);
+///     ... more passes, each reading what it needs: b.read<Texture>("depth") ...
 ///     graph.execute(&glObserver);
 ///
 /// Rules (RenderGraphError unless said otherwise):
@@ -122,6 +161,13 @@ struct ResourceInfo {
 ///   skipped and its persistent outputs keep last frame's content.
 ///   Everything an execute callback uses must therefore come through the
 ///   resources it reads or the parameters it declares.
+/// - What one pass hands another travels as a resource: textures, and values
+///   on the CPU as CpuValue<T>. Passes find each other's outputs by name on
+///   the graph's blackboard(); Builder::read(name) refuses a name nobody put.
+/// - A pass draws into render targets it declares (declareRenderTarget) from
+///   textures it writes; the backend makes the framebuffer.
+/// - After execute(), result() hands persistent and imported outputs to the
+///   caller (a frame's status): passes never write the caller's state.
 /// - After addPass() throws (its setup threw), the graph cannot be compiled.
 /// - Not thread-safe; passes run on the calling thread, in order.
 class RenderGraph {
@@ -181,6 +227,24 @@ class RenderGraph {
     void execute(PassObserver* observer = nullptr);
 
     [[nodiscard]] bool compiled() const noexcept;
+
+    /// The graph's blackboard: resource handles by name, for passes to find
+    /// each other's outputs (see Blackboard).
+    [[nodiscard]] Blackboard& blackboard() noexcept;
+    [[nodiscard]] const Blackboard& blackboard() const noexcept;
+
+    /// After execute(): the content of `handle`'s version, for the caller
+    /// (e.g. a status a pass computed). `handle` must be the latest version
+    /// of a persistent or imported resource; returns nullptr when no pass
+    /// that survived culling wrote it (a cached writer counts: its content
+    /// is kept). The object stays valid until the cache executes another
+    /// graph or is cleared. Throws RenderGraphError before execute(), after
+    /// an execute() that threw, for a transient resource (its storage went
+    /// back to the pool: make it persistent) or for an older version.
+    template <class R>
+    [[nodiscard]] const R* result(Handle<R> handle) const {
+        return static_cast<const R*>(resultOf(handle.index(), handle.version(), typeid(R)));
+    }
 
     /// Every pass in declaration order / every resource in declaration order.
     /// Throw RenderGraphError before compile().
@@ -254,6 +318,12 @@ class RenderGraph {
     void declareSideEffect(std::size_t pass);
     void declareParameter(std::size_t pass, std::string_view key, std::span<const std::byte> value);
     void declareTarget(std::uint32_t index, std::uint32_t version, std::type_index type);
+    std::uint32_t declareRenderTarget(std::size_t pass, std::string_view name,
+                                      const RenderTargetAttachments& attachments);
+    [[nodiscard]] RenderTarget resolveRenderTarget(std::size_t pass, RenderTargetId id) const;
+    [[noreturn]] void throwMissingEntry(std::size_t pass, std::string_view name) const;
+    [[nodiscard]] const void* resultOf(std::uint32_t index, std::uint32_t version,
+                                       std::type_index type) const;
     [[nodiscard]] void* access(std::size_t pass, std::uint32_t index, std::uint32_t version,
                                std::type_index type, bool forWrite) const;
     [[nodiscard]] std::string_view passName(std::size_t pass) const;
@@ -308,6 +378,29 @@ class RenderGraph::Builder {
     [[nodiscard]] Handle<R> write(Handle<R> handle) {
         return makeHandle<R>(handle.index(), graph_->declareWrite(pass_, handle.index(),
                                                                   handle.version(), typeid(R)));
+    }
+
+    /// Declares that this pass reads the resource another pass put on the
+    /// graph's blackboard under `name` (its handle there, usually the latest
+    /// version); returns it. Throws RenderGraphError naming this pass and
+    /// `name` when nothing is under that name, and like read(handle).
+    template <class R>
+    Handle<R> read(std::string_view name) {
+        if (!graph_->blackboard().contains(name)) {
+            graph_->throwMissingEntry(pass_, name);
+        }
+        return read(graph_->blackboard().get<R>(name));
+    }
+
+    /// Declares a render target of this pass: `attachments` drawn into at
+    /// once (the backend binds a framebuffer for it; Resources::renderTarget).
+    /// Every attachment must be a version this pass writes (write() it
+    /// first), all of one size (checked when it is resolved). Throws
+    /// RenderGraphError for an empty or duplicate name, no attachment, or an
+    /// attachment this pass does not write.
+    [[nodiscard]] RenderTargetId declareRenderTarget(std::string_view name,
+                                                     const RenderTargetAttachments& attachments) {
+        return RenderTargetId(graph_->declareRenderTarget(pass_, name, attachments));
     }
 
     /// The pass does something outside the graph (presents, writes a file):
@@ -390,6 +483,13 @@ class RenderGraph::Resources {
     [[nodiscard]] R& getForWrite(Handle<R> handle) const {
         return *static_cast<R*>(
             graph_->access(pass_, handle.index(), handle.version(), typeid(R), true));
+    }
+
+    /// A render target this pass declared, with the textures behind it.
+    /// Throws RenderGraphError for an id of another pass, or when its
+    /// attachments differ in size.
+    [[nodiscard]] RenderTarget renderTarget(RenderTargetId id) const {
+        return graph_->resolveRenderTarget(pass_, id);
     }
 
     [[nodiscard]] std::string_view passName() const { return graph_->passName(pass_); }

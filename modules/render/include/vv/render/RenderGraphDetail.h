@@ -62,6 +62,9 @@ class ErasedDescriptor {
     [[nodiscard]] virtual std::unique_ptr<ErasedDescriptor> clone() const = 0;
     [[nodiscard]] virtual std::unique_ptr<ErasedResource> create(
         ResourceAllocator& allocator) const = 0;
+    /// Prepares `resource` (made by create()) to be handed out again with
+    /// other content: R::recycle(R&) when R has it, else nothing.
+    virtual void recycle(ErasedResource& resource) const noexcept = 0;
 
   protected:
     ErasedDescriptor() = default;
@@ -87,6 +90,11 @@ class TypedDescriptor final : public ErasedDescriptor {
     [[nodiscard]] std::unique_ptr<ErasedResource> create(
         ResourceAllocator& allocator) const override {
         return std::make_unique<TypedResource<R>>(R::create(allocator, descriptor_));
+    }
+    void recycle(ErasedResource& resource) const noexcept override {
+        if constexpr (requires(R & r) { R::recycle(r); }) {
+            R::recycle(*static_cast<R*>(resource.get()));
+        }
     }
 
   private:

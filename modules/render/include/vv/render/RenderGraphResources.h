@@ -5,9 +5,11 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "vv/render/RenderGraphHandle.h"
@@ -139,6 +141,64 @@ concept AllocatableResource = std::move_constructible<R> && std::destructible<R>
     { R::create(allocator, descriptor) } -> std::same_as<R>;
     { R::describe(descriptor) } -> std::convertible_to<std::string>;
     { R::hash(descriptor) } -> std::convertible_to<std::size_t>;
+};
+
+/// A value in main memory as a graph resource: what one pass hands another on
+/// the CPU (a depth range read back, a solved VSS, the cue a pass shaded with).
+/// Declare it like a texture, with `CpuValue<T>::Descriptor{}`:
+///
+///     d.range = b.write(b.createPersistent<CpuValue<Range>>("range", {}));
+///     ... execute: r.getForWrite(d.range).set(range);
+///     ... a reader's execute: const Range& range = r.get(d.range).value();
+///
+/// A persistent value keeps its content across frames, like a persistent
+/// texture: when its writer is skipped (cached), readers see what it wrote
+/// last, and the content stamps make a reader re-run exactly when the writer
+/// ran. Fresh storage (a persistent value's first frame, new storage after
+/// expiry, a transient value taken from the pool) starts empty, so a read
+/// before the writer set it throws instead of showing another frame's value.
+/// After RenderGraph::execute(), RenderGraph::result() hands a persistent
+/// value to the caller (renderer-level outputs such as a frame's status).
+template <class T>
+class CpuValue {
+  public:
+    /// Values of one type are interchangeable storage: nothing to describe.
+    struct Descriptor {
+        friend bool operator==(const Descriptor&, const Descriptor&) = default;
+    };
+
+    [[nodiscard]] static CpuValue create(ResourceAllocator& /*allocator*/,
+                                         const Descriptor& /*descriptor*/) {
+        return CpuValue();
+    }
+    [[nodiscard]] static std::string describe(const Descriptor& /*descriptor*/) {
+        return "CPU value";
+    }
+    [[nodiscard]] static std::size_t hash(const Descriptor& /*descriptor*/) noexcept {
+        return 0x43505556U;  // one bucket; the graph tells the value types apart
+    }
+    /// Called by the graph whenever it hands out storage that held another
+    /// content before (pooled or expired): empties it.
+    static void recycle(CpuValue& value) noexcept { value.value_.reset(); }
+
+    /// True once set() gave it a content.
+    [[nodiscard]] bool hasValue() const noexcept { return value_.has_value(); }
+    /// The content. Throws RenderGraphError while there is none (its writer
+    /// has not set it in this storage).
+    [[nodiscard]] const T& value() const {
+        if (!value_.has_value()) {
+            throwEmpty();
+        }
+        return *value_;
+    }
+    void set(T value) { value_ = std::move(value); }
+
+  private:
+    [[noreturn]] static void throwEmpty() {
+        throw RenderGraphError("render graph: a CPU value is read before its writer set it");
+    }
+
+    std::optional<T> value_;
 };
 
 /// A resource type the graph can import: any object type it can move in and

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "vv/render/Camera.h"
+#include "vv/render/Program.h"
 #include "vv/scene/Volume.h"
 
 class QOpenGLContext;
@@ -40,7 +41,7 @@ class VolumeRenderer {
     /// Builds the shader in the current context. Throws RenderError when no
     /// OpenGL 4.1 core context is current or the shader fails.
     void initialize();
-    [[nodiscard]] bool initialized() const noexcept { return program_ != 0; }
+    [[nodiscard]] bool initialized() const noexcept { return program_.valid(); }
     /// Deletes the GL objects (context current). Safe to call more than once.
     void release() noexcept;
 
@@ -64,7 +65,7 @@ class VolumeRenderer {
 
     QOpenGLFunctions_4_1_Core* gl_ = nullptr;
     QOpenGLContext* context_ = nullptr;
-    unsigned program_ = 0;
+    Program program_;
     unsigned vao_ = 0;
     unsigned texture_ = 0;
     std::shared_ptr<const scene::Volume> volume_;

@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "passes/CompositePass.h"
+
+#include <QOpenGLFunctions_4_1_Core>
+
+#include "passes/FrameResources.h"
+
+namespace vv::render {
+
+namespace {
+
+struct Data {
+    Handle<Texture> vessels;
+    Handle<Texture> vss;
+    Handle<Texture> ao;
+    Handle<Texture> translucent;
+    CompositeOutputs out;
+    RenderTargetId target;
+};
+
+void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const Data& d) {
+    const PassContext& context = in.context;
+    auto& g = *context.gl;
+    context.beginFullscreen(r, d.target, in.size);
+    const Program& program = context.programs->composite;
+    program.use();
+    g.glActiveTexture(GL_TEXTURE0);
+    g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.vessels)).texture());
+    g.glActiveTexture(GL_TEXTURE1);
+    g.glBindTexture(GL_TEXTURE_2D, in.useVss ? glTex(r.get(d.vss)).texture() : 0U);
+    program.set("uVessels", 0);
+    program.set("uVss", 1);
+    program.set("uUseVss", in.useVss ? 1 : 0);
+    g.glActiveTexture(GL_TEXTURE2);
+    g.glBindTexture(GL_TEXTURE_2D, in.useAo ? glTex(r.get(d.ao)).texture() : 0U);
+    program.set("uAo", 2);
+    program.set("uUseAo", in.useAo ? 1 : 0);
+    program.set("uAoStrength", in.aoStrength);
+    program.set("uBackground", in.background);
+    g.glActiveTexture(GL_TEXTURE3);
+    g.glBindTexture(GL_TEXTURE_2D, in.useTranslucent ? glTex(r.get(d.translucent)).texture() : 0U);
+    program.set("uTranslucent", 3);
+    program.set("uUseTranslucent", in.useTranslucent ? 1 : 0);
+    drawFullscreenAndUnbind(g, context.emptyVao, 4);
+    g.glEnable(GL_DEPTH_TEST);
+    checkGlError(g, "composite pass");
+}
+
+}  // namespace
+
+CompositeOutputs addCompositePass(RenderGraph& graph, const CompositeInputs& inputs) {
+    const auto& data = graph.addPass<Data>(
+        "composite",
+        [&](RenderGraph::Builder& b, Data& d) {
+            d.vessels = b.read<Texture>(board::kVesselColor);
+            if (inputs.useVss) {
+                d.vss = b.read<Texture>(board::kVssColor);
+            }
+            if (inputs.useAo) {
+                d.ao = b.read<Texture>(board::kAo);
+            }
+            if (inputs.useTranslucent) {
+                d.translucent = b.read<Texture>(board::kTranslucentColor);
+            }
+            d.out.color = b.write(inputs.toTexture
+                                      ? b.create<Texture>(board::kComposited,
+                                                          sized(inputs.size, TextureFormat::RGBA8))
+                                      : graph.blackboard().get<Texture>(board::kOutput));
+            d.target =
+                b.declareRenderTarget("composite", RenderTargetAttachments{{d.out.color}, {}});
+        },
+        [inputs](const RenderGraph::Resources& r, const Data& d) { composite(inputs, r, d); });
+    graph.blackboard().put(inputs.toTexture ? board::kComposited : board::kOutput, data.out.color);
+    return data.out;
+}
+
+}  // namespace vv::render

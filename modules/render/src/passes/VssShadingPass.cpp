@@ -1,0 +1,93 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "passes/VssShadingPass.h"
+
+#include <QOpenGLFunctions_4_1_Core>
+#include <algorithm>
+
+namespace vv::render {
+
+namespace {
+
+struct Data {
+    Handle<Texture> height;
+    Handle<Texture> slope;
+    Handle<Texture> linearDepth;
+    Handle<CpuValue<ShownVss>> shown;
+    VssShadingOutputs out;
+    RenderTargetId target;
+};
+
+void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Data& d) {
+    const PassContext& context = in.context;
+    auto& g = *context.gl;
+    const VssSettings& settings = in.settings;
+    context.scaleLut->upload(settings.scale);
+    context.beginFullscreen(r, d.target, in.size);
+    const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
+    g.glClearBufferfv(GL_COLOR, 0, clear);
+    const ShownVss& shown = r.get(d.shown).value();
+    if (shown.frame == nullptr) {
+        return;
+    }
+    // Preview frames (camera moving): one-pixel differences, no fit; exact
+    // ones: the slopes the solver's thread fitted, or (none, e.g. an
+    // external VSS or a huge frame) the shader fits them itself.
+    const bool slopes = !settings.preview && shown.slopes;
+    const FullscreenPrograms& programs = *context.programs;
+    const Program& program = settings.preview ? programs.vssQuick
+                             : slopes         ? programs.vssSlope
+                                              : programs.vss;
+    const Lighting& light = in.light;
+    program.use();
+    g.glActiveTexture(GL_TEXTURE0);
+    g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.height)).texture());
+    g.glActiveTexture(GL_TEXTURE1);
+    g.glBindTexture(GL_TEXTURE_1D, context.scaleLut->texture());
+    g.glActiveTexture(GL_TEXTURE2);
+    g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.linearDepth)).texture());
+    program.set("uHeight", 0);
+    program.set("uScale", 1);
+    program.set("uLinearDepth", 2);
+    if (slopes) {
+        g.glActiveTexture(GL_TEXTURE3);
+        g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.slope)).texture());
+        program.set("uSlope", 3);
+    }
+    program.set("uScaleSize", static_cast<float>(DepthScaleLut::kSize));
+    program.set("uDmin", static_cast<float>(shown.frame->dmin));
+    program.set("uDmax", static_cast<float>(shown.frame->dmax));
+    program.set("uPixelScale", in.pixelScale);
+    program.set("uIsoLines", std::max(settings.isoLines, 0));
+    program.set("uIsoWidth", std::max(settings.isoLineWidth, 0.0F));
+    program.set("uIsoStrength", settings.isoLineStrength);
+    program.set("uLighting", settings.lighting);
+    program.set("uOpacity", settings.opacity);
+    program.set("uLightDirection", light.direction);
+    program.set("uAmbient", light.ambient);
+    program.set("uDiffuse", light.diffuse);
+    program.set("uSpecular", light.specular);
+    program.set("uShininess", light.shininess);
+    drawFullscreenAndUnbind(g, context.emptyVao, 3);
+    checkGlError(g, "VSS shading pass");
+}
+
+}  // namespace
+
+VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& inputs) {
+    const auto& data = graph.addPass<Data>(
+        "vss-shading",
+        [&](RenderGraph::Builder& b, Data& d) {
+            d.height = b.read<Texture>(board::kVssHeight);
+            d.slope = b.read<Texture>(board::kVssSlope);
+            d.linearDepth = b.read<Texture>(board::kLinearDepth);
+            d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
+            d.out.color = b.write(
+                b.create<Texture>(board::kVssColor, sized(inputs.size, TextureFormat::RGBA8)));
+            d.target = b.declareRenderTarget("vss", RenderTargetAttachments{{d.out.color}, {}});
+        },
+        [inputs](const RenderGraph::Resources& r, const Data& d) { shade(inputs, r, d); });
+    graph.blackboard().put(board::kVssColor, data.out.color);
+    return data.out;
+}
+
+}  // namespace vv::render

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <cstdint>
+#include <glm/glm.hpp>
+
+#include "SolveWorker.h"
+#include "passes/FrameResources.h"
+#include "passes/PassContext.h"
+#include "vv/render/RenderGraph.h"
+#include "vv/vss/DepthNormalization.h"
+#include "vv/vss/Solver.h"
+
+namespace vv::render {
+
+/// The solver options as plain bytes for dependsOn and request keys (no
+/// padding surprises).
+struct SolverKey {
+    double p = 0.0;
+    double tolerance = 0.0;
+    double rangeMin = 0.0;  ///< fixed depth range; 0, 0 when visible
+    double rangeMax = 0.0;
+    std::int32_t kind = 0;
+    std::int32_t step = 0;
+    std::int32_t rangeMode = 0;
+    std::int32_t padding = 0;
+};
+
+[[nodiscard]] SolverKey solverKey(const vss::SolverOptions& options,
+                                  const vss::DepthRange& range) noexcept;
+
+struct VssSolveInputs {
+    PassContext context;
+    /// The asynchronous solver; null = solve inside the frame. With it, the
+    /// graph must have board::kSolvedImport (its latest solve).
+    SolveWorker* worker = nullptr;
+    /// Show board::kExternalVss's VSS instead of solving (tiled rendering).
+    bool external = false;
+    vss::SolverOptions options;  ///< effectiveSolverOptions()
+    vss::DepthRange range;
+    bool preview = false;
+    std::uint64_t depthView = 0;  ///< the view the depth shows (camera, size, scene)
+    std::uint64_t request = 0;    ///< the solve's key: depthView, solver, preview
+    float pixelScale = 0.0F;      ///< scene units per pixel per unit of depth
+    glm::ivec2 size{1, 1};
+    /// Give the slope texture the render size (the solver's thread fits the
+    /// slopes); else a stand-in texel and the shader fits them.
+    bool cpuSlopes = true;
+};
+
+struct VssSolveOutputs {
+    Handle<Texture> height;  ///< R32F z' (void) / z (vessels) / -1 (no VSS)
+    Handle<Texture> slope;   ///< RGBA32F fitted slopes when ShownVss::slopes
+    Handle<CpuValue<ShownVss>> shown;
+    Handle<CpuValue<SolveInput>> input;
+};
+
+/// "vss-solve": solves the VSS of board::kLinearDepthImage (inline, or
+/// submitted to the worker, showing its latest solve meanwhile), or takes
+/// board::kExternalVss's, and uploads height and slopes. Every output is
+/// persistent: cached while depth, solver, preview and the external VSS
+/// stay, so colour scale and iso-line changes never re-solve. Puts
+/// board::kVssHeight, kVssSlope, kShownVss, kSolveInput.
+VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs);
+
+}  // namespace vv::render
