@@ -75,6 +75,17 @@ void Arguments::takeValue() noexcept {
     }
 }
 
+void Arguments::takeOneInput(std::filesystem::path& input, bool& have) const {
+    if (isOption()) {
+        fail("unknown option '" + current() + "'");
+    }
+    if (have) {
+        fail("takes one input file, got a second one '" + current() + "'");
+    }
+    input = current();
+    have = true;
+}
+
 void Arguments::fail(const std::string& problem) const {
     throw UsageError(command_ + ": " + problem);
 }

@@ -51,6 +51,12 @@ class Arguments {
     /// Takes the value peekValue() showed.
     void takeValue() noexcept;
 
+    /// The current argument, which no option of the command took: the one
+    /// positional input when it is not an option and `have` is false (then
+    /// stored in `input`, `have` set). Throws UsageError for an unknown
+    /// option or a second input, naming it.
+    void takeOneInput(std::filesystem::path& input, bool& have) const;
+
     /// Throws UsageError "<command>: <problem>".
     [[noreturn]] void fail(const std::string& problem) const;
 

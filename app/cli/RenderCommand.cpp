@@ -106,13 +106,8 @@ RenderArguments parse(const std::vector<std::string>& args) {
             parsed.raycast = true;
         } else if (name == "--iso") {
             parsed.iso = static_cast<float>(parseNumber(a.value(), "--iso"));
-        } else if (a.isOption()) {
-            a.fail("unknown option '" + a.current() + "'");
-        } else if (!haveInput) {
-            parsed.input = a.current();
-            haveInput = true;
         } else {
-            a.fail("takes one input file, got a second one '" + a.current() + "'");
+            a.takeOneInput(parsed.input, haveInput);
         }
     }
     if (parsed.session) {

@@ -112,13 +112,8 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.thresholds.above = parseNumber(a.value(), "--above");
         } else if (parseRenderOption(a, parsed)) {
             // a shared render option (RenderOptions.h)
-        } else if (a.isOption()) {
-            a.fail("unknown option '" + a.current() + "'");
-        } else if (!haveInput) {
-            parsed.input = a.current();
-            haveInput = true;
         } else {
-            a.fail("takes one input file, got a second one '" + a.current() + "'");
+            a.takeOneInput(parsed.input, haveInput);
         }
     }
     if (parsed.session) {
