@@ -56,6 +56,25 @@ TEST(CliArguments, WalksOptionsValuesAndInlineValues) {
     EXPECT_FALSE(a.next());
 }
 
+TEST(CliArguments, OnePositionalInputThenUnknownOptionsAndSecondInputsAreRefused) {
+    const std::vector<std::string> args{"a.vtp", "b.vtp", "--bogus"};
+    Arguments a("report", args);
+    std::filesystem::path input;
+    bool have = false;
+    ASSERT_TRUE(a.next());
+    a.takeOneInput(input, have);
+    EXPECT_TRUE(have);
+    EXPECT_EQ(input, "a.vtp");
+    ASSERT_TRUE(a.next());
+    EXPECT_EQ(usageError([&] { a.takeOneInput(input, have); }),
+              "report: takes one input file, got a second one 'b.vtp'");
+    EXPECT_EQ(input, "a.vtp");
+    ASSERT_TRUE(a.next());
+    have = false;
+    EXPECT_EQ(usageError([&] { a.takeOneInput(input, have); }), "report: unknown option '--bogus'");
+    EXPECT_FALSE(have);
+}
+
 TEST(CliArguments, ParsersNameWhatIsWrong) {
     EXPECT_EQ(cli::parseNumber("2.5", "--p"), 2.5);
     EXPECT_EQ(usageError([] { static_cast<void>(cli::parseNumber("2,5", "--p")); }),
