@@ -255,8 +255,8 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
     EXPECT_FALSE(std::regex_search(table, std::regex("[0-9],[0-9]"))) << table;
 }
 
-/// The CLI as a process in German prints what it prints in the C locale.
-class CliInGerman : public ::testing::Test {
+/// vesselview-cli and vesselview run as processes in German.
+class ProcessInGerman : public ::testing::Test {
   protected:
     void SetUp() override {
         std::string why;
@@ -278,7 +278,7 @@ class CliInGerman : public ::testing::Test {
     std::string german_;
 };
 
-TEST_F(CliInGerman, InfoPrintsTheSameNumbersAsInTheCLocale) {
+TEST_F(ProcessInGerman, InfoPrintsTheSameNumbersAsInTheCLocale) {
     for (const std::string& args :
          {"info " + quote(decimalTube()), "info --json " + quote(decimalTube())}) {
         const ShellRun c = inC(args);
@@ -290,7 +290,7 @@ TEST_F(CliInGerman, InfoPrintsTheSameNumbersAsInTheCLocale) {
     }
 }
 
-TEST_F(CliInGerman, BenchWritesItsCsvAndTableInTheCLocale) {
+TEST_F(ProcessInGerman, BenchWritesItsCsvAndTableInTheCLocale) {
     vv::demo::DemoTreeOptions options;
     options.generations = 3;
     options.maxTriangles = 10000;
@@ -330,6 +330,25 @@ TEST_F(CliInGerman, BenchWritesItsCsvAndTableInTheCLocale) {
     EXPECT_FALSE(table.empty());
     EXPECT_FALSE(std::regex_search(table, std::regex("[0-9],[0-9]"))) << table;
 }
+
+#ifdef VV_GUI_EXE
+// The GUI's QApplication sets the C library's locale from the environment;
+// the mesh readers' checks read numbers with std::strtod. In German they
+// refused "0.5" ("vertex 1 has '0.5' where a coordinate belongs") until the
+// application set LC_NUMERIC back to C.
+TEST_F(ProcessInGerman, TheGuiOpensAsciiMeshesWithDecimalPoints) {
+    const fs::path obj = testDir() / "decimal-tetra.obj";
+    std::ofstream(obj) << "v 0.5 0.25 0\nv 10.5 0 0.125\nv 0 10.75 0\nv 0.5 0 10.5\n"
+                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const fs::path png = testDir() / "decimal-tetra.png";
+    fs::remove(png);
+    const ShellRun run =
+        shell(german_ + "XDG_CONFIG_HOME=" + quote(testDir() / "gui-config") + " " +
+              quote(VV_GUI_EXE) + " --screenshot " + quote(png) + " " + quote(obj));
+    EXPECT_EQ(run.code, 0) << run.out;
+    EXPECT_TRUE(fs::exists(png)) << run.out;
+}
+#endif
 
 }  // namespace
 }  // namespace vv::test
