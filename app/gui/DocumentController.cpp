@@ -45,7 +45,7 @@ bool isDicomPath(const QString& file) {
 DocumentController::DocumentController(QObject* parent) : QObject(parent) {}
 
 DocumentController::~DocumentController() {
-    if (task_) {
+    if (!task_.isNull()) {
         disconnect(task_.data(), nullptr, this, nullptr);
         task_->cancel();
     }
@@ -129,7 +129,7 @@ bool DocumentController::openSession(const QString& path) {
     } else {
         openFiles(session.files);
     }
-    if (task_ && task_.data() != before) {
+    if (!task_.isNull() && task_.data() != before) {
         pendingSession_ = std::move(session);  // until the new task's files are shown
     }
     return true;
@@ -206,7 +206,7 @@ void DocumentController::showDerivedScene(std::shared_ptr<const scene::Scene> sc
 }
 
 bool DocumentController::cancelLoad() {
-    if (!task_) {
+    if (task_.isNull()) {
         return false;
     }
     task_->cancel();
@@ -261,7 +261,7 @@ QString DocumentController::meshFileFilter() {
 
 bool DocumentController::abandonTask() {
     pendingSession_.reset();  // it waited for the old task's files
-    if (!task_) {
+    if (task_.isNull()) {
         return false;
     }
     // The old task stops at its next progress report and deletes itself;

@@ -50,6 +50,7 @@ class MeshLoadTask;
 /// and message to show, seriesScanned() the scan to choose from.
 class DocumentController : public QObject {
     Q_OBJECT
+    Q_DISABLE_COPY_MOVE(DocumentController)
 
   public:
     explicit DocumentController(QObject* parent = nullptr);

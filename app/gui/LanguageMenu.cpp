@@ -9,9 +9,9 @@
 
 namespace vv::gui {
 
-LanguageMenu::LanguageMenu(QWidget* parent) : QMenu(tr("&Language"), parent) {
+LanguageMenu::LanguageMenu(QWidget* parent)
+    : QMenu(tr("&Language"), parent), group_(new QActionGroup(this)) {
     setObjectName(QStringLiteral("languageMenu"));
-    group_ = new QActionGroup(this);
     const QString chosen = QSettings().value(QLatin1String(kLanguageKey)).toString();
     addLanguage(QString(), tr("System Default"), chosen);
     for (const QString& code : availableLanguages()) {

@@ -487,7 +487,7 @@ void MainWindow::buildStatusBar() {
     cancelButton_->hide();
 }
 
-void MainWindow::chooseSeries(std::shared_ptr<const dicom::DicomScanResult> scan,
+void MainWindow::chooseSeries(const std::shared_ptr<const dicom::DicomScanResult>& scan,
                               const QString& path) {
     statusLabel_->setText(tr("Choose a series"));
     auto* dialog = new SeriesDialog(*scan, this);

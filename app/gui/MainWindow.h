@@ -226,7 +226,8 @@ class MainWindow : public QMainWindow {
     /// A scene from the Segmentation panel in place of the shown one; the camera stays.
     void showSegmentedScene(std::shared_ptr<const scene::Scene> scene, const QString& status);
     /// The series chooser for a DICOM scan (window-modal, not blocking).
-    void chooseSeries(std::shared_ptr<const dicom::DicomScanResult> scan, const QString& path);
+    void chooseSeries(const std::shared_ptr<const dicom::DicomScanResult>& scan,
+                      const QString& path);
     void showError(const QString& title, const QString& message);
     void rebuildRecentMenu();
     void updateRangeLabel();

@@ -37,7 +37,7 @@ void MeasureTool::addPoint(const ProbeResult& point) {
         return;
     }
     const Measurement m = measure(points_[0], points_[1]);
-    const double depth = static_cast<double>(m.depthDifference);
+    const auto depth = static_cast<double>(m.depthDifference);
     const QString deeper = std::abs(depth) < 0.05 ? tr("same depth")
                            : depth > 0.0 ? tr("B deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1)
                                          : tr("A deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1);

@@ -22,8 +22,9 @@ QStringList files() {
 }
 
 QStringList merged(QStringList recent, const QStringList& opened) {
-    for (auto it = opened.crbegin(); it != opened.crend(); ++it) {
-        const QString absolute = QFileInfo(*it).absoluteFilePath();
+    // The last opened first, so that the first ends up in front.
+    for (qsizetype i = opened.size() - 1; i >= 0; --i) {
+        const QString absolute = QFileInfo(opened[i]).absoluteFilePath();
         recent.removeAll(absolute);
         recent.prepend(absolute);
     }

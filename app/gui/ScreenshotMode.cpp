@@ -67,8 +67,8 @@ void ScreenshotMode::fail(const QString& message) {
 
 void ScreenshotMode::finish(bool ok, const QString& message) {
     pending_ = false;
-    const QByteArray text = message.toLocal8Bit();
-    std::fprintf(ok ? stdout : stderr, "vesselview: %s\n", text.constData());
+    const QByteArray text = (QStringLiteral("vesselview: ") + message + '\n').toLocal8Bit();
+    std::fputs(text.constData(), ok ? stdout : stderr);
     std::fflush(ok ? stdout : stderr);
     const int code = ok ? 0 : 1;
     // Exit from the event loop, also when called before exec() started.
