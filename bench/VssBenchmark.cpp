@@ -15,7 +15,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <ctime>
 #include <fstream>
 #include <limits>
@@ -24,6 +23,7 @@
 #include <set>
 #include <sstream>
 
+#include "common/NumberText.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
@@ -46,11 +46,12 @@ void say(const VssBenchmarkOptions& options, const std::string& line) {
     }
 }
 
-std::string format(const char* pattern, double value) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, pattern, value);
-    return buffer;
-}
+// Numbers go through the C-locale formatters: the CLI is a Qt application,
+// whose QCoreApplication sets LC_NUMERIC from the environment, and the CSV
+// must read back under any locale.
+using app::fixedText;
+using app::scientificText;
+using app::significantText;
 
 double median(std::vector<double> values) {
     if (values.empty()) {
@@ -62,7 +63,7 @@ double median(std::vector<double> values) {
 }
 
 std::string tolerance255(double tolerance) {
-    return format("%g", tolerance * 255.0) + "/255";
+    return significantText(tolerance * 255.0, 6) + "/255";
 }
 
 void validate(const VssBenchmarkOptions& options) {
@@ -83,7 +84,7 @@ void validate(const VssBenchmarkOptions& options) {
     for (const double p : options.powers) {
         if (!std::isfinite(p) || p <= 0.0) {
             throw InvalidArgumentError("bench: p must be a finite number > 0, got " +
-                                       format("%g", p));
+                                       significantText(p, 6));
         }
     }
     if (options.solvers.empty()) {
@@ -172,15 +173,21 @@ std::string csvField(const std::string& text) {
     return quoted + "\"";
 }
 
-std::string number(double value, const char* pattern = "%.9g") {
-    return std::isnan(value) ? std::string() : format(pattern, value);
+/// A CSV value: nine significant digits; empty when not measured (NaN).
+std::string number(double value) {
+    return std::isnan(value) ? std::string() : significantText(value, 9);
+}
+
+/// A CSV time in ms: four decimals; empty when not measured (NaN).
+std::string msNumber(double ms) {
+    return std::isnan(ms) ? std::string() : fixedText(ms, 4);
 }
 
 std::string milliseconds(double ms) {
     if (std::isnan(ms)) {
         return "–";
     }
-    return format(ms < 10.0 ? "%.2f" : (ms < 1000.0 ? "%.1f" : "%.0f"), ms);
+    return fixedText(ms, ms < 10.0 ? 2 : (ms < 1000.0 ? 1 : 0));
 }
 
 std::string scientific(double value) {
@@ -193,7 +200,7 @@ std::string scientific(double value) {
     if (std::isinf(value)) {
         return "inf";
     }
-    return format("%.2e", value);
+    return scientificText(value, 2);
 }
 
 void writeText(const std::filesystem::path& file, const std::string& text) {
@@ -308,7 +315,7 @@ VssBenchmarkResult runVssBenchmark(const scene::Scene& scene, const VssBenchmark
 
         for (std::size_t pi = 0; pi < options.powers.size(); ++pi) {
             const double p = options.powers[pi];
-            const std::string caseName = viewName + " p=" + format("%g", p);
+            const std::string caseName = viewName + " p=" + significantText(p, 6);
             vss::SolverOptions refOptions;
             refOptions.kind = vss::SolverKind::Reference;
             refOptions.p = p;
@@ -389,10 +396,10 @@ std::string markdownTable(const VssBenchmarkResult& result) {
           "depth range |\n";
     md << "|---|---:|---:|---:|---:|---:|---|\n";
     for (const ViewSummary& v : result.views) {
-        md << "| " << render::toString(v.view) << " | " << format("%.1f", v.cameraDistance) << " | "
+        md << "| " << render::toString(v.view) << " | " << fixedText(v.cameraDistance, 1) << " | "
            << v.vesselPixels << " | " << v.voidPixels << " | " << v.regions << " | "
-           << v.maxContourPixels << " | " << format("%.2f", v.dmin) << " – "
-           << format("%.2f", v.dmax) << " |\n";
+           << v.maxContourPixels << " | " << fixedText(v.dmin, 2) << " – " << fixedText(v.dmax, 2)
+           << " |\n";
     }
     md << "\nSolvers (" << result.threads
        << " threads. median ms: median wall time of the whole vss::solve (normalise, "
@@ -404,8 +411,8 @@ std::string markdownTable(const VssBenchmarkResult& result) {
           "err ×255 | err > 1/255 | regions | max contour px | void px |\n";
     md << "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     for (const VssBenchmarkRow& r : result.rows) {
-        md << "| " << render::toString(r.view) << " | " << format("%g", r.p) << " | " << r.solver
-           << " | ";
+        md << "| " << render::toString(r.view) << " | " << significantText(r.p, 6) << " | "
+           << r.solver << " | ";
         if (!r.failure.empty()) {
             md << "– | not measured: " << r.failure << " |";
             for (int k = 0; k < 9; ++k) {
@@ -417,9 +424,10 @@ std::string markdownTable(const VssBenchmarkResult& result) {
         md << r.runs << " | " << milliseconds(r.medianMs) << " | "
            << milliseconds(r.medianInterpolateMs) << " | " << milliseconds(r.medianCpuMs) << " | "
            << scientific(r.error.rmse) << " | " << scientific(r.error.maxAbs) << " | "
-           << (r.error.maxAbs == 0.0 ? std::string("0") : format("%.3g", r.error.maxAbs * 255.0))
-           << " | " << format("%.3f %%", 100.0 * r.error.fractionAbove) << " | " << r.regions
-           << " | " << r.maxContourPixels << " | " << r.voidPixels << " |\n";
+           << (r.error.maxAbs == 0.0 ? std::string("0")
+                                     : significantText(r.error.maxAbs * 255.0, 3))
+           << " | " << fixedText(100.0 * r.error.fractionAbove, 3) + " %"
+           << " | " << r.regions << " | " << r.maxContourPixels << " | " << r.voidPixels << " |\n";
     }
     return md.str();
 }
@@ -433,15 +441,15 @@ std::string csvText(const VssBenchmarkResult& result) {
     for (const VssBenchmarkRow& r : result.rows) {
         const bool ok = r.failure.empty();
         csv << render::toString(r.view) << ',' << result.width << ',' << result.height << ','
-            << format("%g", r.p) << ',' << csvField(r.solver) << ',' << csvField(r.series) << ','
-            << vss::toString(r.options.kind) << ','
+            << significantText(r.p, 6) << ',' << csvField(r.solver) << ',' << csvField(r.series)
+            << ',' << vss::toString(r.options.kind) << ','
             << (r.options.kind == vss::SolverKind::Step ? std::to_string(r.options.step) : "")
             << ','
-            << (r.options.kind == vss::SolverKind::Fast ? format("%.9g", r.options.tolerance)
+            << (r.options.kind == vss::SolverKind::Fast ? significantText(r.options.tolerance, 9)
                                                         : std::string())
-            << ',' << result.threads << ',' << r.runs << ',' << number(r.medianMs, "%.4f") << ','
-            << number(r.minMs, "%.4f") << ',' << number(r.medianInterpolateMs, "%.4f") << ','
-            << number(r.medianCpuMs, "%.4f") << ',' << number(r.error.rmse) << ','
+            << ',' << result.threads << ',' << r.runs << ',' << msNumber(r.medianMs) << ','
+            << msNumber(r.minMs) << ',' << msNumber(r.medianInterpolateMs) << ','
+            << msNumber(r.medianCpuMs) << ',' << number(r.error.rmse) << ','
             << number(r.error.maxAbs) << ',' << number(r.error.fractionAbove) << ','
             << (ok ? std::to_string(r.error.compared) : "") << ','
             << (ok ? std::to_string(r.error.nonFinite) : "") << ','

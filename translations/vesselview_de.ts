@@ -164,6 +164,40 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::DocumentController</name>
+    <message>
+        <source>Cannot open</source>
+        <translation>Öffnen nicht möglich</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: no DICOM images found (%n file(s) skipped)</source>
+        <translation>
+            <numerusform>%1: keine DICOM-Bilder gefunden (%n Datei übersprungen)</numerusform>
+            <numerusform>%1: keine DICOM-Bilder gefunden (%n Dateien übersprungen)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Cannot open the session</source>
+        <translation>Die Sitzung kann nicht geöffnet werden</translation>
+    </message>
+    <message>
+        <source>Cannot save the session</source>
+        <translation>Die Sitzung kann nicht gespeichert werden</translation>
+    </message>
+    <message>
+        <source>Meshes (%1)</source>
+        <translation>Netze (%1)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ExportImageDialog</name>
     <message>
         <source>Export Image</source>
@@ -310,6 +344,72 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::HelpTexts</name>
+    <message>
+        <source>not initialised</source>
+        <translation>nicht initialisiert</translation>
+    </message>
+    <message>
+        <source>built with %1</source>
+        <translation>erstellt mit %1</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;VesselView %1&lt;/h3&gt;&lt;p&gt;A workstation for vessel trees: meshes with wall shear stress, pressure and other parameters on the vessel wall, and Void Space Surfaces.&lt;/p&gt;&lt;p&gt;OpenGL: %2&lt;/p&gt;&lt;p&gt;Libraries: %3&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;VesselView %1&lt;/h3&gt;&lt;p&gt;Ein Arbeitsplatz für Gefäßbäume: Oberflächennetze mit Wandschubspannung, Druck und weiteren Parametern auf der Gefäßwand sowie Void Space Surfaces.&lt;/p&gt;&lt;p&gt;OpenGL: %2&lt;/p&gt;&lt;p&gt;Bibliotheken: %3&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder neuer.&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>Rotate</source>
+        <translation>Drehen</translation>
+    </message>
+    <message>
+        <source>left drag</source>
+        <translation>Ziehen mit linker Maustaste</translation>
+    </message>
+    <message>
+        <source>Pan</source>
+        <translation>Verschieben</translation>
+    </message>
+    <message>
+        <source>right or middle drag, Shift + left drag</source>
+        <translation>Ziehen mit rechter oder mittlerer Maustaste, Umschalt + Ziehen mit linker Maustaste</translation>
+    </message>
+    <message>
+        <source>Zoom</source>
+        <translation>Zoomen</translation>
+    </message>
+    <message>
+        <source>mouse wheel</source>
+        <translation>Mausrad</translation>
+    </message>
+    <message>
+        <source>Pick a point to measure</source>
+        <translation>Einen Messpunkt wählen</translation>
+    </message>
+    <message>
+        <source>Ctrl + click (any click in Measure mode)</source>
+        <translation>Strg + Klick (im Messmodus jeder Klick)</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::LanguageMenu</name>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Sprache</translation>
+    </message>
+    <message>
+        <source>System Default</source>
+        <translation>Systemstandard</translation>
+    </message>
+    <message>
+        <source>Language</source>
+        <translation>Sprache</translation>
+    </message>
+    <message>
+        <source>The language changes when VesselView starts again.</source>
+        <translation>Die Sprache wechselt beim nächsten Start von VesselView.</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::MainWindow</name>
     <message>
         <source>OpenGL 4.1 is not available</source>
@@ -364,10 +464,6 @@
         <translation>Zwei Punkte auf den Gefäßen anklicken: ihr Abstand und ihr Tiefenunterschied (Strg + Klick geht auch ohne diesen Modus)</translation>
     </message>
     <message>
-        <source>Measure: click a point on a vessel</source>
-        <translation>Messen: einen Punkt auf einem Gefäß anklicken</translation>
-    </message>
-    <message>
         <source>&amp;Clear Measurement</source>
         <translation>Messung &amp;löschen</translation>
     </message>
@@ -386,22 +482,6 @@
     <message>
         <source>Display settings and panel layout as in a fresh installation</source>
         <translation>Darstellungseinstellungen und Anordnung der Seitenleisten wie nach einer Neuinstallation</translation>
-    </message>
-    <message>
-        <source>&amp;Language</source>
-        <translation>&amp;Sprache</translation>
-    </message>
-    <message>
-        <source>Language</source>
-        <translation>Sprache</translation>
-    </message>
-    <message>
-        <source>The language changes when VesselView starts again.</source>
-        <translation>Die Sprache wechselt beim nächsten Start von VesselView.</translation>
-    </message>
-    <message>
-        <source>System Default</source>
-        <translation>Systemstandard</translation>
     </message>
     <message>
         <source>&amp;Help</source>
@@ -456,30 +536,6 @@
         <translation>Modus für Farbfehlsichtige (%1): „Dunkel bedeutet tief“ auf der VSS, Cividis auf den Gefäßen, kein rot-grüner Tiefenhinweis</translation>
     </message>
     <message>
-        <source>Rotate</source>
-        <translation>Drehen</translation>
-    </message>
-    <message>
-        <source>left drag</source>
-        <translation>Ziehen mit linker Maustaste</translation>
-    </message>
-    <message>
-        <source>Pan</source>
-        <translation>Verschieben</translation>
-    </message>
-    <message>
-        <source>right or middle drag, Shift + left drag</source>
-        <translation>Ziehen mit rechter oder mittlerer Maustaste, Umschalt + Ziehen mit linker Maustaste</translation>
-    </message>
-    <message>
-        <source>Zoom</source>
-        <translation>Zoomen</translation>
-    </message>
-    <message>
-        <source>mouse wheel</source>
-        <translation>Mausrad</translation>
-    </message>
-    <message>
         <source>Keyboard Shortcuts</source>
         <translation>Tastenkürzel</translation>
     </message>
@@ -495,18 +551,6 @@
         <source>Cancelling…</source>
         <translation>Wird abgebrochen…</translation>
     </message>
-    <message>
-        <source>Measure: no vessel under the mouse</source>
-        <translation>Messen: kein Gefäß unter dem Mauszeiger</translation>
-    </message>
-    <message>
-        <source>Meshes (%1)</source>
-        <translation>Netze (%1)</translation>
-    </message>
-    <message>
-        <source>All files (*)</source>
-        <translation>Alle Dateien (*)</translation>
-    </message>
     <message numerus="yes">
         <source>%n files</source>
         <translation>
@@ -517,14 +561,6 @@
     <message>
         <source>demo vessel tree</source>
         <translation>Demo-Gefäßbaum</translation>
-    </message>
-    <message>
-        <source>%1: %2</source>
-        <translation>%1: %2</translation>
-    </message>
-    <message>
-        <source>Cannot open</source>
-        <translation>Öffnen nicht möglich</translation>
     </message>
     <message>
         <source>Cancelled</source>
@@ -547,30 +583,6 @@
         <translation>%1: %2, %3 Dreiecke</translation>
     </message>
     <message>
-        <source>object %1</source>
-        <translation>Objekt %1</translation>
-    </message>
-    <message>
-        <source>Measure: A on %1, %2 mm deep; click a second point</source>
-        <translation>Messen: A auf %1, %2 mm tief; einen zweiten Punkt anklicken</translation>
-    </message>
-    <message>
-        <source>same depth</source>
-        <translation>gleiche Tiefe</translation>
-    </message>
-    <message>
-        <source>B deeper by %1 mm</source>
-        <translation>B um %1 mm tiefer</translation>
-    </message>
-    <message>
-        <source>A deeper by %1 mm</source>
-        <translation>A um %1 mm tiefer</translation>
-    </message>
-    <message>
-        <source>Distance A–B: %1 mm; %2</source>
-        <translation>Abstand A–B: %1 mm; %2</translation>
-    </message>
-    <message>
         <source>%1: no data</source>
         <translation>%1: keine Daten</translation>
     </message>
@@ -581,10 +593,6 @@
     <message>
         <source>&amp;Clear Recent Files</source>
         <translation>Liste &amp;leeren</translation>
-    </message>
-    <message>
-        <source>timed out waiting for the data to be shown</source>
-        <translation>Zeitüberschreitung beim Warten auf die Anzeige der Daten</translation>
     </message>
     <message>
         <source>VSS: solving…</source>
@@ -601,18 +609,6 @@
     <message>
         <source>VSS: exact, %1 ms</source>
         <translation>VSS: exakt, %1 ms</translation>
-    </message>
-    <message>
-        <source>the viewer&apos;s frame could not be read</source>
-        <translation>das Bild der Ansicht konnte nicht gelesen werden</translation>
-    </message>
-    <message>
-        <source>saved %1 (%2 x %3)</source>
-        <translation>%1 gespeichert (%2 x %3)</translation>
-    </message>
-    <message>
-        <source>not initialised</source>
-        <translation>nicht initialisiert</translation>
     </message>
     <message>
         <source>About VesselView</source>
@@ -639,32 +635,8 @@
         <translation>Sitzung speichern</translation>
     </message>
     <message>
-        <source>Cannot save the session</source>
-        <translation>Die Sitzung kann nicht gespeichert werden</translation>
-    </message>
-    <message>
         <source>Session saved to %1</source>
         <translation>Sitzung gespeichert unter %1</translation>
-    </message>
-    <message>
-        <source>Cannot open the session</source>
-        <translation>Die Sitzung kann nicht geöffnet werden</translation>
-    </message>
-    <message>
-        <source>built with %1</source>
-        <translation>erstellt mit %1</translation>
-    </message>
-    <message>
-        <source>&lt;h3&gt;VesselView %1&lt;/h3&gt;&lt;p&gt;A workstation for vessel trees: meshes with wall shear stress, pressure and other parameters on the vessel wall, and Void Space Surfaces.&lt;/p&gt;&lt;p&gt;OpenGL: %2&lt;/p&gt;&lt;p&gt;Libraries: %3&lt;/p&gt;&lt;p&gt;Licensed under the GNU General Public License, version 3 or later.&lt;/p&gt;</source>
-        <translation>&lt;h3&gt;VesselView %1&lt;/h3&gt;&lt;p&gt;Ein Arbeitsplatz für Gefäßbäume: Oberflächennetze mit Wandschubspannung, Druck und weiteren Parametern auf der Gefäßwand sowie Void Space Surfaces.&lt;/p&gt;&lt;p&gt;OpenGL: %2&lt;/p&gt;&lt;p&gt;Bibliotheken: %3&lt;/p&gt;&lt;p&gt;Lizenziert unter der GNU General Public License, Version 3 oder neuer.&lt;/p&gt;</translation>
-    </message>
-    <message>
-        <source>Pick a point to measure</source>
-        <translation>Einen Messpunkt wählen</translation>
-    </message>
-    <message>
-        <source>Ctrl + click (any click in Measure mode)</source>
-        <translation>Strg + Klick (im Messmodus jeder Klick)</translation>
     </message>
     <message>
         <source>Open &amp;Folder…</source>
@@ -673,13 +645,6 @@
     <message>
         <source>Open DICOM folder</source>
         <translation>DICOM-Ordner öffnen</translation>
-    </message>
-    <message numerus="yes">
-        <source>%1: no DICOM images found (%n file(s) skipped)</source>
-        <translation>
-            <numerusform>%1: keine DICOM-Bilder gefunden (%n Datei übersprungen)</numerusform>
-            <numerusform>%1: keine DICOM-Bilder gefunden (%n Dateien übersprungen)</numerusform>
-        </translation>
     </message>
     <message>
         <source>Choose a series</source>
@@ -707,6 +672,41 @@
     <message>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::MeasureTool</name>
+    <message>
+        <source>Measure: click a point on a vessel</source>
+        <translation>Messen: einen Punkt auf einem Gefäß anklicken</translation>
+    </message>
+    <message>
+        <source>object %1</source>
+        <translation>Objekt %1</translation>
+    </message>
+    <message>
+        <source>Measure: A on %1, %2 mm deep; click a second point</source>
+        <translation>Messen: A auf %1, %2 mm tief; einen zweiten Punkt anklicken</translation>
+    </message>
+    <message>
+        <source>same depth</source>
+        <translation>gleiche Tiefe</translation>
+    </message>
+    <message>
+        <source>B deeper by %1 mm</source>
+        <translation>B um %1 mm tiefer</translation>
+    </message>
+    <message>
+        <source>A deeper by %1 mm</source>
+        <translation>A um %1 mm tiefer</translation>
+    </message>
+    <message>
+        <source>Distance A–B: %1 mm; %2</source>
+        <translation>Abstand A–B: %1 mm; %2</translation>
+    </message>
+    <message>
+        <source>Measure: no vessel under the mouse</source>
+        <translation>Messen: kein Gefäß unter dem Mauszeiger</translation>
     </message>
 </context>
 <context>
@@ -916,6 +916,21 @@
     <message>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::ScreenshotMode</name>
+    <message>
+        <source>timed out waiting for the data to be shown</source>
+        <translation>Zeitüberschreitung beim Warten auf die Anzeige der Daten</translation>
+    </message>
+    <message>
+        <source>the viewer&apos;s frame could not be read</source>
+        <translation>das Bild der Ansicht konnte nicht gelesen werden</translation>
+    </message>
+    <message>
+        <source>saved %1 (%2 x %3)</source>
+        <translation>%1 gespeichert (%2 x %3)</translation>
     </message>
 </context>
 <context>

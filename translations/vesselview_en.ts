@@ -2,19 +2,22 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>vv::gui::DocumentController</name>
+    <message numerus="yes">
+        <source>%1: no DICOM images found (%n file(s) skipped)</source>
+        <translation>
+            <numerusform>%1: no DICOM images found (%n file skipped)</numerusform>
+            <numerusform>%1: no DICOM images found (%n files skipped)</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::MainWindow</name>
     <message numerus="yes">
         <source>%n files</source>
         <translation>
             <numerusform>%n file</numerusform>
             <numerusform>%n files</numerusform>
-        </translation>
-    </message>
-    <message numerus="yes">
-        <source>%1: no DICOM images found (%n file(s) skipped)</source>
-        <translation>
-            <numerusform>%1: no DICOM images found (%n file skipped)</numerusform>
-            <numerusform>%1: no DICOM images found (%n files skipped)</numerusform>
         </translation>
     </message>
 </context>

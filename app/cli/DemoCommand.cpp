@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cerrno>
 #include <cstdint>
-#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
@@ -18,6 +17,7 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/OutputFiles.h"
+#include "common/NumberText.h"
 #include "vv/core/Error.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
@@ -77,11 +77,10 @@ int writeDemoDicom(const std::filesystem::path& folder, std::ostream& out) {
     }
     const glm::ivec3 dims = cta.volume.dims();
     const glm::dvec3 spacing = cta.volume.spacing();
-    char size[96];
-    std::snprintf(size, sizeof size, "%d x %d x %d voxels, %.3g x %.3g x %.3g mm", dims.x, dims.y,
-                  dims.z, spacing.x, spacing.y, spacing.z);
-    out << "wrote " << folder.string() << ": CT series of " << dims.z << " slices, " << size
-        << ", series " << uid << "\n";
+    out << "wrote " << folder.string() << ": CT series of " << dims.z << " slices, " << dims.x
+        << " x " << dims.y << " x " << dims.z << " voxels, " << app::significantText(spacing.x, 3)
+        << " x " << app::significantText(spacing.y, 3) << " x "
+        << app::significantText(spacing.z, 3) << " mm, series " << uid << "\n";
     return kOk;
 }
 

@@ -3,6 +3,7 @@
 
 #include <QCoreApplication>
 #include <QGuiApplication>
+#include <clocale>
 
 #include "vv/core/Error.h"
 
@@ -31,6 +32,9 @@ void ensureGuiApplication() {
     // Lives until the process ends: tearing it down during static
     // destruction is fragile.
     new QGuiApplication(argc, argv);
+    // It set the C library's locale from the environment: numbers written
+    // and read by the engine (std::snprintf, std::strtod) stay C.
+    std::setlocale(LC_NUMERIC, "C");
 }
 
 }  // namespace vv::cli

@@ -8,7 +8,10 @@ namespace vv::cli {
 /// when a display (or QT_QPA_PLATFORM) is set, else on the "offscreen"
 /// platform, so that a missing X server gives a clear RenderError later
 /// instead of xcb aborting the process. The application lives until the
-/// process ends (Qt allows one per process).
+/// process ends (Qt allows one per process). Qt sets the C library's locale
+/// from the environment when it creates the application; LC_NUMERIC is put
+/// back to "C" then, so that the engine's std::snprintf / std::strtod keep
+/// reading and writing "0.5" under any locale.
 /// Throws vv::RenderError when the process already has a QCoreApplication
 /// that is not a QGuiApplication.
 void ensureGuiApplication();

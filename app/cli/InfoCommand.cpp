@@ -5,7 +5,6 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -17,6 +16,7 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
+#include "common/NumberText.h"
 #include "vv/core/Error.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/meshio/MeshLoader.h"
@@ -67,11 +67,9 @@ std::vector<ArrayInfo> summarize(const std::vector<vv::scene::DataArray>& arrays
     return out;
 }
 
-/// Six significant digits for people to read.
+/// Six significant digits for people to read (and scripts: C locale).
 std::string humanNumber(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", v);
-    return buffer;
+    return app::readableText(v);
 }
 
 void writeJsonArrays(JsonWriter& json, const std::vector<ArrayInfo>& arrays) {

@@ -8,8 +8,8 @@
 #include <algorithm>
 #include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -22,6 +22,7 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
+#include "common/NumberText.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
@@ -73,9 +74,12 @@ std::uint64_t residentAfterTrimKiB(bool trim) {
 }
 
 std::string mib(std::uint64_t kib) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.1f MiB", static_cast<double>(kib) / 1024.0);
-    return buffer;
+    return app::fixedText(static_cast<double>(kib) / 1024.0, 1) + " MiB";
+}
+
+/// printf's "%+.2f%%".
+std::string signedPercent(double percent) {
+    return (std::signbit(percent) ? "" : "+") + app::fixedText(percent, 2) + "%";
 }
 
 }  // namespace
@@ -204,13 +208,11 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
             const double lap = std::chrono::duration<double>(now - lapStart).count();
             const long lapFrames = f % every == 0 ? every : f % every;
             lapStart = now;
-            char line[160];
-            std::snprintf(line, sizeof line,
-                          "frame %ld: resident %s (peak since last %s), %.1f ms/frame\n", f,
-                          mib(rss).c_str(), mib(lapPeak).c_str(),
-                          1000.0 * lap / static_cast<double>(lapFrames));
+            out << "frame " << f << ": resident " << mib(rss) << " (peak since last "
+                << mib(lapPeak) << "), "
+                << app::fixedText(1000.0 * lap / static_cast<double>(lapFrames), 1)
+                << " ms/frame\n";
             lapPeak = 0;
-            out << line;
             out.flush();
         }
     }
@@ -221,14 +223,12 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
                           : 0.0;
     };
     const double growth = percent(floor100, floorEnd);
-    char summary[320];
-    std::snprintf(summary, sizeof summary,
-                  "soak: %ld frames in %.0f s (%.1f ms/frame); resident in use (floor) over "
-                  "frames 1-100 %s, over the last 100 %s (%+.2f%%); peaks %s and %s (%+.2f%%)\n",
-                  frames, seconds, 1000.0 * seconds / static_cast<double>(frames),
-                  mib(floor100).c_str(), mib(floorEnd).c_str(), growth, mib(after100).c_str(),
-                  mib(end).c_str(), percent(after100, end));
-    out << summary;
+    out << "soak: " << frames << " frames in " << app::fixedText(seconds, 0) << " s ("
+        << app::fixedText(1000.0 * seconds / static_cast<double>(frames), 1)
+        << " ms/frame); resident in use (floor) over frames 1-100 " << mib(floor100)
+        << ", over the last 100 " << mib(floorEnd) << " (" << signedPercent(growth) << "); peaks "
+        << mib(after100) << " and " << mib(end) << " (" << signedPercent(percent(after100, end))
+        << ")\n";
     if (floor100 == 0 || floorEnd == 0) {
         err << "vesselview-cli: soak: cannot read VmRSS from /proc/self/status\n";
         return kInternalError;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "common/NumberText.h"
 
+#include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
@@ -10,13 +11,29 @@ namespace vv::app {
 
 namespace {
 
+std::string nonFinite(double value) {
+    return std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
+}
+
 template <typename T>
 std::string shortest(T value) {
     if (!std::isfinite(value)) {
-        return std::isnan(value) ? "nan" : (value > 0 ? "inf" : "-inf");
+        return nonFinite(static_cast<double>(value));
     }
     std::array<char, 64> buffer{};
     const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value);
+    return ec == std::errc() ? std::string(buffer.data(), end) : std::string("nan");
+}
+
+/// std::to_chars with a format and precision: printf's text in the C locale.
+std::string formatted(double value, std::chars_format format, int digits) {
+    if (!std::isfinite(value)) {
+        return nonFinite(value);
+    }
+    // Fixed notation of 1e308 with many digits needs more than 330 characters.
+    std::array<char, 512> buffer{};
+    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
+                                         format, std::max(digits, 0));
     return ec == std::errc() ? std::string(buffer.data(), end) : std::string("nan");
 }
 
@@ -31,13 +48,19 @@ std::string shortestText(float value) {
 }
 
 std::string readableText(double value) {
-    if (!std::isfinite(value)) {
-        return shortest(value);
-    }
-    std::array<char, 64> buffer{};
-    const auto [end, ec] = std::to_chars(buffer.data(), buffer.data() + buffer.size(), value,
-                                         std::chars_format::general, 6);
-    return ec == std::errc() ? std::string(buffer.data(), end) : std::string("nan");
+    return significantText(value, 6);
+}
+
+std::string fixedText(double value, int digits) {
+    return formatted(value, std::chars_format::fixed, digits);
+}
+
+std::string significantText(double value, int digits) {
+    return formatted(value, std::chars_format::general, digits);
+}
+
+std::string scientificText(double value, int digits) {
+    return formatted(value, std::chars_format::scientific, digits);
 }
 
 std::optional<double> parseFiniteNumber(std::string_view text) noexcept {

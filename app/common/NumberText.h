@@ -21,6 +21,20 @@ namespace vv::app {
 /// digits ("0.000196078", "0.55", "1e+12"); C locale.
 [[nodiscard]] std::string readableText(double value);
 
+// printf's fixed formats, in the C locale whatever the process locale
+// (std::snprintf follows LC_NUMERIC and would write "0,5" under de_DE):
+// the same text as printf gives in the C locale; "nan", "inf", "-inf" when
+// not finite. `digits` below 0 counts as 0.
+
+/// "%.*f": `digits` digits after the point (fixedText(0.5, 2) = "0.50").
+[[nodiscard]] std::string fixedText(double value, int digits);
+/// "%.*g": at most `digits` significant digits, trailing zeros dropped
+/// (significantText(0.25, 1) = "0.2", significantText(1e20, 6) = "1e+20").
+[[nodiscard]] std::string significantText(double value, int digits);
+/// "%.*e": one digit, the point, `digits` digits and the exponent
+/// (scientificText(1234.5, 2) = "1.23e+03").
+[[nodiscard]] std::string scientificText(double value, int digits);
+
 /// `text` as a finite double (all of it, C locale); nullopt otherwise.
 [[nodiscard]] std::optional<double> parseFiniteNumber(std::string_view text) noexcept;
 /// `text` as an int (all of it, decimal); nullopt otherwise.

@@ -2,19 +2,14 @@
 #include "gui/MainWindow.h"
 
 #include <QAction>
-#include <QActionGroup>
-#include <QApplication>
 #include <QCloseEvent>
 #include <QComboBox>
-#include <QCoreApplication>
-#include <QDir>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QDragEnterEvent>
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
-#include <QImage>
 #include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
@@ -25,23 +20,19 @@
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
-#include <QTimer>
 #include <QToolBar>
 #include <QUrl>
-#include <algorithm>
 #include <cmath>
-#include <cstdio>
-#include <filesystem>
-#include <functional>
-#include <vector>
+#include <utility>
 
-#include "common/ResourcePaths.h"
+#include "gui/DocumentController.h"
 #include "gui/ExportImageDialog.h"
-#include "gui/MeasureOverlay.h"
-#include "gui/MeshLoadTask.h"
+#include "gui/HelpTexts.h"
+#include "gui/LanguageMenu.h"
+#include "gui/MeasureTool.h"
 #include "gui/ReportDialog.h"
+#include "gui/ScreenshotMode.h"
 #include "gui/SeriesDialog.h"
-#include "gui/Translations.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
 #include "gui/panels/DataPanel.h"
@@ -50,53 +41,31 @@
 #include "gui/panels/PanelUtil.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/VssPanel.h"
-#include "vv/colormaps/ColorMap.h"
-#include "vv/colormaps/DepthScale.h"
-#include "vv/core/AtomicFile.h"
-#include "vv/core/Error.h"
-#include "vv/dicom/Versions.h"
-#include "vv/meshio/MeshLoader.h"
-#include "vv/meshio/Versions.h"
 #include "vv/render/MeshRenderer.h"
-#include "vv/segmentation/SceneSource.h"
-#include "vv/vss/Versions.h"
 
 namespace vv::gui {
 
 namespace {
 
-constexpr int kMaxRecentFiles = 8;
-const char* const kRecentFilesKey = "recentFiles";
 const char* const kGeometryKey = "mainWindow/geometry";
 const char* const kLayoutKey = "mainWindow/layout";
 /// Bump when the docks change so that an old saved layout is not applied.
 constexpr int kLayoutVersion = 1;
 /// The side panels' initial width (logical pixels).
 constexpr int kDockWidth = 330;
-/// Screenshot mode gives up when no frame was saved within this time.
-constexpr int kScreenshotTimeoutMs = 10 * 60 * 1000;
 
-bool hasSupportedExtension(const QString& file) {
-    const QString suffix = "." + QFileInfo(file).suffix().toLower();
-    const auto& extensions = meshio::supportedMeshExtensions();
-    return std::any_of(extensions.begin(), extensions.end(),
-                       [&](const std::string& e) { return suffix == QString::fromStdString(e); });
-}
-
-QStringList localFiles(const QMimeData* mime, bool supportedOnly) {
-    QStringList files;
+/// The local files and folders of a drag.
+QStringList localPaths(const QMimeData* mime) {
+    QStringList paths;
     if (mime == nullptr || !mime->hasUrls()) {
-        return files;
+        return paths;
     }
     for (const QUrl& url : mime->urls()) {
         if (url.isLocalFile()) {
-            const QString file = url.toLocalFile();
-            if (!supportedOnly || hasSupportedExtension(file)) {
-                files << file;
-            }
+            paths << url.toLocalFile();
         }
     }
-    return files;
+    return paths;
 }
 
 }  // namespace
@@ -106,6 +75,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setAcceptDrops(true);
     resize(1280, 800);
 
+    document_ = new DocumentController(this);
     stack_ = new QStackedWidget(this);
     glMessage_ = new QLabel(stack_);
     glMessage_->setAlignment(Qt::AlignCenter);
@@ -129,8 +99,8 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
         glMessage_->setText(message);
         stack_->setCurrentWidget(glMessage_);
         statusLabel_->setText(tr("OpenGL 4.1 is not available"));
-        if (!screenshotPath_.isEmpty()) {
-            finishScreenshot(false, message);
+        if (screenshot_ != nullptr) {
+            screenshot_->fail(message);
         }
     });
     // Queued: grabbing the frame from inside paintGL would re-enter it.
@@ -141,6 +111,7 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     buildToolBar();
     buildMenus();
     buildStatusBar();
+    connectDocument();
     defaultLayout_ = saveState(kLayoutVersion);
     const QSettings settings;
     restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray());
@@ -153,9 +124,55 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
 }
 
 MainWindow::~MainWindow() {
-    if (task_) {
-        task_->cancel();
-    }
+    // The document outlives the widgets it would talk to: it talks no more.
+    disconnect(document_, nullptr, this, nullptr);
+    document_->cancelLoad();
+}
+
+void MainWindow::connectDocument() {
+    connect(document_, &DocumentController::loadStarted, this, [this](const QString& description) {
+        statusLabel_->setText(description + QStringLiteral("…"));
+        progressBar_->setValue(0);
+        progressBar_->show();
+        cancelButton_->show();
+    });
+    connect(document_, &DocumentController::loadProgress, this,
+            [this](double fraction, const QString& status) {
+                progressBar_->setValue(static_cast<int>(fraction * 1000.0));
+                if (!status.isEmpty()) {
+                    statusLabel_->setText(status);
+                }
+            });
+    connect(document_, &DocumentController::loadEnded, this, [this] {
+        progressBar_->hide();
+        cancelButton_->hide();
+    });
+    connect(document_, &DocumentController::loadCancelled, this, [this] {
+        statusLabel_->setText(tr("Cancelled"));
+        if (screenshot_ != nullptr) {
+            screenshot_->fail(tr("loading was cancelled"));
+        }
+    });
+    connect(document_, &DocumentController::failed, this, &MainWindow::showError);
+    connect(document_, &DocumentController::seriesScanned, this, &MainWindow::chooseSeries);
+    connect(document_, &DocumentController::sceneChanged, this, &MainWindow::showScene);
+    connect(document_, &DocumentController::sessionReady, this, [this](const Session& session) {
+        applySession(*viewer_, session);
+        if (!session.layout.isEmpty()) {
+            restoreState(session.layout, kLayoutVersion);
+        }
+    });
+    connect(document_, &DocumentController::sceneShown, this, &MainWindow::sceneWasShown);
+    connect(document_, &DocumentController::sessionApplied, this, &MainWindow::sessionApplied);
+    connect(document_, &DocumentController::volumeChanged, this,
+            [this](const std::shared_ptr<const scene::Volume>& volume,
+                   const segmentation::SceneSourceOptions& loadedWith,
+                   const segmentation::ThresholdRange& range) {
+                segmentationPanel_->setVolume(volume, loadedWith.segmentation, range,
+                                              loadedWith.surface);
+            });
+    connect(document_, &DocumentController::recentFilesChanged, this,
+            &MainWindow::rebuildRecentMenu);
 }
 
 void MainWindow::buildMenus() {
@@ -209,7 +226,7 @@ void MainWindow::buildMenus() {
     exportImageAction_->setObjectName(QStringLiteral("exportImage"));
     exportImageAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_E));
     exportReportAction_ = file->addAction(tr("Export Re&port…"), this, [this] {
-        auto* dialog = new ReportDialog(*viewer_, reportSource(), this);
+        auto* dialog = new ReportDialog(*viewer_, document_->reportSource(), this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->open();
     });
@@ -245,14 +262,7 @@ void MainWindow::buildMenus() {
     measureAction_->setToolTip(
         tr("Click two points on the vessels: their distance and depth difference "
            "(Ctrl + click works without this mode)"));
-    connect(measureAction_, &QAction::toggled, this, [this](bool on) {
-        viewer_->setMeasureMode(on);
-        if (!on) {
-            clearMeasurement();
-        } else if (measurePoints_.isEmpty()) {
-            measureLabel_->setText(tr("Measure: click a point on a vessel"));
-        }
-    });
+    connect(measureAction_, &QAction::toggled, this, [this](bool on) { measure_->setActive(on); });
     QAction* clearMeasure =
         view->addAction(tr("&Clear Measurement"), this, &MainWindow::clearMeasurement);
     clearMeasure->setShortcut(Qt::SHIFT | Qt::Key_M);
@@ -269,30 +279,7 @@ void MainWindow::buildMenus() {
     defaults->setObjectName(QStringLiteral("resetToDefaults"));
     defaults->setToolTip(tr("Display settings and panel layout as in a fresh installation"));
 
-    // View > Language: stored in QSettings, applied at the next start.
-    QMenu* language = view->addMenu(tr("&Language"));
-    language->setObjectName(QStringLiteral("languageMenu"));
-    auto* languages = new QActionGroup(language);
-    const QString chosen = QSettings().value(QLatin1String(kLanguageKey)).toString();
-    const auto addLanguage = [&](const QString& code, const QString& label) {
-        QAction* action = language->addAction(label);
-        action->setData(code);
-        action->setCheckable(true);
-        action->setChecked(code == chosen);
-        languages->addAction(action);
-        connect(action, &QAction::triggered, this, [this, code] {
-            QSettings().setValue(QLatin1String(kLanguageKey), code);
-            auto* box = new QMessageBox(QMessageBox::Information, tr("Language"),
-                                        tr("The language changes when VesselView starts again."),
-                                        QMessageBox::Ok, this);
-            box->setAttribute(Qt::WA_DeleteOnClose);
-            box->open();
-        });
-    };
-    addLanguage(QString(), tr("System Default"));
-    for (const QString& code : availableLanguages()) {
-        addLanguage(code, languageName(code));
-    }
+    view->addMenu(new LanguageMenu(this));  // stored in QSettings, applied at the next start
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
@@ -449,32 +436,7 @@ void MainWindow::resetToDefaults() {
 }
 
 QString MainWindow::shortcutSummary() const {
-    QStringList rows;
-    const auto row = [&rows](const QString& what, const QString& keys) {
-        rows << QStringLiteral("<tr><td>%1</td><td><b>%2</b></td></tr>")
-                    .arg(what.toHtmlEscaped(), keys.toHtmlEscaped());
-    };
-    const std::function<void(const QMenu*)> collect = [&](const QMenu* menu) {
-        for (const QAction* action : menu->actions()) {
-            if (action->menu() != nullptr) {
-                collect(action->menu());
-            } else if (!action->shortcut().isEmpty()) {
-                row(action->text().remove(QLatin1Char('&')),
-                    action->shortcut().toString(QKeySequence::NativeText));
-            }
-        }
-    };
-    for (const QAction* action : menuBar()->actions()) {
-        if (action->menu() != nullptr) {
-            collect(action->menu());
-        }
-    }
-    row(tr("Rotate"), tr("left drag"));
-    row(tr("Pan"), tr("right or middle drag, Shift + left drag"));
-    row(tr("Zoom"), tr("mouse wheel"));
-    row(tr("Pick a point to measure"), tr("Ctrl + click (any click in Measure mode)"));
-    return QStringLiteral("<table cellspacing=\"6\">") + rows.join(QString()) +
-           QStringLiteral("</table>");
+    return HelpTexts::shortcuts(*menuBar());
 }
 
 void MainWindow::showShortcuts() {
@@ -506,19 +468,17 @@ void MainWindow::buildStatusBar() {
     cancelButton_ = new QPushButton(tr("Cancel"), this);
     cancelButton_->setObjectName(QStringLiteral("cancelButton"));
     connect(cancelButton_, &QPushButton::clicked, this, [this] {
-        if (task_) {
-            task_->cancel();
+        if (document_->cancelLoad()) {
             statusLabel_->setText(tr("Cancelling…"));
         }
     });
     statusBar()->addWidget(statusLabel_, 1);
     measureLabel_ = new QLabel(this);
     measureLabel_->setObjectName(QStringLiteral("measureLabel"));
-    measureOverlay_ = new MeasureOverlay(viewer_);
+    measure_ = new MeasureTool(viewer_, measureLabel_, this);
     statusBar()->addPermanentWidget(measureLabel_);
-    connect(viewer_, &ViewerWidget::pointPicked, this, &MainWindow::addMeasurePoint);
-    connect(viewer_, &ViewerWidget::pickMissed, this,
-            [this] { measureLabel_->setText(tr("Measure: no vessel under the mouse")); });
+    connect(viewer_, &ViewerWidget::pointPicked, measure_, &MeasureTool::addPoint);
+    connect(viewer_, &ViewerWidget::pickMissed, measure_, &MeasureTool::missed);
     statusBar()->addPermanentWidget(vssLabel_);
     statusBar()->addPermanentWidget(rangeLabel_);
     statusBar()->addPermanentWidget(progressBar_);
@@ -527,215 +487,42 @@ void MainWindow::buildStatusBar() {
     cancelButton_->hide();
 }
 
-QString MainWindow::meshFileFilter() {
-    QStringList patterns;
-    for (const auto& extension : meshio::supportedMeshExtensions()) {
-        const QString e = QString::fromStdString(extension);
-        patterns << "*" + e << "*" + e.toUpper();
-    }
-    return tr("Meshes (%1)").arg(patterns.join(' ')) + QStringLiteral(";;") + tr("All files (*)");
-}
-
-std::optional<QString> MainWindow::findDemoFile() {
-    // $VV_DEMO_FILE, else relative to the binary: build tree or install prefix.
-    if (const auto demo = vv::app::findDemoFile()) {
-        return QFileInfo(*demo).absoluteFilePath();
-    }
-    return std::nullopt;
-}
-
-void MainWindow::openFiles(const QStringList& files) {
-    std::vector<std::filesystem::path> paths;
-    QStringList names;
-    for (const QString& f : files) {
-        if (!f.isEmpty()) {
-            paths.emplace_back(QFile::encodeName(f).toStdString());
-            names << f;
-        }
-    }
-    if (paths.empty()) {
-        return;
-    }
-    startTask(MeshLoadTask::loadFiles(std::move(paths), this), names);
-}
-
-void MainWindow::openDicom(const QString& path) {
-    if (path.isEmpty()) {
-        return;
-    }
-    MeshLoadTask* task = MeshLoadTask::scanDicom(QFile::encodeName(path).toStdString(), this);
-    connect(task, &MeshLoadTask::scanned, this,
-            [this, path](std::shared_ptr<const dicom::DicomScanResult> scan) {
-                if (scan->allSeries().empty()) {
-                    const int skipped = static_cast<int>(scan->skipped.size());
-                    showError(tr("Cannot open"),
-                              tr("%1: no DICOM images found (%n file(s) skipped)", nullptr, skipped)
-                                  .arg(path));
-                    return;
-                }
-                statusLabel_->setText(tr("Choose a series"));
-                auto* dialog = new SeriesDialog(*scan, this);
-                dialog->setAttribute(Qt::WA_DeleteOnClose);
-                connect(dialog, &QDialog::accepted, this, [this, dialog, path] {
-                    std::vector<std::filesystem::path> paths{QFile::encodeName(path).toStdString()};
-                    startTask(MeshLoadTask::loadFiles(std::move(paths),
-                                                      dialog->sceneSourceOptions(), this),
-                              {path});
-                });
-                connect(dialog, &QDialog::rejected, this,
-                        [this] { statusLabel_->setText(tr("Ready")); });
-                dialog->open();
-                emit seriesDialogShown(dialog);
-            });
-    // No files for the title / recent list: the chosen series' task has them.
-    startTask(task, {});
-}
-
-void MainWindow::openDemo() {
-    if (const auto file = findDemoFile()) {
-        std::vector<std::filesystem::path> paths{QFile::encodeName(*file).toStdString()};
-        // Not remembered in the recent files: it is one menu entry away anyway.
-        startTask(MeshLoadTask::loadFiles(std::move(paths), this), {});
-    } else {
-        startTask(MeshLoadTask::generateDemo(this), {});
-    }
-}
-
-void MainWindow::startTask(MeshLoadTask* task, const QStringList& files) {
-    if (task_) {
-        // The old task stops at its next progress report and deletes itself;
-        // nothing it delivers reaches this window any more.
-        MeshLoadTask* old = task_.data();
-        disconnect(old, nullptr, this, nullptr);
-        connect(old, &MeshLoadTask::finished, old, &QObject::deleteLater);
-        old->cancel();
-    }
-    task_ = task;
-    connect(task, &MeshLoadTask::progressChanged, this,
-            [this, task](double fraction, const QString& stage) {
-                if (task != task_) {
-                    return;
-                }
-                progressBar_->setValue(static_cast<int>(fraction * 1000.0));
-                if (!stage.isEmpty()) {
-                    statusLabel_->setText(task->description() + QStringLiteral(": ") + stage);
-                }
-            });
-    connect(task, &MeshLoadTask::loaded, this,
-            [this, task, files](std::shared_ptr<const scene::Scene> scene) {
-                QString title;
-                if (files.size() == 1) {
-                    title = QFileInfo(files.front()).fileName();
-                } else if (files.size() > 1) {
-                    title = tr("%n files", nullptr, static_cast<int>(files.size()));
-                } else if (!task->files().empty()) {
-                    title = QString::fromStdString(task->files().front().filename().string());
-                } else {
-                    title = tr("demo vessel tree");
-                }
-                sceneFiles_ = files;
-                shownFiles_.clear();
-                for (const auto& path : task->files()) {
-                    shownFiles_
-                        << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
-                }
-                const segmentation::SceneSourceReport& source = task->dicomReport();
-                shownSeriesUid_ = source.fromVolume || source.fromSegmentationObject
-                                      ? source.seriesInstanceUid
-                                      : std::string();
-                setScene(std::move(scene), title);
-                // A DICOM image series: keep its volume for the Segmentation panel.
-                if (source.volume) {
-                    volume_ = source.volume;
-                    segmentationPanel_->setVolume(volume_, task->dicomOptions().segmentation,
-                                                  source.range, task->dicomOptions().surface);
-                }
-                addRecentFiles(files);
-            });
-    connect(task, &MeshLoadTask::failed, this,
-            [this, task](const QString& file, const QString& problem) {
-                QString what = file;
-                if (what.isEmpty() && !task->files().empty()) {
-                    what = QString::fromStdString(task->files().front().string());
-                }
-                const QString message = what.isEmpty() ? problem : tr("%1: %2").arg(what, problem);
-                pendingSession_.reset();  // its files did not load
-                showError(tr("Cannot open"), message);
-            });
-    connect(task, &MeshLoadTask::cancelled, this, [this] {
-        statusLabel_->setText(tr("Cancelled"));
-        if (!screenshotPath_.isEmpty()) {
-            finishScreenshot(false, tr("loading was cancelled"));
-        }
-    });
-    connect(task, &MeshLoadTask::finished, this, &MainWindow::taskFinished);
-
-    statusLabel_->setText(task->description() + QStringLiteral("…"));
-    progressBar_->setValue(0);
-    progressBar_->show();
-    cancelButton_->show();
-    task->start();
-}
-
-void MainWindow::taskFinished() {
-    auto* task = qobject_cast<MeshLoadTask*>(sender());
-    if (task != nullptr) {
-        task->deleteLater();
-    }
-    if (task == task_) {
-        task_ = nullptr;
-        progressBar_->hide();
-        cancelButton_->hide();
-    }
-}
-
-void MainWindow::setScene(std::shared_ptr<const scene::Scene> scene, const QString& title) {
-    // A scene from elsewhere: no volume behind it (a DICOM load sets it afterwards).
-    volume_.reset();
-    segmentationPanel_->setVolume(nullptr);
-    showScene(std::move(scene), title);
+void MainWindow::chooseSeries(const std::shared_ptr<const dicom::DicomScanResult>& scan,
+                              const QString& path) {
+    statusLabel_->setText(tr("Choose a series"));
+    auto* dialog = new SeriesDialog(*scan, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this,
+            [this, dialog, path] { document_->openSeries(path, dialog->sceneSourceOptions()); });
+    connect(dialog, &QDialog::rejected, this, [this] { statusLabel_->setText(tr("Ready")); });
+    dialog->open();
+    emit seriesDialogShown(dialog);
 }
 
 void MainWindow::showSegmentedScene(std::shared_ptr<const scene::Scene> scene,
                                     const QString& status) {
     render::Camera camera = viewer_->camera();
-    sceneFiles_ = shownFiles_;
-    showScene(std::move(scene), sceneTitle_);
+    document_->showDerivedScene(std::move(scene));
     camera.setSceneBounds(viewer_->dataBounds());  // clip planes of the new scene
     viewer_->setCamera(camera);
     statusLabel_->setText(status);
 }
 
-void MainWindow::showScene(std::shared_ptr<const scene::Scene> scene, const QString& title) {
-    sceneTitle_ = title;
+void MainWindow::showScene(const std::shared_ptr<const scene::Scene>& scene, const QString& title,
+                           const QStringList& files) {
     clearMeasurement();  // points on the old data mean nothing on the new
     viewer_->setScene(scene);
     functionalPanel_->sceneChanged();
-    dataPanel_->sceneChanged(title, sceneFiles_);
-    QString dicomSource;
-    for (const QString& file : sceneFiles_) {
-        if (segmentation::isDicomSource(
-                std::filesystem::path(QFile::encodeName(file).toStdString()))) {
-            dicomSource = file;
-            break;
-        }
-    }
-    dataPanel_->setDicomSource(dicomSource);
-    sceneFiles_.clear();
-    if (pendingSession_) {
-        // A session being opened: its settings and camera, now that its data is shown.
-        const Session session = *pendingSession_;
-        pendingSession_.reset();
-        applySession(*viewer_, session);
-        if (!session.layout.isEmpty()) {
-            restoreState(session.layout, kLayoutVersion);
-        }
-        QTimer::singleShot(0, this, &MainWindow::sessionApplied);
-    }
+    dataPanel_->sceneChanged(title, files);
+    dataPanel_->setDicomSource(document_->dicomSource());
+}
+
+void MainWindow::sceneWasShown() {
     syncControls();
+    const QString& title = document_->title();
     setWindowTitle(title.isEmpty() ? QStringLiteral("VesselView")
                                    : title + QStringLiteral(" — VesselView"));
-    if (scene) {
+    if (const auto& scene = document_->scene()) {
         const std::size_t triangles = scene->triangleCount();
         const QString meshes =
             scene->meshes.size() == 1 ? tr("1 mesh") : tr("%1 meshes").arg(scene->meshes.size());
@@ -745,7 +532,6 @@ void MainWindow::showScene(std::shared_ptr<const scene::Scene> scene, const QStr
     } else {
         statusLabel_->setText(tr("Ready"));
     }
-    lastError_.clear();
     updateExportActions();
     emit sceneShown();
 }
@@ -758,101 +544,14 @@ void MainWindow::updateExportActions() {
     }
 }
 
-report::ReportSource MainWindow::reportSource() const {
-    report::ReportSource source;
-    for (const QString& file : shownFiles_) {
-        const std::filesystem::path path(QFile::encodeName(file).toStdString());
-        source.files.push_back(path);
-        if (source.dicomPath.empty() && segmentation::isDicomSource(path)) {
-            source.dicomPath = path;
-            source.seriesInstanceUid = shownSeriesUid_;
-        }
-    }
-    return source;
-}
-
-void MainWindow::addMeasurePoint(const ProbeResult& point) {
-    if (measurePoints_.size() >= 2) {
-        measurePoints_.clear();
-    }
-    measurePoints_ << point;
-    measureOverlay_->setPoints(measurePoints_);
-    const auto where = [](const ProbeResult& p) {
-        return p.objectName.isEmpty() ? tr("object %1").arg(p.meshIndex + 1) : p.objectName;
-    };
-    if (measurePoints_.size() == 1) {
-        measureLabel_->setText(tr("Measure: A on %1, %2 mm deep; click a second point")
-                                   .arg(where(point))
-                                   .arg(static_cast<double>(point.depthBelowNearest), 0, 'f', 1));
-        return;
-    }
-    const Measurement m = measure(measurePoints_[0], measurePoints_[1]);
-    const double depth = static_cast<double>(m.depthDifference);
-    const QString deeper = std::abs(depth) < 0.05 ? tr("same depth")
-                           : depth > 0.0 ? tr("B deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1)
-                                         : tr("A deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1);
-    measureLabel_->setText(
-        tr("Distance A–B: %1 mm; %2").arg(static_cast<double>(m.distance), 0, 'f', 1).arg(deeper));
-}
-
-void MainWindow::clearMeasurement() {
-    measurePoints_.clear();
-    measureOverlay_->setPoints(measurePoints_);
-    measureLabel_->setText(measureAction_ != nullptr && measureAction_->isChecked()
-                               ? tr("Measure: click a point on a vessel")
-                               : QString());
-}
-
 bool MainWindow::saveSessionTo(const QString& path) {
-    Session session = captureSession(*viewer_, viewer_->scene() ? shownFiles_ : QStringList());
-    session.layout = saveState(kLayoutVersion);
-    if (viewer_->scene() && !shownSeriesUid_.empty()) {
-        // DICOM data: the series, and for an image series the Segmentation
-        // panel's settings, so that the session reopens without asking.
-        segmentation::SceneSourceOptions dicom;
-        dicom.seriesInstanceUid = shownSeriesUid_;
-        if (volume_) {
-            dicom.segmentation = segmentationPanel_->segmentationOptions();
-            dicom.surface = segmentationPanel_->surfaceOptions();
-        }
-        session.dicom = dicom;
-    }
-    try {
-        saveSession(std::filesystem::path(QFile::encodeName(path).toStdString()), session);
-    } catch (const vv::Error& e) {
-        showError(tr("Cannot save the session"), QString::fromStdString(e.what()));
+    Session view = captureSession(*viewer_, {});
+    view.layout = saveState(kLayoutVersion);
+    if (!document_->saveSession(path, std::move(view), segmentationPanel_->segmentationOptions(),
+                                segmentationPanel_->surfaceOptions())) {
         return false;
     }
     statusLabel_->setText(tr("Session saved to %1").arg(path));
-    return true;
-}
-
-bool MainWindow::openSession(const QString& path) {
-    Session session;
-    try {
-        session = loadSession(std::filesystem::path(QFile::encodeName(path).toStdString()));
-    } catch (const vv::Error& e) {
-        showError(tr("Cannot open the session"), QString::fromStdString(e.what()));
-        return false;
-    }
-    if (session.files.isEmpty()) {
-        setScene(nullptr, QString());
-        applySession(*viewer_, session);
-        if (!session.layout.isEmpty()) {
-            restoreState(session.layout, kLayoutVersion);
-        }
-        syncControls();
-        QTimer::singleShot(0, this, &MainWindow::sessionApplied);
-        return true;
-    }
-    pendingSession_ = session;
-    if (session.dicom && session.files.size() == 1) {
-        std::vector<std::filesystem::path> paths{
-            QFile::encodeName(session.files.front()).toStdString()};
-        startTask(MeshLoadTask::loadFiles(std::move(paths), *session.dicom, this), session.files);
-        return true;
-    }
-    openFiles(session.files);
     return true;
 }
 
@@ -877,10 +576,9 @@ void MainWindow::updateRangeLabel() {
 }
 
 void MainWindow::showError(const QString& title, const QString& message) {
-    lastError_ = message;
     statusLabel_->setText(title + QStringLiteral(": ") + message);
-    if (!screenshotPath_.isEmpty()) {
-        finishScreenshot(false, message);
+    if (screenshot_ != nullptr) {
+        screenshot_->fail(message);
         return;
     }
     // Window-modal but not blocking: the event loop (and tests) keep running.
@@ -891,35 +589,9 @@ void MainWindow::showError(const QString& title, const QString& message) {
     emit loadFailed(message);
 }
 
-QStringList MainWindow::recentFiles() {
-    QStringList files = QSettings().value(QLatin1String(kRecentFilesKey)).toStringList();
-    files.removeAll(QString());
-    while (files.size() > kMaxRecentFiles) {
-        files.removeLast();
-    }
-    return files;
-}
-
-void MainWindow::addRecentFiles(const QStringList& files) {
-    if (files.isEmpty()) {
-        return;
-    }
-    QStringList recent = recentFiles();
-    for (auto it = files.crbegin(); it != files.crend(); ++it) {
-        const QString absolute = QFileInfo(*it).absoluteFilePath();
-        recent.removeAll(absolute);
-        recent.prepend(absolute);
-    }
-    while (recent.size() > kMaxRecentFiles) {
-        recent.removeLast();
-    }
-    QSettings().setValue(QLatin1String(kRecentFilesKey), recent);
-    rebuildRecentMenu();
-}
-
 void MainWindow::rebuildRecentMenu() {
     recentMenu_->clear();
-    const QStringList recent = recentFiles();
+    const QStringList recent = DocumentController::recentFiles();
     int number = 1;
     for (const QString& file : recent) {
         QAction* action = recentMenu_->addAction(
@@ -931,27 +603,19 @@ void MainWindow::rebuildRecentMenu() {
     if (!recent.isEmpty()) {
         recentMenu_->addSeparator();
     }
-    QAction* clear = recentMenu_->addAction(tr("&Clear Recent Files"), this, [this] {
-        QSettings().remove(QLatin1String(kRecentFilesKey));
-        rebuildRecentMenu();
-    });
+    QAction* clear = recentMenu_->addAction(tr("&Clear Recent Files"), document_,
+                                            &DocumentController::clearRecentFiles);
     clear->setEnabled(!recent.isEmpty());
 }
 
 void MainWindow::setScreenshotTarget(const QString& path) {
+    delete screenshot_;
+    screenshot_ = nullptr;
     if (!path.isEmpty()) {
         // Screenshots show the default display, not what was remembered.
         resetViewSettings(*viewer_);
         syncControls();
-    }
-    screenshotPath_ = path;
-    screenshotPending_ = !path.isEmpty();
-    if (screenshotPending_) {
-        QTimer::singleShot(kScreenshotTimeoutMs, this, [this] {
-            if (screenshotPending_) {
-                finishScreenshot(false, tr("timed out waiting for the data to be shown"));
-            }
-        });
+        screenshot_ = new ScreenshotMode(*viewer_, path, this);
     }
 }
 
@@ -972,92 +636,26 @@ void MainWindow::onFrameRendered() {
     updateVssLabel();
     vssPanel_->updateStatus();
     displayPanel_->frameRendered();
-    if (!screenshotPending_ || !viewer_->scene() || viewer_->framesWithScene() == 0) {
-        return;
+    if (screenshot_ != nullptr) {
+        screenshot_->frameRendered();
     }
-    // With the VSS on, wait for the frame that shows the solved surface (the
-    // solve runs on a worker and triggers that frame), and for its occlusion.
-    if ((viewer_->vssSettings().enabled && viewer_->vssStatus().pending) ||
-        viewer_->occlusionDeferred()) {
-        return;
-    }
-    screenshotPending_ = false;
-    const QImage image = viewer_->grabFramebuffer();
-    if (image.isNull()) {
-        finishScreenshot(false, tr("the viewer's frame could not be read"));
-        return;
-    }
-    try {
-        const std::filesystem::path target(QFile::encodeName(screenshotPath_).toStdString());
-        writeAtomically(target, [&](const std::filesystem::path& temporary) {
-            if (!image.save(QFile::decodeName(temporary.c_str()), "PNG")) {
-                throw IoError(target, "cannot write the PNG image");
-            }
-        });
-    } catch (const vv::Error& e) {
-        finishScreenshot(false, QString::fromStdString(e.what()));
-        return;
-    }
-    finishScreenshot(
-        true, tr("saved %1 (%2 x %3)").arg(screenshotPath_).arg(image.width()).arg(image.height()));
-}
-
-void MainWindow::finishScreenshot(bool ok, const QString& message) {
-    screenshotPending_ = false;
-    const QByteArray text = message.toLocal8Bit();
-    std::fprintf(ok ? stdout : stderr, "vesselview: %s\n", text.constData());
-    std::fflush(ok ? stdout : stderr);
-    const int code = ok ? 0 : 1;
-    // Exit from the event loop, also when called before exec() started.
-    QTimer::singleShot(0, qApp, [code] { QCoreApplication::exit(code); });
 }
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event) {
-    const QStringList any = localFiles(event->mimeData(), false);
-    const bool session = std::any_of(any.begin(), any.end(), [](const QString& f) {
-        return QFileInfo(f).suffix().compare(QLatin1String(kSessionSuffix), Qt::CaseInsensitive) ==
-               0;
-    });
-    const bool dicom = std::any_of(any.begin(), any.end(), [](const QString& f) {
-        return QFileInfo(f).isDir() ||
-               segmentation::isDicomSource(QFile::encodeName(f).toStdString());
-    });
-    if (session || dicom || !localFiles(event->mimeData(), true).isEmpty()) {
+    if (DocumentController::canOpen(localPaths(event->mimeData()))) {
         event->acceptProposedAction();
     }
 }
 
 void MainWindow::dropEvent(QDropEvent* event) {
-    for (const QString& file : localFiles(event->mimeData(), false)) {
-        if (QFileInfo(file).suffix().compare(QLatin1String(kSessionSuffix), Qt::CaseInsensitive) ==
-            0) {
-            event->acceptProposedAction();
-            openSession(file);
-            return;
-        }
-    }
-    const QStringList files = localFiles(event->mimeData(), true);
-    if (!files.isEmpty()) {
+    if (document_->openDropped(localPaths(event->mimeData()))) {
         event->acceptProposedAction();
-        openFiles(files);
-        return;
-    }
-    // A folder, DICOMDIR or DICOM file: the series chooser (the first one dropped).
-    for (const QString& file : localFiles(event->mimeData(), false)) {
-        if (QFileInfo(file).isDir() ||
-            segmentation::isDicomSource(QFile::encodeName(file).toStdString())) {
-            event->acceptProposedAction();
-            openDicom(file);
-            return;
-        }
     }
 }
 
 void MainWindow::closeEvent(QCloseEvent* event) {
-    if (task_) {
-        task_->cancel();
-    }
-    if (screenshotPath_.isEmpty()) {
+    document_->cancelLoad();
+    if (screenshot_ == nullptr) {
         QSettings settings;
         settings.setValue(QLatin1String(kGeometryKey), saveGeometry());
         settings.setValue(QLatin1String(kLayoutKey), saveState(kLayoutVersion));
@@ -1067,25 +665,7 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 QString MainWindow::aboutText() const {
-    const QString gl =
-        viewer_->glDescription().isEmpty() ? tr("not initialised") : viewer_->glDescription();
-    QStringList libraries;
-    libraries << QStringLiteral("Qt %1 (%2)")
-                     .arg(QString::fromLatin1(qVersion()),
-                          tr("built with %1").arg(QStringLiteral(QT_VERSION_STR)));
-    libraries << QStringLiteral("VTK ") + QString::fromStdString(meshio::vtkVersion());
-    libraries << QStringLiteral("DCMTK ") + QString::fromStdString(dicom::dcmtkVersion());
-    libraries << QStringLiteral("OpenCV ") + QString::fromStdString(vss::openCvVersion());
-    for (QString& library : libraries) {
-        library = library.toHtmlEscaped();
-    }
-    return tr("<h3>VesselView %1</h3>"
-              "<p>A workstation for vessel trees: meshes with wall shear stress, pressure and "
-              "other parameters on the vessel wall, and Void Space Surfaces.</p>"
-              "<p>OpenGL: %2</p><p>Libraries: %3</p>"
-              "<p>Licensed under the GNU General Public License, version 3 or later.</p>")
-        .arg(QStringLiteral(VV_VERSION), gl.toHtmlEscaped(),
-             libraries.join(QStringLiteral("<br>")));
+    return HelpTexts::about(viewer_->glDescription());
 }
 
 void MainWindow::showAbout() {

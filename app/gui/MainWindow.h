@@ -4,13 +4,14 @@
 #include <QByteArray>
 #include <QList>
 #include <QMainWindow>
-#include <QPointer>
 #include <QString>
 #include <QStringList>
 #include <memory>
 #include <optional>
 
 #include "gui/DisplayPreset.h"
+#include "gui/DocumentController.h"
+#include "gui/MeasureTool.h"
 #include "gui/Session.h"
 #include "gui/ViewerWidget.h"
 #include "vv/report/ReportJob.h"
@@ -27,10 +28,14 @@ class QProgressBar;
 class QPushButton;
 class QStackedWidget;
 
+namespace vv::dicom {
+struct DicomScanResult;
+}  // namespace vv::dicom
+
 namespace vv::gui {
 
 class MeasureOverlay;
-class MeshLoadTask;
+class ScreenshotMode;
 class SeriesDialog;
 class ViewerWidget;
 
@@ -45,11 +50,16 @@ class VssPanel;
 /// The main window: the 3-D viewer, File / View / Help menus, a toolbar
 /// (VSS on/off, ambient occlusion, colour-blind-safe mode), the side panels
 /// as dock widgets ("Void Space Surface", "Functional parameters",
-/// "Display", "Data"; their layout is restored from QSettings), and a status
-/// bar with load progress and Cancel. Loading and demo generation run on a
-/// worker (MeshLoadTask); errors are shown in a message box naming file and
-/// problem. The viewer holds the settings: every control writes it and all
-/// controls then show what it holds (syncControls()).
+/// "Display", "Data", "Segmentation"; their layout is restored from
+/// QSettings), and a status bar with load progress and Cancel.
+///
+/// What is shown and how it is opened — files, folders, sessions, recent
+/// files, the load task, the last error — is the DocumentController's
+/// (document()); the window forwards the calls below to it and shows what it
+/// signals: the scene in the viewer and panels, progress in the status bar,
+/// errors in a message box naming file and problem, the series chooser.
+/// The viewer holds the settings: every control writes it and all controls
+/// then show what it holds (syncControls()).
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
@@ -57,8 +67,11 @@ class MainWindow : public QMainWindow {
     explicit MainWindow(QWidget* parent = nullptr);
     ~MainWindow() override;
 
+    /// What is shown and how it is opened (see the class comment).
+    [[nodiscard]] DocumentController* document() const noexcept { return document_; }
+
     /// Loads `files` (one scene) on a worker; cancels a load in progress.
-    void openFiles(const QStringList& files);
+    void openFiles(const QStringList& files) { document_->openFiles(files); }
     /// File > Open Folder… and dropped folders / DICOM files: reads the DICOM
     /// headers under `path` (a folder, a DICOMDIR or a DICOM file) on a
     /// worker with progress and Cancel, then shows the series chooser
@@ -66,13 +79,15 @@ class MainWindow : public QMainWindow {
     /// once accepted, loads the chosen series on a worker: segmented into
     /// vessel surfaces with the options chosen there. A path without any
     /// image series shows an error message naming it.
-    void openDicom(const QString& path);
+    void openDicom(const QString& path) { document_->openDicom(path); }
     /// Opens the demo: $VV_DEMO_FILE, else the bundled vessel-tree.vtp (build
     /// tree or installed), else generates it on a worker.
-    void openDemo();
+    void openDemo() { document_->openDemo(); }
     /// Shows an already loaded scene (nullptr clears); `title` names it in the
     /// window title. Selects the default array (wss when present).
-    void setScene(std::shared_ptr<const scene::Scene> scene, const QString& title);
+    void setScene(std::shared_ptr<const scene::Scene> scene, const QString& title) {
+        document_->setScene(std::move(scene), title);
+    }
 
     /// Screenshot mode: the default display settings (not the remembered
     /// ones; see ViewSettings.h); once data is shown, save the viewer's frame to `path`
@@ -84,10 +99,12 @@ class MainWindow : public QMainWindow {
     /// The bundled demo file, when one exists: $VV_DEMO_FILE if set (even if
     /// missing, so the error names it), else <exe dir>/../resources/demo/
     /// vessel-tree.vtp, else <exe dir>/../share/vesselview/demo/vessel-tree.vtp.
-    [[nodiscard]] static std::optional<QString> findDemoFile();
+    [[nodiscard]] static std::optional<QString> findDemoFile() {
+        return DocumentController::findDemoFile();
+    }
 
     /// The File > Open dialog's name filters, from supportedMeshExtensions().
-    [[nodiscard]] static QString meshFileFilter();
+    [[nodiscard]] static QString meshFileFilter() { return DocumentController::meshFileFilter(); }
 
     /// File > Save Session: the shown files, camera, display settings and
     /// panel layout to `path` (.vvs, written atomically). Returns false after
@@ -97,12 +114,12 @@ class MainWindow : public QMainWindow {
     /// files and then applies its camera and settings (sessionApplied()).
     /// Returns false after showing an error naming the file when the session
     /// cannot be read; nothing changes then.
-    bool openSession(const QString& path);
+    bool openSession(const QString& path) { return document_->openSession(path); }
     /// The files of the scene on screen (absolute; the demo's file too).
-    [[nodiscard]] const QStringList& shownFiles() const noexcept { return shownFiles_; }
+    [[nodiscard]] const QStringList& shownFiles() const noexcept { return document_->shownFiles(); }
 
     /// Recently opened files (most recent first, at most 8), from QSettings.
-    [[nodiscard]] static QStringList recentFiles();
+    [[nodiscard]] static QStringList recentFiles() { return DocumentController::recentFiles(); }
 
     [[nodiscard]] ViewerWidget* viewer() const noexcept { return viewer_; }
     /// The "Functional parameters" panel's array chooser (item 0 "None" with
@@ -134,7 +151,7 @@ class MainWindow : public QMainWindow {
     /// The volume the shown scene was segmented from (a DICOM image series),
     /// kept for re-segmenting without reading the files; null otherwise.
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
-        return volume_;
+        return document_->volume();
     }
     /// View > Panels > Reset Layout: the docks as in a fresh window.
     void resetLayout();
@@ -156,14 +173,14 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QAction* measureToggle() const noexcept { return measureAction_; }
     [[nodiscard]] QLabel* measureLabel() const noexcept { return measureLabel_; }
     /// The markers of the picked points over the viewer.
-    [[nodiscard]] MeasureOverlay* measureOverlay() const noexcept { return measureOverlay_; }
+    [[nodiscard]] MeasureOverlay* measureOverlay() const noexcept { return measure_->overlay(); }
     /// The picked points of the measurement in progress (0, 1 or 2).
     [[nodiscard]] const QList<ProbeResult>& measurePoints() const noexcept {
-        return measurePoints_;
+        return measure_->points();
     }
     /// Adds a picked point (what a click on the viewer does).
-    void addMeasurePoint(const ProbeResult& point);
-    void clearMeasurement();
+    void addMeasurePoint(const ProbeResult& point) { measure_->addPoint(point); }
+    void clearMeasurement() { measure_->clear(); }
     /// File > Export Image… (Ctrl+E) and File > Export Report… (Ctrl+Shift+E):
     /// open ExportImageDialog / ReportDialog; disabled, with a tooltip saying
     /// why, while no scene is shown.
@@ -171,10 +188,10 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QAction* exportReportAction() const noexcept { return exportReportAction_; }
     /// Where the shown scene came from, for the report: the shown files and,
     /// for DICOM data, the path and series it was loaded from.
-    [[nodiscard]] report::ReportSource reportSource() const;
-    [[nodiscard]] bool isLoading() const noexcept { return !task_.isNull(); }
+    [[nodiscard]] report::ReportSource reportSource() const { return document_->reportSource(); }
+    [[nodiscard]] bool isLoading() const noexcept { return document_->isLoading(); }
     /// The message of the last load error ("file: problem"); empty if none.
-    [[nodiscard]] const QString& lastError() const noexcept { return lastError_; }
+    [[nodiscard]] const QString& lastError() const noexcept { return document_->lastError(); }
 
   signals:
     /// A scene was put on screen (after setScene or a successful load).
@@ -199,20 +216,23 @@ class MainWindow : public QMainWindow {
     /// Every control shows the viewer's current settings.
     void syncControls();
     void setColorBlindSafe(bool on);
-    /// setScene() without forgetting volume(): what a load and the
-    /// Segmentation panel's scenes go through.
-    void showScene(std::shared_ptr<const scene::Scene> scene, const QString& title);
+    /// The document's signals to the viewer, panels and status bar.
+    void connectDocument();
+    /// The document's scene in the viewer and panels (DocumentController::sceneChanged).
+    void showScene(const std::shared_ptr<const scene::Scene>& scene, const QString& title,
+                   const QStringList& files);
+    /// Controls, title and status bar once the document is shown.
+    void sceneWasShown();
     /// A scene from the Segmentation panel in place of the shown one; the camera stays.
     void showSegmentedScene(std::shared_ptr<const scene::Scene> scene, const QString& status);
-    void startTask(MeshLoadTask* task, const QStringList& files);
-    void taskFinished();
+    /// The series chooser for a DICOM scan (window-modal, not blocking).
+    void chooseSeries(const std::shared_ptr<const dicom::DicomScanResult>& scan,
+                      const QString& path);
     void showError(const QString& title, const QString& message);
-    void addRecentFiles(const QStringList& files);
     void rebuildRecentMenu();
     void updateRangeLabel();
     void onFrameRendered();
     void updateVssLabel();
-    void finishScreenshot(bool ok, const QString& message);
     void showAbout();
     void showShortcuts();
 
@@ -225,8 +245,7 @@ class MainWindow : public QMainWindow {
     panels::DisplayPanel* displayPanel_ = nullptr;
     panels::DataPanel* dataPanel_ = nullptr;
     panels::SegmentationPanel* segmentationPanel_ = nullptr;
-    std::shared_ptr<const scene::Volume> volume_;  ///< see volume()
-    QString sceneTitle_;                           ///< the title of the shown scene
+    DocumentController* document_ = nullptr;
     QList<QDockWidget*> docks_;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;
@@ -234,28 +253,20 @@ class MainWindow : public QMainWindow {
     QAction* cvdAction_ = nullptr;
     /// The display before the colour-blind-safe mode was switched on.
     std::optional<DisplayState> beforeColorBlindSafe_;
-    QStringList sceneFiles_;  ///< the files of the scene being loaded / shown
     QAction* legendsAction_ = nullptr;
     QLabel* vssLabel_ = nullptr;
     QAction* measureAction_ = nullptr;
     QLabel* measureLabel_ = nullptr;
-    MeasureOverlay* measureOverlay_ = nullptr;
-    QList<ProbeResult> measurePoints_;
-    QStringList shownFiles_;
-    std::optional<Session> pendingSession_;  ///< applied once its files are shown
+    MeasureTool* measure_ = nullptr;
     QMenu* recentMenu_ = nullptr;
     QLabel* statusLabel_ = nullptr;
     QLabel* rangeLabel_ = nullptr;
     QProgressBar* progressBar_ = nullptr;
     QPushButton* cancelButton_ = nullptr;
-    QPointer<MeshLoadTask> task_;
     QAction* exportImageAction_ = nullptr;
     QAction* exportReportAction_ = nullptr;
-    std::string shownSeriesUid_;  ///< the DICOM series shown; empty for meshes
     void updateExportActions();
-    QString lastError_;
-    QString screenshotPath_;
-    bool screenshotPending_ = false;
+    ScreenshotMode* screenshot_ = nullptr;  ///< see setScreenshotTarget()
 };
 
 }  // namespace vv::gui

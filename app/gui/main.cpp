@@ -8,6 +8,7 @@
 #include <QLoggingCategory>
 #include <QSettings>
 #include <QString>
+#include <clocale>
 
 #include "gui/MainWindow.h"
 #include "gui/Translations.h"
@@ -63,6 +64,11 @@ int main(int argc, char** argv) {
     // The GL format must be the default before the application exists.
     vv::gui::ViewerWidget::installDefaultFormat();
     QApplication app(argc, argv);
+    // QApplication set the C library's locale from the environment; number
+    // text for machines (std::snprintf, std::strtod in file readers and
+    // writers) must stay C: "0.5", not "0,5" under de_DE. What people read
+    // is formatted by QLocale, which this does not change.
+    std::setlocale(LC_NUMERIC, "C");
     QApplication::setOrganizationName(QStringLiteral("VesselView"));
     QApplication::setApplicationName(QStringLiteral("VesselView"));
     QApplication::setApplicationVersion(QStringLiteral(VV_VERSION));

@@ -1,0 +1,354 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Numbers that machines read (CSV, JSON, the CLI's output) are written in the
+// C locale whatever the process locale: a Qt application sets LC_NUMERIC from
+// the environment, and std::snprintf would then write "0,5" under de_DE.
+//
+// The German locale: de_DE.UTF-8 when the system has it, else compiled with
+// localedef (Debian's `locales` package) into <test-tmp>/locales and found
+// through LOCPATH, so that no system set-up is needed. Without either the
+// tests skip, saying why.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <array>
+#include <charconv>
+#include <clocale>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "CliRun.h"
+#include "TestMeshes.h"
+#include "VssBenchmark.h"
+#include "common/NumberText.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshWriter.h"
+
+namespace vv::test {
+namespace {
+
+namespace fs = std::filesystem;
+
+const char* const kGerman = "de_DE.UTF-8";
+
+fs::path testDir() {
+    const fs::path dir = processTestDir("c-locale-numbers");
+    fs::create_directories(dir);
+    return dir;
+}
+
+std::string printfText(const char* pattern, int digits, double value) {
+    std::array<char, 512> buffer{};
+    std::snprintf(buffer.data(), buffer.size(), pattern, digits, value);
+    return buffer.data();
+}
+
+/// Where the German locale comes from: "" (installed) or a LOCPATH folder.
+/// nullopt with `why` when it cannot be had. Checked once per process.
+std::optional<std::string> germanLocalePath(std::string& why) {
+    static std::string reason;
+    static const std::optional<std::string> path = []() -> std::optional<std::string> {
+        const std::string before = std::setlocale(LC_NUMERIC, nullptr);
+        const auto works = [&] {
+            const bool ok = std::setlocale(LC_NUMERIC, kGerman) != nullptr &&
+                            printfText("%.*f", 1, 0.5) == "0,5";
+            std::setlocale(LC_NUMERIC, before.c_str());
+            return ok;
+        };
+        if (works()) {
+            return std::string();
+        }
+        const fs::path dir = fs::path(VV_TEST_TMP) / "locales";
+        if (!fs::exists(dir / kGerman / "LC_NUMERIC")) {
+            // Compiled beside and renamed: ctest runs test processes in parallel.
+            const fs::path scratch = dir / ("tmp-" + std::to_string(::getpid()));
+            fs::create_directories(scratch);
+            const std::string command = "localedef -i de_DE -f UTF-8 '" +
+                                        (scratch / kGerman).string() + "' >/dev/null 2>&1";
+            static_cast<void>(std::system(command.c_str()));
+            std::error_code ec;
+            fs::rename(scratch / kGerman, dir / kGerman, ec);
+            fs::remove_all(scratch, ec);
+        }
+        ::setenv("LOCPATH", dir.c_str(), 1);
+        if (works()) {
+            return dir.string();
+        }
+        reason =
+            "no de_DE.UTF-8 locale: not installed, and `localedef -i de_DE -f UTF-8` "
+            "(Debian package locales) could not compile one";
+        return std::nullopt;
+    }();
+    why = reason;
+    return path;
+}
+
+/// The shell prefix that runs a command in German.
+std::string inGerman(const std::string& locpath) {
+    std::string prefix = "env LC_ALL=" + std::string(kGerman) + " LANG=" + kGerman;
+    if (!locpath.empty()) {
+        prefix += " LOCPATH='" + locpath + "'";
+    }
+    return prefix + " ";
+}
+
+/// LC_NUMERIC German while alive (this process).
+class GermanNumbers {
+  public:
+    GermanNumbers() : before_(std::setlocale(LC_NUMERIC, nullptr)) {
+        std::setlocale(LC_NUMERIC, kGerman);
+    }
+    ~GermanNumbers() { std::setlocale(LC_NUMERIC, before_.c_str()); }
+    GermanNumbers(const GermanNumbers&) = delete;
+    GermanNumbers& operator=(const GermanNumbers&) = delete;
+    GermanNumbers(GermanNumbers&&) = delete;
+    GermanNumbers& operator=(GermanNumbers&&) = delete;
+
+  private:
+    std::string before_;
+};
+
+struct ShellRun {
+    int code = -1;
+    std::string out;
+};
+
+ShellRun shell(const std::string& command) {
+    ShellRun run;
+    std::FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) {
+        return run;
+    }
+    std::array<char, 4096> buffer{};
+    std::size_t n = 0;
+    while ((n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0) {
+        run.out.append(buffer.data(), n);
+    }
+    const int status = ::pclose(pipe);
+    run.code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return run;
+}
+
+std::string quote(const fs::path& path) {
+    return "'" + path.string() + "'";
+}
+
+/// A tube off the grid (coordinates and array values with decimals), as VTP.
+const fs::path& decimalTube() {
+    static const fs::path file = [] {
+        scene::Mesh mesh = tube({.radius = 2.5F,
+                                 .start = glm::vec3(0.25F, -1.5F, 0.75F),
+                                 .length = 12.5F,
+                                 .segments = 12,
+                                 .rings = 6});
+        addAxialArray(mesh, "wss", "Pa", 0.25F, [](float x) { return 0.5F + 0.1F * x; });
+        const fs::path f = testDir() / "decimal-tube.vtp";
+        meshio::writeVtp(mesh, f);
+        return f;
+    }();
+    return file;
+}
+
+/// True when `text` is all of one finite number in the C locale.
+bool isCNumber(const std::string& text) {
+    return app::parseFiniteNumber(text).has_value();
+}
+
+/// The fields of a CSV line without quoted commas.
+std::vector<std::string> csvFields(const std::string& line) {
+    std::vector<std::string> fields;
+    std::string field;
+    std::istringstream in(line);
+    while (std::getline(in, field, ',')) {
+        fields.push_back(field);
+    }
+    if (!line.empty() && line.back() == ',') {
+        fields.emplace_back();
+    }
+    return fields;
+}
+
+TEST(CLocaleNumbers, FormattersGivePrintfsTextInTheCLocale) {
+    const double values[] = {0.0,   0.5,     -0.5,   1.0 / 3.0,         1234.5678,
+                             1e-7,  1e20,    -0.0,   2.5e-310,          0.125,
+                             999.5, 0.00995, 123456, 0.1 + 0.2 - 1e-17, 65504.0};
+    for (const double v : values) {
+        for (const int digits : {0, 1, 2, 3, 4, 6, 9}) {
+            EXPECT_EQ(app::fixedText(v, digits), printfText("%.*f", digits, v))
+                << v << " " << digits;
+            EXPECT_EQ(app::significantText(v, digits), printfText("%.*g", digits, v))
+                << v << " " << digits;
+            EXPECT_EQ(app::scientificText(v, digits), printfText("%.*e", digits, v))
+                << v << " " << digits;
+        }
+    }
+    EXPECT_EQ(app::fixedText(std::numeric_limits<double>::quiet_NaN(), 2), "nan");
+    EXPECT_EQ(app::significantText(std::numeric_limits<double>::infinity(), 6), "inf");
+    EXPECT_EQ(app::scientificText(-std::numeric_limits<double>::infinity(), 2), "-inf");
+    EXPECT_EQ(app::fixedText(0.5, -3), "0");  // no digits: as 0
+    EXPECT_EQ(app::readableText(1.0 / 3.0), "0.333333");
+}
+
+TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
+    std::string why;
+    if (!germanLocalePath(why)) {
+        GTEST_SKIP() << why;
+    }
+    bench::VssBenchmarkResult result;
+    result.width = 64;
+    result.height = 48;
+    bench::VssBenchmarkRow row;
+    row.p = 2.5;
+    row.solver = "fast 0.5/255";
+    row.series = "fast";
+    row.options.kind = vss::SolverKind::Fast;
+    row.options.tolerance = 0.5 / 255.0;
+    row.runs = 1;
+    row.medianMs = 1.25;
+    row.minMs = 1.125;
+    row.error.rmse = 0.0015;
+    row.error.maxAbs = 0.0025;
+    row.errorBound = 0.5 / 255.0;
+    result.rows.push_back(row);
+    bench::ViewSummary view;
+    view.cameraDistance = 12.5F;
+    view.dmin = 0.5;
+    view.dmax = 1.5;
+    result.views.push_back(view);
+
+    const GermanNumbers german;
+    ASSERT_EQ(printfText("%.*f", 1, 0.5), "0,5");  // the locale is in effect
+    EXPECT_EQ(app::fixedText(0.5, 1), "0.5");
+    EXPECT_EQ(app::significantText(2.5, 6), "2.5");
+    EXPECT_EQ(app::scientificText(1234.5, 2), "1.23e+03");
+    EXPECT_EQ(app::shortestText(0.1), "0.1");
+    EXPECT_EQ(app::readableText(0.55), "0.55");
+    EXPECT_EQ(app::parseFiniteNumber("0.5"), 0.5);
+    EXPECT_FALSE(app::parseFiniteNumber("0,5").has_value());
+
+    const std::string csv = bench::csvText(result);
+    std::istringstream lines(csv);
+    std::string header;
+    std::string line;
+    ASSERT_TRUE(std::getline(lines, header));
+    ASSERT_TRUE(std::getline(lines, line));
+    const auto names = csvFields(header);
+    const auto fields = csvFields(line);
+    ASSERT_EQ(fields.size(), names.size()) << line;  // "2,5" would add a field
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        if (names[i] == "p" || names[i] == "tolerance" || names[i] == "median_ms" ||
+            names[i] == "rmse" || names[i] == "error_bound") {
+            EXPECT_TRUE(isCNumber(fields[i])) << names[i] << " = " << fields[i];
+        }
+    }
+    EXPECT_NE(line.find(",2.5,"), std::string::npos) << line;
+    EXPECT_NE(line.find(",1.2500,"), std::string::npos) << line;
+    const std::string table = bench::markdownTable(result);
+    EXPECT_FALSE(std::regex_search(table, std::regex("[0-9],[0-9]"))) << table;
+}
+
+/// vesselview-cli and vesselview run as processes in German.
+class ProcessInGerman : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        std::string why;
+        const auto path = germanLocalePath(why);
+        if (!path) {
+            GTEST_SKIP() << why;
+        }
+        german_ = inGerman(*path);
+    }
+
+    /// `vesselview-cli ARGS` in the C locale and in German.
+    [[nodiscard]] static ShellRun inC(const std::string& args) {
+        return shell("env LC_ALL=C " + quote(VV_CLI_EXE) + " " + args);
+    }
+    [[nodiscard]] ShellRun inGermanLocale(const std::string& args) const {
+        return shell(german_ + quote(VV_CLI_EXE) + " " + args);
+    }
+
+    std::string german_;
+};
+
+TEST_F(ProcessInGerman, InfoPrintsTheSameNumbersAsInTheCLocale) {
+    for (const std::string& args :
+         {"info " + quote(decimalTube()), "info --json " + quote(decimalTube())}) {
+        const ShellRun c = inC(args);
+        const ShellRun de = inGermanLocale(args);
+        ASSERT_EQ(c.code, 0) << c.out;
+        ASSERT_EQ(de.code, 0) << de.out;
+        EXPECT_EQ(de.out, c.out) << args;
+        EXPECT_NE(c.out.find("0.25"), std::string::npos) << c.out;  // decimals were printed
+    }
+}
+
+TEST_F(ProcessInGerman, BenchWritesItsCsvAndTableInTheCLocale) {
+    vv::demo::DemoTreeOptions options;
+    options.generations = 3;
+    options.maxTriangles = 10000;
+    const fs::path tree = testDir() / "bench-tree.vtp";
+    meshio::writeVtp(vv::demo::generateDemoMesh(options), tree);
+    const fs::path out = testDir() / "bench-de";
+    fs::remove_all(out);
+    const ShellRun de =
+        inGermanLocale("bench --quick --mesh " + quote(tree) + " --out " + quote(out) +
+                       " --views close --p 2.5 --solvers brute,fast --tolerances 0.5"
+                       " --size 64x48 --runs 1");
+    ASSERT_EQ(de.code, 0) << de.out;
+
+    std::ifstream csv(out / "vss.csv");
+    std::string header;
+    ASSERT_TRUE(std::getline(csv, header));
+    const auto names = csvFields(header);
+    int rows = 0;
+    for (std::string line; std::getline(csv, line); ++rows) {
+        const auto fields = csvFields(line);
+        ASSERT_EQ(fields.size(), names.size()) << line;  // "2,5" would add a field
+        for (std::size_t i = 0; i < names.size(); ++i) {
+            if (names[i] == "p") {
+                EXPECT_EQ(fields[i], "2.5");
+            } else if (names[i] == "median_ms" || names[i] == "min_ms" || names[i] == "rmse" ||
+                       names[i] == "max_abs_error") {
+                EXPECT_TRUE(isCNumber(fields[i])) << names[i] << " = " << fields[i];
+            } else if (names[i] == "solver" && fields[i].rfind("fast", 0) == 0) {
+                EXPECT_EQ(fields[i], "fast 0.5/255");
+            }
+        }
+    }
+    EXPECT_EQ(rows, 2);
+    std::ifstream tableFile(out / "vss-table.md");
+    const std::string table((std::istreambuf_iterator<char>(tableFile)),
+                            std::istreambuf_iterator<char>());
+    EXPECT_FALSE(table.empty());
+    EXPECT_FALSE(std::regex_search(table, std::regex("[0-9],[0-9]"))) << table;
+}
+
+#ifdef VV_GUI_EXE
+// The GUI's QApplication sets the C library's locale from the environment;
+// the mesh readers' checks read numbers with std::strtod. In German they
+// refused "0.5" ("vertex 1 has '0.5' where a coordinate belongs") until the
+// application set LC_NUMERIC back to C.
+TEST_F(ProcessInGerman, TheGuiOpensAsciiMeshesWithDecimalPoints) {
+    const fs::path obj = testDir() / "decimal-tetra.obj";
+    std::ofstream(obj) << "v 0.5 0.25 0\nv 10.5 0 0.125\nv 0 10.75 0\nv 0.5 0 10.5\n"
+                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const fs::path png = testDir() / "decimal-tetra.png";
+    fs::remove(png);
+    const ShellRun run =
+        shell(german_ + "XDG_CONFIG_HOME=" + quote(testDir() / "gui-config") + " " +
+              quote(VV_GUI_EXE) + " --screenshot " + quote(png) + " " + quote(obj));
+    EXPECT_EQ(run.code, 0) << run.out;
+    EXPECT_TRUE(fs::exists(png)) << run.out;
+}
+#endif
+
+}  // namespace
+}  // namespace vv::test

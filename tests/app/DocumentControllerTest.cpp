@@ -1,0 +1,353 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The document controller on its own (no window, no display): the recent
+// files' rules, the order of its signals, a session applied once its files
+// are shown and never to other data, cancelled and failed loads keeping the
+// shown document, drops, and what a saved session names.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QDir>
+#include <QSettings>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "GuiFixture.h"
+#include "gui/DocumentController.h"
+#include "gui/RecentFiles.h"
+#include "vv/meshio/MeshWriter.h"
+
+namespace vv::test {
+namespace {
+
+namespace fs = std::filesystem;
+using gui::DocumentController;
+
+fs::path documentTestDir() {
+    const fs::path dir = fs::path(VV_TEST_TMP) / "document-controller" /
+                         ("run-" + std::to_string(QCoreApplication::applicationPid()));
+    fs::create_directories(dir);
+    return dir;
+}
+
+QString qpath(const fs::path& path) {
+    return QString::fromStdString(path.string());
+}
+
+/// A tube mesh written as `name` (VTP) in the test folder.
+fs::path writeTube(const std::string& name, float length = 30.0F) {
+    const fs::path file = documentTestDir() / name;
+    scene::Mesh mesh = vv::test::tube(
+        {.radius = 2.0F, .start = glm::vec3(0.0F), .length = length, .segments = 16, .rings = 8});
+    meshio::writeVtp(mesh, file);
+    return file;
+}
+
+/// Every signal of a controller, by name, in the order emitted.
+struct Recorder {
+    std::vector<std::string> events;
+    std::vector<app::Session> sessions;  ///< what sessionReady() handed over
+    QStringList failures;                ///< failed() messages
+
+    explicit Recorder(DocumentController& document) {
+        const auto note = [this](const char* name) {
+            return [this, name] { events.push_back(name); };
+        };
+        QObject::connect(&document, &DocumentController::loadStarted, note("loadStarted"));
+        QObject::connect(&document, &DocumentController::loadEnded, note("loadEnded"));
+        QObject::connect(&document, &DocumentController::loadCancelled, note("loadCancelled"));
+        QObject::connect(&document, &DocumentController::failed,
+                         [this](const QString&, const QString& message) {
+                             events.emplace_back("failed");
+                             failures << message;
+                         });
+        QObject::connect(&document, &DocumentController::seriesScanned, note("seriesScanned"));
+        QObject::connect(&document, &DocumentController::sceneChanged, note("sceneChanged"));
+        QObject::connect(&document, &DocumentController::sessionReady,
+                         [this](const app::Session& session) {
+                             events.emplace_back("sessionReady");
+                             sessions.push_back(session);
+                         });
+        QObject::connect(&document, &DocumentController::sceneShown, note("sceneShown"));
+        QObject::connect(&document, &DocumentController::sessionApplied, note("sessionApplied"));
+        QObject::connect(&document, &DocumentController::volumeChanged, note("volumeChanged"));
+        QObject::connect(&document, &DocumentController::recentFilesChanged,
+                         note("recentFilesChanged"));
+    }
+
+    [[nodiscard]] int count(const std::string& name) const {
+        return static_cast<int>(std::count(events.begin(), events.end(), name));
+    }
+    /// The position of the first `name`; -1 when absent.
+    [[nodiscard]] long first(const std::string& name) const {
+        const auto it = std::find(events.begin(), events.end(), name);
+        return it == events.end() ? -1 : it - events.begin();
+    }
+    [[nodiscard]] std::string joined() const {
+        std::string text;
+        for (const auto& e : events) {
+            text += e + " ";
+        }
+        return text;
+    }
+};
+
+class DocumentControllerTest : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        if (QCoreApplication::instance() != nullptr) {
+            return;
+        }
+        // Recent files go to a throw-away folder, not the user's settings.
+        const QString config = qpath(documentTestDir() / "config");
+        QDir(config).removeRecursively();
+        qputenv("XDG_CONFIG_HOME", config.toUtf8());
+        qunsetenv("VV_DEMO_FILE");
+        static int argc = 1;
+        static char name[] = "vv_gui_document_tests";
+        static char* argv[] = {name, nullptr};
+        new QCoreApplication(argc, argv);  // kept for the whole process
+        QCoreApplication::setOrganizationName(QStringLiteral("VesselViewDocumentTest"));
+        QCoreApplication::setApplicationName(QStringLiteral("VesselViewDocumentTest"));
+    }
+
+    void SetUp() override { gui::recent::clear(); }
+
+    /// Loads `file` and waits until it is shown.
+    void show(const fs::path& file) {
+        document_.openFiles({qpath(file)});
+        ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }))
+            << document_.lastError().toStdString();
+        ASSERT_NE(document_.scene(), nullptr) << document_.lastError().toStdString();
+    }
+
+    /// A session file showing `files` with power p = 4 and a layout.
+    static fs::path writeSession(const std::string& name, const QStringList& files) {
+        app::Session session;
+        session.files = files;
+        session.vss.solver.p = 4.0;
+        session.layout = QByteArray("layout bytes");
+        const fs::path path = documentTestDir() / name;
+        app::saveSession(path, session);
+        return path;
+    }
+
+    DocumentController document_;
+};
+
+TEST(RecentFiles, TheOpenedFilesGoFirstInTheirOrderWithoutRepeats) {
+    const QStringList recent{QStringLiteral("/a.vtp"), QStringLiteral("/b.vtp"),
+                             QStringLiteral("/c.vtp")};
+    EXPECT_EQ(gui::recent::merged(recent, {QStringLiteral("/c.vtp"), QStringLiteral("/d.vtp")}),
+              (QStringList{QStringLiteral("/c.vtp"), QStringLiteral("/d.vtp"),
+                           QStringLiteral("/a.vtp"), QStringLiteral("/b.vtp")}));
+    EXPECT_EQ(gui::recent::merged(recent, {}), recent);
+    // Relative names are remembered absolute, so they reopen from anywhere.
+    EXPECT_EQ(gui::recent::merged({}, {QStringLiteral("tree.vtp")}),
+              QStringList{QDir::current().absoluteFilePath(QStringLiteral("tree.vtp"))});
+    QStringList many;
+    for (int i = 0; i < 12; ++i) {
+        many << QStringLiteral("/file-%1.vtp").arg(i);
+    }
+    const QStringList kept = gui::recent::merged({}, many);
+    ASSERT_EQ(kept.size(), gui::recent::kMaxFiles);
+    EXPECT_EQ(kept.front(), QStringLiteral("/file-0.vtp"));
+    EXPECT_EQ(kept.back(), QStringLiteral("/file-7.vtp"));
+}
+
+TEST_F(DocumentControllerTest, RecentFilesAreStoredAndCleared) {
+    QSettings().setValue(QStringLiteral("recentFiles"),
+                         QStringList{QString(), QStringLiteral("/old.vtp")});
+    EXPECT_EQ(DocumentController::recentFiles(), QStringList{QStringLiteral("/old.vtp")});
+    const fs::path tube = writeTube("recent.vtp");
+    Recorder record(document_);
+    show(tube);
+    EXPECT_EQ(DocumentController::recentFiles(),
+              (QStringList{qpath(fs::absolute(tube)), QStringLiteral("/old.vtp")}));
+    EXPECT_EQ(record.count("recentFilesChanged"), 1);
+    document_.clearRecentFiles();
+    EXPECT_TRUE(DocumentController::recentFiles().isEmpty());
+    EXPECT_EQ(record.count("recentFilesChanged"), 2);
+}
+
+TEST_F(DocumentControllerTest, ALoadSignalsInOrderAndNamesItsFiles) {
+    const fs::path tube = writeTube("tube.vtp");
+    Recorder record(document_);
+    document_.openFiles({qpath(tube)});
+    EXPECT_TRUE(document_.isLoading());
+    EXPECT_EQ(record.joined(), "loadStarted ");  // the rest arrives from the worker
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    EXPECT_EQ(record.joined(),
+              "loadStarted volumeChanged sceneChanged sceneShown recentFilesChanged loadEnded ");
+    EXPECT_EQ(document_.title(), QStringLiteral("tube.vtp"));
+    EXPECT_EQ(document_.shownFiles(), QStringList{qpath(fs::absolute(tube))});
+    EXPECT_EQ(document_.openedFiles(), QStringList{qpath(tube)});
+    ASSERT_EQ(document_.reportSource().files.size(), 1U);
+    EXPECT_TRUE(document_.reportSource().dicomPath.empty());
+    EXPECT_EQ(document_.volume(), nullptr);
+}
+
+TEST_F(DocumentControllerTest, ASessionIsAppliedOnceItsFilesAreShown) {
+    const fs::path tube = writeTube("session-tube.vtp");
+    const fs::path session = writeSession("apply.vvs", {qpath(tube)});
+    Recorder record(document_);
+    ASSERT_TRUE(document_.openSession(qpath(session)));
+    EXPECT_EQ(record.count("sessionReady"), 0);  // its files load first
+    ASSERT_TRUE(waitUntil([&] { return record.count("sessionApplied") > 0; }))
+        << record.joined() << document_.lastError().toStdString();
+    // The data, then the session's camera and settings on it, then "shown";
+    // "applied" comes from the event loop once all of that was handled.
+    const long changed = record.first("sceneChanged");
+    const long ready = record.first("sessionReady");
+    const long shown = record.first("sceneShown");
+    const long applied = record.first("sessionApplied");
+    EXPECT_TRUE(changed >= 0 && changed < ready && ready < shown && shown < applied)
+        << record.joined();
+    ASSERT_EQ(record.sessions.size(), 1U);
+    EXPECT_DOUBLE_EQ(record.sessions.front().vss.solver.p, 4.0);
+    EXPECT_EQ(record.sessions.front().layout, QByteArray("layout bytes"));
+    EXPECT_EQ(document_.shownFiles(), QStringList{qpath(fs::absolute(tube))});
+
+    // Once: the next load shows its data without the session.
+    show(writeTube("after-session.vtp"));
+    EXPECT_EQ(record.count("sessionReady"), 1) << record.joined();
+}
+
+TEST_F(DocumentControllerTest, ASessionIsNeverAppliedToOtherData) {
+    const fs::path tube = writeTube("replaced-session-tube.vtp");
+    const fs::path other = writeTube("other.vtp", 12.0F);
+    const fs::path session = writeSession("replaced.vvs", {qpath(tube)});
+    Recorder record(document_);
+
+    // Another load replaces the session's load before its files arrive.
+    ASSERT_TRUE(document_.openSession(qpath(session)));
+    show(other);
+    // Its cancelled load: the session goes with it.
+    ASSERT_TRUE(document_.openSession(qpath(session)));
+    EXPECT_TRUE(document_.cancelLoad());
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    EXPECT_EQ(record.count("loadCancelled"), 1) << record.joined();
+    show(other);
+    // Its failed load: the session goes with it.
+    const fs::path missing = documentTestDir() / "missing.vtp";
+    const fs::path broken = writeSession("broken-files.vvs", {qpath(missing)});
+    ASSERT_TRUE(document_.openSession(qpath(broken)));
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    EXPECT_EQ(record.count("failed"), 1) << record.joined();
+    show(other);
+
+    waitUntil([] { return false; }, 300);  // a stray sessionApplied would arrive now
+    EXPECT_EQ(record.count("sessionReady"), 0) << record.joined();
+    EXPECT_EQ(record.count("sessionApplied"), 0) << record.joined();
+    EXPECT_EQ(document_.shownFiles(), QStringList{qpath(fs::absolute(other))});
+}
+
+TEST_F(DocumentControllerTest, ACancelledLoadKeepsTheShownDocument) {
+    const fs::path tube = writeTube("kept.vtp");
+    show(tube);
+    const auto scene = document_.scene();
+    Recorder record(document_);
+    document_.openFiles({qpath(writeTube("cancelled.vtp"))});
+    EXPECT_TRUE(document_.cancelLoad());
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    // The worker may well have finished: a cancelled result is discarded.
+    EXPECT_EQ(record.joined(), "loadStarted loadCancelled loadEnded ");
+    EXPECT_EQ(document_.scene(), scene);
+    EXPECT_EQ(document_.title(), QStringLiteral("kept.vtp"));
+    EXPECT_EQ(document_.shownFiles(), QStringList{qpath(fs::absolute(tube))});
+    EXPECT_TRUE(document_.lastError().isEmpty());
+    EXPECT_FALSE(document_.cancelLoad());  // nothing to cancel now
+}
+
+TEST_F(DocumentControllerTest, AFailedLoadNamesTheFileAndKeepsTheShownDocument) {
+    const fs::path tube = writeTube("shown.vtp");
+    show(tube);
+    const auto scene = document_.scene();
+    Recorder record(document_);
+    const fs::path missing = documentTestDir() / "no-such-file.stl";
+    document_.openFiles({qpath(missing)});
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    ASSERT_EQ(record.failures.size(), 1) << record.joined();
+    EXPECT_TRUE(record.failures.front().contains(QStringLiteral("no-such-file.stl")))
+        << record.failures.front().toStdString();
+    EXPECT_EQ(document_.lastError(), record.failures.front());
+    EXPECT_EQ(record.count("sceneChanged"), 0);
+    EXPECT_EQ(document_.scene(), scene);
+    EXPECT_EQ(document_.shownFiles(), QStringList{qpath(fs::absolute(tube))});
+    EXPECT_FALSE(DocumentController::recentFiles().contains(qpath(missing)));
+
+    show(tube);  // the next scene shown clears the error
+    EXPECT_TRUE(document_.lastError().isEmpty());
+}
+
+TEST_F(DocumentControllerTest, ASceneFromElsewhereIsADocumentWithoutFiles) {
+    show(writeTube("replaced-by-scene.vtp"));
+    Recorder record(document_);
+    document_.setScene(makeTubeScene(), QStringLiteral("built"));
+    // At once, without a worker.
+    EXPECT_EQ(record.joined(), "volumeChanged sceneChanged sceneShown ");
+    EXPECT_EQ(document_.title(), QStringLiteral("built"));
+    EXPECT_TRUE(document_.shownFiles().isEmpty());
+    EXPECT_TRUE(document_.reportSource().files.empty());
+    const fs::path saved = documentTestDir() / "built.vvs";
+    ASSERT_TRUE(document_.saveSession(qpath(saved), {}, {}, {}));
+    EXPECT_TRUE(app::loadSession(saved).files.isEmpty());
+}
+
+TEST_F(DocumentControllerTest, ASavedSessionNamesTheShownFilesAndKeepsTheView) {
+    const fs::path tube = writeTube("saved.vtp");
+    show(tube);
+    app::Session view;
+    view.vss.solver.p = 5.0;
+    view.files = {QStringLiteral("/not/what/is/shown.vtp")};  // the document's files win
+    const fs::path path = documentTestDir() / "saved.vvs";
+    ASSERT_TRUE(document_.saveSession(qpath(path), view, {}, {}));
+    const app::Session saved = app::loadSession(path);
+    EXPECT_EQ(saved.files, QStringList{qpath(fs::absolute(tube))});
+    EXPECT_DOUBLE_EQ(saved.vss.solver.p, 5.0);
+    EXPECT_FALSE(saved.dicom.has_value());
+
+    Recorder record(document_);
+    EXPECT_FALSE(
+        document_.saveSession(qpath(documentTestDir() / "no-dir" / "x.vvs"), view, {}, {}));
+    EXPECT_EQ(record.count("failed"), 1);
+    EXPECT_TRUE(document_.lastError().contains(QStringLiteral("x.vvs")))
+        << document_.lastError().toStdString();
+}
+
+TEST_F(DocumentControllerTest, DropsOpenSessionsFirstThenMeshesThenFolders) {
+    const fs::path tube = writeTube("dropped.vtp");
+    const fs::path session = writeSession("dropped.vvs", {qpath(tube)});
+    const QString notes = qpath(documentTestDir() / "notes.txt");
+    EXPECT_FALSE(DocumentController::canOpen({notes}));
+    EXPECT_TRUE(DocumentController::canOpen({notes, qpath(tube)}));
+    EXPECT_TRUE(DocumentController::canOpen({qpath(documentTestDir())}));  // a DICOM folder?
+    EXPECT_FALSE(document_.openDropped({notes}));
+
+    Recorder record(document_);
+    ASSERT_TRUE(document_.openDropped({notes, qpath(tube), qpath(session)}));
+    ASSERT_TRUE(waitUntil([&] { return record.count("sessionApplied") > 0; })) << record.joined();
+    ASSERT_TRUE(document_.openDropped({qpath(documentTestDir()), qpath(tube)}));
+    EXPECT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    EXPECT_EQ(record.count("seriesScanned"), 0);  // the mesh, not the folder
+    EXPECT_EQ(record.count("sceneChanged"), 2);
+}
+
+TEST_F(DocumentControllerTest, AFolderWithoutDicomImagesFailsNamingIt) {
+    const fs::path empty = documentTestDir() / "no-dicom";
+    fs::create_directories(empty);
+    std::ofstream(empty / "readme.txt") << "not DICOM\n";
+    Recorder record(document_);
+    document_.openDicom(qpath(empty));
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    EXPECT_EQ(record.count("seriesScanned"), 0) << record.joined();
+    ASSERT_EQ(record.failures.size(), 1) << record.joined();
+    EXPECT_TRUE(record.failures.front().contains(QStringLiteral("no DICOM images found")));
+    EXPECT_TRUE(record.failures.front().contains(qpath(empty)));
+}
+
+}  // namespace
+}  // namespace vv::test
