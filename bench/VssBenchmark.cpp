@@ -23,9 +23,9 @@
 #include <set>
 #include <sstream>
 
-#include "common/NumberText.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/core/Parallel.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/vss/DepthNormalization.h"
@@ -49,9 +49,9 @@ void say(const VssBenchmarkOptions& options, const std::string& line) {
 // Numbers go through the C-locale formatters: the CLI is a Qt application,
 // whose QCoreApplication sets LC_NUMERIC from the environment, and the CSV
 // must read back under any locale.
-using app::fixedText;
-using app::scientificText;
-using app::significantText;
+using vv::fixedText;
+using vv::scientificText;
+using vv::significantText;
 
 double median(std::vector<double> values) {
     if (values.empty()) {

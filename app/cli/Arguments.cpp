@@ -4,7 +4,7 @@
 #include <string>
 
 #include "cli/Cli.h"
-#include "common/NumberText.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::cli {
 
@@ -91,7 +91,7 @@ void Arguments::fail(const std::string& problem) const {
 }
 
 double parseNumber(std::string_view text, const std::string& what) {
-    const auto value = app::parseFiniteNumber(text);
+    const auto value = vv::parseFiniteNumber(text);
     if (!value) {
         throw UsageError(what + " must be a number, got " + quoted(text));
     }
@@ -99,7 +99,7 @@ double parseNumber(std::string_view text, const std::string& what) {
 }
 
 int parseWholeNumber(std::string_view text, const std::string& what, int lo, int hi) {
-    const auto value = app::parseWholeNumber(text);
+    const auto value = vv::parseWholeNumber(text);
     if (!value || *value < lo || *value > hi) {
         std::string range;
         if (lo != INT_MIN && hi != INT_MAX) {

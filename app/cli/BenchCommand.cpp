@@ -18,8 +18,8 @@
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
-#include "common/NumberText.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/render/ViewPresets.h"
@@ -130,7 +130,7 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
         } else if (name == "fast") {
             for (const double t : parsed.tolerances255) {
                 bench::SolverSetting s;
-                s.label = "fast " + app::significantText(t, 6) + "/255";
+                s.label = "fast " + vv::significantText(t, 6) + "/255";
                 s.series = "fast";
                 s.options.kind = vss::SolverKind::Fast;
                 s.options.tolerance = t / 255.0;

@@ -17,8 +17,8 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/OutputFiles.h"
-#include "common/NumberText.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/dicom/SeriesWriter.h"
@@ -78,9 +78,9 @@ int writeDemoDicom(const std::filesystem::path& folder, std::ostream& out) {
     const glm::ivec3 dims = cta.volume.dims();
     const glm::dvec3 spacing = cta.volume.spacing();
     out << "wrote " << folder.string() << ": CT series of " << dims.z << " slices, " << dims.x
-        << " x " << dims.y << " x " << dims.z << " voxels, " << app::significantText(spacing.x, 3)
-        << " x " << app::significantText(spacing.y, 3) << " x "
-        << app::significantText(spacing.z, 3) << " mm, series " << uid << "\n";
+        << " x " << dims.y << " x " << dims.z << " voxels, " << vv::significantText(spacing.x, 3)
+        << " x " << vv::significantText(spacing.y, 3) << " x " << vv::significantText(spacing.z, 3)
+        << " mm, series " << uid << "\n";
     return kOk;
 }
 

@@ -16,8 +16,8 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
-#include "common/NumberText.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/meshio/MeshLoader.h"
 
@@ -69,7 +69,7 @@ std::vector<ArrayInfo> summarize(const std::vector<vv::scene::DataArray>& arrays
 
 /// Six significant digits for people to read (and scripts: C locale).
 std::string humanNumber(double v) {
-    return app::readableText(v);
+    return vv::readableText(v);
 }
 
 void writeJsonArrays(JsonWriter& json, const std::vector<ArrayInfo>& arrays) {

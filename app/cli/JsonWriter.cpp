@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <ostream>
 
-#include "common/NumberText.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::cli {
 
@@ -99,11 +99,11 @@ void JsonWriter::string(std::string_view text) {
 }
 
 void JsonWriter::number(double v) {
-    raw(std::isfinite(v) ? app::shortestText(v) : "null");
+    raw(std::isfinite(v) ? vv::shortestText(v) : "null");
 }
 
 void JsonWriter::number(float v) {
-    raw(std::isfinite(v) ? app::shortestText(v) : "null");
+    raw(std::isfinite(v) ? vv::shortestText(v) : "null");
 }
 
 void JsonWriter::boolean(bool v) {

@@ -17,7 +17,7 @@ namespace vv::cli {
 /// The one JSON writer of the command line (info --json, render --timings,
 /// vss --stats): objects, arrays, strings, numbers, booleans, null. Numbers
 /// are written in one machine format: the shortest text that reads back as
-/// exactly the value (app::shortestText, always the C locale); a float as a
+/// exactly the value (vv::shortestText, always the C locale); a float as a
 /// float (0.1F is 0.1), not as the double it widens to. Non-finite numbers
 /// have no JSON form and are written as null.
 class JsonWriter {

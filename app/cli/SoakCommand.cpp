@@ -22,10 +22,10 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
-#include "common/NumberText.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/core/ProcessMemory.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
@@ -74,12 +74,12 @@ std::uint64_t residentAfterTrimKiB(bool trim) {
 }
 
 std::string mib(std::uint64_t kib) {
-    return app::fixedText(static_cast<double>(kib) / 1024.0, 1) + " MiB";
+    return vv::fixedText(static_cast<double>(kib) / 1024.0, 1) + " MiB";
 }
 
 /// printf's "%+.2f%%".
 std::string signedPercent(double percent) {
-    return (std::signbit(percent) ? "" : "+") + app::fixedText(percent, 2) + "%";
+    return (std::signbit(percent) ? "" : "+") + vv::fixedText(percent, 2) + "%";
 }
 
 }  // namespace
@@ -210,8 +210,7 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
             lapStart = now;
             out << "frame " << f << ": resident " << mib(rss) << " (peak since last "
                 << mib(lapPeak) << "), "
-                << app::fixedText(1000.0 * lap / static_cast<double>(lapFrames), 1)
-                << " ms/frame\n";
+                << vv::fixedText(1000.0 * lap / static_cast<double>(lapFrames), 1) << " ms/frame\n";
             lapPeak = 0;
             out.flush();
         }
@@ -223,8 +222,8 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
                           : 0.0;
     };
     const double growth = percent(floor100, floorEnd);
-    out << "soak: " << frames << " frames in " << app::fixedText(seconds, 0) << " s ("
-        << app::fixedText(1000.0 * seconds / static_cast<double>(frames), 1)
+    out << "soak: " << frames << " frames in " << vv::fixedText(seconds, 0) << " s ("
+        << vv::fixedText(1000.0 * seconds / static_cast<double>(frames), 1)
         << " ms/frame); resident in use (floor) over frames 1-100 " << mib(floor100)
         << ", over the last 100 " << mib(floorEnd) << " (" << signedPercent(growth) << "); peaks "
         << mib(after100) << " and " << mib(end) << " (" << signedPercent(percent(after100, end))

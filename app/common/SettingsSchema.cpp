@@ -7,10 +7,10 @@
 #include <cmath>
 #include <type_traits>
 
-#include "common/NumberText.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Solver.h"
 

@@ -3,10 +3,7 @@
 // C locale whatever the process locale: a Qt application sets LC_NUMERIC from
 // the environment, and std::snprintf would then write "0,5" under de_DE.
 //
-// The German locale: de_DE.UTF-8 when the system has it, else compiled with
-// localedef (Debian's `locales` package) into <test-tmp>/locales and found
-// through LOCPATH, so that no system set-up is needed. Without either the
-// tests skip, saying why.
+// The German locale comes from tests/support/GermanLocale.h.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -26,9 +23,10 @@
 #include <vector>
 
 #include "CliRun.h"
+#include "GermanLocale.h"
 #include "TestMeshes.h"
 #include "VssBenchmark.h"
-#include "common/NumberText.h"
+#include "vv/core/NumberText.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshWriter.h"
 
@@ -36,8 +34,6 @@ namespace vv::test {
 namespace {
 
 namespace fs = std::filesystem;
-
-const char* const kGerman = "de_DE.UTF-8";
 
 fs::path testDir() {
     const fs::path dir = processTestDir("c-locale-numbers");
@@ -51,46 +47,6 @@ std::string printfText(const char* pattern, int digits, double value) {
     return buffer.data();
 }
 
-/// Where the German locale comes from: "" (installed) or a LOCPATH folder.
-/// nullopt with `why` when it cannot be had. Checked once per process.
-std::optional<std::string> germanLocalePath(std::string& why) {
-    static std::string reason;
-    static const std::optional<std::string> path = []() -> std::optional<std::string> {
-        const std::string before = std::setlocale(LC_NUMERIC, nullptr);
-        const auto works = [&] {
-            const bool ok = std::setlocale(LC_NUMERIC, kGerman) != nullptr &&
-                            printfText("%.*f", 1, 0.5) == "0,5";
-            std::setlocale(LC_NUMERIC, before.c_str());
-            return ok;
-        };
-        if (works()) {
-            return std::string();
-        }
-        const fs::path dir = fs::path(VV_TEST_TMP) / "locales";
-        if (!fs::exists(dir / kGerman / "LC_NUMERIC")) {
-            // Compiled beside and renamed: ctest runs test processes in parallel.
-            const fs::path scratch = dir / ("tmp-" + std::to_string(::getpid()));
-            fs::create_directories(scratch);
-            const std::string command = "localedef -i de_DE -f UTF-8 '" +
-                                        (scratch / kGerman).string() + "' >/dev/null 2>&1";
-            static_cast<void>(std::system(command.c_str()));
-            std::error_code ec;
-            fs::rename(scratch / kGerman, dir / kGerman, ec);
-            fs::remove_all(scratch, ec);
-        }
-        ::setenv("LOCPATH", dir.c_str(), 1);
-        if (works()) {
-            return dir.string();
-        }
-        reason =
-            "no de_DE.UTF-8 locale: not installed, and `localedef -i de_DE -f UTF-8` "
-            "(Debian package locales) could not compile one";
-        return std::nullopt;
-    }();
-    why = reason;
-    return path;
-}
-
 /// The shell prefix that runs a command in German.
 std::string inGerman(const std::string& locpath) {
     std::string prefix = "env LC_ALL=" + std::string(kGerman) + " LANG=" + kGerman;
@@ -99,22 +55,6 @@ std::string inGerman(const std::string& locpath) {
     }
     return prefix + " ";
 }
-
-/// LC_NUMERIC German while alive (this process).
-class GermanNumbers {
-  public:
-    GermanNumbers() : before_(std::setlocale(LC_NUMERIC, nullptr)) {
-        std::setlocale(LC_NUMERIC, kGerman);
-    }
-    ~GermanNumbers() { std::setlocale(LC_NUMERIC, before_.c_str()); }
-    GermanNumbers(const GermanNumbers&) = delete;
-    GermanNumbers& operator=(const GermanNumbers&) = delete;
-    GermanNumbers(GermanNumbers&&) = delete;
-    GermanNumbers& operator=(GermanNumbers&&) = delete;
-
-  private:
-    std::string before_;
-};
 
 struct ShellRun {
     int code = -1;
@@ -159,7 +99,7 @@ const fs::path& decimalTube() {
 
 /// True when `text` is all of one finite number in the C locale.
 bool isCNumber(const std::string& text) {
-    return app::parseFiniteNumber(text).has_value();
+    return vv::parseFiniteNumber(text).has_value();
 }
 
 /// The fields of a CSV line without quoted commas.
@@ -182,19 +122,19 @@ TEST(CLocaleNumbers, FormattersGivePrintfsTextInTheCLocale) {
                              999.5, 0.00995, 123456, 0.1 + 0.2 - 1e-17, 65504.0};
     for (const double v : values) {
         for (const int digits : {0, 1, 2, 3, 4, 6, 9}) {
-            EXPECT_EQ(app::fixedText(v, digits), printfText("%.*f", digits, v))
+            EXPECT_EQ(vv::fixedText(v, digits), printfText("%.*f", digits, v))
                 << v << " " << digits;
-            EXPECT_EQ(app::significantText(v, digits), printfText("%.*g", digits, v))
+            EXPECT_EQ(vv::significantText(v, digits), printfText("%.*g", digits, v))
                 << v << " " << digits;
-            EXPECT_EQ(app::scientificText(v, digits), printfText("%.*e", digits, v))
+            EXPECT_EQ(vv::scientificText(v, digits), printfText("%.*e", digits, v))
                 << v << " " << digits;
         }
     }
-    EXPECT_EQ(app::fixedText(std::numeric_limits<double>::quiet_NaN(), 2), "nan");
-    EXPECT_EQ(app::significantText(std::numeric_limits<double>::infinity(), 6), "inf");
-    EXPECT_EQ(app::scientificText(-std::numeric_limits<double>::infinity(), 2), "-inf");
-    EXPECT_EQ(app::fixedText(0.5, -3), "0");  // no digits: as 0
-    EXPECT_EQ(app::readableText(1.0 / 3.0), "0.333333");
+    EXPECT_EQ(vv::fixedText(std::numeric_limits<double>::quiet_NaN(), 2), "nan");
+    EXPECT_EQ(vv::significantText(std::numeric_limits<double>::infinity(), 6), "inf");
+    EXPECT_EQ(vv::scientificText(-std::numeric_limits<double>::infinity(), 2), "-inf");
+    EXPECT_EQ(vv::fixedText(0.5, -3), "0");  // no digits: as 0
+    EXPECT_EQ(vv::readableText(1.0 / 3.0), "0.333333");
 }
 
 TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
@@ -226,13 +166,13 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
 
     const GermanNumbers german;
     ASSERT_EQ(printfText("%.*f", 1, 0.5), "0,5");  // the locale is in effect
-    EXPECT_EQ(app::fixedText(0.5, 1), "0.5");
-    EXPECT_EQ(app::significantText(2.5, 6), "2.5");
-    EXPECT_EQ(app::scientificText(1234.5, 2), "1.23e+03");
-    EXPECT_EQ(app::shortestText(0.1), "0.1");
-    EXPECT_EQ(app::readableText(0.55), "0.55");
-    EXPECT_EQ(app::parseFiniteNumber("0.5"), 0.5);
-    EXPECT_FALSE(app::parseFiniteNumber("0,5").has_value());
+    EXPECT_EQ(vv::fixedText(0.5, 1), "0.5");
+    EXPECT_EQ(vv::significantText(2.5, 6), "2.5");
+    EXPECT_EQ(vv::scientificText(1234.5, 2), "1.23e+03");
+    EXPECT_EQ(vv::shortestText(0.1), "0.1");
+    EXPECT_EQ(vv::readableText(0.55), "0.55");
+    EXPECT_EQ(vv::parseFiniteNumber("0.5"), 0.5);
+    EXPECT_FALSE(vv::parseFiniteNumber("0,5").has_value());
 
     const std::string csv = bench::csvText(result);
     std::istringstream lines(csv);

@@ -17,11 +17,11 @@
 #include <string>
 #include <vector>
 
-#include "common/NumberText.h"
 #include "common/Session.h"
 #include "common/SettingsSchema.h"
 #include "common/StoredSettings.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::test {
 namespace {
@@ -309,18 +309,18 @@ TEST(SettingsSchema, SessionsHoldTheNoDataColourAndLegendTitleOptionally) {
 }
 
 TEST(NumberText, ShortestRoundTripInTheCLocale) {
-    EXPECT_EQ(app::shortestText(0.5), "0.5");
-    EXPECT_EQ(app::shortestText(2.0), "2");
-    EXPECT_EQ(app::shortestText(0.1F), "0.1");
-    EXPECT_EQ(app::shortestText(static_cast<double>(0.1F)), "0.10000000149011612");
-    EXPECT_EQ(app::shortestText(std::nan("")), "nan");
+    EXPECT_EQ(vv::shortestText(0.5), "0.5");
+    EXPECT_EQ(vv::shortestText(2.0), "2");
+    EXPECT_EQ(vv::shortestText(0.1F), "0.1");
+    EXPECT_EQ(vv::shortestText(static_cast<double>(0.1F)), "0.10000000149011612");
+    EXPECT_EQ(vv::shortestText(std::nan("")), "nan");
     for (const double v : {1.0 / 3.0, 1e-300, 123456.789, -0.0625}) {
-        EXPECT_EQ(app::parseFiniteNumber(app::shortestText(v)), v);
+        EXPECT_EQ(vv::parseFiniteNumber(vv::shortestText(v)), v);
     }
-    EXPECT_EQ(app::readableText(2.0 / 3.0), "0.666667");
-    EXPECT_FALSE(app::parseFiniteNumber("1,5").has_value());
-    EXPECT_FALSE(app::parseFiniteNumber("inf").has_value());
-    EXPECT_FALSE(app::parseWholeNumber("2.5").has_value());
+    EXPECT_EQ(vv::readableText(2.0 / 3.0), "0.666667");
+    EXPECT_FALSE(vv::parseFiniteNumber("1,5").has_value());
+    EXPECT_FALSE(vv::parseFiniteNumber("inf").has_value());
+    EXPECT_FALSE(vv::parseWholeNumber("2.5").has_value());
 }
 
 }  // namespace

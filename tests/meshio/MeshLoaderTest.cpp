@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "GermanLocale.h"
 #include "vv/core/Error.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshWriter.h"
@@ -585,6 +586,23 @@ TEST_F(MeshLoaderTest, AsciiPlyWithExtraPropertiesAndNaN) {
     ASSERT_EQ(label->values.size(), 12U);
     EXPECT_EQ(label->values[0], 0.0F);
     EXPECT_EQ(label->values[11], 1.0F);
+}
+
+TEST_F(MeshLoaderTest, AsciiDecimalsLoadUnderADecimalCommaLocale) {
+    // A Qt program takes LC_NUMERIC from the environment: under de_DE,
+    // strtod reads "0.5" as 0 and stops at the point. The preflights must
+    // not care (they read numbers in the C locale whatever the process's).
+    std::string why;
+    if (!vv::test::germanLocalePath(why)) {
+        GTEST_SKIP() << why;
+    }
+    const vv::test::GermanNumbers german;
+    const auto obj = write("decimals.obj", "v 0.5 0 0\nv 1.5 0 0\nv 0.5 1.25 0\nf 1 2 3\n");
+    const Mesh fromObj = loadMesh(obj);
+    ASSERT_EQ(fromObj.vertexCount(), 3U);
+    EXPECT_FLOAT_EQ(fromObj.positions[2].y, 1.25F);
+    const auto ply = write("box.ply", boxPlyAscii());
+    expectBox(loadMesh(ply), ply);
 }
 
 TEST_F(MeshLoaderTest, BinaryPlyBothEndiannesses) {

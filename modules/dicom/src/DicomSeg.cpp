@@ -25,6 +25,7 @@
 
 #include "DicomHeader.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::dicom {
 
@@ -42,9 +43,7 @@ struct SegFrame {
 };
 
 std::string describe(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.4g", v);
-    return b;
+    return significantText(v, 4);
 }
 
 }  // namespace

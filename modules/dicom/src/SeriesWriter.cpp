@@ -14,16 +14,16 @@
 
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/dicom/Uid.h"
 
 namespace vv::dicom {
 
 namespace {
 
+/// A DICOM DS value: at most 16 characters, always the C locale.
 std::string ds(double v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%.10g", v);
-    return b;
+    return significantText(v, 10);
 }
 
 std::string ds3(const glm::dvec3& v) {

@@ -29,6 +29,7 @@
 #include "preflight/MeshPreflight.h"
 #include "preflight/PreflightCommon.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/meshio/vtkext/VtkConvert.h"
 
 namespace vv::meshio {
@@ -88,11 +89,9 @@ std::uintmax_t checkReadable(const fs::path& file) {
     return size;
 }
 
-/// `v` in the shortest %g form ("1e+38", "0.5", "nan").
+/// `v` in the %g form ("1e+38", "0.5", "nan"), C locale.
 std::string numberText(double v) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%g", v);
-    return buffer;
+    return significantText(v, 6);
 }
 
 /// vtkOBJReader always adds a float "GroupIds" cell array: drop it when the

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::segmentation {
 
@@ -25,9 +26,7 @@ bool isCt(const scene::Volume& volume) {
 }
 
 std::string text(float v) {
-    char b[32];
-    std::snprintf(b, sizeof b, "%g", static_cast<double>(v));
-    return b;
+    return significantText(static_cast<double>(v), 6);
 }
 
 /// Connected components of `mask` (non-zero voxels): `ids` gets 0 for

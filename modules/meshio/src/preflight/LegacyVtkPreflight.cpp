@@ -18,6 +18,7 @@
 #include "MeshPreflight.h"
 #include "PreflightCommon.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/meshio/vtkext/VtkConvert.h"
 
 namespace vv::meshio::detail {
@@ -253,9 +254,7 @@ LegacyDataset preflightLegacyVtk(const fs::path& file, std::uintmax_t size, Pref
                               std::to_string(values) + " values): truncated file");
                 }
                 if (numeric) {
-                    char* end = nullptr;
-                    static_cast<void>(std::strtod(token.c_str(), &end));
-                    if (end != token.c_str() + token.size()) {
+                    if (!parseDecimalNumber(token)) {
                         throw bad("'" + printable(token) + "' where a number belongs");
                     }
                 }

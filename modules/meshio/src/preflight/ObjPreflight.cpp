@@ -13,6 +13,7 @@
 #include "MeshPreflight.h"
 #include "PreflightCommon.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::meshio::detail {
 
@@ -55,15 +56,14 @@ void preflightObj(const fs::path& file, PreflightTicker& tick) {
                                             ": a vertex needs three coordinates");
             }
             for (std::size_t c = 1; c <= 3; ++c) {
-                const std::string text(words[c]);
-                char* end = nullptr;
-                const double v = std::strtod(text.c_str(), &end);
-                if (end != text.c_str() + text.size()) {
+                const std::string_view text = words[c];
+                const std::optional<double> v = parseDecimalNumber(text);
+                if (!v) {
                     throw FormatError(file, "line " + std::to_string(lineNumber) + ": vertex " +
                                                 std::to_string(counts[0] + 1) + " has '" +
                                                 printable(text) + "' where a coordinate belongs");
                 }
-                if (!std::isfinite(v)) {
+                if (!std::isfinite(*v)) {
                     throw FormatError(file, "line " + std::to_string(lineNumber) + ": vertex " +
                                                 std::to_string(counts[0] + 1) +
                                                 " has a non-finite coordinate");

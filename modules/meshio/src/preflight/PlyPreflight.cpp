@@ -14,6 +14,7 @@
 #include "MeshPreflight.h"
 #include "PreflightCommon.h"
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::meshio::detail {
 
@@ -364,15 +365,13 @@ PlyData preflightPly(const fs::path& file, std::uintmax_t size, PreflightTicker&
                 const auto words = splitWords(line);
                 std::size_t w = 0;
                 const auto number = [&](std::string_view token, const char* what) {
-                    const std::string text(token);
-                    char* end = nullptr;
-                    const double v = std::strtod(text.c_str(), &end);
-                    if (end != text.c_str() + text.size()) {
+                    const std::optional<double> v = parseDecimalNumber(token);
+                    if (!v) {
                         throw FormatError(file, "the PLY data for " + where() + " has '" +
-                                                    printable(text) + "' where a " + what +
+                                                    printable(token) + "' where a " + what +
                                                     " belongs: corrupt file");
                     }
-                    return v;
+                    return *v;
                 };
                 for (const auto& property : element.properties) {
                     if (w >= words.size()) {

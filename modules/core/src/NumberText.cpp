@@ -1,13 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "common/NumberText.h"
+#include "vv/core/NumberText.h"
 
 #include <algorithm>
 #include <array>
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <system_error>
 
-namespace vv::app {
+namespace vv {
 
 namespace {
 
@@ -83,4 +84,35 @@ std::optional<int> parseWholeNumber(std::string_view text) noexcept {
     return value;
 }
 
-}  // namespace vv::app
+std::optional<double> parseDecimalNumber(std::string_view text) noexcept {
+    // std::from_chars takes no '+' (strtod does, once, before the number).
+    const bool plus = !text.empty() && text.front() == '+';
+    const std::string_view number = plus ? text.substr(1) : text;
+    if (number.empty() || (plus && number.front() == '-')) {
+        return std::nullopt;
+    }
+    double value = 0.0;
+    const char* end = number.data() + number.size();
+    const auto [ptr, ec] = std::from_chars(number.data(), end, value);
+    if (ptr != end) {
+        return std::nullopt;
+    }
+    if (ec == std::errc::result_out_of_range) {
+        // Too large or too small for a double: strtod gives ±HUGE_VAL or ±0.
+        // Which one follows from the exponent's sign, or, without one, from
+        // whether digits come before the point (a long "0.000…1" underflows).
+        const bool negative = number.front() == '-';
+        const std::size_t e = number.find_first_of("eE");
+        const bool huge = e != std::string_view::npos
+                              ? (e + 1 >= number.size() || number[e + 1] != '-')
+                              : number.find_first_of("123456789") < number.find('.');
+        const double magnitude = huge ? std::numeric_limits<double>::infinity() : 0.0;
+        return negative ? -magnitude : magnitude;
+    }
+    if (ec != std::errc()) {
+        return std::nullopt;
+    }
+    return value;
+}
+
+}  // namespace vv

@@ -5,10 +5,11 @@
 #include <string>
 #include <string_view>
 
-/// Numbers as text for machines (JSON, CSV, messages that quote values):
-/// always the C locale, whatever the process locale (QCoreApplication sets
-/// it from the environment), and round-trippable.
-namespace vv::app {
+/// Numbers as text for machines (JSON, CSV, DICOM values, messages that
+/// quote values) and back: always the C locale, whatever the process locale
+/// (QCoreApplication sets it from the environment; std::snprintf and
+/// std::strtod follow it), and round-trippable.
+namespace vv {
 
 /// The shortest text that reads back as exactly `value` ("0.5", "2",
 /// "1e+20", "-0.1"); "nan", "inf", "-inf" when not finite.
@@ -40,4 +41,11 @@ namespace vv::app {
 /// `text` as an int (all of it, decimal); nullopt otherwise.
 [[nodiscard]] std::optional<int> parseWholeNumber(std::string_view text) noexcept;
 
-}  // namespace vv::app
+/// All of `text` as a number the way std::strtod reads it in the C locale,
+/// for numbers in data files: an optional sign ('+' too), decimal digits
+/// with an optional point and exponent, or inf / infinity / nan (any case);
+/// a value beyond double's range gives ±inf, one below its smallest ±0.
+/// nullopt for anything else (empty, "1,5", "0x1p3", trailing text).
+[[nodiscard]] std::optional<double> parseDecimalNumber(std::string_view text) noexcept;
+
+}  // namespace vv
