@@ -17,6 +17,7 @@
 #include <string_view>
 
 #include "vv/core/Error.h"
+#include "vv/core/Log.h"
 #include "vv/render/BackFaceCulling.h"
 #include "vv/render/GlResources.h"
 #include "vv/scene/MeshTopology.h"
@@ -531,6 +532,10 @@ void MeshRenderer::setScene(std::shared_ptr<const scene::Scene> scene) {
     }
     uploadMeshes(*scene_, meshes_);
     uploadScalars();
+    ++sceneUploads_;
+    static const log::Category category{"vv.render"};
+    log::debug(category, "uploaded a scene: " + std::to_string(scene_->meshes.size()) +
+                             " meshes, " + std::to_string(scene_->triangleCount()) + " triangles");
 }
 
 void MeshRenderer::deletePreviews() {

@@ -230,6 +230,9 @@ class MeshRenderer {
     [[nodiscard]] const std::shared_ptr<const scene::Scene>& scene() const noexcept {
         return scene_;
     }
+    /// How often setScene() uploaded a scene's meshes (also logged at debug
+    /// level under "vv.render"), for checks that a scene is not uploaded twice.
+    [[nodiscard]] std::uint64_t sceneUploads() const noexcept { return sceneUploads_; }
 
     /// Uploads simplified copies of the current scene (meshio::simplifiedScene),
     /// in any order, replacing earlier ones; drawGBuffer(camera, level) draws
@@ -413,6 +416,7 @@ class MeshRenderer {
     unsigned objectTexture_ = 0;
     bool objectsStale_ = true;
     std::uint64_t shadingRevision_ = 0;
+    std::uint64_t sceneUploads_ = 0;
     bool backFaceCulling_ = true;
     std::size_t lastCulledMeshes_ = 0;
     Lighting lighting_;
