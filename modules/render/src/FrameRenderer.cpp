@@ -27,6 +27,7 @@
 #include "passes/VssShadingPass.h"
 #include "passes/VssSolvePass.h"
 #include "vv/core/Error.h"
+#include "vv/core/Hash.h"
 #include "vv/core/Image.h"
 #include "vv/render/GlFramebufferCache.h"
 #include "vv/render/RenderGraphCache.h"
@@ -35,25 +36,6 @@
 namespace vv::render {
 
 namespace {
-
-/// FNV-1a over raw bytes.
-class Hasher {
-  public:
-    void bytes(const void* data, std::size_t size) noexcept {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            hash_ = (hash_ ^ p[i]) * 1099511628211ULL;
-        }
-    }
-    template <class T>
-    void value(const T& v) noexcept {
-        bytes(&v, sizeof v);
-    }
-    [[nodiscard]] std::uint64_t result() const noexcept { return hash_; }
-
-  private:
-    std::uint64_t hash_ = 14695981039346656037ULL;
-};
 
 /// Scene units per pixel per unit of depth of `camera` at a render height of
 /// `height` pixels; a tile (Camera::window) keeps the full view's pixel size:
@@ -78,7 +60,7 @@ glm::ivec2 renderSizeFor(const FrameSettings& settings, const FrameTarget& targe
 /// What a solve request depends on besides the solver: view, render size, scene.
 std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
                       const glm::ivec2& viewport, std::uint64_t sceneRevision) noexcept {
-    Hasher h;
+    Fnv1a h;
     h.value(view);
     h.value(projection);
     h.value(viewport);
@@ -88,7 +70,7 @@ std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
 
 /// The key of a solve of the view `view` with `options` (preview or exact).
 std::uint64_t requestKey(std::uint64_t view, const SolverKey& options, bool preview) noexcept {
-    Hasher h;
+    Fnv1a h;
     h.value(view);
     h.value(options);
     h.value(preview);
@@ -142,7 +124,7 @@ vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept 
 }
 
 std::uint64_t sceneFingerprint(const scene::Scene& scene) noexcept {
-    Hasher h;
+    Fnv1a h;
     h.value(scene.meshes.size());
     for (const auto& mesh : scene.meshes) {
         h.value(mesh.positions.size());

@@ -11,12 +11,12 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <cstdio>
 #include <limits>
 #include <string>
 #include <string_view>
 
 #include "vv/core/Error.h"
+#include "vv/core/Hash.h"
 #include "vv/core/Log.h"
 #include "vv/render/BackFaceCulling.h"
 #include "vv/render/GlResources.h"
@@ -76,8 +76,6 @@ std::vector<glm::vec2> scalarsFor(const scene::Mesh& mesh, const std::string& na
     return out;
 }
 
-void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what);
-
 /// Ends a texture upload to `target` on the active unit: `filter` for
 /// minification and magnification, clamped s, unbound, unit 0 active again;
 /// throws RenderError naming `what` when GL reports an error.
@@ -87,21 +85,7 @@ void finishUpload(QOpenGLFunctions_4_1_Core& f, GLenum target, GLint filter, con
     f.glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     f.glBindTexture(target, 0);
     f.glActiveTexture(GL_TEXTURE0);
-    throwOnGlError(f, what);
-}
-
-void throwOnGlError(QOpenGLFunctions_4_1_Core& gl, const char* what) {
-    const GLenum error = gl.glGetError();
-    if (error == GL_OUT_OF_MEMORY) {
-        throw RenderError(std::string(what) + ": out of GPU memory");
-    }
-    if (error != GL_NO_ERROR) {
-        throw RenderError(std::string(what) + ": OpenGL error 0x" + [error] {
-            char buffer[16];
-            std::snprintf(buffer, sizeof buffer, "%04x", error);
-            return std::string(buffer);
-        }());
-    }
+    checkGlError(f, what);
 }
 
 }  // namespace
@@ -117,14 +101,6 @@ constexpr GLint kCueLutUnit = 1;
 constexpr GLint kGBufferFirstUnit = 2;
 /// ... and the per-object table to this one.
 constexpr GLint kObjectTableUnit = kGBufferFirstUnit + 4;
-
-/// Hashes `value` into `hash` (FNV-1a step per byte).
-void hashBytes(std::uint64_t& hash, const void* data, std::size_t size) noexcept {
-    const auto* p = static_cast<const unsigned char*>(data);
-    for (std::size_t i = 0; i < size; ++i) {
-        hash = (hash ^ p[i]) * 1099511628211ULL;
-    }
-}
 
 /// Widens `range` by the finite range of `mesh`'s point array `name`, if any.
 void widenRange(std::optional<std::pair<float, float>>& range, const scene::Mesh& mesh,
@@ -402,7 +378,7 @@ void MeshRenderer::initialize() {
     f.glGenTextures(1, &objectTexture_);
     uploadedMap_.reset();
     uploadLut();
-    throwOnGlError(f, "MeshRenderer::initialize");
+    checkGlError(f, "MeshRenderer::initialize");
 }
 
 void MeshRenderer::release() noexcept {
@@ -515,7 +491,7 @@ void MeshRenderer::uploadMeshes(const scene::Scene& scene, std::vector<GpuMesh>&
         target.back().source = &mesh;  // Open until setSurfaceClosures()
         f.glBindVertexArray(0);
         f.glBindBuffer(GL_ARRAY_BUFFER, 0);
-        throwOnGlError(f, "uploading a mesh");
+        checkGlError(f, "uploading a mesh");
     }
 }
 
@@ -737,7 +713,7 @@ void MeshRenderer::uploadScalars() {
         upload(*level.scene, level.meshes);
     }
     f.glBindBuffer(GL_ARRAY_BUFFER, 0);
-    throwOnGlError(f, "uploading array values");
+    checkGlError(f, "uploading array values");
     uploadedArrays_.clear();
     for (std::size_t m = 0; m < scene_->meshes.size(); ++m) {
         uploadedArrays_.push_back(style_.arrayOf(m));
@@ -869,10 +845,10 @@ bool MeshStyle::opaque(std::size_t mesh) const noexcept {
 }
 
 std::uint64_t MeshStyle::geometryKey() const noexcept {
-    std::uint64_t hash = 14695981039346656037ULL;
-    hashBytes(hash, array.data(), array.size());
+    Fnv1a hash;
+    hash.text(array);
     for (const std::size_t index : hidden) {
-        hashBytes(hash, &index, sizeof index);
+        hash.value(index);
     }
     for (std::size_t i = 0; i < objects.size(); ++i) {
         if (!objects[i].array && objects[i].opacity >= 1.0F) {
@@ -881,12 +857,9 @@ std::uint64_t MeshStyle::geometryKey() const noexcept {
         const std::string& shown = arrayOf(i);
         const std::uint64_t size = shown.size();
         const bool drawn = opaque(i);
-        hashBytes(hash, &i, sizeof i);
-        hashBytes(hash, &size, sizeof size);
-        hashBytes(hash, shown.data(), shown.size());
-        hashBytes(hash, &drawn, sizeof drawn);
+        hash.value(i).value(size).text(shown).value(drawn);
     }
-    return hash;
+    return hash.result();
 }
 
 void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCueParameters& cue) {
@@ -925,7 +898,7 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
     f.glBindVertexArray(0);
     unbindMaterial();
     f.glDepthMask(GL_TRUE);
-    throwOnGlError(f, "drawing meshes");
+    checkGlError(f, "drawing meshes");
 }
 
 void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbuffer,
@@ -966,7 +939,7 @@ void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbu
     }
     unbindMaterial();
     f.glDepthMask(GL_TRUE);
-    throwOnGlError(f, "shading the vessels from the G-buffer");
+    checkGlError(f, "shading the vessels from the G-buffer");
 }
 
 bool MeshRenderer::hasTranslucent() const noexcept {
@@ -1030,7 +1003,7 @@ void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParamete
     f.glDisable(GL_BLEND);
     f.glDepthMask(GL_TRUE);
     f.glDepthFunc(GL_LESS);
-    throwOnGlError(f, "drawing translucent objects");
+    checkGlError(f, "drawing translucent objects");
 }
 
 void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
@@ -1074,7 +1047,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     f.glDisable(GL_CULL_FACE);
     f.glBindVertexArray(0);
     f.glUseProgram(0);
-    throwOnGlError(f, "drawing the G-buffer");
+    checkGlError(f, "drawing the G-buffer");
 }
 
 void MeshRenderer::setSurfaceClosures(std::size_t level,
