@@ -60,7 +60,7 @@ glm::ivec2 renderSizeFor(const FrameSettings& settings, const FrameTarget& targe
 /// What a solve request depends on besides the solver: view, render size, scene.
 std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
                       const glm::ivec2& viewport, std::uint64_t sceneRevision) noexcept {
-    Fnv1a h;
+    Hasher h;
     h.value(view);
     h.value(projection);
     h.value(viewport);
@@ -70,7 +70,7 @@ std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
 
 /// The key of a solve of the view `view` with `options` (preview or exact).
 std::uint64_t requestKey(std::uint64_t view, const SolverKey& options, bool preview) noexcept {
-    Fnv1a h;
+    Hasher h;
     h.value(view);
     h.value(options);
     h.value(preview);
@@ -124,15 +124,19 @@ vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept 
 }
 
 std::uint64_t sceneFingerprint(const scene::Scene& scene) noexcept {
-    Fnv1a h;
+    // bulk(): a scene's arrays are megabytes, hashed on every offscreen render.
+    Hasher h;
     h.value(scene.meshes.size());
     for (const auto& mesh : scene.meshes) {
-        h.value(mesh.positions.size());
-        h.bytes(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-        h.value(mesh.indices.size());
-        h.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
-        h.value(mesh.normals.size());
-        h.bytes(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+        h.bulk(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+        h.bulk(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+        h.bulk(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+        // The per-vertex values the renderer uploads from the point arrays.
+        h.value(mesh.pointArrays.size());
+        for (const scene::DataArray& array : mesh.pointArrays) {
+            h.value(array.name.size()).text(array.name).value(array.components);
+            h.bulk(array.values.data(), array.values.size() * sizeof(float));
+        }
     }
     return h.result();
 }

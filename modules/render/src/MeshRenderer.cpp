@@ -111,10 +111,8 @@ void MeshRenderer::setScene(std::shared_ptr<const scene::Scene> scene) {
 }
 
 void MeshRenderer::attachScene(std::shared_ptr<const scene::Scene> scene) {
+    // The same content: the values on the GPU and the ranges stay right.
     geometry_.attach(std::move(scene));
-    // The same content: the values on the GPU stay right; the ranges are
-    // taken from the new object all the same.
-    material_.setStyle(material_.style(), geometry_.scene().get());
 }
 
 void MeshRenderer::detachScene() noexcept {
@@ -173,7 +171,7 @@ void MeshRenderer::draw(const Camera& camera, DepthMode mode, const VesselCuePar
     if (!program_.valid()) {
         throw RenderError("MeshRenderer::draw without a shader program");
     }
-    if (geometry_.meshesOf(0).empty()) {
+    if (!drawable()) {
         return;
     }
     material_.prepare(f, geometry_, cue);
@@ -250,6 +248,9 @@ void MeshRenderer::shadeGBuffer(const Camera& camera, const GBufferTextures& gbu
 }
 
 bool MeshRenderer::hasTranslucent() const noexcept {
+    if (!drawable()) {
+        return false;
+    }
     for (std::size_t i = 0; i < geometry_.meshesOf(0).size(); ++i) {
         if (style().translucent(i)) {
             return true;
@@ -263,6 +264,9 @@ void MeshRenderer::drawTranslucent(const Camera& camera, const VesselCueParamete
     auto& f = gl();
     if (!program_.valid()) {
         throw RenderError("MeshRenderer::drawTranslucent without a shader program");
+    }
+    if (!drawable()) {
+        return;
     }
     const std::vector<GpuMesh>& drawn = geometry_.meshesOf(level);
     const glm::mat4 view = camera.viewMatrix();
@@ -318,7 +322,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     if (!gbufferProgram_.valid()) {
         throw RenderError("MeshRenderer::drawGBuffer without a shader program");
     }
-    if (geometry_.meshesOf(0).empty()) {
+    if (!drawable()) {
         return;
     }
     if (material_.scalarsStale(geometry_)) {

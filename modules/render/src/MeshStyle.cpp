@@ -240,7 +240,7 @@ bool MeshStyle::opaque(std::size_t mesh) const noexcept {
 }
 
 std::uint64_t MeshStyle::geometryKey() const noexcept {
-    Fnv1a hash;
+    Hasher hash;
     hash.text(array);
     for (const std::size_t index : hidden) {
         hash.value(index);

@@ -64,9 +64,9 @@ class MeshRenderer {
     [[nodiscard]] std::uint64_t sceneUploads() const noexcept { return geometry_.uploads(); }
     /// Shows `scene`, whose content (positions, normals, indices, point
     /// arrays) the caller promises to be that of the scene uploaded last,
-    /// without uploading it again: only the meshes' sources and the ranges
-    /// follow the new object. Needs no GL context. Throws InvalidArgumentError
-    /// when its mesh or index counts differ from the uploaded ones.
+    /// without uploading it again: only the meshes' sources follow the new
+    /// object (values, ranges and closures are those of the same content). Needs no GL context.
+    /// Throws InvalidArgumentError when its mesh or index counts differ from the uploaded ones.
     void attachScene(std::shared_ptr<const scene::Scene> scene);
     /// Lets go of the scene but keeps its meshes on the GPU for a later
     /// attachScene() of the same content; nothing is drawn until then.
@@ -201,6 +201,10 @@ class MeshRenderer {
     [[nodiscard]] std::string glDescription() const;
 
   private:
+    /// True when a scene is attached and uploaded (detachScene() draws nothing).
+    [[nodiscard]] bool drawable() const noexcept {
+        return geometry_.scene() != nullptr && geometry_.uploaded();
+    }
     /// Enables culling for the next draw of `mesh` where cullableFaces() allows it.
     void cullFor(const GpuMesh& mesh, const glm::mat4& view, const glm::mat4& projection);
     [[nodiscard]] QOpenGLFunctions_4_1_Core& gl() const;
