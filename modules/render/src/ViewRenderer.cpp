@@ -1,6 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/render/ViewRenderer.h"
 
+#include <algorithm>
+#include <chrono>
+#include <limits>
 #include <utility>
 
 #include "vv/core/Error.h"
@@ -92,6 +95,7 @@ void ViewRenderer::setSurfaceClosures(std::vector<scene::SurfaceClosure> closure
 
 void ViewRenderer::setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue) {
     isoValue_ = isoValue;
+    nearest_.reset();
     frame_.setVolume(std::move(volume), isoValue);  // uploads lazily, no context needed
 }
 
@@ -133,6 +137,10 @@ RefinementPolicy::AfterFrame ViewRenderer::render(const Camera& camera, const Fr
     const FrameSettings settings = frameSettings();
     frame_.render(camera, settings, target);
     lastSettings_ = settings;
+    ++frames_;
+    if (recordTimings_) {
+        timings_ = frame_.lastTimings();
+    }
     return refinement_.frameDrawn(frame_.vssStatus());
 }
 
@@ -143,6 +151,7 @@ Image<float> ViewRenderer::renderDepth(const Camera& camera, const FrameTarget& 
 
 SettleResult ViewRenderer::settle(const Camera& camera, const FrameTarget& target,
                                   const std::function<void()>& makeCurrent) {
+    const auto start = std::chrono::steady_clock::now();
     SettleResult result = SettleResult::None;
     try {
         // The last preview frame read back the depth of this very view (same
@@ -167,6 +176,45 @@ SettleResult ViewRenderer::settle(const Camera& camera, const FrameTarget& targe
     } else if (result == SettleResult::Prepared) {
         ++prepared_;
     }
+    settleMilliseconds_ =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+    return result;
+}
+
+std::optional<ViewProbe> ViewRenderer::probe(const Camera& camera, int x, int y) {
+    const std::optional<ProbeSample> sample = frame_.probe(camera, x, y);
+    if (!sample) {
+        return std::nullopt;
+    }
+    if (!nearest_ || nearest_->first != frames_) {
+        const auto range = frame_.visibleDepthRange();
+        nearest_.emplace(frames_, range ? std::optional<float>(range->first) : std::nullopt);
+    }
+    const std::size_t meshCount = scene_ ? scene_->meshes.size() : 0U;
+    const bool volumeShown = frame_.volume() != nullptr;
+    if (sample->objectId == 0 || sample->objectId > meshCount + (volumeShown ? 1U : 0U)) {
+        return std::nullopt;
+    }
+    ViewProbe result;
+    result.linearDepth = sample->linearDepth;
+    result.depthBelowNearest =
+        std::max(0.0F, sample->linearDepth - nearest_->second.value_or(sample->linearDepth));
+    result.worldPosition = sample->worldPosition;
+    result.value = std::numeric_limits<float>::quiet_NaN();
+    if (sample->objectId > meshCount) {
+        return result;  // the ray-cast volume (1 + mesh count): position and depth, no value
+    }
+    const std::size_t index = sample->objectId - 1U;
+    result.meshIndex = static_cast<int>(index);
+    // The array this object shows (its own choice or the scene's).
+    result.arrayName = style_.arrayOf(index);
+    if (result.arrayName.empty()) {
+        return result;
+    }
+    if (const scene::DataArray* values = scene_->meshes[index].pointArray(result.arrayName)) {
+        result.unit = values->unit;
+    }
+    result.value = sample->value;
     return result;
 }
 

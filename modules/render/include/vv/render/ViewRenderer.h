@@ -6,6 +6,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -30,6 +31,18 @@ namespace vv::render {
 struct PreviewGeometry {
     std::vector<std::shared_ptr<const scene::Scene>> scenes;
     std::vector<std::vector<scene::SurfaceClosure>> closures;
+};
+
+/// What the last frame shows at one pixel (ViewRenderer::probe).
+struct ViewProbe {
+    int meshIndex = -1;        ///< index into the scene's meshes; -1: the ray-cast volume
+    std::string arrayName;     ///< the array the object shows; empty when none
+    std::string unit;          ///< that array's unit; empty when unknown
+    float value = 0.0F;        ///< its value; NaN when none is shown or no data here
+    float linearDepth = 0.0F;  ///< distance along the viewing axis, scene units
+    /// Depth behind the nearest visible vessel point of the frame (>= 0).
+    float depthBelowNearest = 0.0F;
+    glm::vec3 worldPosition{0.0F};  ///< scene coordinates
 };
 
 /// What the settle step started (ViewRenderer::settle).
@@ -169,6 +182,23 @@ class ViewRenderer {
     /// How often settle() requested / prepared the exact solve.
     [[nodiscard]] std::uint64_t solvesRequestedOnSettle() const noexcept { return requested_; }
     [[nodiscard]] std::uint64_t solvesPreparedOnSettle() const noexcept { return prepared_; }
+    /// Wall time of the last settle() in milliseconds.
+    [[nodiscard]] double lastSettleMilliseconds() const noexcept { return settleMilliseconds_; }
+
+    /// When on, each frame waits for its GPU timers and keeps the per-pass
+    /// times (lastTimings()). Off by default: waiting stalls real GPUs.
+    void setRecordTimings(bool on) noexcept { recordTimings_ = on; }
+    [[nodiscard]] bool recordTimings() const noexcept { return recordTimings_; }
+    /// The last frame's per-pass times (empty unless recordTimings()).
+    [[nodiscard]] const std::vector<GlPassTiming>& lastTimings() const noexcept { return timings_; }
+
+    /// What the last frame shows at (x, y), in its render pixels
+    /// (FrameRenderer::lastRenderSize(), row 0 at the BOTTOM): the object, its
+    /// array's value, depth and position; nullopt where no object is. The
+    /// frame's nearest visible depth is read once per frame. `camera` is the
+    /// one the frame was drawn with. Context current; throws RenderError when
+    /// GL fails.
+    [[nodiscard]] std::optional<ViewProbe> probe(const Camera& camera, int x, int y);
 
     /// The legends of the scales the last frame used (empty before one).
     [[nodiscard]] Legends legends() const;
@@ -210,6 +240,12 @@ class ViewRenderer {
     bool styleDirty_ = true;
     std::uint64_t requested_ = 0;
     std::uint64_t prepared_ = 0;
+    double settleMilliseconds_ = 0.0;
+    bool recordTimings_ = false;
+    std::vector<GlPassTiming> timings_;
+    std::uint64_t frames_ = 0;  ///< frames drawn by render()
+    /// The nearest visible depth of frame `first` (probe()).
+    std::optional<std::pair<std::uint64_t, std::optional<float>>> nearest_;
 };
 
 }  // namespace vv::render
