@@ -200,7 +200,7 @@ std::vector<scene::SurfaceClosure> closuresOf(const scene::Scene& scene) {
 /// its closures (decimation may open a surface); none when cancelled or
 /// failed (moving frames then draw the full meshes).
 render::PreviewGeometry simplifiedLevels(const scene::Scene& scene, std::size_t budget,
-                                         std::size_t coarse, std::stop_token stop) {
+                                         std::size_t coarse, const std::stop_token& stop) {
     // Not worth it below 1.5x the budget: the full meshes are cheap enough.
     const auto worthIt = [](std::size_t have, std::size_t wanted) {
         return wanted > 0 && have * 2 > wanted * 3;

@@ -33,13 +33,25 @@ VssFrameStatus status(bool pending, bool preview) {
     return s;
 }
 
+/// What the policy may change in a frame's settings.
+struct Expected {
+    bool preview = false;
+    bool occlusion = true;  ///< AO and FXAA
+    float scale = 1.0F;
+    bool simplified = false;
+};
+
+void expectSettings(const FrameSettings& s, const Expected& e) {
+    EXPECT_EQ(s.vss.preview, e.preview);
+    EXPECT_EQ(s.ao.enabled, e.occlusion);
+    EXPECT_EQ(s.antialiasing, e.occlusion);
+    EXPECT_FLOAT_EQ(s.resolutionScale, e.scale);
+    EXPECT_EQ(s.simplifiedGeometry, e.simplified);
+    EXPECT_FLOAT_EQ(s.background.g, 0.2F);  // never touched
+}
+
 void expectDisplay(const FrameSettings& s) {
-    EXPECT_FALSE(s.vss.preview);
-    EXPECT_TRUE(s.ao.enabled);
-    EXPECT_TRUE(s.antialiasing);
-    EXPECT_FLOAT_EQ(s.resolutionScale, 1.0F);
-    EXPECT_FALSE(s.simplifiedGeometry);
-    EXPECT_FLOAT_EQ(s.background.g, 0.2F);
+    expectSettings(s, Expected{});
 }
 
 TEST(RefinementPolicyTest, StillFramesUseTheDisplaySettings) {
@@ -59,13 +71,9 @@ TEST(RefinementPolicyTest, MovingSettledExactThenTheOcclusion) {
     // meshes, without occlusion and FXAA.
     EXPECT_TRUE(policy.cameraMoved());
     EXPECT_EQ(policy.phase(), Phase::Moving);
-    const FrameSettings moving = policy.frameSettings(display());
-    EXPECT_TRUE(moving.vss.preview);
-    EXPECT_FALSE(moving.ao.enabled);
-    EXPECT_FALSE(moving.antialiasing);
-    EXPECT_FLOAT_EQ(moving.resolutionScale, 0.6F);
-    EXPECT_TRUE(moving.simplifiedGeometry);
-    EXPECT_FLOAT_EQ(moving.background.g, 0.2F);
+    expectSettings(
+        policy.frameSettings(display()),
+        Expected{.preview = true, .occlusion = false, .scale = 0.6F, .simplified = true});
     EXPECT_TRUE(policy.frameDrawn(status(false, true)).showedCameraMove);
     // A frame without a camera change in between (a preview arrived).
     EXPECT_FALSE(policy.frameDrawn(status(false, true)).showedCameraMove);
@@ -75,12 +83,7 @@ TEST(RefinementPolicyTest, MovingSettledExactThenTheOcclusion) {
     EXPECT_TRUE(policy.settle());
     EXPECT_EQ(policy.phase(), Phase::Settled);
     EXPECT_TRUE(policy.occlusionDeferred());
-    const FrameSettings settled = policy.frameSettings(display());
-    EXPECT_FALSE(settled.vss.preview);
-    EXPECT_FALSE(settled.ao.enabled);
-    EXPECT_FALSE(settled.antialiasing);
-    EXPECT_FLOAT_EQ(settled.resolutionScale, 1.0F);
-    EXPECT_FALSE(settled.simplifiedGeometry);
+    expectSettings(policy.frameSettings(display()), Expected{.occlusion = false});
 
     // Neither a pending solve nor the last preview ends the deferral.
     EXPECT_FALSE(policy.frameDrawn(status(true, false)).occlusionFrame);

@@ -42,17 +42,17 @@ std::size_t choosePreviewLevel(std::span<const std::size_t> triangles, long long
     return triangles.size();
 }
 
-void GpuMeshes::deleteMeshes(QOpenGLFunctions_4_1_Core& f, std::vector<GpuMesh>& meshes) {
+void GpuMeshes::deleteMeshes(QOpenGLFunctions_4_1_Core& gl, std::vector<GpuMesh>& meshes) {
     for (auto& m : meshes) {
-        f.glDeleteVertexArrays(1, &m.vao);
-        f.glDeleteBuffers(1, &m.vertices);
-        f.glDeleteBuffers(1, &m.scalars);
-        f.glDeleteBuffers(1, &m.indices);
+        gl.glDeleteVertexArrays(1, &m.vao);
+        gl.glDeleteBuffers(1, &m.vertices);
+        gl.glDeleteBuffers(1, &m.scalars);
+        gl.glDeleteBuffers(1, &m.indices);
     }
     meshes.clear();
 }
 
-void GpuMeshes::uploadMeshes(QOpenGLFunctions_4_1_Core& f, const scene::Scene& scene,
+void GpuMeshes::uploadMeshes(QOpenGLFunctions_4_1_Core& gl, const scene::Scene& scene,
                              std::vector<GpuMesh>& target) {
     for (const auto& mesh : scene.meshes) {
         const std::size_t n = mesh.vertexCount();
@@ -81,42 +81,43 @@ void GpuMeshes::uploadMeshes(QOpenGLFunctions_4_1_Core& f, const scene::Scene& s
         }
 
         GpuMesh gpu;
-        f.glGenVertexArrays(1, &gpu.vao);
-        f.glGenBuffers(1, &gpu.vertices);
-        f.glGenBuffers(1, &gpu.scalars);
-        f.glGenBuffers(1, &gpu.indices);
+        gl.glGenVertexArrays(1, &gpu.vao);
+        gl.glGenBuffers(1, &gpu.vertices);
+        gl.glGenBuffers(1, &gpu.scalars);
+        gl.glGenBuffers(1, &gpu.indices);
         target.push_back(gpu);  // owned from here on, so errors below do not leak
 
-        f.glBindVertexArray(gpu.vao);
-        f.glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
-        f.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
-                       vertices.data(), GL_STATIC_DRAW);
-        f.glEnableVertexAttribArray(kPositionLocation);
-        f.glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                                reinterpret_cast<const void*>(offsetof(Vertex, position)));
-        f.glEnableVertexAttribArray(kNormalLocation);
-        f.glVertexAttribPointer(kNormalLocation, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
-                                reinterpret_cast<const void*>(offsetof(Vertex, normal)));
+        gl.glBindVertexArray(gpu.vao);
+        gl.glBindBuffer(GL_ARRAY_BUFFER, gpu.vertices);
+        gl.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(vertices.size() * sizeof(Vertex)),
+                        vertices.data(), GL_STATIC_DRAW);
+        gl.glEnableVertexAttribArray(kPositionLocation);
+        gl.glVertexAttribPointer(kPositionLocation, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                                 reinterpret_cast<const void*>(offsetof(Vertex, position)));
+        gl.glEnableVertexAttribArray(kNormalLocation);
+        gl.glVertexAttribPointer(kNormalLocation, 3, GL_FLOAT, GL_FALSE, sizeof(Vertex),
+                                 reinterpret_cast<const void*>(offsetof(Vertex, normal)));
 
-        f.glBindBuffer(GL_ARRAY_BUFFER, gpu.scalars);
-        f.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n * sizeof(glm::vec2)), nullptr,
-                       GL_DYNAMIC_DRAW);
-        f.glEnableVertexAttribArray(kScalarLocation);
-        f.glVertexAttribPointer(kScalarLocation, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2), nullptr);
+        gl.glBindBuffer(GL_ARRAY_BUFFER, gpu.scalars);
+        gl.glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(n * sizeof(glm::vec2)), nullptr,
+                        GL_DYNAMIC_DRAW);
+        gl.glEnableVertexAttribArray(kScalarLocation);
+        gl.glVertexAttribPointer(kScalarLocation, 2, GL_FLOAT, GL_FALSE, sizeof(glm::vec2),
+                                 nullptr);
 
-        f.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices);
-        f.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
-                       static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
-                       mesh.indices.data(), GL_STATIC_DRAW);
+        gl.glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, gpu.indices);
+        gl.glBufferData(GL_ELEMENT_ARRAY_BUFFER,
+                        static_cast<GLsizeiptr>(mesh.indices.size() * sizeof(std::uint32_t)),
+                        mesh.indices.data(), GL_STATIC_DRAW);
         target.back().indexCount = static_cast<GLsizei>(mesh.indices.size());
         target.back().bounds = mesh.bounds();
         if (!target.back().bounds.empty()) {
             target.back().center = 0.5F * (target.back().bounds.min + target.back().bounds.max);
         }
         target.back().source = &mesh;  // Open until setSurfaceClosures()
-        f.glBindVertexArray(0);
-        f.glBindBuffer(GL_ARRAY_BUFFER, 0);
-        checkGlError(f, "uploading a mesh");
+        gl.glBindVertexArray(0);
+        gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
+        checkGlError(gl, "uploading a mesh");
     }
 }
 
@@ -225,7 +226,10 @@ const std::vector<GpuMesh>* GpuMeshes::levelMeshes(std::size_t level) const noex
 }
 
 std::vector<GpuMesh>* GpuMeshes::levelMeshes(std::size_t level) noexcept {
-    return const_cast<std::vector<GpuMesh>*>(std::as_const(*this).levelMeshes(level));
+    if (level > previews_.size()) {
+        return nullptr;
+    }
+    return level == 0 ? &meshes_ : &previews_[level - 1].meshes;
 }
 
 void GpuMeshes::setSurfaceClosures(std::size_t level,

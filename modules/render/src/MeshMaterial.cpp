@@ -17,8 +17,6 @@ namespace vv::render {
 namespace {
 
 constexpr int kCueLutSize = 256;
-constexpr GLint kCueLutUnit = MeshMaterial::kCueLutUnit;
-constexpr GLint kObjectTableUnit = MeshMaterial::kObjectTableUnit;
 
 /// The per-vertex (value, valid) pairs of `name` on `mesh`; (0, 0) where the
 /// value is NaN / infinite or the mesh lacks the array.
@@ -54,13 +52,13 @@ std::vector<glm::vec2> scalarsFor(const scene::Mesh& mesh, const std::string& na
 /// Ends a texture upload to `target` on the active unit: `filter` for
 /// minification and magnification, clamped s, unbound, unit 0 active again;
 /// throws RenderError naming `what` when GL reports an error.
-void finishUpload(QOpenGLFunctions_4_1_Core& f, GLenum target, GLint filter, const char* what) {
-    f.glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
-    f.glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
-    f.glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    f.glBindTexture(target, 0);
-    f.glActiveTexture(GL_TEXTURE0);
-    checkGlError(f, what);
+void finishUpload(QOpenGLFunctions_4_1_Core& gl, GLenum target, GLint filter, const char* what) {
+    gl.glTexParameteri(target, GL_TEXTURE_MIN_FILTER, filter);
+    gl.glTexParameteri(target, GL_TEXTURE_MAG_FILTER, filter);
+    gl.glTexParameteri(target, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl.glBindTexture(target, 0);
+    gl.glActiveTexture(GL_TEXTURE0);
+    checkGlError(gl, what);
 }
 
 }  // namespace
@@ -77,18 +75,18 @@ void MeshMaterial::forget() noexcept {
     scalarsUploaded_ = false;
 }
 
-void MeshMaterial::initialize(QOpenGLFunctions_4_1_Core& f) {
+void MeshMaterial::initialize(QOpenGLFunctions_4_1_Core& gl) {
     forget();
-    f.glGenTextures(1, &lutTexture_);
-    f.glGenTextures(1, &cueLutTexture_);
-    f.glGenTextures(1, &objectTexture_);
-    uploadLut(f);
+    gl.glGenTextures(1, &lutTexture_);
+    gl.glGenTextures(1, &cueLutTexture_);
+    gl.glGenTextures(1, &objectTexture_);
+    uploadLut(gl);
 }
 
-void MeshMaterial::release(QOpenGLFunctions_4_1_Core& f) noexcept {
+void MeshMaterial::release(QOpenGLFunctions_4_1_Core& gl) noexcept {
     for (unsigned* texture : {&lutTexture_, &cueLutTexture_, &objectTexture_}) {
         if (*texture != 0) {
-            f.glDeleteTextures(1, texture);
+            gl.glDeleteTextures(1, texture);
         }
     }
     forget();
@@ -158,12 +156,12 @@ bool MeshMaterial::scalarsStale(const GpuMeshes& meshes) const noexcept {
     return false;
 }
 
-void MeshMaterial::uploadObjects(QOpenGLFunctions_4_1_Core& f, const scene::Scene* scene) {
+void MeshMaterial::uploadObjects(QOpenGLFunctions_4_1_Core& gl, const scene::Scene* scene) {
     if (!objectsStale_) {
         return;
     }
     GLint maxSize = 0;
-    f.glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    gl.glGetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
     const std::size_t count = scene != nullptr ? scene->meshes.size() : 0U;
     // Row = object id (row 0 unused). Objects beyond the largest texture keep
     // the scene's material (vessel.frag falls back to the uniforms).
@@ -178,27 +176,27 @@ void MeshMaterial::uploadObjects(QOpenGLFunctions_4_1_Core& f, const scene::Scen
         table[id * 2] = glm::vec4(color, useArray ? 1.0F : 0.0F);
         table[id * 2 + 1] = glm::vec4(range.first, range.second, o.opacity, 0.0F);
     }
-    f.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
-    f.glBindTexture(GL_TEXTURE_2D, objectTexture_);
-    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
-    f.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2, static_cast<GLsizei>(rows), 0, GL_RGBA,
-                   GL_FLOAT, table.data());
-    finishUpload(f, GL_TEXTURE_2D, GL_NEAREST, "uploading the per-object styles");
+    gl.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
+    gl.glBindTexture(GL_TEXTURE_2D, objectTexture_);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    gl.glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, 2, static_cast<GLsizei>(rows), 0, GL_RGBA,
+                    GL_FLOAT, table.data());
+    finishUpload(gl, GL_TEXTURE_2D, GL_NEAREST, "uploading the per-object styles");
     objectsStale_ = false;
 }
 
-void MeshMaterial::useObject(QOpenGLFunctions_4_1_Core& f, const Program& program,
-                             std::size_t index) const {
+void MeshMaterial::useObject(QOpenGLFunctions_4_1_Core& gl, const Program& program,
+                             std::size_t mesh) const {
     const auto loc = [&](std::string_view name) { return program.location(name); };
-    const ObjectStyle& o = style_.object(index);
+    const ObjectStyle& o = style_.object(mesh);
     const glm::vec3 color = o.color.value_or(style_.vesselColor);
-    const auto range = objectRange(index).value_or(std::make_pair(0.0F, 1.0F));
-    f.glUniform1i(loc("uUseArray"), style_.arrayOf(index).empty() ? 0 : 1);
-    f.glUniform3f(loc("uBaseColor"), color.r, color.g, color.b);
-    f.glUniform2f(loc("uRange"), range.first, range.second);
+    const auto range = objectRange(mesh).value_or(std::make_pair(0.0F, 1.0F));
+    gl.glUniform1i(loc("uUseArray"), style_.arrayOf(mesh).empty() ? 0 : 1);
+    gl.glUniform3f(loc("uBaseColor"), color.r, color.g, color.b);
+    gl.glUniform2f(loc("uRange"), range.first, range.second);
 }
 
-void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& f, const GpuMeshes& meshes) {
+void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& gl, const GpuMeshes& meshes) {
     const scene::Scene* scene = meshes.scene().get();
     if (scene == nullptr) {
         return;
@@ -207,14 +205,14 @@ void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& f, const GpuMeshes& 
         const std::vector<GpuMesh>& gpu = *level.meshes;
         for (std::size_t m = 0; m < gpu.size(); ++m) {
             const auto scalars = scalarsFor(level.scene->meshes[m], style_.arrayOf(m));
-            f.glBindBuffer(GL_ARRAY_BUFFER, gpu[m].scalars);
-            f.glBufferSubData(GL_ARRAY_BUFFER, 0,
-                              static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
-                              scalars.data());
+            gl.glBindBuffer(GL_ARRAY_BUFFER, gpu[m].scalars);
+            gl.glBufferSubData(GL_ARRAY_BUFFER, 0,
+                               static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
+                               scalars.data());
         }
     }
-    f.glBindBuffer(GL_ARRAY_BUFFER, 0);
-    checkGlError(f, "uploading array values");
+    gl.glBindBuffer(GL_ARRAY_BUFFER, 0);
+    checkGlError(gl, "uploading array values");
     uploadedArrays_.clear();
     for (std::size_t m = 0; m < scene->meshes.size(); ++m) {
         uploadedArrays_.push_back(style_.arrayOf(m));
@@ -222,7 +220,7 @@ void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& f, const GpuMeshes& 
     scalarsUploaded_ = true;
 }
 
-void MeshMaterial::uploadLut(QOpenGLFunctions_4_1_Core& f) {
+void MeshMaterial::uploadLut(QOpenGLFunctions_4_1_Core& gl) {
     const int bins = style_.bins >= 2 ? style_.bins : 0;
     if (uploadedMap_ == style_.colorMap && uploadedBins_ == bins) {
         return;
@@ -232,42 +230,42 @@ void MeshMaterial::uploadLut(QOpenGLFunctions_4_1_Core& f) {
     const int size = bins >= 2 ? bins : lutSize_;
     const auto table = colormaps::lut(style_.colorMap, size);
     const GLint filter = bins >= 2 ? GL_NEAREST : GL_LINEAR;
-    f.glActiveTexture(GL_TEXTURE0);
-    f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
-    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, table.data());
-    finishUpload(f, GL_TEXTURE_1D, filter, "uploading the colour map");
+    gl.glActiveTexture(GL_TEXTURE0);
+    gl.glBindTexture(GL_TEXTURE_1D, lutTexture_);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, size, 0, GL_RGBA, GL_UNSIGNED_BYTE, table.data());
+    finishUpload(gl, GL_TEXTURE_1D, filter, "uploading the colour map");
     uploadedMap_ = style_.colorMap;
     uploadedBins_ = bins;
 }
 
-void MeshMaterial::uploadCueLut(QOpenGLFunctions_4_1_Core& f, colormaps::DepthScale scale) {
+void MeshMaterial::uploadCueLut(QOpenGLFunctions_4_1_Core& gl, colormaps::DepthScale scale) {
     if (uploadedCueScale_ == scale) {
         return;
     }
     const auto table = colormaps::lut(scale, kCueLutSize);
-    f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
-    f.glBindTexture(GL_TEXTURE_1D, cueLutTexture_);
-    f.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-    f.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, kCueLutSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                   table.data());
-    finishUpload(f, GL_TEXTURE_1D, GL_LINEAR, "uploading the vessel cue's depth scale");
+    gl.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
+    gl.glBindTexture(GL_TEXTURE_1D, cueLutTexture_);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, kCueLutSize, 0, GL_RGBA, GL_UNSIGNED_BYTE,
+                    table.data());
+    finishUpload(gl, GL_TEXTURE_1D, GL_LINEAR, "uploading the vessel cue's depth scale");
     uploadedCueScale_ = scale;
 }
 
-void MeshMaterial::prepare(QOpenGLFunctions_4_1_Core& f, const GpuMeshes& meshes,
+void MeshMaterial::prepare(QOpenGLFunctions_4_1_Core& gl, const GpuMeshes& meshes,
                            const VesselCueParameters& cue) {
     if (scalarsStale(meshes)) {
-        uploadScalars(f, meshes);
+        uploadScalars(gl, meshes);
     }
-    uploadObjects(f, meshes.scene().get());
-    uploadLut(f);
+    uploadObjects(gl, meshes.scene().get());
+    uploadLut(gl);
     if (const auto cueScale = cueDepthScale(cue.cue)) {
-        uploadCueLut(f, *cueScale);
+        uploadCueLut(gl, *cueScale);
     }
 }
 
-void MeshMaterial::use(QOpenGLFunctions_4_1_Core& f, const Program& program,
+void MeshMaterial::use(QOpenGLFunctions_4_1_Core& gl, const Program& program,
                        const VesselCueParameters& cue) const {
     const bool useArray = !style_.array.empty();
     // An array without any finite value shows no-data everywhere.
@@ -276,48 +274,48 @@ void MeshMaterial::use(QOpenGLFunctions_4_1_Core& f, const Program& program,
     const Lighting& light = lighting_;
     program.use();
     const auto loc = [&](std::string_view name) { return program.location(name); };
-    f.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
-    f.glUniform3f(loc("uBaseColor"), style_.vesselColor.r, style_.vesselColor.g,
-                  style_.vesselColor.b);
-    f.glUniform3f(loc("uNoDataColor"), noData.r, noData.g, noData.b);
-    f.glUniform1i(loc("uLut"), 0);
-    f.glUniform1f(loc("uLutSize"), static_cast<float>(lutSize_));
-    f.glUniform1i(loc("uBins"), uploadedBins_);
-    f.glUniform1i(loc("uCue"), static_cast<GLint>(cue.cue));
-    f.glUniform1i(loc("uCueLut"), kCueLutUnit);
-    f.glUniform1f(loc("uCueLutSize"), static_cast<float>(kCueLutSize));
-    f.glUniform2f(loc("uCueDepthRange"), cue.dmin, cue.dmax);
-    f.glUniform3f(loc("uFogColor"), cue.fogColor.r, cue.fogColor.g, cue.fogColor.b);
-    f.glUniform1f(loc("uFogStrength"), std::clamp(cue.fogStrength, 0.0F, 1.0F));
-    f.glUniform1f(loc("uFresnelExponent"), std::max(cue.fresnelExponent, 0.0F));
-    f.glUniform2f(loc("uRange"), range.first, range.second);
-    f.glUniform1i(loc("uLighting"), style_.lighting ? 1 : 0);
-    f.glUniform3f(loc("uLightDirection"), light.direction.x, light.direction.y, light.direction.z);
-    f.glUniform1f(loc("uAmbient"), light.ambient);
-    f.glUniform1f(loc("uDiffuse"), light.diffuse);
-    f.glUniform1f(loc("uSpecular"), light.specular);
-    f.glUniform1f(loc("uShininess"), light.shininess);
-    f.glUniform1f(loc("uOpacity"), 1.0F);
-    f.glUniform1i(loc("uObjects"), kObjectTableUnit);
+    gl.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
+    gl.glUniform3f(loc("uBaseColor"), style_.vesselColor.r, style_.vesselColor.g,
+                   style_.vesselColor.b);
+    gl.glUniform3f(loc("uNoDataColor"), noData.r, noData.g, noData.b);
+    gl.glUniform1i(loc("uLut"), 0);
+    gl.glUniform1f(loc("uLutSize"), static_cast<float>(lutSize_));
+    gl.glUniform1i(loc("uBins"), uploadedBins_);
+    gl.glUniform1i(loc("uCue"), static_cast<GLint>(cue.cue));
+    gl.glUniform1i(loc("uCueLut"), kCueLutUnit);
+    gl.glUniform1f(loc("uCueLutSize"), static_cast<float>(kCueLutSize));
+    gl.glUniform2f(loc("uCueDepthRange"), cue.dmin, cue.dmax);
+    gl.glUniform3f(loc("uFogColor"), cue.fogColor.r, cue.fogColor.g, cue.fogColor.b);
+    gl.glUniform1f(loc("uFogStrength"), std::clamp(cue.fogStrength, 0.0F, 1.0F));
+    gl.glUniform1f(loc("uFresnelExponent"), std::max(cue.fresnelExponent, 0.0F));
+    gl.glUniform2f(loc("uRange"), range.first, range.second);
+    gl.glUniform1i(loc("uLighting"), style_.lighting ? 1 : 0);
+    gl.glUniform3f(loc("uLightDirection"), light.direction.x, light.direction.y, light.direction.z);
+    gl.glUniform1f(loc("uAmbient"), light.ambient);
+    gl.glUniform1f(loc("uDiffuse"), light.diffuse);
+    gl.glUniform1f(loc("uSpecular"), light.specular);
+    gl.glUniform1f(loc("uShininess"), light.shininess);
+    gl.glUniform1f(loc("uOpacity"), 1.0F);
+    gl.glUniform1i(loc("uObjects"), kObjectTableUnit);
     GLint rows = 0;
-    f.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
-    f.glBindTexture(GL_TEXTURE_2D, objectTexture_);
-    f.glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &rows);
-    f.glUniform1i(loc("uObjectCount"), std::max(rows - 1, 0));
-    f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
-    f.glBindTexture(GL_TEXTURE_1D, cueDepthScale(cue.cue) ? cueLutTexture_ : 0U);
-    f.glActiveTexture(GL_TEXTURE0);
-    f.glBindTexture(GL_TEXTURE_1D, lutTexture_);
+    gl.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
+    gl.glBindTexture(GL_TEXTURE_2D, objectTexture_);
+    gl.glGetTexLevelParameteriv(GL_TEXTURE_2D, 0, GL_TEXTURE_HEIGHT, &rows);
+    gl.glUniform1i(loc("uObjectCount"), std::max(rows - 1, 0));
+    gl.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
+    gl.glBindTexture(GL_TEXTURE_1D, cueDepthScale(cue.cue) ? cueLutTexture_ : 0U);
+    gl.glActiveTexture(GL_TEXTURE0);
+    gl.glBindTexture(GL_TEXTURE_1D, lutTexture_);
 }
 
-void MeshMaterial::unbind(QOpenGLFunctions_4_1_Core& f) const {
-    f.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
-    f.glBindTexture(GL_TEXTURE_2D, 0);
-    f.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
-    f.glBindTexture(GL_TEXTURE_1D, 0);
-    f.glActiveTexture(GL_TEXTURE0);
-    f.glBindTexture(GL_TEXTURE_1D, 0);
-    f.glUseProgram(0);
+void MeshMaterial::unbind(QOpenGLFunctions_4_1_Core& gl) {
+    gl.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
+    gl.glBindTexture(GL_TEXTURE_2D, 0);
+    gl.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
+    gl.glBindTexture(GL_TEXTURE_1D, 0);
+    gl.glActiveTexture(GL_TEXTURE0);
+    gl.glBindTexture(GL_TEXTURE_1D, 0);
+    gl.glUseProgram(0);
 }
 
 }  // namespace vv::render

@@ -79,7 +79,7 @@ class MeshMaterial {
     /// Sets `program`'s per-object uniforms (colour, array on/off, range) for `mesh`.
     void useObject(QOpenGLFunctions_4_1_Core& gl, const Program& program, std::size_t mesh) const;
     /// Unbinds the material's textures and the program.
-    void unbind(QOpenGLFunctions_4_1_Core& gl) const;
+    static void unbind(QOpenGLFunctions_4_1_Core& gl);
 
   private:
     void updateRange(const scene::Scene* scene);

@@ -41,6 +41,8 @@ class MeshRenderer {
     ~MeshRenderer();
     MeshRenderer(const MeshRenderer&) = delete;
     MeshRenderer& operator=(const MeshRenderer&) = delete;
+    MeshRenderer(MeshRenderer&&) = delete;
+    MeshRenderer& operator=(MeshRenderer&&) = delete;
 
     /// Resolves GL 4.1 core functions and builds the shaders from the
     /// resources :/vv/shaders/mesh.vert and mesh.frag. Throws RenderError when

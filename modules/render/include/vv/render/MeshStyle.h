@@ -136,8 +136,8 @@ enum class VesselCue : std::uint8_t {
 [[nodiscard]] std::string_view name(VesselCue cue) noexcept;
 /// Human-readable name ("Vessel pseudo-chromadepth").
 [[nodiscard]] std::string_view displayName(VesselCue cue) noexcept;
-/// The cue whose name() equals `name`, ignoring ASCII case; nullopt when none does.
-[[nodiscard]] std::optional<VesselCue> vesselCueFromName(std::string_view name) noexcept;
+/// The cue whose name() equals `text`, ignoring ASCII case; nullopt when none does.
+[[nodiscard]] std::optional<VesselCue> vesselCueFromName(std::string_view text) noexcept;
 /// The depth scale a cue colours with (chromadepth for Chromadepth, pseudo-
 /// chromadepth for PseudoChromadepth and Fresnel); nullopt for None and Fog.
 [[nodiscard]] std::optional<colormaps::DepthScale> cueDepthScale(VesselCue cue) noexcept;
