@@ -64,7 +64,7 @@ bool ViewRenderer::uploadScene() {
     } else {
         uploaded_.reset();
         meshes.setScene(scene_);
-        uploaded_ = content_;
+        uploaded_ = scene_ ? content_ : std::nullopt;
         previewDirty_ = true;
         closuresDirty_ = closuresKnown_;  // the upload left every mesh Open
     }
