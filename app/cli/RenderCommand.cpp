@@ -47,7 +47,7 @@
 #include "vv/meshio/MeshLoader.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/render/LegendPainter.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/RenderGraph.h"
 #include "vv/render/ViewPresets.h"

@@ -9,7 +9,7 @@
 #include "cli/Cli.h"
 #include "common/SettingsSchema.h"
 #include "vv/core/Error.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/report/ViewExport.h"
 
 namespace vv::cli {

@@ -4,7 +4,7 @@
 #include <glm/glm.hpp>
 
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 
 namespace vv::app {
 

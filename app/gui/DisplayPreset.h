@@ -2,7 +2,7 @@
 #pragma once
 
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 
 namespace vv::gui {
 

@@ -41,7 +41,7 @@
 #include "gui/panels/PanelUtil.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/VssPanel.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 
 namespace vv::gui {
 

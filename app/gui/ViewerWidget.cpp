@@ -2,7 +2,6 @@
 #include "gui/ViewerWidget.h"
 
 #include <QElapsedTimer>
-#include <QFutureWatcher>
 #include <QGuiApplication>
 #include <QHelpEvent>
 #include <QKeyEvent>
@@ -14,9 +13,7 @@
 #include <QTimer>
 #include <QToolTip>
 #include <QWheelEvent>
-#include <QtConcurrent/QtConcurrentRun>
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <exception>
 #include <limits>
@@ -79,7 +76,7 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
         if (budgetFrameStart_) {
             // Drawing plus Qt composing the window: what the frame rate sees
             // (on software OpenGL the composition alone takes ~15 ms at 720p).
-            adaptInteractiveScale(
+            view_.refinement().frameMeasured(
                 static_cast<double>(frameClock_.nsecsElapsed() - *budgetFrameStart_) / 1e6);
             budgetFrameStart_.reset();
         }
@@ -98,11 +95,11 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
 }
 
 ViewerWidget::~ViewerWidget() {
-    cancelPreviewGeometry();
-    previewFuture_.waitForFinished();
-    closureFuture_.waitForFinished();
+    previewRun_.cancel();
+    previewRun_.waitForFinished();
+    closureRun_.waitForFinished();
     // ~QOpenGLWidget destroys the context after this body, when this object is
-    // only a QOpenGLWidget and renderer_ is gone: its aboutToBeDestroyed must
+    // only a QOpenGLWidget and view_ is gone: its aboutToBeDestroyed must
     // not call releaseGl again (UBSan: downcast of a QOpenGLWidget, asan preset).
     if (QOpenGLContext* ctx = context()) {
         disconnect(ctx, &QOpenGLContext::aboutToBeDestroyed, this, &ViewerWidget::releaseGl);
@@ -161,16 +158,14 @@ void ViewerWidget::releaseGl() {
         return;
     }
     makeCurrent();
-    renderer_.release();
+    view_.release();
     doneCurrent();
 }
 
 void ViewerWidget::setScene(std::shared_ptr<const scene::Scene> scene) {
-    scene_ = std::move(scene);
+    view_.setScene(std::move(scene));
     startPreviewGeometry();
     startClosureCheck();
-    ++sceneRevision_;
-    sceneDirty_ = true;
     framesWithScene_ = 0;
     camera_.setViewport(width(), height());
     camera_.reset();
@@ -180,31 +175,12 @@ void ViewerWidget::setScene(std::shared_ptr<const scene::Scene> scene) {
 }
 
 void ViewerWidget::setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue) {
-    volume_ = std::move(volume);
-    isoValue_ = isoValue;
-    renderer_.setVolume(volume_, isoValue_);  // uploads lazily, no context needed
+    view_.setVolume(std::move(volume), isoValue);
     framesWithScene_ = 0;
-    nearestKey_.reset();
     if (const Aabb box = dataBounds(); !box.empty()) {
         camera_.setSceneBounds(box);  // clip planes; the view stays
     }
     requestFrame();
-}
-
-Aabb ViewerWidget::dataBounds() const noexcept {
-    Aabb box = scene_ ? scene_->bounds() : Aabb{};
-    if (volume_ && !volume_->empty()) {
-        box.extend(volume_->worldBounds());
-    }
-    return box;
-}
-
-void ViewerWidget::cancelPreviewGeometry() {
-    previewStop_.request_stop();
-    previewStop_ = std::stop_source();
-    previewScenes_.clear();
-    previewClosures_.clear();
-    previewDirty_ = true;
 }
 
 namespace {
@@ -219,111 +195,100 @@ std::vector<scene::SurfaceClosure> closuresOf(const scene::Scene& scene) {
     }
 }
 
+/// The simplified copies of `scene` for moving frames: `budget` triangles,
+/// then a `coarse`-triangle copy of that one (cheap) when worth it, each with
+/// its closures (decimation may open a surface); none when cancelled or
+/// failed (moving frames then draw the full meshes).
+render::PreviewGeometry simplifiedLevels(const scene::Scene& scene, std::size_t budget,
+                                         std::size_t coarse, const std::stop_token& stop) {
+    // Not worth it below 1.5x the budget: the full meshes are cheap enough.
+    const auto worthIt = [](std::size_t have, std::size_t wanted) {
+        return wanted > 0 && have * 2 > wanted * 3;
+    };
+    if (!worthIt(scene.triangleCount(), budget)) {
+        return {};
+    }
+    try {
+        render::PreviewGeometry levels;
+        auto fine = std::make_shared<const scene::Scene>(
+            meshio::simplifiedScene(scene, budget, Progress({}, stop)));
+        levels.scenes.push_back(fine);
+        levels.closures.push_back(closuresOf(*fine));
+        if (worthIt(fine->triangleCount(), coarse)) {
+            auto coarser = std::make_shared<const scene::Scene>(
+                meshio::simplifiedScene(*fine, coarse, Progress({}, stop)));
+            levels.closures.push_back(closuresOf(*coarser));
+            levels.scenes.push_back(std::move(coarser));
+        }
+        return levels;
+    } catch (const CancelledError&) {
+        return {};
+    } catch (const vv::Error& e) {
+        static const log::Category category{"vv.gui"};
+        log::warning(category, std::string("no simplified geometry: ") + e.what());
+        return {};
+    }
+}
+
 }  // namespace
 
 void ViewerWidget::startClosureCheck() {
-    sceneClosures_.clear();
-    closuresKnown_ = false;
-    closuresDirty_ = false;
-    if (!scene_) {
+    closureRun_.cancel();
+    const std::shared_ptr<const scene::Scene> scene = view_.scene();
+    if (!scene) {
         return;
     }
-    const std::shared_ptr<const scene::Scene> scene = scene_;
-    closureFuture_ = QtConcurrent::run([scene] { return closuresOf(*scene); });
-    auto* watcher = new QFutureWatcher<Closures>(this);
-    connect(watcher, &QFutureWatcher<Closures>::finished, this, [this, watcher, scene] {
-        watcher->deleteLater();
-        if (scene != scene_) {
-            return;  // checked for an older scene
-        }
-        sceneClosures_ = watcher->result();
-        closuresKnown_ = true;
-        closuresDirty_ = true;  // the next frame culls; this one's pixels stay right
-    });
-    watcher->setFuture(closureFuture_);
-}
-
-std::vector<std::size_t> ViewerWidget::previewLevelTriangles() const {
-    std::vector<std::size_t> levels;
-    for (const auto& preview : previewScenes_) {
-        levels.push_back(preview->triangleCount());
-    }
-    return levels;
+    closureRun_.start([scene](const std::stop_token&) { return closuresOf(*scene); },
+                      [this](std::vector<scene::SurfaceClosure> closures) {
+                          // The next frame culls; this one's pixels stay right.
+                          view_.setSurfaceClosures(std::move(closures));
+                      });
 }
 
 void ViewerWidget::startPreviewGeometry() {
-    cancelPreviewGeometry();
-    const std::size_t triangles = scene_ ? scene_->triangleCount() : 0;
-    // Not worth it below 1.5x the budget: the full meshes are cheap enough.
-    const auto worthIt = [](std::size_t have, std::size_t budget) {
-        return budget > 0 && have * 2 > budget * 3;
-    };
-    if (!worthIt(triangles, previewTriangles_)) {
+    previewRun_.cancel();
+    const std::shared_ptr<const scene::Scene> scene = view_.scene();
+    if (!scene) {
         return;
     }
-    const std::shared_ptr<const scene::Scene> scene = scene_;
     const std::size_t budget = previewTriangles_;
-    previewFuture_ = QtConcurrent::run(
-        [scene, budget, worthIt, stop = previewStop_.get_token()]() -> PreviewGeometry {
-            try {
-                // The budget, then a third of it from that copy (cheap): the
-                // renderer draws the coarser one into small moving frames.
-                // Decimation may open a surface, so each copy is checked.
-                PreviewGeometry levels;
-                auto fine = std::make_shared<const scene::Scene>(
-                    meshio::simplifiedScene(*scene, budget, Progress({}, stop)));
-                levels.scenes.push_back(fine);
-                levels.closures.push_back(closuresOf(*fine));
-                const std::size_t coarse = budget / kPreviewLevelRatio;
-                if (worthIt(fine->triangleCount(), coarse)) {
-                    auto coarser = std::make_shared<const scene::Scene>(
-                        meshio::simplifiedScene(*fine, coarse, Progress({}, stop)));
-                    levels.closures.push_back(closuresOf(*coarser));
-                    levels.scenes.push_back(std::move(coarser));
-                }
-                return levels;
-            } catch (const CancelledError&) {
-                return {};
-            } catch (const vv::Error& e) {
-                // No preview: moving frames draw the full meshes.
-                static const log::Category category{"vv.gui"};
-                log::warning(category, std::string("no simplified geometry: ") + e.what());
-                return {};
+    previewRun_.start(
+        [scene, budget](const std::stop_token& stop) {
+            // The budget, then a third of it: the renderer draws the coarser
+            // one into small moving frames.
+            return simplifiedLevels(*scene, budget, budget / kPreviewLevelRatio, stop);
+        },
+        [this](render::PreviewGeometry levels) {
+            if (levels.scenes.empty()) {
+                return;  // cancelled, failed, or not worth it
             }
+            view_.setPreviewGeometry(std::move(levels));
+            emit previewGeometryReady();
         });
-    auto* watcher = new QFutureWatcher<PreviewGeometry>(this);
-    connect(watcher, &QFutureWatcher<PreviewGeometry>::finished, this, [this, watcher, scene] {
-        watcher->deleteLater();
-        PreviewGeometry previews = watcher->result();
-        if (previews.scenes.empty() || scene != scene_) {
-            return;  // cancelled, failed, or built for an older scene
-        }
-        previewScenes_ = std::move(previews.scenes);
-        previewClosures_ = std::move(previews.closures);
-        previewDirty_ = true;
-        emit previewGeometryReady();
-    });
-    watcher->setFuture(previewFuture_);
 }
 
 void ViewerWidget::setStyle(const render::MeshStyle& style) {
-    style_ = style;
-    styleDirty_ = true;
+    view_.setStyle(style);
     requestFrame();
 }
 
 void ViewerWidget::setVssSettings(const render::VssSettings& settings) {
-    vss_ = settings;
+    view_.setVssSettings(settings);
     requestFrame();
 }
 
 void ViewerWidget::setAoSettings(const render::AoSettings& settings) {
-    ao_ = settings;
+    view_.setAoSettings(settings);
     requestFrame();
 }
 
 void ViewerWidget::setVesselCue(const render::VesselCueSettings& cue) {
-    cue_ = cue;
+    view_.setVesselCue(cue);
+    requestFrame();
+}
+
+void ViewerWidget::setBackground(const glm::vec3& color) {
+    view_.setBackground(color);
     requestFrame();
 }
 
@@ -333,7 +298,7 @@ void ViewerWidget::setLegendsVisible(bool visible) {
 }
 
 void ViewerWidget::setProgressiveRefinement(bool on) {
-    progressive_ = on;
+    view_.refinement().setProgressive(on);
     if (!on) {
         settle();
     }
@@ -344,14 +309,18 @@ void ViewerWidget::setSettleDelay(int milliseconds) {
     settleTimer_->setInterval(settleDelayMs_);
 }
 
+void ViewerWidget::setFrameBudget(double milliseconds) {
+    view_.refinement().setFrameBudget(milliseconds);
+}
+
+void ViewerWidget::setInteractiveScale(float scale) {
+    view_.refinement().setInteractiveScale(scale);
+    requestFrame();
+}
+
 void ViewerWidget::cameraChanged() {
     autoFit_ = false;
-    if (progressive_) {
-        moving_ = true;
-        cameraMoved_ = true;  // this frame may set the next move's size
-        if (frameBudgetMs_ > 0.0) {
-            interactiveScale_ = nextInteractiveScale_;
-        }
+    if (view_.refinement().cameraMoved()) {
         settleTimer_->start();  // restarts: the camera settles settleDelay() after the last change
     }
     requestFrame();
@@ -359,110 +328,44 @@ void ViewerWidget::cameraChanged() {
 
 void ViewerWidget::settle() {
     settleTimer_->stop();
-    if (!moving_) {
+    if (!view_.refinement().settle()) {
         return;
     }
-    moving_ = false;
     previewArrivalTimer_->stop();  // the settled frames show the newest VSS
-    // The exact VSS first, the occlusion in the frame after (paintGL).
-    deferOcclusion_ = true;  // the AO and FXAA follow the exact VSS
-    QElapsedTimer settleTimer;
-    settleTimer.start();
-    bool requested = false;
-    bool prepared = false;
-    if (error_.isEmpty() && renderer_.initialized() && !autoFit_) {
-        // The last preview frame read back the depth of this very view (same
-        // camera, same render size): start the exact solve now, and let its
-        // arrival (vssSolved) draw the one frame that shows it.
-        try {
-            requested = renderer_.requestSolve(camera_, frameSettings(), frameTarget());
-            if (!requested) {
-                // The last frame was smaller or drew the simplified meshes:
-                // draw only this view's full G-buffer and start its solve; the
-                // solve's arrival draws the frame (its G-buffer then cached).
-                makeCurrent();
-                prepared = renderer_.prepareSolve(camera_, frameSettings(), frameTarget());
-                doneCurrent();
-            }
-        } catch (const vv::Error&) {
+    render::SettleResult result = render::SettleResult::None;
+    if (error_.isEmpty() && view_.initialized() && !autoFit_) {
+        bool current = false;
+        result = view_.settle(camera_, frameTarget(), [this, &current] {
+            makeCurrent();
+            current = true;
+        });
+        if (current) {
             doneCurrent();
-            requested = false;  // the next frame reports the problem
-            prepared = false;
         }
     }
-    settleMilliseconds_ = static_cast<double>(settleTimer.nsecsElapsed()) / 1e6;
-    if (requested) {
-        ++solvesRequestedOnSettle_;
-    }
-    if (prepared) {
-        ++solvesPreparedOnSettle_;
-    }
     emit cameraSettled();
-    if (!requested && !prepared) {
+    if (result == render::SettleResult::None) {
         requestFrame();  // the next frame reads the depth back and asks for the exact VSS
     }
 }
 
-namespace {
-/// The scales dynamic resolution steps through, each ~0.84 of the one
-/// before (~0.7 of its pixels). Discrete, so that the size holds still while
-/// the time fits: a new size cannot show the last preview VSS (a VSS is only
-/// shown at the size it was solved at).
-constexpr std::array<float, 9> kScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F, 0.5F,
-                                              0.42F, 0.35F, 0.3F,  0.25F};
-}  // namespace
-
-void ViewerWidget::adaptInteractiveScale(double milliseconds) {
-    // The step at or below the current scale.
-    std::size_t step = kScaleSteps.size() - 1;
-    for (std::size_t i = 0; i < kScaleSteps.size(); ++i) {
-        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F) {
-            step = i;
-            break;
+void ViewerWidget::solveArrived() {
+    emit vssSolved();
+    // A newer solve is under way (e.g. the exact one after the camera
+    // settled): its own arrival draws the frame that shows it; a frame now
+    // would only delay it.
+    if (view_.frameRenderer().solveInProgress()) {
+        return;
+    }
+    if (view_.refinement().moving()) {
+        // The next camera move's frame shows this preview anyway: a frame of
+        // its own only when the camera pauses (no move within the delay).
+        if (!previewArrivalTimer_->isActive()) {
+            previewArrivalTimer_->start();
         }
+        return;
     }
-    if (milliseconds > 1.15 * frameBudgetMs_ && step + 1 < kScaleSteps.size()) {
-        ++step;  // too slow: ~0.7 of the pixels
-    } else if (milliseconds < 0.6 * frameBudgetMs_ && step > 0) {
-        --step;  // ~1.4x the pixels would still fit
-    }
-    nextInteractiveScale_ = kScaleSteps[step];
-}
-
-void ViewerWidget::setFrameBudget(double milliseconds) {
-    frameBudgetMs_ = std::isfinite(milliseconds) ? std::max(milliseconds, 0.0) : 0.0;
-}
-
-void ViewerWidget::setInteractiveScale(float scale) {
-    frameBudgetMs_ = 0.0;  // a fixed scale
-    interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
-    nextInteractiveScale_ = interactiveScale_;
     requestFrame();
-}
-
-render::FrameSettings ViewerWidget::frameSettings() const {
-    render::FrameSettings settings;
-    settings.background = background_;
-    settings.vss = vss_;
-    settings.ao = ao_;
-    settings.cue = cue_;
-    if (moving_) {
-        // Preview while the camera moves: a quicker solve, no occlusion, no
-        // FXAA (a reduced render size is blitted up instead), and a reduced
-        // render size when the resolution of the target does not already
-        // make the frame cheap.
-        settings.vss.preview = true;
-        settings.ao.enabled = false;
-        settings.antialiasing = false;
-        settings.resolutionScale = interactiveScale_;
-        settings.simplifiedGeometry = true;
-    } else if (deferOcclusion_) {
-        // Until the exact VSS is on screen: without the occlusion and FXAA
-        // (~120 ms and ~20 ms at 720p on llvmpipe), which the next frame adds.
-        settings.ao.enabled = false;
-        settings.antialiasing = false;
-    }
-    return settings;
 }
 
 render::FrameTarget ViewerWidget::frameTarget() const {
@@ -471,11 +374,6 @@ render::FrameTarget ViewerWidget::frameTarget() const {
     return render::FrameTarget{defaultFramebufferObject(),
                                std::max(1, static_cast<int>(std::lround(width() * ratio))),
                                std::max(1, static_cast<int>(std::lround(height() * ratio)))};
-}
-
-void ViewerWidget::setBackground(const glm::vec3& color) {
-    background_ = color;
-    requestFrame();
 }
 
 void ViewerWidget::setCamera(const render::Camera& camera) {
@@ -532,36 +430,13 @@ void ViewerWidget::initializeGL() {
     connect(ctx, &QOpenGLContext::aboutToBeDestroyed, this, &ViewerWidget::releaseGl,
             Qt::UniqueConnection);
     try {
-        renderer_.initialize();
+        view_.initialize();  // everything is uploaded anew by the next frame
         // Called on the solver's thread: hand the repaint to the GUI thread
         // (dropped if the widget is gone by then).
-        renderer_.setSolveMode(render::FrameRenderer::SolveMode::Asynchronous, [this] {
-            QMetaObject::invokeMethod(
-                this,
-                [this] {
-                    emit vssSolved();
-                    // A newer solve is under way (e.g. the exact one after the
-                    // camera settled): its own arrival draws the frame that
-                    // shows it; a frame now would only delay it.
-                    if (renderer_.solveInProgress()) {
-                        return;
-                    }
-                    if (moving_) {
-                        // The next camera move's frame shows this preview
-                        // anyway: a frame of its own only when the camera
-                        // pauses (no move within the delay).
-                        if (!previewArrivalTimer_->isActive()) {
-                            previewArrivalTimer_->start();
-                        }
-                        return;
-                    }
-                    requestFrame();
-                },
-                Qt::QueuedConnection);
+        view_.setSolveMode(render::FrameRenderer::SolveMode::Asynchronous, [this] {
+            QMetaObject::invokeMethod(this, &ViewerWidget::solveArrived, Qt::QueuedConnection);
         });
-        glDescription_ = QString::fromStdString(renderer_.meshRenderer().glDescription());
-        sceneDirty_ = true;
-        styleDirty_ = true;
+        glDescription_ = QString::fromStdString(view_.meshRenderer().glDescription());
         frameDirty_ = true;
     } catch (const vv::Error& e) {
         const QSurfaceFormat f = ctx->format();
@@ -603,7 +478,7 @@ void ViewerWidget::paintMessage(const QString& text) {
 }
 
 void ViewerWidget::paintGL() {
-    if (!error_.isEmpty() || !renderer_.initialized()) {
+    if (!error_.isEmpty() || !view_.initialized()) {
         // An unusable viewer still paints its message.
         paintMessage(error_.isEmpty() ? tr("OpenGL is not available.") : error_);
         return;
@@ -621,77 +496,36 @@ void ViewerWidget::paintGL() {
     paintTimer.start();
     const qint64 paintStart = frameClock_.nsecsElapsed();
     try {
-        render::MeshRenderer& meshes = renderer_.meshRenderer();
-        if (sceneDirty_) {
-            meshes.setScene(scene_);
-            renderer_.setSceneRevision(sceneRevision_);
-            sceneDirty_ = false;
-            styleDirty_ = true;
-            previewDirty_ = true;
-            closuresDirty_ = closuresKnown_;  // the upload left every mesh Open
-        }
-        if (previewDirty_) {
-            meshes.setPreviewScenes(previewScenes_);
-            for (std::size_t level = 0; level < previewClosures_.size(); ++level) {
-                meshes.setSurfaceClosures(level + 1, previewClosures_[level]);
-            }
-            previewDirty_ = false;
-        }
-        if (closuresDirty_ && scene_) {
-            meshes.setSurfaceClosures(0, sceneClosures_);
-            closuresDirty_ = false;
-        }
-        if (styleDirty_) {
-            meshes.setStyle(style_);
-            styleDirty_ = false;
-        }
         camera_.setViewport(width(), height());
         if (autoFit_) {
             // Until the user moves the camera, keep the data framed as the widget resizes.
             camera_.fit(camera_.sceneBounds());
         }
-        const render::FrameTarget target = frameTarget();
-        const render::FrameSettings settings = frameSettings();
-        renderer_.render(camera_, settings, target);
-        if (recordTimings_) {
-            timings_ = renderer_.lastTimings();
-        }
-        if (moving_ && cameraMoved_ && frameBudgetMs_ > 0.0) {
+        const render::RefinementPolicy::AfterFrame after = view_.render(camera_, frameTarget());
+        if (after.measure) {
             // Dynamic resolution: this frame's time, up to the swap of the
             // window's composed frame (frameSwapped), sets the size of the
-            // next camera move's frames. Frames in between (a preview solve
-            // arrived) keep this size: the preview was solved at it.
+            // next camera move's frames.
             budgetFrameStart_ = paintStart;
         }
-        if (cameraMoved_) {
+        if (after.showedCameraMove) {
             previewArrivalTimer_->stop();  // this frame showed the newest preview
         }
-        cameraMoved_ = false;
-        if (deferOcclusion_ && !moving_) {
-            const render::VssFrameStatus& status = renderer_.vssStatus();
-            if (!status.pending && !status.preview) {
-                // The exact VSS (or no VSS at all) is on screen: now the occlusion.
-                deferOcclusion_ = false;
-                QTimer::singleShot(0, this, &ViewerWidget::requestFrame);
-            }
+        if (after.occlusionFrame) {
+            // The exact VSS (or no VSS at all) is on screen: now the occlusion.
+            QTimer::singleShot(0, this, &ViewerWidget::requestFrame);
         }
-        const glm::ivec2 rendered = renderer_.lastRenderSize();
+        const glm::ivec2 rendered = view_.frameRenderer().lastRenderSize();
         lastRenderSize_ = QSize(rendered.x, rendered.y);
-        shownRange_ = meshes.effectiveRange();
         // The legends of the scales in use, over the GL frame.
-        legendOverlay_->setLegends(legendsVisible_
-                                       ? render::legendsFor(scene_.get(), style_, shownRange_,
-                                                            settings, renderer_.vssStatus(),
-                                                            renderer_.lastCueDepthRange())
-                                       : render::Legends{});
+        legendOverlay_->setLegends(legendsVisible_ ? view_.legends() : render::Legends{});
     } catch (const vv::Error& e) {
         const QString why = QString::fromStdString(e.what());
-        if (volume_) {
+        if (volume()) {
             // Most likely the volume (too big for a 3-D texture or the GPU's
             // memory): drop it and go on with the scene. When the error was
             // another, the next frame fails without a volume and says so.
-            volume_.reset();
-            renderer_.setVolume(nullptr, 0.0F);
+            view_.setVolume(nullptr, view_.isoValue());
             QTimer::singleShot(0, this, [this, why] { emit volumeFailed(why); });
             requestFrame();
             return;
@@ -700,7 +534,7 @@ void ViewerWidget::paintGL() {
         paintMessage(error_);
         return;
     }
-    if (scene_ || volume_) {
+    if (scene() || volume()) {
         ++framesWithScene_;
     }
     paintMilliseconds_ = static_cast<double>(paintTimer.nsecsElapsed()) / 1e6;
@@ -810,7 +644,8 @@ Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept {
 }
 
 std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
-    if (!error_.isEmpty() || !renderer_.initialized() || (scene_ == nullptr && !volume_) ||
+    const std::shared_ptr<const scene::Scene>& shown = scene();
+    if (!error_.isEmpty() || !view_.initialized() || (shown == nullptr && !volume()) ||
         lastRenderSize_.isEmpty() || width() < 1 || height() < 1) {
         return std::nullopt;
     }
@@ -820,50 +655,30 @@ std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
     const int x = static_cast<int>(std::floor(position.x() * sx));
     const int y = lastRenderSize_.height() - 1 - static_cast<int>(std::floor(position.y() * sy));
     makeCurrent();
-    const auto read = [&]() -> std::optional<render::ProbeSample> {
-        try {
-            auto texel = renderer_.probe(camera_, x, y);
-            const std::pair<quint64, std::uint64_t> key{framesWithScene_, sceneRevision_};
-            if (texel && nearestKey_ != key) {
-                const auto range = renderer_.visibleDepthRange();
-                nearestDepth_ = range ? std::optional<float>(range->first) : std::nullopt;
-                nearestKey_ = key;
-            }
-            return texel;
-        } catch (const vv::Error& e) {
-            static const log::Category category{"vv.gui"};
-            log::warning(category, std::string("probe failed: ") + e.what());
-            return std::nullopt;
-        }
-    };
-    const std::optional<render::ProbeSample> sample = read();
+    std::optional<render::ViewProbe> sample;
+    try {
+        sample = view_.probe(camera_, x, y);
+    } catch (const vv::Error& e) {
+        static const log::Category category{"vv.gui"};
+        log::warning(category, std::string("probe failed: ") + e.what());
+    }
     doneCurrent();
-    const std::size_t meshCount = scene_ ? scene_->meshes.size() : 0U;
-    if (!sample || sample->objectId == 0 || sample->objectId > meshCount + (volume_ ? 1U : 0U)) {
+    if (!sample) {
         return std::nullopt;
     }
     ProbeResult result;
     result.widgetPosition = position;
+    result.meshIndex = sample->meshIndex;
+    result.arrayName = QString::fromStdString(sample->arrayName);
+    result.unit = QString::fromStdString(sample->unit);
+    result.value = sample->value;
     result.linearDepth = sample->linearDepth;
-    result.depthBelowNearest =
-        std::max(0.0F, sample->linearDepth - nearestDepth_.value_or(sample->linearDepth));
+    result.depthBelowNearest = sample->depthBelowNearest;
     result.worldPosition = sample->worldPosition;
-    if (sample->objectId > meshCount) {
-        // The ray-cast volume (object id 1 + mesh count): position and depth, no value.
-        result.objectName = tr("Volume (iso-surface at %1)").arg(static_cast<double>(isoValue_));
-        result.value = std::numeric_limits<float>::quiet_NaN();
-        return result;
-    }
-    result.meshIndex = static_cast<int>(sample->objectId - 1U);
-    const scene::Mesh& mesh = scene_->meshes[static_cast<std::size_t>(result.meshIndex)];
-    result.objectName = QString::fromStdString(mesh.name);
-    // The array this object shows (its own choice or the scene's).
-    const std::string& shown = style_.arrayOf(static_cast<std::size_t>(result.meshIndex));
-    result.arrayName = QString::fromStdString(shown);
-    if (const scene::DataArray* array = shown.empty() ? nullptr : mesh.pointArray(shown)) {
-        result.unit = QString::fromStdString(array->unit);
-    }
-    result.value = shown.empty() ? std::numeric_limits<float>::quiet_NaN() : sample->value;
+    result.objectName = sample->meshIndex < 0
+                            ? tr("Volume (iso-surface at %1)").arg(static_cast<double>(isoValue()))
+                            : QString::fromStdString(
+                                  shown->meshes[static_cast<std::size_t>(sample->meshIndex)].name);
     return result;
 }
 

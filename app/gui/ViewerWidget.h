@@ -2,7 +2,6 @@
 #pragma once
 
 #include <QElapsedTimer>
-#include <QFuture>
 #include <QOpenGLWidget>
 #include <QPoint>
 #include <QSize>
@@ -12,13 +11,15 @@
 #include <cstddef>
 #include <memory>
 #include <optional>
-#include <stop_token>
+#include <vector>
 
+#include "gui/WorkerRun.h"
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
+#include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/MeshTopology.h"
 #include "vv/scene/Volume.h"
@@ -51,9 +52,13 @@ struct Measurement {
 [[nodiscard]] Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept;
 // --- end probe -------------------------------------------------------------
 
-/// The 3-D view: shows a Scene through the render graph (FrameRenderer:
-/// vessels with Blinn-Phong and an optional colour-mapped array, and the Void
-/// Space Surface behind them) with an orbit camera. The VSS is solved on a
+/// The 3-D view: shows a Scene through the view renderer the offscreen path
+/// uses too (render::ViewRenderer: vessels with Blinn-Phong and an optional
+/// colour-mapped array, and the Void Space Surface behind them) with an orbit
+/// camera. The widget keeps the input, the Qt plumbing (timers, overlays,
+/// tooltips, signals, the GL context) and the background jobs that make the
+/// simplified geometry and check the closures; the renderer keeps the scene
+/// state and the refinement policy (render::RefinementPolicy). The VSS is solved on a
 /// worker thread: until a new solve arrives the view shows the previous VSS
 /// (same size) or none, then repaints (during a drag only when the camera
 /// pauses: the next move's frame shows it anyway).
@@ -103,7 +108,7 @@ class ViewerWidget : public QOpenGLWidget {
     /// shared, never modified.
     void setScene(std::shared_ptr<const scene::Scene> scene);
     [[nodiscard]] const std::shared_ptr<const scene::Scene>& scene() const noexcept {
-        return scene_;
+        return view_.scene();
     }
     /// Ray casts `volume` as the iso-surface at `isoValue` after the scene's
     /// meshes (FrameRenderer::setVolume): the VSS, AO, cues and the probe
@@ -113,24 +118,30 @@ class ViewerWidget : public QOpenGLWidget {
     /// planes. The volume is shared, never modified.
     void setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue);
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
-        return volume_;
+        return view_.volume();
     }
-    [[nodiscard]] float isoValue() const noexcept { return isoValue_; }
+    [[nodiscard]] float isoValue() const noexcept { return view_.isoValue(); }
     /// The bounds of what is shown: the scene's and the volume's box.
-    [[nodiscard]] Aabb dataBounds() const noexcept;
+    [[nodiscard]] Aabb dataBounds() const noexcept { return view_.dataBounds(); }
 
     void setStyle(const render::MeshStyle& style);
-    [[nodiscard]] const render::MeshStyle& style() const noexcept { return style_; }
+    [[nodiscard]] const render::MeshStyle& style() const noexcept { return view_.style(); }
 
     /// The VSS: on/off, depth scale, p, solver, iso-lines, strengths.
     void setVssSettings(const render::VssSettings& settings);
-    [[nodiscard]] const render::VssSettings& vssSettings() const noexcept { return vss_; }
+    [[nodiscard]] const render::VssSettings& vssSettings() const noexcept {
+        return view_.displaySettings().vss;
+    }
     /// Ambient occlusion over vessels + VSS (on by default).
     void setAoSettings(const render::AoSettings& settings);
-    [[nodiscard]] const render::AoSettings& aoSettings() const noexcept { return ao_; }
+    [[nodiscard]] const render::AoSettings& aoSettings() const noexcept {
+        return view_.displaySettings().ao;
+    }
     /// The depth cue on the vessels themselves (none by default).
     void setVesselCue(const render::VesselCueSettings& cue);
-    [[nodiscard]] const render::VesselCueSettings& vesselCue() const noexcept { return cue_; }
+    [[nodiscard]] const render::VesselCueSettings& vesselCue() const noexcept {
+        return view_.displaySettings().cue;
+    }
     /// Legends of the scales in use (depth bottom-left, parameter bottom-right),
     /// painted over the frame; on by default.
     void setLegendsVisible(bool visible);
@@ -139,11 +150,13 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] const render::Legends& shownLegends() const noexcept;
     /// What the last frame showed of the VSS.
     [[nodiscard]] const render::VssFrameStatus& vssStatus() const noexcept {
-        return renderer_.vssStatus();
+        return view_.frameRenderer().vssStatus();
     }
     /// Progressive refinement on (default) or off (every frame asks for the exact VSS).
     void setProgressiveRefinement(bool on);
-    [[nodiscard]] bool progressiveRefinement() const noexcept { return progressive_; }
+    [[nodiscard]] bool progressiveRefinement() const noexcept {
+        return view_.refinement().progressive();
+    }
     /// How long after the last camera change the camera counts as stopped (ms).
     void setSettleDelay(int milliseconds);
     [[nodiscard]] int settleDelay() const noexcept { return settleDelayMs_; }
@@ -154,7 +167,9 @@ class ViewerWidget : public QOpenGLWidget {
     void setInteractiveScale(float scale);
     /// The scale moving frames render at; with a frame budget the next
     /// camera move takes the size the last one's timing chose.
-    [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
+    [[nodiscard]] float interactiveScale() const noexcept {
+        return view_.refinement().interactiveScale();
+    }
     /// Dynamic resolution while the camera moves: after each moving frame the
     /// interactive scale steps down (1, 0.84, 0.71, ... kMinInteractiveScale:
     /// ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
@@ -167,8 +182,8 @@ class ViewerWidget : public QOpenGLWidget {
     /// scale. Each moving frame then waits for the GL to finish (glFinish) to
     /// measure itself. Non-finite or negative values count as 0.
     void setFrameBudget(double milliseconds);
-    [[nodiscard]] double frameBudget() const noexcept { return frameBudgetMs_; }
-    static constexpr float kMinInteractiveScale = 0.25F;
+    [[nodiscard]] double frameBudget() const noexcept { return view_.refinement().frameBudget(); }
+    static constexpr float kMinInteractiveScale = render::RefinementPolicy::kMinInteractiveScale;
     /// Triangle budget of the simplified geometry drawn while the camera
     /// moves (default 60,000); 0 = always draw the full meshes. Applies to
     /// scenes set afterwards. A second, coarser copy (a third of the budget)
@@ -179,73 +194,87 @@ class ViewerWidget : public QOpenGLWidget {
     void setPreviewTriangles(std::size_t triangles) noexcept { previewTriangles_ = triangles; }
     [[nodiscard]] std::size_t previewTriangles() const noexcept { return previewTriangles_; }
     /// True once the simplified geometry of the current scene is ready.
-    [[nodiscard]] bool hasPreviewGeometry() const noexcept { return !previewScenes_.empty(); }
+    [[nodiscard]] bool hasPreviewGeometry() const noexcept { return view_.hasPreviewGeometry(); }
     /// Triangles of each simplified level, finest first (empty until ready).
-    [[nodiscard]] std::vector<std::size_t> previewLevelTriangles() const;
+    [[nodiscard]] std::vector<std::size_t> previewLevelTriangles() const {
+        return view_.previewLevelTriangles();
+    }
     /// The meshes the last frame drew: 0 = the scene's, k = simplified level k.
     [[nodiscard]] std::size_t lastGeometryLevel() const noexcept {
-        return renderer_.lastGeometryLevel();
+        return view_.frameRenderer().lastGeometryLevel();
     }
     /// MeshRenderer::setBackFaceCulling (on by default); off for comparisons.
-    void setBackFaceCulling(bool on) noexcept { renderer_.meshRenderer().setBackFaceCulling(on); }
+    void setBackFaceCulling(bool on) noexcept { view_.meshRenderer().setBackFaceCulling(on); }
     /// True once the closures of the current scene's meshes (checked on a
     /// worker thread after setScene()) are known; until then every mesh is
     /// drawn two-sided.
-    [[nodiscard]] bool surfaceClosuresKnown() const noexcept { return closuresKnown_; }
+    [[nodiscard]] bool surfaceClosuresKnown() const noexcept {
+        return view_.surfaceClosuresKnown();
+    }
     /// How many meshes the last frame's G-buffer drew with back-face culling.
     [[nodiscard]] std::size_t lastCulledMeshes() const noexcept {
-        return renderer_.meshRenderer().lastCulledMeshes();
+        return view_.meshRenderer().lastCulledMeshes();
     }
     /// True when the last frame drew the simplified geometry.
     [[nodiscard]] bool lastFrameSimplified() const noexcept {
-        return renderer_.lastFrameSimplified();
+        return view_.frameRenderer().lastFrameSimplified();
     }
     /// The size (device pixels) the passes of the last frame ran at.
     [[nodiscard]] QSize lastRenderSize() const noexcept { return lastRenderSize_; }
     /// How often settling started the exact solve directly from the last
     /// preview frame's depth (no frame drawn in between).
     [[nodiscard]] quint64 solvesRequestedOnSettle() const noexcept {
-        return solvesRequestedOnSettle_;
+        return view_.solvesRequestedOnSettle();
     }
     /// How often settling drew only the G-buffer and started the exact solve
     /// from it (FrameRenderer::prepareSolve), because the last preview frame
     /// had another size or the simplified meshes.
     [[nodiscard]] quint64 solvesPreparedOnSettle() const noexcept {
-        return solvesPreparedOnSettle_;
+        return view_.solvesPreparedOnSettle();
     }
     /// True while the camera moves (frames use the preview VSS).
-    [[nodiscard]] bool cameraMoving() const noexcept { return moving_; }
+    [[nodiscard]] bool cameraMoving() const noexcept { return view_.refinement().moving(); }
     /// True from the moment the camera settles until the frame with the
     /// exact VSS is on screen: those frames leave out the ambient occlusion
     /// (the slowest pass on software rasterisers) and FXAA, and the frame
     /// right after adds them, so the exact VSS shows as early as it can.
-    [[nodiscard]] bool occlusionDeferred() const noexcept { return deferOcclusion_; }
+    [[nodiscard]] bool occlusionDeferred() const noexcept {
+        return view_.refinement().occlusionDeferred();
+    }
     /// The worker's solve counters (submitted, completed, cancelled).
-    [[nodiscard]] render::SolveCounters solveCounters() const { return renderer_.solveCounters(); }
+    [[nodiscard]] render::SolveCounters solveCounters() const {
+        return view_.frameRenderer().solveCounters();
+    }
     /// The VSS height the last frame showed (GL row order; empty when none).
-    [[nodiscard]] Image<float> shownVssHeight() const { return renderer_.shownHeight(); }
+    [[nodiscard]] Image<float> shownVssHeight() const {
+        return view_.frameRenderer().shownHeight();
+    }
     /// The passes of the last frame (state, reason, CPU time).
     [[nodiscard]] const std::vector<render::PassInfo>& lastPasses() const noexcept {
-        return renderer_.lastPasses();
+        return view_.frameRenderer().lastPasses();
     }
     /// Benchmarks: when on, every frame waits for its GPU timers and keeps
     /// the per-pass CPU / GPU times (lastTimings()) and the wall time of
     /// paintGL (lastPaintMilliseconds()). Off by default: waiting for the
     /// timers stalls the pipeline on real GPUs.
-    void setRecordTimings(bool on) noexcept { recordTimings_ = on; }
+    void setRecordTimings(bool on) noexcept { view_.setRecordTimings(on); }
     /// The last frame's per-pass times (empty unless setRecordTimings(true)).
     [[nodiscard]] const std::vector<render::GlPassTiming>& lastTimings() const noexcept {
-        return timings_;
+        return view_.lastTimings();
     }
     /// Wall time of the last paintGL in milliseconds (with setRecordTimings(true)).
     [[nodiscard]] double lastPaintMilliseconds() const noexcept { return paintMilliseconds_; }
     /// Wall time of the last settle (the exact solve's request or the
     /// G-buffer it needs; with setRecordTimings(true)).
-    [[nodiscard]] double lastSettleMilliseconds() const noexcept { return settleMilliseconds_; }
+    [[nodiscard]] double lastSettleMilliseconds() const noexcept {
+        return view_.lastSettleMilliseconds();
+    }
 
     /// Background colour, sRGB in [0, 1].
     void setBackground(const glm::vec3& color);
-    [[nodiscard]] const glm::vec3& background() const noexcept { return background_; }
+    [[nodiscard]] const glm::vec3& background() const noexcept {
+        return view_.displaySettings().background;
+    }
 
     [[nodiscard]] const render::Camera& camera() const noexcept { return camera_; }
     /// Replaces the camera (its viewport follows the widget). Until the next
@@ -255,7 +284,7 @@ class ViewerWidget : public QOpenGLWidget {
 
     /// The colour-map range of the last frame; nullopt when no array is shown.
     [[nodiscard]] std::optional<std::pair<float, float>> shownRange() const noexcept {
-        return shownRange_;
+        return view_.shownRange();
     }
 
     /// Non-empty when OpenGL could not be used; the reason.
@@ -327,83 +356,46 @@ class ViewerWidget : public QOpenGLWidget {
     /// Asks for a new frame: paintGL draws only after such a request (or a
     /// resize / new context); other repaints keep the last frame.
     void requestFrame();
-    /// Dynamic resolution: the next moving frame's scale after one that took
-    /// `milliseconds` from paintGL to the swap (setFrameBudget).
-    void adaptInteractiveScale(double milliseconds);
-    QElapsedTimer frameClock_;  ///< started with the widget
-    /// frameClock_ at the start of a camera-move frame that measures itself
-    /// for the frame budget, until its swap (frameSwapped).
-    std::optional<qint64> budgetFrameStart_;
     /// A camera change by the user: preview quality until it settles.
     void cameraChanged();
+    /// The camera stopped: the exact VSS is asked for (ViewRenderer::settle).
     void settle();
-    /// Starts building the simplified geometry of scene_ (cancelling an older build).
+    /// A solve arrived (on the GUI thread): the frame that shows it.
+    void solveArrived();
+    /// Starts building the simplified geometry of the scene on a worker.
     void startPreviewGeometry();
-    /// Starts scene::surfaceClosure of scene_'s meshes on a worker thread.
+    /// Starts scene::surfaceClosures of the scene's meshes on a worker.
     void startClosureCheck();
-    void cancelPreviewGeometry();
-    /// What the next frame renders with (preview settings while moving).
-    [[nodiscard]] render::FrameSettings frameSettings() const;
+    /// The device pixels of the widget, drawn into its framebuffer.
     [[nodiscard]] render::FrameTarget frameTarget() const;
 
-    render::FrameRenderer renderer_;
-    render::VssSettings vss_;
-    render::AoSettings ao_;
-    render::VesselCueSettings cue_;
+    /// Scene, style, display settings, refinement; the GPU side of the view.
+    render::ViewRenderer view_;
+    render::Camera camera_;
+    bool autoFit_ = true;  ///< refit on resize until the user moves the camera
     bool legendsVisible_ = true;
     /// A transparent child over the GL frame that paints the legends (so that
     /// grabFramebuffer() keeps returning the frame alone).
     LegendOverlay* legendOverlay_ = nullptr;
-    std::uint64_t sceneRevision_ = 0;
-    render::Camera camera_;
-    render::MeshStyle style_;
-    std::shared_ptr<const scene::Scene> scene_;
-    std::shared_ptr<const scene::Volume> volume_;  ///< ray cast after the meshes, or null
-    float isoValue_ = 0.0F;
-    using PreviewScenes = std::vector<std::shared_ptr<const scene::Scene>>;
-    /// One scene::SurfaceClosure per mesh of a scene.
-    using Closures = std::vector<scene::SurfaceClosure>;
-    /// What the background job makes: the simplified copies and their closures.
-    struct PreviewGeometry {
-        PreviewScenes scenes;
-        std::vector<Closures> closures;
-    };
-    /// The second simplified level has previewTriangles_ / this many triangles.
-    static constexpr std::size_t kPreviewLevelRatio = 3;
-    PreviewScenes previewScenes_;            ///< simplified copies of scene_, finest first; or none
-    std::vector<Closures> previewClosures_;  ///< theirs, same order
-    bool previewDirty_ = false;              ///< previewScenes_ not uploaded yet
-    std::size_t previewTriangles_ = 60000;
-    std::stop_source previewStop_;
-    QFuture<PreviewGeometry> previewFuture_;
-    /// scene_'s closures (back-face culling), checked on a worker thread.
-    Closures sceneClosures_;
-    bool closuresKnown_ = false;  ///< sceneClosures_ belong to scene_
-    bool closuresDirty_ = false;  ///< known but not handed to the renderer yet
-    QFuture<Closures> closureFuture_;
-    glm::vec3 background_{0.13F, 0.14F, 0.16F};
-    bool sceneDirty_ = false;
-    bool autoFit_ = true;  ///< refit on resize until the user moves the camera
-    bool styleDirty_ = true;
     QString error_;
     QString glDescription_;
     quint64 framesWithScene_ = 0;
-    std::optional<std::pair<float, float>> shownRange_;
+    QSize lastRenderSize_;    ///< of the last frame paintGL drew
+    bool frameDirty_ = true;  ///< a new frame was requested (requestFrame)
     enum class Drag { None, Rotate, Pan };
     Drag drag_ = Drag::None;
     QPointF lastMouse_;
-    bool progressive_ = true;
-    bool moving_ = false;
-    bool frameDirty_ = true;       ///< a new frame was requested (requestFrame)
-    bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO, no FXAA
+
+    // Background jobs: the simplified copies (and their closures) and the
+    // scene's closures, each the newest run's result only.
+    /// The second simplified level has previewTriangles_ / this many triangles.
+    static constexpr std::size_t kPreviewLevelRatio = 3;
+    std::size_t previewTriangles_ = 60000;
+    LatestRun<render::PreviewGeometry> previewRun_{this};
+    LatestRun<std::vector<scene::SurfaceClosure>> closureRun_{this};
+
+    // Refinement timing: the settle timer, preview arrivals, the frame budget.
     int settleDelayMs_ = 150;
-    float interactiveScale_ = 0.5F;
-    float nextInteractiveScale_ = 0.5F;  ///< dynamic resolution: from the next camera move on
-    double frameBudgetMs_ = 30.0;
-    bool cameraMoved_ = false;  ///< the camera changed since the last frame
-    QSize lastRenderSize_;
-    quint64 solvesRequestedOnSettle_ = 0;
-    quint64 solvesPreparedOnSettle_ = 0;
     QTimer* settleTimer_ = nullptr;
     /// While the camera moves, a preview solve's arrival draws a frame only
     /// when no camera move drew one within this delay (the camera paused):
@@ -411,10 +403,12 @@ class ViewerWidget : public QOpenGLWidget {
     /// frame per arrival would double the work per mouse move.
     static constexpr int kPreviewArrivalDelayMs = 60;
     QTimer* previewArrivalTimer_ = nullptr;
-    bool recordTimings_ = false;
-    std::vector<render::GlPassTiming> timings_;
+    QElapsedTimer frameClock_;  ///< started with the widget
+    /// frameClock_ at the start of a camera-move frame that measures itself
+    /// for the frame budget, until its swap (frameSwapped).
+    std::optional<qint64> budgetFrameStart_;
     double paintMilliseconds_ = 0.0;
-    double settleMilliseconds_ = 0.0;
+
     // --- Probe and measurement -------------------------------------------
     void hoverProbeNow();
     /// Handles a left-button release: picks when it was a click.
@@ -424,9 +418,6 @@ class ViewerWidget : public QOpenGLWidget {
     QTimer* hoverTimer_ = nullptr;
     QPointF pressPosition_;
     bool pressMoved_ = false;
-    /// visibleDepthRange() of the frame framesWithScene_ / sceneRevision_.
-    std::optional<std::pair<quint64, std::uint64_t>> nearestKey_;
-    std::optional<float> nearestDepth_;
     // --- end probe -------------------------------------------------------
 };
 

@@ -5,7 +5,7 @@
 #include <QWidget>
 #include <cstddef>
 
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 
 class QComboBox;
 class QLabel;

@@ -15,7 +15,7 @@
 
 #include "gui/ViewerWidget.h"
 #include "gui/panels/PanelUtil.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/render/ViewPresets.h"
 
 namespace vv::gui::panels {

@@ -18,7 +18,7 @@
 #include "gui/panels/HistogramWidget.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/ColorMap.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 
 namespace vv::gui::panels {
 

@@ -27,6 +27,7 @@
 #include "passes/VssShadingPass.h"
 #include "passes/VssSolvePass.h"
 #include "vv/core/Error.h"
+#include "vv/core/Hash.h"
 #include "vv/core/Image.h"
 #include "vv/render/GlFramebufferCache.h"
 #include "vv/render/RenderGraphCache.h"
@@ -35,25 +36,6 @@
 namespace vv::render {
 
 namespace {
-
-/// FNV-1a over raw bytes.
-class Hasher {
-  public:
-    void bytes(const void* data, std::size_t size) noexcept {
-        const auto* p = static_cast<const unsigned char*>(data);
-        for (std::size_t i = 0; i < size; ++i) {
-            hash_ = (hash_ ^ p[i]) * 1099511628211ULL;
-        }
-    }
-    template <class T>
-    void value(const T& v) noexcept {
-        bytes(&v, sizeof v);
-    }
-    [[nodiscard]] std::uint64_t result() const noexcept { return hash_; }
-
-  private:
-    std::uint64_t hash_ = 14695981039346656037ULL;
-};
 
 /// Scene units per pixel per unit of depth of `camera` at a render height of
 /// `height` pixels; a tile (Camera::window) keeps the full view's pixel size:
@@ -142,15 +124,19 @@ vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept 
 }
 
 std::uint64_t sceneFingerprint(const scene::Scene& scene) noexcept {
+    // bulk(): a scene's arrays are megabytes, hashed on every offscreen render.
     Hasher h;
     h.value(scene.meshes.size());
     for (const auto& mesh : scene.meshes) {
-        h.value(mesh.positions.size());
-        h.bytes(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
-        h.value(mesh.indices.size());
-        h.bytes(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
-        h.value(mesh.normals.size());
-        h.bytes(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+        h.bulk(mesh.positions.data(), mesh.positions.size() * sizeof(glm::vec3));
+        h.bulk(mesh.indices.data(), mesh.indices.size() * sizeof(std::uint32_t));
+        h.bulk(mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+        // The per-vertex values the renderer uploads from the point arrays.
+        h.value(mesh.pointArrays.size());
+        for (const scene::DataArray& array : mesh.pointArrays) {
+            h.value(array.name.size()).text(array.name).value(array.components);
+            h.bulk(array.values.data(), array.values.size() * sizeof(float));
+        }
     }
     return h.result();
 }

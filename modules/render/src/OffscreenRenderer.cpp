@@ -96,33 +96,33 @@ void OffscreenRenderer::createContext() {
                           versionText(got, context_->isOpenGLES()));
     }
     CurrentContext current(*context_, *surface_);
-    renderer_ = std::make_unique<FrameRenderer>();
-    renderer_->initialize();
-    description_ = renderer_->meshRenderer().glDescription();
+    view_ = std::make_unique<ViewRenderer>();
+    view_->initialize();
+    description_ = view_->meshRenderer().glDescription();
 }
 
 OffscreenRenderer::~OffscreenRenderer() {
-    if (context_ && surface_ != nullptr && renderer_ && context_->makeCurrent(surface_)) {
+    if (context_ && surface_ != nullptr && view_ && context_->makeCurrent(surface_)) {
         output_.reset();
-        renderer_->release();
+        view_->release();
         context_->doneCurrent();
     }
-    renderer_.reset();
+    view_.reset();
     context_.reset();
     ownSurface_.reset();
 }
 
 const std::vector<PassInfo>& OffscreenRenderer::lastPasses() const noexcept {
-    return renderer_->lastPasses();
+    return view_->frameRenderer().lastPasses();
 }
 
 const std::optional<std::pair<double, double>>& OffscreenRenderer::lastCueDepthRange()
     const noexcept {
-    return renderer_->lastCueDepthRange();
+    return view_->frameRenderer().lastCueDepthRange();
 }
 
 const VssFrameStatus& OffscreenRenderer::vssStatus() const noexcept {
-    return renderer_->vssStatus();
+    return view_->frameRenderer().vssStatus();
 }
 
 namespace {
@@ -146,20 +146,25 @@ void checkSize(const OffscreenOptions& options) {
     }
 }
 
-FrameSettings frameSettings(const OffscreenOptions& options) {
-    FrameSettings settings;
-    settings.background = options.background;
-    settings.vss = options.vss;
-    settings.cue = options.cue;
-    settings.ao = options.ao;
-    settings.antialiasing = options.antialiasing;
-    return settings;
-}
+/// Detaches the caller's scene from the view when a render ends, also by an
+/// exception: only its meshes on the GPU stay for the next render.
+class SceneAttachment {
+  public:
+    explicit SceneAttachment(ViewRenderer& view) : view_(view) {}
+    ~SceneAttachment() { view_.detachScene(); }
+    SceneAttachment(const SceneAttachment&) = delete;
+    SceneAttachment& operator=(const SceneAttachment&) = delete;
+    SceneAttachment(SceneAttachment&&) = delete;
+    SceneAttachment& operator=(SceneAttachment&&) = delete;
+
+  private:
+    ViewRenderer& view_;
+};
 
 }  // namespace
 
 Image<float> OffscreenRenderer::lastLinearDepth() const {
-    return topRowFirst(renderer_->lastSolvedDepth());
+    return topRowFirst(view_->frameRenderer().lastSolvedDepth());
 }
 
 Camera OffscreenRenderer::cameraFor(const scene::Scene& scene, const OffscreenOptions& options) {
@@ -189,20 +194,23 @@ Camera OffscreenRenderer::cameraFor(const scene::Scene& scene, const OffscreenOp
 
 Camera OffscreenRenderer::setUpScene(const scene::Scene& scene, const OffscreenOptions& options) {
     const Camera camera = cameraFor(scene, options);
-    // The shared pointer does not own the scene: it only lives for this call.
+    // The shared pointer does not own the scene: it is attached for this
+    // render only (SceneAttachment); the view keeps just its GPU meshes, for
+    // the next render of the same content (tiles, report views).
     const std::shared_ptr<const scene::Scene> view(std::shared_ptr<const scene::Scene>(), &scene);
-    MeshRenderer& meshes = renderer_->meshRenderer();
-    meshes.setScene(view);  // checks the indices before surfaceClosures reads them
-    const std::uint64_t fingerprint = sceneFingerprint(scene);
-    if (!closures_ || closures_->first != fingerprint) {
-        // Once per scene content, not once per render (tiles, report views).
-        closures_.emplace(fingerprint, scene::surfaceClosures(scene));
+    view_->setScene(view, sceneFingerprint(scene));
+    if (view_->uploadScene()) {  // checks the indices before surfaceClosures reads them
+        // Once per scene content, not once per render.
+        view_->setSurfaceClosures(scene::surfaceClosures(scene));
     }
-    meshes.setSurfaceClosures(0, closures_->second);
-    meshes.setStyle(options.style);
-    renderer_->setSceneRevision(fingerprint);
+    view_->setStyle(options.style);
+    view_->setBackground(options.background);
+    view_->setVssSettings(options.vss);
+    view_->setVesselCue(options.cue);
+    view_->setAoSettings(options.ao);
+    view_->setAntialiasing(options.antialiasing);
     // Volume depth source: ray cast after the meshes; its box joins the bounds.
-    renderer_->setVolume(options.volume, options.isoValue);
+    view_->setVolume(options.volume, options.isoValue);
     return camera;
 }
 
@@ -210,47 +218,43 @@ Image<float> OffscreenRenderer::renderDepth(const scene::Scene& scene,
                                             const OffscreenOptions& options) {
     checkSize(options);
     CurrentContext current(*context_, *surface_);
+    const SceneAttachment attachment(*view_);
     const Camera camera = setUpScene(scene, options);
-    Image<float> depth;
-    try {
-        depth = renderer_->renderDepth(camera, frameSettings(options),
-                                       FrameTarget{0, options.width, options.height});
-    } catch (...) {
-        renderer_->meshRenderer().setScene(nullptr);
-        throw;
-    }
-    renderer_->meshRenderer().setScene(nullptr);
-    return topRowFirst(depth);
+    return topRowFirst(view_->renderDepth(camera, FrameTarget{0, options.width, options.height}));
 }
 
 void OffscreenRenderer::setExternalVss(std::optional<ExternalVss> external) {
-    renderer_->setExternalVss(std::move(external));
+    view_->frameRenderer().setExternalVss(std::move(external));
 }
 
 void OffscreenRenderer::clearCache() {
     CurrentContext current(*context_, *surface_);
     output_.reset();
-    renderer_->clearCache();
+    view_->frameRenderer().clearCache();
 }
 
 void OffscreenRenderer::setBackFaceCulling(bool enabled) {
     // The G-buffer is meant to come out the same either way, so no pass
     // depends on the switch: forget the cached ones, so the next render draws.
     clearCache();
-    renderer_->meshRenderer().setBackFaceCulling(enabled);
+    view_->meshRenderer().setBackFaceCulling(enabled);
+}
+
+std::uint64_t OffscreenRenderer::sceneUploads() const noexcept {
+    return view_->sceneUploads();
 }
 
 std::size_t OffscreenRenderer::lastCulledMeshes() const noexcept {
-    return renderer_->meshRenderer().lastCulledMeshes();
+    return view_->meshRenderer().lastCulledMeshes();
 }
 
 const std::string& OffscreenRenderer::lastGraphText() const noexcept {
-    return renderer_->lastGraphText();
+    return view_->frameRenderer().lastGraphText();
 }
 
 std::vector<GlPassTiming> OffscreenRenderer::lastTimings() {
     CurrentContext current(*context_, *surface_);
-    return renderer_->lastTimings();
+    return view_->frameRenderer().lastTimings();
 }
 
 int OffscreenRenderer::maxRenderSide() {
@@ -278,18 +282,11 @@ QImage OffscreenRenderer::render(const scene::Scene& scene, const OffscreenOptio
         output_ = std::make_shared<GlTexture>(*gl, descriptor);
     }
 
+    const SceneAttachment attachment(*view_);
     const Camera camera = setUpScene(scene, options);
-    MeshRenderer& meshes = renderer_->meshRenderer();
-    const FrameSettings settings = frameSettings(options);
-    try {
-        renderer_->render(camera, settings,
-                          FrameTarget{output_->framebuffer(), options.width, options.height});
-    } catch (...) {
-        meshes.setScene(nullptr);
-        throw;
-    }
-    lastRange_ = meshes.effectiveRange();
-    meshes.setScene(nullptr);  // free the GPU copies; the scene is not ours to keep
+    view_->render(camera, FrameTarget{output_->framebuffer(), options.width, options.height});
+    lastRange_ = view_->shownRange();
+    const Legends legends = options.legends ? view_->legends() : Legends{};
 
     QImage image(options.width, options.height, QImage::Format_RGBA8888);
     if (image.isNull()) {
@@ -306,8 +303,7 @@ QImage OffscreenRenderer::render(const scene::Scene& scene, const OffscreenOptio
     // GL rows start at the bottom.
     QImage result = image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
     if (options.legends) {
-        paintLegends(result, legendsFor(&scene, options.style, lastRange_, settings,
-                                        renderer_->vssStatus(), renderer_->lastCueDepthRange()));
+        paintLegends(result, legends);
     }
     return result;
 }

@@ -22,7 +22,7 @@
 #include "vv/Version.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::report {

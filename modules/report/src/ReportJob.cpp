@@ -8,7 +8,7 @@
 #include <utility>
 
 #include "vv/dicom/Dicom.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/report/DicomExport.h"
 #include "vv/report/DicomSource.h"
 #include "vv/report/ViewExport.h"

@@ -14,7 +14,7 @@
 #include "SolveWorker.h"
 #include "vv/core/Image.h"
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/render/RenderGraph.h"
 
 namespace vv::render::board {

@@ -6,7 +6,7 @@
 #include "passes/FrameResources.h"
 #include "passes/PassContext.h"
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/render/RenderGraph.h"
 
 namespace vv::render {

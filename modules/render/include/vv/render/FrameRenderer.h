@@ -14,6 +14,7 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/GlResources.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/RenderGraph.h"
@@ -25,97 +26,6 @@
 class QOpenGLContext;
 
 namespace vv::render {
-
-/// How the Void Space Surface is computed and shaded.
-struct VssSettings {
-    bool enabled = true;
-    colormaps::DepthScale scale = colormaps::DepthScale::Chromadepth;
-    /// Solver, p, tolerance (fast solver by default).
-    vss::SolverOptions solver;
-    int isoLines = 8;               ///< N iso-lines at z' = k / N; 0 = none
-    float isoLineWidth = 1.5F;      ///< pixels
-    float isoLineStrength = 0.55F;  ///< 0..1
-    float lighting = 1.0F;          ///< 0 = flat scale colours, 1 = full Blinn-Phong
-    float opacity = 1.0F;           ///< 0..1, the VSS over the background
-    /// Progressive refinement: a preview solve (while the camera moves) uses
-    /// the fast solver with at least `previewTolerance`, so it finishes sooner;
-    /// the exact solve (preview = false) uses `solver` as given.
-    bool preview = false;
-    double previewTolerance = 8.0 / 255.0;
-    /// The depth range z is normalised over (VSS.md): the visible vessels'
-    /// min / max (default: the scale adapts to each view), or a fixed range
-    /// in scene units (the colours keep their depth across views; depths
-    /// outside clamp). Bad fixed ranges throw InvalidArgumentError at render().
-    vss::DepthRange range;
-};
-
-/// The solver options a VSS solve with `settings` uses (preview or exact).
-[[nodiscard]] vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept;
-
-/// A depth cue on the vessels themselves (pass 5, for comparison with the
-/// VSS). Its depth range is the VSS's dmin / dmax when a VSS is shown, else
-/// the visible vessels' linear depth range.
-struct VesselCueSettings {
-    VesselCue cue = VesselCue::None;
-    float fogStrength = 0.8F;      ///< Fog: blend towards the background at the far end
-    float fresnelExponent = 1.0F;  ///< Fresnel: k in (1 - |n.v|)^k
-};
-
-/// Screen-space ambient occlusion over the vessels and the VSS ("ssao" and
-/// "ao-blur" passes): darkens the VSS next to the vessels (and the vessels
-/// half as much), so they look anchored on the surface.
-struct AoSettings {
-    bool enabled = true;
-    float radius = 3.0F;    ///< scene units (mm for the demo)
-    float strength = 0.8F;  ///< 0..1: how much full occlusion darkens
-};
-
-/// Everything a frame needs besides the camera, the scene and the mesh style
-/// (which lives in FrameRenderer::meshRenderer()).
-struct FrameSettings {
-    glm::vec3 background{0.13F, 0.14F, 0.16F};  ///< sRGB
-    VssSettings vss;
-    VesselCueSettings cue;
-    AoSettings ao;
-    /// FXAA on the composited frame ("fxaa" pass, last).
-    bool antialiasing = true;
-    /// Render size relative to the target, in [0.1, 1]: below 1 every pass
-    /// (G-buffer, solve, shading) runs at the reduced size and the "fxaa"
-    /// pass (always run then) upscales into the target with bilinear taps.
-    /// For interactive frames on slow rasterisers; 1 = full resolution.
-    float resolutionScale = 1.0F;
-    /// Draw the G-buffer from one of the mesh renderer's preview scenes
-    /// (simplified copies, MeshRenderer::setPreviewScenes) when it has any,
-    /// the level chosen for the render size (MeshRenderer::previewLevelFor:
-    /// about one triangle per kPixelsPerPreviewTriangle pixels): for frames
-    /// while the camera moves, where triangle count, not pixels, bounds the
-    /// frame time of software rasterisers. The VSS of such a frame is solved on that
-    /// geometry's depth (a preview, never cached as the exact one).
-    bool simplifiedGeometry = false;
-};
-
-/// The framebuffer a frame is drawn into: `framebuffer` (0 = the default one)
-/// of width x height device pixels.
-struct FrameTarget {
-    unsigned framebuffer = 0;
-    int width = 1;
-    int height = 1;
-};
-
-/// What the VSS of the last frame was.
-struct VssFrameStatus {
-    bool shown = false;    ///< a VSS was drawn
-    bool current = false;  ///< it belongs to this frame's view (not a previous one)
-    bool pending = false;  ///< a solve for this frame's view is still running
-    double dmin = 0.0;     ///< its depth range in scene units
-    double dmax = 0.0;
-    double solveMilliseconds = 0.0;  ///< wall time of the solve that made it
-    bool preview = false;            ///< the shown VSS is a preview solve (VssSettings::preview)
-    /// The shown solve's guaranteed bound on |z' - z'_exact| (its solver's
-    /// errorBound(): 0 for exact solvers, the tolerance for fast ones); NaN
-    /// when the solver gives none (the paper's step, k > 1) or no VSS is shown.
-    double errorBound = std::numeric_limits<double>::quiet_NaN();
-};
 
 /// Asynchronous solves so far (FrameRenderer::solveCounters()).
 struct SolveCounters {
@@ -156,8 +66,10 @@ struct ExternalVss {
     std::optional<std::pair<double, double>> visibleRange;
 };
 
-/// A content hash of a scene's geometry (positions and indices of every
-/// mesh), for the render graph's caching when a scene object is not kept.
+/// A content hash of what a scene draws: positions, normals and indices of
+/// every mesh and its point arrays (names, components, values), for the
+/// render graph's caching and re-using a scene's meshes on the GPU when the
+/// scene object is not kept (ViewRenderer::setScene).
 [[nodiscard]] std::uint64_t sceneFingerprint(const scene::Scene& scene) noexcept;
 
 /// Renders a frame through the render graph (ARCHITECTURE.md, "How a frame

@@ -12,7 +12,7 @@
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/scene/Mesh.h"
 
 class QFontMetricsF;

@@ -12,7 +12,8 @@
 
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshRenderer.h"
+#include "vv/render/MeshStyle.h"
+#include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/MeshTopology.h"
 
@@ -60,11 +61,15 @@ struct OffscreenOptions {
 };
 
 /// Renders scenes into images without a window: its own OpenGL 4.1 core
-/// context on a QOffscreenSurface and the same FrameRenderer (render graph:
-/// G-buffer, VSS solve, VSS shading, composite) as the viewer, solving the
-/// VSS synchronously. The graph's cache lives across render() calls, so a
-/// second render of the same scene and view re-runs only what changed
-/// (e.g. a new colour scale re-shades but does not re-solve).
+/// context on a QOffscreenSurface and the same ViewRenderer (scene upload,
+/// style, closures; its FrameRenderer's render graph: G-buffer, VSS solve,
+/// VSS shading, composite) as the viewer, solving the VSS synchronously.
+/// The graph's cache lives across render() calls, so a second render of the
+/// same scene and view re-runs only what changed (e.g. a new colour scale
+/// re-shades but does not re-solve). So do the scene's meshes on the GPU:
+/// render() attaches the caller's scene for the call only, and a later
+/// render of a scene with the same content (sceneFingerprint) — the tiles of
+/// an export, a report's second view — uploads nothing again.
 ///
 /// Needs a QGuiApplication. A renderer is created, used and destroyed on one
 /// thread: its OpenGL context belongs to that thread. The default
@@ -119,6 +124,10 @@ class OffscreenRenderer {
     /// Forgets the cached passes and frees their textures (GPU memory).
     void clearCache();
 
+    /// How often a scene's meshes were uploaded: once per scene content
+    /// (sceneFingerprint), not once per render.
+    [[nodiscard]] std::uint64_t sceneUploads() const noexcept;
+
     /// MeshRenderer::setBackFaceCulling for the following renders (on by default).
     void setBackFaceCulling(bool enabled);
     /// MeshRenderer::lastCulledMeshes of the last render's G-buffer.
@@ -159,19 +168,18 @@ class OffscreenRenderer {
   private:
     /// Creates the context on `surface_` and the frame renderer.
     void createContext();
-    /// Hands `scene` and the options' style and volume to the frame renderer
-    /// (context current); returns the camera.
+    /// Attaches `scene` to the view (uploading its meshes when its content is
+    /// new) with the options' style, display settings and volume (context
+    /// current; detach it again after the render); returns the camera.
     Camera setUpScene(const scene::Scene& scene, const OffscreenOptions& options);
 
     std::unique_ptr<QOffscreenSurface> ownSurface_;  ///< null with a borrowed surface
     QOffscreenSurface* surface_ = nullptr;
     std::unique_ptr<QOpenGLContext> context_;
-    std::unique_ptr<FrameRenderer> renderer_;
+    std::unique_ptr<ViewRenderer> view_;
     std::shared_ptr<GlTexture> output_;
     std::string description_;
     std::optional<std::pair<float, float>> lastRange_;
-    /// The last scene's sceneFingerprint and scene::surfaceClosures.
-    std::optional<std::pair<std::uint64_t, std::vector<scene::SurfaceClosure>>> closures_;
 };
 
 }  // namespace vv::render

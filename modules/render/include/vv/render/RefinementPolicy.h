@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <array>
+#include <cstddef>
+
+#include "vv/render/FrameSettings.h"
+
+namespace vv::render {
+
+/// Progressive refinement of an interactive view, as plain logic (no GL, no
+/// timers): the caller tells it what happens — the camera moved, the camera
+/// settled, a frame was drawn, a moving frame took so long — and asks it
+/// what the next frame is drawn with.
+///
+///  - Still: frames use the display settings as they are.
+///  - Moving (a camera change with progressive refinement on, until
+///    settle()): frames ask for a preview solve (VssSettings::preview), skip
+///    the ambient occlusion and FXAA, draw the simplified geometry and run
+///    at interactiveScale() of the full size (upscaled into the target).
+///  - Settled (from settle() until a frame shows the exact VSS, or no VSS
+///    at all): frames leave out the occlusion and FXAA, so the exact VSS
+///    shows as early as it can; the frame that shows it asks for one more
+///    frame, which adds them (Still again).
+///
+/// Dynamic resolution (a frame budget > 0): each moving frame's measured
+/// time steps the scale of the next camera move's frames through
+/// kScaleSteps — down when it took over 1.15 x the budget, up when under
+/// 0.6 x; in between it holds (a preview VSS shows only at the size it was
+/// solved at, so the size changes only between moves).
+class RefinementPolicy {
+  public:
+    enum class Phase { Still, Moving, Settled };
+
+    /// The scales dynamic resolution steps through, each ~0.84 of the one
+    /// before (~0.7 of its pixels), down to kMinInteractiveScale.
+    static constexpr std::array<float, 9> kScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F, 0.5F,
+                                                         0.42F, 0.35F, 0.3F,  0.25F};
+    static constexpr float kMinInteractiveScale = kScaleSteps.back();
+
+    [[nodiscard]] Phase phase() const noexcept;
+    /// True while the camera moves (frames use the preview VSS).
+    [[nodiscard]] bool moving() const noexcept { return moving_; }
+    /// True from settle() until the frame with the exact VSS is drawn.
+    [[nodiscard]] bool occlusionDeferred() const noexcept { return deferOcclusion_; }
+
+    /// Progressive refinement on (default) or off: off, camera changes never
+    /// make the view move (every frame asks for the exact VSS). Turning it
+    /// off does not settle a moving view: call settle() then.
+    void setProgressive(bool on) noexcept { progressive_ = on; }
+    [[nodiscard]] bool progressive() const noexcept { return progressive_; }
+
+    /// Fixes the scale of moving frames to `scale`, clamped to [0.1, 1]
+    /// (non-finite: 1), and turns the frame budget off.
+    void setInteractiveScale(float scale) noexcept;
+    /// The scale moving frames render at (with a budget: the one the last
+    /// camera move chose, until the next move takes the newest choice).
+    [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
+    /// The frame budget in milliseconds (default 30); 0 = a fixed scale.
+    /// Non-finite or negative values count as 0.
+    void setFrameBudget(double milliseconds) noexcept;
+    [[nodiscard]] double frameBudget() const noexcept { return frameBudgetMs_; }
+
+    /// The user changed the camera. Returns true when the view now moves
+    /// (progressive refinement on): the caller (re)starts its settle timer.
+    /// With a budget, the move takes the scale the last measurement chose.
+    bool cameraMoved() noexcept;
+    /// The camera stopped (button released, settle timer). Returns true when
+    /// the view was moving: it is Settled now, and the caller starts the
+    /// exact solve (ViewRenderer::settle) or draws a frame; false changes nothing.
+    bool settle() noexcept;
+
+    /// The settings of the next frame: `display` adjusted for the phase.
+    [[nodiscard]] FrameSettings frameSettings(const FrameSettings& display) const noexcept;
+
+    /// What follows a drawn frame (frameDrawn()).
+    struct AfterFrame {
+        /// A moving frame that showed a camera change with a budget set:
+        /// measure its time (to the swap) and hand it to frameMeasured().
+        bool measure = false;
+        /// The frame showed a camera change (so it showed the newest preview).
+        bool showedCameraMove = false;
+        /// The exact VSS (or none) is on screen after settling: draw one more
+        /// frame, which adds the occlusion and FXAA.
+        bool occlusionFrame = false;
+    };
+    /// A frame drawn with frameSettings() showed a VSS with `status`.
+    AfterFrame frameDrawn(const VssFrameStatus& status) noexcept;
+    /// A measured moving frame took `milliseconds` (drawing to the swap):
+    /// chooses the scale of the next camera move.
+    void frameMeasured(double milliseconds) noexcept;
+    /// The scale the next camera move will take.
+    [[nodiscard]] float nextInteractiveScale() const noexcept { return nextInteractiveScale_; }
+
+  private:
+    bool progressive_ = true;
+    bool moving_ = false;
+    bool cameraMoved_ = false;     ///< the camera changed since the last frame
+    bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO, no FXAA
+    float interactiveScale_ = 0.5F;
+    float nextInteractiveScale_ = 0.5F;
+    double frameBudgetMs_ = 30.0;
+};
+
+}  // namespace vv::render

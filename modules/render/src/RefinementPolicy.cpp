@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/render/RefinementPolicy.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vv::render {
+
+RefinementPolicy::Phase RefinementPolicy::phase() const noexcept {
+    if (moving_) {
+        return Phase::Moving;
+    }
+    return deferOcclusion_ ? Phase::Settled : Phase::Still;
+}
+
+void RefinementPolicy::setInteractiveScale(float scale) noexcept {
+    frameBudgetMs_ = 0.0;  // a fixed scale
+    interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
+    nextInteractiveScale_ = interactiveScale_;
+}
+
+void RefinementPolicy::setFrameBudget(double milliseconds) noexcept {
+    frameBudgetMs_ = std::isfinite(milliseconds) ? std::max(milliseconds, 0.0) : 0.0;
+}
+
+bool RefinementPolicy::cameraMoved() noexcept {
+    if (!progressive_) {
+        return false;
+    }
+    moving_ = true;
+    cameraMoved_ = true;  // this frame may set the next move's size
+    if (frameBudgetMs_ > 0.0) {
+        interactiveScale_ = nextInteractiveScale_;
+    }
+    return true;
+}
+
+bool RefinementPolicy::settle() noexcept {
+    if (!moving_) {
+        return false;
+    }
+    moving_ = false;
+    deferOcclusion_ = true;  // the exact VSS first, the occlusion in the frame after
+    return true;
+}
+
+FrameSettings RefinementPolicy::frameSettings(const FrameSettings& display) const noexcept {
+    FrameSettings settings = display;
+    if (moving_) {
+        // Preview while the camera moves: a quicker solve, no occlusion, no
+        // FXAA (a reduced render size is blitted up instead), a reduced
+        // render size and the simplified geometry.
+        settings.vss.preview = true;
+        settings.ao.enabled = false;
+        settings.antialiasing = false;
+        settings.resolutionScale = interactiveScale_;
+        settings.simplifiedGeometry = true;
+    } else if (deferOcclusion_) {
+        // Until the exact VSS is on screen: without the occlusion and FXAA
+        // (~120 ms and ~20 ms at 720p on llvmpipe), which the next frame adds.
+        settings.ao.enabled = false;
+        settings.antialiasing = false;
+    }
+    return settings;
+}
+
+RefinementPolicy::AfterFrame RefinementPolicy::frameDrawn(const VssFrameStatus& status) noexcept {
+    AfterFrame after;
+    // Dynamic resolution: this frame's time sets the size of the next camera
+    // move's frames. Frames in between (a preview solve arrived) keep this
+    // size: the preview was solved at it.
+    after.measure = moving_ && cameraMoved_ && frameBudgetMs_ > 0.0;
+    after.showedCameraMove = cameraMoved_;
+    cameraMoved_ = false;
+    if (deferOcclusion_ && !moving_ && !status.pending && !status.preview) {
+        // The exact VSS (or no VSS at all) is on screen: now the occlusion.
+        deferOcclusion_ = false;
+        after.occlusionFrame = true;
+    }
+    return after;
+}
+
+void RefinementPolicy::frameMeasured(double milliseconds) noexcept {
+    // The step at or below the current scale.
+    std::size_t step = kScaleSteps.size() - 1;
+    for (std::size_t i = 0; i < kScaleSteps.size(); ++i) {
+        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F) {
+            step = i;
+            break;
+        }
+    }
+    if (milliseconds > 1.15 * frameBudgetMs_ && step + 1 < kScaleSteps.size()) {
+        ++step;  // too slow: ~0.7 of the pixels
+    } else if (milliseconds < 0.6 * frameBudgetMs_ && step > 0) {
+        --step;  // ~1.4x the pixels would still fit
+    }
+    nextInteractiveScale_ = kScaleSteps[step];
+}
+
+}  // namespace vv::render
