@@ -160,7 +160,7 @@ TEST(Translations, EnglishPluralFormsAreGiven) {
 }
 
 TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
-    // lupdate over app/gui and app/common (the settings' labels) into a
+    // lupdate over app/ and the modules that draw text (render, report) into a
     // temporary file: the strings the sources have now.
     QTemporaryDir dir;
     ASSERT_TRUE(dir.isValid());
@@ -173,7 +173,10 @@ TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
                    QStringLiteral("-source-language"), QStringLiteral("en"),
                    QStringLiteral("-target-language"), QStringLiteral("de"),
                    QStringLiteral(VV_SOURCE_DIR "/app/gui"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/common"), QStringLiteral("-ts"), fresh});
+                   QStringLiteral(VV_SOURCE_DIR "/app/common"),
+                   QStringLiteral(VV_SOURCE_DIR "/app/cli"),
+                   QStringLiteral(VV_SOURCE_DIR "/modules/render/src"),
+                   QStringLiteral(VV_SOURCE_DIR "/modules/report/src"), QStringLiteral("-ts"), fresh});
     ASSERT_TRUE(lupdate.waitForFinished(120000)) << "lupdate did not finish";
     ASSERT_EQ(lupdate.exitCode(), 0) << lupdate.readAll().toStdString();
 
