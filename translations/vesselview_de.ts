@@ -198,6 +198,141 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::EngineTexts</name>
+    <message>
+        <source>Generating vessel tree</source>
+        <translation>Gefäßbaum wird erzeugt</translation>
+    </message>
+    <message>
+        <source>Extracting surface</source>
+        <translation>Oberfläche wird extrahiert</translation>
+    </message>
+    <message>
+        <source>Smoothing surface</source>
+        <translation>Oberfläche wird geglättet</translation>
+    </message>
+    <message>
+        <source>Computing normals</source>
+        <translation>Normalen werden berechnet</translation>
+    </message>
+    <message>
+        <source>Assigning vessel data</source>
+        <translation>Gefäßdaten werden zugeordnet</translation>
+    </message>
+    <message>
+        <source>Voxelising the demo tree</source>
+        <translation>Demo-Gefäßbaum wird voxelisiert</translation>
+    </message>
+    <message>
+        <source>Listing DICOM files</source>
+        <translation>DICOM-Dateien werden aufgelistet</translation>
+    </message>
+    <message>
+        <source>Reading DICOM headers</source>
+        <translation>DICOM-Header werden gelesen</translation>
+    </message>
+    <message>
+        <source>Loading DICOM series</source>
+        <translation>DICOM-Serie wird geladen</translation>
+    </message>
+    <message>
+        <source>Reading DICOM SEG</source>
+        <translation>DICOM-SEG wird gelesen</translation>
+    </message>
+    <message>
+        <source>Writing the CT series</source>
+        <translation>CT-Serie wird geschrieben</translation>
+    </message>
+    <message>
+        <source>Extracting the surface</source>
+        <translation>Oberfläche wird extrahiert</translation>
+    </message>
+    <message>
+        <source>Merging points</source>
+        <translation>Punkte werden zusammengeführt</translation>
+    </message>
+    <message>
+        <source>simplifying</source>
+        <translation>wird vereinfacht</translation>
+    </message>
+    <message>
+        <source>Segmenting</source>
+        <translation>Segmentierung läuft</translation>
+    </message>
+    <message>
+        <source>depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>solving the VSS</source>
+        <translation>VSS wird berechnet</translation>
+    </message>
+    <message>
+        <source>rendering tiles</source>
+        <translation>Kacheln werden gerendert</translation>
+    </message>
+    <message>
+        <source>rendering</source>
+        <translation>wird gerendert</translation>
+    </message>
+    <message>
+        <source>Reading the patient and study</source>
+        <translation>Patient und Studie werden gelesen</translation>
+    </message>
+    <message>
+        <source>Rendering the image</source>
+        <translation>Bild wird gerendert</translation>
+    </message>
+    <message>
+        <source>Rendering the report&apos;s view</source>
+        <translation>Ansicht des Berichts wird gerendert</translation>
+    </message>
+    <message>
+        <source>Rendering the second view</source>
+        <translation>Zweite Ansicht wird gerendert</translation>
+    </message>
+    <message>
+        <source>Laying out the PDF</source>
+        <translation>PDF wird gesetzt</translation>
+    </message>
+    <message>
+        <source>Writing the files</source>
+        <translation>Dateien werden geschrieben</translation>
+    </message>
+    <message>
+        <source>Checking %1</source>
+        <translation>%1 wird geprüft</translation>
+    </message>
+    <message>
+        <source>Reading %1</source>
+        <translation>%1 wird gelesen</translation>
+    </message>
+    <message>
+        <source>Converting %1</source>
+        <translation>%1 wird umgewandelt</translation>
+    </message>
+    <message>
+        <source>Loaded %1</source>
+        <translation>%1 geladen</translation>
+    </message>
+    <message>
+        <source>CT angiography default: %1 to %2</source>
+        <translation>Voreinstellung für CT-Angiographie: %1 bis %2</translation>
+    </message>
+    <message>
+        <source>Constant volume: its only value, %1</source>
+        <translation>Konstantes Volumen: sein einziger Wert, %1</translation>
+    </message>
+    <message>
+        <source>From the histogram: Otsu threshold of the voxels above the background, %1 to %2</source>
+        <translation>Aus dem Histogramm: Otsu-Schwelle der Voxel über dem Hintergrund, %1 bis %2</translation>
+    </message>
+    <message>
+        <source>From the histogram: Otsu threshold, %1 to %2</source>
+        <translation>Aus dem Histogramm: Otsu-Schwelle, %1 bis %2</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ExportImageDialog</name>
     <message>
         <source>Export Image</source>

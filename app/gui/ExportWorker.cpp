@@ -14,6 +14,7 @@
 #include <string>
 #include <utility>
 
+#include "gui/EngineTexts.h"
 #include "gui/ViewerWidget.h"
 #include "vv/core/Error.h"
 
@@ -128,7 +129,8 @@ void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) 
             }
             shownPermille = permille;
             shownStage = stage;
-            emit progressChanged(permille / 1000.0, QString::fromStdString(shownStage));
+            emit progressChanged(permille / 1000.0,
+                                 translatedStage(QString::fromStdString(shownStage)));
         },
         stop);
     Outcome outcome = Outcome::Failed;

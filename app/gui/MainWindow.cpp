@@ -571,8 +571,8 @@ void MainWindow::updateRangeLabel() {
     }
     rangeLabel_->setText(tr("%1: %2 – %3")
                              .arg(panels::arrayLabel(*scene, array))
-                             .arg(static_cast<double>(range->first), 0, 'g', 4)
-                             .arg(static_cast<double>(range->second), 0, 'g', 4));
+                             .arg(QLocale().toString(range->first, 'g', 4),
+                                  QLocale().toString(range->second, 'g', 4)));
 }
 
 void MainWindow::showError(const QString& title, const QString& message) {

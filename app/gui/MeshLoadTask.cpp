@@ -7,6 +7,7 @@
 #include <mutex>
 #include <string>
 
+#include "gui/EngineTexts.h"
 #include "vv/core/Error.h"
 #include "vv/core/Progress.h"
 #include "vv/demo/DemoTree.h"
@@ -91,9 +92,9 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
             if (std::abs(permille - lastPermille) >= 5 || stage != lastStage) {
                 lastPermille = permille;
                 lastStage = std::string(stage);
-                emit progressChanged(
-                    permille / 1000.0,
-                    QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size())));
+                emit progressChanged(permille / 1000.0,
+                                     translatedStage(QString::fromUtf8(
+                                         stage.data(), static_cast<qsizetype>(stage.size()))));
             }
         },
         std::move(stop));

@@ -10,6 +10,7 @@
 #include <string>
 #include <utility>
 
+#include "gui/EngineTexts.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
@@ -46,9 +47,9 @@ SegmentationTask::Result SegmentationTask::work(std::stop_token stop) {
             }
             last = now;
             lastStage = std::string(stage);
-            emit progressChanged(
-                std::clamp(fraction, 0.0, 1.0),
-                QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size())));
+            emit progressChanged(std::clamp(fraction, 0.0, 1.0),
+                                 translatedStage(QString::fromUtf8(
+                                     stage.data(), static_cast<qsizetype>(stage.size()))));
         },
         std::move(stop));
     try {

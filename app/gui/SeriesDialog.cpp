@@ -83,11 +83,11 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
                 item->setText(Size, tr("%1 × %2").arg(series.columns).arg(series.rows));
                 QString spacing;
                 if (series.pixelSpacing) {
-                    spacing = QStringLiteral("%1 × %2")
+                    spacing = QStringLiteral("%L1 × %L2")
                                   .arg(series.pixelSpacing->x, 0, 'g', 4)
                                   .arg(series.pixelSpacing->y, 0, 'g', 4);
                     if (series.sliceSpacing) {
-                        spacing += QStringLiteral(" × %1").arg(*series.sliceSpacing, 0, 'g', 4);
+                        spacing += QStringLiteral(" × %L1").arg(*series.sliceSpacing, 0, 'g', 4);
                     }
                 }
                 item->setText(Spacing, spacing);

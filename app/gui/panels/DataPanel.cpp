@@ -262,10 +262,10 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
             }
             auto* child = new QTreeWidgetItem(item);
             child->setText(NameColumn, label);
-            child->setText(VerticesColumn, lo <= hi ? tr("%1 – %2")
-                                                          .arg(static_cast<double>(lo), 0, 'g', 4)
-                                                          .arg(static_cast<double>(hi), 0, 'g', 4)
-                                                    : tr("no data"));
+            child->setText(VerticesColumn, lo <= hi
+                                               ? tr("%1 – %2").arg(QLocale().toString(lo, 'g', 4),
+                                                                   QLocale().toString(hi, 'g', 4))
+                                               : tr("no data"));
             child->setToolTip(NameColumn, tr("Point array (range of its finite values)"));
         }
         item->setExpanded(true);

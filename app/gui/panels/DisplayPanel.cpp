@@ -9,6 +9,7 @@
 #include <QGridLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSlider>
 #include <QToolButton>
 #include <cmath>
@@ -341,7 +342,7 @@ void DisplayPanel::frameRendered() {
     double total = 0.0;
     for (const auto& pass : viewer_->lastPasses()) {
         if (pass.milliseconds) {
-            lines << QStringLiteral("%1 %2 ms")
+            lines << QStringLiteral("%1 %L2 ms")
                          .arg(QString::fromStdString(pass.name), -14)
                          .arg(*pass.milliseconds, 6, 'f', 2);
             total += *pass.milliseconds;
@@ -355,7 +356,7 @@ void DisplayPanel::frameRendered() {
     if (lines.isEmpty()) {
         lines << tr("no frame yet");
     } else {
-        lines << tr("total (CPU) %1 ms").arg(total, 6, 'f', 2);
+        lines << tr("total (CPU) %1 ms").arg(QLocale().toString(total, 'f', 2), 6);
     }
     overlay_->setText(lines.join(QLatin1Char('\n')));
     overlay_->adjustSize();

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 
+#include "gui/EngineTexts.h"
 #include "gui/SegmentationTask.h"
 #include "gui/ViewerWidget.h"
 #include "gui/panels/PanelUtil.h"
@@ -326,8 +327,11 @@ void SegmentationPanel::startDefaultRange() {
                                     .arg(valueText(static_cast<double>(defaultRange_->lower)),
                                          valueText(static_cast<double>(defaultRange_->upper)))
                               : tr("Default: none (the volume holds a single value)"));
-            // The rule behind it (the engine's words: "CT angiography default …").
-            defaultLabel_->setToolTip(defaultRange_ ? fromUtf8(defaultRange_->rule) : QString());
+            // The rule behind it, in the UI language ("CT angiography default: …").
+            defaultLabel_->setToolTip(
+                defaultRange_
+                    ? thresholdRuleText(*defaultRange_, [this](double v) { return valueText(v); })
+                    : QString());
             updateApplicability();
         });
 }

@@ -7,6 +7,7 @@
 #include <QFormLayout>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLocale>
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
@@ -310,7 +311,7 @@ void VssPanel::updateBound() {
         } else if (error == 0.0) {
             bound_ = tr("exact");
         } else {
-            bound_ = tr("error ≤ %1 / 255").arg(error * 255.0, 0, 'g', 3);
+            bound_ = tr("error ≤ %1 / 255").arg(QLocale().toString(error * 255.0, 'g', 3));
         }
     } catch (const vv::Error& e) {
         bound_ = QString::fromStdString(e.what());

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/EngineTexts.h"
+
+#include <QCoreApplication>
+#include <array>
+#include <optional>
+#include <string_view>
+
+#include "vv/segmentation/VolumeSegmentation.h"
+
+namespace vv::gui {
+
+namespace {
+
+constexpr const char* kContext = "vv::gui::EngineTexts";
+
+/// The exact stage texts of the modules (grep the modules for
+/// `progress.report(` and `runAlgorithm(` when adding one).
+constexpr std::array kStages = {
+    // demo
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Generating vessel tree"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Extracting surface"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Smoothing surface"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Computing normals"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Assigning vessel data"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Voxelising the demo tree"),
+    // dicom
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Listing DICOM files"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Reading DICOM headers"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Loading DICOM series"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Reading DICOM SEG"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Writing the CT series"),
+    // meshio
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Extracting the surface"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Merging points"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "simplifying"),
+    // segmentation
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Segmenting"),
+    // report (exports)
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "depth"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "solving the VSS"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "rendering tiles"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "rendering"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Reading the patient and study"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Rendering the image"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Rendering the report's view"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Rendering the second view"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Laying out the PDF"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Writing the files"),
+};
+
+/// Stages that name a file: the module's English prefix and the translatable
+/// pattern (%1 = the file name).
+struct FileStage {
+    const char* prefix;
+    const char* pattern;
+};
+
+constexpr std::array kFileStages = {
+    FileStage{"Checking ", QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Checking %1")},
+    FileStage{"Reading ", QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Reading %1")},
+    FileStage{"Converting ", QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Converting %1")},
+    FileStage{"Loaded ", QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Loaded %1")},
+};
+
+std::optional<QString> lookUp(const QString& stage) {
+    for (const char* known : kStages) {
+        if (stage == QLatin1String(known)) {
+            return QCoreApplication::translate(kContext, known);
+        }
+    }
+    for (const FileStage& file : kFileStages) {
+        const QLatin1String prefix(file.prefix);
+        if (stage.size() > prefix.size() && stage.startsWith(prefix)) {
+            return QCoreApplication::translate(kContext, file.pattern)
+                .arg(stage.mid(prefix.size()));
+        }
+    }
+    return std::nullopt;
+}
+
+}  // namespace
+
+QString translatedStage(const QString& stage) {
+    return lookUp(stage).value_or(stage);
+}
+
+bool isKnownStage(const QString& stage) {
+    return lookUp(stage).has_value();
+}
+
+QString thresholdRuleText(const segmentation::ThresholdRange& range,
+                          const std::function<QString(double)>& value) {
+    // The rules' stable beginnings (segmentation::defaultThresholdRange()).
+    const std::string_view rule = range.rule;
+    const QString lower = value(static_cast<double>(range.lower));
+    const QString upper = value(static_cast<double>(range.upper));
+    if (rule.starts_with("CT angiography default")) {
+        return QCoreApplication::translate("vv::gui::EngineTexts",
+                                           "CT angiography default: %1 to %2")
+            .arg(lower, upper);
+    }
+    if (rule.starts_with("constant volume")) {
+        return QCoreApplication::translate("vv::gui::EngineTexts",
+                                           "Constant volume: its only value, %1")
+            .arg(lower);
+    }
+    if (rule.starts_with("histogram: Otsu threshold of the voxels above")) {
+        return QCoreApplication::translate(
+                   "vv::gui::EngineTexts",
+                   "From the histogram: Otsu threshold of the voxels above the background, "
+                   "%1 to %2")
+            .arg(lower, upper);
+    }
+    if (rule.starts_with("histogram: Otsu threshold")) {
+        return QCoreApplication::translate("vv::gui::EngineTexts",
+                                           "From the histogram: Otsu threshold, %1 to %2")
+            .arg(lower, upper);
+    }
+    return QString::fromStdString(range.rule);
+}
+
+}  // namespace vv::gui
