@@ -313,21 +313,30 @@ class GermanUiTest : public GuiFixture {
     }
 
     /// The hover probe's tool tip at the centre of the view.
-    void hover() {
+    /// The points of a grid over the view that hit a vessel.
+    [[nodiscard]] std::vector<QPoint> vesselPoints() const {
         auto* viewer = window_->viewer();
-        viewer->setHoverProbe(true);
-        // A point on a vessel: the first of a grid over the view that hits one.
-        std::optional<QPoint> at;
-        for (int y = 1; y < 16 && !at; ++y) {
-            for (int x = 1; x < 16 && !at; ++x) {
+        std::vector<QPoint> points;
+        for (int y = 1; y < 16; ++y) {
+            for (int x = 1; x < 16; ++x) {
                 const QPoint p(viewer->width() * x / 16, viewer->height() * y / 16);
                 if (viewer->probeAt(p)) {
-                    at = p;
+                    points.push_back(p);
                 }
             }
         }
-        ASSERT_TRUE(at.has_value()) << "no vessel in the view to hover";
-        QHelpEvent help(QEvent::ToolTip, *at, viewer->mapToGlobal(*at));
+        return points;
+    }
+
+    /// The hover probe over a vessel, then a measurement between two vessel
+    /// points (the status bar's measure label).
+    void hoverAndMeasure() {
+        auto* viewer = window_->viewer();
+        viewer->setHoverProbe(true);
+        const std::vector<QPoint> points = vesselPoints();
+        ASSERT_GE(points.size(), 2U) << "too few vessels in the view to hover and measure";
+        const QPoint at = points.front();
+        QHelpEvent help(QEvent::ToolTip, at, viewer->mapToGlobal(at));
         QCoreApplication::sendEvent(viewer, &help);
         QCoreApplication::processEvents();
         bool shown = false;
@@ -336,6 +345,11 @@ class GermanUiTest : public GuiFixture {
         }
         EXPECT_TRUE(shown) << "the hover probe shows no tool tip";
         texts_.collectTopLevels();
+        window_->addMeasurePoint(*viewer->probeAt(at));
+        window_->addMeasurePoint(*viewer->probeAt(points.back()));
+        QCoreApplication::processEvents();
+        texts_.collect(window_.get());
+        window_->clearMeasurement();
     }
 
     /// Exports the view as a small PNG through File > Export Image, collecting
@@ -440,7 +454,7 @@ TEST_F(GermanUiTest, EveryVisibleTextIsGermanWithGermanNumbers) {
     ASSERT_TRUE(waitForFrames(2));
     (void)waitForVss(60000);
     collectPanels();
-    hover();
+    hoverAndMeasure();
     exportImage();
 
     exportReport();
