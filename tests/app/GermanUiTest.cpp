@@ -179,9 +179,9 @@ QStringList parts(const QString& text) {
 
 /// Numbers written with a '.' decimal separator in `text`, leaving out (the
 /// only exclusions): dotted chains with two or more dots (versions "6.4.2",
-/// UIDs), German thousands grouping ("12.345"), numbers in a file name
-/// ("run1.5.vtp" is not one: the chain rule; "a1.5b" letters around), and
-/// version numbers right after a product name ("OpenGL 4.1", "DICOM 3.0").
+/// UIDs), German thousands grouping ("12.345"; so "2.186" passes too: a
+/// blind spot), numbers touching letters (names: "a1.5b", "scan-1.5.vtp"),
+/// and version numbers right after a product name ("OpenGL 4.1", "DICOM 3.0").
 QStringList decimalPoints(const QString& text) {
     static const QRegularExpression number(
         QStringLiteral("(?<![\\w.])(\\d+(?:\\.\\d+)+)(?![\\w.]*\\w)"));
