@@ -10,6 +10,7 @@
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QMessageBox>
+#include <QPointer>
 #include <QTabBar>
 #include <QTranslator>
 #include <filesystem>
@@ -108,9 +109,11 @@ class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInt
         return ClippingCheck::problems(&widget);
     }
 
+    static fs::path demoSeriesDir() { return vv::test::panelTestDir() / "clipping-dicom"; }
+
     /// A small CT series of the demo tree, for the series chooser.
     static vv::dicom::DicomScanResult demoSeries() {
-        const fs::path dir = vv::test::panelTestDir() / "clipping-dicom";
+        const fs::path dir = demoSeriesDir();
         if (!fs::exists(dir)) {
             vv::demo::DemoCtOptions options;
             options.dims = {32, 32, 24};
@@ -147,6 +150,33 @@ TEST_P(ClippingTest, SidePanelShowsEveryTextInFull) {
     }
     EXPECT_LE(side->widget()->minimumSizeHint().width(), side->viewport()->width())
         << "the side panel's content is wider than the panel";
+}
+
+TEST_P(ClippingTest, SidePanelWithAVolumeShowsEveryTextInFull) {
+    // A CT series: the Segmentation panel shows thresholds in HU, counts, a seed.
+    demoSeries();
+    QPointer<vv::gui::SeriesDialog> dialog;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                     [&dialog](vv::gui::SeriesDialog* shown) { dialog = shown; });
+    bool shown = false;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
+    window_->openDicom(QString::fromStdString(demoSeriesDir().string()));
+    ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
+    ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
+    dialog->accept();
+    ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 120000));
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    ASSERT_NE(window_->volume(), nullptr);
+    auto* side = window_->sidePanel();
+    for (auto* section : side->findChildren<vv::gui::panels::CollapsibleSection*>()) {
+        section->setExpanded(true);
+    }
+    settle();
+    side->widget()->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("side-panel-volume-" + caseName({GetParam(), 0}) + ".png"))
+            .string()));
+    const std::vector<std::string> problems = ClippingCheck::problems(side);
+    EXPECT_TRUE(problems.empty()) << "cut off in the side panel:" << listed(problems);
 }
 
 TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
