@@ -99,14 +99,17 @@ class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInt
         }
     }
 
-    /// Shows `widget` as the user would see it and lists what it cuts off.
-    std::vector<std::string> problemsOf(QWidget& widget, const std::string& name) {
+    /// Shows `widget` as the user would see it (saved as `name`-<case>.png),
+    /// expects that it cuts nothing off, and hides it again.
+    void expectWhole(QWidget& widget, const std::string& name) {
         widget.show();
         settle();
         widget.grab().save(QString::fromStdString(
             (vv::test::panelTestDir() / (name + "-" + caseName({GetParam(), 0}) + ".png"))
                 .string()));
-        return ClippingCheck::problems(&widget);
+        const std::vector<std::string> problems = ClippingCheck::problems(&widget);
+        EXPECT_TRUE(problems.empty()) << "cut off in " << name << ":" << listed(problems);
+        widget.hide();
     }
 
     static fs::path demoSeriesDir() { return vv::test::panelTestDir() / "clipping-dicom"; }
@@ -181,32 +184,20 @@ TEST_P(ClippingTest, SidePanelWithAVolumeShowsEveryTextInFull) {
 
 TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
     vv::gui::ExportImageDialog image(*window_->viewer(), window_.get());
-    std::vector<std::string> problems = problemsOf(image, "export-image");
-    EXPECT_TRUE(problems.empty()) << "cut off in Export Image:" << listed(problems);
-    image.hide();
-
+    expectWhole(image, "export-image");
     vv::gui::ReportDialog report(*window_->viewer(), window_->reportSource(), window_.get());
-    problems = problemsOf(report, "report");
-    EXPECT_TRUE(problems.empty()) << "cut off in Export Report:" << listed(problems);
-    report.hide();
-
+    expectWhole(report, "report");
     vv::gui::SeriesDialog series(demoSeries(), window_.get());
-    problems = problemsOf(series, "series");
-    EXPECT_TRUE(problems.empty()) << "cut off in the series chooser:" << listed(problems);
-    series.hide();
-
+    expectWhole(series, "series");
+    // As Help > About and Help > Keyboard Shortcuts show them.
     QMessageBox about(QMessageBox::NoIcon, QStringLiteral("About"), window_->aboutText(),
                       QMessageBox::Close, window_.get());
     about.setTextFormat(Qt::RichText);
-    problems = problemsOf(about, "about");
-    EXPECT_TRUE(problems.empty()) << "cut off in About:" << listed(problems);
-    about.hide();
-
+    expectWhole(about, "about");
     QMessageBox keys(QMessageBox::NoIcon, QStringLiteral("Keys"), window_->shortcutSummary(),
                      QMessageBox::Close, window_.get());
     keys.setTextFormat(Qt::RichText);
-    problems = problemsOf(keys, "shortcuts");
-    EXPECT_TRUE(problems.empty()) << "cut off in Keyboard Shortcuts:" << listed(problems);
+    expectWhole(keys, "shortcuts");
 }
 
 INSTANTIATE_TEST_SUITE_P(LanguagesAndSizes, ClippingTest,
