@@ -7,12 +7,14 @@
 #include <gtest/gtest.h>
 
 #include <QDir>
+#include <QLayout>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QMessageBox>
 #include <QPointer>
 #include <QTabBar>
 #include <QTranslator>
+#include <QWindow>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -103,6 +105,14 @@ class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInt
     /// expects that it cuts nothing off, and hides it again.
     void expectWhole(QWidget& widget, const std::string& name) {
         widget.show();
+        // Laid out and on screen, also on a busy machine.
+        EXPECT_TRUE(waitUntil(
+            [&] { return widget.windowHandle() != nullptr && widget.windowHandle()->isExposed(); },
+            10000))
+            << name << " never appeared";
+        if (widget.layout() != nullptr) {
+            widget.layout()->activate();
+        }
         settle();
         widget.grab().save(QString::fromStdString(
             (vv::test::panelTestDir() / (name + "-" + caseName({GetParam(), 0}) + ".png"))
