@@ -391,10 +391,6 @@
         <translation>Seitenverhältnis der Ansicht &amp;beibehalten</translation>
     </message>
     <message>
-        <source>The image shows exactly what the view shows; presets fit the view into their size</source>
-        <translation>Das Bild zeigt genau, was die Ansicht zeigt; Vorgaben passen die Ansicht in ihre Größe ein</translation>
-    </message>
-    <message>
         <source>&amp;Legends</source>
         <translation>&amp;Legenden</translation>
     </message>
@@ -445,6 +441,10 @@
     <message>
         <source>, transparent background</source>
         <translation>, transparenter Hintergrund</translation>
+    </message>
+    <message>
+        <source>The image shows exactly what the view shows. A preset sets its exact size and turns this off when its shape differs from the view&apos;s.</source>
+        <translation>Das Bild zeigt genau, was die Ansicht zeigt. Eine Vorgabe setzt genau ihre Größe und schaltet dies aus, wenn ihr Seitenverhältnis von dem der Ansicht abweicht.</translation>
     </message>
 </context>
 <context>
@@ -800,6 +800,10 @@
     <message>
         <source>Open data first: there is nothing to export</source>
         <translation>Zuerst Daten öffnen: es gibt nichts zu exportieren</translation>
+    </message>
+    <message>
+        <source>Side Panel</source>
+        <translation>Seitenleiste</translation>
     </message>
 </context>
 <context>
@@ -1340,6 +1344,14 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Browse the patients, studies and series of %1 and load another series</source>
         <translation>Patienten, Studien und Serien von %1 durchsuchen und eine andere Serie laden</translation>
+    </message>
+    <message>
+        <source>%1: %2 vertices, %3 triangles</source>
+        <translation>%1: %2 Eckpunkte, %3 Dreiecke</translation>
+    </message>
+    <message>
+        <source>%1: %2</source>
+        <translation>%1: %2</translation>
     </message>
 </context>
 <context>
@@ -2054,6 +2066,14 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Interpolation power p (logarithmic, %L1 to %L2)</source>
         <translation>Interpolationsexponent p (logarithmisch, %L1 bis %L2)</translation>
+    </message>
+    <message>
+        <source>Advanced</source>
+        <translation>Erweitert</translation>
+    </message>
+    <message>
+        <source>How the surface is computed: solver, tolerance, solve time</source>
+        <translation>Wie die Fläche berechnet wird: Löser, Toleranz, Rechenzeit</translation>
     </message>
 </context>
 </TS>

@@ -24,6 +24,7 @@
 #include <memory>
 
 #include "gui/ExportWorker.h"
+#include "gui/PathField.h"
 #include "gui/ViewerWidget.h"
 #include "vv/report/ViewExport.h"
 
@@ -69,7 +70,8 @@ ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent
     auto* fileRow = new QHBoxLayout;
     fileRow->addWidget(file_, 1);
     fileRow->addWidget(browse);
-    form->addRow(tr("&File:"), fileRow);
+    addBuddyRow(form, tr("&File:"), file_, fileRow);
+    showPath(file_);
 
     const QSize view = viewSize();
     sizes_ = new QComboBox(this);
@@ -98,7 +100,8 @@ ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent
     keepAspect_ = new QCheckBox(tr("&Keep the view's aspect ratio"), this);
     keepAspect_->setChecked(true);
     keepAspect_->setToolTip(
-        tr("The image shows exactly what the view shows; presets fit the view into their size"));
+        tr("The image shows exactly what the view shows. A preset sets its exact size and "
+           "turns this off when its shape differs from the view's."));
     form->addRow(QString(), keepAspect_);
     legends_ = new QCheckBox(tr("&Legends"), this);
     legends_->setChecked(viewer.legendsVisible());
@@ -117,8 +120,13 @@ ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent
     connect(width_, &QSpinBox::valueChanged, this, &ExportImageDialog::widthEdited);
     connect(height_, &QSpinBox::valueChanged, this, &ExportImageDialog::heightEdited);
     connect(keepAspect_, &QCheckBox::toggled, this, [this](bool on) {
+        const QSize before = imageSize();
         if (on) {
-            presetChosen();
+            heightFollowsWidth();  // back to the view's shape
+        }
+        if (imageSize() != before) {
+            const QSignalBlocker block(sizes_);
+            sizes_->setCurrentIndex(sizes_->findData(Custom));
         }
     });
 }
@@ -141,28 +149,29 @@ void ExportImageDialog::presetChosen() {
     if (preset == Custom) {
         return;
     }
-    QSize size =
+    // A preset is exactly its size; a lock to the view's shape that would
+    // change it comes off.
+    const QSize size =
         preset == ViewSize ? viewSize() : kPresets.at(static_cast<std::size_t>(preset - 1));
-    if (keepAspect_->isChecked() && preset != ViewSize) {
-        // The largest size of the view's aspect inside the preset.
-        const double aspect = viewAspect();
-        if (size.width() > aspect * size.height()) {
-            size.setWidth(std::max(1, static_cast<int>(std::lround(size.height() * aspect))));
-        } else {
-            size.setHeight(std::max(1, static_cast<int>(std::lround(size.width() / aspect))));
-        }
-    }
     const QSignalBlocker blockWidth(width_);
     const QSignalBlocker blockHeight(height_);
+    const QSignalBlocker blockAspect(keepAspect_);
+    if (keepAspect_->isChecked() &&
+        std::lround(size.width() / viewAspect()) != static_cast<long>(size.height())) {
+        keepAspect_->setChecked(false);
+    }
     width_->setValue(size.width());
     height_->setValue(size.height());
 }
 
+void ExportImageDialog::heightFollowsWidth() {
+    const QSignalBlocker block(height_);
+    height_->setValue(std::max(1, static_cast<int>(std::lround(width_->value() / viewAspect()))));
+}
+
 void ExportImageDialog::widthEdited() {
     if (keepAspect_->isChecked()) {
-        const QSignalBlocker block(height_);
-        height_->setValue(
-            std::max(1, static_cast<int>(std::lround(width_->value() / viewAspect()))));
+        heightFollowsWidth();
     }
     const QSignalBlocker block(sizes_);
     sizes_->setCurrentIndex(sizes_->findData(Custom));

@@ -19,7 +19,9 @@ class ViewerWidget;
 /// of the viewer) as a PNG file at the view's size, a preset (1920 x 1080,
 /// 3840 x 2160, 7680 x 4320) or a custom size up to 8K
 /// (report::kMaxExportSide, report::kMaxExportPixels; larger sizes are
-/// refused with a message), optionally keeping the view's aspect ratio, with
+/// refused with a message; a preset is always exactly its size, and choosing
+/// one whose shape differs from the view's turns "keep the view's aspect
+/// ratio" off), optionally keeping the view's aspect ratio, with
 /// or without legends, on the background or transparent. accept() checks the
 /// fields (a message box says what is wrong; the dialog stays open), remembers
 /// the folder, and renders with report::renderView() on an ExportWorker
@@ -53,6 +55,8 @@ class ExportImageDialog : public ExportDialog {
   private:
     void presetChosen();
     void widthEdited();
+    /// The height for the width in the view's shape.
+    void heightFollowsWidth();
     void heightEdited();
     [[nodiscard]] QSize viewSize() const;
     [[nodiscard]] double viewAspect() const;

@@ -16,7 +16,6 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
-#include <QScrollArea>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -35,11 +34,13 @@
 #include "gui/SeriesDialog.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/DataPanel.h"
 #include "gui/panels/DisplayPanel.h"
 #include "gui/panels/FunctionalPanel.h"
 #include "gui/panels/PanelUtil.h"
 #include "gui/panels/SegmentationPanel.h"
+#include "gui/panels/SidePanel.h"
 #include "gui/panels/VssPanel.h"
 #include "vv/render/MeshStyle.h"
 
@@ -49,10 +50,9 @@ namespace {
 
 const char* const kGeometryKey = "mainWindow/geometry";
 const char* const kLayoutKey = "mainWindow/layout";
-/// Bump when the docks change so that an old saved layout is not applied.
-constexpr int kLayoutVersion = 1;
-/// The side panels' initial width (logical pixels).
-constexpr int kDockWidth = 330;
+/// Bump when the docks change so that an old saved layout is not applied
+/// (2: one side panel with sections instead of five tabbed docks).
+constexpr int kLayoutVersion = 2;
 
 /// The local files and folders of a drag.
 QStringList localPaths(const QMimeData* mime) {
@@ -293,27 +293,19 @@ void MainWindow::buildDocks() {
     displayPanel_ = new panels::DisplayPanel(viewer_, this);
     dataPanel_ = new panels::DataPanel(viewer_, this);
     segmentationPanel_ = new panels::SegmentationPanel(viewer_, this);
-    const std::pair<QWidget*, QString> panels[] = {
-        {vssPanel_, tr("Void Space Surface")},    {functionalPanel_, tr("Functional parameters")},
-        {displayPanel_, tr("Display")},           {dataPanel_, tr("Data")},
-        {segmentationPanel_, tr("Segmentation")},
-    };
-    for (const auto& [panel, title] : panels) {
-        auto* dock = new QDockWidget(title, this);
-        dock->setObjectName(panel->objectName() + QStringLiteral("Dock"));
-        auto* scroll = new QScrollArea(dock);
-        scroll->setWidget(panel);
-        scroll->setWidgetResizable(true);
-        scroll->setFrameShape(QFrame::NoFrame);
-        dock->setWidget(scroll);
-        addDockWidget(Qt::RightDockWidgetArea, dock);
-        if (!docks_.isEmpty()) {
-            tabifyDockWidget(docks_.front(), dock);
-        }
-        docks_ << dock;
-    }
-    docks_.front()->raise();
-    resizeDocks({docks_.front()}, {kDockWidth}, Qt::Horizontal);
+    // One side panel, its parts one under the other: what a newcomer needs
+    // first is open, the rest folded.
+    sidePanel_ = new panels::SidePanel(this);
+    sidePanel_->addSection(tr("Void Space Surface"), vssPanel_, true);
+    sidePanel_->addSection(tr("Functional parameters"), functionalPanel_, true);
+    sidePanel_->addSection(tr("Display"), displayPanel_, false);
+    sidePanel_->addSection(tr("Data"), dataPanel_, false);
+    sidePanel_->addSection(tr("Segmentation"), segmentationPanel_, false);
+    auto* dock = new QDockWidget(tr("Side Panel"), this);
+    dock->setObjectName(QStringLiteral("sidePanelDock"));
+    dock->setWidget(sidePanel_);
+    addDockWidget(Qt::RightDockWidgetArea, dock);
+    docks_ << dock;
     connect(vssPanel_, &panels::VssPanel::changed, this, &MainWindow::syncControls);
     connect(functionalPanel_, &panels::FunctionalPanel::changed, this, &MainWindow::syncControls);
     connect(displayPanel_, &panels::DisplayPanel::changed, this, &MainWindow::syncControls);
@@ -453,7 +445,14 @@ void MainWindow::resetLayout() {
     for (QDockWidget* dock : docks_) {
         dock->show();
     }
-    docks_.front()->raise();
+    for (panels::CollapsibleSection* section : sidePanel_->sections()) {
+        section->resetToDefault();
+    }
+}
+
+void MainWindow::revealPanel(const QWidget* panel) {
+    docks_.front()->show();
+    sidePanel_->reveal(panel);
 }
 
 void MainWindow::buildStatusBar() {

@@ -44,14 +44,17 @@ class DataPanel;
 class DisplayPanel;
 class FunctionalPanel;
 class SegmentationPanel;
+class SidePanel;
 class VssPanel;
 }  // namespace panels
 
 /// The main window: the 3-D viewer, File / View / Help menus, a toolbar
-/// (VSS on/off, ambient occlusion, colour-blind-safe mode), the side panels
-/// as dock widgets ("Void Space Surface", "Functional parameters",
-/// "Display", "Data", "Segmentation"; their layout is restored from
-/// QSettings), and a status bar with load progress and Cancel.
+/// (VSS on/off, ambient occlusion, colour-blind-safe mode), one side panel
+/// (a dock, "sidePanelDock": panels::SidePanel) with the panels as sections
+/// that fold ("Void Space Surface" and "Functional parameters" open at
+/// first, "Display", "Data", "Segmentation" folded; which are open and the
+/// dock's place are restored from QSettings), and a status bar with load
+/// progress and Cancel.
 ///
 /// What is shown and how it is opened — files, folders, sessions, recent
 /// files, the load task, the last error — is the DocumentController's
@@ -153,7 +156,13 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return document_->volume();
     }
-    /// View > Panels > Reset Layout: the docks as in a fresh window.
+    /// The side panel (scrolls vertically; its sections hold the panels).
+    [[nodiscard]] panels::SidePanel* sidePanel() const noexcept { return sidePanel_; }
+    /// Shows the side panel and opens and scrolls to the section holding
+    /// `panel` (one of the panels above).
+    void revealPanel(const QWidget* panel);
+    /// View > Panels > Reset Layout: the side panel and its sections (which
+    /// are open) as in a fresh window.
     void resetLayout();
     /// View > Reset to Defaults: the display settings of a fresh viewer
     /// (resetViewSettings()) and the default layout. Data, array and range stay.
@@ -245,6 +254,7 @@ class MainWindow : public QMainWindow {
     panels::DisplayPanel* displayPanel_ = nullptr;
     panels::DataPanel* dataPanel_ = nullptr;
     panels::SegmentationPanel* segmentationPanel_ = nullptr;
+    panels::SidePanel* sidePanel_ = nullptr;
     DocumentController* document_ = nullptr;
     QList<QDockWidget*> docks_;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored

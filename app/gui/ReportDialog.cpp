@@ -25,6 +25,7 @@
 
 #include "gui/ExportImageDialog.h"
 #include "gui/ExportWorker.h"
+#include "gui/PathField.h"
 #include "gui/ViewerWidget.h"
 #include "vv/render/ViewPresets.h"
 
@@ -52,6 +53,7 @@ QHBoxLayout* withBrowse(QLineEdit* edit, const QString& title, const QString& fi
     auto* row = new QHBoxLayout;
     row->addWidget(edit, 1);
     row->addWidget(browse);
+    showPath(edit);
     return row;
 }
 
@@ -71,8 +73,8 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
     form_ = new QFormLayout(this);
 
     pdf_ = new QLineEdit(QDir(lastExportFolder()).filePath(QStringLiteral("report.pdf")), this);
-    form_->addRow(tr("&Report (PDF):"),
-                  withBrowse(pdf_, tr("Export report"), tr("PDF documents (*.pdf)"), this));
+    addBuddyRow(form_, tr("&Report (PDF):"), pdf_,
+                withBrowse(pdf_, tr("Export report"), tr("PDF documents (*.pdf)"), this));
 
     paper_ = new QComboBox(this);
     paper_->addItem(tr("A4"), static_cast<int>(report::PaperSize::A4));

@@ -13,13 +13,16 @@
 #include <QPlainTextEdit>
 #include <QPointer>
 #include <QSpinBox>
+#include <QStyle>
 #include <QTimer>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <memory>
 #include <string>
 
+#include "ClippingCheck.h"
 #include "GuiFixture.h"
 #include "ReportTestUtil.h"
 #include "gui/ExportImageDialog.h"
@@ -149,19 +152,24 @@ TEST_F(ExportGuiTest, ImageHasTheSizeAskedForAndLegendsAndTransparencyShow) {
     EXPECT_GT(opaque, 640L * 4);        // the tube
 }
 
-TEST_F(ExportGuiTest, KeepAspectFollowsTheViewAndLargerThan8KIsRefused) {
+TEST_F(ExportGuiTest, PresetsGiveTheirExactSizeKeepAspectFollowsTheViewAnd8KIsTheLimit) {
     ASSERT_TRUE(showTube());
     gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
     const QSize view = gui::viewPixelSize(*window_->viewer());
+    const double aspect = static_cast<double>(view.width()) / view.height();
     EXPECT_EQ(dialog.imageSize(), view);  // "View size" first
+    EXPECT_TRUE(dialog.keepAspectBox()->isChecked());
+    // A preset is its size exactly; the view (not 16:9 here) no longer locks the shape.
+    ASSERT_GT(std::abs(aspect - 16.0 / 9.0), 0.01);
     dialog.sizeChooser()->setCurrentIndex(
         dialog.sizeChooser()->findData(gui::ExportImageDialog::Uhd4k));
-    const QSize fitted = dialog.imageSize();
-    EXPECT_TRUE(fitted.width() == 3840 || fitted.height() == 2160);
-    EXPECT_LE(fitted.width(), 3840);
-    EXPECT_LE(fitted.height(), 2160);
-    EXPECT_NEAR(static_cast<double>(fitted.width()) / fitted.height(),
-                static_cast<double>(view.width()) / view.height(), 0.01);
+    EXPECT_EQ(dialog.imageSize(), QSize(3840, 2160));
+    EXPECT_FALSE(dialog.keepAspectBox()->isChecked());
+    // Locking again: the height follows the width in the view's shape.
+    dialog.keepAspectBox()->setChecked(true);
+    EXPECT_EQ(dialog.imageSize().width(), 3840);
+    EXPECT_NEAR(dialog.imageSize().height(), 3840.0 / aspect, 1.0);
+    EXPECT_EQ(dialog.sizeChooser()->currentData().toInt(), gui::ExportImageDialog::Custom);
 
     dialog.keepAspectBox()->setChecked(false);
     dialog.widthBox()->setValue(8000);
@@ -176,6 +184,49 @@ TEST_F(ExportGuiTest, KeepAspectFollowsTheViewAndLargerThan8KIsRefused) {
     EXPECT_FALSE(started);
     EXPECT_NE(dialog.findChild<QMessageBox*>(QStringLiteral("exportProblemBox")), nullptr);
     EXPECT_FALSE(fs::exists(file));
+}
+
+TEST_F(ExportGuiTest, FourKPresetWrites3840x2160) {
+    ASSERT_TRUE(showTube());
+    gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
+    const fs::path file = dir_ / "uhd.png";
+    dialog.fileEdit()->setText(QString::fromStdString(file.string()));
+    ASSERT_TRUE(dialog.keepAspectBox()->isChecked());  // as the dialog opens
+    dialog.sizeChooser()->setCurrentIndex(
+        dialog.sizeChooser()->findData(gui::ExportImageDialog::Uhd4k));
+    const auto outcome = exportWith(dialog);
+    ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+    QImage image;
+    ASSERT_TRUE(image.load(QString::fromStdString(file.string()), "PNG")) << file;
+    EXPECT_EQ(image.size(), QSize(3840, 2160));
+}
+
+TEST_F(ExportGuiTest, FileFieldShowsThePathAndLongOnesEndInView) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
+    QLineEdit* edit = dialog.fileEdit();
+    const auto room = [edit] {
+        return edit->contentsRect().width() -
+               2 * edit->style()->pixelMetric(QStyle::PM_DefaultFrameWidth, nullptr, edit) - 4;
+    };
+    // A path of a usual length is shown whole.
+    const QString usual =
+        QStringLiteral("/home/radiology/Pictures/2026-11/patient-study-vessels.png");
+    edit->setText(usual);
+    dialog.show();
+    QCoreApplication::processEvents();
+    EXPECT_LE(edit->fontMetrics().horizontalAdvance(usual), room())
+        << usual.toStdString() << " is cut in a field of " << room() << " px";
+    EXPECT_TRUE(ClippingCheck::problems(&dialog).empty());
+    // A very long one: its file name in view, the whole path in the tooltip.
+    const QString longer = QStringLiteral("/data/") + QString(60, QLatin1Char('x')) +
+                           QStringLiteral("/") + QString(60, QLatin1Char('y')) +
+                           QStringLiteral("/final-vessels.png");
+    edit->setText(longer);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(edit->toolTip().toStdString(), longer.toStdString());
+    EXPECT_EQ(edit->cursorPosition(), longer.size());
+    EXPECT_LE(edit->fontMetrics().horizontalAdvance(QStringLiteral("final-vessels.png")), room());
 }
 
 TEST_F(ExportGuiTest, ReportHasTheFindingsAndThePaperChosen) {

@@ -127,9 +127,7 @@ TEST_F(ObjectPanelTest, DataPanelControlsChangeTheViewAndDisableWhereTheyDoNotAp
     EXPECT_EQ(passState(*viewer, "translucent"), render::PassState::Culled);
 
     // For people to look at: the window with the Data panel's controls.
-    if (auto* dock = window_->findChild<QDockWidget*>(QStringLiteral("dataPanelDock"))) {
-        dock->raise();
-    }
+    window_->revealPanel(panel);
     QCoreApplication::processEvents();
     window_->grab().save(QString::fromStdString((panelTestDir() / "data-panel.png").string()));
 

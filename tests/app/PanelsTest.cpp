@@ -22,10 +22,12 @@
 #include <numeric>
 
 #include "GuiFixture.h"
+#include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/DataPanel.h"
 #include "gui/panels/DisplayPanel.h"
 #include "gui/panels/FunctionalPanel.h"
 #include "gui/panels/HistogramWidget.h"
+#include "gui/panels/SidePanel.h"
 #include "gui/panels/VssPanel.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/vss/DepthNormalization.h"
@@ -328,7 +330,7 @@ TEST_F(PanelsTest, FunctionalPanelChoosesArrayMapBinsAndRange) {
     EXPECT_FLOAT_EQ(viewer->style().range->first, 5.0F);
     EXPECT_FLOAT_EQ(viewer->style().range->second, 20.0F);
     EXPECT_DOUBLE_EQ(panel->histogram()->rangeHigh(), 20.0);
-    window_->findChild<QDockWidget*>(QStringLiteral("functionalPanelDock"))->raise();
+    window_->revealPanel(panel);
     QCoreApplication::processEvents();
     window_->grab().save(QString::fromStdString((panelTestDir() / "functional.png").string()));
 
@@ -447,7 +449,7 @@ TEST_F(PanelsTest, DisplayPanelSetsCueBackgroundCameraLegendsAndOverlay) {
     })) << panel->performanceOverlay()->text().toStdString();
     EXPECT_TRUE(panel->performanceOverlay()->isVisible());
     EXPECT_TRUE(panel->performanceOverlay()->text().contains(QStringLiteral("ms")));
-    window_->findChild<QDockWidget*>(QStringLiteral("displayPanelDock"))->raise();
+    window_->revealPanel(panel);
     QCoreApplication::processEvents();
     window_->grab().save(QString::fromStdString((panelTestDir() / "display.png").string()));
 }
@@ -461,7 +463,7 @@ TEST_F(PanelsTest, DataPanelListsMeshesAndArrays) {
     EXPECT_EQ(mesh->text(0), QStringLiteral("tube"));
     EXPECT_EQ(mesh->text(1), QLocale().toString(31 * 32));
     ASSERT_EQ(mesh->childCount(), 2);
-    EXPECT_EQ(mesh->child(1)->text(0), QStringLiteral("wss [Pa]"));
+    EXPECT_TRUE(mesh->child(1)->text(0).startsWith(QStringLiteral("wss [Pa]")));
     EXPECT_TRUE(mesh->child(1)->text(1).contains(QStringLiteral("30")));
     EXPECT_EQ(panel->fileLabel()->text(), QStringLiteral("tube scene"));
     // Visibility: a check box per mesh, all shown.
@@ -515,21 +517,33 @@ TEST_F(PanelsTest, DataPanelHidesAndShowsSingleMeshes) {
     EXPECT_TRUE(viewer->style().hidden.empty());
 }
 
-TEST_F(PanelsTest, DockLayoutIsRestoredAndCanBeReset) {
-    auto docks = window_->findChildren<QDockWidget*>();
-    ASSERT_EQ(docks.size(), 5);
-    QDockWidget* data = window_->findChild<QDockWidget*>(QStringLiteral("dataPanelDock"));
+TEST_F(PanelsTest, SidePanelSectionsAreRestoredAndCanBeReset) {
+    // One side panel; the VSS and Functional sections open at first, the
+    // solver's internals folded.
+    ASSERT_EQ(window_->findChildren<QDockWidget*>().size(), 1);
+    auto* side = window_->sidePanel();
+    ASSERT_EQ(side->sections().size(), 5);
+    auto* data = side->sectionOf(window_->dataPanel());
     ASSERT_NE(data, nullptr);
-    EXPECT_FALSE(data->isHidden());
-    data->hide();
-    window_->close();  // saves the layout
+    EXPECT_TRUE(side->sectionOf(window_->vssPanel())->isExpanded());
+    EXPECT_TRUE(side->sectionOf(window_->functionalPanel())->isExpanded());
+    EXPECT_FALSE(data->isExpanded());
+    EXPECT_FALSE(window_->vssPanel()->advancedSection()->isExpanded());
+    EXPECT_FALSE(window_->vssPanel()->solverChooser()->isVisible());
+    EXPECT_TRUE(window_->vssPanel()->scaleChooser()->isVisible());
+    EXPECT_TRUE(window_->vssPanel()->powerBox()->isVisible());
+
+    data->header()->click();  // open it
+    EXPECT_TRUE(data->isExpanded());
+    EXPECT_TRUE(window_->dataPanel()->isVisible());
+    window_->close();  // remembered
     window_ = std::make_unique<gui::MainWindow>();
     window_->show();
-    data = window_->findChild<QDockWidget*>(QStringLiteral("dataPanelDock"));
-    ASSERT_NE(data, nullptr);
-    EXPECT_TRUE(data->isHidden());
+    data = window_->sidePanel()->sectionOf(window_->dataPanel());
+    EXPECT_TRUE(data->isExpanded());
     window_->resetLayout();
-    EXPECT_FALSE(data->isHidden());
+    EXPECT_FALSE(data->isExpanded());
+    EXPECT_TRUE(window_->sidePanel()->sectionOf(window_->vssPanel())->isExpanded());
     window_->close();  // the next tests start from the default layout again
 }
 

@@ -203,7 +203,7 @@ TEST_F(SegmentationGuiTest, PanelIsOnlyEnabledForScenesFromAVolume) {
     EXPECT_TRUE(panel()->boneRemovalBox()->isChecked());
     ASSERT_TRUE(waitUntil([&] { return panel()->defaultButton()->isEnabled(); }));
     EXPECT_TRUE(panel()->defaultLabel()->text().contains(QStringLiteral("700")));
-    window_->findChild<QDockWidget*>(QStringLiteral("segmentationPanelDock"))->raise();
+    window_->revealPanel(panel());
     QCoreApplication::processEvents();
     window_->grab().save(
         QString::fromStdString((panelTestDir() / "segmentation-panel.png").string()));

@@ -10,6 +10,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStyle>
 #include <QToolButton>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -62,15 +63,24 @@ DataPanel::DataPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), v
     tree_->setColumnCount(ColumnCount);
     tree_->setHeaderLabels({tr("Object / array"), tr("Vertices"), tr("Triangles"), tr("Colour"),
                             settingLabel("objects[].opacity"), tr("Array")});
-    // Shown in the order name, colour, opacity, array, counts (the columns'
-    // logical numbers stay), each as wide as it needs: the controls stay in view.
+    // Shown in the order name, colour, opacity, array (the columns' logical
+    // numbers stay), each as wide as it needs and the tree as wide as they
+    // are: nothing scrolls sideways. The counts are below the tree (counts_),
+    // an array's range in its row.
     for (const int column : {ColorColumn, OpacityColumn, ArrayColumn}) {
         tree_->header()->moveSection(tree_->header()->visualIndex(column), column - 2);
     }
+    tree_->setColumnHidden(VerticesColumn, true);
+    tree_->setColumnHidden(TrianglesColumn, true);
     tree_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
     tree_->header()->setStretchLastSection(false);
+    tree_->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     tree_->setRootIsDecorated(true);
     layout->addWidget(tree_, 1);
+    counts_ = new QLabel(this);
+    counts_->setObjectName(QStringLiteral("dataCounts"));
+    counts_->setWordWrap(true);
+    layout->addWidget(counts_);
     series_ = new QPushButton(tr("DICOM Series…"), this);
     series_->setObjectName(QStringLiteral("dicomSeries"));
     connect(series_, &QPushButton::clicked, this, [this] { emit browseSeries(dicomSource_); });
@@ -192,6 +202,7 @@ void DataPanel::addObjectControls(QTreeWidgetItem* item, int index) {
         array->addItem(QString::fromStdString(pointArray.name), NamedArray);
         array->setItemData(array->count() - 1, QString::fromStdString(pointArray.name), kNameRole);
     }
+    fitToItems(array);
     connect(array, &QComboBox::currentIndexChanged, this, [this, index, array](int choice) {
         changeObject(index, [&](render::ObjectStyle& o) {
             switch (array->itemData(choice).toInt()) {
@@ -223,7 +234,9 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
     if (!scene) {
         file_->setText(tr("No data loaded"));
         file_->setToolTip({});
+        counts_->clear();
         filling_ = false;
+        fitColumns();
         return;
     }
     QStringList names;
@@ -233,8 +246,13 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
     file_->setText(names.isEmpty() ? title : names.join(QStringLiteral(", ")));
     file_->setToolTip(files.join(QLatin1Char('\n')));
     const QLocale locale;
+    QStringList counts;
     int index = 0;
     for (const auto& mesh : scene->meshes) {
+        counts << tr("%1: %2 vertices, %3 triangles")
+                      .arg(QString::fromStdString(mesh.name),
+                           locale.toString(static_cast<qulonglong>(mesh.vertexCount())),
+                           locale.toString(static_cast<qulonglong>(mesh.triangleCount())));
         auto* item = new QTreeWidgetItem(tree_);
         item->setText(NameColumn, QString::fromStdString(mesh.name));
         item->setText(VerticesColumn, locale.toString(static_cast<qulonglong>(mesh.vertexCount())));
@@ -267,11 +285,29 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
                                                                    QLocale().toString(hi, 'g', 4))
                                                : tr("no data"));
             child->setToolTip(NameColumn, tr("Point array (range of its finite values)"));
+            // The name and range across the row (the range column is hidden).
+            child->setFirstColumnSpanned(true);
+            child->setData(NameColumn, Qt::DisplayRole,
+                           tr("%1: %2").arg(label, child->text(VerticesColumn)));
         }
         item->setExpanded(true);
     }
+    counts_->setText(counts.join(QLatin1Char('\n')));
     filling_ = false;
     syncFromViewer();
+    fitColumns();
+}
+
+void DataPanel::fitColumns() {
+    int width = 0;
+    for (int column = 0; column < ColumnCount; ++column) {
+        if (!tree_->isColumnHidden(column)) {
+            tree_->resizeColumnToContents(column);
+            width += tree_->columnWidth(column);
+        }
+    }
+    const int scrollBar = style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, tree_);
+    tree_->setMinimumWidth(width + scrollBar + 2 * tree_->frameWidth());
 }
 
 void DataPanel::syncFromViewer() {

@@ -90,9 +90,12 @@ class DataPanel : public QWidget {
     void chooseColor(int index);
     void addObjectControls(QTreeWidgetItem* item, int index);
     void updateApplicability();
+    /// The tree as wide as its shown columns need.
+    void fitColumns();
 
     ViewerWidget* viewer_;
     QLabel* file_ = nullptr;
+    QLabel* counts_ = nullptr;  ///< vertices and triangles of each mesh
     QTreeWidget* tree_ = nullptr;
     QPushButton* series_ = nullptr;
     QString dicomSource_;

@@ -146,6 +146,7 @@ void FunctionalPanel::sceneChanged() {
             array_->findData(QString::fromStdString(render::defaultArrayName(*scene)));
         array_->setCurrentIndex(std::max(index, 0));
     }
+    fitToItems(array_);
     syncing_ = false;
     arrayChosen();
 }

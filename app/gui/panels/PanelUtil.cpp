@@ -8,7 +8,10 @@
 #include <QFormLayout>
 #include <QSlider>
 #include <QSpinBox>
+#include <QStyle>
+#include <QStyleOptionComboBox>
 #include <QtGlobal>
+#include <algorithm>
 #include <cmath>
 
 #include "common/SettingsSchema.h"
@@ -92,19 +95,44 @@ QString arrayLabel(const scene::Scene& scene, const std::string& name) {
     return QString::fromStdString(name);
 }
 
+void fitToItems(QComboBox* combo) {
+    // The room the style leaves for the text at the hinted width, less the
+    // pixel each side it draws the text in from the field's edges.
+    combo->setMinimumWidth(0);
+    const int hinted = combo->sizeHint().width();
+    QStyleOptionComboBox option;
+    option.initFrom(combo);
+    option.rect = QRect(0, 0, hinted, combo->sizeHint().height());
+    const int field =
+        combo->style()
+            ->subControlRect(QStyle::CC_ComboBox, &option, QStyle::SC_ComboBoxEditField, combo)
+            .width() -
+        2;
+    int widest = 0;
+    for (int i = 0; i < combo->count(); ++i) {
+        int width = combo->fontMetrics().horizontalAdvance(combo->itemText(i));
+        if (!combo->itemIcon(i).isNull()) {
+            width += combo->iconSize().width() + 4;
+        }
+        widest = std::max(widest, width);
+    }
+    combo->setMinimumWidth(hinted + std::max(0, widest - field));
+}
+
 void makeNarrow(QWidget* panel) {
-    constexpr int kComboCharacters = 10;
-    constexpr int kSpinWidth = 64;
+    // Never narrower than their size hint (the widest item; the longest
+    // value with its suffix), also when items or ranges change later.
     for (auto* combo : panel->findChildren<QComboBox*>()) {
-        combo->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
-        combo->setMinimumContentsLength(kComboCharacters);
+        combo->setSizeAdjustPolicy(QComboBox::AdjustToContents);
+        combo->setSizePolicy(QSizePolicy::Minimum, combo->sizePolicy().verticalPolicy());
+        fitToItems(combo);
     }
     for (auto* spin : panel->findChildren<QAbstractSpinBox*>()) {
-        spin->setMinimumWidth(kSpinWidth);
-        spin->setSizePolicy(QSizePolicy::Ignored, spin->sizePolicy().verticalPolicy());
+        spin->setSizePolicy(QSizePolicy::Minimum, spin->sizePolicy().verticalPolicy());
     }
-    if (auto* form = qobject_cast<QFormLayout*>(panel->layout())) {
+    for (auto* form : panel->findChildren<QFormLayout*>()) {
         form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+        form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     }
 }
 

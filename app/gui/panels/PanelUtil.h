@@ -9,6 +9,7 @@
 #include <string>
 #include <string_view>
 
+class QComboBox;
 class QDoubleSpinBox;
 class QSlider;
 class QSpinBox;
@@ -69,9 +70,15 @@ void setUpForSetting(QSlider* slider, std::string_view key);
 [[nodiscard]] double toControl(std::string_view key, double value);
 [[nodiscard]] double fromControl(std::string_view key, double shown);
 
-/// Lets the panels' controls shrink to the dock's width instead of asking
-/// for their widest item / longest value (combo boxes elide, spin boxes
-/// scroll their text).
+/// Makes `combo` at least as wide as its widest item needs to be read in
+/// full (the style's own size hint can fall a few pixels short). Call again
+/// after its items change.
+void fitToItems(QComboBox* combo);
+
+/// Lets a panel fit the side panel's width without cutting any text: every
+/// form row puts its field under its label when side by side they would not
+/// fit, combo boxes are as wide as their widest item and spin boxes never
+/// narrower than their longest value with its suffix.
 void makeNarrow(QWidget* panel);
 
 }  // namespace vv::gui::panels

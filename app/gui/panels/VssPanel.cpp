@@ -11,11 +11,13 @@
 #include <QSignalBlocker>
 #include <QSlider>
 #include <QSpinBox>
+#include <QVBoxLayout>
 #include <algorithm>
 #include <cmath>
 
 #include "common/SettingsSchema.h"
 #include "gui/ViewerWidget.h"
+#include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
@@ -55,12 +57,22 @@ int VssPanel::sliderFromPower(double power) noexcept {
 
 VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), viewer_(viewer) {
     setObjectName(QStringLiteral("vssPanel"));
-    auto* form = new QFormLayout(this);
-
+    // What a newcomer needs first: on/off, colour scale, p; then how the
+    // surface looks; the solver's internals in "Advanced", folded.
+    auto* outer = new QVBoxLayout(this);
+    auto* form = new QFormLayout;
+    outer->addLayout(form);
     enabled_ = new QCheckBox(settingLabel("vss.enabled"), this);
     enabled_->setObjectName(QStringLiteral("vssEnabled"));
     enabled_->setToolTip(tr("A depth-coded surface in the space between the vessels"));
     form->addRow(enabled_);
+
+    scale_ = new QComboBox(this);
+    scale_->setObjectName(QStringLiteral("depthScaleChooser"));
+    for (const auto scale : colormaps::allDepthScales()) {
+        scale_->addItem(engineName(colormaps::displayName(scale)), static_cast<int>(scale));
+    }
+    form->addRow(settingFormLabel("vss.scale"), scale_);
 
     powerSlider_ = new QSlider(Qt::Horizontal, this);
     powerSlider_->setObjectName(QStringLiteral("vssPowerSlider"));
@@ -73,30 +85,6 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     powerRow->addWidget(powerSlider_, 1);
     powerRow->addWidget(powerBox_);
     form->addRow(settingFormLabel("vss.p"), powerRow);
-
-    solver_ = new QComboBox(this);
-    solver_->setObjectName(QStringLiteral("vssSolver"));
-    solver_->addItem(tr("Fast (with tolerance)"), static_cast<int>(vss::SolverKind::Fast));
-    solver_->addItem(tr("Exact"), static_cast<int>(vss::SolverKind::Brute));
-    solver_->addItem(tr("Paper's step"), static_cast<int>(vss::SolverKind::Step));
-    form->addRow(settingFormLabel("vss.solver"), solver_);
-    tolerance_ = new QDoubleSpinBox(this);
-    tolerance_->setObjectName(QStringLiteral("vssTolerance"));
-    setUpForSetting(tolerance_, "vss.tolerance");
-    tolerance_->setKeyboardTracking(false);
-    form->addRow(settingFormLabel("vss.tolerance"), tolerance_);
-    step_ = new QSpinBox(this);
-    step_->setObjectName(QStringLiteral("vssStep"));
-    setUpForSetting(step_, "vss.step");
-    step_->setKeyboardTracking(false);
-    form->addRow(settingFormLabel("vss.step"), step_);
-
-    scale_ = new QComboBox(this);
-    scale_->setObjectName(QStringLiteral("depthScaleChooser"));
-    for (const auto scale : colormaps::allDepthScales()) {
-        scale_->addItem(engineName(colormaps::displayName(scale)), static_cast<int>(scale));
-    }
-    form->addRow(settingFormLabel("vss.scale"), scale_);
 
     isoLines_ = new QSpinBox(this);
     isoLines_->setObjectName(QStringLiteral("vssIsoLines"));
@@ -140,10 +128,34 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     rangeRow->addWidget(rangeMax_);
     form->addRow(tr("Near / far:"), rangeRow);
 
+    auto* advanced = new QWidget(this);
+    auto* advancedForm = new QFormLayout(advanced);
+    solver_ = new QComboBox(this);
+    solver_->setObjectName(QStringLiteral("vssSolver"));
+    solver_->addItem(tr("Fast (with tolerance)"), static_cast<int>(vss::SolverKind::Fast));
+    solver_->addItem(tr("Exact"), static_cast<int>(vss::SolverKind::Brute));
+    solver_->addItem(tr("Paper's step"), static_cast<int>(vss::SolverKind::Step));
+    advancedForm->addRow(settingFormLabel("vss.solver"), solver_);
+    tolerance_ = new QDoubleSpinBox(this);
+    tolerance_->setObjectName(QStringLiteral("vssTolerance"));
+    setUpForSetting(tolerance_, "vss.tolerance");
+    tolerance_->setKeyboardTracking(false);
+    advancedForm->addRow(settingFormLabel("vss.tolerance"), tolerance_);
+    step_ = new QSpinBox(this);
+    step_->setObjectName(QStringLiteral("vssStep"));
+    setUpForSetting(step_, "vss.step");
+    step_->setKeyboardTracking(false);
+    advancedForm->addRow(settingFormLabel("vss.step"), step_);
+
     status_ = new QLabel(this);
     status_->setObjectName(QStringLiteral("vssStatus"));
     status_->setWordWrap(true);
-    form->addRow(status_);
+    advancedForm->addRow(status_);
+
+    advanced_ = new CollapsibleSection(tr("Advanced"), advanced, QStringLiteral("vssAdvanced"),
+                                       false, this);
+    advanced_->setToolTip(tr("How the surface is computed: solver, tolerance, solve time"));
+    outer->addWidget(advanced_);
 
     makeNarrow(this);
     powerBox_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);

@@ -16,13 +16,16 @@ class ViewerWidget;
 
 namespace panels {
 
-/// The "Void Space Surface" panel: on/off, the IDW power p (logarithmic slider
-/// over the setting's range, 0.25-64, and a spin box), solver quality (fast with tolerance, exact,
-/// the paper's every-k-th-contour-pixel step), depth colour scale, iso-lines, lighting, ambient
+class CollapsibleSection;
+
+/// The "Void Space Surface" panel: on/off, depth colour scale, the IDW power p (logarithmic slider
+/// over the setting's range, 0.25-64, and a spin box), iso-lines, lighting, ambient
 /// occlusion, the depth range (the visible vessels', or a fixed one in mm that keeps colours across
-/// views; choosing "fixed" starts from the range on screen), and the last solve's time and error
-/// bound. Every control writes the viewer at once and then emits changed(). Ranges, steps and
-/// labels come from the settings schema (common/SettingsSchema.h).
+/// views; choosing "fixed" starts from the range on screen), and, in a folded "Advanced" section
+/// (advancedSection()), the solver (fast with tolerance, exact, the paper's
+/// every-k-th-contour-pixel step) and the last solve's time and error bound. Every control writes
+/// the viewer at once and then emits changed(). Ranges, steps and labels come from the settings
+/// schema (common/SettingsSchema.h).
 class VssPanel : public QWidget {
     Q_OBJECT
 
@@ -46,6 +49,8 @@ class VssPanel : public QWidget {
     [[nodiscard]] QComboBox* rangeChooser() const noexcept { return rangeMode_; }
     [[nodiscard]] QDoubleSpinBox* rangeMinBox() const noexcept { return rangeMin_; }
     [[nodiscard]] QDoubleSpinBox* rangeMaxBox() const noexcept { return rangeMax_; }
+    /// The folded part with the solver's settings and status ("vssAdvancedSection").
+    [[nodiscard]] CollapsibleSection* advancedSection() const noexcept { return advanced_; }
 
   public slots:
     /// Shows the viewer's current settings (without writing them back).
@@ -79,6 +84,7 @@ class VssPanel : public QWidget {
     QDoubleSpinBox* rangeMin_ = nullptr;
     QDoubleSpinBox* rangeMax_ = nullptr;
     QLabel* status_ = nullptr;
+    CollapsibleSection* advanced_ = nullptr;
     QString bound_;  ///< the error bound of the current settings, as shown
     bool syncing_ = false;
 };

@@ -1,0 +1,218 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Nothing clipped, nothing hidden (issue 18): in English and German, at
+// 1280 x 800 and 1920 x 1080, with the demo shown and every section of the
+// side panel open, every label, button, combo box item, tab, group title,
+// column and field of the side panel and of every dialog shows its whole
+// text, no '&' shows literally, and nothing needs a horizontal scroll bar.
+#include <gtest/gtest.h>
+
+#include <QDir>
+#include <QLayout>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QMessageBox>
+#include <QPointer>
+#include <QTabBar>
+#include <QTranslator>
+#include <QWindow>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "ClippingCheck.h"
+#include "GuiFixture.h"
+#include "gui/ExportImageDialog.h"
+#include "gui/ReportDialog.h"
+#include "gui/SeriesDialog.h"
+#include "gui/panels/CollapsibleSection.h"
+#include "gui/panels/SidePanel.h"
+#include "vv/demo/DemoCtSeries.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/dicom/SeriesWriter.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using vv::test::ClippingCheck;
+using vv::test::waitUntil;
+
+struct Case {
+    const char* language;
+    int width;
+    int height;
+};
+
+std::string caseName(const ::testing::TestParamInfo<Case>& info) {
+    return std::string(info.param.language) + "_" + std::to_string(info.param.width) + "x" +
+           std::to_string(info.param.height);
+}
+
+/// Every problem as one line each, for a failure message.
+std::string listed(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const std::string& problem : problems) {
+        text += "\n  " + problem;
+    }
+    return text;
+}
+
+class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInterface<Case> {
+  protected:
+    void SetUp() override {
+        // As the application does (gui/Translations.cpp): ours and Qt's
+        // translations, numbers in the UI language; before any widget exists.
+        if (QLatin1String(GetParam().language) != QLatin1String("en")) {
+            const QLocale locale(QString::fromLatin1(GetParam().language));
+            auto* own = new QTranslator(QCoreApplication::instance());
+            ASSERT_TRUE(own->load(locale, QStringLiteral("vesselview"), QStringLiteral("_"),
+                                  QStringLiteral(VV_QM_DIR)));
+            QCoreApplication::installTranslator(own);
+            auto* qt = new QTranslator(QCoreApplication::instance());
+            if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                         QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+                QCoreApplication::installTranslator(qt);
+            }
+            QLocale::setDefault(locale);
+        }
+        GuiFixture::SetUp();
+        window_->resize(GetParam().width, GetParam().height);
+        bool shown = false;
+        QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown,
+                         [&shown] { shown = true; });
+        window_->openFiles({QStringLiteral(VV_DEMO_VTP)});
+        ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }))
+            << "the demo did not load";
+        ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    }
+
+    void TearDown() override {
+        GuiFixture::TearDown();
+        for (auto* translator : QCoreApplication::instance()->findChildren<QTranslator*>()) {
+            QCoreApplication::removeTranslator(translator);
+            delete translator;
+        }
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    }
+
+    /// Lets the layouts settle after showing or resizing.
+    static void settle() {
+        for (int i = 0; i < 10; ++i) {
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        }
+    }
+
+    /// Shows `widget` as the user would see it (saved as `name`-<case>.png),
+    /// expects that it cuts nothing off, and hides it again.
+    void expectWhole(QWidget& widget, const std::string& name) {
+        widget.show();
+        // Laid out and on screen, also on a busy machine.
+        EXPECT_TRUE(waitUntil(
+            [&] { return widget.windowHandle() != nullptr && widget.windowHandle()->isExposed(); },
+            10000))
+            << name << " never appeared";
+        if (widget.layout() != nullptr) {
+            widget.layout()->activate();
+        }
+        settle();
+        widget.grab().save(QString::fromStdString(
+            (vv::test::panelTestDir() / (name + "-" + caseName({GetParam(), 0}) + ".png"))
+                .string()));
+        const std::vector<std::string> problems = ClippingCheck::problems(&widget);
+        EXPECT_TRUE(problems.empty()) << "cut off in " << name << ":" << listed(problems);
+        widget.hide();
+    }
+
+    static fs::path demoSeriesDir() { return vv::test::panelTestDir() / "clipping-dicom"; }
+
+    /// A small CT series of the demo tree, for the series chooser.
+    static vv::dicom::DicomScanResult demoSeries() {
+        const fs::path dir = demoSeriesDir();
+        if (!fs::exists(dir)) {
+            vv::demo::DemoCtOptions options;
+            options.dims = {32, 32, 24};
+            options.generations = 3;
+            vv::dicom::CtSeriesWriteOptions write;
+            write.seriesDescription = "demo CTA";
+            write.patientName = "Demo^Patient";
+            (void)vv::dicom::writeCtSeries(dir, vv::demo::generateDemoCt(options).volume, write);
+        }
+        return vv::dicom::scanDicom(dir);
+    }
+};
+
+TEST_P(ClippingTest, SidePanelShowsEveryTextInFull) {
+    auto* side = window_->findChild<vv::gui::panels::SidePanel*>(QStringLiteral("sidePanel"));
+    ASSERT_NE(side, nullptr);
+    for (auto* section : side->findChildren<vv::gui::panels::CollapsibleSection*>()) {
+        section->setExpanded(true);
+    }
+    ASSERT_TRUE(waitForFrames());
+    settle();
+    window_->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("window-" + caseName({GetParam(), 0}) + ".png")).string()));
+    side->widget()->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("side-panel-" + caseName({GetParam(), 0}) + ".png"))
+            .string()));
+    std::vector<std::string> problems = ClippingCheck::problems(side);
+    EXPECT_TRUE(problems.empty()) << "cut off in the side panel:" << listed(problems);
+    // Tabs of docks stacked on each other ("Da…", "Da…") would hide panels.
+    for (const QTabBar* tabs : window_->findChildren<QTabBar*>(Qt::FindDirectChildrenOnly)) {
+        problems = ClippingCheck::problems(tabs);
+        EXPECT_TRUE(tabs->isHidden() || tabs->count() < 2)
+            << "panels hidden behind tabs:" << listed(problems);
+    }
+    EXPECT_LE(side->widget()->minimumSizeHint().width(), side->viewport()->width())
+        << "the side panel's content is wider than the panel";
+}
+
+TEST_P(ClippingTest, SidePanelWithAVolumeShowsEveryTextInFull) {
+    // A CT series: the Segmentation panel shows thresholds in HU, counts, a seed.
+    demoSeries();
+    QPointer<vv::gui::SeriesDialog> dialog;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                     [&dialog](vv::gui::SeriesDialog* shown) { dialog = shown; });
+    bool shown = false;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
+    window_->openDicom(QString::fromStdString(demoSeriesDir().string()));
+    ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
+    ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
+    dialog->accept();
+    ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 120000));
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    ASSERT_NE(window_->volume(), nullptr);
+    auto* side = window_->sidePanel();
+    for (auto* section : side->findChildren<vv::gui::panels::CollapsibleSection*>()) {
+        section->setExpanded(true);
+    }
+    settle();
+    side->widget()->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("side-panel-volume-" + caseName({GetParam(), 0}) + ".png"))
+            .string()));
+    const std::vector<std::string> problems = ClippingCheck::problems(side);
+    EXPECT_TRUE(problems.empty()) << "cut off in the side panel:" << listed(problems);
+}
+
+TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
+    vv::gui::ExportImageDialog image(*window_->viewer(), window_.get());
+    expectWhole(image, "export-image");
+    vv::gui::ReportDialog report(*window_->viewer(), window_->reportSource(), window_.get());
+    expectWhole(report, "report");
+    vv::gui::SeriesDialog series(demoSeries(), window_.get());
+    expectWhole(series, "series");
+    // As Help > About and Help > Keyboard Shortcuts show them.
+    QMessageBox about(QMessageBox::NoIcon, QStringLiteral("About"), window_->aboutText(),
+                      QMessageBox::Close, window_.get());
+    about.setTextFormat(Qt::RichText);
+    expectWhole(about, "about");
+    QMessageBox keys(QMessageBox::NoIcon, QStringLiteral("Keys"), window_->shortcutSummary(),
+                     QMessageBox::Close, window_.get());
+    keys.setTextFormat(Qt::RichText);
+    expectWhole(keys, "shortcuts");
+}
+
+INSTANTIATE_TEST_SUITE_P(LanguagesAndSizes, ClippingTest,
+                         ::testing::Values(Case{"en", 1280, 800}, Case{"en", 1920, 1080},
+                                           Case{"de", 1280, 800}, Case{"de", 1920, 1080}),
+                         caseName);
+
+}  // namespace
