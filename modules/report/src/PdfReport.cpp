@@ -386,6 +386,8 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
     }
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setRenderHint(QPainter::TextAntialiasing);
+    // Images as they are (Flate): JPEG would shift the colours of the view.
+    painter.setRenderHint(QPainter::LosslessImageRendering);
     const QRect page = writer.pageLayout().paintRectPixels(kDpi);
     const QRectF contentRect(0.0, 0.0, page.width(), page.height() - mm(9.0));
     const QString created =
