@@ -213,24 +213,30 @@ std::vector<std::string> onlyIn(const std::vector<std::pair<std::string, std::st
     return result;
 }
 
-const char* const kPatient =
+const std::string kPatient =
     "--patient-name 'Musterfrau^Erika' --patient-id P-4711 --birth-date 19640812 --sex F "
     "--study-date 20260301 --accession A-99 --referring-physician 'Huber^Hans'";
 
-TEST(ReportLanguageTest, GermanReportHasNoEnglishAndNoDecimalPoint) {
-    const fs::path dir = freshDir("de");
-    const fs::path input = writeTube(dir);
-    const fs::path pdf = dir / "bericht.pdf";
+/// The text (outside the views' legends) of the tube's report in `language`:
+/// both views, the statistics of 6 bins, the step solver, the patient.
+std::string reportText(const std::string& language,
+                       const std::vector<std::pair<std::string, std::string>>& views) {
+    const fs::path dir = freshDir(language);
+    const fs::path pdf = dir / "report.pdf";
     std::string output;
-    ASSERT_EQ(runReport("", input, pdf,
-                        "--lang de --view far --second-view anterior --array wss --bins 6 "
-                        "--solver step --note 'Befund: Stenose.' " +
-                            std::string(kPatient),
+    EXPECT_EQ(runReport("", writeTube(dir), pdf,
+                        "--lang " + language +
+                            " --view far --second-view anterior --array wss --bins 6 "
+                            "--solver step --note 'Stenose.' " +
+                            kPatient,
                         output),
               0)
         << output;
-    const std::string text =
-        textOutsideTheViews(words(pdf), {{"Ansicht", "Fernansicht"}, {"Zweite", "Ansicht"}});
+    return textOutsideTheViews(words(pdf), views);
+}
+
+TEST(ReportLanguageTest, GermanReportHasNoEnglishAndNoDecimalPoint) {
+    const std::string text = reportText("de", {{"Ansicht", "Fernansicht"}, {"Zweite", "Ansicht"}});
     const std::vector<std::string> englishOnly = onlyIn(reportStrings(), true);
     EXPECT_GT(englishOnly.size(), 60U);
     for (const std::string& english : englishOnly) {
@@ -250,19 +256,7 @@ TEST(ReportLanguageTest, GermanReportHasNoEnglishAndNoDecimalPoint) {
 }
 
 TEST(ReportLanguageTest, EnglishReportHasNoGerman) {
-    const fs::path dir = freshDir("en");
-    const fs::path input = writeTube(dir);
-    const fs::path pdf = dir / "report.pdf";
-    std::string output;
-    ASSERT_EQ(runReport("", input, pdf,
-                        "--lang en --view far --second-view anterior --array wss --bins 6 "
-                        "--note 'Stenosis.' " +
-                            std::string(kPatient),
-                        output),
-              0)
-        << output;
-    const std::string text =
-        textOutsideTheViews(words(pdf), {{"View", "Far"}, {"Second", "Anterior"}});
+    const std::string text = reportText("en", {{"View", "Far"}, {"Second", "Anterior"}});
     for (const std::string& german : onlyIn(reportStrings(), false)) {
         EXPECT_FALSE(containsWords(text, german)) << "German '" << german << "' in\n" << text;
     }
@@ -292,7 +286,7 @@ TEST(ReportLanguageTest, PatientForMeshesFindingsFirstNamesOnlyAndDisclaimer) {
     ASSERT_EQ(runReport("", input, pdf,
                         "--view far --note 'Findings of the section test.' "
                         "--disclaimer 'Research use only, not validated.' " +
-                            std::string(kPatient),
+                            kPatient,
                         output),
               0)
         << output;

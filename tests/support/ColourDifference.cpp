@@ -3,39 +3,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numbers>
 #include <sstream>
+
+#include "vv/colormaps/ColorVision.h"
 
 namespace vv::test {
 
 namespace {
-
-double linear(int channel) {
-    const double c = channel / 255.0;
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
-double labF(double t) {
-    constexpr double delta = 6.0 / 29.0;
-    return t > delta * delta * delta ? std::cbrt(t) : t / (3.0 * delta * delta) + 4.0 / 29.0;
-}
-
-double degrees(double radians) {
-    return radians * 180.0 / std::numbers::pi;
-}
-
-double radians(double degrees) {
-    return degrees * std::numbers::pi / 180.0;
-}
-
-/// The hue angle in degrees, 0..360 (0 for a neutral colour).
-double hue(double b, double a) {
-    if (a == 0.0 && b == 0.0) {
-        return 0.0;
-    }
-    const double h = degrees(std::atan2(b, a));
-    return h < 0.0 ? h + 360.0 : h;
-}
 
 std::string describe(int column, QRgb got, QRgb want, double difference) {
     std::ostringstream out;
@@ -47,74 +21,11 @@ std::string describe(int column, QRgb got, QRgb want, double difference) {
 
 }  // namespace
 
-Lab toLab(QRgb rgb) noexcept {
-    const double r = linear(qRed(rgb));
-    const double g = linear(qGreen(rgb));
-    const double b = linear(qBlue(rgb));
-    // sRGB to XYZ (D65), relative to the white point.
-    const double x = (0.4124564 * r + 0.3575761 * g + 0.1804375 * b) / 0.95047;
-    const double y = 0.2126729 * r + 0.7151522 * g + 0.0721750 * b;
-    const double z = (0.0193339 * r + 0.1191920 * g + 0.9503041 * b) / 1.08883;
-    const double fx = labF(x);
-    const double fy = labF(y);
-    const double fz = labF(z);
-    return {116.0 * fy - 16.0, 500.0 * (fx - fy), 200.0 * (fy - fz)};
-}
-
-double ciede2000(const Lab& x, const Lab& y) noexcept {
-    const double c1 = std::hypot(x.a, x.b);
-    const double c2 = std::hypot(y.a, y.b);
-    const double cMean7 = std::pow((c1 + c2) / 2.0, 7.0);
-    const double g = 0.5 * (1.0 - std::sqrt(cMean7 / (cMean7 + std::pow(25.0, 7.0))));
-    const double a1 = (1.0 + g) * x.a;
-    const double a2 = (1.0 + g) * y.a;
-    const double c1p = std::hypot(a1, x.b);
-    const double c2p = std::hypot(a2, y.b);
-    const double h1p = hue(x.b, a1);
-    const double h2p = hue(y.b, a2);
-
-    const double dL = y.l - x.l;
-    const double dC = c2p - c1p;
-    double dh = 0.0;
-    if (c1p * c2p != 0.0) {
-        dh = h2p - h1p;
-        if (dh > 180.0) {
-            dh -= 360.0;
-        } else if (dh < -180.0) {
-            dh += 360.0;
-        }
-    }
-    const double dH = 2.0 * std::sqrt(c1p * c2p) * std::sin(radians(dh / 2.0));
-
-    const double lMean = (x.l + y.l) / 2.0;
-    const double cMean = (c1p + c2p) / 2.0;
-    double hMean = h1p + h2p;
-    if (c1p * c2p != 0.0) {
-        if (std::abs(h1p - h2p) <= 180.0) {
-            hMean /= 2.0;
-        } else {
-            hMean = hMean < 360.0 ? (hMean + 360.0) / 2.0 : (hMean - 360.0) / 2.0;
-        }
-    }
-    const double t =
-        1.0 - 0.17 * std::cos(radians(hMean - 30.0)) + 0.24 * std::cos(radians(2.0 * hMean)) +
-        0.32 * std::cos(radians(3.0 * hMean + 6.0)) - 0.20 * std::cos(radians(4.0 * hMean - 63.0));
-    const double dTheta = 30.0 * std::exp(-std::pow((hMean - 275.0) / 25.0, 2.0));
-    const double cMeanP7 = std::pow(cMean, 7.0);
-    const double rC = 2.0 * std::sqrt(cMeanP7 / (cMeanP7 + std::pow(25.0, 7.0)));
-    const double lShift = (lMean - 50.0) * (lMean - 50.0);
-    const double sL = 1.0 + 0.015 * lShift / std::sqrt(20.0 + lShift);
-    const double sC = 1.0 + 0.045 * cMean;
-    const double sH = 1.0 + 0.015 * cMean * t;
-    const double rT = -std::sin(radians(2.0 * dTheta)) * rC;
-    const double l = dL / sL;
-    const double c = dC / sC;
-    const double h = dH / sH;
-    return std::sqrt(l * l + c * c + h * h + rT * c * h);
-}
-
 double ciede2000(QRgb x, QRgb y) noexcept {
-    return ciede2000(toLab(x), toLab(y));
+    const auto srgb = [](QRgb c) {
+        return glm::dvec3(qRed(c) / 255.0, qGreen(c) / 255.0, qBlue(c) / 255.0);
+    };
+    return colormaps::ciede2000(srgb(x), srgb(y));
 }
 
 std::optional<BarPosition> findBar(const QImage& image, const QRect& area, QRgb first, QRgb last,

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Colour differences as a person sees them (CIEDE2000) and finding a legend's
-// colour bar in a rendered image, for the tests of legends in exported files.
+// Colour differences as a person sees them (CIEDE2000 of 8-bit colours) and
+// finding a legend's colour bar in a rendered image, for the tests of
+// legends in exported files.
 #pragma once
 
 #include <QColor>
@@ -12,20 +13,9 @@
 
 namespace vv::test {
 
-/// CIE L*a*b* (D65 white).
-struct Lab {
-    double l = 0.0;
-    double a = 0.0;
-    double b = 0.0;
-};
-
-/// The L*a*b* of an 8-bit sRGB colour (IEC 61966-2-1 transfer, D65).
-[[nodiscard]] Lab toLab(QRgb rgb) noexcept;
-
-/// CIEDE2000 colour difference (kL = kC = kH = 1), as published by Sharma,
-/// Wu and Dalal (2005), "The CIEDE2000 colour-difference formula". Below
-/// about 1 is invisible, below 2 hardly noticeable side by side.
-[[nodiscard]] double ciede2000(const Lab& x, const Lab& y) noexcept;
+/// CIEDE2000 colour difference of two 8-bit sRGB colours (alpha ignored):
+/// colormaps::ciede2000 (Sharma, Wu and Dalal 2005). Below about 1 is
+/// invisible, below 2 hardly noticeable side by side.
 [[nodiscard]] double ciede2000(QRgb x, QRgb y) noexcept;
 
 /// Where a horizontal colour bar lies in an image: its middle row and its

@@ -1,38 +1,24 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// CIEDE2000 against the published test data (Sharma, Wu, Dalal 2005, table 1)
-// and the colour bar finder on a painted bar.
+// CIEDE2000 of 8-bit colours (colormaps::ciede2000, tested against the
+// published data in tests/colormaps) and the colour bar finder on a painted bar.
 #include <gtest/gtest.h>
 
 #include <QPainter>
 
 #include "ColourDifference.h"
+#include "vv/colormaps/ColorVision.h"
 
 namespace vv::test {
 namespace {
 
-TEST(ColourDifference, Ciede2000MatchesThePublishedPairs) {
-    struct Pair {
-        Lab x;
-        Lab y;
-        double expected;
-    };
-    const Pair pairs[] = {
-        {{50.0, 2.6772, -79.7751}, {50.0, 0.0, -82.7485}, 2.0425},
-        {{50.0, 0.0, 0.0}, {50.0, -1.0, 2.0}, 2.3669},
-        {{50.0, 2.49, -0.001}, {50.0, -2.49, 0.0009}, 7.1792},
-        {{50.0, 2.5, 0.0}, {73.0, 25.0, -18.0}, 27.1492},
-        {{60.2574, -34.0099, 36.2677}, {60.4626, -34.1751, 39.4387}, 1.2644},
-        {{22.7233, 20.0904, -46.6940}, {23.0331, 14.9730, -42.5619}, 2.0373},
-    };
-    for (const Pair& p : pairs) {
-        EXPECT_NEAR(ciede2000(p.x, p.y), p.expected, 5e-5);
-        EXPECT_NEAR(ciede2000(p.y, p.x), p.expected, 5e-5);  // symmetric
-    }
-    const Lab white = toLab(qRgb(255, 255, 255));
-    EXPECT_NEAR(white.l, 100.0, 0.01);
-    EXPECT_NEAR(white.a, 0.0, 0.01);
-    EXPECT_NEAR(white.b, 0.0, 0.01);
+TEST(ColourDifference, EightBitColoursGoThroughTheColourMapsCiede2000) {
     EXPECT_EQ(ciede2000(qRgb(10, 200, 30), qRgb(10, 200, 30)), 0.0);
+    // The dimmed top Inferno bin is far from the real one.
+    EXPECT_GT(ciede2000(qRgb(252, 255, 164), qRgb(184, 179, 96)), 10.0);
+    EXPECT_LT(ciede2000(qRgb(252, 255, 164), qRgb(252, 254, 165)), 1.0);
+    EXPECT_DOUBLE_EQ(ciede2000(qRgb(0, 0, 4), qRgb(252, 255, 164)),
+                     colormaps::ciede2000(glm::dvec3(0.0, 0.0, 4.0 / 255.0),
+                                          glm::dvec3(252.0 / 255.0, 1.0, 164.0 / 255.0)));
 }
 
 TEST(ColourDifference, FindsABarAndSeesDimmedColours) {
