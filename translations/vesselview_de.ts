@@ -922,32 +922,12 @@
         <translation>Unter dem Titel des Berichts gedruckt; leer = keine Zeile</translation>
     </message>
     <message>
-        <source>D&amp;isclaimer:</source>
-        <translation>&amp;Hinweis:</translation>
-    </message>
-    <message>
-        <source>&amp;Patient and study</source>
-        <translation>&amp;Patient und Untersuchung</translation>
-    </message>
-    <message>
         <source>Meshes carry no patient data: what you enter here is printed in the report and written to its DICOM exports</source>
         <translation>Netze enthalten keine Patientendaten: Was Sie hier eingeben, steht im Bericht und in seinen DICOM-Exporten</translation>
     </message>
     <message>
-        <source>&amp;Name:</source>
-        <translation>&amp;Name:</translation>
-    </message>
-    <message>
         <source>Family^Given (DICOM)</source>
         <translation>Nachname^Vorname (DICOM)</translation>
-    </message>
-    <message>
-        <source>Patient &amp;ID:</source>
-        <translation>Patienten-&amp;ID:</translation>
-    </message>
-    <message>
-        <source>&amp;Birth date:</source>
-        <translation>&amp;Geburtsdatum:</translation>
     </message>
     <message>
         <source>YYYY-MM-DD</source>
@@ -970,22 +950,6 @@
         <translation>divers</translation>
     </message>
     <message>
-        <source>&amp;Sex:</source>
-        <translation>Ge&amp;schlecht:</translation>
-    </message>
-    <message>
-        <source>S&amp;tudy date:</source>
-        <translation>Un&amp;tersuchungsdatum:</translation>
-    </message>
-    <message>
-        <source>A&amp;ccession number:</source>
-        <translation>Zu&amp;gangsnummer:</translation>
-    </message>
-    <message>
-        <source>Re&amp;ferring physician:</source>
-        <translation>Über&amp;weisender Arzt:</translation>
-    </message>
-    <message>
         <source>The view as shown on screen</source>
         <translation>Die Ansicht wie auf dem Bildschirm</translation>
     </message>
@@ -1004,6 +968,42 @@
     <message>
         <source>The %1 &quot;%2&quot; is not a date: enter it as YYYY-MM-DD.</source>
         <translation>„%2“ ist kein gültiges Datum (%1): bitte als JJJJ-MM-TT eingeben.</translation>
+    </message>
+    <message>
+        <source>Disclai&amp;mer:</source>
+        <translation>&amp;Hinweis:</translation>
+    </message>
+    <message>
+        <source>Patient and stud&amp;y</source>
+        <translation>Patient und Unte&amp;rsuchung</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>Patient ID:</source>
+        <translation>Patienten-ID:</translation>
+    </message>
+    <message>
+        <source>Birth date:</source>
+        <translation>Geburtsdatum:</translation>
+    </message>
+    <message>
+        <source>Sex:</source>
+        <translation>Geschlecht:</translation>
+    </message>
+    <message>
+        <source>Study date:</source>
+        <translation>Untersuchungsdatum:</translation>
+    </message>
+    <message>
+        <source>Accession number:</source>
+        <translation>Zugangsnummer:</translation>
+    </message>
+    <message>
+        <source>Referring physician:</source>
+        <translation>Überweisender Arzt:</translation>
     </message>
 </context>
 <context>

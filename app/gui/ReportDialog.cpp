@@ -176,7 +176,7 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
 
     disclaimer_ = new QLineEdit(disclaimer(settings), this);
     disclaimer_->setToolTip(tr("Printed under the report's title; empty = no line"));
-    form_->addRow(tr("D&isclaimer:"), disclaimer_);
+    form_->addRow(tr("Disclai&mer:"), disclaimer_);
 
     dicomSc_ = addOutput(tr("DICOM Secondary &Capture"), dicomScPath_, QStringLiteral("-sc.dcm"),
                          tr("DICOM files (*.dcm)"));
@@ -198,30 +198,32 @@ QString ReportDialog::disclaimer(const QSettings& settings) {
 }
 
 void ReportDialog::addPatientFields() {
-    patientGroup_ = new QGroupBox(tr("&Patient and study"), this);
+    patientGroup_ = new QGroupBox(tr("Patient and stud&y"), this);
     patientGroup_->setCheckable(true);
     patientGroup_->setChecked(false);
     patientGroup_->setToolTip(
         tr("Meshes carry no patient data: what you enter here is printed in the report and "
            "written to its DICOM exports"));
+    // The fields follow the group's check box in the tab order: no mnemonics
+    // of their own (the dialog's letters are taken).
     auto* fields = new QFormLayout(patientGroup_);
     const auto line = [&](QLineEdit*& edit, const QString& label, const QString& placeholder) {
         edit = new QLineEdit(patientGroup_);
         edit->setPlaceholderText(placeholder);
         fields->addRow(label, edit);
     };
-    line(patientName_, tr("&Name:"), tr("Family^Given (DICOM)"));
-    line(patientId_, tr("Patient &ID:"), QString());
-    line(birthDate_, tr("&Birth date:"), tr("YYYY-MM-DD"));
+    line(patientName_, tr("Name:"), tr("Family^Given (DICOM)"));
+    line(patientId_, tr("Patient ID:"), QString());
+    line(birthDate_, tr("Birth date:"), tr("YYYY-MM-DD"));
     sex_ = new QComboBox(patientGroup_);
     sex_->addItem(tr("not given"), QString());
     sex_->addItem(tr("female"), QStringLiteral("F"));
     sex_->addItem(tr("male"), QStringLiteral("M"));
     sex_->addItem(tr("other"), QStringLiteral("O"));
-    fields->addRow(tr("&Sex:"), sex_);
-    line(studyDate_, tr("S&tudy date:"), tr("YYYY-MM-DD"));
-    line(accession_, tr("A&ccession number:"), QString());
-    line(referring_, tr("Re&ferring physician:"), tr("Family^Given (DICOM)"));
+    fields->addRow(tr("Sex:"), sex_);
+    line(studyDate_, tr("Study date:"), tr("YYYY-MM-DD"));
+    line(accession_, tr("Accession number:"), QString());
+    line(referring_, tr("Referring physician:"), tr("Family^Given (DICOM)"));
     form_->addRow(patientGroup_);
     // DICOM data brings its own patient and study.
     patientGroup_->setVisible(source_.dicomPath.empty());
