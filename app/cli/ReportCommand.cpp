@@ -155,8 +155,6 @@ ReportArguments parse(const std::vector<std::string>& args) {
                                  known.join(QStringLiteral(", ")).toStdString() + ", got '" +
                                  parsed.language + "'");
             }
-        } else if (parsePatientOption(a, parsed)) {
-            // the patient and study of mesh data
         } else if (name == "--second-view") {
             parsed.secondViewName = a.value();
             parsed.secondView = render::namedViewFromName(parsed.secondViewName);
@@ -175,8 +173,8 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.thresholds.below = parseNumber(a.value(), "--below");
         } else if (name == "--above") {
             parsed.thresholds.above = parseNumber(a.value(), "--above");
-        } else if (parseRenderOption(a, parsed)) {
-            // a shared render option (RenderOptions.h)
+        } else if (parseRenderOption(a, parsed) || parsePatientOption(a, parsed)) {
+            // a shared render option (RenderOptions.h), the patient of mesh data
         } else {
             a.takeOneInput(parsed.input, haveInput);
         }
