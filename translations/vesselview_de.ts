@@ -913,10 +913,6 @@
         <translation>&amp;Papier:</translation>
     </message>
     <message>
-        <source>Findings, printed at the end of the report</source>
-        <translation>Befund, am Ende des Berichts gedruckt</translation>
-    </message>
-    <message>
         <source>&amp;Findings:</source>
         <translation>Be&amp;fund:</translation>
     </message>
@@ -989,10 +985,6 @@
         <translation>Patienten &amp;anonymisieren</translation>
     </message>
     <message>
-        <source>Only for data loaded from DICOM: these meshes carry no patient data, so the report has no patient block</source>
-        <translation>Nur für aus DICOM geladene Daten: diese Netze enthalten keine Patientendaten, daher hat der Bericht keinen Patientenblock</translation>
-    </message>
-    <message>
         <source>Print &quot;anonymised&quot; instead of the patient&apos;s data and leave the identifiers out of the DICOM exports</source>
         <translation>„anonymisiert“ statt der Patientendaten drucken und die Kennungen in den DICOM-Exporten weglassen</translation>
     </message>
@@ -1055,6 +1047,102 @@
     <message>
         <source>Exported %1</source>
         <translation>%1 exportiert</translation>
+    </message>
+    <message>
+        <source>Findings, printed first, right after the patient</source>
+        <translation>Befund, zuerst gedruckt, direkt nach dem Patienten</translation>
+    </message>
+    <message>
+        <source>Meshes carry no patient data: enter the patient and study below to print them, or anonymised</source>
+        <translation>Netze enthalten keine Patientendaten: Patient und Untersuchung unten eingeben, um sie (oder „anonymisiert“) zu drucken</translation>
+    </message>
+    <message>
+        <source>Printed under the report&apos;s title; empty = no line</source>
+        <translation>Unter dem Titel des Berichts gedruckt; leer = keine Zeile</translation>
+    </message>
+    <message>
+        <source>Meshes carry no patient data: what you enter here is printed in the report and written to its DICOM exports</source>
+        <translation>Netze enthalten keine Patientendaten: Was Sie hier eingeben, steht im Bericht und in seinen DICOM-Exporten</translation>
+    </message>
+    <message>
+        <source>Family^Given (DICOM)</source>
+        <translation>Nachname^Vorname (DICOM)</translation>
+    </message>
+    <message>
+        <source>YYYY-MM-DD</source>
+        <translation>JJJJ-MM-TT</translation>
+    </message>
+    <message>
+        <source>not given</source>
+        <translation>nicht angegeben</translation>
+    </message>
+    <message>
+        <source>female</source>
+        <translation>weiblich</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>männlich</translation>
+    </message>
+    <message>
+        <source>other</source>
+        <translation>divers</translation>
+    </message>
+    <message>
+        <source>The view as shown on screen</source>
+        <translation>Die Ansicht wie auf dem Bildschirm</translation>
+    </message>
+    <message>
+        <source>as shown on screen</source>
+        <translation>wie auf dem Bildschirm</translation>
+    </message>
+    <message>
+        <source>birth date</source>
+        <translation>Geburtsdatum</translation>
+    </message>
+    <message>
+        <source>study date</source>
+        <translation>Untersuchungsdatum</translation>
+    </message>
+    <message>
+        <source>The %1 &quot;%2&quot; is not a date: enter it as YYYY-MM-DD.</source>
+        <translation>„%2“ ist kein gültiges Datum (%1): bitte als JJJJ-MM-TT eingeben.</translation>
+    </message>
+    <message>
+        <source>Disclai&amp;mer:</source>
+        <translation>&amp;Hinweis:</translation>
+    </message>
+    <message>
+        <source>Patient and stud&amp;y</source>
+        <translation>Patient und Unte&amp;rsuchung</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>Patient ID:</source>
+        <translation>Patienten-ID:</translation>
+    </message>
+    <message>
+        <source>Birth date:</source>
+        <translation>Geburtsdatum:</translation>
+    </message>
+    <message>
+        <source>Sex:</source>
+        <translation>Geschlecht:</translation>
+    </message>
+    <message>
+        <source>Study date:</source>
+        <translation>Untersuchungsdatum:</translation>
+    </message>
+    <message>
+        <source>Accession number:</source>
+        <translation>Zugangsnummer:</translation>
+    </message>
+    <message>
+        <source>Referring physician:</source>
+        <translation>Überweisender Arzt:</translation>
     </message>
 </context>
 <context>
@@ -2074,6 +2162,351 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>How the surface is computed: solver, tolerance, solve time</source>
         <translation>Wie die Fläche berechnet wird: Löser, Toleranz, Rechenzeit</translation>
+    </message>
+</context>
+<context>
+    <name>vv::report::ReportText</name>
+    <message>
+        <source>as saved in the session</source>
+        <translation>wie in der Sitzung gespeichert</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>Object</source>
+        <translation>Objekt</translation>
+    </message>
+    <message>
+        <source>Coverage</source>
+        <translation>Abdeckung</translation>
+    </message>
+    <message>
+        <source>Min</source>
+        <translation>Min</translation>
+    </message>
+    <message>
+        <source>Mean</source>
+        <translation>Mittelwert</translation>
+    </message>
+    <message>
+        <source>Max</source>
+        <translation>Max</translation>
+    </message>
+    <message>
+        <source>Area &lt; %1</source>
+        <translation>Fläche &lt; %1</translation>
+    </message>
+    <message>
+        <source>Area &gt; %1</source>
+        <translation>Fläche &gt; %1</translation>
+    </message>
+    <message>
+        <source>Values in the array&apos;s unit.</source>
+        <translation>Werte in der Einheit des Datenfelds.</translation>
+    </message>
+    <message>
+        <source>Values in %1.</source>
+        <translation>Werte in %1.</translation>
+    </message>
+    <message>
+        <source>Coverage: share of the surface with finite values; the statistics are over that part. Mean and area shares are weighted by surface area, with values interpolated linearly within each triangle.</source>
+        <translation>Abdeckung: Anteil der Oberfläche mit endlichen Werten; die Statistik bezieht sich auf diesen Teil. Mittelwert und Flächenanteile sind nach Oberfläche gewichtet, die Werte innerhalb jedes Dreiecks linear interpoliert.</translation>
+    </message>
+    <message>
+        <source>(unnamed)</source>
+        <translation>(ohne Namen)</translation>
+    </message>
+    <message>
+        <source>No object has finite values of this parameter.</source>
+        <translation>Kein Objekt hat endliche Werte dieses Parameters.</translation>
+    </message>
+    <message>
+        <source>reference</source>
+        <translation>Referenz</translation>
+    </message>
+    <message>
+        <source>brute force</source>
+        <translation>vollständig (Brute Force)</translation>
+    </message>
+    <message>
+        <source>step</source>
+        <translation>Schrittweise</translation>
+    </message>
+    <message>
+        <source>fast</source>
+        <translation>schnell</translation>
+    </message>
+    <message>
+        <source>, every %1th contour pixel</source>
+        <translation>, jedes %1. Konturpixel</translation>
+    </message>
+    <message>
+        <source> (no error bound)</source>
+        <translation> (ohne Fehlerschranke)</translation>
+    </message>
+    <message>
+        <source> (exact)</source>
+        <translation> (exakt)</translation>
+    </message>
+    <message>
+        <source> (max. error %1 of normalised depth)</source>
+        <translation> (max. Fehler %1 der normierten Tiefe)</translation>
+    </message>
+    <message>
+        <source>female</source>
+        <translation>weiblich</translation>
+    </message>
+    <message>
+        <source>male</source>
+        <translation>männlich</translation>
+    </message>
+    <message>
+        <source>other</source>
+        <translation>divers</translation>
+    </message>
+    <message>
+        <source>Patient name</source>
+        <translation>Patientenname</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>Patienten-ID</translation>
+    </message>
+    <message>
+        <source>Birth date</source>
+        <translation>Geburtsdatum</translation>
+    </message>
+    <message>
+        <source>Sex</source>
+        <translation>Geschlecht</translation>
+    </message>
+    <message>
+        <source>Study date</source>
+        <translation>Untersuchungsdatum</translation>
+    </message>
+    <message>
+        <source>Accession number</source>
+        <translation>Zugangsnummer</translation>
+    </message>
+    <message>
+        <source>Referring physician</source>
+        <translation>Überweisender Arzt</translation>
+    </message>
+    <message>
+        <source>Synthetic demo data generated by VesselView: not patient data.</source>
+        <translation>Synthetische Demodaten, von VesselView erzeugt: keine Patientendaten.</translation>
+    </message>
+    <message>
+        <source>Source files</source>
+        <translation>Quelldateien</translation>
+    </message>
+    <message>
+        <source>%1 (names withheld: anonymised report)</source>
+        <translation>%1 (Namen zurückgehalten: anonymisierter Bericht)</translation>
+    </message>
+    <message>
+        <source>Provenance</source>
+        <translation>Herkunft</translation>
+    </message>
+    <message>
+        <source>Void Space Surface</source>
+        <translation>Void Space Surface</translation>
+    </message>
+    <message>
+        <source>Depth colour scale</source>
+        <translation>Tiefen-Farbskala</translation>
+    </message>
+    <message>
+        <source>Interpolation power p</source>
+        <translation>Exponent p</translation>
+    </message>
+    <message>
+        <source>Solver</source>
+        <translation>Löser</translation>
+    </message>
+    <message>
+        <source>Iso-lines</source>
+        <translation>Isolinien</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keine</translation>
+    </message>
+    <message>
+        <source>Vessel depth cue</source>
+        <translation>Tiefenhinweis auf Gefäßen</translation>
+    </message>
+    <message>
+        <source>Ambient occlusion</source>
+        <translation>Umgebungsverdeckung</translation>
+    </message>
+    <message>
+        <source>Anti-aliasing (FXAA)</source>
+        <translation>Kantenglättung (FXAA)</translation>
+    </message>
+    <message>
+        <source>Camera</source>
+        <translation>Kamera</translation>
+    </message>
+    <message>
+        <source>Colour map %1 in %2 bins over %3 – %4.</source>
+        <translation>Farbskala %1 in %2 Stufen über %3 – %4.</translation>
+    </message>
+    <message>
+        <source>Colour map %1 over %2 – %3.</source>
+        <translation>Farbskala %1 über %2 – %3.</translation>
+    </message>
+    <message>
+        <source>Values outside are shown in the end colours.</source>
+        <translation>Werte außerhalb erscheinen in den Endfarben.</translation>
+    </message>
+    <message>
+        <source>Created %1</source>
+        <translation>Erstellt %1</translation>
+    </message>
+    <message>
+        <source>%1, ID %2</source>
+        <translation>%1, ID %2</translation>
+    </message>
+    <message>
+        <source>Page %1 of %2</source>
+        <translation>Seite %1 von %2</translation>
+    </message>
+    <message>
+        <source>Patient and study</source>
+        <translation>Patient und Untersuchung</translation>
+    </message>
+    <message>
+        <source>Findings</source>
+        <translation>Befund</translation>
+    </message>
+    <message>
+        <source>No findings entered.</source>
+        <translation>Kein Befund eingegeben.</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Ansicht</translation>
+    </message>
+    <message>
+        <source>Second view</source>
+        <translation>Zweite Ansicht</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>Parameter statistics — %1</source>
+        <translation>Parameterstatistik — %1</translation>
+    </message>
+    <message>
+        <source>Data</source>
+        <translation>Daten</translation>
+    </message>
+    <message>
+        <source>Rendering settings</source>
+        <translation>Darstellungseinstellungen</translation>
+    </message>
+    <message>
+        <source>Far view</source>
+        <translation>Fernansicht</translation>
+    </message>
+    <message>
+        <source>Medium view</source>
+        <translation>Mittlere Ansicht</translation>
+    </message>
+    <message>
+        <source>Close view</source>
+        <translation>Nahansicht</translation>
+    </message>
+    <message>
+        <source>Anterior view</source>
+        <translation>Ansicht von anterior</translation>
+    </message>
+    <message>
+        <source>Posterior view</source>
+        <translation>Ansicht von posterior</translation>
+    </message>
+    <message>
+        <source>Left view</source>
+        <translation>Ansicht von links</translation>
+    </message>
+    <message>
+        <source>Right view</source>
+        <translation>Ansicht von rechts</translation>
+    </message>
+    <message>
+        <source>Superior view</source>
+        <translation>Ansicht von superior</translation>
+    </message>
+    <message>
+        <source>Inferior view</source>
+        <translation>Ansicht von inferior</translation>
+    </message>
+    <message>
+        <source>Reading the patient and study</source>
+        <translation>Patient und Untersuchung werden gelesen</translation>
+    </message>
+    <message>
+        <source>Rendering the image</source>
+        <translation>Bild wird gerendert</translation>
+    </message>
+    <message>
+        <source>Rendering the report&apos;s view</source>
+        <translation>Ansicht des Berichts wird gerendert</translation>
+    </message>
+    <message>
+        <source>Rendering the second view</source>
+        <translation>Zweite Ansicht wird gerendert</translation>
+    </message>
+    <message>
+        <source>Laying out the PDF</source>
+        <translation>PDF wird gesetzt</translation>
+    </message>
+    <message>
+        <source>default (fitted)</source>
+        <translation>Standard (eingepasst)</translation>
+    </message>
+    <message>
+        <source>Writing the files</source>
+        <translation>Dateien werden geschrieben</translation>
+    </message>
+    <message>
+        <source>yyyy-MM-dd</source>
+        <extracomment>Date format of the report (QDate::toString); e.g. dd.MM.yyyy in German.</extracomment>
+        <translation>dd.MM.yyyy</translation>
+    </message>
+    <message>
+        <source>yyyy-MM-dd HH:mm</source>
+        <extracomment>Date and time format of the report (QDateTime::toString).</extracomment>
+        <translation>dd.MM.yyyy HH:mm</translation>
+    </message>
+    <message>
+        <source>Vessel tree report</source>
+        <translation>Gefäßbaum-Bericht</translation>
+    </message>
+    <message>
+        <source>Not for diagnostic use.</source>
+        <translation>Nicht für diagnostische Zwecke.</translation>
+    </message>
+    <message>
+        <source>Default view, the whole tree fitted</source>
+        <translation>Standardansicht, der ganze Baum eingepasst</translation>
+    </message>
+    <message>
+        <source>%1 view</source>
+        <translation>Ansicht %1</translation>
+    </message>
+    <message>
+        <source>anonymised</source>
+        <translation>anonymisiert</translation>
     </message>
 </context>
 </TS>

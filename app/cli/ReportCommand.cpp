@@ -3,6 +3,9 @@
 //                       [--dicom-sc OUT.dcm] [--dicom-pdf OUT.dcm] [--transparent]
 //                       [--anonymise] [--note TEXT] [--title TEXT] [--second-view VIEW]
 //                       [--paper a4|letter] [--below V] [--above V]
+//                       [--lang en|de] [--disclaimer TEXT] [patient options for meshes:
+//                       --patient-name PN --patient-id ID --birth-date YYYYMMDD
+//                       --sex F|M|O --study-date YYYYMMDD --accession A --referring-physician PN]
 //                       [DICOM options as for render: --series UID, --threshold LO:HI, ...]
 // vesselview-cli report --session F.vvs -o OUT.pdf [the same options]: the
 //                       session's files, camera and display settings (as render --session)
@@ -10,7 +13,11 @@
 //                       [the same options]
 #include "cli/ReportCommand.h"
 
+#include <QCoreApplication>
+#include <QDate>
 #include <QFile>
+#include <QLocale>
+#include <QString>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -25,6 +32,8 @@
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
+#include "common/Language.h"
+#include "common/ResourcePaths.h"
 #include "vv/core/Error.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/report/PdfReport.h"
@@ -49,12 +58,56 @@ struct ReportArguments : RenderOptionValues {
     bool transparent = false;
     bool anonymise = false;
     std::string note;
-    std::string title = "Vessel tree report";
+    std::string title;  ///< empty = the translated default
+    std::string language = "en";
+    std::optional<std::string> disclaimer;  ///< nullopt = the translated default
+    std::optional<report::ReportPatient> patient;
     std::optional<render::NamedView> secondView;
     std::string secondViewName;
     report::PaperSize paper = report::PaperSize::A4;
     report::StatsThresholds thresholds;
 };
+
+/// --birth-date / --study-date: a valid date as YYYYMMDD (DICOM DA).
+std::string dicomDate(const std::string& value, const std::string& option) {
+    const QDate date = QDate::fromString(QString::fromStdString(value), QStringLiteral("yyyyMMdd"));
+    if (value.size() != 8 || !date.isValid()) {
+        throw UsageError(option + " must be a date as YYYYMMDD, got '" + value + "'");
+    }
+    return value;
+}
+
+/// A patient / study option for meshes; false when `name` is none of them.
+bool parsePatientOption(Arguments& a, ReportArguments& parsed) {
+    static const std::vector<std::string> names = {
+        "--patient-name", "--patient-id", "--birth-date",         "--sex",
+        "--study-date",   "--accession",  "--referring-physician"};
+    const std::string& name = a.name();
+    if (std::find(names.begin(), names.end(), name) == names.end()) {
+        return false;
+    }
+    report::ReportPatient& p = parsed.patient ? *parsed.patient : parsed.patient.emplace();
+    const std::string& value = a.value();
+    if (name == "--patient-name") {
+        p.name = value;
+    } else if (name == "--patient-id") {
+        p.id = value;
+    } else if (name == "--birth-date") {
+        p.birthDate = dicomDate(value, name);
+    } else if (name == "--sex") {
+        if (value != "F" && value != "M" && value != "O") {
+            throw UsageError("--sex must be F, M or O, got '" + value + "'");
+        }
+        p.sex = value;
+    } else if (name == "--study-date") {
+        p.studyDate = dicomDate(value, name);
+    } else if (name == "--accession") {
+        p.accession = value;
+    } else {
+        p.referringPhysician = value;
+    }
+    return true;
+}
 
 ReportArguments parse(const std::vector<std::string>& args) {
     ReportArguments parsed;
@@ -92,6 +145,16 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.note = a.value();
         } else if (name == "--title") {
             parsed.title = a.value();
+        } else if (name == "--disclaimer") {
+            parsed.disclaimer = a.value();
+        } else if (name == "--lang") {
+            parsed.language = a.value();
+            const QStringList known = app::availableLanguages();
+            if (!known.contains(QString::fromStdString(parsed.language))) {
+                throw UsageError("report: --lang must be one of " +
+                                 known.join(QStringLiteral(", ")).toStdString() + ", got '" +
+                                 parsed.language + "'");
+            }
         } else if (name == "--second-view") {
             parsed.secondViewName = a.value();
             parsed.secondView = render::namedViewFromName(parsed.secondViewName);
@@ -110,8 +173,8 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.thresholds.below = parseNumber(a.value(), "--below");
         } else if (name == "--above") {
             parsed.thresholds.above = parseNumber(a.value(), "--above");
-        } else if (parseRenderOption(a, parsed)) {
-            // a shared render option (RenderOptions.h)
+        } else if (parseRenderOption(a, parsed) || parsePatientOption(a, parsed)) {
+            // a shared render option (RenderOptions.h), the patient of mesh data
         } else {
             a.takeOneInput(parsed.input, haveInput);
         }
@@ -205,15 +268,21 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
     report::ReportJobOptions job;
     job.view = offscreenOptions(a, scene, input);
     job.viewCaption = report::namedViewCaption(a.viewName);
-    job.viewDescription = !a.viewName.empty() ? a.viewName
-                          : a.sessionCamera   ? "as saved in the session"
-                                              : "default (fitted)";
+    job.viewDescription = !a.viewName.empty() ? report::namedViewCaption(a.viewName)
+                          : a.sessionCamera ? QCoreApplication::translate("vv::report::ReportText",
+                                                                          "as saved in the session")
+                                                  .toStdString()
+                                            : std::string();  // the default view's description
     job.secondView = a.secondView;
     job.secondViewName = a.secondViewName;
     job.legends = a.legends;
     job.transparent = a.transparent;
     job.anonymise = a.anonymise;
     job.title = a.title;
+    if (a.disclaimer) {
+        job.disclaimer = *a.disclaimer;
+    }
+    job.patient = a.patient;
     job.findings = a.note;
     job.paper = a.paper;
     job.thresholds = a.thresholds;
@@ -223,6 +292,10 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
         job.source.dicomPath = a.session ? lastDicomSource(job.source.files) : input;
         job.source.seriesInstanceUid = loaded.seriesInstanceUid;
     }
+    job.source.syntheticDemo =
+        !job.source.files.empty() &&
+        std::all_of(job.source.files.begin(), job.source.files.end(),
+                    [](const fs::path& file) { return app::isDemoFile(file); });
     job.outputs = outputs;
     std::vector<report::WrittenOutput> written;
     try {
@@ -281,6 +354,13 @@ int exitCode(const std::exception_ptr& error) {
     }
 }
 
+/// The report's language: its translator and, for numbers and dates, its locale.
+void useLanguage(const std::string& language) {
+    const QString name = QString::fromStdString(language);
+    (void)app::installTranslations(*QCoreApplication::instance(), name);
+    QLocale::setDefault(QLocale(name));
+}
+
 int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {
     const std::vector<fs::path> inputs = readList(a.batch);
     std::error_code ec;
@@ -294,6 +374,7 @@ int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {
         }
     }
     ensureGuiApplication();
+    useLanguage(a.language);
     render::OffscreenRenderer renderer;
     std::set<std::string> stems;
     int firstFailure = kOk;
@@ -340,6 +421,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     }
     checkOutputs(parsed.input, parsed.outputs);
     ensureGuiApplication();
+    useLanguage(parsed.language);
     render::OffscreenRenderer renderer;
     produce(parsed, parsed.input, parsed.outputs, renderer, out);
     return kOk;

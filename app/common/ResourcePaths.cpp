@@ -117,6 +117,12 @@ std::optional<std::filesystem::path> findDemoFile() {
     return found;
 }
 
+bool isDemoFile(const std::filesystem::path& file) {
+    const auto demo = findDemoFile();
+    std::error_code ec;
+    return demo && std::filesystem::equivalent(file, *demo, ec) && !ec;
+}
+
 std::optional<std::filesystem::path> findTranslationsDir() {
     auto found = findData(kTranslationsRelative);
     std::error_code ec;

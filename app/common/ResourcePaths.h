@@ -37,6 +37,10 @@ namespace vv::app {
 /// demo/vessel-tree.vtp below a data folder of the running executable.
 [[nodiscard]] std::optional<std::filesystem::path> findDemoFile();
 
+/// True when `file` is the bundled demo tree that findDemoFile() finds (the
+/// same file, however named): VesselView's synthetic data, not patient data.
+[[nodiscard]] bool isDemoFile(const std::filesystem::path& file);
+
 /// The folder of the compiled translations (*.qm), if there is one.
 [[nodiscard]] std::optional<std::filesystem::path> findTranslationsDir();
 

@@ -230,6 +230,10 @@ report::ReportSource DocumentController::reportSource() const {
             source.seriesInstanceUid = seriesUid_;
         }
     }
+    // The bundled demo tree: the report says it is synthetic data.
+    source.syntheticDemo = !source.files.empty() &&
+                           std::all_of(source.files.begin(), source.files.end(),
+                                       [](const auto& file) { return vv::app::isDemoFile(file); });
     return source;
 }
 

@@ -664,7 +664,12 @@ void MainWindow::closeEvent(QCloseEvent* event) {
 }
 
 QString MainWindow::aboutText() const {
-    return HelpTexts::about(viewer_->glDescription());
+    // The disclaimer the reports carry (File > Export Report sets it).
+    const QString disclaimer = ReportDialog::disclaimer(QSettings());
+    return HelpTexts::about(viewer_->glDescription()) +
+           (disclaimer.isEmpty() ? QString()
+                                 : QStringLiteral("<p><b>") + disclaimer.toHtmlEscaped() +
+                                       QStringLiteral("</b></p>"));
 }
 
 void MainWindow::showAbout() {

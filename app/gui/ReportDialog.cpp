@@ -3,6 +3,7 @@
 
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDate>
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QDoubleSpinBox>
@@ -10,7 +11,9 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
+#include <QGroupBox>
 #include <QHBoxLayout>
+#include <QLabel>
 #include <QLineEdit>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -28,6 +31,7 @@
 #include "gui/PathField.h"
 #include "gui/ViewerWidget.h"
 #include "vv/render/ViewPresets.h"
+#include "vv/report/PdfReport.h"
 
 namespace vv::gui {
 
@@ -57,6 +61,20 @@ QHBoxLayout* withBrowse(QLineEdit* edit, const QString& title, const QString& fi
     return row;
 }
 
+/// A DICOM date (YYYYMMDD) from what the user typed as YYYY-MM-DD or
+/// YYYYMMDD; "" for an empty field; nullopt when it is no valid date.
+std::optional<std::string> dicomDate(const QString& typed) {
+    QString digits = typed.trimmed();
+    digits.remove(QLatin1Char('-'));
+    if (digits.isEmpty()) {
+        return std::string();
+    }
+    if (digits.size() != 8 || !QDate::fromString(digits, QStringLiteral("yyyyMMdd")).isValid()) {
+        return std::nullopt;
+    }
+    return digits.toStdString();
+}
+
 /// `pdf` with its suffix replaced: "report.pdf" -> "report-sc.dcm".
 QString besidePdf(const QString& pdf, const QString& suffix) {
     const QFileInfo info(pdf);
@@ -84,7 +102,7 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
     form_->addRow(tr("&Paper:"), paper_);
 
     findings_ = new QPlainTextEdit(this);
-    findings_->setPlaceholderText(tr("Findings, printed at the end of the report"));
+    findings_->setPlaceholderText(tr("Findings, printed first, right after the patient"));
     findings_->setTabChangesFocus(true);
     form_->addRow(tr("&Findings:"), findings_);
 
@@ -137,10 +155,10 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
 
     anonymise_ = new QCheckBox(tr("&Anonymise the patient"), this);
     if (source_.dicomPath.empty()) {
-        anonymise_->setEnabled(false);
+        anonymise_->setEnabled(false);  // until a patient is entered (addPatientFields)
         anonymise_->setToolTip(
-            tr("Only for data loaded from DICOM: these meshes carry no patient "
-               "data, so the report has no patient block"));
+            tr("Meshes carry no patient data: enter the patient and study below to print them, "
+               "or anonymised"));
     } else {
         anonymise_->setChecked(settings.value(QLatin1String(kAnonymiseKey), false).toBool());
         anonymise_->setToolTip(
@@ -148,6 +166,11 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
                "of the DICOM exports"));
     }
     form_->addRow(QString(), anonymise_);
+    addPatientFields();
+
+    disclaimer_ = new QLineEdit(disclaimer(settings), this);
+    disclaimer_->setToolTip(tr("Printed under the report's title; empty = no line"));
+    form_->addRow(tr("Disclai&mer:"), disclaimer_);
 
     dicomSc_ = addOutput(tr("DICOM Secondary &Capture"), dicomScPath_, QStringLiteral("-sc.dcm"),
                          tr("DICOM files (*.dcm)"));
@@ -160,6 +183,62 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
     connect(buttons, &QDialogButtonBox::accepted, this, &ReportDialog::accept);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
     form_->addRow(buttons);
+}
+
+QString ReportDialog::disclaimer(const QSettings& settings) {
+    const QVariant stored = settings.value(QLatin1String(kDisclaimerKey));
+    return stored.isValid() ? stored.toString()
+                            : QString::fromStdString(report::defaultDisclaimer());
+}
+
+void ReportDialog::addPatientFields() {
+    patientGroup_ = new QGroupBox(tr("Patient and stud&y"), this);
+    patientGroup_->setCheckable(true);
+    patientGroup_->setChecked(false);
+    patientGroup_->setToolTip(
+        tr("Meshes carry no patient data: what you enter here is printed in the report and "
+           "written to its DICOM exports"));
+    // The fields follow the group's check box in the tab order: no mnemonics
+    // of their own (the dialog's letters are taken).
+    auto* fields = new QFormLayout(patientGroup_);
+    const auto line = [&](QLineEdit*& edit, const QString& label, const QString& placeholder) {
+        edit = new QLineEdit(patientGroup_);
+        edit->setPlaceholderText(placeholder);
+        fields->addRow(label, edit);
+    };
+    line(patientName_, tr("Name:"), tr("Family^Given (DICOM)"));
+    line(patientId_, tr("Patient ID:"), QString());
+    line(birthDate_, tr("Birth date:"), tr("YYYY-MM-DD"));
+    sex_ = new QComboBox(patientGroup_);
+    sex_->addItem(tr("not given"), QString());
+    sex_->addItem(tr("female"), QStringLiteral("F"));
+    sex_->addItem(tr("male"), QStringLiteral("M"));
+    sex_->addItem(tr("other"), QStringLiteral("O"));
+    fields->addRow(tr("Sex:"), sex_);
+    line(studyDate_, tr("Study date:"), tr("YYYY-MM-DD"));
+    line(accession_, tr("Accession number:"), QString());
+    line(referring_, tr("Referring physician:"), tr("Family^Given (DICOM)"));
+    form_->addRow(patientGroup_);
+    // DICOM data brings its own patient and study.
+    patientGroup_->setVisible(source_.dicomPath.empty());
+    if (source_.dicomPath.empty()) {
+        connect(patientGroup_, &QGroupBox::toggled, anonymise_, &QWidget::setEnabled);
+    }
+}
+
+std::optional<report::ReportPatient> ReportDialog::enteredPatient() const {
+    if (!source_.dicomPath.empty() || !patientGroup_->isChecked()) {
+        return std::nullopt;
+    }
+    report::ReportPatient p;
+    p.name = patientName_->text().trimmed().toStdString();
+    p.id = patientId_->text().trimmed().toStdString();
+    p.birthDate = dicomDate(birthDate_->text()).value_or(std::string());
+    p.sex = sex_->currentData().toString().toStdString();
+    p.studyDate = dicomDate(studyDate_->text()).value_or(std::string());
+    p.accession = accession_->text().trimmed().toStdString();
+    p.referringPhysician = referring_->text().trimmed().toStdString();
+    return p;
 }
 
 QCheckBox* ReportDialog::addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
@@ -182,9 +261,8 @@ report::ReportJobOptions ReportDialog::jobOptions() const {
     report::ReportJobOptions job;
     const QSize size = viewPixelSize(viewer_);
     job.view = currentViewOptions(viewer_, size.width(), size.height());
-    // Report text is English, like the rest of the PDF.
-    job.viewCaption = "The view as shown on screen";
-    job.viewDescription = "as shown on screen";
+    job.viewCaption = tr("The view as shown on screen").toStdString();
+    job.viewDescription = tr("as shown on screen").toStdString();
     const QString second = secondView_->currentData().toString();
     if (!second.isEmpty()) {
         job.secondView = render::namedViewFromName(second.toStdString());
@@ -192,6 +270,8 @@ report::ReportJobOptions ReportDialog::jobOptions() const {
     }
     job.legends = viewer_.legendsVisible();
     job.anonymise = anonymise_->isEnabled() && anonymise_->isChecked();
+    job.patient = enteredPatient();
+    job.disclaimer = disclaimer_->text().trimmed().toStdString();
     job.findings = findings_->toPlainText().toStdString();
     job.paper = static_cast<report::PaperSize>(paper_->currentData().toInt());
     if (below_->isEnabled() && below_->isChecked()) {
@@ -225,6 +305,15 @@ QString ReportDialog::problem() const {
     for (const auto& [box, path] : optional) {
         if (box->isChecked()) {
             outputs.emplace_back(*path, box->text().remove(QLatin1Char('&')));
+        }
+    }
+    if (source_.dicomPath.empty() && patientGroup_->isChecked()) {
+        for (const auto& [edit, what] :
+             {std::pair{birthDate_, tr("birth date")}, std::pair{studyDate_, tr("study date")}}) {
+            if (!dicomDate(edit->text())) {
+                return tr("The %1 \"%2\" is not a date: enter it as YYYY-MM-DD.")
+                    .arg(what, edit->text());
+            }
         }
     }
     std::vector<std::filesystem::path> seen;
@@ -263,6 +352,7 @@ ExportWorker* ReportDialog::startExport() {
     if (anonymise_->isEnabled()) {
         settings.setValue(QLatin1String(kAnonymiseKey), anonymise_->isChecked());
     }
+    settings.setValue(QLatin1String(kDisclaimerKey), disclaimer_->text().trimmed());
     const std::shared_ptr<const scene::Scene> scene = viewer_.scene();
     const QString pdf = pdf_->text().trimmed();
     return ExportWorker::launch(

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QString>
+#include <optional>
 
 #include "gui/ExportWorker.h"
 #include "vv/report/ReportJob.h"
@@ -10,6 +11,8 @@ class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
+class QGroupBox;
+class QSettings;
 class QLineEdit;
 class QPlainTextEdit;
 
@@ -21,11 +24,12 @@ class ViewerWidget;
 /// display settings, exactly what is on screen) with the options of
 /// `vesselview-cli report`: paper (A4 / Letter), findings (free text), a
 /// second view (a camera preset), the statistics thresholds (area below /
-/// above a value; only with a parameter shown), anonymise (only for DICOM
-/// data: otherwise disabled with a tooltip, as there is no patient block),
-/// and optional DICOM Secondary Capture, DICOM Encapsulated PDF and PNG
-/// outputs. accept() checks the fields (a message box says what is wrong),
-/// remembers the folder, paper and anonymise choice (QSettings), and runs
+/// above a value; only with a parameter shown), the patient and study of
+/// mesh data (DICOM data brings its own), anonymise (for DICOM data or an
+/// entered patient), the disclaimer line, and optional DICOM Secondary
+/// Capture, DICOM Encapsulated PDF and PNG outputs. accept() checks the
+/// fields (a message box says what is wrong), remembers the folder, paper,
+/// anonymise choice and disclaimer (QSettings), and runs
 /// report::runReportJob() on an ExportWorker with progress and Cancel.
 class ReportDialog : public ExportDialog {
     Q_OBJECT
@@ -52,10 +56,27 @@ class ReportDialog : public ExportDialog {
     [[nodiscard]] QCheckBox* dicomPdfBox() const noexcept { return dicomPdf_; }
     [[nodiscard]] QLineEdit* dicomPdfEdit() const noexcept { return dicomPdfPath_; }
     [[nodiscard]] QCheckBox* pngBox() const noexcept { return png_; }
+    /// The patient and study entered for mesh data (checkable; hidden for
+    /// DICOM data, which carries its own).
+    [[nodiscard]] QGroupBox* patientGroup() const noexcept { return patientGroup_; }
+    [[nodiscard]] QLineEdit* patientNameEdit() const noexcept { return patientName_; }
+    [[nodiscard]] QLineEdit* patientIdEdit() const noexcept { return patientId_; }
+    [[nodiscard]] QLineEdit* birthDateEdit() const noexcept { return birthDate_; }
+    [[nodiscard]] QComboBox* sexChooser() const noexcept { return sex_; }
+    [[nodiscard]] QLineEdit* studyDateEdit() const noexcept { return studyDate_; }
+    [[nodiscard]] QLineEdit* accessionEdit() const noexcept { return accession_; }
+    [[nodiscard]] QLineEdit* referringEdit() const noexcept { return referring_; }
+    [[nodiscard]] QLineEdit* disclaimerEdit() const noexcept { return disclaimer_; }
     [[nodiscard]] QLineEdit* pngEdit() const noexcept { return pngPath_; }
 
     /// The job the fields describe (view = the viewer's, at its size).
     [[nodiscard]] report::ReportJobOptions jobOptions() const;
+
+    /// The disclaimer line of reports and the About box: what `settings`
+    /// holds under kDisclaimerKey, else report::defaultDisclaimer() (translated).
+    [[nodiscard]] static QString disclaimer(const QSettings& settings);
+    /// The QSettings key of the disclaimer line (an empty value = none).
+    static constexpr const char* kDisclaimerKey = "report/disclaimer";
     /// What is wrong with the fields (no PDF name, two outputs on one file,
     /// an output over a data file, a missing folder); empty when fine.
     [[nodiscard]] QString problem() const override;
@@ -65,6 +86,8 @@ class ReportDialog : public ExportDialog {
 
   private:
     /// One optional output: a check box and a path, filled from the PDF's name.
+    void addPatientFields();
+    [[nodiscard]] std::optional<report::ReportPatient> enteredPatient() const;
     QCheckBox* addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
                          const QString& filter);
 
@@ -85,6 +108,15 @@ class ReportDialog : public ExportDialog {
     QLineEdit* dicomPdfPath_ = nullptr;
     QCheckBox* png_ = nullptr;
     QLineEdit* pngPath_ = nullptr;
+    QGroupBox* patientGroup_ = nullptr;
+    QLineEdit* patientName_ = nullptr;
+    QLineEdit* patientId_ = nullptr;
+    QLineEdit* birthDate_ = nullptr;
+    QComboBox* sex_ = nullptr;
+    QLineEdit* studyDate_ = nullptr;
+    QLineEdit* accession_ = nullptr;
+    QLineEdit* referring_ = nullptr;
+    QLineEdit* disclaimer_ = nullptr;
     QFormLayout* form_ = nullptr;
 };
 

@@ -1,44 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/Translations.h"
 
-#include <QCoreApplication>
-#include <QDir>
-#include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
-#include <QTranslator>
-#include <optional>
 
-#include "common/ResourcePaths.h"
+#include "common/Language.h"
 
 namespace vv::gui {
 
-namespace {
-
-const QString kPrefix = QStringLiteral("vesselview_");
-
-std::optional<QString> translationsDir() {
-    if (const auto dir = vv::app::findTranslationsDir()) {
-        return QDir::cleanPath(QString::fromStdString(dir->string()));
-    }
-    return std::nullopt;
-}
-
-}  // namespace
-
 QStringList availableLanguages() {
-    QStringList languages{QStringLiteral("en")};
-    if (const auto dir = translationsDir()) {
-        const QStringList files =
-            QDir(*dir).entryList({kPrefix + QStringLiteral("*.qm")}, QDir::Files, QDir::Name);
-        for (const QString& file : files) {
-            const QString language = file.mid(kPrefix.size()).chopped(3);
-            if (!language.isEmpty() && !languages.contains(language)) {
-                languages << language;
-            }
-        }
-    }
-    return languages;
+    return vv::app::availableLanguages();
 }
 
 QString chooseLanguage(const QString& commandLine, const QSettings& settings) {
@@ -49,33 +20,7 @@ QString chooseLanguage(const QString& commandLine, const QSettings& settings) {
 }
 
 QString installTranslations(QCoreApplication& app, const QString& language) {
-    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
-    if (locale.language() == QLocale::English || locale.language() == QLocale::C) {
-        return QStringLiteral("en");
-    }
-    const auto dir = translationsDir();
-    if (!dir) {
-        return QStringLiteral("en");
-    }
-    auto* own = new QTranslator(&app);
-    // Tries vesselview_de_DE.qm, vesselview_de.qm, … for each UI language.
-    if (!own->load(locale, QStringLiteral("vesselview"), QStringLiteral("_"), *dir)) {
-        delete own;
-        return QStringLiteral("en");
-    }
-    QCoreApplication::installTranslator(own);
-    if (!language.isEmpty()) {
-        QLocale::setDefault(locale);  // numbers and dates as in the chosen language
-    }
-    auto* qt = new QTranslator(&app);
-    if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                 QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-        QCoreApplication::installTranslator(qt);
-    } else {
-        delete qt;
-    }
-    return own->language().isEmpty() ? QLocale::languageToCode(locale.language())
-                                     : own->language().section(QLatin1Char('_'), 0, 0);
+    return vv::app::installTranslations(app, language);
 }
 
 QString languageName(const QString& language) {

@@ -9,6 +9,7 @@
 #include <QTranslator>
 
 #include "GuiFixture.h"
+#include "gui/ReportDialog.h"
 #include "gui/Translations.h"
 #include "vv/dicom/Versions.h"
 #include "vv/meshio/Versions.h"
@@ -58,6 +59,20 @@ TEST_F(AboutTest, AboutBoxNamesTheLibraries) {
         << about.toStdString();
 }
 
+TEST_F(AboutTest, AboutBoxShowsTheReportsDisclaimer) {
+    QSettings settings;
+    const QLatin1String key(gui::ReportDialog::kDisclaimerKey);
+    settings.remove(key);
+    EXPECT_TRUE(window_->aboutText().contains(QStringLiteral("Not for diagnostic use.")))
+        << window_->aboutText().toStdString();
+    settings.setValue(key, QStringLiteral("Research use only & <b>not</b> validated."));
+    const QString about = window_->aboutText();
+    settings.remove(key);
+    EXPECT_TRUE(about.contains(QStringLiteral("Research use only &amp; &lt;b&gt;not&lt;/b&gt;")))
+        << about.toStdString();
+    EXPECT_FALSE(about.contains(QStringLiteral("Not for diagnostic use.")));
+}
+
 TEST_F(AboutTest, GermanTranslationReachesTheMenus) {
     QTranslator german;
     ASSERT_TRUE(german.load(QStringLiteral("vesselview_de"), QStringLiteral(VV_QM_DIR)));
@@ -73,6 +88,8 @@ TEST_F(AboutTest, GermanTranslationReachesTheMenus) {
     EXPECT_TRUE(menus.contains(QStringLiteral("&Datei"))) << menus.join(' ').toStdString();
     EXPECT_TRUE(menus.contains(QStringLiteral("&Ansicht"))) << menus.join(' ').toStdString();
     EXPECT_TRUE(about.contains(QStringLiteral("Bibliotheken"))) << about.toStdString();
+    EXPECT_TRUE(about.contains(QStringLiteral("Nicht für diagnostische Zwecke.")))
+        << about.toStdString();
 }
 
 }  // namespace

@@ -7,14 +7,17 @@
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
+#include <QGroupBox>
 #include <QImage>
 #include <QLineEdit>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPointer>
+#include <QSettings>
 #include <QSpinBox>
 #include <QStyle>
 #include <QTimer>
+#include <QTranslator>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -259,6 +262,57 @@ TEST_F(ExportGuiTest, ReportHasTheFindingsAndThePaperChosen) {
         EXPECT_NE(info.find(letter ? "612 x 792 pts" : "595 x 842 pts (A4)"), std::string::npos)
             << info;
     }
+}
+
+TEST_F(ExportGuiTest, ReportTakesAPatientForMeshesTheDisclaimerAndTheUiLanguage) {
+    ASSERT_TRUE(showTube());
+    // The UI in German, as Translations.cpp installs it.
+    QTranslator german;
+    ASSERT_TRUE(german.load(QStringLiteral("vesselview_de"), QStringLiteral(VV_QM_DIR)));
+    QCoreApplication::installTranslator(&german);
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    const std::shared_ptr<void> restore(nullptr, [&](void*) {
+        QCoreApplication::removeTranslator(&german);
+        QLocale::setDefault(before);
+        QSettings().remove(QLatin1String(gui::ReportDialog::kDisclaimerKey));
+    });
+    QSettings().remove(QLatin1String(gui::ReportDialog::kDisclaimerKey));
+
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    EXPECT_FALSE(dialog.patientGroup()->isHidden());  // a mesh: the patient can be entered
+    EXPECT_FALSE(dialog.anonymiseBox()->isEnabled());
+    dialog.patientGroup()->setChecked(true);
+    EXPECT_TRUE(dialog.anonymiseBox()->isEnabled());
+    dialog.patientNameEdit()->setText(QStringLiteral("Musterfrau^Erika"));
+    dialog.patientIdEdit()->setText(QStringLiteral("P-4711"));
+    dialog.birthDateEdit()->setText(QStringLiteral("1964-08-31"));
+    dialog.sexChooser()->setCurrentIndex(dialog.sexChooser()->findData(QStringLiteral("F")));
+    EXPECT_EQ(dialog.disclaimerEdit()->text(), QStringLiteral("Nicht für diagnostische Zwecke."));
+    dialog.disclaimerEdit()->setText(QStringLiteral("Nur für Forschungszwecke."));
+    dialog.studyDateEdit()->setText(QStringLiteral("2026-02-30"));
+    EXPECT_FALSE(dialog.problem().isEmpty());  // no such date
+    dialog.studyDateEdit()->setText(QStringLiteral("2026-03-01"));
+    EXPECT_TRUE(dialog.problem().isEmpty()) << dialog.problem().toStdString();
+    const fs::path pdf = dir_ / "bericht.pdf";
+    dialog.pdfEdit()->setText(QString::fromStdString(pdf.string()));
+    const auto outcome = exportWith(dialog);
+    ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+
+    std::string text;
+    ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0);
+    for (const char* expected :
+         {"Gefäßbaum-Bericht", "Nur für Forschungszwecke.", "Patient und Untersuchung",
+          "Musterfrau, Erika", "P-4711", "31.08.1964", "weiblich", "01.03.2026", "Befund",
+          "Parameterstatistik", "100,0 %", "Darstellungseinstellungen"}) {
+        EXPECT_NE(text.find(expected), std::string::npos) << expected << " in\n" << text;
+    }
+    for (const char* english : {"Findings", "Patient and study", "Rendering settings",
+                                "Not for diagnostic use.", "100.0 %"}) {
+        EXPECT_EQ(text.find(english), std::string::npos) << english << " in\n" << text;
+    }
+    // The disclaimer is remembered, and the About box shows it.
+    EXPECT_TRUE(window_->aboutText().contains(QStringLiteral("Nur für Forschungszwecke.")));
 }
 
 TEST_F(ExportGuiTest, AnonymiseOnlyForDicomData) {

@@ -259,30 +259,42 @@ bool allowedInAnonymisedExport(const DcmTagKey& tag) {
 
 TEST_F(DicomExportTest, AnonymisedExportFollowsTheBasicConfidentialityProfile) {
     const fs::path dir = test::testDir("dicom-anon");
-    // A source study with every identifying field set to a recognisable value.
+    // A source study with every identifying field set to a value that cannot
+    // turn up by chance in what the export itself makes (fresh UIDs, binary
+    // data): long, random-looking names and IDs; the time with its fraction
+    // (13 characters; a UID could hold its digits only across a dot); the
+    // dates (8 digits) are the shortest.
     DicomStudy study;
     study.studyInstanceUid = "1.2.826.0.1.3680043.2.1125.4242";
-    study.studyId = "STUDY-77";
+    study.studyId = "STUDY-QX7W4Z";
     study.studyDate = "20230102";
-    study.studyTime = "101112";
+    study.studyTime = "101112.482913";
     ReportPatient patient;
-    patient.name = "Doe^Jane";
-    patient.id = "PID-0042";
+    patient.name = "Quillfeatherby^Zenobiaxa";
+    patient.id = "PID-7Q4X-9KZ2";
     patient.birthDate = "19600215";
     patient.sex = "F";
     patient.studyDate = "20230102";
-    patient.accession = "ACC-9";
-    patient.referringPhysician = "Smith^John";
+    patient.accession = "ACC-Q7W3-5581";
+    patient.referringPhysician = "Throgmortonix^Ignatiusz";
     patient.anonymise = true;
     study.patient = patient;
-    const std::vector<std::string> identifying = {
-        "Doe",    "Jane",  "PID-0042", "19600215", "20230102",
-        "101112", "ACC-9", "Smith",    "STUDY-77", "1.2.826.0.1.3680043.2.1125.4242"};
+    const std::vector<std::string> identifying = {"Quillfeatherby",
+                                                  "Zenobiaxa",
+                                                  "PID-7Q4X-9KZ2",
+                                                  "19600215",
+                                                  "20230102",
+                                                  "101112.482913",
+                                                  "ACC-Q7W3-5581",
+                                                  "Throgmortonix",
+                                                  "Ignatiusz",
+                                                  "STUDY-QX7W4Z",
+                                                  "1.2.826.0.1.3680043.2.1125.4242"};
 
     // The report PDF lists a source folder named after the patient.
     ReportContent content;
     content.patient = patient;
-    content.sources = {"/data/Doe_Jane_PID-0042/IM0001.dcm"};
+    content.sources = {"/data/Quillfeatherby_Zenobiaxa_PID-7Q4X-9KZ2/IM0001.dcm"};
     content.view.image = test::testImage(reportImageWidth(PaperSize::A4), 400);
     content.view.caption = "Far view";
     const QByteArray pdf = renderPdf(content, PaperSize::A4);
@@ -342,9 +354,9 @@ TEST_F(DicomExportTest, AnonymisedExportFollowsTheBasicConfidentialityProfile) {
         std::ifstream in(file, std::ios::binary);
         std::string raw((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
         // The compressed PDF and the pixels are binary: a short name such as
-        // "Doe" turns up in them by chance (about once in 300 runs). What they
-        // show is checked elsewhere (pdftotext below; the image is a gradient),
-        // so their bytes are blanked before the search.
+        // "Doe" turned up in them by chance (about once in 300 runs). What they
+        // show is checked on their decompressed text (pdftotext below; the
+        // image is a gradient), so their bytes are blanked before the search.
         for (const DcmTagKey& tag : {DCM_EncapsulatedDocument, DCM_PixelData}) {
             const Uint8* bytes = nullptr;
             unsigned long count = 0;

@@ -59,10 +59,15 @@ class PdfReportTest : public ::testing::Test {
         c.parameter = p;
     }
 
-    /// The PDF's text (pdftotext -layout).
+    /// This process's folder of the PDFs text() writes.
+    static const fs::path& dir() {
+        static const fs::path folder = test::testDir("pdf-text");
+        return folder;
+    }
+
+    /// The PDF's text (pdftotext -layout), written as dir()/name.pdf first.
     static std::string text(const QByteArray& pdf, const std::string& name) {
-        static const fs::path dir = test::testDir("pdf-text");
-        const fs::path file = dir / (name + ".pdf");
+        const fs::path file = dir() / (name + ".pdf");
         {
             std::ofstream out(file, std::ios::binary);
             out.write(pdf.constData(), pdf.size());
@@ -100,7 +105,6 @@ TEST_F(PdfReportTest, A4ReportHoldsEverySection) {
                                  "ACC-9",
                                  "Smith, John",
                                  "vessels.vtp",
-                                 "/data/case-17",
                                  "Parameter statistics",
                                  "left ICA",
                                  "right ICA",
@@ -117,21 +121,29 @@ TEST_F(PdfReportTest, A4ReportHoldsEverySection) {
                                  "Page 1 of"}) {
         EXPECT_NE(t.find(expected), std::string::npos) << "missing '" << expected << "' in\n" << t;
     }
+    // Source files by name only: no folder (home or build paths).
+    EXPECT_EQ(t.find("/data/case-17"), std::string::npos) << t;
+    // The default disclaimer under the title; the findings before the view.
+    EXPECT_NE(t.find("Not for diagnostic use."), std::string::npos) << t;
+    EXPECT_LT(t.find("Low wall shear stress"), t.find("Far view")) << t;
+    EXPECT_LT(t.find("Not for diagnostic use."), t.find("Patient and study")) << t;
 }
 
 TEST_F(PdfReportTest, AnonymisedPatientShowsNoIdentifiers) {
     ReportContent c = content(PaperSize::A4);
     ReportPatient patient;
-    patient.name = "Doe^Jane";
-    patient.id = "PID-0042";
+    patient.name = "Quillfeatherby^Zenobiaxa";
+    patient.id = "PID-7Q4X-9KZ2";
     patient.anonymise = true;
     c.patient = patient;
     // Patient data folders are often named after the patient.
-    c.sources = {"/data/Doe_Jane_PID-0042/CTA/IM0001.dcm",
-                 "/data/Doe_Jane_PID-0042/CTA/IM0002.dcm"};
+    c.sources = {"/data/Quillfeatherby_Zenobiaxa_PID-7Q4X-9KZ2/CTA/IM0001.dcm",
+                 "/data/Quillfeatherby_Zenobiaxa_PID-7Q4X-9KZ2/CTA/IM0002.dcm"};
     const std::string t = text(renderPdf(c, PaperSize::A4), "anonymised");
-    EXPECT_EQ(t.find("Doe"), std::string::npos) << t;
-    EXPECT_EQ(t.find("PID-0042"), std::string::npos) << t;
+    // Values that cannot occur by chance, searched in the decompressed text.
+    for (const char* identifying : {"Quillfeatherby", "Zenobiaxa", "PID-7Q4X-9KZ2"}) {
+        EXPECT_EQ(t.find(identifying), std::string::npos) << identifying << " in\n" << t;
+    }
     EXPECT_EQ(t.find("IM0001"), std::string::npos) << t;
     EXPECT_NE(t.find("anonymised"), std::string::npos);
     EXPECT_NE(t.find("2 (names withheld"), std::string::npos) << t;
@@ -150,6 +162,61 @@ TEST_F(PdfReportTest, LetterWithoutPatientOrParameterLeavesThemOut) {
     EXPECT_EQ(t.find("Parameter statistics"), std::string::npos);
     EXPECT_NE(t.find("Rendering settings"), std::string::npos);
     EXPECT_NE(t.find("Depth behind nearest vessel"), std::string::npos);  // the legend
+}
+
+TEST_F(PdfReportTest, TablesAreNeverSplitAcrossPages) {
+    // Findings of growing length push the tables down over the page break:
+    // whatever the length, each table's rows share one page.
+    ReportContent c = content(PaperSize::A4);
+    addParameter(c);
+    ReportParameter& p = *c.parameter;
+    p.stats.resize(6, p.stats.front());
+    for (std::size_t i = 0; i < p.stats.size(); ++i) {
+        p.stats[i].object = "segment-" + std::to_string(i + 1);
+    }
+    c.settings.vss.enabled = true;
+    const std::vector<std::string> settings = {"Void Space Surface",    "Depth colour scale",
+                                               "Interpolation power p", "Iso-lines",
+                                               "Ambient occlusion",     "Camera"};
+    int splitsTried = 0;
+    for (int lines = 0; lines <= 60; lines += 4) {
+        c.findings.clear();
+        for (int i = 0; i < lines; ++i) {
+            c.findings += "Finding line " + std::to_string(i + 1) + ".\n";
+        }
+        const std::string name = "tables-" + std::to_string(lines);
+        (void)text(renderPdf(c, PaperSize::A4), name);  // writes dir()/name.pdf
+        std::vector<std::string> pages;
+        for (int page = 1; page <= 3; ++page) {
+            std::string out;
+            test::runTool("pdftotext -f " + std::to_string(page) + " -l " + std::to_string(page) +
+                              " '" + (dir() / (name + ".pdf")).string() + "' -",
+                          out);
+            pages.push_back(out);
+        }
+        const auto pageOf = [&](const std::string& needle) {
+            int found = 0;
+            for (std::size_t i = 0; i < pages.size(); ++i) {
+                if (pages[i].find(needle) != std::string::npos) {
+                    found = static_cast<int>(i) + 1;
+                }
+            }
+            return found;
+        };
+        SCOPED_TRACE("findings of " + std::to_string(lines) + " lines");
+        const int table = pageOf("segment-1");
+        ASSERT_GT(table, 0);
+        for (const auto& s : p.stats) {
+            EXPECT_EQ(pageOf(s.object), table) << s.object;
+        }
+        EXPECT_EQ(pageOf("Coverage: share"), table);  // the note stays with the table
+        const int grid = pageOf(settings.front());
+        for (const std::string& label : settings) {
+            EXPECT_EQ(pageOf(label), grid) << label;
+        }
+        splitsTried += table > 1 ? 1 : 0;
+    }
+    EXPECT_GT(splitsTried, 0);  // some lengths moved the table to the next page
 }
 
 TEST_F(PdfReportTest, RefusesViewsBelowPrintResolution) {

@@ -115,6 +115,24 @@ QImage strip(const std::vector<glm::u8vec4>& table) {
     return image;
 }
 
+/// The colour bar: one opaque rectangle per entry of `table` (a 1-pixel-high
+/// strip), each reaching to the bar's end so that no seam shows. Not an image:
+/// a PDF paints images with the brush's alpha (the box's, dimming them), may
+/// store them as JPEG, and viewers smooth them when enlarged; rectangles keep
+/// the colour map's exact colours in every output.
+void paintBar(QPainter& painter, const QRectF& rect, const QImage& table) {
+    painter.save();
+    painter.setPen(Qt::NoPen);
+    painter.setRenderHint(QPainter::Antialiasing, false);
+    const int entries = table.width();
+    for (int i = 0; i < entries; ++i) {
+        const double x = rect.left() + rect.width() * static_cast<double>(i) / entries;
+        painter.fillRect(QRectF(x, rect.top(), rect.right() - x, rect.height()),
+                         QColor::fromRgb(table.pixel(i, 0)));
+    }
+    painter.restore();
+}
+
 /// One legend box: title, colour bar, ticks and labels.
 /// `titles`: the title, then shorter forms of it; the first that fits is
 /// drawn, else the last one elided.
@@ -136,8 +154,7 @@ void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStr
                      fm.elidedText(title, Qt::ElideRight, inner.width()));
 
     const QRectF barRect(inner.left(), titleRect.bottom(), inner.width(), m.bar);
-    painter.setRenderHint(QPainter::SmoothPixmapTransform, false);
-    painter.drawImage(barRect, bar);
+    paintBar(painter, barRect, bar);
     painter.setBrush(Qt::NoBrush);
     painter.setPen(QPen(QColor(235, 235, 235), 1.0));
     painter.drawRect(barRect);

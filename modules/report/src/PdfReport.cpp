@@ -5,20 +5,18 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QFont>
-#include <QFontMetricsF>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
-#include <QTextLayout>
-#include <QTimeZone>
 #include <algorithm>
 #include <cmath>
-#include <functional>
 #include <string_view>
 #include <utility>
 #include <vector>
 
+#include "PdfFlow.h"
+#include "ReportText.h"
 #include "vv/Version.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
@@ -29,27 +27,16 @@ namespace vv::report {
 
 namespace {
 
-constexpr int kDpi = 300;
+using pdf::Flow;
+using pdf::font;
+using pdf::kDpi;
+using pdf::mm;
+
 constexpr double kMarginSideMm = 18.0;
 constexpr double kMarginTopMm = 15.0;
 constexpr double kMarginBottomMm = 15.0;
 /// The legends are laid out as on a view this many logical pixels wide.
 constexpr double kLegendViewWidth = 1100.0;
-const char* const kFontFamily = "DejaVu Sans";
-
-const QColor kInk(28, 32, 38);
-const QColor kMuted(96, 104, 114);
-const QColor kAccent(31, 78, 121);
-const QColor kRule(190, 198, 206);
-const QColor kZebra(242, 245, 248);
-
-double mm(double millimetres) {
-    return millimetres / 25.4 * kDpi;
-}
-
-QString qs(const std::string& text) {
-    return QString::fromStdString(text);
-}
 
 QPageSize pageSize(PaperSize paper) {
     return QPageSize(paper == PaperSize::A4 ? QPageSize::A4 : QPageSize::Letter);
@@ -59,174 +46,8 @@ double contentWidthMm(PaperSize paper) {
     return pageSize(paper).size(QPageSize::Millimeter).width() - 2.0 * kMarginSideMm;
 }
 
-/// Up to 3 significant digits, no exponent for ordinary magnitudes.
-QString number(double value) {
-    if (!std::isfinite(value)) {
-        return QStringLiteral("\u2014");
-    }
-    const double a = std::abs(value);
-    if (a == 0.0) {
-        return QStringLiteral("0");
-    }
-    if (a >= 1e5 || a < 1e-3) {
-        return QString::number(value, 'g', 3);
-    }
-    const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(a))), 0, 4);
-    return QString::number(value, 'f', decimals);
-}
-
-/// A value as given (a threshold, p): up to 6 significant digits, no trailing zeros.
-QString exact(double value) {
-    return QString::number(value, 'g', 6);
-}
-
-QString percent(double fraction) {
-    return QString::number(fraction * 100.0, 'f', 1) + " %";
-}
-
-QString withUnit(const QString& value, const std::string& unit) {
-    return unit.empty() ? value : value + QChar(0x202F) + qs(unit);
-}
-
-QFont font(double points, bool bold = false, bool italic = false) {
-    QFont f(QString::fromLatin1(kFontFamily));
-    f.setPointSizeF(points);
-    f.setBold(bold);
-    f.setItalic(italic);
-    f.setStyleHint(QFont::SansSerif);
-    return f;
-}
-
-/// Lays the report out top to bottom over pages. Run twice: a dry run
-/// (draw = false) counts the pages; the second run paints.
-class Flow {
-  public:
-    Flow(QPainter& painter, QPdfWriter& writer, const QRectF& content, bool draw)
-        : painter_(painter), writer_(writer), content_(content), draw_(draw), y_(content.top()) {}
-
-    [[nodiscard]] bool drawing() const noexcept { return draw_; }
-    [[nodiscard]] QPainter& painter() noexcept { return painter_; }
-    [[nodiscard]] double left() const noexcept { return content_.left(); }
-    [[nodiscard]] double width() const noexcept { return content_.width(); }
-    [[nodiscard]] double y() const noexcept { return y_; }
-    [[nodiscard]] int page() const noexcept { return page_; }
-    void advance(double dy) { y_ += dy; }
-
-    /// Starts a new page unless `height` still fits on this one.
-    void ensure(double height) {
-        if (y_ + height > content_.bottom() && y_ > content_.top()) {
-            newPage();
-        }
-    }
-    void newPage() {
-        if (draw_) {
-            pageDone_(page_);
-            writer_.newPage();
-        }
-        ++page_;
-        y_ = content_.top();
-    }
-    void onPageDone(std::function<void(int)> callback) { pageDone_ = std::move(callback); }
-    void finish() {
-        if (draw_) {
-            pageDone_(page_);
-        }
-    }
-
-    /// Height of `text` in `f` wrapped to `width`.
-    [[nodiscard]] double textHeight(const QString& text, const QFont& f, double w,
-                                    int wrap = Qt::TextWordWrap) const {
-        const QFontMetricsF fm(f, &writer_);
-        return fm.boundingRect(QRectF(0, 0, w, 1e6), wrap, text).height();
-    }
-    /// Draws `text` at the cursor (wrapped) and advances by its height.
-    void paragraph(const QString& text, const QFont& f, const QColor& colour,
-                   double spaceAfter = 0.0) {
-        const double h = textHeight(text, f, width());
-        ensure(h);
-        if (draw_) {
-            painter_.setFont(f);
-            painter_.setPen(colour);
-            painter_.drawText(QRectF(left(), y_, width(), h), Qt::TextWordWrap, text);
-        }
-        y_ += h + spaceAfter;
-    }
-    void text(const QRectF& box, const QString& text, const QFont& f, const QColor& colour,
-              int flags) {
-        if (draw_) {
-            painter_.setFont(f);
-            painter_.setPen(colour);
-            painter_.drawText(box, flags, text);
-        }
-    }
-    void rule(double at, const QColor& colour, double thicknessMm) {
-        if (draw_) {
-            painter_.setPen(QPen(colour, mm(thicknessMm)));
-            painter_.drawLine(QPointF(left(), at), QPointF(left() + width(), at));
-        }
-    }
-    void fill(const QRectF& box, const QColor& colour) {
-        if (draw_) {
-            painter_.fillRect(box, colour);
-        }
-    }
-
-    /// A section heading kept together with `keep` of what follows.
-    void heading(const QString& title, double keep) {
-        const QFont f = font(11.0, true);
-        const double h = textHeight(title, f, width());
-        y_ += mm(5.0);
-        ensure(h + mm(2.5) + keep);
-        text(QRectF(left(), y_, width(), h), title, f, kAccent, Qt::AlignLeft | Qt::AlignBottom);
-        y_ += h + mm(0.8);
-        rule(y_, kRule, 0.25);
-        y_ += mm(2.0);
-    }
-
-  private:
-    QPainter& painter_;
-    QPdfWriter& writer_;
-    QRectF content_;
-    bool draw_;
-    double y_;
-    int page_ = 1;
-    std::function<void(int)> pageDone_ = [](int) {};
-};
-
-/// Label / value pairs in `columns` columns (labels muted, values ink).
-/// Values wrap at word boundaries, or anywhere with `wrapAnywhere` (paths).
-void fieldGrid(Flow& flow, const std::vector<std::pair<QString, QString>>& fields, int columns,
-               bool wrapAnywhere = false) {
-    const int wrap = wrapAnywhere ? Qt::TextWrapAnywhere : Qt::TextWordWrap;
-    const QFont labelFont = font(8.0);
-    const QFont valueFont = font(9.5);
-    const double gap = mm(6.0);
-    const double columnWidth = (flow.width() - gap * (columns - 1)) / columns;
-    const double labelWidth = std::min(mm(40.0), columnWidth * 0.42);
-    const double valueWidth = columnWidth - labelWidth;
-    for (std::size_t row = 0; row * columns < fields.size(); ++row) {
-        double h = 0.0;
-        for (int c = 0; c < columns; ++c) {
-            const std::size_t i = row * columns + c;
-            if (i < fields.size()) {
-                h = std::max({h, flow.textHeight(fields[i].second, valueFont, valueWidth, wrap),
-                              flow.textHeight(fields[i].first, labelFont, labelWidth)});
-            }
-        }
-        flow.ensure(h);
-        for (int c = 0; c < columns; ++c) {
-            const std::size_t i = row * columns + c;
-            if (i >= fields.size()) {
-                continue;
-            }
-            const double x = flow.left() + c * (columnWidth + gap);
-            flow.text(QRectF(x, flow.y(), labelWidth, h), fields[i].first, labelFont, kMuted,
-                      Qt::AlignLeft | Qt::AlignVCenter | Qt::TextWordWrap);
-            flow.text(QRectF(x + labelWidth, flow.y(), valueWidth, h), fields[i].second, valueFont,
-                      kInk, Qt::AlignLeft | Qt::AlignVCenter | wrap);
-        }
-        flow.advance(h + mm(1.6));
-    }
+QString onOff(bool on) {
+    return on ? ReportText::tr("on") : ReportText::tr("off");
 }
 
 /// The view image across the content width, its legends painted over it as
@@ -250,116 +71,160 @@ void viewBlock(Flow& flow, const ReportView& view) {
         p.scale(scale, scale);
         render::paintLegends(p, QRectF(0.0, 0.0, kLegendViewWidth, h / scale), view.legends);
         p.restore();
-        p.setPen(QPen(kRule, mm(0.2)));
+        p.setPen(QPen(pdf::kRule, mm(0.2)));
         p.setBrush(Qt::NoBrush);
         p.drawRect(box);
     }
     flow.advance(h + mm(1.5));
     if (!view.caption.empty()) {
         flow.text(QRectF(flow.left(), flow.y(), w, captionHeight), qs(view.caption), captionFont,
-                  kMuted, Qt::AlignLeft | Qt::TextWordWrap);
+                  pdf::kMuted, Qt::AlignLeft | Qt::TextWordWrap);
         flow.advance(captionHeight);
     }
 }
 
-void statsTable(Flow& flow, const ReportParameter& parameter) {
-    QStringList headers = {QStringLiteral("Object"), QStringLiteral("Coverage"),
-                           QStringLiteral("Min"), QStringLiteral("Mean"), QStringLiteral("Max")};
-    if (parameter.thresholds.below) {
-        headers << QStringLiteral("Area < ") +
-                       withUnit(exact(*parameter.thresholds.below), parameter.unit);
+/// The statistics table: one row per object, its header repeated on a new
+/// page; on one page (with its note) whenever it fits on one.
+class StatsTable {
+  public:
+    StatsTable(const Flow& flow, const ReportParameter& parameter) : parameter_(parameter) {
+        headers_ = {ReportText::tr("Object"), ReportText::tr("Coverage"), ReportText::tr("Min"),
+                    ReportText::tr("Mean"), ReportText::tr("Max")};
+        if (parameter.thresholds.below) {
+            headers_ << ReportText::tr("Area < %1")
+                            .arg(withUnit(exact(*parameter.thresholds.below), parameter.unit));
+        }
+        if (parameter.thresholds.above) {
+            headers_ << ReportText::tr("Area > %1")
+                            .arg(withUnit(exact(*parameter.thresholds.above), parameter.unit));
+        }
+        columns_ = static_cast<int>(headers_.size());
+        // The object column takes what the numeric ones leave.
+        const double numeric = mm(std::min(24.0, 110.0 / (columns_ - 1)));
+        widths_.assign(static_cast<std::size_t>(columns_), numeric);
+        widths_[0] = flow.width() - numeric * (columns_ - 1);
+        for (int c = 0; c < columns_; ++c) {
+            headHeight_ = std::max(headHeight_, flow.textHeight(headers_[c], headFont_,
+                                                                widths_[column(c)] - 2 * pad_));
+        }
+        headHeight_ += 2 * pad_;
+        rowHeight_ = flow.textHeight(QStringLiteral("0"), cellFont_, flow.width()) + 2 * pad_;
+        note_ = (parameter.unit.empty() ? ReportText::tr("Values in the array's unit.")
+                                        : ReportText::tr("Values in %1.").arg(qs(parameter.unit))) +
+                QLatin1Char(' ') +
+                ReportText::tr(
+                    "Coverage: share of the surface with finite values; the statistics are over "
+                    "that part. Mean and area shares are weighted by surface area, with values "
+                    "interpolated linearly within each triangle.");
+        noteHeight_ = flow.textHeight(note_, noteFont_, flow.width()) + mm(1.5);
     }
-    if (parameter.thresholds.above) {
-        headers << QStringLiteral("Area > ") +
-                       withUnit(exact(*parameter.thresholds.above), parameter.unit);
-    }
-    const int columns = static_cast<int>(headers.size());
-    // The object column takes what the numeric ones leave.
-    const double numeric = mm(std::min(24.0, 110.0 / (columns - 1)));
-    std::vector<double> widths(static_cast<std::size_t>(columns), numeric);
-    widths[0] = flow.width() - numeric * (columns - 1);
 
-    const QFont headFont = font(8.0, true);
-    const QFont cellFont = font(9.0);
-    const double pad = mm(1.6);
-    double headHeight = 0.0;
-    for (int c = 0; c < columns; ++c) {
-        headHeight = std::max(
-            headHeight,
-            flow.textHeight(headers[c], headFont, widths[static_cast<std::size_t>(c)] - 2 * pad));
+    /// The height of the whole table with its note.
+    [[nodiscard]] double height() const {
+        const auto rows = std::max<std::size_t>(parameter_.stats.size(), 1);
+        return headHeight_ + static_cast<double>(rows) * rowHeight_ + mm(1.5) + noteHeight_;
     }
-    const double rowHeight = flow.textHeight(QStringLiteral("0"), cellFont, flow.width()) + 2 * pad;
-    const auto row = [&](const QStringList& cells, const QFont& f, double h, const QColor& colour) {
+
+    void draw(Flow& flow) const {
+        if (height() <= flow.pageHeight()) {
+            flow.ensure(height());  // never split a table that fits on a page
+        }
+        header(flow);
+        int index = 0;
+        for (const ParameterStats& s : parameter_.stats) {
+            const int before = flow.page();
+            // The last row stays with the note below the table.
+            const bool last = index + 1 == static_cast<int>(parameter_.stats.size());
+            flow.ensure(rowHeight_ + (last ? noteHeight_ : 0.0));
+            if (flow.page() != before) {
+                header(flow);  // the table goes on: repeat its header
+            }
+            if (index % 2 == 1) {
+                flow.fill(QRectF(flow.left(), flow.y(), flow.width(), rowHeight_), pdf::kZebra);
+            }
+            QStringList cells = {s.object.empty() ? ReportText::tr("(unnamed)") : qs(s.object),
+                                 percent(s.coveredFraction), number(s.min), number(s.mean),
+                                 number(s.max)};
+            if (parameter_.thresholds.below) {
+                cells << (s.fractionBelow ? percent(*s.fractionBelow) : QStringLiteral("\u2014"));
+            }
+            if (parameter_.thresholds.above) {
+                cells << (s.fractionAbove ? percent(*s.fractionAbove) : QStringLiteral("\u2014"));
+            }
+            row(flow, cells, cellFont_, rowHeight_, pdf::kInk);
+            flow.advance(rowHeight_);
+            ++index;
+        }
+        if (parameter_.stats.empty()) {
+            flow.paragraph(ReportText::tr("No object has finite values of this parameter."),
+                           font(9.0, false, true), pdf::kMuted);
+        }
+        flow.rule(flow.y(), pdf::kRule, 0.25);
+        flow.advance(mm(1.5));
+        flow.paragraph(note_, noteFont_, pdf::kMuted);
+    }
+
+  private:
+    static std::size_t column(int c) { return static_cast<std::size_t>(c); }
+
+    void row(Flow& flow, const QStringList& cells, const QFont& f, double h,
+             const QColor& colour) const {
         double x = flow.left();
-        for (int c = 0; c < columns; ++c) {
-            const double cw = widths[static_cast<std::size_t>(c)];
+        for (int c = 0; c < columns_; ++c) {
+            const double cw = widths_[column(c)];
             const int align = (c == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter;
-            flow.text(QRectF(x + pad, flow.y(), cw - 2 * pad, h), cells[c], f, colour,
+            flow.text(QRectF(x + pad_, flow.y(), cw - 2 * pad_, h), cells[c], f, colour,
                       align | Qt::TextWordWrap);
             x += cw;
         }
-    };
-    const auto header = [&] {
-        flow.ensure(headHeight + 2 * pad + rowHeight);
-        row(headers, headFont, headHeight + 2 * pad, kMuted);
-        flow.advance(headHeight + 2 * pad);
-        flow.rule(flow.y(), kInk, 0.3);
-    };
-    header();
-    const QFont noteFont = font(7.5, false, true);
-    const QString note =
-        QStringLiteral("Values in ") +
-        (parameter.unit.empty() ? QStringLiteral("the array's unit") : qs(parameter.unit)) +
-        QStringLiteral(
-            ". Coverage: share of the surface with finite values; the statistics are over "
-            "that part. Mean and area shares are weighted by surface area, with values "
-            "interpolated linearly within each triangle.");
-    const double noteHeight = flow.textHeight(note, noteFont, flow.width()) + mm(1.5);
-    int index = 0;
-    for (const ParameterStats& s : parameter.stats) {
-        const int before = flow.page();
-        // The last row stays with the note below the table.
-        const bool last = index + 1 == static_cast<int>(parameter.stats.size());
-        flow.ensure(rowHeight + (last ? noteHeight : 0.0));
-        if (flow.page() != before) {
-            header();  // the table goes on: repeat its header
-        }
-        if (index % 2 == 1) {
-            flow.fill(QRectF(flow.left(), flow.y(), flow.width(), rowHeight), kZebra);
-        }
-        QStringList cells = {qs(s.object.empty() ? std::string("(unnamed)") : s.object),
-                             percent(s.coveredFraction), number(s.min), number(s.mean),
-                             number(s.max)};
-        if (parameter.thresholds.below) {
-            cells << (s.fractionBelow ? percent(*s.fractionBelow) : QStringLiteral("\u2014"));
-        }
-        if (parameter.thresholds.above) {
-            cells << (s.fractionAbove ? percent(*s.fractionAbove) : QStringLiteral("\u2014"));
-        }
-        row(cells, cellFont, rowHeight, kInk);
-        flow.advance(rowHeight);
-        ++index;
     }
-    if (parameter.stats.empty()) {
-        flow.paragraph(QStringLiteral("No object has finite values of this parameter."),
-                       font(9.0, false, true), kMuted);
+
+    void header(Flow& flow) const {
+        flow.ensure(headHeight_ + rowHeight_);
+        row(flow, headers_, headFont_, headHeight_, pdf::kMuted);
+        flow.advance(headHeight_);
+        flow.rule(flow.y(), pdf::kInk, 0.3);
     }
-    flow.rule(flow.y(), kRule, 0.25);
-    flow.advance(mm(1.5));
-    flow.paragraph(note, noteFont, kMuted);
+
+    const ReportParameter& parameter_;
+    QStringList headers_;
+    int columns_ = 0;
+    std::vector<double> widths_;
+    QFont headFont_ = font(8.0, true);
+    QFont cellFont_ = font(9.0);
+    QFont noteFont_ = font(7.5, false, true);
+    double pad_ = mm(1.6);
+    double headHeight_ = 0.0;
+    double rowHeight_ = 0.0;
+    QString note_;
+    double noteHeight_ = 0.0;
+};
+
+QString solverName(vss::SolverKind kind) {
+    switch (kind) {
+        case vss::SolverKind::Reference:
+            return ReportText::tr("reference");
+        case vss::SolverKind::Brute:
+            return ReportText::tr("brute force");
+        case vss::SolverKind::Step:
+            return ReportText::tr("step");
+        case vss::SolverKind::Fast:
+            return ReportText::tr("fast");
+    }
+    return qs(std::string(vss::toString(kind)));
 }
 
 QString solverText(const ReportSettings& s) {
-    QString text = qs(std::string(vss::toString(s.vss.solver.kind)));
+    QString text = solverName(s.vss.solver.kind);
     if (s.vss.solver.kind == vss::SolverKind::Step) {
-        text += QStringLiteral(", every %1th contour pixel").arg(s.vss.solver.step);
+        text += ReportText::tr(", every %1th contour pixel").arg(integer(s.vss.solver.step));
     }
     if (std::isnan(s.errorBound)) {
-        text += QStringLiteral(" (no error bound)");
+        text += ReportText::tr(" (no error bound)");
     } else if (s.errorBound == 0.0) {
-        text += QStringLiteral(" (exact)");
+        text += ReportText::tr(" (exact)");
     } else {
-        text += QStringLiteral(" (max. error %1 of normalised depth)").arg(number(s.errorBound));
+        text += ReportText::tr(" (max. error %1 of normalised depth)").arg(number(s.errorBound));
     }
     return text;
 }
@@ -367,16 +232,117 @@ QString solverText(const ReportSettings& s) {
 QString sexText(const ReportPatient& p) {
     if (!p.anonymise) {
         if (p.sex == "F") {
-            return QStringLiteral("female");
+            return ReportText::tr("female");
         }
         if (p.sex == "M") {
-            return QStringLiteral("male");
+            return ReportText::tr("male");
         }
         if (p.sex == "O") {
-            return QStringLiteral("other");
+            return ReportText::tr("other");
         }
     }
     return qs(displayText(p, p.sex));
+}
+
+pdf::Fields patientFields(const ReportPatient& p) {
+    return {{ReportText::tr("Patient name"), qs(displayName(p, p.name))},
+            {ReportText::tr("Patient ID"), qs(displayText(p, p.id))},
+            {ReportText::tr("Birth date"), qs(displayDate(p, p.birthDate))},
+            {ReportText::tr("Sex"), sexText(p)},
+            {ReportText::tr("Study date"), qs(displayDate(p, p.studyDate))},
+            {ReportText::tr("Accession number"), qs(displayText(p, p.accession))},
+            {ReportText::tr("Referring physician"), qs(displayName(p, p.referringPhysician))}};
+}
+
+QString syntheticDemoText() {
+    return ReportText::tr("Synthetic demo data generated by VesselView: not patient data.");
+}
+
+/// The data section: the files by name (only their count when anonymised)
+/// and where the data came from.
+pdf::Fields dataFields(const ReportContent& content) {
+    pdf::Fields files;
+    if (content.patient && content.patient->anonymise) {
+        // File names of patient data often carry names or IDs.
+        files.emplace_back(ReportText::tr("Source files"),
+                           ReportText::tr("%1 (names withheld: anonymised report)")
+                               .arg(integer(static_cast<long long>(content.sources.size()))));
+    } else {
+        for (const auto& source : content.sources) {
+            files.emplace_back(files.empty() ? ReportText::tr("Source files") : QString(),
+                               QFileInfo(QFile::decodeName(source.c_str())).fileName());
+        }
+    }
+    if (content.syntheticDemo) {
+        files.emplace_back(
+            ReportText::tr("Provenance"),
+            ReportText::tr("Synthetic demo data generated by VesselView: not patient data."));
+    }
+    return files;
+}
+
+pdf::Fields settingsFields(const ReportSettings& s) {
+    pdf::Fields settings;
+    if (s.vss.enabled) {
+        settings.emplace_back(ReportText::tr("Void Space Surface"), onOff(true));
+        settings.emplace_back(ReportText::tr("Depth colour scale"),
+                              engineName(colormaps::displayName(s.vss.scale)));
+        settings.emplace_back(ReportText::tr("Interpolation power p"), exact(s.vss.solver.p));
+        settings.emplace_back(ReportText::tr("Solver"), solverText(s));
+        settings.emplace_back(ReportText::tr("Iso-lines"), s.vss.isoLines > 0
+                                                               ? integer(s.vss.isoLines)
+                                                               : ReportText::tr("none"));
+    } else {
+        settings.emplace_back(ReportText::tr("Void Space Surface"), onOff(false));
+    }
+    settings.emplace_back(ReportText::tr("Vessel depth cue"),
+                          engineName(render::displayName(s.cue.cue)));
+    settings.emplace_back(ReportText::tr("Ambient occlusion"), onOff(s.ambientOcclusion));
+    settings.emplace_back(ReportText::tr("Anti-aliasing (FXAA)"), onOff(s.antialiasing));
+    if (!s.view.empty()) {
+        settings.emplace_back(ReportText::tr("Camera"), qs(s.view));
+    }
+    return settings;
+}
+
+QString scaleText(const ReportParameter& parameter) {
+    const QString map = engineName(colormaps::displayName(parameter.map));
+    const QString low = number(parameter.range.first);
+    const QString high = withUnit(number(parameter.range.second), parameter.unit);
+    const QString scale =
+        parameter.bins >= 2
+            ? ReportText::tr("Colour map %1 in %2 bins over %3 \u2013 %4.")
+                  .arg(map, integer(parameter.bins), low, high)
+            : ReportText::tr("Colour map %1 over %2 \u2013 %3.").arg(map, low, high);
+    return scale + QLatin1Char(' ') +
+           ReportText::tr("Values outside are shown in the end colours.");
+}
+
+QString titleOf(const ReportContent& content) {
+    return content.title.empty() ? qs(defaultReportTitle()) : qs(content.title);
+}
+
+/// The title block: title, software and date, the disclaimer.
+void titleBlock(Flow& flow, const ReportContent& content, const QString& software,
+                const QString& created) {
+    const QString title = titleOf(content);
+    const QFont titleFont = font(18.0, true);
+    const double titleHeight = flow.textHeight(title, titleFont, flow.width() * 0.65);
+    const QFont metaFont = font(8.5);
+    flow.text(QRectF(flow.left(), flow.y(), flow.width() * 0.65, titleHeight), title, titleFont,
+              pdf::kInk, Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap);
+    const QString meta = software + QLatin1Char('\n') + ReportText::tr("Created %1").arg(created);
+    flow.text(QRectF(flow.left() + flow.width() * 0.6, flow.y(), flow.width() * 0.4, titleHeight),
+              meta, metaFont, pdf::kMuted, Qt::AlignRight | Qt::AlignVCenter);
+    flow.advance(std::max(titleHeight, flow.textHeight(meta, metaFont, flow.width())) + mm(2.0));
+    flow.rule(flow.y(), pdf::kAccent, 0.6);
+    flow.advance(mm(1.5));
+    if (!content.disclaimer.empty()) {
+        flow.paragraph(qs(content.disclaimer), font(9.0, true), pdf::kWarning, mm(0.5));
+    }
+    if (content.syntheticDemo) {
+        flow.paragraph(syntheticDemoText(), font(9.0, true), pdf::kWarning, mm(0.5));
+    }
 }
 
 void paint(QPdfWriter& writer, const ReportContent& content) {
@@ -386,11 +352,12 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
     }
     painter.setRenderHint(QPainter::Antialiasing);
     painter.setRenderHint(QPainter::TextAntialiasing);
+    // Images as they are (Flate): JPEG would shift the colours of the view.
+    painter.setRenderHint(QPainter::LosslessImageRendering);
     const QRect page = writer.pageLayout().paintRectPixels(kDpi);
     const QRectF contentRect(0.0, 0.0, page.width(), page.height() - mm(9.0));
     const QString created =
-        QLocale::c().toString(content.created, QStringLiteral("yyyy-MM-dd HH:mm"));
-    const QString zone = content.created.timeZoneAbbreviation();
+        formatDateTime(content.created) + QLatin1Char(' ') + content.created.timeZoneAbbreviation();
     const QString software = QStringLiteral("VesselView ") + QString::fromLatin1(vv::kVersion);
 
     int pages = 1;
@@ -398,73 +365,41 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
         Flow flow(painter, writer, contentRect, draw);
         flow.onPageDone([&](int pageNumber) {
             const double top = page.height() - mm(6.0);
-            painter.setPen(QPen(kRule, mm(0.25)));
+            painter.setPen(QPen(pdf::kRule, mm(0.25)));
             painter.drawLine(QPointF(0.0, top), QPointF(page.width(), top));
-            QString left = software + QStringLiteral(" \u00b7 ") + qs(content.title) +
-                           QStringLiteral(" \u00b7 ") + created + " " + zone;
+            QString left = software + QStringLiteral(" \u00b7 ") + titleOf(content) +
+                           QStringLiteral(" \u00b7 ") + created;
             if (content.patient) {
                 left += QStringLiteral(" \u00b7 ") +
-                        qs(displayName(*content.patient, content.patient->name)) +
-                        QStringLiteral(", ID ") +
-                        qs(displayText(*content.patient, content.patient->id));
+                        ReportText::tr("%1, ID %2")
+                            .arg(qs(displayName(*content.patient, content.patient->name)),
+                                 qs(displayText(*content.patient, content.patient->id)));
             }
             const QRectF box(0.0, top + mm(1.0), page.width(), mm(5.0));
             painter.setFont(font(7.0));
-            painter.setPen(kMuted);
+            painter.setPen(pdf::kMuted);
             painter.drawText(box, Qt::AlignLeft | Qt::AlignVCenter, left);
-            painter.drawText(box, Qt::AlignRight | Qt::AlignVCenter,
-                             QStringLiteral("Page %1 of %2").arg(pageNumber).arg(pages));
+            painter.drawText(
+                box, Qt::AlignRight | Qt::AlignVCenter,
+                ReportText::tr("Page %1 of %2").arg(integer(pageNumber), integer(pages)));
         });
 
-        // Title block.
-        const QFont titleFont = font(18.0, true);
-        const double titleHeight =
-            flow.textHeight(qs(content.title), titleFont, flow.width() * 0.65);
-        const QFont metaFont = font(8.5);
-        flow.text(QRectF(flow.left(), flow.y(), flow.width() * 0.65, titleHeight),
-                  qs(content.title), titleFont, kInk,
-                  Qt::AlignLeft | Qt::AlignTop | Qt::TextWordWrap);
-        const QString meta = software + QStringLiteral("\nCreated ") + created + " " + zone;
-        flow.text(
-            QRectF(flow.left() + flow.width() * 0.6, flow.y(), flow.width() * 0.4, titleHeight),
-            meta, metaFont, kMuted, Qt::AlignRight | Qt::AlignVCenter);
-        flow.advance(std::max(titleHeight, flow.textHeight(meta, metaFont, flow.width())) +
-                     mm(2.0));
-        flow.rule(flow.y(), kAccent, 0.6);
-        flow.advance(mm(1.0));
+        titleBlock(flow, content, software, created);
 
         if (content.patient) {
-            const ReportPatient& p = *content.patient;
-            flow.heading(QStringLiteral("Patient and study"), mm(12.0));
-            fieldGrid(
-                flow,
-                {{QStringLiteral("Patient name"), qs(displayName(p, p.name))},
-                 {QStringLiteral("Patient ID"), qs(displayText(p, p.id))},
-                 {QStringLiteral("Birth date"), qs(displayDate(p, p.birthDate))},
-                 {QStringLiteral("Sex"), sexText(p)},
-                 {QStringLiteral("Study date"), qs(displayDate(p, p.studyDate))},
-                 {QStringLiteral("Accession number"), qs(displayText(p, p.accession))},
-                 {QStringLiteral("Referring physician"), qs(displayName(p, p.referringPhysician))}},
-                2);
+            const pdf::Fields fields = patientFields(*content.patient);
+            flow.heading(ReportText::tr("Patient and study"),
+                         pdf::fieldGridHeight(flow, fields, 2));
+            pdf::fieldGrid(flow, fields, 2);
         }
 
-        if (!content.sources.empty()) {
-            flow.heading(QStringLiteral("Data"), mm(8.0));
-            std::vector<std::pair<QString, QString>> files;
-            if (content.patient && content.patient->anonymise) {
-                // Folder and file names of patient data often carry names or IDs.
-                files.emplace_back(QStringLiteral("Source files"),
-                                   QStringLiteral("%1 (names withheld: anonymised report)")
-                                       .arg(content.sources.size()));
-            } else {
-                for (const auto& source : content.sources) {
-                    const QFileInfo info(QFile::decodeName(source.c_str()));
-                    files.emplace_back(
-                        files.empty() ? QStringLiteral("Source files") : QString(),
-                        info.fileName() + QStringLiteral("  \u2014  ") + info.absolutePath());
-                }
-            }
-            fieldGrid(flow, files, 1, true);
+        // What the reader signs comes first.
+        flow.heading(ReportText::tr("Findings"), mm(14.0));
+        if (content.findings.empty()) {
+            flow.paragraph(ReportText::tr("No findings entered."), font(9.5, false, true),
+                           pdf::kMuted);
+        } else {
+            flow.paragraph(qs(content.findings), font(10.0), pdf::kInk);
         }
 
         const auto viewSection = [&](const QString& title, const ReportView& view) {
@@ -472,62 +407,36 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
             flow.heading(title, h);
             viewBlock(flow, view);
         };
-        viewSection(QStringLiteral("View"), content.view);
+        viewSection(ReportText::tr("View"), content.view);
         if (content.secondView) {
-            viewSection(QStringLiteral("Second view"), *content.secondView);
+            viewSection(ReportText::tr("Second view"), *content.secondView);
         }
 
         if (content.parameter) {
             const ReportParameter& parameter = *content.parameter;
-            QString title = QStringLiteral("Parameter statistics \u2014 ") + qs(parameter.name);
-            if (!parameter.unit.empty()) {
-                title += QStringLiteral(" (") + qs(parameter.unit) + QStringLiteral(")");
-            }
-            flow.heading(title, mm(20.0));
-            QString scale = QStringLiteral("Colour map ") +
-                            qs(std::string(colormaps::displayName(parameter.map))) +
-                            (parameter.bins >= 2 ? QStringLiteral(" in %1 bins").arg(parameter.bins)
-                                                 : QString()) +
-                            QStringLiteral(" over ") + number(parameter.range.first) +
-                            QStringLiteral(" \u2013 ") +
-                            withUnit(number(parameter.range.second), parameter.unit) +
-                            QStringLiteral("; values outside are shown in the end colours.");
-            flow.paragraph(scale, font(8.5), kInk, mm(2.0));
-            statsTable(flow, parameter);
+            const QString name =
+                parameter.unit.empty()
+                    ? qs(parameter.name)
+                    : ReportText::tr("%1 (%2)").arg(qs(parameter.name), qs(parameter.unit));
+            const QString scale = scaleText(parameter);
+            const StatsTable table(flow, parameter);
+            flow.heading(
+                ReportText::tr("Parameter statistics \u2014 %1").arg(name),
+                flow.textHeight(scale, font(8.5), flow.width()) + mm(2.0) + table.height());
+            flow.paragraph(scale, font(8.5), pdf::kInk, mm(2.0));
+            table.draw(flow);
         }
 
-        const ReportSettings& s = content.settings;
-        flow.heading(QStringLiteral("Rendering settings"), mm(20.0));
-        std::vector<std::pair<QString, QString>> settings;
-        if (s.vss.enabled) {
-            settings.emplace_back(QStringLiteral("Void Space Surface"), QStringLiteral("on"));
-            settings.emplace_back(QStringLiteral("Depth colour scale"),
-                                  qs(std::string(colormaps::displayName(s.vss.scale))));
-            settings.emplace_back(QStringLiteral("Interpolation power p"), exact(s.vss.solver.p));
-            settings.emplace_back(QStringLiteral("Solver"), solverText(s));
-            settings.emplace_back(QStringLiteral("Iso-lines"), s.vss.isoLines > 0
-                                                                   ? QString::number(s.vss.isoLines)
-                                                                   : QStringLiteral("none"));
-        } else {
-            settings.emplace_back(QStringLiteral("Void Space Surface"), QStringLiteral("off"));
+        const pdf::Fields data = dataFields(content);
+        if (!data.empty()) {
+            flow.heading(ReportText::tr("Data"), pdf::fieldGridHeight(flow, data, 1));
+            pdf::fieldGrid(flow, data, 1);
         }
-        settings.emplace_back(QStringLiteral("Vessel depth cue"),
-                              qs(std::string(render::displayName(s.cue.cue))));
-        settings.emplace_back(QStringLiteral("Ambient occlusion"),
-                              s.ambientOcclusion ? QStringLiteral("on") : QStringLiteral("off"));
-        settings.emplace_back(QStringLiteral("Anti-aliasing (FXAA)"),
-                              s.antialiasing ? QStringLiteral("on") : QStringLiteral("off"));
-        if (!s.view.empty()) {
-            settings.emplace_back(QStringLiteral("Camera"), qs(s.view));
-        }
-        fieldGrid(flow, settings, 2);
 
-        flow.heading(QStringLiteral("Findings"), mm(14.0));
-        if (content.findings.empty()) {
-            flow.paragraph(QStringLiteral("No findings entered."), font(9.5, false, true), kMuted);
-        } else {
-            flow.paragraph(qs(content.findings), font(10.0), kInk);
-        }
+        const pdf::Fields settings = settingsFields(content.settings);
+        flow.heading(ReportText::tr("Rendering settings"), pdf::fieldGridHeight(flow, settings, 2));
+        pdf::fieldGrid(flow, settings, 2);
+
         flow.finish();
         pages = flow.page();
     }
@@ -535,6 +444,16 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
 }
 
 }  // namespace
+
+std::string defaultReportTitle() {
+    return QCoreApplication::translate("vv::report::ReportText", "Vessel tree report")
+        .toStdString();
+}
+
+std::string defaultDisclaimer() {
+    return QCoreApplication::translate("vv::report::ReportText", "Not for diagnostic use.")
+        .toStdString();
+}
 
 std::optional<PaperSize> paperSizeFromName(std::string_view name) noexcept {
     std::string lower(name);
@@ -574,7 +493,7 @@ QByteArray renderPdf(const ReportContent& content, PaperSize paper) {
             QPageLayout(pageSize(paper), QPageLayout::Portrait,
                         QMarginsF(kMarginSideMm, kMarginTopMm, kMarginSideMm, kMarginBottomMm),
                         QPageLayout::Millimeter));
-        writer.setTitle(qs(content.title));
+        writer.setTitle(titleOf(content));
         writer.setCreator(QStringLiteral("VesselView ") + QString::fromLatin1(vv::kVersion));
         paint(writer, content);
     }

@@ -1,12 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/report/ReportJob.h"
 
+#include <QString>
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <functional>
 #include <utility>
 
+#include "ReportText.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/render/MeshStyle.h"
 #include "vv/report/DicomExport.h"
@@ -28,11 +31,11 @@ class Steps {
 
     /// The next step of `weight`: checks for a stop, reports its start and
     /// returns the sub-progress for it.
-    Progress next(double weight, std::string_view stage) {
+    Progress next(double weight, const QString& stage) {
         const double begin = done_ / total_;
         done_ += weight;
         const double end = std::min(1.0, done_ / total_);
-        progress_.report(begin, stage);
+        progress_.report(begin, stage.toStdString());
         progress_.throwIfCancelled();  // also a stop asked for while reporting
         return progress_.sub(begin, end);
     }
@@ -112,12 +115,32 @@ void writing(const std::function<void()>& write) {
 }  // namespace
 
 std::string namedViewCaption(const std::string& name) {
+    static const std::array<std::pair<const char*, const char*>, 9> captions{{
+        {"far", QT_TRANSLATE_NOOP("vv::report::ReportText", "Far view")},
+        {"medium", QT_TRANSLATE_NOOP("vv::report::ReportText", "Medium view")},
+        {"close", QT_TRANSLATE_NOOP("vv::report::ReportText", "Close view")},
+        {"anterior", QT_TRANSLATE_NOOP("vv::report::ReportText", "Anterior view")},
+        {"posterior", QT_TRANSLATE_NOOP("vv::report::ReportText", "Posterior view")},
+        {"left", QT_TRANSLATE_NOOP("vv::report::ReportText", "Left view")},
+        {"right", QT_TRANSLATE_NOOP("vv::report::ReportText", "Right view")},
+        {"superior", QT_TRANSLATE_NOOP("vv::report::ReportText", "Superior view")},
+        {"inferior", QT_TRANSLATE_NOOP("vv::report::ReportText", "Inferior view")},
+    }};
     if (name.empty()) {
-        return "Default view, the whole tree fitted";
+        return QCoreApplication::translate("vv::report::ReportText",
+                                           "Default view, the whole tree fitted")
+            .toStdString();
+    }
+    for (const auto& [key, caption] : captions) {
+        if (name == key) {
+            return ReportText::tr(caption).toStdString();
+        }
     }
     std::string caption = name;
     caption[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(caption[0])));
-    return caption + " view";
+    return QCoreApplication::translate("vv::report::ReportText", "%1 view")
+        .arg(QString::fromStdString(caption))
+        .toStdString();
 }
 
 std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
@@ -140,13 +163,16 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
     DicomStudy study = newStudy();
     if (!options.source.dicomPath.empty()) {
         study = studyOf(options.source, options.anonymise,
-                        steps.next(kScanWeight, "Reading the patient and study"));
+                        steps.next(kScanWeight, ReportText::tr("Reading the patient and study")));
+    } else if (options.patient) {
+        study.patient = options.patient;  // entered for mesh data
+        study.patient->anonymise = options.anonymise;
     }
 
     std::optional<RenderedView> shown;
     if (image) {
-        const Progress rendering =
-            steps.next(kRenderWeight * (options.transparent ? 1.5 : 1.0), "Rendering the image");
+        const Progress rendering = steps.next(kRenderWeight * (options.transparent ? 1.5 : 1.0),
+                                              ReportText::tr("Rendering the image"));
         ViewExportOptions view;
         view.render = base;
         view.legends = options.legends;
@@ -174,35 +200,39 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         };
         ReportContent content;
         content.title = options.title;
-        for (const fs::path& file : options.source.files) {
-            content.sources.push_back(fs::absolute(file));
-        }
-        auto [view, range] = reportView(base.camera, options.viewCaption,
-                                        steps.next(kRenderWeight, "Rendering the report's view"));
+        content.disclaimer = options.disclaimer;
+        content.sources = options.source.files;
+        content.syntheticDemo = options.source.syntheticDemo;
+        auto [view, range] = reportView(
+            base.camera, options.viewCaption.empty() ? namedViewCaption({}) : options.viewCaption,
+            steps.next(kRenderWeight, ReportText::tr("Rendering the report's view")));
         content.view = std::move(view);
         if (options.secondView) {
-            const Progress rendering = steps.next(kRenderWeight, "Rendering the second view");
+            const Progress rendering =
+                steps.next(kRenderWeight, ReportText::tr("Rendering the second view"));
             content.secondView =
                 reportView(render::presetCamera(scene, width, height, options.secondView->preset,
                                                 options.secondView->rotation),
                            namedViewCaption(options.secondViewName), rendering)
                     .first;
         }
-        steps.next(kPdfWeight, "Laying out the PDF");
+        steps.next(kPdfWeight, ReportText::tr("Laying out the PDF"));
         content.parameter = parameterOf(scene, base, range, options.thresholds);
         content.settings.vss = base.vss;
         content.settings.errorBound = vss::makeSolver(base.vss.solver)->errorBound();
         content.settings.cue = base.cue;
         content.settings.ambientOcclusion = base.ao.enabled;
         content.settings.antialiasing = base.antialiasing;
-        content.settings.view = options.viewDescription;
+        content.settings.view = options.viewDescription.empty()
+                                    ? ReportText::tr("default (fitted)").toStdString()
+                                    : options.viewDescription;
         content.findings = options.findings;
-        content.patient = study.patient;  // none for meshes: no patient block
+        content.patient = study.patient;
         pdf = renderPdf(content, options.paper);
     }
 
     // Last chance to stop: from here on the outputs are written.
-    steps.next(kWriteWeight, "Writing the files");
+    steps.next(kWriteWeight, ReportText::tr("Writing the files"));
     std::vector<WrittenOutput> written;
     if (!out.png.empty()) {
         writing([&] { writePng(out.png, shown->image); });
@@ -220,7 +250,11 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
                                         (options.paper == PaperSize::A4 ? "A4" : "Letter")});
     }
     if (!out.dicomPdf.empty()) {
-        writing([&] { (void)writeEncapsulatedPdf(out.dicomPdf, pdf, options.title, study); });
+        writing([&] {
+            (void)writeEncapsulatedPdf(out.dicomPdf, pdf,
+                                       options.title.empty() ? defaultReportTitle() : options.title,
+                                       study);
+        });
         written.push_back({out.dicomPdf, "DICOM Encapsulated PDF"});
     }
     return written;

@@ -1,15 +1,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/report/ReportPatient.h"
 
+#include <QDate>
 #include <algorithm>
 #include <cctype>
 #include <vector>
+
+#include "ReportText.h"
 
 namespace vv::report {
 
 namespace {
 
-constexpr const char* kAnonymised = "anonymised";
 constexpr const char* kNotGiven = "\u2014";  // em dash
 
 std::string trimmed(const std::string& value) {
@@ -24,7 +26,7 @@ std::string trimmed(const std::string& value) {
 
 std::string displayText(const ReportPatient& patient, const std::string& value) {
     if (patient.anonymise) {
-        return kAnonymised;
+        return QCoreApplication::translate("vv::report::ReportText", "anonymised").toStdString();
     }
     const std::string text = trimmed(value);
     return text.empty() ? kNotGiven : text;
@@ -71,7 +73,11 @@ std::string displayDate(const ReportPatient& patient, const std::string& value) 
                                return std::isdigit(static_cast<unsigned char>(c)) != 0;
                            });
     if (dicomDate) {
-        return text.substr(0, 4) + "-" + text.substr(4, 2) + "-" + text.substr(6, 2);
+        const QDate date =
+            QDate::fromString(QString::fromStdString(text), QStringLiteral("yyyyMMdd"));
+        if (date.isValid()) {
+            return formatDate(date).toStdString();
+        }
     }
     return text;
 }

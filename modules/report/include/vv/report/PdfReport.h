@@ -34,7 +34,7 @@ enum class PaperSize {
 /// boxes as on screen, at the size they have on a 1100-pixel-wide view).
 struct ReportView {
     QImage image;
-    std::string caption;  ///< e.g. "Far view, default orientation"
+    std::string caption;  ///< e.g. "Far view" (already translated)
     render::Legends legends;
 };
 
@@ -59,15 +59,32 @@ struct ReportSettings {
     std::string view;  ///< the camera, e.g. "far"
 };
 
-/// Everything the PDF report shows. Absent parts are left out of the page
-/// (no patient block without `patient`, no parameter legend and table
-/// without `parameter`, no second view without `secondView`).
+/// The report's title when none is given: "Vessel tree report", translated.
+[[nodiscard]] std::string defaultReportTitle();
+
+/// The disclaimer line when none is configured: "Not for diagnostic use.",
+/// translated (call after the translator is installed).
+[[nodiscard]] std::string defaultDisclaimer();
+
+/// Everything the PDF report shows, in this order: the title block and the
+/// disclaimer, the patient (when given), the findings, the view(s), the
+/// parameter statistics, the data (file names, provenance) and the rendering
+/// settings. Absent parts are left out of the page (no patient block without
+/// `patient`, no parameter legend and table without `parameter`, no second
+/// view without `secondView`). Every text is translated
+/// (QCoreApplication::translate, context "vv::report::ReportText") and every
+/// number and date is formatted in the default QLocale (the UI language).
 struct ReportContent {
-    std::string title = "Vessel tree report";
+    std::string title;  ///< empty = defaultReportTitle()
+    /// The line under the title, e.g. "Not for diagnostic use."; empty = none.
+    std::string disclaimer = defaultDisclaimer();
     std::optional<ReportPatient> patient;
-    /// The data files: name and folder each; only their count when the
-    /// patient is anonymised (folder and file names often identify patients).
+    /// The data files: listed by file name only (folders often hold user or
+    /// patient names); only their count when the patient is anonymised.
     std::vector<std::filesystem::path> sources;
+    /// The data is VesselView's synthetic demo tree, not patient data: the
+    /// report says so.
+    bool syntheticDemo = false;
     ReportView view;
     std::optional<ReportView> secondView;
     std::optional<ReportParameter> parameter;

@@ -18,14 +18,16 @@ namespace vv::report {
 
 /// Where the data of a report came from.
 struct ReportSource {
-    /// The data files, listed in the report (made absolute).
+    /// The data files, listed in the report by file name.
     std::vector<std::filesystem::path> files;
     /// DICOM data: the path the series was loaded from (folder, DICOMDIR or
-    /// file); empty for meshes (then there is no patient block and the DICOM
-    /// exports go into a new study).
+    /// file); empty for meshes (then the patient block is what
+    /// ReportJobOptions::patient gives, and the DICOM exports go into a new study).
     std::filesystem::path dicomPath;
     /// The loaded series; empty = the only image series under dicomPath.
     std::string seriesInstanceUid;
+    /// The data is VesselView's synthetic demo tree (the report says so).
+    bool syntheticDemo = false;
 };
 
 /// The files of one report; empty paths are not written.
@@ -43,10 +45,12 @@ struct ReportJobOptions {
     /// and the aspect of the report's views (rendered 300 dpi wide). Without a
     /// camera the view is the default orientation fitted to the scene.
     render::OffscreenOptions view;
-    /// Caption under the view in the PDF, e.g. "Far view".
-    std::string viewCaption = "Default view, the whole tree fitted";
-    /// The camera as the settings table names it, e.g. "far".
-    std::string viewDescription = "default (fitted)";
+    /// Caption under the view in the PDF, e.g. "Far view"; empty =
+    /// namedViewCaption("") (the default view's).
+    std::string viewCaption;
+    /// The camera as the settings table names it, e.g. "far"; empty = "default
+    /// (fitted)", translated.
+    std::string viewDescription;
     /// An optional second view (a preset camera on the scene) and its name.
     std::optional<render::NamedView> secondView;
     std::string secondViewName;
@@ -55,7 +59,13 @@ struct ReportJobOptions {
     /// Print "anonymised" for the patient and leave the identifiers out of the
     /// DICOM exports (only meaningful for DICOM data).
     bool anonymise = false;
-    std::string title = "Vessel tree report";
+    /// The patient and study entered for mesh data (meshes carry none): the
+    /// report's patient block and the DICOM exports' patient module. DICOM
+    /// data takes its own and ignores this.
+    std::optional<ReportPatient> patient;
+    std::string title;  ///< empty = defaultReportTitle()
+    /// The line under the title; empty = none.
+    std::string disclaimer = defaultDisclaimer();
     std::string findings;  ///< free text, may have several lines
     PaperSize paper = PaperSize::A4;
     /// Thresholds of the area fractions; with neither given and the array
@@ -77,8 +87,8 @@ class ReportWriteError : public IoError {
     using IoError::IoError;
 };
 
-/// Caption of a named view for the report: "Far view", "Anterior view";
-/// an empty name gives the default view's caption.
+/// Caption of a named view for the report: "Far view", "Anterior view"
+/// (translated); an empty name gives the default view's caption.
 [[nodiscard]] std::string namedViewCaption(const std::string& name);
 
 /// Builds the report of `scene` and writes every requested output: renders

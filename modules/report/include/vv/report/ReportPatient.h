@@ -6,8 +6,9 @@
 namespace vv::report {
 
 /// The patient / study block of a report and the patient module of its DICOM
-/// exports. Only data that came from DICOM fills it (meshes carry no patient
-/// data). Dates as DICOM gives them (YYYYMMDD) or already formatted text.
+/// exports: what DICOM data carries, or for meshes (which carry no patient
+/// data) what the user entered. Dates as DICOM gives them
+/// (YYYYMMDD) or already formatted text.
 struct ReportPatient {
     std::string name;  ///< DICOM PN, e.g. "Doe^Jane"
     std::string id;
@@ -21,9 +22,10 @@ struct ReportPatient {
     bool anonymise = false;
 };
 
-/// The text to print for `value`: "anonymised" when patient.anonymise,
-/// "—" (not given) when empty, else `value` (a DICOM PN "Doe^Jane" as "Doe, Jane";
-/// a YYYYMMDD date as YYYY-MM-DD).
+/// The text to print for `value`: "anonymised" (translated) when
+/// patient.anonymise, "—" (not given) when empty, else `value` (a DICOM PN
+/// "Doe^Jane" as "Doe, Jane"; a valid YYYYMMDD date in the report's date
+/// format: YYYY-MM-DD in English, DD.MM.YYYY in German).
 [[nodiscard]] std::string displayName(const ReportPatient& patient, const std::string& value);
 [[nodiscard]] std::string displayDate(const ReportPatient& patient, const std::string& value);
 [[nodiscard]] std::string displayText(const ReportPatient& patient, const std::string& value);

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Laying the PDF report out top to bottom over pages: the cursor, page
+// breaks, text, rules and label / value grids. Private to vv::report.
+#pragma once
+
+#include <QColor>
+#include <QFont>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QRectF>
+#include <QString>
+#include <functional>
+#include <utility>
+#include <vector>
+
+namespace vv::report::pdf {
+
+inline constexpr int kDpi = 300;
+
+inline const QColor kInk(28, 32, 38);
+inline const QColor kMuted(96, 104, 114);
+inline const QColor kAccent(31, 78, 121);
+inline const QColor kRule(190, 198, 206);
+inline const QColor kZebra(242, 245, 248);
+inline const QColor kWarning(150, 40, 30);
+
+/// Millimetres in the report's pixels (300 dpi).
+[[nodiscard]] constexpr double mm(double millimetres) {
+    return millimetres / 25.4 * kDpi;
+}
+
+/// The report's font (DejaVu Sans) at `points`.
+[[nodiscard]] QFont font(double points, bool bold = false, bool italic = false);
+
+/// The cursor over the pages. Run twice: a dry run (draw = false) counts the
+/// pages; the second run paints.
+class Flow {
+  public:
+    Flow(QPainter& painter, QPdfWriter& writer, const QRectF& content, bool draw)
+        : painter_(painter), writer_(writer), content_(content), draw_(draw), y_(content.top()) {}
+
+    [[nodiscard]] bool drawing() const noexcept { return draw_; }
+    [[nodiscard]] QPainter& painter() noexcept { return painter_; }
+    [[nodiscard]] double left() const noexcept { return content_.left(); }
+    [[nodiscard]] double width() const noexcept { return content_.width(); }
+    [[nodiscard]] double y() const noexcept { return y_; }
+    [[nodiscard]] int page() const noexcept { return page_; }
+    /// The height of a page's content area.
+    [[nodiscard]] double pageHeight() const noexcept { return content_.height(); }
+    void advance(double dy) { y_ += dy; }
+
+    /// Starts a new page unless `height` still fits on this one.
+    void ensure(double height);
+    void newPage();
+    /// Called with the page's number when a page is complete (drawing run only).
+    void onPageDone(std::function<void(int)> callback) { pageDone_ = std::move(callback); }
+    void finish();
+
+    /// Height of `text` in `f` wrapped to `width`.
+    [[nodiscard]] double textHeight(const QString& text, const QFont& f, double w,
+                                    int wrap = Qt::TextWordWrap) const;
+    /// Draws `text` at the cursor (wrapped) and advances by its height.
+    void paragraph(const QString& text, const QFont& f, const QColor& colour,
+                   double spaceAfter = 0.0);
+    void text(const QRectF& box, const QString& text, const QFont& f, const QColor& colour,
+              int flags);
+    void rule(double at, const QColor& colour, double thicknessMm);
+    void fill(const QRectF& box, const QColor& colour);
+    /// A section heading kept on one page with `keep` of what follows.
+    void heading(const QString& title, double keep);
+
+  private:
+    QPainter& painter_;
+    QPdfWriter& writer_;
+    QRectF content_;
+    bool draw_;
+    double y_;
+    int page_ = 1;
+    std::function<void(int)> pageDone_ = [](int) {};
+};
+
+/// Label / value pairs in `columns` columns (labels muted, values ink).
+using Fields = std::vector<std::pair<QString, QString>>;
+
+/// The height fieldGrid() takes.
+[[nodiscard]] double fieldGridHeight(const Flow& flow, const Fields& fields, int columns);
+
+/// Draws the grid at the cursor, on one page when it fits on one.
+void fieldGrid(Flow& flow, const Fields& fields, int columns);
+
+}  // namespace vv::report::pdf

@@ -1,0 +1,342 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli report --lang de|en` run as a user runs it (the installed
+// layout of the build tree finds the translations): the German report has
+// none of the report's English strings and no '.' decimal separator; the
+// English one has no German. Also the patient options for meshes, the
+// disclaimer, the order of the sections and the demo's provenance. OpenGL:
+// run under `xvfb-run -a` (QT_QPA_PLATFORM=xcb); pdftotext (poppler-utils).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <QByteArray>
+#include <QString>
+#include <QTextDocumentFragment>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "ReportTestUtil.h"
+#include "TestMeshes.h"
+#include "vv/meshio/MeshWriter.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using vv::report::test::runTool;
+
+fs::path freshDir(const std::string& name) {
+    const fs::path dir =
+        fs::path(VV_TEST_TMP) / "report-language" / (name + "-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+/// The tube with "wss" (Pa) rising 0..10 along it, written to `dir`/tube.vtp.
+fs::path writeTube(const fs::path& dir) {
+    vv::scene::Mesh mesh = vv::test::tube(
+        {.radius = 1.0F, .start = glm::vec3(0.0F), .length = 20.0F, .segments = 24, .rings = 20});
+    vv::test::addAxialArray(mesh, "wss", "Pa", 0.0F, [](float x) { return 0.37F * x; });
+    const fs::path file = dir / "tube.vtp";
+    vv::meshio::writeVtp(mesh, file);
+    return file;
+}
+
+/// Runs the CLI's report command on `input`; its exit code, output in `output`.
+int runReport(const std::string& environment, const fs::path& input, const fs::path& pdf,
+              const std::string& options, std::string& output) {
+    return runTool(environment + " '" + std::string(VV_CLI_EXE) + "' report '" + input.string() +
+                       "' -o '" + pdf.string() + "' " + options,
+                   output);
+}
+
+/// One word of the PDF (pdftotext -bbox): its page, position and text.
+struct Word {
+    int page = 0;
+    double top = 0.0;
+    double bottom = 0.0;
+    std::string text;
+};
+
+std::vector<Word> words(const fs::path& pdf) {
+    std::string html;
+    EXPECT_EQ(runTool("pdftotext -bbox '" + pdf.string() + "' -", html), 0)
+        << "pdftotext (poppler-utils; scripts/setup-deps): " << html;
+    std::vector<Word> all;
+    int page = 0;
+    const std::regex token(
+        R"re(<page |<word xMin="[^"]*" yMin="([^"]*)" xMax="[^"]*" yMax="([^"]*)">([^<]*)</word>)re");
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), token);
+         it != std::sregex_iterator(); ++it) {
+        const std::smatch& m = *it;
+        if (m.str(0) == "<page ") {
+            ++page;
+            continue;
+        }
+        const QString text =
+            QTextDocumentFragment::fromHtml(QString::fromStdString(m.str(3))).toPlainText();
+        all.push_back({page, std::stod(m.str(1)), std::stod(m.str(2)), text.toStdString()});
+    }
+    return all;
+}
+
+/// The report's text without the legends painted over the views (their
+/// labels come from render::LegendPainter, not the report): the words
+/// between each view's heading and its caption are left out. `views`: the
+/// first word of each heading and of its caption, in the order of the pages.
+std::string textOutsideTheViews(const std::vector<Word>& all,
+                                const std::vector<std::pair<std::string, std::string>>& views) {
+    struct Region {
+        int page;
+        double top;
+        double bottom;
+    };
+    std::vector<Region> regions;
+    std::size_t i = 0;
+    for (const auto& [heading, caption] : views) {
+        while (i < all.size() && all[i].text != heading) {
+            ++i;
+        }
+        std::size_t j = i + 1;
+        // The caption is below the image (not a word of the heading itself).
+        while (j < all.size() && (all[j].text != caption ||
+                                  (all[j].page == all[i].page && all[j].top <= all[i].bottom))) {
+            ++j;
+        }
+        EXPECT_LT(j, all.size()) << heading << " / " << caption;
+        if (j >= all.size()) {
+            break;
+        }
+        regions.push_back({all[i].page, all[i].bottom, all[j].top});
+        i = j + 1;
+    }
+    std::string text;
+    for (const Word& w : all) {
+        const bool inView = std::any_of(regions.begin(), regions.end(), [&w](const Region& r) {
+            return w.page == r.page && w.top > r.top && w.bottom < r.bottom;
+        });
+        if (!inView) {
+            text += w.text + " ";
+        }
+    }
+    return text;
+}
+
+/// The report's strings: (English source, German translation) of the
+/// context vv::report::ReportText in translations/vesselview_de.ts.
+std::vector<std::pair<std::string, std::string>> reportStrings() {
+    std::ifstream in(fs::path(VV_SOURCE_DIR) / "translations" / "vesselview_de.ts");
+    std::stringstream buffer;
+    buffer << in.rdbuf();
+    const std::string ts = buffer.str();
+    const std::string name = "<name>vv::report::ReportText</name>";
+    const auto start = ts.find(name);
+    EXPECT_NE(start, std::string::npos) << "no report strings in vesselview_de.ts";
+    const std::string context = ts.substr(start, ts.find("</context>", start) - start);
+    std::vector<std::pair<std::string, std::string>> strings;
+    const std::regex message(
+        R"re(<source>([^<]*)</source>\s*(?:<extracomment>[^<]*</extracomment>\s*)?<translation>([^<]*)</translation>)re");
+    const auto unescape = [](const std::string& s) {
+        return QTextDocumentFragment::fromHtml(QString::fromStdString(s))
+            .toPlainText()
+            .toStdString();
+    };
+    for (auto it = std::sregex_iterator(context.begin(), context.end(), message);
+         it != std::sregex_iterator(); ++it) {
+        strings.emplace_back(unescape((*it)[1]), unescape((*it)[2]));
+    }
+    EXPECT_GT(strings.size(), 50U);
+    return strings;
+}
+
+/// The pieces of `text` between its %1 placeholders, trimmed, with at least
+/// three letters.
+std::vector<std::string> fragments(const std::string& text) {
+    std::vector<std::string> pieces;
+    const std::regex placeholder("%[0-9]");
+    for (auto it = std::sregex_token_iterator(text.begin(), text.end(), placeholder, -1);
+         it != std::sregex_token_iterator(); ++it) {
+        std::string piece = *it;
+        const auto first = piece.find_first_not_of(" ,.():;<>\u2014");
+        const auto last = piece.find_last_not_of(" ,.():;<>");
+        if (first == std::string::npos) {
+            continue;
+        }
+        piece = piece.substr(first, last - first + 1);
+        if (std::count_if(piece.begin(), piece.end(),
+                          [](unsigned char c) { return std::isalpha(c) != 0; }) >= 3) {
+            pieces.push_back(piece);
+        }
+    }
+    return pieces;
+}
+
+/// True when `piece` is in `text` as whole words (no letter right before or after).
+bool containsWords(const std::string& text, const std::string& piece) {
+    for (auto at = text.find(piece); at != std::string::npos; at = text.find(piece, at + 1)) {
+        const auto letter = [&](std::size_t i) {
+            return std::isalpha(static_cast<unsigned char>(text[i])) != 0 ||
+                   static_cast<unsigned char>(text[i]) >= 0x80;
+        };
+        const bool before = at > 0 && letter(at - 1);
+        const bool after = at + piece.size() < text.size() && letter(at + piece.size());
+        if (!before && !after) {
+            return true;
+        }
+    }
+    return false;
+}
+
+/// The fragments of `strings`' first (or second) members that the other
+/// language's strings do not hold too (e.g. "Min", "Void Space Surface").
+std::vector<std::string> onlyIn(const std::vector<std::pair<std::string, std::string>>& strings,
+                                bool english) {
+    std::string other;
+    for (const auto& [source, translation] : strings) {
+        other += (english ? translation : source) + "\n";
+    }
+    std::vector<std::string> result;
+    for (const auto& [source, translation] : strings) {
+        if (source.find("yyyy") != std::string::npos) {
+            continue;  // the date formats
+        }
+        for (const std::string& piece : fragments(english ? source : translation)) {
+            if (!containsWords(other, piece)) {
+                result.push_back(piece);
+            }
+        }
+    }
+    return result;
+}
+
+const std::string kPatient =
+    "--patient-name 'Musterfrau^Erika' --patient-id P-4711 --birth-date 19640812 --sex F "
+    "--study-date 20260301 --accession A-99 --referring-physician 'Huber^Hans'";
+
+/// The text (outside the views' legends) of the tube's report in `language`:
+/// both views, the statistics of 6 bins, the step solver, the patient.
+std::string reportText(const std::string& language,
+                       const std::vector<std::pair<std::string, std::string>>& views) {
+    const fs::path dir = freshDir(language);
+    const fs::path pdf = dir / "report.pdf";
+    std::string output;
+    EXPECT_EQ(runReport("", writeTube(dir), pdf,
+                        "--lang " + language +
+                            " --view far --second-view anterior --array wss --bins 6 "
+                            "--solver step --note 'Stenose.' " +
+                            kPatient,
+                        output),
+              0)
+        << output;
+    return textOutsideTheViews(words(pdf), views);
+}
+
+TEST(ReportLanguageTest, GermanReportHasNoEnglishAndNoDecimalPoint) {
+    const std::string text = reportText("de", {{"Ansicht", "Fernansicht"}, {"Zweite", "Ansicht"}});
+    const std::vector<std::string> englishOnly = onlyIn(reportStrings(), true);
+    EXPECT_GT(englishOnly.size(), 60U);
+    for (const std::string& english : englishOnly) {
+        EXPECT_FALSE(containsWords(text, english)) << "English '" << english << "' in\n" << text;
+    }
+    // Numbers with the German decimal comma: no digit.digit left but the
+    // version and the dates (dd.mm.yyyy).
+    std::string numbers = std::regex_replace(text, std::regex(R"(VesselView \d+\.\d+\.\d+)"), "");
+    numbers = std::regex_replace(numbers, std::regex(R"(\b\d{2}\.\d{2}\.\d{4}\b)"), "DATE");
+    std::smatch decimal;
+    EXPECT_FALSE(std::regex_search(numbers, decimal, std::regex(R"(\d\.\d)")))
+        << "'" << decimal.str(0) << "' in\n"
+        << text;
+    EXPECT_NE(text.find(",0 %"), std::string::npos) << text;        // e.g. 100,0 %
+    EXPECT_NE(text.find("12.08.1964"), std::string::npos) << text;  // the birth date
+    EXPECT_NE(text.find("Nicht für diagnostische Zwecke."), std::string::npos) << text;
+}
+
+TEST(ReportLanguageTest, EnglishReportHasNoGerman) {
+    const std::string text = reportText("en", {{"View", "Far"}, {"Second", "Anterior"}});
+    for (const std::string& german : onlyIn(reportStrings(), false)) {
+        EXPECT_FALSE(containsWords(text, german)) << "German '" << german << "' in\n" << text;
+    }
+    EXPECT_NE(text.find("1964-08-12"), std::string::npos) << text;
+    EXPECT_NE(text.find("Not for diagnostic use."), std::string::npos) << text;
+}
+
+TEST(ReportLanguageTest, UnknownLanguageIsAUsageError) {
+    const fs::path dir = freshDir("bad");
+    const fs::path input = writeTube(dir);
+    std::string output;
+    EXPECT_EQ(runReport("", input, dir / "r.pdf", "--lang xx", output), 2) << output;
+    EXPECT_NE(output.find("--lang must be one of en, de, got 'xx'"), std::string::npos) << output;
+    EXPECT_FALSE(fs::exists(dir / "r.pdf"));
+}
+
+/// Where `words` start in `text` (npos when absent).
+std::size_t position(const std::string& text, const std::string& words) {
+    return text.find(words);
+}
+
+TEST(ReportLanguageTest, PatientForMeshesFindingsFirstNamesOnlyAndDisclaimer) {
+    const fs::path dir = freshDir("sections");
+    const fs::path input = writeTube(dir);
+    const fs::path pdf = dir / "report.pdf";
+    std::string output;
+    ASSERT_EQ(runReport("", input, pdf,
+                        "--view far --note 'Findings of the section test.' "
+                        "--disclaimer 'Research use only, not validated.' " +
+                            kPatient,
+                        output),
+              0)
+        << output;
+    std::string text;
+    for (const Word& w : words(pdf)) {
+        text += w.text + " ";
+    }
+    for (const char* expected :
+         {"Musterfrau, Erika", "P-4711", "1964-08-12", "female", "2026-03-01", "A-99",
+          "Huber, Hans", "Research use only, not validated.", "tube.vtp"}) {
+        EXPECT_NE(text.find(expected), std::string::npos) << expected << " in\n" << text;
+    }
+    EXPECT_EQ(text.find("Not for diagnostic use."), std::string::npos) << text;
+    // Findings right after the patient block, before the view and everything else.
+    const std::size_t patient = position(text, "Patient and study");
+    const std::size_t findings = position(text, "Findings of the section test.");
+    const std::size_t view = position(text, "Far view");
+    const std::size_t settings = position(text, "Rendering settings");
+    ASSERT_NE(patient, std::string::npos) << text;
+    ASSERT_NE(findings, std::string::npos) << text;
+    EXPECT_LT(patient, findings);
+    EXPECT_LT(findings, view);
+    EXPECT_LT(findings, settings);
+    // The file by name: no folder (build or home paths).
+    EXPECT_EQ(text.find(dir.string()), std::string::npos) << text;
+    EXPECT_EQ(text.find("report-language"), std::string::npos) << text;
+    // Not the demo: no provenance line.
+    EXPECT_EQ(text.find("Synthetic demo data"), std::string::npos) << text;
+
+    // Bad patient values are usage errors.
+    EXPECT_EQ(runReport("", input, dir / "bad.pdf", "--birth-date 1964-08-12", output), 2);
+    EXPECT_NE(output.find("--birth-date must be a date as YYYYMMDD"), std::string::npos) << output;
+    EXPECT_EQ(runReport("", input, dir / "bad.pdf", "--sex X", output), 2);
+}
+
+TEST(ReportLanguageTest, TheDemoIsNamedSyntheticData) {
+    const fs::path dir = freshDir("demo");
+    const fs::path input = writeTube(dir);
+    const fs::path pdf = dir / "report.pdf";
+    std::string output;
+    // The bundled demo file as the app finds it (VV_DEMO_FILE, ResourcePaths.h).
+    ASSERT_EQ(runReport("VV_DEMO_FILE='" + input.string() + "'", input, pdf, "", output), 0)
+        << output;
+    std::string text;
+    for (const Word& w : words(pdf)) {
+        text += w.text + " ";
+    }
+    EXPECT_NE(text.find("Synthetic demo data generated by VesselView: not patient data."),
+              std::string::npos)
+        << text;
+}
+
+}  // namespace
