@@ -6,7 +6,6 @@
 #include <QFontMetricsF>
 #include <QLocale>
 #include <QPainter>
-#include <QPainterPath>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -37,17 +36,24 @@ QString axisLetter(int axis, SceneFrame frame) {
 const QColor kInk(245, 245, 245);
 const QColor kBox(0, 0, 0, 150);
 
-/// Text with a dark halo, readable over any background, centred on `at`.
+/// Text with a dark halo (the text drawn dark around it), readable over
+/// any background, centred on `at`.
 void haloText(QPainter& painter, const QPointF& at, const QString& text, const QColor& ink) {
     const QFontMetricsF fm(painter.font());
-    const QPointF origin(at.x() - fm.horizontalAdvance(text) / 2.0,
-                         at.y() + (fm.ascent() - fm.descent()) / 2.0);
-    QPainterPath path;
-    path.addText(origin, painter.font(), text);
-    painter.setBrush(Qt::NoBrush);
-    painter.setPen(QPen(QColor(0, 0, 0, 210), std::max(2.0, painter.font().pixelSize() / 5.0)));
-    painter.drawPath(path);
-    painter.fillPath(path, ink);
+    const QPointF origin(std::round(at.x() - fm.horizontalAdvance(text) / 2.0),
+                         std::round(at.y() + (fm.ascent() - fm.descent()) / 2.0));
+    painter.setPen(QColor(0, 0, 0, 220));
+    for (const QPointF offset : {QPointF(-1, -1), QPointF(0, -1), QPointF(1, -1), QPointF(-1, 0),
+                                 QPointF(1, 0), QPointF(-1, 1), QPointF(0, 1), QPointF(1, 1)}) {
+        painter.drawText(origin + offset, text);
+    }
+    painter.setPen(ink);
+    painter.drawText(origin, text);
+}
+
+/// `p` on a grid of 1/8 pixel.
+QPointF snapped(const QPointF& p) {
+    return {std::round(p.x() * 8.0) / 8.0, std::round(p.y() * 8.0) / 8.0};
 }
 
 /// The font size of the annotations for a view of `area`.
@@ -75,14 +81,15 @@ void paintMarker(QPainter& painter, const QRectF& area, const Camera& camera, Sc
     for (const int axis : order) {
         glm::vec3 e(0.0F);
         e[axis] = 1.0F;
-        const QPointF tip = centre + QPointF(glm::dot(e, camera.right()) * radius,
-                                             -glm::dot(e, camera.up()) * radius);
+        // On a 1/8-pixel grid: cameras equal up to float noise paint the same pixels.
+        const QPointF tip = snapped(centre + QPointF(glm::dot(e, camera.right()) * radius,
+                                                     -glm::dot(e, camera.up()) * radius));
         painter.setPen(QPen(colours[static_cast<std::size_t>(axis)], std::max(2.0, font / 6.0),
                             Qt::SolidLine, Qt::RoundCap));
         painter.drawLine(centre, tip);
         const QPointF away = tip - centre;
         const double length = std::hypot(away.x(), away.y());
-        const QPointF label = length > 1.0 ? tip + away / length * (font * 0.7) : tip;
+        const QPointF label = snapped(length > 1.0 ? tip + away / length * (font * 0.7) : tip);
         haloText(painter, label, axisLetter(axis, frame), colours[static_cast<std::size_t>(axis)]);
     }
     if (frame != SceneFrame::PatientLps) {
