@@ -745,8 +745,8 @@
         <translation>A und B in gleicher Tiefe</translation>
     </message>
     <message>
-        <source>Distance A–B: %1 mm; depth difference in this view (along the current view direction): %2 · Esc clears</source>
-        <translation>Abstand A–B: %1 mm; Tiefenunterschied in dieser Ansicht (entlang der aktuellen Blickrichtung): %2 · Esc löscht</translation>
+        <source>Distance A–B: %1 mm · depth difference in this view: %2</source>
+        <translation>Abstand A–B: %1 mm · Tiefenunterschied in dieser Ansicht: %2</translation>
     </message>
 </context>
 <context>

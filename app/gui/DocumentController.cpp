@@ -325,7 +325,14 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
         title = QCoreApplication::translate("vv::gui::MainWindow", "demo vessel tree");
     }
     openedFiles_ = opened;
-    demo_ = task == demoTask_;
+    // The demo: opened as such, or its bundled file opened by name.
+    const std::optional<QString> demoFile = findDemoFile();
+    demo_ =
+        task == demoTask_ ||
+        (demoFile && std::any_of(task->files().begin(), task->files().end(), [&](const auto& f) {
+             return QFileInfo(QFile::decodeName(f.string().c_str())).canonicalFilePath() ==
+                    QFileInfo(*demoFile).canonicalFilePath();
+         }));
     shownFiles_.clear();
     for (const auto& path : task->files()) {
         shownFiles_ << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();

@@ -62,8 +62,7 @@ QString MeasureTool::measurementText() const {
     const QString deeper = std::abs(depth) < 0.05F ? tr("A and B at the same depth")
                            : depth > 0.0F          ? tr("B deeper by %1 mm").arg(millimetres(depth))
                                           : tr("A deeper by %1 mm").arg(millimetres(-depth));
-    return tr("Distance A–B: %1 mm; depth difference in this view (along the current view "
-              "direction): %2 · Esc clears")
+    return tr("Distance A–B: %1 mm · depth difference in this view: %2")
         .arg(millimetres(m.distance), deeper);
 }
 

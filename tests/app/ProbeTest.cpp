@@ -248,8 +248,11 @@ TEST_F(ProbeTest, MeasuredDepthDifferenceFollowsTheViewAndTheDistanceStays) {
     const double shownDistance = numberAfter(label, distancePrefix);
     QLocale::setDefault(before);
     EXPECT_NEAR(shownDepth, std::abs(expected), 0.051) << label.toStdString();
-    EXPECT_TRUE(label.contains(QStringLiteral("along the current view direction")))
+    EXPECT_TRUE(label.contains(QStringLiteral("depth difference in this view")))
         << label.toStdString();
+    // The tooltip says what the depth difference is measured along.
+    EXPECT_TRUE(window_->measureLabel()->toolTip().contains(
+        QStringLiteral("along the current view direction")));
     EXPECT_NEAR(shownDistance, distance, 1e-9) << label.toStdString();
     EXPECT_TRUE(label.contains(QLatin1Char(','))) << "German decimals: " << label.toStdString();
 }

@@ -299,15 +299,7 @@ TEST_F(SegmentationGuiTest, LivePreviewKeepsTheCameraTheUserMoved) {
     auto* viewer = window_->viewer();
     const QPointF from(viewer->width() * 0.4, viewer->height() * 0.5);
     const QPointF to(viewer->width() * 0.6, viewer->height() * 0.4);
-    QMouseEvent press(QEvent::MouseButtonPress, from, viewer->mapToGlobal(from), Qt::LeftButton,
-                      Qt::LeftButton, Qt::NoModifier);
-    QCoreApplication::sendEvent(viewer, &press);
-    QMouseEvent move(QEvent::MouseMove, to, viewer->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
-                     Qt::NoModifier);
-    QCoreApplication::sendEvent(viewer, &move);
-    QMouseEvent release(QEvent::MouseButtonRelease, to, viewer->mapToGlobal(to), Qt::LeftButton,
-                        Qt::NoButton, Qt::NoModifier);
-    QCoreApplication::sendEvent(viewer, &release);
+    leftDrag(viewer, from, to);
     const render::Camera moved = viewer->camera();
     ASSERT_GT(std::abs(moved.rotation().w), 0.0F);
     ASSERT_LT(std::abs(moved.rotation().w), 0.9999F) << "the drag did not turn the view";

@@ -129,6 +129,14 @@ TEST_F(ViewTruthTest, WindowTitleNamesTheFileAndTheDemo) {
         << window_->windowTitle().toStdString();
     const QString file = QFileInfo(QStringLiteral(VV_DEMO_VTP)).fileName();
     EXPECT_EQ(window_->windowTitle(), QStringLiteral("%1 (demo data) — VesselView").arg(file));
+
+    // Other data, then the bundled demo file opened by its name: still the demo.
+    window_->setScene(makeTubeScene(), QStringLiteral("aorta.vtp"));
+    ASSERT_EQ(window_->windowTitle(), QStringLiteral("aorta.vtp — VesselView"));
+    window_->openFiles({QStringLiteral(VV_DEMO_VTP)});
+    ASSERT_TRUE(waitUntil([&] { return window_->windowTitle().contains(file); }))
+        << window_->windowTitle().toStdString();
+    EXPECT_EQ(window_->windowTitle(), QStringLiteral("%1 (demo data) — VesselView").arg(file));
 }
 
 /// The longest horizontal run of near-white pixels in `region` of `image`.
