@@ -64,10 +64,11 @@ int fontPixels(const QRectF& area) {
 void paintMarker(QPainter& painter, const QRectF& area, const Camera& camera, SceneFrame frame) {
     const double font = fontPixels(area);
     const double radius = font * 2.6;
-    const QPointF centre(area.left() + font * 1.2 + radius, area.top() + font * 1.2 + radius);
+    const double outer = radius + font * 1.1;  // the disc behind the axes
+    const QPointF centre(area.left() + font * 0.8 + outer, area.top() + font * 0.8 + outer);
     painter.setPen(Qt::NoPen);
     painter.setBrush(kBox);
-    painter.drawEllipse(centre, radius + font * 1.1, radius + font * 1.1);
+    painter.drawEllipse(centre, outer, outer);
     // The axes farthest from the viewer first, so that nearer ones cover them.
     std::array<int, 3> order{0, 1, 2};
     const auto towards = [&](int axis) {
@@ -89,7 +90,9 @@ void paintMarker(QPainter& painter, const QRectF& area, const Camera& camera, Sc
         painter.drawLine(centre, tip);
         const QPointF away = tip - centre;
         const double length = std::hypot(away.x(), away.y());
-        const QPointF label = snapped(length > 1.0 ? tip + away / length * (font * 0.7) : tip);
+        // An axis along the view direction has no length: its letter beside the centre.
+        const QPointF label = snapped(length > font * 0.8 ? tip + away / length * (font * 0.7)
+                                                          : centre + QPointF(font, font) * 0.75);
         haloText(painter, label, axisLetter(axis, frame), colours[static_cast<std::size_t>(axis)]);
     }
     if (frame != SceneFrame::PatientLps) {
