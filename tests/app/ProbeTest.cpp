@@ -257,6 +257,21 @@ TEST_F(ProbeTest, MeasuredDepthDifferenceFollowsTheViewAndTheDistanceStays) {
     EXPECT_TRUE(label.contains(QLatin1Char(','))) << "German decimals: " << label.toStdString();
 }
 
+TEST_F(ProbeTest, AMeasurementEndsWithItsScene) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    click(viewer, onAxis(0.3), Qt::ControlModifier);
+    click(viewer, onAxis(0.7), Qt::ControlModifier);
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    // Other data: points on the old data mean nothing there.
+    window_->setScene(makeTubeScene(false), QStringLiteral("other"));
+    ASSERT_TRUE(waitForFrames(1));
+    EXPECT_TRUE(window_->measurePoints().isEmpty());
+    EXPECT_FALSE(window_->measureOverlay()->isVisible());
+    EXPECT_TRUE(window_->measureLabel()->text().isEmpty())
+        << window_->measureLabel()->text().toStdString();
+}
+
 TEST_F(ProbeTest, MeasureOfKnownPoints) {
     gui::ProbeResult a;
     gui::ProbeResult b;
