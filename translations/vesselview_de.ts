@@ -162,6 +162,14 @@
         <source>Colour-map bins</source>
         <translation>Farbstufen</translation>
     </message>
+    <message>
+        <source>Show the orientation marker</source>
+        <translation>Orientierungsmarke anzeigen</translation>
+    </message>
+    <message>
+        <source>Show the scale bar (at the focal plane)</source>
+        <translation>Maßstab anzeigen (in der Fokusebene)</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::DocumentController</name>
@@ -805,6 +813,34 @@
         <source>Side Panel</source>
         <translation>Seitenleiste</translation>
     </message>
+    <message>
+        <source>Show &amp;Orientation Marker</source>
+        <translation>&amp;Orientierungsmarke anzeigen</translation>
+    </message>
+    <message>
+        <source>Show &amp;Scale Bar</source>
+        <translation>&amp;Maßstab anzeigen</translation>
+    </message>
+    <message>
+        <source>A length in mm, true at the focal plane (the depth of the centre of rotation); nearer parts look larger, farther ones smaller</source>
+        <translation>Eine Länge in mm, maßstabsgetreu in der Fokusebene (der Tiefe des Drehzentrums); nähere Teile erscheinen größer, fernere kleiner</translation>
+    </message>
+    <message>
+        <source>%1 (demo data) — VesselView</source>
+        <translation>%1 (Demodaten) — VesselView</translation>
+    </message>
+    <message>
+        <source>%1 — VesselView</source>
+        <translation>%1 — VesselView</translation>
+    </message>
+    <message>
+        <source>VSS: approximate (no error bound), %1 ms</source>
+        <translation>VSS: genähert (ohne Fehlerschranke), %1 ms</translation>
+    </message>
+    <message>
+        <source>VSS: within %1/255, %2 ms</source>
+        <translation>VSS: Fehler ≤ %1/255, %2 ms</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -824,14 +860,6 @@
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <source>Measure: A on %1, %2 mm deep; click a second point</source>
-        <translation>Messen: A auf %1, %2 mm tief; einen zweiten Punkt anklicken</translation>
-    </message>
-    <message>
-        <source>same depth</source>
-        <translation>gleiche Tiefe</translation>
-    </message>
-    <message>
         <source>B deeper by %1 mm</source>
         <translation>B um %1 mm tiefer</translation>
     </message>
@@ -840,12 +868,24 @@
         <translation>A um %1 mm tiefer</translation>
     </message>
     <message>
-        <source>Distance A–B: %1 mm; %2</source>
-        <translation>Abstand A–B: %1 mm; %2</translation>
-    </message>
-    <message>
         <source>Measure: no vessel under the mouse</source>
         <translation>Messen: kein Gefäß unter dem Mauszeiger</translation>
+    </message>
+    <message>
+        <source>The distance is the 3-D distance of A and B. The depth difference is measured along the current view direction and changes as the view turns. Esc clears.</source>
+        <translation>Der Abstand ist der räumliche (3-D-)Abstand von A und B. Der Tiefenunterschied wird entlang der aktuellen Blickrichtung gemessen und ändert sich, wenn die Ansicht gedreht wird. Esc löscht die Messung.</translation>
+    </message>
+    <message>
+        <source>Measure: A on %1; click a second point</source>
+        <translation>Messen: A auf %1; einen zweiten Punkt anklicken</translation>
+    </message>
+    <message>
+        <source>A and B at the same depth</source>
+        <translation>A und B in gleicher Tiefe</translation>
+    </message>
+    <message>
+        <source>Distance A–B: %1 mm · depth difference in this view: %2</source>
+        <translation>Abstand A–B: %1 mm · Tiefenunterschied in dieser Ansicht: %2</translation>
     </message>
 </context>
 <context>
@@ -2162,6 +2202,17 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>How the surface is computed: solver, tolerance, solve time</source>
         <translation>Wie die Fläche berechnet wird: Löser, Toleranz, Rechenzeit</translation>
+    </message>
+</context>
+<context>
+    <name>vv::render::ViewAnnotations</name>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>at the focal plane</source>
+        <translation>in der Fokusebene</translation>
     </message>
 </context>
 <context>

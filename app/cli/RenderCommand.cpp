@@ -216,6 +216,9 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         offscreenOptions(parsed, volume ? cornerScene(*volume) : scene, parsed.input);
     options.volume = volume;
     options.isoValue = iso;
+    if (volume || !source.seriesInstanceUid.empty()) {
+        options.annotations.frame = render::SceneFrame::PatientLps;  // DICOM: patient LPS
+    }
     const render::Camera camera = *options.camera;
 
     ensureGuiApplication();

@@ -166,6 +166,9 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
     options.style.array = values.array.value_or(render::defaultArrayName(scene));
     options.cue = values.cue;
     options.legends = values.legends;
+    options.annotations = {.orientationMarker = values.orientationMarker,
+                           .scaleBar = values.scaleBar,
+                           .frame = render::SceneFrame::Unknown};
     options.vss = values.vss;
     options.ao = values.ao;
     options.antialiasing = values.antialiasing;

@@ -22,6 +22,11 @@ struct DisplaySettings {
     render::MeshStyle style;
     glm::vec3 background{render::FrameSettings{}.background};  ///< sRGB
     bool legends = true;
+    /// The orientation marker (patient letters with a patient frame, else
+    /// x / y / z) and the scale bar at the focal plane, over the view and in
+    /// exports (render::ViewAnnotations).
+    bool orientationMarker = true;
+    bool scaleBar = true;
     /// FXAA; the GUI always runs it (only the command line turns it off).
     bool antialiasing = true;
 };

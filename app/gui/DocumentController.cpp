@@ -100,6 +100,7 @@ void DocumentController::openDemo() {
     } else {
         startTask(MeshLoadTask::generateDemo(this), {});
     }
+    demoTask_ = task_;
 }
 
 bool DocumentController::openSession(const QString& path) {
@@ -118,6 +119,7 @@ bool DocumentController::openSession(const QString& path) {
         openedFiles_.clear();
         shownFiles_.clear();
         seriesUid_.clear();
+        demo_ = false;
         setVolume(nullptr, {}, {});
         show(nullptr, QString(), std::move(session));
         return true;
@@ -196,6 +198,7 @@ void DocumentController::setScene(std::shared_ptr<const scene::Scene> scene, con
     openedFiles_.clear();
     shownFiles_.clear();
     seriesUid_.clear();
+    demo_ = false;
     setVolume(nullptr, {}, {});
     show(std::move(scene), title, std::nullopt);
 }
@@ -326,6 +329,14 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
         title = QCoreApplication::translate("vv::gui::MainWindow", "demo vessel tree");
     }
     openedFiles_ = opened;
+    // The demo: opened as such, or its bundled file opened by name.
+    const std::optional<QString> demoFile = findDemoFile();
+    demo_ =
+        task == demoTask_ ||
+        (demoFile && std::any_of(task->files().begin(), task->files().end(), [&](const auto& f) {
+             return QFileInfo(QFile::decodeName(f.string().c_str())).canonicalFilePath() ==
+                    QFileInfo(*demoFile).canonicalFilePath();
+         }));
     shownFiles_.clear();
     for (const auto& path : task->files()) {
         shownFiles_ << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();

@@ -112,6 +112,9 @@ class DocumentController : public QObject {
         return scene_;
     }
     [[nodiscard]] const QString& title() const noexcept { return title_; }
+    /// True when the scene on screen is the demo data (the bundled file or
+    /// the generated tree, and what segmentation derived from it).
+    [[nodiscard]] bool showsDemo() const noexcept { return demo_; }
     /// The files the user opened for the scene on screen, as given (the Data
     /// panel lists them; empty for the demo and for setScene()).
     [[nodiscard]] const QStringList& openedFiles() const noexcept { return openedFiles_; }
@@ -199,6 +202,8 @@ class DocumentController : public QObject {
     void fail(const QString& title, const QString& message);
 
     QPointer<MeshLoadTask> task_;
+    QPointer<MeshLoadTask> demoTask_;        ///< the load openDemo() started
+    bool demo_ = false;                      ///< showsDemo()
     std::optional<Session> pendingSession_;  ///< applied once task_'s files are shown
     std::shared_ptr<const scene::Scene> scene_;
     QString title_;

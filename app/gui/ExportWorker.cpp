@@ -39,6 +39,7 @@ render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int widt
     options.ao = viewer.aoSettings();
     options.antialiasing = true;  // the viewer always runs FXAA
     options.legends = false;
+    options.annotations = viewer.viewAnnotations();
     options.camera = viewer.camera();
     options.volume = viewer.volume();  // a ray-cast volume, when one is shown
     options.isoValue = viewer.isoValue();

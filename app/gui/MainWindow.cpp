@@ -11,6 +11,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QLabel>
+#include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
@@ -251,6 +252,23 @@ void MainWindow::buildMenus() {
         viewer_->setLegendsVisible(on);
         syncControls();
     });
+    // The orientation marker and the scale bar (over the view and in exports).
+    markerAction_ = view->addAction(tr("Show &Orientation Marker"));
+    markerAction_->setObjectName(QStringLiteral("orientationMarkerToggle"));
+    scaleBarAction_ = view->addAction(tr("Show &Scale Bar"));
+    scaleBarAction_->setObjectName(QStringLiteral("scaleBarToggle"));
+    scaleBarAction_->setToolTip(
+        tr("A length in mm, true at the focal plane (the depth of the centre of rotation); "
+           "nearer parts look larger, farther ones smaller"));
+    for (QAction* action : {markerAction_, scaleBarAction_}) {
+        action->setCheckable(true);
+        connect(action, &QAction::toggled, this, [this] {
+            render::ViewAnnotations annotations = viewer_->viewAnnotations();
+            annotations.orientationMarker = markerAction_->isChecked();
+            annotations.scaleBar = scaleBarAction_->isChecked();
+            viewer_->setViewAnnotations(annotations);
+        });
+    }
     view->addAction(vssAction_);
     view->addAction(aoAction_);
     view->addAction(cvdAction_);
@@ -265,7 +283,9 @@ void MainWindow::buildMenus() {
     connect(measureAction_, &QAction::toggled, this, [this](bool on) { measure_->setActive(on); });
     QAction* clearMeasure =
         view->addAction(tr("&Clear Measurement"), this, &MainWindow::clearMeasurement);
-    clearMeasure->setShortcut(Qt::SHIFT | Qt::Key_M);
+    clearMeasure->setObjectName(QStringLiteral("clearMeasurement"));
+    // Leaving measure mode keeps the measurement: Esc (or Shift+M) clears it.
+    clearMeasure->setShortcuts({QKeySequence(Qt::Key_Escape), QKeySequence(Qt::SHIFT | Qt::Key_M)});
     view->addSeparator();
     QMenu* panelsMenu = view->addMenu(tr("&Panels"));
     for (QDockWidget* dock : docks_) {
@@ -397,6 +417,14 @@ void MainWindow::syncControls() {
         const QSignalBlocker legends(legendsAction_);
         legendsAction_->setChecked(viewer_->legendsVisible());
     }
+    for (QAction* action : {markerAction_, scaleBarAction_}) {
+        if (action != nullptr) {
+            const QSignalBlocker blocker(action);
+            action->setChecked(action == markerAction_
+                                   ? viewer_->viewAnnotations().orientationMarker
+                                   : viewer_->viewAnnotations().scaleBar);
+        }
+    }
     updateRangeLabel();
 }
 
@@ -458,6 +486,7 @@ void MainWindow::revealPanel(const QWidget* panel) {
 void MainWindow::buildStatusBar() {
     statusLabel_ = new QLabel(tr("Ready"), this);
     rangeLabel_ = new QLabel(this);
+    rangeLabel_->setObjectName(QStringLiteral("arrayRangeLabel"));
     vssLabel_ = new QLabel(this);
     vssLabel_->setObjectName(QStringLiteral("vssQualityLabel"));
     progressBar_ = new QProgressBar(this);
@@ -517,10 +546,17 @@ void MainWindow::showScene(const std::shared_ptr<const scene::Scene>& scene, con
 }
 
 void MainWindow::sceneWasShown() {
+    // Scenes from DICOM are in the patient frame (LPS): the marker names patient sides.
+    render::ViewAnnotations annotations = viewer_->viewAnnotations();
+    annotations.frame = document_->seriesUid().empty() && document_->dicomSource().isEmpty()
+                            ? render::SceneFrame::Unknown
+                            : render::SceneFrame::PatientLps;
+    viewer_->setViewAnnotations(annotations);
     syncControls();
     const QString& title = document_->title();
-    setWindowTitle(title.isEmpty() ? QStringLiteral("VesselView")
-                                   : title + QStringLiteral(" — VesselView"));
+    setWindowTitle(title.isEmpty()          ? QStringLiteral("VesselView")
+                   : document_->showsDemo() ? tr("%1 (demo data) — VesselView").arg(title)
+                                            : tr("%1 — VesselView").arg(title));
     if (const auto& scene = document_->scene()) {
         const std::size_t triangles = scene->triangleCount();
         const QString meshes =
@@ -618,6 +654,27 @@ void MainWindow::setScreenshotTarget(const QString& path) {
     }
 }
 
+namespace {
+
+/// What holds of a settled VSS that is on screen: "exact" only for an exact
+/// solver, else the solver's guaranteed error bound (in 1/255 of the depth
+/// range) or that it gives none; with the solve's time. UI-locale numbers.
+QString vssQualityText(const render::VssFrameStatus& status) {
+    const QLocale locale;
+    const QString ms =
+        locale.toString(static_cast<qlonglong>(std::lround(status.solveMilliseconds)));
+    if (status.errorBound == 0.0) {
+        return MainWindow::tr("VSS: exact, %1 ms").arg(ms);
+    }
+    if (!std::isfinite(status.errorBound)) {
+        return MainWindow::tr("VSS: approximate (no error bound), %1 ms").arg(ms);
+    }
+    return MainWindow::tr("VSS: within %1/255, %2 ms")
+        .arg(locale.toString(status.errorBound * 255.0, 'g', 3), ms);
+}
+
+}  // namespace
+
 void MainWindow::updateVssLabel() {
     const render::VssFrameStatus& status = viewer_->vssStatus();
     if (!viewer_->scene() || !viewer_->vssSettings().enabled) {
@@ -627,7 +684,7 @@ void MainWindow::updateVssLabel() {
     } else if (status.preview || !status.current) {
         vssLabel_->setText(tr("VSS: preview"));
     } else {
-        vssLabel_->setText(tr("VSS: exact, %1 ms").arg(std::lround(status.solveMilliseconds)));
+        vssLabel_->setText(vssQualityText(status));
     }
 }
 

@@ -264,6 +264,8 @@ class MainWindow : public QMainWindow {
     /// The display before the colour-blind-safe mode was switched on.
     std::optional<DisplayState> beforeColorBlindSafe_;
     QAction* legendsAction_ = nullptr;
+    QAction* markerAction_ = nullptr;    ///< View > Show Orientation Marker
+    QAction* scaleBarAction_ = nullptr;  ///< View > Show Scale Bar
     QLabel* vssLabel_ = nullptr;
     QAction* measureAction_ = nullptr;
     QLabel* measureLabel_ = nullptr;

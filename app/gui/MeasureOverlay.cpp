@@ -2,6 +2,7 @@
 #include "gui/MeasureOverlay.h"
 
 #include <QEvent>
+#include <QLocale>
 #include <QPainter>
 #include <QPainterPath>
 #include <glm/glm.hpp>
@@ -64,8 +65,9 @@ void MeasureOverlay::paintEvent(QPaintEvent* event) {
             painter.setPen(QPen(color, width, Qt::DashLine, Qt::RoundCap));
             painter.drawLine(screen[0], screen[1]);
         }
-        const Measurement m = measure(points_[0], points_[1]);
-        const QString text = tr("%1 mm").arg(static_cast<double>(m.distance), 0, 'f', 1);
+        const Measurement m = measure(points_[0], points_[1], viewer_->camera());
+        const QString text =
+            tr("%1 mm").arg(QLocale().toString(static_cast<double>(m.distance), 'f', 1));
         QPainterPath path;
         QFont font = painter.font();
         font.setBold(true);

@@ -2,22 +2,38 @@
 #include "gui/MeasureTool.h"
 
 #include <QLabel>
+#include <QLocale>
 #include <cmath>
 
 #include "gui/MeasureOverlay.h"
 
 namespace vv::gui {
 
+namespace {
+
+/// A length in mm with one decimal, in the UI locale.
+QString millimetres(float value) {
+    return QLocale().toString(static_cast<double>(value), 'f', 1);
+}
+
+}  // namespace
+
 MeasureTool::MeasureTool(ViewerWidget* viewer, QLabel* label, QObject* parent)
-    : QObject(parent), viewer_(viewer), label_(label), overlay_(new MeasureOverlay(viewer)) {}
+    : QObject(parent), viewer_(viewer), label_(label), overlay_(new MeasureOverlay(viewer)) {
+    label_->setToolTip(
+        tr("The distance is the 3-D distance of A and B. The depth difference is measured along "
+           "the current view direction and changes as the view turns. Esc clears."));
+    // Every frame may show another view direction: the depth difference follows it.
+    connect(viewer_, &ViewerWidget::frameRendered, this, &MeasureTool::refresh);
+}
 
 void MeasureTool::setActive(bool on) {
     active_ = on;
     viewer_->setMeasureMode(on);
-    if (!on) {
-        clear();
-    } else if (points_.isEmpty()) {
+    if (on && points_.isEmpty()) {
         label_->setText(tr("Measure: click a point on a vessel"));
+    } else if (!on && points_.isEmpty()) {
+        label_->clear();
     }
 }
 
@@ -27,30 +43,48 @@ void MeasureTool::addPoint(const ProbeResult& point) {
     }
     points_ << point;
     overlay_->setPoints(points_);
-    const auto where = [](const ProbeResult& p) {
-        return p.objectName.isEmpty() ? tr("object %1").arg(p.meshIndex + 1) : p.objectName;
-    };
+    shown_.clear();
     if (points_.size() == 1) {
-        label_->setText(tr("Measure: A on %1, %2 mm deep; click a second point")
-                            .arg(where(point))
-                            .arg(static_cast<double>(point.depthBelowNearest), 0, 'f', 1));
+        const QString where = point.objectName.isEmpty() ? tr("object %1").arg(point.meshIndex + 1)
+                                                         : point.objectName;
+        label_->setText(tr("Measure: A on %1; click a second point").arg(where));
         return;
     }
-    const Measurement m = measure(points_[0], points_[1]);
-    const auto depth = static_cast<double>(m.depthDifference);
-    const QString deeper = std::abs(depth) < 0.05 ? tr("same depth")
-                           : depth > 0.0 ? tr("B deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1)
-                                         : tr("A deeper by %1 mm").arg(std::abs(depth), 0, 'f', 1);
-    label_->setText(
-        tr("Distance A–B: %1 mm; %2").arg(static_cast<double>(m.distance), 0, 'f', 1).arg(deeper));
+    refresh();
+}
+
+QString MeasureTool::measurementText() const {
+    if (points_.size() < 2) {
+        return {};
+    }
+    const Measurement m = measure(points_[0], points_[1], viewer_->camera());
+    const float depth = m.depthDifference;
+    const QString deeper = std::abs(depth) < 0.05F ? tr("A and B at the same depth")
+                           : depth > 0.0F          ? tr("B deeper by %1 mm").arg(millimetres(depth))
+                                          : tr("A deeper by %1 mm").arg(millimetres(-depth));
+    return tr("Distance A–B: %1 mm · depth difference in this view: %2")
+        .arg(millimetres(m.distance), deeper);
+}
+
+void MeasureTool::refresh() {
+    if (points_.size() < 2) {
+        return;
+    }
+    const QString text = measurementText();
+    if (text != shown_) {
+        shown_ = text;
+        label_->setText(text);
+    }
 }
 
 void MeasureTool::missed() {
+    shown_.clear();
     label_->setText(tr("Measure: no vessel under the mouse"));
 }
 
 void MeasureTool::clear() {
     points_.clear();
+    shown_.clear();
     overlay_->setPoints(points_);
     label_->setText(active_ ? tr("Measure: click a point on a vessel") : QString());
 }

@@ -18,6 +18,8 @@ app::DisplaySettings displaySettings(const ViewerWidget& viewer) {
     s.style = viewer.style();
     s.background = viewer.background();
     s.legends = viewer.legendsVisible();
+    s.orientationMarker = viewer.viewAnnotations().orientationMarker;
+    s.scaleBar = viewer.viewAnnotations().scaleBar;
     s.antialiasing = true;
     return s;
 }
@@ -31,6 +33,10 @@ void applyDisplaySettings(ViewerWidget& viewer, const app::DisplaySettings& sett
     viewer.setStyle(style);
     viewer.setBackground(settings.background);
     viewer.setLegendsVisible(settings.legends);
+    render::ViewAnnotations annotations = viewer.viewAnnotations();  // the frame stays
+    annotations.orientationMarker = settings.orientationMarker;
+    annotations.scaleBar = settings.scaleBar;
+    viewer.setViewAnnotations(annotations);
 }
 
 void saveViewSettings(const ViewerWidget& viewer, QSettings& settings) {

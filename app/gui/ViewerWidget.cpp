@@ -19,6 +19,7 @@
 #include <limits>
 #include <utility>
 
+#include "gui/ViewOverlay.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
 #include "vv/meshio/MeshSimplify.h"
@@ -26,43 +27,9 @@
 
 namespace vv::gui {
 
-/// Paints the legends (LegendPainter) over the viewer; lets the mouse through.
-class LegendOverlay : public QWidget {
-  public:
-    explicit LegendOverlay(QWidget* parent) : QWidget(parent) {
-        setAttribute(Qt::WA_TransparentForMouseEvents);
-        setAttribute(Qt::WA_NoSystemBackground);
-        setAttribute(Qt::WA_TranslucentBackground);
-        setFocusPolicy(Qt::NoFocus);
-    }
-
-    void setLegends(render::Legends legends) {
-        const bool wasEmpty = legends_.empty();
-        legends_ = std::move(legends);
-        if (!(wasEmpty && legends_.empty())) {
-            update();
-        }
-    }
-
-    [[nodiscard]] const render::Legends& legends() const noexcept { return legends_; }
-
-  protected:
-    void paintEvent(QPaintEvent* event) override {
-        Q_UNUSED(event);
-        if (legends_.empty()) {
-            return;
-        }
-        QPainter painter(this);
-        render::paintLegends(painter, QRectF(rect()), legends_);
-    }
-
-  private:
-    render::Legends legends_;
-};
-
 ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
-    legendOverlay_ = new LegendOverlay(this);
-    legendOverlay_->setGeometry(rect());
+    viewOverlay_ = new ViewOverlay(this);
+    viewOverlay_->setGeometry(rect());
     settleTimer_ = new QTimer(this);
     settleTimer_->setSingleShot(true);
     settleTimer_->setInterval(settleDelayMs_);
@@ -297,6 +264,11 @@ void ViewerWidget::setLegendsVisible(bool visible) {
     requestFrame();
 }
 
+void ViewerWidget::setViewAnnotations(const render::ViewAnnotations& annotations) {
+    annotations_ = annotations;
+    requestFrame();
+}
+
 void ViewerWidget::setProgressiveRefinement(bool on) {
     view_.refinement().setProgressive(on);
     if (!on) {
@@ -460,11 +432,11 @@ void ViewerWidget::resizeGL(int w, int h) {
     Q_UNUSED(h);
     frameDirty_ = true;  // a new buffer: nothing to reuse
     camera_.setViewport(width(), height());
-    legendOverlay_->setGeometry(rect());
+    viewOverlay_->setGeometry(rect());
 }
 
 const render::Legends& ViewerWidget::shownLegends() const noexcept {
-    return legendOverlay_->legends();
+    return viewOverlay_->legends();
 }
 
 void ViewerWidget::paintMessage(const QString& text) {
@@ -517,8 +489,9 @@ void ViewerWidget::paintGL() {
         }
         const glm::ivec2 rendered = view_.frameRenderer().lastRenderSize();
         lastRenderSize_ = QSize(rendered.x, rendered.y);
-        // The legends of the scales in use, over the GL frame.
-        legendOverlay_->setLegends(legendsVisible_ ? view_.legends() : render::Legends{});
+        // The legends of the scales in use, the marker and the scale bar, over the GL frame.
+        viewOverlay_->setFrame(legendsVisible_ ? view_.legends() : render::Legends{}, camera_,
+                               annotations_);
     } catch (const vv::Error& e) {
         const QString why = QString::fromStdString(e.what());
         if (volume()) {
@@ -638,9 +611,10 @@ class ProbeToolTipFilter : public QObject {
 
 }  // namespace
 
-Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept {
-    return Measurement{glm::length(b.worldPosition - a.worldPosition),
-                       b.linearDepth - a.linearDepth};
+Measurement measure(const ProbeResult& a, const ProbeResult& b,
+                    const render::Camera& camera) noexcept {
+    const glm::vec3 ab = b.worldPosition - a.worldPosition;
+    return Measurement{glm::length(ab), glm::dot(ab, camera.forward())};
 }
 
 std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {

@@ -19,6 +19,7 @@
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/MeshStyle.h"
+#include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/MeshTopology.h"
@@ -26,7 +27,7 @@
 
 namespace vv::gui {
 
-class LegendOverlay;
+class ViewOverlay;
 
 // --- Probe and measurement ---------------------------------------------------
 /// What the viewer shows at one point of the widget (ViewerWidget::probeAt).
@@ -43,13 +44,15 @@ struct ProbeResult {
     float depthBelowNearest = 0.0F;
     glm::vec3 worldPosition{0.0F};  ///< scene coordinates (mm)
 };
-/// Two picked points: their 3-D distance and depth difference (b - a; > 0:
-/// b lies deeper), mm.
+/// Two picked points seen with a camera: their 3-D distance (the same in
+/// every view) and their depth difference along the camera's viewing
+/// direction (b - a; > 0: b lies deeper; changes as the view turns), mm.
 struct Measurement {
     float distance = 0.0F;
     float depthDifference = 0.0F;
 };
-[[nodiscard]] Measurement measure(const ProbeResult& a, const ProbeResult& b) noexcept;
+[[nodiscard]] Measurement measure(const ProbeResult& a, const ProbeResult& b,
+                                  const render::Camera& camera) noexcept;
 // --- end probe -------------------------------------------------------------
 
 /// The 3-D view: shows a Scene through the view renderer the offscreen path
@@ -146,6 +149,12 @@ class ViewerWidget : public QOpenGLWidget {
     /// painted over the frame; on by default.
     void setLegendsVisible(bool visible);
     [[nodiscard]] bool legendsVisible() const noexcept { return legendsVisible_; }
+    /// The orientation marker and the scale bar over the view, and the
+    /// frame the scene is in (its patient letters); both on by default.
+    void setViewAnnotations(const render::ViewAnnotations& annotations);
+    [[nodiscard]] const render::ViewAnnotations& viewAnnotations() const noexcept {
+        return annotations_;
+    }
     /// The legends shown over the last frame (empty when none).
     [[nodiscard]] const render::Legends& shownLegends() const noexcept;
     /// What the last frame showed of the VSS.
@@ -374,9 +383,10 @@ class ViewerWidget : public QOpenGLWidget {
     render::Camera camera_;
     bool autoFit_ = true;  ///< refit on resize until the user moves the camera
     bool legendsVisible_ = true;
-    /// A transparent child over the GL frame that paints the legends (so that
-    /// grabFramebuffer() keeps returning the frame alone).
-    LegendOverlay* legendOverlay_ = nullptr;
+    render::ViewAnnotations annotations_;
+    /// A transparent child over the GL frame that paints the legends, the
+    /// marker and the scale bar (so grabFramebuffer() stays the frame alone).
+    ViewOverlay* viewOverlay_ = nullptr;
     QString error_;
     QString glDescription_;
     quint64 framesWithScene_ = 0;

@@ -10,6 +10,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QMouseEvent>
 #include <QThread>
 #include <algorithm>
 #include <cmath>
@@ -45,6 +46,20 @@ inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) 
         QThread::msleep(2);
     }
     return done();
+}
+
+/// A left-button drag over `widget` from `from` to `to` (logical widget
+/// coordinates) in one move, as a person turning the view does.
+inline void leftDrag(QWidget* widget, const QPointF& from, const QPointF& to) {
+    QMouseEvent press(QEvent::MouseButtonPress, from, widget->mapToGlobal(from), Qt::LeftButton,
+                      Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(widget, &press);
+    QMouseEvent move(QEvent::MouseMove, to, widget->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
+                     Qt::NoModifier);
+    QCoreApplication::sendEvent(widget, &move);
+    QMouseEvent release(QEvent::MouseButtonRelease, to, widget->mapToGlobal(to), Qt::LeftButton,
+                        Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(widget, &release);
 }
 
 /// A tube along x (radius 2, length 30) with "wss" (0..30, rising along it)

@@ -354,16 +354,8 @@ TEST_F(GuiTest, MouseAndKeysMoveTheCamera) {
     const QPointF centre(viewer->width() / 2.0, viewer->height() / 2.0);
 
     // Left-drag rotates.
-    QMouseEvent press(QEvent::MouseButtonPress, centre, viewer->mapToGlobal(centre), Qt::LeftButton,
-                      Qt::LeftButton, Qt::NoModifier);
-    QCoreApplication::sendEvent(viewer, &press);
     const QPointF to = centre + QPointF(80, 30);
-    QMouseEvent move(QEvent::MouseMove, to, viewer->mapToGlobal(to), Qt::NoButton, Qt::LeftButton,
-                     Qt::NoModifier);
-    QCoreApplication::sendEvent(viewer, &move);
-    QMouseEvent release(QEvent::MouseButtonRelease, to, viewer->mapToGlobal(to), Qt::LeftButton,
-                        Qt::NoButton, Qt::NoModifier);
-    QCoreApplication::sendEvent(viewer, &release);
+    vv::test::leftDrag(viewer, centre, to);
     EXPECT_LT(std::abs(glm::dot(viewer->camera().rotation(), home)), 0.999F);
     EXPECT_FLOAT_EQ(viewer->camera().distance(), distance);
 

@@ -5,11 +5,14 @@
 #include <QAction>
 #include <QCoreApplication>
 #include <QHelpEvent>
+#include <QKeySequence>
 #include <QLabel>
 #include <QLineF>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QToolTip>
 #include <cmath>
+#include <glm/gtc/constants.hpp>
 #include <optional>
 
 #include "GuiFixture.h"
@@ -158,7 +161,7 @@ TEST_F(ProbeTest, TwoClickedPointsGiveDistanceAndDepthDifference) {
     ASSERT_EQ(window_->measurePoints().size(), 2);
     const auto& a = window_->measurePoints()[0];
     const auto& b = window_->measurePoints()[1];
-    const gui::Measurement m = gui::measure(a, b);
+    const gui::Measurement m = gui::measure(a, b, viewer->camera());
     // Both on the front line: the distance is their x difference, no depth difference.
     EXPECT_GT(b.worldPosition.x - a.worldPosition.x, 4.0F);
     EXPECT_NEAR(m.distance, b.worldPosition.x - a.worldPosition.x, 0.2F);
@@ -174,7 +177,7 @@ TEST_F(ProbeTest, TwoClickedPointsGiveDistanceAndDepthDifference) {
     EXPECT_LT(QLineF(*markA, onAxis(0.3)).length(), 2.0);
     EXPECT_LT(QLineF(*markB, onAxis(0.7)).length(), 2.0);
     const QString label = window_->measureLabel()->text();
-    EXPECT_TRUE(label.contains(QString::number(static_cast<double>(m.distance), 'f', 1)))
+    EXPECT_TRUE(label.contains(QLocale().toString(static_cast<double>(m.distance), 'f', 1)))
         << label.toStdString();
 
     // A third click starts a new measurement; the background is no pick.
@@ -182,21 +185,106 @@ TEST_F(ProbeTest, TwoClickedPointsGiveDistanceAndDepthDifference) {
     EXPECT_EQ(picked.count(), 2);
     click(viewer, onAxis(0.5));
     EXPECT_EQ(window_->measurePoints().size(), 1);
+    // Leaving measure mode keeps the measurement on screen; Esc clears it.
     window_->measureToggle()->setChecked(false);
+    EXPECT_EQ(window_->measurePoints().size(), 1);
+    EXPECT_TRUE(window_->measureOverlay()->isVisible());
+    EXPECT_FALSE(window_->measureLabel()->text().isEmpty());
+    auto* clear = window_->findChild<QAction*>(QStringLiteral("clearMeasurement"));
+    ASSERT_NE(clear, nullptr);
+    EXPECT_TRUE(clear->shortcuts().contains(QKeySequence(Qt::Key_Escape)));
+    clear->trigger();
     EXPECT_TRUE(window_->measurePoints().isEmpty());
     EXPECT_FALSE(window_->measureOverlay()->isVisible());
+    EXPECT_TRUE(window_->measureLabel()->text().isEmpty());
+}
+
+/// The number after `prefix` in `text` (UI-locale decimals), NaN when none.
+double numberAfter(const QString& text, const QString& prefix) {
+    const qsizetype at = text.indexOf(prefix);
+    if (at < 0) {
+        return std::nan("");
+    }
+    const QString rest = text.mid(at + prefix.size());
+    const QString digits = rest.left(rest.indexOf(QLatin1Char(' ')));
+    bool ok = false;
+    const double value = QLocale().toDouble(digits, &ok);
+    return ok ? value : std::nan("");
+}
+
+TEST_F(ProbeTest, MeasuredDepthDifferenceFollowsTheViewAndTheDistanceStays) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    click(viewer, onAxis(0.3), Qt::ControlModifier);
+    click(viewer, onAxis(0.7), Qt::ControlModifier);
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    const glm::vec3 a = window_->measurePoints()[0].worldPosition;
+    const glm::vec3 b = window_->measurePoints()[1].worldPosition;
+    const QString distancePrefix = QStringLiteral("Distance A–B: ");
+    const double distance = numberAfter(window_->measureLabel()->text(), distancePrefix);
+    EXPECT_NEAR(distance, glm::length(b - a), 0.051)
+        << window_->measureLabel()->text().toStdString();
+
+    // German numbers from here on: the label follows the UI locale.
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    // Turn the view 40 degrees about its vertical axis: B (right of A) moves away.
+    render::Camera camera = viewer->camera();
+    camera.rotateView(glm::radians(40.0F), glm::vec3(0.0F, 1.0F, 0.0F));
+    const quint64 frames = viewer->framesWithScene();
+    viewer->setCamera(camera);
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    QCoreApplication::processEvents();
+    const QString label = window_->measureLabel()->text();
+    QLocale::setDefault(before);
+    // Depth difference along the new view direction, from the points and the camera's eye.
+    const glm::vec3 viewDirection = glm::normalize(camera.target() - camera.eye());
+    const double expected = glm::dot(b - a, viewDirection);
+    ASSERT_GT(std::abs(expected), 3.0) << "the turn should put the points at other depths";
+    const QString deeper =
+        expected > 0 ? QStringLiteral("B deeper by ") : QStringLiteral("A deeper by ");
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    const double shownDepth = numberAfter(label, deeper);
+    const double shownDistance = numberAfter(label, distancePrefix);
+    QLocale::setDefault(before);
+    EXPECT_NEAR(shownDepth, std::abs(expected), 0.051) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("depth difference in this view")))
+        << label.toStdString();
+    // The tooltip says what the depth difference is measured along.
+    EXPECT_TRUE(window_->measureLabel()->toolTip().contains(
+        QStringLiteral("along the current view direction")));
+    EXPECT_NEAR(shownDistance, distance, 1e-9) << label.toStdString();
+    EXPECT_TRUE(label.contains(QLatin1Char(','))) << "German decimals: " << label.toStdString();
+}
+
+TEST_F(ProbeTest, AMeasurementEndsWithItsScene) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    click(viewer, onAxis(0.3), Qt::ControlModifier);
+    click(viewer, onAxis(0.7), Qt::ControlModifier);
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    // Other data: points on the old data mean nothing there.
+    window_->setScene(makeTubeScene(false), QStringLiteral("other"));
+    ASSERT_TRUE(waitForFrames(1));
+    EXPECT_TRUE(window_->measurePoints().isEmpty());
+    EXPECT_FALSE(window_->measureOverlay()->isVisible());
+    EXPECT_TRUE(window_->measureLabel()->text().isEmpty())
+        << window_->measureLabel()->text().toStdString();
 }
 
 TEST_F(ProbeTest, MeasureOfKnownPoints) {
     gui::ProbeResult a;
     gui::ProbeResult b;
     a.worldPosition = glm::vec3(1.0F, 2.0F, 3.0F);
-    b.worldPosition = glm::vec3(4.0F, 6.0F, 3.0F);
-    a.linearDepth = 10.0F;
-    b.linearDepth = 7.5F;
-    const gui::Measurement m = gui::measure(a, b);
-    EXPECT_FLOAT_EQ(m.distance, 5.0F);
-    EXPECT_FLOAT_EQ(m.depthDifference, -2.5F);
+    b.worldPosition = glm::vec3(4.0F, 6.0F, 0.5F);
+    render::Camera camera;  // looks down -z: depth grows towards -z
+    const gui::Measurement m = gui::measure(a, b, camera);
+    EXPECT_FLOAT_EQ(m.distance, std::sqrt(9.0F + 16.0F + 6.25F));
+    EXPECT_FLOAT_EQ(m.depthDifference, 2.5F);
+    // Seen from the other side, B lies in front.
+    camera.rotateView(glm::pi<float>(), glm::vec3(0.0F, 1.0F, 0.0F));
+    EXPECT_NEAR(gui::measure(a, b, camera).depthDifference, -2.5F, 1e-5F);
+    EXPECT_FLOAT_EQ(gui::measure(a, b, camera).distance, m.distance);
 }
 
 }  // namespace

@@ -130,8 +130,10 @@ TEST_F(RenderCommandTest, RendersAMeshToPngWithVesselPixels) {
     const fs::path input = writeTubeVtk();
     const fs::path output = testDir() / "tube.png";
     fs::remove(output);
-    const auto r = render({input.string(), "-o", output.string(), "--size", "240x120",
-                           "--background", "#ffffff", "--vss", "off"});
+    // The frame alone: no orientation marker or scale bar in the pixel counts.
+    const auto r =
+        render({input.string(), "-o", output.string(), "--size", "240x120", "--background",
+                "#ffffff", "--vss", "off", "--orientation-marker", "off", "--scale-bar", "off"});
     ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
     EXPECT_NE(r.out.find("wss"), std::string::npos) << r.out;  // the default array
 
@@ -154,7 +156,8 @@ TEST_F(RenderCommandTest, ArrayNoneGivesTheNeutralMaterial) {
     const fs::path input = writeTubeVtk();
     const fs::path output = testDir() / "tube-none.png";
     const auto r = render({input.string(), "-o", output.string(), "--size", "240x120", "--array",
-                           "none", "--background", "#000000", "--vss", "off"});
+                           "none", "--background", "#000000", "--vss", "off",
+                           "--orientation-marker", "off", "--scale-bar", "off"});
     ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
     QImage image;
     ASSERT_TRUE(image.load(QString::fromStdString(output.string()), "PNG"));

@@ -290,6 +290,35 @@ TEST_F(SegmentationGuiTest, ApplyReplacesTheSceneAtFullResolutionKeepingTheCamer
     EXPECT_TRUE(waitForFrames(1));
 }
 
+TEST_F(SegmentationGuiTest, LivePreviewKeepsTheCameraTheUserMoved) {
+    openSeries();
+    ASSERT_TRUE(waitForFrames(1));
+    // DICOM data is in the patient frame: the orientation marker names patient sides.
+    EXPECT_EQ(window_->viewer()->viewAnnotations().frame, render::SceneFrame::PatientLps);
+    // The user turns and zooms the view as a person would: a drag and a wheel notch.
+    auto* viewer = window_->viewer();
+    const QPointF from(viewer->width() * 0.4, viewer->height() * 0.5);
+    const QPointF to(viewer->width() * 0.6, viewer->height() * 0.4);
+    leftDrag(viewer, from, to);
+    const render::Camera moved = viewer->camera();
+    ASSERT_GT(std::abs(moved.rotation().w), 0.0F);
+    ASSERT_LT(std::abs(moved.rotation().w), 0.9999F) << "the drag did not turn the view";
+
+    const int before = panel()->previewsShown();
+    panel()->lowerBox()->setValue(260.0);
+    (void)waitForPreview(before);
+    ASSERT_GT(panel()->previewsShown(), before);
+    const quint64 frames = viewer->framesWithScene();
+    ASSERT_TRUE(waitForFrames(frames + 1));
+    const render::Camera after = viewer->camera();
+    EXPECT_FLOAT_EQ(after.rotation().w, moved.rotation().w);
+    EXPECT_FLOAT_EQ(after.rotation().x, moved.rotation().x);
+    EXPECT_FLOAT_EQ(after.rotation().y, moved.rotation().y);
+    EXPECT_FLOAT_EQ(after.rotation().z, moved.rotation().z);
+    EXPECT_EQ(after.target(), moved.target());
+    EXPECT_FLOAT_EQ(after.distance(), moved.distance());
+}
+
 TEST_F(SegmentationGuiTest, CancelledApplyKeepsTheScene) {
     openSeries();
     const auto loaded = window_->viewer()->scene();

@@ -80,6 +80,9 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     setUpForSetting(max_, "style.range[1]");
     for (QDoubleSpinBox* box : {min_, max_}) {
         box->setKeyboardTracking(false);
+        // At its minimum (no range: no array, or one without values) the
+        // field shows a dash, never a number left from another array or file.
+        box->setSpecialValueText(QStringLiteral("–"));
     }
     auto* rangeRow = new QHBoxLayout;
     rangeRow->addWidget(min_);
@@ -234,6 +237,10 @@ void FunctionalPanel::syncFromViewer() {
         min_->setValue(static_cast<double>(shown->first));
         max_->setValue(static_cast<double>(shown->second));
         histogram_->setRange(static_cast<double>(shown->first), static_cast<double>(shown->second));
+    } else {
+        min_->setValue(min_->minimum());
+        max_->setValue(max_->minimum());
+        histogram_->setRange(0.0, 0.0);
     }
     if (!style.legendTitle.empty()) {
         legendTitle_->setText(QString::fromStdString(style.legendTitle));

@@ -7,6 +7,7 @@
 #include <QOpenGLFunctions>
 #include <QOpenGLFunctions_4_1_Core>
 #include <QOpenGLVersionFunctionsFactory>
+#include <QPainter>
 #include <QSurfaceFormat>
 #include <algorithm>
 #include <string>
@@ -304,6 +305,12 @@ QImage OffscreenRenderer::render(const scene::Scene& scene, const OffscreenOptio
     QImage result = image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
     if (options.legends) {
         paintLegends(result, legends);
+    }
+    // A tile (a camera window) is part of a larger image: that one has them.
+    if ((options.annotations.orientationMarker || options.annotations.scaleBar) &&
+        !camera.window()) {
+        QPainter painter(&result);
+        paintViewAnnotations(painter, QRectF(result.rect()), camera, options.annotations);
     }
     return result;
 }

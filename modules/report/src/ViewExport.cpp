@@ -303,6 +303,7 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
     int side = tileSideFor(options, limit);
     render::OffscreenOptions frame = options.render;
     frame.legends = false;
+    frame.annotations = {.orientationMarker = false, .scaleBar = false};  // painted below
     RenderedView result;
     progress.throwIfCancelled();
     if (side == 0) {
@@ -342,6 +343,12 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
         painter.scale(scale, scale);
         render::paintLegends(painter, QRectF(0.0, 0.0, width / scale, height / scale),
                              result.legends);
+    }
+    if (options.render.annotations.orientationMarker || options.render.annotations.scaleBar) {
+        QPainter painter(&result.image);  // over the whole image, with its whole camera
+        render::paintViewAnnotations(painter, QRectF(result.image.rect()),
+                                     render::OffscreenRenderer::cameraFor(scene, options.render),
+                                     options.render.annotations);
     }
     return result;
 }

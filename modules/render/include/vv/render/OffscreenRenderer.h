@@ -13,6 +13,7 @@
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshStyle.h"
+#include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/MeshTopology.h"
@@ -52,6 +53,10 @@ struct OffscreenOptions {
     /// the depth legend when a VSS is shown, the parameter legend when an
     /// array is shown. Off by default; the CLI turns it on.
     bool legends = false;
+    /// Orientation marker and scale bar painted over the image
+    /// (paintViewAnnotations, with the camera of the frame). Off by default;
+    /// the GUI's exports and the CLI take them from the display settings.
+    ViewAnnotations annotations{.orientationMarker = false, .scaleBar = false};
     /// Volume depth source: a volume ray cast into the G-buffer after the
     /// scene's meshes (FrameRenderer::setVolume) at the iso value `isoValue`
     /// (its units, e.g. HU); nullptr = none. Its world bounds join the
