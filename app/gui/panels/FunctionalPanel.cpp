@@ -15,6 +15,7 @@
 
 #include "common/SettingsSchema.h"
 #include "gui/ViewerWidget.h"
+#include "gui/panels/ArrayValuesWidget.h"
 #include "gui/panels/HistogramWidget.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/ColorMap.h"
@@ -98,6 +99,10 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     legendTitle_ = new QLineEdit(this);
     legendTitle_->setObjectName(QStringLiteral("functionalLegendTitle"));
     form->addRow(settingFormLabel("style.legendTitle"), legendTitle_);
+
+    values_ = new ArrayValuesWidget(viewer_, this);
+    form->addRow(settingFormLabel("style.values"), values_);
+    connect(values_, &ArrayValuesWidget::changed, this, &FunctionalPanel::changed);
 
     makeNarrow(this);
     sceneChanged();
@@ -242,6 +247,7 @@ void FunctionalPanel::syncFromViewer() {
         legendTitle_->clear();
     }
     syncing_ = false;
+    values_->syncFromViewer();
     updateNanColor();
     updateApplicability();
 }
