@@ -238,3 +238,26 @@ TEST_F(MeshWriterTest, MeshWithoutNormalsOrArrays) {
 }
 
 }  // namespace
+
+namespace {
+
+// Label names travel as the field-data string array "<array>_names"
+// ("<value>=<name>" entries) and come back for point and cell arrays.
+TEST_F(MeshWriterTest, LabelNamesRoundTripThroughFieldData) {
+    Mesh mesh = sampleMesh();
+    mesh.labelNames["segment_id"] = {{2, "Left iliac"}, {70000, "Renal artery"}};
+    mesh.labelNames["label"] = {{4, "Aneurysm sac"}};
+    const fs::path file = dir_ / "named.vtp";
+    vv::meshio::writeVtp(mesh, file);
+    const Mesh back = vv::meshio::loadMesh(file);
+    ASSERT_TRUE(back.labelNames.contains("segment_id"));
+    EXPECT_EQ(back.labelNames.at("segment_id"), mesh.labelNames.at("segment_id"));
+    // The cell array's names also name the point array made from it.
+    bool cellNamed = false;
+    for (const auto& [array, names] : back.labelNames) {
+        cellNamed = cellNamed || (names.contains(4) && names.at(4) == "Aneurysm sac");
+    }
+    EXPECT_TRUE(cellNamed);
+}
+
+}  // namespace
