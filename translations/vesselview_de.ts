@@ -162,6 +162,10 @@
         <source>Colour-map bins</source>
         <translation>Farbstufen</translation>
     </message>
+    <message>
+        <source>Values</source>
+        <translation>Werte</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::DocumentController</name>
@@ -1115,6 +1119,41 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>Volume (iso-surface at %1)</source>
         <translation>Volumen (Isofläche bei %1)</translation>
     </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::ArrayValuesWidget</name>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Continuous</source>
+        <translation>Kontinuierlich</translation>
+    </message>
+    <message>
+        <source>Categories (labels)</source>
+        <translation>Kategorien (Labels)</translation>
+    </message>
+    <message>
+        <source>The labels of the array and their colours, as the legend shows them</source>
+        <translation>Die Labels des Datenfelds und ihre Farben, wie die Legende sie zeigt</translation>
+    </message>
+    <message>
+        <source>Continuous: the values are measurements, shown through the colour map. Categories: the values are labels (segment, branch or group ids), one colour each. Automatic: categories for whole-numbered arrays with few distinct values</source>
+        <translation>Kontinuierlich: Die Werte sind Messwerte und werden über die Farbskala dargestellt. Kategorien: Die Werte sind Labels (Segment-, Ast- oder Gruppen-IDs), jedes in einer eigenen Farbe. Automatisch: Kategorien für ganzzahlige Datenfelder mit wenigen verschiedenen Werten</translation>
+    </message>
+    <message>
+        <source>Choose an array to colour the vessels with</source>
+        <translation>Ein Datenfeld zum Einfärben der Gefäße wählen</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::DataPanel</name>
@@ -1919,6 +1958,41 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Interpolation power p (logarithmic, %L1 to %L2)</source>
         <translation>Interpolationsexponent p (logarithmisch, %L1 bis %L2)</translation>
+    </message>
+</context>
+<context>
+    <name>vv::render::Legend</name>
+    <message>
+        <source>… %1 more</source>
+        <translation>… %1 weitere</translation>
+    </message>
+    <message>
+        <source>Depth behind nearest vessel (%1)</source>
+        <translation>Tiefe hinter dem nächsten Gefäß (%1)</translation>
+    </message>
+    <message>
+        <source>Depth behind nearest vessel</source>
+        <translation>Tiefe hinter dem nächsten Gefäß</translation>
+    </message>
+    <message>
+        <source>Depth behind vessel (%1)</source>
+        <translation>Tiefe hinter Gefäß (%1)</translation>
+    </message>
+    <message>
+        <source>Depth behind vessel</source>
+        <translation>Tiefe hinter Gefäß</translation>
+    </message>
+    <message>
+        <source>Depth (%1)</source>
+        <translation>Tiefe (%1)</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>Label %1</source>
+        <translation>Label %1</translation>
     </message>
 </context>
 </TS>

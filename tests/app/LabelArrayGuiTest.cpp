@@ -77,6 +77,19 @@ TEST_F(LabelArrayGuiTest, TheValuesChooserListsTheLabelsAndSwitchesToContinuous)
     EXPECT_TRUE(viewer->shownLegends().parameter->labels.empty());
 }
 
+// The colour-blind-safe switch changes colour maps and depth scales; labels
+// keep their palette (Okabe-Ito, safe for every dichromacy: LabelPaletteTest).
+TEST_F(LabelArrayGuiTest, ColourBlindSafeModeKeepsTheLabels) {
+    ASSERT_TRUE(showSegments());
+    auto* viewer = window_->viewer();
+    window_->colorBlindSafeToggle()->setChecked(true);
+    const quint64 frames = viewer->framesWithScene();
+    ASSERT_TRUE(waitUntil([&] { return viewer->framesWithScene() > frames; }));
+    ASSERT_TRUE(viewer->shownLegends().parameter.has_value());
+    EXPECT_EQ(viewer->shownLegends().parameter->labels.size(), 2U);
+    EXPECT_EQ(viewer->style().values, render::ArrayValues::Auto);
+}
+
 TEST_F(LabelArrayGuiTest, TheProbeNamesTheSegment) {
     ASSERT_TRUE(showSegments());
     auto* viewer = window_->viewer();
