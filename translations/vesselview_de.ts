@@ -1542,6 +1542,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>Title of the parameter legend (default: the array&apos;s name and unit)</source>
         <translation>Titel der Parameterlegende (Standard: Name und Einheit des Datenfelds)</translation>
     </message>
+    <message>
+        <source>The array is shown as labels, each in its own colour</source>
+        <translation>Das Datenfeld wird als Labels gezeigt, jedes in einer eigenen Farbe</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::HistogramWidget</name>

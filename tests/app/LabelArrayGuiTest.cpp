@@ -68,7 +68,11 @@ TEST_F(LabelArrayGuiTest, TheValuesChooserListsTheLabelsAndSwitchesToContinuous)
     ASSERT_TRUE(viewer->shownLegends().parameter.has_value());
     EXPECT_EQ(viewer->shownLegends().parameter->labels.size(), 2U);
 
+    // Labels have their own palette: the colour map does not apply.
+    auto* map = child<QComboBox>(panel, "colorMapChooser");
+    EXPECT_FALSE(map->isEnabled());
     mode->setCurrentIndex(mode->findData(static_cast<int>(render::ArrayValues::Continuous)));
+    EXPECT_TRUE(map->isEnabled());
     EXPECT_EQ(viewer->style().values, render::ArrayValues::Continuous);
     EXPECT_TRUE(list->isHidden());
     const quint64 frames = viewer->framesWithScene();

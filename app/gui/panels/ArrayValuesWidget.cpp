@@ -5,6 +5,7 @@
 #include <QListWidget>
 #include <QPixmap>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "gui/ViewerWidget.h"
 #include "gui/panels/PanelUtil.h"
@@ -28,14 +29,19 @@ ArrayValuesWidget::ArrayValuesWidget(ViewerWidget* viewer, QWidget* parent)
     labels_->setObjectName(QStringLiteral("functionalLabels"));
     labels_->setToolTip(tr("The labels of the array and their colours, as the legend shows them"));
     labels_->setSelectionMode(QAbstractItemView::NoSelection);
-    labels_->setMaximumHeight(fontMetrics().height() * 8);
+    labels_->setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Fixed);
     layout->addWidget(labels_);
+    setSizePolicy(QSizePolicy::Preferred, QSizePolicy::Maximum);
     connect(mode_, &QComboBox::currentIndexChanged, this, [this] {
         if (!syncing_) {
             apply();
         }
     });
     syncFromViewer();
+}
+
+bool ArrayValuesWidget::showsLabels() const {
+    return !labels_->isHidden();
 }
 
 void ArrayValuesWidget::apply() {
@@ -63,6 +69,10 @@ void ArrayValuesWidget::syncFromViewer() {
             labels_->addItem(new QListWidgetItem(QIcon(swatch), render::labelName((*labels)[i])));
         }
     }
+    // As tall as its rows, at most 8 (then it scrolls).
+    const int rows = std::clamp(labels_->count(), 1, 8);
+    labels_->setFixedHeight(rows * std::max(labels_->sizeHintForRow(0), 1) +
+                            2 * labels_->frameWidth() + 2);
     labels_->setVisible(labels.has_value());
     setApplicable(
         mode_, scene && !style.array.empty(),

@@ -25,6 +25,8 @@ class ArrayValuesWidget : public QWidget {
 
     [[nodiscard]] QComboBox* modeChooser() const noexcept { return mode_; }
     [[nodiscard]] QListWidget* labelList() const noexcept { return labels_; }
+    /// The shown array is drawn as labels (as of the last syncFromViewer()).
+    [[nodiscard]] bool showsLabels() const;
 
   public slots:
     /// Shows the viewer's style and the labels of its array (without writing back).
