@@ -260,4 +260,25 @@ TEST_F(MeshWriterTest, LabelNamesRoundTripThroughFieldData) {
     EXPECT_TRUE(cellNamed);
 }
 
+// A legacy VTK file as centreline tools write it: names by position
+// ("Aorta" names label 0) or as "<value>=<name>" entries.
+TEST_F(MeshWriterTest, LabelNamesFromLegacyFieldData) {
+    const fs::path file = dir_ / "branches.vtk";
+    std::ofstream(file) << "# vtk DataFile Version 3.0\nbranches\nASCII\nDATASET POLYDATA\n"
+                           "FIELD FieldData 2\n"
+                           "branch_names 1 2 string\nAorta\nLeft%20iliac\n"
+                           "group_names 1 1 string\n200=Renal%20artery\n"
+                           "POINTS 3 float\n0 0 0\n1 0 0\n0 1 0\n"
+                           "POLYGONS 1 4\n3 0 1 2\n"
+                           "POINT_DATA 3\nSCALARS branch int 1\nLOOKUP_TABLE default\n0\n1\n1\n"
+                           "SCALARS group int 1\nLOOKUP_TABLE default\n200\n200\n5\n";
+    const Mesh mesh = vv::meshio::loadMesh(file);
+    ASSERT_TRUE(mesh.labelNames.contains("branch"));
+    EXPECT_EQ(mesh.labelNames.at("branch").at(0), "Aorta");
+    EXPECT_EQ(mesh.labelNames.at("branch").at(1), "Left iliac");
+    ASSERT_TRUE(mesh.labelNames.contains("group"));
+    EXPECT_EQ(mesh.labelNames.at("group").size(), 1U);
+    EXPECT_EQ(mesh.labelNames.at("group").at(200), "Renal artery");
+}
+
 }  // namespace
