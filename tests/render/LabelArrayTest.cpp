@@ -57,6 +57,15 @@ class LabelArrayTest : public vv::render::test::GlRenderTest {
         s.antialiasing = false;
         return s;
     }
+    /// A 200 x 150 harness, or a test failure naming why there is none.
+    static std::unique_ptr<FrameHarness> makeHarness() {
+        try {
+            return std::make_unique<FrameHarness>(200, 150);
+        } catch (const vv::Error& e) {
+            ADD_FAILURE() << e.what();
+            return nullptr;
+        }
+    }
     static MeshStyle labelStyle() {
         MeshStyle style;
         style.array = "segment_id";
@@ -84,12 +93,8 @@ class LabelArrayTest : public vv::render::test::GlRenderTest {
 // flat lookup shows label 1's or label 3's colour and never label 2's,
 // which a second tube carries.
 TEST_F(LabelArrayTest, ATriangleBetweenTwoLabelsShowsNoLabelBetweenThem) {
-    std::unique_ptr<FrameHarness> harness;
-    try {
-        harness = std::make_unique<FrameHarness>(200, 150);
-    } catch (const vv::Error& e) {
-        FAIL() << e.what();
-    }
+    const auto harness = makeHarness();
+    ASSERT_TRUE(harness);
     vv::scene::Scene scene;
     const int segments = 24;
     scene.meshes.push_back(vv::render::test::makeTube(2.0F, -8.0F, 16.0F, 3.0F, 0.0F, segments, 1));
@@ -123,12 +128,8 @@ TEST_F(LabelArrayTest, ATriangleBetweenTwoLabelsShowsNoLabelBetweenThem) {
 
 // Arbitrary ids (0, 5, 17, 200): label k in ascending order has palette colour k.
 TEST_F(LabelArrayTest, ArbitraryLabelValuesTakeThePaletteInOrder) {
-    std::unique_ptr<FrameHarness> harness;
-    try {
-        harness = std::make_unique<FrameHarness>(200, 150);
-    } catch (const vv::Error& e) {
-        FAIL() << e.what();
-    }
+    const auto harness = makeHarness();
+    ASSERT_TRUE(harness);
     const std::vector<float> values{200.0F, 0.0F, 17.0F, 5.0F};
     vv::scene::Scene scene;
     for (std::size_t m = 0; m < values.size(); ++m) {
