@@ -170,6 +170,10 @@
         <source>Show the scale bar (at the focal plane)</source>
         <translation>Maßstab anzeigen (in der Fokusebene)</translation>
     </message>
+    <message>
+        <source>Values</source>
+        <translation>Werte</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::DocumentController</name>
@@ -1382,6 +1386,41 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>Volume (iso-surface at %1)</source>
         <translation>Volumen (Isofläche bei %1)</translation>
     </message>
+    <message>
+        <source>%1 %2</source>
+        <translation>%1 %2</translation>
+    </message>
+    <message>
+        <source>%1 %2 (%3)</source>
+        <translation>%1 %2 (%3)</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::ArrayValuesWidget</name>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Continuous</source>
+        <translation>Kontinuierlich</translation>
+    </message>
+    <message>
+        <source>Categories (labels)</source>
+        <translation>Kategorien (Labels)</translation>
+    </message>
+    <message>
+        <source>The labels of the array and their colours, as the legend shows them</source>
+        <translation>Die Labels des Datenfelds und ihre Farben, wie die Legende sie zeigt</translation>
+    </message>
+    <message>
+        <source>Continuous: the values are measurements, shown through the colour map. Categories: the values are labels (segment, branch or group ids), one colour each. Automatic: categories for whole-numbered arrays with few distinct values</source>
+        <translation>Kontinuierlich: Die Werte sind Messwerte und werden über die Farbskala dargestellt. Kategorien: Die Werte sind Labels (Segment-, Ast- oder Gruppen-IDs), jedes in einer eigenen Farbe. Automatisch: Kategorien für ganzzahlige Datenfelder mit wenigen verschiedenen Werten</translation>
+    </message>
+    <message>
+        <source>Choose an array to colour the vessels with</source>
+        <translation>Ein Datenfeld zum Einfärben der Gefäße wählen</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::DataPanel</name>
@@ -1777,6 +1816,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Title of the parameter legend (default: the array&apos;s name and unit)</source>
         <translation>Titel der Parameterlegende (Standard: Name und Einheit des Datenfelds)</translation>
+    </message>
+    <message>
+        <source>The array is shown as labels, each in its own colour</source>
+        <translation>Das Datenfeld wird als Labels gezeigt, jedes in einer eigenen Farbe</translation>
     </message>
 </context>
 <context>
@@ -2202,6 +2245,41 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>How the surface is computed: solver, tolerance, solve time</source>
         <translation>Wie die Fläche berechnet wird: Löser, Toleranz, Rechenzeit</translation>
+    </message>
+</context>
+<context>
+    <name>vv::render::Legend</name>
+    <message>
+        <source>… %1 more</source>
+        <translation>… %1 weitere</translation>
+    </message>
+    <message>
+        <source>Depth behind nearest vessel (%1)</source>
+        <translation>Tiefe hinter dem nächsten Gefäß (%1)</translation>
+    </message>
+    <message>
+        <source>Depth behind nearest vessel</source>
+        <translation>Tiefe hinter dem nächsten Gefäß</translation>
+    </message>
+    <message>
+        <source>Depth behind vessel (%1)</source>
+        <translation>Tiefe hinter Gefäß (%1)</translation>
+    </message>
+    <message>
+        <source>Depth behind vessel</source>
+        <translation>Tiefe hinter Gefäß</translation>
+    </message>
+    <message>
+        <source>Depth (%1)</source>
+        <translation>Tiefe (%1)</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Tiefe</translation>
+    </message>
+    <message>
+        <source>Label %1</source>
+        <translation>Label %1</translation>
     </message>
 </context>
 <context>

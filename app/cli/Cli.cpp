@@ -28,6 +28,7 @@ constexpr const char* kUsageText =
     "         [--background #rrggbb] [--vss on|off] [--scale cd|pcd|dmd] [--p P]\n"
     "         [--isolines N] [--solver NAME] [--tolerance T] [--timings]\n"
     "         [--cue none|vessel-cd|vessel-pcd|fog|fresnel] [--legends on|off] [--bins N]\n"
+    "         [--values auto|continuous|categories]\n"
     "         [--view far|medium|close|anterior|posterior|left|right|superior|inferior]\n"
     "         [--depth-out DEPTH.pfm] [--ao on|off] [--aa on|off] [--light AZ,EL] [--tile N]\n"
     "         [--orientation-marker on|off] [--scale-bar on|off]\n"

@@ -299,8 +299,13 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (tiles > 1) {
         summary << " in " << tiles << " tiles";
     }
+    const auto labels = options.style.array.empty()
+                            ? std::nullopt
+                            : render::shownLabels(scene, options.style, options.style.array);
     if (options.style.array.empty()) {
         summary << ", no array";
+    } else if (labels) {
+        summary << ", " << options.style.array << " as " << labels->size() << " labels";
     } else {
         summary << ", " << options.style.array << " through "
                 << colormaps::name(options.style.colorMap);

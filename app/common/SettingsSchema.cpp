@@ -117,6 +117,11 @@ const ChoiceSet kCues{[] { return valuesOf(render::allVesselCues()); },
                       [](int v) { return render::name(static_cast<render::VesselCue>(v)); },
                       [](std::string_view n) { return optionalInt(render::vesselCueFromName(n)); }};
 
+const ChoiceSet kArrayValues{
+    [] { return valuesOf(render::allArrayValues()); },
+    [](int v) { return render::name(static_cast<render::ArrayValues>(v)); },
+    [](std::string_view n) { return optionalInt(render::arrayValuesFromName(n)); }};
+
 const ChoiceSet kColorMaps{
     [] { return valuesOf(colormaps::allColorMaps()); },
     [](int v) { return colormaps::name(static_cast<colormaps::ColorMap>(v)); },
@@ -346,6 +351,14 @@ const std::vector<Setting>& table() {
          .session = SessionForm::Optional,
          .keepOnReset = true,
          .field = field([](auto& d) -> auto& { return d.style.legendTitle; })},
+        {.key = "style.values",
+         .cliOption = "--values",
+         .type = Choice,
+         .label = QT_TRANSLATE_NOOP("vv::app::Settings", "Values"),
+         .session = SessionForm::Optional,
+         .keepOnReset = true,
+         .choices = &kArrayValues,
+         .field = field([](auto& d) -> auto& { return d.style.values; })},
         {.key = "style.vesselColor",
          .storedKey = "vesselColor",
          .cliOption = "--vessel-color",

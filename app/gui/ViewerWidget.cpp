@@ -5,6 +5,7 @@
 #include <QGuiApplication>
 #include <QHelpEvent>
 #include <QKeyEvent>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QOpenGLContext>
 #include <QOpenGLFunctions>
@@ -649,6 +650,9 @@ std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
     result.linearDepth = sample->linearDepth;
     result.depthBelowNearest = sample->depthBelowNearest;
     result.worldPosition = sample->worldPosition;
+    if (sample->label) {
+        result.labelName = QString::fromStdString(sample->label->name);
+    }
     result.objectName = sample->meshIndex < 0
                             ? tr("Volume (iso-surface at %1)").arg(static_cast<double>(isoValue()))
                             : QString::fromStdString(
@@ -660,16 +664,23 @@ QString ViewerWidget::probeText(const ProbeResult& result) {
     QStringList lines;
     lines << (result.objectName.isEmpty() ? tr("Object %1").arg(result.meshIndex + 1)
                                           : result.objectName);
-    if (!result.arrayName.isEmpty()) {
+    const QLocale locale;
+    if (result.labelName) {
+        // A label names a segment / group: "segment_id 2 (Left iliac)".
+        const QString value = locale.toString(static_cast<qlonglong>(result.value));
+        lines << (result.labelName->isEmpty()
+                      ? tr("%1 %2").arg(result.arrayName, value)
+                      : tr("%1 %2 (%3)").arg(result.arrayName, value, *result.labelName));
+    } else if (!result.arrayName.isEmpty()) {
         const QString value = std::isfinite(result.value)
-                                  ? QString::number(static_cast<double>(result.value), 'g', 4)
+                                  ? locale.toString(static_cast<double>(result.value), 'g', 4)
                                   : tr("no data");
         lines << (result.unit.isEmpty() || !std::isfinite(result.value)
                       ? tr("%1: %2").arg(result.arrayName, value)
                       : tr("%1: %2 %3").arg(result.arrayName, value, result.unit));
     }
     lines << tr("Depth: %1 mm behind the nearest vessel point")
-                 .arg(QString::number(static_cast<double>(result.depthBelowNearest), 'f', 1));
+                 .arg(locale.toString(static_cast<double>(result.depthBelowNearest), 'f', 1));
     return lines.join(QLatin1Char('\n'));
 }
 

@@ -43,6 +43,9 @@ struct ProbeResult {
     /// smallest visible linear depth), mm.
     float depthBelowNearest = 0.0F;
     glm::vec3 worldPosition{0.0F};  ///< scene coordinates (mm)
+    /// The array is shown as labels and `value` is one: its name from the
+    /// file ("" when it has none).
+    std::optional<QString> labelName;
 };
 /// Two picked points seen with a camera: their 3-D distance (the same in
 /// every view) and their depth difference along the camera's viewing

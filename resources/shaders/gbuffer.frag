@@ -7,12 +7,15 @@
 in vec3 vPositionView;
 in vec3 vNormalView;
 in vec2 vScalar;
+flat in vec2 vLabel;  // label arrays: (label, 1 + its palette index), per triangle
 
 uniform uint uObjectId;  // 1 + the mesh's index in the scene; 0 = no object
 uniform bool uUseArray;  // false: no array shown, the parameter is NaN everywhere
+uniform bool uLabels;    // the array holds labels: vLabel, not vScalar
 
 layout(location = 0) out float fragLinearDepth;
-// View space, facing the viewer; w = 1 where the parameter value is valid, else 0.
+// View space, facing the viewer; w = 1 where the parameter value is valid, else
+// 0; for labels 1 + the label's palette index (exact in half floats).
 layout(location = 1) out vec4 fragNormal;
 layout(location = 2) out uint fragObjectId;
 layout(location = 3) out float fragParameter;  // the array value, NaN = no data
@@ -24,8 +27,9 @@ void main() {
         n = -n;
     }
     // A fragment between a valid and an invalid vertex belongs to the nearer one.
-    bool valid = uUseArray && vScalar.y >= 0.5;
-    fragNormal = vec4(n, valid ? 1.0 : 0.0);
+    vec2 scalar = uLabels ? vLabel : vScalar;
+    bool valid = uUseArray && scalar.y >= 0.5;
+    fragNormal = vec4(n, valid ? (uLabels ? scalar.y : 1.0) : 0.0);
     fragObjectId = uObjectId;
-    fragParameter = valid ? vScalar.x : uintBitsToFloat(0x7fc00000u);
+    fragParameter = valid ? scalar.x : uintBitsToFloat(0x7fc00000u);
 }

@@ -15,6 +15,9 @@ uniform mat3 uNormalMatrix;
 out vec3 vPositionView;
 out vec3 vNormalView;
 out vec2 vScalar;
+// The same, not interpolated (the triangle's provoking vertex): label arrays
+// show one label per triangle, never a label between two others.
+flat out vec2 vLabel;
 
 // The G-buffer pass and the shading pass draw the same triangles with
 // different fragment shaders; the shading pass tests against the G-buffer's
@@ -26,5 +29,6 @@ void main() {
     vPositionView = positionView.xyz;
     vNormalView = uNormalMatrix * aNormal;
     vScalar = aScalar;
+    vLabel = aScalar;
     gl_Position = uProjection * positionView;
 }

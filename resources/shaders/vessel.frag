@@ -11,7 +11,7 @@ uniform sampler2D uNormal;       // RGBA16F, view-space normal, w = 1 where the 
 uniform sampler2D uParameter;    // R32F, the array value
 uniform usampler2D uObjectId;    // R32UI, 0 = no vessel
 // Per object, row = object id: texel 0 = (material colour, uses an array),
-// texel 1 = (range min, range max, opacity, 0). Ids above uObjectCount (e.g.
+// texel 1 = (range min, range max, opacity, 1 = labels). Ids above uObjectCount (e.g.
 // a volume) show the material of the uniforms.
 uniform sampler2D uObjects;
 uniform int uObjectCount;
@@ -29,7 +29,7 @@ Material objectMaterial(uint id) {
     }
     vec4 a = texelFetch(uObjects, ivec2(0, int(id)), 0);
     vec4 b = texelFetch(uObjects, ivec2(1, int(id)), 0);
-    return Material(a.w >= 0.5, a.rgb, b.xy);
+    return Material(a.w >= 0.5, a.rgb, b.xy, b.w >= 0.5);
 }
 
 void main() {
@@ -45,5 +45,7 @@ void main() {
     vec2 ndc = vUv * 2.0 - 1.0;
     vec3 positionView = vec3((ndc + uViewOffset) * uViewScale * depth, -depth);
     fragColor = vec4(
-        shadeVessel(objectMaterial(id), positionView, normal.xyz, value, normal.w >= 0.5), 1.0);
+        shadeVessel(objectMaterial(id), positionView, normal.xyz, value, normal.w >= 0.5,
+                    normal.w - 1.0),
+        1.0);
 }

@@ -16,6 +16,9 @@ uniform float uLutSize;          // texels in uLut
 uniform vec2 uRange;             // values mapped to the first and last LUT entry
 uniform float uOpacity;          // forward passes: the object's opacity (premultiplied output)
 uniform int uBins;               // >= 2: uLut holds exactly uBins bin colours (nearest)
+uniform bool uLabels;            // the array holds labels: one palette colour per label
+uniform sampler1D uLabelPalette;  // colormaps::labelPalette(), sRGB, nearest
+uniform int uLabelPaletteSize;
 // Vessel cue: 0 none, 1 chromadepth, 2 pseudo-chromadepth, 3 fog, 4 Fresnel-edge
 // pseudo-chromadepth (the values of VesselCue).
 uniform int uCue;
@@ -32,26 +35,32 @@ uniform float uDiffuse;
 uniform float uSpecular;
 uniform float uShininess;
 
-// What one object shows: an array through the colour map over `range`, or
-// the neutral material `base`.
+// What one object shows: an array through the colour map over `range`, its
+// labels in the label palette (`labels`), or the neutral material `base`.
 struct Material {
     bool useArray;
     vec3 base;
     vec2 range;
+    bool labels;
 };
 
 // The material of the uniforms.
 Material uniformMaterial() {
-    return Material(uUseArray, uBaseColor, uRange);
+    return Material(uUseArray, uBaseColor, uRange, uLabels);
 }
 
-// The colour of a value of the array (valid = false: no data) or the neutral material.
-vec3 surfaceColor(Material m, float value, bool valid) {
+// The colour of a value of the array (valid = false: no data) or the neutral
+// material; for labels the palette colour of label index `label`.
+vec3 surfaceColor(Material m, float value, bool valid, float label) {
     if (!m.useArray) {
         return m.base;
     }
     if (!valid) {
         return uNoDataColor;
+    }
+    if (m.labels) {
+        int index = int(floor(label + 0.5)) % max(uLabelPaletteSize, 1);
+        return texelFetch(uLabelPalette, index, 0).rgb;
     }
     float span = m.range.y - m.range.x;
     float t = span > 0.0 ? clamp((value - m.range.x) / span, 0.0, 1.0) : 0.5;
@@ -80,9 +89,10 @@ vec3 cueScale(float t) {
 }
 
 // The shaded vessel colour at a view-space position with its (not
-// necessarily unit) view-space normal.
-vec3 shadeVessel(Material m, vec3 positionView, vec3 normalView, float value, bool valid) {
-    vec3 base = surfaceColor(m, value, valid);
+// necessarily unit) view-space normal; `label`: the label index (labels only).
+vec3 shadeVessel(Material m, vec3 positionView, vec3 normalView, float value, bool valid,
+                 float label) {
+    vec3 base = surfaceColor(m, value, valid, label);
     vec3 n = normalize(normalView);
     vec3 v = normalize(-positionView);
     // Two-sided: open meshes and inconsistent windings show their inside lit too.

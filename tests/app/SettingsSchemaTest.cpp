@@ -325,3 +325,37 @@ TEST(NumberText, ShortestRoundTripInTheCLocale) {
 
 }  // namespace
 }  // namespace vv::test
+
+namespace vv::test {
+namespace {
+
+// Label arrays: "Values" (auto / continuous / categories) is a setting of
+// the command line and of sessions (older sessions: automatic).
+TEST(SettingsSchema, ArrayValuesAreAnOptionAndPersistInSessions) {
+    const Setting* option = app::settingForOption("--values");
+    ASSERT_NE(option, nullptr);
+    EXPECT_EQ(std::get<int>(app::parseSettingText(*option, "categories")),
+              static_cast<int>(render::ArrayValues::Categories));
+    EXPECT_EQ(std::get<int>(app::parseSettingText(*option, "labels")),
+              static_cast<int>(render::ArrayValues::Categories));
+    EXPECT_THROW(static_cast<void>(app::parseSettingText(*option, "gradient")),
+                 InvalidArgumentError);
+    app::Session s;
+    s.files = {QStringLiteral("/data/a.vtp")};
+    s.style.values = render::ArrayValues::Continuous;
+    const app::Session back =
+        app::sessionFromJson(app::sessionToJson(s, sessionFile()), sessionFile());
+    EXPECT_EQ(back.style.values, render::ArrayValues::Continuous);
+    QJsonObject root = QJsonDocument::fromJson(app::sessionToJson(s, sessionFile())).object();
+    QJsonObject view = root.value(QStringLiteral("view")).toObject();
+    QJsonObject style = view.value(QStringLiteral("style")).toObject();
+    ASSERT_TRUE(style.contains(QStringLiteral("values")));
+    style.remove(QStringLiteral("values"));
+    view.insert(QStringLiteral("style"), style);
+    root.insert(QStringLiteral("view"), view);
+    const app::Session old = app::sessionFromJson(QJsonDocument(root).toJson(), sessionFile());
+    EXPECT_EQ(old.style.values, render::ArrayValues::Auto);
+}
+
+}  // namespace
+}  // namespace vv::test

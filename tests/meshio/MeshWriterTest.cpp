@@ -238,3 +238,47 @@ TEST_F(MeshWriterTest, MeshWithoutNormalsOrArrays) {
 }
 
 }  // namespace
+
+namespace {
+
+// Label names travel as the field-data string array "<array>_names"
+// ("<value>=<name>" entries) and come back for point and cell arrays.
+TEST_F(MeshWriterTest, LabelNamesRoundTripThroughFieldData) {
+    Mesh mesh = sampleMesh();
+    mesh.labelNames["segment_id"] = {{2, "Left iliac"}, {70000, "Renal artery"}};
+    mesh.labelNames["label"] = {{4, "Aneurysm sac"}};
+    const fs::path file = dir_ / "named.vtp";
+    vv::meshio::writeVtp(mesh, file);
+    const Mesh back = vv::meshio::loadMesh(file);
+    ASSERT_TRUE(back.labelNames.contains("segment_id"));
+    EXPECT_EQ(back.labelNames.at("segment_id"), mesh.labelNames.at("segment_id"));
+    // The cell array's names also name the point array made from it.
+    bool cellNamed = false;
+    for (const auto& [array, names] : back.labelNames) {
+        cellNamed = cellNamed || (names.contains(4) && names.at(4) == "Aneurysm sac");
+    }
+    EXPECT_TRUE(cellNamed);
+}
+
+// A legacy VTK file as centreline tools write it: names by position
+// ("Aorta" names label 0) or as "<value>=<name>" entries.
+TEST_F(MeshWriterTest, LabelNamesFromLegacyFieldData) {
+    const fs::path file = dir_ / "branches.vtk";
+    std::ofstream(file) << "# vtk DataFile Version 3.0\nbranches\nASCII\nDATASET POLYDATA\n"
+                           "FIELD FieldData 2\n"
+                           "branch_names 1 2 string\nAorta\nLeft%20iliac\n"
+                           "group_names 1 1 string\n200=Renal%20artery\n"
+                           "POINTS 3 float\n0 0 0\n1 0 0\n0 1 0\n"
+                           "POLYGONS 1 4\n3 0 1 2\n"
+                           "POINT_DATA 3\nSCALARS branch int 1\nLOOKUP_TABLE default\n0\n1\n1\n"
+                           "SCALARS group int 1\nLOOKUP_TABLE default\n200\n200\n5\n";
+    const Mesh mesh = vv::meshio::loadMesh(file);
+    ASSERT_TRUE(mesh.labelNames.contains("branch"));
+    EXPECT_EQ(mesh.labelNames.at("branch").at(0), "Aorta");
+    EXPECT_EQ(mesh.labelNames.at("branch").at(1), "Left iliac");
+    ASSERT_TRUE(mesh.labelNames.contains("group"));
+    EXPECT_EQ(mesh.labelNames.at("group").size(), 1U);
+    EXPECT_EQ(mesh.labelNames.at("group").at(200), "Renal artery");
+}
+
+}  // namespace

@@ -320,7 +320,7 @@ TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {
     EXPECT_EQ(ticks.back().label, "30");
     std::vector<std::string> labels;
     for (std::size_t i = 0; i < ticks.size(); ++i) {
-        labels.push_back(ticks[i].label);
+        labels.push_back(ticks[i].label.toStdString());
         EXPECT_NEAR(ticks[i].position, ticks[i].value / 30.0, 1e-12);
         if (i > 0) {
             EXPECT_GT(ticks[i].value, ticks[i - 1].value);
@@ -331,9 +331,10 @@ TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {
     const auto odd = vv::render::depthLegendTicks(10.0, 33.4);
     std::vector<std::string> oddLabels;
     for (const auto& t : odd) {
-        oddLabels.push_back(t.label);
+        oddLabels.push_back(t.label.toStdString());
     }
-    EXPECT_EQ(oddLabels, (std::vector<std::string>{"0", "10", "23.4"}));
+    // One precision for the whole legend: the end's 3 significant digits.
+    EXPECT_EQ(oddLabels, (std::vector<std::string>{"0.0", "10.0", "23.4"}));
     EXPECT_NEAR(odd[1].position, 10.0 / 23.4, 1e-12);
 
     // A flat scene: one tick, 0.
@@ -351,16 +352,20 @@ TEST(LegendTicksTest, ParameterTicksKeepBothEndsAndNiceValuesBetween) {
         EXPECT_GT(ticks[i].position, 0.0);
         EXPECT_LT(ticks[i].position, 1.0);
         const double steps = ticks[i].value / 0.25;
-        EXPECT_NEAR(steps, std::round(steps), 1e-9) << ticks[i].label;
+        EXPECT_NEAR(steps, std::round(steps), 1e-9) << ticks[i].label.toStdString();
     }
     std::vector<std::string> labels;
     for (const auto& t : vv::render::legendTicks(1.0, 3.0)) {
-        labels.push_back(t.label);
+        labels.push_back(t.label.toStdString());
     }
     EXPECT_EQ(labels, (std::vector<std::string>{"1.0", "1.5", "2.0", "2.5", "3.0"}));
+    // One precision for every label: the 0.25 grid's two decimals.
     const auto big = vv::render::legendTicks(99.0685, 100.0);
-    EXPECT_EQ(big.front().label, "99.1");
-    EXPECT_EQ(big.back().label, "100.00");  // on the 0.25 grid: like its neighbours
+    for (const auto& t : big) {
+        EXPECT_EQ(t.label.size() - t.label.indexOf('.'), 3) << t.label.toStdString();
+    }
+    EXPECT_EQ(big.front().label, "99.07");
+    EXPECT_EQ(big.back().label, "100.00");
 }
 
 TEST(LegendTicksTest, LegendsForFollowTheFrame) {

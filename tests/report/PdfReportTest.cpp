@@ -55,7 +55,7 @@ class PdfReportTest : public ::testing::Test {
         p.stats = {s, s};
         p.stats[1].object = "right ICA";
         c.view.legends.parameter =
-            render::ParameterLegend{"wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0, {}};
+            render::ParameterLegend{"wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0, {}, {}};
         c.parameter = p;
     }
 

@@ -15,6 +15,7 @@
 
 #include "common/SettingsSchema.h"
 #include "gui/ViewerWidget.h"
+#include "gui/panels/ArrayValuesWidget.h"
 #include "gui/panels/HistogramWidget.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/ColorMap.h"
@@ -101,6 +102,13 @@ FunctionalPanel::FunctionalPanel(ViewerWidget* viewer, QWidget* parent)
     legendTitle_ = new QLineEdit(this);
     legendTitle_->setObjectName(QStringLiteral("functionalLegendTitle"));
     form->addRow(settingFormLabel("style.legendTitle"), legendTitle_);
+
+    values_ = new ArrayValuesWidget(viewer_, this);
+    form->addRow(settingFormLabel("style.values"), values_);
+    connect(values_, &ArrayValuesWidget::changed, this, [this] {
+        updateApplicability();
+        emit changed();
+    });
 
     makeNarrow(this);
     sceneChanged();
@@ -250,6 +258,7 @@ void FunctionalPanel::syncFromViewer() {
         legendTitle_->clear();
     }
     syncing_ = false;
+    values_->syncFromViewer();
     updateNanColor();
     updateApplicability();
 }
@@ -298,13 +307,17 @@ void FunctionalPanel::updateApplicability() {
     setApplicable(array_, hasScene && hasArrays,
                   tr("Point array shown on the vessel wall through the colour map"),
                   hasScene ? noArrays : noScene);
-    setApplicable(map_, chosen, tr("Colour map of the array's values"), whyNot);
-    setApplicable(bins_, chosen, tr("Continuous colours, or the range cut into N equal bins"),
-                  whyNot);
-    setApplicable(rangeMode_, chosen,
+    // Labels have their own palette: the colour map's controls do not apply.
+    const bool mapped = chosen && values_ != nullptr && !values_->showsLabels();
+    const QString labelsShown = tr("The array is shown as labels, each in its own colour");
+    setApplicable(map_, mapped, tr("Colour map of the array's values"),
+                  chosen ? labelsShown : whyNot);
+    setApplicable(bins_, mapped, tr("Continuous colours, or the range cut into N equal bins"),
+                  chosen ? labelsShown : whyNot);
+    setApplicable(rangeMode_, mapped,
                   tr("Values mapped to the first and last colour: the full range, the 2nd to "
                      "98th percentile, or typed in"),
-                  whyNot);
+                  chosen ? labelsShown : whyNot);
     const bool manual = chosen && rangeMode() == RangeMode::Manual;
     for (QDoubleSpinBox* box : {min_, max_}) {
         setApplicable(box, manual, tr("Values at the first / last colour of the map"),

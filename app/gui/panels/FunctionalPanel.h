@@ -19,6 +19,7 @@ class ViewerWidget;
 
 namespace panels {
 
+class ArrayValuesWidget;
 class HistogramWidget;
 
 /// The "Functional parameters" panel: which point array colours the vessel
@@ -47,6 +48,8 @@ class FunctionalPanel : public QWidget {
     [[nodiscard]] QComboBox* colorMapChooser() const noexcept { return map_; }
     [[nodiscard]] QComboBox* rangeModeChooser() const noexcept { return rangeMode_; }
     [[nodiscard]] HistogramWidget* histogram() const noexcept { return histogram_; }
+    /// Continuous or categories, and the labels (ArrayValuesWidget).
+    [[nodiscard]] ArrayValuesWidget* valuesChooser() const noexcept { return values_; }
     [[nodiscard]] RangeMode rangeMode() const noexcept;
 
     /// The p-th percentile (0..100, linear interpolation between order
@@ -82,6 +85,7 @@ class FunctionalPanel : public QWidget {
     QToolButton* nanColor_ = nullptr;
     HistogramWidget* histogram_ = nullptr;
     QLineEdit* legendTitle_ = nullptr;
+    ArrayValuesWidget* values_ = nullptr;
     /// The chosen array's percentile range (set when an array is chosen).
     std::optional<std::pair<float, float>> percentileRange_;
     bool syncing_ = false;

@@ -19,6 +19,7 @@
 #include <cstdio>
 #include <cstring>
 #include <limits>
+#include <map>
 #include <optional>
 #include <string>
 #include <system_error>
@@ -138,6 +139,7 @@ void addPointArraysFromCells(scene::Mesh& mesh, const Progress& progress) {
         taken.push_back(a.name);
     }
     std::vector<scene::DataArray> converted;
+    std::vector<std::pair<std::string, std::map<std::int64_t, std::string>>> namesOfConverted;
     for (const auto& cell : mesh.cellArrays) {
         progress.throwIfCancelled();
         if (cell.components < 1 || cell.tupleCount() != triangles) {
@@ -151,6 +153,9 @@ void addPointArraysFromCells(scene::Mesh& mesh, const Progress& progress) {
         out.components = cell.components;
         out.integer = cell.integer;
         out.fromCells = true;
+        if (const auto names = mesh.labelNames.find(cell.name); names != mesh.labelNames.end()) {
+            namesOfConverted.emplace_back(out.name, names->second);
+        }
         out.values.assign(points * comps, std::numeric_limits<float>::quiet_NaN());
         std::vector<double> sum(comps);
         std::vector<std::pair<float, int>> votes;  // label, count; a handful per point
@@ -206,6 +211,9 @@ void addPointArraysFromCells(scene::Mesh& mesh, const Progress& progress) {
     }
     for (auto& a : converted) {
         mesh.pointArrays.push_back(std::move(a));
+    }
+    for (auto& [name, names] : namesOfConverted) {
+        mesh.labelNames.emplace(name, std::move(names));
     }
 }
 

@@ -27,6 +27,7 @@
 #include <mutex>
 #include <string>
 
+#include "LabelNames.h"
 #include "vv/core/Error.h"
 
 namespace vv::meshio::detail {
@@ -618,6 +619,7 @@ scene::Mesh meshFromPolyData(vtkPolyData* input, const std::filesystem::path& fi
     if (!normalsOk) {
         scene::computeNormals(mesh);
     }
+    readLabelNames(input->GetFieldData(), mesh);
     return mesh;
 }
 
@@ -659,6 +661,7 @@ vtkSmartPointer<vtkPolyData> polyDataFromMesh(const scene::Mesh& mesh) {
     for (const auto& array : mesh.cellArrays) {
         poly->GetCellData()->AddArray(toVtkArray(array));
     }
+    writeLabelNames(mesh, *poly->GetFieldData());
     return poly;
 }
 

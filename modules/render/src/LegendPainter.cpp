@@ -2,85 +2,26 @@
 #include "vv/render/LegendPainter.h"
 
 #include <QColor>
+#include <QCoreApplication>
 #include <QFont>
 #include <QFontMetricsF>
 #include <QImage>
+#include <QLocale>
 #include <QPainter>
 #include <QPen>
 #include <QString>
 #include <QStringList>
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
+
+#include "vv/colormaps/LabelPalette.h"
 
 namespace vv::render {
 
 namespace {
 
-/// A value with `decimals` digits after the point ("-0" shown as "0").
-std::string fixed(double value, int decimals) {
-    char buffer[64];
-    std::snprintf(buffer, sizeof buffer, "%.*f", std::clamp(decimals, 0, 9), value);
-    std::string text(buffer);
-    if (text.find_first_not_of("-0.") == std::string::npos) {
-        return "0";
-    }
-    return text;
-}
-
-/// Decimals a step needs (0.25 -> 2, 5 -> 0).
-int decimalsFor(double step) {
-    if (!(step > 0.0)) {
-        return 0;
-    }
-    int decimals = 0;
-    double scaled = step;
-    while (decimals < 9 && std::abs(scaled - std::round(scaled)) > 1e-6 * std::max(1.0, scaled)) {
-        scaled *= 10.0;
-        ++decimals;
-    }
-    return decimals;
-}
-
-/// An end value: 3 significant digits, plain notation for ordinary magnitudes.
-std::string endLabel(double value) {
-    const double magnitude = std::abs(value);
-    if (magnitude == 0.0) {
-        return "0";
-    }
-    if (magnitude >= 1e6 || magnitude < 1e-3) {
-        char buffer[64];
-        std::snprintf(buffer, sizeof buffer, "%.3g", value);
-        return buffer;
-    }
-    const int digits = static_cast<int>(std::floor(std::log10(magnitude))) + 1;
-    std::string text = fixed(value, std::max(0, 3 - digits));
-    if (text.find('.') != std::string::npos) {
-        while (text.back() == '0') {
-            text.pop_back();
-        }
-        if (text.back() == '.') {
-            text.pop_back();
-        }
-    }
-    return text;
-}
-
-double niceStep(double span, int maxTicks) {
-    const double raw = span / static_cast<double>(std::max(maxTicks - 1, 1));
-    const double magnitude = std::pow(10.0, std::floor(std::log10(raw)));
-    const double normalized = raw / magnitude;
-    double nice = 10.0;
-    if (normalized <= 1.0) {
-        nice = 1.0;
-    } else if (normalized <= 2.0) {
-        nice = 2.0;
-    } else if (normalized <= 2.5) {
-        nice = 2.5;
-    } else if (normalized <= 5.0) {
-        nice = 5.0;
-    }
-    return nice * magnitude;
+QString translated(const char* text) {
+    return QCoreApplication::translate("vv::render::Legend", text);
 }
 
 struct Metrics {
@@ -159,82 +100,143 @@ void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStr
     painter.setPen(QPen(QColor(235, 235, 235), 1.0));
     painter.drawRect(barRect);
 
-    std::vector<QRectF> drawn;
-    const auto drawTick = [&](const LegendTick& tick, bool end) {
+    // Every tick gets its mark; labels where they fit (labelledTicks()).
+    std::vector<double> centres;
+    std::vector<double> widths;
+    for (const LegendTick& tick : ticks) {
         const double x = barRect.left() + tick.position * barRect.width();
-        const QString label = QString::fromStdString(tick.label);
-        const double w = fm.horizontalAdvance(label) + 2.0;
-        double left = x - w / 2.0;
-        left = std::clamp(left, inner.left(), inner.right() - w);
-        const QRectF labelRect(left, barRect.bottom() + m.tick, w, m.font * 1.25);
-        if (!end) {
-            for (const QRectF& other : drawn) {
-                if (other.adjusted(-3.0, 0.0, 3.0, 0.0).intersects(labelRect)) {
-                    return;  // would collide: the ends win
-                }
-            }
-        }
+        const double w = fm.horizontalAdvance(tick.label) + 2.0;
+        centres.push_back(std::clamp(x, inner.left() + w / 2.0, inner.right() - w / 2.0));
+        widths.push_back(w);
         painter.drawLine(QPointF(x, barRect.bottom()), QPointF(x, barRect.bottom() + m.tick));
-        painter.drawText(labelRect, Qt::AlignHCenter | Qt::AlignTop, label);
-        drawn.push_back(labelRect);
-    };
-    if (!ticks.empty()) {
-        drawTick(ticks.front(), true);
-        if (ticks.size() > 1) {
-            drawTick(ticks.back(), true);
+    }
+    for (const std::size_t i : labelledTicks(centres, widths, 3.0)) {
+        const QRectF labelRect(centres[i] - widths[i] / 2.0, barRect.bottom() + m.tick, widths[i],
+                               m.font * 1.25);
+        painter.drawText(labelRect, Qt::AlignHCenter | Qt::AlignTop, ticks[i].label);
+    }
+}
+
+/// Where a label legend's swatches go: `columns` side by side, rows below.
+struct SwatchGrid {
+    int columns = 1;
+    int rows = 0;
+    double rowHeight = 0.0;
+};
+
+constexpr std::size_t kMaxSwatches = 16;  ///< more labels: the rest summed up in one line
+
+/// The texts of a label legend's rows: one per label, at most kMaxSwatches
+/// (the last then says how many more there are).
+QStringList swatchTexts(const ParameterLegend& p) {
+    QStringList texts;
+    const std::size_t shown = p.labels.size() > kMaxSwatches ? kMaxSwatches - 1 : p.labels.size();
+    for (std::size_t i = 0; i < shown; ++i) {
+        texts.push_back(labelName(p.labels[i]));
+    }
+    if (shown < p.labels.size()) {
+        texts.push_back(
+            translated(QT_TRANSLATE_NOOP("vv::render::Legend", "… %1 more"))
+                .arg(QLocale().toString(static_cast<qulonglong>(p.labels.size() - shown))));
+    }
+    return texts;
+}
+
+QFont legendFont(const Metrics& m) {
+    QFont font;
+    font.setPixelSize(static_cast<int>(std::lround(m.font)));
+    return font;
+}
+
+SwatchGrid swatchGrid(const ParameterLegend& p, const Metrics& m) {
+    const QFontMetricsF fm(legendFont(m));
+    const QStringList texts = swatchTexts(p);
+    double widest = 0.0;
+    for (const QString& text : texts) {
+        widest = std::max(widest, fm.horizontalAdvance(text));
+    }
+    const double column = m.bar + m.pad * 0.6 + widest + m.pad * 1.5;
+    const double inner = m.width - 2.0 * m.pad;
+    SwatchGrid grid;
+    grid.columns = std::clamp(static_cast<int>(inner / std::max(column, 1.0)), 1, 4);
+    grid.rows = (static_cast<int>(texts.size()) + grid.columns - 1) / grid.columns;
+    grid.rowHeight = std::max(m.bar + 3.0, m.font * 1.35);
+    return grid;
+}
+
+double legendHeight(const ParameterLegend& p, const Metrics& m) {
+    if (p.labels.empty()) {
+        return m.height;
+    }
+    const SwatchGrid grid = swatchGrid(p, m);
+    return m.pad + m.font * 1.3 + static_cast<double>(grid.rows) * grid.rowHeight + m.pad;
+}
+
+/// A label legend: the title, then per label a swatch of its colour and its name.
+void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
+                   const ParameterLegend& p) {
+    painter.setPen(Qt::NoPen);
+    painter.setBrush(QColor(0, 0, 0, 170));
+    painter.drawRoundedRect(box, m.pad * 0.8, m.pad * 0.8);
+    const QFont font = legendFont(m);
+    painter.setFont(font);
+    const QFontMetricsF fm(font);
+    const QRectF inner = box.adjusted(m.pad, m.pad, -m.pad, -m.pad);
+    painter.setPen(QColor(245, 245, 245));
+    const QRectF titleRect(inner.left(), inner.top(), inner.width(), m.font * 1.3);
+    const QString title = QString::fromStdString(parameterLegendTitle(p));
+    painter.drawText(titleRect, Qt::AlignLeft | Qt::AlignVCenter,
+                     fm.elidedText(title, Qt::ElideRight, inner.width()));
+    const SwatchGrid grid = swatchGrid(p, m);
+    const QStringList texts = swatchTexts(p);
+    const double columnWidth = inner.width() / static_cast<double>(grid.columns);
+    for (int i = 0; i < texts.size(); ++i) {
+        const int column = i / grid.rows;
+        const int row = i % grid.rows;
+        const double left = inner.left() + static_cast<double>(column) * columnWidth;
+        const double top = titleRect.bottom() + static_cast<double>(row) * grid.rowHeight;
+        const QRectF swatch(left, top + (grid.rowHeight - m.bar) / 2.0, m.bar, m.bar);
+        const bool summary = static_cast<std::size_t>(i) >= p.labels.size() ||
+                             (p.labels.size() > kMaxSwatches && i + 1 == texts.size());
+        if (!summary) {
+            const glm::u8vec4 c =
+                colormaps::toRgba8(colormaps::labelColor(static_cast<std::size_t>(i)));
+            painter.setPen(QPen(QColor(235, 235, 235), 1.0));
+            painter.setBrush(QColor(c.r, c.g, c.b));
+            painter.drawRect(swatch);
         }
-        for (std::size_t i = 1; i + 1 < ticks.size(); ++i) {
-            drawTick(ticks[i], false);
-        }
+        painter.setPen(QColor(245, 245, 245));
+        const double textLeft = swatch.right() + m.pad * 0.6;
+        const QRectF textRect(textLeft, top, left + columnWidth - textLeft, grid.rowHeight);
+        painter.drawText(textRect, Qt::AlignLeft | Qt::AlignVCenter,
+                         fm.elidedText(texts[i], Qt::ElideRight, textRect.width()));
     }
 }
 
 }  // namespace
 
-std::vector<LegendTick> legendTicks(double lo, double hi, int maxTicks) {
-    std::vector<LegendTick> ticks;
-    if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi > lo)) {
-        ticks.push_back(
-            {std::isfinite(lo) ? lo : 0.0, 0.0, endLabel(std::isfinite(lo) ? lo : 0.0)});
-        return ticks;
-    }
-    const double span = hi - lo;
-    const double step = niceStep(span, std::max(maxTicks, 2));
-    const int decimals = decimalsFor(step);
-    // An end on the step grid is labelled like the ticks between ("1.0" next to "1.5").
-    const auto endText = [&](double value) {
-        const double steps = value / step;
-        return std::abs(steps - std::round(steps)) < 1e-6 ? fixed(value, decimals)
-                                                          : endLabel(value);
-    };
-    ticks.push_back({lo, 0.0, endText(lo)});
-    const double first = std::ceil(lo / step) * step;
-    for (int k = 0;; ++k) {
-        const double value = first + static_cast<double>(k) * step;
-        if (value > hi - 0.35 * step) {
-            break;
-        }
-        if (value < lo + 0.35 * step) {
-            continue;
-        }
-        ticks.push_back({value, (value - lo) / span, fixed(value, decimals)});
-    }
-    ticks.push_back({hi, 1.0, endText(hi)});
-    return ticks;
-}
-
-std::vector<LegendTick> depthLegendTicks(double dmin, double dmax, int maxTicks) {
-    const double span = (std::isfinite(dmin) && std::isfinite(dmax)) ? dmax - dmin : 0.0;
-    return legendTicks(0.0, span, maxTicks);
-}
-
 std::string depthLegendTitle(const DepthLegend& legend) {
-    return "Depth behind nearest vessel" + (legend.unit.empty() ? "" : " (" + legend.unit + ")");
+    return depthLegendTitles(legend).front();
 }
 
 std::vector<std::string> depthLegendTitles(const DepthLegend& legend) {
-    const std::string unit = legend.unit.empty() ? "" : " (" + legend.unit + ")";
-    return {depthLegendTitle(legend), "Depth behind vessel" + unit, "Depth" + unit};
+    const QString unit = QString::fromStdString(legend.unit);
+    const auto title = [&](const char* withUnit, const char* withoutUnit) {
+        return (unit.isEmpty() ? translated(withoutUnit) : translated(withUnit).arg(unit))
+            .toStdString();
+    };
+    return {title(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind nearest vessel (%1)"),
+                  QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind nearest vessel")),
+            title(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind vessel (%1)"),
+                  QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind vessel")),
+            title(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth (%1)"),
+                  QT_TRANSLATE_NOOP("vv::render::Legend", "Depth"))};
+}
+
+QString labelName(const scene::Label& label) {
+    return label.name.empty() ? translated(QT_TRANSLATE_NOOP("vv::render::Legend", "Label %1"))
+                                    .arg(QLocale().toString(static_cast<qlonglong>(label.value)))
+                              : QString::fromStdString(label.name);
 }
 
 QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles, double width) {
@@ -250,7 +252,8 @@ std::string parameterLegendTitle(const ParameterLegend& legend) {
     if (!legend.title.empty()) {
         return legend.title;
     }
-    return legend.name + (legend.unit.empty() ? "" : " (" + legend.unit + ")");
+    const bool unit = !legend.unit.empty() && legend.labels.empty();
+    return legend.name + (unit ? " (" + legend.unit + ")" : "");
 }
 
 Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
@@ -288,6 +291,10 @@ Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
         parameter.bins = style.bins;
         parameter.title = sceneArray ? style.legendTitle : std::string();
         if (scene != nullptr) {
+            parameter.labels =
+                shownLabels(*scene, style, name).value_or(std::vector<scene::Label>{});
+        }
+        if (scene != nullptr) {
             for (const auto& mesh : scene->meshes) {
                 if (const scene::DataArray* array = mesh.pointArray(name)) {
                     parameter.unit = array->unit;
@@ -311,15 +318,21 @@ LegendLayout legendLayout(const QRectF& area, const Legends& legends) {
     }
     const int count = (legends.depth ? 1 : 0) + (legends.parameter ? 1 : 0);
     const Metrics m = metricsFor(area, count);
-    const double top = area.bottom() - m.margin - m.height;
     if (legends.depth) {
-        layout.depth = QRectF(area.left() + m.margin, top, m.width, m.height);
+        layout.depth =
+            QRectF(area.left() + m.margin, area.bottom() - m.margin - m.height, m.width, m.height);
     }
     if (legends.parameter) {
-        layout.parameter = QRectF(area.right() - m.margin - m.width, top, m.width, m.height);
-        for (std::size_t i = 0; i < legends.moreParameters.size(); ++i) {
-            layout.moreParameters.push_back(layout.parameter.translated(
-                0.0, -static_cast<double>(i + 1) * (m.height + m.margin * 0.5)));
+        double bottom = area.bottom() - m.margin;
+        const auto place = [&](const ParameterLegend& p) {
+            const double height = legendHeight(p, m);
+            const QRectF box(area.right() - m.margin - m.width, bottom - height, m.width, height);
+            bottom = box.top() - m.margin * 0.5;
+            return box;
+        };
+        layout.parameter = place(*legends.parameter);
+        for (const ParameterLegend& more : legends.moreParameters) {
+            layout.moreParameters.push_back(place(more));
         }
     }
     return layout;
@@ -345,10 +358,16 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
                  depthLegendTicks(d.dmin, d.dmax));
     }
     const auto paintParameter = [&](const ParameterLegend& p, const QRectF& box) {
+        if (!p.labels.empty()) {
+            paintLabelBox(painter, box, m, p);
+            return;
+        }
         const int entries = p.bins >= 2 ? p.bins : 256;
-        auto ticks = legendTicks(static_cast<double>(p.min), static_cast<double>(p.max));
+        const auto lo = static_cast<double>(p.min);
+        const auto hi = static_cast<double>(p.max);
         paintBox(painter, box, m, {QString::fromStdString(parameterLegendTitle(p))},
-                 strip(colormaps::lut(p.map, entries)), ticks);
+                 strip(colormaps::lut(p.map, entries)),
+                 p.bins >= 2 ? binEdgeTicks(lo, hi, p.bins) : legendTicks(lo, hi));
     };
     if (legends.parameter) {
         paintParameter(*legends.parameter, layout.parameter);

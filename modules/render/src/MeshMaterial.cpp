@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "vv/colormaps/LabelPalette.h"
 #include "vv/render/GlResources.h"
 
 namespace vv::render {
@@ -19,8 +20,11 @@ namespace {
 constexpr int kCueLutSize = 256;
 
 /// The per-vertex (value, valid) pairs of `name` on `mesh`; (0, 0) where the
-/// value is NaN / infinite or the mesh lacks the array.
-std::vector<glm::vec2> scalarsFor(const scene::Mesh& mesh, const std::string& name) {
+/// value is NaN / infinite or the mesh lacks the array. With `labels`,
+/// valid is 1 + the value's index among them (the shaders read it flat, per
+/// triangle, as the label's colour index), 0 for a value not among them.
+std::vector<glm::vec2> scalarsFor(const scene::Mesh& mesh, const std::string& name,
+                                  const std::vector<scene::Label>* labels) {
     std::vector<glm::vec2> out(mesh.vertexCount(), glm::vec2(0.0F));
     if (name.empty()) {
         return out;
@@ -42,8 +46,18 @@ std::vector<glm::vec2> scalarsFor(const scene::Mesh& mesh, const std::string& na
             }
             value = static_cast<float>(std::sqrt(sum));
         }
-        if (std::isfinite(value)) {
+        if (!std::isfinite(value)) {
+            continue;
+        }
+        if (labels == nullptr) {
             out[i] = glm::vec2(value, 1.0F);
+            continue;
+        }
+        const auto it = std::lower_bound(
+            labels->begin(), labels->end(), value,
+            [](const scene::Label& l, float v) { return static_cast<float>(l.value) < v; });
+        if (it != labels->end() && static_cast<float>(it->value) == value) {
+            out[i] = glm::vec2(value, 1.0F + static_cast<float>(it - labels->begin()));
         }
     }
     return out;
@@ -69,6 +83,7 @@ void MeshMaterial::forget() noexcept {
     lutTexture_ = 0;
     cueLutTexture_ = 0;
     objectTexture_ = 0;
+    labelTexture_ = 0;
     objectsStale_ = true;
     uploadedMap_.reset();
     uploadedCueScale_.reset();
@@ -80,11 +95,13 @@ void MeshMaterial::initialize(QOpenGLFunctions_4_1_Core& gl) {
     gl.glGenTextures(1, &lutTexture_);
     gl.glGenTextures(1, &cueLutTexture_);
     gl.glGenTextures(1, &objectTexture_);
+    gl.glGenTextures(1, &labelTexture_);
     uploadLut(gl);
+    uploadLabelPalette(gl);
 }
 
 void MeshMaterial::release(QOpenGLFunctions_4_1_Core& gl) noexcept {
-    for (unsigned* texture : {&lutTexture_, &cueLutTexture_, &objectTexture_}) {
+    for (unsigned* texture : {&lutTexture_, &cueLutTexture_, &objectTexture_, &labelTexture_}) {
         if (*texture != 0) {
             gl.glDeleteTextures(1, texture);
         }
@@ -110,8 +127,12 @@ void MeshMaterial::setScene(const scene::Scene* scene) {
 void MeshMaterial::updateRange(const scene::Scene* scene) {
     effectiveRange_.reset();
     objectRanges_.clear();
+    labels_.clear();
     if (scene == nullptr) {
         return;
+    }
+    for (const std::string& name : shownArrays(*scene, style_)) {
+        labels_.emplace_back(name, shownLabels(*scene, style_, name));
     }
     if (!style_.array.empty()) {
         effectiveRange_ = style_.range ? style_.range : arrayRange(*scene, style_.array);
@@ -143,13 +164,24 @@ std::optional<std::pair<float, float>> MeshMaterial::objectRange(std::size_t mes
     return std::nullopt;
 }
 
+const std::vector<scene::Label>* MeshMaterial::objectLabels(std::size_t mesh) const {
+    const std::string& name = style_.arrayOf(mesh);
+    for (const auto& [array, labels] : labels_) {
+        if (array == name && !name.empty()) {
+            return labels ? &*labels : nullptr;
+        }
+    }
+    return nullptr;
+}
+
 bool MeshMaterial::scalarsStale(const GpuMeshes& meshes) const noexcept {
     const scene::Scene* scene = meshes.scene().get();
     if (!scalarsUploaded_ || scene == nullptr) {
         return true;
     }
     for (std::size_t i = 0; i < scene->meshes.size(); ++i) {
-        if (i >= uploadedArrays_.size() || uploadedArrays_[i] != style_.arrayOf(i)) {
+        if (i >= uploadedArrays_.size() ||
+            uploadedArrays_[i] != std::make_pair(style_.arrayOf(i), objectLabels(i) != nullptr)) {
             return true;
         }
     }
@@ -174,7 +206,8 @@ void MeshMaterial::uploadObjects(QOpenGLFunctions_4_1_Core& gl, const scene::Sce
         const bool useArray = !style_.arrayOf(mesh).empty();
         const auto range = objectRange(mesh).value_or(std::make_pair(0.0F, 1.0F));
         table[id * 2] = glm::vec4(color, useArray ? 1.0F : 0.0F);
-        table[id * 2 + 1] = glm::vec4(range.first, range.second, o.opacity, 0.0F);
+        const float labels = objectLabels(mesh) != nullptr ? 1.0F : 0.0F;
+        table[id * 2 + 1] = glm::vec4(range.first, range.second, o.opacity, labels);
     }
     gl.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
     gl.glBindTexture(GL_TEXTURE_2D, objectTexture_);
@@ -194,6 +227,7 @@ void MeshMaterial::useObject(QOpenGLFunctions_4_1_Core& gl, const Program& progr
     gl.glUniform1i(loc("uUseArray"), style_.arrayOf(mesh).empty() ? 0 : 1);
     gl.glUniform3f(loc("uBaseColor"), color.r, color.g, color.b);
     gl.glUniform2f(loc("uRange"), range.first, range.second);
+    gl.glUniform1i(loc("uLabels"), objectLabels(mesh) != nullptr ? 1 : 0);
 }
 
 void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& gl, const GpuMeshes& meshes) {
@@ -204,7 +238,8 @@ void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& gl, const GpuMeshes&
     for (const GpuMeshes::Level& level : meshes.levels()) {
         const std::vector<GpuMesh>& gpu = *level.meshes;
         for (std::size_t m = 0; m < gpu.size(); ++m) {
-            const auto scalars = scalarsFor(level.scene->meshes[m], style_.arrayOf(m));
+            const auto scalars =
+                scalarsFor(level.scene->meshes[m], style_.arrayOf(m), objectLabels(m));
             gl.glBindBuffer(GL_ARRAY_BUFFER, gpu[m].scalars);
             gl.glBufferSubData(GL_ARRAY_BUFFER, 0,
                                static_cast<GLsizeiptr>(scalars.size() * sizeof(glm::vec2)),
@@ -215,7 +250,7 @@ void MeshMaterial::uploadScalars(QOpenGLFunctions_4_1_Core& gl, const GpuMeshes&
     checkGlError(gl, "uploading array values");
     uploadedArrays_.clear();
     for (std::size_t m = 0; m < scene->meshes.size(); ++m) {
-        uploadedArrays_.push_back(style_.arrayOf(m));
+        uploadedArrays_.emplace_back(style_.arrayOf(m), objectLabels(m) != nullptr);
     }
     scalarsUploaded_ = true;
 }
@@ -253,6 +288,19 @@ void MeshMaterial::uploadCueLut(QOpenGLFunctions_4_1_Core& gl, colormaps::DepthS
     uploadedCueScale_ = scale;
 }
 
+void MeshMaterial::uploadLabelPalette(QOpenGLFunctions_4_1_Core& gl) {
+    std::vector<glm::u8vec4> table;
+    for (const glm::vec3& color : colormaps::labelPalette()) {
+        table.push_back(colormaps::toRgba8(color));
+    }
+    gl.glActiveTexture(GL_TEXTURE0 + kLabelPaletteUnit);
+    gl.glBindTexture(GL_TEXTURE_1D, labelTexture_);
+    gl.glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    gl.glTexImage1D(GL_TEXTURE_1D, 0, GL_RGBA8, static_cast<GLsizei>(table.size()), 0, GL_RGBA,
+                    GL_UNSIGNED_BYTE, table.data());
+    finishUpload(gl, GL_TEXTURE_1D, GL_NEAREST, "uploading the label palette");
+}
+
 void MeshMaterial::prepare(QOpenGLFunctions_4_1_Core& gl, const GpuMeshes& meshes,
                            const VesselCueParameters& cue) {
     if (scalarsStale(meshes)) {
@@ -275,6 +323,12 @@ void MeshMaterial::use(QOpenGLFunctions_4_1_Core& gl, const Program& program,
     program.use();
     const auto loc = [&](std::string_view name) { return program.location(name); };
     gl.glUniform1i(loc("uUseArray"), useArray ? 1 : 0);
+    const bool labels = std::any_of(labels_.begin(), labels_.end(), [&](const auto& entry) {
+        return entry.first == style_.array && entry.second.has_value();
+    });
+    gl.glUniform1i(loc("uLabels"), labels ? 1 : 0);
+    gl.glUniform1i(loc("uLabelPalette"), kLabelPaletteUnit);
+    gl.glUniform1i(loc("uLabelPaletteSize"), static_cast<GLint>(colormaps::labelPalette().size()));
     gl.glUniform3f(loc("uBaseColor"), style_.vesselColor.r, style_.vesselColor.g,
                    style_.vesselColor.b);
     gl.glUniform3f(loc("uNoDataColor"), noData.r, noData.g, noData.b);
@@ -304,11 +358,15 @@ void MeshMaterial::use(QOpenGLFunctions_4_1_Core& gl, const Program& program,
     gl.glUniform1i(loc("uObjectCount"), std::max(rows - 1, 0));
     gl.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);
     gl.glBindTexture(GL_TEXTURE_1D, cueDepthScale(cue.cue) ? cueLutTexture_ : 0U);
+    gl.glActiveTexture(GL_TEXTURE0 + kLabelPaletteUnit);
+    gl.glBindTexture(GL_TEXTURE_1D, labelTexture_);
     gl.glActiveTexture(GL_TEXTURE0);
     gl.glBindTexture(GL_TEXTURE_1D, lutTexture_);
 }
 
 void MeshMaterial::unbind(QOpenGLFunctions_4_1_Core& gl) {
+    gl.glActiveTexture(GL_TEXTURE0 + kLabelPaletteUnit);
+    gl.glBindTexture(GL_TEXTURE_1D, 0);
     gl.glActiveTexture(GL_TEXTURE0 + kObjectTableUnit);
     gl.glBindTexture(GL_TEXTURE_2D, 0);
     gl.glActiveTexture(GL_TEXTURE0 + kCueLutUnit);

@@ -341,6 +341,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
     f.glUniformMatrix4fv(loc("uProjection"), 1, GL_FALSE, &projection[0][0]);
     f.glUniformMatrix3fv(loc("uNormalMatrix"), 1, GL_FALSE, &normalMatrix[0][0]);
     const GLint useArray = loc("uUseArray");
+    const GLint labels = loc("uLabels");
     const GLint objectId = loc("uObjectId");
     GLuint id = 1;
     const std::vector<GpuMesh>& drawn = geometry_.meshesOf(level);
@@ -351,6 +352,7 @@ void MeshRenderer::drawGBuffer(const Camera& camera, std::size_t level) {
             continue;  // hidden or translucent: its id stays reserved
         }
         f.glUniform1i(useArray, style().arrayOf(i).empty() ? 0 : 1);
+        f.glUniform1i(labels, material_.objectLabels(i) != nullptr ? 1 : 0);
         cullFor(drawn[i], view, projection);
         f.glBindVertexArray(drawn[i].vao);
         f.glDrawElements(GL_TRIANGLES, drawn[i].indexCount, GL_UNSIGNED_INT, nullptr);

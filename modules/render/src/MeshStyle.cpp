@@ -20,6 +20,16 @@ std::string lower(std::string s) {
     return s;
 }
 
+constexpr std::array kAllValues{ArrayValues::Auto, ArrayValues::Continuous,
+                                ArrayValues::Categories};
+
+bool equalsIgnoringCase(std::string_view a, std::string_view b) noexcept {
+    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
+               return std::tolower(static_cast<unsigned char>(x)) ==
+                      std::tolower(static_cast<unsigned char>(y));
+           });
+}
+
 constexpr std::array kAllCues{VesselCue::None, VesselCue::Chromadepth, VesselCue::PseudoChromadepth,
                               VesselCue::Fog, VesselCue::Fresnel};
 
@@ -44,6 +54,47 @@ bool inUnitRange(float v) noexcept {
 }
 
 }  // namespace
+
+std::span<const ArrayValues> allArrayValues() noexcept {
+    return kAllValues;
+}
+
+std::string_view name(ArrayValues values) noexcept {
+    switch (values) {
+        case ArrayValues::Auto:
+            return "auto";
+        case ArrayValues::Continuous:
+            return "continuous";
+        case ArrayValues::Categories:
+            return "categories";
+    }
+    return "auto";
+}
+
+std::optional<ArrayValues> arrayValuesFromName(std::string_view text) noexcept {
+    for (const ArrayValues values : kAllValues) {
+        if (equalsIgnoringCase(name(values), text)) {
+            return values;
+        }
+    }
+    if (equalsIgnoringCase("labels", text)) {
+        return ArrayValues::Categories;
+    }
+    return std::nullopt;
+}
+
+std::optional<std::vector<scene::Label>> shownLabels(const scene::Scene& scene,
+                                                     const MeshStyle& style,
+                                                     const std::string& name) {
+    const ArrayValues mode = name == style.array ? style.values : ArrayValues::Auto;
+    if (name.empty() || mode == ArrayValues::Continuous) {
+        return std::nullopt;
+    }
+    if (mode == ArrayValues::Categories) {
+        return scene::distinctLabels(scene, name, scene::kMaxLabels);
+    }
+    return scene::looksCategorical(scene, name) ? scene::distinctLabels(scene, name) : std::nullopt;
+}
 
 std::span<const VesselCue> allVesselCues() noexcept {
     return kAllCues;
@@ -83,12 +134,7 @@ std::string_view displayName(VesselCue cue) noexcept {
 
 std::optional<VesselCue> vesselCueFromName(std::string_view text) noexcept {
     for (const VesselCue cue : kAllCues) {
-        const std::string_view n = name(cue);
-        if (n.size() == text.size() &&
-            std::equal(n.begin(), n.end(), text.begin(), [](char a, char b) {
-                return std::tolower(static_cast<unsigned char>(a)) ==
-                       std::tolower(static_cast<unsigned char>(b));
-            })) {
+        if (equalsIgnoringCase(name(cue), text)) {
             return cue;
         }
     }
@@ -242,6 +288,7 @@ bool MeshStyle::opaque(std::size_t mesh) const noexcept {
 std::uint64_t MeshStyle::geometryKey() const noexcept {
     Hasher hash;
     hash.text(array);
+    hash.value(static_cast<int>(values));
     for (const std::size_t index : hidden) {
         hash.value(index);
     }

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -215,6 +216,14 @@ std::optional<ViewProbe> ViewRenderer::probe(const Camera& camera, int x, int y)
         result.unit = values->unit;
     }
     result.value = sample->value;
+    if (const auto labels = shownLabels(*scene_, style_, result.arrayName);
+        labels && std::isfinite(result.value)) {
+        for (const scene::Label& label : *labels) {
+            if (static_cast<float>(label.value) == result.value) {
+                result.label = label;
+            }
+        }
+    }
     return result;
 }
 

@@ -13,6 +13,7 @@
 #include "vv/colormaps/DepthScale.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshStyle.h"
+#include "vv/scene/ArrayLabels.h"
 #include "vv/scene/Mesh.h"
 
 class QFontMetricsF;
@@ -40,6 +41,10 @@ struct ParameterLegend {
     colormaps::ColorMap map = colormaps::ColorMap::Viridis;
     int bins = 0;       ///< colormaps bins (0 = continuous)
     std::string title;  ///< replaces "name (unit)" when not empty (MeshStyle::legendTitle)
+    /// Not empty: the array holds labels (shownLabels()); the legend lists
+    /// one swatch per label, label i in colormaps::labelColor(i), instead
+    /// of a colour bar (min, max, map and bins are then unused).
+    std::vector<scene::Label> labels;
 };
 
 /// The legends a frame shows; each only when its scale is used.
@@ -59,29 +64,55 @@ struct Legends {
 struct LegendTick {
     double value = 0.0;     ///< in the legend's units
     double position = 0.0;  ///< 0 = the bar's start (first colour), 1 = its end
-    std::string label;
+    QString label;          ///< in the UI locale (legendNumber())
 };
 
-/// Ticks over [lo, hi]: both ends always (labelled like the ticks between
-/// when on their step grid, else with up to 3 significant digits), and
-/// "nice" values (1, 2, 2.5, 5 x 10^k steps) in between, at
-/// most about `maxTicks` in all, none closer than 0.35 steps to an end. A
-/// range with hi <= lo (or not finite) gives one tick at lo, position 0.
+/// `value` with `decimals` digits after the separator in the UI locale
+/// (QLocale(): "0,45" in German), "0" rather than "-0"; magnitudes of 1e9
+/// and more or below 1e-6 in 3 significant digits with an exponent.
+[[nodiscard]] QString legendNumber(double value, int decimals);
+
+/// Ticks over [lo, hi]: both ends always and "nice" values (1, 2, 2.5,
+/// 5 x 10^k steps) in between, at most about `maxTicks` in all, none closer
+/// than 0.35 steps to an end. All labels of a legend have one precision: the
+/// step's decimals, or more when the ends need them to show 3 significant
+/// digits of the larger magnitude (0.45 .. 1.31: "0.45", "0.50", ...,
+/// "1.31"). A range with hi <= lo (or not finite) gives one tick at lo,
+/// position 0.
 [[nodiscard]] std::vector<LegendTick> legendTicks(double lo, double hi, int maxTicks = 5);
+
+/// The ticks of a binned legend: every bin edge, bins + 1 ticks from lo to
+/// hi, all with one precision: the ends' (as legendTicks()) or more until
+/// neighbouring edges read differently. bins < 2 or an empty range:
+/// legendTicks(lo, hi).
+[[nodiscard]] std::vector<LegendTick> binEdgeTicks(double lo, double hi, int bins);
+
+/// Which tick labels to draw, given each label's centre and width along the
+/// bar (pixels) and the least `gap` between two labels: all when they fit,
+/// else every k-th for the smallest k that fits, always with the first and
+/// the last (the last replaces a labelled neighbour too close to it). Indices
+/// ascending; {0, n - 1} when even the ends alone collide.
+[[nodiscard]] std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
+                                                     const std::vector<double>& widths, double gap);
 
 /// The depth legend's ticks: values 0 .. dmax - dmin (distance behind the
 /// nearest visible vessel point, scene units), position 0 at dmin.
 [[nodiscard]] std::vector<LegendTick> depthLegendTicks(double dmin, double dmax, int maxTicks = 5);
 
-/// "Depth behind nearest vessel (mm)".
+/// "Depth behind nearest vessel (mm)", in the UI language (translation
+/// context "vv::render::Legend", as every legend text).
 [[nodiscard]] std::string depthLegendTitle(const DepthLegend& legend);
 /// depthLegendTitle() and shorter forms for narrow legends ("Depth (mm)" last).
 [[nodiscard]] std::vector<std::string> depthLegendTitles(const DepthLegend& legend);
+/// A label's legend text: its name from the file, else "Label <value>"
+/// (translated, the value in the UI locale).
+[[nodiscard]] QString labelName(const scene::Label& label);
 /// The first of `titles` no wider than `width` in `metrics`, else the last one
 /// (the caller elides it).
 [[nodiscard]] QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles,
                                    double width);
-/// "wss (Pa)", or the name alone without a unit; the legend's own title when it has one.
+/// "wss (Pa)", or the name alone without a unit (or for labels); the
+/// legend's own title when it has one.
 [[nodiscard]] std::string parameterLegendTitle(const ParameterLegend& legend);
 
 /// The legends for a frame: the depth legend when the VSS is on and shown
@@ -89,7 +120,8 @@ struct LegendTick {
 /// colours by a depth scale (its scale over `cueRange`); the parameter legend
 /// when an array is shown (`range` set) and no cue replaces its colours
 /// (vessel chromadepth / pseudo-chromadepth). The unit is the first mesh's
-/// that has the array. With a scene, one parameter legend per array that
+/// that has the array. An array shown as labels (shownLabels()) gets their
+/// list (ParameterLegend::labels). With a scene, one parameter legend per array that
 /// visible objects show (shownArrays(): the scene's array over `range`,
 /// others over objectArrayRange()), none when no visible object shows one.
 [[nodiscard]] Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
@@ -99,7 +131,8 @@ struct LegendTick {
 
 /// Where the legends go inside `area` (logical pixels): the depth legend
 /// bottom-left, the parameter legend bottom-right, each in a dark box that
-/// keeps the text readable; empty rectangles for absent legends.
+/// keeps the text readable; empty rectangles for absent legends. A label
+/// legend is as tall as its swatches need (in columns when they fit).
 struct LegendLayout {
     QRectF depth;      ///< null when there is no depth legend
     QRectF parameter;  ///< null when there is no parameter legend
@@ -111,7 +144,11 @@ struct LegendLayout {
 [[nodiscard]] LegendLayout legendLayout(const QRectF& area, const Legends& legends);
 
 /// Paints the legends with `painter` into `area`; the bars come from the same
-/// tables as the GL passes (colormaps::lut). Does nothing for empty legends.
+/// tables as the GL passes (colormaps::lut). A binned bar has a tick at
+/// every bin edge (binEdgeTicks(), labels chosen by labelledTicks()); a
+/// label legend one swatch per label with its name (from the file) or
+/// "Label <value>". Text is in the UI language and locale. Does nothing for
+/// empty legends.
 void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends);
 
 /// Paints the legends onto `image` (in place, its full rectangle).

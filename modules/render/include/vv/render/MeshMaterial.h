@@ -20,7 +20,8 @@ namespace vv::render {
 /// The material of the meshes, as MeshStyle describes it: the per-vertex
 /// values of the shown arrays (written into each GpuMesh's scalar buffer),
 /// the colour map and the cue's depth scale as 1-D tables, the per-object
-/// table (colour, array on/off, range, opacity by object id) and the
+/// table (colour, array on/off, range, opacity, labels by object id), the
+/// label palette and the
 /// uniforms that tie them to a program. Uploads lazily: what the style did
 /// not change stays on the GPU. Functions that take the GL functions need
 /// their context current; they throw RenderError when GL fails.
@@ -32,6 +33,8 @@ class MeshMaterial {
     static constexpr int kCueLutUnit = 1;
     static constexpr int kGBufferFirstUnit = 2;
     static constexpr int kObjectTableUnit = kGBufferFirstUnit + 4;
+    /// The label palette (colormaps::labelPalette()) for label arrays.
+    static constexpr int kLabelPaletteUnit = kObjectTableUnit + 1;
 
     MeshMaterial();
 
@@ -61,6 +64,10 @@ class MeshMaterial {
     /// objectArrayRange() for another; nullopt for none.
     [[nodiscard]] std::optional<std::pair<float, float>> objectRange(std::size_t mesh) const;
 
+    /// The labels object `mesh` shows (shownLabels()); null when its array
+    /// is shown through the colour map or it shows none.
+    [[nodiscard]] const std::vector<scene::Label>* objectLabels(std::size_t mesh) const;
+
     /// True when the uploaded per-vertex values are not those of the style's
     /// arrays on `meshes`' attached scene.
     [[nodiscard]] bool scalarsStale(const GpuMeshes& meshes) const noexcept;
@@ -85,15 +92,18 @@ class MeshMaterial {
     void updateRange(const scene::Scene* scene);
     void uploadObjects(QOpenGLFunctions_4_1_Core& gl, const scene::Scene* scene);
     void uploadCueLut(QOpenGLFunctions_4_1_Core& gl, colormaps::DepthScale scale);
+    void uploadLabelPalette(QOpenGLFunctions_4_1_Core& gl);
 
     MeshStyle style_;
     Lighting lighting_;
     std::optional<std::pair<float, float>> effectiveRange_;
     /// Ranges of the arrays objects show besides the scene's (objectArrayRange).
     std::vector<std::pair<std::string, std::optional<std::pair<float, float>>>> objectRanges_;
+    /// The labels of every shown array (shownLabels()), by array name.
+    std::vector<std::pair<std::string, std::optional<std::vector<scene::Label>>>> labels_;
     bool scalarsUploaded_ = false;
-    /// The array each mesh's uploaded values come from.
-    std::vector<std::string> uploadedArrays_;
+    /// The array each mesh's uploaded values come from, and whether as labels.
+    std::vector<std::pair<std::string, bool>> uploadedArrays_;
     unsigned lutTexture_ = 0;
     int lutSize_ = 256;
     std::optional<colormaps::ColorMap> uploadedMap_;
@@ -101,6 +111,7 @@ class MeshMaterial {
     unsigned cueLutTexture_ = 0;
     std::optional<colormaps::DepthScale> uploadedCueScale_;
     unsigned objectTexture_ = 0;
+    unsigned labelTexture_ = 0;
     bool objectsStale_ = true;
 };
 

@@ -17,6 +17,7 @@
 
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
+#include "vv/scene/ArrayLabels.h"
 #include "vv/scene/Mesh.h"
 
 namespace vv::render {
@@ -52,6 +53,22 @@ struct ObjectStyle {
     bool operator==(const ObjectStyle&) const = default;
 };
 
+/// How the values of the scene's array are read: as a measurement through
+/// the colour map, or as labels (segment ids) with one colour each.
+enum class ArrayValues : std::uint8_t {
+    Auto,        ///< labels when scene::looksCategorical(), else continuous
+    Continuous,  ///< always through the colour map
+    Categories,  ///< always labels (up to scene::kMaxLabels distinct whole numbers)
+};
+
+/// Every mode, in UI order.
+[[nodiscard]] std::span<const ArrayValues> allArrayValues() noexcept;
+/// Command-line identifier: "auto", "continuous", "categories".
+[[nodiscard]] std::string_view name(ArrayValues values) noexcept;
+/// The mode whose name() equals `text`, ignoring ASCII case (also "labels"
+/// for Categories); nullopt when none does.
+[[nodiscard]] std::optional<ArrayValues> arrayValuesFromName(std::string_view text) noexcept;
+
 /// How meshes are shaded. Colours are sRGB in [0, 1]; lighting is applied to
 /// them directly (no linearisation), so a surface facing the light shows the
 /// colour map's colours unchanged.
@@ -70,6 +87,9 @@ struct MeshStyle {
     /// Colour of vertices without a value (NaN, or a mesh without the array);
     /// nullopt = the map's colormaps::noDataColor(), which the map never uses.
     std::optional<glm::vec3> noDataColor;
+    /// Labels or a measurement: applies to `array`; arrays that objects show
+    /// besides it are always read as ArrayValues::Auto.
+    ArrayValues values = ArrayValues::Auto;
     /// Title of the parameter legend; empty = "name (unit)" of the array.
     std::string legendTitle;
     /// Blinn-Phong with the key light (`light`) and ambient; false draws
@@ -115,6 +135,16 @@ void validateStyle(const MeshStyle& style);
 [[nodiscard]] std::optional<std::pair<float, float>> objectArrayRange(const scene::Scene& scene,
                                                                       const MeshStyle& style,
                                                                       const std::string& name);
+
+/// The labels array `name` is shown with (sorted by value, each shown in
+/// colormaps::labelColor(its index)); nullopt when it is shown through the
+/// colour map: by style.values for the scene's array, by
+/// scene::looksCategorical() for others; Categories on an array that is not
+/// whole-numbered or has more than scene::kMaxLabels distinct values stays
+/// continuous.
+[[nodiscard]] std::optional<std::vector<scene::Label>> shownLabels(const scene::Scene& scene,
+                                                                   const MeshStyle& style,
+                                                                   const std::string& name);
 
 /// A depth cue on the vessel surface itself, the comparison techniques for
 /// the VSS (issue 4, pass 5). Depth is normalised to t = (d - dmin) /

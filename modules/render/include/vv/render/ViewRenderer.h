@@ -43,6 +43,8 @@ struct ViewProbe {
     /// Depth behind the nearest visible vessel point of the frame (>= 0).
     float depthBelowNearest = 0.0F;
     glm::vec3 worldPosition{0.0F};  ///< scene coordinates
+    /// The label here when the array is shown as labels (shownLabels()).
+    std::optional<scene::Label> label;
 };
 
 /// What the settle step started (ViewRenderer::settle).

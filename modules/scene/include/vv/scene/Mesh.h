@@ -4,6 +4,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <glm/glm.hpp>
+#include <map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -42,6 +43,9 @@ struct Mesh {
     std::vector<std::uint32_t> indices;  ///< three per triangle
     std::vector<DataArray> pointArrays;  ///< tupleCount() == positions.size()
     std::vector<DataArray> cellArrays;   ///< tupleCount() == triangleCount()
+    /// Names of label values (segment ids) by array name, where the file
+    /// gives them (meshio: the field-data string array "<array>_names").
+    std::map<std::string, std::map<std::int64_t, std::string>> labelNames;
 
     [[nodiscard]] std::size_t vertexCount() const noexcept { return positions.size(); }
     [[nodiscard]] std::size_t triangleCount() const noexcept { return indices.size() / 3; }
