@@ -269,6 +269,11 @@ TEST(LabelledTicksTest, AllWhenTheyFitElseEveryKthWithBothEnds) {
     const auto chosen = vv::render::labelledTicks(eight, std::vector<double>(8, 24.0), 2.0);
     EXPECT_EQ(chosen.front(), 0U);
     EXPECT_EQ(chosen.back(), 7U);
+    // A depth legend 0, 50, 100, 121: only 100 collides with the end, so 50
+    // keeps its label (the end replaces just its close neighbour).
+    const std::vector<double> depth{0, 107, 235, 258};
+    EXPECT_EQ(vv::render::labelledTicks(depth, std::vector<double>(4, 28.0), 3.0),
+              (std::vector<std::size_t>{0, 1, 3}));
 }
 
 /// Sets the default locale for a test and restores it.

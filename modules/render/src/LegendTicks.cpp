@@ -163,13 +163,12 @@ std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
         for (std::size_t i = 0; i + 1 < n; i += k) {
             chosen.push_back(i);
         }
-        // The last end always; it replaces a labelled neighbour too close to it.
-        if (chosen.size() > 1 && (n - 1) - chosen.back() < k) {
-            std::vector<std::size_t> withEnd = chosen;
-            withEnd.push_back(n - 1);
-            if (!fits(withEnd)) {
-                chosen.pop_back();
-            }
+        // The last end always; it replaces the labelled neighbours too close to it.
+        const auto collidesWithEnd = [&](std::size_t i) {
+            return centres[i] + widths[i] / 2.0 + gap > centres[n - 1] - widths[n - 1] / 2.0;
+        };
+        while (chosen.size() > 1 && collidesWithEnd(chosen.back())) {
+            chosen.pop_back();
         }
         chosen.push_back(n - 1);
         if (fits(chosen)) {

@@ -90,7 +90,7 @@ struct LegendTick {
 /// Which tick labels to draw, given each label's centre and width along the
 /// bar (pixels) and the least `gap` between two labels: all when they fit,
 /// else every k-th for the smallest k that fits, always with the first and
-/// the last (the last replaces a labelled neighbour too close to it). Indices
+/// the last (the last replaces the labelled neighbours too close to it). Indices
 /// ascending; {0, n - 1} when even the ends alone collide.
 [[nodiscard]] std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
                                                      const std::vector<double>& widths, double gap);
