@@ -2281,6 +2281,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>Label %1</source>
         <translation>Label %1</translation>
     </message>
+    <message>
+        <source>%1 labels, colours repeat: hover names one</source>
+        <translation>%1 Labels, Farben wiederholen sich: der Mauszeiger nennt eines</translation>
+    </message>
 </context>
 <context>
     <name>vv::render::ViewAnnotations</name>

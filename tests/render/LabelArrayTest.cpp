@@ -198,6 +198,41 @@ TEST(LabelLegendTest, LegendsListEveryLabelWithItsNameOrValue) {
     EXPECT_EQ(seen[rgbOf(vv::colormaps::labelColor(4))], 0);  // only as many swatches as labels
 }
 
+TEST(LabelLegendTest, MoreLabelsThanColoursGetOneLineNotAMisleadingKey) {
+    // 71 labels share 6 colours: a swatch list would pair one colour with
+    // several names, so the legend says the colours repeat instead.
+    vv::render::test::ensureGuiApplication();
+    vv::render::ParameterLegend many;
+    many.name = "segment_id";
+    for (int v = 0; v < 71; ++v) {
+        many.labels.push_back(vv::scene::Label{v, {}});
+    }
+    vv::render::ParameterLegend one = many;
+    one.labels.resize(1);
+    const QRectF area(0, 0, 1200, 800);
+    vv::render::Legends manyLegends;
+    manyLegends.parameter = many;
+    vv::render::Legends oneLegend;
+    oneLegend.parameter = one;
+    const QRectF manyBox = vv::render::legendLayout(area, manyLegends).parameter;
+    const QRectF oneBox = vv::render::legendLayout(area, oneLegend).parameter;
+    EXPECT_DOUBLE_EQ(manyBox.height(), oneBox.height()) << "the repeating key is not one line";
+
+    QImage image(1200, 800, QImage::Format_RGB32);
+    image.fill(qRgb(255, 255, 255));
+    vv::render::paintLegends(image, manyLegends);
+    int swatchPixels = 0;
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            for (std::size_t i = 0; i < vv::colormaps::labelPalette().size(); ++i) {
+                swatchPixels +=
+                    (image.pixel(x, y) | 0xff000000U) == rgbOf(vv::colormaps::labelColor(i));
+            }
+        }
+    }
+    EXPECT_EQ(swatchPixels, 0) << "swatches drawn although colours repeat";
+}
+
 /// The x positions of the tick marks below a legend bar painted on black:
 /// the row just below the bar's light frame, bright runs.
 std::vector<int> tickMarks(const QImage& image, const QRectF& box) {

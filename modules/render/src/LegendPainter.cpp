@@ -126,10 +126,22 @@ struct SwatchGrid {
 
 constexpr std::size_t kMaxSwatches = 16;  ///< more labels: the rest summed up in one line
 
+/// More labels than the palette has colours: some share a colour.
+bool labelColoursRepeat(const ParameterLegend& p) {
+    return p.labels.size() > colormaps::labelPalette().size();
+}
+
 /// The texts of a label legend's rows: one per label, at most kMaxSwatches
 /// (the last then says how many more there are).
 QStringList swatchTexts(const ParameterLegend& p) {
     QStringList texts;
+    if (labelColoursRepeat(p)) {
+        // A key where two rows share a colour would mislead: one line instead.
+        texts.push_back(translated(QT_TRANSLATE_NOOP("vv::render::Legend",
+                                                     "%1 labels, colours repeat: hover names one"))
+                            .arg(QLocale().toString(static_cast<qulonglong>(p.labels.size()))));
+        return texts;
+    }
     const std::size_t shown = p.labels.size() > kMaxSwatches ? kMaxSwatches - 1 : p.labels.size();
     for (std::size_t i = 0; i < shown; ++i) {
         texts.push_back(labelName(p.labels[i]));
@@ -196,7 +208,8 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
         const double left = inner.left() + static_cast<double>(column) * columnWidth;
         const double top = titleRect.bottom() + static_cast<double>(row) * grid.rowHeight;
         const QRectF swatch(left, top + (grid.rowHeight - m.bar) / 2.0, m.bar, m.bar);
-        const bool summary = static_cast<std::size_t>(i) >= p.labels.size() ||
+        const bool summary = labelColoursRepeat(p) ||
+                             static_cast<std::size_t>(i) >= p.labels.size() ||
                              (p.labels.size() > kMaxSwatches && i + 1 == texts.size());
         if (!summary) {
             const glm::u8vec4 c =
