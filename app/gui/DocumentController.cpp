@@ -233,10 +233,11 @@ report::ReportSource DocumentController::reportSource() const {
             source.seriesInstanceUid = seriesUid_;
         }
     }
-    // The bundled demo tree: the report says it is synthetic data.
-    source.syntheticDemo = !source.files.empty() &&
-                           std::all_of(source.files.begin(), source.files.end(),
-                                       [](const auto& file) { return vv::app::isDemoFile(file); });
+    // The demo tree (its bundled file, or generated when there is none): the
+    // report says it is synthetic data.
+    source.syntheticDemo =
+        demo_ && std::all_of(source.files.begin(), source.files.end(),
+                             [](const auto& file) { return vv::app::isDemoFile(file); });
     return source;
 }
 

@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "GuiFixture.h"
+#include "common/ResourcePaths.h"
 #include "gui/DocumentController.h"
 #include "gui/RecentFiles.h"
 #include "vv/meshio/MeshWriter.h"
@@ -188,6 +189,20 @@ TEST_F(DocumentControllerTest, ALoadSignalsInOrderAndNamesItsFiles) {
     ASSERT_EQ(document_.reportSource().files.size(), 1U);
     EXPECT_TRUE(document_.reportSource().dicomPath.empty());
     EXPECT_EQ(document_.volume(), nullptr);
+}
+
+TEST_F(DocumentControllerTest, TheDemoIsSyntheticInTheReportEvenWhenGenerated) {
+    // No demo file here (VV_DEMO_FILE unset, no data folder next to the test):
+    // the demo is generated in memory and names no file, yet it is the demo.
+    ASSERT_FALSE(app::findDemoFile().has_value());
+    document_.openDemo();
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }, 180000));
+    ASSERT_TRUE(document_.showsDemo());
+    EXPECT_TRUE(document_.reportSource().syntheticDemo);
+    // Another file afterwards is patient data again.
+    document_.openFiles({qpath(writeTube("after-demo.vtp"))});
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }));
+    EXPECT_FALSE(document_.reportSource().syntheticDemo);
 }
 
 TEST_F(DocumentControllerTest, ASessionIsAppliedOnceItsFilesAreShown) {
