@@ -49,14 +49,6 @@ void addLabels(vv::scene::Mesh& mesh, F label) {
 
 class LabelArrayTest : public vv::render::test::GlRenderTest {
   protected:
-    vv::render::FrameSettings flatSettings() const {
-        vv::render::FrameSettings s;
-        s.background = background_;
-        s.vss.enabled = false;
-        s.ao.enabled = false;
-        s.antialiasing = false;
-        return s;
-    }
     /// A 200 x 150 harness, or a test failure naming why there is none.
     static std::unique_ptr<FrameHarness> makeHarness() {
         try {

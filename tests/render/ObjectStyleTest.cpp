@@ -52,15 +52,6 @@ vv::scene::Scene scene() {
 
 class ObjectStyleTest : public vv::render::test::GlRenderTest {
   protected:
-    /// VSS off, no AO / FXAA: exact pixels.
-    vv::render::FrameSettings flatSettings() const {
-        vv::render::FrameSettings s;
-        s.background = background_;
-        s.vss.enabled = false;
-        s.ao.enabled = false;
-        s.antialiasing = false;
-        return s;
-    }
     OffscreenOptions options(bool vss) const {
         OffscreenOptions o = vv::render::test::exactOptions(240, 180);
         o.background = background_;

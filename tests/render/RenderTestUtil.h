@@ -96,6 +96,16 @@ class GlRenderTest : public ::testing::Test {
         return passState(renderer, pass);
     }
 
+    /// VSS off, no AO / FXAA, the test background: exact pixels.
+    [[nodiscard]] FrameSettings flatSettings() const {
+        FrameSettings s;
+        s.background = background_;
+        s.vss.enabled = false;
+        s.ao.enabled = false;
+        s.antialiasing = false;
+        return s;
+    }
+
     // Exactly representable in 8 bits, so cleared pixels compare equal.
     const glm::vec3 background_{26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
     const QRgb backgroundRgb_ = qRgb(26, 51, 77);
