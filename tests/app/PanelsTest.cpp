@@ -13,10 +13,12 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMouseEvent>
+#include <QScrollBar>
 #include <QSlider>
 #include <QSpinBox>
 #include <QToolButton>
 #include <QTreeWidget>
+#include <QWheelEvent>
 #include <algorithm>
 #include <limits>
 #include <numeric>
@@ -515,6 +517,35 @@ TEST_F(PanelsTest, DataPanelHidesAndShowsSingleMeshes) {
     tree->topLevelItem(0)->setCheckState(0, Qt::Unchecked);
     window_->setScene(makeTubeScene(), QStringLiteral("tube"));
     EXPECT_TRUE(viewer->style().hidden.empty());
+}
+
+TEST_F(PanelsTest, ScrollingTheSidePanelOverAComboBoxKeepsItsValue) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    window_->resize(1280, 500);  // short: the side panel scrolls
+    QCoreApplication::processEvents();
+    QComboBox* array = window_->functionalPanel()->arrayChooser();
+    ASSERT_TRUE(array->isVisible());
+    const QString before = array->currentText();
+    auto* bar = window_->sidePanel()->verticalScrollBar();
+    bar->setValue(bar->maximum());  // the wheel turns up: room to scroll
+    window_->viewer()->setFocus();
+    const auto wheel = [&] {
+        const QPointF at(array->width() / 2.0, array->height() / 2.0);
+        QWheelEvent event(at, array->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                          Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(array, &event);
+    };
+    wheel();
+    EXPECT_EQ(array->currentText(), before) << "a wheel passing over changed the array";
+    if (bar->maximum() > bar->minimum()) {
+        EXPECT_LT(bar->value(), bar->maximum()) << "the panel did not scroll";
+    }
+    window_->activateWindow();
+    array->setFocus();  // clicked into: the wheel is the control's again
+    ASSERT_TRUE(waitUntil([&] { return array->hasFocus(); }, 5000));
+    wheel();
+    EXPECT_NE(array->currentText(), before);
 }
 
 TEST_F(PanelsTest, SidePanelSectionsAreRestoredAndCanBeReset) {

@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/panels/SidePanel.h"
 
+#include <QAbstractSlider>
+#include <QAbstractSpinBox>
+#include <QComboBox>
+#include <QCoreApplication>
 #include <QEvent>
 #include <QScrollBar>
 #include <QStyle>
@@ -10,6 +14,19 @@
 #include "gui/panels/CollapsibleSection.h"
 
 namespace vv::gui::panels {
+
+namespace {
+
+/// A control that a mouse wheel would change: a combo box, spin box or
+/// slider (not the panel's own scroll bars).
+bool turnsWithTheWheel(const QObject* object) {
+    return (qobject_cast<const QComboBox*>(object) != nullptr ||
+            qobject_cast<const QAbstractSpinBox*>(object) != nullptr ||
+            qobject_cast<const QAbstractSlider*>(object) != nullptr) &&
+           qobject_cast<const QScrollBar*>(object) == nullptr;
+}
+
+}  // namespace
 
 SidePanel::SidePanel(QWidget* parent) : QScrollArea(parent), content_(new QWidget) {
     setObjectName(QStringLiteral("sidePanel"));
@@ -33,6 +50,14 @@ CollapsibleSection* SidePanel::addSection(const QString& title, QWidget* panel,
     auto* layout = qobject_cast<QVBoxLayout*>(content_->layout());
     layout->insertWidget(layout->count() - 1, section);  // above the stretch
     sections_ << section;
+    // Scrolling the panel must not change a value the cursor passes over:
+    // controls take the wheel only once clicked or tabbed into.
+    for (QWidget* child : panel->findChildren<QWidget*>()) {
+        if (turnsWithTheWheel(child)) {
+            child->setFocusPolicy(Qt::StrongFocus);
+            child->installEventFilter(this);
+        }
+    }
     updateGeometry();
     return section;
 }
@@ -69,6 +94,11 @@ QSize SidePanel::sizeHint() const {
 bool SidePanel::eventFilter(QObject* watched, QEvent* event) {
     if (watched == content_ && event->type() == QEvent::LayoutRequest) {
         updateGeometry();  // a part grew: the dock follows
+    }
+    if (event->type() == QEvent::Wheel && turnsWithTheWheel(watched) &&
+        !static_cast<QWidget*>(watched)->hasFocus()) {
+        QCoreApplication::sendEvent(verticalScrollBar(), event);  // the panel scrolls
+        return true;
     }
     return QScrollArea::eventFilter(watched, event);
 }

@@ -12,7 +12,9 @@ class CollapsibleSection;
 /// The main window's one side panel: its parts as CollapsibleSections one
 /// under the other, scrolling vertically only. It is never narrower than its
 /// widest part needs (opened or folded), so nothing in it is cut off and no
-/// horizontal scroll bar is ever needed.
+/// horizontal scroll bar is ever needed. A mouse wheel over a combo box,
+/// spin box or slider that has no keyboard focus scrolls the panel instead of
+/// changing the control's value.
 class SidePanel : public QScrollArea {
     Q_OBJECT
 
