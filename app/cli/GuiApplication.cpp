@@ -5,6 +5,7 @@
 #include <QGuiApplication>
 #include <clocale>
 
+#include "common/Language.h"
 #include "vv/core/Error.h"
 
 namespace vv::cli {
@@ -35,6 +36,9 @@ void ensureGuiApplication() {
     // It set the C library's locale from the environment: numbers written
     // and read by the engine (std::snprintf, std::strtod) stay C.
     std::setlocale(LC_NUMERIC, "C");
+    // The text drawn into images (legends, scale bar) is English unless a
+    // command installs a language (report --lang): its numbers too.
+    app::useEnglishLocale();
 }
 
 }  // namespace vv::cli

@@ -40,20 +40,32 @@ QStringList availableLanguages() {
     return languages;
 }
 
+void useEnglishLocale() {
+    if (QLocale::system().language() != QLocale::English) {
+        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    } else {
+        QLocale::setDefault(QLocale::system());
+    }
+}
+
 QString installTranslations(QCoreApplication& app, const QString& language) {
     const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
-    if (locale.language() == QLocale::English || locale.language() == QLocale::C) {
+    const auto english = [] {
+        useEnglishLocale();
         return QStringLiteral("en");
+    };
+    if (locale.language() == QLocale::English || locale.language() == QLocale::C) {
+        return english();
     }
     const auto dir = translationsDir();
     if (!dir) {
-        return QStringLiteral("en");
+        return english();
     }
     auto* own = new QTranslator(&app);
     // Tries vesselview_de_DE.qm, vesselview_de.qm, … for each UI language.
     if (!own->load(locale, QStringLiteral("vesselview"), QStringLiteral("_"), *dir)) {
         delete own;
-        return QStringLiteral("en");
+        return english();
     }
     QCoreApplication::installTranslator(own);
     if (!language.isEmpty()) {

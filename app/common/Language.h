@@ -18,9 +18,17 @@ namespace vv::app {
 
 /// Installs the translators for `language` ("" = the system locale's UI
 /// languages, "en" = none) on `app`: VesselView's own and, when Qt ships it,
-/// Qt's (qtbase_<lang>.qm); an explicit `language` also becomes the default
-/// QLocale (number formats). Returns the language installed ("en" when none
-/// fits: English, the source language, needs no translator). Never throws.
+/// Qt's (qtbase_<lang>.qm). Numbers and dates follow the language installed:
+/// an explicit `language` becomes the default QLocale, and an English UI on
+/// a system of another language gets useEnglishLocale(), so a text never
+/// mixes English words with, say, German decimal commas. Returns the
+/// language installed ("en" when none fits: English, the source language,
+/// needs no translator). Never throws.
 QString installTranslations(QCoreApplication& app, const QString& language);
+
+/// Makes English the default QLocale when the system locale's language is
+/// not English (an English system keeps its own, e.g. en_GB dates). For
+/// texts in English: the CLI's images and any untranslated UI. Never throws.
+void useEnglishLocale();
 
 }  // namespace vv::app

@@ -15,6 +15,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <optional>
 #include <regex>
@@ -228,6 +229,26 @@ TEST_F(ProcessInGerman, InfoPrintsTheSameNumbersAsInTheCLocale) {
         EXPECT_EQ(de.out, c.out) << args;
         EXPECT_NE(c.out.find("0.25"), std::string::npos) << c.out;  // decimals were printed
     }
+}
+
+TEST_F(ProcessInGerman, RenderedLegendsDoNotMixEnglishWordsWithGermanNumbers) {
+    // The image's legend titles are English (render has no --lang), so its
+    // numbers are English too: a German system locale changes no pixel.
+    // Before, the ticks read "0,45" under the English title.
+    const fs::path c = testDir() / "legend-c.png";
+    const fs::path de = testDir() / "legend-de.png";
+    const std::string args = "render " + quote(decimalTube()) +
+                             " --size 480x320 --vss off --bins 5 --ao off --aa off -o ";
+    const ShellRun inCLocale = inC(args + quote(c));
+    const ShellRun inGerman = inGermanLocale(args + quote(de));
+    ASSERT_EQ(inCLocale.code, 0) << inCLocale.out;
+    ASSERT_EQ(inGerman.code, 0) << inGerman.out;
+    const auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    ASSERT_FALSE(bytes(c).empty());
+    EXPECT_TRUE(bytes(c) == bytes(de)) << "the German locale changed the rendered legend";
 }
 
 TEST_F(ProcessInGerman, BenchWritesItsCsvAndTableInTheCLocale) {
