@@ -343,6 +343,22 @@
         <source>From the histogram: Otsu threshold, %1 to %2</source>
         <translation>Aus dem Histogramm: Otsu-Schwelle, %1 bis %2</translation>
     </message>
+    <message>
+        <source>The file cannot be read.</source>
+        <translation>Die Datei kann nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>The file is damaged or not of a supported type.</source>
+        <translation>Die Datei ist beschädigt oder hat kein unterstütztes Format.</translation>
+    </message>
+    <message>
+        <source>A value is out of its range.</source>
+        <translation>Ein Wert liegt außerhalb seines Bereichs.</translation>
+    </message>
+    <message>
+        <source>The graphics system failed.</source>
+        <translation>Das Grafiksystem hat versagt.</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ExportImageDialog</name>

@@ -6,6 +6,7 @@
 #include <optional>
 #include <string_view>
 
+#include "vv/core/Error.h"
 #include "vv/segmentation/VolumeSegmentation.h"
 
 namespace vv::gui {
@@ -118,6 +119,28 @@ QString thresholdRuleText(const segmentation::ThresholdRange& range,
             .arg(lower, upper);
     }
     return QString::fromStdString(range.rule);
+}
+
+QString problemText(const vv::Error& error) {
+    const QString detail = QString::fromStdString(error.problem());
+    const char* kind = nullptr;
+    if (dynamic_cast<const IoError*>(&error) != nullptr) {
+        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The file cannot be read.");
+    } else if (dynamic_cast<const FormatError*>(&error) != nullptr) {
+        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts",
+                                 "The file is damaged or not of a supported type.");
+    } else if (dynamic_cast<const InvalidArgumentError*>(&error) != nullptr) {
+        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "A value is out of its range.");
+    } else if (dynamic_cast<const RenderError*>(&error) != nullptr) {
+        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The graphics system failed.");
+    }
+    if (kind == nullptr) {
+        return detail;
+    }
+    const QString translated = QCoreApplication::translate("vv::gui::EngineTexts", kind);
+    // English UI: the detail alone says it precisely.
+    return translated == QLatin1String(kind) ? detail
+                                             : QStringLiteral("%1 (%2)").arg(translated, detail);
 }
 
 }  // namespace vv::gui

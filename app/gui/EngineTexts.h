@@ -4,6 +4,9 @@
 #include <QString>
 #include <functional>
 
+namespace vv {
+class Error;
+}
 namespace vv::segmentation {
 struct ThresholdRange;
 }
@@ -29,5 +32,13 @@ namespace vv::gui {
 /// GUI does not know comes back unchanged. Never throws.
 [[nodiscard]] QString thresholdRuleText(const segmentation::ThresholdRange& range,
                                         const std::function<QString(double)>& value);
+
+/// What went wrong, for a person: `error`'s problem (the modules' English
+/// text, which names the cause precisely). In a translated UI it is led by a
+/// sentence in the UI language saying what kind of problem it is (the file
+/// cannot be read; is damaged or of an unsupported type; a value is out of
+/// range; the graphics system failed), with the English detail in
+/// parentheses. Never throws.
+[[nodiscard]] QString problemText(const vv::Error& error);
 
 }  // namespace vv::gui

@@ -135,7 +135,7 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
         result.cancelled = true;
     } catch (const vv::Error& e) {
         result.file = toQString(e.file());
-        result.problem = QString::fromStdString(e.problem());
+        result.problem = problemText(e);
     } catch (const std::exception& e) {
         result.problem = tr("unexpected error: %1").arg(QString::fromStdString(e.what()));
     } catch (...) {

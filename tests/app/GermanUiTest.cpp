@@ -471,6 +471,10 @@ TEST_F(GermanUiTest, EveryVisibleTextIsGermanWithGermanNumbers) {
     // An error message: a file that does not exist.
     window_->openFiles({QString::fromStdString((panelTestDir() / "missing.vtp").string())});
     ASSERT_TRUE(waitUntil([&] { return !window_->lastError().isEmpty(); }));
+    // The module's English detail is led by what happened, in German.
+    EXPECT_TRUE(
+        window_->lastError().contains(QStringLiteral("Die Datei kann nicht gelesen werden")))
+        << window_->lastError().toStdString();
     QCoreApplication::processEvents();
     texts_.collectTopLevels();
 
