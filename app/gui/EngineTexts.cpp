@@ -122,7 +122,7 @@ QString thresholdRuleText(const segmentation::ThresholdRange& range,
 }
 
 QString problemText(const vv::Error& error) {
-    const QString detail = QString::fromStdString(error.problem());
+    QString detail = QString::fromStdString(error.problem());
     const char* kind = nullptr;
     if (dynamic_cast<const IoError*>(&error) != nullptr) {
         kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The file cannot be read.");

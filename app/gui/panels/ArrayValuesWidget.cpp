@@ -16,16 +16,14 @@
 namespace vv::gui::panels {
 
 ArrayValuesWidget::ArrayValuesWidget(ViewerWidget* viewer, QWidget* parent)
-    : QWidget(parent), viewer_(viewer) {
+    : QWidget(parent), viewer_(viewer), mode_(new QComboBox(this)), labels_(new QListWidget(this)) {
     auto* layout = new QVBoxLayout(this);
     layout->setContentsMargins(0, 0, 0, 0);
-    mode_ = new QComboBox(this);
     mode_->setObjectName(QStringLiteral("functionalValues"));
     mode_->addItem(tr("Automatic"), static_cast<int>(render::ArrayValues::Auto));
     mode_->addItem(tr("Continuous"), static_cast<int>(render::ArrayValues::Continuous));
     mode_->addItem(tr("Categories (labels)"), static_cast<int>(render::ArrayValues::Categories));
     layout->addWidget(mode_);
-    labels_ = new QListWidget(this);
     labels_->setObjectName(QStringLiteral("functionalLabels"));
     labels_->setToolTip(tr("The labels of the array and their colours, as the legend shows them"));
     labels_->setSelectionMode(QAbstractItemView::NoSelection);

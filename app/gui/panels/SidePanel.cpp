@@ -95,8 +95,9 @@ bool SidePanel::eventFilter(QObject* watched, QEvent* event) {
     if (watched == content_ && event->type() == QEvent::LayoutRequest) {
         updateGeometry();  // a part grew: the dock follows
     }
-    if (event->type() == QEvent::Wheel && turnsWithTheWheel(watched) &&
-        !static_cast<QWidget*>(watched)->hasFocus()) {
+    const auto* control = qobject_cast<const QWidget*>(watched);
+    if (event->type() == QEvent::Wheel && turnsWithTheWheel(watched) && control != nullptr &&
+        !control->hasFocus()) {
         QCoreApplication::sendEvent(verticalScrollBar(), event);  // the panel scrolls
         return true;
     }
