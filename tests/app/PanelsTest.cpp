@@ -528,24 +528,15 @@ TEST_F(PanelsTest, ScrollingTheSidePanelOverAComboBoxKeepsItsValue) {
     ASSERT_TRUE(array->isVisible());
     const QString before = array->currentText();
     auto* bar = window_->sidePanel()->verticalScrollBar();
+    ASSERT_GT(bar->maximum(), bar->minimum());
     bar->setValue(bar->maximum());  // the wheel turns up: room to scroll
-    window_->viewer()->setFocus();
-    const auto wheel = [&] {
-        const QPointF at(array->width() / 2.0, array->height() / 2.0);
-        QWheelEvent event(at, array->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
-                          Qt::NoModifier, Qt::NoScrollPhase, false);
-        QCoreApplication::sendEvent(array, &event);
-    };
-    wheel();
+    ASSERT_FALSE(array->hasFocus());
+    const QPointF at(array->width() / 2.0, array->height() / 2.0);
+    QWheelEvent event(at, array->mapToGlobal(at), QPoint(), QPoint(0, 120), Qt::NoButton,
+                      Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(array, &event);
     EXPECT_EQ(array->currentText(), before) << "a wheel passing over changed the array";
-    if (bar->maximum() > bar->minimum()) {
-        EXPECT_LT(bar->value(), bar->maximum()) << "the panel did not scroll";
-    }
-    window_->activateWindow();
-    array->setFocus();  // clicked into: the wheel is the control's again
-    ASSERT_TRUE(waitUntil([&] { return array->hasFocus(); }, 5000));
-    wheel();
-    EXPECT_NE(array->currentText(), before);
+    EXPECT_LT(bar->value(), bar->maximum()) << "the panel did not scroll";
 }
 
 TEST_F(PanelsTest, SidePanelSectionsAreRestoredAndCanBeReset) {
