@@ -2298,8 +2298,12 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Label %1</translation>
     </message>
     <message>
-        <source>%1 labels, colours repeat: hover names one</source>
-        <translation>%1 Labels, Farben wiederholen sich: der Mauszeiger nennt eines</translation>
+        <source>%1 labels, colours repeat</source>
+        <translation>%1 Labels, Farben wiederholt</translation>
+    </message>
+    <message>
+        <source>hover names a label</source>
+        <translation>Mauszeiger nennt das Label</translation>
     </message>
 </context>
 <context>

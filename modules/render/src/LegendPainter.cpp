@@ -136,10 +136,11 @@ bool labelColoursRepeat(const ParameterLegend& p) {
 QStringList swatchTexts(const ParameterLegend& p) {
     QStringList texts;
     if (labelColoursRepeat(p)) {
-        // A key where two rows share a colour would mislead: one line instead.
-        texts.push_back(translated(QT_TRANSLATE_NOOP("vv::render::Legend",
-                                                     "%1 labels, colours repeat: hover names one"))
-                            .arg(QLocale().toString(static_cast<qulonglong>(p.labels.size()))));
+        // A key where two rows share a colour would mislead: two lines instead.
+        texts.push_back(
+            translated(QT_TRANSLATE_NOOP("vv::render::Legend", "%1 labels, colours repeat"))
+                .arg(QLocale().toString(static_cast<qulonglong>(p.labels.size()))));
+        texts.push_back(translated(QT_TRANSLATE_NOOP("vv::render::Legend", "hover names a label")));
         return texts;
     }
     const std::size_t shown = p.labels.size() > kMaxSwatches ? kMaxSwatches - 1 : p.labels.size();
@@ -170,7 +171,9 @@ SwatchGrid swatchGrid(const ParameterLegend& p, const Metrics& m) {
     const double column = m.bar + m.pad * 0.6 + widest + m.pad * 1.5;
     const double inner = m.width - 2.0 * m.pad;
     SwatchGrid grid;
-    grid.columns = std::clamp(static_cast<int>(inner / std::max(column, 1.0)), 1, 4);
+    grid.columns = labelColoursRepeat(p)
+                       ? 1  // the two lines of text, one under the other
+                       : std::clamp(static_cast<int>(inner / std::max(column, 1.0)), 1, 4);
     grid.rows = (static_cast<int>(texts.size()) + grid.columns - 1) / grid.columns;
     grid.rowHeight = std::max(m.bar + 3.0, m.font * 1.35);
     return grid;
@@ -219,7 +222,7 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
             painter.drawRect(swatch);
         }
         painter.setPen(QColor(245, 245, 245));
-        const double textLeft = swatch.right() + m.pad * 0.6;
+        const double textLeft = labelColoursRepeat(p) ? left : swatch.right() + m.pad * 0.6;
         const QRectF textRect(textLeft, top, left + columnWidth - textLeft, grid.rowHeight);
         painter.drawText(textRect, Qt::AlignLeft | Qt::AlignVCenter,
                          fm.elidedText(texts[i], Qt::ElideRight, textRect.width()));
