@@ -10,6 +10,7 @@
 #include <QDropEvent>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QGuiApplication>
 #include <QLabel>
 #include <QLocale>
 #include <QMenuBar>
@@ -17,6 +18,7 @@
 #include <QMimeData>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QScreen>
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
@@ -71,10 +73,16 @@ QStringList localPaths(const QMimeData* mime) {
 
 }  // namespace
 
+QSize MainWindow::initialSize(const QSize& available) {
+    const QSize preferred(1280, 800);
+    return available.isValid() ? preferred.boundedTo(available) : preferred;
+}
+
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(QStringLiteral("VesselView"));
     setAcceptDrops(true);
-    resize(1280, 800);
+    const QScreen* screen = QGuiApplication::primaryScreen();
+    resize(initialSize(screen != nullptr ? screen->availableGeometry().size() : QSize()));
 
     document_ = new DocumentController(this);
     stack_ = new QStackedWidget(this);

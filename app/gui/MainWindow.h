@@ -4,6 +4,7 @@
 #include <QByteArray>
 #include <QList>
 #include <QMainWindow>
+#include <QSize>
 #include <QString>
 #include <QStringList>
 #include <memory>
@@ -107,6 +108,10 @@ class MainWindow : public QMainWindow {
     }
 
     /// The File > Open dialog's name filters, from supportedMeshExtensions().
+    /// The window's first size: 1280 x 800, but never larger than `available`
+    /// (the screen's free area; a 1280 x 720 screen gets 1280 x 720, so the
+    /// status bar stays on screen). An invalid `available` gives 1280 x 800.
+    [[nodiscard]] static QSize initialSize(const QSize& available);
     [[nodiscard]] static QString meshFileFilter() { return DocumentController::meshFileFilter(); }
 
     /// File > Save Session: the shown files, camera, display settings and

@@ -434,6 +434,14 @@ TEST_F(GuiTest, ANewLoadReplacesTheOneInProgress) {
     EXPECT_EQ(window_->viewer()->scene()->meshes[0].triangleCount(), 4U);
 }
 
+TEST(GuiStaticTest, TheFirstWindowFitsSmallScreens) {
+    // A 1280 x 720 screen: the window was 800 high and its status bar off screen.
+    EXPECT_EQ(MainWindow::initialSize(QSize(1280, 720)), QSize(1280, 720));
+    EXPECT_EQ(MainWindow::initialSize(QSize(1280, 690)), QSize(1280, 690));  // minus a task bar
+    EXPECT_EQ(MainWindow::initialSize(QSize(3840, 2160)), QSize(1280, 800));
+    EXPECT_EQ(MainWindow::initialSize(QSize()), QSize(1280, 800));
+}
+
 TEST(GuiStaticTest, FileFilterListsEveryMeshFormat) {
     const QString filter = MainWindow::meshFileFilter();
     for (const char* e : {"*.stl", "*.obj", "*.ply", "*.vtk", "*.vtp", "*.vtu"}) {
