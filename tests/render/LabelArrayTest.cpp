@@ -190,6 +190,41 @@ TEST(LabelLegendTest, LegendsListEveryLabelWithItsNameOrValue) {
     EXPECT_EQ(seen[rgbOf(vv::colormaps::labelColor(4))], 0);  // only as many swatches as labels
 }
 
+TEST(ShownLabelsCacheTest, LabelsAreFoundAgainOnlyWhenWhatDecidesThemChanges) {
+    // Finding labels reads every value: a view asks for them every frame and
+    // on every style edit, so only the shown arrays and the Values mode count.
+    vv::scene::Scene scene;
+    scene.meshes.push_back(vv::render::test::makeTube(1.0F, -8.0F, 16.0F, 0.0F, 0.0F, 8, 2));
+    addLabels(scene.meshes[0], [](std::size_t i) { return static_cast<float>(i % 3); });
+    MeshStyle style;
+    style.array = "segment_id";
+    vv::render::ShownLabelsCache cache;
+    ASSERT_NE(vv::render::labelsOf(cache.get(scene, style), "segment_id"), nullptr);
+    EXPECT_EQ(vv::render::labelsOf(cache.get(scene, style), "segment_id")->size(), 3U);
+    style.colorMap = vv::colormaps::ColorMap::Inferno;  // edits that do not decide labels
+    style.bins = 4;
+    (void)cache.get(scene, style);
+    EXPECT_EQ(cache.computations(), 1U);
+
+    style.values = vv::render::ArrayValues::Continuous;  // the mode decides
+    EXPECT_EQ(vv::render::labelsOf(cache.get(scene, style), "segment_id"), nullptr);
+    EXPECT_EQ(cache.computations(), 2U);
+    style.values = vv::render::ArrayValues::Auto;
+    style.array.clear();  // the shown arrays decide
+    EXPECT_TRUE(cache.get(scene, style).empty());
+    EXPECT_EQ(cache.computations(), 3U);
+
+    style.array = "segment_id";
+    (void)cache.get(scene, style);
+    scene.meshes[0].pointArrays.clear();  // another scene's values
+    addLabels(scene.meshes[0], [](std::size_t) { return 7.0F; });
+    cache.invalidate();
+    const auto* labels = vv::render::labelsOf(cache.get(scene, style), "segment_id");
+    ASSERT_NE(labels, nullptr);
+    EXPECT_EQ(labels->size(), 1U);
+    EXPECT_EQ(cache.computations(), 5U);
+}
+
 TEST(LabelLegendTest, MoreLabelsThanColoursGetTwoLinesNotAMisleadingKey) {
     // 71 labels share 6 colours: a swatch list would pair one colour with
     // several names, so the legend says in two lines that the colours repeat.

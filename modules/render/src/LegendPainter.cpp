@@ -275,7 +275,8 @@ std::string parameterLegendTitle(const ParameterLegend& legend) {
 Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
                    const std::optional<std::pair<float, float>>& range,
                    const FrameSettings& settings, const VssFrameStatus& status,
-                   const std::optional<std::pair<double, double>>& cueRange) {
+                   const std::optional<std::pair<double, double>>& cueRange,
+                   const ShownLabels* labels) {
     Legends legends;
     const auto cueScale = cueDepthScale(settings.cue.cue);
     if (settings.vss.enabled && status.shown) {
@@ -306,7 +307,11 @@ Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
         parameter.map = style.colorMap;
         parameter.bins = style.bins;
         parameter.title = sceneArray ? style.legendTitle : std::string();
-        if (scene != nullptr) {
+        if (labels != nullptr) {
+            if (const std::vector<scene::Label>* listed = labelsOf(*labels, name)) {
+                parameter.labels = *listed;
+            }
+        } else if (scene != nullptr) {
             parameter.labels =
                 shownLabels(*scene, style, name).value_or(std::vector<scene::Label>{});
         }

@@ -119,6 +119,7 @@ void MeshMaterial::setStyle(const MeshStyle& style, const scene::Scene* scene) {
 }
 
 void MeshMaterial::setScene(const scene::Scene* scene) {
+    labelCache_.invalidate();
     scalarsUploaded_ = false;
     objectsStale_ = true;
     updateRange(scene);
@@ -131,9 +132,7 @@ void MeshMaterial::updateRange(const scene::Scene* scene) {
     if (scene == nullptr) {
         return;
     }
-    for (const std::string& name : shownArrays(*scene, style_)) {
-        labels_.emplace_back(name, shownLabels(*scene, style_, name));
-    }
+    labels_ = labelCache_.get(*scene, style_);
     if (!style_.array.empty()) {
         effectiveRange_ = style_.range ? style_.range : arrayRange(*scene, style_.array);
     }
@@ -165,13 +164,7 @@ std::optional<std::pair<float, float>> MeshMaterial::objectRange(std::size_t mes
 }
 
 const std::vector<scene::Label>* MeshMaterial::objectLabels(std::size_t mesh) const {
-    const std::string& name = style_.arrayOf(mesh);
-    for (const auto& [array, labels] : labels_) {
-        if (array == name && !name.empty()) {
-            return labels ? &*labels : nullptr;
-        }
-    }
-    return nullptr;
+    return labelsOf(labels_, style_.arrayOf(mesh));
 }
 
 bool MeshMaterial::scalarsStale(const GpuMeshes& meshes) const noexcept {

@@ -93,7 +93,32 @@ std::optional<std::vector<scene::Label>> shownLabels(const scene::Scene& scene,
     if (mode == ArrayValues::Categories) {
         return scene::distinctLabels(scene, name, scene::kMaxLabels);
     }
-    return scene::looksCategorical(scene, name) ? scene::distinctLabels(scene, name) : std::nullopt;
+    return scene::categoricalLabels(scene, name);
+}
+
+const ShownLabels& ShownLabelsCache::get(const scene::Scene& scene, const MeshStyle& style) {
+    std::vector<std::string> arrays = shownArrays(scene, style);
+    if (!valid_ || arrays != arrays_ || style.array != array_ || style.values != values_) {
+        labels_.clear();
+        for (const std::string& name : arrays) {
+            labels_.emplace_back(name, shownLabels(scene, style, name));
+        }
+        arrays_ = std::move(arrays);
+        array_ = style.array;
+        values_ = style.values;
+        valid_ = true;
+        ++computations_;
+    }
+    return labels_;
+}
+
+const std::vector<scene::Label>* labelsOf(const ShownLabels& labels, const std::string& name) {
+    for (const auto& [array, shown] : labels) {
+        if (array == name && !name.empty()) {
+            return shown ? &*shown : nullptr;
+        }
+    }
+    return nullptr;
 }
 
 std::span<const VesselCue> allVesselCues() noexcept {

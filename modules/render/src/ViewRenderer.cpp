@@ -21,6 +21,7 @@ void ViewRenderer::initialize() {
 
 void ViewRenderer::setScene(std::shared_ptr<const scene::Scene> scene) {
     scene_ = std::move(scene);
+    labelCache_.invalidate();
     content_.reset();
     revision_ = ++nextRevision_;
     sceneDirty_ = true;
@@ -216,8 +217,9 @@ std::optional<ViewProbe> ViewRenderer::probe(const Camera& camera, int x, int y)
         result.unit = values->unit;
     }
     result.value = sample->value;
-    if (const auto labels = shownLabels(*scene_, style_, result.arrayName);
-        labels && std::isfinite(result.value)) {
+    if (const std::vector<scene::Label>* labels =
+            labelsOf(labelCache_.get(*scene_, style_), result.arrayName);
+        labels != nullptr && std::isfinite(result.value)) {
         for (const scene::Label& label : *labels) {
             if (static_cast<float>(label.value) == result.value) {
                 result.label = label;
@@ -229,7 +231,8 @@ std::optional<ViewProbe> ViewRenderer::probe(const Camera& camera, int x, int y)
 
 Legends ViewRenderer::legends() const {
     return legendsFor(scene_.get(), style_, shownRange(), lastSettings_, frame_.vssStatus(),
-                      frame_.lastCueDepthRange());
+                      frame_.lastCueDepthRange(),
+                      scene_ ? &labelCache_.get(*scene_, style_) : nullptr);
 }
 
 }  // namespace vv::render

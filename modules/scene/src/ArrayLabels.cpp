@@ -84,7 +84,7 @@ std::optional<std::vector<Label>> distinctLabels(const Scene& scene, const std::
     return labels;
 }
 
-bool looksCategorical(const Scene& scene, const std::string& name) {
+std::optional<std::vector<Label>> categoricalLabels(const Scene& scene, const std::string& name) {
     bool integerStorage = true;
     for (const Mesh& mesh : scene.meshes) {
         if (const DataArray* array = mesh.pointArray(name); array != nullptr && !array->integer) {
@@ -92,13 +92,17 @@ bool looksCategorical(const Scene& scene, const std::string& name) {
         }
     }
     if (integerStorage && labelLikeName(name)) {
-        return distinctLabels(scene, name, kMaxLabels).has_value();
+        return distinctLabels(scene, name, kMaxLabels);
     }
-    const auto labels = distinctLabels(scene, name, kMaxAutoLabels);
-    if (!labels) {
-        return false;
+    auto labels = distinctLabels(scene, name, kMaxAutoLabels);
+    if (labels && (integerStorage || labelLikeName(name) || labels->size() <= kMaxUnhintedLabels)) {
+        return labels;
     }
-    return integerStorage || labelLikeName(name) || labels->size() <= kMaxUnhintedLabels;
+    return std::nullopt;
+}
+
+bool looksCategorical(const Scene& scene, const std::string& name) {
+    return categoricalLabels(scene, name).has_value();
 }
 
 std::string labelText(const Label& label) {

@@ -124,10 +124,13 @@ struct LegendTick {
 /// list (ParameterLegend::labels). With a scene, one parameter legend per array that
 /// visible objects show (shownArrays(): the scene's array over `range`,
 /// others over objectArrayRange()), none when no visible object shows one.
+/// `labels`: the scene's ShownLabels when the caller keeps them (a view, per
+/// frame: a ShownLabelsCache); null computes them here.
 [[nodiscard]] Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
                                  const std::optional<std::pair<float, float>>& range,
                                  const FrameSettings& settings, const VssFrameStatus& status,
-                                 const std::optional<std::pair<double, double>>& cueRange);
+                                 const std::optional<std::pair<double, double>>& cueRange,
+                                 const ShownLabels* labels = nullptr);
 
 /// Where the legends go inside `area` (logical pixels): the depth legend
 /// bottom-left, the parameter legend bottom-right, each in a dark box that

@@ -100,7 +100,8 @@ class MeshMaterial {
     /// Ranges of the arrays objects show besides the scene's (objectArrayRange).
     std::vector<std::pair<std::string, std::optional<std::pair<float, float>>>> objectRanges_;
     /// The labels of every shown array (shownLabels()), by array name.
-    std::vector<std::pair<std::string, std::optional<std::vector<scene::Label>>>> labels_;
+    ShownLabelsCache labelCache_;
+    ShownLabels labels_;
     bool scalarsUploaded_ = false;
     /// The array each mesh's uploaded values come from, and whether as labels.
     std::vector<std::pair<std::string, bool>> uploadedArrays_;

@@ -146,6 +146,35 @@ void validateStyle(const MeshStyle& style);
                                                                    const MeshStyle& style,
                                                                    const std::string& name);
 
+/// shownLabels() of every array the style shows (shownArrays()), by name.
+using ShownLabels = std::vector<std::pair<std::string, std::optional<std::vector<scene::Label>>>>;
+
+/// The labels of `name` in `labels`; null when it is not shown as labels.
+[[nodiscard]] const std::vector<scene::Label>* labelsOf(const ShownLabels& labels,
+                                                        const std::string& name);
+
+/// ShownLabels of one scene, computed again only when what decides them
+/// changes (the shown arrays, the scene's array or its Values mode), not
+/// per frame or per style edit: finding labels reads every value of an
+/// array. The owner calls invalidate() when the scene changes.
+class ShownLabelsCache {
+  public:
+    /// The labels `style` shows of `scene`. Throws std::bad_alloc only.
+    [[nodiscard]] const ShownLabels& get(const scene::Scene& scene, const MeshStyle& style);
+    /// The scene changed: the next get() computes again.
+    void invalidate() noexcept { valid_ = false; }
+    /// How often get() computed the labels (each reads the arrays' values).
+    [[nodiscard]] std::size_t computations() const noexcept { return computations_; }
+
+  private:
+    bool valid_ = false;
+    std::size_t computations_ = 0;
+    std::vector<std::string> arrays_;
+    std::string array_;
+    ArrayValues values_ = ArrayValues::Auto;
+    ShownLabels labels_;
+};
+
 /// A depth cue on the vessel surface itself, the comparison techniques for
 /// the VSS (issue 4, pass 5). Depth is normalised to t = (d - dmin) /
 /// (dmax - dmin), d the linear view depth, 0 = nearest.

@@ -226,6 +226,8 @@ class ViewRenderer {
     FrameSettings lastSettings_;  ///< what the last frame was drawn with
     MeshStyle style_;
     std::shared_ptr<const scene::Scene> scene_;
+    /// The labels scene_ shows, for legends() and probe() on every frame.
+    mutable ShownLabelsCache labelCache_;
     /// The fingerprint of scene_, when it was set with one.
     std::optional<std::uint64_t> content_;
     /// The fingerprint of the meshes on the GPU; nullopt when unknown.

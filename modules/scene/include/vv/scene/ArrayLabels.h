@@ -59,6 +59,11 @@ struct Label {
 /// pressure) stays continuous; the name only breaks the tie.
 [[nodiscard]] bool looksCategorical(const Scene& scene, const std::string& name);
 
+/// The labels of `name` (as distinctLabels()) when looksCategorical() holds,
+/// else nullopt; one pass over the values. Never throws but std::bad_alloc.
+[[nodiscard]] std::optional<std::vector<Label>> categoricalLabels(const Scene& scene,
+                                                                  const std::string& name);
+
 /// The display name of a label: its name from the file, else "Label <value>"
 /// (translatable: QCoreApplication context "vv::render::Legend" in the
 /// callers; this plain form is the English fallback for machine output).
