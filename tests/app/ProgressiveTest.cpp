@@ -294,14 +294,7 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
     ViewerWidget& viewer = open(makeScene(), 640, 480);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) || !viewer.renderError().isEmpty(); }));
     ASSERT_TRUE(viewer.renderError().isEmpty()) << viewer.renderError().toStdString();
-    const auto passState = [&](const char* name) {
-        for (const auto& pass : viewer.lastPasses()) {
-            if (pass.name == name) {
-                return pass.state;
-            }
-        }
-        return vv::render::PassState::Pending;  // not in the graph
-    };
+    const auto passState = [&](const char* name) { return passStateOf(viewer, name); };
     EXPECT_EQ(passState("ssao"), vv::render::PassState::Executed);
     EXPECT_EQ(passState("fxaa"), vv::render::PassState::Executed);
     EXPECT_FALSE(viewer.occlusionDeferred());
