@@ -5,8 +5,7 @@
 // pixel). Where the local luma contrast is high, the edge direction is
 // estimated from the luma of the four diagonal neighbours and the colour is
 // averaged along it (two or four bilinear taps, the wider set only when its
-// luma stays within the neighbourhood's range). Alpha passes through (1, or
-// the VSS's visibility for "upscale": CompositeInputs::vssVisibilityAlpha).
+// luma stays within the neighbourhood's range).
 
 in vec2 vUv;
 
@@ -25,8 +24,7 @@ vec3 fetch(vec2 uv) {
 
 void main() {
     vec2 uv = gl_FragCoord.xy * uTexel;
-    vec4 centre4 = textureLod(uColor, uv, 0.0);
-    vec3 centre = centre4.rgb;
+    vec3 centre = fetch(uv);
     float lM = luma(centre);
     float lNW = luma(textureLodOffset(uColor, uv, 0.0, ivec2(-1, 1)).rgb);
     float lNE = luma(textureLodOffset(uColor, uv, 0.0, ivec2(1, 1)).rgb);
@@ -35,7 +33,7 @@ void main() {
     float lMin = min(lM, min(min(lNW, lNE), min(lSW, lSE)));
     float lMax = max(lM, max(max(lNW, lNE), max(lSW, lSE)));
     if (lMax - lMin < max(0.04, 0.12 * lMax)) {
-        fragColor = centre4;
+        fragColor = vec4(centre, 1.0);
         return;
     }
     // Perpendicular to the luma gradient: along the edge.
@@ -46,5 +44,5 @@ void main() {
     vec3 inner = 0.5 * (fetch(uv - dir / 6.0) + fetch(uv + dir / 6.0));
     vec3 outer = 0.5 * inner + 0.25 * (fetch(uv - 0.5 * dir) + fetch(uv + 0.5 * dir));
     float lOuter = luma(outer);
-    fragColor = vec4((lOuter < lMin || lOuter > lMax) ? inner : outer, centre4.a);
+    fragColor = vec4((lOuter < lMin || lOuter > lMax) ? inner : outer, 1.0);
 }

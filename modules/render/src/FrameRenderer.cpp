@@ -631,11 +631,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     if (settings.antialiasing) {
         addFxaaPass(graph, FxaaInputs{.context = context, .targetSize = targetSize});
     } else if (upscale) {
-        addFxaaPass(graph, FxaaInputs{.context = context, .targetSize = size, .reduced = true});
         addUpscalePass(graph, UpscaleInputs{.context = context,
-                                            .size = size,
                                             .targetSize = targetSize,
-                                            .source = board::kSmoothed,
                                             .isoLines = targetIsoLines,
                                             .isoLineWidth = vssSettings.isoLineWidth,
                                             .isoLineStrength = vssSettings.isoLineStrength});

@@ -47,8 +47,6 @@ inline constexpr std::string_view kTranslucentColor = "translucent-color";
 inline constexpr std::string_view kAoRaw = "ao-raw";
 inline constexpr std::string_view kAo = "ao";
 inline constexpr std::string_view kComposited = "composited";
-// "fxaa-reduced": the reduced frame's composite with its edges smoothed.
-inline constexpr std::string_view kSmoothed = "smoothed";
 
 }  // namespace vv::render::board
 

@@ -3,8 +3,6 @@
 
 #include <QOpenGLFunctions_4_1_Core>
 #include <algorithm>
-#include <string_view>
-#include <utility>
 
 #include "passes/FrameResources.h"
 
@@ -54,20 +52,15 @@ void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const Final
 }  // namespace
 
 FinalOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs) {
-    const std::string_view into = inputs.reduced ? board::kSmoothed : board::kOutput;
     const auto& data = graph.addPass<FinalData>(
-        inputs.reduced ? "fxaa-reduced" : "fxaa",
+        "fxaa",
         [&](RenderGraph::Builder& b, FinalData& d) {
             d.input = b.read<Texture>(board::kComposited);
-            d.out.output = b.write(
-                inputs.reduced ? b.create<Texture>(board::kSmoothed,
-                                                   sized(inputs.targetSize, TextureFormat::RGBA8))
-                               : graph.blackboard().get<Texture>(board::kOutput));
-            d.target = b.declareRenderTarget(inputs.reduced ? "fxaa-reduced" : "output",
-                                             RenderTargetAttachments{{d.out.output}, {}});
+            d.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
+            d.target = b.declareRenderTarget("output", RenderTargetAttachments{{d.out.output}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const FinalData& d) { fxaa(inputs, r, d); });
-    graph.blackboard().put(into, data.out.output);
+    graph.blackboard().put(board::kOutput, data.out.output);
     return data.out;
 }
 
@@ -79,7 +72,7 @@ FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs) {
     const auto& data = graph.addPass<UpscaleData>(
         "upscale",
         [&](RenderGraph::Builder& b, UpscaleData& d) {
-            d.final.input = b.read<Texture>(inputs.source);
+            d.final.input = b.read<Texture>(board::kComposited);
             if (inputs.isoLines > 0) {
                 d.height = b.read<Texture>(board::kVssHeight);
             }

@@ -2,9 +2,7 @@
 #pragma once
 
 #include <glm/glm.hpp>
-#include <string_view>
 
-#include "passes/FrameResources.h"
 #include "passes/PassContext.h"
 #include "vv/render/RenderGraph.h"
 
@@ -12,24 +10,16 @@ namespace vv::render {
 
 // The last step of a frame whose composite went into a texture
 // (board::kComposited): "fxaa" or, for a reduced render size without
-// anti-aliasing, "fxaa-reduced" at the render size then "upscale". "fxaa"
-// and "upscale" write board::kOutput at the target's size.
+// anti-aliasing, "upscale". Both write board::kOutput at the target's size.
 
 struct FxaaInputs {
     PassContext context;
-    glm::ivec2 targetSize{1, 1};  ///< the output's size (with `reduced`: the render size)
-    /// "fxaa-reduced": into board::kSmoothed at the render size (alpha
-    /// kept), for "upscale" to read: the reduced frame's stair-stepped vessel
-    /// edges are smoothed before they are magnified.
-    bool reduced = false;
+    glm::ivec2 targetSize{1, 1};
 };
 
 struct UpscaleInputs {
     PassContext context;
-    glm::ivec2 size{1, 1};  ///< render size
     glm::ivec2 targetSize{1, 1};
-    /// What it magnifies: board::kComposited or board::kSmoothed.
-    std::string_view source = board::kComposited;
     /// The VSS's iso-lines, drawn at the target size from board::kVssHeight
     /// where board::kComposited's alpha says the VSS shows
     /// (CompositeInputs::vssVisibilityAlpha); 0 = none (nothing else read).
@@ -43,11 +33,10 @@ struct FinalOutputs {
 };
 
 /// "fxaa": FXAA of board::kComposited into board::kOutput (bilinear taps,
-/// so a reduced render size is upscaled on the way); with inputs.reduced
-/// "fxaa-reduced" (above).
+/// so a reduced render size is upscaled on the way).
 FinalOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs);
 
-/// "upscale": inputs.source into board::kOutput with bilinear
+/// "upscale": board::kComposited into board::kOutput with bilinear
 /// interpolation (four texel fetches a pixel: about what a blit costs on
 /// software rasterisers, where FXAA at the target size costs twice that), and
 /// the VSS iso-lines drawn at the target's resolution (upscale.frag): frames
