@@ -5,6 +5,9 @@
 // Vessel pixels keep their own colour: the VSS never covers a vessel.
 // With ambient occlusion, the VSS and (half as much) the vessels darken by
 // the blurred occlusion times the strength.
+// For the "upscale" pass (uVssVisibility) the alpha says how visible the VSS
+// is at the pixel (its opacity, minus what vessels and translucent objects
+// cover): that pass draws the iso-lines at the target's resolution there.
 
 in vec2 vUv;
 
@@ -18,6 +21,7 @@ uniform float uAoStrength;   // 0..1
 // The translucent objects (premultiplied colour, coverage), over everything.
 uniform sampler2D uTranslucent;
 uniform bool uUseTranslucent;
+uniform bool uVssVisibility;  // alpha = the VSS's visibility instead of 1
 
 out vec4 fragColor;
 
@@ -25,15 +29,18 @@ void main() {
     ivec2 p = ivec2(gl_FragCoord.xy);
     vec4 vessel = texelFetch(uVessels, p, 0);
     vec3 color = uBackground;
+    float visibility = 0.0;
     float occlusion = uUseAo ? clamp(uAoStrength, 0.0, 1.0) * texelFetch(uAo, p, 0).r : 0.0;
     if (uUseVss) {
         vec4 vss = texelFetch(uVss, p, 0);
         color = mix(color, vss.rgb * (1.0 - occlusion), vss.a);
+        visibility = vss.a * (1.0 - vessel.a);
     }
     color = mix(color, vessel.rgb * (1.0 - 0.5 * occlusion), vessel.a);
     if (uUseTranslucent) {
         vec4 layer = texelFetch(uTranslucent, p, 0);
         color = layer.rgb + color * (1.0 - layer.a);
+        visibility *= 1.0 - layer.a;
     }
-    fragColor = vec4(color, 1.0);
+    fragColor = vec4(color, uVssVisibility ? visibility : 1.0);
 }

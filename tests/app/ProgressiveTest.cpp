@@ -25,11 +25,13 @@
 #include <string>
 #include <vector>
 
+#include "ImageCompare.h"
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/render/MeshRenderer.h"
+#include "vv/render/RefinementPolicy.h"
 
 namespace {
 
@@ -157,6 +159,55 @@ double maxDifference(const vv::Image<float>& a, const vv::Image<float>& b, long*
     return *compared > 0 ? worst : -1.0;
 }
 
+/// The state of the pass `name` in the viewer's last frame (Pending: not in the graph).
+vv::render::PassState passStateOf(const ViewerWidget& viewer, const char* name) {
+    for (const auto& pass : viewer.lastPasses()) {
+        if (pass.name == name) {
+            return pass.state;
+        }
+    }
+    return vv::render::PassState::Pending;
+}
+
+/// One view as a moving frame and as the settled frame.
+struct MovingAndSettled {
+    QImage moving;     ///< the frame drawn while the camera moves, with this view's preview VSS
+    QImage settled;    ///< the same view after the release: exact VSS, occlusion, FXAA
+    QSize movingSize;  ///< the moving frame's render size
+    bool ok = false;   ///< both frames were drawn
+};
+
+/// Drags the viewer by `moves` steps of `step`, holds the button until the
+/// preview of the last view is on screen (a moving frame of exactly that
+/// view), grabs it, releases and grabs the settled frame of the same view
+/// once its exact VSS, occlusion and FXAA are drawn.
+MovingAndSettled movingAndSettled(ViewerWidget& viewer, int moves, QPointF step) {
+    MovingAndSettled out;
+    viewer.setSettleDelay(600000);  // only the release settles
+    Drag drag(viewer);
+    for (int i = 0; i < moves; ++i) {
+        const quint64 frames = viewer.framesWithScene();
+        drag.moveBy(step);
+        if (!waitUntil([&] { return viewer.framesWithScene() > frames; })) {
+            drag.release();
+            return out;
+        }
+    }
+    if (!waitUntil([&] { return previewShown(viewer) && viewer.cameraMoving(); })) {
+        drag.release();
+        return out;
+    }
+    out.moving = viewer.grabFramebuffer();
+    out.movingSize = viewer.lastRenderSize();
+    drag.release();
+    out.ok = waitUntil([&] {
+        return exactShown(viewer) && !viewer.occlusionDeferred() &&
+               passStateOf(viewer, "fxaa") == vv::render::PassState::Executed;
+    });
+    out.settled = viewer.grabFramebuffer();
+    return out;
+}
+
 class ProgressiveTest : public ::testing::Test {
   protected:
     static void SetUpTestSuite() { ensureApplication(); }
@@ -243,14 +294,7 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
     ViewerWidget& viewer = open(makeScene(), 640, 480);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) || !viewer.renderError().isEmpty(); }));
     ASSERT_TRUE(viewer.renderError().isEmpty()) << viewer.renderError().toStdString();
-    const auto passState = [&](const char* name) {
-        for (const auto& pass : viewer.lastPasses()) {
-            if (pass.name == name) {
-                return pass.state;
-            }
-        }
-        return vv::render::PassState::Pending;  // not in the graph
-    };
+    const auto passState = [&](const char* name) { return passStateOf(viewer, name); };
     EXPECT_EQ(passState("ssao"), vv::render::PassState::Executed);
     EXPECT_EQ(passState("fxaa"), vv::render::PassState::Executed);
     EXPECT_FALSE(viewer.occlusionDeferred());
@@ -701,6 +745,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     std::printf("\n");
 
     // Progressive at half and at full interactive resolution, then off.
+    float dynamicScale = vv::render::RefinementPolicy::kMinInteractiveScale;
     struct Config {
         bool progressive;
         float scale;
@@ -830,7 +875,35 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         } else {
             EXPECT_EQ(previews, 0);
         }
+        if (config.budget > 0.0) {
+            dynamicScale = viewer.interactiveScale();
+        }
     }
+
+    // What a moving frame looks like: the same view as a moving frame (with
+    // its own preview VSS) and as the settled frame (exact VSS, occlusion,
+    // FXAA), compared by SSIM (1 - compareImages' difference: the worst of
+    // Y, Cb, Cr). At the scale the frame budget chose above and at the floor.
+    // VV_BENCH_SHOTS=dir saves both frames as PNGs there.
+    const QString shots = qEnvironmentVariable("VV_BENCH_SHOTS");
+    viewer.setProgressiveRefinement(true);
+    for (const float scale : {dynamicScale, vv::render::RefinementPolicy::kMinInteractiveScale}) {
+        viewer.setInteractiveScale(scale);
+        const MovingAndSettled frames = movingAndSettled(viewer, 6, {12, 3});
+        ASSERT_TRUE(frames.ok) << "no moving and settled frame at scale " << scale;
+        const vv::test::ImageComparison c = vv::test::compareImages(frames.moving, frames.settled);
+        std::printf(
+            "[bench] moving frame at scale %.2f (%dx%d) against the settled frame: "
+            "SSIM %.3f (luma %.3f)\n",
+            static_cast<double>(scale), frames.movingSize.width(), frames.movingSize.height(),
+            1.0 - c.difference, 1.0 - c.lumaDifference);
+        if (!shots.isEmpty()) {
+            const QString tag = QString::asprintf("%.2f", static_cast<double>(scale));
+            frames.moving.save(shots + QStringLiteral("/moving-") + tag + QStringLiteral(".png"));
+            frames.settled.save(shots + QStringLiteral("/settled-") + tag + QStringLiteral(".png"));
+        }
+    }
+    std::fflush(stdout);
 }
 
 }  // namespace

@@ -583,8 +583,22 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         return;
     }
 
+    // With anti-aliasing the FXAA pass draws into the target (upscaling a
+    // reduced render size with its bilinear taps); without it, a reduced
+    // render size ends with "upscale", which draws the VSS's iso-lines at the
+    // target's size (the VSS shading leaves them out then).
+    const bool scaled = size != targetSize;
+    const bool useAa = settings.antialiasing || scaled;
+    const bool upscale = scaled && !settings.antialiasing;
+    const int targetIsoLines = upscale && vssSettings.enabled && vssSettings.isoLineStrength > 0.0F
+                                   ? std::max(vssSettings.isoLines, 0)
+                                   : 0;
+    VssSettings shadedVss = vssSettings;
+    if (targetIsoLines > 0) {
+        shadedVss.isoLines = 0;
+    }
     addVssShadingPass(graph, VssShadingInputs{.context = context,
-                                              .settings = vssSettings,
+                                              .settings = shadedVss,
                                               .light = lightingFor(meshes_.style().light),
                                               .pixelScale = pixelScale,
                                               .size = size});
@@ -605,24 +619,23 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                       -0.5F * projection[2][1] * static_cast<float>(size.y)),
                                   .size = size});
     addAoBlurPass(graph, AoBlurInputs{.context = context, .size = size});
-    // With anti-aliasing the FXAA pass draws into the target (upscaling a
-    // reduced render size with its bilinear taps); without it, a reduced
-    // render size ends with a bilinear blit into the target ("upscale").
-    const bool scaled = size != targetSize;
-    const bool useAa = settings.antialiasing || scaled;
     addCompositePass(graph, CompositeInputs{.context = context,
                                             .useVss = vssSettings.enabled,
                                             .useAo = ao.enabled && ao.strength > 0.0F,
                                             .useTranslucent = meshes_.hasTranslucent(),
                                             .toTexture = useAa,
+                                            .vssVisibilityAlpha = targetIsoLines > 0,
                                             .aoStrength = ao.strength,
                                             .background = settings.background,
                                             .size = size});
     if (settings.antialiasing) {
         addFxaaPass(graph, FxaaInputs{.context = context, .targetSize = targetSize});
-    } else if (scaled) {
-        addUpscalePass(graph,
-                       UpscaleInputs{.context = context, .size = size, .targetSize = targetSize});
+    } else if (upscale) {
+        addUpscalePass(graph, UpscaleInputs{.context = context,
+                                            .targetSize = targetSize,
+                                            .isoLines = targetIsoLines,
+                                            .isoLineWidth = vssSettings.isoLineWidth,
+                                            .isoLineStrength = vssSettings.isoLineStrength});
     }
     finish(&solve);
     gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);

@@ -41,6 +41,7 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
     g.glBindTexture(GL_TEXTURE_2D, in.useTranslucent ? glTex(r.get(d.translucent)).texture() : 0U);
     program.set("uTranslucent", 3);
     program.set("uUseTranslucent", in.useTranslucent ? 1 : 0);
+    program.set("uVssVisibility", in.toTexture && in.vssVisibilityAlpha ? 1 : 0);
     drawFullscreenAndUnbind(g, context.emptyVao, 4);
     g.glEnable(GL_DEPTH_TEST);
     checkGlError(g, "composite pass");

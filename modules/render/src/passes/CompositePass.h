@@ -16,6 +16,9 @@ struct CompositeInputs {
     /// Composite into a new texture board::kComposited (for "fxaa" or
     /// "upscale"), else into board::kOutput.
     bool toTexture = false;
+    /// With toTexture: the alpha of board::kComposited is how visible the
+    /// VSS is at each pixel (0..1) instead of 1, for "upscale"'s iso-lines.
+    bool vssVisibilityAlpha = false;
     float aoStrength = 0.0F;
     glm::vec3 background{0.0F};  ///< sRGB
     glm::ivec2 size{1, 1};       ///< render size

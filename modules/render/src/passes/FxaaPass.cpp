@@ -2,8 +2,7 @@
 #include "passes/FxaaPass.h"
 
 #include <QOpenGLFunctions_4_1_Core>
-#include <string_view>
-#include <utility>
+#include <algorithm>
 
 #include "passes/FrameResources.h"
 
@@ -17,64 +16,102 @@ struct FinalData {
     RenderTargetId target;
 };
 
-/// A pass named `name` from board::kComposited into board::kOutput.
-template <class Execute>
-FinalOutputs addFinalPass(RenderGraph& graph, std::string_view name, Execute execute) {
-    const auto& data = graph.addPass<FinalData>(
-        name,
-        [&](RenderGraph::Builder& b, FinalData& d) {
-            d.input = b.read<Texture>(board::kComposited);
-            d.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
-            d.target = b.declareRenderTarget("output", RenderTargetAttachments{{d.out.output}, {}});
-        },
-        std::move(execute));
-    graph.blackboard().put(board::kOutput, data.out.output);
-    return data.out;
+/// Binds `texture` (0: none) to the active unit with `filter` for
+/// minification and magnification.
+void setFilter(QOpenGLFunctions_4_1_Core& g, unsigned texture, GLint filter) {
+    g.glBindTexture(GL_TEXTURE_2D, texture);
+    if (texture != 0U) {
+        g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+        g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    }
+}
+
+void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const FinalData& d) {
+    const PassContext& context = inputs.context;
+    auto& g = *context.gl;
+    const glm::ivec2 size = inputs.targetSize;
+    context.beginFullscreen(r, d.target, size);
+    const Program& program = context.programs->fxaa;
+    program.use();
+    g.glActiveTexture(GL_TEXTURE0);
+    // Bilinear taps here only; pooled textures are nearest otherwise.
+    const unsigned input = glTex(r.get(d.input)).texture();
+    setFilter(g, input, GL_LINEAR);
+    program.set("uColor", 0);
+    program.set("uTexel", glm::vec2(1.0F) / glm::vec2(size));
+    g.glBindVertexArray(context.emptyVao);
+    g.glDrawArrays(GL_TRIANGLES, 0, 3);
+    g.glBindVertexArray(0);
+    setFilter(g, input, GL_NEAREST);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    g.glUseProgram(0);
+    g.glEnable(GL_DEPTH_TEST);
+    checkGlError(g, "FXAA pass");
 }
 
 }  // namespace
 
 FinalOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs) {
-    return addFinalPass(graph, "fxaa",
-                        [inputs](const RenderGraph::Resources& r, const FinalData& d) {
-                            const PassContext& context = inputs.context;
-                            auto& g = *context.gl;
-                            const glm::ivec2 size = inputs.targetSize;
-                            context.beginFullscreen(r, d.target, size);
-                            const Program& program = context.programs->fxaa;
-                            program.use();
-                            g.glActiveTexture(GL_TEXTURE0);
-                            // Bilinear taps here only; pooled textures are nearest otherwise.
-                            g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.input)).texture());
-                            g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-                            g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-                            program.set("uColor", 0);
-                            program.set("uTexel", glm::vec2(1.0F) / glm::vec2(size));
-                            g.glBindVertexArray(context.emptyVao);
-                            g.glDrawArrays(GL_TRIANGLES, 0, 3);
-                            g.glBindVertexArray(0);
-                            g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-                            g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-                            g.glBindTexture(GL_TEXTURE_2D, 0);
-                            g.glUseProgram(0);
-                            g.glEnable(GL_DEPTH_TEST);
-                            checkGlError(g, "FXAA pass");
-                        });
+    const auto& data = graph.addPass<FinalData>(
+        "fxaa",
+        [&](RenderGraph::Builder& b, FinalData& d) {
+            d.input = b.read<Texture>(board::kComposited);
+            d.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
+            d.target = b.declareRenderTarget("output", RenderTargetAttachments{{d.out.output}, {}});
+        },
+        [inputs](const RenderGraph::Resources& r, const FinalData& d) { fxaa(inputs, r, d); });
+    graph.blackboard().put(board::kOutput, data.out.output);
+    return data.out;
 }
 
 FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs) {
-    return addFinalPass(
-        graph, "upscale", [inputs](const RenderGraph::Resources& r, const FinalData& d) {
+    struct UpscaleData {
+        FinalData final;
+        Handle<Texture> height;
+    };
+    const auto& data = graph.addPass<UpscaleData>(
+        "upscale",
+        [&](RenderGraph::Builder& b, UpscaleData& d) {
+            d.final.input = b.read<Texture>(board::kComposited);
+            if (inputs.isoLines > 0) {
+                d.height = b.read<Texture>(board::kVssHeight);
+            }
+            d.final.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
+            d.final.target =
+                b.declareRenderTarget("output", RenderTargetAttachments{{d.final.out.output}, {}});
+        },
+        [inputs](const RenderGraph::Resources& r, const UpscaleData& d) {
             const PassContext& context = inputs.context;
             auto& g = *context.gl;
-            const unsigned output = context.framebuffers->framebuffer(r.renderTarget(d.target));
-            g.glBindFramebuffer(GL_READ_FRAMEBUFFER, glTex(r.get(d.input)).framebuffer());
-            g.glBindFramebuffer(GL_DRAW_FRAMEBUFFER, output);
-            g.glBlitFramebuffer(0, 0, inputs.size.x, inputs.size.y, 0, 0, inputs.targetSize.x,
-                                inputs.targetSize.y, GL_COLOR_BUFFER_BIT, GL_LINEAR);
-            g.glBindFramebuffer(GL_FRAMEBUFFER, output);
+            context.beginFullscreen(r, d.final.target, inputs.targetSize);
+            const Program& program = context.programs->upscale;
+            program.use();
+            // Bilinear taps here only; pooled textures are nearest otherwise.
+            const unsigned color = glTex(r.get(d.final.input)).texture();
+            const unsigned height = inputs.isoLines > 0 ? glTex(r.get(d.height)).texture() : 0U;
+            g.glActiveTexture(GL_TEXTURE0);
+            setFilter(g, color, GL_LINEAR);
+            g.glActiveTexture(GL_TEXTURE1);
+            setFilter(g, height, GL_LINEAR);
+            program.set("uColor", 0);
+            program.set("uHeight", 1);
+            program.set("uIsoLines", std::max(inputs.isoLines, 0));
+            program.set("uIsoWidth", std::max(inputs.isoLineWidth, 0.0F));
+            program.set("uIsoStrength", inputs.isoLineStrength);
+            g.glBindVertexArray(context.emptyVao);
+            g.glDrawArrays(GL_TRIANGLES, 0, 3);
+            g.glBindVertexArray(0);
+            setFilter(g, height, GL_NEAREST);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glActiveTexture(GL_TEXTURE0);
+            setFilter(g, color, GL_NEAREST);
+            g.glBindTexture(GL_TEXTURE_2D, 0);
+            g.glUseProgram(0);
+            g.glEnable(GL_DEPTH_TEST);
             checkGlError(g, "upscale pass");
         });
+    graph.blackboard().put(board::kOutput, data.final.out.output);
+    return data.final.out;
 }
 
 }  // namespace vv::render

@@ -19,8 +19,13 @@ struct FxaaInputs {
 
 struct UpscaleInputs {
     PassContext context;
-    glm::ivec2 size{1, 1};  ///< render size
     glm::ivec2 targetSize{1, 1};
+    /// The VSS's iso-lines, drawn at the target size from board::kVssHeight
+    /// where board::kComposited's alpha says the VSS shows
+    /// (CompositeInputs::vssVisibilityAlpha); 0 = none (nothing else read).
+    int isoLines = 0;
+    float isoLineWidth = 1.5F;  ///< target pixels
+    float isoLineStrength = 0.0F;
 };
 
 struct FinalOutputs {
@@ -31,10 +36,12 @@ struct FinalOutputs {
 /// so a reduced render size is upscaled on the way).
 FinalOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs);
 
-/// "upscale": a bilinear blit of board::kComposited into board::kOutput —
-/// far cheaper than a shader pass at the target size on software
-/// rasterisers (frames that favour speed: the camera moving). Leaves the
-/// output's framebuffer bound.
+/// "upscale": board::kComposited into board::kOutput with bilinear
+/// interpolation (four texel fetches a pixel: about what a blit costs on
+/// software rasterisers, where FXAA at the target size costs twice that), and
+/// the VSS iso-lines drawn at the target's resolution (upscale.frag): frames
+/// that favour speed (the camera moving). Leaves the output's framebuffer
+/// bound.
 FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs);
 
 }  // namespace vv::render

@@ -25,6 +25,7 @@ FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
     programs.ssao = Program(gl, kFullscreen, ":/vv/shaders/ssao.frag", "SSAO");
     programs.aoBlur = Program(gl, kFullscreen, ":/vv/shaders/aoblur.frag", "AO blur");
     programs.fxaa = Program(gl, kFullscreen, ":/vv/shaders/fxaa.frag", "FXAA");
+    programs.upscale = Program(gl, kFullscreen, ":/vv/shaders/upscale.frag", "upscale");
     return programs;
 }
 

@@ -29,6 +29,7 @@ struct FullscreenPrograms {
     Program ssao;
     Program aoBlur;
     Program fxaa;
+    Program upscale;  ///< upscale.frag: a reduced frame into the target, iso-lines at its size
 
     /// Builds them all in the current context. Throws RenderError when a
     /// shader fails.

@@ -68,9 +68,10 @@ struct FrameSettings {
     /// FXAA on the composited frame ("fxaa" pass, last).
     bool antialiasing = true;
     /// Render size relative to the target, in [0.1, 1]: below 1 every pass
-    /// (G-buffer, solve, shading) runs at the reduced size and the "fxaa"
-    /// pass (always run then) upscales into the target with bilinear taps.
-    /// For interactive frames on slow rasterisers; 1 = full resolution.
+    /// (G-buffer, solve, shading) runs at the reduced size, and the "fxaa"
+    /// pass (anti-aliasing on) or "upscale" (off: the VSS iso-lines are then
+    /// drawn at the target's size) brings it into the target with bilinear
+    /// taps. For interactive frames on slow rasterisers; 1 = full resolution.
     float resolutionScale = 1.0F;
     /// Draw the G-buffer from one of the mesh renderer's preview scenes
     /// (simplified copies, MeshRenderer::setPreviewScenes) when it has any,
