@@ -37,9 +37,10 @@ ArtefactsArguments parse(const std::vector<std::string>& args) {
         if (a == "--mesh") {
             parsed.meshes.push_back(arg.path());
         } else if (a == "--triangles") {
+            const std::string list = arg.value();
             parsed.triangles.clear();
-            if (arg.value() != "none") {
-                for (const std::string& t : splitList(arg.value(), "artefacts: --triangles")) {
+            if (list != "none") {
+                for (const std::string& t : splitList(list, "artefacts: --triangles")) {
                     parsed.triangles.push_back(
                         parseWholeNumber(t, "artefacts: --triangles", 4, 100000000));
                 }
@@ -47,9 +48,10 @@ ArtefactsArguments parse(const std::vector<std::string>& args) {
         } else if (a == "--size") {
             parsed.size = parseSize(arg.value(), "artefacts: --size", 16, 8192);
         } else if (a == "--view") {
-            const auto view = render::viewPresetFromName(arg.value());
+            const std::string name = arg.value();
+            const auto view = render::viewPresetFromName(name);
             if (!view) {
-                throw UsageError("artefacts: unknown view '" + arg.value() +
+                throw UsageError("artefacts: unknown view '" + name +
                                  "' (known: far, medium, close)");
             }
             parsed.view = *view;
