@@ -118,8 +118,15 @@ namespace {
 /// Bilinear sample of `l` at (x, y) (pixel centres at integers), or NaN when
 /// one of the four pixels is outside or not finite.
 double bilinear(ImageView<const float> l, double x, double y) {
-    const int x0 = static_cast<int>(std::floor(x));
-    const int y0 = static_cast<int>(std::floor(y));
+    // The last row / column itself is a sample (of the cell before it).
+    int x0 = static_cast<int>(std::floor(x));
+    int y0 = static_cast<int>(std::floor(y));
+    if (x0 == l.width() - 1 && x == x0) {
+        --x0;
+    }
+    if (y0 == l.height() - 1 && y == y0) {
+        --y0;
+    }
     if (x0 < 0 || y0 < 0 || x0 + 1 >= l.width() || y0 + 1 >= l.height()) {
         return std::numeric_limits<double>::quiet_NaN();
     }
@@ -154,7 +161,15 @@ ArtefactScore artefactScore(ImageView<const float> luminance, ImageView<const st
             clipped(x, y) = std::min(static_cast<double>(distance(x, y)), 2.0 * options.bandFar);
         }
     }
-    const Image<double> smooth = blur(clipped, gaussianTaps(options.smoothing));
+    // Normalised by the weight inside the image, so the border bends no direction.
+    const std::vector<double> taps = gaussianTaps(options.smoothing);
+    Image<double> smooth = blur(clipped, taps);
+    const Image<double> inside = blur(Image<double>(w, h, 1.0), taps);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            smooth(x, y) /= inside(x, y);
+        }
+    }
     // Luminance only where it counts (void, finite); NaN elsewhere.
     Image<float> l(w, h, std::numeric_limits<float>::quiet_NaN());
     for (int y = 0; y < h; ++y) {
