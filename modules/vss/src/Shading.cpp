@@ -98,6 +98,51 @@ namespace {
 
 constexpr int kFitRadius = 2;  // a 5x5 window
 
+/// Within this many pixels (chessboard) of a vessel pixel the plane is fitted
+/// over samples kContourStride pixels apart: the silhouette's pixel steps
+/// ripple the VSS there (docs/benchmarks/artefacts.md).
+constexpr int kContourReach = 6;
+constexpr int kContourStride = 3;
+
+/// 1 where a vessel pixel lies within kContourReach pixels (chessboard), by
+/// running counts along rows, then along columns.
+Image<std::uint8_t> nearVessels(ImageView<const std::uint8_t> vessels) {
+    const int w = vessels.width();
+    const int h = vessels.height();
+    const auto dilate = [](int n, const auto& in, const auto& out) {
+        int count = 0;  // in() over [i - reach, i + reach]
+        for (int i = 0; i < std::min(n, kContourReach); ++i) {
+            count += in(i);
+        }
+        for (int i = 0; i < n; ++i) {
+            if (i + kContourReach < n) {
+                count += in(i + kContourReach);
+            }
+            out(i, count > 0);
+            if (i - kContourReach >= 0) {
+                count -= in(i - kContourReach);
+            }
+        }
+    };
+    Image<std::uint8_t> rows(w, h, 0);
+    Image<std::uint8_t> near(w, h, 0);
+    parallelFor(0, h, 64, [&](long b, long e) {
+        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
+            dilate(
+                w, [&](int x) { return vessels(x, y) != 0 ? 1 : 0; },
+                [&](int x, bool v) { rows(x, y) = v ? 1 : 0; });
+        }
+    });
+    parallelFor(0, w, 64, [&](long b, long e) {
+        for (int x = static_cast<int>(b); x < static_cast<int>(e); ++x) {
+            dilate(
+                h, [&](int y) { return static_cast<int>(rows(x, y)); },
+                [&](int y, bool v) { near(x, y) = v ? 1 : 0; });
+        }
+    });
+    return near;
+}
+
 /// exp(-d^2 / 4) for d = -2..2: the fit's Gaussian weight per axis.
 constexpr std::array<double, 5> kFitTaps = {0.36787944117144233, 0.77880078307140488, 1.0,
                                             0.77880078307140488, 0.36787944117144233};
@@ -259,6 +304,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
             }
         }
     }
+    const Image<std::uint8_t> nearContour = nearVessels(vessels);
     constexpr long kBand = 32;
     parallelFor(
         0, h, kBand,
@@ -370,10 +416,10 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                     if (pm.fitted[i] != 0) {
                         fit = glm::dvec2(pm.slopeX[i], pm.slopeY[i]);
                     }
-                    if (support < 0.999) {
+                    if (nearContour(x, y) != 0) {
                         // Next to a contour: the wider window over the staircase.
                         if (const std::optional<glm::dvec2> wide =
-                                directSlope(height, vessels, x, y, 2)) {
+                                directSlope(height, vessels, x, y, kContourStride)) {
                             fit = wide;
                         }
                     }

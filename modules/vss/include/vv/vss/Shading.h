@@ -46,9 +46,11 @@ struct IsoLevel {
 /// exp(-(dx^2 + dy^2) / 4); vessel pixels never count, so the fit never
 /// reaches across a contour, where z' meets the vessel's depth). `support` is
 /// the weight of those pixels over the weight of the window's pixels inside
-/// the image (the border is no contour). Where support < 0.999 (next to a
-/// contour) the plane is fitted again over the same window with samples two
-/// pixels apart, which smooths the silhouette's staircase. Where a fit is
+/// the image (the border is no contour). Within 6 pixels (chessboard distance)
+/// of a vessel pixel the plane is fitted again over the same 5x5 window with
+/// samples three pixels apart, which smooths the ripples that the
+/// silhouette's pixel staircase leaves in z' there (the "teeth" along
+/// contours, docs/benchmarks/artefacts.md). Where a fit is
 /// ill-conditioned (det < 0.05 of its diagonal product) or empty, the slope is
 /// the one-pixel difference (central where both neighbours have a VSS,
 /// one-sided where one has, 0 where none has; vessel pixels count here).
