@@ -242,7 +242,8 @@ Image<float> vssLuminance(ImageView<const float> height, ImageView<const glm::ve
                 const double t = std::clamp(static_cast<double>(height(x, y)), 0.0, 1.0);
                 const double pixel = std::max((light.dmin + t * range) * light.pixelScale, 1e-12);
                 const double nx0 = s.x * range / pixel;
-                const double ny0 = s.y * range / pixel;
+                // Rows run down, the light's y up (view space).
+                const double ny0 = -s.y * range / pixel;
                 const double nl = std::sqrt(nx0 * nx0 + ny0 * ny0 + 1.0);
                 const double nx = nx0 / nl;
                 const double ny = ny0 / nl;

@@ -55,7 +55,7 @@ struct VssLight {
     double dmin = 0.0;  ///< depth range of z' in scene units
     double dmax = 1.0;
     double pixelScale = 0.0;  ///< 2 tan(fov / 2) / image height, > 0
-    double lightX = 0.0;      ///< towards the light (view space, unit length)
+    double lightX = 0.0;      ///< towards the light (view space: y up; unit length)
     double lightY = 0.0;
     double lightZ = 1.0;
     double ambient = 0.30;
@@ -69,7 +69,9 @@ struct VssLight {
 /// 0, from vss::fittedSlopes + vss::addNormalCoherence): base * (ambient +
 /// diffuse max(n.l, 0)) + specular * Blinn-Phong, with the shader's specular
 /// fade where the support is low and its Toksvig widening, clamped to 1;
-/// NaN elsewhere (vessels, no VSS). Throws InvalidArgumentError when the
+/// NaN elsewhere (vessels, no VSS). Row 0 is the top of the image (as
+/// render::rasterizeDepth gives it); the light is in view space (x right,
+/// y up, z towards the viewer). Throws InvalidArgumentError when the
 /// sizes differ or pixelScale is not > 0.
 [[nodiscard]] Image<float> vssLuminance(ImageView<const float> height,
                                         ImageView<const glm::vec4> slopes,
