@@ -43,8 +43,9 @@ const bool kQuickNormals = true;
 const bool kQuickNormals = false;
 #endif
 // Exact frames are built with SLOPE_TEXTURE defined when the solver's thread
-// fitted the slopes already (vss::fittedSlopes: the same fit as
-// fittedGradient below, once per solve instead of every frame):
+// fitted the slopes already (vss::fittedSlopes: the fit of fittedGradient
+// below, once per solve instead of every frame, with samples 3 px apart
+// within 6 px of a vessel where this file's fallback uses 2 px next to one):
 // uSlope = (dz'/dx, dz'/dy, support, coherence) on void pixels, the
 // coherence being Toksvig's length below (vss::addNormalCoherence).
 #ifdef SLOPE_TEXTURE
