@@ -75,33 +75,22 @@ std::vector<double> gaussianTaps(double sigma) {
     return taps;
 }
 
-/// Separable Gaussian of `value` * `weight` along x, then y.
-Image<double> blur(const Image<double>& in, const std::vector<double>& taps) {
+/// `in` convolved with `taps` along one axis (dx, dy: (1, 0) or (0, 1));
+/// outside the image counts as 0.
+Image<double> blurAxis(const Image<double>& in, const std::vector<double>& taps, int dx, int dy) {
     const int w = in.width();
     const int h = in.height();
     const int radius = static_cast<int>(taps.size() / 2);
-    Image<double> across(w, h, 0.0);
-    parallelFor(0, h, 32, [&](long b, long e) {
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            for (int x = 0; x < w; ++x) {
-                double s = 0.0;
-                for (int k = -radius; k <= radius; ++k) {
-                    if (x + k >= 0 && x + k < w) {
-                        s += taps[static_cast<std::size_t>(k + radius)] * in(x + k, y);
-                    }
-                }
-                across(x, y) = s;
-            }
-        }
-    });
     Image<double> out(w, h, 0.0);
     parallelFor(0, h, 32, [&](long b, long e) {
         for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
             for (int x = 0; x < w; ++x) {
                 double s = 0.0;
                 for (int k = -radius; k <= radius; ++k) {
-                    if (y + k >= 0 && y + k < h) {
-                        s += taps[static_cast<std::size_t>(k + radius)] * across(x, y + k);
+                    const int qx = x + k * dx;
+                    const int qy = y + k * dy;
+                    if (qx >= 0 && qx < w && qy >= 0 && qy < h) {
+                        s += taps[static_cast<std::size_t>(k + radius)] * in(qx, qy);
                     }
                 }
                 out(x, y) = s;
@@ -109,6 +98,11 @@ Image<double> blur(const Image<double>& in, const std::vector<double>& taps) {
         }
     });
     return out;
+}
+
+/// The separable Gaussian of `taps`: along x, then y.
+Image<double> blur(const Image<double>& in, const std::vector<double>& taps) {
+    return blurAxis(blurAxis(in, taps, 1, 0), taps, 0, 1);
 }
 
 }  // namespace
