@@ -2,11 +2,11 @@
 #include "ArtefactBenchmark.h"
 
 #include <cmath>
-#include <cstdio>
 #include <glm/trigonometric.hpp>
 #include <sstream>
 
 #include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
 #include "vv/render/DepthRasterizer.h"
 #include "vv/render/MeshStyle.h"
 #include "vv/vss/Shading.h"
@@ -81,16 +81,9 @@ std::string artefactTable(const std::vector<ArtefactRow>& rows) {
         << "|---|---:|---:|---:|---:|\n";
     const double first = rows.empty() ? 0.0 : rows.front().score.rms;
     for (const ArtefactRow& row : rows) {
-        char score[32];
-        char relative[32];
-        std::snprintf(score, sizeof score, "%.3f", row.score.rms * 1000.0);
-        if (first > 0.0) {
-            std::snprintf(relative, sizeof relative, "%.2f", row.score.rms / first);
-        } else {
-            std::snprintf(relative, sizeof relative, "-");
-        }
         out << "| " << row.label << " | " << row.triangles << " | " << row.score.bandPixels << " | "
-            << score << " | " << relative << " |\n";
+            << fixedText(row.score.rms * 1000.0, 3) << " | "
+            << (first > 0.0 ? fixedText(row.score.rms / first, 2) : std::string("-")) << " |\n";
     }
     return out.str();
 }

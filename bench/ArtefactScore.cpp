@@ -70,7 +70,8 @@ std::vector<double> gaussianTaps(double sigma) {
     const int radius = static_cast<int>(std::ceil(3.0 * sigma));
     std::vector<double> taps(static_cast<std::size_t>(2 * radius + 1));
     for (int i = -radius; i <= radius; ++i) {
-        taps[static_cast<std::size_t>(i + radius)] = std::exp(-0.5 * i * i / (sigma * sigma));
+        const int index = i + radius;
+        taps[static_cast<std::size_t>(index)] = std::exp(-0.5 * i * i / (sigma * sigma));
     }
     return taps;
 }
@@ -89,8 +90,9 @@ Image<double> blurAxis(const Image<double>& in, const std::vector<double>& taps,
                 for (int k = -radius; k <= radius; ++k) {
                     const int qx = x + k * dx;
                     const int qy = y + k * dy;
+                    const int index = k + radius;
                     if (qx >= 0 && qx < w && qy >= 0 && qy < h) {
-                        s += taps[static_cast<std::size_t>(k + radius)] * in(qx, qy);
+                        s += taps[static_cast<std::size_t>(index)] * in(qx, qy);
                     }
                 }
                 out(x, y) = s;
