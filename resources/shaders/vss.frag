@@ -43,9 +43,8 @@ const bool kQuickNormals = true;
 const bool kQuickNormals = false;
 #endif
 // Exact frames are built with SLOPE_TEXTURE defined when the solver's thread
-// fitted the slopes already (vss::fittedSlopes: the fit of fittedGradient
-// below, once per solve instead of every frame, with samples 3 px apart
-// within 6 px of a vessel where this file's fallback uses 2 px next to one):
+// fitted the slopes already (vss::fittedSlopes: the same fit as
+// fittedGradient below, once per solve instead of every frame):
 // uSlope = (dz'/dx, dz'/dy, support, coherence) on void pixels, the
 // coherence being Toksvig's length below (vss::addNormalCoherence).
 #ifdef SLOPE_TEXTURE
@@ -205,12 +204,13 @@ void main() {
         support = fitted.z;
 #else
         grad = fittedGradient(p, size, z, grad, 1, support);
-        if (support < 0.999) {
-            // Next to a contour the silhouette's pixel staircase ripples the
-            // nearest VSS pixels (dark specks along the edges under the
-            // light): fit over a window twice as wide there.
-            float wide = 1.0;
-            grad = fittedGradient(p, size, z, grad, 2, wide);
+        // Within 6 px of a contour the silhouette's pixel staircase ripples
+        // the VSS (teeth along the edges under the light): where the window
+        // of samples 3 px apart misses samples, its fit is taken.
+        float wide = 1.0;
+        vec2 wideGrad = fittedGradient(p, size, z, grad, 3, wide);
+        if (wide < 0.999) {
+            grad = wideGrad;
         }
 #endif
     }

@@ -156,7 +156,7 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
         diff(has(px, py - 1), has(px, py + 1), has(px, py - 1) ? height(px, py - 1) : 0.0, z,
              has(px, py + 1) ? height(px, py + 1) : 0.0));
     double support = 0.0;
-    for (int stride = 1; stride <= 2; ++stride) {
+    for (const int stride : {1, 3}) {
         double sw = 0, sx = 0, sy = 0, sh = 0, sxx = 0, sxy = 0, syy = 0, sxh = 0, syh = 0;
         double total = 0;
         for (int dy = -2; dy <= 2; ++dy) {
@@ -188,7 +188,8 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
         if (stride == 1) {
             support = sw / total;
         }
-        if (sw > 0) {
+        // The wide window only next to a contour: where it misses samples.
+        if (sw > 0 && (stride == 1 || sw / total < 0.999)) {
             const double cxx = sxx - sx * sx / sw;
             const double cxy = sxy - sx * sy / sw;
             const double cyy = syy - sy * sy / sw;
@@ -198,9 +199,6 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
             if (det >= 0.05 * std::max(cxx * cyy, 1e-12)) {
                 grad = {(cyy * cxh - cxy * cyh) / det, (cxx * cyh - cxy * cxh) / det};
             }
-        }
-        if (support >= 0.999) {
-            break;  // the wide window only next to a contour
         }
     }
     return glm::dvec3(grad, support);

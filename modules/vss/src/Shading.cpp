@@ -98,15 +98,16 @@ namespace {
 
 constexpr int kFitRadius = 2;  // a 5x5 window
 
-/// Within this many pixels (chessboard) of a vessel pixel the plane is fitted
-/// over samples kContourStride pixels apart: the silhouette's pixel steps
-/// ripple the VSS there (docs/benchmarks/artefacts.md).
-constexpr int kContourReach = 6;
+/// Next to contours the plane is fitted over samples kContourStride pixels
+/// apart (the silhouette's pixel steps ripple the VSS there:
+/// docs/benchmarks/artefacts.md); that window reaches kContourReach pixels.
 constexpr int kContourStride = 3;
+constexpr int kContourReach = kFitRadius * kContourStride;
 
-/// 1 where a vessel pixel lies within kContourReach pixels (chessboard), by
-/// running counts along rows, then along columns.
-Image<std::uint8_t> nearVessels(ImageView<const std::uint8_t> vessels) {
+/// 1 where a pixel that the fit cannot use (a vessel, no VSS) lies within
+/// kContourReach pixels (chessboard): only there can the wide window miss a
+/// sample. Running counts along rows, then along columns.
+Image<std::uint8_t> nearGaps(ImageView<const float> height, ImageView<const std::uint8_t> vessels) {
     const int w = vessels.width();
     const int h = vessels.height();
     const auto dilate = [](int n, const auto& in, const auto& out) {
@@ -129,7 +130,8 @@ Image<std::uint8_t> nearVessels(ImageView<const std::uint8_t> vessels) {
     parallelFor(0, h, 64, [&](long b, long e) {
         for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
             dilate(
-                w, [&](int x) { return vessels(x, y) != 0 ? 1 : 0; },
+                w,
+                [&](int x) { return vessels(x, y) != 0 || !std::isfinite(height(x, y)) ? 1 : 0; },
                 [&](int x, bool v) { rows(x, y) = v ? 1 : 0; });
         }
     });
@@ -191,11 +193,13 @@ bool fittable(ImageView<const float> height, ImageView<const std::uint8_t> vesse
 }
 
 /// The plane fit over the 5x5 window of samples `stride` pixels apart,
-/// summed directly (for the few pixels that need the wide window).
+/// summed directly (for the few pixels that need the wide window); `support`
+/// receives the window's support.
 std::optional<glm::dvec2> directSlope(ImageView<const float> height,
                                       ImageView<const std::uint8_t> vessels, int px, int py,
-                                      int stride) {
+                                      int stride, double& support) {
     PlaneMoments m;
+    double total = 0.0;
     for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
         const int y = py + dy * stride;
         if (y < 0 || y >= height.height()) {
@@ -203,11 +207,15 @@ std::optional<glm::dvec2> directSlope(ImageView<const float> height,
         }
         for (int dx = -kFitRadius; dx <= kFitRadius; ++dx) {
             const int x = px + dx * stride;
-            if (x < 0 || x >= height.width() || !fittable(height, vessels, x, y)) {
+            if (x < 0 || x >= height.width()) {
                 continue;
             }
             const double w = kFitTaps[static_cast<std::size_t>(dx + kFitRadius)] *
                              kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
+            total += w;
+            if (!fittable(height, vessels, x, y)) {
+                continue;
+            }
             const double ox = dx * stride;
             const double oy = dy * stride;
             const double hv = height(x, y);
@@ -222,6 +230,7 @@ std::optional<glm::dvec2> directSlope(ImageView<const float> height,
             m.syh += w * oy * hv;
         }
     }
+    support = total > 0.0 ? m.sw / total : 0.0;
     return planeSlope(m);
 }
 
@@ -304,7 +313,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
             }
         }
     }
-    const Image<std::uint8_t> nearContour = nearVessels(vessels);
+    const Image<std::uint8_t> nearContour = nearGaps(height, vessels);
     constexpr long kBand = 32;
     parallelFor(
         0, h, kBand,
@@ -418,8 +427,10 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                     }
                     if (nearContour(x, y) != 0) {
                         // Next to a contour: the wider window over the staircase.
-                        if (const std::optional<glm::dvec2> wide =
-                                directSlope(height, vessels, x, y, kContourStride)) {
+                        double wideSupport = 1.0;
+                        const std::optional<glm::dvec2> wide =
+                            directSlope(height, vessels, x, y, kContourStride, wideSupport);
+                        if (wide && wideSupport < 0.999) {
                             fit = wide;
                         }
                     }

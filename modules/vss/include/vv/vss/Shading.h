@@ -46,10 +46,11 @@ struct IsoLevel {
 /// exp(-(dx^2 + dy^2) / 4); vessel pixels never count, so the fit never
 /// reaches across a contour, where z' meets the vessel's depth). `support` is
 /// the weight of those pixels over the weight of the window's pixels inside
-/// the image (the border is no contour). Within 6 pixels (chessboard distance)
-/// of a vessel pixel the plane is fitted again over the same 5x5 window with
-/// samples three pixels apart, which smooths the ripples that the
-/// silhouette's pixel staircase leaves in z' there (the "teeth" along
+/// the image (the border is no contour). Where the same 5x5 window with
+/// samples three pixels apart has support < 0.999 (a vessel pixel or one
+/// without VSS among its samples: within 6 px of a contour) and determines a
+/// plane, that plane's slope is taken instead, which smooths the ripples that
+/// the silhouette's pixel staircase leaves in z' there (the "teeth" along
 /// contours, docs/benchmarks/artefacts.md). Where a fit is
 /// ill-conditioned (det < 0.05 of its diagonal product) or empty, the slope is
 /// the one-pixel difference (central where both neighbours have a VSS,
