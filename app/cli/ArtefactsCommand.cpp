@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // vesselview-cli artefacts [--mesh FILE]... [--triangles 10000,30000,60000]
 //                          [--size WxH] [--view far|medium|close] [--p P]
+//                          [--reference-scale 3|5|7|none]
 // The artefact score of the lit VSS along silhouettes (bench/ArtefactBenchmark.h)
 // of the demo tree, its decimated copies and the given meshes, as a Markdown
 // table (docs/benchmarks/artefacts.md).
@@ -28,6 +29,7 @@ struct ArtefactsArguments {
     std::optional<std::pair<int, int>> size;
     render::ViewPreset view = render::ViewPreset::Close;
     double p = 2.0;
+    int referenceScale = 3;
 };
 
 ArtefactsArguments parse(const std::vector<std::string>& args) {
@@ -60,6 +62,13 @@ ArtefactsArguments parse(const std::vector<std::string>& args) {
             if (!(parsed.p >= 0.25 && parsed.p <= 64.0)) {
                 throw UsageError("artefacts: --p must be in 0.25..64");
             }
+        } else if (a == "--reference-scale") {
+            const std::string value = arg.value();
+            parsed.referenceScale =
+                value == "none" ? 0 : parseWholeNumber(value, "artefacts: --reference-scale", 3, 7);
+            if (parsed.referenceScale != 0 && parsed.referenceScale % 2 == 0) {
+                throw UsageError("artefacts: --reference-scale must be 3, 5, 7 or none");
+            }
         } else {
             arg.fail("unknown argument '" + arg.current() + "'");
         }
@@ -78,6 +87,7 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
     }
     options.view = parsed.view;
     options.p = parsed.p;
+    options.referenceScale = parsed.referenceScale;
 
     err << "artefacts: generating the demo vessel tree\n" << std::flush;
     std::vector<bench::ArtefactCase> cases;
@@ -97,7 +107,12 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
     const std::vector<bench::ArtefactRow> rows = bench::runArtefactBenchmark(cases, options);
     out << "View " << render::toString(options.view) << ", " << options.width << "x"
         << options.height << ", p = " << options.p
-        << ", lighting on (headlight), AO off; all meshes through the demo's camera.\n\n"
+        << ", lighting on (headlight), AO off; all meshes through the demo's camera; "
+        << (options.referenceScale == 0
+                ? std::string("no reference")
+                : "reference: the same view at " + std::to_string(options.referenceScale) +
+                      "x the size, z' sampled at the pixel centres")
+        << ".\n\n"
         << bench::artefactTable(rows);
     return kOk;
 }
