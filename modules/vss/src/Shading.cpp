@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
 #include <limits>
 #include <optional>
 #include <string>
@@ -99,10 +100,12 @@ namespace {
 constexpr int kFitRadius = 2;  // a 5x5 window
 
 /// Next to contours the plane is fitted over samples kContourStride pixels
-/// apart (the silhouette's pixel steps ripple the VSS there:
+/// apart, each the mean over kSampleRadius pixels around it (the
+/// silhouette's pixel steps ripple the VSS there:
 /// docs/benchmarks/artefacts.md); that window reaches kContourReach pixels.
-constexpr int kContourStride = 3;
+constexpr int kContourStride = 4;
 constexpr int kContourReach = kFitRadius * kContourStride;
+constexpr int kSampleRadius = 2;
 
 /// 1 where a pixel that the fit cannot use (a vessel, no VSS) lies within
 /// kContourReach pixels (chessboard): only there can the wide window miss a
@@ -192,33 +195,78 @@ bool fittable(ImageView<const float> height, ImageView<const std::uint8_t> vesse
     return vessels(x, y) == 0 && std::isfinite(height(x, y));
 }
 
-/// The plane fit over the 5x5 window of samples `stride` pixels apart,
-/// summed directly (for the few pixels that need the wide window); `support`
+/// The fit's samples next to contours: for every fittable pixel, the mean
+/// offset (x, y) and height (z) of the fittable pixels within kSampleRadius
+/// (chessboard) around it; NaN elsewhere. A sample sits at its pixels'
+/// centroid, so a plane stays exact where vessels cut its square off.
+/// Separable sums.
+Image<glm::vec3> smoothedSamples(ImageView<const float> height,
+                                 ImageView<const std::uint8_t> vessels) {
+    const int w = height.width();
+    const int h = height.height();
+    Image<glm::dvec4> rows(w, h, glm::dvec4(0.0));  // sums of (x offset, 0, z, 1) along the row
+    parallelFor(0, h, 64, [&](long b, long e) {
+        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
+            for (int x = 0; x < w; ++x) {
+                glm::dvec4 sum(0.0);
+                for (int i = std::max(0, x - kSampleRadius);
+                     i <= std::min(w - 1, x + kSampleRadius); ++i) {
+                    if (fittable(height, vessels, i, y)) {
+                        sum += glm::dvec4(i - x, 0.0, height(i, y), 1.0);
+                    }
+                }
+                rows(x, y) = sum;
+            }
+        }
+    });
+    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+    Image<glm::vec3> samples(w, h, glm::vec3(kNaN));
+    parallelFor(0, h, 64, [&](long b, long e) {
+        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
+            for (int x = 0; x < w; ++x) {
+                if (!fittable(height, vessels, x, y)) {
+                    continue;
+                }
+                glm::dvec4 sum(0.0);
+                for (int j = std::max(0, y - kSampleRadius);
+                     j <= std::min(h - 1, y + kSampleRadius); ++j) {
+                    const glm::dvec4 r = rows(x, j);
+                    sum += glm::dvec4(r.x, r.w * (j - y), r.z, r.w);
+                }
+                samples(x, y) = glm::vec3(sum.x / sum.w, sum.y / sum.w, sum.z / sum.w);
+            }
+        }
+    });
+    return samples;
+}
+
+/// The plane fit over the 5x5 window of `samples` (smoothedSamples) `stride`
+/// pixels apart, summed directly (for the few pixels that need the wide window); `support`
 /// receives the window's support.
-std::optional<glm::dvec2> directSlope(ImageView<const float> height,
-                                      ImageView<const std::uint8_t> vessels, int px, int py,
+std::optional<glm::dvec2> directSlope(ImageView<const glm::vec3> samples, int px, int py,
                                       int stride, double& support) {
     PlaneMoments m;
     double total = 0.0;
     for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
         const int y = py + dy * stride;
-        if (y < 0 || y >= height.height()) {
+        if (y < 0 || y >= samples.height()) {
             continue;
         }
         for (int dx = -kFitRadius; dx <= kFitRadius; ++dx) {
             const int x = px + dx * stride;
-            if (x < 0 || x >= height.width()) {
+            if (x < 0 || x >= samples.width()) {
                 continue;
             }
             const double w = kFitTaps[static_cast<std::size_t>(dx + kFitRadius)] *
                              kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
             total += w;
-            if (!fittable(height, vessels, x, y)) {
-                continue;
+            const glm::vec3 q = samples(x, y);
+            if (!std::isfinite(q.z)) {
+                continue;  // not fittable
             }
-            const double ox = dx * stride;
-            const double oy = dy * stride;
-            const double hv = height(x, y);
+            const double ox = dx * stride + static_cast<double>(q.x);
+            const double oy = dy * stride + static_cast<double>(q.y);
+            const double hv = q.z;
             m.sw += w;
             m.sx += w * ox;
             m.sy += w * oy;
@@ -314,6 +362,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
         }
     }
     const Image<std::uint8_t> nearContour = nearGaps(height, vessels);
+    const Image<glm::vec3> samples = smoothedSamples(height, vessels);
     constexpr long kBand = 32;
     parallelFor(
         0, h, kBand,
@@ -429,7 +478,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                         // Next to a contour: the wider window over the staircase.
                         double wideSupport = 1.0;
                         const std::optional<glm::dvec2> wide =
-                            directSlope(height, vessels, x, y, kContourStride, wideSupport);
+                            directSlope(samples.view(), x, y, kContourStride, wideSupport);
                         if (wide && wideSupport < 0.999) {
                             fit = wide;
                         }
