@@ -204,36 +204,72 @@ Image<glm::vec3> smoothedSamples(ImageView<const float> height,
                                  ImageView<const std::uint8_t> vessels) {
     const int w = height.width();
     const int h = height.height();
-    Image<glm::dvec4> rows(w, h, glm::dvec4(0.0));  // sums of (x offset, 0, z, 1) along the row
+    const auto uw = static_cast<std::size_t>(w);
+    // Per row, over x - r .. x + r: the count, the sum of the x offsets and
+    // the sum of the heights of the fittable pixels (float: the counts and
+    // offsets are small integers, the heights in [0, 1]).
+    Image<float> count(w, h, 0.0F);
+    Image<float> offsetX(w, h, 0.0F);
+    Image<float> sumZ(w, h, 0.0F);
     parallelFor(0, h, 64, [&](long b, long e) {
+        std::vector<float> m(uw + 2 * kSampleRadius, 0.0F);
+        std::vector<float> mh(uw + 2 * kSampleRadius, 0.0F);
         for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
             for (int x = 0; x < w; ++x) {
-                glm::dvec4 sum(0.0);
-                for (int i = std::max(0, x - kSampleRadius);
-                     i <= std::min(w - 1, x + kSampleRadius); ++i) {
-                    if (fittable(height, vessels, i, y)) {
-                        sum += glm::dvec4(i - x, 0.0, height(i, y), 1.0);
-                    }
+                const bool fit = fittable(height, vessels, x, y);
+                m[static_cast<std::size_t>(x + kSampleRadius)] = fit ? 1.0F : 0.0F;
+                mh[static_cast<std::size_t>(x + kSampleRadius)] = fit ? height(x, y) : 0.0F;
+            }
+            float* c = count.row(y);
+            float* ox = offsetX.row(y);
+            float* z = sumZ.row(y);
+            for (std::size_t x = 0; x < uw; ++x) {
+                float sc = 0.0F;
+                float so = 0.0F;
+                float sz = 0.0F;
+                for (int k = 0; k <= 2 * kSampleRadius; ++k) {
+                    const float mk = m[x + static_cast<std::size_t>(k)];
+                    sc += mk;
+                    so += mk * static_cast<float>(k - kSampleRadius);
+                    sz += mh[x + static_cast<std::size_t>(k)];
                 }
-                rows(x, y) = sum;
+                c[x] = sc;
+                ox[x] = so;
+                z[x] = sz;
             }
         }
     });
     constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
     Image<glm::vec3> samples(w, h, glm::vec3(kNaN));
     parallelFor(0, h, 64, [&](long b, long e) {
+        std::vector<float> sc(uw);
+        std::vector<float> sx(uw);
+        std::vector<float> sy(uw);
+        std::vector<float> sz(uw);
         for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
+            std::fill(sc.begin(), sc.end(), 0.0F);
+            std::fill(sx.begin(), sx.end(), 0.0F);
+            std::fill(sy.begin(), sy.end(), 0.0F);
+            std::fill(sz.begin(), sz.end(), 0.0F);
+            for (int j = std::max(0, y - kSampleRadius); j <= std::min(h - 1, y + kSampleRadius);
+                 ++j) {
+                const float dy = static_cast<float>(j - y);
+                const float* c = count.row(j);
+                const float* ox = offsetX.row(j);
+                const float* z = sumZ.row(j);
+                for (std::size_t x = 0; x < uw; ++x) {
+                    sc[x] += c[x];
+                    sx[x] += ox[x];
+                    sy[x] += c[x] * dy;
+                    sz[x] += z[x];
+                }
+            }
+            glm::vec3* out = samples.row(y);
             for (int x = 0; x < w; ++x) {
-                if (!fittable(height, vessels, x, y)) {
-                    continue;
+                if (fittable(height, vessels, x, y)) {
+                    const auto i = static_cast<std::size_t>(x);
+                    out[x] = glm::vec3(sx[i], sy[i], sz[i]) / sc[i];
                 }
-                glm::dvec4 sum(0.0);
-                for (int j = std::max(0, y - kSampleRadius);
-                     j <= std::min(h - 1, y + kSampleRadius); ++j) {
-                    const glm::dvec4 r = rows(x, j);
-                    sum += glm::dvec4(r.x, r.w * (j - y), r.z, r.w);
-                }
-                samples(x, y) = glm::vec3(sum.x / sum.w, sum.y / sum.w, sum.z / sum.w);
             }
         }
     });
