@@ -108,23 +108,24 @@ constexpr int kContourReach = kFitRadius * kContourStride;
 constexpr int kSampleRadius = 2;
 
 /// 1 where a pixel that the fit cannot use (a vessel, no VSS) lies within
-/// kContourReach pixels (chessboard): only there can the wide window miss a
-/// sample. Running counts along rows, then along columns.
-Image<std::uint8_t> nearGaps(ImageView<const float> height, ImageView<const std::uint8_t> vessels) {
+/// `reach` pixels (chessboard); with kContourReach: where the wide window can
+/// miss a sample. Running counts along rows, then along columns.
+Image<std::uint8_t> nearGaps(ImageView<const float> height, ImageView<const std::uint8_t> vessels,
+                             int reach = kContourReach) {
     const int w = vessels.width();
     const int h = vessels.height();
-    const auto dilate = [](int n, const auto& in, const auto& out) {
+    const auto dilate = [reach](int n, const auto& in, const auto& out) {
         int count = 0;  // in() over [i - reach, i + reach]
-        for (int i = 0; i < std::min(n, kContourReach); ++i) {
+        for (int i = 0; i < std::min(n, reach); ++i) {
             count += in(i);
         }
         for (int i = 0; i < n; ++i) {
-            if (i + kContourReach < n) {
-                count += in(i + kContourReach);
+            if (i + reach < n) {
+                count += in(i + reach);
             }
             out(i, count > 0);
-            if (i - kContourReach >= 0) {
-                count -= in(i - kContourReach);
+            if (i - reach >= 0) {
+                count -= in(i - reach);
             }
         }
     };
@@ -199,9 +200,11 @@ bool fittable(ImageView<const float> height, ImageView<const std::uint8_t> vesse
 /// offset (x, y) and height (z) of the fittable pixels within kSampleRadius
 /// (chessboard) around it; NaN elsewhere. A sample sits at its pixels'
 /// centroid, so a plane stays exact where vessels cut its square off.
-/// Separable sums.
+/// Separable sums, taken only where `zone` is set; the result is valid
+/// where the zone covers the kSampleRadius rows above and below.
 Image<glm::vec3> smoothedSamples(ImageView<const float> height,
-                                 ImageView<const std::uint8_t> vessels) {
+                                 ImageView<const std::uint8_t> vessels,
+                                 ImageView<const std::uint8_t> zone) {
     const int w = height.width();
     const int h = height.height();
     const auto uw = static_cast<std::size_t>(w);
@@ -215,15 +218,24 @@ Image<glm::vec3> smoothedSamples(ImageView<const float> height,
         std::vector<float> m(uw + 2 * kSampleRadius, 0.0F);
         std::vector<float> mh(uw + 2 * kSampleRadius, 0.0F);
         for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
+            bool any = false;
             for (int x = 0; x < w; ++x) {
+                any = any || zone(x, y) != 0;
                 const bool fit = fittable(height, vessels, x, y);
                 m[static_cast<std::size_t>(x + kSampleRadius)] = fit ? 1.0F : 0.0F;
                 mh[static_cast<std::size_t>(x + kSampleRadius)] = fit ? height(x, y) : 0.0F;
             }
+            if (!any) {
+                continue;
+            }
             float* c = count.row(y);
             float* ox = offsetX.row(y);
             float* z = sumZ.row(y);
+            const std::uint8_t* in = zone.row(y);
             for (std::size_t x = 0; x < uw; ++x) {
+                if (in[x] == 0) {
+                    continue;
+                }
                 float sc = 0.0F;
                 float so = 0.0F;
                 float sz = 0.0F;
@@ -265,8 +277,9 @@ Image<glm::vec3> smoothedSamples(ImageView<const float> height,
                 }
             }
             glm::vec3* out = samples.row(y);
+            const std::uint8_t* in = zone.row(y);
             for (int x = 0; x < w; ++x) {
-                if (fittable(height, vessels, x, y)) {
+                if (in[x] != 0 && fittable(height, vessels, x, y)) {
                     const auto i = static_cast<std::size_t>(x);
                     out[x] = glm::vec3(sx[i], sy[i], sz[i]) / sc[i];
                 }
@@ -398,7 +411,10 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
         }
     }
     const Image<std::uint8_t> nearContour = nearGaps(height, vessels);
-    const Image<glm::vec3> samples = smoothedSamples(height, vessels);
+    // The wide fit reads samples up to kContourReach from a pixel near a
+    // contour; their means reach kSampleRadius rows further.
+    const Image<glm::vec3> samples = smoothedSamples(
+        height, vessels, nearGaps(height, vessels, 2 * kContourReach + kSampleRadius).view());
     constexpr long kBand = 32;
     parallelFor(
         0, h, kBand,
