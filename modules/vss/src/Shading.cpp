@@ -215,15 +215,17 @@ Image<glm::vec3> smoothedSamples(ImageView<const float> height,
     Image<float> offsetX(w, h, 0.0F);
     Image<float> sumZ(w, h, 0.0F);
     parallelFor(0, h, 64, [&](long b, long e) {
-        std::vector<float> m(uw + 2 * kSampleRadius, 0.0F);
-        std::vector<float> mh(uw + 2 * kSampleRadius, 0.0F);
+        constexpr std::size_t kRadius = kSampleRadius;
+        std::vector<float> m(uw + 2 * kRadius, 0.0F);
+        std::vector<float> mh(uw + 2 * kRadius, 0.0F);
         for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
             bool any = false;
             for (int x = 0; x < w; ++x) {
                 any = any || zone(x, y) != 0;
                 const bool fit = fittable(height, vessels, x, y);
-                m[static_cast<std::size_t>(x + kSampleRadius)] = fit ? 1.0F : 0.0F;
-                mh[static_cast<std::size_t>(x + kSampleRadius)] = fit ? height(x, y) : 0.0F;
+                const auto i = static_cast<std::size_t>(x) + kRadius;
+                m[i] = fit ? 1.0F : 0.0F;
+                mh[i] = fit ? height(x, y) : 0.0F;
             }
             if (!any) {
                 continue;
@@ -265,7 +267,7 @@ Image<glm::vec3> smoothedSamples(ImageView<const float> height,
             std::fill(sz.begin(), sz.end(), 0.0F);
             for (int j = std::max(0, y - kSampleRadius); j <= std::min(h - 1, y + kSampleRadius);
                  ++j) {
-                const float dy = static_cast<float>(j - y);
+                const auto dy = static_cast<float>(j - y);
                 const float* c = count.row(j);
                 const float* ox = offsetX.row(j);
                 const float* z = sumZ.row(j);
