@@ -89,6 +89,12 @@ constexpr const char* kUsageText =
     "                                       VSS solvers: error against run time (Markdown\n"
     "                                       table; DIR/vss.csv, vss-table.md,\n"
     "                                       vss-error-vs-time.png; demo tree by default)\n"
+    "  artefacts [--mesh FILE]... [--triangles 10000,30000,60000|none] [--size WxH]\n"
+    "            [--view far|medium|close] [--p P] [--reference-scale 3|5|7|none]\n"
+    "                                       lit VSS: artefact score along silhouettes of the\n"
+    "                                       demo tree, its decimated copies and FILEs, and\n"
+    "                                       of the same view supersampled (default 3x)\n"
+    "                                       (Markdown table)\n"
     "  --version, --help\n"
     "\n"
     "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input\n"
@@ -189,6 +195,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "bench") {
             return benchCommand(rest, out, err);
+        }
+        if (command == "artefacts") {
+            return artefactsCommand(rest, out, err);
         }
         if (command == "soak") {  // hidden: scripts/soak (SoakCommand.cpp)
             return soakCommand(rest, out, err);

@@ -38,6 +38,7 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 /// Thrown when an output file cannot be written; maps to kCannotWrite.
 class OutputError : public std::exception {

@@ -85,12 +85,36 @@ bool isVessel(ivec2 p) {
     return texelFetch(uLinearDepth, p, 0).r < 1e30;
 }
 
+// The mean offset (x, y) and z' of the VSS (non-vessel) pixels within
+// `radius` (chessboard) of q, a VSS pixel itself: vss::fittedSlopes' samples
+// next to contours, each at its pixels' centroid.
+vec3 meanSample(ivec2 q, ivec2 size, int radius) {
+    vec3 sum = vec3(0.0);
+    float count = 0.0;
+    for (int j = -radius; j <= radius; ++j) {
+        for (int i = -radius; i <= radius; ++i) {
+            ivec2 r = q + ivec2(i, j);
+            if (r.x < 0 || r.y < 0 || r.x >= size.x || r.y >= size.y) {
+                continue;
+            }
+            float hr = heightAt(r, size);
+            if (hasVss(hr) && !isVessel(r)) {
+                sum += vec3(float(i), float(j), hr);
+                count += 1.0;
+            }
+        }
+    }
+    return sum / count;
+}
+
 // dz'/dx, dz'/dy per pixel: a weighted least-squares plane (offset and
 // slope, so the centre's own value does not pin it) through the VSS pixels of
-// a 5x5 window of samples `stride` pixels apart (Gaussian weights in samples);
-// `support` = the weight of those pixels over the whole window's. Falls back
-// to `fallback` when they do not determine a plane.
-vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, int stride, out float support) {
+// a 5x5 window of samples `stride` pixels apart (Gaussian weights in samples),
+// each sample the mean of the VSS pixels within `radius` (chessboard) around
+// it (meanSample; radius 0: the pixel); `support` = the weight of those pixels over the
+// whole window's. Falls back to `fallback` when they do not determine a plane.
+vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, int stride, int radius,
+                    out float support) {
     float sw = 0.0;
     float sx = 0.0;
     float sy = 0.0;
@@ -113,8 +137,14 @@ vec2 fittedGradient(ivec2 p, ivec2 size, float z, vec2 fallback, int stride, out
             if (!hasVss(hq) || isVessel(q)) {
                 continue;
             }
-            float x = float(dx * stride);
-            float y = float(dy * stride);
+            vec2 offset = vec2(0.0);
+            if (radius > 0) {
+                vec3 m = meanSample(q, size, radius);
+                offset = m.xy;
+                hq = m.z;
+            }
+            float x = float(dx * stride) + offset.x;
+            float y = float(dy * stride) + offset.y;
             float dh = hq - z;
             sw += w;
             sx += w * x;
@@ -203,13 +233,15 @@ void main() {
         grad = fitted.xy;
         support = fitted.z;
 #else
-        grad = fittedGradient(p, size, z, grad, 1, support);
-        if (support < 0.999) {
-            // Next to a contour the silhouette's pixel staircase ripples the
-            // nearest VSS pixels (dark specks along the edges under the
-            // light): fit over a window twice as wide there.
-            float wide = 1.0;
-            grad = fittedGradient(p, size, z, grad, 2, wide);
+        grad = fittedGradient(p, size, z, grad, 1, 0, support);
+        // Within 8 px of a contour the silhouette's pixel staircase ripples
+        // the VSS (teeth along the edges under the light): where the window
+        // of samples 4 px apart misses samples, its fit is taken, each
+        // sample the mean over 5x5 pixels.
+        float wide = 1.0;
+        fittedGradient(p, size, z, grad, 4, 0, wide);
+        if (wide < 0.999) {
+            grad = fittedGradient(p, size, z, grad, 4, 2, wide);
         }
 #endif
     }

@@ -155,8 +155,27 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
              has(px + 1, py) ? height(px + 1, py) : 0.0),
         diff(has(px, py - 1), has(px, py + 1), has(px, py - 1) ? height(px, py - 1) : 0.0, z,
              has(px, py + 1) ? height(px, py + 1) : 0.0));
+    const auto fits = [&](int x, int y) { return has(x, y) && vessels(x, y) == 0; };
+    // Next to contours each sample is the mean offset and height of the
+    // fittable pixels among the 5x5 around it.
+    const auto sample = [&](int qx, int qy, int stride) {
+        if (stride == 1) {
+            return glm::dvec3(0.0, 0.0, height(qx, qy));
+        }
+        glm::dvec3 sum(0.0);
+        int count = 0;
+        for (int j = -2; j <= 2; ++j) {
+            for (int i = -2; i <= 2; ++i) {
+                if (fits(qx + i, qy + j)) {
+                    sum += glm::dvec3(i, j, height(qx + i, qy + j));
+                    ++count;
+                }
+            }
+        }
+        return sum / static_cast<double>(count);
+    };
     double support = 0.0;
-    for (int stride = 1; stride <= 2; ++stride) {
+    for (const int stride : {1, 4}) {
         double sw = 0, sx = 0, sy = 0, sh = 0, sxx = 0, sxy = 0, syy = 0, sxh = 0, syh = 0;
         double total = 0;
         for (int dy = -2; dy <= 2; ++dy) {
@@ -171,9 +190,10 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
                 if (!std::isfinite(height(qx, qy)) || vessels(qx, qy) != 0) {
                     continue;
                 }
-                const double x = dx * stride;
-                const double y = dy * stride;
-                const double d = height(qx, qy) - z;
+                const glm::dvec3 q = sample(qx, qy, stride);
+                const double x = dx * stride + q.x;
+                const double y = dy * stride + q.y;
+                const double d = q.z - z;
                 sw += wt;
                 sx += wt * x;
                 sy += wt * y;
@@ -188,7 +208,8 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
         if (stride == 1) {
             support = sw / total;
         }
-        if (sw > 0) {
+        // The wide window only next to a contour: where it misses samples.
+        if (sw > 0 && (stride == 1 || sw / total < 0.999)) {
             const double cxx = sxx - sx * sx / sw;
             const double cxy = sxy - sx * sy / sw;
             const double cyy = syy - sy * sy / sw;
@@ -198,9 +219,6 @@ glm::dvec3 referenceSlope(const Image<float>& height, const Image<std::uint8_t>&
             if (det >= 0.05 * std::max(cxx * cyy, 1e-12)) {
                 grad = {(cyy * cxh - cxy * cyh) / det, (cxx * cyh - cxy * cxh) / det};
             }
-        }
-        if (support >= 0.999) {
-            break;  // the wide window only next to a contour
         }
     }
     return glm::dvec3(grad, support);

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// vesselview-cli vss, through vv::cli::run.
+// vesselview-cli vss and artefacts, through vv::cli::run.
 #include <gtest/gtest.h>
 
 #include <QImage>
@@ -197,6 +197,38 @@ TEST(VssCliTest, UnwritableOutputExitsFour) {
 TEST(VssCliTest, UsageMentionsVss) {
     const auto r = runCli({"--help"});
     EXPECT_NE(r.out.find("vss --depth"), std::string::npos);
+}
+
+// vesselview-cli artefacts (bench/ArtefactBenchmark.h).
+TEST(ArtefactsCliTest, PrintsOneRowPerMesh) {
+    const Outcome o = runCli({"artefacts", "--size", "160x90", "--triangles", "20000"});
+    ASSERT_EQ(o.code, kOk) << o.err;
+    EXPECT_NE(o.out.find("View close, 160x90, p = 2"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("| demo (smooth control) | 300884 | "), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("| 1.00 |"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("| demo decimated to 20000 | "), std::string::npos) << o.out;
+    // The reference (3x by default) and the score over it.
+    EXPECT_NE(o.out.find("reference: the same view at 3x the size"), std::string::npos) << o.out;
+    EXPECT_NE(o.out.find("| score / reference |"), std::string::npos) << o.out;
+    EXPECT_EQ(o.out.find("| - | - |"), std::string::npos) << o.out;
+    const Outcome none = runCli(
+        {"artefacts", "--size", "160x90", "--triangles", "none", "--reference-scale", "none"});
+    ASSERT_EQ(none.code, kOk) << none.err;
+    EXPECT_NE(none.out.find("no reference"), std::string::npos) << none.out;
+    EXPECT_NE(none.out.find("| - | - | 1.00 |"), std::string::npos) << none.out;
+}
+
+TEST(ArtefactsCliTest, RejectsBadOptions) {
+    EXPECT_EQ(runCli({"artefacts", "--view", "sideways"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--p", "0"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--triangles", "2"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--bogus"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--reference-scale", "4"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--reference-scale", "9"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--mesh", "/nonexistent/tree.stl", "--triangles", "none",
+                      "--size", "32x32"})
+                  .code,
+              kInvalidInput);
 }
 
 }  // namespace

@@ -46,9 +46,14 @@ struct IsoLevel {
 /// exp(-(dx^2 + dy^2) / 4); vessel pixels never count, so the fit never
 /// reaches across a contour, where z' meets the vessel's depth). `support` is
 /// the weight of those pixels over the weight of the window's pixels inside
-/// the image (the border is no contour). Where support < 0.999 (next to a
-/// contour) the plane is fitted again over the same window with samples two
-/// pixels apart, which smooths the silhouette's staircase. Where a fit is
+/// the image (the border is no contour). Where the same 5x5 window with
+/// samples four pixels apart has support < 0.999 (a vessel pixel or one
+/// without VSS among its samples: within 8 px of a contour), its fit is taken
+/// instead where it determines a plane, each of its samples being the mean
+/// offset and z' of the void VSS pixels among the 5x5 around it (the sample
+/// sits at their centroid, so a plane stays exact): this smooths the ripples
+/// that the silhouette's pixel staircase leaves in z' there (the "teeth"
+/// along contours, docs/benchmarks/artefacts.md). Where a fit is
 /// ill-conditioned (det < 0.05 of its diagonal product) or empty, the slope is
 /// the one-pixel difference (central where both neighbours have a VSS,
 /// one-sided where one has, 0 where none has; vessel pixels count here).

@@ -1,0 +1,171 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "ArtefactBenchmark.h"
+
+#include <cmath>
+#include <glm/trigonometric.hpp>
+#include <sstream>
+
+#include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
+#include "vv/render/DepthRasterizer.h"
+#include "vv/render/MeshStyle.h"
+#include "vv/vss/Shading.h"
+#include "vv/vss/Vss.h"
+
+namespace vv::bench {
+
+namespace {
+
+constexpr int kMaxReferenceScale = 7;
+
+/// The exact viewer frame's VSS of `scene` through `camera` (fast solver at
+/// power p), over `range`, and what its lighting needs.
+struct SolvedView {
+    Image<std::uint8_t> vessels;
+    vss::VssResult vss;
+    double pixelScale = 0.0;
+};
+
+SolvedView solveView(const scene::Scene& scene, const render::Camera& camera, double p,
+                     const vss::DepthRange& range, const std::stop_token& stop) {
+    const Image<float> depth = render::rasterizeDepth(scene, camera, stop);
+    SolvedView view;
+    view.vessels = Image<std::uint8_t>(depth.width(), depth.height(), 0);
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            view.vessels(x, y) = std::isfinite(depth(x, y)) ? 1 : 0;
+        }
+    }
+    vss::VssOptions options;
+    options.solver.p = p;
+    options.range = range;
+    options.stop = stop;
+    view.vss = vss::solve(depth.view(), view.vessels.view(), options);
+    view.pixelScale = 2.0 *
+                      std::tan(glm::radians(static_cast<double>(camera.fieldOfView())) * 0.5) /
+                      depth.height();
+    return view;
+}
+
+/// vss::fittedSlopes, vss::addNormalCoherence and vssLuminance of `height`
+/// (z' over the range of `view`) under the headlight.
+Image<float> lightVss(const SolvedView& view, ImageView<const float> height,
+                      const std::stop_token& stop) {
+    Image<glm::vec4> slopes = vss::fittedSlopes(height, view.vessels.view(), stop);
+    VssLight light;
+    light.dmin = view.vss.dmin;
+    light.dmax = view.vss.dmax;
+    light.pixelScale = view.pixelScale;
+    vss::addNormalCoherence(slopes, height, view.vessels.view(),
+                            {view.vss.dmin, view.vss.dmax, light.pixelScale});
+    const render::Lighting& sceneLight = render::sceneLighting();
+    light.lightX = sceneLight.direction.x;
+    light.lightY = sceneLight.direction.y;
+    light.lightZ = sceneLight.direction.z;
+    light.ambient = sceneLight.ambient;
+    light.diffuse = sceneLight.diffuse;
+    light.specular = sceneLight.specular;
+    light.shininess = sceneLight.shininess;
+    return vssLuminance(height, slopes.view(), view.vessels.view(), light);
+}
+
+}  // namespace
+
+LitVss litVss(const scene::Scene& scene, const render::Camera& camera, double p,
+              const std::stop_token& stop) {
+    SolvedView view = solveView(scene, camera, p, {}, stop);
+    LitVss lit;
+    lit.luminance = lightVss(view, view.vss.height.view(), stop);
+    lit.vessels = std::move(view.vessels);
+    return lit;
+}
+
+LitVss referenceLitVss(const scene::Scene& scene, const render::Camera& camera, double p, int scale,
+                       const std::stop_token& stop) {
+    if (scale < 1 || scale % 2 == 0) {
+        throw InvalidArgumentError("referenceLitVss: the scale must be odd and >= 1, got " +
+                                   std::to_string(scale));
+    }
+    SolvedView view = solveView(scene, camera, p, {}, stop);
+    render::Camera fineCamera = camera;
+    fineCamera.setViewport(camera.viewportWidth() * scale, camera.viewportHeight() * scale);
+    vss::DepthRange range;
+    range.mode = vss::RangeMode::Fixed;
+    range.dmin = view.vss.dmin;
+    range.dmax = view.vss.dmax;
+    const SolvedView fine = solveView(scene, fineCamera, p, range, stop);
+    // z' at every void pixel's centre from the fine solve: the centre of
+    // fine pixel (s x + s / 2, s y + s / 2) is that of pixel (x, y).
+    Image<float> height = view.vss.height;
+    for (int y = 0; y < height.height(); ++y) {
+        for (int x = 0; x < height.width(); ++x) {
+            const int fx = scale * x + scale / 2;
+            const int fy = scale * y + scale / 2;
+            if (view.vessels(x, y) == 0 && fine.vessels(fx, fy) == 0) {
+                height(x, y) = fine.vss.height(fx, fy);
+            }
+        }
+    }
+    LitVss lit;
+    lit.luminance = lightVss(view, height.view(), stop);
+    lit.vessels = std::move(view.vessels);
+    return lit;
+}
+
+std::vector<ArtefactRow> runArtefactBenchmark(const std::vector<ArtefactCase>& cases,
+                                              const ArtefactBenchmarkOptions& options) {
+    if (cases.empty()) {
+        throw InvalidArgumentError("runArtefactBenchmark: no case");
+    }
+    if (options.width < 1 || options.height < 1 || options.width > 8192 || options.height > 8192 ||
+        !(options.p > 0.0) || !std::isfinite(options.p) ||
+        (options.referenceScale != 0 &&
+         (options.referenceScale < 3 || options.referenceScale > kMaxReferenceScale ||
+          options.referenceScale % 2 == 0))) {
+        throw InvalidArgumentError(
+            "runArtefactBenchmark: needs a size of 1..8192 each, a finite p > 0 and a "
+            "reference scale of 0, 3, 5 or 7");
+    }
+    const render::Camera camera =
+        render::presetCamera(cases.front().scene, options.width, options.height, options.view);
+    std::vector<ArtefactRow> rows;
+    for (const ArtefactCase& c : cases) {
+        const LitVss lit = litVss(c.scene, camera, options.p, options.stop);
+        ArtefactRow row;
+        row.label = c.label;
+        for (const scene::Mesh& mesh : c.scene.meshes) {
+            row.triangles += mesh.triangleCount();
+        }
+        row.score = artefactScore(lit.luminance.view(), lit.vessels.view(), options.score);
+        if (options.referenceScale != 0) {
+            const LitVss reference =
+                referenceLitVss(c.scene, camera, options.p, options.referenceScale, options.stop);
+            row.reference =
+                artefactScore(reference.luminance.view(), reference.vessels.view(), options.score);
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+std::string artefactTable(const std::vector<ArtefactRow>& rows) {
+    std::ostringstream out;
+    out << "| mesh | triangles | band pixels | score (1/1000) | reference (1/1000) | "
+           "score / reference | relative to the first |\n"
+        << "|---|---:|---:|---:|---:|---:|---:|\n";
+    const double first = rows.empty() ? 0.0 : rows.front().score.rms;
+    const auto ratio = [](double a, double b) {
+        return b > 0.0 ? fixedText(a / b, 2) : std::string("-");
+    };
+    for (const ArtefactRow& row : rows) {
+        const bool referenced = row.reference.bandPixels > 0;
+        out << "| " << row.label << " | " << row.triangles << " | " << row.score.bandPixels << " | "
+            << fixedText(row.score.rms * 1000.0, 3) << " | "
+            << (referenced ? fixedText(row.reference.rms * 1000.0, 3) : std::string("-")) << " | "
+            << (referenced ? ratio(row.score.rms, row.reference.rms) : std::string("-")) << " | "
+            << ratio(row.score.rms, first) << " |\n";
+    }
+    return out.str();
+}
+
+}  // namespace vv::bench

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Artefacts of the lit VSS along silhouettes (issue 19, part 1): the
+// artefact score (ArtefactScore.h) of several meshes in one view, as a
+// Markdown table. Used by `vesselview-cli artefacts` and the tests.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <stop_token>
+#include <string>
+#include <vector>
+
+#include "ArtefactScore.h"
+#include "vv/core/Image.h"
+#include "vv/render/Camera.h"
+#include "vv/render/ViewPresets.h"
+#include "vv/scene/Mesh.h"
+
+namespace vv::bench {
+
+/// The lit VSS of a scene, computed on the CPU as an exact viewer frame is.
+struct LitVss {
+    Image<float> luminance;       ///< vssLuminance(); NaN off the VSS
+    Image<std::uint8_t> vessels;  ///< 1 = vessel pixel
+};
+
+/// render::rasterizeDepth of `scene` through `camera`, vss::solve with the
+/// fast solver at power `p` (default tolerance), vss::fittedSlopes,
+/// vss::addNormalCoherence and vssLuminance under render::sceneLighting()
+/// (the headlight). Throws as those do.
+[[nodiscard]] LitVss litVss(const scene::Scene& scene, const render::Camera& camera, double p,
+                            const std::stop_token& stop = {});
+
+/// The reference of the artefact score, a frame without the pixel
+/// staircase: litVss with z' on each void pixel taken from the same view
+/// solved at `scale` times the width and height (over the frame's depth
+/// range) at that pixel's centre, i.e. the VSS of a silhouette `scale` times
+/// finer, sampled at the frame's pixels; slopes, coherence and lighting as
+/// in litVss at the frame's size (their windows cover the same scene). A
+/// void pixel whose centre the fine raster finds covered keeps its own z'.
+/// Throws InvalidArgumentError unless scale is odd and >= 1, and as litVss.
+[[nodiscard]] LitVss referenceLitVss(const scene::Scene& scene, const render::Camera& camera,
+                                     double p, int scale, const std::stop_token& stop = {});
+
+struct ArtefactCase {
+    std::string label;  ///< row name
+    scene::Scene scene;
+};
+
+struct ArtefactBenchmarkOptions {
+    int width = 1280;  ///< 1..8192 each
+    int height = 720;
+    render::ViewPreset view = render::ViewPreset::Close;
+    double p = 2.0;  ///< finite, > 0
+    /// The clean reference of each case (referenceLitVss at this scale): 0 =
+    /// none; else 3, 5 or 7.
+    int referenceScale = 3;
+    ArtefactScoreOptions score;
+    std::stop_token stop;
+};
+
+struct ArtefactRow {
+    std::string label;
+    std::size_t triangles = 0;
+    ArtefactScore score;
+    ArtefactScore reference;  ///< of the supersampled reference (rms 0 without one)
+};
+
+/// The score of every case, all seen through the preset camera of the FIRST
+/// case (so that a decimated copy is seen exactly as its original). Throws
+/// InvalidArgumentError without cases or for options out of range, and as
+/// litVss / artefactScore do.
+[[nodiscard]] std::vector<ArtefactRow> runArtefactBenchmark(
+    const std::vector<ArtefactCase>& cases, const ArtefactBenchmarkOptions& options);
+
+/// The rows as a GitHub Markdown table: label, triangles, band pixels, score
+/// in 1/1000 of the luminance range, the reference's score and the score
+/// over it (1 = as clean as the supersampled frame; "-" without a
+/// reference), and the score relative to the first row (C-locale numbers: a
+/// machine format for the docs).
+[[nodiscard]] std::string artefactTable(const std::vector<ArtefactRow>& rows);
+
+}  // namespace vv::bench
