@@ -7,7 +7,8 @@
 // double-precision reference on a pixel sample.
 //
 //   vss_fast_micro [--runs N] [--p 2,4,8,64] [--tol T] [--views far,medium,close]
-//                  [--brute] [--sample K] [--budget-scale F]
+//                  [--brute] [--sample K] [--budget-scale F] [--size WxH] [--no-coarse]
+// --size scales the views with the width (default 1280x720).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -158,6 +159,8 @@ int main(int argc, char** argv) {
     std::string views = "far,medium,close";
     bool brute = false;
     int sample = 4000;
+    int w = 1280;
+    int h = 720;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
@@ -173,6 +176,13 @@ int main(int argc, char** argv) {
             brute = true;
         } else if (a == "--sample" && more) {
             sample = std::atoi(argv[++i]);
+        } else if (a == "--size" && more) {
+            if (std::sscanf(argv[++i], "%dx%d", &w, &h) != 2 || w < 16 || h < 16) {
+                std::fprintf(stderr, "vss_fast_micro: bad --size\n");
+                return 2;
+            }
+        } else if (a == "--no-coarse") {
+            detail::setFastSolverCoarseBoxesForTesting(false);
         } else if (a == "--budget-scale" && more) {
             // test hook: a looser a-priori budget, to see how much slack the check has
             detail::setFastSolverBudgetScaleForTesting(std::atof(argv[++i]));
@@ -180,11 +190,11 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "usage: vss_fast_micro [--runs N] [--p 2,4,8] [--tol T] "
                          "[--views far,medium,close] [--brute] [--sample K] "
-                         "[--budget-scale F]\n");
+                         "[--budget-scale F] [--size WxH] [--no-coarse]\n");
             return 2;
         }
     }
-    const int w = 1280, h = 720;
+    const double zoom = w / 1280.0;
     struct View {
         const char* name;
         double scale, ox, oy;
@@ -197,14 +207,14 @@ int main(int argc, char** argv) {
     std::printf(
         "| view | regions | max contour | void px | p | fast ms (median) | fast ms (min) | cpu ms "
         "(min) | max err (sample) | "
-        "fallback px | M2L | near pairs/px |%s\n",
+        "fallback px | M2L | near pairs/px | coarse px |%s\n",
         brute ? " brute ms |" : "");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|%s\n", brute ? "---|" : "");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n", brute ? "---|" : "");
     for (const View& v : all) {
         if (views.find(v.name) == std::string::npos) {
             continue;
         }
-        const Frame f = makeFrame(w, h, v.scale, v.ox, v.oy, 12345);
+        const Frame f = makeFrame(w, h, v.scale * zoom, v.ox * zoom, v.oy * zoom, 12345);
         std::size_t maxContour = 0;
         for (const VoidRegion& r : f.regions) {
             maxContour = std::max(maxContour, r.contour.size());
@@ -282,12 +292,14 @@ int main(int argc, char** argv) {
             }
             std::printf(
                 "| %s | %zu | %zu | %ld | %g | %.1f | %.1f | %.1f | %.2e | %lld | %lld | %.1f "
-                "|%s\n",
+                "| %.1f %% |%s\n",
                 v.name, f.regions.size(), maxContour, f.voidPixels, p, median(times),
                 *std::min_element(times.begin(), times.end()),
                 *std::min_element(cpu.begin(), cpu.end()), maxErr,
                 static_cast<long long>(st.fallbackPixels), static_cast<long long>(st.m2l),
                 16.0 * static_cast<double>(st.nearPairs) /
+                    static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
+                100.0 * static_cast<double>(st.coarsePixels) /
                     static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
                 bruteCol.c_str());
             std::fflush(stdout);

@@ -105,6 +105,7 @@
 #include <utility>
 #include <vector>
 
+#include "FastCoarse.h"
 #include "FastExpansion.h"
 #include "FastKernel.h"
 #include "FastLeaf.h"
@@ -121,19 +122,20 @@ namespace {
 // ---------------------------------------------------------------- statistics
 struct AtomicStats {
     std::atomic<std::int64_t> pixels{0}, fallbackPixels{0}, leaves{0}, nearPairs{0}, m2l{0},
-        dropped{0}, perPixelLeaves{0}, exactTiles{0};
+        dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0};
 };
 AtomicStats& stats() {
     static AtomicStats s;
     return s;
 }
 std::atomic<double> gBudgetScale{1.0};  // test hook, see FastStats.h
+std::atomic<bool> gCoarseBoxes{true};   // test hook, see FastStats.h
 
 // Per-thread counters, added to the shared atomics once per task / region (atomic
 // updates per leaf from both threads would bounce one cache line between the cores).
 struct LocalStats {
     std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
-                 perPixelLeaves = 0, exactTiles = 0;
+                 perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -147,6 +149,8 @@ void flushStats() {
     s.dropped += l.dropped;
     s.perPixelLeaves += l.perPixelLeaves;
     s.exactTiles += l.exactTiles;
+    s.coarseBoxes += l.coarseBoxes;
+    s.coarsePixels += l.coarsePixels;
     l = LocalStats{};
 }
 struct StatsFlush {  // flushes on every exit, cancellation included
@@ -369,7 +373,17 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
         s.exactTiles += n.exactTile ? 1 : 0;
         return;
     }
-    // 5. Children.
+    // 5. A box far from every contour point: a coarse grid when the bound allows.
+    if (rg.coarse && st.level <= kCoarseMaxLevel && deferred.empty() && hasLocal) {
+        const std::int64_t written = evalCoarseBox(rg, geo, loc, LeafBounds{S, E, W, Sexp});
+        if (written > 0) {
+            tlStats.coarseBoxes += 1;
+            tlStats.coarsePixels += written;
+            tlStats.pixels += written;
+            return;
+        }
+    }
+    // 6. Children.
     for (int dy = 0; dy < 2; ++dy) {
         for (int dx = 0; dx < 2; ++dx) {
             const int cx = st.ix * 2 + dx;
@@ -449,6 +463,7 @@ class FastSolver final : public Solver {
     KernelPower kp_;
     double deltaW_ = 0.0;
     double budgetScale_ = gBudgetScale.load();
+    bool coarse_ = gCoarseBoxes.load();
 };
 
 void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
@@ -518,6 +533,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.stop = stop;
     rg.kp = kp_;
     rg.deltaW = deltaW_;
+    rg.coarse = coarse_;
     rg.tol = tol;
     rg.zref = zref;
     rg.zminOut = zmin;
@@ -635,6 +651,8 @@ FastSolverStats fastSolverStats() {
     r.dropped = s.dropped.load();
     r.perPixelLeaves = s.perPixelLeaves.load();
     r.exactTiles = s.exactTiles.load();
+    r.coarseBoxes = s.coarseBoxes.load();
+    r.coarsePixels = s.coarsePixels.load();
     return r;
 }
 
@@ -648,10 +666,16 @@ void resetFastSolverStats() {
     s.dropped = 0;
     s.perPixelLeaves = 0;
     s.exactTiles = 0;
+    s.coarseBoxes = 0;
+    s.coarsePixels = 0;
 }
 
 void setFastSolverBudgetScaleForTesting(double scale) {
     fast::gBudgetScale = scale;
+}
+
+void setFastSolverCoarseBoxesForTesting(bool on) {
+    fast::gCoarseBoxes = on;
 }
 
 std::unique_ptr<Solver> makeFastSolver(const SolverOptions& options) {
