@@ -75,6 +75,37 @@
 // looser budget still meets the tolerance through the check): the bounds are
 // tight for worst-case geometry, though the measured errors are ~1000x smaller.
 //
+// COARSE BOXES (FastCoarse.cpp; issue 19: cost growing slower than the
+// screen). z' is smooth away from the contours, and at 4K most void pixels
+// are far from them. A box of level 1 or 2 (32 or 64 pixels) that passes no
+// cluster on to its children (every cluster expanded or dropped: the box sees
+// only its local expansion) is evaluated on a grid of 16 x 16 samples with
+// spacing h = (longer side of its pixels' bounding box) / 15, centred on the
+// box, by the leaf kernel (no near points; it returns the float sums D~, N~),
+// and each pixel gets the bilinear interpolation of F~ = N~ / D~ there. The
+// error at a region pixel x, with P_D, P_N the polynomials and F = P_N / P_D:
+//     |I F~ - z'| <= |I (F~ - F)| + |I F - F| + |F(x) - z'(x)|
+//                 <= farArith / Dlow + (h^2 / 8)(max|F_xx| + max|F_yy|) + E / Dlow,
+// I bilinear on the cell of x (convex weights; the second term is the
+// tensor-product interpolation error of a C^2 function), Dlow a lower bound
+// of P_D over the sample square: min over the samples of D~, less the
+// evaluation round-off, less (h^2/8)(max|D_xx| + max|D_yy|) (P_D's own
+// interpolation error). The derivative bounds come from the coefficients
+// c_ij of the polynomials in u = (x - t)/a, v (|u|, |v| <= 1 on the square):
+// |P| <= sum |c_ij|, |P_x| <= sum i |c_ij| / a, |P_xx| <= sum i(i-1) |c_ij| / a^2,
+// and with |F| <= sum |c^N_ij| / Dlow =: Fb, F_x = (N_x - F D_x) / D,
+// F_xx = (N_xx - 2 F_x D_x - F D_xx) / D:
+//     |F_x| <= (|N_x| + Fb |D_x|) / Dlow =: G,  |F_xx| <= (|N_xx| + 2 G |D_x| + Fb |D_xx|) / Dlow.
+// farArith is the leaf's polynomial round-off bound (FastLeaf.cpp) counted
+// twice (the samples' evaluation and the coefficients' rounding to float).
+// The box is taken only when the sum, with 16 u for the final roundings, is
+// <= tol; the result is clamped to [zmin, zmax] like every pixel. Else (and
+// for the a-priori skip: the bound with Dlow = P_D(centre) already too big)
+// the traversal descends as before. Counters: coarseBoxes, coarsePixels
+// (FastStats.h). Measured: the coarse path takes 30-60 % of the pixels at
+// 3840x2160 for p = 2 and 4, fewer for p = 8 (whose bound needs the contours
+// farther away); docs/benchmarks/vss.md, "Cost against image size".
+//
 // SCALING (VSS.md "stiff cases"). Every box has a scale S = a lower bound of
 // all its pixel-point distances (>= 1); its expansion, E and Dlo hold true
 // values times S^p, so every point contributes <= 1 (no overflow: p <= 64,
@@ -91,7 +122,8 @@
 // tables (the series c_n, tau, chooseOrder, the weight pw); FastSourceTree:
 // step 1; FastExpansion: M2L, L2L and the leaf polynomial; FastRegion.h: what
 // the traversal and the leaves share; FastLeaf: step 4 with the check and the
-// fall-backs; FastKernel: the SIMD kernel of step 4; FastMath.h: the math.
+// fall-backs; FastCoarse: the coarse boxes; FastKernel: the SIMD kernel of
+// step 4; FastMath.h: the math.
 //
 #include "FastSolver.h"
 
