@@ -84,7 +84,8 @@ TEST(VoidRegionsTest, RandomNoiseMasks) {
 }
 
 TEST(VoidRegionsTest, TallMasksAcrossManyRowBandsMatchTheNaiveLabelling) {
-    // Labelling, renumbering and contours run in bands of rows in parallel:
+    // Labelling (a union-find per band, joined along the band borders),
+    // renumbering and contours run in bands of 32 rows in parallel:
     // regions and contours that cross many band borders (noise and the
     // random shapes, 200+ rows) must still match the independent labelling.
     for (std::uint64_t seed = 1; seed <= 4; ++seed) {
@@ -99,6 +100,9 @@ TEST(VoidRegionsTest, TallMasksAcrossManyRowBandsMatchTheNaiveLabelling) {
         const auto shapes = test::randomMask(97, 260, seed);
         expectMatchesNaive(shapes, findVoidRegions(shapes.view()),
                            "shapes " + std::to_string(seed));
+        const auto exact = test::randomMask(64, 256, seed + 10);  // bands end at the last row
+        expectMatchesNaive(exact, findVoidRegions(exact.view()),
+                           "256 rows " + std::to_string(seed));
     }
 }
 

@@ -3,32 +3,18 @@
 
 #include <algorithm>
 #include <array>
-#include <functional>
 #include <limits>
-#include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "BackgroundLabels.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 
 namespace vv::vss {
 
 namespace {
-
-/// Rows per band of the parallel passes (a fixed size: the bands, and so the
-/// order of everything they produce, do not depend on the thread count).
-constexpr int kBandRows = 32;
-
-/// body(y0, y1) over bands of kBandRows rows of an image of h rows, in parallel.
-void forRowBands(int h, const std::function<void(int, int)>& body) {
-    const long bands = (h + kBandRows - 1) / kBandRows;
-    parallelFor(0, bands, 1, [&](long b0, long b1) {
-        body(static_cast<int>(b0) * kBandRows, std::min(h, static_cast<int>(b1) * kBandRows));
-    });
-}
 
 /// The contour points of the vessel pixels of rows [y0, y1), row-major: each
 /// once for every distinct region among its 8 neighbours, as (region, point).
@@ -86,69 +72,18 @@ VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageVie
         return result;
     }
 
-    // OpenCV labels the nonzero pixels of its input: give it the background.
-    cv::Mat background(h, w, CV_8U);
-    forRowBands(h, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            const std::uint8_t* m = vesselMask.row(y);
-            auto* b = background.ptr<std::uint8_t>(y);
-            for (int x = 0; x < w; ++x) {
-                b[x] = m[x] != 0 ? 0 : 1;
-            }
-        }
-    });
-    // Labels are written straight into our label image (0 = vessel, 1..n = regions).
-    cv::Mat cvLabels(h, w, CV_32S, result.labels.data(),
-                     static_cast<std::size_t>(result.labels.stride()) * sizeof(std::int32_t));
-    cv::Mat stats;
-    cv::Mat centroids;
-    const int count =
-        cv::connectedComponentsWithStats(background, cvLabels, stats, centroids, 4, CV_32S);
-    if (cvLabels.data != static_cast<void*>(result.labels.data())) {
-        throw Error("findVoidRegions: OpenCV did not label in place");  // cannot happen
-    }
-    background.release();
-    const int regionCount = std::max(0, count - 1);
-
-    // Renumber in raster order of first appearance (independent of OpenCV's
-    // algorithm choice): a region's first pixel is the leftmost of its top
-    // row, found from its bounding box; OpenCV label l -> our id order[l],
-    // vessel 0 -> -1.
-    std::vector<std::array<int, 3>> firsts;  // (top row, first x, OpenCV label)
-    firsts.reserve(static_cast<std::size_t>(regionCount));
-    for (int label = 1; label < count; ++label) {
-        const int top = stats.at<int>(label, cv::CC_STAT_TOP);
-        const std::int32_t* row = result.labels.row(top);
-        int x = stats.at<int>(label, cv::CC_STAT_LEFT);
-        while (row[x] != label) {
-            ++x;
-        }
-        firsts.push_back({top, x, label});
-    }
-    std::sort(firsts.begin(), firsts.end());
-    std::vector<std::int32_t> order(static_cast<std::size_t>(count), kVesselLabel);
-    for (std::size_t i = 0; i < firsts.size(); ++i) {
-        order[static_cast<std::size_t>(firsts[i][2])] = static_cast<std::int32_t>(i);
-    }
-    forRowBands(h, [&](int y0, int y1) {
-        for (int y = y0; y < y1; ++y) {
-            std::int32_t* l = result.labels.row(y);
-            for (int x = 0; x < w; ++x) {
-                l[x] = order[static_cast<std::size_t>(l[x])];
-            }
-        }
-    });
-
-    result.regions.resize(static_cast<std::size_t>(regionCount));
-    for (int label = 1; label < count; ++label) {
-        VoidRegion& r =
-            result.regions[static_cast<std::size_t>(order[static_cast<std::size_t>(label)])];
-        r.id = order[static_cast<std::size_t>(label)];
-        r.x0 = stats.at<int>(label, cv::CC_STAT_LEFT);
-        r.y0 = stats.at<int>(label, cv::CC_STAT_TOP);
-        r.x1 = r.x0 + stats.at<int>(label, cv::CC_STAT_WIDTH);
-        r.y1 = r.y0 + stats.at<int>(label, cv::CC_STAT_HEIGHT);
-        r.pixelCount = stats.at<int>(label, cv::CC_STAT_AREA);
+    const std::vector<detail::ComponentBox> boxes =
+        detail::labelBackground(vesselMask, result.labels.view());
+    const int regionCount = static_cast<int>(boxes.size());
+    result.regions.resize(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        VoidRegion& r = result.regions[i];
+        r.id = static_cast<std::int32_t>(i);
+        r.x0 = boxes[i].x0;
+        r.y0 = boxes[i].y0;
+        r.x1 = boxes[i].x1;
+        r.y1 = boxes[i].y1;
+        r.pixelCount = boxes[i].pixels;
     }
 
     // Contours: one row-major pass over vessel pixels; each appends itself once
@@ -159,13 +94,13 @@ VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageVie
     if (regionCount == 0) {
         return result;
     }
-    const int bands = (h + kBandRows - 1) / kBandRows;
+    const int bands = (h + detail::kBandRows - 1) / detail::kBandRows;
     std::vector<std::vector<std::pair<std::int32_t, ContourPoint>>> found(
         static_cast<std::size_t>(bands));
     parallelFor(0, bands, 1, [&](long b0, long b1) {
         for (long b = b0; b < b1; ++b) {
-            const int y0 = static_cast<int>(b) * kBandRows;
-            contourBand(result.labels.view(), z, haveZ, y0, std::min(h, y0 + kBandRows),
+            const int y0 = static_cast<int>(b) * detail::kBandRows;
+            contourBand(result.labels.view(), z, haveZ, y0, std::min(h, y0 + detail::kBandRows),
                         found[static_cast<std::size_t>(b)]);
         }
     });
