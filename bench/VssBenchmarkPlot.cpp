@@ -288,7 +288,7 @@ QImage plotErrorVsTime(const VssBenchmarkResult& result, int width, int height) 
                      QStringLiteral("max abs error [normalised depth], log scale"));
     painter.restore();
     painter.setFont(title);
-    painter.drawText(QRectF(plot.left(), px(18), plot.width(), px(30)),
+    painter.drawText(QRectF(plot.left(), px(18), width - plot.left() - px(10), px(30)),
                      Qt::AlignLeft | Qt::AlignVCenter,
                      QStringLiteral("VSS solvers: error against run time — %1, %2")
                          .arg(sizesLabel(result.sizes))
