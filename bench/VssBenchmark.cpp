@@ -392,7 +392,11 @@ VssBenchmarkResult runVssBenchmark(const scene::Scene& scene, const VssBenchmark
             if (!options.depthOut.empty()) {
                 const std::string suffix =
                     options.sizes.size() > 1 ? "-" + sizeText(size) : std::string();
-                const auto file = options.depthOut / ("depth-" + viewName + suffix + ".pfm");
+                std::string name = "depth-";
+                name += viewName;
+                name += suffix;
+                name += ".pfm";
+                const auto file = options.depthOut / name;
                 vss::writePfm(file, depth.view());
                 say(options, "wrote " + file.string());
             }
@@ -528,7 +532,7 @@ void sizeRatioTable(std::ostringstream& md, const VssBenchmarkResult& result) {
     md << "| solver | size | pixels × | cases | Σ median ms | Σ median ms at base | time × | "
           "CPU time × | max case time × |\n";
     md << "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
-    const double basePixels = static_cast<double>(pixelsOf(result.sizes.front()));
+    const auto basePixels = static_cast<double>(pixelsOf(result.sizes.front()));
     for (const SizeRatio& r : ratios) {
         md << "| " << r.solver << " | " << sizeCell(r.size) << " | "
            << fixedText(static_cast<double>(pixelsOf(r.size)) / basePixels, 2) << " | " << r.cases

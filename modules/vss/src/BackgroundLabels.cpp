@@ -164,7 +164,8 @@ std::vector<ComponentBox> labelBackground(ImageView<const std::uint8_t> mask,
                 std::int32_t* l = labels.row(y);
                 for (int x = 0; x < w; ++x) {
                     if (l[x] >= 0) {
-                        l[x] = finalId[static_cast<std::size_t>(l[x] + band.offset)];
+                        l[x] = finalId[static_cast<std::size_t>(l[x]) +
+                                       static_cast<std::size_t>(band.offset)];
                     }
                 }
             }

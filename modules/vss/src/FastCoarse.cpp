@@ -32,7 +32,7 @@ PolyBounds polyBounds(const std::array<double, kS * kS>& c, int deg, double an) 
     PolyBounds b;
     for (int i = 0; i <= deg; ++i) {
         for (int j = 0; i + j <= deg; ++j) {
-            const double a = std::abs(c[static_cast<std::size_t>(i * kS + j)]);
+            const double a = std::abs(c[(static_cast<std::size_t>(i) * kS) + j]);
             b.sum += a;
             b.dx += i * a;
             b.dy += j * a;
@@ -75,14 +75,14 @@ std::int64_t evalCoarseBox(const Region& rg, const BoxGeo& geo, const Local& far
     const double dArith = gammaPoly * bD.sum + 1e-11 * bounds.W + kUnderflow;
     const double h2 = h * h / 8.0;
     const double tolAll = rg.tol * (1.0 - 1e-6) - 16.0 * kU;
-    // Error bound of every pixel when P_D >= Dlow over the sample square.
-    const auto errorBound = [&](double Dlow) {
-        const double F = bN.sum / Dlow;  // >= |P_N / P_D|
-        const double gx = (bN.dx + F * bD.dx) / Dlow;
-        const double gy = (bN.dy + F * bD.dy) / Dlow;
-        const double fxx = (bN.dxx + 2.0 * gx * bD.dx + F * bD.dxx) / Dlow;
-        const double fyy = (bN.dyy + 2.0 * gy * bD.dy + F * bD.dyy) / Dlow;
-        return (bounds.E + farArith) * (1.0 + 1e-6) / Dlow + h2 * (fxx + fyy);
+    // Error bound of every pixel when P_D >= dLow over the sample square.
+    const auto errorBound = [&](double dLow) {
+        const double fMax = bN.sum / dLow;  // >= |P_N / P_D|
+        const double gx = (bN.dx + fMax * bD.dx) / dLow;
+        const double gy = (bN.dy + fMax * bD.dy) / dLow;
+        const double fxx = (bN.dxx + 2.0 * gx * bD.dx + fMax * bD.dxx) / dLow;
+        const double fyy = (bN.dyy + 2.0 * gy * bD.dy + fMax * bD.dyy) / dLow;
+        return (bounds.E + farArith) * (1.0 + 1e-6) / dLow + h2 * (fxx + fyy);
     };
     // A-priori: skip the samples when even the centre value would not do.
     if (!(cD[0] > 0.0) || !(errorBound(cD[0]) <= tolAll)) {
@@ -139,8 +139,8 @@ std::int64_t evalCoarseBox(const Region& rg, const BoxGeo& geo, const Local& far
             return 0;
         }
     }
-    const double Dlow = dMin - dArith - h2 * (bD.dxx + bD.dyy);
-    if (!(Dlow > 0.0) || !(errorBound(Dlow) <= tolAll)) {
+    const double dLow = dMin - dArith - h2 * (bD.dxx + bD.dyy);
+    if (!(dLow > 0.0) || !(errorBound(dLow) <= tolAll)) {
         return 0;
     }
 
@@ -168,7 +168,7 @@ std::int64_t evalCoarseBox(const Region& rg, const BoxGeo& geo, const Local& far
         const double sy = (y - ys0) * invH;
         const int r = std::clamp(static_cast<int>(std::floor(sy)), 0, kG - 2);
         const double ty = std::clamp(sy - r, 0.0, 1.0);
-        const double* f0 = &f[static_cast<std::size_t>(r * kG)];
+        const double* f0 = &f[static_cast<std::size_t>(r) * kG];
         const double* f1 = f0 + kG;
         for (int k = 0; k < kG; ++k) {
             g[static_cast<std::size_t>(k)] = rg.zref + (f0[k] + ty * (f1[k] - f0[k]));
@@ -177,7 +177,7 @@ std::int64_t evalCoarseBox(const Region& rg, const BoxGeo& geo, const Local& far
             if (lab[i] != rg.id) {
                 continue;
             }
-            const std::size_t k = static_cast<std::size_t>(colK[static_cast<std::size_t>(i)]);
+            const auto k = static_cast<std::size_t>(colK[static_cast<std::size_t>(i)]);
             const double v = g[k] + colT[static_cast<std::size_t>(i)] * (g[k + 1] - g[k]);
             o[i] = std::clamp(static_cast<float>(v), rg.zminOut, rg.zmaxOut);
             ++pixels;
