@@ -102,7 +102,7 @@
 // <= tol; the result is clamped to [zmin, zmax] like every pixel. Else (and
 // for the a-priori skip: the bound with Dlow = P_D(centre) already too big)
 // the traversal descends as before. Counters: coarseBoxes, coarsePixels
-// (FastStats.h). Measured: the coarse path takes 30-60 % of the pixels at
+// (FastStats.h). Measured: the coarse path takes 19-62 % of the pixels at
 // 3840x2160 for p = 2 and 4, fewer for p = 8 (whose bound needs the contours
 // farther away); docs/benchmarks/vss.md, "Cost against image size".
 //
