@@ -43,6 +43,10 @@ struct Band {
     std::int32_t offset = 0;  // first global provisional id
 };
 
+/// Labels the band run by run (a run: consecutive background pixels of a
+/// row): a run takes the first label above it and unites every other label
+/// above it; a run with none above gets a new label. Same sets, and new labels
+/// in the raster order of each set's first pixel, as pixel by pixel.
 void labelBand(ImageView<const std::uint8_t> mask, ImageView<std::int32_t> labels, Band& band) {
     const int w = mask.width();
     for (int y = band.y0; y < band.y1; ++y) {
@@ -50,32 +54,43 @@ void labelBand(ImageView<const std::uint8_t> mask, ImageView<std::int32_t> label
         const std::uint8_t* mUp = y > band.y0 ? mask.row(y - 1) : nullptr;
         std::int32_t* l = labels.row(y);
         const std::int32_t* lUp = y > band.y0 ? labels.row(y - 1) : nullptr;
-        for (int x = 0; x < w; ++x) {
+        int x = 0;
+        while (x < w) {
             if (m[x] != 0) {
                 l[x] = -1;
+                ++x;
                 continue;
             }
-            const std::int32_t left = x > 0 && m[x - 1] == 0 ? l[x - 1] : -1;
-            const std::int32_t up = mUp != nullptr && mUp[x] == 0 ? lUp[x] : -1;
-            std::int32_t id = 0;
-            if (left < 0 && up < 0) {
-                id = static_cast<std::int32_t>(band.parent.size());
-                band.parent.push_back(id);
-                band.boxes.push_back(ComponentBox{x, y, x + 1, y + 1, 0});
-            } else if (left < 0) {
-                id = up;
-            } else {
-                id = left;
-                if (up >= 0 && up != left) {
-                    unite(band.parent, left, up);
+            const int x0 = x;
+            while (x < w && m[x] == 0) {
+                ++x;
+            }
+            std::int32_t id = -1;
+            if (mUp != nullptr) {
+                std::int32_t last = -1;
+                for (int xx = x0; xx < x; ++xx) {
+                    if (mUp[xx] != 0 || lUp[xx] == last) {
+                        continue;
+                    }
+                    last = lUp[xx];
+                    if (id < 0) {
+                        id = last;
+                    } else {
+                        unite(band.parent, id, last);
+                    }
                 }
             }
-            l[x] = id;
+            if (id < 0) {
+                id = static_cast<std::int32_t>(band.parent.size());
+                band.parent.push_back(id);
+                band.boxes.push_back(ComponentBox{x0, y, x, y + 1, 0});
+            }
+            std::fill(l + x0, l + x, id);
             ComponentBox& b = band.boxes[static_cast<std::size_t>(id)];
-            b.x0 = std::min(b.x0, x);
-            b.x1 = std::max(b.x1, x + 1);
+            b.x0 = std::min(b.x0, x0);
+            b.x1 = std::max(b.x1, x);
             b.y1 = y + 1;
-            ++b.pixels;
+            b.pixels += x - x0;
         }
     }
 }
