@@ -207,9 +207,10 @@ int main(int argc, char** argv) {
     std::printf(
         "| view | regions | max contour | void px | p | fast ms (median) | fast ms (min) | cpu ms "
         "(min) | max err (sample) | "
-        "fallback px | M2L | near pairs/px | coarse px |%s\n",
+        "fallback px | M2L | near pairs/px | coarse px | near-tile px | leaves |%s\n",
         brute ? " brute ms |" : "");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n", brute ? "---|" : "");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n",
+                brute ? "---|" : "");
     for (const View& v : all) {
         if (views.find(v.name) == std::string::npos) {
             continue;
@@ -292,7 +293,7 @@ int main(int argc, char** argv) {
             }
             std::printf(
                 "| %s | %zu | %zu | %ld | %g | %.1f | %.1f | %.1f | %.2e | %lld | %lld | %.1f "
-                "| %.1f %% |%s\n",
+                "| %.1f %% | %.1f %% | %lld |%s\n",
                 v.name, f.regions.size(), maxContour, f.voidPixels, p, median(times),
                 *std::min_element(times.begin(), times.end()),
                 *std::min_element(cpu.begin(), cpu.end()), maxErr,
@@ -301,7 +302,9 @@ int main(int argc, char** argv) {
                     static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
                 100.0 * static_cast<double>(st.coarsePixels) /
                     static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
-                bruteCol.c_str());
+                100.0 * static_cast<double>(st.nearLeafPixels) /
+                    static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
+                static_cast<long long>(st.leaves), bruteCol.c_str());
             std::fflush(stdout);
         }
     }

@@ -473,6 +473,29 @@ TEST(FastSolverTest, CoarseBoxesAreTakenAndKeepTheToleranceOnEveryPixel) {
     EXPECT_GT(coarseAt2, 0);
 }
 
+TEST(FastSolverTest, NearTileCountersCountTheTilesThatSumPointsExactly) {
+    // The counters of issue 19 (how the near-contour work scales): the tiles
+    // with exactly summed near points, and their pixels. Around one small
+    // speck in a large void only the tiles near the speck have near points.
+    const Scene speck = farFieldScene(288, 224, 1.0, true);
+    detail::resetFastSolverStats();
+    (void)solveAll(speck, 4.0, 0.5 / 255.0);
+    const detail::FastSolverStats a = detail::fastSolverStats();
+    EXPECT_GT(a.nearLeaves, 0);
+    EXPECT_LT(a.nearLeaves, a.leaves);
+    EXPECT_GT(a.nearLeafPixels, 0);
+    EXPECT_LT(a.nearLeafPixels, a.pixels / 4);
+    // Strokes across the image: more of it is near a contour.
+    const Scene strokes = farFieldScene(288, 224, 1.0, false);
+    detail::resetFastSolverStats();
+    (void)solveAll(strokes, 4.0, 0.5 / 255.0);
+    const detail::FastSolverStats b = detail::fastSolverStats();
+    EXPECT_GT(b.nearLeafPixels, a.nearLeafPixels);
+    EXPECT_LE(b.nearLeaves, b.leaves);
+    EXPECT_LE(b.nearLeafPixels, b.pixels);
+    EXPECT_GT(b.nearPairs, 0);
+}
+
 TEST(FastSolverTest, CoarseBoxesOnAndOffAgreeWithinTheTolerance) {
     // The same far-field scene with the coarse boxes switched off: both within
     // tol of the reference, and the switch really changes the path taken.

@@ -154,7 +154,8 @@ namespace {
 // ---------------------------------------------------------------- statistics
 struct AtomicStats {
     std::atomic<std::int64_t> pixels{0}, fallbackPixels{0}, leaves{0}, nearPairs{0}, m2l{0},
-        dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0};
+        dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0},
+        nearLeaves{0}, nearLeafPixels{0};
 };
 AtomicStats& stats() {
     static AtomicStats s;
@@ -167,7 +168,8 @@ std::atomic<bool> gCoarseBoxes{true};   // test hook, see FastStats.h
 // updates per leaf from both threads would bounce one cache line between the cores).
 struct LocalStats {
     std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
-                 perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0;
+                 perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0,
+                 nearLeaves = 0, nearLeafPixels = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -183,6 +185,8 @@ void flushStats() {
     s.exactTiles += l.exactTiles;
     s.coarseBoxes += l.coarseBoxes;
     s.coarsePixels += l.coarsePixels;
+    s.nearLeaves += l.nearLeaves;
+    s.nearLeafPixels += l.nearLeafPixels;
     l = LocalStats{};
 }
 struct StatsFlush {  // flushes on every exit, cancellation included
@@ -403,6 +407,10 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
         s.nearPairs += n.nearPairs;
         s.perPixelLeaves += n.perPixel ? 1 : 0;
         s.exactTiles += n.exactTile ? 1 : 0;
+        if (!nearNodes.empty()) {
+            s.nearLeaves += 1;
+            s.nearLeafPixels += n.pixels;
+        }
         return;
     }
     // 5. A box far from every contour point: a coarse grid when the bound allows.
@@ -685,6 +693,8 @@ FastSolverStats fastSolverStats() {
     r.exactTiles = s.exactTiles.load();
     r.coarseBoxes = s.coarseBoxes.load();
     r.coarsePixels = s.coarsePixels.load();
+    r.nearLeaves = s.nearLeaves.load();
+    r.nearLeafPixels = s.nearLeafPixels.load();
     return r;
 }
 
@@ -700,6 +710,8 @@ void resetFastSolverStats() {
     s.exactTiles = 0;
     s.coarseBoxes = 0;
     s.coarsePixels = 0;
+    s.nearLeaves = 0;
+    s.nearLeafPixels = 0;
 }
 
 void setFastSolverBudgetScaleForTesting(double scale) {

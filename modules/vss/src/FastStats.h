@@ -17,6 +17,8 @@ struct FastSolverStats {
     std::int64_t exactTiles = 0;      ///< leaves re-evaluated with every contour point
     std::int64_t coarseBoxes = 0;     ///< boxes interpolated from a coarse grid (FastCoarse.h)
     std::int64_t coarsePixels = 0;    ///< of the pixels, written by coarse boxes
+    std::int64_t nearLeaves = 0;      ///< leaf tiles that summed near points exactly
+    std::int64_t nearLeafPixels = 0;  ///< of the pixels, in those tiles
 };
 
 /// Totals since the last reset (all solver instances, all threads).
