@@ -26,6 +26,7 @@
 #include "FastKernel.h"
 #include "FastSolver.h"
 #include "FastStats.h"
+#include "MicroArgs.h"
 #include "vv/core/Image.h"
 #include "vv/core/Parallel.h"
 #include "vv/vss/Solver.h"
@@ -135,20 +136,8 @@ void bruteFrame(const Frame& f, double p, Image<float>& out) {
     }
 }
 
-std::vector<double> parseList(const char* s) {
-    std::vector<double> v;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        v.push_back(std::atof(item.c_str()));
-    }
-    return v;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using vv::bench::median;
+using vv::bench::parseList;
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "FastStats.h"
+#include "MicroArgs.h"
 #include "vv/core/Image.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Pfm.h"
@@ -31,20 +32,8 @@ namespace {
 
 using namespace vv;
 
-std::vector<double> parseList(const char* s) {
-    std::vector<double> v;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        v.push_back(std::atof(item.c_str()));
-    }
-    return v;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using vv::bench::median;
+using vv::bench::parseList;
 
 double minOf(const std::vector<double>& v) {
     return *std::min_element(v.begin(), v.end());
