@@ -56,15 +56,20 @@ long thpFallbacks() {
 TEST(PixelAllocator, LargeImagesAreHugePageAlignedAndKeepTheirValues) {
     // a 3840x2160 float image: 33 MB
     vv::Image<float> big(3840, 2160, 0.25F);
+#if defined(__linux__)
+    // on Linux the buffer is 2 MiB aligned (the huge page path)
     const auto addr = reinterpret_cast<std::uintptr_t>(big.data());
     EXPECT_EQ(addr % vv::PixelAllocator<float>::kHugePage, 0U);
+#endif
     EXPECT_FLOAT_EQ(big(0, 0), 0.25F);
     EXPECT_FLOAT_EQ(big(3839, 2159), 0.25F);
     big(17, 1000) = 2.0F;
     const vv::Image<float> copy = big;  // copies go through the allocator too
     EXPECT_FLOAT_EQ(copy(17, 1000), 2.0F);
+#if defined(__linux__)
     EXPECT_EQ(reinterpret_cast<std::uintptr_t>(copy.data()) % vv::PixelAllocator<float>::kHugePage,
               0U);
+#endif
 }
 
 TEST(PixelAllocator, LargeImagesGetHugePagesWhenTheKernelGivesThem) {

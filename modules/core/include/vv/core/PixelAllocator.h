@@ -13,8 +13,8 @@
 
 namespace vv {
 
-/// std::allocator for image pixels, except that buffers of at least
-/// kHugeBytes are aligned to 2 MiB and marked MADV_HUGEPAGE (Linux; the
+/// std::allocator for image pixels, except that on Linux buffers of at least
+/// kHugeBytes are aligned to 2 MiB and marked MADV_HUGEPAGE (the
 /// kernel's "madvise" mode of transparent huge pages): the first touch of a
 /// 4K image (33 MB of float) then takes ~16 page faults instead of ~8000,
 /// which was a large share of a 3840x2160 VSS solve (issue 19; measured in
@@ -35,27 +35,29 @@ struct PixelAllocator {
         if (n > static_cast<std::size_t>(-1) / sizeof(T)) {
             throw std::bad_alloc();
         }
-        const std::size_t bytes = n * sizeof(T);
-        if (bytes < kHugeBytes) {
-            return std::allocator<T>().allocate(n);
-        }
-        const std::size_t rounded = roundedBytes(bytes);
-        void* p = std::aligned_alloc(kHugePage, rounded);
-        if (p == nullptr) {
-            throw std::bad_alloc();
-        }
 #if defined(__linux__) && defined(MADV_HUGEPAGE)
-        (void)madvise(p, rounded, MADV_HUGEPAGE);  // a hint: failure changes nothing
+        const std::size_t bytes = n * sizeof(T);
+        if (bytes >= kHugeBytes) {
+            const std::size_t rounded = roundedBytes(bytes);
+            void* p = std::aligned_alloc(kHugePage, rounded);
+            if (p == nullptr) {
+                throw std::bad_alloc();
+            }
+            (void)madvise(p, rounded, MADV_HUGEPAGE);  // a hint: failure changes nothing
+            return static_cast<T*>(p);
+        }
 #endif
-        return static_cast<T*>(p);
+        return std::allocator<T>().allocate(n);
     }
 
     void deallocate(T* p, std::size_t n) noexcept {
-        if (n * sizeof(T) < kHugeBytes) {
-            std::allocator<T>().deallocate(p, n);
-        } else {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+        if (n * sizeof(T) >= kHugeBytes) {
             std::free(p);  // NOLINT(*-no-malloc, *-owning-memory)
+            return;
         }
+#endif
+        std::allocator<T>().deallocate(p, n);
     }
 
     template <typename U>
