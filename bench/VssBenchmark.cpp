@@ -66,11 +66,29 @@ std::string tolerance255(double tolerance) {
     return significantText(tolerance * 255.0, 6) + "/255";
 }
 
+std::string sizeText(const BenchSize& size) {
+    return std::to_string(size.width) + "x" + std::to_string(size.height);
+}
+
+std::int64_t pixelsOf(const BenchSize& size) {
+    return static_cast<std::int64_t>(size.width) * size.height;
+}
+
 void validate(const VssBenchmarkOptions& options) {
-    if (options.width < 1 || options.height < 1 || options.width > kMaxSide ||
-        options.height > kMaxSide) {
-        throw InvalidArgumentError("bench: the image size must be within 1x1.." +
-                                   std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide));
+    if (options.sizes.empty()) {
+        throw InvalidArgumentError("bench: no image size to measure");
+    }
+    for (std::size_t i = 0; i < options.sizes.size(); ++i) {
+        const BenchSize& size = options.sizes[i];
+        if (size.width < 1 || size.height < 1 || size.width > kMaxSide || size.height > kMaxSide) {
+            throw InvalidArgumentError("bench: the image size must be within 1x1.." +
+                                       std::to_string(kMaxSide) + "x" + std::to_string(kMaxSide) +
+                                       ", got " + sizeText(size));
+        }
+        if (std::find(options.sizes.begin(), options.sizes.begin() + static_cast<long>(i), size) !=
+            options.sizes.begin() + static_cast<long>(i)) {
+            throw InvalidArgumentError("bench: the size " + sizeText(size) + " appears twice");
+        }
     }
     if (options.runs < 1 || options.referenceRuns < 1) {
         throw InvalidArgumentError("bench: the number of runs must be at least 1");
@@ -281,11 +299,74 @@ Image<float> benchmarkDepth(const scene::Scene& scene, render::ViewPreset view, 
     return render::rasterizeDepth(scene, camera);
 }
 
+namespace {
+
+/// The ground truth of one case: the reference, or the brute solver (untimed).
+struct Truth {
+    Measured reference;  ///< the reference's runs when it is the truth
+    vss::VssResult brute;
+    bool isReference = true;
+    [[nodiscard]] const vss::VssResult& result() const {
+        return isReference ? reference.first : brute;
+    }
+};
+
+/// Measures every setting for one size, view and p against truth; appends the rows.
+void measureCase(const VssBenchmarkOptions& options, const BenchSize& size, render::ViewPreset view,
+                 double p, const Image<float>& depth, const Image<std::uint8_t>& mask,
+                 const Truth& truth, std::optional<std::size_t> referenceIndex,
+                 VssBenchmarkResult& result) {
+    const std::string caseName = (options.sizes.size() > 1 ? sizeText(size) + " " : "") +
+                                 std::string(render::toString(view)) +
+                                 " p=" + significantText(p, 6);
+    for (std::size_t si = 0; si < options.solvers.size(); ++si) {
+        const SolverSetting& setting = options.solvers[si];
+        VssBenchmarkRow row;
+        row.size = size;
+        row.view = view;
+        row.p = p;
+        row.solver = setting.label;
+        row.series = setting.series;
+        row.options = setting.options;
+        row.options.p = p;
+        row.truth = truth.isReference ? "reference" : "brute";
+        const bool isReference = setting.options.kind == vss::SolverKind::Reference;
+        if (isReference && !truth.isReference) {
+            markFailed(row, "skipped above " + std::to_string(options.referenceMaxPixels) +
+                                " pixels (too slow); the brute solver is the ground truth");
+        } else if (referenceIndex && si == *referenceIndex) {
+            fillRow(row, truth.reference, truth.result());
+        } else {
+            try {
+                const auto solver = vss::makeSolver(row.options);
+                const int runs = isReference ? options.referenceRuns : options.runs;
+                const Measured m = measure(*solver, depth, mask, runs, false, options.stop);
+                fillRow(row, m, truth.result());
+            } catch (const CancelledError&) {
+                throw;
+            } catch (const InvalidArgumentError&) {
+                throw;
+            } catch (const Error& e) {
+                markFailed(row, e.what());
+            }
+        }
+        if (row.failure.empty()) {
+            say(options, caseName + " " + row.solver + ": median " + milliseconds(row.medianMs) +
+                             " ms (" + std::to_string(row.runs) + " runs), max error " +
+                             scientific(row.error.maxAbs));
+        } else {
+            say(options, caseName + " " + row.solver + ": not measured: " + row.failure);
+        }
+        result.rows.push_back(std::move(row));
+    }
+}
+
+}  // namespace
+
 VssBenchmarkResult runVssBenchmark(const scene::Scene& scene, const VssBenchmarkOptions& options) {
     validate(options);
     VssBenchmarkResult result;
-    result.width = options.width;
-    result.height = options.height;
+    result.sizes = options.sizes;
     result.threads = workerCount();
     for (const scene::Mesh& mesh : scene.meshes) {
         result.triangles += mesh.triangleCount();
@@ -301,121 +382,209 @@ VssBenchmarkResult runVssBenchmark(const scene::Scene& scene, const VssBenchmark
         }
     }
 
-    for (const render::ViewPreset view : options.views) {
-        const std::string viewName(render::toString(view));
-        const render::Camera camera =
-            render::presetCamera(scene, options.width, options.height, view);
-        const Image<float> depth = render::rasterizeDepth(scene, camera, options.stop);
-        if (!options.depthOut.empty()) {
-            const auto file = options.depthOut / ("depth-" + viewName + ".pfm");
-            vss::writePfm(file, depth.view());
-            say(options, "wrote " + file.string());
-        }
-        const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
-
-        for (std::size_t pi = 0; pi < options.powers.size(); ++pi) {
-            const double p = options.powers[pi];
-            const std::string caseName = viewName + " p=" + significantText(p, 6);
-            vss::SolverOptions refOptions;
-            refOptions.kind = vss::SolverKind::Reference;
-            refOptions.p = p;
-            const auto referenceSolver = vss::makeSolver(refOptions);
-            const int refRuns = referenceIndex ? options.referenceRuns : 1;
-            say(options, caseName + " reference (" + std::to_string(refRuns) + " run" +
-                             (refRuns == 1 ? "" : "s") + ")...");
-            const Measured reference =
-                measure(*referenceSolver, depth, mask, refRuns, true, options.stop);
-            // The first run is the ground truth; the last one is compared with it.
-            const vss::VssResult& truth = reference.first;
-
-            if (pi == 0) {
-                ViewSummary summary;
-                summary.view = view;
-                summary.cameraDistance = camera.distance();
-                summary.voidPixels = truth.stats.voidPixels;
-                summary.vesselPixels =
-                    static_cast<std::int64_t>(depth.pixelCount()) - truth.stats.voidPixels;
-                summary.regions = truth.stats.regionCount;
-                summary.maxContourPixels = truth.stats.maxContourPixels;
-                summary.dmin = truth.dmin;
-                summary.dmax = truth.dmax;
-                result.views.push_back(summary);
-                say(options, viewName + ": " + std::to_string(summary.regions) + " regions, " +
-                                 std::to_string(summary.maxContourPixels) +
-                                 " contour pixels in the largest, " +
-                                 std::to_string(summary.voidPixels) + " void pixels");
+    for (const BenchSize& size : options.sizes) {
+        const bool referenceTruth = pixelsOf(size) <= options.referenceMaxPixels;
+        for (const render::ViewPreset view : options.views) {
+            const std::string viewName(render::toString(view));
+            const render::Camera camera =
+                render::presetCamera(scene, size.width, size.height, view);
+            const Image<float> depth = render::rasterizeDepth(scene, camera, options.stop);
+            if (!options.depthOut.empty()) {
+                const std::string suffix =
+                    options.sizes.size() > 1 ? "-" + sizeText(size) : std::string();
+                std::string name = "depth-";
+                name += viewName;
+                name += suffix;
+                name += ".pfm";
+                const auto file = options.depthOut / name;
+                vss::writePfm(file, depth.view());
+                say(options, "wrote " + file.string());
             }
+            const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
 
-            for (std::size_t si = 0; si < options.solvers.size(); ++si) {
-                const SolverSetting& setting = options.solvers[si];
-                VssBenchmarkRow row;
-                row.view = view;
-                row.p = p;
-                row.solver = setting.label;
-                row.series = setting.series;
-                row.options = setting.options;
-                row.options.p = p;
-                if (referenceIndex && si == *referenceIndex) {
-                    fillRow(row, reference, truth);
+            for (std::size_t pi = 0; pi < options.powers.size(); ++pi) {
+                const double p = options.powers[pi];
+                const std::string caseName =
+                    sizeText(size) + " " + viewName + " p=" + significantText(p, 6);
+                Truth truth;
+                truth.isReference = referenceTruth;
+                if (referenceTruth) {
+                    vss::SolverOptions refOptions;
+                    refOptions.kind = vss::SolverKind::Reference;
+                    refOptions.p = p;
+                    const auto referenceSolver = vss::makeSolver(refOptions);
+                    const int refRuns = referenceIndex ? options.referenceRuns : 1;
+                    say(options, caseName + " reference (" + std::to_string(refRuns) + " run" +
+                                     (refRuns == 1 ? "" : "s") + ")...");
+                    truth.reference =
+                        measure(*referenceSolver, depth, mask, refRuns, true, options.stop);
                 } else {
-                    try {
-                        const auto solver = vss::makeSolver(row.options);
-                        const int runs = setting.options.kind == vss::SolverKind::Reference
-                                             ? options.referenceRuns
-                                             : options.runs;
-                        const Measured m = measure(*solver, depth, mask, runs, false, options.stop);
-                        fillRow(row, m, truth);
-                    } catch (const CancelledError&) {
-                        throw;
-                    } catch (const InvalidArgumentError&) {
-                        throw;
-                    } catch (const Error& e) {
-                        markFailed(row, e.what());
-                    }
+                    vss::SolverOptions bruteOptions;
+                    bruteOptions.kind = vss::SolverKind::Brute;
+                    bruteOptions.p = p;
+                    say(options, caseName + " brute solver as the ground truth...");
+                    truth.brute = vss::solve(depth.view(), mask.view(),
+                                             *vss::makeSolver(bruteOptions), {}, options.stop);
                 }
-                if (row.failure.empty()) {
-                    say(options, caseName + " " + row.solver + ": median " +
-                                     milliseconds(row.medianMs) + " ms (" +
-                                     std::to_string(row.runs) + " runs), max error " +
-                                     scientific(row.error.maxAbs));
-                } else {
-                    say(options, caseName + " " + row.solver + ": not measured: " + row.failure);
+                const vss::VssResult& t = truth.result();
+                if (pi == 0) {
+                    ViewSummary summary;
+                    summary.size = size;
+                    summary.view = view;
+                    summary.cameraDistance = camera.distance();
+                    summary.voidPixels = t.stats.voidPixels;
+                    summary.vesselPixels =
+                        static_cast<std::int64_t>(depth.pixelCount()) - t.stats.voidPixels;
+                    summary.regions = t.stats.regionCount;
+                    summary.maxContourPixels = t.stats.maxContourPixels;
+                    summary.dmin = t.dmin;
+                    summary.dmax = t.dmax;
+                    result.views.push_back(summary);
+                    say(options, sizeText(size) + " " + viewName + ": " +
+                                     std::to_string(summary.regions) + " regions, " +
+                                     std::to_string(summary.maxContourPixels) +
+                                     " contour pixels in the largest, " +
+                                     std::to_string(summary.voidPixels) + " void pixels");
                 }
-                result.rows.push_back(std::move(row));
+                measureCase(options, size, view, p, depth, mask, truth,
+                            referenceTruth ? referenceIndex : std::nullopt, result);
             }
         }
     }
     return result;
 }
 
+std::vector<SizeRatio> sizeRatios(const VssBenchmarkResult& result) {
+    std::vector<SizeRatio> ratios;
+    if (result.sizes.empty()) {
+        return ratios;
+    }
+    const BenchSize base = result.sizes.front();
+    std::vector<std::string> solvers;
+    for (const VssBenchmarkRow& r : result.rows) {
+        if (std::find(solvers.begin(), solvers.end(), r.solver) == solvers.end()) {
+            solvers.push_back(r.solver);
+        }
+    }
+    const auto find = [&](const std::string& solver, const BenchSize& size, render::ViewPreset view,
+                          double p) -> const VssBenchmarkRow* {
+        for (const VssBenchmarkRow& r : result.rows) {
+            if (r.solver == solver && r.size == size && r.view == view && r.p == p &&
+                r.failure.empty()) {
+                return &r;
+            }
+        }
+        return nullptr;
+    };
+    for (const std::string& solver : solvers) {
+        for (const BenchSize& size : result.sizes) {
+            SizeRatio s;
+            s.solver = solver;
+            s.size = size;
+            double cpu = 0.0;
+            double baseCpu = 0.0;
+            for (const VssBenchmarkRow& r : result.rows) {
+                if (r.solver != solver || !(r.size == size) || !r.failure.empty()) {
+                    continue;
+                }
+                const VssBenchmarkRow* b = find(solver, base, r.view, r.p);
+                if (b == nullptr) {
+                    continue;
+                }
+                ++s.cases;
+                s.totalMs += r.medianMs;
+                s.baseMs += b->medianMs;
+                cpu += r.medianCpuMs;
+                baseCpu += b->medianCpuMs;
+                s.maxCaseRatio = std::max(s.maxCaseRatio, r.medianMs / b->medianMs);
+            }
+            s.ratio = s.cases > 0 ? s.totalMs / s.baseMs : kNaN;
+            s.cpuRatio = s.cases > 0 ? cpu / baseCpu : kNaN;
+            if (s.cases == 0) {
+                s.maxCaseRatio = kNaN;
+            }
+            ratios.push_back(s);
+        }
+    }
+    return ratios;
+}
+
+namespace {
+
+std::string sizesText(const std::vector<BenchSize>& sizes) {
+    std::string text;
+    for (const BenchSize& size : sizes) {
+        text += (text.empty() ? "" : ", ") + std::to_string(size.width) + "×" +
+                std::to_string(size.height);
+    }
+    return text;
+}
+
+std::string sizeCell(const BenchSize& size) {
+    return std::to_string(size.width) + "×" + std::to_string(size.height);
+}
+
+void sizeRatioTable(std::ostringstream& md, const VssBenchmarkResult& result) {
+    const std::vector<SizeRatio> ratios = sizeRatios(result);
+    md << "\nTime against image size (per solver setting: the sum of the median times of the "
+          "view × p cases measured at both sizes, relative to "
+       << sizeCell(result.sizes.front()) << "; pixels ×: the pixel count relative to it):\n\n";
+    md << "| solver | size | pixels × | cases | Σ median ms | Σ median ms at base | time × | "
+          "CPU time × | max case time × |\n";
+    md << "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
+    const auto basePixels = static_cast<double>(pixelsOf(result.sizes.front()));
+    for (const SizeRatio& r : ratios) {
+        md << "| " << r.solver << " | " << sizeCell(r.size) << " | "
+           << fixedText(static_cast<double>(pixelsOf(r.size)) / basePixels, 2) << " | " << r.cases
+           << " | ";
+        if (r.cases == 0) {
+            md << "– | – | – | – | – |\n";
+            continue;
+        }
+        md << milliseconds(r.totalMs) << " | " << milliseconds(r.baseMs) << " | "
+           << fixedText(r.ratio, 2) << " | " << fixedText(r.cpuRatio, 2) << " | "
+           << fixedText(r.maxCaseRatio, 2) << " |\n";
+    }
+}
+
+}  // namespace
+
 std::string markdownTable(const VssBenchmarkResult& result) {
     std::ostringstream md;
-    md << "Views (" << result.width << "×" << result.height << ", " << result.sceneName << ", "
+    bool bruteTruth = false;
+    for (const VssBenchmarkRow& r : result.rows) {
+        bruteTruth = bruteTruth || r.truth == "brute";
+    }
+    md << "Views (" << sizesText(result.sizes) << ", " << result.sceneName << ", "
        << result.triangles << " triangles):\n\n";
-    md << "| view | camera distance | vessel px | void px | regions | max contour px | "
+    md << "| size | view | camera distance | vessel px | void px | regions | max contour px | "
           "depth range |\n";
-    md << "|---|---:|---:|---:|---:|---:|---|\n";
+    md << "|---|---|---:|---:|---:|---:|---:|---|\n";
     for (const ViewSummary& v : result.views) {
-        md << "| " << render::toString(v.view) << " | " << fixedText(v.cameraDistance, 1) << " | "
-           << v.vesselPixels << " | " << v.voidPixels << " | " << v.regions << " | "
-           << v.maxContourPixels << " | " << fixedText(v.dmin, 2) << " – " << fixedText(v.dmax, 2)
-           << " |\n";
+        md << "| " << sizeCell(v.size) << " | " << render::toString(v.view) << " | "
+           << fixedText(v.cameraDistance, 1) << " | " << v.vesselPixels << " | " << v.voidPixels
+           << " | " << v.regions << " | " << v.maxContourPixels << " | " << fixedText(v.dmin, 2)
+           << " – " << fixedText(v.dmax, 2) << " |\n";
     }
     md << "\nSolvers (" << result.threads
        << " threads. median ms: median wall time of the whole vss::solve (normalise, "
           "regions, interpolate) over `runs` runs; interp. ms: the interpolation stage alone; "
           "CPU ms: process CPU time of the solve, all threads. Errors: the last run against "
-          "the reference, in normalised depth units (1 = the visible depth range), over the "
-          "void pixels):\n\n";
-    md << "| view | p | solver | runs | median ms | interp. ms | CPU ms | RMSE | max err | max "
-          "err ×255 | err > 1/255 | regions | max contour px | void px |\n";
-    md << "|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+          "the ground truth (column truth), in normalised depth units (1 = the visible depth "
+          "range), over the void pixels"
+       << (bruteTruth ? "; truth brute: sizes too large for the reference, compared against "
+                        "the brute solver (float, every contour pixel, ~1e-6 from the reference)"
+                      : "")
+       << "):\n\n";
+    md << "| size | view | p | solver | runs | median ms | interp. ms | CPU ms | RMSE | max err | "
+          "max err ×255 | err > 1/255 | truth | regions | max contour px | void px |\n";
+    md << "|---|---|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|---:|---:|\n";
     for (const VssBenchmarkRow& r : result.rows) {
-        md << "| " << render::toString(r.view) << " | " << significantText(r.p, 6) << " | "
-           << r.solver << " | ";
+        md << "| " << sizeCell(r.size) << " | " << render::toString(r.view) << " | "
+           << significantText(r.p, 6) << " | " << r.solver << " | ";
         if (!r.failure.empty()) {
             md << "– | not measured: " << r.failure << " |";
-            for (int k = 0; k < 9; ++k) {
+            for (int k = 0; k < 10; ++k) {
                 md << " |";  // the remaining columns, empty
             }
             md << "\n";
@@ -427,7 +596,11 @@ std::string markdownTable(const VssBenchmarkResult& result) {
            << (r.error.maxAbs == 0.0 ? std::string("0")
                                      : significantText(r.error.maxAbs * 255.0, 3))
            << " | " << fixedText(100.0 * r.error.fractionAbove, 3) + " %"
-           << " | " << r.regions << " | " << r.maxContourPixels << " | " << r.voidPixels << " |\n";
+           << " | " << r.truth << " | " << r.regions << " | " << r.maxContourPixels << " | "
+           << r.voidPixels << " |\n";
+    }
+    if (result.sizes.size() > 1) {
+        sizeRatioTable(md, result);
     }
     return md.str();
 }
@@ -437,10 +610,10 @@ std::string csvText(const VssBenchmarkResult& result) {
     csv << "view,width,height,p,solver,series,kind,step,tolerance,threads,runs,median_ms,min_ms,"
            "interpolate_median_ms,cpu_median_ms,rmse,max_abs_error,fraction_above_1_255,compared_"
            "pixels,"
-           "non_finite_pixels,regions,max_contour_pixels,void_pixels,error_bound,failure\n";
+           "non_finite_pixels,regions,max_contour_pixels,void_pixels,error_bound,truth,failure\n";
     for (const VssBenchmarkRow& r : result.rows) {
         const bool ok = r.failure.empty();
-        csv << render::toString(r.view) << ',' << result.width << ',' << result.height << ','
+        csv << render::toString(r.view) << ',' << r.size.width << ',' << r.size.height << ','
             << significantText(r.p, 6) << ',' << csvField(r.solver) << ',' << csvField(r.series)
             << ',' << vss::toString(r.options.kind) << ','
             << (r.options.kind == vss::SolverKind::Step ? std::to_string(r.options.step) : "")
@@ -456,319 +629,9 @@ std::string csvText(const VssBenchmarkResult& result) {
             << (ok ? std::to_string(r.regions) : "") << ','
             << (ok ? std::to_string(r.maxContourPixels) : "") << ','
             << (ok ? std::to_string(r.voidPixels) : "") << ',' << number(r.errorBound) << ','
-            << csvField(r.failure) << '\n';
+            << r.truth << ',' << csvField(r.failure) << '\n';
     }
     return csv.str();
-}
-
-// ---------------------------------------------------------------------------
-// The plot.
-
-namespace {
-
-const std::array<QColor, 8> kPalette{
-    QColor(31, 119, 180),  QColor(255, 127, 14), QColor(44, 160, 44),   QColor(214, 39, 40),
-    QColor(148, 103, 189), QColor(140, 86, 75),  QColor(227, 119, 194), QColor(127, 127, 127)};
-
-QColor seriesColor(const std::string& series, std::size_t index) {
-    if (series == "reference") {
-        return QColor(20, 20, 20);
-    }
-    if (series == "brute") {
-        return kPalette[0];
-    }
-    if (series == "step 3") {
-        return kPalette[1];
-    }
-    if (series == "step 5") {
-        return kPalette[3];
-    }
-    if (series == "fast") {
-        return kPalette[2];
-    }
-    return kPalette[4 + index % 4];
-}
-
-void drawMarker(QPainter& painter, render::ViewPreset view, const QPointF& c, double r) {
-    switch (view) {
-        case render::ViewPreset::Far:
-            painter.drawEllipse(c, r, r);
-            return;
-        case render::ViewPreset::Medium:
-            painter.drawRect(QRectF(c.x() - r, c.y() - r, 2 * r, 2 * r));
-            return;
-        case render::ViewPreset::Close: {
-            QPolygonF triangle;
-            triangle << QPointF(c.x(), c.y() - 1.2 * r) << QPointF(c.x() + 1.1 * r, c.y() + 0.8 * r)
-                     << QPointF(c.x() - 1.1 * r, c.y() + 0.8 * r);
-            painter.drawPolygon(triangle);
-            return;
-        }
-    }
-    QPolygonF diamond;
-    diamond << QPointF(c.x(), c.y() - r) << QPointF(c.x() + r, c.y()) << QPointF(c.x(), c.y() + r)
-            << QPointF(c.x() - r, c.y());
-    painter.drawPolygon(diamond);
-}
-
-QString decadeLabel(int exponent) {
-    if (exponent >= 0 && exponent <= 4) {
-        return QString::number(std::pow(10.0, exponent), 'f', 0);
-    }
-    if (exponent >= -3 && exponent < 0) {
-        return QString::number(std::pow(10.0, exponent), 'f', -exponent);
-    }
-    return QStringLiteral("1e%1").arg(exponent);
-}
-
-}  // namespace
-
-QImage plotErrorVsTime(const VssBenchmarkResult& result, int width, int height) {
-    if (width < 320 || height < 240 || width > 8192 || height > 8192) {
-        throw InvalidArgumentError("plot: the size must be within 320x240..8192x8192");
-    }
-    if (qobject_cast<QGuiApplication*>(QCoreApplication::instance()) == nullptr) {
-        throw Error("plot: drawing text needs a QGuiApplication");
-    }
-    constexpr double kTargetMs = 16.0;
-    constexpr double kVisible = 1.0 / 255.0;
-
-    // Ranges, in decades.
-    double tLo = kTargetMs;
-    double tHi = kTargetMs;
-    double eLo = kVisible;
-    double eHi = kVisible;
-    bool anyZero = false;
-    bool anyInf = false;
-    for (const VssBenchmarkRow& r : result.rows) {
-        if (!r.failure.empty() || !(r.medianMs > 0.0)) {
-            continue;
-        }
-        tLo = std::min(tLo, r.medianMs);
-        tHi = std::max(tHi, r.medianMs);
-        if (r.error.maxAbs == 0.0) {
-            anyZero = true;
-        } else if (std::isinf(r.error.maxAbs)) {
-            anyInf = true;
-        } else if (r.error.maxAbs > 0.0) {
-            eLo = std::min(eLo, r.error.maxAbs);
-            eHi = std::max(eHi, r.error.maxAbs);
-        }
-    }
-    const int xd0 = static_cast<int>(std::floor(std::log10(tLo)));
-    const int xd1 = std::max(xd0 + 1, static_cast<int>(std::ceil(std::log10(tHi))));
-    // One extra decade at the bottom holds the exact (zero error) points.
-    const int yd0 = static_cast<int>(std::floor(std::log10(eLo))) - (anyZero ? 1 : 0);
-    const int yd1 = std::max(yd0 + 1, static_cast<int>(std::ceil(std::log10(eHi))));
-
-    QImage image(width, height, QImage::Format_RGB32);
-    image.fill(Qt::white);
-    QPainter painter(&image);
-    painter.setRenderHint(QPainter::Antialiasing, true);
-    painter.setRenderHint(QPainter::TextAntialiasing, true);
-    const double scale = std::min(width / 1400.0, height / 900.0);
-    const auto px = [&](double v) { return std::max(1, static_cast<int>(std::lround(v * scale))); };
-    QFont font(QStringLiteral("DejaVu Sans"));
-    font.setPixelSize(px(15));
-    QFont small = font;
-    small.setPixelSize(px(13));
-    QFont title = font;
-    title.setPixelSize(px(19));
-    title.setBold(true);
-
-    const QRectF plot(px(100), px(70), width - px(100) - px(330), height - px(70) - px(90));
-    const auto mapX = [&](double ms) {
-        const double t = (std::log10(ms) - xd0) / (xd1 - xd0);
-        return plot.left() + t * plot.width();
-    };
-    const auto mapY = [&](double error) {
-        double e = 0.0;
-        if (error == 0.0) {
-            e = yd0;
-        } else if (std::isinf(error)) {
-            e = yd1;
-        } else {
-            e = std::log10(error);
-        }
-        const double t = (e - yd0) / (yd1 - yd0);
-        return plot.bottom() - t * plot.height();
-    };
-
-    // Grid and ticks.
-    painter.setFont(small);
-    for (int d = xd0; d <= xd1; ++d) {
-        const double x = mapX(std::pow(10.0, d));
-        painter.setPen(QPen(QColor(200, 200, 200), 1.0));
-        painter.drawLine(QPointF(x, plot.top()), QPointF(x, plot.bottom()));
-        painter.setPen(Qt::black);
-        painter.drawText(QRectF(x - px(50), plot.bottom() + px(6), px(100), px(20)),
-                         Qt::AlignHCenter | Qt::AlignTop, decadeLabel(d));
-        if (d < xd1) {
-            painter.setPen(QPen(QColor(235, 235, 235), 1.0));
-            for (int m = 2; m <= 9; ++m) {
-                const double xm = mapX(m * std::pow(10.0, d));
-                painter.drawLine(QPointF(xm, plot.top()), QPointF(xm, plot.bottom()));
-            }
-        }
-    }
-    for (int d = yd0; d <= yd1; ++d) {
-        const double y = mapY(std::pow(10.0, d));
-        painter.setPen(QPen(QColor(200, 200, 200), 1.0));
-        painter.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
-        painter.setPen(Qt::black);
-        const QString label = (anyZero && d == yd0) ? QStringLiteral("0") : decadeLabel(d);
-        painter.drawText(QRectF(plot.left() - px(95), y - px(10), px(88), px(20)),
-                         Qt::AlignRight | Qt::AlignVCenter, label);
-        if (d < yd1 && !(anyZero && d == yd0)) {
-            painter.setPen(QPen(QColor(235, 235, 235), 1.0));
-            for (int m = 2; m <= 9; ++m) {
-                const double ym = mapY(m * std::pow(10.0, d));
-                painter.drawLine(QPointF(plot.left(), ym), QPointF(plot.right(), ym));
-            }
-        }
-    }
-    if (anyZero) {
-        // The bottom decade is a break: exact results sit on its lower line.
-        painter.setPen(QPen(QColor(120, 120, 120), 1.0, Qt::DotLine));
-        const double y = mapY(std::pow(10.0, yd0 + 1));
-        painter.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
-    }
-
-    // The 1/255 line and the 16 ms target.
-    painter.setPen(QPen(QColor(200, 30, 30), 1.5, Qt::DashLine));
-    const double yVisible = mapY(kVisible);
-    painter.drawLine(QPointF(plot.left(), yVisible), QPointF(plot.right(), yVisible));
-    painter.drawText(QRectF(plot.left() + px(6), yVisible - px(20), px(400), px(18)),
-                     Qt::AlignLeft | Qt::AlignBottom, QStringLiteral("1/255: one 8-bit step"));
-    // The tolerances the fast settings promise, as thin dotted lines.
-    std::set<double> tolerances;
-    for (const VssBenchmarkRow& r : result.rows) {
-        if (r.failure.empty() && r.options.kind == vss::SolverKind::Fast &&
-            std::isfinite(r.errorBound) && r.errorBound > 0.0) {
-            tolerances.insert(r.errorBound);
-        }
-    }
-    for (const double t : tolerances) {
-        const double y = mapY(t);
-        if (y < plot.top() || y > plot.bottom()) {
-            continue;
-        }
-        painter.setPen(QPen(seriesColor("fast", 0), 1.0, Qt::DotLine));
-        painter.drawLine(QPointF(plot.left(), y), QPointF(plot.right(), y));
-        painter.drawText(QRectF(plot.right() - px(306), y - px(18), px(300), px(16)),
-                         Qt::AlignRight | Qt::AlignBottom,
-                         QStringLiteral("fast tolerance %1/255").arg(t * 255.0, 0, 'g', 3));
-    }
-    painter.setPen(QPen(QColor(30, 120, 30), 1.5, Qt::DashLine));
-    const double xTarget = mapX(kTargetMs);
-    painter.drawLine(QPointF(xTarget, plot.top()), QPointF(xTarget, plot.bottom()));
-    painter.save();
-    painter.translate(xTarget - px(4), plot.top() + px(6));
-    painter.rotate(90.0);
-    painter.drawText(QRectF(0, -px(2), px(300), px(18)), Qt::AlignLeft | Qt::AlignBottom,
-                     QStringLiteral("16 ms target"));
-    painter.restore();
-
-    painter.setPen(QPen(Qt::black, 1.2));
-    painter.setBrush(Qt::NoBrush);
-    painter.drawRect(plot);
-
-    // Points.
-    std::vector<std::string> series;
-    for (const VssBenchmarkRow& r : result.rows) {
-        if (std::find(series.begin(), series.end(), r.series) == series.end()) {
-            series.push_back(r.series);
-        }
-    }
-    const auto colorOf = [&](const std::string& s) {
-        const auto it = std::find(series.begin(), series.end(), s);
-        return seriesColor(s, static_cast<std::size_t>(it - series.begin()));
-    };
-    painter.setClipRect(plot.adjusted(-px(8), -px(8), px(8), px(8)));
-    for (const VssBenchmarkRow& r : result.rows) {
-        if (!r.failure.empty() || !(r.medianMs > 0.0) || std::isnan(r.error.maxAbs)) {
-            continue;
-        }
-        QColor fill = colorOf(r.series);
-        fill.setAlpha(190);
-        painter.setPen(QPen(colorOf(r.series).darker(140), 1.0));
-        painter.setBrush(fill);
-        drawMarker(painter, r.view, QPointF(mapX(r.medianMs), mapY(r.error.maxAbs)), px(6));
-    }
-    painter.setClipping(false);
-
-    // Axis titles and title.
-    painter.setPen(Qt::black);
-    painter.setFont(font);
-    painter.drawText(QRectF(plot.left(), plot.bottom() + px(32), plot.width(), px(24)),
-                     Qt::AlignHCenter | Qt::AlignTop,
-                     QStringLiteral("median wall time per frame [ms], log scale (whole VSS "
-                                    "solve, %1 threads)")
-                         .arg(result.threads));
-    painter.save();
-    painter.translate(px(22), plot.center().y());
-    painter.rotate(-90.0);
-    painter.drawText(QRectF(-plot.height() / 2, -px(12), plot.height(), px(24)), Qt::AlignCenter,
-                     QStringLiteral("max abs error [normalised depth], log scale"));
-    painter.restore();
-    painter.setFont(title);
-    painter.drawText(QRectF(plot.left(), px(18), plot.width(), px(30)),
-                     Qt::AlignLeft | Qt::AlignVCenter,
-                     QStringLiteral("VSS solvers: error against run time — %1×%2, %3")
-                         .arg(result.width)
-                         .arg(result.height)
-                         .arg(QString::fromStdString(result.sceneName)));
-
-    // Legend.
-    double ly = plot.top();
-    const double lx = plot.right() + px(24);
-    painter.setFont(font);
-    painter.drawText(QPointF(lx, ly + px(14)), QStringLiteral("solver"));
-    ly += px(28);
-    painter.setFont(small);
-    for (const std::string& s : series) {
-        painter.setPen(QPen(colorOf(s).darker(140), 1.0));
-        painter.setBrush(colorOf(s));
-        painter.drawRect(QRectF(lx, ly - px(10), px(22), px(12)));
-        painter.setPen(Qt::black);
-        painter.drawText(QPointF(lx + px(32), ly), QString::fromStdString(s));
-        ly += px(22);
-    }
-    ly += px(14);
-    painter.setFont(font);
-    painter.drawText(QPointF(lx, ly + px(14)), QStringLiteral("view (marker)"));
-    ly += px(28);
-    painter.setFont(small);
-    std::vector<render::ViewPreset> views;
-    for (const VssBenchmarkRow& r : result.rows) {
-        if (std::find(views.begin(), views.end(), r.view) == views.end()) {
-            views.push_back(r.view);
-        }
-    }
-    for (const render::ViewPreset v : views) {
-        painter.setPen(QPen(Qt::black, 1.0));
-        painter.setBrush(QColor(160, 160, 160));
-        drawMarker(painter, v, QPointF(lx + px(11), ly - px(4)), px(6));
-        painter.drawText(QPointF(lx + px(32), ly),
-                         QString::fromStdString(std::string(render::toString(v))));
-        ly += px(22);
-    }
-    ly += px(14);
-    painter.setPen(QColor(60, 60, 60));
-    QStringList notes{QStringLiteral("one point per view × p × setting"),
-                      QStringLiteral("(p and fast tolerances: see the CSV)")};
-    if (anyZero) {
-        notes << QStringLiteral("bottom line: error exactly 0");
-    }
-    if (anyInf) {
-        notes << QStringLiteral("top line: non-finite output");
-    }
-    for (const QString& note : notes) {
-        painter.drawText(QPointF(lx, ly), note);
-        ly += px(20);
-    }
-    painter.end();
-    return image;
 }
 
 void writeCsv(const std::filesystem::path& file, const VssBenchmarkResult& result) {
@@ -777,19 +640,6 @@ void writeCsv(const std::filesystem::path& file, const VssBenchmarkResult& resul
 
 void writeMarkdown(const std::filesystem::path& file, const VssBenchmarkResult& result) {
     writeText(file, "<!-- SPDX-License-Identifier: GPL-3.0-or-later -->\n" + markdownTable(result));
-}
-
-void writePlot(const std::filesystem::path& file, const VssBenchmarkResult& result, int width,
-               int height) {
-    QImage image = plotErrorVsTime(result, width, height);
-    image.setText(QStringLiteral("License"),
-                  QStringLiteral("SPDX-License-Identifier: GPL-3.0-or-later"));
-    image.setText(QStringLiteral("Software"), QStringLiteral("VesselView (vesselview-cli bench)"));
-    writeAtomically(file, [&](const std::filesystem::path& temporary) {
-        if (!image.save(QFile::decodeName(temporary.c_str()), "PNG")) {
-            throw IoError(file, "cannot write the PNG image");
-        }
-    });
 }
 
 }  // namespace vv::bench

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Error against run time of the VSS solvers (VSS.md, "Error against run time";
 // issue 3): depth images of a scene in the paper's views, every solver against
-// the reference, Markdown / CSV / PNG plot. Used by `vesselview-cli bench`.
+// the reference, Markdown / CSV / PNG plot, at one or several image sizes
+// (how the cost grows with the screen, issue 19). Used by `vesselview-cli bench`.
 #pragma once
 
 #include <QImage>
@@ -30,9 +31,22 @@ struct SolverSetting {
 /// reference, brute, step 3, step 5, fast at 0.5/255 (the default), 2/255 and 8/255.
 [[nodiscard]] std::vector<SolverSetting> defaultSolverSettings();
 
-struct VssBenchmarkOptions {
-    int width = 1280;  ///< depth image size, 1..8192 each
+/// A depth image size in pixels.
+struct BenchSize {
+    int width = 1280;
     int height = 720;
+    friend bool operator==(const BenchSize&, const BenchSize&) = default;
+};
+
+struct VssBenchmarkOptions {
+    /// Depth image sizes, 1..8192 each side, measured one after the other in
+    /// this order; the first is the base of the size ratios (sizeRatios()).
+    std::vector<BenchSize> sizes{BenchSize{}};
+    /// Sizes with more pixels than this compare against the brute solver
+    /// (float, every contour pixel; ~1e-6 from the reference) instead of the
+    /// reference, whose settings are then not run there (too slow: hours at
+    /// 3840x2160); their rows say so in `failure`.
+    std::int64_t referenceMaxPixels = 1280LL * 720LL;
     std::vector<render::ViewPreset> views{render::ViewPreset::Far, render::ViewPreset::Medium,
                                           render::ViewPreset::Close};
     std::vector<double> powers{2.0, 4.0, 8.0};  ///< p values, each finite and > 0
@@ -65,8 +79,9 @@ struct ErrorStats {
                                             ImageView<const std::int32_t> labels,
                                             double threshold = 1.0 / 255.0);
 
-/// One view of the benchmark.
+/// One view of the benchmark at one size.
 struct ViewSummary {
+    BenchSize size;
     render::ViewPreset view = render::ViewPreset::Far;
     float cameraDistance = 0.0F;
     std::int64_t vesselPixels = 0;
@@ -77,8 +92,9 @@ struct ViewSummary {
     double dmax = 0.0;
 };
 
-/// One row: a view × p × solver setting.
+/// One row: a size × view × p × solver setting.
 struct VssBenchmarkRow {
+    BenchSize size;
     render::ViewPreset view = render::ViewPreset::Far;
     double p = 0.0;
     std::string solver;  ///< SolverSetting::label
@@ -94,7 +110,8 @@ struct VssBenchmarkRow {
     /// Process CPU time (all threads) of the whole solve, median over the runs:
     /// unlike wall time, it hardly grows when other processes share the cores.
     double medianCpuMs = 0.0;
-    ErrorStats error;  ///< of the last run against the reference
+    ErrorStats error;                 ///< of the last run against the ground truth (`truth`)
+    std::string truth = "reference";  ///< the ground truth: "reference" or "brute"
     std::size_t regions = 0;
     std::int64_t maxContourPixels = 0;
     std::int64_t voidPixels = 0;
@@ -102,14 +119,32 @@ struct VssBenchmarkRow {
 };
 
 struct VssBenchmarkResult {
-    int width = 0;
-    int height = 0;
+    std::vector<BenchSize> sizes;  ///< as in the options; sizes[0] is the ratios' base
     std::string sceneName;
     std::size_t triangles = 0;
     int threads = 0;  ///< vv::workerCount() during the run
     std::vector<ViewSummary> views;
-    std::vector<VssBenchmarkRow> rows;  ///< view-major, then p, then solver order
+    std::vector<VssBenchmarkRow> rows;  ///< size-major, then view, p, solver order
 };
+
+/// How one solver setting's time grows from the base size (the first of
+/// VssBenchmarkResult::sizes) to another size, over the view × p cases
+/// measured (without failure) at both sizes.
+struct SizeRatio {
+    std::string solver;  ///< SolverSetting::label
+    BenchSize size;
+    int cases = 0;              ///< view × p cases measured at both sizes
+    double totalMs = 0.0;       ///< sum of the cases' median wall times at this size
+    double baseMs = 0.0;        ///< ... at the base size
+    double ratio = 0.0;         ///< totalMs / baseMs (NaN without cases)
+    double cpuRatio = 0.0;      ///< the same for the median CPU times
+    double maxCaseRatio = 0.0;  ///< the largest ratio of one case's median wall times
+};
+
+/// One entry per solver setting (in row order) and size (in sizes order, the
+/// base included with ratio 1); rows of unknown sizes are ignored. Throws
+/// nothing.
+[[nodiscard]] std::vector<SizeRatio> sizeRatios(const VssBenchmarkResult& result);
 
 /// The depth image of `scene` in `view` at width × height, through
 /// render::presetCamera (vertex fit) and render::rasterizeDepth: linear depth,
@@ -117,19 +152,23 @@ struct VssBenchmarkResult {
 [[nodiscard]] Image<float> benchmarkDepth(const scene::Scene& scene, render::ViewPreset view,
                                           int width, int height);
 
-/// Runs the benchmark. For every view and p the reference solver runs first
-/// (its first run is the ground truth); every setting is timed `runs` times
+/// Runs the benchmark. For every size, view and p the ground truth runs
+/// first: the reference solver (its first run), or above referenceMaxPixels
+/// the brute solver (untimed); every setting is timed `runs` times
 /// (`referenceRuns` for the reference) and its last result is compared.
 /// A setting whose solver cannot be made or fails with a vv::Error other than
 /// CancelledError gets a row with `failure` set, and the run goes on.
-/// Throws InvalidArgumentError for bad options (sizes, runs < 1, no view /
-/// power / solver, duplicate labels, p not finite or <= 0), IoError when a
-/// depth PFM cannot be written, CancelledError when stopped.
+/// Throws InvalidArgumentError for bad options (no size, sizes out of range or
+/// given twice, runs < 1, no view / power / solver, duplicate labels, p not
+/// finite or <= 0), IoError when a depth PFM cannot be written,
+/// CancelledError when stopped. Depth PFMs: depth-<view>.pfm for one size,
+/// depth-<view>-<W>x<H>.pfm for several.
 [[nodiscard]] VssBenchmarkResult runVssBenchmark(const scene::Scene& scene,
                                                  const VssBenchmarkOptions& options);
 
 /// The rows as a GitHub Markdown table (times in ms, errors in normalised
-/// depth units), preceded by a table of the views.
+/// depth units), preceded by a table of the views and, with several sizes,
+/// followed by the size ratios (sizeRatios()).
 [[nodiscard]] std::string markdownTable(const VssBenchmarkResult& result);
 
 /// The rows as CSV with a header line; numbers in C locale, errors with 9

@@ -7,7 +7,8 @@
 // double-precision reference on a pixel sample.
 //
 //   vss_fast_micro [--runs N] [--p 2,4,8,64] [--tol T] [--views far,medium,close]
-//                  [--brute] [--sample K] [--budget-scale F]
+//                  [--brute] [--sample K] [--budget-scale F] [--size WxH] [--no-coarse]
+// --size scales the views with the width (default 1280x720).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -25,6 +26,7 @@
 #include "FastKernel.h"
 #include "FastSolver.h"
 #include "FastStats.h"
+#include "MicroArgs.h"
 #include "vv/core/Image.h"
 #include "vv/core/Parallel.h"
 #include "vv/vss/Solver.h"
@@ -134,20 +136,8 @@ void bruteFrame(const Frame& f, double p, Image<float>& out) {
     }
 }
 
-std::vector<double> parseList(const char* s) {
-    std::vector<double> v;
-    std::stringstream ss(s);
-    std::string item;
-    while (std::getline(ss, item, ',')) {
-        v.push_back(std::atof(item.c_str()));
-    }
-    return v;
-}
-
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
-}
+using vv::bench::median;
+using vv::bench::parseList;
 
 }  // namespace
 
@@ -158,6 +148,8 @@ int main(int argc, char** argv) {
     std::string views = "far,medium,close";
     bool brute = false;
     int sample = 4000;
+    int w = 1280;
+    int h = 720;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
@@ -173,6 +165,13 @@ int main(int argc, char** argv) {
             brute = true;
         } else if (a == "--sample" && more) {
             sample = std::atoi(argv[++i]);
+        } else if (a == "--size" && more) {
+            if (std::sscanf(argv[++i], "%dx%d", &w, &h) != 2 || w < 16 || h < 16) {
+                std::fprintf(stderr, "vss_fast_micro: bad --size\n");
+                return 2;
+            }
+        } else if (a == "--no-coarse") {
+            detail::setFastSolverCoarseBoxesForTesting(false);
         } else if (a == "--budget-scale" && more) {
             // test hook: a looser a-priori budget, to see how much slack the check has
             detail::setFastSolverBudgetScaleForTesting(std::atof(argv[++i]));
@@ -180,11 +179,11 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "usage: vss_fast_micro [--runs N] [--p 2,4,8] [--tol T] "
                          "[--views far,medium,close] [--brute] [--sample K] "
-                         "[--budget-scale F]\n");
+                         "[--budget-scale F] [--size WxH] [--no-coarse]\n");
             return 2;
         }
     }
-    const int w = 1280, h = 720;
+    const double zoom = w / 1280.0;
     struct View {
         const char* name;
         double scale, ox, oy;
@@ -197,14 +196,15 @@ int main(int argc, char** argv) {
     std::printf(
         "| view | regions | max contour | void px | p | fast ms (median) | fast ms (min) | cpu ms "
         "(min) | max err (sample) | "
-        "fallback px | M2L | near pairs/px |%s\n",
+        "fallback px | M2L | near pairs/px | coarse px | near-tile px | leaves |%s\n",
         brute ? " brute ms |" : "");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|%s\n", brute ? "---|" : "");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n",
+                brute ? "---|" : "");
     for (const View& v : all) {
         if (views.find(v.name) == std::string::npos) {
             continue;
         }
-        const Frame f = makeFrame(w, h, v.scale, v.ox, v.oy, 12345);
+        const Frame f = makeFrame(w, h, v.scale * zoom, v.ox * zoom, v.oy * zoom, 12345);
         std::size_t maxContour = 0;
         for (const VoidRegion& r : f.regions) {
             maxContour = std::max(maxContour, r.contour.size());
@@ -282,14 +282,18 @@ int main(int argc, char** argv) {
             }
             std::printf(
                 "| %s | %zu | %zu | %ld | %g | %.1f | %.1f | %.1f | %.2e | %lld | %lld | %.1f "
-                "|%s\n",
+                "| %.1f %% | %.1f %% | %lld |%s\n",
                 v.name, f.regions.size(), maxContour, f.voidPixels, p, median(times),
                 *std::min_element(times.begin(), times.end()),
                 *std::min_element(cpu.begin(), cpu.end()), maxErr,
                 static_cast<long long>(st.fallbackPixels), static_cast<long long>(st.m2l),
                 16.0 * static_cast<double>(st.nearPairs) /
                     static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
-                bruteCol.c_str());
+                100.0 * static_cast<double>(st.coarsePixels) /
+                    static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
+                100.0 * static_cast<double>(st.nearLeafPixels) /
+                    static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
+                static_cast<long long>(st.leaves), bruteCol.c_str());
             std::fflush(stdout);
         }
     }

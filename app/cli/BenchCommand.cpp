@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// vesselview-cli bench [--mesh FILE] [--size WxH] [--views far,medium,close]
+// vesselview-cli bench [--mesh FILE] [--size WxH | --sizes WxH,WxH...]
+//                      [--views far,medium,close]
 //                      [--p 2,4,8] [--runs N] [--reference-runs N]
 //                      [--solvers LIST] [--tolerances LIST] [--out DIR]
 //                      [--depth-out DIR] [--quick]
 // Error against run time of the VSS solvers (bench/VssBenchmark.h).
 #include <QCoreApplication>
 #include <QGuiApplication>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -15,6 +17,7 @@
 
 #include "VssBenchmark.h"
 #include "cli/Arguments.h"
+#include "cli/BenchSizes.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
@@ -33,7 +36,7 @@ constexpr int kQuickHeight = 144;
 
 struct BenchArguments {
     std::optional<std::filesystem::path> mesh;
-    std::optional<std::pair<int, int>> size;
+    std::vector<bench::BenchSize> sizes;  ///< empty: the default (or --quick) size
     std::vector<render::ViewPreset> views{render::ViewPreset::Far, render::ViewPreset::Medium,
                                           render::ViewPreset::Close};
     std::vector<double> powers{2.0, 4.0, 8.0};
@@ -60,8 +63,14 @@ BenchArguments parse(const std::vector<std::string>& args) {
         const std::string& a = arg.name();
         if (a == "--mesh") {
             parsed.mesh = arg.path();
-        } else if (a == "--size") {
-            parsed.size = parseSize(arg.value(), "bench: --size", 1, 8192);
+        } else if (a == "--size" || a == "--sizes") {
+            if (!parsed.sizes.empty()) {
+                throw UsageError("bench: give the image size once (--size or --sizes)");
+            }
+            parsed.sizes =
+                a == "--size"
+                    ? std::vector<bench::BenchSize>{parseBenchSize(arg.value(), "bench: --size")}
+                    : parseBenchSizes(arg.value());
         } else if (a == "--views") {
             parsed.views.clear();
             for (const std::string& name : splitList(arg.value(), "bench: --views")) {
@@ -157,8 +166,11 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     const BenchArguments parsed = parse(args);
 
     bench::VssBenchmarkOptions options;
-    options.width = parsed.size ? parsed.size->first : (parsed.quick ? kQuickWidth : 1280);
-    options.height = parsed.size ? parsed.size->second : (parsed.quick ? kQuickHeight : 720);
+    options.sizes = parsed.sizes;
+    if (options.sizes.empty()) {
+        options.sizes = {parsed.quick ? bench::BenchSize{kQuickWidth, kQuickHeight}
+                                      : bench::BenchSize{}};
+    }
     options.views = parsed.views;
     options.powers = parsed.powers;
     options.solvers = solverSettings(parsed);
@@ -210,9 +222,10 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         }
         if (std::isfinite(row.errorBound) && row.errorBound > 0.0 &&
             !(row.error.maxAbs <= row.errorBound)) {
-            err << "bench: warning: " << render::toString(row.view) << " p=" << row.p << " "
-                << row.solver << ": max error " << row.error.maxAbs << " exceeds its bound "
-                << row.errorBound << "\n";
+            err << "bench: warning: " << row.size.width << "x" << row.size.height << " "
+                << render::toString(row.view) << " p=" << row.p << " " << row.solver
+                << ": max error " << row.error.maxAbs << " exceeds its bound " << row.errorBound
+                << "\n";
         }
     }
     if (failed > 0) {

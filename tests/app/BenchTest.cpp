@@ -14,6 +14,8 @@
 #include <string>
 #include <vector>
 
+#include "VssBenchmark.h"
+#include "cli/BenchSizes.h"
 #include "cli/Cli.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshWriter.h"
@@ -175,11 +177,141 @@ TEST(BenchCommandTest, SelectedViewsPowersAndSolvers) {
     }
 }
 
+TEST(BenchCommandTest, SeveralSizesInOneRunWithTheBruteSolverAsTruthAboveTheLimit) {
+    // Both sizes are below the reference's limit (1280x720 pixels): the
+    // reference is the truth at both; the rows carry their size, the depth
+    // images are named by size, and the table ends with the size ratios.
+    const fs::path out = testDir() / "sizes";
+    const fs::path depthOut = testDir() / "sizes-depth";
+    fs::remove_all(depthOut);
+    fs::create_directories(depthOut);
+    const BenchRun r =
+        bench({"--quick", "--mesh", smallTree().string(), "--out", out.string(), "--views", "far",
+               "--p", "2", "--solvers", "reference,brute,fast", "--tolerances", "0.5", "--sizes",
+               "96x54,192x108", "--depth-out", depthOut.string()});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    const auto rows = readCsv(out / "vss.csv");
+    ASSERT_EQ(rows.size(), 2U * 3U);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        EXPECT_EQ(rows[i].at("width"), i < 3 ? "96" : "192");
+        EXPECT_EQ(rows[i].at("height"), i < 3 ? "54" : "108");
+        EXPECT_EQ(rows[i].at("truth"), "reference");
+        EXPECT_EQ(rows[i].at("failure"), "");
+    }
+    EXPECT_NE(r.out.find("| size | view | p | solver |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| 192×108 | far | 2 | fast 0.5/255 |"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("Time against image size"), std::string::npos) << r.out;
+    EXPECT_NE(r.out.find("| fast 0.5/255 | 192×108 | 4.00 | 1 |"), std::string::npos) << r.out;
+    EXPECT_TRUE(fs::is_regular_file(depthOut / "depth-far-96x54.pfm"));
+    EXPECT_TRUE(fs::is_regular_file(depthOut / "depth-far-192x108.pfm"));
+}
+
+TEST(VssBenchmarkTest, AboveTheReferenceLimitTheBruteSolverIsTheTruth) {
+    vv::scene::Scene scene;
+    vv::demo::DemoTreeOptions tree;
+    tree.generations = 3;
+    tree.maxTriangles = 10000;
+    scene.meshes.push_back(vv::demo::generateDemoMesh(tree));
+    vv::bench::VssBenchmarkOptions options;
+    options.sizes = {{64, 36}, {128, 72}};
+    options.referenceMaxPixels = 64 * 36;
+    options.views = {vv::render::ViewPreset::Medium};
+    options.powers = {4.0};
+    options.runs = 1;
+    std::vector<vv::bench::SolverSetting> settings = vv::bench::defaultSolverSettings();
+    options.solvers = {settings[0], settings[1], settings[4]};  // reference, brute, fast
+    const vv::bench::VssBenchmarkResult result = vv::bench::runVssBenchmark(scene, options);
+    ASSERT_EQ(result.rows.size(), 6U);
+    for (const auto& row : result.rows) {
+        const bool large = row.size.width == 128;
+        EXPECT_EQ(row.truth, large ? "brute" : "reference");
+        if (large && row.solver == "reference") {
+            EXPECT_NE(row.failure.find("ground truth"), std::string::npos) << row.failure;
+            continue;
+        }
+        EXPECT_EQ(row.failure, "") << row.solver;
+        EXPECT_GT(row.error.compared, 0);
+        EXPECT_LE(row.error.maxAbs, 0.5 / 255.0 + 1e-5) << row.solver;
+        if (large && row.solver == "brute") {
+            EXPECT_EQ(row.error.maxAbs, 0.0);  // brute against its own (untimed) run
+        }
+    }
+    const std::string table = vv::bench::markdownTable(result);
+    EXPECT_NE(table.find("truth brute"), std::string::npos) << table;
+    EXPECT_NE(table.find("| 128×72 | medium | 4 | reference | – | not measured"), std::string::npos)
+        << table;
+}
+
+TEST(VssBenchmarkTest, SizeRatiosSumTheCasesMeasuredAtBothSizes) {
+    vv::bench::VssBenchmarkResult result;
+    result.sizes = {{100, 50}, {200, 100}, {400, 200}};
+    const auto add = [&](vv::bench::BenchSize size, vv::render::ViewPreset view, double p,
+                         const char* solver, double ms, double cpu, const char* failure = "") {
+        vv::bench::VssBenchmarkRow row;
+        row.size = size;
+        row.view = view;
+        row.p = p;
+        row.solver = solver;
+        row.medianMs = ms;
+        row.medianCpuMs = cpu;
+        row.failure = failure;
+        result.rows.push_back(row);
+    };
+    using vv::render::ViewPreset;
+    add({100, 50}, ViewPreset::Far, 2.0, "fast", 10.0, 20.0);
+    add({100, 50}, ViewPreset::Far, 4.0, "fast", 30.0, 40.0);
+    add({100, 50}, ViewPreset::Far, 2.0, "brute", 5.0, 5.0);
+    add({200, 100}, ViewPreset::Far, 2.0, "fast", 20.0, 30.0);
+    add({200, 100}, ViewPreset::Far, 4.0, "fast", 90.0, 100.0);
+    add({200, 100}, ViewPreset::Far, 2.0, "brute", 7.0, 8.0, "not available");
+    add({400, 200}, ViewPreset::Close, 2.0, "fast", 50.0, 50.0);  // no base case
+    const auto ratios = vv::bench::sizeRatios(result);
+    ASSERT_EQ(ratios.size(), 6U);  // 2 solvers x 3 sizes, in row / size order
+    EXPECT_EQ(ratios[0].solver, "fast");
+    EXPECT_EQ(ratios[0].size, (vv::bench::BenchSize{100, 50}));
+    EXPECT_EQ(ratios[0].cases, 2);
+    EXPECT_DOUBLE_EQ(ratios[0].ratio, 1.0);
+    EXPECT_EQ(ratios[1].size, (vv::bench::BenchSize{200, 100}));
+    EXPECT_EQ(ratios[1].cases, 2);
+    EXPECT_DOUBLE_EQ(ratios[1].totalMs, 110.0);
+    EXPECT_DOUBLE_EQ(ratios[1].baseMs, 40.0);
+    EXPECT_DOUBLE_EQ(ratios[1].ratio, 110.0 / 40.0);
+    EXPECT_DOUBLE_EQ(ratios[1].cpuRatio, 130.0 / 60.0);
+    EXPECT_DOUBLE_EQ(ratios[1].maxCaseRatio, 3.0);
+    EXPECT_EQ(ratios[2].cases, 0);  // the close view was not measured at the base size
+    EXPECT_TRUE(std::isnan(ratios[2].ratio));
+    EXPECT_EQ(ratios[3].solver, "brute");
+    EXPECT_DOUBLE_EQ(ratios[3].ratio, 1.0);
+    EXPECT_EQ(ratios[4].cases, 0);  // failed rows do not count
+    const std::string table = vv::bench::markdownTable(result);
+    EXPECT_NE(table.find("| fast | 200×100 | 4.00 | 2 | 110.0 | 40.0 | 2.75 | 2.17 | 3.00 |"),
+              std::string::npos)
+        << table;
+    EXPECT_NE(table.find("| fast | 400×200 | 16.00 | 0 | – | – | – | – | – |"), std::string::npos)
+        << table;
+}
+
+TEST(BenchSizesTest, ParsesOneOrSeveralSizes) {
+    EXPECT_EQ(vv::cli::parseBenchSize("1280x720", "s"), (vv::bench::BenchSize{1280, 720}));
+    const auto sizes = vv::cli::parseBenchSizes("1280x720,1920x1080,3840x2160");
+    ASSERT_EQ(sizes.size(), 3U);
+    EXPECT_EQ(sizes[1], (vv::bench::BenchSize{1920, 1080}));
+    EXPECT_EQ(sizes[2], (vv::bench::BenchSize{3840, 2160}));
+    EXPECT_EQ(vv::cli::parseBenchSizes("8x8").size(), 1U);
+    for (const char* bad : {"", "1280x720,", ",1280x720", "1280x720,1280x720", "0x10", "8193x10",
+                            "1280", "1280x720x3", "axb", "1280x720;640x360"}) {
+        EXPECT_THROW((void)vv::cli::parseBenchSizes(bad), vv::cli::UsageError) << bad;
+    }
+}
+
 TEST(BenchCommandTest, BadOptionsExitWithUsage) {
     const std::string out = (testDir() / "bad").string();
     const std::vector<std::vector<std::string>> bad{
         {"--size", "0x5"},
         {"--size", "100"},
+        {"--sizes", "100x50,100x50"},
+        {"--sizes", "100x50,0x5"},
+        {"--size", "100x50", "--sizes", "200x100"},
         {"--views", "sideways"},
         {"--views", "far,,close"},
         {"--p", "-1"},

@@ -144,9 +144,9 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
         GTEST_SKIP() << why;
     }
     bench::VssBenchmarkResult result;
-    result.width = 64;
-    result.height = 48;
+    result.sizes = {bench::BenchSize{64, 48}};
     bench::VssBenchmarkRow row;
+    row.size = result.sizes.front();
     row.p = 2.5;
     row.solver = "fast 0.5/255";
     row.series = "fast";

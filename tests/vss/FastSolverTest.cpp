@@ -412,6 +412,140 @@ TEST(FastSolverTest, TheGuaranteeDoesNotRestOnTheAPrioriBudget) {
     }
 }
 
+/// A large void with a few vessel strokes near one corner: most of it is far
+/// from every contour point (the coarse boxes of FastCoarse.h). depthRange
+/// scales the contour depths (around 0.5): tiny ranges are a stiff case.
+Scene farFieldScene(int w, int h, double depthRange, bool singleSpeck) {
+    Image<std::uint8_t> mask(w, h, 0);
+    if (singleSpeck) {
+        mask(20, 24) = 1;
+        mask(21, 24) = 1;
+    } else {
+        paintLine(mask, 12.0, 18.0, 70.0, 40.0, 2.5);
+        paintLine(mask, 70.0, 40.0, 40.0, 90.0, 1.5);
+        paintLine(mask, 70.0, 40.0, 110.0, 30.0, 1.0);
+    }
+    Image<float> z(w, h, 0.0F);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            // depth varies fast along the strokes: a rough contour
+            const double t = std::sin(0.37 * x) * std::cos(0.23 * y) + 0.002 * (x - y);
+            z(x, y) = static_cast<float>(0.5 + 0.5 * depthRange * std::clamp(t, -1.0, 1.0));
+        }
+    }
+    return makeScene(mask, z);
+}
+
+TEST(FastSolverTest, CoarseBoxesAreTakenAndKeepTheToleranceOnEveryPixel) {
+    // Every void pixel against the exact reference, with the coarse boxes on,
+    // for the stiff cases too: p up to 64, tiny depth ranges (just above the
+    // 2 tol below which a region gets its mid-range), one contour pair.
+    struct Case {
+        double depthRange;
+        bool speck;
+    };
+    const Case cases[] = {{1.0, false}, {0.02, false}, {6.0 / 255.0, false}, {1.0, true}};
+    std::int64_t coarseAt2 = 0;
+    for (const Case& k : cases) {
+        const Scene s = farFieldScene(288, 224, k.depthRange, k.speck);
+        for (const double p : {0.5, 1.0, 2.0, 4.0, 8.0, 64.0}) {
+            const Image<double> ref = referenceImage(s, p);
+            for (const double tol : {0.5 / 255.0, 1e-3, 1e-2}) {
+                detail::resetFastSolverStats();
+                const Check c = compare(s, solveAll(s, p, tol), ref);
+                const detail::FastSolverStats st = detail::fastSolverStats();
+                EXPECT_EQ(c.bad, 0) << "range " << k.depthRange << " p " << p << " tol " << tol;
+                EXPECT_LE(c.maxErr, tol)
+                    << "range " << k.depthRange << " p " << p << " tol " << tol;
+                EXPECT_EQ(st.pixels, c.pixels);
+                EXPECT_LE(st.coarsePixels, st.pixels);
+                if (p == 2.0 && tol == 0.5 / 255.0) {
+                    coarseAt2 += st.coarsePixels;
+                    if (!k.speck && k.depthRange == 1.0) {
+                        // the coarse path is actually taken, for most pixels
+                        EXPECT_GT(st.coarseBoxes, 0);
+                        EXPECT_GT(st.coarsePixels, c.pixels / 3);
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GT(coarseAt2, 0);
+}
+
+TEST(FastSolverTest, NearTileCountersCountTheTilesThatSumPointsExactly) {
+    // The counters of issue 19 (how the near-contour work scales): the tiles
+    // with exactly summed near points, and their pixels. Around one small
+    // speck in a large void only the tiles near the speck have near points.
+    const Scene speck = farFieldScene(288, 224, 1.0, true);
+    detail::resetFastSolverStats();
+    (void)solveAll(speck, 4.0, 0.5 / 255.0);
+    const detail::FastSolverStats a = detail::fastSolverStats();
+    EXPECT_GT(a.nearLeaves, 0);
+    EXPECT_LT(a.nearLeaves, a.leaves);
+    EXPECT_GT(a.nearLeafPixels, 0);
+    EXPECT_LT(a.nearLeafPixels, a.pixels / 4);
+    // Strokes across the image: more of it is near a contour.
+    const Scene strokes = farFieldScene(288, 224, 1.0, false);
+    detail::resetFastSolverStats();
+    (void)solveAll(strokes, 4.0, 0.5 / 255.0);
+    const detail::FastSolverStats b = detail::fastSolverStats();
+    EXPECT_GT(b.nearLeafPixels, a.nearLeafPixels);
+    EXPECT_LE(b.nearLeaves, b.leaves);
+    EXPECT_LE(b.nearLeafPixels, b.pixels);
+    EXPECT_GT(b.nearPairs, 0);
+}
+
+TEST(FastSolverTest, CoarseBoxesOnAndOffAgreeWithinTheTolerance) {
+    // The same far-field scene with the coarse boxes switched off: both within
+    // tol of the reference, and the switch really changes the path taken.
+    const Scene s = farFieldScene(256, 192, 1.0, false);
+    const double tol = 0.5 / 255.0;
+    for (const double p : {1.0, 2.0}) {
+        const Image<double> ref = referenceImage(s, p);
+        detail::setFastSolverCoarseBoxesForTesting(false);
+        detail::resetFastSolverStats();
+        const Image<float> off = solveAll(s, p, tol);
+        const detail::FastSolverStats stOff = detail::fastSolverStats();
+        detail::setFastSolverCoarseBoxesForTesting(true);
+        detail::resetFastSolverStats();
+        const Image<float> on = solveAll(s, p, tol);
+        const detail::FastSolverStats stOn = detail::fastSolverStats();
+        EXPECT_EQ(stOff.coarsePixels, 0);
+        EXPECT_GT(stOn.coarsePixels, 0) << p;
+        EXPECT_LT(stOn.leaves, stOff.leaves) << p;
+        const Check cOff = compare(s, off, ref);
+        const Check cOn = compare(s, on, ref);
+        EXPECT_LE(cOff.maxErr, tol) << p;
+        EXPECT_LE(cOn.maxErr, tol) << p;
+        EXPECT_EQ(cOn.bad, 0) << p;
+    }
+}
+
+TEST(FastSolverTest, CoarseBoxesDoNotRestOnTheAPrioriBudget) {
+    // A budget 30x too loose expands clusters close to the contours, where z'
+    // bends fast: the coarse boxes' interpolation bound must refuse the boxes
+    // whose samples are too far apart (the leaves' check then does its job).
+    const Scene scenes[] = {farFieldScene(256, 192, 1.0, false),
+                            randomScene(200, 150, MaskKind::Tree, 8)};
+    for (const Scene& s : scenes) {
+        for (const double p : {1.0, 2.0, 8.0}) {
+            const Image<double> ref = referenceImage(s, p);
+            for (const double tol : {0.5 / 255.0, 0.05}) {
+                detail::setFastSolverBudgetScaleForTesting(30.0);
+                detail::resetFastSolverStats();
+                const Image<float> out = solveAll(s, p, tol);
+                const detail::FastSolverStats st = detail::fastSolverStats();
+                detail::setFastSolverBudgetScaleForTesting(1.0);
+                const Check c = compare(s, out, ref);
+                EXPECT_EQ(c.bad, 0) << p;
+                EXPECT_LE(c.maxErr, tol)
+                    << "p " << p << " tol " << tol << ", " << st.coarsePixels << " coarse pixels";
+            }
+        }
+    }
+}
+
 TEST(FastSolverTest, RegionOfOnePixelAndSingleVesselPixel) {
     Image<std::uint8_t> m(5, 5, 1);
     m(2, 2) = 0;  // one void pixel, 8 contour pixels

@@ -2,8 +2,12 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <set>
+#include <string>
+#include <tuple>
 #include <utility>
+#include <vector>
 
 #include "VssTestUtil.h"
 #include "vv/core/Error.h"
@@ -76,6 +80,79 @@ TEST(VoidRegionsTest, RandomNoiseMasks) {
             }
         }
         expectMatchesNaive(mask, findVoidRegions(mask.view()), "noise " + std::to_string(seed));
+    }
+}
+
+TEST(VoidRegionsTest, TallMasksAcrossManyRowBandsMatchTheNaiveLabelling) {
+    // Labelling (a union-find per band, joined along the band borders),
+    // renumbering and contours run in bands of 32 rows in parallel:
+    // regions and contours that cross many band borders (noise and the
+    // random shapes, 200+ rows) must still match the independent labelling.
+    for (std::uint64_t seed = 1; seed <= 4; ++seed) {
+        test::Rng rng(seed);
+        Image<std::uint8_t> mask(53, 211);
+        for (int y = 0; y < mask.height(); ++y) {
+            for (int x = 0; x < mask.width(); ++x) {
+                mask(x, y) = rng.uniform() < 0.4 ? 1 : 0;
+            }
+        }
+        expectMatchesNaive(mask, findVoidRegions(mask.view()), "noise " + std::to_string(seed));
+        const auto shapes = test::randomMask(97, 260, seed);
+        expectMatchesNaive(shapes, findVoidRegions(shapes.view()),
+                           "shapes " + std::to_string(seed));
+        const auto exact = test::randomMask(64, 256, seed + 10);  // bands end at the last row
+        expectMatchesNaive(exact, findVoidRegions(exact.view()),
+                           "256 rows " + std::to_string(seed));
+    }
+}
+
+TEST(VoidRegionsTest, SameResultWithOneOrThreeThreads) {
+    // The parallel passes must give exactly what one thread gives: labels,
+    // boxes, counts, and every contour in the same order with the same depths.
+    const int w = 640;
+    const int h = 480;
+    // sparse noise: large and small regions, many of them across band borders
+    test::Rng rng(17);
+    Image<std::uint8_t> mask(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            mask(x, y) = rng.uniform() < 0.3 ? 1 : 0;
+        }
+    }
+    const auto z = test::randomDepth(w, h, 18);
+    const char* old = std::getenv("VV_THREADS");
+    const std::string saved = old != nullptr ? old : "";
+    std::vector<VoidRegionSet> results;
+    for (const char* threads : {"1", "3"}) {
+        ::setenv("VV_THREADS", threads, 1);
+        results.push_back(findVoidRegions(mask.view(), z.view()));
+    }
+    if (old != nullptr) {
+        ::setenv("VV_THREADS", saved.c_str(), 1);
+    } else {
+        ::unsetenv("VV_THREADS");
+    }
+    const VoidRegionSet& a = results[0];
+    const VoidRegionSet& b = results[1];
+    ASSERT_GT(a.regions.size(), 3U);
+    ASSERT_EQ(a.regions.size(), b.regions.size());
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            ASSERT_EQ(a.labels(x, y), b.labels(x, y)) << x << ", " << y;
+        }
+    }
+    for (std::size_t i = 0; i < a.regions.size(); ++i) {
+        const VoidRegion& ra = a.regions[i];
+        const VoidRegion& rb = b.regions[i];
+        EXPECT_EQ(ra.id, rb.id);
+        EXPECT_EQ(ra.pixelCount, rb.pixelCount);
+        EXPECT_EQ(std::tie(ra.x0, ra.y0, ra.x1, ra.y1), std::tie(rb.x0, rb.y0, rb.x1, rb.y1));
+        ASSERT_EQ(ra.contour.size(), rb.contour.size()) << i;
+        for (std::size_t k = 0; k < ra.contour.size(); ++k) {
+            EXPECT_EQ(ra.contour[k].x, rb.contour[k].x);
+            EXPECT_EQ(ra.contour[k].y, rb.contour[k].y);
+            EXPECT_EQ(ra.contour[k].z, rb.contour[k].z);
+        }
     }
 }
 

@@ -5,8 +5,10 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "vv/core/Error.h"
+#include "vv/core/Parallel.h"
 
 namespace vv::vss {
 
@@ -35,21 +37,42 @@ NormalizedDepth normalizeDepth(ImageView<const float> depth, ImageView<const std
     result.z = Image<float>(w, h, std::numeric_limits<float>::quiet_NaN());
     result.vessel = Image<std::uint8_t>(w, h, 0);
 
+    // In bands of rows in parallel; min, max and count are exact, so the
+    // result does not depend on the bands.
+    constexpr int kBandRows = 32;
+    const long bands = (h + kBandRows - 1) / kBandRows;
+    struct BandRange {
+        double lo = std::numeric_limits<double>::infinity();
+        double hi = -std::numeric_limits<double>::infinity();
+        std::int64_t count = 0;
+    };
+    std::vector<BandRange> ranges(static_cast<std::size_t>(bands));
+    parallelFor(0, bands, 1, [&](long b0, long b1) {
+        for (long b = b0; b < b1; ++b) {
+            BandRange& r = ranges[static_cast<std::size_t>(b)];
+            const int yEnd = std::min(h, static_cast<int>(b + 1) * kBandRows);
+            for (int y = static_cast<int>(b) * kBandRows; y < yEnd; ++y) {
+                const float* d = depth.row(y);
+                const std::uint8_t* m = mask.row(y);
+                std::uint8_t* v = result.vessel.row(y);
+                for (int x = 0; x < w; ++x) {
+                    if (m[x] != 0 && std::isfinite(d[x])) {
+                        v[x] = 1;
+                        ++r.count;
+                        r.lo = std::min(r.lo, static_cast<double>(d[x]));
+                        r.hi = std::max(r.hi, static_cast<double>(d[x]));
+                    }
+                }
+            }
+        }
+    });
     double lo = std::numeric_limits<double>::infinity();
     double hi = -std::numeric_limits<double>::infinity();
     std::int64_t count = 0;
-    for (int y = 0; y < h; ++y) {
-        const float* d = depth.row(y);
-        const std::uint8_t* m = mask.row(y);
-        std::uint8_t* v = result.vessel.row(y);
-        for (int x = 0; x < w; ++x) {
-            if (m[x] != 0 && std::isfinite(d[x])) {
-                v[x] = 1;
-                ++count;
-                lo = std::min(lo, static_cast<double>(d[x]));
-                hi = std::max(hi, static_cast<double>(d[x]));
-            }
-        }
+    for (const BandRange& r : ranges) {
+        lo = std::min(lo, r.lo);
+        hi = std::max(hi, r.hi);
+        count += r.count;
     }
     result.vesselPixels = count;
     if (range.mode == RangeMode::Fixed) {
@@ -66,17 +89,20 @@ NormalizedDepth normalizeDepth(ImageView<const float> depth, ImageView<const std
     result.flat = count == 0 || !(span >= flatEpsilon(result.dmax));
     const double scale = result.flat ? 0.0 : 1.0 / span;
     const double offset = result.flat ? 0.0 : result.dmin;
-    for (int y = 0; y < h; ++y) {
-        const float* d = depth.row(y);
-        const std::uint8_t* v = result.vessel.row(y);
-        float* z = result.z.row(y);
-        for (int x = 0; x < w; ++x) {
-            if (v[x] != 0) {
-                const double t = (static_cast<double>(d[x]) - offset) * scale;
-                z[x] = static_cast<float>(std::clamp(t, 0.0, 1.0));
+    parallelFor(0, h, kBandRows, [&](long y0, long y1) {
+        for (long yl = y0; yl < y1; ++yl) {
+            const int y = static_cast<int>(yl);
+            const float* d = depth.row(y);
+            const std::uint8_t* v = result.vessel.row(y);
+            float* z = result.z.row(y);
+            for (int x = 0; x < w; ++x) {
+                if (v[x] != 0) {
+                    const double t = (static_cast<double>(d[x]) - offset) * scale;
+                    z[x] = static_cast<float>(std::clamp(t, 0.0, 1.0));
+                }
             }
         }
-    }
+    });
     return result;
 }
 

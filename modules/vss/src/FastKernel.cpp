@@ -247,6 +247,12 @@ VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32
             const vi pass = d * a.tolRemaining >= a.errAbs;
             ok = asFloat(pass);
         }
+        if (a.sumD != nullptr) {
+            for (int x = 0; x < kLanes; ++x) {
+                a.sumD[row * kLanes + x] = d[x];
+                a.sumN[row * kLanes + x] = nn[x];
+            }
+        }
         vf z = a.zref + nn / d;
         const vi finite = (z >= a.zmin - 1.0F) & (z <= a.zmax + 1.0F);  // false for NaN / Inf
         z = z < a.zmin ? splat(a.zmin) : z;

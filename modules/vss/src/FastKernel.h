@@ -46,6 +46,11 @@ struct LeafKernelArgs {
     float log2DzE = -1000.0F;  ///< per-pixel mode: log2(dz * E) in leaf scale
     float log2LeafS2 = 0.0F;   ///< per-pixel mode: log2(S_leaf^2)
     KernelPower power;
+    /// When set ([16 * 16] each, row-major): receive the computed sums D and
+    /// N (the near points plus the polynomial, before the division) of the
+    /// rows in rowMask (the coarse boxes, FastCoarse.h).
+    float* sumD = nullptr;
+    float* sumN = nullptr;
 };
 
 /// Evaluates z' for the rows in `a.rowMask` into z[16 * 16] (row-major) and sets

@@ -185,7 +185,11 @@ LeafCounts evalLeaf(const Region& rg, int ix, int iy, const BoxGeo& geo,
     std::array<float, kLeafTile * kLeafTile> z2{};
     std::array<std::uint32_t, kLeafTile> fail2{};
     bool haveExactTile = false;
-    {
+    std::uint32_t anyFail = allFail ? 1U : 0U;
+    for (int r = 0; r < rows; ++r) {
+        anyFail |= fail[static_cast<std::size_t>(r)];
+    }
+    if (anyFail != 0) {  // else no pixel failed: skip the count (the common case)
         int nFail = 0;
         for (int r = 0; r < rows; ++r) {
             if (((rowMask >> r) & 1U) == 0) {

@@ -68,6 +68,7 @@ struct Region {
     double tol = 0.0;     // tolerance of every pixel's z'
     double tolA = 0.0;    // a-priori budget
     double deltaW = 0.0;  // relative error bound of one kernel weight
+    bool coarse = true;   // coarse boxes allowed (FastCoarse.h)
     KernelPower kp;
     std::stop_token stop;
 };

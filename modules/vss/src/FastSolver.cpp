@@ -75,6 +75,37 @@
 // looser budget still meets the tolerance through the check): the bounds are
 // tight for worst-case geometry, though the measured errors are ~1000x smaller.
 //
+// COARSE BOXES (FastCoarse.cpp; issue 19: cost growing slower than the
+// screen). z' is smooth away from the contours, and at 4K most void pixels
+// are far from them. A box of level 1 or 2 (32 or 64 pixels) that passes no
+// cluster on to its children (every cluster expanded or dropped: the box sees
+// only its local expansion) is evaluated on a grid of 16 x 16 samples with
+// spacing h = (longer side of its pixels' bounding box) / 15, centred on the
+// box, by the leaf kernel (no near points; it returns the float sums D~, N~),
+// and each pixel gets the bilinear interpolation of F~ = N~ / D~ there. The
+// error at a region pixel x, with P_D, P_N the polynomials and F = P_N / P_D:
+//     |I F~ - z'| <= |I (F~ - F)| + |I F - F| + |F(x) - z'(x)|
+//                 <= farArith / Dlow + (h^2 / 8)(max|F_xx| + max|F_yy|) + E / Dlow,
+// I bilinear on the cell of x (convex weights; the second term is the
+// tensor-product interpolation error of a C^2 function), Dlow a lower bound
+// of P_D over the sample square: min over the samples of D~, less the
+// evaluation round-off, less (h^2/8)(max|D_xx| + max|D_yy|) (P_D's own
+// interpolation error). The derivative bounds come from the coefficients
+// c_ij of the polynomials in u = (x - t)/a, v (|u|, |v| <= 1 on the square):
+// |P| <= sum |c_ij|, |P_x| <= sum i |c_ij| / a, |P_xx| <= sum i(i-1) |c_ij| / a^2,
+// and with |F| <= sum |c^N_ij| / Dlow =: Fb, F_x = (N_x - F D_x) / D,
+// F_xx = (N_xx - 2 F_x D_x - F D_xx) / D:
+//     |F_x| <= (|N_x| + Fb |D_x|) / Dlow =: G,  |F_xx| <= (|N_xx| + 2 G |D_x| + Fb |D_xx|) / Dlow.
+// farArith is the leaf's polynomial round-off bound (FastLeaf.cpp) counted
+// twice (the samples' evaluation and the coefficients' rounding to float).
+// The box is taken only when the sum, with 16 u for the final roundings, is
+// <= tol; the result is clamped to [zmin, zmax] like every pixel. Else (and
+// for the a-priori skip: the bound with Dlow = P_D(centre) already too big)
+// the traversal descends as before. Counters: coarseBoxes, coarsePixels
+// (FastStats.h). Measured: the coarse path takes 19-62 % of the pixels at
+// 3840x2160 for p = 2 and 4, fewer for p = 8 (whose bound needs the contours
+// farther away); docs/benchmarks/vss.md, "Cost against image size".
+//
 // SCALING (VSS.md "stiff cases"). Every box has a scale S = a lower bound of
 // all its pixel-point distances (>= 1); its expansion, E and Dlo hold true
 // values times S^p, so every point contributes <= 1 (no overflow: p <= 64,
@@ -91,7 +122,8 @@
 // tables (the series c_n, tau, chooseOrder, the weight pw); FastSourceTree:
 // step 1; FastExpansion: M2L, L2L and the leaf polynomial; FastRegion.h: what
 // the traversal and the leaves share; FastLeaf: step 4 with the check and the
-// fall-backs; FastKernel: the SIMD kernel of step 4; FastMath.h: the math.
+// fall-backs; FastCoarse: the coarse boxes; FastKernel: the SIMD kernel of
+// step 4; FastMath.h: the math.
 //
 #include "FastSolver.h"
 
@@ -105,6 +137,7 @@
 #include <utility>
 #include <vector>
 
+#include "FastCoarse.h"
 #include "FastExpansion.h"
 #include "FastKernel.h"
 #include "FastLeaf.h"
@@ -121,19 +154,22 @@ namespace {
 // ---------------------------------------------------------------- statistics
 struct AtomicStats {
     std::atomic<std::int64_t> pixels{0}, fallbackPixels{0}, leaves{0}, nearPairs{0}, m2l{0},
-        dropped{0}, perPixelLeaves{0}, exactTiles{0};
+        dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0},
+        nearLeaves{0}, nearLeafPixels{0};
 };
 AtomicStats& stats() {
     static AtomicStats s;
     return s;
 }
 std::atomic<double> gBudgetScale{1.0};  // test hook, see FastStats.h
+std::atomic<bool> gCoarseBoxes{true};   // test hook, see FastStats.h
 
 // Per-thread counters, added to the shared atomics once per task / region (atomic
 // updates per leaf from both threads would bounce one cache line between the cores).
 struct LocalStats {
     std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
-                 perPixelLeaves = 0, exactTiles = 0;
+                 perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0,
+                 nearLeaves = 0, nearLeafPixels = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -147,6 +183,10 @@ void flushStats() {
     s.dropped += l.dropped;
     s.perPixelLeaves += l.perPixelLeaves;
     s.exactTiles += l.exactTiles;
+    s.coarseBoxes += l.coarseBoxes;
+    s.coarsePixels += l.coarsePixels;
+    s.nearLeaves += l.nearLeaves;
+    s.nearLeafPixels += l.nearLeafPixels;
     l = LocalStats{};
 }
 struct StatsFlush {  // flushes on every exit, cancellation included
@@ -367,9 +407,23 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
         s.nearPairs += n.nearPairs;
         s.perPixelLeaves += n.perPixel ? 1 : 0;
         s.exactTiles += n.exactTile ? 1 : 0;
+        if (!nearNodes.empty()) {
+            s.nearLeaves += 1;
+            s.nearLeafPixels += n.pixels;
+        }
         return;
     }
-    // 5. Children.
+    // 5. A box far from every contour point: a coarse grid when the bound allows.
+    if (rg.coarse && st.level <= kCoarseMaxLevel && deferred.empty() && hasLocal) {
+        const std::int64_t written = evalCoarseBox(rg, geo, loc, LeafBounds{S, E, W, Sexp});
+        if (written > 0) {
+            tlStats.coarseBoxes += 1;
+            tlStats.coarsePixels += written;
+            tlStats.pixels += written;
+            return;
+        }
+    }
+    // 6. Children.
     for (int dy = 0; dy < 2; ++dy) {
         for (int dx = 0; dx < 2; ++dx) {
             const int cx = st.ix * 2 + dx;
@@ -449,6 +503,7 @@ class FastSolver final : public Solver {
     KernelPower kp_;
     double deltaW_ = 0.0;
     double budgetScale_ = gBudgetScale.load();
+    bool coarse_ = gCoarseBoxes.load();
 };
 
 void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
@@ -518,6 +573,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.stop = stop;
     rg.kp = kp_;
     rg.deltaW = deltaW_;
+    rg.coarse = coarse_;
     rg.tol = tol;
     rg.zref = zref;
     rg.zminOut = zmin;
@@ -635,6 +691,10 @@ FastSolverStats fastSolverStats() {
     r.dropped = s.dropped.load();
     r.perPixelLeaves = s.perPixelLeaves.load();
     r.exactTiles = s.exactTiles.load();
+    r.coarseBoxes = s.coarseBoxes.load();
+    r.coarsePixels = s.coarsePixels.load();
+    r.nearLeaves = s.nearLeaves.load();
+    r.nearLeafPixels = s.nearLeafPixels.load();
     return r;
 }
 
@@ -648,10 +708,18 @@ void resetFastSolverStats() {
     s.dropped = 0;
     s.perPixelLeaves = 0;
     s.exactTiles = 0;
+    s.coarseBoxes = 0;
+    s.coarsePixels = 0;
+    s.nearLeaves = 0;
+    s.nearLeafPixels = 0;
 }
 
 void setFastSolverBudgetScaleForTesting(double scale) {
     fast::gBudgetScale = scale;
+}
+
+void setFastSolverCoarseBoxesForTesting(bool on) {
+    fast::gCoarseBoxes = on;
 }
 
 std::unique_ptr<Solver> makeFastSolver(const SolverOptions& options) {

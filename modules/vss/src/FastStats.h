@@ -15,6 +15,10 @@ struct FastSolverStats {
     std::int64_t dropped = 0;         ///< clusters dropped with their weight bound charged
     std::int64_t perPixelLeaves = 0;  ///< leaves in per-pixel scale mode
     std::int64_t exactTiles = 0;      ///< leaves re-evaluated with every contour point
+    std::int64_t coarseBoxes = 0;     ///< boxes interpolated from a coarse grid (FastCoarse.h)
+    std::int64_t coarsePixels = 0;    ///< of the pixels, written by coarse boxes
+    std::int64_t nearLeaves = 0;      ///< leaf tiles that summed near points exactly
+    std::int64_t nearLeafPixels = 0;  ///< of the pixels, in those tiles
 };
 
 /// Totals since the last reset (all solver instances, all threads).
@@ -25,5 +29,9 @@ void resetFastSolverStats();
 /// must not break the guarantee: the per-pixel check then sends pixels to the
 /// exact fall-backs. Affects solvers created afterwards.
 void setFastSolverBudgetScaleForTesting(double scale);
+
+/// Test / benchmark hook: coarse boxes (FastCoarse.h) on (the default) or
+/// off, to compare the two. Affects solvers created afterwards.
+void setFastSolverCoarseBoxesForTesting(bool on);
 
 }  // namespace vv::vss::detail

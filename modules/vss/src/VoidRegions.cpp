@@ -4,89 +4,28 @@
 #include <algorithm>
 #include <array>
 #include <limits>
-#include <opencv2/core.hpp>
-#include <opencv2/imgproc.hpp>
 #include <string>
+#include <utility>
+#include <vector>
 
+#include "BackgroundLabels.h"
 #include "vv/core/Error.h"
+#include "vv/core/Parallel.h"
 
 namespace vv::vss {
 
-VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageView<const float> z) {
-    const int w = vesselMask.width();
-    const int h = vesselMask.height();
-    const bool haveZ = !z.empty() || z.data() != nullptr;
-    if (haveZ && (z.width() != w || z.height() != h)) {
-        throw InvalidArgumentError("findVoidRegions: the mask is " + std::to_string(w) + "x" +
-                                   std::to_string(h) + " but z is " + std::to_string(z.width()) +
-                                   "x" + std::to_string(z.height()));
-    }
-    VoidRegionSet result;
-    result.labels = Image<std::int32_t>(w, h, kVesselLabel);
-    if (w == 0 || h == 0) {
-        return result;
-    }
+namespace {
 
-    // OpenCV labels the nonzero pixels of its input: give it the background.
-    cv::Mat background(h, w, CV_8U);
-    for (int y = 0; y < h; ++y) {
-        const std::uint8_t* m = vesselMask.row(y);
-        auto* b = background.ptr<std::uint8_t>(y);
-        for (int x = 0; x < w; ++x) {
-            b[x] = m[x] != 0 ? 0 : 1;
-        }
-    }
-    // Labels are written straight into our label image (0 = vessel, 1..n = regions).
-    cv::Mat cvLabels(h, w, CV_32S, result.labels.data(),
-                     static_cast<std::size_t>(result.labels.stride()) * sizeof(std::int32_t));
-    cv::Mat stats;
-    cv::Mat centroids;
-    const int count =
-        cv::connectedComponentsWithStats(background, cvLabels, stats, centroids, 4, CV_32S);
-    if (cvLabels.data != static_cast<void*>(result.labels.data())) {
-        throw Error("findVoidRegions: OpenCV did not label in place");  // cannot happen
-    }
-    background.release();
-    const int regionCount = std::max(0, count - 1);
-
-    // Renumber in raster order of first appearance (independent of OpenCV's
-    // algorithm choice): OpenCV label l -> our id order[l], vessel 0 -> -1.
-    std::vector<std::int32_t> order(static_cast<std::size_t>(count), -2);
-    order[0] = kVesselLabel;
-    std::int32_t next = 0;
-    for (int y = 0; y < h; ++y) {
-        std::int32_t* l = result.labels.row(y);
-        for (int x = 0; x < w; ++x) {
-            std::int32_t& id = order[static_cast<std::size_t>(l[x])];
-            if (id == -2) {
-                id = next++;
-            }
-            l[x] = id;
-        }
-    }
-
-    result.regions.resize(static_cast<std::size_t>(regionCount));
-    for (int label = 1; label < count; ++label) {
-        VoidRegion& r =
-            result.regions[static_cast<std::size_t>(order[static_cast<std::size_t>(label)])];
-        r.id = order[static_cast<std::size_t>(label)];
-        r.x0 = stats.at<int>(label, cv::CC_STAT_LEFT);
-        r.y0 = stats.at<int>(label, cv::CC_STAT_TOP);
-        r.x1 = r.x0 + stats.at<int>(label, cv::CC_STAT_WIDTH);
-        r.y1 = r.y0 + stats.at<int>(label, cv::CC_STAT_HEIGHT);
-        r.pixelCount = stats.at<int>(label, cv::CC_STAT_AREA);
-    }
-
-    // Contours: one row-major pass over vessel pixels; each appends itself once
-    // to the contour of every distinct region among its 8 neighbours, so each
-    // contour comes out in row-major order without duplicates.
-    if (regionCount == 0) {
-        return result;
-    }
-    for (int y = 0; y < h; ++y) {
-        const std::int32_t* rowAbove = y > 0 ? result.labels.row(y - 1) : nullptr;
-        const std::int32_t* rowHere = result.labels.row(y);
-        const std::int32_t* rowBelow = y + 1 < h ? result.labels.row(y + 1) : nullptr;
+/// The contour points of the vessel pixels of rows [y0, y1), row-major: each
+/// once for every distinct region among its 8 neighbours, as (region, point).
+void contourBand(ImageView<const std::int32_t> labels, ImageView<const float> z, bool haveZ, int y0,
+                 int y1, std::vector<std::pair<std::int32_t, ContourPoint>>& out) {
+    const int w = labels.width();
+    const int h = labels.height();
+    for (int y = y0; y < y1; ++y) {
+        const std::int32_t* rowAbove = y > 0 ? labels.row(y - 1) : nullptr;
+        const std::int32_t* rowHere = labels.row(y);
+        const std::int32_t* rowBelow = y + 1 < h ? labels.row(y + 1) : nullptr;
         for (int x = 0; x < w; ++x) {
             if (rowHere[x] != kVesselLabel) {
                 continue;
@@ -108,14 +47,75 @@ VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageVie
             look(rowAbove);
             look(rowHere);
             look(rowBelow);
-            if (n == 0) {
-                continue;
-            }
-            const float depth = haveZ ? z(x, y) : 0.0F;
+            const float depth = haveZ && n > 0 ? z(x, y) : 0.0F;
             for (int i = 0; i < n; ++i) {
-                result.regions[static_cast<std::size_t>(found[static_cast<std::size_t>(i)])]
-                    .contour.push_back(ContourPoint{x, y, depth});
+                out.emplace_back(found[static_cast<std::size_t>(i)], ContourPoint{x, y, depth});
             }
+        }
+    }
+}
+
+}  // namespace
+
+VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageView<const float> z) {
+    const int w = vesselMask.width();
+    const int h = vesselMask.height();
+    const bool haveZ = !z.empty() || z.data() != nullptr;
+    if (haveZ && (z.width() != w || z.height() != h)) {
+        throw InvalidArgumentError("findVoidRegions: the mask is " + std::to_string(w) + "x" +
+                                   std::to_string(h) + " but z is " + std::to_string(z.width()) +
+                                   "x" + std::to_string(z.height()));
+    }
+    VoidRegionSet result;
+    result.labels = Image<std::int32_t>(w, h, kVesselLabel);
+    if (w == 0 || h == 0) {
+        return result;
+    }
+
+    const std::vector<detail::ComponentBox> boxes =
+        detail::labelBackground(vesselMask, result.labels.view());
+    const int regionCount = static_cast<int>(boxes.size());
+    result.regions.resize(boxes.size());
+    for (std::size_t i = 0; i < boxes.size(); ++i) {
+        VoidRegion& r = result.regions[i];
+        r.id = static_cast<std::int32_t>(i);
+        r.x0 = boxes[i].x0;
+        r.y0 = boxes[i].y0;
+        r.x1 = boxes[i].x1;
+        r.y1 = boxes[i].y1;
+        r.pixelCount = boxes[i].pixels;
+    }
+
+    // Contours: one row-major pass over vessel pixels; each appends itself once
+    // to the contour of every distinct region among its 8 neighbours, so each
+    // contour comes out in row-major order without duplicates. In bands of
+    // rows in parallel, each band's points then appended band after band: the
+    // same lists as one serial pass.
+    if (regionCount == 0) {
+        return result;
+    }
+    const int bands = (h + detail::kBandRows - 1) / detail::kBandRows;
+    std::vector<std::vector<std::pair<std::int32_t, ContourPoint>>> found(
+        static_cast<std::size_t>(bands));
+    parallelFor(0, bands, 1, [&](long b0, long b1) {
+        for (long b = b0; b < b1; ++b) {
+            const int y0 = static_cast<int>(b) * detail::kBandRows;
+            contourBand(result.labels.view(), z, haveZ, y0, std::min(h, y0 + detail::kBandRows),
+                        found[static_cast<std::size_t>(b)]);
+        }
+    });
+    std::vector<std::size_t> sizes(result.regions.size(), 0);
+    for (const auto& band : found) {
+        for (const auto& [id, c] : band) {
+            ++sizes[static_cast<std::size_t>(id)];
+        }
+    }
+    for (std::size_t i = 0; i < sizes.size(); ++i) {
+        result.regions[i].contour.reserve(sizes[i]);
+    }
+    for (const auto& band : found) {
+        for (const auto& [id, c] : band) {
+            result.regions[static_cast<std::size_t>(id)].contour.push_back(c);
         }
     }
     return result;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "vv/core/Error.h"
+#include "vv/core/PixelAllocator.h"
 
 namespace vv {
 
@@ -101,7 +102,7 @@ class Image {
     int width_ = 0;
     int height_ = 0;
     std::ptrdiff_t stride_ = 0;
-    std::vector<T> pixels_;
+    std::vector<T, PixelAllocator<T>> pixels_;
 };
 
 }  // namespace vv

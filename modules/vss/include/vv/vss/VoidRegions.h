@@ -19,8 +19,7 @@ struct VoidRegionSet {
 };
 
 /// Finds the void regions of `vesselMask` (nonzero = vessel): the 4-connected
-/// components of background pixels, labelled with OpenCV's
-/// connectedComponentsWithStats (connectivity 4). The contour of a region is
+/// components of background pixels. The contour of a region is
 /// every vessel pixel 8-adjacent to one of its pixels, each listed once, in
 /// row-major order (y, then x); a vessel pixel may be in several regions'
 /// contours. The image border is not a contour: a region may touch it.
@@ -28,8 +27,10 @@ struct VoidRegionSet {
 /// else 0.
 /// Special cases: an empty image or an all-vessel mask gives no region; an
 /// all-background mask gives one region with an empty contour.
-/// Memory: the label image plus one byte per pixel, plus the contours; no
-/// per-region full-size image.
+/// Labelling and contours run in bands of rows in parallel (vv::parallelFor);
+/// the result does not depend on the thread count.
+/// Memory: the label image, a few bytes per provisional component of the
+/// labelling, plus the contours; no per-region full-size image.
 /// Throws InvalidArgumentError when `z` is given with a different size.
 [[nodiscard]] VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask,
                                             ImageView<const float> z = {});

@@ -1,0 +1,123 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The whole vss::solve (normalisation, labelling and contours, the solver) on
+// depth PFMs as `vesselview-cli render --depth-out` writes them, repeated in
+// one process (issue 19: cost against image size on a loaded machine, where
+// process CPU time is steadier than wall time). Prints one Markdown row per
+// file and p: wall and CPU ms of the solve (median and min over the runs; the
+// first run apart, it pays the first touches of a fresh process), the stage
+// medians (wall), and the counters of the fast solver.
+//
+//   vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] [--solver fast|brute] FILE.pfm...
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "FastStats.h"
+#include "MicroArgs.h"
+#include "vv/core/Image.h"
+#include "vv/vss/DepthNormalization.h"
+#include "vv/vss/Pfm.h"
+#include "vv/vss/Solver.h"
+#include "vv/vss/Vss.h"
+
+// printf: a benchmark's table for machines and people alike, in the C locale
+// NOLINTBEGIN(cppcoreguidelines-pro-type-vararg)
+
+namespace {
+
+using namespace vv;
+
+using vv::bench::median;
+using vv::bench::parseList;
+
+double minOf(const std::vector<double>& v) {
+    return *std::min_element(v.begin(), v.end());
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int runs = 5;
+    std::vector<double> powers = {2.0, 4.0, 8.0};
+    vss::SolverOptions options;
+    std::vector<std::string> files;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        const bool more = i + 1 < argc;
+        if (a == "--runs" && more) {
+            runs = std::max(2, std::atoi(argv[++i]));
+        } else if (a == "--p" && more) {
+            powers = parseList(argv[++i]);
+        } else if (a == "--tol" && more) {
+            options.tolerance = std::atof(argv[++i]);
+        } else if (a == "--solver" && more) {
+            options.kind =
+                std::string(argv[++i]) == "brute" ? vss::SolverKind::Brute : vss::SolverKind::Fast;
+        } else if (!a.empty() && a[0] != '-') {
+            files.push_back(a);
+        } else {
+            std::fprintf(stderr,
+                         "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
+                         "[--solver fast|brute] FILE.pfm...\n");
+            return 2;
+        }
+    }
+    std::printf(
+        "| file | size | p | first wall ms | wall ms (median) | wall ms (min) | cpu ms "
+        "(median) | cpu ms (min) | normalize | regions | interpolate | M2L | near "
+        "pairs/px | near-tile px | coarse px |\n");
+    std::printf("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+    for (const std::string& file : files) {
+        const Image<float> depth = vss::readPfm(file);
+        const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
+        for (const double p : powers) {
+            options.p = p;
+            const auto solver = vss::makeSolver(options);
+            std::vector<double> wall;
+            std::vector<double> cpu;
+            std::vector<double> norm;
+            std::vector<double> regions;
+            std::vector<double> interp;
+            double first = 0.0;
+            vv::vss::detail::FastSolverStats st{};
+            for (int k = 0; k < runs; ++k) {
+                vv::vss::detail::resetFastSolverStats();
+                const auto t0 = std::chrono::steady_clock::now();
+                const std::clock_t c0 = std::clock();
+                const vss::VssResult r = vss::solve(depth.view(), mask.view(), *solver, {});
+                const double c = 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
+                const double t =
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                        .count();
+                st = vv::vss::detail::fastSolverStats();
+                if (k == 0) {
+                    first = t;  // a fresh process: first touches of every buffer
+                    continue;
+                }
+                wall.push_back(t);
+                cpu.push_back(c);
+                norm.push_back(r.stats.normalizeMs);
+                regions.push_back(r.stats.regionsMs);
+                interp.push_back(r.stats.interpolateMs);
+            }
+            const auto px = static_cast<double>(std::max<std::int64_t>(1, st.pixels));
+            std::printf(
+                "| %s | %dx%d | %g | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
+                "%.1f | %lld | %.1f | %.1f %% | %.1f %% |\n",
+                file.c_str(), depth.width(), depth.height(), p, first, median(wall), minOf(wall),
+                median(cpu), minOf(cpu), median(norm), median(regions), median(interp),
+                static_cast<long long>(st.m2l), 16.0 * static_cast<double>(st.nearPairs) / px,
+                100.0 * static_cast<double>(st.nearLeafPixels) / px,
+                100.0 * static_cast<double>(st.coarsePixels) / px);
+            std::fflush(stdout);
+        }
+    }
+    return 0;
+}
+
+// NOLINTEND(cppcoreguidelines-pro-type-vararg)
