@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <QImage>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -74,7 +75,52 @@ TEST_F(MovingFrameTest, AMovingFrameLooksLikeTheSettledFrameOfTheSameView) {
     const vv::test::ImageComparison c = vv::test::compareImages(moving, settled);
     std::printf("moving frame at %.2f against the settled frame: %s\n",
                 static_cast<double>(RefinementPolicy::kMinInteractiveScale), c.message.c_str());
-    EXPECT_GE(1.0 - c.difference, 0.9) << c.message;
+    // 0.912 when the reduced frame solved its VSS from the depth as read
+    // (every contour depth nearer than at the window's size, see
+    // silhouetteDepth); 0.933 from the silhouette depth.
+    EXPECT_GE(1.0 - c.difference, 0.925) << c.message;
+}
+
+/// The VSS height (z') of a frame on its void pixels, with the depth its
+/// solve read (to tell vessel pixels apart).
+struct ShownVss {
+    Image<float> height;
+    Image<float> depth;
+};
+
+TEST_F(MovingFrameTest, AMovingFramesVssLiesWhereTheSettledFramesDoes) {
+    // Where the far field's iso-lines lie: its z' against the settled one's,
+    // averaged over the void pixels of the moving frame. Its flat parts move
+    // an iso-line by tens of pixels for a few thousandths of z'.
+    static_cast<void>(render(displaySettings()));
+    const ShownVss settled{harness_->renderer().shownHeight(),
+                           harness_->renderer().lastSolvedDepth()};
+    static_cast<void>(render(movingSettings(RefinementPolicy::kMinInteractiveScale)));
+    const ShownVss moving{harness_->renderer().shownHeight(),
+                          harness_->renderer().lastSolvedDepth()};
+    ASSERT_EQ(moving.height.width(), kWidth / 4);
+    ASSERT_EQ(settled.height.width(), kWidth);
+    double sum = 0.0;
+    long n = 0;
+    for (int y = 0; y < moving.height.height(); ++y) {
+        for (int x = 0; x < moving.height.width(); ++x) {
+            // The settled pixel at the centre of the moving pixel's 4x4 block.
+            const int sx = 4 * x + 2;
+            const int sy = 4 * y + 2;
+            if (std::isfinite(moving.depth(x, y)) || std::isfinite(settled.depth(sx, sy)) ||
+                !std::isfinite(moving.height(x, y)) || !std::isfinite(settled.height(sx, sy))) {
+                continue;
+            }
+            sum += moving.height(x, y) - settled.height(sx, sy);
+            ++n;
+        }
+    }
+    ASSERT_GT(n, moving.height.width() * moving.height.height() / 2);
+    const double offset = sum / static_cast<double>(n);
+    std::printf("moving frame's z' - settled frame's z', mean over %ld void pixels: %.5f\n", n,
+                offset);
+    // -0.0051 from the depth as read: the whole far field nearer.
+    EXPECT_LT(std::abs(offset), 0.002);
 }
 
 /// Pixels where `with` and `without` differ by more than 40 of 255 in some

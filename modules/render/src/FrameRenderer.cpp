@@ -68,13 +68,21 @@ std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
     return h.result();
 }
 
-/// The key of a solve of the view `view` with `options` (preview or exact).
-std::uint64_t requestKey(std::uint64_t view, const SolverKey& options, bool preview) noexcept {
+/// The key of a solve of the view `view` with `options` (preview or exact),
+/// drawn at `reduction` window pixels per render pixel.
+std::uint64_t requestKey(std::uint64_t view, const SolverKey& options, bool preview,
+                         float reduction) noexcept {
     Hasher h;
     h.value(view);
     h.value(options);
     h.value(preview);
+    h.value(reduction);
     return h.result();
+}
+
+/// Window pixels per render pixel (solveFrame()): 1 at full size.
+float reductionOf(const FrameTarget& target, const glm::ivec2& renderSize) noexcept {
+    return static_cast<float>(target.height) / static_cast<float>(std::max(renderSize.y, 1));
 }
 
 /// Throws InvalidArgumentError for a target below 1x1 and, with the VSS on,
@@ -379,14 +387,16 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
     }
     const vss::SolverOptions options = effectiveSolverOptions(vssSettings);
     static_cast<void>(vss::makeSolver(options));  // throws for bad options, like render()
-    const std::uint64_t request =
-        requestKey(depthView, solverKey(options, vssSettings.range), vssSettings.preview);
+    const float reduction = reductionOf(target, renderSize);
+    const std::uint64_t request = requestKey(depthView, solverKey(options, vssSettings.range),
+                                             vssSettings.preview, reduction);
     const auto latest = impl_->worker->latest().first;
     if ((latest && latest->key == request) || impl_->worker->requested(request)) {
         return true;
     }
     impl_->worker->submit(SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview,
-                                           vssSettings.range, pixelScaleOf(camera, renderSize.y)});
+                                           vssSettings.range, pixelScaleOf(camera, renderSize.y),
+                                           reduction});
     return true;
 }
 
@@ -540,8 +550,9 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             .preview = vssSettings.preview,
             .depthView = depthView,
             .request = requestKey(depthView, solverKey(solverOptions, vssSettings.range),
-                                  vssSettings.preview),
+                                  vssSettings.preview, reductionOf(target, size)),
             .pixelScale = pixelScale,
+            .reduction = reductionOf(target, size),
             .size = size,
             // The slopes the solver's thread fits for the lighting: at the
             // render size up to kMaxCpuSlopePixels, else (and for an external

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 
+#include "ReducedContourDepth.h"
 #include "vv/core/Error.h"
 #include "vv/vss/Shading.h"
 #include "vv/vss/Vss.h"
@@ -13,7 +14,7 @@ namespace vv::render {
 
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
-                       const vss::DepthRange& range, float pixelScale,
+                       const vss::DepthRange& range, float pixelScale, float reduction,
                        const std::stop_token& stop) {
     const auto start = std::chrono::steady_clock::now();
     const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
@@ -21,7 +22,23 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     vssOptions.solver = options;
     vssOptions.range = range;
     vssOptions.stop = stop;
-    vss::VssResult result = vss::solve(depth.view(), mask.view(), vssOptions);
+    vss::VssResult result;
+    if (silhouetteReach(reduction) > 0.0F) {
+        // A reduced frame: contour depths moved to the silhouette, normalised
+        // over the depth as read (the extrapolated contours must not widen it).
+        if (range.mode == vss::RangeMode::Visible) {
+            const vss::NormalizedDepth visible = vss::normalizeDepth(depth.view(), mask.view());
+            if (visible.vesselPixels > 0) {
+                vssOptions.range = {vss::RangeMode::Fixed, visible.dmin, visible.dmax};
+            }
+        }
+        const Image<float> silhouette = silhouetteDepth(depth, reduction, pixelScale);
+        // Thin vessels are widened by a pixel: the solve's mask follows.
+        const Image<std::uint8_t> widened = vss::maskFromFiniteDepth(silhouette.view());
+        result = vss::solve(silhouette.view(), widened.view(), vssOptions);
+    } else {
+        result = vss::solve(depth.view(), mask.view(), vssOptions);
+    }
     SolvedFrame frame;
     frame.key = key;
     frame.height = std::move(result.height);
@@ -115,8 +132,9 @@ void SolveWorker::run(const std::stop_token& stop) {
         std::shared_ptr<const SolvedFrame> solved;
         bool cancelled = false;
         try {
-            solved = std::make_shared<const SolvedFrame>(solveFrame(
-                job.key, *job.depth, job.options, job.preview, job.range, job.pixelScale, jobStop));
+            solved = std::make_shared<const SolvedFrame>(
+                solveFrame(job.key, *job.depth, job.options, job.preview, job.range, job.pixelScale,
+                           job.reduction, jobStop));
         } catch (const CancelledError&) {
             cancelled = true;
         } catch (const std::exception&) {

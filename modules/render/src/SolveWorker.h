@@ -44,12 +44,16 @@ struct SolvedFrame {
 
 /// Solves the VSS of `depth` (mask = finite depth); exact solves also get
 /// their lighting slopes (`pixelScale`: scene units per pixel per unit of
-/// depth of the view, for the normals' coherence). Throws what vss::solve
+/// depth of the view, for the normals' coherence). A frame drawn at a
+/// reduced size (`reduction` window pixels per render pixel, > 1) is solved
+/// from silhouetteDepth() (ReducedContourDepth.h), normalised over the depth
+/// as read in the visible range mode, so that its iso-lines lie where the
+/// window-size solve puts them; 1 solves `depth` as it is. Throws what vss::solve
 /// throws (CancelledError when `stop` is requested).
 [[nodiscard]] SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                                      const vss::SolverOptions& options, bool preview,
                                      const vss::DepthRange& range, float pixelScale,
-                                     const std::stop_token& stop);
+                                     float reduction, const std::stop_token& stop);
 
 /// One worker thread solving the latest requested view; a newer request
 /// cancels a running stale one (vss::solve's stop token).
@@ -62,6 +66,7 @@ class SolveWorker {
         bool preview = false;
         vss::DepthRange range;
         float pixelScale = 0.0F;  ///< of the view (slopes' normals), see solveFrame()
+        float reduction = 1.0F;   ///< window pixels per render pixel, see solveFrame()
     };
 
     /// `onSolved` is called on the worker thread after a solve that no

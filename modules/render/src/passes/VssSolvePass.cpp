@@ -91,8 +91,9 @@ void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const Data
         status.current = true;
     } else if (in.worker == nullptr) {
         input = SolveInput{r.get(d.depth).value().image, in.depthView};
-        const auto frame = std::make_shared<const SolvedFrame>(solveFrame(
-            in.request, *input.depth, in.options, in.preview, in.range, in.pixelScale, {}));
+        const auto frame = std::make_shared<const SolvedFrame>(
+            solveFrame(in.request, *input.depth, in.options, in.preview, in.range, in.pixelScale,
+                       in.reduction, {}));
         upload(frame);
         status.solveMilliseconds = frame->milliseconds;
         status.current = true;
@@ -104,7 +105,7 @@ void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const Data
         if (!in.worker->requested(in.request)) {
             input = SolveInput{r.get(d.depth).value().image, in.depthView};
             in.worker->submit(SolveWorker::Job{in.request, input.depth, in.options, in.preview,
-                                               in.range, in.pixelScale});
+                                               in.range, in.pixelScale, in.reduction});
         }
         status.pending = true;
         upload(latest);  // the previous VSS, or none
@@ -142,6 +143,7 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
         [&](RenderGraph::Builder& b, Data& d) {
             b.dependsOn("solver", solverKey(inputs.options, inputs.range));
             b.dependsOn("preview", inputs.preview);
+            b.dependsOn("reduction", inputs.reduction);
             d.external = b.read<ExternalFrame>(board::kExternalVss);
             if (!inputs.external) {
                 d.depth = b.read<CpuValue<DepthImage>>(board::kLinearDepthImage);

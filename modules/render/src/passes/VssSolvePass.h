@@ -42,6 +42,7 @@ struct VssSolveInputs {
     std::uint64_t depthView = 0;  ///< the view the depth shows (camera, size, scene)
     std::uint64_t request = 0;    ///< the solve's key: depthView, solver, preview
     float pixelScale = 0.0F;      ///< scene units per pixel per unit of depth
+    float reduction = 1.0F;       ///< window pixels per render pixel (solveFrame())
     glm::ivec2 size{1, 1};
     /// Give the slope texture the render size (the solver's thread fits the
     /// slopes); else a stand-in texel and the shader fits them.
