@@ -10,6 +10,9 @@
 // vss::addNormalCoherence. Prints a Markdown table: median (min-max) ms.
 //
 //   xvfb-run -a settle_path MESH [--runs N] [--sizes 1280x720,1920x1080,3840x2160]
+//                                [--ao-full-resolution 1]
+// (--ao-full-resolution 1: the AO at full resolution at every size, as before
+// issue 19, for an A/B in one build.)
 #include <QGuiApplication>
 #include <algorithm>
 #include <chrono>
@@ -19,6 +22,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -84,11 +88,14 @@ std::string loadAverage() {
 /// Stage name -> times, per size.
 using Samples = std::map<std::string, std::vector<double>>;
 
-void runOnce(const vv::scene::Scene& scene, const Size& size, Samples& samples) {
+void runOnce(const vv::scene::Scene& scene, const Size& size, bool aoFull, Samples& samples) {
     vv::render::OffscreenRenderer renderer;
     vv::render::OffscreenOptions options;
     options.width = size.width;
     options.height = size.height;
+    if (aoFull) {
+        options.ao.fullResolutionPixels = std::numeric_limits<long long>::max();
+    }
     static_cast<void>(renderer.render(scene, options));
     double solvePass = 0.0;
     for (const auto& t : renderer.lastTimings()) {
@@ -128,10 +135,13 @@ int main(int argc, char** argv) {
     }
     ::setenv("VV_PASS_FINISH", "1", 1);
     int runs = 3;
+    bool aoFull = false;
     std::string sizeList = "1280x720,1920x1080,3840x2160";
     for (int i = 2; i + 1 < argc; i += 2) {
         if (std::strcmp(argv[i], "--runs") == 0) {
             runs = std::max(1, std::atoi(argv[i + 1]));
+        } else if (std::strcmp(argv[i], "--ao-full-resolution") == 0) {
+            aoFull = std::atoi(argv[i + 1]) != 0;
         } else if (std::strcmp(argv[i], "--sizes") == 0) {
             sizeList = argv[i + 1];
         }
@@ -144,7 +154,7 @@ int main(int argc, char** argv) {
         std::vector<Samples> samples(sizes.size());
         for (int r = 0; r < runs; ++r) {
             for (std::size_t s = 0; s < sizes.size(); ++s) {
-                runOnce(scene, sizes[s], samples[s]);
+                runOnce(scene, sizes[s], aoFull, samples[s]);
             }
         }
         std::printf("%d runs, %d worker threads, load average %s before, %s after\n\n", runs,

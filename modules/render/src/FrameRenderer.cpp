@@ -594,6 +594,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         graph, TranslucentInputs{
                    .context = context, .camera = camera, .meshLevel = meshLevel, .size = size});
     const AoSettings& ao = settings.ao;
+    const int aoStep = aoStepFor(ao, static_cast<long long>(size.x) * size.y);
     addSsaoPass(graph, SsaoInputs{.context = context,
                                   .useVss = vssSettings.enabled,
                                   .radius = std::max(ao.radius, 1e-6F),
@@ -603,8 +604,9 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                   .axisOffset = glm::vec2(
                                       -0.5F * projection[2][0] * static_cast<float>(size.x),
                                       -0.5F * projection[2][1] * static_cast<float>(size.y)),
-                                  .size = size});
-    addAoBlurPass(graph, AoBlurInputs{.context = context, .size = size});
+                                  .size = size,
+                                  .step = aoStep});
+    addAoBlurPass(graph, AoBlurInputs{.context = context, .size = aoSize(size, aoStep)});
     // With anti-aliasing the FXAA pass draws into the target (upscaling a
     // reduced render size with its bilinear taps); without it, a reduced
     // render size ends with a bilinear blit into the target ("upscale").
@@ -616,6 +618,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                             .useTranslucent = meshes_.hasTranslucent(),
                                             .toTexture = useAa,
                                             .aoStrength = ao.strength,
+                                            .aoStep = aoStep,
                                             .background = settings.background,
                                             .size = size});
     if (settings.antialiasing) {

@@ -17,6 +17,7 @@ struct CompositeInputs {
     /// "upscale"), else into board::kOutput.
     bool toTexture = false;
     float aoStrength = 0.0F;
+    int aoStep = 1;  ///< board::kAo holds every aoStep-th pixel per axis (SsaoInputs::step)
     glm::vec3 background{0.0F};  ///< sRGB
     glm::ivec2 size{1, 1};       ///< render size
 };
