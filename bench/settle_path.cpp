@@ -15,7 +15,6 @@
 // issue 19, for an A/B in one build.)
 #include <QGuiApplication>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -27,6 +26,7 @@
 #include <string>
 #include <vector>
 
+#include "BenchTiming.h"
 #include "vv/core/Parallel.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -35,6 +35,8 @@
 #include "vv/vss/Vss.h"
 
 namespace {
+
+using vv::bench::millisecondsOf;
 
 struct Size {
     int width = 0;
@@ -55,14 +57,6 @@ std::vector<Size> parseSizes(const std::string& text) {
         at = comma + 1;
     }
     return sizes;
-}
-
-template <typename F>
-double millisecondsOf(F&& f) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
 }
 
 /// "median (min-max)"

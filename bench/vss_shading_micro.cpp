@@ -9,7 +9,6 @@
 //
 //   vss_shading_micro DEPTH.pfm [--runs N] [--pixel-scale S]
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -18,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "BenchTiming.h"
 #include "vv/core/Hash.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Pfm.h"
@@ -26,20 +26,14 @@
 
 namespace {
 
+using vv::bench::millisecondsOf;
+
 /// "median (min)" of v: the minimum is the steadier figure on a noisy machine.
 std::string summary(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     char text[64];
     std::snprintf(text, sizeof text, "%.1f (%.1f)", v[v.size() / 2], v.front());
     return text;
-}
-
-template <typename F>
-double millisecondsOf(F&& f) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
 }
 
 }  // namespace
