@@ -73,6 +73,7 @@ namespace image_storage {
 template <typename T>
 struct DefaultInitAllocator : std::allocator<T> {
     template <typename U>
+    // NOLINTNEXTLINE(readability-identifier-naming): the name allocator_traits needs
     struct rebind {
         using other = DefaultInitAllocator<U>;
     };
