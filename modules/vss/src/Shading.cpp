@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ContourSamples.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 
@@ -97,57 +98,12 @@ Image<glm::vec3> heightFieldNormals(ImageView<const float> height, double depthS
 
 namespace {
 
+using detail::kContourReach;
+using detail::kContourStride;
+using detail::nearGaps;
+using detail::SampleRing;
+
 constexpr int kFitRadius = 2;  // a 5x5 window
-
-/// Next to contours the plane is fitted over samples kContourStride pixels
-/// apart, each the mean over kSampleRadius pixels around it (the
-/// silhouette's pixel steps ripple the VSS there:
-/// docs/benchmarks/artefacts.md); that window reaches kContourReach pixels.
-constexpr int kContourStride = 4;
-constexpr int kContourReach = kFitRadius * kContourStride;
-constexpr int kSampleRadius = 2;
-
-/// 1 where a pixel that the fit cannot use (a vessel, no VSS) lies within
-/// `reach` pixels (chessboard); with kContourReach: where the wide window can
-/// miss a sample. Running counts along rows, then along columns.
-Image<std::uint8_t> nearGaps(ImageView<const float> height, ImageView<const std::uint8_t> vessels,
-                             int reach = kContourReach) {
-    const int w = vessels.width();
-    const int h = vessels.height();
-    const auto dilate = [reach](int n, const auto& in, const auto& out) {
-        int count = 0;  // in() over [i - reach, i + reach]
-        for (int i = 0; i < std::min(n, reach); ++i) {
-            count += in(i);
-        }
-        for (int i = 0; i < n; ++i) {
-            if (i + reach < n) {
-                count += in(i + reach);
-            }
-            out(i, count > 0);
-            if (i - reach >= 0) {
-                count -= in(i - reach);
-            }
-        }
-    };
-    Image<std::uint8_t> rows(w, h, 0);
-    Image<std::uint8_t> near(w, h, 0);
-    parallelFor(0, h, 64, [&](long b, long e) {
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            dilate(
-                w,
-                [&](int x) { return vessels(x, y) != 0 || !std::isfinite(height(x, y)) ? 1 : 0; },
-                [&](int x, bool v) { rows(x, y) = v ? 1 : 0; });
-        }
-    });
-    parallelFor(0, w, 64, [&](long b, long e) {
-        for (int x = static_cast<int>(b); x < static_cast<int>(e); ++x) {
-            dilate(
-                h, [&](int y) { return static_cast<int>(rows(x, y)); },
-                [&](int y, bool v) { near(x, y) = v ? 1 : 0; });
-        }
-    });
-    return near;
-}
 
 /// exp(-d^2 / 4) for d = -2..2: the fit's Gaussian weight per axis.
 constexpr std::array<double, 5> kFitTaps = {0.36787944117144233, 0.77880078307140488, 1.0,
@@ -191,111 +147,11 @@ std::optional<glm::dvec2> planeSlope(const PlaneMoments& m) {
     return glm::dvec2((cyy * cxh - cxy * cyh) * invDet, (cxx * cyh - cxy * cxh) * invDet);
 }
 
-/// True where the plane fit may use the pixel: a void pixel with a VSS.
-bool fittable(ImageView<const float> height, ImageView<const std::uint8_t> vessels, int x, int y) {
-    return vessels(x, y) == 0 && std::isfinite(height(x, y));
-}
-
-/// The fit's samples next to contours: for every fittable pixel, the mean
-/// offset (x, y) and height (z) of the fittable pixels within kSampleRadius
-/// (chessboard) around it; NaN elsewhere. A sample sits at its pixels'
-/// centroid, so a plane stays exact where vessels cut its square off.
-/// Separable sums, taken only where `zone` is set; the result is valid
-/// where the zone covers the kSampleRadius rows above and below.
-Image<glm::vec3> smoothedSamples(ImageView<const float> height,
-                                 ImageView<const std::uint8_t> vessels,
-                                 ImageView<const std::uint8_t> zone) {
-    const int w = height.width();
-    const int h = height.height();
-    const auto uw = static_cast<std::size_t>(w);
-    // Per row, over x - r .. x + r: the count, the sum of the x offsets and
-    // the sum of the heights of the fittable pixels (float: the counts and
-    // offsets are small integers, the heights in [0, 1]).
-    Image<float> count(w, h, 0.0F);
-    Image<float> offsetX(w, h, 0.0F);
-    Image<float> sumZ(w, h, 0.0F);
-    parallelFor(0, h, 64, [&](long b, long e) {
-        constexpr std::size_t kRadius = kSampleRadius;
-        std::vector<float> m(uw + 2 * kRadius, 0.0F);
-        std::vector<float> mh(uw + 2 * kRadius, 0.0F);
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            bool any = false;
-            for (int x = 0; x < w; ++x) {
-                any = any || zone(x, y) != 0;
-                const bool fit = fittable(height, vessels, x, y);
-                const auto i = static_cast<std::size_t>(x) + kRadius;
-                m[i] = fit ? 1.0F : 0.0F;
-                mh[i] = fit ? height(x, y) : 0.0F;
-            }
-            if (!any) {
-                continue;
-            }
-            float* c = count.row(y);
-            float* ox = offsetX.row(y);
-            float* z = sumZ.row(y);
-            const std::uint8_t* in = zone.row(y);
-            for (std::size_t x = 0; x < uw; ++x) {
-                if (in[x] == 0) {
-                    continue;
-                }
-                float sc = 0.0F;
-                float so = 0.0F;
-                float sz = 0.0F;
-                for (int k = 0; k <= 2 * kSampleRadius; ++k) {
-                    const float mk = m[x + static_cast<std::size_t>(k)];
-                    sc += mk;
-                    so += mk * static_cast<float>(k - kSampleRadius);
-                    sz += mh[x + static_cast<std::size_t>(k)];
-                }
-                c[x] = sc;
-                ox[x] = so;
-                z[x] = sz;
-            }
-        }
-    });
-    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-    Image<glm::vec3> samples(w, h, glm::vec3(kNaN));
-    parallelFor(0, h, 64, [&](long b, long e) {
-        std::vector<float> sc(uw);
-        std::vector<float> sx(uw);
-        std::vector<float> sy(uw);
-        std::vector<float> sz(uw);
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            std::fill(sc.begin(), sc.end(), 0.0F);
-            std::fill(sx.begin(), sx.end(), 0.0F);
-            std::fill(sy.begin(), sy.end(), 0.0F);
-            std::fill(sz.begin(), sz.end(), 0.0F);
-            for (int j = std::max(0, y - kSampleRadius); j <= std::min(h - 1, y + kSampleRadius);
-                 ++j) {
-                const auto dy = static_cast<float>(j - y);
-                const float* c = count.row(j);
-                const float* ox = offsetX.row(j);
-                const float* z = sumZ.row(j);
-                for (std::size_t x = 0; x < uw; ++x) {
-                    sc[x] += c[x];
-                    sx[x] += ox[x];
-                    sy[x] += c[x] * dy;
-                    sz[x] += z[x];
-                }
-            }
-            glm::vec3* out = samples.row(y);
-            const std::uint8_t* in = zone.row(y);
-            for (int x = 0; x < w; ++x) {
-                if (in[x] != 0 && fittable(height, vessels, x, y)) {
-                    const auto i = static_cast<std::size_t>(x);
-                    out[x] = glm::vec3(sx[i], sy[i], sz[i]) / sc[i];
-                }
-            }
-        }
-    });
-    return samples;
-}
-
-/// The plane fit over the 5x5 window of `samples` (smoothedSamples) `stride`
-/// pixels apart, summed directly (for the few pixels that need the wide window); `support`
-/// receives the window's support.
-std::optional<glm::dvec2> directSlope(ImageView<const glm::vec3> samples, int px, int py,
-                                      int stride, double& support) {
+/// The plane fit over the 5x5 window of `samples` (SampleRing) `stride`
+/// pixels apart, summed directly (for the pixels next to contours);
+/// `support` receives the window's support.
+std::optional<glm::dvec2> directSlope(const SampleRing& samples, int px, int py, int stride,
+                                      double& support) {
     PlaneMoments m;
     double total = 0.0;
     for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
@@ -311,7 +167,7 @@ std::optional<glm::dvec2> directSlope(ImageView<const glm::vec3> samples, int px
             const double w = kFitTaps[static_cast<std::size_t>(dx + kFitRadius)] *
                              kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
             total += w;
-            const glm::vec3 q = samples(x, y);
+            const glm::vec3 q = samples.row(y)[x];
             if (!std::isfinite(q.z)) {
                 continue;  // not fittable
             }
@@ -507,10 +363,6 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
         }
     }
     const Image<std::uint8_t> nearContour = nearGaps(height, vessels);
-    // The wide fit reads samples up to kContourReach from a pixel near a
-    // contour; their means reach kSampleRadius rows further.
-    const Image<glm::vec3> samples = smoothedSamples(
-        height, vessels, nearGaps(height, vessels, 2 * kContourReach + kSampleRadius).view());
     // Bands of 64 rows: each sums 4 rows beyond its own again.
     constexpr long kBand = 64;
     parallelFor(
@@ -524,6 +376,12 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                 ring.load(height, vessels, r);
             }
             RowFits pm(uw);
+            // The wide fit's sample rows y - kContourReach .. y + kContourReach.
+            SampleRing samples(height, vessels);
+            samples.start(y0 - kContourReach);
+            for (int j = y0 - kContourReach; j < y0 + kContourReach; ++j) {
+                samples.advance(j);
+            }
             for (int y = y0; y < y1; ++y) {
                 if (stop.stop_requested()) {
                     return;  // parallelFor throws CancelledError
@@ -539,6 +397,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                 }
                 ring.load(height, vessels, y + kFitRadius);
                 pm.fit(ring, y);
+                samples.advance(y + kContourReach);
                 for (int x = 0; x < w; ++x) {
                     if (vr[x] != 0 || !std::isfinite(hr[x])) {
                         out[x] = glm::vec4(0.0F);  // vessel or no VSS
@@ -555,7 +414,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                         // Next to a contour: the wider window over the staircase.
                         double wideSupport = 1.0;
                         const std::optional<glm::dvec2> wide =
-                            directSlope(samples.view(), x, y, kContourStride, wideSupport);
+                            directSlope(samples, x, y, kContourStride, wideSupport);
                         if (wide && wideSupport < 0.999) {
                             fit = wide;
                         }
