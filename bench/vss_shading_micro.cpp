@@ -3,11 +3,12 @@
 // fast VSS solve of a depth image, then the lighting slopes
 // (vss::fittedSlopes) and the normal coherence (vss::addNormalCoherence),
 // each timed separately (median of runs). The depth comes from
-// `vesselview-cli render ... --depth-out DEPTH.pfm`.
+// `vesselview-cli render ... --depth-out DEPTH.pfm`. Also prints a hash of
+// the slopes with their coherence, to check a faster computation against
+// the one before it bit for bit.
 //
 //   vss_shading_micro DEPTH.pfm [--runs N] [--pixel-scale S]
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -16,6 +17,8 @@
 #include <string>
 #include <vector>
 
+#include "BenchTiming.h"
+#include "vv/core/Hash.h"
 #include "vv/vss/DepthNormalization.h"
 #include "vv/vss/Pfm.h"
 #include "vv/vss/Shading.h"
@@ -23,20 +26,14 @@
 
 namespace {
 
+using vv::bench::millisecondsOf;
+
 /// "median (min)" of v: the minimum is the steadier figure on a noisy machine.
 std::string summary(std::vector<double> v) {
     std::sort(v.begin(), v.end());
     char text[64];
     std::snprintf(text, sizeof text, "%.1f (%.1f)", v[v.size() / 2], v.front());
     return text;
-}
-
-template <typename F>
-double millisecondsOf(F&& f) {
-    const auto start = std::chrono::steady_clock::now();
-    f();
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-        .count();
 }
 
 }  // namespace
@@ -61,6 +58,7 @@ int main(int argc, char** argv) {
         std::vector<double> solveMs;
         std::vector<double> slopeMs;
         std::vector<double> coherenceMs;
+        std::uint64_t hash = 0;
         for (int r = 0; r < runs; ++r) {
             vv::vss::VssResult result;
             solveMs.push_back(millisecondsOf([&] {
@@ -74,12 +72,16 @@ int main(int argc, char** argv) {
                     slopes, result.height.view(), mask.view(),
                     vv::vss::SlopeScale{result.dmin, result.dmax, pixelScale});
             }));
+            hash =
+                vv::Hasher().bulk(slopes.data(), slopes.pixelCount() * sizeof(glm::vec4)).result();
         }
         std::printf(
             "| image | runs | solve ms | slopes ms | coherence ms |\n|---|---:|---:|---:|---:|\n");
         std::printf("| %dx%d | %d | %s | %s | %s |\n", depth.width(), depth.height(), runs,
                     summary(solveMs).c_str(), summary(slopeMs).c_str(),
                     summary(coherenceMs).c_str());
+        // The same bits before and after a change of how they are computed.
+        std::printf("slopes + coherence FNV: %016llx\n", static_cast<unsigned long long>(hash));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "vss_shading_micro: %s\n", e.what());
         return 1;

@@ -15,7 +15,8 @@ uniform sampler2D uVessels;  // RGBA8, alpha 1 on vessel pixels, 0 elsewhere
 uniform sampler2D uVss;      // RGBA8, alpha = VSS opacity (0 where there is no VSS)
 uniform bool uUseVss;
 uniform vec3 uBackground;    // sRGB
-uniform sampler2D uAo;       // R8: blurred occlusion in [0, 1]
+uniform sampler2D uAo;       // R8: blurred occlusion in [0, 1], bilinear
+uniform float uAoStep;       // 1, or 2: uAo holds every second pixel per axis
 uniform bool uUseAo;
 uniform float uAoStrength;   // 0..1
 // The translucent objects (premultiplied colour, coverage), over everything.
@@ -30,7 +31,12 @@ void main() {
     vec4 vessel = texelFetch(uVessels, p, 0);
     vec3 color = uBackground;
     float visibility = 0.0;
-    float occlusion = uUseAo ? clamp(uAoStrength, 0.0, 1.0) * texelFetch(uAo, p, 0).r : 0.0;
+    // uAo's texel i is this frame's pixel i * uAoStep: at step 1 the centre
+    // of pixel p is the centre of texel p (the texel itself).
+    vec2 aoTexel = (gl_FragCoord.xy - 0.5) / uAoStep + 0.5;
+    float occlusion = uUseAo ? clamp(uAoStrength, 0.0, 1.0) *
+                                   texture(uAo, aoTexel / vec2(textureSize(uAo, 0))).r
+                             : 0.0;
     if (uUseVss) {
         vec4 vss = texelFetch(uVss, p, 0);
         color = mix(color, vss.rgb * (1.0 - occlusion), vss.a);

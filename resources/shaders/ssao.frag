@@ -21,6 +21,7 @@ uniform float uPixelScale;       // 2 tan(fov / 2) / H
 uniform vec2 uAxisOffset;        // the view axis's pixel minus the centre (off-axis tiles; else 0)
 uniform float uRadius;           // scene units
 uniform int uSamples;
+uniform int uStep;               // 1, or 2: this target holds every second pixel per axis
 
 out vec4 fragColor;
 
@@ -89,7 +90,8 @@ vec3 vssNormal(ivec2 p, vec3 centre) {
 
 void main() {
     gSize = textureSize(uLinearDepth, 0);
-    ivec2 p = ivec2(gl_FragCoord.xy);
+    ivec2 target = ivec2(gl_FragCoord.xy);
+    ivec2 p = target * uStep;  // the frame's pixel
     bool vessel;
     float depth = surfaceDepth(p, vessel);
     if (depth <= 0.0) {
@@ -102,7 +104,8 @@ void main() {
     // 4x4 ordered pattern: rotation and radius offset per pixel.
     const float pattern[16] = float[16](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0,
                                         1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
-    float k = pattern[(p.y & 3) * 4 + (p.x & 3)] / 16.0;
+    // (per target pixel: the blur averages it over 4x4 of them)
+    float k = pattern[(target.y & 3) * 4 + (target.x & 3)] / 16.0;
     float rotation = 6.2831853 * k;
     float pixels = clamp(uRadius / max(depth * uPixelScale, 1e-12), 1.0, 96.0);
     float radius2 = 4.0 * uRadius * uRadius;  // occluders count up to 2 radii away in depth

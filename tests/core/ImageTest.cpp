@@ -29,6 +29,25 @@ TEST(Image, DefaultIsEmptyAndBadSizesThrow) {
     EXPECT_THROW(vv::Image<int>(4, 4, 0, 3), vv::InvalidArgumentError);
 }
 
+TEST(Image, UninitialisedPixelsHaveTheSizeAndKeepWhatIsWritten) {
+    // Pixels are unspecified until written (a large image's pages are first
+    // touched by the parallel loop that writes them); size and stride are set.
+    vv::Image<float> img(7, 4, vv::UninitialisedPixels{});
+    EXPECT_EQ(img.width(), 7);
+    EXPECT_EQ(img.height(), 4);
+    EXPECT_EQ(img.stride(), 7);
+    img.fill(2.0F);
+    img(6, 3) = 5.0F;
+    EXPECT_FLOAT_EQ(img(0, 0), 2.0F);
+    EXPECT_FLOAT_EQ(img(6, 3), 5.0F);
+    // A copy is a copy; the filling constructor still fills.
+    const vv::Image<float> copy = img;
+    EXPECT_FLOAT_EQ(copy(6, 3), 5.0F);
+    EXPECT_FLOAT_EQ(vv::Image<float>(3, 2, 1.5F)(2, 1), 1.5F);
+    EXPECT_TRUE(vv::Image<int>(0, 3, vv::UninitialisedPixels{}).empty());
+    EXPECT_THROW(vv::Image<int>(-1, 3, vv::UninitialisedPixels{}), vv::InvalidArgumentError);
+}
+
 TEST(Image, SubViewAliasesStorage) {
     vv::Image<int> img(6, 4, 0);
     auto sub = img.view().sub(2, 1, 3, 2);

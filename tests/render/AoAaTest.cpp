@@ -171,6 +171,55 @@ TEST_F(AoAaTest, AoDarkensTheVssNextToVesselsAndLeavesFarAreasAlone) {
     EXPECT_LT(farWorst, 6.0);
 }
 
+TEST_F(AoAaTest, HalfResolutionAoKeepsTheFullResolutionShade) {
+    // Large frames (AoSettings::fullResolutionPixels, 4K UHD by default)
+    // compute the occlusion at half resolution per axis; forced here on a
+    // small frame. The shade it casts must stay that of the full resolution:
+    // the mean change is a small part of the AO's own effect, and no pixel
+    // away from the vessels' edges changes visibly.
+    auto renderer = makeRenderer();
+    ASSERT_TRUE(renderer);
+    const auto scene = twoTubes();
+    // Small pixels, as on a 4K screen: the AO's disc spans ~25 of them.
+    auto o = vv::render::test::exactOptions(960, 720);
+    o.antialiasing = false;
+    o.ao.radius = 1.5F;
+    o.ao.strength = 1.0F;
+    const auto mask = vesselMask(*renderer, scene, o);
+    o.ao.enabled = false;
+    const QImage off = renderer->render(scene, o);
+    o.ao.enabled = true;
+    const QImage full = renderer->render(scene, o);
+    o.ao.fullResolutionPixels = 0;
+    const QImage half = renderer->render(scene, o);
+    keep(full, "ao-full-resolution");
+    keep(half, "ao-half-resolution");
+    const int w = full.width();
+    const int h = full.height();
+    const auto dist = distanceTo(mask, w, h, 3);
+    double effect = 0.0;
+    double change = 0.0;
+    double worstInside = 0.0;  // >= 3 px from a vessel edge
+    long changed = 0;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const double f = luma(full.pixel(x, y));
+            const double d = std::abs(luma(half.pixel(x, y)) - f);
+            effect += std::abs(f - luma(off.pixel(x, y)));
+            change += d;
+            changed += d > 0.0 ? 1 : 0;
+            if (dist[static_cast<std::size_t>(y * w + x)] >= 3) {
+                worstInside = std::max(worstInside, d);
+            }
+        }
+    }
+    EXPECT_GT(changed, 100) << "the half-resolution AO did not run";
+    EXPECT_GT(effect / (w * h), 1.0) << "too little AO to compare";
+    EXPECT_LT(change, 0.15 * effect)
+        << "mean change " << change / (w * h) << ", AO effect " << effect / (w * h);
+    EXPECT_LT(worstInside, 12.0);
+}
+
 TEST_F(AoAaTest, FxaaSoftensStairStepsWithoutMovingTheSilhouette) {
     auto renderer = makeRenderer();
     ASSERT_TRUE(renderer);

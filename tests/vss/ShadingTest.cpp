@@ -4,12 +4,17 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <limits>
+#include <optional>
 #include <random>
 #include <stop_token>
+#include <string>
 #include <utility>
+#include <vector>
 
 #include "vv/core/Error.h"
 #include "vv/vss/Shading.h"
@@ -277,22 +282,21 @@ struct RandomScene {
     Image<std::uint8_t> vessels;
 };
 
-RandomScene randomScene(int scene, std::mt19937& rng) {
+/// A random scene of w x h with `blobs` vessel blobs (see randomScene()).
+RandomScene randomSceneOfSize(int w, int h, int scene, int blobs, std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0F, 1.0F);
-    const int w = 37 + scene * 11;
-    const int h = 29 + scene * 5;
     RandomScene out{Image<float>(w, h), Image<std::uint8_t>(w, h, 0)};
     for (int y = 0; y < h; ++y) {
         for (int x = 0; x < w; ++x) {
             out.z(x, y) = 0.5F + 0.3F * std::sin(0.21F * x + scene) * std::cos(0.17F * y);
         }
     }
-    for (int blob = 0; blob < 6; ++blob) {
+    for (int blob = 0; blob < blobs; ++blob) {
         const int cx = static_cast<int>(u(rng) * w);
         const int cy = static_cast<int>(u(rng) * h);
         const int r = 2 + static_cast<int>(u(rng) * 5);
-        for (int y = 0; y < h; ++y) {
-            for (int x = 0; x < w; ++x) {
+        for (int y = std::max(0, cy - r); y <= std::min(h - 1, cy + r); ++y) {
+            for (int x = std::max(0, cx - r); x <= std::min(w - 1, cx + r); ++x) {
                 if ((x - cx) * (x - cx) + (y - cy) * (y - cy) <= r * r) {
                     out.vessels(x, y) = 1;
                     out.z(x, y) = u(rng);
@@ -304,6 +308,10 @@ RandomScene randomScene(int scene, std::mt19937& rng) {
         out.z(static_cast<int>(u(rng) * w), static_cast<int>(u(rng) * h)) = kNaN;
     }
     return out;
+}
+
+RandomScene randomScene(int scene, std::mt19937& rng) {
+    return randomSceneOfSize(37 + scene * 11, 29 + scene * 5, scene, 6, rng);
 }
 
 TEST(FittedSlopesTest, EqualsThePerPixelFitOnRandomScenes) {
@@ -438,6 +446,137 @@ TEST(NormalCoherenceTest, OneOnAPlaneLessWhereANeighbourIsAVessel) {
     Image<std::uint8_t> small(4, 4, 0);
     EXPECT_THROW(addNormalCoherence(slopes, z.view(), small.view(), SlopeScale{0.0, 1.0, 1.0}),
                  InvalidArgumentError);
+}
+
+// --- Bands, sizes and threads (issue 19: slopes and coherence at 4K) ----------
+
+/// Sets VV_THREADS (parallelFor's worker count) for its lifetime.
+class ScopedThreads {
+  public:
+    explicit ScopedThreads(const char* threads) {
+        if (const char* old = std::getenv("VV_THREADS")) {
+            old_ = old;
+        }
+        ::setenv("VV_THREADS", threads, 1);
+    }
+    ~ScopedThreads() {
+        if (old_) {
+            ::setenv("VV_THREADS", old_->c_str(), 1);
+        } else {
+            ::unsetenv("VV_THREADS");
+        }
+    }
+    ScopedThreads(const ScopedThreads&) = delete;
+    ScopedThreads& operator=(const ScopedThreads&) = delete;
+    ScopedThreads(ScopedThreads&&) = delete;
+    ScopedThreads& operator=(ScopedThreads&&) = delete;
+
+  private:
+    std::optional<std::string> old_;
+};
+
+/// fittedSlopes then addNormalCoherence of `scene`.
+Image<glm::vec4> slopesWithCoherence(const RandomScene& scene, const SlopeScale& scale) {
+    auto slopes = fittedSlopes(scene.z.view(), scene.vessels.view());
+    addNormalCoherence(slopes, scene.z.view(), scene.vessels.view(), scale);
+    return slopes;
+}
+
+/// The largest differences from referenceSlope() (x, y, support) and
+/// referenceCoherence() over the pixels of `rows`.
+struct ReferenceError {
+    double slope = 0.0;
+    double coherence = 0.0;
+    int pixels = 0;
+};
+
+ReferenceError errorAgainstTheDefinition(const RandomScene& scene, const SlopeScale& scale,
+                                         const std::vector<int>& rows) {
+    const auto slopes = fittedSlopes(scene.z.view(), scene.vessels.view());
+    auto coherent = slopes;
+    addNormalCoherence(coherent, scene.z.view(), scene.vessels.view(), scale);
+    ReferenceError e;
+    for (const int y : rows) {
+        for (int x = 0; x < scene.z.width(); ++x) {
+            if (scene.vessels(x, y) != 0 || !std::isfinite(scene.z(x, y))) {
+                EXPECT_EQ(coherent(x, y), glm::vec4(0.0F)) << x << "," << y;
+                continue;
+            }
+            const glm::dvec3 ref = referenceSlope(scene.z, scene.vessels, x, y);
+            const glm::vec4 s = slopes(x, y);
+            e.slope = std::max(
+                {e.slope, std::abs(s.x - ref.x), std::abs(s.y - ref.y), std::abs(s.z - ref.z)});
+            e.coherence = std::max(
+                e.coherence, std::abs(coherent(x, y).w -
+                                      referenceCoherence(scene.z, scene.vessels, s, x, y, scale)));
+            ++e.pixels;
+        }
+    }
+    return e;
+}
+
+std::vector<int> allRows(int h) {
+    std::vector<int> rows(static_cast<std::size_t>(h));
+    for (int y = 0; y < h; ++y) {
+        rows[static_cast<std::size_t>(y)] = y;
+    }
+    return rows;
+}
+
+TEST(FittedSlopesTest, EqualsTheDefinitionAtOddSizesAcrossRowBands) {
+    // Taller than a band of rows (the implementation works in bands and
+    // keeps a few rows around each): every row of every band matches.
+    std::mt19937 rng(19);
+    const SlopeScale scale{20.0, 100.0, 0.01};
+    for (const auto& [w, h] : {std::pair{333, 217}, {23, 301}, {401, 65}, {129, 128}, {31, 7}}) {
+        const RandomScene scene = randomSceneOfSize(w, h, w % 7, 1 + w * h / 600, rng);
+        const ReferenceError e = errorAgainstTheDefinition(scene, scale, allRows(h));
+        EXPECT_LT(e.slope, 2e-6) << w << "x" << h;
+        EXPECT_LT(e.coherence, 2e-5) << w << "x" << h;
+        EXPECT_GT(e.pixels, w * h / 4) << w << "x" << h;
+    }
+}
+
+TEST(FittedSlopesTest, EqualsTheDefinitionOnASynthetic4kFrame) {
+    std::mt19937 rng(4);
+    const RandomScene scene = randomSceneOfSize(3840, 2160, 3, 4000, rng);
+    // Rows around band edges (every 32nd row and its neighbours) and a few
+    // others: the reference is slow (O(50) per pixel, in double).
+    std::vector<int> rows;
+    for (int y = 0; y < 2160; y += 32) {
+        for (const int r : {y - 3, y - 1, y, y + 2}) {
+            if (r >= 0 && r < 2160) {
+                rows.push_back(r);
+            }
+        }
+    }
+    rows.push_back(2159);
+    const ReferenceError e =
+        errorAgainstTheDefinition(scene, SlopeScale{20.0, 100.0, 0.0005}, rows);
+    EXPECT_LT(e.slope, 2e-6);
+    EXPECT_LT(e.coherence, 2e-5);
+    EXPECT_GT(e.pixels, 3840 * static_cast<int>(rows.size()) / 2);
+}
+
+TEST(FittedSlopesTest, ParallelEqualsSerialBitForBit) {
+    std::mt19937 rng(23);
+    for (const auto& [w, h] : {std::pair{333, 217}, {3840, 2160}}) {
+        const RandomScene scene = randomSceneOfSize(w, h, 1, 1 + w * h / 2000, rng);
+        const SlopeScale scale{20.0, 100.0, 2.0 * 0.268 / h};
+        Image<glm::vec4> serial;
+        {
+            const ScopedThreads one("1");
+            serial = slopesWithCoherence(scene, scale);
+        }
+        for (const char* threads : {"2", "3", "8"}) {
+            const ScopedThreads many(threads);
+            const Image<glm::vec4> parallel = slopesWithCoherence(scene, scale);
+            EXPECT_EQ(std::memcmp(serial.data(), parallel.data(),
+                                  serial.pixelCount() * sizeof(glm::vec4)),
+                      0)
+                << w << "x" << h << " on " << threads << " threads";
+        }
+    }
 }
 
 }  // namespace

@@ -619,6 +619,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         graph, TranslucentInputs{
                    .context = context, .camera = camera, .meshLevel = meshLevel, .size = size});
     const AoSettings& ao = settings.ao;
+    const int aoStep = aoStepFor(ao, static_cast<long long>(size.x) * size.y);
     addSsaoPass(graph, SsaoInputs{.context = context,
                                   .useVss = vssSettings.enabled,
                                   .radius = std::max(ao.radius, 1e-6F),
@@ -628,8 +629,9 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                   .axisOffset = glm::vec2(
                                       -0.5F * projection[2][0] * static_cast<float>(size.x),
                                       -0.5F * projection[2][1] * static_cast<float>(size.y)),
-                                  .size = size});
-    addAoBlurPass(graph, AoBlurInputs{.context = context, .size = size});
+                                  .size = size,
+                                  .step = aoStep});
+    addAoBlurPass(graph, AoBlurInputs{.context = context, .size = aoSize(size, aoStep)});
     addCompositePass(graph, CompositeInputs{.context = context,
                                             .useVss = vssSettings.enabled,
                                             .useAo = ao.enabled && ao.strength > 0.0F,
@@ -637,6 +639,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                             .toTexture = useAa,
                                             .vssVisibilityAlpha = targetIsoLines > 0,
                                             .aoStrength = ao.strength,
+                                            .aoStep = aoStep,
                                             .background = settings.background,
                                             .size = size});
     if (settings.antialiasing) {

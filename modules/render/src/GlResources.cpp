@@ -9,8 +9,10 @@
 #include <QSurfaceFormat>
 #include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <span>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vv/core/Error.h"
@@ -205,6 +207,8 @@ GlPassObserver::GlPassObserver() : gl_(&currentGl41()), context_(QOpenGLContext:
     GLint bits = 0;
     gl_->glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
     timerQueries_ = gl_->glGetError() == GL_NO_ERROR && bits > 0;
+    const char* finish = std::getenv("VV_PASS_FINISH");
+    finishEachPass_ = finish != nullptr && std::string_view(finish) == "1";
 }
 
 GlPassObserver::~GlPassObserver() {
@@ -239,6 +243,9 @@ void GlPassObserver::beginPass(std::string_view pass) {
         }
         gl_->glQueryCounter(queries_[2 * index], GL_TIMESTAMP);
     }
+    if (finishEachPass_) {
+        gl_->glFinish();
+    }
     start_ = Clock::now();
 }
 
@@ -246,6 +253,9 @@ void GlPassObserver::endPass(std::string_view pass) {
     static_cast<void>(pass);
     if (timings_.empty()) {
         return;
+    }
+    if (finishEachPass_) {
+        gl_->glFinish();
     }
     timings_.back().cpuMilliseconds =
         std::chrono::duration<double, std::milli>(Clock::now() - start_).count();

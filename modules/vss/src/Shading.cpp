@@ -13,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "ContourSamples.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 
@@ -97,57 +98,12 @@ Image<glm::vec3> heightFieldNormals(ImageView<const float> height, double depthS
 
 namespace {
 
+using detail::kContourReach;
+using detail::kContourStride;
+using detail::nearGaps;
+using detail::SampleRing;
+
 constexpr int kFitRadius = 2;  // a 5x5 window
-
-/// Next to contours the plane is fitted over samples kContourStride pixels
-/// apart, each the mean over kSampleRadius pixels around it (the
-/// silhouette's pixel steps ripple the VSS there:
-/// docs/benchmarks/artefacts.md); that window reaches kContourReach pixels.
-constexpr int kContourStride = 4;
-constexpr int kContourReach = kFitRadius * kContourStride;
-constexpr int kSampleRadius = 2;
-
-/// 1 where a pixel that the fit cannot use (a vessel, no VSS) lies within
-/// `reach` pixels (chessboard); with kContourReach: where the wide window can
-/// miss a sample. Running counts along rows, then along columns.
-Image<std::uint8_t> nearGaps(ImageView<const float> height, ImageView<const std::uint8_t> vessels,
-                             int reach = kContourReach) {
-    const int w = vessels.width();
-    const int h = vessels.height();
-    const auto dilate = [reach](int n, const auto& in, const auto& out) {
-        int count = 0;  // in() over [i - reach, i + reach]
-        for (int i = 0; i < std::min(n, reach); ++i) {
-            count += in(i);
-        }
-        for (int i = 0; i < n; ++i) {
-            if (i + reach < n) {
-                count += in(i + reach);
-            }
-            out(i, count > 0);
-            if (i - reach >= 0) {
-                count -= in(i - reach);
-            }
-        }
-    };
-    Image<std::uint8_t> rows(w, h, 0);
-    Image<std::uint8_t> near(w, h, 0);
-    parallelFor(0, h, 64, [&](long b, long e) {
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            dilate(
-                w,
-                [&](int x) { return vessels(x, y) != 0 || !std::isfinite(height(x, y)) ? 1 : 0; },
-                [&](int x, bool v) { rows(x, y) = v ? 1 : 0; });
-        }
-    });
-    parallelFor(0, w, 64, [&](long b, long e) {
-        for (int x = static_cast<int>(b); x < static_cast<int>(e); ++x) {
-            dilate(
-                h, [&](int y) { return static_cast<int>(rows(x, y)); },
-                [&](int y, bool v) { near(x, y) = v ? 1 : 0; });
-        }
-    });
-    return near;
-}
 
 /// exp(-d^2 / 4) for d = -2..2: the fit's Gaussian weight per axis.
 constexpr std::array<double, 5> kFitTaps = {0.36787944117144233, 0.77880078307140488, 1.0,
@@ -191,111 +147,11 @@ std::optional<glm::dvec2> planeSlope(const PlaneMoments& m) {
     return glm::dvec2((cyy * cxh - cxy * cyh) * invDet, (cxx * cyh - cxy * cxh) * invDet);
 }
 
-/// True where the plane fit may use the pixel: a void pixel with a VSS.
-bool fittable(ImageView<const float> height, ImageView<const std::uint8_t> vessels, int x, int y) {
-    return vessels(x, y) == 0 && std::isfinite(height(x, y));
-}
-
-/// The fit's samples next to contours: for every fittable pixel, the mean
-/// offset (x, y) and height (z) of the fittable pixels within kSampleRadius
-/// (chessboard) around it; NaN elsewhere. A sample sits at its pixels'
-/// centroid, so a plane stays exact where vessels cut its square off.
-/// Separable sums, taken only where `zone` is set; the result is valid
-/// where the zone covers the kSampleRadius rows above and below.
-Image<glm::vec3> smoothedSamples(ImageView<const float> height,
-                                 ImageView<const std::uint8_t> vessels,
-                                 ImageView<const std::uint8_t> zone) {
-    const int w = height.width();
-    const int h = height.height();
-    const auto uw = static_cast<std::size_t>(w);
-    // Per row, over x - r .. x + r: the count, the sum of the x offsets and
-    // the sum of the heights of the fittable pixels (float: the counts and
-    // offsets are small integers, the heights in [0, 1]).
-    Image<float> count(w, h, 0.0F);
-    Image<float> offsetX(w, h, 0.0F);
-    Image<float> sumZ(w, h, 0.0F);
-    parallelFor(0, h, 64, [&](long b, long e) {
-        constexpr std::size_t kRadius = kSampleRadius;
-        std::vector<float> m(uw + 2 * kRadius, 0.0F);
-        std::vector<float> mh(uw + 2 * kRadius, 0.0F);
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            bool any = false;
-            for (int x = 0; x < w; ++x) {
-                any = any || zone(x, y) != 0;
-                const bool fit = fittable(height, vessels, x, y);
-                const auto i = static_cast<std::size_t>(x) + kRadius;
-                m[i] = fit ? 1.0F : 0.0F;
-                mh[i] = fit ? height(x, y) : 0.0F;
-            }
-            if (!any) {
-                continue;
-            }
-            float* c = count.row(y);
-            float* ox = offsetX.row(y);
-            float* z = sumZ.row(y);
-            const std::uint8_t* in = zone.row(y);
-            for (std::size_t x = 0; x < uw; ++x) {
-                if (in[x] == 0) {
-                    continue;
-                }
-                float sc = 0.0F;
-                float so = 0.0F;
-                float sz = 0.0F;
-                for (int k = 0; k <= 2 * kSampleRadius; ++k) {
-                    const float mk = m[x + static_cast<std::size_t>(k)];
-                    sc += mk;
-                    so += mk * static_cast<float>(k - kSampleRadius);
-                    sz += mh[x + static_cast<std::size_t>(k)];
-                }
-                c[x] = sc;
-                ox[x] = so;
-                z[x] = sz;
-            }
-        }
-    });
-    constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
-    Image<glm::vec3> samples(w, h, glm::vec3(kNaN));
-    parallelFor(0, h, 64, [&](long b, long e) {
-        std::vector<float> sc(uw);
-        std::vector<float> sx(uw);
-        std::vector<float> sy(uw);
-        std::vector<float> sz(uw);
-        for (int y = static_cast<int>(b); y < static_cast<int>(e); ++y) {
-            std::fill(sc.begin(), sc.end(), 0.0F);
-            std::fill(sx.begin(), sx.end(), 0.0F);
-            std::fill(sy.begin(), sy.end(), 0.0F);
-            std::fill(sz.begin(), sz.end(), 0.0F);
-            for (int j = std::max(0, y - kSampleRadius); j <= std::min(h - 1, y + kSampleRadius);
-                 ++j) {
-                const auto dy = static_cast<float>(j - y);
-                const float* c = count.row(j);
-                const float* ox = offsetX.row(j);
-                const float* z = sumZ.row(j);
-                for (std::size_t x = 0; x < uw; ++x) {
-                    sc[x] += c[x];
-                    sx[x] += ox[x];
-                    sy[x] += c[x] * dy;
-                    sz[x] += z[x];
-                }
-            }
-            glm::vec3* out = samples.row(y);
-            const std::uint8_t* in = zone.row(y);
-            for (int x = 0; x < w; ++x) {
-                if (in[x] != 0 && fittable(height, vessels, x, y)) {
-                    const auto i = static_cast<std::size_t>(x);
-                    out[x] = glm::vec3(sx[i], sy[i], sz[i]) / sc[i];
-                }
-            }
-        }
-    });
-    return samples;
-}
-
-/// The plane fit over the 5x5 window of `samples` (smoothedSamples) `stride`
-/// pixels apart, summed directly (for the few pixels that need the wide window); `support`
-/// receives the window's support.
-std::optional<glm::dvec2> directSlope(ImageView<const glm::vec3> samples, int px, int py,
-                                      int stride, double& support) {
+/// The plane fit over the 5x5 window of `samples` (SampleRing) `stride`
+/// pixels apart, summed directly (for the pixels next to contours);
+/// `support` receives the window's support.
+std::optional<glm::dvec2> directSlope(const SampleRing& samples, int px, int py, int stride,
+                                      double& support) {
     PlaneMoments m;
     double total = 0.0;
     for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
@@ -311,7 +167,7 @@ std::optional<glm::dvec2> directSlope(ImageView<const glm::vec3> samples, int px
             const double w = kFitTaps[static_cast<std::size_t>(dx + kFitRadius)] *
                              kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
             total += w;
-            const glm::vec3 q = samples(x, y);
+            const glm::vec3 q = samples.row(y)[x];
             if (!std::isfinite(q.z)) {
                 continue;  // not fittable
             }
@@ -333,37 +189,130 @@ std::optional<glm::dvec2> directSlope(ImageView<const glm::vec3> samples, int px
     return planeSlope(m);
 }
 
-/// Per-row sums along x of the separable fit (structure of arrays).
-struct RowSums {
-    std::vector<double> a0, a1, a2, h0, h1;  // sum g m {1, dx, dx^2, h, dx h}
-    void resize(std::size_t n) {
-        for (auto* v : {&a0, &a1, &a2, &h0, &h1}) {
-            v->assign(n, 0.0);
+/// The separable fit's sums along x of the rows a band needs, five rows at a
+/// time: row r lives in slot r mod 5, so each row is summed once per band
+/// and the ring stays in cache (whole-band buffers of a 4K frame were
+/// megabytes per band, allocated and page-faulted again for every band).
+class RowSumRing {
+  public:
+    explicit RowSumRing(int width)
+        : width_(static_cast<std::size_t>(width)),
+          sums_(kRows * kArrays * width_, 0.0),
+          mask_(width_ + 2 * kFitRadius, 0.0),
+          maskedHeight_(width_ + 2 * kFitRadius, 0.0) {}
+
+    /// sum g m {1, dx, dx^2, h, dx h} of row r (index 0..4), r any integer.
+    [[nodiscard]] const double* sum(int r, int index) const {
+        return sums_.data() + (slot(r) * kArrays + static_cast<std::size_t>(index)) * width_;
+    }
+
+    /// Sums row r of the image into its slot; zeros for rows outside it.
+    void load(ImageView<const float> height, ImageView<const std::uint8_t> vessels, int r) {
+        double* out = sums_.data() + slot(r) * kArrays * width_;
+        if (r < 0 || r >= height.height()) {
+            std::fill(out, out + kArrays * width_, 0.0);
+            return;
+        }
+        const float* hr = height.row(r);
+        const std::uint8_t* vr = vessels.row(r);
+        // Padded with two zero columns on either side, so the loop needs
+        // no bounds (a zero term changes no sum).
+        for (std::size_t x = 0; x < width_; ++x) {
+            const bool fit = vr[x] == 0 && std::isfinite(hr[x]);
+            mask_[x + kFitRadius] = fit ? 1.0 : 0.0;
+            maskedHeight_[x + kFitRadius] = fit ? static_cast<double>(hr[x]) : 0.0;
+        }
+        double* a0 = out;
+        double* a1 = out + width_;
+        double* a2 = out + 2 * width_;
+        double* h0 = out + 3 * width_;
+        double* h1 = out + 4 * width_;
+        const double* mp = mask_.data();
+        const double* hp = maskedHeight_.data();
+        const std::size_t n = width_;
+#pragma omp simd
+        for (std::size_t x = 0; x < n; ++x) {
+            double s0 = 0.0;
+            double s1 = 0.0;
+            double s2 = 0.0;
+            double t0 = 0.0;
+            double t1 = 0.0;
+            for (int k = 0; k <= 2 * kFitRadius; ++k) {
+                const double dx = k - kFitRadius;
+                const double g = kFitTaps[static_cast<std::size_t>(k)];
+                const double gm = g * mp[x + static_cast<std::size_t>(k)];
+                const double gh = g * hp[x + static_cast<std::size_t>(k)];
+                s0 += gm;
+                s1 += gm * dx;
+                s2 += gm * dx * dx;
+                t0 += gh;
+                t1 += gh * dx;
+            }
+            a0[x] = s0;
+            a1[x] = s1;
+            a2[x] = s2;
+            h0[x] = t0;
+            h1[x] = t1;
         }
     }
+
+  private:
+    static constexpr std::size_t kRows = 2 * kFitRadius + 1;
+    static constexpr std::size_t kArrays = 5;
+    [[nodiscard]] static std::size_t slot(int r) {
+        return static_cast<std::size_t>(((r % 5) + 5) % 5);
+    }
+    std::size_t width_;
+    std::vector<double> sums_;
+    std::vector<double> mask_;
+    std::vector<double> maskedHeight_;
 };
 
 /// One image row's PlaneMoments, one entry per pixel (structure of arrays,
 /// so the sums and the plane solve run as vector loops).
-struct RowMoments {
+struct RowFits {
     std::vector<double> sw, sx, sy, sxx, sxy, syy, sh, sxh, syh;
     std::vector<double> slopeX, slopeY;
     std::vector<std::uint8_t> fitted;  // 1 where planeSlope() would give a slope
-    explicit RowMoments(std::size_t n) {
+    explicit RowFits(std::size_t n) {
         for (auto* v : {&sw, &sx, &sy, &sxx, &sxy, &syy, &sh, &sxh, &syh, &slopeX, &slopeY}) {
             v->assign(n, 0.0);
         }
         fitted.assign(n, 0);
     }
-    void clear() {
+
+    /// The PlaneMoments of each pixel of row y from the row sums of rows
+    /// y - 2 .. y + 2, then planeSlope() of each, branch-free: the same
+    /// operations in the same order, so the same bits.
+    void fit(const RowSumRing& ring, int y) {
         for (auto* v : {&sw, &sx, &sy, &sxx, &sxy, &syy, &sh, &sxh, &syh}) {
             std::fill(v->begin(), v->end(), 0.0);
         }
-    }
-    /// planeSlope() of every entry, branch-free: the same operations in the
-    /// same order, so the same bits.
-    void solvePlanes() {
         const std::size_t n = sw.size();
+        for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
+            const double g = kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
+            const double* a0 = ring.sum(y + dy, 0);
+            const double* a1 = ring.sum(y + dy, 1);
+            const double* a2 = ring.sum(y + dy, 2);
+            const double* h0 = ring.sum(y + dy, 3);
+            const double* h1 = ring.sum(y + dy, 4);
+            const double fy = dy;
+#pragma omp simd
+            for (std::size_t x = 0; x < n; ++x) {
+                const double b0 = g * a0[x];
+                const double b1 = g * a1[x];
+                const double c0 = g * h0[x];
+                sw[x] += b0;
+                sx[x] += b1;
+                sy[x] += b0 * fy;
+                sxx[x] += g * a2[x];
+                sxy[x] += b1 * fy;
+                syy[x] += b0 * fy * fy;
+                sh[x] += c0;
+                sxh[x] += g * h1[x];
+                syh[x] += c0 * fy;
+            }
+        }
 #pragma omp simd
         for (std::size_t i = 0; i < n; ++i) {
             const bool some = sw[i] > 0.0;
@@ -398,7 +347,8 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
     }
     const int w = height.width();
     const int h = height.height();
-    Image<glm::vec4> slopes(w, h, glm::vec4(0.0F));
+    // Every pixel is written below, by the band that owns its row.
+    Image<glm::vec4> slopes(w, h, UninitialisedPixels{});
     if (w == 0 || h == 0) {
         return slopes;
     }
@@ -413,70 +363,25 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
         }
     }
     const Image<std::uint8_t> nearContour = nearGaps(height, vessels);
-    // The wide fit reads samples up to kContourReach from a pixel near a
-    // contour; their means reach kSampleRadius rows further.
-    const Image<glm::vec3> samples = smoothedSamples(
-        height, vessels, nearGaps(height, vessels, 2 * kContourReach + kSampleRadius).view());
-    constexpr long kBand = 32;
+    // Bands of 64 rows: each sums 4 rows beyond its own again.
+    constexpr long kBand = 64;
     parallelFor(
         0, h, kBand,
         [&](long begin, long end) {
             const int y0 = static_cast<int>(begin);
             const int y1 = static_cast<int>(end);
-            // Rows y0 - 2 .. y1 + 1 summed along x; rows outside the image
-            // stay zero, and each row is padded with two zero columns on
-            // either side, so the loops need no bounds (a zero term changes
-            // no sum).
-            const int r0 = y0 - kFitRadius;
-            const int r1 = y1 + kFitRadius;
             const auto uw = static_cast<std::size_t>(w);
-            RowSums sums;
-            sums.resize(static_cast<std::size_t>(r1 - r0) * uw);
-            std::vector<double> m(uw + 2 * kFitRadius, 0.0);
-            std::vector<double> mh(uw + 2 * kFitRadius, 0.0);
-            for (int r = std::max(0, r0); r < std::min(h, r1); ++r) {
-                const float* hr = height.row(r);
-                const std::uint8_t* vr = vessels.row(r);
-                for (int x = 0; x < w; ++x) {
-                    const bool fit = vr[x] == 0 && std::isfinite(hr[x]);
-                    m[static_cast<std::size_t>(x + kFitRadius)] = fit ? 1.0 : 0.0;
-                    mh[static_cast<std::size_t>(x + kFitRadius)] =
-                        fit ? static_cast<double>(hr[x]) : 0.0;
-                }
-                const std::size_t base = static_cast<std::size_t>(r - r0) * uw;
-                double* a0 = sums.a0.data() + base;
-                double* a1 = sums.a1.data() + base;
-                double* a2 = sums.a2.data() + base;
-                double* h0 = sums.h0.data() + base;
-                double* h1 = sums.h1.data() + base;
-                const double* mp = m.data();
-                const double* hp = mh.data();
-#pragma omp simd
-                for (std::size_t x = 0; x < uw; ++x) {
-                    double s0 = 0.0;
-                    double s1 = 0.0;
-                    double s2 = 0.0;
-                    double t0 = 0.0;
-                    double t1 = 0.0;
-                    for (int k = 0; k <= 2 * kFitRadius; ++k) {
-                        const double dx = k - kFitRadius;
-                        const double g = kFitTaps[static_cast<std::size_t>(k)];
-                        const double gm = g * mp[x + static_cast<std::size_t>(k)];
-                        const double gh = g * hp[x + static_cast<std::size_t>(k)];
-                        s0 += gm;
-                        s1 += gm * dx;
-                        s2 += gm * dx * dx;
-                        t0 += gh;
-                        t1 += gh * dx;
-                    }
-                    a0[x] = s0;
-                    a1[x] = s1;
-                    a2[x] = s2;
-                    h0[x] = t0;
-                    h1[x] = t1;
-                }
+            RowSumRing ring(w);
+            for (int r = y0 - kFitRadius; r < y0 + kFitRadius; ++r) {
+                ring.load(height, vessels, r);
             }
-            RowMoments pm(uw);
+            RowFits pm(uw);
+            // The wide fit's sample rows y - kContourReach .. y + kContourReach.
+            SampleRing samples(height, vessels);
+            samples.start(y0 - kContourReach);
+            for (int j = y0 - kContourReach; j < y0 + kContourReach; ++j) {
+                samples.advance(j);
+            }
             for (int y = y0; y < y1; ++y) {
                 if (stop.stop_requested()) {
                     return;  // parallelFor throws CancelledError
@@ -490,36 +395,13 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                         rowTotal += kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
                     }
                 }
-                pm.clear();
-                for (int dy = -kFitRadius; dy <= kFitRadius; ++dy) {
-                    const double g = kFitTaps[static_cast<std::size_t>(dy + kFitRadius)];
-                    const std::size_t base = static_cast<std::size_t>(y + dy - r0) * uw;
-                    const double* a0 = sums.a0.data() + base;
-                    const double* a1 = sums.a1.data() + base;
-                    const double* a2 = sums.a2.data() + base;
-                    const double* h0 = sums.h0.data() + base;
-                    const double* h1 = sums.h1.data() + base;
-                    const double fy = dy;
-#pragma omp simd
-                    for (std::size_t x = 0; x < uw; ++x) {
-                        const double b0 = g * a0[x];
-                        const double b1 = g * a1[x];
-                        const double c0 = g * h0[x];
-                        pm.sw[x] += b0;
-                        pm.sx[x] += b1;
-                        pm.sy[x] += b0 * fy;
-                        pm.sxx[x] += g * a2[x];
-                        pm.sxy[x] += b1 * fy;
-                        pm.syy[x] += b0 * fy * fy;
-                        pm.sh[x] += c0;
-                        pm.sxh[x] += g * h1[x];
-                        pm.syh[x] += c0 * fy;
-                    }
-                }
-                pm.solvePlanes();
+                ring.load(height, vessels, y + kFitRadius);
+                pm.fit(ring, y);
+                samples.advance(y + kContourReach);
                 for (int x = 0; x < w; ++x) {
                     if (vr[x] != 0 || !std::isfinite(hr[x])) {
-                        continue;  // vessel or no VSS: (0, 0, 0, 0)
+                        out[x] = glm::vec4(0.0F);  // vessel or no VSS
+                        continue;
                     }
                     const auto i = static_cast<std::size_t>(x);
                     const double total = columnTotal[i] * rowTotal;
@@ -532,7 +414,7 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
                         // Next to a contour: the wider window over the staircase.
                         double wideSupport = 1.0;
                         const std::optional<glm::dvec2> wide =
-                            directSlope(samples.view(), x, y, kContourStride, wideSupport);
+                            directSlope(samples, x, y, kContourStride, wideSupport);
                         if (wide && wideSupport < 0.999) {
                             fit = wide;
                         }
@@ -558,6 +440,71 @@ Image<glm::vec4> fittedSlopes(ImageView<const float> height, ImageView<const std
     return slopes;
 }
 
+namespace {
+
+constexpr int kCoherenceReach = 3;  // the neighbours are 3 pixels away
+
+/// The central differences of the VSS that the coherence reads, as planes
+/// x, y and a weight (1 where the pixel has a normal, 0 where it has none:
+/// a vessel, no VSS at it or a neighbour, or within a pixel of the border;
+/// its difference stays 0), for the 2 * reach + 1 rows around the current
+/// one: row r lives in slot r mod 7, so each row is differenced once per band
+/// and nothing of the image's size is allocated.
+class DiffRing {
+  public:
+    explicit DiffRing(int width)
+        : width_(static_cast<std::size_t>(width)), planes_(kRows * 3 * width_, 0.0F) {}
+
+    [[nodiscard]] const float* x(int r) const { return plane(r, 0); }
+    [[nodiscard]] const float* y(int r) const { return plane(r, 1); }
+    [[nodiscard]] const float* weight(int r) const { return plane(r, 2); }
+
+    /// Differences row r of `height` into its slot (zeros outside 1..h-2).
+    void load(ImageView<const float> height, ImageView<const std::uint8_t> vessels, int r) {
+        float* dx = mutablePlane(r, 0);
+        float* dy = mutablePlane(r, 1);
+        float* dw = mutablePlane(r, 2);
+        std::fill(dx, dx + width_, 0.0F);
+        std::fill(dy, dy + width_, 0.0F);
+        std::fill(dw, dw + width_, 0.0F);
+        if (r < 1 || r + 1 >= height.height()) {
+            return;
+        }
+        const float* above = height.row(r - 1);
+        const float* row = height.row(r);
+        const float* below = height.row(r + 1);
+        const std::uint8_t* vr = vessels.row(r);
+        const int w = static_cast<int>(width_);
+        for (int x = 1; x + 1 < w; ++x) {
+            if (vr[x] != 0 || !std::isfinite(row[x]) || !std::isfinite(row[x - 1]) ||
+                !std::isfinite(row[x + 1]) || !std::isfinite(above[x]) ||
+                !std::isfinite(below[x])) {
+                continue;
+            }
+            dx[x] = 0.5F * (row[x + 1] - row[x - 1]);
+            dy[x] = 0.5F * (below[x] - above[x]);
+            dw[x] = 1.0F;
+        }
+    }
+
+  private:
+    static constexpr std::size_t kRows = 2 * kCoherenceReach + 1;
+    [[nodiscard]] static std::size_t slot(int r) {
+        constexpr int n = static_cast<int>(kRows);
+        return static_cast<std::size_t>(((r % n) + n) % n);
+    }
+    [[nodiscard]] const float* plane(int r, std::size_t index) const {
+        return planes_.data() + (slot(r) * 3 + index) * width_;
+    }
+    [[nodiscard]] float* mutablePlane(int r, std::size_t index) {
+        return planes_.data() + (slot(r) * 3 + index) * width_;
+    }
+    std::size_t width_;
+    std::vector<float> planes_;
+};
+
+}  // namespace
+
 void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
                         ImageView<const std::uint8_t> vessels, const SlopeScale& scale) {
     const int w = height.width();
@@ -573,39 +520,16 @@ void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
             "addNormalCoherence: needs a finite depth range and pixelScale > 0");
     }
     const double range = std::max(scale.dmax - scale.dmin, 0.0);
-    // The neighbours' central differences, once per pixel (each is read by
-    // four centres), as planes: x, y and a weight, 1 where the pixel has a
-    // normal and 0 where it has none (a vessel, no VSS at it or a neighbour,
-    // or within a pixel of the border; its difference stays 0).
-    Image<float> diffX(w, h, 0.0F);
-    Image<float> diffY(w, h, 0.0F);
-    Image<float> diffW(w, h, 0.0F);
-    parallelFor(1, h - 1, 64, [&](long begin, long end) {
-        for (int y = static_cast<int>(begin); y < static_cast<int>(end); ++y) {
-            const float* above = height.row(y - 1);
-            const float* row = height.row(y);
-            const float* below = height.row(y + 1);
-            const std::uint8_t* vr = vessels.row(y);
-            float* dx = diffX.row(y);
-            float* dy = diffY.row(y);
-            float* dw = diffW.row(y);
-            for (int x = 1; x + 1 < w; ++x) {
-                if (vr[x] != 0 || !std::isfinite(row[x]) || !std::isfinite(row[x - 1]) ||
-                    !std::isfinite(row[x + 1]) || !std::isfinite(above[x]) ||
-                    !std::isfinite(below[x])) {
-                    continue;
-                }
-                dx[x] = 0.5F * (row[x + 1] - row[x - 1]);
-                dy[x] = 0.5F * (below[x] - above[x]);
-                dw[x] = 1.0F;
-            }
-        }
-    });
     // Per row, branch-free loops over planes (the compiler vectorises them):
     // float, since this runs five times per void pixel and the coherence
     // only scales a highlight.
-    constexpr int kReach = 3;
-    parallelFor(0, h, 32, [&](long begin, long end) {
+    constexpr int kReach = kCoherenceReach;
+    // Bands of 64 rows: each differences 6 rows beyond its own again.
+    parallelFor(0, h, 64, [&](long begin, long end) {
+        DiffRing diffs(w);
+        for (int r = static_cast<int>(begin) - kReach; r < static_cast<int>(begin) + kReach; ++r) {
+            diffs.load(height, vessels, r);
+        }
         std::vector<float> k(static_cast<std::size_t>(w));
         std::vector<float> sx(static_cast<std::size_t>(w));
         std::vector<float> sy(static_cast<std::size_t>(w));
@@ -631,6 +555,7 @@ void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
             }
         };
         for (int y = static_cast<int>(begin); y < static_cast<int>(end); ++y) {
+            diffs.load(height, vessels, y + kReach);
             glm::vec4* out = slopes.row(y);
             const float* row = height.row(y);
             for (int x = 0; x < w; ++x) {
@@ -648,15 +573,15 @@ void addNormalCoherence(Image<glm::vec4>& slopes, ImageView<const float> height,
             const bool upIn = y - kReach >= 1;
             const bool downIn = y + kReach < h - 1;
             if (upIn) {
-                addUnits(diffX.row(y - kReach), diffY.row(y - kReach), diffW.row(y - kReach), 0, w);
+                addUnits(diffs.x(y - kReach), diffs.y(y - kReach), diffs.weight(y - kReach), 0, w);
             }
             if (downIn) {
-                addUnits(diffX.row(y + kReach), diffY.row(y + kReach), diffW.row(y + kReach), 0, w);
+                addUnits(diffs.x(y + kReach), diffs.y(y + kReach), diffs.weight(y + kReach), 0, w);
             }
             // Left and right neighbours: shifted planes, in range only.
-            addUnits(diffX.row(y) - kReach, diffY.row(y) - kReach, diffW.row(y) - kReach,
-                     1 + kReach, w);
-            addUnits(diffX.row(y) + kReach, diffY.row(y) + kReach, diffW.row(y) + kReach, 0,
+            addUnits(diffs.x(y) - kReach, diffs.y(y) - kReach, diffs.weight(y) - kReach, 1 + kReach,
+                     w);
+            addUnits(diffs.x(y) + kReach, diffs.y(y) + kReach, diffs.weight(y) + kReach, 0,
                      w - 1 - kReach);
             // How many neighbours count (those within a pixel of the border
             // are left out): above and below need an inner column, left and

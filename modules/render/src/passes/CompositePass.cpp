@@ -33,7 +33,16 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
     program.set("uUseVss", in.useVss ? 1 : 0);
     g.glActiveTexture(GL_TEXTURE2);
     g.glBindTexture(GL_TEXTURE_2D, in.useAo ? glTex(r.get(d.ao)).texture() : 0U);
+    if (in.useAo) {
+        // Bilinear: a half-resolution AO is read between its texels (at a
+        // texel's centre, as at full resolution, it is the texel itself).
+        g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    }
     program.set("uAo", 2);
+    program.set("uAoStep", static_cast<float>(in.aoStep));
     program.set("uUseAo", in.useAo ? 1 : 0);
     program.set("uAoStrength", in.aoStrength);
     program.set("uBackground", in.background);

@@ -20,6 +20,7 @@ struct CompositeInputs {
     /// VSS is at each pixel (0..1) instead of 1, for "upscale"'s iso-lines.
     bool vssVisibilityAlpha = false;
     float aoStrength = 0.0F;
+    int aoStep = 1;  ///< board::kAo holds every aoStep-th pixel per axis (SsaoInputs::step)
     glm::vec3 background{0.0F};  ///< sRGB
     glm::ivec2 size{1, 1};       ///< render size
 };

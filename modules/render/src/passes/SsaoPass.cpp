@@ -23,7 +23,7 @@ struct SsaoData {
 void occlude(const SsaoInputs& in, const RenderGraph::Resources& r, const SsaoData& d) {
     const PassContext& context = in.context;
     auto& g = *context.gl;
-    context.beginFullscreen(r, d.target, in.size);
+    context.beginFullscreen(r, d.target, aoSize(in.size, in.step));
     const SolvedFrame* vss = in.useVss ? r.get(d.shown).value().frame.get() : nullptr;
     const Program& program = context.programs->ssao;
     program.use();
@@ -43,6 +43,7 @@ void occlude(const SsaoInputs& in, const RenderGraph::Resources& r, const SsaoDa
     program.set("uAxisOffset", in.axisOffset);
     program.set("uRadius", in.radius);
     program.set("uSamples", kSsaoSamples);
+    program.set("uStep", in.step);
     drawFullscreenAndUnbind(g, context.emptyVao, 3);
     checkGlError(g, "SSAO pass");
 }
@@ -56,6 +57,7 @@ SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs) {
             b.dependsOn("radius", inputs.radius);
             b.dependsOn("pixel-scale", inputs.pixelScale);
             b.dependsOn("axis-offset", inputs.axisOffset);
+            b.dependsOn("step", inputs.step);
             d.linearDepth = b.read<Texture>(board::kLinearDepth);
             d.normal = b.read<Texture>(board::kNormal);
             if (inputs.useVss) {
@@ -63,7 +65,7 @@ SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs) {
                 d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
             }
             d.out.raw = b.write(b.createPersistent<Texture>(
-                board::kAoRaw, sized(inputs.size, TextureFormat::RG32F)));
+                board::kAoRaw, sized(aoSize(inputs.size, inputs.step), TextureFormat::RG32F)));
             d.target = b.declareRenderTarget("ssao", RenderTargetAttachments{{d.out.raw}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const SsaoData& d) { occlude(inputs, r, d); });

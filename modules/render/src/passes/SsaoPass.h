@@ -15,7 +15,10 @@ struct SsaoInputs {
     float radius = 1.0F;  ///< scene units (> 0)
     float pixelScale = 0.0F;
     glm::vec2 axisOffset{0.0F};  ///< where the view axis meets the frame, pixels from its centre
-    glm::ivec2 size{1, 1};
+    glm::ivec2 size{1, 1};       ///< the frame's (full) size
+    /// 1, or 2: the occlusion of every second pixel per axis (aoStepFor()),
+    /// into a target of size / step (rounded up).
+    int step = 1;
 };
 
 struct SsaoOutputs {
@@ -28,8 +31,13 @@ SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs);
 
 struct AoBlurInputs {
     PassContext context;
-    glm::ivec2 size{1, 1};
+    glm::ivec2 size{1, 1};  ///< the size of board::kAoRaw (the frame's / the SSAO's step)
 };
+
+/// The size of the SSAO's target for a frame of `size` and `step`.
+[[nodiscard]] inline glm::ivec2 aoSize(glm::ivec2 size, int step) noexcept {
+    return (size + glm::ivec2(step - 1)) / step;
+}
 
 struct AoBlurOutputs {
     Handle<Texture> ao;  ///< R8, persistent

@@ -3,7 +3,11 @@
 
 #include <cassert>
 #include <cstddef>
+#include <memory>
+#include <new>
 #include <span>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include "vv/core/Error.h"
@@ -58,6 +62,37 @@ class ImageView {
     std::ptrdiff_t stride_ = 0;
 };
 
+/// Tag of the Image constructor that leaves the pixels uninitialised.
+struct UninitialisedPixels {};
+
+namespace image_storage {
+
+/// PixelAllocator (huge pages for large images) whose value-initialisation
+/// (resize without a value) is a default-initialisation: plain pixels stay unwritten, so a large image's
+/// pages are first touched by whoever writes them (in parallel), not by a
+/// serial fill.
+template <typename T>
+struct DefaultInitAllocator : PixelAllocator<T> {
+    template <typename U>
+    // NOLINTNEXTLINE(readability-identifier-naming): the name allocator_traits needs
+    struct rebind {
+        using other = DefaultInitAllocator<U>;
+    };
+    DefaultInitAllocator() = default;
+    template <typename U>
+    DefaultInitAllocator(const DefaultInitAllocator<U>& /*other*/) noexcept {}  // NOLINT
+    template <typename U>
+    void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+        ::new (static_cast<void*>(p)) U;
+    }
+    template <typename U, typename... Args>
+    void construct(U* p, Args&&... args) {
+        ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
+    }
+};
+
+}  // namespace image_storage
+
 /// Owning W×H image of T, rows contiguous with a stride of exactly `width`
 /// unless a larger stride is asked for (e.g. for alignment).
 template <typename T>
@@ -71,6 +106,17 @@ class Image {
             throw InvalidArgumentError("image size must be non-negative and stride >= width");
         }
         pixels_.assign(static_cast<std::size_t>(stride_) * static_cast<std::size_t>(height), fill);
+    }
+    /// A width x height image whose pixels are unspecified until written
+    /// (for a plain T: every pixel must be written before it is read). For
+    /// large images that a parallel loop fills completely anyway. Throws
+    /// InvalidArgumentError for negative sizes.
+    Image(int width, int height, UninitialisedPixels /*tag*/)
+        : width_(width), height_(height), stride_(width) {
+        if (width < 0 || height < 0) {
+            throw InvalidArgumentError("image size must be non-negative");
+        }
+        pixels_.resize(static_cast<std::size_t>(width) * static_cast<std::size_t>(height));
     }
 
     [[nodiscard]] int width() const noexcept { return width_; }
@@ -102,7 +148,7 @@ class Image {
     int width_ = 0;
     int height_ = 0;
     std::ptrdiff_t stride_ = 0;
-    std::vector<T, PixelAllocator<T>> pixels_;
+    std::vector<T, image_storage::DefaultInitAllocator<T>> pixels_;
 };
 
 }  // namespace vv

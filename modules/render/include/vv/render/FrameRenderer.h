@@ -93,7 +93,8 @@ struct ExternalVss {
 ///  - "vss-shading": depth colour scale, iso-lines and height-field lighting.
 ///  - "ssao", "ao-blur" (AoSettings::enabled): occlusion from the linear
 ///    depth and the VSS height, then a depth-aware blur; cached while depth,
-///    VSS and radius stay (the colour scale does not re-run them).
+///    VSS and radius stay (the colour scale does not re-run them); at half
+///    resolution per axis above AoSettings::fullResolutionPixels.
 ///  - "translucent": objects with opacity below 1 (ObjectStyle::opacity),
 ///    which the G-buffer leaves out, drawn forward back to front over a copy
 ///    of the opaque depth into a premultiplied layer

@@ -56,7 +56,18 @@ struct AoSettings {
     bool enabled = true;
     float radius = 3.0F;    ///< scene units (mm for the demo)
     float strength = 0.8F;  ///< 0..1: how much full occlusion darkens
+    /// Frames with more pixels than this compute the occlusion (and its
+    /// blur) at half the resolution per axis, a quarter of the work, and the
+    /// composite reads it bilinearly: the AO is a low-frequency shade and
+    /// its disc is 3x wider in pixels at 4K than at 720p. Default: up to
+    /// 2560x1440 at full resolution, so 4K UHD at half.
+    long long fullResolutionPixels = 2560LL * 1440LL;
 };
+
+/// 1, or 2 when a frame of `size` computes its AO at half resolution.
+[[nodiscard]] inline int aoStepFor(const AoSettings& ao, long long pixels) noexcept {
+    return pixels > ao.fullResolutionPixels ? 2 : 1;
+}
 
 /// Everything a frame needs besides the camera, the scene and the mesh style
 /// (which lives in FrameRenderer::meshRenderer()).

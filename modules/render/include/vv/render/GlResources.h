@@ -118,6 +118,11 @@ struct GlPassTiming {
 /// context has GL_KHR_debug, so that RenderDoc / apitrace show the passes)
 /// and times it: CPU time always, GPU time with GL_TIMESTAMP queries
 /// (core since OpenGL 3.3). Create and use it with the context current.
+/// With the environment variable VV_PASS_FINISH=1 every pass ends with
+/// glFinish, so that a pass's CPU time is its whole cost on a software
+/// rasteriser (llvmpipe renders a pass when a later one reads its target,
+/// and that wait shows in the later pass's CPU time otherwise); for
+/// benchmarks only, it stalls a real GPU.
 class GlPassObserver final : public PassObserver {
   public:
     GlPassObserver();
@@ -152,6 +157,7 @@ class GlPassObserver final : public PassObserver {
     PushGroup pushGroup_ = nullptr;
     PopGroup popGroup_ = nullptr;
     bool timerQueries_ = false;
+    bool finishEachPass_ = false;
     std::vector<unsigned> queries_;  ///< pool, two timestamps per pass of a frame
     std::vector<GlPassTiming> timings_;
     std::size_t resolved_ = 0;  ///< timings_ entries whose GPU time is read
