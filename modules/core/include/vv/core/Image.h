@@ -68,9 +68,8 @@ struct UninitialisedPixels {};
 namespace image_storage {
 
 /// PixelAllocator (huge pages for large images) whose value-initialisation
-/// (resize without a value) is a default-initialisation: plain pixels stay unwritten, so a large image's
-/// pages are first touched by whoever writes them (in parallel), not by a
-/// serial fill.
+/// (resize without a value) is a default-initialisation: plain pixels stay unwritten, so a large
+/// image's pages are first touched by whoever writes them (in parallel), not by a serial fill.
 template <typename T>
 struct DefaultInitAllocator : PixelAllocator<T> {
     template <typename U>
