@@ -7,6 +7,7 @@
 
 #include "ReducedContourDepth.h"
 #include "vv/core/Error.h"
+#include "vv/core/ImageRange.h"
 #include "vv/vss/Shading.h"
 #include "vv/vss/Vss.h"
 
@@ -17,28 +18,24 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::DepthRange& range, float pixelScale, float reduction,
                        const std::stop_token& stop) {
     const auto start = std::chrono::steady_clock::now();
-    const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
     vss::VssOptions vssOptions;
     vssOptions.solver = options;
     vssOptions.range = range;
     vssOptions.stop = stop;
-    vss::VssResult result;
-    if (silhouetteReach(reduction) > 0.0F) {
-        // A reduced frame: contour depths moved to the silhouette, normalised
-        // over the depth as read (the extrapolated contours must not widen it).
-        if (range.mode == vss::RangeMode::Visible) {
-            const vss::NormalizedDepth visible = vss::normalizeDepth(depth.view(), mask.view());
-            if (visible.vesselPixels > 0) {
-                vssOptions.range = {vss::RangeMode::Fixed, visible.dmin, visible.dmax};
-            }
+    // A reduced frame solves from contour depths moved to the silhouette
+    // (thin vessels widened by a pixel, so the mask follows that depth),
+    // normalised over the depth as read: the moved contours must not widen it.
+    const bool reduced = silhouetteReach(reduction) > 0.0F;
+    if (reduced && range.mode == vss::RangeMode::Visible) {
+        if (const auto visible = finiteRange(depth.view())) {
+            vssOptions.range = {vss::RangeMode::Fixed, visible->first, visible->second};
         }
-        const Image<float> silhouette = silhouetteDepth(depth, reduction, pixelScale);
-        // Thin vessels are widened by a pixel: the solve's mask follows.
-        const Image<std::uint8_t> widened = vss::maskFromFiniteDepth(silhouette.view());
-        result = vss::solve(silhouette.view(), widened.view(), vssOptions);
-    } else {
-        result = vss::solve(depth.view(), mask.view(), vssOptions);
     }
+    const Image<float> silhouette =
+        reduced ? silhouetteDepth(depth, reduction, pixelScale) : Image<float>{};
+    const ImageView<const float> solved = reduced ? silhouette.view() : depth.view();
+    const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(solved);
+    vss::VssResult result = vss::solve(solved, mask.view(), vssOptions);
     SolvedFrame frame;
     frame.key = key;
     frame.height = std::move(result.height);
