@@ -1335,6 +1335,104 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::SliceTexts</name>
+    <message>
+        <source>Coronal</source>
+        <translation>Koronal</translation>
+    </message>
+    <message>
+        <source>Sagittal</source>
+        <translation>Sagittal</translation>
+    </message>
+    <message>
+        <source>Axial</source>
+        <translation>Axial</translation>
+    </message>
+    <message>
+        <source>CTA</source>
+        <translation>CTA</translation>
+    </message>
+    <message>
+        <source>MRA</source>
+        <translation>MRA</translation>
+    </message>
+    <message>
+        <source>Soft tissue</source>
+        <translation>Weichteile</translation>
+    </message>
+    <message>
+        <source>Bone</source>
+        <translation>Knochen</translation>
+    </message>
+    <message>
+        <source>Full range</source>
+        <translation>Gesamter Wertebereich</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>W %1  L %2</source>
+        <extracomment>W and L: the width and level (centre) of the grey-value window</extracomment>
+        <translation>W %1  L %2</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SliceView</name>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SliceWorkspace</name>
+    <message>
+        <source>S&amp;lices</source>
+        <translation>Sc&amp;hichtbilder</translation>
+    </message>
+    <message>
+        <source>&amp;3-D Only</source>
+        <translation>Nur &amp;3-D</translation>
+    </message>
+    <message>
+        <source>3-D and &amp;Three Slices</source>
+        <translation>3-D und &amp;drei Schichten</translation>
+    </message>
+    <message>
+        <source>Large &amp;Axial Slice</source>
+        <translation>Große &amp;axiale Schicht</translation>
+    </message>
+    <message>
+        <source>Large &amp;Coronal Slice</source>
+        <translation>Große &amp;koronale Schicht</translation>
+    </message>
+    <message>
+        <source>Large &amp;Sagittal Slice</source>
+        <translation>Große &amp;sagittale Schicht</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>&amp;Fenster</translation>
+    </message>
+    <message>
+        <source>Segmentation &amp;Fill</source>
+        <translation>Segmentierung als &amp;Fläche</translation>
+    </message>
+    <message>
+        <source>Segmentation &amp;Outline</source>
+        <translation>Segmentierung als &amp;Umriss</translation>
+    </message>
+    <message>
+        <source>The segmented voxels tinted in their label colour</source>
+        <translation>Die segmentierten Voxel in der Farbe ihres Labels eingefärbt</translation>
+    </message>
+    <message>
+        <source>The edge of the segmentation drawn in its label colour</source>
+        <translation>Der Rand der Segmentierung in der Farbe ihres Labels</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ViewerWidget</name>
     <message>
         <source>No OpenGL context can be created here (platform &apos;%1&apos;). VesselView needs OpenGL 4.1 (core profile): update the graphics driver, or run with Mesa&apos;s software renderer (LIBGL_ALWAYS_SOFTWARE=1).</source>

@@ -1,0 +1,178 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/SliceWorkspace.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QGridLayout>
+#include <QMenu>
+#include <utility>
+
+#include "gui/SliceTexts.h"
+#include "gui/SliceView.h"
+
+namespace vv::gui {
+
+namespace {
+
+constexpr std::array<slices::SliceOrientation, 3> kOrientations{slices::SliceOrientation::Axial,
+                                                                slices::SliceOrientation::Coronal,
+                                                                slices::SliceOrientation::Sagittal};
+
+}  // namespace
+
+SliceWorkspace::SliceWorkspace(QWidget* viewer, QWidget* parent)
+    : QWidget(parent), viewer_(viewer) {
+    setObjectName(QStringLiteral("sliceWorkspace"));
+    grid_ = new QGridLayout(this);
+    grid_->setContentsMargins(0, 0, 0, 0);
+    grid_->setSpacing(2);
+    if (viewer_ != nullptr) {
+        grid_->addWidget(viewer_, 0, 0);
+    }
+    // 3-D top left, axial top right, coronal bottom left, sagittal bottom right.
+    const std::array<QPoint, 3> cells{QPoint(1, 0), QPoint(0, 1), QPoint(1, 1)};
+    for (std::size_t n = 0; n < views_.size(); ++n) {
+        auto* view = new SliceView(kOrientations[n], this);
+        views_[n] = view;
+        grid_->addWidget(view, cells[n].y(), cells[n].x());
+        connect(view, &SliceView::windowDragged, this, &SliceWorkspace::setWindow);
+    }
+    buildMenu();
+    applyLayout();
+}
+
+SliceWorkspace::~SliceWorkspace() = default;
+
+SliceView* SliceWorkspace::sliceView(slices::SliceOrientation orientation) const {
+    return views_[static_cast<std::size_t>(orientation)];
+}
+
+void SliceWorkspace::buildMenu() {
+    menu_ = new QMenu(tr("S&lices"), this);
+    menu_->setObjectName(QStringLiteral("slicesMenu"));
+    layoutGroup_ = new QActionGroup(this);
+    const std::array<std::pair<SliceLayout, QString>, 5> layouts{{
+        {SliceLayout::ThreeDOnly, tr("&3-D Only")},
+        {SliceLayout::ThreeDAndSlices, tr("3-D and &Three Slices")},
+        {SliceLayout::AxialLarge, tr("Large &Axial Slice")},
+        {SliceLayout::CoronalLarge, tr("Large &Coronal Slice")},
+        {SliceLayout::SagittalLarge, tr("Large &Sagittal Slice")},
+    }};
+    for (const auto& [layout, text] : layouts) {
+        QAction* action = menu_->addAction(text);
+        action->setCheckable(true);
+        action->setData(static_cast<int>(layout));
+        action->setChecked(layout == layout_);
+        layoutGroup_->addAction(action);
+        connect(action, &QAction::triggered, this,
+                [this, layout = layout] { setSliceLayout(layout); });
+    }
+    menu_->addSeparator();
+    presetMenu_ = menu_->addMenu(tr("&Window"));
+    presetMenu_->setObjectName(QStringLiteral("windowPresetMenu"));
+    presetGroup_ = new QActionGroup(this);
+    menu_->addSeparator();
+    fillAction_ = menu_->addAction(tr("Segmentation &Fill"));
+    outlineAction_ = menu_->addAction(tr("Segmentation &Outline"));
+    for (QAction* action : {fillAction_, outlineAction_}) {
+        action->setCheckable(true);
+        action->setChecked(true);
+        connect(action, &QAction::toggled, this, &SliceWorkspace::applyOverlayStyle);
+    }
+    fillAction_->setToolTip(tr("The segmented voxels tinted in their label colour"));
+    outlineAction_->setToolTip(tr("The edge of the segmentation drawn in its label colour"));
+    menu_->menuAction()->setVisible(false);
+}
+
+void SliceWorkspace::rebuildPresetMenu() {
+    for (QAction* action : presetGroup_->actions()) {
+        presetGroup_->removeAction(action);
+        delete action;
+    }
+    for (std::size_t n = 0; n < presets_.size(); ++n) {
+        QAction* action = presetMenu_->addAction(presetName(presets_[n].preset));
+        action->setCheckable(true);
+        action->setChecked(n == 0);
+        presetGroup_->addAction(action);
+        connect(action, &QAction::triggered, this, [this, n] { applyPreset(n); });
+    }
+}
+
+void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
+                               std::shared_ptr<const scene::LabelMap> labelMap) {
+    volume_ = std::move(volume);
+    presets_.clear();
+    if (volume_ && !volume_->empty()) {
+        presets_ = slices::windowPresets(*volume_);
+        window_ = presets_.front().window;
+    }
+    rebuildPresetMenu();
+    for (SliceView* view : views_) {
+        view->setWindow(window_);
+        view->setLabelMap(labelMap);
+        view->setVolume(volume_);
+    }
+    menu_->menuAction()->setVisible(volume_ != nullptr);
+    applyLayout();
+}
+
+void SliceWorkspace::setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap) {
+    for (SliceView* view : views_) {
+        view->setLabelMap(labelMap);
+    }
+}
+
+void SliceWorkspace::setSliceLayout(SliceLayout layout) {
+    layout_ = layout;
+    for (QAction* action : layoutGroup_->actions()) {
+        action->setChecked(action->data().toInt() == static_cast<int>(layout));
+    }
+    applyLayout();
+}
+
+bool SliceWorkspace::showsSlices() const {
+    return std::any_of(views_.begin(), views_.end(),
+                       [](const SliceView* v) { return !v->isHidden(); });
+}
+
+void SliceWorkspace::applyLayout() {
+    const SliceLayout shown = volume_ ? layout_ : SliceLayout::ThreeDOnly;
+    const bool threeD = shown == SliceLayout::ThreeDOnly || shown == SliceLayout::ThreeDAndSlices;
+    if (viewer_ != nullptr) {
+        viewer_->setVisible(threeD);
+    }
+    for (std::size_t n = 0; n < views_.size(); ++n) {
+        const bool large = static_cast<int>(shown) ==
+                           static_cast<int>(SliceLayout::AxialLarge) + static_cast<int>(n);
+        views_[n]->setVisible(shown == SliceLayout::ThreeDAndSlices || large);
+    }
+    emit layoutChanged();
+}
+
+void SliceWorkspace::applyPreset(std::size_t index) {
+    if (index >= presets_.size()) {
+        return;
+    }
+    presetGroup_->actions().at(static_cast<qsizetype>(index))->setChecked(true);
+    setWindow(presets_[index].window);
+}
+
+void SliceWorkspace::setWindow(const slices::Window& window) {
+    window_ = window;
+    for (SliceView* view : views_) {
+        if (view->window().center != window.center || view->window().width != window.width) {
+            view->setWindow(window);
+        }
+    }
+}
+
+void SliceWorkspace::applyOverlayStyle() {
+    slices::OverlayStyle style;
+    style.fill = fillAction_->isChecked();
+    style.outline = outlineAction_->isChecked();
+    for (SliceView* view : views_) {
+        view->setOverlayStyle(style);
+    }
+}
+
+}  // namespace vv::gui

@@ -1,0 +1,105 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QList>
+#include <QWidget>
+#include <array>
+#include <memory>
+#include <vector>
+
+#include "vv/scene/LabelMap.h"
+#include "vv/scene/Volume.h"
+#include "vv/slices/SliceOverlay.h"
+#include "vv/slices/SlicePlane.h"
+#include "vv/slices/WindowLevel.h"
+
+class QAction;
+class QActionGroup;
+class QGridLayout;
+class QMenu;
+
+namespace vv::gui {
+
+class SliceView;
+
+/// How the window's central area is divided.
+enum class SliceLayout : std::uint8_t {
+    ThreeDOnly,       ///< the 3-D view alone
+    ThreeDAndSlices,  ///< 3-D, axial / coronal / sagittal in a 2 x 2 grid
+    AxialLarge,       ///< one slice view fills the area
+    CoronalLarge,
+    SagittalLarge,
+};
+
+/// The window's central area: the 3-D viewer and, for a scene segmented from
+/// a volume (a DICOM image series), the axial, coronal and sagittal
+/// SliceViews in the chosen layout. Without a volume only the 3-D viewer is
+/// shown and menu() is hidden (mesh scenes show no slice views).
+///
+/// menu() (View > Slices) chooses the layout, the window preset (the
+/// volume's windowPresets(); the first on a new volume) and how the
+/// segmentation is drawn (fill, outline). The three views share one window:
+/// a drag in one changes all.
+class SliceWorkspace : public QWidget {
+    Q_OBJECT
+
+  public:
+    /// `viewer` (the 3-D view; may be null when OpenGL is unavailable) is
+    /// put into this widget.
+    explicit SliceWorkspace(QWidget* viewer, QWidget* parent = nullptr);
+    ~SliceWorkspace() override;
+
+    /// The volume to slice (null: none, 3-D only) and its segmentation.
+    void setVolume(std::shared_ptr<const scene::Volume> volume,
+                   std::shared_ptr<const scene::LabelMap> labelMap);
+    /// A new segmentation of the same volume (the Segmentation panel's
+    /// preview or Apply); null removes the overlay.
+    void setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap);
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
+        return volume_;
+    }
+
+    /// The layout chosen in the menu; shown as is when there is a volume,
+    /// else the 3-D view alone.
+    void setSliceLayout(SliceLayout layout);
+    [[nodiscard]] SliceLayout sliceLayout() const noexcept { return layout_; }
+    /// True when slice views are on screen.
+    [[nodiscard]] bool showsSlices() const;
+
+    [[nodiscard]] SliceView* sliceView(slices::SliceOrientation orientation) const;
+    /// View > Slices: layouts, window presets, overlay style.
+    [[nodiscard]] QMenu* menu() const noexcept { return menu_; }
+    /// The window presets of the volume, in menu order.
+    [[nodiscard]] const std::vector<slices::PresetWindow>& presets() const noexcept {
+        return presets_;
+    }
+    void applyPreset(std::size_t index);
+    void setWindow(const slices::Window& window);
+    [[nodiscard]] const slices::Window& window() const noexcept { return window_; }
+
+  signals:
+    /// The layout on screen changed.
+    void layoutChanged();
+
+  private:
+    void buildMenu();
+    void rebuildPresetMenu();
+    void applyLayout();
+    void applyOverlayStyle();
+
+    QWidget* viewer_;
+    std::array<SliceView*, 3> views_{};
+    QGridLayout* grid_ = nullptr;
+    std::shared_ptr<const scene::Volume> volume_;
+    SliceLayout layout_ = SliceLayout::ThreeDAndSlices;
+    std::vector<slices::PresetWindow> presets_;
+    slices::Window window_;
+    QMenu* menu_ = nullptr;
+    QMenu* presetMenu_ = nullptr;
+    QActionGroup* layoutGroup_ = nullptr;
+    QActionGroup* presetGroup_ = nullptr;
+    QAction* fillAction_ = nullptr;
+    QAction* outlineAction_ = nullptr;
+};
+
+}  // namespace vv::gui

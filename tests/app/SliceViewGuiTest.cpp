@@ -1,0 +1,291 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The slice views: shown for a scene from a DICOM series only, the layout
+// switch of View > Slices, scrolling through slices (slice, position and
+// read-out follow), window / level by drag and by preset (the pixels follow
+// the window), the segmentation overlay on the slices. Run under
+// `xvfb-run -a` with QT_QPA_PLATFORM=xcb.
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QLocale>
+#include <QMenu>
+#include <QPointer>
+#include <QWheelEvent>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+
+#include "GuiFixture.h"
+#include "SyntheticCta.h"
+#include "gui/MainWindow.h"
+#include "gui/SeriesDialog.h"
+#include "gui/SliceTexts.h"
+#include "gui/SliceView.h"
+#include "gui/SliceWorkspace.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/slices/Reslice.h"
+#include "vv/slices/SliceOverlay.h"
+#include "vv/slices/WindowLevel.h"
+
+namespace vv::test {
+namespace {
+
+using gui::SliceLayout;
+using gui::SliceView;
+using slices::SliceOrientation;
+
+fs::path seriesDir() {
+    return panelTestDir() / "slices-cta";
+}
+
+class SliceViewGuiTest : public GuiFixture {
+  protected:
+    static void SetUpTestSuite() {
+        GuiFixture::SetUpTestSuite();
+        fs::remove_all(seriesDir());
+        cta_ = std::make_unique<SyntheticCta>(makeSyntheticCta({64, 64, 48}, 3));
+        dicom::writeCtSeries(seriesDir(), cta_->volume);
+    }
+    static void TearDownTestSuite() {
+        std::error_code ec;
+        fs::remove_all(seriesDir(), ec);
+        cta_.reset();
+        GuiFixture::TearDownTestSuite();
+    }
+
+    [[nodiscard]] gui::SliceWorkspace* workspace() const { return window_->sliceWorkspace(); }
+    [[nodiscard]] SliceView* view(SliceOrientation o) const { return workspace()->sliceView(o); }
+
+    void openSeries() {
+        QPointer<gui::SeriesDialog> dialog;
+        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
+        window_->openDicom(QString::fromStdString(seriesDir().string()));
+        ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
+        ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
+        dialog->accept();
+        ASSERT_TRUE(waitUntil(
+            [&] { return window_->volume() != nullptr || !window_->lastError().isEmpty(); },
+            60000));
+        ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+        for (const auto o :
+             {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal}) {
+            view(o)->waitForSlice();
+        }
+        QCoreApplication::processEvents();
+    }
+
+    /// The View > Slices action whose text (without '&') is `text`.
+    [[nodiscard]] QAction* menuAction(const QMenu* menu, const QString& text) const {
+        for (QAction* a : menu->actions()) {
+            if (a->text().remove(QLatin1Char('&')) == text) {
+                return a;
+            }
+        }
+        ADD_FAILURE() << "no action " << text.toStdString();
+        return nullptr;
+    }
+
+    static void wheel(QWidget* widget, int notches) {
+        const QPointF at(widget->width() / 2.0, widget->height() / 2.0);
+        QWheelEvent event(at, widget->mapToGlobal(at), QPoint(), QPoint(0, 120 * notches),
+                          Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+        QCoreApplication::sendEvent(widget, &event);
+    }
+
+    static inline std::unique_ptr<SyntheticCta> cta_;
+};
+
+TEST_F(SliceViewGuiTest, MeshScenesShowNoSliceViews) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(workspace()->showsSlices());
+    EXPECT_FALSE(workspace()->menu()->menuAction()->isVisible());
+    EXPECT_TRUE(window_->viewer()->isVisible());
+
+    openSeries();
+    EXPECT_TRUE(workspace()->showsSlices());
+    EXPECT_TRUE(workspace()->menu()->menuAction()->isVisible());
+    for (const auto o :
+         {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal}) {
+        EXPECT_TRUE(view(o)->isVisible());
+        EXPECT_FALSE(view(o)->sliceImage().isNull());
+    }
+
+    // A mesh scene again: the slice views go.
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(workspace()->showsSlices());
+    EXPECT_FALSE(workspace()->menu()->menuAction()->isVisible());
+}
+
+TEST_F(SliceViewGuiTest, LayoutSwitch) {
+    openSeries();
+    QMenu* menu = workspace()->menu();
+    const int fullWidth = workspace()->width();
+
+    menuAction(menu, gui::SliceWorkspace::tr("3-D Only"))->trigger();
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(window_->viewer()->isVisible());
+    EXPECT_FALSE(workspace()->showsSlices());
+    EXPECT_GT(window_->viewer()->width(), fullWidth * 9 / 10);
+
+    menuAction(menu, gui::SliceWorkspace::tr("Large Coronal Slice"))->trigger();
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(window_->viewer()->isVisible());
+    EXPECT_TRUE(view(SliceOrientation::Coronal)->isVisible());
+    EXPECT_FALSE(view(SliceOrientation::Axial)->isVisible());
+    EXPECT_FALSE(view(SliceOrientation::Sagittal)->isVisible());
+    EXPECT_GT(view(SliceOrientation::Coronal)->width(), fullWidth * 9 / 10);
+    // What it shows: the slice, not an empty view.
+    const QImage shown = view(SliceOrientation::Coronal)->grab().toImage();
+    EXPECT_GT(changedFraction(shown, QImage(shown.size(), shown.format())), 0.2);
+
+    menuAction(menu, gui::SliceWorkspace::tr("3-D and Three Slices"))->trigger();
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(window_->viewer()->isVisible());
+    for (const auto o :
+         {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal}) {
+        EXPECT_TRUE(view(o)->isVisible());
+        EXPECT_LT(view(o)->width(), fullWidth * 6 / 10);
+    }
+    EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::ThreeDAndSlices);
+}
+
+TEST_F(SliceViewGuiTest, WheelScrollsSlicesAndTheReadoutFollows) {
+    openSeries();
+    SliceView* axial = view(SliceOrientation::Axial);
+    const int before = axial->sliceIndex();
+    const QImage imageBefore = axial->sliceImage();
+    const QPointF centre(axial->width() / 2.0, axial->height() / 2.0);
+    axial->hoverAt(centre);
+    const QString readoutBefore = axial->readoutText();
+    ASSERT_FALSE(readoutBefore.isEmpty());
+    EXPECT_TRUE(readoutBefore.endsWith(QStringLiteral("HU"))) << readoutBefore.toStdString();
+
+    wheel(axial, 3);
+    axial->waitForSlice();
+    EXPECT_EQ(axial->sliceIndex(), before + 3);
+    EXPECT_EQ(axial->shownSliceIndex(), before + 3);
+    EXPECT_GT(changedFraction(imageBefore, axial->sliceImage()), 0.01);
+    // The position line and the read-out name the new slice's height.
+    const double z = axial->slicePosition();
+    EXPECT_NEAR(z - axial->stack()->position(before), 3.0 * axial->stack()->step, 1e-9);
+    EXPECT_TRUE(axial->positionText().startsWith(gui::slicePositionLabel(2, z)))
+        << axial->positionText().toStdString();
+    const QString readout = axial->readoutText();
+    EXPECT_NE(readout, readoutBefore);
+    EXPECT_TRUE(readout.contains(QLocale().toString(std::abs(z), 'f', 1))) << readout.toStdString();
+    // The value is the voxel's under the point.
+    const auto world = axial->worldAt(centre);
+    ASSERT_TRUE(world);
+    const auto sample = slices::voxelAt(*window_->volume(), *world);
+    ASSERT_TRUE(sample);
+    EXPECT_TRUE(readout.contains(gui::voxelValueLabel(*sample))) << readout.toStdString();
+
+    // In German the numbers take a decimal comma.
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    axial->hoverAt(centre + QPointF(1, 0));
+    axial->hoverAt(centre);
+    const QString german = axial->positionText();
+    QLocale::setDefault(QLocale::c());
+    EXPECT_TRUE(german.contains(QLatin1Char(','))) << german.toStdString();
+}
+
+TEST_F(SliceViewGuiTest, WindowDragAndPresetsChangeThePixels) {
+    openSeries();
+    SliceView* axial = view(SliceOrientation::Axial);
+    SliceView* coronal = view(SliceOrientation::Coronal);
+    const QImage before = axial->grab().toImage();
+    const slices::Window start = axial->window();
+    leftDrag(axial, QPointF(50, 50), QPointF(150, 90));
+    QCoreApplication::processEvents();
+    const slices::Window dragged = axial->window();
+    EXPECT_GT(dragged.width, start.width);
+    EXPECT_GT(dragged.center, start.center);
+    EXPECT_DOUBLE_EQ(coronal->window().width, dragged.width);  // the views share the window
+    EXPECT_GT(changedFraction(before, axial->grab().toImage()), 0.05);
+
+    // Bone preset: every pixel without overlay is the window of its value.
+    const auto& presets = workspace()->presets();
+    std::size_t bone = presets.size();
+    for (std::size_t n = 0; n < presets.size(); ++n) {
+        if (presets[n].preset == slices::WindowPreset::Bone) {
+            bone = n;
+        }
+    }
+    ASSERT_LT(bone, presets.size());
+    workspace()->applyPreset(bone);
+    EXPECT_DOUBLE_EQ(axial->window().width, presets[bone].window.width);
+    const auto plane = axial->stack()->planeAt(axial->sliceIndex());
+    const auto values = slices::reslice(*window_->volume(), plane);
+    const QImage& image = axial->sliceImage();
+    ASSERT_EQ(image.width(), values.width());
+    int checked = 0;
+    for (int r = 0; r < values.height(); r += 3) {
+        for (int c = 0; c < values.width(); c += 3) {
+            const QRgb p = image.pixel(c, r);
+            if (qRed(p) == qGreen(p) && qGreen(p) == qBlue(p)) {  // grey: no overlay
+                ASSERT_EQ(qRed(p), slices::windowGray(values(c, r), presets[bone].window))
+                    << c << "," << r;
+                ++checked;
+            }
+        }
+    }
+    EXPECT_GT(checked, 100);
+}
+
+TEST_F(SliceViewGuiTest, SegmentationOverlayOnTheSlices) {
+    openSeries();
+    ASSERT_NE(window_->document()->labelMap(), nullptr);
+    SliceView* coronal = view(SliceOrientation::Coronal);
+    // A coronal slice through the tree's root: its overlay pixels are in the
+    // label colour where the label map has label 1.
+    const QRgb colour = 0xFF000000U | slices::overlayColor(1);
+    int best = -1;
+    int bestCount = 0;
+    for (int k = 0; k < coronal->sliceCount(); k += 2) {
+        coronal->setSliceIndex(k);
+        coronal->waitForSlice();
+        int n = 0;
+        const QImage& image = coronal->sliceImage();
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                n += image.pixel(x, y) == colour ? 1 : 0;
+            }
+        }
+        if (n > bestCount) {
+            bestCount = n;
+            best = k;
+        }
+    }
+    ASSERT_GE(best, 0) << "no outline pixel on any coronal slice";
+    coronal->setSliceIndex(best);
+    coronal->waitForSlice();
+    const auto labels =
+        slices::resliceLabels(*window_->document()->labelMap(), coronal->stack()->planeAt(best));
+    const QImage& image = coronal->sliceImage();
+    for (int y = 0; y < image.height(); ++y) {
+        for (int x = 0; x < image.width(); ++x) {
+            if (image.pixel(x, y) == colour) {
+                ASSERT_EQ(labels(x, y), 1) << x << "," << y;
+            }
+        }
+    }
+    // Without the overlay the same slice is grey only.
+    QAction* fill = menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Fill"));
+    QAction* outline =
+        menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Outline"));
+    fill->setChecked(false);
+    outline->setChecked(false);
+    const QImage plain = coronal->sliceImage();
+    for (int y = 0; y < plain.height(); ++y) {
+        for (int x = 0; x < plain.width(); ++x) {
+            const QRgb p = plain.pixel(x, y);
+            ASSERT_TRUE(qRed(p) == qGreen(p) && qGreen(p) == qBlue(p)) << x << "," << y;
+        }
+    }
+}
+
+}  // namespace
+}  // namespace vv::test
