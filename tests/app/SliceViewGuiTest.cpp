@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
 #include <QLocale>
 #include <QMenu>
 #include <QPointer>
@@ -22,6 +24,7 @@
 #include "gui/SliceTexts.h"
 #include "gui/SliceView.h"
 #include "gui/SliceWorkspace.h"
+#include "gui/panels/SegmentationPanel.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/slices/Reslice.h"
 #include "vv/slices/SliceOverlay.h"
@@ -285,6 +288,76 @@ TEST_F(SliceViewGuiTest, SegmentationOverlayOnTheSlices) {
             ASSERT_TRUE(qRed(p) == qGreen(p) && qGreen(p) == qBlue(p)) << x << "," << y;
         }
     }
+}
+
+TEST_F(SliceViewGuiTest, OverlayFollowsTheSegmentationPreview) {
+    openSeries();
+    SliceView* axial = view(SliceOrientation::Axial);
+    const auto loaded = window_->document()->labelMap();
+    ASSERT_NE(loaded, nullptr);
+    // The overlay's pixels over all axial slices, and how many of them lie on
+    // bone (>= 700 HU).
+    const auto overlayOnBone = [&] {
+        int tinted = 0;
+        int bone = 0;
+        for (int k = 0; k < axial->sliceCount(); k += 3) {
+            axial->setSliceIndex(k);
+            axial->waitForSlice();
+            const auto values =
+                slices::reslice(*window_->volume(), axial->stack()->planeAt(axial->sliceIndex()));
+            const QImage& image = axial->sliceImage();
+            for (int r = 0; r < image.height(); ++r) {
+                for (int c = 0; c < image.width(); ++c) {
+                    const QRgb p = image.pixel(c, r);
+                    if (!(qRed(p) == qGreen(p) && qGreen(p) == qBlue(p))) {
+                        ++tinted;
+                        bone += values(c, r) >= 700.0F ? 1 : 0;
+                    }
+                }
+            }
+        }
+        return std::pair<int, int>(tinted, bone);
+    };
+    // Loaded with bone removal: the overlay is on the vessels.
+    const auto [vesselTinted, vesselBone] = overlayOnBone();
+    ASSERT_GT(vesselTinted, 50);
+    EXPECT_LT(vesselBone, vesselTinted / 10);
+    // Only the bone block (800..3000 HU, no bone removal): the overlay moves to it.
+    auto* panel = window_->segmentationPanel();
+    const int before = panel->previewsShown();
+    panel->boneRemovalBox()->setChecked(false);
+    panel->upperBox()->setValue(3000.0);
+    panel->lowerBox()->setValue(800.0);
+    panel->startPreview();
+    ASSERT_TRUE(waitUntil([&] { return panel->previewsShown() > before && !panel->isPreviewing(); },
+                          30000));
+    const auto [tinted, bone] = overlayOnBone();
+    ASSERT_GT(tinted, 50) << "no overlay on the bone block";
+    // The preview's coarse grid blurs the edge by a coarse voxel.
+    EXPECT_GT(bone, tinted * 3 / 4);
+}
+
+TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
+    // Just above the size resliced at once: a new slice is not there when
+    // setSliceIndex returns (the GUI thread goes on), and arrives later.
+    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    ASSERT_GT(big->voxelCount(), SliceView::kSynchronousVoxels);
+    big->setModality("CT");
+    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
+        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));  // value = 10 k
+    }
+    SliceView view(SliceOrientation::Axial);
+    view.resize(300, 300);
+    view.setWindow({0.0, 4000.0});
+    view.setVolume(big);
+    view.waitForSlice();
+    EXPECT_EQ(view.shownSliceIndex(), 65);
+    view.setSliceIndex(100);
+    EXPECT_EQ(view.sliceIndex(), 100);
+    EXPECT_EQ(view.shownSliceIndex(), 65);  // still the old slice
+    view.waitForSlice();
+    EXPECT_EQ(view.shownSliceIndex(), 100);
+    EXPECT_EQ(qRed(view.sliceImage().pixel(128, 128)), slices::windowGray(1000.0F, {0.0, 4000.0}));
 }
 
 }  // namespace
