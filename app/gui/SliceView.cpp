@@ -85,6 +85,7 @@ void SliceView::setVolume(std::shared_ptr<const scene::Volume> volume) {
     image_ = {};
     problem_.clear();
     readout_.clear();
+    crosshair_.reset();
     zoom_ = 1.0;
     pan_ = {};
     if (volume_ && !volume_->empty()) {
@@ -266,7 +267,34 @@ void SliceView::paintEvent(QPaintEvent* /*event*/) {
                               target.width() < 2.0 * image_.width());
         painter.drawImage(target, image_);
     }
+    paintCrosshair(painter);
     paintTexts(painter);
+}
+
+void SliceView::setCrosshair(const std::optional<glm::dvec3>& world) {
+    crosshair_ = world;
+    update();
+}
+
+void SliceView::paintCrosshair(QPainter& painter) const {
+    if (!crosshair_ || !stack_) {
+        return;
+    }
+    const slices::SlicePlane plane = stack_->planeAt(index_);
+    if (std::abs(glm::dot(*crosshair_ - plane.origin, plane.normal())) >
+        0.5 * stack_->step + 1e-6) {
+        return;
+    }
+    const auto at = widgetPointOf(*crosshair_);
+    if (!at) {
+        return;
+    }
+    constexpr double kGap = 6.0;
+    painter.setPen(QPen(QColor(120, 255, 120, 170), 1.0));
+    painter.drawLine(QPointF(0, at->y()), QPointF(at->x() - kGap, at->y()));
+    painter.drawLine(QPointF(at->x() + kGap, at->y()), QPointF(width(), at->y()));
+    painter.drawLine(QPointF(at->x(), 0), QPointF(at->x(), at->y() - kGap));
+    painter.drawLine(QPointF(at->x(), at->y() + kGap), QPointF(at->x(), height()));
 }
 
 void SliceView::paintTexts(QPainter& painter) const {

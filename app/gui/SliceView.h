@@ -84,6 +84,10 @@ class SliceView : public QWidget {
     [[nodiscard]] std::optional<glm::dvec3> worldAt(const QPointF& position) const;
     /// The widget position of `world` projected onto the shown slice.
     [[nodiscard]] std::optional<QPointF> widgetPointOf(const glm::dvec3& world) const;
+    /// The linked cursor (LPS mm; nullopt: none): a crosshair where it lies
+    /// on the shown slice (within half a slice step).
+    void setCrosshair(const std::optional<glm::dvec3>& world);
+    [[nodiscard]] const std::optional<glm::dvec3>& crosshair() const noexcept { return crosshair_; }
     /// The read-out for the point under widget position `position` (what
     /// hovering shows).
     void hoverAt(const QPointF& position);
@@ -120,6 +124,7 @@ class SliceView : public QWidget {
     /// The widget rectangle the slice image is drawn into.
     [[nodiscard]] QRectF imageRect() const;
     void paintTexts(class QPainter& painter) const;
+    void paintCrosshair(class QPainter& painter) const;
 
     slices::SliceOrientation orientation_;
     std::shared_ptr<const scene::Volume> volume_;
@@ -134,6 +139,7 @@ class SliceView : public QWidget {
     QImage image_;
     QString problem_;
     QString readout_;
+    std::optional<glm::dvec3> crosshair_;
     double zoom_ = 1.0;
     QPointF pan_;
     // Mouse drag state.

@@ -7,8 +7,10 @@
 #include <QMenu>
 #include <utility>
 
+#include "gui/SliceCursor.h"
 #include "gui/SliceTexts.h"
 #include "gui/SliceView.h"
+#include "gui/ViewerWidget.h"
 
 namespace vv::gui {
 
@@ -20,8 +22,8 @@ constexpr std::array<slices::SliceOrientation, 3> kOrientations{slices::SliceOri
 
 }  // namespace
 
-SliceWorkspace::SliceWorkspace(QWidget* viewer, QWidget* parent)
-    : QWidget(parent), viewer_(viewer) {
+SliceWorkspace::SliceWorkspace(ViewerWidget* viewer, QWidget* parent)
+    : QWidget(parent), viewer_(viewer), cursor_(new SliceCursor(viewer, this)) {
     setObjectName(QStringLiteral("sliceWorkspace"));
     grid_ = new QGridLayout(this);
     grid_->setContentsMargins(0, 0, 0, 0);
@@ -36,7 +38,18 @@ SliceWorkspace::SliceWorkspace(QWidget* viewer, QWidget* parent)
         views_[n] = view;
         grid_->addWidget(view, cells[n].y(), cells[n].x());
         connect(view, &SliceView::windowDragged, this, &SliceWorkspace::setWindow);
+        connect(view, &SliceView::clickedAt, cursor_,
+                [this](const glm::dvec3& world) { cursor_->setPoint(world); });
     }
+    connect(cursor_, &SliceCursor::pointChanged, this,
+            [this](const std::optional<glm::dvec3>& world) {
+                for (SliceView* view : views_) {
+                    if (world) {
+                        view->showSliceThrough(*world);
+                    }
+                    view->setCrosshair(world);
+                }
+            });
     buildMenu();
     applyLayout();
 }
@@ -113,6 +126,8 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
         view->setVolume(volume_);
     }
     menu_->menuAction()->setVisible(volume_ != nullptr);
+    cursor_->setActive(volume_ != nullptr);
+    cursor_->setPoint(std::nullopt);
     applyLayout();
 }
 

@@ -20,7 +20,9 @@ class QMenu;
 
 namespace vv::gui {
 
+class SliceCursor;
 class SliceView;
+class ViewerWidget;
 
 /// How the window's central area is divided.
 enum class SliceLayout : std::uint8_t {
@@ -46,7 +48,7 @@ class SliceWorkspace : public QWidget {
   public:
     /// `viewer` (the 3-D view; may be null when OpenGL is unavailable) is
     /// put into this widget.
-    explicit SliceWorkspace(QWidget* viewer, QWidget* parent = nullptr);
+    explicit SliceWorkspace(ViewerWidget* viewer, QWidget* parent = nullptr);
     ~SliceWorkspace() override;
 
     /// The volume to slice (null: none, 3-D only) and its segmentation.
@@ -67,6 +69,9 @@ class SliceWorkspace : public QWidget {
     [[nodiscard]] bool showsSlices() const;
 
     [[nodiscard]] SliceView* sliceView(slices::SliceOrientation orientation) const;
+    /// The linked cursor: a click on a slice or on a vessel in the 3-D view
+    /// moves the other slices there and marks it in every view.
+    [[nodiscard]] SliceCursor* cursor() const noexcept { return cursor_; }
     /// View > Slices: layouts, window presets, overlay style.
     [[nodiscard]] QMenu* menu() const noexcept { return menu_; }
     /// The window presets of the volume, in menu order.
@@ -88,6 +93,7 @@ class SliceWorkspace : public QWidget {
     void applyOverlayStyle();
 
     QWidget* viewer_;
+    SliceCursor* cursor_ = nullptr;
     std::array<SliceView*, 3> views_{};
     QGridLayout* grid_ = nullptr;
     std::shared_ptr<const scene::Volume> volume_;

@@ -11,6 +11,7 @@
 #include <QDoubleSpinBox>
 #include <QLocale>
 #include <QMenu>
+#include <QMouseEvent>
 #include <QPointer>
 #include <QWheelEvent>
 #include <cmath>
@@ -21,6 +22,7 @@
 #include "SyntheticCta.h"
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
+#include "gui/SliceCursor.h"
 #include "gui/SliceTexts.h"
 #include "gui/SliceView.h"
 #include "gui/SliceWorkspace.h"
@@ -335,6 +337,102 @@ TEST_F(SliceViewGuiTest, OverlayFollowsTheSegmentationPreview) {
     ASSERT_GT(tinted, 50) << "no overlay on the bone block";
     // The preview's coarse grid blurs the edge by a coarse voxel.
     EXPECT_GT(bone, tinted * 3 / 4);
+}
+
+/// A left click (press and release in place) at `at` on `widget`.
+void clickOn(QWidget* widget, const QPointF& at) {
+    QMouseEvent press(QEvent::MouseButtonPress, at, widget->mapToGlobal(at), Qt::LeftButton,
+                      Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(widget, &press);
+    QMouseEvent release(QEvent::MouseButtonRelease, at, widget->mapToGlobal(at), Qt::LeftButton,
+                        Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(widget, &release);
+}
+
+/// True when a pixel of `image` within one pixel of `at` is the cursor's green.
+bool isCursorGreen(const QImage& image, const QPointF& at) {
+    for (int dy = -1; dy <= 1; ++dy) {
+        for (int dx = -1; dx <= 1; ++dx) {
+            const QPoint q = at.toPoint() + QPoint(dx, dy);
+            if (!image.rect().contains(q)) {
+                continue;
+            }
+            const QRgb p = image.pixel(q);
+            if (qGreen(p) > qRed(p) + 60 && qGreen(p) > qBlue(p) + 60) {
+                return true;
+            }
+        }
+    }
+    return false;
+}
+
+TEST_F(SliceViewGuiTest, ClickOnASliceMovesTheOtherSlicesAndMarksThePoint) {
+    openSeries();
+    ASSERT_TRUE(waitForFrames(1));
+    SliceView* axial = view(SliceOrientation::Axial);
+    SliceView* coronal = view(SliceOrientation::Coronal);
+    SliceView* sagittal = view(SliceOrientation::Sagittal);
+    const QPointF at(axial->width() * 0.4, axial->height() * 0.6);
+    const auto world = axial->worldAt(at);
+    ASSERT_TRUE(world);
+    const int axialBefore = axial->sliceIndex();
+    clickOn(axial, at);
+    for (SliceView* v : {axial, coronal, sagittal}) {
+        v->waitForSlice();
+    }
+    ASSERT_TRUE(workspace()->cursor()->point());
+    EXPECT_LT(glm::distance(*workspace()->cursor()->point(), *world), 1e-9);
+    EXPECT_EQ(axial->sliceIndex(), axialBefore);
+    EXPECT_EQ(coronal->sliceIndex(), coronal->stack()->nearestIndex(world->y));
+    EXPECT_EQ(sagittal->sliceIndex(), sagittal->stack()->nearestIndex(world->x));
+    // Each slice view draws the crosshair through the point.
+    for (SliceView* v : {axial, coronal, sagittal}) {
+        const auto p = v->widgetPointOf(*world);
+        ASSERT_TRUE(p);
+        const QImage shown = v->grab().toImage();
+        EXPECT_TRUE(isCursorGreen(shown, *p + QPointF(20, 0))) << v->objectName().toStdString();
+        EXPECT_TRUE(isCursorGreen(shown, *p + QPointF(0, -20))) << v->objectName().toStdString();
+    }
+    // And the 3-D view marks it where the camera projects it.
+    QWidget* marker = workspace()->cursor()->marker();
+    ASSERT_NE(marker, nullptr);
+    EXPECT_TRUE(marker->isVisible());
+    const auto onScreen = workspace()->cursor()->markerPosition();
+    ASSERT_TRUE(onScreen);
+    EXPECT_TRUE(window_->viewer()->rect().contains(onScreen->toPoint()));
+    EXPECT_TRUE(isCursorGreen(marker->grab().toImage(), *onScreen + QPointF(7, 0)));
+}
+
+TEST_F(SliceViewGuiTest, ClickOnAVesselIn3DMovesTheSlices) {
+    openSeries();
+    ASSERT_TRUE(waitForFrames(1));
+    gui::ViewerWidget* viewer = window_->viewer();
+    std::optional<gui::ProbeResult> hit;
+    for (int y = 8; y < viewer->height() && !hit; y += 8) {
+        for (int x = 8; x < viewer->width() && !hit; x += 8) {
+            hit = viewer->probeAt(QPointF(x, y));
+        }
+    }
+    ASSERT_TRUE(hit) << "no vessel under any probed pixel";
+    clickOn(viewer, hit->widgetPosition);
+    ASSERT_TRUE(workspace()->cursor()->point());
+    const glm::dvec3 p = *workspace()->cursor()->point();
+    EXPECT_LT(glm::distance(p, glm::dvec3(hit->worldPosition)), 1e-3);
+    for (const auto o :
+         {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal}) {
+        SliceView* v = view(o);
+        v->waitForSlice();
+        EXPECT_EQ(v->sliceIndex(), v->stack()->nearestIndex(p[v->stack()->axis]));
+        EXPECT_TRUE(v->crosshair());
+    }
+    // The point lies within the volume (it came from its surface).
+    const auto sample = slices::voxelAt(*window_->volume(), p);
+    ASSERT_TRUE(sample);
+    // A mesh scene: clicks no longer set a cursor.
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(workspace()->cursor()->point());
+    EXPECT_FALSE(workspace()->cursor()->marker()->isVisible());
 }
 
 TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
