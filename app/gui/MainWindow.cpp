@@ -354,6 +354,12 @@ void MainWindow::buildDocks() {
             &MainWindow::showSegmentedScene);
     connect(segmentationPanel_, &panels::SegmentationPanel::labelMapReady, slices_,
             &SliceWorkspace::setLabelMap);
+    // The seed can be picked in a slice as on the 3-D view.
+    connect(slices_, &SliceWorkspace::sliceClicked, this, [this](const glm::dvec3& world) {
+        if (segmentationPanel_->pickSeedButton()->isChecked()) {
+            segmentationPanel_->pickSeed(glm::vec3(world));
+        }
+    });
     connect(segmentationPanel_, &panels::SegmentationPanel::statusMessage, this,
             [this](const QString& message) { statusLabel_->setText(message); });
 }

@@ -38,8 +38,10 @@ SliceWorkspace::SliceWorkspace(ViewerWidget* viewer, QWidget* parent)
         views_[n] = view;
         grid_->addWidget(view, cells[n].y(), cells[n].x());
         connect(view, &SliceView::windowDragged, this, &SliceWorkspace::setWindow);
-        connect(view, &SliceView::clickedAt, cursor_,
-                [this](const glm::dvec3& world) { cursor_->setPoint(world); });
+        connect(view, &SliceView::clickedAt, cursor_, [this](const glm::dvec3& world) {
+            cursor_->setPoint(world);
+            emit sliceClicked(world);
+        });
     }
     connect(cursor_, &SliceCursor::pointChanged, this,
             [this](const std::optional<glm::dvec3>& world) {

@@ -85,6 +85,10 @@ class SliceWorkspace : public QWidget {
   signals:
     /// The layout on screen changed.
     void layoutChanged();
+    /// A left click without dragging on a slice at `world` (LPS mm): the
+    /// cursor moved there; the Segmentation panel takes it as a seed while
+    /// it picks one.
+    void sliceClicked(const glm::dvec3& world);
 
   private:
     void buildMenu();

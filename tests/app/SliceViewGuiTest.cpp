@@ -9,10 +9,12 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLocale>
 #include <QMenu>
 #include <QMouseEvent>
 #include <QPointer>
+#include <QPushButton>
 #include <QWheelEvent>
 #include <cmath>
 #include <filesystem>
@@ -433,6 +435,40 @@ TEST_F(SliceViewGuiTest, ClickOnAVesselIn3DMovesTheSlices) {
     QCoreApplication::processEvents();
     EXPECT_FALSE(workspace()->cursor()->point());
     EXPECT_FALSE(workspace()->cursor()->marker()->isVisible());
+}
+
+TEST_F(SliceViewGuiTest, SeedIsPickedInASlice) {
+    openSeries();
+    SliceView* axial = view(SliceOrientation::Axial);
+    const scene::Volume& volume = *window_->volume();
+    // A widget point on bright lumen (300..700 HU) in some axial slice.
+    std::optional<QPointF> onLumen;
+    std::optional<slices::VoxelSample> lumen;
+    for (int k = 0; k < axial->sliceCount() && !onLumen; k += 2) {
+        axial->setSliceIndex(k);
+        axial->waitForSlice();
+        for (int y = 4; y < axial->height() && !onLumen; y += 3) {
+            for (int x = 4; x < axial->width() && !onLumen; x += 3) {
+                const auto world = axial->worldAt(QPointF(x, y));
+                const auto sample = world ? slices::voxelAt(volume, *world) : std::nullopt;
+                if (sample && sample->value >= 300.0F && sample->value <= 700.0F) {
+                    onLumen = QPointF(x, y);
+                    lumen = sample;
+                }
+            }
+        }
+    }
+    ASSERT_TRUE(onLumen) << "no lumen in any axial slice";
+    auto* panel = window_->segmentationPanel();
+    panel->pickSeedButton()->setChecked(true);
+    clickOn(axial, *onLumen);
+    ASSERT_TRUE(panel->seed()) << panel->messageLabel()->text().toStdString();
+    EXPECT_LE(glm::length(glm::vec3(*panel->seed() - lumen->voxel)), 2.0F * std::sqrt(3.0F));
+    EXPECT_FALSE(panel->pickSeedButton()->isChecked());
+    // Without Pick Seed a click only moves the cursor.
+    const auto seed = panel->seed();
+    clickOn(axial, *onLumen + QPointF(3, 0));
+    EXPECT_EQ(panel->seed(), seed);
 }
 
 TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
