@@ -1204,6 +1204,14 @@
         <source>Referring physician:</source>
         <translation>Überweisender Arzt:</translation>
     </message>
+    <message>
+        <source>&amp;Include it</source>
+        <translation>&amp;Aufnehmen</translation>
+    </message>
+    <message>
+        <source>Slice with segmentation:</source>
+        <translation>Schicht mit Segmentierung:</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ScreenshotMode</name>
@@ -1430,6 +1438,27 @@
     <message>
         <source>The edge of the segmentation drawn in its label colour</source>
         <translation>Der Rand der Segmentierung in der Farbe ihres Labels</translation>
+    </message>
+    <message>
+        <source>; segmentation as %1</source>
+        <translation>; Segmentierung als %1</translation>
+    </message>
+    <message>
+        <source>fill and outline</source>
+        <translation>Fläche und Umriss</translation>
+    </message>
+    <message>
+        <source>fill</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>outline</source>
+        <translation>Umriss</translation>
+    </message>
+    <message>
+        <source>%1 slice at %2, window %3%4</source>
+        <extracomment>%1 view name (Axial), %2 slice position (S 12.5 mm), %3 window (W 600 HU L 300 HU)</extracomment>
+        <translation>%1, Schicht bei %2, Fenster %3%4</translation>
     </message>
 </context>
 <context>
@@ -2758,6 +2787,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>anonymised</source>
         <translation>anonymisiert</translation>
+    </message>
+    <message>
+        <source>Slice with segmentation</source>
+        <translation>Schicht mit Segmentierung</translation>
     </message>
 </context>
 </TS>

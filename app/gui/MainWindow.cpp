@@ -240,6 +240,9 @@ void MainWindow::buildMenus() {
     exportReportAction_ = file->addAction(tr("Export Re&port…"), this, [this] {
         auto* dialog = new ReportDialog(*viewer_, document_->reportSource(), this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
+        if (const auto slice = slices_->reportSlice()) {
+            dialog->setSlice(slice->first, slice->second);
+        }
         dialog->open();
     });
     exportReportAction_->setObjectName(QStringLiteral("exportReport"));

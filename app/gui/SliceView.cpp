@@ -297,6 +297,34 @@ void SliceView::paintCrosshair(QPainter& painter) const {
     painter.drawLine(QPointF(at->x(), at->y() + kGap), QPointF(at->x(), height()));
 }
 
+QImage SliceView::printImage(int width) const {
+    if (image_.isNull() || !stack_ || width < 1) {
+        return {};
+    }
+    const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(width) *
+                                                                image_.height() / image_.width())));
+    QImage out(width, height, QImage::Format_RGB32);
+    out.fill(Qt::black);
+    QPainter painter(&out);
+    painter.drawImage(QRectF(0, 0, width, height), image_);
+    QFont font = painter.font();
+    font.setPixelSize(std::max(12, width / 40));
+    font.setBold(true);
+    painter.setFont(font);
+    const slices::EdgeLetters letters = slices::edgeLetters(stack_->plane);
+    const QRectF area =
+        QRectF(out.rect()).adjusted(width / 100.0, width / 100.0, -width / 100.0, -width / 100.0);
+    drawShadowedText(painter, area, Qt::AlignLeft | Qt::AlignVCenter,
+                     QString::fromStdString(letters.left));
+    drawShadowedText(painter, area, Qt::AlignRight | Qt::AlignVCenter,
+                     QString::fromStdString(letters.right));
+    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignTop,
+                     QString::fromStdString(letters.top));
+    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignBottom,
+                     QString::fromStdString(letters.bottom));
+    return out;
+}
+
 void SliceView::paintTexts(QPainter& painter) const {
     QFont font = painter.font();
     font.setPointSizeF(std::max(7.0, font.pointSizeF() * 0.9));

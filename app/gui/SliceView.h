@@ -73,6 +73,10 @@ class SliceView : public QWidget {
     [[nodiscard]] const QImage& sliceImage() const noexcept { return image_; }
     /// The slice whose values sliceImage() shows (-1: none yet).
     [[nodiscard]] int shownSliceIndex() const noexcept { return shownIndex_; }
+    /// The shown slice for print: `width` pixels wide (the slice's aspect),
+    /// the slice without zoom or pan (voxels sharp), the orientation letters
+    /// on its edges; null before a slice is shown.
+    [[nodiscard]] QImage printImage(int width) const;
     /// Blocks until a pending reslice has finished and is shown (tests).
     void waitForSlice();
 

@@ -166,6 +166,33 @@ void SliceWorkspace::applyLayout() {
     emit layoutChanged();
 }
 
+std::optional<std::pair<QImage, QString>> SliceWorkspace::reportSlice() const {
+    if (!volume_) {
+        return std::nullopt;
+    }
+    const int large = static_cast<int>(layout_) - static_cast<int>(SliceLayout::AxialLarge);
+    const SliceView* view = views_[large >= 0 && large < 3 ? static_cast<std::size_t>(large) : 0];
+    const QImage image = view->printImage(2400);
+    if (image.isNull()) {
+        return std::nullopt;
+    }
+    QString overlay;
+    if (fillAction_->isChecked() || outlineAction_->isChecked()) {
+        overlay = tr("; segmentation as %1")
+                      .arg(fillAction_->isChecked() && outlineAction_->isChecked()
+                               ? tr("fill and outline")
+                               : (fillAction_->isChecked() ? tr("fill") : tr("outline")));
+    }
+    //: %1 view name (Axial), %2 slice position (S 12.5 mm), %3 window (W 600 HU  L 300 HU)
+    const QString caption =
+        tr("%1 slice at %2, window %3%4")
+            .arg(orientationName(view->orientation()),
+                 slicePositionLabel(view->stack()->axis, view->slicePosition()),
+                 windowLabel(window_, QString::fromStdString(slices::valueUnit(*volume_))),
+                 overlay);
+    return std::pair{image, caption};
+}
+
 void SliceWorkspace::applyPreset(std::size_t index) {
     if (index >= presets_.size()) {
         return;

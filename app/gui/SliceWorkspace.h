@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QImage>
 #include <QList>
+#include <QString>
 #include <QWidget>
 #include <array>
 #include <memory>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "vv/scene/LabelMap.h"
@@ -78,6 +82,10 @@ class SliceWorkspace : public QWidget {
     [[nodiscard]] const std::vector<slices::PresetWindow>& presets() const noexcept {
         return presets_;
     }
+    /// The slice for a report: the large slice view's (else the axial one's)
+    /// printImage() and its caption (view, position, window, overlay);
+    /// nullopt without a volume or before its slice is shown.
+    [[nodiscard]] std::optional<std::pair<QImage, QString>> reportSlice() const;
     void applyPreset(std::size_t index);
     void setWindow(const slices::Window& window);
     [[nodiscard]] const slices::Window& window() const noexcept { return window_; }

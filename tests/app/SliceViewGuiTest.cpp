@@ -10,6 +10,7 @@
 #include <QCheckBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QMenu>
 #include <QMouseEvent>
@@ -21,8 +22,11 @@
 #include <memory>
 
 #include "GuiFixture.h"
+#include "ReportTestUtil.h"
 #include "SyntheticCta.h"
+#include "gui/ExportWorker.h"
 #include "gui/MainWindow.h"
+#include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/SliceCursor.h"
 #include "gui/SliceTexts.h"
@@ -469,6 +473,93 @@ TEST_F(SliceViewGuiTest, SeedIsPickedInASlice) {
     const auto seed = panel->seed();
     clickOn(axial, *onLumen + QPointF(3, 0));
     EXPECT_EQ(panel->seed(), seed);
+}
+
+TEST_F(SliceViewGuiTest, ReportIncludesTheSliceWithItsOverlay) {
+    openSeries();
+    ASSERT_TRUE(waitForFrames(1));
+    // The coronal slice through the tree's root, large.
+    SliceView* coronal = view(SliceOrientation::Coronal);
+    workspace()->setSliceLayout(SliceLayout::CoronalLarge);
+    const QRgb colour = 0xFF000000U | slices::overlayColor(1);
+    int bestCount = 0;
+    int best = 0;
+    for (int k = 0; k < coronal->sliceCount(); ++k) {
+        coronal->setSliceIndex(k);
+        coronal->waitForSlice();
+        const QImage& image = coronal->sliceImage();
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                n += image.pixel(x, y) == colour ? 1 : 0;
+            }
+        }
+        if (n > bestCount) {
+            bestCount = n;
+            best = k;
+        }
+    }
+    coronal->setSliceIndex(best);
+    coronal->waitForSlice();
+
+    // File > Export Report offers the slice.
+    window_->exportReportAction()->trigger();
+    auto* dialog = window_->findChild<gui::ReportDialog*>();
+    ASSERT_NE(dialog, nullptr);
+    ASSERT_NE(dialog->sliceBox(), nullptr);
+    EXPECT_TRUE(dialog->sliceBox()->isChecked());
+    const fs::path dir = panelTestDir() / "slice-report";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const fs::path pdf = dir / "report.pdf";
+    dialog->pdfEdit()->setText(QString::fromStdString(pdf.string()));
+    bool finished = false;
+    QString failure;
+    QObject::connect(dialog, &gui::ReportDialog::exportStarted, [&](gui::ExportWorker* worker) {
+        QObject::connect(worker, &gui::ExportWorker::failed,
+                         [&](const QString& message) { failure = message; });
+        QObject::connect(worker, &gui::ExportWorker::finished, [&] { finished = true; });
+    });
+    dialog->accept();
+    ASSERT_TRUE(waitUntil([&] { return finished; }, 120000)) << "no end of export";
+    ASSERT_TRUE(failure.isEmpty()) << failure.toStdString();
+
+    std::string text;
+    ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0);
+    EXPECT_NE(text.find("Slice with segmentation"), std::string::npos) << text;
+    // (Spaces as pdftotext writes them: no-break spaces become plain ones.)
+    QString expected = gui::orientationName(SliceOrientation::Coronal) +
+                       QStringLiteral(" slice at ") +
+                       gui::slicePositionLabel(1, coronal->slicePosition());
+    const std::string caption = expected.replace(QChar(0x00A0), QLatin1Char(' ')).toStdString();
+    text = QString::fromStdString(text).replace(QChar(0x00A0), QLatin1Char(' ')).toStdString();
+    EXPECT_NE(text.find(caption), std::string::npos) << caption << "\n" << text;
+    // The slice is an image of its own in the PDF, with the overlay's colour on it.
+    ASSERT_EQ(report::test::runTool(
+                  "pdfimages -png '" + pdf.string() + "' '" + (dir / "image").string() + "'", text),
+              0)
+        << text;
+    int images = 0;
+    int overlayPixels = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        if (entry.path().extension() != ".png") {
+            continue;
+        }
+        ++images;
+        const QImage image(QString::fromStdString(entry.path().string()));
+        for (int y = 0; y < image.height(); y += 2) {
+            for (int x = 0; x < image.width(); x += 2) {
+                const QRgb p = image.pixel(x, y);
+                overlayPixels += std::abs(qRed(p) - qRed(colour)) < 12 &&
+                                         std::abs(qGreen(p) - qGreen(colour)) < 12 &&
+                                         std::abs(qBlue(p) - qBlue(colour)) < 12
+                                     ? 1
+                                     : 0;
+            }
+        }
+    }
+    EXPECT_GE(images, 2);  // the view and the slice
+    EXPECT_GT(overlayPixels, 50);
 }
 
 TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
