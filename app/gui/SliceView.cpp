@@ -61,6 +61,19 @@ void drawShadowedText(QPainter& painter, const QRectF& rect, int flags, const QS
     painter.drawText(rect, flags, text);
 }
 
+// The orientation letters of `plane` at the middle of each edge of `area`.
+void drawEdgeLetters(QPainter& painter, const QRectF& area, const slices::SlicePlane& plane) {
+    const slices::EdgeLetters letters = slices::edgeLetters(plane);
+    drawShadowedText(painter, area, Qt::AlignLeft | Qt::AlignVCenter,
+                     QString::fromStdString(letters.left));
+    drawShadowedText(painter, area, Qt::AlignRight | Qt::AlignVCenter,
+                     QString::fromStdString(letters.right));
+    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignTop,
+                     QString::fromStdString(letters.top));
+    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignBottom,
+                     QString::fromStdString(letters.bottom));
+}
+
 }  // namespace
 
 SliceView::SliceView(slices::SliceOrientation orientation, QWidget* parent)
@@ -311,17 +324,9 @@ QImage SliceView::printImage(int width) const {
     font.setPixelSize(std::max(12, width / 40));
     font.setBold(true);
     painter.setFont(font);
-    const slices::EdgeLetters letters = slices::edgeLetters(stack_->plane);
     const QRectF area =
         QRectF(out.rect()).adjusted(width / 100.0, width / 100.0, -width / 100.0, -width / 100.0);
-    drawShadowedText(painter, area, Qt::AlignLeft | Qt::AlignVCenter,
-                     QString::fromStdString(letters.left));
-    drawShadowedText(painter, area, Qt::AlignRight | Qt::AlignVCenter,
-                     QString::fromStdString(letters.right));
-    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignTop,
-                     QString::fromStdString(letters.top));
-    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignBottom,
-                     QString::fromStdString(letters.bottom));
+    drawEdgeLetters(painter, area, stack_->plane);
     return out;
 }
 
@@ -341,15 +346,7 @@ void SliceView::paintTexts(QPainter& painter) const {
     QFont bold = font;
     bold.setBold(true);
     painter.setFont(bold);
-    const slices::EdgeLetters letters = slices::edgeLetters(stack_->plane);
-    drawShadowedText(painter, area, Qt::AlignLeft | Qt::AlignVCenter,
-                     QString::fromStdString(letters.left));
-    drawShadowedText(painter, area, Qt::AlignRight | Qt::AlignVCenter,
-                     QString::fromStdString(letters.right));
-    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignTop,
-                     QString::fromStdString(letters.top));
-    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignBottom,
-                     QString::fromStdString(letters.bottom));
+    drawEdgeLetters(painter, area, stack_->plane);
     painter.setFont(font);
     const double line = QFontMetricsF(font).height();
     const QRectF lower = area.adjusted(0, 0, 0, -line);

@@ -107,6 +107,34 @@ class SliceViewGuiTest : public GuiFixture {
     static inline std::unique_ptr<SyntheticCta> cta_;
 };
 
+/// Shows the slice of `view` with the most pixels in label 1's outline
+/// colour; returns its index, -1 when no slice has any.
+int showSliceWithMostOutline(SliceView* view) {
+    const QRgb colour = 0xFF000000U | slices::overlayColor(1);
+    int best = -1;
+    int bestCount = 0;
+    for (int k = 0; k < view->sliceCount(); ++k) {
+        view->setSliceIndex(k);
+        view->waitForSlice();
+        const QImage& image = view->sliceImage();
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                n += image.pixel(x, y) == colour ? 1 : 0;
+            }
+        }
+        if (n > bestCount) {
+            bestCount = n;
+            best = k;
+        }
+    }
+    if (best >= 0) {
+        view->setSliceIndex(best);
+        view->waitForSlice();
+    }
+    return best;
+}
+
 TEST_F(SliceViewGuiTest, MeshScenesShowNoSliceViews) {
     window_->setScene(makeTubeScene(), QStringLiteral("tube"));
     QCoreApplication::processEvents();
@@ -253,26 +281,8 @@ TEST_F(SliceViewGuiTest, SegmentationOverlayOnTheSlices) {
     // A coronal slice through the tree's root: its overlay pixels are in the
     // label colour where the label map has label 1.
     const QRgb colour = 0xFF000000U | slices::overlayColor(1);
-    int best = -1;
-    int bestCount = 0;
-    for (int k = 0; k < coronal->sliceCount(); k += 2) {
-        coronal->setSliceIndex(k);
-        coronal->waitForSlice();
-        int n = 0;
-        const QImage& image = coronal->sliceImage();
-        for (int y = 0; y < image.height(); ++y) {
-            for (int x = 0; x < image.width(); ++x) {
-                n += image.pixel(x, y) == colour ? 1 : 0;
-            }
-        }
-        if (n > bestCount) {
-            bestCount = n;
-            best = k;
-        }
-    }
+    const int best = showSliceWithMostOutline(coronal);
     ASSERT_GE(best, 0) << "no outline pixel on any coronal slice";
-    coronal->setSliceIndex(best);
-    coronal->waitForSlice();
     const auto labels =
         slices::resliceLabels(*window_->document()->labelMap(), coronal->stack()->planeAt(best));
     const QImage& image = coronal->sliceImage();
@@ -482,25 +492,7 @@ TEST_F(SliceViewGuiTest, ReportIncludesTheSliceWithItsOverlay) {
     SliceView* coronal = view(SliceOrientation::Coronal);
     workspace()->setSliceLayout(SliceLayout::CoronalLarge);
     const QRgb colour = 0xFF000000U | slices::overlayColor(1);
-    int bestCount = 0;
-    int best = 0;
-    for (int k = 0; k < coronal->sliceCount(); ++k) {
-        coronal->setSliceIndex(k);
-        coronal->waitForSlice();
-        const QImage& image = coronal->sliceImage();
-        int n = 0;
-        for (int y = 0; y < image.height(); ++y) {
-            for (int x = 0; x < image.width(); ++x) {
-                n += image.pixel(x, y) == colour ? 1 : 0;
-            }
-        }
-        if (n > bestCount) {
-            bestCount = n;
-            best = k;
-        }
-    }
-    coronal->setSliceIndex(best);
-    coronal->waitForSlice();
+    ASSERT_GE(showSliceWithMostOutline(coronal), 0);
 
     // File > Export Report offers the slice.
     window_->exportReportAction()->trigger();
