@@ -104,8 +104,6 @@ void SliceView::setVolume(std::shared_ptr<const scene::Volume> volume) {
     if (volume_ && !volume_->empty()) {
         try {
             stack_ = slices::sliceStack(*volume_, orientation_);
-            const auto [lo, hi] = volume_->valueRange();
-            valueSpan_ = std::max(1e-6, static_cast<double>(hi) - static_cast<double>(lo));
             index_ = stack_->count / 2;
             requestSlice();
         } catch (const Error& e) {

@@ -5,6 +5,7 @@
 #include <QPointF>
 #include <QString>
 #include <QWidget>
+#include <algorithm>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
@@ -52,6 +53,8 @@ class SliceView : public QWidget {
     void setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap);
     void setWindow(const slices::Window& window);
     [[nodiscard]] const slices::Window& window() const noexcept { return window_; }
+    /// The span of the volume's values (max - min), which scales window drags.
+    void setValueSpan(double span) noexcept { valueSpan_ = std::max(span, 1e-6); }
     void setOverlayStyle(const slices::OverlayStyle& style);
 
     [[nodiscard]] int sliceCount() const noexcept { return stack_ ? stack_->count : 0; }

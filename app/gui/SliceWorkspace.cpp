@@ -5,12 +5,14 @@
 #include <QActionGroup>
 #include <QGridLayout>
 #include <QMenu>
+#include <algorithm>
 #include <utility>
 
 #include "gui/SliceCursor.h"
 #include "gui/SliceTexts.h"
 #include "gui/SliceView.h"
 #include "gui/ViewerWidget.h"
+#include "vv/slices/VoxelProbe.h"
 
 namespace vv::gui {
 
@@ -116,21 +118,49 @@ void SliceWorkspace::rebuildPresetMenu() {
 void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
                                std::shared_ptr<const scene::LabelMap> labelMap) {
     volume_ = std::move(volume);
+    presetRun_.cancel();
     presets_.clear();
-    if (volume_ && !volume_->empty()) {
-        presets_ = slices::windowPresets(*volume_);
-        window_ = presets_.front().window;
-    }
     rebuildPresetMenu();
     for (SliceView* view : views_) {
-        view->setWindow(window_);
         view->setLabelMap(labelMap);
         view->setVolume(volume_);
+    }
+    if (volume_ && !volume_->empty()) {
+        if (volume_->voxelCount() <= SliceView::kSynchronousVoxels) {
+            presetsReady(slices::windowPresets(*volume_));
+        } else {
+            if (slices::valueUnit(*volume_) == "HU") {
+                setWindow({300.0, 600.0});  // CTA until the presets are there
+            }
+            presetRun_.start(
+                [volume = volume_](const std::stop_token& /*stop*/) {
+                    return slices::windowPresets(*volume);
+                },
+                [this](const std::vector<slices::PresetWindow>& presets) {
+                    presetsReady(presets);
+                });
+        }
     }
     menu_->menuAction()->setVisible(volume_ != nullptr);
     cursor_->setActive(volume_ != nullptr);
     cursor_->setPoint(std::nullopt);
     applyLayout();
+}
+
+void SliceWorkspace::presetsReady(const std::vector<slices::PresetWindow>& presets) {
+    presets_ = presets;
+    rebuildPresetMenu();
+    if (presets_.empty()) {
+        return;
+    }
+    // The full range preset's width is the span of the values.
+    const auto full = std::find_if(presets_.begin(), presets_.end(), [](const auto& p) {
+        return p.preset == slices::WindowPreset::FullRange;
+    });
+    for (SliceView* view : views_) {
+        view->setValueSpan(full != presets_.end() ? full->window.width : 1.0);
+    }
+    setWindow(presets_.front().window);
 }
 
 void SliceWorkspace::setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap) {

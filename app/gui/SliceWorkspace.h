@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "gui/WorkerRun.h"
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Volume.h"
 #include "vv/slices/SliceOverlay.h"
@@ -99,6 +100,8 @@ class SliceWorkspace : public QWidget {
     void sliceClicked(const glm::dvec3& world);
 
   private:
+    /// The volume's window presets arrived: the first applies.
+    void presetsReady(const std::vector<slices::PresetWindow>& presets);
     void buildMenu();
     void rebuildPresetMenu();
     void applyLayout();
@@ -118,6 +121,9 @@ class SliceWorkspace : public QWidget {
     QActionGroup* presetGroup_ = nullptr;
     QAction* fillAction_ = nullptr;
     QAction* outlineAction_ = nullptr;
+    /// The presets of volumes above SliceView::kSynchronousVoxels (a pass
+    /// over every voxel) are found on a worker.
+    LatestRun<std::vector<slices::PresetWindow>> presetRun_{this};
 };
 
 }  // namespace vv::gui

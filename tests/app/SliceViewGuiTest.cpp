@@ -575,6 +575,13 @@ TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
     view.waitForSlice();
     EXPECT_EQ(view.shownSliceIndex(), 100);
     EXPECT_EQ(qRed(view.sliceImage().pixel(128, 128)), slices::windowGray(1000.0F, {0.0, 4000.0}));
+
+    // In the window, its presets (a pass over every voxel) come from a worker too.
+    workspace()->setVolume(big, nullptr);
+    EXPECT_TRUE(workspace()->presets().empty());
+    ASSERT_TRUE(waitUntil([&] { return !workspace()->presets().empty(); }, 30000));
+    EXPECT_EQ(workspace()->presets().front().preset, slices::WindowPreset::Cta);
+    EXPECT_DOUBLE_EQ(workspace()->presets().back().window.width, 1290.0);  // 0 .. 1290 HU
 }
 
 }  // namespace
