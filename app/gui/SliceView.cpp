@@ -10,6 +10,7 @@
 #include <QPainter>
 #include <QWheelEvent>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <utility>
@@ -78,16 +79,14 @@ void drawEdgeLetters(QPainter& painter, const QRectF& area, const slices::SliceP
 
 SliceView::SliceView(slices::SliceOrientation orientation, QWidget* parent)
     : QWidget(parent), orientation_(orientation) {
-    static constexpr const char* kNames[] = {"axialSliceView", "coronalSliceView",
-                                             "sagittalSliceView"};
-    setObjectName(QLatin1String(kNames[static_cast<int>(orientation)]));
+    static constexpr std::array<const char*, 3> kNames{"axialSliceView", "coronalSliceView",
+                                                       "sagittalSliceView"};
+    setObjectName(QLatin1String(kNames.at(static_cast<std::size_t>(orientation))));
     setMouseTracking(true);
     setFocusPolicy(Qt::WheelFocus);
     setMinimumSize(120, 120);
     setAttribute(Qt::WA_OpaquePaintEvent);
 }
-
-SliceView::~SliceView() = default;
 
 void SliceView::setVolume(std::shared_ptr<const scene::Volume> volume) {
     run_.cancel();

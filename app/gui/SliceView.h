@@ -40,10 +40,9 @@ class SliceView : public QWidget {
 
   public:
     /// Volumes with more voxels are resliced on a worker thread.
-    static constexpr std::size_t kSynchronousVoxels = 8U * 1024U * 1024U;
+    static constexpr std::size_t kSynchronousVoxels = std::size_t{8} * 1024U * 1024U;
 
     explicit SliceView(slices::SliceOrientation orientation, QWidget* parent = nullptr);
-    ~SliceView() override;
 
     [[nodiscard]] slices::SliceOrientation orientation() const noexcept { return orientation_; }
     /// The volume to show (null: none); the middle slice, fitted. Throws

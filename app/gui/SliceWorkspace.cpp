@@ -25,9 +25,11 @@ constexpr std::array<slices::SliceOrientation, 3> kOrientations{slices::SliceOri
 }  // namespace
 
 SliceWorkspace::SliceWorkspace(ViewerWidget* viewer, QWidget* parent)
-    : QWidget(parent), viewer_(viewer), cursor_(new SliceCursor(viewer, this)) {
+    : QWidget(parent),
+      viewer_(viewer),
+      cursor_(new SliceCursor(viewer, this)),
+      grid_(new QGridLayout(this)) {
     setObjectName(QStringLiteral("sliceWorkspace"));
-    grid_ = new QGridLayout(this);
     grid_->setContentsMargins(0, 0, 0, 0);
     grid_->setSpacing(2);
     if (viewer_ != nullptr) {
@@ -57,8 +59,6 @@ SliceWorkspace::SliceWorkspace(ViewerWidget* viewer, QWidget* parent)
     buildMenu();
     applyLayout();
 }
-
-SliceWorkspace::~SliceWorkspace() = default;
 
 SliceView* SliceWorkspace::sliceView(slices::SliceOrientation orientation) const {
     return views_[static_cast<std::size_t>(orientation)];
@@ -116,7 +116,7 @@ void SliceWorkspace::rebuildPresetMenu() {
 }
 
 void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
-                               std::shared_ptr<const scene::LabelMap> labelMap) {
+                               const std::shared_ptr<const scene::LabelMap>& labelMap) {
     volume_ = std::move(volume);
     presetRun_.cancel();
     presets_.clear();
@@ -163,7 +163,7 @@ void SliceWorkspace::presetsReady(const std::vector<slices::PresetWindow>& prese
     setWindow(presets_.front().window);
 }
 
-void SliceWorkspace::setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap) {
+void SliceWorkspace::setLabelMap(const std::shared_ptr<const scene::LabelMap>& labelMap) {
     for (SliceView* view : views_) {
         view->setLabelMap(labelMap);
     }

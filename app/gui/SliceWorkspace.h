@@ -54,14 +54,13 @@ class SliceWorkspace : public QWidget {
     /// `viewer` (the 3-D view; may be null when OpenGL is unavailable) is
     /// put into this widget.
     explicit SliceWorkspace(ViewerWidget* viewer, QWidget* parent = nullptr);
-    ~SliceWorkspace() override;
 
     /// The volume to slice (null: none, 3-D only) and its segmentation.
     void setVolume(std::shared_ptr<const scene::Volume> volume,
-                   std::shared_ptr<const scene::LabelMap> labelMap);
+                   const std::shared_ptr<const scene::LabelMap>& labelMap);
     /// A new segmentation of the same volume (the Segmentation panel's
     /// preview or Apply); null removes the overlay.
-    void setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap);
+    void setLabelMap(const std::shared_ptr<const scene::LabelMap>& labelMap);
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return volume_;
     }

@@ -37,9 +37,10 @@ struct RowWalk {
 
 // The mapping of plane pixels to continuous voxel indices of a grid.
 struct PlaneToIndex {
-    glm::dmat4 worldToIndex;
-    glm::dvec3 columnStep;  // index change per column
-    glm::dvec3 rowStep;     // index change per row
+    glm::dmat4 worldToIndex{1.0};
+    glm::dvec3 columnStep{0.0};  // index change per column
+    glm::dvec3 rowStep{0.0};     // index change per row
+    glm::dvec3 origin{0.0};      // index of pixel (0, 0)
 
     PlaneToIndex(const glm::dmat4& indexToWorld, const SlicePlane& plane) {
         const double det = glm::determinant(glm::dmat3(indexToWorld));
@@ -55,9 +56,6 @@ struct PlaneToIndex {
     [[nodiscard]] RowWalk row(int r) const noexcept {
         return {origin + static_cast<double>(r) * rowStep, columnStep};
     }
-
-  private:
-    glm::dvec3 origin{0.0};
 };
 
 // The columns [first, last] of a row of `width` pixels whose index lies in
@@ -102,10 +100,10 @@ struct Grid {
         return static_cast<float>(voxels[k * strideZ + j * strideY + i]);
     }
     [[nodiscard]] float nearest(const glm::dvec3& p) const noexcept {
-        // Inside samples have p >= -0.5: truncating p + 0.5 rounds (halves up).
-        const int i = std::clamp(static_cast<int>(p.x + 0.5), 0, dims.x - 1);
-        const int j = std::clamp(static_cast<int>(p.y + 0.5), 0, dims.y - 1);
-        const int k = std::clamp(static_cast<int>(p.z + 0.5), 0, dims.z - 1);
+        // lrint: one instruction (ties to even, which only an exact half decides).
+        const int i = std::clamp(static_cast<int>(std::lrint(p.x)), 0, dims.x - 1);
+        const int j = std::clamp(static_cast<int>(std::lrint(p.y)), 0, dims.y - 1);
+        const int k = std::clamp(static_cast<int>(std::lrint(p.z)), 0, dims.z - 1);
         return at(i, j, k);
     }
     [[nodiscard]] float linear(const glm::dvec3& p) const noexcept {

@@ -28,10 +28,8 @@ Window windowBetween(double lo, double hi, double span) {
 // kHistogramSamples voxels taken at a fixed stride.
 class ValueHistogram {
   public:
-    explicit ValueHistogram(const scene::Volume& volume) {
-        const auto [lo, hi] = volume.valueRange();
-        lo_ = lo;
-        hi_ = hi;
+    /// `lo`, `hi`: the volume's value range.
+    ValueHistogram(const scene::Volume& volume, double lo, double hi) : lo_(lo), hi_(hi) {
         const std::size_t n = volume.voxelCount();
         const std::size_t stride = std::max<std::size_t>(1, n / kHistogramSamples);
         const double scale = hi_ > lo_ ? kHistogramBins / (hi_ - lo_) : 0.0;
@@ -91,7 +89,7 @@ Image<std::uint8_t> applyWindow(ImageView<const float> values, const Window& win
                 const float v = in[c];
                 // NaN fails both comparisons of clamp's branches: map it to 0 first.
                 const float t = std::isnan(v) ? 0.0F : std::clamp((v - lo) * scale, 0.0F, 255.0F);
-                o[c] = static_cast<std::uint8_t>(t + 0.5F);
+                o[c] = static_cast<std::uint8_t>(std::lrint(t));
             }
         }
     });
@@ -127,7 +125,7 @@ std::vector<PresetWindow> windowPresets(const scene::Volume& volume) {
                 {WindowPreset::Bone, {400.0, 1800.0}},
                 full};
     }
-    const ValueHistogram histogram(volume);
+    const ValueHistogram histogram(volume, lo, hi);
     return {{WindowPreset::Mra,
              windowBetween(histogram.percentile(0.5), histogram.percentile(0.999), span)},
             {WindowPreset::SoftTissue,
