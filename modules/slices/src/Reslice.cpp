@@ -100,10 +100,13 @@ struct Grid {
         return static_cast<float>(voxels[k * strideZ + j * strideY + i]);
     }
     [[nodiscard]] float nearest(const glm::dvec3& p) const noexcept {
-        // lrint: one instruction (ties to even, which only an exact half decides).
-        const int i = std::clamp(static_cast<int>(std::lrint(p.x)), 0, dims.x - 1);
-        const int j = std::clamp(static_cast<int>(std::lrint(p.y)), 0, dims.y - 1);
-        const int k = std::clamp(static_cast<int>(std::lrint(p.z)), 0, dims.z - 1);
+        // Inside samples have p >= -0.5, so truncating p + 0.5 rounds halves up
+        // (std::lround / std::lrint are library calls here: 4x slower).
+        // NOLINTBEGIN(bugprone-incorrect-roundings)
+        const int i = std::clamp(static_cast<int>(p.x + 0.5), 0, dims.x - 1);
+        const int j = std::clamp(static_cast<int>(p.y + 0.5), 0, dims.y - 1);
+        const int k = std::clamp(static_cast<int>(p.z + 0.5), 0, dims.z - 1);
+        // NOLINTEND(bugprone-incorrect-roundings)
         return at(i, j, k);
     }
     [[nodiscard]] float linear(const glm::dvec3& p) const noexcept {

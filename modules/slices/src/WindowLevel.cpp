@@ -89,7 +89,8 @@ Image<std::uint8_t> applyWindow(ImageView<const float> values, const Window& win
                 const float v = in[c];
                 // NaN fails both comparisons of clamp's branches: map it to 0 first.
                 const float t = std::isnan(v) ? 0.0F : std::clamp((v - lo) * scale, 0.0F, 255.0F);
-                o[c] = static_cast<std::uint8_t>(std::lrint(t));
+                // t >= 0: truncating t + 0.5 rounds (std::lrint is a library call).
+                o[c] = static_cast<std::uint8_t>(t + 0.5F);  // NOLINT(bugprone-incorrect-roundings)
             }
         }
     });
