@@ -1392,6 +1392,14 @@
         <source>%1 / %2</source>
         <translation>%1 / %2</translation>
     </message>
+    <message>
+        <source>Wheel or Up/Down: slices · Ctrl+wheel or right-drag: zoom · Double-click: fit
+Left-drag: window (right: wider, down: darker) · Middle or Shift+left-drag: pan
+Click: show this point in every view</source>
+        <translation>Mausrad oder Pfeil auf/ab: Schichten · Strg+Mausrad oder Ziehen rechts: zoomen · Doppelklick: einpassen
+Ziehen links: Fenster (nach rechts breiter, nach unten dunkler) · Ziehen Mitte oder Umschalt+links: verschieben
+Klick: diesen Punkt in allen Ansichten zeigen</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::SliceWorkspace</name>

@@ -85,6 +85,11 @@ SliceView::SliceView(slices::SliceOrientation orientation, QWidget* parent)
     setMouseTracking(true);
     setFocusPolicy(Qt::WheelFocus);
     setMinimumSize(120, 120);
+    setToolTip(
+        tr("Wheel or Up/Down: slices · Ctrl+wheel or right-drag: zoom · Double-click: fit\n"
+           "Left-drag: window (right: wider, down: darker) · "
+           "Middle or Shift+left-drag: pan\n"
+           "Click: show this point in every view"));
     setAttribute(Qt::WA_OpaquePaintEvent);
 }
 
