@@ -4,10 +4,12 @@
 #include <QCoreApplication>
 #include <QEventLoop>
 #include <QFontMetricsF>
+#include <QHelpEvent>
 #include <QKeyEvent>
 #include <QLocale>
 #include <QMouseEvent>
 #include <QPainter>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <algorithm>
 #include <array>
@@ -271,6 +273,18 @@ void SliceView::hoverAt(const QPointF& position) {
         readout_ = text;
         update();
     }
+}
+
+bool SliceView::event(QEvent* event) {
+    if (event->type() == QEvent::ToolTip) {
+        const auto* help = static_cast<QHelpEvent*>(event);
+        if (imageRect().contains(help->pos())) {
+            QToolTip::hideText();
+            event->ignore();
+            return true;
+        }
+    }
+    return QWidget::event(event);
 }
 
 void SliceView::paintEvent(QPaintEvent* /*event*/) {

@@ -106,6 +106,9 @@ class SliceView : public QWidget {
     void clickedAt(const glm::dvec3& world);
 
   protected:
+    /// The mouse help (tooltip) only off the image, so that it never covers
+    /// the values being read.
+    bool event(QEvent* event) override;
     void paintEvent(QPaintEvent* event) override;
     void wheelEvent(QWheelEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;

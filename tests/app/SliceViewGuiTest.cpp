@@ -9,6 +9,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QHelpEvent>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -16,6 +17,7 @@
 #include <QMouseEvent>
 #include <QPointer>
 #include <QPushButton>
+#include <QToolTip>
 #include <QWheelEvent>
 #include <cmath>
 #include <filesystem>
@@ -552,6 +554,25 @@ TEST_F(SliceViewGuiTest, ReportIncludesTheSliceWithItsOverlay) {
     }
     EXPECT_GE(images, 2);  // the view and the slice
     EXPECT_GT(overlayPixels, 50);
+}
+
+TEST_F(SliceViewGuiTest, MouseHelpOnlyOffTheImage) {
+    openSeries();
+    SliceView* coronal = view(SliceOrientation::Coronal);  // wider than high: margins above / below
+    const auto showHelpAt = [&](const QPoint& at) {
+        QToolTip::hideText();
+        QHelpEvent help(QEvent::ToolTip, at, coronal->mapToGlobal(at));
+        QCoreApplication::sendEvent(coronal, &help);
+        return waitUntil([] { return QToolTip::isVisible(); }, 1000) ? QToolTip::text() : QString();
+    };
+    const QString onImage = showHelpAt(QPoint(coronal->width() / 2, coronal->height() / 2));
+    EXPECT_TRUE(onImage.isEmpty()) << onImage.toStdString();
+    const auto world = coronal->worldAt(QPointF(coronal->width() / 2.0, 2.0));
+    ASSERT_TRUE(world);
+    ASSERT_FALSE(slices::voxelAt(*window_->volume(), *world)) << "the top edge is on the image";
+    const QString offImage = showHelpAt(QPoint(coronal->width() / 2, 2));
+    EXPECT_TRUE(offImage.contains(QStringLiteral("Wheel"))) << offImage.toStdString();
+    QToolTip::hideText();
 }
 
 TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
