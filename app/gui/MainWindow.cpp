@@ -475,6 +475,7 @@ void MainWindow::resetToDefaults() {
     resetViewSettings(*viewer_);
     beforeColorBlindSafe_.reset();
     resetLayout();
+    slices_->setSliceLayout(SliceLayout::ThreeDAndSlices);
     syncControls();
 }
 

@@ -5,6 +5,7 @@
 #include <QActionGroup>
 #include <QGridLayout>
 #include <QMenu>
+#include <QSettings>
 #include <algorithm>
 #include <utility>
 
@@ -18,6 +19,20 @@ namespace vv::gui {
 
 namespace {
 
+// The layouts by their QSettings names, in SliceLayout's order.
+constexpr std::array<const char*, 5> kLayoutNames{"3d", "3d+slices", "axial", "coronal",
+                                                  "sagittal"};
+
+SliceLayout storedLayout() {
+    const QString name = QSettings().value(QLatin1String(SliceWorkspace::kLayoutKey)).toString();
+    for (std::size_t n = 0; n < kLayoutNames.size(); ++n) {
+        if (name == QLatin1String(kLayoutNames.at(n))) {
+            return static_cast<SliceLayout>(n);
+        }
+    }
+    return SliceLayout::ThreeDAndSlices;
+}
+
 constexpr std::array<slices::SliceOrientation, 3> kOrientations{slices::SliceOrientation::Axial,
                                                                 slices::SliceOrientation::Coronal,
                                                                 slices::SliceOrientation::Sagittal};
@@ -30,6 +45,7 @@ SliceWorkspace::SliceWorkspace(ViewerWidget* viewer, QWidget* parent)
       cursor_(new SliceCursor(viewer, this)),
       grid_(new QGridLayout(this)) {
     setObjectName(QStringLiteral("sliceWorkspace"));
+    layout_ = storedLayout();
     grid_->setContentsMargins(0, 0, 0, 0);
     grid_->setSpacing(2);
     if (viewer_ != nullptr) {
@@ -171,6 +187,8 @@ void SliceWorkspace::setLabelMap(const std::shared_ptr<const scene::LabelMap>& l
 
 void SliceWorkspace::setSliceLayout(SliceLayout layout) {
     layout_ = layout;
+    QSettings().setValue(QLatin1String(kLayoutKey),
+                         QLatin1String(kLayoutNames.at(static_cast<std::size_t>(layout))));
     for (QAction* action : layoutGroup_->actions()) {
         action->setChecked(action->data().toInt() == static_cast<int>(layout));
     }

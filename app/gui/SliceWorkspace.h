@@ -66,8 +66,13 @@ class SliceWorkspace : public QWidget {
     }
 
     /// The layout chosen in the menu; shown as is when there is a volume,
-    /// else the 3-D view alone.
+    /// else the 3-D view alone. Remembered in QSettings (kLayoutKey) and
+    /// restored by the next window; View > Reset to Defaults sets the default,
+    /// ThreeDAndSlices.
     void setSliceLayout(SliceLayout layout);
+    /// The QSettings key of the layout: "3d", "3d+slices", "axial",
+    /// "coronal" or "sagittal" (anything else: the default).
+    static constexpr const char* kLayoutKey = "slices/layout";
     [[nodiscard]] SliceLayout sliceLayout() const noexcept { return layout_; }
     /// True when slice views are on screen.
     [[nodiscard]] bool showsSlices() const;

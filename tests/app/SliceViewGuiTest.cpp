@@ -17,6 +17,7 @@
 #include <QMouseEvent>
 #include <QPointer>
 #include <QPushButton>
+#include <QSettings>
 #include <QToolTip>
 #include <QWheelEvent>
 #include <cmath>
@@ -64,6 +65,12 @@ class SliceViewGuiTest : public GuiFixture {
         fs::remove_all(seriesDir(), ec);
         cta_.reset();
         GuiFixture::TearDownTestSuite();
+    }
+
+    void SetUp() override {
+        // Every test starts with the default layout (the layout is remembered).
+        QSettings().remove(QLatin1String(gui::SliceWorkspace::kLayoutKey));
+        GuiFixture::SetUp();
     }
 
     [[nodiscard]] gui::SliceWorkspace* workspace() const { return window_->sliceWorkspace(); }
@@ -191,6 +198,21 @@ TEST_F(SliceViewGuiTest, LayoutSwitch) {
         EXPECT_LT(view(o)->width(), fullWidth * 6 / 10);
     }
     EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::ThreeDAndSlices);
+
+    // The choice is remembered: the next window starts with it.
+    menuAction(menu, gui::SliceWorkspace::tr("Large Sagittal Slice"))->trigger();
+    {
+        const gui::MainWindow next;
+        EXPECT_EQ(next.sliceWorkspace()->sliceLayout(), SliceLayout::SagittalLarge);
+    }
+    // Reset to Defaults brings the default back; an unknown stored name gives it too.
+    window_->resetToDefaults();
+    EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::ThreeDAndSlices);
+    QSettings().setValue(QLatin1String(gui::SliceWorkspace::kLayoutKey), QStringLiteral("huge"));
+    {
+        const gui::MainWindow next;
+        EXPECT_EQ(next.sliceWorkspace()->sliceLayout(), SliceLayout::ThreeDAndSlices);
+    }
 }
 
 TEST_F(SliceViewGuiTest, WheelScrollsSlicesAndTheReadoutFollows) {
