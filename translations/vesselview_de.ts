@@ -1206,7 +1206,7 @@
     </message>
     <message>
         <source>&amp;Include it</source>
-        <translation>&amp;Aufnehmen</translation>
+        <translation>Aufneh&amp;men</translation>
     </message>
     <message>
         <source>Slice with segmentation:</source>
