@@ -1204,6 +1204,14 @@
         <source>Referring physician:</source>
         <translation>Überweisender Arzt:</translation>
     </message>
+    <message>
+        <source>&amp;Include it</source>
+        <translation>Aufneh&amp;men</translation>
+    </message>
+    <message>
+        <source>Slice with segmentation:</source>
+        <translation>Schicht mit Segmentierung:</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ScreenshotMode</name>
@@ -1332,6 +1340,133 @@
     <message>
         <source>from the histogram when loaded</source>
         <translation>beim Laden aus dem Histogramm</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SliceTexts</name>
+    <message>
+        <source>Coronal</source>
+        <translation>Koronal</translation>
+    </message>
+    <message>
+        <source>Sagittal</source>
+        <translation>Sagittal</translation>
+    </message>
+    <message>
+        <source>Axial</source>
+        <translation>Axial</translation>
+    </message>
+    <message>
+        <source>CTA</source>
+        <translation>CTA</translation>
+    </message>
+    <message>
+        <source>MRA</source>
+        <translation>MRA</translation>
+    </message>
+    <message>
+        <source>Soft tissue</source>
+        <translation>Weichteile</translation>
+    </message>
+    <message>
+        <source>Bone</source>
+        <translation>Knochen</translation>
+    </message>
+    <message>
+        <source>Full range</source>
+        <translation>Gesamter Wertebereich</translation>
+    </message>
+    <message>
+        <source>mm</source>
+        <translation>mm</translation>
+    </message>
+    <message>
+        <source>W %1  L %2</source>
+        <extracomment>W and L: the width and level (centre) of the grey-value window</extracomment>
+        <translation>W %1  L %2</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SliceView</name>
+    <message>
+        <source>%1 / %2</source>
+        <translation>%1 / %2</translation>
+    </message>
+    <message>
+        <source>Wheel or Up/Down: slices · Ctrl+wheel or right-drag: zoom · Double-click: fit
+Left-drag: window (right: wider, down: darker) · Middle or Shift+left-drag: pan
+Click: show this point in every view</source>
+        <translation>Mausrad oder Pfeil auf/ab: Schichten · Strg+Mausrad oder Ziehen rechts: zoomen · Doppelklick: einpassen
+Ziehen links: Fenster (nach rechts breiter, nach unten dunkler) · Ziehen Mitte oder Umschalt+links: verschieben
+Klick: diesen Punkt in allen Ansichten zeigen</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SliceWorkspace</name>
+    <message>
+        <source>S&amp;lices</source>
+        <translation>Sc&amp;hichtbilder</translation>
+    </message>
+    <message>
+        <source>&amp;3-D Only</source>
+        <translation>Nur &amp;3-D</translation>
+    </message>
+    <message>
+        <source>3-D and &amp;Three Slices</source>
+        <translation>3-D und &amp;drei Schichten</translation>
+    </message>
+    <message>
+        <source>Large &amp;Axial Slice</source>
+        <translation>Große &amp;axiale Schicht</translation>
+    </message>
+    <message>
+        <source>Large &amp;Coronal Slice</source>
+        <translation>Große &amp;koronale Schicht</translation>
+    </message>
+    <message>
+        <source>Large &amp;Sagittal Slice</source>
+        <translation>Große &amp;sagittale Schicht</translation>
+    </message>
+    <message>
+        <source>&amp;Window</source>
+        <translation>&amp;Fenster</translation>
+    </message>
+    <message>
+        <source>Segmentation &amp;Fill</source>
+        <translation>Segmentierung als &amp;Fläche</translation>
+    </message>
+    <message>
+        <source>Segmentation &amp;Outline</source>
+        <translation>Segmentierung als &amp;Umriss</translation>
+    </message>
+    <message>
+        <source>The segmented voxels tinted in their label colour</source>
+        <translation>Die segmentierten Voxel in der Farbe ihres Labels eingefärbt</translation>
+    </message>
+    <message>
+        <source>The edge of the segmentation drawn in its label colour</source>
+        <translation>Der Rand der Segmentierung in der Farbe ihres Labels</translation>
+    </message>
+    <message>
+        <source>; segmentation as %1</source>
+        <translation>; Segmentierung als %1</translation>
+    </message>
+    <message>
+        <source>fill and outline</source>
+        <translation>Fläche und Umriss</translation>
+    </message>
+    <message>
+        <source>fill</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>outline</source>
+        <translation>Umriss</translation>
+    </message>
+    <message>
+        <source>%1 slice at %2, window %3%4</source>
+        <extracomment>%1 view name (Axial), %2 slice position (S 12.5 mm), %3 window (W 600 HU L 300 HU)</extracomment>
+        <translation>%1, Schicht bei %2, Fenster %3%4</translation>
     </message>
 </context>
 <context>
@@ -2660,6 +2795,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>anonymised</source>
         <translation>anonymisiert</translation>
+    </message>
+    <message>
+        <source>Slice with segmentation</source>
+        <translation>Schicht mit Segmentierung</translation>
     </message>
 </context>
 </TS>

@@ -349,6 +349,7 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
     show(std::move(scene), title, std::exchange(pendingSession_, std::nullopt));
     // A DICOM image series: keep its volume for the Segmentation panel.
     if (source.volume) {
+        labelMap_ = source.labelMap;
         setVolume(source.volume, task->dicomOptions(), source.range);
     }
     recent::add(opened);
@@ -383,6 +384,9 @@ void DocumentController::setVolume(std::shared_ptr<const scene::Volume> volume,
                                    const segmentation::SceneSourceOptions& loadedWith,
                                    const segmentation::ThresholdRange& range) {
     volume_ = std::move(volume);
+    if (!volume_) {
+        labelMap_.reset();
+    }
     emit volumeChanged(volume_, loadedWith, range);
 }
 

@@ -13,6 +13,7 @@
 #include "gui/Session.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/report/ReportJob.h"
+#include "vv/scene/LabelMap.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
 #include "vv/segmentation/SceneSource.h"
@@ -125,6 +126,11 @@ class DocumentController : public QObject {
     [[nodiscard]] QString dicomSource() const;
     /// The DICOM series shown (image series or SEG); empty for meshes.
     [[nodiscard]] const std::string& seriesUid() const noexcept { return seriesUid_; }
+    /// The segmentation of volume() the shown scene was loaded with (the
+    /// slice views' overlay); null without a volume.
+    [[nodiscard]] const std::shared_ptr<const scene::LabelMap>& labelMap() const noexcept {
+        return labelMap_;
+    }
     /// The volume the shown scene was segmented from (a DICOM image series),
     /// kept for re-segmenting without reading the files; null otherwise.
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
@@ -211,6 +217,7 @@ class DocumentController : public QObject {
     QStringList shownFiles_;
     std::string seriesUid_;
     std::shared_ptr<const scene::Volume> volume_;
+    std::shared_ptr<const scene::LabelMap> labelMap_;
     QString lastError_;
 };
 

@@ -96,11 +96,13 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     const QString glProblem = ViewerWidget::probeOpenGl();
     if (glProblem.isEmpty()) {
         viewer_ = new ViewerWidget(stack_);
-        stack_->addWidget(viewer_);
+        slices_ = new SliceWorkspace(viewer_, stack_);
     } else {
         viewer_ = new ViewerWidget(nullptr);
         detachedViewer_.reset(viewer_);
+        slices_ = new SliceWorkspace(nullptr, stack_);  // slice views need no OpenGL
     }
+    stack_->addWidget(slices_);
     stack_->addWidget(glMessage_);
     setCentralWidget(stack_);
 
@@ -179,6 +181,7 @@ void MainWindow::connectDocument() {
                    const segmentation::ThresholdRange& range) {
                 segmentationPanel_->setVolume(volume, loadedWith.segmentation, range,
                                               loadedWith.surface);
+                slices_->setVolume(volume, document_->labelMap());
             });
     connect(document_, &DocumentController::recentFilesChanged, this,
             &MainWindow::rebuildRecentMenu);
@@ -237,6 +240,9 @@ void MainWindow::buildMenus() {
     exportReportAction_ = file->addAction(tr("Export Re&port…"), this, [this] {
         auto* dialog = new ReportDialog(*viewer_, document_->reportSource(), this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
+        if (const auto slice = slices_->reportSlice()) {
+            dialog->setSlice(slice->first, slice->second);
+        }
         dialog->open();
     });
     exportReportAction_->setObjectName(QStringLiteral("exportReport"));
@@ -295,6 +301,7 @@ void MainWindow::buildMenus() {
     // Leaving measure mode keeps the measurement: Esc (or Shift+M) clears it.
     clearMeasure->setShortcuts({QKeySequence(Qt::Key_Escape), QKeySequence(Qt::SHIFT | Qt::Key_M)});
     view->addSeparator();
+    view->addMenu(slices_->menu());  // shown for scenes from a volume only
     QMenu* panelsMenu = view->addMenu(tr("&Panels"));
     for (QDockWidget* dock : docks_) {
         panelsMenu->addAction(dock->toggleViewAction());
@@ -348,6 +355,14 @@ void MainWindow::buildDocks() {
     });
     connect(segmentationPanel_, &panels::SegmentationPanel::sceneReady, this,
             &MainWindow::showSegmentedScene);
+    connect(segmentationPanel_, &panels::SegmentationPanel::labelMapReady, slices_,
+            &SliceWorkspace::setLabelMap);
+    // The seed can be picked in a slice as on the 3-D view.
+    connect(slices_, &SliceWorkspace::sliceClicked, this, [this](const glm::dvec3& world) {
+        if (segmentationPanel_->pickSeedButton()->isChecked()) {
+            segmentationPanel_->pickSeed(glm::vec3(world));
+        }
+    });
     connect(segmentationPanel_, &panels::SegmentationPanel::statusMessage, this,
             [this](const QString& message) { statusLabel_->setText(message); });
 }
@@ -460,6 +475,7 @@ void MainWindow::resetToDefaults() {
     resetViewSettings(*viewer_);
     beforeColorBlindSafe_.reset();
     resetLayout();
+    slices_->setSliceLayout(SliceLayout::ThreeDAndSlices);
     syncControls();
 }
 

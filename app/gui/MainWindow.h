@@ -14,6 +14,7 @@
 #include "gui/DocumentController.h"
 #include "gui/MeasureTool.h"
 #include "gui/Session.h"
+#include "gui/SliceWorkspace.h"
 #include "gui/ViewerWidget.h"
 #include "vv/report/ReportJob.h"
 #include "vv/scene/Mesh.h"
@@ -130,6 +131,8 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] static QStringList recentFiles() { return DocumentController::recentFiles(); }
 
     [[nodiscard]] ViewerWidget* viewer() const noexcept { return viewer_; }
+    /// The central area: the 3-D viewer and, for DICOM scenes, the slice views.
+    [[nodiscard]] SliceWorkspace* sliceWorkspace() const noexcept { return slices_; }
     /// The "Functional parameters" panel's array chooser (item 0 "None" with
     /// empty data, then the point arrays, data = array name) and colour map.
     [[nodiscard]] QComboBox* arrayChooser() const;
@@ -252,6 +255,7 @@ class MainWindow : public QMainWindow {
 
     QStackedWidget* stack_ = nullptr;
     ViewerWidget* viewer_ = nullptr;
+    SliceWorkspace* slices_ = nullptr;
     std::unique_ptr<ViewerWidget> detachedViewer_;  ///< owns viewer_ when GL is unavailable
     QLabel* glMessage_ = nullptr;
     panels::VssPanel* vssPanel_ = nullptr;

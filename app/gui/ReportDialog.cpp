@@ -257,6 +257,22 @@ QCheckBox* ReportDialog::addOutput(const QString& label, QLineEdit*& edit, const
     return box;
 }
 
+void ReportDialog::setSlice(const QImage& image, const QString& caption) {
+    slice_ = image;
+    sliceCaption_ = caption;
+    if (sliceBox_ == nullptr) {
+        sliceBox_ = new QCheckBox(tr("&Include it"), this);
+        sliceBox_->setObjectName(QStringLiteral("reportSliceBox"));
+        sliceBox_->setChecked(true);
+        const int row = form_->indexOf(secondView_);
+        int at = 0;
+        QFormLayout::ItemRole role{};
+        form_->getItemPosition(row, &at, &role);
+        form_->insertRow(at + 1, tr("Slice with segmentation:"), sliceBox_);
+    }
+    sliceBox_->setToolTip(caption);
+}
+
 report::ReportJobOptions ReportDialog::jobOptions() const {
     report::ReportJobOptions job;
     const QSize size = viewPixelSize(viewer_);
@@ -267,6 +283,10 @@ report::ReportJobOptions ReportDialog::jobOptions() const {
     if (!second.isEmpty()) {
         job.secondView = render::namedViewFromName(second.toStdString());
         job.secondViewName = second.toStdString();
+    }
+    if (sliceBox_ != nullptr && sliceBox_->isChecked()) {
+        job.slice = slice_;
+        job.sliceCaption = sliceCaption_.toStdString();
     }
     job.legends = viewer_.legendsVisible();
     job.anonymise = anonymise_->isEnabled() && anonymise_->isChecked();

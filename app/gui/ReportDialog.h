@@ -69,6 +69,12 @@ class ReportDialog : public ExportDialog {
     [[nodiscard]] QLineEdit* disclaimerEdit() const noexcept { return disclaimer_; }
     [[nodiscard]] QLineEdit* pngEdit() const noexcept { return pngPath_; }
 
+    /// Offers a slice of the volume with its segmentation in the PDF (DICOM
+    /// data): a check box "Slice with segmentation" (on) under the second view.
+    void setSlice(const QImage& image, const QString& caption);
+    /// Null until setSlice().
+    [[nodiscard]] QCheckBox* sliceBox() const noexcept { return sliceBox_; }
+
     /// The job the fields describe (view = the viewer's, at its size).
     [[nodiscard]] report::ReportJobOptions jobOptions() const;
 
@@ -97,6 +103,9 @@ class ReportDialog : public ExportDialog {
     QComboBox* paper_ = nullptr;
     QPlainTextEdit* findings_ = nullptr;
     QComboBox* secondView_ = nullptr;
+    QCheckBox* sliceBox_ = nullptr;
+    QImage slice_;
+    QString sliceCaption_;
     QCheckBox* below_ = nullptr;
     QDoubleSpinBox* belowValue_ = nullptr;
     QCheckBox* above_ = nullptr;

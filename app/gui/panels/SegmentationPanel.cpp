@@ -482,6 +482,7 @@ void SegmentationPanel::previewDone(
                              .arg(QLocale().toString(static_cast<qulonglong>(outcome->triangles)))
                              .arg(outcome->componentsKept);
     message_->setText(what + QStringLiteral("; ") + tr("Apply for full resolution"));
+    emit labelMapReady(outcome->labelMap);
     emit sceneReady(outcome->scene, what + QStringLiteral(" — ") + tr("Apply for full resolution"));
 }
 
@@ -526,6 +527,7 @@ void SegmentationPanel::applyDone(
                              .arg(outcome->componentsKept)
                              .arg(outcome->componentsFound);
     message_->setText(what);
+    emit labelMapReady(outcome->labelMap);
     emit sceneReady(outcome->scene, what);
     emit applyFinished(true);
 }

@@ -139,6 +139,9 @@ class SegmentationPanel : public QWidget {
     /// is for the status bar (a preview says "Preview"). The ray-cast
     /// display hands over an empty scene (the volume is on the viewer).
     void sceneReady(std::shared_ptr<const vv::scene::Scene> scene, const QString& status);
+    /// The label map of a preview or Apply (the slice views' overlay);
+    /// emitted before its sceneReady().
+    void labelMapReady(std::shared_ptr<const vv::scene::LabelMap> labelMap);
     /// A message for the status bar (errors, seed problems, cancelled).
     void statusMessage(const QString& message);
     /// An Apply ended (true: its scene was handed over).

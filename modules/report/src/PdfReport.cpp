@@ -411,6 +411,9 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
         if (content.secondView) {
             viewSection(ReportText::tr("Second view"), *content.secondView);
         }
+        if (content.slice) {
+            viewSection(ReportText::tr("Slice with segmentation"), *content.slice);
+        }
 
         if (content.parameter) {
             const ReportParameter& parameter = *content.parameter;
@@ -475,7 +478,8 @@ int reportImageWidth(PaperSize paper) noexcept {
 QByteArray renderPdf(const ReportContent& content, PaperSize paper) {
     const int minimum = reportImageWidth(paper);
     for (const ReportView* view :
-         {&content.view, content.secondView ? &*content.secondView : nullptr}) {
+         {&content.view, content.secondView ? &*content.secondView : nullptr,
+          content.slice ? &*content.slice : nullptr}) {
         if (view != nullptr && (view->image.isNull() || view->image.width() < minimum)) {
             throw InvalidArgumentError("report: a view must be at least " +
                                        std::to_string(minimum) +

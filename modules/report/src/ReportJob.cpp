@@ -216,6 +216,12 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
                            namedViewCaption(options.secondViewName), rendering)
                     .first;
         }
+        if (!options.slice.isNull()) {
+            const QImage scaled = options.slice.width() >= width
+                                      ? options.slice
+                                      : options.slice.scaledToWidth(width, Qt::FastTransformation);
+            content.slice = ReportView{scaled, options.sliceCaption, {}};
+        }
         steps.next(kPdfWeight, ReportText::tr("Laying out the PDF"));
         content.parameter = parameterOf(scene, base, range, options.thresholds);
         content.settings.vss = base.vss;

@@ -196,7 +196,7 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
             ? dicom::loadDicomSeries(*chosen, options.dicom, progress.sub(0.05, 0.5))
             : dicom::loadDicomVolume(where, uid, options.dicom, progress.sub(0.05, 0.5));
     auto volume = std::make_shared<const scene::Volume>(std::move(loaded.volume));
-    const Segmentation segmentation =
+    Segmentation segmentation =
         segmentVessels(*volume, options.segmentation, progress.sub(0.5, 0.7));
     scene::Mesh mesh =
         extractSurface(segmentation.labelMap, {}, options.surface, progress.sub(0.7, 1.0));
@@ -213,6 +213,8 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
         report->boneComponents = segmentation.boneComponents;
         report->warnings = std::move(loaded.warnings);
         report->volume = std::move(volume);
+        report->labelMap =
+            std::make_shared<const scene::LabelMap>(std::move(segmentation.labelMap));
     }
     return scene;
 }

@@ -128,7 +128,7 @@ SegmentationOutcome runSegmentation(const SegmentationRequest& request, const Pr
         }
     }
     const scene::Volume& volume = step > 1 ? coarse : full;
-    const Segmentation segmented = segmentVessels(volume, options, progress.sub(0.0, 0.5));
+    Segmentation segmented = segmentVessels(volume, options, progress.sub(0.0, 0.5));
     scene::Mesh mesh =
         extractSurface(segmented.labelMap, {}, request.surface, progress.sub(0.5, 1.0));
     mesh.name = step > 1 ? "vessels (preview)" : "vessels";
@@ -143,6 +143,7 @@ SegmentationOutcome runSegmentation(const SegmentationRequest& request, const Pr
     auto scene = std::make_shared<scene::Scene>();
     scene->meshes.push_back(std::move(mesh));
     outcome.scene = std::move(scene);
+    outcome.labelMap = std::make_shared<const scene::LabelMap>(std::move(segmented.labelMap));
     outcome.milliseconds =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
             .count();

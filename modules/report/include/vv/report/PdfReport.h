@@ -87,6 +87,9 @@ struct ReportContent {
     bool syntheticDemo = false;
     ReportView view;
     std::optional<ReportView> secondView;
+    /// A slice of the volume with its segmentation overlay (DICOM data),
+    /// under the view(s); no legends.
+    std::optional<ReportView> slice;
     std::optional<ReportParameter> parameter;
     ReportSettings settings;
     std::string findings;  ///< free text; may have several lines

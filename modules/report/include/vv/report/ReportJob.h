@@ -54,6 +54,12 @@ struct ReportJobOptions {
     /// An optional second view (a preset camera on the scene) and its name.
     std::optional<render::NamedView> secondView;
     std::string secondViewName;
+    /// An optional slice image (the GUI's slice view with the segmentation
+    /// overlay and orientation letters) and its caption: shown in the PDF
+    /// under the view(s), scaled to the content width without smoothing
+    /// (voxels stay sharp).
+    QImage slice;
+    std::string sliceCaption;
     bool legends = true;       ///< legends on the PNG / Secondary Capture
     bool transparent = false;  ///< transparent background of the PNG
     /// Print "anonymised" for the patient and leave the identifiers out of the

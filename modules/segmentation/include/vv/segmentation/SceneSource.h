@@ -40,6 +40,8 @@ struct SceneSourceReport {
     /// The loaded volume (fromVolume), kept so that it can be segmented
     /// again without reading the files (the GUI's Segmentation panel).
     std::shared_ptr<const scene::Volume> volume;
+    /// The label map of that segmentation (fromVolume): the slice overlay.
+    std::shared_ptr<const scene::LabelMap> labelMap;
 };
 
 /// Loads `path` as a scene: a mesh file (loadMesh(), by extension) gives one

@@ -55,6 +55,9 @@ struct SegmentationRequest {
 /// What a segmentation produced: one mesh "vessels" (or "vessels (preview)").
 struct SegmentationOutcome {
     std::shared_ptr<const scene::Scene> scene;
+    /// The label map the surface came from, on the segmented grid (the
+    /// preview's coarse grid when step > 1): the slice views' overlay.
+    std::shared_ptr<const scene::LabelMap> labelMap;
     ThresholdRange range;  ///< the range used
     std::size_t componentsFound = 0;
     std::size_t componentsKept = 0;
