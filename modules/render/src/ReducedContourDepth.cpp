@@ -3,6 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "vv/core/Error.h"
 
 namespace vv::render {
 
@@ -63,6 +69,100 @@ Image<float> widenThinVessels(const Image<float>& depth, const Image<float>& ext
 }
 
 }  // namespace
+
+Image<float> reduceDepth(const Image<float>& depth, int width, int height) {
+    const int w = depth.width();
+    const int h = depth.height();
+    if (width < 1 || height < 1 || width > w || height > h) {
+        throw InvalidArgumentError("reduceDepth: cannot reduce " + std::to_string(w) + "x" +
+                                   std::to_string(h) + " to " + std::to_string(width) + "x" +
+                                   std::to_string(height));
+    }
+    // The first render column / row of each reduced pixel: the render pixels
+    // whose centres (x + 0.5) fall in it.
+    const auto starts = [](int from, int to) {
+        std::vector<int> start(static_cast<std::size_t>(to) + 1U);
+        for (int i = 0; i <= to; ++i) {
+            const double edge = static_cast<double>(i) * from / to - 0.5;
+            start[static_cast<std::size_t>(i)] =
+                std::clamp(static_cast<int>(std::ceil(edge)), 0, from);
+        }
+        start.back() = from;
+        return start;
+    };
+    const std::vector<int> columns = starts(w, width);
+    const std::vector<int> rows = starts(h, height);
+    Image<float> reduced(width, height, std::numeric_limits<float>::infinity());
+    for (int y = 0; y < height; ++y) {
+        const int y0 = rows[static_cast<std::size_t>(y)];
+        const int y1 = rows[static_cast<std::size_t>(y) + 1U];
+        for (int x = 0; x < width; ++x) {
+            const int x0 = columns[static_cast<std::size_t>(x)];
+            const int x1 = columns[static_cast<std::size_t>(x) + 1U];
+            float farthest = -std::numeric_limits<float>::infinity();
+            for (int sy = y0; sy < y1; ++sy) {
+                const float* row = depth.row(sy);
+                for (int sx = x0; sx < x1; ++sx) {
+                    if (std::isfinite(row[sx])) {
+                        farthest = std::max(farthest, row[sx]);
+                    }
+                }
+            }
+            if (std::isfinite(farthest)) {
+                reduced(x, y) = farthest;
+            }
+        }
+    }
+    return reduced;
+}
+
+void extendVoidHeight(Image<float>& height, ImageView<const std::uint8_t> mask) {
+    const int w = height.width();
+    const int h = height.height();
+    if (mask.width() != w || mask.height() != h) {
+        throw InvalidArgumentError("extendVoidHeight: the mask's size differs from the height's");
+    }
+    // 1 = a void pixel or one taken in an earlier ring: it may be taken from.
+    Image<std::uint8_t> known(w, h, 0);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            known(x, y) = mask(x, y) == 0 && std::isfinite(height(x, y)) ? 1 : 0;
+        }
+    }
+    std::vector<std::pair<int, int>> ring;
+    std::vector<float> values;
+    for (int pass = 0; pass < kVoidHeightRings; ++pass) {
+        ring.clear();
+        values.clear();
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                if (known(x, y) != 0 || mask(x, y) == 0 || !std::isfinite(height(x, y))) {
+                    continue;
+                }
+                double sum = 0.0;
+                int n = 0;
+                for (int dy = -1; dy <= 1; ++dy) {
+                    for (int dx = -1; dx <= 1; ++dx) {
+                        const int nx = x + dx;
+                        const int ny = y + dy;
+                        if (nx >= 0 && ny >= 0 && nx < w && ny < h && known(nx, ny) != 0) {
+                            sum += height(nx, ny);
+                            ++n;
+                        }
+                    }
+                }
+                if (n > 0) {
+                    ring.emplace_back(x, y);
+                    values.push_back(static_cast<float>(sum / n));
+                }
+            }
+        }
+        for (std::size_t i = 0; i < ring.size(); ++i) {
+            height(ring[i].first, ring[i].second) = values[i];
+            known(ring[i].first, ring[i].second) = 1;
+        }
+    }
+}
 
 float silhouetteReach(float reduction) noexcept {
     if (!(reduction > 2.0F)) {
