@@ -67,11 +67,14 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
         setTextureFilter(g, GL_LINEAR);
         program.set("uVssOpacity", std::clamp(in.vssOpacity, 0.0F, 1.0F));
     }
+    drawFullscreenAndUnbind(g, context.emptyVao, 4);
     if (reduced) {
         g.glActiveTexture(GL_TEXTURE1);
+        g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.vss)).texture());
         setTextureFilter(g, GL_NEAREST);
+        g.glBindTexture(GL_TEXTURE_2D, 0);
+        g.glActiveTexture(GL_TEXTURE0);
     }
-    drawFullscreenAndUnbind(g, context.emptyVao, 4);
     g.glEnable(GL_DEPTH_TEST);
     checkGlError(g, "composite pass");
 }
