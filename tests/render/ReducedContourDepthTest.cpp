@@ -1,10 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The depth a VSS below the render size is solved from (reduceDepth), and
-// the height its bilinear taps read next to contours (extendVoidHeight).
+// The depth a VSS below the render size is solved from (reduceDepth).
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <cstdint>
 #include <limits>
 
 #include "ReducedContourDepth.h"
@@ -67,27 +65,6 @@ TEST(ReducedContourDepthTest, ReducingToALargerSizeThrows) {
     const Image<float> depth(4, 4, kInf);
     EXPECT_THROW(static_cast<void>(reduceDepth(depth, 5, 4)), InvalidArgumentError);
     EXPECT_THROW(static_cast<void>(reduceDepth(depth, 0, 4)), InvalidArgumentError);
-}
-
-TEST(ReducedContourDepthTest, VesselPixelsNextToTheVoidTakeTheVoidsHeight) {
-    // Columns 0-1 void at heights 0.2 / 0.4, columns 2-5 a vessel at z 0.9.
-    Image<float> height(6, 3, 0.9F);
-    Image<std::uint8_t> mask(6, 3, 1);
-    for (int y = 0; y < 3; ++y) {
-        height(0, y) = 0.2F;
-        height(1, y) = 0.4F;
-        mask(0, y) = 0;
-        mask(1, y) = 0;
-    }
-    extendVoidHeight(height, mask.view());
-    for (int y = 0; y < 3; ++y) {
-        EXPECT_FLOAT_EQ(height(0, y), 0.2F);  // void pixels keep theirs
-        EXPECT_FLOAT_EQ(height(1, y), 0.4F);
-        EXPECT_FLOAT_EQ(height(2, y), 0.4F);  // first ring: the void neighbours' mean
-        EXPECT_FLOAT_EQ(height(3, y), 0.4F);  // second ring: the first ring's
-        EXPECT_FLOAT_EQ(height(4, y), 0.9F);  // deeper: the vessel's own z
-        EXPECT_FLOAT_EQ(height(5, y), 0.9F);
-    }
 }
 
 }  // namespace

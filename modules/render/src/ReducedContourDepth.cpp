@@ -5,7 +5,6 @@
 #include <cmath>
 #include <limits>
 #include <string>
-#include <utility>
 #include <vector>
 
 #include "vv/core/Error.h"
@@ -114,54 +113,6 @@ Image<float> reduceDepth(const Image<float>& depth, int width, int height) {
         }
     }
     return reduced;
-}
-
-void extendVoidHeight(Image<float>& height, ImageView<const std::uint8_t> mask) {
-    const int w = height.width();
-    const int h = height.height();
-    if (mask.width() != w || mask.height() != h) {
-        throw InvalidArgumentError("extendVoidHeight: the mask's size differs from the height's");
-    }
-    // 1 = a void pixel or one taken in an earlier ring: it may be taken from.
-    Image<std::uint8_t> known(w, h, 0);
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            known(x, y) = mask(x, y) == 0 && std::isfinite(height(x, y)) ? 1 : 0;
-        }
-    }
-    std::vector<std::pair<int, int>> ring;
-    std::vector<float> values;
-    for (int pass = 0; pass < kVoidHeightRings; ++pass) {
-        ring.clear();
-        values.clear();
-        for (int y = 0; y < h; ++y) {
-            for (int x = 0; x < w; ++x) {
-                if (known(x, y) != 0 || mask(x, y) == 0 || !std::isfinite(height(x, y))) {
-                    continue;
-                }
-                double sum = 0.0;
-                int n = 0;
-                for (int dy = -1; dy <= 1; ++dy) {
-                    for (int dx = -1; dx <= 1; ++dx) {
-                        const int nx = x + dx;
-                        const int ny = y + dy;
-                        if (nx >= 0 && ny >= 0 && nx < w && ny < h && known(nx, ny) != 0) {
-                            sum += height(nx, ny);
-                            ++n;
-                        }
-                    }
-                }
-                if (n > 0) {
-                    ring.emplace_back(x, y);
-                    values.push_back(static_cast<float>(sum / n));
-                }
-            }
-        }
-        for (std::size_t i = 0; i < ring.size(); ++i) {
-            height(ring[i].first, ring[i].second) = values[i];
-            known(ring[i].first, ring[i].second) = 1;
-        }
-    }
 }
 
 float silhouetteReach(float reduction) noexcept {

@@ -1,8 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include <cstdint>
-
 #include "vv/core/Image.h"
 
 namespace vv::render {
@@ -20,22 +18,6 @@ namespace vv::render {
 /// order alike. Throws InvalidArgumentError for a size below 1 or above
 /// `depth`'s.
 [[nodiscard]] Image<float> reduceDepth(const Image<float>& depth, int width, int height);
-
-/// For a VSS below the render size, whose height the frame interpolates
-/// bilinearly at the render or window size (its colour and iso-lines): the
-/// vessel pixels (mask != 0) within kVoidHeightRings pixels of a void pixel
-/// take the mean height of the void pixels (and pixels already taken) among
-/// their 8 neighbours, ring by ring, instead of their vessel's own z, so that
-/// a tap between a contour and the void next to it does not mix in a
-/// vessel's depth (a band of spurious iso-lines along every vessel). Pixels
-/// with a non-finite height stay as they are and are never taken from.
-/// `height` and `mask` must have the same size (InvalidArgumentError).
-void extendVoidHeight(Image<float>& height, ImageView<const std::uint8_t> mask);
-
-/// How many rings of vessel pixels extendVoidHeight() fills: a render pixel
-/// lies at most one VSS pixel inside the VSS's vessels (reduceDepth keeps
-/// every vessel pixel), so a bilinear tap reaches two.
-inline constexpr int kVoidHeightRings = 2;
 
 /// The steepest depth slope (depth per pixel, in units of a pixel's width at
 /// that depth) silhouetteDepth() extrapolates along; a steeper step between

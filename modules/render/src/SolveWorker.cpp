@@ -57,8 +57,6 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     frame.preview = preview;
     frame.errorBound = result.errorBound;
     if (belowRenderSize) {
-        // Bilinear taps of the height next to a contour stay on the VSS.
-        extendVoidHeight(frame.height, mask.view());
         if (!reduced) {
             *solved = std::move(reducedDepth);
         }

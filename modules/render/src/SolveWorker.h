@@ -40,9 +40,7 @@ struct SolvedFrame {
     /// frame's (solveFrame()'s `solveSize`), same size as `height`: its
     /// finite pixels are the VSS's vessel pixels there (the shading tells
     /// vessel from void by it); null when the VSS was solved at the frame's
-    /// own size (the G-buffer tells them). Such a frame's `height` holds, on
-    /// the vessel pixels next to the void, the void's height
-    /// (extendVoidHeight), not their z.
+    /// own size (the G-buffer tells them).
     std::shared_ptr<const Image<float>> solvedDepth;
     /// The lighting's plane-fit slopes (vss::fittedSlopes), same order and
     /// size as `height`; empty for previews (quick normals) and above
