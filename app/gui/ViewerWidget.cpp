@@ -286,8 +286,8 @@ void ViewerWidget::setFrameBudget(double milliseconds) {
     view_.refinement().setFrameBudget(milliseconds);
 }
 
-void ViewerWidget::setInteractiveScale(float scale) {
-    view_.refinement().setInteractiveScale(scale);
+void ViewerWidget::setInteractiveScale(float scale, float vssScale) {
+    view_.refinement().setInteractiveScale(scale, vssScale);
     requestFrame();
 }
 

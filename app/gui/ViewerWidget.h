@@ -9,6 +9,7 @@
 #include <QSurfaceFormat>
 #include <QTimer>
 #include <cstddef>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -175,16 +176,23 @@ class ViewerWidget : public QOpenGLWidget {
     /// Render size of frames while the camera moves, relative to the widget,
     /// in [0.1, 1] (default 0.5: a quarter of the pixels). 1 = full size,
     /// which lets the exact solve start from the last preview frame's depth.
-    /// Setting it fixes the scale (setFrameBudget(0)).
-    void setInteractiveScale(float scale);
+    /// Setting it fixes the scale (setFrameBudget(0)); their VSS is solved
+    /// and shaded at `vssScale` of the widget (at most `scale`; default:
+    /// `scale`, see RefinementPolicy::setInteractiveScale).
+    void setInteractiveScale(float scale, float vssScale = std::numeric_limits<float>::quiet_NaN());
     /// The scale moving frames render at; with a frame budget the next
     /// camera move takes the size the last one's timing chose.
     [[nodiscard]] float interactiveScale() const noexcept {
         return view_.refinement().interactiveScale();
     }
+    /// The scale moving frames solve and shade their VSS at (chosen with
+    /// interactiveScale()).
+    [[nodiscard]] float interactiveVssScale() const noexcept {
+        return view_.refinement().interactiveVssScale();
+    }
     /// Dynamic resolution while the camera moves: after each moving frame the
-    /// interactive scale steps down (1, 0.84, 0.71, ... kMinInteractiveScale:
-    /// ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
+    /// interactive scales step down (RefinementPolicy::kScaleSteps, with the
+    /// VSS's: ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
     /// and up when it took under 0.6 x, so slow machines keep their frame
     /// rate and fast ones get full-size frames; in between the size holds
     /// (a preview VSS shows only at the size it was solved at). A frame's time
@@ -233,6 +241,11 @@ class ViewerWidget : public QOpenGLWidget {
     }
     /// The size (device pixels) the passes of the last frame ran at.
     [[nodiscard]] QSize lastRenderSize() const noexcept { return lastRenderSize_; }
+    /// The size (device pixels) the last frame's VSS was solved and shaded at.
+    [[nodiscard]] QSize lastVssSize() const noexcept {
+        const glm::ivec2 size = view_.frameRenderer().lastVssSize();
+        return {size.x, size.y};
+    }
     /// How often settling started the exact solve directly from the last
     /// preview frame's depth (no frame drawn in between).
     [[nodiscard]] quint64 solvesRequestedOnSettle() const noexcept {

@@ -8,6 +8,10 @@
 // For the "upscale" pass (uVssVisibility) the alpha says how visible the VSS
 // is at the pixel (its opacity, minus what vessels and translucent objects
 // cover): that pass draws the iso-lines at the target's resolution there.
+// Built with REDUCED_VSS when the VSS was solved and shaded below the render
+// size (a moving frame: the vessels drawn sharper than the VSS): its colour
+// is interpolated from its void pixels only, so no colour of the VSS under a
+// vessel bleeds past the render size's sharper silhouette.
 
 in vec2 vUv;
 
@@ -23,6 +27,27 @@ uniform float uAoStrength;   // 0..1
 uniform sampler2D uTranslucent;
 uniform bool uUseTranslucent;
 uniform bool uVssVisibility;  // alpha = the VSS's visibility instead of 1
+#ifdef REDUCED_VSS
+uniform float uVssOpacity;  // the VSS's opacity (uVss: premultiplied, alpha 0 on its vessels)
+
+// The VSS's colour at this render pixel from its smaller image (linear
+// filtering): premultiplied by a weight that is 0 on its vessel pixels, so
+// one bilinear tap averages the void texels of the four around. Where none
+// of them is void (the pixel lies inside the VSS's wider vessel mask), the
+// void texels of the 4x4 around (four bilinear taps); where none is either,
+// no VSS.
+vec4 reducedVss(vec2 fragCoord) {
+    vec2 vssSize = vec2(textureSize(uVss, 0));
+    vec2 uv = fragCoord / vec2(textureSize(uVessels, 0));
+    vec4 v = texture(uVss, uv);
+    if (v.a < 1e-3) {
+        vec2 texel = 1.0 / vssSize;
+        v = texture(uVss, uv + vec2(-texel.x, -texel.y)) + texture(uVss, uv + vec2(texel.x, -texel.y)) +
+            texture(uVss, uv + vec2(-texel.x, texel.y)) + texture(uVss, uv + vec2(texel.x, texel.y));
+    }
+    return v.a < 1e-4 ? vec4(0.0) : vec4(v.rgb / v.a, uVssOpacity);
+}
+#endif
 
 out vec4 fragColor;
 
@@ -38,7 +63,12 @@ void main() {
                                    texture(uAo, aoTexel / vec2(textureSize(uAo, 0))).r
                              : 0.0;
     if (uUseVss) {
+#ifdef REDUCED_VSS
+        // (Vessel pixels hide it: not read there.)
+        vec4 vss = vessel.a < 1.0 ? reducedVss(gl_FragCoord.xy) : vec4(0.0);
+#else
         vec4 vss = texelFetch(uVss, p, 0);
+#endif
         color = mix(color, vss.rgb * (1.0 - occlusion), vss.a);
         visibility = vss.a * (1.0 - vessel.a);
     }

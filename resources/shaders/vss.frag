@@ -12,7 +12,8 @@
 // highlight widens and dims where the normal turns fast (Toksvig: the mean of
 // the normals around has length < 1), which removes the small bright specks
 // on the tight bends of the VSS around branch tips.
-// Output: the shaded VSS with alpha 1 where a VSS exists, 0 elsewhere.
+// Output: the shaded VSS with alpha = the opacity where a VSS exists, 0
+// elsewhere (uVoidPremultiplied: premultiplied, and 0 on vessel pixels too).
 
 in vec2 vUv;
 
@@ -33,6 +34,10 @@ uniform float uAmbient;
 uniform float uDiffuse;
 uniform float uSpecular;
 uniform float uShininess;
+// A VSS shaded below the render size (composite.frag's REDUCED_VSS):
+// premultiplied colour, alpha 0 on vessel pixels. Only the last write
+// depends on it.
+uniform bool uVoidPremultiplied;
 // Preview frames while the camera moves are built with QUICK_NORMALS
 // defined (a variant, not a uniform: llvmpipe runs both sides of a branch):
 // normals from one-pixel differences only (no plane fit, no Toksvig), about
@@ -305,5 +310,13 @@ void main() {
         vec3 ink = luminance > 0.3 ? color * 0.15 : vec3(0.8);
         color = mix(color, ink, coverage * clamp(uIsoStrength, 0.0, 1.0));
     }
-    fragColor = vec4(color, clamp(uOpacity, 0.0, 1.0));
+    float alpha = clamp(uOpacity, 0.0, 1.0);
+    if (uVoidPremultiplied) {
+        // A VSS below the render size: premultiplied, and transparent on
+        // vessel pixels, so that a bilinear tap of the composite averages
+        // the void pixels around only.
+        alpha = vessel ? 0.0 : alpha;
+        color *= alpha;
+    }
+    fragColor = vec4(color, alpha);
 }

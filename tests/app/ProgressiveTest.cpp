@@ -171,10 +171,11 @@ vv::render::PassState passStateOf(const ViewerWidget& viewer, const char* name) 
 
 /// One view as a moving frame and as the settled frame.
 struct MovingAndSettled {
-    QImage moving;     ///< the frame drawn while the camera moves, with this view's preview VSS
-    QImage settled;    ///< the same view after the release: exact VSS, occlusion, FXAA
-    QSize movingSize;  ///< the moving frame's render size
-    bool ok = false;   ///< both frames were drawn
+    QImage moving;        ///< the frame drawn while the camera moves, with this view's preview VSS
+    QImage settled;       ///< the same view after the release: exact VSS, occlusion, FXAA
+    QSize movingSize;     ///< the moving frame's render size
+    QSize movingVssSize;  ///< the size its VSS was solved and shaded at
+    bool ok = false;      ///< both frames were drawn
 };
 
 /// Drags the viewer by `moves` steps of `step`, holds the button until the
@@ -199,6 +200,7 @@ MovingAndSettled movingAndSettled(ViewerWidget& viewer, int moves, QPointF step)
     }
     out.moving = viewer.grabFramebuffer();
     out.movingSize = viewer.lastRenderSize();
+    out.movingVssSize = viewer.lastVssSize();
     drag.release();
     out.ok = waitUntil([&] {
         return exactShown(viewer) && !viewer.occlusionDeferred() &&
@@ -731,8 +733,14 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     viewer.setBackFaceCulling(qEnvironmentVariable("VV_BENCH_CULLING") != QStringLiteral("0"));
     // The viewer itself at 1280x720, whatever the toolbars take.
     ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > 0; }));
-    const QSize extra = window_->size() - viewer.size();
-    window_->resize(QSize(1280, 720) + extra);
+    // (Panels may still change their width after the first frame: resized
+    // again until the viewer keeps its size.)
+    for (int attempt = 0; attempt < 4 && viewer.size() != QSize(1280, 720); ++attempt) {
+        const QSize extra = window_->size() - viewer.size();
+        window_->resize(QSize(1280, 720) + extra);
+        static_cast<void>(waitUntil([&] { return viewer.size() == QSize(1280, 720); }));
+        static_cast<void>(waitUntil([&] { return exactShown(viewer); }));
+    }
     ASSERT_TRUE(waitUntil([&] { return viewer.size() == QSize(1280, 720) && exactShown(viewer); }))
         << viewer.width() << "x" << viewer.height();
     // The simplified geometry for moving frames is built in the background.
@@ -745,14 +753,21 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     std::printf("\n");
 
     // Progressive at half and at full interactive resolution, then off.
-    float dynamicScale = vv::render::RefinementPolicy::kMinInteractiveScale;
+    // The scales (render, VSS) the frame budget chose.
+    std::pair<float, float> dynamicScale{vv::render::RefinementPolicy::kMinInteractiveScale,
+                                         vv::render::RefinementPolicy::kMinInteractiveScale};
     struct Config {
         bool progressive;
         float scale;
         double budget;  // > 0: dynamic resolution from `scale` on
     };
-    for (const Config config : {Config{true, 0.5F, 30.0}, Config{true, 0.5F, 0.0},
-                                Config{true, 1.0F, 0.0}, Config{false, 1.0F, 0.0}}) {
+    // VV_BENCH_FPS=0 leaves the rotations out (only the SSIM rows below).
+    std::vector<Config> configs = {Config{true, 0.5F, 30.0}, Config{true, 0.5F, 0.0},
+                                   Config{true, 1.0F, 0.0}, Config{false, 1.0F, 0.0}};
+    if (qEnvironmentVariable("VV_BENCH_FPS") == QStringLiteral("0")) {
+        configs.clear();
+    }
+    for (const Config config : configs) {
         const bool progressive = config.progressive;
         viewer.setProgressiveRefinement(progressive);
         viewer.setInteractiveScale(config.scale);
@@ -772,12 +787,14 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             }
             warmUp.release();
             ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
-            std::printf("[bench]   after a warm-up drag of 8 moves: scale %.2f\n",
-                        static_cast<double>(viewer.interactiveScale()));
+            std::printf("[bench]   after a warm-up drag of 8 moves: scale %.2f (VSS %.2f)\n",
+                        static_cast<double>(viewer.interactiveScale()),
+                        static_cast<double>(viewer.interactiveVssScale()));
         }
         const auto countersBefore = viewer.solveCounters();
         const quint64 directBefore = viewer.solvesRequestedOnSettle();
         QSize movingSize;
+        QSize movingVssSize;
         std::size_t movingLevel = 0;
         std::size_t movingCulled = 0;
         std::vector<double> frameMs;
@@ -799,6 +816,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             paintMs.push_back(viewer.lastPaintMilliseconds());
             moving.add(viewer);
             movingSize = viewer.lastRenderSize();
+            movingVssSize = viewer.lastVssSize();
             movingLevel = viewer.lastGeometryLevel();
             movingCulled = viewer.lastCulledMeshes();
             const auto& s = viewer.vssStatus();
@@ -847,15 +865,18 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             paintMs[paintMs.size() / 2], paintMs.front(), paintMs.back(), movingLevel,
             movingCulled);
         std::printf(
-            "[bench] progressive=%s interactive scale %.2f (rendered %dx%d while moving) 1280x720 "
+            "[bench] progressive=%s interactive scale %.2f (rendered %dx%d, VSS %dx%d while "
+            "moving) "
+            "1280x720 "
             "demo: 30 rotations in %.0f ms = %.1f fps; frame ms "
             "median %.0f, min %.0f, max %.0f; frames with this view's VSS %d/30 (preview %d); "
             "release -> exact VSS shown %.0f ms after %llu frame(s), solve requested on settle: "
             "%s (solve %.0f ms); solves submitted %llu, completed %llu, cancelled %llu\n",
             progressive ? "on" : "off", static_cast<double>(config.scale), movingSize.width(),
-            movingSize.height(), totalMs, 30000.0 / totalMs, median, sorted.front(), sorted.back(),
-            withCurrentVss, previews, exactMs, static_cast<unsigned long long>(framesAfterRelease),
-            direct ? "yes" : "no", viewer.vssStatus().solveMilliseconds,
+            movingSize.height(), movingVssSize.width(), movingVssSize.height(), totalMs,
+            30000.0 / totalMs, median, sorted.front(), sorted.back(), withCurrentVss, previews,
+            exactMs, static_cast<unsigned long long>(framesAfterRelease), direct ? "yes" : "no",
+            viewer.vssStatus().solveMilliseconds,
             static_cast<unsigned long long>(countersAfter.submitted - countersBefore.submitted),
             static_cast<unsigned long long>(countersAfter.completed - countersBefore.completed),
             static_cast<unsigned long long>(countersAfter.cancelled - countersBefore.cancelled));
@@ -876,32 +897,59 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             EXPECT_EQ(previews, 0);
         }
         if (config.budget > 0.0) {
-            dynamicScale = viewer.interactiveScale();
+            dynamicScale = {viewer.interactiveScale(), viewer.interactiveVssScale()};
         }
     }
 
     // What a moving frame looks like: the same view as a moving frame (with
     // its own preview VSS) and as the settled frame (exact VSS, occlusion,
     // FXAA), compared by SSIM (1 - compareImages' difference: the worst of
-    // Y, Cb, Cr). At the scale the frame budget chose above and at the floor.
-    // VV_BENCH_SHOTS=dir saves both frames as PNGs there.
+    // Y, Cb, Cr). Two views (6 and 12 moves on from here), each at the
+    // floor of dynamic resolution, at 0.35, at 0.5 and at the scale the
+    // frame budget chose above: every scale drags to the view and back.
+    // VV_BENCH_SHOTS=dir saves the frames as PNGs there.
     const QString shots = qEnvironmentVariable("VV_BENCH_SHOTS");
     viewer.setProgressiveRefinement(true);
-    for (const float scale : {dynamicScale, vv::render::RefinementPolicy::kMinInteractiveScale}) {
-        viewer.setInteractiveScale(scale);
-        const MovingAndSettled frames = movingAndSettled(viewer, 6, {12, 3});
-        ASSERT_TRUE(frames.ok) << "no moving and settled frame at scale " << scale;
-        const vv::test::ImageComparison c = vv::test::compareImages(frames.moving, frames.settled);
-        std::printf(
-            "[bench] moving frame at scale %.2f (%dx%d) against the settled frame: "
-            "SSIM %.3f (luma %.3f)\n",
-            static_cast<double>(scale), frames.movingSize.width(), frames.movingSize.height(),
-            1.0 - c.difference, 1.0 - c.lumaDifference);
-        if (!shots.isEmpty()) {
-            const QString tag = QString::asprintf("%.2f", static_cast<double>(scale));
-            frames.moving.save(shots + QStringLiteral("/moving-") + tag + QStringLiteral(".png"));
-            frames.settled.save(shots + QStringLiteral("/settled-") + tag + QStringLiteral(".png"));
+    // (render scale, VSS scale): the floor, the render size at 0.35 and 0.5
+    // over a VSS at 0.25, and the VSS at the render size at 0.35 and 0.5.
+    std::vector<std::pair<float, float>> scales = {
+        {0.25F, 0.25F}, {0.35F, 0.25F}, {0.5F, 0.25F}, {0.35F, 0.35F}, {0.5F, 0.5F}};
+    if (std::find(scales.begin(), scales.end(), dynamicScale) == scales.end()) {
+        scales.push_back(dynamicScale);
+    }
+    for (int view = 1; view <= 2; ++view) {
+        QImage firstSettled;
+        for (const auto& [scale, vssScale] : scales) {
+            viewer.setInteractiveScale(scale, vssScale);
+            const MovingAndSettled frames = movingAndSettled(viewer, 6, {12, 3});
+            ASSERT_TRUE(frames.ok) << "no moving and settled frame at scale " << scale;
+            const vv::test::ImageComparison c =
+                vv::test::compareImages(frames.moving, frames.settled);
+            if (firstSettled.isNull()) {
+                firstSettled = frames.settled;
+            }
+            std::printf(
+                "[bench] view %d, moving frame at scale %.2f (%dx%d, VSS %dx%d) against the "
+                "settled "
+                "frame: SSIM %.3f (luma %.3f); settled frame against the first scale's: SSIM "
+                "%.4f\n",
+                view, static_cast<double>(scale), frames.movingSize.width(),
+                frames.movingSize.height(), frames.movingVssSize.width(),
+                frames.movingVssSize.height(), 1.0 - c.difference, 1.0 - c.lumaDifference,
+                1.0 - vv::test::compareImages(frames.settled, firstSettled).difference);
+            if (!shots.isEmpty()) {
+                const QString tag =
+                    QString::asprintf("%d-%.2f-%.2f", view, static_cast<double>(scale),
+                                      static_cast<double>(vssScale));
+                frames.moving.save(shots + QStringLiteral("/moving-") + tag +
+                                   QStringLiteral(".png"));
+                frames.settled.save(shots + QStringLiteral("/settled-") + tag +
+                                    QStringLiteral(".png"));
+            }
+            // Back to where this view's drags start.
+            ASSERT_TRUE(movingAndSettled(viewer, 6, {-12, -3}).ok);
         }
+        ASSERT_TRUE(movingAndSettled(viewer, 6, {12, 3}).ok);  // on to the next view
     }
     std::fflush(stdout);
 }

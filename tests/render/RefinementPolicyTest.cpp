@@ -139,35 +139,59 @@ TEST(RefinementPolicyTest, TheBudgetStepsTheScaleDownWhenSlowAndUpWhenFast) {
     RefinementPolicy policy;
     policy.setFrameBudget(30.0);
     ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.5F);
+    ASSERT_FLOAT_EQ(policy.interactiveVssScale(), 0.5F);
     // Over 1.15 x the budget: one step down, taken by the next camera move.
+    // From half size the VSS drops first, the render size holds.
     policy.frameMeasured(40.0);
-    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.5F);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.35F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.5F);
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.35F);
+    EXPECT_FLOAT_EQ(policy.frameSettings(display()).vssResolutionScale, 0.35F / 0.5F);
+    // Between 0.6 x and 1.15 x: the sizes hold.
+    policy.frameMeasured(25.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.35F);
+    // Down to a quarter for the VSS, then the render size drops.
+    policy.frameMeasured(40.0);
+    ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.5F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
+    policy.frameMeasured(40.0);
     ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
-    // Between 0.6 x and 1.15 x: the size holds.
-    policy.frameMeasured(25.0);
-    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
     // Under 0.6 x: one step up.
     policy.frameMeasured(10.0);
     EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.5F);
-    // The steps end at kMinInteractiveScale and at full size.
+    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.25F);
+    // The steps end at kMinInteractiveScale and at full size; the VSS is
+    // never larger than the render size.
     for (int i = 0; i < 20; ++i) {
         policy.frameMeasured(1e6);
         ASSERT_TRUE(policy.cameraMoved());
+        ASSERT_LE(policy.interactiveVssScale(), policy.interactiveScale());
     }
     EXPECT_FLOAT_EQ(policy.interactiveScale(), RefinementPolicy::kMinInteractiveScale);
     for (int i = 0; i < 20; ++i) {
         policy.frameMeasured(0.0);
         ASSERT_TRUE(policy.cameraMoved());
+        ASSERT_LE(policy.interactiveVssScale(), policy.interactiveScale());
     }
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 1.0F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 1.0F);
 }
 
 TEST(RefinementPolicyTest, AFixedScaleTurnsTheBudgetOff) {
     RefinementPolicy policy;
     policy.setInteractiveScale(0.7F);
     EXPECT_EQ(policy.frameBudget(), 0.0);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.7F);  // the VSS at the render size
+    policy.setInteractiveScale(0.7F, 0.3F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.3F);
+    policy.setInteractiveScale(0.7F, 0.9F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.7F);  // never above the render size
+    policy.setInteractiveScale(0.7F);
     policy.frameMeasured(1e6);  // a measurement would not have come: nothing to do
     ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.7F);

@@ -57,6 +57,23 @@ glm::ivec2 renderSizeFor(const FrameSettings& settings, const FrameTarget& targe
     return {scaledSize(target.width), scaledSize(target.height)};
 }
 
+/// The size the VSS of a frame rendered at `renderSize` is solved and shaded
+/// at (FrameSettings::vssResolutionScale): `renderSize` with the occlusion on
+/// or an external VSS.
+glm::ivec2 vssSizeFor(const FrameSettings& settings, glm::ivec2 renderSize,
+                      bool external) noexcept {
+    const float scale = settings.vssResolutionScale;
+    if (external || (settings.ao.enabled && settings.ao.strength > 0.0F) || !std::isfinite(scale) ||
+        scale >= 1.0F) {
+        return renderSize;
+    }
+    const float clamped = std::max(scale, 0.25F);
+    const auto scaledSize = [clamped](int n) {
+        return std::clamp(static_cast<int>(std::lround(static_cast<float>(n) * clamped)), 1, n);
+    };
+    return {scaledSize(renderSize.x), scaledSize(renderSize.y)};
+}
+
 /// What a solve request depends on besides the solver: view, render size, scene.
 std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
                       const glm::ivec2& viewport, std::uint64_t sceneRevision) noexcept {
@@ -69,11 +86,12 @@ std::uint64_t viewKey(const glm::mat4& view, const glm::mat4& projection,
 }
 
 /// The key of a solve of the view `view` with `options` (preview or exact),
-/// drawn at `reduction` window pixels per render pixel.
+/// drawn at `reduction` window pixels per render pixel, solved at `vssSize`.
 std::uint64_t requestKey(std::uint64_t view, const SolverKey& options, bool preview,
-                         float reduction) noexcept {
+                         float reduction, glm::ivec2 vssSize) noexcept {
     Hasher h;
     h.value(view);
+    h.value(vssSize);
     h.value(options);
     h.value(preview);
     h.value(reduction);
@@ -388,15 +406,17 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
     const vss::SolverOptions options = effectiveSolverOptions(vssSettings);
     static_cast<void>(vss::makeSolver(options));  // throws for bad options, like render()
     const float reduction = reductionOf(target, renderSize);
+    const glm::ivec2 vssSize = vssSizeFor(settings, renderSize, impl_->external != nullptr);
     const std::uint64_t request = requestKey(depthView, solverKey(options, vssSettings.range),
-                                             vssSettings.preview, reduction);
+                                             vssSettings.preview, reduction, vssSize);
     const auto latest = impl_->worker->latest().first;
     if ((latest && latest->key == request) || impl_->worker->requested(request)) {
         return true;
     }
     impl_->worker->submit(SolveWorker::Job{request, impl_->lastDepth, options, vssSettings.preview,
                                            vssSettings.range, pixelScaleOf(camera, renderSize.y),
-                                           reduction});
+                                           reduction,
+                                           vssSize != renderSize ? vssSize : glm::ivec2(0)});
     return true;
 }
 
@@ -539,26 +559,32 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     impl.importSolveInputs(graph, async);
     const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
     const std::uint64_t depthView = viewKey(camera.viewMatrix(), projection, size, sceneRevision);
+    // The VSS's size: the render size, or below it for a moving frame.
+    const glm::ivec2 vssSize =
+        vssSettings.enabled ? vssSizeFor(settings, size, external != nullptr) : size;
+    const bool reducedVss = vssSize != size;
+    vssSize_ = vssSize;
     const VssSolveOutputs solve = addVssSolvePass(
-        graph,
-        VssSolveInputs{
-            .context = context,
-            .worker = async ? impl.worker.get() : nullptr,
-            .external = external != nullptr,
-            .options = solverOptions,
-            .range = vssSettings.range,
-            .preview = vssSettings.preview,
-            .depthView = depthView,
-            .request = requestKey(depthView, solverKey(solverOptions, vssSettings.range),
-                                  vssSettings.preview, reductionOf(target, size)),
-            .pixelScale = pixelScale,
-            .reduction = reductionOf(target, size),
-            .size = size,
-            // The slopes the solver's thread fits for the lighting: at the
-            // render size up to kMaxCpuSlopePixels, else (and for an external
-            // VSS, which brings none) a stand-in texel: the shader fits them.
-            .cpuSlopes = !external && static_cast<long long>(size.x) * size.y <= kMaxCpuSlopePixels,
-        });
+        graph, VssSolveInputs{
+                   .context = context,
+                   .worker = async ? impl.worker.get() : nullptr,
+                   .external = external != nullptr,
+                   .options = solverOptions,
+                   .range = vssSettings.range,
+                   .preview = vssSettings.preview,
+                   .depthView = depthView,
+                   .request = requestKey(depthView, solverKey(solverOptions, vssSettings.range),
+                                         vssSettings.preview, reductionOf(target, size), vssSize),
+                   .pixelScale = pixelScale,
+                   .reduction = reductionOf(target, size),
+                   .size = vssSize,
+                   .reduced = reducedVss,
+                   // The slopes the solver's thread fits for the lighting: at the
+                   // render size up to kMaxCpuSlopePixels, else (and for an external
+                   // VSS, which brings none) a stand-in texel: the shader fits them.
+                   .cpuSlopes = !external &&
+                                static_cast<long long>(vssSize.x) * vssSize.y <= kMaxCpuSlopePixels,
+               });
 
     // A vessel cue normalises depth with the VSS's dmin / dmax when a VSS is
     // shown, else with the visible vessels' range ("depth-range").
@@ -611,8 +637,9 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     addVssShadingPass(graph, VssShadingInputs{.context = context,
                                               .settings = shadedVss,
                                               .light = lightingFor(meshes_.style().light),
-                                              .pixelScale = pixelScale,
-                                              .size = size});
+                                              .pixelScale = pixelScaleOf(camera, vssSize.y),
+                                              .size = vssSize,
+                                              .reduced = reducedVss});
     // Declared always: with no translucent object, or AO off, nothing reads
     // them and the graph culls them.
     addTranslucentPass(
@@ -638,6 +665,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                             .useTranslucent = meshes_.hasTranslucent(),
                                             .toTexture = useAa,
                                             .vssVisibilityAlpha = targetIsoLines > 0,
+                                            .reducedVss = reducedVss,
+                                            .vssOpacity = vssSettings.opacity,
                                             .aoStrength = ao.strength,
                                             .aoStep = aoStep,
                                             .background = settings.background,

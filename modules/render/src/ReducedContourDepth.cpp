@@ -3,6 +3,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "vv/core/Error.h"
 
 namespace vv::render {
 
@@ -63,6 +68,52 @@ Image<float> widenThinVessels(const Image<float>& depth, const Image<float>& ext
 }
 
 }  // namespace
+
+Image<float> reduceDepth(const Image<float>& depth, int width, int height) {
+    const int w = depth.width();
+    const int h = depth.height();
+    if (width < 1 || height < 1 || width > w || height > h) {
+        throw InvalidArgumentError("reduceDepth: cannot reduce " + std::to_string(w) + "x" +
+                                   std::to_string(h) + " to " + std::to_string(width) + "x" +
+                                   std::to_string(height));
+    }
+    // The first render column / row of each reduced pixel: the render pixels
+    // whose centres (x + 0.5) fall in it.
+    const auto starts = [](int from, int to) {
+        std::vector<int> start(static_cast<std::size_t>(to) + 1U);
+        for (int i = 0; i <= to; ++i) {
+            const double edge = static_cast<double>(i) * from / to - 0.5;
+            start[static_cast<std::size_t>(i)] =
+                std::clamp(static_cast<int>(std::ceil(edge)), 0, from);
+        }
+        start.back() = from;
+        return start;
+    };
+    const std::vector<int> columns = starts(w, width);
+    const std::vector<int> rows = starts(h, height);
+    Image<float> reduced(width, height, std::numeric_limits<float>::infinity());
+    for (int y = 0; y < height; ++y) {
+        const int y0 = rows[static_cast<std::size_t>(y)];
+        const int y1 = rows[static_cast<std::size_t>(y) + 1U];
+        for (int x = 0; x < width; ++x) {
+            const int x0 = columns[static_cast<std::size_t>(x)];
+            const int x1 = columns[static_cast<std::size_t>(x) + 1U];
+            float farthest = -std::numeric_limits<float>::infinity();
+            for (int sy = y0; sy < y1; ++sy) {
+                const float* row = depth.row(sy);
+                for (int sx = x0; sx < x1; ++sx) {
+                    if (std::isfinite(row[sx])) {
+                        farthest = std::max(farthest, row[sx]);
+                    }
+                }
+            }
+            if (std::isfinite(farthest)) {
+                reduced(x, y) = farthest;
+            }
+        }
+    }
+    return reduced;
+}
 
 float silhouetteReach(float reduction) noexcept {
     if (!(reduction > 2.0F)) {

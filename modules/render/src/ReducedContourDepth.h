@@ -5,6 +5,20 @@
 
 namespace vv::render {
 
+/// The depth of a frame drawn at `depth`'s size (the render size) reduced to
+/// width x height (the VSS's size, at most the render size per axis), for a
+/// VSS solved below the render size: each reduced pixel covers the block of
+/// render pixels whose centres fall in it, and is a vessel pixel (finite)
+/// when any of them is, with the depth of the farthest of those. So the
+/// reduced contour keeps the render size's silhouette: no vessel thinner
+/// than a reduced pixel disappears, and a contour pixel's depth is the one
+/// outermost on the vessel's flank (where the render size's contour lies),
+/// not the one at the reduced pixel's centre, a round vessel's flank nearer
+/// the viewer. Background (non-finite) elsewhere. Works in GL and image row
+/// order alike. Throws InvalidArgumentError for a size below 1 or above
+/// `depth`'s.
+[[nodiscard]] Image<float> reduceDepth(const Image<float>& depth, int width, int height);
+
 /// The steepest depth slope (depth per pixel, in units of a pixel's width at
 /// that depth) silhouetteDepth() extrapolates along; a steeper step between
 /// a contour pixel and the pixel inside it is an occlusion edge, not the

@@ -13,10 +13,13 @@ RefinementPolicy::Phase RefinementPolicy::phase() const noexcept {
     return deferOcclusion_ ? Phase::Settled : Phase::Still;
 }
 
-void RefinementPolicy::setInteractiveScale(float scale) noexcept {
+void RefinementPolicy::setInteractiveScale(float scale, float vssScale) noexcept {
     frameBudgetMs_ = 0.0;  // a fixed scale
     interactiveScale_ = std::isfinite(scale) ? std::clamp(scale, 0.1F, 1.0F) : 1.0F;
+    interactiveVssScale_ =
+        std::isfinite(vssScale) ? std::clamp(vssScale, 0.1F, interactiveScale_) : interactiveScale_;
     nextInteractiveScale_ = interactiveScale_;
+    nextVssScale_ = interactiveVssScale_;
 }
 
 void RefinementPolicy::setFrameBudget(double milliseconds) noexcept {
@@ -31,6 +34,7 @@ bool RefinementPolicy::cameraMoved() noexcept {
     cameraMoved_ = true;  // this frame may set the next move's size
     if (frameBudgetMs_ > 0.0) {
         interactiveScale_ = nextInteractiveScale_;
+        interactiveVssScale_ = nextVssScale_;
     }
     return true;
 }
@@ -48,12 +52,14 @@ FrameSettings RefinementPolicy::frameSettings(const FrameSettings& display) cons
     FrameSettings settings = display;
     if (moving_) {
         // Preview while the camera moves: a quicker solve, no occlusion, no
-        // FXAA (a reduced render size is blitted up instead), a reduced
-        // render size and the simplified geometry.
+        // FXAA (a reduced render size is upscaled instead), a reduced render
+        // size, a VSS below it and the simplified geometry.
         settings.vss.preview = true;
         settings.ao.enabled = false;
         settings.antialiasing = false;
         settings.resolutionScale = interactiveScale_;
+        // The VSS's size relative to the render size.
+        settings.vssResolutionScale = interactiveVssScale_ / interactiveScale_;
         settings.simplifiedGeometry = true;
     } else if (deferOcclusion_) {
         // Until the exact VSS is on screen: without the occlusion and FXAA
@@ -81,10 +87,11 @@ RefinementPolicy::AfterFrame RefinementPolicy::frameDrawn(const VssFrameStatus& 
 }
 
 void RefinementPolicy::frameMeasured(double milliseconds) noexcept {
-    // The step at or below the current scale.
+    // The first step at or below the current scales.
     std::size_t step = kScaleSteps.size() - 1;
     for (std::size_t i = 0; i < kScaleSteps.size(); ++i) {
-        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F) {
+        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F &&
+            kVssScaleSteps[i] <= interactiveVssScale_ + 1e-4F) {
             step = i;
             break;
         }
@@ -95,6 +102,7 @@ void RefinementPolicy::frameMeasured(double milliseconds) noexcept {
         --step;  // ~1.4x the pixels would still fit
     }
     nextInteractiveScale_ = kScaleSteps[step];
+    nextVssScale_ = kVssScaleSteps[step];
 }
 
 }  // namespace vv::render

@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "SolveWorker.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <exception>
+#include <memory>
 
 #include "ReducedContourDepth.h"
 #include "vv/core/Error.h"
@@ -16,8 +18,19 @@ namespace vv::render {
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
                        const vss::DepthRange& range, float pixelScale, float reduction,
-                       const std::stop_token& stop) {
+                       glm::ivec2 solveSize, const std::stop_token& stop) {
     const auto start = std::chrono::steady_clock::now();
+    // A VSS below the render size: solved from the depth reduced to its
+    // size, each reduced pixel's depth from the render size's silhouette.
+    const bool belowRenderSize = solveSize.x > 0 && solveSize.y > 0 &&
+                                 (solveSize.x != depth.width() || solveSize.y != depth.height());
+    Image<float> reducedDepth =
+        belowRenderSize ? reduceDepth(depth, solveSize.x, solveSize.y) : Image<float>{};
+    const Image<float>& input = belowRenderSize ? reducedDepth : depth;
+    const float inputPixelScale = belowRenderSize
+                                      ? pixelScale * static_cast<float>(depth.height()) /
+                                            static_cast<float>(std::max(solveSize.y, 1))
+                                      : pixelScale;
     vss::VssOptions vssOptions;
     vssOptions.solver = options;
     vssOptions.range = range;
@@ -27,15 +40,15 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     // normalised over the depth as read: the moved contours must not widen it.
     const bool reduced = silhouetteReach(reduction) > 0.0F;
     if (reduced && range.mode == vss::RangeMode::Visible) {
-        if (const auto visible = finiteRange(depth.view())) {
+        if (const auto visible = finiteRange(input.view())) {
             vssOptions.range = {vss::RangeMode::Fixed, visible->first, visible->second};
         }
     }
-    const Image<float> silhouette =
-        reduced ? silhouetteDepth(depth, reduction, pixelScale) : Image<float>{};
-    const ImageView<const float> solved = reduced ? silhouette.view() : depth.view();
-    const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(solved);
-    vss::VssResult result = vss::solve(solved, mask.view(), vssOptions);
+    auto solved = std::make_shared<Image<float>>(
+        reduced ? silhouetteDepth(input, reduction, inputPixelScale) : Image<float>{});
+    const ImageView<const float> solvedView = reduced ? solved->view() : input.view();
+    const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(solvedView);
+    vss::VssResult result = vss::solve(solvedView, mask.view(), vssOptions);
     SolvedFrame frame;
     frame.key = key;
     frame.height = std::move(result.height);
@@ -43,13 +56,19 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     frame.dmax = result.dmax;
     frame.preview = preview;
     frame.errorBound = result.errorBound;
+    if (belowRenderSize) {
+        if (!reduced) {
+            *solved = std::move(reducedDepth);
+        }
+        frame.solvedDepth = std::move(solved);
+    }
     if (!preview && !frame.height.empty() &&
         static_cast<long long>(frame.height.width()) * frame.height.height() <=
             kMaxCpuSlopePixels) {
         frame.slopes = vss::fittedSlopes(frame.height.view(), mask.view(), stop);
-        if (std::isfinite(frame.dmin) && std::isfinite(frame.dmax) && pixelScale > 0.0F) {
+        if (std::isfinite(frame.dmin) && std::isfinite(frame.dmax) && inputPixelScale > 0.0F) {
             vss::addNormalCoherence(frame.slopes, frame.height.view(), mask.view(),
-                                    vss::SlopeScale{frame.dmin, frame.dmax, pixelScale});
+                                    vss::SlopeScale{frame.dmin, frame.dmax, inputPixelScale});
         }
     }
     frame.milliseconds =
@@ -131,7 +150,7 @@ void SolveWorker::run(const std::stop_token& stop) {
         try {
             solved = std::make_shared<const SolvedFrame>(
                 solveFrame(job.key, *job.depth, job.options, job.preview, job.range, job.pixelScale,
-                           job.reduction, jobStop));
+                           job.reduction, job.solveSize, jobStop));
         } catch (const CancelledError&) {
             cancelled = true;
         } catch (const std::exception&) {

@@ -36,6 +36,12 @@ struct SolvedFrame {
     double milliseconds = 0.0;
     bool preview = false;     ///< a preview-quality solve
     double errorBound = 0.0;  ///< the solver's bound on |z' error|; NaN = none
+    /// The depth the VSS was solved from when that was reduced from the
+    /// frame's (solveFrame()'s `solveSize`), same size as `height`: its
+    /// finite pixels are the VSS's vessel pixels there (the shading tells
+    /// vessel from void by it); null when the VSS was solved at the frame's
+    /// own size (the G-buffer tells them).
+    std::shared_ptr<const Image<float>> solvedDepth;
     /// The lighting's plane-fit slopes (vss::fittedSlopes), same order and
     /// size as `height`; empty for previews (quick normals) and above
     /// kMaxCpuSlopePixels (the shader fits them itself there).
@@ -48,12 +54,19 @@ struct SolvedFrame {
 /// reduced size (`reduction` window pixels per render pixel, > 1) is solved
 /// from silhouetteDepth() (ReducedContourDepth.h), normalised over the depth
 /// as read in the visible range mode, so that its iso-lines lie where the
-/// window-size solve puts them; 1 solves `depth` as it is. Throws what vss::solve
-/// throws (CancelledError when `stop` is requested).
+/// window-size solve puts them; 1 solves `depth` as it is.
+///
+/// A `solveSize` below `depth`'s size (a VSS solved below the render size;
+/// {0, 0} = `depth`'s size) solves reduceDepth(depth, solveSize) instead,
+/// `pixelScale` and `reduction` being those of `depth`, and the frame keeps
+/// that depth (SolvedFrame::solvedDepth). Throws what vss::solve throws
+/// (CancelledError when `stop` is requested) and InvalidArgumentError for a
+/// `solveSize` larger than `depth`.
 [[nodiscard]] SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                                      const vss::SolverOptions& options, bool preview,
                                      const vss::DepthRange& range, float pixelScale,
-                                     float reduction, const std::stop_token& stop);
+                                     float reduction, glm::ivec2 solveSize,
+                                     const std::stop_token& stop);
 
 /// One worker thread solving the latest requested view; a newer request
 /// cancels a running stale one (vss::solve's stop token).
@@ -65,8 +78,9 @@ class SolveWorker {
         vss::SolverOptions options;
         bool preview = false;
         vss::DepthRange range;
-        float pixelScale = 0.0F;  ///< of the view (slopes' normals), see solveFrame()
-        float reduction = 1.0F;   ///< window pixels per render pixel, see solveFrame()
+        float pixelScale = 0.0F;     ///< of the view (slopes' normals), see solveFrame()
+        float reduction = 1.0F;      ///< window pixels per render pixel, see solveFrame()
+        glm::ivec2 solveSize{0, 0};  ///< the VSS's size, see solveFrame(); 0 = the depth's
     };
 
     /// `onSolved` is called on the worker thread after a solve that no

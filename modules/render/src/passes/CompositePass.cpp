@@ -2,12 +2,20 @@
 #include "passes/CompositePass.h"
 
 #include <QOpenGLFunctions_4_1_Core>
+#include <algorithm>
 
 #include "passes/FrameResources.h"
 
 namespace vv::render {
 
 namespace {
+
+/// Sets the minification and magnification filter of the texture bound to
+/// the active unit's 2-D target.
+void setTextureFilter(QOpenGLFunctions_4_1_Core& g, GLint filter) {
+    g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+    g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+}
 
 struct Data {
     Handle<Texture> vessels;
@@ -22,7 +30,9 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
     const PassContext& context = in.context;
     auto& g = *context.gl;
     context.beginFullscreen(r, d.target, in.size);
-    const Program& program = context.programs->composite;
+    const bool reduced = in.useVss && in.reducedVss;
+    const Program& program =
+        reduced ? context.programs->compositeReducedVss : context.programs->composite;
     program.use();
     g.glActiveTexture(GL_TEXTURE0);
     g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.vessels)).texture());
@@ -51,7 +61,20 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
     program.set("uTranslucent", 3);
     program.set("uUseTranslucent", in.useTranslucent ? 1 : 0);
     program.set("uVssVisibility", in.toTexture && in.vssVisibilityAlpha ? 1 : 0);
+    if (reduced) {
+        // Bilinear taps of the premultiplied VSS (pooled textures are nearest otherwise).
+        g.glActiveTexture(GL_TEXTURE1);
+        setTextureFilter(g, GL_LINEAR);
+        program.set("uVssOpacity", std::clamp(in.vssOpacity, 0.0F, 1.0F));
+    }
     drawFullscreenAndUnbind(g, context.emptyVao, 4);
+    if (reduced) {
+        g.glActiveTexture(GL_TEXTURE1);
+        g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.vss)).texture());
+        setTextureFilter(g, GL_NEAREST);
+        g.glBindTexture(GL_TEXTURE_2D, 0);
+        g.glActiveTexture(GL_TEXTURE0);
+    }
     g.glEnable(GL_DEPTH_TEST);
     checkGlError(g, "composite pass");
 }

@@ -19,6 +19,11 @@ struct CompositeInputs {
     /// With toTexture: the alpha of board::kComposited is how visible the
     /// VSS is at each pixel (0..1) instead of 1, for "upscale"'s iso-lines.
     bool vssVisibilityAlpha = false;
+    /// board::kVssColor is below the render size (VssSolveInputs::reduced,
+    /// premultiplied, transparent on its vessel pixels): it is read
+    /// bilinearly from its void pixels only and laid down at `vssOpacity`.
+    bool reducedVss = false;
+    float vssOpacity = 1.0F;
     float aoStrength = 0.0F;
     int aoStep = 1;  ///< board::kAo holds every aoStep-th pixel per axis (SsaoInputs::step)
     glm::vec3 background{0.0F};  ///< sRGB

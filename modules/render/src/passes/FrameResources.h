@@ -34,6 +34,8 @@ inline constexpr std::string_view kLinearDepthImage = "linear-depth-image";
 // "vss-solve".
 inline constexpr std::string_view kVssHeight = "vss-height";
 inline constexpr std::string_view kVssSlope = "vss-slope";
+/// The depth a VSS below the render size was solved from (VssSolveInputs::reduced).
+inline constexpr std::string_view kVssDepth = "vss-depth";
 inline constexpr std::string_view kShownVss = "shown-vss";
 inline constexpr std::string_view kSolveInput = "solve-input";
 // "depth-range".

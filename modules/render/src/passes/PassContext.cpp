@@ -22,6 +22,10 @@ FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
     programs.vssSlope =
         Program(gl, kFullscreen, vssFragment, "VSS shading (fitted slopes)", slopeTexture);
     programs.composite = Program(gl, kFullscreen, ":/vv/shaders/composite.frag", "composite");
+    const std::string_view compositeFragment[] = {":/vv/shaders/composite.frag"};
+    const std::string_view reducedVss[] = {"REDUCED_VSS"};
+    programs.compositeReducedVss =
+        Program(gl, kFullscreen, compositeFragment, "composite (reduced VSS)", reducedVss);
     programs.ssao = Program(gl, kFullscreen, ":/vv/shaders/ssao.frag", "SSAO");
     programs.aoBlur = Program(gl, kFullscreen, ":/vv/shaders/aoblur.frag", "AO blur");
     programs.fxaa = Program(gl, kFullscreen, ":/vv/shaders/fxaa.frag", "FXAA");

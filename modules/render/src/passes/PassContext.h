@@ -26,6 +26,8 @@ struct FullscreenPrograms {
     Program vssQuick;  ///< vss.frag with QUICK_NORMALS (preview frames)
     Program vssSlope;  ///< vss.frag with SLOPE_TEXTURE (slopes from the solver)
     Program composite;
+    /// composite.frag with REDUCED_VSS: the VSS's colour below the render size.
+    Program compositeReducedVss;
     Program ssao;
     Program aoBlur;
     Program fxaa;

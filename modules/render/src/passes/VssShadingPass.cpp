@@ -62,6 +62,7 @@ void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Da
     program.set("uIsoStrength", settings.isoLineStrength);
     program.set("uLighting", settings.lighting);
     program.set("uOpacity", settings.opacity);
+    program.set("uVoidPremultiplied", in.reduced ? 1 : 0);
     program.set("uLightDirection", light.direction);
     program.set("uAmbient", light.ambient);
     program.set("uDiffuse", light.diffuse);
@@ -79,7 +80,8 @@ VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& 
         [&](RenderGraph::Builder& b, Data& d) {
             d.height = b.read<Texture>(board::kVssHeight);
             d.slope = b.read<Texture>(board::kVssSlope);
-            d.linearDepth = b.read<Texture>(board::kLinearDepth);
+            d.linearDepth =
+                b.read<Texture>(inputs.reduced ? board::kVssDepth : board::kLinearDepth);
             d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
             d.out.color = b.write(
                 b.create<Texture>(board::kVssColor, sized(inputs.size, TextureFormat::RGBA8)));

@@ -13,10 +13,15 @@ namespace vv::render {
 
 struct VssShadingInputs {
     PassContext context;
-    VssSettings settings;  ///< scale, iso-lines, lighting, opacity, preview
-    Lighting light;        ///< the vessels' key light
-    float pixelScale = 0.0F;
-    glm::ivec2 size{1, 1};
+    VssSettings settings;     ///< scale, iso-lines, lighting, opacity, preview
+    Lighting light;           ///< the vessels' key light
+    float pixelScale = 0.0F;  ///< of a pixel at `size`
+    glm::ivec2 size{1, 1};    ///< the VSS's size (VssSolveInputs::size)
+    /// The VSS is below the render size (VssSolveInputs::reduced): its
+    /// vessel pixels are those of board::kVssDepth, not the G-buffer's, and
+    /// its colour is premultiplied and transparent on them (for the
+    /// composite's bilinear tap over its void pixels, REDUCED_VSS).
+    bool reduced = false;
 };
 
 struct VssShadingOutputs {
@@ -24,8 +29,9 @@ struct VssShadingOutputs {
 };
 
 /// "vss-shading": the depth colour scale, iso-lines and height-field
-/// lighting of the shown VSS. Reads board::kVssHeight, kVssSlope,
-/// kLinearDepth and kShownVss; puts board::kVssColor (transient).
+/// lighting of the shown VSS, at the VSS's size. Reads board::kVssHeight,
+/// kVssSlope, kLinearDepth (reduced: kVssDepth) and kShownVss; puts
+/// board::kVssColor (transient).
 VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& inputs);
 
 }  // namespace vv::render

@@ -63,6 +63,26 @@ bool uploadSlopes(QOpenGLFunctions_4_1_Core& g, const GlTexture& texture,
     return true;
 }
 
+/// Uploads the depth the shown frame's VSS was solved from (+Inf, no
+/// vessel, where it has none of the texture's size).
+void uploadSolvedDepth(QOpenGLFunctions_4_1_Core& g, const GlTexture& texture,
+                       const std::shared_ptr<const SolvedFrame>& shown) {
+    const auto& d = texture.descriptor();
+    const Image<float>* depth = shown != nullptr ? shown->solvedDepth.get() : nullptr;
+    const bool fits = depth != nullptr && depth->width() == d.width && depth->height() == d.height;
+    const Image<float> none =
+        fits ? Image<float>{}
+             : Image<float>(d.width, d.height, std::numeric_limits<float>::infinity());
+    const Image<float>& source = fits ? *depth : none;
+    g.glBindTexture(GL_TEXTURE_2D, texture.texture());
+    g.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    g.glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(source.stride()));
+    g.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, d.width, d.height, GL_RED, GL_FLOAT, source.row(0));
+    g.glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    checkGlError(g, "uploading the VSS's depth");
+}
+
 struct Data {
     Handle<CpuValue<DepthImage>> depth;
     Handle<SolvedFrameRef> solved;
@@ -83,6 +103,9 @@ void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const Data
         shown.frame = uploadHeight(g, heightTexture, frame);
         // Previews use quick normals: their slopes are never read.
         shown.slopes = !in.preview && uploadSlopes(g, slopeTexture, shown.frame);
+        if (in.reduced) {
+            uploadSolvedDepth(g, glTex(r.get(d.out.depth)), shown.frame);
+        }
     };
     const std::shared_ptr<const SolvedFrame> external = r.get(d.external).vss;
     if (in.external && external) {
@@ -93,7 +116,7 @@ void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const Data
         input = SolveInput{r.get(d.depth).value().image, in.depthView};
         const auto frame = std::make_shared<const SolvedFrame>(
             solveFrame(in.request, *input.depth, in.options, in.preview, in.range, in.pixelScale,
-                       in.reduction, {}));
+                       in.reduction, in.reduced ? in.size : glm::ivec2(0), {}));
         upload(frame);
         status.solveMilliseconds = frame->milliseconds;
         status.current = true;
@@ -105,7 +128,8 @@ void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const Data
         if (!in.worker->requested(in.request)) {
             input = SolveInput{r.get(d.depth).value().image, in.depthView};
             in.worker->submit(SolveWorker::Job{in.request, input.depth, in.options, in.preview,
-                                               in.range, in.pixelScale, in.reduction});
+                                               in.range, in.pixelScale, in.reduction,
+                                               in.reduced ? in.size : glm::ivec2(0)});
         }
         status.pending = true;
         upload(latest);  // the previous VSS, or none
@@ -144,6 +168,7 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
             b.dependsOn("solver", solverKey(inputs.options, inputs.range));
             b.dependsOn("preview", inputs.preview);
             b.dependsOn("reduction", inputs.reduction);
+            b.dependsOn("reduced", inputs.reduced);
             d.external = b.read<ExternalFrame>(board::kExternalVss);
             if (!inputs.external) {
                 d.depth = b.read<CpuValue<DepthImage>>(board::kLinearDepthImage);
@@ -158,6 +183,10 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
                 board::kVssSlope, inputs.cpuSlopes
                                       ? sized(inputs.size, TextureFormat::RGBA32F)
                                       : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
+            if (inputs.reduced) {
+                out.depth = b.write(b.createPersistent<Texture>(
+                    board::kVssDepth, sized(inputs.size, TextureFormat::R32F)));
+            }
             out.shown = b.write(b.createPersistent<CpuValue<ShownVss>>(board::kShownVss, {}));
             out.input = b.write(b.createPersistent<CpuValue<SolveInput>>(board::kSolveInput, {}));
         },
@@ -165,6 +194,9 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
     Blackboard& blackboard = graph.blackboard();
     blackboard.put(board::kVssHeight, data.out.height);
     blackboard.put(board::kVssSlope, data.out.slope);
+    if (inputs.reduced) {
+        blackboard.put(board::kVssDepth, data.out.depth);
+    }
     blackboard.put(board::kShownVss, data.out.shown);
     blackboard.put(board::kSolveInput, data.out.input);
     return data.out;

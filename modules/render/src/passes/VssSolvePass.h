@@ -43,7 +43,12 @@ struct VssSolveInputs {
     std::uint64_t request = 0;    ///< the solve's key: depthView, solver, preview
     float pixelScale = 0.0F;      ///< scene units per pixel per unit of depth
     float reduction = 1.0F;       ///< window pixels per render pixel (solveFrame())
-    glm::ivec2 size{1, 1};
+    glm::ivec2 size{1, 1};        ///< the VSS's size: the render size, or below it (`reduced`)
+    /// The VSS is solved below the render size (from the depth reduced to
+    /// `size`, solveFrame()): the depth it was solved from goes into
+    /// board::kVssDepth (R32F, +Inf off the vessels), for the passes that
+    /// tell its vessel pixels from its void ones at its size.
+    bool reduced = false;
     /// Give the slope texture the render size (the solver's thread fits the
     /// slopes); else a stand-in texel and the shader fits them.
     bool cpuSlopes = true;
@@ -52,16 +57,18 @@ struct VssSolveInputs {
 struct VssSolveOutputs {
     Handle<Texture> height;  ///< R32F z' (void) / z (vessels) / -1 (no VSS)
     Handle<Texture> slope;   ///< RGBA32F fitted slopes when ShownVss::slopes
+    Handle<Texture> depth;   ///< board::kVssDepth when `reduced`, else invalid
     Handle<CpuValue<ShownVss>> shown;
     Handle<CpuValue<SolveInput>> input;
 };
 
 /// "vss-solve": solves the VSS of board::kLinearDepthImage (inline, or
 /// submitted to the worker, showing its latest solve meanwhile), or takes
-/// board::kExternalVss's, and uploads height and slopes. Every output is
+/// board::kExternalVss's, and uploads height and slopes (and, reduced, the
+/// depth it was solved from). Every output is
 /// persistent: cached while depth, solver, preview and the external VSS
 /// stay, so colour scale and iso-line changes never re-solve. Puts
-/// board::kVssHeight, kVssSlope, kShownVss, kSolveInput.
+/// board::kVssHeight, kVssSlope, kShownVss, kSolveInput (and kVssDepth).
 VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs);
 
 }  // namespace vv::render

@@ -192,6 +192,9 @@ class FrameRenderer {
     /// The size the last frame's passes ran at (device pixels): the target's
     /// size scaled by FrameSettings::resolutionScale.
     [[nodiscard]] glm::ivec2 lastRenderSize() const noexcept { return renderSize_; }
+    /// The size the last frame's VSS was solved and shaded at: its render
+    /// size, or less (FrameSettings::vssResolutionScale).
+    [[nodiscard]] glm::ivec2 lastVssSize() const noexcept { return vssSize_; }
     /// True when the last frame's G-buffer came from the simplified (preview) meshes.
     [[nodiscard]] bool lastFrameSimplified() const noexcept { return lastGeometryLevel_ > 0; }
     /// The meshes the last frame drew: 0 = the scene's, k = preview level k
@@ -292,6 +295,7 @@ class FrameRenderer {
     std::string graphText_;
     VssFrameStatus status_;
     std::optional<std::pair<double, double>> cueRange_;
+    glm::ivec2 vssSize_{0, 0};
     glm::ivec2 renderSize_{0, 0};
 };
 

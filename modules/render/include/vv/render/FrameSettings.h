@@ -84,6 +84,15 @@ struct FrameSettings {
     /// drawn at the target's size) brings it into the target with bilinear
     /// taps. For interactive frames on slow rasterisers; 1 = full resolution.
     float resolutionScale = 1.0F;
+    /// The VSS's size relative to the render size, in [0.25, 1]: below 1 the
+    /// VSS is solved and shaded at that smaller size, from the render size's
+    /// depth reduced to it (every vessel pixel of the render size kept), and
+    /// composited under the vessels edge-aware: for moving frames, which
+    /// draw the vessels sharper than a VSS solve at their size would allow
+    /// (RefinementPolicy). Taken as 1 with the ambient occlusion on (it
+    /// reads the VSS at the render size) and for an external VSS
+    /// (FrameRenderer::setExternalVss).
+    float vssResolutionScale = 1.0F;
     /// Draw the G-buffer from one of the mesh renderer's preview scenes
     /// (simplified copies, MeshRenderer::setPreviewScenes) when it has any,
     /// the level chosen for the render size (MeshRenderer::previewLevelFor:

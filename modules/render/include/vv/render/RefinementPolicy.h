@@ -3,6 +3,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 
 #include "vv/render/FrameSettings.h"
 
@@ -17,25 +18,35 @@ namespace vv::render {
 ///  - Moving (a camera change with progressive refinement on, until
 ///    settle()): frames ask for a preview solve (VssSettings::preview), skip
 ///    the ambient occlusion and FXAA, draw the simplified geometry and run
-///    at interactiveScale() of the full size (upscaled into the target).
+///    at interactiveScale() of the full size (upscaled into the target),
+///    their VSS solved and shaded at interactiveVssScale() of it.
 ///  - Settled (from settle() until a frame shows the exact VSS, or no VSS
 ///    at all): frames leave out the occlusion and FXAA, so the exact VSS
 ///    shows as early as it can; the frame that shows it asks for one more
 ///    frame, which adds them (Still again).
 ///
 /// Dynamic resolution (a frame budget > 0): each moving frame's measured
-/// time steps the scale of the next camera move's frames through
-/// kScaleSteps — down when it took over 1.15 x the budget, up when under
-/// 0.6 x; in between it holds (a preview VSS shows only at the size it was
-/// solved at, so the size changes only between moves).
+/// time steps the sizes of the next camera move's frames through
+/// kScaleSteps / kVssScaleSteps — down when it took over 1.15 x the budget,
+/// up when under 0.6 x; in between it holds (a preview VSS shows only at the
+/// size it was solved at, so the sizes change only between moves). Down to
+/// half size, the VSS is solved and shaded at the render size; below that,
+/// the render size stays at half while the VSS's drops to a quarter (the
+/// vessels keep edges twice as sharp as the VSS's size would give them, and
+/// the frame is nearer the settled one than a frame all at the VSS's size),
+/// and only then does the render size drop too.
 class RefinementPolicy {
   public:
     enum class Phase { Still, Moving, Settled };
 
-    /// The scales dynamic resolution steps through, each ~0.84 of the one
-    /// before (~0.7 of its pixels), down to kMinInteractiveScale.
-    static constexpr std::array<float, 9> kScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F, 0.5F,
-                                                         0.42F, 0.35F, 0.3F,  0.25F};
+    /// The render scales dynamic resolution steps through, most expensive
+    /// first, down to kMinInteractiveScale; kVssScaleSteps[i] is the scale
+    /// the VSS of step i is solved and shaded at (of the full size, at most
+    /// kScaleSteps[i]).
+    static constexpr std::array<float, 11> kScaleSteps = {1.0F, 0.84F, 0.71F, 0.6F, 0.5F, 0.5F,
+                                                          0.5F, 0.42F, 0.35F, 0.3F, 0.25F};
+    static constexpr std::array<float, 11> kVssScaleSteps = {
+        1.0F, 0.84F, 0.71F, 0.6F, 0.5F, 0.35F, 0.25F, 0.25F, 0.25F, 0.25F, 0.25F};
     static constexpr float kMinInteractiveScale = kScaleSteps.back();
 
     [[nodiscard]] Phase phase() const noexcept;
@@ -51,11 +62,17 @@ class RefinementPolicy {
     [[nodiscard]] bool progressive() const noexcept { return progressive_; }
 
     /// Fixes the scale of moving frames to `scale`, clamped to [0.1, 1]
-    /// (non-finite: 1), and turns the frame budget off.
-    void setInteractiveScale(float scale) noexcept;
+    /// (non-finite: 1), and their VSS's to `vssScale` (clamped to [0.1,
+    /// scale]; non-finite, the default: `scale`), and turns the frame budget
+    /// off.
+    void setInteractiveScale(float scale,
+                             float vssScale = std::numeric_limits<float>::quiet_NaN()) noexcept;
     /// The scale moving frames render at (with a budget: the one the last
     /// camera move chose, until the next move takes the newest choice).
     [[nodiscard]] float interactiveScale() const noexcept { return interactiveScale_; }
+    /// The scale of the full size moving frames solve and shade their VSS
+    /// at (at most interactiveScale(); chosen with it).
+    [[nodiscard]] float interactiveVssScale() const noexcept { return interactiveVssScale_; }
     /// The frame budget in milliseconds (default 30); 0 = a fixed scale.
     /// Non-finite or negative values count as 0.
     void setFrameBudget(double milliseconds) noexcept;
@@ -91,6 +108,8 @@ class RefinementPolicy {
     void frameMeasured(double milliseconds) noexcept;
     /// The scale the next camera move will take.
     [[nodiscard]] float nextInteractiveScale() const noexcept { return nextInteractiveScale_; }
+    /// The scale the next camera move's VSS will take.
+    [[nodiscard]] float nextInteractiveVssScale() const noexcept { return nextVssScale_; }
 
   private:
     bool progressive_ = true;
@@ -98,7 +117,9 @@ class RefinementPolicy {
     bool cameraMoved_ = false;     ///< the camera changed since the last frame
     bool deferOcclusion_ = false;  ///< settled, exact VSS not shown yet: no AO, no FXAA
     float interactiveScale_ = 0.5F;
+    float interactiveVssScale_ = 0.5F;
     float nextInteractiveScale_ = 0.5F;
+    float nextVssScale_ = 0.5F;
     double frameBudgetMs_ = 30.0;
 };
 
