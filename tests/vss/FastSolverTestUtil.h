@@ -12,28 +12,13 @@
 #include <vector>
 
 #include "FastSolver.h"
+#include "VssTestUtil.h"
 #include "vv/core/Image.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::vss::fasttest {
 
-class Rng {
-  public:
-    explicit Rng(std::uint64_t seed) : s_(seed) {}
-    std::uint64_t next() {
-        std::uint64_t z = (s_ += 0x9e3779b97f4a7c15ULL);
-        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
-        z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
-        return z ^ (z >> 31);
-    }
-    double uniform() { return static_cast<double>(next() >> 11) * 0x1.0p-53; }
-    int range(int lo, int hi) {
-        return lo + static_cast<int>(next() % static_cast<std::uint64_t>(hi - lo + 1));
-    }
-
-  private:
-    std::uint64_t s_;
-};
+using test::Rng;  // SplitMix64 (VssTestUtil.h)
 
 /// Labels (4-connected void components), regions with contours (8-adjacent
 /// vessel pixels) and the normalised depth of vessel pixels.
