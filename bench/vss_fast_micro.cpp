@@ -8,6 +8,7 @@
 //
 //   vss_fast_micro [--runs N] [--p 2,4,8,64] [--tol T] [--views far,medium,close]
 //                  [--brute] [--sample K] [--budget-scale F] [--size WxH] [--no-coarse]
+//                  [--no-near-boxes]
 // --size scales the views with the width (default 1280x720).
 #include <algorithm>
 #include <chrono>
@@ -172,6 +173,8 @@ int main(int argc, char** argv) {
             }
         } else if (a == "--no-coarse") {
             detail::setFastSolverCoarseBoxesForTesting(false);
+        } else if (a == "--no-near-boxes") {
+            detail::setFastSolverNearBoxesForTesting(false);
         } else if (a == "--budget-scale" && more) {
             // test hook: a looser a-priori budget, to see how much slack the check has
             detail::setFastSolverBudgetScaleForTesting(std::atof(argv[++i]));
@@ -179,7 +182,7 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "usage: vss_fast_micro [--runs N] [--p 2,4,8] [--tol T] "
                          "[--views far,medium,close] [--brute] [--sample K] "
-                         "[--budget-scale F] [--size WxH] [--no-coarse]\n");
+                         "[--budget-scale F] [--size WxH] [--no-coarse] [--no-near-boxes]\n");
             return 2;
         }
     }
@@ -196,7 +199,7 @@ int main(int argc, char** argv) {
     std::printf(
         "| view | regions | max contour | void px | p | fast ms (median) | fast ms (min) | cpu ms "
         "(min) | max err (sample) | "
-        "fallback px | M2L | near pairs/px | coarse px | near-tile px | leaves |%s\n",
+        "fallback px | M2L | near pairs/px | coarse px | near-tile px | near-box px | leaves |%s\n",
         brute ? " brute ms |" : "");
     std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|%s\n",
                 brute ? "---|" : "");
@@ -282,7 +285,7 @@ int main(int argc, char** argv) {
             }
             std::printf(
                 "| %s | %zu | %zu | %ld | %g | %.1f | %.1f | %.1f | %.2e | %lld | %lld | %.1f "
-                "| %.1f %% | %.1f %% | %lld |%s\n",
+                "| %.1f %% | %.1f %% | %.1f %% | %lld |%s\n",
                 v.name, f.regions.size(), maxContour, f.voidPixels, p, median(times),
                 *std::min_element(times.begin(), times.end()),
                 *std::min_element(cpu.begin(), cpu.end()), maxErr,
@@ -292,6 +295,8 @@ int main(int argc, char** argv) {
                 100.0 * static_cast<double>(st.coarsePixels) /
                     static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
                 100.0 * static_cast<double>(st.nearLeafPixels) /
+                    static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
+                100.0 * static_cast<double>(st.nearBoxPixels) /
                     static_cast<double>(std::max<std::int64_t>(1, st.pixels)),
                 static_cast<long long>(st.leaves), bruteCol.c_str());
             std::fflush(stdout);

@@ -148,7 +148,9 @@ void expectTilesMatchOnePiece(render::OffscreenRenderer& r, const scene::Scene& 
     ASSERT_EQ(tiled.image.size(), one.image.size());
     EXPECT_EQ(tiled.image.format(), one.image.format());
     const vv::test::ImageComparison c = vv::test::compareImages(tiled.image, one.image);
-    EXPECT_LT(c.difference, 0.001) << c.message;  // measured 0.0001
+    // measured 0.0001; 0.0010 since the fast VSS solver's near boxes (#19) use
+    // its whole tolerance and fall differently in a tile than in one piece
+    EXPECT_LT(c.difference, 0.002) << c.message;
     // Measured: 1 pixel of 540000 differs by more than 8 levels.
     EXPECT_LT(shareDifferent(tiled.image, one.image, 8), 0.0002);
     // Frame-wide values come from the whole frame.

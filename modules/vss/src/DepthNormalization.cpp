@@ -34,8 +34,9 @@ NormalizedDepth normalizeDepth(ImageView<const float> depth, ImageView<const std
     const int w = depth.width();
     const int h = depth.height();
     NormalizedDepth result;
-    result.z = Image<float>(w, h, std::numeric_limits<float>::quiet_NaN());
-    result.vessel = Image<std::uint8_t>(w, h, 0);
+    // Both passes below write every pixel (in parallel): no fill first.
+    result.z = Image<float>(w, h, UninitialisedPixels{});
+    result.vessel = Image<std::uint8_t>(w, h, UninitialisedPixels{});
 
     // In bands of rows in parallel; min, max and count are exact, so the
     // result does not depend on the bands.
@@ -56,8 +57,9 @@ NormalizedDepth normalizeDepth(ImageView<const float> depth, ImageView<const std
                 const std::uint8_t* m = mask.row(y);
                 std::uint8_t* v = result.vessel.row(y);
                 for (int x = 0; x < w; ++x) {
-                    if (m[x] != 0 && std::isfinite(d[x])) {
-                        v[x] = 1;
+                    const bool vessel = m[x] != 0 && std::isfinite(d[x]);
+                    v[x] = vessel ? 1 : 0;
+                    if (vessel) {
                         ++r.count;
                         r.lo = std::min(r.lo, static_cast<double>(d[x]));
                         r.hi = std::max(r.hi, static_cast<double>(d[x]));
@@ -99,6 +101,8 @@ NormalizedDepth normalizeDepth(ImageView<const float> depth, ImageView<const std
                 if (v[x] != 0) {
                     const double t = (static_cast<double>(d[x]) - offset) * scale;
                     z[x] = static_cast<float>(std::clamp(t, 0.0, 1.0));
+                } else {
+                    z[x] = std::numeric_limits<float>::quiet_NaN();
                 }
             }
         }

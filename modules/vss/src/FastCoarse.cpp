@@ -18,35 +18,6 @@ namespace {
 // coefficients below float's normal range lose at most 2^-149 each (<= 169 of them)
 constexpr double kUnderflow = 1e-40;
 
-/// Bounds of a real polynomial sum c[i * kS + j] u^i v^j over |u|, |v| <= 1
-/// and of its first and second partial derivatives in x = u * an, y = v * an.
-struct PolyBounds {
-    double sum = 0.0;  ///< >= |P|
-    double dx = 0.0;   ///< >= |dP/dx|
-    double dy = 0.0;
-    double dxx = 0.0;  ///< >= |d2P/dx2|
-    double dyy = 0.0;
-};
-
-PolyBounds polyBounds(const std::array<double, kS * kS>& c, int deg, double an) {
-    PolyBounds b;
-    for (int i = 0; i <= deg; ++i) {
-        for (int j = 0; i + j <= deg; ++j) {
-            const double a = std::abs(c[(static_cast<std::size_t>(i) * kS) + j]);
-            b.sum += a;
-            b.dx += i * a;
-            b.dy += j * a;
-            b.dxx += i * (i - 1) * a;
-            b.dyy += j * (j - 1) * a;
-        }
-    }
-    b.dx /= an;
-    b.dy /= an;
-    b.dxx /= an * an;
-    b.dyy /= an * an;
-    return b;
-}
-
 }  // namespace
 
 std::int64_t evalCoarseBox(const Region& rg, const BoxGeo& geo, const Local& far,

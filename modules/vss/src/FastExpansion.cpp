@@ -4,6 +4,7 @@
 #include "FastExpansion.h"
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 
 namespace vv::vss::detail::fast {
@@ -138,6 +139,31 @@ void localToPoly(const Square& L, int deg, const PowerTables& tab, std::array<do
             }
         }
     }
+}
+
+PolyBounds polyBounds(const std::array<double, kS * kS>& c, int deg, double an, double mu) {
+    PolyBounds b;
+    std::array<double, kS + 2> mp{};  // mp[n + 2] = mu^n, mp[0], mp[1] unused (times 0)
+    mp[2] = 1.0;
+    for (std::size_t n = 3; n < mp.size(); ++n) {
+        mp[n] = mp[n - 1] * mu * (1.0 + 1e-15);
+    }
+    for (int i = 0; i <= deg; ++i) {
+        for (int j = 0; i + j <= deg; ++j) {
+            const double a = std::abs(c[(static_cast<std::size_t>(i) * kS) + j]);
+            const auto n = static_cast<std::size_t>(i + j);
+            b.sum += a * mp[n + 2];
+            b.dx += i * a * mp[n + 1];
+            b.dy += j * a * mp[n + 1];
+            b.dxx += i * (i - 1) * a * mp[n];
+            b.dyy += j * (j - 1) * a * mp[n];
+        }
+    }
+    b.dx /= an;
+    b.dy /= an;
+    b.dxx /= an * an;
+    b.dyy /= an * an;
+    return b;
 }
 
 }  // namespace vv::vss::detail::fast

@@ -43,4 +43,18 @@ void m2l(Local& loc, int mo, const PowerTables& tab, const MomentLayout& lay, co
 /// of a) for the expansion part L of degree deg; c is overwritten in full.
 void localToPoly(const Square& L, int deg, const PowerTables& tab, std::array<double, kS * kS>& c);
 
+/// Bounds of a real polynomial sum c[i * kS + j] u^i v^j (total degree <= deg)
+/// over |u|, |v| <= mu (>= 1) and of its first and second partial derivatives
+/// in x = u * an, y = v * an: |P| <= sum |c_ij| mu^(i+j), |P_x| <= sum i |c_ij|
+/// mu^(i+j-1) / an, |P_xx| <= sum i (i - 1) |c_ij| mu^(i+j-2) / an^2 (and the
+/// same in y with j).
+struct PolyBounds {
+    double sum = 0.0;  ///< >= |P|
+    double dx = 0.0;   ///< >= |dP/dx|
+    double dy = 0.0;
+    double dxx = 0.0;  ///< >= |d2P/dx2|
+    double dyy = 0.0;
+};
+PolyBounds polyBounds(const std::array<double, kS * kS>& c, int deg, double an, double mu = 1.0);
+
 }  // namespace vv::vss::detail::fast

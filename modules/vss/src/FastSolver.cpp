@@ -106,6 +106,18 @@
 // 3840x2160 for p = 2 and 4, fewer for p = 8 (whose bound needs the contours
 // farther away); docs/benchmarks/vss.md, "Cost against image size".
 //
+// NEAR BOXES (FastNearBox.cpp; issue 19). In the band next to the contours
+// a box of level 1 or 2 passes clusters on to its children, and its leaves
+// pay M2L, L2L and near sums per pixel. When the nearest of those clusters'
+// points is some pixels away, the box is evaluated on a grid of samples
+// every 2-8 pixels, those points summed exactly at the samples and the rest
+// through the box's expansion, and interpolated bilinearly, under a rigorous
+// bound of the interpolation error from the points' distances rho_i, the
+// LOCAL depth spread G = max |z_i - z_c| / rho_i^2 and p (second derivatives
+// <= p (p + 1) w / rho^2), the polynomial's coefficients and the samples'
+// round-off, plus E; every pixel is checked, else the traversal descends.
+// Counters: nearBoxes, nearBoxPixels (FastStats.h).
+//
 // SCALING (VSS.md "stiff cases"). Every box has a scale S = a lower bound of
 // all its pixel-point distances (>= 1); its expansion, E and Dlo hold true
 // values times S^p, so every point contributes <= 1 (no overflow: p <= 64,
@@ -122,8 +134,8 @@
 // tables (the series c_n, tau, chooseOrder, the weight pw); FastSourceTree:
 // step 1; FastExpansion: M2L, L2L and the leaf polynomial; FastRegion.h: what
 // the traversal and the leaves share; FastLeaf: step 4 with the check and the
-// fall-backs; FastCoarse: the coarse boxes; FastKernel: the SIMD kernel of
-// step 4; FastMath.h: the math.
+// fall-backs; FastCoarse: the coarse boxes; FastNearBox: the near boxes;
+// FastKernel: the SIMD kernel of step 4; FastMath.h: the math.
 //
 #include "FastSolver.h"
 
@@ -141,6 +153,7 @@
 #include "FastExpansion.h"
 #include "FastKernel.h"
 #include "FastLeaf.h"
+#include "FastNearBox.h"
 #include "FastRegion.h"
 #include "FastSourceTree.h"
 #include "FastStats.h"
@@ -155,7 +168,7 @@ namespace {
 struct AtomicStats {
     std::atomic<std::int64_t> pixels{0}, fallbackPixels{0}, leaves{0}, nearPairs{0}, m2l{0},
         dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0},
-        nearLeaves{0}, nearLeafPixels{0};
+        nearLeaves{0}, nearLeafPixels{0}, nearBoxes{0}, nearBoxPixels{0};
 };
 AtomicStats& stats() {
     static AtomicStats s;
@@ -163,13 +176,14 @@ AtomicStats& stats() {
 }
 std::atomic<double> gBudgetScale{1.0};  // test hook, see FastStats.h
 std::atomic<bool> gCoarseBoxes{true};   // test hook, see FastStats.h
+std::atomic<bool> gNearBoxes{true};     // test hook, see FastStats.h
 
 // Per-thread counters, added to the shared atomics once per task / region (atomic
 // updates per leaf from both threads would bounce one cache line between the cores).
 struct LocalStats {
     std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
                  perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0,
-                 nearLeaves = 0, nearLeafPixels = 0;
+                 nearLeaves = 0, nearLeafPixels = 0, nearBoxes = 0, nearBoxPixels = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -187,6 +201,8 @@ void flushStats() {
     s.coarsePixels += l.coarsePixels;
     s.nearLeaves += l.nearLeaves;
     s.nearLeafPixels += l.nearLeafPixels;
+    s.nearBoxes += l.nearBoxes;
+    s.nearBoxPixels += l.nearBoxPixels;
     l = LocalStats{};
 }
 struct StatsFlush {  // flushes on every exit, cancellation included
@@ -423,6 +439,18 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             return;
         }
     }
+    // 5b. A box of the near band whose near points are some pixels away: a
+    // grid with those points summed exactly, when the bound allows.
+    if (rg.nearBoxesOn && st.level >= 1 && st.level <= kNearBoxMaxLevel && !deferred.empty()) {
+        const std::int64_t written = evalNearBox(
+            rg, geo, st.level, deferred, hasLocal ? &loc : nullptr, LeafBounds{S, E, W, Sexp});
+        if (written > 0) {
+            tlStats.nearBoxes += 1;
+            tlStats.nearBoxPixels += written;
+            tlStats.pixels += written;
+            return;
+        }
+    }
     // 6. Children.
     for (int dy = 0; dy < 2; ++dy) {
         for (int dx = 0; dx < 2; ++dx) {
@@ -504,6 +532,7 @@ class FastSolver final : public Solver {
     double deltaW_ = 0.0;
     double budgetScale_ = gBudgetScale.load();
     bool coarse_ = gCoarseBoxes.load();
+    bool nearBoxes_ = gNearBoxes.load();
 };
 
 void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
@@ -574,6 +603,8 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.kp = kp_;
     rg.deltaW = deltaW_;
     rg.coarse = coarse_;
+    rg.nearBoxesOn = nearBoxes_;
+    rg.budgetScale = budgetScale_;
     rg.tol = tol;
     rg.zref = zref;
     rg.zminOut = zmin;
@@ -695,6 +726,8 @@ FastSolverStats fastSolverStats() {
     r.coarsePixels = s.coarsePixels.load();
     r.nearLeaves = s.nearLeaves.load();
     r.nearLeafPixels = s.nearLeafPixels.load();
+    r.nearBoxes = s.nearBoxes.load();
+    r.nearBoxPixels = s.nearBoxPixels.load();
     return r;
 }
 
@@ -712,6 +745,8 @@ void resetFastSolverStats() {
     s.coarsePixels = 0;
     s.nearLeaves = 0;
     s.nearLeafPixels = 0;
+    s.nearBoxes = 0;
+    s.nearBoxPixels = 0;
 }
 
 void setFastSolverBudgetScaleForTesting(double scale) {
@@ -720,6 +755,10 @@ void setFastSolverBudgetScaleForTesting(double scale) {
 
 void setFastSolverCoarseBoxesForTesting(bool on) {
     fast::gCoarseBoxes = on;
+}
+
+void setFastSolverNearBoxesForTesting(bool on) {
+    fast::gNearBoxes = on;
 }
 
 std::unique_ptr<Solver> makeFastSolver(const SolverOptions& options) {

@@ -19,19 +19,27 @@ struct FastSolverStats {
     std::int64_t coarsePixels = 0;    ///< of the pixels, written by coarse boxes
     std::int64_t nearLeaves = 0;      ///< leaf tiles that summed near points exactly
     std::int64_t nearLeafPixels = 0;  ///< of the pixels, in those tiles
+    std::int64_t nearBoxes = 0;       ///< near-band boxes interpolated from a grid (FastNearBox.h)
+    std::int64_t nearBoxPixels = 0;   ///< of the pixels, written by those boxes
 };
 
 /// Totals since the last reset (all solver instances, all threads).
 FastSolverStats fastSolverStats();
 void resetFastSolverStats();
 
-/// Test hook: multiplies the a-priori error budget (default 1). A loose budget
+/// Test hook: multiplies the a-priori error budget (default 1), and the
+/// estimate with which near boxes (FastNearBox.h) are tried. A loose budget
 /// must not break the guarantee: the per-pixel check then sends pixels to the
-/// exact fall-backs. Affects solvers created afterwards.
+/// exact fall-backs, and the near boxes' bound refuses the boxes. Affects solvers created
+/// afterwards.
 void setFastSolverBudgetScaleForTesting(double scale);
 
 /// Test / benchmark hook: coarse boxes (FastCoarse.h) on (the default) or
 /// off, to compare the two. Affects solvers created afterwards.
 void setFastSolverCoarseBoxesForTesting(bool on);
+
+/// Test / benchmark hook: near-band boxes on a coarse grid (FastNearBox.h) on
+/// (the default) or off. Affects solvers created afterwards.
+void setFastSolverNearBoxesForTesting(bool on);
 
 }  // namespace vv::vss::detail

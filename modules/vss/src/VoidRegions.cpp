@@ -67,7 +67,8 @@ VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageVie
                                    "x" + std::to_string(z.height()));
     }
     VoidRegionSet result;
-    result.labels = Image<std::int32_t>(w, h, kVesselLabel);
+    // labelBackground writes every pixel (kVesselLabel on vessels), in parallel
+    result.labels = Image<std::int32_t>(w, h, UninitialisedPixels{});
     if (w == 0 || h == 0) {
         return result;
     }
