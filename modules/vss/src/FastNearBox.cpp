@@ -98,6 +98,13 @@ namespace {
 constexpr double kUnderflow = 1e-40;  // as the leaf: coefficients below float's normal range
 constexpr int kG = kLeafTile;         // sample columns (kernel lanes), at most
 constexpr int kR = kLeafTile + 1;     // sample rows, at most
+constexpr std::size_t kSamples = static_cast<std::size_t>(kR) * kG;
+constexpr std::size_t kSquare = static_cast<std::size_t>(kS) * kS;
+
+// Index of sample (row j, column i) in a kR x kG sample array.
+constexpr std::size_t sampleIndex(int j, int i) noexcept {
+    return static_cast<std::size_t>(j) * kG + static_cast<std::size_t>(i);
+}
 
 struct Sample {
     double d = 0.0;     // D
@@ -139,10 +146,10 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     const int extMax = hBig - 1;  // Q of either spacing lies in B grown by this
     const double p = tab.p;
     const double pp1 = p * (p + 1.0);
-    const double S = bounds.S;
+    const double sScale = bounds.S;  // S of the derivation above
     // The near points: offsets from the grid origin (pixels), their
     // distances to B grown by extMax, the nearest one's depth, max |z - zref|.
-    std::size_t K = 0;
+    std::size_t nearCount = 0;  // K of the derivation above
     for (const int nd : near) {
         const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
         // a node whose box comes within 4 pixels: no room (checked again per point below)
@@ -151,16 +158,16 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
         if (gx * gx + gy * gy < 16) {
             return 0;
         }
-        K += static_cast<std::size_t>(c.count());
+        nearCount += static_cast<std::size_t>(c.count());
     }
     thread_local std::vector<float> px;  // scratch, reused by every box of this thread
     thread_local std::vector<float> py;
     thread_local std::vector<float> pz;
     thread_local std::vector<double> rho2i;
-    px.resize(K);
-    py.resize(K);
-    pz.resize(K);
-    rho2i.resize(K);
+    px.resize(nearCount);
+    py.resize(nearCount);
+    pz.resize(nearCount);
+    rho2i.resize(nearCount);
     double rho2 = std::numeric_limits<double>::infinity();
     double zc = 0.0;  // z_c - zref
     double zAbs = 0.0;
@@ -183,15 +190,15 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
             zAbs = std::max(zAbs, std::abs(static_cast<double>(q.z)));
         }
     }
-    if (K == 0 || !(rho2 >= 16.0)) {
+    if (nearCount == 0 || !(rho2 >= 16.0)) {
         return 0;
     }
     const double rho = std::sqrt(rho2);
-    double G = 0.0;  // max |z_i - z_c| / rho_i^2
-    for (std::size_t i = 0; i < K; ++i) {
-        G = std::max(G, std::abs(static_cast<double>(pz[i]) - zc) / rho2i[i]);
+    double spreadG = 0.0;  // G above: max |z_i - z_c| / rho_i^2
+    for (std::size_t i = 0; i < nearCount; ++i) {
+        spreadG = std::max(spreadG, std::abs(static_cast<double>(pz[i]) - zc) / rho2i[i]);
     }
-    G *= 1.0 + 1e-12;
+    spreadG *= 1.0 + 1e-12;
     const double tolAll = rg.tol * (1.0 - 1e-6) - 16.0 * kU - rg.dz * (p + 2.0) * kU * 1.1;
     const auto kappa = [&](double reach) {
         const double r = (rho + reach) / rho;
@@ -207,7 +214,7 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
         if (cx > kG + 1 || cy > kR || rho2 < 4.0 * hc * hc) {
             continue;
         }
-        if (0.25 * hc * hc * pp1 * kappa(hc * std::sqrt(2.0)) * 2.0 * G <=
+        if (0.25 * hc * hc * pp1 * kappa(hc * std::sqrt(2.0)) * 2.0 * spreadG <=
             0.5 * tolAll * rg.budgetScale) {
             h = hc;
             break;
@@ -227,7 +234,7 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     }
     const double diagQ =
         std::hypot(static_cast<double>(h * (nx - 1)), static_cast<double>(h * (ny - 1)));
-    if (p * std::log2((rho + diagQ + 1.0) / S) > 60.0) {
+    if (p * std::log2((rho + diagQ + 1.0) / sScale) > 60.0) {
         return 0;  // the leaf's tile-scale rule: weights stay in float's range
     }
     const double kap = kappa(h * std::sqrt(2.0));
@@ -236,17 +243,17 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     const double ext = std::max({0, h * (nx - 1) - spanX, h * (ny - 1) - spanY});
     const double mu = 1.0 + ext / geo.an * (1.0 + 1e-12);
     const float invH = 1.0F / static_cast<float>(h);
-    for (std::size_t i = 0; i < K; ++i) {
+    for (std::size_t i = 0; i < nearCount; ++i) {
         px[i] *= invH;  // exact: a power of two
         py[i] *= invH;
     }
 
     // Samples: the near sums and the polynomial separately.
-    std::array<float, kR * kG> dn{};
-    std::array<float, kR * kG> nn{};
-    std::array<float, kR * kG> pd{};
-    std::array<float, kR * kG> pn{};
-    std::array<float, kR * kG> zs{};
+    std::array<float, kSamples> dn{};
+    std::array<float, kSamples> nn{};
+    std::array<float, kSamples> pd{};
+    std::array<float, kSamples> pn{};
+    std::array<float, kSamples> zs{};
     std::array<std::uint32_t, kR> fs{};
     LeafKernelArgs a;
     a.rows = ny;
@@ -254,14 +261,15 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     a.px = px.data();
     a.py = py.data();
     a.pz = pz.data();
-    a.count = static_cast<int>(K);
+    a.count = static_cast<int>(nearCount);
     a.degree = -1;
     a.zref = static_cast<float>(rg.zref);
     a.zmin = rg.zminOut;
     a.zmax = rg.zmaxOut;
     a.power = rg.kp;
     a.perPixel = false;
-    a.s2 = static_cast<float>(S * S) / static_cast<float>(h * h);  // exact: a power of two
+    a.s2 =
+        static_cast<float>(sScale * sScale) / static_cast<float>(h * h);  // exact: a power of two
     a.tolRemaining = 1.0F;
     a.errAbs = 0.0F;
     a.sumD = dn.data();
@@ -273,13 +281,13 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     PolyBounds bNc;
     double sumN = 0.0;
     if (hasPoly) {
-        std::array<double, kS * kS> cD{};
-        std::array<double, kS * kS> cN{};
+        std::array<double, kSquare> cD{};
+        std::array<double, kSquare> cN{};
         localToPoly(far->d, deg, tab, cD);
         localToPoly(far->n, deg, tab, cN);
-        std::array<double, kS * kS> cNc{};
-        std::array<float, kS * kS> fD{};
-        std::array<float, kS * kS> fN{};
+        std::array<double, kSquare> cNc{};
+        std::array<float, kSquare> fD{};
+        std::array<float, kSquare> fN{};
         for (std::size_t i = 0; i < cNc.size(); ++i) {
             cNc[i] = cN[i] - zc * cD[i];
             fD[i] = static_cast<float>(cD[i]);
@@ -309,7 +317,7 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
         b.sumN = pn.data();
         leafKernel(b, zs.data(), fs.data());
     }
-    const double gammaK = (static_cast<double>(K) + 8.0) * kU * 1.01;
+    const double gammaK = (static_cast<double>(nearCount) + 8.0) * kU * 1.01;
     const double relNear = rg.deltaW + gammaK;
     const double gammaPoly = (3.0 * deg + 12.0) * kU * 1.01;
     const double dArith = hasPoly ? gammaPoly * bD.sum + 1e-11 * bounds.W + kUnderflow : 0.0;
@@ -318,10 +326,10 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     const double eTrunc = bounds.E * (1.0 + 1e-6 + p * kU) + kUnderflow;
     const double zcAbs = std::abs(zc);
 
-    std::array<Sample, kR * kG> smp;
+    std::array<Sample, kSamples> smp;
     for (int j = 0; j < ny; ++j) {
         for (int i = 0; i < nx; ++i) {
-            const std::size_t s = static_cast<std::size_t>(j * kG + i);
+            const auto s = sampleIndex(j, i);
             const double dnv = dn[s];
             const double pdv = pd[s];
             const double d = dnv + pdv;
@@ -346,20 +354,20 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
         double aD = 0.0, aN = 0.0, errD = 0.0, errNc = 0.0;
         bool ok = false;
     };
-    std::array<Cell, kR * kG> cell;
+    std::array<Cell, kSamples> cell;
     const double psiIn = h * h / 8.0;
     for (int j = 0; j + 1 < ny; ++j) {
         for (int i = 0; i + 1 < nx; ++i) {
-            const Sample& s00 = smp[static_cast<std::size_t>(j * kG + i)];
-            const Sample& s10 = smp[static_cast<std::size_t>(j * kG + i + 1)];
-            const Sample& s01 = smp[static_cast<std::size_t>((j + 1) * kG + i)];
-            const Sample& s11 = smp[static_cast<std::size_t>((j + 1) * kG + i + 1)];
+            const Sample& s00 = smp[sampleIndex(j, i)];
+            const Sample& s10 = smp[sampleIndex(j, i + 1)];
+            const Sample& s01 = smp[sampleIndex(j + 1, i)];
+            const Sample& s11 = smp[sampleIndex(j + 1, i + 1)];
             const bool edge = extrapolate && i + 2 == nx;  // checked pixel by pixel
             const double dm =
                 (edge ? kapOut : kap) * std::min({s00.dnHi, s10.dnHi, s01.dnHi, s11.dnHi});
-            Cell& c = cell[static_cast<std::size_t>(j * kG + i)];
+            Cell& c = cell[sampleIndex(j, i)];
             c.aD = pp1 * dm / rho2;
-            c.aN = pp1 * G * dm;
+            c.aN = pp1 * spreadG * dm;
             c.errD = std::max({s00.errD, s10.errD, s01.errD, s11.errD});
             c.errNc = std::max({s00.errNc, s10.errNc, s01.errNc, s11.errNc});
             const double dMin = std::min({s00.d, s10.d, s01.d, s11.d});
@@ -387,9 +395,9 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
         const Axis ay = axis(y - geo.miny, h, ny);
         const std::int32_t* lab = rg.labels.row(y) + geo.minx;
         float* o = rg.out.row(y) + geo.minx;
-        const Sample* r0 = &smp[static_cast<std::size_t>(ay.k * kG)];
+        const Sample* r0 = &smp[sampleIndex(ay.k, 0)];
         const Sample* r1 = r0 + kG;
-        const Cell* cr = &cell[static_cast<std::size_t>(ay.k * kG)];
+        const Cell* cr = &cell[sampleIndex(ay.k, 0)];
         for (int c = 0; c < nx; ++c) {
             rowD[static_cast<std::size_t>(c)] = r0[c].d + ay.t * (r1[c].d - r0[c].d);
             rowN[static_cast<std::size_t>(c)] = r0[c].nc + ay.t * (r1[c].nc - r0[c].nc);
@@ -399,7 +407,7 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
                 continue;
             }
             const Axis& ax = cols[static_cast<std::size_t>(i)];
-            const std::size_t kx = static_cast<std::size_t>(ax.k);
+            const auto kx = static_cast<std::size_t>(ax.k);
             const double iD = rowD[kx] + ax.t * (rowD[kx + 1] - rowD[kx]);
             const double iN = rowN[kx] + ax.t * (rowN[kx + 1] - rowN[kx]);
             const double fc = iN / iD;
