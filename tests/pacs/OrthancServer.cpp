@@ -1,0 +1,137 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "OrthancServer.h"
+
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <fstream>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "vv/pacs/Echo.h"
+
+namespace fs = std::filesystem;
+
+namespace vv::test {
+
+std::uint16_t freePort() {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = 0;
+    socklen_t length = sizeof address;
+    if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+        throw std::runtime_error("no free port");
+    }
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
+OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort) {
+    static std::atomic<int> counter{0};
+    folder_ = fs::path(VV_TEST_TMP) /
+              ("orthanc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    fs::remove_all(folder_);
+    fs::create_directories(folder_ / "storage");
+    dicomPort_ = freePort();
+    const std::uint16_t httpPort = freePort();
+    {
+        std::ofstream config(folder_ / "orthanc.json");
+        config << "{\n"
+               << "  \"Name\": \"vv-test\",\n"
+               << "  \"StorageDirectory\": \"" << (folder_ / "storage").string() << "\",\n"
+               << "  \"IndexDirectory\": \"" << (folder_ / "storage").string() << "\",\n"
+               << "  \"Plugins\": [],\n"
+               << "  \"HttpServerEnabled\": true,\n"
+               << "  \"HttpPort\": " << httpPort << ",\n"
+               << "  \"RemoteAccessAllowed\": false,\n"
+               << "  \"AuthenticationEnabled\": false,\n"
+               << "  \"DicomServerEnabled\": true,\n"
+               << "  \"DicomAet\": \"ORTHANC\",\n"
+               << "  \"DicomPort\": " << dicomPort_ << ",\n"
+               << "  \"DicomCheckCalledAet\": true,\n"
+               << "  \"DicomAlwaysAllowEcho\": false,\n"
+               << "  \"DicomAlwaysAllowStore\": false,\n"
+               << "  \"DicomCheckModalityHost\": true,\n"
+               << "  \"DicomAssociationCloseDelay\": 0,\n"
+               << "  \"DicomScuTimeout\": 10,\n"
+               << "  \"DicomScpTimeout\": 10,\n"
+               << "  \"SaveJobs\": false,\n"
+               << "  \"DicomModalities\": { \"vv\": { \"AET\": \"" << ourAe
+               << "\", \"Host\": \"127.0.0.1\", \"Port\": " << ourPort
+               << ", \"AllowEcho\": true, \"AllowFind\": true, \"AllowGet\": true,"
+               << " \"AllowMove\": true, \"AllowStore\": true } }\n"
+               << "}\n";
+    }
+    const std::string log = (folder_ / "orthanc.log").string();
+    const std::string configFile = (folder_ / "orthanc.json").string();
+    pid_ = ::fork();
+    if (pid_ == 0) {
+        const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        ::dup2(out, 1);
+        ::dup2(out, 2);
+        ::execl("/usr/sbin/Orthanc", "Orthanc", configFile.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    vv::pacs::LocalAe me{ourAe, {1, 2, 5}};
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    while (true) {
+        try {
+            vv::pacs::echo(me, node());
+            return;
+        } catch (const std::exception&) {
+            int status = 0;
+            const bool exited = ::waitpid(pid_, &status, WNOHANG) == pid_;
+            if (exited || std::chrono::steady_clock::now() > deadline) {
+                if (exited) {
+                    pid_ = -1;
+                }
+                stop();
+                std::ifstream in(log);
+                std::stringstream text;
+                text << in.rdbuf();
+                throw std::runtime_error("Orthanc did not come up:\n" + text.str());
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    }
+}
+
+OrthancServer::~OrthancServer() {
+    stop();
+}
+
+void OrthancServer::kill() {
+    if (pid_ > 0) {
+        ::kill(pid_, SIGKILL);
+        ::waitpid(pid_, nullptr, 0);
+        pid_ = -1;
+    }
+}
+
+void OrthancServer::stop() {
+    if (pid_ <= 0) {
+        return;
+    }
+    ::kill(pid_, SIGTERM);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
+            pid_ = -1;
+            return;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill();
+}
+
+}  // namespace vv::test
