@@ -4,8 +4,10 @@
 #include <dcmtk/dcmnet/cond.h>
 #include <dcmtk/dcmnet/dimse.h>
 #include <dcmtk/dcmnet/dul.h>
+#include <dcmtk/oflog/oflog.h>
 
 #include <cstdio>
+#include <mutex>
 
 #include "vv/pacs/PacsError.h"
 
@@ -25,7 +27,13 @@ std::string hex(Uint16 value) {
 
 }  // namespace
 
+void quietDcmtk() {
+    static std::once_flag once;
+    std::call_once(once, [] { OFLog::configure(OFLogger::OFF_LOG_LEVEL); });
+}
+
 void configure(DcmSCU& scu, const LocalAe& me, const Node& peer) {
+    quietDcmtk();
     validateAeTitle(me.aeTitle);
     validateNode(peer);
     scu.setAETitle(me.aeTitle.c_str());

@@ -14,6 +14,10 @@
 
 namespace vv::pacs::detail {
 
+/// Turns DCMTK's own logging off once per process: its messages may quote
+/// attribute values (patient data). Failures reach the caller as typed errors.
+void quietDcmtk();
+
 /// Sets our AE title, the peer and every timeout of `me` on `scu` (non-blocking
 /// DIMSE, so that no wait is without a limit). Validates both.
 void configure(DcmSCU& scu, const LocalAe& me, const Node& peer);

@@ -12,6 +12,7 @@
 #include <system_error>
 #include <thread>
 
+#include "Association.h"
 #include "DatasetFields.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
@@ -189,6 +190,7 @@ StorageScp::StorageScp(LocalStore& store, ListenerConfig config) : impl_(std::ma
     for (const Node& node : config.allowedPeers) {
         validateAeTitle(node.aeTitle);
     }
+    detail::quietDcmtk();
     impl_->config = std::move(config);
     impl_->scp = std::make_unique<Scp>(store, impl_->config, impl_->stats, impl_->mutex);
     DcmSCPConfig& c = impl_->scp->getConfig();
