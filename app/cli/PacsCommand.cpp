@@ -54,6 +54,7 @@ struct Options {
     std::filesystem::path store;
     std::vector<std::filesystem::path> files;
     std::vector<pacs::Node> allowed;
+    pacs::TlsSettings tls;
     std::uint16_t port = 0;
     bool move = false;
     int seconds = 0;
@@ -96,6 +97,13 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
             o.port = static_cast<std::uint16_t>(parseWholeNumber(a.value(), "--port", 1, 65535));
         } else if (n == "--move") {
             o.move = true;
+        } else if (n == "--tls-ca") {
+            o.tls.enabled = true;
+            o.tls.trustedCertificates = a.path();
+        } else if (n == "--tls-cert") {
+            o.tls.certificate = a.path();
+        } else if (n == "--tls-key") {
+            o.tls.privateKey = a.path();
         } else if (n == "--for") {
             o.seconds = parseWholeNumber(a.value(), "--for", 1, 31 * 24 * 3600);
         } else if (!a.isOption() && sub == "send") {
@@ -106,6 +114,18 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
     }
     if (sub != "listen" && !o.node) {
         a.fail("needs --node AE@HOST:PORT");
+    }
+    if (!o.tls.enabled && (!o.tls.certificate.empty() || !o.tls.privateKey.empty())) {
+        a.fail("--tls-cert and --tls-key need --tls-ca");
+    }
+    if (o.tls.certificate.empty() != o.tls.privateKey.empty()) {
+        a.fail("--tls-cert and --tls-key go together");
+    }
+    if (o.tls.enabled && sub == "listen") {
+        a.fail("the listener does not speak TLS yet");
+    }
+    if (o.node) {
+        o.node->tls = o.tls;
     }
     if ((sub == "get" || sub == "listen") && o.store.empty()) {
         a.fail("needs --store DIR");

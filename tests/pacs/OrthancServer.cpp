@@ -10,6 +10,7 @@
 
 #include <atomic>
 #include <chrono>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
@@ -36,7 +37,34 @@ std::uint16_t freePort() {
     return ntohs(address.sin_port);
 }
 
-OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort) {
+TestCertificates makeCertificates(const fs::path& folder) {
+    fs::create_directories(folder);
+    const std::string d = folder.string() + "/";
+    const auto run = [](const std::string& command) {
+        if (std::system((command + " >/dev/null 2>&1").c_str()) != 0) {
+            throw std::runtime_error("failed: " + command);
+        }
+    };
+    const std::string key = " -newkey rsa:2048 -nodes -days 2";
+    run("openssl req -x509" + key + " -keyout " + d + "ca.key -out " + d +
+        "ca.pem -subj /CN=vv-ca");
+    run("openssl req -x509" + key + " -keyout " + d + "other.key -out " + d +
+        "other.pem -subj /CN=vv-other-ca");
+    for (const std::string name : {"server", "client"}) {
+        run("openssl req" + key + " -keyout " + d + name + ".key -out " + d + name +
+            ".csr -subj /CN=" + name);
+        run("openssl x509 -req -days 2 -in " + d + name + ".csr -CA " + d + "ca.pem -CAkey " + d +
+            "ca.key -CAcreateserial -out " + d + name + ".pem");
+    }
+    return {folder / "ca.pem",     folder / "server.pem", folder / "server.key",
+            folder / "client.pem", folder / "client.key", folder / "other.pem"};
+}
+
+OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
+                             const TestCertificates* tls) {
+    if (tls != nullptr) {
+        tls_ = {true, tls->ca, tls->clientCert, tls->clientKey};
+    }
     static std::atomic<int> counter{0};
     folder_ = fs::path(VV_TEST_TMP) /
               ("orthanc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
@@ -65,8 +93,15 @@ OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort) {
                << "  \"DicomAssociationCloseDelay\": 0,\n"
                << "  \"DicomScuTimeout\": 10,\n"
                << "  \"DicomScpTimeout\": 10,\n"
-               << "  \"SaveJobs\": false,\n"
-               << "  \"DicomModalities\": { \"vv\": { \"AET\": \"" << ourAe
+               << "  \"SaveJobs\": false,\n";
+        if (tls != nullptr) {
+            config << "  \"DicomTlsEnabled\": true,\n"
+                   << "  \"DicomTlsCertificate\": \"" << tls->serverCert.string() << "\",\n"
+                   << "  \"DicomTlsPrivateKey\": \"" << tls->serverKey.string() << "\",\n"
+                   << "  \"DicomTlsTrustedCertificates\": \"" << tls->ca.string() << "\",\n"
+                   << "  \"DicomTlsRemoteCertificateRequired\": true,\n";
+        }
+        config << "  \"DicomModalities\": { \"vv\": { \"AET\": \"" << ourAe
                << "\", \"Host\": \"127.0.0.1\", \"Port\": " << ourPort
                << ", \"AllowEcho\": true, \"AllowFind\": true, \"AllowGet\": true,"
                << " \"AllowMove\": true, \"AllowStore\": true } }\n"
@@ -84,11 +119,13 @@ OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort) {
     }
     vv::pacs::LocalAe me{ourAe, {1, 2, 5}};
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    std::string lastError;
     while (true) {
         try {
             vv::pacs::echo(me, node());
             return;
-        } catch (const std::exception&) {
+        } catch (const std::exception& e) {
+            lastError = e.what();
             int status = 0;
             const bool exited = ::waitpid(pid_, &status, WNOHANG) == pid_;
             if (exited || std::chrono::steady_clock::now() > deadline) {
@@ -99,7 +136,8 @@ OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort) {
                 std::ifstream in(log);
                 std::stringstream text;
                 text << in.rdbuf();
-                throw std::runtime_error("Orthanc did not come up:\n" + text.str());
+                throw std::runtime_error("Orthanc did not come up (" + lastError + "):\n" +
+                                         text.str());
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }

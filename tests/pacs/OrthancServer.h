@@ -18,17 +18,30 @@ namespace vv::test {
 /// A TCP port nobody listens on right now (bound to 0, read back, closed).
 std::uint16_t freePort();
 
+/// Test certificates made with the openssl tool: a CA, a server and a client
+/// certificate signed by it, and a second CA that signed neither (PEM files).
+struct TestCertificates {
+    std::filesystem::path ca, serverCert, serverKey, clientCert, clientKey, otherCa;
+};
+
+/// Writes the certificates into `folder`; throws std::runtime_error.
+TestCertificates makeCertificates(const std::filesystem::path& folder);
+
 class OrthancServer {
   public:
     /// Starts Orthanc and waits (at most 30 s) until it answers C-ECHO from
     /// `ourAe`; `ourPort` is where Orthanc sends C-MOVE results for `ourAe`.
     /// Throws std::runtime_error (with Orthanc's log) when it does not come up.
-    OrthancServer(const std::string& ourAe, std::uint16_t ourPort);
+    /// With `tls`, Orthanc speaks DICOM only over TLS (server certificate and
+    /// key, trusting `tls->ca`, client certificates required).
+    OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
+                  const TestCertificates* tls = nullptr);
     ~OrthancServer();
     OrthancServer(const OrthancServer&) = delete;
     OrthancServer& operator=(const OrthancServer&) = delete;
 
-    [[nodiscard]] vv::pacs::Node node() const { return {"ORTHANC", "127.0.0.1", dicomPort_}; }
+    /// Orthanc as a node (with our TLS client settings when it speaks TLS).
+    [[nodiscard]] vv::pacs::Node node() const { return {"ORTHANC", "127.0.0.1", dicomPort_, tls_}; }
     /// Kills Orthanc at once (SIGKILL), as a crash would.
     void kill();
     [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
@@ -38,6 +51,7 @@ class OrthancServer {
     std::filesystem::path folder_;
     std::uint16_t dicomPort_ = 0;
     pid_t pid_ = -1;
+    vv::pacs::TlsSettings tls_;
 };
 
 }  // namespace vv::test

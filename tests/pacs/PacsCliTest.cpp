@@ -128,7 +128,7 @@ TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
                        "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "4"});
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
-    const vv::pacs::Node listener{"VVLISTEN", "127.0.0.1", port};
+    const vv::pacs::Node listener{"VVLISTEN", "127.0.0.1", port, {}};
     std::vector<fs::path> files;
     for (const auto& f : filesOf(writeSeries("listen"))) {
         files.emplace_back(f);
@@ -143,4 +143,24 @@ TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
     EXPECT_EQ(result.code, 0) << result.err;
     EXPECT_NE(result.out.find("stored 8 instance(s)"), std::string::npos) << result.out;
     EXPECT_EQ(vv::pacs::LocalStore(store).studies().size(), 1U);
+}
+
+TEST(PacsCliTest, EchoOverTls) {
+    const fs::path folder = vv::test::processTestDir("pacs-cli") / "tls";
+    fs::remove_all(folder);
+    const auto certificates = vv::test::makeCertificates(folder);
+    vv::test::OrthancServer orthanc(kOurAe, vv::test::freePort(), &certificates);
+    const std::string node = nodeText(orthanc.node());
+    const auto ok =
+        runCli({"pacs", "echo", "--node", node, "--aet", kOurAe, "--tls-ca",
+                certificates.ca.string(), "--tls-cert", certificates.clientCert.string(),
+                "--tls-key", certificates.clientKey.string()});
+    EXPECT_EQ(ok.code, 0) << ok.err;
+    const auto untrusted =
+        runCli({"pacs", "echo", "--node", node, "--aet", kOurAe, "--tls-ca",
+                certificates.otherCa.string(), "--tls-cert", certificates.clientCert.string(),
+                "--tls-key", certificates.clientKey.string()});
+    EXPECT_EQ(untrusted.code, 5);
+    EXPECT_NE(untrusted.err.find("TLS"), std::string::npos) << untrusted.err;
+    EXPECT_EQ(runCli({"pacs", "echo", "--node", node, "--tls-cert", "c.pem"}).code, 2);
 }

@@ -119,7 +119,7 @@ TEST_F(PacsTest, UnknownCallingAeTitleIsRejected) {
 }
 
 TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
-    const Node nobody{"NOBODY", "127.0.0.1", vv::test::freePort()};
+    const Node nobody{"NOBODY", "127.0.0.1", vv::test::freePort(), {}};
     try {
         echo(me(), nobody);
         FAIL() << "echo to a closed port succeeded";
@@ -138,7 +138,7 @@ TEST(PacsFaultTest, SilentPeerTimesOut) {
     ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
     ASSERT_EQ(::listen(fd, 4), 0);
     ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
-    const Node silent{"SILENT", "127.0.0.1", ntohs(address.sin_port)};
+    const Node silent{"SILENT", "127.0.0.1", ntohs(address.sin_port), {}};
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
@@ -247,7 +247,7 @@ TEST_F(PacsTest, UnknownNodePushingIsRefusedAndNothingStored) {
     config.port = vv::test::freePort();
     config.allowedPeers = {orthanc_->node()};
     StorageScp listener(store, config);
-    const Node ourListener{"VVLISTEN", "127.0.0.1", config.port};
+    const Node ourListener{"VVLISTEN", "127.0.0.1", config.port, {}};
     const LocalAe stranger{"STRANGER", Timeouts{2, 5, 10}};
     EXPECT_THROW(sendFiles(stranger, ourListener, ctaFiles("VV-PACS-STRANGER")),
                  AssociationRejectedError);

@@ -4,6 +4,7 @@
 #include <dcmtk/dcmnet/cond.h>
 #include <dcmtk/dcmnet/dimse.h>
 #include <dcmtk/dcmnet/dul.h>
+#include <dcmtk/dcmtls/tlslayer.h>
 #include <dcmtk/oflog/oflog.h>
 
 #include <cstdio>
@@ -32,8 +33,48 @@ void quietDcmtk() {
     std::call_once(once, [] { OFLog::configure(OFLogger::OFF_LOG_LEVEL); });
 }
 
-void configure(DcmSCU& scu, const LocalAe& me, const Node& peer) {
+void Scu::secure(const TlsSettings& tls) {
+    auto layer = std::make_unique<DcmTLSTransportLayer>(NET_REQUESTOR, nullptr, OFTrue);
+    const auto check = [](const OFCondition& cond, const std::string& what) {
+        if (cond.bad()) {
+            throw TlsError(what + ": " + cond.text());
+        }
+    };
+    if (tls.trustedCertificates.empty()) {
+        throw TlsError("TLS needs the trusted (CA) certificates");
+    }
+    check(layer->setTLSProfile(TSP_Profile_BCP195), "TLS profile");
+    check(layer->activateCipherSuites(), "TLS cipher suites");
+    check(layer->addTrustedCertificateFile(tls.trustedCertificates.c_str(), DCF_Filetype_PEM),
+          tls.trustedCertificates.string());
+    if (!tls.certificate.empty()) {
+        check(layer->setPrivateKeyFile(tls.privateKey.c_str(), DCF_Filetype_PEM),
+              tls.privateKey.string());
+        check(layer->setCertificateFile(tls.certificate.c_str(), DCF_Filetype_PEM),
+              tls.certificate.string());
+        if (!layer->checkPrivateKeyMatchesCertificate()) {
+            throw TlsError(tls.privateKey.string() + " is not the key of " +
+                           tls.certificate.string());
+        }
+    }
+    layer->setCertificateVerification(DCV_requireCertificate);
+    tlsLayer = std::move(layer);
+}
+
+void Scu::attachTls() {
+    if (tlsLayer) {
+        const OFCondition cond = useSecureConnection(tlsLayer.get());
+        if (cond.bad()) {
+            throw TlsError(std::string("TLS: ") + cond.text());
+        }
+    }
+}
+
+void configure(Scu& scu, const LocalAe& me, const Node& peer) {
     quietDcmtk();
+    if (peer.tls.enabled) {
+        scu.secure(peer.tls);
+    }
     validateAeTitle(me.aeTitle);
     validateNode(peer);
     scu.setAETitle(me.aeTitle.c_str());
@@ -54,11 +95,12 @@ void propose(DcmSCU& scu, const char* abstractSyntax, T_ASC_SC_ROLE role) {
     scu.addPresentationContext(abstractSyntax, syntaxes, role);
 }
 
-void open(DcmSCU& scu, const Node& peer) {
+void open(Scu& scu, const Node& peer) {
     OFCondition cond = scu.initNetwork();
     if (cond.bad()) {
         fail(cond, peer, "network setup");
     }
+    scu.attachTls();
     cond = scu.negotiateAssociation();
     if (cond.bad()) {
         fail(cond, peer, "association");
@@ -77,6 +119,10 @@ T_ASC_PresentationContextID contextFor(DcmSCU& scu, const Node& peer, const char
 void fail(const OFCondition& cond, const Node& peer, const std::string& what) {
     const std::string text = cond.text() != nullptr ? cond.text() : "unknown error";
     const std::string where = describe(peer) + ": " + what + " failed: ";
+    if (cond.module() == OFM_dcmtls || contains(text, "TLS") || contains(text, "SSL") ||
+        contains(text, "certificate")) {
+        throw TlsError(where + "TLS failed (" + text + ")");
+    }
     if (cond == DUL_ASSOCIATIONREJECTED) {
         throw AssociationRejectedError(
             where +

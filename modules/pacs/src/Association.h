@@ -5,8 +5,10 @@
 // into the typed errors of vv/pacs/PacsError.h.
 
 #include <dcmtk/config/osconfig.h>
+#include <dcmtk/dcmnet/dcmlayer.h>
 #include <dcmtk/dcmnet/scu.h>
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,20 +16,35 @@
 
 namespace vv::pacs::detail {
 
+/// Holds the TLS layer; a base before DcmSCU, so that it outlives DcmSCU's
+/// own clean-up (closing the association, dropping the network).
+struct TlsLayerHolder {
+    std::unique_ptr<DcmTransportLayer> tlsLayer;
+};
+
+/// DcmSCU with the TLS layer it may use.
+class Scu : private TlsLayerHolder, public DcmSCU {
+  public:
+    /// Prepares TLS as `tls` says; throws TlsError naming the file that failed.
+    void secure(const TlsSettings& tls);
+    /// Puts the prepared TLS layer (if any) on the initialised network.
+    void attachTls();
+};
+
 /// Turns DCMTK's own logging off once per process: its messages may quote
 /// attribute values (patient data). Failures reach the caller as typed errors.
 void quietDcmtk();
 
-/// Sets our AE title, the peer and every timeout of `me` on `scu` (non-blocking
-/// DIMSE, so that no wait is without a limit). Validates both.
-void configure(DcmSCU& scu, const LocalAe& me, const Node& peer);
+/// Sets our AE title, the peer, its TLS and every timeout of `me` on `scu`
+/// (non-blocking DIMSE, so that no wait is without a limit). Validates both.
+void configure(Scu& scu, const LocalAe& me, const Node& peer);
 
 /// Proposes `abstractSyntax` with explicit / implicit little endian.
 void propose(DcmSCU& scu, const char* abstractSyntax, T_ASC_SC_ROLE role = ASC_SC_ROLE_DEFAULT);
 
 /// initNetwork() + negotiateAssociation(); throws ConnectionRefusedError,
 /// AssociationRejectedError, TimeoutError or PeerFailedError.
-void open(DcmSCU& scu, const Node& peer);
+void open(Scu& scu, const Node& peer);
 
 /// The accepted presentation context for `abstractSyntax`; throws
 /// AssociationRejectedError naming the SOP class when the peer accepted none.

@@ -6,7 +6,7 @@
 namespace vv::pacs {
 
 void echo(const LocalAe& me, const Node& peer) {
-    DcmSCU scu;
+    detail::Scu scu;
     detail::configure(scu, me, peer);
     detail::propose(scu, UID_VerificationSOPClass);
     detail::open(scu, peer);

@@ -35,7 +35,7 @@ void checkDate(const std::string& date, const char* name) {
 }
 
 /// Collects C-FIND answers through a handler and stops at the limits.
-class FindScu : public DcmSCU {
+class FindScu : public detail::Scu {
   public:
     using Handler = std::function<void(DcmDataset&)>;
     FindScu(const FindLimits& limits, Handler handler)

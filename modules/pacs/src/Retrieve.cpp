@@ -75,7 +75,7 @@ void checkOutcome(const Outcome& o, const Node& peer, const char* what) {
     }
 }
 
-class GetScu : public DcmSCU {
+class GetScu : public detail::Scu {
   public:
     GetScu(LocalStore::Transaction& transaction, Reporter& reporter)
         : transaction_(transaction), reporter_(reporter) {}
@@ -131,7 +131,7 @@ class GetScu : public DcmSCU {
     Reporter& reporter_;
 };
 
-class MoveScu : public DcmSCU {
+class MoveScu : public detail::Scu {
   public:
     explicit MoveScu(Reporter& reporter) : reporter_(reporter) {}
     Outcome outcome;

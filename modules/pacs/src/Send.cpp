@@ -45,7 +45,7 @@ std::vector<SendStatus> sendFiles(const LocalAe& me, const Node& peer,
         contexts[sopClass].insert(xfer);
         sopClasses.push_back(sopClass);
     }
-    DcmSCU scu;
+    detail::Scu scu;
     detail::configure(scu, me, peer);
     for (const auto& [sopClass, syntaxes] : contexts) {
         for (const std::string& xfer : syntaxes) {

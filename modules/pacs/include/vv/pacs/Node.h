@@ -5,6 +5,7 @@
 // peer's AE title, host and port).
 
 #include <cstdint>
+#include <filesystem>
 #include <string>
 
 namespace vv::pacs {
@@ -22,11 +23,22 @@ struct LocalAe {
     Timeouts timeouts;
 };
 
+/// DICOM over TLS (DCMTK's dcmtls with OpenSSL, BCP 195 profile). The peer's
+/// certificate must chain to `trustedCertificates`; we show `certificate`
+/// when the peer asks for one. All files PEM; the key unencrypted.
+struct TlsSettings {
+    bool enabled = false;
+    std::filesystem::path trustedCertificates;  ///< CA certificate(s) we trust
+    std::filesystem::path certificate;          ///< ours (optional)
+    std::filesystem::path privateKey;           ///< the key of ours (with `certificate`)
+};
+
 /// A peer application entity (a PACS, a modality, a workstation).
 struct Node {
     std::string aeTitle;
     std::string host;
     std::uint16_t port = 104;
+    TlsSettings tls;
 };
 
 /// Throws InvalidArgumentError unless `aeTitle` is a valid AE title: 1 to 16

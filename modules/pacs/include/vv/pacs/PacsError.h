@@ -34,6 +34,12 @@ class TimeoutError : public NetworkError {
     using NetworkError::NetworkError;
 };
 
+/// TLS failed: our certificate files cannot be read, the handshake failed, or
+/// the peer's certificate does not chain to the trusted certificates.
+class TlsError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
 /// The peer aborted, closed the connection or answered with a failure status.
 class PeerFailedError : public NetworkError {
     using NetworkError::NetworkError;
