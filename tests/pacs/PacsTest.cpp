@@ -275,3 +275,39 @@ TEST(PacsFaultTest, OrthancKilledDuringRetrieveLeavesNothingComplete) {
     EXPECT_TRUE(store.studies().empty());
     EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
 }
+
+TEST(PacsListenerTest, AssociationOverTheSizeCapIsRefusedAndDiscarded) {
+    LocalStore store(freshFolder("cap"));
+    const auto files = ctaFiles("VV-PACS-CAP");
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
+    config.maxAssociationBytes = fs::file_size(files[0]) * 5 / 2;  // room for two instances
+    StorageScp listener(store, config);
+    const auto statuses = sendFiles(LocalAe{"SENDER", Timeouts{2, 5, 10}},
+                                    Node{"VVLISTEN", "127.0.0.1", config.port, {}}, files);
+    ASSERT_EQ(statuses.size(), files.size());
+    EXPECT_TRUE(statuses[0].accepted);
+    EXPECT_TRUE(statuses[1].accepted);
+    for (std::size_t i = 2; i < statuses.size(); ++i) {
+        EXPECT_FALSE(statuses[i].accepted) << i;
+    }
+    EXPECT_TRUE(store.studies().empty()) << "an association over the cap stores nothing";
+    EXPECT_EQ(listener.stats().discardedAssociations, 1U);
+}
+
+TEST(PacsListenerTest, KnownAeTitleFromAnotherHostIsRefused) {
+    LocalStore store(freshFolder("host"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {Node{"SENDER", "127.0.0.2", 104, {}}};  // we call from 127.0.0.1
+    StorageScp listener(store, config);
+    EXPECT_THROW(
+        sendFiles(LocalAe{"SENDER", Timeouts{2, 5, 10}},
+                  Node{"VVLISTEN", "127.0.0.1", config.port, {}}, ctaFiles("VV-PACS-HOST")),
+        AssociationRejectedError);
+    EXPECT_EQ(listener.stats().refusedAssociations, 1U);
+    EXPECT_TRUE(store.studies().empty());
+}
