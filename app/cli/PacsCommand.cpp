@@ -56,6 +56,7 @@ struct Options {
     std::vector<pacs::Node> allowed;
     pacs::TlsSettings tls;
     std::uint16_t port = 0;
+    std::string bind = "0.0.0.0";
     bool move = false;
     int seconds = 0;
 };
@@ -95,6 +96,8 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
             o.allowed.push_back(parseNode(a.value() + ":104", a));
         } else if (n == "--port") {
             o.port = static_cast<std::uint16_t>(parseWholeNumber(a.value(), "--port", 1, 65535));
+        } else if (n == "--bind") {
+            o.bind = a.value();
         } else if (n == "--move") {
             o.move = true;
         } else if (n == "--tls-ca") {
@@ -184,6 +187,7 @@ int get(const Options& o, std::ostream& out) {
         config.aeTitle = o.me.aeTitle;
         config.port = o.port;
         config.allowedPeers = {*o.node};
+        config.bindAddress = o.bind;
         config.timeouts = o.me.timeouts;
         const pacs::StorageScp listener(store, config);
         instances = pacs::moveTo(o.me.aeTitle, o.me, *o.node, request).instances;
@@ -222,13 +226,14 @@ int listen(const Options& o, std::ostream& out) {
     config.aeTitle = o.me.aeTitle;
     config.port = o.port;
     config.allowedPeers = o.allowed;
+    config.bindAddress = o.bind;
     config.timeouts = o.me.timeouts;
     gStop = 0;
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
     {
         const pacs::StorageScp listener(store, config);
-        out << "listening as " << o.me.aeTitle << " on port " << o.port << std::endl;
+        out << "listening as " << o.me.aeTitle << " on " << o.bind << ":" << o.port << std::endl;
         const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(o.seconds);
         while (gStop == 0 && (o.seconds == 0 || std::chrono::steady_clock::now() < end)) {
             std::this_thread::sleep_for(std::chrono::milliseconds(100));

@@ -311,3 +311,27 @@ TEST(PacsListenerTest, KnownAeTitleFromAnotherHostIsRefused) {
     EXPECT_EQ(listener.stats().refusedAssociations, 1U);
     EXPECT_TRUE(store.studies().empty());
 }
+
+TEST(PacsListenerTest, ListensOnTheConfiguredInterfaceOnly) {
+    LocalStore store(freshFolder("bind"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.bindAddress = "127.0.0.2";
+    config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
+    const StorageScp listener(store, config);
+    const LocalAe sender{"SENDER", Timeouts{2, 5, 10}};
+    EXPECT_NO_THROW(echo(sender, Node{"VVLISTEN", "127.0.0.2", config.port, {}}));
+    EXPECT_THROW(echo(sender, Node{"VVLISTEN", "127.0.0.1", config.port, {}}),
+                 ConnectionRefusedError);
+}
+
+TEST(PacsListenerTest, AnAddressNotOfThisHostIsAClearError) {
+    LocalStore store(freshFolder("bind-bad"));
+    ListenerConfig config;
+    config.port = vv::test::freePort();
+    config.bindAddress = "192.0.2.1";  // TEST-NET-1: not an address of this machine
+    EXPECT_THROW(StorageScp(store, config), vv::IoError);
+    config.bindAddress = "localhost";
+    EXPECT_THROW(StorageScp(store, config), vv::InvalidArgumentError);
+}

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <condition_variable>
+#include <functional>
 #include <mutex>
 #include <optional>
 #include <system_error>
@@ -14,6 +15,7 @@
 
 #include "Association.h"
 #include "DatasetFields.h"
+#include "ListenSocket.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
 
@@ -41,13 +43,40 @@ std::string trimmed(const std::string& s) {
 
 class Scp : public DcmSCP {
   public:
-    Scp(LocalStore& store, const ListenerConfig& config, ListenerStats& stats, std::mutex& mutex)
-        : store_(store), config_(config), stats_(stats), mutex_(mutex) {}
+    /// Called once: with "" when the socket is bound as configured, else the problem.
+    using Started = std::function<void(const std::string& problem)>;
+
+    Scp(LocalStore& store, const ListenerConfig& config, ListenerStats& stats, std::mutex& mutex,
+        Started started)
+        : store_(store),
+          config_(config),
+          stats_(stats),
+          mutex_(mutex),
+          started_(std::move(started)) {}
 
     std::atomic<bool> stopRequested{false};
     std::atomic<bool> listening{false};
 
   protected:
+    OFCondition waitForAssociationRQ(T_ASC_Network* network) override {
+        if (started_) {
+            std::string problem;
+            try {
+                detail::rebindListenSocket(*network, config_.bindAddress, config_.port);
+            } catch (const Error& e) {
+                problem = e.problem();
+                stopRequested = true;
+            }
+            Started started = std::move(started_);
+            started_ = nullptr;
+            started(problem);
+            if (!problem.empty()) {
+                return NET_EC_InvalidSCPAssociationProfile;
+            }
+        }
+        return DcmSCP::waitForAssociationRQ(network);
+    }
+
     void notifyAssociationRequest(const T_ASC_Parameters& params,
                                   DcmSCPActionType& action) override {
         callingAe_ = trimmed(params.DULparams.callingAPTitle);
@@ -161,6 +190,7 @@ class Scp : public DcmSCP {
     const ListenerConfig& config_;
     ListenerStats& stats_;
     std::mutex& mutex_;
+    Started started_;
     std::optional<LocalStore::Transaction> transaction_;
     std::string callingAe_;
     std::string callingHost_;
@@ -190,9 +220,21 @@ StorageScp::StorageScp(LocalStore& store, ListenerConfig config) : impl_(std::ma
     for (const Node& node : config.allowedPeers) {
         validateAeTitle(node.aeTitle);
     }
+    detail::validateBindAddress(config.bindAddress);
     detail::quietDcmtk();
     impl_->config = std::move(config);
-    impl_->scp = std::make_unique<Scp>(store, impl_->config, impl_->stats, impl_->mutex);
+    Impl& impl = *impl_;
+    const auto started = [&impl](const std::string& problem) {
+        {
+            const std::lock_guard lock(impl.startMutex);
+            if (!problem.empty()) {
+                impl.startError = problem;
+            }
+            impl.startDone = true;
+        }
+        impl.started.notify_all();
+    };
+    impl_->scp = std::make_unique<Scp>(store, impl_->config, impl_->stats, impl_->mutex, started);
     DcmSCPConfig& c = impl_->scp->getConfig();
     c.setAETitle(impl_->config.aeTitle.c_str());
     c.setPort(impl_->config.port);
@@ -214,28 +256,21 @@ StorageScp::StorageScp(LocalStore& store, ListenerConfig config) : impl_(std::ma
         c.addPresentationContext(sopClass, syntaxes);
     }
 
-    Impl& impl = *impl_;
-    impl.worker = std::thread([&impl] {
-        OFCondition cond = impl.scp->openListenPort();
-        {
-            const std::lock_guard lock(impl.startMutex);
-            if (cond.bad()) {
-                impl.startError = cond.text();
-            }
-            impl.startDone = true;
+    impl.worker = std::thread([&impl, started] {
+        const OFCondition cond = impl.scp->openListenPort();
+        if (cond.bad()) {
+            started("cannot listen on port " + std::to_string(impl.config.port) + ": " +
+                    cond.text());
+            return;
         }
-        impl.started.notify_all();
-        if (cond.good()) {
-            impl.scp->acceptAssociations();
-        }
+        impl.scp->acceptAssociations();
     });
     std::unique_lock lock(impl.startMutex);
     impl.started.wait(lock, [&impl] { return impl.startDone; });
     if (impl.startError) {
         lock.unlock();
         impl.worker.join();
-        throw IoError("cannot listen on port " + std::to_string(impl.config.port) + ": " +
-                      *impl.startError);
+        throw IoError(*impl.startError);
     }
 }
 

@@ -24,7 +24,8 @@ namespace vv::pacs {
 struct ListenerConfig {
     std::string aeTitle = "VESSELVIEW";  ///< the called AE title we answer to
     std::uint16_t port = 11112;
-    std::vector<Node> allowedPeers;  ///< calling AE title + host (IP address) pairs
+    std::string bindAddress = "127.0.0.1";  ///< the interface (IPv4) to listen on; 0.0.0.0: all
+    std::vector<Node> allowedPeers;         ///< calling AE title + host (IP address) pairs
     std::size_t maxAssociationBytes = std::size_t{4} << 30;  ///< bytes of one association
     Timeouts timeouts;
 };
@@ -40,7 +41,8 @@ struct ListenerStats {
 class StorageScp {
   public:
     /// Validates `config` (InvalidArgumentError) and starts listening on its
-    /// port on a worker thread; throws IoError when the port cannot be opened.
+    /// address and port on a worker thread; throws IoError when the port
+    /// cannot be opened.
     StorageScp(LocalStore& store, ListenerConfig config);
     /// Stops listening (within about a second) and joins the worker.
     ~StorageScp();
