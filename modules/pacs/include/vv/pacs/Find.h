@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "vv/pacs/Node.h"
+#include "vv/pacs/StudyFields.h"
 
 namespace vv::pacs {
 
@@ -26,13 +27,7 @@ struct StudyQuery {
     std::string accessionNumber;
 };
 
-struct StudyResult {
-    std::string studyInstanceUid;
-    std::string patientName;
-    std::string patientId;
-    std::string studyDate;
-    std::string studyDescription;
-    std::string accessionNumber;
+struct StudyResult : StudyFields {
     std::string modalitiesInStudy;  ///< backslash-separated, as sent
     int numberOfSeries = -1;        ///< -1 when the peer did not say
 };

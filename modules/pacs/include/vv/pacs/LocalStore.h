@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "vv/pacs/StudyFields.h"
+
 namespace vv::pacs {
 
 /// What the index knows of one instance (what the browser shows).
@@ -41,13 +43,7 @@ struct StoredSeries {
     std::filesystem::path folder;
 };
 
-struct StoredStudy {
-    std::string studyInstanceUid;
-    std::string patientName;
-    std::string patientId;
-    std::string studyDate;
-    std::string studyDescription;
-    std::string accessionNumber;
+struct StoredStudy : StudyFields {
     std::vector<StoredSeries> series;
     std::filesystem::path folder;
 };
