@@ -12,6 +12,8 @@
 #include <chrono>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
+#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -22,7 +24,24 @@ namespace fs = std::filesystem;
 
 namespace vv::test {
 
+std::uint16_t anyFreePort();
+
 std::uint16_t freePort() {
+    // Never the same port twice in one process (the kernel may hand a just
+    // closed port out again).
+    static std::mutex mutex;
+    static std::set<std::uint16_t> given;
+    const std::lock_guard lock(mutex);
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const std::uint16_t port = anyFreePort();
+        if (given.insert(port).second) {
+            return port;
+        }
+    }
+    throw std::runtime_error("no free port");
+}
+
+std::uint16_t anyFreePort() {
     const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
     sockaddr_in address{};
     address.sin_family = AF_INET;
@@ -68,6 +87,23 @@ OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
     static std::atomic<int> counter{0};
     folder_ = fs::path(VV_TEST_TMP) /
               ("orthanc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    // A port taken by another process between choosing and binding makes
+    // Orthanc exit at once: then again with other ports (three tries).
+    for (int attempt = 1;; ++attempt) {
+        const std::string problem = start(ourAe, ourPort, tls);
+        if (problem.empty()) {
+            return;
+        }
+        if (attempt == 3 || pid_ != -2) {
+            pid_ = -1;
+            throw std::runtime_error(problem);
+        }
+        pid_ = -1;
+    }
+}
+
+std::string OrthancServer::start(const std::string& ourAe, std::uint16_t ourPort,
+                                 const TestCertificates* tls) {
     fs::remove_all(folder_);
     fs::create_directories(folder_ / "storage");
     dicomPort_ = freePort();
@@ -123,21 +159,23 @@ OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
     while (true) {
         try {
             vv::pacs::echo(me, node());
-            return;
+            return {};
         } catch (const std::exception& e) {
             lastError = e.what();
             int status = 0;
             const bool exited = ::waitpid(pid_, &status, WNOHANG) == pid_;
+            if (exited) {
+                pid_ = -1;
+            }
             if (exited || std::chrono::steady_clock::now() > deadline) {
-                if (exited) {
-                    pid_ = -1;
-                }
                 stop();
+                if (exited) {
+                    pid_ = -2;  // exited by itself: worth another try
+                }
                 std::ifstream in(log);
                 std::stringstream text;
                 text << in.rdbuf();
-                throw std::runtime_error("Orthanc did not come up (" + lastError + "):\n" +
-                                         text.str());
+                return "Orthanc did not come up (" + lastError + "):\n" + text.str();
             }
             std::this_thread::sleep_for(std::chrono::milliseconds(100));
         }

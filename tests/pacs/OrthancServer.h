@@ -47,6 +47,10 @@ class OrthancServer {
     [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
 
   private:
+    /// One try: writes the configuration with new ports, starts Orthanc and
+    /// waits for C-ECHO. "" when it answers, else the problem and Orthanc's
+    /// log; pid_ is -2 when Orthanc exited by itself.
+    std::string start(const std::string& ourAe, std::uint16_t ourPort, const TestCertificates* tls);
     void stop();
     std::filesystem::path folder_;
     std::uint16_t dicomPort_ = 0;

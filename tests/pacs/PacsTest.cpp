@@ -39,7 +39,8 @@ LocalAe me() {
 }
 
 fs::path freshFolder(const std::string& name) {
-    const fs::path folder = fs::path(VV_TEST_TMP) / ("pacs-" + name);
+    // Per process: ctest runs the tests of this file in parallel processes.
+    const fs::path folder = fs::path(VV_TEST_TMP) / ("pacs-" + std::to_string(::getpid())) / name;
     fs::remove_all(folder);
     return folder;
 }
@@ -334,4 +335,18 @@ TEST(PacsListenerTest, AnAddressNotOfThisHostIsAClearError) {
     EXPECT_THROW(StorageScp(store, config), vv::IoError);
     config.bindAddress = "localhost";
     EXPECT_THROW(StorageScp(store, config), vv::InvalidArgumentError);
+}
+
+TEST(PacsListenerTest, WrongCalledAeTitleIsRefused) {
+    LocalStore store(freshFolder("called"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
+    const StorageScp listener(store, config);
+    const LocalAe sender{"SENDER", Timeouts{2, 5, 10}};
+    EXPECT_NO_THROW(echo(sender, Node{"VVLISTEN", "127.0.0.1", config.port, {}}));
+    EXPECT_THROW(echo(sender, Node{"NOTUS", "127.0.0.1", config.port, {}}),
+                 AssociationRejectedError);
+    EXPECT_EQ(listener.stats().refusedAssociations, 1U);
 }

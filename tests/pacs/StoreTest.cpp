@@ -3,6 +3,7 @@
 // only on commit; folders are private; the index survives reopening.
 #include <gtest/gtest.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
@@ -16,7 +17,8 @@ using namespace vv::pacs;
 namespace {
 
 fs::path freshFolder(const std::string& name) {
-    const fs::path folder = fs::path(VV_TEST_TMP) / ("store-" + name);
+    // Per process: ctest runs the tests of this file in parallel processes.
+    const fs::path folder = fs::path(VV_TEST_TMP) / ("store-" + std::to_string(::getpid())) / name;
     fs::remove_all(folder);
     return folder;
 }
