@@ -12,8 +12,9 @@ set(CPACK_DEBIAN_PACKAGE_PRIORITY "optional")
 set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)
 # Only what the linker cannot see, because Qt loads it at run time: the
 # platform plugins (xcb), without which no window and no offscreen GL context
-# can be made. libqt6gui6 only recommends them.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins")
+# can be made. libqt6gui6 only recommends them. Likewise Qt SQL's SQLite
+# driver, which the local study store's index needs (docs/dicom-networking.md).
+set(CPACK_DEBIAN_PACKAGE_DEPENDS "qt6-qpa-plugins, libqt6sql6-sqlite")
 # `render` without a display needs a virtual X server: suggested, not required.
 set(CPACK_DEBIAN_PACKAGE_SUGGESTS "xvfb, xauth")
 set(CPACK_DEBIAN_PACKAGE_CONTROL_STRICT_PERMISSION ON)

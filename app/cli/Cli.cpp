@@ -100,11 +100,30 @@ constexpr const char* kUsageText =
     "                                       demo tree, its decimated copies and FILEs, and\n"
     "                                       of the same view supersampled (default 3x)\n"
     "                                       (Markdown table)\n"
+    "  pacs echo --node AE@HOST:PORT [--aet OURS] [--timeout S]\n"
+    "            [--tls-ca CA.pem [--tls-cert CERT.pem --tls-key KEY.pem]]\n"
+    "  pacs find --node N [--patient-name P] [--patient-id ID] [--date-from YYYYMMDD]\n"
+    "            [--date-to YYYYMMDD] [--modality M] [--description D] [--accession A]\n"
+    "            [--study UID (series level)]\n"
+    "  pacs get --node N --study UID [--series UID] --store DIR\n"
+    "           [--move --port P [--bind ADDR]]\n"
+    "  pacs send --node N FILE...\n"
+    "  pacs listen --store DIR --port P [--bind ADDR] [--aet OURS] --allow AE@HOST...\n"
+    "              [--for SECONDS]\n"
+    "                                       DICOM networking (docs/dicom-networking.md):\n"
+    "                                       C-ECHO; C-FIND of studies / series (JSON);\n"
+    "                                       C-GET (or C-MOVE to a listener of ours) into\n"
+    "                                       the local study store; C-STORE with each\n"
+    "                                       instance's status; the storage SCP, which\n"
+    "                                       lets in only the --allow nodes, on the\n"
+    "                                       interface --bind (IPv4; default all); --tls-ca:\n"
+    "                                       DICOM over TLS to the node (all but listen)\n"
     "  --version, --help\n"
     "\n"
     "exit codes: 0 ok, 1 internal error, 2 usage, 3 unreadable or invalid input\n"
     "            (also a session naming a missing file or holding a bad value),\n"
-    "            4 cannot write output\n";
+    "            4 cannot write output, 5 the peer refused or failed (pacs: refused\n"
+    "            connection or association, timeout, failure status, instance refused)\n";
 
 /// What a setting's option takes ("on|off", "N", "#rrggbb", the names).
 std::string metavar(const app::Setting& s) {
@@ -203,6 +222,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "artefacts") {
             return artefactsCommand(rest, out, err);
+        }
+        if (command == "pacs") {
+            return pacsCommand(rest, out, err);
         }
         if (command == "soak") {  // hidden: scripts/soak (SoakCommand.cpp)
             return soakCommand(rest, out, err);

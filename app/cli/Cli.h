@@ -14,6 +14,7 @@ enum ExitCode : int {
     kUsage = 2,          ///< bad command line
     kInvalidInput = 3,   ///< input missing, unreadable or invalid
     kCannotWrite = 4,    ///< output could not be written
+    kPeerFailed = 5,     ///< a DICOM peer refused, failed or did not answer in time
 };
 
 /// Thrown by commands for a bad command line; main() maps it to kUsage.
@@ -39,6 +40,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
 int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int pacsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 /// Thrown when an output file cannot be written; maps to kCannotWrite.
 class OutputError : public std::exception {

@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// The typed failures of DICOM networking. Every one names the peer
+// ("AE@host:port") and what failed; none carries patient data.
+
+#include <string>
+
+#include "vv/core/Error.h"
+
+namespace vv::pacs {
+
+/// Root of the networking failures: the peer refused or failed
+/// (`vesselview-cli pacs` exits with 5 for every one of them).
+class NetworkError : public Error {
+    using Error::Error;
+};
+
+/// Nobody listens at host:port (TCP connection refused), or the host is unknown
+/// or unreachable.
+class ConnectionRefusedError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
+/// The peer answered but rejected the association: our AE title is not known
+/// to it, the called AE title is wrong, or it accepts none of the proposed
+/// presentation contexts. The message gives the peer's reason when it sent one.
+class AssociationRejectedError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
+/// A network wait ran out (connect, association, a response).
+class TimeoutError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
+/// TLS failed: our certificate files cannot be read, the handshake failed, or
+/// the peer's certificate does not chain to the trusted certificates.
+class TlsError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
+/// The peer aborted, closed the connection or answered with a failure status.
+class PeerFailedError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
+/// A response broke our limits or the standard: too many results, an
+/// oversized or malformed attribute.
+class ResponseError : public NetworkError {
+    using NetworkError::NetworkError;
+};
+
+}  // namespace vv::pacs

@@ -1,0 +1,20 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/pacs/Echo.h"
+
+#include "Association.h"
+
+namespace vv::pacs {
+
+void echo(const LocalAe& me, const Node& peer) {
+    detail::Scu scu;
+    detail::configure(scu, me, peer);
+    detail::propose(scu, UID_VerificationSOPClass);
+    detail::open(scu, peer);
+    const OFCondition cond = scu.sendECHORequest(0);
+    if (cond.bad()) {
+        detail::fail(cond, peer, "C-ECHO");
+    }
+    detail::release(scu);
+}
+
+}  // namespace vv::pacs

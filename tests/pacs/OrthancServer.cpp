@@ -1,0 +1,213 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "OrthancServer.h"
+
+#include <fcntl.h>
+#include <netinet/in.h>
+#include <signal.h>
+#include <sys/socket.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <chrono>
+#include <cstdlib>
+#include <fstream>
+#include <mutex>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+#include <thread>
+
+#include "vv/pacs/Echo.h"
+
+namespace fs = std::filesystem;
+
+namespace vv::test {
+
+std::uint16_t anyFreePort();
+
+std::uint16_t freePort() {
+    // Never the same port twice in one process (the kernel may hand a just
+    // closed port out again).
+    static std::mutex mutex;
+    static std::set<std::uint16_t> given;
+    const std::lock_guard lock(mutex);
+    for (int attempt = 0; attempt < 100; ++attempt) {
+        const std::uint16_t port = anyFreePort();
+        if (given.insert(port).second) {
+            return port;
+        }
+    }
+    throw std::runtime_error("no free port");
+}
+
+std::uint16_t anyFreePort() {
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = 0;
+    socklen_t length = sizeof address;
+    if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+        throw std::runtime_error("no free port");
+    }
+    ::close(fd);
+    return ntohs(address.sin_port);
+}
+
+TestCertificates makeCertificates(const fs::path& folder) {
+    fs::create_directories(folder);
+    const std::string d = folder.string() + "/";
+    const auto run = [](const std::string& command) {
+        if (std::system((command + " >/dev/null 2>&1").c_str()) != 0) {
+            throw std::runtime_error("failed: " + command);
+        }
+    };
+    const std::string key = " -newkey rsa:2048 -nodes -days 2";
+    run("openssl req -x509" + key + " -keyout " + d + "ca.key -out " + d +
+        "ca.pem -subj /CN=vv-ca");
+    run("openssl req -x509" + key + " -keyout " + d + "other.key -out " + d +
+        "other.pem -subj /CN=vv-other-ca");
+    for (const std::string name : {"server", "client"}) {
+        run("openssl req" + key + " -keyout " + d + name + ".key -out " + d + name +
+            ".csr -subj /CN=" + name);
+        run("openssl x509 -req -days 2 -in " + d + name + ".csr -CA " + d + "ca.pem -CAkey " + d +
+            "ca.key -CAcreateserial -out " + d + name + ".pem");
+    }
+    return {folder / "ca.pem",     folder / "server.pem", folder / "server.key",
+            folder / "client.pem", folder / "client.key", folder / "other.pem"};
+}
+
+OrthancServer::OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
+                             const TestCertificates* tls) {
+    if (tls != nullptr) {
+        tls_ = {true, tls->ca, tls->clientCert, tls->clientKey};
+    }
+    static std::atomic<int> counter{0};
+    folder_ = fs::path(VV_TEST_TMP) /
+              ("orthanc-" + std::to_string(::getpid()) + "-" + std::to_string(counter++));
+    // A port taken by another process between choosing and binding makes
+    // Orthanc exit at once: then again with other ports (three tries).
+    for (int attempt = 1;; ++attempt) {
+        const std::string problem = start(ourAe, ourPort, tls);
+        if (problem.empty()) {
+            return;
+        }
+        if (attempt == 3 || pid_ != -2) {
+            pid_ = -1;
+            throw std::runtime_error(problem);
+        }
+        pid_ = -1;
+    }
+}
+
+std::string OrthancServer::start(const std::string& ourAe, std::uint16_t ourPort,
+                                 const TestCertificates* tls) {
+    fs::remove_all(folder_);
+    fs::create_directories(folder_ / "storage");
+    dicomPort_ = freePort();
+    const std::uint16_t httpPort = freePort();
+    {
+        std::ofstream config(folder_ / "orthanc.json");
+        config << "{\n"
+               << "  \"Name\": \"vv-test\",\n"
+               << "  \"StorageDirectory\": \"" << (folder_ / "storage").string() << "\",\n"
+               << "  \"IndexDirectory\": \"" << (folder_ / "storage").string() << "\",\n"
+               << "  \"Plugins\": [],\n"
+               << "  \"HttpServerEnabled\": true,\n"
+               << "  \"HttpPort\": " << httpPort << ",\n"
+               << "  \"RemoteAccessAllowed\": false,\n"
+               << "  \"AuthenticationEnabled\": false,\n"
+               << "  \"DicomServerEnabled\": true,\n"
+               << "  \"DicomAet\": \"ORTHANC\",\n"
+               << "  \"DicomPort\": " << dicomPort_ << ",\n"
+               << "  \"DicomCheckCalledAet\": true,\n"
+               << "  \"DicomAlwaysAllowEcho\": false,\n"
+               << "  \"DicomAlwaysAllowStore\": false,\n"
+               << "  \"DicomCheckModalityHost\": true,\n"
+               << "  \"DicomAssociationCloseDelay\": 0,\n"
+               << "  \"DicomScuTimeout\": 10,\n"
+               << "  \"DicomScpTimeout\": 10,\n"
+               << "  \"SaveJobs\": false,\n";
+        if (tls != nullptr) {
+            config << "  \"DicomTlsEnabled\": true,\n"
+                   << "  \"DicomTlsCertificate\": \"" << tls->serverCert.string() << "\",\n"
+                   << "  \"DicomTlsPrivateKey\": \"" << tls->serverKey.string() << "\",\n"
+                   << "  \"DicomTlsTrustedCertificates\": \"" << tls->ca.string() << "\",\n"
+                   << "  \"DicomTlsRemoteCertificateRequired\": true,\n";
+        }
+        config << "  \"DicomModalities\": { \"vv\": { \"AET\": \"" << ourAe
+               << "\", \"Host\": \"127.0.0.1\", \"Port\": " << ourPort
+               << ", \"AllowEcho\": true, \"AllowFind\": true, \"AllowGet\": true,"
+               << " \"AllowMove\": true, \"AllowStore\": true } }\n"
+               << "}\n";
+    }
+    const std::string log = (folder_ / "orthanc.log").string();
+    const std::string configFile = (folder_ / "orthanc.json").string();
+    pid_ = ::fork();
+    if (pid_ == 0) {
+        const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+        ::dup2(out, 1);
+        ::dup2(out, 2);
+        ::execl("/usr/sbin/Orthanc", "Orthanc", configFile.c_str(), static_cast<char*>(nullptr));
+        ::_exit(127);
+    }
+    vv::pacs::LocalAe me{ourAe, {1, 2, 5}};
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(30);
+    std::string lastError;
+    while (true) {
+        try {
+            vv::pacs::echo(me, node());
+            return {};
+        } catch (const std::exception& e) {
+            lastError = e.what();
+            int status = 0;
+            const bool exited = ::waitpid(pid_, &status, WNOHANG) == pid_;
+            if (exited) {
+                pid_ = -1;
+            }
+            if (exited || std::chrono::steady_clock::now() > deadline) {
+                stop();
+                if (exited) {
+                    pid_ = -2;  // exited by itself: worth another try
+                }
+                std::ifstream in(log);
+                std::stringstream text;
+                text << in.rdbuf();
+                return "Orthanc did not come up (" + lastError + "):\n" + text.str();
+            }
+            std::this_thread::sleep_for(std::chrono::milliseconds(100));
+        }
+    }
+}
+
+OrthancServer::~OrthancServer() {
+    stop();
+}
+
+void OrthancServer::kill() {
+    if (pid_ > 0) {
+        ::kill(pid_, SIGKILL);
+        ::waitpid(pid_, nullptr, 0);
+        pid_ = -1;
+    }
+}
+
+void OrthancServer::stop() {
+    if (pid_ <= 0) {
+        return;
+    }
+    ::kill(pid_, SIGTERM);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+    while (std::chrono::steady_clock::now() < deadline) {
+        if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
+            pid_ = -1;
+            return;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    }
+    kill();
+}
+
+}  // namespace vv::test

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A real Orthanc (Debian's `orthanc` package) for the networking tests: its
+// own temporary folder, free ports chosen at run time, a configuration written
+// here (our AE title known as a modality, HTTP on localhost only, called AE
+// title checked), started in the constructor and stopped in the destructor.
+#pragma once
+
+#include <sys/types.h>
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+
+#include "vv/pacs/Node.h"
+
+namespace vv::test {
+
+/// A TCP port nobody listens on right now (bound to 0, read back, closed).
+std::uint16_t freePort();
+
+/// Test certificates made with the openssl tool: a CA, a server and a client
+/// certificate signed by it, and a second CA that signed neither (PEM files).
+struct TestCertificates {
+    std::filesystem::path ca, serverCert, serverKey, clientCert, clientKey, otherCa;
+};
+
+/// Writes the certificates into `folder`; throws std::runtime_error.
+TestCertificates makeCertificates(const std::filesystem::path& folder);
+
+class OrthancServer {
+  public:
+    /// Starts Orthanc and waits (at most 30 s) until it answers C-ECHO from
+    /// `ourAe`; `ourPort` is where Orthanc sends C-MOVE results for `ourAe`.
+    /// Throws std::runtime_error (with Orthanc's log) when it does not come up.
+    /// With `tls`, Orthanc speaks DICOM only over TLS (server certificate and
+    /// key, trusting `tls->ca`, client certificates required).
+    OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
+                  const TestCertificates* tls = nullptr);
+    ~OrthancServer();
+    OrthancServer(const OrthancServer&) = delete;
+    OrthancServer& operator=(const OrthancServer&) = delete;
+
+    /// Orthanc as a node (with our TLS client settings when it speaks TLS).
+    [[nodiscard]] vv::pacs::Node node() const { return {"ORTHANC", "127.0.0.1", dicomPort_, tls_}; }
+    /// Kills Orthanc at once (SIGKILL), as a crash would.
+    void kill();
+    [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
+
+  private:
+    /// One try: writes the configuration with new ports, starts Orthanc and
+    /// waits for C-ECHO. "" when it answers, else the problem and Orthanc's
+    /// log; pid_ is -2 when Orthanc exited by itself.
+    std::string start(const std::string& ourAe, std::uint16_t ourPort, const TestCertificates* tls);
+    void stop();
+    std::filesystem::path folder_;
+    std::uint16_t dicomPort_ = 0;
+    pid_t pid_ = -1;
+    vv::pacs::TlsSettings tls_;
+};
+
+}  // namespace vv::test

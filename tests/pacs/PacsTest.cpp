@@ -1,0 +1,352 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// DICOM networking against a real Orthanc started by the test (OrthancServer):
+// C-ECHO and its failures, C-STORE of the synthetic CTA series, C-FIND at
+// study and series level, C-GET into the local store, C-MOVE to our own
+// storage SCP, and the faults (unknown node pushing, Orthanc killed in the
+// middle of a retrieve, cancel, a too-big C-FIND answer).
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <thread>
+
+#include "OrthancServer.h"
+#include "SyntheticCta.h"
+#include "vv/core/Error.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/pacs/Echo.h"
+#include "vv/pacs/Find.h"
+#include "vv/pacs/PacsError.h"
+#include "vv/pacs/Retrieve.h"
+#include "vv/pacs/Send.h"
+#include "vv/pacs/StorageScp.h"
+
+namespace fs = std::filesystem;
+using namespace vv::pacs;
+using vv::test::OrthancServer;
+
+namespace {
+
+constexpr const char* kOurAe = "VVTEST";
+constexpr int kSlices = 12;
+
+LocalAe me() {
+    return LocalAe{kOurAe, Timeouts{2, 5, 10}};
+}
+
+fs::path freshFolder(const std::string& name) {
+    // Per process: ctest runs the tests of this file in parallel processes.
+    const fs::path folder = fs::path(VV_TEST_TMP) / ("pacs-" + std::to_string(::getpid())) / name;
+    fs::remove_all(folder);
+    return folder;
+}
+
+/// The synthetic CTA series written once per process; returns its files.
+std::vector<fs::path> ctaFiles(const std::string& patientId = "VV-PACS-1") {
+    const fs::path folder = freshFolder("series-" + patientId);
+    const auto cta = vv::test::makeSyntheticCta({24, 24, kSlices}, 2, 0.0, 0.0);
+    vv::dicom::CtSeriesWriteOptions options;
+    options.patientId = patientId;
+    options.seriesDescription = "synthetic CTA";
+    vv::dicom::writeCtSeries(folder, cta.volume, options);
+    std::vector<fs::path> files;
+    for (const auto& e : fs::directory_iterator(folder)) {
+        files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+/// Stores the series into `orthanc` and returns its Study Instance UID.
+std::string load(const OrthancServer& orthanc, const std::string& patientId = "VV-PACS-1") {
+    const auto statuses = sendFiles(me(), orthanc.node(), ctaFiles(patientId));
+    EXPECT_EQ(statuses.size(), static_cast<std::size_t>(kSlices));
+    for (const SendStatus& s : statuses) {
+        EXPECT_TRUE(s.accepted) << s.file << " status " << s.status;
+    }
+    StudyQuery query;
+    query.patientId = patientId;
+    const auto studies = findStudies(me(), orthanc.node(), query);
+    EXPECT_EQ(studies.size(), 1U);
+    return studies.empty() ? std::string() : studies[0].studyInstanceUid;
+}
+
+/// Waits at most 20 s until `store` lists a study.
+std::vector<StoredStudy> waitForStudies(const LocalStore& store) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    while (store.studies().empty() && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return store.studies();
+}
+
+class PacsTest : public ::testing::Test {
+  protected:
+    static void SetUpTestSuite() {
+        scpPort_ = vv::test::freePort();
+        orthanc_ = std::make_unique<OrthancServer>(kOurAe, scpPort_);
+        studyUid_ = load(*orthanc_);
+    }
+    static void TearDownTestSuite() { orthanc_.reset(); }
+
+    static std::unique_ptr<OrthancServer> orthanc_;
+    static std::uint16_t scpPort_;
+    static std::string studyUid_;
+};
+
+std::unique_ptr<OrthancServer> PacsTest::orthanc_;
+std::uint16_t PacsTest::scpPort_ = 0;
+std::string PacsTest::studyUid_;
+
+}  // namespace
+
+TEST_F(PacsTest, EchoSucceeds) {
+    EXPECT_NO_THROW(echo(me(), orthanc_->node()));
+}
+
+TEST_F(PacsTest, WrongCalledAeTitleIsRejected) {
+    Node wrong = orthanc_->node();
+    wrong.aeTitle = "NOTORTHANC";
+    EXPECT_THROW(echo(me(), wrong), AssociationRejectedError);
+}
+
+TEST_F(PacsTest, UnknownCallingAeTitleIsRejected) {
+    const LocalAe stranger{"STRANGER", Timeouts{2, 5, 10}};
+    EXPECT_THROW(echo(stranger, orthanc_->node()), AssociationRejectedError);
+}
+
+TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
+    const Node nobody{"NOBODY", "127.0.0.1", vv::test::freePort(), {}};
+    try {
+        echo(me(), nobody);
+        FAIL() << "echo to a closed port succeeded";
+    } catch (const ConnectionRefusedError& e) {
+        EXPECT_NE(std::string(e.what()).find("NOBODY@127.0.0.1"), std::string::npos) << e.what();
+    }
+}
+
+TEST(PacsFaultTest, SilentPeerTimesOut) {
+    // A listening socket that accepts connections (the kernel's backlog) but never answers.
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::listen(fd, 4), 0);
+    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
+    const Node silent{"SILENT", "127.0.0.1", ntohs(address.sin_port), {}};
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
+    ::close(fd);
+}
+
+TEST_F(PacsTest, FindsTheStudyByItsKeys) {
+    StudyQuery byName;
+    byName.patientName = "VesselView*";
+    byName.modality = "CT";
+    byName.studyDateFrom = "19000101";
+    const auto studies = findStudies(me(), orthanc_->node(), byName);
+    ASSERT_EQ(studies.size(), 1U);
+    EXPECT_EQ(studies[0].studyInstanceUid, studyUid_);
+    EXPECT_EQ(studies[0].patientId, "VV-PACS-1");
+    EXPECT_EQ(studies[0].studyDescription, "VesselView demo");
+    EXPECT_EQ(studies[0].numberOfSeries, 1);
+
+    StudyQuery none;
+    none.patientId = "SOMEONE-ELSE";
+    EXPECT_TRUE(findStudies(me(), orthanc_->node(), none).empty());
+    StudyQuery future;
+    future.studyDateFrom = "29990101";
+    EXPECT_TRUE(findStudies(me(), orthanc_->node(), future).empty());
+}
+
+TEST_F(PacsTest, FindsTheSeriesOfTheStudy) {
+    const auto series = findSeries(me(), orthanc_->node(), SeriesQuery{studyUid_, "", ""});
+    ASSERT_EQ(series.size(), 1U);
+    EXPECT_EQ(series[0].modality, "CT");
+    EXPECT_EQ(series[0].seriesDescription, "synthetic CTA");
+    EXPECT_EQ(series[0].numberOfInstances, kSlices);
+}
+
+TEST_F(PacsTest, TooManyMatchesAreAClearError) {
+    FindLimits limits;
+    limits.maxResults = 0;
+    EXPECT_THROW(findStudies(me(), orthanc_->node(), StudyQuery{}, limits), ResponseError);
+    FindLimits shortValues;
+    shortValues.maxValueLength = 4;
+    EXPECT_THROW(findStudies(me(), orthanc_->node(), StudyQuery{}, shortValues), ResponseError);
+    // The association is still usable afterwards.
+    EXPECT_EQ(findStudies(me(), orthanc_->node(), StudyQuery{}).size(), 1U);
+}
+
+TEST_F(PacsTest, MalformedQueryKeysAreRefusedBeforeConnecting) {
+    StudyQuery bad;
+    bad.patientId = "A\\B";
+    EXPECT_THROW(findStudies(me(), orthanc_->node(), bad), vv::InvalidArgumentError);
+    StudyQuery badDate;
+    badDate.studyDateFrom = "2024-01-01";
+    EXPECT_THROW(findStudies(me(), orthanc_->node(), badDate), vv::InvalidArgumentError);
+}
+
+TEST_F(PacsTest, GetRetrievesTheStudyIntoTheStore) {
+    LocalStore store(freshFolder("get"));
+    double lastFraction = -1.0;
+    const vv::Progress progress([&](double f, std::string_view) { lastFraction = f; }, {});
+    const RetrieveResult result =
+        getInto(store, me(), orthanc_->node(), RetrieveRequest{studyUid_, ""}, progress);
+    EXPECT_EQ(result.instances, static_cast<std::size_t>(kSlices));
+    const auto studies = store.studies();
+    ASSERT_EQ(studies.size(), 1U);
+    EXPECT_EQ(studies[0].studyInstanceUid, studyUid_);
+    ASSERT_EQ(studies[0].series.size(), 1U);
+    EXPECT_EQ(studies[0].series[0].instances, kSlices);
+    EXPECT_EQ(std::distance(fs::directory_iterator(studies[0].series[0].folder),
+                            fs::directory_iterator()),
+              kSlices);
+    EXPECT_DOUBLE_EQ(lastFraction, 1.0);
+}
+
+TEST_F(PacsTest, CancelledGetLeavesNothingComplete) {
+    LocalStore store(freshFolder("cancel"));
+    std::stop_source stop;
+    const vv::Progress progress([&](double, std::string_view) { stop.request_stop(); },
+                                stop.get_token());
+    EXPECT_THROW(getInto(store, me(), orthanc_->node(), RetrieveRequest{studyUid_, ""}, progress),
+                 vv::CancelledError);
+    EXPECT_TRUE(store.studies().empty());
+    EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
+    EXPECT_NO_THROW(echo(me(), orthanc_->node())) << "the peer still answers";
+}
+
+TEST_F(PacsTest, MoveToOurListenerStoresTheStudy) {
+    LocalStore store(freshFolder("move"));
+    ListenerConfig config;
+    config.aeTitle = kOurAe;
+    config.port = scpPort_;
+    config.allowedPeers = {orthanc_->node()};
+    StorageScp listener(store, config);
+    const RetrieveResult result =
+        moveTo(kOurAe, me(), orthanc_->node(), RetrieveRequest{studyUid_, ""});
+    EXPECT_EQ(result.instances, static_cast<std::size_t>(kSlices));
+    const auto studies = waitForStudies(store);
+    ASSERT_EQ(studies.size(), 1U);
+    ASSERT_EQ(studies[0].series.size(), 1U);
+    EXPECT_EQ(studies[0].series[0].instances, kSlices);
+    EXPECT_EQ(listener.stats().committedInstances, static_cast<std::size_t>(kSlices));
+}
+
+TEST_F(PacsTest, UnknownNodePushingIsRefusedAndNothingStored) {
+    LocalStore store(freshFolder("refuse"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {orthanc_->node()};
+    StorageScp listener(store, config);
+    const Node ourListener{"VVLISTEN", "127.0.0.1", config.port, {}};
+    const LocalAe stranger{"STRANGER", Timeouts{2, 5, 10}};
+    EXPECT_THROW(sendFiles(stranger, ourListener, ctaFiles("VV-PACS-STRANGER")),
+                 AssociationRejectedError);
+    EXPECT_EQ(listener.stats().refusedAssociations, 1U);
+    EXPECT_TRUE(store.studies().empty());
+    EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
+}
+
+TEST(PacsFaultTest, OrthancKilledDuringRetrieveLeavesNothingComplete) {
+    OrthancServer orthanc(kOurAe, vv::test::freePort());
+    const std::string studyUid = load(orthanc, "VV-PACS-KILL");
+    LocalStore store(freshFolder("kill"));
+    bool killed = false;
+    const vv::Progress progress(
+        [&](double, std::string_view) {
+            if (!killed) {
+                killed = true;
+                orthanc.kill();
+            }
+        },
+        {});
+    EXPECT_THROW(getInto(store, me(), orthanc.node(), RetrieveRequest{studyUid, ""}, progress),
+                 NetworkError);
+    EXPECT_TRUE(killed);
+    EXPECT_TRUE(store.studies().empty());
+    EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
+}
+
+TEST(PacsListenerTest, AssociationOverTheSizeCapIsRefusedAndDiscarded) {
+    LocalStore store(freshFolder("cap"));
+    const auto files = ctaFiles("VV-PACS-CAP");
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
+    config.maxAssociationBytes = fs::file_size(files[0]) * 5 / 2;  // room for two instances
+    StorageScp listener(store, config);
+    const auto statuses = sendFiles(LocalAe{"SENDER", Timeouts{2, 5, 10}},
+                                    Node{"VVLISTEN", "127.0.0.1", config.port, {}}, files);
+    ASSERT_EQ(statuses.size(), files.size());
+    EXPECT_TRUE(statuses[0].accepted);
+    EXPECT_TRUE(statuses[1].accepted);
+    for (std::size_t i = 2; i < statuses.size(); ++i) {
+        EXPECT_FALSE(statuses[i].accepted) << i;
+    }
+    EXPECT_TRUE(store.studies().empty()) << "an association over the cap stores nothing";
+    EXPECT_EQ(listener.stats().discardedAssociations, 1U);
+}
+
+TEST(PacsListenerTest, KnownAeTitleFromAnotherHostIsRefused) {
+    LocalStore store(freshFolder("host"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {Node{"SENDER", "127.0.0.2", 104, {}}};  // we call from 127.0.0.1
+    StorageScp listener(store, config);
+    EXPECT_THROW(
+        sendFiles(LocalAe{"SENDER", Timeouts{2, 5, 10}},
+                  Node{"VVLISTEN", "127.0.0.1", config.port, {}}, ctaFiles("VV-PACS-HOST")),
+        AssociationRejectedError);
+    EXPECT_EQ(listener.stats().refusedAssociations, 1U);
+    EXPECT_TRUE(store.studies().empty());
+}
+
+TEST(PacsListenerTest, ListensOnTheConfiguredInterfaceOnly) {
+    LocalStore store(freshFolder("bind"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.bindAddress = "127.0.0.2";
+    config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
+    const StorageScp listener(store, config);
+    const LocalAe sender{"SENDER", Timeouts{2, 5, 10}};
+    EXPECT_NO_THROW(echo(sender, Node{"VVLISTEN", "127.0.0.2", config.port, {}}));
+    EXPECT_THROW(echo(sender, Node{"VVLISTEN", "127.0.0.1", config.port, {}}),
+                 ConnectionRefusedError);
+}
+
+TEST(PacsListenerTest, AnAddressNotOfThisHostIsAClearError) {
+    LocalStore store(freshFolder("bind-bad"));
+    ListenerConfig config;
+    config.port = vv::test::freePort();
+    config.bindAddress = "192.0.2.1";  // TEST-NET-1: not an address of this machine
+    EXPECT_THROW(StorageScp(store, config), vv::IoError);
+    config.bindAddress = "localhost";
+    EXPECT_THROW(StorageScp(store, config), vv::InvalidArgumentError);
+}
+
+TEST(PacsListenerTest, WrongCalledAeTitleIsRefused) {
+    LocalStore store(freshFolder("called"));
+    ListenerConfig config;
+    config.aeTitle = "VVLISTEN";
+    config.port = vv::test::freePort();
+    config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
+    const StorageScp listener(store, config);
+    const LocalAe sender{"SENDER", Timeouts{2, 5, 10}};
+    EXPECT_NO_THROW(echo(sender, Node{"VVLISTEN", "127.0.0.1", config.port, {}}));
+    EXPECT_THROW(echo(sender, Node{"NOTUS", "127.0.0.1", config.port, {}}),
+                 AssociationRejectedError);
+    EXPECT_EQ(listener.stats().refusedAssociations, 1U);
+}
