@@ -133,6 +133,7 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
                                const std::shared_ptr<const scene::LabelMap>& labelMap) {
     volume_ = std::move(volume);
     presetRun_.cancel();
+    presetsPending_ = false;
     pendingWindow_.reset();
     presets_.clear();
     rebuildPresetMenu();
@@ -147,6 +148,7 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
             if (slices::valueUnit(*volume_) == "HU") {
                 setWindow({300.0, 600.0});  // CTA until the presets are there
             }
+            presetsPending_ = true;
             presetRun_.start(
                 [volume = volume_](const std::stop_token& /*stop*/) {
                     return slices::windowPresets(*volume);
@@ -163,6 +165,7 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
 }
 
 void SliceWorkspace::presetsReady(const std::vector<slices::PresetWindow>& presets) {
+    presetsPending_ = false;
     presets_ = presets;
     rebuildPresetMenu();
     if (presets_.empty()) {
@@ -184,7 +187,7 @@ void SliceWorkspace::presetsReady(const std::vector<slices::PresetWindow>& prese
 
 void SliceWorkspace::showWindow(const slices::Window& window,
                                 const std::optional<slices::WindowPreset>& preset) {
-    if (presetRun_.isRunning()) {
+    if (presetsPending_) {
         pendingWindow_ = {window, preset};  // presetsReady() would replace it
     }
     setWindow(window);

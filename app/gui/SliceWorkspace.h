@@ -138,6 +138,8 @@ class SliceWorkspace : public QWidget {
     SliceLayout layout_ = SliceLayout::ThreeDAndSlices;
     std::vector<slices::PresetWindow> presets_;
     slices::Window window_;
+    /// The presets are being found on a worker (presetsReady() comes).
+    bool presetsPending_ = false;
     /// A session's window and preset applied before the presets were found.
     std::optional<std::pair<slices::Window, std::optional<slices::WindowPreset>>> pendingWindow_;
     QMenu* menu_ = nullptr;

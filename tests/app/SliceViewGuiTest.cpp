@@ -765,5 +765,35 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
         menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Fill"))->isChecked());
 }
 
+TEST_F(SliceViewGuiTest, ASessionWindowIsNotReplacedByPresetsFromTheWorker) {
+    // A big volume's presets are found on a worker; a session applied before
+    // they arrive keeps its window and checks its preset when they do.
+    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    ASSERT_GT(big->voxelCount(), SliceView::kSynchronousVoxels);
+    big->setModality("CT");
+    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
+        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));  // value = 10 k
+    }
+    workspace()->setVolume(big, nullptr);
+    ASSERT_TRUE(workspace()->presets().empty());
+    auto state = workspace()->sessionState();
+    ASSERT_TRUE(state);
+    SliceView* axial = view(SliceOrientation::Axial);
+    const slices::Window soft{40.0, 400.0};
+    state->window = soft;
+    state->preset = slices::WindowPreset::SoftTissue;
+    state->views.at(0).position = axial->stack()->position(5);  // 50 HU
+    workspace()->applySessionState(*state);
+    EXPECT_EQ(workspace()->sessionState()->preset, slices::WindowPreset::SoftTissue);
+    ASSERT_TRUE(waitUntil([&] { return !workspace()->presets().empty(); }, 30000));
+    QCoreApplication::processEvents();
+    EXPECT_DOUBLE_EQ(workspace()->window().center, soft.center);
+    EXPECT_DOUBLE_EQ(workspace()->window().width, soft.width);
+    EXPECT_EQ(workspace()->chosenPreset(), std::optional(slices::WindowPreset::SoftTissue));
+    axial->waitForSlice();
+    EXPECT_EQ(axial->shownSliceIndex(), 5);
+    EXPECT_EQ(qRed(axial->sliceImage().pixel(128, 128)), slices::windowGray(50.0F, soft));
+}
+
 }  // namespace
 }  // namespace vv::test
