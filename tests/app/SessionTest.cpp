@@ -406,14 +406,7 @@ TEST_F(SessionTest, SaveThenOpenGivesTheSameImage) {
     }
 
     // A fresh window from the defaults, then the session.
-    window_ = std::make_unique<gui::MainWindow>();
-    window_->resize(1100, 700);
-    window_->show();
-    bool applied = false;
-    QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
-                     [&applied] { applied = true; });
-    ASSERT_TRUE(window_->openSession(path));
-    ASSERT_TRUE(waitUntil([&] { return applied; }, 60000)) << "the session was never applied";
+    ASSERT_TRUE(openSessionInNewWindow(path)) << "the session was never applied";
     viewer = window_->viewer();
     EXPECT_EQ(viewer->vssSettings().scale, colormaps::DepthScale::PseudoChromadepth);
     EXPECT_DOUBLE_EQ(viewer->vssSettings().solver.p, 4.0);

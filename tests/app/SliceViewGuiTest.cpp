@@ -602,15 +602,22 @@ TEST_F(SliceViewGuiTest, MouseHelpOnlyOffTheImage) {
     QToolTip::hideText();
 }
 
+/// A CT just above the size resliced at once: 256 x 256 x 130 voxels, the
+/// value of slice k = 10 k HU.
+std::shared_ptr<scene::Volume> bigCtVolume() {
+    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    big->setModality("CT");
+    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
+        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));
+    }
+    return big;
+}
+
 TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
     // Just above the size resliced at once: a new slice is not there when
     // setSliceIndex returns (the GUI thread goes on), and arrives later.
-    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    const auto big = bigCtVolume();
     ASSERT_GT(big->voxelCount(), SliceView::kSynchronousVoxels);
-    big->setModality("CT");
-    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
-        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));  // value = 10 k
-    }
     SliceView view(SliceOrientation::Axial);
     view.resize(300, 300);
     view.setWindow({0.0, 4000.0});
@@ -687,19 +694,9 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
 
     // A fresh window (3-D and three slices, both overlay styles), then the session.
     workspace()->setSliceLayout(SliceLayout::ThreeDAndSlices);
-    const auto reopen = [&](const QString& session) {
-        window_ = std::make_unique<gui::MainWindow>();
-        window_->resize(1100, 700);
-        window_->show();
-        bool applied = false;
-        QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
-                         [&applied] { applied = true; });
-        ASSERT_TRUE(window_->openSession(session));
-        ASSERT_TRUE(waitUntil([&] { return applied; }, 60000)) << "the session was never applied";
-        ASSERT_NE(window_->volume(), nullptr);
-        QCoreApplication::processEvents();
-    };
-    reopen(path);
+    ASSERT_TRUE(openSessionInNewWindow(path)) << "the session was never applied";
+    ASSERT_NE(window_->volume(), nullptr);
+    QCoreApplication::processEvents();
     EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::AxialLarge);
     EXPECT_TRUE(view(SliceOrientation::Axial)->isVisible());
     EXPECT_FALSE(view(SliceOrientation::Coronal)->isVisible());
@@ -750,7 +747,8 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
     out.write(QJsonDocument(root).toJson());
     out.close();
     workspace()->setSliceLayout(SliceLayout::ThreeDAndSlices);  // the remembered layout
-    reopen(old);
+    ASSERT_TRUE(openSessionInNewWindow(old)) << "the session was never applied";
+    ASSERT_NE(window_->volume(), nullptr);
     EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::ThreeDAndSlices);
     EXPECT_FALSE(workspace()->cursor()->point().has_value());
     EXPECT_EQ(workspace()->chosenPreset(), std::optional(firstPreset));
@@ -768,12 +766,8 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
 TEST_F(SliceViewGuiTest, ASessionWindowIsNotReplacedByPresetsFromTheWorker) {
     // A big volume's presets are found on a worker; a session applied before
     // they arrive keeps its window and checks its preset when they do.
-    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    const auto big = bigCtVolume();
     ASSERT_GT(big->voxelCount(), SliceView::kSynchronousVoxels);
-    big->setModality("CT");
-    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
-        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));  // value = 10 k
-    }
     workspace()->setVolume(big, nullptr);
     ASSERT_TRUE(workspace()->presets().empty());
     auto state = workspace()->sessionState();
