@@ -139,6 +139,9 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
     if (s.dicom) {
         root.insert(QStringLiteral("dicom"), dicomToJson(*s.dicom));
     }
+    if (s.slices) {
+        root.insert(QStringLiteral("slices"), detail::slicesToJson(*s.slices));
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -184,6 +187,9 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
     }
     if (const QJsonValue dicom = root.value(QLatin1String("dicom")); !dicom.isUndefined()) {
         s.dicom = readDicom(r, dicom);
+    }
+    if (const QJsonValue slices = root.value(QLatin1String("slices")); !slices.isUndefined()) {
+        s.slices = detail::readSlices(r, slices);
     }
     return s;
 }

@@ -3,6 +3,7 @@
 
 #include <QByteArray>
 #include <QStringList>
+#include <array>
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
@@ -13,6 +14,7 @@
 #include "vv/render/Camera.h"
 #include "vv/scene/Mesh.h"
 #include "vv/segmentation/SceneSource.h"
+#include "vv/slices/WindowLevel.h"
 
 namespace vv::app {
 
@@ -41,6 +43,12 @@ namespace vv::app {
 ///                                "array": null | "" | name } ] },
 ///                 "background": [r, g, b], "legends": true },
 ///       "dicom": { "series", "components", "triangles", ... },   // optional
+///       "slices": { "layout": "3d+slices",                       // optional
+///                   "window": { "width", "level", "preset": "cta" },
+///                   "overlay": { "fill": true, "outline": true },
+///                   "axial": { "position": mm, "zoom", "pan": [right, down] },
+///                   "coronal": { ... }, "sagittal": { ... },
+///                   "cursor": [x, y, z] },                      // optional
 ///       "layout": "<base64 QMainWindow::saveState>" }            // optional
 ///
 /// The keys below "view" are the settings' keys (SettingsSchema.h), which
@@ -50,6 +58,39 @@ namespace vv::app {
 /// "version" key; the display settings as one flat "settings" object with
 /// the settings' QSettings keys); migrateSession() converts it. A new
 /// version adds one step to that chain, so old files keep loading.
+/// The layouts of the slice views by their names in sessions and QSettings,
+/// in the order of gui::SliceLayout: the 3-D view alone, 3-D and three
+/// slices, one large axial, coronal or sagittal slice.
+inline constexpr std::array<const char*, 5> kSliceLayoutNames{"3d", "3d+slices", "axial", "coronal",
+                                                              "sagittal"};
+/// The zoom range of a slice view (1 = the slice fits the view).
+inline constexpr double kMinSliceZoom = 0.25;
+inline constexpr double kMaxSliceZoom = 32.0;
+
+/// One slice view in a session. Positions are in mm, not slice numbers, so
+/// that they survive a different grid (the nearest slice is shown).
+struct SliceViewState {
+    double position = 0.0;  ///< slice position, mm along the view's world axis
+    double zoom = 1.0;      ///< [kMinSliceZoom, kMaxSliceZoom]
+    /// Where the slice's centre lies from the view's centre, mm along the
+    /// view's right and down (0, 0: centred).
+    glm::dvec2 pan{0.0};
+};
+
+/// The slice views of a scene from a volume (the "slices" object): what the
+/// radiologist saw, so that reopening the session shows the same picture.
+struct SliceSessionState {
+    std::size_t layout = 1;  ///< index into kSliceLayoutNames
+    slices::Window window;   ///< shared by the three views
+    /// The window preset chosen in View > Slices > Window (nullopt: none, e.g.
+    /// after a drag); stored by presetKey().
+    std::optional<slices::WindowPreset> preset;
+    bool fill = true;                     ///< the segmentation as a translucent fill
+    bool outline = true;                  ///< and / or its outline
+    std::array<SliceViewState, 3> views;  ///< axial, coronal, sagittal
+    std::optional<glm::dvec3> cursor;     ///< the linked cursor, LPS mm
+};
+
 struct Session : DisplaySettings {
     QStringList files;  ///< absolute paths once loaded
     glm::vec3 cameraTarget{0.0F};
@@ -63,6 +104,10 @@ struct Session : DisplaySettings {
     /// (range, keepComponents, seed, removeBone) and surface.targetTriangles
     /// are stored. Absent for meshes (and in older sessions).
     std::optional<segmentation::SceneSourceOptions> dicom;
+    /// The slice views (scenes from a volume); absent for meshes and in
+    /// older sessions, which open with the slice views' defaults. The
+    /// command line renders the 3-D view and ignores it (it is still checked).
+    std::optional<SliceSessionState> slices;
 };
 
 /// The version saveSession() writes.

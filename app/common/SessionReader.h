@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "common/DisplaySettings.h"
+#include "common/Session.h"
 #include "common/SettingsSchema.h"
 
 namespace vv::app::detail {
@@ -80,6 +81,12 @@ void insertSetting(QJsonObject& view, const Setting& setting, const QJsonValue& 
 
 /// Reads the "view" object `view` into `settings` (which holds the defaults).
 void readView(const SessionReader& reader, const QJsonObject& view, DisplaySettings& settings);
+
+/// The "slices" object of `state` (SessionSlices.cpp).
+[[nodiscard]] QJsonObject slicesToJson(const SliceSessionState& state);
+
+/// Reads the "slices" object `value`; fails naming the field ("slices.axial.zoom").
+[[nodiscard]] SliceSessionState readSlices(const SessionReader& reader, const QJsonValue& value);
 
 /// Brings `root` (any supported version) to the current version, one step at a time.
 [[nodiscard]] QJsonObject migrateSession(QJsonObject root, const SessionReader& reader);

@@ -22,6 +22,7 @@
 #include <QSettings>
 #include <QStackedWidget>
 #include <QStatusBar>
+#include <QTimer>
 #include <QToolBar>
 #include <QUrl>
 #include <cmath>
@@ -171,6 +172,12 @@ void MainWindow::connectDocument() {
         applySession(*viewer_, session);
         if (!session.layout.isEmpty()) {
             restoreState(session.layout, kLayoutVersion);
+        }
+        if (session.slices) {
+            // The volume follows the scene: the slice views once it is there
+            // (before sessionApplied, which is queued after this).
+            QTimer::singleShot(
+                0, slices_, [this, state = *session.slices] { slices_->applySessionState(state); });
         }
     });
     connect(document_, &DocumentController::sceneShown, this, &MainWindow::sceneWasShown);
@@ -606,6 +613,7 @@ void MainWindow::updateExportActions() {
 bool MainWindow::saveSessionTo(const QString& path) {
     Session view = captureSession(*viewer_, {});
     view.layout = saveState(kLayoutVersion);
+    view.slices = slices_->sessionState();
     if (!document_->saveSession(path, std::move(view), segmentationPanel_->segmentationOptions(),
                                 segmentationPanel_->surfaceOptions())) {
         return false;

@@ -17,6 +17,7 @@
 #include <cstring>
 #include <utility>
 
+#include "common/Session.h"
 #include "gui/SliceTexts.h"
 #include "vv/core/Error.h"
 #include "vv/slices/OrientationLetters.h"
@@ -28,8 +29,6 @@ namespace vv::gui {
 namespace {
 
 constexpr double kClickSlack = 4.0;  // px a click may move
-constexpr double kMinZoom = 0.25;
-constexpr double kMaxZoom = 32.0;
 constexpr int kTextMargin = 6;
 
 // The values and labels of `plane` (on the calling thread).
@@ -106,7 +105,7 @@ void SliceView::setVolume(std::shared_ptr<const scene::Volume> volume) {
     readout_.clear();
     crosshair_.reset();
     zoom_ = 1.0;
-    pan_ = {};
+    pan_ = glm::dvec2(0.0);
     if (volume_ && !volume_->empty()) {
         try {
             stack_ = slices::sliceStack(*volume_, orientation_);
@@ -154,6 +153,12 @@ void SliceView::setSliceIndex(int index) {
 void SliceView::showSliceThrough(const glm::dvec3& world) {
     if (stack_) {
         setSliceIndex(stack_->nearestIndex(world[stack_->axis]));
+    }
+}
+
+void SliceView::setSlicePosition(double mm) {
+    if (stack_) {
+        setSliceIndex(stack_->nearestIndex(mm));
     }
 }
 
@@ -225,12 +230,23 @@ QRectF SliceView::imageRect() const {
                                 height() / static_cast<double>(image_.height()));
     const double scale = fit * zoom_;
     const QSizeF size(image_.width() * scale, image_.height() * scale);
-    const QPointF centre = QPointF(width() / 2.0, height() / 2.0) + pan_;
+    const double perMm = scale / stack_->plane.pixelSpacing;
+    const QPointF centre = QPointF(width() / 2.0 + pan_.x * perMm, height() / 2.0 + pan_.y * perMm);
     return {centre - QPointF(size.width() / 2.0, size.height() / 2.0), size};
 }
 
+double SliceView::pixelsPerMm() const {
+    const QRectF rect = imageRect();
+    return rect.isEmpty() ? 0.0 : rect.width() / (image_.width() * stack_->plane.pixelSpacing);
+}
+
 void SliceView::setZoom(double zoom) {
-    zoom_ = std::clamp(zoom, kMinZoom, kMaxZoom);
+    zoom_ = std::clamp(zoom, app::kMinSliceZoom, app::kMaxSliceZoom);
+    update();
+}
+
+void SliceView::setPan(const glm::dvec2& mm) {
+    pan_ = mm;
     update();
 }
 
@@ -409,8 +425,12 @@ void SliceView::mouseMoveEvent(QMouseEvent* event) {
         dragged_ = dragged_ || std::hypot(moved.x(), moved.y()) > kClickSlack;
         if (dragged_) {
             if (dragPans_) {
-                pan_ += at - lastAt_;
-                update();
+                // The pan is kept in mm (pixelsPerMm() is 0 before a slice is shown).
+                if (const double perMm = pixelsPerMm(); perMm > 0.0) {
+                    const QPointF step = at - lastAt_;
+                    pan_ += glm::dvec2(step.x(), step.y()) / perMm;
+                    update();
+                }
             } else if (dragButton_ == Qt::LeftButton) {
                 window_ = slices::dragWindow(pressWindow_, moved.x(), moved.y(), valueSpan_);
                 compose();
@@ -439,7 +459,7 @@ void SliceView::mouseReleaseEvent(QMouseEvent* event) {
 
 void SliceView::mouseDoubleClickEvent(QMouseEvent* event) {
     zoom_ = 1.0;
-    pan_ = {};
+    pan_ = glm::dvec2(0.0);
     update();
     event->accept();
 }

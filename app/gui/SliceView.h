@@ -62,6 +62,8 @@ class SliceView : public QWidget {
     void setSliceIndex(int index);
     /// Shows the slice nearest to the world point's slice position.
     void showSliceThrough(const glm::dvec3& world);
+    /// Shows the slice nearest to slice position `mm` (clamped to the stack).
+    void setSlicePosition(double mm);
     /// The slice position of the shown slice (mm along the view's world axis).
     [[nodiscard]] double slicePosition() const noexcept;
     [[nodiscard]] const std::optional<slices::SliceStack>& stack() const noexcept { return stack_; }
@@ -82,9 +84,15 @@ class SliceView : public QWidget {
     /// Blocks until a pending reslice has finished and is shown (tests).
     void waitForSlice();
 
-    /// Zoom factor over the fitted size (1 = the slice fits the view).
+    /// Zoom factor over the fitted size (1 = the slice fits the view),
+    /// clamped to [app::kMinSliceZoom, app::kMaxSliceZoom].
     [[nodiscard]] double zoom() const noexcept { return zoom_; }
     void setZoom(double zoom);
+    /// Where the slice's centre lies from the view's centre, in mm along the
+    /// view's right and down (0, 0: centred; kept in mm, so that it stays on
+    /// the same anatomy when the view is resized).
+    [[nodiscard]] glm::dvec2 pan() const noexcept { return pan_; }
+    void setPan(const glm::dvec2& mm);
     /// The world point (LPS mm) under widget position `position`, on the
     /// shown slice's plane; nullopt without a slice.
     [[nodiscard]] std::optional<glm::dvec3> worldAt(const QPointF& position) const;
@@ -132,6 +140,8 @@ class SliceView : public QWidget {
     void compose();
     /// The widget rectangle the slice image is drawn into.
     [[nodiscard]] QRectF imageRect() const;
+    /// Widget pixels per mm on the slice as drawn (0 without a slice).
+    [[nodiscard]] double pixelsPerMm() const;
     void paintTexts(class QPainter& painter) const;
     void paintCrosshair(class QPainter& painter) const;
 
@@ -150,7 +160,7 @@ class SliceView : public QWidget {
     QString readout_;
     std::optional<glm::dvec3> crosshair_;
     double zoom_ = 1.0;
-    QPointF pan_;
+    glm::dvec2 pan_{0.0};  // mm
     // Mouse drag state.
     Qt::MouseButton dragButton_ = Qt::NoButton;
     bool dragPans_ = false;

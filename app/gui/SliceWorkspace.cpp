@@ -19,14 +19,12 @@ namespace vv::gui {
 
 namespace {
 
-// The layouts by their QSettings names, in SliceLayout's order.
-constexpr std::array<const char*, 5> kLayoutNames{"3d", "3d+slices", "axial", "coronal",
-                                                  "sagittal"};
+using app::kSliceLayoutNames;
 
 SliceLayout storedLayout() {
     const QString name = QSettings().value(QLatin1String(SliceWorkspace::kLayoutKey)).toString();
-    for (std::size_t n = 0; n < kLayoutNames.size(); ++n) {
-        if (name == QLatin1String(kLayoutNames.at(n))) {
+    for (std::size_t n = 0; n < kSliceLayoutNames.size(); ++n) {
+        if (name == QLatin1String(kSliceLayoutNames.at(n))) {
             return static_cast<SliceLayout>(n);
         }
     }
@@ -135,6 +133,8 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
                                const std::shared_ptr<const scene::LabelMap>& labelMap) {
     volume_ = std::move(volume);
     presetRun_.cancel();
+    presetsPending_ = false;
+    pendingWindow_.reset();
     presets_.clear();
     rebuildPresetMenu();
     for (SliceView* view : views_) {
@@ -148,6 +148,7 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
             if (slices::valueUnit(*volume_) == "HU") {
                 setWindow({300.0, 600.0});  // CTA until the presets are there
             }
+            presetsPending_ = true;
             presetRun_.start(
                 [volume = volume_](const std::stop_token& /*stop*/) {
                     return slices::windowPresets(*volume);
@@ -164,6 +165,7 @@ void SliceWorkspace::setVolume(std::shared_ptr<const scene::Volume> volume,
 }
 
 void SliceWorkspace::presetsReady(const std::vector<slices::PresetWindow>& presets) {
+    presetsPending_ = false;
     presets_ = presets;
     rebuildPresetMenu();
     if (presets_.empty()) {
@@ -176,7 +178,71 @@ void SliceWorkspace::presetsReady(const std::vector<slices::PresetWindow>& prese
     for (SliceView* view : views_) {
         view->setValueSpan(full != presets_.end() ? full->window.width : 1.0);
     }
+    if (const auto pending = std::exchange(pendingWindow_, std::nullopt)) {
+        showWindow(pending->first, pending->second);
+        return;
+    }
     setWindow(presets_.front().window);
+}
+
+void SliceWorkspace::showWindow(const slices::Window& window,
+                                const std::optional<slices::WindowPreset>& preset) {
+    if (presetsPending_) {
+        pendingWindow_ = {window, preset};  // presetsReady() would replace it
+    }
+    setWindow(window);
+    const auto actions = presetGroup_->actions();
+    for (std::size_t n = 0; n < presets_.size() && n < static_cast<std::size_t>(actions.size());
+         ++n) {
+        actions.at(static_cast<qsizetype>(n))->setChecked(preset == presets_[n].preset);
+    }
+}
+
+std::optional<slices::WindowPreset> SliceWorkspace::chosenPreset() const {
+    const auto actions = presetGroup_->actions();
+    for (std::size_t n = 0; n < presets_.size() && n < static_cast<std::size_t>(actions.size());
+         ++n) {
+        const slices::Window& w = presets_[n].window;
+        if (actions.at(static_cast<qsizetype>(n))->isChecked() && w.center == window_.center &&
+            w.width == window_.width) {
+            return presets_[n].preset;
+        }
+    }
+    return std::nullopt;
+}
+
+std::optional<app::SliceSessionState> SliceWorkspace::sessionState() const {
+    if (!volume_) {
+        return std::nullopt;
+    }
+    app::SliceSessionState state;
+    state.layout = static_cast<std::size_t>(layout_);
+    state.window = window_;
+    state.preset = pendingWindow_ ? pendingWindow_->second : chosenPreset();
+    state.fill = fillAction_->isChecked();
+    state.outline = outlineAction_->isChecked();
+    for (std::size_t n = 0; n < views_.size(); ++n) {
+        state.views.at(n) = {views_[n]->slicePosition(), views_[n]->zoom(), views_[n]->pan()};
+    }
+    state.cursor = cursor_->point();
+    return state;
+}
+
+void SliceWorkspace::applySessionState(const app::SliceSessionState& state) {
+    setSliceLayout(static_cast<SliceLayout>(std::min<std::size_t>(state.layout, 4)));
+    if (!volume_) {
+        return;
+    }
+    showWindow(state.window, state.preset);
+    fillAction_->setChecked(state.fill);
+    outlineAction_->setChecked(state.outline);
+    cursor_->setPoint(state.cursor);  // moves the slices through it
+    for (std::size_t n = 0; n < views_.size(); ++n) {
+        const app::SliceViewState& v = state.views.at(n);
+        views_[n]->setSlicePosition(v.position);
+        views_[n]->setZoom(v.zoom);
+        views_[n]->setPan(v.pan);
+    }
 }
 
 void SliceWorkspace::setLabelMap(const std::shared_ptr<const scene::LabelMap>& labelMap) {
@@ -188,7 +254,7 @@ void SliceWorkspace::setLabelMap(const std::shared_ptr<const scene::LabelMap>& l
 void SliceWorkspace::setSliceLayout(SliceLayout layout) {
     layout_ = layout;
     QSettings().setValue(QLatin1String(kLayoutKey),
-                         QLatin1String(kLayoutNames.at(static_cast<std::size_t>(layout))));
+                         QLatin1String(kSliceLayoutNames.at(static_cast<std::size_t>(layout))));
     for (QAction* action : layoutGroup_->actions()) {
         action->setChecked(action->data().toInt() == static_cast<int>(layout));
     }

@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "common/Session.h"
 #include "gui/WorkerRun.h"
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Volume.h"
@@ -29,7 +30,7 @@ class SliceCursor;
 class SliceView;
 class ViewerWidget;
 
-/// How the window's central area is divided.
+/// How the window's central area is divided (in app::kSliceLayoutNames' order).
 enum class SliceLayout : std::uint8_t {
     ThreeDOnly,       ///< the 3-D view alone
     ThreeDAndSlices,  ///< 3-D, axial / coronal / sagittal in a 2 x 2 grid
@@ -94,6 +95,20 @@ class SliceWorkspace : public QWidget {
     void applyPreset(std::size_t index);
     void setWindow(const slices::Window& window);
     [[nodiscard]] const slices::Window& window() const noexcept { return window_; }
+    /// The preset checked in the menu while the window is still its window
+    /// (nullopt after a drag or without presets).
+    [[nodiscard]] std::optional<slices::WindowPreset> chosenPreset() const;
+
+    /// What a session keeps: layout, window and preset, overlay style, each
+    /// view's slice position, zoom and pan, the cursor. Nullopt without a
+    /// volume (mesh scenes have no slice state).
+    [[nodiscard]] std::optional<app::SliceSessionState> sessionState() const;
+    /// Shows `state` on the current volume: the layout, the window (its
+    /// preset checked when the volume offers it; it stays when the presets
+    /// are still being found), the overlay style, the cursor, then each
+    /// view's nearest slice to its position, zoom and pan. Without a volume
+    /// only the layout applies.
+    void applySessionState(const app::SliceSessionState& state);
 
   signals:
     /// The layout on screen changed.
@@ -104,8 +119,12 @@ class SliceWorkspace : public QWidget {
     void sliceClicked(const glm::dvec3& world);
 
   private:
-    /// The volume's window presets arrived: the first applies.
+    /// The volume's window presets arrived: the first applies (or the
+    /// session's window waiting for them).
     void presetsReady(const std::vector<slices::PresetWindow>& presets);
+    /// Shows `window` and checks `preset`'s menu entry (none: no entry).
+    void showWindow(const slices::Window& window,
+                    const std::optional<slices::WindowPreset>& preset);
     void buildMenu();
     void rebuildPresetMenu();
     void applyLayout();
@@ -119,6 +138,10 @@ class SliceWorkspace : public QWidget {
     SliceLayout layout_ = SliceLayout::ThreeDAndSlices;
     std::vector<slices::PresetWindow> presets_;
     slices::Window window_;
+    /// The presets are being found on a worker (presetsReady() comes).
+    bool presetsPending_ = false;
+    /// A session's window and preset applied before the presets were found.
+    std::optional<std::pair<slices::Window, std::optional<slices::WindowPreset>>> pendingWindow_;
     QMenu* menu_ = nullptr;
     QMenu* presetMenu_ = nullptr;
     QActionGroup* layoutGroup_ = nullptr;

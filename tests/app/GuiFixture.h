@@ -134,6 +134,18 @@ class GuiFixture : public ::testing::Test {
         QCoreApplication::processEvents();
     }
 
+    /// Replaces the window with a fresh one (the defaults) and opens the
+    /// session `path` in it; true once the session was applied.
+    [[nodiscard]] bool openSessionInNewWindow(const QString& path) {
+        window_ = std::make_unique<gui::MainWindow>();
+        window_->resize(1100, 700);
+        window_->show();
+        bool applied = false;
+        QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
+                         [&applied] { applied = true; });
+        return window_->openSession(path) && waitUntil([&] { return applied; }, 60000);
+    }
+
     /// Waits for `frames` frames with the current scene; false (and a test
     /// failure) when OpenGL is missing or they do not come.
     [[nodiscard]] bool waitForFrames(quint64 frames = 1) const {

@@ -174,6 +174,32 @@ TEST(SessionRender, BadValuesExitThreeNamingTheSessionAndTheField) {
     EXPECT_FALSE(fs::exists(dir() / "never.out"));
 }
 
+TEST(SessionRender, TheSliceStateIsCheckedAndOtherwiseIgnored) {
+    // A session saved from a DICOM scene keeps its slice views; the command
+    // line renders the 3-D view, the same as without them.
+    app::Session withSlices = treeSession();
+    app::SliceSessionState state;
+    state.layout = 2;  // "axial"
+    state.window = {40.0, 400.0};
+    state.preset = slices::WindowPreset::SoftTissue;
+    state.views.at(0) = {12.5, 3.0, {5.0, -2.0}};
+    state.cursor = glm::dvec3(1.0, 2.0, 3.0);
+    withSlices.slices = state;
+    const fs::path session = save("slices.vvs", withSlices);
+    const auto a = render(save("no-slices.vvs", treeSession()), dir() / "no-slices.png");
+    ASSERT_EQ(a.code, cli::kOk) << a.err;
+    const auto b = render(session, dir() / "slices.png");
+    ASSERT_EQ(b.code, cli::kOk) << b.err;
+    EXPECT_EQ(readAll(dir() / "slices.png"), readAll(dir() / "no-slices.png"));
+    // A bad slice value is refused as any other field.
+    const fs::path bad = edited(session, "bad-slices.vvs", "\"zoom\": 3", "\"zoom\": -3");
+    const auto c = render(bad, dir() / "never.png");
+    EXPECT_EQ(c.code, cli::kInvalidInput) << c.err;
+    EXPECT_NE(c.err.find("bad-slices.vvs"), std::string::npos) << c.err;
+    EXPECT_NE(c.err.find("'slices.axial.zoom'"), std::string::npos) << c.err;
+    EXPECT_FALSE(fs::exists(dir() / "never.png"));
+}
+
 TEST(SessionRender, SessionsDoNotMixWithOtherInputs) {
     const fs::path session = save("plain.vvs", treeSession());
     const std::string out = (dir() / "x.png").string();

@@ -188,6 +188,89 @@ TEST(SessionFile, TheDicomSourceRoundTripsAndIsChecked) {
     EXPECT_NE(errorFor("dicom-threshold.vvs", bad).find("dicom.threshold"), std::string::npos);
 }
 
+/// Slice views unlike the defaults: one large coronal slice, the bone
+/// preset, outline only, moved, zoomed and panned views, a cursor.
+app::SliceSessionState sampleSlices() {
+    app::SliceSessionState s;
+    s.layout = 3;  // "coronal"
+    s.window = {400.0, 1800.0};
+    s.preset = slices::WindowPreset::Bone;
+    s.fill = false;
+    s.outline = true;
+    s.views = {app::SliceViewState{-12.5, 2.0, {4.25, -3.0}},
+               app::SliceViewState{7.0, 0.5, {0.0, 1.5}},
+               app::SliceViewState{30.75, 31.0, {-100.0, 0.0}}};
+    s.cursor = glm::dvec3(-20.5, 14.0, 33.25);
+    return s;
+}
+
+TEST(SessionFile, TheSliceStateRoundTripsAndIsChecked) {
+    gui::Session s = sampleSession();
+    // Mesh sessions (and older ones) have none.
+    EXPECT_FALSE(gui::sessionToJson(s, sessionDir() / "x.vvs").contains("\"slices\""));
+    s.slices = sampleSlices();
+    const QByteArray json = gui::sessionToJson(s, sessionDir() / "slices.vvs");
+    EXPECT_TRUE(json.contains("\"version\": 1")) << "an optional object needs no new version";
+    const gui::Session back = gui::sessionFromJson(json, sessionDir() / "slices.vvs");
+    expectSame(back, s);
+    ASSERT_TRUE(back.slices.has_value());
+    const app::SliceSessionState& a = *back.slices;
+    const app::SliceSessionState b = sampleSlices();
+    EXPECT_EQ(a.layout, b.layout);
+    EXPECT_DOUBLE_EQ(a.window.center, b.window.center);
+    EXPECT_DOUBLE_EQ(a.window.width, b.window.width);
+    EXPECT_EQ(a.preset, b.preset);
+    EXPECT_EQ(a.fill, b.fill);
+    EXPECT_EQ(a.outline, b.outline);
+    for (std::size_t n = 0; n < 3; ++n) {
+        EXPECT_DOUBLE_EQ(a.views.at(n).position, b.views.at(n).position) << n;
+        EXPECT_DOUBLE_EQ(a.views.at(n).zoom, b.views.at(n).zoom) << n;
+        EXPECT_EQ(a.views.at(n).pan, b.views.at(n).pan) << n;
+    }
+    EXPECT_EQ(a.cursor, b.cursor);
+    // No preset (a dragged window) and no cursor stay absent.
+    gui::Session none = s;
+    none.slices->preset.reset();
+    none.slices->cursor.reset();
+    const gui::Session noneBack = gui::sessionFromJson(
+        gui::sessionToJson(none, sessionDir() / "none.vvs"), sessionDir() / "none.vvs");
+    ASSERT_TRUE(noneBack.slices.has_value());
+    EXPECT_FALSE(noneBack.slices->preset.has_value());
+    EXPECT_FALSE(noneBack.slices->cursor.has_value());
+
+    // Bad values are refused naming the field.
+    struct Case {
+        const char* name;
+        QByteArray from;
+        QByteArray to;
+        const char* field;
+    };
+    const Case cases[] = {
+        {"slices-layout.vvs", "\"coronal\",", "\"quad\",", "slices.layout"},
+        {"slices-width.vvs", "\"width\": 1800", "\"width\": 0", "slices.window.width"},
+        {"slices-level.vvs", "\"level\": 400", "\"level\": \"NaN\"", "slices.window.level"},
+        {"slices-preset.vvs", "\"bone\"", "\"lung\"", "slices.window.preset"},
+        {"slices-fill.vvs", "\"fill\": false", "\"fill\": 0", "slices.overlay.fill"},
+        {"slices-zoom.vvs", "\"zoom\": 31", "\"zoom\": 100", "slices.sagittal.zoom"},
+        {"slices-position.vvs", "\"position\": -12.5", "\"position\": null",
+         "slices.axial.position"},
+        {"slices-pan.vvs", "4.25", "\"left\"", "slices.axial.pan[0]"},
+        {"slices-cursor.vvs", "-20.5", "1e300", "slices.cursor[0]"},
+    };
+    for (const Case& c : cases) {
+        QByteArray bad = json;
+        ASSERT_EQ(bad.count(c.from), 1) << c.name << ": " << json.toStdString();
+        bad.replace(c.from, c.to);
+        const std::string error = errorFor(c.name, bad);
+        EXPECT_NE(error.find(std::string("'") + c.field + "'"), std::string::npos)
+            << c.name << ": " << error;
+    }
+    QByteArray missing = json;
+    missing.replace("\"outline\": true", "\"outlined\": true");
+    EXPECT_NE(errorFor("slices-missing.vvs", missing).find("'slices.overlay.outline' is missing"),
+              std::string::npos);
+}
+
 TEST(SessionFile, RelativeFilesResolveAgainstTheSessionFolder) {
     QByteArray json = sampleWith("\"/data/a.vtp\"", "\"meshes/a.vtp\"");
     const gui::Session s = gui::sessionFromJson(json, sessionDir() / "rel.vvs");
@@ -315,16 +398,15 @@ TEST_F(SessionTest, SaveThenOpenGivesTheSameImage) {
     const QString path = QString::fromStdString((sessionDir() / "view.vvs").string());
     ASSERT_TRUE(window_->saveSessionTo(path));
     ASSERT_EQ(window_->shownFiles().size(), 1);
+    {
+        // A mesh scene has no slice views, so its session keeps none.
+        QFile saved(path);
+        ASSERT_TRUE(saved.open(QIODevice::ReadOnly));
+        EXPECT_FALSE(saved.readAll().contains("\"slices\""));
+    }
 
     // A fresh window from the defaults, then the session.
-    window_ = std::make_unique<gui::MainWindow>();
-    window_->resize(1100, 700);
-    window_->show();
-    bool applied = false;
-    QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
-                     [&applied] { applied = true; });
-    ASSERT_TRUE(window_->openSession(path));
-    ASSERT_TRUE(waitUntil([&] { return applied; }, 60000)) << "the session was never applied";
+    ASSERT_TRUE(openSessionInNewWindow(path)) << "the session was never applied";
     viewer = window_->viewer();
     EXPECT_EQ(viewer->vssSettings().scale, colormaps::DepthScale::PseudoChromadepth);
     EXPECT_DOUBLE_EQ(viewer->vssSettings().solver.p, 4.0);

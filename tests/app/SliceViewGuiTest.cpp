@@ -9,7 +9,10 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QDoubleSpinBox>
+#include <QFile>
 #include <QHelpEvent>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -20,6 +23,8 @@
 #include <QSettings>
 #include <QToolTip>
 #include <QWheelEvent>
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <filesystem>
 #include <memory>
@@ -597,15 +602,22 @@ TEST_F(SliceViewGuiTest, MouseHelpOnlyOffTheImage) {
     QToolTip::hideText();
 }
 
+/// A CT just above the size resliced at once: 256 x 256 x 130 voxels, the
+/// value of slice k = 10 k HU.
+std::shared_ptr<scene::Volume> bigCtVolume() {
+    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    big->setModality("CT");
+    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
+        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));
+    }
+    return big;
+}
+
 TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
     // Just above the size resliced at once: a new slice is not there when
     // setSliceIndex returns (the GUI thread goes on), and arrives later.
-    auto big = std::make_shared<scene::Volume>(glm::ivec3(256, 256, 130), scene::VoxelType::Int16);
+    const auto big = bigCtVolume();
     ASSERT_GT(big->voxelCount(), SliceView::kSynchronousVoxels);
-    big->setModality("CT");
-    for (std::size_t n = 0; n < big->voxelCount(); ++n) {
-        big->setValueAt(n, static_cast<float>(n / (256U * 256U) * 10U));  // value = 10 k
-    }
     SliceView view(SliceOrientation::Axial);
     view.resize(300, 300);
     view.setWindow({0.0, 4000.0});
@@ -625,6 +637,156 @@ TEST_F(SliceViewGuiTest, BigVolumesAreReslicedOnAWorker) {
     ASSERT_TRUE(waitUntil([&] { return !workspace()->presets().empty(); }, 30000));
     EXPECT_EQ(workspace()->presets().front().preset, slices::WindowPreset::Cta);
     EXPECT_DOUBLE_EQ(workspace()->presets().back().window.width, 1290.0);  // 0 .. 1290 HU
+}
+
+/// The slice views' state as a person sees it: each view's position line
+/// and slice image, the axial view as drawn (no hover read-out).
+struct ShownSlices {
+    std::array<QString, 3> positions;
+    std::array<QImage, 3> images;
+    QImage axialShown;
+};
+
+TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
+    openSeries();
+    SliceView* axial = view(SliceOrientation::Axial);
+    std::array<SliceView*, 3> views{axial, view(SliceOrientation::Coronal),
+                                    view(SliceOrientation::Sagittal)};
+    // Slice views unlike a new volume's: one large axial slice, the bone
+    // window, the outline only, a cursor, moved slices, the axial view zoomed
+    // and panned.
+    workspace()->setSliceLayout(SliceLayout::AxialLarge);
+    const auto& presets = workspace()->presets();
+    const auto bone = std::find_if(presets.begin(), presets.end(), [](const auto& p) {
+        return p.preset == slices::WindowPreset::Bone;
+    });
+    ASSERT_NE(bone, presets.end());
+    const slices::WindowPreset firstPreset = presets.front().preset;  // a new volume's
+    workspace()->applyPreset(static_cast<std::size_t>(bone - presets.begin()));
+    menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Fill"))->trigger();
+    QCoreApplication::processEvents();
+    const auto cursor = axial->worldAt(QPointF(axial->width() * 0.45, axial->height() * 0.55));
+    ASSERT_TRUE(cursor);
+    workspace()->cursor()->setPoint(*cursor);
+    axial->setSliceIndex(axial->sliceIndex() - 5);
+    views[1]->setSliceIndex(views[1]->sliceCount() / 4);
+    views[2]->setSliceIndex(views[2]->sliceCount() * 3 / 4);
+    axial->setZoom(2.5);
+    axial->setPan({6.0, -4.0});
+    const auto shown = [&] {
+        ShownSlices s;
+        for (std::size_t n = 0; n < views.size(); ++n) {
+            views[n]->waitForSlice();
+            s.positions.at(n) = views[n]->positionText();
+            s.images.at(n) = views[n]->sliceImage();
+        }
+        QEvent leave(QEvent::Leave);  // no hover read-out
+        QCoreApplication::sendEvent(axial, &leave);
+        s.axialShown = axial->grab().toImage();
+        return s;
+    };
+    const ShownSlices before = shown();
+    const slices::Window window = workspace()->window();
+    const auto tip = axial->widgetPointOf(*cursor);
+    ASSERT_TRUE(tip);
+    const QString path = QString::fromStdString((panelTestDir() / "slices.vvs").string());
+    ASSERT_TRUE(window_->saveSessionTo(path));
+
+    // A fresh window (3-D and three slices, both overlay styles), then the session.
+    workspace()->setSliceLayout(SliceLayout::ThreeDAndSlices);
+    ASSERT_TRUE(openSessionInNewWindow(path)) << "the session was never applied";
+    ASSERT_NE(window_->volume(), nullptr);
+    QCoreApplication::processEvents();
+    EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::AxialLarge);
+    EXPECT_TRUE(view(SliceOrientation::Axial)->isVisible());
+    EXPECT_FALSE(view(SliceOrientation::Coronal)->isVisible());
+    EXPECT_DOUBLE_EQ(workspace()->window().width, window.width);
+    EXPECT_DOUBLE_EQ(workspace()->window().center, window.center);
+    EXPECT_EQ(workspace()->chosenPreset(), std::optional(slices::WindowPreset::Bone));
+    EXPECT_FALSE(
+        menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Fill"))->isChecked());
+    EXPECT_TRUE(menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Outline"))
+                    ->isChecked());
+    ASSERT_TRUE(workspace()->cursor()->point());
+    EXPECT_LT(glm::distance(*workspace()->cursor()->point(), *cursor), 1e-9);
+    axial = view(SliceOrientation::Axial);
+    const std::array<SliceView*, 3> reopened{axial, view(SliceOrientation::Coronal),
+                                             view(SliceOrientation::Sagittal)};
+    for (std::size_t n = 0; n < views.size(); ++n) {
+        views.at(n) = reopened.at(n);  // what shown() reads
+    }
+    const ShownSlices after = shown();
+    for (std::size_t n = 0; n < views.size(); ++n) {
+        EXPECT_EQ(after.positions.at(n), before.positions.at(n)) << n;
+        ASSERT_EQ(after.images.at(n).size(), before.images.at(n).size()) << n;
+        EXPECT_EQ(changedFraction(after.images.at(n), before.images.at(n)), 0.0) << n;
+    }
+    // Zoom and pan: the cursor at the same place in the view, the same picture.
+    EXPECT_DOUBLE_EQ(axial->zoom(), 2.5);
+    const auto tipAfter = axial->widgetPointOf(*cursor);
+    ASSERT_TRUE(tipAfter);
+    EXPECT_NEAR(tipAfter->x(), tip->x(), 1e-6);
+    EXPECT_NEAR(tipAfter->y(), tip->y(), 1e-6);
+    ASSERT_EQ(after.axialShown.size(), before.axialShown.size());
+    const double changed = changedFraction(after.axialShown, before.axialShown);
+    EXPECT_LT(changed, 0.001);
+    if (changed >= 0.001) {
+        before.axialShown.save(QString::fromStdString((panelTestDir() / "before.png").string()));
+        after.axialShown.save(QString::fromStdString((panelTestDir() / "after.png").string()));
+    }
+
+    // The same session written before slice views were kept: a new volume's views.
+    QFile file(path);
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+    ASSERT_TRUE(root.contains(QStringLiteral("slices")));
+    root.remove(QStringLiteral("slices"));
+    const QString old = QString::fromStdString((panelTestDir() / "slices-old.vvs").string());
+    QFile out(old);
+    ASSERT_TRUE(out.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    out.write(QJsonDocument(root).toJson());
+    out.close();
+    workspace()->setSliceLayout(SliceLayout::ThreeDAndSlices);  // the remembered layout
+    ASSERT_TRUE(openSessionInNewWindow(old)) << "the session was never applied";
+    ASSERT_NE(window_->volume(), nullptr);
+    EXPECT_EQ(workspace()->sliceLayout(), SliceLayout::ThreeDAndSlices);
+    EXPECT_FALSE(workspace()->cursor()->point().has_value());
+    EXPECT_EQ(workspace()->chosenPreset(), std::optional(firstPreset));
+    for (const auto o :
+         {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal}) {
+        SliceView* v = view(o);
+        EXPECT_EQ(v->sliceIndex(), v->sliceCount() / 2);
+        EXPECT_DOUBLE_EQ(v->zoom(), 1.0);
+        EXPECT_EQ(v->pan(), glm::dvec2(0.0));
+    }
+    EXPECT_TRUE(
+        menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Fill"))->isChecked());
+}
+
+TEST_F(SliceViewGuiTest, ASessionWindowIsNotReplacedByPresetsFromTheWorker) {
+    // A big volume's presets are found on a worker; a session applied before
+    // they arrive keeps its window and checks its preset when they do.
+    const auto big = bigCtVolume();
+    ASSERT_GT(big->voxelCount(), SliceView::kSynchronousVoxels);
+    workspace()->setVolume(big, nullptr);
+    ASSERT_TRUE(workspace()->presets().empty());
+    auto state = workspace()->sessionState();
+    ASSERT_TRUE(state);
+    SliceView* axial = view(SliceOrientation::Axial);
+    const slices::Window soft{40.0, 400.0};
+    state->window = soft;
+    state->preset = slices::WindowPreset::SoftTissue;
+    state->views.at(0).position = axial->stack()->position(5);  // 50 HU
+    workspace()->applySessionState(*state);
+    EXPECT_EQ(workspace()->sessionState()->preset, slices::WindowPreset::SoftTissue);
+    ASSERT_TRUE(waitUntil([&] { return !workspace()->presets().empty(); }, 30000));
+    QCoreApplication::processEvents();
+    EXPECT_DOUBLE_EQ(workspace()->window().center, soft.center);
+    EXPECT_DOUBLE_EQ(workspace()->window().width, soft.width);
+    EXPECT_EQ(workspace()->chosenPreset(), std::optional(slices::WindowPreset::SoftTissue));
+    axial->waitForSlice();
+    EXPECT_EQ(axial->shownSliceIndex(), 5);
+    EXPECT_EQ(qRed(axial->sliceImage().pixel(128, 128)), slices::windowGray(50.0F, soft));
 }
 
 }  // namespace
