@@ -141,29 +141,37 @@ TEST(RefinementPolicyTest, TheBudgetStepsTheScaleDownWhenSlowAndUpWhenFast) {
     ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.5F);
     ASSERT_FLOAT_EQ(policy.interactiveVssScale(), 0.5F);
     // Over 1.15 x the budget: one step down, taken by the next camera move.
-    // From half size the VSS drops first, the render size holds.
+    // From half size the whole frame drops to 0.42, then to 0.35 (the
+    // cheapest frames at SSIM >= 0.9 keep the VSS at the render size).
     policy.frameMeasured(40.0);
-    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.5F);
-    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.35F);
-    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.5F);
-    ASSERT_TRUE(policy.cameraMoved());
-    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.35F);
-    EXPECT_FLOAT_EQ(policy.frameSettings(display()).vssResolutionScale, 0.35F / 0.5F);
-    // Between 0.6 x and 1.15 x: the sizes hold.
-    policy.frameMeasured(25.0);
-    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.35F);
-    // Down to a quarter for the VSS, then the render size drops.
-    policy.frameMeasured(40.0);
-    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.42F);
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.5F);
-    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
-    policy.frameMeasured(40.0);
     ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.42F);
+    EXPECT_FLOAT_EQ(policy.frameSettings(display()).vssResolutionScale, 1.0F);
+    // Between 0.6 x and 1.15 x: the sizes hold.
+    policy.frameMeasured(25.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.42F);
+    policy.frameMeasured(40.0);
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.35F);
+    // Then the VSS drops to a quarter under vessels at 0.35 (sharper edges).
+    policy.frameMeasured(40.0);
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
+    EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
+    EXPECT_FLOAT_EQ(policy.frameSettings(display()).vssResolutionScale, 0.25F / 0.35F);
+    policy.frameMeasured(40.0);
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.3F);
     EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
     // Under 0.6 x: one step up.
     policy.frameMeasured(10.0);
-    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.5F);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.35F);
     EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.25F);
     // The steps end at kMinInteractiveScale and at full size; the VSS is
     // never larger than the render size.

@@ -3,6 +3,7 @@
 
 #include <QOpenGLFunctions_4_1_Core>
 #include <algorithm>
+#include <array>
 
 namespace vv::render {
 
@@ -23,10 +24,12 @@ void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Da
     const VssSettings& settings = in.settings;
     context.scaleLut->upload(settings.scale);
     context.beginFullscreen(r, d.target, in.size);
-    const float clear[4] = {0.0F, 0.0F, 0.0F, 0.0F};
-    g.glClearBufferfv(GL_COLOR, 0, clear);
     const ShownVss& shown = r.get(d.shown).value();
     if (shown.frame == nullptr) {
+        // No VSS: transparent. (Otherwise the draw below writes every pixel,
+        // no blending: a clear first would only be a redundant pass over it.)
+        const std::array<float, 4> clear{};
+        g.glClearBufferfv(GL_COLOR, 0, clear.data());
         return;
     }
     // Preview frames (camera moving): one-pixel differences, no fit; exact

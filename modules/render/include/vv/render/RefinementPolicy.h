@@ -30,11 +30,12 @@ namespace vv::render {
 /// kScaleSteps / kVssScaleSteps — down when it took over 1.15 x the budget,
 /// up when under 0.6 x; in between it holds (a preview VSS shows only at the
 /// size it was solved at, so the sizes change only between moves). Down to
-/// half size, the VSS is solved and shaded at the render size; below that,
-/// the render size stays at half while the VSS's drops to a quarter (the
-/// vessels keep edges twice as sharp as the VSS's size would give them, and
-/// the frame is nearer the settled one than a frame all at the VSS's size),
-/// and only then does the render size drop too.
+/// 0.35, the VSS is solved and shaded at the render size (the cheapest
+/// frames with SSIM >= 0.9 against the settled frame are all at one size:
+/// docs/benchmarks/render.md, "Moving frames, round 4"); below that, the
+/// VSS drops to a quarter while the vessels keep the larger render size
+/// (sharper edges than the VSS's size would give them), and only then does
+/// the render size drop too.
 class RefinementPolicy {
   public:
     enum class Phase { Still, Moving, Settled };
@@ -43,10 +44,10 @@ class RefinementPolicy {
     /// first, down to kMinInteractiveScale; kVssScaleSteps[i] is the scale
     /// the VSS of step i is solved and shaded at (of the full size, at most
     /// kScaleSteps[i]).
-    static constexpr std::array<float, 11> kScaleSteps = {1.0F, 0.84F, 0.71F, 0.6F, 0.5F, 0.5F,
-                                                          0.5F, 0.42F, 0.35F, 0.3F, 0.25F};
-    static constexpr std::array<float, 11> kVssScaleSteps = {
-        1.0F, 0.84F, 0.71F, 0.6F, 0.5F, 0.35F, 0.25F, 0.25F, 0.25F, 0.25F, 0.25F};
+    static constexpr std::array<float, 10> kScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F, 0.5F,
+                                                          0.42F, 0.35F, 0.35F, 0.3F, 0.25F};
+    static constexpr std::array<float, 10> kVssScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F,  0.5F,
+                                                             0.42F, 0.35F, 0.25F, 0.25F, 0.25F};
     static constexpr float kMinInteractiveScale = kScaleSteps.back();
 
     [[nodiscard]] Phase phase() const noexcept;
