@@ -7,7 +7,7 @@
 // first run apart, it pays the first touches of a fresh process), the stage
 // medians (wall), and the counters of the fast solver.
 //
-//   vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] [--solver fast|brute] [--no-near-split]
+//   vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] [--solver fast|brute] [--near-split]
 //                 FILE.pfm...
 #include <algorithm>
 #include <chrono>
@@ -59,14 +59,14 @@ int main(int argc, char** argv) {
         } else if (a == "--solver" && more) {
             options.kind =
                 std::string(argv[++i]) == "brute" ? vss::SolverKind::Brute : vss::SolverKind::Fast;
-        } else if (a == "--no-near-split") {
-            vv::vss::detail::setFastSolverNearSplitForTesting(false);
+        } else if (a == "--near-split") {
+            vv::vss::detail::setFastSolverNearSplitForTesting(true);
         } else if (!a.empty() && a[0] != '-') {
             files.push_back(a);
         } else {
             std::fprintf(stderr,
                          "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
-                         "[--solver fast|brute] [--no-near-split] FILE.pfm...\n");
+                         "[--solver fast|brute] [--near-split] FILE.pfm...\n");
             return 2;
         }
     }

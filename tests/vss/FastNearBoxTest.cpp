@@ -205,6 +205,7 @@ TEST(FastNearBoxTest, SplitClustersSumOnlyTheNearPointsAndKeepTheTolerance) {
             }
         }
     }
+    detail::setFastSolverNearSplitForTesting(false);  // the default
     ASSERT_GT(pixelsOn, 0.0);
     ASSERT_GT(pixelsOff, 0.0);
     EXPECT_LT(pointsOn / pixelsOn, 0.8 * pointsOff / pixelsOff);

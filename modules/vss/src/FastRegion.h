@@ -70,7 +70,7 @@ struct Region {
     double deltaW = 0.0;      // relative error bound of one kernel weight
     bool coarse = true;       // coarse boxes allowed (FastCoarse.h)
     bool nearBoxesOn = true;  // near-band boxes on a coarse grid allowed (FastNearBox.h)
-    bool nearSplit = true;    // near boxes split their clusters (FastSolver.cpp, tryNearBox)
+    bool nearSplit = false;   // near boxes split their clusters (FastSolver.cpp, tryNearBox)
     double nearSplitBudgetScale = 1.0;  // test hook: loosens the budget of that split
     double budgetScale = 1.0;           // test hook: loosens the a-priori choices (FastStats.h)
     KernelPower kp;

@@ -116,10 +116,11 @@
 // LOCAL depth spread G = max |z_i - z_c| / rho_i^2 and p (second derivatives
 // <= p (p + 1) w / rho^2), the polynomial's coefficients and the samples'
 // round-off, plus E; every pixel is checked, else the traversal descends.
-// The clusters a near box would pass on are first split at the box like at a
-// leaf (tryNearBox): the parts far enough are expanded into a copy of its
-// expansion (their truncation added to E, which the check charges), so only
-// the points near the box are summed at the samples.
+// Optionally (off by default: no faster at these box sizes, measured in
+// docs/benchmarks/vss.md "Fourth step") the clusters a near box would pass on
+// are first split at the box like at a leaf (tryNearBox): the parts far enough
+// are expanded into a copy of its expansion (their truncation added to E,
+// which the check charges), so only the points near the box are summed.
 // Counters: nearBoxes, nearBoxPixels, nearBoxPoints (FastStats.h).
 //
 // SCALING (VSS.md "stiff cases"). Every box has a scale S = a lower bound of
@@ -182,7 +183,7 @@ AtomicStats& stats() {
 std::atomic<double> gBudgetScale{1.0};           // test hook, see FastStats.h
 std::atomic<bool> gCoarseBoxes{true};            // test hook, see FastStats.h
 std::atomic<bool> gNearBoxes{true};              // test hook, see FastStats.h
-std::atomic<bool> gNearSplit{true};              // test hook, see FastStats.h
+std::atomic<bool> gNearSplit{false};             // test hook, see FastStats.h
 std::atomic<double> gNearSplitBudgetScale{1.0};  // test hook, see FastStats.h
 
 // Per-thread counters, added to the shared atomics once per task / region (atomic

@@ -45,8 +45,9 @@ void setFastSolverNearBoxesForTesting(bool on);
 
 /// Test / benchmark hook: near boxes split the clusters they could not expand
 /// and expand the parts far enough from the box, so that only the near points
-/// are summed at their samples (on, the default), or sum all their points.
-/// Affects solvers created afterwards.
+/// are summed at their samples (on), or sum all their points (off, the
+/// default: measured no faster at 32-64 pixel boxes, docs/benchmarks/vss.md
+/// "Fourth step"). Affects solvers created afterwards.
 void setFastSolverNearSplitForTesting(bool on);
 
 /// Test hook: multiplies the a-priori budget of that split only (default 1):
