@@ -129,6 +129,7 @@ TEST(PixelAllocator, FreedLargeBuffersAreReusedAndNewImagesStillInitialised) {
 TEST(PixelAllocator, ThePoolKeepsAtMostItsCap) {
     {
         std::vector<vv::Image<float>> many;
+        many.reserve(12);
         for (int i = 0; i < 12; ++i) {
             many.emplace_back(3840, 2160, static_cast<float>(i));
         }

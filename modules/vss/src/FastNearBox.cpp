@@ -138,16 +138,13 @@ Axis axis(int o, int h, int n) {
 
 bool nearBoxHasRoom(const Region& rg, const BoxGeo& geo, int level, const std::vector<int>& nodes) {
     const int extMax = (level == 1 ? 4 : 8) - 1;  // as evalNearBox
-    for (const int nd : nodes) {
+    // a node whose box comes within 4 pixels: no room (checked again per point in evalNearBox)
+    return std::ranges::all_of(nodes, [&](int nd) {
         const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
-        // a node whose box comes within 4 pixels: no room (checked again per point below)
         const int gx = std::max({0, c.bx0 - (geo.maxx + extMax), geo.minx - c.bx1});
         const int gy = std::max({0, c.by0 - (geo.maxy + extMax), geo.miny - c.by1});
-        if (gx * gx + gy * gy < 16) {
-            return false;
-        }
-    }
-    return true;
+        return gx * gx + gy * gy >= 16;
+    });
 }
 
 std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
