@@ -8,7 +8,7 @@
 //
 //   vss_fast_micro [--runs N] [--p 2,4,8,64] [--tol T] [--views far,medium,close]
 //                  [--brute] [--sample K] [--budget-scale F] [--size WxH] [--no-coarse]
-//                  [--no-near-boxes]
+//                  [--no-near-boxes] [--near-split]
 // --size scales the views with the width (default 1280x720).
 #include <algorithm>
 #include <chrono>
@@ -175,6 +175,8 @@ int main(int argc, char** argv) {
             detail::setFastSolverCoarseBoxesForTesting(false);
         } else if (a == "--no-near-boxes") {
             detail::setFastSolverNearBoxesForTesting(false);
+        } else if (a == "--near-split") {
+            detail::setFastSolverNearSplitForTesting(true);
         } else if (a == "--budget-scale" && more) {
             // test hook: a looser a-priori budget, to see how much slack the check has
             detail::setFastSolverBudgetScaleForTesting(std::atof(argv[++i]));
@@ -182,7 +184,8 @@ int main(int argc, char** argv) {
             std::fprintf(stderr,
                          "usage: vss_fast_micro [--runs N] [--p 2,4,8] [--tol T] "
                          "[--views far,medium,close] [--brute] [--sample K] "
-                         "[--budget-scale F] [--size WxH] [--no-coarse] [--no-near-boxes]\n");
+                         "[--budget-scale F] [--size WxH] [--no-coarse] [--no-near-boxes] "
+                         "[--near-split]\n");
             return 2;
         }
     }

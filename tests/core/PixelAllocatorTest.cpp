@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "vv/core/Image.h"
 #include "vv/core/PixelAllocator.h"
@@ -100,6 +101,44 @@ TEST(PixelAllocator, SmallImagesStayOrdinary) {
     p[9] = 1.0;
     a.deallocate(p, 10);
     EXPECT_THROW((void)a.allocate(static_cast<std::size_t>(-1) / 4), std::bad_alloc);
+}
+
+TEST(PixelAllocator, FreedLargeBuffersAreReusedAndNewImagesStillInitialised) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    const void* first = nullptr;
+    {
+        vv::Image<float> a(3840, 2160, 2.0F);
+        first = a.data();
+    }
+    EXPECT_GE(vv::LargeBufferPool::instance().heldBytes(), std::size_t{3840} * 2160 * 4);
+    // the same rounded size (int32 and float have the same bytes): the kept buffer
+    const vv::Image<std::int32_t> b(3840, 2160, 0);
+    EXPECT_EQ(static_cast<const void*>(b.data()), first);
+    // its pixels are those of the new image, not the left-over 2.0F
+    for (int y = 0; y < b.height(); y += 7) {
+        for (int x = 0; x < b.width(); x += 5) {
+            ASSERT_EQ(b(x, y), 0) << x << "," << y;
+        }
+    }
+    EXPECT_EQ(b(3839, 2159), 0);
+#else
+    GTEST_SKIP() << "the pool serves the huge-page path (Linux) only";
+#endif
+}
+
+TEST(PixelAllocator, ThePoolKeepsAtMostItsCap) {
+    {
+        std::vector<vv::Image<float>> many;
+        many.reserve(12);
+        for (int i = 0; i < 12; ++i) {
+            many.emplace_back(3840, 2160, static_cast<float>(i));
+        }
+        for (int i = 0; i < 12; ++i) {
+            EXPECT_FLOAT_EQ(many[static_cast<std::size_t>(i)](100, 100), static_cast<float>(i));
+        }
+    }
+    EXPECT_LE(vv::LargeBufferPool::instance().heldBytes(), vv::LargeBufferPool::kMaxBytes);
+    EXPECT_GT(vv::LargeBufferPool::instance().heldBytes(), 0U);
 }
 
 }  // namespace

@@ -162,5 +162,54 @@ TEST(FastNearBoxTest, DoNotRestOnTheAPrioriEstimate) {
     }
 }
 
+TEST(FastNearBoxTest, SplitClustersSumOnlyTheNearPointsAndKeepTheTolerance) {
+    // A near box splits the clusters it could not expand and expands the parts
+    // far enough from it into its own expansion (their truncation charged to
+    // the box's bound): fewer points summed at its samples, every pixel within
+    // the tolerance, also with the a-priori budget 30x too loose (the expanded
+    // parts then carry large truncation bounds that the box's check must see).
+    const Scene scenes[] = {twoDepthsScene(256, 192), randomScene(301, 203, MaskKind::Tree, 3),
+                            farFieldScene(256, 192, 1.0, false)};
+    // points summed per near-box pixel, on and off
+    double pointsOn = 0.0;
+    double pointsOff = 0.0;
+    double pixelsOn = 0.0;
+    double pixelsOff = 0.0;
+    for (const Scene& s : scenes) {
+        for (const double p : {1.0, 2.0, 4.0, 8.0}) {
+            const Image<double> ref = referenceImage(s, p);
+            for (const double scale : {1.0, 30.0, 1e3, 1e5}) {
+                for (const double tol : {0.5 / 255.0, 0.02}) {
+                    detail::setFastSolverNearSplitBudgetScaleForTesting(scale);
+                    detail::setFastSolverNearSplitForTesting(false);
+                    detail::resetFastSolverStats();
+                    const Image<float> off = solveAll(s, p, tol);
+                    const detail::FastSolverStats stOff = detail::fastSolverStats();
+                    detail::setFastSolverNearSplitForTesting(true);
+                    detail::resetFastSolverStats();
+                    const Image<float> on = solveAll(s, p, tol);
+                    const detail::FastSolverStats stOn = detail::fastSolverStats();
+                    detail::setFastSolverNearSplitBudgetScaleForTesting(1.0);
+                    const Check c = compare(s, on, ref);
+                    EXPECT_EQ(c.bad, 0) << "p " << p << " scale " << scale << " tol " << tol;
+                    EXPECT_LE(c.maxErr, tol) << "p " << p << " scale " << scale << " tol " << tol
+                                             << ", " << stOn.nearBoxPixels << " near-box pixels";
+                    EXPECT_LE(compare(s, off, ref).maxErr, tol);
+                    if (scale == 1.0) {
+                        pointsOn += static_cast<double>(stOn.nearBoxPoints);
+                        pointsOff += static_cast<double>(stOff.nearBoxPoints);
+                        pixelsOn += static_cast<double>(stOn.nearBoxPixels);
+                        pixelsOff += static_cast<double>(stOff.nearBoxPixels);
+                    }
+                }
+            }
+        }
+    }
+    detail::setFastSolverNearSplitForTesting(false);  // the default
+    ASSERT_GT(pixelsOn, 0.0);
+    ASSERT_GT(pixelsOff, 0.0);
+    EXPECT_LT(pointsOn / pixelsOn, 0.8 * pointsOff / pixelsOff);
+}
+
 }  // namespace
 }  // namespace vv::vss

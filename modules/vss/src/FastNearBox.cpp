@@ -136,6 +136,17 @@ Axis axis(int o, int h, int n) {
 
 }  // namespace
 
+bool nearBoxHasRoom(const Region& rg, const BoxGeo& geo, int level, const std::vector<int>& nodes) {
+    const int extMax = (level == 1 ? 4 : 8) - 1;  // as evalNearBox
+    // a node whose box comes within 4 pixels: no room (checked again per point in evalNearBox)
+    return std::ranges::all_of(nodes, [&](int nd) {
+        const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
+        const int gx = std::max({0, c.bx0 - (geo.maxx + extMax), geo.minx - c.bx1});
+        const int gy = std::max({0, c.by0 - (geo.maxy + extMax), geo.miny - c.by1});
+        return gx * gx + gy * gy >= 16;
+    });
+}
+
 std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
                          const std::vector<int>& near, const Local* far, const LeafBounds& bounds) {
     const PowerTables& tab = *rg.tab;
@@ -149,16 +160,12 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     const double sScale = bounds.S;  // S of the derivation above
     // The near points: offsets from the grid origin (pixels), their
     // distances to B grown by extMax, the nearest one's depth, max |z - zref|.
+    if (!nearBoxHasRoom(rg, geo, level, near)) {
+        return 0;
+    }
     std::size_t nearCount = 0;  // K of the derivation above
     for (const int nd : near) {
-        const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
-        // a node whose box comes within 4 pixels: no room (checked again per point below)
-        const int gx = std::max({0, c.bx0 - (geo.maxx + extMax), geo.minx - c.bx1});
-        const int gy = std::max({0, c.by0 - (geo.maxy + extMax), geo.miny - c.by1});
-        if (gx * gx + gy * gy < 16) {
-            return 0;
-        }
-        nearCount += static_cast<std::size_t>(c.count());
+        nearCount += static_cast<std::size_t>(rg.tree.nodes[static_cast<std::size_t>(nd)].count());
     }
     thread_local std::vector<float> px;  // scratch, reused by every box of this thread
     thread_local std::vector<float> py;

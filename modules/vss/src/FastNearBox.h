@@ -22,6 +22,11 @@ namespace vv::vss::detail::fast {
 /// 2: 64 pixels, samples every 4).
 inline constexpr int kNearBoxMaxLevel = 2;
 
+/// False when the box of a source node in nodes comes within 4 pixels of the
+/// samples of a near box of the given level with geometry geo (evalNearBox
+/// then returns 0). Throws nothing.
+bool nearBoxHasRoom(const Region& rg, const BoxGeo& geo, int level, const std::vector<int>& nodes);
+
 /// Writes z' to rg.out for every pixel of region rg.id in the box of the
 /// given level (1 or 2) with geometry geo: the points of the source nodes
 /// `near` exactly, the rest through far (the box's local expansion; nullptr

@@ -116,7 +116,12 @@
 // LOCAL depth spread G = max |z_i - z_c| / rho_i^2 and p (second derivatives
 // <= p (p + 1) w / rho^2), the polynomial's coefficients and the samples'
 // round-off, plus E; every pixel is checked, else the traversal descends.
-// Counters: nearBoxes, nearBoxPixels (FastStats.h).
+// Optionally (off by default: no faster at these box sizes, measured in
+// docs/benchmarks/vss.md "Fourth step") the clusters a near box would pass on
+// are first split at the box like at a leaf (tryNearBox): the parts far enough
+// are expanded into a copy of its expansion (their truncation added to E,
+// which the check charges), so only the points near the box are summed.
+// Counters: nearBoxes, nearBoxPixels, nearBoxPoints (FastStats.h).
 //
 // SCALING (VSS.md "stiff cases"). Every box has a scale S = a lower bound of
 // all its pixel-point distances (>= 1); its expansion, E and Dlo hold true
@@ -134,8 +139,8 @@
 // tables (the series c_n, tau, chooseOrder, the weight pw); FastSourceTree:
 // step 1; FastExpansion: M2L, L2L and the leaf polynomial; FastRegion.h: what
 // the traversal and the leaves share; FastLeaf: step 4 with the check and the
-// fall-backs; FastCoarse: the coarse boxes; FastNearBox: the near boxes;
-// FastKernel: the SIMD kernel of step 4; FastMath.h: the math.
+// fall-backs; FastCoarse: the coarse boxes; FastNearBox: the near boxes; FastPlace: placing
+// clusters at a box; FastKernel: the SIMD kernel of step 4; FastMath.h: the math.
 //
 #include "FastSolver.h"
 
@@ -154,6 +159,7 @@
 #include "FastKernel.h"
 #include "FastLeaf.h"
 #include "FastNearBox.h"
+#include "FastPlace.h"
 #include "FastRegion.h"
 #include "FastSourceTree.h"
 #include "FastStats.h"
@@ -168,22 +174,25 @@ namespace {
 struct AtomicStats {
     std::atomic<std::int64_t> pixels{0}, fallbackPixels{0}, leaves{0}, nearPairs{0}, m2l{0},
         dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0},
-        nearLeaves{0}, nearLeafPixels{0}, nearBoxes{0}, nearBoxPixels{0};
+        nearLeaves{0}, nearLeafPixels{0}, nearBoxes{0}, nearBoxPixels{0}, nearBoxPoints{0};
 };
 AtomicStats& stats() {
     static AtomicStats s;
     return s;
 }
-std::atomic<double> gBudgetScale{1.0};  // test hook, see FastStats.h
-std::atomic<bool> gCoarseBoxes{true};   // test hook, see FastStats.h
-std::atomic<bool> gNearBoxes{true};     // test hook, see FastStats.h
+std::atomic<double> gBudgetScale{1.0};           // test hook, see FastStats.h
+std::atomic<bool> gCoarseBoxes{true};            // test hook, see FastStats.h
+std::atomic<bool> gNearBoxes{true};              // test hook, see FastStats.h
+std::atomic<bool> gNearSplit{false};             // test hook, see FastStats.h
+std::atomic<double> gNearSplitBudgetScale{1.0};  // test hook, see FastStats.h
 
 // Per-thread counters, added to the shared atomics once per task / region (atomic
 // updates per leaf from both threads would bounce one cache line between the cores).
 struct LocalStats {
     std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
                  perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0,
-                 nearLeaves = 0, nearLeafPixels = 0, nearBoxes = 0, nearBoxPixels = 0;
+                 nearLeaves = 0, nearLeafPixels = 0, nearBoxes = 0, nearBoxPixels = 0,
+                 nearBoxPoints = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -203,6 +212,7 @@ void flushStats() {
     s.nearLeafPixels += l.nearLeafPixels;
     s.nearBoxes += l.nearBoxes;
     s.nearBoxPixels += l.nearBoxPixels;
+    s.nearBoxPoints += l.nearBoxPoints;
     l = LocalStats{};
 }
 struct StatsFlush {  // flushes on every exit, cancellation included
@@ -213,45 +223,6 @@ struct StatsFlush {  // flushes on every exit, cancellation included
 };
 
 // ---------------------------------------------------------------- traversal
-BoxGeo geometry(const TileInfo& t) {
-    BoxGeo g;
-    g.minx = t.minx;
-    g.miny = t.miny;
-    g.maxx = t.maxx;
-    g.maxy = t.maxy;
-    g.tx = 0.5 * (static_cast<double>(t.minx) + t.maxx);
-    g.ty = 0.5 * (static_cast<double>(t.miny) + t.maxy);
-    g.a = 0.5 *
-          std::hypot(static_cast<double>(t.maxx - t.minx), static_cast<double>(t.maxy - t.miny)) *
-          (1.0 + 1e-15);
-    g.an = std::max(g.a, 0.5);
-    return g;
-}
-
-struct Cand {
-    int node = 0;
-    double R = 0.0;     // centre distance
-    double q = 0.0;     // (a + s) / R
-    double mind = 1.0;  // lower bound of pixel-point distances (>= 1)
-    double maxd = 1.0;  // upper bound
-};
-
-Cand makeCand(int node, const SrcNode& c, const BoxGeo& g) {
-    Cand k;
-    k.node = node;
-    k.R = std::sqrt((g.tx - c.cx) * (g.tx - c.cx) + (g.ty - c.cy) * (g.ty - c.cy));
-    const double rho = g.a + c.s;
-    k.q = k.R > 0.0 ? rho / k.R : std::numeric_limits<double>::infinity();
-    const double gx = std::max({0, c.bx0 - g.maxx, g.minx - c.bx1});
-    const double gy = std::max({0, c.by0 - g.maxy, g.miny - c.by1});
-    const double hx = std::max(std::abs(c.bx1 - g.minx), std::abs(g.maxx - c.bx0));
-    const double hy = std::max(std::abs(c.by1 - g.miny), std::abs(g.maxy - c.by0));
-    // distinct integer points are >= 1 apart (void pixels are never contour pixels)
-    k.mind = std::max({1.0, std::sqrt(gx * gx + gy * gy), (k.R - rho) * (1.0 - 1e-14)});
-    k.maxd = std::max(k.mind, std::min(std::sqrt(hx * hx + hy * hy), (k.R + rho) * (1.0 + 1e-14)));
-    return k;
-}
-
 struct BoxState {
     int level = 0;
     int ix = 0;
@@ -273,7 +244,62 @@ struct BoxState {
     double Sexp = std::numeric_limits<double>::infinity();  // ... to expanded clusters
 };
 
-constexpr double kLambda = 0.5;  // a cluster's budget: its own share (A-PRIORI BUDGET above)
+// Cost of summing one point exactly at a near box's samples (at most 16 x 17
+// of them; ~0.3 cycles per sample and point in the kernel, as the leaves').
+constexpr double kNearBoxExactCost = 16.0 * 17.0 * 0.3;
+
+// A near box (FastNearBox.h) of the given level: with rg.nearSplit, the
+// clusters it would pass on are split at the box like at a leaf (expanded into
+// a copy of its local expansion when far enough and cheaper than summing
+// them at the samples, dropped when within the budget, their truncation
+// charged to E), so that only the points near the box are summed at its
+// samples; when none is left, the box is a coarse box (FastCoarse.h) of that
+// expansion. Returns the pixels written (0: not taken; see evalNearBox).
+std::int64_t tryNearBox(const Region& rg, int level, const BoxGeo& geo, double S, double DloBox,
+                        const std::vector<int>& deferred, const Local* loc,
+                        const LeafBounds& bounds) {
+    const auto points = [&rg](const std::vector<int>& nodes) {
+        std::int64_t n = 0;
+        for (const int nd : nodes) {
+            n += rg.tree.nodes[static_cast<std::size_t>(nd)].count();
+        }
+        return n;
+    };
+    if (!rg.nearSplit) {
+        const std::int64_t written = evalNearBox(rg, geo, level, deferred, loc, bounds);
+        tlStats.nearBoxPoints += written > 0 ? points(deferred) : 0;
+        return written;
+    }
+    if (!nearBoxHasRoom(rg, geo, level, deferred)) {
+        return 0;  // as without the split; spares the translations of a box not taken
+    }
+    thread_local std::vector<Cand> split;
+    thread_local std::vector<int> nearPts;
+    thread_local std::vector<int> none;  // stays empty: nothing is deferred in split mode
+    split.clear();
+    nearPts.clear();
+    for (const int nd : deferred) {
+        split.push_back(makeCand(nd, rg.tree.nodes[static_cast<std::size_t>(nd)], geo));
+    }
+    Local far = loc != nullptr ? *loc : Local{};
+    Placed pl;
+    pl.hasLocal = loc != nullptr;
+    pl.E = bounds.E;
+    pl.W = bounds.W;
+    pl.Sexp = bounds.Sexp;
+    placeClusters(rg, geo, S, DloBox, rg.nearSplitBudgetScale, split, {}, kNearBoxExactCost, far,
+                  pl, none, nearPts);
+    tlStats.m2l += pl.m2l;
+    tlStats.dropped += pl.dropped;
+    const LeafBounds b{S, pl.E, pl.W, pl.Sexp};
+    if (nearPts.empty()) {
+        return pl.hasLocal && level <= kCoarseMaxLevel ? evalCoarseBox(rg, geo, far, b) : 0;
+    }
+    const std::int64_t written =
+        evalNearBox(rg, geo, level, nearPts, pl.hasLocal ? &far : nullptr, b);
+    tlStats.nearBoxPoints += written > 0 ? points(nearPts) : 0;
+    return written;
+}
 
 // Places the source clusters box st inherits (drop, expand, defer to the
 // children, or near points of a leaf), then evaluates the leaf tile or
@@ -344,73 +370,24 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
         DloBox += tree.nodes[static_cast<std::size_t>(c.node)].count() * wLo[k];
     }
     // 4. Place every cluster: drop, expand, defer, split or evaluate exactly.
-    double DloAcc = 0.0;
-    double Sacc = st.Sacc;
-    double Sexp = st.Sexp;
+    Placed pl;
+    pl.hasLocal = hasLocal;
+    pl.E = E;
+    pl.W = W;
+    pl.Sacc = st.Sacc;
+    pl.Sexp = st.Sexp;
     std::vector<int> deferred;
     nearNodes.clear();
-    std::int64_t nM2l = 0;
-    std::int64_t nDrop = 0;
-    for (std::size_t k = 0; k < cands.size(); ++k) {
-        const Cand c = cands[k];
-        const SrcNode& nd = tree.nodes[static_cast<std::size_t>(c.node)];
-        const double nC = nd.count();
-        const double lo =
-            k < nInitial ? wLo[k] : tab.pw((S * S) / (c.maxd * c.maxd)) * (1.0 - 1e-9);
-        const double dzC = std::max(static_cast<double>(nd.zmax) - rg.zminH,
-                                    rg.zmaxH - static_cast<double>(nd.zmin));
-        const double budget = rg.tolA * (kLambda * lo + (1.0 - kLambda) * DloBox / rg.n);
-        const double hi = tab.pw((S * S) / (c.mind * c.mind)) * (1.0 + 1e-9);
-        if (dzC * hi <= budget) {
-            E += nC * dzC * hi;
-            DloAcc += nC * lo;
-            Sacc = std::min(Sacc, c.mind);
-            ++nDrop;
-            continue;
-        }
-        int mo = -1;
-        double tau = 0.0;
-        double wR = 0.0;
-        if (c.q < 1.0) {
-            wR = tab.pw((S * S) / (c.R * c.R)) * (1.0 + 1e-9);
-            mo = tab.chooseOrder(c.q, budget / (dzC * wR), tau);
-            if (mo >= 0 && leaf) {
-                // measured: ~1.2 (mo+1)(mo+2)(mo+3) cycles per translation against
-                // ~0.3 cycles per pixel and point in the kernel
-                const double costM2l = 1.2 * (mo + 1) * (mo + 2) * (mo + 3);
-                const double costExact = nC * (16.0 * (ti.maxy - ti.miny + 1)) * 0.3;
-                if (costExact < costM2l) {
-                    mo = -1;
-                }
-            }
-        }
-        if (mo >= 0) {
-            const std::size_t mc = static_cast<std::size_t>(rg.lay->count);
-            const std::size_t off = static_cast<std::size_t>(c.node) * mc;
-            m2l(loc, mo, tab, *rg.lay, &tree.momD[off], &tree.momN[off], nd, geo.tx, geo.ty, geo.an,
-                c.R, wR);
-            hasLocal = true;
-            E += nC * dzC * wR * tau;
-            W += nC * wR * tab.pw(1.0 / ((1.0 - c.q) * (1.0 - c.q)));
-            DloAcc += nC * lo;
-            Sacc = std::min(Sacc, c.mind);
-            Sexp = std::min(Sexp, c.mind);
-            ++nM2l;
-            continue;
-        }
-        if (!leaf) {
-            deferred.push_back(c.node);
-            continue;
-        }
-        if (nd.child >= 0) {
-            cands.push_back(
-                makeCand(nd.child, tree.nodes[static_cast<std::size_t>(nd.child)], geo));
-            cands.push_back(
-                makeCand(nd.child + 1, tree.nodes[static_cast<std::size_t>(nd.child + 1)], geo));
-            continue;
-        }
-        nearNodes.push_back(c.node);
-    }
+    const double exactCost = leaf ? 16.0 * (ti.maxy - ti.miny + 1) * 0.3 : -1.0;
+    placeClusters(rg, geo, S, DloBox, 1.0, cands, wLo, exactCost, loc, pl, deferred, nearNodes);
+    hasLocal = pl.hasLocal;
+    E = pl.E;
+    W = pl.W;
+    const double DloAcc = pl.DloAcc;
+    const double Sacc = pl.Sacc;
+    const double Sexp = pl.Sexp;
+    const std::int64_t nM2l = pl.m2l;
+    const std::int64_t nDrop = pl.dropped;
     tlStats.m2l += nM2l;
     tlStats.dropped += nDrop;
     if (leaf) {
@@ -442,8 +419,9 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
     // 5b. A box of the near band whose near points are some pixels away: a
     // grid with those points summed exactly, when the bound allows.
     if (rg.nearBoxesOn && st.level >= 1 && st.level <= kNearBoxMaxLevel && !deferred.empty()) {
-        const std::int64_t written = evalNearBox(
-            rg, geo, st.level, deferred, hasLocal ? &loc : nullptr, LeafBounds{S, E, W, Sexp});
+        const std::int64_t written =
+            tryNearBox(rg, st.level, geo, S, DloBox, deferred, hasLocal ? &loc : nullptr,
+                       LeafBounds{S, E, W, Sexp});
         if (written > 0) {
             tlStats.nearBoxes += 1;
             tlStats.nearBoxPixels += written;
@@ -533,6 +511,8 @@ class FastSolver final : public Solver {
     double budgetScale_ = gBudgetScale.load();
     bool coarse_ = gCoarseBoxes.load();
     bool nearBoxes_ = gNearBoxes.load();
+    bool nearSplit_ = gNearSplit.load();
+    double nearSplitBudgetScale_ = gNearSplitBudgetScale.load();
 };
 
 void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
@@ -604,6 +584,8 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.deltaW = deltaW_;
     rg.coarse = coarse_;
     rg.nearBoxesOn = nearBoxes_;
+    rg.nearSplit = nearSplit_;
+    rg.nearSplitBudgetScale = nearSplitBudgetScale_;
     rg.budgetScale = budgetScale_;
     rg.tol = tol;
     rg.zref = zref;
@@ -728,6 +710,7 @@ FastSolverStats fastSolverStats() {
     r.nearLeafPixels = s.nearLeafPixels.load();
     r.nearBoxes = s.nearBoxes.load();
     r.nearBoxPixels = s.nearBoxPixels.load();
+    r.nearBoxPoints = s.nearBoxPoints.load();
     return r;
 }
 
@@ -747,6 +730,7 @@ void resetFastSolverStats() {
     s.nearLeafPixels = 0;
     s.nearBoxes = 0;
     s.nearBoxPixels = 0;
+    s.nearBoxPoints = 0;
 }
 
 void setFastSolverBudgetScaleForTesting(double scale) {
@@ -755,6 +739,14 @@ void setFastSolverBudgetScaleForTesting(double scale) {
 
 void setFastSolverCoarseBoxesForTesting(bool on) {
     fast::gCoarseBoxes = on;
+}
+
+void setFastSolverNearSplitBudgetScaleForTesting(double scale) {
+    fast::gNearSplitBudgetScale = scale;
+}
+
+void setFastSolverNearSplitForTesting(bool on) {
+    fast::gNearSplit = on;
 }
 
 void setFastSolverNearBoxesForTesting(bool on) {

@@ -21,6 +21,7 @@ struct FastSolverStats {
     std::int64_t nearLeafPixels = 0;  ///< of the pixels, in those tiles
     std::int64_t nearBoxes = 0;       ///< near-band boxes interpolated from a grid (FastNearBox.h)
     std::int64_t nearBoxPixels = 0;   ///< of the pixels, written by those boxes
+    std::int64_t nearBoxPoints = 0;   ///< contour points those boxes summed at their samples
 };
 
 /// Totals since the last reset (all solver instances, all threads).
@@ -41,5 +42,17 @@ void setFastSolverCoarseBoxesForTesting(bool on);
 /// Test / benchmark hook: near-band boxes on a coarse grid (FastNearBox.h) on
 /// (the default) or off. Affects solvers created afterwards.
 void setFastSolverNearBoxesForTesting(bool on);
+
+/// Test / benchmark hook: near boxes split the clusters they could not expand
+/// and expand the parts far enough from the box, so that only the near points
+/// are summed at their samples (on), or sum all their points (off, the
+/// default: measured no faster at 32-64 pixel boxes, docs/benchmarks/vss.md
+/// "Fourth step"). Affects solvers created afterwards.
+void setFastSolverNearSplitForTesting(bool on);
+
+/// Test hook: multiplies the a-priori budget of that split only (default 1):
+/// the parts a near box expands or drops then carry truncation bounds that its
+/// interpolation check must charge. Affects solvers created afterwards.
+void setFastSolverNearSplitBudgetScaleForTesting(double scale);
 
 }  // namespace vv::vss::detail
