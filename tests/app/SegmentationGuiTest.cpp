@@ -25,6 +25,7 @@
 #include <memory>
 #include <optional>
 
+#include "CtaSeriesFixture.h"
 #include "GuiFixture.h"
 #include "SyntheticCta.h"
 #include "gui/MainWindow.h"
@@ -33,7 +34,6 @@
 #include "gui/Session.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "vv/demo/DemoCtSeries.h"
-#include "vv/dicom/SeriesWriter.h"
 
 namespace vv::test {
 namespace {
@@ -89,14 +89,10 @@ class SegmentationGuiTest : public GuiFixture {
   protected:
     static void SetUpTestSuite() {
         GuiFixture::SetUpTestSuite();
-        fs::remove_all(seriesDir());
-        cta_ = std::make_unique<SyntheticCta>(makeSyntheticCta({64, 64, 48}, 3));
-        dicom::writeCtSeries(seriesDir(), cta_->volume);
+        cta_ = writeTestCtaSeries(seriesDir());
     }
     static void TearDownTestSuite() {
-        std::error_code ec;
-        fs::remove_all(seriesDir(), ec);
-        cta_.reset();
+        removeTestCtaSeries(seriesDir(), cta_);
         GuiFixture::TearDownTestSuite();
     }
 

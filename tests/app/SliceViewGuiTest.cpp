@@ -29,6 +29,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "CtaSeriesFixture.h"
 #include "GuiFixture.h"
 #include "ReportTestUtil.h"
 #include "SyntheticCta.h"
@@ -41,7 +42,6 @@
 #include "gui/SliceView.h"
 #include "gui/SliceWorkspace.h"
 #include "gui/panels/SegmentationPanel.h"
-#include "vv/dicom/SeriesWriter.h"
 #include "vv/slices/Reslice.h"
 #include "vv/slices/SliceOverlay.h"
 #include "vv/slices/WindowLevel.h"
@@ -61,14 +61,10 @@ class SliceViewGuiTest : public GuiFixture {
   protected:
     static void SetUpTestSuite() {
         GuiFixture::SetUpTestSuite();
-        fs::remove_all(seriesDir());
-        cta_ = std::make_unique<SyntheticCta>(makeSyntheticCta({64, 64, 48}, 3));
-        dicom::writeCtSeries(seriesDir(), cta_->volume);
+        cta_ = writeTestCtaSeries(seriesDir());
     }
     static void TearDownTestSuite() {
-        std::error_code ec;
-        fs::remove_all(seriesDir(), ec);
-        cta_.reset();
+        removeTestCtaSeries(seriesDir(), cta_);
         GuiFixture::TearDownTestSuite();
     }
 
