@@ -1,0 +1,157 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "PacsSettings.h"
+
+#include <QSettings>
+#include <QStandardPaths>
+#include <QString>
+#include <set>
+
+#include "vv/core/Error.h"
+
+namespace vv::gui {
+namespace {
+
+constexpr int kMaxPort = 65535;
+
+std::string text(const QSettings& store, const QString& key, const std::string& fallback) {
+    const QVariant value = store.value(key);
+    return value.isValid() ? value.toString().toStdString() : fallback;
+}
+
+bool validPort(int port) {
+    return port > 0 && port <= kMaxPort;
+}
+
+std::uint16_t port(const QSettings& store, const QString& key, std::uint16_t fallback) {
+    bool ok = false;
+    const int value = store.value(key).toInt(&ok);
+    return ok && validPort(value) ? static_cast<std::uint16_t>(value) : fallback;
+}
+
+bool validAeTitle(const std::string& aeTitle) {
+    try {
+        pacs::validateAeTitle(aeTitle);
+        return true;
+    } catch (const InvalidArgumentError&) {
+        return false;
+    }
+}
+
+void checkBeforeWriting(const PacsSettings& settings) {
+    try {
+        pacs::validateAeTitle(settings.me.aeTitle);
+    } catch (const InvalidArgumentError& e) {
+        throw InvalidArgumentError(std::string("our AE title: ") + e.what());
+    }
+    if (settings.listenerPort == 0) {
+        throw InvalidArgumentError("listener port: must be 1 to 65535");
+    }
+    std::set<std::string> names;
+    for (const PacsNode& node : settings.nodes) {
+        if (node.name.empty()) {
+            throw InvalidArgumentError("a node has no name");
+        }
+        if (!names.insert(node.name).second) {
+            throw InvalidArgumentError("two nodes are called '" + node.name + "'");
+        }
+        try {
+            pacs::validateNode(node.node);
+        } catch (const InvalidArgumentError& e) {
+            throw InvalidArgumentError("node '" + node.name + "': " + e.what());
+        }
+    }
+}
+
+}  // namespace
+
+std::filesystem::path defaultStoreFolder() {
+    const QString base = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
+    return std::filesystem::path(base.toStdString()) / "studies";
+}
+
+PacsSettings readPacsSettings(const QSettings& store) {
+    PacsSettings s;
+    const std::string ae = text(store, QStringLiteral("pacs/aeTitle"), s.me.aeTitle);
+    if (validAeTitle(ae)) {
+        s.me.aeTitle = ae;
+    }
+    s.listenerEnabled = store.value(QStringLiteral("pacs/listener/enabled"), false).toBool();
+    s.listenerPort = port(store, QStringLiteral("pacs/listener/port"), s.listenerPort);
+    s.listenerBindAddress =
+        text(store, QStringLiteral("pacs/listener/bind"), s.listenerBindAddress);
+    const std::string folder = text(store, QStringLiteral("pacs/store/folder"), {});
+    s.storeFolder = folder.empty() ? defaultStoreFolder() : std::filesystem::path(folder);
+    bool ok = false;
+    const qulonglong limit = store.value(QStringLiteral("pacs/store/limitBytes")).toULongLong(&ok);
+    s.storeLimitBytes = ok ? limit : 0;
+
+    const int count = store.value(QStringLiteral("pacs/nodes/size"), 0).toInt();
+    std::set<std::string> names;
+    for (int i = 0; i < count; ++i) {
+        const QString key = QStringLiteral("pacs/nodes/%1/").arg(i + 1);
+        PacsNode n;
+        n.name = text(store, key + QStringLiteral("name"), {});
+        n.node.aeTitle = text(store, key + QStringLiteral("aeTitle"), {});
+        n.node.host = text(store, key + QStringLiteral("host"), {});
+        bool portOk = false;
+        const int p = store.value(key + QStringLiteral("port")).toInt(&portOk);
+        n.node.port = portOk && validPort(p) ? static_cast<std::uint16_t>(p) : 0;
+        n.allowPush = store.value(key + QStringLiteral("allowPush"), true).toBool();
+        n.node.tls.enabled = store.value(key + QStringLiteral("tls/enabled"), false).toBool();
+        n.node.tls.trustedCertificates = text(store, key + QStringLiteral("tls/trusted"), {});
+        n.node.tls.certificate = text(store, key + QStringLiteral("tls/certificate"), {});
+        n.node.tls.privateKey = text(store, key + QStringLiteral("tls/privateKey"), {});
+        bool valid = !n.name.empty() && !names.contains(n.name);
+        try {
+            pacs::validateNode(n.node);
+        } catch (const InvalidArgumentError&) {
+            valid = false;
+        }
+        if (valid) {
+            names.insert(n.name);
+            s.nodes.push_back(std::move(n));
+        }
+    }
+    return s;
+}
+
+void writePacsSettings(const PacsSettings& settings, QSettings& store) {
+    checkBeforeWriting(settings);
+    store.remove(QStringLiteral("pacs"));
+    store.setValue(QStringLiteral("pacs/aeTitle"), QString::fromStdString(settings.me.aeTitle));
+    store.setValue(QStringLiteral("pacs/listener/enabled"), settings.listenerEnabled);
+    store.setValue(QStringLiteral("pacs/listener/port"), int{settings.listenerPort});
+    store.setValue(QStringLiteral("pacs/listener/bind"),
+                   QString::fromStdString(settings.listenerBindAddress));
+    store.setValue(QStringLiteral("pacs/store/folder"),
+                   QString::fromStdString(settings.storeFolder.string()));
+    store.setValue(QStringLiteral("pacs/store/limitBytes"), qulonglong{settings.storeLimitBytes});
+    store.setValue(QStringLiteral("pacs/nodes/size"), static_cast<int>(settings.nodes.size()));
+    for (std::size_t i = 0; i < settings.nodes.size(); ++i) {
+        const PacsNode& n = settings.nodes[i];
+        const QString key = QStringLiteral("pacs/nodes/%1/").arg(i + 1);
+        store.setValue(key + QStringLiteral("name"), QString::fromStdString(n.name));
+        store.setValue(key + QStringLiteral("aeTitle"), QString::fromStdString(n.node.aeTitle));
+        store.setValue(key + QStringLiteral("host"), QString::fromStdString(n.node.host));
+        store.setValue(key + QStringLiteral("port"), int{n.node.port});
+        store.setValue(key + QStringLiteral("allowPush"), n.allowPush);
+        store.setValue(key + QStringLiteral("tls/enabled"), n.node.tls.enabled);
+        store.setValue(key + QStringLiteral("tls/trusted"),
+                       QString::fromStdString(n.node.tls.trustedCertificates.string()));
+        store.setValue(key + QStringLiteral("tls/certificate"),
+                       QString::fromStdString(n.node.tls.certificate.string()));
+        store.setValue(key + QStringLiteral("tls/privateKey"),
+                       QString::fromStdString(n.node.tls.privateKey.string()));
+    }
+}
+
+const PacsNode* findNode(const PacsSettings& settings, const std::string& name) {
+    for (const PacsNode& n : settings.nodes) {
+        if (n.name == name) {
+            return &n;
+        }
+    }
+    return nullptr;
+}
+
+}  // namespace vv::gui

@@ -1,0 +1,56 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// What the user sets up for DICOM networking (Preferences > DICOM network),
+// kept in QSettings under the group "pacs/": our own AE title and listener,
+// the PACS nodes we talk to, and the local study store (folder, size limit).
+// The PACS browser, the listener, Local studies and Send all read it from here.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "vv/pacs/Node.h"
+
+class QSettings;
+
+namespace vv::gui {
+
+/// One configured peer: a display name and the node itself. `allowPush`
+/// lets the node push studies to our listener (it then joins the listener's
+/// allowed peers, by calling AE title and host).
+struct PacsNode {
+    std::string name;  ///< what the user calls it ("Radiology PACS"); unique
+    pacs::Node node;
+    bool allowPush = true;
+};
+
+struct PacsSettings {
+    pacs::LocalAe me;              ///< our AE title and timeouts
+    bool listenerEnabled = false;  ///< run the storage SCP while the app runs
+    std::uint16_t listenerPort = 11112;
+    std::string listenerBindAddress = "127.0.0.1";  ///< IPv4; 0.0.0.0: all interfaces
+    std::vector<PacsNode> nodes;
+    std::filesystem::path storeFolder;  ///< the local study store
+    std::uint64_t storeLimitBytes = 0;  ///< 0: no limit; else oldest-first clean-up
+};
+
+/// The store folder used when none is set: <AppLocalDataLocation>/studies.
+[[nodiscard]] std::filesystem::path defaultStoreFolder();
+
+/// Reads the settings from `store` ("pacs/" group). Missing entries take the
+/// defaults above (storeFolder: defaultStoreFolder()); an invalid entry (AE
+/// title, port out of range, a node without host) is skipped, never guessed.
+[[nodiscard]] PacsSettings readPacsSettings(const QSettings& store);
+
+/// Writes `settings` into `store` ("pacs/" group), replacing what was there.
+/// Throws InvalidArgumentError (vv/core/Error.h) naming the field when our AE
+/// title, a node or a port is invalid, or when two nodes share a name;
+/// then nothing is written.
+void writePacsSettings(const PacsSettings& settings, QSettings& store);
+
+/// The node called `name`, or nullptr.
+[[nodiscard]] const PacsNode* findNode(const PacsSettings& settings, const std::string& name);
+
+}  // namespace vv::gui
