@@ -968,7 +968,7 @@
     </message>
     <message>
         <source>&amp;DICOM</source>
-        <translation>&amp;DICOM</translation>
+        <translation>DI&amp;COM</translation>
     </message>
 </context>
 <context>

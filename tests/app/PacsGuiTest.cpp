@@ -103,6 +103,8 @@ class PacsGuiTest : public vv::test::GuiFixture {
     }
     static void TearDownTestSuite() {
         orthanc_.reset();
+        std::error_code ec;
+        fs::remove_all(testDir(), ec);
         GuiFixture::TearDownTestSuite();
     }
 
