@@ -1466,6 +1466,18 @@
         <source>The transfer to %1 failed: %2</source>
         <translation>Die Übertragung an %1 ist fehlgeschlagen: %2</translation>
     </message>
+    <message>
+        <source>Segmentation (DICOM SEG)</source>
+        <translation>Segmentierung (DICOM SEG)</translation>
+    </message>
+    <message>
+        <source>The segmentation (DICOM SEG)</source>
+        <translation>Die Segmentierung (DICOM SEG)</translation>
+    </message>
+    <message>
+        <source>Only for data opened from DICOM and segmented</source>
+        <translation>Nur für aus DICOM geöffnete und segmentierte Daten</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::SeriesDialog</name>

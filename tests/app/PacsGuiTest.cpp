@@ -10,12 +10,14 @@
 #include <unistd.h>
 
 #include <QAction>
+#include <QCheckBox>
 #include <QLabel>
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
 #include <QTreeWidget>
+#include <algorithm>
 #include <filesystem>
 #include <memory>
 #include <set>
@@ -30,6 +32,7 @@
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/PacsSettings.h"
 #include "gui/pacs/SendDialog.h"
+#include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
@@ -317,13 +320,15 @@ TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
     SendDialog* dialog = sendReport();
     ASSERT_NE(dialog, nullptr);
     const QString peer = QString::fromStdString(vv::pacs::describe(orthanc_->node()));
-    EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("2 of 2 accepted by %1").arg(peer));
-    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);
+    EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("3 of 3 accepted by %1").arg(peer));
+    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 3);
     EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(0),
               QStringLiteral("Report image (Secondary Capture)"));
     EXPECT_EQ(dialog->resultTable()->topLevelItem(1)->text(0),
               QStringLiteral("Report PDF (Encapsulated PDF)"));
-    for (int row = 0; row < 2; ++row) {
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(2)->text(0),
+              QStringLiteral("Segmentation (DICOM SEG)"));
+    for (int row = 0; row < 3; ++row) {
         EXPECT_EQ(dialog->resultTable()->topLevelItem(row)->text(1), QStringLiteral("Accepted"));
     }
     dialog->grab().save(QString::fromStdString((testDir() / "send.png").string()));
@@ -336,12 +341,32 @@ TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
     const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
     ASSERT_EQ(studies.size(), 1U);
     std::set<std::string> modalities;
+    std::string segSeries;
     for (const auto& series : vv::pacs::findSeries(
              me(), orthanc_->node(), vv::pacs::SeriesQuery{studies[0].studyInstanceUid, "", ""})) {
         modalities.insert(series.modality);
+        segSeries = series.modality == "SEG" ? series.seriesInstanceUid : segSeries;
     }
-    EXPECT_EQ(modalities, (std::set<std::string>{"DOC", "OT"}))
-        << "the report's Secondary Capture (OT) and PDF (DOC) series are not in Orthanc";
+    EXPECT_EQ(modalities, (std::set<std::string>{"DOC", "OT", "SEG"}))
+        << "the report's Secondary Capture (OT), PDF (DOC) and the SEG are not in Orthanc";
+    // The SEG in Orthanc holds the segmentation on screen: its voxels.
+    ASSERT_FALSE(segSeries.empty());
+    vv::pacs::LocalStore retrieved(testDir() / "seg-retrieved");
+    (void)vv::pacs::getInto(retrieved, me(), orthanc_->node(),
+                            vv::pacs::RetrieveRequest{studies[0].studyInstanceUid, segSeries});
+    const auto stored = retrieved.studies();
+    ASSERT_EQ(stored.size(), 1U);
+    ASSERT_EQ(stored[0].series.size(), 1U);
+    const fs::path segFile = fs::directory_iterator(stored[0].series[0].folder)->path();
+    std::size_t inPacs = 0;
+    for (const auto& map : vv::dicom::loadDicomSegLabelMaps(segFile)) {
+        inPacs += static_cast<std::size_t>(std::count_if(map.labels.begin(), map.labels.end(),
+                                                         [](std::uint8_t l) { return l != 0; }));
+    }
+    const auto& shown = window_->document()->labelMap()->labels;
+    EXPECT_EQ(inPacs, static_cast<std::size_t>(std::count_if(
+                          shown.begin(), shown.end(), [](std::uint8_t l) { return l != 0; })));
+    EXPECT_GT(inPacs, 0U);
 }
 
 TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
@@ -356,7 +381,8 @@ TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
               QStringLiteral("Nothing was sent: %1 refused the connection. Nobody listens at "
                              "that host and port, or a firewall blocks it.")
                   .arg(peer));
-    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);
+    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);  // meshes: no SEG to send
+    EXPECT_FALSE(dialog->segmentationBox()->isEnabled());
     EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(1), QStringLiteral("Not sent"));
     // The app keeps working: the dialog can send again, the window renders.
     EXPECT_TRUE(dialog->sendButton()->isEnabled());

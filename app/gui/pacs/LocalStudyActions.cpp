@@ -8,6 +8,7 @@
 #include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
+#include <memory>
 
 #include "gui/MainWindow.h"
 #include "gui/pacs/ListenerService.h"
@@ -15,6 +16,34 @@
 #include "gui/pacs/SendDialog.h"
 
 namespace vv::gui {
+namespace {
+
+/// The window's one Local Studies browser, made on first use.
+void showBrowser(MainWindow& window, ListenerService& listener,
+                 QPointer<LocalStudiesBrowser>& browser) {
+    if (browser.isNull()) {
+        browser = new LocalStudiesBrowser(listener, &window);
+        QObject::connect(browser.data(), &LocalStudiesBrowser::openRequested, &window,
+                         [&window](const QString& folder) { window.openDicom(folder); });
+    }
+    browser->show();
+    browser->raise();
+    browser->activateWindow();
+}
+
+/// A Send dialog for the scene on screen (deleted when closed).
+void showSendDialog(MainWindow& window) {
+    auto* dialog = new SendDialog(*window.viewer(), window.reportSource(),
+                                  readPacsSettings(QSettings()), &window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    if (const auto slice = window.sliceWorkspace()->reportSlice()) {
+        dialog->setSlice(slice->first, slice->second);
+    }
+    dialog->setSegmentation(window.document()->labelMap());
+    dialog->show();
+}
+
+}  // namespace
 
 ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu) {
     auto* listener = new ListenerService(&window);
@@ -29,29 +58,12 @@ ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu) {
     auto browser = std::make_shared<QPointer<LocalStudiesBrowser>>();
     QAction* local = menu.addAction(
         QCoreApplication::translate("vv::gui::LocalStudyActions", "&Local Studies…"), &window,
-        [&window, listener, browser] {
-            if (browser->isNull()) {
-                *browser = new LocalStudiesBrowser(*listener, &window);
-                QObject::connect(browser->data(), &LocalStudiesBrowser::openRequested, &window,
-                                 [&window](const QString& folder) { window.openDicom(folder); });
-            }
-            (*browser)->show();
-            (*browser)->raise();
-            (*browser)->activateWindow();
-        });
+        [&window, listener, browser] { showBrowser(window, *listener, *browser); });
     local->setObjectName(QStringLiteral("localStudies"));
 
     QAction* send =
         menu.addAction(QCoreApplication::translate("vv::gui::LocalStudyActions", "&Send to PACS…"),
-                       &window, [&window] {
-                           auto* dialog = new SendDialog(*window.viewer(), window.reportSource(),
-                                                         readPacsSettings(QSettings()), &window);
-                           dialog->setAttribute(Qt::WA_DeleteOnClose);
-                           if (const auto slice = window.sliceWorkspace()->reportSlice()) {
-                               dialog->setSlice(slice->first, slice->second);
-                           }
-                           dialog->show();
-                       });
+                       &window, [&window] { showSendDialog(window); });
     send->setObjectName(QStringLiteral("sendToPacs"));
     const auto updateSend = [&window, send] {
         const bool shown = window.viewer()->scene() != nullptr;

@@ -37,6 +37,18 @@ QString statusCode(std::uint16_t status) {
     return QStringLiteral("0x%1").arg(status, 4, 16, QLatin1Char('0'));
 }
 
+QString itemName(SendKind kind) {
+    switch (kind) {
+        case SendKind::SecondaryCapture:
+            return SendDialog::tr("Report image (Secondary Capture)");
+        case SendKind::EncapsulatedPdf:
+            return SendDialog::tr("Report PDF (Encapsulated PDF)");
+        case SendKind::Segmentation:
+            break;
+    }
+    return SendDialog::tr("Segmentation (DICOM SEG)");
+}
+
 }  // namespace
 
 SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
@@ -56,9 +68,13 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     pdf_ = new QCheckBox(tr("The PDF report (DICOM Encapsulated PDF)"), this);
     pdf_->setObjectName(QStringLiteral("sendPdf"));
     pdf_->setChecked(true);
+    seg_ = new QCheckBox(tr("The segmentation (DICOM SEG)"), this);
+    seg_->setObjectName(QStringLiteral("sendSegmentation"));
+    seg_->setToolTip(tr("Only for data opened from DICOM and segmented"));
     auto* what = new QVBoxLayout;
     what->addWidget(sc_);
     what->addWidget(pdf_);
+    what->addWidget(seg_);
     auto* form = new QFormLayout;
     form->addRow(tr("PACS node:"), node_);
     form->addRow(tr("Send:"), what);
@@ -94,6 +110,7 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     connect(close_, &QPushButton::clicked, this, &SendDialog::reject);
     connect(sc_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
     connect(pdf_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
+    connect(seg_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -115,12 +132,21 @@ void SendDialog::setSlice(const QImage& image, const QString& caption) {
     sliceCaption_ = caption;
 }
 
+void SendDialog::setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap) {
+    labelMap_ = source_.dicomPath.empty() ? nullptr : std::move(labelMap);
+    seg_->setChecked(labelMap_ != nullptr);
+    updateButtons();
+}
+
 void SendDialog::updateButtons() {
     const bool sending = worker_ != nullptr;
-    send_->setEnabled(!sending && node_->count() > 0 && (sc_->isChecked() || pdf_->isChecked()));
+    const bool segmentation = labelMap_ != nullptr && seg_->isChecked();
+    send_->setEnabled(!sending && node_->count() > 0 &&
+                      (sc_->isChecked() || pdf_->isChecked() || segmentation));
     node_->setEnabled(!sending);
     sc_->setEnabled(!sending);
     pdf_->setEnabled(!sending);
+    seg_->setEnabled(!sending && labelMap_ != nullptr);
     close_->setText(sending ? tr("Cancel") : tr("Close"));
 }
 
@@ -150,6 +176,10 @@ void SendDialog::send() {
     job.source = source_;
     request.secondaryCapture = sc_->isChecked();
     request.encapsulatedPdf = pdf_->isChecked();
+    if (labelMap_ != nullptr && seg_->isChecked()) {
+        request.segmentation = labelMap_;
+    }
+    request.softwareVersion = VV_VERSION;
     request.me = settings_.me;
     request.node = node->node;
     request.folder = folder_->path().toStdString();
@@ -213,9 +243,7 @@ void SendDialog::showOutcome(const SendOutcome& outcome, const QString& peer) {
     std::size_t accepted = 0;
     for (std::size_t i = 0; i < outcome.items.size(); ++i) {
         auto* row = new QTreeWidgetItem(results_);
-        row->setText(0, outcome.items[i].kind == SendKind::SecondaryCapture
-                            ? tr("Report image (Secondary Capture)")
-                            : tr("Report PDF (Encapsulated PDF)"));
+        row->setText(0, itemName(outcome.items[i].kind));
         QString answer = tr("Not sent");
         if (i < outcome.statuses.size()) {
             const pacs::SendStatus& status = outcome.statuses[i];

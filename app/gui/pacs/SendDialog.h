@@ -25,7 +25,8 @@ class ViewerWidget;
 
 /// DICOM > Send to PACS…: sends the report of the view on screen to a
 /// configured node. The user picks the node and what to send (the view as
-/// DICOM Secondary Capture, the PDF report as DICOM Encapsulated PDF);
+/// DICOM Secondary Capture, the PDF report as DICOM Encapsulated PDF, and for
+/// a DICOM scene with a segmentation the segmentation as DICOM SEG);
 /// Send makes them in a temporary folder and C-STOREs them on an
 /// ExportWorker (never on the GUI thread) with a progress bar, Cancel
 /// stopping it. Afterwards a table says per instance whether the node
@@ -46,11 +47,16 @@ class SendDialog : public QDialog {
 
     /// Adds the slice with its segmentation to the PDF (DICOM data).
     void setSlice(const QImage& image, const QString& caption);
+    /// Offers `labelMap` (the segmentation of the DICOM series the source
+    /// names) as DICOM SEG: segmentationBox() enabled and checked. Without a
+    /// map or for a scene not from DICOM the box stays disabled.
+    void setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap);
 
     /// Item data: the node's name.
     [[nodiscard]] QComboBox* nodeChooser() const noexcept { return node_; }
     [[nodiscard]] QCheckBox* secondaryCaptureBox() const noexcept { return sc_; }
     [[nodiscard]] QCheckBox* pdfBox() const noexcept { return pdf_; }
+    [[nodiscard]] QCheckBox* segmentationBox() const noexcept { return seg_; }
     [[nodiscard]] QPushButton* sendButton() const noexcept { return send_; }
     [[nodiscard]] QProgressBar* progressBar() const noexcept { return progress_; }
     /// One top-level row per instance: what it is, and the node's answer.
@@ -84,6 +90,8 @@ class SendDialog : public QDialog {
     QComboBox* node_ = nullptr;
     QCheckBox* sc_ = nullptr;
     QCheckBox* pdf_ = nullptr;
+    QCheckBox* seg_ = nullptr;
+    std::shared_ptr<const scene::LabelMap> labelMap_;
     QPushButton* send_ = nullptr;
     QPushButton* close_ = nullptr;
     QProgressBar* progress_ = nullptr;

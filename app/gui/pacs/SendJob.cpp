@@ -2,9 +2,48 @@
 #include "gui/pacs/SendJob.h"
 
 #include "vv/core/Error.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/dicom/DicomSegWriter.h"
 #include "vv/pacs/PacsError.h"
 
 namespace vv::gui {
+namespace {
+
+constexpr double kSegmentationStart = kReportShare * 0.8;  ///< the SEG after the report
+
+/// Writes `request.segmentation` as a SEG into the study of the series the
+/// report's source names (its patient, study and frame of reference).
+void writeSegmentation(const SendRequest& request, const std::filesystem::path& file,
+                       const Progress& progress) {
+    const report::ReportSource& source = request.report.source;
+    const dicom::DicomScanResult scan = dicom::scanDicom(source.dicomPath, progress);
+    for (const dicom::DicomPatient& patient : scan.patients) {
+        for (const dicom::DicomStudy& study : patient.studies) {
+            for (const dicom::DicomSeries& series : study.series) {
+                if (!source.seriesInstanceUid.empty() &&
+                    series.seriesInstanceUid != source.seriesInstanceUid) {
+                    continue;
+                }
+                dicom::ExportStudy target;
+                target.studyInstanceUid = study.studyInstanceUid;
+                target.studyDate = study.date;
+                target.patient = dicom::ExportPatient{};
+                target.patient->name = patient.name;
+                target.patient->id = patient.id;
+                dicom::ExportSeries written;
+                written.description = "VesselView segmentation";
+                written.seriesNumber = 901;
+                written.softwareVersion = request.softwareVersion;
+                (void)dicom::writeDicomSeg(file, *request.segmentation, target,
+                                           series.frameOfReferenceUid, written);
+                return;
+            }
+        }
+    }
+    throw FormatError(source.dicomPath, "the segmented series is no longer there");
+}
+
+}  // namespace
 
 SendOutcome runSendJob(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                        const SendRequest& request, const Progress& progress) {
@@ -19,10 +58,19 @@ SendOutcome runSendJob(render::OffscreenRenderer& renderer, const scene::Scene& 
         job.outputs.dicomPdf = request.folder / "report-pdf.dcm";
         outcome.items.push_back({SendKind::EncapsulatedPdf, job.outputs.dicomPdf});
     }
-    if (outcome.items.empty()) {
-        throw InvalidArgumentError("nothing to send: choose the report image or the PDF");
+    if (request.segmentation) {
+        outcome.items.push_back({SendKind::Segmentation, request.folder / "segmentation.dcm"});
     }
-    (void)report::runReportJob(renderer, scene, job, progress.sub(0.0, kReportShare));
+    if (outcome.items.empty()) {
+        throw InvalidArgumentError("nothing to send: choose the report or the segmentation");
+    }
+    if (request.secondaryCapture || request.encapsulatedPdf) {
+        (void)report::runReportJob(renderer, scene, job, progress.sub(0.0, kSegmentationStart));
+    }
+    if (request.segmentation) {
+        writeSegmentation(request, outcome.items.back().file,
+                          progress.sub(kSegmentationStart, kReportShare));
+    }
     std::vector<std::filesystem::path> files;
     for (const SendItem& item : outcome.items) {
         files.push_back(item.file);

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -14,12 +15,13 @@
 #include "vv/pacs/Send.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/report/ReportJob.h"
+#include "vv/scene/LabelMap.h"
 #include "vv/scene/Mesh.h"
 
 namespace vv::gui {
 
 /// One DICOM instance the job makes and sends.
-enum class SendKind { SecondaryCapture, EncapsulatedPdf };
+enum class SendKind { SecondaryCapture, EncapsulatedPdf, Segmentation };
 
 struct SendItem {
     SendKind kind;
@@ -34,6 +36,10 @@ struct SendRequest {
     report::ReportJobOptions report;
     bool secondaryCapture = true;  ///< the view as DICOM Secondary Capture
     bool encapsulatedPdf = true;   ///< the PDF report as DICOM Encapsulated PDF
+    /// The segmentation of a DICOM scene as DICOM SEG, in the source series'
+    /// study and frame of reference (report.source names the series).
+    std::shared_ptr<const scene::LabelMap> segmentation;
+    std::string softwareVersion;  ///< of the SEG's equipment module
     pacs::LocalAe me;
     pacs::Node node;
     std::filesystem::path folder;  ///< where the outputs are made (exists)
@@ -50,11 +56,13 @@ struct SendOutcome {
 inline constexpr double kReportShare = 0.7;
 
 /// Makes the chosen outputs of `request.report` for `scene` in
-/// `request.folder` with `renderer` (of the calling thread) and sends them to
-/// `request.node` in one association. A network failure is returned in the
-/// outcome (failure, detail), never thrown. Throws InvalidArgumentError when
-/// nothing is chosen, what report::runReportJob throws, FormatError from
-/// sending, and CancelledError.
+/// `request.folder` with `renderer` (of the calling thread) — and the SEG,
+/// after reading the source series' headers for its study — and sends them
+/// to `request.node` in one association. A network failure is returned in
+/// the outcome (failure, detail), never thrown. Throws InvalidArgumentError
+/// when nothing is chosen, what report::runReportJob throws, what
+/// dicom::scanDicom / writeDicomSeg throw, FormatError when the source series
+/// is not found or from sending, and CancelledError.
 [[nodiscard]] SendOutcome runSendJob(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                                      const SendRequest& request, const Progress& progress);
 
