@@ -40,6 +40,8 @@ class ListenerService : public QObject {
     ~ListenerService() override;
     ListenerService(const ListenerService&) = delete;
     ListenerService& operator=(const ListenerService&) = delete;
+    ListenerService(ListenerService&&) = delete;
+    ListenerService& operator=(ListenerService&&) = delete;
 
     [[nodiscard]] State state() const noexcept { return state_; }
     /// What the status bar shows: "DICOM listener: port 11112", "DICOM

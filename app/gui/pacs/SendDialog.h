@@ -44,6 +44,8 @@ class SendDialog : public QDialog {
     ~SendDialog() override;
     SendDialog(const SendDialog&) = delete;
     SendDialog& operator=(const SendDialog&) = delete;
+    SendDialog(SendDialog&&) = delete;
+    SendDialog& operator=(SendDialog&&) = delete;
 
     /// Adds the slice with its segmentation to the PDF (DICOM data).
     void setSlice(const QImage& image, const QString& caption);
