@@ -238,6 +238,14 @@ TEST_F(PacsGuiTest, StudyPushedByOrthancAppearsInLocalStudiesWithoutUserAction) 
     browser->grab().save(QString::fromStdString((testDir() / "local-studies.png").string()));
     const auto problems = vv::test::ClippingCheck::problems(browser);
     EXPECT_TRUE(problems.empty()) << problems.front();
+
+    // New settings (as Preferences applies them) with another store: it is listed.
+    PacsSettings other = settings();
+    other.storeFolder = testDir() / "store-other";
+    listener()->apply(other);
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+    listener()->apply(settings());
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
 }
 
 TEST_F(PacsGuiTest, PushedStudyIsStillListedAfterARestartAndOpens) {

@@ -74,7 +74,11 @@ QString ListenerService::stateText() const {
 }
 
 void ListenerService::apply(const vv::gui::PacsSettings& settings) {
+    const bool newStore = storeFolder_ != settings.storeFolder;
     storeFolder_ = settings.storeFolder;
+    if (newStore) {
+        emit storeChanged();
+    }
     const std::string key = settings.listenerEnabled ? runKey(settings) : std::string();
     if (state_ == State::Running && key == runningKey_) {
         return;

@@ -65,6 +65,8 @@ class ListenerService : public QObject {
     void stateChanged(vv::gui::ListenerService::State state, const QString& text);
     /// The listener committed new instances to the store.
     void studiesChanged();
+    /// apply() changed the store folder (what Local Studies lists).
+    void storeChanged();
 
   private:
     void stop();

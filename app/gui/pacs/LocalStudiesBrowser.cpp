@@ -124,6 +124,7 @@ LocalStudiesBrowser::LocalStudiesBrowser(ListenerService& listener, QWidget* par
     resize(900, 480);
 
     connect(&listener_, &ListenerService::studiesChanged, this, &LocalStudiesBrowser::refresh);
+    connect(&listener_, &ListenerService::storeChanged, this, &LocalStudiesBrowser::refresh);
     connect(&listener_, &ListenerService::stateChanged, this,
             &LocalStudiesBrowser::updateStatusLine);
     refresh();

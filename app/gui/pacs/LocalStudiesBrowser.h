@@ -19,7 +19,8 @@ class ListenerService;
 /// series — with its series as child rows (description, modality, images).
 /// A line above says where the store is and what the listener does. The
 /// list refreshes by itself when the listener committed instances
-/// (ListenerService::studiesChanged()). Open (or a double click) asks to open
+/// (ListenerService::studiesChanged()) and when new settings name another
+/// store folder (ListenerService::storeChanged()). Open (or a double click) asks to open
 /// the chosen series, or the chosen study's folder, in the DICOM open path
 /// (openRequested()). Not modal.
 class LocalStudiesBrowser : public QDialog {
