@@ -573,6 +573,111 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::ListenerService</name>
+    <message>
+        <source>DICOM listener: port %1</source>
+        <translation>DICOM-Empfang: Port %1</translation>
+    </message>
+    <message>
+        <source>DICOM listener failed: %1</source>
+        <translation>DICOM-Empfang fehlgeschlagen: %1</translation>
+    </message>
+    <message>
+        <source>DICOM listener off</source>
+        <translation>DICOM-Empfang aus</translation>
+    </message>
+    <message>
+        <source>the study store %1 cannot be opened</source>
+        <translation>der Studienspeicher %1 lässt sich nicht öffnen</translation>
+    </message>
+    <message>
+        <source>port %1 is in use by another program</source>
+        <translation>Port %1 wird von einem anderen Programm belegt</translation>
+    </message>
+    <message>
+        <source>cannot listen on %1, port %2</source>
+        <translation>kann auf %1, Port %2 nicht empfangen</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::LocalStudiesBrowser</name>
+    <message>
+        <source>Series %L1</source>
+        <translation>Serie %L1</translation>
+    </message>
+    <message>
+        <source>1 image</source>
+        <translation>1 Bild</translation>
+    </message>
+    <message>
+        <source>%L1 images</source>
+        <translation>%L1 Bilder</translation>
+    </message>
+    <message>
+        <source>Local Studies</source>
+        <translation>Lokale Studien</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patient</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>Patienten-ID</translation>
+    </message>
+    <message>
+        <source>Study date</source>
+        <translation>Untersuchungsdatum</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Modalities</source>
+        <translation>Modalitäten</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>Serien</translation>
+    </message>
+    <message>
+        <source>&amp;Open</source>
+        <translation>Ö&amp;ffnen</translation>
+    </message>
+    <message>
+        <source>&amp;Refresh</source>
+        <translation>&amp;Aktualisieren</translation>
+    </message>
+    <message>
+        <source>The study store %1 cannot be read.</source>
+        <translation>Der Studienspeicher %1 lässt sich nicht lesen.</translation>
+    </message>
+    <message>
+        <source>1 study in %1</source>
+        <translation>1 Studie in %1</translation>
+    </message>
+    <message>
+        <source>%L1 studies in %2</source>
+        <translation>%L1 Studien in %2</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::LocalStudyActions</name>
+    <message>
+        <source>&amp;Local Studies…</source>
+        <translation>&amp;Lokale Studien…</translation>
+    </message>
+    <message>
+        <source>&amp;Send to PACS…</source>
+        <translation>An PACS &amp;senden…</translation>
+    </message>
+    <message>
+        <source>Open data first: there is nothing to send</source>
+        <translation>Zuerst Daten öffnen: Es gibt nichts zu senden</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::MainWindow</name>
     <message>
         <source>OpenGL 4.1 is not available</source>
@@ -860,6 +965,10 @@
     <message>
         <source>VSS: within %1/255, %2 ms</source>
         <translation>VSS: Fehler ≤ %1/255, %2 ms</translation>
+    </message>
+    <message>
+        <source>&amp;DICOM</source>
+        <translation>DI&amp;COM</translation>
     </message>
 </context>
 <context>
@@ -1233,6 +1342,141 @@
     <message>
         <source>unexpected error: %1</source>
         <translation>unerwarteter Fehler: %1</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::SendDialog</name>
+    <message>
+        <source>Send to PACS</source>
+        <translation>An PACS senden</translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>The view as an image (DICOM Secondary Capture)</source>
+        <translation>Die Ansicht als Bild (DICOM Secondary Capture)</translation>
+    </message>
+    <message>
+        <source>The PDF report (DICOM Encapsulated PDF)</source>
+        <translation>Der PDF-Befund (DICOM Encapsulated PDF)</translation>
+    </message>
+    <message>
+        <source>PACS node:</source>
+        <translation>PACS-Knoten:</translation>
+    </message>
+    <message>
+        <source>Send:</source>
+        <translation>Senden:</translation>
+    </message>
+    <message>
+        <source>Instance</source>
+        <translation>Instanz</translation>
+    </message>
+    <message>
+        <source>Answer of the node</source>
+        <translation>Antwort des Knotens</translation>
+    </message>
+    <message>
+        <source>No PACS node is set up yet: add one under DICOM &gt; Preferences, then send.</source>
+        <translation>Noch kein PACS-Knoten eingerichtet: Fügen Sie unter DICOM &gt; Einstellungen einen hinzu und senden Sie dann.</translation>
+    </message>
+    <message>
+        <source>&amp;Send</source>
+        <translation>&amp;Senden</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Close</source>
+        <translation>Schließen</translation>
+    </message>
+    <message>
+        <source>No temporary folder for the report: %1</source>
+        <translation>Kein temporärer Ordner für den Befund: %1</translation>
+    </message>
+    <message>
+        <source>Sending the report to %1</source>
+        <translation>Befund wird an %1 gesendet</translation>
+    </message>
+    <message>
+        <source>Sending to %1…</source>
+        <translation>Senden an %1…</translation>
+    </message>
+    <message>
+        <source>The report could not be made: %1</source>
+        <translation>Der Befund ließ sich nicht erstellen: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled: nothing more was sent.</source>
+        <translation>Abgebrochen: Es wurde nichts mehr gesendet.</translation>
+    </message>
+    <message>
+        <source>Making the report…</source>
+        <translation>Befund wird erstellt…</translation>
+    </message>
+    <message>
+        <source>Report image (Secondary Capture)</source>
+        <translation>Befundbild (Secondary Capture)</translation>
+    </message>
+    <message>
+        <source>Report PDF (Encapsulated PDF)</source>
+        <translation>Befund-PDF (Encapsulated PDF)</translation>
+    </message>
+    <message>
+        <source>Not sent</source>
+        <translation>Nicht gesendet</translation>
+    </message>
+    <message>
+        <source>Refused (status %1)</source>
+        <translation>Abgelehnt (Status %1)</translation>
+    </message>
+    <message>
+        <source>Accepted with a warning (status %1)</source>
+        <translation>Mit Warnung angenommen (Status %1)</translation>
+    </message>
+    <message>
+        <source>Accepted</source>
+        <translation>Angenommen</translation>
+    </message>
+    <message>
+        <source>%L1 of %L2 accepted by %3</source>
+        <translation>%L1 von %L2 von %3 angenommen</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: %1 refused the connection. Nobody listens at that host and port, or a firewall blocks it.</source>
+        <translation>Nichts wurde gesendet: %1 hat die Verbindung abgewiesen. Unter diesem Host und Port empfängt niemand, oder eine Firewall blockiert die Verbindung.</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: %1 rejected the association. It may not know our AE title %2, or the node&apos;s AE title is wrong.</source>
+        <translation>Nichts wurde gesendet: %1 hat die Assoziation abgelehnt. Vielleicht kennt er unseren AE-Titel %2 nicht, oder der AE-Titel des Knotens ist falsch.</translation>
+    </message>
+    <message>
+        <source>Nothing more was sent: %1 did not answer in time.</source>
+        <translation>Es wurde nichts mehr gesendet: %1 hat nicht rechtzeitig geantwortet.</translation>
+    </message>
+    <message>
+        <source>Nothing was sent: the TLS connection to %1 failed. Check the certificates of both sides.</source>
+        <translation>Nichts wurde gesendet: Die TLS-Verbindung zu %1 ist fehlgeschlagen. Prüfen Sie die Zertifikate beider Seiten.</translation>
+    </message>
+    <message>
+        <source>The transfer to %1 failed: %2</source>
+        <translation>Die Übertragung an %1 ist fehlgeschlagen: %2</translation>
+    </message>
+    <message>
+        <source>Segmentation (DICOM SEG)</source>
+        <translation>Segmentierung (DICOM SEG)</translation>
+    </message>
+    <message>
+        <source>The segmentation (DICOM SEG)</source>
+        <translation>Die Segmentierung (DICOM SEG)</translation>
+    </message>
+    <message>
+        <source>Only for data opened from DICOM and segmented</source>
+        <translation>Nur für aus DICOM geöffnete und segmentierte Daten</translation>
     </message>
 </context>
 <context>

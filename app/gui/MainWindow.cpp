@@ -38,6 +38,7 @@
 #include "gui/SeriesDialog.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/pacs/LocalStudyActions.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/DataPanel.h"
 #include "gui/panels/DisplayPanel.h"
@@ -322,6 +323,9 @@ void MainWindow::buildMenus() {
     defaults->setToolTip(tr("Display settings and panel layout as in a fresh installation"));
 
     view->addMenu(new LanguageMenu(this));  // stored in QSettings, applied at the next start
+
+    QMenu* dicom = menuBar()->addMenu(tr("&DICOM"));
+    listener_ = addLocalStudyActions(*this, *dicom);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);

@@ -36,6 +36,7 @@ struct DicomScanResult;
 
 namespace vv::gui {
 
+class ListenerService;
 class MeasureOverlay;
 class ScreenshotMode;
 class SeriesDialog;
@@ -207,6 +208,9 @@ class MainWindow : public QMainWindow {
     /// for DICOM data, the path and series it was loaded from.
     [[nodiscard]] report::ReportSource reportSource() const { return document_->reportSource(); }
     [[nodiscard]] bool isLoading() const noexcept { return document_->isLoading(); }
+    /// The DICOM listener (started from the PACS settings; DICOM menu,
+    /// gui/pacs/LocalStudyActions.h). Give it new settings with apply().
+    [[nodiscard]] ListenerService* listenerService() const noexcept { return listener_; }
     /// The message of the last load error ("file: problem"); empty if none.
     [[nodiscard]] const QString& lastError() const noexcept { return document_->lastError(); }
 
@@ -288,6 +292,7 @@ class MainWindow : public QMainWindow {
     QAction* exportReportAction_ = nullptr;
     void updateExportActions();
     ScreenshotMode* screenshot_ = nullptr;  ///< see setScreenshotTarget()
+    ListenerService* listener_ = nullptr;
 };
 
 }  // namespace vv::gui

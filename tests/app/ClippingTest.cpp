@@ -24,6 +24,8 @@
 #include "gui/ExportImageDialog.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
+#include "gui/pacs/LocalStudiesBrowser.h"
+#include "gui/pacs/SendDialog.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/SidePanel.h"
 #include "vv/demo/DemoCtSeries.h"
@@ -199,6 +201,13 @@ TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
     expectWhole(report, "report");
     vv::gui::SeriesDialog series(demoSeries(), window_.get());
     expectWhole(series, "series");
+    // DICOM > Local Studies… and Send to PACS… (issue 21).
+    vv::gui::LocalStudiesBrowser local(*window_->listenerService(), window_.get());
+    expectWhole(local, "local-studies");
+    vv::gui::PacsSettings pacs;
+    pacs.nodes.push_back({"Radiology PACS", {"ORTHANC", "pacs.example.org", 4242, {}}, true});
+    vv::gui::SendDialog send(*window_->viewer(), window_->reportSource(), pacs, window_.get());
+    expectWhole(send, "send");
     // As Help > About and Help > Keyboard Shortcuts show them.
     QMessageBox about(QMessageBox::NoIcon, QStringLiteral("About"), window_->aboutText(),
                       QMessageBox::Close, window_.get());

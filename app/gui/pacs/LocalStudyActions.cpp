@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/pacs/LocalStudyActions.h"
+
+#include <QAction>
+#include <QCoreApplication>
+#include <QLabel>
+#include <QMenu>
+#include <QPointer>
+#include <QSettings>
+#include <QStatusBar>
+#include <memory>
+
+#include "gui/MainWindow.h"
+#include "gui/pacs/ListenerService.h"
+#include "gui/pacs/LocalStudiesBrowser.h"
+#include "gui/pacs/SendDialog.h"
+
+namespace vv::gui {
+namespace {
+
+/// The window's one Local Studies browser, made on first use.
+void showBrowser(MainWindow& window, ListenerService& listener,
+                 QPointer<LocalStudiesBrowser>& browser) {
+    if (browser.isNull()) {
+        browser = new LocalStudiesBrowser(listener, &window);
+        QObject::connect(browser.data(), &LocalStudiesBrowser::openRequested, &window,
+                         [&window](const QString& folder) { window.openDicom(folder); });
+    }
+    browser->show();
+    browser->raise();
+    browser->activateWindow();
+}
+
+/// A Send dialog for the scene on screen (deleted when closed).
+void showSendDialog(MainWindow& window) {
+    auto* dialog = new SendDialog(*window.viewer(), window.reportSource(),
+                                  readPacsSettings(QSettings()), &window);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    if (const auto slice = window.sliceWorkspace()->reportSlice()) {
+        dialog->setSlice(slice->first, slice->second);
+    }
+    dialog->setSegmentation(window.document()->labelMap());
+    dialog->show();
+}
+
+}  // namespace
+
+ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu) {
+    auto* listener = new ListenerService(&window);
+    listener->setObjectName(QStringLiteral("listenerService"));
+    auto* indicator = new QLabel(&window);
+    indicator->setObjectName(QStringLiteral("listenerIndicator"));
+    window.statusBar()->addPermanentWidget(indicator);
+    QObject::connect(
+        listener, &ListenerService::stateChanged, indicator,
+        [indicator](ListenerService::State, const QString& text) { indicator->setText(text); });
+
+    auto browser = std::make_shared<QPointer<LocalStudiesBrowser>>();
+    QAction* local = menu.addAction(
+        QCoreApplication::translate("vv::gui::LocalStudyActions", "&Local Studies…"), &window,
+        [&window, listener, browser] { showBrowser(window, *listener, *browser); });
+    local->setObjectName(QStringLiteral("localStudies"));
+
+    QAction* send =
+        menu.addAction(QCoreApplication::translate("vv::gui::LocalStudyActions", "&Send to PACS…"),
+                       &window, [&window] { showSendDialog(window); });
+    send->setObjectName(QStringLiteral("sendToPacs"));
+    const auto updateSend = [&window, send] {
+        const bool shown = window.viewer()->scene() != nullptr;
+        send->setEnabled(shown);
+        send->setToolTip(
+            shown ? QString()
+                  : QCoreApplication::translate("vv::gui::LocalStudyActions",
+                                                "Open data first: there is nothing to send"));
+    };
+    QObject::connect(&window, &MainWindow::sceneShown, send, updateSend);
+    updateSend();
+
+    listener->apply(readPacsSettings(QSettings()));
+    indicator->setText(listener->stateText());
+    return listener;
+}
+
+}  // namespace vv::gui

@@ -1,0 +1,22 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// The main window's DICOM listener, Local studies and Send to PACS: menu
+// entries, the status bar indicator and their wiring, kept out of MainWindow.
+
+class QMenu;
+
+namespace vv::gui {
+
+class ListenerService;
+class MainWindow;
+
+/// Adds "Local Studies…" and "Send to PACS…" (enabled while a scene is
+/// shown, object name "sendToPacs") to `menu`; creates the window's
+/// ListenerService (a child of `window`), started from the PACS settings in
+/// QSettings, with its state in a status bar label ("listenerIndicator").
+/// The Local Studies browser (one per window) opens what the user picks with
+/// window.openDicom(). Returns the listener service.
+ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu);
+
+}  // namespace vv::gui

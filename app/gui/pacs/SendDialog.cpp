@@ -1,0 +1,296 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/pacs/SendDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QCoreApplication>
+#include <QDialogButtonBox>
+#include <QFormLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QTemporaryDir>
+#include <QTreeWidget>
+#include <QVBoxLayout>
+#include <cmath>
+#include <utility>
+
+#include "gui/ExportWorker.h"
+#include "gui/ReportDialog.h"
+#include "gui/ViewerWidget.h"
+
+namespace vv::gui {
+namespace {
+
+constexpr int kWarningFirst = 0xB000;  ///< DIMSE warning statuses: 0xB000..0xBFFF
+constexpr int kWarningLast = 0xBFFF;
+
+QString qs(const std::string& s) {
+    return QString::fromStdString(s);
+}
+
+/// "0xA700": the DIMSE status as the standard writes it (a code, not a number).
+QString statusCode(std::uint16_t status) {
+    return QStringLiteral("0x%1").arg(status, 4, 16, QLatin1Char('0'));
+}
+
+QString itemName(SendKind kind) {
+    switch (kind) {
+        case SendKind::SecondaryCapture:
+            return SendDialog::tr("Report image (Secondary Capture)");
+        case SendKind::EncapsulatedPdf:
+            return SendDialog::tr("Report PDF (Encapsulated PDF)");
+        case SendKind::Segmentation:
+            break;
+    }
+    return SendDialog::tr("Segmentation (DICOM SEG)");
+}
+
+}  // namespace
+
+SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
+                       PacsSettings settings, QWidget* parent)
+    : QDialog(parent), viewer_(viewer), source_(std::move(source)), settings_(std::move(settings)) {
+    setObjectName(QStringLiteral("sendDialog"));
+    setWindowTitle(tr("Send to PACS"));
+    node_ = new QComboBox(this);
+    node_->setObjectName(QStringLiteral("sendNode"));
+    for (const PacsNode& node : settings_.nodes) {
+        node_->addItem(tr("%1 (%2)").arg(qs(node.name), qs(pacs::describe(node.node))),
+                       qs(node.name));
+    }
+    sc_ = new QCheckBox(tr("The view as an image (DICOM Secondary Capture)"), this);
+    sc_->setObjectName(QStringLiteral("sendSecondaryCapture"));
+    sc_->setChecked(true);
+    pdf_ = new QCheckBox(tr("The PDF report (DICOM Encapsulated PDF)"), this);
+    pdf_->setObjectName(QStringLiteral("sendPdf"));
+    pdf_->setChecked(true);
+    seg_ = new QCheckBox(tr("The segmentation (DICOM SEG)"), this);
+    seg_->setObjectName(QStringLiteral("sendSegmentation"));
+    seg_->setToolTip(tr("Only for data opened from DICOM and segmented"));
+    auto* what = new QVBoxLayout;
+    what->addWidget(sc_);
+    what->addWidget(pdf_);
+    what->addWidget(seg_);
+    auto* form = new QFormLayout;
+    form->addRow(tr("PACS node:"), node_);
+    form->addRow(tr("Send:"), what);
+
+    progress_ = new QProgressBar(this);
+    progress_->setObjectName(QStringLiteral("sendProgress"));
+    progress_->setRange(0, 1000);
+    progress_->setTextVisible(false);
+    progress_->hide();
+    stage_ = new QLabel(this);
+    stage_->hide();
+    results_ = new QTreeWidget(this);
+    results_->setObjectName(QStringLiteral("sendResults"));
+    results_->setColumnCount(2);
+    results_->setHeaderLabels({tr("Instance"), tr("Answer of the node")});
+    results_->header()->setSectionResizeMode(0, QHeaderView::ResizeToContents);
+    results_->setRootIsDecorated(false);
+    results_->setSelectionMode(QAbstractItemView::NoSelection);
+    summary_ = new QLabel(this);
+    summary_->setObjectName(QStringLiteral("sendSummary"));
+    summary_->setWordWrap(true);
+    summary_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    if (settings_.nodes.empty()) {
+        summary_->setText(
+            tr("No PACS node is set up yet: add one under DICOM > Preferences, then send."));
+    }
+
+    auto* buttons = new QDialogButtonBox(this);
+    send_ = buttons->addButton(tr("&Send"), QDialogButtonBox::AcceptRole);
+    send_->setObjectName(QStringLiteral("sendButton"));
+    close_ = buttons->addButton(QDialogButtonBox::Close);
+    connect(send_, &QPushButton::clicked, this, &SendDialog::send);
+    connect(close_, &QPushButton::clicked, this, &SendDialog::reject);
+    connect(sc_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
+    connect(pdf_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
+    connect(seg_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(form);
+    layout->addWidget(progress_);
+    layout->addWidget(stage_);
+    layout->addWidget(results_, 1);
+    layout->addWidget(summary_);
+    layout->addWidget(buttons);
+    resize(640, 420);
+    updateButtons();
+}
+
+SendDialog::~SendDialog() {
+    delete worker_;  // cancels and waits for the step running
+}
+
+void SendDialog::setSlice(const QImage& image, const QString& caption) {
+    slice_ = image;
+    sliceCaption_ = caption;
+}
+
+void SendDialog::setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap) {
+    labelMap_ = source_.dicomPath.empty() ? nullptr : std::move(labelMap);
+    seg_->setChecked(labelMap_ != nullptr);
+    updateButtons();
+}
+
+void SendDialog::updateButtons() {
+    const bool sending = worker_ != nullptr;
+    const bool segmentation = labelMap_ != nullptr && seg_->isChecked();
+    send_->setEnabled(!sending && node_->count() > 0 &&
+                      (sc_->isChecked() || pdf_->isChecked() || segmentation));
+    node_->setEnabled(!sending);
+    sc_->setEnabled(!sending);
+    pdf_->setEnabled(!sending);
+    seg_->setEnabled(!sending && labelMap_ != nullptr);
+    close_->setText(sending ? tr("Cancel") : tr("Close"));
+}
+
+void SendDialog::send() {
+    const PacsNode* node = findNode(settings_, node_->currentData().toString().toStdString());
+    if (worker_ != nullptr || node == nullptr || !viewer_.scene()) {
+        return;
+    }
+    folder_ = std::make_unique<QTemporaryDir>();
+    if (!folder_->isValid()) {
+        finish(tr("No temporary folder for the report: %1").arg(folder_->errorString()));
+        return;
+    }
+    SendRequest request;
+    report::ReportJobOptions& job = request.report;
+    const QSize size = viewPixelSize(viewer_);
+    job.view = currentViewOptions(viewer_, size.width(), size.height());
+    job.viewCaption =
+        QCoreApplication::translate("vv::gui::ReportDialog", "The view as shown on screen")
+            .toStdString();
+    job.viewDescription =
+        QCoreApplication::translate("vv::gui::ReportDialog", "as shown on screen").toStdString();
+    job.slice = slice_;
+    job.sliceCaption = sliceCaption_.toStdString();
+    job.legends = viewer_.legendsVisible();
+    job.disclaimer = ReportDialog::disclaimer(QSettings()).toStdString();
+    job.source = source_;
+    request.secondaryCapture = sc_->isChecked();
+    request.encapsulatedPdf = pdf_->isChecked();
+    if (labelMap_ != nullptr && seg_->isChecked()) {
+        request.segmentation = labelMap_;
+    }
+    request.softwareVersion = VV_VERSION;
+    request.me = settings_.me;
+    request.node = node->node;
+    request.folder = folder_->path().toStdString();
+
+    const QString peer = qs(pacs::describe(node->node));
+    auto outcome = std::make_shared<SendOutcome>();
+    worker_ = new ExportWorker(
+        tr("Sending the report to %1").arg(peer),
+        [scene = viewer_.scene(), request, outcome](render::OffscreenRenderer& renderer,
+                                                    const Progress& progress) {
+            *outcome = runSendJob(renderer, *scene, request, progress);
+            return QString();
+        },
+        this);
+    connect(worker_, &ExportWorker::progressChanged, this,
+            [this, peer](double fraction, const QString& stage) {
+                progress_->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
+                stage_->setText(fraction < kReportShare ? stage : tr("Sending to %1…").arg(peer));
+            });
+    connect(worker_, &ExportWorker::succeeded, this,
+            [this, outcome, peer] { showOutcome(*outcome, peer); });
+    connect(worker_, &ExportWorker::failed, this, [this](const QString& message) {
+        finish(tr("The report could not be made: %1").arg(message));
+    });
+    connect(worker_, &ExportWorker::cancelled, this,
+            [this] { finish(tr("Cancelled: nothing more was sent.")); });
+    connect(worker_, &ExportWorker::finished, this, [this] {
+        worker_->deleteLater();
+        worker_ = nullptr;
+        progress_->hide();
+        stage_->hide();
+        updateButtons();
+        emit sendFinished();
+    });
+    results_->clear();
+    summary_->clear();
+    progress_->setValue(0);
+    progress_->show();
+    stage_->setText(tr("Making the report…"));
+    stage_->show();
+    worker_->start();
+    updateButtons();
+}
+
+void SendDialog::cancelSend() {
+    if (worker_ != nullptr) {
+        worker_->cancel();
+    }
+}
+
+void SendDialog::reject() {
+    if (worker_ != nullptr) {
+        cancelSend();  // Cancel while sending; the dialog stays to show the outcome
+        return;
+    }
+    QDialog::reject();
+}
+
+void SendDialog::showOutcome(const SendOutcome& outcome, const QString& peer) {
+    results_->clear();
+    std::size_t accepted = 0;
+    for (std::size_t i = 0; i < outcome.items.size(); ++i) {
+        auto* row = new QTreeWidgetItem(results_);
+        row->setText(0, itemName(outcome.items[i].kind));
+        QString answer = tr("Not sent");
+        if (i < outcome.statuses.size()) {
+            const pacs::SendStatus& status = outcome.statuses[i];
+            accepted += status.accepted ? 1 : 0;
+            answer = !status.accepted ? tr("Refused (status %1)").arg(statusCode(status.status))
+                     : status.status >= kWarningFirst && status.status <= kWarningLast
+                         ? tr("Accepted with a warning (status %1)").arg(statusCode(status.status))
+                         : tr("Accepted");
+        }
+        row->setText(1, answer);
+    }
+    if (outcome.failure != SendFailure::None) {
+        finish(failureText(outcome, peer));
+        return;
+    }
+    finish(tr("%L1 of %L2 accepted by %3")
+               .arg(static_cast<qulonglong>(accepted))
+               .arg(static_cast<qulonglong>(outcome.items.size()))
+               .arg(peer));
+}
+
+QString SendDialog::failureText(const SendOutcome& outcome, const QString& peer) const {
+    switch (outcome.failure) {
+        case SendFailure::Refused:
+            return tr("Nothing was sent: %1 refused the connection. Nobody listens at that host "
+                      "and port, or a firewall blocks it.")
+                .arg(peer);
+        case SendFailure::Rejected:
+            return tr("Nothing was sent: %1 rejected the association. It may not know our AE "
+                      "title %2, or the node's AE title is wrong.")
+                .arg(peer, qs(settings_.me.aeTitle));
+        case SendFailure::Timeout:
+            return tr("Nothing more was sent: %1 did not answer in time.").arg(peer);
+        case SendFailure::Tls:
+            return tr("Nothing was sent: the TLS connection to %1 failed. Check the "
+                      "certificates of both sides.")
+                .arg(peer);
+        case SendFailure::PeerFailed:
+            return tr("The transfer to %1 failed: %2").arg(peer, qs(outcome.detail));
+        case SendFailure::None:
+            break;
+    }
+    return {};
+}
+
+void SendDialog::finish(const QString& summary) {
+    summary_->setText(summary);
+}
+
+}  // namespace vv::gui

@@ -1,0 +1,401 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The app's DICOM listener, the Local Studies browser and Send to PACS
+// (issue 21) against a real Orthanc started by the test on free ports
+// (tests/pacs/OrthancServer.h): what the user sees in the browser, the
+// status bar and the Send dialog.
+#include <arpa/inet.h>
+#include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <QAction>
+#include <QCheckBox>
+#include <QLabel>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QSettings>
+#include <QTreeWidget>
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <set>
+#include <string>
+
+#include "ClippingCheck.h"
+#include "GuiFixture.h"
+#include "OrthancServer.h"
+#include "SyntheticCta.h"
+#include "gui/SeriesDialog.h"
+#include "gui/pacs/ListenerService.h"
+#include "gui/pacs/LocalStudiesBrowser.h"
+#include "gui/pacs/PacsSettings.h"
+#include "gui/pacs/SendDialog.h"
+#include "vv/dicom/DicomSeg.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/pacs/Find.h"
+#include "vv/pacs/LocalStore.h"
+#include "vv/pacs/PacsError.h"
+#include "vv/pacs/Retrieve.h"
+#include "vv/pacs/Send.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using vv::gui::ListenerService;
+using vv::gui::LocalStudiesBrowser;
+using vv::gui::MainWindow;
+using vv::gui::PacsSettings;
+using vv::gui::SendDialog;
+using vv::test::OrthancServer;
+using vv::test::waitUntil;
+
+constexpr const char* kOurAe = "VVGUI";
+constexpr const char* kPatientId = "VV-GUI-1";
+constexpr int kSlices = 48;
+
+vv::pacs::LocalAe me() {
+    return vv::pacs::LocalAe{kOurAe, vv::pacs::Timeouts{2, 5, 10}};
+}
+
+fs::path testDir() {
+    return vv::test::panelTestDir() / "pacs";
+}
+
+/// The synthetic CTA (64 x 64 x 48, a vessel tree) as a CT series in `folder`.
+std::vector<fs::path> writeCta(const fs::path& folder, const std::string& patientId) {
+    fs::remove_all(folder);
+    const auto cta = vv::test::makeSyntheticCta({64, 64, kSlices}, 3);
+    vv::dicom::CtSeriesWriteOptions options;
+    options.patientId = patientId;
+    options.patientName = "Test^Vessel";
+    options.studyDescription = "CTA run-off";
+    vv::dicom::writeCtSeries(folder, cta.volume, options);
+    std::vector<fs::path> files;
+    for (const auto& entry : fs::directory_iterator(folder)) {
+        files.push_back(entry.path());
+    }
+    return files;
+}
+
+/// All texts of `item`'s columns, "|"-joined, for failure messages and checks.
+std::string rowText(const QTreeWidgetItem* item) {
+    QStringList texts;
+    for (int c = 0; c < item->columnCount(); ++c) {
+        texts << item->text(c);
+    }
+    return texts.join(QLatin1Char('|')).toStdString();
+}
+
+class PacsGuiTest : public vv::test::GuiFixture {
+  protected:
+    static void SetUpTestSuite() {
+        GuiFixture::SetUpTestSuite();
+        fs::remove_all(testDir());
+        scpPort_ = vv::test::freePort();
+        orthanc_ = std::make_unique<OrthancServer>(kOurAe, scpPort_);
+        const auto statuses =
+            vv::pacs::sendFiles(me(), orthanc_->node(), writeCta(testDir() / "cta", kPatientId));
+        ASSERT_EQ(statuses.size(), static_cast<std::size_t>(kSlices));
+        vv::pacs::StudyQuery query;
+        query.patientId = kPatientId;
+        const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
+        ASSERT_EQ(studies.size(), 1U);
+        studyUid_ = studies[0].studyInstanceUid;
+    }
+    static void TearDownTestSuite() {
+        orthanc_.reset();
+        std::error_code ec;
+        fs::remove_all(testDir(), ec);
+        GuiFixture::TearDownTestSuite();
+    }
+
+    /// Settings with our listener on scpPort_ (when `listen`), Orthanc as
+    /// the one node (allowed to push when `allowPush`), a fresh store.
+    PacsSettings settings(bool listen = true, bool allowPush = true) {
+        PacsSettings s;
+        s.me = me();
+        s.listenerEnabled = listen;
+        s.listenerPort = scpPort_;
+        vv::gui::PacsNode node;
+        node.name = "Orthanc";
+        node.node = orthanc_->node();
+        node.allowPush = allowPush;
+        s.nodes.push_back(node);
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        s.storeFolder = testDir() / (std::string("store-") + info->name());
+        return s;
+    }
+
+    /// A new main window (the old one closed) that starts with `s`.
+    void restartWith(const PacsSettings& s) {
+        window_.reset();
+        QSettings store;
+        vv::gui::writePacsSettings(s, store);
+        store.sync();
+        GuiFixture::SetUp();
+    }
+
+    void TearDown() override {
+        GuiFixture::TearDown();
+        QSettings().remove(QStringLiteral("pacs"));
+    }
+
+    [[nodiscard]] ListenerService* listener() const { return window_->listenerService(); }
+    [[nodiscard]] QString indicatorText() const {
+        return window_->findChild<QLabel*>(QStringLiteral("listenerIndicator"))->text();
+    }
+
+    /// DICOM > Local Studies…, as the user opens it.
+    LocalStudiesBrowser* openBrowser() {
+        window_->findChild<QAction*>(QStringLiteral("localStudies"))->trigger();
+        auto* browser = window_->findChild<LocalStudiesBrowser*>();
+        EXPECT_NE(browser, nullptr);
+        if (browser != nullptr) {
+            EXPECT_TRUE(waitUntil([&] { return browser->isVisible(); }, 5000));
+        }
+        return browser;
+    }
+
+    /// Orthanc pushes the study to our listener (C-MOVE with us as destination).
+    static void orthancPushesTheStudy() {
+        const auto result = vv::pacs::moveTo(kOurAe, me(), orthanc_->node(),
+                                             vv::pacs::RetrieveRequest{studyUid_, ""});
+        EXPECT_EQ(result.instances, static_cast<std::size_t>(kSlices));
+    }
+
+    /// Opens `folder` as the user does (the series chooser accepted); true
+    /// once a scene is shown.
+    bool openDicomAndAccept(const std::function<void()>& open) {
+        QPointer<vv::gui::SeriesDialog> dialog;
+        QObject::connect(window_.get(), &MainWindow::seriesDialogShown, window_.get(),
+                         [&dialog](vv::gui::SeriesDialog* d) { dialog = d; });
+        bool shown = false;
+        QObject::connect(window_.get(), &MainWindow::sceneShown, window_.get(),
+                         [&shown, this] { shown = window_->viewer()->scene() != nullptr; });
+        open();
+        if (!waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); })) {
+            return false;
+        }
+        if (dialog.isNull()) {
+            ADD_FAILURE() << window_->lastError().toStdString();
+            return false;
+        }
+        dialog->accept();
+        const bool ok =
+            waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000) && shown;
+        EXPECT_TRUE(ok) << window_->lastError().toStdString();
+        return ok;
+    }
+
+    /// DICOM > Send to PACS…, Send, and the wait for the outcome.
+    SendDialog* sendReport() {
+        QAction* action = window_->findChild<QAction*>(QStringLiteral("sendToPacs"));
+        EXPECT_TRUE(action->isEnabled());
+        action->trigger();
+        auto* dialog = window_->findChild<SendDialog*>();
+        if (dialog == nullptr) {
+            ADD_FAILURE() << "no Send dialog";
+            return nullptr;
+        }
+        EXPECT_TRUE(dialog->sendButton()->isEnabled());
+        dialog->sendButton()->click();
+        EXPECT_TRUE(dialog->isSending());
+        EXPECT_TRUE(waitUntil([&] { return !dialog->isSending(); }, 55000)) << "the send hangs";
+        return dialog;
+    }
+
+    static inline std::unique_ptr<OrthancServer> orthanc_;
+    static inline std::uint16_t scpPort_ = 0;
+    static inline std::string studyUid_;
+};
+
+TEST_F(PacsGuiTest, StudyPushedByOrthancAppearsInLocalStudiesWithoutUserAction) {
+    restartWith(settings());
+    EXPECT_EQ(listener()->state(), ListenerService::State::Running);
+    EXPECT_EQ(indicatorText(), QStringLiteral("DICOM listener: port %1").arg(scpPort_));
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+
+    orthancPushesTheStudy();
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 1; }, 20000))
+        << "the pushed study never appeared";
+    const QTreeWidgetItem* study = browser->tree()->topLevelItem(0);
+    const auto stored = vv::pacs::LocalStore(listener()->storeFolder()).studies();
+    ASSERT_EQ(stored.size(), 1U);
+    const QDate date =
+        QDate::fromString(QString::fromStdString(stored[0].studyDate), QStringLiteral("yyyyMMdd"));
+    ASSERT_TRUE(date.isValid()) << stored[0].studyDate;
+    EXPECT_EQ(rowText(study), "Test, Vessel|VV-GUI-1|" +
+                                  QLocale().toString(date, QLocale::ShortFormat).toStdString() +
+                                  "|CTA run-off|CT|1");
+    ASSERT_EQ(study->childCount(), 1);
+    EXPECT_EQ(rowText(study->child(0)), "|||synthetic CTA|CT|48 images");
+    EXPECT_NE(browser->statusLine()->text().indexOf(QStringLiteral("1 study")), -1)
+        << browser->statusLine()->text().toStdString();
+    browser->grab().save(QString::fromStdString((testDir() / "local-studies.png").string()));
+    const auto problems = vv::test::ClippingCheck::problems(browser);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+
+    // New settings (as Preferences applies them) with another store: it is listed.
+    PacsSettings other = settings();
+    other.storeFolder = testDir() / "store-other";
+    listener()->apply(other);
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+    listener()->apply(settings());
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
+}
+
+TEST_F(PacsGuiTest, PushedStudyIsStillListedAfterARestartAndOpens) {
+    const PacsSettings s = settings();
+    restartWith(s);
+    orthancPushesTheStudy();
+    ASSERT_TRUE(waitUntil([&] { return listener()->committedInstances() == kSlices; }, 20000));
+
+    restartWith(s);  // the app closed and started again
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 1);
+    QTreeWidgetItem* series = browser->tree()->topLevelItem(0)->child(0);
+    ASSERT_NE(series, nullptr);
+    browser->tree()->setCurrentItem(series);
+    ASSERT_TRUE(browser->openButton()->isEnabled());
+    ASSERT_TRUE(openDicomAndAccept([&] { browser->openButton()->click(); }));
+    EXPECT_FALSE(window_->viewer()->scene()->meshes.empty());
+    EXPECT_EQ(window_->volume()->dims().z, kSlices);
+}
+
+TEST_F(PacsGuiTest, UnknownNodePushingIsRefusedAndNothingAppears) {
+    restartWith(settings());
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    const vv::pacs::Node ourListener{kOurAe, "127.0.0.1", scpPort_, {}};
+    const vv::pacs::LocalAe stranger{"STRANGER", vv::pacs::Timeouts{2, 5, 10}};
+    EXPECT_THROW(
+        vv::pacs::sendFiles(stranger, ourListener, writeCta(testDir() / "stranger", "VV-X")),
+        vv::pacs::AssociationRejectedError);
+    ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
+    waitUntil([] { return false; }, 1000);  // time for a refresh that must not come
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+    browser->refresh();
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+}
+
+TEST_F(PacsGuiTest, NodeNotAllowedToPushIsRefused) {
+    restartWith(settings(true, false));
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    EXPECT_THROW(orthancPushesTheStudy(), vv::pacs::NetworkError);
+    ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() >= 1; }, 5000));
+    browser->refresh();
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+}
+
+TEST_F(PacsGuiTest, PortInUseIsAClearStateAndTheAppKeepsWorking) {
+    const PacsSettings s = settings();
+    const int blocker = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in where{};
+    where.sin_family = AF_INET;
+    where.sin_port = htons(s.listenerPort);
+    where.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    // NOLINTNEXTLINE(cppcoreguidelines-pro-type-reinterpret-cast): the sockets API
+    ASSERT_EQ(::bind(blocker, reinterpret_cast<const sockaddr*>(&where), sizeof where), 0);
+    ASSERT_EQ(::listen(blocker, 1), 0);
+    restartWith(s);
+    EXPECT_EQ(listener()->state(), ListenerService::State::Failed);
+    EXPECT_EQ(indicatorText(),
+              QStringLiteral("DICOM listener failed: port %1 is in use by another program")
+                  .arg(s.listenerPort));
+    ::close(blocker);
+    // The port is free again: applying the settings (as Preferences does) starts it.
+    listener()->apply(s);
+    EXPECT_EQ(listener()->state(), ListenerService::State::Running);
+    EXPECT_EQ(indicatorText(), QStringLiteral("DICOM listener: port %1").arg(s.listenerPort));
+    PacsSettings off = s;
+    off.listenerEnabled = false;
+    listener()->apply(off);
+    EXPECT_EQ(indicatorText(), QStringLiteral("DICOM listener off"));
+}
+
+TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
+    restartWith(settings(false));
+    const fs::path cta = testDir() / "cta-send";
+    writeCta(cta, "VV-GUI-SEND");
+    ASSERT_TRUE(
+        openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
+    SendDialog* dialog = sendReport();
+    ASSERT_NE(dialog, nullptr);
+    const QString peer = QString::fromStdString(vv::pacs::describe(orthanc_->node()));
+    EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("3 of 3 accepted by %1").arg(peer));
+    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 3);
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(0),
+              QStringLiteral("Report image (Secondary Capture)"));
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(1)->text(0),
+              QStringLiteral("Report PDF (Encapsulated PDF)"));
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(2)->text(0),
+              QStringLiteral("Segmentation (DICOM SEG)"));
+    for (int row = 0; row < 3; ++row) {
+        EXPECT_EQ(dialog->resultTable()->topLevelItem(row)->text(1), QStringLiteral("Accepted"));
+    }
+    dialog->grab().save(QString::fromStdString((testDir() / "send.png").string()));
+    const auto problems = vv::test::ClippingCheck::problems(dialog);
+    EXPECT_TRUE(problems.empty()) << problems.front();
+
+    // Orthanc has the report's series in the CTA's study.
+    vv::pacs::StudyQuery query;
+    query.patientId = "VV-GUI-SEND";
+    const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
+    ASSERT_EQ(studies.size(), 1U);
+    std::set<std::string> modalities;
+    std::string segSeries;
+    for (const auto& series : vv::pacs::findSeries(
+             me(), orthanc_->node(), vv::pacs::SeriesQuery{studies[0].studyInstanceUid, "", ""})) {
+        modalities.insert(series.modality);
+        segSeries = series.modality == "SEG" ? series.seriesInstanceUid : segSeries;
+    }
+    EXPECT_EQ(modalities, (std::set<std::string>{"DOC", "OT", "SEG"}))
+        << "the report's Secondary Capture (OT), PDF (DOC) and the SEG are not in Orthanc";
+    // The SEG in Orthanc holds the segmentation on screen: its voxels.
+    ASSERT_FALSE(segSeries.empty());
+    vv::pacs::LocalStore retrieved(testDir() / "seg-retrieved");
+    (void)vv::pacs::getInto(retrieved, me(), orthanc_->node(),
+                            vv::pacs::RetrieveRequest{studies[0].studyInstanceUid, segSeries});
+    const auto stored = retrieved.studies();
+    ASSERT_EQ(stored.size(), 1U);
+    ASSERT_EQ(stored[0].series.size(), 1U);
+    const fs::path segFile = fs::directory_iterator(stored[0].series[0].folder)->path();
+    std::size_t inPacs = 0;
+    for (const auto& map : vv::dicom::loadDicomSegLabelMaps(segFile)) {
+        inPacs += static_cast<std::size_t>(std::count_if(map.labels.begin(), map.labels.end(),
+                                                         [](std::uint8_t l) { return l != 0; }));
+    }
+    const auto& shown = window_->document()->labelMap()->labels;
+    EXPECT_EQ(inPacs, static_cast<std::size_t>(std::count_if(
+                          shown.begin(), shown.end(), [](std::uint8_t l) { return l != 0; })));
+    EXPECT_GT(inPacs, 0U);
+}
+
+TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
+    PacsSettings s = settings(false);
+    s.nodes[0].node.port = vv::test::freePort();  // nobody listens there
+    restartWith(s);
+    window_->setScene(vv::test::makeTubeScene(), QStringLiteral("tube"));
+    SendDialog* dialog = sendReport();
+    ASSERT_NE(dialog, nullptr);
+    const QString peer = QString::fromStdString(vv::pacs::describe(s.nodes[0].node));
+    EXPECT_EQ(dialog->summaryLabel()->text(),
+              QStringLiteral("Nothing was sent: %1 refused the connection. Nobody listens at "
+                             "that host and port, or a firewall blocks it.")
+                  .arg(peer));
+    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);  // meshes: no SEG to send
+    EXPECT_FALSE(dialog->segmentationBox()->isEnabled());
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(1), QStringLiteral("Not sent"));
+    // The app keeps working: the dialog can send again, the window renders.
+    EXPECT_TRUE(dialog->sendButton()->isEnabled());
+    EXPECT_TRUE(dialog->isVisible());
+    EXPECT_TRUE(waitForFrames());
+}
+
+}  // namespace
