@@ -1,0 +1,211 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The store's size limit: after a commit over the limit whole studies go,
+// least recently stored or opened first; an open study stays, also when
+// another process holds it open (vv_store_lease_helper); the study just
+// committed stays even when it alone is over the limit; and afterwards the
+// index and the disk agree.
+#include <gtest/gtest.h>
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <string>
+
+#include "vv/core/Error.h"
+#include "vv/pacs/LocalStore.h"
+
+namespace fs = std::filesystem;
+using namespace vv::pacs;
+
+namespace {
+
+constexpr std::uint64_t kStudyBytes = 100000;
+
+fs::path freshFolder(const std::string& name) {
+    const fs::path folder =
+        fs::path(VV_TEST_TMP) / ("store-limit-" + std::to_string(::getpid())) / name;
+    fs::remove_all(folder);
+    return folder;
+}
+
+/// Commits a study "1.2.<n>" of one instance of `bytes` bytes.
+void commitStudy(const LocalStore& store, int n, std::uint64_t bytes = kStudyBytes) {
+    LocalStore::Transaction t = store.begin();
+    const fs::path staged = t.stagingPath();
+    std::ofstream(staged) << std::string(bytes, 'x');
+    InstanceFields f;
+    f.studyInstanceUid = "1.2." + std::to_string(n);
+    f.seriesInstanceUid = f.studyInstanceUid + ".1";
+    f.sopInstanceUid = f.seriesInstanceUid + ".1";
+    f.patientId = "P" + std::to_string(n);
+    f.studyDate = "20240101";  // one date: the order is the time of use, not the study date
+    t.add(staged, f);
+    t.commit();
+}
+
+std::string uid(int n) {
+    return "1.2." + std::to_string(n);
+}
+
+std::set<std::string> indexed(const LocalStore& store) {
+    std::set<std::string> uids;
+    for (const StoredStudy& s : store.studies()) {
+        uids.insert(s.studyInstanceUid);
+    }
+    return uids;
+}
+
+/// Every indexed study has its files, and every study folder is indexed.
+void expectIndexAndDiskAgree(const LocalStore& store) {
+    const std::set<std::string> uids = indexed(store);
+    for (const StoredStudy& s : store.studies()) {
+        for (const StoredSeries& series : s.series) {
+            int files = 0;
+            for (const auto& e : fs::directory_iterator(series.folder)) {
+                files += e.path().extension() == ".dcm" ? 1 : 0;
+            }
+            EXPECT_EQ(files, series.instances) << s.studyInstanceUid;
+        }
+    }
+    std::set<std::string> folders;
+    for (const auto& e : fs::directory_iterator(store.root())) {
+        if (e.is_directory() && e.path().filename().string()[0] != '.') {
+            folders.insert(e.path().filename().string());
+        }
+    }
+    EXPECT_EQ(folders, uids);
+    EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
+}
+
+/// Another process holding `studyUid` open until stop().
+class LeaseInAnotherProcess {
+  public:
+    LeaseInAnotherProcess(const fs::path& root, const std::string& studyUid) {
+        int toChild[2];
+        int fromChild[2];
+        if (::pipe(toChild) != 0 || ::pipe(fromChild) != 0) {
+            throw std::runtime_error("pipe");
+        }
+        pid_ = ::fork();
+        if (pid_ == 0) {
+            ::dup2(toChild[0], STDIN_FILENO);
+            ::dup2(fromChild[1], STDOUT_FILENO);
+            ::close(toChild[1]);
+            ::close(fromChild[0]);
+            ::execl(VV_STORE_LEASE_HELPER, "vv_store_lease_helper", root.c_str(), studyUid.c_str(),
+                    static_cast<char*>(nullptr));
+            ::_exit(127);
+        }
+        ::close(toChild[0]);
+        ::close(fromChild[1]);
+        toChild_ = toChild[1];
+        char text[16] = {};
+        const ssize_t n = ::read(fromChild[0], text, sizeof text - 1);
+        ::close(fromChild[0]);
+        leased_ = n > 0 && std::string(text).starts_with("leased");
+    }
+    ~LeaseInAnotherProcess() { stop(); }
+    LeaseInAnotherProcess(const LeaseInAnotherProcess&) = delete;
+    LeaseInAnotherProcess& operator=(const LeaseInAnotherProcess&) = delete;
+    [[nodiscard]] bool leased() const { return leased_; }
+    void stop() {
+        if (pid_ > 0) {
+            ::close(toChild_);
+            int status = 0;
+            ::waitpid(pid_, &status, 0);
+            pid_ = -1;
+        }
+    }
+
+  private:
+    pid_t pid_ = -1;
+    int toChild_ = -1;
+    bool leased_ = false;
+};
+
+}  // namespace
+
+TEST(StoreLimitTest, LeastRecentlyStoredOrOpenedStudiesGoFirst) {
+    LocalStore store(freshFolder("order"));
+    store.setSizeLimit(kStudyBytes * 5 / 2);  // room for two studies
+    commitStudy(store, 1);
+    commitStudy(store, 2);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1), uid(2)}));
+    commitStudy(store, 3);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(2), uid(3)})) << "the oldest went";
+    { const auto opened = store.open(uid(2)); }  // opened: now used more recently than 3
+    commitStudy(store, 4);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(2), uid(4)}));
+    EXPECT_LE(store.sizeOnDisk(), store.sizeLimit());
+    expectIndexAndDiskAgree(store);
+}
+
+TEST(StoreLimitTest, AnOpenStudyIsNeverRemoved) {
+    LocalStore store(freshFolder("open"));
+    store.setSizeLimit(kStudyBytes * 5 / 2);
+    commitStudy(store, 1);
+    const LocalStore::OpenLease lease = store.open(uid(1));
+    EXPECT_EQ(lease.studyInstanceUid(), uid(1));
+    commitStudy(store, 2);
+    commitStudy(store, 3);
+    commitStudy(store, 4);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1), uid(4)}));
+    expectIndexAndDiskAgree(store);
+}
+
+TEST(StoreLimitTest, AStudyOpenInAnotherProcessIsNeverRemoved) {
+    const fs::path root = freshFolder("other-process");
+    LocalStore store(root);
+    store.setSizeLimit(kStudyBytes * 5 / 2);
+    commitStudy(store, 1);
+    LeaseInAnotherProcess other(root, uid(1));
+    ASSERT_TRUE(other.leased());
+    commitStudy(store, 2);
+    commitStudy(store, 3);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1), uid(3)}));
+    expectIndexAndDiskAgree(store);
+
+    other.stop();  // the other process closes the study
+    store.setSizeLimit(kStudyBytes * 3 / 2);
+    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{uid(1)});
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(3)}));
+    expectIndexAndDiskAgree(store);
+}
+
+TEST(StoreLimitTest, TheStudyJustCommittedStaysEvenAloneOverTheLimit) {
+    LocalStore store(freshFolder("alone"));
+    store.setSizeLimit(kStudyBytes * 3);
+    commitStudy(store, 1);
+    commitStudy(store, 2);
+    commitStudy(store, 3, kStudyBytes * 4);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(3)}));
+    EXPECT_GT(store.sizeOnDisk(), store.sizeLimit()) << "over its limit until it is removed";
+    expectIndexAndDiskAgree(store);
+    commitStudy(store, 4);  // now the big one is the least recently used
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(4)}));
+    expectIndexAndDiskAgree(store);
+}
+
+TEST(StoreLimitTest, WithoutALimitNothingIsRemoved) {
+    LocalStore store(freshFolder("unlimited"));
+    for (int n = 1; n <= 4; ++n) {
+        commitStudy(store, n);
+    }
+    EXPECT_TRUE(store.cleanUp().empty());
+    EXPECT_EQ(indexed(store).size(), 4U);
+    EXPECT_EQ(store.sizeOnDisk(), 4 * kStudyBytes);
+}
+
+TEST(StoreLimitTest, OpeningAStudyNotInTheStoreIsRefused) {
+    LocalStore store(freshFolder("missing"));
+    EXPECT_THROW((void)store.open("1.2.99"), vv::InvalidArgumentError);
+    EXPECT_THROW((void)store.open("../etc"), vv::InvalidArgumentError);
+    store.setSizeLimit(kStudyBytes / 2);
+    commitStudy(store, 1);
+    commitStudy(store, 2);  // removes 1
+    EXPECT_THROW((void)store.open(uid(1)), vv::InvalidArgumentError);
+}
