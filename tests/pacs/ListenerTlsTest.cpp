@@ -3,8 +3,12 @@
 // with C-MOVE; a peer whose certificate does not chain to our trusted CA
 // (DCMTK's storescu, and our own SCU), a peer without a certificate and a
 // peer speaking plain TCP are refused with a log line naming the peer's
-// address and nothing stored, and the listener keeps working.
+// address and nothing stored, and the listener keeps working; a peer that
+// connects and stays silent holds it only for the association timeout.
+#include <arpa/inet.h>
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -77,6 +81,17 @@ struct Logs {
 };
 std::mutex Logs::mutex;
 std::vector<std::string> Logs::lines;
+
+/// The listener's refusals once there are `expected` (or 5 s passed): with
+/// TLS 1.3 a client may fail before the listener has counted the refusal.
+std::size_t refusals(const StorageScp& listener, std::size_t expected) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (listener.stats().refusedAssociations < expected &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
+    return listener.stats().refusedAssociations;
+}
 
 class ListenerTlsTest : public ::testing::Test {
   protected:
@@ -172,7 +187,7 @@ TEST_F(ListenerTlsTest, PeerWithACertificateOfAnotherCaIsRefusedAndNothingStored
 
     EXPECT_TRUE(store.studies().empty());
     EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
-    EXPECT_EQ(listener.stats().refusedAssociations, 2U);
+    EXPECT_EQ(refusals(listener, 2), 2U);
     EXPECT_EQ(listener.stats().acceptedAssociations, 0U);
     const std::string logs = Logs::all();
     EXPECT_NE(logs.find("refused a connection from 127.0.0.1: TLS"), std::string::npos) << logs;
@@ -189,6 +204,12 @@ TEST_F(ListenerTlsTest, PlainAndCertificateLessPeersAreRefusedAndTheListenerKeep
     const Node noCertificate{kOurAe, "127.0.0.1", port, {true, certificates_.ca, {}, {}}};
     EXPECT_THROW(echo(me("SENDER"), noCertificate), NetworkError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
+    // With TLS 1.3 the client may fail before the listener has counted the refusal.
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    while (listener.stats().refusedAssociations < 2 &&
+           std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+    }
     EXPECT_EQ(listener.stats().refusedAssociations, 2U);
 
     const Node good{kOurAe,
@@ -197,6 +218,33 @@ TEST_F(ListenerTlsTest, PlainAndCertificateLessPeersAreRefusedAndTheListenerKeep
                     {true, certificates_.ca, certificates_.clientCert, certificates_.clientKey}};
     EXPECT_NO_THROW(echo(me("SENDER"), good)) << "the listener still answers";
     EXPECT_EQ(listener.stats().acceptedAssociations, 1U);
+}
+
+TEST_F(ListenerTlsTest, ASilentConnectionHoldsTheListenerNoLongerThanTheAssociationTimeout) {
+    LocalStore store(freshStore("silent"));
+    const std::uint16_t port = vv::test::freePort();
+    ListenerConfig config = tlsConfig(port, {Node{"SENDER", "127.0.0.1", 104, {}}});
+    config.timeouts.associateSeconds = 2;
+    const StorageScp listener(store, config);
+    // Connects and never says a word (no TLS handshake).
+    const int silent = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    address.sin_port = htons(port);
+    ASSERT_EQ(::connect(silent, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(200));  // the listener takes it
+
+    const Node good{kOurAe,
+                    "127.0.0.1",
+                    port,
+                    {true, certificates_.ca, certificates_.clientCert, certificates_.clientKey}};
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_NO_THROW(echo(LocalAe{"SENDER", Timeouts{2, 10, 10}}, good));
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(8));
+    ::close(silent);
+    EXPECT_NE(Logs::all().find("refused a connection from 127.0.0.1"), std::string::npos)
+        << Logs::all();
 }
 
 TEST_F(ListenerTlsTest, MissingOrUnreadableFilesAreTlsErrors) {

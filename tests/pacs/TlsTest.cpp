@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // DICOM over TLS against Orthanc speaking TLS only (certificates made with
 // the openssl tool): echo and find over TLS; a peer certificate from a CA we
-// do not trust, a missing client certificate, unreadable files and plain TCP
-// to the TLS port are each a clear error.
+// do not trust, a missing client certificate, unreadable files, plain TCP
+// to the TLS port and a TLS port that never answers are each a clear error.
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <memory>
 
 #include "OrthancServer.h"
@@ -71,6 +74,25 @@ TEST_F(TlsTest, UnreadableCertificateFileIsTlsError) {
     } catch (const TlsError& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/ca.pem"), std::string::npos) << e.what();
     }
+}
+
+TEST_F(TlsTest, ATlsPortThatNeverAnswersTimesOut) {
+    // A listening socket that accepts connections (the kernel's backlog) but
+    // never answers the TLS handshake.
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::listen(fd, 4), 0);
+    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
+    Node silent = orthanc_->node();
+    silent.port = ntohs(address.sin_port);
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), NetworkError);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
+    ::close(fd);
 }
 
 TEST_F(TlsTest, PlainConnectionToTlsPortFails) {

@@ -34,10 +34,8 @@ void quietDcmtk() {
     std::call_once(once, [] { OFLog::configure(OFLogger::OFF_LOG_LEVEL); });
 }
 
-void Scu::secure(const TlsSettings& tls) {
-    auto layer = std::make_unique<DcmTLSTransportLayer>(NET_REQUESTOR, nullptr, OFTrue);
-    prepareTls(*layer, tls, NET_REQUESTOR);
-    tlsLayer = std::move(layer);
+void Scu::secure(const TlsSettings& tls, int handshakeSeconds) {
+    tlsLayer = std::make_unique<TimedTlsLayer>(NET_REQUESTOR, tls, handshakeSeconds);
 }
 
 void Scu::attachTls() {
@@ -52,7 +50,7 @@ void Scu::attachTls() {
 void configure(Scu& scu, const LocalAe& me, const Node& peer) {
     quietDcmtk();
     if (peer.tls.enabled) {
-        scu.secure(peer.tls);
+        scu.secure(peer.tls, me.timeouts.associateSeconds);
     }
     validateAeTitle(me.aeTitle);
     validateNode(peer);

@@ -205,7 +205,7 @@ struct StorageScp::Impl {
     ListenerConfig config;
     ListenerStats stats;
     mutable std::mutex mutex;
-    std::unique_ptr<detail::ListenerTlsLayer> tls;  ///< outlives scp (its network uses it)
+    std::unique_ptr<detail::TimedTlsLayer> tls;  ///< outlives scp (its network uses it)
     std::unique_ptr<Scp> scp;
     std::thread worker;
     std::mutex startMutex;
@@ -239,8 +239,9 @@ StorageScp::StorageScp(LocalStore& store, ListenerConfig config) : impl_(std::ma
     impl_->scp = std::make_unique<Scp>(store, impl_->config, impl_->stats, impl_->mutex, started);
     DcmSCPConfig& c = impl_->scp->getConfig();
     if (impl_->config.tls.enabled) {
-        impl_->tls = std::make_unique<detail::ListenerTlsLayer>(
-            impl_->config.tls, [&impl](const std::string& host, const std::string& problem) {
+        impl_->tls = std::make_unique<detail::TimedTlsLayer>(
+            NET_ACCEPTOR, impl_->config.tls, impl_->config.timeouts.associateSeconds,
+            [&impl](const std::string& host, const std::string& problem) {
                 log::warning(kLog, "refused a connection from " + host +
                                        ": TLS handshake failed (" + problem + ")");
                 const std::lock_guard lock(impl.mutex);

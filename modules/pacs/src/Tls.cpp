@@ -5,7 +5,9 @@
 #include <dcmtk/dcmnet/dcmtrans.h>
 #include <netinet/in.h>
 #include <sys/socket.h>
+#include <sys/time.h>
 
+#include <algorithm>
 #include <memory>
 #include <utility>
 
@@ -34,21 +36,27 @@ std::string peerOf(DcmNativeSocketType socket) {
     return text;
 }
 
-/// Passes everything to the TLS connection and reports a failed server handshake.
-class WatchedConnection : public DcmTransportConnection {
+/// Passes everything to the TLS connection; bounds the handshakes and
+/// reports a failed server handshake.
+class TimedConnection : public DcmTransportConnection {
   public:
-    WatchedConnection(DcmNativeSocketType socket, DcmTransportConnection* inner,
-                      const ListenerTlsLayer::Refused& onRefused)
-        : DcmTransportConnection(socket), inner_(inner), onRefused_(onRefused) {}
+    TimedConnection(DcmNativeSocketType socket, DcmTransportConnection* inner, int handshakeSeconds,
+                    const TimedTlsLayer::Refused& onRefused)
+        : DcmTransportConnection(socket),
+          inner_(inner),
+          handshakeSeconds_(handshakeSeconds),
+          onRefused_(onRefused) {}
 
     OFCondition serverSideHandshake() override {
-        const OFCondition cond = inner_->serverSideHandshake();
+        const OFCondition cond = timed([this] { return inner_->serverSideHandshake(); });
         if (cond.bad() && onRefused_) {
             onRefused_(peerOf(getSocket()), cond.text() != nullptr ? cond.text() : "TLS failed");
         }
         return cond;
     }
-    OFCondition clientSideHandshake() override { return inner_->clientSideHandshake(); }
+    OFCondition clientSideHandshake() override {
+        return timed([this] { return inner_->clientSideHandshake(); });
+    }
     OFCondition renegotiate(const char* suite) override { return inner_->renegotiate(suite); }
     ssize_t read(void* buf, size_t n) override { return inner_->read(buf, n); }
     ssize_t write(void* buf, size_t n) override { return inner_->write(buf, n); }
@@ -67,8 +75,26 @@ class WatchedConnection : public DcmTransportConnection {
     }
 
   private:
+    /// Runs `handshake` with our receive timeout on the socket instead of
+    /// DCMTK's (60 s), then DCMTK's again for the association.
+    template <class Handshake>
+    OFCondition timed(Handshake handshake) {
+        timeval previous{};
+        socklen_t length = sizeof previous;
+        const bool known =
+            ::getsockopt(getSocket(), SOL_SOCKET, SO_RCVTIMEO, &previous, &length) == 0;
+        const timeval bound{handshakeSeconds_, 0};
+        ::setsockopt(getSocket(), SOL_SOCKET, SO_RCVTIMEO, &bound, sizeof bound);
+        const OFCondition cond = handshake();
+        if (known) {
+            ::setsockopt(getSocket(), SOL_SOCKET, SO_RCVTIMEO, &previous, sizeof previous);
+        }
+        return cond;
+    }
+
     std::unique_ptr<DcmTransportConnection> inner_;
-    const ListenerTlsLayer::Refused& onRefused_;
+    int handshakeSeconds_;
+    const TimedTlsLayer::Refused& onRefused_;
 };
 
 }  // namespace
@@ -97,19 +123,22 @@ void prepareTls(DcmTLSTransportLayer& layer, const TlsSettings& tls, T_ASC_Netwo
     layer.setCertificateVerification(DCV_requireCertificate);
 }
 
-ListenerTlsLayer::ListenerTlsLayer(const TlsSettings& tls, Refused onRefused)
-    : DcmTLSTransportLayer(NET_ACCEPTOR, nullptr, OFTrue), onRefused_(std::move(onRefused)) {
-    prepareTls(*this, tls, NET_ACCEPTOR);
+TimedTlsLayer::TimedTlsLayer(T_ASC_NetworkRole networkRole, const TlsSettings& tls,
+                             int handshakeSeconds, Refused onRefused)
+    : DcmTLSTransportLayer(networkRole, nullptr, OFTrue),
+      handshakeSeconds_(std::max(1, handshakeSeconds)),
+      onRefused_(std::move(onRefused)) {
+    prepareTls(*this, tls, networkRole);
 }
 
-DcmTransportConnection* ListenerTlsLayer::createConnection(DcmNativeSocketType openSocket,
-                                                           OFBool useSecureLayer) {
+DcmTransportConnection* TimedTlsLayer::createConnection(DcmNativeSocketType openSocket,
+                                                        OFBool useSecureLayer) {
     DcmTransportConnection* inner =
         DcmTLSTransportLayer::createConnection(openSocket, useSecureLayer);
     if (inner == nullptr || !useSecureLayer) {
         return inner;
     }
-    return new WatchedConnection(openSocket, inner, onRefused_);
+    return new TimedConnection(openSocket, inner, handshakeSeconds_, onRefused_);
 }
 
 }  // namespace vv::pacs::detail
