@@ -159,9 +159,11 @@ TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
     const std::uint16_t port = vv::test::freePort();
     const fs::path store = vv::test::processTestDir("pacs-cli") / "store-listen";
     fs::remove_all(store);
+    commitDummyStudy(store, 1500000);  // goes to make room: --store-limit 1MB
     auto listening = std::async(std::launch::async, [&] {
         return runCli({"pacs", "listen", "--store", store.string(), "--port", std::to_string(port),
-                       "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "4"});
+                       "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "4",
+                       "--store-limit", "1MB"});
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     const vv::pacs::Node listener{"VVLISTEN", "127.0.0.1", port, {}};
@@ -178,7 +180,10 @@ TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
     const auto result = listening.get();
     EXPECT_EQ(result.code, 0) << result.err;
     EXPECT_NE(result.out.find("stored 8 instance(s)"), std::string::npos) << result.out;
-    EXPECT_EQ(vv::pacs::LocalStore(store).studies().size(), 1U);
+    const auto studies = vv::pacs::LocalStore(store).studies();
+    ASSERT_EQ(studies.size(), 1U);
+    EXPECT_NE(studies[0].studyInstanceUid, "1.2.3") << "the older study made room";
+    EXPECT_FALSE(fs::exists(store / "1.2.3"));
 }
 
 TEST(PacsCliTest, ListenOverTlsLetsInOnlyPeersOfTheTrustedCa) {
