@@ -20,9 +20,8 @@
 #include <vector>
 
 #include "OrthancServer.h"
-#include "SyntheticCta.h"
+#include "PacsTestUtil.h"
 #include "vv/core/Progress.h"
-#include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/PacsError.h"
@@ -51,17 +50,7 @@ fs::path freshFolder(const std::string& name) {
 
 /// A synthetic CTA series of `slices` (at least 8) files for patient `patientId`.
 std::vector<fs::path> series(const std::string& patientId, int slices) {
-    const fs::path folder = freshFolder("series-" + patientId);
-    const auto cta = vv::test::makeSyntheticCta({16, 16, slices}, 2, 0.0, 0.0);
-    vv::dicom::CtSeriesWriteOptions options;
-    options.patientId = patientId;
-    vv::dicom::writeCtSeries(folder, cta.volume, options);
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        files.push_back(e.path());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
+    return vv::test::writeCtaFiles(freshFolder("series-" + patientId), patientId, slices);
 }
 
 void sendAll(const OrthancServer& orthanc, const std::vector<fs::path>& files) {
@@ -123,14 +112,7 @@ TEST(PacsFaultTest, OrthancKilledDuringAMoveLeavesNothingComplete) {
     config.allowedPeers = {orthanc.node()};
     const StorageScp listener(store, config);
     bool killed = false;
-    const vv::Progress progress(
-        [&](double, std::string_view) {
-            if (!killed) {
-                killed = true;
-                orthanc.kill();
-            }
-        },
-        {});
+    const vv::Progress progress = vv::test::atFirstReport(&killed, [&] { orthanc.kill(); });
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(moveTo(kOurAe, me(), orthanc.node(), RetrieveRequest{study, ""}, progress),
                  NetworkError);
@@ -157,14 +139,7 @@ TEST(PacsFaultTest, APeerThatStopsAnsweringDuringAGetTimesOut) {
     ASSERT_FALSE(study.empty());
     LocalStore store(freshFolder("frozen"));
     bool paused = false;
-    const vv::Progress progress(
-        [&](double, std::string_view) {
-            if (!paused) {
-                paused = true;
-                orthanc.pause();
-            }
-        },
-        {});
+    const vv::Progress progress = vv::test::atFirstReport(&paused, [&] { orthanc.pause(); });
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(getInto(store, me(3), orthanc.node(), RetrieveRequest{study, ""}, progress),
                  TimeoutError);

@@ -20,9 +20,8 @@
 #include <vector>
 
 #include "OrthancServer.h"
-#include "SyntheticCta.h"
+#include "PacsTestUtil.h"
 #include "vv/core/Log.h"
-#include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/PacsError.h"
@@ -48,18 +47,7 @@ LocalAe me(const std::string& ae = kOurAe) {
 }
 
 std::vector<fs::path> ctaFiles() {
-    const fs::path folder = testFolder() / "series";
-    fs::remove_all(folder);
-    const auto cta = vv::test::makeSyntheticCta({16, 16, kSlices}, 2, 0.0, 0.0);
-    vv::dicom::CtSeriesWriteOptions options;
-    options.patientId = kPatientId;
-    vv::dicom::writeCtSeries(folder, cta.volume, options);
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        files.push_back(e.path());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
+    return vv::test::writeCtaFiles(testFolder() / "series", kPatientId, kSlices);
 }
 
 /// The "vv.pacs" log lines written while the test runs.

@@ -12,8 +12,7 @@
 
 #include "CliRun.h"
 #include "OrthancServer.h"
-#include "SyntheticCta.h"
-#include "vv/dicom/SeriesWriter.h"
+#include "PacsTestUtil.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Send.h"
@@ -29,22 +28,13 @@ std::string nodeText(const vv::pacs::Node& n) {
     return n.aeTitle + "@" + n.host + ":" + std::to_string(n.port);
 }
 
-fs::path writeSeries(const std::string& name) {
-    const fs::path folder = vv::test::processTestDir("pacs-cli") / name;
-    fs::remove_all(folder);
-    const auto cta = vv::test::makeSyntheticCta({16, 16, 8}, 2, 0.0, 0.0);
-    vv::dicom::CtSeriesWriteOptions options;
-    options.patientId = "VV-CLI-1";
-    vv::dicom::writeCtSeries(folder, cta.volume, options);
-    return folder;
-}
-
-std::vector<std::string> filesOf(const fs::path& folder) {
+/// The synthetic CTA series in the folder `name`; returns its files.
+std::vector<std::string> writeSeries(const std::string& name) {
     std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        files.push_back(e.path().string());
+    for (const fs::path& f :
+         vv::test::writeCtaFiles(vv::test::processTestDir("pacs-cli") / name, "VV-CLI-1", 8)) {
+        files.push_back(f.string());
     }
-    std::sort(files.begin(), files.end());
     return files;
 }
 
@@ -74,7 +64,7 @@ TEST(PacsCliTest, SendFindGetAndEcho) {
     EXPECT_NE(echo.out.find("ok"), std::string::npos);
 
     std::vector<std::string> send = {"pacs", "send", "--node", node, "--aet", kOurAe};
-    const auto files = filesOf(writeSeries("send"));
+    const auto files = writeSeries("send");
     send.insert(send.end(), files.begin(), files.end());
     const auto sent = runCli(send);
     EXPECT_EQ(sent.code, 0) << sent.err;
@@ -168,7 +158,7 @@ TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     const vv::pacs::Node listener{"VVLISTEN", "127.0.0.1", port, {}};
     std::vector<fs::path> files;
-    for (const auto& f : filesOf(writeSeries("listen"))) {
+    for (const auto& f : writeSeries("listen")) {
         files.emplace_back(f);
     }
     const vv::pacs::LocalAe stranger{"STRANGER", {2, 5, 10}};
@@ -200,7 +190,7 @@ TEST(PacsCliTest, ListenOverTlsLetsInOnlyPeersOfTheTrustedCa) {
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     std::vector<fs::path> files;
-    for (const auto& f : filesOf(writeSeries("listen-tls-series"))) {
+    for (const auto& f : writeSeries("listen-tls-series")) {
         files.emplace_back(f);
     }
     const vv::pacs::LocalAe sender{"SENDER", {2, 5, 10}};

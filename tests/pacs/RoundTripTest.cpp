@@ -20,6 +20,7 @@
 #include "CliRun.h"
 #include "CtaSeriesFixture.h"
 #include "OrthancServer.h"
+#include "PacsTestUtil.h"
 #include "vv/pacs/LocalStore.h"
 
 namespace fs = std::filesystem;
@@ -66,15 +67,6 @@ std::vector<std::string> values(const std::string& json, const std::string& key)
     return found;
 }
 
-std::vector<std::string> filesOf(const fs::path& folder) {
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        files.push_back(e.path().string());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
-}
-
 /// Pixels of the vessels' red (the overlays are grey, white and dark).
 long vesselPixels(const QImage& image) {
     long count = 0;
@@ -104,7 +96,10 @@ TEST(PacsRoundTripTest, SendFindRetrieveRenderReportAndFindTheReport) {
     const fs::path dir = vv::test::processTestDir("pacs-round-trip");
     fs::remove_all(dir);
     auto cta = vv::test::writeTestCtaSeries(dir / "series");
-    const std::vector<std::string> files = filesOf(dir / "series");
+    std::vector<std::string> files;
+    for (const fs::path& f : vv::test::filesOf(dir / "series")) {
+        files.push_back(f.string());
+    }
     const std::uint16_t ourPort = vv::test::freePort();
     vv::test::OrthancServer orthanc(kOurAe, ourPort);
     const vv::pacs::Node n = orthanc.node();
@@ -150,7 +145,7 @@ TEST(PacsRoundTripTest, SendFindRetrieveRenderReportAndFindTheReport) {
         ASSERT_EQ(stored.size(), 1U) << (move ? "C-MOVE" : "C-GET");
         ASSERT_EQ(stored[0].series.size(), 1U);
         EXPECT_EQ(stored[0].series[0].instances, static_cast<int>(files.size()));
-        EXPECT_EQ(filesOf(stored[0].series[0].folder).size(), files.size());
+        EXPECT_EQ(vv::test::filesOf(stored[0].series[0].folder).size(), files.size());
     }
 
     // Render the retrieved series into the report and its DICOM outputs.

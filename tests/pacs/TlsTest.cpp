@@ -4,14 +4,13 @@
 // do not trust, a missing client certificate, unreadable files, plain TCP
 // to the TLS port and a TLS port that never answers are each a clear error.
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
 #include <memory>
 
 #include "OrthancServer.h"
+#include "PacsTestUtil.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/PacsError.h"
@@ -77,22 +76,12 @@ TEST_F(TlsTest, UnreadableCertificateFileIsTlsError) {
 }
 
 TEST_F(TlsTest, ATlsPortThatNeverAnswersTimesOut) {
-    // A listening socket that accepts connections (the kernel's backlog) but
-    // never answers the TLS handshake.
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    ASSERT_EQ(::listen(fd, 4), 0);
-    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
+    const vv::test::SilentPort port;  // never answers the TLS handshake
     Node silent = orthanc_->node();
-    silent.port = ntohs(address.sin_port);
+    silent.port = port.port();
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), NetworkError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
-    ::close(fd);
 }
 
 TEST_F(TlsTest, PlainConnectionToTlsPortFails) {
