@@ -19,6 +19,7 @@ namespace vv::pacs::detail {
 namespace {
 
 int openLockFile(const std::filesystem::path& file) {
+    // NOLINTNEXTLINE(cppcoreguidelines-pro-type-vararg): open(2) with a mode
     const int fd = ::open(file.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0600);
     if (fd < 0) {
         throw IoError(file, std::string("cannot open the lock file: ") + std::strerror(errno));

@@ -81,6 +81,15 @@ LocalStore& LocalStore::operator=(const LocalStore& other) {
     return *this;
 }
 
+LocalStore::LocalStore(LocalStore&& other) noexcept
+    : root_(std::move(other.root_)), sizeLimit_(other.sizeLimit()) {}
+
+LocalStore& LocalStore::operator=(LocalStore&& other) noexcept {
+    root_ = std::move(other.root_);
+    sizeLimit_ = other.sizeLimit();
+    return *this;
+}
+
 std::vector<StoredStudy> LocalStore::studies() const {
     std::vector<StoredStudy> studies = detail::readIndex(indexFile(root_));
     for (StoredStudy& study : studies) {

@@ -156,7 +156,7 @@ LocalStore::OpenLease LocalStore::open(const std::string& studyInstanceUid) cons
     if (!lock.stillAt(file) || !detail::touchStudy(indexFile(root_), studyInstanceUid)) {
         throw InvalidArgumentError(root_, notHere);
     }
-    return OpenLease(lock.release(), studyInstanceUid);
+    return {lock.release(), studyInstanceUid};
 }
 
 LocalStore::OpenLease::OpenLease(int fd, std::string uid) noexcept

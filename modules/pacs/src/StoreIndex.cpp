@@ -75,14 +75,16 @@ class Connection {
 /// An SQL transaction on `c`, rolled back unless commit() was reached.
 class Transaction {
   public:
-    Transaction(const Connection& c, const std::filesystem::path& database)
-        : db_(c.db()), file_(database) {
+    Transaction(const Connection& c, std::filesystem::path database)
+        : db_(c.db()), file_(std::move(database)) {
         if (!db_.transaction()) {
             throw IoError(file_, "store index: " + db_.lastError().text().toStdString());
         }
     }
     Transaction(const Transaction&) = delete;
     Transaction& operator=(const Transaction&) = delete;
+    Transaction(Transaction&&) = delete;
+    Transaction& operator=(Transaction&&) = delete;
     ~Transaction() {
         if (!done_) {
             db_.rollback();

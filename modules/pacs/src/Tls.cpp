@@ -8,6 +8,7 @@
 #include <sys/time.h>
 
 #include <algorithm>
+#include <array>
 #include <memory>
 #include <utility>
 
@@ -27,13 +28,13 @@ void check(const OFCondition& cond, const std::string& what) {
 std::string peerOf(DcmNativeSocketType socket) {
     sockaddr_in address{};
     socklen_t length = sizeof address;
-    char text[INET_ADDRSTRLEN] = {};
+    std::array<char, INET_ADDRSTRLEN> text{};
     if (::getpeername(socket, reinterpret_cast<sockaddr*>(&address), &length) != 0 ||
         address.sin_family != AF_INET ||
-        ::inet_ntop(AF_INET, &address.sin_addr, text, sizeof text) == nullptr) {
+        ::inet_ntop(AF_INET, &address.sin_addr, text.data(), text.size()) == nullptr) {
         return "an unknown host";
     }
-    return text;
+    return text.data();
 }
 
 /// Passes everything to the TLS connection; bounds the handshakes and

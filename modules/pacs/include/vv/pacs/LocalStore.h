@@ -65,8 +65,12 @@ class LocalStore {
     /// and its index. Throws IoError when the folder or the index cannot be
     /// made, FormatError when the index is not a store index.
     explicit LocalStore(std::filesystem::path root);
+    /// Copies (and moves) share nothing but the folder; the limit is copied.
     LocalStore(const LocalStore& other);
     LocalStore& operator=(const LocalStore& other);
+    LocalStore(LocalStore&& other) noexcept;
+    LocalStore& operator=(LocalStore&& other) noexcept;
+    ~LocalStore() = default;
 
     [[nodiscard]] const std::filesystem::path& root() const noexcept { return root_; }
 
@@ -116,6 +120,7 @@ class LocalStore {
     /// leaves at most an unindexed folder, never an indexed study without
     /// files. Returns the removed Study Instance UIDs, oldest first. Throws
     /// IoError when the index cannot be read or written.
+    // NOLINTNEXTLINE(modernize-use-nodiscard): called for its effect
     std::vector<std::string> cleanUp(const std::vector<std::string>& keep = {}) const;
 
     /// One transfer's instances; discarded on destruction unless committed.
