@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <QSqlDatabase>
+#include <QSqlQuery>
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -208,4 +210,39 @@ TEST(StoreLimitTest, OpeningAStudyNotInTheStoreIsRefused) {
     commitStudy(store, 1);
     commitStudy(store, 2);  // removes 1
     EXPECT_THROW((void)store.open(uid(1)), vv::InvalidArgumentError);
+}
+
+TEST(StoreLimitTest, AnIndexFromBeforeTheLimitIsMigratedAndItsStudiesCountAsOldest) {
+    // A store as the first version wrote it: no time of use in the index.
+    const fs::path root = freshFolder("migrate");
+    fs::create_directories(root / uid(1) / (uid(1) + ".1"));
+    std::ofstream(root / uid(1) / (uid(1) + ".1") / (uid(1) + ".1.1.dcm"))
+        << std::string(kStudyBytes, 'x');
+    {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), "old-index");
+        db.setDatabaseName(QString::fromStdString((root / "index.sqlite").string()));
+        ASSERT_TRUE(db.open());
+        QSqlQuery q(db);
+        ASSERT_TRUE(
+            q.exec("CREATE TABLE studies (study_uid TEXT PRIMARY KEY, patient_name TEXT, "
+                   "patient_id TEXT, study_date TEXT, study_description TEXT, "
+                   "accession TEXT)"));
+        ASSERT_TRUE(
+            q.exec("CREATE TABLE series (series_uid TEXT PRIMARY KEY, study_uid TEXT NOT "
+                   "NULL, modality TEXT, series_description TEXT, series_number INTEGER, "
+                   "instances INTEGER)"));
+        ASSERT_TRUE(q.exec("INSERT INTO studies VALUES ('1.2.1', '', 'P1', '20990101', '', '')"));
+        ASSERT_TRUE(q.exec("INSERT INTO series VALUES ('1.2.1.1', '1.2.1', 'CT', '', 1, 1)"));
+        db.close();
+    }
+    QSqlDatabase::removeDatabase("old-index");
+
+    LocalStore store(root);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1)}));
+    store.setSizeLimit(kStudyBytes * 5 / 2);
+    commitStudy(store, 2);
+    commitStudy(store, 3);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(2), uid(3)}))
+        << "the old study, never used since, went first (despite its later study date)";
+    expectIndexAndDiskAgree(store);
 }
