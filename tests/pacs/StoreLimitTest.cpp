@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The store's size limit: after a commit over the limit whole studies go,
 // least recently stored or opened first; an open study stays, also when
-// another process holds it open (vv_store_lease_helper); the study just
-// committed stays even when it alone is over the limit; and afterwards the
-// index and the disk agree.
+// another process holds it open (vv_store_helper); the study just committed
+// stays even when it alone is over the limit; a clean-up killed midway
+// leaves no indexed study without files; and afterwards the index and the
+// disk agree.
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -12,10 +13,12 @@
 #include <QSqlDatabase>
 #include <QSqlQuery>
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
@@ -83,10 +86,11 @@ void expectIndexAndDiskAgree(const LocalStore& store) {
     EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
 }
 
-/// Another process holding `studyUid` open until stop().
-class LeaseInAnotherProcess {
+/// vv_store_helper MODE ROOT ARGUMENT in another process, talking through
+/// pipes: its first line of output is read; stop() closes its input and waits.
+class Helper {
   public:
-    LeaseInAnotherProcess(const fs::path& root, const std::string& studyUid) {
+    Helper(const std::string& mode, const fs::path& root, const std::string& argument) {
         int toChild[2];
         int fromChild[2];
         if (::pipe(toChild) != 0 || ::pipe(fromChild) != 0) {
@@ -98,8 +102,8 @@ class LeaseInAnotherProcess {
             ::dup2(fromChild[1], STDOUT_FILENO);
             ::close(toChild[1]);
             ::close(fromChild[0]);
-            ::execl(VV_STORE_LEASE_HELPER, "vv_store_lease_helper", root.c_str(), studyUid.c_str(),
-                    static_cast<char*>(nullptr));
+            ::execl(VV_STORE_HELPER, "vv_store_helper", mode.c_str(), root.c_str(),
+                    argument.c_str(), static_cast<char*>(nullptr));
             ::_exit(127);
         }
         ::close(toChild[0]);
@@ -108,17 +112,18 @@ class LeaseInAnotherProcess {
         char text[16] = {};
         const ssize_t n = ::read(fromChild[0], text, sizeof text - 1);
         ::close(fromChild[0]);
-        leased_ = n > 0 && std::string(text).starts_with("leased");
+        said_ = n > 0 ? std::string(text, static_cast<std::size_t>(n)) : std::string();
     }
-    ~LeaseInAnotherProcess() { stop(); }
-    LeaseInAnotherProcess(const LeaseInAnotherProcess&) = delete;
-    LeaseInAnotherProcess& operator=(const LeaseInAnotherProcess&) = delete;
-    [[nodiscard]] bool leased() const { return leased_; }
+    ~Helper() { stop(); }
+    Helper(const Helper&) = delete;
+    Helper& operator=(const Helper&) = delete;
+    /// Its first line of output ("leased\n", "cleaning\n").
+    [[nodiscard]] const std::string& said() const { return said_; }
+    void kill() const { ::kill(pid_, SIGKILL); }
     void stop() {
         if (pid_ > 0) {
             ::close(toChild_);
-            int status = 0;
-            ::waitpid(pid_, &status, 0);
+            ::waitpid(pid_, nullptr, 0);
             pid_ = -1;
         }
     }
@@ -126,8 +131,22 @@ class LeaseInAnotherProcess {
   private:
     pid_t pid_ = -1;
     int toChild_ = -1;
-    bool leased_ = false;
+    std::string said_;
 };
+
+/// Every indexed study has all its files (a crash may leave unindexed ones).
+void expectEveryIndexedStudyComplete(const LocalStore& store) {
+    for (const StoredStudy& s : store.studies()) {
+        for (const StoredSeries& series : s.series) {
+            std::error_code ec;
+            int files = 0;
+            for (const auto& e : fs::directory_iterator(series.folder, ec)) {
+                files += e.path().extension() == ".dcm" ? 1 : 0;
+            }
+            EXPECT_EQ(files, series.instances) << s.studyInstanceUid << " is indexed";
+        }
+    }
+}
 
 }  // namespace
 
@@ -164,8 +183,8 @@ TEST(StoreLimitTest, AStudyOpenInAnotherProcessIsNeverRemoved) {
     LocalStore store(root);
     store.setSizeLimit(kStudyBytes * 5 / 2);
     commitStudy(store, 1);
-    LeaseInAnotherProcess other(root, uid(1));
-    ASSERT_TRUE(other.leased());
+    Helper other("lease", root, uid(1));
+    ASSERT_EQ(other.said(), "leased\n");
     commitStudy(store, 2);
     commitStudy(store, 3);
     EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1), uid(3)}));
@@ -245,4 +264,37 @@ TEST(StoreLimitTest, AnIndexFromBeforeTheLimitIsMigratedAndItsStudiesCountAsOlde
     EXPECT_EQ(indexed(store), (std::set<std::string>{uid(2), uid(3)}))
         << "the old study, never used since, went first (despite its later study date)";
     expectIndexAndDiskAgree(store);
+}
+
+TEST(StoreLimitTest, ACleanUpKilledMidwayLeavesNoIndexedStudyWithoutFiles) {
+    const fs::path root = freshFolder("killed");
+    LocalStore store(root);
+    const auto studyFolders = [&root] {
+        int n = 0;
+        for (const auto& e : fs::directory_iterator(root)) {
+            n += e.is_directory() && e.path().filename().string()[0] != '.' ? 1 : 0;
+        }
+        return n;
+    };
+    for (const int removedBeforeKill : {1, 8, 20}) {
+        for (int n = 1; n <= 40; ++n) {
+            commitStudy(store, n, 20000);
+        }
+        {
+            Helper cleaner("clean-up", root, "1");  // removes every study, one at a time
+            ASSERT_EQ(cleaner.said(), "cleaning\n");
+            const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
+            while (studyFolders() > 40 - removedBeforeKill &&
+                   std::chrono::steady_clock::now() < deadline) {
+            }
+            cleaner.kill();
+        }
+        const std::size_t left = store.studies().size();
+        EXPECT_GT(left, 0U) << "killed before the end";
+        EXPECT_LE(left, static_cast<std::size_t>(40 - removedBeforeKill));
+        expectEveryIndexedStudyComplete(store);
+        // The next clean-up deletes what the killed one left.
+        EXPECT_TRUE(store.cleanUp().empty());
+        expectIndexAndDiskAgree(store);
+    }
 }

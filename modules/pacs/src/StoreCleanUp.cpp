@@ -45,6 +45,30 @@ void removeFolder(const fs::path& root, const std::string& studyUid) {
     }
 }
 
+/// Deletes what a crashed or failed clean-up or commit left: folders being
+/// removed (.incoming/removed-*) and study folders the index does not know.
+/// Safe under the store lock: no commit or clean-up is running then.
+void sweepLeftovers(const fs::path& root, const std::vector<std::string>& indexed) {
+    std::error_code ec;
+    for (const auto& e : fs::directory_iterator(root / ".incoming", ec)) {
+        if (e.path().filename().string().starts_with("removed-")) {
+            fs::remove_all(e.path(), ec);
+        }
+    }
+    for (const auto& e : fs::directory_iterator(root, ec)) {
+        const std::string name = e.path().filename().string();
+        bool isUid = e.is_directory(ec);
+        try {
+            validateUid(name);
+        } catch (const InvalidArgumentError&) {
+            isUid = false;
+        }
+        if (isUid && std::find(indexed.begin(), indexed.end(), name) == indexed.end()) {
+            fs::remove_all(e.path(), ec);
+        }
+    }
+}
+
 }  // namespace
 
 namespace detail {
@@ -74,10 +98,11 @@ std::uint64_t folderBytes(const fs::path& folder) {
 std::vector<std::string> cleanUpLocked(const fs::path& root, std::uint64_t limit,
                                        const std::vector<std::string>& keep) {
     std::vector<std::string> removed;
+    const std::vector<std::string> byUse = studiesByUse(indexFile(root));
+    sweepLeftovers(root, byUse);
     if (limit == 0) {
         return removed;
     }
-    const std::vector<std::string> byUse = studiesByUse(indexFile(root));
     std::map<std::string, std::uint64_t> bytes;
     std::uint64_t total = 0;
     for (const std::string& uid : byUse) {

@@ -118,8 +118,10 @@ class LocalStore {
     /// those in `keep`. Each removal takes the study out of the index first
     /// (one SQL transaction) and then deletes its folder, so a crash midway
     /// leaves at most an unindexed folder, never an indexed study without
-    /// files. Returns the removed Study Instance UIDs, oldest first. Throws
-    /// IoError when the index cannot be read or written.
+    /// files; such leftovers (of a crash, or of a commit that failed midway)
+    /// are deleted by the next clean-up. Returns the removed Study Instance
+    /// UIDs, oldest first. Throws IoError when the index cannot be read or
+    /// written.
     // NOLINTNEXTLINE(modernize-use-nodiscard): called for its effect
     std::vector<std::string> cleanUp(const std::vector<std::string>& keep = {}) const;
 
