@@ -3,9 +3,11 @@
 // vv::pacs. A peer that refuses or fails exits with 5 (kPeerFailed).
 #include <chrono>
 #include <csignal>
+#include <cstdint>
 #include <optional>
 #include <ostream>
 #include <thread>
+#include <utility>
 
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
@@ -44,6 +46,28 @@ pacs::Node parseNode(const std::string& text, const Arguments& a) {
     return node;
 }
 
+/// "BYTES", "NMB" or "NGB" (decimal: 1 GB = 10^9 bytes) -> bytes; at least 1 MB.
+std::uint64_t parseStoreLimit(const std::string& text, const Arguments& a) {
+    std::string digits = text;
+    std::uint64_t unit = 1;
+    for (const auto& [suffix, factor] : {std::pair{"GB", 1000000000ULL}, {"MB", 1000000ULL}}) {
+        const std::string s = suffix;
+        if (digits.size() > s.size() && digits.ends_with(s)) {
+            digits.resize(digits.size() - s.size());
+            unit = factor;
+        }
+    }
+    if (digits.empty() || digits.size() > 12 ||
+        digits.find_first_not_of("0123456789") != std::string::npos) {
+        a.fail("--store-limit takes BYTES, NMB or NGB, not '" + text + "'");
+    }
+    const std::uint64_t bytes = std::stoull(digits) * unit;
+    if (bytes < 1000000ULL) {
+        a.fail("--store-limit must be at least 1MB");
+    }
+    return bytes;
+}
+
 /// The options every subcommand shares, and the ones only some take.
 struct Options {
     pacs::LocalAe me;
@@ -56,6 +80,7 @@ struct Options {
     std::vector<pacs::Node> allowed;
     pacs::TlsSettings tls;
     std::uint16_t port = 0;
+    std::uint64_t storeLimit = 0;
     std::string bind = "0.0.0.0";
     bool move = false;
     int seconds = 0;
@@ -92,6 +117,8 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
             o.seriesUid = a.value();
         } else if (n == "--store") {
             o.store = a.path();
+        } else if (n == "--store-limit" && (sub == "get" || sub == "listen")) {
+            o.storeLimit = parseStoreLimit(a.value(), a);
         } else if (n == "--allow") {
             o.allowed.push_back(parseNode(a.value() + ":104", a));
         } else if (n == "--port") {
@@ -124,8 +151,9 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
     if (o.tls.certificate.empty() != o.tls.privateKey.empty()) {
         a.fail("--tls-cert and --tls-key go together");
     }
-    if (o.tls.enabled && sub == "listen") {
-        a.fail("the listener does not speak TLS yet");
+    const bool listens = sub == "listen" || (sub == "get" && o.move);
+    if (o.tls.enabled && listens && o.tls.certificate.empty()) {
+        a.fail("a TLS listener needs --tls-cert and --tls-key");
     }
     if (o.node) {
         o.node->tls = o.tls;
@@ -180,6 +208,7 @@ int find(const Options& o, std::ostream& out) {
 
 int get(const Options& o, std::ostream& out) {
     pacs::LocalStore store(o.store);
+    store.setSizeLimit(o.storeLimit);
     const pacs::RetrieveRequest request{o.studyUid, o.seriesUid};
     std::size_t instances = 0;
     if (o.move) {
@@ -189,6 +218,7 @@ int get(const Options& o, std::ostream& out) {
         config.allowedPeers = {*o.node};
         config.bindAddress = o.bind;
         config.timeouts = o.me.timeouts;
+        config.tls = o.tls;
         const pacs::StorageScp listener(store, config);
         instances = pacs::moveTo(o.me.aeTitle, o.me, *o.node, request).instances;
         // The peer's storing association ends before its last C-MOVE response
@@ -222,12 +252,14 @@ int send(const Options& o, std::ostream& out) {
 
 int listen(const Options& o, std::ostream& out) {
     pacs::LocalStore store(o.store);
+    store.setSizeLimit(o.storeLimit);
     pacs::ListenerConfig config;
     config.aeTitle = o.me.aeTitle;
     config.port = o.port;
     config.allowedPeers = o.allowed;
     config.bindAddress = o.bind;
     config.timeouts = o.me.timeouts;
+    config.tls = o.tls;
     gStop = 0;
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);

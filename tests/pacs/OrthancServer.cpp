@@ -140,7 +140,8 @@ std::string OrthancServer::start(const std::string& ourAe, std::uint16_t ourPort
         config << "  \"DicomModalities\": { \"vv\": { \"AET\": \"" << ourAe
                << "\", \"Host\": \"127.0.0.1\", \"Port\": " << ourPort
                << ", \"AllowEcho\": true, \"AllowFind\": true, \"AllowGet\": true,"
-               << " \"AllowMove\": true, \"AllowStore\": true } }\n"
+               << " \"AllowMove\": true, \"AllowStore\": true"
+               << (tls != nullptr ? ", \"UseDicomTls\": true" : "") << " } }\n"
                << "}\n";
     }
     const std::string log = (folder_ / "orthanc.log").string();
@@ -194,10 +195,23 @@ void OrthancServer::kill() {
     }
 }
 
+void OrthancServer::pause() {
+    if (pid_ > 0) {
+        ::kill(pid_, SIGSTOP);
+    }
+}
+
+void OrthancServer::resume() {
+    if (pid_ > 0) {
+        ::kill(pid_, SIGCONT);
+    }
+}
+
 void OrthancServer::stop() {
     if (pid_ <= 0) {
         return;
     }
+    ::kill(pid_, SIGCONT);  // a paused Orthanc cannot stop
     ::kill(pid_, SIGTERM);
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
     while (std::chrono::steady_clock::now() < deadline) {

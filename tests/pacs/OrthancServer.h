@@ -33,7 +33,8 @@ class OrthancServer {
     /// `ourAe`; `ourPort` is where Orthanc sends C-MOVE results for `ourAe`.
     /// Throws std::runtime_error (with Orthanc's log) when it does not come up.
     /// With `tls`, Orthanc speaks DICOM only over TLS (server certificate and
-    /// key, trusting `tls->ca`, client certificates required).
+    /// key, trusting `tls->ca`, client certificates required), and sends
+    /// C-MOVE results to `ourPort` over TLS too.
     OrthancServer(const std::string& ourAe, std::uint16_t ourPort,
                   const TestCertificates* tls = nullptr);
     ~OrthancServer();
@@ -44,6 +45,10 @@ class OrthancServer {
     [[nodiscard]] vv::pacs::Node node() const { return {"ORTHANC", "127.0.0.1", dicomPort_, tls_}; }
     /// Kills Orthanc at once (SIGKILL), as a crash would.
     void kill();
+    /// Freezes Orthanc (SIGSTOP): it holds its connections and answers nothing.
+    void pause();
+    /// Lets a paused Orthanc go on (SIGCONT).
+    void resume();
     [[nodiscard]] const std::filesystem::path& folder() const { return folder_; }
 
   private:

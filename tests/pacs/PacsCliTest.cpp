@@ -6,13 +6,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <fstream>
 #include <future>
 #include <thread>
 
 #include "CliRun.h"
 #include "OrthancServer.h"
-#include "SyntheticCta.h"
-#include "vv/dicom/SeriesWriter.h"
+#include "PacsTestUtil.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Send.h"
@@ -28,23 +28,28 @@ std::string nodeText(const vv::pacs::Node& n) {
     return n.aeTitle + "@" + n.host + ":" + std::to_string(n.port);
 }
 
-fs::path writeSeries(const std::string& name) {
-    const fs::path folder = vv::test::processTestDir("pacs-cli") / name;
-    fs::remove_all(folder);
-    const auto cta = vv::test::makeSyntheticCta({16, 16, 8}, 2, 0.0, 0.0);
-    vv::dicom::CtSeriesWriteOptions options;
-    options.patientId = "VV-CLI-1";
-    vv::dicom::writeCtSeries(folder, cta.volume, options);
-    return folder;
+/// The synthetic CTA series in the folder `name`; returns its files.
+std::vector<std::string> writeSeries(const std::string& name) {
+    std::vector<std::string> files;
+    for (const fs::path& f :
+         vv::test::writeCtaFiles(vv::test::processTestDir("pacs-cli") / name, "VV-CLI-1", 8)) {
+        files.push_back(f.string());
+    }
+    return files;
 }
 
-std::vector<std::string> filesOf(const fs::path& folder) {
-    std::vector<std::string> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        files.push_back(e.path().string());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
+/// Commits a study "1.2.3" of one file of `bytes` bytes into the store at `root`.
+void commitDummyStudy(const fs::path& root, std::size_t bytes) {
+    const vv::pacs::LocalStore store(root);
+    auto t = store.begin();
+    const fs::path staged = t.stagingPath();
+    std::ofstream(staged) << std::string(bytes, 'x');
+    vv::pacs::InstanceFields f;
+    f.studyInstanceUid = "1.2.3";
+    f.seriesInstanceUid = "1.2.3.1";
+    f.sopInstanceUid = "1.2.3.1.1";
+    t.add(staged, f);
+    t.commit();
 }
 
 }  // namespace
@@ -59,7 +64,7 @@ TEST(PacsCliTest, SendFindGetAndEcho) {
     EXPECT_NE(echo.out.find("ok"), std::string::npos);
 
     std::vector<std::string> send = {"pacs", "send", "--node", node, "--aet", kOurAe};
-    const auto files = filesOf(writeSeries("send"));
+    const auto files = writeSeries("send");
     send.insert(send.end(), files.begin(), files.end());
     const auto sent = runCli(send);
     EXPECT_EQ(sent.code, 0) << sent.err;
@@ -81,13 +86,17 @@ TEST(PacsCliTest, SendFindGetAndEcho) {
     EXPECT_EQ(series.code, 0) << series.err;
     EXPECT_NE(series.out.find("\"instances\": 8"), std::string::npos) << series.out;
 
+    // The store holds an older study of 1.5 MB; with --store-limit 1MB it
+    // makes room for the retrieved one.
     const fs::path store = vv::test::processTestDir("pacs-cli") / "store-get";
     fs::remove_all(store);
+    commitDummyStudy(store, 1500000);
     const auto got = runCli({"pacs", "get", "--node", node, "--aet", kOurAe, "--study", studyUid,
-                             "--store", store.string()});
+                             "--store", store.string(), "--store-limit", "1MB"});
     EXPECT_EQ(got.code, 0) << got.err;
     const auto studies = vv::pacs::LocalStore(store).studies();
     ASSERT_EQ(studies.size(), 1U);
+    EXPECT_EQ(studies[0].studyInstanceUid, studyUid);
     EXPECT_EQ(studies[0].series.at(0).instances, 8);
 
     const fs::path moved = vv::test::processTestDir("pacs-cli") / "store-move";
@@ -117,26 +126,85 @@ TEST(PacsCliTest, BadNodeIsUsageError) {
     EXPECT_EQ(runCli({"pacs", "echo", "--node", "no-port"}).code, 2);
     EXPECT_EQ(runCli({"pacs", "frobnicate"}).code, 2);
     EXPECT_EQ(runCli({"pacs", "get", "--node", "A@h:1"}).code, 2);
+    const std::vector<std::string> get = {"pacs",    "get",   "--node",  "A@127.0.0.1:1",
+                                          "--study", "1.2.3", "--store", "/tmp/s"};
+    for (const std::string bad : {"100", "1TB", "GB", "-5GB", "1.5GB", "9999999999999GB"}) {
+        auto args = get;
+        args.insert(args.end(), {"--store-limit", bad});
+        const auto run = runCli(args);
+        EXPECT_EQ(run.code, 2) << bad;
+        EXPECT_NE(run.err.find("--store-limit"), std::string::npos) << run.err;
+    }
+    EXPECT_EQ(
+        runCli({"pacs", "send", "--node", "A@127.0.0.1:1", "--store-limit", "1GB", "f.dcm"}).code,
+        2)
+        << "only get and listen keep a store";
+    EXPECT_EQ(
+        runCli({"pacs", "listen", "--store", "/tmp/s", "--port", "1", "--tls-ca", "ca.pem"}).code,
+        2)
+        << "a TLS listener needs its certificate";
 }
 
 TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
     const std::uint16_t port = vv::test::freePort();
     const fs::path store = vv::test::processTestDir("pacs-cli") / "store-listen";
     fs::remove_all(store);
+    commitDummyStudy(store, 1500000);  // goes to make room: --store-limit 1MB
     auto listening = std::async(std::launch::async, [&] {
         return runCli({"pacs", "listen", "--store", store.string(), "--port", std::to_string(port),
-                       "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "4"});
+                       "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "4",
+                       "--store-limit", "1MB"});
     });
     std::this_thread::sleep_for(std::chrono::milliseconds(500));
     const vv::pacs::Node listener{"VVLISTEN", "127.0.0.1", port, {}};
     std::vector<fs::path> files;
-    for (const auto& f : filesOf(writeSeries("listen"))) {
+    for (const auto& f : writeSeries("listen")) {
         files.emplace_back(f);
     }
     const vv::pacs::LocalAe stranger{"STRANGER", {2, 5, 10}};
     EXPECT_ANY_THROW(vv::pacs::sendFiles(stranger, listener, files));
     const vv::pacs::LocalAe sender{"SENDER", {2, 5, 10}};
     const auto statuses = vv::pacs::sendFiles(sender, listener, files);
+    EXPECT_TRUE(std::all_of(statuses.begin(), statuses.end(),
+                            [](const vv::pacs::SendStatus& s) { return s.accepted; }));
+    const auto result = listening.get();
+    EXPECT_EQ(result.code, 0) << result.err;
+    EXPECT_NE(result.out.find("stored 8 instance(s)"), std::string::npos) << result.out;
+    const auto studies = vv::pacs::LocalStore(store).studies();
+    ASSERT_EQ(studies.size(), 1U);
+    EXPECT_NE(studies[0].studyInstanceUid, "1.2.3") << "the older study made room";
+    EXPECT_FALSE(fs::exists(store / "1.2.3"));
+}
+
+TEST(PacsCliTest, ListenOverTlsLetsInOnlyPeersOfTheTrustedCa) {
+    const fs::path folder = vv::test::processTestDir("pacs-cli") / "listen-tls";
+    fs::remove_all(folder);
+    const auto certificates = vv::test::makeCertificates(folder / "certificates");
+    const std::uint16_t port = vv::test::freePort();
+    const fs::path store = folder / "store";
+    auto listening = std::async(std::launch::async, [&] {
+        return runCli({"pacs", "listen", "--store", store.string(), "--port", std::to_string(port),
+                       "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "5", "--tls-ca",
+                       certificates.ca.string(), "--tls-cert", certificates.serverCert.string(),
+                       "--tls-key", certificates.serverKey.string()});
+    });
+    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    std::vector<fs::path> files;
+    for (const auto& f : writeSeries("listen-tls-series")) {
+        files.emplace_back(f);
+    }
+    const vv::pacs::LocalAe sender{"SENDER", {2, 5, 10}};
+    fs::path otherKey = certificates.otherCa;
+    otherKey.replace_extension(".key");
+    const vv::pacs::Node untrusted{
+        "VVLISTEN", "127.0.0.1", port, {true, certificates.ca, certificates.otherCa, otherKey}};
+    EXPECT_ANY_THROW(vv::pacs::sendFiles(sender, untrusted, files));
+    const vv::pacs::Node trusted{
+        "VVLISTEN",
+        "127.0.0.1",
+        port,
+        {true, certificates.ca, certificates.clientCert, certificates.clientKey}};
+    const auto statuses = vv::pacs::sendFiles(sender, trusted, files);
     EXPECT_TRUE(std::all_of(statuses.begin(), statuses.end(),
                             [](const vv::pacs::SendStatus& s) { return s.accepted; }));
     const auto result = listening.get();

@@ -5,8 +5,6 @@
 // storage SCP, and the faults (unknown node pushing, Orthanc killed in the
 // middle of a retrieve, cancel, a too-big C-FIND answer).
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -15,9 +13,8 @@
 #include <thread>
 
 #include "OrthancServer.h"
-#include "SyntheticCta.h"
+#include "PacsTestUtil.h"
 #include "vv/core/Error.h"
-#include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/PacsError.h"
@@ -45,20 +42,9 @@ fs::path freshFolder(const std::string& name) {
     return folder;
 }
 
-/// The synthetic CTA series written once per process; returns its files.
+/// The synthetic CTA series of `patientId`; returns its files.
 std::vector<fs::path> ctaFiles(const std::string& patientId = "VV-PACS-1") {
-    const fs::path folder = freshFolder("series-" + patientId);
-    const auto cta = vv::test::makeSyntheticCta({24, 24, kSlices}, 2, 0.0, 0.0);
-    vv::dicom::CtSeriesWriteOptions options;
-    options.patientId = patientId;
-    options.seriesDescription = "synthetic CTA";
-    vv::dicom::writeCtSeries(folder, cta.volume, options);
-    std::vector<fs::path> files;
-    for (const auto& e : fs::directory_iterator(folder)) {
-        files.push_back(e.path());
-    }
-    std::sort(files.begin(), files.end());
-    return files;
+    return vv::test::writeCtaFiles(freshFolder("series-" + patientId), patientId, kSlices, 24);
 }
 
 /// Stores the series into `orthanc` and returns its Study Instance UID.
@@ -130,20 +116,11 @@ TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
 }
 
 TEST(PacsFaultTest, SilentPeerTimesOut) {
-    // A listening socket that accepts connections (the kernel's backlog) but never answers.
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    ASSERT_EQ(::listen(fd, 4), 0);
-    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
-    const Node silent{"SILENT", "127.0.0.1", ntohs(address.sin_port), {}};
+    const vv::test::SilentPort port;
+    const Node silent{"SILENT", "127.0.0.1", port.port(), {}};
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
-    ::close(fd);
 }
 
 TEST_F(PacsTest, FindsTheStudyByItsKeys) {
@@ -262,14 +239,7 @@ TEST(PacsFaultTest, OrthancKilledDuringRetrieveLeavesNothingComplete) {
     const std::string studyUid = load(orthanc, "VV-PACS-KILL");
     LocalStore store(freshFolder("kill"));
     bool killed = false;
-    const vv::Progress progress(
-        [&](double, std::string_view) {
-            if (!killed) {
-                killed = true;
-                orthanc.kill();
-            }
-        },
-        {});
+    const vv::Progress progress = vv::test::atFirstReport(&killed, [&] { orthanc.kill(); });
     EXPECT_THROW(getInto(store, me(), orthanc.node(), RetrieveRequest{studyUid, ""}, progress),
                  NetworkError);
     EXPECT_TRUE(killed);

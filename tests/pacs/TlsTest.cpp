@@ -1,14 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // DICOM over TLS against Orthanc speaking TLS only (certificates made with
 // the openssl tool): echo and find over TLS; a peer certificate from a CA we
-// do not trust, a missing client certificate, unreadable files and plain TCP
-// to the TLS port are each a clear error.
+// do not trust, a missing client certificate, unreadable files, plain TCP
+// to the TLS port and a TLS port that never answers are each a clear error.
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <memory>
 
 #include "OrthancServer.h"
+#include "PacsTestUtil.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/PacsError.h"
@@ -71,6 +73,15 @@ TEST_F(TlsTest, UnreadableCertificateFileIsTlsError) {
     } catch (const TlsError& e) {
         EXPECT_NE(std::string(e.what()).find("/nonexistent/ca.pem"), std::string::npos) << e.what();
     }
+}
+
+TEST_F(TlsTest, ATlsPortThatNeverAnswersTimesOut) {
+    const vv::test::SilentPort port;  // never answers the TLS handshake
+    Node silent = orthanc_->node();
+    silent.port = port.port();
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), NetworkError);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
 }
 
 TEST_F(TlsTest, PlainConnectionToTlsPortFails) {

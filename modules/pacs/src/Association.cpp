@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <mutex>
 
+#include "Tls.h"
 #include "vv/pacs/PacsError.h"
 
 namespace vv::pacs::detail {
@@ -33,32 +34,8 @@ void quietDcmtk() {
     std::call_once(once, [] { OFLog::configure(OFLogger::OFF_LOG_LEVEL); });
 }
 
-void Scu::secure(const TlsSettings& tls) {
-    auto layer = std::make_unique<DcmTLSTransportLayer>(NET_REQUESTOR, nullptr, OFTrue);
-    const auto check = [](const OFCondition& cond, const std::string& what) {
-        if (cond.bad()) {
-            throw TlsError(what + ": " + cond.text());
-        }
-    };
-    if (tls.trustedCertificates.empty()) {
-        throw TlsError("TLS needs the trusted (CA) certificates");
-    }
-    check(layer->setTLSProfile(TSP_Profile_BCP195), "TLS profile");
-    check(layer->activateCipherSuites(), "TLS cipher suites");
-    check(layer->addTrustedCertificateFile(tls.trustedCertificates.c_str(), DCF_Filetype_PEM),
-          tls.trustedCertificates.string());
-    if (!tls.certificate.empty()) {
-        check(layer->setPrivateKeyFile(tls.privateKey.c_str(), DCF_Filetype_PEM),
-              tls.privateKey.string());
-        check(layer->setCertificateFile(tls.certificate.c_str(), DCF_Filetype_PEM),
-              tls.certificate.string());
-        if (!layer->checkPrivateKeyMatchesCertificate()) {
-            throw TlsError(tls.privateKey.string() + " is not the key of " +
-                           tls.certificate.string());
-        }
-    }
-    layer->setCertificateVerification(DCV_requireCertificate);
-    tlsLayer = std::move(layer);
+void Scu::secure(const TlsSettings& tls, int handshakeSeconds) {
+    tlsLayer = std::make_unique<TimedTlsLayer>(NET_REQUESTOR, tls, handshakeSeconds);
 }
 
 void Scu::attachTls() {
@@ -73,7 +50,7 @@ void Scu::attachTls() {
 void configure(Scu& scu, const LocalAe& me, const Node& peer) {
     quietDcmtk();
     if (peer.tls.enabled) {
-        scu.secure(peer.tls);
+        scu.secure(peer.tls, me.timeouts.associateSeconds);
     }
     validateAeTitle(me.aeTitle);
     validateNode(peer);

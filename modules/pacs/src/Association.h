@@ -25,8 +25,9 @@ struct TlsLayerHolder {
 /// DcmSCU with the TLS layer it may use.
 class Scu : private TlsLayerHolder, public DcmSCU {
   public:
-    /// Prepares TLS as `tls` says; throws TlsError naming the file that failed.
-    void secure(const TlsSettings& tls);
+    /// Prepares TLS as `tls` says, the handshake bounded by `handshakeSeconds`;
+    /// throws TlsError naming the file that failed.
+    void secure(const TlsSettings& tls, int handshakeSeconds);
     /// Puts the prepared TLS layer (if any) on the initialised network.
     void attachTls();
 };

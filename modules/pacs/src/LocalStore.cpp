@@ -7,11 +7,14 @@
 #include <chrono>
 #include <map>
 #include <mutex>
+#include <set>
 #include <system_error>
 #include <utility>
 
+#include "StoreCleanUp.h"
 #include "StoreIndex.h"
 #include "vv/core/Error.h"
+#include "vv/core/Log.h"
 #include "vv/pacs/Uid.h"
 
 namespace fs = std::filesystem;
@@ -21,6 +24,7 @@ namespace vv::pacs {
 namespace {
 
 constexpr fs::perms kPrivate = fs::perms::owner_all;
+constexpr log::Category kLog("vv.pacs");
 
 /// Creates `folder` (and parents) and makes it 0700. Throws IoError.
 void makePrivateFolder(const fs::path& folder) {
@@ -36,12 +40,6 @@ void makePrivateFolder(const fs::path& folder) {
 
 fs::path indexFile(const fs::path& root) {
     return root / "index.sqlite";
-}
-
-/// Commits of different transactions (listener, retrieve) go one at a time.
-std::mutex& commitMutex() {
-    static std::mutex m;
-    return m;
 }
 
 int countFiles(const fs::path& folder) {
@@ -60,6 +58,7 @@ struct LocalStore::Transaction::State {
     fs::path root;
     fs::path staging;
     std::vector<std::pair<fs::path, InstanceFields>> instances;
+    std::uint64_t sizeLimit = 0;
     unsigned next = 0;
     bool open = true;
 };
@@ -71,6 +70,24 @@ LocalStore::LocalStore(fs::path root) : root_(std::move(root)) {
     std::error_code ec;
     fs::permissions(indexFile(root_), fs::perms::owner_read | fs::perms::owner_write,
                     fs::perm_options::replace, ec);
+}
+
+LocalStore::LocalStore(const LocalStore& other)
+    : root_(other.root_), sizeLimit_(other.sizeLimit()) {}
+
+LocalStore& LocalStore::operator=(const LocalStore& other) {
+    root_ = other.root_;
+    sizeLimit_ = other.sizeLimit();
+    return *this;
+}
+
+LocalStore::LocalStore(LocalStore&& other) noexcept
+    : root_(std::move(other.root_)), sizeLimit_(other.sizeLimit()) {}
+
+LocalStore& LocalStore::operator=(LocalStore&& other) noexcept {
+    root_ = std::move(other.root_);
+    sizeLimit_ = other.sizeLimit();
+    return *this;
 }
 
 std::vector<StoredStudy> LocalStore::studies() const {
@@ -88,6 +105,7 @@ LocalStore::Transaction LocalStore::begin() const {
     static std::atomic<unsigned> counter{0};
     auto state = std::make_unique<Transaction::State>();
     state->root = root_;
+    state->sizeLimit = sizeLimit_;
     const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
     state->staging = root_ / ".incoming" /
                      (std::to_string(::getpid()) + "-" + std::to_string(ticks) + "-" +
@@ -134,7 +152,8 @@ void LocalStore::Transaction::commit() {
     if (!state_ || !state_->open) {
         throw InvalidArgumentError("the store transaction is closed");
     }
-    const std::lock_guard lock(commitMutex());
+    const std::lock_guard lock(detail::storeMutex());
+    const detail::FileLock storeLock = detail::lockStore(state_->root);
     std::map<std::string, detail::CommittedSeries> series;
     for (const auto& [staged, fields] : state_->instances) {
         const fs::path folder = state_->root / fields.studyInstanceUid / fields.seriesInstanceUid;
@@ -156,6 +175,18 @@ void LocalStore::Transaction::commit() {
     detail::recordSeries(indexFile(state_->root), committed);
     state_->instances.clear();
     discard();
+    if (state_->sizeLimit > 0) {
+        std::set<std::string> studies;
+        for (const detail::CommittedSeries& one : committed) {
+            studies.insert(one.fields.studyInstanceUid);
+        }
+        try {
+            detail::cleanUpLocked(state_->root, state_->sizeLimit,
+                                  std::vector<std::string>(studies.begin(), studies.end()));
+        } catch (const Error& e) {
+            log::warning(kLog, "cannot clean the study store up: " + e.problem());
+        }
+    }
 }
 
 void LocalStore::Transaction::discard() noexcept {

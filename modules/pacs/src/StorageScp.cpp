@@ -16,6 +16,7 @@
 #include "Association.h"
 #include "DatasetFields.h"
 #include "ListenSocket.h"
+#include "Tls.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
 
@@ -204,6 +205,7 @@ struct StorageScp::Impl {
     ListenerConfig config;
     ListenerStats stats;
     mutable std::mutex mutex;
+    std::unique_ptr<detail::TimedTlsLayer> tls;  ///< outlives scp (its network uses it)
     std::unique_ptr<Scp> scp;
     std::thread worker;
     std::mutex startMutex;
@@ -236,6 +238,17 @@ StorageScp::StorageScp(LocalStore& store, ListenerConfig config) : impl_(std::ma
     };
     impl_->scp = std::make_unique<Scp>(store, impl_->config, impl_->stats, impl_->mutex, started);
     DcmSCPConfig& c = impl_->scp->getConfig();
+    if (impl_->config.tls.enabled) {
+        impl_->tls = std::make_unique<detail::TimedTlsLayer>(
+            NET_ACCEPTOR, impl_->config.tls, impl_->config.timeouts.associateSeconds,
+            [&impl](const std::string& host, const std::string& problem) {
+                log::warning(kLog, "refused a connection from " + host +
+                                       ": TLS handshake failed (" + problem + ")");
+                const std::lock_guard lock(impl.mutex);
+                ++impl.stats.refusedAssociations;
+            });
+        c.setTransportLayer(impl_->tls.get());
+    }
     c.setAETitle(impl_->config.aeTitle.c_str());
     c.setPort(impl_->config.port);
     c.setHostLookupEnabled(OFFalse);

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "StoreIndex.h"
 
+#include <QDateTime>
 #include <QSqlDatabase>
 #include <QSqlError>
 #include <QSqlQuery>
 #include <QString>
 #include <QVariant>
+#include <algorithm>
 #include <atomic>
 #include <map>
 #include <utility>
@@ -70,6 +72,45 @@ class Connection {
     QString name_;
 };
 
+/// An SQL transaction on `c`, rolled back unless commit() was reached.
+class Transaction {
+  public:
+    Transaction(const Connection& c, std::filesystem::path database)
+        : db_(c.db()), file_(std::move(database)) {
+        if (!db_.transaction()) {
+            throw IoError(file_, "store index: " + db_.lastError().text().toStdString());
+        }
+    }
+    Transaction(const Transaction&) = delete;
+    Transaction& operator=(const Transaction&) = delete;
+    Transaction(Transaction&&) = delete;
+    Transaction& operator=(Transaction&&) = delete;
+    ~Transaction() {
+        if (!done_) {
+            db_.rollback();
+        }
+    }
+    void commit() const {
+        if (!db_.commit()) {
+            throw IoError(file_, "store index: " + db_.lastError().text().toStdString());
+        }
+        done_ = true;
+    }
+
+  private:
+    mutable QSqlDatabase db_;
+    std::filesystem::path file_;
+    mutable bool done_ = false;
+};
+
+/// The time of a use (ms since the epoch), later than every use recorded so
+/// far, so that the order of uses is strict even within one millisecond.
+qlonglong nextUse(const Connection& c) {
+    QSqlQuery last = c.run(QStringLiteral("SELECT coalesce(max(last_used), 0) FROM studies"));
+    const qlonglong now = QDateTime::currentMSecsSinceEpoch();
+    return last.next() ? std::max(now, last.value(0).toLongLong() + 1) : now;
+}
+
 }  // namespace
 
 void createIndex(const std::filesystem::path& database) {
@@ -86,33 +127,64 @@ void createIndex(const std::filesystem::path& database) {
         "SELECT count(*) FROM sqlite_master WHERE type='table' AND name IN ('studies','series')"));
     if (!result.next() || result.value(0).toInt() != 2) {
         throw FormatError(database, "not a VesselView store index");
+    }  // Indexes made before the size limit lack the time of last use.
+    QSqlQuery columns = c.run(QStringLiteral("PRAGMA table_info(studies)"));
+    bool hasLastUsed = false;
+    while (columns.next()) {
+        hasLastUsed = hasLastUsed || columns.value(1).toString() == QStringLiteral("last_used");
+    }
+    if (!hasLastUsed) {
+        c.run(
+            QStringLiteral("ALTER TABLE studies ADD COLUMN last_used INTEGER NOT NULL DEFAULT 0"));
     }
 }
 
 void recordSeries(const std::filesystem::path& database,
                   const std::vector<CommittedSeries>& series) {
     const Connection c(database);
-    QSqlDatabase db = c.db();
-    if (!db.transaction()) {
-        throw IoError(database, "store index: " + db.lastError().text().toStdString());
+    const Transaction t(c, database);
+    for (const CommittedSeries& one : series) {
+        const InstanceFields& f = one.fields;
+        c.run(QStringLiteral("INSERT OR REPLACE INTO studies (study_uid, patient_name, "
+                             "patient_id, study_date, study_description, accession, "
+                             "last_used) VALUES (?, ?, ?, ?, ?, ?, ?)"),
+              {q(f.studyInstanceUid), q(f.patientName), q(f.patientId), q(f.studyDate),
+               q(f.studyDescription), q(f.accessionNumber), nextUse(c)});
+        c.run(QStringLiteral("INSERT OR REPLACE INTO series VALUES (?, ?, ?, ?, ?, ?)"),
+              {q(f.seriesInstanceUid), q(f.studyInstanceUid), q(f.modality), q(f.seriesDescription),
+               f.seriesNumber, one.instances});
     }
-    try {
-        for (const CommittedSeries& one : series) {
-            const InstanceFields& f = one.fields;
-            c.run(QStringLiteral("INSERT OR REPLACE INTO studies VALUES (?, ?, ?, ?, ?, ?)"),
-                  {q(f.studyInstanceUid), q(f.patientName), q(f.patientId), q(f.studyDate),
-                   q(f.studyDescription), q(f.accessionNumber)});
-            c.run(QStringLiteral("INSERT OR REPLACE INTO series VALUES (?, ?, ?, ?, ?, ?)"),
-                  {q(f.seriesInstanceUid), q(f.studyInstanceUid), q(f.modality),
-                   q(f.seriesDescription), f.seriesNumber, one.instances});
-        }
-        if (!db.commit()) {
-            throw IoError(database, "store index: " + db.lastError().text().toStdString());
-        }
-    } catch (...) {
-        db.rollback();
-        throw;
+    t.commit();
+}
+
+bool touchStudy(const std::filesystem::path& database, const std::string& studyUid) {
+    const Connection c(database);
+    const Transaction t(c, database);
+    const QSqlQuery updated =
+        c.run(QStringLiteral("UPDATE studies SET last_used = ? WHERE study_uid = ?"),
+              {nextUse(c), q(studyUid)});
+    const bool found = updated.numRowsAffected() > 0;
+    t.commit();
+    return found;
+}
+
+std::vector<std::string> studiesByUse(const std::filesystem::path& database) {
+    const Connection c(database);
+    std::vector<std::string> uids;
+    QSqlQuery st =
+        c.run(QStringLiteral("SELECT study_uid FROM studies ORDER BY last_used, study_uid"));
+    while (st.next()) {
+        uids.push_back(s(st.value(0)));
     }
+    return uids;
+}
+
+void removeStudy(const std::filesystem::path& database, const std::string& studyUid) {
+    const Connection c(database);
+    const Transaction t(c, database);
+    c.run(QStringLiteral("DELETE FROM series WHERE study_uid = ?"), {q(studyUid)});
+    c.run(QStringLiteral("DELETE FROM studies WHERE study_uid = ?"), {q(studyUid)});
+    t.commit();
 }
 
 std::vector<StoredStudy> readIndex(const std::filesystem::path& database) {

@@ -8,7 +8,10 @@
 // C-ECHO), caps the bytes of one association, and refuses the rest with a log
 // line ("vv.pacs") that names the peer but no patient data. Each association
 // is one store transaction: committed on a normal release, discarded on an
-// abort, a refusal or the cap.
+// abort, a refusal or the cap. With TLS, it speaks only TLS (BCP 195) and lets
+// in only peers whose certificate chains to the trusted CA(s); a failed TLS
+// handshake (an untrusted or missing certificate, a peer speaking plain TCP)
+// is refused with a log line naming the peer's address.
 
 #include <cstddef>
 #include <cstdint>
@@ -28,12 +31,16 @@ struct ListenerConfig {
     std::vector<Node> allowedPeers;         ///< calling AE title + host (IP address) pairs
     std::size_t maxAssociationBytes = std::size_t{4} << 30;  ///< bytes of one association
     Timeouts timeouts;
+    /// TLS: when enabled, `certificate` and `privateKey` (ours, shown to the
+    /// peer) and `trustedCertificates` (the CA(s) the peer's certificate must
+    /// chain to) are all required.
+    TlsSettings tls;
 };
 
 /// Counters of what the listener did (no patient data).
 struct ListenerStats {
     std::size_t acceptedAssociations = 0;
-    std::size_t refusedAssociations = 0;
+    std::size_t refusedAssociations = 0;  ///< including failed TLS handshakes
     std::size_t committedInstances = 0;
     std::size_t discardedAssociations = 0;  ///< aborted or over the cap
 };
@@ -41,8 +48,9 @@ struct ListenerStats {
 class StorageScp {
   public:
     /// Validates `config` (InvalidArgumentError) and starts listening on its
-    /// address and port on a worker thread; throws IoError when the port
-    /// cannot be opened.
+    /// address and port on a worker thread; throws TlsError when its TLS
+    /// files cannot be read or do not match, IoError when the port cannot be
+    /// opened.
     StorageScp(LocalStore& store, ListenerConfig config);
     /// Stops listening (within about a second) and joins the worker.
     ~StorageScp();

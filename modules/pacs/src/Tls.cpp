@@ -1,0 +1,145 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "Tls.h"
+
+#include <arpa/inet.h>
+#include <dcmtk/dcmnet/dcmtrans.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <sys/time.h>
+
+#include <algorithm>
+#include <array>
+#include <memory>
+#include <utility>
+
+#include "vv/pacs/PacsError.h"
+
+namespace vv::pacs::detail {
+
+namespace {
+
+void check(const OFCondition& cond, const std::string& what) {
+    if (cond.bad()) {
+        throw TlsError(what + ": " + cond.text());
+    }
+}
+
+/// The IPv4 address of the peer of `socket`, or "an unknown host".
+std::string peerOf(DcmNativeSocketType socket) {
+    sockaddr_in address{};
+    socklen_t length = sizeof address;
+    std::array<char, INET_ADDRSTRLEN> text{};
+    if (::getpeername(socket, reinterpret_cast<sockaddr*>(&address), &length) != 0 ||
+        address.sin_family != AF_INET ||
+        ::inet_ntop(AF_INET, &address.sin_addr, text.data(), text.size()) == nullptr) {
+        return "an unknown host";
+    }
+    return text.data();
+}
+
+/// Passes everything to the TLS connection; bounds the handshakes and
+/// reports a failed server handshake.
+class TimedConnection : public DcmTransportConnection {
+  public:
+    TimedConnection(DcmNativeSocketType socket, DcmTransportConnection* inner, int handshakeSeconds,
+                    const TimedTlsLayer::Refused& onRefused)
+        : DcmTransportConnection(socket),
+          inner_(inner),
+          handshakeSeconds_(handshakeSeconds),
+          onRefused_(onRefused) {}
+
+    OFCondition serverSideHandshake() override {
+        const OFCondition cond = timed([this] { return inner_->serverSideHandshake(); });
+        if (cond.bad() && onRefused_) {
+            onRefused_(peerOf(getSocket()), cond.text() != nullptr ? cond.text() : "TLS failed");
+        }
+        return cond;
+    }
+    OFCondition clientSideHandshake() override {
+        return timed([this] { return inner_->clientSideHandshake(); });
+    }
+    OFCondition renegotiate(const char* suite) override { return inner_->renegotiate(suite); }
+    ssize_t read(void* buf, size_t n) override { return inner_->read(buf, n); }
+    ssize_t write(void* buf, size_t n) override { return inner_->write(buf, n); }
+    void close() override { inner_->close(); }
+    void closeTransportConnection() override { inner_->closeTransportConnection(); }
+    unsigned long getPeerCertificateLength() override { return inner_->getPeerCertificateLength(); }
+    unsigned long getPeerCertificate(void* buf, unsigned long length) override {
+        return inner_->getPeerCertificate(buf, length);
+    }
+    OFBool networkDataAvailable(int timeout) override {
+        return inner_->networkDataAvailable(timeout);
+    }
+    OFBool isTransparentConnection() override { return inner_->isTransparentConnection(); }
+    OFString& dumpConnectionParameters(OFString& str) override {
+        return inner_->dumpConnectionParameters(str);
+    }
+
+  private:
+    /// Runs `handshake` with our receive timeout on the socket instead of
+    /// DCMTK's (60 s), then DCMTK's again for the association.
+    template <class Handshake>
+    OFCondition timed(Handshake handshake) {
+        timeval previous{};
+        socklen_t length = sizeof previous;
+        const bool known =
+            ::getsockopt(getSocket(), SOL_SOCKET, SO_RCVTIMEO, &previous, &length) == 0;
+        const timeval bound{handshakeSeconds_, 0};
+        ::setsockopt(getSocket(), SOL_SOCKET, SO_RCVTIMEO, &bound, sizeof bound);
+        const OFCondition cond = handshake();
+        if (known) {
+            ::setsockopt(getSocket(), SOL_SOCKET, SO_RCVTIMEO, &previous, sizeof previous);
+        }
+        return cond;
+    }
+
+    std::unique_ptr<DcmTransportConnection> inner_;
+    int handshakeSeconds_;
+    const TimedTlsLayer::Refused& onRefused_;
+};
+
+}  // namespace
+
+void prepareTls(DcmTLSTransportLayer& layer, const TlsSettings& tls, T_ASC_NetworkRole role) {
+    if (tls.trustedCertificates.empty()) {
+        throw TlsError("TLS needs the trusted (CA) certificates");
+    }
+    if (role == NET_ACCEPTOR && (tls.certificate.empty() || tls.privateKey.empty())) {
+        throw TlsError("a TLS listener needs its certificate and private key");
+    }
+    check(layer.setTLSProfile(TSP_Profile_BCP195), "TLS profile");
+    check(layer.activateCipherSuites(), "TLS cipher suites");
+    check(layer.addTrustedCertificateFile(tls.trustedCertificates.c_str(), DCF_Filetype_PEM),
+          tls.trustedCertificates.string());
+    if (!tls.certificate.empty()) {
+        check(layer.setPrivateKeyFile(tls.privateKey.c_str(), DCF_Filetype_PEM),
+              tls.privateKey.string());
+        check(layer.setCertificateFile(tls.certificate.c_str(), DCF_Filetype_PEM),
+              tls.certificate.string());
+        if (!layer.checkPrivateKeyMatchesCertificate()) {
+            throw TlsError(tls.privateKey.string() + " is not the key of " +
+                           tls.certificate.string());
+        }
+    }
+    layer.setCertificateVerification(DCV_requireCertificate);
+}
+
+TimedTlsLayer::TimedTlsLayer(T_ASC_NetworkRole networkRole, const TlsSettings& tls,
+                             int handshakeSeconds, Refused onRefused)
+    : DcmTLSTransportLayer(networkRole, nullptr, OFTrue),
+      handshakeSeconds_(std::max(1, handshakeSeconds)),
+      onRefused_(std::move(onRefused)) {
+    prepareTls(*this, tls, networkRole);
+}
+
+DcmTransportConnection* TimedTlsLayer::createConnection(DcmNativeSocketType openSocket,
+                                                        OFBool useSecureLayer) {
+    DcmTransportConnection* inner =
+        DcmTLSTransportLayer::createConnection(openSocket, useSecureLayer);
+    if (inner == nullptr || !useSecureLayer) {
+        return inner;
+    }
+    return new TimedConnection(openSocket, inner, handshakeSeconds_, onRefused_);
+}
+
+}  // namespace vv::pacs::detail

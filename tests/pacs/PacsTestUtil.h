@@ -1,0 +1,88 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Shared by the networking tests: the synthetic CTA series written as DICOM
+// files, a folder's files in order, a port that accepts connections and never
+// answers, and a Progress that acts once at the first report.
+#pragma once
+
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "SyntheticCta.h"
+#include "vv/core/Progress.h"
+#include "vv/dicom/SeriesWriter.h"
+
+namespace vv::test {
+
+/// The files of `folder`, sorted by name.
+inline std::vector<std::filesystem::path> filesOf(const std::filesystem::path& folder) {
+    std::vector<std::filesystem::path> files;
+    for (const auto& e : std::filesystem::directory_iterator(folder)) {
+        files.push_back(e.path());
+    }
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+/// A synthetic CTA of `size` x `size` x `slices` voxels (slices at least 8)
+/// written as a CT series of patient `patientId` into `folder` (emptied
+/// first); returns its files.
+inline std::vector<std::filesystem::path> writeCtaFiles(const std::filesystem::path& folder,
+                                                        const std::string& patientId, int slices,
+                                                        int size = 16) {
+    std::filesystem::remove_all(folder);
+    const auto cta = makeSyntheticCta({size, size, slices}, 2, 0.0, 0.0);
+    dicom::CtSeriesWriteOptions options;
+    options.patientId = patientId;
+    dicom::writeCtSeries(folder, cta.volume, options);
+    return filesOf(folder);
+}
+
+/// A socket on 127.0.0.1 that accepts connections (the kernel's backlog) but
+/// never answers; closed on destruction.
+class SilentPort {
+  public:
+    SilentPort() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+            ::listen(fd_, 4) != 0 ||
+            ::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+            throw std::runtime_error("cannot open a silent port");
+        }
+        port_ = ntohs(address.sin_port);
+    }
+    ~SilentPort() { ::close(fd_); }
+    SilentPort(const SilentPort&) = delete;
+    SilentPort& operator=(const SilentPort&) = delete;
+    [[nodiscard]] std::uint16_t port() const { return port_; }
+
+  private:
+    int fd_;
+    std::uint16_t port_ = 0;
+};
+
+/// A Progress that calls `action` once, at the first report (`*done` tells
+/// whether it happened; it must outlive the Progress).
+inline Progress atFirstReport(bool* done, std::function<void()> action) {
+    return Progress(
+        [done, action = std::move(action)](double, std::string_view) {
+            if (!*done) {
+                *done = true;
+                action();
+            }
+        },
+        {});
+}
+
+}  // namespace vv::test
