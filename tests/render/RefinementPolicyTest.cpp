@@ -259,6 +259,10 @@ TEST(RefinementPolicyTest, LoadFromOtherProcessesDoesNotPushTheBudgetDown) {
     // A frame known by its wall time only: the wall time, as before.
     policy.frameMeasured(80.0);
     EXPECT_DOUBLE_EQ(policy.lastFrameCost(), 80.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);  // down, as the loaded frame would
+    ASSERT_TRUE(policy.cameraMoved());
+    policy.frameMeasured(80.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.35F);
 }
 
 TEST(RefinementPolicyTest, OnAGpuTheFramesGpuTimeCounts) {
