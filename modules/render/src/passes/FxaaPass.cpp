@@ -28,6 +28,17 @@ void setFilter(QOpenGLFunctions_4_1_Core& g, unsigned texture, GLint filter) {
     }
 }
 
+/// Ends a pass that read `texture` on the active unit with bilinear taps:
+/// nearest again and unbound, no program, the depth test back on; then
+/// checks GL (RenderError naming `what`).
+void finishPass(QOpenGLFunctions_4_1_Core& g, unsigned texture, const char* what) {
+    setFilter(g, texture, GL_NEAREST);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    g.glUseProgram(0);
+    g.glEnable(GL_DEPTH_TEST);
+    checkGlError(g, what);
+}
+
 void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const FinalData& d) {
     const PassContext& context = inputs.context;
     auto& g = *context.gl;
@@ -44,11 +55,7 @@ void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const Final
     g.glBindVertexArray(context.emptyVao);
     g.glDrawArrays(GL_TRIANGLES, 0, 3);
     g.glBindVertexArray(0);
-    setFilter(g, input, GL_NEAREST);
-    g.glBindTexture(GL_TEXTURE_2D, 0);
-    g.glUseProgram(0);
-    g.glEnable(GL_DEPTH_TEST);
-    checkGlError(g, "FXAA pass");
+    finishPass(g, input, "FXAA pass");
 }
 
 }  // namespace
@@ -144,11 +151,7 @@ void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const
     setFilter(g, height, GL_NEAREST);
     g.glBindTexture(GL_TEXTURE_2D, 0);
     g.glActiveTexture(GL_TEXTURE0);
-    setFilter(g, color, GL_NEAREST);
-    g.glBindTexture(GL_TEXTURE_2D, 0);
-    g.glUseProgram(0);
-    g.glEnable(GL_DEPTH_TEST);
-    checkGlError(g, "upscale pass");
+    finishPass(g, color, "upscale pass");
 }
 
 }  // namespace
