@@ -2,12 +2,13 @@
 #include "vv/render/FrameCost.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string_view>
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <ctime>
-#define VV_HAS_CPU_CLOCKS 1
+#define VV_HAS_CPU_CLOCKS 1  // NOLINT(cppcoreguidelines-macro-usage): selects code, not a value
 #endif
 
 namespace vv::render {
@@ -68,13 +69,11 @@ bool isSoftwareRenderer(const char* glRenderer) noexcept {
         return false;
     }
     const std::string_view name(glRenderer);
-    for (const std::string_view software :
-         {"llvmpipe", "softpipe", "SwiftShader", "Software Rasterizer", "GDI Generic"}) {
-        if (name.find(software) != std::string_view::npos) {
-            return true;
-        }
-    }
-    return false;
+    constexpr std::array<std::string_view, 5> kSoftware = {"llvmpipe", "softpipe", "SwiftShader",
+                                                           "Software Rasterizer", "GDI Generic"};
+    return std::ranges::any_of(kSoftware, [&](std::string_view software) {
+        return name.find(software) != std::string_view::npos;
+    });
 }
 
 }  // namespace vv::render

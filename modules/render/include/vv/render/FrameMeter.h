@@ -26,6 +26,8 @@ class FrameMeter {
     FrameMeter();
     FrameMeter(const FrameMeter&) = delete;
     FrameMeter& operator=(const FrameMeter&) = delete;
+    FrameMeter(FrameMeter&&) = delete;
+    FrameMeter& operator=(FrameMeter&&) = delete;
     ~FrameMeter();
 
     /// Reads the renderer (software rasteriser or GPU) and, on a GPU,
