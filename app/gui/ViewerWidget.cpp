@@ -39,14 +39,12 @@ ViewerWidget::ViewerWidget(QWidget* parent) : QOpenGLWidget(parent) {
     previewArrivalTimer_->setSingleShot(true);
     previewArrivalTimer_->setInterval(kPreviewArrivalDelayMs);
     connect(previewArrivalTimer_, &QTimer::timeout, this, &ViewerWidget::requestFrame);
-    frameClock_.start();
     connect(this, &QOpenGLWidget::frameSwapped, this, [this] {
-        if (budgetFrameStart_) {
-            // Drawing plus Qt composing the window: what the frame rate sees
-            // (on software OpenGL the composition alone takes ~15 ms at 720p).
-            view_.refinement().frameMeasured(
-                static_cast<double>(frameClock_.nsecsElapsed() - *budgetFrameStart_) / 1e6);
-            budgetFrameStart_.reset();
+        // Drawing plus Qt composing the window: what the frame rate sees
+        // (on software OpenGL the composition alone takes ~15 ms at 720p),
+        // by the work it took (render::frameCostMilliseconds).
+        if (const auto frame = frameMeter_.atSwap()) {
+            view_.refinement().frameMeasured(*frame);
         }
     });
     setFormat(requiredFormat());
@@ -126,6 +124,7 @@ void ViewerWidget::releaseGl() {
         return;
     }
     makeCurrent();
+    frameMeter_.release();
     view_.release();
     doneCurrent();
 }
@@ -410,6 +409,7 @@ void ViewerWidget::initializeGL() {
             QMetaObject::invokeMethod(this, &ViewerWidget::solveArrived, Qt::QueuedConnection);
         });
         glDescription_ = QString::fromStdString(view_.meshRenderer().glDescription());
+        frameMeter_.initialize();
         frameDirty_ = true;
     } catch (const vv::Error& e) {
         const QSurfaceFormat f = ctx->format();
@@ -463,11 +463,10 @@ void ViewerWidget::paintGL() {
         // frame (hundreds of ms on software rasterisers) for the same pixels.
         return;
     }
-    frameDirty_ = false;        // requests made while drawing ask for the next frame
-    budgetFrameStart_.reset();  // only a camera-move frame below measures itself
+    frameDirty_ = false;  // requests made while drawing ask for the next frame
     QElapsedTimer paintTimer;
     paintTimer.start();
-    const qint64 paintStart = frameClock_.nsecsElapsed();
+    frameMeter_.beginFrame();
     try {
         camera_.setViewport(width(), height());
         if (autoFit_) {
@@ -475,12 +474,10 @@ void ViewerWidget::paintGL() {
             camera_.fit(camera_.sceneBounds());
         }
         const render::RefinementPolicy::AfterFrame after = view_.render(camera_, frameTarget());
-        if (after.measure) {
-            // Dynamic resolution: this frame's time, up to the swap of the
-            // window's composed frame (frameSwapped), sets the size of the
-            // next camera move's frames.
-            budgetFrameStart_ = paintStart;
-        }
+        // Dynamic resolution: a camera-move frame's cost, up to the swap of
+        // the window's composed frame (frameSwapped), sets the size of the
+        // next camera move's frames; other frames measure nothing.
+        frameMeter_.endFrame(after.measure);
         if (after.showedCameraMove) {
             previewArrivalTimer_->stop();  // this frame showed the newest preview
         }

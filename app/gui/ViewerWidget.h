@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include <QElapsedTimer>
 #include <QOpenGLWidget>
 #include <QPoint>
 #include <QSize>
@@ -17,6 +16,7 @@
 #include "gui/WorkerRun.h"
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
+#include "vv/render/FrameMeter.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/MeshStyle.h"
@@ -195,14 +195,21 @@ class ViewerWidget : public QOpenGLWidget {
     /// VSS's: ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
     /// and up when it took under 0.6 x, so slow machines keep their frame
     /// rate and fast ones get full-size frames; in between the size holds
-    /// (a preview VSS shows only at the size it was solved at). A frame's time
+    /// (a preview VSS shows only at the size it was solved at). A frame
     /// runs from paintGL to the swap of the window Qt composes (frameSwapped),
     /// since that is what the frame rate sees: on software OpenGL the
-    /// composition alone takes ~15 ms at 720p. Default 30 ms; 0 = a fixed
-    /// scale. Each moving frame then waits for the GL to finish (glFinish) to
-    /// measure itself. Non-finite or negative values count as 0.
+    /// composition alone takes ~15 ms at 720p. Its cost is the work it took,
+    /// not the wall time other processes stretch (render::FrameMeter,
+    /// render::frameCostMilliseconds): CPU time on software OpenGL, CPU and
+    /// GPU time (timer queries; each moving frame then waits for its GPU
+    /// time) on a GPU. Default 30 ms; 0 = a fixed scale. Non-finite or
+    /// negative values count as 0.
     void setFrameBudget(double milliseconds);
     [[nodiscard]] double frameBudget() const noexcept { return view_.refinement().frameBudget(); }
+    /// The cost (ms) the frame budget saw for the last measured moving frame.
+    [[nodiscard]] double lastFrameCost() const noexcept {
+        return view_.refinement().lastFrameCost();
+    }
     static constexpr float kMinInteractiveScale = render::RefinementPolicy::kMinInteractiveScale;
     /// Triangle budget of the simplified geometry drawn while the camera
     /// moves (default 60,000); 0 = always draw the full meshes. Applies to
@@ -429,10 +436,9 @@ class ViewerWidget : public QOpenGLWidget {
     /// frame per arrival would double the work per mouse move.
     static constexpr int kPreviewArrivalDelayMs = 60;
     QTimer* previewArrivalTimer_ = nullptr;
-    QElapsedTimer frameClock_;  ///< started with the widget
-    /// frameClock_ at the start of a camera-move frame that measures itself
-    /// for the frame budget, until its swap (frameSwapped).
-    std::optional<qint64> budgetFrameStart_;
+    /// Measures camera-move frames for the frame budget, up to their swap
+    /// (frameSwapped).
+    render::FrameMeter frameMeter_;
     double paintMilliseconds_ = 0.0;
 
     // --- Probe and measurement -------------------------------------------

@@ -12,6 +12,8 @@
 // visibility, which the composite put in the alpha channel. Two bilinear
 // taps a pixel: on software rasterisers a full-size pass costs about what
 // a bilinear blit does only when it samples this little.
+// Built with COLOR_ONLY for the parts of the target no iso-line reaches
+// (UpscaleTiles.h): one tap a pixel, the same pixels there.
 
 in vec2 vUv;
 
@@ -26,6 +28,7 @@ out vec4 fragColor;
 void main() {
     vec4 composited = textureLod(uColor, vUv, 0.0);
     vec3 color = composited.rgb;
+#ifndef COLOR_ONLY
     if (uIsoLines > 0) {
         // On vessel pixels the height is the vessel's own z, which meets z'
         // at the contour; the visibility fades the lines out there.
@@ -40,5 +43,6 @@ void main() {
         vec3 ink = luminance > 0.3 ? color * 0.15 : vec3(0.8);
         color = mix(color, ink, coverage * clamp(uIsoStrength, 0.0, 1.0) * composited.a);
     }
+#endif
     fragColor = vec4(color, 1.0);
 }

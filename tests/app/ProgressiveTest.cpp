@@ -786,6 +786,17 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     } else if (qEnvironmentVariable("VV_BENCH_FULL") == QStringLiteral("0")) {
         configs.resize(3);  // VV_BENCH_FULL=0: no full-size rows (a minute under load)
     }
+    // VV_BENCH_ROWS=1,2: only these rows of the list above (from 0).
+    if (const QString rows = qEnvironmentVariable("VV_BENCH_ROWS"); !rows.isEmpty()) {
+        std::vector<Config> chosen;
+        for (const QString& row : rows.split(QLatin1Char(','))) {
+            const auto index = static_cast<std::size_t>(row.toUInt());
+            if (index < configs.size()) {
+                chosen.push_back(configs[index]);
+            }
+        }
+        configs = chosen;
+    }
     for (const Config config : configs) {
         const bool progressive = config.progressive;
         viewer.setProgressiveRefinement(progressive);
@@ -827,6 +838,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         QElapsedTimer total;
         total.start();
         const double cpuAtStart = processCpuMilliseconds();
+        std::vector<double> costMs;  // what the frame budget saw
         for (int i = 0; i < 30; ++i) {
             const quint64 frames = viewer.framesWithScene();
             QElapsedTimer t;
@@ -837,6 +849,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             frameMs.push_back(static_cast<double>(t.nsecsElapsed()) / 1e6);
             cpuMs.push_back(processCpuMilliseconds() - cpuBefore);
             paintMs.push_back(viewer.lastPaintMilliseconds());
+            costMs.push_back(viewer.lastFrameCost());
             moving.add(viewer);
             movingSize = viewer.lastRenderSize();
             movingVssSize = viewer.lastVssSize();
@@ -891,6 +904,13 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             movingCulled);
         std::sort(cpuMs.begin(), cpuMs.end());
         const int cores = QThread::idealThreadCount();
+        if (config.budget > 0.0) {
+            std::sort(costMs.begin(), costMs.end());
+            std::printf(
+                "[bench]   frame budget: measured frame cost median %.1f ms (min %.1f, "
+                "max %.1f)\n",
+                costMs[costMs.size() / 2], costMs.front(), costMs.back());
+        }
         std::printf(
             "[bench]   moving frames: CPU time of the process %.1f ms per frame over the 30 "
             "moves (move -> frame median %.1f ms) = %.1f ms per frame on %d free cores "
@@ -942,6 +962,9 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     // frame budget chose above: every scale drags to the view and back.
     // VV_BENCH_SHOTS=dir saves the frames as PNGs there.
     const QString shots = qEnvironmentVariable("VV_BENCH_SHOTS");
+    if (qEnvironmentVariable("VV_BENCH_SSIM") == QStringLiteral("0")) {
+        return;  // VV_BENCH_SSIM=0: the fps rows only
+    }
     viewer.setProgressiveRefinement(true);
     // (render scale, VSS scale): the floor, the render size at 0.35 and 0.5
     // over a VSS at 0.25, and the VSS at the render size at 0.35, 0.42 and 0.5.

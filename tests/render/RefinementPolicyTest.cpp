@@ -4,7 +4,9 @@
 // and the frame-budget steps of dynamic resolution.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <limits>
+#include <optional>
 
 #include "vv/render/RefinementPolicy.h"
 
@@ -211,6 +213,114 @@ TEST(RefinementPolicyTest, AFixedScaleTurnsTheBudgetOff) {
     EXPECT_EQ(policy.frameBudget(), 0.0);
     policy.setFrameBudget(std::numeric_limits<double>::infinity());
     EXPECT_EQ(policy.frameBudget(), 0.0);
+}
+
+/// A measured frame: wall, process and drawing thread CPU, GPU (< 0: none)
+/// milliseconds.
+FrameMeasurement measured(double wall, double process, double thread, double gpu, int cores,
+                          bool softwareGl) {
+    FrameMeasurement frame;
+    frame.wallMilliseconds = wall;
+    if (process >= 0.0) {
+        frame.processCpuMilliseconds = process;
+    }
+    if (thread >= 0.0) {
+        frame.threadCpuMilliseconds = thread;
+    }
+    if (gpu >= 0.0) {
+        frame.gpuMilliseconds = gpu;
+    }
+    frame.cores = cores;
+    frame.softwareGl = softwareGl;
+    return frame;
+}
+
+// The budget weighs a frame's work, not the wall time other processes
+// stretch: on software OpenGL the drawing thread's CPU time plus the other
+// threads' spread over the cores.
+TEST(RefinementPolicyTest, LoadFromOtherProcessesDoesNotPushTheBudgetDown) {
+    RefinementPolicy policy;
+    policy.setFrameBudget(30.0);
+    ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.5F);
+    // 80 ms on the wall clock, of which this process worked 10 ms on the
+    // drawing thread and 30 ms on two cores: 25 ms on a free machine.
+    const FrameMeasurement loaded = measured(80.0, 40.0, 10.0, -1.0, 2, true);
+    policy.frameMeasured(loaded);
+    EXPECT_DOUBLE_EQ(policy.lastFrameCost(), 25.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.5F);  // holds
+    EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.5F);
+    // The same wall time with the work to match steps down.
+    FrameMeasurement slow = loaded;
+    slow.processCpuMilliseconds = 110.0;
+    slow.threadCpuMilliseconds = 20.0;  // 20 + 90 / 2
+    policy.frameMeasured(slow);
+    EXPECT_DOUBLE_EQ(policy.lastFrameCost(), 65.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
+    // A frame known by its wall time only: the wall time, as before.
+    policy.frameMeasured(80.0);
+    EXPECT_DOUBLE_EQ(policy.lastFrameCost(), 80.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);  // down, as the loaded frame would
+    ASSERT_TRUE(policy.cameraMoved());
+    policy.frameMeasured(80.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.35F);
+}
+
+TEST(RefinementPolicyTest, OnAGpuTheFramesGpuTimeCounts) {
+    RefinementPolicy policy;
+    policy.setFrameBudget(30.0);
+    // Little CPU work, 45 ms of GPU work: too slow, whatever the CPU says.
+    FrameMeasurement frame = measured(48.0, 6.0, 5.0, 45.0, 8, false);
+    policy.frameMeasured(frame);
+    EXPECT_DOUBLE_EQ(policy.lastFrameCost(), 45.0);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
+    // A fast GPU on a loaded machine (70 ms on the wall clock): fast.
+    frame.wallMilliseconds = 70.0;
+    frame.gpuMilliseconds = 9.0;
+    policy.frameMeasured(frame);
+    EXPECT_NEAR(policy.lastFrameCost(), 9.0, 1e-12);
+    EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.6F);  // one step up from 0.5
+    // Without a GPU time (no timer queries) a GPU's work is unknown: the wall time.
+    frame.gpuMilliseconds.reset();
+    policy.frameMeasured(frame);
+    EXPECT_DOUBLE_EQ(policy.lastFrameCost(), 70.0);
+}
+
+TEST(FrameCostTest, TheCostIsNeverAboveTheWallTimeAndFallsBackToIt) {
+    // Threads that ran side by side with the drawing thread: the wall time.
+    EXPECT_DOUBLE_EQ(frameCostMilliseconds(measured(50.0, 200.0, 100.0, -1.0, 2, true)), 50.0);
+    // No CPU clocks: the wall time.
+    EXPECT_DOUBLE_EQ(frameCostMilliseconds(measured(50.0, -1.0, -1.0, -1.0, 2, true)), 50.0);
+    // Nonsense counts as missing; the thread's time never above the process's.
+    FrameMeasurement nonsense = measured(50.0, 0.0, 10.0, -1.0, 2, true);
+    nonsense.processCpuMilliseconds = -1.0;
+    EXPECT_DOUBLE_EQ(frameCostMilliseconds(nonsense), 50.0);
+    EXPECT_DOUBLE_EQ(frameCostMilliseconds(measured(50.0, 12.0, 30.0, -1.0, 0, true)), 12.0);
+    EXPECT_DOUBLE_EQ(frameCostMilliseconds(measured(std::numeric_limits<double>::quiet_NaN(), -1.0,
+                                                    -1.0, -1.0, 1, false)),
+                     0.0);
+}
+
+TEST(FrameCostTest, SoftwareRasterisersAreRecognisedByName) {
+    EXPECT_TRUE(isSoftwareRenderer("llvmpipe (LLVM 15.0.6, 256 bits)"));
+    EXPECT_TRUE(isSoftwareRenderer("Google SwiftShader"));
+    EXPECT_FALSE(isSoftwareRenderer("NVIDIA GeForce RTX 3060/PCIe/SSE2"));
+    EXPECT_FALSE(isSoftwareRenderer("AMD Radeon Pro (radeonsi, navi10, LLVM 15.0.6)"));
+    EXPECT_FALSE(isSoftwareRenderer(nullptr));
+}
+
+TEST(FrameCostTest, TheCpuClocksCountThisThreadsWork) {
+    const std::optional<CpuTimes> before = cpuTimesNow();
+    ASSERT_TRUE(before.has_value());  // Linux: CLOCK_PROCESS_CPUTIME_ID, CLOCK_THREAD_CPUTIME_ID
+    volatile double sink = 0.0;
+    std::optional<CpuTimes> after;
+    do {
+        for (int i = 0; i < 100000; ++i) {
+            sink = sink + std::sqrt(static_cast<double>(i));
+        }
+        after = cpuTimesNow();
+    } while (after->threadMilliseconds - before->threadMilliseconds < 5.0);
+    EXPECT_GE(after->processMilliseconds - before->processMilliseconds,
+              after->threadMilliseconds - before->threadMilliseconds - 0.5);
 }
 
 }  // namespace

@@ -86,7 +86,9 @@ RefinementPolicy::AfterFrame RefinementPolicy::frameDrawn(const VssFrameStatus& 
     return after;
 }
 
-void RefinementPolicy::frameMeasured(double milliseconds) noexcept {
+void RefinementPolicy::frameMeasured(const FrameMeasurement& frame) noexcept {
+    const double milliseconds = frameCostMilliseconds(frame);
+    lastFrameCostMs_ = milliseconds;
     // The first step at or below the current scales.
     std::size_t step = kScaleSteps.size() - 1;
     for (std::size_t i = 0; i < kScaleSteps.size(); ++i) {

@@ -30,6 +30,10 @@ FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
     programs.aoBlur = Program(gl, kFullscreen, ":/vv/shaders/aoblur.frag", "AO blur");
     programs.fxaa = Program(gl, kFullscreen, ":/vv/shaders/fxaa.frag", "FXAA");
     programs.upscale = Program(gl, kFullscreen, ":/vv/shaders/upscale.frag", "upscale");
+    const std::string_view upscaleFragment[] = {":/vv/shaders/upscale.frag"};
+    const std::string_view colorOnly[] = {"COLOR_ONLY"};
+    programs.upscaleColor =
+        Program(gl, kFullscreen, upscaleFragment, "upscale (colour only)", colorOnly);
     return programs;
 }
 

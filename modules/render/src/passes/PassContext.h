@@ -32,6 +32,8 @@ struct FullscreenPrograms {
     Program aoBlur;
     Program fxaa;
     Program upscale;  ///< upscale.frag: a reduced frame into the target, iso-lines at its size
+    /// upscale.frag with COLOR_ONLY: where no iso-line reaches (UpscaleTiles.h).
+    Program upscaleColor;
 
     /// Builds them all in the current context. Throws RenderError when a
     /// shader fails.

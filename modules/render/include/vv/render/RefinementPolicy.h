@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <limits>
 
+#include "vv/render/FrameCost.h"
 #include "vv/render/FrameSettings.h"
 
 namespace vv::render {
@@ -26,7 +27,8 @@ namespace vv::render {
 ///    frame, which adds them (Still again).
 ///
 /// Dynamic resolution (a frame budget > 0): each moving frame's measured
-/// time steps the sizes of the next camera move's frames through
+/// cost (frameCostMilliseconds: CPU and GPU work, not wall time lost to
+/// other processes) steps the sizes of the next camera move's frames through
 /// kScaleSteps / kVssScaleSteps — down when it took over 1.15 x the budget,
 /// up when under 0.6 x; in between it holds (a preview VSS shows only at the
 /// size it was solved at, so the sizes change only between moves). Down to
@@ -104,9 +106,19 @@ class RefinementPolicy {
     };
     /// A frame drawn with frameSettings() showed a VSS with `status`.
     AfterFrame frameDrawn(const VssFrameStatus& status) noexcept;
-    /// A measured moving frame took `milliseconds` (drawing to the swap):
-    /// chooses the scale of the next camera move.
-    void frameMeasured(double milliseconds) noexcept;
+    /// A measured moving frame (drawing to the swap) cost
+    /// frameCostMilliseconds(`frame`): its own work, not the time other
+    /// processes held the cores (a loaded machine does not push the sizes
+    /// down). Chooses the scale of the next camera move.
+    void frameMeasured(const FrameMeasurement& frame) noexcept;
+    /// A measured moving frame known only by its wall time.
+    void frameMeasured(double wallMilliseconds) noexcept {
+        FrameMeasurement frame;
+        frame.wallMilliseconds = wallMilliseconds;
+        frameMeasured(frame);
+    }
+    /// The cost of the last measured frame (ms; 0 before any).
+    [[nodiscard]] double lastFrameCost() const noexcept { return lastFrameCostMs_; }
     /// The scale the next camera move will take.
     [[nodiscard]] float nextInteractiveScale() const noexcept { return nextInteractiveScale_; }
     /// The scale the next camera move's VSS will take.
@@ -122,6 +134,7 @@ class RefinementPolicy {
     float nextInteractiveScale_ = 0.5F;
     float nextVssScale_ = 0.5F;
     double frameBudgetMs_ = 30.0;
+    double lastFrameCostMs_ = 0.0;
 };
 
 }  // namespace vv::render
