@@ -38,6 +38,7 @@
 #include "gui/SeriesDialog.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/pacs/DicomMenu.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/DataPanel.h"
 #include "gui/panels/DisplayPanel.h"
@@ -322,6 +323,10 @@ void MainWindow::buildMenus() {
     defaults->setToolTip(tr("Display settings and panel layout as in a fresh installation"));
 
     view->addMenu(new LanguageMenu(this));  // stored in QSettings, applied at the next start
+
+    dicomMenu_ = new DicomMenu(this);  // network preferences, PACS browser
+    menuBar()->addMenu(dicomMenu_);
+    connect(dicomMenu_, &DicomMenu::openFolder, this, &MainWindow::openDicom);
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);

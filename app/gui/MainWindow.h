@@ -36,6 +36,7 @@ struct DicomScanResult;
 
 namespace vv::gui {
 
+class DicomMenu;
 class MeasureOverlay;
 class ScreenshotMode;
 class SeriesDialog;
@@ -131,6 +132,8 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] static QStringList recentFiles() { return DocumentController::recentFiles(); }
 
     [[nodiscard]] ViewerWidget* viewer() const noexcept { return viewer_; }
+    /// The DICOM menu: network preferences and the PACS browser.
+    [[nodiscard]] DicomMenu* dicomMenu() const noexcept { return dicomMenu_; }
     /// The central area: the 3-D viewer and, for DICOM scenes, the slice views.
     [[nodiscard]] SliceWorkspace* sliceWorkspace() const noexcept { return slices_; }
     /// The "Functional parameters" panel's array chooser (item 0 "None" with
@@ -265,6 +268,7 @@ class MainWindow : public QMainWindow {
     panels::SegmentationPanel* segmentationPanel_ = nullptr;
     panels::SidePanel* sidePanel_ = nullptr;
     DocumentController* document_ = nullptr;
+    DicomMenu* dicomMenu_ = nullptr;
     QList<QDockWidget*> docks_;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;
