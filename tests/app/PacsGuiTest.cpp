@@ -188,6 +188,8 @@ TEST_F(PacsGuiTest, RetrieveWithGetFillsTheStoreAndOpenShowsTheSeries) {
     EXPECT_EQ(b->status().toStdString(), "Done: images retrieved into the local study store: " +
                                              std::to_string(slices_) + ".");
     EXPECT_EQ(b->progressBar()->value(), b->progressBar()->maximum());
+    const std::string all = std::to_string(slices_);
+    EXPECT_EQ(b->progressBar()->text().toStdString(), all + " of " + all + " images");
     const auto studies = vv::pacs::LocalStore(store_).studies();
     ASSERT_EQ(studies.size(), 1U);
     ASSERT_EQ(studies[0].series.size(), 1U);

@@ -540,6 +540,8 @@ void PacsBrowser::retrieveEnded(const RetrieveOutcome& outcome) {
         return;
     }
     progress_->setValue(kProgressSteps);
+    const QString count = QLocale().toString(static_cast<qulonglong>(outcome.instances));
+    progress_->setFormat(tr("%1 of %2 images").arg(count, count));
     retrievedFolder_ = QString::fromStdString(outcome.folder.string());
     setStatus(tr("Done: images retrieved into the local study store: %1.")
                   .arg(QLocale().toString(static_cast<qulonglong>(outcome.instances))));
