@@ -51,7 +51,7 @@ class SidePanel;
 class VssPanel;
 }  // namespace panels
 
-/// The main window: the 3-D viewer, File / View / Help menus, a toolbar
+/// The main window: the 3-D viewer, File / View / DICOM / Help menus, a toolbar
 /// (VSS on/off, ambient occlusion, colour-blind-safe mode), one side panel
 /// (a dock, "sidePanelDock": panels::SidePanel) with the panels as sections
 /// that fold ("Void Space Surface" and "Functional parameters" open at

@@ -206,6 +206,7 @@ TEST_F(PacsGuiTest, RetrieveWithGetFillsTheStoreAndOpenShowsTheSeries) {
     ASSERT_TRUE(
         waitUntil([&] { return chooser != nullptr || !window_->lastError().isEmpty(); }, 30000));
     ASSERT_NE(chooser, nullptr) << window_->lastError().toStdString();
+    EXPECT_FALSE(b->isVisible()) << "the browser stays in front of the series chooser";
     EXPECT_EQ(chooser->selectedSeriesUid().toStdString(), studies[0].series[0].seriesInstanceUid);
     chooser->accept();
     ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000));

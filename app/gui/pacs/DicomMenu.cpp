@@ -38,7 +38,12 @@ PacsBrowser* DicomMenu::showBrowser() {
     if (browser_ == nullptr) {
         browser_ = new PacsBrowser(window_);
         browser_->setListenerRunning(listenerRunning_);
-        connect(browser_, &PacsBrowser::openFolder, this, &DicomMenu::openFolder);
+        // The browser steps aside for the series chooser and the scene (Query PACS… shows it
+        // again).
+        connect(browser_, &PacsBrowser::openFolder, this, [this](const QString& folder) {
+            browser_->hide();
+            emit openFolder(folder);
+        });
     } else {
         browser_->reloadSettings();
     }

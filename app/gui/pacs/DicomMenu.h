@@ -12,7 +12,8 @@ class NetworkPreferencesDialog;
 
 /// The main window's "DICOM" menu: Preferences… (the network preferences)
 /// and Query PACS… (one PACS browser, kept while the window lives; its Open
-/// emits openFolder(), which the window hands to its DICOM open path).
+/// hides it and emits openFolder(), which the window hands to its DICOM open
+/// path).
 class DicomMenu : public QMenu {
     Q_OBJECT
 
