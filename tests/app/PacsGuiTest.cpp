@@ -6,6 +6,9 @@
 // store with progress and Cancel, Open into the series dialog). Driven as a
 // user does: texts typed, buttons clicked; checked by what is shown.
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
+#include <unistd.h>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -22,6 +25,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QTest>
+#include <QTimer>
 #include <QTranslator>
 #include <algorithm>
 #include <filesystem>
@@ -77,6 +81,39 @@ TEST_F(PacsGuiTest, TestOnAWrongAeTitleOrAClosedPortSaysWhatFailed) {
         << refused;
     // The good node still answers: nothing is stuck.
     EXPECT_NE(testNode(dialog, 0).find("Success"), std::string::npos);
+}
+
+TEST_F(PacsGuiTest, TestOfAPeerThatNeverAnswersKeepsTheDialogResponsiveAndTimesOut) {
+    // A socket that accepts connections (the kernel's backlog) but never answers.
+    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
+    ASSERT_EQ(::listen(fd, 4), 0);
+    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
+    const int port = ntohs(address.sin_port);
+    auto* dialog = preferences();
+    addNode(dialog, QStringLiteral("Silent"), QStringLiteral("SILENT"), QStringLiteral("127.0.0.1"),
+            port);
+    dialog->nodeTable()->selectRow(1);
+    dialog->testButton()->click();
+    // While the worker waits, the button says so and the dialog handles events.
+    EXPECT_TRUE(dialog->testRunning());
+    EXPECT_FALSE(dialog->testButton()->isEnabled());
+    EXPECT_EQ(dialog->testButton()->text(), QStringLiteral("Testing…"));
+    bool timerFired = false;
+    QTimer::singleShot(100, dialog, [&timerFired] { timerFired = true; });
+    EXPECT_TRUE(waitUntil([&] { return timerFired; }, 2000));
+    EXPECT_TRUE(dialog->testRunning()) << "a silent peer cannot have answered yet";
+    dialog->aeTitleEdit()->setText(QStringLiteral("TYPED"));  // the user can go on editing
+    EXPECT_TRUE(waitUntil([dialog] { return !dialog->testRunning(); }, kNetworkWaitMs));
+    ::close(fd);
+    const std::string result = dialog->testResult().toStdString();
+    EXPECT_NE(result.find("did not answer in time"), std::string::npos) << result;
+    EXPECT_NE(result.find("SILENT@127.0.0.1:" + std::to_string(port)), std::string::npos);
+    EXPECT_EQ(dialog->testButton()->text(), QStringLiteral("&Test"));
 }
 
 TEST_F(PacsGuiTest, InvalidInputIsRefusedInPlaceNamingTheField) {
@@ -202,7 +239,7 @@ TEST_F(PacsGuiTest, RetrieveWithGetFillsTheStoreAndOpenShowsTheSeries) {
     bool shown = false;
     QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
     ASSERT_TRUE(b->openButton()->isEnabled());
-    QTest::mouseClick(b->openButton(), Qt::LeftButton);
+    b->openButton()->click();
     ASSERT_TRUE(
         waitUntil([&] { return chooser != nullptr || !window_->lastError().isEmpty(); }, 30000));
     ASSERT_NE(chooser, nullptr) << window_->lastError().toStdString();
@@ -223,7 +260,7 @@ TEST_F(PacsGuiTest, CancelMidRetrieveShowsCancelledAndStoresNothing) {
     QObject::connect(b, &vv::gui::PacsBrowser::retrieveProgress, b, [&](double fraction) {
         if (cancelledAt < 0.0 && fraction > 0.0 && b->cancelButton()->isEnabled()) {
             cancelledAt = fraction;
-            QTest::mouseClick(b->cancelButton(), Qt::LeftButton);
+            b->cancelButton()->click();
         }
     });
     EXPECT_FALSE(retrieve(b, b->retrieveStudyButton()));
