@@ -136,17 +136,24 @@ class PacsGuiFixture : public GuiFixture {
         return dialog->testResult().toStdString();
     }
 
-    /// Clicks Add… and fills in the node dialog as a user would; returns it (open).
-    static QPointer<vv::gui::NodeEditDialog> addNode(vv::gui::NetworkPreferencesDialog* dialog,
-                                                     const QString& name, const QString& ae,
-                                                     const QString& host, int port) {
+    /// Clicks `button` (Add… or Edit…) and returns the node dialog it opened.
+    static QPointer<vv::gui::NodeEditDialog> openNodeDialog(
+        vv::gui::NetworkPreferencesDialog* dialog, QPushButton* button) {
         QPointer<vv::gui::NodeEditDialog> edit;
         QObject::connect(
             dialog, &vv::gui::NetworkPreferencesDialog::nodeDialogShown, dialog,
             [&edit](QDialog* shown) { edit = qobject_cast<vv::gui::NodeEditDialog*>(shown); },
             Qt::SingleShotConnection);
-        dialog->addButton()->click();
-        EXPECT_TRUE(edit != nullptr);
+        button->click();
+        EXPECT_TRUE(edit != nullptr) << "no node dialog";
+        return edit;
+    }
+
+    /// Clicks Add… and fills in the node dialog as a user would; returns it (open).
+    static QPointer<vv::gui::NodeEditDialog> addNode(vv::gui::NetworkPreferencesDialog* dialog,
+                                                     const QString& name, const QString& ae,
+                                                     const QString& host, int port) {
+        QPointer<vv::gui::NodeEditDialog> edit = openNodeDialog(dialog, dialog->addButton());
         if (edit == nullptr) {
             return edit;
         }

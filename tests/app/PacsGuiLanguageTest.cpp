@@ -7,17 +7,15 @@
 
 #include <QCoreApplication>
 #include <QLayout>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QPushButton>
 #include <QTableWidget>
-#include <QTranslator>
 #include <QWindow>
 #include <string>
 #include <vector>
 
 #include "ClippingCheck.h"
 #include "PacsGuiFixture.h"
+#include "UiLanguage.h"
 
 namespace {
 
@@ -36,30 +34,14 @@ class PacsGuiLanguageTest : public vv::test::PacsGuiFixture,
   protected:
     void SetUp() override {
         // As gui/Translations.cpp does, before any widget exists.
-        if (QLatin1String(GetParam()) != QLatin1String("en")) {
-            const QLocale locale(QString::fromLatin1(GetParam()));
-            auto* own = new QTranslator(QCoreApplication::instance());
-            ASSERT_TRUE(own->load(locale, QStringLiteral("vesselview"), QStringLiteral("_"),
-                                  QStringLiteral(VV_QM_DIR)));
-            QCoreApplication::installTranslator(own);
-            auto* qt = new QTranslator(QCoreApplication::instance());
-            if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                         QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-                QCoreApplication::installTranslator(qt);
-            }
-            QLocale::setDefault(locale);
-        }
+        ASSERT_TRUE(vv::test::installUiLanguage(GetParam(), VV_QM_DIR));
         PacsGuiFixture::SetUp();
         window_->resize(1280, 800);
     }
 
     void TearDown() override {
         PacsGuiFixture::TearDown();
-        for (auto* translator : QCoreApplication::instance()->findChildren<QTranslator*>()) {
-            QCoreApplication::removeTranslator(translator);
-            delete translator;
-        }
-        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        vv::test::removeUiLanguage();
     }
 
     /// Lays `widget` out as shown, saves it as `name`-<language>.png and
@@ -86,12 +68,7 @@ TEST_P(PacsGuiLanguageTest, PreferencesShowEveryTextInFull) {
     auto* dialog = preferences();
     dialog->nodeTable()->selectRow(0);
     expectWhole(*dialog, "pacs-preferences");
-    QPointer<vv::gui::NodeEditDialog> edit;
-    QObject::connect(
-        dialog, &vv::gui::NetworkPreferencesDialog::nodeDialogShown, dialog,
-        [&edit](QDialog* shown) { edit = qobject_cast<vv::gui::NodeEditDialog*>(shown); },
-        Qt::SingleShotConnection);
-    dialog->editButton()->click();
+    QPointer<vv::gui::NodeEditDialog> edit = openNodeDialog(dialog, dialog->editButton());
     ASSERT_NE(edit, nullptr);
     expectWhole(*edit, "pacs-node");
     edit->reject();

@@ -6,9 +6,6 @@
 // store with progress and Cancel, Open into the series dialog). Driven as a
 // user does: texts typed, buttons clicked; checked by what is shown.
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
-#include <unistd.h>
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -84,16 +81,8 @@ TEST_F(PacsGuiTest, TestOnAWrongAeTitleOrAClosedPortSaysWhatFailed) {
 }
 
 TEST_F(PacsGuiTest, TestOfAPeerThatNeverAnswersKeepsTheDialogResponsiveAndTimesOut) {
-    // A socket that accepts connections (the kernel's backlog) but never answers.
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    ASSERT_EQ(::listen(fd, 4), 0);
-    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
-    const int port = ntohs(address.sin_port);
+    const vv::test::SilentPeer silent;
+    const int port = silent.port();
     auto* dialog = preferences();
     addNode(dialog, QStringLiteral("Silent"), QStringLiteral("SILENT"), QStringLiteral("127.0.0.1"),
             port);
@@ -109,7 +98,6 @@ TEST_F(PacsGuiTest, TestOfAPeerThatNeverAnswersKeepsTheDialogResponsiveAndTimesO
     EXPECT_TRUE(dialog->testRunning()) << "a silent peer cannot have answered yet";
     dialog->aeTitleEdit()->setText(QStringLiteral("TYPED"));  // the user can go on editing
     EXPECT_TRUE(waitUntil([dialog] { return !dialog->testRunning(); }, kNetworkWaitMs));
-    ::close(fd);
     const std::string result = dialog->testResult().toStdString();
     EXPECT_NE(result.find("did not answer in time"), std::string::npos) << result;
     EXPECT_NE(result.find("SILENT@127.0.0.1:" + std::to_string(port)), std::string::npos);

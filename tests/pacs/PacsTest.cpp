@@ -5,8 +5,6 @@
 // storage SCP, and the faults (unknown node pushing, Orthanc killed in the
 // middle of a retrieve, cancel, a too-big C-FIND answer).
 #include <gtest/gtest.h>
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -130,20 +128,11 @@ TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
 }
 
 TEST(PacsFaultTest, SilentPeerTimesOut) {
-    // A listening socket that accepts connections (the kernel's backlog) but never answers.
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
-    sockaddr_in address{};
-    address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    socklen_t length = sizeof address;
-    ASSERT_EQ(::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address), 0);
-    ASSERT_EQ(::listen(fd, 4), 0);
-    ASSERT_EQ(::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length), 0);
-    const Node silent{"SILENT", "127.0.0.1", ntohs(address.sin_port), {}};
+    const vv::test::SilentPeer peer;
+    const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
-    ::close(fd);
 }
 
 TEST_F(PacsTest, FindsTheStudyByItsKeys) {

@@ -9,6 +9,8 @@
 #include <QString>
 #include <exception>
 #include <string>
+#include <type_traits>
+#include <utility>
 
 #include "vv/pacs/Node.h"
 
@@ -34,6 +36,30 @@ struct NetworkFailure {
 /// Classifies the exception `error` (call it inside a catch block or with a
 /// stored exception_ptr); never throws.
 [[nodiscard]] NetworkFailure classifyFailure(const std::exception_ptr& error) noexcept;
+
+/// Runs `call()` (on a worker): for a call returning void, the failure
+/// (Kind::None when it worked); else the result and the failure, the result
+/// value-initialised when it failed. Never throws.
+template <typename Call>
+[[nodiscard]] auto tryNetwork(Call call) noexcept {
+    using Result = std::invoke_result_t<Call>;
+    if constexpr (std::is_void_v<Result>) {
+        try {
+            call();
+            return NetworkFailure{};
+        } catch (...) {
+            return classifyFailure(std::current_exception());
+        }
+    } else {
+        std::pair<Result, NetworkFailure> answer;
+        try {
+            answer.first = call();
+        } catch (...) {
+            answer.second = classifyFailure(std::current_exception());
+        }
+        return answer;
+    }
+}
 
 /// The translated message for `failure` with `node` ("Radiology PACS"'s
 /// AE@host:port): what failed and what to check.

@@ -9,7 +9,6 @@
 #include <QFormLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
@@ -23,6 +22,7 @@
 #include "gui/pacs/BackgroundCall.h"
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/NodeEditDialog.h"
+#include "gui/pacs/PacsWidgets.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/Echo.h"
 
@@ -124,16 +124,9 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
 
     auto* nodes = new QGroupBox(tr("PACS nodes"), this);
     auto* nodesLayout = new QVBoxLayout(nodes);
-    table_ = new QTableWidget(0, ColumnCount, nodes);
-    table_->setObjectName(QStringLiteral("pacsNodes"));
-    table_->setHorizontalHeaderLabels(
+    table_ = makeResultTable(
+        nodes, QStringLiteral("pacsNodes"),
         {tr("Name"), tr("AE title"), tr("Host"), tr("Port"), tr("TLS"), tr("May send to us")});
-    table_->setSelectionBehavior(QAbstractItemView::SelectRows);
-    table_->setSelectionMode(QAbstractItemView::SingleSelection);
-    table_->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    table_->verticalHeader()->hide();
-    table_->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table_->horizontalHeader()->setStretchLastSection(true);
     table_->setMinimumHeight(140);
     nodesLayout->addWidget(table_);
     auto* buttonRow = new QHBoxLayout;
@@ -170,14 +163,8 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     connect(table_, &QTableWidget::itemSelectionChanged, this,
             &NetworkPreferencesDialog::updateButtons);
 
-    error_ = new QLabel(this);
-    error_->setObjectName(QStringLiteral("preferencesError"));
-    error_->setWordWrap(true);
-    error_->setStyleSheet(QStringLiteral("color: #b00020;"));
-    error_->hide();
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    connect(buttons, &QDialogButtonBox::accepted, this, &NetworkPreferencesDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, this, &NetworkPreferencesDialog::reject);
+    error_ = makeErrorLabel(this, QStringLiteral("preferencesError"));
+    QDialogButtonBox* buttons = makeOkCancel(this);
 
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
@@ -291,15 +278,7 @@ void NetworkPreferencesDialog::testNode() {
     updateButtons();
     testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
     runInBackground(
-        this,
-        [me, node] {
-            try {
-                pacs::echo(me, node);
-                return NetworkFailure{};
-            } catch (...) {
-                return classifyFailure(std::current_exception());
-            }
-        },
+        this, [me, node] { return tryNetwork([&] { pacs::echo(me, node); }); },
         [this, node](const NetworkFailure& failure) {
             testing_ = false;
             test_->setText(tr("&Test"));

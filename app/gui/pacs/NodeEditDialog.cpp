@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "gui/PathField.h"
+#include "gui/pacs/PacsWidgets.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
@@ -102,14 +103,8 @@ NodeEditDialog::NodeEditDialog(const PacsNode& node, QStringList takenNames, QWi
         addBuddyRow(tlsForm, label, edit, row);
     }
 
-    error_ = new QLabel(this);
-    error_->setObjectName(QStringLiteral("nodeError"));
-    error_->setWordWrap(true);
-    error_->setStyleSheet(QStringLiteral("color: #b00020;"));
-    error_->hide();
-    auto* buttons = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    connect(buttons, &QDialogButtonBox::accepted, this, &NodeEditDialog::accept);
-    connect(buttons, &QDialogButtonBox::rejected, this, &NodeEditDialog::reject);
+    error_ = makeErrorLabel(this, QStringLiteral("nodeError"));
+    QDialogButtonBox* buttons = makeOkCancel(this);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);

@@ -9,7 +9,6 @@
 #include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
-#include <QHeaderView>
 #include <QLabel>
 #include <QLineEdit>
 #include <QProgressBar>
@@ -24,6 +23,7 @@
 
 #include "gui/pacs/BackgroundCall.h"
 #include "gui/pacs/NetworkFailure.h"
+#include "gui/pacs/PacsWidgets.h"
 #include "gui/pacs/RetrieveJob.h"
 
 namespace vv::gui {
@@ -76,19 +76,6 @@ std::string dicomDate(const QDateEdit* edit) {
     return edit->date() == kAnyDate
                ? std::string()
                : edit->date().toString(QStringLiteral("yyyyMMdd")).toStdString();
-}
-
-QTableWidget* table(QWidget* parent, const QString& name, const QStringList& headers) {
-    auto* t = new QTableWidget(0, static_cast<int>(headers.size()), parent);
-    t->setObjectName(name);
-    t->setHorizontalHeaderLabels(headers);
-    t->setSelectionBehavior(QAbstractItemView::SelectRows);
-    t->setSelectionMode(QAbstractItemView::SingleSelection);
-    t->setEditTriggers(QAbstractItemView::NoEditTriggers);
-    t->verticalHeader()->hide();
-    t->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    t->horizontalHeader()->setStretchLastSection(true);
-    return t;
 }
 
 }  // namespace
@@ -153,11 +140,12 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     grid->setColumnStretch(3, 1);
     grid->setColumnStretch(5, 2);
 
-    studies_ = table(this, QStringLiteral("pacsStudies"),
-                     {tr("Patient"), tr("Patient ID"), tr("Date"), tr("Description"),
-                      tr("Modalities"), tr("Accession"), tr("Series")});
-    series_ = table(this, QStringLiteral("pacsSeries"),
-                    {tr("Number"), tr("Modality"), tr("Series description"), tr("Images")});
+    studies_ = makeResultTable(this, QStringLiteral("pacsStudies"),
+                               {tr("Patient"), tr("Patient ID"), tr("Date"), tr("Description"),
+                                tr("Modalities"), tr("Accession"), tr("Series")});
+    series_ =
+        makeResultTable(this, QStringLiteral("pacsSeries"),
+                        {tr("Number"), tr("Modality"), tr("Series description"), tr("Images")});
     auto* split = new QSplitter(Qt::Vertical, this);
     split->addWidget(studies_);
     split->addWidget(series_);
@@ -297,7 +285,7 @@ QString PacsBrowser::status() const {
 
 void PacsBrowser::setStatus(const QString& message, bool problem) {
     status_->setText(message);
-    status_->setStyleSheet(problem ? QStringLiteral("color: #b00020;") : QString());
+    showAsProblem(status_, problem);
 }
 
 const PacsNode* PacsBrowser::currentNode() const {
@@ -333,13 +321,7 @@ void PacsBrowser::startSearch() {
     runInBackground(
         this,
         [me = settings_.me, peer = node->node, q = query()] {
-            std::pair<std::vector<pacs::StudyResult>, NetworkFailure> answer;
-            try {
-                answer.first = pacs::findStudies(me, peer, q);
-            } catch (...) {
-                answer.second = classifyFailure(std::current_exception());
-            }
-            return answer;
+            return tryNetwork([&] { return pacs::findStudies(me, peer, q); });
         },
         [this, peer = node->node](
             const std::pair<std::vector<pacs::StudyResult>, NetworkFailure>& answer) {
@@ -397,13 +379,7 @@ void PacsBrowser::studySelected() {
     runInBackground(
         this,
         [me = settings_.me, peer = node->node, q] {
-            std::pair<std::vector<pacs::SeriesResult>, NetworkFailure> answer;
-            try {
-                answer.first = pacs::findSeries(me, peer, q);
-            } catch (...) {
-                answer.second = classifyFailure(std::current_exception());
-            }
-            return answer;
+            return tryNetwork([&] { return pacs::findSeries(me, peer, q); });
         },
         [this, generation, peer = node->node](
             const std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>& answer) {
@@ -447,7 +423,7 @@ void PacsBrowser::updateMoveNote() {
                            ? tr("Our listener is not running: turn it on in DICOM > Preferences, "
                                 "or use C-GET.")
                            : QString());
-    moveNote_->setStyleSheet(QStringLiteral("color: #b00020;"));
+    showAsProblem(moveNote_, true);
     updateButtons();
 }
 
