@@ -299,4 +299,34 @@ TEST_F(PacsGuiTest, MoveToOurListenerFillsTheStore) {
     EXPECT_TRUE(b->openButton()->isEnabled());
 }
 
+/// Its own Orthanc, which the test kills.
+class PacsGuiKillTest : public vv::test::PacsGuiFixture {};
+
+TEST_F(PacsGuiKillTest, OrthancKilledMidRetrieveGivesAClearMessageAndStoresNothing) {
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    bool killed = false;
+    QObject::connect(b, &vv::gui::PacsBrowser::retrieveProgress, b, [&](double fraction) {
+        if (!killed && fraction > 0.0) {
+            killed = true;
+            orthanc_->kill();
+        }
+    });
+    EXPECT_FALSE(retrieve(b, b->retrieveStudyButton()));
+    ASSERT_TRUE(killed);
+    const std::string node = vv::pacs::describe(orthanc_->node());
+    EXPECT_NE(b->status().toStdString().find(node), std::string::npos) << b->status().toStdString();
+    EXPECT_TRUE(b->status().contains(QStringLiteral("during the transfer")) ||
+                b->status().contains(QStringLiteral("did not answer in time")))
+        << b->status().toStdString();
+    EXPECT_FALSE(b->status().contains(QStringLiteral("Done")));
+    EXPECT_FALSE(b->openButton()->isEnabled());
+    EXPECT_TRUE(vv::pacs::LocalStore(store_).studies().empty());
+    // The browser keeps working: a search now says that nobody listens.
+    EXPECT_FALSE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_TRUE(b->status().contains(QStringLiteral("refused the connection")))
+        << b->status().toStdString();
+}
+
 }  // namespace
