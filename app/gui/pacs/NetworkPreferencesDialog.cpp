@@ -16,6 +16,7 @@
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <array>
 #include <cmath>
 
 #include "gui/PathField.h"
@@ -209,7 +210,7 @@ void NetworkPreferencesDialog::fillTable() {
     table_->setRowCount(static_cast<int>(nodes_.size()));
     for (int row = 0; row < static_cast<int>(nodes_.size()); ++row) {
         const PacsNode& n = nodes_[static_cast<std::size_t>(row)];
-        const QString texts[ColumnCount] = {
+        const std::array<QString, ColumnCount> texts = {
             QString::fromStdString(n.name),
             QString::fromStdString(n.node.aeTitle),
             QString::fromStdString(n.node.host),
@@ -218,7 +219,8 @@ void NetworkPreferencesDialog::fillTable() {
             n.allowPush ? tr("yes") : tr("no"),
         };
         for (int column = 0; column < ColumnCount; ++column) {
-            table_->setItem(row, column, new QTableWidgetItem(texts[column]));
+            table_->setItem(row, column,
+                            new QTableWidgetItem(texts[static_cast<std::size_t>(column)]));
         }
     }
     if (!nodes_.empty()) {

@@ -13,6 +13,7 @@
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
+#include <array>
 #include <utility>
 
 #include "gui/PathField.h"
@@ -81,26 +82,27 @@ NodeEditDialog::NodeEditDialog(const PacsNode& node, QStringList takenNames, QWi
     certificate_->setObjectName(QStringLiteral("nodeCertificate"));
     key_ = new QLineEdit(pathText(node.node.tls.privateKey), tls_);
     key_->setObjectName(QStringLiteral("nodeKey"));
-    const std::pair<QLineEdit*, QString> files[] = {
+    const std::array<std::pair<QLineEdit*, QString>, 3> files{{
         {trusted_, tr("Trusted &CA certificate:")},
         {certificate_, tr("Our c&ertificate (optional):")},
         {key_, tr("Our &key (with the certificate):")},
-    };
-    for (const auto& [edit, label] : files) {
+    }};
+    for (const auto& file : files) {
+        QLineEdit* edit = file.first;
         auto* row = new QHBoxLayout;
         showPath(edit);
         row->addWidget(edit);
         auto* browse = new QPushButton(tr("Browse…"), tls_);
         connect(browse, &QPushButton::clicked, this, [this, edit] {
-            const QString file =
+            const QString chosen =
                 QFileDialog::getOpenFileName(this, tr("Choose a PEM file"), edit->text(),
                                              tr("PEM files (*.pem *.crt *.key);;All files (*)"));
-            if (!file.isEmpty()) {
-                edit->setText(file);
+            if (!chosen.isEmpty()) {
+                edit->setText(chosen);
             }
         });
         row->addWidget(browse);
-        addBuddyRow(tlsForm, label, edit, row);
+        addBuddyRow(tlsForm, file.second, edit, row);
     }
 
     error_ = makeErrorLabel(this, QStringLiteral("nodeError"));

@@ -19,6 +19,7 @@
 #include <QTableWidget>
 #include <QTimer>
 #include <QVBoxLayout>
+#include <array>
 #include <cmath>
 
 #include "gui/pacs/BackgroundCall.h"
@@ -349,7 +350,7 @@ void PacsBrowser::showStudies(const std::vector<pacs::StudyResult>& studies) {
         const pacs::StudyResult& s = studies[static_cast<std::size_t>(row)];
         QString modalities = text(s.modalitiesInStudy);
         modalities.replace(QLatin1Char('\\'), QStringLiteral(", "));
-        const QString cells[StudyColumnCount] = {
+        const std::array<QString, StudyColumnCount> cells = {
             text(s.patientName).replace(QLatin1Char('^'), QLatin1Char(' ')).trimmed(),
             text(s.patientId),
             studyDateText(s.studyDate),
@@ -359,7 +360,8 @@ void PacsBrowser::showStudies(const std::vector<pacs::StudyResult>& studies) {
             countText(s.numberOfSeries),
         };
         for (int column = 0; column < StudyColumnCount; ++column) {
-            studies_->setItem(row, column, new QTableWidgetItem(cells[column]));
+            studies_->setItem(row, column,
+                              new QTableWidgetItem(cells[static_cast<std::size_t>(column)]));
         }
     }
 }
@@ -401,11 +403,12 @@ void PacsBrowser::showSeries(const std::vector<pacs::SeriesResult>& series) {
     series_->setRowCount(static_cast<int>(series.size()));
     for (int row = 0; row < static_cast<int>(series.size()); ++row) {
         const pacs::SeriesResult& s = series[static_cast<std::size_t>(row)];
-        const QString cells[SeriesColumnCount] = {countText(s.seriesNumber), text(s.modality),
-                                                  text(s.seriesDescription),
-                                                  countText(s.numberOfInstances)};
+        const std::array<QString, SeriesColumnCount> cells = {
+            countText(s.seriesNumber), text(s.modality), text(s.seriesDescription),
+            countText(s.numberOfInstances)};
         for (int column = 0; column < SeriesColumnCount; ++column) {
-            series_->setItem(row, column, new QTableWidgetItem(cells[column]));
+            series_->setItem(row, column,
+                             new QTableWidgetItem(cells[static_cast<std::size_t>(column)]));
         }
     }
     if (series.size() == 1) {

@@ -44,6 +44,7 @@ class PacsBrowser : public QDialog {
     using ListenerRunning = std::function<bool()>;
 
     explicit PacsBrowser(QWidget* parent = nullptr);
+    Q_DISABLE_COPY_MOVE(PacsBrowser)
     ~PacsBrowser() override;
 
     void setListenerRunning(ListenerRunning running);
@@ -98,7 +99,7 @@ class PacsBrowser : public QDialog {
     void retrieveEnded(const RetrieveOutcome& outcome);
     void updateButtons();
     void updateMoveNote();
-    void setStatus(const QString& text, bool problem = false);
+    void setStatus(const QString& message, bool problem = false);
 
     PacsSettings settings_;
     ListenerRunning listenerRunning_;
