@@ -193,8 +193,11 @@ TEST_F(PacsGuiTest, ANodeThatIsDownGivesAClearMessageAndTheBrowserKeepsWorking) 
     s.nodes.push_back(down);
     vv::gui::writePacsSettings(s, settings);
     auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_EQ(b->studyTable()->rowCount(), 1);
     b->nodeBox()->setCurrentText(QStringLiteral("Down"));
     EXPECT_FALSE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_EQ(b->studyTable()->rowCount(), 0) << "rows of another node's answer stay shown";
     EXPECT_TRUE(b->status().contains(QStringLiteral("refused the connection")))
         << b->status().toStdString();
     EXPECT_TRUE(b->status().contains(QString::fromStdString(vv::pacs::describe(down.node))));

@@ -293,6 +293,10 @@ const PacsNode* PacsBrowser::currentNode() const {
     return findNode(settings_, node_->currentText().toStdString());
 }
 
+const PacsNode* PacsBrowser::resultsNode() const {
+    return findNode(settings_, resultsNode_);
+}
+
 pacs::StudyQuery PacsBrowser::query() const {
     pacs::StudyQuery q;
     q.patientName = patientName_->text().trimmed().toStdString();
@@ -324,12 +328,14 @@ void PacsBrowser::startSearch() {
         [me = settings_.me, peer = node->node, q = query()] {
             return tryNetwork([&] { return pacs::findStudies(me, peer, q); });
         },
-        [this, peer = node->node](
+        [this, peer = node->node, name = node->name](
             const std::pair<std::vector<pacs::StudyResult>, NetworkFailure>& answer) {
             searching_ = false;
             const bool ok = answer.second.kind == NetworkFailure::Kind::None;
+            // The tables show the last search's answer, and its node serves them.
+            resultsNode_ = ok ? name : std::string();
+            showStudies(answer.first);
             if (ok) {
-                showStudies(answer.first);
                 setStatus(tr("Studies found: %1.")
                               .arg(QLocale().toString(static_cast<int>(answer.first.size()))));
             } else {
@@ -371,7 +377,7 @@ void PacsBrowser::studySelected() {
     series_->setRowCount(0);
     updateButtons();
     const int row = studies_->currentRow();
-    const PacsNode* node = currentNode();
+    const PacsNode* node = resultsNode();
     if (row < 0 || row >= static_cast<int>(studyResults_.size()) || node == nullptr) {
         return;
     }
@@ -446,7 +452,7 @@ void PacsBrowser::updateButtons() {
 }
 
 void PacsBrowser::startRetrieve(bool wholeStudy) {
-    const PacsNode* node = currentNode();
+    const PacsNode* node = resultsNode();
     const int studyRow = studies_->currentRow();
     if (retrieve_ != nullptr || node == nullptr || studyRow < 0 ||
         studyRow >= static_cast<int>(studyResults_.size())) {

@@ -90,6 +90,8 @@ class PacsBrowser : public QDialog {
 
   private:
     [[nodiscard]] const PacsNode* currentNode() const;
+    /// The node the tables' rows came from (nullptr when none or removed).
+    [[nodiscard]] const PacsNode* resultsNode() const;
     [[nodiscard]] pacs::StudyQuery query() const;
     void startSearch();
     void showStudies(const std::vector<pacs::StudyResult>& studies);
@@ -103,6 +105,7 @@ class PacsBrowser : public QDialog {
 
     PacsSettings settings_;
     ListenerRunning listenerRunning_;
+    std::string resultsNode_;  ///< the name of the node of the last successful search
     std::vector<pacs::StudyResult> studyResults_;
     std::vector<pacs::SeriesResult> seriesResults_;
     /// Counts the series searches: an older one's answer is dropped.
