@@ -176,6 +176,21 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::DicomMenu</name>
+    <message>
+        <source>&amp;DICOM</source>
+        <translation>DI&amp;COM</translation>
+    </message>
+    <message>
+        <source>&amp;Preferences…</source>
+        <translation>&amp;Einstellungen…</translation>
+    </message>
+    <message>
+        <source>&amp;Query PACS…</source>
+        <translation>PACS &amp;abfragen…</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::DocumentController</name>
     <message>
         <source>Cannot open</source>
@@ -966,10 +981,6 @@
         <source>VSS: within %1/255, %2 ms</source>
         <translation>VSS: Fehler ≤ %1/255, %2 ms</translation>
     </message>
-    <message>
-        <source>&amp;DICOM</source>
-        <translation>DI&amp;COM</translation>
-    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -1045,6 +1056,490 @@
     <message>
         <source>Reading the DICOM headers of %1</source>
         <translation>DICOM-Header von %1 werden gelesen</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::NetworkFailure</name>
+    <message>
+        <source>%1 answered.</source>
+        <translation>%1 hat geantwortet.</translation>
+    </message>
+    <message>
+        <source>%1 refused the connection: nobody listens there. Check the host name and port, and that the PACS is running and the firewall lets the port through.</source>
+        <translation>%1 hat die Verbindung abgelehnt: Dort lauscht niemand. Prüfen Sie Hostname und Port, ob das PACS läuft und ob die Firewall den Port durchlässt.</translation>
+    </message>
+    <message>
+        <source>%1 rejected the association. Check the node&apos;s AE title, and that the PACS knows our AE title, host and port.</source>
+        <translation>%1 hat die Assoziation abgelehnt. Prüfen Sie den AE-Titel des Knotens und ob das PACS unseren AE-Titel, Host und Port kennt.</translation>
+    </message>
+    <message>
+        <source>%1 did not answer in time. Check the host and port, the network and the firewall; the PACS may be overloaded.</source>
+        <translation>%1 hat nicht rechtzeitig geantwortet. Prüfen Sie Host und Port, das Netzwerk und die Firewall; das PACS ist vielleicht überlastet.</translation>
+    </message>
+    <message>
+        <source>The TLS connection to %1 failed. Check that the node speaks TLS on this port, the trusted CA certificate and our certificate and key files.</source>
+        <translation>Die TLS-Verbindung zu %1 ist fehlgeschlagen. Prüfen Sie, ob der Knoten auf diesem Port TLS spricht, das vertrauenswürdige CA-Zertifikat sowie unsere Zertifikats- und Schlüsseldateien.</translation>
+    </message>
+    <message>
+        <source>%1 stopped or failed during the transfer (%2).</source>
+        <translation>%1 hat die Übertragung abgebrochen oder ist dabei gescheitert (%2).</translation>
+    </message>
+    <message>
+        <source>The answer of %1 was refused (%2). Narrow the search.</source>
+        <translation>Die Antwort von %1 wurde zurückgewiesen (%2). Schränken Sie die Suche ein.</translation>
+    </message>
+    <message>
+        <source>Invalid input: %1</source>
+        <translation>Ungültige Eingabe: %1</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Failed with %1: %2</source>
+        <translation>Fehler mit %1: %2</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::NetworkPreferencesDialog</name>
+    <message>
+        <source>DICOM Network Preferences</source>
+        <translation>DICOM-Netzwerkeinstellungen</translation>
+    </message>
+    <message>
+        <source>This workstation</source>
+        <translation>Diese Arbeitsstation</translation>
+    </message>
+    <message>
+        <source>The AE title the PACS knows this workstation by</source>
+        <translation>Der AE-Titel, unter dem das PACS diese Arbeitsstation kennt</translation>
+    </message>
+    <message>
+        <source>Our &amp;AE title:</source>
+        <translation>Unser &amp;AE-Titel:</translation>
+    </message>
+    <message>
+        <source>&amp;Receive studies (listener on)</source>
+        <translation>Studien &amp;empfangen (Empfangsdienst an)</translation>
+    </message>
+    <message>
+        <source>Run the DICOM listener while VesselView runs: nodes allowed to send can push studies, and C-MOVE retrieves arrive here</source>
+        <translation>Den DICOM-Empfangsdienst laufen lassen, solange VesselView läuft: Knoten mit Sendeerlaubnis können Studien schicken, und C-MOVE-Abrufe kommen hier an</translation>
+    </message>
+    <message>
+        <source>Listener &amp;port:</source>
+        <translation>&amp;Port des Empfangsdienstes:</translation>
+    </message>
+    <message>
+        <source>This computer only</source>
+        <translation>Nur dieser Rechner</translation>
+    </message>
+    <message>
+        <source>All network interfaces</source>
+        <translation>Alle Netzwerkschnittstellen</translation>
+    </message>
+    <message>
+        <source>The IPv4 address of the interface to listen on: 127.0.0.1 for this computer only, 0.0.0.0 for all interfaces</source>
+        <translation>Die IPv4-Adresse der Schnittstelle, auf der gelauscht wird: 127.0.0.1 nur für diesen Rechner, 0.0.0.0 für alle Schnittstellen</translation>
+    </message>
+    <message>
+        <source>Listen on &amp;interface:</source>
+        <translation>&amp;Schnittstelle:</translation>
+    </message>
+    <message>
+        <source>Local study store</source>
+        <translation>Lokaler Studienspeicher</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Folder of the local study store</source>
+        <translation>Ordner des lokalen Studienspeichers</translation>
+    </message>
+    <message>
+        <source>&amp;Folder:</source>
+        <translation>&amp;Ordner:</translation>
+    </message>
+    <message>
+        <source> GB</source>
+        <translation> GB</translation>
+    </message>
+    <message>
+        <source>No limit</source>
+        <translation>Keine Grenze</translation>
+    </message>
+    <message>
+        <source>Above this size the oldest studies are removed first; open studies are never removed</source>
+        <translation>Über dieser Größe werden die ältesten Studien zuerst entfernt; geöffnete Studien werden nie entfernt</translation>
+    </message>
+    <message>
+        <source>Size &amp;limit:</source>
+        <translation>&amp;Größengrenze:</translation>
+    </message>
+    <message>
+        <source>PACS nodes</source>
+        <translation>PACS-Knoten</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>AE title</source>
+        <translation>AE-Titel</translation>
+    </message>
+    <message>
+        <source>Host</source>
+        <translation>Host</translation>
+    </message>
+    <message>
+        <source>Port</source>
+        <translation>Port</translation>
+    </message>
+    <message>
+        <source>TLS</source>
+        <translation>TLS</translation>
+    </message>
+    <message>
+        <source>May send to us</source>
+        <translation>Darf an uns senden</translation>
+    </message>
+    <message>
+        <source>&amp;Add…</source>
+        <translation>&amp;Hinzufügen…</translation>
+    </message>
+    <message>
+        <source>&amp;Edit…</source>
+        <translation>&amp;Bearbeiten…</translation>
+    </message>
+    <message>
+        <source>Re&amp;move</source>
+        <translation>E&amp;ntfernen</translation>
+    </message>
+    <message>
+        <source>&amp;Test</source>
+        <translation>&amp;Testen</translation>
+    </message>
+    <message>
+        <source>C-ECHO: does the node answer and accept our AE title?</source>
+        <translation>C-ECHO: Antwortet der Knoten und akzeptiert er unseren AE-Titel?</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>an</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Our AE title</source>
+        <translation>Unser AE-Titel</translation>
+    </message>
+    <message>
+        <source>Testing…</source>
+        <translation>Teste…</translation>
+    </message>
+    <message>
+        <source>Testing %1…</source>
+        <translation>Teste %1…</translation>
+    </message>
+    <message>
+        <source>Success: %1 answered C-ECHO.</source>
+        <translation>Erfolg: %1 hat auf C-ECHO geantwortet.</translation>
+    </message>
+    <message>
+        <source>Listen on interface: enter an IPv4 address such as 127.0.0.1 (this computer only) or 0.0.0.0 (all interfaces).</source>
+        <translation>Schnittstelle: Geben Sie eine IPv4-Adresse ein, etwa 127.0.0.1 (nur dieser Rechner) oder 0.0.0.0 (alle Schnittstellen).</translation>
+    </message>
+    <message>
+        <source>Folder: choose a folder for the local study store.</source>
+        <translation>Ordner: Wählen Sie einen Ordner für den lokalen Studienspeicher.</translation>
+    </message>
+    <message>
+        <source>Not saved: %1</source>
+        <translation>Nicht gespeichert: %1</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::NodeEditDialog</name>
+    <message>
+        <source>%1: 1 to 16 characters (letters, digits, spaces, no backslash) are needed.</source>
+        <translation>%1: 1 bis 16 Zeichen (Buchstaben, Ziffern, Leerzeichen, kein Backslash) sind nötig.</translation>
+    </message>
+    <message>
+        <source>PACS Node</source>
+        <translation>PACS-Knoten</translation>
+    </message>
+    <message>
+        <source>e.g. Radiology PACS</source>
+        <translation>z. B. Radiologie-PACS</translation>
+    </message>
+    <message>
+        <source>May send studies to our listener</source>
+        <translation>Darf Studien an unseren Empfangsdienst senden</translation>
+    </message>
+    <message>
+        <source>&amp;Name:</source>
+        <translation>&amp;Name:</translation>
+    </message>
+    <message>
+        <source>&amp;AE title:</source>
+        <translation>&amp;AE-Titel:</translation>
+    </message>
+    <message>
+        <source>&amp;Host:</source>
+        <translation>&amp;Host:</translation>
+    </message>
+    <message>
+        <source>&amp;Port:</source>
+        <translation>&amp;Port:</translation>
+    </message>
+    <message>
+        <source>Use &amp;TLS (encrypted DICOM)</source>
+        <translation>&amp;TLS verwenden (verschlüsseltes DICOM)</translation>
+    </message>
+    <message>
+        <source>Trusted &amp;CA certificate:</source>
+        <translation>Vertrauenswürdiges &amp;CA-Zertifikat:</translation>
+    </message>
+    <message>
+        <source>Our c&amp;ertificate (optional):</source>
+        <translation>Unser &amp;Zertifikat (optional):</translation>
+    </message>
+    <message>
+        <source>Our &amp;key (with the certificate):</source>
+        <translation>Unser &amp;Schlüssel (zum Zertifikat):</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Choose a PEM file</source>
+        <translation>PEM-Datei wählen</translation>
+    </message>
+    <message>
+        <source>PEM files (*.pem *.crt *.key);;All files (*)</source>
+        <translation>PEM-Dateien (*.pem *.crt *.key);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Name: give the node a name.</source>
+        <translation>Name: Geben Sie dem Knoten einen Namen.</translation>
+    </message>
+    <message>
+        <source>Name: another node is already called &quot;%1&quot;.</source>
+        <translation>Name: Ein anderer Knoten heißt bereits „%1“.</translation>
+    </message>
+    <message>
+        <source>AE title</source>
+        <translation>AE-Titel</translation>
+    </message>
+    <message>
+        <source>Host: enter the PACS&apos;s host name or IP address.</source>
+        <translation>Host: Geben Sie den Hostnamen oder die IP-Adresse des PACS ein.</translation>
+    </message>
+    <message>
+        <source>Trusted CA certificate: TLS needs the certificate of the CA that signed the PACS&apos;s certificate.</source>
+        <translation>Vertrauenswürdiges CA-Zertifikat: TLS braucht das Zertifikat der CA, die das Zertifikat des PACS signiert hat.</translation>
+    </message>
+    <message>
+        <source>Our certificate and key: give both or neither.</source>
+        <translation>Unser Zertifikat und Schlüssel: Geben Sie beide oder keines an.</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::PacsBrowser</name>
+    <message>
+        <source>any</source>
+        <translation>beliebig</translation>
+    </message>
+    <message>
+        <source>Query PACS</source>
+        <translation>PACS abfragen</translation>
+    </message>
+    <message>
+        <source>Search</source>
+        <translation>Suche</translation>
+    </message>
+    <message>
+        <source>e.g. Doe* (* and ? match any)</source>
+        <translation>z. B. Muster* (* und ? für Beliebiges)</translation>
+    </message>
+    <message>
+        <source>&amp;Search</source>
+        <translation>&amp;Suchen</translation>
+    </message>
+    <message>
+        <source>&amp;Node:</source>
+        <translation>&amp;Knoten:</translation>
+    </message>
+    <message>
+        <source>Patient &amp;name:</source>
+        <translation>Patienten&amp;name:</translation>
+    </message>
+    <message>
+        <source>Patient &amp;ID:</source>
+        <translation>Patienten-&amp;ID:</translation>
+    </message>
+    <message>
+        <source>Study date &amp;from:</source>
+        <translation>Studiendatum &amp;von:</translation>
+    </message>
+    <message>
+        <source>&amp;to:</source>
+        <translation>&amp;bis:</translation>
+    </message>
+    <message>
+        <source>&amp;Modality:</source>
+        <translation>&amp;Modalität:</translation>
+    </message>
+    <message>
+        <source>&amp;Description:</source>
+        <translation>B&amp;eschreibung:</translation>
+    </message>
+    <message>
+        <source>&amp;Accession:</source>
+        <translation>&amp;Zugangsnummer:</translation>
+    </message>
+    <message>
+        <source>Patient</source>
+        <translation>Patient</translation>
+    </message>
+    <message>
+        <source>Patient ID</source>
+        <translation>Patienten-ID</translation>
+    </message>
+    <message>
+        <source>Date</source>
+        <translation>Datum</translation>
+    </message>
+    <message>
+        <source>Description</source>
+        <translation>Beschreibung</translation>
+    </message>
+    <message>
+        <source>Modalities</source>
+        <translation>Modalitäten</translation>
+    </message>
+    <message>
+        <source>Accession</source>
+        <translation>Zugangsnummer</translation>
+    </message>
+    <message>
+        <source>Series</source>
+        <translation>Serien</translation>
+    </message>
+    <message>
+        <source>Number</source>
+        <translation>Nummer</translation>
+    </message>
+    <message>
+        <source>Modality</source>
+        <translation>Modalität</translation>
+    </message>
+    <message>
+        <source>Series description</source>
+        <translation>Serienbeschreibung</translation>
+    </message>
+    <message>
+        <source>Images</source>
+        <translation>Bilder</translation>
+    </message>
+    <message>
+        <source>Retrieve into the local study store</source>
+        <translation>In den lokalen Studienspeicher abrufen</translation>
+    </message>
+    <message>
+        <source>C-&amp;GET (direct)</source>
+        <translation>C-&amp;GET (direkt)</translation>
+    </message>
+    <message>
+        <source>C-M&amp;OVE to our listener</source>
+        <translation>C-M&amp;OVE an unseren Empfangsdienst</translation>
+    </message>
+    <message>
+        <source>Retrieve S&amp;tudy</source>
+        <translation>S&amp;tudie abrufen</translation>
+    </message>
+    <message>
+        <source>Retrieve S&amp;eries</source>
+        <translation>Se&amp;rie abrufen</translation>
+    </message>
+    <message>
+        <source>&amp;Cancel</source>
+        <translation>Abbre&amp;chen</translation>
+    </message>
+    <message>
+        <source>O&amp;pen</source>
+        <translation>Ö&amp;ffnen</translation>
+    </message>
+    <message>
+        <source>Open the retrieved series in VesselView</source>
+        <translation>Die abgerufene Serie in VesselView öffnen</translation>
+    </message>
+    <message>
+        <source>%1 of %2 images</source>
+        <translation>%1 von %2 Bildern</translation>
+    </message>
+    <message>
+        <source>Cancelling…</source>
+        <translation>Breche ab…</translation>
+    </message>
+    <message>
+        <source>No PACS node is set up yet: add one in DICOM &gt; Preferences.</source>
+        <translation>Noch kein PACS-Knoten eingerichtet: Fügen Sie einen unter DICOM &gt; Einstellungen hinzu.</translation>
+    </message>
+    <message>
+        <source>Study date: &quot;from&quot; is after &quot;to&quot;.</source>
+        <translation>Studiendatum: „von“ liegt nach „bis“.</translation>
+    </message>
+    <message>
+        <source>Searching %1…</source>
+        <translation>Durchsuche %1…</translation>
+    </message>
+    <message>
+        <source>Studies found: %1.</source>
+        <translation>Gefundene Studien: %1.</translation>
+    </message>
+    <message>
+        <source>C-M&amp;OVE to our listener (%1, port %2)</source>
+        <translation>C-M&amp;OVE an unseren Empfangsdienst (%1, Port %2)</translation>
+    </message>
+    <message>
+        <source>Our listener is not running: turn it on in DICOM &gt; Preferences, or use C-GET.</source>
+        <translation>Unser Empfangsdienst läuft nicht: Schalten Sie ihn unter DICOM &gt; Einstellungen ein, oder verwenden Sie C-GET.</translation>
+    </message>
+    <message>
+        <source>C-MOVE needs our listener, and it is not running: turn it on in DICOM &gt; Preferences (nodes must be allowed to send to us), or use C-GET.</source>
+        <translation>C-MOVE braucht unseren Empfangsdienst, und er läuft nicht: Schalten Sie ihn unter DICOM &gt; Einstellungen ein (der Knoten muss an uns senden dürfen), oder verwenden Sie C-GET.</translation>
+    </message>
+    <message>
+        <source>Retrieving from %1…</source>
+        <translation>Rufe von %1 ab…</translation>
+    </message>
+    <message>
+        <source>Retrieve cancelled: nothing of it was kept.</source>
+        <translation>Abruf abgebrochen: Nichts davon wurde behalten.</translation>
+    </message>
+    <message>
+        <source>The PACS reports the move done, but our listener did not store the images. Check that the PACS knows our AE title, host and listener port.</source>
+        <translation>Das PACS meldet den Transfer als erledigt, aber unser Empfangsdienst hat die Bilder nicht gespeichert. Prüfen Sie, ob das PACS unseren AE-Titel, Host und Empfangsport kennt.</translation>
+    </message>
+    <message>
+        <source>Done: images retrieved into the local study store: %1.</source>
+        <translation>Fertig: In den lokalen Studienspeicher abgerufene Bilder: %1.</translation>
     </message>
 </context>
 <context>

@@ -38,6 +38,7 @@
 #include "gui/SeriesDialog.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/LocalStudyActions.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/DataPanel.h"
@@ -324,8 +325,10 @@ void MainWindow::buildMenus() {
 
     view->addMenu(new LanguageMenu(this));  // stored in QSettings, applied at the next start
 
-    QMenu* dicom = menuBar()->addMenu(tr("&DICOM"));
-    listener_ = addLocalStudyActions(*this, *dicom);
+    dicomMenu_ = new DicomMenu(this);  // network preferences, PACS browser
+    menuBar()->addMenu(dicomMenu_);
+    connect(dicomMenu_, &DicomMenu::openFolder, this, &MainWindow::openDicom);
+    listener_ = addLocalStudyActions(*this, *dicomMenu_);  // listener, Local Studies, Send
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);

@@ -36,6 +36,7 @@ struct DicomScanResult;
 
 namespace vv::gui {
 
+class DicomMenu;
 class ListenerService;
 class MeasureOverlay;
 class ScreenshotMode;
@@ -51,7 +52,7 @@ class SidePanel;
 class VssPanel;
 }  // namespace panels
 
-/// The main window: the 3-D viewer, File / View / Help menus, a toolbar
+/// The main window: the 3-D viewer, File / View / DICOM / Help menus, a toolbar
 /// (VSS on/off, ambient occlusion, colour-blind-safe mode), one side panel
 /// (a dock, "sidePanelDock": panels::SidePanel) with the panels as sections
 /// that fold ("Void Space Surface" and "Functional parameters" open at
@@ -132,6 +133,8 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] static QStringList recentFiles() { return DocumentController::recentFiles(); }
 
     [[nodiscard]] ViewerWidget* viewer() const noexcept { return viewer_; }
+    /// The DICOM menu: network preferences and the PACS browser.
+    [[nodiscard]] DicomMenu* dicomMenu() const noexcept { return dicomMenu_; }
     /// The central area: the 3-D viewer and, for DICOM scenes, the slice views.
     [[nodiscard]] SliceWorkspace* sliceWorkspace() const noexcept { return slices_; }
     /// The "Functional parameters" panel's array chooser (item 0 "None" with
@@ -269,6 +272,7 @@ class MainWindow : public QMainWindow {
     panels::SegmentationPanel* segmentationPanel_ = nullptr;
     panels::SidePanel* sidePanel_ = nullptr;
     DocumentController* document_ = nullptr;
+    DicomMenu* dicomMenu_ = nullptr;
     QList<QDockWidget*> docks_;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;

@@ -241,7 +241,13 @@ class ClippingCheck {
         if (model == nullptr) {
             return;
         }
-        const auto* header = view->findChild<const QHeaderView*>();
+        // The column header (a table also has a row header, whose sections are rows).
+        const QHeaderView* header = nullptr;
+        for (const QHeaderView* candidate : view->findChildren<const QHeaderView*>()) {
+            if (candidate->orientation() == Qt::Horizontal && candidate->parentWidget() == view) {
+                header = candidate;
+            }
+        }
         for (int column = 0; column < model->columnCount(); ++column) {
             if (header == nullptr || header->isSectionHidden(column)) {
                 continue;

@@ -8,12 +8,9 @@
 
 #include <QDir>
 #include <QLayout>
-#include <QLibraryInfo>
-#include <QLocale>
 #include <QMessageBox>
 #include <QPointer>
 #include <QTabBar>
-#include <QTranslator>
 #include <QWindow>
 #include <filesystem>
 #include <string>
@@ -21,6 +18,7 @@
 
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
+#include "UiLanguage.h"
 #include "gui/ExportImageDialog.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
@@ -61,21 +59,8 @@ std::string listed(const std::vector<std::string>& problems) {
 class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInterface<Case> {
   protected:
     void SetUp() override {
-        // As the application does (gui/Translations.cpp): ours and Qt's
-        // translations, numbers in the UI language; before any widget exists.
-        if (QLatin1String(GetParam().language) != QLatin1String("en")) {
-            const QLocale locale(QString::fromLatin1(GetParam().language));
-            auto* own = new QTranslator(QCoreApplication::instance());
-            ASSERT_TRUE(own->load(locale, QStringLiteral("vesselview"), QStringLiteral("_"),
-                                  QStringLiteral(VV_QM_DIR)));
-            QCoreApplication::installTranslator(own);
-            auto* qt = new QTranslator(QCoreApplication::instance());
-            if (qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
-                         QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
-                QCoreApplication::installTranslator(qt);
-            }
-            QLocale::setDefault(locale);
-        }
+        // As the application does (gui/Translations.cpp), before any widget exists.
+        ASSERT_TRUE(vv::test::installUiLanguage(GetParam().language, VV_QM_DIR));
         GuiFixture::SetUp();
         window_->resize(GetParam().width, GetParam().height);
         bool shown = false;
@@ -89,11 +74,7 @@ class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInt
 
     void TearDown() override {
         GuiFixture::TearDown();
-        for (auto* translator : QCoreApplication::instance()->findChildren<QTranslator*>()) {
-            QCoreApplication::removeTranslator(translator);
-            delete translator;
-        }
-        QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+        vv::test::removeUiLanguage();
     }
 
     /// Lets the layouts settle after showing or resizing.

@@ -56,6 +56,26 @@ std::uint16_t anyFreePort() {
     return ntohs(address.sin_port);
 }
 
+SilentPeer::SilentPeer() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
+    sockaddr_in address{};
+    address.sin_family = AF_INET;
+    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+    socklen_t length = sizeof address;
+    if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
+        ::listen(fd_, 4) != 0 ||
+        ::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+        if (fd_ >= 0) {
+            ::close(fd_);
+        }
+        throw std::runtime_error("cannot open a silent peer's socket");
+    }
+    port_ = ntohs(address.sin_port);
+}
+
+SilentPeer::~SilentPeer() {
+    ::close(fd_);
+}
+
 TestCertificates makeCertificates(const fs::path& folder) {
     fs::create_directories(folder);
     const std::string d = folder.string() + "/";

@@ -18,6 +18,22 @@ namespace vv::test {
 /// A TCP port nobody listens on right now (bound to 0, read back, closed).
 std::uint16_t freePort();
 
+/// A peer that never answers: a socket listening on 127.0.0.1 that the
+/// kernel accepts connections for (its backlog) but nobody reads; closed in
+/// the destructor. Throws std::runtime_error when it cannot be opened.
+class SilentPeer {
+  public:
+    SilentPeer();
+    ~SilentPeer();
+    SilentPeer(const SilentPeer&) = delete;
+    SilentPeer& operator=(const SilentPeer&) = delete;
+    [[nodiscard]] std::uint16_t port() const noexcept { return port_; }
+
+  private:
+    int fd_ = -1;
+    std::uint16_t port_ = 0;
+};
+
 /// Test certificates made with the openssl tool: a CA, a server and a client
 /// certificate signed by it, and a second CA that signed neither (PEM files).
 struct TestCertificates {

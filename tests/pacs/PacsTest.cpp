@@ -116,8 +116,8 @@ TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
 }
 
 TEST(PacsFaultTest, SilentPeerTimesOut) {
-    const vv::test::SilentPort port;
-    const Node silent{"SILENT", "127.0.0.1", port.port(), {}};
+    const vv::test::SilentPeer peer;
+    const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));

@@ -4,8 +4,6 @@
 // answers, and a Progress that acts once at the first report.
 #pragma once
 
-#include <netinet/in.h>
-#include <sys/socket.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -45,32 +43,6 @@ inline std::vector<std::filesystem::path> writeCtaFiles(const std::filesystem::p
     dicom::writeCtSeries(folder, cta.volume, options);
     return filesOf(folder);
 }
-
-/// A socket on 127.0.0.1 that accepts connections (the kernel's backlog) but
-/// never answers; closed on destruction.
-class SilentPort {
-  public:
-    SilentPort() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {
-        sockaddr_in address{};
-        address.sin_family = AF_INET;
-        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-        socklen_t length = sizeof address;
-        if (fd_ < 0 || ::bind(fd_, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
-            ::listen(fd_, 4) != 0 ||
-            ::getsockname(fd_, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
-            throw std::runtime_error("cannot open a silent port");
-        }
-        port_ = ntohs(address.sin_port);
-    }
-    ~SilentPort() { ::close(fd_); }
-    SilentPort(const SilentPort&) = delete;
-    SilentPort& operator=(const SilentPort&) = delete;
-    [[nodiscard]] std::uint16_t port() const { return port_; }
-
-  private:
-    int fd_;
-    std::uint16_t port_ = 0;
-};
 
 /// A Progress that calls `action` once, at the first report (`*done` tells
 /// whether it happened; it must outlive the Progress).

@@ -76,7 +76,7 @@ TEST_F(TlsTest, UnreadableCertificateFileIsTlsError) {
 }
 
 TEST_F(TlsTest, ATlsPortThatNeverAnswersTimesOut) {
-    const vv::test::SilentPort port;  // never answers the TLS handshake
+    const vv::test::SilentPeer port;  // never answers the TLS handshake
     Node silent = orthanc_->node();
     silent.port = port.port();
     const auto start = std::chrono::steady_clock::now();

@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "gui/MainWindow.h"
+#include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/SendDialog.h"
@@ -45,7 +46,7 @@ void showSendDialog(MainWindow& window) {
 
 }  // namespace
 
-ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu) {
+ListenerService* addLocalStudyActions(MainWindow& window, DicomMenu& menu) {
     auto* listener = new ListenerService(&window);
     listener->setObjectName(QStringLiteral("listenerService"));
     auto* indicator = new QLabel(&window);
@@ -75,6 +76,13 @@ ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu) {
     };
     QObject::connect(&window, &MainWindow::sceneShown, send, updateSend);
     updateSend();
+
+    // The PACS browser's C-MOVE needs our listener; saved preferences restart it.
+    const QPointer<ListenerService> guarded(listener);
+    menu.setListenerRunning(
+        [guarded] { return guarded && guarded->state() == ListenerService::State::Running; });
+    QObject::connect(&menu, &DicomMenu::preferencesChanged, listener,
+                     [listener] { listener->apply(readPacsSettings(QSettings())); });
 
     listener->apply(readPacsSettings(QSettings()));
     indicator->setText(listener->stateText());

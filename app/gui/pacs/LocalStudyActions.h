@@ -4,10 +4,9 @@
 // The main window's DICOM listener, Local studies and Send to PACS: menu
 // entries, the status bar indicator and their wiring, kept out of MainWindow.
 
-class QMenu;
-
 namespace vv::gui {
 
+class DicomMenu;
 class ListenerService;
 class MainWindow;
 
@@ -16,7 +15,9 @@ class MainWindow;
 /// ListenerService (a child of `window`), started from the PACS settings in
 /// QSettings, with its state in a status bar label ("listenerIndicator").
 /// The Local Studies browser (one per window) opens what the user picks with
-/// window.openDicom(). Returns the listener service.
-ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu);
+/// window.openDicom(). The menu's PACS browser learns from it whether the
+/// listener runs (C-MOVE), and saved preferences re-apply it. Returns the
+/// listener service.
+ListenerService* addLocalStudyActions(MainWindow& window, DicomMenu& menu);
 
 }  // namespace vv::gui

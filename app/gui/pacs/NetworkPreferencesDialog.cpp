@@ -1,0 +1,333 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/pacs/NetworkPreferencesDialog.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFileDialog>
+#include <QFormLayout>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QPushButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QVBoxLayout>
+#include <array>
+#include <cmath>
+
+#include "gui/PathField.h"
+#include "gui/pacs/BackgroundCall.h"
+#include "gui/pacs/NetworkFailure.h"
+#include "gui/pacs/NodeEditDialog.h"
+#include "gui/pacs/PacsWidgets.h"
+#include "vv/core/Error.h"
+#include "vv/pacs/Echo.h"
+
+namespace vv::gui {
+
+namespace {
+
+constexpr int kMaxPort = 65535;
+constexpr double kBytesPerGb = 1024.0 * 1024.0 * 1024.0;
+constexpr double kMaxLimitGb = 100000.0;
+
+enum Column { NameColumn, AeColumn, HostColumn, PortColumn, TlsColumn, PushColumn, ColumnCount };
+
+/// True for a dotted IPv4 address ("127.0.0.1", "0.0.0.0").
+bool isIpv4(const QString& text) {
+    const QStringList parts = text.split(QLatin1Char('.'));
+    if (parts.size() != 4) {
+        return false;
+    }
+    for (const QString& part : parts) {
+        bool ok = false;
+        const int value = part.toInt(&ok);
+        if (!ok || part.isEmpty() || part.size() > 3 || value < 0 || value > 255) {
+            return false;
+        }
+    }
+    return true;
+}
+
+}  // namespace
+
+NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(parent) {
+    setObjectName(QStringLiteral("networkPreferences"));
+    setWindowTitle(tr("DICOM Network Preferences"));
+    const PacsSettings s = readPacsSettings(QSettings());
+    nodes_ = s.nodes;
+
+    auto* ours = new QGroupBox(tr("This workstation"), this);
+    auto* oursForm = new QFormLayout(ours);
+    aeTitle_ = new QLineEdit(QString::fromStdString(s.me.aeTitle), ours);
+    aeTitle_->setObjectName(QStringLiteral("ourAeTitle"));
+    aeTitle_->setMaxLength(16);
+    aeTitle_->setToolTip(tr("The AE title the PACS knows this workstation by"));
+    oursForm->addRow(tr("Our &AE title:"), aeTitle_);
+    listener_ = new QCheckBox(tr("&Receive studies (listener on)"), ours);
+    listener_->setObjectName(QStringLiteral("listenerEnabled"));
+    listener_->setChecked(s.listenerEnabled);
+    listener_->setToolTip(
+        tr("Run the DICOM listener while VesselView runs: nodes allowed to send can push "
+           "studies, and C-MOVE retrieves arrive here"));
+    oursForm->addRow(QString(), listener_);
+    listenerPort_ = new QSpinBox(ours);
+    listenerPort_->setObjectName(QStringLiteral("listenerPort"));
+    listenerPort_->setRange(1, kMaxPort);
+    listenerPort_->setGroupSeparatorShown(false);
+    listenerPort_->setValue(s.listenerPort);
+    oursForm->addRow(tr("Listener &port:"), listenerPort_);
+    bind_ = new QComboBox(ours);
+    bind_->setObjectName(QStringLiteral("listenerBind"));
+    bind_->setEditable(true);
+    bind_->addItem(QStringLiteral("127.0.0.1"));
+    bind_->addItem(QStringLiteral("0.0.0.0"));
+    bind_->setItemData(0, tr("This computer only"), Qt::ToolTipRole);
+    bind_->setItemData(1, tr("All network interfaces"), Qt::ToolTipRole);
+    bind_->setCurrentText(QString::fromStdString(s.listenerBindAddress));
+    bind_->setToolTip(
+        tr("The IPv4 address of the interface to listen on: 127.0.0.1 for this "
+           "computer only, 0.0.0.0 for all interfaces"));
+    oursForm->addRow(tr("Listen on &interface:"), bind_);
+
+    auto* store = new QGroupBox(tr("Local study store"), this);
+    auto* storeForm = new QFormLayout(store);
+    storeFolder_ = new QLineEdit(QString::fromStdString(s.storeFolder.string()), store);
+    storeFolder_->setObjectName(QStringLiteral("storeFolder"));
+    showPath(storeFolder_);
+    auto* folderRow = new QHBoxLayout;
+    folderRow->addWidget(storeFolder_);
+    auto* browse = new QPushButton(tr("Browse…"), store);
+    connect(browse, &QPushButton::clicked, this, [this] {
+        const QString folder = QFileDialog::getExistingDirectory(
+            this, tr("Folder of the local study store"), storeFolder_->text());
+        if (!folder.isEmpty()) {
+            storeFolder_->setText(folder);
+        }
+    });
+    folderRow->addWidget(browse);
+    addBuddyRow(storeForm, tr("&Folder:"), storeFolder_, folderRow);
+    storeLimit_ = new QDoubleSpinBox(store);
+    storeLimit_->setObjectName(QStringLiteral("storeLimit"));
+    storeLimit_->setRange(0.0, kMaxLimitGb);
+    storeLimit_->setDecimals(1);
+    storeLimit_->setSuffix(tr(" GB"));
+    storeLimit_->setSpecialValueText(tr("No limit"));
+    storeLimit_->setValue(static_cast<double>(s.storeLimitBytes) / kBytesPerGb);
+    storeLimit_->setToolTip(
+        tr("Above this size the oldest studies are removed first; open "
+           "studies are never removed"));
+    storeForm->addRow(tr("Size &limit:"), storeLimit_);
+
+    auto* nodes = new QGroupBox(tr("PACS nodes"), this);
+    auto* nodesLayout = new QVBoxLayout(nodes);
+    table_ = makeResultTable(
+        nodes, QStringLiteral("pacsNodes"),
+        {tr("Name"), tr("AE title"), tr("Host"), tr("Port"), tr("TLS"), tr("May send to us")});
+    table_->setMinimumHeight(140);
+    nodesLayout->addWidget(table_);
+    auto* buttonRow = new QHBoxLayout;
+    add_ = new QPushButton(tr("&Add…"), nodes);
+    edit_ = new QPushButton(tr("&Edit…"), nodes);
+    remove_ = new QPushButton(tr("Re&move"), nodes);
+    test_ = new QPushButton(tr("&Test"), nodes);
+    add_->setObjectName(QStringLiteral("addNode"));
+    edit_->setObjectName(QStringLiteral("editNode"));
+    remove_->setObjectName(QStringLiteral("removeNode"));
+    test_->setObjectName(QStringLiteral("testNode"));
+    test_->setToolTip(tr("C-ECHO: does the node answer and accept our AE title?"));
+    for (QPushButton* button : {add_, edit_, remove_, test_}) {
+        buttonRow->addWidget(button);
+    }
+    buttonRow->addStretch();
+    nodesLayout->addLayout(buttonRow);
+    testResult_ = new QLabel(nodes);
+    testResult_->setObjectName(QStringLiteral("testResult"));
+    testResult_->setWordWrap(true);
+    testResult_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    nodesLayout->addWidget(testResult_);
+    connect(add_, &QPushButton::clicked, this, [this] { editNode(-1); });
+    connect(edit_, &QPushButton::clicked, this, [this] { editNode(table_->currentRow()); });
+    connect(table_, &QTableWidget::cellDoubleClicked, this, [this](int row) { editNode(row); });
+    connect(remove_, &QPushButton::clicked, this, [this] {
+        const int row = table_->currentRow();
+        if (row >= 0 && row < static_cast<int>(nodes_.size())) {
+            nodes_.erase(nodes_.begin() + row);
+            fillTable();
+        }
+    });
+    connect(test_, &QPushButton::clicked, this, &NetworkPreferencesDialog::testNode);
+    connect(table_, &QTableWidget::itemSelectionChanged, this,
+            &NetworkPreferencesDialog::updateButtons);
+
+    error_ = makeErrorLabel(this, QStringLiteral("preferencesError"));
+    QDialogButtonBox* buttons = makeOkCancel(this);
+
+    auto* layout = new QVBoxLayout(this);
+    auto* top = new QHBoxLayout;
+    top->addWidget(ours);
+    top->addWidget(store, 1);
+    layout->addLayout(top);
+    layout->addWidget(nodes, 1);
+    layout->addWidget(error_);
+    layout->addWidget(buttons);
+    fillTable();
+}
+
+PacsSettings NetworkPreferencesDialog::settings() const {
+    PacsSettings s = readPacsSettings(QSettings());  // keeps the timeouts
+    s.me.aeTitle = aeTitle_->text().trimmed().toStdString();
+    s.listenerEnabled = listener_->isChecked();
+    s.listenerPort = static_cast<std::uint16_t>(listenerPort_->value());
+    s.listenerBindAddress = bind_->currentText().trimmed().toStdString();
+    s.storeFolder = storeFolder_->text().trimmed().toStdString();
+    s.storeLimitBytes =
+        static_cast<std::uint64_t>(std::llround(storeLimit_->value() * kBytesPerGb));
+    s.nodes = nodes_;
+    return s;
+}
+
+QString NetworkPreferencesDialog::error() const {
+    return error_->text();
+}
+
+QString NetworkPreferencesDialog::testResult() const {
+    return testResult_->text();
+}
+
+void NetworkPreferencesDialog::addNode(const PacsNode& node) {
+    nodes_.push_back(node);
+    fillTable();
+    table_->selectRow(static_cast<int>(nodes_.size()) - 1);
+}
+
+void NetworkPreferencesDialog::fillTable() {
+    const int current = table_->currentRow();
+    table_->setRowCount(static_cast<int>(nodes_.size()));
+    for (int row = 0; row < static_cast<int>(nodes_.size()); ++row) {
+        const PacsNode& n = nodes_[static_cast<std::size_t>(row)];
+        const std::array<QString, ColumnCount> texts = {
+            QString::fromStdString(n.name),
+            QString::fromStdString(n.node.aeTitle),
+            QString::fromStdString(n.node.host),
+            portText(n.node.port),
+            n.node.tls.enabled ? tr("on") : tr("off"),
+            n.allowPush ? tr("yes") : tr("no"),
+        };
+        for (int column = 0; column < ColumnCount; ++column) {
+            table_->setItem(row, column,
+                            new QTableWidgetItem(texts[static_cast<std::size_t>(column)]));
+        }
+    }
+    if (!nodes_.empty()) {
+        table_->selectRow(std::clamp(current, 0, static_cast<int>(nodes_.size()) - 1));
+    }
+    updateButtons();
+}
+
+void NetworkPreferencesDialog::updateButtons() {
+    const bool selected = table_->currentRow() >= 0 && !nodes_.empty();
+    edit_->setEnabled(selected);
+    remove_->setEnabled(selected);
+    test_->setEnabled(selected && !testing_);
+}
+
+void NetworkPreferencesDialog::editNode(int row) {
+    const bool adding = row < 0 || row >= static_cast<int>(nodes_.size());
+    PacsNode start;
+    QStringList taken;
+    for (int i = 0; i < static_cast<int>(nodes_.size()); ++i) {
+        if (adding || i != row) {
+            taken << QString::fromStdString(nodes_[static_cast<std::size_t>(i)].name);
+        }
+    }
+    if (!adding) {
+        start = nodes_[static_cast<std::size_t>(row)];
+    }
+    auto* dialog = new NodeEditDialog(start, taken, this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    connect(dialog, &QDialog::accepted, this, [this, dialog, adding, row] {
+        if (adding) {
+            addNode(dialog->node());
+        } else if (row < static_cast<int>(nodes_.size())) {
+            nodes_[static_cast<std::size_t>(row)] = dialog->node();
+            fillTable();
+        }
+    });
+    dialog->open();
+    emit nodeDialogShown(dialog);
+}
+
+void NetworkPreferencesDialog::testNode() {
+    const int row = table_->currentRow();
+    if (testing_ || row < 0 || row >= static_cast<int>(nodes_.size())) {
+        return;
+    }
+    const QString ourProblem = aeTitleProblem(aeTitle_->text().trimmed(), tr("Our AE title"));
+    if (!ourProblem.isEmpty()) {
+        testResult_->setText(ourProblem);
+        emit testFinished(false);
+        return;
+    }
+    pacs::LocalAe me = settings().me;
+    const pacs::Node node = nodes_[static_cast<std::size_t>(row)].node;
+    testing_ = true;
+    test_->setText(tr("Testing…"));
+    updateButtons();
+    testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
+    runInBackground(
+        this, [me, node] { return tryNetwork([&] { pacs::echo(me, node); }); },
+        [this, node](const NetworkFailure& failure) {
+            testing_ = false;
+            test_->setText(tr("&Test"));
+            updateButtons();
+            const bool ok = failure.kind == NetworkFailure::Kind::None;
+            testResult_->setText(ok ? tr("Success: %1 answered C-ECHO.")
+                                          .arg(QString::fromStdString(pacs::describe(node)))
+                                    : failureText(failure, node));
+            emit testFinished(ok);
+        });
+}
+
+void NetworkPreferencesDialog::refuse(const QString& message, QWidget* field) {
+    error_->setText(message);
+    error_->show();
+    if (field != nullptr) {
+        field->setFocus();
+    }
+}
+
+void NetworkPreferencesDialog::accept() {
+    if (const QString problem = aeTitleProblem(aeTitle_->text().trimmed(), tr("Our AE title"));
+        !problem.isEmpty()) {
+        refuse(problem, aeTitle_);
+        return;
+    }
+    if (!isIpv4(bind_->currentText().trimmed())) {
+        refuse(tr("Listen on interface: enter an IPv4 address such as 127.0.0.1 (this computer "
+                  "only) or 0.0.0.0 (all interfaces)."),
+               bind_);
+        return;
+    }
+    if (storeFolder_->text().trimmed().isEmpty()) {
+        refuse(tr("Folder: choose a folder for the local study store."), storeFolder_);
+        return;
+    }
+    QSettings store;
+    try {
+        writePacsSettings(settings(), store);
+    } catch (const InvalidArgumentError& e) {
+        refuse(tr("Not saved: %1").arg(QString::fromStdString(e.what())), nullptr);
+        return;
+    }
+    store.sync();
+    error_->clear();
+    error_->hide();
+    QDialog::accept();
+}
+
+}  // namespace vv::gui

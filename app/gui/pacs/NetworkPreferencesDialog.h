@@ -1,0 +1,87 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QDialog>
+
+#include "gui/pacs/PacsSettings.h"
+
+class QCheckBox;
+class QComboBox;
+class QDoubleSpinBox;
+class QLabel;
+class QLineEdit;
+class QPushButton;
+class QSpinBox;
+class QTableWidget;
+
+namespace vv::gui {
+
+/// DICOM > Preferences…: our AE title, the listener (on/off, port, the
+/// interface it binds), the local study store (folder, size limit in GB) and
+/// the PACS nodes (a table with Add / Edit / Remove, and Test: C-ECHO on a
+/// worker, the answer or what failed shown under the table). Reads and, on
+/// OK, writes QSettings() through read/writePacsSettings(); invalid input
+/// keeps the dialog open with a message naming the field (error()).
+class NetworkPreferencesDialog : public QDialog {
+    Q_OBJECT
+
+  public:
+    explicit NetworkPreferencesDialog(QWidget* parent = nullptr);
+
+    /// The settings as entered (not yet checked).
+    [[nodiscard]] PacsSettings settings() const;
+    /// The message of the last refused OK ("" when none).
+    [[nodiscard]] QString error() const;
+    /// The outcome of the last Test ("" before any).
+    [[nodiscard]] QString testResult() const;
+    /// True while a Test runs.
+    [[nodiscard]] bool testRunning() const noexcept { return testing_; }
+
+    [[nodiscard]] QLineEdit* aeTitleEdit() const noexcept { return aeTitle_; }
+    [[nodiscard]] QCheckBox* listenerBox() const noexcept { return listener_; }
+    [[nodiscard]] QSpinBox* listenerPortBox() const noexcept { return listenerPort_; }
+    [[nodiscard]] QComboBox* bindBox() const noexcept { return bind_; }
+    [[nodiscard]] QLineEdit* storeFolderEdit() const noexcept { return storeFolder_; }
+    [[nodiscard]] QDoubleSpinBox* storeLimitBox() const noexcept { return storeLimit_; }
+    [[nodiscard]] QTableWidget* nodeTable() const noexcept { return table_; }
+    [[nodiscard]] QPushButton* addButton() const noexcept { return add_; }
+    [[nodiscard]] QPushButton* editButton() const noexcept { return edit_; }
+    [[nodiscard]] QPushButton* removeButton() const noexcept { return remove_; }
+    [[nodiscard]] QPushButton* testButton() const noexcept { return test_; }
+
+    /// Adds `node` to the table (what Add does after its dialog; no check here).
+    void addNode(const PacsNode& node);
+
+    void accept() override;
+
+  signals:
+    /// Add or Edit opened the node dialog (tests fill it in).
+    void nodeDialogShown(QDialog* dialog);
+    /// A Test ended; testResult() holds the text.
+    void testFinished(bool ok);
+
+  private:
+    void fillTable();
+    void editNode(int row);
+    void testNode();
+    void updateButtons();
+    void refuse(const QString& message, QWidget* field);
+
+    std::vector<PacsNode> nodes_;
+    QLineEdit* aeTitle_ = nullptr;
+    QCheckBox* listener_ = nullptr;
+    QSpinBox* listenerPort_ = nullptr;
+    QComboBox* bind_ = nullptr;
+    QLineEdit* storeFolder_ = nullptr;
+    QDoubleSpinBox* storeLimit_ = nullptr;
+    QTableWidget* table_ = nullptr;
+    QPushButton* add_ = nullptr;
+    QPushButton* edit_ = nullptr;
+    QPushButton* remove_ = nullptr;
+    QPushButton* test_ = nullptr;
+    QLabel* testResult_ = nullptr;
+    QLabel* error_ = nullptr;
+    bool testing_ = false;
+};
+
+}  // namespace vv::gui

@@ -1,0 +1,335 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// DICOM networking in the GUI against a real Orthanc (tests/pacs/OrthancServer.h):
+// DICOM > Preferences (nodes, Test = C-ECHO and what failed, invalid input
+// refused in place, saved across a restart) and DICOM > Query PACS (C-FIND
+// at study and series level, retrieve with C-GET / C-MOVE into the local
+// store with progress and Cancel, Open into the series dialog). Driven as a
+// user does: texts typed, buttons clicked; checked by what is shown.
+#include <gtest/gtest.h>
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDateEdit>
+#include <QDialogButtonBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QPointer>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QRadioButton>
+#include <QSettings>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTest>
+#include <QTimer>
+#include <QTranslator>
+#include <algorithm>
+#include <filesystem>
+#include <memory>
+#include <string>
+
+#include "PacsGuiFixture.h"
+#include "gui/SeriesDialog.h"
+#include "gui/pacs/DicomMenu.h"
+#include "gui/pacs/NetworkPreferencesDialog.h"
+#include "gui/pacs/NodeEditDialog.h"
+#include "gui/pacs/PacsBrowser.h"
+#include "gui/pacs/PacsSettings.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/pacs/LocalStore.h"
+#include "vv/pacs/Send.h"
+#include "vv/pacs/StorageScp.h"
+
+namespace {
+
+using vv::test::kNetworkWaitMs;
+using vv::test::kOurAe;
+using vv::test::rowText;
+using vv::test::waitUntil;
+using PacsBrowserGuiTest = vv::test::PacsGuiFixture;
+
+TEST_F(PacsBrowserGuiTest, TestOnAGoodNodeSaysSuccess) {
+    auto* dialog = preferences();
+    ASSERT_EQ(dialog->nodeTable()->rowCount(), 1);
+    EXPECT_EQ(dialog->nodeTable()->item(0, 1)->text(), QStringLiteral("ORTHANC"));
+    const std::string result = testNode(dialog, 0);
+    EXPECT_NE(result.find("Success"), std::string::npos) << result;
+    EXPECT_NE(result.find(vv::pacs::describe(orthanc_->node())), std::string::npos) << result;
+}
+
+TEST_F(PacsBrowserGuiTest, TestOnAWrongAeTitleOrAClosedPortSaysWhatFailed) {
+    auto* dialog = preferences();
+    const QString port = QString::number(orthanc_->node().port);
+    addNode(dialog, QStringLiteral("Wrong AE"), QStringLiteral("NOTORTHANC"),
+            QStringLiteral("127.0.0.1"), orthanc_->node().port);
+    const int closed = vv::test::freePort();
+    addNode(dialog, QStringLiteral("Closed"), QStringLiteral("NOBODY"), QStringLiteral("127.0.0.1"),
+            closed);
+    ASSERT_EQ(dialog->nodeTable()->rowCount(), 3);
+
+    const std::string rejected = testNode(dialog, 1);
+    EXPECT_NE(rejected.find("rejected the association"), std::string::npos) << rejected;
+    EXPECT_NE(rejected.find("NOTORTHANC@127.0.0.1:" + port.toStdString()), std::string::npos)
+        << rejected;
+    const std::string refused = testNode(dialog, 2);
+    EXPECT_NE(refused.find("refused the connection"), std::string::npos) << refused;
+    EXPECT_NE(refused.find("NOBODY@127.0.0.1:" + std::to_string(closed)), std::string::npos)
+        << refused;
+    // The good node still answers: nothing is stuck.
+    EXPECT_NE(testNode(dialog, 0).find("Success"), std::string::npos);
+}
+
+TEST_F(PacsBrowserGuiTest, TestOfAPeerThatNeverAnswersKeepsTheDialogResponsiveAndTimesOut) {
+    const vv::test::SilentPeer silent;
+    const int port = silent.port();
+    auto* dialog = preferences();
+    addNode(dialog, QStringLiteral("Silent"), QStringLiteral("SILENT"), QStringLiteral("127.0.0.1"),
+            port);
+    dialog->nodeTable()->selectRow(1);
+    dialog->testButton()->click();
+    // While the worker waits, the button says so and the dialog handles events.
+    EXPECT_TRUE(dialog->testRunning());
+    EXPECT_FALSE(dialog->testButton()->isEnabled());
+    EXPECT_EQ(dialog->testButton()->text(), QStringLiteral("Testing…"));
+    bool timerFired = false;
+    QTimer::singleShot(100, dialog, [&timerFired] { timerFired = true; });
+    EXPECT_TRUE(waitUntil([&] { return timerFired; }, 2000));
+    EXPECT_TRUE(dialog->testRunning()) << "a silent peer cannot have answered yet";
+    dialog->aeTitleEdit()->setText(QStringLiteral("TYPED"));  // the user can go on editing
+    EXPECT_TRUE(waitUntil([dialog] { return !dialog->testRunning(); }, kNetworkWaitMs));
+    const std::string result = dialog->testResult().toStdString();
+    EXPECT_NE(result.find("did not answer in time"), std::string::npos) << result;
+    EXPECT_NE(result.find("SILENT@127.0.0.1:" + std::to_string(port)), std::string::npos);
+    EXPECT_EQ(dialog->testButton()->text(), QStringLiteral("&Test"));
+}
+
+TEST_F(PacsBrowserGuiTest, InvalidInputIsRefusedInPlaceNamingTheField) {
+    auto* dialog = preferences();
+    // A node without host: its dialog stays open and names the field.
+    QPointer<vv::gui::NodeEditDialog> edit =
+        addNode(dialog, QStringLiteral("No host"), QStringLiteral("PACS"), QString(), 104);
+    ASSERT_NE(edit, nullptr);
+    EXPECT_TRUE(edit->isVisible());
+    EXPECT_TRUE(edit->error().startsWith(QStringLiteral("Host:"))) << edit->error().toStdString();
+    edit->reject();
+    EXPECT_EQ(dialog->nodeTable()->rowCount(), 1);
+    // Our AE title with a backslash: the preferences stay open, nothing is saved.
+    dialog->aeTitleEdit()->setText(QStringLiteral("BAD\\AE"));
+    clickOk(dialog);
+    EXPECT_TRUE(dialog->isVisible());
+    EXPECT_TRUE(dialog->error().startsWith(QStringLiteral("Our AE title:")))
+        << dialog->error().toStdString();
+    EXPECT_EQ(vv::gui::readPacsSettings(QSettings()).me.aeTitle, kOurAe);
+    dialog->aeTitleEdit()->setText(QStringLiteral("VVOK"));
+    dialog->bindBox()->setCurrentText(QStringLiteral("localhost:80"));
+    clickOk(dialog);
+    EXPECT_TRUE(dialog->isVisible());
+    EXPECT_TRUE(dialog->error().startsWith(QStringLiteral("Listen on interface:")))
+        << dialog->error().toStdString();
+}
+
+TEST_F(PacsBrowserGuiTest, PreferencesSurviveARestart) {
+    auto* dialog = preferences();
+    dialog->aeTitleEdit()->setText(QStringLiteral("VV_WS7"));
+    dialog->listenerBox()->setChecked(true);
+    dialog->listenerPortBox()->setValue(4711);
+    dialog->bindBox()->setCurrentText(QStringLiteral("0.0.0.0"));
+    dialog->storeLimitBox()->setValue(2.5);
+    addNode(dialog, QStringLiteral("Second"), QStringLiteral("SECOND"), QStringLiteral("10.1.2.3"),
+            2762);
+    QPointer<vv::gui::NetworkPreferencesDialog> guard(dialog);
+    clickOk(dialog);
+    EXPECT_TRUE(waitUntil([&] { return guard == nullptr || !guard->isVisible(); }, 5000));
+
+    // A new window, as after a restart, shows what was saved.
+    window_ = std::make_unique<vv::gui::MainWindow>();
+    auto* again = preferences();
+    EXPECT_EQ(again->aeTitleEdit()->text(), QStringLiteral("VV_WS7"));
+    EXPECT_TRUE(again->listenerBox()->isChecked());
+    EXPECT_EQ(again->listenerPortBox()->value(), 4711);
+    EXPECT_EQ(again->bindBox()->currentText(), QStringLiteral("0.0.0.0"));
+    EXPECT_DOUBLE_EQ(again->storeLimitBox()->value(), 2.5);
+    ASSERT_EQ(again->nodeTable()->rowCount(), 2);
+    EXPECT_EQ(rowText(again->nodeTable(), 1), "Second | SECOND | 10.1.2.3 | 2762 | off | yes");
+}
+
+TEST_F(PacsBrowserGuiTest, QueryShowsTheStudyAndItsSeries) {
+    auto* b = browser();
+    EXPECT_EQ(b->dateFromEdit()->text(), QStringLiteral("any"));
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1"))) << b->status().toStdString();
+    ASSERT_EQ(b->studyTable()->rowCount(), 1);
+    // Study Date 20250101 in the US English short format.
+    EXPECT_EQ(rowText(b->studyTable(), 0),
+              "VesselView Demo | VV-GUI-1 | 1/1/2025 | VesselView demo | CT |  | 1");
+    EXPECT_EQ(b->status(), QStringLiteral("Studies found: 1."));
+    ASSERT_TRUE(selectStudy(b));
+    ASSERT_EQ(b->seriesTable()->rowCount(), 1);
+    EXPECT_EQ(rowText(b->seriesTable(), 0), "1 | CT | GUI CTA | " + std::to_string(slices_));
+
+    // Nothing matches: an empty table, said so.
+    ASSERT_TRUE(search(b, QStringLiteral("NOBODY-*")));
+    EXPECT_EQ(b->studyTable()->rowCount(), 0);
+    EXPECT_EQ(b->status(), QStringLiteral("Studies found: 0."));
+}
+
+TEST_F(PacsBrowserGuiTest, ADateRangeOutsideTheStudyFindsNothing) {
+    auto* b = browser();
+    b->dateFromEdit()->setDate(QDate(2025, 1, 2));
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_EQ(b->studyTable()->rowCount(), 0);
+    b->dateFromEdit()->setDate(QDate(2024, 12, 31));
+    b->dateToEdit()->setDate(QDate(2025, 1, 1));
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_EQ(b->studyTable()->rowCount(), 1);
+}
+
+TEST_F(PacsBrowserGuiTest, ANodeThatIsDownGivesAClearMessageAndTheBrowserKeepsWorking) {
+    QSettings settings;
+    vv::gui::PacsSettings s = vv::gui::readPacsSettings(settings);
+    vv::gui::PacsNode down;
+    down.name = "Down";
+    down.node = {"DOWN", "127.0.0.1", vv::test::freePort(), {}};
+    s.nodes.push_back(down);
+    vv::gui::writePacsSettings(s, settings);
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_EQ(b->studyTable()->rowCount(), 1);
+    b->nodeBox()->setCurrentText(QStringLiteral("Down"));
+    EXPECT_FALSE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_EQ(b->studyTable()->rowCount(), 0) << "rows of another node's answer stay shown";
+    EXPECT_TRUE(b->status().contains(QStringLiteral("refused the connection")))
+        << b->status().toStdString();
+    EXPECT_TRUE(b->status().contains(QString::fromStdString(vv::pacs::describe(down.node))));
+    b->nodeBox()->setCurrentText(QStringLiteral("Orthanc"));
+    EXPECT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_EQ(b->studyTable()->rowCount(), 1);
+}
+
+TEST_F(PacsBrowserGuiTest, RetrieveWithGetFillsTheStoreAndOpenShowsTheSeries) {
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    EXPECT_TRUE(b->getButton()->isChecked()) << "C-GET is the default";
+    EXPECT_FALSE(b->openButton()->isEnabled());
+    ASSERT_TRUE(retrieve(b, b->retrieveSeriesButton())) << b->status().toStdString();
+    EXPECT_EQ(b->status().toStdString(), "Done: images retrieved into the local study store: " +
+                                             std::to_string(slices_) + ".");
+    EXPECT_EQ(b->progressBar()->value(), b->progressBar()->maximum());
+    const std::string all = std::to_string(slices_);
+    EXPECT_EQ(b->progressBar()->text().toStdString(), all + " of " + all + " images");
+    const auto studies = vv::pacs::LocalStore(store_).studies();
+    ASSERT_EQ(studies.size(), 1U);
+    ASSERT_EQ(studies[0].series.size(), 1U);
+    EXPECT_EQ(studies[0].series[0].instances, slices_);
+
+    // Open: the series dialog, then the segmented scene in the 3-D view.
+    QPointer<vv::gui::SeriesDialog> chooser;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                     [&chooser](vv::gui::SeriesDialog* shown) { chooser = shown; });
+    bool shown = false;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
+    ASSERT_TRUE(b->openButton()->isEnabled());
+    b->openButton()->click();
+    ASSERT_TRUE(
+        waitUntil([&] { return chooser != nullptr || !window_->lastError().isEmpty(); }, 30000));
+    ASSERT_NE(chooser, nullptr) << window_->lastError().toStdString();
+    EXPECT_FALSE(b->isVisible()) << "the browser stays in front of the series chooser";
+    EXPECT_EQ(chooser->selectedSeriesUid().toStdString(), studies[0].series[0].seriesInstanceUid);
+    chooser->accept();
+    ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000));
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    EXPECT_TRUE(waitForFrames());
+}
+
+TEST_F(PacsBrowserGuiTest, CancelMidRetrieveShowsCancelledAndStoresNothing) {
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    // Cancel as soon as the first images arrived, as a user would.
+    double cancelledAt = -1.0;
+    QObject::connect(b, &vv::gui::PacsBrowser::retrieveProgress, b, [&](double fraction) {
+        if (cancelledAt < 0.0 && fraction > 0.0 && b->cancelButton()->isEnabled()) {
+            cancelledAt = fraction;
+            b->cancelButton()->click();
+        }
+    });
+    EXPECT_FALSE(retrieve(b, b->retrieveStudyButton()));
+    ASSERT_GT(cancelledAt, 0.0);
+    ASSERT_LT(cancelledAt, 1.0) << "all " << slices_ << " images came before Cancel";
+    EXPECT_TRUE(b->status().contains(QStringLiteral("cancelled"))) << b->status().toStdString();
+    EXPECT_FALSE(b->status().contains(QStringLiteral("Done")));
+    EXPECT_FALSE(b->openButton()->isEnabled());
+    EXPECT_TRUE(vv::pacs::LocalStore(store_).studies().empty());
+    // The browser works on: the same study retrieved after all.
+    EXPECT_TRUE(retrieve(b, b->retrieveStudyButton())) << b->status().toStdString();
+    EXPECT_EQ(vv::pacs::LocalStore(store_).studies().size(), 1U);
+}
+
+TEST_F(PacsBrowserGuiTest, MoveWithoutOurListenerSaysSoAtOnce) {
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    b->setListenerRunning([] { return false; });
+    b->moveButton()->click();
+    auto* note = b->findChild<QLabel*>(QStringLiteral("moveNote"));
+    ASSERT_NE(note, nullptr);
+    EXPECT_TRUE(note->text().contains(QStringLiteral("not running"))) << note->text().toStdString();
+    EXPECT_FALSE(retrieve(b, b->retrieveStudyButton()));
+    EXPECT_TRUE(b->status().startsWith(QStringLiteral("C-MOVE needs our listener")))
+        << b->status().toStdString();
+    EXPECT_FALSE(b->retrieving());
+}
+
+TEST_F(PacsBrowserGuiTest, MoveToOurListenerFillsTheStore) {
+    vv::pacs::LocalStore store(store_);
+    vv::pacs::ListenerConfig config;
+    config.aeTitle = kOurAe;
+    config.port = listenerPort_;
+    config.allowedPeers = {orthanc_->node()};
+    vv::pacs::StorageScp listener(store, config);
+    auto* b = browser();
+    b->setListenerRunning([] { return true; });
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    b->moveButton()->click();
+    ASSERT_TRUE(retrieve(b, b->retrieveStudyButton())) << b->status().toStdString();
+    EXPECT_TRUE(b->status().startsWith(QStringLiteral("Done:"))) << b->status().toStdString();
+    const auto studies = store.studies();
+    ASSERT_EQ(studies.size(), 1U);
+    ASSERT_EQ(studies[0].series.size(), 1U);
+    EXPECT_EQ(studies[0].series[0].instances, slices_);
+    EXPECT_TRUE(b->openButton()->isEnabled());
+}
+
+/// Its own Orthanc, which the test kills.
+class PacsBrowserGuiKillTest : public vv::test::PacsGuiFixture {};
+
+TEST_F(PacsBrowserGuiKillTest, OrthancKilledMidRetrieveGivesAClearMessageAndStoresNothing) {
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    bool killed = false;
+    QObject::connect(b, &vv::gui::PacsBrowser::retrieveProgress, b, [&](double fraction) {
+        if (!killed && fraction > 0.0) {
+            killed = true;
+            orthanc_->kill();
+        }
+    });
+    EXPECT_FALSE(retrieve(b, b->retrieveStudyButton()));
+    ASSERT_TRUE(killed);
+    const std::string node = vv::pacs::describe(orthanc_->node());
+    EXPECT_NE(b->status().toStdString().find(node), std::string::npos) << b->status().toStdString();
+    EXPECT_TRUE(b->status().contains(QStringLiteral("during the transfer")) ||
+                b->status().contains(QStringLiteral("did not answer in time")))
+        << b->status().toStdString();
+    EXPECT_FALSE(b->status().contains(QStringLiteral("Done")));
+    EXPECT_FALSE(b->openButton()->isEnabled());
+    EXPECT_TRUE(vv::pacs::LocalStore(store_).studies().empty());
+    // The browser keeps working: a search now says that nobody listens.
+    EXPECT_FALSE(search(b, QStringLiteral("VV-GUI-1")));
+    EXPECT_TRUE(b->status().contains(QStringLiteral("refused the connection")))
+        << b->status().toStdString();
+}
+
+}  // namespace

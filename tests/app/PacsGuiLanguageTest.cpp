@@ -1,0 +1,99 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The DICOM Preferences and the PACS browser in English and German at
+// 1280 x 800: the study's date in the UI language's format, the texts
+// translated, and nothing cut off (ClippingCheck) with a node listed and a
+// search's results shown. Screenshots go to the test folder.
+#include <gtest/gtest.h>
+
+#include <QCoreApplication>
+#include <QLayout>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QWindow>
+#include <string>
+#include <vector>
+
+#include "ClippingCheck.h"
+#include "PacsGuiFixture.h"
+#include "UiLanguage.h"
+
+namespace {
+
+using vv::test::waitUntil;
+
+std::string listed(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const std::string& problem : problems) {
+        text += "\n  " + problem;
+    }
+    return text;
+}
+
+class PacsGuiLanguageTest : public vv::test::PacsGuiFixture,
+                            public ::testing::WithParamInterface<const char*> {
+  protected:
+    void SetUp() override {
+        // As gui/Translations.cpp does, before any widget exists.
+        ASSERT_TRUE(vv::test::installUiLanguage(GetParam(), VV_QM_DIR));
+        PacsGuiFixture::SetUp();
+        window_->resize(1280, 800);
+    }
+
+    void TearDown() override {
+        PacsGuiFixture::TearDown();
+        vv::test::removeUiLanguage();
+    }
+
+    /// Lays `widget` out as shown, saves it as `name`-<language>.png and
+    /// expects nothing cut off.
+    void expectWhole(QWidget& widget, const std::string& name) {
+        EXPECT_TRUE(waitUntil(
+            [&] { return widget.windowHandle() != nullptr && widget.windowHandle()->isExposed(); },
+            10000))
+            << name << " never appeared";
+        widget.layout()->activate();
+        for (int i = 0; i < 10; ++i) {
+            QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
+        }
+        EXPECT_LE(widget.frameGeometry().width(), 1280) << name;
+        EXPECT_LE(widget.frameGeometry().height(), 800) << name;
+        widget.grab().save(QString::fromStdString(
+            (vv::test::panelTestDir() / (name + "-" + GetParam() + ".png")).string()));
+        const std::vector<std::string> problems = vv::test::ClippingCheck::problems(&widget);
+        EXPECT_TRUE(problems.empty()) << "cut off in " << name << ":" << listed(problems);
+    }
+};
+
+TEST_P(PacsGuiLanguageTest, PreferencesShowEveryTextInFull) {
+    auto* dialog = preferences();
+    dialog->nodeTable()->selectRow(0);
+    expectWhole(*dialog, "pacs-preferences");
+    QPointer<vv::gui::NodeEditDialog> edit = openNodeDialog(dialog, dialog->editButton());
+    ASSERT_NE(edit, nullptr);
+    expectWhole(*edit, "pacs-node");
+    edit->reject();
+}
+
+TEST_P(PacsGuiLanguageTest, BrowserShowsTheStudyInTheUiLanguage) {
+    auto* b = browser();
+    b->resize(1200, 700);
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1"))) << b->status().toStdString();
+    ASSERT_EQ(b->studyTable()->rowCount(), 1);
+    ASSERT_TRUE(selectStudy(b));
+    // Study Date 20250101 as the UI language writes dates.
+    const bool german = QLatin1String(GetParam()) == QLatin1String("de");
+    EXPECT_EQ(b->studyTable()->item(0, 2)->text(),
+              german ? QStringLiteral("01.01.2025") : QStringLiteral("1/1/2025"));
+    EXPECT_EQ(b->status(), german ? QStringLiteral("Gefundene Studien: 1.")
+                                  : QStringLiteral("Studies found: 1."));
+    EXPECT_EQ(b->searchButton()->text(),
+              german ? QStringLiteral("&Suchen") : QStringLiteral("&Search"));
+    expectWhole(*b, "pacs-browser");
+}
+
+INSTANTIATE_TEST_SUITE_P(Languages, PacsGuiLanguageTest, ::testing::Values("en", "de"),
+                         [](const ::testing::TestParamInfo<const char*>& param) {
+                             return std::string(param.param);
+                         });
+
+}  // namespace
