@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -61,7 +62,8 @@ TEST(DepthNormalizationTest, WideRowsMatchAPixelByPixelReference) {
     // rows of odd widths with NaN, +-Inf, negative zero, huge and tiny depths
     // and mask bytes other than 1, every vessel flag, the count and the
     // range must be those of a plain pixel-by-pixel loop.
-    const float specials[] = {kNaN, kInf, -kInf, -0.0F, 0.0F, 3.4e38F, -3.4e38F, 1e-45F};
+    const std::array<float, 8> specials = {kNaN, kInf,    -kInf,    -0.0F,
+                                           0.0F, 3.4e38F, -3.4e38F, 1e-45F};
     std::uint64_t state = 7;
     const auto next = [&state] {
         state = state * 6364136223846793005ULL + 1442695040888963407ULL;
@@ -74,13 +76,13 @@ TEST(DepthNormalizationTest, WideRowsMatchAPixelByPixelReference) {
         for (int y = 0; y < h; ++y) {
             for (int x = 0; x < w; ++x) {
                 const std::uint32_t r = next();
-                depth(x, y) = r % 5 == 0 ? specials[r / 5 % 8]
+                depth(x, y) = r % 5 == 0 ? specials[r / 5 % specials.size()]
                                          : static_cast<float>(r % 100003) * 0.37F - 9000.0F;
                 mask(x, y) = static_cast<std::uint8_t>(r % 3 == 0 ? 0 : 1 + (r >> 8) % 255);
             }
         }
-        double lo = kInf;
-        double hi = -kInf;
+        double lo = std::numeric_limits<double>::infinity();
+        double hi = -lo;
         std::int64_t count = 0;
         const auto n = normalizeDepth(depth.view(), mask.view());
         for (int y = 0; y < h; ++y) {

@@ -123,7 +123,7 @@ TEST(VoidRegionsTest, LongRunsAndAnyNonzeroMaskByteMatchTheNaiveLabelling) {
                     // runs of 1 to 24 pixels; vessels of random nonzero bytes
                     const int len = 1 + static_cast<int>(rng.uniform() * 24.0);
                     for (int k = 0; k < len && x < w; ++k, ++x) {
-                        const std::uint8_t b = static_cast<std::uint8_t>(
+                        const auto b = static_cast<std::uint8_t>(
                             rng.uniform() < 0.5 ? 1 : 1 + static_cast<int>(rng.uniform() * 255.0));
                         mask(x, y) = vessel ? b : 0;
                     }

@@ -33,7 +33,7 @@ RowRange vesselRow(const float* d, const std::uint8_t* m, std::uint8_t* v, int w
     for (int x = 0; x < w; ++x) {
         const float dx = d[x];
         const auto bits = std::bit_cast<std::uint32_t>(dx);
-        const bool vessel = (m[x] != 0) & ((bits & 0x7f800000U) != 0x7f800000U);
+        const bool vessel = m[x] != 0 && (bits & 0x7f800000U) != 0x7f800000U;
         v[x] = vessel ? 1 : 0;
         count += vessel ? 1 : 0;
         r.lo = vessel && dx < r.lo ? dx : r.lo;

@@ -32,11 +32,14 @@ void contourCandidates(ImageView<const std::uint8_t> mask, int y, std::vector<st
     near[0] = 0;
     near[static_cast<std::size_t>(w) + 1] = 0;
     for (int x = 0; x < w; ++x) {
-        nb[x] = static_cast<std::uint8_t>((above[x] == 0) | (here[x] == 0) | (below[x] == 0));
+        nb[x] = static_cast<std::uint8_t>(static_cast<unsigned>(above[x] == 0) |
+                                          static_cast<unsigned>(here[x] == 0) |
+                                          static_cast<unsigned>(below[x] == 0));
     }
     std::uint8_t* c = cand.data();
     for (int x = 0; x < w; ++x) {
-        c[x] = static_cast<std::uint8_t>((here[x] != 0) & (nb[x - 1] | nb[x] | nb[x + 1]));
+        c[x] = static_cast<std::uint8_t>(static_cast<unsigned>(here[x] != 0) &
+                                         static_cast<unsigned>(nb[x - 1] | nb[x] | nb[x + 1]));
     }
 }
 
