@@ -134,29 +134,6 @@ Axis axis(int o, int h, int n) {
     return a;
 }
 
-/// The values zOut + N / D of pixels 0 .. width - 1 of a row, D and N
-/// interpolated linearly between the row's nx samples rowD / rowN (h pixels
-/// apart, a power of two; beyond the last sample extrapolated from the last
-/// two), clamped to [lo, hi]: the arithmetic of evalNearBox's per-pixel
-/// path, cell by cell, so that the compiler vectorises it.
-void interpolateRow(const double* rowD, const double* rowN, int nx, int h, int width, double zOut,
-                    float lo, float hi, float* v) {
-    const double invH = 1.0 / h;  // exact: h is a power of two
-    for (int c = 0; c + 1 < nx; ++c) {
-        const int i0 = c * h;
-        const int i1 = c + 2 == nx ? width : std::min(width, i0 + h);  // the cells of axis()
-        const double d0 = rowD[c];
-        const double dD = rowD[c + 1] - rowD[c];
-        const double n0 = rowN[c];
-        const double dN = rowN[c + 1] - rowN[c];
-        for (int i = i0; i < i1; ++i) {
-            const double t = static_cast<double>(i - i0) * invH;
-            const double fc = (n0 + t * dN) / (d0 + t * dD);
-            v[i] = std::clamp(static_cast<float>(zOut + fc), lo, hi);
-        }
-    }
-}
-
 }  // namespace
 
 bool nearBoxHasRoom(const Region& rg, const BoxGeo& geo, int level, const std::vector<int>& nodes) {
@@ -410,22 +387,12 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
     }
 
     // Every region pixel: the bound (where its cell did not pass as a
-    // whole), then the value. A row whose cells all passed is interpolated
-    // cell by cell over all its pixels (the same arithmetic, in a loop the
-    // compiler vectorises), then stored at the region's pixels.
+    // whole), then the value.
     const int width = spanX + 1;
     thread_local std::vector<Axis> cols;
-    thread_local std::vector<float> vals;
     cols.resize(static_cast<std::size_t>(width));
-    vals.resize(static_cast<std::size_t>(width));
     for (int i = 0; i < width; ++i) {
         cols[static_cast<std::size_t>(i)] = axis(i, h, nx);
-    }
-    std::array<bool, kR> rowOk{};
-    for (int j = 0; j + 1 < ny; ++j) {
-        const Cell* cr = &cell[sampleIndex(j, 0)];
-        rowOk[static_cast<std::size_t>(j)] =
-            std::all_of(cr, cr + (nx - 1), [](const Cell& c) { return c.ok; });
     }
     const double zOut = rg.zref + zc;
     std::int64_t pixels = 0;
@@ -441,17 +408,6 @@ std::int64_t evalNearBox(const Region& rg, const BoxGeo& geo, int level,
         for (int c = 0; c < nx; ++c) {
             rowD[static_cast<std::size_t>(c)] = r0[c].d + ay.t * (r1[c].d - r0[c].d);
             rowN[static_cast<std::size_t>(c)] = r0[c].nc + ay.t * (r1[c].nc - r0[c].nc);
-        }
-        if (rowOk[static_cast<std::size_t>(ay.k)]) {
-            float* v = vals.data();
-            interpolateRow(rowD.data(), rowN.data(), nx, h, width, zOut, rg.zminOut, rg.zmaxOut, v);
-            for (int i = 0; i < width; ++i) {
-                if (lab[i] == rg.id) {
-                    o[i] = v[i];
-                    ++pixels;
-                }
-            }
-            continue;
         }
         for (int i = 0; i < width; ++i) {
             if (lab[i] != rg.id) {
