@@ -2,7 +2,9 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 #include "vv/core/Error.h"
@@ -53,6 +55,53 @@ TEST(DepthNormalizationTest, NonFiniteVesselDepthIsBackground) {
     EXPECT_EQ(n.dmax, 1.0);
     EXPECT_TRUE(n.flat);
     EXPECT_EQ(n.z(0, 0), 0.0F);
+}
+
+TEST(DepthNormalizationTest, WideRowsMatchAPixelByPixelReference) {
+    // The range pass works on the floats' bits, many pixels at a time: over
+    // rows of odd widths with NaN, +-Inf, negative zero, huge and tiny depths
+    // and mask bytes other than 1, every vessel flag, the count and the
+    // range must be those of a plain pixel-by-pixel loop.
+    const std::array<float, 8> specials = {kNaN, kInf,    -kInf,    -0.0F,
+                                           0.0F, 3.4e38F, -3.4e38F, 1e-45F};
+    std::uint64_t state = 7;
+    const auto next = [&state] {
+        state = state * 6364136223846793005ULL + 1442695040888963407ULL;
+        return static_cast<std::uint32_t>(state >> 33);
+    };
+    for (const int w : {1, 7, 8, 9, 63, 257}) {
+        const int h = 37;
+        Image<float> depth(w, h);
+        Image<std::uint8_t> mask(w, h);
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const std::uint32_t r = next();
+                depth(x, y) = r % 5 == 0 ? specials[r / 5 % specials.size()]
+                                         : static_cast<float>(r % 100003) * 0.37F - 9000.0F;
+                mask(x, y) = static_cast<std::uint8_t>(r % 3 == 0 ? 0 : 1 + (r >> 8) % 255);
+            }
+        }
+        double lo = std::numeric_limits<double>::infinity();
+        double hi = -lo;
+        std::int64_t count = 0;
+        const auto n = normalizeDepth(depth.view(), mask.view());
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const bool vessel = mask(x, y) != 0 && std::isfinite(depth(x, y));
+                ASSERT_EQ(n.vessel(x, y), vessel ? 1 : 0) << w << ": " << x << ", " << y;
+                if (vessel) {
+                    ++count;
+                    lo = std::min(lo, static_cast<double>(depth(x, y)));
+                    hi = std::max(hi, static_cast<double>(depth(x, y)));
+                } else {
+                    ASSERT_TRUE(std::isnan(n.z(x, y)));
+                }
+            }
+        }
+        EXPECT_EQ(n.vesselPixels, count) << w;
+        EXPECT_EQ(n.dmin, lo) << w;
+        EXPECT_EQ(n.dmax, hi) << w;
+    }
 }
 
 TEST(DepthNormalizationTest, FlatSceneHasZeroNotNaN) {

@@ -106,6 +106,36 @@ TEST(VoidRegionsTest, TallMasksAcrossManyRowBandsMatchTheNaiveLabelling) {
     }
 }
 
+TEST(VoidRegionsTest, LongRunsAndAnyNonzeroMaskByteMatchTheNaiveLabelling) {
+    // Labelling and contours skip runs of background and of vessel pixels
+    // eight mask bytes at a time: runs of every length across those words,
+    // rows of widths around multiples of eight, and vessel bytes other than
+    // 1 (any nonzero byte is a vessel, 0x80 and 0xff included) must give the
+    // independent labelling, boxes and contours.
+    for (const int w : {1, 7, 8, 9, 15, 16, 17, 64, 131}) {
+        for (std::uint64_t seed = 1; seed <= 3; ++seed) {
+            test::Rng rng(seed * 977 + static_cast<std::uint64_t>(w));
+            Image<std::uint8_t> mask(w, 70);
+            for (int y = 0; y < mask.height(); ++y) {
+                int x = 0;
+                bool vessel = rng.uniform() < 0.5;
+                while (x < w) {
+                    // runs of 1 to 24 pixels; vessels of random nonzero bytes
+                    const int len = 1 + static_cast<int>(rng.uniform() * 24.0);
+                    for (int k = 0; k < len && x < w; ++k, ++x) {
+                        const auto b = static_cast<std::uint8_t>(
+                            rng.uniform() < 0.5 ? 1 : 1 + static_cast<int>(rng.uniform() * 255.0));
+                        mask(x, y) = vessel ? b : 0;
+                    }
+                    vessel = !vessel;
+                }
+            }
+            expectMatchesNaive(mask, findVoidRegions(mask.view()),
+                               "width " + std::to_string(w) + " seed " + std::to_string(seed));
+        }
+    }
+}
+
 TEST(VoidRegionsTest, SameResultWithOneOrThreeThreads) {
     // The parallel passes must give exactly what one thread gives: labels,
     // boxes, counts, and every contour in the same order with the same depths.

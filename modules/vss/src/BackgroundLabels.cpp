@@ -1,9 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Two-pass union-find labelling per band of rows (BackgroundLabels.h).
+// Two-pass union-find labelling of runs per band of rows (BackgroundLabels.h).
 #include "BackgroundLabels.h"
 
 #include <algorithm>
 #include <cstddef>
+#include <cstring>
 #include <limits>
 
 #include "vv/core/Error.h"
@@ -33,51 +34,87 @@ void unite(std::vector<std::int32_t>& parent, std::int32_t a, std::int32_t b) {
     }
 }
 
-/// One band: provisional labels (band-local, in raster order of their first
-/// pixel), their union-find parents and boxes.
+/// A run: the background pixels [x0, x1) of one row, with their provisional label.
+struct Run {
+    int x0 = 0;
+    int x1 = 0;
+    std::int32_t id = 0;
+};
+
+/// One band: its runs row by row (those of row y0 + r are
+/// runs[rowStart[r]] .. runs[rowStart[r + 1] - 1], left to right), their
+/// provisional labels (band-local, in raster order of their first pixel),
+/// the labels' union-find parents and boxes.
 struct Band {
     int y0 = 0;
     int y1 = 0;
+    std::vector<Run> runs;
+    std::vector<std::size_t> rowStart;
     std::vector<std::int32_t> parent;
     std::vector<ComponentBox> boxes;
     std::int32_t offset = 0;  // first global provisional id
 };
 
-/// Labels the band run by run (a run: consecutive background pixels of a
-/// row): a run takes the first label above it and unites every other label
-/// above it; a run with none above gets a new label. Same sets, and new labels
-/// in the raster order of each set's first pixel, as pixel by pixel.
-void labelBand(ImageView<const std::uint8_t> mask, ImageView<std::int32_t> labels, Band& band) {
+constexpr std::uint64_t kOnes = 0x0101010101010101ULL;
+constexpr std::uint64_t kHighs = 0x8080808080808080ULL;
+
+/// First x in [x, w) with m[x] != 0 (or w): eight bytes at a time.
+int skipBackground(const std::uint8_t* m, int x, int w) {
+    while (x + 8 <= w) {
+        std::uint64_t v = 0;
+        std::memcpy(&v, m + x, sizeof v);
+        if (v != 0) {
+            break;
+        }
+        x += 8;
+    }
+    while (x < w && m[x] == 0) {
+        ++x;
+    }
+    return x;
+}
+
+/// First x in [x, w) with m[x] == 0 (or w): eight bytes at a time.
+int skipVessel(const std::uint8_t* m, int x, int w) {
+    while (x + 8 <= w) {
+        std::uint64_t v = 0;
+        std::memcpy(&v, m + x, sizeof v);
+        if (((v - kOnes) & ~v & kHighs) != 0) {  // some byte is zero
+            break;
+        }
+        x += 8;
+    }
+    while (x < w && m[x] != 0) {
+        ++x;
+    }
+    return x;
+}
+
+/// Labels the band run by run: a run takes the label of the first run above
+/// that shares a column with it and unites every other such label; a run
+/// with none above gets a new label. Same sets, and new labels in the raster
+/// order of each set's first pixel, as pixel by pixel. Writes no pixel.
+void labelBand(ImageView<const std::uint8_t> mask, Band& band) {
     const int w = mask.width();
+    band.rowStart.assign(1, 0);
+    std::size_t upBegin = 0;  // runs of the row above: [upBegin, upEnd)
+    std::size_t upEnd = 0;
     for (int y = band.y0; y < band.y1; ++y) {
         const std::uint8_t* m = mask.row(y);
-        const std::uint8_t* mUp = y > band.y0 ? mask.row(y - 1) : nullptr;
-        std::int32_t* l = labels.row(y);
-        const std::int32_t* lUp = y > band.y0 ? labels.row(y - 1) : nullptr;
-        int x = 0;
+        std::size_t k = upBegin;  // first run above that may overlap the current one
+        int x = skipVessel(m, 0, w);
         while (x < w) {
-            if (m[x] != 0) {
-                l[x] = -1;
-                ++x;
-                continue;
-            }
             const int x0 = x;
-            while (x < w && m[x] == 0) {
-                ++x;
+            x = skipBackground(m, x, w);
+            while (k < upEnd && band.runs[k].x1 <= x0) {
+                ++k;
             }
             std::int32_t id = -1;
-            if (mUp != nullptr) {
-                std::int32_t last = -1;
-                for (int xx = x0; xx < x; ++xx) {
-                    if (mUp[xx] != 0 || lUp[xx] == last) {
-                        continue;
-                    }
-                    last = lUp[xx];
-                    if (id < 0) {
-                        id = last;
-                    } else {
-                        unite(band.parent, id, last);
-                    }
+            for (std::size_t j = k; j < upEnd && band.runs[j].x0 < x; ++j) {
+                if (id < 0) {
+                    id = band.runs[j].id;
+                } else {
+                    unite(band.parent, id, band.runs[j].id);
                 }
             }
             if (id < 0) {
@@ -85,13 +122,17 @@ void labelBand(ImageView<const std::uint8_t> mask, ImageView<std::int32_t> label
                 band.parent.push_back(id);
                 band.boxes.push_back(ComponentBox{x0, y, x, y + 1, 0});
             }
-            std::fill(l + x0, l + x, id);
+            band.runs.push_back(Run{x0, x, id});
             ComponentBox& b = band.boxes[static_cast<std::size_t>(id)];
             b.x0 = std::min(b.x0, x0);
             b.x1 = std::max(b.x1, x);
             b.y1 = y + 1;
             b.pixels += x - x0;
+            x = skipVessel(m, x, w);
         }
+        upBegin = upEnd;
+        upEnd = band.runs.size();
+        band.rowStart.push_back(upEnd);
     }
 }
 
@@ -116,11 +157,13 @@ std::vector<ComponentBox> labelBackground(ImageView<const std::uint8_t> mask,
     // 1. Each band on its own.
     parallelFor(0, bandCount, 1, [&](long b0, long b1) {
         for (long b = b0; b < b1; ++b) {
-            labelBand(mask, labels, bands[static_cast<std::size_t>(b)]);
+            labelBand(mask, bands[static_cast<std::size_t>(b)]);
         }
     });
     // 2. One union-find over every provisional label (global id = offset +
-    // local id: raster order of the first pixels), joined along band borders.
+    // local id: raster order of the first pixels), joined along band borders
+    // (the runs of a band's last row and the next band's first row that
+    // share a column).
     std::int64_t total = 0;
     for (Band& band : bands) {
         band.offset = static_cast<std::int32_t>(total);
@@ -140,13 +183,15 @@ std::vector<ComponentBox> labelBackground(ImageView<const std::uint8_t> mask,
     for (int b = 1; b < bandCount; ++b) {
         const Band& above = bands[static_cast<std::size_t>(b - 1)];
         const Band& below = bands[static_cast<std::size_t>(b)];
-        const std::uint8_t* mA = mask.row(below.y0 - 1);
-        const std::uint8_t* mB = mask.row(below.y0);
-        const std::int32_t* lA = labels.row(below.y0 - 1);
-        const std::int32_t* lB = labels.row(below.y0);
-        for (int x = 0; x < w; ++x) {
-            if (mA[x] == 0 && mB[x] == 0) {
-                unite(parent, lA[x] + above.offset, lB[x] + below.offset);
+        const std::size_t aEnd = above.rowStart.back();
+        std::size_t i = above.rowStart[above.rowStart.size() - 2];
+        for (std::size_t j = 0; j < below.rowStart[1]; ++j) {
+            const Run& r = below.runs[j];
+            while (i < aEnd && above.runs[i].x1 <= r.x0) {
+                ++i;
+            }
+            for (std::size_t k = i; k < aEnd && above.runs[k].x0 < r.x1; ++k) {
+                unite(parent, above.runs[k].id + above.offset, r.id + below.offset);
             }
         }
     }
@@ -171,18 +216,24 @@ std::vector<ComponentBox> labelBackground(ImageView<const std::uint8_t> mask,
         r.y1 = std::max(r.y1, bi.y1);
         r.pixels += bi.pixels;
     }
-    // 4. Renumber the pixels.
+    // 4. Every pixel written once, run by run: the final id on the runs,
+    // kVesselLabel (-1) between them.
     parallelFor(0, bandCount, 1, [&](long b0, long b1) {
         for (long b = b0; b < b1; ++b) {
             const Band& band = bands[static_cast<std::size_t>(b)];
             for (int y = band.y0; y < band.y1; ++y) {
+                const auto r = static_cast<std::size_t>(y - band.y0);
                 std::int32_t* l = labels.row(y);
-                for (int x = 0; x < w; ++x) {
-                    if (l[x] >= 0) {
-                        l[x] = finalId[static_cast<std::size_t>(l[x]) +
-                                       static_cast<std::size_t>(band.offset)];
-                    }
+                int x = 0;
+                for (std::size_t k = band.rowStart[r]; k < band.rowStart[r + 1]; ++k) {
+                    const Run& run = band.runs[k];
+                    std::fill(l + x, l + run.x0, -1);
+                    std::fill(l + run.x0, l + run.x1,
+                              finalId[static_cast<std::size_t>(run.id) +
+                                      static_cast<std::size_t>(band.offset)]);
+                    x = run.x1;
                 }
+                std::fill(l + x, l + w, -1);
             }
         }
     });

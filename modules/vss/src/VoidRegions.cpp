@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <string>
 #include <utility>
@@ -16,18 +18,52 @@ namespace vv::vss {
 
 namespace {
 
+/// Marks with 1 in cand[x] (w bytes) the vessel pixels of row y of the mask
+/// that have a background pixel among their 8 neighbours (the only ones that
+/// are contour points), 0 elsewhere; near (w + 2 bytes) is scratch. One pass
+/// over bytes, which the compiler vectorises.
+void contourCandidates(ImageView<const std::uint8_t> mask, int y, std::vector<std::uint8_t>& near,
+                       std::vector<std::uint8_t>& cand) {
+    const int w = mask.width();
+    const std::uint8_t* here = mask.row(y);
+    const std::uint8_t* above = y > 0 ? mask.row(y - 1) : here;  // here: no background added
+    const std::uint8_t* below = y + 1 < mask.height() ? mask.row(y + 1) : here;
+    std::uint8_t* nb = near.data() + 1;  // nb[x]: background in column x of rows y - 1 .. y + 1
+    near[0] = 0;
+    near[static_cast<std::size_t>(w) + 1] = 0;
+    for (int x = 0; x < w; ++x) {
+        nb[x] = static_cast<std::uint8_t>(static_cast<unsigned>(above[x] == 0) |
+                                          static_cast<unsigned>(here[x] == 0) |
+                                          static_cast<unsigned>(below[x] == 0));
+    }
+    std::uint8_t* c = cand.data();
+    for (int x = 0; x < w; ++x) {
+        c[x] = static_cast<std::uint8_t>(static_cast<unsigned>(here[x] != 0) &
+                                         static_cast<unsigned>(nb[x - 1] | nb[x] | nb[x + 1]));
+    }
+}
+
 /// The contour points of the vessel pixels of rows [y0, y1), row-major: each
 /// once for every distinct region among its 8 neighbours, as (region, point).
-void contourBand(ImageView<const std::int32_t> labels, ImageView<const float> z, bool haveZ, int y0,
-                 int y1, std::vector<std::pair<std::int32_t, ContourPoint>>& out) {
+void contourBand(ImageView<const std::uint8_t> mask, ImageView<const std::int32_t> labels,
+                 ImageView<const float> z, bool haveZ, int y0, int y1,
+                 std::vector<std::pair<std::int32_t, ContourPoint>>& out) {
     const int w = labels.width();
     const int h = labels.height();
+    std::vector<std::uint8_t> near(static_cast<std::size_t>(w) + 2);
+    std::vector<std::uint8_t> cand(static_cast<std::size_t>(w) + 8, 0);  // zero padding
     for (int y = y0; y < y1; ++y) {
+        contourCandidates(mask, y, near, cand);
         const std::int32_t* rowAbove = y > 0 ? labels.row(y - 1) : nullptr;
         const std::int32_t* rowHere = labels.row(y);
         const std::int32_t* rowBelow = y + 1 < h ? labels.row(y + 1) : nullptr;
         for (int x = 0; x < w; ++x) {
-            if (rowHere[x] != kVesselLabel) {
+            if (cand[static_cast<std::size_t>(x)] == 0) {
+                std::uint64_t v = 0;  // skip eight non-candidates at a time
+                std::memcpy(&v, cand.data() + x, sizeof v);
+                if (v == 0) {
+                    x += 7;
+                }
                 continue;
             }
             std::array<std::int32_t, 8> found{};
@@ -101,8 +137,8 @@ VoidRegionSet findVoidRegions(ImageView<const std::uint8_t> vesselMask, ImageVie
     parallelFor(0, bands, 1, [&](long b0, long b1) {
         for (long b = b0; b < b1; ++b) {
             const int y0 = static_cast<int>(b) * detail::kBandRows;
-            contourBand(result.labels.view(), z, haveZ, y0, std::min(h, y0 + detail::kBandRows),
-                        found[static_cast<std::size_t>(b)]);
+            contourBand(vesselMask, result.labels.view(), z, haveZ, y0,
+                        std::min(h, y0 + detail::kBandRows), found[static_cast<std::size_t>(b)]);
         }
     });
     std::vector<std::size_t> sizes(result.regions.size(), 0);
