@@ -661,6 +661,46 @@
         <source>%L1 studies in %2</source>
         <translation>%L1 Studien in %2</translation>
     </message>
+    <message>
+        <source>without date or description</source>
+        <translation>ohne Datum und Beschreibung</translation>
+    </message>
+    <message>
+        <source>of %1</source>
+        <translation>vom %1</translation>
+    </message>
+    <message>
+        <source>“%1”</source>
+        <translation>„%1“</translation>
+    </message>
+    <message>
+        <source>“%1” of %2</source>
+        <translation>„%1“ vom %2</translation>
+    </message>
+    <message>
+        <source>&amp;Delete…</source>
+        <translation>&amp;Löschen…</translation>
+    </message>
+    <message>
+        <source>Delete Study</source>
+        <translation>Studie löschen</translation>
+    </message>
+    <message>
+        <source>Delete the study %1 from the local study store? Its files are deleted from this computer; the PACS keeps its copy.</source>
+        <translation>Die Studie %1 aus dem lokalen Studienspeicher löschen? Ihre Dateien werden von diesem Computer gelöscht; das PACS behält seine Kopie.</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>The study %1 is open — in this window or in another program — and was not deleted. Close it (open other data) and try again.</source>
+        <translation>Die Studie %1 ist geöffnet – in diesem Fenster oder in einem anderen Programm – und wurde nicht gelöscht. Schließen Sie sie (öffnen Sie andere Daten) und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The study %1 could not be deleted: the study store cannot be written.</source>
+        <translation>Die Studie %1 konnte nicht gelöscht werden: In den Studienspeicher lässt sich nicht schreiben.</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::LocalStudyActions</name>

@@ -12,6 +12,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
@@ -19,6 +20,7 @@
 #include <QTreeWidget>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <set>
 #include <string>
@@ -77,6 +79,32 @@ std::vector<fs::path> writeCta(const fs::path& folder, const std::string& patien
         files.push_back(entry.path());
     }
     return files;
+}
+
+/// A study "description" of 2 January 2024 with one 2000-byte instance
+/// committed to the store at `root` (not DICOM: the browser reads the index).
+void commitStudy(const fs::path& root, const std::string& uid, const std::string& description) {
+    const vv::pacs::LocalStore store(root);
+    vv::pacs::LocalStore::Transaction t = store.begin();
+    const fs::path staged = t.stagingPath();
+    std::ofstream(staged) << std::string(2000, 'x');
+    vv::pacs::InstanceFields f;
+    f.studyInstanceUid = uid;
+    f.seriesInstanceUid = uid + ".1";
+    f.sopInstanceUid = uid + ".1.1";
+    f.patientName = "Test^Store";
+    f.studyDate = "20240102";
+    f.studyDescription = description;
+    f.modality = "CT";
+    f.seriesNumber = 1;
+    t.add(staged, f);
+    t.commit();
+}
+
+/// The study row of `browser` described `description`, or nullptr.
+QTreeWidgetItem* studyRow(const LocalStudiesBrowser& browser, const QString& description) {
+    const auto rows = browser.tree()->findItems(description, Qt::MatchExactly, 3);
+    return rows.isEmpty() ? nullptr : rows.front();
 }
 
 /// All texts of `item`'s columns, "|"-joined, for failure messages and checks.
@@ -204,6 +232,32 @@ class PacsGuiTest : public vv::test::GuiFixture {
         EXPECT_TRUE(dialog->isSending());
         EXPECT_TRUE(waitUntil([&] { return !dialog->isSending(); }, 55000)) << "the send hangs";
         return dialog;
+    }
+
+    /// Delete… on `row`, and the Delete button of the confirmation; returns
+    /// the confirmation's text.
+    static QString deleteAndConfirm(LocalStudiesBrowser& browser, QTreeWidgetItem* row) {
+        browser.tree()->setCurrentItem(row);
+        EXPECT_TRUE(browser.deleteButton()->isEnabled());
+        browser.deleteButton()->click();
+        auto* box = browser.findChild<QMessageBox*>(QStringLiteral("deleteStudyBox"));
+        if (box == nullptr) {
+            ADD_FAILURE() << "no confirmation";
+            return {};
+        }
+        EXPECT_TRUE(waitUntil([&] { return box->isVisible(); }, 5000));
+        const QString text = box->text();
+        QAbstractButton* remove = nullptr;
+        for (QAbstractButton* button : box->buttons()) {
+            remove = box->buttonRole(button) == QMessageBox::DestructiveRole ? button : remove;
+        }
+        EXPECT_NE(remove, nullptr);
+        if (remove != nullptr) {
+            EXPECT_EQ(remove->text(), QStringLiteral("Delete"));
+            remove->click();
+        }
+        EXPECT_TRUE(waitUntil([&] { return !browser.isDeleting(); }, 20000));
+        return text;
     }
 
     static inline std::unique_ptr<OrthancServer> orthanc_;
@@ -399,3 +453,60 @@ TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
 }
 
 }  // namespace
+
+TEST_F(PacsGuiTest, DeleteAsksNamingTheStudyThenItsRowAndFilesAreGone) {
+    const PacsSettings s = settings(false);
+    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    commitStudy(s.storeFolder, "1.2.826.0.1.2", "Leg CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 2);
+    QTreeWidgetItem* neck = studyRow(*browser, QStringLiteral("Neck CTA"));
+    ASSERT_NE(neck, nullptr);
+    EXPECT_FALSE(browser->deleteButton()->isEnabled()) << "nothing chosen yet";
+
+    const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
+    // A series row deletes its study too.
+    const QString asked = deleteAndConfirm(*browser, neck->child(0));
+    EXPECT_EQ(asked, QStringLiteral("Delete the study “Neck CTA” of %1 from the local study "
+                                    "store? Its files are deleted from this computer; the PACS "
+                                    "keeps its copy.")
+                         .arg(date));
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 1; }, 5000));
+    EXPECT_EQ(studyRow(*browser, QStringLiteral("Neck CTA")), nullptr);
+    EXPECT_NE(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr);
+    EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+    EXPECT_TRUE(fs::exists(s.storeFolder / "1.2.826.0.1.2"));
+    EXPECT_FALSE(browser->messageLine()->isVisible());
+    EXPECT_EQ(vv::pacs::LocalStore(s.storeFolder).studies().size(), 1U);
+}
+
+TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
+    const PacsSettings s = settings(false);
+    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    {
+        const auto lease = vv::pacs::LocalStore(s.storeFolder).open("1.2.826.0.1.1");
+        deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
+        ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 5000));
+        const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
+        EXPECT_EQ(browser->messageLine()->text(),
+                  QStringLiteral("The study “Neck CTA” of %1 is open — in this window or in "
+                                 "another program — and was not deleted. Close it (open other "
+                                 "data) and try again.")
+                      .arg(date));
+        EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
+        EXPECT_TRUE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+        browser->grab().save(QString::fromStdString((testDir() / "delete-refused.png").string()));
+        const auto problems = vv::test::ClippingCheck::problems(browser);
+        EXPECT_TRUE(problems.empty()) << problems.front();
+    }
+    // Closed now: Delete removes it and the message goes.
+    deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 0; }, 5000));
+    EXPECT_FALSE(browser->messageLine()->isVisible());
+    EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+}
