@@ -1754,6 +1754,17 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
     </message>
 </context>
 <context>
+    <name>vv::gui::StoreLeases</name>
+    <message>
+        <source>This study is no longer in the local study store.</source>
+        <translation>Diese Studie ist nicht mehr im lokalen Studienspeicher.</translation>
+    </message>
+    <message>
+        <source>The study cannot be opened now: the local study store is busy or cannot be read. Try again in a moment.</source>
+        <translation>Die Studie lässt sich jetzt nicht öffnen: Der lokale Studienspeicher ist belegt oder lässt sich nicht lesen. Versuchen Sie es gleich noch einmal.</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ViewerWidget</name>
     <message>
         <source>No OpenGL context can be created here (platform &apos;%1&apos;). VesselView needs OpenGL 4.1 (core profile): update the graphics driver, or run with Mesa&apos;s software renderer (LIBGL_ALWAYS_SOFTWARE=1).</source>

@@ -34,6 +34,7 @@
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/PacsSettings.h"
 #include "gui/pacs/SendDialog.h"
+#include "gui/pacs/StoreLeases.h"
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/Find.h"
@@ -509,4 +510,71 @@ TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
     ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 0; }, 5000));
     EXPECT_FALSE(browser->messageLine()->isVisible());
     EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+}
+
+TEST_F(PacsGuiTest, AStudyOpenedFromLocalStudiesStaysUntilOtherDataReplacesIt) {
+    const PacsSettings s = settings(false);
+    {
+        vv::pacs::LocalStore store(s.storeFolder);
+        (void)vv::pacs::getInto(store, me(), orthanc_->node(),
+                                vv::pacs::RetrieveRequest{studyUid_, ""});
+    }
+    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    browser->tree()->setCurrentItem(studyRow(*browser, QStringLiteral("CTA run-off")));
+    ASSERT_TRUE(openDicomAndAccept([&] { browser->openButton()->click(); }));
+    auto* leases = window_->findChild<vv::gui::StoreLeases*>();
+    ASSERT_NE(leases, nullptr);
+    EXPECT_EQ(leases->heldStudies(), std::vector<std::string>{studyUid_});
+
+    // A clean-up with a tiny limit removes only the other study; Delete refuses.
+    vv::pacs::LocalStore store(s.storeFolder);
+    store.setSizeLimit(1);
+    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{"1.2.826.0.1.1"});
+    EXPECT_THROW(store.remove(studyUid_), vv::pacs::StudyOpenError);
+    EXPECT_TRUE(fs::exists(s.storeFolder / studyUid_));
+
+    // Other data replaces the scene: the study is no longer held.
+    const QString other = QString::fromStdString((testDir() / "cta").string());
+    ASSERT_TRUE(openDicomAndAccept([&] { window_->openDicom(other); }));
+    EXPECT_TRUE(leases->heldStudies().empty());
+    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{studyUid_});
+    EXPECT_FALSE(fs::exists(s.storeFolder / studyUid_));
+}
+
+TEST_F(PacsGuiTest, AStudyBeingOpenedIsHeldUntilTheWindowCloses) {
+    const PacsSettings s = settings(false);
+    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0));
+    browser->openButton()->click();
+    auto* leases = window_->findChild<vv::gui::StoreLeases*>();
+    ASSERT_NE(leases, nullptr);
+    ASSERT_TRUE(waitUntil([&] { return !leases->heldStudies().empty(); }, 15000));
+    EXPECT_THROW(vv::pacs::LocalStore(s.storeFolder).remove("1.2.826.0.1.1"),
+                 vv::pacs::StudyOpenError);
+    window_->close();
+    EXPECT_TRUE(leases->heldStudies().empty());
+    EXPECT_NO_THROW(vv::pacs::LocalStore(s.storeFolder).remove("1.2.826.0.1.1"));
+}
+
+TEST_F(PacsGuiTest, OpeningAStudyRemovedMeanwhileSaysSoAndItsRowGoes) {
+    const PacsSettings s = settings(false);
+    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 1);
+    vv::pacs::LocalStore(s.storeFolder).remove("1.2.826.0.1.1");  // e.g. by another program
+    browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0));
+    browser->openButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 15000));
+    EXPECT_EQ(browser->messageLine()->text(),
+              QStringLiteral("This study is no longer in the local study store."));
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+    EXPECT_TRUE(window_->lastError().isEmpty()) << "nothing was opened";
 }

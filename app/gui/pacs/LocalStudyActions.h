@@ -16,7 +16,9 @@ class MainWindow;
 /// ListenerService (a child of `window`), started from the PACS settings in
 /// QSettings, with its state in a status bar label ("listenerIndicator").
 /// The Local Studies browser (one per window) opens what the user picks with
-/// window.openDicom(). Returns the listener service.
+/// window.openDicom() once a StoreLeases (a child of `window`, object name
+/// "storeLeases") holds its study open; the lease ends when another document
+/// replaces the scene or the window closes. Returns the listener service.
 ListenerService* addLocalStudyActions(MainWindow& window, QMenu& menu);
 
 }  // namespace vv::gui
