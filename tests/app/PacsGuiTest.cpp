@@ -82,13 +82,15 @@ std::vector<fs::path> writeCta(const fs::path& folder, const std::string& patien
     return files;
 }
 
-/// A study "description" of 2 January 2024 with one 2000-byte instance
-/// committed to the store at `root` (not DICOM: the browser reads the index).
-void commitStudy(const fs::path& root, const std::string& uid, const std::string& description) {
+/// A study "description" of 2 January 2024 with one instance of `bytes`
+/// bytes committed to the store at `root` (not DICOM: the browser reads the
+/// index).
+void commitStudy(const fs::path& root, const std::string& uid, const std::string& description,
+                 std::size_t bytes = 2000) {
     const vv::pacs::LocalStore store(root);
     vv::pacs::LocalStore::Transaction t = store.begin();
     const fs::path staged = t.stagingPath();
-    std::ofstream(staged) << std::string(2000, 'x');
+    std::ofstream(staged) << std::string(bytes, 'x');
     vv::pacs::InstanceFields f;
     f.studyInstanceUid = uid;
     f.seriesInstanceUid = uid + ".1";
@@ -577,4 +579,27 @@ TEST_F(PacsGuiTest, OpeningAStudyRemovedMeanwhileSaysSoAndItsRowGoes) {
               QStringLiteral("This study is no longer in the local study store."));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
     EXPECT_TRUE(window_->lastError().isEmpty()) << "nothing was opened";
+}
+
+TEST_F(PacsGuiTest, OverTheStoreLimitAPushedStudyMakesTheLeastRecentlyUsedStudyGo) {
+    // Two studies of 2 MB, the "Leg CTA" stored first; the limit leaves room
+    // for both and less than the pushed CTA (about 0.5 MB) on top.
+    constexpr std::size_t kBig = 2000000;
+    PacsSettings s = settings();
+    s.storeLimitBytes = 2 * kBig + 200000;
+    commitStudy(s.storeFolder, "1.2.826.0.1.2", "Leg CTA", kBig);
+    commitStudy(s.storeFolder, "1.2.826.0.1.3", "Head CTA", kBig);
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 2);
+
+    orthancPushesTheStudy();
+    ASSERT_TRUE(waitUntil([&] { return studyRow(*browser, QStringLiteral("CTA run-off")); }, 20000))
+        << "the pushed study never appeared";
+    EXPECT_EQ(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr) << "the least recently used study is still there";
+    EXPECT_NE(studyRow(*browser, QStringLiteral("Head CTA")), nullptr);
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 2);
+    EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.2"));
+    EXPECT_LE(vv::pacs::LocalStore(s.storeFolder).sizeOnDisk(), s.storeLimitBytes);
 }

@@ -136,5 +136,17 @@ TEST_F(PacsSettingsTest, InvalidEntriesWrittenByHandAreSkippedNotGuessed) {
     EXPECT_EQ(r.nodes[0].node.aeTitle, "OK");
 }
 
+TEST_F(PacsSettingsTest, TheStoreOfTheSettingsHasTheirSizeLimit) {
+    PacsSettings s;
+    s.storeFolder = dir_.filePath(QStringLiteral("studies")).toStdString();
+    s.storeLimitBytes = 123456789;
+    const pacs::LocalStore store = openStore(s);
+    EXPECT_EQ(store.root(), s.storeFolder);
+    EXPECT_EQ(store.sizeLimit(), 123456789U);
+    EXPECT_TRUE(std::filesystem::is_directory(s.storeFolder));
+    s.storeLimitBytes = 0;
+    EXPECT_EQ(openStore(s).sizeLimit(), 0U);
+}
+
 }  // namespace
 }  // namespace vv::gui

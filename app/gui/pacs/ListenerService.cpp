@@ -81,6 +81,7 @@ void ListenerService::apply(const vv::gui::PacsSettings& settings) {
     }
     const std::string key = settings.listenerEnabled ? runKey(settings) : std::string();
     if (state_ == State::Running && key == runningKey_) {
+        store_->setSizeLimit(settings.storeLimitBytes);  // from its next commit on
         return;
     }
     stop();
@@ -105,7 +106,7 @@ void ListenerService::start(const PacsSettings& settings) {
     const QString where = QString::fromStdString(settings.listenerBindAddress);
     const QString port = QLocale::c().toString(settings.listenerPort);  // a port, not a number
     try {
-        store_ = std::make_unique<pacs::LocalStore>(settings.storeFolder);
+        store_ = std::make_unique<pacs::LocalStore>(openStore(settings));
     } catch (const Error&) {
         setState(State::Failed, tr("the study store %1 cannot be opened")
                                     .arg(QString::fromStdString(settings.storeFolder.string())));

@@ -57,7 +57,9 @@ class ListenerService : public QObject {
   public slots:
     /// Takes `settings`: restarts the listener when what it runs on changed
     /// (AE title, port, bind address, allowed peers, store folder, on / off),
-    /// else keeps it. Stopping waits for the listener's thread (about a second).
+    /// else keeps it. Its store has the settings' size limit (openStore()): a
+    /// new limit applies from the next commit on, without a restart.
+    /// Stopping waits for the listener's thread (about a second).
     void apply(const vv::gui::PacsSettings& settings);
 
   signals:

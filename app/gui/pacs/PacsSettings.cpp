@@ -145,6 +145,12 @@ void writePacsSettings(const PacsSettings& settings, QSettings& store) {
     }
 }
 
+pacs::LocalStore openStore(const PacsSettings& settings) {
+    pacs::LocalStore store(settings.storeFolder);
+    store.setSizeLimit(settings.storeLimitBytes);
+    return store;
+}
+
 const PacsNode* findNode(const PacsSettings& settings, const std::string& name) {
     for (const PacsNode& n : settings.nodes) {
         if (n.name == name) {

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Node.h"
 
 class QSettings;
@@ -49,6 +50,14 @@ struct PacsSettings {
 /// title, a node or a port is invalid, or when two nodes share a name;
 /// then nothing is written.
 void writePacsSettings(const PacsSettings& settings, QSettings& store);
+
+/// The local study store of `settings` (storeFolder, made when missing) with
+/// its size limit set from storeLimitBytes: every store the GUI writes into
+/// (the listener, a retrieve) comes from here. It opens the store's index
+/// (SQLite: quick, unless another process is writing it, then up to 10 s)
+/// and may create folders: on a worker where the GUI must not wait.
+/// Throws what pacs::LocalStore's constructor throws (IoError, FormatError).
+[[nodiscard]] pacs::LocalStore openStore(const PacsSettings& settings);
 
 /// The node called `name`, or nullptr.
 [[nodiscard]] const PacsNode* findNode(const PacsSettings& settings, const std::string& name);
