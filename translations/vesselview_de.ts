@@ -598,6 +598,14 @@
         <source>cannot listen on %1, port %2</source>
         <translation>kann auf %1, Port %2 nicht empfangen</translation>
     </message>
+    <message>
+        <source>TLS is on, but our certificate, its key or the trusted CA certificates cannot be read or do not match</source>
+        <translation>TLS ist eingeschaltet, aber unser Zertifikat, sein Schlüssel oder die vertrauenswürdigen CA-Zertifikate lassen sich nicht lesen oder passen nicht zusammen</translation>
+    </message>
+    <message>
+        <source>%1 (TLS)</source>
+        <translation>%1 (TLS)</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::LocalStudiesBrowser</name>

@@ -37,6 +37,7 @@
 #include "gui/pacs/StoreLeases.h"
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
+#include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/PacsError.h"
@@ -597,9 +598,64 @@ TEST_F(PacsGuiTest, OverTheStoreLimitAPushedStudyMakesTheLeastRecentlyUsedStudyG
     orthancPushesTheStudy();
     ASSERT_TRUE(waitUntil([&] { return studyRow(*browser, QStringLiteral("CTA run-off")); }, 20000))
         << "the pushed study never appeared";
-    EXPECT_EQ(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr) << "the least recently used study is still there";
+    EXPECT_EQ(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr)
+        << "the least recently used study is still there";
     EXPECT_NE(studyRow(*browser, QStringLiteral("Head CTA")), nullptr);
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 2);
     EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.2"));
     EXPECT_LE(vv::pacs::LocalStore(s.storeFolder).sizeOnDisk(), s.storeLimitBytes);
+}
+
+TEST_F(PacsGuiTest, ListenerWithTlsFromTheSettingsReceivesAPushOverTlsAndRefusesPlainPeers) {
+    const fs::path dir = testDir() / "tls";
+    const vv::test::TestCertificates certificates =
+        vv::test::makeCertificates(dir / "certificates");
+    const std::uint16_t port = vv::test::freePort();
+    const OrthancServer tlsOrthanc(kOurAe, port, &certificates);  // speaks TLS only
+    ASSERT_EQ(
+        vv::pacs::sendFiles(me(), tlsOrthanc.node(), writeCta(dir / "cta", "VV-GUI-TLS")).size(),
+        static_cast<std::size_t>(kSlices));
+    vv::pacs::StudyQuery query;
+    query.patientId = "VV-GUI-TLS";
+    const auto studies = vv::pacs::findStudies(me(), tlsOrthanc.node(), query);
+    ASSERT_EQ(studies.size(), 1U);
+
+    PacsSettings s = settings();
+    s.listenerPort = port;
+    s.nodes[0].node = tlsOrthanc.node();
+    s.listenerTls = {true, certificates.ca, certificates.serverCert, certificates.serverKey};
+    restartWith(s);
+    ASSERT_EQ(listener()->state(), ListenerService::State::Running);
+    EXPECT_EQ(indicatorText(), QStringLiteral("DICOM listener: port %1 (TLS)").arg(port));
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+
+    const auto moved = vv::pacs::moveTo(kOurAe, me(), tlsOrthanc.node(),
+                                        vv::pacs::RetrieveRequest{studies[0].studyInstanceUid, ""});
+    EXPECT_EQ(moved.instances, static_cast<std::size_t>(kSlices));
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 1; }, 20000))
+        << "the study pushed over TLS never appeared";
+    EXPECT_EQ(listener()->refusedAssociations(), 0U);
+
+    // The allowed node's AE title from its host, but in plain TCP: refused.
+    const vv::pacs::LocalAe orthancAe{"ORTHANC", vv::pacs::Timeouts{2, 5, 10}};
+    EXPECT_THROW(vv::pacs::echo(orthancAe, vv::pacs::Node{kOurAe, "127.0.0.1", port, {}}),
+                 vv::pacs::NetworkError);
+    EXPECT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
+}
+
+TEST_F(PacsGuiTest, ListenerTlsFilesThatCannotBeReadAreAClearStateNotPlainTcp) {
+    PacsSettings s = settings();
+    s.listenerTls = {true, testDir() / "missing-ca.pem", testDir() / "missing.pem",
+                     testDir() / "missing.key"};
+    restartWith(s);
+    EXPECT_EQ(listener()->state(), ListenerService::State::Failed);
+    EXPECT_EQ(indicatorText(),
+              QStringLiteral("DICOM listener failed: TLS is on, but our certificate, its key or "
+                             "the trusted CA certificates cannot be read or do not match"));
+    // Nothing listens in plain TCP instead.
+    const vv::pacs::LocalAe orthancAe{"ORTHANC", vv::pacs::Timeouts{2, 5, 10}};
+    EXPECT_THROW(vv::pacs::echo(orthancAe, vv::pacs::Node{kOurAe, "127.0.0.1", scpPort_, {}}),
+                 vv::pacs::ConnectionRefusedError);
 }
