@@ -694,8 +694,8 @@
         <translation>Studie löschen</translation>
     </message>
     <message>
-        <source>Delete the study %1 from the local study store? Its files are deleted from this computer; the PACS keeps its copy.</source>
-        <translation>Die Studie %1 aus dem lokalen Studienspeicher löschen? Ihre Dateien werden von diesem Computer gelöscht; das PACS behält seine Kopie.</translation>
+        <source>Delete the study %1 from the local study store? Its files are deleted from this computer.</source>
+        <translation>Die Studie %1 aus dem lokalen Studienspeicher löschen? Ihre Dateien werden von diesem Computer gelöscht.</translation>
     </message>
     <message>
         <source>Delete</source>

@@ -58,6 +58,7 @@ using vv::test::waitUntil;
 constexpr const char* kOurAe = "VVGUI";
 constexpr const char* kPatientId = "VV-GUI-1";
 constexpr int kSlices = 48;
+constexpr const char* kNeckUid = "1.2.826.0.1.1";  ///< the study "Neck CTA" of the tests
 
 vv::pacs::LocalAe me() {
     return vv::pacs::LocalAe{kOurAe, vv::pacs::Timeouts{2, 5, 10}};
@@ -236,6 +237,14 @@ class PacsGuiTest : public vv::test::GuiFixture {
         EXPECT_TRUE(dialog->isSending());
         EXPECT_TRUE(waitUntil([&] { return !dialog->isSending(); }, 55000)) << "the send hangs";
         return dialog;
+    }
+
+    /// The window restarted with `s` over a store holding the study "Neck
+    /// CTA" (kNeckUid), and its Local Studies browser open.
+    LocalStudiesBrowser* browserOverNeckStudy(const PacsSettings& s) {
+        commitStudy(s.storeFolder, kNeckUid, "Neck CTA");
+        restartWith(s);
+        return openBrowser();
     }
 
     /// Delete… on `row`, and the Delete button of the confirmation; returns
@@ -460,7 +469,7 @@ TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
 
 TEST_F(PacsGuiTest, DeleteAsksNamingTheStudyThenItsRowAndFilesAreGone) {
     const PacsSettings s = settings(false);
-    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    commitStudy(s.storeFolder, kNeckUid, "Neck CTA");
     commitStudy(s.storeFolder, "1.2.826.0.1.2", "Leg CTA");
     restartWith(s);
     LocalStudiesBrowser* browser = openBrowser();
@@ -474,13 +483,12 @@ TEST_F(PacsGuiTest, DeleteAsksNamingTheStudyThenItsRowAndFilesAreGone) {
     // A series row deletes its study too.
     const QString asked = deleteAndConfirm(*browser, neck->child(0));
     EXPECT_EQ(asked, QStringLiteral("Delete the study “Neck CTA” of %1 from the local study "
-                                    "store? Its files are deleted from this computer; the PACS "
-                                    "keeps its copy.")
+                                    "store? Its files are deleted from this computer.")
                          .arg(date));
     ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 1; }, 5000));
     EXPECT_EQ(studyRow(*browser, QStringLiteral("Neck CTA")), nullptr);
     EXPECT_NE(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr);
-    EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+    EXPECT_FALSE(fs::exists(s.storeFolder / kNeckUid));
     EXPECT_TRUE(fs::exists(s.storeFolder / "1.2.826.0.1.2"));
     EXPECT_FALSE(browser->messageLine()->isVisible());
     EXPECT_EQ(vv::pacs::LocalStore(s.storeFolder).studies().size(), 1U);
@@ -488,12 +496,10 @@ TEST_F(PacsGuiTest, DeleteAsksNamingTheStudyThenItsRowAndFilesAreGone) {
 
 TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
     const PacsSettings s = settings(false);
-    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
-    restartWith(s);
-    LocalStudiesBrowser* browser = openBrowser();
+    LocalStudiesBrowser* browser = browserOverNeckStudy(s);
     ASSERT_NE(browser, nullptr);
     {
-        const auto lease = vv::pacs::LocalStore(s.storeFolder).open("1.2.826.0.1.1");
+        const auto lease = vv::pacs::LocalStore(s.storeFolder).open(kNeckUid);
         deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
         ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 5000));
         const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
@@ -503,7 +509,7 @@ TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
                                  "data) and try again.")
                       .arg(date));
         EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
-        EXPECT_TRUE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+        EXPECT_TRUE(fs::exists(s.storeFolder / kNeckUid));
         browser->grab().save(QString::fromStdString((testDir() / "delete-refused.png").string()));
         const auto problems = vv::test::ClippingCheck::problems(browser);
         EXPECT_TRUE(problems.empty()) << problems.front();
@@ -512,7 +518,7 @@ TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
     deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
     ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 0; }, 5000));
     EXPECT_FALSE(browser->messageLine()->isVisible());
-    EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.1"));
+    EXPECT_FALSE(fs::exists(s.storeFolder / kNeckUid));
 }
 
 TEST_F(PacsGuiTest, AStudyOpenedFromLocalStudiesStaysUntilOtherDataReplacesIt) {
@@ -522,7 +528,7 @@ TEST_F(PacsGuiTest, AStudyOpenedFromLocalStudiesStaysUntilOtherDataReplacesIt) {
         (void)vv::pacs::getInto(store, me(), orthanc_->node(),
                                 vv::pacs::RetrieveRequest{studyUid_, ""});
     }
-    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
+    commitStudy(s.storeFolder, kNeckUid, "Neck CTA");
     restartWith(s);
     LocalStudiesBrowser* browser = openBrowser();
     ASSERT_NE(browser, nullptr);
@@ -535,7 +541,7 @@ TEST_F(PacsGuiTest, AStudyOpenedFromLocalStudiesStaysUntilOtherDataReplacesIt) {
     // A clean-up with a tiny limit removes only the other study; Delete refuses.
     vv::pacs::LocalStore store(s.storeFolder);
     store.setSizeLimit(1);
-    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{"1.2.826.0.1.1"});
+    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{kNeckUid});
     EXPECT_THROW(store.remove(studyUid_), vv::pacs::StudyOpenError);
     EXPECT_TRUE(fs::exists(s.storeFolder / studyUid_));
 
@@ -549,30 +555,25 @@ TEST_F(PacsGuiTest, AStudyOpenedFromLocalStudiesStaysUntilOtherDataReplacesIt) {
 
 TEST_F(PacsGuiTest, AStudyBeingOpenedIsHeldUntilTheWindowCloses) {
     const PacsSettings s = settings(false);
-    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
-    restartWith(s);
-    LocalStudiesBrowser* browser = openBrowser();
+    LocalStudiesBrowser* browser = browserOverNeckStudy(s);
     ASSERT_NE(browser, nullptr);
     browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0));
     browser->openButton()->click();
     auto* leases = window_->findChild<vv::gui::StoreLeases*>();
     ASSERT_NE(leases, nullptr);
     ASSERT_TRUE(waitUntil([&] { return !leases->heldStudies().empty(); }, 15000));
-    EXPECT_THROW(vv::pacs::LocalStore(s.storeFolder).remove("1.2.826.0.1.1"),
-                 vv::pacs::StudyOpenError);
+    EXPECT_THROW(vv::pacs::LocalStore(s.storeFolder).remove(kNeckUid), vv::pacs::StudyOpenError);
     window_->close();
     EXPECT_TRUE(leases->heldStudies().empty());
-    EXPECT_NO_THROW(vv::pacs::LocalStore(s.storeFolder).remove("1.2.826.0.1.1"));
+    EXPECT_NO_THROW(vv::pacs::LocalStore(s.storeFolder).remove(kNeckUid));
 }
 
 TEST_F(PacsGuiTest, OpeningAStudyRemovedMeanwhileSaysSoAndItsRowGoes) {
     const PacsSettings s = settings(false);
-    commitStudy(s.storeFolder, "1.2.826.0.1.1", "Neck CTA");
-    restartWith(s);
-    LocalStudiesBrowser* browser = openBrowser();
+    LocalStudiesBrowser* browser = browserOverNeckStudy(s);
     ASSERT_NE(browser, nullptr);
     ASSERT_EQ(browser->tree()->topLevelItemCount(), 1);
-    vv::pacs::LocalStore(s.storeFolder).remove("1.2.826.0.1.1");  // e.g. by another program
+    vv::pacs::LocalStore(s.storeFolder).remove(kNeckUid);  // e.g. by another program
     browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0));
     browser->openButton()->click();
     ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 15000));

@@ -228,7 +228,7 @@ void LocalStudiesBrowser::askToDeleteSelected() {
     auto* box =
         new QMessageBox(QMessageBox::Question, tr("Delete Study"),
                         tr("Delete the study %1 from the local study store? Its files are deleted "
-                           "from this computer; the PACS keeps its copy.")
+                           "from this computer.")
                             .arg(name),
                         QMessageBox::Cancel, this);
     box->setObjectName(QStringLiteral("deleteStudyBox"));
@@ -247,7 +247,7 @@ void LocalStudiesBrowser::askToDeleteSelected() {
 void LocalStudiesBrowser::startDelete(const QString& studyUid, const QString& name) {
     showMessage(QString());
     remover_.start(
-        [root = listener_.storeFolder(), uid = studyUid.toStdString()](std::stop_token) {
+        [root = listener_.storeFolder(), uid = studyUid.toStdString()](const std::stop_token&) {
             try {
                 pacs::LocalStore(root).remove(uid);
                 return Removal::Removed;

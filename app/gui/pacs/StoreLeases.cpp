@@ -38,7 +38,7 @@ void StoreLeases::open(const std::filesystem::path& root, const std::string& stu
     }
     taking_ = std::make_shared<Slot>();
     taker_.start(
-        [root, studyUid, slot = taking_](std::stop_token) {
+        [root, studyUid, slot = taking_](const std::stop_token&) {
             try {
                 pacs::LocalStore::OpenLease lease = pacs::LocalStore(root).open(studyUid);
                 const std::lock_guard lock(slot->mutex);
