@@ -613,6 +613,14 @@
         <source>cannot listen on %1, port %2</source>
         <translation>kann auf %1, Port %2 nicht empfangen</translation>
     </message>
+    <message>
+        <source>TLS is on, but our certificate, its key or the trusted CA certificates cannot be read or do not match</source>
+        <translation>TLS ist eingeschaltet, aber unser Zertifikat, sein Schlüssel oder die vertrauenswürdigen CA-Zertifikate lassen sich nicht lesen oder passen nicht zusammen</translation>
+    </message>
+    <message>
+        <source>%1 (TLS)</source>
+        <translation>%1 (TLS)</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::LocalStudiesBrowser</name>
@@ -675,6 +683,46 @@
     <message>
         <source>%L1 studies in %2</source>
         <translation>%L1 Studien in %2</translation>
+    </message>
+    <message>
+        <source>without date or description</source>
+        <translation>ohne Datum und Beschreibung</translation>
+    </message>
+    <message>
+        <source>of %1</source>
+        <translation>vom %1</translation>
+    </message>
+    <message>
+        <source>“%1”</source>
+        <translation>„%1“</translation>
+    </message>
+    <message>
+        <source>“%1” of %2</source>
+        <translation>„%1“ vom %2</translation>
+    </message>
+    <message>
+        <source>&amp;Delete…</source>
+        <translation>&amp;Löschen…</translation>
+    </message>
+    <message>
+        <source>Delete Study</source>
+        <translation>Studie löschen</translation>
+    </message>
+    <message>
+        <source>Delete the study %1 from the local study store? Its files are deleted from this computer.</source>
+        <translation>Die Studie %1 aus dem lokalen Studienspeicher löschen? Ihre Dateien werden von diesem Computer gelöscht.</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Löschen</translation>
+    </message>
+    <message>
+        <source>The study %1 is open — in this window or in another program — and was not deleted. Close it (open other data) and try again.</source>
+        <translation>Die Studie %1 ist geöffnet – in diesem Fenster oder in einem anderen Programm – und wurde nicht gelöscht. Schließen Sie sie (öffnen Sie andere Daten) und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The study %1 could not be deleted: the study store cannot be written.</source>
+        <translation>Die Studie %1 konnte nicht gelöscht werden: In den Studienspeicher lässt sich nicht schreiben.</translation>
     </message>
 </context>
 <context>
@@ -2206,6 +2254,17 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
         <source>%1 slice at %2, window %3%4</source>
         <extracomment>%1 view name (Axial), %2 slice position (S 12.5 mm), %3 window (W 600 HU L 300 HU)</extracomment>
         <translation>%1, Schicht bei %2, Fenster %3%4</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::StoreLeases</name>
+    <message>
+        <source>This study is no longer in the local study store.</source>
+        <translation>Diese Studie ist nicht mehr im lokalen Studienspeicher.</translation>
+    </message>
+    <message>
+        <source>The study cannot be opened now: the local study store is busy or cannot be read. Try again in a moment.</source>
+        <translation>Die Studie lässt sich jetzt nicht öffnen: Der lokale Studienspeicher ist belegt oder lässt sich nicht lesen. Versuchen Sie es gleich noch einmal.</translation>
     </message>
 </context>
 <context>

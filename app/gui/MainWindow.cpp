@@ -327,7 +327,6 @@ void MainWindow::buildMenus() {
 
     dicomMenu_ = new DicomMenu(this);  // network preferences, PACS browser
     menuBar()->addMenu(dicomMenu_);
-    connect(dicomMenu_, &DicomMenu::openFolder, this, &MainWindow::openDicom);
     listener_ = addLocalStudyActions(*this, *dicomMenu_);  // listener, Local Studies, Send
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));

@@ -12,6 +12,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QLabel>
+#include <QMessageBox>
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
@@ -19,6 +20,7 @@
 #include <QTreeWidget>
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 #include <set>
 #include <string>
@@ -32,8 +34,10 @@
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/PacsSettings.h"
 #include "gui/pacs/SendDialog.h"
+#include "gui/pacs/StoreLeases.h"
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
+#include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/PacsError.h"
@@ -54,6 +58,7 @@ using vv::test::waitUntil;
 constexpr const char* kOurAe = "VVGUI";
 constexpr const char* kPatientId = "VV-GUI-1";
 constexpr int kSlices = 48;
+constexpr const char* kNeckUid = "1.2.826.0.1.1";  ///< the study "Neck CTA" of the tests
 
 vv::pacs::LocalAe me() {
     return vv::pacs::LocalAe{kOurAe, vv::pacs::Timeouts{2, 5, 10}};
@@ -77,6 +82,34 @@ std::vector<fs::path> writeCta(const fs::path& folder, const std::string& patien
         files.push_back(entry.path());
     }
     return files;
+}
+
+/// A study "description" of 2 January 2024 with one instance of `bytes`
+/// bytes committed to the store at `root` (not DICOM: the browser reads the
+/// index).
+void commitStudy(const fs::path& root, const std::string& uid, const std::string& description,
+                 std::size_t bytes = 2000) {
+    const vv::pacs::LocalStore store(root);
+    vv::pacs::LocalStore::Transaction t = store.begin();
+    const fs::path staged = t.stagingPath();
+    std::ofstream(staged) << std::string(bytes, 'x');
+    vv::pacs::InstanceFields f;
+    f.studyInstanceUid = uid;
+    f.seriesInstanceUid = uid + ".1";
+    f.sopInstanceUid = uid + ".1.1";
+    f.patientName = "Test^Store";
+    f.studyDate = "20240102";
+    f.studyDescription = description;
+    f.modality = "CT";
+    f.seriesNumber = 1;
+    t.add(staged, f);
+    t.commit();
+}
+
+/// The study row of `browser` described `description`, or nullptr.
+QTreeWidgetItem* studyRow(const LocalStudiesBrowser& browser, const QString& description) {
+    const auto rows = browser.tree()->findItems(description, Qt::MatchExactly, 3);
+    return rows.isEmpty() ? nullptr : rows.front();
 }
 
 /// All texts of `item`'s columns, "|"-joined, for failure messages and checks.
@@ -204,6 +237,40 @@ class PacsGuiTest : public vv::test::GuiFixture {
         EXPECT_TRUE(dialog->isSending());
         EXPECT_TRUE(waitUntil([&] { return !dialog->isSending(); }, 55000)) << "the send hangs";
         return dialog;
+    }
+
+    /// The window restarted with `s` over a store holding the study "Neck
+    /// CTA" (kNeckUid), and its Local Studies browser open.
+    LocalStudiesBrowser* browserOverNeckStudy(const PacsSettings& s) {
+        commitStudy(s.storeFolder, kNeckUid, "Neck CTA");
+        restartWith(s);
+        return openBrowser();
+    }
+
+    /// Delete… on `row`, and the Delete button of the confirmation; returns
+    /// the confirmation's text.
+    static QString deleteAndConfirm(LocalStudiesBrowser& browser, QTreeWidgetItem* row) {
+        browser.tree()->setCurrentItem(row);
+        EXPECT_TRUE(browser.deleteButton()->isEnabled());
+        browser.deleteButton()->click();
+        auto* box = browser.findChild<QMessageBox*>(QStringLiteral("deleteStudyBox"));
+        if (box == nullptr) {
+            ADD_FAILURE() << "no confirmation";
+            return {};
+        }
+        EXPECT_TRUE(waitUntil([&] { return box->isVisible(); }, 5000));
+        const QString text = box->text();
+        QAbstractButton* remove = nullptr;
+        for (QAbstractButton* button : box->buttons()) {
+            remove = box->buttonRole(button) == QMessageBox::DestructiveRole ? button : remove;
+        }
+        EXPECT_NE(remove, nullptr);
+        if (remove != nullptr) {
+            EXPECT_EQ(remove->text(), QStringLiteral("Delete"));
+            remove->click();
+        }
+        EXPECT_TRUE(waitUntil([&] { return !browser.isDeleting(); }, 20000));
+        return text;
     }
 
     static inline std::unique_ptr<OrthancServer> orthanc_;
@@ -399,3 +466,197 @@ TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
 }
 
 }  // namespace
+
+TEST_F(PacsGuiTest, DeleteAsksNamingTheStudyThenItsRowAndFilesAreGone) {
+    const PacsSettings s = settings(false);
+    commitStudy(s.storeFolder, kNeckUid, "Neck CTA");
+    commitStudy(s.storeFolder, "1.2.826.0.1.2", "Leg CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 2);
+    QTreeWidgetItem* neck = studyRow(*browser, QStringLiteral("Neck CTA"));
+    ASSERT_NE(neck, nullptr);
+    EXPECT_FALSE(browser->deleteButton()->isEnabled()) << "nothing chosen yet";
+
+    const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
+    // A series row deletes its study too.
+    const QString asked = deleteAndConfirm(*browser, neck->child(0));
+    EXPECT_EQ(asked, QStringLiteral("Delete the study “Neck CTA” of %1 from the local study "
+                                    "store? Its files are deleted from this computer.")
+                         .arg(date));
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 1; }, 5000));
+    EXPECT_EQ(studyRow(*browser, QStringLiteral("Neck CTA")), nullptr);
+    EXPECT_NE(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr);
+    EXPECT_FALSE(fs::exists(s.storeFolder / kNeckUid));
+    EXPECT_TRUE(fs::exists(s.storeFolder / "1.2.826.0.1.2"));
+    EXPECT_FALSE(browser->messageLine()->isVisible());
+    EXPECT_EQ(vv::pacs::LocalStore(s.storeFolder).studies().size(), 1U);
+}
+
+TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
+    const PacsSettings s = settings(false);
+    LocalStudiesBrowser* browser = browserOverNeckStudy(s);
+    ASSERT_NE(browser, nullptr);
+    {
+        const auto lease = vv::pacs::LocalStore(s.storeFolder).open(kNeckUid);
+        deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
+        ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 5000));
+        const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
+        EXPECT_EQ(browser->messageLine()->text(),
+                  QStringLiteral("The study “Neck CTA” of %1 is open — in this window or in "
+                                 "another program — and was not deleted. Close it (open other "
+                                 "data) and try again.")
+                      .arg(date));
+        EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
+        EXPECT_TRUE(fs::exists(s.storeFolder / kNeckUid));
+        browser->grab().save(QString::fromStdString((testDir() / "delete-refused.png").string()));
+        const auto problems = vv::test::ClippingCheck::problems(browser);
+        EXPECT_TRUE(problems.empty()) << problems.front();
+    }
+    // Closed now: Delete removes it and the message goes.
+    deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 0; }, 5000));
+    EXPECT_FALSE(browser->messageLine()->isVisible());
+    EXPECT_FALSE(fs::exists(s.storeFolder / kNeckUid));
+}
+
+TEST_F(PacsGuiTest, AStudyOpenedFromLocalStudiesStaysUntilOtherDataReplacesIt) {
+    const PacsSettings s = settings(false);
+    {
+        vv::pacs::LocalStore store(s.storeFolder);
+        (void)vv::pacs::getInto(store, me(), orthanc_->node(),
+                                vv::pacs::RetrieveRequest{studyUid_, ""});
+    }
+    commitStudy(s.storeFolder, kNeckUid, "Neck CTA");
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    browser->tree()->setCurrentItem(studyRow(*browser, QStringLiteral("CTA run-off")));
+    ASSERT_TRUE(openDicomAndAccept([&] { browser->openButton()->click(); }));
+    auto* leases = window_->findChild<vv::gui::StoreLeases*>();
+    ASSERT_NE(leases, nullptr);
+    EXPECT_EQ(leases->heldStudies(), std::vector<std::string>{studyUid_});
+
+    // A clean-up with a tiny limit removes only the other study; Delete refuses.
+    vv::pacs::LocalStore store(s.storeFolder);
+    store.setSizeLimit(1);
+    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{kNeckUid});
+    EXPECT_THROW(store.remove(studyUid_), vv::pacs::StudyOpenError);
+    EXPECT_TRUE(fs::exists(s.storeFolder / studyUid_));
+
+    // Other data replaces the scene: the study is no longer held.
+    const QString other = QString::fromStdString((testDir() / "cta").string());
+    ASSERT_TRUE(openDicomAndAccept([&] { window_->openDicom(other); }));
+    EXPECT_TRUE(leases->heldStudies().empty());
+    EXPECT_EQ(store.cleanUp(), std::vector<std::string>{studyUid_});
+    EXPECT_FALSE(fs::exists(s.storeFolder / studyUid_));
+}
+
+TEST_F(PacsGuiTest, AStudyBeingOpenedIsHeldUntilTheWindowCloses) {
+    const PacsSettings s = settings(false);
+    LocalStudiesBrowser* browser = browserOverNeckStudy(s);
+    ASSERT_NE(browser, nullptr);
+    browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0));
+    browser->openButton()->click();
+    auto* leases = window_->findChild<vv::gui::StoreLeases*>();
+    ASSERT_NE(leases, nullptr);
+    ASSERT_TRUE(waitUntil([&] { return !leases->heldStudies().empty(); }, 15000));
+    EXPECT_THROW(vv::pacs::LocalStore(s.storeFolder).remove(kNeckUid), vv::pacs::StudyOpenError);
+    window_->close();
+    EXPECT_TRUE(leases->heldStudies().empty());
+    EXPECT_NO_THROW(vv::pacs::LocalStore(s.storeFolder).remove(kNeckUid));
+}
+
+TEST_F(PacsGuiTest, OpeningAStudyRemovedMeanwhileSaysSoAndItsRowGoes) {
+    const PacsSettings s = settings(false);
+    LocalStudiesBrowser* browser = browserOverNeckStudy(s);
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 1);
+    vv::pacs::LocalStore(s.storeFolder).remove(kNeckUid);  // e.g. by another program
+    browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0));
+    browser->openButton()->click();
+    ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 15000));
+    EXPECT_EQ(browser->messageLine()->text(),
+              QStringLiteral("This study is no longer in the local study store."));
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
+    EXPECT_TRUE(window_->lastError().isEmpty()) << "nothing was opened";
+}
+
+TEST_F(PacsGuiTest, OverTheStoreLimitAPushedStudyMakesTheLeastRecentlyUsedStudyGo) {
+    // Two studies of 2 MB, the "Leg CTA" stored first; the limit leaves room
+    // for both and less than the pushed CTA (about 0.5 MB) on top.
+    constexpr std::size_t kBig = 2000000;
+    PacsSettings s = settings();
+    s.storeLimitBytes = 2 * kBig + 200000;
+    commitStudy(s.storeFolder, "1.2.826.0.1.2", "Leg CTA", kBig);
+    commitStudy(s.storeFolder, "1.2.826.0.1.3", "Head CTA", kBig);
+    restartWith(s);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 2);
+
+    orthancPushesTheStudy();
+    ASSERT_TRUE(waitUntil([&] { return studyRow(*browser, QStringLiteral("CTA run-off")); }, 20000))
+        << "the pushed study never appeared";
+    EXPECT_EQ(studyRow(*browser, QStringLiteral("Leg CTA")), nullptr)
+        << "the least recently used study is still there";
+    EXPECT_NE(studyRow(*browser, QStringLiteral("Head CTA")), nullptr);
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 2);
+    EXPECT_FALSE(fs::exists(s.storeFolder / "1.2.826.0.1.2"));
+    EXPECT_LE(vv::pacs::LocalStore(s.storeFolder).sizeOnDisk(), s.storeLimitBytes);
+}
+
+TEST_F(PacsGuiTest, ListenerWithTlsFromTheSettingsReceivesAPushOverTlsAndRefusesPlainPeers) {
+    const fs::path dir = testDir() / "tls";
+    const vv::test::TestCertificates certificates =
+        vv::test::makeCertificates(dir / "certificates");
+    const std::uint16_t port = vv::test::freePort();
+    const OrthancServer tlsOrthanc(kOurAe, port, &certificates);  // speaks TLS only
+    ASSERT_EQ(
+        vv::pacs::sendFiles(me(), tlsOrthanc.node(), writeCta(dir / "cta", "VV-GUI-TLS")).size(),
+        static_cast<std::size_t>(kSlices));
+    vv::pacs::StudyQuery query;
+    query.patientId = "VV-GUI-TLS";
+    const auto studies = vv::pacs::findStudies(me(), tlsOrthanc.node(), query);
+    ASSERT_EQ(studies.size(), 1U);
+
+    PacsSettings s = settings();
+    s.listenerPort = port;
+    s.nodes[0].node = tlsOrthanc.node();
+    s.listenerTls = {true, certificates.ca, certificates.serverCert, certificates.serverKey};
+    restartWith(s);
+    ASSERT_EQ(listener()->state(), ListenerService::State::Running);
+    EXPECT_EQ(indicatorText(), QStringLiteral("DICOM listener: port %1 (TLS)").arg(port));
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+
+    const auto moved = vv::pacs::moveTo(kOurAe, me(), tlsOrthanc.node(),
+                                        vv::pacs::RetrieveRequest{studies[0].studyInstanceUid, ""});
+    EXPECT_EQ(moved.instances, static_cast<std::size_t>(kSlices));
+    ASSERT_TRUE(waitUntil([&] { return browser->tree()->topLevelItemCount() == 1; }, 20000))
+        << "the study pushed over TLS never appeared";
+    EXPECT_EQ(listener()->refusedAssociations(), 0U);
+
+    // The allowed node's AE title from its host, but in plain TCP: refused.
+    const vv::pacs::LocalAe orthancAe{"ORTHANC", vv::pacs::Timeouts{2, 5, 10}};
+    EXPECT_THROW(vv::pacs::echo(orthancAe, vv::pacs::Node{kOurAe, "127.0.0.1", port, {}}),
+                 vv::pacs::NetworkError);
+    EXPECT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
+}
+
+TEST_F(PacsGuiTest, ListenerTlsFilesThatCannotBeReadAreAClearStateNotPlainTcp) {
+    PacsSettings s = settings();
+    s.listenerTls = {true, testDir() / "missing-ca.pem", testDir() / "missing.pem",
+                     testDir() / "missing.key"};
+    restartWith(s);
+    EXPECT_EQ(listener()->state(), ListenerService::State::Failed);
+    EXPECT_EQ(indicatorText(),
+              QStringLiteral("DICOM listener failed: TLS is on, but our certificate, its key or "
+                             "the trusted CA certificates cannot be read or do not match"));
+    // Nothing listens in plain TCP instead.
+    const vv::pacs::LocalAe orthancAe{"ORTHANC", vv::pacs::Timeouts{2, 5, 10}};
+    EXPECT_THROW(vv::pacs::echo(orthancAe, vv::pacs::Node{kOurAe, "127.0.0.1", scpPort_, {}}),
+                 vv::pacs::ConnectionRefusedError);
+}

@@ -28,6 +28,7 @@ class PacsSettingsTest : public ::testing::Test {
 
 TEST_F(PacsSettingsTest, AnEmptyStoreGivesTheDefaults) {
     const PacsSettings s = readPacsSettings(store_);
+    EXPECT_FALSE(s.listenerTls.enabled);
     EXPECT_EQ(s.me.aeTitle, "VESSELVIEW");
     EXPECT_FALSE(s.listenerEnabled);
     EXPECT_EQ(s.listenerPort, 11112);
@@ -51,6 +52,7 @@ TEST_F(PacsSettingsTest, WhatIsWrittenIsReadBack) {
     tls.node.tls.enabled = true;
     tls.node.tls.trustedCertificates = "/etc/ca.pem";
     s.nodes.push_back(tls);
+    s.listenerTls = {true, "/etc/vv/ca.pem", "/etc/vv/listener.pem", "/etc/vv/listener.key"};
     writePacsSettings(s, store_);
 
     const PacsSettings r = readPacsSettings(store_);
@@ -60,6 +62,10 @@ TEST_F(PacsSettingsTest, WhatIsWrittenIsReadBack) {
     EXPECT_EQ(r.listenerBindAddress, "0.0.0.0");
     EXPECT_EQ(r.storeFolder, std::filesystem::path("/data/studies"));
     EXPECT_EQ(r.storeLimitBytes, 5ULL << 30);
+    EXPECT_TRUE(r.listenerTls.enabled);
+    EXPECT_EQ(r.listenerTls.trustedCertificates, std::filesystem::path("/etc/vv/ca.pem"));
+    EXPECT_EQ(r.listenerTls.certificate, std::filesystem::path("/etc/vv/listener.pem"));
+    EXPECT_EQ(r.listenerTls.privateKey, std::filesystem::path("/etc/vv/listener.key"));
     ASSERT_EQ(r.nodes.size(), 2U);
     EXPECT_EQ(r.nodes[0].name, "Radiology PACS");
     EXPECT_EQ(r.nodes[0].node.aeTitle, "ORTHANC");
@@ -107,10 +113,19 @@ TEST_F(PacsSettingsTest, InvalidSettingsAreRefusedNamingTheFieldAndNothingIsWrit
     } catch (const InvalidArgumentError& e) {
         EXPECT_NE(std::string(e.what()).find("No host"), std::string::npos) << e.what();
     }
+    bad = good;
+    bad.listenerTls = {true, "/etc/vv/ca.pem", "/etc/vv/listener.pem", {}};  // no key
+    try {
+        writePacsSettings(bad, store_);
+        ADD_FAILURE() << "listener TLS without its key was written";
+    } catch (const InvalidArgumentError& e) {
+        EXPECT_NE(std::string(e.what()).find("listener TLS"), std::string::npos) << e.what();
+    }
     const PacsSettings r = readPacsSettings(store_);
     EXPECT_EQ(r.me.aeTitle, "VESSELVIEW");
     ASSERT_EQ(r.nodes.size(), 1U);
     EXPECT_EQ(r.nodes[0].name, "PACS");
+    EXPECT_FALSE(r.listenerTls.enabled);
 }
 
 TEST_F(PacsSettingsTest, InvalidEntriesWrittenByHandAreSkippedNotGuessed) {
@@ -134,6 +149,18 @@ TEST_F(PacsSettingsTest, InvalidEntriesWrittenByHandAreSkippedNotGuessed) {
     EXPECT_EQ(r.listenerPort, 11112);
     ASSERT_EQ(r.nodes.size(), 1U);
     EXPECT_EQ(r.nodes[0].node.aeTitle, "OK");
+}
+
+TEST_F(PacsSettingsTest, TheStoreOfTheSettingsHasTheirSizeLimit) {
+    PacsSettings s;
+    s.storeFolder = dir_.filePath(QStringLiteral("studies")).toStdString();
+    s.storeLimitBytes = 123456789;
+    const pacs::LocalStore store = openStore(s);
+    EXPECT_EQ(store.root(), s.storeFolder);
+    EXPECT_EQ(store.sizeLimit(), 123456789U);
+    EXPECT_TRUE(std::filesystem::is_directory(s.storeFolder));
+    s.storeLimitBytes = 0;
+    EXPECT_EQ(openStore(s).sizeLimit(), 0U);
 }
 
 }  // namespace

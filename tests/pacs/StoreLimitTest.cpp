@@ -4,7 +4,8 @@
 // another process holds it open (vv_store_helper); the study just committed
 // stays even when it alone is over the limit; a clean-up killed midway
 // leaves no indexed study without files; and afterwards the index and the
-// disk agree.
+// disk agree. Removing one study (Local Studies' Delete): it goes from the
+// index and the disk, unless it is open (here or in another process).
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -297,4 +298,47 @@ TEST(StoreLimitTest, ACleanUpKilledMidwayLeavesNoIndexedStudyWithoutFiles) {
         EXPECT_TRUE(store.cleanUp().empty());
         expectIndexAndDiskAgree(store);
     }
+}
+
+TEST(StoreLimitTest, RemoveTakesOneStudyOutOfTheIndexAndOffTheDisk) {
+    LocalStore store(freshFolder("remove"));
+    commitStudy(store, 1);
+    commitStudy(store, 2);
+    store.remove(uid(1));
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(2)}));
+    EXPECT_FALSE(fs::exists(store.root() / uid(1)));
+    EXPECT_EQ(store.sizeOnDisk(), kStudyBytes);
+    expectIndexAndDiskAgree(store);
+    EXPECT_THROW(store.remove(uid(1)), vv::InvalidArgumentError) << "already gone";
+    EXPECT_THROW(store.remove("../" + uid(2)), vv::InvalidArgumentError);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(2)}));
+}
+
+TEST(StoreLimitTest, RemovingAnOpenStudyIsRefusedAndRemovesNothing) {
+    LocalStore store(freshFolder("remove-open"));
+    commitStudy(store, 1);
+    {
+        const LocalStore::OpenLease lease = store.open(uid(1));
+        EXPECT_THROW(store.remove(uid(1)), StudyOpenError);
+        EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1)}));
+        expectIndexAndDiskAgree(store);
+    }
+    store.remove(uid(1));  // closed: it goes
+    EXPECT_TRUE(indexed(store).empty());
+    expectIndexAndDiskAgree(store);
+}
+
+TEST(StoreLimitTest, RemovingAStudyOpenInAnotherProcessIsRefused) {
+    const fs::path root = freshFolder("remove-other-process");
+    LocalStore store(root);
+    commitStudy(store, 1);
+    Helper other("lease", root, uid(1));
+    ASSERT_EQ(other.said(), "leased\n");
+    EXPECT_THROW(store.remove(uid(1)), StudyOpenError);
+    EXPECT_EQ(indexed(store), (std::set<std::string>{uid(1)}));
+    expectIndexAndDiskAgree(store);
+    other.stop();  // the other process closes the study
+    store.remove(uid(1));
+    EXPECT_TRUE(indexed(store).empty());
+    expectIndexAndDiskAgree(store);
 }

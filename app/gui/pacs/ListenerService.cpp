@@ -12,6 +12,7 @@
 
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
+#include "vv/pacs/PacsError.h"
 #include "vv/pacs/StorageScp.h"
 
 namespace vv::gui {
@@ -44,6 +45,11 @@ bool portInUse(const std::string& address, std::uint16_t port) {
 std::string runKey(const PacsSettings& s) {
     std::string key = s.me.aeTitle + '\n' + s.listenerBindAddress + '\n' +
                       std::to_string(s.listenerPort) + '\n' + s.storeFolder.string();
+    const pacs::TlsSettings& tls = s.listenerTls;
+    if (tls.enabled) {
+        key += "\ntls\n" + tls.certificate.string() + '\n' + tls.privateKey.string() + '\n' +
+               tls.trustedCertificates.string();
+    }
     for (const PacsNode& node : s.nodes) {
         if (node.allowPush) {
             key += '\n' + node.node.aeTitle + '@' + node.node.host;
@@ -81,6 +87,7 @@ void ListenerService::apply(const vv::gui::PacsSettings& settings) {
     }
     const std::string key = settings.listenerEnabled ? runKey(settings) : std::string();
     if (state_ == State::Running && key == runningKey_) {
+        store_->setSizeLimit(settings.storeLimitBytes);  // from its next commit on
         return;
     }
     stop();
@@ -105,7 +112,7 @@ void ListenerService::start(const PacsSettings& settings) {
     const QString where = QString::fromStdString(settings.listenerBindAddress);
     const QString port = QLocale::c().toString(settings.listenerPort);  // a port, not a number
     try {
-        store_ = std::make_unique<pacs::LocalStore>(settings.storeFolder);
+        store_ = std::make_unique<pacs::LocalStore>(openStore(settings));
     } catch (const Error&) {
         setState(State::Failed, tr("the study store %1 cannot be opened")
                                     .arg(QString::fromStdString(settings.storeFolder.string())));
@@ -116,6 +123,7 @@ void ListenerService::start(const PacsSettings& settings) {
     config.port = settings.listenerPort;
     config.bindAddress = settings.listenerBindAddress;
     config.timeouts = settings.me.timeouts;
+    config.tls = settings.listenerTls;
     for (const PacsNode& node : settings.nodes) {
         if (node.allowPush) {
             config.allowedPeers.push_back(node.node);
@@ -123,6 +131,11 @@ void ListenerService::start(const PacsSettings& settings) {
     }
     try {
         scp_ = std::make_unique<pacs::StorageScp>(*store_, std::move(config));
+    } catch (const pacs::TlsError&) {
+        store_.reset();
+        setState(State::Failed, tr("TLS is on, but our certificate, its key or the trusted CA "
+                                   "certificates cannot be read or do not match"));
+        return;
     } catch (const Error&) {
         store_.reset();
         setState(State::Failed, portInUse(settings.listenerBindAddress, settings.listenerPort)
@@ -132,7 +145,7 @@ void ListenerService::start(const PacsSettings& settings) {
     }
     runningKey_ = runKey(settings);
     poll_.start();
-    setState(State::Running, port);
+    setState(State::Running, settings.listenerTls.enabled ? tr("%1 (TLS)").arg(port) : port);
 }
 
 void ListenerService::setState(State state, QString detail) {

@@ -24,10 +24,11 @@ class StorageScp;
 namespace vv::gui {
 
 /// Owned by the main window. apply() (re)starts the listener from the
-/// settings: our AE title, the bind address and port, and as allowed peers
-/// the nodes with allowPush; it stops it when the settings disable it. A
-/// port that cannot be opened is a state (Failed, with a translated message),
-/// never an exception or a crash. While running, a timer on the GUI thread
+/// settings: our AE title, the bind address and port, TLS (listenerTls), and
+/// as allowed peers the nodes with allowPush; it stops it when the settings
+/// disable it. A port that cannot be opened or TLS files that cannot be read
+/// are a state (Failed, with a translated message), never an exception, a
+/// crash or a fallback to plain TCP. While running, a timer on the GUI thread
 /// polls the listener's counters (a mutex-guarded read, never a network wait)
 /// and emits studiesChanged() when instances were committed.
 class ListenerService : public QObject {
@@ -45,7 +46,8 @@ class ListenerService : public QObject {
 
     [[nodiscard]] State state() const noexcept { return state_; }
     /// What the status bar shows: "DICOM listener: port 11112", "DICOM
-    /// listener off", "DICOM listener failed: port 11112 is in use" (translated).
+    /// listener: port 2762 (TLS)", "DICOM listener off", "DICOM listener
+    /// failed: port 11112 is in use" (translated).
     [[nodiscard]] QString stateText() const;
     /// The store folder of the settings last applied (also while stopped).
     [[nodiscard]] const std::filesystem::path& storeFolder() const noexcept { return storeFolder_; }
@@ -56,8 +58,10 @@ class ListenerService : public QObject {
 
   public slots:
     /// Takes `settings`: restarts the listener when what it runs on changed
-    /// (AE title, port, bind address, allowed peers, store folder, on / off),
-    /// else keeps it. Stopping waits for the listener's thread (about a second).
+    /// (AE title, port, bind address, TLS, allowed peers, store folder, on / off),
+    /// else keeps it. Its store has the settings' size limit (openStore()): a
+    /// new limit applies from the next commit on, without a restart.
+    /// Stopping waits for the listener's thread (about a second).
     void apply(const vv::gui::PacsSettings& settings);
 
   signals:

@@ -6,6 +6,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QMessageBox>
 #include <QPushButton>
 #include <QStringList>
 #include <QTreeWidget>
@@ -45,6 +46,24 @@ QString personName(const std::string& dicom) {
 QString studyDate(const std::string& dicom) {
     const QDate date = QDate::fromString(text(dicom), QStringLiteral("yyyyMMdd"));
     return date.isValid() ? QLocale().toString(date, QLocale::ShortFormat) : text(dicom);
+}
+
+/// The study row of `item` (itself, or the study of a series row).
+const QTreeWidgetItem* studyOf(const QTreeWidgetItem* item) {
+    return item->parent() != nullptr ? item->parent() : item;
+}
+
+/// How the confirmation and the messages name a study after "the study":
+/// by its description and date ("“CTA run-off” of 3/12/24").
+QString studyName(const QTreeWidgetItem* study) {
+    const QString date = study->text(kDate);
+    const QString description = study->text(kDescription);
+    if (description.isEmpty()) {
+        return date.isEmpty() ? LocalStudiesBrowser::tr("without date or description")
+                              : LocalStudiesBrowser::tr("of %1").arg(date);
+    }
+    return date.isEmpty() ? LocalStudiesBrowser::tr("“%1”").arg(description)
+                          : LocalStudiesBrowser::tr("“%1” of %2").arg(description, date);
 }
 
 QTreeWidgetItem* studyItem(const pacs::StoredStudy& study) {
@@ -109,17 +128,25 @@ LocalStudiesBrowser::LocalStudiesBrowser(ListenerService& listener, QWidget* par
     open_ = buttons->addButton(tr("&Open"), QDialogButtonBox::ActionRole);
     open_->setObjectName(QStringLiteral("openLocalStudy"));
     open_->setEnabled(false);
+    delete_ = buttons->addButton(tr("&Delete…"), QDialogButtonBox::ActionRole);
+    delete_->setObjectName(QStringLiteral("deleteLocalStudy"));
+    delete_->setEnabled(false);
+    message_ = new QLabel(this);
+    message_->setObjectName(QStringLiteral("localStudiesMessage"));
+    message_->setWordWrap(true);
+    message_->hide();
     QPushButton* reload = buttons->addButton(tr("&Refresh"), QDialogButtonBox::ActionRole);
     connect(reload, &QPushButton::clicked, this, &LocalStudiesBrowser::refresh);
     connect(open_, &QPushButton::clicked, this, &LocalStudiesBrowser::openSelected);
+    connect(delete_, &QPushButton::clicked, this, &LocalStudiesBrowser::askToDeleteSelected);
     connect(buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
-    connect(tree_, &QTreeWidget::itemSelectionChanged, this,
-            [this] { open_->setEnabled(!tree_->selectedItems().isEmpty()); });
+    connect(tree_, &QTreeWidget::itemSelectionChanged, this, &LocalStudiesBrowser::updateButtons);
     connect(tree_, &QTreeWidget::itemDoubleClicked, this, &LocalStudiesBrowser::openSelected);
 
     auto* layout = new QVBoxLayout(this);
     layout->addWidget(status_);
     layout->addWidget(tree_, 1);
+    layout->addWidget(message_);
     layout->addWidget(buttons);
     resize(900, 480);
 
@@ -169,12 +196,90 @@ void LocalStudiesBrowser::updateStatusLine() {
     status_->setText(line + QStringLiteral(" — ") + listener_.stateText());
 }
 
+void LocalStudiesBrowser::updateButtons() {
+    const bool chosen = !tree_->selectedItems().isEmpty();
+    open_->setEnabled(chosen);
+    delete_->setEnabled(chosen && !remover_.isRunning());
+}
+
+void LocalStudiesBrowser::showMessage(const QString& message) {
+    message_->setText(message);
+    message_->setVisible(!message.isEmpty());
+}
+
 void LocalStudiesBrowser::openSelected() {
     const QList<QTreeWidgetItem*> items = tree_->selectedItems();
     if (items.isEmpty()) {
         return;
     }
-    emit openRequested(items.front()->data(kPatient, kFolderRole).toString());
+    showMessage(QString());
+    emit openRequested(items.front()->data(kPatient, kFolderRole).toString(),
+                       studyOf(items.front())->data(kPatient, kUidRole).toString());
+}
+
+void LocalStudiesBrowser::askToDeleteSelected() {
+    const QList<QTreeWidgetItem*> items = tree_->selectedItems();
+    if (items.isEmpty() || remover_.isRunning()) {
+        return;
+    }
+    const QTreeWidgetItem* study = studyOf(items.front());
+    const QString uid = study->data(kPatient, kUidRole).toString();
+    const QString name = studyName(study);
+    auto* box =
+        new QMessageBox(QMessageBox::Question, tr("Delete Study"),
+                        tr("Delete the study %1 from the local study store? Its files are deleted "
+                           "from this computer.")
+                            .arg(name),
+                        QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("deleteStudyBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton* remove = box->addButton(tr("Delete"), QMessageBox::DestructiveRole);
+    box->setDefaultButton(QMessageBox::Cancel);
+    connect(box, &QMessageBox::buttonClicked, this,
+            [this, remove, uid, name](QAbstractButton* clicked) {
+                if (clicked == remove) {
+                    startDelete(uid, name);
+                }
+            });
+    box->open();
+}
+
+void LocalStudiesBrowser::startDelete(const QString& studyUid, const QString& name) {
+    showMessage(QString());
+    remover_.start(
+        [root = listener_.storeFolder(), uid = studyUid.toStdString()](const std::stop_token&) {
+            try {
+                pacs::LocalStore(root).remove(uid);
+                return Removal::Removed;
+            } catch (const pacs::StudyOpenError&) {
+                return Removal::Open;
+            } catch (const InvalidArgumentError&) {
+                return Removal::Gone;
+            } catch (const Error&) {
+                return Removal::Failed;
+            }
+        },
+        [this, name](Removal removal) {
+            refresh();
+            updateButtons();
+            switch (removal) {
+                case Removal::Open:
+                    showMessage(tr("The study %1 is open — in this window or in another program "
+                                   "— and was not deleted. Close it (open other data) and try "
+                                   "again.")
+                                    .arg(name));
+                    break;
+                case Removal::Failed:
+                    showMessage(tr("The study %1 could not be deleted: the study store cannot be "
+                                   "written.")
+                                    .arg(name));
+                    break;
+                case Removal::Removed:
+                case Removal::Gone:
+                    break;
+            }
+        });
+    updateButtons();
 }
 
 }  // namespace vv::gui

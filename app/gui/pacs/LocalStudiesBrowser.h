@@ -4,6 +4,8 @@
 #include <QDialog>
 #include <QString>
 
+#include "gui/WorkerRun.h"
+
 class QLabel;
 class QPushButton;
 class QTreeWidget;
@@ -22,7 +24,10 @@ class ListenerService;
 /// (ListenerService::studiesChanged()) and when new settings name another
 /// store folder (ListenerService::storeChanged()). Open (or a double click) asks to open
 /// the chosen series, or the chosen study's folder, in the DICOM open path
-/// (openRequested()). Not modal.
+/// (openRequested()). Delete… asks (naming the study by date and description)
+/// and removes the chosen study from the store on a worker, never on the GUI
+/// thread (LocalStore::remove); a study that is open — in this window or
+/// another program — stays, and the message line says why. Not modal.
 class LocalStudiesBrowser : public QDialog {
     Q_OBJECT
 
@@ -38,22 +43,43 @@ class LocalStudiesBrowser : public QDialog {
     /// Top-level items: studies (data of column 0 = the folder); children: series.
     [[nodiscard]] QTreeWidget* tree() const noexcept { return tree_; }
     [[nodiscard]] QPushButton* openButton() const noexcept { return open_; }
+    /// Delete…: asks in a window-modal box (object name "deleteStudyBox",
+    /// its "Delete" button removes), then removes the chosen study.
+    [[nodiscard]] QPushButton* deleteButton() const noexcept { return delete_; }
+    [[nodiscard]] bool isDeleting() const { return remover_.isRunning(); }
     /// The line about the store and the listener.
     [[nodiscard]] QLabel* statusLine() const noexcept { return status_; }
+    /// The line under the list saying why the last action failed; hidden when
+    /// nothing failed.
+    [[nodiscard]] QLabel* messageLine() const noexcept { return message_; }
+
+  public slots:
+    /// Shows `message` in the message line (empty: hides it).
+    void showMessage(const QString& message);
 
   signals:
-    /// Open the DICOM data under `folder` (a series' or a study's folder).
-    void openRequested(const QString& folder);
+    /// Open the DICOM data under `folder` (a series' or a study's folder) of
+    /// the study `studyUid`.
+    void openRequested(const QString& folder, const QString& studyUid);
 
   private:
+    /// What removing a study came to.
+    enum class Removal { Removed, Open, Gone, Failed };
+
     void openSelected();
+    void askToDeleteSelected();
+    void startDelete(const QString& studyUid, const QString& name);
     void updateStatusLine();
+    void updateButtons();
 
     ListenerService& listener_;
     QLabel* status_ = nullptr;
     QTreeWidget* tree_ = nullptr;
     QPushButton* open_ = nullptr;
-    QString readProblem_;  ///< why the store could not be read; empty when fine
+    QPushButton* delete_ = nullptr;
+    QLabel* message_ = nullptr;
+    QString readProblem_;               ///< why the store could not be read; empty when fine
+    LatestRun<Removal> remover_{this};  ///< last: stopped before the rest goes
 };
 
 }  // namespace vv::gui

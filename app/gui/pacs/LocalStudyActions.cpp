@@ -8,6 +8,7 @@
 #include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
+#include <filesystem>
 #include <memory>
 
 #include "gui/MainWindow.h"
@@ -15,17 +16,26 @@
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/SendDialog.h"
+#include "gui/pacs/StoreLeases.h"
 
 namespace vv::gui {
 namespace {
 
-/// The window's one Local Studies browser, made on first use.
-void showBrowser(MainWindow& window, ListenerService& listener,
+/// The window's one Local Studies browser, made on first use: what it
+/// opens is held open by `leases` first.
+void showBrowser(MainWindow& window, ListenerService& listener, StoreLeases& leases,
                  QPointer<LocalStudiesBrowser>& browser) {
     if (browser.isNull()) {
         browser = new LocalStudiesBrowser(listener, &window);
-        QObject::connect(browser.data(), &LocalStudiesBrowser::openRequested, &window,
-                         [&window](const QString& folder) { window.openDicom(folder); });
+        LocalStudiesBrowser* shown = browser.data();
+        QObject::connect(shown, &LocalStudiesBrowser::openRequested, &leases,
+                         [&listener, &leases](const QString& folder, const QString& uid) {
+                             leases.open(listener.storeFolder(), uid.toStdString(), folder);
+                         });
+        QObject::connect(&leases, &StoreLeases::refused, shown, [shown](const QString& message) {
+            shown->refresh();
+            shown->showMessage(message);
+        });
     }
     browser->show();
     browser->raise();
@@ -56,10 +66,21 @@ ListenerService* addLocalStudyActions(MainWindow& window, DicomMenu& menu) {
         listener, &ListenerService::stateChanged, indicator,
         [indicator](ListenerService::State, const QString& text) { indicator->setText(text); });
 
+    auto* leases = new StoreLeases(&window);
+    leases->setObjectName(QStringLiteral("storeLeases"));
+    window.installEventFilter(leases);  // the window closes: the leases end
+    QObject::connect(leases, &StoreLeases::ready, &window,
+                     [&window](const QString& folder) { window.openDicom(folder); });
+    QObject::connect(window.document(), &DocumentController::sceneChanged, leases,
+                     [leases](const std::shared_ptr<const scene::Scene>&, const QString&,
+                              const QStringList& files) { leases->documentShown(files); });
+
     auto browser = std::make_shared<QPointer<LocalStudiesBrowser>>();
-    QAction* local = menu.addAction(
-        QCoreApplication::translate("vv::gui::LocalStudyActions", "&Local Studies…"), &window,
-        [&window, listener, browser] { showBrowser(window, *listener, *browser); });
+    QAction* local =
+        menu.addAction(QCoreApplication::translate("vv::gui::LocalStudyActions", "&Local Studies…"),
+                       &window, [&window, listener, leases, browser] {
+                           showBrowser(window, *listener, *leases, *browser);
+                       });
     local->setObjectName(QStringLiteral("localStudies"));
 
     QAction* send =
@@ -79,6 +100,23 @@ ListenerService* addLocalStudyActions(MainWindow& window, DicomMenu& menu) {
 
     // The PACS browser's C-MOVE needs our listener; saved preferences restart it.
     const QPointer<ListenerService> guarded(listener);
+    QObject::connect(leases, &StoreLeases::refused, &window, [&window](const QString& message) {
+        window.statusBar()->showMessage(message, 15000);
+    });
+    // The PACS browser's Open: a folder of the store is held open like one
+    // opened from Local Studies; anything else opens as it is.
+    QObject::connect(
+        &menu, &DicomMenu::openFolder, leases, [&window, listener, leases](const QString& folder) {
+            const std::filesystem::path root = listener->storeFolder();
+            const std::filesystem::path relative =
+                std::filesystem::path(folder.toStdString()).lexically_relative(root);
+            const std::string study = relative.empty() ? std::string() : relative.begin()->string();
+            if (study.empty() || study == "." || study == "..") {
+                window.openDicom(folder);
+            } else {
+                leases->open(root, study, folder);
+            }
+        });
     menu.setListenerRunning(
         [guarded] { return guarded && guarded->state() == ListenerService::State::Running; });
     QObject::connect(&menu, &DicomMenu::preferencesChanged, listener,

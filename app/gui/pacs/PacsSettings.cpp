@@ -37,6 +37,26 @@ bool validAeTitle(const std::string& aeTitle) {
     }
 }
 
+/// TLS settings under `prefix` ("…/tls/"): enabled, trusted, certificate, privateKey.
+pacs::TlsSettings readTls(const QSettings& store, const QString& prefix) {
+    pacs::TlsSettings tls;
+    tls.enabled = store.value(prefix + QStringLiteral("enabled"), false).toBool();
+    tls.trustedCertificates = text(store, prefix + QStringLiteral("trusted"), {});
+    tls.certificate = text(store, prefix + QStringLiteral("certificate"), {});
+    tls.privateKey = text(store, prefix + QStringLiteral("privateKey"), {});
+    return tls;
+}
+
+void writeTls(const pacs::TlsSettings& tls, const QString& prefix, QSettings& store) {
+    store.setValue(prefix + QStringLiteral("enabled"), tls.enabled);
+    store.setValue(prefix + QStringLiteral("trusted"),
+                   QString::fromStdString(tls.trustedCertificates.string()));
+    store.setValue(prefix + QStringLiteral("certificate"),
+                   QString::fromStdString(tls.certificate.string()));
+    store.setValue(prefix + QStringLiteral("privateKey"),
+                   QString::fromStdString(tls.privateKey.string()));
+}
+
 void checkBeforeWriting(const PacsSettings& settings) {
     try {
         pacs::validateAeTitle(settings.me.aeTitle);
@@ -45,6 +65,13 @@ void checkBeforeWriting(const PacsSettings& settings) {
     }
     if (settings.listenerPort == 0) {
         throw InvalidArgumentError("listener port: must be 1 to 65535");
+    }
+    const pacs::TlsSettings& tls = settings.listenerTls;
+    if (tls.enabled &&
+        (tls.certificate.empty() || tls.privateKey.empty() || tls.trustedCertificates.empty())) {
+        throw InvalidArgumentError(
+            "listener TLS: needs our certificate, its private key and the trusted CA "
+            "certificate(s)");
     }
     std::set<std::string> names;
     for (const PacsNode& node : settings.nodes) {
@@ -79,6 +106,7 @@ PacsSettings readPacsSettings(const QSettings& store) {
     s.listenerPort = port(store, QStringLiteral("pacs/listener/port"), s.listenerPort);
     s.listenerBindAddress =
         text(store, QStringLiteral("pacs/listener/bind"), s.listenerBindAddress);
+    s.listenerTls = readTls(store, QStringLiteral("pacs/listener/tls/"));
     const std::string folder = text(store, QStringLiteral("pacs/store/folder"), {});
     s.storeFolder = folder.empty() ? defaultStoreFolder() : std::filesystem::path(folder);
     bool ok = false;
@@ -97,10 +125,7 @@ PacsSettings readPacsSettings(const QSettings& store) {
         const int p = store.value(key + QStringLiteral("port")).toInt(&portOk);
         n.node.port = portOk && validPort(p) ? static_cast<std::uint16_t>(p) : 0;
         n.allowPush = store.value(key + QStringLiteral("allowPush"), true).toBool();
-        n.node.tls.enabled = store.value(key + QStringLiteral("tls/enabled"), false).toBool();
-        n.node.tls.trustedCertificates = text(store, key + QStringLiteral("tls/trusted"), {});
-        n.node.tls.certificate = text(store, key + QStringLiteral("tls/certificate"), {});
-        n.node.tls.privateKey = text(store, key + QStringLiteral("tls/privateKey"), {});
+        n.node.tls = readTls(store, key + QStringLiteral("tls/"));
         bool valid = !n.name.empty() && !names.contains(n.name);
         try {
             pacs::validateNode(n.node);
@@ -123,6 +148,7 @@ void writePacsSettings(const PacsSettings& settings, QSettings& store) {
     store.setValue(QStringLiteral("pacs/listener/port"), int{settings.listenerPort});
     store.setValue(QStringLiteral("pacs/listener/bind"),
                    QString::fromStdString(settings.listenerBindAddress));
+    writeTls(settings.listenerTls, QStringLiteral("pacs/listener/tls/"), store);
     store.setValue(QStringLiteral("pacs/store/folder"),
                    QString::fromStdString(settings.storeFolder.string()));
     store.setValue(QStringLiteral("pacs/store/limitBytes"), qulonglong{settings.storeLimitBytes});
@@ -135,14 +161,14 @@ void writePacsSettings(const PacsSettings& settings, QSettings& store) {
         store.setValue(key + QStringLiteral("host"), QString::fromStdString(n.node.host));
         store.setValue(key + QStringLiteral("port"), int{n.node.port});
         store.setValue(key + QStringLiteral("allowPush"), n.allowPush);
-        store.setValue(key + QStringLiteral("tls/enabled"), n.node.tls.enabled);
-        store.setValue(key + QStringLiteral("tls/trusted"),
-                       QString::fromStdString(n.node.tls.trustedCertificates.string()));
-        store.setValue(key + QStringLiteral("tls/certificate"),
-                       QString::fromStdString(n.node.tls.certificate.string()));
-        store.setValue(key + QStringLiteral("tls/privateKey"),
-                       QString::fromStdString(n.node.tls.privateKey.string()));
+        writeTls(n.node.tls, key + QStringLiteral("tls/"), store);
     }
+}
+
+pacs::LocalStore openStore(const PacsSettings& settings) {
+    pacs::LocalStore store(settings.storeFolder);
+    store.setSizeLimit(settings.storeLimitBytes);
+    return store;
 }
 
 const PacsNode* findNode(const PacsSettings& settings, const std::string& name) {

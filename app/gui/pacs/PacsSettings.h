@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Node.h"
 
 class QSettings;
@@ -31,6 +32,10 @@ struct PacsSettings {
     bool listenerEnabled = false;  ///< run the storage SCP while the app runs
     std::uint16_t listenerPort = 11112;
     std::string listenerBindAddress = "127.0.0.1";  ///< IPv4; 0.0.0.0: all interfaces
+    /// The listener's TLS: when enabled it speaks only TLS, shows
+    /// `certificate` (with `privateKey`) and lets in only peers whose
+    /// certificate chains to `trustedCertificates`; all three are required.
+    pacs::TlsSettings listenerTls;
     std::vector<PacsNode> nodes;
     std::filesystem::path storeFolder;  ///< the local study store
     std::uint64_t storeLimitBytes = 0;  ///< 0: no limit; else oldest-first clean-up
@@ -42,13 +47,23 @@ struct PacsSettings {
 /// Reads the settings from `store` ("pacs/" group). Missing entries take the
 /// defaults above (storeFolder: defaultStoreFolder()); an invalid entry (AE
 /// title, port out of range, a node without host) is skipped, never guessed.
+/// The listener's TLS is read as written: when it is on without its files,
+/// the listener fails to start (it never falls back to plain TCP).
 [[nodiscard]] PacsSettings readPacsSettings(const QSettings& store);
 
 /// Writes `settings` into `store` ("pacs/" group), replacing what was there.
 /// Throws InvalidArgumentError (vv/core/Error.h) naming the field when our AE
-/// title, a node or a port is invalid, or when two nodes share a name;
-/// then nothing is written.
+/// title, a node or a port is invalid, when two nodes share a name, or when
+/// the listener's TLS is on without its three files; then nothing is written.
 void writePacsSettings(const PacsSettings& settings, QSettings& store);
+
+/// The local study store of `settings` (storeFolder, made when missing) with
+/// its size limit set from storeLimitBytes: every store the GUI writes into
+/// (the listener, a retrieve) comes from here. It opens the store's index
+/// (SQLite: quick, unless another process is writing it, then up to 10 s)
+/// and may create folders: on a worker where the GUI must not wait.
+/// Throws what pacs::LocalStore's constructor throws (IoError, FormatError).
+[[nodiscard]] pacs::LocalStore openStore(const PacsSettings& settings);
 
 /// The node called `name`, or nullptr.
 [[nodiscard]] const PacsNode* findNode(const PacsSettings& settings, const std::string& name);

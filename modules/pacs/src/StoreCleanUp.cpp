@@ -95,6 +95,19 @@ std::uint64_t folderBytes(const fs::path& folder) {
     return bytes;
 }
 
+bool removeUnlessOpen(const fs::path& root, const std::string& studyUid) {
+    std::optional<FileLock> lock;
+    if (fs::is_directory(root / studyUid)) {
+        lock = FileLock::tryExclusive(leaseFile(root, studyUid));
+        if (!lock) {
+            return false;
+        }
+    }
+    removeStudy(indexFile(root), studyUid);
+    removeFolder(root, studyUid);
+    return true;
+}
+
 std::vector<std::string> cleanUpLocked(const fs::path& root, std::uint64_t limit,
                                        const std::vector<std::string>& keep) {
     std::vector<std::string> removed;
@@ -115,15 +128,9 @@ std::vector<std::string> cleanUpLocked(const fs::path& root, std::uint64_t limit
         if (std::find(keep.begin(), keep.end(), uid) != keep.end()) {
             continue;
         }
-        std::optional<FileLock> lock;
-        if (fs::is_directory(root / uid)) {
-            lock = FileLock::tryExclusive(leaseFile(root, uid));
-            if (!lock) {
-                continue;  // open in this or another process
-            }
+        if (!removeUnlessOpen(root, uid)) {
+            continue;  // open in this or another process
         }
-        removeStudy(indexFile(root), uid);
-        removeFolder(root, uid);
         total -= bytes[uid];
         removed.push_back(uid);
     }
@@ -159,6 +166,20 @@ std::vector<std::string> LocalStore::cleanUp(const std::vector<std::string>& kee
     const std::lock_guard lock(detail::storeMutex());
     const detail::FileLock storeLock = detail::lockStore(root_);
     return detail::cleanUpLocked(root_, sizeLimit_, keep);
+}
+
+void LocalStore::remove(const std::string& studyInstanceUid) const {
+    validateUid(studyInstanceUid);
+    const std::lock_guard lock(detail::storeMutex());
+    const detail::FileLock storeLock = detail::lockStore(root_);
+    const std::vector<std::string> indexed = detail::studiesByUse(indexFile(root_));
+    if (std::find(indexed.begin(), indexed.end(), studyInstanceUid) == indexed.end()) {
+        throw InvalidArgumentError(root_, "the study is not in the store");
+    }
+    if (!detail::removeUnlessOpen(root_, studyInstanceUid)) {
+        throw StudyOpenError(root_, "the study is open and was not removed");
+    }
+    log::info(kLog, "removed a study from the store");
 }
 
 LocalStore::OpenLease LocalStore::open(const std::string& studyInstanceUid) const {

@@ -25,6 +25,12 @@ FileLock lockStore(const std::filesystem::path& root);
 /// Bytes of the files in `folder` and below (0 when it is missing).
 std::uint64_t folderBytes(const std::filesystem::path& folder);
 
+/// Removes the indexed study `studyUid` (out of the index in one SQL
+/// transaction, then its folder) unless it is open; false (nothing removed)
+/// when it is. For a caller that holds storeMutex() and lockStore(root).
+/// Throws IoError.
+bool removeUnlessOpen(const std::filesystem::path& root, const std::string& studyUid);
+
 /// Clean-up as LocalStore::cleanUp() promises, for a caller that holds
 /// storeMutex() and lockStore(root). Throws IoError.
 std::vector<std::string> cleanUpLocked(const std::filesystem::path& root, std::uint64_t limit,

@@ -26,9 +26,16 @@
 #include <string>
 #include <vector>
 
+#include "vv/core/Error.h"
 #include "vv/pacs/StudyFields.h"
 
 namespace vv::pacs {
+
+/// LocalStore::remove() of a study that is open (an OpenLease on it, in this
+/// or another process): nothing was removed.
+class StudyOpenError : public Error {
+    using Error::Error;
+};
 
 /// What the index knows of one instance (what the browser shows).
 struct InstanceFields {
@@ -124,6 +131,14 @@ class LocalStore {
     /// written.
     // NOLINTNEXTLINE(modernize-use-nodiscard): called for its effect
     std::vector<std::string> cleanUp(const std::vector<std::string>& keep = {}) const;
+
+    /// Removes the whole complete study `studyInstanceUid` as cleanUp() removes
+    /// one: out of the index first (one SQL transaction), then its folder.
+    /// Throws StudyOpenError when it is open (an OpenLease on it, in this or
+    /// any other process; nothing is removed then), InvalidArgumentError when
+    /// it is not in the store, IoError when the index cannot be read or
+    /// written or another process holds the store lock for more than 30 s.
+    void remove(const std::string& studyInstanceUid) const;
 
     /// One transfer's instances; discarded on destruction unless committed.
     class Transaction {
