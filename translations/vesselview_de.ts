@@ -1319,6 +1319,14 @@
         <source>Not saved: %1</source>
         <translation>Nicht gespeichert: %1</translation>
     </message>
+    <message>
+        <source>Listener uses TL&amp;S (encrypted DICOM)</source>
+        <translation>Empfang mit TL&amp;S (verschlüsseltes DICOM)</translation>
+    </message>
+    <message>
+        <source>Nodes sending to us must then use TLS with a certificate signed by the trusted CA</source>
+        <translation>Knoten, die an uns senden, müssen dann TLS mit einem von der vertrauenswürdigen CA signierten Zertifikat verwenden</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::NodeEditDialog</name>
@@ -1359,30 +1367,6 @@
         <translation>&amp;TLS verwenden (verschlüsseltes DICOM)</translation>
     </message>
     <message>
-        <source>Trusted &amp;CA certificate:</source>
-        <translation>Vertrauenswürdiges &amp;CA-Zertifikat:</translation>
-    </message>
-    <message>
-        <source>Our c&amp;ertificate (optional):</source>
-        <translation>Unser &amp;Zertifikat (optional):</translation>
-    </message>
-    <message>
-        <source>Our &amp;key (with the certificate):</source>
-        <translation>Unser &amp;Schlüssel (zum Zertifikat):</translation>
-    </message>
-    <message>
-        <source>Browse…</source>
-        <translation>Durchsuchen…</translation>
-    </message>
-    <message>
-        <source>Choose a PEM file</source>
-        <translation>PEM-Datei wählen</translation>
-    </message>
-    <message>
-        <source>PEM files (*.pem *.crt *.key);;All files (*)</source>
-        <translation>PEM-Dateien (*.pem *.crt *.key);;Alle Dateien (*)</translation>
-    </message>
-    <message>
         <source>Name: give the node a name.</source>
         <translation>Name: Geben Sie dem Knoten einen Namen.</translation>
     </message>
@@ -1397,14 +1381,6 @@
     <message>
         <source>Host: enter the PACS&apos;s host name or IP address.</source>
         <translation>Host: Geben Sie den Hostnamen oder die IP-Adresse des PACS ein.</translation>
-    </message>
-    <message>
-        <source>Trusted CA certificate: TLS needs the certificate of the CA that signed the PACS&apos;s certificate.</source>
-        <translation>Vertrauenswürdiges CA-Zertifikat: TLS braucht das Zertifikat der CA, die das Zertifikat des PACS signiert hat.</translation>
-    </message>
-    <message>
-        <source>Our certificate and key: give both or neither.</source>
-        <translation>Unser Zertifikat und Schlüssel: Geben Sie beide oder keines an.</translation>
     </message>
 </context>
 <context>
@@ -2265,6 +2241,57 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
     <message>
         <source>The study cannot be opened now: the local study store is busy or cannot be read. Try again in a moment.</source>
         <translation>Die Studie lässt sich jetzt nicht öffnen: Der lokale Studienspeicher ist belegt oder lässt sich nicht lesen. Versuchen Sie es gleich noch einmal.</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::TlsFilesBox</name>
+    <message>
+        <source>Trusted &amp;CA certificate:</source>
+        <translation>Vertrauenswürdiges &amp;CA-Zertifikat:</translation>
+    </message>
+    <message>
+        <source>Our c&amp;ertificate (optional):</source>
+        <translation>Unser &amp;Zertifikat (optional):</translation>
+    </message>
+    <message>
+        <source>Our c&amp;ertificate:</source>
+        <translation>Unser &amp;Zertifikat:</translation>
+    </message>
+    <message>
+        <source>Our &amp;key (with the certificate):</source>
+        <translation>Unser &amp;Schlüssel (zum Zertifikat):</translation>
+    </message>
+    <message>
+        <source>Our &amp;key:</source>
+        <translation>Unser &amp;Schlüssel:</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Choose a PEM file</source>
+        <translation>PEM-Datei wählen</translation>
+    </message>
+    <message>
+        <source>PEM files (*.pem *.crt *.key);;All files (*)</source>
+        <translation>PEM-Dateien (*.pem *.crt *.key);;Alle Dateien (*)</translation>
+    </message>
+    <message>
+        <source>Trusted CA certificate: TLS needs the certificate of the CA that signed the PACS&apos;s certificate.</source>
+        <translation>Vertrauenswürdiges CA-Zertifikat: TLS braucht das Zertifikat der CA, die das Zertifikat des PACS signiert hat.</translation>
+    </message>
+    <message>
+        <source>Trusted CA certificate: the listener needs the certificate of the CA that signed the certificates of the nodes sending to us.</source>
+        <translation>Vertrauenswürdiges CA-Zertifikat: Der Empfang braucht das Zertifikat der CA, die die Zertifikate der an uns sendenden Knoten signiert hat.</translation>
+    </message>
+    <message>
+        <source>Our certificate and key: the listener needs both to speak TLS.</source>
+        <translation>Unser Zertifikat und Schlüssel: Für TLS braucht der Empfang beide.</translation>
+    </message>
+    <message>
+        <source>Our certificate and key: give both or neither.</source>
+        <translation>Unser Zertifikat und Schlüssel: Geben Sie beide oder keines an.</translation>
     </message>
 </context>
 <context>

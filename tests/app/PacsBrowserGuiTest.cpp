@@ -36,6 +36,7 @@
 #include "gui/pacs/NodeEditDialog.h"
 #include "gui/pacs/PacsBrowser.h"
 #include "gui/pacs/PacsSettings.h"
+#include "gui/pacs/TlsFilesBox.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Send.h"
@@ -150,8 +151,43 @@ TEST_F(PacsBrowserGuiTest, PreferencesSurviveARestart) {
     EXPECT_EQ(again->listenerPortBox()->value(), 4711);
     EXPECT_EQ(again->bindBox()->currentText(), QStringLiteral("0.0.0.0"));
     EXPECT_DOUBLE_EQ(again->storeLimitBox()->value(), 2.5);
+    // GB as the CLI's --store-limit counts them: 10^9 bytes.
+    EXPECT_EQ(vv::gui::readPacsSettings(QSettings()).storeLimitBytes, 2'500'000'000ULL);
     ASSERT_EQ(again->nodeTable()->rowCount(), 2);
     EXPECT_EQ(rowText(again->nodeTable(), 1), "Second | SECOND | 10.1.2.3 | 2762 | off | yes");
+}
+
+TEST_F(PacsBrowserGuiTest, ListenerTlsIsEditedInPreferencesAndRefusedWithoutItsFiles) {
+    auto* dialog = preferences();
+    vv::gui::TlsFilesBox* tls = dialog->listenerTlsBox();
+    ASSERT_NE(tls, nullptr);
+    EXPECT_FALSE(tls->isChecked());
+    tls->setChecked(true);
+    clickOk(dialog);
+    EXPECT_TRUE(dialog->isVisible()) << "TLS on without files was saved";
+    EXPECT_TRUE(dialog->error().startsWith(QStringLiteral("Trusted CA certificate:")))
+        << dialog->error().toStdString();
+    tls->trustedEdit()->setText(QStringLiteral("/etc/vv/ca.pem"));
+    tls->certificateEdit()->setText(QStringLiteral("/etc/vv/ours.pem"));
+    clickOk(dialog);
+    EXPECT_TRUE(dialog->isVisible()) << "TLS on without our key was saved";
+    EXPECT_TRUE(dialog->error().startsWith(QStringLiteral("Our certificate and key:")))
+        << dialog->error().toStdString();
+    EXPECT_FALSE(vv::gui::readPacsSettings(QSettings()).listenerTls.enabled);
+    tls->keyEdit()->setText(QStringLiteral("/etc/vv/ours.key"));
+    QPointer<vv::gui::NetworkPreferencesDialog> guard(dialog);
+    clickOk(dialog);
+    EXPECT_TRUE(waitUntil([&] { return guard == nullptr || !guard->isVisible(); }, 5000))
+        << dialog->error().toStdString();
+
+    const vv::gui::PacsSettings saved = vv::gui::readPacsSettings(QSettings());
+    EXPECT_TRUE(saved.listenerTls.enabled);
+    EXPECT_EQ(saved.listenerTls.trustedCertificates, std::filesystem::path("/etc/vv/ca.pem"));
+    EXPECT_EQ(saved.listenerTls.certificate, std::filesystem::path("/etc/vv/ours.pem"));
+    EXPECT_EQ(saved.listenerTls.privateKey, std::filesystem::path("/etc/vv/ours.key"));
+    auto* again = preferences();
+    EXPECT_TRUE(again->listenerTlsBox()->isChecked());
+    EXPECT_EQ(again->listenerTlsBox()->keyEdit()->text(), QStringLiteral("/etc/vv/ours.key"));
 }
 
 TEST_F(PacsBrowserGuiTest, QueryShowsTheStudyAndItsSeries) {
@@ -224,21 +260,11 @@ TEST_F(PacsBrowserGuiTest, RetrieveWithGetFillsTheStoreAndOpenShowsTheSeries) {
     EXPECT_EQ(studies[0].series[0].instances, slices_);
 
     // Open: the series dialog, then the segmented scene in the 3-D view.
-    QPointer<vv::gui::SeriesDialog> chooser;
-    QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
-                     [&chooser](vv::gui::SeriesDialog* shown) { chooser = shown; });
-    bool shown = false;
-    QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
-    ASSERT_TRUE(b->openButton()->isEnabled());
-    b->openButton()->click();
-    ASSERT_TRUE(
-        waitUntil([&] { return chooser != nullptr || !window_->lastError().isEmpty(); }, 30000));
-    ASSERT_NE(chooser, nullptr) << window_->lastError().toStdString();
+    const QPointer<vv::gui::SeriesDialog> chooser = openRetrieved(b);
+    ASSERT_NE(chooser, nullptr);
     EXPECT_FALSE(b->isVisible()) << "the browser stays in front of the series chooser";
     EXPECT_EQ(chooser->selectedSeriesUid().toStdString(), studies[0].series[0].seriesInstanceUid);
-    chooser->accept();
-    ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000));
-    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    ASSERT_TRUE(acceptAndShow(chooser));
     EXPECT_TRUE(waitForFrames());
 }
 

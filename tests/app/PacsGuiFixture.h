@@ -24,6 +24,8 @@
 #include "GuiFixture.h"
 #include "OrthancServer.h"
 #include "SyntheticCta.h"
+#include "gui/MainWindow.h"
+#include "gui/SeriesDialog.h"
 #include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/NetworkPreferencesDialog.h"
 #include "gui/pacs/NodeEditDialog.h"
@@ -213,6 +215,35 @@ class PacsGuiFixture : public GuiFixture {
         button->click();
         EXPECT_TRUE(waitUntil([&] { return done; }, kNetworkWaitMs)) << "the retrieve never ended";
         return ok;
+    }
+
+    /// Clicks the browser's Open and waits for the series chooser; returns it
+    /// (nullptr, with the window's error reported, when none came).
+    QPointer<vv::gui::SeriesDialog> openRetrieved(vv::gui::PacsBrowser* b) {
+        QPointer<vv::gui::SeriesDialog> chooser;
+        const QMetaObject::Connection c =
+            QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                             [&chooser](vv::gui::SeriesDialog* shown) { chooser = shown; });
+        EXPECT_TRUE(b->openButton()->isEnabled());
+        b->openButton()->click();
+        EXPECT_TRUE(waitUntil([&] { return chooser != nullptr || !window_->lastError().isEmpty(); },
+                              30000));
+        QObject::disconnect(c);
+        EXPECT_NE(chooser, nullptr) << window_->lastError().toStdString();
+        return chooser;
+    }
+
+    /// Accepts `chooser` and waits until its scene is shown; false on an error.
+    bool acceptAndShow(vv::gui::SeriesDialog* chooser) {
+        bool shown = false;
+        const QMetaObject::Connection c = QObject::connect(
+            window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
+        chooser->accept();
+        const bool ended =
+            waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000);
+        QObject::disconnect(c);
+        EXPECT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+        return ended && shown;
     }
 
     inline static std::unique_ptr<OrthancServer> orthanc_;

@@ -1,17 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The DICOM menu's pieces working together as a clinic uses them, against a
 // real Orthanc: the listener switched on in Preferences starts in the window,
-// the PACS browser's C-MOVE lands through it in the local store, and Local
-// Studies lists the study without any other step.
+// the PACS browser's C-MOVE lands through it in the local store, the study
+// opened from there is held open against deletion, and Local Studies lists
+// it without any other step.
 #include <gtest/gtest.h>
 
 #include <QAction>
 #include <QCheckBox>
+#include <QPointer>
 #include <QRadioButton>
 #include <QTreeWidget>
 
 #include "PacsGuiFixture.h"
 #include "gui/MainWindow.h"
+#include "gui/SeriesDialog.h"
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "vv/pacs/LocalStore.h"
@@ -53,6 +56,14 @@ TEST_F(PacsWorkflowGuiTest, ListenerTurnedOnInPreferencesReceivesTheMoveAndLocal
     EXPECT_TRUE(waitUntil(
         [&] { return listener->committedInstances() == static_cast<std::size_t>(slices_); }, 5000))
         << listener->committedInstances();
+
+    // Open from the PACS browser: the study on screen is held open, so the
+    // store will not delete it (here, nor from another program).
+    const QPointer<vv::gui::SeriesDialog> chooser = openRetrieved(b);
+    ASSERT_NE(chooser, nullptr);
+    ASSERT_TRUE(acceptAndShow(chooser));
+    EXPECT_THROW(vv::pacs::LocalStore(store_).remove(studies[0].studyInstanceUid),
+                 vv::pacs::StudyOpenError);
 
     // Local Studies lists it.
     auto* action = window_->findChild<QAction*>(QStringLiteral("localStudies"));

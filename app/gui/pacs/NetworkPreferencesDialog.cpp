@@ -24,6 +24,7 @@
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/NodeEditDialog.h"
 #include "gui/pacs/PacsWidgets.h"
+#include "gui/pacs/TlsFilesBox.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/Echo.h"
 
@@ -32,7 +33,7 @@ namespace vv::gui {
 namespace {
 
 constexpr int kMaxPort = 65535;
-constexpr double kBytesPerGb = 1024.0 * 1024.0 * 1024.0;
+constexpr double kBytesPerGb = 1e9;  // as the CLI's --store-limit NGB
 constexpr double kMaxLimitGb = 100000.0;
 
 enum Column { NameColumn, AeColumn, HostColumn, PortColumn, TlsColumn, PushColumn, ColumnCount };
@@ -93,6 +94,13 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
         tr("The IPv4 address of the interface to listen on: 127.0.0.1 for this "
            "computer only, 0.0.0.0 for all interfaces"));
     oursForm->addRow(tr("Listen on &interface:"), bind_);
+    listenerTls_ =
+        new TlsFilesBox(tr("Listener uses TL&S (encrypted DICOM)"), s.listenerTls,
+                        TlsFilesBox::OurCertificate::Required, QStringLiteral("listener"), ours);
+    listenerTls_->setObjectName(QStringLiteral("listenerTls"));
+    listenerTls_->setToolTip(
+        tr("Nodes sending to us must then use TLS with a certificate signed by the trusted CA"));
+    oursForm->addRow(listenerTls_);
 
     auto* store = new QGroupBox(tr("Local study store"), this);
     auto* storeForm = new QFormLayout(store);
@@ -184,6 +192,7 @@ PacsSettings NetworkPreferencesDialog::settings() const {
     s.listenerEnabled = listener_->isChecked();
     s.listenerPort = static_cast<std::uint16_t>(listenerPort_->value());
     s.listenerBindAddress = bind_->currentText().trimmed().toStdString();
+    s.listenerTls = listenerTls_->settings();
     s.storeFolder = storeFolder_->text().trimmed().toStdString();
     s.storeLimitBytes =
         static_cast<std::uint64_t>(std::llround(storeLimit_->value() * kBytesPerGb));
@@ -311,6 +320,11 @@ void NetworkPreferencesDialog::accept() {
         refuse(tr("Listen on interface: enter an IPv4 address such as 127.0.0.1 (this computer "
                   "only) or 0.0.0.0 (all interfaces)."),
                bind_);
+        return;
+    }
+    QWidget* tlsField = nullptr;
+    if (const QString problem = listenerTls_->problem(&tlsField); !problem.isEmpty()) {
+        refuse(problem, tlsField);
         return;
     }
     if (storeFolder_->text().trimmed().isEmpty()) {

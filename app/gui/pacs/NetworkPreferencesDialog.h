@@ -16,8 +16,10 @@ class QTableWidget;
 
 namespace vv::gui {
 
+class TlsFilesBox;
+
 /// DICOM > Preferences…: our AE title, the listener (on/off, port, the
-/// interface it binds), the local study store (folder, size limit in GB) and
+/// interface it binds, TLS), the local study store (folder, size limit in GB) and
 /// the PACS nodes (a table with Add / Edit / Remove, and Test: C-ECHO on a
 /// worker, the answer or what failed shown under the table). Reads and, on
 /// OK, writes QSettings() through read/writePacsSettings(); invalid input
@@ -41,6 +43,7 @@ class NetworkPreferencesDialog : public QDialog {
     [[nodiscard]] QCheckBox* listenerBox() const noexcept { return listener_; }
     [[nodiscard]] QSpinBox* listenerPortBox() const noexcept { return listenerPort_; }
     [[nodiscard]] QComboBox* bindBox() const noexcept { return bind_; }
+    [[nodiscard]] TlsFilesBox* listenerTlsBox() const noexcept { return listenerTls_; }
     [[nodiscard]] QLineEdit* storeFolderEdit() const noexcept { return storeFolder_; }
     [[nodiscard]] QDoubleSpinBox* storeLimitBox() const noexcept { return storeLimit_; }
     [[nodiscard]] QTableWidget* nodeTable() const noexcept { return table_; }
@@ -72,6 +75,7 @@ class NetworkPreferencesDialog : public QDialog {
     QCheckBox* listener_ = nullptr;
     QSpinBox* listenerPort_ = nullptr;
     QComboBox* bind_ = nullptr;
+    TlsFilesBox* listenerTls_ = nullptr;
     QLineEdit* storeFolder_ = nullptr;
     QDoubleSpinBox* storeLimit_ = nullptr;
     QTableWidget* table_ = nullptr;

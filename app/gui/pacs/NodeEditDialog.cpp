@@ -4,20 +4,15 @@
 #include <QCheckBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
-#include <QFileDialog>
 #include <QFormLayout>
-#include <QGroupBox>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QVBoxLayout>
-#include <array>
-#include <utility>
 
-#include "gui/PathField.h"
 #include "gui/pacs/PacsWidgets.h"
+#include "gui/pacs/TlsFilesBox.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
@@ -25,10 +20,6 @@ namespace vv::gui {
 namespace {
 
 constexpr int kMaxPort = 65535;
-
-QString pathText(const std::filesystem::path& path) {
-    return QString::fromStdString(path.string());
-}
 
 }  // namespace
 
@@ -71,39 +62,9 @@ NodeEditDialog::NodeEditDialog(const PacsNode& node, QStringList takenNames, QWi
     form->addRow(tr("&Port:"), port_);
     form->addRow(QString(), allowPush_);
 
-    tls_ = new QGroupBox(tr("Use &TLS (encrypted DICOM)"), this);
+    tls_ = new TlsFilesBox(tr("Use &TLS (encrypted DICOM)"), node.node.tls,
+                           TlsFilesBox::OurCertificate::Optional, QStringLiteral("node"), this);
     tls_->setObjectName(QStringLiteral("nodeTls"));
-    tls_->setCheckable(true);
-    tls_->setChecked(node.node.tls.enabled);
-    auto* tlsForm = new QFormLayout(tls_);
-    trusted_ = new QLineEdit(pathText(node.node.tls.trustedCertificates), tls_);
-    trusted_->setObjectName(QStringLiteral("nodeTrusted"));
-    certificate_ = new QLineEdit(pathText(node.node.tls.certificate), tls_);
-    certificate_->setObjectName(QStringLiteral("nodeCertificate"));
-    key_ = new QLineEdit(pathText(node.node.tls.privateKey), tls_);
-    key_->setObjectName(QStringLiteral("nodeKey"));
-    const std::array<std::pair<QLineEdit*, QString>, 3> files{{
-        {trusted_, tr("Trusted &CA certificate:")},
-        {certificate_, tr("Our c&ertificate (optional):")},
-        {key_, tr("Our &key (with the certificate):")},
-    }};
-    for (const auto& file : files) {
-        QLineEdit* edit = file.first;
-        auto* row = new QHBoxLayout;
-        showPath(edit);
-        row->addWidget(edit);
-        auto* browse = new QPushButton(tr("Browse…"), tls_);
-        connect(browse, &QPushButton::clicked, this, [this, edit] {
-            const QString chosen =
-                QFileDialog::getOpenFileName(this, tr("Choose a PEM file"), edit->text(),
-                                             tr("PEM files (*.pem *.crt *.key);;All files (*)"));
-            if (!chosen.isEmpty()) {
-                edit->setText(chosen);
-            }
-        });
-        row->addWidget(browse);
-        addBuddyRow(tlsForm, file.second, edit, row);
-    }
 
     error_ = makeErrorLabel(this, QStringLiteral("nodeError"));
     QDialogButtonBox* buttons = makeOkCancel(this);
@@ -122,10 +83,7 @@ PacsNode NodeEditDialog::node() const {
     n.node.host = host_->text().trimmed().toStdString();
     n.node.port = static_cast<std::uint16_t>(port_->value());
     n.allowPush = allowPush_->isChecked();
-    n.node.tls.enabled = tls_->isChecked();
-    n.node.tls.trustedCertificates = trusted_->text().trimmed().toStdString();
-    n.node.tls.certificate = certificate_->text().trimmed().toStdString();
-    n.node.tls.privateKey = key_->text().trimmed().toStdString();
+    n.node.tls = tls_->settings();
     return n;
 }
 
@@ -152,17 +110,8 @@ QString NodeEditDialog::check(QWidget** field) const {
         *field = host_;
         return tr("Host: enter the PACS's host name or IP address.");
     }
-    if (tls_->isChecked()) {
-        if (trusted_->text().trimmed().isEmpty()) {
-            *field = trusted_;
-            return tr(
-                "Trusted CA certificate: TLS needs the certificate of the CA that signed "
-                "the PACS's certificate.");
-        }
-        if (certificate_->text().trimmed().isEmpty() != key_->text().trimmed().isEmpty()) {
-            *field = certificate_->text().trimmed().isEmpty() ? certificate_ : key_;
-            return tr("Our certificate and key: give both or neither.");
-        }
+    if (QString problem = tls_->problem(field); !problem.isEmpty()) {
+        return problem;
     }
     return {};
 }

@@ -5,9 +5,9 @@
 #include <QStringList>
 
 #include "gui/pacs/PacsSettings.h"
+#include "gui/pacs/TlsFilesBox.h"
 
 class QCheckBox;
-class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QSpinBox;
@@ -36,10 +36,10 @@ class NodeEditDialog : public QDialog {
     [[nodiscard]] QLineEdit* hostEdit() const noexcept { return host_; }
     [[nodiscard]] QSpinBox* portBox() const noexcept { return port_; }
     [[nodiscard]] QCheckBox* allowPushBox() const noexcept { return allowPush_; }
-    [[nodiscard]] QGroupBox* tlsBox() const noexcept { return tls_; }
-    [[nodiscard]] QLineEdit* trustedEdit() const noexcept { return trusted_; }
-    [[nodiscard]] QLineEdit* certificateEdit() const noexcept { return certificate_; }
-    [[nodiscard]] QLineEdit* keyEdit() const noexcept { return key_; }
+    [[nodiscard]] TlsFilesBox* tlsBox() const noexcept { return tls_; }
+    [[nodiscard]] QLineEdit* trustedEdit() const noexcept { return tls_->trustedEdit(); }
+    [[nodiscard]] QLineEdit* certificateEdit() const noexcept { return tls_->certificateEdit(); }
+    [[nodiscard]] QLineEdit* keyEdit() const noexcept { return tls_->keyEdit(); }
 
     void accept() override;
 
@@ -53,10 +53,7 @@ class NodeEditDialog : public QDialog {
     QLineEdit* host_ = nullptr;
     QSpinBox* port_ = nullptr;
     QCheckBox* allowPush_ = nullptr;
-    QGroupBox* tls_ = nullptr;
-    QLineEdit* trusted_ = nullptr;
-    QLineEdit* certificate_ = nullptr;
-    QLineEdit* key_ = nullptr;
+    TlsFilesBox* tls_ = nullptr;
     QLabel* error_ = nullptr;
 };
 

@@ -463,6 +463,7 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
     job.node = node->node;
     job.move = useMove_->isChecked();
     job.storeFolder = settings_.storeFolder;
+    job.storeLimitBytes = settings_.storeLimitBytes;
     job.request.studyInstanceUid =
         studyResults_[static_cast<std::size_t>(studyRow)].studyInstanceUid;
     retrieveTotal_ = -1;

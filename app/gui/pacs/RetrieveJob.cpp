@@ -44,6 +44,7 @@ RetrieveOutcome runRetrieve(const RetrieveJob& job, RetrieveControl& control) {
     RetrieveOutcome outcome;
     try {
         pacs::LocalStore store(job.storeFolder);
+        store.setSizeLimit(job.storeLimitBytes);  // clean-up after the commit keeps this study
         const Progress progress(
             [&control](double fraction, std::string_view) { control.fraction = fraction; },
             control.stop.get_token());

@@ -9,6 +9,7 @@
 
 #include <atomic>
 #include <cstddef>
+#include <cstdint>
 #include <filesystem>
 #include <stop_token>
 
@@ -24,7 +25,8 @@ struct RetrieveJob {
     pacs::RetrieveRequest request;
     bool move = false;  ///< C-MOVE to me.aeTitle (our listener) instead of C-GET
     std::filesystem::path storeFolder;
-    int listenerWaitSeconds = 10;  ///< C-MOVE: how long the listener may take to commit
+    std::uint64_t storeLimitBytes = 0;  ///< the store's size limit (0: none), as in PacsSettings
+    int listenerWaitSeconds = 10;       ///< C-MOVE: how long the listener may take to commit
 };
 
 /// Shared between the GUI and the worker.
