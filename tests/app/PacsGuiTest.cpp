@@ -113,6 +113,18 @@ QTreeWidgetItem* studyRow(const LocalStudiesBrowser& browser, const QString& des
 }
 
 /// All texts of `item`'s columns, "|"-joined, for failure messages and checks.
+/// A study date as both browsers show it: the UI locale's short format,
+/// with the year in four digits (never "1/2/24").
+QString shownDate(const QDate& date) {
+    QString format = QLocale().dateFormat(QLocale::ShortFormat);
+    if (!format.contains(QStringLiteral("yyyy"))) {
+        format.replace(QStringLiteral("yy"), QStringLiteral("yyyy"));
+    }
+    const QString shown = QLocale().toString(date, format);
+    EXPECT_TRUE(shown.contains(QString::number(date.year()))) << shown.toStdString();
+    return shown;
+}
+
 std::string rowText(const QTreeWidgetItem* item) {
     QStringList texts;
     for (int c = 0; c < item->columnCount(); ++c) {
@@ -295,9 +307,8 @@ TEST_F(PacsGuiTest, StudyPushedByOrthancAppearsInLocalStudiesWithoutUserAction) 
     const QDate date =
         QDate::fromString(QString::fromStdString(stored[0].studyDate), QStringLiteral("yyyyMMdd"));
     ASSERT_TRUE(date.isValid()) << stored[0].studyDate;
-    EXPECT_EQ(rowText(study), "Test, Vessel|VV-GUI-1|" +
-                                  QLocale().toString(date, QLocale::ShortFormat).toStdString() +
-                                  "|CTA run-off|CT|1");
+    EXPECT_EQ(rowText(study),
+              "Test, Vessel|VV-GUI-1|" + shownDate(date).toStdString() + "|CTA run-off|CT|1");
     ASSERT_EQ(study->childCount(), 1);
     EXPECT_EQ(rowText(study->child(0)), "|||synthetic CTA|CT|48 images");
     EXPECT_NE(browser->statusLine()->text().indexOf(QStringLiteral("1 study")), -1)
@@ -479,7 +490,7 @@ TEST_F(PacsGuiTest, DeleteAsksNamingTheStudyThenItsRowAndFilesAreGone) {
     ASSERT_NE(neck, nullptr);
     EXPECT_FALSE(browser->deleteButton()->isEnabled()) << "nothing chosen yet";
 
-    const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
+    const QString date = shownDate(QDate(2024, 1, 2));
     // A series row deletes its study too.
     const QString asked = deleteAndConfirm(*browser, neck->child(0));
     EXPECT_EQ(asked, QStringLiteral("Delete the study “Neck CTA” of %1 from the local study "
@@ -502,7 +513,7 @@ TEST_F(PacsGuiTest, DeletingAnOpenStudyIsRefusedWithAMessageAndTheRowStays) {
         const auto lease = vv::pacs::LocalStore(s.storeFolder).open(kNeckUid);
         deleteAndConfirm(*browser, browser->tree()->topLevelItem(0));
         ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 5000));
-        const QString date = QLocale().toString(QDate(2024, 1, 2), QLocale::ShortFormat);
+        const QString date = shownDate(QDate(2024, 1, 2));
         EXPECT_EQ(browser->messageLine()->text(),
                   QStringLiteral("The study “Neck CTA” of %1 is open — in this window or in "
                                  "another program — and was not deleted. Close it (open other "

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "gui/pacs/ListenerService.h"
+#include "gui/pacs/PacsWidgets.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
 
@@ -40,12 +41,6 @@ QString personName(const std::string& dicom) {
     }
     const QString family = parts.takeFirst();
     return family + QStringLiteral(", ") + parts.join(QLatin1Char(' ')).simplified();
-}
-
-/// YYYYMMDD in the UI locale's short format; other text as it is.
-QString studyDate(const std::string& dicom) {
-    const QDate date = QDate::fromString(text(dicom), QStringLiteral("yyyyMMdd"));
-    return date.isValid() ? QLocale().toString(date, QLocale::ShortFormat) : text(dicom);
 }
 
 /// The study row of `item` (itself, or the study of a series row).
@@ -80,7 +75,7 @@ QTreeWidgetItem* studyItem(const pacs::StoredStudy& study) {
     }
     item->setText(kPatient, personName(study.patientName));
     item->setText(kPatientId, text(study.patientId));
-    item->setText(kDate, studyDate(study.studyDate));
+    item->setText(kDate, studyDateText(study.studyDate));
     item->setText(kDescription, text(study.studyDescription));
     item->setText(kModalities, modalityList.join(QStringLiteral(", ")));
     item->setText(kSeries, QLocale().toString(static_cast<qulonglong>(study.series.size())));

@@ -81,19 +81,6 @@ std::string dicomDate(const QDateEdit* edit) {
 
 }  // namespace
 
-QString studyDateText(const std::string& dicomDate) {
-    const QDate date = QDate::fromString(text(dicomDate), QStringLiteral("yyyyMMdd"));
-    if (!date.isValid()) {
-        return text(dicomDate);
-    }
-    const QLocale locale;
-    QString format = locale.dateFormat(QLocale::ShortFormat);
-    if (!format.contains(QStringLiteral("yyyy"))) {
-        format.replace(QStringLiteral("yy"), QStringLiteral("yyyy"));
-    }
-    return locale.toString(date, format);
-}
-
 PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     setObjectName(QStringLiteral("pacsBrowser"));
     setWindowTitle(tr("Query PACS"));

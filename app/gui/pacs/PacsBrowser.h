@@ -138,8 +138,4 @@ class PacsBrowser : public QDialog {
     QTimer* progressTimer_ = nullptr;
 };
 
-/// A DICOM date (YYYYMMDD) as the UI locale writes dates (short format with
-/// a four-digit year); the text itself when it is not a valid date.
-[[nodiscard]] QString studyDateText(const std::string& dicomDate);
-
 }  // namespace vv::gui

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/pacs/PacsWidgets.h"
 
+#include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QTableWidget>
 
 namespace vv::gui {
@@ -41,6 +43,20 @@ QDialogButtonBox* makeOkCancel(QDialog* dialog) {
     QObject::connect(buttons, &QDialogButtonBox::accepted, dialog, &QDialog::accept);
     QObject::connect(buttons, &QDialogButtonBox::rejected, dialog, &QDialog::reject);
     return buttons;
+}
+
+QString studyDateText(const std::string& dicomDate) {
+    const QDate date =
+        QDate::fromString(QString::fromStdString(dicomDate), QStringLiteral("yyyyMMdd"));
+    if (!date.isValid()) {
+        return QString::fromStdString(dicomDate);
+    }
+    const QLocale locale;
+    QString format = locale.dateFormat(QLocale::ShortFormat);
+    if (!format.contains(QStringLiteral("yyyy"))) {
+        format.replace(QStringLiteral("yy"), QStringLiteral("yyyy"));
+    }
+    return locale.toString(date, format);
 }
 
 }  // namespace vv::gui

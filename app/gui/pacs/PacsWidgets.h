@@ -6,6 +6,7 @@
 
 #include <QString>
 #include <QStringList>
+#include <string>
 
 class QDialog;
 class QDialogButtonBox;
@@ -28,5 +29,9 @@ void showAsProblem(QLabel* label, bool problem);
 
 /// OK and Cancel, wired to `dialog`'s accept() and reject().
 [[nodiscard]] QDialogButtonBox* makeOkCancel(QDialog* dialog);
+
+/// A DICOM date (YYYYMMDD) as the UI locale writes dates (short format with
+/// a four-digit year); the text itself when it is not a valid date.
+[[nodiscard]] QString studyDateText(const std::string& dicomDate);
 
 }  // namespace vv::gui
