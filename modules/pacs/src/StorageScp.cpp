@@ -112,7 +112,9 @@ class Scp : public DcmSCP {
                 transaction_->commit();
                 const std::lock_guard lock(mutex_);
                 stats_.committedInstances += n;
-                log::info(kLog, "stored " + std::to_string(n) + " instance(s) from " + peer());
+                if (n > 0) {  // not for a C-ECHO
+                    log::info(kLog, "stored " + std::to_string(n) + " instance(s) from " + peer());
+                }
             } catch (const Error& e) {
                 log::error(kLog, "cannot store what " + peer() + " sent: " + e.problem());
             }
@@ -156,12 +158,13 @@ class Scp : public DcmSCP {
         ++stats_.refusedAssociations;
     }
     void finish() {
-        if (transaction_ && transaction_->size() > 0) {
+        const bool incomplete = transaction_ && transaction_->size() > 0;
+        transaction_.reset();  // removes what it staged, before the counters say so
+        if (incomplete) {
             const std::lock_guard lock(mutex_);
             ++stats_.discardedAssociations;
             log::warning(kLog, "discarded an incomplete transfer from " + peer());
         }
-        transaction_.reset();
     }
     Uint16 store(DcmDataset& dataset) {
         if (!transaction_ || overCap_) {
