@@ -57,6 +57,12 @@ TEST_F(PacsBrowserGuiTest, TestOnAGoodNodeSaysSuccess) {
     const std::string result = testNode(dialog, 0);
     EXPECT_NE(result.find("Success"), std::string::npos) << result;
     EXPECT_NE(result.find(vv::pacs::describe(orthanc_->node())), std::string::npos) << result;
+    // The answer's line takes room without squeezing the fields above it.
+    QCoreApplication::processEvents();
+    for (QLineEdit* edit : {dialog->aeTitleEdit(), dialog->listenerTlsBox()->trustedEdit(),
+                            dialog->listenerTlsBox()->keyEdit(), dialog->storeFolderEdit()}) {
+        EXPECT_GE(edit->height(), edit->sizeHint().height()) << edit->objectName().toStdString();
+    }
 }
 
 TEST_F(PacsBrowserGuiTest, TestOnAWrongAeTitleOrAClosedPortSaysWhatFailed) {

@@ -10,12 +10,14 @@
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
+#include <QLayout>
 #include <QLineEdit>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QTableWidget>
 #include <QVBoxLayout>
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -279,6 +281,7 @@ void NetworkPreferencesDialog::testNode() {
     const QString ourProblem = aeTitleProblem(aeTitle_->text().trimmed(), tr("Our AE title"));
     if (!ourProblem.isEmpty()) {
         testResult_->setText(ourProblem);
+        fitHeight();
         emit testFinished(false);
         return;
     }
@@ -288,6 +291,7 @@ void NetworkPreferencesDialog::testNode() {
     test_->setText(tr("Testing…"));
     updateButtons();
     testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
+    fitHeight();
     runInBackground(
         this, [me, node] { return tryNetwork([&] { pacs::echo(me, node); }); },
         [this, node](const NetworkFailure& failure) {
@@ -298,13 +302,26 @@ void NetworkPreferencesDialog::testNode() {
             testResult_->setText(ok ? tr("Success: %1 answered C-ECHO.")
                                           .arg(QString::fromStdString(pacs::describe(node)))
                                     : failureText(failure, node));
+            fitHeight();
             emit testFinished(ok);
         });
+}
+
+void NetworkPreferencesDialog::fitHeight() {
+    // A word-wrapped line that appears does not raise the window's minimum
+    // height by itself: without this the fields above it are squeezed.
+    const int width = this->width();
+    const int needed =
+        std::max(layout()->totalMinimumSize().height(), layout()->totalHeightForWidth(width));
+    if (needed > height()) {
+        resize(width, needed);
+    }
 }
 
 void NetworkPreferencesDialog::refuse(const QString& message, QWidget* field) {
     error_->setText(message);
     error_->show();
+    fitHeight();
     if (field != nullptr) {
         field->setFocus();
     }

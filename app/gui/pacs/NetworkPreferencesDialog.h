@@ -69,6 +69,7 @@ class NetworkPreferencesDialog : public QDialog {
     void testNode();
     void updateButtons();
     void refuse(const QString& message, QWidget* field);
+    void fitHeight();
 
     std::vector<PacsNode> nodes_;
     QLineEdit* aeTitle_ = nullptr;
