@@ -40,10 +40,11 @@ PacsBrowser* DicomMenu::showBrowser() {
         browser_->setListenerRunning(listenerRunning_);
         // The browser steps aside for the series chooser and the scene (Query PACS… shows it
         // again).
-        connect(browser_, &PacsBrowser::openFolder, this, [this](const QString& folder) {
-            browser_->hide();
-            emit openFolder(folder);
-        });
+        connect(browser_, &PacsBrowser::openFolder, this,
+                [this](const QString& folder, const QString& store, const QString& studyUid) {
+                    browser_->hide();
+                    emit openFolder(folder, store, studyUid);
+                });
     } else {
         browser_->reloadSettings();
     }

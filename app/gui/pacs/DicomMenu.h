@@ -29,7 +29,8 @@ class DicomMenu : public QMenu {
     PacsBrowser* showBrowser();
 
   signals:
-    void openFolder(const QString& folder);
+    /// The PACS browser's Open: `folder` of the study `studyUid` in the local store at `store`.
+    void openFolder(const QString& folder, const QString& store, const QString& studyUid);
     /// The preferences were saved.
     void preferencesChanged();
 

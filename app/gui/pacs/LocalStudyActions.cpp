@@ -8,7 +8,6 @@
 #include <QPointer>
 #include <QSettings>
 #include <QStatusBar>
-#include <filesystem>
 #include <memory>
 
 #include "gui/MainWindow.h"
@@ -103,19 +102,11 @@ ListenerService* addLocalStudyActions(MainWindow& window, DicomMenu& menu) {
     QObject::connect(leases, &StoreLeases::refused, &window, [&window](const QString& message) {
         window.statusBar()->showMessage(message, 15000);
     });
-    // The PACS browser's Open: a folder of the store is held open like one
-    // opened from Local Studies; anything else opens as it is.
+    // The PACS browser's Open: the retrieved study is held open like one opened from Local Studies.
     QObject::connect(
-        &menu, &DicomMenu::openFolder, leases, [&window, listener, leases](const QString& folder) {
-            const std::filesystem::path root = listener->storeFolder();
-            const std::filesystem::path relative =
-                std::filesystem::path(folder.toStdString()).lexically_relative(root);
-            const std::string study = relative.empty() ? std::string() : relative.begin()->string();
-            if (study.empty() || study == "." || study == "..") {
-                window.openDicom(folder);
-            } else {
-                leases->open(root, study, folder);
-            }
+        &menu, &DicomMenu::openFolder, leases,
+        [leases](const QString& folder, const QString& store, const QString& studyUid) {
+            leases->open(store.toStdString(), studyUid.toStdString(), folder);
         });
     menu.setListenerRunning(
         [guarded] { return guarded && guarded->state() == ListenerService::State::Running; });

@@ -230,7 +230,7 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     });
     connect(open_, &QPushButton::clicked, this, [this] {
         if (!retrievedFolder_.isEmpty()) {
-            emit openFolder(retrievedFolder_);
+            emit openFolder(retrievedFolder_, retrievedStore_, retrievedStudy_);
         }
     });
     connect(useMove_, &QRadioButton::toggled, this, &PacsBrowser::updateMoveNote);
@@ -446,11 +446,9 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
         return;
     }
     RetrieveJob job;
-    job.me = settings_.me;
+    job.settings = settings_;
     job.node = node->node;
     job.move = useMove_->isChecked();
-    job.storeFolder = settings_.storeFolder;
-    job.storeLimitBytes = settings_.storeLimitBytes;
     job.request.studyInstanceUid =
         studyResults_[static_cast<std::size_t>(studyRow)].studyInstanceUid;
     retrieveTotal_ = -1;
@@ -477,6 +475,8 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
         return;
     }
     retrievedFolder_.clear();
+    retrievedStore_ = QString::fromStdString(job.settings.storeFolder.string());
+    retrievedStudy_ = QString::fromStdString(job.request.studyInstanceUid);
     retrieve_ = std::make_shared<RetrieveControl>();
     progress_->setValue(0);
     progress_->resetFormat();

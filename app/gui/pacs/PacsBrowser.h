@@ -77,8 +77,9 @@ class PacsBrowser : public QDialog {
     [[nodiscard]] QPushButton* openButton() const noexcept { return open_; }
 
   signals:
-    /// Open was clicked: the retrieved series' (or study's) folder.
-    void openFolder(const QString& folder);
+    /// Open was clicked: the retrieved series' (or study's) folder, in the
+    /// study `studyUid` of the local store at `store`.
+    void openFolder(const QString& folder, const QString& store, const QString& studyUid);
     /// A search ended (its rows are in the study table).
     void searchFinished(bool ok);
     /// The series of the selected study are in the series table (or failed).
@@ -114,6 +115,8 @@ class PacsBrowser : public QDialog {
     std::shared_ptr<RetrieveControl> retrieve_;
     int retrieveTotal_ = -1;  ///< instances expected, when the PACS said
     QString retrievedFolder_;
+    QString retrievedStore_;  ///< the store and study of the last retrieve
+    QString retrievedStudy_;
 
     QComboBox* node_ = nullptr;
     QLineEdit* patientName_ = nullptr;

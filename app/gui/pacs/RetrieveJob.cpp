@@ -43,14 +43,14 @@ std::optional<std::filesystem::path> storedFolder(const pacs::LocalStore& store,
 RetrieveOutcome runRetrieve(const RetrieveJob& job, RetrieveControl& control) {
     RetrieveOutcome outcome;
     try {
-        pacs::LocalStore store(job.storeFolder);
-        store.setSizeLimit(job.storeLimitBytes);  // clean-up after the commit keeps this study
+        pacs::LocalStore store = openStore(job.settings);
+        const pacs::LocalAe& me = job.settings.me;
         const Progress progress(
             [&control](double fraction, std::string_view) { control.fraction = fraction; },
             control.stop.get_token());
         const pacs::RetrieveResult result =
-            job.move ? pacs::moveTo(job.me.aeTitle, job.me, job.node, job.request, progress)
-                     : pacs::getInto(store, job.me, job.node, job.request, progress);
+            job.move ? pacs::moveTo(me.aeTitle, me, job.node, job.request, progress)
+                     : pacs::getInto(store, me, job.node, job.request, progress);
         outcome.instances = result.instances;
         // C-GET has committed when it returns; C-MOVE's instances arrive at our
         // listener, which commits when Orthanc releases its association.

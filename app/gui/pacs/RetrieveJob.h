@@ -9,24 +9,24 @@
 
 #include <atomic>
 #include <cstddef>
-#include <cstdint>
 #include <filesystem>
 #include <stop_token>
 
 #include "gui/pacs/NetworkFailure.h"
+#include "gui/pacs/PacsSettings.h"
 #include "vv/pacs/Node.h"
 #include "vv/pacs/Retrieve.h"
 
 namespace vv::gui {
 
 struct RetrieveJob {
-    pacs::LocalAe me;
+    /// Our AE (settings.me) and the local store (openStore(settings): its
+    /// folder and size limit).
+    PacsSettings settings;
     pacs::Node node;
     pacs::RetrieveRequest request;
-    bool move = false;  ///< C-MOVE to me.aeTitle (our listener) instead of C-GET
-    std::filesystem::path storeFolder;
-    std::uint64_t storeLimitBytes = 0;  ///< the store's size limit (0: none), as in PacsSettings
-    int listenerWaitSeconds = 10;       ///< C-MOVE: how long the listener may take to commit
+    bool move = false;  ///< C-MOVE to settings.me.aeTitle (our listener) instead of C-GET
+    int listenerWaitSeconds = 10;  ///< C-MOVE: how long the listener may take to commit
 };
 
 /// Shared between the GUI and the worker.
