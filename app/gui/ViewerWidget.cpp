@@ -131,6 +131,7 @@ void ViewerWidget::releaseGl() {
 
 void ViewerWidget::setScene(std::shared_ptr<const scene::Scene> scene) {
     view_.setScene(std::move(scene));
+    view_.refinement().forgetCosts();  // another scene, other frame costs
     startPreviewGeometry();
     startClosureCheck();
     framesWithScene_ = 0;
@@ -431,7 +432,8 @@ void ViewerWidget::resizeGL(int w, int h) {
     // The camera works in logical pixels, like the mouse events.
     Q_UNUSED(w);
     Q_UNUSED(h);
-    frameDirty_ = true;  // a new buffer: nothing to reuse
+    frameDirty_ = true;                // a new buffer: nothing to reuse
+    view_.refinement().forgetCosts();  // other sizes, other frame costs
     camera_.setViewport(width(), height());
     viewOverlay_->setGeometry(rect());
 }

@@ -778,9 +778,11 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     };
     // VV_BENCH_FPS=0 leaves the rotations out (only the SSIM rows below).
     // The fixed 0.42 row: the budget's step below half size.
-    std::vector<Config> configs = {Config{true, 0.5F, 30.0}, Config{true, 0.5F, 0.0},
-                                   Config{true, 0.42F, 0.0}, Config{true, 1.0F, 0.0},
-                                   Config{false, 1.0F, 0.0}};
+    // Row 0: the default budget.
+    std::vector<Config> configs = {
+        Config{true, 0.5F, vv::render::RefinementPolicy::kDefaultFrameBudgetMs},
+        Config{true, 0.5F, 0.0}, Config{true, 0.42F, 0.0}, Config{true, 1.0F, 0.0},
+        Config{false, 1.0F, 0.0}};
     if (qEnvironmentVariable("VV_BENCH_FPS") == QStringLiteral("0")) {
         configs.clear();
     } else if (qEnvironmentVariable("VV_BENCH_FULL") == QStringLiteral("0")) {
@@ -838,7 +840,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         QElapsedTimer total;
         total.start();
         const double cpuAtStart = processCpuMilliseconds();
-        std::vector<double> costMs;  // what the frame budget saw
+        std::vector<double> costMs;                    // what the frame budget saw
+        std::map<std::pair<int, int>, int> sizesUsed;  // (render, VSS width): moves
         for (int i = 0; i < 30; ++i) {
             const quint64 frames = viewer.framesWithScene();
             QElapsedTimer t;
@@ -853,6 +856,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             moving.add(viewer);
             movingSize = viewer.lastRenderSize();
             movingVssSize = viewer.lastVssSize();
+            ++sizesUsed[{movingSize.width(), movingVssSize.width()}];
             movingLevel = viewer.lastGeometryLevel();
             movingCulled = viewer.lastCulledMeshes();
             const auto& s = viewer.vssStatus();
@@ -905,6 +909,11 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         std::sort(cpuMs.begin(), cpuMs.end());
         const int cores = QThread::idealThreadCount();
         if (config.budget > 0.0) {
+            std::printf("[bench]   frame budget: moves per render / VSS width:");
+            for (const auto& [widths, moves] : sizesUsed) {
+                std::printf(" %d/%d: %d", widths.first, widths.second, moves);
+            }
+            std::printf("\n");
             std::sort(costMs.begin(), costMs.end());
             std::printf(
                 "[bench]   frame budget: measured frame cost median %.1f ms (min %.1f, "

@@ -24,6 +24,7 @@ void RefinementPolicy::setInteractiveScale(float scale, float vssScale) noexcept
 
 void RefinementPolicy::setFrameBudget(double milliseconds) noexcept {
     frameBudgetMs_ = std::isfinite(milliseconds) ? std::max(milliseconds, 0.0) : 0.0;
+    forgetCosts();  // what fitted one budget says nothing about another
 }
 
 bool RefinementPolicy::cameraMoved() noexcept {
@@ -86,22 +87,59 @@ RefinementPolicy::AfterFrame RefinementPolicy::frameDrawn(const VssFrameStatus& 
     return after;
 }
 
+std::size_t RefinementPolicy::currentStep() const noexcept {
+    for (std::size_t i = 0; i < kSteps; ++i) {
+        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F &&
+            kVssScaleSteps[i] <= interactiveVssScale_ + 1e-4F) {
+            return i;
+        }
+    }
+    return kSteps - 1;
+}
+
+double RefinementPolicy::rememberedCost(std::size_t step) const noexcept {
+    const StepCost& cost = stepCosts_[step];
+    const bool known = cost.samples > 0 && measurements_ - cost.when < kCostMemory;
+    return known ? cost.milliseconds : 0.0;
+}
+
+double RefinementPolicy::expectedCost(std::size_t to, std::size_t from, double ms) const noexcept {
+    if (const double remembered = rememberedCost(to); remembered > 0.0) {
+        return remembered;
+    }
+    const auto size = [](std::size_t step) {
+        return 0.5 *
+               (static_cast<double>(kScaleSteps[step]) + static_cast<double>(kVssScaleSteps[step]));
+    };
+    return ms * std::pow(size(to) / size(from), kCostExponent);
+}
+
 void RefinementPolicy::frameMeasured(const FrameMeasurement& frame) noexcept {
     const double milliseconds = frameCostMilliseconds(frame);
     lastFrameCostMs_ = milliseconds;
-    // The first step at or below the current scales.
-    std::size_t step = kScaleSteps.size() - 1;
-    for (std::size_t i = 0; i < kScaleSteps.size(); ++i) {
-        if (kScaleSteps[i] <= interactiveScale_ + 1e-4F &&
-            kVssScaleSteps[i] <= interactiveVssScale_ + 1e-4F) {
-            step = i;
-            break;
-        }
+    ++measurements_;
+    std::size_t step = currentStep();
+    StepCost& cost = stepCosts_[step];
+    if (rememberedCost(step) > 0.0) {
+        cost.milliseconds = 0.5 * (cost.milliseconds + milliseconds);
+        cost.lowerOfLastTwo = std::min(cost.last, milliseconds);
+        ++cost.samples;
+    } else {
+        cost.milliseconds = milliseconds;
+        cost.lowerOfLastTwo = milliseconds;
+        cost.samples = 1;
     }
-    if (milliseconds > 1.15 * frameBudgetMs_ && step + 1 < kScaleSteps.size()) {
-        ++step;  // too slow: ~0.7 of the pixels
-    } else if (milliseconds < 0.6 * frameBudgetMs_ && step > 0) {
-        --step;  // ~1.4x the pixels would still fit
+    cost.last = milliseconds;
+    cost.when = measurements_;
+    // Too slow: two frames in a row over the budget (one costly frame, such
+    // as the first at a new size, is not enough), or one far over it.
+    const bool tooSlow =
+        (cost.samples >= 2 && cost.lowerOfLastTwo > kStepDownFactor * frameBudgetMs_) ||
+        milliseconds > kFarOverFactor * frameBudgetMs_;
+    if (tooSlow) {
+        step = std::min(step + 1, kSteps - 1);
+    } else if (step > 0 && expectedCost(step - 1, step, cost.milliseconds) <= frameBudgetMs_) {
+        --step;  // the larger step is expected to fit
     }
     nextInteractiveScale_ = kScaleSteps[step];
     nextVssScale_ = kVssScaleSteps[step];

@@ -28,16 +28,30 @@ namespace vv::render {
 ///
 /// Dynamic resolution (a frame budget > 0): each moving frame's measured
 /// cost (frameCostMilliseconds: CPU and GPU work, not wall time lost to
-/// other processes) steps the sizes of the next camera move's frames through
-/// kScaleSteps / kVssScaleSteps — down when it took over 1.15 x the budget,
-/// up when under 0.6 x; in between it holds (a preview VSS shows only at the
-/// size it was solved at, so the sizes change only between moves). Down to
-/// 0.35, the VSS is solved and shaded at the render size (the cheapest
-/// frames with SSIM >= 0.9 against the settled frame are all at one size:
-/// docs/benchmarks/render.md, "Moving frames, round 4"); below that, the
-/// VSS drops to a quarter while the vessels keep the larger render size
-/// (sharper edges than the VSS's size would give them), and only then does
-/// the render size drop too.
+/// other processes) chooses the sizes of the next camera move's frames
+/// among kScaleSteps / kVssScaleSteps (a preview VSS shows only at the size
+/// it was solved at, so the sizes change only between moves). The policy
+/// remembers what each step cost (a running mean in which each new
+/// measurement weighs half, forgotten kCostMemory measurements after that
+/// step was last measured) and
+///  - steps down when the current step's last two measurements are both
+///    over kStepDownFactor x the budget, or one is over kFarOverFactor x
+///    (so the first, costlier frame at a new size — its framebuffers
+///    are allocated then — does not push it further than it needs);
+///  - steps up when the step above is expected to fit the budget: its
+///    remembered cost, or, not known, the current cost scaled by
+///    kCostExponent of the steps' sizes (fitted on llvmpipe, where a frame
+///    has a large part that does not shrink with the render size:
+///    docs/benchmarks/render.md, "Moving frames, round 7");
+///  - holds otherwise.
+/// So it settles on the largest step that fits, and does not ping-pong
+/// between a step that fits and one that does not. Down to 0.35, the VSS is
+/// solved and shaded at the render size (the cheapest frames with SSIM >=
+/// 0.9 against the settled frame are all at one size: docs/benchmarks/
+/// render.md, "Moving frames, round 4"); below that, the VSS drops to a
+/// quarter while the vessels keep the larger render size (sharper edges
+/// than the VSS's size would give them), and only then does the render size
+/// drop too.
 class RefinementPolicy {
   public:
     enum class Phase { Still, Moving, Settled };
@@ -51,6 +65,20 @@ class RefinementPolicy {
     static constexpr std::array<float, 10> kVssScaleSteps = {1.0F,  0.84F, 0.71F, 0.6F,  0.5F,
                                                              0.42F, 0.35F, 0.25F, 0.25F, 0.25F};
     static constexpr float kMinInteractiveScale = kScaleSteps.back();
+    /// The default frame budget (ms of measured work per moving frame): a
+    /// frame every 33 ms (30 fps) less the ~2 ms between the measured span
+    /// and the next frame on llvmpipe, less a 10 % margin for the spread of
+    /// one frame's cost (docs/benchmarks/render.md, "Moving frames, round 7").
+    static constexpr double kDefaultFrameBudgetMs = 28.0;
+    /// Step down when the remembered cost is over this times the budget.
+    static constexpr double kStepDownFactor = 1.05;
+    /// Step down at once when one frame costs over this times the budget.
+    static constexpr double kFarOverFactor = 1.3;
+    /// A step's cost is expected to grow with its size to this power (the
+    /// size: the mean of the render and VSS scales).
+    static constexpr double kCostExponent = 0.7;
+    /// A step's remembered cost is forgotten after this many measurements.
+    static constexpr unsigned kCostMemory = 24;
 
     [[nodiscard]] Phase phase() const noexcept;
     /// True while the camera moves (frames use the preview VSS).
@@ -76,10 +104,14 @@ class RefinementPolicy {
     /// The scale of the full size moving frames solve and shade their VSS
     /// at (at most interactiveScale(); chosen with it).
     [[nodiscard]] float interactiveVssScale() const noexcept { return interactiveVssScale_; }
-    /// The frame budget in milliseconds (default 30); 0 = a fixed scale.
+    /// The frame budget in milliseconds (default kDefaultFrameBudgetMs); 0 =
+    /// a fixed scale. Changing it forgets what the steps cost.
     /// Non-finite or negative values count as 0.
     void setFrameBudget(double milliseconds) noexcept;
     [[nodiscard]] double frameBudget() const noexcept { return frameBudgetMs_; }
+    /// Forgets what the steps cost (the scene or the view's size changed):
+    /// the next measurements choose from scratch.
+    void forgetCosts() noexcept { stepCosts_ = {}; }
 
     /// The user changed the camera. Returns true when the view now moves
     /// (progressive refinement on): the caller (re)starts its settle timer.
@@ -109,7 +141,8 @@ class RefinementPolicy {
     /// A measured moving frame (drawing to the swap) cost
     /// frameCostMilliseconds(`frame`): its own work, not the time other
     /// processes held the cores (a loaded machine does not push the sizes
-    /// down). Chooses the scale of the next camera move.
+    /// down). Chooses the scale of the next camera move (see the class
+    /// comment).
     void frameMeasured(const FrameMeasurement& frame) noexcept;
     /// A measured moving frame known only by its wall time.
     void frameMeasured(double wallMilliseconds) noexcept {
@@ -125,6 +158,25 @@ class RefinementPolicy {
     [[nodiscard]] float nextInteractiveVssScale() const noexcept { return nextVssScale_; }
 
   private:
+    /// What one step cost: a running mean in which each new measurement
+    /// weighs half.
+    struct StepCost {
+        double milliseconds = 0.0;
+        double last = 0.0;            ///< the last measurement
+        double lowerOfLastTwo = 0.0;  ///< the lower of the last two
+        unsigned samples = 0;         ///< 0: not known (or forgotten)
+        unsigned long long when = 0;  ///< the measurement's number
+    };
+    static constexpr std::size_t kSteps = kScaleSteps.size();
+    /// The step of the current scales (the first at or below them).
+    [[nodiscard]] std::size_t currentStep() const noexcept;
+    /// The remembered cost of `step`, or 0 when it is not known.
+    [[nodiscard]] double rememberedCost(std::size_t step) const noexcept;
+    /// What `to` is expected to cost, given that `from` costs `ms`.
+    [[nodiscard]] double expectedCost(std::size_t to, std::size_t from, double ms) const noexcept;
+
+    std::array<StepCost, kSteps> stepCosts_{};
+    unsigned long long measurements_ = 0;
     bool progressive_ = true;
     bool moving_ = false;
     bool cameraMoved_ = false;     ///< the camera changed since the last frame
@@ -133,7 +185,7 @@ class RefinementPolicy {
     float interactiveVssScale_ = 0.5F;
     float nextInteractiveScale_ = 0.5F;
     float nextVssScale_ = 0.5F;
-    double frameBudgetMs_ = 30.0;
+    double frameBudgetMs_ = kDefaultFrameBudgetMs;
     double lastFrameCostMs_ = 0.0;
 };
 
