@@ -79,11 +79,14 @@ struct UpscaleData {
     FinalData final;
     Handle<Texture> height;
     Handle<CpuValue<ShownVss>> shown;
+    Handle<Texture> depth;
+    Handle<CpuValue<DepthImage>> depthImage;
 };
 
-/// The upscale's rectangles: split by the shown VSS's heights
-/// (UpscaleTiles.h) when they are what the height texture holds; else the
-/// whole target, with iso-lines when there are any.
+/// The upscale's rectangles (UpscaleTiles.h): by the shown VSS's heights
+/// when they are what the height texture holds (else the iso-lines
+/// everywhere), and by the render size's depth when it is the colour's
+/// size (else the edge program everywhere).
 UpscaleTiles upscaleTiles(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
                           const UpscaleData& d) {
     // Target pixels: llvmpipe's bins (scissors on their edges leave whole
@@ -92,19 +95,25 @@ UpscaleTiles upscaleTiles(const UpscaleInputs& inputs, const RenderGraph::Resour
     // rotating benchmark's frames at 0.5, interleaved; 32 px: 3.2 / 5.7,
     // 16 px: 4.2 / 6.8): half the target needed the iso-lines.
     constexpr int kTile = 64;
-    if (inputs.isoLines > 0) {
+    UpscaleTileMaps maps{.isoLines = std::max(inputs.isoLines, 0),
+                         .isoLineWidth = std::max(inputs.isoLineWidth, 0.0F),
+                         .edges = inputs.sharpEdges};
+    if (maps.isoLines > 0) {
         const ShownVss& shown = r.get(d.shown).value();
         const auto& texture = r.get(d.height).descriptor();
         if (shown.frame != nullptr && shown.frame->height.width() == texture.width &&
             shown.frame->height.height() == texture.height) {
-            return splitUpscaleTiles(shown.frame->height, inputs.targetSize, inputs.isoLines,
-                                     std::max(inputs.isoLineWidth, 0.0F), kTile);
+            maps.height = &shown.frame->height;
         }
     }
-    UpscaleTiles all;
-    (inputs.isoLines > 0 ? all.lines : all.plain)
-        .emplace_back(0, 0, inputs.targetSize.x, inputs.targetSize.y);
-    return all;
+    if (maps.edges) {
+        const Image<float>* depth = r.get(d.depthImage).value().image.get();
+        const auto& color = r.get(d.final.input).descriptor();
+        if (depth != nullptr && depth->width() == color.width && depth->height() == color.height) {
+            maps.depth = depth;
+        }
+    }
+    return splitUpscaleTiles(maps, inputs.targetSize, kTile);
 }
 
 /// Draws the full-screen triangle with `program` (bound, its uniforms
@@ -116,6 +125,30 @@ void drawRects(QOpenGLFunctions_4_1_Core& g, unsigned vao, const std::vector<glm
         g.glDrawArrays(GL_TRIANGLES, 0, 3);
     }
     g.glBindVertexArray(0);
+}
+
+/// Draws `rects` with `program` (upscale.frag; `lines`: its iso-lines,
+/// `edges`: its EDGES variant) from the textures on units 0 (colour), 1
+/// (height) and 2 (depth).
+void drawUpscale(const UpscaleInputs& inputs, const Program& program,
+                 const std::vector<glm::ivec4>& rects, bool lines, bool edges,
+                 glm::vec2 texelsPerPixel) {
+    if (rects.empty()) {
+        return;
+    }
+    program.use();
+    program.set("uColor", 0);
+    if (lines) {
+        program.set("uHeight", 1);
+        program.set("uIsoLines", std::max(inputs.isoLines, 0));
+        program.set("uIsoWidth", std::max(inputs.isoLineWidth, 0.0F));
+        program.set("uIsoStrength", inputs.isoLineStrength);
+    }
+    if (edges) {
+        program.set("uDepth", 2);
+        program.set("uTexelsPerPixel", texelsPerPixel);
+    }
+    drawRects(*inputs.context.gl, inputs.context.emptyVao, rects);
 }
 
 void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const UpscaleData& d) {
@@ -130,24 +163,22 @@ void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const
     setFilter(g, color, GL_LINEAR);
     g.glActiveTexture(GL_TEXTURE1);
     setFilter(g, height, GL_LINEAR);
+    // The depth: gathered (nearest).
+    g.glActiveTexture(GL_TEXTURE2);
+    g.glBindTexture(GL_TEXTURE_2D, inputs.sharpEdges ? glTex(r.get(d.depth)).texture() : 0U);
     g.glEnable(GL_SCISSOR_TEST);
-    if (!tiles.plain.empty()) {
-        const Program& program = context.programs->upscaleColor;
-        program.use();
-        program.set("uColor", 0);
-        drawRects(g, context.emptyVao, tiles.plain);
-    }
-    if (!tiles.lines.empty()) {
-        const Program& program = context.programs->upscale;
-        program.use();
-        program.set("uColor", 0);
-        program.set("uHeight", 1);
-        program.set("uIsoLines", std::max(inputs.isoLines, 0));
-        program.set("uIsoWidth", std::max(inputs.isoLineWidth, 0.0F));
-        program.set("uIsoStrength", inputs.isoLineStrength);
-        drawRects(g, context.emptyVao, tiles.lines);
-    }
+    const auto& size = r.get(d.final.input).descriptor();
+    const glm::vec2 texelsPerPixel =
+        glm::vec2(static_cast<float>(size.width), static_cast<float>(size.height)) /
+        glm::vec2(inputs.targetSize);
+    const FullscreenPrograms& programs = *context.programs;
+    drawUpscale(inputs, programs.upscaleColor, tiles.plain, false, false, texelsPerPixel);
+    drawUpscale(inputs, programs.upscale, tiles.lines, true, false, texelsPerPixel);
+    drawUpscale(inputs, programs.upscaleEdgesColor, tiles.edges, false, true, texelsPerPixel);
+    drawUpscale(inputs, programs.upscaleEdges, tiles.linesAndEdges, true, true, texelsPerPixel);
     g.glDisable(GL_SCISSOR_TEST);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    g.glActiveTexture(GL_TEXTURE1);
     setFilter(g, height, GL_NEAREST);
     g.glBindTexture(GL_TEXTURE_2D, 0);
     g.glActiveTexture(GL_TEXTURE0);
@@ -164,6 +195,10 @@ FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs) {
             if (inputs.isoLines > 0) {
                 d.height = b.read<Texture>(board::kVssHeight);
                 d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
+            }
+            if (inputs.sharpEdges) {
+                d.depth = b.read<Texture>(board::kLinearDepth);
+                d.depthImage = b.read<CpuValue<DepthImage>>(board::kLinearDepthImage);
             }
             d.final.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
             d.final.target =

@@ -26,6 +26,10 @@ struct UpscaleInputs {
     int isoLines = 0;
     float isoLineWidth = 1.5F;  ///< target pixels
     float isoLineStrength = 0.0F;
+    /// Vessel silhouettes drawn at the target's resolution (upscale.frag's
+    /// EDGES variant, where board::kLinearDepthImage says a tile holds one),
+    /// from board::kLinearDepth; false = every pixel bilinear.
+    bool sharpEdges = true;
 };
 
 struct FinalOutputs {
@@ -38,10 +42,10 @@ FinalOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs);
 
 /// "upscale": board::kComposited into board::kOutput with bilinear
 /// interpolation (four texel fetches a pixel: about what a blit costs on
-/// software rasterisers, where FXAA at the target size costs twice that), and
-/// the VSS iso-lines drawn at the target's resolution (upscale.frag): frames
-/// that favour speed (the camera moving). Leaves the output's framebuffer
-/// bound.
+/// software rasterisers, where FXAA at the target size costs twice that),
+/// the VSS iso-lines and the vessels' silhouettes drawn at the target's
+/// resolution (upscale.frag): frames that favour speed (the camera moving).
+/// Leaves the output's framebuffer bound.
 FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs);
 
 }  // namespace vv::render

@@ -34,6 +34,11 @@ FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
     const std::string_view colorOnly[] = {"COLOR_ONLY"};
     programs.upscaleColor =
         Program(gl, kFullscreen, upscaleFragment, "upscale (colour only)", colorOnly);
+    const std::string_view edges[] = {"EDGES"};
+    const std::string_view edgesColorOnly[] = {"EDGES", "COLOR_ONLY"};
+    programs.upscaleEdges = Program(gl, kFullscreen, upscaleFragment, "upscale (edges)", edges);
+    programs.upscaleEdgesColor =
+        Program(gl, kFullscreen, upscaleFragment, "upscale (edges, colour only)", edgesColorOnly);
     return programs;
 }
 

@@ -34,6 +34,10 @@ struct FullscreenPrograms {
     Program upscale;  ///< upscale.frag: a reduced frame into the target, iso-lines at its size
     /// upscale.frag with COLOR_ONLY: where no iso-line reaches (UpscaleTiles.h).
     Program upscaleColor;
+    /// upscale.frag with EDGES (and COLOR_ONLY): where a vessel silhouette
+    /// lies (and no iso-line reaches).
+    Program upscaleEdges;
+    Program upscaleEdgesColor;
 
     /// Builds them all in the current context. Throws RenderError when a
     /// shader fails.
