@@ -38,6 +38,56 @@ uniform vec2 uTexelsPerPixel;    // render pixels per target pixel, per axis
 out vec4 fragColor;
 
 #ifdef EDGES
+// How far the edge search looks along a silhouette, each way (render pixels).
+const int kSearch = 6;
+
+// 1 on a vessel texel of the render size (clamped to its edge), else 0.
+float vesselAt(ivec2 t) {
+    ivec2 hi = textureSize(uDepth, 0) - 1;
+    return texelFetch(uDepth, clamp(t, ivec2(0), hi), 0).r < 3.0e38 ? 1.0 : 0.0;
+}
+
+// The silhouette through the texel pair (c, c + across), `low` the class
+// of c and the other texel's the other (a step of the render size's
+// staircase), as a line rebuilt from the run of such pairs along `along`:
+// the run's ends, where the edge steps a texel up or down, lie half a
+// texel from the pairs' midline, a step up at one end and down at the
+// other makes one straight line through the run, a step at one end a
+// ramp over that half (the render size's staircase smoothed the way MLAA
+// does). Returns the edge's offset from the midline (texels towards
+// c + across) at `x` texels along from c, and its slope.
+vec2 runEdge(ivec2 c, ivec2 along, ivec2 across, float low, float x) {
+    float ends[2];
+    float lengths[2];
+    for (int side = 0; side < 2; ++side) {
+        ivec2 step = side == 0 ? -along : along;
+        ends[side] = 0.0;
+        lengths[side] = 0.0;
+        for (int k = 1; k <= kSearch; ++k) {
+            ivec2 t = c + k * step;
+            float a = vesselAt(t);
+            float b = vesselAt(t + across);
+            if (a == low && b != low) {
+                lengths[side] = float(k);
+                continue;
+            }
+            // Both of the low class: the edge moved towards `across`;
+            // both of the other: away from it; swapped: no step.
+            ends[side] = a == b ? (a == low ? 1.0 : -1.0) : 0.0;
+            break;
+        }
+    }
+    float n = lengths[0] + lengths[1] + 1.0;
+    float t = (x + lengths[0] + 0.5) / n;  // 0 .. 1 over the run
+    if (ends[0] != 0.0 && ends[0] == -ends[1]) {
+        return vec2(ends[0] * 0.5 * (1.0 - 2.0 * t), -ends[0] / n);
+    }
+    float left = 1.0 - 2.0 * t;
+    float right = 2.0 * t - 1.0;
+    return vec2(ends[0] * 0.5 * max(left, 0.0) + ends[1] * 0.5 * max(right, 0.0),
+                (left > 0.0 ? -ends[0] : ends[1]) / n);
+}
+
 // The composited colour at uv near a vessel silhouette (`bilinear`: its
 // bilinear tap, kept where the footprint is all one kind). The gather's
 // and the fetches' texels are the footprint's: (0, 1), (1, 1), (1, 0),
@@ -55,21 +105,42 @@ vec4 edgeAware(vec2 uv, vec4 bilinear) {
         return bilinear;
     }
     vec2 f = p - i0;
-    ivec2 hi = textureSize(uColor, 0) - 1;
-    ivec2 t = ivec2(i0);
-    vec4 c01 = texelFetch(uColor, clamp(t + ivec2(0, 1), ivec2(0), hi), 0);
-    vec4 c11 = texelFetch(uColor, clamp(t + ivec2(1, 1), ivec2(0), hi), 0);
-    vec4 c10 = texelFetch(uColor, clamp(t + ivec2(1, 0), ivec2(0), hi), 0);
-    vec4 c00 = texelFetch(uColor, clamp(t, ivec2(0), hi), 0);
+    ivec2 t0 = ivec2(i0);
+    // The bilinear coverage and its gradient per target pixel: the edge's
+    // direction, and where no run is found its 0.5 contour.
     vec4 w = vec4((1.0 - f.x) * f.y, f.x * f.y, f.x * (1.0 - f.y), (1.0 - f.x) * (1.0 - f.y));
-    // The bilinear coverage, its gradient per target pixel, and the signed
-    // distance (target pixels) to its 0.5 contour.
     float coverage = dot(w, v);
     vec2 gradient = vec2((1.0 - f.y) * (v.z - v.w) + f.y * (v.y - v.x),
                          (1.0 - f.x) * (v.x - v.w) + f.x * (v.y - v.z)) *
                     uTexelsPerPixel;
-    float distance = (coverage - 0.5) / max(length(gradient), 1e-4);
-    float alpha = clamp(distance + 0.5, 0.0, 1.0);
+    float alpha = clamp((coverage - 0.5) / max(length(gradient), 1e-4) + 0.5, 0.0, 1.0);
+    // A flatter edge is a run of pairs along x (one above the other), a
+    // steeper one along y. The pair nearest the pixel, else the other.
+    bool flatter = abs(gradient.y) >= abs(gradient.x);
+    ivec2 along = flatter ? ivec2(1, 0) : ivec2(0, 1);
+    ivec2 across = flatter ? ivec2(0, 1) : ivec2(1, 0);
+    float fa = flatter ? f.x : f.y;
+    float fb = flatter ? f.y : f.x;
+    vec2 pair0 = flatter ? v.wx : v.wz;  // (low, other) of the footprint's first pair
+    vec2 pair1 = flatter ? v.zy : v.xy;
+    bool second = (fa >= 0.5 && pair1.x != pair1.y) || pair0.x == pair0.y;
+    vec2 pair = second ? pair1 : pair0;
+    if (pair.x != pair.y) {
+        vec2 edge = runEdge(t0 + (second ? along : ivec2(0)), along, across, pair.x,
+                            fa - (second ? 1.0 : 0.0));
+        float tAlong = flatter ? uTexelsPerPixel.x : uTexelsPerPixel.y;
+        float tAcross = flatter ? uTexelsPerPixel.y : uTexelsPerPixel.x;
+        // Target pixels from the line (towards `across`), across it.
+        float d = (fb - 0.5 - edge.x) / tAcross /
+                  sqrt(1.0 + edge.y * edge.y * tAlong * tAlong / (tAcross * tAcross));
+        float lowSide = clamp(0.5 - d, 0.0, 1.0);
+        alpha = pair.x == 1.0 ? lowSide : 1.0 - lowSide;
+    }
+    ivec2 hi = textureSize(uColor, 0) - 1;
+    vec4 c01 = texelFetch(uColor, clamp(t0 + ivec2(0, 1), ivec2(0), hi), 0);
+    vec4 c11 = texelFetch(uColor, clamp(t0 + ivec2(1, 1), ivec2(0), hi), 0);
+    vec4 c10 = texelFetch(uColor, clamp(t0 + ivec2(1, 0), ivec2(0), hi), 0);
+    vec4 c00 = texelFetch(uColor, clamp(t0, ivec2(0), hi), 0);
     // Each side's colour from its texels; the small floor keeps a side's
     // colour defined where its weights vanish (there it is not seen).
     vec4 wv = (w + 1e-3) * v;

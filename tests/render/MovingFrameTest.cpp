@@ -445,10 +445,14 @@ TEST_F(MovingFrameTest, VesselEdgesStaySharpWhileMoving) {
         "%zu edge crossings: |moving - settled| mean %.2f, 95th percentile %.2f px; "
         "10-90 %% width median %.2f, 95th percentile %.2f px\n",
         edges.size(), mean, percentile(offsets, 0.95), width, percentile(widths, 0.95));
+    // Bilinear: widths 2.30 (median) and 3.88 (95th percentile), the edge
+    // 0.52 (mean) and 1.21 (95th) off the settled one (whose own steps are
+    // +-0.5). Drawn as the silhouette rebuilt from the render pixels'
+    // steps: 1.52 / 1.60 wide (one pixel of anti-aliasing), 0.32 / 0.88 off.
     EXPECT_LT(width, 1.8);
     EXPECT_LT(percentile(widths, 0.95), 2.5);
-    EXPECT_LT(mean, 0.7);
-    EXPECT_LT(percentile(offsets, 0.95), 1.5);
+    EXPECT_LT(mean, 0.42);
+    EXPECT_LT(percentile(offsets, 0.95), 1.05);
 }
 
 }  // namespace
