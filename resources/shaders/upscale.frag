@@ -14,14 +14,17 @@
 // a bilinear blit does only when it samples this little.
 // Built with COLOR_ONLY for the parts of the target no iso-line reaches
 // (UpscaleTiles.h): one tap a pixel, the same pixels there.
-// Built with EDGES (with or without COLOR_ONLY) for the parts that hold a
-// vessel silhouette: where the pixel's bilinear footprint has vessel and
+// Built with EDGES (with or without COLOR_ONLY) over the rectangles that
+// hold a vessel silhouette (drawn after the rest, over rects.vert): where the pixel's bilinear footprint has vessel and
 // non-vessel texels (by the render size's depth), the silhouette is the
-// 0.5 iso-contour of the bilinear vessel coverage, drawn at the target's
-// resolution with one target pixel of anti-aliasing, each side coloured
-// from its own texels only (the bilinear weights of that side,
-// renormalised): no render pixel's blur across the edge, and neither side's
-// colour bleeding into the other. Elsewhere the same single tap.
+// straight edge rebuilt from the render size's staircase on the CPU
+// (SilhouetteRuns.h) through the footprint's pair of texels nearest the
+// pixel that straddles it (without one, the 0.5 contour of the bilinear
+// vessel coverage), drawn at the target's resolution with one target pixel
+// of anti-aliasing, each side coloured from its own texels only (the
+// bilinear weights of that side, renormalised): no render pixel's blur or
+// step across the edge, and neither side's colour bleeding into the other.
+// Elsewhere the same single tap.
 
 in vec2 vUv;
 
@@ -33,61 +36,16 @@ uniform float uIsoStrength; // 0..1
 #ifdef EDGES
 uniform sampler2D uDepth;        // R32F linear depth at the render size: finite on vessel pixels
 uniform vec2 uTexelsPerPixel;    // render pixels per target pixel, per axis
+// RGBA8 at the render size (SilhouetteRuns.h): per texel, where the
+// silhouette through its pair with the texel above crosses the pair's
+// left and right sides (rg), and through its pair with the texel to the
+// right the pair's lower and upper sides (ba), + 0.5 texel.
+uniform sampler2D uRuns;
 #endif
 
 out vec4 fragColor;
 
 #ifdef EDGES
-// How far the edge search looks along a silhouette, each way (render pixels).
-const int kSearch = 6;
-
-// 1 on a vessel texel of the render size (clamped to its edge), else 0.
-float vesselAt(ivec2 t) {
-    ivec2 hi = textureSize(uDepth, 0) - 1;
-    return texelFetch(uDepth, clamp(t, ivec2(0), hi), 0).r < 3.0e38 ? 1.0 : 0.0;
-}
-
-// The silhouette through the texel pair (c, c + across), `low` the class
-// of c and the other texel's the other (a step of the render size's
-// staircase), as a line rebuilt from the run of such pairs along `along`:
-// the run's ends, where the edge steps a texel up or down, lie half a
-// texel from the pairs' midline, a step up at one end and down at the
-// other makes one straight line through the run, a step at one end a
-// ramp over that half (the render size's staircase smoothed the way MLAA
-// does). Returns the edge's offset from the midline (texels towards
-// c + across) at `x` texels along from c, and its slope.
-vec2 runEdge(ivec2 c, ivec2 along, ivec2 across, float low, float x) {
-    float ends[2];
-    float lengths[2];
-    for (int side = 0; side < 2; ++side) {
-        ivec2 step = side == 0 ? -along : along;
-        ends[side] = 0.0;
-        lengths[side] = 0.0;
-        for (int k = 1; k <= kSearch; ++k) {
-            ivec2 t = c + k * step;
-            float a = vesselAt(t);
-            float b = vesselAt(t + across);
-            if (a == low && b != low) {
-                lengths[side] = float(k);
-                continue;
-            }
-            // Both of the low class: the edge moved towards `across`;
-            // both of the other: away from it; swapped: no step.
-            ends[side] = a == b ? (a == low ? 1.0 : -1.0) : 0.0;
-            break;
-        }
-    }
-    float n = lengths[0] + lengths[1] + 1.0;
-    float t = (x + lengths[0] + 0.5) / n;  // 0 .. 1 over the run
-    if (ends[0] != 0.0 && ends[0] == -ends[1]) {
-        return vec2(ends[0] * 0.5 * (1.0 - 2.0 * t), -ends[0] / n);
-    }
-    float left = 1.0 - 2.0 * t;
-    float right = 2.0 * t - 1.0;
-    return vec2(ends[0] * 0.5 * max(left, 0.0) + ends[1] * 0.5 * max(right, 0.0),
-                (left > 0.0 ? -ends[0] : ends[1]) / n);
-}
-
 // The composited colour at uv near a vessel silhouette (`bilinear`: its
 // bilinear tap, kept where the footprint is all one kind). The gather's
 // and the fetches' texels are the footprint's: (0, 1), (1, 1), (1, 0),
@@ -126,8 +84,11 @@ vec4 edgeAware(vec2 uv, vec4 bilinear) {
     bool second = (fa >= 0.5 && pair1.x != pair1.y) || pair0.x == pair0.y;
     vec2 pair = second ? pair1 : pair0;
     if (pair.x != pair.y) {
-        vec2 edge = runEdge(t0 + (second ? along : ivec2(0)), along, across, pair.x,
-                            fa - (second ? 1.0 : 0.0));
+        // The silhouette through the pair: its offset from the pair's
+        // midline at the pixel, and its slope (texels).
+        vec4 runs = texelFetch(uRuns, t0 + (second ? along : ivec2(0)), 0) - 0.5;
+        vec2 sides = flatter ? runs.xy : runs.zw;
+        vec2 edge = vec2(mix(sides.x, sides.y, fa - (second ? 0.5 : -0.5)), sides.y - sides.x);
         float tAlong = flatter ? uTexelsPerPixel.x : uTexelsPerPixel.y;
         float tAcross = flatter ? uTexelsPerPixel.y : uTexelsPerPixel.x;
         // Target pixels from the line (towards `across`), across it.

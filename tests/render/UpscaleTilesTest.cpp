@@ -1,9 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The "upscale" pass draws the iso-lines only in the parts of the target
-// splitUpscaleTiles says they can reach, and the vessel edges only in those
-// it says hold one: checked against upscale.frag's coverage and its edge
-// test, evaluated here pixel by pixel as the shader does (bilinear height,
-// derivatives within 2x2 quads; the bilinear footprint's depths).
+// splitUpscaleTiles says they can reach: checked against upscale.frag's
+// coverage, evaluated here pixel by pixel as the shader does (bilinear
+// height, derivatives within 2x2 quads).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -53,13 +52,6 @@ double coverage(const Image<float>& h, glm::ivec2 target, int x, int y, int line
     return 1.0 - t * t * (3 - 2 * t);
 }
 
-/// The tiles of the iso-lines alone (no edges asked for).
-UpscaleTiles lineTiles(const Image<float>& height, glm::ivec2 target, int lines, float width,
-                       int tile) {
-    return splitUpscaleTiles({.isoLines = lines, .isoLineWidth = width, .height = &height}, target,
-                             tile);
-}
-
 bool inside(const std::vector<glm::ivec4>& rects, int x, int y) {
     return std::any_of(rects.begin(), rects.end(), [&](const glm::ivec4& r) {
         return x >= r.x && x < r.z && y >= r.y && y < r.w;
@@ -91,15 +83,13 @@ TEST(UpscaleTilesTest, NoPixelOutsideTheLineTilesGetsIsoLineCoverage) {
         for (const int lines : {4, 8, 20}) {
             for (const float width : {1.5F, 4.0F}) {
                 const glm::ivec2 target(333, 181);
-                const UpscaleTiles tiles = lineTiles(height, target, lines, width, 16);
+                const UpscaleTiles tiles = splitUpscaleTiles(height, target, lines, width, 16);
                 long long plainPixels = 0;
                 long long coveredPixels = 0;
                 for (int y = 0; y < target.y; ++y) {
                     for (int x = 0; x < target.x; ++x) {
                         const bool plain = inside(tiles.plain, x, y);
                         ASSERT_NE(plain, inside(tiles.lines, x, y)) << "every pixel once";
-                        ASSERT_FALSE(inside(tiles.edges, x, y) ||
-                                     inside(tiles.linesAndEdges, x, y));
                         const double c = coverage(height, target, x, y, lines, width);
                         coveredPixels += c > 0.0 ? 1 : 0;
                         if (plain) {
@@ -122,122 +112,28 @@ TEST(UpscaleTilesTest, NoPixelOutsideTheLineTilesGetsIsoLineCoverage) {
 
 TEST(UpscaleTilesTest, WithoutIsoLinesOrLevelsEverythingIsPlain) {
     const glm::ivec2 target(100, 60);
-    UpscaleTiles tiles = lineTiles(bowl(50, 30), target, 0, 1.5F, 16);
+    UpscaleTiles tiles = splitUpscaleTiles(bowl(50, 30), target, 0, 1.5F, 16);
     EXPECT_TRUE(tiles.lines.empty());
     // Neighbours along a row merge: one rectangle per row of tiles.
     ASSERT_EQ(tiles.plain.size(), 4U);
     EXPECT_EQ(tiles.plain.front(), glm::ivec4(0, 0, 100, 16));
     EXPECT_EQ(tiles.plain.back(), glm::ivec4(0, 48, 100, 60));
     // A flat height between two levels: no line anywhere.
-    tiles = lineTiles(Image<float>(50, 30, 0.3F), target, 8, 1.5F, 16);
+    tiles = splitUpscaleTiles(Image<float>(50, 30, 0.3F), target, 8, 1.5F, 16);
     EXPECT_TRUE(tiles.lines.empty());
     // On a level: lines everywhere (a flat height on a level is all line).
-    tiles = lineTiles(Image<float>(50, 30, 0.25F), target, 8, 1.5F, 16);
+    tiles = splitUpscaleTiles(Image<float>(50, 30, 0.25F), target, 8, 1.5F, 16);
     EXPECT_TRUE(tiles.plain.empty());
-}
-
-/// Whether upscale.frag's EDGES variant sees a silhouette at target pixel
-/// (x, y): its bilinear footprint (the 2x2 texels around the pixel's
-/// centre, clamped to the edge) holds vessel (finite) and other depths.
-bool edgePixel(const Image<float>& depth, glm::ivec2 target, int x, int y) {
-    const double tx = (x + 0.5) * depth.width() / target.x - 0.5;
-    const double ty = (y + 0.5) * depth.height() / target.y - 0.5;
-    const int x0 = static_cast<int>(std::floor(tx));
-    const int y0 = static_cast<int>(std::floor(ty));
-    int vessels = 0;
-    for (int j = 0; j < 2; ++j) {
-        for (int i = 0; i < 2; ++i) {
-            vessels += std::isfinite(depth(std::clamp(x0 + i, 0, depth.width() - 1),
-                                           std::clamp(y0 + j, 0, depth.height() - 1)))
-                           ? 1
-                           : 0;
-        }
-    }
-    return vessels > 0 && vessels < 4;
-}
-
-/// A render size's depth with vessels: a slanted band and a disc (finite),
-/// the rest +Inf.
-Image<float> vesselDepth(int w, int h) {
-    Image<float> depth(w, h, std::numeric_limits<float>::infinity());
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const double u = static_cast<double>(x) / w;
-            const double v = static_cast<double>(y) / h;
-            const bool band = std::abs(v - 0.3 - 0.4 * u) < 0.05;
-            const bool disc = std::hypot(u - 0.75, v - 0.25) < 0.12;
-            if (band || disc) {
-                depth(x, y) = static_cast<float>(1.0 + u);
-            }
-        }
-    }
-    return depth;
-}
-
-TEST(UpscaleTilesTest, EveryPixelOnAVesselEdgeIsInAnEdgeTile) {
-    for (const glm::ivec2 size : {glm::ivec2(160, 90), glm::ivec2(79, 45), glm::ivec2(213, 120)}) {
-        const Image<float> depth = vesselDepth(size.x, size.y);
-        const Image<float> height = bowl(size.x, size.y);
-        const glm::ivec2 target(333, 181);
-        for (const bool lines : {false, true}) {
-            const UpscaleTiles tiles = splitUpscaleTiles({.isoLines = lines ? 8 : 0,
-                                                          .isoLineWidth = 1.5F,
-                                                          .height = &height,
-                                                          .edges = true,
-                                                          .depth = &depth},
-                                                         target, 16);
-            long long edgePixels = 0;
-            long long inEdgeTiles = 0;
-            for (int y = 0; y < target.y; ++y) {
-                for (int x = 0; x < target.x; ++x) {
-                    const int kinds = (inside(tiles.plain, x, y) ? 1 : 0) +
-                                      (inside(tiles.lines, x, y) ? 1 : 0) +
-                                      (inside(tiles.edges, x, y) ? 1 : 0) +
-                                      (inside(tiles.linesAndEdges, x, y) ? 1 : 0);
-                    ASSERT_EQ(kinds, 1) << "every pixel once";
-                    const bool edgeTile =
-                        inside(tiles.edges, x, y) || inside(tiles.linesAndEdges, x, y);
-                    inEdgeTiles += edgeTile ? 1 : 0;
-                    if (edgePixel(depth, target, x, y)) {
-                        ++edgePixels;
-                        ASSERT_TRUE(edgeTile)
-                            << "pixel " << x << ", " << y << " of " << size.x << "x" << size.y;
-                    }
-                    if (!lines) {
-                        ASSERT_FALSE(inside(tiles.lines, x, y) ||
-                                     inside(tiles.linesAndEdges, x, y));
-                    }
-                }
-            }
-            EXPECT_GT(edgePixels, 0);
-            // Most of the target is left to the cheaper programs.
-            EXPECT_LT(inEdgeTiles, static_cast<long long>(target.x) * target.y * 3 / 4);
-        }
-    }
-}
-
-TEST(UpscaleTilesTest, WithoutADepthEveryTileGetsTheEdges) {
-    const UpscaleTiles tiles = splitUpscaleTiles({.edges = true}, {100, 60}, 16);
-    EXPECT_TRUE(tiles.plain.empty());
-    ASSERT_EQ(tiles.edges.size(), 4U);
-    EXPECT_EQ(tiles.edges.front(), glm::ivec4(0, 0, 100, 16));
-    // A depth without vessels, or all vessel: no edge.
-    const Image<float> none(50, 30, std::numeric_limits<float>::infinity());
-    EXPECT_TRUE(splitUpscaleTiles({.edges = true, .depth = &none}, {100, 60}, 16).edges.empty());
-    const Image<float> all(50, 30, 2.0F);
-    EXPECT_TRUE(splitUpscaleTiles({.edges = true, .depth = &all}, {100, 60}, 16).edges.empty());
 }
 
 TEST(UpscaleTilesTest, BadArgumentsThrow) {
     const Image<float> height(8, 8, 0.5F);
-    EXPECT_THROW(static_cast<void>(lineTiles(height, {0, 10}, 8, 1.5F, 16)), InvalidArgumentError);
-    EXPECT_THROW(static_cast<void>(lineTiles(Image<float>(), {10, 10}, 8, 1.5F, 16)),
+    EXPECT_THROW(static_cast<void>(splitUpscaleTiles(height, {0, 10}, 8, 1.5F, 16)),
                  InvalidArgumentError);
-    EXPECT_THROW(static_cast<void>(lineTiles(height, {10, 10}, 8, 1.5F, 15)), InvalidArgumentError);
-    const Image<float> empty;
-    EXPECT_THROW(
-        static_cast<void>(splitUpscaleTiles({.edges = true, .depth = &empty}, {10, 10}, 16)),
-        InvalidArgumentError);
+    EXPECT_THROW(static_cast<void>(splitUpscaleTiles(Image<float>(), {10, 10}, 8, 1.5F, 16)),
+                 InvalidArgumentError);
+    EXPECT_THROW(static_cast<void>(splitUpscaleTiles(height, {10, 10}, 8, 1.5F, 15)),
+                 InvalidArgumentError);
 }
 
 }  // namespace

@@ -6,6 +6,8 @@
 #include <vector>
 
 #include "passes/FrameResources.h"
+#include "passes/RectBatch.h"
+#include "passes/SilhouetteRuns.h"
 #include "passes/UpscaleTiles.h"
 
 namespace vv::render {
@@ -81,12 +83,43 @@ struct UpscaleData {
     Handle<CpuValue<ShownVss>> shown;
     Handle<Texture> depth;
     Handle<CpuValue<DepthImage>> depthImage;
+    /// silhouetteRuns() of the depth image, uploaded here. Persistent: a
+    /// pooled texture may still be in use by this frame's earlier passes,
+    /// and the upload would wait for them (2-7 ms on llvmpipe, 0.05 here).
+    Handle<Texture> runs;
 };
 
-/// The upscale's rectangles (UpscaleTiles.h): by the shown VSS's heights
-/// when they are what the height texture holds (else the iso-lines
-/// everywhere), and by the render size's depth when it is the colour's
-/// size (else the edge program everywhere).
+/// The render size's depth when it is the colour's size (what the
+/// silhouettes are drawn from), else null: no silhouettes.
+const Image<float>* edgeDepth(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
+                              const UpscaleData& d) {
+    if (!inputs.sharpEdges) {
+        return nullptr;
+    }
+    const Image<float>* depth = r.get(d.depthImage).value().image.get();
+    const auto& color = r.get(d.final.input).descriptor();
+    return depth != nullptr && depth->width() == color.width && depth->height() == color.height
+               ? depth
+               : nullptr;
+}
+
+/// Uploads the silhouettes rebuilt from `vessels` into `texture` (its size).
+void uploadRuns(QOpenGLFunctions_4_1_Core& g, const GlTexture& texture,
+                const Image<std::uint8_t>& vessels) {
+    const Image<glm::u8vec4> runs = silhouetteRuns(vessels);
+    g.glBindTexture(GL_TEXTURE_2D, texture.texture());
+    g.glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    g.glPixelStorei(GL_UNPACK_ROW_LENGTH, static_cast<GLint>(runs.stride()));
+    g.glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, runs.width(), runs.height(), GL_RGBA,
+                      GL_UNSIGNED_BYTE, runs.data());
+    g.glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    checkGlError(g, "uploading the silhouettes");
+}
+
+/// The upscale's rectangles: split by the shown VSS's heights
+/// (UpscaleTiles.h) when they are what the height texture holds; else the
+/// whole target, with iso-lines when there are any.
 UpscaleTiles upscaleTiles(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
                           const UpscaleData& d) {
     // Target pixels: llvmpipe's bins (scissors on their edges leave whole
@@ -95,25 +128,19 @@ UpscaleTiles upscaleTiles(const UpscaleInputs& inputs, const RenderGraph::Resour
     // rotating benchmark's frames at 0.5, interleaved; 32 px: 3.2 / 5.7,
     // 16 px: 4.2 / 6.8): half the target needed the iso-lines.
     constexpr int kTile = 64;
-    UpscaleTileMaps maps{.isoLines = std::max(inputs.isoLines, 0),
-                         .isoLineWidth = std::max(inputs.isoLineWidth, 0.0F),
-                         .edges = inputs.sharpEdges};
-    if (maps.isoLines > 0) {
+    if (inputs.isoLines > 0) {
         const ShownVss& shown = r.get(d.shown).value();
         const auto& texture = r.get(d.height).descriptor();
         if (shown.frame != nullptr && shown.frame->height.width() == texture.width &&
             shown.frame->height.height() == texture.height) {
-            maps.height = &shown.frame->height;
+            return splitUpscaleTiles(shown.frame->height, inputs.targetSize, inputs.isoLines,
+                                     std::max(inputs.isoLineWidth, 0.0F), kTile);
         }
     }
-    if (maps.edges) {
-        const Image<float>* depth = r.get(d.depthImage).value().image.get();
-        const auto& color = r.get(d.final.input).descriptor();
-        if (depth != nullptr && depth->width() == color.width && depth->height() == color.height) {
-            maps.depth = depth;
-        }
-    }
-    return splitUpscaleTiles(maps, inputs.targetSize, kTile);
+    UpscaleTiles all;
+    (inputs.isoLines > 0 ? all.lines : all.plain)
+        .emplace_back(0, 0, inputs.targetSize.x, inputs.targetSize.y);
+    return all;
 }
 
 /// Draws the full-screen triangle with `program` (bound, its uniforms
@@ -127,15 +154,9 @@ void drawRects(QOpenGLFunctions_4_1_Core& g, unsigned vao, const std::vector<glm
     g.glBindVertexArray(0);
 }
 
-/// Draws `rects` with `program` (upscale.frag; `lines`: its iso-lines,
-/// `edges`: its EDGES variant) from the textures on units 0 (colour), 1
-/// (height) and 2 (depth).
-void drawUpscale(const UpscaleInputs& inputs, const Program& program,
-                 const std::vector<glm::ivec4>& rects, bool lines, bool edges,
-                 glm::vec2 texelsPerPixel) {
-    if (rects.empty()) {
-        return;
-    }
+/// Binds `program` (upscale.frag) and sets its uniforms: the colour on unit
+/// 0, with `lines` the iso-lines' (height on unit 1).
+void useUpscale(const UpscaleInputs& inputs, const Program& program, bool lines) {
     program.use();
     program.set("uColor", 0);
     if (lines) {
@@ -144,17 +165,49 @@ void drawUpscale(const UpscaleInputs& inputs, const Program& program,
         program.set("uIsoWidth", std::max(inputs.isoLineWidth, 0.0F));
         program.set("uIsoStrength", inputs.isoLineStrength);
     }
-    if (edges) {
-        program.set("uDepth", 2);
-        program.set("uTexelsPerPixel", texelsPerPixel);
+}
+
+/// Draws the silhouettes of `vessels` over the upscaled frame (upscale.frag's
+/// EDGES variant, the depth texture on unit 2, the runs on unit 3) in the
+/// rectangles that need it (silhouetteRects()).
+void drawSilhouettes(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
+                     const UpscaleData& d, const Image<std::uint8_t>& vessels) {
+    auto& g = *inputs.context.gl;
+    const std::vector<glm::ivec4> rects = silhouetteRects(vessels, inputs.targetSize);
+    if (rects.empty()) {
+        return;
     }
-    drawRects(*inputs.context.gl, inputs.context.emptyVao, rects);
+    g.glActiveTexture(GL_TEXTURE2);
+    g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.depth)).texture());
+    g.glActiveTexture(GL_TEXTURE3);
+    g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.runs)).texture());
+    const bool lines = inputs.isoLines > 0;
+    const FullscreenPrograms& programs = *inputs.context.programs;
+    const Program& program = lines ? programs.upscaleEdges : programs.upscaleEdgesColor;
+    useUpscale(inputs, program, lines);
+    const auto& size = r.get(d.final.input).descriptor();
+    program.set("uDepth", 2);
+    program.set("uRuns", 3);
+    program.set("uTexelsPerPixel",
+                glm::vec2(static_cast<float>(size.width), static_cast<float>(size.height)) /
+                    glm::vec2(inputs.targetSize));
+    program.set("uTargetSize", glm::vec2(inputs.targetSize));
+    inputs.context.rects->draw(rects);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
+    g.glActiveTexture(GL_TEXTURE2);
+    g.glBindTexture(GL_TEXTURE_2D, 0);
 }
 
 void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const UpscaleData& d) {
     const PassContext& context = inputs.context;
     auto& g = *context.gl;
     const UpscaleTiles tiles = upscaleTiles(inputs, r, d);
+    const Image<float>* depth = edgeDepth(inputs, r, d);
+    const Image<std::uint8_t> vessels =
+        depth != nullptr ? vesselMask(*depth) : Image<std::uint8_t>{};
+    if (depth != nullptr) {
+        uploadRuns(g, glTex(r.get(d.runs)), vessels);
+    }
     context.beginFullscreen(r, d.final.target, inputs.targetSize);
     // Bilinear taps here only; pooled textures are nearest otherwise.
     const unsigned color = glTex(r.get(d.final.input)).texture();
@@ -163,21 +216,19 @@ void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const
     setFilter(g, color, GL_LINEAR);
     g.glActiveTexture(GL_TEXTURE1);
     setFilter(g, height, GL_LINEAR);
-    // The depth: gathered (nearest).
-    g.glActiveTexture(GL_TEXTURE2);
-    g.glBindTexture(GL_TEXTURE_2D, inputs.sharpEdges ? glTex(r.get(d.depth)).texture() : 0U);
     g.glEnable(GL_SCISSOR_TEST);
-    const auto& size = r.get(d.final.input).descriptor();
-    const glm::vec2 texelsPerPixel =
-        glm::vec2(static_cast<float>(size.width), static_cast<float>(size.height)) /
-        glm::vec2(inputs.targetSize);
-    const FullscreenPrograms& programs = *context.programs;
-    drawUpscale(inputs, programs.upscaleColor, tiles.plain, false, false, texelsPerPixel);
-    drawUpscale(inputs, programs.upscale, tiles.lines, true, false, texelsPerPixel);
-    drawUpscale(inputs, programs.upscaleEdgesColor, tiles.edges, false, true, texelsPerPixel);
-    drawUpscale(inputs, programs.upscaleEdges, tiles.linesAndEdges, true, true, texelsPerPixel);
+    if (!tiles.plain.empty()) {
+        useUpscale(inputs, context.programs->upscaleColor, false);
+        drawRects(g, context.emptyVao, tiles.plain);
+    }
+    if (!tiles.lines.empty()) {
+        useUpscale(inputs, context.programs->upscale, true);
+        drawRects(g, context.emptyVao, tiles.lines);
+    }
     g.glDisable(GL_SCISSOR_TEST);
-    g.glBindTexture(GL_TEXTURE_2D, 0);
+    if (depth != nullptr) {
+        drawSilhouettes(inputs, r, d, vessels);
+    }
     g.glActiveTexture(GL_TEXTURE1);
     setFilter(g, height, GL_NEAREST);
     g.glBindTexture(GL_TEXTURE_2D, 0);
@@ -199,6 +250,8 @@ FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs) {
             if (inputs.sharpEdges) {
                 d.depth = b.read<Texture>(board::kLinearDepth);
                 d.depthImage = b.read<CpuValue<DepthImage>>(board::kLinearDepthImage);
+                d.runs = b.write(b.createPersistent<Texture>(
+                    "silhouette-runs", sized(inputs.renderSize, TextureFormat::RGBA8)));
             }
             d.final.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
             d.final.target =

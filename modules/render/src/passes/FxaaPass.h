@@ -20,6 +20,7 @@ struct FxaaInputs {
 struct UpscaleInputs {
     PassContext context;
     glm::ivec2 targetSize{1, 1};
+    glm::ivec2 renderSize{1, 1};  ///< board::kComposited's
     /// The VSS's iso-lines, drawn at the target size from board::kVssHeight
     /// where board::kComposited's alpha says the VSS shows
     /// (CompositeInputs::vssVisibilityAlpha); 0 = none (nothing else read).
@@ -27,8 +28,9 @@ struct UpscaleInputs {
     float isoLineWidth = 1.5F;  ///< target pixels
     float isoLineStrength = 0.0F;
     /// Vessel silhouettes drawn at the target's resolution (upscale.frag's
-    /// EDGES variant, where board::kLinearDepthImage says a tile holds one),
-    /// from board::kLinearDepth; false = every pixel bilinear.
+    /// EDGES variant, where board::kLinearDepthImage says a tile holds one,
+    /// SilhouetteRuns.h), from board::kLinearDepth; false = every pixel
+    /// bilinear.
     bool sharpEdges = true;
 };
 

@@ -36,9 +36,10 @@ FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
         Program(gl, kFullscreen, upscaleFragment, "upscale (colour only)", colorOnly);
     const std::string_view edges[] = {"EDGES"};
     const std::string_view edgesColorOnly[] = {"EDGES", "COLOR_ONLY"};
-    programs.upscaleEdges = Program(gl, kFullscreen, upscaleFragment, "upscale (edges)", edges);
+    constexpr std::string_view kRects = ":/vv/shaders/rects.vert";
+    programs.upscaleEdges = Program(gl, kRects, upscaleFragment, "upscale (edges)", edges);
     programs.upscaleEdgesColor =
-        Program(gl, kFullscreen, upscaleFragment, "upscale (edges, colour only)", edgesColorOnly);
+        Program(gl, kRects, upscaleFragment, "upscale (edges, colour only)", edgesColorOnly);
     return programs;
 }
 

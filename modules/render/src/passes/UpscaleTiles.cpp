@@ -66,33 +66,6 @@ bool reachesALine(const Image<float>& height, glm::ivec2 xs, glm::ivec2 ys,
     return bands < reach * perPixel;
 }
 
-/// Whether the texel block holds both vessel (finite) and other depths.
-bool holdsAnEdge(const Image<float>& depth, glm::ivec2 xs, glm::ivec2 ys) {
-    const bool first = std::isfinite(depth(xs.x, ys.x));
-    for (int y = ys.x; y <= ys.y; ++y) {
-        const float* row = depth.row(y);
-        for (int x = xs.x; x <= xs.y; ++x) {
-            if (std::isfinite(row[x]) != first) {
-                return true;
-            }
-        }
-    }
-    return false;
-}
-
-/// The texels per target pixel of `map` (nullptr: 1, 1); throws when it
-/// is empty.
-glm::dvec2 mapScale(const Image<float>* map, glm::ivec2 target) {
-    if (map == nullptr) {
-        return {1.0, 1.0};
-    }
-    if (map->width() <= 0 || map->height() <= 0) {
-        throw InvalidArgumentError("splitUpscaleTiles: empty height or depth");
-    }
-    return {static_cast<double>(map->width()) / target.x,
-            static_cast<double>(map->height()) / target.y};
-}
-
 /// Appends [x0, x1) x [y0, y1) to `out`, merged with its last rectangle
 /// when that one ends at x0 in the same row.
 void addTile(std::vector<glm::ivec4>& out, int x0, int y0, int x1, int y1) {
@@ -105,39 +78,26 @@ void addTile(std::vector<glm::ivec4>& out, int x0, int y0, int x1, int y1) {
 
 }  // namespace
 
-UpscaleTiles splitUpscaleTiles(const UpscaleTileMaps& maps, glm::ivec2 target, int tile) {
-    if (target.x <= 0 || target.y <= 0) {
-        throw InvalidArgumentError("splitUpscaleTiles: empty target");
+UpscaleTiles splitUpscaleTiles(const Image<float>& height, glm::ivec2 target, int isoLines,
+                               float isoLineWidth, int tile) {
+    if (height.width() <= 0 || height.height() <= 0 || target.x <= 0 || target.y <= 0) {
+        throw InvalidArgumentError("splitUpscaleTiles: empty height or target");
     }
     if (tile < 2 || tile % 2 != 0) {
         throw InvalidArgumentError("splitUpscaleTiles: the tile size must be even and >= 2");
     }
-    const bool lines = maps.isoLines > 0;
-    const Image<float>* height = lines ? maps.height : nullptr;
-    const Image<float>* depth = maps.edges ? maps.depth : nullptr;
-    const glm::dvec2 heightScale = mapScale(height, target);
-    const glm::dvec2 depthScale = mapScale(depth, target);
-    // The texels of `map` that the pixels [from, to) of `axis` read.
-    const auto span = [](const Image<float>& map, glm::dvec2 scale, int axis, int from, int to) {
-        return texelSpan(from, to, scale[axis], axis == 0 ? map.width() : map.height());
-    };
+    const glm::dvec2 texelsPerPixel(static_cast<double>(height.width()) / target.x,
+                                    static_cast<double>(height.height()) / target.y);
     UpscaleTiles tiles;
     for (int y0 = 0; y0 < target.y; y0 += tile) {
         const int y1 = std::min(y0 + tile, target.y);
+        const glm::ivec2 ys = texelSpan(y0, y1, texelsPerPixel.y, height.height());
         for (int x0 = 0; x0 < target.x; x0 += tile) {
             const int x1 = std::min(x0 + tile, target.x);
-            const bool line =
-                lines &&
-                (height == nullptr || reachesALine(*height, span(*height, heightScale, 0, x0, x1),
-                                                   span(*height, heightScale, 1, y0, y1),
-                                                   heightScale, maps.isoLines, maps.isoLineWidth));
-            const bool edge =
-                maps.edges &&
-                (depth == nullptr || holdsAnEdge(*depth, span(*depth, depthScale, 0, x0, x1),
-                                                 span(*depth, depthScale, 1, y0, y1)));
-            std::vector<glm::ivec4>& kind = line ? (edge ? tiles.linesAndEdges : tiles.lines)
-                                                 : (edge ? tiles.edges : tiles.plain);
-            addTile(kind, x0, y0, x1, y1);
+            const glm::ivec2 xs = texelSpan(x0, x1, texelsPerPixel.x, height.width());
+            const bool lines = isoLines > 0 &&
+                               reachesALine(height, xs, ys, texelsPerPixel, isoLines, isoLineWidth);
+            addTile(lines ? tiles.lines : tiles.plain, x0, y0, x1, y1);
         }
     }
     return tiles;
