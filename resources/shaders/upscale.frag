@@ -14,9 +14,10 @@
 // a bilinear blit does only when it samples this little.
 // Built with COLOR_ONLY for the parts of the target no iso-line reaches
 // (UpscaleTiles.h): one tap a pixel, the same pixels there.
-// Built with EDGES (with or without COLOR_ONLY) over the rectangles that
-// hold a vessel silhouette (drawn after the rest, over rects.vert): where the pixel's bilinear footprint has vessel and
-// non-vessel texels (by the render size's depth), the silhouette is the
+// Built with EDGES (with or without COLOR_ONLY) for the rectangles that
+// hold a vessel silhouette (drawn after the rest, over rects.vert): where
+// the pixel's bilinear footprint has vessel and non-vessel texels (by the
+// render size's depth), the silhouette is the
 // straight edge rebuilt from the render size's staircase on the CPU
 // (SilhouetteRuns.h) through the footprint's pair of texels nearest the
 // pixel that straddles it (without one, the 0.5 contour of the bilinear
