@@ -4,7 +4,9 @@
 // settings) of the demo tree looks like the settled frame of the same view
 // (exact VSS, occlusion, FXAA) at the same window size, by SSIM; and the
 // VSS's iso-lines keep their width in window pixels instead of growing with
-// the reduction. Needs a display (xvfb-run, QT_QPA_PLATFORM=xcb).
+// the reduction; and the vessels' silhouettes stay sharp and straight
+// instead of showing the render pixels' blurred steps. Needs a display
+// (xvfb-run, QT_QPA_PLATFORM=xcb).
 #include <gtest/gtest.h>
 
 #include <QImage>

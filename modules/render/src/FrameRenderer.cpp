@@ -679,14 +679,12 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     if (settings.antialiasing) {
         addFxaaPass(graph, FxaaInputs{.context = context, .targetSize = targetSize});
     } else if (upscale) {
-        addUpscalePass(
-            graph, UpscaleInputs{.context = context,
-                                 .targetSize = targetSize,
-                                 .renderSize = size,
-                                 .isoLines = targetIsoLines,
-                                 .isoLineWidth = vssSettings.isoLineWidth,
-                                 .isoLineStrength = vssSettings.isoLineStrength,
-                                 .sharpEdges = qEnvironmentVariableIntValue("VV_NO_EDGES") == 0});
+        addUpscalePass(graph, UpscaleInputs{.context = context,
+                                            .targetSize = targetSize,
+                                            .renderSize = size,
+                                            .isoLines = targetIsoLines,
+                                            .isoLineWidth = vssSettings.isoLineWidth,
+                                            .isoLineStrength = vssSettings.isoLineStrength});
     }
     finish(&solve);
     gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);

@@ -27,10 +27,10 @@ struct UpscaleInputs {
     int isoLines = 0;
     float isoLineWidth = 1.5F;  ///< target pixels
     float isoLineStrength = 0.0F;
-    /// Vessel silhouettes drawn at the target's resolution (upscale.frag's
-    /// EDGES variant, where board::kLinearDepthImage says a tile holds one,
-    /// SilhouetteRuns.h), from board::kLinearDepth; false = every pixel
-    /// bilinear.
+    /// The vessels' silhouettes redrawn at the target's resolution
+    /// (upscale.frag's EDGES variant, in the rectangles along them that
+    /// board::kLinearDepthImage gives, SilhouetteRuns.h; reads
+    /// board::kLinearDepth too); false = every pixel bilinear.
     bool sharpEdges = true;
 };
 
