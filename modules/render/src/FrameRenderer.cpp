@@ -21,6 +21,7 @@
 #include "passes/FxaaPass.h"
 #include "passes/GeometryPass.h"
 #include "passes/PassContext.h"
+#include "passes/RectBatch.h"
 #include "passes/SsaoPass.h"
 #include "passes/TranslucentPass.h"
 #include "passes/VesselShadingPass.h"
@@ -176,6 +177,7 @@ struct FrameRenderer::Impl {
     std::unique_ptr<FullscreenPrograms> programs;
     std::unique_ptr<DepthScaleLut> scaleLut;
     GLuint emptyVao = 0;
+    std::unique_ptr<RectBatch> rects;
     std::unique_ptr<SolveWorker> worker;
     std::function<void()> onSolved;
     /// Tiled rendering: the frame's VSS solved outside (setExternalVss), its
@@ -212,6 +214,7 @@ struct FrameRenderer::Impl {
                            .framebuffers = &allocator->framebuffers(),
                            .scaleLut = scaleLut.get(),
                            .emptyVao = emptyVao,
+                           .rects = rects.get(),
                            .meshes = &meshes,
                            .volume = &volume};
     }
@@ -298,6 +301,7 @@ void FrameRenderer::initialize() {
     impl_->observer = std::make_unique<GlPassObserver>();
     impl_->programs = std::make_unique<FullscreenPrograms>(FullscreenPrograms::build(gl));
     gl.glGenVertexArrays(1, &impl_->emptyVao);
+    impl_->rects = std::make_unique<RectBatch>(gl);
     impl_->scaleLut = std::make_unique<DepthScaleLut>(gl);
     impl_->shownFrame.reset();
     checkGlError(gl, "FrameRenderer::initialize");
@@ -319,6 +323,7 @@ void FrameRenderer::release() noexcept {
     impl_->programs.reset();
     impl_->scaleLut.reset();
     g.glDeleteVertexArrays(1, &impl_->emptyVao);
+    impl_->rects.reset();
     impl_->emptyVao = 0;
     impl_->shownFrame.reset();
     meshes_.release();
@@ -676,6 +681,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     } else if (upscale) {
         addUpscalePass(graph, UpscaleInputs{.context = context,
                                             .targetSize = targetSize,
+                                            .renderSize = size,
                                             .isoLines = targetIsoLines,
                                             .isoLineWidth = vssSettings.isoLineWidth,
                                             .isoLineStrength = vssSettings.isoLineStrength});

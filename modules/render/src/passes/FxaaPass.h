@@ -20,12 +20,18 @@ struct FxaaInputs {
 struct UpscaleInputs {
     PassContext context;
     glm::ivec2 targetSize{1, 1};
+    glm::ivec2 renderSize{1, 1};  ///< board::kComposited's
     /// The VSS's iso-lines, drawn at the target size from board::kVssHeight
     /// where board::kComposited's alpha says the VSS shows
     /// (CompositeInputs::vssVisibilityAlpha); 0 = none (nothing else read).
     int isoLines = 0;
     float isoLineWidth = 1.5F;  ///< target pixels
     float isoLineStrength = 0.0F;
+    /// The vessels' silhouettes redrawn at the target's resolution
+    /// (upscale.frag's EDGES variant, in the rectangles along them that
+    /// board::kLinearDepthImage gives, SilhouetteRuns.h; reads
+    /// board::kLinearDepth too); false = every pixel bilinear.
+    bool sharpEdges = true;
 };
 
 struct FinalOutputs {
@@ -38,10 +44,10 @@ FinalOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs);
 
 /// "upscale": board::kComposited into board::kOutput with bilinear
 /// interpolation (four texel fetches a pixel: about what a blit costs on
-/// software rasterisers, where FXAA at the target size costs twice that), and
-/// the VSS iso-lines drawn at the target's resolution (upscale.frag): frames
-/// that favour speed (the camera moving). Leaves the output's framebuffer
-/// bound.
+/// software rasterisers, where FXAA at the target size costs twice that),
+/// the VSS iso-lines and the vessels' silhouettes drawn at the target's
+/// resolution (upscale.frag): frames that favour speed (the camera moving).
+/// Leaves the output's framebuffer bound.
 FinalOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs);
 
 }  // namespace vv::render

@@ -34,6 +34,12 @@ FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
     const std::string_view colorOnly[] = {"COLOR_ONLY"};
     programs.upscaleColor =
         Program(gl, kFullscreen, upscaleFragment, "upscale (colour only)", colorOnly);
+    const std::string_view edges[] = {"EDGES"};
+    const std::string_view edgesColorOnly[] = {"EDGES", "COLOR_ONLY"};
+    constexpr std::string_view kRects = ":/vv/shaders/rects.vert";
+    programs.upscaleEdges = Program(gl, kRects, upscaleFragment, "upscale (edges)", edges);
+    programs.upscaleEdgesColor =
+        Program(gl, kRects, upscaleFragment, "upscale (edges, colour only)", edgesColorOnly);
     return programs;
 }
 

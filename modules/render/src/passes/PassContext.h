@@ -20,6 +20,8 @@ class QOpenGLFunctions_4_1_Core;
 
 namespace vv::render {
 
+class RectBatch;
+
 /// The full-screen programs of the frame's passes.
 struct FullscreenPrograms {
     Program vss;       ///< vss.frag: the shader fits the height field's slopes
@@ -34,6 +36,10 @@ struct FullscreenPrograms {
     Program upscale;  ///< upscale.frag: a reduced frame into the target, iso-lines at its size
     /// upscale.frag with COLOR_ONLY: where no iso-line reaches (UpscaleTiles.h).
     Program upscaleColor;
+    /// upscale.frag with EDGES (and COLOR_ONLY) over rects.vert: along the
+    /// vessels' silhouettes (with the iso-lines, and without any).
+    Program upscaleEdges;
+    Program upscaleEdgesColor;
 
     /// Builds them all in the current context. Throws RenderError when a
     /// shader fails.
@@ -73,7 +79,8 @@ struct PassContext {
     const FullscreenPrograms* programs = nullptr;
     GlFramebufferCache* framebuffers = nullptr;
     DepthScaleLut* scaleLut = nullptr;
-    unsigned emptyVao = 0;  ///< for the full-screen triangle of fullscreen.vert
+    unsigned emptyVao = 0;       ///< for the full-screen triangle of fullscreen.vert
+    RectBatch* rects = nullptr;  ///< for rects.vert
     MeshRenderer* meshes = nullptr;
     VolumeRenderer* volume = nullptr;
 
