@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <string_view>
 
 #include "FastKernel.h"
 #include "FastKernelSimd.h"
@@ -180,13 +181,11 @@ void pointGeneric(const PointKernelArgs& a) {
 using PointFn = void (*)(const PointKernelArgs&);
 
 PointFn choosePoint() {
-    __builtin_cpu_init();
-    if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-        __builtin_cpu_supports("avx512bw") && __builtin_cpu_supports("avx512vl") &&
-        __builtin_cpu_supports("fma")) {
+    const std::string_view isa = leafKernelIsa();  // the leaf kernel's choice
+    if (isa == "avx512") {
         return &pointAvx512;
     }
-    if (__builtin_cpu_supports("avx2") && __builtin_cpu_supports("fma")) {
+    if (isa == "avx2") {
         return &pointAvx2;
     }
     return &pointGeneric;

@@ -423,11 +423,9 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             return;
         }
     }
-    // 5b. A box of 32 pixels of the near band (p <= kBandMaxP): the near box
-    // below when it is taken whole, else an adaptive grid, cell by cell (the
-    // near points summed exactly at the samples and where a cell fails).
-    const bool band = rg.bandBoxesOn && st.level == 1 && !deferred.empty() && tab.p <= kBandMaxP;
-    if (band && rg.nearBoxesOn && nearBoxHasRoom(rg, geo, st.level, deferred)) {
+    // 5b. A box of the near band whose near points are some pixels away: a
+    // grid with those points summed exactly, when the bound allows.
+    if (rg.nearBoxesOn && st.level >= 1 && st.level <= kNearBoxMaxLevel && !deferred.empty()) {
         const std::int64_t written =
             tryNearBox(rg, st.level, geo, S, DloBox, deferred, hasLocal ? &loc : nullptr,
                        LeafBounds{S, E, W, Sexp});
@@ -438,7 +436,10 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             return;
         }
     }
-    if (band) {
+    // 5c. Else, a box of 32 pixels of the near band (p <= kBandMaxP): an
+    // adaptive grid, cell by cell (the near points summed exactly at the
+    // samples and where a cell fails).
+    if (rg.bandBoxesOn && st.level == 1 && !deferred.empty() && tab.p <= kBandMaxP) {
         const BandCounts n =
             evalBandBox(rg, geo, deferred, hasLocal ? &loc : nullptr, LeafBounds{S, E, W, Sexp});
         if (n.pixels > 0) {
@@ -449,20 +450,6 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             s.bandSamples += n.samples;
             s.fallbackPixels += n.fallbackPixels;
             s.pixels += n.pixels;
-            return;
-        }
-    }
-    // 5c. A box of the near band whose near points are some pixels away: a
-    // grid with those points summed exactly, when the bound allows.
-    if (rg.nearBoxesOn && st.level >= 1 && st.level <= kNearBoxMaxLevel && !deferred.empty() &&
-        !band) {
-        const std::int64_t written =
-            tryNearBox(rg, st.level, geo, S, DloBox, deferred, hasLocal ? &loc : nullptr,
-                       LeafBounds{S, E, W, Sexp});
-        if (written > 0) {
-            tlStats.nearBoxes += 1;
-            tlStats.nearBoxPixels += written;
-            tlStats.pixels += written;
             return;
         }
     }
