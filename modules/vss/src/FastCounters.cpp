@@ -11,6 +11,7 @@ AtomicStats& stats() {
     return s;
 }
 
+// NOLINTBEGIN(cppcoreguidelines-avoid-non-const-global-variables): the hooks (FastCounters.h)
 std::atomic<double> gBudgetScale{1.0};
 std::atomic<bool> gCoarseBoxes{true};
 std::atomic<bool> gNearBoxes{true};
@@ -18,6 +19,7 @@ std::atomic<bool> gNearSplit{false};
 std::atomic<bool> gBandBoxes{true};
 std::atomic<double> gBandBoundScale{1.0};
 std::atomic<double> gNearSplitBudgetScale{1.0};
+// NOLINTEND(cppcoreguidelines-avoid-non-const-global-variables)
 
 }  // namespace vv::vss::detail::fast
 

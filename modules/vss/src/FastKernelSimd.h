@@ -15,7 +15,7 @@ namespace {  // NOLINT(cert-dcl59-cpp,google-build-namespaces): per kernel file,
 using vf = float __attribute__((vector_size(64)));
 using vi = std::int32_t __attribute__((vector_size(64)));
 using vu = std::uint32_t __attribute__((vector_size(64)));
-constexpr int kLanes = 16;
+inline constexpr int kLanes = 16;
 static_assert(kLanes == kLeafTile);
 
 // Every function below that takes or returns a vector is always inlined: the
