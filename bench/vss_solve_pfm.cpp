@@ -8,7 +8,7 @@
 // medians (wall), and the counters of the fast solver.
 //
 //   vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] [--solver fast|brute] [--near-split]
-//                 FILE.pfm...
+//                 [--no-band-boxes] FILE.pfm...
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -61,21 +61,26 @@ int main(int argc, char** argv) {
                 std::string(argv[++i]) == "brute" ? vss::SolverKind::Brute : vss::SolverKind::Fast;
         } else if (a == "--near-split") {
             vv::vss::detail::setFastSolverNearSplitForTesting(true);
+        } else if (a == "--no-band-boxes") {
+            vv::vss::detail::setFastSolverBandBoxesForTesting(false);
         } else if (!a.empty() && a[0] != '-') {
             files.push_back(a);
         } else {
             std::fprintf(stderr,
                          "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
-                         "[--solver fast|brute] [--near-split] FILE.pfm...\n");
+                         "[--solver fast|brute] [--near-split] [--no-band-boxes] FILE.pfm...\n");
             return 2;
         }
     }
     std::printf(
         "| file | size | p | first wall ms | wall ms (median) | wall ms (min) | cpu ms "
         "(median) | cpu ms (min) | normalize | regions | interpolate | M2L | near "
-        "pairs/px | near-tile px | coarse px | near-box px | near-box points |\n");
+        "pairs/px | near-tile px | coarse px | near-box px | near-box points | band-box px | "
+        "band exact px | band samples |\n");
     std::printf(
-        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n");
+        "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|-"
+        "--:|"
+        "---:|\n");
     for (const std::string& file : files) {
         const Image<float> depth = vss::readPfm(file);
         const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
@@ -112,14 +117,18 @@ int main(int argc, char** argv) {
             const auto px = static_cast<double>(std::max<std::int64_t>(1, st.pixels));
             std::printf(
                 "| %s | %dx%d | %g | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
-                "%.1f | %lld | %.1f | %.1f %% | %.1f %% | %.1f %% | %lld |\n",
+                "%.1f | %lld | %.1f | %.1f %% | %.1f %% | %.1f %% | %lld | %.1f %% | %.1f %% | "
+                "%lld |\n",
                 file.c_str(), depth.width(), depth.height(), p, first, median(wall), minOf(wall),
                 median(cpu), minOf(cpu), median(norm), median(regions), median(interp),
                 static_cast<long long>(st.m2l), 16.0 * static_cast<double>(st.nearPairs) / px,
                 100.0 * static_cast<double>(st.nearLeafPixels) / px,
                 100.0 * static_cast<double>(st.coarsePixels) / px,
                 100.0 * static_cast<double>(st.nearBoxPixels) / px,
-                static_cast<long long>(st.nearBoxPoints));
+                static_cast<long long>(st.nearBoxPoints),
+                100.0 * static_cast<double>(st.bandBoxPixels) / px,
+                100.0 * static_cast<double>(st.bandExactPixels) / px,
+                static_cast<long long>(st.bandSamples));
             std::fflush(stdout);
         }
     }

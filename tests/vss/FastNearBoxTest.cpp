@@ -115,9 +115,11 @@ TEST(FastNearBoxTest, TheBoundUsesTheLocalDepthSpread) {
 
 TEST(FastNearBoxTest, OnAndOffAgreeWithinTheTolerance) {
     // Switched off, no pixel comes from a near box and more leaf tiles are
-    // evaluated; both within the tolerance.
+    // evaluated; both within the tolerance. (The band boxes, FastBandBox.h,
+    // would take the leaf tiles of either: off here.)
     const Scene s = twoDepthsScene(256, 192);
     const double tol = 0.5 / 255.0;
+    detail::setFastSolverBandBoxesForTesting(false);
     for (const double p : {1.0, 2.0, 4.0}) {
         const Image<double> ref = referenceImage(s, p);
         detail::setFastSolverNearBoxesForTesting(false);
@@ -136,6 +138,7 @@ TEST(FastNearBoxTest, OnAndOffAgreeWithinTheTolerance) {
         EXPECT_LE(cOn.maxErr, tol) << p;
         EXPECT_EQ(cOn.bad, 0) << p;
     }
+    detail::setFastSolverBandBoxesForTesting(true);  // the default
 }
 
 TEST(FastNearBoxTest, DoNotRestOnTheAPrioriEstimate) {

@@ -58,6 +58,57 @@ struct LeafKernelArgs {
 /// value is not finite): those pixels must be recomputed exactly.
 void leafKernel(const LeafKernelArgs& a, float* z, std::uint32_t* failRows);
 
+/// Points evaluated one per lane (the band boxes, FastBandBox.h): any
+/// positions, 16 to a vector, the near points summed exactly and the far
+/// polynomial, in one weight scale S^2 (the leaf's tile mode). With `bounds`
+/// also, per evaluation point: m = min(floor2, squared distance to the
+/// nearest of the points c0x, c0y (a subset of the near points: with every
+/// other near point at least sqrt(floor2) away, a lower bound of the nearest
+/// near point's)), that point's depth c (cFar when none is nearer than the
+/// floor), A = sum_i w_i r_i and T = sum_i w_i r_i
+/// |z_i - c| (r_i = S^2 / d_i^2: w_i / d_i^2 times S^2, for the bounds of the
+/// second derivatives).
+struct PointKernelArgs {
+    int n = 0;  ///< evaluation points
+    const float* ex =
+        nullptr;  ///< their coordinates, n rounded up to 16 each (the pad read, not used)
+    const float* ey = nullptr;
+    const float* px = nullptr;  ///< near points (x, y, z - zref), `count` each, same origin
+    const float* py = nullptr;
+    const float* pz = nullptr;
+    int count = 0;
+    int degree = -1;               ///< far polynomial degree, -1: none
+    const float* polyD = nullptr;  ///< as LeafKernelArgs
+    const float* polyN = nullptr;
+    float tu = 0.0F;  ///< polynomial centre and 1 / scale: u = (x - tu) * invA
+    float tv = 0.0F;
+    float invA = 1.0F;
+    float s2 = 1.0F;  ///< S^2
+    KernelPower power;
+    bool bounds = false;
+    int closeCount = 0;  ///< with bounds: the subset for m and c
+    const float* c0x = nullptr;
+    const float* c0y = nullptr;
+    const float* c0z = nullptr;
+    float floor2 = 0.0F;
+    float cFar = 0.0F;
+    /// Outputs, n rounded up to 16 each: near sums D, N; polynomial D, N (with
+    /// degree >= 0); with bounds: m, c, A, T.
+    float* dn = nullptr;
+    float* nn = nullptr;
+    float* pd = nullptr;
+    float* pn = nullptr;
+    float* dmin2 = nullptr;
+    float* c = nullptr;
+    float* a = nullptr;
+    float* t = nullptr;
+};
+
+/// Evaluates the sums of PointKernelArgs at its n points (float, one
+/// rounding per operation; contributions of points at distance 0 are Inf /
+/// NaN: the caller's checks refuse them).
+void pointKernel(const PointKernelArgs& a);
+
 /// The kernel's log2 / exp2 (scalar wrappers of the vector code, for tests).
 /// log2 of a normal x > 0: the mantissa part log2(m), m in [sqrt(1/2), sqrt(2)),
 /// has absolute error <= kKernelLog2Error; the sum with the exponent adds one

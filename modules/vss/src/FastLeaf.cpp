@@ -15,9 +15,7 @@
 #include "FastKernel.h"
 
 namespace vv::vss::detail::fast {
-namespace {
 
-// z' of one pixel by a double-precision sum over every contour point.
 __attribute__((noinline)) float exactPixel(const Region& rg, int x, int y) {
     double dmin2 = std::numeric_limits<double>::infinity();
     for (const Point& q : rg.tree.pts) {
@@ -39,8 +37,6 @@ __attribute__((noinline)) float exactPixel(const Region& rg, int x, int y) {
     const double z = rg.zref + N / D;
     return std::clamp(static_cast<float>(z), rg.zminOut, rg.zmaxOut);
 }
-
-}  // namespace
 
 LeafCounts evalLeaf(const Region& rg, int ix, int iy, const BoxGeo& geo,
                     const std::vector<int>& nearNodes, const Local* far, const LeafBounds& bounds) {

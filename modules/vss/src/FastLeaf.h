@@ -35,6 +35,11 @@ struct LeafCounts {
     bool exactTile = false;           ///< the tile was re-evaluated with every contour point
 };
 
+/// z' of pixel (x, y) of region rg by a double-precision sum over every
+/// contour point, clamped to the contour depth range (the exact fall-back).
+/// Throws nothing.
+float exactPixel(const Region& rg, int x, int y);
+
 /// Writes z' to rg.out for the pixels of region rg.id in leaf tile (ix, iy) of
 /// level 0, within rg.tol of the exact value and clamped to the contour
 /// depth range: the clusters of nearNodes (source leaves) exactly, the rest

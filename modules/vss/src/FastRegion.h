@@ -64,13 +64,15 @@ struct Region {
     double zmaxH = 0.0;
     float zminOut = 0.0F;  // clamp range of the output
     float zmaxOut = 0.0F;
-    double dz = 0.0;          // zmaxH - zminH
-    double tol = 0.0;         // tolerance of every pixel's z'
-    double tolA = 0.0;        // a-priori budget
-    double deltaW = 0.0;      // relative error bound of one kernel weight
-    bool coarse = true;       // coarse boxes allowed (FastCoarse.h)
-    bool nearBoxesOn = true;  // near-band boxes on a coarse grid allowed (FastNearBox.h)
-    bool nearSplit = false;   // near boxes split their clusters (FastSolver.cpp, tryNearBox)
+    double dz = 0.0;              // zmaxH - zminH
+    double tol = 0.0;             // tolerance of every pixel's z'
+    double tolA = 0.0;            // a-priori budget
+    double deltaW = 0.0;          // relative error bound of one kernel weight
+    bool coarse = true;           // coarse boxes allowed (FastCoarse.h)
+    bool nearBoxesOn = true;      // near-band boxes on a coarse grid allowed (FastNearBox.h)
+    bool nearSplit = false;       // near boxes split their clusters (FastSolver.cpp, tryNearBox)
+    bool bandBoxesOn = true;      // band boxes on an adaptive grid allowed (FastBandBox.h)
+    double bandBoundScale = 1.0;  // test hook: scales their interpolation bound (FastStats.h)
     double nearSplitBudgetScale = 1.0;  // test hook: loosens the budget of that split
     double budgetScale = 1.0;           // test hook: loosens the a-priori choices (FastStats.h)
     KernelPower kp;

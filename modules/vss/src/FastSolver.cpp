@@ -123,6 +123,19 @@
 // which the check charges), so only the points near the box are summed.
 // Counters: nearBoxes, nearBoxPixels, nearBoxPoints (FastStats.h).
 //
+// BAND BOXES (FastBandBox.cpp; issue 19, part 3). A near box is all or
+// nothing and needs its near points >= 4 pixels away, so a 32-pixel box with
+// a contour inside or next to it went down to its leaf tiles whole, although
+// most of its pixels lie tens of pixels from those points. For p <= 4
+// (kBandMaxP; at p = 8 measured no faster) such a box of level 1 is, when
+// the near box is not taken, evaluated on an adaptive grid: cells of 4, then 2
+// pixels, each checked with a bound whose near part comes from sums computed
+// at the samples (A = sum w / d^2, T = sum w |z - c| / d^2, and the nearest
+// point's distance); cells that fail are split, and the pixels of failing
+// cells of 2 are summed exactly (the box's near points and its expansion,
+// the leaf's check, the exact fall-back). No leaf tile, M2L or L2L below it.
+// Counters: bandBoxes, bandBoxPixels, bandExactPixels, bandSamples.
+//
 // SCALING (VSS.md "stiff cases"). Every box has a scale S = a lower bound of
 // all its pixel-point distances (>= 1); its expansion, E and Dlo hold true
 // values times S^p, so every point contributes <= 1 (no overflow: p <= 64,
@@ -139,8 +152,10 @@
 // tables (the series c_n, tau, chooseOrder, the weight pw); FastSourceTree:
 // step 1; FastExpansion: M2L, L2L and the leaf polynomial; FastRegion.h: what
 // the traversal and the leaves share; FastLeaf: step 4 with the check and the
-// fall-backs; FastCoarse: the coarse boxes; FastNearBox: the near boxes; FastPlace: placing
-// clusters at a box; FastKernel: the SIMD kernel of step 4; FastMath.h: the math.
+// fall-backs; FastCoarse: the coarse boxes; FastNearBox: the near boxes; FastBandBox:
+// the band boxes; FastPlace: placing clusters at a box; FastKernel: the SIMD kernel of
+// step 4; FastPointKernel: the same sums one point per lane (band boxes);
+// FastKernelSimd.h: their vector math; FastMath.h: the math.
 //
 #include "FastSolver.h"
 
@@ -154,7 +169,9 @@
 #include <utility>
 #include <vector>
 
+#include "FastBandBox.h"
 #include "FastCoarse.h"
+#include "FastCounters.h"
 #include "FastExpansion.h"
 #include "FastKernel.h"
 #include "FastLeaf.h"
@@ -171,28 +188,14 @@ namespace vv::vss::detail::fast {
 namespace {
 
 // ---------------------------------------------------------------- statistics
-struct AtomicStats {
-    std::atomic<std::int64_t> pixels{0}, fallbackPixels{0}, leaves{0}, nearPairs{0}, m2l{0},
-        dropped{0}, perPixelLeaves{0}, exactTiles{0}, coarseBoxes{0}, coarsePixels{0},
-        nearLeaves{0}, nearLeafPixels{0}, nearBoxes{0}, nearBoxPixels{0}, nearBoxPoints{0};
-};
-AtomicStats& stats() {
-    static AtomicStats s;
-    return s;
-}
-std::atomic<double> gBudgetScale{1.0};           // test hook, see FastStats.h
-std::atomic<bool> gCoarseBoxes{true};            // test hook, see FastStats.h
-std::atomic<bool> gNearBoxes{true};              // test hook, see FastStats.h
-std::atomic<bool> gNearSplit{false};             // test hook, see FastStats.h
-std::atomic<double> gNearSplitBudgetScale{1.0};  // test hook, see FastStats.h
-
 // Per-thread counters, added to the shared atomics once per task / region (atomic
 // updates per leaf from both threads would bounce one cache line between the cores).
 struct LocalStats {
     std::int64_t pixels = 0, fallbackPixels = 0, leaves = 0, nearPairs = 0, m2l = 0, dropped = 0,
                  perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0,
                  nearLeaves = 0, nearLeafPixels = 0, nearBoxes = 0, nearBoxPixels = 0,
-                 nearBoxPoints = 0;
+                 nearBoxPoints = 0, bandBoxes = 0, bandBoxPixels = 0, bandExactPixels = 0,
+                 bandSamples = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -213,6 +216,10 @@ void flushStats() {
     s.nearBoxes += l.nearBoxes;
     s.nearBoxPixels += l.nearBoxPixels;
     s.nearBoxPoints += l.nearBoxPoints;
+    s.bandBoxes += l.bandBoxes;
+    s.bandBoxPixels += l.bandBoxPixels;
+    s.bandExactPixels += l.bandExactPixels;
+    s.bandSamples += l.bandSamples;
     l = LocalStats{};
 }
 struct StatsFlush {  // flushes on every exit, cancellation included
@@ -429,6 +436,23 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             return;
         }
     }
+    // 5c. Else, a box of 32 pixels of the near band (p <= kBandMaxP): an
+    // adaptive grid, cell by cell (the near points summed exactly at the
+    // samples and where a cell fails).
+    if (rg.bandBoxesOn && st.level == 1 && !deferred.empty() && tab.p <= kBandMaxP) {
+        const BandCounts n =
+            evalBandBox(rg, geo, deferred, hasLocal ? &loc : nullptr, LeafBounds{S, E, W, Sexp});
+        if (n.pixels > 0) {
+            LocalStats& s = tlStats;
+            s.bandBoxes += 1;
+            s.bandBoxPixels += n.pixels;
+            s.bandExactPixels += n.exactPixels;
+            s.bandSamples += n.samples;
+            s.fallbackPixels += n.fallbackPixels;
+            s.pixels += n.pixels;
+            return;
+        }
+    }
     // 6. Children.
     for (int dy = 0; dy < 2; ++dy) {
         for (int dx = 0; dx < 2; ++dx) {
@@ -512,6 +536,8 @@ class FastSolver final : public Solver {
     bool coarse_ = gCoarseBoxes.load();
     bool nearBoxes_ = gNearBoxes.load();
     bool nearSplit_ = gNearSplit.load();
+    bool bandBoxes_ = gBandBoxes.load();
+    double bandBoundScale_ = gBandBoundScale.load();
     double nearSplitBudgetScale_ = gNearSplitBudgetScale.load();
 };
 
@@ -585,6 +611,8 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.coarse = coarse_;
     rg.nearBoxesOn = nearBoxes_;
     rg.nearSplit = nearSplit_;
+    rg.bandBoxesOn = bandBoxes_;
+    rg.bandBoundScale = bandBoundScale_;
     rg.nearSplitBudgetScale = nearSplitBudgetScale_;
     rg.budgetScale = budgetScale_;
     rg.tol = tol;
@@ -692,66 +720,6 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
 }  // namespace vv::vss::detail::fast
 
 namespace vv::vss::detail {
-
-FastSolverStats fastSolverStats() {
-    const fast::AtomicStats& s = fast::stats();
-    FastSolverStats r;
-    r.pixels = s.pixels.load();
-    r.fallbackPixels = s.fallbackPixels.load();
-    r.leaves = s.leaves.load();
-    r.nearPairs = s.nearPairs.load();
-    r.m2l = s.m2l.load();
-    r.dropped = s.dropped.load();
-    r.perPixelLeaves = s.perPixelLeaves.load();
-    r.exactTiles = s.exactTiles.load();
-    r.coarseBoxes = s.coarseBoxes.load();
-    r.coarsePixels = s.coarsePixels.load();
-    r.nearLeaves = s.nearLeaves.load();
-    r.nearLeafPixels = s.nearLeafPixels.load();
-    r.nearBoxes = s.nearBoxes.load();
-    r.nearBoxPixels = s.nearBoxPixels.load();
-    r.nearBoxPoints = s.nearBoxPoints.load();
-    return r;
-}
-
-void resetFastSolverStats() {
-    fast::AtomicStats& s = fast::stats();
-    s.pixels = 0;
-    s.fallbackPixels = 0;
-    s.leaves = 0;
-    s.nearPairs = 0;
-    s.m2l = 0;
-    s.dropped = 0;
-    s.perPixelLeaves = 0;
-    s.exactTiles = 0;
-    s.coarseBoxes = 0;
-    s.coarsePixels = 0;
-    s.nearLeaves = 0;
-    s.nearLeafPixels = 0;
-    s.nearBoxes = 0;
-    s.nearBoxPixels = 0;
-    s.nearBoxPoints = 0;
-}
-
-void setFastSolverBudgetScaleForTesting(double scale) {
-    fast::gBudgetScale = scale;
-}
-
-void setFastSolverCoarseBoxesForTesting(bool on) {
-    fast::gCoarseBoxes = on;
-}
-
-void setFastSolverNearSplitBudgetScaleForTesting(double scale) {
-    fast::gNearSplitBudgetScale = scale;
-}
-
-void setFastSolverNearSplitForTesting(bool on) {
-    fast::gNearSplit = on;
-}
-
-void setFastSolverNearBoxesForTesting(bool on) {
-    fast::gNearBoxes = on;
-}
 
 std::unique_ptr<Solver> makeFastSolver(const SolverOptions& options) {
     if (!(options.p > 0.0) || !std::isfinite(options.p)) {
