@@ -147,7 +147,7 @@ TEST(RefinementPolicyTest, TheBudgetStepsTheScaleDownWhenSlowAndUpWhenFast) {
     // Far over the budget: one step down, taken by the next camera move.
     // From half size the whole frame drops to 0.42, then to 0.35 (the
     // cheapest frames at SSIM >= 0.9 keep the VSS at the render size).
-    policy.frameMeasured(40.0);
+    policy.frameMeasured(45.0);
     EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
     EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.42F);
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.5F);
@@ -155,25 +155,25 @@ TEST(RefinementPolicyTest, TheBudgetStepsTheScaleDownWhenSlowAndUpWhenFast) {
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
     EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.42F);
     EXPECT_FLOAT_EQ(policy.frameSettings(display()).vssResolutionScale, 1.0F);
-    // Within the budget, and the step above known to cost 40: the sizes hold.
+    // Within the budget, and the step above known to cost 45: the sizes hold.
     policy.frameMeasured(25.0);
     EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.42F);
     EXPECT_FLOAT_EQ(policy.nextInteractiveVssScale(), 0.42F);
-    policy.frameMeasured(40.0);
+    policy.frameMeasured(45.0);
     ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
     EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.35F);
     // Then the VSS drops to a quarter under vessels at 0.35 (sharper edges).
-    policy.frameMeasured(40.0);
+    policy.frameMeasured(45.0);
     ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
     EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
     EXPECT_FLOAT_EQ(policy.frameSettings(display()).vssResolutionScale, 0.25F / 0.35F);
-    policy.frameMeasured(40.0);
+    policy.frameMeasured(45.0);
     ASSERT_TRUE(policy.cameraMoved());
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.3F);
     EXPECT_FLOAT_EQ(policy.interactiveVssScale(), 0.25F);
-    // Far under the budget: the step above is known to cost 40, so the sizes
+    // Far under the budget: the step above is known to cost 45, so the sizes
     // hold; once that is forgotten (here: a new budget), one step up.
     policy.frameMeasured(10.0);
     EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.3F);
@@ -263,6 +263,26 @@ TEST(RefinementPolicyTest, TheDefaultBudgetSettlesOnTheLargestStepThatFitsAndSta
         const auto frames = moveOnLlvmpipe(policy, 200, firstFrameExtra, noise);
         EXPECT_EQ(frames[kStep042], 200);
     }
+}
+
+// From the smallest step at SSIM >= 0.9 (0.42) down, frames a little over
+// the budget hold the size; only a frame far over it steps down.
+TEST(RefinementPolicyTest, BelowTheSmallestFaithfulStepOnlyFarTooSlowFramesStepDown) {
+    static_assert(RefinementPolicy::kScaleSteps[RefinementPolicy::kSmallestFaithfulStep] == 0.42F);
+    RefinementPolicy policy;
+    policy.setFrameBudget(28.0);
+    policy.frameMeasured(32.0);
+    policy.frameMeasured(32.0);  // at 0.5: twice over 1.05 x the budget
+    ASSERT_TRUE(policy.cameraMoved());
+    ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    for (int i = 0; i < 10; ++i) {
+        policy.frameMeasured(34.0);  // 1.21 x the budget, every time
+        ASSERT_TRUE(policy.cameraMoved());
+    }
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    policy.frameMeasured(40.0);  // over 1.4 x
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
 }
 
 // A step that did not fit is not tried again at once (no ping-pong between

@@ -132,10 +132,13 @@ void RefinementPolicy::frameMeasured(const FrameMeasurement& frame) noexcept {
     cost.last = milliseconds;
     cost.when = measurements_;
     // Too slow: two frames in a row over the budget (one costly frame, such
-    // as the first at a new size, is not enough), or one far over it.
-    const bool tooSlow =
-        (cost.samples >= 2 && cost.lowerOfLastTwo > kStepDownFactor * frameBudgetMs_) ||
-        milliseconds > kFarOverFactor * frameBudgetMs_;
+    // as the first at a new size, is not enough), or one far over it. Below
+    // the smallest step at SSIM >= 0.9 only a frame far over the budget
+    // counts: a frame a little over it is not worth a frame that looks
+    // worse (most of such a frame's cost does not shrink with the size).
+    const bool farOver = milliseconds > kFarOverFactor * frameBudgetMs_;
+    const bool over = cost.samples >= 2 && cost.lowerOfLastTwo > kStepDownFactor * frameBudgetMs_;
+    const bool tooSlow = farOver || (over && step < kSmallestFaithfulStep);
     if (tooSlow) {
         step = std::min(step + 1, kSteps - 1);
     } else if (step > 0 && expectedCost(step - 1, step, cost.milliseconds) <= frameBudgetMs_) {

@@ -37,7 +37,9 @@ namespace vv::render {
 ///  - steps down when the current step's last two measurements are both
 ///    over kStepDownFactor x the budget, or one is over kFarOverFactor x
 ///    (so the first, costlier frame at a new size — its framebuffers
-///    are allocated then — does not push it further than it needs);
+///    are allocated then — does not push it further than it needs); from
+///    kSmallestFaithfulStep down, only the latter (frames below it look
+///    worse than a frame a little over the budget is slow);
 ///  - steps up when the step above is expected to fit the budget: its
 ///    remembered cost, or, not known, the current cost scaled by
 ///    kCostExponent of the steps' sizes (fitted on llvmpipe, where a frame
@@ -66,14 +68,20 @@ class RefinementPolicy {
                                                              0.42F, 0.35F, 0.25F, 0.25F, 0.25F};
     static constexpr float kMinInteractiveScale = kScaleSteps.back();
     /// The default frame budget (ms of measured work per moving frame): a
-    /// frame every 33 ms (30 fps) less the ~2 ms between the measured span
-    /// and the next frame on llvmpipe, less a 10 % margin for the spread of
-    /// one frame's cost (docs/benchmarks/render.md, "Moving frames, round 7").
-    static constexpr double kDefaultFrameBudgetMs = 28.0;
+    /// frame every 33 ms (30 fps) less the 2-4 ms of each frame interval
+    /// outside the measured span on llvmpipe, less the ~10 % by which one
+    /// view's frames cost more than another's (docs/benchmarks/render.md,
+    /// "Moving frames, round 7").
+    static constexpr double kDefaultFrameBudgetMs = 27.0;
     /// Step down when the remembered cost is over this times the budget.
     static constexpr double kStepDownFactor = 1.05;
     /// Step down at once when one frame costs over this times the budget.
-    static constexpr double kFarOverFactor = 1.3;
+    static constexpr double kFarOverFactor = 1.4;
+    /// The smallest step whose moving frames stay at SSIM >= 0.9 against the
+    /// settled frame on the bundled demo (0.42 / 0.42: docs/benchmarks/
+    /// render.md, rounds 4 and 7): below it the sizes step down only for a
+    /// frame over kFarOverFactor x the budget.
+    static constexpr std::size_t kSmallestFaithfulStep = 5;
     /// A step's cost is expected to grow with its size to this power (the
     /// size: the mean of the render and VSS scales).
     static constexpr double kCostExponent = 0.7;
