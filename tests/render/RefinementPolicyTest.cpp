@@ -285,6 +285,32 @@ TEST(RefinementPolicyTest, BelowTheSmallestFaithfulStepOnlyFarTooSlowFramesStepD
     EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
 }
 
+// One frame slowed by something else (far over the budget) costs one move
+// at the step below, not the next kCostMemory moves: a step's remembered
+// cost is the lower of its last two frames.
+TEST(RefinementPolicyTest, OneSlowFrameCostsOneMoveAtTheStepBelow) {
+    RefinementPolicy policy;
+    policy.setFrameBudget(27.0);
+    policy.frameMeasured(30.0);
+    policy.frameMeasured(30.0);
+    ASSERT_TRUE(policy.cameraMoved());
+    ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    for (int i = 0; i < 5; ++i) {
+        policy.frameMeasured(26.0);
+        ASSERT_TRUE(policy.cameraMoved());
+        ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    }
+    policy.frameMeasured(45.0);  // a spike: over 1.4 x
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
+    policy.frameMeasured(24.0);
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);  // back at once
+    policy.frameMeasured(26.0);
+    ASSERT_TRUE(policy.cameraMoved());
+    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+}
+
 // A step that did not fit is not tried again at once (no ping-pong between
 // a step that fits and one that does not), but it is tried again once its
 // cost is forgotten, when what the smaller step costs now says it fits.
@@ -396,7 +422,7 @@ TEST(RefinementPolicyTest, OnAGpuTheFramesGpuTimeCounts) {
     frame.gpuMilliseconds = 9.0;
     policy.frameMeasured(frame);
     EXPECT_NEAR(policy.lastFrameCost(), 9.0, 1e-12);
-    policy.frameMeasured(frame);  // the running mean at 0.5: (45 / 2 + 9 / 2 + 9) / 2
+    policy.frameMeasured(frame);                           // the lower of the last two at 0.5: 9
     EXPECT_FLOAT_EQ(policy.nextInteractiveScale(), 0.6F);  // one step up from 0.5
     // Without a GPU time (no timer queries) a GPU's work is unknown: the wall time.
     frame.gpuMilliseconds.reset();

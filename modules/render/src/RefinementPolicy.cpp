@@ -100,7 +100,7 @@ std::size_t RefinementPolicy::currentStep() const noexcept {
 double RefinementPolicy::rememberedCost(std::size_t step) const noexcept {
     const StepCost& cost = stepCosts_[step];
     const bool known = cost.samples > 0 && measurements_ - cost.when < kCostMemory;
-    return known ? cost.milliseconds : 0.0;
+    return known ? cost.lowerOfLastTwo : 0.0;
 }
 
 double RefinementPolicy::expectedCost(std::size_t to, std::size_t from, double ms) const noexcept {
@@ -121,11 +121,9 @@ void RefinementPolicy::frameMeasured(const FrameMeasurement& frame) noexcept {
     std::size_t step = currentStep();
     StepCost& cost = stepCosts_[step];
     if (rememberedCost(step) > 0.0) {
-        cost.milliseconds = 0.5 * (cost.milliseconds + milliseconds);
         cost.lowerOfLastTwo = std::min(cost.last, milliseconds);
         ++cost.samples;
     } else {
-        cost.milliseconds = milliseconds;
         cost.lowerOfLastTwo = milliseconds;
         cost.samples = 1;
     }
@@ -141,7 +139,7 @@ void RefinementPolicy::frameMeasured(const FrameMeasurement& frame) noexcept {
     const bool tooSlow = farOver || (over && step < kSmallestFaithfulStep);
     if (tooSlow) {
         step = std::min(step + 1, kSteps - 1);
-    } else if (step > 0 && expectedCost(step - 1, step, cost.milliseconds) <= frameBudgetMs_) {
+    } else if (step > 0 && expectedCost(step - 1, step, cost.lowerOfLastTwo) <= frameBudgetMs_) {
         --step;  // the larger step is expected to fit
     }
     nextInteractiveScale_ = kScaleSteps[step];

@@ -31,9 +31,9 @@ namespace vv::render {
 /// other processes) chooses the sizes of the next camera move's frames
 /// among kScaleSteps / kVssScaleSteps (a preview VSS shows only at the size
 /// it was solved at, so the sizes change only between moves). The policy
-/// remembers what each step cost (a running mean in which each new
-/// measurement weighs half, forgotten kCostMemory measurements after that
-/// step was last measured) and
+/// remembers what each step cost (the lower of its last two measurements,
+/// so that one frame slowed by something else does not count; forgotten
+/// kCostMemory measurements after that step was last measured) and
 ///  - steps down when the current step's last two measurements are both
 ///    over kStepDownFactor x the budget, or one is over kFarOverFactor x
 ///    (so the first, costlier frame at a new size — its framebuffers
@@ -166,10 +166,8 @@ class RefinementPolicy {
     [[nodiscard]] float nextInteractiveVssScale() const noexcept { return nextVssScale_; }
 
   private:
-    /// What one step cost: a running mean in which each new measurement
-    /// weighs half.
+    /// What one step cost.
     struct StepCost {
-        double milliseconds = 0.0;
         double last = 0.0;            ///< the last measurement
         double lowerOfLastTwo = 0.0;  ///< the lower of the last two
         unsigned samples = 0;         ///< 0: not known (or forgotten)
