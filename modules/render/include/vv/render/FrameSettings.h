@@ -27,9 +27,13 @@ struct VssSettings {
     float opacity = 1.0F;           ///< 0..1, the VSS over the background
     /// Progressive refinement: a preview solve (while the camera moves) uses
     /// the fast solver with at least `previewTolerance`, so it finishes sooner;
-    /// the exact solve (preview = false) uses `solver` as given.
+    /// the exact solve (preview = false) uses `solver` as given. 2/255: at
+    /// 8/255 the fast solver's interpolation bent z' enough between samples
+    /// for the lit VSS to show seams across the void while moving; 2/255
+    /// costs ~1 ms CPU more per moving frame at 0.42 of 1280x720
+    /// (docs/benchmarks/render.md, "Moving frames, round 7").
     bool preview = false;
-    double previewTolerance = 8.0 / 255.0;
+    double previewTolerance = 2.0 / 255.0;
     /// The depth range z is normalised over (VSS.md): the visible vessels'
     /// min / max (default: the scale adapts to each view), or a fixed range
     /// in scene units (the colours keep their depth across views; depths
