@@ -231,22 +231,25 @@ void main() {
         float ym = isVessel(p - dy) ? -1.0 : heightAt(p - dy, size);
         float yp = isVessel(p + dy) ? -1.0 : heightAt(p + dy, size);
         grad = vec2(derivative(xm, z, xp), derivative(ym, z, yp));
-        support = (hasVss(xm) && hasVss(xp) && hasVss(ym) && hasVss(yp)) ? 1.0 : 0.0;
+        float xm2 = isVessel(p - 2 * dx) ? -1.0 : heightAt(p - 2 * dx, size);
+        float xp2 = isVessel(p + 2 * dx) ? -1.0 : heightAt(p + 2 * dx, size);
+        float ym2 = isVessel(p - 2 * dy) ? -1.0 : heightAt(p - 2 * dy, size);
+        float yp2 = isVessel(p + 2 * dy) ? -1.0 : heightAt(p + 2 * dy, size);
         // Away from contours, the mean of the differences over 2 px: the
         // preview solve's interpolation bends z' at its cells' edges, which
         // one-pixel slopes light as seams across the void.
-        if (support > 0.5) {
-            float xm2 = isVessel(p - 2 * dx) ? -1.0 : heightAt(p - 2 * dx, size);
-            float xp2 = isVessel(p + 2 * dx) ? -1.0 : heightAt(p + 2 * dx, size);
-            float ym2 = isVessel(p - 2 * dy) ? -1.0 : heightAt(p - 2 * dy, size);
-            float yp2 = isVessel(p + 2 * dy) ? -1.0 : heightAt(p + 2 * dy, size);
-            if (hasVss(xm2) && hasVss(xp2)) {
-                grad.x = 0.125 * (xp2 - xm2) + 0.25 * (xp - xm);
-            }
-            if (hasVss(ym2) && hasVss(yp2)) {
-                grad.y = 0.125 * (yp2 - ym2) + 0.25 * (yp - ym);
-            }
+        if (hasVss(xm) && hasVss(xp) && hasVss(xm2) && hasVss(xp2)) {
+            grad.x = 0.125 * (xp2 - xm2) + 0.25 * (xp - xm);
         }
+        if (hasVss(ym) && hasVss(yp) && hasVss(ym2) && hasVss(yp2)) {
+            grad.y = 0.125 * (yp2 - ym2) + 0.25 * (yp - ym);
+        }
+        // The share of the eight samples with VSS: the specular fades over
+        // two pixels next to a contour, not on and off from pixel to pixel
+        // along the silhouette's staircase (which lit its corners as specks).
+        support = (float(hasVss(xm)) + float(hasVss(xp)) + float(hasVss(ym)) + float(hasVss(yp)) +
+                   float(hasVss(xm2)) + float(hasVss(xp2)) + float(hasVss(ym2)) +
+                   float(hasVss(yp2))) / 8.0;
     } else if (!vessel) {
 #ifdef SLOPE_TEXTURE
         fitted = texelFetch(uSlope, p, 0);

@@ -232,7 +232,8 @@ double vssRipple(const QImage& image, const std::vector<std::uint32_t>& ids) {
 TEST_F(MovingFrameTest, AMovingFramesLitVssDoesNotRippleMoreThanTheSettledFrames) {
     // Moving frames light the VSS with slopes from a few pixels around
     // (the settled frame's 5x5 plane fit is too costly per frame): with
-    // one-pixel differences the preview solve's cells showed as seams.
+    // one-pixel differences the preview solve's cells showed as seams, and
+    // the specular switched on and off next to the silhouettes.
     FrameSettings settled = displaySettings();
     settled.vss.isoLines = 0;
     settled.ao.enabled = false;
@@ -249,8 +250,10 @@ TEST_F(MovingFrameTest, AMovingFramesLitVssDoesNotRippleMoreThanTheSettledFrames
     std::printf("lit VSS ripple (RMS second difference of luma): settled %.3f, moving %.3f\n",
                 stillRipple, movingRipple);
     // 1.45 x the settled frame's with one-pixel slopes, 1.28 x with the
-    // mean of the 1 and 2 px differences.
-    EXPECT_LT(movingRipple, 1.36 * stillRipple);
+    // mean of the 1 and 2 px differences, 1.01 x with the specular fading
+    // by the share of the eight samples with VSS (not on / off by all four
+    // neighbours, which flickered along the silhouettes' staircase).
+    EXPECT_LT(movingRipple, 1.15 * stillRipple);
 }
 
 /// Pixels where `with` and `without` differ by more than 40 of 255 in some
