@@ -131,6 +131,29 @@ TEST_F(MovingFrameTest, AMovingFramesVssLiesWhereTheSettledFramesDoes) {
     EXPECT_LT(std::abs(offset), 0.002);
 }
 
+/// RMS of the second differences `step` px apart, along x and along y, of
+/// value(x, y) over the pixels of a w x h image at least `margin` (>= step)
+/// from its border where keep(x, y) holds; expects them to be over a
+/// quarter of the image.
+template <class Keep, class Value>
+double rmsSecondDifference(int w, int h, int step, int margin, Keep keep, Value value) {
+    double sum = 0.0;
+    long n = 0;
+    for (int y = margin; y + margin < h; ++y) {
+        for (int x = margin; x + margin < w; ++x) {
+            if (!keep(x, y)) {
+                continue;
+            }
+            const double ddx = value(x - step, y) - 2.0 * value(x, y) + value(x + step, y);
+            const double ddy = value(x, y - step) - 2.0 * value(x, y) + value(x, y + step);
+            sum += ddx * ddx + ddy * ddy;
+            n += 2;
+        }
+    }
+    EXPECT_GT(n, static_cast<long>(w) * h / 4);
+    return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+}
+
 /// RMS over the void pixels at least 3 px from every vessel pixel of the
 /// second differences (along x and along y) of `a` - `b`: how much the
 /// difference of two VSS heights of the same size kinks from pixel to pixel,
@@ -154,21 +177,7 @@ double seamRms(const ShownVss& a, const ShownVss& b) {
     const auto e = [&](int x, int y) {
         return static_cast<double>(a.height(x, y)) - static_cast<double>(b.height(x, y));
     };
-    double sum = 0.0;
-    long n = 0;
-    for (int y = 1; y + 1 < h; ++y) {
-        for (int x = 1; x + 1 < w; ++x) {
-            if (!isVoid(x, y)) {
-                continue;
-            }
-            const double ddx = e(x - 1, y) - 2.0 * e(x, y) + e(x + 1, y);
-            const double ddy = e(x, y - 1) - 2.0 * e(x, y) + e(x, y + 1);
-            sum += ddx * ddx + ddy * ddy;
-            n += 2;
-        }
-    }
-    EXPECT_GT(n, static_cast<long>(w) * h / 4);
-    return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+    return rmsSecondDifference(w, h, 1, 1, isVoid, e);
 }
 
 TEST_F(MovingFrameTest, AMovingFramesVssHasNoSeamsFromThePreviewSolve) {
@@ -201,32 +210,21 @@ TEST_F(MovingFrameTest, AMovingFramesVssHasNoSeamsFromThePreviewSolve) {
 /// (objectIds, top-down rows, 0 = none): how much the lit VSS ripples.
 double vssRipple(const QImage& image, const std::vector<std::uint32_t>& ids) {
     const int w = image.width();
-    const int h = image.height();
+    const auto clear = [&](int x, int y) {
+        for (int dy = -4; dy <= 4; ++dy) {
+            for (int dx = -4; dx <= 4; ++dx) {
+                if (ids[static_cast<std::size_t>(y + dy) * w + (x + dx)] != 0U) {
+                    return false;
+                }
+            }
+        }
+        return true;
+    };
     const auto luma = [&](int x, int y) {
         const QRgb c = image.pixel(x, y);
         return 0.299 * qRed(c) + 0.587 * qGreen(c) + 0.114 * qBlue(c);
     };
-    double sum = 0.0;
-    long n = 0;
-    for (int y = 4; y + 4 < h; ++y) {
-        for (int x = 4; x + 4 < w; ++x) {
-            bool clear = true;
-            for (int dy = -4; dy <= 4 && clear; ++dy) {
-                for (int dx = -4; dx <= 4 && clear; ++dx) {
-                    clear = ids[static_cast<std::size_t>(y + dy) * w + (x + dx)] == 0U;
-                }
-            }
-            if (!clear) {
-                continue;
-            }
-            const double ddx = luma(x - 2, y) - 2.0 * luma(x, y) + luma(x + 2, y);
-            const double ddy = luma(x, y - 2) - 2.0 * luma(x, y) + luma(x, y + 2);
-            sum += ddx * ddx + ddy * ddy;
-            n += 2;
-        }
-    }
-    EXPECT_GT(n, static_cast<long>(w) * h / 4);
-    return n > 0 ? std::sqrt(sum / static_cast<double>(n)) : 0.0;
+    return rmsSecondDifference(w, image.height(), 2, 4, clear, luma);
 }
 
 TEST_F(MovingFrameTest, AMovingFramesLitVssDoesNotRippleMoreThanTheSettledFrames) {
