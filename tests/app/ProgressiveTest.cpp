@@ -733,7 +733,13 @@ class PassTable {
 TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     auto scene = std::make_shared<const vv::scene::Scene>(
         vv::meshio::loadScene({std::filesystem::path(VV_DEMO_VTP)}));
-    ViewerWidget& viewer = open(scene, 1280, 720);
+    // VV_BENCH_SIZE=WxH: the viewer at another size (screens up to 4K).
+    QSize benchSize(1280, 720);
+    if (const QStringList wh = qEnvironmentVariable("VV_BENCH_SIZE").split(QLatin1Char('x'));
+        wh.size() == 2 && wh[0].toInt() > 0 && wh[1].toInt() > 0) {
+        benchSize = QSize(wh[0].toInt(), wh[1].toInt());
+    }
+    ViewerWidget& viewer = open(scene, benchSize.width(), benchSize.height());
     // VV_BENCH_PASSES=1: per-pass GPU times too (waiting for the timers
     // serialises the frame a little, so fps are measured without them).
     const bool passTimes = qEnvironmentVariableIntValue("VV_BENCH_PASSES") != 0;
@@ -746,17 +752,17 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     }
     // VV_BENCH_CULLING=0: both sides of every triangle drawn (the old way).
     viewer.setBackFaceCulling(qEnvironmentVariable("VV_BENCH_CULLING") != QStringLiteral("0"));
-    // The viewer itself at 1280x720, whatever the toolbars take.
+    // The viewer itself at its size, whatever the toolbars take.
     ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > 0; }));
     // (Panels may still change their width after the first frame: resized
     // again until the viewer keeps its size.)
-    for (int attempt = 0; attempt < 4 && viewer.size() != QSize(1280, 720); ++attempt) {
+    for (int attempt = 0; attempt < 4 && viewer.size() != benchSize; ++attempt) {
         const QSize extra = window_->size() - viewer.size();
-        window_->resize(QSize(1280, 720) + extra);
-        static_cast<void>(waitUntil([&] { return viewer.size() == QSize(1280, 720); }));
+        window_->resize(benchSize + extra);
+        static_cast<void>(waitUntil([&] { return viewer.size() == benchSize; }));
         static_cast<void>(waitUntil([&] { return exactShown(viewer); }));
     }
-    ASSERT_TRUE(waitUntil([&] { return viewer.size() == QSize(1280, 720) && exactShown(viewer); }))
+    ASSERT_TRUE(waitUntil([&] { return viewer.size() == benchSize && exactShown(viewer); }))
         << viewer.width() << "x" << viewer.height();
     // The simplified geometry for moving frames is built in the background.
     ASSERT_TRUE(waitUntil([&] { return viewer.hasPreviewGeometry(); }));
@@ -929,16 +935,16 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         std::printf(
             "[bench] progressive=%s interactive scale %.2f (rendered %dx%d, VSS %dx%d while "
             "moving) "
-            "1280x720 "
+            "%dx%d "
             "demo: 30 rotations in %.0f ms = %.1f fps; frame ms "
             "median %.0f, min %.0f, max %.0f; frames with this view's VSS %d/30 (preview %d); "
             "release -> exact VSS shown %.0f ms after %llu frame(s), solve requested on settle: "
             "%s (solve %.0f ms); solves submitted %llu, completed %llu, cancelled %llu\n",
             progressive ? "on" : "off", static_cast<double>(config.scale), movingSize.width(),
-            movingSize.height(), movingVssSize.width(), movingVssSize.height(), totalMs,
-            30000.0 / totalMs, median, sorted.front(), sorted.back(), withCurrentVss, previews,
-            exactMs, static_cast<unsigned long long>(framesAfterRelease), direct ? "yes" : "no",
-            viewer.vssStatus().solveMilliseconds,
+            movingSize.height(), movingVssSize.width(), movingVssSize.height(), viewer.width(),
+            viewer.height(), totalMs, 30000.0 / totalMs, median, sorted.front(), sorted.back(),
+            withCurrentVss, previews, exactMs, static_cast<unsigned long long>(framesAfterRelease),
+            direct ? "yes" : "no", viewer.vssStatus().solveMilliseconds,
             static_cast<unsigned long long>(countersAfter.submitted - countersBefore.submitted),
             static_cast<unsigned long long>(countersAfter.completed - countersBefore.completed),
             static_cast<unsigned long long>(countersAfter.cancelled - countersBefore.cancelled));
