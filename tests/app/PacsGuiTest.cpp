@@ -199,8 +199,20 @@ class PacsGuiTest : public vv::test::GuiFixture {
         EXPECT_NE(browser, nullptr);
         if (browser != nullptr) {
             EXPECT_TRUE(waitUntil([&] { return browser->isVisible(); }, 5000));
+            EXPECT_TRUE(read(*browser));
         }
         return browser;
+    }
+
+    /// Refresh, and the wait (bounded) for its rows; false when they never came.
+    static bool refreshAndRead(LocalStudiesBrowser& browser) {
+        browser.refresh();
+        return read(browser);
+    }
+
+    /// Waits (bounded) until the browser's read of the store is shown.
+    static bool read(const LocalStudiesBrowser& browser) {
+        return waitUntil([&] { return !browser.isReading(); }, 15000);
     }
 
     /// Orthanc pushes the study to our listener (C-MOVE with us as destination).
@@ -321,8 +333,10 @@ TEST_F(PacsGuiTest, StudyPushedByOrthancAppearsInLocalStudiesWithoutUserAction) 
     PacsSettings other = settings();
     other.storeFolder = testDir() / "store-other";
     listener()->apply(other);
+    ASSERT_TRUE(read(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
     listener()->apply(settings());
+    ASSERT_TRUE(read(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
 }
 
@@ -357,7 +371,7 @@ TEST_F(PacsGuiTest, UnknownNodePushingIsRefusedAndNothingAppears) {
     ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
     waitUntil([] { return false; }, 1000);  // time for a refresh that must not come
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
-    browser->refresh();
+    ASSERT_TRUE(refreshAndRead(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
 }
 
@@ -367,7 +381,7 @@ TEST_F(PacsGuiTest, NodeNotAllowedToPushIsRefused) {
     ASSERT_NE(browser, nullptr);
     EXPECT_THROW(orthancPushesTheStudy(), vv::pacs::NetworkError);
     ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() >= 1; }, 5000));
-    browser->refresh();
+    ASSERT_TRUE(refreshAndRead(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
 }
 
@@ -590,6 +604,7 @@ TEST_F(PacsGuiTest, OpeningAStudyRemovedMeanwhileSaysSoAndItsRowGoes) {
     ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 15000));
     EXPECT_EQ(browser->messageLine()->text(),
               QStringLiteral("This study is no longer in the local study store."));
+    ASSERT_TRUE(read(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
     EXPECT_TRUE(window_->lastError().isEmpty()) << "nothing was opened";
 }
