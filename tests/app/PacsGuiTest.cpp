@@ -27,6 +27,7 @@
 
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
+#include "LocalStudiesGui.h"
 #include "OrthancServer.h"
 #include "SyntheticCta.h"
 #include "gui/SeriesDialog.h"
@@ -193,16 +194,7 @@ class PacsGuiTest : public vv::test::GuiFixture {
     }
 
     /// DICOM > Local Studies…, as the user opens it.
-    LocalStudiesBrowser* openBrowser() {
-        window_->findChild<QAction*>(QStringLiteral("localStudies"))->trigger();
-        auto* browser = window_->findChild<LocalStudiesBrowser*>();
-        EXPECT_NE(browser, nullptr);
-        if (browser != nullptr) {
-            EXPECT_TRUE(waitUntil([&] { return browser->isVisible(); }, 5000));
-            EXPECT_TRUE(read(*browser));
-        }
-        return browser;
-    }
+    LocalStudiesBrowser* openBrowser() { return vv::test::openLocalStudies(*window_); }
 
     /// Refresh, and the wait (bounded) for its rows; false when they never came.
     static bool refreshAndRead(LocalStudiesBrowser& browser) {

@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "GuiFixture.h"
+#include "LocalStudiesGui.h"
 #include "SyntheticCta.h"
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
@@ -153,16 +154,7 @@ class PacsLocalStudiesGuiTest : public vv::test::GuiFixture {
     }
 
     /// DICOM > Local Studies…, as the user opens it; waits for its rows.
-    LocalStudiesBrowser* openBrowser() {
-        window_->findChild<QAction*>(QStringLiteral("localStudies"))->trigger();
-        auto* browser = window_->findChild<LocalStudiesBrowser*>();
-        EXPECT_NE(browser, nullptr);
-        if (browser != nullptr) {
-            EXPECT_TRUE(waitUntil([&] { return browser->isVisible(); }, 5000));
-            EXPECT_TRUE(waitUntil([&] { return !browser->isReading(); }, 15000));
-        }
-        return browser;
-    }
+    LocalStudiesBrowser* openBrowser() { return vv::test::openLocalStudies(*window_); }
 
     static QPushButton* refreshButton(LocalStudiesBrowser* browser) {
         for (QPushButton* button : browser->findChildren<QPushButton*>()) {

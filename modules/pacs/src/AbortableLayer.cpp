@@ -5,17 +5,19 @@
 
 #include <utility>
 
+#include "ForwardingConnection.h"
+
 namespace vv::pacs::detail {
 
 namespace {
 
 /// Passes everything to the connection it wraps; keeps its socket attached to
 /// the switch until the socket is closed.
-class AbortableConnection : public DcmTransportConnection {
+class AbortableConnection : public ForwardingConnection {
   public:
     AbortableConnection(DcmNativeSocketType socket, DcmTransportConnection* inner,
                         std::shared_ptr<AbortSwitch> abortSwitch)
-        : DcmTransportConnection(socket), inner_(inner), switch_(std::move(abortSwitch)) {
+        : ForwardingConnection(socket, inner), switch_(std::move(abortSwitch)) {
         switch_->attach(socket);
     }
     AbortableConnection(const AbortableConnection&) = delete;
@@ -24,37 +26,20 @@ class AbortableConnection : public DcmTransportConnection {
     AbortableConnection& operator=(AbortableConnection&&) = delete;
     ~AbortableConnection() override {
         switch_->detach(getSocket());
-        inner_.reset();
+        dropInner();  // closes the socket, now that a stop cannot reach it
     }
 
-    OFCondition serverSideHandshake() override { return inner_->serverSideHandshake(); }
-    OFCondition clientSideHandshake() override { return inner_->clientSideHandshake(); }
-    OFCondition renegotiate(const char* suite) override { return inner_->renegotiate(suite); }
-    ssize_t read(void* buf, size_t n) override { return inner_->read(buf, n); }
-    ssize_t write(void* buf, size_t n) override { return inner_->write(buf, n); }
     void close() override {
         switch_->detach(getSocket());
-        inner_->close();
+        ForwardingConnection::close();
         setSocket(-1);
     }
     void closeTransportConnection() override {
         switch_->detach(getSocket());
-        inner_->closeTransportConnection();
-    }
-    unsigned long getPeerCertificateLength() override { return inner_->getPeerCertificateLength(); }
-    unsigned long getPeerCertificate(void* buf, unsigned long length) override {
-        return inner_->getPeerCertificate(buf, length);
-    }
-    OFBool networkDataAvailable(int timeout) override {
-        return inner_->networkDataAvailable(timeout);
-    }
-    OFBool isTransparentConnection() override { return inner_->isTransparentConnection(); }
-    OFString& dumpConnectionParameters(OFString& str) override {
-        return inner_->dumpConnectionParameters(str);
+        ForwardingConnection::closeTransportConnection();
     }
 
   private:
-    std::unique_ptr<DcmTransportConnection> inner_;
     std::shared_ptr<AbortSwitch> switch_;
 };
 
