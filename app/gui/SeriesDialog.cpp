@@ -225,7 +225,7 @@ QString SeriesDialog::seriesTitle() const {
 }
 
 QString SeriesDialog::seriesName(const dicom::DicomSeries& series) {
-    const QString description = fromStd(series.description).simplified();
+    QString description = fromStd(series.description).simplified();
     if (!description.isEmpty()) {
         return description;
     }

@@ -33,7 +33,6 @@
 
 namespace {
 
-using vv::test::kNetworkWaitMs;
 using vv::test::waitUntil;
 
 /// A DICOM peer that never answers: accepts each TCP connection on
@@ -60,6 +59,8 @@ class StallingPeer {
     }
     StallingPeer(const StallingPeer&) = delete;
     StallingPeer& operator=(const StallingPeer&) = delete;
+    StallingPeer(StallingPeer&&) = delete;
+    StallingPeer& operator=(StallingPeer&&) = delete;
     ~StallingPeer() {
         for (QSocketNotifier* n : context_.findChildren<QSocketNotifier*>()) {
             n->setEnabled(false);

@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QDate>
 #include <QElapsedTimer>
 #include <QLabel>
 #include <QPointer>
@@ -62,9 +63,9 @@ std::vector<Study> commitStudies(const fs::path& root, int count, int first = 0)
     for (int i = first; i < first + count; ++i) {
         Study s;
         s.uid = "2.25." + std::to_string(100000 + i);
-        char date[16];
-        std::snprintf(date, sizeof date, "%04d%02d%02d", 1990 + i % 30, 1 + i % 12, 1 + i % 28);
-        s.date = date;
+        s.date = QDate(1990 + i % 30, 1 + i % 12, 1 + i % 28)
+                     .toString(QStringLiteral("yyyyMMdd"))
+                     .toStdString();
         s.description = "Study " + std::to_string(i);
         const fs::path staged = t.stagingPath();
         std::ofstream(staged) << "instance " << i;
@@ -97,19 +98,21 @@ void sortAsListed(std::vector<Study>& studies) {
 class IndexWriter {
   public:
     explicit IndexWriter(const fs::path& root) {
-        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), kName);
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), name_);
         db.setDatabaseName(QString::fromStdString((root / "index.sqlite").string()));
         EXPECT_TRUE(db.open());
         EXPECT_TRUE(QSqlQuery(db).exec(QStringLiteral("BEGIN EXCLUSIVE")));
     }
     IndexWriter(const IndexWriter&) = delete;
     IndexWriter& operator=(const IndexWriter&) = delete;
+    IndexWriter(IndexWriter&&) = delete;
+    IndexWriter& operator=(IndexWriter&&) = delete;
     ~IndexWriter() {
         release();
-        QSqlDatabase::removeDatabase(kName);
+        QSqlDatabase::removeDatabase(name_);
     }
     void release() {
-        QSqlDatabase db = QSqlDatabase::database(kName, false);
+        QSqlDatabase db = QSqlDatabase::database(name_, false);
         if (db.isOpen()) {
             QSqlQuery(db).exec(QStringLiteral("ROLLBACK"));
             db.close();
@@ -117,7 +120,7 @@ class IndexWriter {
     }
 
   private:
-    static inline const QString kName = QStringLiteral("test.index.writer");
+    QString name_ = QStringLiteral("test.index.writer");
 };
 
 class PacsLocalStudiesGuiTest : public vv::test::GuiFixture {

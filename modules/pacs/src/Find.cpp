@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 
 #include "Association.h"
 #include "vv/core/Error.h"
@@ -120,10 +121,10 @@ std::string requiredUid(DcmDataset& ds, const DcmTagKey& tag, const FindLimits& 
 
 /// Runs one C-FIND with `keys` and hands each match to `handler`.
 void runFind(const LocalAe& me, const Node& peer, DcmDataset& keys, const FindLimits& limits,
-             const std::stop_token& stop, const FindScu::Handler& handler) {
+             std::stop_token stop, const FindScu::Handler& handler) {
     FindScu scu(limits, handler);
     detail::configure(scu, me, peer);
-    scu.abortOn(stop);
+    scu.abortOn(std::move(stop));
     detail::propose(scu, UID_FINDStudyRootQueryRetrieveInformationModel);
     detail::open(scu, peer);
     const T_ASC_PresentationContextID id =
@@ -173,7 +174,7 @@ std::vector<StudyResult> findStudies(const LocalAe& me, const Node& peer, const 
     keys.putAndInsertString(DCM_NumberOfStudyRelatedSeries, "");
 
     std::vector<StudyResult> results;
-    runFind(me, peer, keys, limits, stop, [&](DcmDataset& ds) {
+    runFind(me, peer, keys, limits, std::move(stop), [&](DcmDataset& ds) {
         StudyResult r;
         r.studyInstanceUid = requiredUid(ds, DCM_StudyInstanceUID, limits);
         r.patientName = text(ds, DCM_PatientName, limits);
@@ -204,7 +205,7 @@ std::vector<SeriesResult> findSeries(const LocalAe& me, const Node& peer, const 
     keys.putAndInsertString(DCM_NumberOfSeriesRelatedInstances, "");
 
     std::vector<SeriesResult> results;
-    runFind(me, peer, keys, limits, stop, [&](DcmDataset& ds) {
+    runFind(me, peer, keys, limits, std::move(stop), [&](DcmDataset& ds) {
         SeriesResult r;
         r.studyInstanceUid = query.studyInstanceUid;
         r.seriesInstanceUid = requiredUid(ds, DCM_SeriesInstanceUID, limits);
