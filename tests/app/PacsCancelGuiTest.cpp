@@ -16,6 +16,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QLabel>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QSocketNotifier>
 #include <QTableWidget>
@@ -30,6 +31,7 @@
 #include "PacsGuiFixture.h"
 #include "gui/pacs/NetworkPreferencesDialog.h"
 #include "gui/pacs/PacsBrowser.h"
+#include "gui/pacs/TlsFilesBox.h"
 
 namespace {
 
@@ -197,6 +199,11 @@ TEST_F(PacsCancelGuiTest, CancelTestAbortsTheEchoAtOnceAndSaysCancelled) {
     EXPECT_TRUE(dialog->testRunning());
     EXPECT_FALSE(dialog->testButton()->isEnabled());
     ASSERT_TRUE(dialog->cancelTestButton()->isEnabled());
+    // The "Testing…" line takes room without squeezing the fields above it.
+    for (QLineEdit* edit : {dialog->aeTitleEdit(), dialog->listenerTlsBox()->trustedEdit(),
+                            dialog->listenerTlsBox()->keyEdit(), dialog->storeFolderEdit()}) {
+        EXPECT_GE(edit->height(), edit->sizeHint().height()) << edit->objectName().toStdString();
+    }
     dialog->grab().save(
         QString::fromStdString((vv::test::panelTestDir() / "test-running.png").string()));
 
