@@ -340,7 +340,13 @@ void NetworkPreferencesDialog::cancelTest() {
 
 void NetworkPreferencesDialog::fitHeight() {
     // A word-wrapped line that appears does not raise the window's minimum
-    // height by itself: without this the fields above it are squeezed.
+    // height by itself: without this the fields above it are squeezed. The
+    // group boxes that hold it learn of its new size hint first (else the
+    // window's layout still counts the hint it had before).
+    for (QWidget* w = testResult_->parentWidget(); w != nullptr && w != this;
+         w = w->parentWidget()) {
+        w->updateGeometry();
+    }
     const int width = this->width();
     const int needed =
         std::max(layout()->totalMinimumSize().height(), layout()->totalHeightForWidth(width));
