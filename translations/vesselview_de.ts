@@ -724,6 +724,10 @@
         <source>The study %1 could not be deleted: the study store cannot be written.</source>
         <translation>Die Studie %1 konnte nicht gelöscht werden: In den Studienspeicher lässt sich nicht schreiben.</translation>
     </message>
+    <message>
+        <source>Reading the study store %1…</source>
+        <translation>Der Studienspeicher %1 wird gelesen…</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::LocalStudyActions</name>
@@ -1327,6 +1331,18 @@
         <source>Nodes sending to us must then use TLS with a certificate signed by the trusted CA</source>
         <translation>Knoten, die an uns senden, müssen dann TLS mit einem von der vertrauenswürdigen CA signierten Zertifikat verwenden</translation>
     </message>
+    <message>
+        <source>Ca&amp;ncel Test</source>
+        <translation>Test abb&amp;rechen</translation>
+    </message>
+    <message>
+        <source>Stop waiting for the node&apos;s answer</source>
+        <translation>Nicht länger auf die Antwort des Knotens warten</translation>
+    </message>
+    <message>
+        <source>Test cancelled.</source>
+        <translation>Test abgebrochen.</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::NodeEditDialog</name>
@@ -1564,6 +1580,18 @@
     <message>
         <source>Done: images retrieved into the local study store: %1.</source>
         <translation>Fertig: In den lokalen Studienspeicher abgerufene Bilder: %1.</translation>
+    </message>
+    <message>
+        <source>Cancel Searc&amp;h</source>
+        <translation>Suche &amp;abbrechen</translation>
+    </message>
+    <message>
+        <source>Stop waiting for the PACS&apos;s answer</source>
+        <translation>Nicht länger auf die Antwort des PACS warten</translation>
+    </message>
+    <message>
+        <source>Search cancelled.</source>
+        <translation>Suche abgebrochen.</translation>
     </message>
 </context>
 <context>
@@ -2103,6 +2131,18 @@
     <message>
         <source>from the histogram when loaded</source>
         <translation>beim Laden aus dem Histogramm</translation>
+    </message>
+    <message>
+        <source>%1 series %2</source>
+        <translation>%1-Serie %2</translation>
+    </message>
+    <message>
+        <source>DICOM series</source>
+        <translation>DICOM-Serie</translation>
+    </message>
+    <message>
+        <source>%1 series</source>
+        <translation>%1-Serie</translation>
     </message>
 </context>
 <context>

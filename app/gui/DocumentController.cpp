@@ -87,9 +87,10 @@ void DocumentController::openDicom(const QString& path) {
 }
 
 void DocumentController::openSeries(const QString& path,
-                                    const segmentation::SceneSourceOptions& options) {
+                                    const segmentation::SceneSourceOptions& options,
+                                    const QString& title) {
     std::vector<std::filesystem::path> paths{toPath(path)};
-    startTask(MeshLoadTask::loadFiles(std::move(paths), options, this), {path});
+    startTask(MeshLoadTask::loadFiles(std::move(paths), options, this), {path}, title);
 }
 
 void DocumentController::openDemo() {
@@ -282,7 +283,8 @@ bool DocumentController::abandonTask() {
     return true;
 }
 
-void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened) {
+void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened,
+                                   const QString& title) {
     abandonTask();
     task_ = task;
     connect(task, &MeshLoadTask::progressChanged, this,
@@ -294,8 +296,8 @@ void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened
                 }
             });
     connect(task, &MeshLoadTask::loaded, this,
-            [this, task, opened](std::shared_ptr<const scene::Scene> scene) {
-                taskLoaded(task, opened, std::move(scene));
+            [this, task, opened, title](std::shared_ptr<const scene::Scene> scene) {
+                taskLoaded(task, opened, title, std::move(scene));
             });
     connect(task, &MeshLoadTask::failed, this,
             [this, task](const QString& file, const QString& problem) {
@@ -316,11 +318,14 @@ void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened
 }
 
 void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opened,
+                                    const QString& seriesTitle,
                                     std::shared_ptr<const scene::Scene> scene) {
     // The title names the window: its strings keep the window's translation context.
     const int count = static_cast<int>(opened.size());
     QString title;
-    if (count == 1) {
+    if (!seriesTitle.isEmpty()) {
+        title = seriesTitle;
+    } else if (count == 1) {
         title = QFileInfo(opened.front()).fileName();
     } else if (count > 1) {
         title = QCoreApplication::translate("vv::gui::MainWindow", "%n files", nullptr, count);

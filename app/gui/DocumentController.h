@@ -67,8 +67,12 @@ class DocumentController : public QObject {
     /// fails naming it and the number of files skipped.
     void openDicom(const QString& path);
     /// Loads the series of `path` chosen in the series chooser (after
-    /// seriesScanned()), segmented with `options`.
-    void openSeries(const QString& path, const segmentation::SceneSourceOptions& options);
+    /// seriesScanned()), segmented with `options`, and names the document
+    /// `title` (SeriesDialog::seriesTitle(): what a clinician recognises the
+    /// series by; the folder of a study store is only its UID). An empty
+    /// `title` names it after `path`.
+    void openSeries(const QString& path, const segmentation::SceneSourceOptions& options,
+                    const QString& title = {});
     /// The demo: findDemoFile() if there is one (not remembered in the recent
     /// files), else the demo tree generated on a worker.
     void openDemo();
@@ -194,9 +198,10 @@ class DocumentController : public QObject {
     /// itself), dropping a waiting session; false when nothing was loading.
     bool abandonTask();
     /// Starts `task`, abandoning the one in progress and any waiting session;
-    /// `opened` are the files as the user named them (title, recent files).
-    void startTask(MeshLoadTask* task, const QStringList& opened);
-    void taskLoaded(MeshLoadTask* task, const QStringList& opened,
+    /// `opened` are the files as the user named them (title unless `title`
+    /// is given, recent files).
+    void startTask(MeshLoadTask* task, const QStringList& opened, const QString& title = {});
+    void taskLoaded(MeshLoadTask* task, const QStringList& opened, const QString& title,
                     std::shared_ptr<const scene::Scene> scene);
     void taskFinished(MeshLoadTask* task);
     /// Shows `scene` as the document; applies `session` to it when given.

@@ -557,8 +557,9 @@ void MainWindow::chooseSeries(const std::shared_ptr<const dicom::DicomScanResult
     statusLabel_->setText(tr("Choose a series"));
     auto* dialog = new SeriesDialog(*scan, this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    connect(dialog, &QDialog::accepted, this,
-            [this, dialog, path] { document_->openSeries(path, dialog->sceneSourceOptions()); });
+    connect(dialog, &QDialog::accepted, this, [this, dialog, path] {
+        document_->openSeries(path, dialog->sceneSourceOptions(), dialog->seriesTitle());
+    });
     connect(dialog, &QDialog::rejected, this, [this] { statusLabel_->setText(tr("Ready")); });
     dialog->open();
     emit seriesDialogShown(dialog);

@@ -9,6 +9,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QPushButton>
 #include <QSpinBox>
 #include <QTreeWidget>
@@ -216,6 +217,25 @@ void SeriesDialog::selectionChanged() {
     } else {
         thresholdRule_->setText(tr("from the histogram when loaded"));
     }
+}
+
+QString SeriesDialog::seriesTitle() const {
+    const dicom::DicomSeries* series = currentSeries();
+    return series != nullptr ? seriesName(*series) : QString();
+}
+
+QString SeriesDialog::seriesName(const dicom::DicomSeries& series) {
+    QString description = fromStd(series.description).simplified();
+    if (!description.isEmpty()) {
+        return description;
+    }
+    const QString modality = fromStd(series.modality).simplified();
+    if (series.seriesNumber) {
+        const QString number = QLocale().toString(*series.seriesNumber);
+        return modality.isEmpty() ? tr("Series %1").arg(number)
+                                  : tr("%1 series %2").arg(modality, number);
+    }
+    return modality.isEmpty() ? tr("DICOM series") : tr("%1 series").arg(modality);
 }
 
 segmentation::SceneSourceOptions SeriesDialog::sceneSourceOptions() const {

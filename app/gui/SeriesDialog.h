@@ -37,6 +37,12 @@ class SeriesDialog : public QDialog {
     bool selectSeries(const QString& uid);
     /// The chosen series and segmentation options for loadSceneSource().
     [[nodiscard]] segmentation::SceneSourceOptions sceneSourceOptions() const;
+    /// How the window and the document name the chosen series (seriesName());
+    /// empty when none is selected.
+    [[nodiscard]] QString seriesTitle() const;
+    /// What a clinician recognises a series by: its description, else its
+    /// modality and number ("CT series 3"), else "DICOM series"; never its UID.
+    [[nodiscard]] static QString seriesName(const dicom::DicomSeries& series);
 
     [[nodiscard]] QTreeWidget* tree() const noexcept { return tree_; }
     [[nodiscard]] QCheckBox* automaticThreshold() const noexcept { return autoThreshold_; }

@@ -184,6 +184,7 @@ TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
     expectWhole(series, "series");
     // DICOM > Local Studies… and Send to PACS… (issue 21).
     vv::gui::LocalStudiesBrowser local(*window_->listenerService(), window_.get());
+    ASSERT_TRUE(waitUntil([&] { return !local.isReading(); }, 15000));
     expectWhole(local, "local-studies");
     vv::gui::PacsSettings pacs;
     pacs.nodes.push_back({"Radiology PACS", {"ORTHANC", "pacs.example.org", 4242, {}}, true});

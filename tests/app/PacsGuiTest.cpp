@@ -27,6 +27,7 @@
 
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
+#include "LocalStudiesGui.h"
 #include "OrthancServer.h"
 #include "SyntheticCta.h"
 #include "gui/SeriesDialog.h"
@@ -193,14 +194,17 @@ class PacsGuiTest : public vv::test::GuiFixture {
     }
 
     /// DICOM > Local Studies…, as the user opens it.
-    LocalStudiesBrowser* openBrowser() {
-        window_->findChild<QAction*>(QStringLiteral("localStudies"))->trigger();
-        auto* browser = window_->findChild<LocalStudiesBrowser*>();
-        EXPECT_NE(browser, nullptr);
-        if (browser != nullptr) {
-            EXPECT_TRUE(waitUntil([&] { return browser->isVisible(); }, 5000));
-        }
-        return browser;
+    LocalStudiesBrowser* openBrowser() { return vv::test::openLocalStudies(*window_); }
+
+    /// Refresh, and the wait (bounded) for its rows; false when they never came.
+    static bool refreshAndRead(LocalStudiesBrowser& browser) {
+        browser.refresh();
+        return read(browser);
+    }
+
+    /// Waits (bounded) until the browser's read of the store is shown.
+    static bool read(const LocalStudiesBrowser& browser) {
+        return waitUntil([&] { return !browser.isReading(); }, 15000);
     }
 
     /// Orthanc pushes the study to our listener (C-MOVE with us as destination).
@@ -321,8 +325,10 @@ TEST_F(PacsGuiTest, StudyPushedByOrthancAppearsInLocalStudiesWithoutUserAction) 
     PacsSettings other = settings();
     other.storeFolder = testDir() / "store-other";
     listener()->apply(other);
+    ASSERT_TRUE(read(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
     listener()->apply(settings());
+    ASSERT_TRUE(read(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 1);
 }
 
@@ -357,7 +363,7 @@ TEST_F(PacsGuiTest, UnknownNodePushingIsRefusedAndNothingAppears) {
     ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
     waitUntil([] { return false; }, 1000);  // time for a refresh that must not come
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
-    browser->refresh();
+    ASSERT_TRUE(refreshAndRead(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
 }
 
@@ -367,7 +373,7 @@ TEST_F(PacsGuiTest, NodeNotAllowedToPushIsRefused) {
     ASSERT_NE(browser, nullptr);
     EXPECT_THROW(orthancPushesTheStudy(), vv::pacs::NetworkError);
     ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() >= 1; }, 5000));
-    browser->refresh();
+    ASSERT_TRUE(refreshAndRead(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
 }
 
@@ -590,6 +596,7 @@ TEST_F(PacsGuiTest, OpeningAStudyRemovedMeanwhileSaysSoAndItsRowGoes) {
     ASSERT_TRUE(waitUntil([&] { return browser->messageLine()->isVisible(); }, 15000));
     EXPECT_EQ(browser->messageLine()->text(),
               QStringLiteral("This study is no longer in the local study store."));
+    ASSERT_TRUE(read(*browser));
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
     EXPECT_TRUE(window_->lastError().isEmpty()) << "nothing was opened";
 }

@@ -10,6 +10,7 @@
 #include <chrono>
 #include <filesystem>
 #include <memory>
+#include <stop_token>
 #include <thread>
 
 #include "OrthancServer.h"
@@ -123,6 +124,62 @@ TEST(PacsFaultTest, SilentPeerTimesOut) {
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
 }
 
+/// Runs `call(stop token)` against a peer that never answers, requests the
+/// stop after 300 ms from another thread, and returns how long after the
+/// stop `call` took to throw CancelledError (the waits are 30 s long).
+template <typename Call>
+std::chrono::milliseconds timeToNoticeTheStop(Call call) {
+    std::stop_source stop;
+    std::chrono::steady_clock::time_point stopped;
+    std::thread canceller([&] {
+        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        stopped = std::chrono::steady_clock::now();
+        stop.request_stop();
+    });
+    bool cancelled = false;
+    try {
+        call(stop.get_token());
+    } catch (const vv::CancelledError&) {
+        cancelled = true;
+    } catch (const std::exception& e) {
+        ADD_FAILURE() << "not cancelled: " << e.what();
+    }
+    const auto ended = std::chrono::steady_clock::now();
+    canceller.join();
+    EXPECT_TRUE(cancelled);
+    return std::chrono::duration_cast<std::chrono::milliseconds>(ended - stopped);
+}
+
+TEST(PacsFaultTest, AStopAbortsAnEchoWaitingForASilentPeerAtOnce) {
+    const vv::test::SilentPeer peer;
+    const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
+    const LocalAe patient{kOurAe, Timeouts{5, 30, 30}};
+    const auto noticed =
+        timeToNoticeTheStop([&](std::stop_token stop) { echo(patient, silent, std::move(stop)); });
+    EXPECT_LT(noticed.count(), 500);
+}
+
+TEST(PacsFaultTest, AStopAbortsAFindWaitingForASilentPeerAtOnce) {
+    const vv::test::SilentPeer peer;
+    const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
+    const LocalAe patient{kOurAe, Timeouts{5, 30, 30}};
+    const auto noticed = timeToNoticeTheStop([&](std::stop_token stop) {
+        (void)findStudies(patient, silent, StudyQuery{}, {}, std::move(stop));
+    });
+    EXPECT_LT(noticed.count(), 500);
+}
+
+TEST(PacsFaultTest, AStopRequestedBeforeTheCallCancelsIt) {
+    const vv::test::SilentPeer peer;
+    const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
+    std::stop_source stop;
+    stop.request_stop();
+    const auto start = std::chrono::steady_clock::now();
+    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{5, 30, 30}}, silent, stop.get_token()),
+                 vv::CancelledError);
+    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(1));
+}
+
 TEST_F(PacsTest, FindsTheStudyByItsKeys) {
     StudyQuery byName;
     byName.patientName = "VesselView*";
@@ -141,6 +198,16 @@ TEST_F(PacsTest, FindsTheStudyByItsKeys) {
     StudyQuery future;
     future.studyDateFrom = "29990101";
     EXPECT_TRUE(findStudies(me(), orthanc_->node(), future).empty());
+}
+
+TEST_F(PacsTest, FindAndEchoThatCanBeStoppedWorkAsUsualWhenNotStopped) {
+    const std::stop_source stop;  // never requested: the abortable transport is in place
+    StudyQuery byId;
+    byId.patientId = "VV-PACS-1";
+    const auto studies = findStudies(me(), orthanc_->node(), byId, {}, stop.get_token());
+    ASSERT_EQ(studies.size(), 1U);
+    EXPECT_EQ(studies[0].studyInstanceUid, studyUid_);
+    EXPECT_NO_THROW(echo(me(), orthanc_->node(), stop.get_token()));
 }
 
 TEST_F(PacsTest, FindsTheSeriesOfTheStudy) {

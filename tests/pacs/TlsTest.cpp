@@ -8,6 +8,7 @@
 
 #include <chrono>
 #include <memory>
+#include <stop_token>
 
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
@@ -49,6 +50,15 @@ std::unique_ptr<OrthancServer> TlsTest::orthanc_;
 TEST_F(TlsTest, EchoAndFindOverTls) {
     EXPECT_NO_THROW(echo(me(), orthanc_->node()));
     EXPECT_TRUE(findStudies(me(), orthanc_->node(), StudyQuery{}).empty());
+}
+
+TEST_F(TlsTest, EchoAndFindOverTlsThatCanBeStoppedWorkAndUntrustedIsStillRefused) {
+    const std::stop_source stop;  // never requested: the abortable layer wraps the TLS one
+    EXPECT_NO_THROW(echo(me(), orthanc_->node(), stop.get_token()));
+    EXPECT_TRUE(findStudies(me(), orthanc_->node(), StudyQuery{}, {}, stop.get_token()).empty());
+    Node untrusted = orthanc_->node();
+    untrusted.tls.trustedCertificates = certificates_.otherCa;
+    EXPECT_THROW(echo(me(), untrusted, stop.get_token()), TlsError);
 }
 
 TEST_F(TlsTest, UntrustedServerCertificateIsTlsError) {

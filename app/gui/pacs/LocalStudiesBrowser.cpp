@@ -153,26 +153,44 @@ LocalStudiesBrowser::LocalStudiesBrowser(ListenerService& listener, QWidget* par
 }
 
 void LocalStudiesBrowser::refresh() {
-    QString selected;
+    reading_ = true;
+    updateStatusLine();
+    reader_.start(
+        [folder = listener_.storeFolder()](const std::stop_token&) { return readStore(folder); },
+        [this](const Listing& listing) { showListing(listing); });
+}
+
+LocalStudiesBrowser::Listing LocalStudiesBrowser::readStore(const std::filesystem::path& folder) {
+    Listing listing;
+    listing.folder = folder;
+    try {
+        if (std::filesystem::exists(folder)) {  // else nothing received yet: no store is made
+            listing.studies = pacs::LocalStore(folder).studies();
+        }
+    } catch (const Error&) {
+        listing.failed = true;
+    } catch (const std::filesystem::filesystem_error&) {
+        listing.failed = true;
+    }
+    return listing;
+}
+
+void LocalStudiesBrowser::showListing(const Listing& listing) {
+    QString selected;  // as the user left it while the store was read
     if (const QList<QTreeWidgetItem*> items = tree_->selectedItems(); !items.isEmpty()) {
         selected = items.front()->data(kPatient, kUidRole).toString();
     }
+    reading_ = false;
     tree_->clear();
-    readProblem_.clear();
-    const std::filesystem::path& folder = listener_.storeFolder();
-    try {
-        if (!std::filesystem::exists(folder)) {
-            updateStatusLine();  // nothing received yet; reading creates no store
-            return;
-        }
-        const pacs::LocalStore store(folder);
-        for (const pacs::StoredStudy& study : store.studies()) {
-            tree_->addTopLevelItem(studyItem(study));
-        }
-    } catch (const Error&) {
-        readProblem_ =
-            tr("The study store %1 cannot be read.").arg(QString::fromStdString(folder.string()));
+    readProblem_ = listing.failed ? tr("The study store %1 cannot be read.")
+                                        .arg(QString::fromStdString(listing.folder.string()))
+                                  : QString();
+    QList<QTreeWidgetItem*> rows;
+    rows.reserve(static_cast<qsizetype>(listing.studies.size()));
+    for (const pacs::StoredStudy& study : listing.studies) {
+        rows << studyItem(study);
     }
+    tree_->addTopLevelItems(rows);
     tree_->expandAll();
     for (QTreeWidgetItemIterator it(tree_); *it != nullptr; ++it) {
         if (!selected.isEmpty() && (*it)->data(kPatient, kUidRole).toString() == selected) {
@@ -180,14 +198,22 @@ void LocalStudiesBrowser::refresh() {
         }
     }
     updateStatusLine();
+    updateButtons();
+    emit refreshed();
 }
 
 void LocalStudiesBrowser::updateStatusLine() {
     const int studies = tree_->topLevelItemCount();
-    QString line = readProblem_.isEmpty()
-                       ? (studies == 1 ? tr("1 study in %1") : tr("%L1 studies in %2").arg(studies))
-                             .arg(QString::fromStdString(listener_.storeFolder().string()))
-                       : readProblem_;
+    const QString folder = QString::fromStdString(listener_.storeFolder().string());
+    QString line;
+    if (reading_) {
+        line = tr("Reading the study store %1…").arg(folder);
+    } else if (!readProblem_.isEmpty()) {
+        line = readProblem_;
+    } else {
+        line =
+            (studies == 1 ? tr("1 study in %1") : tr("%L1 studies in %2").arg(studies)).arg(folder);
+    }
     status_->setText(line + QStringLiteral(" — ") + listener_.stateText());
 }
 

@@ -3,8 +3,11 @@
 
 #include <QDialog>
 #include <QString>
+#include <filesystem>
+#include <vector>
 
 #include "gui/WorkerRun.h"
+#include "vv/pacs/LocalStore.h"
 
 class QLabel;
 class QPushButton;
@@ -34,11 +37,17 @@ class LocalStudiesBrowser : public QDialog {
   public:
     explicit LocalStudiesBrowser(ListenerService& listener, QWidget* parent = nullptr);
 
-    /// Reads the store's index again (quick: the index is small) and keeps
-    /// the selected series or study selected. A store that cannot be read
-    /// empties the list and says so in the top line; a store folder that does
-    /// not exist yet is an empty list (and is not created).
+    /// Reads the store's index again on a worker (SQLite: never on the GUI
+    /// thread, which may wait for another writer up to the index's busy
+    /// timeout). Until the rows come, the list shows the last read's rows and
+    /// the top line says that the store is being read; a read that a newer
+    /// refresh() overtook is dropped unseen. The selected series or study
+    /// stays selected. A store that cannot be read empties the list and says
+    /// so in the top line; a store folder that does not exist yet is an empty
+    /// list (and is not created).
     void refresh();
+    /// True from refresh() until its rows are shown.
+    [[nodiscard]] bool isReading() const noexcept { return reading_; }
 
     /// Top-level items: studies (data of column 0 = the folder); children: series.
     [[nodiscard]] QTreeWidget* tree() const noexcept { return tree_; }
@@ -58,14 +67,25 @@ class LocalStudiesBrowser : public QDialog {
     void showMessage(const QString& message);
 
   signals:
+    /// The rows of a refresh() are shown.
+    void refreshed();
     /// Open the DICOM data under `folder` (a series' or a study's folder) of
     /// the study `studyUid`.
     void openRequested(const QString& folder, const QString& studyUid);
 
   private:
+    /// What reading the store came to (on the worker).
+    struct Listing {
+        std::filesystem::path folder;
+        bool failed = false;  ///< the store cannot be read
+        std::vector<pacs::StoredStudy> studies;
+    };
     /// What removing a study came to.
     enum class Removal { Removed, Open, Gone, Failed };
 
+    /// Reads the store at `folder` (on a worker); never throws.
+    static Listing readStore(const std::filesystem::path& folder);
+    void showListing(const Listing& listing);
     void openSelected();
     void askToDeleteSelected();
     void startDelete(const QString& studyUid, const QString& name);
@@ -78,7 +98,9 @@ class LocalStudiesBrowser : public QDialog {
     QPushButton* open_ = nullptr;
     QPushButton* delete_ = nullptr;
     QLabel* message_ = nullptr;
-    QString readProblem_;               ///< why the store could not be read; empty when fine
+    QString readProblem_;  ///< why the store could not be read; empty when fine
+    bool reading_ = false;
+    LatestRun<Listing> reader_{this};   ///< stopped before the rest goes
     LatestRun<Removal> remover_{this};  ///< last: stopped before the rest goes
 };
 

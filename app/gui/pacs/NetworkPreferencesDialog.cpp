@@ -150,7 +150,10 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     remove_->setObjectName(QStringLiteral("removeNode"));
     test_->setObjectName(QStringLiteral("testNode"));
     test_->setToolTip(tr("C-ECHO: does the node answer and accept our AE title?"));
-    for (QPushButton* button : {add_, edit_, remove_, test_}) {
+    cancelTest_ = new QPushButton(tr("Ca&ncel Test"), nodes);
+    cancelTest_->setObjectName(QStringLiteral("cancelTest"));
+    cancelTest_->setToolTip(tr("Stop waiting for the node's answer"));
+    for (QPushButton* button : {add_, edit_, remove_, test_, cancelTest_}) {
         buttonRow->addWidget(button);
     }
     buttonRow->addStretch();
@@ -171,6 +174,7 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
         }
     });
     connect(test_, &QPushButton::clicked, this, &NetworkPreferencesDialog::testNode);
+    connect(cancelTest_, &QPushButton::clicked, this, &NetworkPreferencesDialog::cancelTest);
     connect(table_, &QTableWidget::itemSelectionChanged, this,
             &NetworkPreferencesDialog::updateButtons);
 
@@ -186,6 +190,10 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     layout->addWidget(error_);
     layout->addWidget(buttons);
     fillTable();
+}
+
+NetworkPreferencesDialog::~NetworkPreferencesDialog() {
+    testStop_.request_stop();
 }
 
 PacsSettings NetworkPreferencesDialog::settings() const {
@@ -245,6 +253,7 @@ void NetworkPreferencesDialog::updateButtons() {
     edit_->setEnabled(selected);
     remove_->setEnabled(selected);
     test_->setEnabled(selected && !testing_);
+    cancelTest_->setEnabled(testing_);
 }
 
 void NetworkPreferencesDialog::editNode(int row) {
@@ -288,13 +297,21 @@ void NetworkPreferencesDialog::testNode() {
     pacs::LocalAe me = settings().me;
     const pacs::Node node = nodes_[static_cast<std::size_t>(row)].node;
     testing_ = true;
+    testStop_ = std::stop_source();
+    const int generation = ++testGeneration_;
     test_->setText(tr("Testing…"));
     updateButtons();
     testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
     fitHeight();
     runInBackground(
-        this, [me, node] { return tryNetwork([&] { pacs::echo(me, node); }); },
-        [this, node](const NetworkFailure& failure) {
+        this,
+        [me, node, stop = testStop_.get_token()] {
+            return tryNetwork([&] { pacs::echo(me, node, stop); });
+        },
+        [this, node, generation](const NetworkFailure& failure) {
+            if (generation != testGeneration_) {
+                return;  // cancelled: the dialog moved on already
+            }
             testing_ = false;
             test_->setText(tr("&Test"));
             updateButtons();
@@ -307,9 +324,29 @@ void NetworkPreferencesDialog::testNode() {
         });
 }
 
+void NetworkPreferencesDialog::cancelTest() {
+    if (!testing_) {
+        return;
+    }
+    testStop_.request_stop();  // the worker aborts its association at once
+    ++testGeneration_;
+    testing_ = false;
+    test_->setText(tr("&Test"));
+    updateButtons();
+    testResult_->setText(tr("Test cancelled."));
+    fitHeight();
+    emit testFinished(false);
+}
+
 void NetworkPreferencesDialog::fitHeight() {
     // A word-wrapped line that appears does not raise the window's minimum
-    // height by itself: without this the fields above it are squeezed.
+    // height by itself: without this the fields above it are squeezed. The
+    // group boxes that hold it learn of its new size hint first (else the
+    // window's layout still counts the hint it had before).
+    for (QWidget* w = testResult_->parentWidget(); w != nullptr && w != this;
+         w = w->parentWidget()) {
+        w->updateGeometry();
+    }
     const int width = this->width();
     const int needed =
         std::max(layout()->totalMinimumSize().height(), layout()->totalHeightForWidth(width));

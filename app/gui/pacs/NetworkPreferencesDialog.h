@@ -2,6 +2,7 @@
 #pragma once
 
 #include <QDialog>
+#include <stop_token>
 
 #include "gui/pacs/PacsSettings.h"
 
@@ -29,6 +30,9 @@ class NetworkPreferencesDialog : public QDialog {
 
   public:
     explicit NetworkPreferencesDialog(QWidget* parent = nullptr);
+    /// Stops a Test that runs (its worker aborts the association).
+    ~NetworkPreferencesDialog() override;
+    Q_DISABLE_COPY_MOVE(NetworkPreferencesDialog)
 
     /// The settings as entered (not yet checked).
     [[nodiscard]] PacsSettings settings() const;
@@ -51,6 +55,9 @@ class NetworkPreferencesDialog : public QDialog {
     [[nodiscard]] QPushButton* editButton() const noexcept { return edit_; }
     [[nodiscard]] QPushButton* removeButton() const noexcept { return remove_; }
     [[nodiscard]] QPushButton* testButton() const noexcept { return test_; }
+    /// Cancels the Test that runs: the association is aborted, Test comes
+    /// back at once and the line under the table says "Test cancelled.".
+    [[nodiscard]] QPushButton* cancelTestButton() const noexcept { return cancelTest_; }
 
     /// Adds `node` to the table (what Add does after its dialog; no check here).
     void addNode(const PacsNode& node);
@@ -60,13 +67,14 @@ class NetworkPreferencesDialog : public QDialog {
   signals:
     /// Add or Edit opened the node dialog (tests fill it in).
     void nodeDialogShown(QDialog* dialog);
-    /// A Test ended; testResult() holds the text.
+    /// A Test ended (or was cancelled); testResult() holds the text.
     void testFinished(bool ok);
 
   private:
     void fillTable();
     void editNode(int row);
     void testNode();
+    void cancelTest();
     void updateButtons();
     void refuse(const QString& message, QWidget* field);
     void fitHeight();
@@ -84,9 +92,12 @@ class NetworkPreferencesDialog : public QDialog {
     QPushButton* edit_ = nullptr;
     QPushButton* remove_ = nullptr;
     QPushButton* test_ = nullptr;
+    QPushButton* cancelTest_ = nullptr;
     QLabel* testResult_ = nullptr;
     QLabel* error_ = nullptr;
     bool testing_ = false;
+    int testGeneration_ = 0;     ///< a cancelled Test's answer is dropped
+    std::stop_source testStop_;  ///< of the Test that runs
 };
 
 }  // namespace vv::gui

@@ -108,6 +108,9 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     search_ = new QPushButton(tr("&Search"), queryBox);
     search_->setObjectName(QStringLiteral("search"));
     search_->setDefault(true);
+    cancelSearch_ = new QPushButton(tr("Cancel Searc&h"), queryBox);
+    cancelSearch_->setObjectName(QStringLiteral("cancelSearch"));
+    cancelSearch_->setToolTip(tr("Stop waiting for the PACS's answer"));
     const auto addField = [grid, queryBox](int row, int column, const QString& label,
                                            QWidget* field) {
         auto* l = new QLabel(label, queryBox);
@@ -123,7 +126,11 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     addField(2, 1, tr("&Modality:"), modality_);
     addField(0, 2, tr("&Description:"), description_);
     addField(1, 2, tr("&Accession:"), accession_);
-    grid->addWidget(search_, 2, 5, Qt::AlignRight);
+    auto* searchButtons = new QHBoxLayout;
+    searchButtons->addStretch();
+    searchButtons->addWidget(cancelSearch_);
+    searchButtons->addWidget(search_);
+    grid->addLayout(searchButtons, 2, 5);
     grid->setColumnStretch(1, 2);
     grid->setColumnStretch(3, 1);
     grid->setColumnStretch(5, 2);
@@ -214,6 +221,7 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
         }
     });
     connect(search_, &QPushButton::clicked, this, &PacsBrowser::startSearch);
+    connect(cancelSearch_, &QPushButton::clicked, this, &PacsBrowser::cancelSearch);
     for (QLineEdit* edit : {patientName_, patientId_, description_, accession_}) {
         connect(edit, &QLineEdit::returnPressed, this, &PacsBrowser::startSearch);
     }
@@ -239,6 +247,8 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
 }
 
 PacsBrowser::~PacsBrowser() {
+    searchStop_.request_stop();  // the workers abort their associations
+    seriesStop_.request_stop();
     if (retrieve_ != nullptr) {
         retrieve_->stop.request_stop();  // the worker ends on its own; nothing waits for it
     }
@@ -308,15 +318,20 @@ void PacsBrowser::startSearch() {
         return;
     }
     searching_ = true;
+    searchStop_ = std::stop_source();
+    const int generation = ++searchGeneration_;
     updateButtons();
     setStatus(tr("Searching %1…").arg(text(pacs::describe(node->node))));
     runInBackground(
         this,
-        [me = settings_.me, peer = node->node, q = query()] {
-            return tryNetwork([&] { return pacs::findStudies(me, peer, q); });
+        [me = settings_.me, peer = node->node, q = query(), stop = searchStop_.get_token()] {
+            return tryNetwork([&] { return pacs::findStudies(me, peer, q, {}, stop); });
         },
-        [this, peer = node->node, name = node->name](
+        [this, generation, peer = node->node, name = node->name](
             const std::pair<std::vector<pacs::StudyResult>, NetworkFailure>& answer) {
+            if (generation != searchGeneration_) {
+                return;  // cancelled: the window moved on already
+            }
             searching_ = false;
             const bool ok = answer.second.kind == NetworkFailure::Kind::None;
             // The tables show the last search's answer, and its node serves them.
@@ -331,6 +346,31 @@ void PacsBrowser::startSearch() {
             updateButtons();
             emit searchFinished(ok);
         });
+}
+
+void PacsBrowser::cancelSearch() {
+    if (!searching_ && !seriesSearching_) {
+        return;
+    }
+    const bool studies = searching_;
+    // The workers abort their associations at once; their answers are dropped.
+    searchStop_.request_stop();
+    seriesStop_.request_stop();
+    ++searchGeneration_;
+    ++seriesGeneration_;
+    searching_ = false;
+    seriesSearching_ = false;
+    if (studies) {
+        resultsNode_.clear();  // the rows shown are not this search's answer
+        showStudies({});
+    }
+    setStatus(tr("Search cancelled."));
+    updateButtons();
+    if (studies) {
+        emit searchFinished(false);
+    } else {
+        emit seriesFinished(false);
+    }
 }
 
 void PacsBrowser::showStudies(const std::vector<pacs::StudyResult>& studies) {
@@ -362,25 +402,32 @@ void PacsBrowser::showStudies(const std::vector<pacs::StudyResult>& studies) {
 void PacsBrowser::studySelected() {
     seriesResults_.clear();
     series_->setRowCount(0);
+    // The series of the study selected before: not wanted any more.
+    const int generation = ++seriesGeneration_;
+    seriesStop_.request_stop();
+    seriesSearching_ = false;
     updateButtons();
     const int row = studies_->currentRow();
     const PacsNode* node = resultsNode();
     if (row < 0 || row >= static_cast<int>(studyResults_.size()) || node == nullptr) {
         return;
     }
-    const int generation = ++seriesGeneration_;
+    seriesStop_ = std::stop_source();
+    seriesSearching_ = true;
+    updateButtons();
     pacs::SeriesQuery q;
     q.studyInstanceUid = studyResults_[static_cast<std::size_t>(row)].studyInstanceUid;
     runInBackground(
         this,
-        [me = settings_.me, peer = node->node, q] {
-            return tryNetwork([&] { return pacs::findSeries(me, peer, q); });
+        [me = settings_.me, peer = node->node, q, stop = seriesStop_.get_token()] {
+            return tryNetwork([&] { return pacs::findSeries(me, peer, q, {}, stop); });
         },
         [this, generation, peer = node->node](
             const std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>& answer) {
             if (generation != seriesGeneration_) {
-                return;  // another study was selected meanwhile
+                return;  // another study was selected meanwhile, or cancelled
             }
+            seriesSearching_ = false;
             const bool ok = answer.second.kind == NetworkFailure::Kind::None;
             if (ok) {
                 showSeries(answer.first);
@@ -430,6 +477,7 @@ void PacsBrowser::updateButtons() {
     const bool hasSeries = series_->currentRow() >= 0 &&
                            series_->currentRow() < static_cast<int>(seriesResults_.size());
     search_->setEnabled(!searching_ && currentNode() != nullptr);
+    cancelSearch_->setEnabled(searching_ || seriesSearching_);
     retrieveStudy_->setEnabled(!busy && hasStudy);
     retrieveSeries_->setEnabled(!busy && hasSeries);
     cancel_->setEnabled(retrieve_ != nullptr && !retrieve_->stop.stop_requested());

@@ -5,6 +5,7 @@
 #include <QString>
 #include <functional>
 #include <memory>
+#include <stop_token>
 #include <vector>
 
 #include "gui/pacs/PacsSettings.h"
@@ -53,7 +54,7 @@ class PacsBrowser : public QDialog {
 
     /// The status line: what runs, found, failed or was retrieved.
     [[nodiscard]] QString status() const;
-    /// True while a search or retrieve runs.
+    /// True while a study search runs (not after its Cancel).
     [[nodiscard]] bool searching() const noexcept { return searching_; }
     [[nodiscard]] bool retrieving() const noexcept { return retrieve_ != nullptr; }
 
@@ -66,6 +67,10 @@ class PacsBrowser : public QDialog {
     [[nodiscard]] QLineEdit* descriptionEdit() const noexcept { return description_; }
     [[nodiscard]] QLineEdit* accessionEdit() const noexcept { return accession_; }
     [[nodiscard]] QPushButton* searchButton() const noexcept { return search_; }
+    /// Cancels the study or series search that runs: the association is
+    /// aborted, the buttons come back at once and the status says
+    /// "Search cancelled." (no rows are shown: none were found).
+    [[nodiscard]] QPushButton* cancelSearchButton() const noexcept { return cancelSearch_; }
     [[nodiscard]] QTableWidget* studyTable() const noexcept { return studies_; }
     [[nodiscard]] QTableWidget* seriesTable() const noexcept { return series_; }
     [[nodiscard]] QRadioButton* getButton() const noexcept { return useGet_; }
@@ -80,9 +85,11 @@ class PacsBrowser : public QDialog {
     /// Open was clicked: the retrieved series' (or study's) folder, in the
     /// study `studyUid` of the local store at `store`.
     void openFolder(const QString& folder, const QString& store, const QString& studyUid);
-    /// A search ended (its rows are in the study table).
+    /// A search ended (its rows are in the study table); false also when it
+    /// failed or was cancelled (status() says which).
     void searchFinished(bool ok);
-    /// The series of the selected study are in the series table (or failed).
+    /// The series of the selected study are in the series table (or failed,
+    /// or the search was cancelled).
     void seriesFinished(bool ok);
     /// The retrieve's progress bar moved (share of the instances received).
     void retrieveProgress(double fraction);
@@ -95,6 +102,7 @@ class PacsBrowser : public QDialog {
     [[nodiscard]] const PacsNode* resultsNode() const;
     [[nodiscard]] pacs::StudyQuery query() const;
     void startSearch();
+    void cancelSearch();
     void showStudies(const std::vector<pacs::StudyResult>& studies);
     void studySelected();
     void showSeries(const std::vector<pacs::SeriesResult>& series);
@@ -111,7 +119,12 @@ class PacsBrowser : public QDialog {
     std::vector<pacs::SeriesResult> seriesResults_;
     /// Counts the series searches: an older one's answer is dropped.
     int seriesGeneration_ = 0;
+    /// Counts the study searches: a cancelled one's answer is dropped.
+    int searchGeneration_ = 0;
     bool searching_ = false;
+    bool seriesSearching_ = false;
+    std::stop_source searchStop_;  ///< of the study search that runs
+    std::stop_source seriesStop_;  ///< of the series search that runs
     std::shared_ptr<RetrieveControl> retrieve_;
     int retrieveTotal_ = -1;  ///< instances expected, when the PACS said
     QString retrievedFolder_;
@@ -127,6 +140,7 @@ class PacsBrowser : public QDialog {
     QLineEdit* description_ = nullptr;
     QLineEdit* accession_ = nullptr;
     QPushButton* search_ = nullptr;
+    QPushButton* cancelSearch_ = nullptr;
     QTableWidget* studies_ = nullptr;
     QTableWidget* series_ = nullptr;
     QRadioButton* useGet_ = nullptr;

@@ -11,6 +11,7 @@
 #include <mutex>
 
 #include "Tls.h"
+#include "vv/core/Error.h"
 #include "vv/pacs/PacsError.h"
 
 namespace vv::pacs::detail {
@@ -38,12 +39,27 @@ void Scu::secure(const TlsSettings& tls, int handshakeSeconds) {
     tlsLayer = std::make_unique<TimedTlsLayer>(NET_REQUESTOR, tls, handshakeSeconds);
 }
 
-void Scu::attachTls() {
-    if (tlsLayer) {
-        const OFCondition cond = useSecureConnection(tlsLayer.get());
+void Scu::abortOn(std::stop_token stop) {
+    stop_ = std::move(stop);
+}
+
+void Scu::attachLayers() {
+    if (stop_.stop_possible()) {
+        abortableLayer = std::make_unique<AbortableLayer>(tlsLayer.get(), stop_);
+    }
+    DcmTransportLayer* layer =
+        abortableLayer ? static_cast<DcmTransportLayer*>(abortableLayer.get()) : tlsLayer.get();
+    if (layer != nullptr) {
+        const OFCondition cond = useSecureConnection(layer);
         if (cond.bad()) {
             throw TlsError(std::string("TLS: ") + cond.text());
         }
+    }
+}
+
+void Scu::throwIfStopped() const {
+    if (stop_.stop_requested()) {
+        throw CancelledError();
     }
 }
 
@@ -77,9 +93,11 @@ void open(Scu& scu, const Node& peer) {
     if (cond.bad()) {
         fail(cond, peer, "network setup");
     }
-    scu.attachTls();
+    scu.attachLayers();
+    scu.throwIfStopped();
     cond = scu.negotiateAssociation();
     if (cond.bad()) {
+        scu.throwIfStopped();
         fail(cond, peer, "association");
     }
 }

@@ -9,27 +9,40 @@
 #include <dcmtk/dcmnet/scu.h>
 
 #include <memory>
+#include <stop_token>
 #include <string>
 #include <vector>
 
+#include "AbortableLayer.h"
 #include "vv/pacs/Node.h"
 
 namespace vv::pacs::detail {
 
-/// Holds the TLS layer; a base before DcmSCU, so that it outlives DcmSCU's
-/// own clean-up (closing the association, dropping the network).
+/// Holds the transport layers; a base before DcmSCU, so that they outlive
+/// DcmSCU's own clean-up (closing the association, dropping the network).
 struct TlsLayerHolder {
     std::unique_ptr<DcmTransportLayer> tlsLayer;
+    /// Over tlsLayer (or plain TCP) when a stop may abort the association.
+    std::unique_ptr<AbortableLayer> abortableLayer;
 };
 
-/// DcmSCU with the TLS layer it may use.
+/// DcmSCU with the TLS layer it may use, and a stop that aborts it.
 class Scu : private TlsLayerHolder, public DcmSCU {
   public:
     /// Prepares TLS as `tls` says, the handshake bounded by `handshakeSeconds`;
     /// throws TlsError naming the file that failed.
     void secure(const TlsSettings& tls, int handshakeSeconds);
-    /// Puts the prepared TLS layer (if any) on the initialised network.
-    void attachTls();
+    /// A stop of `stop` (requested from any thread) aborts the association:
+    /// DCMTK's wait for the peer ends at once, and throwIfStopped() throws.
+    /// Call before open().
+    void abortOn(std::stop_token stop);
+    /// Puts the prepared layers (TLS, abort) on the initialised network.
+    void attachLayers();
+    /// Throws CancelledError when the stop of abortOn() was requested.
+    void throwIfStopped() const;
+
+  private:
+    std::stop_token stop_;
 };
 
 /// Turns DCMTK's own logging off once per process: its messages may quote
@@ -44,7 +57,8 @@ void configure(Scu& scu, const LocalAe& me, const Node& peer);
 void propose(DcmSCU& scu, const char* abstractSyntax, T_ASC_SC_ROLE role = ASC_SC_ROLE_DEFAULT);
 
 /// initNetwork() + negotiateAssociation(); throws ConnectionRefusedError,
-/// AssociationRejectedError, TimeoutError or PeerFailedError.
+/// AssociationRejectedError, TimeoutError or PeerFailedError, and
+/// CancelledError when the stop of Scu::abortOn() was requested.
 void open(Scu& scu, const Node& peer);
 
 /// The accepted presentation context for `abstractSyntax`; throws

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <utility>
 
 #include "Association.h"
 #include "vv/core/Error.h"
@@ -120,9 +121,10 @@ std::string requiredUid(DcmDataset& ds, const DcmTagKey& tag, const FindLimits& 
 
 /// Runs one C-FIND with `keys` and hands each match to `handler`.
 void runFind(const LocalAe& me, const Node& peer, DcmDataset& keys, const FindLimits& limits,
-             const FindScu::Handler& handler) {
+             std::stop_token stop, const FindScu::Handler& handler) {
     FindScu scu(limits, handler);
     detail::configure(scu, me, peer);
+    scu.abortOn(std::move(stop));
     detail::propose(scu, UID_FINDStudyRootQueryRetrieveInformationModel);
     detail::open(scu, peer);
     const T_ASC_PresentationContextID id =
@@ -133,6 +135,7 @@ void runFind(const LocalAe& me, const Node& peer, DcmDataset& keys, const FindLi
         throw ResponseError(describe(peer) + ": C-FIND answer refused: " + scu.problem);
     }
     if (cond.bad()) {
+        scu.throwIfStopped();
         detail::fail(cond, peer, "C-FIND");
     }
     detail::checkStatus(scu.finalStatus, peer, "C-FIND");
@@ -149,7 +152,7 @@ std::string dateRange(const std::string& from, const std::string& to) {
 }  // namespace
 
 std::vector<StudyResult> findStudies(const LocalAe& me, const Node& peer, const StudyQuery& query,
-                                     const FindLimits& limits) {
+                                     const FindLimits& limits, std::stop_token stop) {
     checkKey(query.patientName, "patient name");
     checkKey(query.patientId, "patient ID");
     checkKey(query.modality, "modality");
@@ -171,7 +174,7 @@ std::vector<StudyResult> findStudies(const LocalAe& me, const Node& peer, const 
     keys.putAndInsertString(DCM_NumberOfStudyRelatedSeries, "");
 
     std::vector<StudyResult> results;
-    runFind(me, peer, keys, limits, [&](DcmDataset& ds) {
+    runFind(me, peer, keys, limits, std::move(stop), [&](DcmDataset& ds) {
         StudyResult r;
         r.studyInstanceUid = requiredUid(ds, DCM_StudyInstanceUID, limits);
         r.patientName = text(ds, DCM_PatientName, limits);
@@ -187,7 +190,7 @@ std::vector<StudyResult> findStudies(const LocalAe& me, const Node& peer, const 
 }
 
 std::vector<SeriesResult> findSeries(const LocalAe& me, const Node& peer, const SeriesQuery& query,
-                                     const FindLimits& limits) {
+                                     const FindLimits& limits, std::stop_token stop) {
     validateUid(query.studyInstanceUid);
     checkKey(query.modality, "modality");
     checkKey(query.seriesDescription, "series description");
@@ -202,7 +205,7 @@ std::vector<SeriesResult> findSeries(const LocalAe& me, const Node& peer, const 
     keys.putAndInsertString(DCM_NumberOfSeriesRelatedInstances, "");
 
     std::vector<SeriesResult> results;
-    runFind(me, peer, keys, limits, [&](DcmDataset& ds) {
+    runFind(me, peer, keys, limits, std::move(stop), [&](DcmDataset& ds) {
         SeriesResult r;
         r.studyInstanceUid = query.studyInstanceUid;
         r.seriesInstanceUid = requiredUid(ds, DCM_SeriesInstanceUID, limits);

@@ -166,6 +166,7 @@ RetrieveResult getInto(LocalStore& store, const LocalAe& me, const Node& peer,
     Reporter reporter(progress);
     GetScu scu(transaction, reporter);
     detail::configure(scu, me, peer);
+    scu.abortOn(progress.stopToken());
     detail::propose(scu, UID_GETStudyRootQueryRetrieveInformationModel);
     for (const char* sopClass : detail::usableStorageClasses()) {
         OFList<OFString> syntaxes;
@@ -187,6 +188,7 @@ RetrieveResult getInto(LocalStore& store, const LocalAe& me, const Node& peer,
         throw IoError(*scu.storeProblem);
     }
     if (cond.bad()) {
+        scu.throwIfStopped();
         detail::fail(cond, peer, "C-GET");
     }
     checkOutcome(scu.outcome, peer, "C-GET");
@@ -204,6 +206,7 @@ RetrieveResult moveTo(const std::string& destination, const LocalAe& me, const N
     Reporter reporter(progress);
     MoveScu scu(reporter);
     detail::configure(scu, me, peer);
+    scu.abortOn(progress.stopToken());
     detail::propose(scu, UID_MOVEStudyRootQueryRetrieveInformationModel);
     detail::open(scu, peer);
     const T_ASC_PresentationContextID id =
@@ -214,6 +217,7 @@ RetrieveResult moveTo(const std::string& destination, const LocalAe& me, const N
         throw CancelledError();
     }
     if (cond.bad()) {
+        scu.throwIfStopped();
         detail::fail(cond, peer, "C-MOVE");
     }
     checkOutcome(scu.outcome, peer, "C-MOVE");

@@ -12,6 +12,7 @@
 #include <memory>
 #include <utility>
 
+#include "ForwardingConnection.h"
 #include "vv/pacs/PacsError.h"
 
 namespace vv::pacs::detail {
@@ -39,40 +40,23 @@ std::string peerOf(DcmNativeSocketType socket) {
 
 /// Passes everything to the TLS connection; bounds the handshakes and
 /// reports a failed server handshake.
-class TimedConnection : public DcmTransportConnection {
+class TimedConnection : public ForwardingConnection {
   public:
     TimedConnection(DcmNativeSocketType socket, DcmTransportConnection* inner, int handshakeSeconds,
                     const TimedTlsLayer::Refused& onRefused)
-        : DcmTransportConnection(socket),
-          inner_(inner),
+        : ForwardingConnection(socket, inner),
           handshakeSeconds_(handshakeSeconds),
           onRefused_(onRefused) {}
 
     OFCondition serverSideHandshake() override {
-        const OFCondition cond = timed([this] { return inner_->serverSideHandshake(); });
+        const OFCondition cond = timed([this] { return inner().serverSideHandshake(); });
         if (cond.bad() && onRefused_) {
             onRefused_(peerOf(getSocket()), cond.text() != nullptr ? cond.text() : "TLS failed");
         }
         return cond;
     }
     OFCondition clientSideHandshake() override {
-        return timed([this] { return inner_->clientSideHandshake(); });
-    }
-    OFCondition renegotiate(const char* suite) override { return inner_->renegotiate(suite); }
-    ssize_t read(void* buf, size_t n) override { return inner_->read(buf, n); }
-    ssize_t write(void* buf, size_t n) override { return inner_->write(buf, n); }
-    void close() override { inner_->close(); }
-    void closeTransportConnection() override { inner_->closeTransportConnection(); }
-    unsigned long getPeerCertificateLength() override { return inner_->getPeerCertificateLength(); }
-    unsigned long getPeerCertificate(void* buf, unsigned long length) override {
-        return inner_->getPeerCertificate(buf, length);
-    }
-    OFBool networkDataAvailable(int timeout) override {
-        return inner_->networkDataAvailable(timeout);
-    }
-    OFBool isTransparentConnection() override { return inner_->isTransparentConnection(); }
-    OFString& dumpConnectionParameters(OFString& str) override {
-        return inner_->dumpConnectionParameters(str);
+        return timed([this] { return inner().clientSideHandshake(); });
     }
 
   private:
@@ -93,7 +77,6 @@ class TimedConnection : public DcmTransportConnection {
         return cond;
     }
 
-    std::unique_ptr<DcmTransportConnection> inner_;
     int handshakeSeconds_;
     const TimedTlsLayer::Refused& onRefused_;
 };

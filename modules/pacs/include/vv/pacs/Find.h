@@ -6,6 +6,7 @@
 // huge response is a ResponseError, never a crash or unbounded memory.
 
 #include <cstddef>
+#include <stop_token>
 #include <string>
 #include <vector>
 
@@ -54,16 +55,18 @@ struct FindLimits {
     std::size_t maxValueLength = 256;  ///< characters of one returned attribute
 };
 
-/// Finds the studies matching `query` on `peer`. Throws InvalidArgumentError
+/// Finds the studies matching `query` on `peer`. A stop of `stop` (from any
+/// thread) aborts the association at once and throws CancelledError (the TCP
+/// connect itself runs to its own timeout first). Throws InvalidArgumentError
 /// for a malformed key (backslash, a date not YYYYMMDD), the NetworkError
 /// family (vv/pacs/PacsError.h) for connection and peer failures, and
 /// ResponseError when the answer exceeds `limits` or lacks a Study Instance UID.
 std::vector<StudyResult> findStudies(const LocalAe& me, const Node& peer, const StudyQuery& query,
-                                     const FindLimits& limits = {});
+                                     const FindLimits& limits = {}, std::stop_token stop = {});
 
-/// Finds the series of one study; errors as findStudies (InvalidArgumentError
-/// also for an empty or malformed Study Instance UID).
+/// Finds the series of one study; the stop and errors as findStudies
+/// (InvalidArgumentError also for an empty or malformed Study Instance UID).
 std::vector<SeriesResult> findSeries(const LocalAe& me, const Node& peer, const SeriesQuery& query,
-                                     const FindLimits& limits = {});
+                                     const FindLimits& limits = {}, std::stop_token stop = {});
 
 }  // namespace vv::pacs

@@ -25,7 +25,8 @@ struct RetrieveResult {
 /// C-GET of `request` from `peer` into `store`, one store transaction: only
 /// when the peer reports success for every sub-operation are the instances
 /// committed (marked complete). Progress reports "Retrieving" with the share
-/// of instances received; a stop through `progress` aborts the association.
+/// of instances received; a stop through `progress` aborts the association
+/// at once, also while waiting for the peer.
 /// Throws InvalidArgumentError (a malformed UID), the NetworkError family
 /// (PeerFailedError also when a sub-operation failed or the peer went away),
 /// CancelledError, IoError (the store). Nothing is marked complete on any throw.

@@ -1,0 +1,364 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// DICOM > Local Studies over stores made with the real store API (no PACS):
+// the list of a store of many studies is right; the index is read off the
+// GUI thread (a writer holding the SQLite index keeps the read waiting, not
+// the window) and a read that a newer one overtook is dropped; a series
+// opened from the store is named by its description (or modality and
+// number), never by its UID folder.
+#include <gtest/gtest.h>
+
+#include <QAction>
+#include <QDate>
+#include <QElapsedTimer>
+#include <QLabel>
+#include <QPointer>
+#include <QPushButton>
+#include <QSettings>
+#include <QSqlDatabase>
+#include <QSqlQuery>
+#include <QTimer>
+#include <QTreeWidget>
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "GuiFixture.h"
+#include "LocalStudiesGui.h"
+#include "SyntheticCta.h"
+#include "gui/MainWindow.h"
+#include "gui/SeriesDialog.h"
+#include "gui/pacs/ListenerService.h"
+#include "gui/pacs/LocalStudiesBrowser.h"
+#include "gui/pacs/PacsSettings.h"
+#include "vv/dicom/Dicom.h"
+#include "vv/dicom/SeriesWriter.h"
+#include "vv/pacs/LocalStore.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using vv::gui::LocalStudiesBrowser;
+using vv::test::waitUntil;
+
+fs::path testDir() {
+    return vv::test::panelTestDir() / "pacs-local";
+}
+
+/// One study of the tests' stores: what goes into the index.
+struct Study {
+    std::string uid;
+    std::string date;  ///< YYYYMMDD
+    std::string description;
+};
+
+/// `count` studies of one series and one (not DICOM) instance each, with
+/// distinct dates and descriptions, committed to the store at `root` in one
+/// transaction through the store's API.
+std::vector<Study> commitStudies(const fs::path& root, int count, int first = 0) {
+    const vv::pacs::LocalStore store(root);
+    vv::pacs::LocalStore::Transaction t = store.begin();
+    std::vector<Study> studies;
+    for (int i = first; i < first + count; ++i) {
+        Study s;
+        s.uid = "2.25." + std::to_string(100000 + i);
+        s.date = QDate(1990 + i % 30, 1 + i % 12, 1 + i % 28)
+                     .toString(QStringLiteral("yyyyMMdd"))
+                     .toStdString();
+        s.description = "Study " + std::to_string(i);
+        const fs::path staged = t.stagingPath();
+        std::ofstream(staged) << "instance " << i;
+        vv::pacs::InstanceFields f;
+        f.studyInstanceUid = s.uid;
+        f.seriesInstanceUid = s.uid + ".1";
+        f.sopInstanceUid = s.uid + ".1.1";
+        f.patientName = "Test^Store";
+        f.studyDate = s.date;
+        f.studyDescription = s.description;
+        f.modality = "CT";
+        f.seriesDescription = "Series of " + s.description;
+        f.seriesNumber = 1;
+        t.add(staged, f);
+        studies.push_back(s);
+    }
+    t.commit();
+    return studies;
+}
+
+/// The order the store lists studies in: newest first, then by UID.
+void sortAsListed(std::vector<Study>& studies) {
+    std::sort(studies.begin(), studies.end(), [](const Study& a, const Study& b) {
+        return a.date != b.date ? a.date > b.date : a.uid < b.uid;
+    });
+}
+
+/// Holds the store's SQLite index as a writer does (an exclusive
+/// transaction through its own connection): readers wait until release().
+class IndexWriter {
+  public:
+    explicit IndexWriter(const fs::path& root) {
+        QSqlDatabase db = QSqlDatabase::addDatabase(QStringLiteral("QSQLITE"), name_);
+        db.setDatabaseName(QString::fromStdString((root / "index.sqlite").string()));
+        EXPECT_TRUE(db.open());
+        EXPECT_TRUE(QSqlQuery(db).exec(QStringLiteral("BEGIN EXCLUSIVE")));
+    }
+    IndexWriter(const IndexWriter&) = delete;
+    IndexWriter& operator=(const IndexWriter&) = delete;
+    IndexWriter(IndexWriter&&) = delete;
+    IndexWriter& operator=(IndexWriter&&) = delete;
+    ~IndexWriter() {
+        release();
+        QSqlDatabase::removeDatabase(name_);
+    }
+    void release() {
+        QSqlDatabase db = QSqlDatabase::database(name_, false);
+        if (db.isOpen()) {
+            QSqlQuery(db).exec(QStringLiteral("ROLLBACK"));
+            db.close();
+        }
+    }
+
+  private:
+    QString name_ = QStringLiteral("test.index.writer");
+};
+
+class PacsLocalStudiesGuiTest : public vv::test::GuiFixture {
+  protected:
+    void SetUp() override {
+        const std::string name = ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        store_ = testDir() / ("store-" + name);
+        fs::remove_all(store_);
+        GuiFixture::SetUp();
+    }
+    void TearDown() override {
+        GuiFixture::TearDown();
+        QSettings().remove(QStringLiteral("pacs"));
+        std::error_code ec;
+        fs::remove_all(store_, ec);
+    }
+
+    /// Settings with the store at `store` and no listener.
+    [[nodiscard]] static vv::gui::PacsSettings settingsFor(const fs::path& store) {
+        vv::gui::PacsSettings s;
+        s.me.aeTitle = "VVLOCAL";
+        s.listenerEnabled = false;
+        s.storeFolder = store;
+        return s;
+    }
+
+    /// A new main window over the store store_.
+    void restart() {
+        window_.reset();
+        QSettings settings;
+        vv::gui::writePacsSettings(settingsFor(store_), settings);
+        settings.sync();
+        GuiFixture::SetUp();
+    }
+
+    /// DICOM > Local Studies…, as the user opens it; waits for its rows.
+    LocalStudiesBrowser* openBrowser() { return vv::test::openLocalStudies(*window_); }
+
+    static QPushButton* refreshButton(LocalStudiesBrowser* browser) {
+        for (QPushButton* button : browser->findChildren<QPushButton*>()) {
+            if (button->text() == QStringLiteral("&Refresh")) {
+                return button;
+            }
+        }
+        ADD_FAILURE() << "no Refresh button";
+        return nullptr;
+    }
+
+    fs::path store_;
+};
+
+TEST_F(PacsLocalStudiesGuiTest, AStoreOfManyStudiesIsListedRowByRowInItsOrder) {
+    constexpr int kStudies = 1500;
+    std::vector<Study> studies = commitStudies(store_, kStudies);
+    sortAsListed(studies);
+    restart();
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), kStudies);
+    for (const int row : {0, 1, kStudies / 2, kStudies - 1}) {
+        const QTreeWidgetItem* item = browser->tree()->topLevelItem(row);
+        const Study& expected = studies[static_cast<std::size_t>(row)];
+        EXPECT_EQ(item->text(3).toStdString(), expected.description) << "row " << row;
+        EXPECT_EQ(item->text(2).right(4).toStdString(), expected.date.substr(0, 4))
+            << "row " << row;
+        ASSERT_EQ(item->childCount(), 1);
+        EXPECT_EQ(item->child(0)->text(3).toStdString(), "Series of " + expected.description);
+        EXPECT_EQ(item->child(0)->text(5), QStringLiteral("1 image"));
+    }
+    EXPECT_TRUE(browser->statusLine()->text().startsWith(
+        QStringLiteral("%1 studies in %2")
+            .arg(QLocale().toString(kStudies), QString::fromStdString(store_.string()))))
+        << browser->statusLine()->text().toStdString();
+}
+
+TEST_F(PacsLocalStudiesGuiTest, TheIndexIsReadOffTheGuiThreadWhichKeepsWorkingMeanwhile) {
+    commitStudies(store_, 200);
+    restart();
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 200);
+    browser->tree()->setCurrentItem(browser->tree()->topLevelItem(5));
+    const QString chosen = browser->tree()->currentItem()->text(3);
+    commitStudies(store_, 1, 200);  // a study more, then a writer holds the index
+    IndexWriter writer(store_);
+
+    QElapsedTimer clock;
+    clock.start();
+    refreshButton(browser)->click();
+    EXPECT_LT(clock.elapsed(), 500) << "Refresh waited for the index on the GUI thread";
+    EXPECT_TRUE(browser->isReading());
+    EXPECT_TRUE(browser->statusLine()->text().startsWith(QStringLiteral("Reading the study store")))
+        << browser->statusLine()->text().toStdString();
+    // The GUI thread goes on: its timer ticks while the read waits.
+    int ticks = 0;
+    QTimer timer;
+    QObject::connect(&timer, &QTimer::timeout, [&ticks] { ++ticks; });
+    timer.start(50);
+    waitUntil([] { return false; }, 1000);
+    EXPECT_GE(ticks, 10);
+    EXPECT_TRUE(browser->isReading()) << "the index is held: the read cannot have ended";
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 200) << "the last read's rows stay meanwhile";
+    browser->grab().save(QString::fromStdString((testDir() / "local-reading.png").string()));
+
+    writer.release();
+    ASSERT_TRUE(waitUntil([&] { return !browser->isReading(); }, 15000));
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 201);
+    EXPECT_TRUE(browser->statusLine()->text().startsWith(QStringLiteral("201 studies in")))
+        << browser->statusLine()->text().toStdString();
+    ASSERT_NE(browser->tree()->currentItem(), nullptr);
+    EXPECT_EQ(browser->tree()->currentItem()->text(3), chosen) << "the choice stays";
+}
+
+TEST_F(PacsLocalStudiesGuiTest, AReadThatANewerOneOvertookIsDropped) {
+    commitStudies(store_, 3);
+    const fs::path other = store_.string() + "-other";
+    fs::remove_all(other);
+    commitStudies(other, 2, 50);
+    restart();
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 3);
+    {
+        IndexWriter writer(store_);
+        refreshButton(browser)->click();  // waits on the held index
+        ASSERT_TRUE(browser->isReading());
+        // New settings name another store: its read overtakes the waiting one.
+        window_->listenerService()->apply(settingsFor(other));
+        ASSERT_TRUE(waitUntil([&] { return !browser->isReading(); }, 15000));
+        EXPECT_EQ(browser->tree()->topLevelItemCount(), 2);
+    }  // the index is free: the old read ends now, and must not show up
+    waitUntil([] { return false; }, 1500);
+    EXPECT_EQ(browser->tree()->topLevelItemCount(), 2);
+    EXPECT_FALSE(browser->isReading());
+    EXPECT_NE(browser->statusLine()->text().indexOf(QString::fromStdString(other.string())), -1)
+        << browser->statusLine()->text().toStdString();
+    std::error_code ec;
+    fs::remove_all(other, ec);
+}
+
+/// A synthetic CTA written as a CT series described `description` (number 1)
+/// and committed with its files into the store at `root`, as a retrieve
+/// stores it; returns the Series Instance UID (its folder's name).
+std::string commitCta(const fs::path& root, const std::string& description) {
+    const fs::path folder = testDir() / "cta-written";
+    fs::remove_all(folder);
+    const auto cta = vv::test::makeSyntheticCta({64, 64, 40}, 3);
+    vv::dicom::CtSeriesWriteOptions options;
+    options.seriesDescription = description;
+    vv::dicom::writeCtSeries(folder, cta.volume, options);
+    const vv::dicom::DicomScanResult scan = vv::dicom::scanDicom(folder);
+    EXPECT_EQ(scan.allSeries().size(), 1U);
+    const vv::dicom::DicomSeries& series = *scan.allSeries().front();
+    const vv::dicom::DicomStudy& study = scan.patients.front().studies.front();
+    const vv::pacs::LocalStore store(root);
+    vv::pacs::LocalStore::Transaction t = store.begin();
+    int instance = 0;
+    for (const fs::path& file : series.files) {
+        const fs::path staged = t.stagingPath();
+        fs::copy_file(file, staged);
+        vv::pacs::InstanceFields f;
+        f.studyInstanceUid = series.studyInstanceUid;
+        f.seriesInstanceUid = series.seriesInstanceUid;
+        f.sopInstanceUid = "2.25." + std::to_string(700 + ++instance);
+        f.studyDate = study.date;
+        f.studyDescription = study.description;
+        f.modality = series.modality;
+        f.seriesDescription = series.description;
+        f.seriesNumber = series.seriesNumber.value_or(-1);
+        t.add(staged, f);
+    }
+    t.commit();
+    return series.seriesInstanceUid;
+}
+
+class PacsSeriesTitleGuiTest : public PacsLocalStudiesGuiTest {
+  protected:
+    /// Open on the first study's series in Local Studies, the series chooser
+    /// accepted as it comes; true once the scene is shown.
+    bool openFromLocalStudies() {
+        LocalStudiesBrowser* browser = openBrowser();
+        if (browser == nullptr || browser->tree()->topLevelItemCount() != 1) {
+            ADD_FAILURE() << "the study is not listed";
+            return false;
+        }
+        browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0)->child(0));
+        QPointer<vv::gui::SeriesDialog> chooser;
+        QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                         [&chooser](vv::gui::SeriesDialog* shown) { chooser = shown; });
+        bool shown = false;
+        QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, window_.get(),
+                         [&shown] { shown = true; });
+        browser->openButton()->click();
+        if (!waitUntil([&] { return !chooser.isNull() || !window_->lastError().isEmpty(); })) {
+            return false;
+        }
+        EXPECT_FALSE(chooser.isNull()) << window_->lastError().toStdString();
+        if (chooser.isNull()) {
+            return false;
+        }
+        chooser->accept();
+        return waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000) && shown;
+    }
+};
+
+TEST_F(PacsSeriesTitleGuiTest, ASeriesOpenedFromTheStoreIsTitledByItsDescription) {
+    const std::string uid = commitCta(store_, "Run-off CTA 1.0 mm");
+    restart();
+    ASSERT_TRUE(openFromLocalStudies()) << window_->lastError().toStdString();
+    EXPECT_EQ(window_->windowTitle().toStdString(), "Run-off CTA 1.0 mm — VesselView");
+    EXPECT_FALSE(window_->windowTitle().contains(QString::fromStdString(uid)));
+    EXPECT_EQ(window_->document()->title().toStdString(), "Run-off CTA 1.0 mm");
+    window_->grab().save(QString::fromStdString((testDir() / "series-title.png").string()));
+}
+
+TEST_F(PacsSeriesTitleGuiTest, ASeriesWithoutDescriptionIsTitledByModalityAndNumber) {
+    const std::string uid = commitCta(store_, "");
+    restart();
+    ASSERT_TRUE(openFromLocalStudies()) << window_->lastError().toStdString();
+    EXPECT_EQ(window_->windowTitle().toStdString(), "CT series 1 — VesselView");
+    EXPECT_FALSE(window_->windowTitle().contains(QString::fromStdString(uid)));
+}
+
+TEST(PacsSeriesNameTest, ASeriesIsNamedByWhatItSaysNeverByItsUid) {
+    vv::dicom::DicomSeries s;
+    s.seriesInstanceUid = "1.2.3.4";
+    s.description = "  Arterial  phase ";
+    s.modality = "CT";
+    s.seriesNumber = 4;
+    EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("Arterial phase"));
+    s.description = " ";
+    EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("CT series 4"));
+    s.seriesNumber.reset();
+    EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("CT series"));
+    s.modality.clear();
+    EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("DICOM series"));
+    s.seriesNumber = 7;
+    EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("Series 7"));
+}
+
+}  // namespace
