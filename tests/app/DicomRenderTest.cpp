@@ -169,6 +169,17 @@ TEST_F(DicomRenderTest, SessionsReloadTheStoredSeriesAndSegmentation) {
     ASSERT_FALSE(a.isNull());
     EXPECT_GT(litPixels(a), 320L * 240L / 50L);
     EXPECT_EQ(a, b) << "the session's DICOM options did not reach the segmentation";
+
+    // With the series' title (a session saved since titles are kept) the
+    // command line renders the same: the title changes nothing it draws.
+    session.seriesTitle = QStringLiteral("Run-off CTA 1.0 mm");
+    const fs::path titled = testDir() / "cta-titled.vvs";
+    vv::app::saveSession(titled, session);
+    const fs::path fromTitled = testDir() / "session-titled.png";
+    const RunResult t = run({"render", "--session", titled.string(), "-o", fromTitled.string(),
+                             "--size", "320x240", "--view", "anterior"});
+    ASSERT_EQ(t.code, 0) << t.err;
+    EXPECT_EQ(QImage(QString::fromStdString(fromTitled.string())), a);
 }
 
 }  // namespace
