@@ -68,7 +68,8 @@ QString readSeriesTitle(const SessionReader& r, const QJsonValue& value) {
     const QString title = r.string(o, QStringLiteral("dicom"), "title");
     if (title.trimmed().isEmpty() || title.size() > kMaxSeriesTitle) {
         r.fail(QStringLiteral("dicom.title"),
-               QStringLiteral("must be a name of 1 to %1 characters").arg(kMaxSeriesTitle));
+               QStringLiteral("must be a non-blank name of at most %1 characters")
+                   .arg(kMaxSeriesTitle));
     }
     if (std::any_of(title.begin(), title.end(),
                     [](QChar c) { return c.category() == QChar::Other_Control; })) {
