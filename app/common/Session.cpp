@@ -65,7 +65,7 @@ QString readSeriesTitle(const SessionReader& r, const QJsonValue& value) {
     if (!o.contains(QLatin1String("title"))) {
         return {};
     }
-    const QString title = r.string(o, QStringLiteral("dicom"), "title");
+    QString title = r.string(o, QStringLiteral("dicom"), "title");
     if (title.trimmed().isEmpty() || title.size() > kMaxSeriesTitle) {
         r.fail(QStringLiteral("dicom.title"),
                QStringLiteral("must be a non-blank name of at most %1 characters")
