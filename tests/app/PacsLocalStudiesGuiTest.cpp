@@ -392,7 +392,7 @@ class PacsSessionTitleGuiTest : public PacsSeriesTitleGuiTest {
         return window_->openSession(session()) &&
                waitUntil([&] { return applied || !window_->lastError().isEmpty(); }, 60000);
     }
-    [[nodiscard]] QString session() const {
+    [[nodiscard]] static QString session() {
         return QString::fromStdString((testDir() / "titled.vvs").string());
     }
     [[nodiscard]] QString uid() const { return QString::fromStdString(uid_); }

@@ -210,11 +210,11 @@ TEST(SessionFile, TheSeriesTitleRoundTripsAndIsChecked) {
     expectSame(back, s);
 
     // Checked: a string, not blank, one line, not absurdly long.
-    const QByteArray quoted = "\"title\": \"" + s.seriesTitle.toUtf8() + "\"";
+    const QByteArray quoted = R"("title": ")" + s.seriesTitle.toUtf8() + R"(")";
     ASSERT_EQ(json.count(quoted), 1) << json.toStdString();
-    for (const QByteArray& bad : {QByteArray("\"title\": 5"), QByteArray("\"title\": \"  \""),
-                                  QByteArray("\"title\": \"CTA\\nangio\""),
-                                  "\"title\": \"" + QByteArray(1025, 'x') + "\""}) {
+    for (const QByteArray& bad : {QByteArray(R"("title": 5)"), QByteArray(R"("title": "  ")"),
+                                  QByteArray(R"("title": "CTA\nangio")"),
+                                  R"("title": ")" + QByteArray(1025, 'x') + R"(")"}) {
         const std::string problem =
             errorFor("title-bad.vvs", QByteArray(json).replace(quoted, bad));
         EXPECT_NE(problem.find("dicom.title"), std::string::npos) << bad.toStdString();
