@@ -31,8 +31,11 @@ QJsonArray array3(const glm::vec3& v) {
     return {static_cast<double>(v.x), static_cast<double>(v.y), static_cast<double>(v.z)};
 }
 
-/// The "dicom" object: the series and its segmentation.
-QJsonObject dicomToJson(const segmentation::SceneSourceOptions& d) {
+/// A series title longer than this is not what the chooser gives: refused.
+constexpr qsizetype kMaxSeriesTitle = 1024;
+
+/// The "dicom" object: the series, its segmentation and its title (if any).
+QJsonObject dicomToJson(const segmentation::SceneSourceOptions& d, const QString& title) {
     const segmentation::SegmentationOptions& seg = d.segmentation;
     QJsonObject o{
         {QStringLiteral("series"), QString::fromStdString(d.seriesInstanceUid)},
@@ -49,7 +52,30 @@ QJsonObject dicomToJson(const segmentation::SceneSourceOptions& d) {
     if (seg.removeBone) {
         o.insert(QStringLiteral("boneRemoval"), *seg.removeBone);
     }
+    if (!title.isEmpty()) {
+        o.insert(QStringLiteral("title"), title);
+    }
     return o;
+}
+
+/// "dicom.title" of the "dicom" object `value` (read by readDicom): empty
+/// when absent (older sessions); else one non-blank line of text.
+QString readSeriesTitle(const SessionReader& r, const QJsonValue& value) {
+    const QJsonObject o = value.toObject();
+    if (!o.contains(QLatin1String("title"))) {
+        return {};
+    }
+    QString title = r.string(o, QStringLiteral("dicom"), "title");
+    if (title.trimmed().isEmpty() || title.size() > kMaxSeriesTitle) {
+        r.fail(QStringLiteral("dicom.title"),
+               QStringLiteral("must be a non-blank name of at most %1 characters")
+                   .arg(kMaxSeriesTitle));
+    }
+    if (std::any_of(title.begin(), title.end(),
+                    [](QChar c) { return c.category() == QChar::Other_Control; })) {
+        r.fail(QStringLiteral("dicom.title"), QStringLiteral("must be one line of text"));
+    }
+    return title;
 }
 
 /// Reads the "dicom" object (see dicomToJson).
@@ -137,7 +163,7 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
         root.insert(QStringLiteral("layout"), QString::fromLatin1(s.layout.toBase64()));
     }
     if (s.dicom) {
-        root.insert(QStringLiteral("dicom"), dicomToJson(*s.dicom));
+        root.insert(QStringLiteral("dicom"), dicomToJson(*s.dicom, s.seriesTitle));
     }
     if (s.slices) {
         root.insert(QStringLiteral("slices"), detail::slicesToJson(*s.slices));
@@ -187,6 +213,7 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
     }
     if (const QJsonValue dicom = root.value(QLatin1String("dicom")); !dicom.isUndefined()) {
         s.dicom = readDicom(r, dicom);
+        s.seriesTitle = readSeriesTitle(r, dicom);
     }
     if (const QJsonValue slices = root.value(QLatin1String("slices")); !slices.isUndefined()) {
         s.slices = detail::readSlices(r, slices);

@@ -42,7 +42,8 @@ namespace vv::app {
 ///                                "color": null | [r, g, b],         // per mesh
 ///                                "array": null | "" | name } ] },
 ///                 "background": [r, g, b], "legends": true },
-///       "dicom": { "series", "components", "triangles", ... },   // optional
+///       "dicom": { "series", "components", "triangles", ...,     // optional
+///                  "title": "Run-off CTA" },                     // optional
 ///       "slices": { "layout": "3d+slices",                       // optional
 ///                   "window": { "width", "level", "preset": "cta" },
 ///                   "overlay": { "fill": true, "outline": true },
@@ -104,6 +105,12 @@ struct Session : DisplaySettings {
     /// (range, keepComponents, seed, removeBone) and surface.targetTriangles
     /// are stored. Absent for meshes (and in older sessions).
     std::optional<segmentation::SceneSourceOptions> dicom;
+    /// How the window named the series ("dicom.title": its description, or
+    /// "CT series 1"; SeriesDialog::seriesName()), so that a reopened session
+    /// shows that title rather than its folder's name (a study store's folders
+    /// are UIDs). Empty: named after its folder (meshes, older sessions, a
+    /// series opened without the chooser). Stored only with `dicom`.
+    QString seriesTitle;
     /// The slice views (scenes from a volume); absent for meshes and in
     /// older sessions, which open with the slice views' defaults. The
     /// command line renders the 3-D view and ignores it (it is still checked).

@@ -120,6 +120,7 @@ bool DocumentController::openSession(const QString& path) {
         openedFiles_.clear();
         shownFiles_.clear();
         seriesUid_.clear();
+        seriesTitle_.clear();
         demo_ = false;
         setVolume(nullptr, {}, {});
         show(nullptr, QString(), std::move(session));
@@ -128,7 +129,9 @@ bool DocumentController::openSession(const QString& path) {
     const MeshLoadTask* before = task_.data();
     if (session.dicom && session.files.size() == 1) {
         std::vector<std::filesystem::path> paths{toPath(session.files.front())};
-        startTask(MeshLoadTask::loadFiles(std::move(paths), *session.dicom, this), session.files);
+        // Named as when it was saved (its folder may be a UID), not after the folder.
+        startTask(MeshLoadTask::loadFiles(std::move(paths), *session.dicom, this), session.files,
+                  session.seriesTitle);
     } else {
         openFiles(session.files);
     }
@@ -143,6 +146,7 @@ bool DocumentController::saveSession(const QString& path, Session view,
                                      const segmentation::SurfaceOptions& surface) {
     view.files.clear();
     view.dicom.reset();
+    view.seriesTitle.clear();
     if (scene_) {
         for (const QString& f : shownFiles_) {
             view.files << QFileInfo(f).absoluteFilePath();
@@ -157,6 +161,7 @@ bool DocumentController::saveSession(const QString& path, Session view,
                 dicom.surface = surface;
             }
             view.dicom = dicom;
+            view.seriesTitle = seriesTitle_;
         }
     }
     try {
@@ -199,6 +204,7 @@ void DocumentController::setScene(std::shared_ptr<const scene::Scene> scene, con
     openedFiles_.clear();
     shownFiles_.clear();
     seriesUid_.clear();
+    seriesTitle_.clear();
     demo_ = false;
     setVolume(nullptr, {}, {});
     show(std::move(scene), title, std::nullopt);
@@ -287,6 +293,9 @@ void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened
                                    const QString& title) {
     abandonTask();
     task_ = task;
+    if (!title.isEmpty()) {
+        task->describeAs(title);  // the status bar names the series as the title will
+    }
     connect(task, &MeshLoadTask::progressChanged, this,
             [this, task](double fraction, const QString& stage) {
                 if (task == task_) {
@@ -350,6 +359,7 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
     const segmentation::SceneSourceReport& source = task->dicomReport();
     seriesUid_ = source.fromVolume || source.fromSegmentationObject ? source.seriesInstanceUid
                                                                     : std::string();
+    seriesTitle_ = seriesUid_.empty() ? QString() : seriesTitle;
     setVolume(nullptr, {}, {});
     show(std::move(scene), title, std::exchange(pendingSession_, std::nullopt));
     // A DICOM image series: keep its volume for the Segmentation panel.

@@ -77,7 +77,9 @@ class DocumentController : public QObject {
     /// files), else the demo tree generated on a worker.
     void openDemo();
     /// Reads the session at `path` (any supported version) and loads its
-    /// files (DICOM: its series and segmentation, without the chooser);
+    /// files (DICOM: its series and segmentation, without the chooser, named
+    /// by the session's series title when it has one — never by a folder
+    /// that is only a UID);
     /// sessionReady() hands its camera, settings and layout over once they
     /// are shown. A session without files shows an empty document with it at
     /// once. Returns false after failed() when the session cannot be read;
@@ -89,7 +91,8 @@ class DocumentController : public QObject {
     /// (.vvs, atomically). For a DICOM scene the series goes in too, and for
     /// a scene segmented from a volume `segmentation` and `surface` (the
     /// Segmentation panel's settings), so that the session reopens without
-    /// asking. Returns false after failed() when writing fails.
+    /// asking, and its seriesTitle(). Returns false after failed() when
+    /// writing fails.
     bool saveSession(const QString& path, Session view,
                      const segmentation::SegmentationOptions& segmentation,
                      const segmentation::SurfaceOptions& surface);
@@ -130,6 +133,10 @@ class DocumentController : public QObject {
     [[nodiscard]] QString dicomSource() const;
     /// The DICOM series shown (image series or SEG); empty for meshes.
     [[nodiscard]] const std::string& seriesUid() const noexcept { return seriesUid_; }
+    /// The title the shown series was given (openSeries()'s `title`, or the
+    /// one a session stored); empty when it is named after its files. Saved
+    /// in sessions so that they reopen with it.
+    [[nodiscard]] const QString& seriesTitle() const noexcept { return seriesTitle_; }
     /// The segmentation of volume() the shown scene was loaded with (the
     /// slice views' overlay); null without a volume.
     [[nodiscard]] const std::shared_ptr<const scene::LabelMap>& labelMap() const noexcept {
@@ -221,6 +228,7 @@ class DocumentController : public QObject {
     QStringList openedFiles_;
     QStringList shownFiles_;
     std::string seriesUid_;
+    QString seriesTitle_;  ///< seriesTitle(): the title openSeries() / a session gave
     std::shared_ptr<const scene::Volume> volume_;
     std::shared_ptr<const scene::LabelMap> labelMap_;
     QString lastError_;

@@ -55,7 +55,7 @@ MeshLoadTask::MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
     if (demo_) {
         description_ = tr("Generating the demo vessel tree");
     } else if (files_.size() == 1) {
-        description_ = tr("Loading %1").arg(toQString(files_.front().filename()));
+        describeAs(toQString(files_.front().filename()));
     } else {
         description_ = tr("Loading %n file(s)", nullptr, static_cast<int>(files_.size()));
     }
@@ -63,6 +63,10 @@ MeshLoadTask::MeshLoadTask(std::vector<std::filesystem::path> files, bool demo,
 }
 
 MeshLoadTask::~MeshLoadTask() = default;
+
+void MeshLoadTask::describeAs(const QString& name) {
+    description_ = tr("Loading %1").arg(name);
+}
 
 void MeshLoadTask::start() {
     run_.start([this](std::stop_token stop) { return work(std::move(stop)); });

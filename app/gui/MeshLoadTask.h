@@ -55,6 +55,9 @@ class MeshLoadTask : public QObject {
 
     /// What the task does, for the status bar ("Loading vessel.vtp").
     [[nodiscard]] const QString& description() const noexcept { return description_; }
+    /// Names what it loads `name` in description() ("Loading Run-off CTA")
+    /// instead of by its file (a series whose folder is only a UID).
+    void describeAs(const QString& name);
     /// The files to load (empty for the demo).
     [[nodiscard]] const std::vector<std::filesystem::path>& files() const noexcept {
         return files_;

@@ -148,12 +148,16 @@ TEST_F(DicomRenderTest, SessionsReloadTheStoredSeriesAndSegmentation) {
     session.vss.enabled = false;
     session.legends = false;
     session.background = glm::vec3(0.0F);
-    const fs::path file = testDir() / "cta.vvs";
-    vv::app::saveSession(file, session);
-
+    // `session` saved as `name`.vvs, rendered to `name`.png.
+    const auto renderSaved = [&](const std::string& name) {
+        const fs::path file = testDir() / (name + ".vvs");
+        vv::app::saveSession(file, session);
+        return run({"render", "--session", file.string(), "-o",
+                    (testDir() / (name + ".png")).string(), "--size", "320x240", "--view",
+                    "anterior"});
+    };
     const fs::path fromSession = testDir() / "session.png";
-    const RunResult r = run({"render", "--session", file.string(), "-o", fromSession.string(),
-                             "--size", "320x240", "--view", "anterior"});
+    const RunResult r = renderSaved("session");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.out.find("segmented series " + uid_), std::string::npos) << r.out;
     EXPECT_NE(r.out.find("saved in the session"), std::string::npos) << r.out;  // its threshold
@@ -169,6 +173,13 @@ TEST_F(DicomRenderTest, SessionsReloadTheStoredSeriesAndSegmentation) {
     ASSERT_FALSE(a.isNull());
     EXPECT_GT(litPixels(a), 320L * 240L / 50L);
     EXPECT_EQ(a, b) << "the session's DICOM options did not reach the segmentation";
+
+    // With the series' title (a session saved since titles are kept) the
+    // command line renders the same: the title changes nothing it draws.
+    session.seriesTitle = QStringLiteral("Run-off CTA 1.0 mm");
+    const RunResult t = renderSaved("session-titled");
+    ASSERT_EQ(t.code, 0) << t.err;
+    EXPECT_EQ(QImage(QString::fromStdString((testDir() / "session-titled.png").string())), a);
 }
 
 }  // namespace

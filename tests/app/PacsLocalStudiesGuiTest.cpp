@@ -16,6 +16,7 @@
 #include <QSettings>
 #include <QSqlDatabase>
 #include <QSqlQuery>
+#include <QStatusBar>
 #include <QTimer>
 #include <QTreeWidget>
 #include <algorithm>
@@ -27,6 +28,7 @@
 #include "GuiFixture.h"
 #include "LocalStudiesGui.h"
 #include "SyntheticCta.h"
+#include "gui/DocumentController.h"
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/ListenerService.h"
@@ -342,6 +344,95 @@ TEST_F(PacsSeriesTitleGuiTest, ASeriesWithoutDescriptionIsTitledByModalityAndNum
     ASSERT_TRUE(openFromLocalStudies()) << window_->lastError().toStdString();
     EXPECT_EQ(window_->windowTitle().toStdString(), "CT series 1 — VesselView");
     EXPECT_FALSE(window_->windowTitle().contains(QString::fromStdString(uid)));
+}
+
+/// The texts of the window's status bar as shown (its visible labels).
+QString statusText(const vv::gui::MainWindow& window) {
+    QStringList texts;
+    for (const QLabel* label : window.statusBar()->findChildren<QLabel*>()) {
+        if (label->isVisible() && !label->text().isEmpty()) {
+            texts << label->text();
+        }
+    }
+    return texts.join(QStringLiteral(" | "));
+}
+
+class PacsSessionTitleGuiTest : public PacsSeriesTitleGuiTest {
+  protected:
+    /// A series described `description` committed to the store, opened from
+    /// Local Studies and saved as the session session(); returns the folder it
+    /// was loaded from (named by its UID).
+    QString openAndSave(const std::string& description) {
+        uid_ = commitCta(store_, description);
+        restart();
+        if (!openFromLocalStudies()) {
+            ADD_FAILURE() << "not opened: " << window_->lastError().toStdString();
+            return {};
+        }
+        const QStringList files = window_->document()->shownFiles();
+        EXPECT_EQ(files.size(), 1);
+        // The folder is the UID: what the title must not be.
+        EXPECT_TRUE(files.value(0).contains(QString::fromStdString(uid_)))
+            << files.value(0).toStdString();
+        EXPECT_TRUE(window_->saveSessionTo(session()));
+        return files.value(0);
+    }
+    /// Opens session() in a fresh window (the store's settings as before),
+    /// noting every text the status bar showed while it loaded; true once it
+    /// was applied or failed.
+    bool reopen() {
+        restart();
+        QObject::connect(window_->document(), &vv::gui::DocumentController::loadStarted,
+                         window_.get(), [this] { shown_ << statusText(*window_); });
+        QObject::connect(window_->document(), &vv::gui::DocumentController::loadProgress,
+                         window_.get(), [this] { shown_ << statusText(*window_); });
+        bool applied = false;
+        QObject::connect(window_.get(), &vv::gui::MainWindow::sessionApplied, window_.get(),
+                         [&applied] { applied = true; });
+        return window_->openSession(session()) &&
+               waitUntil([&] { return applied || !window_->lastError().isEmpty(); }, 60000);
+    }
+    [[nodiscard]] static QString session() {
+        return QString::fromStdString((testDir() / "titled.vvs").string());
+    }
+    [[nodiscard]] QString uid() const { return QString::fromStdString(uid_); }
+
+    std::string uid_;
+    QStringList shown_;  ///< the status bar while the session loaded
+};
+
+TEST_F(PacsSessionTitleGuiTest, ASavedSessionReopensTheSeriesUnderItsTitle) {
+    ASSERT_FALSE(openAndSave("Run-off CTA 1.0 mm").isEmpty());
+    ASSERT_TRUE(reopen());
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    EXPECT_EQ(window_->windowTitle().toStdString(), "Run-off CTA 1.0 mm — VesselView");
+    EXPECT_EQ(window_->document()->title().toStdString(), "Run-off CTA 1.0 mm");
+    const QString status = statusText(*window_);
+    EXPECT_TRUE(status.contains(QStringLiteral("Run-off CTA 1.0 mm: 1 mesh, ")))
+        << status.toStdString();
+    EXPECT_TRUE(std::any_of(shown_.begin(), shown_.end(), [](const QString& text) {
+        return text.contains(QStringLiteral("Loading Run-off CTA 1.0 mm…"));
+    })) << shown_.join('\n').toStdString();
+    for (const QString& text : shown_ + QStringList{status, window_->windowTitle()}) {
+        EXPECT_FALSE(text.contains(uid())) << "a UID shown: " << text.toStdString();
+    }
+    window_->grab().save(QString::fromStdString((testDir() / "session-title.png").string()));
+    // Saved again from the reopened window, the title stays.
+    EXPECT_TRUE(window_->saveSessionTo(session()));
+    ASSERT_TRUE(reopen());
+    EXPECT_EQ(window_->windowTitle().toStdString(), "Run-off CTA 1.0 mm — VesselView");
+}
+
+TEST_F(PacsSessionTitleGuiTest, ASessionWhoseSeriesIsGoneNamesTheFolderButNoUidTitle) {
+    const QString folder = openAndSave("Carotid CTA");
+    ASSERT_FALSE(folder.isEmpty());
+    restart();  // the series is no longer open when its files go
+    fs::remove_all(fs::path(folder.toStdString()));
+    ASSERT_TRUE(reopen());
+    // As for any missing file: the error names it, the empty window stays.
+    EXPECT_TRUE(window_->lastError().contains(folder)) << window_->lastError().toStdString();
+    EXPECT_EQ(window_->windowTitle().toStdString(), "VesselView");
+    EXPECT_EQ(window_->viewer()->scene(), nullptr);
 }
 
 TEST(PacsSeriesNameTest, ASeriesIsNamedByWhatItSaysNeverByItsUid) {

@@ -188,6 +188,66 @@ TEST(SessionFile, TheDicomSourceRoundTripsAndIsChecked) {
     EXPECT_NE(errorFor("dicom-threshold.vvs", bad).find("dicom.threshold"), std::string::npos);
 }
 
+// The title the window gave a series ("dicom.title") goes into the session
+// and comes back, so that a reopened series is not named after its folder.
+TEST(SessionFile, TheSeriesTitleRoundTripsAndIsChecked) {
+    gui::Session s = sampleSession();
+    s.seriesTitle = QStringLiteral("Becken-Bein-Angio – arterielle Phase 1,0 mm");
+    // Without DICOM data there is no series to name: nothing is written.
+    EXPECT_FALSE(gui::sessionToJson(s, sessionDir() / "x.vvs").contains("\"title\""));
+    segmentation::SceneSourceOptions dicom;
+    dicom.seriesInstanceUid = "1.2.826.0.1.3680043.2.1125.7";
+    s.dicom = dicom;
+    const QByteArray json = gui::sessionToJson(s, sessionDir() / "titled.vvs");
+    const QJsonObject written = QJsonDocument::fromJson(json).object();
+    EXPECT_EQ(written.value(QStringLiteral("dicom")).toObject().value(QStringLiteral("title")),
+              QJsonValue(s.seriesTitle));
+    EXPECT_EQ(written.value(QStringLiteral("version")).toInt(), 1);  // optional within version 1
+    const gui::Session back = gui::sessionFromJson(json, sessionDir() / "titled.vvs");
+    EXPECT_EQ(back.seriesTitle, s.seriesTitle);
+    ASSERT_TRUE(back.dicom.has_value());
+    EXPECT_EQ(back.dicom->seriesInstanceUid, dicom.seriesInstanceUid);
+    expectSame(back, s);
+
+    // Checked: a string, not blank, one line, not absurdly long.
+    const QByteArray quoted = R"("title": ")" + s.seriesTitle.toUtf8() + R"(")";
+    ASSERT_EQ(json.count(quoted), 1) << json.toStdString();
+    for (const QByteArray& bad : {QByteArray(R"("title": 5)"), QByteArray(R"("title": "  ")"),
+                                  QByteArray(R"("title": "CTA\nangio")"),
+                                  R"("title": ")" + QByteArray(1025, 'x') + R"(")"}) {
+        const std::string problem =
+            errorFor("title-bad.vvs", QByteArray(json).replace(quoted, bad));
+        EXPECT_NE(problem.find("dicom.title"), std::string::npos) << bad.toStdString();
+    }
+}
+
+// A session written before the title existed (its "dicom" object as the
+// earlier version-1 files have it) loads as before: the same series and
+// segmentation, no title, so the series is named after its folder as then.
+TEST(SessionFile, ASessionWithoutASeriesTitleLoadsAsBefore) {
+    QJsonObject root =
+        QJsonDocument::fromJson(gui::sessionToJson(sampleSession(), sessionDir() / "x.vvs"))
+            .object();
+    root.insert(QStringLiteral("dicom"),
+                QJsonDocument::fromJson(R"({"series": "1.2.826.0.1.3680043.2.1125.9",
+                    "components": 2, "triangles": 5000, "threshold": [200, 600],
+                    "boneRemoval": true})")
+                    .object());
+    const fs::path path = writeText("untitled-v1.vvs", QJsonDocument(root).toJson());
+    const gui::Session s = gui::loadSession(path);
+    EXPECT_TRUE(s.seriesTitle.isEmpty());
+    ASSERT_TRUE(s.dicom.has_value());
+    EXPECT_EQ(s.dicom->seriesInstanceUid, "1.2.826.0.1.3680043.2.1125.9");
+    EXPECT_EQ(s.dicom->segmentation.keepComponents, 2);
+    EXPECT_EQ(s.dicom->surface.targetTriangles, 5000U);
+    ASSERT_TRUE(s.dicom->segmentation.range.has_value());
+    EXPECT_FLOAT_EQ(s.dicom->segmentation.range->lower, 200.0F);
+    EXPECT_EQ(s.dicom->segmentation.removeBone, std::optional<bool>(true));
+    expectSame(s, sampleSession());
+    // Written again, it stays without a title.
+    EXPECT_FALSE(gui::sessionToJson(s, path).contains("\"title\""));
+}
+
 /// Slice views unlike the defaults: one large coronal slice, the bone
 /// preset, outline only, moved, zoomed and panned views, a cursor.
 app::SliceSessionState sampleSlices() {
