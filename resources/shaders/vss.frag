@@ -41,8 +41,7 @@ uniform bool uVoidPremultiplied;
 // Preview frames while the camera moves are built with QUICK_NORMALS
 // defined (a variant, not a uniform: llvmpipe runs both sides of a branch):
 // slopes from differences 1 and 2 px apart away from contours and a plane
-// fit over samples 2 px apart within 3 px of one (no Toksvig, no mean
-// samples): about a third of the texture reads.
+// fit over samples 2 px apart next to one (no Toksvig, no mean samples).
 #ifdef QUICK_NORMALS
 const bool kQuickNormals = true;
 #else
@@ -89,20 +88,6 @@ float derivative(float minus, float centre, float plus) {
 
 bool isVessel(ivec2 p) {
     return texelFetch(uLinearDepth, p, 0).r < 1e30;
-}
-
-// Whether one of the eight pixels `r` px from p (along the axes and the
-// diagonals) inside the image is a vessel pixel.
-bool vesselAround(ivec2 p, ivec2 size, int r) {
-    const ivec2 directions[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, 1), ivec2(0, -1),
-                                         ivec2(1, 1), ivec2(-1, 1), ivec2(1, -1), ivec2(-1, -1));
-    for (int k = 0; k < 8; ++k) {
-        ivec2 q = p + directions[k] * r;
-        if (q.x >= 0 && q.y >= 0 && q.x < size.x && q.y < size.y && isVessel(q)) {
-            return true;
-        }
-    }
-    return false;
 }
 
 // The mean offset (x, y) and z' of the VSS (non-vessel) pixels within
@@ -265,12 +250,14 @@ void main() {
         support = (float(hasVss(xm)) + float(hasVss(xp)) + float(hasVss(ym)) + float(hasVss(yp)) +
                    float(hasVss(xm2)) + float(hasVss(xp2)) + float(hasVss(ym2)) +
                    float(hasVss(yp2))) / 8.0;
-        // Within 3 px of a contour the silhouette's pixel staircase ripples
-        // z' (the teeth the settled frame's wide fit keeps out of the
-        // light): there the slope is the plane fit over 5x5 samples 2 px
-        // apart (4-5 window px at the budget's scales, as the settled
-        // frame's 4 px).
-        if (support < 1.0 || vesselAround(p, size, 3)) {
+        // Next to a contour (one of the eight samples missing) the
+        // silhouette's pixel staircase ripples z' (the teeth the settled
+        // frame's wide fit keeps out of the light): there the slope is the
+        // plane fit over 5x5 samples 2 px apart (4-5 window px at the
+        // budget's scales, as the settled frame's 4 px). Fitting out to
+        // 3 px (a vessel 3 px away) took the teeth from 1.6 to 1.1 x the
+        // settled frame's but cost ~3 ms more a moving frame on llvmpipe.
+        if (support < 1.0) {
             float ignored = 1.0;
             grad = fittedGradient(p, size, z, grad, 2, 0, ignored);
         }

@@ -262,8 +262,8 @@ TEST_F(MovingFrameTest, AMovingFramesLitVssDoesNotRippleMoreThanTheSettledFrames
     // 1.45 x the settled frame's with one-pixel slopes, 1.28 x with the
     // mean of the 1 and 2 px differences, 1.01 x with the specular fading
     // by the share of the eight samples with VSS (not on / off by all four
-    // neighbours, which flickered along the silhouettes' staircase); 0.95 x
-    // with the plane fit within 3 px of a contour.
+    // neighbours, which flickered along the silhouettes' staircase); 1.10 x
+    // with the plane fit next to contours.
     EXPECT_LT(movingRipple, 1.15 * stillRipple);
 }
 
@@ -313,13 +313,14 @@ TEST_F(MovingFrameTest, AMovingFramesLitVssHasNoTeethAlongTheSilhouettes) {
     // part 1); the settled frame's plane fit over samples 4 px apart keeps
     // that ripple out of the light. A moving frame's few-pixel slopes lit
     // it: light and dark teeth along every slanted silhouette, one per
-    // render pixel's step. Its slopes next to a contour come from a plane
-    // fit too (5 x 5 samples 2 px apart).
+    // render pixel's step. Its slopes next to a contour (2 px) come from a
+    // plane fit too (5 x 5 samples 2 px apart).
     const auto [still, moving] = teethScores(*harness_, style_);
     // 2.36 x the settled frame's with slopes from the 1 and 2 px
     // differences only; 1.59 x with the fit where one of the eight samples
-    // is missing (2 px); 1.10 x with it within 3 px.
-    EXPECT_LT(moving, 1.25 * still);
+    // is missing (2 px, kept); 1.10 x with it within 3 px (~3 ms more a
+    // frame on llvmpipe: the rotation fell below 30 fps).
+    EXPECT_LT(moving, 1.8 * still);
 }
 
 TEST_F(MovingFrameTest, AMovingFramesLitVssHasNoTeethOnAFacetedMesh) {
@@ -330,8 +331,8 @@ TEST_F(MovingFrameTest, AMovingFramesLitVssHasNoTeethOnAFacetedMesh) {
     harness_->setScene(faceted);
     const auto [still, moving] = teethScores(*harness_, style_);
     // 2.26 x the settled frame's (0.01247 / 0.00551) with the 1 and 2 px
-    // differences only; 1.10 x with the fit.
-    EXPECT_LT(moving, 1.25 * still);
+    // differences only; 1.59 x with the fit.
+    EXPECT_LT(moving, 1.8 * still);
 }
 
 /// Pixels where `with` and `without` differ by more than 40 of 255 in some
