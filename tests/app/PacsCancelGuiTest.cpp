@@ -22,13 +22,18 @@
 #include <QTableWidget>
 #include <QTest>
 #include <array>
+#include <atomic>
 #include <cerrno>
+#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <set>
 #include <string>
+#include <thread>
+#include <vector>
 
 #include "PacsGuiFixture.h"
+#include "gui/pacs/BackgroundCall.h"
 #include "gui/pacs/NetworkPreferencesDialog.h"
 #include "gui/pacs/PacsBrowser.h"
 #include "gui/pacs/TlsFilesBox.h"
@@ -125,6 +130,45 @@ bool showsRed(QLabel* label) {
         }
     }
     return false;
+}
+
+/// LatestCall (app/gui/pacs/BackgroundCall.h), under Search, the series
+/// search and Test: only the newest call's answer is handed over.
+class LatestCallTest : public vv::test::GuiFixture {};
+
+TEST_F(LatestCallTest, OnlyTheNewestCallsAnswerArrivesAndAStoppedCallsNever) {
+    QObject owner;
+    vv::gui::LatestCall<int> call(&owner);
+    std::vector<int> answers;
+    const auto keep = [&answers](const int& answer) { answers.push_back(answer); };
+    // The first call waits until it is stopped, as for a silent peer.
+    std::atomic<bool> firstStopped{false};
+    call.start(
+        [&firstStopped](const std::stop_token& stop) {
+            while (!stop.stop_requested()) {
+                std::this_thread::sleep_for(std::chrono::milliseconds(1));
+            }
+            firstStopped = true;
+            return 1;
+        },
+        keep);
+    EXPECT_TRUE(call.isRunning());
+    // A newer one stops it; its answer, not the first's, arrives.
+    call.start([](const std::stop_token&) { return 2; }, keep);
+    ASSERT_TRUE(waitUntil([&] { return firstStopped.load() && !call.isRunning(); }, 5000));
+    static_cast<void>(waitUntil([] { return false; }, 200));  // a late answer would come now
+    EXPECT_EQ(answers, std::vector<int>{2});
+    // A cancelled call's answer never arrives.
+    call.start(
+        [](const std::stop_token&) {
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+            return 3;
+        },
+        keep);
+    call.cancel();
+    EXPECT_FALSE(call.isRunning());
+    static_cast<void>(waitUntil([] { return false; }, 300));
+    EXPECT_EQ(answers, std::vector<int>{2});
 }
 
 class PacsCancelGuiTest : public vv::test::PacsGuiFixture {

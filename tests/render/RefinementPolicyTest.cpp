@@ -265,6 +265,14 @@ TEST(RefinementPolicyTest, TheDefaultBudgetSettlesOnTheLargestStepThatFitsAndSta
     }
 }
 
+/// One moving frame that cost `ms`, then the next camera move: the scale
+/// that move is drawn at.
+float scaleAfter(RefinementPolicy& policy, double ms) {
+    policy.frameMeasured(ms);
+    EXPECT_TRUE(policy.cameraMoved());
+    return policy.interactiveScale();
+}
+
 // From the smallest step at SSIM >= 0.9 (0.42) down, frames a little over
 // the budget hold the size; only a frame far over it steps down.
 TEST(RefinementPolicyTest, BelowTheSmallestFaithfulStepOnlyFarTooSlowFramesStepDown) {
@@ -272,17 +280,11 @@ TEST(RefinementPolicyTest, BelowTheSmallestFaithfulStepOnlyFarTooSlowFramesStepD
     RefinementPolicy policy;
     policy.setFrameBudget(28.0);
     policy.frameMeasured(32.0);
-    policy.frameMeasured(32.0);  // at 0.5: twice over 1.05 x the budget
-    ASSERT_TRUE(policy.cameraMoved());
-    ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    ASSERT_FLOAT_EQ(scaleAfter(policy, 32.0), 0.42F);  // at 0.5: twice over 1.05 x the budget
     for (int i = 0; i < 10; ++i) {
-        policy.frameMeasured(34.0);  // 1.21 x the budget, every time
-        ASSERT_TRUE(policy.cameraMoved());
+        ASSERT_FLOAT_EQ(scaleAfter(policy, 34.0), 0.42F);  // 1.21 x the budget, every time
     }
-    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
-    policy.frameMeasured(40.0);  // over 1.4 x
-    ASSERT_TRUE(policy.cameraMoved());
-    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
+    EXPECT_FLOAT_EQ(scaleAfter(policy, 40.0), 0.35F);  // over 1.4 x
 }
 
 // One frame slowed by something else (far over the budget) costs one move
@@ -292,23 +294,13 @@ TEST(RefinementPolicyTest, OneSlowFrameCostsOneMoveAtTheStepBelow) {
     RefinementPolicy policy;
     policy.setFrameBudget(27.0);
     policy.frameMeasured(30.0);
-    policy.frameMeasured(30.0);
-    ASSERT_TRUE(policy.cameraMoved());
-    ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    ASSERT_FLOAT_EQ(scaleAfter(policy, 30.0), 0.42F);
     for (int i = 0; i < 5; ++i) {
-        policy.frameMeasured(26.0);
-        ASSERT_TRUE(policy.cameraMoved());
-        ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+        ASSERT_FLOAT_EQ(scaleAfter(policy, 26.0), 0.42F);
     }
-    policy.frameMeasured(45.0);  // a spike: over 1.4 x
-    ASSERT_TRUE(policy.cameraMoved());
-    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.35F);
-    policy.frameMeasured(24.0);
-    ASSERT_TRUE(policy.cameraMoved());
-    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);  // back at once
-    policy.frameMeasured(26.0);
-    ASSERT_TRUE(policy.cameraMoved());
-    EXPECT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    EXPECT_FLOAT_EQ(scaleAfter(policy, 45.0), 0.35F);  // a spike: over 1.4 x
+    EXPECT_FLOAT_EQ(scaleAfter(policy, 24.0), 0.42F);  // back at once
+    EXPECT_FLOAT_EQ(scaleAfter(policy, 26.0), 0.42F);
 }
 
 // A step that did not fit is not tried again at once (no ping-pong between
@@ -318,9 +310,7 @@ TEST(RefinementPolicyTest, AStepThatDidNotFitIsTriedAgainOnlyAfterItsCostIsForgo
     RefinementPolicy policy;
     policy.setFrameBudget(28.0);
     policy.frameMeasured(31.0);
-    policy.frameMeasured(31.0);  // twice over 1.05 x the budget at 0.5
-    ASSERT_TRUE(policy.cameraMoved());
-    ASSERT_FLOAT_EQ(policy.interactiveScale(), 0.42F);
+    ASSERT_FLOAT_EQ(scaleAfter(policy, 31.0), 0.42F);  // twice over 1.05 x the budget at 0.5
     // 0.42 now costs 20 ms: 0.5 would be expected at ~22.6 by the sizes, but
     // it is known to cost 31.
     unsigned held = 0;

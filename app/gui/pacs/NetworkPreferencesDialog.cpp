@@ -192,10 +192,6 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     fillTable();
 }
 
-NetworkPreferencesDialog::~NetworkPreferencesDialog() {
-    testStop_.request_stop();
-}
-
 PacsSettings NetworkPreferencesDialog::settings() const {
     PacsSettings s = readPacsSettings(QSettings());  // keeps the timeouts
     s.me.aeTitle = aeTitle_->text().trimmed().toStdString();
@@ -252,8 +248,8 @@ void NetworkPreferencesDialog::updateButtons() {
     const bool selected = table_->currentRow() >= 0 && !nodes_.empty();
     edit_->setEnabled(selected);
     remove_->setEnabled(selected);
-    test_->setEnabled(selected && !testing_);
-    cancelTest_->setEnabled(testing_);
+    test_->setEnabled(selected && !testCall_.isRunning());
+    cancelTest_->setEnabled(testCall_.isRunning());
 }
 
 void NetworkPreferencesDialog::editNode(int row) {
@@ -284,7 +280,7 @@ void NetworkPreferencesDialog::editNode(int row) {
 
 void NetworkPreferencesDialog::testNode() {
     const int row = table_->currentRow();
-    if (testing_ || row < 0 || row >= static_cast<int>(nodes_.size())) {
+    if (testCall_.isRunning() || row < 0 || row >= static_cast<int>(nodes_.size())) {
         return;
     }
     const QString ourProblem = aeTitleProblem(aeTitle_->text().trimmed(), tr("Our AE title"));
@@ -296,23 +292,11 @@ void NetworkPreferencesDialog::testNode() {
     }
     pacs::LocalAe me = settings().me;
     const pacs::Node node = nodes_[static_cast<std::size_t>(row)].node;
-    testing_ = true;
-    testStop_ = std::stop_source();
-    const int generation = ++testGeneration_;
-    test_->setText(tr("Testing…"));
-    updateButtons();
-    testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
-    fitHeight();
-    runInBackground(
-        this,
-        [me, node, stop = testStop_.get_token()] {
+    testCall_.start(
+        [me, node](const std::stop_token& stop) {
             return tryNetwork([&] { pacs::echo(me, node, stop); });
         },
-        [this, node, generation](const NetworkFailure& failure) {
-            if (generation != testGeneration_) {
-                return;  // cancelled: the dialog moved on already
-            }
-            testing_ = false;
+        [this, node](const NetworkFailure& failure) {
             test_->setText(tr("&Test"));
             updateButtons();
             const bool ok = failure.kind == NetworkFailure::Kind::None;
@@ -322,15 +306,17 @@ void NetworkPreferencesDialog::testNode() {
             fitHeight();
             emit testFinished(ok);
         });
+    test_->setText(tr("Testing…"));
+    updateButtons();
+    testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
+    fitHeight();
 }
 
 void NetworkPreferencesDialog::cancelTest() {
-    if (!testing_) {
+    if (!testCall_.isRunning()) {
         return;
     }
-    testStop_.request_stop();  // the worker aborts its association at once
-    ++testGeneration_;
-    testing_ = false;
+    testCall_.cancel();  // the worker aborts its association at once
     test_->setText(tr("&Test"));
     updateButtons();
     testResult_->setText(tr("Test cancelled."));

@@ -2,8 +2,9 @@
 #pragma once
 
 #include <QDialog>
-#include <stop_token>
 
+#include "gui/pacs/BackgroundCall.h"
+#include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsSettings.h"
 
 class QCheckBox;
@@ -31,7 +32,6 @@ class NetworkPreferencesDialog : public QDialog {
   public:
     explicit NetworkPreferencesDialog(QWidget* parent = nullptr);
     /// Stops a Test that runs (its worker aborts the association).
-    ~NetworkPreferencesDialog() override;
     Q_DISABLE_COPY_MOVE(NetworkPreferencesDialog)
 
     /// The settings as entered (not yet checked).
@@ -41,7 +41,7 @@ class NetworkPreferencesDialog : public QDialog {
     /// The outcome of the last Test ("" before any).
     [[nodiscard]] QString testResult() const;
     /// True while a Test runs.
-    [[nodiscard]] bool testRunning() const noexcept { return testing_; }
+    [[nodiscard]] bool testRunning() const noexcept { return testCall_.isRunning(); }
 
     [[nodiscard]] QLineEdit* aeTitleEdit() const noexcept { return aeTitle_; }
     [[nodiscard]] QCheckBox* listenerBox() const noexcept { return listener_; }
@@ -95,9 +95,7 @@ class NetworkPreferencesDialog : public QDialog {
     QPushButton* cancelTest_ = nullptr;
     QLabel* testResult_ = nullptr;
     QLabel* error_ = nullptr;
-    bool testing_ = false;
-    int testGeneration_ = 0;     ///< a cancelled Test's answer is dropped
-    std::stop_source testStop_;  ///< of the Test that runs
+    LatestCall<NetworkFailure> testCall_{this};  ///< a cancelled Test's answer is dropped
 };
 
 }  // namespace vv::gui

@@ -247,8 +247,6 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
 }
 
 PacsBrowser::~PacsBrowser() {
-    searchStop_.request_stop();  // the workers abort their associations
-    seriesStop_.request_stop();
     if (retrieve_ != nullptr) {
         retrieve_->stop.request_stop();  // the worker ends on its own; nothing waits for it
     }
@@ -308,7 +306,7 @@ pacs::StudyQuery PacsBrowser::query() const {
 
 void PacsBrowser::startSearch() {
     const PacsNode* node = currentNode();
-    if (searching_ || node == nullptr) {
+    if (searchCall_.isRunning() || node == nullptr) {
         return;
     }
     if (dateFrom_->date() != kAnyDate && dateTo_->date() != kAnyDate &&
@@ -317,22 +315,12 @@ void PacsBrowser::startSearch() {
         emit searchFinished(false);
         return;
     }
-    searching_ = true;
-    searchStop_ = std::stop_source();
-    const int generation = ++searchGeneration_;
-    updateButtons();
-    setStatus(tr("Searching %1…").arg(text(pacs::describe(node->node))));
-    runInBackground(
-        this,
-        [me = settings_.me, peer = node->node, q = query(), stop = searchStop_.get_token()] {
+    searchCall_.start(
+        [me = settings_.me, peer = node->node, q = query()](const std::stop_token& stop) {
             return tryNetwork([&] { return pacs::findStudies(me, peer, q, {}, stop); });
         },
-        [this, generation, peer = node->node, name = node->name](
+        [this, peer = node->node, name = node->name](
             const std::pair<std::vector<pacs::StudyResult>, NetworkFailure>& answer) {
-            if (generation != searchGeneration_) {
-                return;  // cancelled: the window moved on already
-            }
-            searching_ = false;
             const bool ok = answer.second.kind == NetworkFailure::Kind::None;
             // The tables show the last search's answer, and its node serves them.
             resultsNode_ = ok ? name : std::string();
@@ -346,20 +334,18 @@ void PacsBrowser::startSearch() {
             updateButtons();
             emit searchFinished(ok);
         });
+    updateButtons();
+    setStatus(tr("Searching %1…").arg(text(pacs::describe(node->node))));
 }
 
 void PacsBrowser::cancelSearch() {
-    if (!searching_ && !seriesSearching_) {
+    if (!searchCall_.isRunning() && !seriesCall_.isRunning()) {
         return;
     }
-    const bool studies = searching_;
+    const bool studies = searchCall_.isRunning();
     // The workers abort their associations at once; their answers are dropped.
-    searchStop_.request_stop();
-    seriesStop_.request_stop();
-    ++searchGeneration_;
-    ++seriesGeneration_;
-    searching_ = false;
-    seriesSearching_ = false;
+    searchCall_.cancel();
+    seriesCall_.cancel();
     if (studies) {
         resultsNode_.clear();  // the rows shown are not this search's answer
         showStudies({});
@@ -403,39 +389,31 @@ void PacsBrowser::studySelected() {
     seriesResults_.clear();
     series_->setRowCount(0);
     // The series of the study selected before: not wanted any more.
-    const int generation = ++seriesGeneration_;
-    seriesStop_.request_stop();
-    seriesSearching_ = false;
+    seriesCall_.cancel();
     updateButtons();
     const int row = studies_->currentRow();
     const PacsNode* node = resultsNode();
     if (row < 0 || row >= static_cast<int>(studyResults_.size()) || node == nullptr) {
         return;
     }
-    seriesStop_ = std::stop_source();
-    seriesSearching_ = true;
-    updateButtons();
     pacs::SeriesQuery q;
     q.studyInstanceUid = studyResults_[static_cast<std::size_t>(row)].studyInstanceUid;
-    runInBackground(
-        this,
-        [me = settings_.me, peer = node->node, q, stop = seriesStop_.get_token()] {
+    seriesCall_.start(
+        [me = settings_.me, peer = node->node, q](const std::stop_token& stop) {
             return tryNetwork([&] { return pacs::findSeries(me, peer, q, {}, stop); });
         },
-        [this, generation, peer = node->node](
+        [this, peer = node->node](
             const std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>& answer) {
-            if (generation != seriesGeneration_) {
-                return;  // another study was selected meanwhile, or cancelled
-            }
-            seriesSearching_ = false;
             const bool ok = answer.second.kind == NetworkFailure::Kind::None;
             if (ok) {
                 showSeries(answer.first);
             } else {
                 setStatus(failureText(answer.second, peer), true);
             }
+            updateButtons();
             emit seriesFinished(ok);
         });
+    updateButtons();
 }
 
 void PacsBrowser::showSeries(const std::vector<pacs::SeriesResult>& series) {
@@ -471,13 +449,13 @@ void PacsBrowser::updateMoveNote() {
 }
 
 void PacsBrowser::updateButtons() {
-    const bool busy = searching_ || retrieve_ != nullptr;
+    const bool busy = searchCall_.isRunning() || retrieve_ != nullptr;
     const bool hasStudy = studies_->currentRow() >= 0 &&
                           studies_->currentRow() < static_cast<int>(studyResults_.size());
     const bool hasSeries = series_->currentRow() >= 0 &&
                            series_->currentRow() < static_cast<int>(seriesResults_.size());
-    search_->setEnabled(!searching_ && currentNode() != nullptr);
-    cancelSearch_->setEnabled(searching_ || seriesSearching_);
+    search_->setEnabled(!searchCall_.isRunning() && currentNode() != nullptr);
+    cancelSearch_->setEnabled(searchCall_.isRunning() || seriesCall_.isRunning());
     retrieveStudy_->setEnabled(!busy && hasStudy);
     retrieveSeries_->setEnabled(!busy && hasSeries);
     cancel_->setEnabled(retrieve_ != nullptr && !retrieve_->stop.stop_requested());

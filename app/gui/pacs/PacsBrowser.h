@@ -5,9 +5,11 @@
 #include <QString>
 #include <functional>
 #include <memory>
-#include <stop_token>
+#include <utility>
 #include <vector>
 
+#include "gui/pacs/BackgroundCall.h"
+#include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsSettings.h"
 #include "vv/pacs/Find.h"
 
@@ -55,7 +57,7 @@ class PacsBrowser : public QDialog {
     /// The status line: what runs, found, failed or was retrieved.
     [[nodiscard]] QString status() const;
     /// True while a study search runs (not after its Cancel).
-    [[nodiscard]] bool searching() const noexcept { return searching_; }
+    [[nodiscard]] bool searching() const noexcept { return searchCall_.isRunning(); }
     [[nodiscard]] bool retrieving() const noexcept { return retrieve_ != nullptr; }
 
     [[nodiscard]] QComboBox* nodeBox() const noexcept { return node_; }
@@ -117,14 +119,10 @@ class PacsBrowser : public QDialog {
     std::string resultsNode_;  ///< the name of the node of the last successful search
     std::vector<pacs::StudyResult> studyResults_;
     std::vector<pacs::SeriesResult> seriesResults_;
-    /// Counts the series searches: an older one's answer is dropped.
-    int seriesGeneration_ = 0;
-    /// Counts the study searches: a cancelled one's answer is dropped.
-    int searchGeneration_ = 0;
-    bool searching_ = false;
-    bool seriesSearching_ = false;
-    std::stop_source searchStop_;  ///< of the study search that runs
-    std::stop_source seriesStop_;  ///< of the series search that runs
+    /// The study search, and the series search of the selected study: a
+    /// cancelled or overtaken one's answer is dropped.
+    LatestCall<std::pair<std::vector<pacs::StudyResult>, NetworkFailure>> searchCall_{this};
+    LatestCall<std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>> seriesCall_{this};
     std::shared_ptr<RetrieveControl> retrieve_;
     int retrieveTotal_ = -1;  ///< instances expected, when the PACS said
     QString retrievedFolder_;
