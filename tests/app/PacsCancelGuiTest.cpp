@@ -171,6 +171,39 @@ TEST_F(LatestCallTest, OnlyTheNewestCallsAnswerArrivesAndAStoppedCallsNever) {
     EXPECT_EQ(answers, std::vector<int>{2});
 }
 
+/// A call that has already ended by the time its answer is wired up (a
+/// refused connection ends in microseconds) still answers later, through the
+/// event queue: else "Searching…", set just after starting the call, stayed
+/// on screen over the answer (a CI failure of PacsBrowserGuiKillTest).
+TEST_F(LatestCallTest, AnAnswerThatIsAlreadyThereArrivesLaterNeverInsideTheCall) {
+    QObject owner;
+    std::vector<int> answers;
+    vv::gui::deliverLater(QtFuture::makeReadyFuture(7), &owner,
+                          [&answers](const int& answer) { answers.push_back(answer); });
+    EXPECT_TRUE(answers.empty()) << "the answer was handed over inside the call";
+    ASSERT_TRUE(waitUntil([&] { return !answers.empty(); }, 2000));
+    EXPECT_EQ(answers, std::vector<int>{7});
+
+    // An owner destroyed before the event queue runs gets nothing.
+    bool called = false;
+    {
+        QObject gone;
+        vv::gui::deliverLater(QtFuture::makeReadyFuture(8), &gone,
+                              [&called](const int&) { called = true; });
+    }
+    static_cast<void>(waitUntil([] { return false; }, 200));
+    EXPECT_FALSE(called);
+
+    // The same through LatestCall, whose running flag must not be cleared
+    // before start() returns.
+    vv::gui::LatestCall<int> call(&owner);
+    call.start([](const std::stop_token&) { return 9; },
+               [&answers](const int& answer) { answers.push_back(answer); });
+    EXPECT_TRUE(call.isRunning());
+    ASSERT_TRUE(waitUntil([&] { return !call.isRunning(); }, 2000));
+    EXPECT_EQ(answers, (std::vector<int>{7, 9}));
+}
+
 class PacsCancelGuiTest : public vv::test::PacsGuiFixture {
   protected:
     /// The stalling peer added as a second node ("Stalling") to the settings.

@@ -5,6 +5,7 @@
 // connect may take its whole timeout and cannot be stopped).
 
 #include <QFuture>
+#include <QMetaObject>
 #include <QObject>
 #include <QtConcurrent/QtConcurrentRun>
 #include <cstdint>
@@ -13,13 +14,29 @@
 
 namespace vv::gui {
 
-/// `work()` runs on a QtConcurrent worker, `done(result)` on the thread of
-/// `context` (the GUI thread) unless `context` was destroyed first; then the
-/// result is dropped. `work` must capture what it reads by value (it may
-/// outlive its owner until its own timeouts end it).
+/// Hands `future`'s result to `done(result)` on the thread of `context` (the
+/// GUI thread), always through its event queue, so never inside this call even
+/// when `future` has already finished: QFuture::then(context, ...) calls
+/// straight through then, and a caller that sets "Searching…" after starting
+/// a call would overwrite the answer. Dropped if `context` is destroyed first.
+template <typename Result, typename Done>
+void deliverLater(QFuture<Result> future, QObject* context, Done done) {
+    (void)future.then(context, [context, done = std::move(done)](Result result) mutable {
+        QMetaObject::invokeMethod(
+            context,
+            [done = std::move(done), result = std::move(result)]() mutable { done(result); },
+            Qt::QueuedConnection);
+    });
+}
+
+/// `work()` runs on a QtConcurrent worker, `done(result)` later on the thread
+/// of `context` (the GUI thread, through its event queue: never inside this
+/// call) unless `context` was destroyed first; then the result is dropped.
+/// `work` must capture what it reads by value (it may outlive its owner until
+/// its own timeouts end it).
 template <typename Work, typename Done>
 void runInBackground(QObject* context, Work work, Done done) {
-    (void)QtConcurrent::run(std::move(work)).then(context, std::move(done));
+    deliverLater(QtConcurrent::run(std::move(work)), context, std::move(done));
 }
 
 /// A series of such calls of which only the newest one's answer counts
