@@ -106,10 +106,11 @@ struct Session : DisplaySettings {
     /// are stored. Absent for meshes (and in older sessions).
     std::optional<segmentation::SceneSourceOptions> dicom;
     /// How the window named the series ("dicom.title": its description, or
-    /// "CT series 1"; SeriesDialog::seriesName()), so that a reopened session
-    /// shows that title rather than its folder's name (a study store's folders
-    /// are UIDs). Empty: named after its folder (meshes, older sessions, a
-    /// series opened without the chooser). Stored only with `dicom`.
+    /// "CT series 1"; gui::seriesName()), so that a reopened session names
+    /// the series so while it loads rather than by its folder (a study
+    /// store's folders are UIDs); once loaded, the GUI names it by what the
+    /// series says of itself, in the UI language. Empty: named after its
+    /// folder while loading (meshes, older sessions). Stored only with `dicom`.
     QString seriesTitle;
     /// The slice views (scenes from a volume); absent for meshes and in
     /// older sessions, which open with the slice views' defaults. The

@@ -12,6 +12,7 @@
 #include "common/ResourcePaths.h"
 #include "gui/MeshLoadTask.h"
 #include "gui/RecentFiles.h"
+#include "gui/SeriesName.h"
 #include "vv/core/Error.h"
 #include "vv/meshio/MeshLoader.h"
 
@@ -305,8 +306,8 @@ void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened
                 }
             });
     connect(task, &MeshLoadTask::loaded, this,
-            [this, task, opened, title](std::shared_ptr<const scene::Scene> scene) {
-                taskLoaded(task, opened, title, std::move(scene));
+            [this, task, opened](std::shared_ptr<const scene::Scene> scene) {
+                taskLoaded(task, opened, std::move(scene));
             });
     connect(task, &MeshLoadTask::failed, this,
             [this, task](const QString& file, const QString& problem) {
@@ -327,13 +328,21 @@ void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened
 }
 
 void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opened,
-                                    const QString& seriesTitle,
                                     std::shared_ptr<const scene::Scene> scene) {
     // The title names the window: its strings keep the window's translation context.
     const int count = static_cast<int>(opened.size());
+    const segmentation::SceneSourceReport& source = task->dicomReport();
+    seriesUid_ = source.fromVolume || source.fromSegmentationObject ? source.seriesInstanceUid
+                                                                    : std::string();
+    // A DICOM series is named by what it says of itself, in today's UI
+    // language (a session saved in another language, or a title given while
+    // loading, does not stay).
+    const std::optional<SeriesIdentity> series =
+        seriesUid_.empty() ? std::nullopt : std::optional(seriesIdentity(source));
+    seriesTitle_ = series ? seriesName(*series) : QString();
     QString title;
-    if (!seriesTitle.isEmpty()) {
-        title = seriesTitle;
+    if (!seriesTitle_.isEmpty()) {
+        title = seriesTitle_;
     } else if (count == 1) {
         title = QFileInfo(opened.front()).fileName();
     } else if (count > 1) {
@@ -356,10 +365,6 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
     for (const auto& path : task->files()) {
         shownFiles_ << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
     }
-    const segmentation::SceneSourceReport& source = task->dicomReport();
-    seriesUid_ = source.fromVolume || source.fromSegmentationObject ? source.seriesInstanceUid
-                                                                    : std::string();
-    seriesTitle_ = seriesUid_.empty() ? QString() : seriesTitle;
     setVolume(nullptr, {}, {});
     show(std::move(scene), title, std::exchange(pendingSession_, std::nullopt));
     // A DICOM image series: keep its volume for the Segmentation panel.
@@ -367,7 +372,7 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
         labelMap_ = source.labelMap;
         setVolume(source.volume, task->dicomOptions(), source.range);
     }
-    recent::add(opened);
+    recent::add(opened, opened.size() == 1 ? series : std::nullopt);
     if (!opened.isEmpty()) {
         emit recentFilesChanged();
     }

@@ -67,10 +67,11 @@ class DocumentController : public QObject {
     /// fails naming it and the number of files skipped.
     void openDicom(const QString& path);
     /// Loads the series of `path` chosen in the series chooser (after
-    /// seriesScanned()), segmented with `options`, and names the document
-    /// `title` (SeriesDialog::seriesTitle(): what a clinician recognises the
-    /// series by; the folder of a study store is only its UID). An empty
-    /// `title` names it after `path`.
+    /// seriesScanned()), segmented with `options`. While it loads, the status
+    /// bar names it `title` (SeriesDialog::seriesTitle(): what a clinician
+    /// recognises the series by; the folder of a study store is only its UID;
+    /// empty: after `path`); once loaded, the document is named by what the
+    /// series says of itself (seriesName(), in the UI language).
     void openSeries(const QString& path, const segmentation::SceneSourceOptions& options,
                     const QString& title = {});
     /// The demo: findDemoFile() if there is one (not remembered in the recent
@@ -133,9 +134,10 @@ class DocumentController : public QObject {
     [[nodiscard]] QString dicomSource() const;
     /// The DICOM series shown (image series or SEG); empty for meshes.
     [[nodiscard]] const std::string& seriesUid() const noexcept { return seriesUid_; }
-    /// The title the shown series was given (openSeries()'s `title`, or the
-    /// one a session stored); empty when it is named after its files. Saved
-    /// in sessions so that they reopen with it.
+    /// The name of the shown DICOM series (seriesName() of what the loaded
+    /// series says of itself, in the UI language); empty for files shown
+    /// under their own names. Saved in sessions: their reopening names the
+    /// series by it while it loads.
     [[nodiscard]] const QString& seriesTitle() const noexcept { return seriesTitle_; }
     /// The segmentation of volume() the shown scene was loaded with (the
     /// slice views' overlay); null without a volume.
@@ -205,10 +207,10 @@ class DocumentController : public QObject {
     /// itself), dropping a waiting session; false when nothing was loading.
     bool abandonTask();
     /// Starts `task`, abandoning the one in progress and any waiting session;
-    /// `opened` are the files as the user named them (title unless `title`
-    /// is given, recent files).
+    /// `opened` are the files as the user named them (title, recent files);
+    /// `title`, when given, names the load in the status bar.
     void startTask(MeshLoadTask* task, const QStringList& opened, const QString& title = {});
-    void taskLoaded(MeshLoadTask* task, const QStringList& opened, const QString& title,
+    void taskLoaded(MeshLoadTask* task, const QStringList& opened,
                     std::shared_ptr<const scene::Scene> scene);
     void taskFinished(MeshLoadTask* task);
     /// Shows `scene` as the document; applies `session` to it when given.
@@ -228,7 +230,7 @@ class DocumentController : public QObject {
     QStringList openedFiles_;
     QStringList shownFiles_;
     std::string seriesUid_;
-    QString seriesTitle_;  ///< seriesTitle(): the title openSeries() / a session gave
+    QString seriesTitle_;  ///< seriesTitle()
     std::shared_ptr<const scene::Volume> volume_;
     std::shared_ptr<const scene::LabelMap> labelMap_;
     QString lastError_;

@@ -33,6 +33,7 @@
 #include "gui/HelpTexts.h"
 #include "gui/LanguageMenu.h"
 #include "gui/MeasureTool.h"
+#include "gui/RecentFiles.h"
 #include "gui/ReportDialog.h"
 #include "gui/ScreenshotMode.h"
 #include "gui/SeriesDialog.h"
@@ -668,9 +669,12 @@ void MainWindow::rebuildRecentMenu() {
     const QStringList recent = DocumentController::recentFiles();
     int number = 1;
     for (const QString& file : recent) {
-        QAction* action = recentMenu_->addAction(
-            QStringLiteral("&%1 %2").arg(number++).arg(QFileInfo(file).fileName()), this,
-            [this, file] { openFiles({file}); });
+        // A series from a study store by what it says of itself, not by its
+        // folder (a UID); an "&" in a name is shown, not taken as a shortcut.
+        QString label = recent::label(file);
+        label.replace(QLatin1Char('&'), QStringLiteral("&&"));
+        QAction* action = recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++).arg(label),
+                                                 this, [this, file] { openFiles({file}); });
         action->setToolTip(file);
         action->setStatusTip(file);
     }

@@ -3,12 +3,52 @@
 
 #include <QFileInfo>
 #include <QSettings>
+#include <QVariantMap>
 
 namespace vv::gui::recent {
 
 namespace {
 
 const char* const kKey = "recentFiles";
+const char* const kSeriesKey = "recentSeries";
+
+/// "recentSeries": absolute path -> {description, modality, number, studyDate}.
+QVariantMap storedSeries() {
+    return QSettings().value(QLatin1String(kSeriesKey)).toMap();
+}
+
+QVariantMap toVariant(const SeriesIdentity& series) {
+    QVariantMap map;
+    map.insert(QStringLiteral("description"), series.description);
+    map.insert(QStringLiteral("modality"), series.modality);
+    if (series.number) {
+        map.insert(QStringLiteral("number"), *series.number);
+    }
+    map.insert(QStringLiteral("studyDate"), series.studyDate);
+    return map;
+}
+
+/// A stored entry, or none when it is not one (settings edited by hand, or
+/// from another version).
+std::optional<SeriesIdentity> fromVariant(const QVariant& value) {
+    if (value.typeId() != QMetaType::QVariantMap) {
+        return std::nullopt;
+    }
+    const QVariantMap map = value.toMap();
+    SeriesIdentity series;
+    series.description = map.value(QStringLiteral("description")).toString();
+    series.modality = map.value(QStringLiteral("modality")).toString();
+    series.studyDate = map.value(QStringLiteral("studyDate")).toString();
+    if (map.contains(QStringLiteral("number"))) {
+        bool ok = false;
+        const int number = map.value(QStringLiteral("number")).toInt(&ok);
+        if (!ok) {
+            return std::nullopt;
+        }
+        series.number = number;
+    }
+    return series;
+}
 
 }  // namespace
 
@@ -34,15 +74,45 @@ QStringList merged(QStringList recent, const QStringList& opened) {
     return recent;
 }
 
-void add(const QStringList& opened) {
+void add(const QStringList& opened, const std::optional<SeriesIdentity>& series) {
     if (opened.isEmpty()) {
         return;
     }
-    QSettings().setValue(QLatin1String(kKey), merged(files(), opened));
+    const QStringList list = merged(files(), opened);
+    QVariantMap stored = storedSeries();
+    for (const QString& file : opened) {
+        stored.remove(QFileInfo(file).absoluteFilePath());
+    }
+    if (series && opened.size() == 1) {
+        stored.insert(QFileInfo(opened.front()).absoluteFilePath(), toVariant(*series));
+    }
+    for (auto it = stored.begin(); it != stored.end();) {
+        it = list.contains(it.key()) ? std::next(it) : stored.erase(it);
+    }
+    QSettings settings;
+    settings.setValue(QLatin1String(kKey), list);
+    if (stored.isEmpty()) {
+        settings.remove(QLatin1String(kSeriesKey));
+    } else {
+        settings.setValue(QLatin1String(kSeriesKey), stored);
+    }
+}
+
+std::optional<SeriesIdentity> series(const QString& file) {
+    const QVariantMap stored = storedSeries();
+    const auto it = stored.constFind(QFileInfo(file).absoluteFilePath());
+    return it == stored.constEnd() ? std::nullopt : fromVariant(*it);
+}
+
+QString label(const QString& file) {
+    const std::optional<SeriesIdentity> identity = series(file);
+    return identity ? seriesLabel(*identity) : QFileInfo(file).fileName();
 }
 
 void clear() {
-    QSettings().remove(QLatin1String(kKey));
+    QSettings settings;
+    settings.remove(QLatin1String(kKey));
+    settings.remove(QLatin1String(kSeriesKey));
 }
 
 }  // namespace vv::gui::recent

@@ -2,9 +2,14 @@
 #pragma once
 
 #include <QStringList>
+#include <optional>
+
+#include "gui/SeriesName.h"
 
 /// File > Open Recent: the recently opened files, kept in QSettings under
-/// "recentFiles" (the application's default QSettings).
+/// "recentFiles" (the application's default QSettings), and for a DICOM
+/// series opened on its own what it says of itself, under "recentSeries"
+/// (never the patient's name or ID: they are not written to the settings).
 namespace vv::gui::recent {
 
 /// The longest list kept.
@@ -20,8 +25,19 @@ inline constexpr int kMaxFiles = 8;
 /// follow.
 [[nodiscard]] QStringList merged(QStringList recent, const QStringList& opened);
 
-/// Stores merged(files(), opened).
-void add(const QStringList& opened);
+/// Stores merged(files(), opened). `series`: what the one file opened (a
+/// DICOM folder or file) showed, remembered for it; without it, whatever
+/// was remembered for the opened files is forgotten. Series of files that
+/// drop off the list are forgotten too.
+void add(const QStringList& opened, const std::optional<SeriesIdentity>& series = std::nullopt);
+
+/// What add() remembered for `file` (an entry of files()); none for files
+/// shown under their own names.
+[[nodiscard]] std::optional<SeriesIdentity> series(const QString& file);
+
+/// What File > Open Recent shows for `file`: seriesLabel() of its series,
+/// else its file name.
+[[nodiscard]] QString label(const QString& file);
 
 /// Forgets every recent file.
 void clear();

@@ -17,6 +17,8 @@
 #include <QVBoxLayout>
 #include <algorithm>
 
+#include "gui/SeriesName.h"
+
 namespace vv::gui {
 
 namespace {
@@ -225,17 +227,7 @@ QString SeriesDialog::seriesTitle() const {
 }
 
 QString SeriesDialog::seriesName(const dicom::DicomSeries& series) {
-    QString description = fromStd(series.description).simplified();
-    if (!description.isEmpty()) {
-        return description;
-    }
-    const QString modality = fromStd(series.modality).simplified();
-    if (series.seriesNumber) {
-        const QString number = QLocale().toString(*series.seriesNumber);
-        return modality.isEmpty() ? tr("Series %1").arg(number)
-                                  : tr("%1 series %2").arg(modality, number);
-    }
-    return modality.isEmpty() ? tr("DICOM series") : tr("%1 series").arg(modality);
+    return gui::seriesName(seriesIdentity(series));
 }
 
 segmentation::SceneSourceOptions SeriesDialog::sceneSourceOptions() const {

@@ -174,6 +174,50 @@ TEST_F(DocumentControllerTest, RecentFilesAreStoredAndCleared) {
     EXPECT_EQ(record.count("recentFilesChanged"), 2);
 }
 
+TEST_F(DocumentControllerTest, ARecentSeriesIsLabelledByWhatItSaysNeverByItsFolder) {
+    const QString folder = QStringLiteral("/store/1.2.840.99/1.2.840.99.7");
+    gui::SeriesIdentity cta;
+    cta.description = QStringLiteral("Run-off & CTA");
+    cta.modality = QStringLiteral("CT");
+    cta.number = 3;
+    cta.studyDate = QStringLiteral("20250101");
+    gui::recent::add({QStringLiteral("/meshes/tree.vtp")});
+    gui::recent::add({folder}, cta);
+    EXPECT_EQ(gui::recent::series(folder), cta);
+    const QString label = gui::recent::label(folder);
+    EXPECT_TRUE(label.startsWith(QStringLiteral("Run-off & CTA · "))) << label.toStdString();
+    EXPECT_TRUE(label.contains(QStringLiteral("2025"))) << label.toStdString();
+    EXPECT_FALSE(label.contains(QStringLiteral("1.2.840"))) << label.toStdString();
+    EXPECT_EQ(gui::recent::label(QStringLiteral("/meshes/tree.vtp")), QStringLiteral("tree.vtp"));
+    // Without a description: modality and number, in the UI language.
+    cta.description.clear();
+    cta.studyDate.clear();
+    gui::recent::add({folder}, cta);
+    EXPECT_EQ(gui::recent::label(folder), QStringLiteral("CT series 3"));
+    // Opened again as plain files (or with others), it is a file again.
+    gui::recent::add({folder, QStringLiteral("/meshes/tree.vtp")}, cta);
+    EXPECT_FALSE(gui::recent::series(folder).has_value());
+    EXPECT_EQ(gui::recent::label(folder), QStringLiteral("1.2.840.99.7"));
+    // A series that drops off the list is forgotten with it.
+    gui::recent::add({folder}, cta);
+    for (int i = 0; i < gui::recent::kMaxFiles; ++i) {
+        gui::recent::add({QStringLiteral("/meshes/m%1.vtp").arg(i)});
+    }
+    EXPECT_FALSE(gui::recent::files().contains(folder));
+    EXPECT_TRUE(QSettings().value(QStringLiteral("recentSeries")).toMap().isEmpty());
+    // A stored entry that is not one (edited by hand) names the file.
+    gui::recent::add({folder}, cta);
+    QVariantMap broken;
+    broken.insert(folder, QStringLiteral("not a map"));
+    QSettings().setValue(QStringLiteral("recentSeries"), broken);
+    EXPECT_FALSE(gui::recent::series(folder).has_value());
+    EXPECT_EQ(gui::recent::label(folder), QStringLiteral("1.2.840.99.7"));
+    // Clearing forgets both.
+    gui::recent::clear();
+    EXPECT_TRUE(gui::recent::files().isEmpty());
+    EXPECT_FALSE(QSettings().contains(QStringLiteral("recentSeries")));
+}
+
 TEST_F(DocumentControllerTest, ALoadSignalsInOrderAndNamesItsFiles) {
     const fs::path tube = writeTube("tube.vtp");
     Recorder record(document_);

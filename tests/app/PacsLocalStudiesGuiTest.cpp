@@ -10,7 +10,11 @@
 #include <QAction>
 #include <QDate>
 #include <QElapsedTimer>
+#include <QFile>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <QLabel>
+#include <QMenu>
 #include <QPointer>
 #include <QPushButton>
 #include <QSettings>
@@ -34,6 +38,7 @@
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/PacsSettings.h"
+#include "gui/pacs/PacsWidgets.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/LocalStore.h"
@@ -338,6 +343,41 @@ TEST_F(PacsSeriesTitleGuiTest, ASeriesOpenedFromTheStoreIsTitledByItsDescription
     window_->grab().save(QString::fromStdString((testDir() / "series-title.png").string()));
 }
 
+/// The entries of File > Open Recent as shown (without the "&1 " prefix).
+QStringList recentMenuTexts(const vv::gui::MainWindow& window) {
+    QStringList texts;
+    for (const QMenu* menu : window.findChildren<QMenu*>()) {
+        if (menu->title() != vv::gui::MainWindow::tr("Open &Recent")) {
+            continue;
+        }
+        for (const QAction* action : menu->actions()) {
+            const QString text = action->text();
+            if (!action->isSeparator() && text.startsWith(QLatin1Char('&')) && text.size() > 3 &&
+                text[1].isDigit()) {
+                texts << text.mid(3).replace(QStringLiteral("&&"), QStringLiteral("&"));
+            }
+        }
+    }
+    return texts;
+}
+
+TEST_F(PacsSeriesTitleGuiTest, OpenRecentNamesAStoreSeriesByItsDescriptionAndDate) {
+    const std::string uid = commitCta(store_, "Run-off CTA 1.0 mm");
+    restart();
+    ASSERT_TRUE(openFromLocalStudies()) << window_->lastError().toStdString();
+    const QStringList entries = recentMenuTexts(*window_);
+    ASSERT_FALSE(entries.isEmpty());
+    EXPECT_EQ(entries.front().toStdString(),
+              (QStringLiteral("Run-off CTA 1.0 mm · ") + vv::gui::studyDateText("20250101"))
+                  .toStdString());
+    EXPECT_FALSE(entries.front().contains(QString::fromStdString(uid)));
+    // The next start shows it the same, and opens it from there.
+    restart();
+    ASSERT_EQ(recentMenuTexts(*window_).value(0).toStdString(), entries.front().toStdString());
+    EXPECT_EQ(vv::gui::MainWindow::recentFiles().value(0).section(QLatin1Char('/'), -1),
+              QString::fromStdString(uid));
+}
+
 TEST_F(PacsSeriesTitleGuiTest, ASeriesWithoutDescriptionIsTitledByModalityAndNumber) {
     const std::string uid = commitCta(store_, "");
     restart();
@@ -421,6 +461,28 @@ TEST_F(PacsSessionTitleGuiTest, ASavedSessionReopensTheSeriesUnderItsTitle) {
     EXPECT_TRUE(window_->saveSessionTo(session()));
     ASSERT_TRUE(reopen());
     EXPECT_EQ(window_->windowTitle().toStdString(), "Run-off CTA 1.0 mm — VesselView");
+}
+
+TEST_F(PacsSessionTitleGuiTest, ASessionSavedInAnotherLanguageReopensInTheUiLanguage) {
+    ASSERT_FALSE(openAndSave("").isEmpty());
+    EXPECT_EQ(window_->windowTitle().toStdString(), "CT series 1 — VesselView");
+    // The same session as a German window saved it.
+    QFile file(session());
+    ASSERT_TRUE(file.open(QIODevice::ReadOnly));
+    QJsonObject root = QJsonDocument::fromJson(file.readAll()).object();
+    file.close();
+    QJsonObject dicom = root.value(QStringLiteral("dicom")).toObject();
+    ASSERT_EQ(dicom.value(QStringLiteral("title")).toString(), QStringLiteral("CT series 1"));
+    dicom.insert(QStringLiteral("title"), QStringLiteral("CT-Serie 1"));
+    root.insert(QStringLiteral("dicom"), dicom);
+    ASSERT_TRUE(file.open(QIODevice::WriteOnly | QIODevice::Truncate));
+    file.write(QJsonDocument(root).toJson());
+    file.close();
+    ASSERT_TRUE(reopen());
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    EXPECT_EQ(window_->windowTitle().toStdString(), "CT series 1 — VesselView");
+    EXPECT_TRUE(statusText(*window_).contains(QStringLiteral("CT series 1: 1 mesh, ")))
+        << statusText(*window_).toStdString();
 }
 
 TEST_F(PacsSessionTitleGuiTest, ASessionWhoseSeriesIsGoneNamesTheFolderButNoUidTitle) {

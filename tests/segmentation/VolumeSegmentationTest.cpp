@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <numeric>
+#include <optional>
 #include <stop_token>
 
 #include "DicomSegTestUtil.h"
@@ -23,6 +24,7 @@
 #include "vv/dicom/Dicom.h"
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
+#include "vv/meshio/MeshWriter.h"
 #include "vv/segmentation/SceneSource.h"
 #include "vv/segmentation/VolumeSegmentation.h"
 #include "vv/segmentation/VolumeSurface.h"
@@ -186,6 +188,18 @@ TEST(VesselsFromVolume, DicomRoundTripMatchesTheDemoTree) {
     EXPECT_EQ(report.componentsKept, 1U);
     EXPECT_LE(scene.meshes[0].triangleCount(), 20000U);
     EXPECT_EQ(scene.meshes[0].source, dir / "slice3.dcm");
+    // What the series says of itself, to name it by (never its UID).
+    EXPECT_EQ(report.seriesDescription, "synthetic CTA");
+    EXPECT_EQ(report.modality, "CT");
+    EXPECT_EQ(report.seriesNumber, std::optional<int>(1));
+    EXPECT_EQ(report.studyDate, "20250101");
+    // A mesh loaded with the same report afterwards leaves nothing of it.
+    const fs::path mesh = dir.parent_path() / "round-trip-mesh.vtp";
+    meshio::writeVtp(scene.meshes[0], mesh);
+    (void)loadSceneSource(mesh, {}, {}, &report);
+    EXPECT_FALSE(report.fromVolume);
+    EXPECT_TRUE(report.seriesDescription.empty());
+    EXPECT_FALSE(report.seriesNumber.has_value());
 }
 
 TEST(VesselsFromVolume, WithoutBoneRemovalTheBoneRimIsAComponent) {

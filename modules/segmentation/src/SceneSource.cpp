@@ -54,6 +54,20 @@ long long integer(const std::string& text, const std::string& option) {
     return value;
 }
 
+/// The Study Date of the study in `scan` that holds `series`; empty if none.
+std::string studyDateOf(const dicom::DicomScanResult& scan, const dicom::DicomSeries& series) {
+    for (const dicom::DicomPatient& patient : scan.patients) {
+        for (const dicom::DicomStudy& study : patient.studies) {
+            for (const dicom::DicomSeries& s : study.series) {
+                if (&s == &series) {
+                    return study.date;
+                }
+            }
+        }
+    }
+    return {};
+}
+
 }  // namespace
 
 bool setSceneSourceOption(const std::string& name, const std::string& value,
@@ -172,6 +186,14 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
     const auto all = scan.allSeries();
     const dicom::DicomSeries* chosen =
         uid.empty() ? (all.size() == 1 ? all.front() : nullptr) : scan.findSeries(uid);
+    const auto nameSeries = [&](SceneSourceReport& r) {
+        if (chosen != nullptr) {
+            r.seriesDescription = chosen->description;
+            r.modality = chosen->modality;
+            r.seriesNumber = chosen->seriesNumber;
+            r.studyDate = studyDateOf(scan, *chosen);
+        }
+    };
     if (chosen != nullptr && chosen->sopClassUid == kSegmentationStorage) {
         for (std::size_t f = 0; f < chosen->files.size(); ++f) {
             const double n = static_cast<double>(chosen->files.size());
@@ -188,6 +210,7 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
             report->fromSegmentationObject = true;
             report->seriesInstanceUid = chosen->seriesInstanceUid;
             report->componentsKept = scene.meshes.size();
+            nameSeries(*report);
         }
         return scene;
     }
@@ -204,8 +227,10 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
     mesh.source = path;
     scene.meshes.push_back(std::move(mesh));
     if (report != nullptr) {
+        *report = {};  // nothing of an earlier source's report stays
         report->fromVolume = true;
         report->seriesInstanceUid = loaded.seriesInstanceUid;
+        nameSeries(*report);
         report->volumeDims = volume->dims();
         report->range = segmentation.range;
         report->componentsFound = segmentation.componentsFound;

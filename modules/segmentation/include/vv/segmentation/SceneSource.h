@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -31,6 +32,14 @@ struct SceneSourceReport {
     bool fromVolume = false;              ///< true: DICOM image series, segmented
     bool fromSegmentationObject = false;  ///< true: a DICOM SEG, one mesh per segment
     std::string seriesInstanceUid;
+    /// What the loaded series says of itself, to name it to a user (never by
+    /// its UID): Series Description, Modality, Series Number and its study's
+    /// Study Date (YYYYMMDD as in the file); empty / none where absent, and
+    /// for a single DICOM SEG file.
+    std::string seriesDescription;
+    std::string modality;
+    std::optional<int> seriesNumber;
+    std::string studyDate;
     glm::ivec3 volumeDims{0};
     ThresholdRange range;
     std::size_t componentsFound = 0;
