@@ -22,7 +22,7 @@ SeriesIdentity seriesIdentity(const segmentation::SceneSourceReport& report) {
 }
 
 QString seriesName(const SeriesIdentity& series) {
-    const QString description = series.description.simplified();
+    QString description = series.description.simplified();
     if (!description.isEmpty()) {
         return description;
     }
