@@ -2,8 +2,8 @@
 #include "gui/RecentFiles.h"
 
 #include <QFileInfo>
+#include <QMap>
 #include <QSettings>
-#include <QVariantMap>
 
 namespace vv::gui::recent {
 
@@ -12,42 +12,51 @@ namespace {
 const char* const kKey = "recentFiles";
 const char* const kSeriesKey = "recentSeries";
 
-/// "recentSeries": absolute path -> {description, modality, number, studyDate}.
-QVariantMap storedSeries() {
-    return QSettings().value(QLatin1String(kSeriesKey)).toMap();
-}
-
-QVariantMap toVariant(const SeriesIdentity& series) {
-    QVariantMap map;
-    map.insert(QStringLiteral("description"), series.description);
-    map.insert(QStringLiteral("modality"), series.modality);
-    if (series.number) {
-        map.insert(QStringLiteral("number"), *series.number);
-    }
-    map.insert(QStringLiteral("studyDate"), series.studyDate);
-    return map;
-}
-
-/// A stored entry, or none when it is not one (settings edited by hand, or
-/// from another version).
-std::optional<SeriesIdentity> fromVariant(const QVariant& value) {
-    if (value.typeId() != QMetaType::QVariantMap) {
-        return std::nullopt;
-    }
-    const QVariantMap map = value.toMap();
-    SeriesIdentity series;
-    series.description = map.value(QStringLiteral("description")).toString();
-    series.modality = map.value(QStringLiteral("modality")).toString();
-    series.studyDate = map.value(QStringLiteral("studyDate")).toString();
-    if (map.contains(QStringLiteral("number"))) {
-        bool ok = false;
-        const int number = map.value(QStringLiteral("number")).toInt(&ok);
-        if (!ok) {
-            return std::nullopt;
+/// "recentSeries": an array of {file (absolute), description, modality,
+/// number, studyDate}, readable in the settings file. An entry that is not
+/// one (edited by hand, another version) is left out.
+QMap<QString, SeriesIdentity> storedSeries() {
+    QMap<QString, SeriesIdentity> stored;
+    QSettings settings;
+    const int size = settings.beginReadArray(QLatin1String(kSeriesKey));
+    for (int i = 0; i < size; ++i) {
+        settings.setArrayIndex(i);
+        const QString file = settings.value(QStringLiteral("file")).toString();
+        SeriesIdentity series;
+        series.description = settings.value(QStringLiteral("description")).toString();
+        series.modality = settings.value(QStringLiteral("modality")).toString();
+        series.studyDate = settings.value(QStringLiteral("studyDate")).toString();
+        bool ok = true;
+        if (settings.contains(QStringLiteral("number"))) {
+            series.number = settings.value(QStringLiteral("number")).toInt(&ok);
         }
-        series.number = number;
+        if (ok && !file.isEmpty()) {
+            stored.insert(file, series);
+        }
     }
-    return series;
+    settings.endArray();
+    return stored;
+}
+
+void storeSeries(const QMap<QString, SeriesIdentity>& stored) {
+    QSettings settings;
+    settings.remove(QLatin1String(kSeriesKey));
+    if (stored.isEmpty()) {
+        return;
+    }
+    settings.beginWriteArray(QLatin1String(kSeriesKey), static_cast<int>(stored.size()));
+    int i = 0;
+    for (auto it = stored.begin(); it != stored.end(); ++it, ++i) {
+        settings.setArrayIndex(i);
+        settings.setValue(QStringLiteral("file"), it.key());
+        settings.setValue(QStringLiteral("description"), it->description);
+        settings.setValue(QStringLiteral("modality"), it->modality);
+        if (it->number) {
+            settings.setValue(QStringLiteral("number"), *it->number);
+        }
+        settings.setValue(QStringLiteral("studyDate"), it->studyDate);
+    }
+    settings.endArray();
 }
 
 }  // namespace
@@ -79,29 +88,22 @@ void add(const QStringList& opened, const std::optional<SeriesIdentity>& series)
         return;
     }
     const QStringList list = merged(files(), opened);
-    QVariantMap stored = storedSeries();
+    QMap<QString, SeriesIdentity> stored = storedSeries();
     for (const QString& file : opened) {
         stored.remove(QFileInfo(file).absoluteFilePath());
     }
     if (series && opened.size() == 1) {
-        stored.insert(QFileInfo(opened.front()).absoluteFilePath(), toVariant(*series));
+        stored.insert(QFileInfo(opened.front()).absoluteFilePath(), *series);
     }
-    for (auto it = stored.begin(); it != stored.end();) {
-        it = list.contains(it.key()) ? std::next(it) : stored.erase(it);
-    }
-    QSettings settings;
-    settings.setValue(QLatin1String(kKey), list);
-    if (stored.isEmpty()) {
-        settings.remove(QLatin1String(kSeriesKey));
-    } else {
-        settings.setValue(QLatin1String(kSeriesKey), stored);
-    }
+    stored.removeIf([&list](const auto& entry) { return !list.contains(entry.key()); });
+    QSettings().setValue(QLatin1String(kKey), list);
+    storeSeries(stored);
 }
 
 std::optional<SeriesIdentity> series(const QString& file) {
-    const QVariantMap stored = storedSeries();
+    const QMap<QString, SeriesIdentity> stored = storedSeries();
     const auto it = stored.constFind(QFileInfo(file).absoluteFilePath());
-    return it == stored.constEnd() ? std::nullopt : fromVariant(*it);
+    return it == stored.constEnd() ? std::nullopt : std::optional(*it);
 }
 
 QString label(const QString& file) {

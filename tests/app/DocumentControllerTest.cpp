@@ -204,18 +204,23 @@ TEST_F(DocumentControllerTest, ARecentSeriesIsLabelledByWhatItSaysNeverByItsFold
         gui::recent::add({QStringLiteral("/meshes/m%1.vtp").arg(i)});
     }
     EXPECT_FALSE(gui::recent::files().contains(folder));
-    EXPECT_TRUE(QSettings().value(QStringLiteral("recentSeries")).toMap().isEmpty());
-    // A stored entry that is not one (edited by hand) names the file.
+    EXPECT_FALSE(QSettings().contains(QStringLiteral("recentSeries/size")));
+    // Kept readable in the settings file; an entry that is not one (edited
+    // by hand) names the file.
     gui::recent::add({folder}, cta);
-    QVariantMap broken;
-    broken.insert(folder, QStringLiteral("not a map"));
-    QSettings().setValue(QStringLiteral("recentSeries"), broken);
+    {
+        QSettings settings;
+        EXPECT_EQ(settings.value(QStringLiteral("recentSeries/1/modality")).toString(),
+                  QStringLiteral("CT"));
+        EXPECT_EQ(settings.value(QStringLiteral("recentSeries/1/file")).toString(), folder);
+        settings.setValue(QStringLiteral("recentSeries/1/number"), QStringLiteral("three"));
+    }
     EXPECT_FALSE(gui::recent::series(folder).has_value());
     EXPECT_EQ(gui::recent::label(folder), QStringLiteral("1.2.840.99.7"));
     // Clearing forgets both.
     gui::recent::clear();
     EXPECT_TRUE(gui::recent::files().isEmpty());
-    EXPECT_FALSE(QSettings().contains(QStringLiteral("recentSeries")));
+    EXPECT_FALSE(QSettings().contains(QStringLiteral("recentSeries/size")));
 }
 
 TEST_F(DocumentControllerTest, ALoadSignalsInOrderAndNamesItsFiles) {
