@@ -217,7 +217,9 @@ TEST_F(PacsLocalStudiesGuiTest, TheIndexIsReadOffTheGuiThreadWhichKeepsWorkingMe
     QElapsedTimer clock;
     clock.start();
     refreshButton(browser)->click();
-    EXPECT_LT(clock.elapsed(), 500) << "Refresh waited for the index on the GUI thread";
+    // Waiting for the held index takes its 10 s busy timeout; the margin
+    // below it is for a loaded CI machine.
+    EXPECT_LT(clock.elapsed(), 3000) << "Refresh waited for the index on the GUI thread";
     EXPECT_TRUE(browser->isReading());
     EXPECT_TRUE(browser->statusLine()->text().startsWith(QStringLiteral("Reading the study store")))
         << browser->statusLine()->text().toStdString();
