@@ -625,8 +625,8 @@
 <context>
     <name>vv::gui::LocalStudiesBrowser</name>
     <message>
-        <source>Series %L1</source>
-        <translation>Serie %L1</translation>
+        <source>Series %1</source>
+        <translation>Serie %1</translation>
     </message>
     <message>
         <source>1 image</source>

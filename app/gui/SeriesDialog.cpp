@@ -18,6 +18,7 @@
 #include <algorithm>
 
 #include "gui/SeriesName.h"
+#include "gui/pacs/PacsWidgets.h"
 
 namespace vv::gui {
 
@@ -66,11 +67,8 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
         patientItem->setFlags(Qt::ItemIsEnabled);
         for (const dicom::DicomStudy& study : patient.studies) {
             auto* studyItem = new QTreeWidgetItem(patientItem);
-            QString date = fromStd(study.date);
-            if (date.size() == 8) {
-                date = date.left(4) + QLatin1Char('-') + date.mid(4, 2) + QLatin1Char('-') +
-                       date.mid(6, 2);
-            }
+            // In the UI locale, as in the study browsers and Open Recent.
+            const QString date = studyDateText(study.date);
             studyItem->setText(Name, date.isEmpty() ? tr("Study") : tr("Study %1").arg(date));
             studyItem->setText(Description, fromStd(study.description));
             studyItem->setFlags(Qt::ItemIsEnabled);

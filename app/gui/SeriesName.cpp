@@ -2,7 +2,6 @@
 #include "gui/SeriesName.h"
 
 #include <QCoreApplication>
-#include <QLocale>
 
 #include "gui/pacs/PacsWidgets.h"
 #include "vv/dicom/Dicom.h"
@@ -30,7 +29,8 @@ QString seriesName(const SeriesIdentity& series) {
     // first translated.
     const QString modality = series.modality.simplified();
     if (series.number) {
-        const QString number = QLocale().toString(*series.number);
+        // An identifier, not a quantity: no group separators ("Series 10001").
+        const QString number = QString::number(*series.number);
         return modality.isEmpty()
                    ? QCoreApplication::translate("vv::gui::SeriesDialog", "Series %1").arg(number)
                    : QCoreApplication::translate("vv::gui::SeriesDialog", "%1 series %2")

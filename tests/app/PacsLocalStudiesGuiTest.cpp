@@ -14,6 +14,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QLabel>
+#include <QLocale>
 #include <QMenu>
 #include <QPointer>
 #include <QPushButton>
@@ -514,6 +515,40 @@ TEST(PacsSeriesNameTest, ASeriesIsNamedByWhatItSaysNeverByItsUid) {
     EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("DICOM series"));
     s.seriesNumber = 7;
     EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s), QStringLiteral("Series 7"));
+    // A series number is an identifier: never grouped ("10.001" in German).
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    s.modality = "CT";
+    s.seriesNumber = 10001;
+    EXPECT_EQ(vv::gui::SeriesDialog::seriesName(s).toStdString(), "CT series 10001");
+    QLocale::setDefault(before);
+}
+
+class SeriesChooserTest : public vv::test::GuiFixture {};
+
+TEST_F(SeriesChooserTest, ShowsStudyDatesAndSeriesNumbersAsTheBrowsersDo) {
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
+    vv::dicom::DicomScanResult scan;
+    vv::dicom::DicomSeries series;
+    series.seriesInstanceUid = "1.2.3.4";
+    series.modality = "CT";
+    series.seriesNumber = 10001;
+    series.imageCount = 3;
+    vv::dicom::DicomStudy study;
+    study.studyInstanceUid = "1.2.3";
+    study.date = "20250307";
+    study.series.push_back(series);
+    vv::dicom::DicomPatient patient;
+    patient.studies.push_back(study);
+    scan.patients.push_back(patient);
+    vv::gui::SeriesDialog dialog(scan);
+    QLocale::setDefault(before);
+    const QTreeWidgetItem* studyItem = dialog.tree()->topLevelItem(0)->child(0);
+    // 7 March 2025, in the locale's order with the full year, as the study
+    // browsers and Open Recent show it; not an ISO date in a German window.
+    EXPECT_EQ(studyItem->text(0).toStdString(), "Study 07.03.2025");
+    EXPECT_EQ(studyItem->child(0)->text(0).toStdString(), "Series 10001");
 }
 
 }  // namespace

@@ -85,7 +85,7 @@ QTreeWidgetItem* studyItem(const pacs::StoredStudy& study) {
         auto* child = new QTreeWidgetItem(item);
         const QString description =
             series.seriesDescription.empty()
-                ? LocalStudiesBrowser::tr("Series %L1").arg(series.seriesNumber)
+                ? LocalStudiesBrowser::tr("Series %1").arg(series.seriesNumber)
                 : text(series.seriesDescription);
         child->setText(kDescription, description);
         child->setText(kModalities, text(series.modality));
