@@ -341,7 +341,7 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
         seriesUid_.empty() ? std::nullopt : std::optional(seriesIdentity(source));
     seriesTitle_ = series ? seriesName(*series) : QString();
     QString title;
-    if (!seriesTitle_.isEmpty()) {
+    if (!seriesTitle_.isEmpty() && count <= 1) {  // with other files: "%n files"
         title = seriesTitle_;
     } else if (count == 1) {
         title = QFileInfo(opened.front()).fileName();

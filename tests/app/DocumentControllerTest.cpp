@@ -16,9 +16,12 @@
 #include <vector>
 
 #include "GuiFixture.h"
+#include "SyntheticCta.h"
 #include "common/ResourcePaths.h"
 #include "gui/DocumentController.h"
 #include "gui/RecentFiles.h"
+#include "gui/pacs/PacsWidgets.h"
+#include "vv/dicom/SeriesWriter.h"
 #include "vv/meshio/MeshWriter.h"
 
 namespace vv::test {
@@ -221,6 +224,29 @@ TEST_F(DocumentControllerTest, ARecentSeriesIsLabelledByWhatItSaysNeverByItsFold
     gui::recent::clear();
     EXPECT_TRUE(gui::recent::files().isEmpty());
     EXPECT_FALSE(QSettings().contains(QStringLiteral("recentSeries/size")));
+}
+
+TEST_F(DocumentControllerTest, ADicomFolderIsNamedByItsSeriesAndWithOtherFilesByTheirCount) {
+    // A folder named by its UID, as in a study store.
+    const fs::path folder = documentTestDir() / "1.2.826.0.1.3680043.9.7777.5";
+    fs::remove_all(folder);
+    const auto cta = test::makeSyntheticCta({48, 48, 32}, 3);
+    dicom::CtSeriesWriteOptions options;
+    options.seriesDescription = "Arterial  phase";
+    (void)dicom::writeCtSeries(folder, cta.volume, options);
+    show(folder);
+    EXPECT_EQ(document_.title().toStdString(), "Arterial phase");
+    EXPECT_EQ(document_.seriesTitle().toStdString(), "Arterial phase");
+    EXPECT_EQ(gui::recent::label(qpath(fs::absolute(folder))).toStdString(),
+              "Arterial phase · " + gui::studyDateText("20250101").toStdString());
+    // With a mesh beside it the window shows two sources: not one series' name.
+    const fs::path tube = writeTube("beside.vtp");
+    document_.openFiles({qpath(folder), qpath(tube)});
+    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }, 60000));
+    ASSERT_NE(document_.scene(), nullptr) << document_.lastError().toStdString();
+    EXPECT_EQ(document_.title().toStdString(), "2 files");
+    // Opened together, neither is a series in Open Recent.
+    EXPECT_FALSE(gui::recent::series(qpath(fs::absolute(folder))).has_value());
 }
 
 TEST_F(DocumentControllerTest, ALoadSignalsInOrderAndNamesItsFiles) {
