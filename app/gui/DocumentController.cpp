@@ -94,6 +94,17 @@ void DocumentController::openSeries(const QString& path,
     startTask(MeshLoadTask::loadFiles(std::move(paths), options, this), {path}, title);
 }
 
+void DocumentController::openRecent(const QString& file) {
+    const std::optional<SeriesIdentity> series = recent::series(file);
+    if (!series || series->uid.isEmpty()) {
+        openFiles({file});
+        return;
+    }
+    segmentation::SceneSourceOptions options;
+    options.seriesInstanceUid = series->uid.toStdString();
+    openSeries(file, options, seriesName(*series));
+}
+
 void DocumentController::openDemo() {
     if (const auto file = findDemoFile()) {
         std::vector<std::filesystem::path> paths{toPath(*file)};

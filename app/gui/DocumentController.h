@@ -74,6 +74,11 @@ class DocumentController : public QObject {
     /// series says of itself (seriesName(), in the UI language).
     void openSeries(const QString& path, const segmentation::SceneSourceOptions& options,
                     const QString& title = {});
+    /// Opens an entry of recentFiles() as it was opened: a series chosen in
+    /// a folder (of several) is that series again, with the modality's
+    /// defaults (openSeries()); anything else as openFiles(). A series no
+    /// longer there fails as openSeries() does, naming the folder.
+    void openRecent(const QString& file);
     /// The demo: findDemoFile() if there is one (not remembered in the recent
     /// files), else the demo tree generated on a worker.
     void openDemo();

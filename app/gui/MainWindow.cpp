@@ -673,8 +673,9 @@ void MainWindow::rebuildRecentMenu() {
         // folder (a UID); an "&" in a name is shown, not taken as a shortcut.
         QString label = recent::label(file);
         label.replace(QLatin1Char('&'), QStringLiteral("&&"));
-        QAction* action = recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++).arg(label),
-                                                 this, [this, file] { openFiles({file}); });
+        QAction* action =
+            recentMenu_->addAction(QStringLiteral("&%1 %2").arg(number++).arg(label), this,
+                                   [this, file] { document_->openRecent(file); });
         action->setToolTip(file);
         action->setStatusTip(file);
     }

@@ -13,7 +13,7 @@ const char* const kKey = "recentFiles";
 const char* const kSeriesKey = "recentSeries";
 
 /// "recentSeries": an array of {file (absolute), description, modality,
-/// number, studyDate}, readable in the settings file. An entry that is not
+/// number, studyDate, uid}, readable in the settings file. An entry that is not
 /// one (edited by hand, another version) is left out.
 QMap<QString, SeriesIdentity> storedSeries() {
     QMap<QString, SeriesIdentity> stored;
@@ -26,6 +26,7 @@ QMap<QString, SeriesIdentity> storedSeries() {
         series.description = settings.value(QStringLiteral("description")).toString();
         series.modality = settings.value(QStringLiteral("modality")).toString();
         series.studyDate = settings.value(QStringLiteral("studyDate")).toString();
+        series.uid = settings.value(QStringLiteral("uid")).toString();
         bool ok = true;
         if (settings.contains(QStringLiteral("number"))) {
             series.number = settings.value(QStringLiteral("number")).toInt(&ok);
@@ -55,6 +56,7 @@ void storeSeries(const QMap<QString, SeriesIdentity>& stored) {
             settings.setValue(QStringLiteral("number"), *it->number);
         }
         settings.setValue(QStringLiteral("studyDate"), it->studyDate);
+        settings.setValue(QStringLiteral("uid"), it->uid);
     }
     settings.endArray();
 }

@@ -8,8 +8,9 @@
 
 /// File > Open Recent: the recently opened files, kept in QSettings under
 /// "recentFiles" (the application's default QSettings), and for a DICOM
-/// series opened on its own what it says of itself, under "recentSeries"
-/// (never the patient's name or ID: they are not written to the settings).
+/// series opened on its own what it says of itself and its UID, under
+/// "recentSeries" (never the patient's name or ID: they are not written to
+/// the settings).
 namespace vv::gui::recent {
 
 /// The longest list kept.

@@ -11,13 +11,14 @@ namespace vv::gui {
 
 SeriesIdentity seriesIdentity(const dicom::DicomSeries& series) {
     return {QString::fromStdString(series.description), QString::fromStdString(series.modality),
-            series.seriesNumber, QString()};
+            series.seriesNumber, QString(), QString::fromStdString(series.seriesInstanceUid)};
 }
 
 SeriesIdentity seriesIdentity(const segmentation::SceneSourceReport& report) {
     return {QString::fromStdString(report.seriesDescription),
             QString::fromStdString(report.modality), report.seriesNumber,
-            QString::fromStdString(report.studyDate)};
+            QString::fromStdString(report.studyDate),
+            QString::fromStdString(report.seriesInstanceUid)};
 }
 
 QString seriesName(const SeriesIdentity& series) {

@@ -22,6 +22,7 @@ struct SeriesIdentity {
     QString modality;           ///< "CT", "MR", ...
     std::optional<int> number;  ///< Series Number
     QString studyDate;          ///< its study's Study Date, YYYYMMDD as in the file
+    QString uid;  ///< Series Instance UID: to find the series again, never shown
 
     bool operator==(const SeriesIdentity&) const = default;
 };

@@ -128,6 +128,22 @@ class DocumentControllerTest : public ::testing::Test {
         ASSERT_NE(document_.scene(), nullptr) << document_.lastError().toStdString();
     }
 
+    /// A small synthetic CT series described `description` written into
+    /// `folder`; returns its Series Instance UID.
+    static std::string writeCta(const fs::path& folder, const std::string& description) {
+        static const auto cta = test::makeSyntheticCta({40, 40, 24}, 3);
+        dicom::CtSeriesWriteOptions options;
+        options.seriesDescription = description;
+        return dicom::writeCtSeries(folder, cta.volume, options);
+    }
+
+    /// Waits until `document` has loaded; true when it shows a scene.
+    static bool loaded(const DocumentController& document) {
+        EXPECT_TRUE(waitUntil([&] { return !document.isLoading(); }, 60000));
+        EXPECT_TRUE(document.lastError().isEmpty()) << document.lastError().toStdString();
+        return document.scene() != nullptr;
+    }
+
     /// A session file showing `files` with power p = 4 and a layout.
     static fs::path writeSession(const std::string& name, const QStringList& files) {
         app::Session session;
@@ -230,10 +246,7 @@ TEST_F(DocumentControllerTest, ADicomFolderIsNamedByItsSeriesAndWithOtherFilesBy
     // A folder named by its UID, as in a study store.
     const fs::path folder = documentTestDir() / "1.2.826.0.1.3680043.9.7777.5";
     fs::remove_all(folder);
-    const auto cta = test::makeSyntheticCta({48, 48, 32}, 3);
-    dicom::CtSeriesWriteOptions options;
-    options.seriesDescription = "Arterial  phase";
-    (void)dicom::writeCtSeries(folder, cta.volume, options);
+    (void)writeCta(folder, "Arterial  phase");
     show(folder);
     EXPECT_EQ(document_.title().toStdString(), "Arterial phase");
     EXPECT_EQ(document_.seriesTitle().toStdString(), "Arterial phase");
@@ -242,11 +255,45 @@ TEST_F(DocumentControllerTest, ADicomFolderIsNamedByItsSeriesAndWithOtherFilesBy
     // With a mesh beside it the window shows two sources: not one series' name.
     const fs::path tube = writeTube("beside.vtp");
     document_.openFiles({qpath(folder), qpath(tube)});
-    ASSERT_TRUE(waitUntil([&] { return !document_.isLoading(); }, 60000));
-    ASSERT_NE(document_.scene(), nullptr) << document_.lastError().toStdString();
+    ASSERT_TRUE(loaded(document_));
     EXPECT_EQ(document_.title().toStdString(), "2 files");
     // Opened together, neither is a series in Open Recent.
     EXPECT_FALSE(gui::recent::series(qpath(fs::absolute(folder))).has_value());
+}
+
+TEST_F(DocumentControllerTest, ASeriesChosenInAFolderOfSeveralReopensFromTheRecentFiles) {
+    // A patient CD's folder: two series, the second chosen in the chooser.
+    const fs::path folder = documentTestDir() / "cd";
+    fs::remove_all(folder);
+    (void)writeCta(folder / "s1", "Venous");
+    const std::string arterial = writeCta(folder / "s2", "Arterial");
+    segmentation::SceneSourceOptions chosen;
+    chosen.seriesInstanceUid = arterial;
+    document_.openSeries(qpath(folder), chosen, QStringLiteral("Arterial"));
+    ASSERT_TRUE(loaded(document_));
+    const QString entry = qpath(fs::absolute(folder));
+    ASSERT_EQ(DocumentController::recentFiles().value(0), entry);
+
+    // Opened as a plain folder it is ambiguous: that is an error.
+    DocumentController other;
+    other.openFiles({entry});
+    ASSERT_TRUE(waitUntil([&] { return !other.isLoading(); }, 60000));
+    EXPECT_FALSE(other.lastError().isEmpty());
+
+    // From the recent files: the same series again, without asking.
+    DocumentController again;
+    again.openRecent(entry);
+    ASSERT_TRUE(loaded(again));
+    EXPECT_EQ(again.seriesUid(), arterial);
+    EXPECT_EQ(again.title().toStdString(), "Arterial");
+
+    // The series gone from the folder: an error naming the folder, nothing shown.
+    fs::remove_all(folder / "s2");
+    DocumentController gone;
+    gone.openRecent(entry);
+    ASSERT_TRUE(waitUntil([&] { return !gone.isLoading(); }, 60000));
+    EXPECT_EQ(gone.scene(), nullptr);
+    EXPECT_TRUE(gone.lastError().contains(entry)) << gone.lastError().toStdString();
 }
 
 TEST_F(DocumentControllerTest, ALoadSignalsInOrderAndNamesItsFiles) {

@@ -346,20 +346,33 @@ TEST_F(PacsSeriesTitleGuiTest, ASeriesOpenedFromTheStoreIsTitledByItsDescription
     window_->grab().save(QString::fromStdString((testDir() / "series-title.png").string()));
 }
 
-/// The entries of File > Open Recent as shown (without the "&1 " prefix).
-QStringList recentMenuTexts(const vv::gui::MainWindow& window) {
-    QStringList texts;
+/// The entries of File > Open Recent ("&1 …", "&2 …"), in order.
+QList<QAction*> recentMenuActions(const vv::gui::MainWindow& window) {
+    QList<QAction*> entries;
     for (const QMenu* menu : window.findChildren<QMenu*>()) {
         if (menu->title() != vv::gui::MainWindow::tr("Open &Recent")) {
             continue;
         }
-        for (const QAction* action : menu->actions()) {
+        for (QAction* action : menu->actions()) {
             const QString text = action->text();
             if (!action->isSeparator() && text.startsWith(QLatin1Char('&')) && text.size() > 3 &&
                 text[1].isDigit()) {
-                texts << text.mid(3).replace(QStringLiteral("&&"), QStringLiteral("&"));
+                entries << action;
             }
         }
+    }
+    return entries;
+}
+
+QAction* recentMenuAction(const vv::gui::MainWindow& window, int index) {
+    return recentMenuActions(window).value(index, nullptr);
+}
+
+/// The entries of File > Open Recent as shown (without the "&1 " prefix).
+QStringList recentMenuTexts(const vv::gui::MainWindow& window) {
+    QStringList texts;
+    for (const QAction* action : recentMenuActions(window)) {
+        texts << action->text().mid(3).replace(QStringLiteral("&&"), QStringLiteral("&"));
     }
     return texts;
 }
@@ -379,6 +392,16 @@ TEST_F(PacsSeriesTitleGuiTest, OpenRecentNamesAStoreSeriesByItsDescriptionAndDat
     ASSERT_EQ(recentMenuTexts(*window_).value(0).toStdString(), entries.front().toStdString());
     EXPECT_EQ(vv::gui::MainWindow::recentFiles().value(0).section(QLatin1Char('/'), -1),
               QString::fromStdString(uid));
+    QAction* entry = recentMenuAction(*window_, 0);
+    ASSERT_NE(entry, nullptr);
+    bool shown = false;
+    QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, window_.get(),
+                     [&shown] { shown = true; });
+    entry->trigger();
+    ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }, 50000));
+    ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+    EXPECT_EQ(window_->windowTitle().toStdString(), "Run-off CTA 1.0 mm — VesselView");
+    EXPECT_EQ(window_->document()->seriesUid(), uid);
 }
 
 TEST_F(PacsSeriesTitleGuiTest, ASeriesWithoutDescriptionIsTitledByModalityAndNumber) {
