@@ -2284,6 +2284,14 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
     </message>
 </context>
 <context>
+    <name>vv::gui::StudyDate</name>
+    <message>
+        <source>yyyy-MM-dd</source>
+        <extracomment>Date format of study dates on screen (QDate::toString), as the report&apos;s: dd.MM.yyyy in German.</extracomment>
+        <translation>dd.MM.yyyy</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::TlsFilesBox</name>
     <message>
         <source>Trusted &amp;CA certificate:</source>

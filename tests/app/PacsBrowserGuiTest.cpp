@@ -203,7 +203,7 @@ TEST_F(PacsBrowserGuiTest, QueryShowsTheStudyAndItsSeries) {
     ASSERT_EQ(b->studyTable()->rowCount(), 1);
     // Study Date 20250101 in the US English short format.
     EXPECT_EQ(rowText(b->studyTable(), 0),
-              "VesselView Demo | VV-GUI-1 | 1/1/2025 | VesselView demo | CT |  | 1");
+              "VesselView Demo | VV-GUI-1 | 2025-01-01 | VesselView demo | CT |  | 1");
     EXPECT_EQ(b->status(), QStringLiteral("Studies found: 1."));
     ASSERT_TRUE(selectStudy(b));
     ASSERT_EQ(b->seriesTable()->rowCount(), 1);

@@ -116,14 +116,10 @@ QTreeWidgetItem* studyRow(const LocalStudiesBrowser& browser, const QString& des
 /// All texts of `item`'s columns, "|"-joined, for failure messages and checks.
 /// A study date as both browsers show it: the UI locale's short format,
 /// with the year in four digits (never "1/2/24").
+/// A date as the English UI (no translation loaded here) writes it, the same
+/// as the report: year, month, day.
 QString shownDate(const QDate& date) {
-    QString format = QLocale().dateFormat(QLocale::ShortFormat);
-    if (!format.contains(QStringLiteral("yyyy"))) {
-        format.replace(QStringLiteral("yy"), QStringLiteral("yyyy"));
-    }
-    const QString shown = QLocale().toString(date, format);
-    EXPECT_TRUE(shown.contains(QString::number(date.year()))) << shown.toStdString();
-    return shown;
+    return date.toString(QStringLiteral("yyyy-MM-dd"));
 }
 
 std::string rowText(const QTreeWidgetItem* item) {

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/pacs/PacsWidgets.h"
 
+#include <QCoreApplication>
 #include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -51,12 +52,12 @@ QString studyDateText(const std::string& dicomDate) {
     if (!date.isValid()) {
         return QString::fromStdString(dicomDate);
     }
-    const QLocale locale;
-    QString format = locale.dateFormat(QLocale::ShortFormat);
-    if (!format.contains(QStringLiteral("yyyy"))) {
-        format.replace(QStringLiteral("yy"), QStringLiteral("yyyy"));
-    }
-    return locale.toString(date, format);
+    // Day and month in an order no reader can take the other way round (not
+    // "3/4/2025"), and as the PDF report writes dates in the same language.
+    //: Date format of study dates on screen (QDate::toString), as the report's: dd.MM.yyyy in
+    //: German.
+    return QLocale().toString(date,
+                              QCoreApplication::translate("vv::gui::StudyDate", "yyyy-MM-dd"));
 }
 
 }  // namespace vv::gui

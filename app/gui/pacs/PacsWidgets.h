@@ -30,8 +30,9 @@ void showAsProblem(QLabel* label, bool problem);
 /// OK and Cancel, wired to `dialog`'s accept() and reject().
 [[nodiscard]] QDialogButtonBox* makeOkCancel(QDialog* dialog);
 
-/// A DICOM date (YYYYMMDD) as the UI locale writes dates (short format with
-/// a four-digit year); the text itself when it is not a valid date.
+/// A DICOM date (YYYYMMDD) as the UI language writes dates unambiguously,
+/// the same as the PDF report: 2025-03-07 in English, 07.03.2025 in German;
+/// the text itself when it is not a valid date.
 [[nodiscard]] QString studyDateText(const std::string& dicomDate);
 
 }  // namespace vv::gui
