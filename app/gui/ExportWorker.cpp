@@ -25,6 +25,29 @@ namespace {
 /// How long the status bar shows the outcome of an export (ms).
 constexpr int kStatusTimeoutMs = 15000;
 
+/// Relative difference of aspect ratios below which an export is framed as
+/// the view (rounding of its pixel size).
+constexpr double kSameAspect = 0.01;
+
+/// "Visible vessels" -> the settled view's range as a fixed one, when the
+/// export is framed as the view (currentViewOptions()).
+void pinVisibleDepthRange(const ViewerWidget& viewer, int width, int height,
+                          vss::DepthRange& range) {
+    const render::VssFrameStatus& shown = viewer.vssStatus();
+    if (range.mode != vss::RangeMode::Visible || !shown.shown || !shown.current || shown.pending ||
+        shown.preview || !std::isfinite(shown.dmin) || !std::isfinite(shown.dmax) ||
+        shown.dmin > shown.dmax) {
+        return;  // no settled view to match: the export's own visible range
+    }
+    const QSize view = viewPixelSize(viewer);
+    const double viewAspect = static_cast<double>(view.width()) / view.height();
+    const double aspect = static_cast<double>(width) / std::max(1, height);
+    if (std::abs(aspect / viewAspect - 1.0) > kSameAspect) {
+        return;  // framed otherwise: it shows vessels the view does not
+    }
+    range = {vss::RangeMode::Fixed, shown.dmin, shown.dmax};
+}
+
 }  // namespace
 
 render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int width, int height) {
@@ -43,6 +66,7 @@ render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int widt
     options.camera = viewer.camera();
     options.volume = viewer.volume();  // a ray-cast volume, when one is shown
     options.isoValue = viewer.isoValue();
+    pinVisibleDepthRange(viewer, width, height, options.vss.range);
     return options;
 }
 

@@ -25,6 +25,10 @@ class ViewerWidget;
 /// background, mesh style (array, colour map, range, bins), ray-cast volume, VSS (the exact
 /// solve, never the preview), vessel cue, ambient occlusion and FXAA, at
 /// width x height pixels. Legends are left to report::renderView().
+/// With the depth range "Visible vessels", an export framed as the view (the
+/// same aspect) takes the settled view's range as a fixed one, so that its
+/// depth colours and legend are the screen's: at another resolution a few
+/// vessel pixels more or less (a vessel seen end-on) would move it.
 [[nodiscard]] render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int width,
                                                           int height);
 

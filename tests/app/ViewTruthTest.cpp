@@ -8,6 +8,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <cmath>
+#include <glm/gtc/matrix_transform.hpp>
 #include <memory>
 
 #include "GuiFixture.h"
@@ -194,6 +195,59 @@ TEST_F(ViewTruthTest, ViewAndExportShowTheScaleBarAtTheFocalPlaneLength) {
     EXPECT_LT(longestWhiteRun(report::renderView(renderer, *viewer->scene(), options).image,
                               QRect(450, 0, 450, 100)),
               exportedBar->pixels / 2.0);
+}
+
+TEST_F(ViewTruthTest, AnExportFramedAsTheViewHasTheViewsDepthRange) {
+    // Two tubes, one turned away from the viewer: the deepest visible pixel
+    // lies on a silhouette, where another resolution samples another depth.
+    auto scene = std::make_shared<scene::Scene>();
+    scene->meshes.push_back(vv::test::tube(
+        {.radius = 2.0F, .start = glm::vec3(0.0F), .length = 30.0F, .segments = 32, .rings = 30}));
+    scene::Mesh away = vv::test::tube(
+        {.radius = 1.5F, .start = glm::vec3(0.0F), .length = 25.0F, .segments = 32, .rings = 30});
+    const glm::mat4 turn = glm::rotate(glm::mat4(1.0F), glm::radians(60.0F), glm::vec3(0, 1, 0)) *
+                           glm::rotate(glm::mat4(1.0F), glm::radians(35.0F), glm::vec3(0, 0, 1));
+    for (glm::vec3& v : away.positions) {
+        v = glm::vec3(turn * glm::vec4(v, 1.0F)) + glm::vec3(5.0F, 8.0F, 0.0F);
+    }
+    scene->meshes.push_back(std::move(away));
+    window_->setScene(scene, QStringLiteral("tubes"));
+    ASSERT_TRUE(waitForVss());
+    auto* viewer = window_->viewer();
+    const render::VssFrameStatus screen = viewer->vssStatus();
+    ASSERT_LT(screen.dmin, screen.dmax);
+    const QSize view = gui::viewPixelSize(*viewer);
+
+    // Twice the view's pixels, framed as the view: the screen's range, so the
+    // same depth colours and legend.
+    render::OffscreenRenderer renderer;
+    report::ViewExportOptions options;
+    options.render = gui::currentViewOptions(*viewer, 2 * view.width(), 2 * view.height());
+    EXPECT_EQ(options.render.vss.range.mode, vss::RangeMode::Fixed);
+    const report::RenderedView exported = report::renderView(renderer, *scene, options);
+    ASSERT_TRUE(exported.vss.shown);
+    EXPECT_EQ(exported.vss.dmin, screen.dmin);
+    EXPECT_EQ(exported.vss.dmax, screen.dmax);
+    ASSERT_TRUE(exported.legends.depth.has_value());
+    EXPECT_EQ(exported.legends.depth->dmin, screen.dmin);
+    EXPECT_EQ(exported.legends.depth->dmax, screen.dmax);
+
+    // Its own visible range at that size differs (what the pinning is for)...
+    options.render.vss.range = {};
+    const report::RenderedView own = report::renderView(renderer, *scene, options);
+    EXPECT_NE(own.vss.dmax, screen.dmax);
+    // ... and framed otherwise (another aspect) the export keeps its own.
+    EXPECT_EQ(gui::currentViewOptions(*viewer, 2 * view.width(), view.height()).vss.range.mode,
+              vss::RangeMode::Visible);
+    // A fixed range chosen by the user stays as chosen.
+    render::VssSettings fixed = viewer->vssSettings();
+    fixed.range = {vss::RangeMode::Fixed, 1.0, 99.0};
+    viewer->setVssSettings(fixed);
+    const render::OffscreenOptions chosen =
+        gui::currentViewOptions(*viewer, view.width(), view.height());
+    EXPECT_EQ(chosen.vss.range.mode, vss::RangeMode::Fixed);
+    EXPECT_EQ(chosen.vss.range.dmin, 1.0);
+    EXPECT_EQ(chosen.vss.range.dmax, 99.0);
 }
 
 }  // namespace
