@@ -54,8 +54,8 @@ class PdfReportTest : public ::testing::Test {
         s.fractionBelow = 0.0625;
         p.stats = {s, s};
         p.stats[1].object = "right ICA";
-        c.view.legends.parameter =
-            render::ParameterLegend{"wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0, {}, {}};
+        c.view.legends.parameter = render::ParameterLegend{
+            "wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0, {}, {}};
         c.parameter = p;
     }
 
@@ -114,6 +114,7 @@ TEST_F(PdfReportTest, A4ReportHoldsEverySection) {
                                  "6.3 %",
                                  "Area <",
                                  "0.4",
+                                 "over 0.25 \u2013 3.50",  // as the legend: one precision
                                  "Rendering settings",
                                  "Chromadepth",
                                  "Findings",

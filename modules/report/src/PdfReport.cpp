@@ -307,8 +307,9 @@ pdf::Fields settingsFields(const ReportSettings& s) {
 
 QString scaleText(const ReportParameter& parameter) {
     const QString map = engineName(colormaps::displayName(parameter.map));
-    const QString low = number(parameter.range.first);
-    const QString high = withUnit(number(parameter.range.second), parameter.unit);
+    const auto [lowText, highText] = rangeNumbers(parameter.range.first, parameter.range.second);
+    const QString& low = lowText;
+    const QString high = withUnit(highText, parameter.unit);
     const QString scale =
         parameter.bins >= 2
             ? ReportText::tr("Colour map %1 in %2 bins over %3 \u2013 %4.")

@@ -23,6 +23,19 @@ QString qs(const std::string& text) {
     return QString::fromStdString(text);
 }
 
+namespace {
+
+/// The fixed-point decimals number() gives a magnitude in [1e-3, 1e5).
+int decimalsFor(double magnitude) {
+    return std::clamp(2 - static_cast<int>(std::floor(std::log10(magnitude))), 0, 4);
+}
+
+bool fixedPoint(double magnitude) {
+    return magnitude >= 1e-3 && magnitude < 1e5;
+}
+
+}  // namespace
+
 QString number(double value) {
     if (!std::isfinite(value)) {
         return QStringLiteral("\u2014");
@@ -31,11 +44,19 @@ QString number(double value) {
     if (a == 0.0) {
         return locale().toString(0);
     }
-    if (a >= 1e5 || a < 1e-3) {
+    if (!fixedPoint(a)) {
         return locale().toString(value, 'g', 3);
     }
-    const int decimals = std::clamp(2 - static_cast<int>(std::floor(std::log10(a))), 0, 4);
-    return locale().toString(value, 'f', decimals);
+    return locale().toString(value, 'f', decimalsFor(a));
+}
+
+std::pair<QString, QString> rangeNumbers(double low, double high) {
+    const double larger = std::max(std::abs(low), std::abs(high));
+    if (!std::isfinite(low) || !std::isfinite(high) || !fixedPoint(larger)) {
+        return {number(low), number(high)};
+    }
+    const int decimals = decimalsFor(larger);
+    return {locale().toString(low, 'f', decimals), locale().toString(high, 'f', decimals)};
 }
 
 QString exact(double value) {

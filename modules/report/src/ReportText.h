@@ -9,6 +9,7 @@
 #include <QDateTime>
 #include <QString>
 #include <string>
+#include <utility>
 
 namespace vv::report {
 
@@ -24,6 +25,11 @@ class ReportText {
 /// Up to 3 significant digits in the default locale ("0,125" in German), no
 /// exponent for ordinary magnitudes, no group separators; "—" when not finite.
 [[nodiscard]] QString number(double value);
+/// Both ends of a range with the same decimals, those number() gives the
+/// larger magnitude ("0.45 – 1.31", as the legend, not "0.450 – 1.31");
+/// number() of each when one is not finite or the larger is outside
+/// number()'s fixed-point magnitudes.
+[[nodiscard]] std::pair<QString, QString> rangeNumbers(double low, double high);
 /// A value as given (a threshold, p): up to 6 significant digits, no trailing zeros.
 [[nodiscard]] QString exact(double value);
 /// A share 0..1 as "6.3 %" (one decimal, the locale's separator).
