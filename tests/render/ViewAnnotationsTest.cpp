@@ -7,7 +7,10 @@
 #include <QImage>
 #include <QPainter>
 #include <algorithm>
+#include <array>
+#include <cmath>
 #include <glm/glm.hpp>
+#include <glm/gtc/quaternion.hpp>
 
 #include "GlTestSupport.h"
 #include "vv/render/Camera.h"
@@ -160,6 +163,61 @@ TEST(ViewAnnotationsTest, MarkerShowsPatientLettersOnlyWithAPatientFrame) {
         camera, {.orientationMarker = true, .scaleBar = false, .frame = SceneFrame::Unknown});
     EXPECT_EQ(brightPixels(plain, leftEdge), 0);  // no patient letters without a patient frame
     EXPECT_GT(colouredPixels(plain, marker), 5);  // but the axes' triad
+}
+
+TEST(ViewAnnotationsTest, MarkerLettersNeverCoverOneAnotherFromAnyDirection) {
+    // Looking along (1, -1, 0), the x and y axes project onto one direction:
+    // their letters were drawn on the same spot. Every direction of a sphere
+    // of them, each with two rolls about the view axis.
+    const QRectF area(0.0, 0.0, 800.0, 600.0);
+    const double letter = 13.0;  // the annotations' font size for a view 600 px tall
+    double closest = 1e9;
+    glm::vec3 worst(0.0F);
+    constexpr int kDirections = 400;
+    for (int i = 0; i < kDirections; ++i) {
+        // A Fibonacci sphere, and the diagonals that hit the worst case exactly.
+        const double t = (i + 0.5) / kDirections;
+        const double polar = std::acos(1.0 - 2.0 * t);
+        const double azimuth = i * 2.399963229728653;
+        glm::vec3 forward(std::sin(polar) * std::cos(azimuth), std::sin(polar) * std::sin(azimuth),
+                          std::cos(polar));
+        if (i < 12) {
+            const std::array<glm::vec3, 12> diagonals{
+                glm::vec3(1, -1, 0), glm::vec3(1, 1, 0), glm::vec3(0, 1, -1), glm::vec3(0, 1, 1),
+                glm::vec3(1, 0, -1), glm::vec3(1, 0, 1), glm::vec3(1, 1, 1),  glm::vec3(1, -1, 1),
+                glm::vec3(0, 0, 1),  glm::vec3(1, 0, 0), glm::vec3(0, 1, 0),  glm::vec3(-1, 1, 1)};
+            forward = diagonals[static_cast<std::size_t>(i)];
+        }
+        forward = glm::normalize(forward);
+        for (const float roll : {0.0F, 0.7F}) {
+            Camera camera;
+            camera.setViewport(800, 600);
+            // View space: x right, y up, looking along -z; rolled about the view axis.
+            const glm::vec3 helper =
+                std::abs(forward.z) < 0.9F ? glm::vec3(0, 0, 1) : glm::vec3(0, 1, 0);
+            const glm::vec3 right0 = glm::normalize(glm::cross(forward, helper));
+            const glm::vec3 up0 = glm::cross(right0, forward);
+            const glm::vec3 right = std::cos(roll) * right0 + std::sin(roll) * up0;
+            const glm::vec3 up = glm::cross(right, forward);
+            camera.setRotation(glm::quat_cast(glm::mat3(right, up, -forward)));
+            ASSERT_NEAR(glm::dot(camera.forward(), forward), 1.0F, 1e-3F)
+                << "the test's rotation convention";
+            const std::array<QPointF, 3> letters = markerLetterPositions(camera, area);
+            for (std::size_t a = 0; a < 3; ++a) {
+                for (std::size_t b = a + 1; b < 3; ++b) {
+                    const double d = std::hypot(letters[a].x() - letters[b].x(),
+                                                letters[a].y() - letters[b].y());
+                    if (d < closest) {
+                        closest = d;
+                        worst = forward;
+                    }
+                }
+            }
+        }
+    }
+    EXPECT_GE(closest, kMarkerLetterGap * letter - 0.25)
+        << "letters " << closest << " px apart looking along (" << worst.x << ", " << worst.y
+        << ", " << worst.z << ")";
 }
 
 }  // namespace

@@ -61,14 +61,37 @@ int fontPixels(const QRectF& area) {
     return static_cast<int>(std::clamp(std::lround(area.height() / 48.0), 11L, 40L));
 }
 
+/// The marker's disc: its centre, the axes' length and the letters' size.
+struct MarkerGeometry {
+    double font = 0.0;
+    double radius = 0.0;
+    double outer = 0.0;  ///< the disc behind the axes
+    QPointF centre;
+};
+
+MarkerGeometry markerGeometry(const QRectF& area) {
+    MarkerGeometry g;
+    g.font = fontPixels(area);
+    g.radius = g.font * 2.6;
+    g.outer = g.radius + g.font * 1.1;
+    g.centre = QPointF(area.left() + g.font * 0.8 + g.outer, area.top() + g.font * 0.8 + g.outer);
+    return g;
+}
+
+/// The tip of world axis `axis` in the marker seen with `camera`.
+QPointF axisTip(const MarkerGeometry& g, const Camera& camera, int axis) {
+    glm::vec3 e(0.0F);
+    e[axis] = 1.0F;
+    // On a 1/8-pixel grid: cameras equal up to float noise paint the same pixels.
+    return snapped(g.centre + QPointF(glm::dot(e, camera.right()) * g.radius,
+                                      -glm::dot(e, camera.up()) * g.radius));
+}
+
 void paintMarker(QPainter& painter, const QRectF& area, const Camera& camera, SceneFrame frame) {
-    const double font = fontPixels(area);
-    const double radius = font * 2.6;
-    const double outer = radius + font * 1.1;  // the disc behind the axes
-    const QPointF centre(area.left() + font * 0.8 + outer, area.top() + font * 0.8 + outer);
+    const MarkerGeometry g = markerGeometry(area);
     painter.setPen(Qt::NoPen);
     painter.setBrush(kBox);
-    painter.drawEllipse(centre, outer, outer);
+    painter.drawEllipse(g.centre, g.outer, g.outer);
     // The axes farthest from the viewer first, so that nearer ones cover them.
     std::array<int, 3> order{0, 1, 2};
     const auto towards = [&](int axis) {
@@ -79,21 +102,15 @@ void paintMarker(QPainter& painter, const QRectF& area, const Camera& camera, Sc
     std::sort(order.begin(), order.end(), [&](int a, int b) { return towards(a) > towards(b); });
     static const std::array<QColor, 3> colours{QColor(240, 90, 80), QColor(110, 210, 110),
                                                QColor(110, 160, 255)};
+    const std::array<QPointF, 3> letters = markerLetterPositions(camera, area);
     for (const int axis : order) {
-        glm::vec3 e(0.0F);
-        e[axis] = 1.0F;
-        // On a 1/8-pixel grid: cameras equal up to float noise paint the same pixels.
-        const QPointF tip = snapped(centre + QPointF(glm::dot(e, camera.right()) * radius,
-                                                     -glm::dot(e, camera.up()) * radius));
-        painter.setPen(QPen(colours[static_cast<std::size_t>(axis)], std::max(2.0, font / 6.0),
+        painter.setPen(QPen(colours[static_cast<std::size_t>(axis)], std::max(2.0, g.font / 6.0),
                             Qt::SolidLine, Qt::RoundCap));
-        painter.drawLine(centre, tip);
-        const QPointF away = tip - centre;
-        const double length = std::hypot(away.x(), away.y());
-        // An axis along the view direction has no length: its letter beside the centre.
-        const QPointF label = snapped(length > font * 0.8 ? tip + away / length * (font * 0.7)
-                                                          : centre + QPointF(font, font) * 0.75);
-        haloText(painter, label, axisLetter(axis, frame), colours[static_cast<std::size_t>(axis)]);
+        painter.drawLine(g.centre, axisTip(g, camera, axis));
+    }
+    for (const int axis : order) {
+        haloText(painter, letters[static_cast<std::size_t>(axis)], axisLetter(axis, frame),
+                 colours[static_cast<std::size_t>(axis)]);
     }
     if (frame != SceneFrame::PatientLps) {
         return;
@@ -101,7 +118,7 @@ void paintMarker(QPainter& painter, const QRectF& area, const Camera& camera, Sc
     // The patient directions at the middle of each edge of the view.
     const EdgeLabels edges = edgeLabels(camera, frame);
     const QFontMetricsF fm(painter.font());
-    const double inset = font * 0.9;
+    const double inset = g.font * 0.9;
     haloText(
         painter,
         QPointF(area.left() + inset + fm.horizontalAdvance(edges.left) / 2.0, area.center().y()),
@@ -221,6 +238,51 @@ void paintViewAnnotations(QPainter& painter, const QRectF& area, const Camera& c
         paintScaleBar(painter, area, camera);
     }
     painter.restore();
+}
+
+std::array<QPointF, 3> markerLetterPositions(const Camera& camera, const QRectF& area) {
+    const MarkerGeometry g = markerGeometry(area);
+    std::array<QPointF, 3> letters;
+    for (int axis = 0; axis < 3; ++axis) {
+        const QPointF tip = axisTip(g, camera, axis);
+        const QPointF away = tip - g.centre;
+        const double length = std::hypot(away.x(), away.y());
+        // An axis along the view direction has no length: its letter beside the centre.
+        letters[static_cast<std::size_t>(axis)] = length > g.font * 0.8
+                                                      ? tip + away / length * (g.font * 0.7)
+                                                      : g.centre + QPointF(g.font, g.font) * 0.75;
+    }
+    // Two axes can project onto one direction (looking along a diagonal of
+    // their plane), or both nearly onto the centre: their letters are pushed
+    // apart until none covers another.
+    const double gap = g.font * kMarkerLetterGap;
+    for (int pass = 0; pass < 4; ++pass) {
+        for (std::size_t a = 0; a < 3; ++a) {
+            for (std::size_t b = a + 1; b < 3; ++b) {
+                QPointF apart = letters[b] - letters[a];
+                double distance = std::hypot(apart.x(), apart.y());
+                if (distance >= gap) {
+                    continue;
+                }
+                if (distance < 1e-6) {
+                    // Coincident: apart across the first one's axis.
+                    const QPointF along = letters[a] - g.centre;
+                    const double l = std::hypot(along.x(), along.y());
+                    apart = l > 1e-6 ? QPointF(-along.y(), along.x()) / l : QPointF(1.0, 0.0);
+                    distance = 0.0;
+                } else {
+                    apart /= distance;
+                }
+                const QPointF push = apart * ((gap - distance) / 2.0);
+                letters[a] -= push;
+                letters[b] += push;
+            }
+        }
+    }
+    for (QPointF& letter : letters) {
+        letter = snapped(letter);
+    }
+    return letters;
 }
 
 }  // namespace vv::render

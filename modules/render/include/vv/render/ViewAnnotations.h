@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <QPointF>
 #include <QRectF>
 #include <QSizeF>
 #include <QString>
+#include <array>
 #include <glm/glm.hpp>
 #include <optional>
 
@@ -54,6 +56,18 @@ struct EdgeLabels {
 /// camera. Pixels per scene unit (mm) there in a view `heightPixels` tall
 /// (the camera's vertical field of view spans that height).
 [[nodiscard]] double focalPlanePixelsPerMillimetre(const Camera& camera, double heightPixels);
+
+/// The smallest distance between two of the marker's axis letters, in
+/// letter heights (the annotations' font size).
+inline constexpr double kMarkerLetterGap = 1.25;
+
+/// Where the orientation marker of a view of `area` (logical pixels) seen
+/// with `camera` centres its letters of the x, y and z axes: a little past
+/// each axis' tip, beside the centre for an axis along the view direction,
+/// and pushed apart to at least kMarkerLetterGap letter heights from one
+/// another (two axes can project onto one direction).
+[[nodiscard]] std::array<QPointF, 3> markerLetterPositions(const Camera& camera,
+                                                           const QRectF& area);
 
 /// A scale bar: a round length (1, 2 or 5 x 10^k mm) and its length on screen.
 struct ScaleBar {
