@@ -11,6 +11,7 @@
 // modules report (English keys, no Qt) must all have a German translation.
 #include <gtest/gtest.h>
 
+#include <QAbstractButton>
 #include <QCheckBox>
 #include <QDir>
 #include <QFile>
@@ -365,6 +366,21 @@ class GermanUiTest : public GuiFixture {
         dialog->widthBox()->setValue(640);
         dialog->heightBox()->setValue(400);
         runExport(*dialog);
+
+        // Once more to the same file: the question before it is replaced.
+        gui::ExportImageDialog again(*window_->viewer(), window_.get());
+        again.fileEdit()->setText(dialog->fileEdit()->text());
+        again.show();
+        again.accept();
+        QMessageBox* box = nullptr;
+        ASSERT_TRUE(waitUntil([&] {
+            box = again.findChild<QMessageBox*>(QStringLiteral("replaceFilesBox"));
+            return box != nullptr && box->isVisible();
+        })) << "no question before replacing german-export.png";
+        EXPECT_TRUE(box->text().startsWith(QStringLiteral("german-export.png ")))
+            << box->text().toStdString();
+        texts_.collect(box);
+        box->button(QMessageBox::Cancel)->click();
     }
 
     /// Starts `dialog`'s export and collects what shows until it ends.
