@@ -360,8 +360,9 @@ class GermanUiTest : public GuiFixture {
         auto* dialog = window_->findChild<gui::ExportImageDialog*>();
         ASSERT_NE(dialog, nullptr);
         texts_.collect(dialog);
-        dialog->fileEdit()->setText(
-            QString::fromStdString((panelTestDir() / "german-export.png").string()));
+        const QString file =
+            QString::fromStdString((panelTestDir() / "german-export.png").string());
+        dialog->fileEdit()->setText(file);
         dialog->keepAspectBox()->setChecked(false);
         dialog->widthBox()->setValue(640);
         dialog->heightBox()->setValue(400);
@@ -369,7 +370,7 @@ class GermanUiTest : public GuiFixture {
 
         // Once more to the same file: the question before it is replaced.
         gui::ExportImageDialog again(*window_->viewer(), window_.get());
-        again.fileEdit()->setText(dialog->fileEdit()->text());
+        again.fileEdit()->setText(file);  // the dialog above is gone
         again.show();
         again.accept();
         QMessageBox* box = nullptr;
