@@ -376,6 +376,25 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::ExportDialog</name>
+    <message>
+        <source>%1 already exists in %2. Replace it?</source>
+        <translation>%1 ist in %2 bereits vorhanden. Ersetzen?</translation>
+    </message>
+    <message>
+        <source>These files already exist:
+%1
+Replace them?</source>
+        <translation>Diese Dateien sind bereits vorhanden:
+%1
+Ersetzen?</translation>
+    </message>
+    <message>
+        <source>&amp;Replace</source>
+        <translation>&amp;Ersetzen</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ExportImageDialog</name>
     <message>
         <source>Export Image</source>

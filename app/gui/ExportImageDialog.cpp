@@ -52,17 +52,30 @@ void rememberExportFolder(const QString& file) {
     QSettings().setValue(QLatin1String(kFolderKey), QFileInfo(file).absolutePath());
 }
 
+QString unusedFileName(const QString& folder, const QString& name) {
+    const QDir dir(folder);
+    const QFileInfo info(name);
+    QString path = dir.filePath(name);
+    for (int n = 2; QFileInfo::exists(path); ++n) {
+        path = dir.filePath(
+            QStringLiteral("%1-%2.%3").arg(info.completeBaseName()).arg(n).arg(info.suffix()));
+    }
+    return path;
+}
+
 ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent)
     : ExportDialog(parent), viewer_(viewer) {
     setObjectName(QStringLiteral("exportImageDialog"));
     setWindowTitle(tr("Export Image"));
     auto* form = new QFormLayout(this);
 
-    file_ = new QLineEdit(QDir(lastExportFolder()).filePath(QStringLiteral("vessels.png")), this);
+    file_ = new QLineEdit(unusedFileName(lastExportFolder(), QStringLiteral("vessels.png")), this);
     auto* browse = new QPushButton(tr("Browse…"), this);
     connect(browse, &QPushButton::clicked, this, [this] {
+        // Export asks before it replaces a file.
         const QString chosen = QFileDialog::getSaveFileName(this, tr("Export image"), file_->text(),
-                                                            tr("PNG images (*.png)"));
+                                                            tr("PNG images (*.png)"), nullptr,
+                                                            QFileDialog::DontConfirmOverwrite);
         if (!chosen.isEmpty()) {
             file_->setText(chosen);
         }
@@ -208,11 +221,20 @@ QString ExportImageDialog::problem() const {
     return {};
 }
 
-ExportWorker* ExportImageDialog::startExport() {
+QString ExportImageDialog::targetFile() const {
     QString file = file_->text().trimmed();
     if (QFileInfo(file).suffix().isEmpty()) {
         file += QStringLiteral(".png");
     }
+    return file;
+}
+
+QStringList ExportImageDialog::outputFiles() const {
+    return {QFileInfo(targetFile()).absoluteFilePath()};
+}
+
+ExportWorker* ExportImageDialog::startExport() {
+    const QString file = targetFile();
     rememberExportFolder(file);
     const QSize size = imageSize();
     report::ViewExportOptions options;

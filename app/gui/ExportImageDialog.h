@@ -3,6 +3,7 @@
 
 #include <QSize>
 #include <QString>
+#include <QStringList>
 
 #include "gui/ExportWorker.h"
 
@@ -22,11 +23,12 @@ class ViewerWidget;
 /// refused with a message; a preset is always exactly its size, and choosing
 /// one whose shape differs from the view's turns "keep the view's aspect
 /// ratio" off), optionally keeping the view's aspect ratio, with
-/// or without legends, on the background or transparent. accept() checks the
-/// fields (a message box says what is wrong; the dialog stays open), remembers
-/// the folder, and renders with report::renderView() on an ExportWorker
-/// (progress dialog with Cancel; written atomically; the outcome in the main
-/// window's status bar or a message box naming the file and the problem).
+/// or without legends, on the background or transparent. It proposes
+/// vessels.png in the last export folder (vessels-2.png, … when taken).
+/// accept() checks the fields (a message box says what is wrong; the dialog
+/// stays open), asks before it replaces a file, remembers the folder, and renders with
+/// report::renderView() on an ExportWorker (progress dialog with Cancel; written atomically; the
+/// outcome in the main window's status bar or a message box naming the file and the problem).
 class ExportImageDialog : public ExportDialog {
     Q_OBJECT
 
@@ -48,6 +50,8 @@ class ExportImageDialog : public ExportDialog {
     [[nodiscard]] QSize imageSize() const;
     /// What is wrong with the fields (no file, size beyond 8K); empty when fine.
     [[nodiscard]] QString problem() const override;
+    /// The PNG file written: the field's path, ".png" added when it has no suffix.
+    [[nodiscard]] QStringList outputFiles() const override;
 
   protected:
     ExportWorker* startExport() override;
@@ -60,6 +64,8 @@ class ExportImageDialog : public ExportDialog {
     void heightEdited();
     [[nodiscard]] QSize viewSize() const;
     [[nodiscard]] double viewAspect() const;
+    /// The field's path, ".png" added when it has no suffix.
+    [[nodiscard]] QString targetFile() const;
 
     const ViewerWidget& viewer_;
     QLineEdit* file_ = nullptr;
@@ -76,5 +82,9 @@ class ExportImageDialog : public ExportDialog {
 [[nodiscard]] QString lastExportFolder();
 /// Remembers the folder of `file` for the next export dialog.
 void rememberExportFolder(const QString& file);
+/// The path of `name` in `folder`, or when a file of that name is there, of
+/// the first free "<base>-2.<suffix>", "<base>-3.<suffix>", …: a default
+/// that replaces nothing.
+[[nodiscard]] QString unusedFileName(const QString& folder, const QString& name);
 
 }  // namespace vv::gui

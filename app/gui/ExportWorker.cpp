@@ -1,10 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/ExportWorker.h"
 
+#include <QAbstractButton>
+#include <QDir>
+#include <QFileInfo>
 #include <QMainWindow>
 #include <QMessageBox>
 #include <QOffscreenSurface>
 #include <QProgressDialog>
+#include <QPushButton>
 #include <QStatusBar>
 #include <QTimer>
 #include <algorithm>
@@ -95,12 +99,64 @@ ExportWorker* ExportWorker::launch(QString description, Job job, QWidget* dialog
     return worker;
 }
 
-void ExportDialog::accept() {
+bool ExportDialog::showProblem() {
     const QString wrong = problem();
     if (!wrong.isEmpty()) {
         showExportProblem(this, windowTitle(), wrong);
+    }
+    return !wrong.isEmpty();
+}
+
+void ExportDialog::accept() {
+    if (showProblem()) {
         return;
     }
+    QStringList existing;
+    for (const QString& file : outputFiles()) {
+        if (QFileInfo::exists(file)) {
+            existing << file;
+        }
+    }
+    if (!existing.isEmpty()) {
+        askToReplace(existing);
+        return;
+    }
+    startAndClose();
+}
+
+void ExportDialog::askToReplace(const QStringList& existing) {
+    QString question;
+    if (existing.size() == 1) {
+        const QFileInfo file(existing.front());
+        question = tr("%1 already exists in %2. Replace it?")
+                       .arg(file.fileName(), QDir::toNativeSeparators(file.absolutePath()));
+    } else {
+        QStringList lines;
+        for (const QString& file : existing) {
+            lines << QDir::toNativeSeparators(file);
+        }
+        question =
+            tr("These files already exist:\n%1\nReplace them?").arg(lines.join(QLatin1Char('\n')));
+    }
+    // Window-modal but not blocking, as showExportProblem(): the event loop
+    // (and tests) keep running.
+    auto* box =
+        new QMessageBox(QMessageBox::Warning, windowTitle(), question, QMessageBox::Cancel, this);
+    box->setObjectName(QStringLiteral("replaceFilesBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    QPushButton* replace = box->addButton(tr("&Replace"), QMessageBox::DestructiveRole);
+    box->setDefaultButton(QMessageBox::Cancel);
+    box->setEscapeButton(QMessageBox::Cancel);
+    connect(box, &QMessageBox::buttonClicked, this, [this, replace](QAbstractButton* clicked) {
+        // The data shown may have changed while the box asked.
+        if (clicked == replace && !showProblem()) {
+            startAndClose();
+        }
+    });
+    box->open();
+}
+
+void ExportDialog::startAndClose() {
     emit exportStarted(startExport());
     QDialog::accept();
 }

@@ -5,6 +5,7 @@
 #include <QObject>
 #include <QSize>
 #include <QString>
+#include <QStringList>
 #include <functional>
 #include <memory>
 #include <stop_token>
@@ -115,9 +116,14 @@ class ExportDialog : public QDialog {
 
     /// What is wrong with the fields; empty when they are fine.
     [[nodiscard]] virtual QString problem() const = 0;
+    /// The files the export writes (absolute paths), as the fields give them.
+    [[nodiscard]] virtual QStringList outputFiles() const = 0;
 
     /// With a problem(): shows it in a message box (showExportProblem) and
-    /// stays open. Else starts the export (exportStarted()) and closes.
+    /// stays open. When some outputFiles() exist: asks in a window-modal,
+    /// non-blocking box (object name "replaceFilesBox") naming each of them,
+    /// Replace / Cancel (the default); Cancel writes nothing and stays open.
+    /// Else (or on Replace) starts the export (exportStarted()) and closes.
     void accept() override;
 
   signals:
@@ -128,6 +134,14 @@ class ExportDialog : public QDialog {
     /// Remembers the choices (QSettings) and returns the started worker
     /// (ExportWorker::launch). Called only when problem() is empty.
     virtual ExportWorker* startExport() = 0;
+
+  private:
+    /// Shows problem() in a message box, if there is one; true then.
+    bool showProblem();
+    /// Asks whether to replace `existing`; Replace starts the export.
+    void askToReplace(const QStringList& existing);
+    /// Starts the export and closes (problem() is empty).
+    void startAndClose();
 };
 
 }  // namespace vv::gui

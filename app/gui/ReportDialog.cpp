@@ -49,7 +49,9 @@ QHBoxLayout* withBrowse(QLineEdit* edit, const QString& title, const QString& fi
                         QWidget* parent) {
     auto* browse = new QPushButton(ReportDialog::tr("Browse…"), parent);
     QObject::connect(browse, &QPushButton::clicked, parent, [edit, title, filter, parent] {
-        const QString chosen = QFileDialog::getSaveFileName(parent, title, edit->text(), filter);
+        // Export asks before it replaces a file.
+        const QString chosen = QFileDialog::getSaveFileName(
+            parent, title, edit->text(), filter, nullptr, QFileDialog::DontConfirmOverwrite);
         if (!chosen.isEmpty()) {
             edit->setText(chosen);
         }
@@ -90,7 +92,7 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
     const QSettings settings;
     form_ = new QFormLayout(this);
 
-    pdf_ = new QLineEdit(QDir(lastExportFolder()).filePath(QStringLiteral("report.pdf")), this);
+    pdf_ = new QLineEdit(unusedFileName(lastExportFolder(), QStringLiteral("report.pdf")), this);
     addBuddyRow(form_, tr("&Report (PDF):"), pdf_,
                 withBrowse(pdf_, tr("Export report"), tr("PDF documents (*.pdf)"), this));
 
@@ -311,10 +313,7 @@ report::ReportJobOptions ReportDialog::jobOptions() const {
     return job;
 }
 
-QString ReportDialog::problem() const {
-    if (!viewer_.scene()) {
-        return tr("There is no data on screen to report on.");
-    }
+std::vector<std::pair<std::filesystem::path, QString>> ReportDialog::outputs() const {
     const report::ReportJobOptions job = jobOptions();
     std::vector<std::pair<std::filesystem::path, QString>> outputs{
         {job.outputs.pdf, tr("PDF report")}};
@@ -327,6 +326,21 @@ QString ReportDialog::problem() const {
             outputs.emplace_back(*path, box->text().remove(QLatin1Char('&')));
         }
     }
+    return outputs;
+}
+
+QStringList ReportDialog::outputFiles() const {
+    QStringList files;
+    for (const auto& output : outputs()) {
+        files << QFileInfo(QFile::decodeName(output.first.c_str())).absoluteFilePath();
+    }
+    return files;
+}
+
+QString ReportDialog::problem() const {
+    if (!viewer_.scene()) {
+        return tr("There is no data on screen to report on.");
+    }
     if (source_.dicomPath.empty() && patientGroup_->isChecked()) {
         for (const auto& [edit, what] :
              {std::pair{birthDate_, tr("birth date")}, std::pair{studyDate_, tr("study date")}}) {
@@ -337,7 +351,7 @@ QString ReportDialog::problem() const {
         }
     }
     std::vector<std::filesystem::path> seen;
-    for (const auto& [path, what] : outputs) {
+    for (const auto& [path, what] : outputs()) {
         if (path.empty()) {
             return tr("Choose a file name for the %1.").arg(what);
         }

@@ -2,7 +2,11 @@
 #pragma once
 
 #include <QString>
+#include <QStringList>
+#include <filesystem>
 #include <optional>
+#include <utility>
+#include <vector>
 
 #include "gui/ExportWorker.h"
 #include "vv/report/ReportJob.h"
@@ -27,8 +31,10 @@ class ViewerWidget;
 /// above a value; only with a parameter shown), the patient and study of
 /// mesh data (DICOM data brings its own), anonymise (for DICOM data or an
 /// entered patient), the disclaimer line, and optional DICOM Secondary
-/// Capture, DICOM Encapsulated PDF and PNG outputs. accept() checks the
-/// fields (a message box says what is wrong), remembers the folder, paper,
+/// Capture, DICOM Encapsulated PDF and PNG outputs. It proposes report.pdf in
+/// the last export folder (report-2.pdf, … when taken). accept() checks the
+/// fields (a message box says what is wrong), asks before it replaces any
+/// existing output (naming each), remembers the folder, paper,
 /// anonymise choice and disclaimer (QSettings), and runs
 /// report::runReportJob() on an ExportWorker with progress and Cancel.
 class ReportDialog : public ExportDialog {
@@ -86,6 +92,8 @@ class ReportDialog : public ExportDialog {
     /// What is wrong with the fields (no PDF name, two outputs on one file,
     /// an output over a data file, a missing folder); empty when fine.
     [[nodiscard]] QString problem() const override;
+    /// The PDF and each output checked, as the fields give them.
+    [[nodiscard]] QStringList outputFiles() const override;
 
   protected:
     ExportWorker* startExport() override;
@@ -96,6 +104,8 @@ class ReportDialog : public ExportDialog {
     [[nodiscard]] std::optional<report::ReportPatient> enteredPatient() const;
     QCheckBox* addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
                          const QString& filter);
+    /// The PDF and each output checked, with what it is ("PDF report").
+    [[nodiscard]] std::vector<std::pair<std::filesystem::path, QString>> outputs() const;
 
     const ViewerWidget& viewer_;
     report::ReportSource source_;

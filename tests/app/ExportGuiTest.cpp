@@ -3,6 +3,7 @@
 // (fields set, accept()), and the export worker: rendering on its own thread
 // while the GUI thread's event loop keeps running. Needs a display:
 // xvfb-run -a, QT_QPA_PLATFORM=xcb. PDFs are read back with pdftotext / pdfinfo.
+#include <QAbstractButton>
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
@@ -13,11 +14,13 @@
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPointer>
+#include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
 #include <QStyle>
 #include <QTimer>
 #include <QTranslator>
+#include <chrono>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -106,6 +109,41 @@ class ExportGuiTest : public GuiFixture {
         QImage image;
         EXPECT_TRUE(image.load(QString::fromStdString(file.string()), "PNG")) << file;
         return image;
+    }
+
+    /// The box asking to replace existing files over `dialog`, once shown; null after 5 s.
+    static QMessageBox* replaceBox(const QWidget& dialog) {
+        QMessageBox* box = nullptr;
+        waitUntil(
+            [&] {
+                box = dialog.findChild<QMessageBox*>(QStringLiteral("replaceFilesBox"));
+                return box != nullptr && box->isVisible();
+            },
+            5000);
+        return box;
+    }
+
+    /// Clicks `box`'s Replace (true) or Cancel button and waits until it is gone.
+    static void answer(QMessageBox* box, bool replace) {
+        QAbstractButton* button = box->button(QMessageBox::Cancel);
+        for (QAbstractButton* b : box->buttons()) {
+            if (replace && box->buttonRole(b) == QMessageBox::DestructiveRole) {
+                button = b;
+            }
+        }
+        ASSERT_NE(button, nullptr);
+        EXPECT_EQ(button->text(), replace ? QStringLiteral("&Replace") : QStringLiteral("Cancel"));
+        const QPointer<QMessageBox> shown(box);
+        button->click();
+        EXPECT_TRUE(waitUntil([&] { return shown.isNull(); }, 5000)) << "the box stays";
+    }
+
+    /// `file` with `content`, last written an hour ago (so that a rewrite shows in its time).
+    static fs::file_time_type earlierFile(const fs::path& file, const std::string& content) {
+        std::ofstream(file, std::ios::binary) << content;
+        const auto time = fs::file_time_type::clock::now() - std::chrono::hours(1);
+        fs::last_write_time(file, time);
+        return fs::last_write_time(file);
     }
 
     fs::path dir_;
@@ -395,12 +433,167 @@ TEST_F(ExportGuiTest, CancelLeavesNoFileAndKeepsAnExistingOne) {
                          worker->cancel();  // at once, as a click on Cancel
                      });
     dialog.accept();
+    QMessageBox* box = replaceBox(dialog);  // existing.pdf is there
+    ASSERT_NE(box, nullptr) << "no question before replacing existing.pdf";
+    answer(box, true);
     ASSERT_TRUE(waitUntil([&] { return outcome->finished; }, 120000));
     EXPECT_TRUE(outcome->cancelled);
     EXPECT_FALSE(outcome->succeeded);
     EXPECT_EQ(readAll(pdf), "the old report");
     EXPECT_FALSE(fs::exists(sc));
     EXPECT_EQ(report::test::listing(dir_), "existing.pdf ");
+}
+
+TEST_F(ExportGuiTest, ReportAsksBeforeReplacingAFileAndCancelKeepsItAndTheDialog) {
+    ASSERT_TRUE(showTube());
+    const fs::path pdf = dir_ / "report.pdf";
+    const std::string earlier = "the report of the previous patient";
+    const auto written = earlierFile(pdf, earlier);
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    dialog.pdfEdit()->setText(QString::fromStdString(pdf.string()));
+    dialog.show();
+    bool started = false;
+    QObject::connect(&dialog, &gui::ReportDialog::exportStarted, [&started] { started = true; });
+    dialog.accept();
+    QMessageBox* box = replaceBox(dialog);
+    ASSERT_NE(box, nullptr) << "report.pdf was replaced without a question";
+    EXPECT_EQ(box->text(), QStringLiteral("report.pdf already exists in %1. Replace it?")
+                               .arg(QString::fromStdString(dir_.string())));
+    EXPECT_EQ(box->windowModality(), Qt::WindowModal);
+    EXPECT_EQ(static_cast<QAbstractButton*>(box->defaultButton()),
+              box->button(QMessageBox::Cancel));
+    answer(box, false);
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(started);
+    EXPECT_TRUE(dialog.isVisible());  // still open to choose another name
+    EXPECT_EQ(readAll(pdf), earlier);
+    EXPECT_EQ(fs::last_write_time(pdf), written);
+    EXPECT_EQ(report::test::listing(dir_), "report.pdf ");
+}
+
+TEST_F(ExportGuiTest, ReportNamesEveryFileItWouldReplaceAndReplaceWritesThem) {
+    ASSERT_TRUE(showTube());
+    const fs::path pdf = dir_ / "report.pdf";
+    const fs::path png = dir_ / "report.png";
+    const auto pdfTime = earlierFile(pdf, "the earlier report");
+    const auto pngTime = earlierFile(png, "the earlier image");
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    dialog.pdfEdit()->setText(QString::fromStdString(pdf.string()));
+    dialog.pngBox()->setChecked(true);      // report.png, beside the PDF
+    dialog.dicomScBox()->setChecked(true);  // report-sc.dcm: new, not named
+    auto outcome = std::make_shared<Outcome>();
+    QObject::connect(&dialog, &gui::ReportDialog::exportStarted,
+                     [outcome](gui::ExportWorker* worker) { record(worker, outcome); });
+    dialog.accept();
+    QMessageBox* box = replaceBox(dialog);
+    ASSERT_NE(box, nullptr) << "two files were replaced without a question";
+    EXPECT_EQ(box->text(),
+              QStringLiteral("These files already exist:\n%1\n%2\nReplace them?")
+                  .arg(QString::fromStdString(pdf.string()), QString::fromStdString(png.string())));
+    answer(box, true);
+    ASSERT_TRUE(waitUntil([&] { return outcome->finished; }, 120000)) << "no end of export";
+    ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+    EXPECT_NE(fs::last_write_time(pdf), pdfTime);
+    EXPECT_NE(fs::last_write_time(png), pngTime);
+    std::string text;
+    ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0) << text;
+    EXPECT_NE(text.find("Vessel tree report"), std::string::npos) << text;
+    QImage image;
+    EXPECT_TRUE(image.load(QString::fromStdString(png.string()), "PNG"));
+    EXPECT_EQ(image.size(), gui::viewPixelSize(*window_->viewer()));
+    EXPECT_EQ(report::test::listing(dir_), "report-sc.dcm report.pdf report.png ");
+}
+
+TEST_F(ExportGuiTest, ImageAsksBeforeReplacingAFileCancelKeepsItReplaceWritesIt) {
+    ASSERT_TRUE(showTube());
+    const fs::path png = dir_ / "vessels.png";
+    const std::string earlier = "the image of the previous patient";
+    const auto written = earlierFile(png, earlier);
+    gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
+    // No suffix: ".png" is added, so vessels.png is what would be replaced.
+    dialog.fileEdit()->setText(QString::fromStdString((dir_ / "vessels").string()));
+    dialog.keepAspectBox()->setChecked(false);
+    dialog.widthBox()->setValue(320);
+    dialog.heightBox()->setValue(200);
+    dialog.show();
+    auto outcome = std::make_shared<Outcome>();
+    bool started = false;
+    QObject::connect(&dialog, &gui::ExportImageDialog::exportStarted,
+                     [outcome, &started](gui::ExportWorker* worker) {
+                         started = true;
+                         record(worker, outcome);
+                     });
+    dialog.accept();
+    QMessageBox* box = replaceBox(dialog);
+    ASSERT_NE(box, nullptr) << "vessels.png was replaced without a question";
+    EXPECT_EQ(box->text(), QStringLiteral("vessels.png already exists in %1. Replace it?")
+                               .arg(QString::fromStdString(dir_.string())));
+    answer(box, false);
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(started);
+    EXPECT_TRUE(dialog.isVisible());
+    EXPECT_EQ(readAll(png), earlier);
+    EXPECT_EQ(fs::last_write_time(png), written);
+
+    dialog.accept();
+    box = replaceBox(dialog);
+    ASSERT_NE(box, nullptr) << "asked only once";
+    answer(box, true);
+    ASSERT_TRUE(waitUntil([&] { return outcome->finished; }, 120000)) << "no end of export";
+    ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+    EXPECT_FALSE(dialog.isVisible());
+    QImage image;
+    ASSERT_TRUE(image.load(QString::fromStdString(png.string()), "PNG"));
+    EXPECT_EQ(image.size(), QSize(320, 200));
+    EXPECT_EQ(report::test::listing(dir_), "vessels.png ");
+}
+
+TEST_F(ExportGuiTest, TheDialogsProposeAFreeNameAndWriteItWithoutAQuestion) {
+    ASSERT_TRUE(showTube());
+    QSettings().setValue(QStringLiteral("export/folder"), QString::fromStdString(dir_.string()));
+    const std::shared_ptr<void> restore(nullptr,
+                                        [](void*) { QSettings().remove("export/folder"); });
+    const auto proposed = [this](const char* name) {
+        return QString::fromStdString((dir_ / name).string());
+    };
+    // An empty folder: the plain names.
+    EXPECT_EQ(gui::ReportDialog(*window_->viewer(), window_->reportSource(), window_.get())
+                  .pdfEdit()
+                  ->text(),
+              proposed("report.pdf"));
+    EXPECT_EQ(gui::ExportImageDialog(*window_->viewer(), window_.get()).fileEdit()->text(),
+              proposed("vessels.png"));
+
+    // After earlier exports: the next free numbers, which replace nothing.
+    const fs::path pdf = dir_ / "report.pdf";
+    const auto pdfTime = earlierFile(pdf, "the earlier report");
+    earlierFile(dir_ / "vessels.png", "the earlier image");
+    earlierFile(dir_ / "vessels-2.png", "the image before");
+    EXPECT_EQ(gui::ExportImageDialog(*window_->viewer(), window_.get()).fileEdit()->text(),
+              proposed("vessels-3.png"));
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    EXPECT_EQ(dialog.pdfEdit()->text(), proposed("report-2.pdf"));
+    dialog.pngBox()->setChecked(true);
+    EXPECT_EQ(dialog.pngEdit()->text(), proposed("report-2.png"));
+    bool startedAtOnce = false;
+    auto outcome = std::make_shared<Outcome>();
+    QObject::connect(&dialog, &gui::ReportDialog::exportStarted,
+                     [outcome, &startedAtOnce](gui::ExportWorker* worker) {
+                         startedAtOnce = true;
+                         record(worker, outcome);
+                     });
+    dialog.accept();
+    EXPECT_TRUE(startedAtOnce) << "nothing to replace, yet no export";
+    EXPECT_EQ(dialog.findChild<QMessageBox*>(QStringLiteral("replaceFilesBox")), nullptr);
+    ASSERT_TRUE(waitUntil([&] { return outcome->finished; }, 120000)) << "no end of export";
+    ASSERT_TRUE(outcome->succeeded) << outcome->message.toStdString();
+    EXPECT_EQ(readAll(pdf), "the earlier report");
+    EXPECT_EQ(fs::last_write_time(pdf), pdfTime);
+    std::string info;
+    EXPECT_EQ(report::test::runTool("pdfinfo '" + (dir_ / "report-2.pdf").string() + "'", info), 0)
+        << info;
+    EXPECT_EQ(report::test::listing(dir_),
+              "report-2.pdf report-2.png report.pdf vessels-2.png vessels.png ");
 }
 
 TEST_F(ExportGuiTest, WorkerRendersWhileTheEventLoopRunsAndMatchesTheGuiThread) {

@@ -11,6 +11,7 @@
 // modules report (English keys, no Qt) must all have a German translation.
 #include <gtest/gtest.h>
 
+#include <QAbstractButton>
 #include <QCheckBox>
 #include <QDir>
 #include <QFile>
@@ -359,12 +360,28 @@ class GermanUiTest : public GuiFixture {
         auto* dialog = window_->findChild<gui::ExportImageDialog*>();
         ASSERT_NE(dialog, nullptr);
         texts_.collect(dialog);
-        dialog->fileEdit()->setText(
-            QString::fromStdString((panelTestDir() / "german-export.png").string()));
+        const QString file =
+            QString::fromStdString((panelTestDir() / "german-export.png").string());
+        dialog->fileEdit()->setText(file);
         dialog->keepAspectBox()->setChecked(false);
         dialog->widthBox()->setValue(640);
         dialog->heightBox()->setValue(400);
         runExport(*dialog);
+
+        // Once more to the same file: the question before it is replaced.
+        gui::ExportImageDialog again(*window_->viewer(), window_.get());
+        again.fileEdit()->setText(file);  // the dialog above is gone
+        again.show();
+        again.accept();
+        QMessageBox* box = nullptr;
+        ASSERT_TRUE(waitUntil([&] {
+            box = again.findChild<QMessageBox*>(QStringLiteral("replaceFilesBox"));
+            return box != nullptr && box->isVisible();
+        })) << "no question before replacing german-export.png";
+        EXPECT_TRUE(box->text().startsWith(QStringLiteral("german-export.png ")))
+            << box->text().toStdString();
+        texts_.collect(box);
+        box->button(QMessageBox::Cancel)->click();
     }
 
     /// Starts `dialog`'s export and collects what shows until it ends.
