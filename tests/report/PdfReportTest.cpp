@@ -54,8 +54,8 @@ class PdfReportTest : public ::testing::Test {
         s.fractionBelow = 0.0625;
         p.stats = {s, s};
         p.stats[1].object = "right ICA";
-        c.view.legends.parameter =
-            render::ParameterLegend{"wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0, {}, {}};
+        c.view.legends.parameter = render::ParameterLegend{
+            "wss", "Pa", 0.25F, 3.5F, colormaps::ColorMap::Viridis, 0, {}, {}};
         c.parameter = p;
     }
 
@@ -151,6 +151,49 @@ TEST_F(PdfReportTest, AnonymisedPatientShowsNoIdentifiers) {
     c.patient->anonymise = false;  // not anonymised: the files are listed
     const std::string shown = text(renderPdf(c, PaperSize::A4), "identified");
     EXPECT_NE(shown.find("IM0001.dcm"), std::string::npos) << shown;
+}
+
+/// The footer line of the first page: the one with "Page 1 of".
+std::string footerOf(const std::string& text) {
+    const auto at = text.find("Page 1 of");
+    if (at == std::string::npos) {
+        return {};
+    }
+    const auto start = text.rfind('\n', at);
+    return text.substr(start == std::string::npos ? 0 : start + 1, text.find('\n', at) - start);
+}
+
+TEST_F(PdfReportTest, FooterLeavesOutAPatientFieldNotGiven) {
+    ReportContent c = content(PaperSize::A4);
+    ReportPatient patient;
+    patient.name = "Doe^Jane";
+    c.patient = patient;
+    std::string t = text(renderPdf(c, PaperSize::A4), "footer-name");
+    std::string footer = footerOf(t);
+    EXPECT_NE(footer.find("Carotid study \u00b7 2026-03-04 09:30 UTC \u00b7 Doe, Jane"),
+              std::string::npos)
+        << footer;
+    EXPECT_EQ(footer.find("ID"), std::string::npos) << footer;
+    // The patient block keeps its fields, the missing ID as "—".
+    EXPECT_NE(t.find("Patient ID"), std::string::npos) << t;
+    EXPECT_NE(t.find("\u2014"), std::string::npos) << t;
+
+    c.patient->name.clear();
+    c.patient->id = "PID-0042";
+    footer = footerOf(text(renderPdf(c, PaperSize::A4), "footer-id"));
+    EXPECT_NE(footer.find("UTC \u00b7 ID PID-0042"), std::string::npos) << footer;
+    EXPECT_EQ(footer.find("\u2014"), std::string::npos) << footer;
+
+    c.patient->id.clear();  // neither: no patient in the footer
+    footer = footerOf(text(renderPdf(c, PaperSize::A4), "footer-none"));
+    EXPECT_NE(footer.find("09:30 UTC"), std::string::npos) << footer;
+    EXPECT_EQ(footer.find("\u2014"), std::string::npos) << footer;
+    EXPECT_EQ(footer.find("UTC \u00b7"), std::string::npos) << footer;
+
+    // Anonymised: both fields say so, even when empty.
+    c.patient->anonymise = true;
+    footer = footerOf(text(renderPdf(c, PaperSize::A4), "footer-anonymised"));
+    EXPECT_NE(footer.find("anonymised, ID anonymised"), std::string::npos) << footer;
 }
 
 TEST_F(PdfReportTest, LetterWithoutPatientOrParameterLeavesThemOut) {
