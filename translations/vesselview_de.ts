@@ -1071,32 +1071,32 @@ Ersetzen?</translation>
         <translation>Objekt %1</translation>
     </message>
     <message>
-        <source>B deeper by %1 mm</source>
-        <translation>B um %1 mm tiefer</translation>
-    </message>
-    <message>
-        <source>A deeper by %1 mm</source>
-        <translation>A um %1 mm tiefer</translation>
-    </message>
-    <message>
         <source>Measure: no vessel under the mouse</source>
         <translation>Messen: kein Gefäß unter dem Mauszeiger</translation>
     </message>
     <message>
-        <source>The distance is the 3-D distance of A and B. The depth difference is measured along the current view direction and changes as the view turns. Esc clears.</source>
-        <translation>Der Abstand ist der räumliche (3-D-)Abstand von A und B. Der Tiefenunterschied wird entlang der aktuellen Blickrichtung gemessen und ändert sich, wenn die Ansicht gedreht wird. Esc löscht die Messung.</translation>
+        <source>The distance is the 3-D distance of points 1 and 2. The depth difference is measured along the current view direction and changes as the view turns. Esc clears.</source>
+        <translation>Der Abstand ist der räumliche (3-D-)Abstand der Punkte 1 und 2. Der Tiefenunterschied wird entlang der aktuellen Blickrichtung gemessen und ändert sich, wenn die Ansicht gedreht wird. Esc löscht die Messung.</translation>
     </message>
     <message>
-        <source>Measure: A on %1; click a second point</source>
-        <translation>Messen: A auf %1; einen zweiten Punkt anklicken</translation>
+        <source>Measure: point 1 on %1; click a second point</source>
+        <translation>Messen: Punkt 1 auf %1; einen zweiten Punkt anklicken</translation>
     </message>
     <message>
-        <source>A and B at the same depth</source>
-        <translation>A und B in gleicher Tiefe</translation>
+        <source>points 1 and 2 at the same depth</source>
+        <translation>Punkte 1 und 2 in gleicher Tiefe</translation>
     </message>
     <message>
-        <source>Distance A–B: %1 mm · depth difference in this view: %2</source>
-        <translation>Abstand A–B: %1 mm · Tiefenunterschied in dieser Ansicht: %2</translation>
+        <source>point 2 deeper by %1 mm</source>
+        <translation>Punkt 2 um %1 mm tiefer</translation>
+    </message>
+    <message>
+        <source>point 1 deeper by %1 mm</source>
+        <translation>Punkt 1 um %1 mm tiefer</translation>
+    </message>
+    <message>
+        <source>Distance 1–2: %1 mm · depth difference in this view: %2</source>
+        <translation>Abstand 1–2: %1 mm · Tiefenunterschied in dieser Ansicht: %2</translation>
     </message>
 </context>
 <context>
@@ -1433,10 +1433,6 @@ Ersetzen?</translation>
         <translation>Suche</translation>
     </message>
     <message>
-        <source>e.g. Doe* (* and ? match any)</source>
-        <translation>z. B. Muster* (* und ? für Beliebiges)</translation>
-    </message>
-    <message>
         <source>&amp;Search</source>
         <translation>&amp;Suchen</translation>
     </message>
@@ -1611,6 +1607,14 @@ Ersetzen?</translation>
     <message>
         <source>Search cancelled.</source>
         <translation>Suche abgebrochen.</translation>
+    </message>
+    <message>
+        <source>e.g. Doe*</source>
+        <translation>z. B. Muster*</translation>
+    </message>
+    <message>
+        <source>The patient&apos;s name to search for, e.g. Doe*: * matches any text, ? any one character</source>
+        <translation>Der gesuchte Patientenname, z. B. Muster*: * steht für beliebigen Text, ? für ein beliebiges Zeichen</translation>
     </message>
 </context>
 <context>
@@ -2458,7 +2462,7 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     </message>
     <message>
         <source>Continuous: the values are measurements, shown through the colour map. Categories: the values are labels (segment, branch or group ids), one colour each. Automatic: categories for whole-numbered arrays with few distinct values</source>
-        <translation>Kontinuierlich: Die Werte sind Messwerte und werden über die Farbskala dargestellt. Kategorien: Die Werte sind Labels (Segment-, Ast- oder Gruppen-IDs), jedes in einer eigenen Farbe. Automatisch: Kategorien für ganzzahlige Datenfelder mit wenigen verschiedenen Werten</translation>
+        <translation>Kontinuierlich: Die Werte sind Messwerte und werden über die Farbtabelle dargestellt. Kategorien: Die Werte sind Labels (Segment-, Ast- oder Gruppen-IDs), jedes in einer eigenen Farbe. Automatisch: Kategorien für ganzzahlige Datenfelder mit wenigen verschiedenen Werten</translation>
     </message>
     <message>
         <source>Choose an array to colour the vessels with</source>
@@ -3536,11 +3540,11 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     </message>
     <message>
         <source>Colour map %1 in %2 bins over %3 – %4.</source>
-        <translation>Farbskala %1 in %2 Stufen über %3 – %4.</translation>
+        <translation>Farbtabelle %1 in %2 Stufen über %3 – %4.</translation>
     </message>
     <message>
         <source>Colour map %1 over %2 – %3.</source>
-        <translation>Farbskala %1 über %2 – %3.</translation>
+        <translation>Farbtabelle %1 über %2 – %3.</translation>
     </message>
     <message>
         <source>Values outside are shown in the end colours.</source>
@@ -3691,6 +3695,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Slice with segmentation</source>
         <translation>Schicht mit Segmentierung</translation>
+    </message>
+    <message>
+        <source>ID %1</source>
+        <translation>ID %1</translation>
     </message>
 </context>
 </TS>

@@ -25,6 +25,10 @@ MeasureOverlay::MeasureOverlay(ViewerWidget* viewer) : QWidget(viewer), viewer_(
     hide();
 }
 
+QString MeasureOverlay::pointLabel(qsizetype index) {
+    return QLocale().toString(index + 1);
+}
+
 void MeasureOverlay::setPoints(const QList<ProbeResult>& points) {
     points_ = points.mid(0, 2);
     setVisible(!points_.isEmpty());
@@ -77,7 +81,6 @@ void MeasureOverlay::paintEvent(QPaintEvent* event) {
         painter.drawPath(path);
         painter.fillPath(path, ink);
     }
-    const QString labels[] = {QStringLiteral("A"), QStringLiteral("B")};
     for (qsizetype i = 0; i < screen.size(); ++i) {
         painter.setPen(QPen(halo, 2.0));
         painter.setBrush(ink);
@@ -85,7 +88,7 @@ void MeasureOverlay::paintEvent(QPaintEvent* event) {
         QPainterPath label;
         QFont font = painter.font();
         font.setBold(true);
-        label.addText(screen[i] + QPointF(8.0, 16.0), font, labels[i]);
+        label.addText(screen[i] + QPointF(8.0, 16.0), font, pointLabel(i));
         painter.setPen(QPen(halo, 3.0));
         painter.setBrush(Qt::NoBrush);
         painter.drawPath(label);

@@ -10,7 +10,8 @@
 
 namespace vv::gui {
 
-/// Marks the picked measurement points over the viewer: "A", "B", the line
+/// Marks the picked measurement points over the viewer: "1", "2" (never
+/// letters, which views with orientation labels use for A = anterior), the line
 /// between them and the distance. A transparent child of the viewer that lets
 /// the mouse through and follows its size; the points are world positions,
 /// projected with the viewer's current camera at every repaint (call
@@ -21,6 +22,9 @@ class MeasureOverlay : public QWidget {
 
   public:
     explicit MeasureOverlay(ViewerWidget* viewer);
+
+    /// The mark of point `index` (0 or 1): "1", "2" in the UI locale's digits.
+    [[nodiscard]] static QString pointLabel(qsizetype index);
 
     /// The points to mark (0, 1 or 2; more are ignored).
     void setPoints(const QList<ProbeResult>& points);

@@ -21,8 +21,8 @@ QString millimetres(float value) {
 MeasureTool::MeasureTool(ViewerWidget* viewer, QLabel* label, QObject* parent)
     : QObject(parent), viewer_(viewer), label_(label), overlay_(new MeasureOverlay(viewer)) {
     label_->setToolTip(
-        tr("The distance is the 3-D distance of A and B. The depth difference is measured along "
-           "the current view direction and changes as the view turns. Esc clears."));
+        tr("The distance is the 3-D distance of points 1 and 2. The depth difference is measured "
+           "along the current view direction and changes as the view turns. Esc clears."));
     // Every frame may show another view direction: the depth difference follows it.
     connect(viewer_, &ViewerWidget::frameRendered, this, &MeasureTool::refresh);
 }
@@ -47,7 +47,7 @@ void MeasureTool::addPoint(const ProbeResult& point) {
     if (points_.size() == 1) {
         const QString where = point.objectName.isEmpty() ? tr("object %1").arg(point.meshIndex + 1)
                                                          : point.objectName;
-        label_->setText(tr("Measure: A on %1; click a second point").arg(where));
+        label_->setText(tr("Measure: point 1 on %1; click a second point").arg(where));
         return;
     }
     refresh();
@@ -59,10 +59,10 @@ QString MeasureTool::measurementText() const {
     }
     const Measurement m = measure(points_[0], points_[1], viewer_->camera());
     const float depth = m.depthDifference;
-    const QString deeper = std::abs(depth) < 0.05F ? tr("A and B at the same depth")
-                           : depth > 0.0F          ? tr("B deeper by %1 mm").arg(millimetres(depth))
-                                          : tr("A deeper by %1 mm").arg(millimetres(-depth));
-    return tr("Distance A–B: %1 mm · depth difference in this view: %2")
+    const QString deeper = std::abs(depth) < 0.05F ? tr("points 1 and 2 at the same depth")
+                           : depth > 0.0F ? tr("point 2 deeper by %1 mm").arg(millimetres(depth))
+                                          : tr("point 1 deeper by %1 mm").arg(millimetres(-depth));
+    return tr("Distance 1–2: %1 mm · depth difference in this view: %2")
         .arg(millimetres(m.distance), deeper);
 }
 

@@ -31,6 +31,7 @@
 #include "gui/PathField.h"
 #include "gui/ViewerWidget.h"
 #include "vv/render/ViewPresets.h"
+#include "vv/report/ParameterStats.h"
 #include "vv/report/PdfReport.h"
 
 namespace vv::gui {
@@ -129,12 +130,19 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
 
     // Statistics thresholds: only with a parameter on the vessels.
     const std::string& array = viewer.style().array;
-    const auto threshold = [this, &array](QCheckBox*& box, QDoubleSpinBox*& value,
-                                          const QString& label) {
+    // In the array's unit, as the legend and the data panel name it.
+    const std::string unit = array.empty() || !viewer.scene()
+                                 ? std::string()
+                                 : report::arrayUnit(*viewer.scene(), array);
+    const auto threshold = [this, &array, &unit](QCheckBox*& box, QDoubleSpinBox*& value,
+                                                 const QString& label) {
         box = new QCheckBox(label, this);
         value = new QDoubleSpinBox(this);
         value->setRange(-1e9, 1e9);
         value->setDecimals(3);
+        if (!unit.empty()) {
+            value->setSuffix(QLatin1Char(' ') + QString::fromStdString(unit));
+        }
         value->setEnabled(false);
         connect(box, &QCheckBox::toggled, value, &QWidget::setEnabled);
         if (array.empty()) {

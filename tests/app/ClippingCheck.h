@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // Finds text a person cannot read in full: every visible label, button, combo
-// box, tab, group box title, header section, table column and line edit under
-// a widget whose text needs more room than it has, an '&' shown literally, a
-// horizontal scroll bar, and widgets that stick out of a scroll area's view.
+// box, tab, group box title, header section, table column and line edit (its
+// placeholder too) under a widget whose text needs more room than it has, an
+// '&' shown literally, a horizontal scroll bar, and widgets that stick out of a
+// scroll area's view.
 #pragma once
 
 #include <QAbstractButton>
@@ -264,7 +265,8 @@ class ClippingCheck {
     }
 
     void inspectLineEdit(const QLineEdit* edit) {
-        const QString text = edit->text();
+        // An empty field shows its placeholder: it must fit as well.
+        const QString text = edit->text().isEmpty() ? edit->placeholderText() : edit->text();
         if (text.isEmpty() || edit->echoMode() != QLineEdit::Normal) {
             return;
         }

@@ -11,6 +11,7 @@
 #include <QGroupBox>
 #include <QImage>
 #include <QLineEdit>
+#include <QLocale>
 #include <QMessageBox>
 #include <QPlainTextEdit>
 #include <QPointer>
@@ -416,6 +417,44 @@ TEST_F(ExportGuiTest, ReportChecksItsOutputs) {
     EXPECT_TRUE(dialog.belowBox()->isEnabled());
     EXPECT_TRUE(dialog.belowBox()->isChecked());
     EXPECT_DOUBLE_EQ(dialog.belowValue()->value(), 0.4);
+}
+
+TEST_F(ExportGuiTest, ReportThresholdsShowTheUnitOfTheShownArray) {
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    ASSERT_EQ(viewer->style().array, "wss");
+    const QLocale before;
+    for (const QLocale& locale : {QLocale(QLocale::English, QLocale::UnitedStates),
+                                  QLocale(QLocale::German, QLocale::Germany)}) {
+        QLocale::setDefault(locale);
+        const gui::ReportDialog dialog(*viewer, window_->reportSource(), window_.get());
+        // What the fields show: the number and the unit of the wall shear stress.
+        EXPECT_EQ(dialog.belowValue()->text(),
+                  locale.toString(0.4, 'f', 3) + QStringLiteral(" Pa"));
+        EXPECT_EQ(dialog.aboveValue()->text(),
+                  locale.toString(0.0, 'f', 3) + QStringLiteral(" Pa"));
+    }
+    QLocale::setDefault(before);
+    render::MeshStyle style = viewer->style();
+    style.array = "pressure";
+    viewer->setStyle(style);
+    {
+        const gui::ReportDialog dialog(*viewer, window_->reportSource(), window_.get());
+        EXPECT_TRUE(dialog.belowValue()->text().endsWith(QStringLiteral(" mmHg")))
+            << dialog.belowValue()->text().toStdString();
+    }
+    // An array without a unit: the number alone.
+    auto scene = std::make_shared<scene::Scene>(*makeTubeScene(false));
+    addAxialArray(scene->meshes[0], "segment", "", 0.0F,
+                  [](float x) { return x > 15.0F ? 2.0F : 1.0F; });
+    window_->setScene(scene, QStringLiteral("segments"));
+    ASSERT_TRUE(waitForFrames());
+    style = viewer->style();
+    style.array = "segment";
+    viewer->setStyle(style);
+    const gui::ReportDialog dialog(*viewer, window_->reportSource(), window_.get());
+    EXPECT_TRUE(dialog.belowBox()->isEnabled());
+    EXPECT_EQ(dialog.belowValue()->text(), QLocale().toString(0.0, 'f', 3));
 }
 
 TEST_F(ExportGuiTest, CancelLeavesNoFileAndKeepsAnExistingOne) {

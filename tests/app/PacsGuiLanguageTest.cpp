@@ -7,6 +7,7 @@
 
 #include <QCoreApplication>
 #include <QLayout>
+#include <QLineEdit>
 #include <QPushButton>
 #include <QTableWidget>
 #include <QWindow>
@@ -89,6 +90,30 @@ TEST_P(PacsGuiLanguageTest, BrowserShowsTheStudyInTheUiLanguage) {
     EXPECT_EQ(b->searchButton()->text(),
               german ? QStringLiteral("&Suchen") : QStringLiteral("&Search"));
     expectWhole(*b, "pacs-browser");
+}
+
+TEST_P(PacsGuiLanguageTest, TheNameHintFitsTheBrowserAtItsDefaultSize) {
+    // As Query PACS… opens it: not resized.
+    browser_ = window_->dicomMenu()->showBrowser();
+    ASSERT_TRUE(waitUntil(
+        [this] {
+            return browser_->windowHandle() != nullptr && browser_->windowHandle()->isExposed();
+        },
+        10000));
+    browser_->layout()->activate();
+    QCoreApplication::processEvents();
+    QLineEdit* name = browser_->patientNameEdit();
+    ASSERT_TRUE(name->text().isEmpty());
+    ASSERT_FALSE(name->placeholderText().isEmpty());
+    const std::vector<std::string> problems = vv::test::ClippingCheck::problems(name);
+    EXPECT_TRUE(problems.empty()) << "at " << browser_->width() << " px:" << listed(problems);
+    // The whole hint is in the tooltip: both wildcards and what they match.
+    const bool german = QLatin1String(GetParam()) == QLatin1String("de");
+    const QString tip = name->toolTip();
+    EXPECT_TRUE(tip.contains(QLatin1Char('*')) && tip.contains(QLatin1Char('?')))
+        << tip.toStdString();
+    EXPECT_TRUE(tip.contains(german ? QStringLiteral("beliebig") : QStringLiteral("any")))
+        << tip.toStdString();
 }
 
 INSTANTIATE_TEST_SUITE_P(Languages, PacsGuiLanguageTest, ::testing::Values("en", "de"),

@@ -5,11 +5,14 @@
 #include <QAction>
 #include <QCoreApplication>
 #include <QHelpEvent>
+#include <QImage>
 #include <QKeySequence>
 #include <QLabel>
 #include <QLineF>
 #include <QLocale>
 #include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
 #include <QToolTip>
 #include <cmath>
 #include <glm/gtc/constants.hpp>
@@ -220,7 +223,7 @@ TEST_F(ProbeTest, MeasuredDepthDifferenceFollowsTheViewAndTheDistanceStays) {
     ASSERT_EQ(window_->measurePoints().size(), 2);
     const glm::vec3 a = window_->measurePoints()[0].worldPosition;
     const glm::vec3 b = window_->measurePoints()[1].worldPosition;
-    const QString distancePrefix = QStringLiteral("Distance A–B: ");
+    const QString distancePrefix = QStringLiteral("Distance 1–2: ");
     const double distance = numberAfter(window_->measureLabel()->text(), distancePrefix);
     EXPECT_NEAR(distance, glm::length(b - a), 0.051)
         << window_->measureLabel()->text().toStdString();
@@ -242,7 +245,7 @@ TEST_F(ProbeTest, MeasuredDepthDifferenceFollowsTheViewAndTheDistanceStays) {
     const double expected = glm::dot(b - a, viewDirection);
     ASSERT_GT(std::abs(expected), 3.0) << "the turn should put the points at other depths";
     const QString deeper =
-        expected > 0 ? QStringLiteral("B deeper by ") : QStringLiteral("A deeper by ");
+        expected > 0 ? QStringLiteral("point 2 deeper by ") : QStringLiteral("point 1 deeper by ");
     QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
     const double shownDepth = numberAfter(label, deeper);
     const double shownDistance = numberAfter(label, distancePrefix);
@@ -255,6 +258,71 @@ TEST_F(ProbeTest, MeasuredDepthDifferenceFollowsTheViewAndTheDistanceStays) {
         QStringLiteral("along the current view direction")));
     EXPECT_NEAR(shownDistance, distance, 1e-9) << label.toStdString();
     EXPECT_TRUE(label.contains(QLatin1Char(','))) << "German decimals: " << label.toStdString();
+}
+
+/// `label` as the overlay marks a point at `at` (bold, white with a dark
+/// halo) on a transparent image of `size`.
+QImage markedLabel(const QString& label, const QFont& widgetFont, const QSize& size,
+                   const QPointF& at) {
+    QImage image(size, QImage::Format_ARGB32_Premultiplied);
+    image.fill(Qt::transparent);
+    QPainter painter(&image);
+    painter.setRenderHint(QPainter::Antialiasing);
+    QFont font = widgetFont;
+    font.setBold(true);
+    QPainterPath path;
+    path.addText(at + QPointF(8.0, 16.0), font, label);
+    painter.setPen(QPen(QColor(0, 0, 0, 200), 3.0));
+    painter.drawPath(path);
+    painter.fillPath(path, Qt::white);
+    return image;
+}
+
+/// Pixels differing by more than 64 in alpha or grey inside `box`.
+int differing(const QImage& a, const QImage& b, const QRect& box) {
+    int n = 0;
+    for (int y = box.top(); y <= box.bottom(); ++y) {
+        for (int x = box.left(); x <= box.right(); ++x) {
+            const QRgb p = a.pixel(x, y);
+            const QRgb q = b.pixel(x, y);
+            n += std::abs(qAlpha(p) - qAlpha(q)) > 64 || std::abs(qGray(p) - qGray(q)) > 64 ? 1 : 0;
+        }
+    }
+    return n;
+}
+
+TEST_F(ProbeTest, MeasurePointsAreNumberedNotLettered) {
+    // Letters would read as orientation labels (A = anterior) in DICOM views.
+    ASSERT_TRUE(showTube());
+    auto* viewer = window_->viewer();
+    click(viewer, onAxis(0.3), Qt::ControlModifier);
+    EXPECT_TRUE(window_->measureLabel()->text().startsWith(QStringLiteral("Measure: point 1 on")))
+        << window_->measureLabel()->text().toStdString();
+    click(viewer, onAxis(0.7), Qt::ControlModifier);
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    const QString label = window_->measureLabel()->text();
+    EXPECT_TRUE(label.startsWith(QStringLiteral("Distance 1–2: "))) << label.toStdString();
+    EXPECT_TRUE(window_->measureLabel()->toolTip().contains(QStringLiteral("points 1 and 2")));
+
+    // The marks as drawn: beside each point its number, not a letter.
+    auto* overlay = window_->measureOverlay();
+    QImage drawn(overlay->size(), QImage::Format_ARGB32_Premultiplied);
+    drawn.fill(Qt::transparent);
+    overlay->render(&drawn, QPoint(), QRegion(), QWidget::DrawChildren);
+    for (int i = 0; i < 2; ++i) {
+        const auto at = overlay->project(window_->measurePoints()[i]);
+        ASSERT_TRUE(at.has_value());
+        // Right of the marker, below the line between the points.
+        const QRect box = QRect(at->toPoint() + QPoint(7, 4), QSize(24, 18)) & drawn.rect();
+        const auto miss = [&](const QString& text) {
+            return differing(drawn, markedLabel(text, overlay->font(), drawn.size(), *at), box);
+        };
+        const QString number = QString::number(i + 1);
+        const QString letter = i == 0 ? QStringLiteral("A") : QStringLiteral("B");
+        EXPECT_LT(miss(number), miss(letter) / 4) << "point " << i + 1;
+        EXPECT_LT(miss(number), 6) << "point " << i + 1;
+    }
+    drawn.save(QString::fromStdString((panelTestDir() / "measure-marks.png").string()));
 }
 
 TEST_F(ProbeTest, AMeasurementEndsWithItsScene) {

@@ -253,6 +253,17 @@ TEST(ReportLanguageTest, GermanReportHasNoEnglishAndNoDecimalPoint) {
     EXPECT_NE(text.find(",0 %"), std::string::npos) << text;        // e.g. 100,0 %
     EXPECT_NE(text.find("12.08.1964"), std::string::npos) << text;  // the birth date
     EXPECT_NE(text.find("Nicht für diagnostische Zwecke."), std::string::npos) << text;
+    // The parameter's colour map is the GUI's "Farbtabelle"; "Farbskala" is
+    // the depth colour scale only ("Tiefen-Farbskala" in the settings).
+    EXPECT_NE(text.find("Farbtabelle"), std::string::npos) << text;
+    const auto count = [&text](const std::string& word) {
+        std::size_t n = 0;
+        for (auto at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
+            ++n;
+        }
+        return n;
+    };
+    EXPECT_EQ(count("Farbskala"), count("Tiefen-Farbskala")) << text;
 }
 
 TEST(ReportLanguageTest, EnglishReportHasNoGerman) {

@@ -154,6 +154,49 @@ TEST_F(PdfReportTest, AnonymisedPatientShowsNoIdentifiers) {
     EXPECT_NE(shown.find("IM0001.dcm"), std::string::npos) << shown;
 }
 
+/// The footer line of the first page: the one with "Page 1 of".
+std::string footerOf(const std::string& text) {
+    const auto at = text.find("Page 1 of");
+    if (at == std::string::npos) {
+        return {};
+    }
+    const auto start = text.rfind('\n', at);
+    return text.substr(start == std::string::npos ? 0 : start + 1, text.find('\n', at) - start);
+}
+
+TEST_F(PdfReportTest, FooterLeavesOutAPatientFieldNotGiven) {
+    ReportContent c = content(PaperSize::A4);
+    ReportPatient patient;
+    patient.name = "Doe^Jane";
+    c.patient = patient;
+    std::string t = text(renderPdf(c, PaperSize::A4), "footer-name");
+    std::string footer = footerOf(t);
+    EXPECT_NE(footer.find("Carotid study \u00b7 2026-03-04 09:30 UTC \u00b7 Doe, Jane"),
+              std::string::npos)
+        << footer;
+    EXPECT_EQ(footer.find("ID"), std::string::npos) << footer;
+    // The patient block keeps its fields, the missing ID as "—".
+    EXPECT_NE(t.find("Patient ID"), std::string::npos) << t;
+    EXPECT_NE(t.find("\u2014"), std::string::npos) << t;
+
+    c.patient->name.clear();
+    c.patient->id = "PID-0042";
+    footer = footerOf(text(renderPdf(c, PaperSize::A4), "footer-id"));
+    EXPECT_NE(footer.find("UTC \u00b7 ID PID-0042"), std::string::npos) << footer;
+    EXPECT_EQ(footer.find("\u2014"), std::string::npos) << footer;
+
+    c.patient->id.clear();  // neither: no patient in the footer
+    footer = footerOf(text(renderPdf(c, PaperSize::A4), "footer-none"));
+    EXPECT_NE(footer.find("09:30 UTC"), std::string::npos) << footer;
+    EXPECT_EQ(footer.find("\u2014"), std::string::npos) << footer;
+    EXPECT_EQ(footer.find("UTC \u00b7"), std::string::npos) << footer;
+
+    // Anonymised: both fields say so, even when empty.
+    c.patient->anonymise = true;
+    footer = footerOf(text(renderPdf(c, PaperSize::A4), "footer-anonymised"));
+    EXPECT_NE(footer.find("anonymised, ID anonymised"), std::string::npos) << footer;
+}
+
 TEST_F(PdfReportTest, LetterWithoutPatientOrParameterLeavesThemOut) {
     const ReportContent c = content(PaperSize::Letter);
     const QByteArray pdf = renderPdf(c, PaperSize::Letter);

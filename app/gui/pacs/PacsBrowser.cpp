@@ -91,7 +91,9 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     node_->setObjectName(QStringLiteral("pacsNode"));
     patientName_ = new QLineEdit(queryBox);
     patientName_->setObjectName(QStringLiteral("queryPatientName"));
-    patientName_->setPlaceholderText(tr("e.g. Doe* (* and ? match any)"));
+    patientName_->setPlaceholderText(tr("e.g. Doe*"));
+    patientName_->setToolTip(
+        tr("The patient's name to search for, e.g. Doe*: * matches any text, ? any one character"));
     patientId_ = new QLineEdit(queryBox);
     patientId_->setObjectName(QStringLiteral("queryPatientId"));
     dateFrom_ = dateField(queryBox, QStringLiteral("queryDateFrom"));

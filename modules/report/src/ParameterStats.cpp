@@ -121,4 +121,13 @@ std::vector<ParameterStats> parameterStats(const scene::Scene& scene, const std:
     return result;
 }
 
+std::string arrayUnit(const scene::Scene& scene, const std::string& array) {
+    for (const scene::Mesh& mesh : scene.meshes) {
+        if (const scene::DataArray* data = mesh.pointArray(array)) {
+            return data->unit;
+        }
+    }
+    return {};
+}
+
 }  // namespace vv::report

@@ -84,12 +84,7 @@ std::optional<ReportParameter> parameterOf(const scene::Scene& scene,
     }
     ReportParameter parameter;
     parameter.name = view.style.array;
-    for (const scene::Mesh& mesh : scene.meshes) {
-        if (const scene::DataArray* data = mesh.pointArray(parameter.name)) {
-            parameter.unit = data->unit;
-            break;
-        }
-    }
+    parameter.unit = arrayUnit(scene, parameter.name);
     parameter.range = *range;
     parameter.map = view.style.colorMap;
     parameter.bins = view.style.bins;

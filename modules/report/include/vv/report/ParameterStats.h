@@ -40,6 +40,10 @@ struct ParameterStats {
                                                          const std::string& array,
                                                          const StatsThresholds& thresholds);
 
+/// The unit of point array `array` (as the first mesh of `scene` that has it
+/// gives it, e.g. "Pa"); empty when no mesh has it or its unit is unknown.
+[[nodiscard]] std::string arrayUnit(const scene::Scene& scene, const std::string& array);
+
 /// Share of a triangle's area where the linear function with corner values
 /// a, b, c is below `threshold` (0..1); exact.
 [[nodiscard]] double areaFractionBelow(double a, double b, double c, double threshold) noexcept;
