@@ -5,7 +5,7 @@
 // connect may take its whole timeout and cannot be stopped).
 
 #include <QFuture>
-#include <QMetaObject>
+#include <QFutureWatcher>
 #include <QObject>
 #include <QtConcurrent/QtConcurrentRun>
 #include <cstdint>
@@ -16,17 +16,23 @@ namespace vv::gui {
 
 /// Hands `future`'s result to `done(result)` on the thread of `context` (the
 /// GUI thread), always through its event queue, so never inside this call even
-/// when `future` has already finished: QFuture::then(context, ...) calls
-/// straight through then, and a caller that sets "Searching…" after starting
-/// a call would overwrite the answer. Dropped if `context` is destroyed first.
+/// when `future` has already finished (a caller that sets "Searching…" after
+/// starting a call would overwrite the answer). A QFutureWatcher owned by
+/// `context` delivers it, as LatestRun's do: destroying `context` first drops
+/// the result (QFuture::then(context, …) instead calls straight through on a
+/// finished future, and reads its guard of `context` on the worker thread).
 template <typename Result, typename Done>
-void deliverLater(QFuture<Result> future, QObject* context, Done done) {
-    (void)future.then(context, [context, done = std::move(done)](Result result) mutable {
-        QMetaObject::invokeMethod(
-            context,
-            [done = std::move(done), result = std::move(result)]() mutable { done(result); },
-            Qt::QueuedConnection);
-    });
+void deliverLater(const QFuture<Result>& future, QObject* context, Done done) {
+    auto* watcher = new QFutureWatcher<Result>(context);
+    QObject::connect(watcher, &QFutureWatcher<Result>::finished, watcher,
+                     [watcher, done = std::move(done)]() mutable {
+                         watcher->deleteLater();
+                         // Out of the connection first: `handler` may end the
+                         // context, and with it this connection.
+                         auto handler = std::move(done);
+                         handler(watcher->result());
+                     });
+    watcher->setFuture(future);
 }
 
 /// `work()` runs on a QtConcurrent worker, `done(result)` later on the thread
