@@ -359,20 +359,52 @@
         <translation>Aus dem Histogramm: Otsu-Schwelle, %1 bis %2</translation>
     </message>
     <message>
-        <source>The file cannot be read.</source>
-        <translation>Die Datei kann nicht gelesen werden.</translation>
-    </message>
-    <message>
-        <source>The file is damaged or not of a supported type.</source>
-        <translation>Die Datei ist beschädigt oder hat kein unterstütztes Format.</translation>
-    </message>
-    <message>
         <source>A value is out of its range.</source>
         <translation>Ein Wert liegt außerhalb seines Bereichs.</translation>
     </message>
     <message>
         <source>The graphics system failed.</source>
         <translation>Das Grafiksystem hat versagt.</translation>
+    </message>
+    <message>
+        <source>An unexpected error occurred.</source>
+        <translation>Ein unerwarteter Fehler ist aufgetreten.</translation>
+    </message>
+    <message>
+        <source>An unexpected error occurred (%1).</source>
+        <translation>Ein unerwarteter Fehler ist aufgetreten (%1).</translation>
+    </message>
+    <message>
+        <source>%1 could not be read.</source>
+        <translation>%1 konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>A file could not be read.</source>
+        <translation>Eine Datei konnte nicht gelesen werden.</translation>
+    </message>
+    <message>
+        <source>%1 could not be written.</source>
+        <translation>%1 konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>A file could not be written.</source>
+        <translation>Eine Datei konnte nicht geschrieben werden.</translation>
+    </message>
+    <message>
+        <source>%1 is damaged, empty or not of a supported type.</source>
+        <translation>%1 ist beschädigt, leer oder hat kein unterstütztes Format.</translation>
+    </message>
+    <message>
+        <source>The data is damaged, empty or not of a supported type.</source>
+        <translation>Die Daten sind beschädigt, leer oder haben kein unterstütztes Format.</translation>
+    </message>
+    <message>
+        <source>%1 holds a value out of its range.</source>
+        <translation>%1 enthält einen Wert außerhalb des zulässigen Bereichs.</translation>
+    </message>
+    <message>
+        <source>The graphics system failed (%1).</source>
+        <translation>Das Grafiksystem ist ausgefallen (%1).</translation>
     </message>
 </context>
 <context>
@@ -508,13 +540,17 @@ Ersetzen?</translation>
         <source>The image shows exactly what the view shows. A preset sets its exact size and turns this off when its shape differs from the view&apos;s.</source>
         <translation>Das Bild zeigt genau, was die Ansicht zeigt. Eine Vorgabe setzt genau ihre Größe und schaltet dies aus, wenn ihr Seitenverhältnis von dem der Ansicht abweicht.</translation>
     </message>
+    <message>
+        <source>The image (%1) is wider than the view (%2): it shows more at the left and right than the view does.</source>
+        <translation>Das Bild (%1) ist breiter als die Ansicht (%2): Es zeigt links und rechts mehr als die Ansicht.</translation>
+    </message>
+    <message>
+        <source>The image (%1) is narrower than the view (%2): it leaves out part of the view at the left and right.</source>
+        <translation>Das Bild (%1) ist schmaler als die Ansicht (%2): Links und rechts fehlt ein Teil der Ansicht.</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ExportWorker</name>
-    <message>
-        <source>unexpected error</source>
-        <translation>unerwarteter Fehler</translation>
-    </message>
     <message>
         <source>Cancel</source>
         <translation>Abbrechen</translation>
@@ -1117,14 +1153,6 @@ Ersetzen?</translation>
         </translation>
     </message>
     <message>
-        <source>unexpected error: %1</source>
-        <translation>unerwarteter Fehler: %1</translation>
-    </message>
-    <message>
-        <source>unexpected error</source>
-        <translation>unerwarteter Fehler</translation>
-    </message>
-    <message>
         <source>Reading the DICOM headers of %1</source>
         <translation>DICOM-Header von %1 werden gelesen</translation>
     </message>
@@ -1466,7 +1494,7 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>&amp;Accession:</source>
-        <translation>&amp;Zugangsnummer:</translation>
+        <translation>A&amp;uftragsnummer:</translation>
     </message>
     <message>
         <source>Patient</source>
@@ -1490,7 +1518,7 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>Accession</source>
-        <translation>Zugangsnummer</translation>
+        <translation>Auftragsnummer</translation>
     </message>
     <message>
         <source>Series</source>
@@ -1804,14 +1832,6 @@ Ersetzen?</translation>
         <translation>Netze enthalten keine Patientendaten: Was Sie hier eingeben, steht im Bericht und in seinen DICOM-Exporten</translation>
     </message>
     <message>
-        <source>Family^Given (DICOM)</source>
-        <translation>Nachname^Vorname (DICOM)</translation>
-    </message>
-    <message>
-        <source>YYYY-MM-DD</source>
-        <translation>JJJJ-MM-TT</translation>
-    </message>
-    <message>
         <source>not given</source>
         <translation>nicht angegeben</translation>
     </message>
@@ -1844,10 +1864,6 @@ Ersetzen?</translation>
         <translation>Untersuchungsdatum</translation>
     </message>
     <message>
-        <source>The %1 &quot;%2&quot; is not a date: enter it as YYYY-MM-DD.</source>
-        <translation>„%2“ ist kein gültiges Datum (%1): bitte als JJJJ-MM-TT eingeben.</translation>
-    </message>
-    <message>
         <source>Disclai&amp;mer:</source>
         <translation>&amp;Hinweis:</translation>
     </message>
@@ -1877,7 +1893,7 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>Accession number:</source>
-        <translation>Zugangsnummer:</translation>
+        <translation>Auftragsnummer:</translation>
     </message>
     <message>
         <source>Referring physician:</source>
@@ -1890,6 +1906,14 @@ Ersetzen?</translation>
     <message>
         <source>Slice with segmentation:</source>
         <translation>Schicht mit Segmentierung:</translation>
+    </message>
+    <message>
+        <source>Family, Given</source>
+        <translation>Nachname, Vorname</translation>
+    </message>
+    <message>
+        <source>The %1 &quot;%2&quot; is not a date: enter it as %3 (for example %4).</source>
+        <translation>„%2“ ist kein gültiges Datum (%1): bitte als %3 eingeben (zum Beispiel %4).</translation>
     </message>
 </context>
 <context>
@@ -1908,13 +1932,6 @@ Ersetzen?</translation>
     </message>
 </context>
 <context>
-    <name>vv::gui::SegmentationTask</name>
-    <message>
-        <source>unexpected error: %1</source>
-        <translation>unerwarteter Fehler: %1</translation>
-    </message>
-</context>
-<context>
     <name>vv::gui::SendDialog</name>
     <message>
         <source>Send to PACS</source>
@@ -1930,7 +1947,7 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>The PDF report (DICOM Encapsulated PDF)</source>
-        <translation>Der PDF-Befund (DICOM Encapsulated PDF)</translation>
+        <translation>Der PDF-Bericht (DICOM Encapsulated PDF)</translation>
     </message>
     <message>
         <source>PACS node:</source>
@@ -1966,11 +1983,11 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>No temporary folder for the report: %1</source>
-        <translation>Kein temporärer Ordner für den Befund: %1</translation>
+        <translation>Kein temporärer Ordner für den Bericht: %1</translation>
     </message>
     <message>
         <source>Sending the report to %1</source>
-        <translation>Befund wird an %1 gesendet</translation>
+        <translation>Bericht wird an %1 gesendet</translation>
     </message>
     <message>
         <source>Sending to %1…</source>
@@ -1978,7 +1995,7 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>The report could not be made: %1</source>
-        <translation>Der Befund ließ sich nicht erstellen: %1</translation>
+        <translation>Der Bericht ließ sich nicht erstellen: %1</translation>
     </message>
     <message>
         <source>Cancelled: nothing more was sent.</source>
@@ -1986,15 +2003,15 @@ Ersetzen?</translation>
     </message>
     <message>
         <source>Making the report…</source>
-        <translation>Befund wird erstellt…</translation>
+        <translation>Bericht wird erstellt…</translation>
     </message>
     <message>
         <source>Report image (Secondary Capture)</source>
-        <translation>Befundbild (Secondary Capture)</translation>
+        <translation>Berichtsbild (Secondary Capture)</translation>
     </message>
     <message>
         <source>Report PDF (Encapsulated PDF)</source>
-        <translation>Befund-PDF (Encapsulated PDF)</translation>
+        <translation>Berichts-PDF (Encapsulated PDF)</translation>
     </message>
     <message>
         <source>Not sent</source>
@@ -2076,10 +2093,6 @@ Ersetzen?</translation>
         <translation>Größe</translation>
     </message>
     <message>
-        <source>Spacing (mm)</source>
-        <translation>Abstand (mm)</translation>
-    </message>
-    <message>
         <source>Patient %1</source>
         <translation>Patient %1</translation>
     </message>
@@ -2152,10 +2165,6 @@ Ersetzen?</translation>
         <translation>CT-Angiographie: 200 bis 700 HU</translation>
     </message>
     <message>
-        <source>from the histogram when loaded</source>
-        <translation>beim Laden aus dem Histogramm</translation>
-    </message>
-    <message>
         <source>%1 series %2</source>
         <translation>%1-Serie %2</translation>
     </message>
@@ -2166,6 +2175,22 @@ Ersetzen?</translation>
     <message>
         <source>%1 series</source>
         <translation>%1-Serie</translation>
+    </message>
+    <message>
+        <source>Enter both ends of the threshold range, or use the default for the modality</source>
+        <translation>Beide Grenzen des Schwellenbereichs eingeben oder den Standard der Modalität verwenden</translation>
+    </message>
+    <message>
+        <source>%1: from the image histogram when loaded</source>
+        <translation>%1: beim Laden aus dem Bildhistogramm</translation>
+    </message>
+    <message>
+        <source>This series</source>
+        <translation>Diese Serie</translation>
+    </message>
+    <message>
+        <source>Voxel spacing (mm)</source>
+        <translation>Voxelabstand (mm)</translation>
     </message>
 </context>
 <context>
@@ -2310,8 +2335,13 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
     <name>vv::gui::StudyDate</name>
     <message>
         <source>yyyy-MM-dd</source>
-        <extracomment>Date format of study dates on screen (QDate::toString), as the report&apos;s: dd.MM.yyyy in German.</extracomment>
+        <extracomment>Date format of dates on screen (QDate::toString), as the report&apos;s: dd.MM.yyyy in German.</extracomment>
         <translation>dd.MM.yyyy</translation>
+    </message>
+    <message>
+        <source>YYYY-MM-DD</source>
+        <extracomment>How a date is typed, in the letters of the language: the date format of dates on screen (&quot;yyyy-MM-dd&quot; above) with Y = year, M = month, D = day; TT.MM.JJJJ in German.</extracomment>
+        <translation>TT.MM.JJJJ</translation>
     </message>
 </context>
 <context>
@@ -2420,10 +2450,6 @@ Grafiktreiber aktualisieren oder mit dem Software-Renderer von Mesa starten (LIB
         <translation>%1: %2 %3</translation>
     </message>
     <message>
-        <source>Depth: %1 mm behind the nearest vessel point</source>
-        <translation>Tiefe: %1 mm hinter dem nächstgelegenen Gefäßpunkt</translation>
-    </message>
-    <message>
         <source>Left-drag: rotate · Right/middle or Shift+left-drag: pan · Wheel: zoom
 R: reset view · F: fit to data · Ctrl+click: measure</source>
         <translation>Ziehen links: drehen · Ziehen rechts/Mitte oder Umschalt+links: verschieben · Mausrad: zoomen
@@ -2440,6 +2466,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>%1 %2 (%3)</source>
         <translation>%1 %2 (%3)</translation>
+    </message>
+    <message>
+        <source>%1: %2 mm</source>
+        <translation>%1: %2 mm</translation>
     </message>
 </context>
 <context>
@@ -3301,30 +3331,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>… %1 weitere</translation>
     </message>
     <message>
-        <source>Depth behind nearest vessel (%1)</source>
-        <translation>Tiefe hinter dem nächsten Gefäß (%1)</translation>
-    </message>
-    <message>
-        <source>Depth behind nearest vessel</source>
-        <translation>Tiefe hinter dem nächsten Gefäß</translation>
-    </message>
-    <message>
-        <source>Depth behind vessel (%1)</source>
-        <translation>Tiefe hinter Gefäß (%1)</translation>
-    </message>
-    <message>
-        <source>Depth behind vessel</source>
-        <translation>Tiefe hinter Gefäß</translation>
-    </message>
-    <message>
-        <source>Depth (%1)</source>
-        <translation>Tiefe (%1)</translation>
-    </message>
-    <message>
-        <source>Depth</source>
-        <translation>Tiefe</translation>
-    </message>
-    <message>
         <source>Label %1</source>
         <translation>Label %1</translation>
     </message>
@@ -3335,6 +3341,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>hover names a label</source>
         <translation>Mauszeiger nennt das Label</translation>
+    </message>
+    <message>
+        <source>Depth behind the frontmost vessel</source>
+        <translation>Tiefe hinter dem vordersten Gefäß</translation>
     </message>
 </context>
 <context>
@@ -3476,7 +3486,7 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     </message>
     <message>
         <source>Accession number</source>
-        <translation>Zugangsnummer</translation>
+        <translation>Auftragsnummer</translation>
     </message>
     <message>
         <source>Referring physician</source>
@@ -3581,10 +3591,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Second view</source>
         <translation>Zweite Ansicht</translation>
-    </message>
-    <message>
-        <source>%1 (%2)</source>
-        <translation>%1 (%2)</translation>
     </message>
     <message>
         <source>Parameter statistics — %1</source>

@@ -5,6 +5,7 @@
 #include <QDir>
 #include <QLibraryInfo>
 #include <QLocale>
+#include <QStringList>
 #include <QTranslator>
 #include <optional>
 
@@ -38,6 +39,35 @@ QStringList availableLanguages() {
         }
     }
     return languages;
+}
+
+QString missingTranslation(const QString& language) {
+    const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
+    if (locale.language() == QLocale::English || locale.language() == QLocale::C) {
+        return {};
+    }
+    const QString name = QLocale::languageToString(locale.language());
+    const auto dir = translationsDir();
+    if (!dir) {
+        QStringList searched;
+        for (const auto& candidate : dataDirCandidates(executableDir())) {
+            searched << QDir::toNativeSeparators(
+                QString::fromStdString((candidate / "translations").string()));
+        }
+        return QStringLiteral(
+                   "The %1 translation was not found: VesselView looks for its "
+                   "translations next to the program (in %2). The user interface "
+                   "is in English.")
+            .arg(name, searched.isEmpty() ? QStringLiteral("no folder")
+                                          : searched.join(QStringLiteral(", ")));
+    }
+    QTranslator probe;
+    if (language.isEmpty() ||
+        probe.load(locale, QStringLiteral("vesselview"), QStringLiteral("_"), *dir)) {
+        return {};
+    }
+    return QStringLiteral("There is no %1 translation in %2. The user interface is in English.")
+        .arg(name, QDir::toNativeSeparators(*dir));
 }
 
 void useEnglishLocale() {

@@ -26,6 +26,16 @@ namespace vv::app {
 /// needs no translator). Never throws.
 QString installTranslations(QCoreApplication& app, const QString& language);
 
+/// Why installTranslations(`language`) shows English although another
+/// language was asked for: VesselView's translations folder was not found
+/// next to the executable (a program started outside its build or install
+/// tree: the folders searched are named), or `language` was asked for
+/// explicitly and has no translation there. Empty when English was asked
+/// for, the translation is there, or the system's language (`language`
+/// empty) simply has no translation. In English: the translation itself is
+/// what is missing. Never throws.
+[[nodiscard]] QString missingTranslation(const QString& language);
+
 /// Makes English the default QLocale when the system locale's language is
 /// not English (an English system keeps its own, e.g. en_GB dates). For
 /// texts in English: the CLI's images and any untranslated UI. Never throws.

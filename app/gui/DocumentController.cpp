@@ -77,8 +77,9 @@ void DocumentController::openDicom(const QString& path) {
                 if (scan->allSeries().empty()) {
                     const int skipped = static_cast<int>(scan->skipped.size());
                     fail(tr("Cannot open"),
-                         tr("%1: no DICOM images found (%n file(s) skipped)", nullptr, skipped)
-                             .arg(path));
+                         {tr("%1: no DICOM images found (%n file(s) skipped)", nullptr, skipped)
+                              .arg(path),
+                          {}});
                     return;
                 }
                 emit seriesScanned(std::move(scan), path);
@@ -121,7 +122,7 @@ bool DocumentController::openSession(const QString& path) {
     try {
         session = loadSession(toPath(path));
     } catch (const vv::Error& e) {
-        fail(tr("Cannot open the session"), QString::fromStdString(e.what()));
+        fail(tr("Cannot open the session"), describeProblem(e, FileAccess::Reading));
         return false;
     }
     if (session.files.isEmpty()) {
@@ -179,7 +180,7 @@ bool DocumentController::saveSession(const QString& path, Session view,
     try {
         app::saveSession(toPath(path), view);
     } catch (const vv::Error& e) {
-        fail(tr("Cannot save the session"), QString::fromStdString(e.what()));
+        fail(tr("Cannot save the session"), describeProblem(e, FileAccess::Writing));
         return false;
     }
     return true;
@@ -321,13 +322,15 @@ void DocumentController::startTask(MeshLoadTask* task, const QStringList& opened
                 taskLoaded(task, opened, std::move(scene));
             });
     connect(task, &MeshLoadTask::failed, this,
-            [this, task](const QString& file, const QString& problem) {
-                QString what = file;
-                if (what.isEmpty() && !task->files().empty()) {
-                    what = QString::fromStdString(task->files().front().string());
+            [this, task](const QString& file, const ProblemText& problem) {
+                ProblemText shown = problem;
+                if (file.isEmpty() && !task->files().empty()) {
+                    // The problem names no file: the one being opened.
+                    shown.summary = tr("%1: %2").arg(
+                        QString::fromStdString(task->files().front().string()), problem.summary);
                 }
                 pendingSession_.reset();  // its files did not load
-                fail(tr("Cannot open"), what.isEmpty() ? problem : tr("%1: %2").arg(what, problem));
+                fail(tr("Cannot open"), shown);
             });
     connect(task, &MeshLoadTask::cancelled, this, [this] {
         pendingSession_.reset();
@@ -421,9 +424,9 @@ void DocumentController::setVolume(std::shared_ptr<const scene::Volume> volume,
     emit volumeChanged(volume_, loadedWith, range);
 }
 
-void DocumentController::fail(const QString& title, const QString& message) {
-    lastError_ = message;
-    emit failed(title, message);
+void DocumentController::fail(const QString& title, const ProblemText& problem) {
+    lastError_ = problem.line();
+    emit failed(title, problem);
 }
 
 }  // namespace vv::gui

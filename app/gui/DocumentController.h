@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "gui/EngineTexts.h"
 #include "gui/Session.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/report/ReportJob.h"
@@ -183,8 +184,9 @@ class DocumentController : public QObject {
     /// The load was cancelled; the shown document stays.
     void loadCancelled();
     /// Something could not be opened or saved: `title` for a message box,
-    /// `message` ("file: problem") is lastError(). The shown document stays.
-    void failed(const QString& title, const QString& message);
+    /// `problem` what went wrong (its line() is lastError()). The shown
+    /// document stays.
+    void failed(const QString& title, const vv::gui::ProblemText& problem);
     /// openDicom() read the headers under `path`: choose a series of `scan`
     /// and call openSeries().
     void seriesScanned(std::shared_ptr<const vv::dicom::DicomScanResult> scan, const QString& path);
@@ -224,7 +226,7 @@ class DocumentController : public QObject {
     void setVolume(std::shared_ptr<const scene::Volume> volume,
                    const segmentation::SceneSourceOptions& loadedWith,
                    const segmentation::ThresholdRange& range);
-    void fail(const QString& title, const QString& message);
+    void fail(const QString& title, const ProblemText& problem);
 
     QPointer<MeshLoadTask> task_;
     QPointer<MeshLoadTask> demoTask_;        ///< the load openDemo() started

@@ -2,9 +2,12 @@
 #include "gui/EngineTexts.h"
 
 #include <QCoreApplication>
+#include <QDir>
+#include <QMessageBox>
 #include <array>
 #include <optional>
 #include <string_view>
+#include <utility>
 
 #include "vv/core/Error.h"
 #include "vv/segmentation/VolumeSegmentation.h"
@@ -121,26 +124,72 @@ QString thresholdRuleText(const segmentation::ThresholdRange& range,
     return QString::fromStdString(range.rule);
 }
 
-QString problemText(const vv::Error& error) {
-    QString detail = QString::fromStdString(error.problem());
-    const char* kind = nullptr;
+namespace {
+
+/// True when the UI speaks English: the modules' details are then readable as they are.
+bool englishUi() {
+    const char* probe = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "An unexpected error occurred.");
+    return QCoreApplication::translate(kContext, probe) == QLatin1String(probe);
+}
+
+}  // namespace
+
+QString ProblemText::line() const {
+    return details.isEmpty() || !englishUi() ? summary : summary + QLatin1Char(' ') + details;
+}
+
+ProblemText describeProblem(const std::exception& error, FileAccess access) {
+    const auto* known = dynamic_cast<const vv::Error*>(&error);
+    const QString file =
+        known != nullptr && !known->file().empty()
+            ? QDir::toNativeSeparators(QString::fromStdString(known->file().string()))
+            : QString();
+    // Pairs: with the file's name, without one.
+    std::pair<const char*, const char*> kind{
+        QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "An unexpected error occurred (%1)."),
+        QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "An unexpected error occurred.")};
     if (dynamic_cast<const IoError*>(&error) != nullptr) {
-        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The file cannot be read.");
+        kind =
+            access == FileAccess::Reading
+                ? std::pair{QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "%1 could not be read."),
+                            QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "A file could not be read.")}
+                : std::pair{
+                      QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "%1 could not be written."),
+                      QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "A file could not be written.")};
     } else if (dynamic_cast<const FormatError*>(&error) != nullptr) {
-        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts",
-                                 "The file is damaged or not of a supported type.");
+        kind = {QT_TRANSLATE_NOOP("vv::gui::EngineTexts",
+                                  "%1 is damaged, empty or not of a supported type."),
+                QT_TRANSLATE_NOOP("vv::gui::EngineTexts",
+                                  "The data is damaged, empty or not of a supported type.")};
     } else if (dynamic_cast<const InvalidArgumentError*>(&error) != nullptr) {
-        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "A value is out of its range.");
+        kind = {QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "%1 holds a value out of its range."),
+                QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "A value is out of its range.")};
     } else if (dynamic_cast<const RenderError*>(&error) != nullptr) {
-        kind = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The graphics system failed.");
+        kind = {QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The graphics system failed (%1)."),
+                QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "The graphics system failed.")};
     }
-    if (kind == nullptr) {
-        return detail;
+    ProblemText text;
+    text.summary = file.isEmpty() ? QCoreApplication::translate(kContext, kind.second)
+                                  : QCoreApplication::translate(kContext, kind.first).arg(file);
+    text.details = QString::fromStdString(known != nullptr ? known->what() : error.what());
+    return text;
+}
+
+void showProblem(QWidget* parent, const QString& objectName, const QString& title,
+                 const ProblemText& problem) {
+    auto* box =
+        new QMessageBox(QMessageBox::Warning, title, problem.summary, QMessageBox::Ok, parent);
+    box->setObjectName(objectName);
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    if (!problem.details.isEmpty()) {
+        if (englishUi()) {
+            box->setInformativeText(problem.details);
+        } else {
+            box->setDetailedText(problem.details);
+        }
     }
-    const QString translated = QCoreApplication::translate("vv::gui::EngineTexts", kind);
-    // English UI: the detail alone says it precisely.
-    return translated == QLatin1String(kind) ? detail
-                                             : QStringLiteral("%1 (%2)").arg(translated, detail);
+    // Window-modal but not blocking: the event loop (and tests) keep running.
+    box->open();
 }
 
 }  // namespace vv::gui

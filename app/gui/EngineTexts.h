@@ -2,7 +2,10 @@
 #pragma once
 
 #include <QString>
+#include <exception>
 #include <functional>
+
+class QWidget;
 
 namespace vv {
 class Error;
@@ -33,12 +36,33 @@ namespace vv::gui {
 [[nodiscard]] QString thresholdRuleText(const segmentation::ThresholdRange& range,
                                         const std::function<QString(double)>& value);
 
-/// What went wrong, for a person: `error`'s problem (the modules' English
-/// text, which names the cause precisely). In a translated UI it is led by a
-/// sentence in the UI language saying what kind of problem it is (the file
-/// cannot be read; is damaged or of an unsupported type; a value is out of
-/// range; the graphics system failed), with the English detail in
-/// parentheses. Never throws.
-[[nodiscard]] QString problemText(const vv::Error& error);
+/// A problem as a person reads it: `summary` in the UI language says what
+/// kind of problem it is and names the file; `details` is the module's own
+/// text (English: the modules hold no Qt), which names the cause precisely.
+/// A message box shows `summary` as its text and `details` in its Details
+/// part (showProblem()); never one English sentence inside a German one.
+struct ProblemText {
+    QString summary;
+    QString details;  ///< may be empty
+    /// One line for a status bar or a log: the summary, and the details in
+    /// an English UI (where they are in the UI's language).
+    [[nodiscard]] QString line() const;
+};
+
+/// What the caller was doing with the file when it failed (an IoError says
+/// "could not be read" or "could not be written").
+enum class FileAccess { Reading, Writing };
+
+/// `error` for a person (see ProblemText): the kind of a vv::Error (the file
+/// cannot be read / written; is damaged, empty or of an unsupported type; a
+/// value is out of range; the graphics system failed), naming error.file()
+/// when it has one; any other exception is an unexpected error. Never throws.
+[[nodiscard]] ProblemText describeProblem(const std::exception& error, FileAccess access);
+
+/// A message box (window-modal, not blocking, deleted when closed) with
+/// `problem`: its summary as the text, the details as the informative text
+/// in an English UI and behind "Show Details…" in any other language.
+void showProblem(QWidget* parent, const QString& objectName, const QString& title,
+                 const ProblemText& problem);
 
 }  // namespace vv::gui

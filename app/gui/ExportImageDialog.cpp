@@ -12,6 +12,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalBlocker>
@@ -116,6 +117,10 @@ ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent
         tr("The image shows exactly what the view shows. A preset sets its exact size and "
            "turns this off when its shape differs from the view's."));
     form->addRow(QString(), keepAspect_);
+    aspectNote_ = new QLabel(this);
+    aspectNote_->setObjectName(QStringLiteral("aspectNote"));
+    aspectNote_->setWordWrap(true);
+    form->addRow(QString(), aspectNote_);
     legends_ = new QCheckBox(tr("&Legends"), this);
     legends_->setChecked(viewer.legendsVisible());
     form->addRow(QString(), legends_);
@@ -141,7 +146,34 @@ ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent
             const QSignalBlocker block(sizes_);
             sizes_->setCurrentIndex(sizes_->findData(Custom));
         }
+        updateAspectNote();
     });
+    updateAspectNote();
+}
+
+void ExportImageDialog::updateAspectNote() {
+    const QSize size = imageSize();
+    // The same shape up to the rounding of one side to whole pixels.
+    const bool same =
+        std::abs(std::lround(size.width() / viewAspect()) - static_cast<long>(size.height())) <= 1;
+    aspectNote_->setVisible(!same);
+    if (same) {
+        aspectNote_->clear();
+        return;
+    }
+    const double aspect = static_cast<double>(size.width()) / size.height();
+    const auto ratio = [](double a) {
+        return QLocale().toString(a, 'f', 2) + QStringLiteral(":1");
+    };
+    // The height of the view is kept (the camera's vertical field of view).
+    aspectNote_->setText(
+        aspect > viewAspect()
+            ? tr("The image (%1) is wider than the view (%2): it shows more at the left and "
+                 "right than the view does.")
+                  .arg(ratio(aspect), ratio(viewAspect()))
+            : tr("The image (%1) is narrower than the view (%2): it leaves out part of the "
+                 "view at the left and right.")
+                  .arg(ratio(aspect), ratio(viewAspect())));
 }
 
 QSize ExportImageDialog::viewSize() const {
@@ -175,6 +207,7 @@ void ExportImageDialog::presetChosen() {
     }
     width_->setValue(size.width());
     height_->setValue(size.height());
+    updateAspectNote();
 }
 
 void ExportImageDialog::heightFollowsWidth() {
@@ -188,6 +221,7 @@ void ExportImageDialog::widthEdited() {
     }
     const QSignalBlocker block(sizes_);
     sizes_->setCurrentIndex(sizes_->findData(Custom));
+    updateAspectNote();
 }
 
 void ExportImageDialog::heightEdited() {
@@ -198,6 +232,7 @@ void ExportImageDialog::heightEdited() {
     }
     const QSignalBlocker block(sizes_);
     sizes_->setCurrentIndex(sizes_->findData(Custom));
+    updateAspectNote();
 }
 
 QString ExportImageDialog::problem() const {

@@ -9,6 +9,7 @@
 
 class QCheckBox;
 class QComboBox;
+class QLabel;
 class QLineEdit;
 class QSpinBox;
 
@@ -22,7 +23,8 @@ class ViewerWidget;
 /// (report::kMaxExportSide, report::kMaxExportPixels; larger sizes are
 /// refused with a message; a preset is always exactly its size, and choosing
 /// one whose shape differs from the view's turns "keep the view's aspect
-/// ratio" off), optionally keeping the view's aspect ratio, with
+/// ratio" off; a note says then how the image differs from the view),
+/// optionally keeping the view's aspect ratio, with
 /// or without legends, on the background or transparent. It proposes
 /// vessels.png in the last export folder (vessels-2.png, … when taken).
 /// accept() checks the fields (a message box says what is wrong; the dialog
@@ -43,6 +45,9 @@ class ExportImageDialog : public ExportDialog {
     [[nodiscard]] QSpinBox* widthBox() const noexcept { return width_; }
     [[nodiscard]] QSpinBox* heightBox() const noexcept { return height_; }
     [[nodiscard]] QCheckBox* keepAspectBox() const noexcept { return keepAspect_; }
+    /// Says how the image differs from the view when their shapes differ
+    /// (hidden when they are the same).
+    [[nodiscard]] QLabel* aspectNote() const noexcept { return aspectNote_; }
     [[nodiscard]] QCheckBox* legendsBox() const noexcept { return legends_; }
     [[nodiscard]] QCheckBox* transparentBox() const noexcept { return transparent_; }
 
@@ -62,6 +67,7 @@ class ExportImageDialog : public ExportDialog {
     /// The height for the width in the view's shape.
     void heightFollowsWidth();
     void heightEdited();
+    void updateAspectNote();
     [[nodiscard]] QSize viewSize() const;
     [[nodiscard]] double viewAspect() const;
     /// The field's path, ".png" added when it has no suffix.
@@ -73,6 +79,7 @@ class ExportImageDialog : public ExportDialog {
     QSpinBox* width_ = nullptr;
     QSpinBox* height_ = nullptr;
     QCheckBox* keepAspect_ = nullptr;
+    QLabel* aspectNote_ = nullptr;
     QCheckBox* legends_ = nullptr;
     QCheckBox* transparent_ = nullptr;
 };

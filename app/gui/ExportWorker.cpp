@@ -15,6 +15,7 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 #include <utility>
 
@@ -181,8 +182,8 @@ void ExportWorker::start() {
     try {
         surface_ = render::OffscreenRenderer::createSurface();
     } catch (const vv::Error& e) {
-        const QString message = QString::fromStdString(e.what());
-        QTimer::singleShot(0, this, [this, message] { deliver(Outcome::Failed, message); });
+        const ProblemText problem = describeProblem(e, FileAccess::Writing);
+        QTimer::singleShot(0, this, [this, problem] { deliver(Outcome::Failed, {}, problem); });
         return;
     }
     thread_ = std::jthread(
@@ -216,6 +217,7 @@ void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) 
         stop);
     Outcome outcome = Outcome::Failed;
     QString message;
+    ProblemText problem;
     try {
         render::OffscreenRenderer renderer(surface);
         progress.throwIfCancelled();
@@ -224,22 +226,24 @@ void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) 
     } catch (const CancelledError&) {
         outcome = Outcome::Cancelled;
     } catch (const std::exception& e) {
-        message = QString::fromStdString(e.what());
+        problem = describeProblem(e, FileAccess::Writing);
     } catch (...) {
-        message = tr("unexpected error");
+        problem = describeProblem(std::runtime_error("unknown exception"), FileAccess::Writing);
     }
     QMetaObject::invokeMethod(
-        this, [this, outcome, message] { deliver(outcome, message); }, Qt::QueuedConnection);
+        this, [this, outcome, message, problem] { deliver(outcome, message, problem); },
+        Qt::QueuedConnection);
 }
 
-void ExportWorker::deliver(Outcome outcome, const QString& message) {
+void ExportWorker::deliver(Outcome outcome, const QString& message, const ProblemText& problem) {
     running_ = false;
     switch (outcome) {
         case Outcome::Succeeded:
             emit succeeded(message);
             break;
         case Outcome::Failed:
-            emit failed(message);
+            problem_ = problem;
+            emit failed(problem.line());
             break;
         case Outcome::Cancelled:
             emit cancelled();
@@ -278,14 +282,11 @@ void ExportWorker::watch(ExportWorker* worker, QMainWindow* window) {
         window->statusBar()->showMessage(tr("Export cancelled: nothing was written"),
                                          kStatusTimeoutMs);
     });
-    connect(worker, &ExportWorker::failed, window, [window](const QString& message) {
-        window->statusBar()->showMessage(tr("Export failed: %1").arg(message), kStatusTimeoutMs);
-        // Window-modal but not blocking: the event loop (and tests) keep running.
-        auto* box = new QMessageBox(QMessageBox::Warning, tr("Cannot export"), message,
-                                    QMessageBox::Ok, window);
-        box->setObjectName(QStringLiteral("exportErrorBox"));
-        box->setAttribute(Qt::WA_DeleteOnClose);
-        box->open();
+    connect(worker, &ExportWorker::failed, window, [window, worker] {
+        const ProblemText& problem = worker->problem();
+        window->statusBar()->showMessage(tr("Export failed: %1").arg(problem.summary),
+                                         kStatusTimeoutMs);
+        showProblem(window, QStringLiteral("exportErrorBox"), tr("Cannot export"), problem);
     });
     connect(worker, &ExportWorker::finished, dialog, &QProgressDialog::close);
     connect(worker, &ExportWorker::finished, worker, &QObject::deleteLater);

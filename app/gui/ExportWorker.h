@@ -11,6 +11,7 @@
 #include <stop_token>
 #include <thread>
 
+#include "gui/EngineTexts.h"
 #include "vv/core/Progress.h"
 #include "vv/render/OffscreenRenderer.h"
 
@@ -74,6 +75,8 @@ class ExportWorker : public QObject {
     [[nodiscard]] bool isRunning() const noexcept { return running_; }
     /// What the job does, for the progress dialog ("Exporting view.png").
     [[nodiscard]] const QString& description() const noexcept { return description_; }
+    /// Why the job failed, once failed() came (describeProblem()).
+    [[nodiscard]] const ProblemText& problem() const noexcept { return problem_; }
 
     /// A window-modal progress dialog with Cancel for `worker` (deleted with
     /// it), and the outcome in `window`: a status bar message on success, a
@@ -87,7 +90,7 @@ class ExportWorker : public QObject {
   signals:
     void progressChanged(double fraction, const QString& stage);
     void succeeded(const QString& message);
-    /// "file: problem".
+    /// problem().line(): the file and the problem in the UI language.
     void failed(const QString& message);
     void cancelled();
     /// After succeeded(), failed() or cancelled().
@@ -96,9 +99,11 @@ class ExportWorker : public QObject {
   private:
     enum class Outcome { Succeeded, Failed, Cancelled };
     void run(QOffscreenSurface& surface, const std::stop_token& stop);
-    void deliver(Outcome outcome, const QString& message);
+    /// `message`: the status bar's on success; `problem` on failure.
+    void deliver(Outcome outcome, const QString& message, const ProblemText& problem = {});
 
     QString description_;
+    ProblemText problem_;
     Job job_;
     std::unique_ptr<QOffscreenSurface> surface_;
     bool started_ = false;

@@ -191,6 +191,7 @@ void MainWindow::connectDocument() {
                    const segmentation::ThresholdRange& range) {
                 segmentationPanel_->setVolume(volume, loadedWith.segmentation, range,
                                               loadedWith.surface);
+                placeSegmentationSection(volume != nullptr);
                 slices_->setVolume(volume, document_->labelMap());
             });
     connect(document_, &DocumentController::recentFilesChanged, this,
@@ -650,18 +651,40 @@ void MainWindow::updateRangeLabel() {
                                   QLocale().toString(range->second, 'g', 4)));
 }
 
-void MainWindow::showError(const QString& title, const QString& message) {
-    statusLabel_->setText(title + QStringLiteral(": ") + message);
+void MainWindow::showError(const QString& title, const ProblemText& problem) {
+    statusLabel_->setText(title + QStringLiteral(": ") + problem.summary);
     if (screenshot_ != nullptr) {
-        screenshot_->fail(message);
+        screenshot_->fail(problem.summary + QLatin1Char(' ') + problem.details);
         return;
     }
-    // Window-modal but not blocking: the event loop (and tests) keep running.
-    auto* box = new QMessageBox(QMessageBox::Warning, title, message, QMessageBox::Ok, this);
-    box->setObjectName(QStringLiteral("errorMessageBox"));
+    showProblem(this, QStringLiteral("errorMessageBox"), title, problem);
+    emit loadFailed(problem.line());
+}
+
+void MainWindow::placeSegmentationSection(bool volumeShown) {
+    panels::CollapsibleSection* section = sidePanel_->sectionOf(segmentationPanel_);
+    if (section == nullptr) {
+        return;
+    }
+    // A scene from a volume is shaped by its segmentation: on top and open.
+    // Any other scene cannot use it: back to the bottom, as it was.
+    sidePanel_->moveSection(section,
+                            volumeShown ? 0 : static_cast<int>(sidePanel_->sections().size()));
+    if (volumeShown) {
+        sidePanel_->reveal(segmentationPanel_);
+    }
+}
+
+void MainWindow::showLanguageProblem(const QString& note) {
+    if (screenshot_ != nullptr) {
+        return;
+    }
+    // No tr(): the translation is what is missing.
+    auto* box = new QMessageBox(QMessageBox::Information, QStringLiteral("Language"), note,
+                                QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("languageProblemBox"));
     box->setAttribute(Qt::WA_DeleteOnClose);
     box->open();
-    emit loadFailed(message);
 }
 
 void MainWindow::rebuildRecentMenu() {

@@ -90,6 +90,11 @@ class MainWindow : public QMainWindow {
     /// Opens the demo: $VV_DEMO_FILE, else the bundled vessel-tree.vtp (build
     /// tree or installed), else generates it on a worker.
     void openDemo() { document_->openDemo(); }
+    /// Says that the user interface is in English although another language
+    /// was asked for (missingTranslation()): a message box (object name
+    /// "languageProblemBox"; window-modal, not blocking; none in screenshot
+    /// mode). The text is English: the translation is what is missing.
+    void showLanguageProblem(const QString& note);
     /// Shows an already loaded scene (nullptr clears); `title` names it in the
     /// window title. Selects the default array (wss when present).
     void setScene(std::shared_ptr<const scene::Scene> scene, const QString& title) {
@@ -252,7 +257,10 @@ class MainWindow : public QMainWindow {
     /// The series chooser for a DICOM scan (window-modal, not blocking).
     void chooseSeries(const std::shared_ptr<const dicom::DicomScanResult>& scan,
                       const QString& path);
-    void showError(const QString& title, const QString& message);
+    void showError(const QString& title, const ProblemText& problem);
+    /// The Segmentation section on top and open while a volume's scene is
+    /// shown (`volumeShown`), else at the bottom.
+    void placeSegmentationSection(bool volumeShown);
     void rebuildRecentMenu();
     void updateRangeLabel();
     void onFrameRendered();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <mutex>
+#include <stdexcept>
 #include <string>
 
 #include "gui/EngineTexts.h"
@@ -139,11 +140,12 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
         result.cancelled = true;
     } catch (const vv::Error& e) {
         result.file = toQString(e.file());
-        result.problem = problemText(e);
+        result.problem = describeProblem(e, FileAccess::Reading);
     } catch (const std::exception& e) {
-        result.problem = tr("unexpected error: %1").arg(QString::fromStdString(e.what()));
+        result.problem = describeProblem(e, FileAccess::Reading);
     } catch (...) {
-        result.problem = tr("unexpected error");
+        result.problem =
+            describeProblem(std::runtime_error("unknown exception"), FileAccess::Reading);
     }
     return result;
 }

@@ -9,6 +9,7 @@
 #include <stop_token>
 #include <vector>
 
+#include "gui/EngineTexts.h"
 #include "gui/WorkerRun.h"
 #include "vv/scene/Mesh.h"
 #include "vv/segmentation/SceneSource.h"
@@ -81,8 +82,8 @@ class MeshLoadTask : public QObject {
     /// The scene is ready.
     void loaded(std::shared_ptr<const vv::scene::Scene> scene);
     /// Loading (or scanning) failed; `file` is the file concerned (may be empty), `problem` the
-    /// reason.
-    void failed(const QString& file, const QString& problem);
+    /// reason (describeProblem()).
+    void failed(const QString& file, const vv::gui::ProblemText& problem);
     void cancelled();
     /// After loaded(), scanned(), failed() or cancelled().
     void finished();
@@ -93,7 +94,7 @@ class MeshLoadTask : public QObject {
         std::shared_ptr<const dicom::DicomScanResult> scan;
         segmentation::SceneSourceReport dicomReport;
         QString file;
-        QString problem;
+        ProblemText problem;
         bool cancelled = false;
     };
 

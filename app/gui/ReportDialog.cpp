@@ -15,6 +15,7 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSettings>
@@ -26,10 +27,12 @@
 #include <utility>
 #include <vector>
 
+#include "gui/DateText.h"
 #include "gui/ExportImageDialog.h"
 #include "gui/ExportWorker.h"
 #include "gui/PathField.h"
 #include "gui/ViewerWidget.h"
+#include "vv/dicom/PersonName.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/report/ParameterStats.h"
 #include "vv/report/PdfReport.h"
@@ -64,18 +67,16 @@ QHBoxLayout* withBrowse(QLineEdit* edit, const QString& title, const QString& fi
     return row;
 }
 
-/// A DICOM date (YYYYMMDD) from what the user typed as YYYY-MM-DD or
-/// YYYYMMDD; "" for an empty field; nullopt when it is no valid date.
+/// A DICOM date (YYYYMMDD) from what the user typed (parseUiDate(): the UI
+/// language's format, ISO or DICOM); "" for an empty field; nullopt when it
+/// is no valid date.
 std::optional<std::string> dicomDate(const QString& typed) {
-    QString digits = typed.trimmed();
-    digits.remove(QLatin1Char('-'));
-    if (digits.isEmpty()) {
-        return std::string();
-    }
-    if (digits.size() != 8 || !QDate::fromString(digits, QStringLiteral("yyyyMMdd")).isValid()) {
+    const std::optional<QDate> date = parseUiDate(typed);
+    if (!date) {
         return std::nullopt;
     }
-    return digits.toStdString();
+    return date->isNull() ? std::string()
+                          : date->toString(QStringLiteral("yyyyMMdd")).toStdString();
 }
 
 /// `pdf` with its suffix replaced: "report.pdf" -> "report-sc.dcm".
@@ -216,18 +217,19 @@ void ReportDialog::addPatientFields() {
         edit->setPlaceholderText(placeholder);
         fields->addRow(label, edit);
     };
-    line(patientName_, tr("Name:"), tr("Family^Given (DICOM)"));
+    // Names as every dialog and the report write them (Family^Given also works).
+    line(patientName_, tr("Name:"), tr("Family, Given"));
     line(patientId_, tr("Patient ID:"), QString());
-    line(birthDate_, tr("Birth date:"), tr("YYYY-MM-DD"));
+    line(birthDate_, tr("Birth date:"), uiDatePlaceholder());
     sex_ = new QComboBox(patientGroup_);
     sex_->addItem(tr("not given"), QString());
     sex_->addItem(tr("female"), QStringLiteral("F"));
     sex_->addItem(tr("male"), QStringLiteral("M"));
     sex_->addItem(tr("other"), QStringLiteral("O"));
     fields->addRow(tr("Sex:"), sex_);
-    line(studyDate_, tr("Study date:"), tr("YYYY-MM-DD"));
+    line(studyDate_, tr("Study date:"), uiDatePlaceholder());
     line(accession_, tr("Accession number:"), QString());
-    line(referring_, tr("Referring physician:"), tr("Family^Given (DICOM)"));
+    line(referring_, tr("Referring physician:"), tr("Family, Given"));
     form_->addRow(patientGroup_);
     // DICOM data brings its own patient and study.
     patientGroup_->setVisible(source_.dicomPath.empty());
@@ -241,13 +243,13 @@ std::optional<report::ReportPatient> ReportDialog::enteredPatient() const {
         return std::nullopt;
     }
     report::ReportPatient p;
-    p.name = patientName_->text().trimmed().toStdString();
+    p.name = dicom::personNameFromText(patientName_->text().toStdString());
     p.id = patientId_->text().trimmed().toStdString();
     p.birthDate = dicomDate(birthDate_->text()).value_or(std::string());
     p.sex = sex_->currentData().toString().toStdString();
     p.studyDate = dicomDate(studyDate_->text()).value_or(std::string());
     p.accession = accession_->text().trimmed().toStdString();
-    p.referringPhysician = referring_->text().trimmed().toStdString();
+    p.referringPhysician = dicom::personNameFromText(referring_->text().toStdString());
     return p;
 }
 
@@ -353,8 +355,9 @@ QString ReportDialog::problem() const {
         for (const auto& [edit, what] :
              {std::pair{birthDate_, tr("birth date")}, std::pair{studyDate_, tr("study date")}}) {
             if (!dicomDate(edit->text())) {
-                return tr("The %1 \"%2\" is not a date: enter it as YYYY-MM-DD.")
-                    .arg(what, edit->text());
+                return tr("The %1 \"%2\" is not a date: enter it as %3 (for example %4).")
+                    .arg(what, edit->text().trimmed(), uiDatePlaceholder(),
+                         QLocale().toString(QDate(1960, 5, 17), uiDateFormat()));
             }
         }
     }

@@ -57,10 +57,8 @@ SegmentationTask::Result SegmentationTask::work(std::stop_token stop) {
             segmentation::runSegmentation(request_, progress));
     } catch (const CancelledError&) {
         result.cancelled = true;
-    } catch (const vv::Error& e) {
-        result.problem = QString::fromStdString(e.problem());
     } catch (const std::exception& e) {
-        result.problem = tr("unexpected error: %1").arg(QString::fromStdString(e.what()));
+        result.problem = describeProblem(e, FileAccess::Reading);
     }
     return result;
 }

@@ -13,6 +13,7 @@
 #include <optional>
 #include <stop_token>
 
+#include "gui/EngineTexts.h"
 #include "gui/WorkerRun.h"
 #include "vv/segmentation/SegmentationPipeline.h"
 
@@ -41,8 +42,8 @@ class SegmentationTask : public QObject {
   signals:
     void progressChanged(double fraction, const QString& stage);
     void succeeded(std::shared_ptr<const vv::segmentation::SegmentationOutcome> outcome);
-    /// `problem`: why (the engine's message).
-    void failed(const QString& problem);
+    /// `problem`: why (describeProblem()).
+    void failed(const vv::gui::ProblemText& problem);
     void cancelled();
     /// After succeeded(), failed() or cancelled().
     void finished();
@@ -50,7 +51,7 @@ class SegmentationTask : public QObject {
   private:
     struct Result {
         std::shared_ptr<const segmentation::SegmentationOutcome> outcome;
-        QString problem;
+        ProblemText problem;
         bool cancelled = false;
     };
     [[nodiscard]] Result work(std::stop_token stop);

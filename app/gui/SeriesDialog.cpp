@@ -19,6 +19,7 @@
 
 #include "gui/SeriesName.h"
 #include "gui/pacs/PacsWidgets.h"
+#include "vv/dicom/PersonName.h"
 
 namespace vv::gui {
 
@@ -30,6 +31,12 @@ enum Column { Name, Modality, Description, Images, Size, Spacing, ColumnCount };
 QString fromStd(const std::string& s) {
     return QString::fromStdString(s);
 }
+
+/// The spin boxes' "nothing entered" value (their minimum, shown empty).
+constexpr double kUnset = -100000.0;
+/// The CT angiography default (segmentation::defaultThresholdRange()), HU.
+constexpr double kCtLower = 200.0;
+constexpr double kCtUpper = 700.0;
 
 bool isCt(const dicom::DicomSeries& s) {
     return s.modality == "CT";
@@ -51,7 +58,7 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     tree_->setObjectName(QStringLiteral("seriesTree"));
     tree_->setColumnCount(ColumnCount);
     tree_->setHeaderLabels({tr("Patient / study / series"), tr("Modality"), tr("Description"),
-                            tr("Images"), tr("Size"), tr("Spacing (mm)")});
+                            tr("Images"), tr("Size"), tr("Voxel spacing (mm)")});
     tree_->setSelectionMode(QAbstractItemView::SingleSelection);
     tree_->setAlternatingRowColors(true);
 
@@ -59,11 +66,10 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     for (std::size_t p = 0; p < scan_.patients.size(); ++p) {
         const dicom::DicomPatient& patient = scan_.patients[p];
         auto* patientItem = new QTreeWidgetItem(tree_);
-        QString name = fromStd(patient.name);
-        name.replace(QLatin1Char('^'), QLatin1Char(' '));
-        patientItem->setText(Name, name.trimmed().isEmpty()
-                                       ? tr("Patient %1").arg(p + 1)
-                                       : tr("Patient: %1").arg(name.trimmed()));
+        // "Family, Given", as every dialog and the report show a name.
+        const QString name = fromStd(dicom::personNameText(patient.name));
+        patientItem->setText(
+            Name, name.isEmpty() ? tr("Patient %1").arg(p + 1) : tr("Patient: %1").arg(name));
         patientItem->setFlags(Qt::ItemIsEnabled);
         for (const dicom::DicomStudy& study : patient.studies) {
             auto* studyItem = new QTreeWidgetItem(patientItem);
@@ -126,21 +132,33 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     autoThreshold_ = new QCheckBox(tr("Default for the modality"), options);
     autoThreshold_->setChecked(true);
     lower_ = new QDoubleSpinBox(options);
+    lower_->setObjectName(QStringLiteral("seriesThresholdLower"));
     upper_ = new QDoubleSpinBox(options);
+    upper_->setObjectName(QStringLiteral("seriesThresholdUpper"));
     for (QDoubleSpinBox* box : {lower_, upper_}) {
-        box->setRange(-100000.0, 100000.0);
+        // The lowest value means "not entered yet" (shown empty).
+        box->setRange(kUnset, 100000.0);
         box->setDecimals(0);
-        box->setEnabled(false);
+        box->setSpecialValueText(QStringLiteral(" "));
+        box->setValue(kUnset);
     }
-    lower_->setValue(200.0);
-    upper_->setValue(700.0);
     thresholdRule_ = new QLabel(options);
+    thresholdRule_->setObjectName(QStringLiteral("seriesThresholdRule"));
+    auto* to = new QLabel(tr("to"), options);
     auto* range = new QHBoxLayout;
     range->addWidget(autoThreshold_);
     range->addWidget(lower_);
-    range->addWidget(new QLabel(tr("to"), options));
+    range->addWidget(to);
     range->addWidget(upper_);
     range->addWidget(thresholdRule_, 1);
+    // The modality's default shows as its rule; numbers only for a range of one's own.
+    const auto showRange = [this, to](bool own) {
+        lower_->setVisible(own);
+        to->setVisible(own);
+        upper_->setVisible(own);
+        thresholdRule_->setVisible(!own);
+    };
+    showRange(false);
     form->addRow(tr("Threshold range:"), range);
     components_ = new QSpinBox(options);
     components_->setRange(1, 255);
@@ -149,10 +167,20 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     form->addRow(tr("Components to keep:"), components_);
     bone_ = new QCheckBox(tr("Remove bone-like components"), options);
     form->addRow(QString(), bone_);
-    connect(autoThreshold_, &QCheckBox::toggled, this, [this](bool automatic) {
-        lower_->setEnabled(!automatic);
-        upper_->setEnabled(!automatic);
+    connect(autoThreshold_, &QCheckBox::toggled, this, [this, showRange](bool automatic) {
+        showRange(!automatic);
+        if (const dicom::DicomSeries* series = currentSeries();
+            !automatic && series != nullptr && isCt(*series) && lower_->value() == kUnset &&
+            upper_->value() == kUnset) {
+            // A CT range of one's own starts from the CT default.
+            lower_->setValue(kCtLower);
+            upper_->setValue(kCtUpper);
+        }
+        updateOk();
     });
+    for (QDoubleSpinBox* box : {lower_, upper_}) {
+        connect(box, &QDoubleSpinBox::valueChanged, this, &SeriesDialog::updateOk);
+    }
 
     buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
     buttons_->button(QDialogButtonBox::Ok)->setText(tr("Load Series"));
@@ -200,9 +228,21 @@ bool SeriesDialog::selectSeries(const QString& uid) {
     return false;
 }
 
+bool SeriesDialog::ownRangeMissing() const {
+    return !autoThreshold_->isChecked() && (lower_->value() == kUnset || upper_->value() == kUnset);
+}
+
+void SeriesDialog::updateOk() {
+    QPushButton* ok = buttons_->button(QDialogButtonBox::Ok);
+    ok->setEnabled(currentSeries() != nullptr && !ownRangeMissing());
+    ok->setToolTip(ownRangeMissing() ? tr("Enter both ends of the threshold range, or use the "
+                                          "default for the modality")
+                                     : QString());
+}
+
 void SeriesDialog::selectionChanged() {
     const dicom::DicomSeries* series = currentSeries();
-    buttons_->button(QDialogButtonBox::Ok)->setEnabled(series != nullptr);
+    updateOk();
     if (series == nullptr) {
         return;
     }
@@ -210,12 +250,11 @@ void SeriesDialog::selectionChanged() {
     bone_->setChecked(isCt(*series));
     if (isCt(*series)) {
         thresholdRule_->setText(tr("CT angiography: 200 to 700 HU"));
-        if (autoThreshold_->isChecked()) {
-            lower_->setValue(200.0);
-            upper_->setValue(700.0);
-        }
     } else {
-        thresholdRule_->setText(tr("from the histogram when loaded"));
+        // MR and others: the default comes from the image values, not known before loading.
+        thresholdRule_->setText(
+            tr("%1: from the image histogram when loaded")
+                .arg(series->modality.empty() ? tr("This series") : fromStd(series->modality)));
     }
 }
 

@@ -20,8 +20,10 @@ namespace vv::gui {
 /// The DICOM series chooser: a tree of patients → studies → series (modality,
 /// description, image count, size, spacing) as vv::dicom::scanDicom() found
 /// them, series that cannot be loaded and skipped files greyed with their
-/// reason, and the segmentation options (threshold range with the
-/// modality's default, components to keep, bone removal). The patient name
+/// reason, and the segmentation options (threshold range: the modality's
+/// default, shown as its rule (CT angiography: 200 to 700 HU; MR and others:
+/// from the image histogram when loaded), or a range of one's own, components
+/// to keep, bone removal). The patient name
 /// is shown here for the user to recognise their data, and nowhere else.
 /// The first loadable series is selected; OK is enabled while a loadable
 /// series is selected.
@@ -53,6 +55,9 @@ class SeriesDialog : public QDialog {
 
   private:
     void selectionChanged();
+    /// OK: a loadable series selected, and both ends of a range of one's own entered.
+    void updateOk();
+    [[nodiscard]] bool ownRangeMissing() const;
     [[nodiscard]] const dicom::DicomSeries* currentSeries() const;
 
     dicom::DicomScanResult scan_;

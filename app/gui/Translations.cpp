@@ -23,6 +23,10 @@ QString installTranslations(QCoreApplication& app, const QString& language) {
     return vv::app::installTranslations(app, language);
 }
 
+QString missingTranslation(const QString& language) {
+    return vv::app::missingTranslation(language);
+}
+
 QString languageName(const QString& language) {
     if (language == QLatin1String("en")) {
         return QStringLiteral("English");

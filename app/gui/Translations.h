@@ -33,6 +33,10 @@ inline constexpr const char* kLanguageKey = "language";
 /// before any widget exists. Never throws.
 QString installTranslations(QCoreApplication& app, const QString& language);
 
+/// app::missingTranslation(): why the UI is English although `language` (as
+/// given to installTranslations()) asks for another; empty when it is not.
+[[nodiscard]] QString missingTranslation(const QString& language);
+
 /// The language's name in that language ("English", "Deutsch", …).
 [[nodiscard]] QString languageName(const QString& language);
 

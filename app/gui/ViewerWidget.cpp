@@ -20,6 +20,7 @@
 #include <limits>
 #include <utility>
 
+#include "gui/EngineTexts.h"
 #include "gui/ViewOverlay.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
@@ -493,7 +494,10 @@ void ViewerWidget::paintGL() {
         viewOverlay_->setFrame(legendsVisible_ ? view_.legends() : render::Legends{}, camera_,
                                annotations_);
     } catch (const vv::Error& e) {
-        const QString why = QString::fromStdString(e.what());
+        // In the UI language; the module's own words go to the log.
+        static const log::Category category{"vv.gui"};
+        log::warning(category, std::string("drawing failed: ") + e.what());
+        const QString why = describeProblem(e, FileAccess::Reading).line();
         if (volume()) {
             // Most likely the volume (too big for a 3-D texture or the GPU's
             // memory): drop it and go on with the scene. When the error was
@@ -678,8 +682,10 @@ QString ViewerWidget::probeText(const ProbeResult& result) {
                       ? tr("%1: %2").arg(result.arrayName, value)
                       : tr("%1: %2 %3").arg(result.arrayName, value, result.unit));
     }
-    lines << tr("Depth: %1 mm behind the nearest vessel point")
-                 .arg(locale.toString(static_cast<double>(result.depthBelowNearest), 'f', 1));
+    // The depth legend's quantity, in its words (render::depthQuantityName()).
+    lines << tr("%1: %2 mm")
+                 .arg(render::depthQuantityName(),
+                      locale.toString(static_cast<double>(result.depthBelowNearest), 'f', 1));
     return lines.join(QLatin1Char('\n'));
 }
 

@@ -73,8 +73,14 @@ int main(int argc, char** argv) {
     QApplication::setApplicationName(QStringLiteral("VesselView"));
     QApplication::setApplicationVersion(QStringLiteral(VV_VERSION));
     vv::log::setSink(&qtSink);
-    vv::gui::installTranslations(
-        app, vv::gui::chooseLanguage(languageArgument(QCoreApplication::arguments()), QSettings()));
+    const QString language =
+        vv::gui::chooseLanguage(languageArgument(QCoreApplication::arguments()), QSettings());
+    vv::gui::installTranslations(app, language);
+    // English instead of the language asked for is said, never silent.
+    const QString missingTranslation = vv::gui::missingTranslation(language);
+    if (!missingTranslation.isEmpty()) {
+        qCWarning(vvCategory).noquote() << missingTranslation;
+    }
 
     QCommandLineParser parser;
     parser.setApplicationDescription(QCoreApplication::translate(
@@ -105,6 +111,9 @@ int main(int argc, char** argv) {
         window.setScreenshotTarget(parser.value(screenshot));
     }
     window.show();
+    if (!missingTranslation.isEmpty()) {
+        window.showLanguageProblem(missingTranslation);
+    }
     const QStringList files = parser.positionalArguments();
     if (files.isEmpty()) {
         window.openDemo();

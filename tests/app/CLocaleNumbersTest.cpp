@@ -309,6 +309,38 @@ TEST_F(ProcessInGerman, TheGuiOpensAsciiMeshesWithDecimalPoints) {
     EXPECT_EQ(run.code, 0) << run.out;
     EXPECT_TRUE(fs::exists(png)) << run.out;
 }
+
+// A copy of the GUI started outside its build or install tree finds no
+// translations: it says so (here: its log on stderr; in the window a message
+// box) instead of showing English without a word. In its tree it says nothing.
+TEST(GuiLanguage, AProgramOutsideItsTreeSaysItsTranslationIsMissing) {
+    const fs::path loose = testDir() / "loose-program";
+    fs::remove_all(loose);
+    fs::create_directories(loose);
+    const fs::path program = loose / "vesselview";
+    fs::copy_file(VV_GUI_EXE, program);
+    fs::permissions(program, fs::perms::owner_all, fs::perm_options::add);
+    const fs::path obj = testDir() / "language-tetra.obj";
+    std::ofstream(obj) << "v 0 0 0\nv 10 0 0\nv 0 10 0\nv 0 0 10\n"
+                          "f 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+    const auto run = [&](const fs::path& exe) {
+        const fs::path png = testDir() / "language-tetra.png";
+        fs::remove(png);
+        const ShellRun result =
+            shell("env XDG_CONFIG_HOME=" + quote(testDir() / "language-config") + " " + quote(exe) +
+                  " --lang de --screenshot " + quote(png) + " " + quote(obj));
+        EXPECT_EQ(result.code, 0) << result.out;
+        EXPECT_TRUE(fs::exists(png)) << result.out;
+        return result.out;
+    };
+    const std::string outside = run(program);
+    EXPECT_NE(outside.find("German translation was not found"), std::string::npos) << outside;
+    EXPECT_NE(outside.find("in English"), std::string::npos) << outside;
+    EXPECT_NE(outside.find((loose.parent_path() / "share").string()), std::string::npos)
+        << "the folders searched are named: " << outside;
+    const std::string inside = run(VV_GUI_EXE);
+    EXPECT_EQ(inside.find("translation"), std::string::npos) << inside;
+}
 #endif
 
 }  // namespace

@@ -7,7 +7,9 @@
 
 #include <QCheckBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QDropEvent>
+#include <QLabel>
 #include <QMessageBox>
 #include <QMimeData>
 #include <QPointer>
@@ -83,7 +85,8 @@ TEST_F(DicomGuiTest, FolderWithTwoSeriesShowsTheChooserAndLoadsVessels) {
     bool patientNamed = false;
     for (QTreeWidgetItemIterator it(dialog->tree()); *it != nullptr; ++it) {
         const QString text = (*it)->text(0);
-        patientNamed = patientNamed || text.contains(QStringLiteral("Demo Patient"));
+        // As every dialog and the report write a name: "Family, Given".
+        patientNamed = patientNamed || text == QStringLiteral("Patient: Demo, Patient");
         if (text.startsWith(QStringLiteral("Series"))) {
             ++series;
             EXPECT_EQ((*it)->text(1), QStringLiteral("CT"));
@@ -139,6 +142,67 @@ TEST_F(DicomGuiTest, FolderWithTwoSeriesShowsTheChooserAndLoadsVessels) {
     EXPECT_EQ(listed, 2);
     dialog->reject();
     EXPECT_EQ(window_->viewer()->scene(), scene);  // browsing changes nothing
+}
+
+/// The chooser shows each modality's own default: for CT the CT angiography
+/// range, for MR the rule (from the image histogram, when loaded) and never
+/// CT's numbers; a range of one's own starts empty for MR and must be
+/// complete before the series loads.
+TEST_F(DicomGuiTest, SeriesChooserShowsTheDefaultOfTheSeriesModality) {
+    vv::dicom::DicomScanResult scan;
+    vv::dicom::DicomPatient& patient = scan.patients.emplace_back();
+    patient.name = "Test^Large";
+    vv::dicom::DicomStudy& study = patient.studies.emplace_back();
+    study.date = "20250307";
+    for (const char* modality : {"MR", "CT"}) {
+        vv::dicom::DicomSeries& series = study.series.emplace_back();
+        series.seriesInstanceUid = std::string("1.2.826.0.1.") + (modality[0] == 'M' ? "1" : "2");
+        series.modality = modality;
+        series.description = std::string(modality) + " angio";
+        series.imageCount = 40;
+        series.rows = 64;
+        series.columns = 64;
+    }
+    vv::gui::SeriesDialog dialog(scan);
+    dialog.show();
+    auto* rule = dialog.findChild<QLabel*>(QStringLiteral("seriesThresholdRule"));
+    ASSERT_NE(rule, nullptr);
+    QPushButton* ok = dialog.findChild<QDialogButtonBox*>()->button(QDialogButtonBox::Ok);
+    EXPECT_EQ(dialog.tree()->topLevelItem(0)->text(0), QStringLiteral("Patient: Test, Large"));
+
+    ASSERT_TRUE(dialog.selectSeries(QStringLiteral("1.2.826.0.1.1")));  // MR
+    EXPECT_TRUE(dialog.automaticThreshold()->isChecked());
+    EXPECT_TRUE(rule->isVisible());
+    EXPECT_TRUE(rule->text().contains(QStringLiteral("MR"))) << rule->text().toStdString();
+    EXPECT_TRUE(rule->text().contains(QStringLiteral("histogram"))) << rule->text().toStdString();
+    for (const char* ct : {"200", "700", "HU"}) {
+        EXPECT_FALSE(rule->text().contains(QString::fromLatin1(ct))) << rule->text().toStdString();
+    }
+    EXPECT_FALSE(dialog.lowerThreshold()->isVisible()) << "CT's numbers shown for an MR series";
+    EXPECT_FALSE(dialog.upperThreshold()->isVisible());
+    EXPECT_FALSE(dialog.boneRemoval()->isChecked());
+    EXPECT_TRUE(ok->isEnabled());
+
+    // A range of one's own for MR: empty fields, OK only once both are given.
+    dialog.automaticThreshold()->setChecked(false);
+    EXPECT_TRUE(dialog.lowerThreshold()->isVisible());
+    EXPECT_TRUE(dialog.lowerThreshold()->text().trimmed().isEmpty())
+        << dialog.lowerThreshold()->text().toStdString();
+    EXPECT_FALSE(ok->isEnabled());
+    dialog.lowerThreshold()->setValue(310.0);
+    dialog.upperThreshold()->setValue(2400.0);
+    EXPECT_TRUE(ok->isEnabled());
+    const auto own = dialog.sceneSourceOptions().segmentation.range;
+    ASSERT_TRUE(own.has_value());
+    EXPECT_FLOAT_EQ(own->lower, 310.0F);
+    EXPECT_FLOAT_EQ(own->upper, 2400.0F);
+
+    dialog.automaticThreshold()->setChecked(true);
+    ASSERT_TRUE(dialog.selectSeries(QStringLiteral("1.2.826.0.1.2")));  // CT
+    EXPECT_TRUE(rule->text().contains(QStringLiteral("200"))) << rule->text().toStdString();
+    EXPECT_TRUE(rule->text().contains(QStringLiteral("700"))) << rule->text().toStdString();
+    EXPECT_TRUE(dialog.boneRemoval()->isChecked());
+    EXPECT_FALSE(dialog.sceneSourceOptions().segmentation.range.has_value());
 }
 
 TEST_F(DicomGuiTest, DroppedSeriesFolderLoadsWithChosenOptions) {

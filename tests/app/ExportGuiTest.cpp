@@ -10,6 +10,7 @@
 #include <QDoubleSpinBox>
 #include <QGroupBox>
 #include <QImage>
+#include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
 #include <QMessageBox>
@@ -226,6 +227,39 @@ TEST_F(ExportGuiTest, PresetsGiveTheirExactSizeKeepAspectFollowsTheViewAnd8KIsTh
     EXPECT_FALSE(started);
     EXPECT_NE(dialog.findChild<QMessageBox*>(QStringLiteral("exportProblemBox")), nullptr);
     EXPECT_FALSE(fs::exists(file));
+}
+
+/// A preset of another shape than the view no longer silently unticks "keep
+/// the view's aspect ratio": a note says how the image differs from the view
+/// (wider: more at the sides; narrower: part of the view left out), and
+/// goes when the shapes agree again.
+TEST_F(ExportGuiTest, APresetOfAnotherShapeSaysHowTheImageDiffersFromTheView) {
+    ASSERT_TRUE(showTube());
+    gui::ExportImageDialog dialog(*window_->viewer(), window_.get());
+    dialog.show();
+    const QSize view = gui::viewPixelSize(*window_->viewer());
+    const double aspect = static_cast<double>(view.width()) / view.height();
+    ASSERT_GT(std::abs(aspect - 16.0 / 9.0), 0.01);
+    QLabel* note = dialog.aspectNote();
+    ASSERT_NE(note, nullptr);
+    EXPECT_FALSE(note->isVisible()) << note->text().toStdString();  // the view's size
+    dialog.sizeChooser()->setCurrentIndex(
+        dialog.sizeChooser()->findData(gui::ExportImageDialog::Uhd4k));
+    ASSERT_FALSE(dialog.keepAspectBox()->isChecked());
+    EXPECT_TRUE(note->isVisible()) << "the aspect changed without a word";
+    const bool wider = 16.0 / 9.0 > aspect;
+    EXPECT_TRUE(note->text().contains(wider ? QStringLiteral("wider") : QStringLiteral("narrower")))
+        << note->text().toStdString();
+    EXPECT_TRUE(note->text().contains(QStringLiteral("1.78:1"))) << note->text().toStdString();
+    // The same shape again: no note.
+    dialog.keepAspectBox()->setChecked(true);
+    EXPECT_FALSE(note->isVisible()) << note->text().toStdString();
+    // A custom size of another shape: the note again, the other way round.
+    dialog.keepAspectBox()->setChecked(false);
+    dialog.heightBox()->setValue(
+        static_cast<int>(std::lround(dialog.widthBox()->value() / aspect * 2.0)));
+    EXPECT_TRUE(note->isVisible());
+    EXPECT_TRUE(note->text().contains(QStringLiteral("narrower"))) << note->text().toStdString();
 }
 
 TEST_F(ExportGuiTest, FourKPresetWrites3840x2160) {

@@ -13,6 +13,7 @@
 
 #include <QAbstractButton>
 #include <QCheckBox>
+#include <QDateEdit>
 #include <QDir>
 #include <QFile>
 #include <QHelpEvent>
@@ -27,6 +28,7 @@
 #include <QTranslator>
 #include <QXmlStreamReader>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <mutex>
@@ -42,6 +44,7 @@
 #include "gui/ExportWorker.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
+#include "gui/pacs/PacsBrowser.h"
 #include "vv/core/Progress.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
@@ -488,9 +491,8 @@ TEST_F(GermanUiTest, EveryVisibleTextIsGermanWithGermanNumbers) {
     // An error message: a file that does not exist.
     window_->openFiles({QString::fromStdString((panelTestDir() / "missing.vtp").string())});
     ASSERT_TRUE(waitUntil([&] { return !window_->lastError().isEmpty(); }));
-    // The module's English detail is led by what happened, in German.
-    EXPECT_TRUE(
-        window_->lastError().contains(QStringLiteral("Die Datei kann nicht gelesen werden")))
+    // What happened, in German (the module's English detail is in the box's Details).
+    EXPECT_TRUE(window_->lastError().contains(QStringLiteral("konnte nicht gelesen werden")))
         << window_->lastError().toStdString();
     QCoreApplication::processEvents();
     texts_.collectTopLevels();
@@ -554,6 +556,75 @@ TEST_F(GermanUiTest, ProgressStagesOfTheModulesAreGerman) {
     }
 }
 
+/// Dates are typed as they are shown: the report's patient fields take
+/// 17.05.1960 (and ISO, and 17.5.1960), ask for TT.MM.JJJJ and name that form
+/// when a date is wrong; the PACS query's date fields show four-digit years.
+TEST_F(GermanUiTest, DateFieldsTakeTheGermanFormat) {
+    window_->openFiles({QStringLiteral(VV_DEMO_VTP)});
+    ASSERT_TRUE(waitUntil([&] { return window_->viewer()->scene() != nullptr; }, 60000));
+    gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+    dialog.patientGroup()->setChecked(true);
+    EXPECT_EQ(dialog.birthDateEdit()->placeholderText(), QStringLiteral("TT.MM.JJJJ"));
+    EXPECT_EQ(dialog.studyDateEdit()->placeholderText(), QStringLiteral("TT.MM.JJJJ"));
+    for (const char* typed : {"17.05.1960", "17.5.1960", " 1960-05-17 ", "19600517"}) {
+        dialog.birthDateEdit()->setText(QString::fromLatin1(typed));
+        EXPECT_TRUE(dialog.problem().isEmpty()) << typed << ": " << dialog.problem().toStdString();
+        const auto job = dialog.jobOptions();
+        ASSERT_TRUE(job.patient.has_value());
+        EXPECT_EQ(job.patient->birthDate, "19600517") << typed;
+    }
+    dialog.birthDateEdit()->setText(QStringLiteral("31.02.1960"));
+    const QString problem = dialog.problem();
+    EXPECT_TRUE(problem.contains(QStringLiteral("31.02.1960"))) << problem.toStdString();
+    EXPECT_TRUE(problem.contains(QStringLiteral("TT.MM.JJJJ"))) << problem.toStdString();
+    EXPECT_TRUE(problem.contains(QStringLiteral("17.05.1960"))) << problem.toStdString();
+    EXPECT_FALSE(problem.contains(QStringLiteral("YYYY"))) << problem.toStdString();
+    EXPECT_FALSE(problem.contains(QStringLiteral("JJJJ-MM-TT"))) << problem.toStdString();
+
+    gui::PacsBrowser browser(window_.get());
+    auto* from = browser.findChild<QDateEdit*>(QStringLiteral("queryDateFrom"));
+    ASSERT_NE(from, nullptr);
+    EXPECT_EQ(from->displayFormat(), QStringLiteral("dd.MM.yyyy"));
+    from->setDate(QDate(1960, 5, 17));
+    EXPECT_EQ(from->text(), QStringLiteral("17.05.1960"));
+}
+
+/// An error in German: the kind of problem and the file in German as the
+/// message, the module's own (English) words only in its Details part.
+TEST_F(GermanUiTest, ErrorMessagesAreGermanWithTheDetailApart) {
+    const fs::path broken = panelTestDir() / "kaputt.stl";
+    {
+        std::ofstream out(broken, std::ios::binary);
+        out << "solid broken\nfacet normal 0 0 1\nouter loop\nvertex 0 0\n";
+    }
+    window_->openFiles({QString::fromStdString(broken.string())});
+    QMessageBox* box = nullptr;
+    ASSERT_TRUE(waitUntil([&] {
+        box = window_->findChild<QMessageBox*>(QStringLiteral("errorMessageBox"));
+        return box != nullptr;
+    }));
+    const QString text = box->text();
+    const QString details = box->detailedText();
+    EXPECT_TRUE(text.contains(QStringLiteral("kaputt.stl"))) << text.toStdString();
+    ASSERT_FALSE(details.isEmpty()) << "no Details part";
+    EXPECT_TRUE(details.contains(QStringLiteral("kaputt.stl"))) << details.toStdString();
+    // No word of the module's English text in the German message (but the path).
+    QString withoutPath = text;
+    withoutPath.remove(QString::fromStdString(broken.string()));
+    static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
+    QString detailWords = details;
+    detailWords.remove(QString::fromStdString(broken.string()));
+    for (auto it = word.globalMatch(detailWords); it.hasNext();) {
+        const QString english = it.next().captured();
+        EXPECT_FALSE(withoutPath.contains(english, Qt::CaseInsensitive))
+            << "English \"" << english.toStdString()
+            << "\" in the German message: " << text.toStdString();
+    }
+    EXPECT_FALSE(window_->lastError().contains(details))
+        << "the status line carries the English detail: " << window_->lastError().toStdString();
+    box->close();
+}
+
 /// The legends are painted on the view (no widget to read): their text
 /// functions, called with the GUI in German, give German titles and ticks.
 TEST_F(GermanUiTest, LegendTextsAreGerman) {
@@ -571,16 +642,13 @@ TEST_F(GermanUiTest, LegendTextsAreGerman) {
         EXPECT_TRUE(decimalPoints(label).isEmpty())
             << "'.' decimal separator in the legend tick \"" << label.toStdString() << "\"";
     }
-    const render::DepthLegend depth;
-    const auto titles = [&depth] {
-        QStringList all;
-        for (const auto& title : render::depthLegendTitles(depth)) {
-            all << toQString(title);
-        }
-        return all;
+    render::DepthLegend depth;
+    depth.unit = "mm";
+    const auto title = [&depth] {
+        return QStringList{toQString(render::depthLegendTitle(depth)), render::depthQuantityName()};
     };
-    const QStringList english = inEnglish(titles);
-    const QStringList german = titles();
+    const QStringList english = inEnglish(title);
+    const QStringList german = title();
     ASSERT_EQ(german.size(), english.size());
     for (qsizetype i = 0; i < german.size(); ++i) {
         EXPECT_TRUE(german[i] != english[i])

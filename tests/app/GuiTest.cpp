@@ -19,6 +19,7 @@
 #include <QThread>
 #include <QUrl>
 #include <QWheelEvent>
+#include <QWindow>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -281,6 +282,28 @@ TEST_F(GuiTest, LoadsAFileOnAWorkerAndRemembersIt) {
     const QStringList recent = MainWindow::recentFiles();
     ASSERT_FALSE(recent.isEmpty());
     EXPECT_EQ(recent.front(), QFileInfo(QString::fromStdString(file.string())).absoluteFilePath());
+}
+
+/// The window reopens exactly where it was closed, however often: not a
+/// title bar lower each time (saveGeometry / restoreGeometry).
+TEST_F(GuiTest, TheWindowReopensWhereItWasClosed) {
+    window_->setGeometry(QRect(137, 91, 1000, 640));
+    ASSERT_TRUE(waitUntil([&] { return window_->windowHandle()->isExposed(); }));
+    QCoreApplication::processEvents();
+    const QRect first = window_->geometry();
+    const QRect firstFrame = window_->frameGeometry();
+    for (int reopen = 1; reopen <= 3; ++reopen) {
+        window_->close();  // saves its geometry
+        window_.reset();
+        QCoreApplication::processEvents();
+        window_ = std::make_unique<MainWindow>();
+        window_->show();
+        ASSERT_TRUE(waitUntil([&] { return window_->windowHandle()->isExposed(); }));
+        // The window system may place it a moment after it shows.
+        waitUntil([&] { return window_->geometry() == first; }, 2000);
+        EXPECT_EQ(window_->geometry(), first) << "reopened " << reopen << " times";
+        EXPECT_EQ(window_->frameGeometry(), firstFrame) << "reopened " << reopen << " times";
+    }
 }
 
 TEST_F(GuiTest, RecentFilesKeepAtMostEight) {

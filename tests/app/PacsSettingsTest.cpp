@@ -2,8 +2,11 @@
 // The DICOM network settings kept in QSettings (app/gui/pacs/PacsSettings.h).
 #include <gtest/gtest.h>
 
+#include <QCoreApplication>
 #include <QSettings>
 #include <QTemporaryDir>
+#include <filesystem>
+#include <memory>
 
 #include "gui/pacs/PacsSettings.h"
 #include "vv/core/Error.h"
@@ -36,6 +39,40 @@ TEST_F(PacsSettingsTest, AnEmptyStoreGivesTheDefaults) {
     EXPECT_TRUE(s.nodes.empty());
     EXPECT_EQ(s.storeFolder, defaultStoreFolder());
     EXPECT_EQ(s.storeLimitBytes, 0U);
+}
+
+/// The default store folder names VesselView once (QStandardPaths'
+/// AppLocalDataLocation adds the organisation and the application name,
+/// both "VesselView"); a store an earlier version made at that old place is
+/// kept in use, never left behind.
+TEST(PacsStoreFolderTest, TheDefaultNamesVesselViewOnceAndKeepsAnEarlierStore) {
+    QTemporaryDir data;
+    const QByteArray before = qgetenv("XDG_DATA_HOME");
+    qputenv("XDG_DATA_HOME", data.path().toUtf8());
+    const QString organisation = QCoreApplication::organizationName();
+    const QString application = QCoreApplication::applicationName();
+    QCoreApplication::setOrganizationName(QStringLiteral("VesselView"));  // as main() sets them
+    QCoreApplication::setApplicationName(QStringLiteral("VesselView"));
+    const std::shared_ptr<void> restore(nullptr, [&](void*) {
+        QCoreApplication::setOrganizationName(organisation);
+        QCoreApplication::setApplicationName(application);
+        qputenv("XDG_DATA_HOME", before);
+    });
+    const std::filesystem::path root = data.path().toStdString();
+    const std::filesystem::path folder = defaultStoreFolder();
+    EXPECT_EQ(folder, root / "VesselView" / "studies");
+    EXPECT_EQ(folder.string().find("VesselView/VesselView"), std::string::npos) << folder;
+
+    // An earlier version's store: used where it is.
+    const std::filesystem::path earlier = root / "VesselView" / "VesselView" / "studies";
+    std::filesystem::create_directories(earlier);
+    EXPECT_EQ(defaultStoreFolder(), earlier);
+    QTemporaryDir dir;
+    QSettings store(dir.filePath(QStringLiteral("settings.ini")), QSettings::IniFormat);
+    EXPECT_EQ(readPacsSettings(store).storeFolder, earlier);
+    // Once the new place holds a store, that one.
+    std::filesystem::create_directories(folder);
+    EXPECT_EQ(defaultStoreFolder(), folder);
 }
 
 TEST_F(PacsSettingsTest, WhatIsWrittenIsReadBack) {

@@ -229,6 +229,59 @@ TEST_F(PanelsTest, FixingTheDepthRangeStartsFromTheRangeOnScreen) {
     EXPECT_EQ(viewer->vssSettings().range.mode, vss::RangeMode::Visible);
 }
 
+/// One wording for a quantity in every place a person reads it: an array as
+/// "wss (Pa)" (scene::quantityTitle) in the data panel, the legend title
+/// field, the legend and the status bar; the depth as the depth legend's
+/// title says it, in the legend and in the probe's tooltip.
+TEST_F(PanelsTest, EveryPlaceNamesAQuantityInOneWording) {
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    ASSERT_TRUE(waitForFrames());
+    auto* viewer = window_->viewer();
+    ASSERT_EQ(viewer->style().array, "wss");
+    const QString wss = QStringLiteral("wss (Pa)");
+    EXPECT_EQ(child<QLineEdit>(window_->functionalPanel(), "functionalLegendTitle")->text(), wss);
+    const QTreeWidgetItem* mesh = window_->dataPanel()->meshTree()->topLevelItem(0);
+    ASSERT_NE(mesh, nullptr);
+    QStringList arrays;
+    for (int i = 0; i < mesh->childCount(); ++i) {
+        arrays << mesh->child(i)->text(0);
+    }
+    EXPECT_TRUE(arrays.filter(QStringLiteral("wss")).value(0).startsWith(wss))
+        << arrays.join(QLatin1Char('|')).toStdString();
+    EXPECT_TRUE(arrays.filter(QStringLiteral("pressure"))
+                    .value(0)
+                    .startsWith(QStringLiteral("pressure (mmHg)")));
+    auto* range = window_->findChild<QLabel*>(QStringLiteral("arrayRangeLabel"));
+    ASSERT_NE(range, nullptr);
+    EXPECT_TRUE(range->text().startsWith(wss + QLatin1Char(':'))) << range->text().toStdString();
+    // The legends over the view, turned on with the VSS showing its depth.
+    viewer->setLegendsVisible(true);
+    const quint64 frames = viewer->framesWithScene();
+    ASSERT_TRUE(waitUntil(
+        [&] {
+            return viewer->framesWithScene() > frames && viewer->shownLegends().depth.has_value();
+        },
+        60000));
+    const render::Legends legends = viewer->shownLegends();
+    ASSERT_TRUE(legends.parameter.has_value());
+    EXPECT_EQ(QString::fromStdString(render::parameterLegendTitle(*legends.parameter)), wss);
+    const QString depthTitle = QString::fromStdString(render::depthLegendTitle(*legends.depth));
+    EXPECT_EQ(depthTitle, render::depthQuantityName() + QStringLiteral(" (mm)"));
+    // The probe names the depth as the legend does, its number in mm.
+    std::optional<gui::ProbeResult> probe;
+    for (int y = 1; y < 20 && !probe; ++y) {
+        probe = viewer->probeAt(QPointF(0.5 * viewer->width(), y * viewer->height() / 20.0));
+    }
+    ASSERT_TRUE(probe.has_value());
+    const QStringList lines = gui::ViewerWidget::probeText(*probe).split(QLatin1Char('\n'));
+    EXPECT_TRUE(lines.back().startsWith(render::depthQuantityName() + QStringLiteral(": ")))
+        << lines.back().toStdString();
+    EXPECT_TRUE(lines.back().endsWith(QStringLiteral(" mm"))) << lines.back().toStdString();
+    for (const QString& line : lines) {
+        EXPECT_FALSE(line.contains(QStringLiteral("nearest"))) << line.toStdString();
+    }
+}
+
 TEST_F(PanelsTest, FunctionalPanelSetsTheNoDataColourAndTheLegendTitle) {
     window_->setScene(makeTubeScene(), QStringLiteral("tube"));
     ASSERT_TRUE(waitForFrames());
@@ -239,7 +292,7 @@ TEST_F(PanelsTest, FunctionalPanelSetsTheNoDataColourAndTheLegendTitle) {
     auto* nan = child<QToolButton>(panel, "functionalNanColor");
     EXPECT_TRUE(title->isEnabled());
     EXPECT_TRUE(nan->isEnabled());
-    EXPECT_EQ(title->text(), QStringLiteral("wss [Pa]"));  // the default title
+    EXPECT_EQ(title->text(), QStringLiteral("wss (Pa)"));  // the default title
     EXPECT_TRUE(viewer->style().legendTitle.empty());
 
     title->setText(QStringLiteral("Wall shear stress (Pa)"));
@@ -363,7 +416,7 @@ TEST_F(PanelsTest, FunctionalPanelChoosesArrayMapBinsAndRange) {
     EXPECT_EQ(viewer->style().array, "pressure");
     EXPECT_DOUBLE_EQ(panel->histogram()->minimum(), 70.0);
     EXPECT_EQ(child<QLineEdit>(panel, "functionalLegendTitle")->text(),
-              QStringLiteral("pressure [mmHg]"));
+              QStringLiteral("pressure (mmHg)"));
 
     panel->arrayChooser()->setCurrentIndex(0);  // None
     EXPECT_TRUE(viewer->style().array.empty());
@@ -465,7 +518,7 @@ TEST_F(PanelsTest, DataPanelListsMeshesAndArrays) {
     EXPECT_EQ(mesh->text(0), QStringLiteral("tube"));
     EXPECT_EQ(mesh->text(1), QLocale().toString(31 * 32));
     ASSERT_EQ(mesh->childCount(), 2);
-    EXPECT_TRUE(mesh->child(1)->text(0).startsWith(QStringLiteral("wss [Pa]")));
+    EXPECT_TRUE(mesh->child(1)->text(0).startsWith(QStringLiteral("wss (Pa)")));
     EXPECT_TRUE(mesh->child(1)->text(1).contains(QStringLiteral("30")));
     EXPECT_EQ(panel->fileLabel()->text(), QStringLiteral("tube scene"));
     // Visibility: a check box per mesh, all shown.

@@ -9,6 +9,7 @@
 #include <unistd.h>
 
 #include <QByteArray>
+#include <QImage>
 #include <QString>
 #include <QTextDocumentFragment>
 #include <algorithm>
@@ -273,6 +274,177 @@ TEST(ReportLanguageTest, EnglishReportHasNoGerman) {
     }
     EXPECT_NE(text.find("1964-08-12"), std::string::npos) << text;
     EXPECT_NE(text.find("Not for diagnostic use."), std::string::npos) << text;
+}
+
+/// A word of a page with its box in points (pdftotext -bbox).
+struct Box {
+    int page = 0;
+    double xMin = 0.0;
+    double yMin = 0.0;
+    double xMax = 0.0;
+    double yMax = 0.0;
+    std::string text;
+};
+
+std::vector<Box> boxes(const fs::path& pdf) {
+    std::string html;
+    EXPECT_EQ(runTool("pdftotext -bbox '" + pdf.string() + "' -", html), 0) << html;
+    std::vector<Box> all;
+    int page = 0;
+    const std::regex token(
+        R"re(<page |<word xMin="([^"]*)" yMin="([^"]*)" xMax="([^"]*)" yMax="([^"]*)">([^<]*)</word>)re");
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), token);
+         it != std::sregex_iterator(); ++it) {
+        const std::smatch& m = *it;
+        if (m.str(0) == "<page ") {
+            ++page;
+            continue;
+        }
+        all.push_back({page, std::stod(m.str(1)), std::stod(m.str(2)), std::stod(m.str(3)),
+                       std::stod(m.str(4)),
+                       QTextDocumentFragment::fromHtml(QString::fromStdString(m.str(5)))
+                           .toPlainText()
+                           .toStdString()});
+    }
+    return all;
+}
+
+/// Page `page` of `pdf` as a grey image at `dpi`.
+QImage pageImage(const fs::path& pdf, int page, int dpi) {
+    const fs::path stem = pdf.parent_path() / (pdf.stem().string() + "-page");
+    std::string output;
+    EXPECT_EQ(runTool("pdftoppm -gray -png -singlefile -r " + std::to_string(dpi) + " -f " +
+                          std::to_string(page) + " -l " + std::to_string(page) + " '" +
+                          pdf.string() + "' '" + stem.string() + "'",
+                      output),
+              0)
+        << output;
+    return QImage(QString::fromStdString(stem.string() + ".png"));
+}
+
+/// Where the ink of `word` starts and ends on its page image (points):
+/// a word cut at its cell's edge shows less than its box.
+std::pair<double, double> inkSpan(const QImage& page, const Box& word, int dpi) {
+    const double scale = dpi / 72.0;
+    const int top = static_cast<int>(word.yMin * scale) + 1;
+    const int bottom = static_cast<int>(word.yMax * scale) - 1;
+    const int left = static_cast<int>((word.xMin - 3.0) * scale);
+    const int right = static_cast<int>((word.xMax + 3.0) * scale);
+    int first = right;
+    int last = left;
+    for (int x = std::max(left, 0); x < std::min(right, page.width()); ++x) {
+        for (int y = std::max(top, 0); y < std::min(bottom, page.height()); ++y) {
+            if (qGray(page.pixel(x, y)) < 170) {
+                first = std::min(first, x);
+                last = std::max(last, x);
+            }
+        }
+    }
+    return {first / scale, (last + 1) / scale};
+}
+
+/// The German statistics table shows its headers whole ("Abdeckung", not
+/// "bdeckung"): in the page's pixels, every header word's ink fills its box
+/// (a cut word loses its first letters to the cell's edge).
+TEST(ReportLanguageTest, TheGermanStatisticsTableShowsEveryHeaderWhole) {
+    const fs::path dir = freshDir("stats-de");
+    const fs::path pdf = dir / "report.pdf";
+    std::string output;
+    ASSERT_EQ(runReport("", writeTube(dir), pdf, "--lang de --below 1 --above 3", output), 0)
+        << output;
+    const std::vector<Box> all = boxes(pdf);
+    const auto object =
+        std::find_if(all.begin(), all.end(), [](const Box& b) { return b.text == "Objekt"; });
+    ASSERT_NE(object, all.end()) << "no statistics table";
+    constexpr int kDpi = 200;
+    const QImage page = pageImage(pdf, object->page, kDpi);
+    ASSERT_FALSE(page.isNull());
+    std::vector<std::string> headers;
+    for (const Box& word : all) {
+        const bool inHeader = word.page == object->page && word.xMin > object->xMax &&
+                              word.yMin > object->yMin - 12.0 && word.yMax < object->yMax + 12.0;
+        if (!inHeader || word.text.size() < 2) {
+            continue;
+        }
+        headers.push_back(word.text);
+        const auto [inkLeft, inkRight] = inkSpan(page, word, kDpi);
+        EXPECT_LE(inkLeft, word.xMin + 1.5) << "'" << word.text << "' cut at its left";
+        EXPECT_GE(inkRight, word.xMax - 1.5) << "'" << word.text << "' cut at its right";
+    }
+    for (const char* header : {"Abdeckung", "Min", "Mittelwert", "Max", "Fläche"}) {
+        EXPECT_NE(std::find(headers.begin(), headers.end(), header), headers.end()) << header;
+    }
+}
+
+/// The numbers under a legend's title word `title` (its first word) on page 1:
+/// the labels of that legend, left to right.
+std::vector<Box> legendLabels(const std::vector<Box>& all, const std::string& title) {
+    const auto heading = std::find_if(all.begin(), all.end(),
+                                      [&](const Box& b) { return b.page == 1 && b.text == title; });
+    EXPECT_NE(heading, all.end()) << "no legend titled " << title;
+    std::vector<Box> labels;
+    if (heading == all.end()) {
+        return labels;
+    }
+    const double line = heading->yMax - heading->yMin;
+    static const std::regex number(R"(^[-−]?[0-9][0-9.,]*$)");
+    for (const Box& b : all) {
+        if (b.page == 1 && std::regex_match(b.text, number) && b.yMin > heading->yMax &&
+            b.yMin < heading->yMax + 5.0 * line && b.xMin > heading->xMin - 2.0 &&
+            b.xMax < heading->xMin + 200.0) {
+            labels.push_back(b);
+        }
+    }
+    std::sort(labels.begin(), labels.end(), [](const Box& a, const Box& b) {
+        return a.yMin < b.yMin - 1.0 || (std::abs(a.yMin - b.yMin) <= 1.0 && a.xMin < b.xMin);
+    });
+    // The first row of numbers: the tick labels.
+    std::vector<Box> row;
+    for (const Box& b : labels) {
+        if (row.empty() || std::abs(b.yMin - row.front().yMin) <= 1.0) {
+            row.push_back(b);
+        }
+    }
+    return row;
+}
+
+/// The legends in the PDF, in both languages: the depth legend titled in its
+/// one wording, its ends shown, and no two tick labels closer than about two
+/// digits (their text's height; the painter keeps 1.25 font sizes).
+TEST(ReportLanguageTest, LegendLabelsInThePdfNeverCrowd) {
+    for (const char* language : {"en", "de"}) {
+        const fs::path dir = freshDir(std::string("legend-") + language);
+        const fs::path pdf = dir / "report.pdf";
+        std::string output;
+        ASSERT_EQ(runReport("", writeTube(dir), pdf, std::string("--lang ") + language, output), 0)
+            << output;
+        const std::vector<Box> all = boxes(pdf);
+        const bool german = std::string(language) == "de";
+        std::string title;
+        for (const Box& b : all) {
+            if (b.page == 1) {
+                title += b.text + " ";
+            }
+        }
+        EXPECT_NE(title.find(german ? "Tiefe hinter dem vordersten Gefäß (mm)"
+                                    : "Depth behind the frontmost vessel (mm)"),
+                  std::string::npos)
+            << title;
+        for (const std::string& legend :
+             {std::string(german ? "Tiefe" : "Depth"), std::string("wss")}) {
+            const std::vector<Box> labels = legendLabels(all, legend);
+            ASSERT_GE(labels.size(), 2U) << language << " " << legend;
+            if (legend != "wss") {
+                EXPECT_EQ(labels.front().text, "0") << language;
+            }
+            for (std::size_t i = 1; i < labels.size(); ++i) {
+                const double height = labels[i].yMax - labels[i].yMin;
+                EXPECT_GE(labels[i].xMin - labels[i - 1].xMax, 1.05 * height)
+                    << language << " " << legend << ": '" << labels[i - 1].text << "' and '"
+                    << labels[i].text << "' crowd";
+            }
+        }
+    }
 }
 
 TEST(ReportLanguageTest, UnknownLanguageIsAUsageError) {

@@ -14,6 +14,7 @@
 #include <QMouseEvent>
 #include <QPointer>
 #include <QPushButton>
+#include <QRegularExpression>
 #include <QSpinBox>
 #include <QStatusBar>
 #include <QTimer>
@@ -32,7 +33,9 @@
 #include "gui/SegmentationTask.h"
 #include "gui/SeriesDialog.h"
 #include "gui/Session.h"
+#include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/SegmentationPanel.h"
+#include "gui/panels/SidePanel.h"
 #include "vv/demo/DemoCtSeries.h"
 
 namespace vv::test {
@@ -208,6 +211,49 @@ TEST_F(SegmentationGuiTest, PanelIsOnlyEnabledForScenesFromAVolume) {
     window_->setScene(makeTubeScene(), QStringLiteral("tube"));
     EXPECT_FALSE(panel()->isEnabled());
     EXPECT_EQ(window_->volume(), nullptr);
+}
+
+/// A DICOM scene is shaped by its segmentation: the section comes to the top
+/// of the side panel, open. A mesh scene puts it back at the bottom, and its
+/// disabled controls keep nothing of the last volume (no thresholds, no unit).
+TEST_F(SegmentationGuiTest, ADicomSceneBringsTheSectionUpAndAMeshSceneClearsIt) {
+    gui::panels::SidePanel* side = window_->sidePanel();
+    gui::panels::CollapsibleSection* section = side->sectionOf(panel());
+    ASSERT_NE(section, nullptr);
+    const auto topmost = [side] {
+        gui::panels::CollapsibleSection* top = nullptr;
+        for (gui::panels::CollapsibleSection* s : side->sections()) {
+            if (top == nullptr || s->y() < top->y()) {
+                top = s;
+            }
+        }
+        return top;
+    };
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(side->sections().back(), section);
+
+    openSeries();
+    QCoreApplication::processEvents();
+    EXPECT_EQ(side->sections().front(), section);
+    EXPECT_EQ(topmost(), section) << "not placed at the top of the panel";
+    EXPECT_TRUE(section->isExpanded());
+    EXPECT_TRUE(panel()->lowerBox()->text().contains(QStringLiteral("HU")));
+
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    QCoreApplication::processEvents();
+    EXPECT_EQ(side->sections().back(), section);
+    EXPECT_NE(topmost(), section);
+    EXPECT_FALSE(panel()->isEnabled());
+    for (const QDoubleSpinBox* box :
+         {panel()->lowerBox(), panel()->upperBox(), panel()->isoBox()}) {
+        const QString shown = box->text();
+        EXPECT_FALSE(shown.contains(QRegularExpression(QStringLiteral("[0-9]"))))
+            << "the last volume's value stays: " << shown.toStdString();
+        EXPECT_FALSE(shown.contains(QStringLiteral("HU"))) << shown.toStdString();
+    }
+    EXPECT_FALSE(panel()->boneRemovalBox()->isChecked());
+    EXPECT_TRUE(panel()->defaultLabel()->text().isEmpty());
 }
 
 TEST_F(SegmentationGuiTest, ThresholdChangesPreviewOnAWorker) {

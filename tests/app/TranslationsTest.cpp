@@ -167,16 +167,16 @@ TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
     const QString fresh = dir.filePath(QStringLiteral("fresh_de.ts"));
     QProcess lupdate;
     lupdate.setProcessChannelMode(QProcess::MergedChannels);
-    lupdate.start(QStringLiteral(VV_LUPDATE),
-                  {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
-                   QStringLiteral("-I"), QStringLiteral(VV_SOURCE_DIR "/app"),
-                   QStringLiteral("-source-language"), QStringLiteral("en"),
-                   QStringLiteral("-target-language"), QStringLiteral("de"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/gui"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/common"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/cli"),
-                   QStringLiteral(VV_SOURCE_DIR "/modules/render/src"),
-                   QStringLiteral(VV_SOURCE_DIR "/modules/report/src"), QStringLiteral("-ts"), fresh});
+    lupdate.start(
+        QStringLiteral(VV_LUPDATE),
+        {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
+         QStringLiteral("-I"), QStringLiteral(VV_SOURCE_DIR "/app"),
+         QStringLiteral("-source-language"), QStringLiteral("en"),
+         QStringLiteral("-target-language"), QStringLiteral("de"),
+         QStringLiteral(VV_SOURCE_DIR "/app/gui"), QStringLiteral(VV_SOURCE_DIR "/app/common"),
+         QStringLiteral(VV_SOURCE_DIR "/app/cli"),
+         QStringLiteral(VV_SOURCE_DIR "/modules/render/src"),
+         QStringLiteral(VV_SOURCE_DIR "/modules/report/src"), QStringLiteral("-ts"), fresh});
     ASSERT_TRUE(lupdate.waitForFinished(120000)) << "lupdate did not finish";
     ASSERT_EQ(lupdate.exitCode(), 0) << lupdate.readAll().toStdString();
 
@@ -207,6 +207,54 @@ TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
             << "vesselview_de.ts holds a string the sources no longer have (run the "
                "vv_update_translations target): "
             << context.toStdString() << " / \"" << source.toStdString() << "\"";
+    }
+}
+
+/// One German term per concept: every text about the same thing says it in
+/// the same word, so that a reader never wonders whether "Bericht" and
+/// "PDF-Befund" are two documents.
+TEST(Translations, GermanUsesOneTermPerConcept) {
+    struct Term {
+        QRegularExpression english;  ///< the concept in the source
+        QString german;              ///< its one German word (or its stem)
+        QStringList notGerman;       ///< other words for it that must not be used
+    };
+    const auto ci = [](const char* pattern) {
+        return QRegularExpression(QString::fromUtf8(pattern),
+                                  QRegularExpression::CaseInsensitiveOption);
+    };
+    const std::vector<Term> terms{
+        // The document: Bericht; Befund is the findings text in it.
+        {ci("\\breports?\\b(?!ed)"),
+         QStringLiteral("Bericht"),
+         {QStringLiteral("Befund-PDF"), QStringLiteral("PDF-Befund"),
+          QStringLiteral("Befundbild")}},
+        {ci("\\bfindings\\b"), QStringLiteral("Befund"), {QStringLiteral("Ergebnis")}},
+        // DICOM's Accession Number: Auftragsnummer (not the literal "Zugangsnummer").
+        {ci("\\baccession\\b"),
+         QStringLiteral("Auftragsnummer"),
+         {QStringLiteral("Zugangsnummer")}},
+        // The distance between voxels / slices: never the bare "Abstand (mm)".
+        {ci("\\bspacing\\b"), QStringLiteral("abstand"), {QStringLiteral("Abstand (mm)")}},
+        {ci("\\bdepth behind\\b"), QStringLiteral("Tiefe hinter dem vordersten Gefäß"), {}},
+    };
+    for (const Message& m : readTs(tsPath("de"))) {
+        if (m.obsolete || m.numerus) {
+            continue;
+        }
+        for (const Term& term : terms) {
+            if (!term.english.match(m.source).hasMatch()) {
+                continue;
+            }
+            EXPECT_TRUE(m.translation.contains(term.german, Qt::CaseInsensitive))
+                << "\"" << term.german.toStdString() << "\" expected: " << describe(m) << " -> "
+                << m.translation.toStdString();
+            for (const QString& other : term.notGerman) {
+                EXPECT_FALSE(m.translation.contains(other))
+                    << "\"" << other.toStdString() << "\" for \"" << term.german.toStdString()
+                    << "\": " << describe(m) << " -> " << m.translation.toStdString();
+            }
+        }
     }
 }
 

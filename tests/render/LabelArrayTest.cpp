@@ -321,7 +321,7 @@ TEST(BinnedLegendTest, EveryBinEdgeHasATickAndOnePrecision) {
     EXPECT_EQ(tickMarks(image, layout.parameter).size(), 7U);
 }
 
-TEST(LabelledTicksTest, AllWhenTheyFitElseEveryKthWithBothEnds) {
+TEST(LabelledTicksTest, AsManyAsFitWithBothEnds) {
     const std::vector<double> centres{0, 10, 20, 30, 40, 50, 60};
     EXPECT_EQ(vv::render::labelledTicks(centres, std::vector<double>(7, 6.0), 2.0),
               (std::vector<std::size_t>{0, 1, 2, 3, 4, 5, 6}));
@@ -337,6 +337,14 @@ TEST(LabelledTicksTest, AllWhenTheyFitElseEveryKthWithBothEnds) {
     const std::vector<double> depth{0, 107, 235, 258};
     EXPECT_EQ(vv::render::labelledTicks(depth, std::vector<double>(4, 28.0), 3.0),
               (std::vector<std::size_t>{0, 1, 3}));
+    // Five bins on a 258 px bar, 34 px labels, the ends held inside the bar:
+    // neighbours collide, yet four labels fit (every second edge gave three:
+    // 0, 2 and the end, which pushed 4 out).
+    const std::vector<double> fiveBins{17.0, 51.6, 103.2, 154.8, 206.4, 241.0};
+    const auto five = vv::render::labelledTicks(fiveBins, std::vector<double>(6, 34.0), 3.0);
+    EXPECT_EQ(five.size(), 4U);
+    EXPECT_EQ(five.front(), 0U);
+    EXPECT_EQ(five.back(), 5U);
 }
 
 /// Sets the default locale for a test and restores it.

@@ -285,30 +285,6 @@ TEST_F(VesselCueTest, LegendsArePaintedExactlyWhenTheirScalesAreUsed) {
     }
 }
 
-TEST(LegendTitleTest, NarrowLegendsShortenTheDepthTitleInsteadOfCuttingIt) {
-    vv::render::test::ensureGuiApplication();  // fonts need one
-    vv::render::DepthLegend legend;
-    legend.unit = "mm";
-    const std::vector<std::string> titles = vv::render::depthLegendTitles(legend);
-    ASSERT_EQ(titles.size(), 3U);
-    EXPECT_EQ(titles.front(), vv::render::depthLegendTitle(legend));
-    EXPECT_EQ(titles.back(), "Depth (mm)");
-    QStringList list;
-    for (const auto& t : titles) {
-        list.push_back(QString::fromStdString(t));
-    }
-    QFont font;
-    font.setPixelSize(14);
-    const QFontMetricsF metrics(font);
-    const double full = metrics.horizontalAdvance(list.front());
-    const double shortest = metrics.horizontalAdvance(list.back());
-    ASSERT_LT(shortest, full);
-    EXPECT_EQ(vv::render::fittingTitle(metrics, list, full + 1.0), list.front());
-    EXPECT_EQ(vv::render::fittingTitle(metrics, list, full - 1.0), list[1]);
-    EXPECT_EQ(vv::render::fittingTitle(metrics, list, shortest + 0.5), list.back());
-    EXPECT_EQ(vv::render::fittingTitle(metrics, list, 1.0), list.back());  // the caller elides it
-}
-
 TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {
     const auto ticks = vv::render::depthLegendTicks(100.0, 130.0);
     ASSERT_GE(ticks.size(), 2U);

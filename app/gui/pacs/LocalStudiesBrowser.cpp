@@ -17,6 +17,7 @@
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/PacsWidgets.h"
 #include "vv/core/Error.h"
+#include "vv/dicom/PersonName.h"
 #include "vv/pacs/LocalStore.h"
 
 namespace vv::gui {
@@ -28,19 +29,6 @@ constexpr int kUidRole = Qt::UserRole + 1;
 
 QString text(const std::string& s) {
     return QString::fromStdString(s);
-}
-
-/// "Doe^Jane" as people write it: "Doe, Jane".
-QString personName(const std::string& dicom) {
-    QStringList parts = text(dicom).split(QLatin1Char('^'));
-    while (!parts.isEmpty() && parts.back().trimmed().isEmpty()) {
-        parts.removeLast();
-    }
-    if (parts.size() < 2) {
-        return parts.value(0);
-    }
-    const QString family = parts.takeFirst();
-    return family + QStringLiteral(", ") + parts.join(QLatin1Char(' ')).simplified();
 }
 
 /// The study row of `item` (itself, or the study of a series row).
@@ -73,7 +61,7 @@ QTreeWidgetItem* studyItem(const pacs::StoredStudy& study) {
     for (const std::string& m : modalities) {
         modalityList << text(m);
     }
-    item->setText(kPatient, personName(study.patientName));
+    item->setText(kPatient, text(dicom::personNameText(study.patientName)));
     item->setText(kPatientId, text(study.patientId));
     item->setText(kDate, studyDateText(study.studyDate));
     item->setText(kDescription, text(study.studyDescription));

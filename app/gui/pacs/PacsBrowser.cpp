@@ -22,10 +22,12 @@
 #include <array>
 #include <cmath>
 
+#include "gui/DateText.h"
 #include "gui/pacs/BackgroundCall.h"
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsWidgets.h"
 #include "gui/pacs/RetrieveJob.h"
+#include "vv/dicom/PersonName.h"
 
 namespace vv::gui {
 
@@ -67,6 +69,9 @@ QDateEdit* dateField(QWidget* parent, const QString& name) {
     auto* edit = new QDateEdit(parent);
     edit->setObjectName(name);
     edit->setCalendarPopup(true);
+    // Typed and shown as every date in the UI (07.03.2025 in German): the
+    // locale's short format has a two-digit year.
+    edit->setDisplayFormat(uiDateFormat());
     edit->setMinimumDate(kAnyDate);
     edit->setSpecialValueText(PacsBrowser::tr("any"));
     edit->setDate(kAnyDate);
@@ -372,7 +377,7 @@ void PacsBrowser::showStudies(const std::vector<pacs::StudyResult>& studies) {
         QString modalities = text(s.modalitiesInStudy);
         modalities.replace(QLatin1Char('\\'), QStringLiteral(", "));
         const std::array<QString, StudyColumnCount> cells = {
-            text(s.patientName).replace(QLatin1Char('^'), QLatin1Char(' ')).trimmed(),
+            text(dicom::personNameText(s.patientName)),
             text(s.patientId),
             studyDateText(s.studyDate),
             text(s.studyDescription),

@@ -1,10 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "PacsSettings.h"
 
+#include <QFile>
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
 #include <set>
+#include <system_error>
 
 #include "vv/core/Error.h"
 
@@ -92,8 +94,23 @@ void checkBeforeWriting(const PacsSettings& settings) {
 }  // namespace
 
 std::filesystem::path defaultStoreFolder() {
-    const QString base = QStandardPaths::writableLocation(QStandardPaths::AppLocalDataLocation);
-    return std::filesystem::path(base.toStdString()) / "studies";
+    namespace fs = std::filesystem;
+    // Not AppLocalDataLocation: it adds the organisation and the application
+    // name, both "VesselView" (~/.local/share/VesselView/VesselView/studies).
+    const fs::path generic =
+        QFile::encodeName(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
+            .toStdString();
+    const fs::path folder = generic / "VesselView" / "studies";
+    // A store an earlier version made there keeps working where it is.
+    const fs::path earlier = fs::path(QFile::encodeName(QStandardPaths::writableLocation(
+                                                            QStandardPaths::AppLocalDataLocation))
+                                          .toStdString()) /
+                             "studies";
+    std::error_code ec;
+    if (!fs::exists(folder, ec) && fs::is_directory(earlier, ec)) {
+        return earlier;
+    }
+    return folder;
 }
 
 PacsSettings readPacsSettings(const QSettings& store) {

@@ -41,7 +41,10 @@ struct PacsSettings {
     std::uint64_t storeLimitBytes = 0;  ///< 0: no limit; else oldest-first clean-up
 };
 
-/// The store folder used when none is set: <AppLocalDataLocation>/studies.
+/// The store folder used when none is set: <GenericDataLocation>/VesselView/studies
+/// (~/.local/share/VesselView/studies on Linux), or, when only that exists,
+/// the one earlier versions used, <AppLocalDataLocation>/studies (which
+/// named VesselView twice): an existing store is never left behind.
 [[nodiscard]] std::filesystem::path defaultStoreFolder();
 
 /// Reads the settings from `store` ("pacs/" group). Missing entries take the

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/pacs/PacsWidgets.h"
 
-#include <QCoreApplication>
 #include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -9,6 +8,8 @@
 #include <QLabel>
 #include <QLocale>
 #include <QTableWidget>
+
+#include "gui/DateText.h"
 
 namespace vv::gui {
 
@@ -54,10 +55,7 @@ QString studyDateText(const std::string& dicomDate) {
     }
     // Day and month in an order no reader can take the other way round (not
     // "3/4/2025"), and as the PDF report writes dates in the same language.
-    //: Date format of study dates on screen (QDate::toString), as the report's: dd.MM.yyyy in
-    //: German.
-    return QLocale().toString(date,
-                              QCoreApplication::translate("vv::gui::StudyDate", "yyyy-MM-dd"));
+    return QLocale().toString(date, uiDateFormat());
 }
 
 }  // namespace vv::gui

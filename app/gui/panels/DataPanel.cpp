@@ -22,6 +22,7 @@
 
 #include "gui/ViewerWidget.h"
 #include "gui/panels/PanelUtil.h"
+#include "vv/scene/QuantityTitle.h"
 
 namespace vv::gui::panels {
 
@@ -274,10 +275,8 @@ void DataPanel::sceneChanged(const QString& title, const QStringList& files) {
                     hi = std::max(hi, v);
                 }
             }
-            QString label = QString::fromStdString(array.name);
-            if (!array.unit.empty()) {
-                label += QStringLiteral(" [%1]").arg(QString::fromStdString(array.unit));
-            }
+            const QString label =
+                QString::fromStdString(scene::quantityTitle(array.name, array.unit));
             auto* child = new QTreeWidgetItem(item);
             child->setText(NameColumn, label);
             child->setText(VerticesColumn, lo <= hi

@@ -16,6 +16,7 @@
 
 #include "common/SettingsSchema.h"
 #include "vv/scene/Mesh.h"
+#include "vv/scene/QuantityTitle.h"
 
 namespace vv::gui::panels {
 
@@ -89,7 +90,7 @@ QString arrayLabel(const scene::Scene& scene, const std::string& name) {
     for (const auto& mesh : scene.meshes) {
         const scene::DataArray* array = mesh.pointArray(name);
         if (array != nullptr && !array->unit.empty()) {
-            return QString::fromStdString(name + " [" + array->unit + "]");
+            return QString::fromStdString(scene::quantityTitle(name, array->unit));
         }
     }
     return QString::fromStdString(name);

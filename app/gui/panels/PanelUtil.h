@@ -49,7 +49,8 @@ inline glm::vec3 toVec(const QColor& color) {
             static_cast<float>(color.blueF())};
 }
 
-/// "wss [Pa]" for a point array with a unit on some mesh of `scene`, else "wss".
+/// "wss (Pa)" (scene::quantityTitle()) for a point array with a unit on some
+/// mesh of `scene`, else "wss".
 [[nodiscard]] QString arrayLabel(const scene::Scene& scene, const std::string& name);
 
 // --- Controls of the settings schema (common/SettingsSchema.h) --------------

@@ -262,6 +262,7 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
                                        ? QString()
                                        : QStringLiteral(" ") + fromUtf8(volume_->unit());
             for (QDoubleSpinBox* box : {lower_, upper_, iso_}) {
+                box->setSpecialValueText(QString());
                 box->setRange(static_cast<double>(lo) - span, static_cast<double>(hi) + span);
                 box->setSuffix(suffix);
             }
@@ -287,8 +288,21 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
             defaultLabel_->setText(tr("Default: computing…"));
             startDefaultRange();
         } else {
+            // Nothing of the last volume stays (its thresholds, modality, seed):
+            // the disabled controls show no values.
+            for (QDoubleSpinBox* box : {lower_, upper_, iso_}) {
+                box->setRange(0.0, 0.0);
+                box->setSuffix(QString());
+                box->setSpecialValueText(QStringLiteral("\u2014"));
+                box->setValue(0.0);
+            }
+            components_->setValue(1);
+            mode_->setCurrentIndex(0);
+            bone_->setChecked(false);
+            triangles_->setValue(0);
             volumeLabel_->setText(tr("No volume"));
             defaultLabel_->clear();
+            defaultLabel_->setToolTip(QString());
         }
     }
     filling_ = false;
@@ -399,7 +413,13 @@ void SegmentationPanel::updateApplicability() {
 
 void SegmentationPanel::showMessage(const QString& text) {
     message_->setText(text);
+    message_->setToolTip(QString());
     emit statusMessage(text);
+}
+
+void SegmentationPanel::showProblemMessage(const QString& text, const ProblemText& problem) {
+    showMessage(text);
+    message_->setToolTip(problem.details);  // the module's own words, on demand
 }
 
 void SegmentationPanel::optionsChanged() {
@@ -460,8 +480,9 @@ void SegmentationPanel::startPreview() {
     SegmentationTask* task = makeTask(step, kPreviewTriangles);
     previewTask_ = task;
     connect(task, &SegmentationTask::succeeded, this, &SegmentationPanel::previewDone);
-    connect(task, &SegmentationTask::failed, this,
-            [this](const QString& problem) { showMessage(tr("No preview: %1").arg(problem)); });
+    connect(task, &SegmentationTask::failed, this, [this](const ProblemText& problem) {
+        showProblemMessage(tr("No preview: %1").arg(problem.summary), problem);
+    });
     connect(task, &SegmentationTask::finished, this, [this, task] {
         if (previewTask_ == task) {
             previewTask_ = nullptr;
@@ -497,8 +518,8 @@ void SegmentationPanel::apply() {
         progress_->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
     });
     connect(task, &SegmentationTask::succeeded, this, &SegmentationPanel::applyDone);
-    connect(task, &SegmentationTask::failed, this, [this](const QString& problem) {
-        showMessage(tr("Apply failed: %1").arg(problem));
+    connect(task, &SegmentationTask::failed, this, [this](const ProblemText& problem) {
+        showProblemMessage(tr("Apply failed: %1").arg(problem.summary), problem);
         emit applyFinished(false);
     });
     connect(task, &SegmentationTask::cancelled, this, [this] {

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 
+#include "gui/EngineTexts.h"
 #include "gui/WorkerRun.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
@@ -156,6 +157,8 @@ class SegmentationPanel : public QWidget {
     void optionsChanged();
     void updateApplicability();
     void showMessage(const QString& text);
+    /// showMessage(text), the problem's details in the message's tooltip.
+    void showProblemMessage(const QString& text, const ProblemText& problem);
     void startDefaultRange();
     [[nodiscard]] QString valueText(double value) const;
     [[nodiscard]] SegmentationTask* makeTask(int step, int maxTriangles);

@@ -10,6 +10,7 @@
 #include <QStyle>
 #include <QToolButton>
 #include <QVBoxLayout>
+#include <algorithm>
 
 #include "gui/panels/CollapsibleSection.h"
 
@@ -77,6 +78,18 @@ void SidePanel::reveal(const QWidget* panel) {
         content_->layout()->activate();
         ensureWidgetVisible(section->header(), 0, 0);
     }
+}
+
+void SidePanel::moveSection(CollapsibleSection* section, int index) {
+    const qsizetype from = sections_.indexOf(section);
+    if (from < 0) {
+        return;
+    }
+    const qsizetype to = std::clamp<qsizetype>(index, 0, sections_.size() - 1);
+    sections_.move(from, to);
+    auto* layout = qobject_cast<QVBoxLayout*>(content_->layout());
+    layout->removeWidget(section);
+    layout->insertWidget(static_cast<int>(to), section);  // the stretch stays last
 }
 
 QSize SidePanel::minimumSizeHint() const {

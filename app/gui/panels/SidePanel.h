@@ -29,6 +29,9 @@ class SidePanel : public QScrollArea {
     [[nodiscard]] CollapsibleSection* sectionOf(const QWidget* panel) const;
     /// Opens the section holding `panel` and scrolls it into view.
     void reveal(const QWidget* panel);
+    /// Moves `section` (one of sections()) to place `index` among the
+    /// sections (clamped: 0 = the top, sections().size() - 1 = the bottom).
+    void moveSection(CollapsibleSection* section, int index);
 
     [[nodiscard]] QSize minimumSizeHint() const override;
     [[nodiscard]] QSize sizeHint() const override;

@@ -15,6 +15,7 @@
 #include <cmath>
 
 #include "vv/colormaps/LabelPalette.h"
+#include "vv/scene/QuantityTitle.h"
 
 namespace vv::render {
 
@@ -48,6 +49,52 @@ Metrics metricsFor(const QRectF& area, int legends) {
     return m;
 }
 
+QFont legendFont(const Metrics& m) {
+    QFont font;
+    font.setPixelSize(static_cast<int>(std::lround(m.font)));
+    return font;
+}
+
+/// The least room between two tick labels: 1.25 times the font's pixel size,
+/// about two digits (closer, "100 128" reads as crowded).
+double labelGap(const Metrics& m) {
+    return std::round(m.font * 1.25);
+}
+
+/// The room of a title line.
+double titleLineHeight(const Metrics& m) {
+    return m.font * 1.3;
+}
+
+/// `title` in the lines it takes inside a legend `m` wide: one, or more
+/// where it is wider, broken between words (a single word wider than the
+/// legend, which no title has, is elided): the title is never shortened.
+QStringList titleLines(const Metrics& m, const QString& title) {
+    const QFontMetricsF fm(legendFont(m));
+    const double width = m.width - 2.0 * m.pad;
+    QStringList lines;
+    QString line;
+    for (const QString& word : title.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        const QString longer = line.isEmpty() ? word : line + QLatin1Char(' ') + word;
+        if (!line.isEmpty() && fm.horizontalAdvance(longer) > width) {
+            lines << line;
+            line = word;
+        } else {
+            line = longer;
+        }
+    }
+    lines << line;
+    for (QString& l : lines) {
+        l = fm.elidedText(l, Qt::ElideRight, width);
+    }
+    return lines;
+}
+
+/// A colour bar legend's box height with its title.
+double barLegendHeight(const Metrics& m, const QString& title) {
+    return m.height + static_cast<double>(titleLines(m, title).size() - 1) * titleLineHeight(m);
+}
+
 QImage strip(const std::vector<glm::u8vec4>& table) {
     QImage image(static_cast<int>(table.size()), 1, QImage::Format_RGB32);
     for (std::size_t i = 0; i < table.size(); ++i) {
@@ -74,27 +121,26 @@ void paintBar(QPainter& painter, const QRectF& rect, const QImage& table) {
     painter.restore();
 }
 
-/// One legend box: title, colour bar, ticks and labels.
-/// `titles`: the title, then shorter forms of it; the first that fits is
-/// drawn, else the last one elided.
-void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStringList& titles,
+/// One legend box: title (titleLines()), colour bar, ticks and labels.
+void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QString& title,
               const QImage& bar, const std::vector<LegendTick>& ticks) {
     painter.setPen(Qt::NoPen);
     painter.setBrush(QColor(0, 0, 0, 170));
     painter.drawRoundedRect(box, m.pad * 0.8, m.pad * 0.8);
 
-    QFont font = painter.font();
-    font.setPixelSize(static_cast<int>(std::lround(m.font)));
+    const QFont font = legendFont(m);
     painter.setFont(font);
     const QFontMetricsF fm(font);
     const QRectF inner = box.adjusted(m.pad, m.pad, -m.pad, -m.pad);
     painter.setPen(QColor(245, 245, 245));
-    const QRectF titleRect(inner.left(), inner.top(), inner.width(), m.font * 1.3);
-    const QString title = fittingTitle(fm, titles, inner.width());
-    painter.drawText(titleRect, Qt::AlignLeft | Qt::AlignVCenter,
-                     fm.elidedText(title, Qt::ElideRight, inner.width()));
+    double top = inner.top();
+    for (const QString& line : titleLines(m, title)) {
+        painter.drawText(QRectF(inner.left(), top, inner.width(), titleLineHeight(m)),
+                         Qt::AlignLeft | Qt::AlignVCenter, line);
+        top += titleLineHeight(m);
+    }
 
-    const QRectF barRect(inner.left(), titleRect.bottom(), inner.width(), m.bar);
+    const QRectF barRect(inner.left(), top, inner.width(), m.bar);
     paintBar(painter, barRect, bar);
     painter.setBrush(Qt::NoBrush);
     painter.setPen(QPen(QColor(235, 235, 235), 1.0));
@@ -110,7 +156,7 @@ void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStr
         widths.push_back(w);
         painter.drawLine(QPointF(x, barRect.bottom()), QPointF(x, barRect.bottom() + m.tick));
     }
-    for (const std::size_t i : labelledTicks(centres, widths, 3.0)) {
+    for (const std::size_t i : labelledTicks(centres, widths, labelGap(m))) {
         const QRectF labelRect(centres[i] - widths[i] / 2.0, barRect.bottom() + m.tick, widths[i],
                                m.font * 1.25);
         painter.drawText(labelRect, Qt::AlignHCenter | Qt::AlignTop, ticks[i].label);
@@ -155,12 +201,6 @@ QStringList swatchTexts(const ParameterLegend& p) {
     return texts;
 }
 
-QFont legendFont(const Metrics& m) {
-    QFont font;
-    font.setPixelSize(static_cast<int>(std::lround(m.font)));
-    return font;
-}
-
 SwatchGrid swatchGrid(const ParameterLegend& p, const Metrics& m) {
     const QFontMetricsF fm(legendFont(m));
     const QStringList texts = swatchTexts(p);
@@ -180,11 +220,13 @@ SwatchGrid swatchGrid(const ParameterLegend& p, const Metrics& m) {
 }
 
 double legendHeight(const ParameterLegend& p, const Metrics& m) {
+    const QString title = QString::fromStdString(parameterLegendTitle(p));
     if (p.labels.empty()) {
-        return m.height;
+        return barLegendHeight(m, title);
     }
     const SwatchGrid grid = swatchGrid(p, m);
-    return m.pad + m.font * 1.3 + static_cast<double>(grid.rows) * grid.rowHeight + m.pad;
+    return m.pad + static_cast<double>(titleLines(m, title).size()) * titleLineHeight(m) +
+           static_cast<double>(grid.rows) * grid.rowHeight + m.pad;
 }
 
 /// A label legend: the title, then per label a swatch of its colour and its name.
@@ -198,10 +240,12 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
     const QFontMetricsF fm(font);
     const QRectF inner = box.adjusted(m.pad, m.pad, -m.pad, -m.pad);
     painter.setPen(QColor(245, 245, 245));
-    const QRectF titleRect(inner.left(), inner.top(), inner.width(), m.font * 1.3);
-    const QString title = QString::fromStdString(parameterLegendTitle(p));
-    painter.drawText(titleRect, Qt::AlignLeft | Qt::AlignVCenter,
-                     fm.elidedText(title, Qt::ElideRight, inner.width()));
+    double titleBottom = inner.top();
+    for (const QString& line : titleLines(m, QString::fromStdString(parameterLegendTitle(p)))) {
+        painter.drawText(QRectF(inner.left(), titleBottom, inner.width(), titleLineHeight(m)),
+                         Qt::AlignLeft | Qt::AlignVCenter, line);
+        titleBottom += titleLineHeight(m);
+    }
     const SwatchGrid grid = swatchGrid(p, m);
     const QStringList texts = swatchTexts(p);
     const double columnWidth = inner.width() / static_cast<double>(grid.columns);
@@ -209,7 +253,7 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
         const int column = i / grid.rows;
         const int row = i % grid.rows;
         const double left = inner.left() + static_cast<double>(column) * columnWidth;
-        const double top = titleRect.bottom() + static_cast<double>(row) * grid.rowHeight;
+        const double top = titleBottom + static_cast<double>(row) * grid.rowHeight;
         const QRectF swatch(left, top + (grid.rowHeight - m.bar) / 2.0, m.bar, m.bar);
         const bool summary = labelColoursRepeat(p) ||
                              static_cast<std::size_t>(i) >= p.labels.size() ||
@@ -231,22 +275,12 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
 
 }  // namespace
 
-std::string depthLegendTitle(const DepthLegend& legend) {
-    return depthLegendTitles(legend).front();
+QString depthQuantityName() {
+    return translated(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind the frontmost vessel"));
 }
 
-std::vector<std::string> depthLegendTitles(const DepthLegend& legend) {
-    const QString unit = QString::fromStdString(legend.unit);
-    const auto title = [&](const char* withUnit, const char* withoutUnit) {
-        return (unit.isEmpty() ? translated(withoutUnit) : translated(withUnit).arg(unit))
-            .toStdString();
-    };
-    return {title(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind nearest vessel (%1)"),
-                  QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind nearest vessel")),
-            title(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind vessel (%1)"),
-                  QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind vessel")),
-            title(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth (%1)"),
-                  QT_TRANSLATE_NOOP("vv::render::Legend", "Depth"))};
+std::string depthLegendTitle(const DepthLegend& legend) {
+    return scene::quantityTitle(depthQuantityName().toStdString(), legend.unit);
 }
 
 QString labelName(const scene::Label& label) {
@@ -255,21 +289,12 @@ QString labelName(const scene::Label& label) {
                               : QString::fromStdString(label.name);
 }
 
-QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles, double width) {
-    for (const QString& candidate : titles) {
-        if (metrics.horizontalAdvance(candidate) <= width) {
-            return candidate;
-        }
-    }
-    return titles.isEmpty() ? QString() : titles.back();
-}
-
 std::string parameterLegendTitle(const ParameterLegend& legend) {
     if (!legend.title.empty()) {
         return legend.title;
     }
-    const bool unit = !legend.unit.empty() && legend.labels.empty();
-    return legend.name + (unit ? " (" + legend.unit + ")" : "");
+    // A label legend lists names: the values have no unit.
+    return scene::quantityTitle(legend.name, legend.labels.empty() ? legend.unit : std::string());
 }
 
 Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
@@ -340,8 +365,10 @@ LegendLayout legendLayout(const QRectF& area, const Legends& legends) {
     const int count = (legends.depth ? 1 : 0) + (legends.parameter ? 1 : 0);
     const Metrics m = metricsFor(area, count);
     if (legends.depth) {
+        const double height =
+            barLegendHeight(m, QString::fromStdString(depthLegendTitle(*legends.depth)));
         layout.depth =
-            QRectF(area.left() + m.margin, area.bottom() - m.margin - m.height, m.width, m.height);
+            QRectF(area.left() + m.margin, area.bottom() - m.margin - height, m.width, height);
     }
     if (legends.parameter) {
         double bottom = area.bottom() - m.margin;
@@ -371,12 +398,8 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
     painter.setRenderHint(QPainter::TextAntialiasing, true);
     if (legends.depth) {
         const DepthLegend& d = *legends.depth;
-        QStringList titles;
-        for (const std::string& t : depthLegendTitles(d)) {
-            titles.push_back(QString::fromStdString(t));
-        }
-        paintBox(painter, layout.depth, m, titles, strip(colormaps::lut(d.scale, 256)),
-                 depthLegendTicks(d.dmin, d.dmax));
+        paintBox(painter, layout.depth, m, QString::fromStdString(depthLegendTitle(d)),
+                 strip(colormaps::lut(d.scale, 256)), depthLegendTicks(d.dmin, d.dmax));
     }
     const auto paintParameter = [&](const ParameterLegend& p, const QRectF& box) {
         if (!p.labels.empty()) {
@@ -386,7 +409,7 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
         const int entries = p.bins >= 2 ? p.bins : 256;
         const auto lo = static_cast<double>(p.min);
         const auto hi = static_cast<double>(p.max);
-        paintBox(painter, box, m, {QString::fromStdString(parameterLegendTitle(p))},
+        paintBox(painter, box, m, QString::fromStdString(parameterLegendTitle(p)),
                  strip(colormaps::lut(p.map, entries)),
                  p.bins >= 2 ? binEdgeTicks(lo, hi, p.bins) : legendTicks(lo, hi));
     };

@@ -5,6 +5,8 @@
 #include <QString>
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <vector>
 
 #include "vv/render/LegendPainter.h"
 
@@ -145,37 +147,47 @@ std::vector<LegendTick> binEdgeTicks(double lo, double hi, int bins) {
 std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
                                        const std::vector<double>& widths, double gap) {
     const std::size_t n = std::min(centres.size(), widths.size());
-    if (n == 0) {
-        return {};
+    if (n < 2) {
+        return n == 0 ? std::vector<std::size_t>{} : std::vector<std::size_t>{0};
     }
-    const auto fits = [&](const std::vector<std::size_t>& chosen) {
-        for (std::size_t i = 1; i < chosen.size(); ++i) {
-            const std::size_t a = chosen[i - 1];
-            const std::size_t b = chosen[i];
-            if (centres[a] + widths[a] / 2.0 + gap > centres[b] - widths[b] / 2.0) {
-                return false;
+    const auto fits = [&](std::size_t a, std::size_t b) {
+        return centres[a] + widths[a] / 2.0 + gap <= centres[b] - widths[b] / 2.0;
+    };
+    // Chains of labels from the first tick: spread[c][i] is the widest
+    // smallest distance between neighbours of a chain of c + 1 labels that
+    // ends at tick i (negative: no such chain); from[c][i] its label before i.
+    constexpr double kNone = -1.0;
+    std::vector<std::vector<double>> spread(n, std::vector<double>(n, kNone));
+    std::vector<std::vector<std::size_t>> from(n, std::vector<std::size_t>(n, 0));
+    spread[0][0] = std::numeric_limits<double>::infinity();
+    std::size_t most = 0;  // labels - 1 of the longest chain that reaches the last tick
+    for (std::size_t c = 1; c < n; ++c) {
+        for (std::size_t i = c; i < n; ++i) {
+            for (std::size_t j = c - 1; j < i; ++j) {
+                if (spread[c - 1][j] < 0.0 || !fits(j, i)) {
+                    continue;
+                }
+                const double s = std::min(spread[c - 1][j], centres[i] - centres[j]);
+                if (s > spread[c][i]) {
+                    spread[c][i] = s;
+                    from[c][i] = j;
+                }
             }
         }
-        return true;
-    };
-    for (std::size_t k = 1; k < n; ++k) {
-        std::vector<std::size_t> chosen;
-        for (std::size_t i = 0; i + 1 < n; i += k) {
-            chosen.push_back(i);
-        }
-        // The last end always; it replaces the labelled neighbours too close to it.
-        const auto collidesWithEnd = [&](std::size_t i) {
-            return centres[i] + widths[i] / 2.0 + gap > centres[n - 1] - widths[n - 1] / 2.0;
-        };
-        while (chosen.size() > 1 && collidesWithEnd(chosen.back())) {
-            chosen.pop_back();
-        }
-        chosen.push_back(n - 1);
-        if (fits(chosen)) {
-            return chosen;
+        if (spread[c][n - 1] >= 0.0) {
+            most = c;
         }
     }
-    return n > 1 ? std::vector<std::size_t>{0, n - 1} : std::vector<std::size_t>{0};
+    if (most == 0) {
+        return {0, n - 1};  // even the ends alone collide: both are shown anyway
+    }
+    std::vector<std::size_t> chosen(most + 1);
+    std::size_t at = n - 1;
+    for (std::size_t c = most + 1; c-- > 0;) {
+        chosen[c] = at;
+        at = from[c][at];
+    }
+    return chosen;
 }
 
 std::vector<LegendTick> depthLegendTicks(double dmin, double dmax, int maxTicks) {

@@ -2,6 +2,7 @@
 #include "PdfFlow.h"
 
 #include <QFontMetricsF>
+#include <QRegularExpression>
 #include <algorithm>
 
 namespace vv::report::pdf {
@@ -77,6 +78,16 @@ void Flow::finish() {
 double Flow::textHeight(const QString& text, const QFont& f, double w, int wrap) const {
     const QFontMetricsF fm(f, &writer_);
     return fm.boundingRect(QRectF(0, 0, w, 1e6), wrap, text).height();
+}
+
+double Flow::widestWord(const QString& text, const QFont& f) const {
+    const QFontMetricsF fm(f, &writer_);
+    double widest = 0.0;
+    for (const QString& word :
+         text.split(QRegularExpression(QStringLiteral("\\s")), Qt::SkipEmptyParts)) {
+        widest = std::max(widest, fm.horizontalAdvance(word));
+    }
+    return widest;
 }
 
 void Flow::paragraph(const QString& text, const QFont& f, const QColor& colour, double spaceAfter) {

@@ -59,6 +59,9 @@ class Flow {
     /// Height of `text` in `f` wrapped to `width`.
     [[nodiscard]] double textHeight(const QString& text, const QFont& f, double w,
                                     int wrap = Qt::TextWordWrap) const;
+    /// Width of the widest word of `text` in `f`: the least a box can be that
+    /// wraps `text` without cutting a word.
+    [[nodiscard]] double widestWord(const QString& text, const QFont& f) const;
     /// Draws `text` at the cursor (wrapped) and advances by its height.
     void paragraph(const QString& text, const QFont& f, const QColor& colour,
                    double spaceAfter = 0.0);

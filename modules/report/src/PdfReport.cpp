@@ -21,6 +21,7 @@
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/render/MeshStyle.h"
+#include "vv/scene/QuantityTitle.h"
 #include "vv/vss/Solver.h"
 
 namespace vv::report {
@@ -99,10 +100,24 @@ class StatsTable {
                             .arg(withUnit(exact(*parameter.thresholds.above), parameter.unit));
         }
         columns_ = static_cast<int>(headers_.size());
-        // The object column takes what the numeric ones leave.
+        for (const ParameterStats& s : parameter.stats) {
+            rows_.push_back(cells(s));
+        }
+        // A numeric column is as wide as its header's longest word and its
+        // widest value need (no word is ever cut: "Abdeckung", not
+        // "bdeckung"), at least its share; the object column takes the rest.
         const double numeric = mm(std::min(24.0, 110.0 / (columns_ - 1)));
         widths_.assign(static_cast<std::size_t>(columns_), numeric);
-        widths_[0] = flow.width() - numeric * (columns_ - 1);
+        double taken = 0.0;
+        for (int c = 1; c < columns_; ++c) {
+            double needed = flow.widestWord(headers_[c], headFont_);
+            for (const QStringList& row : rows_) {
+                needed = std::max(needed, flow.widestWord(row[c], cellFont_));
+            }
+            widths_[column(c)] = std::max(numeric, needed + 2 * pad_ + mm(0.5));
+            taken += widths_[column(c)];
+        }
+        widths_[0] = flow.width() - taken;
         for (int c = 0; c < columns_; ++c) {
             headHeight_ = std::max(headHeight_, flow.textHeight(headers_[c], headFont_,
                                                                 widths_[column(c)] - 2 * pad_));
@@ -131,7 +146,7 @@ class StatsTable {
         }
         header(flow);
         int index = 0;
-        for (const ParameterStats& s : parameter_.stats) {
+        for (const QStringList& cells : rows_) {
             const int before = flow.page();
             // The last row stays with the note below the table.
             const bool last = index + 1 == static_cast<int>(parameter_.stats.size());
@@ -141,15 +156,6 @@ class StatsTable {
             }
             if (index % 2 == 1) {
                 flow.fill(QRectF(flow.left(), flow.y(), flow.width(), rowHeight_), pdf::kZebra);
-            }
-            QStringList cells = {s.object.empty() ? ReportText::tr("(unnamed)") : qs(s.object),
-                                 percent(s.coveredFraction), number(s.min), number(s.mean),
-                                 number(s.max)};
-            if (parameter_.thresholds.below) {
-                cells << (s.fractionBelow ? percent(*s.fractionBelow) : QStringLiteral("\u2014"));
-            }
-            if (parameter_.thresholds.above) {
-                cells << (s.fractionAbove ? percent(*s.fractionAbove) : QStringLiteral("\u2014"));
             }
             row(flow, cells, cellFont_, rowHeight_, pdf::kInk);
             flow.advance(rowHeight_);
@@ -166,6 +172,20 @@ class StatsTable {
 
   private:
     static std::size_t column(int c) { return static_cast<std::size_t>(c); }
+
+    /// One object's row as printed.
+    [[nodiscard]] QStringList cells(const ParameterStats& s) const {
+        QStringList cells = {s.object.empty() ? ReportText::tr("(unnamed)") : qs(s.object),
+                             percent(s.coveredFraction), number(s.min), number(s.mean),
+                             number(s.max)};
+        if (parameter_.thresholds.below) {
+            cells << (s.fractionBelow ? percent(*s.fractionBelow) : QStringLiteral("\u2014"));
+        }
+        if (parameter_.thresholds.above) {
+            cells << (s.fractionAbove ? percent(*s.fractionAbove) : QStringLiteral("\u2014"));
+        }
+        return cells;
+    }
 
     void row(Flow& flow, const QStringList& cells, const QFont& f, double h,
              const QColor& colour) const {
@@ -188,6 +208,7 @@ class StatsTable {
 
     const ReportParameter& parameter_;
     QStringList headers_;
+    std::vector<QStringList> rows_;  ///< the cells of each object's row
     int columns_ = 0;
     std::vector<double> widths_;
     QFont headFont_ = font(8.0, true);
@@ -431,10 +452,7 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
 
         if (content.parameter) {
             const ReportParameter& parameter = *content.parameter;
-            const QString name =
-                parameter.unit.empty()
-                    ? qs(parameter.name)
-                    : ReportText::tr("%1 (%2)").arg(qs(parameter.name), qs(parameter.unit));
+            const QString name = qs(scene::quantityTitle(parameter.name, parameter.unit));
             const QString scale = scaleText(parameter);
             const StatsTable table(flow, parameter);
             flow.heading(

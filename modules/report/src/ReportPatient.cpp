@@ -4,9 +4,9 @@
 #include <QDate>
 #include <algorithm>
 #include <cctype>
-#include <vector>
 
 #include "ReportText.h"
+#include "vv/dicom/PersonName.h"
 
 namespace vv::report {
 
@@ -36,31 +36,7 @@ std::string displayName(const ReportPatient& patient, const std::string& value) 
     if (patient.anonymise || trimmed(value).empty()) {
         return displayText(patient, value);
     }
-    // DICOM PN: family^given^middle^prefix^suffix (first component group only).
-    const std::string alphabetic = value.substr(0, value.find('='));
-    std::vector<std::string> parts;
-    std::size_t start = 0;
-    while (true) {
-        const auto caret = alphabetic.find('^', start);
-        parts.push_back(trimmed(alphabetic.substr(start, caret - start)));
-        if (caret == std::string::npos) {
-            break;
-        }
-        start = caret + 1;
-    }
-    std::string given;
-    for (std::size_t i = 1; i < std::min<std::size_t>(parts.size(), 3); ++i) {
-        if (!parts[i].empty()) {
-            given += (given.empty() ? "" : " ") + parts[i];
-        }
-    }
-    std::string name = parts[0];
-    if (!given.empty()) {
-        name += (name.empty() ? "" : ", ") + given;
-    }
-    if (parts.size() > 3 && !parts[3].empty()) {
-        name = parts[3] + " " + name;
-    }
+    const std::string name = dicom::personNameText(value);
     return name.empty() ? displayText(patient, {}) : name;
 }
 

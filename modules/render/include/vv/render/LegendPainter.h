@@ -3,7 +3,6 @@
 
 #include <QRectF>
 #include <QString>
-#include <QStringList>
 #include <optional>
 #include <string>
 #include <utility>
@@ -16,15 +15,14 @@
 #include "vv/scene/ArrayLabels.h"
 #include "vv/scene/Mesh.h"
 
-class QFontMetricsF;
 class QImage;
 class QPainter;
 
 namespace vv::render {
 
 /// The depth legend: the depth colour scale labelled in scene units as the
-/// distance behind the nearest visible vessel point, 0 at dmin to
-/// dmax - dmin at dmax (VSS.md, "Normalised depth").
+/// depth behind the frontmost visible vessel point (along the viewing
+/// direction), 0 at dmin to dmax - dmin at dmax (VSS.md, "Normalised depth").
 struct DepthLegend {
     colormaps::DepthScale scale = colormaps::DepthScale::Chromadepth;
     double dmin = 0.0;  ///< linear view depth of t = 0, scene units
@@ -88,10 +86,10 @@ struct LegendTick {
 [[nodiscard]] std::vector<LegendTick> binEdgeTicks(double lo, double hi, int bins);
 
 /// Which tick labels to draw, given each label's centre and width along the
-/// bar (pixels) and the least `gap` between two labels: all when they fit,
-/// else every k-th for the smallest k that fits, always with the first and
-/// the last (the last replaces the labelled neighbours too close to it). Indices
-/// ascending; {0, n - 1} when even the ends alone collide.
+/// bar (pixels) and the least `gap` between two labels: as many as fit with
+/// no two closer than `gap`, always the first and the last; among the ways
+/// to label that many, the one whose closest neighbours are farthest apart.
+/// Indices ascending; {0, n - 1} when even the ends alone collide.
 [[nodiscard]] std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
                                                      const std::vector<double>& widths, double gap);
 
@@ -99,20 +97,21 @@ struct LegendTick {
 /// nearest visible vessel point, scene units), position 0 at dmin.
 [[nodiscard]] std::vector<LegendTick> depthLegendTicks(double dmin, double dmax, int maxTicks = 5);
 
-/// "Depth behind nearest vessel (mm)", in the UI language (translation
-/// context "vv::render::Legend", as every legend text).
+/// The one name of the depth quantity that the depth legend, the probe and
+/// the reports use: "Depth behind the frontmost vessel" (the frontmost
+/// vessel point in view; the distance is along the viewing direction), in
+/// the UI language (translation context "vv::render::Legend", as every
+/// legend text).
+[[nodiscard]] QString depthQuantityName();
+/// The depth legend's title: "Depth behind the frontmost vessel (mm)"
+/// (scene::quantityTitle()); a legend too narrow for it in one line shows it
+/// in more (never shortened).
 [[nodiscard]] std::string depthLegendTitle(const DepthLegend& legend);
-/// depthLegendTitle() and shorter forms for narrow legends ("Depth (mm)" last).
-[[nodiscard]] std::vector<std::string> depthLegendTitles(const DepthLegend& legend);
 /// A label's legend text: its name from the file, else "Label <value>"
 /// (translated, the value in the UI locale).
 [[nodiscard]] QString labelName(const scene::Label& label);
-/// The first of `titles` no wider than `width` in `metrics`, else the last one
-/// (the caller elides it).
-[[nodiscard]] QString fittingTitle(const QFontMetricsF& metrics, const QStringList& titles,
-                                   double width);
-/// "wss (Pa)", or the name alone without a unit (or for labels); the
-/// legend's own title when it has one.
+/// "wss (Pa)" (scene::quantityTitle()), or the name alone without a unit (or
+/// for labels); the legend's own title when it has one.
 [[nodiscard]] std::string parameterLegendTitle(const ParameterLegend& legend);
 
 /// The legends for a frame: the depth legend when the VSS is on and shown
@@ -147,8 +146,10 @@ struct LegendLayout {
 [[nodiscard]] LegendLayout legendLayout(const QRectF& area, const Legends& legends);
 
 /// Paints the legends with `painter` into `area`; the bars come from the same
-/// tables as the GL passes (colormaps::lut). A binned bar has a tick at
-/// every bin edge (binEdgeTicks(), labels chosen by labelledTicks()); a
+/// tables as the GL passes (colormaps::lut). A title too long for one line
+/// takes more (the box grows). A binned bar has a tick at every bin edge
+/// (binEdgeTicks(), labels chosen by labelledTicks() with a gap of 1.25 times
+/// the font's pixel size, about two digits, between two labels); a
 /// label legend one swatch per label with its name (from the file) or
 /// "Label <value>". Text is in the UI language and locale. Does nothing for
 /// empty legends.
