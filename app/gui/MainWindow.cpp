@@ -29,6 +29,7 @@
 #include <utility>
 
 #include "gui/DocumentController.h"
+#include "gui/ElidingLabel.h"
 #include "gui/ExportImageDialog.h"
 #include "gui/HelpTexts.h"
 #include "gui/LanguageMenu.h"
@@ -523,7 +524,10 @@ void MainWindow::revealPanel(const QWidget* panel) {
 }
 
 void MainWindow::buildStatusBar() {
-    statusLabel_ = new QLabel(tr("Ready"), this);
+    // The general message gives way ("…", whole in its tooltip) so that the
+    // permanent parts (measurement, VSS quality, range) always show whole.
+    statusLabel_ = new ElidingLabel(tr("Ready"), this);
+    statusLabel_->setObjectName(QStringLiteral("statusMessage"));
     rangeLabel_ = new QLabel(this);
     rangeLabel_->setObjectName(QStringLiteral("arrayRangeLabel"));
     vssLabel_ = new QLabel(this);

@@ -3,7 +3,9 @@
 // box, tab, group box title, header section, table column and line edit (its
 // placeholder too) under a widget whose text needs more room than it has, an
 // '&' shown literally, a horizontal scroll bar, and widgets that stick out of a
-// scroll area's view.
+// scroll area's view. Status bars and message boxes are widgets like any
+// other; a gui::ElidingLabel (property "vvElides") is never cut: it ends in
+// "…" and shows the rest in its tooltip.
 #pragma once
 
 #include <QAbstractButton>
@@ -126,6 +128,9 @@ class ClippingCheck {
         const QString text = label->text();
         if (text.isEmpty()) {
             return;
+        }
+        if (label->property("vvElides").toBool()) {
+            return;  // gui::ElidingLabel: ends in "…" when narrow, whole in its tooltip
         }
         const bool rich = label->textFormat() == Qt::RichText ||
                           (label->textFormat() == Qt::AutoText && Qt::mightBeRichText(text));

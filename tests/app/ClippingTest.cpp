@@ -10,6 +10,7 @@
 #include <QLayout>
 #include <QMessageBox>
 #include <QPointer>
+#include <QStatusBar>
 #include <QTabBar>
 #include <QWindow>
 #include <filesystem>
@@ -19,10 +20,13 @@
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
 #include "UiLanguage.h"
+#include "gui/EngineTexts.h"
 #include "gui/ExportImageDialog.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
+#include "gui/pacs/NetworkPreferencesDialog.h"
+#include "gui/pacs/PacsBrowser.h"
 #include "gui/pacs/SendDialog.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/SidePanel.h"
@@ -199,6 +203,64 @@ TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
                      QMessageBox::Close, window_.get());
     keys.setTextFormat(Qt::RichText);
     expectWhole(keys, "shortcuts");
+}
+
+/// The status bar with a measurement (its longest text: "… Punkt 1 um 44,7 mm
+/// tiefer" was cut to "tiefe") beside the DICOM listener, the VSS quality and
+/// the array's range; a long general message gives way instead.
+TEST_P(ClippingTest, StatusBarShowsTheMeasurementInFull) {
+    ASSERT_TRUE(waitForFrames());
+    auto* viewer = window_->viewer();
+    std::vector<vv::gui::ProbeResult> points;
+    for (int y = 1; y < 40 && points.size() < 2; ++y) {
+        for (int x = 1; x < 40 && points.size() < 2; ++x) {
+            const auto hit =
+                viewer->probeAt(QPointF(x * viewer->width() / 40.0, y * viewer->height() / 40.0));
+            if (hit && (points.empty() ||
+                        glm::distance(hit->worldPosition, points.front().worldPosition) > 50.0F)) {
+                points.push_back(*hit);
+            }
+        }
+    }
+    ASSERT_EQ(points.size(), 2U) << "no two vessel points in view";
+    for (const auto& point : points) {
+        emit viewer->pointPicked(point);
+    }
+    auto* measure = window_->statusBar()->findChild<QLabel*>(QStringLiteral("measureLabel"));
+    ASSERT_NE(measure, nullptr);
+    EXPECT_FALSE(measure->text().isEmpty());
+    window_->statusBar()
+        ->findChild<QLabel*>(QStringLiteral("statusMessage"))
+        ->setText(QStringLiteral("Preview (one voxel in 2 per axis): 37,688 triangles; components "
+                                 "kept: 1 — Apply for full resolution"));
+    settle();
+    window_->statusBar()->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("status-bar-" + caseName({GetParam(), 0}) + ".png"))
+            .string()));
+    const std::vector<std::string> problems = ClippingCheck::problems(window_->statusBar());
+    EXPECT_TRUE(problems.empty()) << "cut off in the status bar:" << listed(problems);
+}
+
+/// The DICOM menu's dialogs (Query PACS with its date fields, Preferences),
+/// the Export Image dialog with its note about another shape, and an error
+/// box with its details.
+TEST_P(ClippingTest, MoreDialogsShowEveryTextInFull) {
+    vv::gui::PacsBrowser query(window_.get());
+    expectWhole(query, "query-pacs");
+    vv::gui::NetworkPreferencesDialog preferences(window_.get());
+    expectWhole(preferences, "network-preferences");
+    vv::gui::ExportImageDialog image(*window_->viewer(), window_.get());
+    image.sizeChooser()->setCurrentIndex(
+        image.sizeChooser()->findData(vv::gui::ExportImageDialog::Uhd4k));
+    expectWhole(image, "export-image-4k");
+    vv::gui::ProblemText problem{QStringLiteral("/data/aorta.vtp is damaged"),
+                                 QStringLiteral("/data/aorta.vtp: binary STL truncated")};
+    vv::gui::showProblem(window_.get(), QStringLiteral("problemBox"), QStringLiteral("Open"),
+                         problem);
+    auto* box = window_->findChild<QMessageBox*>(QStringLiteral("problemBox"));
+    ASSERT_NE(box, nullptr);
+    expectWhole(*box, "problem-box");
+    box->close();
 }
 
 INSTANTIATE_TEST_SUITE_P(LanguagesAndSizes, ClippingTest,
