@@ -78,9 +78,9 @@ class PaintRecorder : public QPaintDevice {
         explicit Engine(PaintRecorder* device) : QPaintEngine(AllFeatures), device_(device) {}
         bool begin(QPaintDevice* /*device*/) override { return true; }
         bool end() override { return true; }
-        void updateState(const QPaintEngineState& state) override {
-            if ((state.state() & DirtyTransform) != 0) {
-                transform_ = state.transform();
+        void updateState(const QPaintEngineState& changed) override {
+            if ((changed.state() & DirtyTransform) != 0) {
+                transform_ = changed.transform();
             }
         }
         void drawPixmap(const QRectF& /*r*/, const QPixmap& /*pm*/, const QRectF& /*sr*/) override {

@@ -33,6 +33,7 @@ struct Metrics {
     double tick = 3.0;
     double width = 200.0;
     double height = 60.0;
+    double available = 200.0;  ///< the widest a legend may be beside the others
 };
 
 Metrics metricsFor(const QRectF& area, int legends) {
@@ -45,6 +46,7 @@ Metrics metricsFor(const QRectF& area, int legends) {
     const double available = (area.width() - static_cast<double>(legends + 1) * m.margin) /
                              static_cast<double>(std::max(legends, 1));
     m.width = std::min(std::clamp(area.width() * 0.3, 120.0, 340.0), available);
+    m.available = std::max(m.width, available);
     m.height = m.pad + m.font * 1.3 + m.bar + m.tick + m.font * 1.25 + m.pad;
     return m;
 }
@@ -69,9 +71,9 @@ double titleLineHeight(const Metrics& m) {
 /// `title` in the lines it takes inside a legend `m` wide: one, or more
 /// where it is wider, broken between words (a single word wider than the
 /// legend, which no title has, is elided): the title is never shortened.
-QStringList titleLines(const Metrics& m, const QString& title) {
+QStringList titleLines(const Metrics& m, const QString& title, double boxWidth) {
     const QFontMetricsF fm(legendFont(m));
-    const double width = m.width - 2.0 * m.pad;
+    const double width = boxWidth - 2.0 * m.pad;
     QStringList lines;
     QString line;
     for (const QString& word : title.split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
@@ -91,8 +93,9 @@ QStringList titleLines(const Metrics& m, const QString& title) {
 }
 
 /// A colour bar legend's box height with its title.
-double barLegendHeight(const Metrics& m, const QString& title) {
-    return m.height + static_cast<double>(titleLines(m, title).size() - 1) * titleLineHeight(m);
+double barLegendHeight(const Metrics& m, const QString& title, double boxWidth) {
+    return m.height +
+           static_cast<double>(titleLines(m, title, boxWidth).size() - 1) * titleLineHeight(m);
 }
 
 QImage strip(const std::vector<glm::u8vec4>& table) {
@@ -134,7 +137,7 @@ void paintBox(QPainter& painter, const QRectF& box, const Metrics& m, const QStr
     const QRectF inner = box.adjusted(m.pad, m.pad, -m.pad, -m.pad);
     painter.setPen(QColor(245, 245, 245));
     double top = inner.top();
-    for (const QString& line : titleLines(m, title)) {
+    for (const QString& line : titleLines(m, title, box.width())) {
         painter.drawText(QRectF(inner.left(), top, inner.width(), titleLineHeight(m)),
                          Qt::AlignLeft | Qt::AlignVCenter, line);
         top += titleLineHeight(m);
@@ -219,13 +222,37 @@ SwatchGrid swatchGrid(const ParameterLegend& p, const Metrics& m) {
     return grid;
 }
 
+/// The ticks of a parameter legend's bar.
+std::vector<LegendTick> parameterTicks(const ParameterLegend& p) {
+    const auto lo = static_cast<double>(p.min);
+    const auto hi = static_cast<double>(p.max);
+    return p.bins >= 2 ? binEdgeTicks(lo, hi, p.bins) : legendTicks(lo, hi);
+}
+
+/// A parameter legend's width: a binned bar as wide as labels at all its
+/// edges need (as far as the room beside the other legends allows), else
+/// the usual width.
+double legendWidth(const ParameterLegend& p, const Metrics& m) {
+    if (p.bins < 2 || !p.labels.empty()) {
+        return m.width;
+    }
+    const QFontMetricsF fm(legendFont(m));
+    double widest = 0.0;
+    for (const LegendTick& tick : parameterTicks(p)) {
+        widest = std::max(widest, fm.horizontalAdvance(tick.label) + 2.0);
+    }
+    // Neighbouring edges one label and a gap apart, the end labels held inside the bar.
+    const double bar = static_cast<double>(p.bins) * (widest + labelGap(m)) + widest;
+    return std::clamp(bar + 2.0 * m.pad, m.width, m.available);
+}
+
 double legendHeight(const ParameterLegend& p, const Metrics& m) {
     const QString title = QString::fromStdString(parameterLegendTitle(p));
     if (p.labels.empty()) {
-        return barLegendHeight(m, title);
+        return barLegendHeight(m, title, legendWidth(p, m));
     }
     const SwatchGrid grid = swatchGrid(p, m);
-    return m.pad + static_cast<double>(titleLines(m, title).size()) * titleLineHeight(m) +
+    return m.pad + static_cast<double>(titleLines(m, title, m.width).size()) * titleLineHeight(m) +
            static_cast<double>(grid.rows) * grid.rowHeight + m.pad;
 }
 
@@ -241,7 +268,8 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
     const QRectF inner = box.adjusted(m.pad, m.pad, -m.pad, -m.pad);
     painter.setPen(QColor(245, 245, 245));
     double titleBottom = inner.top();
-    for (const QString& line : titleLines(m, QString::fromStdString(parameterLegendTitle(p)))) {
+    for (const QString& line :
+         titleLines(m, QString::fromStdString(parameterLegendTitle(p)), box.width())) {
         painter.drawText(QRectF(inner.left(), titleBottom, inner.width(), titleLineHeight(m)),
                          Qt::AlignLeft | Qt::AlignVCenter, line);
         titleBottom += titleLineHeight(m);
@@ -366,7 +394,7 @@ LegendLayout legendLayout(const QRectF& area, const Legends& legends) {
     const Metrics m = metricsFor(area, count);
     if (legends.depth) {
         const double height =
-            barLegendHeight(m, QString::fromStdString(depthLegendTitle(*legends.depth)));
+            barLegendHeight(m, QString::fromStdString(depthLegendTitle(*legends.depth)), m.width);
         layout.depth =
             QRectF(area.left() + m.margin, area.bottom() - m.margin - height, m.width, height);
     }
@@ -374,7 +402,8 @@ LegendLayout legendLayout(const QRectF& area, const Legends& legends) {
         double bottom = area.bottom() - m.margin;
         const auto place = [&](const ParameterLegend& p) {
             const double height = legendHeight(p, m);
-            const QRectF box(area.right() - m.margin - m.width, bottom - height, m.width, height);
+            const double width = legendWidth(p, m);
+            const QRectF box(area.right() - m.margin - width, bottom - height, width, height);
             bottom = box.top() - m.margin * 0.5;
             return box;
         };
@@ -407,11 +436,8 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
             return;
         }
         const int entries = p.bins >= 2 ? p.bins : 256;
-        const auto lo = static_cast<double>(p.min);
-        const auto hi = static_cast<double>(p.max);
         paintBox(painter, box, m, QString::fromStdString(parameterLegendTitle(p)),
-                 strip(colormaps::lut(p.map, entries)),
-                 p.bins >= 2 ? binEdgeTicks(lo, hi, p.bins) : legendTicks(lo, hi));
+                 strip(colormaps::lut(p.map, entries)), parameterTicks(p));
     };
     if (legends.parameter) {
         paintParameter(*legends.parameter, layout.parameter);

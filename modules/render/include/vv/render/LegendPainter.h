@@ -134,7 +134,9 @@ struct LegendTick {
 /// Where the legends go inside `area` (logical pixels): the depth legend
 /// bottom-left, the parameter legend bottom-right, each in a dark box that
 /// keeps the text readable; empty rectangles for absent legends. A label
-/// legend is as tall as its swatches need (in columns when they fit).
+/// legend is as tall as its swatches need (in columns when they fit); a
+/// binned one as wide as labels at all its bin edges need, as far as the
+/// room beside the other legend allows.
 struct LegendLayout {
     QRectF depth;      ///< null when there is no depth legend
     QRectF parameter;  ///< null when there is no parameter legend
