@@ -224,8 +224,9 @@ TEST(Translations, GermanUsesOneTermPerConcept) {
                                   QRegularExpression::CaseInsensitiveOption);
     };
     const std::vector<Term> terms{
-        // The document: Bericht; Befund is the findings text in it.
-        {ci("\\breports?\\b(?!ed)"),
+        // The document: Bericht; Befund is the findings text in it ("the PACS
+        // reports the move done" is the verb).
+        {ci("\\breports?\\b(?!\\s+(?:the|that|a|an)\\b)"),
          QStringLiteral("Bericht"),
          {QStringLiteral("Befund-PDF"), QStringLiteral("PDF-Befund"),
           QStringLiteral("Befundbild")}},
@@ -242,15 +243,17 @@ TEST(Translations, GermanUsesOneTermPerConcept) {
         if (m.obsolete || m.numerus) {
             continue;
         }
+        QString shown = m.translation;  // as read: without the mnemonic's '&'
+        shown.remove(QRegularExpression(QStringLiteral("&(?!&)")));
         for (const Term& term : terms) {
             if (!term.english.match(m.source).hasMatch()) {
                 continue;
             }
-            EXPECT_TRUE(m.translation.contains(term.german, Qt::CaseInsensitive))
+            EXPECT_TRUE(shown.contains(term.german, Qt::CaseInsensitive))
                 << "\"" << term.german.toStdString() << "\" expected: " << describe(m) << " -> "
                 << m.translation.toStdString();
             for (const QString& other : term.notGerman) {
-                EXPECT_FALSE(m.translation.contains(other))
+                EXPECT_FALSE(shown.contains(other))
                     << "\"" << other.toStdString() << "\" for \"" << term.german.toStdString()
                     << "\": " << describe(m) << " -> " << m.translation.toStdString();
             }
