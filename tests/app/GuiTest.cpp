@@ -16,6 +16,7 @@
 #include <QMimeData>
 #include <QMouseEvent>
 #include <QPushButton>
+#include <QSettings>
 #include <QThread>
 #include <QUrl>
 #include <QWheelEvent>
@@ -24,6 +25,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <memory>
 #include <numbers>
 #include <set>
 
@@ -287,6 +289,9 @@ TEST_F(GuiTest, LoadsAFileOnAWorkerAndRemembersIt) {
 /// The window reopens exactly where it was closed, however often: not a
 /// title bar lower each time (saveGeometry / restoreGeometry).
 TEST_F(GuiTest, TheWindowReopensWhereItWasClosed) {
+    // Closing saves the view settings too (the VSS switched off in SetUp):
+    // gone afterwards, so that the next test starts from the defaults.
+    const std::shared_ptr<void> forget(nullptr, [](void*) { QSettings().clear(); });
     window_->setGeometry(QRect(137, 91, 1000, 640));
     ASSERT_TRUE(waitUntil([&] { return window_->windowHandle()->isExposed(); }));
     QCoreApplication::processEvents();
