@@ -40,8 +40,8 @@ void ElidingLabel::paintEvent(QPaintEvent* /*event*/) {
 bool ElidingLabel::event(QEvent* event) {
     if (event->type() == QEvent::ToolTip && toolTip().isEmpty()) {
         // The whole text on demand while it does not fit.
-        const auto* help = static_cast<QHelpEvent*>(event);
-        if (shownText() != text()) {
+        const auto* help = dynamic_cast<QHelpEvent*>(event);
+        if (help != nullptr && shownText() != text()) {
             QToolTip::showText(help->globalPos(), text(), this);
         } else {
             QToolTip::hideText();

@@ -55,6 +55,39 @@ int runReport(const std::string& environment, const fs::path& input, const fs::p
                    output);
 }
 
+/// A word of a page with its box in points (pdftotext -bbox).
+struct Box {
+    int page = 0;
+    double xMin = 0.0;
+    double yMin = 0.0;
+    double xMax = 0.0;
+    double yMax = 0.0;
+    std::string text;
+};
+
+std::vector<Box> boxes(const fs::path& pdf) {
+    std::string html;
+    EXPECT_EQ(runTool("pdftotext -bbox '" + pdf.string() + "' -", html), 0) << html;
+    std::vector<Box> all;
+    int page = 0;
+    const std::regex token(
+        R"re(<page |<word xMin="([^"]*)" yMin="([^"]*)" xMax="([^"]*)" yMax="([^"]*)">([^<]*)</word>)re");
+    for (auto it = std::sregex_iterator(html.begin(), html.end(), token);
+         it != std::sregex_iterator(); ++it) {
+        const std::smatch& m = *it;
+        if (m.str(0) == "<page ") {
+            ++page;
+            continue;
+        }
+        all.push_back({page, std::stod(m.str(1)), std::stod(m.str(2)), std::stod(m.str(3)),
+                       std::stod(m.str(4)),
+                       QTextDocumentFragment::fromHtml(QString::fromStdString(m.str(5)))
+                           .toPlainText()
+                           .toStdString()});
+    }
+    return all;
+}
+
 /// One word of the PDF (pdftotext -bbox): its page, position and text.
 struct Word {
     int page = 0;
@@ -64,23 +97,9 @@ struct Word {
 };
 
 std::vector<Word> words(const fs::path& pdf) {
-    std::string html;
-    EXPECT_EQ(runTool("pdftotext -bbox '" + pdf.string() + "' -", html), 0)
-        << "pdftotext (poppler-utils; scripts/setup-deps): " << html;
     std::vector<Word> all;
-    int page = 0;
-    const std::regex token(
-        R"re(<page |<word xMin="[^"]*" yMin="([^"]*)" xMax="[^"]*" yMax="([^"]*)">([^<]*)</word>)re");
-    for (auto it = std::sregex_iterator(html.begin(), html.end(), token);
-         it != std::sregex_iterator(); ++it) {
-        const std::smatch& m = *it;
-        if (m.str(0) == "<page ") {
-            ++page;
-            continue;
-        }
-        const QString text =
-            QTextDocumentFragment::fromHtml(QString::fromStdString(m.str(3))).toPlainText();
-        all.push_back({page, std::stod(m.str(1)), std::stod(m.str(2)), text.toStdString()});
+    for (const Box& b : boxes(pdf)) {
+        all.push_back({b.page, b.yMin, b.yMax, b.text});
     }
     return all;
 }
@@ -274,39 +293,6 @@ TEST(ReportLanguageTest, EnglishReportHasNoGerman) {
     }
     EXPECT_NE(text.find("1964-08-12"), std::string::npos) << text;
     EXPECT_NE(text.find("Not for diagnostic use."), std::string::npos) << text;
-}
-
-/// A word of a page with its box in points (pdftotext -bbox).
-struct Box {
-    int page = 0;
-    double xMin = 0.0;
-    double yMin = 0.0;
-    double xMax = 0.0;
-    double yMax = 0.0;
-    std::string text;
-};
-
-std::vector<Box> boxes(const fs::path& pdf) {
-    std::string html;
-    EXPECT_EQ(runTool("pdftotext -bbox '" + pdf.string() + "' -", html), 0) << html;
-    std::vector<Box> all;
-    int page = 0;
-    const std::regex token(
-        R"re(<page |<word xMin="([^"]*)" yMin="([^"]*)" xMax="([^"]*)" yMax="([^"]*)">([^<]*)</word>)re");
-    for (auto it = std::sregex_iterator(html.begin(), html.end(), token);
-         it != std::sregex_iterator(); ++it) {
-        const std::smatch& m = *it;
-        if (m.str(0) == "<page ") {
-            ++page;
-            continue;
-        }
-        all.push_back({page, std::stod(m.str(1)), std::stod(m.str(2)), std::stod(m.str(3)),
-                       std::stod(m.str(4)),
-                       QTextDocumentFragment::fromHtml(QString::fromStdString(m.str(5)))
-                           .toPlainText()
-                           .toStdString()});
-    }
-    return all;
 }
 
 /// Page `page` of `pdf` as a grey image at `dpi`.

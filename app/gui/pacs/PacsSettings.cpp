@@ -100,12 +100,12 @@ std::filesystem::path defaultStoreFolder() {
     const fs::path generic =
         QFile::encodeName(QStandardPaths::writableLocation(QStandardPaths::GenericDataLocation))
             .toStdString();
-    const fs::path folder = generic / "VesselView" / "studies";
+    fs::path folder = generic / "VesselView" / "studies";
     // A store an earlier version made there keeps working where it is.
-    const fs::path earlier = fs::path(QFile::encodeName(QStandardPaths::writableLocation(
-                                                            QStandardPaths::AppLocalDataLocation))
-                                          .toStdString()) /
-                             "studies";
+    fs::path earlier = fs::path(QFile::encodeName(QStandardPaths::writableLocation(
+                                                      QStandardPaths::AppLocalDataLocation))
+                                    .toStdString()) /
+                       "studies";
     std::error_code ec;
     if (!fs::exists(folder, ec) && fs::is_directory(earlier, ec)) {
         return earlier;

@@ -47,7 +47,7 @@ std::string personNameText(std::string_view pn) {
 }
 
 std::string personNameFromText(std::string_view typed) {
-    const std::string text = trimmed(typed);
+    std::string text = trimmed(typed);
     if (text.find('^') != std::string::npos) {
         return text;
     }
