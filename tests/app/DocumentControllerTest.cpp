@@ -64,9 +64,9 @@ struct Recorder {
         QObject::connect(&document, &DocumentController::loadEnded, note("loadEnded"));
         QObject::connect(&document, &DocumentController::loadCancelled, note("loadCancelled"));
         QObject::connect(&document, &DocumentController::failed,
-                         [this](const QString&, const QString& message) {
+                         [this](const QString&, const gui::ProblemText& problem) {
                              events.emplace_back("failed");
-                             failures << message;
+                             failures << problem.line();
                          });
         QObject::connect(&document, &DocumentController::seriesScanned, note("seriesScanned"));
         QObject::connect(&document, &DocumentController::sceneChanged, note("sceneChanged"));

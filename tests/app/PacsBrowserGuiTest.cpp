@@ -201,9 +201,9 @@ TEST_F(PacsBrowserGuiTest, QueryShowsTheStudyAndItsSeries) {
     EXPECT_EQ(b->dateFromEdit()->text(), QStringLiteral("any"));
     ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1"))) << b->status().toStdString();
     ASSERT_EQ(b->studyTable()->rowCount(), 1);
-    // Study Date 20250101 in the US English short format.
+    // The name as every dialog writes it ("Family, Given"), the date as every date on screen.
     EXPECT_EQ(rowText(b->studyTable(), 0),
-              "VesselView Demo | VV-GUI-1 | 2025-01-01 | VesselView demo | CT |  | 1");
+              "VesselView, Demo | VV-GUI-1 | 2025-01-01 | VesselView demo | CT |  | 1");
     EXPECT_EQ(b->status(), QStringLiteral("Studies found: 1."));
     ASSERT_TRUE(selectStudy(b));
     ASSERT_EQ(b->seriesTable()->rowCount(), 1);
