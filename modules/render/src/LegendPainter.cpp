@@ -241,8 +241,9 @@ double legendWidth(const ParameterLegend& p, const Metrics& m) {
     for (const LegendTick& tick : parameterTicks(p)) {
         widest = std::max(widest, fm.horizontalAdvance(tick.label) + 2.0);
     }
-    // Neighbouring edges one label and a gap apart, the end labels held inside the bar.
-    const double bar = static_cast<double>(p.bins) * (widest + labelGap(m)) + widest;
+    // Neighbouring edges a label and a gap apart; an end label is held inside
+    // the bar, half a label in from its edge: the end bins need half a label more.
+    const double bar = static_cast<double>(p.bins) * (1.5 * widest + labelGap(m));
     return std::clamp(bar + 2.0 * m.pad, m.width, m.available);
 }
 
