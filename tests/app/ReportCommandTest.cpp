@@ -22,9 +22,13 @@
 #include "SyntheticCta.h"
 #include "TestMeshes.h"
 #include "cli/Cli.h"
+#include "cli/RenderOptions.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/meshio/MeshWriter.h"
+#include "vv/report/ReportJob.h"
 #include "vv/scene/Mesh.h"
+#include "vv/segmentation/SceneSource.h"
 
 namespace {
 
@@ -288,6 +292,37 @@ TEST(ReportCommandTest, DicomInputGoesIntoTheSourceStudyWithItsPatient) {
             EXPECT_NE(text.find("Secretname, Jane"), std::string::npos) << text;
             EXPECT_NE(text.find(vv::test::kPatientId), std::string::npos) << text;
         }
+    }
+}
+
+TEST(ReportCommandTest, EverySecondViewsLegendDescribesItsOwnImage) {
+    // The demo tree without arrays: only the depth legend is over the views.
+    const fs::path dir = freshDir("second-views");
+    const fs::path input = dir / "demo.vtp";
+    // (A smaller tree than the bundled one: nine reports stay quick.)
+    vv::meshio::writeVtp(vv::demo::generateDemoMesh({.generations = 4, .maxTriangles = 40000}),
+                         input);
+    vv::report::test::ensureGuiApplication();
+    const vv::scene::Scene scene = vv::segmentation::loadSceneSource(input);
+    vv::cli::RenderOptionValues values;
+    values.array = "";
+    const vv::render::OffscreenOptions base = vv::cli::offscreenOptions(values, scene, input);
+    vv::render::OffscreenRenderer renderer;
+    for (const std::string& name : vv::report::test::namedViews()) {
+        SCOPED_TRACE(name);
+        const fs::path pdf = dir / (name + ".pdf");
+        const auto r =
+            report({input.string(), "-o", pdf.string(), "--second-view", name, "--array", "none"});
+        ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+        const auto view = vv::render::namedViewFromName(name);
+        ASSERT_TRUE(view.has_value());
+        const auto [dmin, dmax] = vv::report::test::ownDepthRange(
+            renderer, scene, base, *view, base.vss.range, vv::report::PaperSize::A4);
+        const std::string caption = vv::report::namedViewCaption(name);
+        const std::string problem =
+            vv::report::test::depthLegendProblem(vv::report::test::pdfWords(pdf), "Second",
+                                                 caption.substr(0, caption.find(' ')), dmin, dmax);
+        EXPECT_TRUE(problem.empty()) << problem;
     }
 }
 

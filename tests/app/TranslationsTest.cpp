@@ -167,16 +167,16 @@ TEST(Translations, EveryStringInTheSourcesIsInTheTsFiles) {
     const QString fresh = dir.filePath(QStringLiteral("fresh_de.ts"));
     QProcess lupdate;
     lupdate.setProcessChannelMode(QProcess::MergedChannels);
-    lupdate.start(QStringLiteral(VV_LUPDATE),
-                  {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
-                   QStringLiteral("-I"), QStringLiteral(VV_SOURCE_DIR "/app"),
-                   QStringLiteral("-source-language"), QStringLiteral("en"),
-                   QStringLiteral("-target-language"), QStringLiteral("de"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/gui"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/common"),
-                   QStringLiteral(VV_SOURCE_DIR "/app/cli"),
-                   QStringLiteral(VV_SOURCE_DIR "/modules/render/src"),
-                   QStringLiteral(VV_SOURCE_DIR "/modules/report/src"), QStringLiteral("-ts"), fresh});
+    lupdate.start(
+        QStringLiteral(VV_LUPDATE),
+        {QStringLiteral("-silent"), QStringLiteral("-locations"), QStringLiteral("none"),
+         QStringLiteral("-I"), QStringLiteral(VV_SOURCE_DIR "/app"),
+         QStringLiteral("-source-language"), QStringLiteral("en"),
+         QStringLiteral("-target-language"), QStringLiteral("de"),
+         QStringLiteral(VV_SOURCE_DIR "/app/gui"), QStringLiteral(VV_SOURCE_DIR "/app/common"),
+         QStringLiteral(VV_SOURCE_DIR "/app/cli"),
+         QStringLiteral(VV_SOURCE_DIR "/modules/render/src"),
+         QStringLiteral(VV_SOURCE_DIR "/modules/report/src"), QStringLiteral("-ts"), fresh});
     ASSERT_TRUE(lupdate.waitForFinished(120000)) << "lupdate did not finish";
     ASSERT_EQ(lupdate.exitCode(), 0) << lupdate.readAll().toStdString();
 
