@@ -81,7 +81,7 @@ constexpr const char* kUsageText =
     "                                       --slice (DICOM series): a page with that slice and\n"
     "                                       its segmentation, as the GUI's slice view, at MM\n"
     "                                       (LPS mm, or as the views write it: I120, A12.5;\n"
-    "                                       default the middle slice)\n"
+    "                                       default the middle slice, or a session's)\n"
     "                                       --lang: the report's language; --batch: one input\n"
     "                                       a line, a summary,\n"
     "                                       exit code of the first failure\n"

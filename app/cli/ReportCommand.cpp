@@ -352,9 +352,21 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
                              (loaded.fromSegmentationObject ? "a DICOM Segmentation object"
                                                             : "not from an image series"));
         }
+        // A session's slice views: their window, overlay and the plane's position.
+        std::optional<double> position = a.slicePosition;
+        std::optional<app::SliceLook> look;
+        if (a.session && a.session->slices) {
+            const app::SliceSessionState& saved = *a.session->slices;
+            if (!position) {
+                position = saved.views.at(static_cast<std::size_t>(*a.slice)).position;
+            }
+            look = app::SliceLook{saved.window, saved.preset, {}};
+            look->overlay.fill = saved.fill;
+            look->overlay.outline = saved.outline;
+        }
         try {
             const app::PrintedSlice slice =
-                app::printedSlice(*loaded.volume, loaded.labelMap.get(), *a.slice, a.slicePosition);
+                app::printedSlice(*loaded.volume, loaded.labelMap.get(), *a.slice, position, look);
             job.slice = slice.image;
             job.sliceCaption = slice.caption.toStdString();
         } catch (const InvalidArgumentError& e) {

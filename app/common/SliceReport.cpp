@@ -111,7 +111,7 @@ QString sliceCaption(const SliceFacts& facts) {
 
 PrintedSlice printedSlice(const scene::Volume& volume, const scene::LabelMap* labelMap,
                           slices::SliceOrientation orientation, std::optional<double> position,
-                          int width) {
+                          const std::optional<SliceLook>& look, int width) {
     const slices::SliceStack stack = slices::sliceStack(volume, orientation);
     int index = stack.count / 2;
     if (position) {
@@ -131,19 +131,27 @@ PrintedSlice printedSlice(const scene::Volume& volume, const scene::LabelMap* la
     if (labelMap != nullptr) {
         labels = slices::resliceLabels(*labelMap, plane);
     }
-    const std::vector<slices::PresetWindow> presets = slices::windowPresets(volume);
+    SliceLook shown;
+    if (look) {
+        shown = *look;
+    } else {
+        const slices::PresetWindow preset = slices::windowPresets(volume).front();
+        shown.window = preset.window;
+        shown.preset = preset.preset;
+    }
     SliceFacts facts;
     facts.orientation = orientation;
     facts.axis = stack.axis;
     facts.position = stack.position(index);
-    facts.window = presets.front().window;
-    facts.preset = presets.front().preset;
+    facts.window = shown.window;
+    facts.preset = shown.preset;
     facts.unit = slices::valueUnit(volume);
-    if (labelMap != nullptr) {
-        facts.overlay = slices::OverlayStyle{};
+    if (labelMap != nullptr && (shown.overlay.fill || shown.overlay.outline)) {
+        facts.overlay = shown.overlay;
     }
-    const QImage image = sliceImage(values.view(), labels.view(), facts.window,
-                                    facts.overlay.value_or(slices::OverlayStyle{}));
+    const QImage image =
+        sliceImage(values.view(), facts.overlay ? labels.view() : ImageView<const std::uint8_t>{},
+                   facts.window, shown.overlay);
     return {slicePrintImage(image, plane, width), sliceCaption(facts)};
 }
 

@@ -75,11 +75,19 @@ struct PrintedSlice {
     QString caption;
 };
 
+/// How a printed slice looks when not as the slice views open: a window
+/// (with the preset it is, if any) and the overlay style, e.g. a session's.
+struct SliceLook {
+    slices::Window window;
+    std::optional<slices::WindowPreset> preset;
+    slices::OverlayStyle overlay;
+};
+
 /// The slice of `volume` in `orientation` at `position` (mm along the
 /// plane's world axis, LPS; the nearest slice; nullopt: the middle one, as
-/// the slice views open), in the volume's default window preset
-/// (slices::windowPresets), `labelMap` (may be null) overlaid as fill and
-/// outline: as the GUI's slice view shows it, printed `width` pixels wide.
+/// the slice views open), `labelMap` (may be null) overlaid: as the GUI's
+/// slice view shows it, printed `width` pixels wide. `look` nullopt: the
+/// volume's default window preset (slices::windowPresets), fill and outline.
 /// Throws InvalidArgumentError when `position` lies outside the volume's
 /// slices (naming the range) or the volume has no slices
 /// (slices::sliceStack), and what slices::reslice throws.
@@ -87,6 +95,7 @@ struct PrintedSlice {
                                         const scene::LabelMap* labelMap,
                                         slices::SliceOrientation orientation,
                                         std::optional<double> position,
+                                        const std::optional<SliceLook>& look = std::nullopt,
                                         int width = kPrintedSliceWidth);
 
 /// "axial", "coronal", "sagittal" (ASCII case-insensitive); nullopt otherwise.
