@@ -176,6 +176,35 @@
     </message>
 </context>
 <context>
+    <name>vv::app::SliceReport</name>
+    <message>
+        <source>The segmentation is not drawn.</source>
+        <translation>Die Segmentierung ist nicht eingezeichnet.</translation>
+    </message>
+    <message>
+        <source>Coloured fill and outline: the segmentation.</source>
+        <translation>Farbige Fläche und Umriss: die Segmentierung.</translation>
+    </message>
+    <message>
+        <source>Coloured fill: the segmentation.</source>
+        <translation>Farbige Fläche: die Segmentierung.</translation>
+    </message>
+    <message>
+        <source>Coloured outline: the segmentation.</source>
+        <translation>Farbiger Umriss: die Segmentierung.</translation>
+    </message>
+    <message>
+        <source>%1 slice at %2, window %3</source>
+        <extracomment>%1 plane (Axial), %2 position along its normal (S 12.5 mm), %3 window (W 600 HU L 300 HU)</extracomment>
+        <translation>%1, Schicht bei %2, Fenster %3</translation>
+    </message>
+    <message>
+        <source>%1 (%2 preset)</source>
+        <extracomment>%1 the slice&apos;s caption so far, %2 the window preset (CTA)</extracomment>
+        <translation>%1 (Fenstervorgabe %2)</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::DicomMenu</name>
     <message>
         <source>&amp;DICOM</source>
@@ -2065,6 +2094,46 @@ Ersetzen?</translation>
         <source>Only for data opened from DICOM and segmented</source>
         <translation>Nur für aus DICOM geöffnete und segmentierte Daten</translation>
     </message>
+    <message>
+        <source>the synthetic demo tree</source>
+        <translation>der synthetische Demo-Gefäßbaum</translation>
+    </message>
+    <message>
+        <source>the data on screen</source>
+        <translation>die angezeigten Daten</translation>
+    </message>
+    <message>
+        <source>Findings, printed first in the report</source>
+        <translation>Befund, im Bericht zuerst gedruckt</translation>
+    </message>
+    <message>
+        <source>A new report of the view, with the findings below</source>
+        <translation>Ein neuer Bericht der Ansicht, mit dem Befund unten</translation>
+    </message>
+    <message>
+        <source>Data:</source>
+        <translation>Daten:</translation>
+    </message>
+    <message>
+        <source>&amp;Report:</source>
+        <translation>Be&amp;richt:</translation>
+    </message>
+    <message>
+        <source>&amp;Findings:</source>
+        <translation>Be&amp;fund:</translation>
+    </message>
+    <message>
+        <source>The exported report %1, as it is</source>
+        <translation>Der exportierte Bericht %1, unverändert</translation>
+    </message>
+    <message>
+        <source>Other data was opened: the send of %1 was stopped; nothing more was sent.</source>
+        <translation>Andere Daten wurden geöffnet: Das Senden von %1 wurde abgebrochen; nichts weiter wurde gesendet.</translation>
+    </message>
+    <message>
+        <source>The exported report is sent with its own findings</source>
+        <translation>Der exportierte Bericht wird mit seinem eigenen Befund gesendet</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::SeriesDialog</name>
@@ -2297,27 +2366,6 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
     <message>
         <source>The edge of the segmentation drawn in its label colour</source>
         <translation>Der Rand der Segmentierung in der Farbe ihres Labels</translation>
-    </message>
-    <message>
-        <source>; segmentation as %1</source>
-        <translation>; Segmentierung als %1</translation>
-    </message>
-    <message>
-        <source>fill and outline</source>
-        <translation>Fläche und Umriss</translation>
-    </message>
-    <message>
-        <source>fill</source>
-        <translation>Fläche</translation>
-    </message>
-    <message>
-        <source>outline</source>
-        <translation>Umriss</translation>
-    </message>
-    <message>
-        <source>%1 slice at %2, window %3%4</source>
-        <extracomment>%1 view name (Axial), %2 slice position (S 12.5 mm), %3 window (W 600 HU L 300 HU)</extracomment>
-        <translation>%1, Schicht bei %2, Fenster %3%4</translation>
     </message>
 </context>
 <context>
@@ -3705,6 +3753,14 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>ID %1</source>
         <translation>ID %1</translation>
+    </message>
+    <message>
+        <source>DICOM series</source>
+        <translation>DICOM-Serie</translation>
+    </message>
+    <message>
+        <source>Reading the exported report</source>
+        <translation>Exportierter Bericht wird gelesen</translation>
     </message>
 </context>
 </TS>

@@ -3,6 +3,7 @@
 //                       [--dicom-sc OUT.dcm] [--dicom-pdf OUT.dcm] [--transparent]
 //                       [--anonymise] [--note TEXT] [--title TEXT] [--second-view VIEW]
 //                       [--paper a4|letter] [--below V] [--above V]
+//                       [--slice axial|coronal|sagittal[@MM]] (DICOM image series)
 //                       [--lang en|de] [--disclaimer TEXT] [patient options for meshes:
 //                       --patient-name PN --patient-id ID --birth-date YYYYMMDD
 //                       --sex F|M|O --study-date YYYYMMDD --accession A --referring-physician PN]
@@ -19,6 +20,8 @@
 #include <QLocale>
 #include <QString>
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <filesystem>
 #include <fstream>
 #include <optional>
@@ -34,6 +37,7 @@
 #include "cli/RenderOptions.h"
 #include "common/Language.h"
 #include "common/ResourcePaths.h"
+#include "common/SliceReport.h"
 #include "vv/core/Error.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/report/PdfReport.h"
@@ -64,6 +68,9 @@ struct ReportArguments : RenderOptionValues {
     std::optional<report::ReportPatient> patient;
     std::optional<render::NamedView> secondView;
     std::string secondViewName;
+    /// --slice: the plane and, when given, the position (mm, LPS).
+    std::optional<slices::SliceOrientation> slice;
+    std::optional<double> slicePosition;
     report::PaperSize paper = report::PaperSize::A4;
     report::StatsThresholds thresholds;
 };
@@ -75,6 +82,40 @@ std::string dicomDate(const std::string& value, const std::string& option) {
         throw UsageError(option + " must be a date as YYYYMMDD, got '" + value + "'");
     }
     return value;
+}
+
+/// --slice PLANE[@MM]: the plane and its position along the plane's world
+/// axis, as a signed LPS coordinate ("axial@-120") or as the slice views
+/// write it, the patient side first ("axial@I120", "coronal@A12.5").
+void parseSlice(const std::string& value, ReportArguments& parsed) {
+    const auto at = value.find('@');
+    const std::string plane = value.substr(0, at);
+    parsed.slice = app::sliceOrientationFromName(plane);
+    if (!parsed.slice) {
+        throw UsageError("--slice must be axial, coronal or sagittal (optionally @MM), got '" +
+                         value + "'");
+    }
+    if (at == std::string::npos) {
+        return;
+    }
+    std::string position = value.substr(at + 1);
+    // The letters of the plane's axis: positive (L, P, S) and negative (R, A, I) side.
+    static constexpr std::array<std::pair<char, char>, 3> kSides{
+        {{'L', 'R'}, {'P', 'A'}, {'S', 'I'}}};
+    const auto [positive, negative] =
+        kSides.at(static_cast<std::size_t>(slices::sliceAxis(*parsed.slice)));
+    double sign = 1.0;
+    if (!position.empty() && std::isalpha(static_cast<unsigned char>(position.front())) != 0) {
+        const char side = static_cast<char>(std::toupper(static_cast<unsigned char>(position[0])));
+        if (side != positive && side != negative) {
+            throw UsageError("--slice " + plane + "@" + position + ": a " + plane +
+                             " position lies along " + positive + "/" + negative + ", not " +
+                             position.front());
+        }
+        sign = side == positive ? 1.0 : -1.0;
+        position.erase(0, 1);
+    }
+    parsed.slicePosition = sign * parseNumber(position, "--slice position (mm)");
 }
 
 /// A patient / study option for meshes; false when `name` is none of them.
@@ -162,6 +203,8 @@ ReportArguments parse(const std::vector<std::string>& args) {
                 throw UsageError("unknown view '" + parsed.secondViewName +
                                  "' (known: " + render::namedViewNames() + ")");
             }
+        } else if (name == "--slice") {
+            parseSlice(a.value(), parsed);
         } else if (name == "--paper") {
             const std::string& paperName = a.value();
             const auto paper = report::paperSizeFromName(paperName);
@@ -294,11 +337,42 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
         // The exports join the source study (and its patient).
         job.source.dicomPath = a.session ? lastDicomSource(job.source.files) : input;
         job.source.seriesInstanceUid = loaded.seriesInstanceUid;
+        // Listed by its description (as the GUI names it) when it has one.
+        job.source.seriesName =
+            QString::fromStdString(loaded.seriesDescription).simplified().toStdString();
     }
     job.source.syntheticDemo =
         !job.source.files.empty() &&
         std::all_of(job.source.files.begin(), job.source.files.end(),
                     [](const fs::path& file) { return app::isDemoFile(file); });
+    if (a.slice) {
+        if (!loaded.volume) {
+            throw UsageError("report: --slice needs a DICOM image series; '" + input.string() +
+                             "' is " +
+                             (loaded.fromSegmentationObject ? "a DICOM Segmentation object"
+                                                            : "not from an image series"));
+        }
+        // A session's slice views: their window, overlay and the plane's position.
+        std::optional<double> position = a.slicePosition;
+        std::optional<app::SliceLook> look;
+        if (a.session && a.session->slices) {
+            const app::SliceSessionState& saved = *a.session->slices;
+            if (!position) {
+                position = saved.views.at(static_cast<std::size_t>(*a.slice)).position;
+            }
+            look = app::SliceLook{saved.window, saved.preset, {}};
+            look->overlay.fill = saved.fill;
+            look->overlay.outline = saved.outline;
+        }
+        try {
+            const app::PrintedSlice slice =
+                app::printedSlice(*loaded.volume, loaded.labelMap.get(), *a.slice, position, look);
+            job.slice = slice.image;
+            job.sliceCaption = slice.caption.toStdString();
+        } catch (const InvalidArgumentError& e) {
+            throw UsageError("report: --slice: " + input.string() + ": " + e.what());
+        }
+    }
     job.outputs = outputs;
     std::vector<report::WrittenOutput> written;
     try {

@@ -114,7 +114,8 @@ struct Session : DisplaySettings {
     QString seriesTitle;
     /// The slice views (scenes from a volume); absent for meshes and in
     /// older sessions, which open with the slice views' defaults. The
-    /// command line renders the 3-D view and ignores it (it is still checked).
+    /// command line renders the 3-D view; `report --session --slice PLANE`
+    /// prints that plane's slice with its position, the window and the overlay.
     std::optional<SliceSessionState> slices;
 };
 

@@ -251,6 +251,7 @@ report::ReportSource DocumentController::reportSource() const {
         if (source.dicomPath.empty() && segmentation::isDicomSource(path)) {
             source.dicomPath = path;
             source.seriesInstanceUid = seriesUid_;
+            source.seriesName = seriesTitle_.toStdString();  // never the UID folder
         }
     }
     // The demo tree (its bundled file, or generated when there is none): the
@@ -259,6 +260,32 @@ report::ReportSource DocumentController::reportSource() const {
         demo_ && std::all_of(source.files.begin(), source.files.end(),
                              [](const auto& file) { return vv::app::isDemoFile(file); });
     return source;
+}
+
+QString DocumentController::documentKey() const {
+    if (shownFiles_.isEmpty()) {
+        return QStringLiteral("scene:%1").arg(reinterpret_cast<quintptr>(scene_.get()));
+    }
+    return shownFiles_.join(QLatin1Char('\n')) + QLatin1Char('\n') +
+           QString::fromStdString(seriesUid_);
+}
+
+QString DocumentController::findings() const {
+    return findingsFor_ == documentKey() ? findings_ : QString();
+}
+
+void DocumentController::setFindings(const QString& findings) {
+    findings_ = findings;
+    findingsFor_ = documentKey();
+}
+
+DocumentController::ExportedReport DocumentController::exportedReport() const {
+    return exportedReportFor_ == documentKey() ? exportedReport_ : ExportedReport{};
+}
+
+void DocumentController::setExportedReport(const ExportedReport& report) {
+    exportedReport_ = report;
+    exportedReportFor_ = documentKey();
 }
 
 QStringList DocumentController::recentFiles() {

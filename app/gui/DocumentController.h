@@ -158,6 +158,21 @@ class DocumentController : public QObject {
     /// Where the shown scene came from, for the report: the shown files and,
     /// for DICOM data, the path and series it was loaded from.
     [[nodiscard]] report::ReportSource reportSource() const;
+    /// The findings last entered for the data on screen (Export Report, Send
+    /// to PACS), to start the next report with; empty once other data is
+    /// shown (another file or series: findings belong to one patient's data).
+    /// Kept in memory only.
+    [[nodiscard]] QString findings() const;
+    void setFindings(const QString& findings);
+    /// The PDF report last exported for the data on screen (absolute path)
+    /// and the findings in it, which Send to PACS offers to send as it is;
+    /// empty once other data is shown, as findings().
+    struct ExportedReport {
+        QString pdf;
+        QString findings;
+    };
+    [[nodiscard]] ExportedReport exportedReport() const;
+    void setExportedReport(const ExportedReport& report);
     /// The message of the last error ("file: problem"); empty after a scene
     /// was shown.
     [[nodiscard]] const QString& lastError() const noexcept { return lastError_; }
@@ -234,6 +249,12 @@ class DocumentController : public QObject {
     std::optional<Session> pendingSession_;  ///< applied once task_'s files are shown
     std::shared_ptr<const scene::Scene> scene_;
     QString title_;
+    /// What findings_ were entered for (documentKey()).
+    [[nodiscard]] QString documentKey() const;
+    QString findings_;
+    QString findingsFor_;
+    ExportedReport exportedReport_;
+    QString exportedReportFor_;
     QStringList openedFiles_;
     QStringList shownFiles_;
     std::string seriesUid_;

@@ -12,10 +12,12 @@
 #include <QFileInfo>
 #include <QGuiApplication>
 #include <QLabel>
+#include <QLineEdit>
 #include <QLocale>
 #include <QMenuBar>
 #include <QMessageBox>
 #include <QMimeData>
+#include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QScreen>
@@ -255,6 +257,18 @@ void MainWindow::buildMenus() {
         if (const auto slice = slices_->reportSlice()) {
             dialog->setSlice(slice->first, slice->second);
         }
+        // The findings of the data's last report (or Send to PACS) to start from.
+        dialog->findingsEdit()->setPlainText(document_->findings());
+        connect(
+            dialog, &ReportDialog::exportStarted, document_, [this, dialog](ExportWorker* worker) {
+                const QString findings = dialog->findingsEdit()->toPlainText();
+                document_->setFindings(findings);
+                // Send to PACS offers the report once it is written.
+                const DocumentController::ExportedReport exported{
+                    QFileInfo(dialog->pdfEdit()->text().trimmed()).absoluteFilePath(), findings};
+                connect(worker, &ExportWorker::succeeded, document_,
+                        [this, exported] { document_->setExportedReport(exported); });
+            });
         dialog->open();
     });
     exportReportAction_->setObjectName(QStringLiteral("exportReport"));

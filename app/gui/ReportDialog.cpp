@@ -87,6 +87,15 @@ QString besidePdf(const QString& pdf, const QString& suffix) {
 
 }  // namespace
 
+void setReportView(const ViewerWidget& viewer, report::ReportJobOptions& job) {
+    const QSize size = viewPixelSize(viewer);
+    job.view = currentViewOptions(viewer, size.width(), size.height());
+    job.secondViewDepthRange = viewer.vssSettings().range;
+    job.viewCaption = ReportDialog::tr("The view as shown on screen").toStdString();
+    job.viewDescription = ReportDialog::tr("as shown on screen").toStdString();
+    job.legends = viewer.legendsVisible();
+}
+
 ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource source, QWidget* parent)
     : ExportDialog(parent), viewer_(viewer), source_(std::move(source)) {
     setObjectName(QStringLiteral("reportDialog"));
@@ -287,10 +296,7 @@ void ReportDialog::setSlice(const QImage& image, const QString& caption) {
 
 report::ReportJobOptions ReportDialog::jobOptions() const {
     report::ReportJobOptions job;
-    const QSize size = viewPixelSize(viewer_);
-    job.view = currentViewOptions(viewer_, size.width(), size.height());
-    job.viewCaption = tr("The view as shown on screen").toStdString();
-    job.viewDescription = tr("as shown on screen").toStdString();
+    setReportView(viewer_, job);
     const QString second = secondView_->currentData().toString();
     if (!second.isEmpty()) {
         job.secondView = render::namedViewFromName(second.toStdString());
@@ -300,7 +306,6 @@ report::ReportJobOptions ReportDialog::jobOptions() const {
         job.slice = slice_;
         job.sliceCaption = sliceCaption_.toStdString();
     }
-    job.legends = viewer_.legendsVisible();
     job.anonymise = anonymise_->isEnabled() && anonymise_->isChecked();
     job.patient = enteredPatient();
     job.disclaimer = disclaimer_->text().trimmed().toStdString();

@@ -24,6 +24,13 @@ namespace vv::gui {
 
 class ViewerWidget;
 
+/// Sets what a report shows of `viewer` (Export Report, Send to PACS): the
+/// view as on screen (currentViewOptions() at the view's size: its depth
+/// range pinned to the screen's), its caption and description, the legends
+/// switch, and the second view's depth range: the one the user chose, not
+/// the first view's pinned one (every legend describes its own image).
+void setReportView(const ViewerWidget& viewer, report::ReportJobOptions& job);
+
 /// File > Export Report…: the PDF report of the current view (its camera and
 /// display settings, exactly what is on screen) with the options of
 /// `vesselview-cli report`: paper (A4 / Letter), findings (free text), a

@@ -18,13 +18,23 @@
 #include <utility>
 
 #include "common/Session.h"
-#include "gui/SliceTexts.h"
+#include "common/SliceReport.h"
+#include "common/SliceTexts.h"
 #include "vv/core/Error.h"
 #include "vv/slices/OrientationLetters.h"
 #include "vv/slices/Reslice.h"
 #include "vv/slices/VoxelProbe.h"
 
 namespace vv::gui {
+
+using app::drawEdgeLetters;
+using app::drawShadowedText;
+using app::orientationName;
+using app::slicePositionLabel;
+using app::slicePrintImage;
+using app::voxelValueLabel;
+using app::windowLabel;
+using app::worldPointLabel;
 
 namespace {
 
@@ -51,29 +61,6 @@ Result resliceAt(const std::shared_ptr<const scene::Volume>& volume,
         r.error = QString::fromStdString(e.problem());
     }
     return r;
-}
-
-// Text with a dark outline, readable on any grey.
-void drawShadowedText(QPainter& painter, const QRectF& rect, int flags, const QString& text) {
-    painter.setPen(QColor(0, 0, 0, 200));
-    for (const QPointF d : {QPointF(1, 1), QPointF(-1, 1), QPointF(1, -1), QPointF(-1, -1)}) {
-        painter.drawText(rect.translated(d), flags, text);
-    }
-    painter.setPen(QColor(255, 230, 120));
-    painter.drawText(rect, flags, text);
-}
-
-// The orientation letters of `plane` at the middle of each edge of `area`.
-void drawEdgeLetters(QPainter& painter, const QRectF& area, const slices::SlicePlane& plane) {
-    const slices::EdgeLetters letters = slices::edgeLetters(plane);
-    drawShadowedText(painter, area, Qt::AlignLeft | Qt::AlignVCenter,
-                     QString::fromStdString(letters.left));
-    drawShadowedText(painter, area, Qt::AlignRight | Qt::AlignVCenter,
-                     QString::fromStdString(letters.right));
-    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignTop,
-                     QString::fromStdString(letters.top));
-    drawShadowedText(painter, area, Qt::AlignHCenter | Qt::AlignBottom,
-                     QString::fromStdString(letters.bottom));
 }
 
 }  // namespace
@@ -210,16 +197,9 @@ void SliceView::compose() {
         image_ = {};
         return;
     }
-    const Image<std::uint8_t> gray = slices::applyWindow(shown_.values->view(), window_);
-    const Image<std::uint32_t> rgb = slices::composeSlice(
-        gray.view(), shown_.labels ? shown_.labels->view() : ImageView<const std::uint8_t>{},
-        overlay_);
-    QImage image(rgb.width(), rgb.height(), QImage::Format_RGB32);
-    for (int r = 0; r < rgb.height(); ++r) {
-        std::memcpy(image.scanLine(r), rgb.row(r),
-                    static_cast<std::size_t>(rgb.width()) * sizeof(std::uint32_t));
-    }
-    image_ = std::move(image);
+    image_ = app::sliceImage(
+        shown_.values->view(),
+        shown_.labels ? shown_.labels->view() : ImageView<const std::uint8_t>{}, window_, overlay_);
 }
 
 QRectF SliceView::imageRect() const {
@@ -343,23 +323,7 @@ void SliceView::paintCrosshair(QPainter& painter) const {
 }
 
 QImage SliceView::printImage(int width) const {
-    if (image_.isNull() || !stack_ || width < 1) {
-        return {};
-    }
-    const int height = std::max(1, static_cast<int>(std::lround(static_cast<double>(width) *
-                                                                image_.height() / image_.width())));
-    QImage out(width, height, QImage::Format_RGB32);
-    out.fill(Qt::black);
-    QPainter painter(&out);
-    painter.drawImage(QRectF(0, 0, width, height), image_);
-    QFont font = painter.font();
-    font.setPixelSize(std::max(12, width / 40));
-    font.setBold(true);
-    painter.setFont(font);
-    const QRectF area =
-        QRectF(out.rect()).adjusted(width / 100.0, width / 100.0, -width / 100.0, -width / 100.0);
-    drawEdgeLetters(painter, area, stack_->plane);
-    return out;
+    return stack_ ? slicePrintImage(image_, stack_->plane, width) : QImage();
 }
 
 void SliceView::paintTexts(QPainter& painter) const {

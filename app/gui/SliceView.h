@@ -50,6 +50,10 @@ class SliceView : public QWidget {
     void setVolume(std::shared_ptr<const scene::Volume> volume);
     /// The segmentation to draw over the slices (null: none); its own grid.
     void setLabelMap(std::shared_ptr<const scene::LabelMap> labelMap);
+    /// The segmentation drawn over the slice; null when none.
+    [[nodiscard]] const std::shared_ptr<const scene::LabelMap>& labelMap() const noexcept {
+        return labelMap_;
+    }
     void setWindow(const slices::Window& window);
     [[nodiscard]] const slices::Window& window() const noexcept { return window_; }
     /// The span of the volume's values (max - min), which scales window drags.

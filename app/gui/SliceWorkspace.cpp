@@ -9,8 +9,9 @@
 #include <algorithm>
 #include <utility>
 
+#include "common/SliceReport.h"
+#include "common/SliceTexts.h"
 #include "gui/SliceCursor.h"
-#include "gui/SliceTexts.h"
 #include "gui/SliceView.h"
 #include "gui/ViewerWidget.h"
 #include "vv/slices/VoxelProbe.h"
@@ -121,7 +122,7 @@ void SliceWorkspace::rebuildPresetMenu() {
         delete action;
     }
     for (std::size_t n = 0; n < presets_.size(); ++n) {
-        QAction* action = presetMenu_->addAction(presetName(presets_[n].preset));
+        QAction* action = presetMenu_->addAction(app::presetName(presets_[n].preset));
         action->setCheckable(true);
         action->setChecked(n == 0);
         presetGroup_->addAction(action);
@@ -286,25 +287,24 @@ std::optional<std::pair<QImage, QString>> SliceWorkspace::reportSlice() const {
     }
     const int large = static_cast<int>(layout_) - static_cast<int>(SliceLayout::AxialLarge);
     const SliceView* view = views_[large >= 0 && large < 3 ? static_cast<std::size_t>(large) : 0];
-    const QImage image = view->printImage(2400);
+    const QImage image = view->printImage(app::kPrintedSliceWidth);
     if (image.isNull()) {
         return std::nullopt;
     }
-    QString overlay;
-    if (fillAction_->isChecked() || outlineAction_->isChecked()) {
-        overlay = tr("; segmentation as %1")
-                      .arg(fillAction_->isChecked() && outlineAction_->isChecked()
-                               ? tr("fill and outline")
-                               : (fillAction_->isChecked() ? tr("fill") : tr("outline")));
+    app::SliceFacts facts;
+    facts.orientation = view->orientation();
+    facts.axis = view->stack()->axis;
+    facts.position = view->slicePosition();
+    facts.window = window_;
+    facts.preset = chosenPreset();
+    facts.unit = slices::valueUnit(*volume_);
+    if (view->labelMap() && (fillAction_->isChecked() || outlineAction_->isChecked())) {
+        slices::OverlayStyle overlay;
+        overlay.fill = fillAction_->isChecked();
+        overlay.outline = outlineAction_->isChecked();
+        facts.overlay = overlay;
     }
-    //: %1 view name (Axial), %2 slice position (S 12.5 mm), %3 window (W 600 HU  L 300 HU)
-    const QString caption =
-        tr("%1 slice at %2, window %3%4")
-            .arg(orientationName(view->orientation()),
-                 slicePositionLabel(view->stack()->axis, view->slicePosition()),
-                 windowLabel(window_, QString::fromStdString(slices::valueUnit(*volume_))),
-                 overlay);
-    return std::pair{image, caption};
+    return std::pair{image, app::sliceCaption(facts)};
 }
 
 void SliceWorkspace::applyPreset(std::size_t index) {

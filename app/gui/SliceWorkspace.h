@@ -89,8 +89,9 @@ class SliceWorkspace : public QWidget {
         return presets_;
     }
     /// The slice for a report: the large slice view's (else the axial one's)
-    /// printImage() and its caption (view, position, window, overlay);
-    /// nullopt without a volume or before its slice is shown.
+    /// printImage() and its caption (app::sliceCaption(): plane, position,
+    /// window with its preset, what the colours are); nullopt without a volume or before its slice
+    /// is shown.
     [[nodiscard]] std::optional<std::pair<QImage, QString>> reportSlice() const;
     void applyPreset(std::size_t index);
     void setWindow(const slices::Window& window);

@@ -37,7 +37,9 @@
 #include "gui/ExportWorker.h"
 #include "gui/ReportDialog.h"
 #include "vv/demo/DemoCtSeries.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/dicom/SeriesWriter.h"
+#include "vv/report/ReportJob.h"
 #include "vv/report/ViewExport.h"
 
 namespace vv::test {
@@ -435,6 +437,53 @@ TEST_F(ExportGuiTest, DicomDataGivesThePatientBlockAndAnonymiseHidesIt) {
         EXPECT_EQ(text.find("EXPORT-42") == std::string::npos, anonymise) << text;
         EXPECT_EQ(text.find("anonymised") != std::string::npos, anonymise) << text;
     }
+}
+
+TEST_F(ExportGuiTest, EverySecondViewsLegendDescribesItsOwnImage) {
+    // The demo tree without arrays: only the depth legend is over the views.
+    auto scene = std::make_shared<scene::Scene>();
+    // (A smaller tree than the bundled one: nine reports stay quick.)
+    scene::Mesh tree = demo::generateDemoMesh({.generations = 4, .maxTriangles = 40000});
+    tree.pointArrays.clear();
+    tree.cellArrays.clear();
+    scene->meshes.push_back(std::move(tree));
+    window_->setScene(scene, QStringLiteral("demo"));
+    ASSERT_TRUE(waitForFrames() && waitForVss());
+    gui::ViewerWidget* viewer = window_->viewer();
+    const vss::DepthRange chosen = viewer->vssSettings().range;
+    ASSERT_EQ(chosen.mode, vss::RangeMode::Visible);
+    render::OffscreenRenderer renderer;
+    const auto legendOfSecondView = [&](const std::string& name, const vss::DepthRange& range) {
+        gui::ReportDialog dialog(*viewer, window_->reportSource(), window_.get());
+        const int item = dialog.secondViewChooser()->findData(QString::fromStdString(name));
+        EXPECT_GE(item, 0);
+        dialog.secondViewChooser()->setCurrentIndex(item);
+        report::ReportJobOptions job = dialog.jobOptions();
+        EXPECT_TRUE(job.secondView.has_value());
+        const fs::path pdf = dir_ / (name + ".pdf");
+        job.outputs = {};
+        job.outputs.pdf = pdf;
+        (void)report::runReportJob(renderer, *scene, job);
+        // What the second view shows, rendered on its own.
+        const auto [dmin, dmax] = report::test::ownDepthRange(renderer, *scene, job.view,
+                                                              *job.secondView, range, job.paper);
+        const std::string caption = report::namedViewCaption(name);
+        return report::test::depthLegendProblem(report::test::pdfWords(pdf), "Second",
+                                                caption.substr(0, caption.find(' ')), dmin, dmax);
+    };
+    // The first view has the screen's range; each second view its own.
+    for (const std::string& name : report::test::namedViews()) {
+        SCOPED_TRACE(name);
+        const std::string problem = legendOfSecondView(name, chosen);
+        EXPECT_TRUE(problem.empty()) << problem;
+    }
+    // A depth range the user fixed applies to both views.
+    render::VssSettings fixed = viewer->vssSettings();
+    fixed.range = {vss::RangeMode::Fixed, 5.0, 65.0};
+    viewer->setVssSettings(fixed);
+    ASSERT_TRUE(waitForVss());
+    const std::string problem = legendOfSecondView("anterior", fixed.range);
+    EXPECT_TRUE(problem.empty()) << problem;
 }
 
 TEST_F(ExportGuiTest, ReportChecksItsOutputs) {

@@ -11,8 +11,11 @@
 
 #include <QAction>
 #include <QCheckBox>
+#include <QComboBox>
 #include <QLabel>
+#include <QLineEdit>
 #include <QMessageBox>
+#include <QPlainTextEdit>
 #include <QPointer>
 #include <QProgressBar>
 #include <QPushButton>
@@ -21,6 +24,8 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <functional>
+#include <iterator>
 #include <memory>
 #include <set>
 #include <string>
@@ -29,7 +34,11 @@
 #include "GuiFixture.h"
 #include "LocalStudiesGui.h"
 #include "OrthancServer.h"
+#include "ReportTestUtil.h"
 #include "SyntheticCta.h"
+#include "gui/ExportWorker.h"
+#include "gui/MainWindow.h"
+#include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
@@ -70,13 +79,18 @@ fs::path testDir() {
 }
 
 /// The synthetic CTA (64 x 64 x 48, a vessel tree) as a CT series in `folder`.
-std::vector<fs::path> writeCta(const fs::path& folder, const std::string& patientId) {
+/// `description`: the Series Description (empty: the writer's default).
+std::vector<fs::path> writeCta(const fs::path& folder, const std::string& patientId,
+                               const std::string& description = {}) {
     fs::remove_all(folder);
     const auto cta = vv::test::makeSyntheticCta({64, 64, kSlices}, 3);
     vv::dicom::CtSeriesWriteOptions options;
     options.patientId = patientId;
     options.patientName = "Test^Vessel";
     options.studyDescription = "CTA run-off";
+    if (!description.empty()) {
+        options.seriesDescription = description;
+    }
     vv::dicom::writeCtSeries(folder, cta.volume, options);
     std::vector<fs::path> files;
     for (const auto& entry : fs::directory_iterator(folder)) {
@@ -234,8 +248,8 @@ class PacsGuiTest : public vv::test::GuiFixture {
         return ok;
     }
 
-    /// DICOM > Send to PACS…, Send, and the wait for the outcome.
-    SendDialog* sendReport() {
+    /// DICOM > Send to PACS…, `edit` on the dialog, Send, and the wait for the outcome.
+    SendDialog* sendReport(const std::function<void(SendDialog&)>& edit = {}) {
         QAction* action = window_->findChild<QAction*>(QStringLiteral("sendToPacs"));
         EXPECT_TRUE(action->isEnabled());
         action->trigger();
@@ -244,11 +258,52 @@ class PacsGuiTest : public vv::test::GuiFixture {
             ADD_FAILURE() << "no Send dialog";
             return nullptr;
         }
+        if (edit) {
+            edit(*dialog);
+        }
         EXPECT_TRUE(dialog->sendButton()->isEnabled());
         dialog->sendButton()->click();
         EXPECT_TRUE(dialog->isSending());
         EXPECT_TRUE(waitUntil([&] { return !dialog->isSending(); }, 55000)) << "the send hangs";
         return dialog;
+    }
+
+    /// The instance of the series of `modality` in Orthanc's study `studyUid`,
+    /// retrieved (C-GET) into a store at `store`; empty after a test failure.
+    fs::path retrievedInstance(const std::string& studyUid, const std::string& modality,
+                               const fs::path& store) {
+        std::string uid;
+        for (const auto& series : vv::pacs::findSeries(me(), orthanc_->node(),
+                                                       vv::pacs::SeriesQuery{studyUid, "", ""})) {
+            uid = series.modality == modality ? series.seriesInstanceUid : uid;
+        }
+        vv::pacs::LocalStore retrieved(store);
+        if (uid.empty()) {
+            ADD_FAILURE() << "no " << modality << " series in Orthanc";
+            return {};
+        }
+        (void)vv::pacs::getInto(retrieved, me(), orthanc_->node(),
+                                vv::pacs::RetrieveRequest{studyUid, uid});
+        const auto stored = retrieved.studies();
+        if (stored.size() != 1 || stored[0].series.size() != 1) {
+            ADD_FAILURE() << "the " << modality << " series was not retrieved";
+            return {};
+        }
+        return fs::directory_iterator(stored[0].series[0].folder)->path();
+    }
+
+    /// The PDF of the Encapsulated PDF (DOC) in Orthanc's study `studyUid`,
+    /// written to `pdf` (dcm2pdf); false after a test failure.
+    bool retrievedPdf(const std::string& studyUid, const fs::path& pdf) {
+        const fs::path document = retrievedInstance(
+            studyUid, "DOC", pdf.parent_path() / (pdf.stem().string() + "-store"));
+        std::string output;
+        const bool ok =
+            !document.empty() &&
+            vv::report::test::runTool("dcm2pdf '" + document.string() + "' '" + pdf.string() + "'",
+                                      output) == 0;
+        EXPECT_TRUE(ok) << output;
+        return ok;
     }
 
     /// The window restarted with `s` over a store holding the study "Neck
@@ -401,12 +456,27 @@ TEST_F(PacsGuiTest, PortInUseIsAClearStateAndTheAppKeepsWorking) {
 
 TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
     restartWith(settings(false));
-    const fs::path cta = testDir() / "cta-send";
-    writeCta(cta, "VV-GUI-SEND");
+    // A folder named by a UID, as a study store names them.
+    const std::string folderUid = "1.2.826.0.1.3680043.8.498.4711";
+    const fs::path cta = testDir() / "cta-send" / folderUid;
+    writeCta(cta, "VV-GUI-SEND", "Run-off CTA");
     ASSERT_TRUE(
         openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
-    SendDialog* dialog = sendReport();
+    // The findings of an earlier Export Report of this series.
+    window_->document()->setFindings(QStringLiteral("Occlusion of the left SFA."));
+    const QString findings =
+        QStringLiteral("Occlusion of the left SFA.\nCollaterals from the profunda.");
+    SendDialog* dialog = sendReport([&](SendDialog& send) {
+        // The series by its description, never the UID folder; the findings to review.
+        EXPECT_TRUE(send.dataLabel()->text().contains(QStringLiteral("Run-off CTA")))
+            << send.dataLabel()->text().toStdString();
+        EXPECT_FALSE(send.dataLabel()->text().contains(QString::fromStdString(folderUid)));
+        EXPECT_EQ(send.findingsEdit()->toPlainText(), QStringLiteral("Occlusion of the left SFA."));
+        send.findingsEdit()->setPlainText(findings);
+    });
     ASSERT_NE(dialog, nullptr);
+    // What was sent is the data's findings from now on (the next report starts with them).
+    EXPECT_EQ(window_->document()->findings(), findings);
     const QString peer = QString::fromStdString(vv::pacs::describe(orthanc_->node()));
     EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("3 of 3 accepted by %1").arg(peer));
     ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 3);
@@ -429,23 +499,16 @@ TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
     const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
     ASSERT_EQ(studies.size(), 1U);
     std::set<std::string> modalities;
-    std::string segSeries;
     for (const auto& series : vv::pacs::findSeries(
              me(), orthanc_->node(), vv::pacs::SeriesQuery{studies[0].studyInstanceUid, "", ""})) {
         modalities.insert(series.modality);
-        segSeries = series.modality == "SEG" ? series.seriesInstanceUid : segSeries;
     }
     EXPECT_EQ(modalities, (std::set<std::string>{"DOC", "OT", "SEG"}))
         << "the report's Secondary Capture (OT), PDF (DOC) and the SEG are not in Orthanc";
     // The SEG in Orthanc holds the segmentation on screen: its voxels.
-    ASSERT_FALSE(segSeries.empty());
-    vv::pacs::LocalStore retrieved(testDir() / "seg-retrieved");
-    (void)vv::pacs::getInto(retrieved, me(), orthanc_->node(),
-                            vv::pacs::RetrieveRequest{studies[0].studyInstanceUid, segSeries});
-    const auto stored = retrieved.studies();
-    ASSERT_EQ(stored.size(), 1U);
-    ASSERT_EQ(stored[0].series.size(), 1U);
-    const fs::path segFile = fs::directory_iterator(stored[0].series[0].folder)->path();
+    const fs::path segFile =
+        retrievedInstance(studies[0].studyInstanceUid, "SEG", testDir() / "seg-retrieved");
+    ASSERT_FALSE(segFile.empty());
     std::size_t inPacs = 0;
     for (const auto& map : vv::dicom::loadDicomSegLabelMaps(segFile)) {
         inPacs += static_cast<std::size_t>(std::count_if(map.labels.begin(), map.labels.end(),
@@ -455,6 +518,119 @@ TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
     EXPECT_EQ(inPacs, static_cast<std::size_t>(std::count_if(
                           shown.begin(), shown.end(), [](std::uint8_t l) { return l != 0; })));
     EXPECT_GT(inPacs, 0U);
+
+    // The PDF in Orthanc has the findings entered and names the series, not its folder.
+    const fs::path pdf = testDir() / "sent-report.pdf";
+    ASSERT_TRUE(retrievedPdf(studies[0].studyInstanceUid, pdf));
+    std::string text;
+    ASSERT_EQ(vv::report::test::runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
+    text = vv::report::test::withoutLigatures(text);  // "Run-oﬀ" -> "Run-off"
+    EXPECT_NE(text.find("Occlusion of the left SFA."), std::string::npos) << text;
+    EXPECT_NE(text.find("Collaterals from the profunda."), std::string::npos) << text;
+    EXPECT_EQ(text.find("No findings entered."), std::string::npos) << text;
+    EXPECT_NE(text.find("Run-off CTA"), std::string::npos) << text;
+    EXPECT_EQ(text.find(folderUid), std::string::npos) << text;
+}
+
+TEST_F(PacsGuiTest, TheReportExportedLastIsSentAsItIs) {
+    restartWith(settings(false));
+    const fs::path cta = testDir() / "cta-exported";
+    writeCta(cta, "VV-GUI-EXPORTED", "Carotid CTA");
+    ASSERT_TRUE(
+        openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
+    // File > Export Report with findings and a second view.
+    window_->exportReportAction()->trigger();
+    auto* report = window_->findChild<vv::gui::ReportDialog*>();
+    ASSERT_NE(report, nullptr);
+    const fs::path exported = testDir() / "exported-report.pdf";
+    fs::remove(exported);
+    report->pdfEdit()->setText(QString::fromStdString(exported.string()));
+    report->findingsEdit()->setPlainText(QStringLiteral("Stenosis of the right ICA, 70 %."));
+    report->secondViewChooser()->setCurrentIndex(
+        report->secondViewChooser()->findData(QStringLiteral("anterior")));
+    bool written = false;
+    QObject::connect(
+        report, &vv::gui::ReportDialog::exportStarted, [&](vv::gui::ExportWorker* worker) {
+            QObject::connect(worker, &vv::gui::ExportWorker::succeeded, [&] { written = true; });
+        });
+    report->accept();
+    ASSERT_TRUE(waitUntil([&] { return written; }, 120000)) << "the export did not end";
+
+    // Send to PACS offers it, chosen, with its findings shown read-only.
+    SendDialog* dialog = sendReport([&](SendDialog& send) {
+        EXPECT_EQ(send.reportChooser()->currentData().toString(),
+                  QString::fromStdString(exported.string()));
+        EXPECT_TRUE(send.findingsEdit()->isReadOnly());
+        EXPECT_EQ(send.findingsEdit()->toPlainText(),
+                  QStringLiteral("Stenosis of the right ICA, 70 %."));
+        send.secondaryCaptureBox()->setChecked(false);
+        send.segmentationBox()->setChecked(false);
+    });
+    ASSERT_NE(dialog, nullptr);
+    const QString peer = QString::fromStdString(vv::pacs::describe(orthanc_->node()));
+    EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("1 of 1 accepted by %1").arg(peer));
+    // A new report can still be chosen, with editable findings.
+    dialog->reportChooser()->setCurrentIndex(0);
+    EXPECT_FALSE(dialog->findingsEdit()->isReadOnly());
+
+    // Orthanc holds the exported PDF, byte for byte.
+    vv::pacs::StudyQuery query;
+    query.patientId = "VV-GUI-EXPORTED";
+    const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
+    ASSERT_EQ(studies.size(), 1U);
+    const fs::path pdf = testDir() / "exported-from-pacs.pdf";
+    ASSERT_TRUE(retrievedPdf(studies[0].studyInstanceUid, pdf));
+    const auto bytes = [](const fs::path& file) {
+        std::ifstream in(file, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+    };
+    const std::string sent = bytes(pdf);
+    const std::string original = bytes(exported);
+    ASSERT_GT(original.size(), 1000U);
+    // DICOM pads an odd length with one byte.
+    EXPECT_EQ(sent.substr(0, original.size()), original);
+    EXPECT_LE(sent.size(), original.size() + 1);
+}
+
+TEST_F(PacsGuiTest, TheSendDialogForgetsTheLastSendWhenOtherDataIsShown) {
+    PacsSettings s = settings(false);
+    s.nodes[0].node.port = vv::test::freePort();  // nobody listens there: a quick outcome
+    restartWith(s);
+    window_->setScene(vv::test::makeTubeScene(), QStringLiteral("tube"));
+    window_->document()->setFindings(QStringLiteral("Findings of the tube."));
+    SendDialog* dialog = sendReport();
+    ASSERT_NE(dialog, nullptr);
+    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);
+    ASSERT_FALSE(dialog->summaryLabel()->text().isEmpty());
+    const QString before = dialog->dataLabel()->text();
+
+    // Other data on screen: nothing of the last send or of the tube's findings.
+    const fs::path cta = testDir() / "cta-other";
+    writeCta(cta, "VV-GUI-OTHER", "Neck CTA");
+    ASSERT_TRUE(
+        openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
+    EXPECT_EQ(dialog->resultTable()->topLevelItemCount(), 0);
+    EXPECT_TRUE(dialog->summaryLabel()->text().isEmpty())
+        << dialog->summaryLabel()->text().toStdString();
+    EXPECT_EQ(dialog->dataLabel()->text(), QStringLiteral("Neck CTA"));
+    EXPECT_NE(dialog->dataLabel()->text(), before);
+    EXPECT_TRUE(dialog->findingsEdit()->toPlainText().isEmpty());
+    // The new series' segmentation is offered.
+    EXPECT_TRUE(dialog->segmentationBox()->isEnabled());
+    EXPECT_TRUE(dialog->segmentationBox()->isChecked());
+    EXPECT_TRUE(dialog->sendButton()->isEnabled());
+
+    // Other data while a send runs: the send stops, its outcome is dropped.
+    dialog->sendButton()->click();
+    ASSERT_TRUE(dialog->isSending());
+    window_->setScene(vv::test::makeTubeScene(), QStringLiteral("tube"));
+    EXPECT_FALSE(dialog->isSending());
+    EXPECT_EQ(dialog->resultTable()->topLevelItemCount(), 0);
+    EXPECT_EQ(dialog->summaryLabel()->text(),
+              QStringLiteral("Other data was opened: the send of Neck CTA was stopped; nothing "
+                             "more was sent."));
+    EXPECT_FALSE(dialog->segmentationBox()->isEnabled());  // meshes: no SEG
+    EXPECT_TRUE(dialog->sendButton()->isEnabled());
 }
 
 TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {

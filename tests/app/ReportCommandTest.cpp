@@ -22,9 +22,16 @@
 #include "SyntheticCta.h"
 #include "TestMeshes.h"
 #include "cli/Cli.h"
+#include "cli/RenderOptions.h"
+#include "common/Session.h"
+#include "common/SliceReport.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/meshio/MeshWriter.h"
+#include "vv/report/ReportJob.h"
 #include "vv/scene/Mesh.h"
+#include "vv/segmentation/SceneSource.h"
+#include "vv/slices/SlicePlane.h"
 
 namespace {
 
@@ -289,6 +296,90 @@ TEST(ReportCommandTest, DicomInputGoesIntoTheSourceStudyWithItsPatient) {
             EXPECT_NE(text.find(vv::test::kPatientId), std::string::npos) << text;
         }
     }
+}
+
+TEST(ReportCommandTest, EverySecondViewsLegendDescribesItsOwnImage) {
+    // The demo tree without arrays: only the depth legend is over the views.
+    const fs::path dir = freshDir("second-views");
+    const fs::path input = dir / "demo.vtp";
+    // (A smaller tree than the bundled one: nine reports stay quick.)
+    vv::meshio::writeVtp(vv::demo::generateDemoMesh({.generations = 4, .maxTriangles = 40000}),
+                         input);
+    vv::report::test::ensureGuiApplication();
+    const vv::scene::Scene scene = vv::segmentation::loadSceneSource(input);
+    vv::cli::RenderOptionValues values;
+    values.array = "";
+    const vv::render::OffscreenOptions base = vv::cli::offscreenOptions(values, scene, input);
+    vv::render::OffscreenRenderer renderer;
+    for (const std::string& name : vv::report::test::namedViews()) {
+        SCOPED_TRACE(name);
+        const fs::path pdf = dir / (name + ".pdf");
+        const auto r =
+            report({input.string(), "-o", pdf.string(), "--second-view", name, "--array", "none"});
+        ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+        const auto view = vv::render::namedViewFromName(name);
+        ASSERT_TRUE(view.has_value());
+        const auto [dmin, dmax] = vv::report::test::ownDepthRange(
+            renderer, scene, base, *view, base.vss.range, vv::report::PaperSize::A4);
+        const std::string caption = vv::report::namedViewCaption(name);
+        const std::string problem =
+            vv::report::test::depthLegendProblem(vv::report::test::pdfWords(pdf), "Second",
+                                                 caption.substr(0, caption.find(' ')), dmin, dmax);
+        EXPECT_TRUE(problem.empty()) << problem;
+    }
+}
+
+TEST(ReportCommandTest, ASessionsSliceViewsGiveTheSlicePage) {
+    // `report --session F.vvs --slice coronal`: the coronal view's position,
+    // the window and the overlay style as the GUI saved them.
+    const fs::path dir = freshDir("session-slice");
+    const auto cta = vv::test::makeSyntheticCta({64, 64, 48}, 3);
+    (void)vv::test::writeCtSeries(dir / "series", cta.volume);
+    vv::segmentation::SceneSourceReport loaded;
+    (void)vv::segmentation::loadSceneSource(dir / "series", {}, {}, &loaded);
+    ASSERT_TRUE(loaded.volume);
+    const vv::slices::SliceStack coronal =
+        vv::slices::sliceStack(*loaded.volume, vv::slices::SliceOrientation::Coronal);
+    const double position = coronal.position(coronal.count / 3);  // not the middle one
+
+    vv::app::Session session;
+    session.files = {QString::fromStdString((dir / "series").string())};
+    vv::app::SliceSessionState slices;
+    slices.window = {100.0, 50.0};  // level 100, width 50: chosen by hand, no preset
+    slices.fill = false;
+    slices.outline = true;
+    slices.views.at(1).position = position;
+    session.slices = slices;
+    const fs::path file = dir / "slices.vvs";
+    vv::app::saveSession(file, session);
+    const fs::path pdf = dir / "report.pdf";
+    const auto r = report({"--session", file.string(), "-o", pdf.string(), "--slice", "coronal"});
+    ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
+    std::string text;
+    for (const auto& w : vv::report::test::pdfWords(pdf)) {
+        text += w.text + " ";
+    }
+    text = vv::report::test::withoutLigatures(text);
+    vv::app::SliceFacts facts;
+    facts.orientation = vv::slices::SliceOrientation::Coronal;
+    facts.axis = coronal.axis;
+    facts.position = position;
+    facts.window = slices.window;
+    facts.unit = "HU";
+    facts.overlay = vv::slices::OverlayStyle{false, true};
+    // (Spaces as pdftotext writes them: no-break spaces become plain ones.)
+    const std::string caption = vv::report::test::withoutLigatures(
+        vv::app::sliceCaption(facts).replace(QChar(0x00A0), QLatin1Char(' ')).toStdString());
+    QString words;
+    for (const QString& word :
+         QString::fromStdString(caption).split(QLatin1Char(' '), Qt::SkipEmptyParts)) {
+        words += word + QLatin1Char(' ');
+    }
+    EXPECT_NE(text.find(words.trimmed().toStdString()), std::string::npos)
+        << words.toStdString() << "\nin\n"
+        << text;
+    EXPECT_NE(text.find("W 50 HU L 100 HU. Coloured outline: the segmentation."), std::string::npos)
+        << text;
 }
 
 }  // namespace

@@ -20,6 +20,7 @@
 #include <string>
 #include <vector>
 
+#include "CtaSeriesFixture.h"
 #include "ReportTestUtil.h"
 #include "TestMeshes.h"
 #include "vv/meshio/MeshWriter.h"
@@ -55,54 +56,8 @@ int runReport(const std::string& environment, const fs::path& input, const fs::p
                    output);
 }
 
-/// A word of a page with its box in points (pdftotext -bbox).
-struct Box {
-    int page = 0;
-    double xMin = 0.0;
-    double yMin = 0.0;
-    double xMax = 0.0;
-    double yMax = 0.0;
-    std::string text;
-};
-
-std::vector<Box> boxes(const fs::path& pdf) {
-    std::string html;
-    EXPECT_EQ(runTool("pdftotext -bbox '" + pdf.string() + "' -", html), 0) << html;
-    std::vector<Box> all;
-    int page = 0;
-    const std::regex token(
-        R"re(<page |<word xMin="([^"]*)" yMin="([^"]*)" xMax="([^"]*)" yMax="([^"]*)">([^<]*)</word>)re");
-    for (auto it = std::sregex_iterator(html.begin(), html.end(), token);
-         it != std::sregex_iterator(); ++it) {
-        const std::smatch& m = *it;
-        if (m.str(0) == "<page ") {
-            ++page;
-            continue;
-        }
-        all.push_back({page, std::stod(m.str(1)), std::stod(m.str(2)), std::stod(m.str(3)),
-                       std::stod(m.str(4)),
-                       QTextDocumentFragment::fromHtml(QString::fromStdString(m.str(5)))
-                           .toPlainText()
-                           .toStdString()});
-    }
-    return all;
-}
-
-/// One word of the PDF (pdftotext -bbox): its page, position and text.
-struct Word {
-    int page = 0;
-    double top = 0.0;
-    double bottom = 0.0;
-    std::string text;
-};
-
-std::vector<Word> words(const fs::path& pdf) {
-    std::vector<Word> all;
-    for (const Box& b : boxes(pdf)) {
-        all.push_back({b.page, b.yMin, b.yMax, b.text});
-    }
-    return all;
-}
+using Word = vv::report::test::PdfWord;
+using vv::report::test::pdfWords;
 
 /// The report's text without the legends painted over the views (their
 /// labels come from render::LegendPainter, not the report): the words
@@ -252,7 +207,7 @@ std::string reportText(const std::string& language,
                         output),
               0)
         << output;
-    return textOutsideTheViews(words(pdf), views);
+    return textOutsideTheViews(pdfWords(pdf), views);
 }
 
 TEST(ReportLanguageTest, GermanReportHasNoEnglishAndNoDecimalPoint) {
@@ -310,12 +265,12 @@ QImage pageImage(const fs::path& pdf, int page, int dpi) {
 
 /// Where the ink of `word` starts and ends on its page image (points):
 /// a word cut at its cell's edge shows less than its box.
-std::pair<double, double> inkSpan(const QImage& page, const Box& word, int dpi) {
+std::pair<double, double> inkSpan(const QImage& page, const Word& word, int dpi) {
     const double scale = dpi / 72.0;
-    const int top = static_cast<int>(word.yMin * scale) + 1;
-    const int bottom = static_cast<int>(word.yMax * scale) - 1;
-    const int left = static_cast<int>((word.xMin - 3.0) * scale);
-    const int right = static_cast<int>((word.xMax + 3.0) * scale);
+    const int top = static_cast<int>(word.top * scale) + 1;
+    const int bottom = static_cast<int>(word.bottom * scale) - 1;
+    const int left = static_cast<int>((word.left - 3.0) * scale);
+    const int right = static_cast<int>((word.right + 3.0) * scale);
     int first = right;
     int last = left;
     for (int x = std::max(left, 0); x < std::min(right, page.width()); ++x) {
@@ -338,24 +293,24 @@ TEST(ReportLanguageTest, TheGermanStatisticsTableShowsEveryHeaderWhole) {
     std::string output;
     ASSERT_EQ(runReport("", writeTube(dir), pdf, "--lang de --below 1 --above 3", output), 0)
         << output;
-    const std::vector<Box> all = boxes(pdf);
+    const std::vector<Word> all = pdfWords(pdf);
     const auto object =
-        std::find_if(all.begin(), all.end(), [](const Box& b) { return b.text == "Objekt"; });
+        std::find_if(all.begin(), all.end(), [](const Word& b) { return b.text == "Objekt"; });
     ASSERT_NE(object, all.end()) << "no statistics table";
     constexpr int kDpi = 200;
     const QImage page = pageImage(pdf, object->page, kDpi);
     ASSERT_FALSE(page.isNull());
     std::vector<std::string> headers;
-    for (const Box& word : all) {
-        const bool inHeader = word.page == object->page && word.xMin > object->xMax &&
-                              word.yMin > object->yMin - 12.0 && word.yMax < object->yMax + 12.0;
+    for (const Word& word : all) {
+        const bool inHeader = word.page == object->page && word.left > object->right &&
+                              word.top > object->top - 12.0 && word.bottom < object->bottom + 12.0;
         if (!inHeader || word.text.size() < 2) {
             continue;
         }
         headers.push_back(word.text);
         const auto [inkLeft, inkRight] = inkSpan(page, word, kDpi);
-        EXPECT_LE(inkLeft, word.xMin + 1.5) << "'" << word.text << "' cut at its left";
-        EXPECT_GE(inkRight, word.xMax - 1.5) << "'" << word.text << "' cut at its right";
+        EXPECT_LE(inkLeft, word.left + 1.5) << "'" << word.text << "' cut at its left";
+        EXPECT_GE(inkRight, word.right - 1.5) << "'" << word.text << "' cut at its right";
     }
     for (const char* header : {"Abdeckung", "Min", "Mittelwert", "Max", "Fläche"}) {
         EXPECT_NE(std::find(headers.begin(), headers.end(), header), headers.end()) << header;
@@ -364,30 +319,30 @@ TEST(ReportLanguageTest, TheGermanStatisticsTableShowsEveryHeaderWhole) {
 
 /// The numbers under a legend's title word `title` (its first word) on page 1:
 /// the labels of that legend, left to right.
-std::vector<Box> legendLabels(const std::vector<Box>& all, const std::string& title) {
+std::vector<Word> legendLabels(const std::vector<Word>& all, const std::string& title) {
     const auto heading = std::find_if(all.begin(), all.end(),
-                                      [&](const Box& b) { return b.page == 1 && b.text == title; });
+                                      [&](const Word& b) { return b.page == 1 && b.text == title; });
     EXPECT_NE(heading, all.end()) << "no legend titled " << title;
-    std::vector<Box> labels;
+    std::vector<Word> labels;
     if (heading == all.end()) {
         return labels;
     }
-    const double line = heading->yMax - heading->yMin;
+    const double line = heading->bottom - heading->top;
     static const std::regex number(R"(^[-−]?[0-9][0-9.,]*$)");
-    for (const Box& b : all) {
-        if (b.page == 1 && std::regex_match(b.text, number) && b.yMin > heading->yMax &&
-            b.yMin < heading->yMax + 5.0 * line && b.xMin > heading->xMin - 2.0 &&
-            b.xMax < heading->xMin + 200.0) {
+    for (const Word& b : all) {
+        if (b.page == 1 && std::regex_match(b.text, number) && b.top > heading->bottom &&
+            b.top < heading->bottom + 5.0 * line && b.left > heading->left - 2.0 &&
+            b.right < heading->left + 200.0) {
             labels.push_back(b);
         }
     }
-    std::sort(labels.begin(), labels.end(), [](const Box& a, const Box& b) {
-        return a.yMin < b.yMin - 1.0 || (std::abs(a.yMin - b.yMin) <= 1.0 && a.xMin < b.xMin);
+    std::sort(labels.begin(), labels.end(), [](const Word& a, const Word& b) {
+        return a.top < b.top - 1.0 || (std::abs(a.top - b.top) <= 1.0 && a.left < b.left);
     });
     // The first row of numbers: the tick labels.
-    std::vector<Box> row;
-    for (const Box& b : labels) {
-        if (row.empty() || std::abs(b.yMin - row.front().yMin) <= 1.0) {
+    std::vector<Word> row;
+    for (const Word& b : labels) {
+        if (row.empty() || std::abs(b.top - row.front().top) <= 1.0) {
             row.push_back(b);
         }
     }
@@ -404,10 +359,10 @@ TEST(ReportLanguageTest, LegendLabelsInThePdfNeverCrowd) {
         std::string output;
         ASSERT_EQ(runReport("", writeTube(dir), pdf, std::string("--lang ") + language, output), 0)
             << output;
-        const std::vector<Box> all = boxes(pdf);
+        const std::vector<Word> all = pdfWords(pdf);
         const bool german = std::string(language) == "de";
         std::string title;
-        for (const Box& b : all) {
+        for (const Word& b : all) {
             if (b.page == 1) {
                 title += b.text + " ";
             }
@@ -418,15 +373,15 @@ TEST(ReportLanguageTest, LegendLabelsInThePdfNeverCrowd) {
             << title;
         for (const std::string& legend :
              {std::string(german ? "Tiefe" : "Depth"), std::string("wss")}) {
-            const std::vector<Box> labels = legendLabels(all, legend);
+            const std::vector<Word> labels = legendLabels(all, legend);
             ASSERT_GE(labels.size(), 2U) << language << " " << legend;
             if (legend != "wss") {  // the depth from the frontmost vessel: 0 first
                 EXPECT_TRUE(std::regex_match(labels.front().text, std::regex("0([.,]0+)?")))
                     << language << ": " << labels.front().text;
             }
             for (std::size_t i = 1; i < labels.size(); ++i) {
-                const double height = labels[i].yMax - labels[i].yMin;
-                EXPECT_GE(labels[i].xMin - labels[i - 1].xMax, 1.05 * height)
+                const double height = labels[i].bottom - labels[i].top;
+                EXPECT_GE(labels[i].left - labels[i - 1].right, 1.05 * height)
                     << language << " " << legend << ": '" << labels[i - 1].text << "' and '"
                     << labels[i].text << "' crowd";
             }
@@ -461,7 +416,7 @@ TEST(ReportLanguageTest, PatientForMeshesFindingsFirstNamesOnlyAndDisclaimer) {
               0)
         << output;
     std::string text;
-    for (const Word& w : words(pdf)) {
+    for (const Word& w : pdfWords(pdf)) {
         text += w.text + " ";
     }
     for (const char* expected :
@@ -501,12 +456,103 @@ TEST(ReportLanguageTest, TheDemoIsNamedSyntheticData) {
     ASSERT_EQ(runReport("VV_DEMO_FILE='" + input.string() + "'", input, pdf, "", output), 0)
         << output;
     std::string text;
-    for (const Word& w : words(pdf)) {
+    for (const Word& w : pdfWords(pdf)) {
         text += w.text + " ";
     }
     EXPECT_NE(text.find("Synthetic demo data generated by VesselView: not patient data."),
               std::string::npos)
         << text;
+}
+
+TEST(ReportLanguageTest, TheSlicePageKeepsItsMarginsOnBothPapersInBothLanguages) {
+    // `report DIR --slice`: the GUI's slice page from a DICOM series. Every
+    // page of every report (with and without the slice) rasterised: nothing
+    // crosses the margins or runs into the footer; the slice's heading,
+    // image and caption on one page.
+    const fs::path dir = freshDir("slice");
+    auto cta = vv::test::writeTestCtaSeries(dir / "series");
+    struct Case {
+        std::string language;
+        std::string paper;
+        std::string slice;  ///< empty: no slice
+        std::string heading;
+        std::string plane;  ///< the caption's first word
+    };
+    const std::vector<Case> cases = {
+        {"en", "a4", "coronal", "Slice", "Coronal"},
+        {"de", "letter", "sagittal", "Schicht", "Sagittal"},
+        {"de", "a4", "axial", "Schicht", "Axial"},
+        {"en", "letter", "", "", ""},
+        {"de", "a4", "", "", ""},
+    };
+    const int dpi = 60;
+    for (const Case& c : cases) {
+        const std::string name =
+            c.language + "-" + c.paper + "-" + (c.slice.empty() ? "none" : c.slice);
+        SCOPED_TRACE(name);
+        const fs::path pdf = dir / (name + ".pdf");
+        std::string output;
+        ASSERT_EQ(runReport("", dir / "series", pdf,
+                            "--lang " + c.language + " --paper " + c.paper +
+                                " --second-view anterior --size 640x480 --triangles 20000" +
+                                (c.slice.empty() ? std::string() : " --slice " + c.slice),
+                            output),
+                  0)
+            << output;
+        const std::vector<QImage> pages = vv::report::test::pdfPages(pdf, dir / name, dpi);
+        for (std::size_t i = 0; i < pages.size(); ++i) {
+            for (const std::string& problem : vv::report::test::marginProblems(pages[i], dpi)) {
+                ADD_FAILURE() << "page " << i + 1 << ": " << problem;
+            }
+        }
+        if (c.slice.empty()) {
+            continue;
+        }
+        const std::vector<Word> all = pdfWords(pdf);
+        const auto heading = std::find_if(all.begin(), all.end(),
+                                          [&](const Word& w) { return w.text == c.heading; });
+        ASSERT_NE(heading, all.end());
+        // The caption: the plane's name below the heading.
+        const auto caption = std::find_if(heading + 1, all.end(), [&](const Word& w) {
+            // ("Sagittal," in German: "Sagittal, Schicht bei …")
+            return w.text.rfind(c.plane, 0) == 0 &&
+                   (w.page > heading->page || w.top > heading->bottom + 20);
+        });
+        ASSERT_NE(caption, all.end());
+        EXPECT_EQ(caption->page, heading->page);
+        // The caption names the window preset and the segmentation.
+        std::string text;
+        for (auto w = caption; w != all.end() && w->page == caption->page; ++w) {
+            text += w->text + " ";
+        }
+        EXPECT_NE(text.find(c.language == "de" ? "Fenstervorgabe CTA" : "CTA preset"),
+                  std::string::npos)
+            << text;
+        EXPECT_NE(text.find(c.language == "de" ? "Segmentierung" : "segmentation"),
+                  std::string::npos)
+            << text;
+    }
+    vv::test::removeTestCtaSeries(dir / "series", cta);
+}
+
+TEST(ReportLanguageTest, ASliceOfAMeshOrOutsideTheVolumeIsAUsageError) {
+    const fs::path dir = freshDir("slice-errors");
+    std::string output;
+    EXPECT_EQ(runReport("", writeTube(dir), dir / "r.pdf", "--slice axial", output), 2);
+    EXPECT_NE(output.find("--slice needs a DICOM image series"), std::string::npos) << output;
+    EXPECT_FALSE(fs::exists(dir / "r.pdf"));
+    EXPECT_EQ(runReport("", writeTube(dir), dir / "r.pdf", "--slice oblique", output), 2);
+    EXPECT_NE(output.find("--slice must be axial, coronal or sagittal"), std::string::npos)
+        << output;
+    EXPECT_EQ(runReport("", writeTube(dir), dir / "r.pdf", "--slice axial@A12", output), 2);
+    EXPECT_NE(output.find("lies along S/I"), std::string::npos) << output;
+    auto cta = vv::test::writeTestCtaSeries(dir / "series");
+    EXPECT_EQ(runReport("", dir / "series", dir / "r.pdf", "--slice axial@9000 --triangles 20000",
+                        output),
+              2);
+    EXPECT_NE(output.find("lies outside the volume"), std::string::npos) << output;
+    EXPECT_FALSE(fs::exists(dir / "r.pdf"));
+    vv::test::removeTestCtaSeries(dir / "series", cta);
 }
 
 }  // namespace

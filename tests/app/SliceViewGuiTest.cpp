@@ -33,12 +33,12 @@
 #include "GuiFixture.h"
 #include "ReportTestUtil.h"
 #include "SyntheticCta.h"
+#include "common/SliceTexts.h"
 #include "gui/ExportWorker.h"
 #include "gui/MainWindow.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/SliceCursor.h"
-#include "gui/SliceTexts.h"
 #include "gui/SliceView.h"
 #include "gui/SliceWorkspace.h"
 #include "gui/panels/SegmentationPanel.h"
@@ -235,7 +235,7 @@ TEST_F(SliceViewGuiTest, WheelScrollsSlicesAndTheReadoutFollows) {
     // The position line and the read-out name the new slice's height.
     const double z = axial->slicePosition();
     EXPECT_NEAR(z - axial->stack()->position(before), 3.0 * axial->stack()->step, 1e-9);
-    EXPECT_TRUE(axial->positionText().startsWith(gui::slicePositionLabel(2, z)))
+    EXPECT_TRUE(axial->positionText().startsWith(app::slicePositionLabel(2, z)))
         << axial->positionText().toStdString();
     const QString readout = axial->readoutText();
     EXPECT_NE(readout, readoutBefore);
@@ -245,7 +245,7 @@ TEST_F(SliceViewGuiTest, WheelScrollsSlicesAndTheReadoutFollows) {
     ASSERT_TRUE(world);
     const auto sample = slices::voxelAt(*window_->volume(), *world);
     ASSERT_TRUE(sample);
-    EXPECT_TRUE(readout.contains(gui::voxelValueLabel(*sample))) << readout.toStdString();
+    EXPECT_TRUE(readout.contains(app::voxelValueLabel(*sample))) << readout.toStdString();
 
     // In German the numbers take a decimal comma.
     QLocale::setDefault(QLocale(QLocale::German, QLocale::Germany));
@@ -545,9 +545,9 @@ TEST_F(SliceViewGuiTest, ReportIncludesTheSliceWithItsOverlay) {
     ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0);
     EXPECT_NE(text.find("Slice with segmentation"), std::string::npos) << text;
     // (Spaces as pdftotext writes them: no-break spaces become plain ones.)
-    QString expected = gui::orientationName(SliceOrientation::Coronal) +
+    QString expected = app::orientationName(SliceOrientation::Coronal) +
                        QStringLiteral(" slice at ") +
-                       gui::slicePositionLabel(1, coronal->slicePosition());
+                       app::slicePositionLabel(1, coronal->slicePosition());
     const std::string caption = expected.replace(QChar(0x00A0), QLatin1Char(' ')).toStdString();
     text = QString::fromStdString(text).replace(QChar(0x00A0), QLatin1Char(' ')).toStdString();
     EXPECT_NE(text.find(caption), std::string::npos) << caption << "\n" << text;
@@ -577,6 +577,23 @@ TEST_F(SliceViewGuiTest, ReportIncludesTheSliceWithItsOverlay) {
     }
     EXPECT_GE(images, 2);  // the view and the slice
     EXPECT_GT(overlayPixels, 50);
+    // The caption says the window's preset and what the colours are.
+    std::string words;
+    for (const report::test::PdfWord& w : report::test::pdfWords(pdf)) {
+        words += w.text + " ";
+    }
+    words = report::test::withoutLigatures(words);  // "ﬁll" -> "fill"
+    EXPECT_NE(words.find("(CTA preset). Coloured fill and outline: the segmentation."),
+              std::string::npos)
+        << words;
+    // Every page within its margins, nothing over the footer.
+    const int dpi = 60;
+    const std::vector<QImage> pages = report::test::pdfPages(pdf, dir / "pages", dpi);
+    for (std::size_t i = 0; i < pages.size(); ++i) {
+        for (const std::string& problem : report::test::marginProblems(pages[i], dpi)) {
+            ADD_FAILURE() << "page " << i + 1 << ": " << problem;
+        }
+    }
 }
 
 TEST_F(SliceViewGuiTest, MouseHelpOnlyOffTheImage) {

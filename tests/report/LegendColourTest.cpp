@@ -115,8 +115,8 @@ TEST(LegendColourTest, PdfLegendsShowTheColourMapsColours) {
     c.view.image.fill(Qt::white);  // nothing in the view looks like a legend colour
     c.view.legends.depth =
         render::DepthLegend{colormaps::DepthScale::Chromadepth, 10.0, 52.0, "mm"};
-    c.view.legends.parameter =
-        render::ParameterLegend{"wss", "Pa", 0.45F, 1.31F, colormaps::ColorMap::Inferno, kBins, {}, {}};
+    c.view.legends.parameter = render::ParameterLegend{
+        "wss", "Pa", 0.45F, 1.31F, colormaps::ColorMap::Inferno, kBins, {}, {}};
     const QByteArray pdf = renderPdf(c, PaperSize::A4);
     const QImage page = rasterise(pdf, "report", 150);
     ASSERT_FALSE(page.isNull());

@@ -3,9 +3,12 @@
 // Reads the text back with pdftotext (poppler-utils, scripts/setup-deps).
 #include <gtest/gtest.h>
 
+#include <QPainter>
 #include <QTimeZone>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "ReportTestUtil.h"
@@ -261,6 +264,91 @@ TEST_F(PdfReportTest, TablesAreNeverSplitAcrossPages) {
         splitsTried += table > 1 ? 1 : 0;
     }
     EXPECT_GT(splitsTried, 0);  // some lengths moved the table to the next page
+}
+
+/// A slice as the report gets it: black around a grey disc, `width` x `height`.
+QImage sliceImage(int width, int height) {
+    QImage image(width, height, QImage::Format_RGB32);
+    image.fill(Qt::black);
+    QPainter painter(&image);
+    painter.setBrush(QColor(160, 160, 160));
+    painter.drawEllipse(QRectF(width * 0.25, height * 0.25, width * 0.5, height * 0.5));
+    return image;
+}
+
+TEST_F(PdfReportTest, EveryPageKeepsItsMarginsAndTheSliceStaysWithItsHeading) {
+    // Both papers; no slice, and slices of every shape (a tall one is taller
+    // than a page at the content width); a portrait view too.
+    const std::vector<std::pair<std::string, QSize>> slices = {
+        {"none", {}}, {"tall", {2400, 3800}}, {"square", {2400, 2400}}, {"wide", {2400, 1200}}};
+    const int dpi = 60;
+    for (const PaperSize paper : {PaperSize::A4, PaperSize::Letter}) {
+        for (const auto& [shape, size] : slices) {
+            for (const bool portraitView : {false, true}) {
+                const std::string name = std::string(paper == PaperSize::A4 ? "a4" : "letter") +
+                                         "-" + shape + (portraitView ? "-portrait" : "");
+                SCOPED_TRACE(name);
+                ReportContent c = content(paper);
+                addParameter(c);
+                const int width = reportImageWidth(paper);
+                if (portraitView) {
+                    c.view.image = test::testImage(width, width * 16 / 9);
+                }
+                c.secondView = c.view;
+                c.secondView->caption = "Anterior view";
+                if (!size.isEmpty()) {
+                    c.slice = ReportView{sliceImage(size.width(), size.height()),
+                                         "Coronal slice at P 12.0 mm, window W 600 HU L 300 HU "
+                                         "(CTA preset). Coloured fill and outline: the "
+                                         "segmentation.",
+                                         {}};
+                }
+                (void)text(renderPdf(c, paper), name);  // writes dir()/name.pdf
+                const fs::path pdf = dir() / (name + ".pdf");
+                const std::vector<QImage> pages = test::pdfPages(pdf, dir() / name, dpi);
+                for (std::size_t i = 0; i < pages.size(); ++i) {
+                    for (const std::string& problem : test::marginProblems(pages[i], dpi)) {
+                        ADD_FAILURE() << "page " << i + 1 << ": " << problem;
+                    }
+                }
+                if (size.isEmpty()) {
+                    continue;
+                }
+                // The heading, the whole slice and its caption on one page.
+                const auto words = test::pdfWords(pdf);
+                const auto find = [&words](const std::string& word) {
+                    return std::find_if(words.begin(), words.end(),
+                                        [&](const test::PdfWord& w) { return w.text == word; });
+                };
+                const auto heading = find("Slice");
+                const auto caption = find("Coronal");
+                ASSERT_NE(heading, words.end());
+                ASSERT_NE(caption, words.end());
+                EXPECT_EQ(heading->page, caption->page);
+                ASSERT_LE(static_cast<std::size_t>(heading->page), pages.size());
+                // Between them the slice: its black fills most of that band.
+                const QImage& page = pages[static_cast<std::size_t>(heading->page) - 1];
+                const double scale = dpi / 72.0;
+                const int top = static_cast<int>(heading->bottom * scale) + 2;
+                const int bottom = static_cast<int>(caption->top * scale) - 2;
+                EXPECT_GT(bottom - top, 40.0 / 25.4 * dpi) << "no room for the slice";
+                int black = 0;
+                for (int y = top; y < bottom; ++y) {
+                    for (int x = 0; x < page.width(); ++x) {
+                        black += qGray(page.pixel(x, y)) < 20 ? 1 : 0;
+                    }
+                }
+                // The disc covers pi/16 of the slice; the rest of it is black.
+                const double sliceShare = 1.0 - std::numbers::pi / 16.0;
+                const double aspect = static_cast<double>(size.height()) / size.width();
+                const double drawnHeight = bottom - top;
+                const double drawnWidth =
+                    std::min(drawnHeight / aspect, page.width() - 2.0 * 18.0 / 25.4 * dpi);
+                EXPECT_GT(black, 0.85 * sliceShare * drawnWidth * drawnWidth * aspect)
+                    << "the slice is cut";
+            }
+        }
+    }
 }
 
 TEST_F(PdfReportTest, RefusesViewsBelowPrintResolution) {

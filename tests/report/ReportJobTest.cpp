@@ -139,6 +139,43 @@ TEST_F(ReportJobTest, WriteFailuresAndMissingOutputsAreTypedErrors) {
     }
 }
 
+TEST_F(ReportJobTest, AnExportedReportIsWrittenAsItIsAndABadOneNamed) {
+    const fs::path dir = test::testDir("job-existing");
+    // A report made before, with other findings.
+    ReportJobOptions first = options();
+    first.findings = "Findings of the first report.";
+    first.outputs.pdf = dir / "first.pdf";
+    (void)runReportJob(*renderer_, scene_, first);
+    std::ifstream in(first.outputs.pdf, std::ios::binary);
+    const std::string exported{std::istreambuf_iterator<char>(in),
+                               std::istreambuf_iterator<char>()};
+    ASSERT_TRUE(exported.starts_with("%PDF-"));
+
+    // Sent as it is: the same bytes, whatever the findings now.
+    ReportJobOptions again = options();
+    again.existingPdf = first.outputs.pdf;
+    again.outputs.pdf = dir / "again.pdf";
+    (void)runReportJob(*renderer_, scene_, again);
+    std::ifstream copy(again.outputs.pdf, std::ios::binary);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(copy), std::istreambuf_iterator<char>()),
+              exported);
+
+    // Missing, or no PDF: an error naming the file; nothing written.
+    again.outputs.pdf = dir / "never.pdf";
+    for (const fs::path& bad : {dir / "missing.pdf", dir / "not-a-pdf.pdf"}) {
+        std::ofstream(dir / "not-a-pdf.pdf") << "plain text";
+        again.existingPdf = bad;
+        try {
+            (void)runReportJob(*renderer_, scene_, again);
+            ADD_FAILURE() << "no error for " << bad;
+        } catch (const Error& e) {
+            EXPECT_EQ(e.file(), bad);
+            EXPECT_NE(std::string(e.what()).find("exported report"), std::string::npos) << e.what();
+        }
+        EXPECT_FALSE(fs::exists(again.outputs.pdf));
+    }
+}
+
 TEST_F(ReportJobTest, NamedViewCaptions) {
     EXPECT_EQ(namedViewCaption("far"), "Far view");
     EXPECT_EQ(namedViewCaption(""), "Default view, the whole tree fitted");

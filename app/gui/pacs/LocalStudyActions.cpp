@@ -10,7 +10,9 @@
 #include <QStatusBar>
 #include <memory>
 
+#include "gui/DocumentController.h"
 #include "gui/MainWindow.h"
+#include "gui/SliceWorkspace.h"
 #include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
@@ -46,10 +48,24 @@ void showSendDialog(MainWindow& window) {
     auto* dialog = new SendDialog(*window.viewer(), window.reportSource(),
                                   readPacsSettings(QSettings()), &window);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
-    if (const auto slice = window.sliceWorkspace()->reportSlice()) {
-        dialog->setSlice(slice->first, slice->second);
-    }
-    dialog->setSegmentation(window.document()->labelMap());
+    SliceWorkspace* slices = window.sliceWorkspace();
+    dialog->setSliceSource([slices] { return slices->reportSlice(); });
+    DocumentController* document = window.document();
+    dialog->setFindings(document->findings());
+    const DocumentController::ExportedReport exported = document->exportedReport();
+    dialog->setExportedReport(exported.pdf, exported.findings);
+    dialog->setSegmentation(document->labelMap());
+    QObject::connect(dialog, &SendDialog::findingsEdited, document,
+                     &DocumentController::setFindings);
+    // Other data on screen: the dialog offers it, not the last send's results.
+    QObject::connect(&window, &MainWindow::sceneShown, dialog, [&window, dialog, document] {
+        const DocumentController::ExportedReport report = document->exportedReport();
+        dialog->showScene(window.reportSource(), document->labelMap(), document->findings(),
+                          report.pdf, report.findings);
+    });
+    // A DICOM series' segmentation arrives after its scene.
+    QObject::connect(document, &DocumentController::volumeChanged, dialog,
+                     [dialog, document] { dialog->setSegmentation(document->labelMap()); });
     dialog->show();
 }
 

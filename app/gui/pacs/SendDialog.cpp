@@ -5,13 +5,18 @@
 #include <QComboBox>
 #include <QCoreApplication>
 #include <QDialogButtonBox>
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
 #include <QFormLayout>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QPlainTextEdit>
 #include <QProgressBar>
 #include <QPushButton>
 #include <QSettings>
+#include <QSignalBlocker>
 #include <QTemporaryDir>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -49,6 +54,25 @@ QString itemName(SendKind kind) {
     return SendDialog::tr("Segmentation (DICOM SEG)");
 }
 
+/// What the report is about, as the user knows it: the DICOM series by its
+/// name (never its UID folder), the other files by their names.
+QString dataName(const report::ReportSource& source) {
+    if (source.syntheticDemo) {
+        return SendDialog::tr("the synthetic demo tree");
+    }
+    QStringList names;
+    if (!source.seriesName.empty()) {
+        names << qs(source.seriesName);
+    }
+    for (const auto& file : source.files) {
+        if (source.seriesName.empty() || file != source.dicomPath) {
+            names << QFileInfo(QFile::decodeName(file.c_str())).fileName();
+        }
+    }
+    return names.isEmpty() ? SendDialog::tr("the data on screen")
+                           : names.join(QStringLiteral(", "));
+}
+
 }  // namespace
 
 SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
@@ -56,6 +80,25 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     : QDialog(parent), viewer_(viewer), source_(std::move(source)), settings_(std::move(settings)) {
     setObjectName(QStringLiteral("sendDialog"));
     setWindowTitle(tr("Send to PACS"));
+    data_ = new QLabel(this);
+    data_->setObjectName(QStringLiteral("sendData"));
+    data_->setWordWrap(true);
+    data_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    findings_ = new QPlainTextEdit(this);
+    findings_->setObjectName(QStringLiteral("sendFindings"));
+    findings_->setPlaceholderText(tr("Findings, printed first in the report"));
+    findings_->setTabChangesFocus(true);
+    connect(findings_, &QPlainTextEdit::textChanged, this, [this] {
+        newFindings_ = findings_->toPlainText();  // only a new report's are editable
+        emit findingsEdited(newFindings_);
+    });
+    reportChoice_ = new QComboBox(this);
+    reportChoice_->setObjectName(QStringLiteral("sendReportChoice"));
+    reportChoice_->addItem(tr("A new report of the view, with the findings below"), QString());
+    connect(reportChoice_, &QComboBox::currentIndexChanged, this, [this] {
+        showFindings();
+        updateButtons();
+    });
     node_ = new QComboBox(this);
     node_->setObjectName(QStringLiteral("sendNode"));
     for (const PacsNode& node : settings_.nodes) {
@@ -76,6 +119,9 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     what->addWidget(pdf_);
     what->addWidget(seg_);
     auto* form = new QFormLayout;
+    form->addRow(tr("Data:"), data_);
+    form->addRow(tr("&Report:"), reportChoice_);
+    form->addRow(tr("&Findings:"), findings_);
     form->addRow(tr("PACS node:"), node_);
     form->addRow(tr("Send:"), what);
 
@@ -119,7 +165,8 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     layout->addWidget(results_, 1);
     layout->addWidget(summary_);
     layout->addWidget(buttons);
-    resize(640, 420);
+    resize(640, 520);
+    data_->setText(dataName(source_));
     updateButtons();
 }
 
@@ -127,9 +174,69 @@ SendDialog::~SendDialog() {
     delete worker_;  // cancels and waits for the step running
 }
 
-void SendDialog::setSlice(const QImage& image, const QString& caption) {
-    slice_ = image;
-    sliceCaption_ = caption;
+void SendDialog::setSliceSource(SliceSource source) {
+    slice_ = std::move(source);
+}
+
+void SendDialog::setFindings(const QString& findings) {
+    newFindings_ = findings;
+    showFindings();
+}
+
+void SendDialog::showFindings() {
+    const bool exported = !reportChoice_->currentData().toString().isEmpty();
+    const QString& shown = exported ? exportedFindings_ : newFindings_;
+    if (findings_->toPlainText() != shown) {
+        const QSignalBlocker quiet(findings_);  // not an edit of the user's
+        findings_->setPlainText(shown);
+    }
+}
+
+void SendDialog::setExportedReport(const QString& pdf, const QString& findings) {
+    exportedFindings_ = findings;
+    while (reportChoice_->count() > 1) {
+        reportChoice_->removeItem(1);
+    }
+    if (!pdf.isEmpty()) {
+        reportChoice_->addItem(
+            tr("The exported report %1, as it is").arg(QFileInfo(pdf).fileName()), pdf);
+        reportChoice_->setItemData(1, QDir::toNativeSeparators(pdf), Qt::ToolTipRole);
+        reportChoice_->setCurrentIndex(1);
+    }
+    showFindings();
+    updateButtons();
+}
+
+void SendDialog::showScene(report::ReportSource source,
+                           std::shared_ptr<const scene::LabelMap> labelMap,
+                           const QString& findings, const QString& exportedPdf,
+                           const QString& exportedFindings) {
+    const QString before = dataName(source_);
+    const bool wasSending = worker_ != nullptr;
+    abandonSend();
+    source_ = std::move(source);
+    data_->setText(dataName(source_));
+    setFindings(findings);
+    setExportedReport(exportedPdf, exportedFindings);
+    results_->clear();
+    summary_->setText(wasSending ? tr("Other data was opened: the send of %1 was stopped; nothing "
+                                      "more was sent.")
+                                       .arg(before)
+                                 : QString());
+    setSegmentation(std::move(labelMap));
+}
+
+void SendDialog::abandonSend() {
+    if (worker_ == nullptr) {
+        return;
+    }
+    ExportWorker* old = std::exchange(worker_, nullptr);
+    disconnect(old, nullptr, this, nullptr);  // its outcome is of the other data
+    connect(old, &ExportWorker::finished, old, &QObject::deleteLater);
+    old->cancel();
+    progress_->hide();
+    stage_->hide();
+    updateButtons();
 }
 
 void SendDialog::setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap) {
@@ -144,6 +251,11 @@ void SendDialog::updateButtons() {
     send_->setEnabled(!sending && node_->count() > 0 &&
                       (sc_->isChecked() || pdf_->isChecked() || segmentation));
     node_->setEnabled(!sending);
+    const bool exported = !reportChoice_->currentData().toString().isEmpty();
+    reportChoice_->setEnabled(!sending);
+    findings_->setReadOnly(sending || exported);
+    findings_->setToolTip(exported ? tr("The exported report is sent with its own findings")
+                                   : QString());
     sc_->setEnabled(!sending);
     pdf_->setEnabled(!sending);
     seg_->setEnabled(!sending && labelMap_ != nullptr);
@@ -162,16 +274,13 @@ void SendDialog::send() {
     }
     SendRequest request;
     report::ReportJobOptions& job = request.report;
-    const QSize size = viewPixelSize(viewer_);
-    job.view = currentViewOptions(viewer_, size.width(), size.height());
-    job.viewCaption =
-        QCoreApplication::translate("vv::gui::ReportDialog", "The view as shown on screen")
-            .toStdString();
-    job.viewDescription =
-        QCoreApplication::translate("vv::gui::ReportDialog", "as shown on screen").toStdString();
-    job.slice = slice_;
-    job.sliceCaption = sliceCaption_.toStdString();
-    job.legends = viewer_.legendsVisible();
+    setReportView(viewer_, job);
+    if (const auto slice = slice_ ? slice_() : std::nullopt) {
+        job.slice = slice->first;
+        job.sliceCaption = slice->second.toStdString();
+    }
+    job.findings = newFindings_.toStdString();
+    job.existingPdf = QFile::encodeName(reportChoice_->currentData().toString()).toStdString();
     job.disclaimer = ReportDialog::disclaimer(QSettings()).toStdString();
     job.source = source_;
     request.secondaryCapture = sc_->isChecked();

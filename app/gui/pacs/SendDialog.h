@@ -4,7 +4,10 @@
 #include <QDialog>
 #include <QImage>
 #include <QString>
+#include <functional>
 #include <memory>
+#include <optional>
+#include <utility>
 
 #include "gui/pacs/PacsSettings.h"
 #include "gui/pacs/SendJob.h"
@@ -13,6 +16,7 @@
 class QCheckBox;
 class QComboBox;
 class QLabel;
+class QPlainTextEdit;
 class QProgressBar;
 class QPushButton;
 class QTemporaryDir;
@@ -24,16 +28,17 @@ class ExportWorker;
 class ViewerWidget;
 
 /// DICOM > Send to PACS…: sends the report of the view on screen to a
-/// configured node. The user picks the node and what to send (the view as
-/// DICOM Secondary Capture, the PDF report as DICOM Encapsulated PDF, and for
-/// a DICOM scene with a segmentation the segmentation as DICOM SEG);
-/// Send makes them in a temporary folder and C-STOREs them on an
-/// ExportWorker (never on the GUI thread) with a progress bar, Cancel
-/// stopping it. Afterwards a table says per instance whether the node
-/// accepted it (with the DIMSE status when not), and a summary line says
-/// "2 of 2 accepted by ORTHANC@host:port" (UI locale) or, when the network
-/// failed, what failed (refused connection, rejected association, timeout,
-/// TLS), translated. The dialog stays usable for another send.
+/// configured node. It names the data on screen (a DICOM series by its
+/// description, never its UID folder) and lets the user review and edit the
+/// report's findings (dataLabel(), findingsEdit()). The user picks the node and what to send (the
+/// view as DICOM Secondary Capture, the PDF report as DICOM Encapsulated PDF, and for a DICOM scene
+/// with a segmentation the segmentation as DICOM SEG); Send makes them in a temporary folder and
+/// C-STOREs them on an ExportWorker (never on the GUI thread) with a progress bar, Cancel stopping
+/// it. Afterwards a table says per instance whether the node accepted it (with the DIMSE status
+/// when not), and a summary line says "2 of 2 accepted by ORTHANC@host:port" (UI locale) or, when
+/// the network failed, what failed (refused connection, rejected association, timeout, TLS),
+/// translated. The dialog stays usable for another send. When other data is shown (showScene()), it
+/// forgets the last send's results, stops a send in progress and offers the new data.
 class SendDialog : public QDialog {
     Q_OBJECT
 
@@ -47,13 +52,37 @@ class SendDialog : public QDialog {
     SendDialog(SendDialog&&) = delete;
     SendDialog& operator=(SendDialog&&) = delete;
 
-    /// Adds the slice with its segmentation to the PDF (DICOM data).
-    void setSlice(const QImage& image, const QString& caption);
+    /// The slice with its segmentation for the PDF (DICOM data): asked for
+    /// when Send makes the report (the slice shown then); nullopt = none.
+    using SliceSource = std::function<std::optional<std::pair<QImage, QString>>()>;
+    void setSliceSource(SliceSource source);
+    /// The findings printed in the report (editable in findingsEdit()).
+    void setFindings(const QString& findings);
+    /// The PDF report exported last for the data (File > Export Report) and
+    /// its findings: reportChooser() offers to send it as it is (and chooses
+    /// it; findingsEdit() then shows its findings, read-only); an empty
+    /// `pdf` = none, only a new report.
+    void setExportedReport(const QString& pdf, const QString& findings);
+    /// Other data is on screen: `source` (with its segmentation `labelMap`,
+    /// may be null, and its `findings`) replaces what the dialog offered. The
+    /// last send's results are cleared; a send in progress is stopped and
+    /// its outcome dropped (the summary says so).
+    void showScene(report::ReportSource source, std::shared_ptr<const scene::LabelMap> labelMap,
+                   const QString& findings, const QString& exportedPdf,
+                   const QString& exportedFindings);
     /// Offers `labelMap` (the segmentation of the DICOM series the source
     /// names) as DICOM SEG: segmentationBox() enabled and checked. Without a
     /// map or for a scene not from DICOM the box stays disabled.
     void setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap);
 
+    /// "Data: <series name or file names>": what the report is about.
+    [[nodiscard]] QLabel* dataLabel() const noexcept { return data_; }
+    /// The report's findings (free text, printed first); read-only while
+    /// the exported report is chosen (its findings are in it).
+    [[nodiscard]] QPlainTextEdit* findingsEdit() const noexcept { return findings_; }
+    /// Which report: item 0 a new one of the view (data empty), item 1 the
+    /// exported one (data: its path) when there is one.
+    [[nodiscard]] QComboBox* reportChooser() const noexcept { return reportChoice_; }
     /// Item data: the node's name.
     [[nodiscard]] QComboBox* nodeChooser() const noexcept { return node_; }
     [[nodiscard]] QCheckBox* secondaryCaptureBox() const noexcept { return sc_; }
@@ -77,18 +106,28 @@ class SendDialog : public QDialog {
   signals:
     /// A send ended (accepted, refused, failed or cancelled); summaryLabel() says how.
     void sendFinished();
+    /// The user edited the findings (to keep them for the data's next report).
+    void findingsEdited(const QString& findings);
 
   private:
     void updateButtons();
+    /// The findings of the report chosen in reportChooser().
+    void showFindings();
     void showOutcome(const SendOutcome& outcome, const QString& peer);
     [[nodiscard]] QString failureText(const SendOutcome& outcome, const QString& peer) const;
     void finish(const QString& summary);
+    /// Stops the send in progress and drops its outcome.
+    void abandonSend();
 
     const ViewerWidget& viewer_;
     report::ReportSource source_;
     PacsSettings settings_;
-    QImage slice_;
-    QString sliceCaption_;
+    SliceSource slice_;
+    QLabel* data_ = nullptr;
+    QPlainTextEdit* findings_ = nullptr;
+    QComboBox* reportChoice_ = nullptr;
+    QString newFindings_;       ///< the findings of a new report
+    QString exportedFindings_;  ///< the findings in the exported report
     QComboBox* node_ = nullptr;
     QCheckBox* sc_ = nullptr;
     QCheckBox* pdf_ = nullptr;

@@ -112,7 +112,8 @@ void Flow::text(const QRectF& box, const QString& text, const QFont& f, const QC
 
 void Flow::rule(double at, const QColor& colour, double thicknessMm) {
     if (draw_) {
-        painter_.setPen(QPen(colour, mm(thicknessMm)));
+        // Flat ends: the rule ends at the content's edges, not half its width beyond.
+        painter_.setPen(QPen(QBrush(colour), mm(thicknessMm), Qt::SolidLine, Qt::FlatCap));
         painter_.drawLine(QPointF(left(), at), QPointF(left() + width(), at));
     }
 }
@@ -123,12 +124,22 @@ void Flow::fill(const QRectF& box, const QColor& colour) {
     }
 }
 
+namespace {
+QFont headingFont() {
+    return font(11.0, true);
+}
+}  // namespace
+
+double Flow::headingHeight(const QString& title) const {
+    return textHeight(title, headingFont(), width()) + mm(2.8);
+}
+
 void Flow::heading(const QString& title, double keep) {
-    const QFont f = font(11.0, true);
+    const QFont f = headingFont();
     const double h = textHeight(title, f, width());
     y_ += mm(5.0);
     // Kept with what follows when that fits on a page at all.
-    const double head = h + mm(2.8);
+    const double head = headingHeight(title);
     ensure(head + std::min(keep, pageHeight() - head));
     text(QRectF(left(), y_, width(), h), title, f, kAccent, Qt::AlignLeft | Qt::AlignBottom);
     y_ += h + mm(0.8);

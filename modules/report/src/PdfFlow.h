@@ -69,7 +69,10 @@ class Flow {
               int flags);
     void rule(double at, const QColor& colour, double thicknessMm);
     void fill(const QRectF& box, const QColor& colour);
-    /// A section heading kept on one page with `keep` of what follows.
+    /// The height heading() takes on a new page (without the space above it).
+    [[nodiscard]] double headingHeight(const QString& title) const;
+    /// A section heading kept on one page with `keep` of what follows (all
+    /// of it when keep <= pageHeight() - headingHeight(title)).
     void heading(const QString& title, double keep);
 
   private:

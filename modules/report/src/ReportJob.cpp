@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/report/ReportJob.h"
 
+#include <QFile>
 #include <QString>
 #include <algorithm>
 #include <array>
@@ -96,6 +97,20 @@ std::optional<ReportParameter> parameterOf(const scene::Scene& scene,
     return parameter;
 }
 
+/// The bytes of the PDF report at `path`. Throws IoError naming it when it
+/// cannot be read, FormatError when it is no PDF.
+QByteArray readPdf(const fs::path& path) {
+    QFile file(QFile::decodeName(path.c_str()));
+    if (!file.open(QIODevice::ReadOnly)) {
+        throw IoError(path, "cannot read the exported report: " + file.errorString().toStdString());
+    }
+    QByteArray bytes = file.readAll();
+    if (!bytes.startsWith("%PDF-")) {
+        throw FormatError(path, "the exported report is not a PDF file");
+    }
+    return bytes;
+}
+
 /// Runs `write`; an IoError becomes a ReportWriteError (same file, same problem).
 void writing(const std::function<void()>& write) {
     try {
@@ -147,10 +162,12 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
     if (!image && !report) {
         throw InvalidArgumentError("report: no output file given");
     }
+    // A report laid out now, or one exported before and sent as it is.
+    const bool layout = report && options.existingPdf.empty();
     const render::OffscreenOptions& base = options.view;
     double total = (image ? kRenderWeight * (options.transparent ? 1.5 : 1.0) : 0.0) +
-                   (report ? kRenderWeight * (options.secondView ? 2.0 : 1.0) + kPdfWeight : 0.0) +
-                   kWriteWeight;
+                   (layout ? kRenderWeight * (options.secondView ? 2.0 : 1.0) : 0.0) +
+                   (report ? kPdfWeight : 0.0) + kWriteWeight;
     total += options.source.dicomPath.empty() ? 0.0 : kScanWeight;
     Steps steps(progress, total);
 
@@ -176,19 +193,25 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
     }
 
     QByteArray pdf;
-    if (report) {
+    if (report && !layout) {
+        steps.next(kPdfWeight, ReportText::tr("Reading the exported report"));
+        pdf = readPdf(options.existingPdf);
+    }
+    if (layout) {
         // The report's views: 300 dpi across the content width, the view's aspect.
         const int width = reportImageWidth(options.paper);
         const int height = std::max(
             1,
             static_cast<int>(std::lround(width * static_cast<double>(base.height) / base.width)));
         const auto reportView = [&](const std::optional<render::Camera>& camera,
-                                    const std::string& caption, const Progress& rendering) {
+                                    const vss::DepthRange& depthRange, const std::string& caption,
+                                    const Progress& rendering) {
             ViewExportOptions view;
             view.render = base;
             view.render.width = width;
             view.render.height = height;
             view.render.camera = camera;
+            view.render.vss.range = depthRange;
             view.legends = false;  // painted by the report as vectors
             RenderedView rendered = renderView(renderer, scene, view, rendering);
             return std::pair{ReportView{rendered.image, caption, rendered.legends}, rendered.range};
@@ -197,10 +220,16 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         content.title = options.title;
         content.disclaimer = options.disclaimer;
         content.sources = options.source.files;
+        if (!options.source.seriesName.empty()) {
+            // The series by its name, not by the folder (or file) it was read from.
+            content.series = options.source.seriesName;
+            std::erase(content.sources, options.source.dicomPath);
+        }
         content.syntheticDemo = options.source.syntheticDemo;
-        auto [view, range] = reportView(
-            base.camera, options.viewCaption.empty() ? namedViewCaption({}) : options.viewCaption,
-            steps.next(kRenderWeight, ReportText::tr("Rendering the report's view")));
+        auto [view, range] =
+            reportView(base.camera, base.vss.range,
+                       options.viewCaption.empty() ? namedViewCaption({}) : options.viewCaption,
+                       steps.next(kRenderWeight, ReportText::tr("Rendering the report's view")));
         content.view = std::move(view);
         if (options.secondView) {
             const Progress rendering =
@@ -208,6 +237,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             content.secondView =
                 reportView(render::presetCamera(scene, width, height, options.secondView->preset,
                                                 options.secondView->rotation),
+                           options.secondViewDepthRange.value_or(base.vss.range),
                            namedViewCaption(options.secondViewName), rendering)
                     .first;
         }

@@ -82,6 +82,9 @@ struct ReportContent {
     /// The data files: listed by file name only (folders often hold user or
     /// patient names); only their count when the patient is anonymised.
     std::vector<std::filesystem::path> sources;
+    /// The DICOM series the data came from, by name (ReportSource::seriesName);
+    /// listed before the files; empty = none.
+    std::string series;
     /// The data is VesselView's synthetic demo tree, not patient data: the
     /// report says so.
     bool syntheticDemo = false;

@@ -13,6 +13,7 @@
 #include "vv/report/ParameterStats.h"
 #include "vv/report/PdfReport.h"
 #include "vv/scene/Mesh.h"
+#include "vv/vss/DepthNormalization.h"
 
 namespace vv::report {
 
@@ -26,6 +27,11 @@ struct ReportSource {
     std::filesystem::path dicomPath;
     /// The loaded series; empty = the only image series under dicomPath.
     std::string seriesInstanceUid;
+    /// The loaded series as a user knows it (its description, else modality
+    /// and number; never its UID): the report lists it as the data in place
+    /// of dicomPath's name (a study store's folder is a UID). Empty = list
+    /// dicomPath by its name.
+    std::string seriesName;
     /// The data is VesselView's synthetic demo tree (the report says so).
     bool syntheticDemo = false;
 };
@@ -54,6 +60,12 @@ struct ReportJobOptions {
     /// An optional second view (a preset camera on the scene) and its name.
     std::optional<render::NamedView> secondView;
     std::string secondViewName;
+    /// The depth range of the second view; nullopt = view.vss.range. Every
+    /// legend describes its own image: when `view` pins the first view's
+    /// "Visible vessels" range to the screen's (gui::currentViewOptions), the
+    /// second view, another camera, takes the range the user chose (its own
+    /// visible range, or a fixed range, which then applies to both).
+    std::optional<vss::DepthRange> secondViewDepthRange;
     /// An optional slice image (the GUI's slice view with the segmentation
     /// overlay and orientation letters) and its caption: shown in the PDF
     /// under the view(s), scaled to the content width without smoothing
@@ -73,6 +85,10 @@ struct ReportJobOptions {
     /// The line under the title; empty = none.
     std::string disclaimer = defaultDisclaimer();
     std::string findings;  ///< free text, may have several lines
+    /// A PDF report exported before for the same data (File > Export
+    /// Report): the PDF outputs are its bytes as they are (its findings,
+    /// views and paper), instead of a new layout. Empty = lay out a new one.
+    std::filesystem::path existingPdf;
     PaperSize paper = PaperSize::A4;
     /// Thresholds of the area fractions; with neither given and the array
     /// "wss", "below 0.4" (low wall shear stress, Pa).
@@ -107,7 +123,8 @@ class ReportWriteError : public IoError {
 /// a cancelled job throws CancelledError before anything is written, so no
 /// output file is created or changed. Returns the files written.
 /// Throws InvalidArgumentError (size beyond 8K, no outputs, a bad threshold),
-/// RenderError (GL), IoError / FormatError reading the DICOM source,
+/// RenderError (GL), IoError / FormatError reading the DICOM source or
+/// `existingPdf` (naming it; not a PDF),
 /// ReportWriteError when an output cannot be written (outputs before it stay
 /// written), CancelledError.
 std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,

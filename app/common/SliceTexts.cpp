@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "gui/SliceTexts.h"
+#include "common/SliceTexts.h"
 
 #include <QCoreApplication>
 #include <QLocale>
@@ -7,7 +7,7 @@
 
 #include "vv/slices/OrientationLetters.h"
 
-namespace vv::gui {
+namespace vv::app {
 
 namespace {
 
@@ -83,4 +83,4 @@ QString windowLabel(const slices::Window& window, const QString& unit) {
         .arg(withUnit(valueNumber(window.width), unit), withUnit(valueNumber(window.center), unit));
 }
 
-}  // namespace vv::gui
+}  // namespace vv::app

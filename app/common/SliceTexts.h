@@ -12,7 +12,7 @@
 #include "vv/slices/VoxelProbe.h"
 #include "vv/slices/WindowLevel.h"
 
-namespace vv::gui {
+namespace vv::app {
 
 /// "Axial", "Coronal", "Sagittal".
 [[nodiscard]] QString orientationName(slices::SliceOrientation orientation);
@@ -31,4 +31,4 @@ namespace vv::gui {
 /// The window as "W 600  L 300" (+ unit when known).
 [[nodiscard]] QString windowLabel(const slices::Window& window, const QString& unit);
 
-}  // namespace vv::gui
+}  // namespace vv::app
