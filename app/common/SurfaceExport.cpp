@@ -57,6 +57,25 @@ SurfaceProvenance provenanceOf(const segmentation::SceneSourceReport& report,
     return p;
 }
 
+void describeSegmentation(SurfaceProvenance& p, const segmentation::SegmentationRequest& request,
+                          const segmentation::SegmentationOutcome& outcome) {
+    const segmentation::SegmentationOptions& options = request.segmentation;
+    if (request.volume) {
+        p.unit = request.volume->unit();
+        p.boneRemoved = options.removeBone.value_or(request.volume->modality() == "CT" ||
+                                                    request.volume->unit() == "HU");
+    }
+    p.range = outcome.range;
+    p.intensityCorrected = outcome.intensityCorrected;
+    p.gainLowest = outcome.gainLowest;
+    p.gainHighest = outcome.gainHighest;
+    p.seed = options.seed;
+    p.keepComponents = options.keepComponents;
+    p.componentsKept = outcome.componentsKept;
+    p.componentsFound = outcome.componentsFound;
+    p.targetTriangles = request.surface.targetTriangles;
+}
+
 meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& p) {
     meshio::MeshFileMetadata m;
     const auto add = [&m](const char* name, std::string value) {

@@ -17,6 +17,7 @@
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Mesh.h"
 #include "vv/segmentation/SceneSource.h"
+#include "vv/segmentation/SegmentationPipeline.h"
 #include "vv/segmentation/VolumeSegmentation.h"
 
 namespace vv::app {
@@ -47,6 +48,13 @@ struct SurfaceProvenance {
 /// image series or SEG) with the options it was given.
 [[nodiscard]] SurfaceProvenance provenanceOf(const segmentation::SceneSourceReport& report,
                                              const segmentation::SceneSourceOptions& options);
+
+/// Sets the segmentation's part of `provenance` (range, correction, seed,
+/// components, bone removal, triangle target) from a run of `request` that
+/// gave `outcome`; the series stays.
+void describeSegmentation(SurfaceProvenance& provenance,
+                          const segmentation::SegmentationRequest& request,
+                          const segmentation::SegmentationOutcome& outcome);
 
 /// What the exported file says of itself: fields "software" (VesselView and
 /// its version), "coordinates" (DICOM patient LPS, mm; how to get RAS),

@@ -87,10 +87,24 @@ void showExportProblem(QWidget* parent, const QString& title, const QString& mes
     box->open();
 }
 
+namespace {
+
+QWidget* ownerOf(QWidget* dialog) {
+    return dialog->parentWidget() != nullptr ? dialog->parentWidget() : dialog;
+}
+
+}  // namespace
+
 ExportWorker* ExportWorker::launch(QString description, Job job, QWidget* dialog) {
-    QWidget* owner = dialog->parentWidget() != nullptr ? dialog->parentWidget() : dialog;
-    auto* worker = new ExportWorker(std::move(description), std::move(job), owner);
-    if (auto* window = qobject_cast<QMainWindow*>(owner)) {
+    return launched(new ExportWorker(std::move(description), std::move(job), ownerOf(dialog)));
+}
+
+ExportWorker* ExportWorker::launch(QString description, FileJob job, QWidget* dialog) {
+    return launched(new ExportWorker(std::move(description), std::move(job), ownerOf(dialog)));
+}
+
+ExportWorker* ExportWorker::launched(ExportWorker* worker) {
+    if (auto* window = qobject_cast<QMainWindow*>(worker->parent())) {
         watch(worker, window);
     } else {
         connect(worker, &ExportWorker::finished, worker, &QObject::deleteLater);
@@ -164,6 +178,9 @@ void ExportDialog::startAndClose() {
 ExportWorker::ExportWorker(QString description, Job job, QObject* parent)
     : QObject(parent), description_(std::move(description)), job_(std::move(job)) {}
 
+ExportWorker::ExportWorker(QString description, FileJob job, QObject* parent)
+    : QObject(parent), description_(std::move(description)), fileJob_(std::move(job)) {}
+
 ExportWorker::~ExportWorker() {
     thread_.request_stop();
     if (thread_.joinable()) {
@@ -178,22 +195,24 @@ void ExportWorker::start() {
     }
     started_ = true;
     running_ = true;
-    try {
-        surface_ = render::OffscreenRenderer::createSurface();
-    } catch (const vv::Error& e) {
-        const QString message = QString::fromStdString(e.what());
-        QTimer::singleShot(0, this, [this, message] { deliver(Outcome::Failed, message); });
-        return;
+    if (!fileJob_) {
+        try {
+            surface_ = render::OffscreenRenderer::createSurface();
+        } catch (const vv::Error& e) {
+            const QString message = QString::fromStdString(e.what());
+            QTimer::singleShot(0, this, [this, message] { deliver(Outcome::Failed, message); });
+            return;
+        }
     }
     thread_ = std::jthread(
-        [this, surface = surface_.get()](const std::stop_token& stop) { run(*surface, stop); });
+        [this, surface = surface_.get()](const std::stop_token& stop) { run(surface, stop); });
 }
 
 void ExportWorker::cancel() {
     thread_.request_stop();
 }
 
-void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) {
+void ExportWorker::run(QOffscreenSurface* surface, const std::stop_token& stop) {
     // On the worker: touches only job_ (immutable while running) and emits
     // signals, which reach the GUI thread queued.
     // Throttled: a signal per 0.5 % or new stage (the engine may report from several threads).
@@ -217,9 +236,14 @@ void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) 
     Outcome outcome = Outcome::Failed;
     QString message;
     try {
-        render::OffscreenRenderer renderer(surface);
-        progress.throwIfCancelled();
-        message = job_(renderer, progress);
+        if (fileJob_) {
+            progress.throwIfCancelled();
+            message = fileJob_(progress);
+        } else {
+            render::OffscreenRenderer renderer(*surface);
+            progress.throwIfCancelled();
+            message = job_(renderer, progress);
+        }
         outcome = Outcome::Succeeded;
     } catch (const CancelledError&) {
         outcome = Outcome::Cancelled;

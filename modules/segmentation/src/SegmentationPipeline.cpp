@@ -71,7 +71,8 @@ int previewStep(glm::ivec3 dims, std::size_t voxelBudget) noexcept {
 }
 
 std::optional<glm::ivec3> nearestVoxelInRange(const scene::Volume& volume, const glm::dvec3& ijk,
-                                              float lower, float upper, int radius) {
+                                              float lower, float upper, int radius,
+                                              const GainField* gain) {
     if (volume.empty() || !std::isfinite(ijk.x) || !std::isfinite(ijk.y) || !std::isfinite(ijk.z)) {
         return std::nullopt;
     }
@@ -86,7 +87,11 @@ std::optional<glm::ivec3> nearestVoxelInRange(const scene::Volume& volume, const
     for (int k = from.z; k <= to.z; ++k) {
         for (int j = from.y; j <= to.y; ++j) {
             for (int i = from.x; i <= to.x; ++i) {
-                const float v = volume.value(i, j, k);
+                const float v =
+                    gain != nullptr
+                        ? static_cast<float>(volume.value(i, j, k) /
+                                             gain->at(volume.worldPosition(glm::dvec3(i, j, k))))
+                        : volume.value(i, j, k);
                 if (v < lower || v > upper) {
                     continue;
                 }

@@ -37,10 +37,13 @@ inline constexpr std::size_t kPreviewVoxels = 2000000;
 
 /// The voxel of `volume` with a value in [lower, upper] nearest to the
 /// continuous voxel index `ijk`, among the voxels at most `radius` away along
-/// each axis; nullopt when there is none (or `ijk` is not finite).
+/// each axis; nullopt when there is none (or `ijk` is not finite). With
+/// `gain`, the values are the corrected ones (value / gain, as the intensity
+/// correction thresholds them).
 [[nodiscard]] std::optional<glm::ivec3> nearestVoxelInRange(const scene::Volume& volume,
                                                             const glm::dvec3& ijk, float lower,
-                                                            float upper, int radius);
+                                                            float upper, int radius,
+                                                            const GainField* gain = nullptr);
 
 /// What to segment and how.
 struct SegmentationRequest {
