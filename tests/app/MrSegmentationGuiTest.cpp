@@ -160,6 +160,11 @@ TEST_F(MrSegmentationGuiTest, FadingMrIsCorrectedAndTheCutOffIsShownWithoutTheCo
     EXPECT_NE(labels.labels[labels.index(voxel.x, voxel.y, voxel.z)], 0);
     ASSERT_TRUE(waitUntil([&] { return panel()->gainField() != nullptr; }, 60000));
     const double correctedLower = panel()->lowerBox()->value();
+    // The default that arrived is the range the scene was loaded with (up to
+    // the boxes' rounding): no preview replaces the full-resolution scene.
+    EXPECT_FALSE(panel()->isPreviewing());
+    EXPECT_EQ(panel()->previewsShown(), 0);
+    EXPECT_TRUE(panel()->showsFullResolution());
 
     // Off: the range follows the default of the plain values, and the preview
     // loses the aorta's top: the warning says so.

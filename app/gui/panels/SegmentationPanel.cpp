@@ -394,7 +394,11 @@ void SegmentationPanel::setRange(const segmentation::ThresholdRange& range, bool
     const double lower = static_cast<double>(range.lower);
     const double upper = static_cast<double>(range.upper);
     rangeIsDefault_ = isDefault;
-    if (lower_->value() == lower && upper_->value() == upper) {
+    // The boxes round to their decimals: a range they already show is no change.
+    const auto shows = [](const QDoubleSpinBox* box, double value) {
+        return box->textFromValue(value) == box->textFromValue(box->value());
+    };
+    if (shows(lower_, lower) && shows(upper_, upper)) {
         return;
     }
     settingRange_ = true;
