@@ -374,6 +374,18 @@
         <source>The graphics system failed.</source>
         <translation>Das Grafiksystem hat versagt.</translation>
     </message>
+    <message>
+        <source>Estimating the signal fall-off</source>
+        <translation>Signalabfall wird geschätzt</translation>
+    </message>
+    <message>
+        <source>Correcting the signal fall-off</source>
+        <translation>Signalabfall wird korrigiert</translation>
+    </message>
+    <message>
+        <source>Checking the segmentation&apos;s ends</source>
+        <translation>Enden der Segmentierung werden geprüft</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ExportDialog</name>

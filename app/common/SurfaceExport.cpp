@@ -96,7 +96,7 @@ meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& p) {
             names += (i > 0 ? "; " : "") + std::to_string(i + 1) + "=" + p.segmentNames[i];
         }
         add("segments", "from a DICOM Segmentation object: " + names);
-        add("label", "point array 'label': the segment (as 'segments')");
+        add("label_meaning", "point array 'label': the segment (as 'segments')");
     } else {
         add("threshold", withUnit(p));
         add("threshold_rule", p.range.rule);
@@ -117,7 +117,7 @@ meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& p) {
                 (p.targetTriangles == 0
                      ? std::string("no decimation")
                      : "decimated to at most " + std::to_string(p.targetTriangles) + " triangles"));
-        add("label", "point array 'label': the kept component (1 = largest)");
+        add("label_meaning", "point array 'label': the kept component (1 = largest)");
     }
     std::string summary = "VesselView " + std::string(kVersion) + "; LPS mm; " +
                           (p.modality.empty() ? std::string("DICOM") : p.modality) + "; ";

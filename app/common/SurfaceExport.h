@@ -62,7 +62,7 @@ void describeSegmentation(SurfaceProvenance& provenance,
 /// "series_description", "series_number", "modality"), then either the
 /// segments of a SEG ("segments") or the segmentation's settings
 /// ("threshold", "threshold_rule", "intensity_correction", "components",
-/// "bone_removal", "surface"), and "label" (what the label array holds);
+/// "bone_removal", "surface"), and "label_meaning" (what the point array "label" holds);
 /// the summary (the STL header) says software, frame, modality, threshold,
 /// correction and description in that order.
 [[nodiscard]] meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& provenance);
