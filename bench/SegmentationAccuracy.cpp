@@ -6,6 +6,7 @@
 #include <vtkStaticCellLocator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <vector>
@@ -94,12 +95,12 @@ SegmentationAccuracy measureSegmentation(const demo::VesselPhantom& phantom,
                         if (!inside(volume, p) || phantom.signedDistance(p) < -0.05) {
                             continue;  // outside the grid, or inside another vessel
                         }
-                        double x[3] = {p.x, p.y, p.z};
-                        double closest[3];
+                        std::array<double, 3> x = {p.x, p.y, p.z};
+                        std::array<double, 3> closest{};
                         vtkIdType cell = 0;
                         int sub = 0;
                         double d2 = 0.0;
-                        locator->FindClosestPoint(x, closest, cell, sub, d2);
+                        locator->FindClosestPoint(x.data(), closest.data(), cell, sub, d2);
                         distances.push_back(std::sqrt(d2));
                     }
                 }

@@ -3,6 +3,8 @@
 // segments a DICOM series (or reads a DICOM SEG) and writes the vessel surface
 // in patient LPS millimetres with its label array and provenance
 // (common/SurfaceExport.h), for 3-D printing, CFD and other tools.
+#include <algorithm>
+#include <cctype>
 #include <filesystem>
 #include <ostream>
 #include <string>
@@ -53,12 +55,8 @@ bool writable(const std::filesystem::path& file) {
     for (char& c : ext) {
         c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     }
-    for (const std::string& known : meshio::writableMeshExtensions()) {
-        if (ext == known) {
-            return true;
-        }
-    }
-    return false;
+    return std::ranges::any_of(meshio::writableMeshExtensions(),
+                               [&ext](const std::string& known) { return ext == known; });
 }
 
 }  // namespace

@@ -28,12 +28,14 @@ const char* const kFormatKey = "surface/format";
 }  // namespace
 
 ExportSurfaceDialog::ExportSurfaceDialog(SurfaceExportSource source, QWidget* parent)
-    : ExportDialog(parent), source_(std::move(source)) {
+    : ExportDialog(parent),
+      source_(std::move(source)),
+      format_(new QComboBox(this)),
+      what_(new QLabel(this)) {
     setObjectName(QStringLiteral("exportSurfaceDialog"));
     setWindowTitle(tr("Export Surface"));
     auto* form = new QFormLayout(this);
 
-    format_ = new QComboBox(this);
     format_->addItem(tr("STL, binary (3-D printing)"), QStringLiteral(".stl"));
     format_->addItem(tr("VTK polydata (labels and provenance)"), QStringLiteral(".vtp"));
     format_->addItem(tr("PLY, binary"), QStringLiteral(".ply"));
@@ -48,7 +50,6 @@ ExportSurfaceDialog::ExportSurfaceDialog(SurfaceExportSource source, QWidget* pa
                 browseRow(file_, tr("Export surface"), tr("Surfaces (*.stl *.vtp *.ply)"), this));
     form->addRow(tr("F&ormat:"), format_);
 
-    what_ = new QLabel(this);
     what_->setObjectName(QStringLiteral("surfaceSource"));
     what_->setWordWrap(true);
     what_->setText(source_.request

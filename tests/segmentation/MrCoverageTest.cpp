@@ -143,6 +143,12 @@ TEST(MrCoverage, GainFieldFollowsTheCoilSensitivity) {
     EXPECT_LT(*hi / *lo, 1.25) << *lo << " .. " << *hi;
     EXPECT_GE(gain.lowest(), 0.1);
     EXPECT_LE(gain.lowest(), gain.highest());
+    // The highest degree (84 terms) evaluates as well.
+    GainFieldOptions six;
+    six.degree = 6;
+    const GainField fine = estimateGainField(p.volume, six);
+    const glm::dvec3 middle = p.vessels.front().centerline[p.vessels.front().centerline.size() / 2];
+    EXPECT_NEAR(fine.at(middle) / gain.at(middle), 1.0, 0.2);
 
     // Without a gain the field is nearly flat where the body is.
     const GainField flat = estimateGainField(phantom(PhantomModality::MR, 1.0).volume);

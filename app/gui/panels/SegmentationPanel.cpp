@@ -391,8 +391,8 @@ void SegmentationPanel::startDefaultRange() {
 }
 
 void SegmentationPanel::setRange(const segmentation::ThresholdRange& range, bool isDefault) {
-    const double lower = static_cast<double>(range.lower);
-    const double upper = static_cast<double>(range.upper);
+    const auto lower = static_cast<double>(range.lower);
+    const auto upper = static_cast<double>(range.upper);
     rangeIsDefault_ = isDefault;
     // The boxes round to their decimals: a range they already show is no change.
     const auto shows = [](const QDoubleSpinBox* box, double value) {
@@ -416,7 +416,7 @@ bool SegmentationPanel::correcting() const {
 }
 
 double SegmentationPanel::thresholdedValue(const glm::ivec3& voxel) const {
-    const double value = static_cast<double>(volume_->value(voxel.x, voxel.y, voxel.z));
+    const auto value = static_cast<double>(volume_->value(voxel.x, voxel.y, voxel.z));
     return correcting() && gain_ ? value / gain_->at(volume_->worldPosition(glm::dvec3(voxel)))
                                  : value;
 }

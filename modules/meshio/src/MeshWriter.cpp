@@ -14,6 +14,7 @@
 #include <cctype>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
@@ -177,7 +178,10 @@ void writeMeshFile(const scene::Mesh& mesh, const std::filesystem::path& file,
         writer->SetDataByteOrderToLittleEndian();
         writer->SetColorModeToOff();
         for (const auto& [name, value] : metadata.fields) {
-            writer->AddComment(oneLine(name + ": " + value));
+            std::string comment = name;
+            comment += ": ";
+            comment += value;
+            writer->AddComment(oneLine(std::move(comment)));
         }
         writeThrough(writer.Get(), file, "PLY", ".ply");
     } else {

@@ -118,7 +118,7 @@ class LocalLevel {
 
   private:
     [[nodiscard]] glm::ivec3 begin(const glm::ivec3& block) const {
-        return glm::ivec3(glm::dvec3(block) * glm::dvec3(dims_) / glm::dvec3(blocks_));
+        return {glm::dvec3(block) * glm::dvec3(dims_) / glm::dvec3(blocks_)};
     }
     [[nodiscard]] std::size_t slot(const glm::ivec3& b) const {
         return (static_cast<std::size_t>(b.z) * static_cast<std::size_t>(blocks_.y) +
@@ -178,7 +178,7 @@ std::vector<CutOffVessel> findCutOffVessels(const scene::Volume& volume, const s
         throw InvalidArgumentError("the label map is not on the volume's grid");
     }
     progress.report(0.0, kStage);
-    const std::size_t segmented = static_cast<std::size_t>(
+    const auto segmented = static_cast<std::size_t>(
         std::count_if(map.labels.begin(), map.labels.end(), [](std::uint8_t l) { return l != 0; }));
     if (segmented == 0) {
         return {};
@@ -227,7 +227,7 @@ std::vector<CutOffVessel> findCutOffVessels(const scene::Volume& volume, const s
     };
 
     // Grow from the segmentation's surface through voxels that continue it.
-    const std::size_t sx = static_cast<std::size_t>(dims.x);
+    const auto sx = static_cast<std::size_t>(dims.x);
     const std::size_t sxy = sx * static_cast<std::size_t>(dims.y);
     const auto position = [&](std::size_t n) {
         return glm::ivec3(static_cast<int>(n % sx), static_cast<int>((n % sxy) / sx),

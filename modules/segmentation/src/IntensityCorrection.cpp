@@ -47,18 +47,22 @@ void legendre(double x, int degree, double* p) {
 }
 
 constexpr int kMaxDegree = 6;
+/// Terms of total degree <= kMaxDegree in three variables: (6 + 3 choose 3).
+constexpr std::size_t kMaxTerms = 84;
 
 /// The basis values of `terms` at unit coordinates `u`.
 void basis(const glm::dvec3& u, const std::vector<std::array<int, 3>>& terms, int degree,
            double* out) {
-    double px[kMaxDegree + 1];
-    double py[kMaxDegree + 1];
-    double pz[kMaxDegree + 1];
-    legendre(u.x, degree, px);
-    legendre(u.y, degree, py);
-    legendre(u.z, degree, pz);
+    std::array<double, kMaxDegree + 1> px{};
+    std::array<double, kMaxDegree + 1> py{};
+    std::array<double, kMaxDegree + 1> pz{};
+    legendre(u.x, degree, px.data());
+    legendre(u.y, degree, py.data());
+    legendre(u.z, degree, pz.data());
     for (std::size_t t = 0; t < terms.size(); ++t) {
-        out[t] = px[terms[t][0]] * py[terms[t][1]] * pz[terms[t][2]];
+        out[t] = px.at(static_cast<std::size_t>(terms[t][0])) *
+                 py.at(static_cast<std::size_t>(terms[t][1])) *
+                 pz.at(static_cast<std::size_t>(terms[t][2]));
     }
 }
 
@@ -84,17 +88,17 @@ double quantile(std::vector<double> values, double q) {
 /// Solves the symmetric system `m` x = `rhs` (VTK's LU with partial
 /// pivoting); a tiny ridge keeps an unconstrained term at zero.
 std::vector<double> solve(std::vector<double> m, std::vector<double> rhs) {
-    const auto n = static_cast<int>(rhs.size());
+    const std::size_t n = rhs.size();
     double trace = 0.0;
-    for (int i = 0; i < n; ++i) {
-        trace += m[static_cast<std::size_t>(i * n + i)];
+    for (std::size_t i = 0; i < n; ++i) {
+        trace += m[i * n + i];
     }
-    std::vector<double*> rows(static_cast<std::size_t>(n));
-    for (int i = 0; i < n; ++i) {
-        m[static_cast<std::size_t>(i * n + i)] += 1e-9 * trace / n + 1e-300;
-        rows[static_cast<std::size_t>(i)] = m.data() + static_cast<std::ptrdiff_t>(i) * n;
+    std::vector<double*> rows(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        m[i * n + i] += 1e-9 * trace / static_cast<double>(n) + 1e-300;
+        rows[i] = &m[i * n];
     }
-    if (vtkMath::SolveLinearSystem(rows.data(), rhs.data(), n) == 0) {
+    if (vtkMath::SolveLinearSystem(rows.data(), rhs.data(), static_cast<int>(n)) == 0) {
         throw FormatError("the signal fall-off fit is singular");
     }
     return rhs;
@@ -116,8 +120,8 @@ double GainField::at(const glm::dvec3& world) const noexcept {
         return 1.0;
     }
     const glm::dvec3 u(worldToUnit_ * glm::dvec4(world, 1.0));
-    double values[64];
-    basis(u, terms_, maxDegreeOf(terms_), values);
+    std::array<double, kMaxTerms> values{};
+    basis(u, terms_, maxDegreeOf(terms_), values.data());
     double log = -offset_;
     for (std::size_t t = 0; t < terms_.size(); ++t) {
         log += coefficients_[t] * values[t];
