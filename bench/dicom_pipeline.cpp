@@ -21,6 +21,7 @@
 #include <string>
 #include <vector>
 
+#include "BenchArgs.h"
 #include "vv/core/Error.h"
 #include "vv/core/ProcessMemory.h"
 #include "vv/demo/DemoCtSeries.h"
@@ -57,35 +58,22 @@ StepFigures measure(const std::string& name, const std::function<std::string()>&
     return f;
 }
 
-glm::ivec3 parseDims(const std::string& text) {
-    glm::ivec3 d{0};
-    if (std::sscanf(text.c_str(), "%d,%d,%d", &d.x, &d.y, &d.z) != 3 || d.x < 8 || d.y < 8 ||
-        d.z < 8) {
-        throw std::invalid_argument("--dims wants COLUMNS,ROWS,SLICES, each >= 8: " + text);
-    }
-    return d;
-}
-
 int run(int argc, char** argv) {
     glm::ivec3 dims{512, 512, 600};
     fs::path dir;
     std::size_t triangles = 300000;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        if (i + 1 >= argc) {
-            throw std::invalid_argument("missing value after " + a);
-        }
-        const std::string value = argv[++i];
+    vv::bench::forEachOption(argc, argv, [&](const std::string& a, const std::string& value) {
         if (a == "--dims") {
-            dims = parseDims(value);
+            dims = vv::bench::parseDims(value);
         } else if (a == "--dir") {
             dir = value;
         } else if (a == "--triangles") {
             triangles = std::stoul(value);
         } else {
-            throw std::invalid_argument("unknown option " + a);
+            return false;
         }
-    }
+        return true;
+    });
     if (dir.empty()) {
         dir = fs::temp_directory_path() / ("vv-dicom-bench-" + std::to_string(dims.x) + "x" +
                                            std::to_string(dims.y) + "x" + std::to_string(dims.z));

@@ -435,6 +435,18 @@
         <source>The graphics system failed (%1).</source>
         <translation>Das Grafiksystem ist ausgefallen (%1).</translation>
     </message>
+    <message>
+        <source>Estimating the signal fall-off</source>
+        <translation>Signalabfall wird geschätzt</translation>
+    </message>
+    <message>
+        <source>Correcting the signal fall-off</source>
+        <translation>Signalabfall wird korrigiert</translation>
+    </message>
+    <message>
+        <source>Checking the segmentation&apos;s ends</source>
+        <translation>Enden der Segmentierung werden geprüft</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ExportDialog</name>
@@ -460,10 +472,6 @@ Ersetzen?</translation>
     <message>
         <source>Export Image</source>
         <translation>Bild exportieren</translation>
-    </message>
-    <message>
-        <source>Browse…</source>
-        <translation>Durchsuchen…</translation>
     </message>
     <message>
         <source>Export image</source>
@@ -576,6 +584,85 @@ Ersetzen?</translation>
     <message>
         <source>The image (%1) is narrower than the view (%2): it leaves out part of the view at the left and right.</source>
         <translation>Das Bild (%1) ist schmaler als die Ansicht (%2): Links und rechts fehlt ein Teil der Ansicht.</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::ExportSurfaceDialog</name>
+    <message>
+        <source>Export Surface</source>
+        <translation>Oberfläche exportieren</translation>
+    </message>
+    <message>
+        <source>STL, binary (3-D printing)</source>
+        <translation>STL, binär (3D-Druck)</translation>
+    </message>
+    <message>
+        <source>VTK polydata (labels and provenance)</source>
+        <translation>VTK-Polydaten (Labels und Herkunft)</translation>
+    </message>
+    <message>
+        <source>PLY, binary</source>
+        <translation>PLY, binär</translation>
+    </message>
+    <message>
+        <source>Export surface</source>
+        <translation>Oberfläche exportieren</translation>
+    </message>
+    <message>
+        <source>Surfaces (*.stl *.vtp *.ply)</source>
+        <translation>Oberflächen (*.stl *.vtp *.ply)</translation>
+    </message>
+    <message>
+        <source>&amp;File:</source>
+        <translation>&amp;Datei:</translation>
+    </message>
+    <message>
+        <source>F&amp;ormat:</source>
+        <translation>F&amp;ormat:</translation>
+    </message>
+    <message>
+        <source>The segmentation at full resolution with the Segmentation panel&apos;s settings (the view shows a preview).</source>
+        <translation>Die Segmentierung in voller Auflösung mit den Einstellungen des Bereichs Segmentierung (die Ansicht zeigt eine Vorschau).</translation>
+    </message>
+    <message>
+        <source>The surface on screen: %1 triangles.</source>
+        <translation>Die angezeigte Oberfläche: %1 Dreiecke.</translation>
+    </message>
+    <message>
+        <source>Coordinates: DICOM patient LPS, millimetres, as the scene (x to the patient&apos;s left, y posterior, z to the head). Tools that expect RAS: negate x and y. The file names the series and the settings that made it.</source>
+        <translation>Koordinaten: DICOM-Patientensystem LPS in Millimetern wie die Szene (x zur linken Seite des Patienten, y nach posterior, z zum Kopf). Für Programme, die RAS erwarten: x und y negieren. Die Datei nennt die Serie und die Einstellungen, mit denen sie entstand.</translation>
+    </message>
+    <message>
+        <source>&amp;Export</source>
+        <translation>&amp;Exportieren</translation>
+    </message>
+    <message>
+        <source>Choose a file name for the surface.</source>
+        <translation>Wählen Sie einen Dateinamen für die Oberfläche.</translation>
+    </message>
+    <message>
+        <source>%1 is a folder; choose a file name for the surface.</source>
+        <translation>%1 ist ein Ordner; wählen Sie einen Dateinamen für die Oberfläche.</translation>
+    </message>
+    <message>
+        <source>%1: surfaces are written as .stl, .vtp or .ply files.</source>
+        <translation>%1: Oberflächen werden als .stl-, .vtp- oder .ply-Dateien geschrieben.</translation>
+    </message>
+    <message>
+        <source>There is no segmented surface to export.</source>
+        <translation>Es gibt keine segmentierte Oberfläche zum Exportieren.</translation>
+    </message>
+    <message>
+        <source>Exporting %1</source>
+        <translation>%1 wird exportiert</translation>
+    </message>
+    <message>
+        <source>Writing the surface</source>
+        <translation>Die Oberfläche wird geschrieben</translation>
+    </message>
+    <message>
+        <source>Exported %1 (%2 triangles, patient LPS mm)</source>
+        <translation>%1 exportiert (%2 Dreiecke, Patienten-LPS in mm)</translation>
     </message>
 </context>
 <context>
@@ -1116,6 +1203,18 @@ Ersetzen?</translation>
     <message>
         <source>VSS: within %1/255, %2 ms</source>
         <translation>VSS: Fehler ≤ %1/255, %2 ms</translation>
+    </message>
+    <message>
+        <source>The segmented vessel surface as STL, VTP or PLY, in patient millimetres</source>
+        <translation>Die segmentierte Gefäßoberfläche als STL, VTP oder PLY, in Patientenkoordinaten (mm)</translation>
+    </message>
+    <message>
+        <source>Only for vessels segmented from a DICOM series: open one with File &gt; Open Folder…</source>
+        <translation>Nur für aus einer DICOM-Serie segmentierte Gefäße: Öffnen Sie eine mit Datei &gt; Ordner öffnen…</translation>
+    </message>
+    <message>
+        <source>Export S&amp;urface…</source>
+        <translation>Oberfläche e&amp;xportieren…</translation>
     </message>
 </context>
 <context>
@@ -1675,11 +1774,14 @@ Ersetzen?</translation>
     </message>
 </context>
 <context>
-    <name>vv::gui::ReportDialog</name>
+    <name>vv::gui::PathField</name>
     <message>
         <source>Browse…</source>
         <translation>Durchsuchen…</translation>
     </message>
+</context>
+<context>
+    <name>vv::gui::ReportDialog</name>
     <message>
         <source>Export Report</source>
         <translation>Bericht exportieren</translation>
@@ -3215,6 +3317,61 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>The volume cannot be ray cast here: %1</source>
         <translation>Das Volumen kann hier nicht per Raycasting dargestellt werden: %1</translation>
+    </message>
+    <message>
+        <source>Correct the signal fall-off (MR)</source>
+        <translation>Signalabfall korrigieren (MR)</translation>
+    </message>
+    <message>
+        <source>Divide out the slow fall-off of the MR signal away from the receive coils before thresholding, so that a vessel is not cut off where the signal fades. The thresholds then apply to the corrected values.</source>
+        <translation>Den langsamen Abfall des MR-Signals fern der Empfangsspulen vor der Schwellenwertbildung herausrechnen, damit ein Gefäß nicht dort abbricht, wo das Signal schwächer wird. Die Schwellenwerte gelten dann für die korrigierten Werte.</translation>
+    </message>
+    <message>
+        <source>CT values (HU) have no receive-coil fall-off to correct</source>
+        <translation>CT-Werte (HU) haben keinen Abfall durch Empfangsspulen, der zu korrigieren wäre</translation>
+    </message>
+    <message>
+        <source>towards the head</source>
+        <translation>kopfwärts</translation>
+    </message>
+    <message>
+        <source>towards the feet</source>
+        <translation>fußwärts</translation>
+    </message>
+    <message>
+        <source>to the patient&apos;s left</source>
+        <translation>zur linken Seite des Patienten</translation>
+    </message>
+    <message>
+        <source>to the patient&apos;s right</source>
+        <translation>zur rechten Seite des Patienten</translation>
+    </message>
+    <message>
+        <source>anteriorly</source>
+        <translation>nach anterior</translation>
+    </message>
+    <message>
+        <source>posteriorly</source>
+        <translation>nach posterior</translation>
+    </message>
+    <message>
+        <source>The vessel may be cut off: a bright tube continues %1 mm %2 past the segmentation&apos;s end at (%3, %4, %5) mm, where the signal may fade.</source>
+        <translation>Das Gefäß ist möglicherweise abgeschnitten: Eine helle Röhre setzt sich %1 mm %2 über das Ende der Segmentierung bei (%3, %4, %5) mm fort, wo das Signal schwächer werden kann.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more such end(s).</source>
+        <translation>
+            <numerusform>%n weiteres solches Ende.</numerusform>
+            <numerusform>%n weitere solche Enden.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Turn on “Correct the signal fall-off (MR)” or lower the threshold.</source>
+        <translation>Schalten Sie „Signalabfall korrigieren (MR)“ ein oder senken Sie den Schwellenwert.</translation>
+    </message>
+    <message>
+        <source>Lower the threshold, or pick a seed in the missing part.</source>
+        <translation>Senken Sie den Schwellenwert oder wählen Sie einen Saatpunkt im fehlenden Teil.</translation>
     </message>
 </context>
 <context>

@@ -31,4 +31,14 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>vv::gui::panels::SegmentationPanel</name>
+    <message numerus="yes">
+        <source>%n more such end(s).</source>
+        <translation>
+            <numerusform>%n more such end.</numerusform>
+            <numerusform>%n more such ends.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

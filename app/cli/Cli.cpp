@@ -34,7 +34,9 @@ constexpr const char* kUsageText =
     "         [--orientation-marker on|off] [--scale-bar on|off]\n"
     "         DICOM input (a folder, DICOMDIR, image or SEG file): [--series UID]\n"
     "         [--threshold LO:HI] [--components N] [--seed I,J,K] [--bone-removal on|off]\n"
-    "         [--triangles N]   segments the vessels (CT default 200:700 HU)\n"
+    "         [--intensity-correction on|off] [--triangles N]\n"
+    "                      segments the vessels (CT default 200:700 HU; MR from the\n"
+    "                      histogram after dividing out the signal fall-off)\n"
     "         [--raycast [--iso HU]]   ray casts the volume instead (no segmentation)\n"
     "                                       render a mesh file or DICOM vessels offscreen to PNG, "
     "with the\n"
@@ -63,6 +65,12 @@ constexpr const char* kUsageText =
     "                                       camera and display settings, as File > Export\n"
     "                                       Image renders them; options after --session\n"
     "                                       override it\n"
+    "  segment DICOM -o SURFACE.stl|.vtp|.ply [DICOM options as for render]\n"
+    "                                       the segmented vessel surface in patient LPS\n"
+    "                                       mm with its label array (.vtp) and the series\n"
+    "                                       and settings that made it (VTP field data, STL\n"
+    "                                       header, PLY comments); warns when a bright\n"
+    "                                       tube continues past the segmentation\n"
     "  report FILE -o REPORT.pdf [render options as for render] [--png IMAGE.png]\n"
     "         [--transparent] [--dicom-sc SC.dcm] [--dicom-pdf DOC.dcm] [--paper a4|letter]\n"
     "         [--title TEXT] [--note TEXT] [--second-view VIEW] [--below V] [--above V]\n"
@@ -232,6 +240,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "artefacts") {
             return artefactsCommand(rest, out, err);
+        }
+        if (command == "segment") {
+            return segmentCommand(rest, out, err);
         }
         if (command == "pacs") {
             return pacsCommand(rest, out, err);

@@ -40,6 +40,7 @@
 #include "cli/JsonWriter.h"
 #include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
+#include "cli/SegmentSummary.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
@@ -277,18 +278,8 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         summary << "ray cast series " << source.seriesInstanceUid << " (" << source.volumeDims.x
                 << "x" << source.volumeDims.y << "x" << source.volumeDims.z << ") at iso " << iso
                 << (volume->unit().empty() ? "" : " " + volume->unit()) << "\n";
-    } else if (source.fromVolume) {
-        summary << "segmented series " << source.seriesInstanceUid << " (" << source.volumeDims.x
-                << "x" << source.volumeDims.y << "x" << source.volumeDims.z
-                << "): " << source.range.rule << ", kept " << source.componentsKept << " of "
-                << source.componentsFound << " components, " << source.boneComponents
-                << " bone-like removed, " << scene.meshes.front().triangleCount() << " triangles\n";
-    } else if (source.fromSegmentationObject) {
-        summary << "read " << scene.meshes.size() << " segment(s) from the DICOM SEG:";
-        for (const scene::Mesh& mesh : scene.meshes) {
-            summary << " '" << mesh.name << "'";
-        }
-        summary << "\n";
+    } else {
+        printSegmentationSummary(summary, err, source, scene);
     }
     if (parsed.session) {
         summary << "session " << parsed.sessionFile.string() << ": " << parsed.session->files.size()

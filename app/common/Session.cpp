@@ -52,6 +52,9 @@ QJsonObject dicomToJson(const segmentation::SceneSourceOptions& d, const QString
     if (seg.removeBone) {
         o.insert(QStringLiteral("boneRemoval"), *seg.removeBone);
     }
+    if (seg.correctIntensity) {
+        o.insert(QStringLiteral("intensityCorrection"), *seg.correctIntensity);
+    }
     if (!title.isEmpty()) {
         o.insert(QStringLiteral("title"), title);
     }
@@ -112,6 +115,9 @@ segmentation::SceneSourceOptions readDicom(const SessionReader& r, const QJsonVa
     }
     if (o.contains(QLatin1String("boneRemoval"))) {
         d.segmentation.removeBone = r.boolean(o, w, "boneRemoval");
+    }
+    if (o.contains(QLatin1String("intensityCorrection"))) {
+        d.segmentation.correctIntensity = r.boolean(o, w, "intensityCorrection");
     }
     return d;
 }

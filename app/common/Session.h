@@ -102,8 +102,8 @@ struct Session : DisplaySettings {
     /// DICOM data (files holds its folder, DICOMDIR or file): the series and
     /// how it was segmented into surfaces, so that opening the session loads
     /// the same vessels without asking. Only seriesInstanceUid, segmentation
-    /// (range, keepComponents, seed, removeBone) and surface.targetTriangles
-    /// are stored. Absent for meshes (and in older sessions).
+    /// (range, keepComponents, seed, removeBone, correctIntensity) and
+    /// surface.targetTriangles are stored. Absent for meshes (and in older sessions).
     std::optional<segmentation::SceneSourceOptions> dicom;
     /// How the window named the series ("dicom.title": its description, or
     /// "CT series 1"; gui::seriesName()), so that a reopened session names

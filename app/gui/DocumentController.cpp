@@ -407,6 +407,10 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
         shownFiles_ << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
     }
     setVolume(nullptr, {}, {});
+    if (!seriesUid_.empty()) {
+        loadedReport_ = source;
+        loadedWith_ = task->dicomOptions();
+    }
     show(std::move(scene), title, std::exchange(pendingSession_, std::nullopt));
     // A DICOM image series: keep its volume for the Segmentation panel.
     if (source.volume) {
@@ -447,6 +451,8 @@ void DocumentController::setVolume(std::shared_ptr<const scene::Volume> volume,
     volume_ = std::move(volume);
     if (!volume_) {
         labelMap_.reset();
+        loadedReport_ = {};
+        loadedWith_ = {};
     }
     emit volumeChanged(volume_, loadedWith, range);
 }

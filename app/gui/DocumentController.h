@@ -150,6 +150,15 @@ class DocumentController : public QObject {
     [[nodiscard]] const std::shared_ptr<const scene::LabelMap>& labelMap() const noexcept {
         return labelMap_;
     }
+    /// What loading the shown DICOM series reported (its identity, the
+    /// segmentation's range, correction, components and cut-off vessels)
+    /// and the options it was loaded with; empty for meshes.
+    [[nodiscard]] const segmentation::SceneSourceReport& loadedReport() const noexcept {
+        return loadedReport_;
+    }
+    [[nodiscard]] const segmentation::SceneSourceOptions& loadedWith() const noexcept {
+        return loadedWith_;
+    }
     /// The volume the shown scene was segmented from (a DICOM image series),
     /// kept for re-segmenting without reading the files; null otherwise.
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
@@ -261,6 +270,8 @@ class DocumentController : public QObject {
     QString seriesTitle_;  ///< seriesTitle()
     std::shared_ptr<const scene::Volume> volume_;
     std::shared_ptr<const scene::LabelMap> labelMap_;
+    segmentation::SceneSourceReport loadedReport_;
+    segmentation::SceneSourceOptions loadedWith_;
     QString lastError_;
 };
 

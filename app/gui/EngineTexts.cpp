@@ -40,6 +40,9 @@ constexpr std::array kStages = {
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "simplifying"),
     // segmentation
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Segmenting"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Estimating the signal fall-off"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Correcting the signal fall-off"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Checking the segmentation's ends"),
     // report (exports)
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "depth"),
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "solving the VSS"),

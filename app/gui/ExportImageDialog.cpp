@@ -6,7 +6,6 @@
 #include <QDialogButtonBox>
 #include <QDir>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QHBoxLayout>
@@ -71,21 +70,8 @@ ExportImageDialog::ExportImageDialog(const ViewerWidget& viewer, QWidget* parent
     auto* form = new QFormLayout(this);
 
     file_ = new QLineEdit(unusedFileName(lastExportFolder(), QStringLiteral("vessels.png")), this);
-    auto* browse = new QPushButton(tr("Browse…"), this);
-    connect(browse, &QPushButton::clicked, this, [this] {
-        // Export asks before it replaces a file.
-        const QString chosen = QFileDialog::getSaveFileName(this, tr("Export image"), file_->text(),
-                                                            tr("PNG images (*.png)"), nullptr,
-                                                            QFileDialog::DontConfirmOverwrite);
-        if (!chosen.isEmpty()) {
-            file_->setText(chosen);
-        }
-    });
-    auto* fileRow = new QHBoxLayout;
-    fileRow->addWidget(file_, 1);
-    fileRow->addWidget(browse);
-    addBuddyRow(form, tr("&File:"), file_, fileRow);
-    showPath(file_);
+    addBuddyRow(form, tr("&File:"), file_,
+                browseRow(file_, tr("Export image"), tr("PNG images (*.png)"), this));
 
     const QSize view = viewSize();
     sizes_ = new QComboBox(this);

@@ -88,10 +88,24 @@ void showExportProblem(QWidget* parent, const QString& title, const QString& mes
     box->open();
 }
 
+namespace {
+
+QWidget* ownerOf(QWidget* dialog) {
+    return dialog->parentWidget() != nullptr ? dialog->parentWidget() : dialog;
+}
+
+}  // namespace
+
 ExportWorker* ExportWorker::launch(QString description, Job job, QWidget* dialog) {
-    QWidget* owner = dialog->parentWidget() != nullptr ? dialog->parentWidget() : dialog;
-    auto* worker = new ExportWorker(std::move(description), std::move(job), owner);
-    if (auto* window = qobject_cast<QMainWindow*>(owner)) {
+    return launched(new ExportWorker(std::move(description), std::move(job), ownerOf(dialog)));
+}
+
+ExportWorker* ExportWorker::launch(QString description, FileJob job, QWidget* dialog) {
+    return launched(new ExportWorker(std::move(description), std::move(job), ownerOf(dialog)));
+}
+
+ExportWorker* ExportWorker::launched(ExportWorker* worker) {
+    if (auto* window = qobject_cast<QMainWindow*>(worker->parent())) {
         watch(worker, window);
     } else {
         connect(worker, &ExportWorker::finished, worker, &QObject::deleteLater);
@@ -165,6 +179,9 @@ void ExportDialog::startAndClose() {
 ExportWorker::ExportWorker(QString description, Job job, QObject* parent)
     : QObject(parent), description_(std::move(description)), job_(std::move(job)) {}
 
+ExportWorker::ExportWorker(QString description, FileJob job, QObject* parent)
+    : QObject(parent), description_(std::move(description)), fileJob_(std::move(job)) {}
+
 ExportWorker::~ExportWorker() {
     thread_.request_stop();
     if (thread_.joinable()) {
@@ -179,22 +196,24 @@ void ExportWorker::start() {
     }
     started_ = true;
     running_ = true;
-    try {
-        surface_ = render::OffscreenRenderer::createSurface();
-    } catch (const vv::Error& e) {
-        const ProblemText problem = describeProblem(e, FileAccess::Writing);
-        QTimer::singleShot(0, this, [this, problem] { deliver(Outcome::Failed, {}, problem); });
-        return;
+    if (!fileJob_) {
+        try {
+            surface_ = render::OffscreenRenderer::createSurface();
+        } catch (const vv::Error& e) {
+            const ProblemText problem = describeProblem(e, FileAccess::Writing);
+            QTimer::singleShot(0, this, [this, problem] { deliver(Outcome::Failed, {}, problem); });
+            return;
+        }
     }
     thread_ = std::jthread(
-        [this, surface = surface_.get()](const std::stop_token& stop) { run(*surface, stop); });
+        [this, surface = surface_.get()](const std::stop_token& stop) { run(surface, stop); });
 }
 
 void ExportWorker::cancel() {
     thread_.request_stop();
 }
 
-void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) {
+void ExportWorker::run(QOffscreenSurface* surface, const std::stop_token& stop) {
     // On the worker: touches only job_ (immutable while running) and emits
     // signals, which reach the GUI thread queued.
     // Throttled: a signal per 0.5 % or new stage (the engine may report from several threads).
@@ -219,9 +238,14 @@ void ExportWorker::run(QOffscreenSurface& surface, const std::stop_token& stop) 
     QString message;
     ProblemText problem;
     try {
-        render::OffscreenRenderer renderer(surface);
-        progress.throwIfCancelled();
-        message = job_(renderer, progress);
+        if (fileJob_) {
+            progress.throwIfCancelled();
+            message = fileJob_(progress);
+        } else {
+            render::OffscreenRenderer renderer(*surface);
+            progress.throwIfCancelled();
+            message = job_(renderer, progress);
+        }
         outcome = Outcome::Succeeded;
     } catch (const CancelledError&) {
         outcome = Outcome::Cancelled;

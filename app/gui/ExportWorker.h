@@ -46,7 +46,8 @@ void showExportProblem(QWidget* parent, const QString& title, const QString& mes
 /// start() creates the OffscreenSurface on the GUI thread (Qt requires it
 /// there) and starts a std::jthread that makes an OffscreenRenderer on that
 /// surface (its OpenGL context is created and current on the worker), runs
-/// the job and destroys the renderer there. Progress arrives through
+/// the job and destroys the renderer there (a FileJob gets neither: it only
+/// runs on the std::jthread). Progress arrives through
 /// progressChanged() (queued, throttled); then exactly one of succeeded(),
 /// failed() or cancelled(), and finished(), all on the GUI thread. cancel()
 /// asks the job to stop at its next progress report. The destructor cancels
@@ -60,8 +61,12 @@ class ExportWorker : public QObject {
     /// bar message. Throws vv::Error (CancelledError when stopped).
     using Job =
         std::function<QString(render::OffscreenRenderer& renderer, const Progress& progress)>;
+    /// A job that renders nothing (it writes files from data): no OpenGL
+    /// surface or context is made for it.
+    using FileJob = std::function<QString(const Progress& progress)>;
 
     ExportWorker(QString description, Job job, QObject* parent = nullptr);
+    ExportWorker(QString description, FileJob job, QObject* parent = nullptr);
     ~ExportWorker() override;
     ExportWorker(const ExportWorker&) = delete;
     ExportWorker& operator=(const ExportWorker&) = delete;
@@ -86,6 +91,7 @@ class ExportWorker : public QObject {
     /// A started worker for `job`, owned by `dialog`'s parent (the main
     /// window, which watch()es it) so that it outlives the dialog.
     static ExportWorker* launch(QString description, Job job, QWidget* dialog);
+    static ExportWorker* launch(QString description, FileJob job, QWidget* dialog);
 
   signals:
     void progressChanged(double fraction, const QString& stage);
@@ -98,13 +104,17 @@ class ExportWorker : public QObject {
 
   private:
     enum class Outcome { Succeeded, Failed, Cancelled };
-    void run(QOffscreenSurface& surface, const std::stop_token& stop);
+    /// `surface`: null for a FileJob.
+    void run(QOffscreenSurface* surface, const std::stop_token& stop);
+    /// Watches and starts a worker owned by `dialog`'s parent (launch()).
+    static ExportWorker* launched(ExportWorker* worker);
     /// `message`: the status bar's on success; `problem` on failure.
     void deliver(Outcome outcome, const QString& message, const ProblemText& problem = {});
 
     QString description_;
     ProblemText problem_;
     Job job_;
+    FileJob fileJob_;
     std::unique_ptr<QOffscreenSurface> surface_;
     bool started_ = false;
     bool running_ = false;

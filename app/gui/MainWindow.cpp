@@ -33,6 +33,7 @@
 #include "gui/DocumentController.h"
 #include "gui/ElidingLabel.h"
 #include "gui/ExportImageDialog.h"
+#include "gui/ExportSurfaceDialog.h"
 #include "gui/HelpTexts.h"
 #include "gui/LanguageMenu.h"
 #include "gui/MeasureTool.h"
@@ -195,6 +196,8 @@ void MainWindow::connectDocument() {
                 segmentationPanel_->setVolume(volume, loadedWith.segmentation, range,
                                               loadedWith.surface);
                 placeSegmentationSection(volume != nullptr);
+                segmentationPanel_->showCutOff(document_->loadedReport().cutOff,
+                                               document_->loadedReport().intensityCorrected);
                 slices_->setVolume(volume, document_->labelMap());
             });
     connect(document_, &DocumentController::recentFilesChanged, this,
@@ -273,6 +276,9 @@ void MainWindow::buildMenus() {
     });
     exportReportAction_->setObjectName(QStringLiteral("exportReport"));
     exportReportAction_->setShortcut(QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_E));
+    exportSurfaceAction_ =
+        file->addAction(tr("Export S&urface…"), this, &MainWindow::exportSurface);
+    exportSurfaceAction_->setObjectName(QStringLiteral("exportSurface"));
     updateExportActions();
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
@@ -635,6 +641,37 @@ void MainWindow::updateExportActions() {
         action->setEnabled(shown);
         action->setToolTip(shown ? QString() : tr("Open data first: there is nothing to export"));
     }
+    // A surface segmented from a DICOM series (or the segments of a DICOM SEG).
+    const bool segmented = shown && !document_->seriesUid().empty();
+    exportSurfaceAction_->setEnabled(segmented);
+    exportSurfaceAction_->setToolTip(
+        segmented ? tr("The segmented vessel surface as STL, VTP or PLY, in patient millimetres")
+                  : tr("Only for vessels segmented from a DICOM series: open one with "
+                       "File > Open Folder…"));
+}
+
+void MainWindow::exportSurface() {
+    if (document_->seriesUid().empty() || !document_->scene()) {
+        return;
+    }
+    SurfaceExportSource source;
+    source.provenance = app::provenanceOf(document_->loadedReport(), document_->loadedWith());
+    const auto& outcome = segmentationPanel_->lastOutcome();
+    if (!document_->volume()) {
+        source.scene = document_->scene();  // a DICOM SEG: its segments
+    } else if (segmentationPanel_->showsFullResolution()) {
+        source.scene = document_->scene();
+        source.labels = outcome ? outcome->labelMap : document_->labelMap();
+        if (outcome) {
+            app::describeSegmentation(source.provenance,
+                                      segmentationPanel_->segmentationRequest(1, 0), *outcome);
+        }
+    } else {
+        source.request = segmentationPanel_->segmentationRequest(1, 0);
+    }
+    auto* dialog = new ExportSurfaceDialog(std::move(source), this);
+    dialog->setAttribute(Qt::WA_DeleteOnClose);
+    dialog->open();
 }
 
 bool MainWindow::saveSessionTo(const QString& path) {

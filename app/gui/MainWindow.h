@@ -212,6 +212,7 @@ class MainWindow : public QMainWindow {
     /// why, while no scene is shown.
     [[nodiscard]] QAction* exportImageAction() const noexcept { return exportImageAction_; }
     [[nodiscard]] QAction* exportReportAction() const noexcept { return exportReportAction_; }
+    [[nodiscard]] QAction* exportSurfaceAction() const noexcept { return exportSurfaceAction_; }
     /// Where the shown scene came from, for the report: the shown files and,
     /// for DICOM data, the path and series it was loaded from.
     [[nodiscard]] report::ReportSource reportSource() const { return document_->reportSource(); }
@@ -302,7 +303,11 @@ class MainWindow : public QMainWindow {
     QPushButton* cancelButton_ = nullptr;
     QAction* exportImageAction_ = nullptr;
     QAction* exportReportAction_ = nullptr;
+    QAction* exportSurfaceAction_ = nullptr;
     void updateExportActions();
+    /// File > Export Surface…: the dialog over what the document and the
+    /// Segmentation panel show (ExportSurfaceDialog).
+    void exportSurface();
     ScreenshotMode* screenshot_ = nullptr;  ///< see setScreenshotTarget()
     ListenerService* listener_ = nullptr;
 };

@@ -1,9 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/PathField.h"
 
+#include <QCoreApplication>
+#include <QFileDialog>
 #include <QFormLayout>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
+#include <QPushButton>
 #include <QStyle>
 #include <algorithm>
 
@@ -38,6 +42,24 @@ void showPath(QLineEdit* edit) {
     fitPath(edit);
     QObject::connect(edit, &QLineEdit::textChanged, edit, [edit] { fitPath(edit); });
     QObject::connect(edit, &QLineEdit::editingFinished, edit, [edit] { fitPath(edit); });
+}
+
+QHBoxLayout* browseRow(QLineEdit* edit, const QString& title, const QString& filter,
+                       QWidget* parent) {
+    auto* browse =
+        new QPushButton(QCoreApplication::translate("vv::gui::PathField", "Browse…"), parent);
+    QObject::connect(browse, &QPushButton::clicked, parent, [edit, title, filter, parent] {
+        const QString chosen = QFileDialog::getSaveFileName(
+            parent, title, edit->text(), filter, nullptr, QFileDialog::DontConfirmOverwrite);
+        if (!chosen.isEmpty()) {
+            edit->setText(chosen);
+        }
+    });
+    auto* row = new QHBoxLayout;
+    row->addWidget(edit, 1);
+    row->addWidget(browse);
+    showPath(edit);
+    return row;
 }
 
 void addBuddyRow(QFormLayout* form, const QString& text, QWidget* buddy, QLayout* field) {

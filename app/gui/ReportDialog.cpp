@@ -8,7 +8,6 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QFile>
-#include <QFileDialog>
 #include <QFileInfo>
 #include <QFormLayout>
 #include <QGroupBox>
@@ -46,25 +45,6 @@ const char* const kAnonymiseKey = "report/anonymise";
 
 std::filesystem::path toPath(const QString& file) {
     return {QFile::encodeName(file).toStdString()};
-}
-
-/// The browse button beside `edit`: a save dialog for `filter`.
-QHBoxLayout* withBrowse(QLineEdit* edit, const QString& title, const QString& filter,
-                        QWidget* parent) {
-    auto* browse = new QPushButton(ReportDialog::tr("Browse…"), parent);
-    QObject::connect(browse, &QPushButton::clicked, parent, [edit, title, filter, parent] {
-        // Export asks before it replaces a file.
-        const QString chosen = QFileDialog::getSaveFileName(
-            parent, title, edit->text(), filter, nullptr, QFileDialog::DontConfirmOverwrite);
-        if (!chosen.isEmpty()) {
-            edit->setText(chosen);
-        }
-    });
-    auto* row = new QHBoxLayout;
-    row->addWidget(edit, 1);
-    row->addWidget(browse);
-    showPath(edit);
-    return row;
 }
 
 /// A DICOM date (YYYYMMDD) from what the user typed (parseUiDate(): the UI
@@ -105,7 +85,7 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
 
     pdf_ = new QLineEdit(unusedFileName(lastExportFolder(), QStringLiteral("report.pdf")), this);
     addBuddyRow(form_, tr("&Report (PDF):"), pdf_,
-                withBrowse(pdf_, tr("Export report"), tr("PDF documents (*.pdf)"), this));
+                browseRow(pdf_, tr("Export report"), tr("PDF documents (*.pdf)"), this));
 
     paper_ = new QComboBox(this);
     paper_->addItem(tr("A4"), static_cast<int>(report::PaperSize::A4));
@@ -274,7 +254,7 @@ QCheckBox* ReportDialog::addOutput(const QString& label, QLineEdit*& edit, const
             path->setText(besidePdf(pdf_->text(), suffix));
         }
     });
-    form_->addRow(box, withBrowse(edit, label, filter, this));
+    form_->addRow(box, browseRow(edit, label, filter, this));
     return box;
 }
 

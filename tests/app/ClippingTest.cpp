@@ -22,6 +22,7 @@
 #include "UiLanguage.h"
 #include "gui/EngineTexts.h"
 #include "gui/ExportImageDialog.h"
+#include "gui/ExportSurfaceDialog.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
@@ -29,6 +30,7 @@
 #include "gui/pacs/PacsBrowser.h"
 #include "gui/pacs/SendDialog.h"
 #include "gui/panels/CollapsibleSection.h"
+#include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/dicom/Dicom.h"
@@ -171,6 +173,13 @@ TEST_P(ClippingTest, SidePanelWithAVolumeShowsEveryTextInFull) {
     for (auto* section : side->findChildren<vv::gui::panels::CollapsibleSection*>()) {
         section->setExpanded(true);
     }
+    // The cut-off warning (issue 30) with its longest text: two ends.
+    vv::segmentation::CutOffVessel cut;
+    cut.end = {-123.0, 45.0, 118.0};
+    cut.farEnd = {-123.0, 45.0, 160.0};
+    cut.lengthMm = 42.0;
+    cut.radiusMm = 9.0;
+    window_->segmentationPanel()->showCutOff({cut, cut}, false);
     settle();
     side->widget()->grab().save(QString::fromStdString(
         (vv::test::panelTestDir() / ("side-panel-volume-" + caseName({GetParam(), 0}) + ".png"))
@@ -186,6 +195,11 @@ TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
     expectWhole(report, "report");
     vv::gui::SeriesDialog series(demoSeries(), window_.get());
     expectWhole(series, "series");
+    // File > Export Surface… (issue 30), with the longer of its source texts.
+    vv::gui::SurfaceExportSource surface;
+    surface.request = vv::segmentation::SegmentationRequest{};
+    vv::gui::ExportSurfaceDialog exportSurface(surface, window_.get());
+    expectWhole(exportSurface, "export-surface");
     // DICOM > Local Studies… and Send to PACS… (issue 21).
     vv::gui::LocalStudiesBrowser local(*window_->listenerService(), window_.get());
     ASSERT_TRUE(waitUntil([&] { return !local.isReading(); }, 15000));

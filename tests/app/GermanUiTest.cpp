@@ -53,6 +53,7 @@
 #include "vv/meshio/MeshLoader.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/segmentation/SceneSource.h"
+#include "vv/segmentation/SegmentationPipeline.h"
 #include "vv/segmentation/VolumeSegmentation.h"
 
 namespace vv::test {
@@ -543,7 +544,16 @@ TEST_F(GermanUiTest, ProgressStagesOfTheModulesAreGerman) {
     const dicom::DicomScanResult scan = dicom::scanDicom(dicomDir() / "series", progress);
     ASSERT_FALSE(scan.allSeries().empty());
     segmentation::SceneSourceOptions options;
-    (void)segmentation::loadSceneSource(dicomDir() / "series", options, progress, nullptr);
+    segmentation::SceneSourceReport loaded;
+    (void)segmentation::loadSceneSource(dicomDir() / "series", options, progress, &loaded);
+    // The MR path too: its intensity correction's stages (issue 30).
+    ASSERT_NE(loaded.volume, nullptr);
+    auto mr = std::make_shared<scene::Volume>(*loaded.volume);
+    mr->setModality("MR");
+    mr->setUnit("");
+    segmentation::SegmentationRequest request;
+    request.volume = mr;
+    (void)segmentation::runSegmentation(request, progress);
     demo::DemoTreeOptions small;
     small.generations = 2;
     (void)demo::generateDemoMesh(small, progress);
@@ -553,6 +563,9 @@ TEST_F(GermanUiTest, ProgressStagesOfTheModulesAreGerman) {
         const QString key = QString::fromStdString(stage);
         EXPECT_TRUE(gui::isKnownStage(key)) << "a progress stage without translation: " << stage;
         EXPECT_NE(gui::translatedStage(key), key) << "not German: " << stage;
+        // Not a file stage's pattern around English words ("the … wird geprüft").
+        EXPECT_FALSE(gui::translatedStage(key).contains(QStringLiteral("the ")))
+            << "half English: " << gui::translatedStage(key).toStdString();
     }
 }
 

@@ -188,6 +188,30 @@ TEST(SessionFile, TheDicomSourceRoundTripsAndIsChecked) {
     EXPECT_NE(errorFor("dicom-threshold.vvs", bad).find("dicom.threshold"), std::string::npos);
 }
 
+// The MR intensity correction as the Segmentation panel had it (issue 30):
+// saved when set, absent in older sessions (the modality's default then).
+TEST(SessionFile, TheIntensityCorrectionRoundTripsAndIsChecked) {
+    gui::Session s = sampleSession();
+    segmentation::SceneSourceOptions dicom;
+    dicom.seriesInstanceUid = "1.2.826.0.1.3680043.2.1125.6";
+    dicom.segmentation.correctIntensity = false;
+    s.dicom = dicom;
+    const QByteArray json = gui::sessionToJson(s, sessionDir() / "mr.vvs");
+    EXPECT_TRUE(json.contains("\"intensityCorrection\": false")) << json.toStdString();
+    gui::Session back = gui::sessionFromJson(json, sessionDir() / "mr.vvs");
+    ASSERT_TRUE(back.dicom.has_value());
+    EXPECT_EQ(back.dicom->segmentation.correctIntensity, std::optional<bool>(false));
+    s.dicom->segmentation.correctIntensity.reset();
+    back = gui::sessionFromJson(gui::sessionToJson(s, sessionDir() / "mr2.vvs"),
+                                sessionDir() / "mr2.vvs");
+    EXPECT_FALSE(back.dicom->segmentation.correctIntensity.has_value());
+
+    QByteArray bad = json;
+    bad.replace("\"intensityCorrection\": false", "\"intensityCorrection\": 3");
+    EXPECT_NE(errorFor("dicom-correction.vvs", bad).find("dicom.intensityCorrection"),
+              std::string::npos);
+}
+
 // The title the window gave a series ("dicom.title") goes into the session
 // and comes back, so that a reopened series is not named after its folder.
 TEST(SessionFile, TheSeriesTitleRoundTripsAndIsChecked) {

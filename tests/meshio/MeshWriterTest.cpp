@@ -223,6 +223,38 @@ TEST_F(MeshWriterTest, InconsistentMeshIsRefusedWithoutWriting) {
     EXPECT_TRUE(listing().empty());
 }
 
+// writeMeshFile: STL and PLY (the formats 3-D printing and other tools
+// read) load back with the same geometry, and none leaves a temporary file
+// (VTK's PLY writer appends ".ply" to a name without it: the writer must not
+// leave that one behind either, on success or failure).
+TEST_F(MeshWriterTest, StlAndPlyRoundTripTheGeometryAndLeaveNoTemporaryFiles) {
+    vv::meshio::MeshFileMetadata metadata;
+    metadata.summary = "solid-looking header " + std::string(100, 'x');
+    metadata.fields = {{"software", "VesselView test"}, {"note", "two\nlines"}};
+    for (const char* name : {"mesh.stl", "mesh.ply", "MESH2.PLY", "mesh.vtp"}) {
+        SCOPED_TRACE(name);
+        vv::meshio::writeMeshFile(sampleMesh(), dir_ / name, metadata);
+        const Mesh loaded = vv::meshio::loadMesh(dir_ / name);
+        EXPECT_EQ(loaded.triangleCount(), 8U);
+        EXPECT_EQ(loaded.bounds().min, glm::vec3(-1, -2, -3));
+        EXPECT_EQ(loaded.bounds().max, glm::vec3(1, 2, 3));
+    }
+    EXPECT_EQ(listing(),
+              (std::vector<std::string>{"MESH2.PLY", "mesh.ply", "mesh.stl", "mesh.vtp"}));
+    // The STL header: 80 bytes at most, not "solid" (an ASCII STL's start).
+    std::ifstream stl(dir_ / "mesh.stl", std::ios::binary);
+    std::string header(80, '\0');
+    stl.read(header.data(), 80);
+    EXPECT_EQ(header.rfind("Solid-looking header xxx", 0), 0U) << header;
+
+    EXPECT_THROW(vv::meshio::writeMeshFile(sampleMesh(), dir_ / "missing" / "m.ply", metadata),
+                 vv::IoError);
+    EXPECT_THROW(vv::meshio::writeMeshFile(sampleMesh(), dir_ / "mesh.obj", metadata),
+                 vv::InvalidArgumentError);
+    EXPECT_EQ(listing(),
+              (std::vector<std::string>{"MESH2.PLY", "mesh.ply", "mesh.stl", "mesh.vtp"}));
+}
+
 TEST_F(MeshWriterTest, MeshWithoutNormalsOrArrays) {
     Mesh m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};

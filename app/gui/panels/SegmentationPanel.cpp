@@ -14,6 +14,7 @@
 #include <QPushButton>
 #include <QSignalBlocker>
 #include <QSpinBox>
+#include <QStyle>
 #include <QTimer>
 #include <QVBoxLayout>
 #include <algorithm>
@@ -125,10 +126,7 @@ void SegmentationPanel::buildControls() {
     form->addRow(defaults);
     connect(default_, &QPushButton::clicked, this, [this] {
         if (defaultRange_) {
-            const QSignalBlocker block(upper_);
-            upper_->setValue(static_cast<double>(defaultRange_->upper));
-            lower_->setValue(static_cast<double>(defaultRange_->lower));  // previews once
-            optionsChanged();
+            setRange(*defaultRange_, true);
         }
     });
     connect(lower_, &QDoubleSpinBox::valueChanged, this, [this](double value) {
@@ -136,9 +134,13 @@ void SegmentationPanel::buildControls() {
             const QSignalBlocker block(iso_);
             iso_->setValue(value);
         }
+        rangeIsDefault_ = rangeIsDefault_ && settingRange_;
         optionsChanged();
     });
-    connect(upper_, &QDoubleSpinBox::valueChanged, this, &SegmentationPanel::optionsChanged);
+    connect(upper_, &QDoubleSpinBox::valueChanged, this, [this] {
+        rangeIsDefault_ = rangeIsDefault_ && settingRange_;
+        optionsChanged();
+    });
 
     mode_ = new QComboBox(segmentation_);
     mode_->setObjectName(QStringLiteral("componentMode"));
@@ -167,6 +169,19 @@ void SegmentationPanel::buildControls() {
            "touching bone is dropped with it"));
     form->addRow(bone_);
     connect(bone_, &QCheckBox::toggled, this, &SegmentationPanel::optionsChanged);
+    correction_ = new QCheckBox(tr("Correct the signal fall-off (MR)"), segmentation_);
+    correction_->setObjectName(QStringLiteral("intensityCorrection"));
+    form->addRow(correction_);
+    connect(correction_, &QCheckBox::toggled, this, [this] {
+        if (filling_ || !volume_) {
+            return;
+        }
+        // The default range (and the gain field) belong to the corrected or
+        // the plain values: computed again; a range at the default follows it.
+        gain_.reset();
+        startDefaultRange();
+        optionsChanged();
+    });
     triangles_ = new QSpinBox(segmentation_);
     triangles_->setObjectName(QStringLiteral("surfaceTriangles"));
     triangles_->setRange(0, kMaxTriangles);
@@ -220,6 +235,21 @@ void SegmentationPanel::buildControls() {
     message_->setWordWrap(true);
     message_->setTextInteractionFlags(Qt::TextSelectableByMouse);
     outer->addWidget(message_);
+    cutOffBox_ = new QWidget(this);
+    auto* cutOffRow = new QHBoxLayout(cutOffBox_);
+    cutOffRow->setContentsMargins(0, 0, 0, 0);
+    auto* icon = new QLabel(cutOffBox_);
+    const int side = style()->pixelMetric(QStyle::PM_SmallIconSize);
+    icon->setPixmap(style()->standardIcon(QStyle::SP_MessageBoxWarning).pixmap(side, side));
+    icon->setAlignment(Qt::AlignTop);
+    cutOffRow->addWidget(icon, 0, Qt::AlignTop);
+    cutOff_ = new QLabel(cutOffBox_);
+    cutOff_->setObjectName(QStringLiteral("cutOffWarning"));
+    cutOff_->setWordWrap(true);
+    cutOff_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    cutOffRow->addWidget(cutOff_, 1);
+    cutOffBox_->hide();
+    outer->addWidget(cutOffBox_);
     outer->addStretch(1);
 }
 
@@ -236,6 +266,9 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
     meshScene_.reset();
     volume_ = std::move(volume);
     defaultRange_.reset();
+    gain_.reset();
+    rangeIsDefault_ = volume_ != nullptr && !options.range;
+    cutOffBox_->hide();
     seed_ = options.seed;
     dirty_ = false;
     isoFollowsLower_ = true;
@@ -252,6 +285,7 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
         const QSignalBlocker blockMode(mode_);
         const QSignalBlocker blockComponents(components_);
         const QSignalBlocker blockBone(bone_);
+        const QSignalBlocker blockCorrection(correction_);
         const QSignalBlocker blockTriangles(triangles_);
         displayBox_->setCurrentIndex(0);
         if (volume_) {
@@ -272,8 +306,10 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
             iso_->setValue(static_cast<double>(used.lower));
             components_->setValue(std::clamp(options.keepComponents, 1, 255));
             mode_->setCurrentIndex(options.seed ? 1 : 0);
-            bone_->setChecked(options.removeBone.value_or(volume_->modality() == "CT" ||
-                                                          volume_->unit() == "HU"));
+            const bool ct = volume_->modality() == "CT" || volume_->unit() == "HU";
+            bone_->setChecked(options.removeBone.value_or(ct));
+            correction_->setChecked(!ct && options.correctIntensity.value_or(
+                                               segmentation::intensityCorrectionDefault(*volume_)));
             triangles_->setValue(
                 static_cast<int>(std::min<std::size_t>(surface.targetTriangles, kMaxTriangles)));
             const glm::ivec3 d = volume_->dims();
@@ -285,7 +321,6 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
                     .arg(volume_->modality().empty()
                              ? QString()
                              : QStringLiteral(", ") + fromUtf8(volume_->modality())));
-            defaultLabel_->setText(tr("Default: computing…"));
             startDefaultRange();
         } else {
             // Nothing of the last volume stays (its thresholds, modality, seed):
@@ -321,21 +356,37 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
 }
 
 void SegmentationPanel::startDefaultRange() {
-    // The modality default: a histogram pass for MR, so not on the GUI thread.
+    // The modality default: a histogram pass for MR (after the intensity
+    // correction, whose gain field is estimated here once), so not on the GUI thread.
     const std::shared_ptr<const scene::Volume> volume = volume_;
+    const bool correct = correcting();
+    defaultLabel_->setText(tr("Default: computing…"));
+    defaultRange_.reset();
+    updateApplicability();
     defaultRangeRun_.start(
-        [volume](const std::stop_token&) -> std::optional<segmentation::ThresholdRange> {
+        [volume, correct](const std::stop_token& stop) -> Defaults {
+            Defaults defaults;
             try {
-                return segmentation::defaultThresholdRange(*volume);
+                if (!correct) {
+                    defaults.range = segmentation::defaultThresholdRange(*volume);
+                    return defaults;
+                }
+                const Progress progress({}, stop);
+                defaults.gain = std::make_shared<const segmentation::GainField>(
+                    segmentation::estimateGainField(*volume, {}, progress));
+                defaults.range = segmentation::defaultThresholdRange(
+                    segmentation::correctedVolume(*volume, *defaults.gain, progress));
             } catch (const vv::Error&) {
-                return std::nullopt;
+                defaults.range.reset();  // cancelled, or a single value: no default
             }
+            return defaults;
         },
-        [this, volume](std::optional<segmentation::ThresholdRange> range) {
-            if (volume != volume_) {
-                return;  // computed for an older volume
+        [this, volume, correct](Defaults defaults) {
+            if (volume != volume_ || correct != correcting()) {
+                return;  // computed for an older volume or setting
             }
-            defaultRange_ = std::move(range);
+            defaultRange_ = std::move(defaults.range);
+            gain_ = std::move(defaults.gain);
             defaultLabel_->setText(
                 defaultRange_ ? tr("Default: %1 to %2")
                                     .arg(valueText(static_cast<double>(defaultRange_->lower)),
@@ -346,8 +397,42 @@ void SegmentationPanel::startDefaultRange() {
                 defaultRange_
                     ? thresholdRuleText(*defaultRange_, [this](double v) { return valueText(v); })
                     : QString());
+            if (defaultRange_ && rangeIsDefault_) {
+                setRange(*defaultRange_, true);  // the default of the values now thresholded
+            }
             updateApplicability();
         });
+}
+
+void SegmentationPanel::setRange(const segmentation::ThresholdRange& range, bool isDefault) {
+    const auto lower = static_cast<double>(range.lower);
+    const auto upper = static_cast<double>(range.upper);
+    rangeIsDefault_ = isDefault;
+    // The boxes round to their decimals: a range they already show is no change.
+    const auto shows = [](const QDoubleSpinBox* box, double value) {
+        return box->textFromValue(value) == box->textFromValue(box->value());
+    };
+    if (shows(lower_, lower) && shows(upper_, upper)) {
+        return;
+    }
+    settingRange_ = true;
+    {
+        const QSignalBlocker block(upper_);
+        upper_->setValue(upper);
+    }
+    lower_->setValue(lower);  // previews once
+    settingRange_ = false;
+    optionsChanged();
+}
+
+bool SegmentationPanel::correcting() const {
+    return volume_ && correction_->isChecked();  // never ticked for CT (setVolume)
+}
+
+double SegmentationPanel::thresholdedValue(const glm::ivec3& voxel) const {
+    const auto value = static_cast<double>(volume_->value(voxel.x, voxel.y, voxel.z));
+    return correcting() && gain_ ? value / gain_->at(volume_->worldPosition(glm::dvec3(voxel)))
+                                 : value;
 }
 
 QString SegmentationPanel::valueText(double value) const {
@@ -369,6 +454,10 @@ segmentation::SegmentationOptions SegmentationPanel::segmentationOptions() const
         options.seed = seed_;
     }
     options.removeBone = bone_->isChecked();
+    options.correctIntensity = correcting();
+    if (options.correctIntensity.value_or(false)) {
+        options.gainField = gain_;
+    }
     return options;
 }
 
@@ -394,6 +483,12 @@ void SegmentationPanel::updateApplicability() {
                   tr("Only for the ray-cast iso-surface display"));
     setApplicable(components_, !seedMode, tr("Keep this many of the largest components"),
                   tr("The seed mode keeps the one component under the seed"));
+    const bool ct = volume_ && (volume_->modality() == "CT" || volume_->unit() == "HU");
+    setApplicable(correction_, !ct,
+                  tr("Divide out the slow fall-off of the MR signal away from the receive coils "
+                     "before thresholding, so that a vessel is not cut off where the signal "
+                     "fades. The thresholds then apply to the corrected values."),
+                  tr("CT values (HU) have no receive-coil fall-off to correct"));
     setApplicable(default_, defaultRange_.has_value(),
                   tr("Use the default range of the volume's modality"),
                   tr("The default range is not known yet"));
@@ -432,7 +527,8 @@ void SegmentationPanel::optionsChanged() {
     }
 }
 
-SegmentationTask* SegmentationPanel::makeTask(int step, int maxTriangles) {
+segmentation::SegmentationRequest SegmentationPanel::segmentationRequest(int step,
+                                                                         int maxTriangles) const {
     segmentation::SegmentationRequest request;
     request.volume = volume_;
     request.segmentation = segmentationOptions();
@@ -443,7 +539,16 @@ SegmentationTask* SegmentationPanel::makeTask(int step, int maxTriangles) {
         request.surface.targetTriangles = static_cast<std::size_t>(maxTriangles);
     }
     request.step = step;
-    return new SegmentationTask(std::move(request), this);
+    return request;
+}
+
+SegmentationTask* SegmentationPanel::makeTask(int step, int maxTriangles) {
+    return new SegmentationTask(segmentationRequest(step, maxTriangles), this);
+}
+
+bool SegmentationPanel::showsFullResolution() const {
+    return volume_ && display_ == Display::SurfaceMesh && !dirty_ && !isPreviewing() &&
+           (!lastOutcome_ || lastOutcome_->step == 1);
 }
 
 void SegmentationPanel::abandon(QPointer<SegmentationTask>& task) {
@@ -503,6 +608,7 @@ void SegmentationPanel::previewDone(
                              .arg(QLocale().toString(static_cast<qulonglong>(outcome->triangles)))
                              .arg(outcome->componentsKept);
     message_->setText(what + QStringLiteral("; ") + tr("Apply for full resolution"));
+    showCutOff(outcome->cutOff, outcome->intensityCorrected);
     emit labelMapReady(outcome->labelMap);
     emit sceneReady(outcome->scene, what + QStringLiteral(" — ") + tr("Apply for full resolution"));
 }
@@ -548,6 +654,7 @@ void SegmentationPanel::applyDone(
                              .arg(outcome->componentsKept)
                              .arg(outcome->componentsFound);
     message_->setText(what);
+    showCutOff(outcome->cutOff, outcome->intensityCorrected);
     emit labelMapReady(outcome->labelMap);
     emit sceneReady(outcome->scene, what);
     emit applyFinished(true);
@@ -612,8 +719,8 @@ bool SegmentationPanel::pickSeed(const glm::vec3& world) {
     const segmentation::SegmentationOptions options = segmentationOptions();
     const float lower = options.range->lower;
     const float upper = options.range->upper;
-    const std::optional<glm::ivec3> voxel =
-        segmentation::nearestVoxelInRange(*volume_, ijk, lower, upper, kSeedRadius);
+    const std::optional<glm::ivec3> voxel = segmentation::nearestVoxelInRange(
+        *volume_, ijk, lower, upper, kSeedRadius, correcting() ? gain_.get() : nullptr);
     if (!voxel) {
         showMessage(
             tr("Voxel (%1, %2, %3) holds %4, outside the threshold range %5 to %6: no component "
@@ -621,18 +728,16 @@ bool SegmentationPanel::pickSeed(const glm::vec3& world) {
                 .arg(nearest.x)
                 .arg(nearest.y)
                 .arg(nearest.z)
-                .arg(
-                    valueText(static_cast<double>(volume_->value(nearest.x, nearest.y, nearest.z))),
-                    valueText(static_cast<double>(lower)), valueText(static_cast<double>(upper))));
+                .arg(valueText(thresholdedValue(nearest)), valueText(static_cast<double>(lower)),
+                     valueText(static_cast<double>(upper))));
         return false;
     }
     seed_ = voxel;
-    const QString where =
-        tr("(%1, %2, %3): %4")
-            .arg(voxel->x)
-            .arg(voxel->y)
-            .arg(voxel->z)
-            .arg(valueText(static_cast<double>(volume_->value(voxel->x, voxel->y, voxel->z))));
+    const QString where = tr("(%1, %2, %3): %4")
+                              .arg(voxel->x)
+                              .arg(voxel->y)
+                              .arg(voxel->z)
+                              .arg(valueText(thresholdedValue(*voxel)));
     seedLabel_->setText(where);
     pickSeed_->setChecked(false);
     showMessage(tr("Seed at voxel %1").arg(where));
@@ -643,6 +748,53 @@ bool SegmentationPanel::pickSeed(const glm::vec3& world) {
     }
     updateApplicability();
     return true;
+}
+
+void SegmentationPanel::showCutOff(const std::vector<segmentation::CutOffVessel>& vessels,
+                                   bool corrected) {
+    if (vessels.empty()) {
+        cutOffBox_->hide();
+        cutOff_->clear();
+        return;
+    }
+    const segmentation::CutOffVessel& first = vessels.front();
+    QString towards;
+    switch (segmentation::dominantDirection(first.farEnd - first.end)) {
+        case segmentation::PatientDirection::Superior:
+            towards = tr("towards the head");
+            break;
+        case segmentation::PatientDirection::Inferior:
+            towards = tr("towards the feet");
+            break;
+        case segmentation::PatientDirection::Left:
+            towards = tr("to the patient's left");
+            break;
+        case segmentation::PatientDirection::Right:
+            towards = tr("to the patient's right");
+            break;
+        case segmentation::PatientDirection::Anterior:
+            towards = tr("anteriorly");
+            break;
+        case segmentation::PatientDirection::Posterior:
+            towards = tr("posteriorly");
+            break;
+    }
+    const QLocale locale;
+    const auto mm = [&locale](double v) { return locale.toString(v, 'f', 0); };
+    QString text =
+        tr("The vessel may be cut off: a bright tube continues %1 mm %2 past the "
+           "segmentation's end at (%3, %4, %5) mm, where the signal may fade.")
+            .arg(mm(first.lengthMm), towards, mm(first.end.x), mm(first.end.y), mm(first.end.z));
+    if (vessels.size() > 1) {
+        text += QStringLiteral(" ") +
+                tr("%n more such end(s).", nullptr, static_cast<int>(vessels.size() - 1));
+    }
+    text += QStringLiteral(" ") +
+            (!corrected && correction_->isEnabled()
+                 ? tr("Turn on “Correct the signal fall-off (MR)” or lower the threshold.")
+                 : tr("Lower the threshold, or pick a seed in the missing part."));
+    cutOff_->setText(text);
+    cutOffBox_->show();
 }
 
 void SegmentationPanel::pickAt(const QPointF& position) {

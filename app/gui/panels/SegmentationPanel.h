@@ -8,11 +8,13 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "gui/EngineTexts.h"
 #include "gui/WorkerRun.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
+#include "vv/segmentation/SegmentationPipeline.h"
 #include "vv/segmentation/VolumeSegmentation.h"
 #include "vv/segmentation/VolumeSurface.h"
 
@@ -44,8 +46,15 @@ namespace panels {
 /// iso-surface at an iso value that follows the lower threshold until it is
 /// edited), the threshold range (with the modality's default and a Default
 /// button), keep the largest components (how many) or the component under a
-/// seed, bone removal, the surface's triangle target, "Pick seed", live
-/// Preview (on by default) and Apply.
+/// seed, bone removal, the MR intensity correction (on for MR, unavailable
+/// for CT; its gain field is estimated once per volume on a worker, with
+/// the default range, which then applies to the corrected values — a range
+/// still at the default follows the new default when it is toggled), the
+/// surface's triangle target, "Pick seed", live Preview (on by default) and
+/// Apply. Under the message a warning (cutOffLabel()) says when a bright
+/// tube continues past the segmentation (segmentation::findCutOffVessels):
+/// after each preview and Apply, and for the segmentation the scene was
+/// loaded with (showCutOff()).
 ///
 /// Preview: 300 ms after the last change, a worker (SegmentationTask)
 /// segments every previewStep()-th voxel and extracts a coarse surface;
@@ -93,6 +102,20 @@ class SegmentationPanel : public QWidget {
     bool pickSeed(const glm::vec3& world);
     [[nodiscard]] const std::optional<glm::ivec3>& seed() const noexcept { return seed_; }
 
+    /// Shows (or, when empty, hides) the cut-off warning for `vessels`, found
+    /// on a segmentation with the intensity correction on or off (`corrected`:
+    /// the advice differs).
+    void showCutOff(const std::vector<segmentation::CutOffVessel>& vessels, bool corrected);
+    /// True when the scene on screen is this volume's segmentation at full
+    /// resolution with the current controls (as loaded, or after Apply): not
+    /// a preview, not the ray-cast display, no control changed since.
+    [[nodiscard]] bool showsFullResolution() const;
+    /// What the controls would segment: every `step`-th voxel, the surface
+    /// decimated to at most `maxTriangles` (0: the control's target), the
+    /// gain field when the correction is on and it is known. Needs a volume.
+    [[nodiscard]] segmentation::SegmentationRequest segmentationRequest(int step,
+                                                                        int maxTriangles) const;
+
     /// Starts a preview of the current controls at once (what the debounce
     /// timer does); nothing when there is no volume, Apply is running, the
     /// volume is ray cast, or the seed mode has no seed yet.
@@ -125,6 +148,11 @@ class SegmentationPanel : public QWidget {
     [[nodiscard]] QComboBox* modeChooser() const noexcept { return mode_; }
     [[nodiscard]] QSpinBox* componentsBox() const noexcept { return components_; }
     [[nodiscard]] QCheckBox* boneRemovalBox() const noexcept { return bone_; }
+    [[nodiscard]] QCheckBox* correctionBox() const noexcept { return correction_; }
+    /// The gain field of the intensity correction (null: off, or not known yet).
+    [[nodiscard]] const std::shared_ptr<const segmentation::GainField>& gainField() const noexcept {
+        return gain_;
+    }
     [[nodiscard]] QSpinBox* trianglesBox() const noexcept { return triangles_; }
     [[nodiscard]] QPushButton* pickSeedButton() const noexcept { return pickSeed_; }
     [[nodiscard]] QLabel* seedLabel() const noexcept { return seedLabel_; }
@@ -134,6 +162,8 @@ class SegmentationPanel : public QWidget {
     [[nodiscard]] QProgressBar* progressBar() const noexcept { return progress_; }
     /// Results, seed problems and errors.
     [[nodiscard]] QLabel* messageLabel() const noexcept { return message_; }
+    /// The cut-off warning (hidden when there is none).
+    [[nodiscard]] QLabel* cutOffLabel() const noexcept { return cutOff_; }
 
   signals:
     /// Show `scene` instead of the current one, keeping the camera; `status`
@@ -160,6 +190,13 @@ class SegmentationPanel : public QWidget {
     /// showMessage(text), the problem's details in the message's tooltip.
     void showProblemMessage(const QString& text, const ProblemText& problem);
     void startDefaultRange();
+    /// Sets the threshold boxes to `range` (one preview); `isDefault`: the
+    /// range follows the default from now on.
+    void setRange(const segmentation::ThresholdRange& range, bool isDefault);
+    /// The intensity correction applies to volume_ (not CT) and is ticked.
+    [[nodiscard]] bool correcting() const;
+    /// A voxel's value as the threshold sees it (corrected when correcting).
+    [[nodiscard]] double thresholdedValue(const glm::ivec3& voxel) const;
     [[nodiscard]] QString valueText(double value) const;
     [[nodiscard]] SegmentationTask* makeTask(int step, int maxTriangles);
     void previewDone(const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome);
@@ -172,8 +209,17 @@ class SegmentationPanel : public QWidget {
     ViewerWidget* viewer_;
     std::shared_ptr<const scene::Volume> volume_;
     std::optional<segmentation::ThresholdRange> defaultRange_;
-    /// Computes the modality default range of volume_ on a worker.
-    LatestRun<std::optional<segmentation::ThresholdRange>> defaultRangeRun_{this};
+    /// The default range and the correction's gain field of one volume.
+    struct Defaults {
+        std::optional<segmentation::ThresholdRange> range;
+        std::shared_ptr<const segmentation::GainField> gain;
+    };
+    /// Computes the default range of volume_ (and the gain field, when
+    /// correcting) on a worker.
+    LatestRun<Defaults> defaultRangeRun_{this};
+    std::shared_ptr<const segmentation::GainField> gain_;
+    bool rangeIsDefault_ = false;  ///< the threshold boxes follow the default
+    bool settingRange_ = false;    ///< setRange() is filling the threshold boxes
     std::optional<glm::ivec3> seed_;
     Display display_ = Display::SurfaceMesh;
     /// The mesh scene shown before switching to the ray-cast display.
@@ -199,6 +245,7 @@ class SegmentationPanel : public QWidget {
     QComboBox* mode_ = nullptr;
     QSpinBox* components_ = nullptr;
     QCheckBox* bone_ = nullptr;
+    QCheckBox* correction_ = nullptr;
     QSpinBox* triangles_ = nullptr;
     QPushButton* pickSeed_ = nullptr;
     QLabel* seedLabel_ = nullptr;
@@ -207,6 +254,8 @@ class SegmentationPanel : public QWidget {
     QPushButton* cancel_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QLabel* message_ = nullptr;
+    QWidget* cutOffBox_ = nullptr;  ///< the warning's icon and text
+    QLabel* cutOff_ = nullptr;
     QLabel* volumeLabel_ = nullptr;
 };
 

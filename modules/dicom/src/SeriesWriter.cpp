@@ -37,6 +37,12 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
     if (volume.empty()) {
         throw InvalidArgumentError(folder, "cannot write an empty volume as a CT series");
     }
+    if (options.modality != "CT" && options.modality != "MR") {
+        throw InvalidArgumentError(folder, "cannot write a series of modality '" +
+                                               options.modality + "' (only CT and MR)");
+    }
+    const bool mr = options.modality == "MR";
+    const double intercept = mr ? 0.0 : -1024.0;
     const glm::dmat4& m = volume.indexToWorld();
     const glm::dvec3 c0(m[0]);
     const glm::dvec3 c1(m[1]);
@@ -76,10 +82,10 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
         progress.report(static_cast<double>(k) / slices, stage);
         for (int j = 0; j < rows; ++j) {
             for (int i = 0; i < columns; ++i) {
-                const double hu = std::round(static_cast<double>(volume.value(i, j, k)));
+                const double value = std::round(static_cast<double>(volume.value(i, j, k)));
                 pixels[static_cast<std::size_t>(j) * static_cast<std::size_t>(columns) +
                        static_cast<std::size_t>(i)] =
-                    static_cast<Uint16>(std::clamp(hu + 1024.0, 0.0, 65535.0));
+                    static_cast<Uint16>(std::clamp(value - intercept, 0.0, 65535.0));
             }
         }
         DcmFileFormat ff;
@@ -88,7 +94,7 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
         const auto put = [d](const DcmTagKey& tag, const std::string& value) {
             d->putAndInsertString(tag, value.c_str());
         };
-        put(DCM_SOPClassUID, UID_CTImageStorage);
+        put(DCM_SOPClassUID, mr ? UID_MRImageStorage : UID_CTImageStorage);
         put(DCM_SOPInstanceUID, newUid());
         put(DCM_StudyInstanceUID, studyUid);
         put(DCM_SeriesInstanceUID, seriesUid);
@@ -105,7 +111,7 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
         put(DCM_AccessionNumber, "");
         put(DCM_ReferringPhysicianName, "");
         put(DCM_StudyDescription, options.studyDescription);
-        put(DCM_Modality, "CT");
+        put(DCM_Modality, options.modality);
         put(DCM_Manufacturer, "VesselView");
         put(DCM_SeriesDescription, options.seriesDescription);
         put(DCM_SeriesNumber, "1");
@@ -116,12 +122,20 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
         put(DCM_PixelSpacing, pixelSpacing);
         put(DCM_SliceThickness, ds(thickness));
         put(DCM_SpacingBetweenSlices, ds(thickness));
-        put(DCM_KVP, "120");
-        put(DCM_RescaleIntercept, "-1024");
-        put(DCM_RescaleSlope, "1");
-        put(DCM_RescaleType, "HU");
-        put(DCM_WindowCenter, "200");
-        put(DCM_WindowWidth, "800");
+        if (mr) {
+            put(DCM_ScanningSequence, "GR");
+            put(DCM_SequenceVariant, "SP");
+            put(DCM_MRAcquisitionType, "3D");
+            put(DCM_RescaleIntercept, "0");
+            put(DCM_RescaleSlope, "1");
+        } else {
+            put(DCM_KVP, "120");
+            put(DCM_RescaleIntercept, "-1024");
+            put(DCM_RescaleSlope, "1");
+            put(DCM_RescaleType, "HU");
+            put(DCM_WindowCenter, "200");
+            put(DCM_WindowWidth, "800");
+        }
         put(DCM_PhotometricInterpretation, "MONOCHROME2");
         d->putAndInsertUint16(DCM_SamplesPerPixel, 1);
         d->putAndInsertUint16(DCM_Rows, static_cast<Uint16>(rows));

@@ -1,12 +1,20 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/meshio/MeshWriter.h"
 
+#include <vtkFieldData.h>
+#include <vtkPLYWriter.h>
 #include <vtkPolyData.h>
+#include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkXMLPolyDataWriter.h>
 
+#include <algorithm>
+#include <cctype>
 #include <set>
 #include <string>
+#include <utility>
 
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
@@ -59,27 +67,132 @@ void checkMesh(const scene::Mesh& mesh, const std::filesystem::path& file) {
     checkArrays(mesh.cellArrays, mesh.triangleCount(), "cell", file);
 }
 
+/// Runs `writer` (a VTK writer set up for the file) into a temporary file
+/// renamed to `file`; `what` names the format in errors. `suffix`: the
+/// writer appends it to a file name that lacks it (the PLY library does), so
+/// it writes to the temporary name with it, renamed to the temporary name.
+template <typename Writer>
+void writeThrough(Writer* writer, const std::filesystem::path& file, const char* what,
+                  const std::string& suffix = {}) {
+    writeAtomically(file, [&](const std::filesystem::path& temporary) {
+        const std::filesystem::path named = temporary.string() + suffix;
+        try {
+            detail::VtkMessageCapture capture;
+            capture.observe(writer);
+            writer->SetFileName(named.c_str());
+            const int ok = writer->Write();
+            if (ok == 0 || capture.hasErrors()) {
+                std::string message = capture.summary();
+                throw IoError(file, std::string("cannot write the ") + what + " file" +
+                                        (message.empty() ? std::string() : ": " + message));
+            }
+            if (named != temporary) {
+                std::filesystem::rename(named, temporary);
+            }
+        } catch (...) {
+            std::error_code ec;
+            std::filesystem::remove(named, ec);
+            throw;
+        }
+    });
+}
+
+/// `text` with every control character (line breaks too) made a space.
+std::string oneLine(std::string text) {
+    std::replace_if(
+        text.begin(), text.end(), [](unsigned char c) { return c < 0x20 || c == 0x7F; }, ' ');
+    return text;
+}
+
+/// The STL header: `summary` on one line, at most 80 bytes cut on a UTF-8
+/// character boundary, never starting with "solid".
+vtkSmartPointer<vtkUnsignedCharArray> stlHeader(const std::string& summary) {
+    std::string text = oneLine(summary);
+    if (text.size() > 80) {
+        std::size_t cut = 80;
+        while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0U) == 0x80U) {
+            --cut;  // text[cut] continues a character: cut before it starts
+        }
+        text.resize(cut);
+    }
+    if (text.rfind("solid", 0) == 0) {
+        text[0] = 'S';
+    }
+    auto header = vtkSmartPointer<vtkUnsignedCharArray>::New();
+    header->SetNumberOfValues(static_cast<vtkIdType>(text.size()));
+    for (std::size_t i = 0; i < text.size(); ++i) {
+        header->SetValue(static_cast<vtkIdType>(i), static_cast<unsigned char>(text[i]));
+    }
+    return header;
+}
+
+/// Writes `poly` as binary, zlib-compressed VTK XML polydata.
+void writeVtpFile(vtkPolyData* poly, const std::filesystem::path& file) {
+    auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+    writer->SetInputData(poly);
+    writer->SetDataModeToBinary();
+    writer->SetCompressorTypeToZLib();
+    writer->SetHeaderTypeToUInt64();
+    writeThrough(writer.Get(), file, "VTP");
+}
+
+std::string lowerExtension(const std::filesystem::path& file) {
+    std::string ext = file.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    return ext;
+}
+
 }  // namespace
 
 void writeVtp(const scene::Mesh& mesh, const std::filesystem::path& file) {
     checkMesh(mesh, file);
+    writeVtpFile(detail::polyDataFromMesh(mesh), file);
+}
+
+const std::vector<std::string>& writableMeshExtensions() {
+    static const std::vector<std::string> extensions = {".stl", ".vtp", ".ply"};
+    return extensions;
+}
+
+void writeMeshFile(const scene::Mesh& mesh, const std::filesystem::path& file,
+                   const MeshFileMetadata& metadata) {
+    const std::string ext = lowerExtension(file);
+    const auto& known = writableMeshExtensions();
+    if (std::find(known.begin(), known.end(), ext) == known.end()) {
+        throw InvalidArgumentError(file, "cannot write '" + file.extension().string() +
+                                             "' files; write .stl, .vtp or .ply");
+    }
+    checkMesh(mesh, file);
     const vtkSmartPointer<vtkPolyData> poly = detail::polyDataFromMesh(mesh);
-    writeAtomically(file, [&](const std::filesystem::path& temporary) {
-        detail::VtkMessageCapture capture;
-        auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-        capture.observe(writer);
-        writer->SetFileName(temporary.c_str());
+    if (ext == ".stl") {
+        auto writer = vtkSmartPointer<vtkSTLWriter>::New();
         writer->SetInputData(poly);
-        writer->SetDataModeToBinary();
-        writer->SetCompressorTypeToZLib();
-        writer->SetHeaderTypeToUInt64();
-        const int ok = writer->Write();
-        if (ok == 0 || capture.hasErrors()) {
-            std::string message = capture.summary();
-            throw IoError(file, "cannot write the VTP file" +
-                                    (message.empty() ? std::string() : ": " + message));
+        writer->SetFileTypeToBinary();
+        writer->SetBinaryHeader(stlHeader(metadata.summary));
+        writeThrough(writer.Get(), file, "STL");
+    } else if (ext == ".ply") {
+        auto writer = vtkSmartPointer<vtkPLYWriter>::New();
+        writer->SetInputData(poly);
+        writer->SetFileTypeToBinary();
+        writer->SetDataByteOrderToLittleEndian();
+        writer->SetColorModeToOff();
+        for (const auto& [name, value] : metadata.fields) {
+            std::string comment = name;
+            comment += ": ";
+            comment += value;
+            writer->AddComment(oneLine(std::move(comment)));
         }
-    });
+        writeThrough(writer.Get(), file, "PLY", ".ply");
+    } else {
+        for (const auto& [name, value] : metadata.fields) {
+            auto array = vtkSmartPointer<vtkStringArray>::New();
+            array->SetName(name.c_str());
+            array->InsertNextValue(value);
+            poly->GetFieldData()->AddArray(array);
+        }
+        writeVtpFile(poly, file);
+    }
 }
 
 }  // namespace vv::meshio

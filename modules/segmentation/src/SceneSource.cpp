@@ -120,6 +120,12 @@ bool setSceneSourceOption(const std::string& name, const std::string& value,
             throw InvalidArgumentError("--bone-removal must be on or off, got '" + value + "'");
         }
         options.segmentation.removeBone = value == "on";
+    } else if (name == "--intensity-correction") {
+        if (value != "on" && value != "off") {
+            throw InvalidArgumentError("--intensity-correction must be on or off, got '" + value +
+                                       "'");
+        }
+        options.segmentation.correctIntensity = value == "on";
     } else if (name == "--triangles") {
         const long long n = integer(value, name);
         if (n != 0 && (n < 4 || n > 100000000)) {
@@ -236,6 +242,10 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
         report->componentsFound = segmentation.componentsFound;
         report->componentsKept = segmentation.labelMap.components.size();
         report->boneComponents = segmentation.boneComponents;
+        report->intensityCorrected = segmentation.intensityCorrected;
+        report->gainLowest = segmentation.gainLowest;
+        report->gainHighest = segmentation.gainHighest;
+        report->cutOff = std::move(segmentation.cutOff);
         report->warnings = std::move(loaded.warnings);
         report->volume = std::move(volume);
         report->labelMap =

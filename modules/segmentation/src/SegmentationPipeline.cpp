@@ -71,7 +71,8 @@ int previewStep(glm::ivec3 dims, std::size_t voxelBudget) noexcept {
 }
 
 std::optional<glm::ivec3> nearestVoxelInRange(const scene::Volume& volume, const glm::dvec3& ijk,
-                                              float lower, float upper, int radius) {
+                                              float lower, float upper, int radius,
+                                              const GainField* gain) {
     if (volume.empty() || !std::isfinite(ijk.x) || !std::isfinite(ijk.y) || !std::isfinite(ijk.z)) {
         return std::nullopt;
     }
@@ -86,7 +87,11 @@ std::optional<glm::ivec3> nearestVoxelInRange(const scene::Volume& volume, const
     for (int k = from.z; k <= to.z; ++k) {
         for (int j = from.y; j <= to.y; ++j) {
             for (int i = from.x; i <= to.x; ++i) {
-                const float v = volume.value(i, j, k);
+                const float v =
+                    gain != nullptr
+                        ? static_cast<float>(volume.value(i, j, k) /
+                                             gain->at(volume.worldPosition(glm::dvec3(i, j, k))))
+                        : volume.value(i, j, k);
                 if (v < lower || v > upper) {
                     continue;
                 }
@@ -109,35 +114,56 @@ SegmentationOutcome runSegmentation(const SegmentationRequest& request, const Pr
     const auto started = std::chrono::steady_clock::now();
     const scene::Volume& full = *request.volume;
     SegmentationOptions options = request.segmentation;
-    if (!options.range) {
+    const bool correct = correctsIntensity(full, options);
+    if (!options.range && !correct) {
         options.range = defaultThresholdRange(full);
     }
     const int step = std::max(1, request.step);
     scene::Volume coarse;
     if (step > 1) {
         coarse = downsampledVolume(full, step);
-        if (options.seed) {
-            const glm::dvec3 at = glm::dvec3(*options.seed) / static_cast<double>(step);
-            options.seed =
-                nearestVoxelInRange(coarse, at, options.range->lower, options.range->upper, 1);
-            if (!options.seed) {
-                throw InvalidArgumentError(
-                    "the structure under the seed is too thin for the preview of every " +
-                    std::to_string(step) + "th voxel; Apply segments it at full resolution");
-            }
+    }
+    // The intensity correction is divided out here, before the seed is
+    // looked for: the range applies to the corrected values.
+    SegmentationOutcome outcome;
+    scene::Volume corrected;
+    if (correct) {
+        const scene::Volume& sampled = step > 1 ? coarse : full;
+        const GainField gain = options.gainField
+                                   ? *options.gainField
+                                   : estimateGainField(sampled, {}, progress.sub(0.0, 0.05));
+        corrected = correctedVolume(sampled, gain, progress.sub(0.05, 0.1));
+        options.correctIntensity = false;
+        options.gainField.reset();
+        outcome.intensityCorrected = true;
+        outcome.gainLowest = gain.lowest();
+        outcome.gainHighest = gain.highest();
+        if (!options.range) {
+            options.range = defaultThresholdRange(corrected);
         }
     }
-    const scene::Volume& volume = step > 1 ? coarse : full;
-    Segmentation segmented = segmentVessels(volume, options, progress.sub(0.0, 0.5));
+    const scene::Volume& volume = correct ? corrected : step > 1 ? coarse : full;
+    if (step > 1 && options.seed) {
+        const glm::dvec3 at = glm::dvec3(*options.seed) / static_cast<double>(step);
+        options.seed =
+            nearestVoxelInRange(volume, at, options.range->lower, options.range->upper, 1);
+        if (!options.seed) {
+            throw InvalidArgumentError(
+                "the structure under the seed is too thin for the preview of every " +
+                std::to_string(step) + "th voxel; Apply segments it at full resolution");
+        }
+    }
+    Segmentation segmented =
+        segmentVessels(volume, options, progress.sub(correct ? 0.1 : 0.0, 0.5));
     scene::Mesh mesh =
         extractSurface(segmented.labelMap, {}, request.surface, progress.sub(0.5, 1.0));
     mesh.name = step > 1 ? "vessels (preview)" : "vessels";
 
-    SegmentationOutcome outcome;
     outcome.range = segmented.range;
     outcome.componentsFound = segmented.componentsFound;
     outcome.componentsKept = segmented.labelMap.components.size();
     outcome.boneComponents = segmented.boneComponents;
+    outcome.cutOff = std::move(segmented.cutOff);
     outcome.triangles = mesh.triangleCount();
     outcome.step = step;
     auto scene = std::make_shared<scene::Scene>();

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "Histogram.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
 
@@ -101,37 +102,6 @@ std::vector<std::size_t> labelComponents(const std::vector<std::uint8_t>& mask, 
     return sizes;
 }
 
-/// Otsu's threshold of a histogram: the bin edge maximising the between-class variance.
-std::size_t otsuBin(const std::vector<std::size_t>& histogram) {
-    double total = 0.0;
-    double sum = 0.0;
-    for (std::size_t b = 0; b < histogram.size(); ++b) {
-        total += static_cast<double>(histogram[b]);
-        sum += static_cast<double>(b) * static_cast<double>(histogram[b]);
-    }
-    double weightBelow = 0.0;
-    double sumBelow = 0.0;
-    double best = -1.0;
-    std::size_t bestBin = 0;
-    for (std::size_t b = 0; b < histogram.size(); ++b) {
-        weightBelow += static_cast<double>(histogram[b]);
-        sumBelow += static_cast<double>(b) * static_cast<double>(histogram[b]);
-        const double weightAbove = total - weightBelow;
-        if (weightBelow <= 0.0 || weightAbove <= 0.0) {
-            continue;
-        }
-        const double meanBelow = sumBelow / weightBelow;
-        const double meanAbove = (sum - sumBelow) / weightAbove;
-        const double between =
-            weightBelow * weightAbove * (meanBelow - meanAbove) * (meanBelow - meanAbove);
-        if (between > best) {
-            best = between;
-            bestBin = b + 1;  // voxels in bins >= bestBin are "above"
-        }
-    }
-    return bestBin;
-}
-
 }  // namespace
 
 ThresholdRange defaultThresholdRange(const scene::Volume& volume) {
@@ -161,7 +131,7 @@ ThresholdRange defaultThresholdRange(const scene::Volume& volume) {
     const auto binValue = [&](std::size_t bin) {
         return static_cast<float>(lo + static_cast<double>(bin) / scale);
     };
-    const std::size_t first = otsuBin(histogram);
+    const std::size_t first = detail::otsuBin(histogram);
     const std::size_t above = std::accumulate(
         histogram.begin() + static_cast<std::ptrdiff_t>(first), histogram.end(), std::size_t{0});
     if (static_cast<double>(above) <= kBrightFraction * static_cast<double>(total)) {
@@ -176,17 +146,17 @@ ThresholdRange defaultThresholdRange(const scene::Volume& volume) {
     std::vector<std::size_t> body(histogram.size(), 0);
     std::copy(histogram.begin() + static_cast<std::ptrdiff_t>(first), histogram.end(),
               body.begin() + static_cast<std::ptrdiff_t>(first));
-    const std::size_t second = std::max(otsuBin(body), first);
+    const std::size_t second = std::max(detail::otsuBin(body), first);
     return {binValue(second), hi,
             "histogram: Otsu threshold of the voxels above the background's Otsu threshold (" +
                 text(binValue(first)) + ")"};
 }
 
-Segmentation segmentVessels(const scene::Volume& volume, const SegmentationOptions& options,
-                            const Progress& progress) {
-    if (volume.empty()) {
-        throw InvalidArgumentError("cannot segment an empty volume");
-    }
+namespace {
+
+/// segmentVessels() on the values to threshold: range, bone removal, components.
+Segmentation thresholdAndLabel(const scene::Volume& volume, const SegmentationOptions& options,
+                               const Progress& progress) {
     Segmentation result;
     result.range = options.range ? *options.range : defaultThresholdRange(volume);
     const float lower = result.range.lower;
@@ -304,6 +274,47 @@ Segmentation segmentVessels(const scene::Volume& volume, const SegmentationOptio
         map.labels[n] = labelOf[ids[n]];
     }
     progress.report(1.0, kStage);
+    return result;
+}
+
+}  // namespace
+
+bool intensityCorrectionDefault(const scene::Volume& volume) noexcept {
+    return volume.modality() == "MR";
+}
+
+bool correctsIntensity(const scene::Volume& volume, const SegmentationOptions& options) {
+    const bool correct = options.correctIntensity.value_or(intensityCorrectionDefault(volume));
+    if (correct && isCt(volume)) {
+        throw InvalidArgumentError(
+            "the intensity correction is for MR signal; CT values (HU) have no receive gain");
+    }
+    return correct;
+}
+
+Segmentation segmentVessels(const scene::Volume& volume, const SegmentationOptions& options,
+                            const Progress& progress) {
+    if (volume.empty()) {
+        throw InvalidArgumentError("cannot segment an empty volume");
+    }
+    if (!correctsIntensity(volume, options)) {
+        Segmentation result = thresholdAndLabel(volume, options, progress.sub(0.0, 0.9));
+        result.cutOff =
+            findCutOffVessels(volume, result.labelMap, result.range, {}, progress.sub(0.9, 1.0));
+        return result;
+    }
+    const GainField gain = options.gainField
+                               ? *options.gainField
+                               : estimateGainField(volume, {}, progress.sub(0.0, 0.1));
+    const scene::Volume corrected = correctedVolume(volume, gain, progress.sub(0.1, 0.2));
+    SegmentationOptions inner = options;
+    inner.correctIntensity = false;
+    Segmentation result = thresholdAndLabel(corrected, inner, progress.sub(0.2, 0.9));
+    result.intensityCorrected = true;
+    result.gainLowest = gain.lowest();
+    result.gainHighest = gain.highest();
+    result.cutOff =
+        findCutOffVessels(corrected, result.labelMap, result.range, {}, progress.sub(0.9, 1.0));
     return result;
 }
 

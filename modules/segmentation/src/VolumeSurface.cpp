@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <string>
 #include <utility>
 
@@ -136,6 +137,39 @@ scene::Mesh extractSurface(const scene::LabelMap& map, const std::vector<std::ui
     scene::computeNormals(mesh);
     progress.report(1.0, kStage);
     return mesh;
+}
+
+scene::DataArray surfaceLabels(const scene::Mesh& mesh, const scene::LabelMap& map) {
+    constexpr int kReach = 2;
+    scene::DataArray labels;
+    labels.name = "label";
+    labels.integer = true;
+    labels.values.reserve(mesh.vertexCount());
+    const glm::dmat4 toIndex = glm::inverse(map.indexToWorld);
+    for (const glm::vec3& p : mesh.positions) {
+        const glm::dvec3 ijk(toIndex * glm::dvec4(glm::dvec3(p), 1.0));
+        const glm::ivec3 centre(glm::round(ijk));
+        double best = std::numeric_limits<double>::max();
+        std::uint8_t label = 0;
+        for (int k = centre.z - kReach; k <= centre.z + kReach; ++k) {
+            for (int j = centre.y - kReach; j <= centre.y + kReach; ++j) {
+                for (int i = centre.x - kReach; i <= centre.x + kReach; ++i) {
+                    if (i < 0 || j < 0 || k < 0 || i >= map.dims.x || j >= map.dims.y ||
+                        k >= map.dims.z) {
+                        continue;
+                    }
+                    const std::uint8_t l = map.labels[map.index(i, j, k)];
+                    const glm::dvec3 d = glm::dvec3(i, j, k) - ijk;
+                    if (l != 0 && glm::dot(d, d) < best) {
+                        best = glm::dot(d, d);
+                        label = l;
+                    }
+                }
+            }
+        }
+        labels.values.push_back(static_cast<float>(label));
+    }
+    return labels;
 }
 
 }  // namespace vv::segmentation

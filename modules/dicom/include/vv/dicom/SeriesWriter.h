@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-// Writes a volume as a CT image series (DCMTK, one file per slice): the demo
-// series (`vesselview-cli demo --dicom`) and the tests' synthetic series.
+// Writes a volume as a CT (or MR) image series (DCMTK, one file per slice):
+// the demo series (`vesselview-cli demo --dicom`) and the tests' synthetic
+// series.
 
 #include <filesystem>
 #include <string>
@@ -20,6 +21,9 @@ struct CtSeriesWriteOptions {
     /// Instance numbers run backwards (slice 0 = highest number), so that
     /// readers that sort by instance number instead of position go wrong.
     bool reverseInstanceNumbers = true;
+    /// "CT" (CT Image Storage, HU) or "MR" (MR Image Storage: stored value =
+    /// the value, 0..65535, no rescale type; for synthetic MR volumes).
+    std::string modality = "CT";
 };
 
 /// Writes `volume` (values in HU) as a CT series into `folder` (created when
@@ -30,10 +34,12 @@ struct CtSeriesWriteOptions {
 /// Orientation (Patient) from indexToWorld() columns 0 and 1, Image Position
 /// (Patient) of slice k = origin + k × column 2, Pixel Spacing from the column
 /// lengths, Slice Thickness and Spacing Between Slices = the step along the
-/// normal. Returns the Series Instance UID. Reports progress ("Writing the
-/// CT series"); throws IoError (naming the file), InvalidArgumentError for an
-/// empty volume or a degenerate geometry, CancelledError (files already
-/// written stay).
+/// normal. With options.modality "MR": MR Image Storage, stored values =
+/// the values (clamped to 0..65535), Rescale Slope 1 / Intercept 0.
+/// Returns the Series Instance UID. Reports progress ("Writing the CT
+/// series"); throws IoError (naming the file), InvalidArgumentError for an
+/// empty volume, a degenerate geometry or another modality, CancelledError
+/// (files already written stay).
 std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volume& volume,
                           const CtSeriesWriteOptions& options = {}, const Progress& progress = {});
 

@@ -2,6 +2,9 @@
 #pragma once
 
 #include <filesystem>
+#include <string>
+#include <utility>
+#include <vector>
 
 #include "vv/scene/Mesh.h"
 
@@ -22,5 +25,34 @@ namespace vv::meshio {
 /// (indices out of range, array sizes not matching the vertex / triangle
 /// count, unnamed or duplicate array names).
 void writeVtp(const scene::Mesh& mesh, const std::filesystem::path& file);
+
+/// What a mesh file says of itself (provenance): where it came from and how
+/// it was made, for other tools and for the next reader.
+struct MeshFileMetadata {
+    /// Name-value pairs, in order; names are lower-case words with '_'.
+    std::vector<std::pair<std::string, std::string>> fields;
+    /// One short line for a format with little room (the STL header).
+    std::string summary;
+};
+
+/// The extensions writeMeshFile() writes: ".stl", ".vtp", ".ply".
+[[nodiscard]] const std::vector<std::string>& writableMeshExtensions();
+
+/// Writes `mesh` in the format of `file`'s extension (any case), atomically
+/// (as writeVtp: on failure nothing is left behind, an existing file stays):
+/// - .vtp: as writeVtp(), and each metadata field as a one-value string
+///   array of the field data, named as the field;
+/// - .stl: binary STL, the geometry only (STL has no normals per vertex, no
+///   arrays); the 80-byte header is metadata.summary (control characters
+///   made spaces, cut at 80 bytes on a UTF-8 character boundary; "solid" at
+///   its start, which readers take for ASCII STL, becomes "Solid");
+/// - .ply: binary little-endian PLY, the geometry (VTK's PLY writer writes
+///   neither normals nor scalar arrays) and one comment "name: value" per
+///   field (line breaks made spaces).
+/// Throws InvalidArgumentError naming `file` for another extension or an
+/// inconsistent mesh (as writeVtp), IoError naming `file` when it cannot be
+/// written.
+void writeMeshFile(const scene::Mesh& mesh, const std::filesystem::path& file,
+                   const MeshFileMetadata& metadata = {});
 
 }  // namespace vv::meshio

@@ -45,6 +45,11 @@ struct SceneSourceReport {
     std::size_t componentsFound = 0;
     std::size_t componentsKept = 0;
     std::size_t boneComponents = 0;
+    bool intensityCorrected = false;  ///< the intensity correction ran (MR)
+    double gainLowest = 1.0;          ///< its gain's extremes
+    double gainHighest = 1.0;
+    /// Bright tubes continuing past the segmentation (findCutOffVessels()).
+    std::vector<CutOffVessel> cutOff;
     std::vector<dicom::DicomWarning> warnings;
     /// The loaded volume (fromVolume), kept so that it can be segmented
     /// again without reading the files (the GUI's Segmentation panel).
@@ -90,6 +95,7 @@ struct SceneSourceReport {
 ///   --components N         keep the N largest components (1..255)
 ///   --seed I,J,K           keep the component under voxel (I, J, K)
 ///   --bone-removal on|off  bone removal (default: on for CT)
+///   --intensity-correction on|off  divide out the MR signal fall-off (default: on for MR)
 ///   --triangles N          surface decimation target (0 = none, else >= 4)
 /// sets it from `value` and returns true; returns false for other names.
 /// Throws InvalidArgumentError naming the option for a bad value.

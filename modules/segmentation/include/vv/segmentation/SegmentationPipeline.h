@@ -9,6 +9,7 @@
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "vv/core/Progress.h"
 #include "vv/scene/Mesh.h"
@@ -36,10 +37,13 @@ inline constexpr std::size_t kPreviewVoxels = 2000000;
 
 /// The voxel of `volume` with a value in [lower, upper] nearest to the
 /// continuous voxel index `ijk`, among the voxels at most `radius` away along
-/// each axis; nullopt when there is none (or `ijk` is not finite).
+/// each axis; nullopt when there is none (or `ijk` is not finite). With
+/// `gain`, the values are the corrected ones (value / gain, as the intensity
+/// correction thresholds them).
 [[nodiscard]] std::optional<glm::ivec3> nearestVoxelInRange(const scene::Volume& volume,
                                                             const glm::dvec3& ijk, float lower,
-                                                            float upper, int radius);
+                                                            float upper, int radius,
+                                                            const GainField* gain = nullptr);
 
 /// What to segment and how.
 struct SegmentationRequest {
@@ -62,14 +66,22 @@ struct SegmentationOutcome {
     std::size_t componentsFound = 0;
     std::size_t componentsKept = 0;
     std::size_t boneComponents = 0;
+    bool intensityCorrected = false;  ///< the intensity correction ran
+    double gainLowest = 1.0;          ///< its gain's extremes
+    double gainHighest = 1.0;
+    /// Bright tubes continuing past the segmentation (on the segmented grid).
+    std::vector<CutOffVessel> cutOff;
     std::size_t triangles = 0;
     int step = 1;
     double milliseconds = 0.0;  ///< segmentation and surface, wall clock
 };
 
-/// Runs `request` on the calling thread: downsamples when step > 1 (the seed
-/// then moves to the nearest in-range voxel of the coarse grid within one
-/// coarse voxel), segments (segmentVessels) and extracts the surface
+/// Runs `request` on the calling thread: downsamples when step > 1, divides
+/// the intensity correction's gain out when it applies (correctsIntensity();
+/// the request's gain field, else one estimated from the downsampled or full
+/// volume; no range: the default of the corrected values), moves a preview's
+/// seed to the nearest in-range voxel of the coarse grid within one coarse
+/// voxel, segments (segmentVessels) and extracts the surface
 /// (extractSurface). Throws InvalidArgumentError (no volume, bad
 /// options, a seed outside the range or, in a preview, on a structure too
 /// thin for the coarse grid), FormatError (no voxel in range), CancelledError.

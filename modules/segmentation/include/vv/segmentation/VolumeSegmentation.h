@@ -2,12 +2,14 @@
 #pragma once
 
 // Vessel segmentation of contrast-enhanced CT / MR angiography volumes:
-// a threshold range, connected components, optional bone removal; the result
-// is a label map on the volume's grid.
+// an optional intensity correction (MR), a threshold range, connected
+// components, optional bone removal; the result is a label map on the
+// volume's grid and the vessels the segmentation cut off.
 
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -15,6 +17,8 @@
 #include "vv/core/Progress.h"
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Volume.h"
+#include "vv/segmentation/CutOffVessels.h"
+#include "vv/segmentation/IntensityCorrection.h"
 
 namespace vv::segmentation {
 
@@ -44,9 +48,22 @@ struct ThresholdRange {
 /// Throws InvalidArgumentError for an empty volume.
 [[nodiscard]] ThresholdRange defaultThresholdRange(const scene::Volume& volume);
 
+/// Whether segmentVessels() corrects the intensity fall-off of `volume` by
+/// default: for MR (modality "MR"), not otherwise.
+[[nodiscard]] bool intensityCorrectionDefault(const scene::Volume& volume) noexcept;
+
 struct SegmentationOptions {
-    /// Threshold range; nullopt: defaultThresholdRange(). lower <= upper.
+    /// Threshold range; nullopt: defaultThresholdRange() of the values
+    /// thresholded (the corrected ones with the intensity correction).
+    /// lower <= upper.
     std::optional<ThresholdRange> range;
+    /// Divide a slow multiplicative intensity fall-off out before
+    /// thresholding (IntensityCorrection.h): range, default range and seed
+    /// then apply to the corrected values. nullopt:
+    /// intensityCorrectionDefault() (MR). Refused for CT (HU have no gain).
+    std::optional<bool> correctIntensity;
+    /// The gain to divide out; null: estimateGainField() of the volume.
+    std::shared_ptr<const GainField> gainField;
     /// Keep this many of the largest components (1..255); ignored with a seed.
     int keepComponents = 1;
     /// Keep only the component under this voxel (i, j, k) instead.
@@ -64,24 +81,42 @@ struct SegmentationOptions {
     double boneFraction = 0.2;      ///< in (0, 1]
 };
 
+/// Whether segmentVessels() corrects `volume`'s intensities with `options`:
+/// options.correctIntensity, else intensityCorrectionDefault(). Throws
+/// InvalidArgumentError when asked for a CT (HU have no receive gain).
+[[nodiscard]] bool correctsIntensity(const scene::Volume& volume,
+                                     const SegmentationOptions& options);
+
 struct Segmentation {
     scene::LabelMap labelMap;
     ThresholdRange range;             ///< the range used
     bool boneRemoved = false;         ///< bone removal ran
     std::size_t boneComponents = 0;   ///< bright components dropped as bone
     std::size_t componentsFound = 0;  ///< vessel components before keeping N
+    bool intensityCorrected = false;  ///< the intensity correction ran
+    /// Its gain's extremes (1, 1 without the correction).
+    double gainLowest = 1.0;
+    double gainHighest = 1.0;
+    /// Bright tubes that continue past the segmentation (findCutOffVessels()).
+    std::vector<CutOffVessel> cutOff;
 };
 
-/// Segments vessels in `volume`: voxels within the threshold range, bone-like
-/// components removed (see SegmentationOptions::removeBone), then the
-/// `keepComponents` largest connected components, or the one under `seed`.
+/// Segments vessels in `volume`: with the intensity correction, divides the
+/// gain out first (estimateGainField(), correctedVolume()); then voxels
+/// within the threshold range, bone-like components removed (see
+/// SegmentationOptions::removeBone), then the `keepComponents` largest
+/// connected components, or the one under `seed`; last, findCutOffVessels()
+/// on the values thresholded. Without the correction the label map does not
+/// depend on the correction code at all.
 /// Memory: the label map plus, while labelling, 5 bytes per voxel (mask and
 /// component ids) and the flood fill's stack (at most 8 bytes per voxel of
-/// the largest component).
+/// the largest component); the correction 4 bytes per voxel more, the check
+/// 1 bit per voxel and 16 bytes per voxel it grows.
 /// Reports progress ("Segmenting"); throws InvalidArgumentError (empty volume,
 /// lower > upper or non-finite bounds, keepComponents outside 1..255, seed
-/// outside the volume or not within the range, boneFraction outside (0, 1]),
-/// FormatError when no voxel is in the range, CancelledError.
+/// outside the volume or not within the range, boneFraction outside (0, 1],
+/// the intensity correction asked for a CT), FormatError when no voxel is in
+/// the range, CancelledError.
 [[nodiscard]] Segmentation segmentVessels(const scene::Volume& volume,
                                           const SegmentationOptions& options = {},
                                           const Progress& progress = {});

@@ -40,4 +40,10 @@ struct SurfaceOptions {
                                          const SurfaceOptions& options = {},
                                          const Progress& progress = {});
 
+/// The label of each vertex of `mesh` (world, LPS mm) in `map`: of the
+/// labelled voxels within two voxels of it (index space, per axis), the
+/// nearest; 0 when there is none. An integer point array named "label"
+/// (no unit) whose label names (Mesh::labelNames) the caller may add.
+[[nodiscard]] scene::DataArray surfaceLabels(const scene::Mesh& mesh, const scene::LabelMap& map);
+
 }  // namespace vv::segmentation
