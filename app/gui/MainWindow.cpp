@@ -587,9 +587,8 @@ void MainWindow::showScene(const std::shared_ptr<const scene::Scene>& scene, con
 void MainWindow::sceneWasShown() {
     // Scenes from DICOM are in the patient frame (LPS): the marker names patient sides.
     render::ViewAnnotations annotations = viewer_->viewAnnotations();
-    annotations.frame = document_->seriesUid().empty() && document_->dicomSource().isEmpty()
-                            ? render::SceneFrame::Unknown
-                            : render::SceneFrame::PatientLps;
+    annotations.frame =
+        document_->scene() ? document_->scene()->frame : render::SceneFrame::Unknown;
     viewer_->setViewAnnotations(annotations);
     syncControls();
     const QString& title = document_->title();

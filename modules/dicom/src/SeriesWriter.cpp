@@ -116,6 +116,7 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
         put(DCM_PixelSpacing, pixelSpacing);
         put(DCM_SliceThickness, ds(thickness));
         put(DCM_SpacingBetweenSlices, ds(thickness));
+        put(DCM_PatientPosition, options.patientPosition);
         put(DCM_KVP, "120");
         put(DCM_RescaleIntercept, "-1024");
         put(DCM_RescaleSlope, "1");

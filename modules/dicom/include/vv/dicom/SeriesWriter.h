@@ -17,6 +17,10 @@ struct CtSeriesWriteOptions {
     std::string studyDescription = "VesselView demo";
     std::string patientName = "VesselView^Demo";  ///< synthetic; never logged
     std::string patientId = "VV-DEMO";
+    /// Patient Position (0018,5100): how the patient lay, "HFS" (head first,
+    /// supine), "FFS" (feet first), "HFP", …. Only recorded: the geometry is
+    /// indexToWorld()'s, in the patient frame whatever the position.
+    std::string patientPosition = "HFS";
     /// Instance numbers run backwards (slice 0 = highest number), so that
     /// readers that sort by instance number instead of position go wrong.
     bool reverseInstanceNumbers = true;
@@ -30,7 +34,7 @@ struct CtSeriesWriteOptions {
 /// Orientation (Patient) from indexToWorld() columns 0 and 1, Image Position
 /// (Patient) of slice k = origin + k × column 2, Pixel Spacing from the column
 /// lengths, Slice Thickness and Spacing Between Slices = the step along the
-/// normal. Returns the Series Instance UID. Reports progress ("Writing the
+/// normal, Patient Position. Returns the Series Instance UID. Reports progress ("Writing the
 /// CT series"); throws IoError (naming the file), InvalidArgumentError for an
 /// empty volume or a degenerate geometry, CancelledError (files already
 /// written stay).
