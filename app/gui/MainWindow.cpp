@@ -173,6 +173,9 @@ void MainWindow::connectDocument() {
     connect(document_, &DocumentController::sceneChanged, this, &MainWindow::showScene);
     connect(document_, &DocumentController::sessionReady, this, [this](const Session& session) {
         applySession(*viewer_, session);
+        if (session.measurement) {
+            measure_->restore(*session.measurement);  // after the camera: the depth in its view
+        }
         if (!session.layout.isEmpty()) {
             restoreState(session.layout, kLayoutVersion);
         }
@@ -621,6 +624,7 @@ bool MainWindow::saveSessionTo(const QString& path) {
     Session view = captureSession(*viewer_, {});
     view.layout = saveState(kLayoutVersion);
     view.slices = slices_->sessionState();
+    view.measurement = measure_->completePoints();
     if (!document_->saveSession(path, std::move(view), segmentationPanel_->segmentationOptions(),
                                 segmentationPanel_->surfaceOptions())) {
         return false;
