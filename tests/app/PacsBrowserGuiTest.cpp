@@ -274,6 +274,35 @@ TEST_F(PacsBrowserGuiTest, RetrieveWithGetFillsTheStoreAndOpenShowsTheSeries) {
     EXPECT_TRUE(waitForFrames());
 }
 
+TEST_F(PacsBrowserGuiTest, OpenFollowsTheSelectionAndTheReopenedBrowserStartsClean) {
+    auto* b = browser();
+    ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));
+    ASSERT_TRUE(selectStudy(b));
+    ASSERT_TRUE(retrieve(b, b->retrieveStudyButton())) << b->status().toStdString();
+    EXPECT_TRUE(b->openButton()->isEnabled());
+    // Nothing selected: nothing to open.
+    b->studyTable()->clearSelection();
+    QCoreApplication::processEvents();
+    EXPECT_FALSE(b->openButton()->isEnabled());
+    ASSERT_TRUE(selectStudy(b));
+    EXPECT_TRUE(b->openButton()->isEnabled()) << "the retrieved study selected again";
+
+    // Closed and opened again (DICOM > Query PACS…): the last retrieve's
+    // "48 of 48 images", its status and Open are gone; the search's rows stay.
+    b->close();
+    ASSERT_TRUE(waitUntil([b] { return !b->isVisible(); }, 10000));
+    ASSERT_EQ(browser(), b) << "the menu shows the same browser again";
+    EXPECT_EQ(b->progressBar()->value(), 0);
+    EXPECT_FALSE(b->progressBar()->text().contains(QStringLiteral("images")))
+        << b->progressBar()->text().toStdString();
+    EXPECT_FALSE(b->status().contains(QStringLiteral("Done"))) << b->status().toStdString();
+    EXPECT_EQ(b->status(), QStringLiteral("Studies found: 1."));
+    EXPECT_FALSE(b->openButton()->isEnabled());
+    EXPECT_EQ(b->studyTable()->rowCount(), 1);
+    EXPECT_TRUE(b->retrieveStudyButton()->isEnabled() ||
+                b->studyTable()->selectionModel()->selectedRows().isEmpty());
+}
+
 TEST_F(PacsBrowserGuiTest, CancelMidRetrieveShowsCancelledAndStoresNothing) {
     auto* b = browser();
     ASSERT_TRUE(search(b, QStringLiteral("VV-GUI-1")));

@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSettings>
+#include <QShowEvent>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTimer>
@@ -71,6 +72,14 @@ QDateEdit* dateField(QWidget* parent, const QString& name) {
     edit->setSpecialValueText(PacsBrowser::tr("any"));
     edit->setDate(kAnyDate);
     return edit;
+}
+
+QString noNodeText() {
+    return PacsBrowser::tr("No PACS node is set up yet: add one in DICOM > Preferences.");
+}
+
+QString studiesFoundText(int count) {
+    return PacsBrowser::tr("Studies found: %1.").arg(QLocale().toString(count));
 }
 
 std::string dicomDate(const QDateEdit* edit) {
@@ -271,7 +280,7 @@ void PacsBrowser::reloadSettings() {
         node_->setCurrentIndex(index);
     }
     if (settings_.nodes.empty()) {
-        setStatus(tr("No PACS node is set up yet: add one in DICOM > Preferences."), true);
+        setStatus(noNodeText(), true);
     }
     updateMoveNote();
     updateButtons();
@@ -328,8 +337,7 @@ void PacsBrowser::startSearch() {
             resultsNode_ = ok ? name : std::string();
             showStudies(answer.first);
             if (ok) {
-                setStatus(tr("Studies found: %1.")
-                              .arg(QLocale().toString(static_cast<int>(answer.first.size()))));
+                setStatus(studiesFoundText(static_cast<int>(answer.first.size())));
             } else {
                 setStatus(failureText(answer.second, peer), true);
             }
@@ -461,9 +469,51 @@ void PacsBrowser::updateButtons() {
     retrieveStudy_->setEnabled(!busy && hasStudy);
     retrieveSeries_->setEnabled(!busy && hasSeries);
     cancel_->setEnabled(retrieve_ != nullptr && !retrieve_->stop.stop_requested());
-    open_->setEnabled(retrieve_ == nullptr && !retrievedFolder_.isEmpty());
+    // Open opens what was retrieved: only while that is what is selected.
+    const auto [study, series] = selectedUids();
+    open_->setEnabled(retrieve_ == nullptr && !retrievedFolder_.isEmpty() &&
+                      study == retrievedStudy_.toStdString() &&
+                      (retrievedSeries_.empty() || series == retrievedSeries_));
     useGet_->setEnabled(retrieve_ == nullptr);
     useMove_->setEnabled(retrieve_ == nullptr);
+}
+
+std::pair<std::string, std::string> PacsBrowser::selectedUids() const {
+    std::pair<std::string, std::string> uids;
+    const int studyRow = studies_->selectionModel()->hasSelection() ? studies_->currentRow() : -1;
+    if (studyRow < 0 || studyRow >= static_cast<int>(studyResults_.size())) {
+        return uids;
+    }
+    uids.first = studyResults_[static_cast<std::size_t>(studyRow)].studyInstanceUid;
+    const int seriesRow = series_->selectionModel()->hasSelection() ? series_->currentRow() : -1;
+    if (seriesRow >= 0 && seriesRow < static_cast<int>(seriesResults_.size())) {
+        uids.second = seriesResults_[static_cast<std::size_t>(seriesRow)].seriesInstanceUid;
+    }
+    return uids;
+}
+
+void PacsBrowser::forgetRetrieve() {
+    retrievedFolder_.clear();
+    retrievedStudy_.clear();
+    retrievedSeries_.clear();
+    progress_->setValue(0);
+    progress_->resetFormat();
+    // What the tables show still holds; anything said of a retrieve does not.
+    if (settings_.nodes.empty()) {
+        setStatus(noNodeText(), true);
+    } else if (resultsNode() != nullptr) {
+        setStatus(studiesFoundText(studies_->rowCount()));
+    } else {
+        setStatus(QString());
+    }
+    updateButtons();
+}
+
+void PacsBrowser::showEvent(QShowEvent* event) {
+    QDialog::showEvent(event);
+    if (!event->spontaneous() && retrieve_ == nullptr) {
+        forgetRetrieve();
+    }
 }
 
 void PacsBrowser::startRetrieve(bool wholeStudy) {
@@ -505,6 +555,7 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
     retrievedFolder_.clear();
     retrievedStore_ = QString::fromStdString(job.settings.storeFolder.string());
     retrievedStudy_ = QString::fromStdString(job.request.studyInstanceUid);
+    retrievedSeries_ = job.request.seriesInstanceUid;
     retrieve_ = std::make_shared<RetrieveControl>();
     progress_->setValue(0);
     progress_->resetFormat();
