@@ -27,10 +27,13 @@
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsWidgets.h"
 #include "gui/pacs/RetrieveJob.h"
+#include "vv/core/Log.h"
 
 namespace vv::gui {
 
 namespace {
+
+constexpr log::Category kLog("vv.gui");
 
 /// The "any" date of the date fields (their minimum).
 const QDate kAnyDate(1900, 1, 1);
@@ -292,6 +295,7 @@ QString PacsBrowser::status() const {
 
 void PacsBrowser::setStatus(const QString& message, bool problem) {
     status_->setText(message);
+    status_->setToolTip(QString());
     showAsProblem(status_, problem);
 }
 
@@ -564,15 +568,17 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
     updateButtons();
     runInBackground(
         this, [job, control = retrieve_] { return runRetrieve(job, *control); },
-        [this, peer = job.node](const RetrieveOutcome& outcome) {
+        [this, peer = job.node, name = text(node->name)](const RetrieveOutcome& outcome) {
             progressTimer_->stop();
             retrieve_.reset();
             retrieveEnded(outcome);
-            if (outcome.failure.kind != NetworkFailure::Kind::None) {
-                setStatus(outcome.failure.kind == NetworkFailure::Kind::Cancelled
-                              ? tr("Retrieve cancelled: nothing of it was kept.")
-                              : failureText(outcome.failure, peer),
-                          outcome.failure.kind != NetworkFailure::Kind::Cancelled);
+            if (outcome.failure.kind == NetworkFailure::Kind::Cancelled) {
+                setStatus(tr("Retrieve cancelled: nothing of it was kept."));
+            } else if (outcome.failure.kind != NetworkFailure::Kind::None) {
+                // One plain sentence; the technical detail in the tooltip and the log.
+                setStatus(retrieveFailureText(outcome.failure, name, peer, outcome.kept), true);
+                status_->setToolTip(tr("Details: %1").arg(text(outcome.failure.detail)));
+                log::warning(kLog, "retrieve failed: " + outcome.failure.detail);
             }
             updateButtons();
             emit retrieveFinished(outcome.failure.kind == NetworkFailure::Kind::None &&
