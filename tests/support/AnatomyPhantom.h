@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <glm/gtc/matrix_transform.hpp>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -67,6 +68,11 @@ struct PhantomGrid {
     glm::dvec3 slice{0.0, 0.0, 1.0};
     std::string patientPosition = "HFS";
 };
+
+/// gtest's name for a grid in messages.
+inline void PrintTo(const PhantomGrid& grid, std::ostream* out) {
+    *out << grid.name;
+}
 
 /// Head first supine, axial: rows to the patient's left, columns posterior,
 /// slices from the feet to the head.
