@@ -106,7 +106,11 @@ TEST_F(AnatomicalViewGuiTest, TheButtonsAreNamedByAnatomyForPatientScenesOnly) {
     }
     EXPECT_EQ(cameraButton("viewLeft")->text(), gui::panels::DisplayPanel::tr("Left lateral"));
     EXPECT_EQ(cameraButton("viewRight")->text(), gui::panels::DisplayPanel::tr("Right lateral"));
-    EXPECT_FALSE(cameraButton("viewAnterior")->toolTip().isEmpty());
+    // Each says where it looks from and what is up.
+    EXPECT_TRUE(cameraButton("viewAnterior")->toolTip().contains(QStringLiteral("coronal slice")))
+        << cameraButton("viewAnterior")->toolTip().toStdString();
+    EXPECT_TRUE(cameraButton("viewSuperior")->toolTip().contains(QStringLiteral("anterior up")))
+        << cameraButton("viewSuperior")->toolTip().toStdString();
     // A mesh has no anatomy: its former home view (down -z, +y up) and names.
     window_->setScene(makeTubeScene(), QStringLiteral("tube"));
     ASSERT_TRUE(waitForFrames(1));

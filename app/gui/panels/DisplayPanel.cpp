@@ -12,6 +12,7 @@
 #include <QLocale>
 #include <QSlider>
 #include <QToolButton>
+#include <algorithm>
 #include <cmath>
 
 #include "gui/ViewerWidget.h"
@@ -284,7 +285,6 @@ void DisplayPanel::labelCameraButtons() {
     for (std::size_t n = 0; n < anatomicalButtons_.size(); ++n) {
         const render::AnatomicalView view = render::allAnatomicalViews()[n];
         anatomicalButtons_.at(n)->setText(anatomicalLabel(view, frame));
-        anatomicalButtons_.at(n)->setToolTip(anatomicalToolTip(view, frame));
     }
 }
 
@@ -387,9 +387,19 @@ void DisplayPanel::updateApplicability() {
                   tr("Where the light comes from, above or below: positive = from above"), noData);
     setApplicable(lightReset_, hasScene,
                   tr("The default light: a little above and left of the eye"), noData);
+    const render::SceneFrame frame =
+        hasScene ? viewer_->scene()->frame : render::SceneFrame::Unknown;
     for (auto* button : cameraButtons_->findChildren<QToolButton*>()) {
-        setApplicable(button, hasScene, tr("Move the camera to this view of the data"),
-                      tr("No data loaded"));
+        // An anatomical view says where it looks from and what is up.
+        const auto anatomical =
+            std::find(anatomicalButtons_.begin(), anatomicalButtons_.end(), button);
+        const QString what =
+            anatomical == anatomicalButtons_.end()
+                ? tr("Move the camera to this view of the data")
+                : anatomicalToolTip(render::allAnatomicalViews()[static_cast<std::size_t>(
+                                        anatomical - anatomicalButtons_.begin())],
+                                    frame);
+        setApplicable(button, hasScene, what, tr("No data loaded"));
     }
 }
 

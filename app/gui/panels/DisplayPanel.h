@@ -71,7 +71,8 @@ class DisplayPanel : public QWidget {
     /// Where the camera looks from and what is up, and for meshes the axes.
     [[nodiscard]] static QString anatomicalToolTip(render::AnatomicalView view,
                                                    render::SceneFrame frame);
-    /// Names the anatomical buttons for the viewer's scene's frame.
+    /// Names the anatomical buttons for the viewer's scene's frame (their
+    /// tooltips: updateApplicability()).
     void labelCameraButtons();
     void applyCue();
     void applyBackground();
