@@ -407,6 +407,9 @@ TEST_F(PacsBrowserGuiKillTest, OrthancKilledMidRetrieveGivesAClearMessageAndStor
                     ->toolTip()
                     .contains(QString::fromStdString(vv::pacs::describe(orthanc_->node()))));
     EXPECT_FALSE(b->openButton()->isEnabled());
+    EXPECT_FALSE(b->progressBar()->text().contains(QStringLiteral("images")))
+        << "the bar counts no images that were not kept: "
+        << b->progressBar()->text().toStdString();
     // And it is true: the store holds nothing of it, nothing half-written.
     EXPECT_TRUE(vv::pacs::LocalStore(store_).studies().empty());
     EXPECT_TRUE(!fs::exists(store_ / ".incoming") || fs::is_empty(store_ / ".incoming"));

@@ -589,6 +589,7 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
 void PacsBrowser::retrieveEnded(const RetrieveOutcome& outcome) {
     if (outcome.failure.kind != NetworkFailure::Kind::None) {
         progress_->setValue(0);
+        progress_->resetFormat();  // no "64 of 400 images": none of them is kept
         return;
     }
     if (outcome.notStoredByListener) {
