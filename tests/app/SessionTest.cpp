@@ -326,7 +326,7 @@ TEST(SessionFile, TheSliceStateRoundTripsAndIsChecked) {
     EXPECT_FALSE(noneBack.slices->cursor.has_value());
 
     // Bad values are refused naming the field.
-    const BadValue cases[] = {
+    const auto cases = std::to_array<BadValue>({
         {"slices-layout.vvs", "\"coronal\",", "\"quad\",", "slices.layout"},
         {"slices-width.vvs", "\"width\": 1800", "\"width\": 0", "slices.window.width"},
         {"slices-level.vvs", "\"level\": 400", "\"level\": \"NaN\"", "slices.window.level"},
@@ -337,7 +337,7 @@ TEST(SessionFile, TheSliceStateRoundTripsAndIsChecked) {
          "slices.axial.position"},
         {"slices-pan.vvs", "4.25", "\"left\"", "slices.axial.pan[0]"},
         {"slices-cursor.vvs", "-20.5", "1e300", "slices.cursor[0]"},
-    };
+    });
     expectRefused(json, cases);
     QByteArray missing = json;
     missing.replace("\"outline\": true", "\"outlined\": true");
@@ -362,11 +362,11 @@ TEST(SessionFile, TheMeasurementRoundTripsAndIsChecked) {
                                       sessionDir() / "o.vvs")
                      .measurement.has_value());
     // Bad values are refused naming the field.
-    const BadValue cases[] = {
+    const auto cases = std::to_array<BadValue>({
         {"m-value.vvs", "-3.75", "\"deep\"", "measurement.points[1][2]"},
         {"m-huge.vvs", "12.5", "1e300", "measurement.points[1][1]"},
         {"m-points.vvs", "\"points\"", "\"pints\"", "measurement.points"},
-    };
+    });
     expectRefused(json, cases);
     QJsonObject oneOnly = QJsonDocument::fromJson(json).object();
     oneOnly.insert(QStringLiteral("measurement"),

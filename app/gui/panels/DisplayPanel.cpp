@@ -391,7 +391,7 @@ void DisplayPanel::updateApplicability() {
         hasScene ? viewer_->scene()->frame : render::SceneFrame::Unknown;
     for (auto* button : cameraButtons_->findChildren<QToolButton*>()) {
         // An anatomical view says where it looks from and what is up.
-        const auto anatomical =
+        auto* const anatomical =
             std::find(anatomicalButtons_.begin(), anatomicalButtons_.end(), button);
         const QString what =
             anatomical == anatomicalButtons_.end()
