@@ -1327,6 +1327,60 @@ Ersetzen?</translation>
         <source>Failed with %1: %2</source>
         <translation>Fehler mit %1: %2</translation>
     </message>
+    <message>
+        <source>%1 closed the connection. Try again; if it keeps happening, check that the PACS knows our AE title, host and port, or ask the PACS administrator.</source>
+        <translation>%1 hat die Verbindung geschlossen. Versuchen Sie es erneut; wenn es wieder geschieht, prüfen Sie, ob das PACS unseren AE-Titel, Host und Port kennt, oder fragen Sie die PACS-Administration.</translation>
+    </message>
+    <message>
+        <source>the PACS closed the connection</source>
+        <translation>Das PACS hat die Verbindung geschlossen</translation>
+    </message>
+    <message>
+        <source>the PACS stopped answering</source>
+        <translation>Das PACS antwortete nicht mehr</translation>
+    </message>
+    <message>
+        <source>the PACS reported images it could not send</source>
+        <translation>Das PACS meldete Bilder, die es nicht senden konnte</translation>
+    </message>
+    <message>
+        <source>the secure connection failed</source>
+        <translation>Die sichere Verbindung ist gescheitert</translation>
+    </message>
+    <message>
+        <source>the PACS sent an answer that breaks the DICOM standard</source>
+        <translation>Das PACS sandte eine Antwort, die gegen den DICOM-Standard verstößt</translation>
+    </message>
+    <message>
+        <source>before the first image arrived</source>
+        <translation>vor dem ersten Bild</translation>
+    </message>
+    <message>
+        <source>after %1 of %2 images</source>
+        <translation>nach %1 von %2 Bildern</translation>
+    </message>
+    <message>
+        <source>Nothing was kept.</source>
+        <translation>Nichts wurde behalten.</translation>
+    </message>
+    <message>
+        <source>The transfer from %1 stopped %2: %3. %4Try again, or ask the PACS administrator if it keeps happening.</source>
+        <translation>Die Übertragung von %1 brach %2 ab: %3. %4Versuchen Sie es erneut, oder fragen Sie die PACS-Administration, wenn es wieder geschieht.</translation>
+    </message>
+    <message numerus="yes">
+        <source>after %n image(s)</source>
+        <translation>
+            <numerusform>nach %n Bild</numerusform>
+            <numerusform>nach %n Bildern</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s) of it were kept in the local study store.</source>
+        <translation>
+            <numerusform>%n Bild davon wurde im lokalen Studienspeicher behalten.</numerusform>
+            <numerusform>%n Bilder davon wurden im lokalen Studienspeicher behalten.</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::NetworkPreferencesDialog</name>
@@ -1771,6 +1825,10 @@ Ersetzen?</translation>
     <message>
         <source>The patient&apos;s name to search for, e.g. Doe*: * matches any text, ? any one character</source>
         <translation>Der gesuchte Patientenname, z. B. Muster*: * steht für beliebigen Text, ? für ein beliebiges Zeichen</translation>
+    </message>
+    <message>
+        <source>Details: %1</source>
+        <translation>Details: %1</translation>
     </message>
 </context>
 <context>
@@ -2905,6 +2963,62 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>The default light: a little above and left of the eye</source>
         <translation>Das Standardlicht: etwas über und links vom Auge</translation>
+    </message>
+    <message>
+        <source>Left lateral</source>
+        <translation>Links lateral</translation>
+    </message>
+    <message>
+        <source>Right lateral</source>
+        <translation>Rechts lateral</translation>
+    </message>
+    <message>
+        <source>From -y, +z up (the anterior view of data in patient LPS coordinates)</source>
+        <translation>Von -y, +z oben (die anteriore Ansicht von Daten in LPS-Patientenkoordinaten)</translation>
+    </message>
+    <message>
+        <source>From +y, +z up (the posterior view of data in patient LPS coordinates)</source>
+        <translation>Von +y, +z oben (die posteriore Ansicht von Daten in LPS-Patientenkoordinaten)</translation>
+    </message>
+    <message>
+        <source>From +x, +z up (the left lateral view of data in patient LPS coordinates)</source>
+        <translation>Von +x, +z oben (die Ansicht links lateral von Daten in LPS-Patientenkoordinaten)</translation>
+    </message>
+    <message>
+        <source>From -x, +z up (the right lateral view of data in patient LPS coordinates)</source>
+        <translation>Von -x, +z oben (die Ansicht rechts lateral von Daten in LPS-Patientenkoordinaten)</translation>
+    </message>
+    <message>
+        <source>From +z, -y up (the superior view of data in patient LPS coordinates)</source>
+        <translation>Von +z, -y oben (die superiore Ansicht von Daten in LPS-Patientenkoordinaten)</translation>
+    </message>
+    <message>
+        <source>From -z, -y up (the inferior view of data in patient LPS coordinates)</source>
+        <translation>Von -z, -y oben (die inferiore Ansicht von Daten in LPS-Patientenkoordinaten)</translation>
+    </message>
+    <message>
+        <source>From the front, head up: the patient&apos;s left on the right, as on the coronal slice (the view a DICOM scene opens in)</source>
+        <translation>Von vorn, Kopf oben: die linke Seite des Patienten rechts, wie im koronalen Schnitt (die Ansicht, in der eine DICOM-Szene öffnet)</translation>
+    </message>
+    <message>
+        <source>From behind, head up: the patient&apos;s left on the left</source>
+        <translation>Von hinten, Kopf oben: die linke Seite des Patienten links</translation>
+    </message>
+    <message>
+        <source>From the patient&apos;s left, head up: anterior on the left</source>
+        <translation>Von der linken Seite des Patienten, Kopf oben: anterior links</translation>
+    </message>
+    <message>
+        <source>From the patient&apos;s right, head up: anterior on the right</source>
+        <translation>Von der rechten Seite des Patienten, Kopf oben: anterior rechts</translation>
+    </message>
+    <message>
+        <source>From the head towards the feet, anterior up: the patient&apos;s left on the left</source>
+        <translation>Vom Kopf zu den Füßen, anterior oben: die linke Seite des Patienten links</translation>
+    </message>
+    <message>
+        <source>From the feet towards the head, anterior up: the patient&apos;s left on the right, as on the axial slice</source>
+        <translation>Von den Füßen zum Kopf, anterior oben: die linke Seite des Patienten rechts, wie im axialen Schnitt</translation>
     </message>
 </context>
 <context>

@@ -41,4 +41,21 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>vv::gui::NetworkFailure</name>
+    <message numerus="yes">
+        <source>after %n image(s)</source>
+        <translation>
+            <numerusform>after %n image</numerusform>
+            <numerusform>after %n images</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n image(s) of it were kept in the local study store.</source>
+        <translation>
+            <numerusform>%n image of it was kept in the local study store.</numerusform>
+            <numerusform>%n images of it were kept in the local study store.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

@@ -83,6 +83,7 @@ scene::Scene cornerScene(const scene::Volume& volume) {
     }
     scene::Scene scene;
     scene.meshes.push_back(std::move(corners));
+    scene.frame = scene::SceneFrame::PatientLps;  // a volume's world is LPS mm
     return scene;
 }
 
@@ -217,9 +218,6 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         offscreenOptions(parsed, volume ? cornerScene(*volume) : scene, parsed.input);
     options.volume = volume;
     options.isoValue = iso;
-    if (volume || !source.seriesInstanceUid.empty()) {
-        options.annotations.frame = render::SceneFrame::PatientLps;  // DICOM: patient LPS
-    }
     const render::Camera camera = *options.camera;
 
     ensureGuiApplication();

@@ -141,7 +141,10 @@ render::Camera cameraFor(const RenderOptionValues& values, const scene::Scene& s
         camera =
             render::presetCamera(scene, width, height, values.view->preset, values.view->rotation);
     } else {
+        // The scene's home view: anterior for the patient frame, as the GUI opens it.
         camera.setViewport(width, height);
+        camera.setHomeRotation(render::homeRotation(scene.frame));
+        camera.setRotation(camera.homeRotation());
         camera.fit(scene.bounds());
     }
     return camera;
@@ -168,7 +171,7 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
     options.legends = values.legends;
     options.annotations = {.orientationMarker = values.orientationMarker,
                            .scaleBar = values.scaleBar,
-                           .frame = render::SceneFrame::Unknown};
+                           .frame = scene.frame};  // DICOM: patient LPS
     options.vss = values.vss;
     options.ao = values.ao;
     options.antialiasing = values.antialiasing;

@@ -78,8 +78,8 @@ void parseSettingValue(Arguments& args, std::string_view key, app::DisplaySettin
 
 /// The camera of `values` for `scene` at width x height: the session's
 /// (app::sessionCamera), the named view (presetCamera fits the vertices) or
-/// the default orientation fitted to the bounding box, as OffscreenRenderer
-/// does.
+/// the scene's home orientation (render::homeRotation: anterior for DICOM)
+/// fitted to the bounding box, as OffscreenRenderer and the GUI do.
 [[nodiscard]] render::Camera cameraFor(const RenderOptionValues& values, const scene::Scene& scene,
                                        int width, int height);
 

@@ -310,9 +310,6 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
                                    : segmentation::loadSceneSource(input, a.source, {}, &loaded);
     report::ReportJobOptions job;
     job.view = offscreenOptions(a, scene, input);
-    if (!loaded.seriesInstanceUid.empty()) {
-        job.view.annotations.frame = render::SceneFrame::PatientLps;  // DICOM: patient LPS
-    }
     job.viewCaption = report::namedViewCaption(a.viewName);
     job.viewDescription = !a.viewName.empty() ? report::namedViewCaption(a.viewName)
                           : a.sessionCamera ? QCoreApplication::translate("vv::report::ReportText",

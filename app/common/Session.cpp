@@ -137,6 +137,26 @@ void readCamera(const SessionReader& r, const QJsonObject& root, Session& s) {
     s.fieldOfView = r.real(camera, cam, "fieldOfView", 1.001, 169.999);
 }
 
+/// Reads the "measurement" object: two finite points.
+std::array<glm::vec3, 2> readMeasurement(const SessionReader& r, const QJsonValue& value) {
+    const QString w = QStringLiteral("measurement");
+    if (!value.isObject()) {
+        r.fail(w, QStringLiteral("must be an object"));
+    }
+    const QJsonValue points = r.get(value.toObject(), w, "points");
+    if (!points.isArray() || points.toArray().size() != 2) {
+        r.fail(w + QStringLiteral(".points"), QStringLiteral("must be two points [x, y, z]"));
+    }
+    std::array<glm::vec3, 2> read{};
+    for (qsizetype i = 0; i < 2; ++i) {
+        const auto n = r.numbers(points.toArray()[i], w + QStringLiteral(".points[%1]").arg(i), 3,
+                                 -kHuge, kHuge);
+        read.at(static_cast<std::size_t>(i)) =
+            glm::vec3(static_cast<float>(n[0]), static_cast<float>(n[1]), static_cast<float>(n[2]));
+    }
+    return read;
+}
+
 std::filesystem::path toPath(const QString& file) {
     return {QFile::encodeName(file).toStdString()};
 }
@@ -173,6 +193,12 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
     }
     if (s.slices) {
         root.insert(QStringLiteral("slices"), detail::slicesToJson(*s.slices));
+    }
+    if (s.measurement) {
+        root.insert(
+            QStringLiteral("measurement"),
+            QJsonObject{{QStringLiteral("points"),
+                         QJsonArray{array3(s.measurement->at(0)), array3(s.measurement->at(1))}}});
     }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
@@ -223,6 +249,9 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
     }
     if (const QJsonValue slices = root.value(QLatin1String("slices")); !slices.isUndefined()) {
         s.slices = detail::readSlices(r, slices);
+    }
+    if (const QJsonValue m = root.value(QLatin1String("measurement")); !m.isUndefined()) {
+        s.measurement = readMeasurement(r, m);
     }
     return s;
 }

@@ -50,6 +50,7 @@ namespace vv::app {
 ///                   "axial": { "position": mm, "zoom", "pan": [right, down] },
 ///                   "coronal": { ... }, "sagittal": { ... },
 ///                   "cursor": [x, y, z] },                      // optional
+///       "measurement": { "points": [[x, y, z], [x, y, z]] },     // optional
 ///       "layout": "<base64 QMainWindow::saveState>" }            // optional
 ///
 /// The keys below "view" are the settings' keys (SettingsSchema.h), which
@@ -117,6 +118,11 @@ struct Session : DisplaySettings {
     /// command line renders the 3-D view; `report --session --slice PLANE`
     /// prints that plane's slice with its position, the window and the overlay.
     std::optional<SliceSessionState> slices;
+    /// The distance measurement (View > Measure Distance): its points 1 and
+    /// 2 in scene coordinates (mm), so that the reopened session shows the
+    /// same measurement. Absent when none was shown (and in older sessions).
+    /// The command line ignores it (it is still checked).
+    std::optional<std::array<glm::vec3, 2>> measurement;
 };
 
 /// The version saveSession() writes.

@@ -177,6 +177,9 @@ void MainWindow::connectDocument() {
     connect(document_, &DocumentController::sceneChanged, this, &MainWindow::showScene);
     connect(document_, &DocumentController::sessionReady, this, [this](const Session& session) {
         applySession(*viewer_, session);
+        if (session.measurement) {
+            measure_->restore(*session.measurement);  // after the camera: the depth in its view
+        }
         if (!session.layout.isEmpty()) {
             restoreState(session.layout, kLayoutVersion);
         }
@@ -612,9 +615,8 @@ void MainWindow::showScene(const std::shared_ptr<const scene::Scene>& scene, con
 void MainWindow::sceneWasShown() {
     // Scenes from DICOM are in the patient frame (LPS): the marker names patient sides.
     render::ViewAnnotations annotations = viewer_->viewAnnotations();
-    annotations.frame = document_->seriesUid().empty() && document_->dicomSource().isEmpty()
-                            ? render::SceneFrame::Unknown
-                            : render::SceneFrame::PatientLps;
+    annotations.frame =
+        document_->scene() ? document_->scene()->frame : render::SceneFrame::Unknown;
     viewer_->setViewAnnotations(annotations);
     syncControls();
     const QString& title = document_->title();
@@ -678,6 +680,7 @@ bool MainWindow::saveSessionTo(const QString& path) {
     Session view = captureSession(*viewer_, {});
     view.layout = saveState(kLayoutVersion);
     view.slices = slices_->sessionState();
+    view.measurement = measure_->completePoints();
     if (!document_->saveSession(path, std::move(view), segmentationPanel_->segmentationOptions(),
                                 segmentationPanel_->surfaceOptions())) {
         return false;

@@ -82,6 +82,25 @@ void MeasureTool::missed() {
     label_->setText(tr("Measure: no vessel under the mouse"));
 }
 
+std::optional<std::array<glm::vec3, 2>> MeasureTool::completePoints() const {
+    if (points_.size() < 2) {
+        return std::nullopt;
+    }
+    return std::array<glm::vec3, 2>{points_[0].worldPosition, points_[1].worldPosition};
+}
+
+void MeasureTool::restore(const std::array<glm::vec3, 2>& points) {
+    points_.clear();
+    for (const glm::vec3& world : points) {
+        ProbeResult point;
+        point.worldPosition = world;
+        points_ << point;
+    }
+    overlay_->setPoints(points_);
+    shown_.clear();
+    refresh();
+}
+
 void MeasureTool::clear() {
     points_.clear();
     shown_.clear();

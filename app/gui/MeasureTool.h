@@ -4,6 +4,9 @@
 #include <QList>
 #include <QObject>
 #include <QString>
+#include <array>
+#include <glm/glm.hpp>
+#include <optional>
 
 #include "gui/ViewerWidget.h"
 
@@ -38,6 +41,14 @@ class MeasureTool : public QObject {
     void missed();
     /// Forgets the points.
     void clear();
+
+    /// The two points of a complete measurement (scene mm), what a session
+    /// keeps; nullopt with fewer than two points.
+    [[nodiscard]] std::optional<std::array<glm::vec3, 2>> completePoints() const;
+    /// Shows the measurement of `points` again (a reopened session): the
+    /// markers and the label's text as after picking them with the viewer's
+    /// camera now (the depth difference follows the view from then on).
+    void restore(const std::array<glm::vec3, 2>& points);
 
     /// The picked points of the measurement in progress (0, 1 or 2).
     [[nodiscard]] const QList<ProbeResult>& points() const noexcept { return points_; }

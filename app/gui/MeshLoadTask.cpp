@@ -113,26 +113,14 @@ MeshLoadTask::Result MeshLoadTask::work(std::stop_token stop) {
         auto scene = std::make_shared<scene::Scene>();
         if (demo_) {
             scene->meshes.push_back(demo::generateDemoMesh({}, progress));
-        } else if (std::none_of(files_.begin(), files_.end(),
-                                [](const auto& f) { return segmentation::isDicomSource(f); })) {
-            *scene = meshio::loadScene(files_, {}, progress);
         } else {
-            // DICOM sources are segmented one by one; meshes load as before.
-            const double n = static_cast<double>(files_.size());
-            for (std::size_t i = 0; i < files_.size(); ++i) {
-                const Progress part =
-                    progress.sub(static_cast<double>(i) / n, static_cast<double>(i + 1) / n);
-                segmentation::SceneSourceReport report;
-                scene::Scene one =
-                    segmentation::isDicomSource(files_[i])
-                        ? segmentation::loadSceneSource(files_[i], dicomOptions_, part, &report)
-                        : meshio::loadScene({files_[i]}, {}, part);
-                if (segmentation::isDicomSource(files_[i])) {
-                    result.dicomReport = std::move(report);
-                }
-                for (auto& mesh : one.meshes) {
-                    scene->meshes.push_back(std::move(mesh));
-                }
+            // DICOM sources segmented one by one, meshes as before; the last
+            // DICOM source's report.
+            segmentation::SceneSourceReport report;
+            *scene = segmentation::loadSceneSources(files_, dicomOptions_, progress, &report);
+            if (std::any_of(files_.begin(), files_.end(),
+                            [](const auto& f) { return segmentation::isDicomSource(f); })) {
+                result.dicomReport = std::move(report);
             }
         }
         result.scene = std::move(scene);

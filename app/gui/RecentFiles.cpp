@@ -89,12 +89,21 @@ void add(const QStringList& opened, const std::optional<SeriesIdentity>& series)
     if (opened.isEmpty()) {
         return;
     }
-    const QStringList list = merged(files(), opened);
+    QStringList list = merged(files(), opened);
     QMap<QString, SeriesIdentity> stored = storedSeries();
     for (const QString& file : opened) {
         stored.remove(QFileInfo(file).absoluteFilePath());
     }
     if (series && opened.size() == 1) {
+        // One series is one entry, wherever it was opened from (its folder,
+        // the local study store): an older entry of the same series goes.
+        if (!series->uid.isEmpty()) {
+            for (auto it = stored.begin(); it != stored.end(); ++it) {
+                if (it->uid == series->uid) {
+                    list.removeAll(it.key());
+                }
+            }
+        }
         stored.insert(QFileInfo(opened.front()).absoluteFilePath(), *series);
     }
     stored.removeIf([&list](const auto& entry) { return !list.contains(entry.key()); });

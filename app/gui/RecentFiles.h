@@ -27,9 +27,11 @@ inline constexpr int kMaxFiles = 8;
 [[nodiscard]] QStringList merged(QStringList recent, const QStringList& opened);
 
 /// Stores merged(files(), opened). `series`: what the one file opened (a
-/// DICOM folder or file) showed, remembered for it; without it, whatever
-/// was remembered for the opened files is forgotten. Series of files that
-/// drop off the list are forgotten too.
+/// DICOM folder or file) showed, remembered for it; an older entry of the
+/// same series (Series Instance UID) under another path — the study's folder
+/// and its copy in the local study store — is removed, so that a series is
+/// listed once. Without `series`, whatever was remembered for the opened
+/// files is forgotten. Series of files that drop off the list are forgotten too.
 void add(const QStringList& opened, const std::optional<SeriesIdentity>& series = std::nullopt);
 
 /// What add() remembered for `file` (an entry of files()); none for files

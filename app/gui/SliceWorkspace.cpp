@@ -61,15 +61,31 @@ SliceWorkspace::SliceWorkspace(ViewerWidget* viewer, QWidget* parent)
             cursor_->setPoint(world);
             emit sliceClicked(world);
         });
+        // The cursor follows the planes: a view scrolled to another slice
+        // moves it to that slice, so that the other views' crosshairs show
+        // the level it shows now (not where the last click was).
+        connect(view, &SliceView::sliceChanged, this, [this, view] {
+            const std::optional<glm::dvec3>& point = cursor_->point();
+            if (followingCursor_ || !point || !view->stack()) {
+                return;
+            }
+            glm::dvec3 moved = *point;
+            moved[view->stack()->axis] = view->slicePosition();
+            cursor_->setPoint(moved);
+        });
     }
     connect(cursor_, &SliceCursor::pointChanged, this,
             [this](const std::optional<glm::dvec3>& world) {
+                // The views go to the slices through the cursor; those
+                // changes follow the cursor and do not move it.
+                followingCursor_ = true;
                 for (SliceView* view : views_) {
                     if (world) {
                         view->showSliceThrough(*world);
                     }
                     view->setCrosshair(world);
                 }
+                followingCursor_ = false;
             });
     buildMenu();
     applyLayout();

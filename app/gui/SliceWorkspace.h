@@ -80,7 +80,9 @@ class SliceWorkspace : public QWidget {
 
     [[nodiscard]] SliceView* sliceView(slices::SliceOrientation orientation) const;
     /// The linked cursor: a click on a slice or on a vessel in the 3-D view
-    /// moves the other slices there and marks it in every view.
+    /// moves the other slices there and marks it in every view; scrolling a
+    /// view moves it along with that view's slice (the other views'
+    /// crosshairs show the level shown).
     [[nodiscard]] SliceCursor* cursor() const noexcept { return cursor_; }
     /// View > Slices: layouts, window presets, overlay style.
     [[nodiscard]] QMenu* menu() const noexcept { return menu_; }
@@ -141,6 +143,8 @@ class SliceWorkspace : public QWidget {
     slices::Window window_;
     /// The presets are being found on a worker (presetsReady() comes).
     bool presetsPending_ = false;
+    /// The views are going to the cursor's slices (their changes do not move it).
+    bool followingCursor_ = false;
     /// A session's window and preset applied before the presets were found.
     std::optional<std::pair<slices::Window, std::optional<slices::WindowPreset>>> pendingWindow_;
     QMenu* menu_ = nullptr;

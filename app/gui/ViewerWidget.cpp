@@ -26,6 +26,7 @@
 #include "vv/core/Log.h"
 #include "vv/meshio/MeshSimplify.h"
 #include "vv/render/LegendPainter.h"
+#include "vv/render/ViewPresets.h"
 
 namespace vv::gui {
 
@@ -137,6 +138,8 @@ void ViewerWidget::setScene(std::shared_ptr<const scene::Scene> scene) {
     startClosureCheck();
     framesWithScene_ = 0;
     camera_.setViewport(width(), height());
+    camera_.setHomeRotation(
+        render::homeRotation(view_.scene() ? view_.scene()->frame : scene::SceneFrame::Unknown));
     camera_.reset();
     camera_.fit(dataBounds());
     autoFit_ = true;
@@ -351,7 +354,9 @@ render::FrameTarget ViewerWidget::frameTarget() const {
 }
 
 void ViewerWidget::setCamera(const render::Camera& camera) {
+    const glm::quat home = camera_.homeRotation();  // the scene's, whoever made `camera`
     camera_ = camera;
+    camera_.setHomeRotation(home);
     camera_.setViewport(width(), height());
     autoFit_ = false;
     requestFrame();

@@ -111,8 +111,9 @@ class ViewerWidget : public QOpenGLWidget {
     /// `reason` and emits renderFailed(reason).
     void setUnavailable(const QString& reason);
 
-    /// Shows `scene` (nullptr clears) and fits the camera to it. The scene is
-    /// shared, never modified.
+    /// Shows `scene` (nullptr clears) in its home orientation
+    /// (render::homeRotation() of its frame: the anterior view for the patient
+    /// frame), fitted to it. The scene is shared, never modified.
     void setScene(std::shared_ptr<const scene::Scene> scene);
     [[nodiscard]] const std::shared_ptr<const scene::Scene>& scene() const noexcept {
         return view_.scene();
@@ -309,9 +310,10 @@ class ViewerWidget : public QOpenGLWidget {
     }
 
     [[nodiscard]] const render::Camera& camera() const noexcept { return camera_; }
-    /// Replaces the camera (its viewport follows the widget). Until the next
-    /// setScene(), resetCamera() or fitToData() the view is no longer refitted
-    /// when the widget resizes.
+    /// Replaces the camera (its viewport follows the widget; the home
+    /// orientation stays the scene's). Until the next setScene(),
+    /// resetCamera() or fitToData() the view is no longer refitted when the
+    /// widget resizes.
     void setCamera(const render::Camera& camera);
 
     /// The colour-map range of the last frame; nullopt when no array is shown.
@@ -345,7 +347,7 @@ class ViewerWidget : public QOpenGLWidget {
     // --- end probe -------------------------------------------------------
 
   public slots:
-    /// Default orientation, fitted to the data.
+    /// The scene's home orientation (see setScene()), fitted to the data.
     void resetCamera();
     /// Keeps the orientation, frames the data.
     void fitToData();

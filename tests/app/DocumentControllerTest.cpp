@@ -242,6 +242,38 @@ TEST_F(DocumentControllerTest, ARecentSeriesIsLabelledByWhatItSaysNeverByItsFold
     EXPECT_FALSE(QSettings().contains(QStringLiteral("recentSeries/size")));
 }
 
+TEST_F(DocumentControllerTest, OneSeriesOpenedFromTwoPlacesIsListedOnce) {
+    // The study's folder on a CD and its copy in the local study store: one
+    // series (one Series Instance UID), one entry, the place opened last.
+    const fs::path cd = documentTestDir() / "cd-copy";
+    const fs::path store = documentTestDir() / "store" / "1.2.826.0.1.3680043.9.7777.8";
+    fs::remove_all(cd);
+    fs::remove_all(store);
+    (void)writeCta(cd, "Run-off");
+    fs::create_directories(store);
+    for (const auto& file : fs::directory_iterator(cd)) {
+        fs::copy_file(file.path(), store / file.path().filename());
+    }
+    const fs::path tube = writeTube("between.vtp");
+    show(cd);
+    show(tube);
+    show(store);
+    const QStringList files = DocumentController::recentFiles();
+    EXPECT_EQ(files, (QStringList{qpath(fs::absolute(store)), qpath(fs::absolute(tube))}))
+        << files.join(QStringLiteral(", ")).toStdString();
+    // Back on the CD: the store's entry goes instead.
+    show(cd);
+    EXPECT_EQ(DocumentController::recentFiles(),
+              (QStringList{qpath(fs::absolute(cd)), qpath(fs::absolute(tube))}));
+    EXPECT_FALSE(gui::recent::series(qpath(fs::absolute(store))).has_value());
+    // Another series in another folder stays beside it.
+    const fs::path other = documentTestDir() / "other-series";
+    fs::remove_all(other);
+    (void)writeCta(other, "Venous");
+    show(other);
+    EXPECT_EQ(DocumentController::recentFiles().size(), 3);
+}
+
 TEST_F(DocumentControllerTest, ADicomFolderIsNamedByItsSeriesAndWithOtherFilesByTheirCount) {
     // A folder named by its UID, as in a study store.
     const fs::path folder = documentTestDir() / "1.2.826.0.1.3680043.9.7777.5";

@@ -11,6 +11,7 @@
 #include <QElapsedTimer>
 #include <QImage>
 #include <QMouseEvent>
+#include <QPointer>
 #include <QThread>
 #include <algorithm>
 #include <cmath>
@@ -22,6 +23,7 @@
 
 #include "TestMeshes.h"
 #include "gui/MainWindow.h"
+#include "gui/SeriesDialog.h"
 #include "gui/ViewerWidget.h"
 #include "vv/scene/Mesh.h"
 
@@ -144,6 +146,27 @@ class GuiFixture : public ::testing::Test {
         QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
                          [&applied] { applied = true; });
         return window_->openSession(path) && waitUntil([&] { return applied; }, 60000);
+    }
+
+    /// Opens the DICOM folder `folder` as File > Open Folder does, accepts
+    /// the series chooser as it comes and waits for its volume (a fatal
+    /// failure naming the window's error otherwise).
+    void openDicomFolder(const fs::path& folder) {
+        const auto before = window_->volume();  // shown until the new one replaces it
+        QPointer<gui::SeriesDialog> dialog;
+        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
+        window_->openDicom(QString::fromStdString(folder.string()));
+        ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
+        ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
+        dialog->accept();
+        ASSERT_TRUE(waitUntil(
+            [&] {
+                return (window_->volume() != nullptr && window_->volume() != before) ||
+                       !window_->lastError().isEmpty();
+            },
+            60000));
+        ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
     }
 
     /// Waits for `frames` frames with the current scene; false (and a test

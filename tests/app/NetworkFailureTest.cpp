@@ -3,6 +3,7 @@
 // (app/gui/pacs/NetworkFailure.h): the node as AE@host:port and what to check.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <stdexcept>
 
 #include "gui/pacs/NetworkFailure.h"
@@ -28,6 +29,7 @@ TEST(NetworkFailureTest, EachTypedErrorGetsItsKind) {
     EXPECT_EQ(failureOf<pacs::TimeoutError>("x").kind, Kind::Timeout);
     EXPECT_EQ(failureOf<pacs::TlsError>("x").kind, Kind::Tls);
     EXPECT_EQ(failureOf<pacs::PeerFailedError>("x").kind, Kind::PeerFailed);
+    EXPECT_EQ(failureOf<pacs::ConnectionClosedError>("x").kind, Kind::ConnectionClosed);
     EXPECT_EQ(failureOf<pacs::ResponseError>("x").kind, Kind::Response);
     EXPECT_EQ(classifyFailure(std::make_exception_ptr(CancelledError())).kind, Kind::Cancelled);
     EXPECT_EQ(failureOf<InvalidArgumentError>("x").kind, Kind::InvalidInput);
@@ -41,20 +43,65 @@ TEST(NetworkFailureTest, TheMessageNamesTheNodeAndWhatToCheck) {
         Kind kind;
         const char* says;
     } cases[] = {
-        {Kind::Refused, "refused the connection"}, {Kind::AssociationRejected, "AE title"},
-        {Kind::Timeout, "did not answer in time"}, {Kind::Tls, "trusted CA certificate"},
-        {Kind::PeerFailed, "during the transfer"}, {Kind::Other, "Failed with"},
+        {Kind::Refused, "refused the connection"},         {Kind::AssociationRejected, "AE title"},
+        {Kind::Timeout, "did not answer in time"},         {Kind::Tls, "trusted CA certificate"},
+        {Kind::PeerFailed, "during the transfer"},         {Kind::Other, "Failed with"},
+        {Kind::ConnectionClosed, "closed the connection"},
     };
     for (const auto& c : cases) {
-        const std::string text = failureText({c.kind, "detail"}, kNode).toStdString();
+        const std::string text = failureText({c.kind, "detail", std::nullopt}, kNode).toStdString();
         EXPECT_NE(text.find("PACS1@pacs.example:4242"), std::string::npos) << text;
         EXPECT_NE(text.find(c.says), std::string::npos) << text;
     }
     // Too many matches: the peer's limit and what to do.
     const std::string tooMany =
-        failureText({Kind::Response, "more than 2000 matches"}, kNode).toStdString();
+        failureText({Kind::Response, "more than 2000 matches", std::nullopt}, kNode).toStdString();
     EXPECT_NE(tooMany.find("more than 2000 matches"), std::string::npos) << tooMany;
     EXPECT_NE(tooMany.find("Narrow the search"), std::string::npos) << tooMany;
+}
+
+/// A C-GET that `E` ended after `received` of `expected` images.
+template <typename E>
+NetworkFailure interrupted(std::size_t received, std::optional<std::size_t> expected) {
+    E error(
+        "PACS1@pacs.example:4242: C-GET failed: the peer closed the connection (Peer "
+        "aborted Association (or never connected))");
+    error.setTransfer({received, expected});
+    return classifyFailure(std::make_exception_ptr(error));
+}
+
+TEST(NetworkFailureTest, AnInterruptedRetrieveSaysHowFarItCameWhatWasKeptAndWhatToDo) {
+    const NetworkFailure closed = interrupted<pacs::ConnectionClosedError>(60, 400);
+    ASSERT_EQ(closed.kind, Kind::ConnectionClosed);
+    ASSERT_TRUE(closed.transfer.has_value());
+    const std::string text =
+        retrieveFailureText(closed, QStringLiteral("ORTHANC"), kNode, 0).toStdString();
+    EXPECT_EQ(text,
+              "The transfer from ORTHANC stopped after 60 of 400 images: the PACS closed the "
+              "connection. Nothing was kept. Try again, or ask the PACS administrator if it "
+              "keeps happening.");
+    // Stopped answering; before the first image; the total unknown; what was
+    // kept unknown (not said).
+    const std::string timeout =
+        retrieveFailureText(interrupted<pacs::TimeoutError>(0, std::nullopt),
+                            QStringLiteral("ORTHANC"), kNode, 0)
+            .toStdString();
+    EXPECT_NE(timeout.find("stopped before the first image arrived: the PACS stopped answering."),
+              std::string::npos)
+        << timeout;
+    const std::string unknownTotal =
+        retrieveFailureText(interrupted<pacs::PeerFailedError>(60, std::nullopt),
+                            QStringLiteral("ORTHANC"), kNode, std::nullopt)
+            .toStdString();
+    EXPECT_NE(unknownTotal.find("after 60 image"), std::string::npos) << unknownTotal;
+    EXPECT_EQ(unknownTotal.find("kept"), std::string::npos) << unknownTotal;
+    // Without a node name the node's address, once.
+    const std::string unnamed = retrieveFailureText(closed, {}, kNode, 0).toStdString();
+    EXPECT_EQ(unnamed.rfind("The transfer from PACS1@pacs.example:4242 stopped", 0), 0U) << unnamed;
+    // A failure before the transfer began: the general message.
+    const NetworkFailure refused = failureOf<pacs::ConnectionRefusedError>("x");
+    EXPECT_EQ(retrieveFailureText(refused, QStringLiteral("ORTHANC"), kNode, 0),
+              failureText(refused, kNode));
 }
 
 }  // namespace

@@ -37,6 +37,8 @@
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
 #include "vv/demo/DemoCtSeries.h"
+#include "vv/render/ViewAnnotations.h"
+#include "vv/render/ViewPresets.h"
 
 namespace vv::test {
 namespace {
@@ -474,6 +476,13 @@ TEST_F(SegmentationGuiTest, RaycastDisplayShowsTheVolumeWithVssAndSwitchesBack) 
     EXPECT_FALSE(panel()->applyButton()->isEnabled());
     ASSERT_NE(viewer->scene(), nullptr);
     EXPECT_TRUE(viewer->scene()->meshes.empty());
+    // Still the patient's frame: the marker names patient sides, the home
+    // view is the anterior one.
+    EXPECT_EQ(viewer->scene()->frame, scene::SceneFrame::PatientLps);
+    EXPECT_EQ(viewer->viewAnnotations().frame, render::SceneFrame::PatientLps);
+    EXPECT_NEAR(std::abs(glm::dot(viewer->camera().homeRotation(),
+                                  render::anatomicalRotation(render::AnatomicalView::Anterior))),
+                1.0F, 1e-5F);
     ASSERT_TRUE(waitForFrames(2));
     ASSERT_TRUE(waitForVss());
     const QImage image = viewer->grabFramebuffer();

@@ -4,14 +4,21 @@
 #include <QAction>
 #include <QByteArray>
 #include <QFile>
+#include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QLabel>
+#include <QLineF>
 #include <QMessageBox>
+#include <QMouseEvent>
+#include <array>
 #include <cmath>
 #include <filesystem>
+#include <span>
 #include <string>
 
 #include "GuiFixture.h"
+#include "gui/MeasureOverlay.h"
 #include "gui/Session.h"
 #include "vv/core/Error.h"
 
@@ -111,6 +118,26 @@ std::string errorFor(const std::string& name, const QByteArray& json) {
         return e.problem();
     }
     return {};
+}
+
+/// `json` with `from` (found once) replaced by `to`, saved as `name`: its
+/// error names the field `field` ('field').
+struct BadValue {
+    const char* name;
+    QByteArray from;
+    QByteArray to;
+    const char* field;
+};
+
+void expectRefused(const QByteArray& json, std::span<const BadValue> cases) {
+    for (const BadValue& c : cases) {
+        QByteArray bad = json;
+        ASSERT_EQ(bad.count(c.from), 1) << c.name << ": " << json.toStdString();
+        bad.replace(c.from, c.to);
+        const std::string error = errorFor(c.name, bad);
+        EXPECT_NE(error.find(std::string("'") + c.field + "'"), std::string::npos)
+            << c.name << ": " << error;
+    }
 }
 
 /// The valid sample as JSON with `from` replaced by `to` (exactly once).
@@ -323,13 +350,7 @@ TEST(SessionFile, TheSliceStateRoundTripsAndIsChecked) {
     EXPECT_FALSE(noneBack.slices->cursor.has_value());
 
     // Bad values are refused naming the field.
-    struct Case {
-        const char* name;
-        QByteArray from;
-        QByteArray to;
-        const char* field;
-    };
-    const Case cases[] = {
+    const auto cases = std::to_array<BadValue>({
         {"slices-layout.vvs", "\"coronal\",", "\"quad\",", "slices.layout"},
         {"slices-width.vvs", "\"width\": 1800", "\"width\": 0", "slices.window.width"},
         {"slices-level.vvs", "\"level\": 400", "\"level\": \"NaN\"", "slices.window.level"},
@@ -340,18 +361,41 @@ TEST(SessionFile, TheSliceStateRoundTripsAndIsChecked) {
          "slices.axial.position"},
         {"slices-pan.vvs", "4.25", "\"left\"", "slices.axial.pan[0]"},
         {"slices-cursor.vvs", "-20.5", "1e300", "slices.cursor[0]"},
-    };
-    for (const Case& c : cases) {
-        QByteArray bad = json;
-        ASSERT_EQ(bad.count(c.from), 1) << c.name << ": " << json.toStdString();
-        bad.replace(c.from, c.to);
-        const std::string error = errorFor(c.name, bad);
-        EXPECT_NE(error.find(std::string("'") + c.field + "'"), std::string::npos)
-            << c.name << ": " << error;
-    }
+    });
+    expectRefused(json, cases);
     QByteArray missing = json;
     missing.replace("\"outline\": true", "\"outlined\": true");
     EXPECT_NE(errorFor("slices-missing.vvs", missing).find("'slices.overlay.outline' is missing"),
+              std::string::npos);
+}
+
+TEST(SessionFile, TheMeasurementRoundTripsAndIsChecked) {
+    gui::Session s = sampleSession();
+    EXPECT_FALSE(gui::sessionToJson(s, sessionDir() / "x.vvs").contains("\"measurement\""));
+    s.measurement =
+        std::array<glm::vec3, 2>{glm::vec3(1.5F, -2.25F, 30.0F), glm::vec3(-7.0F, 12.5F, -3.75F)};
+    const QByteArray json = gui::sessionToJson(s, sessionDir() / "measured.vvs");
+    EXPECT_TRUE(json.contains("\"version\": 1")) << "an optional object needs no new version";
+    const gui::Session back = gui::sessionFromJson(json, sessionDir() / "measured.vvs");
+    expectSame(back, s);
+    ASSERT_TRUE(back.measurement.has_value());
+    EXPECT_EQ(back.measurement->at(0), s.measurement->at(0));
+    EXPECT_EQ(back.measurement->at(1), s.measurement->at(1));
+    // Older sessions (without it) load without a measurement.
+    EXPECT_FALSE(gui::sessionFromJson(gui::sessionToJson(sampleSession(), sessionDir() / "o.vvs"),
+                                      sessionDir() / "o.vvs")
+                     .measurement.has_value());
+    // Bad values are refused naming the field.
+    const auto cases = std::to_array<BadValue>({
+        {"m-value.vvs", "-3.75", "\"deep\"", "measurement.points[1][2]"},
+        {"m-huge.vvs", "12.5", "1e300", "measurement.points[1][1]"},
+        {"m-points.vvs", "\"points\"", "\"pints\"", "measurement.points"},
+    });
+    expectRefused(json, cases);
+    QJsonObject oneOnly = QJsonDocument::fromJson(json).object();
+    oneOnly.insert(QStringLiteral("measurement"),
+                   QJsonObject{{QStringLiteral("points"), QJsonArray{QJsonArray{1, 2, 3}}}});
+    EXPECT_NE(errorFor("m-one.vvs", QJsonDocument(oneOnly).toJson()).find("two points"),
               std::string::npos);
 }
 
@@ -517,6 +561,62 @@ TEST_F(SessionTest, SaveThenOpenGivesTheSameImage) {
         before.save(QString::fromStdString((sessionDir() / "before.png").string()));
         after.save(QString::fromStdString((sessionDir() / "after.png").string()));
     }
+}
+
+TEST_F(SessionTest, AMeasurementIsSavedAndRestored) {
+    window_->openFiles({QStringLiteral(VV_DEMO_VTP)});
+    ASSERT_TRUE(waitUntil([&] { return window_->viewer()->scene() != nullptr; }, 60000));
+    ASSERT_TRUE(waitForFrames(1));
+    auto* viewer = window_->viewer();
+    // Two points on vessels, picked as a person does (measure mode, two clicks).
+    std::vector<QPointF> onVessels;
+    for (int y = 20; y < viewer->height() && onVessels.size() < 2; y += 10) {
+        for (int x = 20; x < viewer->width() && onVessels.size() < 2; x += 10) {
+            const QPointF at(x, y);
+            if (viewer->probeAt(at) &&
+                (onVessels.empty() || QLineF(onVessels.front(), at).length() > 150.0)) {
+                onVessels.push_back(at);
+            }
+        }
+    }
+    ASSERT_EQ(onVessels.size(), 2U) << "no two vessel points far apart";
+    window_->measureToggle()->setChecked(true);
+    for (const QPointF& at : onVessels) {
+        for (const QEvent::Type type : {QEvent::MouseButtonPress, QEvent::MouseButtonRelease}) {
+            QMouseEvent event(type, at, viewer->mapToGlobal(at), Qt::LeftButton,
+                              type == QEvent::MouseButtonPress ? Qt::LeftButton : Qt::NoButton,
+                              Qt::NoModifier);
+            QCoreApplication::sendEvent(viewer, &event);
+        }
+    }
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    const glm::vec3 a = window_->measurePoints()[0].worldPosition;
+    const glm::vec3 b = window_->measurePoints()[1].worldPosition;
+    const QString text = window_->measureLabel()->text();
+    ASSERT_TRUE(text.startsWith(QStringLiteral("Distance 1–2: "))) << text.toStdString();
+    const auto markA = window_->measureOverlay()->project(window_->measurePoints()[0]);
+    ASSERT_TRUE(markA);
+
+    const QString path = QString::fromStdString((sessionDir() / "measured.vvs").string());
+    ASSERT_TRUE(window_->saveSessionTo(path));
+    ASSERT_TRUE(openSessionInNewWindow(path)) << "the session was never applied";
+    ASSERT_TRUE(waitForFrames(1));
+    QCoreApplication::processEvents();
+    // The same two points, marked where they were, and the same words and numbers.
+    ASSERT_EQ(window_->measurePoints().size(), 2);
+    EXPECT_LT(glm::distance(window_->measurePoints()[0].worldPosition, a), 1e-4F);
+    EXPECT_LT(glm::distance(window_->measurePoints()[1].worldPosition, b), 1e-4F);
+    EXPECT_EQ(window_->measureLabel()->text(), text);
+    EXPECT_TRUE(window_->measureOverlay()->isVisible());
+    const auto markAfter = window_->measureOverlay()->project(window_->measurePoints()[0]);
+    ASSERT_TRUE(markAfter);
+    EXPECT_LT(QLineF(*markA, *markAfter).length(), 0.5);
+    // Measure mode itself is not part of it; Esc (Clear Measurement) still clears it.
+    EXPECT_FALSE(window_->measureToggle()->isChecked());
+    auto* clear = window_->findChild<QAction*>(QStringLiteral("clearMeasurement"));
+    ASSERT_NE(clear, nullptr);
+    clear->trigger();
+    EXPECT_TRUE(window_->measurePoints().isEmpty());
 }
 
 }  // namespace

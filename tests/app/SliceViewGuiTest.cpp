@@ -13,8 +13,10 @@
 #include <QHelpEvent>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <QKeyEvent>
 #include <QLabel>
 #include <QLineEdit>
+#include <QLineF>
 #include <QLocale>
 #include <QMenu>
 #include <QMouseEvent>
@@ -78,17 +80,10 @@ class SliceViewGuiTest : public GuiFixture {
     [[nodiscard]] SliceView* view(SliceOrientation o) const { return workspace()->sliceView(o); }
 
     void openSeries() {
-        QPointer<gui::SeriesDialog> dialog;
-        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
-                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
-        window_->openDicom(QString::fromStdString(seriesDir().string()));
-        ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
-        ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
-        dialog->accept();
-        ASSERT_TRUE(waitUntil(
-            [&] { return window_->volume() != nullptr || !window_->lastError().isEmpty(); },
-            60000));
-        ASSERT_TRUE(window_->lastError().isEmpty()) << window_->lastError().toStdString();
+        openDicomFolder(seriesDir());
+        if (HasFatalFailure()) {
+            return;
+        }
         for (const auto o :
              {SliceOrientation::Axial, SliceOrientation::Coronal, SliceOrientation::Sagittal}) {
             view(o)->waitForSlice();
@@ -444,6 +439,52 @@ TEST_F(SliceViewGuiTest, ClickOnASliceMovesTheOtherSlicesAndMarksThePoint) {
     EXPECT_TRUE(isCursorGreen(marker->grab().toImage(), *onScreen + QPointF(7, 0)));
 }
 
+TEST_F(SliceViewGuiTest, ScrollingAViewMovesTheCrosshairOfTheOthersToItsLevel) {
+    openSeries();
+    ASSERT_TRUE(waitForFrames(1));
+    SliceView* axial = view(SliceOrientation::Axial);
+    SliceView* coronal = view(SliceOrientation::Coronal);
+    SliceView* sagittal = view(SliceOrientation::Sagittal);
+    const auto clicked = axial->worldAt(QPointF(axial->width() * 0.45, axial->height() * 0.5));
+    ASSERT_TRUE(clicked);
+    clickOn(axial, axial->widgetPointOf(*clicked).value());
+    for (SliceView* v : {axial, coronal, sagittal}) {
+        v->waitForSlice();
+    }
+    const auto markerBefore = workspace()->cursor()->markerPosition();
+    // Scroll the axial view 8 slices: the cursor goes with its slice, and
+    // the coronal and sagittal crosshairs show the level the axial view shows now.
+    const int before = axial->sliceIndex();
+    wheel(axial, 8);
+    axial->waitForSlice();
+    ASSERT_NE(axial->sliceIndex(), before);
+    const glm::dvec3 level(clicked->x, clicked->y, axial->slicePosition());
+    ASSERT_TRUE(workspace()->cursor()->point());
+    EXPECT_LT(glm::distance(*workspace()->cursor()->point(), level), 1e-9);
+    EXPECT_GT(std::abs(level.z - clicked->z), 4.0 * axial->stack()->step);
+    for (SliceView* v : {coronal, sagittal}) {
+        SCOPED_TRACE(v->objectName().toStdString());
+        const QImage shown = v->grab().toImage();
+        const auto now = v->widgetPointOf(level);
+        const auto stale = v->widgetPointOf(*clicked);
+        ASSERT_TRUE(now && stale);
+        ASSERT_GT(std::abs(now->y() - stale->y()), 8.0);
+        // The horizontal line at the new level, none at the clicked one.
+        EXPECT_TRUE(isCursorGreen(shown, *now + QPointF(20, 0)));
+        EXPECT_FALSE(isCursorGreen(shown, *stale + QPointF(20, 0)));
+    }
+    // The 3-D view's marker follows too.
+    const auto markerAfter = workspace()->cursor()->markerPosition();
+    ASSERT_TRUE(markerBefore && markerAfter);
+    EXPECT_GT(QLineF(*markerBefore, *markerAfter).length(), 2.0);
+    // The Up key in the coronal view moves the level along y in the others.
+    QKeyEvent up(QEvent::KeyPress, Qt::Key_Up, Qt::NoModifier);
+    QCoreApplication::sendEvent(coronal, &up);
+    coronal->waitForSlice();
+    EXPECT_DOUBLE_EQ(workspace()->cursor()->point()->y, coronal->slicePosition());
+    EXPECT_DOUBLE_EQ(workspace()->cursor()->point()->z, axial->slicePosition());
+}
+
 TEST_F(SliceViewGuiTest, ClickOnAVesselIn3DMovesTheSlices) {
     openSeries();
     ASSERT_TRUE(waitForFrames(1));
@@ -686,6 +727,13 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
     views[2]->setSliceIndex(views[2]->sliceCount() * 3 / 4);
     axial->setZoom(2.5);
     axial->setPan({6.0, -4.0});
+    // The cursor followed the planes scrolled to.
+    ASSERT_TRUE(workspace()->cursor()->point());
+    const glm::dvec3 followed = *workspace()->cursor()->point();
+    EXPECT_LT(
+        glm::distance(followed, glm::dvec3(views[2]->slicePosition(), views[1]->slicePosition(),
+                                           axial->slicePosition())),
+        1e-9);
     const auto shown = [&] {
         ShownSlices s;
         for (std::size_t n = 0; n < views.size(); ++n) {
@@ -700,7 +748,7 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
     };
     const ShownSlices before = shown();
     const slices::Window window = workspace()->window();
-    const auto tip = axial->widgetPointOf(*cursor);
+    const auto tip = axial->widgetPointOf(followed);
     ASSERT_TRUE(tip);
     const QString path = QString::fromStdString((panelTestDir() / "slices.vvs").string());
     ASSERT_TRUE(window_->saveSessionTo(path));
@@ -721,7 +769,7 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
     EXPECT_TRUE(menuAction(workspace()->menu(), gui::SliceWorkspace::tr("Segmentation Outline"))
                     ->isChecked());
     ASSERT_TRUE(workspace()->cursor()->point());
-    EXPECT_LT(glm::distance(*workspace()->cursor()->point(), *cursor), 1e-9);
+    EXPECT_LT(glm::distance(*workspace()->cursor()->point(), followed), 1e-9);
     axial = view(SliceOrientation::Axial);
     const std::array<SliceView*, 3> reopened{axial, view(SliceOrientation::Coronal),
                                              view(SliceOrientation::Sagittal)};
@@ -736,7 +784,7 @@ TEST_F(SliceViewGuiTest, ASavedSessionReopensWithTheSameSlices) {
     }
     // Zoom and pan: the cursor at the same place in the view, the same picture.
     EXPECT_DOUBLE_EQ(axial->zoom(), 2.5);
-    const auto tipAfter = axial->widgetPointOf(*cursor);
+    const auto tipAfter = axial->widgetPointOf(followed);
     ASSERT_TRUE(tipAfter);
     EXPECT_NEAR(tipAfter->x(), tip->x(), 1e-6);
     EXPECT_NEAR(tipAfter->y(), tip->y(), 1e-6);

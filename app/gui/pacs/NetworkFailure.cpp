@@ -17,25 +17,27 @@ NetworkFailure classifyFailure(const std::exception_ptr& error) noexcept {
     try {
         std::rethrow_exception(error);
     } catch (const pacs::ConnectionRefusedError& e) {
-        return {Kind::Refused, e.what()};
+        return {Kind::Refused, e.what(), std::nullopt};
     } catch (const pacs::AssociationRejectedError& e) {
-        return {Kind::AssociationRejected, e.what()};
+        return {Kind::AssociationRejected, e.what(), std::nullopt};
     } catch (const pacs::TimeoutError& e) {
-        return {Kind::Timeout, e.what()};
+        return {Kind::Timeout, e.what(), e.transfer()};
     } catch (const pacs::TlsError& e) {
-        return {Kind::Tls, e.what()};
+        return {Kind::Tls, e.what(), e.transfer()};
+    } catch (const pacs::ConnectionClosedError& e) {
+        return {Kind::ConnectionClosed, e.what(), e.transfer()};
     } catch (const pacs::PeerFailedError& e) {
-        return {Kind::PeerFailed, e.what()};
+        return {Kind::PeerFailed, e.what(), e.transfer()};
     } catch (const pacs::ResponseError& e) {
-        return {Kind::Response, e.what()};
+        return {Kind::Response, e.what(), e.transfer()};
     } catch (const CancelledError& e) {
-        return {Kind::Cancelled, e.what()};
+        return {Kind::Cancelled, e.what(), std::nullopt};
     } catch (const InvalidArgumentError& e) {
-        return {Kind::InvalidInput, e.what()};
+        return {Kind::InvalidInput, e.what(), std::nullopt};
     } catch (const std::exception& e) {
-        return {Kind::Other, e.what()};
+        return {Kind::Other, e.what(), std::nullopt};
     } catch (...) {
-        return {Kind::Other, "unknown error"};
+        return {Kind::Other, "unknown error", std::nullopt};
     }
 }
 
@@ -74,6 +76,13 @@ QString failureText(const NetworkFailure& failure, const pacs::Node& node) {
             return QCoreApplication::translate("vv::gui::NetworkFailure",
                                                "%1 stopped or failed during the transfer (%2).")
                 .arg(peer, detail);
+        case Kind::ConnectionClosed:
+            return QCoreApplication::translate(
+                       "vv::gui::NetworkFailure",
+                       "%1 closed the connection. Try again; if it keeps happening, check that "
+                       "the PACS knows our AE title, host and port, or ask the PACS "
+                       "administrator.")
+                .arg(peer);
         case Kind::Response:
             return QCoreApplication::translate(
                        "vv::gui::NetworkFailure",
@@ -89,6 +98,81 @@ QString failureText(const NetworkFailure& failure, const pacs::Node& node) {
     }
     return QCoreApplication::translate("vv::gui::NetworkFailure", "Failed with %1: %2")
         .arg(peer, detail);
+}
+
+namespace {
+
+/// What ended a transfer, as the end of "The transfer … stopped …: <cause>."
+/// (empty: a kind that does not come from a transfer).
+QString transferCause(NetworkFailure::Kind kind) {
+    using Kind = NetworkFailure::Kind;
+    switch (kind) {
+        case Kind::ConnectionClosed:
+            return QCoreApplication::translate("vv::gui::NetworkFailure",
+                                               "the PACS closed the connection");
+        case Kind::Timeout:
+            return QCoreApplication::translate("vv::gui::NetworkFailure",
+                                               "the PACS stopped answering");
+        case Kind::PeerFailed:
+            return QCoreApplication::translate("vv::gui::NetworkFailure",
+                                               "the PACS reported images it could not send");
+        case Kind::Tls:
+            return QCoreApplication::translate("vv::gui::NetworkFailure",
+                                               "the secure connection failed");
+        case Kind::Response:
+            return QCoreApplication::translate(
+                "vv::gui::NetworkFailure",
+                "the PACS sent an answer that breaks the DICOM standard");
+        case Kind::None:
+        case Kind::Refused:
+        case Kind::AssociationRejected:
+        case Kind::InvalidInput:
+        case Kind::Cancelled:
+        case Kind::Other:
+            break;
+    }
+    return {};
+}
+
+}  // namespace
+
+QString retrieveFailureText(const NetworkFailure& failure, const QString& nodeName,
+                            const pacs::Node& node, std::optional<std::size_t> kept) {
+    const QString cause = transferCause(failure.kind);
+    if (!failure.transfer || cause.isEmpty()) {
+        return failureText(failure, node);
+    }
+    const pacs::TransferProgress& transfer = *failure.transfer;
+    const QLocale locale;
+    const int received = static_cast<int>(transfer.received);  // plain ints for lupdate's %n
+    const int keptCount = static_cast<int>(kept.value_or(0));
+    const QString when =
+        transfer.received == 0 ? QCoreApplication::translate("vv::gui::NetworkFailure",
+                                                             "before the first image arrived")
+        : transfer.expected && *transfer.expected >= transfer.received
+            ? QCoreApplication::translate("vv::gui::NetworkFailure", "after %1 of %2 images")
+                  .arg(locale.toString(static_cast<qulonglong>(transfer.received)),
+                       locale.toString(static_cast<qulonglong>(*transfer.expected)))
+            : QCoreApplication::translate("vv::gui::NetworkFailure", "after %n image(s)", nullptr,
+                                          received);
+    const QString name =
+        nodeName.isEmpty() ? QString::fromStdString(pacs::describe(node)) : nodeName;
+    QString keptText;
+    if (kept) {
+        keptText =
+            *kept == 0
+                ? QCoreApplication::translate("vv::gui::NetworkFailure", "Nothing was kept.") +
+                      QLatin1Char(' ')
+                : QCoreApplication::translate(
+                      "vv::gui::NetworkFailure",
+                      "%n image(s) of it were kept in the local study store.", nullptr, keptCount) +
+                      QLatin1Char(' ');
+    }
+    return QCoreApplication::translate(
+               "vv::gui::NetworkFailure",
+               "The transfer from %1 stopped %2: %3. %4Try again, or ask the PACS administrator "
+               "if it keeps happening.")
+        .arg(name, when, cause, keptText);
 }
 
 QString portText(int port) {

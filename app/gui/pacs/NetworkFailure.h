@@ -7,12 +7,15 @@
 // (AE@host:port) and what to check. No patient data is ever part of it.
 
 #include <QString>
+#include <cstddef>
 #include <exception>
+#include <optional>
 #include <string>
 #include <type_traits>
 #include <utility>
 
 #include "vv/pacs/Node.h"
+#include "vv/pacs/PacsError.h"
 
 namespace vv::gui {
 
@@ -23,7 +26,8 @@ struct NetworkFailure {
         AssociationRejected,  ///< AssociationRejectedError: AE titles not known to the peer
         Timeout,              ///< TimeoutError
         Tls,                  ///< TlsError
-        PeerFailed,           ///< PeerFailedError: aborted, closed, failure status
+        PeerFailed,           ///< PeerFailedError: a failure status, no final answer
+        ConnectionClosed,     ///< ConnectionClosedError: the peer aborted or closed
         Response,             ///< ResponseError: too many matches, malformed answer
         InvalidInput,         ///< InvalidArgumentError: a malformed key or node
         Cancelled,            ///< CancelledError: the user stopped it
@@ -31,6 +35,8 @@ struct NetworkFailure {
     };
     Kind kind = Kind::None;
     std::string detail;  ///< the exception's message (English, no patient data)
+    /// A retrieve that failed once its transfer began: how far it had come.
+    std::optional<pacs::TransferProgress> transfer;
 };
 
 /// Classifies the exception `error` (call it inside a catch block or with a
@@ -64,6 +70,18 @@ template <typename Call>
 /// The translated message for `failure` with `node` ("Radiology PACS"'s
 /// AE@host:port): what failed and what to check.
 [[nodiscard]] QString failureText(const NetworkFailure& failure, const pacs::Node& node);
+
+/// The translated message for a retrieve from the node the user calls
+/// `nodeName` that failed with `failure`. Once its transfer had begun
+/// (failure.transfer), one plain statement: what happened and how far it
+/// came ("The transfer from ORTHANC stopped after 60 of 400 images: the PACS
+/// closed the connection."), what the local study store kept of it (`kept`
+/// images: "Nothing was kept."; nullopt: unknown, not said), and what to
+/// do; the technical detail is
+/// left to the caller (a tooltip, the log). Before that (no connection, a
+/// rejected association, …): failureText(failure, node).
+[[nodiscard]] QString retrieveFailureText(const NetworkFailure& failure, const QString& nodeName,
+                                          const pacs::Node& node, std::optional<std::size_t> kept);
 
 /// A port number as a person reads it: the UI locale's digits, no group separator.
 [[nodiscard]] QString portText(int port);

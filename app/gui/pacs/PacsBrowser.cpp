@@ -15,6 +15,7 @@
 #include <QPushButton>
 #include <QRadioButton>
 #include <QSettings>
+#include <QShowEvent>
 #include <QSplitter>
 #include <QTableWidget>
 #include <QTimer>
@@ -27,11 +28,14 @@
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsWidgets.h"
 #include "gui/pacs/RetrieveJob.h"
+#include "vv/core/Log.h"
 #include "vv/dicom/PersonName.h"
 
 namespace vv::gui {
 
 namespace {
+
+constexpr log::Category kLog("vv.gui");
 
 /// The "any" date of the date fields (their minimum).
 const QDate kAnyDate(1900, 1, 1);
@@ -76,6 +80,14 @@ QDateEdit* dateField(QWidget* parent, const QString& name) {
     edit->setSpecialValueText(PacsBrowser::tr("any"));
     edit->setDate(kAnyDate);
     return edit;
+}
+
+QString noNodeText() {
+    return PacsBrowser::tr("No PACS node is set up yet: add one in DICOM > Preferences.");
+}
+
+QString studiesFoundText(int count) {
+    return PacsBrowser::tr("Studies found: %1.").arg(QLocale().toString(count));
 }
 
 std::string dicomDate(const QDateEdit* edit) {
@@ -276,7 +288,7 @@ void PacsBrowser::reloadSettings() {
         node_->setCurrentIndex(index);
     }
     if (settings_.nodes.empty()) {
-        setStatus(tr("No PACS node is set up yet: add one in DICOM > Preferences."), true);
+        setStatus(noNodeText(), true);
     }
     updateMoveNote();
     updateButtons();
@@ -288,6 +300,7 @@ QString PacsBrowser::status() const {
 
 void PacsBrowser::setStatus(const QString& message, bool problem) {
     status_->setText(message);
+    status_->setToolTip(QString());
     showAsProblem(status_, problem);
 }
 
@@ -333,8 +346,7 @@ void PacsBrowser::startSearch() {
             resultsNode_ = ok ? name : std::string();
             showStudies(answer.first);
             if (ok) {
-                setStatus(tr("Studies found: %1.")
-                              .arg(QLocale().toString(static_cast<int>(answer.first.size()))));
+                setStatus(studiesFoundText(static_cast<int>(answer.first.size())));
             } else {
                 setStatus(failureText(answer.second, peer), true);
             }
@@ -466,9 +478,51 @@ void PacsBrowser::updateButtons() {
     retrieveStudy_->setEnabled(!busy && hasStudy);
     retrieveSeries_->setEnabled(!busy && hasSeries);
     cancel_->setEnabled(retrieve_ != nullptr && !retrieve_->stop.stop_requested());
-    open_->setEnabled(retrieve_ == nullptr && !retrievedFolder_.isEmpty());
+    // Open opens what was retrieved: only while that is what is selected.
+    const auto [study, series] = selectedUids();
+    open_->setEnabled(retrieve_ == nullptr && !retrievedFolder_.isEmpty() &&
+                      study == retrievedStudy_.toStdString() &&
+                      (retrievedSeries_.empty() || series == retrievedSeries_));
     useGet_->setEnabled(retrieve_ == nullptr);
     useMove_->setEnabled(retrieve_ == nullptr);
+}
+
+std::pair<std::string, std::string> PacsBrowser::selectedUids() const {
+    std::pair<std::string, std::string> uids;
+    const int studyRow = studies_->selectionModel()->hasSelection() ? studies_->currentRow() : -1;
+    if (studyRow < 0 || studyRow >= static_cast<int>(studyResults_.size())) {
+        return uids;
+    }
+    uids.first = studyResults_[static_cast<std::size_t>(studyRow)].studyInstanceUid;
+    const int seriesRow = series_->selectionModel()->hasSelection() ? series_->currentRow() : -1;
+    if (seriesRow >= 0 && seriesRow < static_cast<int>(seriesResults_.size())) {
+        uids.second = seriesResults_[static_cast<std::size_t>(seriesRow)].seriesInstanceUid;
+    }
+    return uids;
+}
+
+void PacsBrowser::forgetRetrieve() {
+    retrievedFolder_.clear();
+    retrievedStudy_.clear();
+    retrievedSeries_.clear();
+    progress_->setValue(0);
+    progress_->resetFormat();
+    // What the tables show still holds; anything said of a retrieve does not.
+    if (settings_.nodes.empty()) {
+        setStatus(noNodeText(), true);
+    } else if (resultsNode() != nullptr) {
+        setStatus(studiesFoundText(studies_->rowCount()));
+    } else {
+        setStatus(QString());
+    }
+    updateButtons();
+}
+
+void PacsBrowser::showEvent(QShowEvent* event) {
+    QDialog::showEvent(event);
+    if (!event->spontaneous() && retrieve_ == nullptr) {
+        forgetRetrieve();
+    }
 }
 
 void PacsBrowser::startRetrieve(bool wholeStudy) {
@@ -510,6 +564,7 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
     retrievedFolder_.clear();
     retrievedStore_ = QString::fromStdString(job.settings.storeFolder.string());
     retrievedStudy_ = QString::fromStdString(job.request.studyInstanceUid);
+    retrievedSeries_ = job.request.seriesInstanceUid;
     retrieve_ = std::make_shared<RetrieveControl>();
     progress_->setValue(0);
     progress_->resetFormat();
@@ -518,15 +573,17 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
     updateButtons();
     runInBackground(
         this, [job, control = retrieve_] { return runRetrieve(job, *control); },
-        [this, peer = job.node](const RetrieveOutcome& outcome) {
+        [this, peer = job.node, name = text(node->name)](const RetrieveOutcome& outcome) {
             progressTimer_->stop();
             retrieve_.reset();
             retrieveEnded(outcome);
-            if (outcome.failure.kind != NetworkFailure::Kind::None) {
-                setStatus(outcome.failure.kind == NetworkFailure::Kind::Cancelled
-                              ? tr("Retrieve cancelled: nothing of it was kept.")
-                              : failureText(outcome.failure, peer),
-                          outcome.failure.kind != NetworkFailure::Kind::Cancelled);
+            if (outcome.failure.kind == NetworkFailure::Kind::Cancelled) {
+                setStatus(tr("Retrieve cancelled: nothing of it was kept."));
+            } else if (outcome.failure.kind != NetworkFailure::Kind::None) {
+                // One plain sentence; the technical detail in the tooltip and the log.
+                setStatus(retrieveFailureText(outcome.failure, name, peer, outcome.kept), true);
+                status_->setToolTip(tr("Details: %1").arg(text(outcome.failure.detail)));
+                log::warning(kLog, "retrieve failed: " + outcome.failure.detail);
             }
             updateButtons();
             emit retrieveFinished(outcome.failure.kind == NetworkFailure::Kind::None &&
@@ -537,6 +594,7 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
 void PacsBrowser::retrieveEnded(const RetrieveOutcome& outcome) {
     if (outcome.failure.kind != NetworkFailure::Kind::None) {
         progress_->setValue(0);
+        progress_->resetFormat();  // no "64 of 400 images": none of them is kept
         return;
     }
     if (outcome.notStoredByListener) {

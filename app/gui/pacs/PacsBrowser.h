@@ -81,6 +81,8 @@ class PacsBrowser : public QDialog {
     [[nodiscard]] QPushButton* retrieveSeriesButton() const noexcept { return retrieveSeries_; }
     [[nodiscard]] QProgressBar* progressBar() const noexcept { return progress_; }
     [[nodiscard]] QPushButton* cancelButton() const noexcept { return cancel_; }
+    /// Enabled once a retrieve has finished, while the study (or series) it
+    /// retrieved is the one selected.
     [[nodiscard]] QPushButton* openButton() const noexcept { return open_; }
 
   signals:
@@ -98,8 +100,18 @@ class PacsBrowser : public QDialog {
     /// A retrieve ended: done, failed or cancelled (status() says which).
     void retrieveFinished(bool ok);
 
+  protected:
+    /// Shown again (Query PACS… after it was closed or stepped aside for
+    /// Open): unless a retrieve still runs, the last retrieve's progress,
+    /// status and Open are forgotten, so the dialog starts clean.
+    void showEvent(QShowEvent* event) override;
+
   private:
     [[nodiscard]] const PacsNode* currentNode() const;
+    /// The UIDs of the study and series selected (series empty: none).
+    [[nodiscard]] std::pair<std::string, std::string> selectedUids() const;
+    /// Forgets the finished retrieve: progress bar, its status, Open.
+    void forgetRetrieve();
     /// The node the tables' rows came from (nullptr when none or removed).
     [[nodiscard]] const PacsNode* resultsNode() const;
     [[nodiscard]] pacs::StudyQuery query() const;
@@ -128,6 +140,7 @@ class PacsBrowser : public QDialog {
     QString retrievedFolder_;
     QString retrievedStore_;  ///< the store and study of the last retrieve
     QString retrievedStudy_;
+    std::string retrievedSeries_;  ///< the series retrieved; empty: the whole study
 
     QComboBox* node_ = nullptr;
     QLineEdit* patientName_ = nullptr;

@@ -38,12 +38,33 @@ std::optional<std::filesystem::path> storedFolder(const pacs::LocalStore& store,
     return std::nullopt;
 }
 
+/// The instances of what `request` names that the store holds complete.
+std::size_t storedInstances(const pacs::LocalStore& store, const pacs::RetrieveRequest& request) {
+    std::size_t total = 0;
+    for (const pacs::StoredStudy& study : store.studies()) {
+        if (study.studyInstanceUid != request.studyInstanceUid) {
+            continue;
+        }
+        for (const pacs::StoredSeries& series : study.series) {
+            if (request.seriesInstanceUid.empty() ||
+                series.seriesInstanceUid == request.seriesInstanceUid) {
+                total += static_cast<std::size_t>(series.instances);
+            }
+        }
+    }
+    return total;
+}
+
 }  // namespace
 
 RetrieveOutcome runRetrieve(const RetrieveJob& job, RetrieveControl& control) {
     RetrieveOutcome outcome;
+    std::optional<pacs::LocalStore> opened;
+    std::size_t before = 0;
     try {
-        pacs::LocalStore store = openStore(job.settings);
+        opened.emplace(openStore(job.settings));
+        pacs::LocalStore& store = *opened;
+        before = storedInstances(store, job.request);
         const pacs::LocalAe& me = job.settings.me;
         const Progress progress(
             [&control](double fraction, std::string_view) { control.fraction = fraction; },
@@ -70,6 +91,17 @@ RetrieveOutcome runRetrieve(const RetrieveJob& job, RetrieveControl& control) {
         }
     } catch (...) {
         outcome.failure = classifyFailure(std::current_exception());
+        // What the failed transfer left in the store, so that its message
+        // is true: a C-GET's transaction is discarded; our listener commits
+        // a C-MOVE's instances per association the peer released.
+        try {
+            if (opened) {
+                const std::size_t after = storedInstances(*opened, job.request);
+                outcome.kept = after > before ? after - before : 0;
+            }
+        } catch (const std::exception&) {
+            outcome.kept.reset();  // the store cannot be read: unknown
+        }
     }
     return outcome;
 }

@@ -10,6 +10,7 @@
 #include <atomic>
 #include <cstddef>
 #include <filesystem>
+#include <optional>
 #include <stop_token>
 
 #include "gui/pacs/NetworkFailure.h"
@@ -40,6 +41,11 @@ struct RetrieveOutcome {
     std::size_t instances = 0;         ///< instances retrieved
     std::filesystem::path folder;      ///< the retrieved series' (or study's) folder in the store
     bool notStoredByListener = false;  ///< C-MOVE done, but our listener stored nothing in time
+    /// A failed retrieve: instances of it the local store holds now that it
+    /// did not before (C-GET: none, its transaction is discarded; C-MOVE:
+    /// what our listener committed from associations the peer released);
+    /// nullopt when the store could not be read.
+    std::optional<std::size_t> kept;
 };
 
 /// Runs `job`; never throws (failures are in the outcome; a stop through

@@ -12,6 +12,7 @@
 #include <QLocale>
 #include <QSlider>
 #include <QToolButton>
+#include <algorithm>
 #include <cmath>
 
 #include "gui/ViewerWidget.h"
@@ -132,7 +133,7 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
         auto* button = new QToolButton(cameraButtons_);
         const QString name = capitalised(render::toString(view));
         button->setObjectName(QStringLiteral("view") + name);
-        button->setText(anatomicalLabel(view));
+        anatomicalButtons_.at(static_cast<std::size_t>(index)) = button;
         grid->addWidget(button, 1 + index / 3, index % 3);
         ++index;
         connect(button, &QToolButton::clicked, this, [this, view] {
@@ -145,6 +146,7 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
         });
     }
     form->addRow(tr("Camera:"), cameraButtons_);
+    labelCameraButtons();
 
     legends_ = new QCheckBox(settingLabel("legends"), this);
     legends_->setObjectName(QStringLiteral("displayLegends"));
@@ -212,22 +214,78 @@ QString DisplayPanel::presetLabel(render::ViewPreset preset) {
     return {};
 }
 
-QString DisplayPanel::anatomicalLabel(render::AnatomicalView view) {
+QString DisplayPanel::anatomicalLabel(render::AnatomicalView view, render::SceneFrame frame) {
+    const bool patient = frame == render::SceneFrame::PatientLps;
     switch (view) {
         case render::AnatomicalView::Anterior:
             return tr("Anterior");
         case render::AnatomicalView::Posterior:
             return tr("Posterior");
         case render::AnatomicalView::Left:
-            return tr("Left");
+            return patient ? tr("Left lateral") : tr("Left");
         case render::AnatomicalView::Right:
-            return tr("Right");
+            return patient ? tr("Right lateral") : tr("Right");
         case render::AnatomicalView::Superior:
             return tr("Superior");
         case render::AnatomicalView::Inferior:
             return tr("Inferior");
     }
     return {};
+}
+
+QString DisplayPanel::anatomicalToolTip(render::AnatomicalView view, render::SceneFrame frame) {
+    if (frame != render::SceneFrame::PatientLps) {
+        // Meshes carry no anatomy: the view is along an axis, named as for LPS data.
+        switch (view) {
+            case render::AnatomicalView::Anterior:
+                return tr("From -y, +z up (the anterior view of data in patient LPS coordinates)");
+            case render::AnatomicalView::Posterior:
+                return tr("From +y, +z up (the posterior view of data in patient LPS coordinates)");
+            case render::AnatomicalView::Left:
+                return tr(
+                    "From +x, +z up (the left lateral view of data in patient LPS "
+                    "coordinates)");
+            case render::AnatomicalView::Right:
+                return tr(
+                    "From -x, +z up (the right lateral view of data in patient LPS "
+                    "coordinates)");
+            case render::AnatomicalView::Superior:
+                return tr("From +z, -y up (the superior view of data in patient LPS coordinates)");
+            case render::AnatomicalView::Inferior:
+                return tr("From -z, -y up (the inferior view of data in patient LPS coordinates)");
+        }
+        return {};
+    }
+    switch (view) {
+        case render::AnatomicalView::Anterior:
+            return tr(
+                "From the front, head up: the patient's left on the right, as on the "
+                "coronal slice (the view a DICOM scene opens in)");
+        case render::AnatomicalView::Posterior:
+            return tr("From behind, head up: the patient's left on the left");
+        case render::AnatomicalView::Left:
+            return tr("From the patient's left, head up: anterior on the left");
+        case render::AnatomicalView::Right:
+            return tr("From the patient's right, head up: anterior on the right");
+        case render::AnatomicalView::Superior:
+            return tr(
+                "From the head towards the feet, anterior up: the patient's left on the "
+                "left");
+        case render::AnatomicalView::Inferior:
+            return tr(
+                "From the feet towards the head, anterior up: the patient's left on the "
+                "right, as on the axial slice");
+    }
+    return {};
+}
+
+void DisplayPanel::labelCameraButtons() {
+    const render::SceneFrame frame =
+        viewer_->scene() ? viewer_->scene()->frame : render::SceneFrame::Unknown;
+    for (std::size_t n = 0; n < anatomicalButtons_.size(); ++n) {
+        const render::AnatomicalView view = render::allAnatomicalViews()[n];
+        anatomicalButtons_.at(n)->setText(anatomicalLabel(view, frame));
+    }
 }
 
 void DisplayPanel::applyCue() {
@@ -296,6 +354,7 @@ void DisplayPanel::syncFromViewer() {
     }
     background_->setCurrentIndex(index);
     legends_->setChecked(viewer_->legendsVisible());
+    labelCameraButtons();
     const QColor vessel = toQColor(viewer_->style().vesselColor);
     vesselColor_->setText(vessel.name());
     vesselColor_->setStyleSheet(QStringLiteral("QToolButton { background-color: %1; color: %2; }")
@@ -328,9 +387,19 @@ void DisplayPanel::updateApplicability() {
                   tr("Where the light comes from, above or below: positive = from above"), noData);
     setApplicable(lightReset_, hasScene,
                   tr("The default light: a little above and left of the eye"), noData);
+    const render::SceneFrame frame =
+        hasScene ? viewer_->scene()->frame : render::SceneFrame::Unknown;
     for (auto* button : cameraButtons_->findChildren<QToolButton*>()) {
-        setApplicable(button, hasScene, tr("Move the camera to this view of the data"),
-                      tr("No data loaded"));
+        // An anatomical view says where it looks from and what is up.
+        auto* const anatomical =
+            std::find(anatomicalButtons_.begin(), anatomicalButtons_.end(), button);
+        const QString what =
+            anatomical == anatomicalButtons_.end()
+                ? tr("Move the camera to this view of the data")
+                : anatomicalToolTip(render::allAnatomicalViews()[static_cast<std::size_t>(
+                                        anatomical - anatomicalButtons_.begin())],
+                                    frame);
+        setApplicable(button, hasScene, what, tr("No data loaded"));
     }
 }
 

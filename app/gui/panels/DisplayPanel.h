@@ -2,8 +2,10 @@
 #pragma once
 
 #include <QWidget>
+#include <array>
 #include <glm/glm.hpp>
 
+#include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewPresets.h"
 
 class QCheckBox;
@@ -23,9 +25,10 @@ namespace panels {
 /// chromadepth / pseudo-chromadepth, fog, Fresnel edge), the vessels'
 /// material colour (used when no array colours them), the background,
 /// the key light's direction (azimuth, elevation; shared by the vessels, the
-/// VSS and translucent objects), camera presets (Far, Medium, Close and the
-/// six anatomical views), the legends, and a performance overlay over the viewer (the last frame's
-/// passes with their CPU milliseconds).
+/// VSS and translucent objects), camera presets (Far, Medium, Close in the
+/// scene's home orientation, and the six anatomical views, named as
+/// radiology names them for a scene in the patient frame), the legends, and a performance overlay
+/// over the viewer (the last frame's passes with their CPU milliseconds).
 class DisplayPanel : public QWidget {
     Q_OBJECT
 
@@ -61,7 +64,16 @@ class DisplayPanel : public QWidget {
 
   private:
     [[nodiscard]] static QString presetLabel(render::ViewPreset preset);
-    [[nodiscard]] static QString anatomicalLabel(render::AnatomicalView view);
+    /// The anatomical buttons' names: radiology's for a scene in the patient
+    /// frame ("Left lateral"), the former short ones otherwise.
+    [[nodiscard]] static QString anatomicalLabel(render::AnatomicalView view,
+                                                 render::SceneFrame frame);
+    /// Where the camera looks from and what is up, and for meshes the axes.
+    [[nodiscard]] static QString anatomicalToolTip(render::AnatomicalView view,
+                                                   render::SceneFrame frame);
+    /// Names the anatomical buttons for the viewer's scene's frame (their
+    /// tooltips: updateApplicability()).
+    void labelCameraButtons();
     void applyCue();
     void applyBackground();
     void chooseVesselColor();
@@ -81,6 +93,7 @@ class DisplayPanel : public QWidget {
     QCheckBox* performance_ = nullptr;
     QLabel* overlay_ = nullptr;
     QWidget* cameraButtons_ = nullptr;
+    std::array<QToolButton*, 6> anatomicalButtons_{};  ///< allAnatomicalViews()' order
     bool syncing_ = false;
 };
 

@@ -687,7 +687,9 @@ void SegmentationPanel::setDisplay(Display display) {
         meshScene_ = viewer_->scene();
         const auto iso = static_cast<float>(iso_->value());
         viewer_->setVolume(volume_, iso);
-        emit sceneReady(std::make_shared<const scene::Scene>(),
+        auto volumeOnly = std::make_shared<scene::Scene>();  // no meshes, the volume's frame
+        volumeOnly->frame = scene::SceneFrame::PatientLps;
+        emit sceneReady(std::move(volumeOnly),
                         tr("Ray-cast iso-surface at %1").arg(valueText(static_cast<double>(iso))));
     } else {
         viewer_->setVolume(nullptr, 0.0F);

@@ -122,6 +122,7 @@ std::string writeCtSeries(const std::filesystem::path& folder, const scene::Volu
         put(DCM_PixelSpacing, pixelSpacing);
         put(DCM_SliceThickness, ds(thickness));
         put(DCM_SpacingBetweenSlices, ds(thickness));
+        put(DCM_PatientPosition, options.patientPosition);
         if (mr) {
             put(DCM_ScanningSequence, "GR");
             put(DCM_SequenceVariant, "SP");

@@ -135,9 +135,12 @@ void fail(const OFCondition& cond, const Node& peer, const std::string& what) {
         contains(text, "Unknown Host") || contains(text, "unreachable")) {
         throw ConnectionRefusedError(where + "cannot connect (" + text + ")");
     }
+    // The connection went in the middle of a message too (a killed peer
+    // shows as a failed send of our response as often as an abort).
     if (cond == DUL_PEERABORTEDASSOCIATION || cond == DUL_NETWORKCLOSED ||
-        cond == DUL_PEERREQUESTEDRELEASE) {
-        throw PeerFailedError(where + "the peer closed the connection (" + text + ")");
+        cond == DUL_PEERREQUESTEDRELEASE || cond == DIMSE_SENDFAILED ||
+        cond == DIMSE_RECEIVEFAILED || cond == DIMSE_READPDVFAILED) {
+        throw ConnectionClosedError(where + "the peer closed the connection (" + text + ")");
     }
     throw PeerFailedError(where + text);
 }

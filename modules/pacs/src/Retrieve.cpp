@@ -3,6 +3,7 @@
 
 #include <dcmtk/dcmdata/dcdeftag.h>
 
+#include <functional>
 #include <optional>
 
 #include "Association.h"
@@ -53,19 +54,41 @@ struct Outcome {
     std::size_t completed = 0;
     std::size_t failed = 0;
     std::size_t warnings = 0;
+    /// All sub-operations, as the last response that counted them said.
+    std::optional<std::size_t> total;
     void take(const RetrieveResponse& r) {
         status = r.m_status;
         completed = r.m_numberOfCompletedSubops;
         failed = r.m_numberOfFailedSubops;
         warnings = r.m_numberOfWarningSubops;
         final = r.m_status != STATUS_Pending;
+        if (!final) {  // remaining is only meaningful in pending responses
+            total = completed + failed + warnings +
+                    static_cast<std::size_t>(r.m_numberOfRemainingSubops);
+        }
     }
 };
+
+/// Runs `step`, the part of a retrieve after its request went out: a
+/// NetworkError it throws learns how far the transfer had come
+/// (`received` instances, the outcome's total) before it goes on.
+template <typename Step>
+void duringTransfer(const Outcome& outcome, const std::function<std::size_t()>& received,
+                    Step&& step) {
+    try {
+        step();
+    } catch (NetworkError& e) {
+        e.setTransfer({received(), outcome.total});
+        throw;
+    }
+}
 
 /// Throws for an outcome that is not a full success.
 void checkOutcome(const Outcome& o, const Node& peer, const char* what) {
     if (!o.final) {
-        throw PeerFailedError(describe(peer) + ": " + what + " ended without a final response");
+        // DCMTK's loop ended without the peer's last word: the connection went.
+        throw ConnectionClosedError(describe(peer) + ": " + what +
+                                    " ended without a final response (the connection closed)");
     }
     detail::checkStatus(o.status, peer, what);
     if (o.failed > 0 || o.status != STATUS_Success) {
@@ -187,11 +210,15 @@ RetrieveResult getInto(LocalStore& store, const LocalAe& me, const Node& peer,
         scu.abortAssociation();
         throw IoError(*scu.storeProblem);
     }
-    if (cond.bad()) {
-        scu.throwIfStopped();
-        detail::fail(cond, peer, "C-GET");
-    }
-    checkOutcome(scu.outcome, peer, "C-GET");
+    duringTransfer(
+        scu.outcome, [&] { return transaction.size(); },
+        [&] {
+            if (cond.bad()) {
+                scu.throwIfStopped();
+                detail::fail(cond, peer, "C-GET");
+            }
+            checkOutcome(scu.outcome, peer, "C-GET");
+        });
     detail::release(scu);
     const std::size_t received = transaction.size();
     transaction.commit();
@@ -216,11 +243,15 @@ RetrieveResult moveTo(const std::string& destination, const LocalAe& me, const N
         scu.abortAssociation();
         throw CancelledError();
     }
-    if (cond.bad()) {
-        scu.throwIfStopped();
-        detail::fail(cond, peer, "C-MOVE");
-    }
-    checkOutcome(scu.outcome, peer, "C-MOVE");
+    duringTransfer(
+        scu.outcome, [&] { return scu.outcome.completed; },
+        [&] {
+            if (cond.bad()) {
+                scu.throwIfStopped();
+                detail::fail(cond, peer, "C-MOVE");
+            }
+            checkOutcome(scu.outcome, peer, "C-MOVE");
+        });
     detail::release(scu);
     return {scu.outcome.completed};
 }

@@ -106,8 +106,14 @@ float Camera::fittingDistance(const Aabb& box) const noexcept {
 }
 
 void Camera::reset() noexcept {
-    rotation_ = glm::quat(1.0F, 0.0F, 0.0F, 0.0F);
+    rotation_ = home_;
     fit(scene_);
+}
+
+void Camera::setHomeRotation(const glm::quat& rotation) noexcept {
+    if (glm::length(rotation) > 0.0F) {
+        home_ = glm::normalize(rotation);
+    }
 }
 
 glm::vec3 Camera::arcballVector(const glm::vec2& pixel) const noexcept {

@@ -15,6 +15,7 @@
 #include "vv/core/Error.h"
 #include "vv/render/GlResources.h"
 #include "vv/render/LegendPainter.h"
+#include "vv/render/ViewPresets.h"
 
 namespace vv::render {
 
@@ -186,6 +187,8 @@ Camera OffscreenRenderer::cameraFor(const scene::Scene& scene, const OffscreenOp
         camera.setViewport(options.width, options.height);
     }
     if (!options.camera) {
+        camera.setHomeRotation(homeRotation(scene.frame));
+        camera.setRotation(camera.homeRotation());
         camera.fit(bounds);
     } else {
         camera.setSceneBounds(bounds);

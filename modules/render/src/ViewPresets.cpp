@@ -150,9 +150,19 @@ glm::quat anatomicalRotation(AnatomicalView view) noexcept {
     return glm::normalize(glm::quat_cast(glm::mat3(right, up, back)));
 }
 
+glm::quat homeRotation(scene::SceneFrame frame) noexcept {
+    switch (frame) {
+        case scene::SceneFrame::PatientLps:
+            return anatomicalRotation(AnatomicalView::Anterior);
+        case scene::SceneFrame::Unknown:
+            break;
+    }
+    return {1.0F, 0.0F, 0.0F, 0.0F};
+}
+
 std::optional<NamedView> namedViewFromName(std::string_view name) noexcept {
     if (const auto preset = viewPresetFromName(name)) {
-        return NamedView{*preset, glm::quat(1.0F, 0.0F, 0.0F, 0.0F)};
+        return NamedView{*preset, std::nullopt};
     }
     if (const auto view = anatomicalViewFromName(name)) {
         return NamedView{ViewPreset::Far, anatomicalRotation(*view)};
@@ -242,15 +252,19 @@ Camera presetCamera(const Aabb& bounds, int width, int height, ViewPreset preset
 }
 
 Camera presetCamera(const scene::Scene& scene, int width, int height, ViewPreset preset,
-                    const glm::quat& rotation) {
+                    const std::optional<glm::quat>& rotation) {
     const Aabb bounds = scene.bounds();
-    Camera camera = baseCamera(bounds, width, height, rotation);
+    const glm::quat home = homeRotation(scene.frame);
+    Camera camera = baseCamera(bounds, width, height, rotation.value_or(home));
+    camera.setHomeRotation(home);
     bool anyVertex = false;
     for (const scene::Mesh& mesh : scene.meshes) {
         anyVertex = anyVertex || !mesh.positions.empty();
     }
     if (!anyVertex) {
-        return presetCamera(bounds, width, height, preset, rotation);
+        camera = presetCamera(bounds, width, height, preset, rotation.value_or(home));
+        camera.setHomeRotation(home);
+        return camera;
     }
     const float far = farDistance(camera, [&](const auto& visit) {
         for (const scene::Mesh& mesh : scene.meshes) {

@@ -15,6 +15,7 @@ scene::Scene loadDicomSegMeshes(const std::filesystem::path& file, const Surface
     const std::vector<scene::LabelMap> maps =
         dicom::loadDicomSegLabelMaps(file, progress.sub(0.0, 0.3));
     scene::Scene scene;
+    scene.frame = scene::SceneFrame::PatientLps;
     std::size_t withVoxels = 0;
     for (const scene::LabelMap& map : maps) {
         withVoxels += map.components.front().voxels > 0 ? 1 : 0;

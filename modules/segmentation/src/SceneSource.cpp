@@ -169,6 +169,7 @@ scene::Scene loadSceneSource(const fs::path& path, const SceneSourceOptions& opt
 
     // DICOM. A single image file stands for its whole series: the series is
     // looked for in the file's folder.
+    scene.frame = scene::SceneFrame::PatientLps;  // images and SEG: LPS mm
     fs::path where = path;
     std::string uid = options.seriesInstanceUid;
     std::error_code ec;
@@ -272,6 +273,9 @@ scene::Scene loadSceneSources(const std::vector<std::filesystem::path>& files,
                                        : meshio::loadScene({files[i]}, options.mesh, part);
         if (dicomSource && report != nullptr) {
             *report = std::move(loaded);
+        }
+        if (one.frame == scene::SceneFrame::PatientLps) {
+            scene.frame = one.frame;  // meshes opened with DICOM are shown in its frame
         }
         for (auto& mesh : one.meshes) {
             scene.meshes.push_back(std::move(mesh));

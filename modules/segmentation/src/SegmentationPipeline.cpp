@@ -168,6 +168,7 @@ SegmentationOutcome runSegmentation(const SegmentationRequest& request, const Pr
     outcome.step = step;
     auto scene = std::make_shared<scene::Scene>();
     scene->meshes.push_back(std::move(mesh));
+    scene->frame = scene::SceneFrame::PatientLps;  // surfaces of a volume: LPS mm
     outcome.scene = std::move(scene);
     outcome.labelMap = std::make_shared<const scene::LabelMap>(std::move(segmented.labelMap));
     outcome.milliseconds =

@@ -18,6 +18,10 @@ struct CtSeriesWriteOptions {
     std::string studyDescription = "VesselView demo";
     std::string patientName = "VesselView^Demo";  ///< synthetic; never logged
     std::string patientId = "VV-DEMO";
+    /// Patient Position (0018,5100): how the patient lay, "HFS" (head first,
+    /// supine), "FFS" (feet first), "HFP", …. Only recorded: the geometry is
+    /// indexToWorld()'s, in the patient frame whatever the position.
+    std::string patientPosition = "HFS";
     /// Instance numbers run backwards (slice 0 = highest number), so that
     /// readers that sort by instance number instead of position go wrong.
     bool reverseInstanceNumbers = true;
@@ -34,7 +38,7 @@ struct CtSeriesWriteOptions {
 /// Orientation (Patient) from indexToWorld() columns 0 and 1, Image Position
 /// (Patient) of slice k = origin + k × column 2, Pixel Spacing from the column
 /// lengths, Slice Thickness and Spacing Between Slices = the step along the
-/// normal. With options.modality "MR": MR Image Storage, stored values =
+/// normal, Patient Position. With options.modality "MR": MR Image Storage, stored values =
 /// the values (clamped to 0..65535), Rescale Slope 1 / Intercept 0.
 /// Returns the Series Instance UID. Reports progress ("Writing the CT
 /// series"); throws IoError (naming the file), InvalidArgumentError for an

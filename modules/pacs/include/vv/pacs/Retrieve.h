@@ -28,14 +28,20 @@ struct RetrieveResult {
 /// of instances received; a stop through `progress` aborts the association
 /// at once, also while waiting for the peer.
 /// Throws InvalidArgumentError (a malformed UID), the NetworkError family
-/// (PeerFailedError also when a sub-operation failed or the peer went away),
-/// CancelledError, IoError (the store). Nothing is marked complete on any throw.
+/// (PeerFailedError also when a sub-operation failed, ConnectionClosedError
+/// when the peer went away), CancelledError, IoError (the store). Nothing
+/// is marked complete on any throw: the transaction and every instance
+/// received are discarded. A NetworkError thrown after the request went out
+/// carries transfer(): the instances received by then and all of them.
 RetrieveResult getInto(LocalStore& store, const LocalAe& me, const Node& peer,
                        const RetrieveRequest& request, const Progress& progress = {});
 
 /// C-MOVE of `request` from `peer` to the AE title `destination` (which the
 /// peer must know). Returns when the peer reports the move done; the
-/// destination's storage SCP stores the instances. Progress and errors as getInto.
+/// destination's storage SCP stores the instances (ours commits them per
+/// association, when the peer releases it, and discards an aborted one).
+/// Progress and errors as getInto; transfer().received counts the
+/// sub-operations the peer reported done.
 RetrieveResult moveTo(const std::string& destination, const LocalAe& me, const Node& peer,
                       const RetrieveRequest& request, const Progress& progress = {});
 

@@ -46,9 +46,15 @@ class Camera {
     /// sphere at the origin.
     void fit(const Aabb& box) noexcept;
 
-    /// Back to the home view: the default orientation, fitted to the scene
-    /// bounds (the unit sphere at the origin when there are none).
+    /// Back to the home view: the home orientation (setHomeRotation()),
+    /// fitted to the scene bounds (the unit sphere at the origin when there
+    /// are none).
     void reset() noexcept;
+    /// The orientation reset() returns to (camera-to-world, normalised; a
+    /// zero quaternion is ignored): the identity unless set, e.g.
+    /// homeRotation() of the scene's frame (ViewPresets.h).
+    void setHomeRotation(const glm::quat& rotation) noexcept;
+    [[nodiscard]] const glm::quat& homeRotation() const noexcept { return home_; }
 
     /// Arcball rotation for a mouse drag from pixel `from` to pixel `to`: the
     /// scene turns with the mouse about the target. Keeps target and distance.
@@ -112,6 +118,7 @@ class Camera {
     glm::vec3 target_{0.0F};
     float distance_ = 4.0F;
     glm::quat rotation_{1.0F, 0.0F, 0.0F, 0.0F};
+    glm::quat home_{1.0F, 0.0F, 0.0F, 0.0F};
     std::optional<PixelRect> window_;  ///< tiled rendering: the part of the viewport drawn
 };
 

@@ -30,7 +30,8 @@ struct OffscreenOptions {
     /// Background colour, sRGB in [0, 1].
     glm::vec3 background{0.13F, 0.14F, 0.16F};
     MeshStyle style;
-    /// The view; nullopt = the default orientation fitted to the scene.
+    /// The view; nullopt = the scene's home orientation (homeRotation() of
+    /// its frame: anterior for the patient frame) fitted to the scene.
     /// A given camera gets its viewport set to width x height, unless it has
     /// a window (Camera::setWindow: one tile of a larger image): then its
     /// viewport stays and the window must be width x height.

@@ -10,20 +10,16 @@
 #include <optional>
 
 #include "vv/render/Camera.h"
+#include "vv/scene/Mesh.h"
 
 class QPainter;
 
 namespace vv::render {
 
-/// The frame a scene's coordinates are given in.
-enum class SceneFrame {
-    /// Unknown (meshes from files): the marker names the axes x, y, z.
-    Unknown,
-    /// DICOM's patient frame, LPS (+x left, +y posterior, +z superior; scenes
-    /// segmented from a DICOM series): the marker names patient directions
-    /// L/R, A/P, S/I.
-    PatientLps,
-};
+/// The frame a scene's coordinates are given in (scene::Scene::frame):
+/// Unknown names the axes x, y, z; PatientLps names patient directions
+/// L/R, A/P, S/I.
+using SceneFrame = scene::SceneFrame;
 
 /// What the view draws over the frame besides the legends: an orientation
 /// marker (top-left) and a scale bar (top-right). Both on by default.

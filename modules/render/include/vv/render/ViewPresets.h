@@ -86,15 +86,24 @@ enum class AnatomicalView {
 /// forward = -anatomicalSide(view), up = anatomicalUp(view).
 [[nodiscard]] glm::quat anatomicalRotation(AnatomicalView view) noexcept;
 
+/// The orientation a scene of `frame` opens in (its home view, what
+/// Camera::reset() returns to): for the patient frame the anterior view
+/// (anatomicalRotation(Anterior): head up, the patient's left on the
+/// screen's right, as on the coronal slice; 3D Slicer opens so too); for
+/// scenes without anatomy the identity (looking down -z, +y up).
+[[nodiscard]] glm::quat homeRotation(scene::SceneFrame frame) noexcept;
+
 /// A view by name, as the CLI's --view takes it: a distance preset and an orientation.
 struct NamedView {
     ViewPreset preset = ViewPreset::Far;
-    /// Camera-to-world; the identity (looking down -z, +y up) for far / medium / close.
-    glm::quat rotation{1.0F, 0.0F, 0.0F, 0.0F};
+    /// Camera-to-world; nullopt for far / medium / close: the scene's home
+    /// orientation (homeRotation() of its frame).
+    std::optional<glm::quat> rotation;
 };
 
-/// "far", "medium", "close" (default orientation) or an anatomical view name
-/// (the Far distance, anatomicalRotation()); ASCII case-insensitive; nullopt if unknown.
+/// "far", "medium", "close" (the scene's home orientation) or an anatomical
+/// view name (the Far distance, anatomicalRotation()); ASCII
+/// case-insensitive; nullopt if unknown.
 [[nodiscard]] std::optional<NamedView> namedViewFromName(std::string_view name) noexcept;
 
 /// Every name namedViewFromName() knows, comma separated (for messages and usage text).
@@ -114,9 +123,11 @@ struct NamedView {
 /// As above, but the Far distance fits the scene's vertices rather than the
 /// corners of its bounding box (tighter: the tree then just keeps the 10 %
 /// margin). The target is still the centre of scene.bounds(). A scene without
-/// vertices behaves as an empty box.
+/// vertices behaves as an empty box. `rotation` nullopt: the scene's home
+/// orientation (homeRotation(scene.frame)), which is also the camera's
+/// homeRotation().
 [[nodiscard]] Camera presetCamera(const scene::Scene& scene, int width, int height,
                                   ViewPreset preset,
-                                  const glm::quat& rotation = glm::quat(1.0F, 0.0F, 0.0F, 0.0F));
+                                  const std::optional<glm::quat>& rotation = std::nullopt);
 
 }  // namespace vv::render

@@ -54,9 +54,24 @@ struct Mesh {
     [[nodiscard]] const DataArray* pointArray(const std::string& name) const noexcept;
 };
 
+/// The frame a scene's coordinates are given in: whether they carry anatomy.
+enum class SceneFrame : std::uint8_t {
+    /// Unknown (mesh files): the axes have no anatomical meaning; views and
+    /// the orientation marker name them x, y, z.
+    Unknown,
+    /// DICOM's patient frame, LPS, mm: +x towards the patient's left, +y
+    /// posterior, +z superior (head). Scenes made from DICOM images or a
+    /// DICOM SEG (segmentation::loadSceneSource) say so; they open in the
+    /// anterior view and the marker names patient directions.
+    PatientLps,
+};
+
 /// Everything that is loaded at once: one or more meshes in one frame.
 struct Scene {
     std::vector<Mesh> meshes;
+    /// What the coordinates mean; set by whoever made the scene from data
+    /// that says (DICOM), Unknown otherwise.
+    SceneFrame frame = SceneFrame::Unknown;
     [[nodiscard]] Aabb bounds() const noexcept;
     /// Triangles of all meshes.
     [[nodiscard]] std::size_t triangleCount() const noexcept {

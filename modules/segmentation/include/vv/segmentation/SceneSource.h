@@ -65,8 +65,9 @@ struct SceneSourceReport {
 /// extracted as one surface (extractSurface()) in patient coordinates (LPS,
 /// mm), named "vessels" with `source` = path. A DICOM Segmentation object
 /// (isDicomSegFile(), or a chosen series of them in a folder) gives one mesh
-/// per segment (loadDicomSegMeshes(), with options.surface). `report`, when given, says what
-/// happened. Reports progress over the whole chain.
+/// per segment (loadDicomSegMeshes(), with options.surface). A scene from
+/// DICOM has frame scene::SceneFrame::PatientLps, a mesh file's Unknown.
+/// `report`, when given, says what happened. Reports progress over the whole chain.
 /// Throws as loadMesh / loadDicomVolume / segmentVessels / extractSurface
 /// (IoError, FormatError, MemoryError, InvalidArgumentError, CancelledError);
 /// a path that is not DICOM goes to loadMesh() and fails as it does (unknown
@@ -79,9 +80,9 @@ struct SceneSourceReport {
 /// Loads `files` into one scene, in order, as the GUI and a session open
 /// them: DICOM sources (isDicomSource()) through loadSceneSource() with
 /// `options` one by one, the meshes with meshio::loadScene() (as one batch
-/// when there is no DICOM source). `report`, when given, says what loading
-/// the last DICOM source did. Reports progress over all files. Throws as
-/// meshio::loadScene() / loadSceneSource() (IoError, FormatError, ...,
+/// when there is no DICOM source); in the patient frame when any source is
+/// DICOM. `report`, when given, says what loading the last DICOM source did. Reports progress over
+/// all files. Throws as meshio::loadScene() / loadSceneSource() (IoError, FormatError, ...,
 /// CancelledError).
 [[nodiscard]] scene::Scene loadSceneSources(const std::vector<std::filesystem::path>& files,
                                             const SceneSourceOptions& options = {},
@@ -108,7 +109,7 @@ bool setSceneSourceOption(const std::string& name, const std::string& value,
 
 /// dicom::loadDicomSegLabelMaps() then extractSurface() of each segment that
 /// has voxels: one mesh per segment, named after its Segment Label, `source` =
-/// file. Throws as both; FormatError when no segment has a voxel.
+/// file, in the patient frame. Throws as both; FormatError when no segment has a voxel.
 [[nodiscard]] scene::Scene loadDicomSegMeshes(const std::filesystem::path& file,
                                               const SurfaceOptions& options = {},
                                               const Progress& progress = {});
