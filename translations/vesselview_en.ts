@@ -32,16 +32,6 @@
     </message>
 </context>
 <context>
-    <name>vv::gui::panels::SegmentationPanel</name>
-    <message numerus="yes">
-        <source>%n more such end(s).</source>
-        <translation>
-            <numerusform>%n more such end.</numerusform>
-            <numerusform>%n more such ends.</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
     <name>vv::gui::NetworkFailure</name>
     <message numerus="yes">
         <source>after %n image(s)</source>
@@ -55,6 +45,16 @@
         <translation>
             <numerusform>%n image of it was kept in the local study store.</numerusform>
             <numerusform>%n images of it were kept in the local study store.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::SegmentationPanel</name>
+    <message numerus="yes">
+        <source>%n more such end(s).</source>
+        <translation>
+            <numerusform>%n more such end.</numerusform>
+            <numerusform>%n more such ends.</numerusform>
         </translation>
     </message>
 </context>
