@@ -70,8 +70,8 @@ class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInt
         GuiFixture::SetUp();
         window_->resize(GetParam().width, GetParam().height);
         bool shown = false;
-        QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown,
-                         [&shown] { shown = true; });
+        const vv::test::ScopedConnection keep1(QObject::connect(
+            window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; }));
         window_->openFiles({QStringLiteral(VV_DEMO_VTP)});
         ASSERT_TRUE(waitUntil([&] { return shown || !window_->lastError().isEmpty(); }))
             << "the demo did not load";
@@ -158,10 +158,12 @@ TEST_P(ClippingTest, SidePanelWithAVolumeShowsEveryTextInFull) {
     // A CT series: the Segmentation panel shows thresholds in HU, counts, a seed.
     demoSeries();
     QPointer<vv::gui::SeriesDialog> dialog;
-    QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
-                     [&dialog](vv::gui::SeriesDialog* shown) { dialog = shown; });
+    const vv::test::ScopedConnection keep1(
+        QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                         [&dialog](vv::gui::SeriesDialog* shown) { dialog = shown; }));
     bool shown = false;
-    QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; });
+    const vv::test::ScopedConnection keep2(QObject::connect(
+        window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; }));
     window_->openDicom(QString::fromStdString(demoSeriesDir().string()));
     ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
     ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();

@@ -20,6 +20,7 @@
 #include <memory>
 #include <numbers>
 #include <string>
+#include <utility>
 
 #include "TestMeshes.h"
 #include "gui/MainWindow.h"
@@ -38,6 +39,24 @@ inline fs::path panelTestDir() {
     fs::create_directories(dir);
     return dir;
 }
+
+/// A connection that ends with its scope. A slot that captures locals by
+/// reference must not outlive them: a later signal (the next scene shown, the
+/// next series chooser) would write into the stack of a function that has
+/// returned.
+class ScopedConnection {
+  public:
+    explicit ScopedConnection(QMetaObject::Connection connection)
+        : connection_(std::move(connection)) {}
+    ~ScopedConnection() { QObject::disconnect(connection_); }
+    ScopedConnection(const ScopedConnection&) = delete;
+    ScopedConnection& operator=(const ScopedConnection&) = delete;
+    ScopedConnection(ScopedConnection&&) = delete;
+    ScopedConnection& operator=(ScopedConnection&&) = delete;
+
+  private:
+    QMetaObject::Connection connection_;
+};
 
 /// Processes events until `done` holds or `timeoutMs` passed; returns `done()`.
 inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
@@ -143,8 +162,8 @@ class GuiFixture : public ::testing::Test {
         window_->resize(1100, 700);
         window_->show();
         bool applied = false;
-        QObject::connect(window_.get(), &gui::MainWindow::sessionApplied,
-                         [&applied] { applied = true; });
+        const ScopedConnection keep(QObject::connect(
+            window_.get(), &gui::MainWindow::sessionApplied, [&applied] { applied = true; }));
         return window_->openSession(path) && waitUntil([&] { return applied; }, 60000);
     }
 
@@ -154,8 +173,9 @@ class GuiFixture : public ::testing::Test {
     void openDicomFolder(const fs::path& folder) {
         const auto before = window_->volume();  // shown until the new one replaces it
         QPointer<gui::SeriesDialog> dialog;
-        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
-                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
+        const vv::test::ScopedConnection keep1(
+            QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                             [&dialog](gui::SeriesDialog* d) { dialog = d; }));
         window_->openDicom(QString::fromStdString(folder.string()));
         ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
         ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();

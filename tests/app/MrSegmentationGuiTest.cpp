@@ -97,8 +97,9 @@ class MrSegmentationGuiTest : public GuiFixture {
     /// Opens the series in `dir` with the chooser's defaults and waits for the vessels.
     void open(const fs::path& dir) {
         QPointer<gui::SeriesDialog> dialog;
-        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
-                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
+        const vv::test::ScopedConnection keep1(
+            QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                             [&dialog](gui::SeriesDialog* d) { dialog = d; }));
         window_->openDicom(QString::fromStdString(dir.string()));
         ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
         ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();

@@ -228,11 +228,13 @@ class PacsGuiTest : public vv::test::GuiFixture {
     /// once a scene is shown.
     bool openDicomAndAccept(const std::function<void()>& open) {
         QPointer<vv::gui::SeriesDialog> dialog;
-        QObject::connect(window_.get(), &MainWindow::seriesDialogShown, window_.get(),
-                         [&dialog](vv::gui::SeriesDialog* d) { dialog = d; });
+        const vv::test::ScopedConnection keep1(
+            QObject::connect(window_.get(), &MainWindow::seriesDialogShown, window_.get(),
+                             [&dialog](vv::gui::SeriesDialog* d) { dialog = d; }));
         bool shown = false;
-        QObject::connect(window_.get(), &MainWindow::sceneShown, window_.get(),
-                         [&shown, this] { shown = window_->viewer()->scene() != nullptr; });
+        const vv::test::ScopedConnection keep2(
+            QObject::connect(window_.get(), &MainWindow::sceneShown, window_.get(),
+                             [&shown, this] { shown = window_->viewer()->scene() != nullptr; }));
         open();
         if (!waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); })) {
             return false;

@@ -320,11 +320,13 @@ class PacsSeriesTitleGuiTest : public PacsLocalStudiesGuiTest {
         }
         browser->tree()->setCurrentItem(browser->tree()->topLevelItem(0)->child(0));
         QPointer<vv::gui::SeriesDialog> chooser;
-        QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
-                         [&chooser](vv::gui::SeriesDialog* shown) { chooser = shown; });
+        const vv::test::ScopedConnection keep1(
+            QObject::connect(window_.get(), &vv::gui::MainWindow::seriesDialogShown, window_.get(),
+                             [&chooser](vv::gui::SeriesDialog* shown) { chooser = shown; }));
         bool shown = false;
-        QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, window_.get(),
-                         [&shown] { shown = true; });
+        const vv::test::ScopedConnection keep2(
+            QObject::connect(window_.get(), &vv::gui::MainWindow::sceneShown, window_.get(),
+                             [&shown] { shown = true; }));
         browser->openButton()->click();
         if (!waitUntil([&] { return !chooser.isNull() || !window_->lastError().isEmpty(); })) {
             return false;
@@ -455,8 +457,9 @@ class PacsSessionTitleGuiTest : public PacsSeriesTitleGuiTest {
         QObject::connect(window_->document(), &vv::gui::DocumentController::loadProgress,
                          window_.get(), [this] { shown_ << statusText(*window_); });
         bool applied = false;
-        QObject::connect(window_.get(), &vv::gui::MainWindow::sessionApplied, window_.get(),
-                         [&applied] { applied = true; });
+        const vv::test::ScopedConnection keep1(
+            QObject::connect(window_.get(), &vv::gui::MainWindow::sessionApplied, window_.get(),
+                             [&applied] { applied = true; }));
         return window_->openSession(session()) &&
                waitUntil([&] { return applied || !window_->lastError().isEmpty(); }, 60000);
     }

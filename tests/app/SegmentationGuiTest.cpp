@@ -107,8 +107,9 @@ class SegmentationGuiTest : public GuiFixture {
     /// adjust the series dialog, accepts it and waits for the vessels.
     void openSeries(const std::function<void(gui::SeriesDialog&)>& choose = {}) {
         QPointer<gui::SeriesDialog> dialog;
-        QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
-                         [&dialog](gui::SeriesDialog* d) { dialog = d; });
+        const vv::test::ScopedConnection keep1(
+            QObject::connect(window_.get(), &gui::MainWindow::seriesDialogShown, window_.get(),
+                             [&dialog](gui::SeriesDialog* d) { dialog = d; }));
         window_->openDicom(QString::fromStdString(seriesDir().string()));
         ASSERT_TRUE(waitUntil([&] { return !dialog.isNull() || !window_->lastError().isEmpty(); }));
         ASSERT_FALSE(dialog.isNull()) << window_->lastError().toStdString();
