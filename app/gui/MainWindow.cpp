@@ -81,16 +81,19 @@ QStringList localPaths(const QMimeData* mime) {
 
 }  // namespace
 
-QSize MainWindow::initialSize(const QSize& available) {
+MainWindow::FirstGeometry MainWindow::firstGeometry(const QSize& available) {
     const QSize preferred(1280, 800);
-    return available.isValid() ? preferred.boundedTo(available) : preferred;
+    if (!available.isValid()) {
+        return {preferred, false};
+    }
+    const QSize room = available - kFrameAllowance;
+    const bool fits = room.width() >= preferred.width() && room.height() >= preferred.height();
+    return {preferred.boundedTo(room.expandedTo(QSize(1, 1))), !fits};
 }
 
 MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     setWindowTitle(QStringLiteral("VesselView"));
     setAcceptDrops(true);
-    const QScreen* screen = QGuiApplication::primaryScreen();
-    resize(initialSize(screen != nullptr ? screen->availableGeometry().size() : QSize()));
 
     document_ = new DocumentController(this);
     stack_ = new QStackedWidget(this);
@@ -133,7 +136,15 @@ MainWindow::MainWindow(QWidget* parent) : QMainWindow(parent) {
     connectDocument();
     defaultLayout_ = saveState(kLayoutVersion);
     const QSettings settings;
-    restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray());
+    if (!restoreGeometry(settings.value(QLatin1String(kGeometryKey)).toByteArray())) {
+        const QScreen* screen = QGuiApplication::primaryScreen();
+        const FirstGeometry first =
+            firstGeometry(screen != nullptr ? screen->availableGeometry().size() : QSize());
+        resize(first.size);
+        if (first.maximized) {
+            setWindowState(windowState() | Qt::WindowMaximized);
+        }
+    }
     restoreState(settings.value(QLatin1String(kLayoutKey)).toByteArray(), kLayoutVersion);
     restoreViewSettings(*viewer_, settings);
     syncControls();

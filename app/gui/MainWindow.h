@@ -116,10 +116,21 @@ class MainWindow : public QMainWindow {
     }
 
     /// The File > Open dialog's name filters, from supportedMeshExtensions().
-    /// The window's first size: 1280 x 800, but never larger than `available`
-    /// (the screen's free area; a 1280 x 720 screen gets 1280 x 720, so the
-    /// status bar stays on screen). An invalid `available` gives 1280 x 800.
-    [[nodiscard]] static QSize initialSize(const QSize& available);
+    /// The window's first placement, before any saved geometry exists.
+    struct FirstGeometry {
+        QSize size;      ///< the (normal) client size
+        bool maximized;  ///< whether the window opens maximized
+    };
+    /// 1280 x 800 where that window, with a window manager's frame around it
+    /// (up to `kFrameAllowance`), fits into `available` (the screen's free
+    /// area). On a smaller screen (1280 x 800, 1280 x 720) the window opens
+    /// maximized, its normal size the free area less the frame allowance: a
+    /// client of the whole free area put the title bar above it and the status
+    /// bar below the screen's edge, and window managers then moved it down.
+    /// An invalid `available` gives 1280 x 800, not maximized.
+    [[nodiscard]] static FirstGeometry firstGeometry(const QSize& available);
+    /// Room a window manager's frame (title bar and borders) takes at most.
+    static constexpr QSize kFrameAllowance{16, 48};
     [[nodiscard]] static QString meshFileFilter() { return DocumentController::meshFileFilter(); }
 
     /// File > Save Session: the shown files, camera, display settings and

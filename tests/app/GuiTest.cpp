@@ -462,12 +462,26 @@ TEST_F(GuiTest, ANewLoadReplacesTheOneInProgress) {
     EXPECT_EQ(window_->viewer()->scene()->meshes[0].triangleCount(), 4U);
 }
 
-TEST(GuiStaticTest, TheFirstWindowFitsSmallScreens) {
-    // A 1280 x 720 screen: the window was 800 high and its status bar off screen.
-    EXPECT_EQ(MainWindow::initialSize(QSize(1280, 720)), QSize(1280, 720));
-    EXPECT_EQ(MainWindow::initialSize(QSize(1280, 690)), QSize(1280, 690));  // minus a task bar
-    EXPECT_EQ(MainWindow::initialSize(QSize(3840, 2160)), QSize(1280, 800));
-    EXPECT_EQ(MainWindow::initialSize(QSize()), QSize(1280, 800));
+TEST(GuiStaticTest, TheFirstWindowAndItsFrameFitSmallScreens) {
+    // A 1280 x 800 screen: the client filled the free area, the window
+    // manager's title bar pushed the window 20 px down and the status bar
+    // below the edge. Small screens open maximized; the normal size keeps
+    // room for a frame.
+    for (const QSize available : {QSize(1280, 800), QSize(1280, 720), QSize(1280, 690)}) {
+        const MainWindow::FirstGeometry first = MainWindow::firstGeometry(available);
+        EXPECT_TRUE(first.maximized) << available.width() << "x" << available.height();
+        const QSize framed = first.size + MainWindow::kFrameAllowance;
+        EXPECT_LE(framed.width(), available.width());
+        EXPECT_LE(framed.height(), available.height());
+    }
+    const MainWindow::FirstGeometry large = MainWindow::firstGeometry(QSize(3840, 2160));
+    EXPECT_FALSE(large.maximized);
+    EXPECT_EQ(large.size, QSize(1280, 800));
+    const MainWindow::FirstGeometry fullHd = MainWindow::firstGeometry(QSize(1920, 1040));
+    EXPECT_FALSE(fullHd.maximized);
+    EXPECT_EQ(fullHd.size, QSize(1280, 800));
+    EXPECT_EQ(MainWindow::firstGeometry(QSize()).size, QSize(1280, 800));
+    EXPECT_FALSE(MainWindow::firstGeometry(QSize()).maximized);
 }
 
 TEST(GuiStaticTest, FileFilterListsEveryMeshFormat) {
