@@ -1877,42 +1877,6 @@ Ersetzen?</translation>
         <translation>Keine</translation>
     </message>
     <message>
-        <source>Far</source>
-        <translation>Fern</translation>
-    </message>
-    <message>
-        <source>Medium</source>
-        <translation>Mittel</translation>
-    </message>
-    <message>
-        <source>Close</source>
-        <translation>Nah</translation>
-    </message>
-    <message>
-        <source>Anterior</source>
-        <translation>Anterior</translation>
-    </message>
-    <message>
-        <source>Posterior</source>
-        <translation>Posterior</translation>
-    </message>
-    <message>
-        <source>Left</source>
-        <translation>Links</translation>
-    </message>
-    <message>
-        <source>Right</source>
-        <translation>Rechts</translation>
-    </message>
-    <message>
-        <source>Superior</source>
-        <translation>Superior</translation>
-    </message>
-    <message>
-        <source>Inferior</source>
-        <translation>Inferior</translation>
-    </message>
-    <message>
         <source>A second image from a camera preset, below the view</source>
         <translation>Ein zweites Bild aus einer Kameravorgabe, unter der Ansicht</translation>
     </message>
@@ -4032,6 +3996,14 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Reading the exported report</source>
         <translation>Exportierter Bericht wird gelesen</translation>
+    </message>
+    <message>
+        <source>Left lateral view</source>
+        <translation>Ansicht links lateral</translation>
+    </message>
+    <message>
+        <source>Right lateral view</source>
+        <translation>Ansicht rechts lateral</translation>
     </message>
 </context>
 </TS>

@@ -310,8 +310,8 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
                                    : segmentation::loadSceneSource(input, a.source, {}, &loaded);
     report::ReportJobOptions job;
     job.view = offscreenOptions(a, scene, input);
-    job.viewCaption = report::namedViewCaption(a.viewName);
-    job.viewDescription = !a.viewName.empty() ? report::namedViewCaption(a.viewName)
+    job.viewCaption = report::namedViewCaption(a.viewName, scene.frame);
+    job.viewDescription = !a.viewName.empty() ? report::namedViewCaption(a.viewName, scene.frame)
                           : a.sessionCamera ? QCoreApplication::translate("vv::report::ReportText",
                                                                           "as saved in the session")
                                                   .toStdString()

@@ -31,6 +31,7 @@
 #include "gui/ExportWorker.h"
 #include "gui/PathField.h"
 #include "gui/ViewerWidget.h"
+#include "gui/panels/DisplayPanel.h"
 #include "vv/dicom/PersonName.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/report/ParameterStats.h"
@@ -101,19 +102,16 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
 
     secondView_ = new QComboBox(this);
     secondView_->addItem(tr("None"), QString());
-    const std::array<std::pair<const char*, QString>, 9> views{{
-        {"far", tr("Far")},
-        {"medium", tr("Medium")},
-        {"close", tr("Close")},
-        {"anterior", tr("Anterior")},
-        {"posterior", tr("Posterior")},
-        {"left", tr("Left")},
-        {"right", tr("Right")},
-        {"superior", tr("Superior")},
-        {"inferior", tr("Inferior")},
-    }};
-    for (const auto& [name, label] : views) {
-        secondView_->addItem(label, QString::fromLatin1(name));
+    // The viewer's own names for its views ("Left lateral" for a patient).
+    for (const render::ViewPreset preset : render::allViewPresets()) {
+        secondView_->addItem(panels::DisplayPanel::presetLabel(preset),
+                             QString::fromLatin1(render::toString(preset)));
+    }
+    const scene::SceneFrame frame =
+        viewer.scene() ? viewer.scene()->frame : scene::SceneFrame::Unknown;
+    for (const render::AnatomicalView view : render::allAnatomicalViews()) {
+        secondView_->addItem(panels::DisplayPanel::anatomicalLabel(view, frame),
+                             QString::fromLatin1(render::toString(view)));
     }
     secondView_->setToolTip(tr("A second image from a camera preset, below the view"));
     form_->addRow(tr("&Second view:"), secondView_);

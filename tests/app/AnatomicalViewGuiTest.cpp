@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <QAction>
+#include <QComboBox>
 #include <QKeyEvent>
 #include <QToolButton>
 #include <filesystem>
@@ -17,6 +18,7 @@
 #include "AnatomyPhantom.h"
 #include "GuiFixture.h"
 #include "gui/MainWindow.h"
+#include "gui/ReportDialog.h"
 #include "gui/panels/DisplayPanel.h"
 #include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewPresets.h"
@@ -64,6 +66,14 @@ class AnatomicalViewGuiTest : public GuiFixture {
         EXPECT_NE(button, nullptr) << name;
         return button;
     }
+
+    /// The Export Report dialog's label for the second view `name`.
+    QString secondViewLabel(const char* name) {
+        const gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+        const QComboBox* chooser = dialog.secondViewChooser();
+        const int index = chooser->findData(QString::fromLatin1(name));
+        return index < 0 ? QStringLiteral("(none)") : chooser->itemText(index);
+    }
 };
 
 TEST_F(AnatomicalViewGuiTest, ADicomSceneOpensInTheAnteriorViewHeadFirstOrFeetFirst) {
@@ -106,6 +116,9 @@ TEST_F(AnatomicalViewGuiTest, TheButtonsAreNamedByAnatomyForPatientScenesOnly) {
     }
     EXPECT_EQ(cameraButton("viewLeft")->text(), gui::panels::DisplayPanel::tr("Left lateral"));
     EXPECT_EQ(cameraButton("viewRight")->text(), gui::panels::DisplayPanel::tr("Right lateral"));
+    // The report's second view is offered under the same names.
+    EXPECT_EQ(secondViewLabel("left"), gui::panels::DisplayPanel::tr("Left lateral"));
+    EXPECT_EQ(secondViewLabel("right"), gui::panels::DisplayPanel::tr("Right lateral"));
     // Each says where it looks from and what is up.
     EXPECT_TRUE(cameraButton("viewAnterior")->toolTip().contains(QStringLiteral("coronal slice")))
         << cameraButton("viewAnterior")->toolTip().toStdString();
@@ -118,6 +131,7 @@ TEST_F(AnatomicalViewGuiTest, TheButtonsAreNamedByAnatomyForPatientScenesOnly) {
     EXPECT_NEAR(std::abs(window_->viewer()->camera().rotation().w), 1.0F, 1e-6F);
     EXPECT_EQ(window_->viewer()->viewAnnotations().frame, render::SceneFrame::Unknown);
     EXPECT_EQ(cameraButton("viewLeft")->text(), gui::panels::DisplayPanel::tr("Left"));
+    EXPECT_EQ(secondViewLabel("left"), gui::panels::DisplayPanel::tr("Left"));
 }
 
 }  // namespace

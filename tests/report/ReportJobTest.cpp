@@ -179,6 +179,11 @@ TEST_F(ReportJobTest, AnExportedReportIsWrittenAsItIsAndABadOneNamed) {
 TEST_F(ReportJobTest, NamedViewCaptions) {
     EXPECT_EQ(namedViewCaption("far"), "Far view");
     EXPECT_EQ(namedViewCaption(""), "Default view, the whole tree fitted");
+    // A patient's left is the left lateral view; a mesh's axes have no sides.
+    EXPECT_EQ(namedViewCaption("left", scene::SceneFrame::PatientLps), "Left lateral view");
+    EXPECT_EQ(namedViewCaption("right", scene::SceneFrame::PatientLps), "Right lateral view");
+    EXPECT_EQ(namedViewCaption("left", scene::SceneFrame::Unknown), "Left view");
+    EXPECT_EQ(namedViewCaption("anterior", scene::SceneFrame::PatientLps), "Anterior view");
 }
 
 TEST_F(ReportJobTest, RendererOnAWorkerThreadMatchesTheGuiThread) {

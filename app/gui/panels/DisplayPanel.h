@@ -62,12 +62,16 @@ class DisplayPanel : public QWidget {
   signals:
     void changed();
 
-  private:
+  public:
+    /// The camera preset buttons' names ("Far", translated); the report's
+    /// second view is offered under the same names.
     [[nodiscard]] static QString presetLabel(render::ViewPreset preset);
     /// The anatomical buttons' names: radiology's for a scene in the patient
     /// frame ("Left lateral"), the former short ones otherwise.
     [[nodiscard]] static QString anatomicalLabel(render::AnatomicalView view,
                                                  render::SceneFrame frame);
+
+  private:
     /// Where the camera looks from and what is up, and for meshes the axes.
     [[nodiscard]] static QString anatomicalToolTip(render::AnatomicalView view,
                                                    render::SceneFrame frame);

@@ -124,7 +124,15 @@ void writing(const std::function<void()>& write) {
 
 }  // namespace
 
-std::string namedViewCaption(const std::string& name) {
+std::string namedViewCaption(const std::string& name, scene::SceneFrame frame) {
+    // In a patient's frame "left" is the patient's left side: the lateral view.
+    if (frame == scene::SceneFrame::PatientLps && (name == "left" || name == "right")) {
+        return ReportText::tr(
+                   name == "left"
+                       ? QT_TRANSLATE_NOOP("vv::report::ReportText", "Left lateral view")
+                       : QT_TRANSLATE_NOOP("vv::report::ReportText", "Right lateral view"))
+            .toStdString();
+    }
     static const std::array<std::pair<const char*, const char*>, 9> captions{{
         {"far", QT_TRANSLATE_NOOP("vv::report::ReportText", "Far view")},
         {"medium", QT_TRANSLATE_NOOP("vv::report::ReportText", "Medium view")},
@@ -226,10 +234,10 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             std::erase(content.sources, options.source.dicomPath);
         }
         content.syntheticDemo = options.source.syntheticDemo;
-        auto [view, range] =
-            reportView(base.camera, base.vss.range,
-                       options.viewCaption.empty() ? namedViewCaption({}) : options.viewCaption,
-                       steps.next(kRenderWeight, ReportText::tr("Rendering the report's view")));
+        auto [view, range] = reportView(
+            base.camera, base.vss.range,
+            options.viewCaption.empty() ? namedViewCaption({}, scene.frame) : options.viewCaption,
+            steps.next(kRenderWeight, ReportText::tr("Rendering the report's view")));
         content.view = std::move(view);
         if (options.secondView) {
             const Progress rendering =
@@ -238,7 +246,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
                 reportView(render::presetCamera(scene, width, height, options.secondView->preset,
                                                 options.secondView->rotation),
                            options.secondViewDepthRange.value_or(base.vss.range),
-                           namedViewCaption(options.secondViewName), rendering)
+                           namedViewCaption(options.secondViewName, scene.frame), rendering)
                     .first;
         }
         if (!options.slice.isNull()) {

@@ -110,8 +110,11 @@ class ReportWriteError : public IoError {
 };
 
 /// Caption of a named view for the report: "Far view", "Anterior view"
-/// (translated); an empty name gives the default view's caption.
-[[nodiscard]] std::string namedViewCaption(const std::string& name);
+/// (translated); an empty name gives the default view's caption. In a
+/// patient's frame "left" / "right" are the lateral views ("Left lateral
+/// view"), as the viewer's buttons name them; a mesh's frame keeps "Left view".
+[[nodiscard]] std::string namedViewCaption(const std::string& name,
+                                           scene::SceneFrame frame = scene::SceneFrame::Unknown);
 
 /// Builds the report of `scene` and writes every requested output: renders
 /// the view(s) with `renderer` (which must belong to the calling thread),
