@@ -184,9 +184,12 @@ ReportDialog::ReportDialog(const ViewerWidget& viewer, report::ReportSource sour
 }
 
 QString ReportDialog::disclaimer(const QSettings& settings) {
+    // The default, also as an earlier version stored it in English, follows
+    // the UI language.
     const QVariant stored = settings.value(QLatin1String(kDisclaimerKey));
-    return stored.isValid() ? stored.toString()
-                            : QString::fromStdString(report::defaultDisclaimer());
+    return stored.isValid() && !report::isDefaultDisclaimer(stored.toString().toStdString())
+               ? stored.toString()
+               : QString::fromStdString(report::defaultDisclaimer());
 }
 
 void ReportDialog::addPatientFields() {
@@ -380,7 +383,12 @@ ExportWorker* ReportDialog::startExport() {
     if (anonymise_->isEnabled()) {
         settings.setValue(QLatin1String(kAnonymiseKey), anonymise_->isChecked());
     }
-    settings.setValue(QLatin1String(kDisclaimerKey), disclaimer_->text().trimmed());
+    const QString disclaimerText = disclaimer_->text().trimmed();
+    if (report::isDefaultDisclaimer(disclaimerText.toStdString())) {
+        settings.remove(QLatin1String(kDisclaimerKey));  // the default, in whichever language
+    } else {
+        settings.setValue(QLatin1String(kDisclaimerKey), disclaimerText);
+    }
     const std::shared_ptr<const scene::Scene> scene = viewer_.scene();
     const QString pdf = pdf_->text().trimmed();
     return ExportWorker::launch(

@@ -390,6 +390,34 @@ TEST_F(ExportGuiTest, ReportTakesAPatientForMeshesTheDisclaimerAndTheUiLanguage)
     EXPECT_TRUE(window_->aboutText().contains(QStringLiteral("Nur für Forschungszwecke.")));
 }
 
+TEST_F(ExportGuiTest, TheDefaultDisclaimerFollowsTheUiLanguage) {
+    ASSERT_TRUE(showTube());
+    const QLatin1String key(gui::ReportDialog::kDisclaimerKey);
+    const std::shared_ptr<void> restore(nullptr, [key](void*) { QSettings().remove(key); });
+    // An English report with the default line keeps no setting ...
+    QSettings().remove(key);
+    {
+        gui::ReportDialog dialog(*window_->viewer(), window_->reportSource(), window_.get());
+        EXPECT_EQ(dialog.disclaimerEdit()->text(), QStringLiteral("Not for diagnostic use."));
+        dialog.pdfEdit()->setText(QString::fromStdString((dir_ / "english.pdf").string()));
+        ASSERT_TRUE(exportWith(dialog)->succeeded);
+    }
+    EXPECT_FALSE(QSettings().contains(key));
+    // ... and one that an earlier version stored is the default too: the
+    // German UI shows the German line, not the English one.
+    QSettings().setValue(key, QStringLiteral("Not for diagnostic use."));
+    QTranslator german;
+    ASSERT_TRUE(german.load(QStringLiteral("vesselview_de"), QStringLiteral(VV_QM_DIR)));
+    QCoreApplication::installTranslator(&german);
+    const std::shared_ptr<void> english(
+        nullptr, [&german](void*) { QCoreApplication::removeTranslator(&german); });
+    EXPECT_EQ(gui::ReportDialog::disclaimer(QSettings()),
+              QStringLiteral("Nicht für diagnostische Zwecke."));
+    // A line of one's own is kept as typed, in any language.
+    QSettings().setValue(key, QStringLiteral("For research only."));
+    EXPECT_EQ(gui::ReportDialog::disclaimer(QSettings()), QStringLiteral("For research only."));
+}
+
 TEST_F(ExportGuiTest, AnonymiseOnlyForDicomData) {
     ASSERT_TRUE(showTube());
     const gui::ReportDialog mesh(*window_->viewer(), window_->reportSource(), window_.get());

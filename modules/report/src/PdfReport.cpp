@@ -521,9 +521,17 @@ std::string defaultReportTitle() {
         .toStdString();
 }
 
+namespace {
+const char* const kDefaultDisclaimer =
+    QT_TRANSLATE_NOOP("vv::report::ReportText", "Not for diagnostic use.");
+}  // namespace
+
 std::string defaultDisclaimer() {
-    return QCoreApplication::translate("vv::report::ReportText", "Not for diagnostic use.")
-        .toStdString();
+    return QCoreApplication::translate("vv::report::ReportText", kDefaultDisclaimer).toStdString();
+}
+
+bool isDefaultDisclaimer(std::string_view text) {
+    return text == kDefaultDisclaimer || text == defaultDisclaimer();
 }
 
 std::optional<PaperSize> paperSizeFromName(std::string_view name) noexcept {

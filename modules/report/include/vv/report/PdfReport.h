@@ -65,6 +65,9 @@ struct ReportSettings {
 /// The disclaimer line when none is configured: "Not for diagnostic use.",
 /// translated (call after the translator is installed).
 [[nodiscard]] std::string defaultDisclaimer();
+/// Whether `text` is the default disclaimer, in the UI language or in English
+/// (what a setting keeps must follow the UI language when it is the default).
+[[nodiscard]] bool isDefaultDisclaimer(std::string_view text);
 
 /// Everything the PDF report shows, in this order: the title block and the
 /// disclaimer, the patient (when given), the findings, the view(s), the
