@@ -118,8 +118,8 @@ class MainWindow : public QMainWindow {
     /// The File > Open dialog's name filters, from supportedMeshExtensions().
     /// The window's first placement, before any saved geometry exists.
     struct FirstGeometry {
-        QSize size;      ///< the (normal) client size
-        bool maximized;  ///< whether the window opens maximized
+        QSize size;              ///< the (normal) client size
+        bool maximized = false;  ///< whether the window opens maximized
     };
     /// 1280 x 800 where that window, with a window manager's frame around it
     /// (up to `kFrameAllowance`), fits into `available` (the screen's free
