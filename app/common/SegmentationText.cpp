@@ -9,32 +9,29 @@ namespace vv::app {
 
 namespace {
 
-constexpr const char* kContext = "vv::app::SegmentationText";
-
-QString tr(const char* text, int n = -1) {
-    return QCoreApplication::translate(kContext, text, nullptr, n);
-}
-
 QString towards(segmentation::PatientDirection direction) {
     switch (direction) {
         case segmentation::PatientDirection::Superior:
-            return tr("towards the head");
+            return QCoreApplication::translate("vv::app::SegmentationText", "towards the head");
         case segmentation::PatientDirection::Inferior:
-            return tr("towards the feet");
+            return QCoreApplication::translate("vv::app::SegmentationText", "towards the feet");
         case segmentation::PatientDirection::Left:
-            return tr("to the patient's left");
+            return QCoreApplication::translate("vv::app::SegmentationText",
+                                               "to the patient's left");
         case segmentation::PatientDirection::Right:
-            return tr("to the patient's right");
+            return QCoreApplication::translate("vv::app::SegmentationText",
+                                               "to the patient's right");
         case segmentation::PatientDirection::Anterior:
-            return tr("anteriorly");
+            return QCoreApplication::translate("vv::app::SegmentationText", "anteriorly");
         case segmentation::PatientDirection::Posterior:
-            return tr("posteriorly");
+            return QCoreApplication::translate("vv::app::SegmentationText", "posteriorly");
     }
     return {};
 }
 
 QString onOff(bool on) {
-    return on ? tr("on") : tr("off");
+    return on ? QCoreApplication::translate("vv::app::SegmentationText", "on")
+              : QCoreApplication::translate("vv::app::SegmentationText", "off");
 }
 
 }  // namespace
@@ -46,14 +43,18 @@ QString cutOffText(const std::vector<segmentation::CutOffVessel>& vessels) {
     const segmentation::CutOffVessel& first = vessels.front();
     const QLocale locale;
     const auto mm = [&locale](double v) { return locale.toString(v, 'f', 0); };
-    QString text = tr("The vessel may be cut off: a bright tube continues %1 mm %2 past the "
-                      "segmentation's end at (%3, %4, %5) mm, where the signal may fade.")
+    QString text = QCoreApplication::translate(
+                       "vv::app::SegmentationText",
+                       "The vessel may be cut off: a bright tube continues %1 mm %2 past the "
+                       "segmentation's end at (%3, %4, %5) mm, where the signal may fade.")
                        .arg(mm(first.lengthMm),
                             towards(segmentation::dominantDirection(first.farEnd - first.end)),
                             mm(first.end.x), mm(first.end.y), mm(first.end.z));
     if (vessels.size() > 1) {
-        text +=
-            QStringLiteral(" ") + tr("%n more such end(s).", static_cast<int>(vessels.size() - 1));
+        const int more = static_cast<int>(vessels.size() - 1);
+        text += QStringLiteral(" ");
+        text += QCoreApplication::translate("vv::app::SegmentationText", "%n more such end(s).",
+                                            nullptr, more);
     }
     return text;
 }
@@ -62,25 +63,28 @@ QString thresholdRuleName(const segmentation::ThresholdRange& range) {
     // The rules' stable beginnings (segmentation::defaultThresholdRange() and the front ends).
     const std::string_view rule = range.rule;
     if (rule.starts_with("CT angiography default")) {
-        return tr("CT angiography default");
+        return QCoreApplication::translate("vv::app::SegmentationText", "CT angiography default");
     }
     if (rule.starts_with("histogram")) {
-        return tr("from the histogram (Otsu)");
+        return QCoreApplication::translate("vv::app::SegmentationText",
+                                           "from the histogram (Otsu)");
     }
     if (rule.starts_with("constant volume")) {
-        return tr("the volume's only value");
+        return QCoreApplication::translate("vv::app::SegmentationText", "the volume's only value");
     }
     if (rule.starts_with("chosen in the Segmentation panel")) {
-        return tr("chosen in the Segmentation panel");
+        return QCoreApplication::translate("vv::app::SegmentationText",
+                                           "chosen in the Segmentation panel");
     }
     if (rule.starts_with("chosen in the series dialog")) {
-        return tr("chosen in the series dialog");
+        return QCoreApplication::translate("vv::app::SegmentationText",
+                                           "chosen in the series dialog");
     }
     if (rule.starts_with("saved in the session")) {
-        return tr("saved in the session");
+        return QCoreApplication::translate("vv::app::SegmentationText", "saved in the session");
     }
-    if (rule.starts_with("given on the command line")) {
-        return tr("given on the command line");
+    if (rule.starts_with("--threshold")) {
+        return QCoreApplication::translate("vv::app::SegmentationText", "given with --threshold");
     }
     return QString::fromStdString(range.rule);
 }
@@ -91,7 +95,8 @@ report::ReportSegmentation reportSegmentation(const SegmentationProvenance& p) {
         section.settings.emplace_back(label.toStdString(), value.toStdString());
     };
     if (!p.segmentNames.empty()) {
-        add(tr("Segments"), QString::fromStdString(segmentsText(p)));
+        add(QCoreApplication::translate("vv::app::SegmentationText", "Segments"),
+            QString::fromStdString(segmentsText(p)));
         return section;
     }
     const QLocale locale;
@@ -100,25 +105,34 @@ report::ReportSegmentation reportSegmentation(const SegmentationProvenance& p) {
     };
     const QString unit =
         p.unit.empty() ? QString() : QStringLiteral(" ") + QString::fromStdString(p.unit);
-    add(tr("Threshold"),
-        tr("%1 to %2%3 (%4)")
+    add(QCoreApplication::translate("vv::app::SegmentationText", "Threshold"),
+        QCoreApplication::translate("vv::app::SegmentationText", "%1 to %2%3 (%4)")
             .arg(value(p.range.lower), value(p.range.upper), unit, thresholdRuleName(p.range)));
     const bool ct = p.modality == "CT" || p.unit == "HU";
     if (!ct) {
-        add(tr("Intensity correction"),
-            p.intensityCorrected ? tr("on (MR signal fall-off divided out; gain %1 to %2)")
-                                       .arg(locale.toString(p.gainLowest, 'f', 2),
-                                            locale.toString(p.gainHighest, 'f', 2))
-                                 : onOff(false));
+        add(QCoreApplication::translate("vv::app::SegmentationText", "Intensity correction"),
+            p.intensityCorrected
+                ? QCoreApplication::translate("vv::app::SegmentationText",
+                                              "on (MR signal fall-off divided out; gain %1 to %2)")
+                      .arg(locale.toString(p.gainLowest, 'f', 2),
+                           locale.toString(p.gainHighest, 'f', 2))
+                : onOff(false));
     }
     const QString which =
-        p.seed ? tr("the one under voxel (%1, %2, %3)").arg(p.seed->x).arg(p.seed->y).arg(p.seed->z)
-               : tr("the %n largest", p.keepComponents);
-    add(tr("Components"), tr("%1: kept %2 of %3")
-                              .arg(which)
-                              .arg(locale.toString(static_cast<qulonglong>(p.componentsKept)))
-                              .arg(locale.toString(static_cast<qulonglong>(p.componentsFound))));
-    add(tr("Bone removal"), onOff(p.boneRemoved));
+        p.seed ? QCoreApplication::translate("vv::app::SegmentationText",
+                                             "the one under voxel (%1, %2, %3)")
+                     .arg(p.seed->x)
+                     .arg(p.seed->y)
+                     .arg(p.seed->z)
+               : QCoreApplication::translate("vv::app::SegmentationText", "the %n largest", nullptr,
+                                             p.keepComponents);
+    add(QCoreApplication::translate("vv::app::SegmentationText", "Components"),
+        QCoreApplication::translate("vv::app::SegmentationText", "%1: kept %2 of %3")
+            .arg(which)
+            .arg(locale.toString(static_cast<qulonglong>(p.componentsKept)))
+            .arg(locale.toString(static_cast<qulonglong>(p.componentsFound))));
+    add(QCoreApplication::translate("vv::app::SegmentationText", "Bone removal"),
+        onOff(p.boneRemoved));
     if (!p.cutOff.empty()) {
         section.warnings.push_back(cutOffText(p.cutOff).toStdString());
     }

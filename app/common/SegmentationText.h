@@ -21,7 +21,7 @@ namespace vv::app {
 [[nodiscard]] QString cutOffText(const std::vector<segmentation::CutOffVessel>& vessels);
 
 /// The rule a threshold range came from, e.g. "CT angiography default",
-/// "chosen in the Segmentation panel", "given on the command line" (the
+/// "chosen in the Segmentation panel", "given with --threshold" (the
 /// rule's text as it is when it is none of the known ones).
 [[nodiscard]] QString thresholdRuleName(const segmentation::ThresholdRange& range);
 
