@@ -11,7 +11,6 @@
 
 #include <filesystem>
 #include <string>
-#include <utility>
 
 #include "ReportTestUtil.h"
 #include "SyntheticCta.h"
@@ -62,18 +61,10 @@ std::string reportText(const fs::path& series, const std::string& name,
         << output;
     std::string text;
     EXPECT_EQ(runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
-    // One line; the ligatures pdftotext keeps ("cut oﬀ") as letters.
     for (char& c : text) {
-        c = c == '\n' ? ' ' : c;
+        c = c == '\n' ? ' ' : c;  // one line: a sentence may wrap
     }
-    for (const auto& [ligature, letters] : {std::pair<std::string, std::string>{"\uFB00", "ff"},
-                                            {"\uFB01", "fi"},
-                                            {"\uFB02", "fl"}}) {
-        for (auto at = text.find(ligature); at != std::string::npos; at = text.find(ligature, at)) {
-            text.replace(at, ligature.size(), letters);
-        }
-    }
-    return text;
+    return vv::report::test::withoutLigatures(text);  // "cut oﬀ" -> "cut off"
 }
 
 TEST(ReportSegmentation, TheReportSaysWhenTheVesselMayBeCutOff) {
