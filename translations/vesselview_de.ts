@@ -113,7 +113,7 @@
     <message numerus="yes">
         <source>the %n largest</source>
         <translation>
-            <numerusform>die größte</numerusform>
+            <numerusform>die %n größte</numerusform>
             <numerusform>die %n größten</numerusform>
         </translation>
     </message>
@@ -3571,7 +3571,7 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     </message>
     <message>
         <source>Apply it to export, report or send it at full resolution</source>
-        <translation>Anwenden, um sie in voller Auflösung zu exportieren, in einen Befund zu übernehmen oder zu senden</translation>
+        <translation>Anwenden, um sie in voller Auflösung zu exportieren, in einen Bericht zu übernehmen oder zu senden</translation>
     </message>
 </context>
 <context>
