@@ -34,9 +34,7 @@
 #include "GuiFixture.h"
 #include "ReportTestUtil.h"
 #include "gui/ExportSurfaceDialog.h"
-#include "gui/ExportWorker.h"
 #include "gui/MainWindow.h"
-#include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "vv/demo/VesselPhantom.h"
@@ -223,20 +221,8 @@ TEST_F(MrSegmentationGuiTest, ExportReportOfTheAppliedSegmentationWarnsOfTheCutO
     panel()->apply();
     ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 120000));
     ASSERT_TRUE(window_->exportReportAction()->isEnabled());
-    window_->exportReportAction()->trigger();
-    auto* dialog = window_->findChild<gui::ReportDialog*>();
-    ASSERT_NE(dialog, nullptr);
     const fs::path pdf = dir_ / "report.pdf";
-    dialog->pdfEdit()->setText(QString::fromStdString(pdf.string()));
-    bool finished = false;
-    QString failure;
-    QObject::connect(dialog, &gui::ReportDialog::exportStarted, [&](gui::ExportWorker* worker) {
-        QObject::connect(worker, &gui::ExportWorker::failed,
-                         [&](const QString& message) { failure = message; });
-        QObject::connect(worker, &gui::ExportWorker::finished, [&] { finished = true; });
-    });
-    dialog->accept();
-    ASSERT_TRUE(waitUntil([&] { return finished; }, 120000)) << "no end of export";
+    const QString failure = exportReport(pdf);
     ASSERT_TRUE(failure.isEmpty()) << failure.toStdString();
     std::string text;
     ASSERT_EQ(report::test::runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
