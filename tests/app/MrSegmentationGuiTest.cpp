@@ -221,6 +221,10 @@ TEST_F(MrSegmentationGuiTest, ExportReportOfTheAppliedSegmentationWarnsOfTheCutO
     panel()->apply();
     ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 120000));
     ASSERT_TRUE(window_->exportReportAction()->isEnabled());
+    // The panel's advice after Apply is still the correction's.
+    EXPECT_TRUE(
+        panel()->cutOffLabel()->text().contains(QStringLiteral("Correct the signal fall-off")))
+        << panel()->cutOffLabel()->text().toStdString();
     const fs::path pdf = dir_ / "report.pdf";
     const QString failure = exportReport(pdf);
     ASSERT_TRUE(failure.isEmpty()) << failure.toStdString();

@@ -772,7 +772,8 @@ void SegmentationPanel::showCutOff(const std::vector<segmentation::CutOffVessel>
     }
     QString text = app::cutOffText(vessels);
     text += QStringLiteral(" ") +
-            (!corrected && correction_->isEnabled()
+            // (Not correction_->isEnabled(): the controls are off while Apply runs.)
+            (!corrected && volume_ && volume_->modality() != "CT" && volume_->unit() != "HU"
                  ? tr("Turn on “Correct the signal fall-off (MR)” or lower the threshold.")
                  : tr("Lower the threshold, or pick a seed in the missing part."));
     cutOff_->setText(text);
