@@ -21,6 +21,123 @@
     </message>
 </context>
 <context>
+    <name>vv::app::SegmentationText</name>
+    <message>
+        <source>towards the head</source>
+        <translation>kopfwärts</translation>
+    </message>
+    <message>
+        <source>towards the feet</source>
+        <translation>fußwärts</translation>
+    </message>
+    <message>
+        <source>to the patient&apos;s left</source>
+        <translation>zur linken Seite des Patienten</translation>
+    </message>
+    <message>
+        <source>to the patient&apos;s right</source>
+        <translation>zur rechten Seite des Patienten</translation>
+    </message>
+    <message>
+        <source>anteriorly</source>
+        <translation>nach anterior</translation>
+    </message>
+    <message>
+        <source>posteriorly</source>
+        <translation>nach posterior</translation>
+    </message>
+    <message>
+        <source>on</source>
+        <translation>ein</translation>
+    </message>
+    <message>
+        <source>off</source>
+        <translation>aus</translation>
+    </message>
+    <message>
+        <source>The vessel may be cut off: a bright tube continues %1 mm %2 past the segmentation&apos;s end at (%3, %4, %5) mm, where the signal may fade.</source>
+        <translation>Das Gefäß ist möglicherweise abgeschnitten: Eine helle Röhre setzt sich %1 mm %2 über das Ende der Segmentierung bei (%3, %4, %5) mm fort, wo das Signal schwächer werden kann.</translation>
+    </message>
+    <message>
+        <source>CT angiography default</source>
+        <translation>Voreinstellung für CT-Angiographie</translation>
+    </message>
+    <message>
+        <source>from the histogram (Otsu)</source>
+        <translation>aus dem Histogramm (Otsu)</translation>
+    </message>
+    <message>
+        <source>the volume&apos;s only value</source>
+        <translation>der einzige Wert des Volumens</translation>
+    </message>
+    <message>
+        <source>chosen in the Segmentation panel</source>
+        <translation>im Bereich Segmentierung gewählt</translation>
+    </message>
+    <message>
+        <source>chosen in the series dialog</source>
+        <translation>in der Serienauswahl gewählt</translation>
+    </message>
+    <message>
+        <source>saved in the session</source>
+        <translation>in der Sitzung gespeichert</translation>
+    </message>
+    <message>
+        <source>given with --threshold</source>
+        <translation>mit --threshold angegeben</translation>
+    </message>
+    <message>
+        <source>Segments</source>
+        <translation>Segmente</translation>
+    </message>
+    <message>
+        <source>Threshold</source>
+        <translation>Schwellenwert</translation>
+    </message>
+    <message>
+        <source>%1 to %2%3 (%4)</source>
+        <translation>%1 bis %2%3 (%4)</translation>
+    </message>
+    <message>
+        <source>Intensity correction</source>
+        <translation>Intensitätskorrektur</translation>
+    </message>
+    <message>
+        <source>on (MR signal fall-off divided out; gain %1 to %2)</source>
+        <translation>ein (MR-Signalabfall herausgerechnet; Verstärkung %1 bis %2)</translation>
+    </message>
+    <message>
+        <source>the one under voxel (%1, %2, %3)</source>
+        <translation>die unter dem Voxel (%1, %2, %3)</translation>
+    </message>
+    <message numerus="yes">
+        <source>the %n largest</source>
+        <translation>
+            <numerusform>die %n größte</numerusform>
+            <numerusform>die %n größten</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Components</source>
+        <translation>Komponenten</translation>
+    </message>
+    <message>
+        <source>%1: kept %2 of %3</source>
+        <translation>%1: %2 von %3 behalten</translation>
+    </message>
+    <message>
+        <source>Bone removal</source>
+        <translation>Knochenentfernung</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more such end(s).</source>
+        <translation>
+            <numerusform>%n weiteres solches Ende.</numerusform>
+            <numerusform>%n weitere solche Enden.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vv::app::Settings</name>
     <message>
         <source>Show the Void Space Surface</source>
@@ -621,10 +738,6 @@ Ersetzen?</translation>
         <translation>F&amp;ormat:</translation>
     </message>
     <message>
-        <source>The segmentation at full resolution with the Segmentation panel&apos;s settings (the view shows a preview).</source>
-        <translation>Die Segmentierung in voller Auflösung mit den Einstellungen des Bereichs Segmentierung (die Ansicht zeigt eine Vorschau).</translation>
-    </message>
-    <message>
         <source>The surface on screen: %1 triangles.</source>
         <translation>Die angezeigte Oberfläche: %1 Dreiecke.</translation>
     </message>
@@ -663,6 +776,10 @@ Ersetzen?</translation>
     <message>
         <source>Exported %1 (%2 triangles, patient LPS mm)</source>
         <translation>%1 exportiert (%2 Dreiecke, Patienten-LPS in mm)</translation>
+    </message>
+    <message>
+        <source>The applied segmentation&apos;s surface: %1 triangles.</source>
+        <translation>Die Oberfläche der angewendeten Segmentierung: %1 Dreiecke.</translation>
     </message>
 </context>
 <context>
@@ -1215,6 +1332,10 @@ Ersetzen?</translation>
     <message>
         <source>Export S&amp;urface…</source>
         <translation>Oberfläche e&amp;xportieren…</translation>
+    </message>
+    <message>
+        <source>The Segmentation panel shows a preview: apply it first (a preview is never exported or sent)</source>
+        <translation>Der Bereich Segmentierung zeigt eine Vorschau: Wenden Sie sie zuerst an (eine Vorschau wird nie exportiert oder gesendet)</translation>
     </message>
 </context>
 <context>
@@ -3349,10 +3470,6 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>Vorschau (%1): %2 Dreiecke; behaltene Komponenten: %3</translation>
     </message>
     <message>
-        <source>Apply for full resolution</source>
-        <translation>Anwenden für volle Auflösung</translation>
-    </message>
-    <message>
         <source>Apply failed: %1</source>
         <translation>Anwenden fehlgeschlagen: %1</translation>
     </message>
@@ -3409,47 +3526,16 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <translation>CT-Werte (HU) haben keinen Abfall durch Empfangsspulen, der zu korrigieren wäre</translation>
     </message>
     <message>
-        <source>towards the head</source>
-        <translation>kopfwärts</translation>
-    </message>
-    <message>
-        <source>towards the feet</source>
-        <translation>fußwärts</translation>
-    </message>
-    <message>
-        <source>to the patient&apos;s left</source>
-        <translation>zur linken Seite des Patienten</translation>
-    </message>
-    <message>
-        <source>to the patient&apos;s right</source>
-        <translation>zur rechten Seite des Patienten</translation>
-    </message>
-    <message>
-        <source>anteriorly</source>
-        <translation>nach anterior</translation>
-    </message>
-    <message>
-        <source>posteriorly</source>
-        <translation>nach posterior</translation>
-    </message>
-    <message>
-        <source>The vessel may be cut off: a bright tube continues %1 mm %2 past the segmentation&apos;s end at (%3, %4, %5) mm, where the signal may fade.</source>
-        <translation>Das Gefäß ist möglicherweise abgeschnitten: Eine helle Röhre setzt sich %1 mm %2 über das Ende der Segmentierung bei (%3, %4, %5) mm fort, wo das Signal schwächer werden kann.</translation>
-    </message>
-    <message numerus="yes">
-        <source>%n more such end(s).</source>
-        <translation>
-            <numerusform>%n weiteres solches Ende.</numerusform>
-            <numerusform>%n weitere solche Enden.</numerusform>
-        </translation>
-    </message>
-    <message>
         <source>Turn on “Correct the signal fall-off (MR)” or lower the threshold.</source>
         <translation>Schalten Sie „Signalabfall korrigieren (MR)“ ein oder senken Sie den Schwellenwert.</translation>
     </message>
     <message>
         <source>Lower the threshold, or pick a seed in the missing part.</source>
         <translation>Senken Sie den Schwellenwert oder wählen Sie einen Saatpunkt im fehlenden Teil.</translation>
+    </message>
+    <message>
+        <source>Apply it to export, report or send it at full resolution</source>
+        <translation>Anwenden, um sie in voller Auflösung zu exportieren, in einen Bericht zu übernehmen oder zu senden</translation>
     </message>
 </context>
 <context>
@@ -4004,6 +4090,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Right lateral view</source>
         <translation>Ansicht rechts lateral</translation>
+    </message>
+    <message>
+        <source>Segmentation</source>
+        <translation>Segmentierung</translation>
     </message>
 </context>
 </TS>

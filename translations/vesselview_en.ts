@@ -2,6 +2,23 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en" sourcelanguage="en">
 <context>
+    <name>vv::app::SegmentationText</name>
+    <message numerus="yes">
+        <source>the %n largest</source>
+        <translation>
+            <numerusform>the largest</numerusform>
+            <numerusform>the %n largest</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>%n more such end(s).</source>
+        <translation>
+            <numerusform>%n more such end.</numerusform>
+            <numerusform>%n more such ends.</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::DocumentController</name>
     <message numerus="yes">
         <source>%1: no DICOM images found (%n file(s) skipped)</source>
@@ -45,16 +62,6 @@
         <translation>
             <numerusform>%n image of it was kept in the local study store.</numerusform>
             <numerusform>%n images of it were kept in the local study store.</numerusform>
-        </translation>
-    </message>
-</context>
-<context>
-    <name>vv::gui::panels::SegmentationPanel</name>
-    <message numerus="yes">
-        <source>%n more such end(s).</source>
-        <translation>
-            <numerusform>%n more such end.</numerusform>
-            <numerusform>%n more such ends.</numerusform>
         </translation>
     </message>
 </context>

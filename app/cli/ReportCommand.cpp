@@ -37,6 +37,7 @@
 #include "cli/RenderOptions.h"
 #include "common/Language.h"
 #include "common/ResourcePaths.h"
+#include "common/SegmentationText.h"
 #include "common/SliceReport.h"
 #include "vv/core/Error.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -337,6 +338,11 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
         // Listed by its description (as the GUI names it) when it has one.
         job.source.seriesName =
             QString::fromStdString(loaded.seriesDescription).simplified().toStdString();
+    }
+    if (loaded.fromVolume) {
+        // How the series was segmented, and whether a vessel may be cut off.
+        job.source.segmentation = app::reportSegmentation(app::provenanceOf(
+            loaded, a.session && a.session->dicom ? *a.session->dicom : a.source));
     }
     job.source.syntheticDemo =
         !job.source.files.empty() &&

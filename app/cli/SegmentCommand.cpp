@@ -103,7 +103,7 @@ int segmentCommand(const std::vector<std::string>& args, std::ostream& out, std:
 
     segmentation::SceneSourceReport report;
     const scene::Scene scene = segmentation::loadSceneSource(input, options, {}, &report);
-    app::SurfaceProvenance provenance = app::provenanceOf(report, options);
+    app::SegmentationProvenance provenance = app::provenanceOf(report, options);
     try {
         if (report.fromVolume) {
             app::writeSegmentedSurface(scene.meshes.front(), report.labelMap.get(), output,

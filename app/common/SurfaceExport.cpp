@@ -14,10 +14,6 @@ namespace vv::app {
 
 namespace {
 
-std::string number(double v) {
-    return significantText(v, 4);
-}
-
 std::string utcNow() {
     const std::time_t now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
     std::tm utc{};
@@ -27,57 +23,9 @@ std::string utcNow() {
     return text.data();
 }
 
-std::string withUnit(const SurfaceProvenance& p) {
-    return number(static_cast<double>(p.range.lower)) + ".." +
-           number(static_cast<double>(p.range.upper)) + (p.unit.empty() ? "" : " " + p.unit);
-}
-
 }  // namespace
 
-SurfaceProvenance provenanceOf(const segmentation::SceneSourceReport& report,
-                               const segmentation::SceneSourceOptions& options) {
-    SurfaceProvenance p;
-    p.seriesInstanceUid = report.seriesInstanceUid;
-    p.seriesDescription = report.seriesDescription;
-    p.modality = report.modality;
-    p.seriesNumber = report.seriesNumber;
-    if (report.volume) {
-        p.unit = report.volume->unit();
-        p.boneRemoved = options.segmentation.removeBone.value_or(
-            report.volume->modality() == "CT" || report.volume->unit() == "HU");
-    }
-    p.range = report.range;
-    p.intensityCorrected = report.intensityCorrected;
-    p.gainLowest = report.gainLowest;
-    p.gainHighest = report.gainHighest;
-    p.seed = options.segmentation.seed;
-    p.keepComponents = options.segmentation.keepComponents;
-    p.componentsKept = report.componentsKept;
-    p.componentsFound = report.componentsFound;
-    p.targetTriangles = options.surface.targetTriangles;
-    return p;
-}
-
-void describeSegmentation(SurfaceProvenance& p, const segmentation::SegmentationRequest& request,
-                          const segmentation::SegmentationOutcome& outcome) {
-    const segmentation::SegmentationOptions& options = request.segmentation;
-    if (request.volume) {
-        p.unit = request.volume->unit();
-        p.boneRemoved = options.removeBone.value_or(request.volume->modality() == "CT" ||
-                                                    request.volume->unit() == "HU");
-    }
-    p.range = outcome.range;
-    p.intensityCorrected = outcome.intensityCorrected;
-    p.gainLowest = outcome.gainLowest;
-    p.gainHighest = outcome.gainHighest;
-    p.seed = options.seed;
-    p.keepComponents = options.keepComponents;
-    p.componentsKept = outcome.componentsKept;
-    p.componentsFound = outcome.componentsFound;
-    p.targetTriangles = request.surface.targetTriangles;
-}
-
-meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& p) {
+meshio::MeshFileMetadata surfaceMetadata(const SegmentationProvenance& p) {
     meshio::MeshFileMetadata m;
     const auto add = [&m](const char* name, std::string value) {
         m.fields.emplace_back(name, std::move(value));
@@ -92,26 +40,13 @@ meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& p) {
     add("modality", p.modality);
     const bool fromSeg = !p.segmentNames.empty();
     if (fromSeg) {
-        std::string names;
-        for (std::size_t i = 0; i < p.segmentNames.size(); ++i) {
-            names += (i > 0 ? "; " : "") + std::to_string(i + 1) + "=" + p.segmentNames[i];
-        }
-        add("segments", "from a DICOM Segmentation object: " + names);
+        add("segments", "from a DICOM Segmentation object: " + segmentsText(p));
         add("label_meaning", "point array 'label': the segment (as 'segments')");
     } else {
-        add("threshold", withUnit(p));
+        add("threshold", thresholdText(p));
         add("threshold_rule", p.range.rule);
-        add("intensity_correction", p.intensityCorrected
-                                        ? "on (MR signal fall-off divided out; gain " +
-                                              fixedText(p.gainLowest, 2) + ".." +
-                                              fixedText(p.gainHighest, 2) + ")"
-                                        : "off");
-        add("components",
-            (p.seed ? "the one under voxel (" + std::to_string(p.seed->x) + ", " +
-                          std::to_string(p.seed->y) + ", " + std::to_string(p.seed->z) + ")"
-                    : "the " + std::to_string(p.keepComponents) + " largest") +
-                ", 6-connected: kept " + std::to_string(p.componentsKept) + " of " +
-                std::to_string(p.componentsFound));
+        add("intensity_correction", correctionText(p));
+        add("components", componentsText(p));
         add("bone_removal", p.boneRemoved ? "on" : "off");
         add("surface",
             "flying edges at 0.5, windowed-sinc smoothing, " +
@@ -122,8 +57,9 @@ meshio::MeshFileMetadata surfaceMetadata(const SurfaceProvenance& p) {
     }
     std::string summary = "VesselView " + std::string(kVersion) + "; LPS mm; " +
                           (p.modality.empty() ? std::string("DICOM") : p.modality) + "; ";
-    summary +=
-        fromSeg ? "SEG" : "thr " + withUnit(p) + "; corr " + (p.intensityCorrected ? "on" : "off");
+    summary += fromSeg
+                   ? "SEG"
+                   : "thr " + thresholdText(p) + "; corr " + (p.intensityCorrected ? "on" : "off");
     if (!p.seriesDescription.empty()) {
         summary += "; " + p.seriesDescription;
     }
@@ -157,7 +93,8 @@ scene::Mesh meshWithLabels(const scene::Scene& scene) {
 }
 
 void writeSegmentedSurface(scene::Mesh mesh, const scene::LabelMap* labels,
-                           const std::filesystem::path& file, const SurfaceProvenance& provenance) {
+                           const std::filesystem::path& file,
+                           const SegmentationProvenance& provenance) {
     if (labels != nullptr) {
         scene::DataArray label = segmentation::surfaceLabels(mesh, *labels);
         for (const scene::SegmentComponent& c : labels->components) {

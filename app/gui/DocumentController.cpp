@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/ResourcePaths.h"
+#include "common/SegmentationText.h"
 #include "gui/MeshLoadTask.h"
 #include "gui/RecentFiles.h"
 #include "gui/SeriesName.h"
@@ -219,13 +220,24 @@ void DocumentController::setScene(std::shared_ptr<const scene::Scene> scene, con
     seriesUid_.clear();
     seriesTitle_.clear();
     demo_ = false;
+    preview_ = false;
     setVolume(nullptr, {}, {});
     show(std::move(scene), title, std::nullopt);
 }
 
-void DocumentController::showDerivedScene(std::shared_ptr<const scene::Scene> scene) {
+void DocumentController::showDerivedScene(std::shared_ptr<const scene::Scene> scene, bool preview) {
     openedFiles_ = shownFiles_;
+    preview_ = preview;
     show(std::move(scene), title_, std::nullopt);
+}
+
+void DocumentController::applySegmentation(std::shared_ptr<const scene::Scene> scene,
+                                           std::shared_ptr<const scene::LabelMap> labelMap,
+                                           app::SegmentationProvenance provenance) {
+    segmentedScene_ = std::move(scene);
+    labelMap_ = std::move(labelMap);
+    segmentation_ = std::move(provenance);
+    emit segmentationApplied();
 }
 
 bool DocumentController::cancelLoad() {
@@ -253,6 +265,10 @@ report::ReportSource DocumentController::reportSource() const {
             source.seriesInstanceUid = seriesUid_;
             source.seriesName = seriesTitle_.toStdString();  // never the UID folder
         }
+    }
+    if (volume_) {
+        // How the image series was segmented, and whether a vessel may be cut off.
+        source.segmentation = app::reportSegmentation(segmentation_);
     }
     // The demo tree (its bundled file, or generated when there is none): the
     // report says it is synthetic data.
@@ -406,10 +422,13 @@ void DocumentController::taskLoaded(MeshLoadTask* task, const QStringList& opene
     for (const auto& path : task->files()) {
         shownFiles_ << QFileInfo(QFile::decodeName(path.string().c_str())).absoluteFilePath();
     }
+    preview_ = false;
     setVolume(nullptr, {}, {});
     if (!seriesUid_.empty()) {
         loadedReport_ = source;
         loadedWith_ = task->dicomOptions();
+        segmentedScene_ = scene;
+        segmentation_ = app::provenanceOf(source, loadedWith_);
     }
     show(std::move(scene), title, std::exchange(pendingSession_, std::nullopt));
     // A DICOM image series: keep its volume for the Segmentation panel.
@@ -451,6 +470,8 @@ void DocumentController::setVolume(std::shared_ptr<const scene::Volume> volume,
     volume_ = std::move(volume);
     if (!volume_) {
         labelMap_.reset();
+        segmentedScene_.reset();
+        segmentation_ = {};
         loadedReport_ = {};
         loadedWith_ = {};
     }

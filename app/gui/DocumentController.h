@@ -10,6 +10,7 @@
 #include <optional>
 #include <string>
 
+#include "common/SegmentationProvenance.h"
 #include "gui/EngineTexts.h"
 #include "gui/Session.h"
 #include "vv/dicom/Dicom.h"
@@ -114,8 +115,24 @@ class DocumentController : public QObject {
     /// document without files, series or volume. A load in progress goes on.
     void setScene(std::shared_ptr<const scene::Scene> scene, const QString& title);
     /// A scene derived from this document's data (the Segmentation panel's
-    /// result) in place of the shown one: files, title, series and volume stay.
-    void showDerivedScene(std::shared_ptr<const scene::Scene> scene);
+    /// result, or its ray-cast display) in place of the shown one: files,
+    /// title, series, volume and the applied segmentation stay. `preview`:
+    /// the scene is a segmentation preview that was not applied
+    /// (showsPreview()).
+    void showDerivedScene(std::shared_ptr<const scene::Scene> scene, bool preview = false);
+    /// The Segmentation panel applied a segmentation of volume(): `scene`
+    /// (its surface at full resolution), `labelMap` and what made it become
+    /// the document's segmentation — what the slice overlay, Export Surface,
+    /// the report's slice page and Send to PACS (its DICOM SEG) use from now
+    /// on. Emits segmentationApplied(); the scene is shown by
+    /// showDerivedScene().
+    void applySegmentation(std::shared_ptr<const scene::Scene> scene,
+                           std::shared_ptr<const scene::LabelMap> labelMap,
+                           app::SegmentationProvenance provenance);
+    /// True while the scene on screen is a segmentation preview that was not
+    /// applied: it is never exported or sent (the window disables Export
+    /// Surface, Export Report and Send to PACS until it is applied).
+    [[nodiscard]] bool showsPreview() const noexcept { return preview_; }
 
     /// Asks the load in progress to stop (loadCancelled() follows unless its
     /// result was already delivered); false when nothing is loading.
@@ -145,10 +162,23 @@ class DocumentController : public QObject {
     /// under their own names. Saved in sessions: their reopening names the
     /// series by it while it loads.
     [[nodiscard]] const QString& seriesTitle() const noexcept { return seriesTitle_; }
-    /// The segmentation of volume() the shown scene was loaded with (the
-    /// slice views' overlay); null without a volume.
+    /// The document's segmentation of volume(): the one the series was
+    /// loaded with, or the last one applied (applySegmentation()); never a
+    /// preview. The slice overlay, the report's slice page and the DICOM SEG
+    /// sent to a PACS. Null without a volume.
     [[nodiscard]] const std::shared_ptr<const scene::LabelMap>& labelMap() const noexcept {
         return labelMap_;
+    }
+    /// The surface of the document's segmentation (the series as loaded, or
+    /// the last applied segmentation; a SEG's segments), whatever the viewer
+    /// shows (a preview, the ray-cast display); null for meshes.
+    [[nodiscard]] const std::shared_ptr<const scene::Scene>& segmentedScene() const noexcept {
+        return segmentedScene_;
+    }
+    /// What made segmentedScene(): the series and the settings (as loaded, or
+    /// of the last Apply) with the cut-off vessels found.
+    [[nodiscard]] const app::SegmentationProvenance& segmentation() const noexcept {
+        return segmentation_;
     }
     /// What loading the shown DICOM series reported (its identity, the
     /// segmentation's range, correction, components and cut-off vessels)
@@ -165,7 +195,8 @@ class DocumentController : public QObject {
         return volume_;
     }
     /// Where the shown scene came from, for the report: the shown files and,
-    /// for DICOM data, the path and series it was loaded from.
+    /// for DICOM data, the path and series it was loaded from; for an image
+    /// series the document's segmentation (its settings and cut-off warning).
     [[nodiscard]] report::ReportSource reportSource() const;
     /// The findings last entered for the data on screen (Export Report, Send
     /// to PACS), to start the next report with; empty once other data is
@@ -232,6 +263,8 @@ class DocumentController : public QObject {
                        const vv::segmentation::ThresholdRange& range);
     /// recentFiles() changed.
     void recentFilesChanged();
+    /// applySegmentation() replaced labelMap(), segmentedScene() and segmentation().
+    void segmentationApplied();
 
   private:
     /// Stops listening to the load in progress and cancels it (it deletes
@@ -270,6 +303,9 @@ class DocumentController : public QObject {
     QString seriesTitle_;  ///< seriesTitle()
     std::shared_ptr<const scene::Volume> volume_;
     std::shared_ptr<const scene::LabelMap> labelMap_;
+    std::shared_ptr<const scene::Scene> segmentedScene_;
+    app::SegmentationProvenance segmentation_;
+    bool preview_ = false;
     segmentation::SceneSourceReport loadedReport_;
     segmentation::SceneSourceOptions loadedWith_;
     QString lastError_;

@@ -52,12 +52,11 @@ ExportSurfaceDialog::ExportSurfaceDialog(SurfaceExportSource source, QWidget* pa
 
     what_->setObjectName(QStringLiteral("surfaceSource"));
     what_->setWordWrap(true);
-    what_->setText(source_.request
-                       ? tr("The segmentation at full resolution with the Segmentation panel's "
-                            "settings (the view shows a preview).")
-                       : tr("The surface on screen: %1 triangles.")
-                             .arg(QLocale().toString(static_cast<qulonglong>(
-                                 source_.scene ? source_.scene->triangleCount() : 0))));
+    const QString triangles = QLocale().toString(
+        static_cast<qulonglong>(source_.scene ? source_.scene->triangleCount() : 0));
+    what_->setText(source_.labels
+                       ? tr("The applied segmentation's surface: %1 triangles.").arg(triangles)
+                       : tr("The surface on screen: %1 triangles.").arg(triangles));
     form->addRow(what_);
     auto* frame = new QLabel(
         tr("Coordinates: DICOM patient LPS, millimetres, as the scene (x to the patient's left, "
@@ -117,7 +116,7 @@ QString ExportSurfaceDialog::problem() const {
         return tr("%1: surfaces are written as .stl, .vtp or .ply files.")
             .arg(QFileInfo(file).fileName());
     }
-    if (!source_.request && (!source_.scene || source_.scene->meshes.empty())) {
+    if (!source_.scene || source_.scene->meshes.empty()) {
         return tr("There is no segmented surface to export.");
     }
     return {};
@@ -136,14 +135,7 @@ ExportWorker* ExportSurfaceDialog::startExport() {
         tr("Exporting %1").arg(QFileInfo(file).fileName()),
         [source = source_, target, file](const Progress& progress) {
             SurfaceExportSource s = source;
-            if (s.request) {
-                const segmentation::SegmentationOutcome outcome =
-                    segmentation::runSegmentation(*s.request, progress.sub(0.0, 0.9));
-                app::describeSegmentation(s.provenance, *s.request, outcome);
-                s.scene = outcome.scene;
-                s.labels = outcome.labelMap;
-            }
-            progress.report(0.9, tr("Writing the surface").toStdString());
+            progress.report(0.0, tr("Writing the surface").toStdString());
             const std::size_t triangles = s.scene->triangleCount();
             if (s.labels) {
                 app::writeSegmentedSurface(s.scene->meshes.front(), s.labels.get(), target,

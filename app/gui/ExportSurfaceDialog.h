@@ -4,13 +4,11 @@
 #include <QString>
 #include <QStringList>
 #include <memory>
-#include <optional>
 
 #include "common/SurfaceExport.h"
 #include "gui/ExportWorker.h"
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Mesh.h"
-#include "vv/segmentation/SegmentationPipeline.h"
 
 class QComboBox;
 class QLabel;
@@ -20,16 +18,14 @@ namespace vv::gui {
 
 /// What File > Export Surface… writes.
 struct SurfaceExportSource {
-    /// The segmented surface as shown, at full resolution (one mesh; a DICOM
-    /// SEG: one mesh per segment), and the label map it came from (null for
-    /// a SEG: each mesh is its segment).
+    /// The applied segmentation's surface at full resolution (one mesh; a
+    /// DICOM SEG: one mesh per segment) and the label map it came from
+    /// (null for a SEG: each mesh is its segment); never a preview
+    /// (DocumentController::segmentedScene()).
     std::shared_ptr<const scene::Scene> scene;
     std::shared_ptr<const scene::LabelMap> labels;
-    /// Else: the segmentation to run at full resolution first (the
-    /// Segmentation panel's settings, when a preview is on screen).
-    std::optional<segmentation::SegmentationRequest> request;
-    /// The series and settings (completed from the run's outcome).
-    app::SurfaceProvenance provenance;
+    /// The series and settings.
+    app::SegmentationProvenance provenance;
 };
 
 /// File > Export Surface…: the segmented vessel surface as STL (binary,
@@ -40,9 +36,8 @@ struct SurfaceExportSource {
 /// the format chooser (one sets the other). It proposes vessels.<format> in
 /// the last export folder (vessels-2…, when taken; the format remembered in
 /// QSettings "surface/format"). accept() checks the fields, asks before it
-/// replaces a file and writes on an ExportWorker (progress and Cancel; a
-/// preview on screen is first segmented at full resolution with the panel's
-/// settings; written atomically; the outcome in the status bar or a message
+/// replaces a file and writes on an ExportWorker (progress and Cancel;
+/// written atomically; the outcome in the status bar or a message
 /// box naming the file and the problem).
 class ExportSurfaceDialog : public ExportDialog {
     Q_OBJECT
@@ -53,7 +48,7 @@ class ExportSurfaceDialog : public ExportDialog {
     [[nodiscard]] QLineEdit* fileEdit() const noexcept { return file_; }
     /// Item data: the suffix (".stl", ".vtp", ".ply").
     [[nodiscard]] QComboBox* formatChooser() const noexcept { return format_; }
-    /// What will be written (the surface shown, or the full segmentation first).
+    /// What will be written (the applied segmentation's surface, or a SEG's segments).
     [[nodiscard]] QLabel* sourceLabel() const noexcept { return what_; }
 
     /// What is wrong with the fields (no file name, a folder, another

@@ -405,6 +405,15 @@ void MainWindow::buildDocks() {
     });
     connect(segmentationPanel_, &panels::SegmentationPanel::sceneReady, this,
             &MainWindow::showSegmentedScene);
+    // An Apply becomes the document's segmentation (exports, report, PACS).
+    connect(segmentationPanel_, &panels::SegmentationPanel::applied, document_,
+            [this](const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome,
+                   const segmentation::SegmentationRequest& request) {
+                app::SegmentationProvenance provenance = document_->segmentation();
+                app::describeSegmentation(provenance, request, *outcome);
+                document_->applySegmentation(outcome->scene, outcome->labelMap,
+                                             std::move(provenance));
+            });
     connect(segmentationPanel_, &panels::SegmentationPanel::labelMapReady, slices_,
             &SliceWorkspace::setLabelMap);
     // The seed can be picked in a slice as on the 3-D view.
@@ -608,7 +617,7 @@ void MainWindow::chooseSeries(const std::shared_ptr<const dicom::DicomScanResult
 void MainWindow::showSegmentedScene(std::shared_ptr<const scene::Scene> scene,
                                     const QString& status) {
     render::Camera camera = viewer_->camera();
-    document_->showDerivedScene(std::move(scene));
+    document_->showDerivedScene(std::move(scene), segmentationPanel_->showsPreview());
     camera.setSceneBounds(viewer_->dataBounds());  // clip planes of the new scene
     viewer_->setCamera(camera);
     statusLabel_->setText(status);
@@ -648,40 +657,42 @@ void MainWindow::sceneWasShown() {
     emit sceneShown();
 }
 
+QString MainWindow::previewNotApplied() {
+    return tr(
+        "The Segmentation panel shows a preview: apply it first (a preview is never "
+        "exported or sent)");
+}
+
 void MainWindow::updateExportActions() {
     const bool shown = viewer_->scene() != nullptr;
-    for (QAction* action : {exportImageAction_, exportReportAction_}) {
-        action->setEnabled(shown);
-        action->setToolTip(shown ? QString() : tr("Open data first: there is nothing to export"));
-    }
+    const bool preview = document_->showsPreview();
+    exportImageAction_->setEnabled(shown);
+    exportImageAction_->setToolTip(shown ? QString()
+                                         : tr("Open data first: there is nothing to export"));
+    exportReportAction_->setEnabled(shown && !preview);
+    exportReportAction_->setToolTip(!shown    ? exportImageAction_->toolTip()
+                                    : preview ? previewNotApplied()
+                                              : QString());
     // A surface segmented from a DICOM series (or the segments of a DICOM SEG).
     const bool segmented = shown && !document_->seriesUid().empty();
-    exportSurfaceAction_->setEnabled(segmented);
+    exportSurfaceAction_->setEnabled(segmented && !preview);
     exportSurfaceAction_->setToolTip(
-        segmented ? tr("The segmented vessel surface as STL, VTP or PLY, in patient millimetres")
-                  : tr("Only for vessels segmented from a DICOM series: open one with "
-                       "File > Open Folder…"));
+        !segmented ? tr("Only for vessels segmented from a DICOM series: open one with "
+                        "File > Open Folder…")
+        : preview  ? previewNotApplied()
+                   : tr("The segmented vessel surface as STL, VTP or PLY, in patient millimetres"));
 }
 
 void MainWindow::exportSurface() {
-    if (document_->seriesUid().empty() || !document_->scene()) {
+    if (document_->seriesUid().empty() || !document_->segmentedScene() ||
+        document_->showsPreview()) {
         return;
     }
+    // The document's segmentation (as loaded or applied; a SEG's segments), never a preview.
     SurfaceExportSource source;
-    source.provenance = app::provenanceOf(document_->loadedReport(), document_->loadedWith());
-    const auto& outcome = segmentationPanel_->lastOutcome();
-    if (!document_->volume()) {
-        source.scene = document_->scene();  // a DICOM SEG: its segments
-    } else if (segmentationPanel_->showsFullResolution()) {
-        source.scene = document_->scene();
-        source.labels = outcome ? outcome->labelMap : document_->labelMap();
-        if (outcome) {
-            app::describeSegmentation(source.provenance,
-                                      segmentationPanel_->segmentationRequest(1, 0), *outcome);
-        }
-    } else {
-        source.request = segmentationPanel_->segmentationRequest(1, 0);
-    }
+    source.scene = document_->segmentedScene();
+    source.labels = document_->volume() ? document_->labelMap() : nullptr;
+    source.provenance = document_->segmentation();
     auto* dialog = new ExportSurfaceDialog(std::move(source), this);
     dialog->setAttribute(Qt::WA_DeleteOnClose);
     dialog->open();

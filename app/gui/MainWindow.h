@@ -227,6 +227,9 @@ class MainWindow : public QMainWindow {
     /// Where the shown scene came from, for the report: the shown files and,
     /// for DICOM data, the path and series it was loaded from.
     [[nodiscard]] report::ReportSource reportSource() const { return document_->reportSource(); }
+    /// Why exporting, reporting and sending are off while the Segmentation
+    /// panel shows a preview that was not applied (their tooltip).
+    [[nodiscard]] static QString previewNotApplied();
     [[nodiscard]] bool isLoading() const noexcept { return document_->isLoading(); }
     /// The DICOM listener (started from the PACS settings; DICOM menu,
     /// gui/pacs/LocalStudyActions.h). Give it new settings with apply().

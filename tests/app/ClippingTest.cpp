@@ -199,7 +199,7 @@ TEST_P(ClippingTest, DialogsShowEveryTextInFull) {
     expectWhole(series, "series");
     // File > Export Surface… (issue 30), with the longer of its source texts.
     vv::gui::SurfaceExportSource surface;
-    surface.request = vv::segmentation::SegmentationRequest{};
+    surface.labels = std::make_shared<vv::scene::LabelMap>();
     vv::gui::ExportSurfaceDialog exportSurface(surface, window_.get());
     expectWhole(exportSurface, "export-surface");
     // DICOM > Local Studies… and Send to PACS… (issue 21).

@@ -10,6 +10,7 @@
 #include <QDir>
 #include <QElapsedTimer>
 #include <QImage>
+#include <QLineEdit>
 #include <QMouseEvent>
 #include <QPointer>
 #include <QThread>
@@ -23,7 +24,9 @@
 #include <utility>
 
 #include "TestMeshes.h"
+#include "gui/ExportWorker.h"
 #include "gui/MainWindow.h"
+#include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
 #include "gui/ViewerWidget.h"
 #include "vv/scene/Mesh.h"
@@ -118,6 +121,33 @@ inline double changedFraction(const QImage& a, const QImage& b) {
 
 class GuiFixture : public ::testing::Test {
   protected:
+    /// File > Export Report into `pdf` (`edit` first sees the dialog): empty
+    /// when the report was written, else why not.
+    QString exportReport(const fs::path& pdf,
+                         const std::function<void(gui::ReportDialog&)>& edit = {}) {
+        window_->exportReportAction()->trigger();
+        auto* dialog = window_->findChild<gui::ReportDialog*>();
+        if (dialog == nullptr) {
+            return QStringLiteral("no Export Report dialog");
+        }
+        if (edit) {
+            edit(*dialog);
+        }
+        dialog->pdfEdit()->setText(QString::fromStdString(pdf.string()));
+        bool finished = false;
+        QString failure;
+        QObject::connect(dialog, &gui::ReportDialog::exportStarted, [&](gui::ExportWorker* worker) {
+            QObject::connect(worker, &gui::ExportWorker::failed,
+                             [&](const QString& message) { failure = message; });
+            QObject::connect(worker, &gui::ExportWorker::finished, [&] { finished = true; });
+        });
+        dialog->accept();
+        if (!waitUntil([&] { return finished; }, 120000)) {
+            return QStringLiteral("no end of export");
+        }
+        return failure;
+    }
+
     static void SetUpTestSuite() {
         if (QCoreApplication::instance() != nullptr) {
             return;

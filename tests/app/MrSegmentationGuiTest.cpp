@@ -2,9 +2,10 @@
 // Issue 30, items 4 and 5 in the GUI: an MR series whose signal fades towards
 // the head opens segmented along the whole aorta (the intensity correction,
 // on for MR, unavailable for CT); turning the correction off shows the
-// cut-off warning in the Segmentation panel; File > Export Surface… writes
-// what is shown (or, with a preview on screen, the full segmentation) with
-// its provenance, asks before it replaces a file and fails cleanly. Run under
+// cut-off warning in the Segmentation panel, and once applied in the report;
+// File > Export Surface… writes the applied segmentation (never a preview,
+// which disables it) with its provenance, asks before it replaces a file and
+// fails cleanly. Run under
 // `xvfb-run -a` with QT_QPA_PLATFORM=xcb (OpenGL 4.1 needed).
 #include <gtest/gtest.h>
 #include <vtkFieldData.h>
@@ -23,6 +24,7 @@
 #include <QMessageBox>
 #include <QPointer>
 #include <QPushButton>
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -30,6 +32,7 @@
 
 #include "CtaSeriesFixture.h"
 #include "GuiFixture.h"
+#include "ReportTestUtil.h"
 #include "gui/ExportSurfaceDialog.h"
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
@@ -199,6 +202,40 @@ TEST_F(MrSegmentationGuiTest, FadingMrIsCorrectedAndTheCutOffIsShownWithoutTheCo
         << panel()->cutOffLabel()->text().toStdString();
 }
 
+TEST_F(MrSegmentationGuiTest, ExportReportOfTheAppliedSegmentationWarnsOfTheCutOff) {
+    open(mrDir());
+    // As loaded (corrected): the report's Segmentation section has no warning.
+    const report::ReportSource loaded = window_->document()->reportSource();
+    ASSERT_TRUE(loaded.segmentation);
+    EXPECT_TRUE(loaded.segmentation->warnings.empty());
+    ASSERT_TRUE(waitUntil([&] { return panel()->gainField() != nullptr; }, 60000));
+
+    // Without the correction, applied: the report says the vessel may be cut off.
+    const int before = panel()->previewsShown();
+    panel()->correctionBox()->setChecked(false);
+    waitForPreview(before);
+    if (panel()->isPreviewing()) {
+        waitForPreview(panel()->previewsShown());
+    }
+    EXPECT_TRUE(window_->document()->reportSource().segmentation->warnings.empty());  // a preview
+    panel()->apply();
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 120000));
+    ASSERT_TRUE(window_->exportReportAction()->isEnabled());
+    // The panel's advice after Apply is still the correction's.
+    EXPECT_TRUE(
+        panel()->cutOffLabel()->text().contains(QStringLiteral("Correct the signal fall-off")))
+        << panel()->cutOffLabel()->text().toStdString();
+    const fs::path pdf = dir_ / "report.pdf";
+    const QString failure = exportReport(pdf);
+    ASSERT_TRUE(failure.isEmpty()) << failure.toStdString();
+    std::string text;
+    ASSERT_EQ(report::test::runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
+    std::replace(text.begin(), text.end(), '\n', ' ');
+    text = report::test::withoutLigatures(text);
+    EXPECT_NE(text.find("The vessel may be cut off"), std::string::npos) << text;
+    EXPECT_NE(text.find("Intensity correction"), std::string::npos) << text;
+}
+
 TEST_F(MrSegmentationGuiTest, CtHasNoCorrectionAndNoWarning) {
     open(ctDir());
     EXPECT_FALSE(panel()->correctionBox()->isEnabled());
@@ -223,7 +260,7 @@ TEST_F(MrSegmentationGuiTest, ExportSurfaceWritesWhatMadeItAndAsksBeforeReplacin
     dialog->fileEdit()->setText(QString::fromStdString((dir_ / "vessels.stl").string()));
     dialog->formatChooser()->setCurrentIndex(dialog->formatChooser()->findData(".vtp"));
     EXPECT_TRUE(dialog->fileEdit()->text().endsWith(QStringLiteral("vessels.vtp")));
-    EXPECT_TRUE(dialog->sourceLabel()->text().contains(QStringLiteral("on screen")));
+    EXPECT_TRUE(dialog->sourceLabel()->text().contains(QStringLiteral("applied segmentation")));
     const fs::path shown = dir_ / "shown.vtp";
     ASSERT_TRUE(exportTo(dialog, shown));
     auto poly = readVtp(shown);
@@ -237,23 +274,43 @@ TEST_F(MrSegmentationGuiTest, ExportSurfaceWritesWhatMadeItAndAsksBeforeReplacin
     double x[3];
     poly->GetPoint(poly->GetNumberOfPoints() / 2, x);
     EXPECT_LT(std::abs(phantom_->signedDistance({x[0], x[1], x[2]})), 3.0);
+    const vtkIdType loadedPoints = poly->GetNumberOfPoints();
 
-    // A preview on screen: the export segments at full resolution with the panel's range.
+    // A preview on screen is never exported: Export Surface and Export Report
+    // wait for Apply, and say so.
     const int before = panel()->previewsShown();
     panel()->lowerBox()->setValue(panel()->lowerBox()->value() + 40.0);
     waitForPreview(before);
+    EXPECT_FALSE(window_->exportSurfaceAction()->isEnabled());
+    EXPECT_FALSE(window_->exportReportAction()->isEnabled());
+    EXPECT_EQ(window_->exportSurfaceAction()->toolTip(), gui::MainWindow::previewNotApplied());
+    EXPECT_TRUE(panel()->messageLabel()->text().contains(QStringLiteral("Apply it")));
+    // Applied: the export is the applied segmentation, with its settings.
+    panel()->apply();
+    ASSERT_TRUE(waitUntil([&] { return !panel()->isApplying(); }, 120000));
+    ASSERT_TRUE(window_->exportSurfaceAction()->isEnabled());
     dialog = openExportDialog();
     ASSERT_NE(dialog, nullptr);
-    EXPECT_TRUE(dialog->sourceLabel()->text().contains(QStringLiteral("full resolution")));
     const fs::path full = dir_ / "full.vtp";
     ASSERT_TRUE(exportTo(dialog, full));
     poly = readVtp(full);
+    EXPECT_EQ(static_cast<std::size_t>(poly->GetNumberOfPolys()),
+              window_->viewer()->scene()->triangleCount());
+    EXPECT_NE(poly->GetNumberOfPoints(), loadedPoints);
     EXPECT_EQ(fieldText(poly, "threshold_rule"), "chosen in the Segmentation panel");
     EXPECT_EQ(
         fieldText(poly, "threshold")
             .rfind(QLocale::c().toString(panel()->lowerBox()->value(), 'g', 4).toStdString(), 0),
         0U)
         << fieldText(poly, "threshold");
+    // The ray-cast display shows no surface: the applied one is exported.
+    panel()->setDisplay(SegmentationPanel::Display::RaycastIsoSurface);
+    dialog = openExportDialog();
+    ASSERT_NE(dialog, nullptr);
+    const fs::path raycast = dir_ / "raycast.vtp";
+    ASSERT_TRUE(exportTo(dialog, raycast));
+    EXPECT_EQ(readVtp(raycast)->GetNumberOfPoints(), poly->GetNumberOfPoints());
+    panel()->setDisplay(SegmentationPanel::Display::SurfaceMesh);
 
     // An existing file: asked first; Cancel writes nothing and keeps the dialog.
     const fs::path taken = dir_ / "taken.stl";

@@ -12,6 +12,7 @@
 #include <QAction>
 #include <QCheckBox>
 #include <QComboBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QMessageBox>
@@ -45,6 +46,7 @@
 #include "gui/pacs/PacsSettings.h"
 #include "gui/pacs/SendDialog.h"
 #include "gui/pacs/StoreLeases.h"
+#include "gui/panels/SegmentationPanel.h"
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/Echo.h"
@@ -532,6 +534,62 @@ TEST_F(PacsGuiTest, ReportOfTheCtaSceneIsAcceptedByOrthancAndFoundThere) {
     EXPECT_EQ(text.find("No findings entered."), std::string::npos) << text;
     EXPECT_NE(text.find("Run-off CTA"), std::string::npos) << text;
     EXPECT_EQ(text.find(folderUid), std::string::npos) << text;
+}
+
+TEST_F(PacsGuiTest, TheAppliedSegmentationIsSentNeverAPreview) {
+    restartWith(settings(false));
+    const fs::path cta = testDir() / "cta-applied";
+    writeCta(cta, "VV-GUI-APPLIED", "Applied CTA");
+    ASSERT_TRUE(
+        openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
+    const auto voxels = [](const vv::scene::LabelMap& map) {
+        return static_cast<std::size_t>(std::count_if(map.labels.begin(), map.labels.end(),
+                                                      [](std::uint8_t l) { return l != 0; }));
+    };
+    const std::size_t loaded = voxels(*window_->document()->labelMap());
+
+    // A higher lower threshold, previewed: nothing can be sent until it is applied.
+    vv::gui::panels::SegmentationPanel* panel = window_->segmentationPanel();
+    const int previews = panel->previewsShown();
+    panel->lowerBox()->setValue(panel->lowerBox()->value() + 150.0);
+    ASSERT_TRUE(waitUntil(
+        [&] { return panel->previewsShown() > previews && !panel->isPreviewing(); }, 60000));
+    QAction* send = window_->findChild<QAction*>(QStringLiteral("sendToPacs"));
+    EXPECT_TRUE(window_->document()->showsPreview());
+    EXPECT_FALSE(send->isEnabled());
+    EXPECT_EQ(send->toolTip(), vv::gui::MainWindow::previewNotApplied());
+    EXPECT_EQ(voxels(*window_->document()->labelMap()), loaded);  // still the loaded one
+
+    // Applied: the document's segmentation from now on, and Send is back.
+    panel->apply();
+    ASSERT_TRUE(waitUntil([&] { return !panel->isApplying(); }, 60000));
+    ASSERT_FALSE(window_->document()->showsPreview());
+    const std::size_t applied = voxels(*window_->document()->labelMap());
+    EXPECT_LT(applied, loaded);
+    ASSERT_TRUE(send->isEnabled());
+    SendDialog* dialog = sendReport();
+    ASSERT_NE(dialog, nullptr);
+    const QString peer = QString::fromStdString(vv::pacs::describe(orthanc_->node()));
+    EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("3 of 3 accepted by %1").arg(peer));
+
+    // The SEG in Orthanc is the applied segmentation, the PDF says how it was made.
+    vv::pacs::StudyQuery query;
+    query.patientId = "VV-GUI-APPLIED";
+    const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
+    ASSERT_EQ(studies.size(), 1U);
+    const fs::path segFile =
+        retrievedInstance(studies[0].studyInstanceUid, "SEG", testDir() / "applied-retrieved");
+    ASSERT_FALSE(segFile.empty());
+    std::size_t inPacs = 0;
+    for (const auto& map : vv::dicom::loadDicomSegLabelMaps(segFile)) {
+        inPacs += voxels(map);
+    }
+    EXPECT_EQ(inPacs, applied);
+    const fs::path pdf = testDir() / "applied-report.pdf";
+    ASSERT_TRUE(retrievedPdf(studies[0].studyInstanceUid, pdf));
+    std::string text;
+    ASSERT_EQ(vv::report::test::runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
+    EXPECT_NE(text.find("chosen in the Segmentation panel"), std::string::npos) << text;
 }
 
 TEST_F(PacsGuiTest, TheReportExportedLastIsSentAsItIs) {

@@ -561,25 +561,14 @@ TEST_F(SliceViewGuiTest, ReportIncludesTheSliceWithItsOverlay) {
     ASSERT_GE(showSliceWithMostOutline(coronal), 0);
 
     // File > Export Report offers the slice.
-    window_->exportReportAction()->trigger();
-    auto* dialog = window_->findChild<gui::ReportDialog*>();
-    ASSERT_NE(dialog, nullptr);
-    ASSERT_NE(dialog->sliceBox(), nullptr);
-    EXPECT_TRUE(dialog->sliceBox()->isChecked());
     const fs::path dir = panelTestDir() / "slice-report";
     fs::remove_all(dir);
     fs::create_directories(dir);
     const fs::path pdf = dir / "report.pdf";
-    dialog->pdfEdit()->setText(QString::fromStdString(pdf.string()));
-    bool finished = false;
-    QString failure;
-    QObject::connect(dialog, &gui::ReportDialog::exportStarted, [&](gui::ExportWorker* worker) {
-        QObject::connect(worker, &gui::ExportWorker::failed,
-                         [&](const QString& message) { failure = message; });
-        QObject::connect(worker, &gui::ExportWorker::finished, [&] { finished = true; });
+    const QString failure = exportReport(pdf, [](gui::ReportDialog& dialog) {
+        ASSERT_NE(dialog.sliceBox(), nullptr);
+        EXPECT_TRUE(dialog.sliceBox()->isChecked());
     });
-    dialog->accept();
-    ASSERT_TRUE(waitUntil([&] { return finished; }, 120000)) << "no end of export";
     ASSERT_TRUE(failure.isEmpty()) << failure.toStdString();
 
     std::string text;

@@ -57,13 +57,19 @@ void showSendDialog(MainWindow& window) {
     dialog->setSegmentation(document->labelMap());
     QObject::connect(dialog, &SendDialog::findingsEdited, document,
                      &DocumentController::setFindings);
+    // A segmentation preview on screen that was not applied is never sent.
+    const auto block = [dialog, document] {
+        dialog->setBlocked(document->showsPreview() ? MainWindow::previewNotApplied() : QString());
+    };
+    block();
     // Other data on screen: the dialog offers it, not the last send's results.
-    QObject::connect(&window, &MainWindow::sceneShown, dialog, [&window, dialog, document] {
+    QObject::connect(&window, &MainWindow::sceneShown, dialog, [&window, dialog, document, block] {
         const DocumentController::ExportedReport report = document->exportedReport();
         dialog->showScene(window.reportSource(), document->labelMap(), document->findings(),
                           report.pdf, report.findings);
+        block();
     });
-    // A DICOM series' segmentation arrives after its scene.
+    // A DICOM series' segmentation arrives after its scene (an applied one with its scene).
     QObject::connect(document, &DocumentController::volumeChanged, dialog,
                      [dialog, document] { dialog->setSegmentation(document->labelMap()); });
     dialog->show();
@@ -104,11 +110,14 @@ ListenerService* addLocalStudyActions(MainWindow& window, DicomMenu& menu) {
     send->setObjectName(QStringLiteral("sendToPacs"));
     const auto updateSend = [&window, send] {
         const bool shown = window.viewer()->scene() != nullptr;
-        send->setEnabled(shown);
+        // A segmentation preview that was not applied is never sent.
+        const bool preview = window.document()->showsPreview();
+        send->setEnabled(shown && !preview);
         send->setToolTip(
-            shown ? QString()
-                  : QCoreApplication::translate("vv::gui::LocalStudyActions",
-                                                "Open data first: there is nothing to send"));
+            !shown    ? QCoreApplication::translate("vv::gui::LocalStudyActions",
+                                                    "Open data first: there is nothing to send")
+            : preview ? MainWindow::previewNotApplied()
+                      : QString());
     };
     QObject::connect(&window, &MainWindow::sceneShown, send, updateSend);
     updateSend();

@@ -208,9 +208,8 @@ void SendDialog::setExportedReport(const QString& pdf, const QString& findings) 
 }
 
 void SendDialog::showScene(report::ReportSource source,
-                           std::shared_ptr<const scene::LabelMap> labelMap,
-                           const QString& findings, const QString& exportedPdf,
-                           const QString& exportedFindings) {
+                           std::shared_ptr<const scene::LabelMap> labelMap, const QString& findings,
+                           const QString& exportedPdf, const QString& exportedFindings) {
     const QString before = dataName(source_);
     const bool wasSending = worker_ != nullptr;
     abandonSend();
@@ -245,10 +244,16 @@ void SendDialog::setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap
     updateButtons();
 }
 
+void SendDialog::setBlocked(const QString& reason) {
+    blocked_ = reason;
+    send_->setToolTip(reason);
+    updateButtons();
+}
+
 void SendDialog::updateButtons() {
     const bool sending = worker_ != nullptr;
     const bool segmentation = labelMap_ != nullptr && seg_->isChecked();
-    send_->setEnabled(!sending && node_->count() > 0 &&
+    send_->setEnabled(!sending && blocked_.isEmpty() && node_->count() > 0 &&
                       (sc_->isChecked() || pdf_->isChecked() || segmentation));
     node_->setEnabled(!sending);
     const bool exported = !reportChoice_->currentData().toString().isEmpty();
@@ -264,7 +269,7 @@ void SendDialog::updateButtons() {
 
 void SendDialog::send() {
     const PacsNode* node = findNode(settings_, node_->currentData().toString().toStdString());
-    if (worker_ != nullptr || node == nullptr || !viewer_.scene()) {
+    if (worker_ != nullptr || node == nullptr || !viewer_.scene() || !blocked_.isEmpty()) {
         return;
     }
     folder_ = std::make_unique<QTemporaryDir>();

@@ -74,6 +74,9 @@ class SendDialog : public QDialog {
     /// names) as DICOM SEG: segmentationBox() enabled and checked. Without a
     /// map or for a scene not from DICOM the box stays disabled.
     void setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap);
+    /// While `reason` is not empty nothing can be sent and the Send button's
+    /// tooltip says why (a segmentation preview on screen that was not applied).
+    void setBlocked(const QString& reason);
 
     /// "Data: <series name or file names>": what the report is about.
     [[nodiscard]] QLabel* dataLabel() const noexcept { return data_; }
@@ -128,6 +131,7 @@ class SendDialog : public QDialog {
     QComboBox* reportChoice_ = nullptr;
     QString newFindings_;       ///< the findings of a new report
     QString exportedFindings_;  ///< the findings in the exported report
+    QString blocked_;           ///< setBlocked()
     QComboBox* node_ = nullptr;
     QCheckBox* sc_ = nullptr;
     QCheckBox* pdf_ = nullptr;

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/SegmentationText.h"
 #include "gui/EngineTexts.h"
 #include "gui/SegmentationTask.h"
 #include "gui/ViewerWidget.h"
@@ -273,6 +274,8 @@ void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,
     dirty_ = false;
     isoFollowsLower_ = true;
     lastOutcome_.reset();
+    previewShown_ = false;
+    applyRequest_.reset();
     pickSeed_->setChecked(false);
     progress_->setValue(0);
     message_->clear();
@@ -600,6 +603,7 @@ void SegmentationPanel::startPreview() {
 void SegmentationPanel::previewDone(
     const std::shared_ptr<const segmentation::SegmentationOutcome>& outcome) {
     lastOutcome_ = outcome;
+    previewShown_ = true;
     ++previewsShown_;
     const QString sampling = outcome->step == 1 ? tr("full resolution")
                                                 : tr("one voxel in %1 per axis").arg(outcome->step);
@@ -607,10 +611,14 @@ void SegmentationPanel::previewDone(
                              .arg(sampling)
                              .arg(QLocale().toString(static_cast<qulonglong>(outcome->triangles)))
                              .arg(outcome->componentsKept);
-    message_->setText(what + QStringLiteral("; ") + tr("Apply for full resolution"));
+    // A preview is never exported or sent (DocumentController::showsPreview()).
+    message_->setText(what + QStringLiteral("; ") +
+                      tr("Apply it to export, report or send it at full resolution"));
     showCutOff(outcome->cutOff, outcome->intensityCorrected);
     emit labelMapReady(outcome->labelMap);
-    emit sceneReady(outcome->scene, what + QStringLiteral(" — ") + tr("Apply for full resolution"));
+    emit sceneReady(outcome->scene,
+                    what + QStringLiteral(" — ") +
+                        tr("Apply it to export, report or send it at full resolution"));
 }
 
 void SegmentationPanel::apply() {
@@ -618,7 +626,8 @@ void SegmentationPanel::apply() {
         return;
     }
     stopPreview();
-    SegmentationTask* task = makeTask(1, 0);
+    applyRequest_ = segmentationRequest(1, 0);
+    auto* task = new SegmentationTask(*applyRequest_, this);
     applyTask_ = task;
     connect(task, &SegmentationTask::progressChanged, this, [this](double fraction) {
         progress_->setValue(static_cast<int>(std::lround(fraction * 1000.0)));
@@ -655,6 +664,8 @@ void SegmentationPanel::applyDone(
                              .arg(outcome->componentsFound);
     message_->setText(what);
     showCutOff(outcome->cutOff, outcome->intensityCorrected);
+    previewShown_ = false;
+    emit applied(outcome, *applyRequest_);
     emit labelMapReady(outcome->labelMap);
     emit sceneReady(outcome->scene, what);
     emit applyFinished(true);
@@ -759,40 +770,10 @@ void SegmentationPanel::showCutOff(const std::vector<segmentation::CutOffVessel>
         cutOff_->clear();
         return;
     }
-    const segmentation::CutOffVessel& first = vessels.front();
-    QString towards;
-    switch (segmentation::dominantDirection(first.farEnd - first.end)) {
-        case segmentation::PatientDirection::Superior:
-            towards = tr("towards the head");
-            break;
-        case segmentation::PatientDirection::Inferior:
-            towards = tr("towards the feet");
-            break;
-        case segmentation::PatientDirection::Left:
-            towards = tr("to the patient's left");
-            break;
-        case segmentation::PatientDirection::Right:
-            towards = tr("to the patient's right");
-            break;
-        case segmentation::PatientDirection::Anterior:
-            towards = tr("anteriorly");
-            break;
-        case segmentation::PatientDirection::Posterior:
-            towards = tr("posteriorly");
-            break;
-    }
-    const QLocale locale;
-    const auto mm = [&locale](double v) { return locale.toString(v, 'f', 0); };
-    QString text =
-        tr("The vessel may be cut off: a bright tube continues %1 mm %2 past the "
-           "segmentation's end at (%3, %4, %5) mm, where the signal may fade.")
-            .arg(mm(first.lengthMm), towards, mm(first.end.x), mm(first.end.y), mm(first.end.z));
-    if (vessels.size() > 1) {
-        text += QStringLiteral(" ") +
-                tr("%n more such end(s).", nullptr, static_cast<int>(vessels.size() - 1));
-    }
+    QString text = app::cutOffText(vessels);
     text += QStringLiteral(" ") +
-            (!corrected && correction_->isEnabled()
+            // (Not correction_->isEnabled(): the controls are off while Apply runs.)
+            (!corrected && volume_ && volume_->modality() != "CT" && volume_->unit() != "HU"
                  ? tr("Turn on “Correct the signal fall-off (MR)” or lower the threshold.")
                  : tr("Lower the threshold, or pick a seed in the missing part."));
     cutOff_->setText(text);

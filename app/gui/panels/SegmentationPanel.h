@@ -136,6 +136,10 @@ class SegmentationPanel : public QWidget {
         const noexcept {
         return lastOutcome_;
     }
+    /// True when the last segmentation handed over (sceneReady) is a preview
+    /// that was not applied (until Apply or setVolume(); the ray-cast display
+    /// keeps it, its mesh returns with the surface display).
+    [[nodiscard]] bool showsPreview() const noexcept { return previewShown_; }
     /// Previews shown since construction.
     [[nodiscard]] int previewsShown() const noexcept { return previewsShown_; }
 
@@ -175,6 +179,10 @@ class SegmentationPanel : public QWidget {
     void labelMapReady(std::shared_ptr<const vv::scene::LabelMap> labelMap);
     /// A message for the status bar (errors, seed problems, cancelled).
     void statusMessage(const QString& message);
+    /// An Apply segmented `request` at full resolution into `outcome`:
+    /// emitted before its labelMapReady() and sceneReady().
+    void applied(std::shared_ptr<const vv::segmentation::SegmentationOutcome> outcome,
+                 const vv::segmentation::SegmentationRequest& request);
     /// An Apply ended (true: its scene was handed over).
     void applyFinished(bool applied);
 
@@ -256,6 +264,9 @@ class SegmentationPanel : public QWidget {
     QLabel* message_ = nullptr;
     QWidget* cutOffBox_ = nullptr;  ///< the warning's icon and text
     QLabel* cutOff_ = nullptr;
+    bool previewShown_ = false;  ///< showsPreview()
+    /// What the running (or last) Apply segments.
+    std::optional<segmentation::SegmentationRequest> applyRequest_;
     QLabel* volumeLabel_ = nullptr;
 };
 

@@ -351,6 +351,26 @@ pdf::Fields dataFields(const ReportContent& content) {
     return files;
 }
 
+/// How the series was segmented: its warnings first (a vessel that may be
+/// cut off), in the warning colour, then its settings; on one page with the heading.
+void segmentationSection(Flow& flow, const ReportSegmentation& segmentation) {
+    pdf::Fields fields;
+    for (const auto& [label, value] : segmentation.settings) {
+        fields.emplace_back(qs(label), qs(value));
+    }
+    const QFont warningFont = font(9.0, true);
+    const double gap = mm(1.5);
+    double height = pdf::fieldGridHeight(flow, fields, 1);
+    for (const std::string& warning : segmentation.warnings) {
+        height += flow.textHeight(qs(warning), warningFont, flow.width()) + gap;
+    }
+    flow.heading(ReportText::tr("Segmentation"), height);
+    for (const std::string& warning : segmentation.warnings) {
+        flow.paragraph(qs(warning), warningFont, pdf::kWarning, gap);
+    }
+    pdf::fieldGrid(flow, fields, 1);
+}
+
 pdf::Fields settingsFields(const ReportSettings& s) {
     pdf::Fields settings;
     if (s.vss.enabled) {
@@ -502,6 +522,10 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
         if (!data.empty()) {
             flow.heading(ReportText::tr("Data"), pdf::fieldGridHeight(flow, data, 1));
             pdf::fieldGrid(flow, data, 1);
+        }
+
+        if (content.segmentation) {
+            segmentationSection(flow, *content.segmentation);
         }
 
         const pdf::Fields settings = settingsFields(content.settings);

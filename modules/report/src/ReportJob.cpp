@@ -234,6 +234,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             std::erase(content.sources, options.source.dicomPath);
         }
         content.syntheticDemo = options.source.syntheticDemo;
+        content.segmentation = options.source.segmentation;
         auto [view, range] = reportView(
             base.camera, base.vss.range,
             options.viewCaption.empty() ? namedViewCaption({}, scene.frame) : options.viewCaption,

@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "vv/colormaps/ColorMap.h"
@@ -49,6 +50,18 @@ struct ReportParameter {
     std::vector<ParameterStats> stats;  ///< one row per object
 };
 
+/// How the vessels were segmented from the DICOM series: the report's
+/// "Segmentation" section, under the data. Its texts are in the report's
+/// language, made by the caller (the front ends: app::reportSegmentation).
+struct ReportSegmentation {
+    /// Label and value of each setting, e.g. {"Threshold", "200 – 700 HU (CT
+    /// angiography default)"}, in this order.
+    std::vector<std::pair<std::string, std::string>> settings;
+    /// What the reader must know about it, one sentence each (e.g. that a
+    /// vessel may be cut off): printed under the settings in the warning colour.
+    std::vector<std::string> warnings;
+};
+
 /// The rendering settings the report lists.
 struct ReportSettings {
     render::VssSettings vss;
@@ -71,10 +84,11 @@ struct ReportSettings {
 
 /// Everything the PDF report shows, in this order: the title block and the
 /// disclaimer, the patient (when given), the findings, the view(s), the
-/// parameter statistics, the data (file names, provenance) and the rendering
-/// settings. Absent parts are left out of the page (no patient block without
-/// `patient`, no parameter legend and table without `parameter`, no second
-/// view without `secondView`). Every text is translated
+/// parameter statistics, the data (file names, provenance), the segmentation
+/// and the rendering settings. Absent parts are left out of the page (no
+/// patient block without `patient`, no parameter legend and table without
+/// `parameter`, no second view without `secondView`, no segmentation section
+/// without `segmentation`). Every text is translated
 /// (QCoreApplication::translate, context "vv::report::ReportText") and every
 /// number and date is formatted in the default QLocale (the UI language).
 struct ReportContent {
@@ -91,6 +105,8 @@ struct ReportContent {
     /// The data is VesselView's synthetic demo tree, not patient data: the
     /// report says so.
     bool syntheticDemo = false;
+    /// How the series was segmented (after the data); none for meshes.
+    std::optional<ReportSegmentation> segmentation;
     ReportView view;
     std::optional<ReportView> secondView;
     /// A slice of the volume with its segmentation overlay (DICOM data),

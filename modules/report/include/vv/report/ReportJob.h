@@ -34,6 +34,9 @@ struct ReportSource {
     std::string seriesName;
     /// The data is VesselView's synthetic demo tree (the report says so).
     bool syntheticDemo = false;
+    /// How the vessels were segmented from the series (the settings that made
+    /// the segmentation shown and sent, and its warnings); none for meshes and SEGs.
+    std::optional<ReportSegmentation> segmentation;
 };
 
 /// The files of one report; empty paths are not written.
