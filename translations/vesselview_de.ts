@@ -1670,10 +1670,6 @@ Ersetzen?</translation>
         <translation>Ordner: Wählen Sie einen Ordner für den lokalen Studienspeicher.</translation>
     </message>
     <message>
-        <source>Not saved: %1</source>
-        <translation>Nicht gespeichert: %1</translation>
-    </message>
-    <message>
         <source>Listener uses TL&amp;S (encrypted DICOM)</source>
         <translation>Empfang mit TL&amp;S (verschlüsseltes DICOM)</translation>
     </message>
@@ -1692,6 +1688,30 @@ Ersetzen?</translation>
     <message>
         <source>Test cancelled.</source>
         <translation>Test abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Not saved: our AE title is not valid.</source>
+        <translation>Nicht gespeichert: Unser AE-Titel ist ungültig.</translation>
+    </message>
+    <message>
+        <source>Not saved: the listener port must be 1 to 65535.</source>
+        <translation>Nicht gespeichert: Der Empfangsport muss zwischen 1 und 65535 liegen.</translation>
+    </message>
+    <message>
+        <source>Not saved: the listener&apos;s TLS needs our certificate, its private key and the trusted CA certificate.</source>
+        <translation>Nicht gespeichert: TLS für den Empfang braucht unser Zertifikat, seinen privaten Schlüssel und das vertrauenswürdige CA-Zertifikat.</translation>
+    </message>
+    <message>
+        <source>Not saved: a node has no name.</source>
+        <translation>Nicht gespeichert: Ein Knoten hat keinen Namen.</translation>
+    </message>
+    <message>
+        <source>Not saved: two nodes are called &quot;%1&quot;.</source>
+        <translation>Nicht gespeichert: Zwei Knoten heißen „%1“.</translation>
+    </message>
+    <message>
+        <source>Not saved: the AE title, host or port of the node &quot;%1&quot; is not valid.</source>
+        <translation>Nicht gespeichert: AE-Titel, Host oder Port des Knotens „%1“ sind ungültig.</translation>
     </message>
 </context>
 <context>
@@ -3714,6 +3734,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Depth behind the frontmost vessel</source>
         <translation>Tiefe hinter dem vordersten Gefäß</translation>
+    </message>
+    <message>
+        <source>Viewing distance</source>
+        <translation>Abstand vom Betrachter</translation>
     </message>
 </context>
 <context>

@@ -35,7 +35,8 @@ constexpr int kStatusTimeoutMs = 15000;
 constexpr double kSameAspect = 0.01;
 
 /// "Visible vessels" -> the settled view's range as a fixed one, when the
-/// export is framed as the view (currentViewOptions()).
+/// export is framed as the view (currentViewOptions()), marked as pinned: its
+/// legend measures from the screen's frontmost vessel, as the screen's does.
 void pinVisibleDepthRange(const ViewerWidget& viewer, int width, int height,
                           vss::DepthRange& range) {
     const render::VssFrameStatus& shown = viewer.vssStatus();
@@ -50,7 +51,10 @@ void pinVisibleDepthRange(const ViewerWidget& viewer, int width, int height,
     if (std::abs(aspect / viewAspect - 1.0) > kSameAspect) {
         return;  // framed otherwise: it shows vessels the view does not
     }
-    range = {vss::RangeMode::Fixed, shown.dmin, shown.dmax};
+    range = {.mode = vss::RangeMode::Fixed,
+             .dmin = shown.dmin,
+             .dmax = shown.dmax,
+             .pinnedVisible = true};
 }
 
 }  // namespace

@@ -30,7 +30,10 @@ class ViewerWidget;
 /// With the depth range "Visible vessels", an export framed as the view (the
 /// same aspect) takes the settled view's range as a fixed one, so that its
 /// depth colours and legend are the screen's: at another resolution a few
-/// vessel pixels more or less (a vessel seen end-on) would move it.
+/// vessel pixels more or less (a vessel seen end-on) would move it. That range
+/// is marked vss::DepthRange::pinnedVisible, so its legend keeps the screen's
+/// title and numbers (depth behind the frontmost vessel), not a user's fixed
+/// range's (viewing distance).
 [[nodiscard]] render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int width,
                                                           int height);
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <utility>
 
+#include "gui/EngineTexts.h"
 #include "gui/ViewerWidget.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
@@ -55,7 +56,9 @@ void ScreenshotMode::frameRendered() {
             }
         });
     } catch (const vv::Error& e) {
-        finish(false, QString::fromStdString(e.what()));
+        // As MainWindow::showError() prints a problem: the kind, then the detail.
+        const ProblemText problem = describeProblem(e, FileAccess::Writing);
+        finish(false, problem.summary + QLatin1Char(' ') + problem.details);
         return;
     }
     finish(true, tr("saved %1 (%2 x %3)").arg(path_).arg(image.width()).arg(image.height()));

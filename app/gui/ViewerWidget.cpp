@@ -419,13 +419,16 @@ void ViewerWidget::initializeGL() {
         frameMeter_.initialize();
         frameDirty_ = true;
     } catch (const vv::Error& e) {
+        // In the UI language; the module's own words go to the log.
+        static const log::Category category{"vv.gui"};
+        log::warning(category, std::string("OpenGL set-up failed: ") + e.what());
         const QSurfaceFormat f = ctx->format();
         fail(tr("VesselView needs OpenGL 4.1 (core profile); this system offers OpenGL "
                 "%1.%2.\n\n%3\n\nUpdate the graphics driver, or run with Mesa's software "
                 "renderer (LIBGL_ALWAYS_SOFTWARE=1).")
                  .arg(f.majorVersion())
                  .arg(f.minorVersion())
-                 .arg(QString::fromStdString(e.what())));
+                 .arg(describeProblem(e, FileAccess::Reading).line()));
     }
 }
 
@@ -657,6 +660,7 @@ std::optional<ProbeResult> ViewerWidget::probeAt(const QPointF& position) {
     result.value = sample->value;
     result.linearDepth = sample->linearDepth;
     result.depthBelowNearest = sample->depthBelowNearest;
+    result.depthReference = sample->depthReference;
     result.worldPosition = sample->worldPosition;
     if (sample->label) {
         result.labelName = QString::fromStdString(sample->label->name);
@@ -687,10 +691,14 @@ QString ViewerWidget::probeText(const ProbeResult& result) {
                       ? tr("%1: %2").arg(result.arrayName, value)
                       : tr("%1: %2 %3").arg(result.arrayName, value, result.unit));
     }
-    // The depth legend's quantity, in its words (render::depthQuantityName()).
+    // The depth legend's quantity, in its words (render::depthQuantityName()):
+    // the number a person compares with the legend's.
+    const float depth = result.depthReference == render::DepthReference::Camera
+                            ? result.linearDepth
+                            : result.depthBelowNearest;
     lines << tr("%1: %2 mm")
-                 .arg(render::depthQuantityName(),
-                      locale.toString(static_cast<double>(result.depthBelowNearest), 'f', 1));
+                 .arg(render::depthQuantityName(result.depthReference),
+                      locale.toString(static_cast<double>(depth), 'f', 1));
     return lines.join(QLatin1Char('\n'));
 }
 

@@ -43,6 +43,10 @@ struct ProbeResult {
     /// Depth behind the nearest visible vessel point (linear depth minus the
     /// smallest visible linear depth), mm.
     float depthBelowNearest = 0.0F;
+    /// What the view's depth legend measures from: probeText() gives the
+    /// depth behind the frontmost vessel, or the viewing distance (linearDepth)
+    /// while a fixed VSS range is on.
+    render::DepthReference depthReference = render::DepthReference::FrontmostVessel;
     glm::vec3 worldPosition{0.0F};  ///< scene coordinates (mm)
     /// The array is shown as labels and `value` is one: its name from the
     /// file ("" when it has none).

@@ -28,7 +28,9 @@
 #include <fstream>
 #include <iterator>
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
@@ -496,8 +498,15 @@ TEST_F(ExportGuiTest, EverySecondViewsLegendDescribesItsOwnImage) {
         const auto [dmin, dmax] = report::test::ownDepthRange(renderer, *scene, job.view,
                                                               *job.secondView, range, job.paper);
         const std::string caption = report::namedViewCaption(name);
+        // A fixed range the user chose: the viewing distance, near to far.
+        render::DepthLegend legend;
+        legend.dmin = dmin;
+        legend.dmax = dmax;
+        legend.reference = range.mode == vss::RangeMode::Fixed
+                               ? render::DepthReference::Camera
+                               : render::DepthReference::FrontmostVessel;
         return report::test::depthLegendProblem(report::test::pdfWords(pdf), "Second",
-                                                caption.substr(0, caption.find(' ')), dmin, dmax);
+                                                caption.substr(0, caption.find(' ')), legend);
     };
     // The first view has the screen's range; each second view its own.
     for (const std::string& name : report::test::namedViews()) {
@@ -512,6 +521,127 @@ TEST_F(ExportGuiTest, EverySecondViewsLegendDescribesItsOwnImage) {
     ASSERT_TRUE(waitForVss());
     const std::string problem = legendOfSecondView("anterior", fixed.range);
     EXPECT_TRUE(problem.empty()) << problem;
+}
+
+/// The depth legend's title and tick labels, as painted.
+QStringList legendText(const render::DepthLegend& legend) {
+    QStringList text{QString::fromStdString(render::depthLegendTitle(legend))};
+    for (const render::LegendTick& tick : render::depthLegendTicks(legend)) {
+        text << tick.label;
+    }
+    return text;
+}
+
+/// Every depth legend and the probe say what their numbers are (issue 30,
+/// item 10): with the visible range the depth behind the frontmost vessel,
+/// and an export framed as the view (its range pinned) reads exactly as the
+/// screen; with a fixed range the user chose, the viewing distance from near
+/// to far, on the screen, the image export, both views of the report and in
+/// the probe.
+TEST_F(ExportGuiTest, EveryDepthLegendAndTheProbeSayWhatTheirNumbersMeasureFrom) {
+    ASSERT_TRUE(showTube());
+    gui::ViewerWidget* viewer = window_->viewer();
+    render::MeshStyle style = viewer->style();
+    style.array.clear();  // the depth legend alone over the views
+    viewer->setStyle(style);
+    viewer->setLegendsVisible(true);
+    const auto screenLegend = [&] {
+        const quint64 frames = viewer->framesWithScene();
+        EXPECT_TRUE(waitUntil(
+            [&] {
+                return viewer->framesWithScene() > frames && !viewer->vssStatus().pending &&
+                       !viewer->vssStatus().preview && viewer->shownLegends().depth.has_value();
+            },
+            60000));
+        return viewer->shownLegends().depth.value_or(render::DepthLegend{});
+    };
+    const auto probeLine = [&] {
+        std::optional<gui::ProbeResult> probe;
+        for (int y = 1; y < 20 && !probe; ++y) {
+            probe = viewer->probeAt(QPointF(0.5 * viewer->width(), y * viewer->height() / 20.0));
+        }
+        EXPECT_TRUE(probe.has_value());
+        return std::pair{probe.value_or(gui::ProbeResult{}),
+                         gui::ViewerWidget::probeText(probe.value_or(gui::ProbeResult{}))
+                             .split(QLatin1Char('\n'))
+                             .back()};
+    };
+    const QSize view = gui::viewPixelSize(*viewer);
+    render::OffscreenRenderer renderer;
+    const auto exportedLegend = [&] {
+        report::ViewExportOptions options;
+        options.render = gui::currentViewOptions(*viewer, 2 * view.width(), 2 * view.height());
+        const report::RenderedView exported =
+            report::renderView(renderer, *viewer->scene(), options);
+        return exported.legends.depth.value_or(render::DepthLegend{});
+    };
+    // The report's first view and its anterior second view, as the PDF prints them.
+    const auto reportProblems = [&](const std::string& name, const render::DepthLegend& first,
+                                    const vss::DepthRange& range) {
+        gui::ReportDialog dialog(*viewer, window_->reportSource(), window_.get());
+        dialog.secondViewChooser()->setCurrentIndex(
+            dialog.secondViewChooser()->findData(QStringLiteral("anterior")));
+        report::ReportJobOptions job = dialog.jobOptions();
+        const fs::path pdf = dir_ / (name + ".pdf");
+        job.outputs = {};
+        job.outputs.pdf = pdf;
+        (void)report::runReportJob(renderer, *viewer->scene(), job);
+        const auto words = report::test::pdfWords(pdf);
+        const auto anterior = render::namedViewFromName("anterior");
+        const auto [dmin, dmax] = report::test::ownDepthRange(renderer, *viewer->scene(), job.view,
+                                                              *anterior, range, job.paper);
+        render::DepthLegend second = first;
+        second.dmin = dmin;
+        second.dmax = dmax;
+        const std::string caption = report::namedViewCaption("anterior");
+        std::string problems = report::test::depthLegendProblem(words, "View", "The", first);
+        const std::string secondProblem = report::test::depthLegendProblem(
+            words, "Second", caption.substr(0, caption.find(' ')), second);
+        if (!secondProblem.empty()) {
+            problems += " | second view: " + secondProblem;
+        }
+        return problems;
+    };
+
+    // The visible range: the depth behind the frontmost vessel, from 0.
+    const render::DepthLegend visible = screenLegend();
+    EXPECT_EQ(visible.reference, render::DepthReference::FrontmostVessel);
+    const QStringList screenText = legendText(visible);
+    EXPECT_EQ(screenText.front(),
+              render::depthQuantityName(render::DepthReference::FrontmostVessel) +
+                  QStringLiteral(" (mm)"));
+    EXPECT_EQ(QLocale().toDouble(screenText.at(1)), 0.0) << screenText.at(1).toStdString();
+    EXPECT_EQ(legendText(exportedLegend()), screenText) << "the pinned export reads as the screen";
+    const std::string visibleReport =
+        reportProblems("visible", visible, viewer->vssSettings().range);
+    EXPECT_TRUE(visibleReport.empty()) << visibleReport;
+    const auto [nearProbe, nearLine] = probeLine();
+    EXPECT_EQ(nearLine, QStringLiteral("%1: %2 mm")
+                            .arg(render::depthQuantityName(render::DepthReference::FrontmostVessel),
+                                 QLocale().toString(nearProbe.depthBelowNearest, 'f', 1)));
+
+    // A fixed range the user chose: the viewing distance, near to far.
+    render::VssSettings fixed = viewer->vssSettings();
+    const double nearEnd = std::floor(visible.dmin) - 2.0;
+    const double farEnd = std::ceil(visible.dmax) + 3.0;
+    fixed.range = {.mode = vss::RangeMode::Fixed, .dmin = nearEnd, .dmax = farEnd};
+    viewer->setVssSettings(fixed);
+    const render::DepthLegend chosen = screenLegend();
+    EXPECT_EQ(chosen.reference, render::DepthReference::Camera);
+    const QStringList fixedText = legendText(chosen);
+    EXPECT_EQ(fixedText.front(),
+              render::depthQuantityName(render::DepthReference::Camera) + QStringLiteral(" (mm)"));
+    EXPECT_EQ(QLocale().toDouble(fixedText.at(1)), nearEnd) << fixedText.at(1).toStdString();
+    EXPECT_EQ(QLocale().toDouble(fixedText.back()), farEnd) << fixedText.back().toStdString();
+    EXPECT_EQ(legendText(exportedLegend()), fixedText);
+    const std::string fixedReport = reportProblems("fixed", chosen, fixed.range);
+    EXPECT_TRUE(fixedReport.empty()) << fixedReport;
+    const auto [farProbe, farLine] = probeLine();
+    EXPECT_EQ(farLine, QStringLiteral("%1: %2 mm")
+                           .arg(render::depthQuantityName(render::DepthReference::Camera),
+                                QLocale().toString(farProbe.linearDepth, 'f', 1)));
+    EXPECT_GE(farProbe.linearDepth, nearEnd);
+    EXPECT_LE(farProbe.linearDepth, farEnd);
 }
 
 TEST_F(ExportGuiTest, ReportChecksItsOutputs) {

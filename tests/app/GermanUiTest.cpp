@@ -44,6 +44,7 @@
 #include "gui/ExportWorker.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
+#include "gui/pacs/NetworkPreferencesDialog.h"
 #include "gui/pacs/PacsBrowser.h"
 #include "vv/core/Progress.h"
 #include "vv/demo/DemoCtSeries.h"
@@ -638,6 +639,52 @@ TEST_F(GermanUiTest, ErrorMessagesAreGermanWithTheDetailApart) {
     box->close();
 }
 
+/// DICOM > Preferences refusing settings it cannot save (two nodes of one
+/// name, a node with an invalid AE title): the message names the setting in
+/// German, the English detail of the settings module only in the message's
+/// tooltip (it read "Nicht gespeichert: two nodes are called 'Radiologie'").
+TEST_F(GermanUiTest, NetworkPreferencesRefuseInGermanWithTheDetailApart) {
+    gui::PacsNode node;
+    node.name = "Radiologie";
+    node.node.aeTitle = "RADPACS";
+    node.node.host = "10.1.2.3";
+    node.node.port = 104;
+    gui::PacsNode badAe = node;
+    badAe.name = "Kardiologie";
+    badAe.node.aeTitle = "BAD\\AE";
+    static const QRegularExpression word(QStringLiteral("[A-Za-z]{4,}"));
+    for (const gui::PacsNode& second : {node, badAe}) {
+        const QString name = QString::fromStdString(second.name);
+        const auto refused = [&] {
+            gui::NetworkPreferencesDialog dialog(window_.get());
+            dialog.storeFolderEdit()->setText(
+                QString::fromStdString((panelTestDir() / "store").string()));
+            dialog.addNode(node);
+            dialog.addNode(second);
+            dialog.accept();
+            EXPECT_NE(dialog.result(), QDialog::Accepted) << "saved";
+            return QStringList{dialog.error(), dialog.errorDetails()};
+        };
+        const QStringList german = refused();
+        const QStringList english = inEnglish(refused);
+        const QString& text = german.at(0);
+        const QString& details = german.at(1);
+        EXPECT_TRUE(text.contains(name)) << text.toStdString();
+        EXPECT_NE(text, english.at(0)) << "the message is English in German";
+        ASSERT_FALSE(details.isEmpty()) << "no detail";
+        EXPECT_TRUE(details.contains(name)) << details.toStdString();
+        // No word of the module's English text in the German message (but the node's name).
+        QString detailWords = details;
+        detailWords.remove(name);
+        for (auto it = word.globalMatch(detailWords); it.hasNext();) {
+            const QString englishWord = it.next().captured();
+            EXPECT_FALSE(text.contains(englishWord, Qt::CaseInsensitive))
+                << "English \"" << englishWord.toStdString()
+                << "\" in the German message: " << text.toStdString();
+        }
+    }
+}
+
 /// The legends are painted on the view (no widget to read): their text
 /// functions, called with the GUI in German, give German titles and ticks.
 TEST_F(GermanUiTest, LegendTextsAreGerman) {
@@ -646,7 +693,7 @@ TEST_F(GermanUiTest, LegendTextsAreGerman) {
         for (const auto& tick : render::legendTicks(0.0, 0.45)) {
             labels << toQString(tick.label);
         }
-        for (const auto& tick : render::depthLegendTicks(10.0, 87.5)) {
+        for (const auto& tick : render::depthLegendTicks({.dmin = 10.0, .dmax = 87.5})) {
             labels << toQString(tick.label);
         }
         return labels;
@@ -657,8 +704,13 @@ TEST_F(GermanUiTest, LegendTextsAreGerman) {
     }
     render::DepthLegend depth;
     depth.unit = "mm";
-    const auto title = [&depth] {
-        return QStringList{toQString(render::depthLegendTitle(depth)), render::depthQuantityName()};
+    render::DepthLegend distance = depth;
+    distance.reference = render::DepthReference::Camera;
+    const auto title = [&depth, &distance] {
+        return QStringList{toQString(render::depthLegendTitle(depth)),
+                           toQString(render::depthLegendTitle(distance)),
+                           render::depthQuantityName(render::DepthReference::FrontmostVessel),
+                           render::depthQuantityName(render::DepthReference::Camera)};
     };
     const QStringList english = inEnglish(title);
     const QStringList german = title();

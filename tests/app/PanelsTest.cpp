@@ -266,7 +266,8 @@ TEST_F(PanelsTest, EveryPlaceNamesAQuantityInOneWording) {
     ASSERT_TRUE(legends.parameter.has_value());
     EXPECT_EQ(QString::fromStdString(render::parameterLegendTitle(*legends.parameter)), wss);
     const QString depthTitle = QString::fromStdString(render::depthLegendTitle(*legends.depth));
-    EXPECT_EQ(depthTitle, render::depthQuantityName() + QStringLiteral(" (mm)"));
+    EXPECT_EQ(depthTitle, render::depthQuantityName(render::DepthReference::FrontmostVessel) +
+                              QStringLiteral(" (mm)"));
     // The probe names the depth as the legend does, its number in mm.
     std::optional<gui::ProbeResult> probe;
     for (int y = 1; y < 20 && !probe; ++y) {
@@ -274,7 +275,8 @@ TEST_F(PanelsTest, EveryPlaceNamesAQuantityInOneWording) {
     }
     ASSERT_TRUE(probe.has_value());
     const QStringList lines = gui::ViewerWidget::probeText(*probe).split(QLatin1Char('\n'));
-    EXPECT_TRUE(lines.back().startsWith(render::depthQuantityName() + QStringLiteral(": ")))
+    EXPECT_TRUE(lines.back().startsWith(
+        render::depthQuantityName(render::DepthReference::FrontmostVessel) + QStringLiteral(": ")))
         << lines.back().toStdString();
     EXPECT_TRUE(lines.back().endsWith(QStringLiteral(" mm"))) << lines.back().toStdString();
     for (const QString& line : lines) {

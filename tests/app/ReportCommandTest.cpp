@@ -322,9 +322,12 @@ TEST(ReportCommandTest, EverySecondViewsLegendDescribesItsOwnImage) {
         const auto [dmin, dmax] = vv::report::test::ownDepthRange(
             renderer, scene, base, *view, base.vss.range, vv::report::PaperSize::A4);
         const std::string caption = vv::report::namedViewCaption(name);
+        vv::render::DepthLegend legend;
+        legend.dmin = dmin;
+        legend.dmax = dmax;
         const std::string problem =
             vv::report::test::depthLegendProblem(vv::report::test::pdfWords(pdf), "Second",
-                                                 caption.substr(0, caption.find(' ')), dmin, dmax);
+                                                 caption.substr(0, caption.find(' ')), legend);
         EXPECT_TRUE(problem.empty()) << problem;
     }
 }

@@ -361,9 +361,10 @@ class LocaleGuard {
 
 TEST(LegendLocaleTest, TickLabelsUseTheUiLocale) {
     const LocaleGuard german{QLocale(QLocale::German, QLocale::Germany)};
-    for (const auto& ticks : {vv::render::legendTicks(0.450075, 1.30846),
-                              vv::render::binEdgeTicks(0.450075, 1.30846, 6),
-                              vv::render::depthLegendTicks(10.0, 33.4)}) {
+    for (const auto& ticks :
+         {vv::render::legendTicks(0.450075, 1.30846),
+          vv::render::binEdgeTicks(0.450075, 1.30846, 6),
+          vv::render::depthLegendTicks(vv::render::DepthLegend{.dmin = 10.0, .dmax = 33.4})}) {
         for (const auto& t : ticks) {
             EXPECT_FALSE(t.label.contains('.')) << t.label.toStdString();
         }

@@ -17,12 +17,14 @@
 #include <cmath>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "PaintRecorder.h"
 #include "RenderTestUtil.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
 
 namespace {
@@ -192,8 +194,7 @@ TEST_P(LegendTextTest, DepthLegendsShowTheirEndsUncrowdedUnderTheOneTitle) {
             const PaintedLegend painted = paintedLegend(legends, area.size, layout.depth);
             const std::string where = std::string(area.name) + " " + GetParam() + " depth " +
                                       std::to_string(range.hi - range.lo) + " mm";
-            checkLabels(painted, vv::render::depthLegendTicks(300.0 + range.lo, 300.0 + range.hi),
-                        where);
+            checkLabels(painted, vv::render::depthLegendTicks(*legends.depth), where);
             // The whole title, never shortened or cut; more lines where one is too narrow.
             EXPECT_EQ(titleOf(painted),
                       QString::fromStdString(vv::render::depthLegendTitle(*legends.depth)))
@@ -205,6 +206,71 @@ TEST_P(LegendTextTest, DepthLegendsShowTheirEndsUncrowdedUnderTheOneTitle) {
     }
 }
 
+/// The depth legend of a frame whose VSS shows [300, 428] mm of viewing
+/// distance, as painted (legendsFor(), paintLegends()): its title and its
+/// tick labels, for each way the range was chosen. The visible range and a
+/// view's range pinned for an export (vss::DepthRange::pinnedVisible) read
+/// alike: the depth behind the frontmost vessel, 0 to 128; a fixed range the
+/// user chose is the viewing distance, 300 to 428 (the VSS panel's near /
+/// far); with the VSS off, the vessel cue spans the visible vessels.
+TEST_P(LegendTextTest, TheDepthLegendSaysWhatItsNumbersMeasureFrom) {
+    const QSizeF size(900, 690);
+    vv::render::VssFrameStatus status;
+    status.shown = true;
+    status.dmin = 300.0;
+    status.dmax = 428.0;
+    const auto painted = [&](const vv::render::FrameSettings& settings,
+                             const std::optional<std::pair<double, double>>& cue) {
+        const vv::render::Legends legends =
+            vv::render::legendsFor(nullptr, {}, std::nullopt, settings, status, cue);
+        EXPECT_TRUE(legends.depth.has_value());
+        const QRectF box = vv::render::legendLayout(QRectF(QPointF(), size), legends).depth;
+        const PaintedLegend legend = paintedLegend(legends, size, box);
+        QStringList labels;
+        for (const PaintedText& label : legend.labels) {
+            labels << label.text;
+        }
+        return std::pair{titleOf(legend), labels};
+    };
+    const QString behind =
+        vv::render::depthQuantityName(vv::render::DepthReference::FrontmostVessel) +
+        QStringLiteral(" (mm)");
+    const QString distance =
+        vv::render::depthQuantityName(vv::render::DepthReference::Camera) + QStringLiteral(" (mm)");
+    const QLocale locale;
+    const auto number = [&locale](int n) { return locale.toString(n); };
+
+    vv::render::FrameSettings visible;
+    const auto [visibleTitle, visibleLabels] = painted(visible, std::nullopt);
+    EXPECT_EQ(visibleTitle, behind);
+    ASSERT_GE(visibleLabels.size(), 2);
+    EXPECT_EQ(visibleLabels.front(), number(0));
+    EXPECT_EQ(visibleLabels.back(), number(128));
+
+    vv::render::FrameSettings pinned;
+    pinned.vss.range = {
+        .mode = vv::vss::RangeMode::Fixed, .dmin = 300.0, .dmax = 428.0, .pinnedVisible = true};
+    EXPECT_EQ(painted(pinned, std::nullopt), (std::pair{visibleTitle, visibleLabels}))
+        << "a pinned export's legend is the screen's";
+
+    vv::render::FrameSettings fixed;
+    fixed.vss.range = {.mode = vv::vss::RangeMode::Fixed, .dmin = 300.0, .dmax = 428.0};
+    const auto [fixedTitle, fixedLabels] = painted(fixed, std::nullopt);
+    EXPECT_EQ(fixedTitle, distance);
+    ASSERT_GE(fixedLabels.size(), 2);
+    EXPECT_EQ(fixedLabels.front(), number(300));
+    EXPECT_EQ(fixedLabels.back(), number(428));
+
+    // VSS off, a fixed range left set: the cue's visible range, from the frontmost vessel.
+    fixed.vss.enabled = false;
+    fixed.cue.cue = vv::render::VesselCue::Chromadepth;
+    const auto [cueTitle, cueLabels] = painted(fixed, std::pair{310.0, 350.0});
+    EXPECT_EQ(cueTitle, behind);
+    ASSERT_GE(cueLabels.size(), 2);
+    EXPECT_EQ(cueLabels.front(), number(0));
+    EXPECT_EQ(cueLabels.back(), number(40));
+}
+
 INSTANTIATE_TEST_SUITE_P(Locales, LegendTextTest, ::testing::Values("en_US", "de_DE"));
 
 TEST(LegendTitleTest, TheDepthLegendHasOneTitleWithItsUnit) {
@@ -212,9 +278,13 @@ TEST(LegendTitleTest, TheDepthLegendHasOneTitleWithItsUnit) {
     vv::render::DepthLegend legend;
     legend.unit = "mm";
     EXPECT_EQ(vv::render::depthLegendTitle(legend), "Depth behind the frontmost vessel (mm)");
-    EXPECT_EQ(vv::render::depthQuantityName(), QStringLiteral("Depth behind the frontmost vessel"));
+    EXPECT_EQ(vv::render::depthQuantityName(vv::render::DepthReference::FrontmostVessel),
+              QStringLiteral("Depth behind the frontmost vessel"));
     legend.unit.clear();
     EXPECT_EQ(vv::render::depthLegendTitle(legend), "Depth behind the frontmost vessel");
+    legend.unit = "mm";
+    legend.reference = vv::render::DepthReference::Camera;
+    EXPECT_EQ(vv::render::depthLegendTitle(legend), "Viewing distance (mm)");
 }
 
 }  // namespace

@@ -285,8 +285,16 @@ TEST_F(VesselCueTest, LegendsArePaintedExactlyWhenTheirScalesAreUsed) {
     }
 }
 
+/// The depth legend over [dmin, dmax] from the frontmost vessel.
+vv::render::DepthLegend depthLegend(double dmin, double dmax) {
+    vv::render::DepthLegend legend;
+    legend.dmin = dmin;
+    legend.dmax = dmax;
+    return legend;
+}
+
 TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {
-    const auto ticks = vv::render::depthLegendTicks(100.0, 130.0);
+    const auto ticks = vv::render::depthLegendTicks(depthLegend(100.0, 130.0));
     ASSERT_GE(ticks.size(), 2U);
     EXPECT_DOUBLE_EQ(ticks.front().value, 0.0);
     EXPECT_DOUBLE_EQ(ticks.front().position, 0.0);
@@ -304,7 +312,7 @@ TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {
     }
     EXPECT_EQ(labels, (std::vector<std::string>{"0", "10", "20", "30"}));
 
-    const auto odd = vv::render::depthLegendTicks(10.0, 33.4);
+    const auto odd = vv::render::depthLegendTicks(depthLegend(10.0, 33.4));
     std::vector<std::string> oddLabels;
     for (const auto& t : odd) {
         oddLabels.push_back(t.label.toStdString());
@@ -314,9 +322,21 @@ TEST(LegendTicksTest, DepthLabelsRunFromZeroAtDminToTheRangeAtDmax) {
     EXPECT_NEAR(odd[1].position, 10.0 / 23.4, 1e-12);
 
     // A flat scene: one tick, 0.
-    const auto flat = vv::render::depthLegendTicks(42.0, 42.0);
+    const auto flat = vv::render::depthLegendTicks(depthLegend(42.0, 42.0));
     ASSERT_EQ(flat.size(), 1U);
     EXPECT_EQ(flat.front().label, "0");
+}
+
+TEST(LegendTicksTest, ViewingDistanceLabelsRunFromNearToFar) {
+    vv::render::DepthLegend fixed = depthLegend(100.0, 130.0);
+    fixed.reference = vv::render::DepthReference::Camera;
+    const auto ticks = vv::render::depthLegendTicks(fixed);
+    std::vector<std::string> labels;
+    for (const auto& t : ticks) {
+        labels.push_back(t.label.toStdString());
+        EXPECT_NEAR(t.position, (t.value - 100.0) / 30.0, 1e-12);
+    }
+    EXPECT_EQ(labels, (std::vector<std::string>{"100", "110", "120", "130"}));
 }
 
 TEST(LegendTicksTest, ParameterTicksKeepBothEndsAndNiceValuesBetween) {

@@ -141,26 +141,32 @@ std::pair<double, double> ownDepthRange(render::OffscreenRenderer& renderer,
 }
 
 std::string depthLegendProblem(const std::vector<PdfWord>& words, const std::string& heading,
-                               const std::string& caption, double dmin, double dmax) {
+                               const std::string& caption, const render::DepthLegend& legend) {
     const auto top = std::find_if(words.begin(), words.end(),
                                   [&](const PdfWord& w) { return w.text == heading; });
     if (top == words.end()) {
         return "no heading '" + heading + "'";
     }
     std::set<std::string> labels;
-    for (const render::LegendTick& tick : render::depthLegendTicks(dmin, dmax)) {
+    for (const render::LegendTick& tick : render::depthLegendTicks(legend)) {
         labels.insert(tick.label.toStdString());
     }
-    const std::string last = render::depthLegendTicks(dmin, dmax).back().label.toStdString();
+    const std::string last = render::depthLegendTicks(legend).back().label.toStdString();
     const std::regex number(R"(-?[0-9]+([.,][0-9]+)?)");
     std::vector<std::string> shown;
+    std::string text;
     for (auto w = top + 1; w != words.end() && w->page == top->page; ++w) {
         if (w->text == caption && w->top > top->bottom) {
             break;
         }
+        text += w->text + " ";
         if (std::regex_match(w->text, number)) {
             shown.push_back(w->text);
         }
+    }
+    const std::string title = render::depthLegendTitle(legend);
+    if (text.find(title) == std::string::npos) {
+        return "the legend is not titled '" + title + "': " + text;
     }
     std::string all;
     for (const std::string& n : shown) {

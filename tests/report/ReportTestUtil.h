@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "GlTestSupport.h"
+#include "vv/render/LegendPainter.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/report/PdfReport.h"
@@ -79,11 +80,12 @@ std::pair<double, double> ownDepthRange(render::OffscreenRenderer& renderer,
 
 /// What is wrong with the depth legend printed over the view under the first
 /// word `heading` (down to the first word `caption` below it, on that
-/// page) of `words`: no number there, a number that is not a tick label of
-/// depthLegendTicks(dmin, dmax), or no label of its far end. Empty when it
-/// describes (dmin, dmax). The view must show no parameter legend.
+/// page) of `words`: not the title depthLegendTitle(legend), no number
+/// there, a number that is not a tick label of depthLegendTicks(legend), or
+/// no label of its far end. Empty when it is `legend` (its range and what
+/// it measures from). The view must show no parameter legend.
 std::string depthLegendProblem(const std::vector<PdfWord>& words, const std::string& heading,
-                               const std::string& caption, double dmin, double dmax);
+                               const std::string& caption, const render::DepthLegend& legend);
 
 /// Every page of `pdf` rasterised at `dpi` (pdftoppm, poppler-utils) as
 /// `dir`/page-N.png, in order (a test failure when it cannot).

@@ -21,6 +21,7 @@
 #include <array>
 #include <cmath>
 
+#include "gui/EngineTexts.h"
 #include "gui/PathField.h"
 #include "gui/pacs/BackgroundCall.h"
 #include "gui/pacs/NetworkFailure.h"
@@ -210,6 +211,10 @@ QString NetworkPreferencesDialog::error() const {
     return error_->text();
 }
 
+QString NetworkPreferencesDialog::errorDetails() const {
+    return error_->toolTip();
+}
+
 QString NetworkPreferencesDialog::testResult() const {
     return testResult_->text();
 }
@@ -343,11 +348,55 @@ void NetworkPreferencesDialog::fitHeight() {
 
 void NetworkPreferencesDialog::refuse(const QString& message, QWidget* field) {
     error_->setText(message);
+    error_->setToolTip(QString());
     error_->show();
     fitHeight();
     if (field != nullptr) {
         field->setFocus();
     }
+}
+
+void NetworkPreferencesDialog::refuse(const PacsSettingsError& error) {
+    using Setting = PacsSettingsError::Setting;
+    const QString node = QString::fromStdString(error.node());
+    ProblemText problem;
+    problem.details = QString::fromStdString(error.what());
+    QWidget* field = table_;
+    switch (error.setting()) {
+        case Setting::OurAeTitle:
+            problem.summary = tr("Not saved: our AE title is not valid.");
+            field = aeTitle_;
+            break;
+        case Setting::ListenerPort:
+            problem.summary = tr("Not saved: the listener port must be 1 to 65535.");
+            field = listenerPort_;
+            break;
+        case Setting::ListenerTls:
+            problem.summary =
+                tr("Not saved: the listener's TLS needs our certificate, its private key and "
+                   "the trusted CA certificate.");
+            field = listenerTls_;
+            break;
+        case Setting::NodeName:
+            problem.summary = node.isEmpty()
+                                  ? tr("Not saved: a node has no name.")
+                                  : tr("Not saved: two nodes are called \"%1\".").arg(node);
+            break;
+        case Setting::Node:
+            problem.summary =
+                tr("Not saved: the AE title, host or port of the node \"%1\" is not valid.")
+                    .arg(node);
+            break;
+    }
+    // The node's (last) row, so that Edit opens it.
+    for (int row = static_cast<int>(nodes_.size()) - 1; row >= 0 && !node.isEmpty(); --row) {
+        if (nodes_[static_cast<std::size_t>(row)].name == error.node()) {
+            table_->selectRow(row);
+            break;
+        }
+    }
+    refuse(problem.line(), field);
+    error_->setToolTip(problem.details);  // the module's own words, on demand
 }
 
 void NetworkPreferencesDialog::accept() {
@@ -374,8 +423,8 @@ void NetworkPreferencesDialog::accept() {
     QSettings store;
     try {
         writePacsSettings(settings(), store);
-    } catch (const InvalidArgumentError& e) {
-        refuse(tr("Not saved: %1").arg(QString::fromStdString(e.what())), nullptr);
+    } catch (const PacsSettingsError& e) {
+        refuse(e);
         return;
     }
     store.sync();

@@ -36,8 +36,12 @@ class NetworkPreferencesDialog : public QDialog {
 
     /// The settings as entered (not yet checked).
     [[nodiscard]] PacsSettings settings() const;
-    /// The message of the last refused OK ("" when none).
+    /// The message of the last refused OK ("" when none), in the UI
+    /// language: the field and what is wrong with it.
     [[nodiscard]] QString error() const;
+    /// The English detail of the last refused OK that writePacsSettings()
+    /// refused (the message's tooltip; "" when none).
+    [[nodiscard]] QString errorDetails() const;
     /// The outcome of the last Test ("" before any).
     [[nodiscard]] QString testResult() const;
     /// True while a Test runs.
@@ -77,6 +81,9 @@ class NetworkPreferencesDialog : public QDialog {
     void cancelTest();
     void updateButtons();
     void refuse(const QString& message, QWidget* field);
+    /// Refuses OK for what writePacsSettings() refused: the setting named in
+    /// the UI language, the English detail apart (ProblemText).
+    void refuse(const PacsSettingsError& error);
     void fitHeight();
 
     std::vector<PacsNode> nodes_;

@@ -60,33 +60,36 @@ void writeTls(const pacs::TlsSettings& tls, const QString& prefix, QSettings& st
 }
 
 void checkBeforeWriting(const PacsSettings& settings) {
+    using Setting = PacsSettingsError::Setting;
     try {
         pacs::validateAeTitle(settings.me.aeTitle);
     } catch (const InvalidArgumentError& e) {
-        throw InvalidArgumentError(std::string("our AE title: ") + e.what());
+        throw PacsSettingsError(Setting::OurAeTitle, {}, std::string("our AE title: ") + e.what());
     }
     if (settings.listenerPort == 0) {
-        throw InvalidArgumentError("listener port: must be 1 to 65535");
+        throw PacsSettingsError(Setting::ListenerPort, {}, "listener port: must be 1 to 65535");
     }
     const pacs::TlsSettings& tls = settings.listenerTls;
     if (tls.enabled &&
         (tls.certificate.empty() || tls.privateKey.empty() || tls.trustedCertificates.empty())) {
-        throw InvalidArgumentError(
-            "listener TLS: needs our certificate, its private key and the trusted CA "
-            "certificate(s)");
+        throw PacsSettingsError(Setting::ListenerTls, {},
+                                "listener TLS: needs our certificate, its private key and the "
+                                "trusted CA certificate(s)");
     }
     std::set<std::string> names;
     for (const PacsNode& node : settings.nodes) {
         if (node.name.empty()) {
-            throw InvalidArgumentError("a node has no name");
+            throw PacsSettingsError(Setting::NodeName, {}, "a node has no name");
         }
         if (!names.insert(node.name).second) {
-            throw InvalidArgumentError("two nodes are called '" + node.name + "'");
+            throw PacsSettingsError(Setting::NodeName, node.name,
+                                    "two nodes are called '" + node.name + "'");
         }
         try {
             pacs::validateNode(node.node);
         } catch (const InvalidArgumentError& e) {
-            throw InvalidArgumentError("node '" + node.name + "': " + e.what());
+            throw PacsSettingsError(Setting::Node, node.name,
+                                    "node '" + node.name + "': " + e.what());
         }
     }
 }

@@ -9,8 +9,10 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 #include <vector>
 
+#include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Node.h"
 
@@ -54,10 +56,34 @@ struct PacsSettings {
 /// the listener fails to start (it never falls back to plain TCP).
 [[nodiscard]] PacsSettings readPacsSettings(const QSettings& store);
 
+/// What writePacsSettings() refused: which setting (and node), so that the
+/// GUI can name it in the UI language; what() is the English detail
+/// ("node 'PACS': AE title ...").
+class PacsSettingsError : public InvalidArgumentError {
+  public:
+    enum class Setting {
+        OurAeTitle,    ///< our AE title is not a valid one
+        ListenerPort,  ///< the listener port is 0
+        ListenerTls,   ///< the listener's TLS is on without its three files
+        NodeName,      ///< a node has no name (node() empty) or shares node()'s
+        Node,          ///< node()'s AE title, host or port is invalid
+    };
+    PacsSettingsError(Setting setting, std::string node, const std::string& problem)
+        : InvalidArgumentError(problem), setting_(setting), node_(std::move(node)) {}
+    [[nodiscard]] Setting setting() const noexcept { return setting_; }
+    /// The node's name (Setting::NodeName, Setting::Node); else empty.
+    [[nodiscard]] const std::string& node() const noexcept { return node_; }
+
+  private:
+    Setting setting_;
+    std::string node_;
+};
+
 /// Writes `settings` into `store` ("pacs/" group), replacing what was there.
-/// Throws InvalidArgumentError (vv/core/Error.h) naming the field when our AE
-/// title, a node or a port is invalid, when two nodes share a name, or when
-/// the listener's TLS is on without its three files; then nothing is written.
+/// Throws PacsSettingsError (an InvalidArgumentError) naming the setting when
+/// our AE title, a node or a port is invalid, when two nodes share a name, or
+/// when the listener's TLS is on without its three files; then nothing is
+/// written.
 void writePacsSettings(const PacsSettings& settings, QSettings& store);
 
 /// The local study store of `settings` (storeFolder, made when missing) with

@@ -16,6 +16,7 @@
 #include <cmath>
 
 #include "common/SettingsSchema.h"
+#include "gui/EngineTexts.h"
 #include "gui/ViewerWidget.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/PanelUtil.h"
@@ -326,7 +327,7 @@ void VssPanel::updateBound() {
             bound_ = tr("error ≤ %1 / 255").arg(QLocale().toString(error * 255.0, 'g', 3));
         }
     } catch (const vv::Error& e) {
-        bound_ = QString::fromStdString(e.what());
+        bound_ = describeProblem(e, FileAccess::Reading).line();  // the detail in English only
     }
 }
 

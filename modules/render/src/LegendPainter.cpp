@@ -304,12 +304,15 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
 
 }  // namespace
 
-QString depthQuantityName() {
-    return translated(QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind the frontmost vessel"));
+QString depthQuantityName(DepthReference reference) {
+    return reference == DepthReference::Camera
+               ? translated(QT_TRANSLATE_NOOP("vv::render::Legend", "Viewing distance"))
+               : translated(
+                     QT_TRANSLATE_NOOP("vv::render::Legend", "Depth behind the frontmost vessel"));
 }
 
 std::string depthLegendTitle(const DepthLegend& legend) {
-    return scene::quantityTitle(depthQuantityName().toStdString(), legend.unit);
+    return scene::quantityTitle(depthQuantityName(legend.reference).toStdString(), legend.unit);
 }
 
 QString labelName(const scene::Label& label) {
@@ -334,9 +337,11 @@ Legends legendsFor(const scene::Scene* scene, const MeshStyle& style,
     Legends legends;
     const auto cueScale = cueDepthScale(settings.cue.cue);
     if (settings.vss.enabled && status.shown) {
-        legends.depth = DepthLegend{settings.vss.scale, status.dmin, status.dmax, "mm"};
+        legends.depth = DepthLegend{settings.vss.scale, status.dmin, status.dmax, "mm",
+                                    depthReference(settings.vss)};
     } else if (!settings.vss.enabled && cueScale && cueRange) {
-        legends.depth = DepthLegend{*cueScale, cueRange->first, cueRange->second, "mm"};
+        legends.depth = DepthLegend{*cueScale, cueRange->first, cueRange->second, "mm",
+                                    DepthReference::FrontmostVessel};
     }
     const bool cueReplacesColors = settings.cue.cue == VesselCue::Chromadepth ||
                                    settings.cue.cue == VesselCue::PseudoChromadepth;
@@ -429,7 +434,7 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
     if (legends.depth) {
         const DepthLegend& d = *legends.depth;
         paintBox(painter, layout.depth, m, QString::fromStdString(depthLegendTitle(d)),
-                 strip(colormaps::lut(d.scale, 256)), depthLegendTicks(d.dmin, d.dmax));
+                 strip(colormaps::lut(d.scale, 256)), depthLegendTicks(d));
     }
     const auto paintParameter = [&](const ParameterLegend& p, const QRectF& box) {
         if (!p.labels.empty()) {

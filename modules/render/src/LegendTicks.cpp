@@ -190,7 +190,12 @@ std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
     return chosen;
 }
 
-std::vector<LegendTick> depthLegendTicks(double dmin, double dmax, int maxTicks) {
+std::vector<LegendTick> depthLegendTicks(const DepthLegend& legend, int maxTicks) {
+    const double dmin = legend.dmin;
+    const double dmax = legend.dmax;
+    if (legend.reference == DepthReference::Camera) {
+        return legendTicks(dmin, dmax, maxTicks);
+    }
     const double span = (std::isfinite(dmin) && std::isfinite(dmax)) ? dmax - dmin : 0.0;
     return legendTicks(0.0, span, maxTicks);
 }

@@ -201,6 +201,7 @@ std::optional<ViewProbe> ViewRenderer::probe(const Camera& camera, int x, int y)
     result.linearDepth = sample->linearDepth;
     result.depthBelowNearest =
         std::max(0.0F, sample->linearDepth - nearest_->second.value_or(sample->linearDepth));
+    result.depthReference = depthReference(lastSettings_.vss);
     result.worldPosition = sample->worldPosition;
     result.value = std::numeric_limits<float>::quiet_NaN();
     if (sample->objectId > meshCount) {

@@ -44,6 +44,27 @@ struct VssSettings {
 /// The solver options a VSS solve with `settings` uses (preview or exact).
 [[nodiscard]] vss::SolverOptions effectiveSolverOptions(const VssSettings& settings) noexcept;
 
+/// What the depth a person reads (depth legend, probe) is measured from.
+enum class DepthReference {
+    /// The frontmost visible vessel point: "depth behind the frontmost
+    /// vessel", 0 there (the visible range, and a view's pinned one).
+    FrontmostVessel,
+    /// The camera: the viewing distance, as the user's fixed near / far are
+    /// given (the legend runs from near to far).
+    Camera,
+};
+
+/// The reference of a frame's depth scale: Camera while the VSS is on with a
+/// fixed range the user chose (not vss::DepthRange::pinnedVisible), else
+/// FrontmostVessel (the visible range; with the VSS off the vessel cue
+/// always spans the visible vessels).
+[[nodiscard]] constexpr DepthReference depthReference(const VssSettings& settings) noexcept {
+    return settings.enabled && settings.range.mode == vss::RangeMode::Fixed &&
+                   !settings.range.pinnedVisible
+               ? DepthReference::Camera
+               : DepthReference::FrontmostVessel;
+}
+
 /// A depth cue on the vessels themselves (pass 5, for comparison with the
 /// VSS). Its depth range is the VSS's dmin / dmax when a VSS is shown, else
 /// the visible vessels' linear depth range.

@@ -20,14 +20,17 @@ class QPainter;
 
 namespace vv::render {
 
-/// The depth legend: the depth colour scale labelled in scene units as the
-/// depth behind the frontmost visible vessel point (along the viewing
-/// direction), 0 at dmin to dmax - dmin at dmax (VSS.md, "Normalised depth").
+/// The depth legend: the depth colour scale labelled in scene units along
+/// the viewing direction (VSS.md, "Normalised depth"), measured from
+/// `reference`: FrontmostVessel, the depth behind the frontmost visible
+/// vessel point, 0 at dmin to dmax - dmin at dmax; Camera (a fixed range the
+/// user chose), the viewing distance, dmin to dmax.
 struct DepthLegend {
     colormaps::DepthScale scale = colormaps::DepthScale::Chromadepth;
     double dmin = 0.0;  ///< linear view depth of t = 0, scene units
     double dmax = 0.0;  ///< ... of t = 1
     std::string unit = "mm";
+    DepthReference reference = DepthReference::FrontmostVessel;
 };
 
 /// The parameter legend: the array's colour map over its shown range.
@@ -93,19 +96,22 @@ struct LegendTick {
 [[nodiscard]] std::vector<std::size_t> labelledTicks(const std::vector<double>& centres,
                                                      const std::vector<double>& widths, double gap);
 
-/// The depth legend's ticks: values 0 .. dmax - dmin (distance behind the
-/// nearest visible vessel point, scene units), position 0 at dmin.
-[[nodiscard]] std::vector<LegendTick> depthLegendTicks(double dmin, double dmax, int maxTicks = 5);
+/// The depth legend's ticks, position 0 at dmin: values 0 .. dmax - dmin
+/// (the depth behind the frontmost visible vessel point, scene units) for
+/// DepthReference::FrontmostVessel, dmin .. dmax (the viewing distance) for
+/// Camera.
+[[nodiscard]] std::vector<LegendTick> depthLegendTicks(const DepthLegend& legend, int maxTicks = 5);
 
 /// The one name of the depth quantity that the depth legend, the probe and
-/// the reports use: "Depth behind the frontmost vessel" (the frontmost
-/// vessel point in view; the distance is along the viewing direction), in
-/// the UI language (translation context "vv::render::Legend", as every
-/// legend text).
-[[nodiscard]] QString depthQuantityName();
-/// The depth legend's title: "Depth behind the frontmost vessel (mm)"
-/// (scene::quantityTitle()); a legend too narrow for it in one line shows it
-/// in more (never shortened).
+/// the reports use, in the UI language (translation context
+/// "vv::render::Legend", as every legend text): "Depth behind the frontmost
+/// vessel" (the frontmost vessel point in view; the distance is along the
+/// viewing direction) for FrontmostVessel, "Viewing distance" (from the
+/// camera, as the VSS panel's fixed near / far) for Camera.
+[[nodiscard]] QString depthQuantityName(DepthReference reference);
+/// The depth legend's title: its quantity and unit, "Depth behind the
+/// frontmost vessel (mm)" or "Viewing distance (mm)" (scene::quantityTitle());
+/// a legend too narrow for it in one line shows it in more (never shortened).
 [[nodiscard]] std::string depthLegendTitle(const DepthLegend& legend);
 /// A label's legend text: its name from the file, else "Label <value>"
 /// (translated, the value in the UI locale).
@@ -115,8 +121,9 @@ struct LegendTick {
 [[nodiscard]] std::string parameterLegendTitle(const ParameterLegend& legend);
 
 /// The legends for a frame: the depth legend when the VSS is on and shown
-/// (its scale, status.dmin / dmax), or, with the VSS off, when the vessel cue
-/// colours by a depth scale (its scale over `cueRange`); the parameter legend
+/// (its scale, status.dmin / dmax, measured from depthReference(settings.vss)),
+/// or, with the VSS off, when the vessel cue colours by a depth scale (its
+/// scale over `cueRange`, from the frontmost vessel); the parameter legend
 /// when an array is shown (`range` set) and no cue replaces its colours
 /// (vessel chromadepth / pseudo-chromadepth). The unit is the first mesh's
 /// that has the array. An array shown as labels (shownLabels()) gets their

@@ -42,6 +42,10 @@ struct ViewProbe {
     float linearDepth = 0.0F;  ///< distance along the viewing axis, scene units
     /// Depth behind the nearest visible vessel point of the frame (>= 0).
     float depthBelowNearest = 0.0F;
+    /// What the frame's depth scale is measured from (depthReference() of
+    /// its VSS settings): the depth a person compares with the depth legend
+    /// is depthBelowNearest for FrontmostVessel, linearDepth for Camera.
+    DepthReference depthReference = DepthReference::FrontmostVessel;
     glm::vec3 worldPosition{0.0F};  ///< scene coordinates
     /// The label here when the array is shown as labels (shownLabels()).
     std::optional<scene::Label> label;

@@ -17,6 +17,13 @@ struct DepthRange {
     RangeMode mode = RangeMode::Visible;
     double dmin = 0.0;  ///< Fixed mode only: scene units, finite, dmin <= dmax
     double dmax = 0.0;
+    /// Fixed mode only: dmin / dmax are not distances someone chose but a
+    /// view's visible range, kept for another render of that view (an export
+    /// framed as the view, so that its colours match the screen's): dmin is
+    /// that view's frontmost vessel point. Normalisation treats it as any
+    /// fixed range; it tells what the depth is measured from (the legends
+    /// say "behind the frontmost vessel", not "viewing distance").
+    bool pinnedVisible = false;
 };
 
 /// The result of normalisation.
