@@ -1337,6 +1337,10 @@ Ersetzen?</translation>
         <source>The Segmentation panel shows a preview: apply it first (a preview is never exported or sent)</source>
         <translation>Der Bereich Segmentierung zeigt eine Vorschau: Wenden Sie sie zuerst an (eine Vorschau wird nie exportiert oder gesendet)</translation>
     </message>
+    <message>
+        <source>Session saved to %1, with the applied segmentation (the preview on screen was not applied)</source>
+        <translation>Sitzung gespeichert unter %1, mit der angewendeten Segmentierung (die Vorschau auf dem Bildschirm wurde nicht angewendet)</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>

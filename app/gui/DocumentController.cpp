@@ -155,9 +155,7 @@ bool DocumentController::openSession(const QString& path) {
     return true;
 }
 
-bool DocumentController::saveSession(const QString& path, Session view,
-                                     const segmentation::SegmentationOptions& segmentation,
-                                     const segmentation::SurfaceOptions& surface) {
+bool DocumentController::saveSession(const QString& path, Session view) {
     view.files.clear();
     view.dicom.reset();
     view.seriesTitle.clear();
@@ -166,13 +164,14 @@ bool DocumentController::saveSession(const QString& path, Session view,
             view.files << QFileInfo(f).absoluteFilePath();
         }
         if (!seriesUid_.empty()) {
-            // DICOM data: the series, and for an image series the Segmentation
-            // panel's settings, so that the session reopens without asking.
+            // DICOM data: the series, and for an image series the settings of
+            // the document's segmentation (never a preview's), so that the
+            // session reopens without asking.
             segmentation::SceneSourceOptions dicom;
             dicom.seriesInstanceUid = seriesUid_;
             if (volume_) {
-                dicom.segmentation = segmentation;
-                dicom.surface = surface;
+                dicom.segmentation = loadedWith_.segmentation;
+                dicom.surface = loadedWith_.surface;
             }
             view.dicom = dicom;
             view.seriesTitle = seriesTitle_;
@@ -233,10 +232,14 @@ void DocumentController::showDerivedScene(std::shared_ptr<const scene::Scene> sc
 
 void DocumentController::applySegmentation(std::shared_ptr<const scene::Scene> scene,
                                            std::shared_ptr<const scene::LabelMap> labelMap,
-                                           app::SegmentationProvenance provenance) {
+                                           app::SegmentationProvenance provenance,
+                                           const segmentation::SegmentationOptions& options,
+                                           const segmentation::SurfaceOptions& surface) {
     segmentedScene_ = std::move(scene);
     labelMap_ = std::move(labelMap);
     segmentation_ = std::move(provenance);
+    loadedWith_.segmentation = options;
+    loadedWith_.surface = surface;
     emit segmentationApplied();
 }
 

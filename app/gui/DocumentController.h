@@ -97,13 +97,12 @@ class DocumentController : public QObject {
     /// Writes `view` (the display settings, camera and layout the window
     /// captured; its files are ignored) with this document's files to `path`
     /// (.vvs, atomically). For a DICOM scene the series goes in too, and for
-    /// a scene segmented from a volume `segmentation` and `surface` (the
-    /// Segmentation panel's settings), so that the session reopens without
-    /// asking, and its seriesTitle(). Returns false after failed() when
+    /// a scene segmented from a volume the settings of the document's
+    /// segmentation (loadedWith(): as loaded, or as last applied; never a
+    /// preview's), so that the session reopens without asking what it
+    /// shows, and its seriesTitle(). Returns false after failed() when
     /// writing fails.
-    bool saveSession(const QString& path, Session view,
-                     const segmentation::SegmentationOptions& segmentation,
-                     const segmentation::SurfaceOptions& surface);
+    bool saveSession(const QString& path, Session view);
     /// Opens what was dropped: the first session file, else the mesh files,
     /// else the first folder or DICOM file (series chooser). False when none
     /// of `paths` can be opened (canOpen()).
@@ -126,9 +125,13 @@ class DocumentController : public QObject {
     /// the report's slice page and Send to PACS (its DICOM SEG) use from now
     /// on. Emits segmentationApplied(); the scene is shown by
     /// showDerivedScene().
+    /// `options` and `surface` (what the panel segmented with) become
+    /// loadedWith()'s, which sessions save.
     void applySegmentation(std::shared_ptr<const scene::Scene> scene,
                            std::shared_ptr<const scene::LabelMap> labelMap,
-                           app::SegmentationProvenance provenance);
+                           app::SegmentationProvenance provenance,
+                           const segmentation::SegmentationOptions& options,
+                           const segmentation::SurfaceOptions& surface);
     /// True while the scene on screen is a segmentation preview that was not
     /// applied: it is never exported or sent (the window disables Export
     /// Surface, Export Report and Send to PACS until it is applied).
@@ -186,6 +189,8 @@ class DocumentController : public QObject {
     [[nodiscard]] const segmentation::SceneSourceReport& loadedReport() const noexcept {
         return loadedReport_;
     }
+    /// The options the shown DICOM series was loaded with, its segmentation
+    /// and surface options those of the last applySegmentation() if any.
     [[nodiscard]] const segmentation::SceneSourceOptions& loadedWith() const noexcept {
         return loadedWith_;
     }

@@ -412,7 +412,8 @@ void MainWindow::buildDocks() {
                 app::SegmentationProvenance provenance = document_->segmentation();
                 app::describeSegmentation(provenance, request, *outcome);
                 document_->applySegmentation(outcome->scene, outcome->labelMap,
-                                             std::move(provenance));
+                                             std::move(provenance), request.segmentation,
+                                             request.surface);
             });
     connect(segmentationPanel_, &panels::SegmentationPanel::labelMapReady, slices_,
             &SliceWorkspace::setLabelMap);
@@ -703,11 +704,16 @@ bool MainWindow::saveSessionTo(const QString& path) {
     view.layout = saveState(kLayoutVersion);
     view.slices = slices_->sessionState();
     view.measurement = measure_->completePoints();
-    if (!document_->saveSession(path, std::move(view), segmentationPanel_->segmentationOptions(),
-                                segmentationPanel_->surfaceOptions())) {
+    if (!document_->saveSession(path, std::move(view))) {
         return false;
     }
-    statusLabel_->setText(tr("Session saved to %1").arg(path));
+    // A preview is not the document's segmentation: the session keeps the
+    // applied one, and says so.
+    statusLabel_->setText(document_->showsPreview()
+                              ? tr("Session saved to %1, with the applied segmentation (the "
+                                   "preview on screen was not applied)")
+                                    .arg(path)
+                              : tr("Session saved to %1").arg(path));
     return true;
 }
 

@@ -462,7 +462,7 @@ TEST_F(DocumentControllerTest, ASceneFromElsewhereIsADocumentWithoutFiles) {
     EXPECT_TRUE(document_.shownFiles().isEmpty());
     EXPECT_TRUE(document_.reportSource().files.empty());
     const fs::path saved = documentTestDir() / "built.vvs";
-    ASSERT_TRUE(document_.saveSession(qpath(saved), {}, {}, {}));
+    ASSERT_TRUE(document_.saveSession(qpath(saved), {}));
     EXPECT_TRUE(app::loadSession(saved).files.isEmpty());
 }
 
@@ -473,15 +473,14 @@ TEST_F(DocumentControllerTest, ASavedSessionNamesTheShownFilesAndKeepsTheView) {
     view.vss.solver.p = 5.0;
     view.files = {QStringLiteral("/not/what/is/shown.vtp")};  // the document's files win
     const fs::path path = documentTestDir() / "saved.vvs";
-    ASSERT_TRUE(document_.saveSession(qpath(path), view, {}, {}));
+    ASSERT_TRUE(document_.saveSession(qpath(path), view));
     const app::Session saved = app::loadSession(path);
     EXPECT_EQ(saved.files, QStringList{qpath(fs::absolute(tube))});
     EXPECT_DOUBLE_EQ(saved.vss.solver.p, 5.0);
     EXPECT_FALSE(saved.dicom.has_value());
 
     Recorder record(document_);
-    EXPECT_FALSE(
-        document_.saveSession(qpath(documentTestDir() / "no-dir" / "x.vvs"), view, {}, {}));
+    EXPECT_FALSE(document_.saveSession(qpath(documentTestDir() / "no-dir" / "x.vvs"), view));
     EXPECT_EQ(record.count("failed"), 1);
     EXPECT_TRUE(document_.lastError().contains(QStringLiteral("x.vvs")))
         << document_.lastError().toStdString();

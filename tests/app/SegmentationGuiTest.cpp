@@ -539,6 +539,22 @@ TEST_F(SegmentationGuiTest, SessionReopensTheSeriesWithItsSegmentation) {
     ASSERT_TRUE(saved.dicom->segmentation.range.has_value());
     EXPECT_FLOAT_EQ(saved.dicom->segmentation.range->lower, 300.0F);
 
+    // A preview on screen is not the document's segmentation: saved again,
+    // the session keeps the applied 300 HU and the status bar says so.
+    const int previews = panel()->previewsShown();
+    panel()->lowerBox()->setValue(250.0);
+    (void)waitForPreview(previews);
+    ASSERT_TRUE(window_->document()->showsPreview());
+    ASSERT_TRUE(window_->saveSessionTo(QString::fromStdString(file.string())));
+    const gui::Session withPreview = gui::loadSession(file);
+    ASSERT_TRUE(withPreview.dicom.has_value());
+    ASSERT_TRUE(withPreview.dicom->segmentation.range.has_value());
+    EXPECT_FLOAT_EQ(withPreview.dicom->segmentation.range->lower, 300.0F);
+    const auto* status = window_->statusBar()->findChild<QLabel*>(QStringLiteral("statusMessage"));
+    ASSERT_NE(status, nullptr);
+    EXPECT_TRUE(status->text().contains(QStringLiteral("not applied")))
+        << status->text().toStdString();
+
     // Reopened: the same vessels, without the series chooser.
     window_->setScene(nullptr, QString());
     bool dialogShown = false;
