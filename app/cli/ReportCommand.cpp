@@ -35,6 +35,7 @@
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
+#include "cli/SegmentSummary.h"
 #include "common/Language.h"
 #include "common/ResourcePaths.h"
 #include "common/SegmentationText.h"
@@ -303,7 +304,7 @@ fs::path lastDicomSource(const std::vector<fs::path>& files) {
 
 /// Loads `input`, renders and writes every requested output (report::runReportJob).
 void produce(const ReportArguments& a, const fs::path& input, const Outputs& outputs,
-             render::OffscreenRenderer& renderer, std::ostream& out) {
+             render::OffscreenRenderer& renderer, std::ostream& out, std::ostream& err) {
     // A mesh file, DICOM segmented into vessel surfaces, or a session's files.
     segmentation::SceneSourceReport loaded;
     const scene::Scene scene = a.session
@@ -340,6 +341,8 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
             QString::fromStdString(loaded.seriesDescription).simplified().toStdString();
     }
     if (loaded.fromVolume) {
+        // A vessel that may be cut off is said on stderr too, as render and segment say it.
+        printCutOffWarnings(err, loaded);
         // How the series was segmented, and whether a vessel may be cut off.
         job.source.segmentation = app::reportSegmentation(app::provenanceOf(
             loaded, a.session && a.session->dicom ? *a.session->dicom : a.source));
@@ -474,7 +477,7 @@ int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {
         outputs.dicomPdf = name("dicom-pdf", "-report.dcm");
         try {
             checkOutputs(input, outputs);
-            produce(a, input, outputs, renderer, out);
+            produce(a, input, outputs, renderer, out, err);
         } catch (const std::exception& e) {
             const int code = exitCode(std::current_exception());
             err << "vesselview-cli: report: " << input.string() << ": " << e.what() << "\n";
@@ -503,7 +506,7 @@ int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::
     ensureGuiApplication();
     useLanguage(parsed.language);
     render::OffscreenRenderer renderer;
-    produce(parsed, parsed.input, parsed.outputs, renderer, out);
+    produce(parsed, parsed.input, parsed.outputs, renderer, out, err);
     return kOk;
 }
 

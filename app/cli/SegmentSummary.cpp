@@ -50,6 +50,10 @@ void printSegmentationSummary(std::ostream& out, std::ostream& err,
     if (!summary.empty()) {
         out << summary << "\n";
     }
+    printCutOffWarnings(err, report);
+}
+
+void printCutOffWarnings(std::ostream& err, const segmentation::SceneSourceReport& report) {
     const bool ct =
         report.volume && (report.volume->modality() == "CT" || report.volume->unit() == "HU");
     for (const segmentation::CutOffVessel& vessel : report.cutOff) {

@@ -33,4 +33,8 @@ void printSegmentationSummary(std::ostream& out, std::ostream& err,
                               const segmentation::SceneSourceReport& report,
                               const scene::Scene& scene);
 
+/// Each cut-off warning of `report` on `err` (cutOffWarning(); the correction
+/// suggested for an uncorrected series that is not CT).
+void printCutOffWarnings(std::ostream& err, const segmentation::SceneSourceReport& report);
+
 }  // namespace vv::cli

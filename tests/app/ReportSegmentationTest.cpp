@@ -49,9 +49,11 @@ const fs::path& mrSeries() {
 }
 
 /// The report's text (pdftotext, lines joined: a sentence may wrap) of
-/// `report SERIES -o PDF OPTIONS`; fails the test when the command fails.
-std::string reportText(const fs::path& series, const std::string& name,
-                       const std::string& options) {
+/// `report SERIES -o PDF OPTIONS`, and what the command printed in
+/// `console` (stdout and stderr) when given; fails the test when the command
+/// fails.
+std::string reportText(const fs::path& series, const std::string& name, const std::string& options,
+                       std::string* console = nullptr) {
     const fs::path pdf = scratch() / (name + ".pdf");
     std::string output;
     EXPECT_EQ(runTool("'" + std::string(VV_CLI_EXE) + "' report '" + series.string() + "' -o '" +
@@ -59,6 +61,9 @@ std::string reportText(const fs::path& series, const std::string& name,
                       output),
               0)
         << output;
+    if (console != nullptr) {
+        *console = output;
+    }
     std::string text;
     EXPECT_EQ(runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
     for (char& c : text) {
@@ -68,8 +73,12 @@ std::string reportText(const fs::path& series, const std::string& name,
 }
 
 TEST(ReportSegmentation, TheReportSaysWhenTheVesselMayBeCutOff) {
+    std::string console;
     const std::string cut =
-        reportText(mrSeries(), "uncorrected-en", "--intensity-correction off --lang en");
+        reportText(mrSeries(), "uncorrected-en", "--intensity-correction off --lang en", &console);
+    // Said on the console too, as render and segment say it.
+    EXPECT_NE(console.find("warning: a bright tube continues"), std::string::npos) << console;
+    EXPECT_NE(console.find("--intensity-correction on"), std::string::npos) << console;
     EXPECT_NE(cut.find("Segmentation"), std::string::npos) << cut;
     EXPECT_NE(cut.find("The vessel may be cut off"), std::string::npos) << cut;
     EXPECT_NE(cut.find("towards the head"), std::string::npos) << cut;
@@ -82,7 +91,8 @@ TEST(ReportSegmentation, TheReportSaysWhenTheVesselMayBeCutOff) {
     EXPECT_EQ(german.find("may be cut off"), std::string::npos) << german;
 
     // Corrected (the MR default) the whole vessel is segmented: no warning.
-    const std::string corrected = reportText(mrSeries(), "corrected-en", "--lang en");
+    const std::string corrected = reportText(mrSeries(), "corrected-en", "--lang en", &console);
+    EXPECT_EQ(console.find("warning"), std::string::npos) << console;
     EXPECT_NE(corrected.find("Segmentation"), std::string::npos) << corrected;
     EXPECT_EQ(corrected.find("cut off"), std::string::npos) << corrected;
     const std::string correctedDe = reportText(mrSeries(), "corrected-de", "--lang de");
