@@ -210,6 +210,12 @@ TEST_F(PanelsTest, FixingTheDepthRangeStartsFromTheRangeOnScreen) {
     EXPECT_EQ(viewer->vssSettings().range.mode, vss::RangeMode::Visible);
     EXPECT_FALSE(panel->rangeMinBox()->isEnabled());
     EXPECT_FALSE(panel->rangeMinBox()->toolTip().isEmpty());
+    // ... and show the range on screen (they said 0.0 mm before), once the
+    // window has taken the frame's status.
+    EXPECT_TRUE(waitUntil([&] { return panel->rangeMaxBox()->value() > 0.0; }));
+    EXPECT_NEAR(panel->rangeMinBox()->value(), shownMin, 0.05);
+    EXPECT_NEAR(panel->rangeMaxBox()->value(), shownMax, 0.05);
+    EXPECT_GT(panel->rangeMaxBox()->value(), panel->rangeMinBox()->value());
 
     auto* mode = panel->rangeChooser();
     mode->setCurrentIndex(mode->findData(static_cast<int>(vss::RangeMode::Fixed)));

@@ -338,6 +338,15 @@ void VssPanel::updateStatus() {
         return;
     }
     const render::VssFrameStatus& status = viewer_->vssStatus();
+    // Visible: the (disabled) near / far boxes show the range on screen,
+    // never numbers left from earlier.
+    if (vss.range.mode == vss::RangeMode::Visible && status.shown && std::isfinite(status.dmin) &&
+        std::isfinite(status.dmax)) {
+        const QSignalBlocker blockMin(rangeMin_);
+        const QSignalBlocker blockMax(rangeMax_);
+        rangeMin_->setValue(status.dmin);
+        rangeMax_->setValue(status.dmax);
+    }
     QString solve;
     if (status.pending) {
         solve = tr("solving…");
