@@ -702,9 +702,12 @@ TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
     ASSERT_NE(dialog, nullptr);
     const QString peer = QString::fromStdString(vv::pacs::describe(s.nodes[0].node));
     EXPECT_EQ(dialog->summaryLabel()->text(),
-              QStringLiteral("Nothing was sent: %1 refused the connection. Nobody listens at "
-                             "that host and port, or a firewall blocks it.")
+              QStringLiteral("Nothing was sent: Orthanc (%1) refused the connection. Nobody "
+                             "listens at that host and port, or a firewall blocks it.")
                   .arg(peer));
+    // The module's words apart, at hand.
+    EXPECT_TRUE(dialog->summaryLabel()->toolTip().contains(QStringLiteral("cannot connect")))
+        << dialog->summaryLabel()->toolTip().toStdString();
     ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);  // meshes: no SEG to send
     EXPECT_FALSE(dialog->segmentationBox()->isEnabled());
     EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(1), QStringLiteral("Not sent"));
