@@ -35,10 +35,10 @@ void showAsProblem(QLabel* label, bool problem) {
 
 void showProblemText(QLabel* label, const ProblemText& problem) {
     label->setText(problem.summary);
-    label->setToolTip(
-        problem.details.isEmpty()
-            ? QString()
-            : QCoreApplication::translate("vv::gui::PacsWidgets", "Details: %1").arg(problem.details));
+    label->setToolTip(problem.details.isEmpty()
+                          ? QString()
+                          : QCoreApplication::translate("vv::gui::PacsWidgets", "Details: %1")
+                                .arg(problem.details));
     showAsProblem(label, true);
 }
 

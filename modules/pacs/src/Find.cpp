@@ -42,7 +42,7 @@ class FindScu : public detail::Scu {
     FindScu(const FindLimits& limits, Handler handler)
         : limits_(limits), handler_(std::move(handler)) {}
 
-    std::string problem;  ///< set when a limit was hit; the session was cancelled
+    std::string problem;   ///< set when a limit was hit; the session was cancelled
     bool tooMany = false;  ///< the limit hit was maxResults
     Uint16 finalStatus = STATUS_Success;
 
