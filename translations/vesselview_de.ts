@@ -1433,24 +1433,8 @@ Ersetzen?</translation>
         <translation>Die TLS-Verbindung zu %1 ist fehlgeschlagen. Prüfen Sie, ob der Knoten auf diesem Port TLS spricht, das vertrauenswürdige CA-Zertifikat sowie unsere Zertifikats- und Schlüsseldateien.</translation>
     </message>
     <message>
-        <source>%1 stopped or failed during the transfer (%2).</source>
-        <translation>%1 hat die Übertragung abgebrochen oder ist dabei gescheitert (%2).</translation>
-    </message>
-    <message>
-        <source>The answer of %1 was refused (%2). Narrow the search.</source>
-        <translation>Die Antwort von %1 wurde zurückgewiesen (%2). Schränken Sie die Suche ein.</translation>
-    </message>
-    <message>
-        <source>Invalid input: %1</source>
-        <translation>Ungültige Eingabe: %1</translation>
-    </message>
-    <message>
         <source>Cancelled.</source>
         <translation>Abgebrochen.</translation>
-    </message>
-    <message>
-        <source>Failed with %1: %2</source>
-        <translation>Fehler mit %1: %2</translation>
     </message>
     <message>
         <source>%1 closed the connection. Try again; if it keeps happening, check that the PACS knows our AE title, host and port, or ask the PACS administrator.</source>
@@ -1505,6 +1489,31 @@ Ersetzen?</translation>
             <numerusform>%n Bild davon wurde im lokalen Studienspeicher behalten.</numerusform>
             <numerusform>%n Bilder davon wurden im lokalen Studienspeicher behalten.</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>%1 (%2)</source>
+        <comment>node name (AE@host:port)</comment>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message>
+        <source>%1 reported a failure and did not complete the request. Try again; if it keeps happening, ask the PACS administrator.</source>
+        <translation>%1 hat einen Fehler gemeldet und die Anfrage nicht abgeschlossen. Versuchen Sie es erneut; wenn es wieder geschieht, wenden Sie sich an die PACS-Administration.</translation>
+    </message>
+    <message>
+        <source>%1 has more than %2 matches for this search. Narrow the search (patient name or ID, study date).</source>
+        <translation>%1 hat für diese Suche mehr als %2 Treffer. Grenzen Sie die Suche ein (Patientenname oder -ID, Studiendatum).</translation>
+    </message>
+    <message>
+        <source>The answer of %1 was refused: it breaks the DICOM standard or holds oversized values. Narrow the search; if it keeps happening, ask the PACS administrator.</source>
+        <translation>Die Antwort von %1 wurde abgelehnt: Sie verletzt den DICOM-Standard oder enthält zu lange Werte. Grenzen Sie die Suche ein; wenn es wieder geschieht, wenden Sie sich an die PACS-Administration.</translation>
+    </message>
+    <message>
+        <source>Nothing was asked of %1: a value is not valid in DICOM (a search field holds a backslash or more than 64 characters, or a date is not valid). Correct it and try again.</source>
+        <translation>%1 wurde nicht angefragt: Ein Wert ist in DICOM nicht zulässig (ein Suchfeld enthält einen Backslash oder mehr als 64 Zeichen, oder ein Datum ist ungültig). Korrigieren Sie ihn und versuchen Sie es erneut.</translation>
+    </message>
+    <message>
+        <source>The request to %1 failed unexpectedly. Try again; if it keeps happening, give the details to the administrator.</source>
+        <translation>Die Anfrage an %1 ist unerwartet fehlgeschlagen. Versuchen Sie es erneut; wenn es wieder geschieht, geben Sie die Details an die Administration weiter.</translation>
     </message>
 </context>
 <context>
@@ -1971,6 +1980,9 @@ Ersetzen?</translation>
         <source>The patient&apos;s name to search for, e.g. Doe*: * matches any text, ? any one character</source>
         <translation>Der gesuchte Patientenname, z. B. Muster*: * steht für beliebigen Text, ? für ein beliebiges Zeichen</translation>
     </message>
+</context>
+<context>
+    <name>vv::gui::PacsWidgets</name>
     <message>
         <source>Details: %1</source>
         <translation>Details: %1</translation>
@@ -2280,10 +2292,6 @@ Ersetzen?</translation>
         <translation>Schließen</translation>
     </message>
     <message>
-        <source>No temporary folder for the report: %1</source>
-        <translation>Kein temporärer Ordner für den Bericht: %1</translation>
-    </message>
-    <message>
         <source>Sending the report to %1</source>
         <translation>Bericht wird an %1 gesendet</translation>
     </message>
@@ -2348,10 +2356,6 @@ Ersetzen?</translation>
         <translation>Nichts wurde gesendet: Die TLS-Verbindung zu %1 ist fehlgeschlagen. Prüfen Sie die Zertifikate beider Seiten.</translation>
     </message>
     <message>
-        <source>The transfer to %1 failed: %2</source>
-        <translation>Die Übertragung an %1 ist fehlgeschlagen: %2</translation>
-    </message>
-    <message>
         <source>Segmentation (DICOM SEG)</source>
         <translation>Segmentierung (DICOM SEG)</translation>
     </message>
@@ -2402,6 +2406,14 @@ Ersetzen?</translation>
     <message>
         <source>The exported report is sent with its own findings</source>
         <translation>Der exportierte Bericht wird mit seinem eigenen Befund gesendet</translation>
+    </message>
+    <message>
+        <source>No temporary folder for the report could be made. Check the free space and the permissions of the temporary folder.</source>
+        <translation>Für den Bericht konnte kein temporärer Ordner angelegt werden. Prüfen Sie den freien Speicherplatz und die Zugriffsrechte des temporären Ordners.</translation>
+    </message>
+    <message>
+        <source>The transfer to %1 failed: the PACS closed the connection or reported a failure. The table says what was accepted before. Try again; if it keeps happening, ask the PACS administrator.</source>
+        <translation>Die Übertragung an %1 ist fehlgeschlagen: Das PACS hat die Verbindung geschlossen oder einen Fehler gemeldet. Die Tabelle zeigt, was vorher angenommen wurde. Versuchen Sie es erneut; wenn es wieder geschieht, wenden Sie sich an die PACS-Administration.</translation>
     </message>
 </context>
 <context>

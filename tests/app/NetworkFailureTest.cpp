@@ -1,8 +1,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // What the DICOM network dialogs say for each typed failure of vv::pacs
-// (app/gui/pacs/NetworkFailure.h): the node as AE@host:port and what to check.
+// (app/gui/pacs/NetworkFailure.h): the node by its name and AE@host:port, what
+// to check, and the module's English detail apart.
 #include <gtest/gtest.h>
 
+#include <QLocale>
 #include <optional>
 #include <stdexcept>
 
@@ -45,19 +47,29 @@ TEST(NetworkFailureTest, TheMessageNamesTheNodeAndWhatToCheck) {
     } cases[] = {
         {Kind::Refused, "refused the connection"},         {Kind::AssociationRejected, "AE title"},
         {Kind::Timeout, "did not answer in time"},         {Kind::Tls, "trusted CA certificate"},
-        {Kind::PeerFailed, "during the transfer"},         {Kind::Other, "Failed with"},
+        {Kind::PeerFailed, "reported a failure"},          {Kind::Other, "failed unexpectedly"},
         {Kind::ConnectionClosed, "closed the connection"},
     };
     for (const auto& c : cases) {
-        const std::string text = failureText({c.kind, "detail", std::nullopt}, kNode).toStdString();
-        EXPECT_NE(text.find("PACS1@pacs.example:4242"), std::string::npos) << text;
+        const ProblemText problem =
+            failureText({c.kind, "C-ECHO xyzzy", std::nullopt}, QStringLiteral("Radiology"), kNode);
+        const std::string text = problem.summary.toStdString();
+        EXPECT_NE(text.find("Radiology (PACS1@pacs.example:4242)"), std::string::npos) << text;
         EXPECT_NE(text.find(c.says), std::string::npos) << text;
+        // The module's words apart, never inside the sentence.
+        EXPECT_EQ(text.find("C-ECHO xyzzy"), std::string::npos) << text;
+        EXPECT_EQ(problem.details, QStringLiteral("C-ECHO xyzzy"));
     }
-    // Too many matches: the peer's limit and what to do.
-    const std::string tooMany =
-        failureText({Kind::Response, "more than 2000 matches", std::nullopt}, kNode).toStdString();
-    EXPECT_NE(tooMany.find("more than 2000 matches"), std::string::npos) << tooMany;
-    EXPECT_NE(tooMany.find("Narrow the search"), std::string::npos) << tooMany;
+    // Too many matches: our limit (the UI locale's digits) and what to do.
+    const QLocale before;
+    QLocale::setDefault(QLocale(QLocale::English, QLocale::UnitedStates));
+    const NetworkFailure tooMany = classifyFailure(std::make_exception_ptr(
+        pacs::TooManyMatchesError("C-FIND answer refused: more than 2000 matches", 2000)));
+    ASSERT_EQ(tooMany.kind, Kind::TooManyMatches);
+    const std::string tooManyText = failureText(tooMany, {}, kNode).summary.toStdString();
+    EXPECT_NE(tooManyText.find("more than 2,000 matches"), std::string::npos) << tooManyText;
+    EXPECT_NE(tooManyText.find("Narrow the search"), std::string::npos) << tooManyText;
+    QLocale::setDefault(before);
 }
 
 /// A C-GET that `E` ended after `received` of `expected` images.
@@ -75,7 +87,7 @@ TEST(NetworkFailureTest, AnInterruptedRetrieveSaysHowFarItCameWhatWasKeptAndWhat
     ASSERT_EQ(closed.kind, Kind::ConnectionClosed);
     ASSERT_TRUE(closed.transfer.has_value());
     const std::string text =
-        retrieveFailureText(closed, QStringLiteral("ORTHANC"), kNode, 0).toStdString();
+        retrieveFailureText(closed, QStringLiteral("ORTHANC"), kNode, 0).summary.toStdString();
     EXPECT_EQ(text,
               "The transfer from ORTHANC stopped after 60 of 400 images: the PACS closed the "
               "connection. Nothing was kept. Try again, or ask the PACS administrator if it "
@@ -85,23 +97,23 @@ TEST(NetworkFailureTest, AnInterruptedRetrieveSaysHowFarItCameWhatWasKeptAndWhat
     const std::string timeout =
         retrieveFailureText(interrupted<pacs::TimeoutError>(0, std::nullopt),
                             QStringLiteral("ORTHANC"), kNode, 0)
-            .toStdString();
+            .summary.toStdString();
     EXPECT_NE(timeout.find("stopped before the first image arrived: the PACS stopped answering."),
               std::string::npos)
         << timeout;
     const std::string unknownTotal =
         retrieveFailureText(interrupted<pacs::PeerFailedError>(60, std::nullopt),
                             QStringLiteral("ORTHANC"), kNode, std::nullopt)
-            .toStdString();
+            .summary.toStdString();
     EXPECT_NE(unknownTotal.find("after 60 image"), std::string::npos) << unknownTotal;
     EXPECT_EQ(unknownTotal.find("kept"), std::string::npos) << unknownTotal;
     // Without a node name the node's address, once.
-    const std::string unnamed = retrieveFailureText(closed, {}, kNode, 0).toStdString();
+    const std::string unnamed = retrieveFailureText(closed, {}, kNode, 0).summary.toStdString();
     EXPECT_EQ(unnamed.rfind("The transfer from PACS1@pacs.example:4242 stopped", 0), 0U) << unnamed;
     // A failure before the transfer began: the general message.
     const NetworkFailure refused = failureOf<pacs::ConnectionRefusedError>("x");
-    EXPECT_EQ(retrieveFailureText(refused, QStringLiteral("ORTHANC"), kNode, 0),
-              failureText(refused, kNode));
+    EXPECT_EQ(retrieveFailureText(refused, QStringLiteral("ORTHANC"), kNode, 0).summary,
+              failureText(refused, QStringLiteral("ORTHANC"), kNode).summary);
 }
 
 }  // namespace

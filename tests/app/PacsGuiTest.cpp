@@ -30,6 +30,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <thread>
 
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
@@ -37,6 +38,7 @@
 #include "OrthancServer.h"
 #include "ReportTestUtil.h"
 #include "SyntheticCta.h"
+#include "UiLanguage.h"
 #include "gui/ExportWorker.h"
 #include "gui/MainWindow.h"
 #include "gui/ReportDialog.h"
@@ -693,6 +695,78 @@ TEST_F(PacsGuiTest, TheSendDialogForgetsTheLastSendWhenOtherDataIsShown) {
     EXPECT_TRUE(dialog->sendButton()->isEnabled());
 }
 
+/// A peer that accepts each TCP connection on 127.0.0.1 and closes it at
+/// once (on a thread of its own): the association never gets an answer.
+class ClosingPeer {
+  public:
+    ClosingPeer() : listener_(::socket(AF_INET, SOCK_STREAM, 0)) {
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        socklen_t length = sizeof address;
+        if (listener_ < 0 ||
+            ::bind(listener_, reinterpret_cast<sockaddr*>(&address), length) != 0 ||
+            ::listen(listener_, 4) != 0 ||
+            ::getsockname(listener_, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
+            ADD_FAILURE() << "cannot listen";
+            return;
+        }
+        port_ = ntohs(address.sin_port);
+        thread_ = std::thread([this] {
+            for (int fd = ::accept(listener_, nullptr, nullptr); fd >= 0;
+                 fd = ::accept(listener_, nullptr, nullptr)) {
+                ::close(fd);
+            }
+        });
+    }
+    ClosingPeer(const ClosingPeer&) = delete;
+    ClosingPeer& operator=(const ClosingPeer&) = delete;
+    ClosingPeer(ClosingPeer&&) = delete;
+    ClosingPeer& operator=(ClosingPeer&&) = delete;
+    ~ClosingPeer() {
+        ::shutdown(listener_, SHUT_RDWR);  // ends the blocked accept()
+        if (thread_.joinable()) {
+            thread_.join();
+        }
+        ::close(listener_);
+    }
+    [[nodiscard]] std::uint16_t port() const noexcept { return port_; }
+
+  private:
+    int listener_;
+    std::uint16_t port_ = 0;
+    std::thread thread_;
+};
+
+TEST_F(PacsGuiTest, ATransferThatFailsSaysSoInGermanNamingTheNodeWithTheDetailApart) {
+    const ClosingPeer closing;
+    PacsSettings s = settings(false);
+    s.nodes[0].name = "Archiv Nord";
+    s.nodes[0].node = {"CLOSER", "127.0.0.1", closing.port(), {}};
+    ASSERT_TRUE(vv::test::installUiLanguage("de", VV_QM_DIR));
+    restartWith(s);
+    window_->setScene(vv::test::makeTubeScene(), QStringLiteral("tube"));
+    SendDialog* dialog = sendReport();
+    ASSERT_NE(dialog, nullptr);
+    const QString shown = dialog->summaryLabel()->text();
+    const QString tooltip = dialog->summaryLabel()->toolTip();
+    vv::test::removeUiLanguage();
+    // German, the node by its name and address, what to do.
+    EXPECT_TRUE(
+        shown.startsWith(QStringLiteral("Die Übertragung an Archiv Nord (CLOSER@127.0.0.1:")))
+        << shown.toStdString();
+    EXPECT_TRUE(shown.contains(QStringLiteral("Versuchen Sie es erneut"))) << shown.toStdString();
+    // The module's English words apart, in the tooltip.
+    ASSERT_TRUE(tooltip.startsWith(QStringLiteral("Details: CLOSER@127.0.0.1:")))
+        << tooltip.toStdString();
+    EXPECT_FALSE(shown.contains(tooltip.mid(9))) << shown.toStdString();
+    for (const char* english : {" the ", "failed", "closed", "Peer", "association"}) {
+        EXPECT_FALSE(shown.contains(QLatin1String(english)))
+            << english << " in: " << shown.toStdString();
+    }
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(1), QStringLiteral("Nicht gesendet"));
+}
+
 TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
     PacsSettings s = settings(false);
     s.nodes[0].node.port = vv::test::freePort();  // nobody listens there
@@ -702,9 +776,12 @@ TEST_F(PacsGuiTest, SendingToAClosedPortSaysRefusedAndTheAppKeepsWorking) {
     ASSERT_NE(dialog, nullptr);
     const QString peer = QString::fromStdString(vv::pacs::describe(s.nodes[0].node));
     EXPECT_EQ(dialog->summaryLabel()->text(),
-              QStringLiteral("Nothing was sent: %1 refused the connection. Nobody listens at "
-                             "that host and port, or a firewall blocks it.")
+              QStringLiteral("Nothing was sent: Orthanc (%1) refused the connection. Nobody "
+                             "listens at that host and port, or a firewall blocks it.")
                   .arg(peer));
+    // The module's words apart, at hand.
+    EXPECT_TRUE(dialog->summaryLabel()->toolTip().contains(QStringLiteral("cannot connect")))
+        << dialog->summaryLabel()->toolTip().toStdString();
     ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 2);  // meshes: no SEG to send
     EXPECT_FALSE(dialog->segmentationBox()->isEnabled());
     EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(1), QStringLiteral("Not sent"));

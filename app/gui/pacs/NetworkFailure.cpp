@@ -28,6 +28,10 @@ NetworkFailure classifyFailure(const std::exception_ptr& error) noexcept {
         return {Kind::ConnectionClosed, e.what(), e.transfer()};
     } catch (const pacs::PeerFailedError& e) {
         return {Kind::PeerFailed, e.what(), e.transfer()};
+    } catch (const pacs::TooManyMatchesError& e) {
+        NetworkFailure failure{Kind::TooManyMatches, e.what(), e.transfer()};
+        failure.matchLimit = e.limit();
+        return failure;
     } catch (const pacs::ResponseError& e) {
         return {Kind::Response, e.what(), e.transfer()};
     } catch (const CancelledError& e) {
@@ -41,10 +45,19 @@ NetworkFailure classifyFailure(const std::exception_ptr& error) noexcept {
     }
 }
 
-QString failureText(const NetworkFailure& failure, const pacs::Node& node) {
+QString nodeText(const QString& nodeName, const pacs::Node& node) {
+    const QString address = QString::fromStdString(pacs::describe(node));
+    return nodeName.isEmpty() ? address
+                              : QCoreApplication::translate("vv::gui::NetworkFailure", "%1 (%2)",
+                                                            "node name (AE@host:port)")
+                                    .arg(nodeName, address);
+}
+
+namespace {
+
+/// The summary of failureText(): `peer` is nodeText().
+QString failureSummary(const NetworkFailure& failure, const QString& peer) {
     using Kind = NetworkFailure::Kind;
-    const QString peer = QString::fromStdString(pacs::describe(node));
-    const QString detail = QString::fromStdString(failure.detail);
     switch (failure.kind) {
         case Kind::None:
             return QCoreApplication::translate("vv::gui::NetworkFailure", "%1 answered.").arg(peer);
@@ -73,9 +86,11 @@ QString failureText(const NetworkFailure& failure, const pacs::Node& node) {
                        "port, the trusted CA certificate and our certificate and key files.")
                 .arg(peer);
         case Kind::PeerFailed:
-            return QCoreApplication::translate("vv::gui::NetworkFailure",
-                                               "%1 stopped or failed during the transfer (%2).")
-                .arg(peer, detail);
+            return QCoreApplication::translate(
+                       "vv::gui::NetworkFailure",
+                       "%1 reported a failure and did not complete the request. Try again; if "
+                       "it keeps happening, ask the PACS administrator.")
+                .arg(peer);
         case Kind::ConnectionClosed:
             return QCoreApplication::translate(
                        "vv::gui::NetworkFailure",
@@ -83,21 +98,49 @@ QString failureText(const NetworkFailure& failure, const pacs::Node& node) {
                        "the PACS knows our AE title, host and port, or ask the PACS "
                        "administrator.")
                 .arg(peer);
+        case Kind::TooManyMatches:
+            return QCoreApplication::translate(
+                       "vv::gui::NetworkFailure",
+                       "%1 has more than %2 matches for this search. Narrow the search (patient "
+                       "name or ID, study date).")
+                .arg(peer, QLocale().toString(static_cast<qulonglong>(failure.matchLimit)));
         case Kind::Response:
             return QCoreApplication::translate(
                        "vv::gui::NetworkFailure",
-                       "The answer of %1 was refused (%2). Narrow the search.")
-                .arg(peer, detail);
+                       "The answer of %1 was refused: it breaks the DICOM standard or holds "
+                       "oversized values. Narrow the search; if it keeps happening, ask the PACS "
+                       "administrator.")
+                .arg(peer);
         case Kind::InvalidInput:
-            return QCoreApplication::translate("vv::gui::NetworkFailure", "Invalid input: %1")
-                .arg(detail);
+            return QCoreApplication::translate(
+                       "vv::gui::NetworkFailure",
+                       "Nothing was asked of %1: a value is not valid in DICOM (a search field "
+                       "holds a backslash or more than 64 characters, or a date is not valid). "
+                       "Correct it and try again.")
+                .arg(peer);
         case Kind::Cancelled:
             return QCoreApplication::translate("vv::gui::NetworkFailure", "Cancelled.");
         case Kind::Other:
             break;
     }
-    return QCoreApplication::translate("vv::gui::NetworkFailure", "Failed with %1: %2")
-        .arg(peer, detail);
+    return QCoreApplication::translate(
+               "vv::gui::NetworkFailure",
+               "The request to %1 failed unexpectedly. Try again; if it keeps happening, give "
+               "the details to the administrator.")
+        .arg(peer);
+}
+
+}  // namespace
+
+ProblemText failureText(const NetworkFailure& failure, const QString& nodeName,
+                        const pacs::Node& node) {
+    ProblemText text;
+    text.summary = failureSummary(failure, nodeText(nodeName, node));
+    if (failure.kind != NetworkFailure::Kind::None &&
+        failure.kind != NetworkFailure::Kind::Cancelled) {
+        text.details = QString::fromStdString(failure.detail);
+    }
+    return text;
 }
 
 namespace {
@@ -120,6 +163,7 @@ QString transferCause(NetworkFailure::Kind kind) {
             return QCoreApplication::translate("vv::gui::NetworkFailure",
                                                "the secure connection failed");
         case Kind::Response:
+        case Kind::TooManyMatches:
             return QCoreApplication::translate(
                 "vv::gui::NetworkFailure",
                 "the PACS sent an answer that breaks the DICOM standard");
@@ -136,11 +180,11 @@ QString transferCause(NetworkFailure::Kind kind) {
 
 }  // namespace
 
-QString retrieveFailureText(const NetworkFailure& failure, const QString& nodeName,
-                            const pacs::Node& node, std::optional<std::size_t> kept) {
+ProblemText retrieveFailureText(const NetworkFailure& failure, const QString& nodeName,
+                                const pacs::Node& node, std::optional<std::size_t> kept) {
     const QString cause = transferCause(failure.kind);
     if (!failure.transfer || cause.isEmpty()) {
-        return failureText(failure, node);
+        return failureText(failure, nodeName, node);
     }
     const pacs::TransferProgress& transfer = *failure.transfer;
     const QLocale locale;
@@ -168,11 +212,14 @@ QString retrieveFailureText(const NetworkFailure& failure, const QString& nodeNa
                       "%n image(s) of it were kept in the local study store.", nullptr, keptCount) +
                       QLatin1Char(' ');
     }
-    return QCoreApplication::translate(
-               "vv::gui::NetworkFailure",
-               "The transfer from %1 stopped %2: %3. %4Try again, or ask the PACS administrator "
-               "if it keeps happening.")
-        .arg(name, when, cause, keptText);
+    ProblemText text;
+    text.summary = QCoreApplication::translate(
+                       "vv::gui::NetworkFailure",
+                       "The transfer from %1 stopped %2: %3. %4Try again, or ask the PACS "
+                       "administrator if it keeps happening.")
+                       .arg(name, when, cause, keptText);
+    text.details = QString::fromStdString(failure.detail);
+    return text;
 }
 
 QString portText(int port) {

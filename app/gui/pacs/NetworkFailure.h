@@ -3,8 +3,10 @@
 
 // What went wrong in a DICOM network operation, as the GUI tells the user:
 // the typed errors of vv/pacs/PacsError.h (caught on a worker) become a kind
-// and, on the GUI thread, one translated sentence that names the node
-// (AE@host:port) and what to check. No patient data is ever part of it.
+// and, on the GUI thread, a ProblemText: one sentence in the UI language that
+// says what happened, names the node (as the user named it, and its
+// AE@host:port) and what to do; the module's English detail apart (a
+// tooltip, a message box's Details). No patient data is ever part of it.
 
 #include <QString>
 #include <cstddef>
@@ -14,6 +16,7 @@
 #include <type_traits>
 #include <utility>
 
+#include "gui/EngineTexts.h"
 #include "vv/pacs/Node.h"
 #include "vv/pacs/PacsError.h"
 
@@ -28,7 +31,8 @@ struct NetworkFailure {
         Tls,                  ///< TlsError
         PeerFailed,           ///< PeerFailedError: a failure status, no final answer
         ConnectionClosed,     ///< ConnectionClosedError: the peer aborted or closed
-        Response,             ///< ResponseError: too many matches, malformed answer
+        TooManyMatches,       ///< TooManyMatchesError: more matches than matchLimit
+        Response,             ///< ResponseError: a malformed or oversized answer
         InvalidInput,         ///< InvalidArgumentError: a malformed key or node
         Cancelled,            ///< CancelledError: the user stopped it
         Other,                ///< anything else (IoError of the store, ...)
@@ -37,6 +41,7 @@ struct NetworkFailure {
     std::string detail;  ///< the exception's message (English, no patient data)
     /// A retrieve that failed once its transfer began: how far it had come.
     std::optional<pacs::TransferProgress> transfer;
+    std::size_t matchLimit = 0;  ///< Kind::TooManyMatches: the limit exceeded
 };
 
 /// Classifies the exception `error` (call it inside a catch block or with a
@@ -67,21 +72,29 @@ template <typename Call>
     }
 }
 
-/// The translated message for `failure` with `node` ("Radiology PACS"'s
-/// AE@host:port): what failed and what to check.
-[[nodiscard]] QString failureText(const NetworkFailure& failure, const pacs::Node& node);
+/// The node as the messages name it: "Radiology PACS (PACS1@pacs.example:4242)";
+/// its AE@host:port alone when `nodeName` is empty.
+[[nodiscard]] QString nodeText(const QString& nodeName, const pacs::Node& node);
 
-/// The translated message for a retrieve from the node the user calls
-/// `nodeName` that failed with `failure`. Once its transfer had begun
-/// (failure.transfer), one plain statement: what happened and how far it
-/// came ("The transfer from ORTHANC stopped after 60 of 400 images: the PACS
-/// closed the connection."), what the local study store kept of it (`kept`
-/// images: "Nothing was kept."; nullopt: unknown, not said), and what to
-/// do; the technical detail is
-/// left to the caller (a tooltip, the log). Before that (no connection, a
-/// rejected association, …): failureText(failure, node).
-[[nodiscard]] QString retrieveFailureText(const NetworkFailure& failure, const QString& nodeName,
-                                          const pacs::Node& node, std::optional<std::size_t> kept);
+/// `failure` of a call to the node the user calls `nodeName` (`node`): as
+/// summary, what failed, naming the node (nodeText()), and what to check or
+/// do, in the UI language ("more than 2,000 matches" with the UI locale's
+/// digits); as details, the module's English message (empty for None and
+/// Cancelled). Never one English sentence inside the summary.
+[[nodiscard]] ProblemText failureText(const NetworkFailure& failure, const QString& nodeName,
+                                      const pacs::Node& node);
+
+/// `failure` of a retrieve from the node the user calls `nodeName`. Once its
+/// transfer had begun (failure.transfer), the summary is one plain
+/// statement: what happened and how far it came ("The transfer from ORTHANC
+/// stopped after 60 of 400 images: the PACS closed the connection."), what
+/// the local study store kept of it (`kept` images: "Nothing was kept.";
+/// nullopt: unknown, not said), and what to do. Before that (no
+/// connection, a rejected association, …): failureText(). The details are
+/// the module's English message.
+[[nodiscard]] ProblemText retrieveFailureText(const NetworkFailure& failure,
+                                              const QString& nodeName, const pacs::Node& node,
+                                              std::optional<std::size_t> kept);
 
 /// A port number as a person reads it: the UI locale's digits, no group separator.
 [[nodiscard]] QString portText(int port);

@@ -290,30 +290,34 @@ void NetworkPreferencesDialog::testNode() {
     }
     const QString ourProblem = aeTitleProblem(aeTitle_->text().trimmed(), tr("Our AE title"));
     if (!ourProblem.isEmpty()) {
-        testResult_->setText(ourProblem);
+        showTestResult(ourProblem);
         fitHeight();
         emit testFinished(false);
         return;
     }
     pacs::LocalAe me = settings().me;
     const pacs::Node node = nodes_[static_cast<std::size_t>(row)].node;
+    const QString name = QString::fromStdString(nodes_[static_cast<std::size_t>(row)].name);
     testCall_.start(
         [me, node](const std::stop_token& stop) {
             return tryNetwork([&] { pacs::echo(me, node, stop); });
         },
-        [this, node](const NetworkFailure& failure) {
+        [this, node, name](const NetworkFailure& failure) {
             test_->setText(tr("&Test"));
             updateButtons();
             const bool ok = failure.kind == NetworkFailure::Kind::None;
-            testResult_->setText(ok ? tr("Success: %1 answered C-ECHO.")
-                                          .arg(QString::fromStdString(pacs::describe(node)))
-                                    : failureText(failure, node));
+            if (ok) {
+                showTestResult(tr("Success: %1 answered C-ECHO.")
+                                   .arg(QString::fromStdString(pacs::describe(node))));
+            } else {
+                showProblemText(testResult_, failureText(failure, name, node));
+            }
             fitHeight();
             emit testFinished(ok);
         });
     test_->setText(tr("Testing…"));
     updateButtons();
-    testResult_->setText(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
+    showTestResult(tr("Testing %1…").arg(QString::fromStdString(pacs::describe(node))));
     fitHeight();
 }
 
@@ -324,9 +328,15 @@ void NetworkPreferencesDialog::cancelTest() {
     testCall_.cancel();  // the worker aborts its association at once
     test_->setText(tr("&Test"));
     updateButtons();
-    testResult_->setText(tr("Test cancelled."));
+    showTestResult(tr("Test cancelled."));
     fitHeight();
     emit testFinished(false);
+}
+
+void NetworkPreferencesDialog::showTestResult(const QString& text) {
+    testResult_->setText(text);
+    testResult_->setToolTip(QString());
+    showAsProblem(testResult_, false);
 }
 
 void NetworkPreferencesDialog::fitHeight() {

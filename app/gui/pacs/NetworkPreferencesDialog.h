@@ -79,6 +79,8 @@ class NetworkPreferencesDialog : public QDialog {
     void editNode(int row);
     void testNode();
     void cancelTest();
+    /// Shows `text` under the node table as plain information.
+    void showTestResult(const QString& text);
     void updateButtons();
     void refuse(const QString& message, QWidget* field);
     /// Refuses OK for what writePacsSettings() refused: the setting named in

@@ -348,7 +348,7 @@ void PacsBrowser::startSearch() {
             if (ok) {
                 setStatus(studiesFoundText(static_cast<int>(answer.first.size())));
             } else {
-                setStatus(failureText(answer.second, peer), true);
+                showProblemText(status_, failureText(answer.second, text(name), peer));
             }
             updateButtons();
             emit searchFinished(ok);
@@ -421,13 +421,13 @@ void PacsBrowser::studySelected() {
         [me = settings_.me, peer = node->node, q](const std::stop_token& stop) {
             return tryNetwork([&] { return pacs::findSeries(me, peer, q, {}, stop); });
         },
-        [this, peer = node->node](
+        [this, peer = node->node, name = text(node->name)](
             const std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>& answer) {
             const bool ok = answer.second.kind == NetworkFailure::Kind::None;
             if (ok) {
                 showSeries(answer.first);
             } else {
-                setStatus(failureText(answer.second, peer), true);
+                showProblemText(status_, failureText(answer.second, name, peer));
             }
             updateButtons();
             emit seriesFinished(ok);
@@ -581,8 +581,8 @@ void PacsBrowser::startRetrieve(bool wholeStudy) {
                 setStatus(tr("Retrieve cancelled: nothing of it was kept."));
             } else if (outcome.failure.kind != NetworkFailure::Kind::None) {
                 // One plain sentence; the technical detail in the tooltip and the log.
-                setStatus(retrieveFailureText(outcome.failure, name, peer, outcome.kept), true);
-                status_->setToolTip(tr("Details: %1").arg(text(outcome.failure.detail)));
+                showProblemText(status_,
+                                retrieveFailureText(outcome.failure, name, peer, outcome.kept));
                 log::warning(kLog, "retrieve failed: " + outcome.failure.detail);
             }
             updateButtons();

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/pacs/PacsWidgets.h"
 
+#include <QCoreApplication>
 #include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
@@ -10,6 +11,7 @@
 #include <QTableWidget>
 
 #include "gui/DateText.h"
+#include "gui/EngineTexts.h"
 
 namespace vv::gui {
 
@@ -29,6 +31,15 @@ QTableWidget* makeResultTable(QWidget* parent, const QString& objectName,
 
 void showAsProblem(QLabel* label, bool problem) {
     label->setStyleSheet(problem ? QStringLiteral("color: #b00020;") : QString());
+}
+
+void showProblemText(QLabel* label, const ProblemText& problem) {
+    label->setText(problem.summary);
+    label->setToolTip(problem.details.isEmpty()
+                          ? QString()
+                          : QCoreApplication::translate("vv::gui::PacsWidgets", "Details: %1")
+                                .arg(problem.details));
+    showAsProblem(label, true);
 }
 
 QLabel* makeErrorLabel(QWidget* parent, const QString& objectName) {

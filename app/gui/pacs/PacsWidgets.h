@@ -16,6 +16,8 @@ class QWidget;
 
 namespace vv::gui {
 
+struct ProblemText;
+
 /// A read-only table chosen by whole rows (one at a time), without row
 /// numbers; its columns fit their contents and the last takes the rest.
 [[nodiscard]] QTableWidget* makeResultTable(QWidget* parent, const QString& objectName,
@@ -23,6 +25,10 @@ namespace vv::gui {
 
 /// Shows `label`'s text as a problem (red) or as plain information.
 void showAsProblem(QLabel* label, bool problem);
+
+/// Shows `problem` on `label` as a problem: its summary (UI language) as the
+/// text, its English details as the tooltip ("Details: …"; none when empty).
+void showProblemText(QLabel* label, const ProblemText& problem);
 
 /// A hidden, word-wrapped label for the message that refuses invalid input.
 [[nodiscard]] QLabel* makeErrorLabel(QWidget* parent, const QString& objectName);

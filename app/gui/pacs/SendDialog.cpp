@@ -23,9 +23,12 @@
 #include <cmath>
 #include <utility>
 
+#include "gui/EngineTexts.h"
 #include "gui/ExportWorker.h"
 #include "gui/ReportDialog.h"
 #include "gui/ViewerWidget.h"
+#include "gui/pacs/NetworkFailure.h"
+#include "gui/pacs/PacsWidgets.h"
 
 namespace vv::gui {
 namespace {
@@ -218,10 +221,10 @@ void SendDialog::showScene(report::ReportSource source,
     setFindings(findings);
     setExportedReport(exportedPdf, exportedFindings);
     results_->clear();
-    summary_->setText(wasSending ? tr("Other data was opened: the send of %1 was stopped; nothing "
-                                      "more was sent.")
-                                       .arg(before)
-                                 : QString());
+    finish(wasSending ? tr("Other data was opened: the send of %1 was stopped; nothing more "
+                           "was sent.")
+                            .arg(before)
+                      : QString());
     setSegmentation(std::move(labelMap));
 }
 
@@ -274,7 +277,9 @@ void SendDialog::send() {
     }
     folder_ = std::make_unique<QTemporaryDir>();
     if (!folder_->isValid()) {
-        finish(tr("No temporary folder for the report: %1").arg(folder_->errorString()));
+        finish(ProblemText{tr("No temporary folder for the report could be made. Check the free "
+                              "space and the permissions of the temporary folder."),
+                           folder_->errorString()});
         return;
     }
     SendRequest request;
@@ -314,9 +319,13 @@ void SendDialog::send() {
                 stage_->setText(fraction < kReportShare ? stage : tr("Sending to %1…").arg(peer));
             });
     connect(worker_, &ExportWorker::succeeded, this,
-            [this, outcome, peer] { showOutcome(*outcome, peer); });
-    connect(worker_, &ExportWorker::failed, this, [this](const QString& message) {
-        finish(tr("The report could not be made: %1").arg(message));
+            [this, outcome, peer, target = nodeText(qs(node->name), node->node)] {
+                showOutcome(*outcome, peer, target);
+            });
+    connect(worker_, &ExportWorker::failed, this, [this] {
+        const ProblemText& problem = worker_->problem();
+        finish(ProblemText{tr("The report could not be made: %1").arg(problem.summary),
+                           problem.details});
     });
     connect(worker_, &ExportWorker::cancelled, this,
             [this] { finish(tr("Cancelled: nothing more was sent.")); });
@@ -329,7 +338,7 @@ void SendDialog::send() {
         emit sendFinished();
     });
     results_->clear();
-    summary_->clear();
+    finish(QString());
     progress_->setValue(0);
     progress_->show();
     stage_->setText(tr("Making the report…"));
@@ -352,7 +361,8 @@ void SendDialog::reject() {
     QDialog::reject();
 }
 
-void SendDialog::showOutcome(const SendOutcome& outcome, const QString& peer) {
+void SendDialog::showOutcome(const SendOutcome& outcome, const QString& peer,
+                             const QString& target) {
     results_->clear();
     std::size_t accepted = 0;
     for (std::size_t i = 0; i < outcome.items.size(); ++i) {
@@ -370,7 +380,7 @@ void SendDialog::showOutcome(const SendOutcome& outcome, const QString& peer) {
         row->setText(1, answer);
     }
     if (outcome.failure != SendFailure::None) {
-        finish(failureText(outcome, peer));
+        finish(failureText(outcome, target));
         return;
     }
     finish(tr("%L1 of %L2 accepted by %3")
@@ -379,32 +389,51 @@ void SendDialog::showOutcome(const SendOutcome& outcome, const QString& peer) {
                .arg(peer));
 }
 
-QString SendDialog::failureText(const SendOutcome& outcome, const QString& peer) const {
+ProblemText SendDialog::failureText(const SendOutcome& outcome, const QString& target) const {
+    ProblemText problem;
+    problem.details = qs(outcome.detail);
     switch (outcome.failure) {
         case SendFailure::Refused:
-            return tr("Nothing was sent: %1 refused the connection. Nobody listens at that host "
-                      "and port, or a firewall blocks it.")
-                .arg(peer);
+            problem.summary =
+                tr("Nothing was sent: %1 refused the connection. Nobody listens at that host "
+                   "and port, or a firewall blocks it.")
+                    .arg(target);
+            break;
         case SendFailure::Rejected:
-            return tr("Nothing was sent: %1 rejected the association. It may not know our AE "
-                      "title %2, or the node's AE title is wrong.")
-                .arg(peer, qs(settings_.me.aeTitle));
+            problem.summary =
+                tr("Nothing was sent: %1 rejected the association. It may not know our AE "
+                   "title %2, or the node's AE title is wrong.")
+                    .arg(target, qs(settings_.me.aeTitle));
+            break;
         case SendFailure::Timeout:
-            return tr("Nothing more was sent: %1 did not answer in time.").arg(peer);
+            problem.summary = tr("Nothing more was sent: %1 did not answer in time.").arg(target);
+            break;
         case SendFailure::Tls:
-            return tr("Nothing was sent: the TLS connection to %1 failed. Check the "
-                      "certificates of both sides.")
-                .arg(peer);
+            problem.summary = tr("Nothing was sent: the TLS connection to %1 failed. Check the "
+                                 "certificates of both sides.")
+                                  .arg(target);
+            break;
         case SendFailure::PeerFailed:
-            return tr("The transfer to %1 failed: %2").arg(peer, qs(outcome.detail));
+            problem.summary =
+                tr("The transfer to %1 failed: the PACS closed the connection or reported a "
+                   "failure. The table says what was accepted before. Try again; if it keeps "
+                   "happening, ask the PACS administrator.")
+                    .arg(target);
+            break;
         case SendFailure::None:
             break;
     }
-    return {};
+    return problem;
 }
 
 void SendDialog::finish(const QString& summary) {
     summary_->setText(summary);
+    summary_->setToolTip(QString());
+    showAsProblem(summary_, false);
+}
+
+void SendDialog::finish(const ProblemText& problem) {
+    showProblemText(summary_, problem);
 }
 
 }  // namespace vv::gui

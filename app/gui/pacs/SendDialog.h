@@ -25,6 +25,7 @@ class QTreeWidget;
 namespace vv::gui {
 
 class ExportWorker;
+struct ProblemText;
 class ViewerWidget;
 
 /// DICOM > Send to PACS…: sends the report of the view on screen to a
@@ -116,9 +117,14 @@ class SendDialog : public QDialog {
     void updateButtons();
     /// The findings of the report chosen in reportChooser().
     void showFindings();
-    void showOutcome(const SendOutcome& outcome, const QString& peer);
-    [[nodiscard]] QString failureText(const SendOutcome& outcome, const QString& peer) const;
+    /// `peer`: the node's AE@host:port; `target`: nodeText() (its name too).
+    void showOutcome(const SendOutcome& outcome, const QString& peer, const QString& target);
+    /// What failed, naming `target`, in the UI language; the detail apart.
+    [[nodiscard]] ProblemText failureText(const SendOutcome& outcome, const QString& target) const;
+    /// Shows `summary` as plain information.
     void finish(const QString& summary);
+    /// Shows `problem` as a problem (its details as the tooltip).
+    void finish(const ProblemText& problem);
     /// Stops the send in progress and drops its outcome.
     void abandonSend();
 

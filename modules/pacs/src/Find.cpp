@@ -42,7 +42,8 @@ class FindScu : public detail::Scu {
     FindScu(const FindLimits& limits, Handler handler)
         : limits_(limits), handler_(std::move(handler)) {}
 
-    std::string problem;  ///< set when a limit was hit; the session was cancelled
+    std::string problem;   ///< set when a limit was hit; the session was cancelled
+    bool tooMany = false;  ///< the limit hit was maxResults
     Uint16 finalStatus = STATUS_Success;
 
     OFCondition handleFINDResponse(const T_ASC_PresentationContextID presID, QRResponse* response,
@@ -55,6 +56,7 @@ class FindScu : public detail::Scu {
             response->m_status == STATUS_FIND_Pending_WarningUnsupportedOptionalKeys) {
             waitForNextResponse = OFTrue;
             if (++count_ > limits_.maxResults) {
+                tooMany = true;
                 problem = "more than " + std::to_string(limits_.maxResults) +
                           " matches; refine the query";
             } else if (response->m_dataset == nullptr) {
@@ -132,7 +134,11 @@ void runFind(const LocalAe& me, const Node& peer, DcmDataset& keys, const FindLi
     const OFCondition cond = scu.sendFINDRequest(id, &keys, nullptr);
     if (!scu.problem.empty()) {
         scu.abortAssociation();
-        throw ResponseError(describe(peer) + ": C-FIND answer refused: " + scu.problem);
+        const std::string message = describe(peer) + ": C-FIND answer refused: " + scu.problem;
+        if (scu.tooMany) {
+            throw TooManyMatchesError(message, limits.maxResults);
+        }
+        throw ResponseError(message);
     }
     if (cond.bad()) {
         scu.throwIfStopped();

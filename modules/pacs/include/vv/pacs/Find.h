@@ -60,7 +60,8 @@ struct FindLimits {
 /// connect itself runs to its own timeout first). Throws InvalidArgumentError
 /// for a malformed key (backslash, a date not YYYYMMDD), the NetworkError
 /// family (vv/pacs/PacsError.h) for connection and peer failures, and
-/// ResponseError when the answer exceeds `limits` or lacks a Study Instance UID.
+/// ResponseError when the answer exceeds `limits` or lacks a Study Instance UID
+/// (TooManyMatchesError, a ResponseError, for more than limits.maxResults matches).
 std::vector<StudyResult> findStudies(const LocalAe& me, const Node& peer, const StudyQuery& query,
                                      const FindLimits& limits = {}, std::stop_token stop = {});
 

@@ -80,4 +80,17 @@ class ResponseError : public NetworkError {
     using NetworkError::NetworkError;
 };
 
+/// A C-FIND matched more than our limit (FindLimits::maxResults): the
+/// search was cancelled; a narrower one may succeed.
+class TooManyMatchesError : public ResponseError {
+  public:
+    TooManyMatchesError(const std::string& message, std::size_t limit)
+        : ResponseError(message), limit_(limit) {}
+    /// The limit the matches exceeded.
+    [[nodiscard]] std::size_t limit() const noexcept { return limit_; }
+
+  private:
+    std::size_t limit_;
+};
+
 }  // namespace vv::pacs
