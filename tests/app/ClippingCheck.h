@@ -32,6 +32,15 @@
 
 namespace vv::test {
 
+/// Every problem as one line each, for a failure message.
+inline std::string listed(const std::vector<std::string>& problems) {
+    std::string text;
+    for (const std::string& problem : problems) {
+        text += "\n  " + problem;
+    }
+    return text;
+}
+
 /// "QLabel 'vssStatus' (parent 'vssPanel')" for failure messages.
 inline QString describeWidget(const QWidget* widget) {
     QString name = widget->objectName();

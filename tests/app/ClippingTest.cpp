@@ -38,6 +38,8 @@
 
 namespace {
 
+using vv::test::listed;
+
 namespace fs = std::filesystem;
 using vv::test::ClippingCheck;
 using vv::test::waitUntil;
@@ -51,15 +53,6 @@ struct Case {
 std::string caseName(const ::testing::TestParamInfo<Case>& info) {
     return std::string(info.param.language) + "_" + std::to_string(info.param.width) + "x" +
            std::to_string(info.param.height);
-}
-
-/// Every problem as one line each, for a failure message.
-std::string listed(const std::vector<std::string>& problems) {
-    std::string text;
-    for (const std::string& problem : problems) {
-        text += "\n  " + problem;
-    }
-    return text;
 }
 
 class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInterface<Case> {

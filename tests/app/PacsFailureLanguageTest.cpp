@@ -28,6 +28,8 @@
 
 namespace {
 
+using vv::test::listed;
+
 using vv::test::waitUntil;
 
 /// The summary `shown` is a German sentence that names `name` and holds no
@@ -114,27 +116,8 @@ TEST_F(PacsFailureGermanTest, TheOtherKindsAreGermanNameTheNodeAndKeepTheDetailA
         << tooMany.toStdString();
 }
 
-std::string listed(const std::vector<std::string>& problems) {
-    std::string text;
-    for (const std::string& problem : problems) {
-        text += "\n  " + problem;
-    }
-    return text;
-}
-
-class PacsFailureClippingTest : public vv::test::PacsGuiFixture,
-                                public ::testing::WithParamInterface<const char*> {
+class PacsFailureClippingTest : public vv::test::PacsGuiInLanguage {
   protected:
-    void SetUp() override {
-        ASSERT_TRUE(vv::test::installUiLanguage(GetParam(), VV_QM_DIR));
-        PacsGuiFixture::SetUp();
-        window_->resize(1280, 800);
-    }
-    void TearDown() override {
-        PacsGuiFixture::TearDown();
-        vv::test::removeUiLanguage();
-    }
-
     /// Every failure's summary, for a node with a long name.
     static std::vector<QString> everySummary() {
         using Kind = vv::gui::NetworkFailure::Kind;

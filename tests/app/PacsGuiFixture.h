@@ -24,6 +24,7 @@
 #include "GuiFixture.h"
 #include "OrthancServer.h"
 #include "SyntheticCta.h"
+#include "UiLanguage.h"
 #include "gui/MainWindow.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/DicomMenu.h"
@@ -251,6 +252,22 @@ class PacsGuiFixture : public GuiFixture {
     inline static int slices_ = 0;
     fs::path store_;
     QPointer<vv::gui::PacsBrowser> browser_;
+};
+
+/// The fixture with the UI in the language of the test's parameter ("en",
+/// "de"), installed as gui/Translations.cpp does before any widget exists,
+/// and the window at 1280 x 800.
+class PacsGuiInLanguage : public PacsGuiFixture, public ::testing::WithParamInterface<const char*> {
+  protected:
+    void SetUp() override {
+        ASSERT_TRUE(installUiLanguage(GetParam(), VV_QM_DIR));
+        PacsGuiFixture::SetUp();
+        window_->resize(1280, 800);
+    }
+    void TearDown() override {
+        PacsGuiFixture::TearDown();
+        removeUiLanguage();
+    }
 };
 
 }  // namespace vv::test

@@ -20,31 +20,12 @@
 
 namespace {
 
+using vv::test::listed;
+
 using vv::test::waitUntil;
 
-std::string listed(const std::vector<std::string>& problems) {
-    std::string text;
-    for (const std::string& problem : problems) {
-        text += "\n  " + problem;
-    }
-    return text;
-}
-
-class PacsGuiLanguageTest : public vv::test::PacsGuiFixture,
-                            public ::testing::WithParamInterface<const char*> {
+class PacsGuiLanguageTest : public vv::test::PacsGuiInLanguage {
   protected:
-    void SetUp() override {
-        // As gui/Translations.cpp does, before any widget exists.
-        ASSERT_TRUE(vv::test::installUiLanguage(GetParam(), VV_QM_DIR));
-        PacsGuiFixture::SetUp();
-        window_->resize(1280, 800);
-    }
-
-    void TearDown() override {
-        PacsGuiFixture::TearDown();
-        vv::test::removeUiLanguage();
-    }
-
     /// Lays `widget` out as shown, saves it as `name`-<language>.png and
     /// expects nothing cut off.
     void expectWhole(QWidget& widget, const std::string& name) {
