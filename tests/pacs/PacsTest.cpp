@@ -344,7 +344,8 @@ TEST(PacsListenerTest, AssociationOverTheSizeCapIsRefusedAndDiscarded) {
     config.aeTitle = "VVLISTEN";
     config.port = vv::test::freePort();
     config.allowedPeers = {Node{"SENDER", "127.0.0.1", 104, {}}};
-    config.maxAssociationBytes = fs::file_size(files[0]) * 5 / 2;  // room for two instances
+    config.limits.maxInstanceBytes = fs::file_size(files[0]) * 2;
+    config.limits.maxAssociationBytes = fs::file_size(files[0]) * 5 / 2;  // room for two instances
     StorageScp listener(store, config);
     const auto statuses = sendFiles(LocalAe{"SENDER", Timeouts{2, 5, 10}},
                                     Node{"VVLISTEN", "127.0.0.1", config.port, {}}, files);

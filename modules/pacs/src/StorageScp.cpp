@@ -174,7 +174,7 @@ class Scp : public DcmSCP {
             const std::filesystem::path path = transaction_->stagingPath();
             detail::writeInstance(dataset, path);
             bytes_ += std::filesystem::file_size(path);
-            if (bytes_ > config_.maxAssociationBytes) {
+            if (bytes_ > config_.limits.maxAssociationBytes) {
                 overCap_ = true;
                 log::warning(kLog, "refused the rest of an association from " + peer() +
                                        ": over the size cap");
@@ -204,6 +204,28 @@ class Scp : public DcmSCP {
 
 }  // namespace
 
+void ListenerLimits::validate() const {
+    const auto need = [](bool ok, const std::string& what) {
+        if (!ok) {
+            throw InvalidArgumentError("listener limits: " + what);
+        }
+    };
+    need(maxAssociations >= 1 && maxAssociations <= 256,
+         "simultaneous associations must be 1 to 256, not " + std::to_string(maxAssociations));
+    need(maxConnections >= maxAssociations && maxConnections <= 1024,
+         "connections in all must be " + std::to_string(maxAssociations) +
+             " (the simultaneous associations) to 1024, not " + std::to_string(maxConnections));
+    need(maxConnectionsPerAddress >= 1 && maxConnectionsPerAddress <= maxConnections,
+         "connections per address must be 1 to " + std::to_string(maxConnections) +
+             " (the connections in all), not " + std::to_string(maxConnectionsPerAddress));
+    need(requestSeconds >= 1 && requestSeconds <= 120,
+         "the association request deadline must be 1 to 120 s, not " +
+             std::to_string(requestSeconds));
+    need(maxInstanceBytes >= 1000, "the largest instance must be at least 1 kB");
+    need(maxAssociationBytes >= maxInstanceBytes,
+         "the largest association must be at least the largest instance");
+}
+
 struct StorageScp::Impl {
     ListenerConfig config;
     ListenerStats stats;
@@ -219,6 +241,7 @@ struct StorageScp::Impl {
 
 StorageScp::StorageScp(LocalStore& store, ListenerConfig config) : impl_(std::make_unique<Impl>()) {
     validateAeTitle(config.aeTitle);
+    config.limits.validate();
     if (config.port == 0) {
         throw InvalidArgumentError("the listener needs a port");
     }
