@@ -7,11 +7,13 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <filesystem>
 #include <functional>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "SyntheticCta.h"
@@ -42,6 +44,20 @@ inline std::vector<std::filesystem::path> writeCtaFiles(const std::filesystem::p
     options.patientId = patientId;
     dicom::writeCtSeries(folder, cta.volume, options);
     return filesOf(folder);
+}
+
+/// Polls `done` until it holds or `bound` passes (a bound for a broken
+/// program, never a timing claim); returns whether it held.
+inline bool waitUntil(const std::function<bool()>& done,
+                      std::chrono::milliseconds bound = std::chrono::seconds(30)) {
+    const auto end = std::chrono::steady_clock::now() + bound;
+    while (!done()) {
+        if (std::chrono::steady_clock::now() > end) {
+            return false;
+        }
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    return true;
 }
 
 /// A Progress that calls `action` once, at the first report (`*done` tells

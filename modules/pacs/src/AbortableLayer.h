@@ -40,6 +40,12 @@ class AbortSwitch {
     bool aborted_ = false;
 };
 
+/// `inner` (the connection made on `socket`; taken over) with its socket
+/// attached to `abortSwitch` until it is closed.
+DcmTransportConnection* makeAbortableConnection(DcmNativeSocketType socket,
+                                                DcmTransportConnection* inner,
+                                                std::shared_ptr<AbortSwitch> abortSwitch);
+
 /// Makes the connections of `inner` (a TLS layer) or, without one, plain TCP
 /// connections, each attached to the switch that a stop of `stop` trips.
 class AbortableLayer : public DcmTransportLayer {

@@ -44,16 +44,12 @@ void Scu::abortOn(std::stop_token stop) {
 }
 
 void Scu::attachLayers() {
-    if (stop_.stop_possible()) {
-        abortableLayer = std::make_unique<AbortableLayer>(tlsLayer.get(), stop_);
-    }
-    DcmTransportLayer* layer =
-        abortableLayer ? static_cast<DcmTransportLayer*>(abortableLayer.get()) : tlsLayer.get();
-    if (layer != nullptr) {
-        const OFCondition cond = useSecureConnection(layer);
-        if (cond.bad()) {
-            throw TlsError(std::string("TLS: ") + cond.text());
-        }
+    // Always our layer: it sets TCP_NODELAY, and a stop (when one can come)
+    // shuts the socket down.
+    abortableLayer = std::make_unique<AbortableLayer>(tlsLayer.get(), stop_);
+    const OFCondition cond = useSecureConnection(abortableLayer.get());
+    if (cond.bad()) {
+        throw TlsError(std::string("TLS: ") + cond.text());
     }
 }
 

@@ -43,6 +43,25 @@ InstanceFields fieldsOf(DcmDataset& ds) {
     return f;
 }
 
+InstanceFields fieldsOfFile(const std::filesystem::path& path, const std::string& sopInstanceUid,
+                            const std::string& sopClassUid) {
+    DcmFileFormat file;
+    const OFCondition cond = file.loadFile(path.c_str());  // values over 4 kB stay on disk
+    if (cond.bad()) {
+        throw FormatError(path, std::string("not a readable DICOM dataset: ") + cond.text());
+    }
+    DcmDataset& dataset = *file.getDataset();
+    InstanceFields fields = fieldsOf(dataset);
+    if (fields.sopInstanceUid != sopInstanceUid) {
+        throw FormatError(path,
+                          "its SOP Instance UID is not the one its C-STORE request announced");
+    }
+    if (text(dataset, DCM_SOPClassUID) != sopClassUid) {
+        throw FormatError(path, "its SOP Class UID is not the one its C-STORE request announced");
+    }
+    return fields;
+}
+
 void writeInstance(DcmDataset& dataset, const std::filesystem::path& path) {
     E_TransferSyntax xfer = dataset.getOriginalXfer();
     if (xfer == EXS_Unknown || xfer == EXS_LittleEndianImplicit) {

@@ -8,6 +8,7 @@
 #include <dcmtk/dcmdata/dcdatset.h>
 
 #include <filesystem>
+#include <string>
 #include <vector>
 
 #include "vv/pacs/LocalStore.h"
@@ -16,6 +17,13 @@ namespace vv::pacs::detail {
 
 /// The index fields of `dataset` (missing attributes stay empty / -1).
 InstanceFields fieldsOf(DcmDataset& dataset);
+
+/// The index fields of the DICOM file `path` (a received instance; its large
+/// values, the pixel data, are not read). Throws FormatError when it cannot
+/// be parsed or its SOP instance UID / SOP class UID are not `sopInstanceUid`
+/// / `sopClassUid` (what its C-STORE request announced).
+InstanceFields fieldsOfFile(const std::filesystem::path& path, const std::string& sopInstanceUid,
+                            const std::string& sopClassUid);
 
 /// Writes `dataset` as a DICOM file to `path` (its own transfer syntax,
 /// explicit little endian for implicit), 0600. Throws IoError.

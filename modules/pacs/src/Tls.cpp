@@ -1,18 +1,16 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "Tls.h"
 
-#include <arpa/inet.h>
 #include <dcmtk/dcmnet/dcmtrans.h>
-#include <netinet/in.h>
 #include <sys/socket.h>
 #include <sys/time.h>
 
 #include <algorithm>
-#include <array>
 #include <memory>
 #include <utility>
 
 #include "ForwardingConnection.h"
+#include "Socket.h"
 #include "vv/pacs/PacsError.h"
 
 namespace vv::pacs::detail {
@@ -23,19 +21,6 @@ void check(const OFCondition& cond, const std::string& what) {
     if (cond.bad()) {
         throw TlsError(what + ": " + cond.text());
     }
-}
-
-/// The IPv4 address of the peer of `socket`, or "an unknown host".
-std::string peerOf(DcmNativeSocketType socket) {
-    sockaddr_in address{};
-    socklen_t length = sizeof address;
-    std::array<char, INET_ADDRSTRLEN> text{};
-    if (::getpeername(socket, reinterpret_cast<sockaddr*>(&address), &length) != 0 ||
-        address.sin_family != AF_INET ||
-        ::inet_ntop(AF_INET, &address.sin_addr, text.data(), text.size()) == nullptr) {
-        return "an unknown host";
-    }
-    return text.data();
 }
 
 /// Passes everything to the TLS connection; bounds the handshakes and
@@ -51,7 +36,8 @@ class TimedConnection : public ForwardingConnection {
     OFCondition serverSideHandshake() override {
         const OFCondition cond = timed([this] { return inner().serverSideHandshake(); });
         if (cond.bad() && onRefused_) {
-            onRefused_(peerOf(getSocket()), cond.text() != nullptr ? cond.text() : "TLS failed");
+            onRefused_(peerAddress(getSocket()),
+                       cond.text() != nullptr ? cond.text() : "TLS failed");
         }
         return cond;
     }
