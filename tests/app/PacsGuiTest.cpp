@@ -424,6 +424,92 @@ TEST_F(PacsGuiTest, UnknownNodePushingIsRefusedAndNothingAppears) {
     EXPECT_EQ(browser->tree()->topLevelItemCount(), 0);
 }
 
+/// `n` TCP connections to `port` on 127.0.0.1 from the address `from`
+/// (another loopback address: a host that is no configured node), held open
+/// and silent until the vector goes.
+struct IdleConnections {
+    std::vector<int> fds;
+    IdleConnections(const char* from, std::uint16_t port, int n) {
+        for (int i = 0; i < n; ++i) {
+            const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+            sockaddr_in source{};
+            source.sin_family = AF_INET;
+            ::inet_pton(AF_INET, from, &source.sin_addr);
+            sockaddr_in target{};
+            target.sin_family = AF_INET;
+            target.sin_port = htons(port);
+            ::inet_pton(AF_INET, "127.0.0.1", &target.sin_addr);
+            // NOLINTBEGIN(cppcoreguidelines-pro-type-reinterpret-cast): the sockets API
+            if (::bind(fd, reinterpret_cast<sockaddr*>(&source), sizeof source) == 0 &&
+                ::connect(fd, reinterpret_cast<sockaddr*>(&target), sizeof target) == 0) {
+                // NOLINTEND(cppcoreguidelines-pro-type-reinterpret-cast)
+                fds.push_back(fd);
+            } else {
+                ::close(fd);
+            }
+        }
+    }
+    IdleConnections(const IdleConnections&) = delete;
+    IdleConnections& operator=(const IdleConnections&) = delete;
+    ~IdleConnections() {
+        for (const int fd : fds) {
+            ::close(fd);
+        }
+    }
+};
+
+TEST_F(PacsGuiTest, UnderLoadTheWindowWorksOnAndLocalStudiesFillsInByItself) {
+    // Three modalities may push; a host that is no node holds 200 silent
+    // connections meanwhile; the three push a study each at the same time.
+    PacsSettings s = settings();
+    for (int i = 1; i <= 3; ++i) {
+        vv::gui::PacsNode node;
+        node.name = "Modality " + std::to_string(i);
+        node.node = vv::pacs::Node{"LOAD" + std::to_string(i), "127.0.0.1", 104, {}};
+        s.nodes.push_back(node);
+    }
+    restartWith(s);
+    ASSERT_EQ(listener()->state(), ListenerService::State::Running);
+    LocalStudiesBrowser* browser = openBrowser();
+    ASSERT_NE(browser, nullptr);
+    ASSERT_EQ(browser->tree()->topLevelItemCount(), 0);
+    const IdleConnections idle("127.0.0.2", scpPort_, 200);
+    ASSERT_EQ(idle.fds.size(), 200U) << "the kernel takes the connections into the backlog";
+    std::vector<std::vector<fs::path>> studies;
+    for (int i = 1; i <= 3; ++i) {
+        studies.push_back(
+            writeCta(testDir() / ("load" + std::to_string(i)), "VV-LOAD-" + std::to_string(i)));
+    }
+    std::vector<std::size_t> accepted(3, 0);
+    std::vector<std::thread> senders;
+    for (std::size_t i = 0; i < 3; ++i) {
+        senders.emplace_back([&, i] {
+            const vv::pacs::LocalAe modality{"LOAD" + std::to_string(i + 1),
+                                             vv::pacs::Timeouts{5, 10, 20}};
+            try {
+                for (const auto& status : vv::pacs::sendFiles(
+                         modality, vv::pacs::Node{kOurAe, "127.0.0.1", scpPort_, {}}, studies[i])) {
+                    accepted[i] += status.accepted ? 1 : 0;
+                }
+            } catch (const std::exception&) {  // counted as nothing accepted
+            }
+        });
+    }
+    // The window's event loop runs all along (waitUntil turns it); the list
+    // refreshes by itself as each study is committed.
+    const bool listed = waitUntil([&] { return browser->tree()->topLevelItemCount() == 3; }, 60000);
+    for (std::thread& sender : senders) {
+        sender.join();
+    }
+    EXPECT_TRUE(listed) << browser->tree()->topLevelItemCount() << " studies listed";
+    for (std::size_t i = 0; i < 3; ++i) {
+        EXPECT_EQ(accepted[i], static_cast<std::size_t>(kSlices)) << "modality " << i + 1;
+    }
+    EXPECT_TRUE(waitUntil([&] { return listener()->committedInstances() == 3U * kSlices; }, 10000));
+    EXPECT_EQ(listener()->state(), ListenerService::State::Running);
+    EXPECT_TRUE(window_->isVisible());
+}
+
 TEST_F(PacsGuiTest, NodeNotAllowedToPushIsRefused) {
     restartWith(settings(true, false));
     LocalStudiesBrowser* browser = openBrowser();
