@@ -66,7 +66,7 @@ void ConnectionGate::run() {
         fds.push_back({listening_.get(), POLLIN, 0});
         auto next = std::chrono::steady_clock::time_point::max();
         for (const Pending& p : pending_) {
-            fds.push_back({p.socket.get(), POLLIN, 0});
+            fds.push_back({p.socket.get(), POLLIN | POLLRDHUP, 0});
             next = std::min(next, p.deadline);
         }
         int timeoutMs = -1;
@@ -104,6 +104,12 @@ void ConnectionGate::run() {
                         drop(std::move(p), {});
                         continue;
                     case Verdict::Wait:
+                        // Part of a request, then the peer closed its side:
+                        // nothing more will come (and poll() would not wait).
+                        if ((fds[i + 2].revents & (POLLRDHUP | POLLHUP | POLLERR)) != 0) {
+                            drop(std::move(p), "closed before its whole association request");
+                            continue;
+                        }
                         break;
                 }
             }
