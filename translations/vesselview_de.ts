@@ -934,16 +934,16 @@ Ersetzen?</translation>
         <translation>Maximale Assoziationsgröße:</translation>
     </message>
     <message>
-        <source>Defaults: %1 associations, %2 per address, %3 in all, %4 s, %5 GB per instance, %6 GB per association. Addresses that are no configured node get at most %7 connections each, %8 together.</source>
-        <translation>Standardwerte: %1 Assoziationen, %2 je Adresse, %3 insgesamt, %4 s, %5 GB je Instanz, %6 GB je Assoziation. Adressen, die kein eingerichteter Knoten sind, erhalten höchstens %7 Verbindungen je Adresse, %8 zusammen.</translation>
-    </message>
-    <message>
         <source>Restore Defaults</source>
         <translation>Standardwerte wiederherstellen</translation>
     </message>
     <message>
         <source>Put the defaults into these fields; OK saves them</source>
         <translation>Die Standardwerte in diese Felder eintragen; OK speichert sie</translation>
+    </message>
+    <message>
+        <source>Defaults: %1 associations, %2 per address, %3 in all, %4, %5 per instance, %6 per association. Addresses that are no configured node get at most %7 connections each, %8 together.</source>
+        <translation>Standardwerte: %1 Assoziationen, %2 je Adresse, %3 insgesamt, %4, %5 je Instanz, %6 je Assoziation. Adressen, die kein eingerichteter Knoten sind, erhalten höchstens %7 Verbindungen je Adresse, %8 zusammen.</translation>
     </message>
 </context>
 <context>

@@ -213,9 +213,10 @@ TEST_F(PacsBrowserGuiTest, ListenerLimitsAreEditedInPreferencesAndSurviveARestar
     EXPECT_EQ(limits->instanceBox()->text(), QStringLiteral("4.00 GB"));
     EXPECT_EQ(limits->associationBox()->text(), QStringLiteral("50.00 GB"));
     EXPECT_EQ(limits->defaultsLabel()->text(),
-              QStringLiteral("Defaults: 16 associations, 8 per address, 64 in all, 5 s, 4 GB per "
-                             "instance, 50 GB per association. Addresses that are no configured "
-                             "node get at most 2 connections each, 8 together."));
+              QStringLiteral("Defaults: 16 associations, 8 per address, 64 in all, 5\u00a0s, "
+                             "4\u00a0GB per instance, 50\u00a0GB per association. Addresses that "
+                             "are no configured node get at most 2 connections each, 8 together."))
+        << "a number and its unit (no-break space) are never split";
     // The ranges follow each other: nothing entered can be refused as not fitting together.
     limits->associationsBox()->setValue(100);
     EXPECT_EQ(limits->connectionsBox()->value(), 100) << "in all follows the associations up";
