@@ -876,6 +876,77 @@ Ersetzen?</translation>
     </message>
 </context>
 <context>
+    <name>vv::gui::ListenerLimitsBox</name>
+    <message>
+        <source>Listener limits</source>
+        <translation>Grenzen des Empfangsdienstes</translation>
+    </message>
+    <message>
+        <source>Associations served at once. One more is refused for now (the sender may try again later), so that many senders at once cannot overload this workstation.</source>
+        <translation>Gleichzeitig bediente Assoziationen. Eine weitere wird vorerst abgelehnt (der Sender kann es später erneut versuchen), damit viele Sender auf einmal diesen Arbeitsplatz nicht überlasten.</translation>
+    </message>
+    <message>
+        <source>Open connections from the address of one configured node, at most the connections in all: one device that misbehaves cannot take every connection.</source>
+        <translation>Offene Verbindungen von der Adresse eines eingerichteten Knotens, höchstens so viele wie Verbindungen insgesamt: Ein Gerät, das sich falsch verhält, kann nicht alle Verbindungen belegen.</translation>
+    </message>
+    <message>
+        <source>Open connections in all, waiting or served, at least the simultaneous associations. A connection over a limit is closed at once.</source>
+        <translation>Offene Verbindungen insgesamt, wartend oder bedient, mindestens so viele wie gleichzeitige Assoziationen. Eine Verbindung über einer Grenze wird sofort geschlossen.</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>Seconds a new connection has to ask for an association before it is dropped: silent or slow connections cannot hold up the listener.</source>
+        <translation>Sekunden, die eine neue Verbindung hat, um eine Assoziation anzufragen, bevor sie getrennt wird: Stumme oder langsame Verbindungen können den Empfangsdienst nicht aufhalten.</translation>
+    </message>
+    <message>
+        <source>A larger instance is refused and not stored; the rest of the association goes on.</source>
+        <translation>Eine größere Instanz wird abgelehnt und nicht gespeichert; der Rest der Assoziation geht weiter.</translation>
+    </message>
+    <message>
+        <source>All instances of one association together, at least the largest instance. The instance that crosses it and all later ones are refused, and nothing of the association is kept.</source>
+        <translation>Alle Instanzen einer Assoziation zusammen, mindestens die größte Instanz. Die Instanz, mit der sie überschritten wird, und alle späteren werden abgelehnt, und von der Assoziation wird nichts behalten.</translation>
+    </message>
+    <message>
+        <source>Sim&amp;ultaneous associations:</source>
+        <translation>G&amp;leichzeitige Assoziationen:</translation>
+    </message>
+    <message>
+        <source>Connections per a&amp;ddress:</source>
+        <translation>Verbindungen je A&amp;dresse:</translation>
+    </message>
+    <message>
+        <source>C&amp;onnections in all:</source>
+        <translation>Verbindungen &amp;insgesamt:</translation>
+    </message>
+    <message>
+        <source>Association re&amp;quest deadline:</source>
+        <translation>&amp;Frist für die Assoziationsanfrage:</translation>
+    </message>
+    <message>
+        <source>Lar&amp;gest instance:</source>
+        <translation>&amp;Maximale Instanzgröße:</translation>
+    </message>
+    <message>
+        <source>Largest association:</source>
+        <translation>Maximale Assoziationsgröße:</translation>
+    </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Standardwerte wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Put the defaults into these fields; OK saves them</source>
+        <translation>Die Standardwerte in diese Felder eintragen; OK speichert sie</translation>
+    </message>
+    <message>
+        <source>Defaults: %1 associations, %2 per address, %3 in all, %4, %5 per instance, %6 per association. Addresses that are no configured node get at most %7 connections each, %8 together.</source>
+        <translation>Standardwerte: %1 Assoziationen, %2 je Adresse, %3 insgesamt, %4, %5 je Instanz, %6 je Assoziation. Adressen, die kein eingerichteter Knoten sind, erhalten höchstens %7 Verbindungen je Adresse, %8 zusammen.</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ListenerService</name>
     <message>
         <source>DICOM listener: port %1</source>
@@ -1579,10 +1650,6 @@ Ersetzen?</translation>
         <translation>&amp;Ordner:</translation>
     </message>
     <message>
-        <source> GB</source>
-        <translation> GB</translation>
-    </message>
-    <message>
         <source>No limit</source>
         <translation>Keine Grenze</translation>
     </message>
@@ -1725,6 +1792,10 @@ Ersetzen?</translation>
     <message>
         <source>Not saved: the AE title, host or port of the node &quot;%1&quot; is not valid.</source>
         <translation>Nicht gespeichert: AE-Titel, Host oder Port des Knotens „%1“ sind ungültig.</translation>
+    </message>
+    <message>
+        <source>Not saved: the listener limits do not fit together.</source>
+        <translation>Nicht gespeichert: Die Grenzen des Empfangsdienstes passen nicht zusammen.</translation>
     </message>
 </context>
 <context>
@@ -1986,6 +2057,10 @@ Ersetzen?</translation>
     <message>
         <source>Details: %1</source>
         <translation>Details: %1</translation>
+    </message>
+    <message>
+        <source> GB</source>
+        <translation> GB</translation>
     </message>
 </context>
 <context>

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <csignal>
 #include <cstdint>
+#include <limits>
 #include <optional>
 #include <ostream>
 #include <thread>
@@ -12,6 +13,7 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
+#include "common/ListenerLimitRanges.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
@@ -46,8 +48,10 @@ pacs::Node parseNode(const std::string& text, const Arguments& a) {
     return node;
 }
 
-/// "BYTES", "NMB" or "NGB" (decimal: 1 GB = 10^9 bytes) -> bytes; at least 1 MB.
-std::uint64_t parseStoreLimit(const std::string& text, const Arguments& a) {
+/// `option`'s value "BYTES", "NMB" or "NGB" (decimal: 1 GB = 10^9 bytes) in
+/// bytes, at least `least` (`leastText`: how the message says it).
+std::uint64_t parseBytes(const std::string& text, const std::string& option, std::uint64_t least,
+                         const std::string& leastText, const Arguments& a) {
     std::string digits = text;
     std::uint64_t unit = 1;
     for (const auto& [suffix, factor] : {std::pair{"GB", 1000000000ULL}, {"MB", 1000000ULL}}) {
@@ -57,15 +61,76 @@ std::uint64_t parseStoreLimit(const std::string& text, const Arguments& a) {
             unit = factor;
         }
     }
-    if (digits.empty() || digits.size() > 12 ||
-        digits.find_first_not_of("0123456789") != std::string::npos) {
-        a.fail("--store-limit takes BYTES, NMB or NGB, not '" + text + "'");
+    if (digits.empty() || digits.find_first_not_of("0123456789") != std::string::npos) {
+        a.fail(option + " takes BYTES, NMB or NGB, not '" + text + "'");
     }
-    const std::uint64_t bytes = std::stoull(digits) * unit;
-    if (bytes < 1000000ULL) {
-        a.fail("--store-limit must be at least 1MB");
+    const auto first = digits.find_first_not_of('0');
+    const std::string significant = first == std::string::npos ? "0" : digits.substr(first);
+    constexpr std::uint64_t kMost = std::numeric_limits<std::uint64_t>::max();
+    if (significant.size() > 19 || std::stoull(significant) > kMost / unit) {
+        a.fail(option + " '" + text + "' is too large");
+    }
+    const std::uint64_t bytes = std::stoull(significant) * unit;
+    if (bytes < least) {
+        a.fail(option + " must be at least " + leastText);
     }
     return bytes;
+}
+
+/// Takes the listener limit option `name` into `l` (a value out of the
+/// limit's range is a usage error naming the option); false when `name` is
+/// no limit option.
+bool parseLimit(const std::string& name, Arguments& a, pacs::ListenerLimits& l) {
+    const auto count = [&a, &name](int most) { return parseWholeNumber(a.value(), name, 1, most); };
+    if (name == "--max-associations") {
+        l.maxAssociations = count(app::kMaxListenerAssociations);
+    } else if (name == "--max-per-address") {
+        l.maxConnectionsPerAddress = count(app::kMaxListenerConnections);
+    } else if (name == "--max-connections") {
+        l.maxConnections = count(app::kMaxListenerConnections);
+    } else if (name == "--request-timeout") {
+        l.requestSeconds = count(app::kMaxListenerRequestSeconds);
+    } else if (name == "--max-instance") {
+        l.maxInstanceBytes =
+            parseBytes(a.value(), name, app::kMinListenerInstanceBytes, "1000 bytes", a);
+    } else if (name == "--max-association") {
+        l.maxAssociationBytes =
+            parseBytes(a.value(), name, app::kMinListenerInstanceBytes, "1000 bytes", a);
+    } else {
+        return false;
+    }
+    return true;
+}
+
+/// Limits that do not fit together are a usage error naming both options
+/// (with the values in force: given or default); then validate() has the
+/// last word.
+void checkLimits(const pacs::ListenerLimits& l, const Arguments& a) {
+    const auto conflict = [&a](const std::string& option, std::uint64_t value,
+                               const std::string& rule, const std::string& other,
+                               std::uint64_t otherValue) {
+        a.fail(option + " (" + std::to_string(value) + ") must be " + rule + " " + other + " (" +
+               std::to_string(otherValue) + ")");
+    };
+    if (l.maxConnections < l.maxAssociations) {
+        conflict("--max-connections", l.maxConnections, "at least", "--max-associations",
+                 l.maxAssociations);
+    }
+    if (l.maxConnectionsPerAddress > l.maxConnections) {
+        conflict("--max-per-address", l.maxConnectionsPerAddress, "at most", "--max-connections",
+                 l.maxConnections);
+    }
+    if (l.maxAssociationBytes < l.maxInstanceBytes) {
+        conflict("--max-association", l.maxAssociationBytes, "at least", "--max-instance",
+                 l.maxInstanceBytes);
+    }
+    try {
+        l.validate();
+    } catch (const InvalidArgumentError& e) {
+        a.fail(std::string(e.what()) +
+               " (--max-associations, --max-per-address, --max-connections, --request-timeout, "
+               "--max-instance, --max-association)");
+    }
 }
 
 /// The options every subcommand shares, and the ones only some take.
@@ -81,6 +146,8 @@ struct Options {
     pacs::TlsSettings tls;
     std::uint16_t port = 0;
     std::uint64_t storeLimit = 0;
+    pacs::ListenerLimits limits;
+    std::string limitOption;  ///< the first listener limit given ("" when none)
     std::string bind = "0.0.0.0";
     bool move = false;
     int seconds = 0;
@@ -118,7 +185,9 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
         } else if (n == "--store") {
             o.store = a.path();
         } else if (n == "--store-limit" && (sub == "get" || sub == "listen")) {
-            o.storeLimit = parseStoreLimit(a.value(), a);
+            o.storeLimit = parseBytes(a.value(), n, 1000000ULL, "1MB", a);
+        } else if ((sub == "get" || sub == "listen") && parseLimit(n, a, o.limits)) {
+            o.limitOption = o.limitOption.empty() ? n : o.limitOption;
         } else if (n == "--allow") {
             o.allowed.push_back(parseNode(a.value() + ":104", a));
         } else if (n == "--port") {
@@ -155,6 +224,10 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
     if (o.tls.enabled && listens && o.tls.certificate.empty()) {
         a.fail("a TLS listener needs --tls-cert and --tls-key");
     }
+    if (!listens && !o.limitOption.empty()) {
+        a.fail(o.limitOption + " needs --move: only our listener has limits");
+    }
+    checkLimits(o.limits, a);
     if (o.node) {
         o.node->tls = o.tls;
     }
@@ -171,6 +244,19 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
         a.fail("needs at least one FILE");
     }
     return o;
+}
+
+/// Our listener as the options set it up, letting in `allowed`.
+pacs::ListenerConfig listenerConfig(const Options& o, std::vector<pacs::Node> allowed) {
+    pacs::ListenerConfig config;
+    config.aeTitle = o.me.aeTitle;
+    config.port = o.port;
+    config.allowedPeers = std::move(allowed);
+    config.bindAddress = o.bind;
+    config.timeouts = o.me.timeouts;
+    config.tls = o.tls;
+    config.limits = o.limits;
+    return config;
 }
 
 int find(const Options& o, std::ostream& out) {
@@ -212,14 +298,7 @@ int get(const Options& o, std::ostream& out) {
     const pacs::RetrieveRequest request{o.studyUid, o.seriesUid};
     std::size_t instances = 0;
     if (o.move) {
-        pacs::ListenerConfig config;
-        config.aeTitle = o.me.aeTitle;
-        config.port = o.port;
-        config.allowedPeers = {*o.node};
-        config.bindAddress = o.bind;
-        config.timeouts = o.me.timeouts;
-        config.tls = o.tls;
-        const pacs::StorageScp listener(store, config);
+        const pacs::StorageScp listener(store, listenerConfig(o, {*o.node}));
         instances = pacs::moveTo(o.me.aeTitle, o.me, *o.node, request).instances;
         // The peer's storing association ends before its last C-MOVE response
         // in general; wait (bounded) until the listener has committed it.
@@ -253,18 +332,11 @@ int send(const Options& o, std::ostream& out) {
 int listen(const Options& o, std::ostream& out) {
     pacs::LocalStore store(o.store);
     store.setSizeLimit(o.storeLimit);
-    pacs::ListenerConfig config;
-    config.aeTitle = o.me.aeTitle;
-    config.port = o.port;
-    config.allowedPeers = o.allowed;
-    config.bindAddress = o.bind;
-    config.timeouts = o.me.timeouts;
-    config.tls = o.tls;
     gStop = 0;
     std::signal(SIGINT, onStopSignal);
     std::signal(SIGTERM, onStopSignal);
     {
-        const pacs::StorageScp listener(store, config);
+        const pacs::StorageScp listener(store, listenerConfig(o, o.allowed));
         out << "listening as " << o.me.aeTitle << " on " << o.bind << ":" << o.port << std::endl;
         const auto end = std::chrono::steady_clock::now() + std::chrono::seconds(o.seconds);
         while (gStop == 0 && (o.seconds == 0 || std::chrono::steady_clock::now() < end)) {

@@ -11,6 +11,7 @@
 #include <QComboBox>
 #include <QDateEdit>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -29,9 +30,12 @@
 #include <memory>
 #include <string>
 
+#include "IdleConnection.h"
 #include "PacsGuiFixture.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/DicomMenu.h"
+#include "gui/pacs/ListenerLimitsBox.h"
+#include "gui/pacs/ListenerService.h"
 #include "gui/pacs/NetworkPreferencesDialog.h"
 #include "gui/pacs/NodeEditDialog.h"
 #include "gui/pacs/PacsBrowser.h"
@@ -195,6 +199,93 @@ TEST_F(PacsBrowserGuiTest, ListenerTlsIsEditedInPreferencesAndRefusedWithoutItsF
     auto* again = preferences();
     EXPECT_TRUE(again->listenerTlsBox()->isChecked());
     EXPECT_EQ(again->listenerTlsBox()->keyEdit()->text(), QStringLiteral("/etc/vv/ours.key"));
+}
+
+TEST_F(PacsBrowserGuiTest, ListenerLimitsAreEditedInPreferencesAndSurviveARestart) {
+    auto* dialog = preferences();
+    vv::gui::ListenerLimitsBox* limits = dialog->listenerLimitsBox();
+    ASSERT_NE(limits, nullptr);
+    const vv::pacs::ListenerLimits defaults;
+    EXPECT_EQ(limits->associationsBox()->value(), defaults.maxAssociations);
+    EXPECT_EQ(limits->connectionsBox()->value(), defaults.maxConnections);
+    EXPECT_EQ(limits->perAddressBox()->value(), defaults.maxConnectionsPerAddress);
+    EXPECT_EQ(limits->requestSecondsBox()->text(), QStringLiteral("5 s"));
+    EXPECT_EQ(limits->instanceBox()->text(), QStringLiteral("4.00 GB"));
+    EXPECT_EQ(limits->associationBox()->text(), QStringLiteral("50.00 GB"));
+    EXPECT_EQ(limits->defaultsLabel()->text(),
+              QStringLiteral("Defaults: 16 associations, 8 per address, 64 in all, 5\u00a0s, "
+                             "4\u00a0GB per instance, 50\u00a0GB per association. Addresses that "
+                             "are no configured node get at most 2 connections each, 8 together."))
+        << "a number and its unit (no-break space) are never split";
+    // The ranges follow each other: nothing entered can be refused as not fitting together.
+    limits->associationsBox()->setValue(100);
+    EXPECT_EQ(limits->connectionsBox()->value(), 100) << "in all follows the associations up";
+    limits->connectionsBox()->setValue(1);
+    EXPECT_EQ(limits->connectionsBox()->value(), 100) << "in all below the associations";
+    limits->perAddressBox()->setValue(500);
+    EXPECT_EQ(limits->perAddressBox()->value(), 100) << "per address above in all";
+    limits->instanceBox()->setValue(60.0);
+    EXPECT_DOUBLE_EQ(limits->associationBox()->value(), 60.0);
+
+    limits->associationsBox()->setValue(4);
+    limits->connectionsBox()->setValue(12);
+    limits->perAddressBox()->setValue(1);
+    limits->requestSecondsBox()->setValue(60);
+    limits->instanceBox()->setValue(0.5);
+    limits->associationBox()->setValue(2.5);
+    QPointer<vv::gui::NetworkPreferencesDialog> guard(dialog);
+    clickOk(dialog);
+    EXPECT_TRUE(waitUntil([&] { return guard == nullptr || !guard->isVisible(); }, 5000))
+        << dialog->error().toStdString();
+    const vv::pacs::ListenerLimits saved = vv::gui::readPacsSettings(QSettings()).listenerLimits;
+    EXPECT_EQ(saved.maxAssociations, 4);
+    EXPECT_EQ(saved.maxConnections, 12);
+    EXPECT_EQ(saved.maxConnectionsPerAddress, 1);
+    EXPECT_EQ(saved.requestSeconds, 60);
+    EXPECT_EQ(saved.maxInstanceBytes, 500'000'000ULL);  // GB of 10^9 bytes, as --max-instance
+    EXPECT_EQ(saved.maxAssociationBytes, 2'500'000'000ULL);
+
+    // A new window, as after a restart, shows them; Restore Defaults puts the defaults back.
+    window_ = std::make_unique<vv::gui::MainWindow>();
+    auto* again = preferences();
+    limits = again->listenerLimitsBox();
+    EXPECT_EQ(limits->associationsBox()->value(), 4);
+    EXPECT_EQ(limits->connectionsBox()->value(), 12);
+    EXPECT_EQ(limits->perAddressBox()->value(), 1);
+    EXPECT_EQ(limits->requestSecondsBox()->value(), 60);
+    EXPECT_EQ(limits->instanceBox()->text(), QStringLiteral("0.50 GB"));
+    EXPECT_EQ(limits->associationBox()->text(), QStringLiteral("2.50 GB"));
+    limits->restoreButton()->click();
+    guard = again;
+    clickOk(again);
+    EXPECT_TRUE(waitUntil([&] { return guard == nullptr || !guard->isVisible(); }, 5000));
+    const vv::pacs::ListenerLimits restored = vv::gui::readPacsSettings(QSettings()).listenerLimits;
+    EXPECT_EQ(restored.maxAssociations, defaults.maxAssociations);
+    EXPECT_EQ(restored.maxConnections, defaults.maxConnections);
+    EXPECT_EQ(restored.maxConnectionsPerAddress, defaults.maxConnectionsPerAddress);
+    EXPECT_EQ(restored.requestSeconds, defaults.requestSeconds);
+    EXPECT_EQ(restored.maxInstanceBytes, defaults.maxInstanceBytes);
+    EXPECT_EQ(restored.maxAssociationBytes, defaults.maxAssociationBytes);
+}
+
+/// Needs the listener core of issue 31 (the per-address cap).
+TEST_F(PacsBrowserGuiTest, ListenerLimitsSetInPreferencesReachTheRunningListener) {
+    auto* dialog = preferences();
+    dialog->listenerBox()->setChecked(true);
+    dialog->listenerLimitsBox()->perAddressBox()->setValue(1);
+    dialog->listenerLimitsBox()->requestSecondsBox()->setValue(60);  // the first stays open
+    QPointer<vv::gui::NetworkPreferencesDialog> guard(dialog);
+    clickOk(dialog);
+    ASSERT_TRUE(waitUntil([&] { return guard == nullptr || !guard->isVisible(); }, 5000));
+    ASSERT_EQ(window_->listenerService()->state(), vv::gui::ListenerService::State::Running)
+        << window_->listenerService()->stateText().toStdString();
+    // 127.0.0.1 is a configured node's host (Orthanc): one connection from it at a time.
+    const vv::test::IdleConnection first(listenerPort_);
+    ASSERT_TRUE(first.connected());
+    const vv::test::IdleConnection second(listenerPort_);
+    EXPECT_TRUE(waitUntil([&] { return second.closedByPeer(); }, 10000))
+        << "a second connection from 127.0.0.1 stays open over a cap of 1 per address";
+    EXPECT_FALSE(first.closedByPeer()) << "the connection within the cap was closed";
 }
 
 TEST_F(PacsBrowserGuiTest, QueryShowsTheStudyAndItsSeries) {

@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <QCoreApplication>
+#include <QDoubleSpinBox>
+#include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
 #include <QPushButton>
@@ -17,6 +19,7 @@
 #include "ClippingCheck.h"
 #include "PacsGuiFixture.h"
 #include "UiLanguage.h"
+#include "gui/pacs/ListenerLimitsBox.h"
 
 namespace {
 
@@ -50,6 +53,18 @@ TEST_P(PacsGuiLanguageTest, PreferencesShowEveryTextInFull) {
     auto* dialog = preferences();
     dialog->nodeTable()->selectRow(0);
     expectWhole(*dialog, "pacs-preferences");
+    // The listener limits among them: in the UI language, numbers in its locale.
+    const bool german = QLatin1String(GetParam()) == QLatin1String("de");
+    const vv::gui::ListenerLimitsBox* limits = dialog->listenerLimitsBox();
+    EXPECT_TRUE(limits->isVisible());
+    EXPECT_EQ(limits->title(), german ? QStringLiteral("Grenzen des Empfangsdienstes")
+                                      : QStringLiteral("Listener limits"));
+    EXPECT_EQ(limits->associationBox()->text(),
+              german ? QStringLiteral("50,00 GB") : QStringLiteral("50.00 GB"));
+    EXPECT_TRUE(limits->defaultsLabel()->text().startsWith(
+        german ? QStringLiteral("Standardwerte: 16 Assoziationen")
+               : QStringLiteral("Defaults: 16 associations")))
+        << limits->defaultsLabel()->text().toStdString();
     QPointer<vv::gui::NodeEditDialog> edit = openNodeDialog(dialog, dialog->editButton());
     ASSERT_NE(edit, nullptr);
     expectWhole(*edit, "pacs-node");

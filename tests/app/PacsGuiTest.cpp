@@ -510,6 +510,26 @@ TEST_F(PacsGuiTest, UnderLoadTheWindowWorksOnAndLocalStudiesFillsInByItself) {
     EXPECT_TRUE(window_->isVisible());
 }
 
+/// New limits (as Preferences applies them) restart the listener with them
+/// (its counters start again); the same settings again keep it running.
+TEST_F(PacsGuiTest, NewListenerLimitsRestartTheListener) {
+    PacsSettings s = settings();
+    listener()->apply(s);
+    ASSERT_EQ(listener()->state(), ListenerService::State::Running);
+    const vv::pacs::Node ourListener{kOurAe, "127.0.0.1", scpPort_, {}};
+    const vv::pacs::LocalAe stranger{"STRANGER", vv::pacs::Timeouts{2, 5, 10}};
+    EXPECT_THROW(vv::pacs::echo(stranger, ourListener), vv::pacs::AssociationRejectedError);
+    ASSERT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
+    listener()->apply(s);
+    EXPECT_EQ(listener()->refusedAssociations(), 1U) << "restarted without a change";
+    s.listenerLimits.requestSeconds = 30;
+    listener()->apply(s);
+    EXPECT_EQ(listener()->state(), ListenerService::State::Running);
+    EXPECT_EQ(listener()->refusedAssociations(), 0U) << "new limits, but the listener ran on";
+    EXPECT_THROW(vv::pacs::echo(stranger, ourListener), vv::pacs::AssociationRejectedError);
+    EXPECT_TRUE(waitUntil([&] { return listener()->refusedAssociations() == 1; }, 5000));
+}
+
 TEST_F(PacsGuiTest, NodeNotAllowedToPushIsRefused) {
     restartWith(settings(true, false));
     LocalStudiesBrowser* browser = openBrowser();

@@ -6,10 +6,14 @@
 #include <QSettings>
 #include <QTemporaryDir>
 #include <filesystem>
+#include <functional>
 #include <memory>
+#include <string>
 
+#include "common/ListenerLimitRanges.h"
 #include "gui/pacs/PacsSettings.h"
 #include "vv/core/Error.h"
+#include "vv/pacs/StorageScp.h"
 
 namespace vv::gui {
 namespace {
@@ -21,6 +25,15 @@ PacsNode node(std::string name, std::string ae, std::string host, std::uint16_t 
     n.node.host = std::move(host);
     n.node.port = port;
     return n;
+}
+
+/// The six limits as one comparable text.
+std::string limitsText(const pacs::ListenerLimits& l) {
+    return std::to_string(l.maxAssociations) + " associations, " +
+           std::to_string(l.maxConnectionsPerAddress) + " per address, " +
+           std::to_string(l.maxConnections) + " in all, " + std::to_string(l.requestSeconds) +
+           " s, " + std::to_string(l.maxInstanceBytes) + " B per instance, " +
+           std::to_string(l.maxAssociationBytes) + " B per association";
 }
 
 class PacsSettingsTest : public ::testing::Test {
@@ -198,6 +211,138 @@ TEST_F(PacsSettingsTest, TheStoreOfTheSettingsHasTheirSizeLimit) {
     EXPECT_TRUE(std::filesystem::is_directory(s.storeFolder));
     s.storeLimitBytes = 0;
     EXPECT_EQ(openStore(s).sizeLimit(), 0U);
+}
+
+TEST_F(PacsSettingsTest, ListenerLimitsAreWrittenAndReadBack) {
+    PacsSettings s;
+    s.listenerLimits.maxAssociations = 4;
+    s.listenerLimits.maxConnectionsPerAddress = 1;
+    s.listenerLimits.maxConnections = 12;
+    s.listenerLimits.requestSeconds = 60;
+    s.listenerLimits.maxInstanceBytes = 500'000'000;
+    s.listenerLimits.maxAssociationBytes = 123'000'000'000ULL;  // beyond 32 bits
+    writePacsSettings(s, store_);
+    store_.sync();
+    // As the next start reads them: from the file.
+    const QSettings again(store_.fileName(), QSettings::IniFormat);
+    EXPECT_EQ(limitsText(readPacsSettings(again).listenerLimits), limitsText(s.listenerLimits));
+    EXPECT_EQ(again.value(QStringLiteral("pacs/listener/maxConnectionsPerAddress")).toInt(), 1);
+}
+
+TEST_F(PacsSettingsTest, MissingListenerLimitsTakeTheDefaults) {
+    EXPECT_EQ(limitsText(readPacsSettings(store_).listenerLimits),
+              limitsText(pacs::ListenerLimits{}));
+    store_.setValue(QStringLiteral("pacs/listener/maxAssociations"), 32);
+    store_.setValue(QStringLiteral("pacs/listener/maxInstanceBytes"), 2'000'000'000ULL);
+    pacs::ListenerLimits expected;
+    expected.maxAssociations = 32;
+    expected.maxInstanceBytes = 2'000'000'000ULL;
+    EXPECT_EQ(limitsText(readPacsSettings(store_).listenerLimits), limitsText(expected));
+}
+
+TEST_F(PacsSettingsTest, InvalidListenerLimitsWrittenByHandAreSkippedNotGuessed) {
+    const pacs::ListenerLimits defaults;
+    const auto readWith = [this](const char* name, const QVariant& value) {
+        store_.remove(QStringLiteral("pacs"));
+        store_.setValue(QStringLiteral("pacs/listener/requestSeconds"), 30);  // valid: kept
+        store_.setValue(QStringLiteral("pacs/listener/") + QLatin1String(name), value);
+        return readPacsSettings(store_).listenerLimits;
+    };
+    for (const QVariant& bad : {QVariant(0), QVariant(257), QVariant(QStringLiteral("abc")),
+                                QVariant(QStringLiteral("8.5")), QVariant(-3)}) {
+        const pacs::ListenerLimits l = readWith("maxAssociations", bad);
+        EXPECT_EQ(l.maxAssociations, defaults.maxAssociations) << bad.toString().toStdString();
+        EXPECT_EQ(l.requestSeconds, 30);
+    }
+    EXPECT_EQ(readWith("maxConnections", 1025).maxConnections, defaults.maxConnections);
+    EXPECT_EQ(readWith("maxConnectionsPerAddress", 0).maxConnectionsPerAddress,
+              defaults.maxConnectionsPerAddress);
+    EXPECT_EQ(readWith("requestSeconds", 121).requestSeconds, defaults.requestSeconds);
+    for (const QVariant& bad :
+         {QVariant(999), QVariant(QStringLiteral("-5")), QVariant(QStringLiteral("4GB"))}) {
+        const pacs::ListenerLimits l = readWith("maxInstanceBytes", bad);
+        EXPECT_EQ(l.maxInstanceBytes, defaults.maxInstanceBytes) << bad.toString().toStdString();
+        EXPECT_EQ(l.requestSeconds, 30);
+    }
+
+    // Limits that do not fit together: those skipped together, the others kept.
+    store_.remove(QStringLiteral("pacs"));
+    store_.setValue(QStringLiteral("pacs/listener/maxAssociations"), 32);
+    store_.setValue(QStringLiteral("pacs/listener/maxConnections"), 20);  // below 32
+    store_.setValue(QStringLiteral("pacs/listener/maxConnectionsPerAddress"), 2);
+    store_.setValue(QStringLiteral("pacs/listener/maxInstanceBytes"), 1'000'000'000ULL);
+    pacs::ListenerLimits expected;
+    expected.maxInstanceBytes = 1'000'000'000ULL;
+    EXPECT_EQ(limitsText(readPacsSettings(store_).listenerLimits), limitsText(expected));
+    store_.setValue(QStringLiteral("pacs/listener/maxConnections"), 40);  // now they fit
+    store_.setValue(QStringLiteral("pacs/listener/maxAssociationBytes"), 900'000'000ULL);
+    expected = {};
+    expected.maxAssociations = 32;
+    expected.maxConnections = 40;
+    expected.maxConnectionsPerAddress = 2;
+    EXPECT_EQ(limitsText(readPacsSettings(store_).listenerLimits), limitsText(expected))
+        << "the largest association below the largest instance: both sizes are the defaults";
+}
+
+TEST_F(PacsSettingsTest, WritingRefusesListenerLimitsThatDoNotFitTogether) {
+    PacsSettings good;
+    good.listenerLimits.maxAssociations = 4;
+    writePacsSettings(good, store_);
+    const auto refusal = [this](const PacsSettings& bad) -> std::string {
+        try {
+            writePacsSettings(bad, store_);
+        } catch (const PacsSettingsError& e) {
+            EXPECT_EQ(e.setting(), PacsSettingsError::Setting::ListenerLimits) << e.what();
+            return e.what();
+        }
+        return "written";
+    };
+    PacsSettings bad = good;
+    bad.listenerLimits.maxConnections = 3;  // below the 4 associations
+    EXPECT_NE(refusal(bad).find("connections in all"), std::string::npos) << refusal(bad);
+    bad = good;
+    bad.listenerLimits.maxConnectionsPerAddress = 65;  // above the 64 in all
+    EXPECT_NE(refusal(bad).find("per address"), std::string::npos) << refusal(bad);
+    bad = good;
+    bad.listenerLimits.maxAssociationBytes = bad.listenerLimits.maxInstanceBytes - 1;
+    EXPECT_NE(refusal(bad).find("largest association"), std::string::npos) << refusal(bad);
+    bad = good;
+    bad.listenerLimits.requestSeconds = 0;
+    EXPECT_NE(refusal(bad).find("deadline"), std::string::npos) << refusal(bad);
+    EXPECT_EQ(readPacsSettings(store_).listenerLimits.maxAssociations, 4) << "nothing written";
+}
+
+/// What the front ends offer limit by limit (ListenerLimitRanges.h) is what
+/// ListenerLimits::validate() allows: its ends pass, one beyond is refused.
+TEST_F(PacsSettingsTest, TheListenerLimitRangesOfTheFrontEndsAreThoseValidateAllows) {
+    const auto passes = [](const std::function<void(pacs::ListenerLimits&)>& set) {
+        pacs::ListenerLimits l;
+        l.maxConnections = app::kMaxListenerConnections;  // room for the others
+        set(l);
+        try {
+            l.validate();
+            return true;
+        } catch (const InvalidArgumentError&) {
+            return false;
+        }
+    };
+    for (const int n : {1, app::kMaxListenerAssociations}) {
+        EXPECT_TRUE(passes([n](auto& l) { l.maxAssociations = n; })) << n;
+    }
+    EXPECT_FALSE(passes([](auto& l) { l.maxAssociations = 0; }));
+    EXPECT_FALSE(passes([](auto& l) { l.maxAssociations = app::kMaxListenerAssociations + 1; }));
+    for (const int n : {1, app::kMaxListenerConnections}) {
+        EXPECT_TRUE(passes([n](auto& l) { l.maxConnectionsPerAddress = n; })) << n;
+    }
+    EXPECT_FALSE(passes([](auto& l) { l.maxConnectionsPerAddress = 0; }));
+    EXPECT_FALSE(passes([](auto& l) { l.maxConnections = app::kMaxListenerConnections + 1; }));
+    for (const int n : {1, app::kMaxListenerRequestSeconds}) {
+        EXPECT_TRUE(passes([n](auto& l) { l.requestSeconds = n; })) << n;
+    }
+    EXPECT_FALSE(passes([](auto& l) { l.requestSeconds = 0; }));
+    EXPECT_FALSE(passes([](auto& l) { l.requestSeconds = app::kMaxListenerRequestSeconds + 1; }));
+    EXPECT_TRUE(passes([](auto& l) { l.maxInstanceBytes = app::kMinListenerInstanceBytes; }));
+    EXPECT_FALSE(passes([](auto& l) { l.maxInstanceBytes = app::kMinListenerInstanceBytes - 1; }));
 }
 
 }  // namespace

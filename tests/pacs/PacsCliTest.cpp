@@ -2,20 +2,31 @@
 // `vesselview-cli pacs echo|find|get|send|listen` against a real Orthanc
 // (OrthancServer): outputs, the store it fills, and exit status 5 when the
 // peer refuses or fails.
+#include <fcntl.h>
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
+#include <csignal>
 #include <filesystem>
 #include <fstream>
 #include <future>
+#include <iterator>
+#include <memory>
+#include <string>
 #include <thread>
+#include <utility>
+#include <vector>
 
 #include "CliRun.h"
+#include "IdleConnection.h"
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Send.h"
+#include "vv/pacs/StorageScp.h"
 
 namespace fs = std::filesystem;
 using vv::test::runCli;
@@ -143,6 +154,207 @@ TEST(PacsCliTest, BadNodeIsUsageError) {
         runCli({"pacs", "listen", "--store", "/tmp/s", "--port", "1", "--tls-ca", "ca.pem"}).code,
         2)
         << "a TLS listener needs its certificate";
+}
+
+/// The listener's limits on `pacs listen` and `pacs get --move`: a value out
+/// of its range, or limits that do not fit together, are usage errors naming
+/// the options; only a listener takes them.
+TEST(PacsCliTest, ListenerLimitsOutOfRangeOrNotFittingAreUsageErrorsNamingTheOption) {
+    const std::vector<std::string> listen = {"pacs", "listen", "--store", "/tmp/s", "--port", "1"};
+    const std::vector<std::vector<std::string>> bad = {
+        {"--max-associations", "0"},   {"--max-associations", "257"},
+        {"--max-associations", "two"}, {"--max-per-address", "0"},
+        {"--max-per-address", "1025"}, {"--max-connections", "0"},
+        {"--max-connections", "1025"}, {"--request-timeout", "0"},
+        {"--request-timeout", "121"},  {"--request-timeout", "1.5"},
+        {"--max-instance", "999"},     {"--max-instance", "1.5GB"},
+        {"--max-instance", "1TB"},     {"--max-association", "GB"},
+        {"--max-association", "-1"},   {"--max-association", "99999999999GB"},
+    };
+    for (const auto& option : bad) {
+        auto args = listen;
+        args.insert(args.end(), option.begin(), option.end());
+        const auto run = runCli(args);
+        EXPECT_EQ(run.code, 2) << option[0] << " " << option[1];
+        EXPECT_NE(run.err.find(option[0]), std::string::npos) << run.err;
+    }
+    // Limits that do not fit together name both options, with the values in force.
+    const std::vector<std::pair<std::vector<std::string>, std::vector<std::string>>> conflicts = {
+        {{"--max-connections", "8"}, {"--max-connections (8)", "--max-associations (16)"}},
+        {{"--max-associations", "100"}, {"--max-connections (64)", "--max-associations (100)"}},
+        {{"--max-per-address", "65"}, {"--max-per-address (65)", "--max-connections (64)"}},
+        {{"--max-association", "1GB"},
+         {"--max-association (1000000000)", "--max-instance (4000000000)"}},
+    };
+    for (const auto& [options, named] : conflicts) {
+        auto args = listen;
+        args.insert(args.end(), options.begin(), options.end());
+        const auto run = runCli(args);
+        EXPECT_EQ(run.code, 2) << options[0];
+        for (const std::string& text : named) {
+            EXPECT_NE(run.err.find(text), std::string::npos) << run.err;
+        }
+    }
+    // Valid limits pass to the listener of get --move, which starts; the node is not there.
+    const auto valid = runCli({"pacs",
+                               "get",
+                               "--node",
+                               "A@127.0.0.1:" + std::to_string(vv::test::freePort()),
+                               "--study",
+                               "1.2.3",
+                               "--store",
+                               (vv::test::processTestDir("pacs-cli") / "limits").string(),
+                               "--move",
+                               "--port",
+                               std::to_string(vv::test::freePort()),
+                               "--max-associations",
+                               "4",
+                               "--max-per-address",
+                               "2",
+                               "--max-connections",
+                               "8",
+                               "--request-timeout",
+                               "30",
+                               "--max-instance",
+                               "500MB",
+                               "--max-association",
+                               "2GB"});
+    EXPECT_EQ(valid.code, 5) << valid.err;
+    EXPECT_NE(valid.err.find("cannot connect"), std::string::npos) << valid.err;
+    // Only a listener has limits: get without --move, and send, refuse them.
+    const auto get = runCli({"pacs", "get", "--node", "A@127.0.0.1:1", "--study", "1.2.3",
+                             "--store", "/tmp/s", "--max-associations", "4"});
+    EXPECT_EQ(get.code, 2);
+    EXPECT_NE(get.err.find("--max-associations needs --move"), std::string::npos) << get.err;
+    EXPECT_EQ(
+        runCli({"pacs", "send", "--node", "A@127.0.0.1:1", "--max-instance", "1GB", "f.dcm"}).code,
+        2);
+    // The store limit's NGB no longer wraps around 2^64 either.
+    const auto huge = runCli({"pacs", "get", "--node", "A@127.0.0.1:1", "--study", "1.2.3",
+                              "--store", "/tmp/s", "--store-limit", "99999999999GB"});
+    EXPECT_EQ(huge.code, 2);
+    EXPECT_NE(huge.err.find("--store-limit"), std::string::npos) << huge.err;
+}
+
+/// --help gives each limit's default as pacs::ListenerLimits has it.
+TEST(PacsCliTest, HelpGivesTheListenerLimitsDefaults) {
+    const auto help = runCli({"--help"});
+    const vv::pacs::ListenerLimits defaults;
+    for (const std::string& text :
+         {"--max-associations N (" + std::to_string(defaults.maxAssociations) + ")",
+          "--max-per-address N (" + std::to_string(defaults.maxConnectionsPerAddress) + ")",
+          "--max-connections N (" + std::to_string(defaults.maxConnections) + ")",
+          "--request-timeout S (" + std::to_string(defaults.requestSeconds) + ")",
+          "--max-instance BYTES|NMB|NGB (" +
+              std::to_string(defaults.maxInstanceBytes / 1000000000) + "GB)",
+          "--max-association SIZE (" + std::to_string(defaults.maxAssociationBytes / 1000000000) +
+              "GB)",
+          "other hosts: " +
+              std::to_string(vv::pacs::ListenerLimits::kStrangerConnectionsPerAddress) + "\n"}) {
+        EXPECT_NE(help.out.find(text), std::string::npos) << text;
+    }
+}
+
+/// `pacs listen` as a program of its own: started with `args`, output into
+/// `log`, stopped with SIGTERM (as a service manager stops it).
+class ListenProcess {
+  public:
+    ListenProcess(std::vector<std::string> args, const fs::path& log)
+        : pid_(spawn(std::move(args), log)) {}
+    ~ListenProcess() { (void)stop(); }
+    ListenProcess(const ListenProcess&) = delete;
+    ListenProcess& operator=(const ListenProcess&) = delete;
+    ListenProcess(ListenProcess&&) = delete;
+    ListenProcess& operator=(ListenProcess&&) = delete;
+
+    /// SIGTERM, and its exit status (-1 when it did not exit normally).
+    int stop() {
+        if (pid_ <= 0) {
+            return -1;
+        }
+        ::kill(pid_, SIGTERM);
+        int status = 0;
+        ::waitpid(pid_, &status, 0);
+        pid_ = -1;
+        return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    }
+
+  private:
+    static pid_t spawn(std::vector<std::string> args, const fs::path& log) {
+        args.insert(args.begin(), VV_CLI_EXE);
+        std::vector<char*> argv;
+        argv.reserve(args.size() + 1);
+        for (std::string& arg : args) {
+            argv.push_back(arg.data());
+        }
+        argv.push_back(nullptr);
+        const pid_t pid = ::fork();
+        if (pid == 0) {
+            // NOLINTNEXTLINE(cppcoreguidelines-pro-type-vararg): POSIX open()
+            const int out = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+            ::dup2(out, 1);
+            ::dup2(out, 2);
+            ::execv(VV_CLI_EXE, argv.data());
+            ::_exit(127);
+        }
+        return pid;
+    }
+
+    pid_t pid_;
+};
+
+/// Connects to 127.0.0.1:`port` once the listener there accepts (at most 20 s).
+std::unique_ptr<vv::test::IdleConnection> connectWhenListening(std::uint16_t port) {
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
+    auto connection = std::make_unique<vv::test::IdleConnection>(port);
+    while (!connection->connected() && std::chrono::steady_clock::now() < deadline) {
+        std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        connection = std::make_unique<vv::test::IdleConnection>(port);
+    }
+    return connection;
+}
+
+/// Needs the listener core of issue 31 (the per-address cap).
+TEST(PacsCliTest, ListenWithOneConnectionPerAddressClosesASecondOne) {
+    const std::uint16_t port = vv::test::freePort();
+    const fs::path folder = vv::test::processTestDir("pacs-cli") / "listen-limits";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    ListenProcess listening({"pacs",
+                             "listen",
+                             "--store",
+                             (folder / "store").string(),
+                             "--port",
+                             std::to_string(port),
+                             "--bind",
+                             "127.0.0.1",
+                             "--allow",
+                             "SENDER@127.0.0.1",
+                             "--for",
+                             "120",
+                             "--max-per-address",
+                             "1",
+                             "--max-associations",
+                             "2",
+                             "--max-connections",
+                             "4",
+                             "--request-timeout",
+                             "60",
+                             "--max-instance",
+                             "500MB",
+                             "--max-association",
+                             "1GB"},
+                            folder / "listen.log");
+    const auto first = connectWhenListening(port);
+    ASSERT_TRUE(first->connected()) << "the listener never came up";
+    const vv::test::IdleConnection second(port);
+    EXPECT_TRUE(second.closedByPeer(10000))
+        << "a second connection from 127.0.0.1 stays open over --max-per-address 1";
+    EXPECT_FALSE(first->closedByPeer()) << "the connection within the cap was closed";
+    EXPECT_EQ(listening.stop(), 0);
+    std::ifstream log(folder / "listen.log");
+    const std::string output{std::istreambuf_iterator<char>(log), {}};
+    EXPECT_NE(output.find("stored 0 instance(s)"), std::string::npos) << output;
 }
 
 TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {

@@ -45,6 +45,13 @@ bool portInUse(const std::string& address, std::uint16_t port) {
 std::string runKey(const PacsSettings& s) {
     std::string key = s.me.aeTitle + '\n' + s.listenerBindAddress + '\n' +
                       std::to_string(s.listenerPort) + '\n' + s.storeFolder.string();
+    const pacs::ListenerLimits& l = s.listenerLimits;
+    for (const std::uint64_t limit :
+         {std::uint64_t(l.maxAssociations), std::uint64_t(l.maxConnectionsPerAddress),
+          std::uint64_t(l.maxConnections), std::uint64_t(l.requestSeconds), l.maxInstanceBytes,
+          l.maxAssociationBytes}) {
+        key += ' ' + std::to_string(limit);
+    }
     const pacs::TlsSettings& tls = s.listenerTls;
     if (tls.enabled) {
         key += "\ntls\n" + tls.certificate.string() + '\n' + tls.privateKey.string() + '\n' +
@@ -124,6 +131,7 @@ void ListenerService::start(const PacsSettings& settings) {
     config.bindAddress = settings.listenerBindAddress;
     config.timeouts = settings.me.timeouts;
     config.tls = settings.listenerTls;
+    config.limits = settings.listenerLimits;
     for (const PacsNode& node : settings.nodes) {
         if (node.allowPush) {
             config.allowedPeers.push_back(node.node);

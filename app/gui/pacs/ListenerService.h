@@ -24,11 +24,11 @@ class StorageScp;
 namespace vv::gui {
 
 /// Owned by the main window. apply() (re)starts the listener from the
-/// settings: our AE title, the bind address and port, TLS (listenerTls), and
-/// as allowed peers the nodes with allowPush; it stops it when the settings
-/// disable it. A port that cannot be opened or TLS files that cannot be read
-/// are a state (Failed, with a translated message), never an exception, a
-/// crash or a fallback to plain TCP. While running, a timer on the GUI thread
+/// settings: our AE title, the bind address and port, TLS (listenerTls), its
+/// limits (listenerLimits), and as allowed peers the nodes with allowPush; it
+/// stops it when the settings disable it. A port that cannot be opened or TLS
+/// files that cannot be read are a state (Failed, with a translated message),
+/// never an exception, a crash or a fallback to plain TCP. While running, a timer on the GUI thread
 /// polls the listener's counters (a mutex-guarded read, never a network wait)
 /// and emits studiesChanged() when instances were committed.
 class ListenerService : public QObject {
@@ -58,8 +58,8 @@ class ListenerService : public QObject {
 
   public slots:
     /// Takes `settings`: restarts the listener when what it runs on changed
-    /// (AE title, port, bind address, TLS, allowed peers, store folder, on / off),
-    /// else keeps it. Its store has the settings' size limit (openStore()): a
+    /// (AE title, port, bind address, TLS, limits, allowed peers, store folder,
+    /// on / off), else keeps it. Its store has the settings' size limit (openStore()): a
     /// new limit applies from the next commit on, without a restart.
     /// Stopping waits for the listener's thread (about a second).
     void apply(const vv::gui::PacsSettings& settings);

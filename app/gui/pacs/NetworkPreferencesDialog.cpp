@@ -19,11 +19,11 @@
 #include <QVBoxLayout>
 #include <algorithm>
 #include <array>
-#include <cmath>
 
 #include "gui/EngineTexts.h"
 #include "gui/PathField.h"
 #include "gui/pacs/BackgroundCall.h"
+#include "gui/pacs/ListenerLimitsBox.h"
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/NodeEditDialog.h"
 #include "gui/pacs/PacsWidgets.h"
@@ -36,8 +36,6 @@ namespace vv::gui {
 namespace {
 
 constexpr int kMaxPort = 65535;
-constexpr double kBytesPerGb = 1e9;  // as the CLI's --store-limit NGB
-constexpr double kMaxLimitGb = 100000.0;
 
 enum Column { NameColumn, AeColumn, HostColumn, PortColumn, TlsColumn, PushColumn, ColumnCount };
 
@@ -122,17 +120,15 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     });
     folderRow->addWidget(browse);
     addBuddyRow(storeForm, tr("&Folder:"), storeFolder_, folderRow);
-    storeLimit_ = new QDoubleSpinBox(store);
-    storeLimit_->setObjectName(QStringLiteral("storeLimit"));
-    storeLimit_->setRange(0.0, kMaxLimitGb);
-    storeLimit_->setDecimals(1);
-    storeLimit_->setSuffix(tr(" GB"));
+    storeLimit_ = makeGigabyteBox(store, QStringLiteral("storeLimit"), 1, 0.0);
     storeLimit_->setSpecialValueText(tr("No limit"));
-    storeLimit_->setValue(static_cast<double>(s.storeLimitBytes) / kBytesPerGb);
+    setBytes(storeLimit_, s.storeLimitBytes);
     storeLimit_->setToolTip(
         tr("Above this size the oldest studies are removed first; open "
            "studies are never removed"));
     storeForm->addRow(tr("Size &limit:"), storeLimit_);
+    limits_ = new ListenerLimitsBox(s.listenerLimits, this);
+    limits_->setObjectName(QStringLiteral("listenerLimits"));
 
     auto* nodes = new QGroupBox(tr("PACS nodes"), this);
     auto* nodesLayout = new QVBoxLayout(nodes);
@@ -185,7 +181,11 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
     top->addWidget(ours);
-    top->addWidget(store, 1);
+    auto* right = new QVBoxLayout;
+    right->addWidget(store);
+    right->addWidget(limits_);
+    right->addStretch();
+    top->addLayout(right, 1);
     layout->addLayout(top);
     layout->addWidget(nodes, 1);
     layout->addWidget(error_);
@@ -201,8 +201,8 @@ PacsSettings NetworkPreferencesDialog::settings() const {
     s.listenerBindAddress = bind_->currentText().trimmed().toStdString();
     s.listenerTls = listenerTls_->settings();
     s.storeFolder = storeFolder_->text().trimmed().toStdString();
-    s.storeLimitBytes =
-        static_cast<std::uint64_t>(std::llround(storeLimit_->value() * kBytesPerGb));
+    s.storeLimitBytes = bytesOf(storeLimit_);
+    s.listenerLimits = limits_->limits();
     s.nodes = nodes_;
     return s;
 }
@@ -386,6 +386,10 @@ void NetworkPreferencesDialog::refuse(const PacsSettingsError& error) {
                 tr("Not saved: the listener's TLS needs our certificate, its private key and "
                    "the trusted CA certificate.");
             field = listenerTls_;
+            break;
+        case Setting::ListenerLimits:
+            problem.summary = tr("Not saved: the listener limits do not fit together.");
+            field = limits_;
             break;
         case Setting::NodeName:
             problem.summary = node.isEmpty()

@@ -18,12 +18,14 @@ class QTableWidget;
 
 namespace vv::gui {
 
+class ListenerLimitsBox;
 class TlsFilesBox;
 
 /// DICOM > Preferences…: our AE title, the listener (on/off, port, the
-/// interface it binds, TLS), the local study store (folder, size limit in GB) and
-/// the PACS nodes (a table with Add / Edit / Remove, and Test: C-ECHO on a
-/// worker, the answer or what failed shown under the table). Reads and, on
+/// interface it binds, TLS), its limits (ListenerLimitsBox), the local study
+/// store (folder, size limit in GB) and the PACS nodes (a table with Add /
+/// Edit / Remove, and Test: C-ECHO on a worker, the answer or what failed
+/// shown under the table). Reads and, on
 /// OK, writes QSettings() through read/writePacsSettings(); invalid input
 /// keeps the dialog open with a message naming the field (error()).
 class NetworkPreferencesDialog : public QDialog {
@@ -52,6 +54,7 @@ class NetworkPreferencesDialog : public QDialog {
     [[nodiscard]] QSpinBox* listenerPortBox() const noexcept { return listenerPort_; }
     [[nodiscard]] QComboBox* bindBox() const noexcept { return bind_; }
     [[nodiscard]] TlsFilesBox* listenerTlsBox() const noexcept { return listenerTls_; }
+    [[nodiscard]] ListenerLimitsBox* listenerLimitsBox() const noexcept { return limits_; }
     [[nodiscard]] QLineEdit* storeFolderEdit() const noexcept { return storeFolder_; }
     [[nodiscard]] QDoubleSpinBox* storeLimitBox() const noexcept { return storeLimit_; }
     [[nodiscard]] QTableWidget* nodeTable() const noexcept { return table_; }
@@ -94,6 +97,7 @@ class NetworkPreferencesDialog : public QDialog {
     QSpinBox* listenerPort_ = nullptr;
     QComboBox* bind_ = nullptr;
     TlsFilesBox* listenerTls_ = nullptr;
+    ListenerLimitsBox* limits_ = nullptr;
     QLineEdit* storeFolder_ = nullptr;
     QDoubleSpinBox* storeLimit_ = nullptr;
     QTableWidget* table_ = nullptr;

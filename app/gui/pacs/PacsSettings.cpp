@@ -5,9 +5,11 @@
 #include <QSettings>
 #include <QStandardPaths>
 #include <QString>
+#include <functional>
 #include <set>
 #include <system_error>
 
+#include "common/ListenerLimitRanges.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
@@ -24,19 +26,82 @@ bool validPort(int port) {
     return port > 0 && port <= kMaxPort;
 }
 
-std::uint16_t port(const QSettings& store, const QString& key, std::uint16_t fallback) {
+/// The whole number at `key` when it is one within lo..hi, else `fallback`.
+int wholeNumber(const QSettings& store, const QString& key, int lo, int hi, int fallback) {
     bool ok = false;
-    const int value = store.value(key).toInt(&ok);
-    return ok && validPort(value) ? static_cast<std::uint16_t>(value) : fallback;
+    const int value = store.value(key).toString().toInt(&ok);
+    return ok && value >= lo && value <= hi ? value : fallback;
 }
 
-bool validAeTitle(const std::string& aeTitle) {
+/// The byte count at `key` when it is one of at least `least`, else `fallback`.
+std::uint64_t byteCount(const QSettings& store, const QString& key, std::uint64_t least,
+                        std::uint64_t fallback) {
+    bool ok = false;
+    const qulonglong value = store.value(key).toString().toULongLong(&ok);  // never "-1"
+    return ok && value >= least ? value : fallback;
+}
+
+std::uint16_t port(const QSettings& store, const QString& key, std::uint16_t fallback) {
+    return static_cast<std::uint16_t>(wholeNumber(store, key, 1, kMaxPort, fallback));
+}
+
+/// False when `check` throws InvalidArgumentError.
+bool passes(const std::function<void()>& check) {
     try {
-        pacs::validateAeTitle(aeTitle);
+        check();
         return true;
     } catch (const InvalidArgumentError&) {
         return false;
     }
+}
+
+/// The listener's limits under "pacs/listener/": each out of its own range
+/// skipped; limits that do not fit together skipped together, never one of
+/// them guessed (first the connection limits, then the size caps).
+pacs::ListenerLimits readLimits(const QSettings& store) {
+    const pacs::ListenerLimits defaults;
+    const auto key = [](const char* name) {
+        return QStringLiteral("pacs/listener/") + QLatin1String(name);
+    };
+    pacs::ListenerLimits l;
+    l.maxAssociations = wholeNumber(store, key("maxAssociations"), 1, app::kMaxListenerAssociations,
+                                    defaults.maxAssociations);
+    l.maxConnectionsPerAddress =
+        wholeNumber(store, key("maxConnectionsPerAddress"), 1, app::kMaxListenerConnections,
+                    defaults.maxConnectionsPerAddress);
+    l.maxConnections = wholeNumber(store, key("maxConnections"), 1, app::kMaxListenerConnections,
+                                   defaults.maxConnections);
+    l.requestSeconds = wholeNumber(store, key("requestSeconds"), 1, app::kMaxListenerRequestSeconds,
+                                   defaults.requestSeconds);
+    l.maxInstanceBytes = byteCount(store, key("maxInstanceBytes"), app::kMinListenerInstanceBytes,
+                                   defaults.maxInstanceBytes);
+    l.maxAssociationBytes = byteCount(store, key("maxAssociationBytes"),
+                                      app::kMinListenerInstanceBytes, defaults.maxAssociationBytes);
+    pacs::ListenerLimits connections = l;
+    connections.maxInstanceBytes = defaults.maxInstanceBytes;
+    connections.maxAssociationBytes = defaults.maxAssociationBytes;
+    if (!passes([&] { connections.validate(); })) {
+        l.maxAssociations = defaults.maxAssociations;
+        l.maxConnectionsPerAddress = defaults.maxConnectionsPerAddress;
+        l.maxConnections = defaults.maxConnections;
+    }
+    if (!passes([&] { l.validate(); })) {
+        l.maxInstanceBytes = defaults.maxInstanceBytes;
+        l.maxAssociationBytes = defaults.maxAssociationBytes;
+    }
+    return passes([&] { l.validate(); }) ? l : defaults;  // a rule added to validate()
+}
+
+void writeLimits(const pacs::ListenerLimits& l, QSettings& store) {
+    store.setValue(QStringLiteral("pacs/listener/maxAssociations"), l.maxAssociations);
+    store.setValue(QStringLiteral("pacs/listener/maxConnectionsPerAddress"),
+                   l.maxConnectionsPerAddress);
+    store.setValue(QStringLiteral("pacs/listener/maxConnections"), l.maxConnections);
+    store.setValue(QStringLiteral("pacs/listener/requestSeconds"), l.requestSeconds);
+    store.setValue(QStringLiteral("pacs/listener/maxInstanceBytes"),
+                   qulonglong{l.maxInstanceBytes});
+    store.setValue(QStringLiteral("pacs/listener/maxAssociationBytes"),
+                   qulonglong{l.maxAssociationBytes});
 }
 
 /// TLS settings under `prefix` ("…/tls/"): enabled, trusted, certificate, privateKey.
@@ -75,6 +140,11 @@ void checkBeforeWriting(const PacsSettings& settings) {
         throw PacsSettingsError(Setting::ListenerTls, {},
                                 "listener TLS: needs our certificate, its private key and the "
                                 "trusted CA certificate(s)");
+    }
+    try {
+        settings.listenerLimits.validate();
+    } catch (const InvalidArgumentError& e) {
+        throw PacsSettingsError(Setting::ListenerLimits, {}, e.what());
     }
     std::set<std::string> names;
     for (const PacsNode& node : settings.nodes) {
@@ -119,7 +189,7 @@ std::filesystem::path defaultStoreFolder() {
 PacsSettings readPacsSettings(const QSettings& store) {
     PacsSettings s;
     const std::string ae = text(store, QStringLiteral("pacs/aeTitle"), s.me.aeTitle);
-    if (validAeTitle(ae)) {
+    if (passes([&] { pacs::validateAeTitle(ae); })) {
         s.me.aeTitle = ae;
     }
     s.listenerEnabled = store.value(QStringLiteral("pacs/listener/enabled"), false).toBool();
@@ -127,6 +197,7 @@ PacsSettings readPacsSettings(const QSettings& store) {
     s.listenerBindAddress =
         text(store, QStringLiteral("pacs/listener/bind"), s.listenerBindAddress);
     s.listenerTls = readTls(store, QStringLiteral("pacs/listener/tls/"));
+    s.listenerLimits = readLimits(store);
     const std::string folder = text(store, QStringLiteral("pacs/store/folder"), {});
     s.storeFolder = folder.empty() ? defaultStoreFolder() : std::filesystem::path(folder);
     bool ok = false;
@@ -146,13 +217,8 @@ PacsSettings readPacsSettings(const QSettings& store) {
         n.node.port = portOk && validPort(p) ? static_cast<std::uint16_t>(p) : 0;
         n.allowPush = store.value(key + QStringLiteral("allowPush"), true).toBool();
         n.node.tls = readTls(store, key + QStringLiteral("tls/"));
-        bool valid = !n.name.empty() && !names.contains(n.name);
-        try {
-            pacs::validateNode(n.node);
-        } catch (const InvalidArgumentError&) {
-            valid = false;
-        }
-        if (valid) {
+        if (!n.name.empty() && !names.contains(n.name) &&
+            passes([&] { pacs::validateNode(n.node); })) {
             names.insert(n.name);
             s.nodes.push_back(std::move(n));
         }
@@ -169,6 +235,7 @@ void writePacsSettings(const PacsSettings& settings, QSettings& store) {
     store.setValue(QStringLiteral("pacs/listener/bind"),
                    QString::fromStdString(settings.listenerBindAddress));
     writeTls(settings.listenerTls, QStringLiteral("pacs/listener/tls/"), store);
+    writeLimits(settings.listenerLimits, store);
     store.setValue(QStringLiteral("pacs/store/folder"),
                    QString::fromStdString(settings.storeFolder.string()));
     store.setValue(QStringLiteral("pacs/store/limitBytes"), qulonglong{settings.storeLimitBytes});

@@ -2,8 +2,9 @@
 #pragma once
 
 // What the user sets up for DICOM networking (Preferences > DICOM network),
-// kept in QSettings under the group "pacs/": our own AE title and listener,
-// the PACS nodes we talk to, and the local study store (folder, size limit).
+// kept in QSettings under the group "pacs/": our own AE title and listener
+// (with its limits), the PACS nodes we talk to, and the local study store
+// (folder, size limit).
 // The PACS browser, the listener, Local studies and Send all read it from here.
 
 #include <cstdint>
@@ -15,6 +16,7 @@
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
 #include "vv/pacs/Node.h"
+#include "vv/pacs/StorageScp.h"
 
 class QSettings;
 
@@ -38,6 +40,9 @@ struct PacsSettings {
     /// `certificate` (with `privateKey`) and lets in only peers whose
     /// certificate chains to `trustedCertificates`; all three are required.
     pacs::TlsSettings listenerTls;
+    /// What the listener lets its peers use (associations, connections, the
+    /// association request deadline, size caps); always valid when read.
+    pacs::ListenerLimits listenerLimits;
     std::vector<PacsNode> nodes;
     std::filesystem::path storeFolder;  ///< the local study store
     std::uint64_t storeLimitBytes = 0;  ///< 0: no limit; else oldest-first clean-up
@@ -51,7 +56,12 @@ struct PacsSettings {
 
 /// Reads the settings from `store` ("pacs/" group). Missing entries take the
 /// defaults above (storeFolder: defaultStoreFolder()); an invalid entry (AE
-/// title, port out of range, a node without host) is skipped, never guessed.
+/// title, port out of range, a node without host, a listener limit out of
+/// the range ListenerLimits::validate() states) is skipped, never guessed.
+/// Listener limits that do not fit together (connections in all below the
+/// simultaneous associations, per address above in all; the largest
+/// association below the largest instance) are skipped together: the
+/// connection limits, or the two size caps, take their defaults.
 /// The listener's TLS is read as written: when it is on without its files,
 /// the listener fails to start (it never falls back to plain TCP).
 [[nodiscard]] PacsSettings readPacsSettings(const QSettings& store);
@@ -62,11 +72,12 @@ struct PacsSettings {
 class PacsSettingsError : public InvalidArgumentError {
   public:
     enum class Setting {
-        OurAeTitle,    ///< our AE title is not a valid one
-        ListenerPort,  ///< the listener port is 0
-        ListenerTls,   ///< the listener's TLS is on without its three files
-        NodeName,      ///< a node has no name (node() empty) or shares node()'s
-        Node,          ///< node()'s AE title, host or port is invalid
+        OurAeTitle,      ///< our AE title is not a valid one
+        ListenerPort,    ///< the listener port is 0
+        ListenerTls,     ///< the listener's TLS is on without its three files
+        ListenerLimits,  ///< ListenerLimits::validate() refused the listener's limits
+        NodeName,        ///< a node has no name (node() empty) or shares node()'s
+        Node,            ///< node()'s AE title, host or port is invalid
     };
     PacsSettingsError(Setting setting, std::string node, const std::string& problem)
         : InvalidArgumentError(problem), setting_(setting), node_(std::move(node)) {}
@@ -81,9 +92,10 @@ class PacsSettingsError : public InvalidArgumentError {
 
 /// Writes `settings` into `store` ("pacs/" group), replacing what was there.
 /// Throws PacsSettingsError (an InvalidArgumentError) naming the setting when
-/// our AE title, a node or a port is invalid, when two nodes share a name, or
-/// when the listener's TLS is on without its three files; then nothing is
-/// written.
+/// our AE title, a node or a port is invalid, when two nodes share a name,
+/// when the listener's TLS is on without its three files, or when its limits
+/// are invalid (what() then is ListenerLimits::validate()'s); then nothing
+/// is written.
 void writePacsSettings(const PacsSettings& settings, QSettings& store);
 
 /// The local study store of `settings` (storeFolder, made when missing) with

@@ -5,15 +5,23 @@
 #include <QDate>
 #include <QDialog>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
 #include <QTableWidget>
+#include <cmath>
 
 #include "gui/DateText.h"
 #include "gui/EngineTexts.h"
 
 namespace vv::gui {
+
+namespace {
+
+constexpr double kMaxGb = 100000.0;
+
+}  // namespace
 
 QTableWidget* makeResultTable(QWidget* parent, const QString& objectName,
                               const QStringList& headers) {
@@ -67,6 +75,24 @@ QString studyDateText(const std::string& dicomDate) {
     // Day and month in an order no reader can take the other way round (not
     // "3/4/2025"), and as the PDF report writes dates in the same language.
     return QLocale().toString(date, uiDateFormat());
+}
+
+QDoubleSpinBox* makeGigabyteBox(QWidget* parent, const QString& objectName, int decimals,
+                                double minimumGb) {
+    auto* box = new QDoubleSpinBox(parent);
+    box->setObjectName(objectName);
+    box->setRange(minimumGb, kMaxGb);
+    box->setDecimals(decimals);
+    box->setSuffix(QCoreApplication::translate("vv::gui::PacsWidgets", " GB"));
+    return box;
+}
+
+std::uint64_t bytesOf(const QDoubleSpinBox* box) {
+    return static_cast<std::uint64_t>(std::llround(box->value() * kBytesPerGb));
+}
+
+void setBytes(QDoubleSpinBox* box, std::uint64_t bytes) {
+    box->setValue(static_cast<double>(bytes) / kBytesPerGb);
 }
 
 }  // namespace vv::gui

@@ -2,14 +2,16 @@
 #pragma once
 
 // The widgets the DICOM network dialogs share: result tables, the line that
-// shows a problem, OK / Cancel.
+// shows a problem, OK / Cancel, sizes in GB.
 
 #include <QString>
 #include <QStringList>
+#include <cstdint>
 #include <string>
 
 class QDialog;
 class QDialogButtonBox;
+class QDoubleSpinBox;
 class QLabel;
 class QTableWidget;
 class QWidget;
@@ -35,6 +37,18 @@ void showProblemText(QLabel* label, const ProblemText& problem);
 
 /// OK and Cancel, wired to `dialog`'s accept() and reject().
 [[nodiscard]] QDialogButtonBox* makeOkCancel(QDialog* dialog);
+
+/// Bytes in a GB of the UI, as the CLI's NGB counts them.
+inline constexpr double kBytesPerGb = 1e9;
+
+/// A spin box of a size in GB (kBytesPerGb), in
+/// the UI locale, with `decimals` decimals, from `minimumGb` to 100,000 GB.
+[[nodiscard]] QDoubleSpinBox* makeGigabyteBox(QWidget* parent, const QString& objectName,
+                                              int decimals, double minimumGb);
+/// The value of a makeGigabyteBox() in bytes.
+[[nodiscard]] std::uint64_t bytesOf(const QDoubleSpinBox* box);
+/// Shows `bytes` in a makeGigabyteBox() (rounded to its decimals).
+void setBytes(QDoubleSpinBox* box, std::uint64_t bytes);
 
 /// A DICOM date (YYYYMMDD) as the UI language writes dates unambiguously,
 /// the same as the PDF report: 2025-03-07 in English, 07.03.2025 in German;
