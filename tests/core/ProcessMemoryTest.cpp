@@ -1,8 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <gtest/gtest.h>
 #include <sys/mman.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <cstddef>
+#include <cstdint>
 #include <cstring>
 
 #include "vv/core/ProcessMemory.h"
@@ -34,6 +37,50 @@ TEST(ProcessMemory, ResidentAndPeakFollowAnAllocation) {
     // After a reset the peak starts again from what is resident now.
     ASSERT_TRUE(vv::resetPeakResident());
     EXPECT_LT(*vv::peakResidentKiB(), *peak);
+}
+
+// Another process's figures (a benchmark watches its listener process): a
+// child touches 64 MiB, says so, gives them back and waits to be ended.
+TEST(ProcessMemory, AnotherProcessIsReadByItsId) {
+    int toParent[2];
+    int toChild[2];
+    ASSERT_EQ(::pipe(toParent), 0);
+    ASSERT_EQ(::pipe(toChild), 0);
+    const std::size_t size = 64U << 20U;
+    const pid_t child = ::fork();
+    ASSERT_GE(child, 0);
+    if (child == 0) {
+        ::close(toChild[1]);  // else its read below never sees the parent's end
+        ::close(toParent[0]);
+        void* block =
+            mmap(nullptr, size, PROT_READ | PROT_WRITE, MAP_PRIVATE | MAP_ANONYMOUS, -1, 0);
+        if (block != MAP_FAILED) {
+            std::memset(block, 1, size);
+            munmap(block, size);
+        }
+        char byte = block == MAP_FAILED ? 'f' : 't';
+        (void)::write(toParent[1], &byte, 1);
+        (void)::read(toChild[0], &byte, 1);  // until the parent closes its end
+        ::_exit(0);
+    }
+    ::close(toParent[1]);
+    ::close(toChild[0]);
+    char byte = 0;
+    ASSERT_EQ(::read(toParent[0], &byte, 1), 1);
+    EXPECT_EQ(byte, 't');
+    const auto resident = vv::residentKiB(child);
+    const auto peak = vv::peakResidentKiB(child);
+    ASSERT_TRUE(resident.has_value());
+    ASSERT_TRUE(peak.has_value());
+    EXPECT_GE(*peak, *resident + std::uint64_t{60} * 1024)
+        << "the child's peak holds its 64 MiB block";
+    ASSERT_TRUE(vv::resetPeakResident(child));
+    EXPECT_LT(*vv::peakResidentKiB(child), *resident + std::uint64_t{30} * 1024);
+    ::close(toChild[1]);
+    ::close(toParent[0]);
+    int status = 0;
+    ASSERT_EQ(::waitpid(child, &status, 0), child);
+    EXPECT_FALSE(vv::residentKiB(child).has_value()) << "no such process any more";
 }
 
 }  // namespace

@@ -9,9 +9,14 @@ namespace vv {
 
 namespace {
 
-/// The value of a "Key:   123 kB" line of /proc/self/status.
-std::optional<std::uint64_t> statusKiB(std::string_view key) {
-    std::ifstream in("/proc/self/status");
+/// /proc/self/NAME or /proc/<pid>/NAME.
+std::string procFile(int pid, const char* name) {
+    return "/proc/" + (pid == 0 ? std::string("self") : std::to_string(pid)) + "/" + name;
+}
+
+/// The value of a "Key:   123 kB" line of /proc/<pid>/status.
+std::optional<std::uint64_t> statusKiB(int pid, std::string_view key) {
+    std::ifstream in(procFile(pid, "status"));
     std::string line;
     while (std::getline(in, line)) {
         if (line.size() > key.size() && line.compare(0, key.size(), key) == 0 &&
@@ -28,16 +33,16 @@ std::optional<std::uint64_t> statusKiB(std::string_view key) {
 
 }  // namespace
 
-std::optional<std::uint64_t> residentKiB() {
-    return statusKiB("VmRSS");
+std::optional<std::uint64_t> residentKiB(int pid) {
+    return statusKiB(pid, "VmRSS");
 }
 
-std::optional<std::uint64_t> peakResidentKiB() {
-    return statusKiB("VmHWM");
+std::optional<std::uint64_t> peakResidentKiB(int pid) {
+    return statusKiB(pid, "VmHWM");
 }
 
-bool resetPeakResident() {
-    std::ofstream out("/proc/self/clear_refs");
+bool resetPeakResident(int pid) {
+    std::ofstream out(procFile(pid, "clear_refs"));
     out << "5" << std::flush;
     return static_cast<bool>(out);
 }
