@@ -3,7 +3,10 @@
 
 #include <dcmtk/dcmnet/dcmtrans.h>
 #include <dcmtk/dcmnet/dul.h>
+#include <sys/socket.h>
+#include <sys/time.h>
 
+#include <algorithm>
 #include <mutex>
 #include <utility>
 
@@ -43,7 +46,7 @@ thread_local HandOver* tHandOver = nullptr;
 /// hand-over's abort switch; making one ends the hand-over.
 class AcceptorNetwork::Layer : public DcmTransportLayer {
   public:
-    explicit Layer(DcmTransportLayer* tls) : tls_(tls) {}
+    Layer(DcmTransportLayer* tls, int ioSeconds) : tls_(tls), ioSeconds_(ioSeconds) {}
 
     DcmTransportConnection* createConnection(DcmNativeSocketType openSocket,
                                              OFBool /*useSecureLayer*/) override {
@@ -60,15 +63,22 @@ class AcceptorNetwork::Layer : public DcmTransportLayer {
         if (inner == nullptr) {
             return nullptr;  // DCMTK closes the socket
         }
-        return makeAbortableConnection(openSocket, inner, std::move(abortSwitch));
+        DcmTransportConnection* connection =
+            makeAbortableConnection(openSocket, inner, std::move(abortSwitch));
+        // After the connections' constructors, which set DCMTK's global 60 s.
+        const timeval bound{ioSeconds_, 0};
+        ::setsockopt(openSocket, SOL_SOCKET, SO_RCVTIMEO, &bound, sizeof bound);
+        ::setsockopt(openSocket, SOL_SOCKET, SO_SNDTIMEO, &bound, sizeof bound);
+        return connection;
     }
 
   private:
     DcmTransportLayer* tls_;
+    int ioSeconds_;
 };
 
-AcceptorNetwork::AcceptorNetwork(int requestSeconds, DcmTransportLayer* tls)
-    : layer_(std::make_unique<Layer>(tls)), tls_(tls != nullptr) {
+AcceptorNetwork::AcceptorNetwork(int requestSeconds, int ioSeconds, DcmTransportLayer* tls)
+    : layer_(std::make_unique<Layer>(tls, std::max(1, ioSeconds))), tls_(tls != nullptr) {
     dcmDisableGethostbyaddr.set(OFTrue);  // the peer is known by its address; never wait on DNS
     OFCondition cond;
     {

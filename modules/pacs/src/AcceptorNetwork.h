@@ -23,11 +23,13 @@ namespace vv::pacs::detail {
 
 class AcceptorNetwork {
   public:
-    /// `requestSeconds`: how long DCMTK waits for the A-ASSOCIATE-RQ (and the
-    /// release) on an adopted socket. `tls`: the TLS layer (outlives this
-    /// network), or null for plain TCP. Throws IoError when DCMTK cannot
-    /// make the network.
-    AcceptorNetwork(int requestSeconds, DcmTransportLayer* tls);
+    /// `requestSeconds`: how long DCMTK waits for the A-ASSOCIATE-RQ on an
+    /// adopted socket. `ioSeconds`: the longest any one read or write on it
+    /// may block — DCMTK's own bound on the reads within a PDU is a global
+    /// 60 s, so a peer that stalls mid-PDU would hold a worker that long.
+    /// `tls`: the TLS layer (outlives this network), or null for plain TCP.
+    /// Throws IoError when DCMTK cannot make the network.
+    AcceptorNetwork(int requestSeconds, int ioSeconds, DcmTransportLayer* tls);
     ~AcceptorNetwork();
     AcceptorNetwork(const AcceptorNetwork&) = delete;
     AcceptorNetwork& operator=(const AcceptorNetwork&) = delete;

@@ -366,8 +366,8 @@ StorageScp::StorageScp(LocalStore& store, ListenerConfig config) {
         scp.addPresentationContext(sopClass, syntaxes);
     }
     detail::OwnedSocket listening = detail::openListenSocket(c.bindAddress, c.port);
-    impl.network =
-        std::make_unique<detail::AcceptorNetwork>(c.limits.requestSeconds, impl.tls.get());
+    impl.network = std::make_unique<detail::AcceptorNetwork>(
+        c.limits.requestSeconds, c.timeouts.responseSeconds, impl.tls.get());
     impl.pool = std::make_unique<detail::AssociationPool>(
         c.limits.maxAssociations, [&impl](detail::ReadyConnection&& connection,
                                           const std::shared_ptr<detail::AbortSwitch>& abortSwitch) {
