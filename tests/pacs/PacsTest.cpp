@@ -9,11 +9,13 @@
 
 #include <chrono>
 #include <filesystem>
+#include <future>
 #include <memory>
 #include <optional>
 #include <stop_token>
 #include <thread>
 
+#include "ListenerPeers.h"
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
 #include "vv/core/Error.h"
@@ -123,6 +125,31 @@ TEST(PacsFaultTest, SilentPeerTimesOut) {
     const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
+}
+
+TEST(PacsFaultTest, APeerThatStallsInTheMiddleOfItsAnswerIsDroppedAfterTheResponseTimeout) {
+    // The peer starts an A-ASSOCIATE-AC (a PDU header announcing 100 bytes),
+    // sends 10 of them and goes silent without closing. DCMTK reads the rest
+    // of a begun PDU with blocking reads bounded only by its global 60 s; our
+    // layer bounds each read by the response timeout (2 s here).
+    const vv::bench::RawServer server;
+    auto answered = std::async(std::launch::async, [&] {
+        try {
+            echo(LocalAe{kOurAe, Timeouts{2, 2, 2}},
+                 Node{"STALLS", "127.0.0.1", server.port(), {}});
+        } catch (const NetworkError&) {
+            return true;
+        }
+        return false;
+    });
+    const vv::bench::Connection peer = server.accept(10);
+    ASSERT_TRUE(peer.receive(6, 10).has_value()) << "no association request came";
+    peer.send({0x02, 0x00, 0x00, 0x00, 0x00, 100, 0x00, 0x01, 0x00, 0x00, 0x00, 0x00, 0x00, 0x00,
+               0x00, 0x00});
+    // A bound for a broken program only (the stall is 2 s; DCMTK's own, 60 s).
+    ASSERT_EQ(answered.wait_for(std::chrono::seconds(30)), std::future_status::ready)
+        << "the echo still waits on the stalled peer";
+    EXPECT_TRUE(answered.get()) << "the echo did not fail";
 }
 
 /// Runs `call(stop token)` against a peer that never answers, requests the

@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "AbortableLayer.h"
 
-#include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <sys/socket.h>
 
 #include <utility>
 
 #include "ForwardingConnection.h"
+#include "Socket.h"
 
 namespace vv::pacs::detail {
 
@@ -81,24 +80,25 @@ void AbortSwitch::detach(DcmNativeSocketType socket) noexcept {
     }
 }
 
-AbortableLayer::AbortableLayer(DcmTransportLayer* inner, const std::stop_token& stop)
-    : inner_(inner) {
+AbortableLayer::AbortableLayer(DcmTransportLayer* inner, const std::stop_token& stop, int ioSeconds)
+    : inner_(inner), ioSeconds_(ioSeconds) {
     onStop_.emplace(stop, Trip{switch_});
 }
 
 DcmTransportConnection* AbortableLayer::createConnection(DcmNativeSocketType openSocket,
                                                          OFBool /*useSecureLayer*/) {
-    // Our requests and the peer's answers are small messages: never hold
-    // them back to coalesce (Nagle with delayed ACKs costs ~40 ms each).
-    const int noDelay = 1;
-    ::setsockopt(openSocket, IPPROTO_TCP, TCP_NODELAY, &noDelay, sizeof noDelay);
+    sendAtOnce(openSocket);
     DcmTransportConnection* connection =
         inner_ != nullptr ? inner_->createConnection(openSocket, OFTrue)
                           : DcmTransportLayer::createConnection(openSocket, OFFalse);
     if (connection == nullptr) {
         return nullptr;
     }
-    return makeAbortableConnection(openSocket, connection, switch_);
+    DcmTransportConnection* abortable = makeAbortableConnection(openSocket, connection, switch_);
+    if (ioSeconds_ > 0) {
+        boundEachReadAndWrite(openSocket, ioSeconds_);
+    }
+    return abortable;
 }
 
 }  // namespace vv::pacs::detail

@@ -50,8 +50,10 @@ DcmTransportConnection* makeAbortableConnection(DcmNativeSocketType socket,
 /// connections, each attached to the switch that a stop of `stop` trips.
 class AbortableLayer : public DcmTransportLayer {
   public:
-    /// `inner` (may be null: plain TCP) must outlive this layer.
-    AbortableLayer(DcmTransportLayer* inner, const std::stop_token& stop);
+    /// `inner` (may be null: plain TCP) must outlive this layer. `ioSeconds`
+    /// (when above 0) bounds every blocking read and write on a connection
+    /// (DCMTK's own bound within a PDU is a global 60 s).
+    AbortableLayer(DcmTransportLayer* inner, const std::stop_token& stop, int ioSeconds = 0);
     AbortableLayer(const AbortableLayer&) = delete;
     AbortableLayer& operator=(const AbortableLayer&) = delete;
     AbortableLayer(AbortableLayer&&) = delete;
@@ -75,6 +77,7 @@ class AbortableLayer : public DcmTransportLayer {
     };
 
     DcmTransportLayer* inner_;
+    int ioSeconds_;
     std::shared_ptr<AbortSwitch> switch_ = std::make_shared<AbortSwitch>();
     std::optional<std::stop_callback<Trip>> onStop_;  ///< last: ends first
 };

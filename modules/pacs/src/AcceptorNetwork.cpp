@@ -3,8 +3,6 @@
 
 #include <dcmtk/dcmnet/dcmtrans.h>
 #include <dcmtk/dcmnet/dul.h>
-#include <sys/socket.h>
-#include <sys/time.h>
 
 #include <algorithm>
 #include <mutex>
@@ -65,10 +63,7 @@ class AcceptorNetwork::Layer : public DcmTransportLayer {
         }
         DcmTransportConnection* connection =
             makeAbortableConnection(openSocket, inner, std::move(abortSwitch));
-        // After the connections' constructors, which set DCMTK's global 60 s.
-        const timeval bound{ioSeconds_, 0};
-        ::setsockopt(openSocket, SOL_SOCKET, SO_RCVTIMEO, &bound, sizeof bound);
-        ::setsockopt(openSocket, SOL_SOCKET, SO_SNDTIMEO, &bound, sizeof bound);
+        boundEachReadAndWrite(openSocket, ioSeconds_);
         return connection;
     }
 

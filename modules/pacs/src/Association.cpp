@@ -44,9 +44,10 @@ void Scu::abortOn(std::stop_token stop) {
 }
 
 void Scu::attachLayers() {
-    // Always our layer: it sets TCP_NODELAY, and a stop (when one can come)
-    // shuts the socket down.
-    abortableLayer = std::make_unique<AbortableLayer>(tlsLayer.get(), stop_);
+    // Always our layer: it sets TCP_NODELAY, bounds each read and write by
+    // the response timeout, and a stop (when one can come) shuts the socket down.
+    abortableLayer = std::make_unique<AbortableLayer>(tlsLayer.get(), stop_,
+                                                      static_cast<int>(getDIMSETimeout()));
     const OFCondition cond = useSecureConnection(abortableLayer.get());
     if (cond.bad()) {
         throw TlsError(std::string("TLS: ") + cond.text());

@@ -4,7 +4,6 @@
 #include <arpa/inet.h>
 #include <fcntl.h>
 #include <netinet/in.h>
-#include <netinet/tcp.h>
 #include <poll.h>
 #include <sys/eventfd.h>
 #include <sys/socket.h>
@@ -222,10 +221,7 @@ ConnectionGate::Verdict ConnectionGate::inspect(const Pending& pending, std::str
 void ConnectionGate::handOn(Pending&& pending, bool buffered) {
     const int fd = pending.socket.get();
     wakeAt(fd, 1);
-    // DICOM answers are small messages the peer waits for: never hold them
-    // back to coalesce (Nagle with delayed ACKs costs ~40 ms per message).
-    const int noDelay = 1;
-    ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &noDelay, sizeof noDelay);
+    sendAtOnce(fd);
     const int flags = ::fcntl(fd, F_GETFL);
     ::fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
     ready_(ReadyConnection{std::move(pending.socket), std::move(pending.slot), buffered});

@@ -3,7 +3,9 @@
 
 #include <arpa/inet.h>
 #include <netinet/in.h>
+#include <netinet/tcp.h>
 #include <sys/socket.h>
+#include <sys/time.h>
 #include <unistd.h>
 
 #include <array>
@@ -23,6 +25,17 @@ void OwnedSocket::reset() noexcept {
         ::setsockopt(fd_, SOL_SOCKET, SO_LINGER, &abortive, sizeof abortive);
     }
     close();
+}
+
+void sendAtOnce(int fd) noexcept {
+    const int noDelay = 1;
+    ::setsockopt(fd, IPPROTO_TCP, TCP_NODELAY, &noDelay, sizeof noDelay);
+}
+
+void boundEachReadAndWrite(int fd, int seconds) noexcept {
+    const timeval bound{seconds, 0};
+    ::setsockopt(fd, SOL_SOCKET, SO_RCVTIMEO, &bound, sizeof bound);
+    ::setsockopt(fd, SOL_SOCKET, SO_SNDTIMEO, &bound, sizeof bound);
 }
 
 std::string peerAddress(int fd) {

@@ -39,6 +39,15 @@ class OwnedSocket {
     int fd_ = -1;
 };
 
+/// Sends small messages at once (TCP_NODELAY): DICOM's requests and answers
+/// would otherwise wait for delayed ACKs (~40 ms each).
+void sendAtOnce(int fd) noexcept;
+
+/// Bounds every blocking read and write on `fd` to `seconds` (SO_RCVTIMEO,
+/// SO_SNDTIMEO). Set after DCMTK's connection constructors, which set its
+/// global 60 s.
+void boundEachReadAndWrite(int fd, int seconds) noexcept;
+
 /// The IPv4 address ("192.0.2.7") of the peer of the connected socket `fd`;
 /// empty when it has none (closed meanwhile, not IPv4).
 [[nodiscard]] std::string peerAddress(int fd);
