@@ -13,7 +13,6 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
-#include "common/ListenerLimitRanges.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
@@ -83,19 +82,19 @@ std::uint64_t parseBytes(const std::string& text, const std::string& option, std
 bool parseLimit(const std::string& name, Arguments& a, pacs::ListenerLimits& l) {
     const auto count = [&a, &name](int most) { return parseWholeNumber(a.value(), name, 1, most); };
     if (name == "--max-associations") {
-        l.maxAssociations = count(app::kMaxListenerAssociations);
+        l.maxAssociations = count(pacs::ListenerLimits::kMaxAssociations);
     } else if (name == "--max-per-address") {
-        l.maxConnectionsPerAddress = count(app::kMaxListenerConnections);
+        l.maxConnectionsPerAddress = count(pacs::ListenerLimits::kMaxConnections);
     } else if (name == "--max-connections") {
-        l.maxConnections = count(app::kMaxListenerConnections);
+        l.maxConnections = count(pacs::ListenerLimits::kMaxConnections);
     } else if (name == "--request-timeout") {
-        l.requestSeconds = count(app::kMaxListenerRequestSeconds);
+        l.requestSeconds = count(pacs::ListenerLimits::kMaxRequestSeconds);
     } else if (name == "--max-instance") {
         l.maxInstanceBytes =
-            parseBytes(a.value(), name, app::kMinListenerInstanceBytes, "1000 bytes", a);
+            parseBytes(a.value(), name, pacs::ListenerLimits::kMinInstanceBytes, "1000 bytes", a);
     } else if (name == "--max-association") {
         l.maxAssociationBytes =
-            parseBytes(a.value(), name, app::kMinListenerInstanceBytes, "1000 bytes", a);
+            parseBytes(a.value(), name, pacs::ListenerLimits::kMinInstanceBytes, "1000 bytes", a);
     } else {
         return false;
     }

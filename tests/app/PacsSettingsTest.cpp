@@ -10,7 +10,6 @@
 #include <memory>
 #include <string>
 
-#include "common/ListenerLimitRanges.h"
 #include "gui/pacs/PacsSettings.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/StorageScp.h"
@@ -312,12 +311,12 @@ TEST_F(PacsSettingsTest, WritingRefusesListenerLimitsThatDoNotFitTogether) {
     EXPECT_EQ(readPacsSettings(store_).listenerLimits.maxAssociations, 4) << "nothing written";
 }
 
-/// What the front ends offer limit by limit (ListenerLimitRanges.h) is what
+/// What the front ends offer limit by limit (ListenerLimits::kMax… / kMin…) is what
 /// ListenerLimits::validate() allows: its ends pass, one beyond is refused.
 TEST_F(PacsSettingsTest, TheListenerLimitRangesOfTheFrontEndsAreThoseValidateAllows) {
     const auto passes = [](const std::function<void(pacs::ListenerLimits&)>& set) {
         pacs::ListenerLimits l;
-        l.maxConnections = app::kMaxListenerConnections;  // room for the others
+        l.maxConnections = pacs::ListenerLimits::kMaxConnections;  // room for the others
         set(l);
         try {
             l.validate();
@@ -326,23 +325,28 @@ TEST_F(PacsSettingsTest, TheListenerLimitRangesOfTheFrontEndsAreThoseValidateAll
             return false;
         }
     };
-    for (const int n : {1, app::kMaxListenerAssociations}) {
+    for (const int n : {1, pacs::ListenerLimits::kMaxAssociations}) {
         EXPECT_TRUE(passes([n](auto& l) { l.maxAssociations = n; })) << n;
     }
     EXPECT_FALSE(passes([](auto& l) { l.maxAssociations = 0; }));
-    EXPECT_FALSE(passes([](auto& l) { l.maxAssociations = app::kMaxListenerAssociations + 1; }));
-    for (const int n : {1, app::kMaxListenerConnections}) {
+    EXPECT_FALSE(
+        passes([](auto& l) { l.maxAssociations = pacs::ListenerLimits::kMaxAssociations + 1; }));
+    for (const int n : {1, pacs::ListenerLimits::kMaxConnections}) {
         EXPECT_TRUE(passes([n](auto& l) { l.maxConnectionsPerAddress = n; })) << n;
     }
     EXPECT_FALSE(passes([](auto& l) { l.maxConnectionsPerAddress = 0; }));
-    EXPECT_FALSE(passes([](auto& l) { l.maxConnections = app::kMaxListenerConnections + 1; }));
-    for (const int n : {1, app::kMaxListenerRequestSeconds}) {
+    EXPECT_FALSE(
+        passes([](auto& l) { l.maxConnections = pacs::ListenerLimits::kMaxConnections + 1; }));
+    for (const int n : {1, pacs::ListenerLimits::kMaxRequestSeconds}) {
         EXPECT_TRUE(passes([n](auto& l) { l.requestSeconds = n; })) << n;
     }
     EXPECT_FALSE(passes([](auto& l) { l.requestSeconds = 0; }));
-    EXPECT_FALSE(passes([](auto& l) { l.requestSeconds = app::kMaxListenerRequestSeconds + 1; }));
-    EXPECT_TRUE(passes([](auto& l) { l.maxInstanceBytes = app::kMinListenerInstanceBytes; }));
-    EXPECT_FALSE(passes([](auto& l) { l.maxInstanceBytes = app::kMinListenerInstanceBytes - 1; }));
+    EXPECT_FALSE(
+        passes([](auto& l) { l.requestSeconds = pacs::ListenerLimits::kMaxRequestSeconds + 1; }));
+    EXPECT_TRUE(
+        passes([](auto& l) { l.maxInstanceBytes = pacs::ListenerLimits::kMinInstanceBytes; }));
+    EXPECT_FALSE(
+        passes([](auto& l) { l.maxInstanceBytes = pacs::ListenerLimits::kMinInstanceBytes - 1; }));
 }
 
 }  // namespace

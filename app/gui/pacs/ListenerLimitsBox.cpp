@@ -10,8 +10,8 @@
 #include <QSpinBox>
 #include <QVBoxLayout>
 
-#include "common/ListenerLimitRanges.h"
 #include "gui/pacs/PacsWidgets.h"
+#include "vv/pacs/StorageScp.h"
 
 namespace vv::gui {
 
@@ -32,23 +32,24 @@ QSpinBox* countBox(QWidget* parent, const QString& objectName, int most) {
 ListenerLimitsBox::ListenerLimitsBox(const pacs::ListenerLimits& limits, QWidget* parent)
     : QGroupBox(tr("Listener limits"), parent) {
     static_assert(kSmallestInstanceGb * kBytesPerGb >=
-                  static_cast<double>(app::kMinListenerInstanceBytes));
+                  static_cast<double>(pacs::ListenerLimits::kMinInstanceBytes));
     associations_ =
-        countBox(this, QStringLiteral("maxAssociations"), app::kMaxListenerAssociations);
+        countBox(this, QStringLiteral("maxAssociations"), pacs::ListenerLimits::kMaxAssociations);
     associations_->setToolTip(
         tr("Associations served at once. One more is refused for now (the sender may try "
            "again later), so that many senders at once cannot overload this workstation."));
-    perAddress_ =
-        countBox(this, QStringLiteral("maxConnectionsPerAddress"), app::kMaxListenerConnections);
+    perAddress_ = countBox(this, QStringLiteral("maxConnectionsPerAddress"),
+                           pacs::ListenerLimits::kMaxConnections);
     perAddress_->setToolTip(
         tr("Open connections from the address of one configured node, at most the connections "
            "in all: one device that misbehaves cannot take every connection."));
-    connections_ = countBox(this, QStringLiteral("maxConnections"), app::kMaxListenerConnections);
+    connections_ =
+        countBox(this, QStringLiteral("maxConnections"), pacs::ListenerLimits::kMaxConnections);
     connections_->setToolTip(
         tr("Open connections in all, waiting or served, at least the simultaneous "
            "associations. A connection over a limit is closed at once."));
     requestSeconds_ =
-        countBox(this, QStringLiteral("requestSeconds"), app::kMaxListenerRequestSeconds);
+        countBox(this, QStringLiteral("requestSeconds"), pacs::ListenerLimits::kMaxRequestSeconds);
     requestSeconds_->setSuffix(tr(" s"));
     requestSeconds_->setToolTip(
         tr("Seconds a new connection has to ask for an association before it is dropped: "

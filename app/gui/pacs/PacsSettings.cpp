@@ -9,8 +9,8 @@
 #include <set>
 #include <system_error>
 
-#include "common/ListenerLimitRanges.h"
 #include "vv/core/Error.h"
+#include "vv/pacs/StorageScp.h"
 
 namespace vv::gui {
 namespace {
@@ -64,19 +64,23 @@ pacs::ListenerLimits readLimits(const QSettings& store) {
         return QStringLiteral("pacs/listener/") + QLatin1String(name);
     };
     pacs::ListenerLimits l;
-    l.maxAssociations = wholeNumber(store, key("maxAssociations"), 1, app::kMaxListenerAssociations,
-                                    defaults.maxAssociations);
+    l.maxAssociations =
+        wholeNumber(store, key("maxAssociations"), 1, pacs::ListenerLimits::kMaxAssociations,
+                    defaults.maxAssociations);
     l.maxConnectionsPerAddress =
-        wholeNumber(store, key("maxConnectionsPerAddress"), 1, app::kMaxListenerConnections,
-                    defaults.maxConnectionsPerAddress);
-    l.maxConnections = wholeNumber(store, key("maxConnections"), 1, app::kMaxListenerConnections,
-                                   defaults.maxConnections);
-    l.requestSeconds = wholeNumber(store, key("requestSeconds"), 1, app::kMaxListenerRequestSeconds,
-                                   defaults.requestSeconds);
-    l.maxInstanceBytes = byteCount(store, key("maxInstanceBytes"), app::kMinListenerInstanceBytes,
-                                   defaults.maxInstanceBytes);
-    l.maxAssociationBytes = byteCount(store, key("maxAssociationBytes"),
-                                      app::kMinListenerInstanceBytes, defaults.maxAssociationBytes);
+        wholeNumber(store, key("maxConnectionsPerAddress"), 1,
+                    pacs::ListenerLimits::kMaxConnections, defaults.maxConnectionsPerAddress);
+    l.maxConnections = wholeNumber(store, key("maxConnections"), 1,
+                                   pacs::ListenerLimits::kMaxConnections, defaults.maxConnections);
+    l.requestSeconds =
+        wholeNumber(store, key("requestSeconds"), 1, pacs::ListenerLimits::kMaxRequestSeconds,
+                    defaults.requestSeconds);
+    l.maxInstanceBytes =
+        byteCount(store, key("maxInstanceBytes"), pacs::ListenerLimits::kMinInstanceBytes,
+                  defaults.maxInstanceBytes);
+    l.maxAssociationBytes =
+        byteCount(store, key("maxAssociationBytes"), pacs::ListenerLimits::kMinInstanceBytes,
+                  defaults.maxAssociationBytes);
     pacs::ListenerLimits connections = l;
     connections.maxInstanceBytes = defaults.maxInstanceBytes;
     connections.maxAssociationBytes = defaults.maxAssociationBytes;

@@ -241,18 +241,21 @@ void ListenerLimits::validate() const {
             throw InvalidArgumentError("listener limits: " + what);
         }
     };
-    need(maxAssociations >= 1 && maxAssociations <= 256,
-         "simultaneous associations must be 1 to 256, not " + std::to_string(maxAssociations));
-    need(maxConnections >= maxAssociations && maxConnections <= 1024,
+    need(maxAssociations >= 1 && maxAssociations <= kMaxAssociations,
+         "simultaneous associations must be 1 to " + std::to_string(kMaxAssociations) + ", not " +
+             std::to_string(maxAssociations));
+    need(maxConnections >= maxAssociations && maxConnections <= kMaxConnections,
          "connections in all must be " + std::to_string(maxAssociations) +
-             " (the simultaneous associations) to 1024, not " + std::to_string(maxConnections));
+             " (the simultaneous associations) to " + std::to_string(kMaxConnections) + ", not " +
+             std::to_string(maxConnections));
     need(maxConnectionsPerAddress >= 1 && maxConnectionsPerAddress <= maxConnections,
          "connections per address must be 1 to " + std::to_string(maxConnections) +
              " (the connections in all), not " + std::to_string(maxConnectionsPerAddress));
-    need(requestSeconds >= 1 && requestSeconds <= 120,
-         "the association request deadline must be 1 to 120 s, not " +
-             std::to_string(requestSeconds));
-    need(maxInstanceBytes >= 1000, "the largest instance must be at least 1 kB");
+    need(requestSeconds >= 1 && requestSeconds <= kMaxRequestSeconds,
+         "the association request deadline must be 1 to " + std::to_string(kMaxRequestSeconds) +
+             " s, not " + std::to_string(requestSeconds));
+    need(maxInstanceBytes >= kMinInstanceBytes,
+         "the largest instance must be at least " + std::to_string(kMinInstanceBytes) + " bytes");
     need(maxAssociationBytes >= maxInstanceBytes,
          "the largest association must be at least the largest instance");
 }

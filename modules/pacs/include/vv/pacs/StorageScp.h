@@ -64,6 +64,12 @@ struct ListenerLimits {
     static constexpr int kStrangerConnectionsPerAddress = 2;
     static constexpr int kStrangerConnections = 8;
 
+    /// The ends of the ranges validate() allows (front ends offer them).
+    static constexpr int kMaxAssociations = 256;
+    static constexpr int kMaxConnections = 1024;  ///< in all, and so per address
+    static constexpr int kMaxRequestSeconds = 120;
+    static constexpr std::uint64_t kMinInstanceBytes = 1000;
+
     /// Throws InvalidArgumentError naming the limit unless: maxAssociations
     /// 1..256, maxConnections 1..1024 and at least maxAssociations,
     /// maxConnectionsPerAddress 1..maxConnections, requestSeconds 1..120,
