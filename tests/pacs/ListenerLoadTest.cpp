@@ -28,6 +28,7 @@
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
 #include "vv/pacs/Echo.h"
+#include "vv/pacs/PacsError.h"
 #include "vv/pacs/Send.h"
 #include "vv/pacs/StorageScp.h"
 
@@ -296,6 +297,40 @@ TEST(ListenerLoadTest, ANodeStuckInADatasetDoesNotHoldUpAnother) {
     ASSERT_EQ(store.studies().size(), 1U);
     EXPECT_EQ(store.studies()[0].patientId, "VV-LOAD-OTHER");
     EXPECT_TRUE(waitUntil([&] { return stagingEmpty(store); }));
+}
+
+TEST(ListenerLoadTest, WithEveryWorkerBusyTheNextAssociationIsRejectedAsTransientAndServedLater) {
+    LocalStore store(freshFolder("busy/store"));
+    ListenerConfig config = listenerConfig();
+    config.allowedPeers.push_back(Node{"OTHER", "127.0.0.1", 104, {}});
+    config.limits.maxAssociations = 1;
+    config.timeouts.responseSeconds = 60;  // the stuck sender keeps the one worker
+    StorageScp listener(store, config);
+    const auto stuckFiles = seriesWithABigLast("busy-series", 8, 1024);
+    const auto helper = senderStallingInTheLast(config, stuckFiles);
+    ASSERT_EQ(helper->readLine(30), "stalled");
+    ASSERT_EQ(listener.stats().activeAssociations, 1U);
+
+    // What a peer receives: A-ASSOCIATE-RJ (type 3), result 2 (rejected,
+    // transient: try again later), source 3 (service provider, presentation
+    // related), reason 2 (local limit exceeded) — PS3.8 9.3.4.
+    const Bytes request = recordedAssociationRequest();
+    ASSERT_FALSE(request.empty());
+    const Connection peer = Connection::open("127.0.0.1", config.port, 10);
+    peer.send(request);
+    const auto answer = peer.receive(10, 10);
+    ASSERT_TRUE(answer.has_value()) << "no answer to the association request";
+    EXPECT_EQ((*answer)[0], 0x03) << "not an A-ASSOCIATE-RJ";
+    EXPECT_EQ((*answer)[7], 0x02) << "not transient";
+    EXPECT_EQ((*answer)[8], 0x03) << "not from the service provider (presentation)";
+    EXPECT_EQ((*answer)[9], 0x02) << "not \"local limit exceeded\"";
+    const LocalAe other{"OTHER", Timeouts{5, 10, 10}};
+    EXPECT_THROW(echo(other, nodeOf(config)), AssociationRejectedError);
+    EXPECT_EQ(listener.stats().refusedAssociations, 2U);
+
+    EXPECT_TRUE(helper->end(SIGKILL, 10));
+    ASSERT_TRUE(waitUntil([&] { return listener.stats().activeAssociations == 0; }));
+    EXPECT_NO_THROW(echo(other, nodeOf(config))) << "the freed worker serves the next one";
 }
 
 TEST(ListenerLoadTest, AnInstanceOverTheSizeCapIsRefusedAndTheRestStored) {
