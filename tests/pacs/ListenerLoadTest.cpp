@@ -38,7 +38,7 @@ using vv::bench::Bytes;
 using vv::bench::ChildProcess;
 using vv::bench::Connection;
 using vv::bench::storedInstances;
-using vv::bench::waitUntil;
+using vv::test::waitUntil;
 
 namespace {
 
@@ -464,7 +464,7 @@ TEST(ListenerLoadTest, DestroyingABusyListenerReturnsAndLeavesNothingBehind) {
     std::vector<Connection> idle = vv::bench::idleConnections("127.0.0.1", config.port, kIdle);
     EXPECT_TRUE(waitUntil(
         [&] { return listener->stats().openConnections == static_cast<std::size_t>(kIdle) + 1; },
-        10));
+        std::chrono::seconds(10)));
 
     auto stopped = std::async(std::launch::async, [&listener] { listener.reset(); });
     const bool returned = stopped.wait_for(std::chrono::seconds(30)) == std::future_status::ready;

@@ -23,8 +23,10 @@
 #include "IdleConnection.h"
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
+#include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
 #include "vv/pacs/LocalStore.h"
+#include "vv/pacs/PacsError.h"
 #include "vv/pacs/Send.h"
 #include "vv/pacs/StorageScp.h"
 
@@ -61,6 +63,19 @@ void commitDummyStudy(const fs::path& root, std::size_t bytes) {
     f.sopInstanceUid = "1.2.3.1.1";
     t.add(staged, f);
     t.commit();
+}
+
+/// Polls (bounded) until the listener at `listener` answers a C-ECHO from
+/// `me`: it is listening, with no guess of how long that takes.
+bool answersEcho(const vv::pacs::LocalAe& me, const vv::pacs::Node& listener) {
+    return vv::test::waitUntil([&] {
+        try {
+            vv::pacs::echo(me, listener);
+            return true;
+        } catch (const vv::pacs::NetworkError&) {
+            return false;
+        }
+    });
 }
 
 }  // namespace
@@ -367,8 +382,8 @@ TEST(PacsCliTest, ListenReceivesFromAllowedNodeOnly) {
                        "--aet", "VVLISTEN", "--allow", "SENDER@127.0.0.1", "--for", "4",
                        "--store-limit", "1MB"});
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
     const vv::pacs::Node listener{"VVLISTEN", "127.0.0.1", port, {}};
+    ASSERT_TRUE(answersEcho(vv::pacs::LocalAe{"SENDER", {2, 5, 10}}, listener));
     std::vector<fs::path> files;
     for (const auto& f : writeSeries("listen")) {
         files.emplace_back(f);
@@ -400,7 +415,12 @@ TEST(PacsCliTest, ListenOverTlsLetsInOnlyPeersOfTheTrustedCa) {
                        certificates.ca.string(), "--tls-cert", certificates.serverCert.string(),
                        "--tls-key", certificates.serverKey.string()});
     });
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    const vv::pacs::Node trusted{
+        "VVLISTEN",
+        "127.0.0.1",
+        port,
+        {true, certificates.ca, certificates.clientCert, certificates.clientKey}};
+    ASSERT_TRUE(answersEcho(vv::pacs::LocalAe{"SENDER", {2, 5, 10}}, trusted));
     std::vector<fs::path> files;
     for (const auto& f : writeSeries("listen-tls-series")) {
         files.emplace_back(f);
@@ -411,11 +431,6 @@ TEST(PacsCliTest, ListenOverTlsLetsInOnlyPeersOfTheTrustedCa) {
     const vv::pacs::Node untrusted{
         "VVLISTEN", "127.0.0.1", port, {true, certificates.ca, certificates.otherCa, otherKey}};
     EXPECT_ANY_THROW(vv::pacs::sendFiles(sender, untrusted, files));
-    const vv::pacs::Node trusted{
-        "VVLISTEN",
-        "127.0.0.1",
-        port,
-        {true, certificates.ca, certificates.clientCert, certificates.clientKey}};
     const auto statuses = vv::pacs::sendFiles(sender, trusted, files);
     EXPECT_TRUE(std::all_of(statuses.begin(), statuses.end(),
                             [](const vv::pacs::SendStatus& s) { return s.accepted; }));
