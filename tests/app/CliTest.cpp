@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include "Unprivileged.h"
 #include "cli/Cli.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshWriter.h"
@@ -582,16 +583,26 @@ TEST_F(CliTest, DemoToAnUnwritablePlaceExitsWithFour) {
 }
 
 TEST_F(CliTest, DemoToAReadOnlyFolderExitsWithFour) {
-    if (::geteuid() == 0) {
-        GTEST_SKIP() << "running as root: permissions do not apply";
-    }
     const auto folder = dir_ / "read-only";
     fs::create_directories(folder);
-    fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec);
-    const Result r = runCli({"demo", "-o", (folder / "demo.vtp").string(), "--generations", "2",
-                             "--voxel-size", "0.6"});
+    Result r;
+    if (vv::test::runningAsRoot()) {
+        // Root writes anyway: the program runs as nobody, for whom the folder
+        // (searchable by all, writable by none) is read-only.
+        fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec |
+                                    fs::perms::group_read | fs::perms::group_exec |
+                                    fs::perms::others_read | fs::perms::others_exec);
+        r = runProcess(vv::test::asNobody(shellQuote(VV_CLI_EXE) + " demo -o " +
+                                          shellQuote((folder / "demo.vtp").string()) +
+                                          " --generations 2 --voxel-size 0.6 2>&1"));
+    } else {
+        fs::permissions(folder, fs::perms::owner_read | fs::perms::owner_exec);
+        r = runCli({"demo", "-o", (folder / "demo.vtp").string(), "--generations", "2",
+                    "--voxel-size", "0.6"});
+    }
     fs::permissions(folder, fs::perms::owner_all);
-    EXPECT_EQ(r.code, vv::cli::kCannotWrite);
+    EXPECT_EQ(r.code, vv::cli::kCannotWrite) << r.out << r.err;
+    EXPECT_FALSE(fs::exists(folder / "demo.vtp"));
 }
 
 // ---------------------------------------------------------------------------
