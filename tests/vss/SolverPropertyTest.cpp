@@ -44,28 +44,14 @@ const SolverCase kSolvers[] = {
 
 const double kPowers[] = {0.25, 0.5, 1.0, 2.0, 4.0, 8.0, 16.0, 32.0, 64.0};
 
-/// The solver, or nullptr when the fast solver is not in this build yet.
-std::unique_ptr<Solver> makeOrNull(const SolverCase& c, double p) {
+/// The solver of case `c` for the power `p`.
+std::unique_ptr<Solver> solverFor(const SolverCase& c, double p) {
     SolverOptions options;
     options.kind = c.kind;
     options.p = p;
     options.step = c.step;
-    try {
-        return makeSolver(options);
-    } catch (const Error& e) {
-        if (c.kind == SolverKind::Fast &&
-            std::string(e.what()).find("not available") != std::string::npos) {
-            return nullptr;
-        }
-        throw;
-    }
+    return makeSolver(options);
 }
-
-#define MAKE_SOLVER_OR_SKIP(var, c, p)                              \
-    const auto var = makeOrNull((c), (p));                          \
-    if (!(var)) {                                                   \
-        GTEST_SKIP() << "the fast solver is not in this build yet"; \
-    }
 
 /// Allowed difference from the exact answer.
 double tolerance(const SolverCase& c, const Solver& solver) {
@@ -181,7 +167,7 @@ class SolverPowerTest : public ::testing::TestWithParam<std::tuple<SolverCase, d
 };
 
 TEST_P(SolverPowerTest, RandomMasksBoundedAndNearReference) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     // Four of the twenty random masks per p (all twenty: SolverTest.TwentyRandomMasks).
     const auto pIndex = static_cast<std::uint64_t>(std::log2(p()) + 2.0);
     for (std::uint64_t k = 0; k < 4; ++k) {
@@ -213,7 +199,7 @@ TEST_P(SolverPowerTest, RandomMasksBoundedAndNearReference) {
 }
 
 TEST_P(SolverPowerTest, RegionOfOnePixel) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     // A void pixel in a ring of 8 vessel pixels with different depths.
     Image<std::uint8_t> mask(3, 3, 1);
     mask(1, 1) = 0;
@@ -245,7 +231,7 @@ TEST_P(SolverPowerTest, RegionOfOnePixel) {
 }
 
 TEST_P(SolverPowerTest, OneByNAndNByOne) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     for (const bool transposed : {false, true}) {
         const int n = 41;
         Image<std::uint8_t> mask(transposed ? 1 : n, transposed ? n : 1, 0);
@@ -272,7 +258,7 @@ TEST_P(SolverPowerTest, OneByNAndNByOne) {
 }
 
 TEST_P(SolverPowerTest, SingleVesselPixelAndConstantDepth) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     {
         Image<std::uint8_t> mask(23, 17, 0);
         mask(4, 9) = 1;
@@ -301,7 +287,7 @@ TEST_P(SolverPowerTest, SingleVesselPixelAndConstantDepth) {
 }
 
 TEST_P(SolverPowerTest, FarNearRatio1e7) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     const auto mask = test::randomMask(48, 40, 4242);
     Image<float> depth(48, 40);
     for (int y = 0; y < 40; ++y) {
@@ -322,7 +308,7 @@ TEST_P(SolverPowerTest, FarNearRatio1e7) {
 }
 
 TEST_P(SolverPowerTest, CheckerboardIsTheMeanOfTheEdgeNeighbours) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     const int w = 16;
     const int h = 12;
     Image<std::uint8_t> mask(w, h, 0);
@@ -361,7 +347,7 @@ TEST_P(SolverPowerTest, CheckerboardIsTheMeanOfTheEdgeNeighbours) {
 }
 
 TEST_P(SolverPowerTest, ContourTouchingTheBorder) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     // A vessel crossing the image top to bottom and one entering from the left.
     const int w = 50;
     const int h = 30;
@@ -390,7 +376,7 @@ TEST_P(SolverPowerTest, ContourTouchingTheBorder) {
 }
 
 TEST_P(SolverPowerTest, FullAndEmptyMaskAndOneByOne) {
-    MAKE_SOLVER_OR_SKIP(solver, solverCase(), p());
+    const auto solver = solverFor(solverCase(), p());
     {
         const Image<std::uint8_t> mask(9, 5, 1);
         const auto depth = test::randomDepth(9, 5, 3);
@@ -442,7 +428,7 @@ INSTANTIATE_TEST_SUITE_P(AllSolversAllPowers, SolverPowerTest,
 class SolverTest : public ::testing::TestWithParam<SolverCase> {};
 
 TEST_P(SolverTest, TwentyRandomMasks) {
-    MAKE_SOLVER_OR_SKIP(solver, GetParam(), 2.0);
+    const auto solver = solverFor(GetParam(), 2.0);
     for (std::uint64_t seed = 1000; seed < 1020; ++seed) {
         const auto mask = test::randomMask(64, 48, seed);
         const auto depth = test::randomDepth(64, 48, seed);
@@ -471,7 +457,7 @@ Image<std::uint8_t> framedMask(int w, int h, std::uint64_t seed) {
 
 TEST_P(SolverTest, TranslationMirrorTransposeInvariance) {
     for (const double p : {1.0, 4.0, 16.0}) {
-        MAKE_SOLVER_OR_SKIP(solver, GetParam(), p);
+        const auto solver = solverFor(GetParam(), p);
         const double tol = 2.0 * tolerance(GetParam(), *solver);
         for (std::uint64_t seed = 7; seed < 10; ++seed) {
             const int w = 45;
@@ -528,7 +514,7 @@ TEST_P(SolverTest, PowerLimits) {
     const auto mask = test::randomMask(40, 30, 31);
     const auto depth = test::randomDepth(40, 30, 31);
     {
-        MAKE_SOLVER_OR_SKIP(solver, GetParam(), 1e-3);
+        const auto solver = solverFor(GetParam(), 1e-3);
         const VssResult r = run(*solver, depth, mask);
         for (int y = 0; y < 30; ++y) {
             for (int x = 0; x < 40; ++x) {
@@ -548,7 +534,7 @@ TEST_P(SolverTest, PowerLimits) {
         }
     }
     {
-        MAKE_SOLVER_OR_SKIP(solver, GetParam(), 64.0);
+        const auto solver = solverFor(GetParam(), 64.0);
         const VssResult r = run(*solver, depth, mask);
         int checked = 0;
         for (int y = 0; y < 30; ++y) {
@@ -590,7 +576,7 @@ TEST_P(SolverTest, PowerLimits) {
 }
 
 TEST_P(SolverTest, Huge7680x4320SparseMask) {
-    MAKE_SOLVER_OR_SKIP(solver, GetParam(), 64.0);
+    const auto solver = solverFor(GetParam(), 64.0);
     const int w = 7680;
     const int h = 4320;
     Image<std::uint8_t> mask(w, h, 0);
@@ -656,7 +642,7 @@ TEST_P(SolverTest, AMillionContourPixels) {
     }
     ASSERT_GE(region.contour.size(), 1000000U);
     for (const double p : {0.5, 2.0, 8.0}) {
-        MAKE_SOLVER_OR_SKIP(solver, GetParam(), p);
+        const auto solver = solverFor(GetParam(), p);
         Image<float> out(w, h, -7.0F);
         solver->solveRegion(labels.view(), region, out.view(), {});
         for (int y = 500; y < 504; ++y) {
@@ -677,7 +663,7 @@ TEST_P(SolverTest, AMillionContourPixels) {
 }
 
 TEST_P(SolverTest, SolveRegionContract) {
-    MAKE_SOLVER_OR_SKIP(solver, GetParam(), 2.0);
+    const auto solver = solverFor(GetParam(), 2.0);
     // Two regions side by side: solving one leaves the other untouched.
     Image<std::int32_t> labels(6, 1, 0);
     labels(3, 0) = kVesselLabel;
