@@ -8,7 +8,6 @@
 
 #include <QApplication>
 #include <QDir>
-#include <QElapsedTimer>
 #include <QImage>
 #include <QLineEdit>
 #include <QMouseEvent>
@@ -24,6 +23,7 @@
 #include <utility>
 
 #include "TestMeshes.h"
+#include "WaitUntil.h"
 #include "gui/ExportWorker.h"
 #include "gui/MainWindow.h"
 #include "gui/ReportDialog.h"
@@ -63,13 +63,10 @@ class ScopedConnection {
 
 /// Processes events until `done` holds or `timeoutMs` passed; returns `done()`.
 inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done() && timer.elapsed() < timeoutMs) {
+    return pollUntil(done, std::chrono::milliseconds(timeoutMs), [] {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         QThread::msleep(2);
-    }
-    return done();
+    });
 }
 
 /// A left-button drag over `widget` from `from` to `to` (logical widget

@@ -9,7 +9,6 @@
 #include <QDir>
 #include <QDoubleSpinBox>
 #include <QDropEvent>
-#include <QElapsedTimer>
 #include <QFileInfo>
 #include <QKeyEvent>
 #include <QMessageBox>
@@ -40,6 +39,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using vv::gui::MainWindow;
+using vv::test::waitUntil;
 
 /// Where screenshots are kept for people to look at.
 fs::path testDir() {
@@ -54,17 +54,6 @@ fs::path workDir() {
     const fs::path dir = testDir() / ("run-" + std::to_string(QCoreApplication::applicationPid()));
     fs::create_directories(dir);
     return dir;
-}
-
-/// Processes events until `done` holds or `timeoutMs` passed; returns `done()`.
-bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done() && timer.elapsed() < timeoutMs) {
-        QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
-        QThread::msleep(2);
-    }
-    return done();
 }
 
 /// A tube along x with "wss" rising along it and "pressure" falling (GuiFixture.h).

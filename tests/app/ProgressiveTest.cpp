@@ -26,6 +26,7 @@
 #include <vector>
 
 #include "ImageCompare.h"
+#include "WaitUntil.h"
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
 #include "vv/demo/DemoTree.h"
@@ -53,15 +54,10 @@ void ensureApplication() {
 }
 
 bool waitUntil(const std::function<bool()>& done, int timeoutMs = 60000) {
-    QElapsedTimer timer;
-    timer.start();
-    while (!done() && timer.elapsed() < timeoutMs) {
+    return vv::test::pollUntil(done, std::chrono::milliseconds(timeoutMs), [] {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 5);
-        if (!done()) {
-            QThread::msleep(1);
-        }
-    }
-    return done();
+        QThread::msleep(1);
+    });
 }
 
 /// A tube of radius r from a to b (axis along x or y).

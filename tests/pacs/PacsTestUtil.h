@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "SyntheticCta.h"
+#include "WaitUntil.h"
 #include "vv/core/Progress.h"
 #include "vv/dicom/SeriesWriter.h"
 
@@ -46,18 +47,10 @@ inline std::vector<std::filesystem::path> writeCtaFiles(const std::filesystem::p
     return filesOf(folder);
 }
 
-/// Polls `done` until it holds or `bound` passes (a bound for a broken
-/// program, never a timing claim); returns whether it held.
+/// pollUntil() with a bound (for a broken program, never a timing claim).
 inline bool waitUntil(const std::function<bool()>& done,
                       std::chrono::milliseconds bound = std::chrono::seconds(30)) {
-    const auto end = std::chrono::steady_clock::now() + bound;
-    while (!done()) {
-        if (std::chrono::steady_clock::now() > end) {
-            return false;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(10));
-    }
-    return true;
+    return pollUntil(done, bound);
 }
 
 /// A Progress that calls `action` once, at the first report (`*done` tells
