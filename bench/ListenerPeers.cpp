@@ -22,7 +22,6 @@
 #include <cstring>
 #include <memory>
 #include <stdexcept>
-#include <thread>
 
 #include "vv/pacs/LocalStore.h"
 
@@ -354,14 +353,6 @@ std::size_t storedInstances(const vv::pacs::LocalStore& store) {
         }
     }
     return n;
-}
-
-bool waitUntil(const std::function<bool()>& done, int seconds) {
-    const auto deadline = after(seconds);
-    while (!done() && Clock::now() < deadline) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return done();
 }
 
 }  // namespace vv::bench

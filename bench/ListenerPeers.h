@@ -14,7 +14,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
-#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -118,10 +117,5 @@ void writeLargeImage(const std::filesystem::path& model, const std::filesystem::
 
 /// The instances of all complete studies of `store` (its index).
 [[nodiscard]] std::size_t storedInstances(const vv::pacs::LocalStore& store);
-
-/// Checks `done` every 20 ms until it holds or `seconds` have passed;
-/// returns done(): a bounded wait for a state (the state, not the time, is
-/// what a test asserts).
-bool waitUntil(const std::function<bool()>& done, int seconds = 20);
 
 }  // namespace vv::bench

@@ -33,6 +33,7 @@
 #include <vector>
 
 #include "ListenerPeers.h"
+#include "WaitUntil.h"
 #include "vv/core/ProcessMemory.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/dicom/SeriesWriter.h"
@@ -47,7 +48,6 @@ namespace fs = std::filesystem;
 using namespace vv::pacs;
 using Clock = std::chrono::steady_clock;
 using vv::bench::storedInstances;
-using vv::bench::waitUntil;
 
 constexpr const char* kListenerAe = "VVBENCH";
 constexpr int kSlices = 34;
@@ -149,12 +149,12 @@ Transfer medianStore(const Options& o, const std::vector<fs::path>& files, int r
             idle = vv::bench::idleConnections("127.0.0.2", config.port, kIdle);
             // Until the listener has closed all it does not keep (a stranger
             // keeps 2); bounded, as a listener that counts nothing never gets there.
-            (void)waitUntil(
+            (void)vv::test::pollUntil(
                 [&] {
                     const ListenerStats s = listener.stats();
                     return s.refusedConnections + s.droppedConnections >= kIdle - 2;
                 },
-                10);
+                std::chrono::seconds(10));
         }
         all.push_back(timedSend(sender("NODE0"), nodeOf(config), files));
         const ListenerStats s = listener.stats();
@@ -235,7 +235,8 @@ void tenNodes(const Options& o, const std::vector<std::vector<fs::path>>& series
     }
     const double seconds = std::chrono::duration<double>(Clock::now() - start).count();
     const std::size_t expected = std::size_t{kNodes} * kSlices;
-    const bool arrived = waitUntil([&] { return storedInstances(store) == expected; }, 30);
+    const bool arrived = vv::test::pollUntil([&] { return storedInstances(store) == expected; },
+                                             std::chrono::seconds(30));
     std::size_t accepted = 0;
     std::string problems;
     for (const Transfer& t : transfers) {

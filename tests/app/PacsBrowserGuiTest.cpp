@@ -30,7 +30,7 @@
 #include <memory>
 #include <string>
 
-#include "IdleConnection.h"
+#include "ListenerPeers.h"
 #include "PacsGuiFixture.h"
 #include "gui/SeriesDialog.h"
 #include "gui/pacs/DicomMenu.h"
@@ -280,12 +280,11 @@ TEST_F(PacsBrowserGuiTest, ListenerLimitsSetInPreferencesReachTheRunningListener
     ASSERT_EQ(window_->listenerService()->state(), vv::gui::ListenerService::State::Running)
         << window_->listenerService()->stateText().toStdString();
     // 127.0.0.1 is a configured node's host (Orthanc): one connection from it at a time.
-    const vv::test::IdleConnection first(listenerPort_);
-    ASSERT_TRUE(first.connected());
-    const vv::test::IdleConnection second(listenerPort_);
-    EXPECT_TRUE(waitUntil([&] { return second.closedByPeer(); }, 10000))
+    const auto first = vv::bench::Connection::open("127.0.0.1", listenerPort_, 10);
+    const auto second = vv::bench::Connection::open("127.0.0.1", listenerPort_, 10);
+    EXPECT_TRUE(waitUntil([&] { return second.closedByPeer(0); }, 10000))
         << "a second connection from 127.0.0.1 stays open over a cap of 1 per address";
-    EXPECT_FALSE(first.closedByPeer()) << "the connection within the cap was closed";
+    EXPECT_FALSE(first.closedByPeer(0)) << "the connection within the cap was closed";
 }
 
 TEST_F(PacsBrowserGuiTest, QueryShowsTheStudyAndItsSeries) {

@@ -20,7 +20,7 @@
 #include <vector>
 
 #include "CliRun.h"
-#include "IdleConnection.h"
+#include "ListenerPeers.h"
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
 #include "vv/pacs/Echo.h"
@@ -318,14 +318,18 @@ class ListenProcess {
     pid_t pid_;
 };
 
-/// Connects to 127.0.0.1:`port` once the listener there accepts (at most 20 s).
-std::unique_ptr<vv::test::IdleConnection> connectWhenListening(std::uint16_t port) {
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(20);
-    auto connection = std::make_unique<vv::test::IdleConnection>(port);
-    while (!connection->connected() && std::chrono::steady_clock::now() < deadline) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(20));
-        connection = std::make_unique<vv::test::IdleConnection>(port);
-    }
+/// A connection from 127.0.0.1 to `port`, polled for (bounded) until the
+/// listener there accepts; nullopt when it never did.
+std::optional<vv::bench::Connection> connectWhenListening(std::uint16_t port) {
+    std::optional<vv::bench::Connection> connection;
+    vv::test::waitUntil([&] {
+        try {
+            connection = vv::bench::Connection::open("127.0.0.1", port, 5);
+            return true;
+        } catch (const std::runtime_error&) {  // not listening yet
+            return false;
+        }
+    });
     return connection;
 }
 
@@ -361,11 +365,11 @@ TEST(PacsCliTest, ListenWithOneConnectionPerAddressClosesASecondOne) {
                              "1GB"},
                             folder / "listen.log");
     const auto first = connectWhenListening(port);
-    ASSERT_TRUE(first->connected()) << "the listener never came up";
-    const vv::test::IdleConnection second(port);
-    EXPECT_TRUE(second.closedByPeer(10000))
+    ASSERT_TRUE(first.has_value()) << "the listener never came up";
+    const auto second = vv::bench::Connection::open("127.0.0.1", port, 10);
+    EXPECT_TRUE(second.closedByPeer(10))
         << "a second connection from 127.0.0.1 stays open over --max-per-address 1";
-    EXPECT_FALSE(first->closedByPeer()) << "the connection within the cap was closed";
+    EXPECT_FALSE(first->closedByPeer(0)) << "the connection within the cap was closed";
     EXPECT_EQ(listening.stop(), 0);
     std::ifstream log(folder / "listen.log");
     const std::string output{std::istreambuf_iterator<char>(log), {}};
