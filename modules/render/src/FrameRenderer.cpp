@@ -14,6 +14,7 @@
 
 #include "GBufferProbe.h"
 #include "SolveWorker.h"
+#include "passes/AoBlurPass.h"
 #include "passes/CompositePass.h"
 #include "passes/DepthRangePass.h"
 #include "passes/DepthReadbackPass.h"
@@ -24,6 +25,7 @@
 #include "passes/RectBatch.h"
 #include "passes/SsaoPass.h"
 #include "passes/TranslucentPass.h"
+#include "passes/UpscalePass.h"
 #include "passes/VesselShadingPass.h"
 #include "passes/VssShadingPass.h"
 #include "passes/VssSolvePass.h"
@@ -174,7 +176,7 @@ struct FrameRenderer::Impl {
     std::unique_ptr<GlResourceAllocator> allocator;
     std::unique_ptr<RenderGraphCache> cache;
     std::unique_ptr<GlPassObserver> observer;
-    std::unique_ptr<FullscreenPrograms> programs;
+    std::unique_ptr<PassPrograms> programs;
     std::unique_ptr<DepthScaleLut> scaleLut;
     GLuint emptyVao = 0;
     std::unique_ptr<RectBatch> rects;
@@ -281,8 +283,7 @@ FrameRenderer::~FrameRenderer() {
 }
 
 bool FrameRenderer::initialized() const noexcept {
-    return impl_->gl != nullptr && impl_->programs != nullptr && impl_->programs->vss.valid() &&
-           meshes_.initialized();
+    return impl_->gl != nullptr && impl_->programs != nullptr && meshes_.initialized();
 }
 
 void FrameRenderer::initialize() {
@@ -299,7 +300,7 @@ void FrameRenderer::initialize() {
     impl_->allocator = std::make_unique<GlResourceAllocator>();
     impl_->cache = std::make_unique<RenderGraphCache>(*impl_->allocator);
     impl_->observer = std::make_unique<GlPassObserver>();
-    impl_->programs = std::make_unique<FullscreenPrograms>(FullscreenPrograms::build(gl));
+    impl_->programs = std::make_unique<PassPrograms>(gl);
     gl.glGenVertexArrays(1, &impl_->emptyVao);
     impl_->rects = std::make_unique<RectBatch>(gl);
     impl_->scaleLut = std::make_unique<DepthScaleLut>(gl);
@@ -499,6 +500,126 @@ std::optional<std::pair<float, float>> FrameRenderer::visibleDepthRange() const 
 
 // --- end probe -------------------------------------------------------------
 
+namespace {
+
+/// The sizes and scales of one frame that its passes share.
+struct FrameShape {
+    glm::ivec2 size{1, 1};        ///< the render size (the passes')
+    glm::ivec2 targetSize{1, 1};  ///< the target's
+    glm::ivec2 vssSize{1, 1};     ///< the VSS's: the render size, or below it
+    glm::mat4 projection{1.0F};
+    float pixelScale = 0.0F;  ///< of a pixel at the render size
+    std::size_t meshLevel = 0;
+};
+
+/// What the passes after the vessels' shading read from the passes before.
+struct Upstream {
+    const GeometryOutputs& geometry;
+    const DepthReadbackOutputs& readback;
+    const VssSolveOutputs& solve;
+    const VesselShadingOutputs& vessels;
+};
+
+/// The picture from the shaded vessels on: the VSS's shading, the
+/// translucent objects, the AO, the composite and, when the composite goes
+/// into a texture, "fxaa" or "upscale" into the target.
+void addPicturePasses(RenderGraph& graph, const PassContext& context, const Camera& camera,
+                      const FrameSettings& settings, const FrameShape& shape, const Upstream& up,
+                      const Lighting& light, bool translucent) {
+    const VssSettings& vssSettings = settings.vss;
+    const glm::ivec2 size = shape.size;
+    const bool reducedVss = shape.vssSize != size;
+    // With anti-aliasing the FXAA pass draws into the target (upscaling a
+    // reduced render size with its bilinear taps); without it, a reduced
+    // render size ends with "upscale", which draws the VSS's iso-lines at the
+    // target's size (the VSS shading leaves them out then).
+    const bool scaled = size != shape.targetSize;
+    const bool useAa = settings.antialiasing || scaled;
+    const bool upscale = scaled && !settings.antialiasing;
+    const int targetIsoLines = upscale && vssSettings.enabled && vssSettings.isoLineStrength > 0.0F
+                                   ? std::max(vssSettings.isoLines, 0)
+                                   : 0;
+    VssSettings shadedVss = vssSettings;
+    if (targetIsoLines > 0) {
+        shadedVss.isoLines = 0;
+    }
+    const VssShadingOutputs vss = addVssShadingPass(
+        graph, VssShadingInputs{.context = context,
+                                .settings = shadedVss,
+                                .light = light,
+                                .pixelScale = pixelScaleOf(camera, shape.vssSize.y),
+                                .size = shape.vssSize,
+                                .vss = up.solve,
+                                .linearDepth = up.geometry.linearDepth,
+                                .reduced = reducedVss});
+    // Declared always: with no translucent object, or AO off, nothing reads
+    // them and the graph culls them.
+    const TranslucentOutputs layer =
+        addTranslucentPass(graph, TranslucentInputs{.context = context,
+                                                    .camera = camera,
+                                                    .meshLevel = shape.meshLevel,
+                                                    .size = size,
+                                                    .opaqueDepth = up.geometry.depth,
+                                                    .cue = up.vessels.cue});
+    const AoSettings& ao = settings.ao;
+    const int aoStep = aoStepFor(ao, static_cast<long long>(size.x) * size.y);
+    const SsaoOutputs occlusion = addSsaoPass(
+        graph, SsaoInputs{.context = context,
+                          .linearDepth = up.geometry.linearDepth,
+                          .normal = up.geometry.normal,
+                          .useVss = vssSettings.enabled,
+                          .vssHeight = up.solve.height,
+                          .shownVss = up.solve.shown,
+                          .radius = std::max(ao.radius, 1e-6F),
+                          .pixelScale = shape.pixelScale,
+                          // Where the view axis meets the frame, in pixels from its
+                          // centre: 0 except for off-axis tiles (P[2][0], P[2][1]).
+                          .axisOffset = glm::vec2(
+                              -0.5F * shape.projection[2][0] * static_cast<float>(size.x),
+                              -0.5F * shape.projection[2][1] * static_cast<float>(size.y)),
+                          .size = size,
+                          .step = aoStep});
+    const AoBlurOutputs blurred = addAoBlurPass(
+        graph,
+        AoBlurInputs{.context = context, .raw = occlusion.raw, .size = aoSize(size, aoStep)});
+    const CompositeOutputs composited =
+        addCompositePass(graph, CompositeInputs{.context = context,
+                                                .vessels = up.vessels.color,
+                                                .useVss = vssSettings.enabled,
+                                                .vss = vss.color,
+                                                .useAo = ao.enabled && ao.strength > 0.0F,
+                                                .ao = blurred.ao,
+                                                .useTranslucent = translucent,
+                                                .translucent = layer.layer,
+                                                .toTexture = useAa,
+                                                .vssVisibilityAlpha = targetIsoLines > 0,
+                                                .reducedVss = reducedVss,
+                                                .vssOpacity = vssSettings.opacity,
+                                                .aoStrength = ao.strength,
+                                                .aoStep = aoStep,
+                                                .background = settings.background,
+                                                .size = size});
+    if (settings.antialiasing) {
+        addFxaaPass(graph, FxaaInputs{.context = context,
+                                      .color = composited.color,
+                                      .targetSize = shape.targetSize});
+    } else if (upscale) {
+        addUpscalePass(graph, UpscaleInputs{.context = context,
+                                            .color = composited.color,
+                                            .targetSize = shape.targetSize,
+                                            .renderSize = size,
+                                            .isoLines = targetIsoLines,
+                                            .isoLineWidth = vssSettings.isoLineWidth,
+                                            .isoLineStrength = vssSettings.isoLineStrength,
+                                            .vssHeight = up.solve.height,
+                                            .shownVss = up.solve.shown,
+                                            .linearDepth = up.geometry.linearDepth,
+                                            .depthImage = up.readback.image});
+    }
+}
+
+}  // namespace
+
 void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& settings,
                                 const FrameTarget& target, GraphMode mode) {
     if (!initialized()) {
@@ -509,13 +630,15 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     Impl& impl = *impl_;
     // The passes run at the (possibly reduced) render size; the last pass
     // draws into the target at its full size.
-    const glm::ivec2 size = renderSizeFor(settings, target);
-    const glm::ivec2 targetSize(target.width, target.height);
+    FrameShape shape;
+    shape.size = renderSizeFor(settings, target);
+    shape.targetSize = glm::ivec2(target.width, target.height);
+    const glm::ivec2 size = shape.size;
     renderSize_ = size;
-    const std::size_t meshLevel = geometryLevel(settings, size);
-    lastGeometryLevel_ = meshLevel;
+    shape.meshLevel = geometryLevel(settings, size);
+    lastGeometryLevel_ = shape.meshLevel;
     // The scene's revision, told apart for each simplified (preview) level.
-    const std::uint64_t sceneRevision = geometryRevision(meshLevel);
+    const std::uint64_t sceneRevision = geometryRevision(shape.meshLevel);
     const VssSettings& vssSettings = settings.vss;
     const std::shared_ptr<const SolvedFrame> external = impl.external;
     if (external && vssSettings.enabled && external->height.width() != 0 &&
@@ -526,8 +649,8 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
             std::to_string(size.x) + "x" + std::to_string(size.y));
     }
     const PassContext context = impl.passContext(meshes_, volume_);
-    const glm::mat4 projection = camera.projectionMatrix();
-    const float pixelScale = pixelScaleOf(camera, size.y);
+    shape.projection = camera.projectionMatrix();
+    shape.pixelScale = pixelScaleOf(camera, size.y);
 
     RenderGraph graph(*impl.cache);
     impl.importTarget(graph, target);
@@ -540,10 +663,11 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                               .arrayKey = meshes_.style().geometryKey(),
                               .volumeRevision = volume_.volume() ? volumeRevision_ : 0U,
                               .volumeIso = volumeIso_,
-                              .meshLevel = meshLevel,
+                              .meshLevel = shape.meshLevel,
                               .volumeObjectId =
                                   static_cast<unsigned>(scene ? scene->meshes.size() : 0U) + 1U});
-    const DepthReadbackOutputs readback = addDepthReadbackPass(graph, {.context = context});
+    const DepthReadbackOutputs readback = addDepthReadbackPass(
+        graph, DepthReadbackInputs{.context = context, .linearDepth = geometry.linearDepth});
     const auto finish = [&](const VssSolveOutputs* solve) {
         graph.execute(impl.observer.get());
         passes_ = graph.passes();
@@ -563,15 +687,16 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const bool async = mode_ == SolveMode::Asynchronous && impl.worker != nullptr;
     impl.importSolveInputs(graph, async);
     const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
-    const std::uint64_t depthView = viewKey(camera.viewMatrix(), projection, size, sceneRevision);
+    const std::uint64_t depthView =
+        viewKey(camera.viewMatrix(), shape.projection, size, sceneRevision);
     // The VSS's size: the render size, or below it for a moving frame.
-    const glm::ivec2 vssSize =
-        vssSettings.enabled ? vssSizeFor(settings, size, external != nullptr) : size;
-    const bool reducedVss = vssSize != size;
+    shape.vssSize = vssSettings.enabled ? vssSizeFor(settings, size, external != nullptr) : size;
+    const glm::ivec2 vssSize = shape.vssSize;
     vssSize_ = vssSize;
     const VssSolveOutputs solve = addVssSolvePass(
         graph, VssSolveInputs{
                    .context = context,
+                   .depth = readback.image,
                    .worker = async ? impl.worker.get() : nullptr,
                    .external = external != nullptr,
                    .options = solverOptions,
@@ -580,10 +705,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                    .depthView = depthView,
                    .request = requestKey(depthView, solverKey(solverOptions, vssSettings.range),
                                          vssSettings.preview, reductionOf(target, size), vssSize),
-                   .pixelScale = pixelScale,
+                   .pixelScale = shape.pixelScale,
                    .reduction = reductionOf(target, size),
                    .size = vssSize,
-                   .reduced = reducedVss,
+                   .reduced = vssSize != size,
                    // The slopes the solver's thread fits for the lighting: at the
                    // render size up to kMaxCpuSlopePixels, else (and for an external
                    // VSS, which brings none) a stand-in texel: the shader fits them.
@@ -595,9 +720,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     // shown, else with the visible vessels' range ("depth-range").
     const bool cueUsesDepth = settings.cue.cue != VesselCue::None;
     const bool cueUsesVss = cueUsesDepth && vssSettings.enabled;
-    if (cueUsesDepth) {
-        addDepthRangePass(graph, {.external = external != nullptr});
-    }
+    const DepthRangeOutputs visible =
+        cueUsesDepth ? addDepthRangePass(graph, DepthRangeInputs{.external = external != nullptr,
+                                                                 .depth = readback.image})
+                     : DepthRangeOutputs{};
     // The viewer's vessel colours are kept across frames: prepareSolve()
     // shades them while the solve runs, and the frame that shows the solve
     // reuses them. Elsewhere (exports, the CLI) their storage is pooled.
@@ -607,8 +733,11 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
                                    .camera = camera,
                                    .cue = settings.cue,
                                    .background = settings.background,
+                                   .gbuffer = geometry,
                                    .cueUsesDepth = cueUsesDepth,
                                    .cueUsesVss = cueUsesVss,
+                                   .visibleRange = visible.range,
+                                   .shownVss = solve.shown,
                                    .keepColor = keepVesselColor,
                                    .shadingRevision = meshes_.shadingRevision(),
                                    .size = size});
@@ -625,67 +754,10 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
         return;
     }
 
-    // With anti-aliasing the FXAA pass draws into the target (upscaling a
-    // reduced render size with its bilinear taps); without it, a reduced
-    // render size ends with "upscale", which draws the VSS's iso-lines at the
-    // target's size (the VSS shading leaves them out then).
-    const bool scaled = size != targetSize;
-    const bool useAa = settings.antialiasing || scaled;
-    const bool upscale = scaled && !settings.antialiasing;
-    const int targetIsoLines = upscale && vssSettings.enabled && vssSettings.isoLineStrength > 0.0F
-                                   ? std::max(vssSettings.isoLines, 0)
-                                   : 0;
-    VssSettings shadedVss = vssSettings;
-    if (targetIsoLines > 0) {
-        shadedVss.isoLines = 0;
-    }
-    addVssShadingPass(graph, VssShadingInputs{.context = context,
-                                              .settings = shadedVss,
-                                              .light = lightingFor(meshes_.style().light),
-                                              .pixelScale = pixelScaleOf(camera, vssSize.y),
-                                              .size = vssSize,
-                                              .reduced = reducedVss});
-    // Declared always: with no translucent object, or AO off, nothing reads
-    // them and the graph culls them.
-    addTranslucentPass(
-        graph, TranslucentInputs{
-                   .context = context, .camera = camera, .meshLevel = meshLevel, .size = size});
-    const AoSettings& ao = settings.ao;
-    const int aoStep = aoStepFor(ao, static_cast<long long>(size.x) * size.y);
-    addSsaoPass(graph, SsaoInputs{.context = context,
-                                  .useVss = vssSettings.enabled,
-                                  .radius = std::max(ao.radius, 1e-6F),
-                                  .pixelScale = pixelScale,
-                                  // Where the view axis meets the frame, in pixels from its
-                                  // centre: 0 except for off-axis tiles (P[2][0], P[2][1]).
-                                  .axisOffset = glm::vec2(
-                                      -0.5F * projection[2][0] * static_cast<float>(size.x),
-                                      -0.5F * projection[2][1] * static_cast<float>(size.y)),
-                                  .size = size,
-                                  .step = aoStep});
-    addAoBlurPass(graph, AoBlurInputs{.context = context, .size = aoSize(size, aoStep)});
-    addCompositePass(graph, CompositeInputs{.context = context,
-                                            .useVss = vssSettings.enabled,
-                                            .useAo = ao.enabled && ao.strength > 0.0F,
-                                            .useTranslucent = meshes_.hasTranslucent(),
-                                            .toTexture = useAa,
-                                            .vssVisibilityAlpha = targetIsoLines > 0,
-                                            .reducedVss = reducedVss,
-                                            .vssOpacity = vssSettings.opacity,
-                                            .aoStrength = ao.strength,
-                                            .aoStep = aoStep,
-                                            .background = settings.background,
-                                            .size = size});
-    if (settings.antialiasing) {
-        addFxaaPass(graph, FxaaInputs{.context = context, .targetSize = targetSize});
-    } else if (upscale) {
-        addUpscalePass(graph, UpscaleInputs{.context = context,
-                                            .targetSize = targetSize,
-                                            .renderSize = size,
-                                            .isoLines = targetIsoLines,
-                                            .isoLineWidth = vssSettings.isoLineWidth,
-                                            .isoLineStrength = vssSettings.isoLineStrength});
-    }
+    addPicturePasses(
+        graph, context, camera, settings, shape,
+        Upstream{.geometry = geometry, .readback = readback, .solve = solve, .vessels = vessels},
+        lightingFor(meshes_.style().light), meshes_.hasTranslucent());
     finish(&solve);
     gl.glBindFramebuffer(GL_FRAMEBUFFER, target.framebuffer);
     gl.glViewport(0, 0, target.width, target.height);

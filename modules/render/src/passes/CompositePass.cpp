@@ -3,6 +3,7 @@
 
 #include <QOpenGLFunctions_4_1_Core>
 #include <algorithm>
+#include <string_view>
 
 #include "passes/FrameResources.h"
 
@@ -16,6 +17,13 @@ void setTextureFilter(QOpenGLFunctions_4_1_Core& g, GLint filter) {
     g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
     g.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
 }
+
+constexpr std::string_view kCompositeFragment[] = {":/vv/shaders/composite.frag"};
+constexpr std::string_view kReducedVss[] = {"REDUCED_VSS"};
+constexpr ProgramSpec kCompositeProgram{kFullscreenVertex, kCompositeFragment, "composite", {}};
+/// The VSS's colour below the render size.
+constexpr ProgramSpec kReducedVssProgram{kFullscreenVertex, kCompositeFragment,
+                                         "composite (reduced VSS)", kReducedVss};
 
 struct Data {
     Handle<Texture> vessels;
@@ -32,7 +40,7 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
     context.beginFullscreen(r, d.target, in.size);
     const bool reduced = in.useVss && in.reducedVss;
     const Program& program =
-        reduced ? context.programs->compositeReducedVss : context.programs->composite;
+        context.programs->get(reduced ? kReducedVssProgram : kCompositeProgram);
     program.use();
     g.glActiveTexture(GL_TEXTURE0);
     g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.vessels)).texture());
@@ -85,25 +93,27 @@ CompositeOutputs addCompositePass(RenderGraph& graph, const CompositeInputs& inp
     const auto& data = graph.addPass<Data>(
         "composite",
         [&](RenderGraph::Builder& b, Data& d) {
-            d.vessels = b.read<Texture>(board::kVesselColor);
+            d.vessels = b.read(inputs.vessels);
             if (inputs.useVss) {
-                d.vss = b.read<Texture>(board::kVssColor);
+                d.vss = b.read(inputs.vss);
             }
             if (inputs.useAo) {
-                d.ao = b.read<Texture>(board::kAo);
+                d.ao = b.read(inputs.ao);
             }
             if (inputs.useTranslucent) {
-                d.translucent = b.read<Texture>(board::kTranslucentColor);
+                d.translucent = b.read(inputs.translucent);
             }
-            d.out.color = b.write(inputs.toTexture
-                                      ? b.create<Texture>(board::kComposited,
-                                                          sized(inputs.size, TextureFormat::RGBA8))
-                                      : graph.blackboard().get<Texture>(board::kOutput));
+            d.out.color = b.write(
+                inputs.toTexture
+                    ? b.create<Texture>("composited", sized(inputs.size, TextureFormat::RGBA8))
+                    : graph.blackboard().get<Texture>(board::kOutput));
             d.target =
                 b.declareRenderTarget("composite", RenderTargetAttachments{{d.out.color}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const Data& d) { composite(inputs, r, d); });
-    graph.blackboard().put(inputs.toTexture ? board::kComposited : board::kOutput, data.out.color);
+    if (!inputs.toTexture) {
+        graph.blackboard().put(board::kOutput, data.out.color);
+    }
     return data.out;
 }
 

@@ -16,10 +16,10 @@ DepthRangeOutputs addDepthRangePass(RenderGraph& graph, const DepthRangeInputs& 
         [&](RenderGraph::Builder& b, Data& d) {
             d.external = b.read<ExternalFrame>(board::kExternalVss);
             if (!inputs.external) {
-                d.depth = b.read<CpuValue<DepthImage>>(board::kLinearDepthImage);
+                d.depth = b.read(inputs.depth);
             }
-            d.out.range = b.write(
-                b.createPersistent<CpuValue<VisibleDepthRange>>(board::kVisibleDepthRange, {}));
+            d.out.range =
+                b.write(b.createPersistent<CpuValue<VisibleDepthRange>>("visible-depth-range", {}));
         },
         [external = inputs.external](const RenderGraph::Resources& r, const Data& d) {
             VisibleDepthRange visible;
@@ -34,7 +34,6 @@ DepthRangeOutputs addDepthRangePass(RenderGraph& graph, const DepthRangeInputs& 
             }
             r.getForWrite(d.out.range).set(visible);
         });
-    graph.blackboard().put(board::kVisibleDepthRange, data.out.range);
     return data.out;
 }
 

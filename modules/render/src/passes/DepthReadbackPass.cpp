@@ -12,17 +12,16 @@ DepthReadbackOutputs addDepthReadbackPass(RenderGraph& graph, const DepthReadbac
     };
     const auto& data = graph.addPass<Data>(
         "depth-readback",
-        [](RenderGraph::Builder& b, Data& d) {
-            d.depth = b.read<Texture>(board::kLinearDepth);
+        [&](RenderGraph::Builder& b, Data& d) {
+            d.depth = b.read(inputs.linearDepth);
             d.out.image =
-                b.write(b.createPersistent<CpuValue<DepthImage>>(board::kLinearDepthImage, {}));
+                b.write(b.createPersistent<CpuValue<DepthImage>>("linear-depth-image", {}));
         },
         [context = inputs.context](const RenderGraph::Resources& r, const Data& d) {
             r.getForWrite(d.out.image)
                 .set(DepthImage{std::make_shared<const Image<float>>(
                     readRedChannel(*context.gl, glTex(r.get(d.depth))))});
         });
-    graph.blackboard().put(board::kLinearDepthImage, data.out.image);
     return data.out;
 }
 

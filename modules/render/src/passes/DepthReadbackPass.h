@@ -9,15 +9,16 @@ namespace vv::render {
 
 struct DepthReadbackInputs {
     PassContext context;
+    Handle<Texture> linearDepth;  ///< GeometryOutputs::linearDepth
 };
 
 struct DepthReadbackOutputs {
     Handle<CpuValue<DepthImage>> image;  ///< persistent: re-read only when the depth changes
 };
 
-/// "depth-readback": reads board::kLinearDepth back to the CPU once per
-/// G-buffer, for every pass that needs it there (the solve, the depth range)
-/// and for renderDepth(); puts board::kLinearDepthImage.
+/// "depth-readback": reads the linear depth back to the CPU once per
+/// G-buffer ("linear-depth-image"), for every pass that needs it there (the
+/// solve, the depth range, the upscale's silhouettes) and for renderDepth().
 DepthReadbackOutputs addDepthReadbackPass(RenderGraph& graph, const DepthReadbackInputs& inputs);
 
 }  // namespace vv::render

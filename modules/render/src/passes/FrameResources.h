@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-// What the frame's passes hand each other: the names they put on the
-// graph's blackboard (each the resource's name too) and the CPU values among
-// those resources. Internal to vv::render.
+// What the frame's passes hand each other besides textures: the CPU values
+// among their resources, and the names of the resources the frame imports,
+// which the blackboard keeps (RenderGraph::blackboard()). Everything a pass
+// makes reaches the next pass as a handle in its inputs (FrameRenderer::
+// renderGraph() wires them). Internal to vv::render.
 
 #include <cstdint>
 #include <memory>
@@ -19,37 +21,10 @@
 
 namespace vv::render::board {
 
-// Imported.
+// Imported by FrameRenderer, on the blackboard under these names.
 inline constexpr std::string_view kOutput = "output";             ///< the frame's target
 inline constexpr std::string_view kSolvedImport = "vss-result";   ///< the worker's latest solve
 inline constexpr std::string_view kExternalVss = "external-vss";  ///< a VSS solved outside
-// "geometry": the G-buffer.
-inline constexpr std::string_view kLinearDepth = "linear-depth";
-inline constexpr std::string_view kNormal = "normal";
-inline constexpr std::string_view kObjectId = "object-id";
-inline constexpr std::string_view kParameter = "parameter";
-inline constexpr std::string_view kDepth = "depth";
-// "depth-readback": the linear depth on the CPU.
-inline constexpr std::string_view kLinearDepthImage = "linear-depth-image";
-// "vss-solve".
-inline constexpr std::string_view kVssHeight = "vss-height";
-inline constexpr std::string_view kVssSlope = "vss-slope";
-/// The depth a VSS below the render size was solved from (VssSolveInputs::reduced).
-inline constexpr std::string_view kVssDepth = "vss-depth";
-inline constexpr std::string_view kShownVss = "shown-vss";
-inline constexpr std::string_view kSolveInput = "solve-input";
-// "depth-range".
-inline constexpr std::string_view kVisibleDepthRange = "visible-depth-range";
-// "vessel-shading".
-inline constexpr std::string_view kVesselColor = "vessel-color";
-inline constexpr std::string_view kVesselCue = "vessel-cue";
-// "vss-shading", "translucent", "ssao", "ao-blur", "composite".
-inline constexpr std::string_view kVssColor = "vss-color";
-inline constexpr std::string_view kTranslucentColor = "translucent-color";
-inline constexpr std::string_view kAoRaw = "ao-raw";
-inline constexpr std::string_view kAo = "ao";
-inline constexpr std::string_view kComposited = "composited";
-
 }  // namespace vv::render::board
 
 namespace vv::render {

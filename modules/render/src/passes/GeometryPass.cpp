@@ -4,8 +4,6 @@
 #include <QOpenGLFunctions_4_1_Core>
 #include <limits>
 
-#include "passes/FrameResources.h"
-
 namespace vv::render {
 
 GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs) {
@@ -25,15 +23,15 @@ GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs
             b.dependsOn("iso", inputs.volumeIso);
             GeometryOutputs& out = d.out;
             out.linearDepth = b.write(b.createPersistent<Texture>(
-                board::kLinearDepth, sized(inputs.size, TextureFormat::R32F)));
-            out.normal = b.write(b.createPersistent<Texture>(
-                board::kNormal, sized(inputs.size, TextureFormat::RGBA16F)));
-            out.objectId = b.write(b.createPersistent<Texture>(
-                board::kObjectId, sized(inputs.size, TextureFormat::R32UI)));
-            out.parameter = b.write(b.createPersistent<Texture>(
-                board::kParameter, sized(inputs.size, TextureFormat::R32F)));
-            out.depth = b.write(b.createPersistent<Texture>(
-                board::kDepth, sized(inputs.size, TextureFormat::Depth32F)));
+                "linear-depth", sized(inputs.size, TextureFormat::R32F)));
+            out.normal = b.write(
+                b.createPersistent<Texture>("normal", sized(inputs.size, TextureFormat::RGBA16F)));
+            out.objectId = b.write(
+                b.createPersistent<Texture>("object-id", sized(inputs.size, TextureFormat::R32UI)));
+            out.parameter = b.write(
+                b.createPersistent<Texture>("parameter", sized(inputs.size, TextureFormat::R32F)));
+            out.depth = b.write(
+                b.createPersistent<Texture>("depth", sized(inputs.size, TextureFormat::Depth32F)));
             d.target = b.declareRenderTarget(
                 "gbuffer",
                 RenderTargetAttachments{{out.linearDepth, out.normal, out.objectId, out.parameter},
@@ -60,12 +58,6 @@ GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs
             context.volume->drawGBuffer(inputs.camera, inputs.volumeIso, inputs.volumeObjectId);
             checkGlError(g, "geometry pass");
         });
-    Blackboard& blackboard = graph.blackboard();
-    blackboard.put(board::kLinearDepth, data.out.linearDepth);
-    blackboard.put(board::kNormal, data.out.normal);
-    blackboard.put(board::kObjectId, data.out.objectId);
-    blackboard.put(board::kParameter, data.out.parameter);
-    blackboard.put(board::kDepth, data.out.depth);
     return data.out;
 }
 

@@ -34,9 +34,9 @@ struct GeometryOutputs {
 };
 
 /// "geometry": rasterises the meshes (MeshRenderer::drawGBuffer) and the
-/// ray-cast volume into the G-buffer, one render target "gbuffer". Reads
-/// nothing; puts every output on the blackboard under its resource name
-/// (board::kLinearDepth, kNormal, kObjectId, kParameter, kDepth).
+/// ray-cast volume into the G-buffer, one render target "gbuffer" of
+/// "linear-depth", "normal", "object-id", "parameter" and "depth". Reads
+/// nothing.
 GeometryOutputs addGeometryPass(RenderGraph& graph, const GeometryInputs& inputs);
 
 }  // namespace vv::render

@@ -4,43 +4,16 @@
 #include <QOpenGLContext>
 #include <QOpenGLFunctions_4_1_Core>
 #include <string_view>
+#include <utility>
 
 namespace vv::render {
 
-namespace {
-constexpr std::string_view kFullscreen = ":/vv/shaders/fullscreen.vert";
-}  // namespace
-
-FullscreenPrograms FullscreenPrograms::build(QOpenGLFunctions_4_1_Core& gl) {
-    const std::string_view vssFragment[] = {":/vv/shaders/vss.frag"};
-    const std::string_view quickNormals[] = {"QUICK_NORMALS"};
-    const std::string_view slopeTexture[] = {"SLOPE_TEXTURE"};
-    FullscreenPrograms programs;
-    programs.vss = Program(gl, kFullscreen, ":/vv/shaders/vss.frag", "VSS shading");
-    programs.vssQuick =
-        Program(gl, kFullscreen, vssFragment, "VSS shading (quick normals)", quickNormals);
-    programs.vssSlope =
-        Program(gl, kFullscreen, vssFragment, "VSS shading (fitted slopes)", slopeTexture);
-    programs.composite = Program(gl, kFullscreen, ":/vv/shaders/composite.frag", "composite");
-    const std::string_view compositeFragment[] = {":/vv/shaders/composite.frag"};
-    const std::string_view reducedVss[] = {"REDUCED_VSS"};
-    programs.compositeReducedVss =
-        Program(gl, kFullscreen, compositeFragment, "composite (reduced VSS)", reducedVss);
-    programs.ssao = Program(gl, kFullscreen, ":/vv/shaders/ssao.frag", "SSAO");
-    programs.aoBlur = Program(gl, kFullscreen, ":/vv/shaders/aoblur.frag", "AO blur");
-    programs.fxaa = Program(gl, kFullscreen, ":/vv/shaders/fxaa.frag", "FXAA");
-    programs.upscale = Program(gl, kFullscreen, ":/vv/shaders/upscale.frag", "upscale");
-    const std::string_view upscaleFragment[] = {":/vv/shaders/upscale.frag"};
-    const std::string_view colorOnly[] = {"COLOR_ONLY"};
-    programs.upscaleColor =
-        Program(gl, kFullscreen, upscaleFragment, "upscale (colour only)", colorOnly);
-    const std::string_view edges[] = {"EDGES"};
-    const std::string_view edgesColorOnly[] = {"EDGES", "COLOR_ONLY"};
-    constexpr std::string_view kRects = ":/vv/shaders/rects.vert";
-    programs.upscaleEdges = Program(gl, kRects, upscaleFragment, "upscale (edges)", edges);
-    programs.upscaleEdgesColor =
-        Program(gl, kRects, upscaleFragment, "upscale (edges, colour only)", edgesColorOnly);
-    return programs;
+const Program& PassPrograms::get(const ProgramSpec& spec) {
+    if (const auto found = programs_.find(spec.what); found != programs_.end()) {
+        return found->second;
+    }
+    Program program(*gl_, spec.vertex, spec.fragments, spec.what, spec.defines);
+    return programs_.emplace(std::string(spec.what), std::move(program)).first->second;
 }
 
 DepthScaleLut::DepthScaleLut(QOpenGLFunctions_4_1_Core& gl)
@@ -86,6 +59,23 @@ void PassContext::beginFullscreen(const RenderGraph::Resources& resources, Rende
 
 const GlTexture& glTex(const Texture& texture) {
     return texture.objectAs<GlTexture>();
+}
+
+void bindFiltered(QOpenGLFunctions_4_1_Core& gl, unsigned texture, bool linear) {
+    gl.glBindTexture(GL_TEXTURE_2D, texture);
+    if (texture != 0U) {
+        const GLint filter = linear ? GL_LINEAR : GL_NEAREST;
+        gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+        gl.glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+    }
+}
+
+void endBilinearPass(QOpenGLFunctions_4_1_Core& gl, unsigned texture, const char* what) {
+    bindFiltered(gl, texture, false);
+    gl.glBindTexture(GL_TEXTURE_2D, 0);
+    gl.glUseProgram(0);
+    gl.glEnable(GL_DEPTH_TEST);
+    checkGlError(gl, what);
 }
 
 void drawFullscreenAndUnbind(QOpenGLFunctions_4_1_Core& gl, unsigned vao, int units) {

@@ -2,11 +2,15 @@
 #pragma once
 
 // What the GL passes of a frame share besides graph resources: GL functions,
-// programs, the framebuffers of declared render targets, the depth-scale
-// texture and the mesh and volume renderers that draw. Internal to vv::render.
+// the programs (each pass names its own), the framebuffers of declared render targets, the
+// depth-scale texture and the mesh and volume renderers that draw. Internal to vv::render.
 
 #include <glm/glm.hpp>
+#include <map>
 #include <optional>
+#include <span>
+#include <string>
+#include <string_view>
 
 #include "vv/colormaps/DepthScale.h"
 #include "vv/render/GlFramebufferCache.h"
@@ -22,28 +26,35 @@ namespace vv::render {
 
 class RectBatch;
 
-/// The full-screen programs of the frame's passes.
-struct FullscreenPrograms {
-    Program vss;       ///< vss.frag: the shader fits the height field's slopes
-    Program vssQuick;  ///< vss.frag with QUICK_NORMALS (preview frames)
-    Program vssSlope;  ///< vss.frag with SLOPE_TEXTURE (slopes from the solver)
-    Program composite;
-    /// composite.frag with REDUCED_VSS: the VSS's colour below the render size.
-    Program compositeReducedVss;
-    Program ssao;
-    Program aoBlur;
-    Program fxaa;
-    Program upscale;  ///< upscale.frag: a reduced frame into the target, iso-lines at its size
-    /// upscale.frag with COLOR_ONLY: where no iso-line reaches (UpscaleTiles.h).
-    Program upscaleColor;
-    /// upscale.frag with EDGES (and COLOR_ONLY) over rects.vert: along the
-    /// vessels' silhouettes (with the iso-lines, and without any).
-    Program upscaleEdges;
-    Program upscaleEdgesColor;
+/// The vertex shader of full-screen passes: one triangle over the target.
+inline constexpr std::string_view kFullscreenVertex = ":/vv/shaders/fullscreen.vert";
 
-    /// Builds them all in the current context. Throws RenderError when a
-    /// shader fails.
-    [[nodiscard]] static FullscreenPrograms build(QOpenGLFunctions_4_1_Core& gl);
+/// How a pass builds one of its programs: a vertex shader resource, the
+/// fragment resources concatenated, `#define`s, and a name for errors (also
+/// the program's key in PassPrograms: one name, one program).
+struct ProgramSpec {
+    std::string_view vertex;
+    std::span<const std::string_view> fragments;
+    std::string_view what;
+    std::span<const std::string_view> defines;
+};
+
+/// The programs of the frame's passes. Each pass names its own programs
+/// (ProgramSpec, in its file) and gets them from here; a program is built
+/// the first time a pass runs with it, so a frame that never runs a pass
+/// never compiles its shaders. Lives with the renderer's GL context.
+class PassPrograms {
+  public:
+    /// Keeps `gl` (the context current now and whenever get() is called).
+    explicit PassPrograms(QOpenGLFunctions_4_1_Core& gl) noexcept : gl_(&gl) {}
+
+    /// The program `spec.what`, built from `spec` on first use. Throws
+    /// RenderError when a shader fails (and builds it again next time).
+    [[nodiscard]] const Program& get(const ProgramSpec& spec);
+
+  private:
+    QOpenGLFunctions_4_1_Core* gl_;
+    std::map<std::string, Program, std::less<>> programs_;
 };
 
 /// The depth colour scale as a 1-D RGBA8 texture, uploaded when it changes.
@@ -76,7 +87,7 @@ class DepthScaleLut {
 /// pass's execute callback captures it by value.
 struct PassContext {
     QOpenGLFunctions_4_1_Core* gl = nullptr;
-    const FullscreenPrograms* programs = nullptr;
+    PassPrograms* programs = nullptr;
     GlFramebufferCache* framebuffers = nullptr;
     DepthScaleLut* scaleLut = nullptr;
     unsigned emptyVao = 0;       ///< for the full-screen triangle of fullscreen.vert
@@ -100,6 +111,17 @@ struct PassContext {
 
 /// The GL texture behind a graph texture; throws RenderGraphError for another backend's.
 [[nodiscard]] const GlTexture& glTex(const Texture& texture);
+
+/// Binds `texture` (0: none) to the active unit's 2-D target and, unless it
+/// is 0, gives it bilinear (`linear`) or nearest taps for minification and
+/// magnification. Pooled textures are nearest; a pass that reads one
+/// bilinearly sets it back (endBilinearPass()).
+void bindFiltered(QOpenGLFunctions_4_1_Core& gl, unsigned texture, bool linear);
+
+/// Ends a full-screen pass that read `texture` on the active unit with
+/// bilinear taps: nearest again and unbound, no program, the depth test back
+/// on; then checks GL (RenderError naming `what`).
+void endBilinearPass(QOpenGLFunctions_4_1_Core& gl, unsigned texture, const char* what);
 
 /// Draws the full-screen triangle of fullscreen.vert with `vao`, then leaves
 /// no state behind: no texture (1-D or 2-D) on units 0 .. units-1 (unit 0

@@ -2,14 +2,15 @@
 #include "passes/SsaoPass.h"
 
 #include <QOpenGLFunctions_4_1_Core>
-
-#include "passes/FrameResources.h"
+#include <string_view>
 
 namespace vv::render {
 
 namespace {
 
 constexpr int kSsaoSamples = 12;
+constexpr std::string_view kSsaoFragment[] = {":/vv/shaders/ssao.frag"};
+constexpr ProgramSpec kSsaoProgram{kFullscreenVertex, kSsaoFragment, "SSAO", {}};
 
 struct SsaoData {
     Handle<Texture> linearDepth;
@@ -25,7 +26,7 @@ void occlude(const SsaoInputs& in, const RenderGraph::Resources& r, const SsaoDa
     auto& g = *context.gl;
     context.beginFullscreen(r, d.target, aoSize(in.size, in.step));
     const SolvedFrame* vss = in.useVss ? r.get(d.shown).value().frame.get() : nullptr;
-    const Program& program = context.programs->ssao;
+    const Program& program = context.programs->get(kSsaoProgram);
     program.use();
     g.glActiveTexture(GL_TEXTURE0);
     g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.linearDepth)).texture());
@@ -58,48 +59,17 @@ SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs) {
             b.dependsOn("pixel-scale", inputs.pixelScale);
             b.dependsOn("axis-offset", inputs.axisOffset);
             b.dependsOn("step", inputs.step);
-            d.linearDepth = b.read<Texture>(board::kLinearDepth);
-            d.normal = b.read<Texture>(board::kNormal);
+            d.linearDepth = b.read(inputs.linearDepth);
+            d.normal = b.read(inputs.normal);
             if (inputs.useVss) {
-                d.height = b.read<Texture>(board::kVssHeight);
-                d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
+                d.height = b.read(inputs.vssHeight);
+                d.shown = b.read(inputs.shownVss);
             }
             d.out.raw = b.write(b.createPersistent<Texture>(
-                board::kAoRaw, sized(aoSize(inputs.size, inputs.step), TextureFormat::RG32F)));
+                "ao-raw", sized(aoSize(inputs.size, inputs.step), TextureFormat::RG32F)));
             d.target = b.declareRenderTarget("ssao", RenderTargetAttachments{{d.out.raw}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const SsaoData& d) { occlude(inputs, r, d); });
-    graph.blackboard().put(board::kAoRaw, data.out.raw);
-    return data.out;
-}
-
-AoBlurOutputs addAoBlurPass(RenderGraph& graph, const AoBlurInputs& inputs) {
-    struct Data {
-        Handle<Texture> raw;
-        AoBlurOutputs out;
-        RenderTargetId target;
-    };
-    const auto& data = graph.addPass<Data>(
-        "ao-blur",
-        [&](RenderGraph::Builder& b, Data& d) {
-            d.raw = b.read<Texture>(board::kAoRaw);
-            d.out.ao = b.write(
-                b.createPersistent<Texture>(board::kAo, sized(inputs.size, TextureFormat::R8)));
-            d.target = b.declareRenderTarget("ao", RenderTargetAttachments{{d.out.ao}, {}});
-        },
-        [inputs](const RenderGraph::Resources& r, const Data& d) {
-            const PassContext& context = inputs.context;
-            auto& g = *context.gl;
-            context.beginFullscreen(r, d.target, inputs.size);
-            const Program& program = context.programs->aoBlur;
-            program.use();
-            g.glActiveTexture(GL_TEXTURE0);
-            g.glBindTexture(GL_TEXTURE_2D, glTex(r.get(d.raw)).texture());
-            program.set("uAo", 0);
-            drawFullscreenAndUnbind(g, context.emptyVao, 1);
-            checkGlError(g, "AO blur pass");
-        });
-    graph.blackboard().put(board::kAo, data.out.ao);
     return data.out;
 }
 

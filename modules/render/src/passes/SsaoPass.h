@@ -3,6 +3,7 @@
 
 #include <glm/glm.hpp>
 
+#include "passes/FrameResources.h"
 #include "passes/PassContext.h"
 #include "vv/render/RenderGraph.h"
 
@@ -10,9 +11,13 @@ namespace vv::render {
 
 struct SsaoInputs {
     PassContext context;
-    /// The VSS occludes too: read board::kVssHeight and kShownVss.
+    Handle<Texture> linearDepth;  ///< GeometryOutputs::linearDepth
+    Handle<Texture> normal;       ///< GeometryOutputs::normal
+    /// The VSS occludes too: read `vssHeight` and `shownVss`.
     bool useVss = false;
-    float radius = 1.0F;  ///< scene units (> 0)
+    Handle<Texture> vssHeight;            ///< VssSolveOutputs::height, read when useVss
+    Handle<CpuValue<ShownVss>> shownVss;  ///< VssSolveOutputs::shown, read when useVss
+    float radius = 1.0F;                  ///< scene units (> 0)
     float pixelScale = 0.0F;
     glm::vec2 axisOffset{0.0F};  ///< where the view axis meets the frame, pixels from its centre
     glm::ivec2 size{1, 1};       ///< the frame's (full) size
@@ -21,29 +26,18 @@ struct SsaoInputs {
     int step = 1;
 };
 
-struct SsaoOutputs {
-    Handle<Texture> raw;  ///< RG32F, persistent
-};
-
-/// "ssao": occlusion from board::kLinearDepth, kNormal and (useVss) the VSS
-/// height; cached while they and the radius stay. Puts board::kAoRaw.
-SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs);
-
-struct AoBlurInputs {
-    PassContext context;
-    glm::ivec2 size{1, 1};  ///< the size of board::kAoRaw (the frame's / the SSAO's step)
-};
-
 /// The size of the SSAO's target for a frame of `size` and `step`.
 [[nodiscard]] inline glm::ivec2 aoSize(glm::ivec2 size, int step) noexcept {
     return (size + glm::ivec2(step - 1)) / step;
 }
 
-struct AoBlurOutputs {
-    Handle<Texture> ao;  ///< R8, persistent
+struct SsaoOutputs {
+    Handle<Texture> raw;  ///< RG32F, persistent
 };
 
-/// "ao-blur": a depth-aware blur of board::kAoRaw; puts board::kAo.
-AoBlurOutputs addAoBlurPass(RenderGraph& graph, const AoBlurInputs& inputs);
+/// "ssao": occlusion from the G-buffer's linear depth and normals and
+/// (useVss) the VSS height, into "ao-raw"; cached while they and the radius
+/// stay.
+SsaoOutputs addSsaoPass(RenderGraph& graph, const SsaoInputs& inputs);
 
 }  // namespace vv::render

@@ -3,8 +3,6 @@
 
 #include <QOpenGLFunctions_4_1_Core>
 
-#include "passes/FrameResources.h"
-
 namespace vv::render {
 
 TranslucentOutputs addTranslucentPass(RenderGraph& graph, const TranslucentInputs& inputs) {
@@ -18,12 +16,12 @@ TranslucentOutputs addTranslucentPass(RenderGraph& graph, const TranslucentInput
     const auto& data = graph.addPass<Data>(
         "translucent",
         [&](RenderGraph::Builder& b, Data& d) {
-            d.opaqueDepth = b.read<Texture>(board::kDepth);
-            d.cue = b.read<CpuValue<ShadedCue>>(board::kVesselCue);
+            d.opaqueDepth = b.read(inputs.opaqueDepth);
+            d.cue = b.read(inputs.cue);
             d.depth = b.write(b.create<Texture>("translucent-depth",
                                                 sized(inputs.size, TextureFormat::Depth32F)));
-            d.out.layer = b.write(b.create<Texture>(board::kTranslucentColor,
-                                                    sized(inputs.size, TextureFormat::RGBA16F)));
+            d.out.layer = b.write(
+                b.create<Texture>("translucent-color", sized(inputs.size, TextureFormat::RGBA16F)));
             d.target = b.declareRenderTarget("translucent",
                                              RenderTargetAttachments{{d.out.layer}, d.depth});
         },
@@ -43,7 +41,6 @@ TranslucentOutputs addTranslucentPass(RenderGraph& graph, const TranslucentInput
                                             inputs.meshLevel);
             checkGlError(g, "translucent pass");
         });
-    graph.blackboard().put(board::kTranslucentColor, data.out.layer);
     return data.out;
 }
 

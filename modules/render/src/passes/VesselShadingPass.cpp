@@ -2,6 +2,7 @@
 #include "passes/VesselShadingPass.h"
 
 #include <QOpenGLFunctions_4_1_Core>
+#include <string_view>
 
 namespace vv::render {
 
@@ -61,20 +62,22 @@ VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadin
         [&](RenderGraph::Builder& b, Data& d) {
             b.dependsOn("cue", cueKey);
             b.dependsOn("shading", inputs.shadingRevision);  // style, light, scene
-            d.linearDepth = b.read<Texture>(board::kLinearDepth);
-            d.normal = b.read<Texture>(board::kNormal);
-            d.objectId = b.read<Texture>(board::kObjectId);
-            d.parameter = b.read<Texture>(board::kParameter);
+            const GeometryOutputs& gbuffer = inputs.gbuffer;
+            d.linearDepth = b.read(gbuffer.linearDepth);
+            d.normal = b.read(gbuffer.normal);
+            d.objectId = b.read(gbuffer.objectId);
+            d.parameter = b.read(gbuffer.parameter);
             if (inputs.cueUsesDepth) {
-                d.visible = b.read<CpuValue<VisibleDepthRange>>(board::kVisibleDepthRange);
+                d.visible = b.read(inputs.visibleRange);
             }
             if (inputs.cueUsesVss) {
-                d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
+                d.shown = b.read(inputs.shownVss);
             }
-            d.out.color = b.write(
-                inputs.keepColor ? b.createPersistent<Texture>(board::kVesselColor, colorFormat)
-                                 : b.create<Texture>(board::kVesselColor, colorFormat));
-            d.out.cue = b.write(b.createPersistent<CpuValue<ShadedCue>>(board::kVesselCue, {}));
+            constexpr std::string_view kColor = "vessel-color";
+            d.out.color =
+                b.write(inputs.keepColor ? b.createPersistent<Texture>(kColor, colorFormat)
+                                         : b.create<Texture>(kColor, colorFormat));
+            d.out.cue = b.write(b.createPersistent<CpuValue<ShadedCue>>("vessel-cue", {}));
             d.target = b.declareRenderTarget("vessels", RenderTargetAttachments{{d.out.color}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const Data& d) {
@@ -93,8 +96,6 @@ VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadin
             checkGlError(g, "vessel shading pass");
             r.getForWrite(d.out.cue).set(shaded);
         });
-    graph.blackboard().put(board::kVesselColor, data.out.color);
-    graph.blackboard().put(board::kVesselCue, data.out.cue);
     return data.out;
 }
 

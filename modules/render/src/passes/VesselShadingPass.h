@@ -5,6 +5,7 @@
 #include <glm/glm.hpp>
 
 #include "passes/FrameResources.h"
+#include "passes/GeometryPass.h"
 #include "passes/PassContext.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameRenderer.h"
@@ -17,10 +18,13 @@ struct VesselShadingInputs {
     Camera camera;  ///< the G-buffer's
     VesselCueSettings cue;
     glm::vec3 background{0.0F};  ///< the fog's colour
-    /// The cue normalises depth: with board::kShownVss's range when
-    /// `cueUsesVss` and a VSS is shown, else board::kVisibleDepthRange's.
+    GeometryOutputs gbuffer;     ///< reads all but its depth
+    /// The cue normalises depth: with `shownVss`'s range when `cueUsesVss`
+    /// and a VSS is shown, else with `visibleRange`.
     bool cueUsesDepth = false;
     bool cueUsesVss = false;
+    Handle<CpuValue<VisibleDepthRange>> visibleRange;  ///< read when cueUsesDepth
+    Handle<CpuValue<ShownVss>> shownVss;               ///< read when cueUsesVss
     /// Keep the colours across frames (persistent), e.g. while a solve runs.
     bool keepColor = false;
     std::uint64_t shadingRevision = 0;  ///< MeshRenderer::shadingRevision()
@@ -34,8 +38,7 @@ struct VesselShadingOutputs {
 
 /// "vessel-shading": deferred shading of the G-buffer (MeshRenderer::
 /// shadeGBuffer) with the material, the colour map and the vessel cue.
-/// Reads board::kLinearDepth, kNormal, kObjectId, kParameter (+ the ranges
-/// above); puts board::kVesselColor, kVesselCue.
+/// "vessel-color" is persistent when `keepColor`, else pooled.
 VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadingInputs& inputs);
 
 }  // namespace vv::render

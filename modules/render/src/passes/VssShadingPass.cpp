@@ -4,10 +4,23 @@
 #include <QOpenGLFunctions_4_1_Core>
 #include <algorithm>
 #include <array>
+#include <string_view>
 
 namespace vv::render {
 
 namespace {
+
+constexpr std::string_view kVssFragment[] = {":/vv/shaders/vss.frag"};
+constexpr std::string_view kQuickNormals[] = {"QUICK_NORMALS"};
+constexpr std::string_view kSlopeTexture[] = {"SLOPE_TEXTURE"};
+/// The shader fits the height field's slopes.
+constexpr ProgramSpec kVssProgram{kFullscreenVertex, kVssFragment, "VSS shading", {}};
+/// One-pixel differences (preview frames).
+constexpr ProgramSpec kQuickProgram{kFullscreenVertex, kVssFragment, "VSS shading (quick normals)",
+                                    kQuickNormals};
+/// The slopes the solver fitted, from a texture.
+constexpr ProgramSpec kSlopeProgram{kFullscreenVertex, kVssFragment, "VSS shading (fitted slopes)",
+                                    kSlopeTexture};
 
 struct Data {
     Handle<Texture> height;
@@ -36,10 +49,9 @@ void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Da
     // ones: the slopes the solver's thread fitted, or (none, e.g. an
     // external VSS or a huge frame) the shader fits them itself.
     const bool slopes = !settings.preview && shown.slopes;
-    const FullscreenPrograms& programs = *context.programs;
-    const Program& program = settings.preview ? programs.vssQuick
-                             : slopes         ? programs.vssSlope
-                                              : programs.vss;
+    const Program& program = context.programs->get(settings.preview ? kQuickProgram
+                                                   : slopes         ? kSlopeProgram
+                                                                    : kVssProgram);
     const Lighting& light = in.light;
     program.use();
     g.glActiveTexture(GL_TEXTURE0);
@@ -81,17 +93,15 @@ VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& 
     const auto& data = graph.addPass<Data>(
         "vss-shading",
         [&](RenderGraph::Builder& b, Data& d) {
-            d.height = b.read<Texture>(board::kVssHeight);
-            d.slope = b.read<Texture>(board::kVssSlope);
-            d.linearDepth =
-                b.read<Texture>(inputs.reduced ? board::kVssDepth : board::kLinearDepth);
-            d.shown = b.read<CpuValue<ShownVss>>(board::kShownVss);
-            d.out.color = b.write(
-                b.create<Texture>(board::kVssColor, sized(inputs.size, TextureFormat::RGBA8)));
+            d.height = b.read(inputs.vss.height);
+            d.slope = b.read(inputs.vss.slope);
+            d.linearDepth = b.read(inputs.reduced ? inputs.vss.depth : inputs.linearDepth);
+            d.shown = b.read(inputs.vss.shown);
+            d.out.color =
+                b.write(b.create<Texture>("vss-color", sized(inputs.size, TextureFormat::RGBA8)));
             d.target = b.declareRenderTarget("vss", RenderTargetAttachments{{d.out.color}, {}});
         },
         [inputs](const RenderGraph::Resources& r, const Data& d) { shade(inputs, r, d); });
-    graph.blackboard().put(board::kVssColor, data.out.color);
     return data.out;
 }
 

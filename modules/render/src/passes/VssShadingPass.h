@@ -5,6 +5,7 @@
 
 #include "passes/FrameResources.h"
 #include "passes/PassContext.h"
+#include "passes/VssSolvePass.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/MeshStyle.h"
 #include "vv/render/RenderGraph.h"
@@ -13,12 +14,14 @@ namespace vv::render {
 
 struct VssShadingInputs {
     PassContext context;
-    VssSettings settings;     ///< scale, iso-lines, lighting, opacity, preview
-    Lighting light;           ///< the vessels' key light
-    float pixelScale = 0.0F;  ///< of a pixel at `size`
-    glm::ivec2 size{1, 1};    ///< the VSS's size (VssSolveInputs::size)
+    VssSettings settings;         ///< scale, iso-lines, lighting, opacity, preview
+    Lighting light;               ///< the vessels' key light
+    float pixelScale = 0.0F;      ///< of a pixel at `size`
+    glm::ivec2 size{1, 1};        ///< the VSS's size (VssSolveInputs::size)
+    VssSolveOutputs vss;          ///< reads its height, slope, shown VSS (and, reduced, depth)
+    Handle<Texture> linearDepth;  ///< the G-buffer's (not read when `reduced`)
     /// The VSS is below the render size (VssSolveInputs::reduced): its
-    /// vessel pixels are those of board::kVssDepth, not the G-buffer's, and
+    /// vessel pixels are those of `vss.depth`, not the G-buffer's, and
     /// its colour is premultiplied and transparent on them (for the
     /// composite's bilinear tap over its void pixels, REDUCED_VSS).
     bool reduced = false;
@@ -29,9 +32,8 @@ struct VssShadingOutputs {
 };
 
 /// "vss-shading": the depth colour scale, iso-lines and height-field
-/// lighting of the shown VSS, at the VSS's size. Reads board::kVssHeight,
-/// kVssSlope, kLinearDepth (reduced: kVssDepth) and kShownVss; puts
-/// board::kVssColor (transient).
+/// lighting of the shown VSS, at the VSS's size, into "vss-color"
+/// (transient).
 VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& inputs);
 
 }  // namespace vv::render

@@ -171,34 +171,26 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
             b.dependsOn("reduced", inputs.reduced);
             d.external = b.read<ExternalFrame>(board::kExternalVss);
             if (!inputs.external) {
-                d.depth = b.read<CpuValue<DepthImage>>(board::kLinearDepthImage);
+                d.depth = b.read(inputs.depth);
             }
             if (inputs.worker != nullptr) {
                 d.solved = b.read<SolvedFrameRef>(board::kSolvedImport);
             }
             VssSolveOutputs& out = d.out;
-            out.height = b.write(b.createPersistent<Texture>(
-                board::kVssHeight, sized(inputs.size, TextureFormat::R32F)));
+            out.height = b.write(
+                b.createPersistent<Texture>("vss-height", sized(inputs.size, TextureFormat::R32F)));
             out.slope = b.write(b.createPersistent<Texture>(
-                board::kVssSlope, inputs.cpuSlopes
-                                      ? sized(inputs.size, TextureFormat::RGBA32F)
-                                      : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
+                "vss-slope", inputs.cpuSlopes
+                                 ? sized(inputs.size, TextureFormat::RGBA32F)
+                                 : TextureDescriptor{1, 1, TextureFormat::RGBA32F, 1}));
             if (inputs.reduced) {
                 out.depth = b.write(b.createPersistent<Texture>(
-                    board::kVssDepth, sized(inputs.size, TextureFormat::R32F)));
+                    "vss-depth", sized(inputs.size, TextureFormat::R32F)));
             }
-            out.shown = b.write(b.createPersistent<CpuValue<ShownVss>>(board::kShownVss, {}));
-            out.input = b.write(b.createPersistent<CpuValue<SolveInput>>(board::kSolveInput, {}));
+            out.shown = b.write(b.createPersistent<CpuValue<ShownVss>>("shown-vss", {}));
+            out.input = b.write(b.createPersistent<CpuValue<SolveInput>>("solve-input", {}));
         },
         [inputs](const RenderGraph::Resources& r, const Data& d) { solve(inputs, r, d); });
-    Blackboard& blackboard = graph.blackboard();
-    blackboard.put(board::kVssHeight, data.out.height);
-    blackboard.put(board::kVssSlope, data.out.slope);
-    if (inputs.reduced) {
-        blackboard.put(board::kVssDepth, data.out.depth);
-    }
-    blackboard.put(board::kShownVss, data.out.shown);
-    blackboard.put(board::kSolveInput, data.out.input);
     return data.out;
 }
 

@@ -31,10 +31,14 @@ struct SolverKey {
 
 struct VssSolveInputs {
     PassContext context;
+    /// The depth to solve (DepthReadbackOutputs::image); not read when
+    /// `external`.
+    Handle<CpuValue<DepthImage>> depth;
     /// The asynchronous solver; null = solve inside the frame. With it, the
-    /// graph must have board::kSolvedImport (its latest solve).
+    /// graph must have imported board::kSolvedImport (its latest solve).
     SolveWorker* worker = nullptr;
-    /// Show board::kExternalVss's VSS instead of solving (tiled rendering).
+    /// Show the imported board::kExternalVss's VSS instead of solving
+    /// (tiled rendering).
     bool external = false;
     vss::SolverOptions options;  ///< effectiveSolverOptions()
     vss::DepthRange range;
@@ -46,8 +50,8 @@ struct VssSolveInputs {
     glm::ivec2 size{1, 1};        ///< the VSS's size: the render size, or below it (`reduced`)
     /// The VSS is solved below the render size (from the depth reduced to
     /// `size`, solveFrame()): the depth it was solved from goes into
-    /// board::kVssDepth (R32F, +Inf off the vessels), for the passes that
-    /// tell its vessel pixels from its void ones at its size.
+    /// VssSolveOutputs::depth (R32F, +Inf off the vessels), for the passes
+    /// that tell its vessel pixels from its void ones at its size.
     bool reduced = false;
     /// Give the slope texture the render size (the solver's thread fits the
     /// slopes); else a stand-in texel and the shader fits them.
@@ -57,18 +61,17 @@ struct VssSolveInputs {
 struct VssSolveOutputs {
     Handle<Texture> height;  ///< R32F z' (void) / z (vessels) / -1 (no VSS)
     Handle<Texture> slope;   ///< RGBA32F fitted slopes when ShownVss::slopes
-    Handle<Texture> depth;   ///< board::kVssDepth when `reduced`, else invalid
+    Handle<Texture> depth;   ///< "vss-depth" when `reduced`, else invalid
     Handle<CpuValue<ShownVss>> shown;
     Handle<CpuValue<SolveInput>> input;
 };
 
-/// "vss-solve": solves the VSS of board::kLinearDepthImage (inline, or
+/// "vss-solve": solves the VSS of the depth read back (inline, or
 /// submitted to the worker, showing its latest solve meanwhile), or takes
 /// board::kExternalVss's, and uploads height and slopes (and, reduced, the
-/// depth it was solved from). Every output is
-/// persistent: cached while depth, solver, preview and the external VSS
-/// stay, so colour scale and iso-line changes never re-solve. Puts
-/// board::kVssHeight, kVssSlope, kShownVss, kSolveInput (and kVssDepth).
+/// depth it was solved from). Every output is persistent: cached while
+/// depth, solver, preview and the external VSS stay, so colour scale and
+/// iso-line changes never re-solve.
 VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs);
 
 }  // namespace vv::render
