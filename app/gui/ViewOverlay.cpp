@@ -18,6 +18,7 @@ void ViewOverlay::setFrame(render::Legends legends, const render::Camera& camera
                            const render::ViewAnnotations& annotations) {
     const bool wasBlank = legends_.empty() && !annotating();
     legends_ = std::move(legends);
+    legends_.interactive = true;  // over the live view: hovering names a label
     camera_ = camera;
     annotations_ = annotations;
     if (!(wasBlank && legends_.empty() && !annotating())) {

@@ -239,8 +239,10 @@ TEST(LabelLegendTest, MoreLabelsThanColoursGetTwoLinesNotAMisleadingKey) {
     const QRectF area(0, 0, 1200, 800);
     vv::render::Legends manyLegends;
     manyLegends.parameter = many;
+    manyLegends.interactive = true;  // over the live view: "hover names a label" too
     vv::render::Legends oneLegend;
     oneLegend.parameter = one;
+    oneLegend.interactive = true;
     const QRectF manyBox = vv::render::legendLayout(area, manyLegends).parameter;
     const QRectF oneBox = vv::render::legendLayout(area, oneLegend).parameter;
     EXPECT_GT(manyBox.height(), oneBox.height());  // two lines of text ...
@@ -259,6 +261,31 @@ TEST(LabelLegendTest, MoreLabelsThanColoursGetTwoLinesNotAMisleadingKey) {
         }
     }
     EXPECT_EQ(swatchPixels, 0) << "swatches drawn although colours repeat";
+}
+
+TEST(LabelLegendTest, AnExportedLegendDoesNotSayHoverAndWrapsInsteadOfCutting) {
+    // An exported image or report cannot be hovered: its legend of repeating
+    // colours is the one summary line. In a narrow image that line is broken
+    // into two, not elided: the box grows by a line.
+    vv::render::test::ensureGuiApplication();
+    vv::render::ParameterLegend many;
+    many.name = "segment_id";
+    for (int v = 0; v < 16; ++v) {
+        many.labels.push_back(vv::scene::Label{v, {}});
+    }
+    vv::render::Legends exported;
+    exported.parameter = many;
+    vv::render::Legends live = exported;
+    live.interactive = true;
+    const QRectF wide(0, 0, 1200, 800);
+    const double exportedWide = vv::render::legendLayout(wide, exported).parameter.height();
+    const double liveWide = vv::render::legendLayout(wide, live).parameter.height();
+    EXPECT_LT(exportedWide, liveWide) << "the exported legend has the hover line";
+    // 400 px wide (same height, so the same font): the legend is 120 px,
+    // narrower than the summary line.
+    const QRectF narrow(0, 0, 400, 800);
+    const double exportedNarrow = vv::render::legendLayout(narrow, exported).parameter.height();
+    EXPECT_GT(exportedNarrow, exportedWide * 1.1) << "the summary was cut, not wrapped";
 }
 
 /// The x positions of the tick marks below a legend bar painted on black:

@@ -34,10 +34,13 @@ struct Metrics {
     double width = 200.0;
     double height = 60.0;
     double available = 200.0;  ///< the widest a legend may be beside the others
+    bool interactive = false;  ///< Legends::interactive
 };
 
-Metrics metricsFor(const QRectF& area, int legends) {
+Metrics metricsFor(const QRectF& area, const Legends& shown) {
+    const int legends = (shown.depth ? 1 : 0) + (shown.parameter ? 1 : 0);
     Metrics m;
+    m.interactive = shown.interactive;
     m.font = std::clamp(area.height() / 45.0, 11.0, 16.0);
     m.pad = std::round(m.font * 0.5);
     m.margin = std::round(m.font * 0.8);
@@ -182,14 +185,22 @@ bool labelColoursRepeat(const ParameterLegend& p) {
 
 /// The texts of a label legend's rows: one per label, at most kMaxSwatches
 /// (the last then says how many more there are).
-QStringList swatchTexts(const ParameterLegend& p) {
+QStringList swatchTexts(const ParameterLegend& p, const Metrics& m) {
     QStringList texts;
     if (labelColoursRepeat(p)) {
-        // A key where two rows share a colour would mislead: two lines instead.
-        texts.push_back(
+        // A key where two rows share a colour would mislead: a summary
+        // instead, broken into lines as wide as the legend, never elided;
+        // over the live view, how to tell the labels apart.
+        texts << titleLines(
+            m,
             translated(QT_TRANSLATE_NOOP("vv::render::Legend", "%1 labels, colours repeat"))
-                .arg(QLocale().toString(static_cast<qulonglong>(p.labels.size()))));
-        texts.push_back(translated(QT_TRANSLATE_NOOP("vv::render::Legend", "hover names a label")));
+                .arg(QLocale().toString(static_cast<qulonglong>(p.labels.size()))),
+            m.width);
+        if (m.interactive) {
+            texts << titleLines(
+                m, translated(QT_TRANSLATE_NOOP("vv::render::Legend", "hover names a label")),
+                m.width);
+        }
         return texts;
     }
     const std::size_t shown = p.labels.size() > kMaxSwatches ? kMaxSwatches - 1 : p.labels.size();
@@ -206,7 +217,7 @@ QStringList swatchTexts(const ParameterLegend& p) {
 
 SwatchGrid swatchGrid(const ParameterLegend& p, const Metrics& m) {
     const QFontMetricsF fm(legendFont(m));
-    const QStringList texts = swatchTexts(p);
+    const QStringList texts = swatchTexts(p, m);
     double widest = 0.0;
     for (const QString& text : texts) {
         widest = std::max(widest, fm.horizontalAdvance(text));
@@ -276,7 +287,7 @@ void paintLabelBox(QPainter& painter, const QRectF& box, const Metrics& m,
         titleBottom += titleLineHeight(m);
     }
     const SwatchGrid grid = swatchGrid(p, m);
-    const QStringList texts = swatchTexts(p);
+    const QStringList texts = swatchTexts(p, m);
     const double columnWidth = inner.width() / static_cast<double>(grid.columns);
     for (int i = 0; i < texts.size(); ++i) {
         const int column = i / grid.rows;
@@ -396,8 +407,7 @@ LegendLayout legendLayout(const QRectF& area, const Legends& legends) {
     if (legends.empty()) {
         return layout;
     }
-    const int count = (legends.depth ? 1 : 0) + (legends.parameter ? 1 : 0);
-    const Metrics m = metricsFor(area, count);
+    const Metrics m = metricsFor(area, legends);
     if (legends.depth) {
         const double height =
             barLegendHeight(m, QString::fromStdString(depthLegendTitle(*legends.depth)), m.width);
@@ -425,8 +435,7 @@ void paintLegends(QPainter& painter, const QRectF& area, const Legends& legends)
     if (legends.empty()) {
         return;
     }
-    const int count = (legends.depth ? 1 : 0) + (legends.parameter ? 1 : 0);
-    const Metrics m = metricsFor(area, count);
+    const Metrics m = metricsFor(area, legends);
     const LegendLayout layout = legendLayout(area, legends);
     painter.save();
     painter.setRenderHint(QPainter::Antialiasing, true);

@@ -56,6 +56,10 @@ struct Legends {
     /// One more per further array that objects show (ObjectStyle::array),
     /// stacked above `parameter`; empty when `parameter` is absent.
     std::vector<ParameterLegend> moreParameters;
+    /// Painted over the live view, where hovering a vessel names its label:
+    /// a label legend whose colours repeat then says so. Off in exported
+    /// images and reports, which no one can hover.
+    bool interactive = false;
     [[nodiscard]] bool empty() const noexcept {
         return !depth && !parameter && moreParameters.empty();
     }
