@@ -3,9 +3,11 @@
 #
 #   vv_add_image_test(NAME name DATA mesh-file [SIZE WxH] ARGS render-options...
 #                     THRESHOLD t [DISABLED "why"])
+#   vv_add_image_test(NAME name SESSION file.vvs [SIZE WxH] [ARGS options...] ...)
 #
 # The test (ctest name "baseline.<name>", label "baseline") runs
-# `vesselview-cli render <DATA> --size <SIZE> <ARGS> -o ...` offscreen (it
+# `vesselview-cli render <DATA> --size <SIZE> <ARGS> -o ...` (with SESSION:
+# `render --session <file.vvs> ...`, the ARGS overriding it) offscreen (it
 # needs an X display: scripts/test runs ctest under xvfb-run with
 # QT_QPA_PLATFORM=xcb), compares the image with tests/baselines/<name>.png by
 # the SSIM-like difference of tests/support/ImageCompare.h (0 = identical) and
@@ -26,9 +28,15 @@ set(VV_BASELINE_OUT_DIR "${PROJECT_BINARY_DIR}/test-tmp/baselines" CACHE INTERNA
   "Where failing image tests write their candidates")
 
 function(vv_add_image_test)
-  cmake_parse_arguments(ARG "" "NAME;DATA;SIZE;THRESHOLD;DISABLED" "ARGS" ${ARGN})
-  if(NOT ARG_NAME OR NOT ARG_DATA OR NOT DEFINED ARG_THRESHOLD)
-    message(FATAL_ERROR "vv_add_image_test: NAME, DATA and THRESHOLD are required")
+  cmake_parse_arguments(ARG "" "NAME;DATA;SESSION;SIZE;THRESHOLD;DISABLED" "ARGS" ${ARGN})
+  if(NOT ARG_NAME OR NOT DEFINED ARG_THRESHOLD OR (NOT ARG_DATA AND NOT ARG_SESSION)
+     OR (ARG_DATA AND ARG_SESSION))
+    message(FATAL_ERROR "vv_add_image_test: NAME, THRESHOLD and one of DATA or SESSION are required")
+  endif()
+  if(ARG_SESSION)
+    set(input --session ${ARG_SESSION})
+  else()
+    set(input ${ARG_DATA})
   endif()
   if(ARG_UNPARSED_ARGUMENTS)
     message(FATAL_ERROR "vv_add_image_test(${ARG_NAME}): unexpected ${ARG_UNPARSED_ARGUMENTS}")
@@ -44,7 +52,7 @@ function(vv_add_image_test)
       --baseline ${VV_BASELINE_DIR}/${ARG_NAME}.png
       --out-dir ${VV_BASELINE_OUT_DIR}
       --threshold ${ARG_THRESHOLD}
-      -- ${ARG_DATA} --size ${ARG_SIZE} ${ARG_ARGS})
+      -- ${input} --size ${ARG_SIZE} ${ARG_ARGS})
   set_tests_properties(${test} PROPERTIES
     LABELS baseline
     TIMEOUT 300)
