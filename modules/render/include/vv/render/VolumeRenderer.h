@@ -13,7 +13,7 @@ class QOpenGLFunctions_4_1_Core;
 
 namespace vv::render {
 
-/// A volume as a depth source of the geometry pass (docs/architecture.md,
+/// A volume as a depth source of the geometry pass (docs/design-notes.md,
 /// "Volume depth source"): first-hit iso-surface ray casting into the same
 /// G-buffer outputs MeshRenderer::drawGBuffer writes (linear depth, view-space
 /// normal with w = 0, object id, parameter NaN) and gl_FragDepth, so meshes
