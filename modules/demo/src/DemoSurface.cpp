@@ -2,7 +2,8 @@
 // The surface of a vessel tree: a narrow-band signed distance field (smooth
 // union of tubes along the centrelines) sampled slab by slab, flying edges at
 // 0, windowed-sinc smoothing, outward normals; the per-vertex flow data come
-// from DemoFlowFields.cpp. See docs/demo-data.md.
+// from DemoFlowFields.cpp. Also generateDemoMesh: the tree (DemoTree.cpp) and
+// its surface. See docs/demo-data.md.
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkFlyingEdges3D.h>
@@ -28,7 +29,7 @@
 #include <vector>
 
 #include "DemoSurfaceDetail.h"
-#include "DemoTreeDetail.h"
+#include "DemoValidation.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 #include "vv/demo/DemoTree.h"
@@ -687,6 +688,15 @@ scene::Mesh buildVesselSurface(const VesselTree& tree, const DemoTreeOptions& op
     mesh.name = "vessel tree";
     detail::addFlowFields(mesh, tree, extraction.pieces, extraction.bins,
                           progress.sub(kNormalsEnd, 1.0));
+    return mesh;
+}
+
+scene::Mesh generateDemoMesh(const DemoTreeOptions& options, const Progress& progress) {
+    progress.report(0.0, "Generating vessel tree");
+    const VesselTree tree = generateVesselTree(options);
+    progress.report(0.02, "Generating vessel tree");
+    scene::Mesh mesh = buildVesselSurface(tree, options, progress.sub(0.02, 1.0));
+    mesh.name = "demo vessel tree";
     return mesh;
 }
 

@@ -10,11 +10,9 @@
 #include <cstdint>
 #include <limits>
 #include <numbers>
-#include <string>
 #include <vector>
 
-#include "DemoTreeDetail.h"
-#include "vv/core/Error.h"
+#include "DemoValidation.h"
 
 namespace vv::demo {
 
@@ -24,6 +22,9 @@ using glm::dvec3;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double kDegree = kPi / 180.0;
+
+/// Pascal per millimetre of mercury (conventional mmHg).
+constexpr double kPascalPerMmHg = 133.322387415;
 
 // Geometry of the generator (see docs/demo-data.md).
 constexpr int kCenterlinePoints = 25;             // samples per centreline (24 pieces)
@@ -47,7 +48,6 @@ constexpr double kEndBendMax = 25.0 * kDegree;
 constexpr double kChordPerLength = 1.0 / 1.04;  // chord of a gently curved segment
 constexpr int kPlacementAttempts = 24;
 constexpr double kAcceptedGap = 1.0;  // wall-to-wall gap / child radius
-constexpr int kMinTriangleLimit = 10000;
 
 /// xoshiro256** (Blackman & Vigna), seeded through splitmix64. Written here so
 /// that the sequence is the same with every standard library.
@@ -253,7 +253,7 @@ void solveFlow(VesselTree& tree, const DemoTreeOptions& options) {
     segments[0].pressureInMmHg = options.inletPressureMmHg;
     for (auto& s : segments) {
         const double flow = s.flowMlPerS * 1e-6;
-        s.pressureOutMmHg = s.pressureInMmHg - flow * s.resistance / detail::kPascalPerMmHg;
+        s.pressureOutMmHg = s.pressureInMmHg - flow * s.resistance / kPascalPerMmHg;
         const double r = s.radiusMm * 1e-3;
         s.wssPa = 4.0 * mu * flow / (kPi * r * r * r);
         double conductance = 0.0;
@@ -269,91 +269,7 @@ void solveFlow(VesselTree& tree, const DemoTreeOptions& options) {
     }
 }
 
-void requirePositive(double value, const char* what) {
-    if (!(std::isfinite(value) && value > 0.0)) {
-        throw InvalidArgumentError(std::string("demo tree: ") + what +
-                                   " must be a positive finite number, got " +
-                                   std::to_string(value));
-    }
-}
-
 }  // namespace
-
-namespace detail {
-
-void validateDemoOptions(const DemoTreeOptions& options) {
-    if (options.generations < 1 || options.generations > 10) {
-        throw InvalidArgumentError("demo tree: generations must be in 1..10, got " +
-                                   std::to_string(options.generations));
-    }
-    requirePositive(options.rootRadiusMm, "root radius (mm)");
-    requirePositive(options.rootLengthMm, "root length (mm)");
-    requirePositive(options.inletFlowMlPerS, "inlet flow (ml/s)");
-    requirePositive(options.viscosityPaS, "viscosity (Pa s)");
-    if (options.rootLengthMm < 2.0 * options.rootRadiusMm) {
-        throw InvalidArgumentError("demo tree: root length (" +
-                                   std::to_string(options.rootLengthMm) +
-                                   " mm) must be at least twice the root radius (" +
-                                   std::to_string(options.rootRadiusMm) + " mm)");
-    }
-    if (!std::isfinite(options.inletPressureMmHg)) {
-        throw InvalidArgumentError("demo tree: inlet pressure must be finite");
-    }
-    if (!(std::isfinite(options.voxelSizeMm) && options.voxelSizeMm >= 0.0)) {
-        throw InvalidArgumentError("demo tree: voxel size must be 0 (automatic) or positive, got " +
-                                   std::to_string(options.voxelSizeMm));
-    }
-    if (options.maxTriangles != 0 && options.maxTriangles < kMinTriangleLimit) {
-        throw InvalidArgumentError("demo tree: triangle limit must be 0 (none) or at least " +
-                                   std::to_string(kMinTriangleLimit) + ", got " +
-                                   std::to_string(options.maxTriangles));
-    }
-}
-
-void validateVesselTree(const VesselTree& tree) {
-    const auto& segments = tree.segments;
-    if (segments.empty()) {
-        throw InvalidArgumentError("vessel tree: no segments");
-    }
-    const int count = static_cast<int>(segments.size());
-    for (int i = 0; i < count; ++i) {
-        const auto& s = segments[static_cast<std::size_t>(i)];
-        const std::string where = "vessel tree: segment " + std::to_string(i);
-        if (s.id != i) {
-            throw InvalidArgumentError(where + " has id " + std::to_string(s.id));
-        }
-        if ((i == 0) != (s.parent == -1) || s.parent >= i || s.parent < -1) {
-            throw InvalidArgumentError(where + " has parent " + std::to_string(s.parent) +
-                                       " (the root must come first, parents before children)");
-        }
-        if (s.parent >= 0) {
-            const auto& siblings = segments[static_cast<std::size_t>(s.parent)].children;
-            if (std::count(siblings.begin(), siblings.end(), i) != 1) {
-                throw InvalidArgumentError(where +
-                                           " is not listed once among its parent's children");
-            }
-        }
-        for (const int c : s.children) {
-            if (c <= i || c >= count || segments[static_cast<std::size_t>(c)].parent != i) {
-                throw InvalidArgumentError(where + " lists child " + std::to_string(c) +
-                                           " which is not its child");
-            }
-        }
-        if (!(std::isfinite(s.radiusMm) && s.radiusMm > 0.0)) {
-            throw InvalidArgumentError(where + " has a non-positive radius");
-        }
-        if (s.centerline.size() < 2) {
-            throw InvalidArgumentError(where + " has fewer than 2 centreline points");
-        }
-        for (const auto& p : s.centerline) {
-            if (!isFinite(p)) {
-                throw InvalidArgumentError(where + " has a non-finite centreline point");
-            }
-        }
-    }
-}
-
-}  // namespace detail
 
 VesselTree generateVesselTree(const DemoTreeOptions& options) {
     detail::validateDemoOptions(options);
@@ -487,15 +403,6 @@ VesselTree generateVesselTree(const DemoTreeOptions& options) {
     }
     solveFlow(tree, options);
     return tree;
-}
-
-scene::Mesh generateDemoMesh(const DemoTreeOptions& options, const Progress& progress) {
-    progress.report(0.0, "Generating vessel tree");
-    const VesselTree tree = generateVesselTree(options);
-    progress.report(0.02, "Generating vessel tree");
-    scene::Mesh mesh = buildVesselSurface(tree, options, progress.sub(0.02, 1.0));
-    mesh.name = "demo vessel tree";
-    return mesh;
 }
 
 }  // namespace vv::demo

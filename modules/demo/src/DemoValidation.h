@@ -1,13 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Private to vv::demo: what DemoTree.cpp and DemoSurface.cpp share.
+// Private to vv::demo: the checks of the demo options and of a vessel tree that
+// both the tree generator (DemoTree.cpp) and the surface (DemoSurface.cpp) run
+// on their inputs. Their own header, so that neither of the two needs the other's.
 #pragma once
 
 #include "vv/demo/DemoTree.h"
 
 namespace vv::demo::detail {
-
-/// Pascal per millimetre of mercury (conventional mmHg).
-inline constexpr double kPascalPerMmHg = 133.322387415;
 
 /// Throws InvalidArgumentError naming the first option out of its documented range.
 void validateDemoOptions(const DemoTreeOptions& options);
