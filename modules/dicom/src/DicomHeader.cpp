@@ -253,67 +253,75 @@ std::string transferSyntaxProblem(const std::string& uid, const std::string& nam
     return {};
 }
 
-}  // namespace
-
-FileHeader readHeader(const fs::path& file) {
-    ensureCodecs();
-    FileHeader h;
-    h.file = file;
+/// Why `file` is not worth parsing: not a regular file, empty, or neither a
+/// DICM prefix nor a plausible data set; empty when it is.
+std::string whyNotDicom(const fs::path& file) {
     std::error_code ec;
     if (!fs::is_regular_file(file, ec)) {
-        h.skipReason = "not a regular file";
-        return h;
+        return "not a regular file";
     }
     if (fs::file_size(file, ec) == 0) {
-        h.skipReason = "empty file";
-        return h;
+        return "empty file";
     }
     if (!sniffDicom(file)) {
-        h.skipReason = "not a DICOM file (no DICM prefix, no data set)";
-        return h;
+        return "not a DICOM file (no DICM prefix, no data set)";
     }
+    return {};
+}
 
-    DcmFileFormat ff;
+/// What parsing a file gave besides the data set.
+struct Parsed {
+    std::string damaged;     ///< why a truncated or corrupt file's pixel data is unusable
+    std::string skipReason;  ///< non-empty: not even the header parses
+};
+
+/// Parses `file` into `ff`. A truncated or corrupt file is parsed again up to
+/// its pixel data, so that an image still shows up in its series (and is
+/// refused with `damaged` as the reason when loaded).
+Parsed parse(DcmFileFormat& ff, const fs::path& file) {
+    Parsed parsed;
     const OFCondition status =
         ff.loadFile(OFFilename(file.c_str()), EXS_Unknown, EGL_noChange, 4096, ERM_autoDetect);
-    std::string damaged;
     if (status.bad()) {
-        // A truncated or corrupt file: read what comes before the pixel data
-        // so that an image still shows up in its series (and is refused with
-        // this reason when loaded).
-        damaged = status == EC_StreamNotifyClient
-                      ? std::string("the file is truncated (premature end of stream)")
-                      : std::string("the file is corrupt (") + status.text() + ")";
+        parsed.damaged = status == EC_StreamNotifyClient
+                             ? std::string("the file is truncated (premature end of stream)")
+                             : std::string("the file is corrupt (") + status.text() + ")";
         ff.clear();
         const OFCondition header =
             ff.loadFileUntilTag(OFFilename(file.c_str()), EXS_Unknown, EGL_noChange, 4096,
                                 ERM_autoDetect, DCM_PixelData);
         if (header.bad() || !ff.getDataset()->tagExists(DCM_Rows)) {
-            h.skipReason = "cannot be parsed as DICOM: " + damaged;
-            return h;
+            parsed.skipReason = "cannot be parsed as DICOM: " + parsed.damaged;
         }
     }
-    DcmDataset* ds = ff.getDataset();
-    DcmMetaInfo* meta = ff.getMetaInfo();
+    return parsed;
+}
 
-    const std::string mediaClass = getString(meta, DCM_MediaStorageSOPClassUID);
-    if (mediaClass == UID_MediaStorageDirectoryStorage ||
-        ds->tagExists(DCM_DirectoryRecordSequence)) {
-        h.isDicomdir = true;
-        h.skipReason = "DICOMDIR (a media index; the files it lists are read themselves)";
-        DcmSequenceOfItems* seq = nullptr;
-        if (ds->findAndGetSequence(DCM_DirectoryRecordSequence, seq).good() && seq != nullptr) {
-            for (unsigned long i = 0; i < seq->card(); ++i) {
-                std::string id = getString(seq->getItem(i), DCM_ReferencedFileID);
-                if (!id.empty()) {
-                    std::replace(id.begin(), id.end(), '\\', '/');
-                    h.dicomdirFiles.push_back(id);
-                }
+/// True, with `h` complete (skipped, its referenced files listed), when the
+/// data set is a DICOMDIR.
+bool readDicomdir(DcmDataset* ds, const std::string& mediaClass, FileHeader& h) {
+    if (mediaClass != UID_MediaStorageDirectoryStorage &&
+        !ds->tagExists(DCM_DirectoryRecordSequence)) {
+        return false;
+    }
+    h.isDicomdir = true;
+    h.skipReason = "DICOMDIR (a media index; the files it lists are read themselves)";
+    DcmSequenceOfItems* seq = nullptr;
+    if (ds->findAndGetSequence(DCM_DirectoryRecordSequence, seq).good() && seq != nullptr) {
+        for (unsigned long i = 0; i < seq->card(); ++i) {
+            std::string id = getString(seq->getItem(i), DCM_ReferencedFileID);
+            if (!id.empty()) {
+                std::replace(id.begin(), id.end(), '\\', '/');
+                h.dicomdirFiles.push_back(id);
             }
         }
-        return h;
     }
+    return true;
+}
 
+/// UIDs, modality, descriptions, patient and series number; the SOP class
+/// from the meta header when the data set has none.
+void readIdentity(DcmDataset* ds, const std::string& mediaClass, FileHeader& h) {
     h.sopClassUid = getString(ds, DCM_SOPClassUID);
     if (h.sopClassUid.empty()) {
         h.sopClassUid = mediaClass;
@@ -332,20 +340,28 @@ FileHeader readHeader(const fs::path& file) {
     if (ds->findAndGetSint32(DCM_SeriesNumber, seriesNumber).good()) {
         h.seriesNumber = seriesNumber;
     }
+}
 
+/// The transfer syntax (the meta header's, else the one the data set was
+/// read in), its name, byte order and encapsulation.
+void readTransferSyntax(DcmDataset* ds, DcmMetaInfo* meta, FileHeader& h) {
     h.transferSyntaxUid = getString(meta, DCM_TransferSyntaxUID);
     const E_TransferSyntax original = ds->getOriginalXfer();
     if (h.transferSyntaxUid.empty() && original != EXS_Unknown) {
         h.transferSyntaxUid = DcmXfer(original).getXferID();
     }
-    {
-        const DcmXfer x(h.transferSyntaxUid.c_str());
-        h.transferSyntaxName = x.getXfer() != EXS_Unknown ? x.getXferName() : h.transferSyntaxUid;
-        const DcmXfer read(original);
-        h.bigEndian = original != EXS_Unknown && read.isBigEndian();
-        h.encapsulated = x.getXfer() != EXS_Unknown && x.isEncapsulated();
-    }
+    const DcmXfer x(h.transferSyntaxUid.c_str());
+    h.transferSyntaxName = x.getXfer() != EXS_Unknown ? x.getXferName() : h.transferSyntaxUid;
+    const DcmXfer read(original);
+    h.bigEndian = original != EXS_Unknown && read.isBigEndian();
+    h.encapsulated = x.getXfer() != EXS_Unknown && x.isEncapsulated();
+}
 
+/// The image pixel attributes: size, frames, bits, photometric, native pixel
+/// data length. False, with `h.skipReason` set, when the file has no pixel
+/// data (a non-image object) or no size; a damaged file or float pixel data
+/// keeps its `unsupportedReason`.
+bool readImagePixel(DcmDataset* ds, const std::string& damaged, FileHeader& h) {
     DcmElement* pixel = nullptr;
     if (!damaged.empty()) {
         h.unsupportedReason = damaged;
@@ -354,15 +370,14 @@ FileHeader readHeader(const fs::path& file) {
             h.unsupportedReason = "float pixel data (parametric maps) is not supported";
         } else {
             h.skipReason = nonImageReason(h.sopClassUid, h.modality);
-            return h;
+            return false;
         }
     }
-
     h.rows = getInt(ds, DCM_Rows, 0);
     h.columns = getInt(ds, DCM_Columns, 0);
     if (h.rows <= 0 || h.columns <= 0) {
         h.skipReason = "pixel data without Rows / Columns";
-        return h;
+        return false;
     }
     Sint32 frames = 1;
     if (ds->findAndGetSint32(DCM_NumberOfFrames, frames).good() && frames > 1) {
@@ -380,8 +395,13 @@ FileHeader readHeader(const fs::path& file) {
     if (pixel != nullptr && !h.encapsulated) {
         h.pixelDataBytes = pixel->getLengthField();
     }
+    return true;
+}
 
-    // What stops decoding, first reason wins.
+/// Sets `h.unsupportedReason` to what stops decoding, first reason wins (an
+/// earlier one stays): transfer syntax, colour, photometric interpretation,
+/// Bits Allocated, compressed 1-bit data.
+void checkDecodable(FileHeader& h) {
     if (h.unsupportedReason.empty()) {
         h.unsupportedReason = transferSyntaxProblem(h.transferSyntaxUid, h.transferSyntaxName);
     }
@@ -404,8 +424,13 @@ FileHeader readHeader(const fs::path& file) {
     if (h.unsupportedReason.empty() && h.bitsAllocated == 1 && h.encapsulated) {
         h.unsupportedReason = "compressed 1-bit pixel data is not supported";
     }
+}
 
-    // Geometry: file level, then shared functional groups, then per frame.
+/// Geometry: file level (an NM detector's position and orientation where the
+/// file has none), then shared functional groups, then per frame (kept only
+/// when there is one item per frame); slice thickness and spacing; whether a
+/// Modality LUT Sequence replaces the rescale.
+void readFrameGeometry(DcmDataset* ds, FileHeader& h) {
     readGeometry(ds, h.shared, false);
     if (!h.shared.position || !h.shared.orientation) {
         // NM: position and orientation of the detector.
@@ -445,49 +470,93 @@ FileHeader readHeader(const fs::path& file) {
         }
     }
     h.hasModalityLut = ds->tagExists(DCM_ModalityLUTSequence) && !h.shared.slope;
+}
 
+/// RT dose: the Grid Frame Offset Vector, one finite offset per frame; empty
+/// when absent or unusable.
+std::vector<double> gridFrameOffsets(DcmDataset* ds, std::uint64_t frames) {
+    std::vector<double> offsets;
+    DcmElement* g = nullptr;
+    if (ds->findAndGetElement(DCM_GridFrameOffsetVector, g).good() && g != nullptr &&
+        g->getVM() == frames) {
+        for (unsigned long f = 0; f < frames; ++f) {
+            Float64 d = 0;
+            if (g->getFloat64(d, f).bad() || !std::isfinite(d)) {
+                return {};
+            }
+            offsets.push_back(d);
+        }
+    }
+    return offsets;
+}
+
+/// A multi-frame file without a position for every frame: the frames lie at
+/// RT dose offsets along the normal (perFrame), or a step apart along it
+/// (frameStep, from Spacing Between Slices or Slice Thickness), or nowhere
+/// known (framesWithoutGeometry).
+void placeFrames(DcmDataset* ds, FileHeader& h) {
     const bool perFramePositions =
         !h.perFrame.empty() &&
         std::all_of(h.perFrame.begin(), h.perFrame.end(),
                     [](const FrameInfo& f) { return f.position.has_value(); });
-    if (h.frames > 1 && !perFramePositions) {
-        h.perFrame.clear();
-        if (h.shared.position && h.shared.orientation) {
-            const auto& o = *h.shared.orientation;
-            const glm::dvec3 normal =
-                glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
-            const double nl = glm::length(normal);
-            // RT dose: Grid Frame Offset Vector, offsets along the normal.
-            std::vector<double> offsets;
-            if (DcmElement* g = nullptr;
-                ds->findAndGetElement(DCM_GridFrameOffsetVector, g).good() && g != nullptr &&
-                g->getVM() == h.frames && nl > 0) {
-                for (unsigned long f = 0; f < h.frames; ++f) {
-                    Float64 d = 0;
-                    if (g->getFloat64(d, f).bad() || !std::isfinite(d)) {
-                        offsets.clear();
-                        break;
-                    }
-                    offsets.push_back(d);
-                }
-            }
-            if (!offsets.empty()) {
-                h.perFrame.assign(h.frames, h.shared);
-                for (std::size_t f = 0; f < offsets.size(); ++f) {
-                    h.perFrame[f].position =
-                        *h.shared.position + (offsets[f] - offsets[0]) * normal / nl;
-                }
-            } else if (nl > 0 && (h.spacingBetweenSlices != 0.0 || h.sliceThickness > 0.0)) {
-                const double step =
-                    h.spacingBetweenSlices != 0.0 ? h.spacingBetweenSlices : h.sliceThickness;
-                h.frameStep = step * normal / nl;
-            } else {
-                h.framesWithoutGeometry = true;
-            }
-        } else {
-            h.framesWithoutGeometry = true;
-        }
+    if (h.frames <= 1 || perFramePositions) {
+        return;
     }
+    h.perFrame.clear();
+    if (!h.shared.position || !h.shared.orientation) {
+        h.framesWithoutGeometry = true;
+        return;
+    }
+    const auto& o = *h.shared.orientation;
+    const glm::dvec3 normal =
+        glm::cross(glm::dvec3(o[0], o[1], o[2]), glm::dvec3(o[3], o[4], o[5]));
+    const double nl = glm::length(normal);
+    const std::vector<double> offsets =
+        nl > 0 ? gridFrameOffsets(ds, h.frames) : std::vector<double>{};
+    if (!offsets.empty()) {
+        h.perFrame.assign(h.frames, h.shared);
+        for (std::size_t f = 0; f < offsets.size(); ++f) {
+            h.perFrame[f].position = *h.shared.position + (offsets[f] - offsets[0]) * normal / nl;
+        }
+    } else if (nl > 0 && (h.spacingBetweenSlices != 0.0 || h.sliceThickness > 0.0)) {
+        const double step =
+            h.spacingBetweenSlices != 0.0 ? h.spacingBetweenSlices : h.sliceThickness;
+        h.frameStep = step * normal / nl;
+    } else {
+        h.framesWithoutGeometry = true;
+    }
+}
+
+}  // namespace
+
+FileHeader readHeader(const fs::path& file) {
+    ensureCodecs();
+    FileHeader h;
+    h.file = file;
+    h.skipReason = whyNotDicom(file);
+    if (!h.skipReason.empty()) {
+        return h;
+    }
+    DcmFileFormat ff;
+    const Parsed parsed = parse(ff, file);
+    if (!parsed.skipReason.empty()) {
+        h.skipReason = parsed.skipReason;
+        return h;
+    }
+    DcmDataset* ds = ff.getDataset();
+    DcmMetaInfo* meta = ff.getMetaInfo();
+    const std::string mediaClass = getString(meta, DCM_MediaStorageSOPClassUID);
+    if (readDicomdir(ds, mediaClass, h)) {
+        return h;
+    }
+    readIdentity(ds, mediaClass, h);
+    readTransferSyntax(ds, meta, h);
+    if (!readImagePixel(ds, parsed.damaged, h)) {
+        return h;
+    }
+    checkDecodable(h);
+    readFrameGeometry(ds, h);
+    placeFrames(ds, h);
     return h;
 }
 
