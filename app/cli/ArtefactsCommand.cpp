@@ -2,7 +2,7 @@
 // vesselview-cli artefacts [--mesh FILE]... [--triangles 10000,30000,60000]
 //                          [--size WxH] [--view far|medium|close] [--p P]
 //                          [--reference-scale 3|5|7|none]
-// The artefact score of the lit VSS along silhouettes (bench/ArtefactBenchmark.h)
+// The artefact score of the lit VSS along silhouettes (app/evaluation/ArtefactBenchmark.h)
 // of the demo tree, its decimated copies and the given meshes, as a Markdown
 // table (docs/benchmarks/artefacts.md).
 #include <filesystem>
@@ -11,9 +11,9 @@
 #include <string>
 #include <vector>
 
-#include "ArtefactBenchmark.h"
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
+#include "evaluation/ArtefactBenchmark.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshSimplify.h"
@@ -80,7 +80,7 @@ ArtefactsArguments parse(const std::vector<std::string>& args) {
 
 int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     const ArtefactsArguments parsed = parse(args);
-    bench::ArtefactBenchmarkOptions options;
+    evaluation::ArtefactBenchmarkOptions options;
     if (parsed.size) {
         options.width = parsed.size->first;
         options.height = parsed.size->second;
@@ -90,7 +90,7 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
     options.referenceScale = parsed.referenceScale;
 
     err << "artefacts: generating the demo vessel tree\n" << std::flush;
-    std::vector<bench::ArtefactCase> cases;
+    std::vector<evaluation::ArtefactCase> cases;
     cases.push_back({"demo (smooth control)", scene::Scene{}});
     cases.front().scene.meshes.push_back(demo::generateDemoMesh());
     for (const int t : parsed.triangles) {
@@ -104,7 +104,8 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
         cases.back().scene.meshes.push_back(meshio::loadMesh(file));
     }
     err << "artefacts: scoring " << cases.size() << " meshes\n" << std::flush;
-    const std::vector<bench::ArtefactRow> rows = bench::runArtefactBenchmark(cases, options);
+    const std::vector<evaluation::ArtefactRow> rows =
+        evaluation::runArtefactBenchmark(cases, options);
     out << "View " << render::toString(options.view) << ", " << options.width << "x"
         << options.height << ", p = " << options.p
         << ", lighting on (headlight), AO off; all meshes through the demo's camera; "
@@ -113,7 +114,7 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
                 : "reference: the same view at " + std::to_string(options.referenceScale) +
                       "x the size, z' sampled at the pixel centres")
         << ".\n\n"
-        << bench::artefactTable(rows);
+        << evaluation::artefactTable(rows);
     return kOk;
 }
 

@@ -4,7 +4,7 @@
 //                      [--p 2,4,8] [--runs N] [--reference-runs N]
 //                      [--solvers LIST] [--tolerances LIST] [--out DIR]
 //                      [--depth-out DIR] [--quick]
-// Error against run time of the VSS solvers (bench/VssBenchmark.h).
+// Error against run time of the VSS solvers (app/evaluation/VssBenchmark.h).
 #include <QCoreApplication>
 #include <QGuiApplication>
 #include <algorithm>
@@ -15,12 +15,12 @@
 #include <string>
 #include <vector>
 
-#include "VssBenchmark.h"
 #include "cli/Arguments.h"
 #include "cli/BenchSizes.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
+#include "evaluation/VssBenchmark.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
 #include "vv/demo/DemoTree.h"
@@ -36,7 +36,7 @@ constexpr int kQuickHeight = 144;
 
 struct BenchArguments {
     std::optional<std::filesystem::path> mesh;
-    std::vector<bench::BenchSize> sizes;  ///< empty: the default (or --quick) size
+    std::vector<evaluation::BenchSize> sizes;  ///< empty: the default (or --quick) size
     std::vector<render::ViewPreset> views{render::ViewPreset::Far, render::ViewPreset::Medium,
                                           render::ViewPreset::Close};
     std::vector<double> powers{2.0, 4.0, 8.0};
@@ -67,10 +67,9 @@ BenchArguments parse(const std::vector<std::string>& args) {
             if (!parsed.sizes.empty()) {
                 throw UsageError("bench: give the image size once (--size or --sizes)");
             }
-            parsed.sizes =
-                a == "--size"
-                    ? std::vector<bench::BenchSize>{parseBenchSize(arg.value(), "bench: --size")}
-                    : parseBenchSizes(arg.value());
+            parsed.sizes = a == "--size" ? std::vector<evaluation::BenchSize>{parseBenchSize(
+                                               arg.value(), "bench: --size")}
+                                         : parseBenchSizes(arg.value());
         } else if (a == "--views") {
             parsed.views.clear();
             for (const std::string& name : splitList(arg.value(), "bench: --views")) {
@@ -113,9 +112,9 @@ BenchArguments parse(const std::vector<std::string>& args) {
 
 /// The solver settings named on the command line: reference, brute, stepK
 /// (K >= 1), fast (one setting per tolerance).
-std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
-    std::vector<bench::SolverSetting> settings;
-    const std::vector<bench::SolverSetting> defaults = bench::defaultSolverSettings();
+std::vector<evaluation::SolverSetting> solverSettings(const BenchArguments& parsed) {
+    std::vector<evaluation::SolverSetting> settings;
+    const std::vector<evaluation::SolverSetting> defaults = evaluation::defaultSolverSettings();
     const auto byLabel = [&](const std::string& label) {
         for (const auto& s : defaults) {
             if (s.label == label) {
@@ -130,7 +129,7 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
         } else if (name.rfind("step", 0) == 0) {
             const int k =
                 parseWholeNumber(name.substr(4), "bench: the step of '" + name + "'", 1, 1000000);
-            bench::SolverSetting s;
+            evaluation::SolverSetting s;
             s.label = "step " + std::to_string(k);
             s.series = s.label;
             s.options.kind = vss::SolverKind::Step;
@@ -138,7 +137,7 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
             settings.push_back(s);
         } else if (name == "fast") {
             for (const double t : parsed.tolerances255) {
-                bench::SolverSetting s;
+                evaluation::SolverSetting s;
                 s.label = "fast " + vv::significantText(t, 6) + "/255";
                 s.series = "fast";
                 s.options.kind = vss::SolverKind::Fast;
@@ -165,11 +164,11 @@ std::vector<bench::SolverSetting> solverSettings(const BenchArguments& parsed) {
 int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     const BenchArguments parsed = parse(args);
 
-    bench::VssBenchmarkOptions options;
+    evaluation::VssBenchmarkOptions options;
     options.sizes = parsed.sizes;
     if (options.sizes.empty()) {
-        options.sizes = {parsed.quick ? bench::BenchSize{kQuickWidth, kQuickHeight}
-                                      : bench::BenchSize{}};
+        options.sizes = {parsed.quick ? evaluation::BenchSize{kQuickWidth, kQuickHeight}
+                                      : evaluation::BenchSize{}};
     }
     options.views = parsed.views;
     options.powers = parsed.powers;
@@ -194,9 +193,9 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         scene.meshes.push_back(demo::generateDemoMesh());
     }
 
-    bench::VssBenchmarkResult result;
+    evaluation::VssBenchmarkResult result;
     try {
-        result = bench::runVssBenchmark(scene, options);
+        result = evaluation::runVssBenchmark(scene, options);
     } catch (const IoError& e) {
         throw OutputError(e.what());  // only the depth PFMs are written during the run
     }
@@ -205,17 +204,17 @@ int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     const std::filesystem::path table = parsed.out / "vss-table.md";
     const std::filesystem::path plot = parsed.out / "vss-error-vs-time.png";
     try {
-        bench::writeCsv(csv, result);
-        bench::writeMarkdown(table, result);
-        bench::writePlot(plot, result);
+        evaluation::writeCsv(csv, result);
+        evaluation::writeMarkdown(table, result);
+        evaluation::writePlot(plot, result);
     } catch (const IoError& e) {
         throw OutputError(e.what());
     }
 
-    out << bench::markdownTable(result);
+    out << evaluation::markdownTable(result);
     // A solver that promises a bound and misses it is a bug worth shouting about.
     int failed = 0;
-    for (const bench::VssBenchmarkRow& row : result.rows) {
+    for (const evaluation::VssBenchmarkRow& row : result.rows) {
         if (!row.failure.empty()) {
             ++failed;
             continue;

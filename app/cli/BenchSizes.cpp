@@ -8,15 +8,15 @@
 
 namespace vv::cli {
 
-bench::BenchSize parseBenchSize(const std::string& text, const std::string& what) {
+evaluation::BenchSize parseBenchSize(const std::string& text, const std::string& what) {
     const auto [w, h] = parseSize(text, what, 1, 8192);
-    return bench::BenchSize{w, h};
+    return evaluation::BenchSize{w, h};
 }
 
-std::vector<bench::BenchSize> parseBenchSizes(const std::string& text) {
-    std::vector<bench::BenchSize> sizes;
+std::vector<evaluation::BenchSize> parseBenchSizes(const std::string& text) {
+    std::vector<evaluation::BenchSize> sizes;
     for (const std::string& item : splitList(text, "bench: --sizes")) {
-        const bench::BenchSize size = parseBenchSize(item, "bench: --sizes");
+        const evaluation::BenchSize size = parseBenchSize(item, "bench: --sizes");
         if (std::find(sizes.begin(), sizes.end(), size) != sizes.end()) {
             throw UsageError("bench: --sizes: " + item + " given twice");
         }

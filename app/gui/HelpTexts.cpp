@@ -9,7 +9,6 @@
 
 #include "vv/dicom/Versions.h"
 #include "vv/meshio/Versions.h"
-#include "vv/vss/Versions.h"
 
 namespace vv::gui {
 
@@ -21,7 +20,6 @@ QString HelpTexts::about(const QString& glDescription) {
                           tr("built with %1").arg(QStringLiteral(QT_VERSION_STR)));
     libraries << QStringLiteral("VTK ") + QString::fromStdString(meshio::vtkVersion());
     libraries << QStringLiteral("DCMTK ") + QString::fromStdString(dicom::dcmtkVersion());
-    libraries << QStringLiteral("OpenCV ") + QString::fromStdString(vss::openCvVersion());
     for (QString& library : libraries) {
         library = library.toHtmlEscaped();
     }

@@ -14,7 +14,7 @@ class HelpTexts {
 
   public:
     /// Help > About: the versions of VesselView, OpenGL (`glDescription`;
-    /// empty: not initialised), Qt, VTK, DCMTK and OpenCV, and the licence.
+    /// empty: not initialised), Qt, VTK and DCMTK, and the licence.
     [[nodiscard]] static QString about(const QString& glDescription);
     /// Help > Keyboard Shortcuts: every action of `menus` with a shortcut
     /// (submenus too), then the mouse, as a table.

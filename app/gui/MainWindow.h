@@ -198,7 +198,7 @@ class MainWindow : public QMainWindow {
     /// Help > Keyboard Shortcuts: every menu action with a shortcut, and the
     /// mouse, as an HTML table.
     [[nodiscard]] QString shortcutSummary() const;
-    /// Help > About: versions of VesselView, OpenGL, Qt, VTK, DCMTK and OpenCV (HTML).
+    /// Help > About: versions of VesselView, OpenGL, Qt, VTK and DCMTK (HTML).
     [[nodiscard]] QString aboutText() const;
     /// View > Show Legends (checked = legends drawn).
     [[nodiscard]] QAction* legendsToggle() const noexcept { return legendsAction_; }

@@ -10,7 +10,7 @@
 #include <memory>
 #include <optional>
 
-#include "gui/WorkerRun.h"
+#include "gui/LatestRun.h"
 #include "vv/core/Image.h"
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Volume.h"
@@ -173,7 +173,7 @@ class SliceView : public QWidget {
     QPointF lastAt_;
     slices::Window pressWindow_;
     double pressZoom_ = 1.0;
-    LatestRun<Resliced> run_{this};
+    LatestRun<Resliced, AtDestruction::Wait> run_{this};
 };
 
 }  // namespace vv::gui

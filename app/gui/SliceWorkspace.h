@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "common/Session.h"
-#include "gui/WorkerRun.h"
+#include "gui/LatestRun.h"
 #include "vv/scene/LabelMap.h"
 #include "vv/scene/Volume.h"
 #include "vv/slices/SliceOverlay.h"
@@ -155,7 +155,7 @@ class SliceWorkspace : public QWidget {
     QAction* outlineAction_ = nullptr;
     /// The presets of volumes above SliceView::kSynchronousVoxels (a pass
     /// over every voxel) are found on a worker.
-    LatestRun<std::vector<slices::PresetWindow>> presetRun_{this};
+    LatestRun<std::vector<slices::PresetWindow>, AtDestruction::Wait> presetRun_{this};
 };
 
 }  // namespace vv::gui

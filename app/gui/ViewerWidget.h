@@ -13,7 +13,7 @@
 #include <optional>
 #include <vector>
 
-#include "gui/WorkerRun.h"
+#include "gui/LatestRun.h"
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameMeter.h"
@@ -430,8 +430,8 @@ class ViewerWidget : public QOpenGLWidget {
     /// The second simplified level has previewTriangles_ / this many triangles.
     static constexpr std::size_t kPreviewLevelRatio = 3;
     std::size_t previewTriangles_ = 60000;
-    LatestRun<render::PreviewGeometry> previewRun_{this};
-    LatestRun<std::vector<scene::SurfaceClosure>> closureRun_{this};
+    LatestRun<render::PreviewGeometry, AtDestruction::Wait> previewRun_{this};
+    LatestRun<std::vector<scene::SurfaceClosure>, AtDestruction::Wait> closureRun_{this};
 
     // Refinement timing: the settle timer, preview arrivals, the frame budget.
     int settleDelayMs_ = 150;

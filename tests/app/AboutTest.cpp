@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Help > About names the versions of Qt, VTK, DCMTK and OpenCV; the German
+// Help > About names the versions of Qt, VTK and DCMTK; the German
 // translation reaches the main window's menus.
 #include <QAction>
 #include <QCoreApplication>
@@ -13,7 +13,6 @@
 #include "gui/Translations.h"
 #include "vv/dicom/Versions.h"
 #include "vv/meshio/Versions.h"
-#include "vv/vss/Versions.h"
 
 namespace vv::test {
 namespace {
@@ -24,8 +23,6 @@ TEST(LibraryVersions, ReportRealVersions) {
     for (const std::string& version : {meshio::vtkVersion(), dicom::dcmtkVersion()}) {
         EXPECT_TRUE(kVersion.match(QString::fromStdString(version)).hasMatch()) << version;
     }
-    EXPECT_TRUE(kVersion.match(QString::fromStdString(vss::openCvVersion())).hasMatch())
-        << vss::openCvVersion();
 }
 
 TEST(Languages, CommandLineBeatsSettingsBeatsSystem) {
@@ -53,9 +50,6 @@ TEST_F(AboutTest, AboutBoxNamesTheLibraries) {
         << about.toStdString();
     EXPECT_TRUE(
         about.contains(QStringLiteral("DCMTK ") + QString::fromStdString(dicom::dcmtkVersion())))
-        << about.toStdString();
-    EXPECT_TRUE(
-        about.contains(QStringLiteral("OpenCV ") + QString::fromStdString(vss::openCvVersion())))
         << about.toStdString();
 }
 

@@ -14,9 +14,9 @@
 #include <string>
 #include <vector>
 
-#include "VssBenchmark.h"
 #include "cli/BenchSizes.h"
 #include "cli/Cli.h"
+#include "evaluation/VssBenchmark.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshWriter.h"
 #include "vv/vss/Pfm.h"
@@ -212,15 +212,16 @@ TEST(VssBenchmarkTest, AboveTheReferenceLimitTheBruteSolverIsTheTruth) {
     tree.generations = 3;
     tree.maxTriangles = 10000;
     scene.meshes.push_back(vv::demo::generateDemoMesh(tree));
-    vv::bench::VssBenchmarkOptions options;
+    vv::evaluation::VssBenchmarkOptions options;
     options.sizes = {{64, 36}, {128, 72}};
     options.referenceMaxPixels = 64 * 36;
     options.views = {vv::render::ViewPreset::Medium};
     options.powers = {4.0};
     options.runs = 1;
-    std::vector<vv::bench::SolverSetting> settings = vv::bench::defaultSolverSettings();
+    std::vector<vv::evaluation::SolverSetting> settings = vv::evaluation::defaultSolverSettings();
     options.solvers = {settings[0], settings[1], settings[4]};  // reference, brute, fast
-    const vv::bench::VssBenchmarkResult result = vv::bench::runVssBenchmark(scene, options);
+    const vv::evaluation::VssBenchmarkResult result =
+        vv::evaluation::runVssBenchmark(scene, options);
     ASSERT_EQ(result.rows.size(), 6U);
     for (const auto& row : result.rows) {
         const bool large = row.size.width == 128;
@@ -236,18 +237,18 @@ TEST(VssBenchmarkTest, AboveTheReferenceLimitTheBruteSolverIsTheTruth) {
             EXPECT_EQ(row.error.maxAbs, 0.0);  // brute against its own (untimed) run
         }
     }
-    const std::string table = vv::bench::markdownTable(result);
+    const std::string table = vv::evaluation::markdownTable(result);
     EXPECT_NE(table.find("truth brute"), std::string::npos) << table;
     EXPECT_NE(table.find("| 128×72 | medium | 4 | reference | – | not measured"), std::string::npos)
         << table;
 }
 
 TEST(VssBenchmarkTest, SizeRatiosSumTheCasesMeasuredAtBothSizes) {
-    vv::bench::VssBenchmarkResult result;
+    vv::evaluation::VssBenchmarkResult result;
     result.sizes = {{100, 50}, {200, 100}, {400, 200}};
-    const auto add = [&](vv::bench::BenchSize size, vv::render::ViewPreset view, double p,
+    const auto add = [&](vv::evaluation::BenchSize size, vv::render::ViewPreset view, double p,
                          const char* solver, double ms, double cpu, const char* failure = "") {
-        vv::bench::VssBenchmarkRow row;
+        vv::evaluation::VssBenchmarkRow row;
         row.size = size;
         row.view = view;
         row.p = p;
@@ -265,13 +266,13 @@ TEST(VssBenchmarkTest, SizeRatiosSumTheCasesMeasuredAtBothSizes) {
     add({200, 100}, ViewPreset::Far, 4.0, "fast", 90.0, 100.0);
     add({200, 100}, ViewPreset::Far, 2.0, "brute", 7.0, 8.0, "not available");
     add({400, 200}, ViewPreset::Close, 2.0, "fast", 50.0, 50.0);  // no base case
-    const auto ratios = vv::bench::sizeRatios(result);
+    const auto ratios = vv::evaluation::sizeRatios(result);
     ASSERT_EQ(ratios.size(), 6U);  // 2 solvers x 3 sizes, in row / size order
     EXPECT_EQ(ratios[0].solver, "fast");
-    EXPECT_EQ(ratios[0].size, (vv::bench::BenchSize{100, 50}));
+    EXPECT_EQ(ratios[0].size, (vv::evaluation::BenchSize{100, 50}));
     EXPECT_EQ(ratios[0].cases, 2);
     EXPECT_DOUBLE_EQ(ratios[0].ratio, 1.0);
-    EXPECT_EQ(ratios[1].size, (vv::bench::BenchSize{200, 100}));
+    EXPECT_EQ(ratios[1].size, (vv::evaluation::BenchSize{200, 100}));
     EXPECT_EQ(ratios[1].cases, 2);
     EXPECT_DOUBLE_EQ(ratios[1].totalMs, 110.0);
     EXPECT_DOUBLE_EQ(ratios[1].baseMs, 40.0);
@@ -283,7 +284,7 @@ TEST(VssBenchmarkTest, SizeRatiosSumTheCasesMeasuredAtBothSizes) {
     EXPECT_EQ(ratios[3].solver, "brute");
     EXPECT_DOUBLE_EQ(ratios[3].ratio, 1.0);
     EXPECT_EQ(ratios[4].cases, 0);  // failed rows do not count
-    const std::string table = vv::bench::markdownTable(result);
+    const std::string table = vv::evaluation::markdownTable(result);
     EXPECT_NE(table.find("| fast | 200×100 | 4.00 | 2 | 110.0 | 40.0 | 2.75 | 2.17 | 3.00 |"),
               std::string::npos)
         << table;
@@ -292,11 +293,11 @@ TEST(VssBenchmarkTest, SizeRatiosSumTheCasesMeasuredAtBothSizes) {
 }
 
 TEST(BenchSizesTest, ParsesOneOrSeveralSizes) {
-    EXPECT_EQ(vv::cli::parseBenchSize("1280x720", "s"), (vv::bench::BenchSize{1280, 720}));
+    EXPECT_EQ(vv::cli::parseBenchSize("1280x720", "s"), (vv::evaluation::BenchSize{1280, 720}));
     const auto sizes = vv::cli::parseBenchSizes("1280x720,1920x1080,3840x2160");
     ASSERT_EQ(sizes.size(), 3U);
-    EXPECT_EQ(sizes[1], (vv::bench::BenchSize{1920, 1080}));
-    EXPECT_EQ(sizes[2], (vv::bench::BenchSize{3840, 2160}));
+    EXPECT_EQ(sizes[1], (vv::evaluation::BenchSize{1920, 1080}));
+    EXPECT_EQ(sizes[2], (vv::evaluation::BenchSize{3840, 2160}));
     EXPECT_EQ(vv::cli::parseBenchSizes("8x8").size(), 1U);
     for (const char* bad : {"", "1280x720,", ",1280x720", "1280x720,1280x720", "0x10", "8193x10",
                             "1280", "1280x720x3", "axb", "1280x720;640x360"}) {

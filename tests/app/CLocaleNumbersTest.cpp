@@ -26,7 +26,7 @@
 #include "CliRun.h"
 #include "GermanLocale.h"
 #include "TestMeshes.h"
-#include "VssBenchmark.h"
+#include "evaluation/VssBenchmark.h"
 #include "vv/core/NumberText.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshWriter.h"
@@ -143,9 +143,9 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
     if (!germanLocalePath(why)) {
         GTEST_SKIP() << why;
     }
-    bench::VssBenchmarkResult result;
-    result.sizes = {bench::BenchSize{64, 48}};
-    bench::VssBenchmarkRow row;
+    evaluation::VssBenchmarkResult result;
+    result.sizes = {evaluation::BenchSize{64, 48}};
+    evaluation::VssBenchmarkRow row;
     row.size = result.sizes.front();
     row.p = 2.5;
     row.solver = "fast 0.5/255";
@@ -159,7 +159,7 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
     row.error.maxAbs = 0.0025;
     row.errorBound = 0.5 / 255.0;
     result.rows.push_back(row);
-    bench::ViewSummary view;
+    evaluation::ViewSummary view;
     view.cameraDistance = 12.5F;
     view.dmin = 0.5;
     view.dmax = 1.5;
@@ -175,7 +175,7 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
     EXPECT_EQ(vv::parseFiniteNumber("0.5"), 0.5);
     EXPECT_FALSE(vv::parseFiniteNumber("0,5").has_value());
 
-    const std::string csv = bench::csvText(result);
+    const std::string csv = evaluation::csvText(result);
     std::istringstream lines(csv);
     std::string header;
     std::string line;
@@ -192,7 +192,7 @@ TEST(CLocaleNumbers, FormattersAndTheBenchmarkCsvIgnoreAGermanProcessLocale) {
     }
     EXPECT_NE(line.find(",2.5,"), std::string::npos) << line;
     EXPECT_NE(line.find(",1.2500,"), std::string::npos) << line;
-    const std::string table = bench::markdownTable(result);
+    const std::string table = evaluation::markdownTable(result);
     EXPECT_FALSE(std::regex_search(table, std::regex("[0-9],[0-9]"))) << table;
 }
 

@@ -193,7 +193,7 @@ QStringList decimalPoints(const QString& text) {
         QStringLiteral("(?<![\\w.])(\\d+(?:\\.\\d+)+)(?![\\w.]*\\w)"));
     static const QRegularExpression grouped(QStringLiteral("^[1-9]\\d{0,2}(\\.\\d{3})+$"));
     static const QRegularExpression product(
-        QStringLiteral("(OpenGL|GLSL|Mesa|LLVM|Qt|VTK|DCMTK|OpenCV|VesselView|DICOM|"
+        QStringLiteral("(OpenGL|GLSL|Mesa|LLVM|Qt|VTK|DCMTK|VesselView|DICOM|"
                        "[Vv]ersion)[ :]*$"));
     QStringList found;
     for (auto it = number.globalMatch(text); it.hasNext();) {

@@ -22,14 +22,11 @@
 #include <QTableWidget>
 #include <QTest>
 #include <array>
-#include <atomic>
 #include <cerrno>
-#include <chrono>
 #include <cstdint>
 #include <memory>
 #include <set>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include "PacsGuiFixture.h"
@@ -132,50 +129,15 @@ bool showsRed(QLabel* label) {
     return false;
 }
 
-/// LatestCall (app/gui/pacs/BackgroundCall.h), under Search, the series
-/// search and Test: only the newest call's answer is handed over.
-class LatestCallTest : public vv::test::GuiFixture {};
+/// deliverLater (app/gui/pacs/BackgroundCall.h), under the series' detail
+/// query: a call that has already ended by the time its answer is wired up
+/// (a refused connection ends in microseconds) still answers later, through
+/// the event queue: else "Searching…", set just after starting the call,
+/// stayed on screen over the answer (a CI failure of PacsBrowserGuiKillTest).
+/// The same for LatestRun: tests/app/LatestRunTest.cpp.
+class BackgroundCallTest : public vv::test::GuiFixture {};
 
-TEST_F(LatestCallTest, OnlyTheNewestCallsAnswerArrivesAndAStoppedCallsNever) {
-    QObject owner;
-    vv::gui::LatestCall<int> call(&owner);
-    std::vector<int> answers;
-    const auto keep = [&answers](const int& answer) { answers.push_back(answer); };
-    // The first call waits until it is stopped, as for a silent peer.
-    std::atomic<bool> firstStopped{false};
-    call.start(
-        [&firstStopped](const std::stop_token& stop) {
-            while (!stop.stop_requested()) {
-                std::this_thread::sleep_for(std::chrono::milliseconds(1));
-            }
-            firstStopped = true;
-            return 1;
-        },
-        keep);
-    EXPECT_TRUE(call.isRunning());
-    // A newer one stops it; its answer, not the first's, arrives.
-    call.start([](const std::stop_token&) { return 2; }, keep);
-    ASSERT_TRUE(waitUntil([&] { return firstStopped.load() && !call.isRunning(); }, 5000));
-    static_cast<void>(waitUntil([] { return false; }, 200));  // a late answer would come now
-    EXPECT_EQ(answers, std::vector<int>{2});
-    // A cancelled call's answer never arrives.
-    call.start(
-        [](const std::stop_token&) {
-            std::this_thread::sleep_for(std::chrono::milliseconds(50));
-            return 3;
-        },
-        keep);
-    call.cancel();
-    EXPECT_FALSE(call.isRunning());
-    static_cast<void>(waitUntil([] { return false; }, 300));
-    EXPECT_EQ(answers, std::vector<int>{2});
-}
-
-/// A call that has already ended by the time its answer is wired up (a
-/// refused connection ends in microseconds) still answers later, through the
-/// event queue: else "Searching…", set just after starting the call, stayed
-/// on screen over the answer (a CI failure of PacsBrowserGuiKillTest).
-TEST_F(LatestCallTest, AnAnswerThatIsAlreadyThereArrivesLaterNeverInsideTheCall) {
+TEST_F(BackgroundCallTest, AnAnswerThatIsAlreadyThereArrivesLaterNeverInsideTheCall) {
     QObject owner;
     std::vector<int> answers;
     vv::gui::deliverLater(QtFuture::makeReadyFuture(7), &owner,
@@ -193,15 +155,6 @@ TEST_F(LatestCallTest, AnAnswerThatIsAlreadyThereArrivesLaterNeverInsideTheCall)
     }
     static_cast<void>(waitUntil([] { return false; }, 200));
     EXPECT_FALSE(called);
-
-    // The same through LatestCall, whose running flag must not be cleared
-    // before start() returns.
-    vv::gui::LatestCall<int> call(&owner);
-    call.start([](const std::stop_token&) { return 9; },
-               [&answers](const int& answer) { answers.push_back(answer); });
-    EXPECT_TRUE(call.isRunning());
-    ASSERT_TRUE(waitUntil([&] { return !call.isRunning(); }, 2000));
-    EXPECT_EQ(answers, (std::vector<int>{7, 9}));
 }
 
 class PacsCancelGuiTest : public vv::test::PacsGuiFixture {

@@ -18,10 +18,10 @@
 #include <utility>
 #include <vector>
 
-#include "ArtefactScore.h"
 #include "ImageCompare.h"
 #include "RenderTestUtil.h"
 #include "TestMeshes.h"
+#include "evaluation/ArtefactScore.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshSimplify.h"
 #include "vv/render/RefinementPolicy.h"
@@ -267,11 +267,11 @@ TEST_F(MovingFrameTest, AMovingFramesLitVssDoesNotRippleMoreThanTheSettledFrames
     EXPECT_LT(movingRipple, 1.15 * stillRipple);
 }
 
-/// The artefact score (bench/ArtefactScore.h) of `image`'s luma along the
+/// The artefact score (app/evaluation/ArtefactScore.h) of `image`'s luma along the
 /// silhouettes of `ids` (objectIds, top-down rows, 0 = none), 2-10 px out:
 /// from 2 px, so that the moving frame's edges (a pixel off the settled
 /// frame's at most) stay out of the band.
-bench::ArtefactScore teethScore(const QImage& image, const std::vector<std::uint32_t>& ids) {
+evaluation::ArtefactScore teethScore(const QImage& image, const std::vector<std::uint32_t>& ids) {
     const int w = image.width();
     const int h = image.height();
     Image<float> lumas(w, h);
@@ -283,10 +283,10 @@ bench::ArtefactScore teethScore(const QImage& image, const std::vector<std::uint
             lumas(x, y) = static_cast<float>(luma(image.pixel(x, y)) / 255.0);
         }
     }
-    bench::ArtefactScoreOptions options;
+    evaluation::ArtefactScoreOptions options;
     options.bandNear = 2.0;
     options.bandFar = 10.0;
-    return bench::artefactScore(lumas.view(), vessels.view(), options);
+    return evaluation::artefactScore(lumas.view(), vessels.view(), options);
 }
 
 /// The teeth scores (teethScore) of the settled and of the moving frame
@@ -298,8 +298,8 @@ std::pair<double, double> teethScores(test::FrameHarness& harness, const MeshSty
     test::saveImage(frame, "moving-frame-", "teeth");
     const QImage still = harness.render(style, settled);
     const std::vector<std::uint32_t> ids = harness.objectIds();
-    const bench::ArtefactScore stillScore = teethScore(still, ids);
-    const bench::ArtefactScore movingScore = teethScore(frame, ids);
+    const evaluation::ArtefactScore stillScore = teethScore(still, ids);
+    const evaluation::ArtefactScore movingScore = teethScore(frame, ids);
     EXPECT_GT(stillScore.bandPixels, 10000);
     std::printf(
         "teeth along the silhouettes (RMS second difference of luma, 3 px apart, "

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The artefact score (bench/ArtefactScore.h) on synthetic images whose
+// The artefact score (app/evaluation/ArtefactScore.h) on synthetic images whose
 // high-frequency energy along the contour is known.
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <limits>
 #include <numbers>
 
-#include "ArtefactScore.h"
+#include "evaluation/ArtefactScore.h"
 #include "vv/core/Error.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 namespace {
 
 constexpr int kSize = 96;
@@ -131,4 +131,4 @@ TEST(ArtefactScoreTest, LuminanceIsTheShadersLighting) {
 }
 
 }  // namespace
-}  // namespace vv::bench
+}  // namespace vv::evaluation

@@ -8,12 +8,12 @@
 
 #include <cmath>
 
-#include "ArtefactBenchmark.h"
+#include "evaluation/ArtefactBenchmark.h"
 #include "vv/core/Error.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshSimplify.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 namespace {
 
 /// Scores the demo and its 10k-triangle copy, close up at 640x360 and power
@@ -97,4 +97,4 @@ TEST(ReferenceLitVssTest, RejectsEvenScales) {
 }
 
 }  // namespace
-}  // namespace vv::bench
+}  // namespace vv::evaluation

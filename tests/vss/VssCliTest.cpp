@@ -199,7 +199,7 @@ TEST(VssCliTest, UsageMentionsVss) {
     EXPECT_NE(r.out.find("vss --depth"), std::string::npos);
 }
 
-// vesselview-cli artefacts (bench/ArtefactBenchmark.h).
+// vesselview-cli artefacts (app/evaluation/ArtefactBenchmark.h).
 TEST(ArtefactsCliTest, PrintsOneRowPerMesh) {
     const Outcome o = runCli({"artefacts", "--size", "160x90", "--triangles", "20000"});
     ASSERT_EQ(o.code, kOk) << o.err;

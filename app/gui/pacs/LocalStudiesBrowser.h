@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "gui/WorkerRun.h"
+#include "gui/LatestRun.h"
 #include "vv/pacs/LocalStore.h"
 
 class QLabel;
@@ -100,8 +100,8 @@ class LocalStudiesBrowser : public QDialog {
     QLabel* message_ = nullptr;
     QString readProblem_;  ///< why the store could not be read; empty when fine
     bool reading_ = false;
-    LatestRun<Listing> reader_{this};   ///< stopped before the rest goes
-    LatestRun<Removal> remover_{this};  ///< last: stopped before the rest goes
+    LatestRun<Listing, AtDestruction::Wait> reader_{this};   ///< stopped before the rest goes
+    LatestRun<Removal, AtDestruction::Wait> remover_{this};  ///< last: stopped before the rest goes
 };
 
 }  // namespace vv::gui

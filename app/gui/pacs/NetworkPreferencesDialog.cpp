@@ -22,7 +22,6 @@
 
 #include "gui/EngineTexts.h"
 #include "gui/PathField.h"
-#include "gui/pacs/BackgroundCall.h"
 #include "gui/pacs/ListenerLimitsBox.h"
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/NodeEditDialog.h"

@@ -3,7 +3,7 @@
 
 #include <QDialog>
 
-#include "gui/pacs/BackgroundCall.h"
+#include "gui/LatestRun.h"
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsSettings.h"
 
@@ -108,7 +108,8 @@ class NetworkPreferencesDialog : public QDialog {
     QPushButton* cancelTest_ = nullptr;
     QLabel* testResult_ = nullptr;
     QLabel* error_ = nullptr;
-    LatestCall<NetworkFailure> testCall_{this};  ///< a cancelled Test's answer is dropped
+    LatestRun<NetworkFailure, AtDestruction::Detach> testCall_{
+        this};  ///< a cancelled Test's answer is dropped
 };
 
 }  // namespace vv::gui

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "gui/pacs/BackgroundCall.h"
+#include "gui/LatestRun.h"
 #include "gui/pacs/NetworkFailure.h"
 #include "gui/pacs/PacsSettings.h"
 #include "vv/pacs/Find.h"
@@ -133,8 +133,10 @@ class PacsBrowser : public QDialog {
     std::vector<pacs::SeriesResult> seriesResults_;
     /// The study search, and the series search of the selected study: a
     /// cancelled or overtaken one's answer is dropped.
-    LatestCall<std::pair<std::vector<pacs::StudyResult>, NetworkFailure>> searchCall_{this};
-    LatestCall<std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>> seriesCall_{this};
+    LatestRun<std::pair<std::vector<pacs::StudyResult>, NetworkFailure>, AtDestruction::Detach>
+        searchCall_{this};
+    LatestRun<std::pair<std::vector<pacs::SeriesResult>, NetworkFailure>, AtDestruction::Detach>
+        seriesCall_{this};
     std::shared_ptr<RetrieveControl> retrieve_;
     int retrieveTotal_ = -1;  ///< instances expected, when the PACS said
     QString retrievedFolder_;

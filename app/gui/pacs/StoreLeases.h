@@ -15,7 +15,7 @@
 #include <string>
 #include <vector>
 
-#include "gui/WorkerRun.h"
+#include "gui/LatestRun.h"
 #include "vv/pacs/LocalStore.h"
 
 namespace vv::gui {
@@ -83,8 +83,8 @@ class StoreLeases : public QObject {
     };
 
     std::vector<Held> held_;
-    std::shared_ptr<Slot> taking_;    ///< of the lease being taken; null when none
-    LatestRun<QString> taker_{this};  ///< last: stopped before the leases go
+    std::shared_ptr<Slot> taking_;  ///< of the lease being taken; null when none
+    LatestRun<QString, AtDestruction::Wait> taker_{this};  ///< last: stopped before the leases go
 };
 
 }  // namespace vv::gui

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gui/EngineTexts.h"
-#include "gui/WorkerRun.h"
+#include "gui/LatestRun.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
 #include "vv/segmentation/SegmentationPipeline.h"
@@ -224,7 +224,7 @@ class SegmentationPanel : public QWidget {
     };
     /// Computes the default range of volume_ (and the gain field, when
     /// correcting) on a worker.
-    LatestRun<Defaults> defaultRangeRun_{this};
+    LatestRun<Defaults, AtDestruction::Wait> defaultRangeRun_{this};
     std::shared_ptr<const segmentation::GainField> gain_;
     bool rangeIsDefault_ = false;  ///< the threshold boxes follow the default
     bool settingRange_ = false;    ///< setRange() is filling the threshold boxes

@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
-#include "ArtefactScore.h"
+#include "evaluation/ArtefactScore.h"
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/scene/Mesh.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 /// The lit VSS of a scene, computed on the CPU as an exact viewer frame is.
 struct LitVss {
@@ -80,4 +80,4 @@ struct ArtefactRow {
 /// machine format for the docs).
 [[nodiscard]] std::string artefactTable(const std::vector<ArtefactRow>& rows);
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation

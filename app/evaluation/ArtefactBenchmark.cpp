@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ArtefactBenchmark.h"
+#include "evaluation/ArtefactBenchmark.h"
 
 #include <cmath>
 #include <glm/trigonometric.hpp>
@@ -12,7 +12,7 @@
 #include "vv/vss/Shading.h"
 #include "vv/vss/Vss.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 namespace {
 
@@ -168,4 +168,4 @@ std::string artefactTable(const std::vector<ArtefactRow>& rows) {
     return out.str();
 }
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation

@@ -18,11 +18,11 @@
 #include <string>
 #include <vector>
 
-#include "VssBenchmark.h"
+#include "evaluation/VssBenchmark.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 namespace {
 
@@ -364,4 +364,4 @@ void writePlot(const std::filesystem::path& file, const VssBenchmarkResult& resu
     });
 }
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation

@@ -19,7 +19,7 @@
 #include "vv/scene/Mesh.h"
 #include "vv/vss/Solver.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 /// One solver configuration to measure; options.p is set per case.
 struct SolverSetting {
@@ -193,4 +193,4 @@ void writeMarkdown(const std::filesystem::path& file, const VssBenchmarkResult& 
 void writePlot(const std::filesystem::path& file, const VssBenchmarkResult& result,
                int width = 1400, int height = 900);
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "ArtefactScore.h"
+#include "evaluation/ArtefactScore.h"
 
 #include <algorithm>
 #include <cmath>
@@ -10,7 +10,7 @@
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 Image<float> distanceToVessels(ImageView<const std::uint8_t> vessels) {
     const int w = vessels.width();
@@ -264,4 +264,4 @@ Image<float> vssLuminance(ImageView<const float> height, ImageView<const glm::ve
     return out;
 }
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation

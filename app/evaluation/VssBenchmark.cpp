@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "VssBenchmark.h"
+#include "evaluation/VssBenchmark.h"
 
 #include <QColor>
 #include <QFile>
@@ -32,7 +32,7 @@
 #include "vv/vss/Pfm.h"
 #include "vv/vss/Vss.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 namespace {
 
@@ -642,4 +642,4 @@ void writeMarkdown(const std::filesystem::path& file, const VssBenchmarkResult& 
     writeText(file, "<!-- SPDX-License-Identifier: GPL-3.0-or-later -->\n" + markdownTable(result));
 }
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation

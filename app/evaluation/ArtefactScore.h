@@ -10,7 +10,7 @@
 
 #include "vv/core/Image.h"
 
-namespace vv::bench {
+namespace vv::evaluation {
 
 /// Where and how finely the score looks.
 struct ArtefactScoreOptions {
@@ -78,4 +78,4 @@ struct VssLight {
                                         ImageView<const std::uint8_t> vessels,
                                         const VssLight& light);
 
-}  // namespace vv::bench
+}  // namespace vv::evaluation
