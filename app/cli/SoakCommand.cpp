@@ -82,9 +82,7 @@ std::string signedPercent(double percent) {
     return (std::signbit(percent) ? "" : "+") + vv::fixedText(percent, 2) + "%";
 }
 
-}  // namespace
-
-int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+struct SoakOptions {
     long frames = 0;
     std::filesystem::path meshFile;
     int width = 640;
@@ -92,48 +90,46 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     long every = 1000;
     long resizeEvery = 500;
     bool trim = false;
+};
+
+/// The soak's arguments; nullopt after --help (the usage is printed to `out`).
+/// Throws UsageError on a bad or missing argument.
+std::optional<SoakOptions> parseSoakArguments(const std::vector<std::string>& args,
+                                              std::ostream& out) {
+    SoakOptions soak;
     for (Arguments arg("soak", args); arg.next();) {
         const std::string& a = arg.name();
         if (a == "--help" || a == "-h") {
             out << kSoakUsage;
-            return kOk;
+            return std::nullopt;
         }
         if (a == "--mesh") {
-            meshFile = arg.path();
+            soak.meshFile = arg.path();
         } else if (a == "--size") {
-            std::tie(width, height) = parseSize(arg.value(), "soak: --size", 16, 4096);
+            std::tie(soak.width, soak.height) = parseSize(arg.value(), "soak: --size", 16, 4096);
         } else if (a == "--resize-every") {
-            resizeEvery = std::max(0, parseWholeNumber(arg.value(), "soak: --resize-every"));
+            soak.resizeEvery = std::max(0, parseWholeNumber(arg.value(), "soak: --resize-every"));
         } else if (a == "--trim") {
-            trim = true;
+            soak.trim = true;
         } else if (a == "--every") {
-            every = std::max(1, parseWholeNumber(arg.value(), "soak: --every"));
-        } else if (!arg.isOption() && frames == 0) {
-            frames = parseWholeNumber(a, "soak: FRAMES");
+            soak.every = std::max(1, parseWholeNumber(arg.value(), "soak: --every"));
+        } else if (!arg.isOption() && soak.frames == 0) {
+            soak.frames = parseWholeNumber(a, "soak: FRAMES");
         } else {
             arg.fail("unexpected argument '" + arg.current() + "'");
         }
     }
-    if (frames < 101) {
+    if (soak.frames < 101) {
         throw UsageError("soak: FRAMES must be at least 101");
     }
+    return soak;
+}
 
-    scene::Scene scene;
-    scene.meshes.push_back(meshFile.empty() ? demo::generateDemoMesh()
-                                            : meshio::loadMesh(meshFile));
-    std::vector<std::string> arrays = {""};
-    for (const auto& a : scene.meshes.front().pointArrays) {
-        arrays.push_back(a.name);
-    }
-    const Aabb bounds = scene.bounds();
-
-    ensureGuiApplication();
-    render::OffscreenRenderer renderer;
-    out << "soak: " << frames << " frames of " << scene.meshes.front().triangleCount()
-        << " triangles at " << width << "x" << height << " (3/4 of it every " << resizeEvery
-        << " frames), " << renderer.glDescription() << "\n";
-    out.flush();
-
+/// What frame `f` (1-based) renders: the size, the camera and the settings,
+/// each cycling with its own period so that the frames go through their
+/// combinations. `arrays` are the mesh's point arrays, "" (none) first.
+render::OffscreenOptions frameOptions(long f, const SoakOptions& soak, const Aabb& bounds,
+                                      const std::vector<std::string>& arrays) {
     constexpr std::array<colormaps::DepthScale, 3> kScales = {
         colormaps::DepthScale::Chromadepth, colormaps::DepthScale::PseudoChromadepth,
         colormaps::DepthScale::DarkMeansDeep};
@@ -145,39 +141,112 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         render::VesselCue::PseudoChromadepth, render::VesselCue::Fog, render::VesselCue::Fresnel};
     constexpr std::array<double, 4> kPowers = {2.0, 4.0, 1.0, 8.0};
 
+    const auto k = static_cast<std::size_t>(f);
+    render::OffscreenOptions options;
+    const bool small = soak.resizeEvery > 0 && (f / soak.resizeEvery) % 2 == 1;
+    options.width = small ? soak.width * 3 / 4 : soak.width;
+    options.height = small ? soak.height * 3 / 4 : soak.height;
+    render::Camera camera;
+    camera.setViewport(options.width, options.height);
+    camera.fit(bounds);
+    camera.rotateView(static_cast<float>(f) * 0.037F, glm::vec3(0.0F, 0.0F, 1.0F));
+    camera.rotateView(static_cast<float>(f % 97) * 0.011F, glm::vec3(1.0F, 0.0F, 0.0F));
+    camera.pan(glm::vec2(static_cast<float>(f % 13) - 6.0F, static_cast<float>(f % 7) - 3.0F));
+    options.camera = camera;
+    options.style.array = arrays[(k / 3) % arrays.size()];
+    options.style.colorMap = kMaps[(k / 5) % kMaps.size()];
+    options.style.bins = (f / 7) % 3 == 0 ? 0 : static_cast<int>(2 + (k / 7) % 9);
+    options.vss.enabled = f % 11 != 0;
+    options.vss.scale = kScales[(k / 4) % kScales.size()];
+    options.vss.solver.p = kPowers[(k / 9) % kPowers.size()];
+    options.vss.isoLines = static_cast<int>((k / 2) % 13);
+    options.vss.preview = f % 6 == 0;
+    options.cue.cue = kCues[(k / 13) % kCues.size()];
+    options.ao.enabled = f % 5 != 0;
+    options.antialiasing = f % 3 != 0;
+    options.legends = f % 17 == 0;
+    options.background = glm::vec3(0.1F + 0.05F * static_cast<float>(f % 4), 0.14F, 0.16F);
+    return options;
+}
+
+/// Resident memory over the first 100 frames and the last 100: peak and
+/// floor (lowest reading) of each window.
+struct MemoryWindows {
     std::uint64_t after100 = 0;  // peak over frames 1..100
     std::uint64_t end = 0;       // peak over the last 100 frames
     std::uint64_t floor100 = std::numeric_limits<std::uint64_t>::max();  // lowest, frames 1..100
     std::uint64_t floorEnd = std::numeric_limits<std::uint64_t>::max();  // lowest, last 100
+
+    /// Counts frame `f`'s reading `rss` (KiB) in the windows it belongs to.
+    void record(long f, long frames, std::uint64_t rss) {
+        if (f <= 100) {
+            after100 = std::max(after100, rss);
+            floor100 = std::min(floor100, rss);
+        }
+        if (f > frames - 100) {
+            end = std::max(end, rss);
+            floorEnd = std::min(floorEnd, rss);
+        }
+    }
+};
+
+/// Prints the run's line and judges it: kOk, or kInternalError (with the
+/// reason on `err`) when VmRSS could not be read or the floor grew by more than 5%.
+int soakVerdict(const SoakOptions& soak, const MemoryWindows& memory, double seconds,
+                std::ostream& out, std::ostream& err) {
+    const auto percent = [](std::uint64_t before, std::uint64_t after) {
+        return before > 0 ? 100.0 * (static_cast<double>(after) / static_cast<double>(before) - 1.0)
+                          : 0.0;
+    };
+    const double growth = percent(memory.floor100, memory.floorEnd);
+    out << "soak: " << soak.frames << " frames in " << vv::fixedText(seconds, 0) << " s ("
+        << vv::fixedText(1000.0 * seconds / static_cast<double>(soak.frames), 1)
+        << " ms/frame); resident in use (floor) over frames 1-100 " << mib(memory.floor100)
+        << ", over the last 100 " << mib(memory.floorEnd) << " (" << signedPercent(growth)
+        << "); peaks " << mib(memory.after100) << " and " << mib(memory.end) << " ("
+        << signedPercent(percent(memory.after100, memory.end)) << ")\n";
+    if (memory.floor100 == 0 || memory.floorEnd == 0) {
+        err << "vesselview-cli: soak: cannot read VmRSS from /proc/self/status\n";
+        return kInternalError;
+    }
+    if (growth > 5.0) {
+        err << "vesselview-cli: soak: resident memory grew by more than 5% after frame 100\n";
+        return kInternalError;
+    }
+    return kOk;
+}
+
+}  // namespace
+
+int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    const std::optional<SoakOptions> parsed = parseSoakArguments(args, out);
+    if (!parsed) {
+        return kOk;
+    }
+    const SoakOptions& soak = *parsed;
+
+    scene::Scene scene;
+    scene.meshes.push_back(soak.meshFile.empty() ? demo::generateDemoMesh()
+                                                 : meshio::loadMesh(soak.meshFile));
+    std::vector<std::string> arrays = {""};
+    for (const auto& a : scene.meshes.front().pointArrays) {
+        arrays.push_back(a.name);
+    }
+    const Aabb bounds = scene.bounds();
+
+    ensureGuiApplication();
+    render::OffscreenRenderer renderer;
+    out << "soak: " << soak.frames << " frames of " << scene.meshes.front().triangleCount()
+        << " triangles at " << soak.width << "x" << soak.height << " (3/4 of it every "
+        << soak.resizeEvery << " frames), " << renderer.glDescription() << "\n";
+    out.flush();
+
+    MemoryWindows memory;
     std::uint64_t lapPeak = 0;  // peak since the last progress line
     const auto start = std::chrono::steady_clock::now();
     auto lapStart = start;
-    for (long f = 1; f <= frames; ++f) {
-        const auto k = static_cast<std::size_t>(f);
-        render::OffscreenOptions options;
-        const bool small = resizeEvery > 0 && (f / resizeEvery) % 2 == 1;
-        options.width = small ? width * 3 / 4 : width;
-        options.height = small ? height * 3 / 4 : height;
-        render::Camera camera;
-        camera.setViewport(options.width, options.height);
-        camera.fit(bounds);
-        camera.rotateView(static_cast<float>(f) * 0.037F, glm::vec3(0.0F, 0.0F, 1.0F));
-        camera.rotateView(static_cast<float>(f % 97) * 0.011F, glm::vec3(1.0F, 0.0F, 0.0F));
-        camera.pan(glm::vec2(static_cast<float>(f % 13) - 6.0F, static_cast<float>(f % 7) - 3.0F));
-        options.camera = camera;
-        options.style.array = arrays[(k / 3) % arrays.size()];
-        options.style.colorMap = kMaps[(k / 5) % kMaps.size()];
-        options.style.bins = (f / 7) % 3 == 0 ? 0 : static_cast<int>(2 + (k / 7) % 9);
-        options.vss.enabled = f % 11 != 0;
-        options.vss.scale = kScales[(k / 4) % kScales.size()];
-        options.vss.solver.p = kPowers[(k / 9) % kPowers.size()];
-        options.vss.isoLines = static_cast<int>((k / 2) % 13);
-        options.vss.preview = f % 6 == 0;
-        options.cue.cue = kCues[(k / 13) % kCues.size()];
-        options.ao.enabled = f % 5 != 0;
-        options.antialiasing = f % 3 != 0;
-        options.legends = f % 17 == 0;
-        options.background = glm::vec3(0.1F + 0.05F * static_cast<float>(f % 4), 0.14F, 0.16F);
+    for (long f = 1; f <= soak.frames; ++f) {
+        const render::OffscreenOptions options = frameOptions(f, soak, bounds, arrays);
         try {
             const QImage image = renderer.render(scene, options);
             if (image.width() != options.width || image.height() != options.height) {
@@ -190,23 +259,17 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
             err << "vesselview-cli: soak: frame " << f << ": " << e.what() << "\n";
             return kInternalError;
         }
-        const std::uint64_t rss = residentAfterTrimKiB(trim);
+        const std::uint64_t rss = residentAfterTrimKiB(soak.trim);
         lapPeak = std::max(lapPeak, rss);
-        if (f <= 100) {
-            after100 = std::max(after100, rss);
-            floor100 = std::min(floor100, rss);
-        }
-        if (f > frames - 100) {
-            end = std::max(end, rss);
-            floorEnd = std::min(floorEnd, rss);
-        }
+        memory.record(f, soak.frames, rss);
         if (f == 100) {
-            out << "frames 1-100: resident " << mib(floor100) << " .. " << mib(after100) << "\n";
+            out << "frames 1-100: resident " << mib(memory.floor100) << " .. "
+                << mib(memory.after100) << "\n";
         }
-        if (f % every == 0 || f == frames) {
+        if (f % soak.every == 0 || f == soak.frames) {
             const auto now = std::chrono::steady_clock::now();
             const double lap = std::chrono::duration<double>(now - lapStart).count();
-            const long lapFrames = f % every == 0 ? every : f % every;
+            const long lapFrames = f % soak.every == 0 ? soak.every : f % soak.every;
             lapStart = now;
             out << "frame " << f << ": resident " << mib(rss) << " (peak since last "
                 << mib(lapPeak) << "), "
@@ -217,26 +280,7 @@ int soakCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     }
     const double seconds =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const auto percent = [](std::uint64_t before, std::uint64_t after) {
-        return before > 0 ? 100.0 * (static_cast<double>(after) / static_cast<double>(before) - 1.0)
-                          : 0.0;
-    };
-    const double growth = percent(floor100, floorEnd);
-    out << "soak: " << frames << " frames in " << vv::fixedText(seconds, 0) << " s ("
-        << vv::fixedText(1000.0 * seconds / static_cast<double>(frames), 1)
-        << " ms/frame); resident in use (floor) over frames 1-100 " << mib(floor100)
-        << ", over the last 100 " << mib(floorEnd) << " (" << signedPercent(growth) << "); peaks "
-        << mib(after100) << " and " << mib(end) << " (" << signedPercent(percent(after100, end))
-        << ")\n";
-    if (floor100 == 0 || floorEnd == 0) {
-        err << "vesselview-cli: soak: cannot read VmRSS from /proc/self/status\n";
-        return kInternalError;
-    }
-    if (growth > 5.0) {
-        err << "vesselview-cli: soak: resident memory grew by more than 5% after frame 100\n";
-        return kInternalError;
-    }
-    return kOk;
+    return soakVerdict(soak, memory, seconds, out, err);
 }
 
 }  // namespace vv::cli

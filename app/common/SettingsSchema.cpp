@@ -139,8 +139,9 @@ using enum SettingType;
 // about every member a designated initializer leaves to its default.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmissing-field-initializers"
-const std::vector<Setting>& table() {
-    static const std::vector<Setting> settings{
+/// The Void Space Surface and ambient occlusion.
+std::vector<Setting> surfaceSettings() {
+    return {
         // The Void Space Surface.
         {.key = "vss.enabled",
          .storedKey = "vss",
@@ -270,6 +271,12 @@ const std::vector<Setting>& table() {
          .label = QT_TRANSLATE_NOOP("vv::app::Settings", "AO strength"),
          .widget = kPercent,
          .field = field([](auto& d) -> auto& { return d.ao.strength; })},
+    };
+}
+
+/// The vessels: cue, array colouring, material, light.
+std::vector<Setting> vesselSettings() {
+    return {
         // The vessels.
         {.key = "cue.cue",
          .storedKey = "vesselCue",
@@ -385,6 +392,12 @@ const std::vector<Setting>& table() {
          .session = SessionForm::Optional,
          .widget = {.decimals = 1, .step = 5.0, .suffix = "°"},
          .field = field([](auto& d) -> auto& { return d.style.light.elevation; })},
+    };
+}
+
+/// Per object, and the frame: background, legends, annotations, anti-aliasing.
+std::vector<Setting> objectAndFrameSettings() {
+    return {
         // Per object (view.style.objects).
         {.key = "objects[].opacity",
          .min = 0.0,
@@ -435,9 +448,19 @@ const std::vector<Setting>& table() {
          .session = SessionForm::None,
          .field = field([](auto& d) -> auto& { return d.antialiasing; })},
     };
-    return settings;
 }
 #pragma GCC diagnostic pop
+
+const std::vector<Setting>& table() {
+    static const std::vector<Setting> settings = [] {
+        std::vector<Setting> all = surfaceSettings();
+        for (const std::vector<Setting>& part : {vesselSettings(), objectAndFrameSettings()}) {
+            all.insert(all.end(), part.begin(), part.end());
+        }
+        return all;
+    }();
+    return settings;
+}
 
 std::string quoted(std::string_view text) {
     return "'" + std::string(text) + "'";

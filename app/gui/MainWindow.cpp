@@ -219,6 +219,20 @@ void MainWindow::connectDocument() {
 }
 
 void MainWindow::buildMenus() {
+    buildFileMenu();
+    buildViewMenu();
+
+    dicomMenu_ = new DicomMenu(this);  // network preferences, PACS browser
+    menuBar()->addMenu(dicomMenu_);
+    listener_ = addLocalStudyActions(*this, *dicomMenu_);  // listener, Local Studies, Send
+
+    QMenu* help = menuBar()->addMenu(tr("&Help"));
+    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
+    keys->setShortcut(QKeySequence::HelpContents);
+    help->addAction(tr("&About VesselView"), this, &MainWindow::showAbout);
+}
+
+void MainWindow::buildFileMenu() {
     QMenu* file = menuBar()->addMenu(tr("&File"));
     QAction* open = file->addAction(tr("&Open…"), this, [this] {
         const QStringList files = QFileDialog::getOpenFileNames(this, tr("Open vessel meshes"),
@@ -297,7 +311,9 @@ void MainWindow::buildMenus() {
     file->addSeparator();
     QAction* quit = file->addAction(tr("&Quit"), this, &QWidget::close);
     quit->setShortcut(QKeySequence::Quit);
+}
 
+void MainWindow::buildViewMenu() {
     QMenu* view = menuBar()->addMenu(tr("&View"));
     QAction* reset = view->addAction(tr("&Reset Camera"), viewer_, &ViewerWidget::resetCamera);
     reset->setShortcut(Qt::Key_R);
@@ -361,15 +377,6 @@ void MainWindow::buildMenus() {
     defaults->setToolTip(tr("Display settings and panel layout as in a fresh installation"));
 
     view->addMenu(new LanguageMenu(this));  // stored in QSettings, applied at the next start
-
-    dicomMenu_ = new DicomMenu(this);  // network preferences, PACS browser
-    menuBar()->addMenu(dicomMenu_);
-    listener_ = addLocalStudyActions(*this, *dicomMenu_);  // listener, Local Studies, Send
-
-    QMenu* help = menuBar()->addMenu(tr("&Help"));
-    QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);
-    keys->setShortcut(QKeySequence::HelpContents);
-    help->addAction(tr("&About VesselView"), this, &MainWindow::showAbout);
 }
 
 void MainWindow::buildDocks() {

@@ -254,7 +254,10 @@ class MainWindow : public QMainWindow {
 
   private:
     void buildDocks();
+    /// File, View, DICOM and Help, in the menu bar's order.
     void buildMenus();
+    void buildFileMenu();
+    void buildViewMenu();
     void buildToolBar();
     void buildStatusBar();
     /// Every control shows the viewer's current settings.

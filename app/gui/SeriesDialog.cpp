@@ -54,6 +54,33 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     setObjectName(QStringLiteral("seriesDialog"));
     resize(900, 560);
 
+    QTreeWidgetItem* first = buildTree();
+    QGroupBox* options = buildOptions();
+
+    buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
+    buttons_->button(QDialogButtonBox::Ok)->setText(tr("Load Series"));
+    connect(buttons_, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(tree_, 1);
+    layout->addWidget(options);
+    layout->addWidget(buttons_);
+
+    connect(tree_, &QTreeWidget::itemSelectionChanged, this, &SeriesDialog::selectionChanged);
+    connect(tree_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
+        if (!item->data(Name, kUidRole).toString().isEmpty() && item->isSelected()) {
+            accept();
+        }
+    });
+    if (first != nullptr) {
+        tree_->setCurrentItem(first);
+        first->setSelected(true);
+    }
+    selectionChanged();
+}
+
+QTreeWidgetItem* SeriesDialog::buildTree() {
     tree_ = new QTreeWidget(this);
     tree_->setObjectName(QStringLiteral("seriesTree"));
     tree_->setColumnCount(ColumnCount);
@@ -79,36 +106,52 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
             studyItem->setText(Description, fromStd(study.description));
             studyItem->setFlags(Qt::ItemIsEnabled);
             for (const dicom::DicomSeries& series : study.series) {
-                auto* item = new QTreeWidgetItem(studyItem);
-                item->setData(Name, kUidRole, fromStd(series.seriesInstanceUid));
-                item->setText(Name, series.seriesNumber ? tr("Series %1").arg(*series.seriesNumber)
-                                                        : tr("Series"));
-                item->setToolTip(Name, fromStd(series.seriesInstanceUid));
-                item->setText(Modality, fromStd(series.modality));
-                item->setText(Description, fromStd(series.description));
-                item->setText(Images, QString::number(series.imageCount));
-                item->setText(Size, tr("%1 × %2").arg(series.columns).arg(series.rows));
-                QString spacing;
-                if (series.pixelSpacing) {
-                    spacing = QStringLiteral("%L1 × %L2")
-                                  .arg(series.pixelSpacing->x, 0, 'g', 4)
-                                  .arg(series.pixelSpacing->y, 0, 'g', 4);
-                    if (series.sliceSpacing) {
-                        spacing += QStringLiteral(" × %L1").arg(*series.sliceSpacing, 0, 'g', 4);
-                    }
-                }
-                item->setText(Spacing, spacing);
-                if (!series.unsupportedReason.empty()) {
-                    item->setText(Description, tr("%1 — cannot be loaded: %2")
-                                                   .arg(fromStd(series.description),
-                                                        fromStd(series.unsupportedReason)));
-                    greyOut(item);
-                } else if (first == nullptr) {
+                QTreeWidgetItem* item = addSeriesItem(studyItem, series);
+                if (series.unsupportedReason.empty() && first == nullptr) {
                     first = item;
                 }
             }
         }
     }
+    addSkippedFiles();
+    tree_->expandAll();
+    for (int c = 0; c < ColumnCount; ++c) {
+        tree_->resizeColumnToContents(c);
+    }
+    return first;
+}
+
+QTreeWidgetItem* SeriesDialog::addSeriesItem(QTreeWidgetItem* studyItem,
+                                             const dicom::DicomSeries& series) {
+    auto* item = new QTreeWidgetItem(studyItem);
+    item->setData(Name, kUidRole, fromStd(series.seriesInstanceUid));
+    item->setText(Name,
+                  series.seriesNumber ? tr("Series %1").arg(*series.seriesNumber) : tr("Series"));
+    item->setToolTip(Name, fromStd(series.seriesInstanceUid));
+    item->setText(Modality, fromStd(series.modality));
+    item->setText(Description, fromStd(series.description));
+    item->setText(Images, QString::number(series.imageCount));
+    item->setText(Size, tr("%1 × %2").arg(series.columns).arg(series.rows));
+    QString spacing;
+    if (series.pixelSpacing) {
+        spacing = QStringLiteral("%L1 × %L2")
+                      .arg(series.pixelSpacing->x, 0, 'g', 4)
+                      .arg(series.pixelSpacing->y, 0, 'g', 4);
+        if (series.sliceSpacing) {
+            spacing += QStringLiteral(" × %L1").arg(*series.sliceSpacing, 0, 'g', 4);
+        }
+    }
+    item->setText(Spacing, spacing);
+    if (!series.unsupportedReason.empty()) {
+        item->setText(Description,
+                      tr("%1 — cannot be loaded: %2")
+                          .arg(fromStd(series.description), fromStd(series.unsupportedReason)));
+        greyOut(item);
+    }
+    return item;
+}
+
+void SeriesDialog::addSkippedFiles() {
     if (!scan_.skipped.empty()) {
         auto* skipped = new QTreeWidgetItem(tree_);
         skipped->setText(Name, tr("Skipped files: %1").arg(scan_.skipped.size()));
@@ -121,12 +164,9 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
             greyOut(item);
         }
     }
-    tree_->expandAll();
-    for (int c = 0; c < ColumnCount; ++c) {
-        tree_->resizeColumnToContents(c);
-    }
+}
 
-    // Segmentation options.
+QGroupBox* SeriesDialog::buildOptions() {
     auto* options = new QGroupBox(tr("Vessel segmentation"), this);
     auto* form = new QFormLayout(options);
     autoThreshold_ = new QCheckBox(tr("Default for the modality"), options);
@@ -181,28 +221,7 @@ SeriesDialog::SeriesDialog(const dicom::DicomScanResult& scan, QWidget* parent)
     for (QDoubleSpinBox* box : {lower_, upper_}) {
         connect(box, &QDoubleSpinBox::valueChanged, this, &SeriesDialog::updateOk);
     }
-
-    buttons_ = new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this);
-    buttons_->button(QDialogButtonBox::Ok)->setText(tr("Load Series"));
-    connect(buttons_, &QDialogButtonBox::accepted, this, &QDialog::accept);
-    connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
-
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(tree_, 1);
-    layout->addWidget(options);
-    layout->addWidget(buttons_);
-
-    connect(tree_, &QTreeWidget::itemSelectionChanged, this, &SeriesDialog::selectionChanged);
-    connect(tree_, &QTreeWidget::itemDoubleClicked, this, [this](QTreeWidgetItem* item) {
-        if (!item->data(Name, kUidRole).toString().isEmpty() && item->isSelected()) {
-            accept();
-        }
-    });
-    if (first != nullptr) {
-        tree_->setCurrentItem(first);
-        first->setSelected(true);
-    }
-    selectionChanged();
+    return options;
 }
 
 const dicom::DicomSeries* SeriesDialog::currentSeries() const {

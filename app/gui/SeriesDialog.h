@@ -10,6 +10,7 @@
 class QCheckBox;
 class QDialogButtonBox;
 class QDoubleSpinBox;
+class QGroupBox;
 class QLabel;
 class QSpinBox;
 class QTreeWidget;
@@ -54,6 +55,16 @@ class SeriesDialog : public QDialog {
     [[nodiscard]] QCheckBox* boneRemoval() const noexcept { return bone_; }
 
   private:
+    /// The constructor's steps. The tree of what the scan found; returns the
+    /// first loadable series' item (nullptr: none).
+    QTreeWidgetItem* buildTree();
+    /// One series' row under its study, greyed with the reason when it cannot be loaded.
+    static QTreeWidgetItem* addSeriesItem(QTreeWidgetItem* studyItem,
+                                          const dicom::DicomSeries& series);
+    /// The skipped files, greyed with their reasons, under one node of their own.
+    void addSkippedFiles();
+    /// The segmentation options: threshold range, components, bone removal.
+    QGroupBox* buildOptions();
     void selectionChanged();
     /// OK: a loadable series selected, and both ends of a range of one's own entered.
     void updateOk();

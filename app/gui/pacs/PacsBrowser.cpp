@@ -102,6 +102,34 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     setObjectName(QStringLiteral("pacsBrowser"));
     setWindowTitle(tr("Query PACS"));
 
+    // Built in the order the widgets are created, which is their tab order.
+    QGroupBox* queryBox = buildSearchBox();
+    QSplitter* split = buildResultTables();
+    QGroupBox* retrieveBox = buildRetrieveBox();
+
+    status_ = new QLabel(this);
+    status_->setObjectName(QStringLiteral("pacsStatus"));
+    status_->setWordWrap(true);
+    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    auto* close = new QDialogButtonBox(QDialogButtonBox::Close, this);
+    connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
+
+    auto* layout = new QVBoxLayout(this);
+    layout->addWidget(queryBox);
+    layout->addWidget(split, 1);
+    layout->addWidget(retrieveBox);
+    layout->addWidget(status_);
+    layout->addWidget(close);
+
+    progressTimer_ = new QTimer(this);
+    progressTimer_->setInterval(kProgressPollMs);
+    connect(progressTimer_, &QTimer::timeout, this, &PacsBrowser::pollRetrieveProgress);
+    connectSearch();
+    connectRetrieve();
+    reloadSettings();
+}
+
+QGroupBox* PacsBrowser::buildSearchBox() {
     auto* queryBox = new QGroupBox(tr("Search"), this);
     auto* grid = new QGridLayout(queryBox);
     node_ = new QComboBox(queryBox);
@@ -130,6 +158,11 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     cancelSearch_ = new QPushButton(tr("Cancel Searc&h"), queryBox);
     cancelSearch_->setObjectName(QStringLiteral("cancelSearch"));
     cancelSearch_->setToolTip(tr("Stop waiting for the PACS's answer"));
+    layOutSearchBox(queryBox, grid);
+    return queryBox;
+}
+
+void PacsBrowser::layOutSearchBox(QGroupBox* queryBox, QGridLayout* grid) {
     const auto addField = [grid, queryBox](int row, int column, const QString& label,
                                            QWidget* field) {
         auto* l = new QLabel(label, queryBox);
@@ -153,7 +186,9 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     grid->setColumnStretch(1, 2);
     grid->setColumnStretch(3, 1);
     grid->setColumnStretch(5, 2);
+}
 
+QSplitter* PacsBrowser::buildResultTables() {
     studies_ = makeResultTable(this, QStringLiteral("pacsStudies"),
                                {tr("Patient"), tr("Patient ID"), tr("Date"), tr("Description"),
                                 tr("Modalities"), tr("Accession"), tr("Series")});
@@ -165,9 +200,18 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     split->addWidget(series_);
     split->setStretchFactor(0, 3);
     split->setStretchFactor(1, 2);
+    return split;
+}
 
+QGroupBox* PacsBrowser::buildRetrieveBox() {
     auto* retrieveBox = new QGroupBox(tr("Retrieve into the local study store"), this);
     auto* retrieveLayout = new QVBoxLayout(retrieveBox);
+    retrieveLayout->addLayout(buildRetrieveMethodRow(retrieveBox));
+    retrieveLayout->addLayout(buildRetrieveRunRow(retrieveBox));
+    return retrieveBox;
+}
+
+QHBoxLayout* PacsBrowser::buildRetrieveMethodRow(QGroupBox* retrieveBox) {
     auto* how = new QHBoxLayout;
     useGet_ = new QRadioButton(tr("C-&GET (direct)"), retrieveBox);
     useGet_->setObjectName(QStringLiteral("useGet"));
@@ -183,7 +227,10 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     how->addWidget(useGet_);
     how->addWidget(useMove_);
     how->addWidget(moveNote_, 1);
-    retrieveLayout->addLayout(how);
+    return how;
+}
+
+QHBoxLayout* PacsBrowser::buildRetrieveRunRow(QGroupBox* retrieveBox) {
     auto* run = new QHBoxLayout;
     retrieveStudy_ = new QPushButton(tr("Retrieve S&tudy"), retrieveBox);
     retrieveStudy_->setObjectName(QStringLiteral("retrieveStudy"));
@@ -204,41 +251,28 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     run->addWidget(progress_, 1);
     run->addWidget(cancel_);
     run->addWidget(open_);
-    retrieveLayout->addLayout(run);
+    return run;
+}
 
-    status_ = new QLabel(this);
-    status_->setObjectName(QStringLiteral("pacsStatus"));
-    status_->setWordWrap(true);
-    status_->setTextInteractionFlags(Qt::TextSelectableByMouse);
-    auto* close = new QDialogButtonBox(QDialogButtonBox::Close, this);
-    connect(close, &QDialogButtonBox::rejected, this, &QDialog::reject);
-
-    auto* layout = new QVBoxLayout(this);
-    layout->addWidget(queryBox);
-    layout->addWidget(split, 1);
-    layout->addWidget(retrieveBox);
-    layout->addWidget(status_);
-    layout->addWidget(close);
-
-    progressTimer_ = new QTimer(this);
-    progressTimer_->setInterval(kProgressPollMs);
-    connect(progressTimer_, &QTimer::timeout, this, [this] {
-        if (retrieve_ == nullptr) {
-            return;
+void PacsBrowser::pollRetrieveProgress() {
+    if (retrieve_ == nullptr) {
+        return;
+    }
+    const double fraction = retrieve_->fraction;
+    const int value = static_cast<int>(std::lround(fraction * kProgressSteps));
+    if (value != progress_->value()) {
+        progress_->setValue(value);
+        if (retrieveTotal_ > 0) {
+            const int received = static_cast<int>(std::lround(fraction * retrieveTotal_));
+            progress_->setFormat(
+                tr("%1 of %2 images")
+                    .arg(QLocale().toString(received), QLocale().toString(retrieveTotal_)));
         }
-        const double fraction = retrieve_->fraction;
-        const int value = static_cast<int>(std::lround(fraction * kProgressSteps));
-        if (value != progress_->value()) {
-            progress_->setValue(value);
-            if (retrieveTotal_ > 0) {
-                const int received = static_cast<int>(std::lround(fraction * retrieveTotal_));
-                progress_->setFormat(
-                    tr("%1 of %2 images")
-                        .arg(QLocale().toString(received), QLocale().toString(retrieveTotal_)));
-            }
-            emit retrieveProgress(fraction);
-        }
-    });
+        emit retrieveProgress(fraction);
+    }
+}
+
+void PacsBrowser::connectSearch() {
     connect(search_, &QPushButton::clicked, this, &PacsBrowser::startSearch);
     connect(cancelSearch_, &QPushButton::clicked, this, &PacsBrowser::cancelSearch);
     for (QLineEdit* edit : {patientName_, patientId_, description_, accession_}) {
@@ -246,6 +280,9 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     }
     connect(studies_, &QTableWidget::itemSelectionChanged, this, &PacsBrowser::studySelected);
     connect(series_, &QTableWidget::itemSelectionChanged, this, &PacsBrowser::updateButtons);
+}
+
+void PacsBrowser::connectRetrieve() {
     connect(retrieveStudy_, &QPushButton::clicked, this, [this] { startRetrieve(true); });
     connect(retrieveSeries_, &QPushButton::clicked, this, [this] { startRetrieve(false); });
     connect(cancel_, &QPushButton::clicked, this, [this] {
@@ -262,7 +299,6 @@ PacsBrowser::PacsBrowser(QWidget* parent) : QDialog(parent) {
     });
     connect(useMove_, &QRadioButton::toggled, this, &PacsBrowser::updateMoveNote);
     connect(node_, &QComboBox::currentIndexChanged, this, &PacsBrowser::updateButtons);
-    reloadSettings();
 }
 
 PacsBrowser::~PacsBrowser() {

@@ -16,11 +16,15 @@
 class QButtonGroup;
 class QComboBox;
 class QDateEdit;
+class QGridLayout;
+class QGroupBox;
+class QHBoxLayout;
 class QLabel;
 class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QRadioButton;
+class QSplitter;
 class QTableWidget;
 class QTimer;
 
@@ -107,6 +111,20 @@ class PacsBrowser : public QDialog {
     void showEvent(QShowEvent* event) override;
 
   private:
+    // The constructor's steps, in the order the widgets are created (their
+    // tab order): the search fields, the study and series tables, the
+    // retrieve controls; then the signals.
+    QGroupBox* buildSearchBox();
+    void layOutSearchBox(QGroupBox* queryBox, QGridLayout* grid);
+    QSplitter* buildResultTables();
+    QGroupBox* buildRetrieveBox();
+    QHBoxLayout* buildRetrieveMethodRow(QGroupBox* retrieveBox);
+    QHBoxLayout* buildRetrieveRunRow(QGroupBox* retrieveBox);
+    void connectSearch();
+    void connectRetrieve();
+    /// The progress timer's tick: moves the bar to the running retrieve's share.
+    void pollRetrieveProgress();
+
     [[nodiscard]] const PacsNode* currentNode() const;
     /// The UIDs of the study and series selected (series empty: none).
     [[nodiscard]] std::pair<std::string, std::string> selectedUids() const;

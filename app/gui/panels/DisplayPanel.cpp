@@ -50,7 +50,18 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     : QWidget(parent), viewer_(viewer) {
     setObjectName(QStringLiteral("displayPanel"));
     auto* form = new QFormLayout(this);
+    addCueRows(form);
+    addColourRows(form);
+    addLightRow(form);
+    addCameraButtons(form);
+    addOverlayRows(form);
 
+    makeNarrow(this);
+    syncFromViewer();
+    connectControls();
+}
+
+void DisplayPanel::addCueRows(QFormLayout* form) {
     cue_ = new QComboBox(this);
     cue_->setObjectName(QStringLiteral("vesselCueChooser"));
     cue_->setToolTip(tr("A depth cue on the vessels themselves, for comparison with the VSS"));
@@ -67,7 +78,9 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     setUpForSetting(fresnelExponent_, "cue.fresnelExponent");
     fresnelExponent_->setKeyboardTracking(false);
     form->addRow(settingFormLabel("cue.fresnelExponent"), fresnelExponent_);
+}
 
+void DisplayPanel::addColourRows(QFormLayout* form) {
     background_ = new QComboBox(this);
     background_->setObjectName(QStringLiteral("backgroundChooser"));
     background_->setToolTip(tr("Colour behind the vessels and the VSS"));
@@ -81,7 +94,9 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     vesselColor_->setMinimumWidth(64);
     form->addRow(settingFormLabel("style.vesselColor"), vesselColor_);
     connect(vesselColor_, &QToolButton::clicked, this, &DisplayPanel::chooseVesselColor);
+}
 
+void DisplayPanel::addLightRow(QFormLayout* form) {
     // The key light: azimuth about the view's up axis, elevation above its horizon.
     auto* light = new QWidget(this);
     auto* lightRow = new QHBoxLayout(light);
@@ -109,7 +124,9 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
         syncFromViewer();
         emit changed();
     });
+}
 
+void DisplayPanel::addCameraButtons(QFormLayout* form) {
     cameraButtons_ = new QWidget(this);
     auto* grid = new QGridLayout(cameraButtons_);
     grid->setContentsMargins(0, 0, 0, 0);
@@ -147,7 +164,9 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
     }
     form->addRow(tr("Camera:"), cameraButtons_);
     labelCameraButtons();
+}
 
+void DisplayPanel::addOverlayRows(QFormLayout* form) {
     legends_ = new QCheckBox(settingLabel("legends"), this);
     legends_->setObjectName(QStringLiteral("displayLegends"));
     legends_->setToolTip(tr("Depth and parameter legends over the view"));
@@ -166,10 +185,9 @@ DisplayPanel::DisplayPanel(ViewerWidget* viewer, QWidget* parent)
                        "font-family: monospace; }"));
     overlay_->move(8, 8);
     overlay_->hide();
+}
 
-    makeNarrow(this);
-    syncFromViewer();
-
+void DisplayPanel::connectControls() {
     auto applyCueLater = [this] {
         if (!syncing_) {
             applyCue();

@@ -11,6 +11,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QSlider;
 class QLabel;
 class QToolButton;
@@ -72,6 +73,19 @@ class DisplayPanel : public QWidget {
                                                  render::SceneFrame frame);
 
   private:
+    // The constructor's steps, top to bottom as the panel shows them (and as
+    // the widgets are created: their tab order).
+    /// The vessels' depth cue, fog strength, Fresnel exponent.
+    void addCueRows(QFormLayout* form);
+    /// Background and vessel colour.
+    void addColourRows(QFormLayout* form);
+    /// The key light's azimuth and elevation, and Reset.
+    void addLightRow(QFormLayout* form);
+    /// The distance presets and the anatomical views.
+    void addCameraButtons(QFormLayout* form);
+    /// Legends, the performance overlay's check box and the overlay itself.
+    void addOverlayRows(QFormLayout* form);
+    void connectControls();
     /// Where the camera looks from and what is up, and for meshes the axes.
     [[nodiscard]] static QString anatomicalToolTip(render::AnatomicalView view,
                                                    render::SceneFrame frame);

@@ -67,6 +67,22 @@ void SegmentationPanel::buildControls() {
     auto* outer = new QVBoxLayout(this);
     auto* top = new QFormLayout;
     outer->addLayout(top);
+    addVolumeRows(top);
+
+    segmentation_ = new QWidget(this);
+    auto* form = new QFormLayout(segmentation_);
+    form->setContentsMargins(0, 0, 0, 0);
+    outer->addWidget(segmentation_);
+    addThresholdRows(form);
+    addComponentRows(form);
+    addSurfaceRows(form);
+
+    addSeedAndPreviewRow(outer);
+    addApplyRows(outer);
+    outer->addStretch(1);
+}
+
+void SegmentationPanel::addVolumeRows(QFormLayout* top) {
     volumeLabel_ = new QLabel(this);
     volumeLabel_->setObjectName(QStringLiteral("segmentationVolume"));
     volumeLabel_->setWordWrap(true);
@@ -96,11 +112,9 @@ void SegmentationPanel::buildControls() {
             viewer_->setVolume(volume_, static_cast<float>(value));
         }
     });
+}
 
-    segmentation_ = new QWidget(this);
-    auto* form = new QFormLayout(segmentation_);
-    form->setContentsMargins(0, 0, 0, 0);
-    outer->addWidget(segmentation_);
+void SegmentationPanel::addThresholdRows(QFormLayout* form) {
     lower_ = new QDoubleSpinBox(segmentation_);
     lower_->setObjectName(QStringLiteral("thresholdLower"));
     upper_ = new QDoubleSpinBox(segmentation_);
@@ -142,7 +156,9 @@ void SegmentationPanel::buildControls() {
         rangeIsDefault_ = rangeIsDefault_ && settingRange_;
         optionsChanged();
     });
+}
 
+void SegmentationPanel::addComponentRows(QFormLayout* form) {
     mode_ = new QComboBox(segmentation_);
     mode_->setObjectName(QStringLiteral("componentMode"));
     mode_->addItem(tr("Largest components"), static_cast<int>(Mode::Largest));
@@ -170,6 +186,9 @@ void SegmentationPanel::buildControls() {
            "touching bone is dropped with it"));
     form->addRow(bone_);
     connect(bone_, &QCheckBox::toggled, this, &SegmentationPanel::optionsChanged);
+}
+
+void SegmentationPanel::addSurfaceRows(QFormLayout* form) {
     correction_ = new QCheckBox(tr("Correct the signal fall-off (MR)"), segmentation_);
     correction_->setObjectName(QStringLiteral("intensityCorrection"));
     form->addRow(correction_);
@@ -192,7 +211,9 @@ void SegmentationPanel::buildControls() {
     triangles_->setToolTip(tr("Decimate the surface to about this many triangles (All: none)"));
     form->addRow(tr("Surface triangles:"), triangles_);
     connect(triangles_, &QSpinBox::valueChanged, this, &SegmentationPanel::optionsChanged);
+}
 
+void SegmentationPanel::addSeedAndPreviewRow(QVBoxLayout* outer) {
     // Pick seed and preview stay usable in the ray-cast display.
     pickSeed_ = new QPushButton(tr("Pick Seed"), this);
     pickSeed_->setObjectName(QStringLiteral("pickSeed"));
@@ -215,7 +236,9 @@ void SegmentationPanel::buildControls() {
     seedRow->addWidget(pickSeed_);
     seedRow->addWidget(preview_, 1);
     outer->addLayout(seedRow);
+}
 
+void SegmentationPanel::addApplyRows(QVBoxLayout* outer) {
     apply_ = new QPushButton(tr("Apply"), this);
     apply_->setObjectName(QStringLiteral("segmentationApply"));
     apply_->setToolTip(tr("Segment the whole volume at full resolution"));
@@ -251,7 +274,6 @@ void SegmentationPanel::buildControls() {
     cutOffRow->addWidget(cutOff_, 1);
     cutOffBox_->hide();
     outer->addWidget(cutOffBox_);
-    outer->addStretch(1);
 }
 
 void SegmentationPanel::setVolume(std::shared_ptr<const scene::Volume> volume,

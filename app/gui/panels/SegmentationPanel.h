@@ -21,11 +21,13 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QProgressBar;
 class QPushButton;
 class QSpinBox;
 class QTimer;
+class QVBoxLayout;
 
 namespace vv::segmentation {
 struct SegmentationOutcome;
@@ -190,7 +192,20 @@ class SegmentationPanel : public QWidget {
     bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
+    /// Builds the controls top to bottom (creation order is tab order), each
+    /// group with its connections.
     void buildControls();
+    /// What is loaded, how the volume is shown, the iso value.
+    void addVolumeRows(QFormLayout* top);
+    /// The threshold range and its default.
+    void addThresholdRows(QFormLayout* form);
+    /// Which components are kept: mode, count, seed, bone removal.
+    void addComponentRows(QFormLayout* form);
+    /// The MR fall-off correction and the surface's triangle budget.
+    void addSurfaceRows(QFormLayout* form);
+    void addSeedAndPreviewRow(QVBoxLayout* outer);
+    /// Apply, its progress and Cancel, the message and the cut-off warning.
+    void addApplyRows(QVBoxLayout* outer);
     /// A control changed the options: preview after the debounce delay.
     void optionsChanged();
     void updateApplicability();

@@ -63,6 +63,19 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     auto* outer = new QVBoxLayout(this);
     auto* form = new QFormLayout;
     outer->addLayout(form);
+    addFirstRows(form);
+    addLookRows(form);
+    addRangeRows(form);
+    outer->addWidget(buildAdvancedSection());
+
+    makeNarrow(this);
+    powerBox_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
+    powerBox_->setFixedWidth(powerBox_->sizeHint().width());
+    syncFromViewer();
+    connectControls();
+}
+
+void VssPanel::addFirstRows(QFormLayout* form) {
     enabled_ = new QCheckBox(settingLabel("vss.enabled"), this);
     enabled_->setObjectName(QStringLiteral("vssEnabled"));
     enabled_->setToolTip(tr("A depth-coded surface in the space between the vessels"));
@@ -86,7 +99,9 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     powerRow->addWidget(powerSlider_, 1);
     powerRow->addWidget(powerBox_);
     form->addRow(settingFormLabel("vss.p"), powerRow);
+}
 
+void VssPanel::addLookRows(QFormLayout* form) {
     isoLines_ = new QSpinBox(this);
     isoLines_->setObjectName(QStringLiteral("vssIsoLines"));
     setUpForSetting(isoLines_, "vss.isoLines");
@@ -109,7 +124,9 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     setUpForSetting(aoRadius_, "ao.radius");
     aoRadius_->setKeyboardTracking(false);
     form->addRow(settingFormLabel("ao.radius"), aoRadius_);
+}
 
+void VssPanel::addRangeRows(QFormLayout* form) {
     rangeMode_ = new QComboBox(this);
     rangeMode_->setObjectName(QStringLiteral("vssRangeMode"));
     rangeMode_->addItem(tr("Visible vessels"), static_cast<int>(vss::RangeMode::Visible));
@@ -128,7 +145,9 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     rangeRow->addWidget(rangeMin_);
     rangeRow->addWidget(rangeMax_);
     form->addRow(tr("Near / far:"), rangeRow);
+}
 
+CollapsibleSection* VssPanel::buildAdvancedSection() {
     auto* advanced = new QWidget(this);
     auto* advancedForm = new QFormLayout(advanced);
     solver_ = new QComboBox(this);
@@ -156,13 +175,10 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     advanced_ = new CollapsibleSection(tr("Advanced"), advanced, QStringLiteral("vssAdvanced"),
                                        false, this);
     advanced_->setToolTip(tr("How the surface is computed: solver, tolerance, solve time"));
-    outer->addWidget(advanced_);
+    return advanced_;
+}
 
-    makeNarrow(this);
-    powerBox_->setSizePolicy(QSizePolicy::Fixed, QSizePolicy::Fixed);
-    powerBox_->setFixedWidth(powerBox_->sizeHint().width());
-    syncFromViewer();
-
+void VssPanel::connectControls() {
     connect(powerSlider_, &QSlider::valueChanged, this, [this](int position) {
         if (!syncing_) {
             powerBox_->setValue(powerFromSlider(position));  // applies through the spin box
@@ -190,23 +206,25 @@ VssPanel::VssPanel(ViewerWidget* viewer, QWidget* parent) : QWidget(parent), vie
     connect(lighting_, &QSlider::valueChanged, this, applyLater);
     connect(ao_, &QCheckBox::toggled, this, applyLater);
     connect(aoRadius_, &QDoubleSpinBox::valueChanged, this, applyLater);
-    connect(rangeMode_, &QComboBox::currentIndexChanged, this, [this] {
-        if (syncing_) {
-            return;
-        }
-        // Fixing starts from the range on screen, so nothing jumps.
-        const render::VssFrameStatus& status = viewer_->vssStatus();
-        if (rangeMode_->currentData().toInt() == static_cast<int>(vss::RangeMode::Fixed) &&
-            status.shown && std::isfinite(status.dmin) && std::isfinite(status.dmax)) {
-            const QSignalBlocker blockMin(rangeMin_);
-            const QSignalBlocker blockMax(rangeMax_);
-            rangeMin_->setValue(status.dmin);
-            rangeMax_->setValue(status.dmax);
-        }
-        apply();
-    });
+    connect(rangeMode_, &QComboBox::currentIndexChanged, this, &VssPanel::rangeModeChosen);
     connect(rangeMin_, &QDoubleSpinBox::valueChanged, this, applyLater);
     connect(rangeMax_, &QDoubleSpinBox::valueChanged, this, applyLater);
+}
+
+void VssPanel::rangeModeChosen() {
+    if (syncing_) {
+        return;
+    }
+    // Fixing starts from the range on screen, so nothing jumps.
+    const render::VssFrameStatus& status = viewer_->vssStatus();
+    if (rangeMode_->currentData().toInt() == static_cast<int>(vss::RangeMode::Fixed) &&
+        status.shown && std::isfinite(status.dmin) && std::isfinite(status.dmax)) {
+        const QSignalBlocker blockMin(rangeMin_);
+        const QSignalBlocker blockMax(rangeMax_);
+        rangeMin_->setValue(status.dmin);
+        rangeMax_->setValue(status.dmax);
+    }
+    apply();
 }
 
 void VssPanel::syncFromViewer() {

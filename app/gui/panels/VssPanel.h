@@ -6,6 +6,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QFormLayout;
 class QLabel;
 class QSlider;
 class QSpinBox;
@@ -63,6 +64,20 @@ class VssPanel : public QWidget {
     void changed();
 
   private:
+    // The constructor's steps, top to bottom as the panel shows them (and as
+    // the widgets are created: their tab order).
+    /// On / off, the depth colour scale and p.
+    void addFirstRows(QFormLayout* form);
+    /// Iso-lines, lighting and ambient occlusion.
+    void addLookRows(QFormLayout* form);
+    /// The depth range: visible vessels or fixed, near / far.
+    void addRangeRows(QFormLayout* form);
+    /// The folded solver settings and status.
+    CollapsibleSection* buildAdvancedSection();
+    void connectControls();
+    /// The range mode was chosen: fixing starts from the range on screen.
+    void rangeModeChosen();
+
     void apply();
     void updateApplicability();
     void updateBound();
