@@ -512,6 +512,45 @@ struct FrameShape {
     std::size_t meshLevel = 0;
 };
 
+/// Where the solve's depth and result come from.
+struct SolveSources {
+    Handle<CpuValue<DepthImage>> depth;  ///< the depth read back
+    SolveWorker* worker = nullptr;       ///< asynchronous: the worker; null = inline
+    bool external = false;               ///< show the imported external VSS instead
+    std::uint64_t depthView = 0;         ///< viewKey() of the depth
+};
+
+/// The inputs of the frame's "vss-solve".
+VssSolveInputs solveInputs(const PassContext& context, const FrameSettings& settings,
+                           const FrameShape& shape, const FrameTarget& target,
+                           const SolveSources& from) {
+    const VssSettings& vssSettings = settings.vss;
+    const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
+    const glm::ivec2 vssSize = shape.vssSize;
+    const float reduction = reductionOf(target, shape.size);
+    return VssSolveInputs{
+        .context = context,
+        .depth = from.depth,
+        .worker = from.worker,
+        .external = from.external,
+        .options = solverOptions,
+        .range = vssSettings.range,
+        .preview = vssSettings.preview,
+        .depthView = from.depthView,
+        .request = requestKey(from.depthView, solverKey(solverOptions, vssSettings.range),
+                              vssSettings.preview, reduction, vssSize),
+        .pixelScale = shape.pixelScale,
+        .reduction = reduction,
+        .size = vssSize,
+        .reduced = vssSize != shape.size,
+        // The slopes the solver's thread fits for the lighting: at the render
+        // size up to kMaxCpuSlopePixels, else (and for an external VSS, which
+        // brings none) a stand-in texel: the shader fits them.
+        .cpuSlopes =
+            !from.external && static_cast<long long>(vssSize.x) * vssSize.y <= kMaxCpuSlopePixels,
+    };
+}
+
 /// What the passes after the vessels' shading read from the passes before.
 struct Upstream {
     const GeometryOutputs& geometry;
@@ -686,35 +725,17 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     // The solve: inline, or on the worker (whose latest solve is an import).
     const bool async = mode_ == SolveMode::Asynchronous && impl.worker != nullptr;
     impl.importSolveInputs(graph, async);
-    const vss::SolverOptions solverOptions = effectiveSolverOptions(vssSettings);
     const std::uint64_t depthView =
         viewKey(camera.viewMatrix(), shape.projection, size, sceneRevision);
     // The VSS's size: the render size, or below it for a moving frame.
     shape.vssSize = vssSettings.enabled ? vssSizeFor(settings, size, external != nullptr) : size;
-    const glm::ivec2 vssSize = shape.vssSize;
-    vssSize_ = vssSize;
+    vssSize_ = shape.vssSize;
     const VssSolveOutputs solve = addVssSolvePass(
-        graph, VssSolveInputs{
-                   .context = context,
-                   .depth = readback.image,
-                   .worker = async ? impl.worker.get() : nullptr,
-                   .external = external != nullptr,
-                   .options = solverOptions,
-                   .range = vssSettings.range,
-                   .preview = vssSettings.preview,
-                   .depthView = depthView,
-                   .request = requestKey(depthView, solverKey(solverOptions, vssSettings.range),
-                                         vssSettings.preview, reductionOf(target, size), vssSize),
-                   .pixelScale = shape.pixelScale,
-                   .reduction = reductionOf(target, size),
-                   .size = vssSize,
-                   .reduced = vssSize != size,
-                   // The slopes the solver's thread fits for the lighting: at the
-                   // render size up to kMaxCpuSlopePixels, else (and for an external
-                   // VSS, which brings none) a stand-in texel: the shader fits them.
-                   .cpuSlopes = !external &&
-                                static_cast<long long>(vssSize.x) * vssSize.y <= kMaxCpuSlopePixels,
-               });
+        graph, solveInputs(context, settings, shape, target,
+                           SolveSources{.depth = readback.image,
+                                        .worker = async ? impl.worker.get() : nullptr,
+                                        .external = external != nullptr,
+                                        .depthView = depthView}));
 
     // A vessel cue normalises depth with the VSS's dmin / dmax when a VSS is
     // shown, else with the visible vessels' range ("depth-range").
