@@ -163,19 +163,10 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
     render::OffscreenOptions options;
     options.width = values.width;
     options.height = values.height;
-    options.background = values.background;
-    options.style = values.style;
-    options.style.light = values.light;
-    options.style.array = values.array.value_or(render::defaultArrayName(scene));
-    options.cue = values.cue;
-    options.legends = values.legends;
-    options.annotations = {.orientationMarker = values.orientationMarker,
-                           .scaleBar = values.scaleBar,
-                           .frame = scene.frame};  // DICOM: patient LPS
-    options.vss = values.vss;
-    options.ao = values.ao;
-    options.antialiasing = values.antialiasing;
-    const std::string& array = options.style.array;
+    options.display = static_cast<const app::DisplaySettings&>(values);
+    options.display.style.light = values.light;
+    options.display.style.array = values.array.value_or(render::defaultArrayName(scene));
+    const std::string& array = options.display.style.array;
     const auto known = render::pointArrayNames(scene);
     if (values.session && values.arrayFromSession) {
         // As the GUI: a mesh without the array shows "no data"; none having it is an error.

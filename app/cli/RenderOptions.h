@@ -17,7 +17,6 @@
 #include "cli/Arguments.h"
 #include "common/DisplaySettings.h"
 #include "common/Session.h"
-#include "vv/render/FrameRenderer.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/scene/Mesh.h"
