@@ -18,14 +18,19 @@ namespace {
 
 constexpr int kMaxSide = 16384;
 
+/// `text` as a value of `setting`; UsageError "<what> <problem>" when invalid.
+app::SettingValue optionValue(const app::Setting& setting, std::string_view text,
+                              const std::string& what) {
+    try {
+        return app::parseSettingText(setting, text);
+    } catch (const InvalidArgumentError& e) {
+        throw UsageError(what + " " + e.problem());
+    }
+}
+
 void readSetting(Arguments& a, const app::Setting& setting, app::DisplaySettings& settings) {
     const std::string option = a.name();
-    const std::string& text = a.value();
-    try {
-        setting.field.set(settings, app::parseSettingText(setting, text));
-    } catch (const InvalidArgumentError& e) {
-        throw UsageError(option + " " + e.problem());
-    }
+    setting.field.set(settings, optionValue(setting, a.value(), option));
 }
 
 /// --session: every display setting the session holds, its files, DICOM
@@ -83,6 +88,11 @@ render::LightAngles parseLightAngles(const std::string& text) {
 
 void parseSettingValue(Arguments& args, std::string_view key, app::DisplaySettings& settings) {
     readSetting(args, app::setting(key), settings);
+}
+
+app::SettingValue parseSettingOption(std::string_view key, std::string_view text,
+                                     const std::string& what) {
+    return optionValue(app::setting(key), text, what);
 }
 
 int parseTileSide(const std::string& text) {
