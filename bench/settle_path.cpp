@@ -88,7 +88,7 @@ void runOnce(const vv::scene::Scene& scene, const Size& size, bool aoFull, Sampl
     options.width = size.width;
     options.height = size.height;
     if (aoFull) {
-        options.ao.fullResolutionPixels = std::numeric_limits<long long>::max();
+        options.display.ao.fullResolutionPixels = std::numeric_limits<long long>::max();
     }
     static_cast<void>(renderer.render(scene, options));
     double solvePass = 0.0;

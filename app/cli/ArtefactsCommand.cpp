@@ -9,11 +9,13 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "evaluation/ArtefactBenchmark.h"
+#include "cli/RenderOptions.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshSimplify.h"
@@ -58,10 +60,8 @@ ArtefactsArguments parse(const std::vector<std::string>& args) {
             }
             parsed.view = *view;
         } else if (a == "--p") {
-            parsed.p = parseNumber(arg.value(), "artefacts: --p");
-            if (!(parsed.p >= 0.25 && parsed.p <= 64.0)) {
-                throw UsageError("artefacts: --p must be in 0.25..64");
-            }
+            // The VSS exponent's range and message, as `render --p` checks them.
+            parsed.p = std::get<double>(parseSettingOption("vss.p", arg.value(), "artefacts: --p"));
         } else if (a == "--reference-scale") {
             const std::string value = arg.value();
             parsed.referenceScale =

@@ -13,6 +13,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "cli/Arguments.h"
@@ -21,6 +22,7 @@
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
 #include "evaluation/VssBenchmark.h"
+#include "cli/RenderOptions.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
 #include "vv/demo/DemoTree.h"
@@ -83,7 +85,9 @@ BenchArguments parse(const std::vector<std::string>& args) {
         } else if (a == "--p") {
             parsed.powers.clear();
             for (const std::string& p : splitList(arg.value(), "bench: --p")) {
-                parsed.powers.push_back(parsePositive(p, "--p"));
+                // The VSS exponent's range and message, as `render --p` checks them.
+                parsed.powers.push_back(
+                    std::get<double>(parseSettingOption("vss.p", p, "bench: --p")));
             }
         } else if (a == "--runs") {
             parsed.runs = parseWholeNumber(arg.value(), "bench: --runs", 1, 1000);

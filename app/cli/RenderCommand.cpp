@@ -208,6 +208,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         iso = parsed.iso.value_or(parsed.source.segmentation.range
                                       ? parsed.source.segmentation.range->lower
                                       : segmentation::defaultThresholdRange(*volume).lower);
+        scene.frame = scene::SceneFrame::PatientLps;  // no meshes, the volume's frame
     } else if (parsed.session) {
         scene = loadSessionInput(parsed, &source);
     } else {
@@ -229,7 +230,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         // report::renderView, the legends scaled with the image.
         report::ViewExportOptions exported;
         exported.render = options;
-        exported.legends = options.legends;
+        exported.legends = options.display.legends;
         exported.maxTileSide = parsed.maxTileSide;
         report::RenderedView view = report::renderView(renderer, scene, exported);
         image = std::move(view.image);
@@ -240,7 +241,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         tiled.legends = false;  // painted below as render() paints them
         tiled.maxTileSide = parsed.maxTileSide;
         report::RenderedView view = report::renderView(renderer, scene, tiled);
-        if (options.legends) {
+        if (options.display.legends) {
             render::paintLegends(view.image, view.legends);
         }
         image = std::move(view.image);
@@ -288,27 +289,28 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     if (tiles > 1) {
         summary << " in " << tiles << " tiles";
     }
-    const auto labels = options.style.array.empty()
+    const render::DisplaySettings& display = options.display;
+    const auto labels = display.style.array.empty()
                             ? std::nullopt
-                            : render::shownLabels(scene, options.style, options.style.array);
-    if (options.style.array.empty()) {
+                            : render::shownLabels(scene, display.style, display.style.array);
+    if (display.style.array.empty()) {
         summary << ", no array";
     } else if (labels) {
-        summary << ", " << options.style.array << " as " << labels->size() << " labels";
+        summary << ", " << display.style.array << " as " << labels->size() << " labels";
     } else {
-        summary << ", " << options.style.array << " through "
-                << colormaps::name(options.style.colorMap);
+        summary << ", " << display.style.array << " through "
+                << colormaps::name(display.style.colorMap);
         if (const auto range = renderer.lastRange()) {
             summary << " over [" << range->first << ", " << range->second << "]";
         } else {
             summary << ", no finite values";
         }
     }
-    if (options.vss.enabled) {
-        summary << ", VSS " << colormaps::name(options.vss.scale) << " p=" << options.vss.solver.p;
+    if (display.vss.enabled) {
+        summary << ", VSS " << colormaps::name(display.vss.scale) << " p=" << display.vss.solver.p;
     }
-    if (options.cue.cue != render::VesselCue::None) {
-        summary << ", cue " << render::name(options.cue.cue);
+    if (display.cue.cue != render::VesselCue::None) {
+        summary << ", cue " << render::name(display.cue.cue);
     }
     summary << ")\n";
     if (!parsed.depthOutput.empty()) {

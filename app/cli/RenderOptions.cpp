@@ -18,14 +18,19 @@ namespace {
 
 constexpr int kMaxSide = 16384;
 
+/// `text` as a value of `setting`; UsageError "<what> <problem>" when invalid.
+app::SettingValue optionValue(const app::Setting& setting, std::string_view text,
+                              const std::string& what) {
+    try {
+        return app::parseSettingText(setting, text);
+    } catch (const InvalidArgumentError& e) {
+        throw UsageError(what + " " + e.problem());
+    }
+}
+
 void readSetting(Arguments& a, const app::Setting& setting, app::DisplaySettings& settings) {
     const std::string option = a.name();
-    const std::string& text = a.value();
-    try {
-        setting.field.set(settings, app::parseSettingText(setting, text));
-    } catch (const InvalidArgumentError& e) {
-        throw UsageError(option + " " + e.problem());
-    }
+    setting.field.set(settings, optionValue(setting, a.value(), option));
 }
 
 /// --session: every display setting the session holds, its files, DICOM
@@ -83,6 +88,11 @@ render::LightAngles parseLightAngles(const std::string& text) {
 
 void parseSettingValue(Arguments& args, std::string_view key, app::DisplaySettings& settings) {
     readSetting(args, app::setting(key), settings);
+}
+
+app::SettingValue parseSettingOption(std::string_view key, std::string_view text,
+                                     const std::string& what) {
+    return optionValue(app::setting(key), text, what);
 }
 
 int parseTileSide(const std::string& text) {
@@ -163,19 +173,10 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
     render::OffscreenOptions options;
     options.width = values.width;
     options.height = values.height;
-    options.background = values.background;
-    options.style = values.style;
-    options.style.light = values.light;
-    options.style.array = values.array.value_or(render::defaultArrayName(scene));
-    options.cue = values.cue;
-    options.legends = values.legends;
-    options.annotations = {.orientationMarker = values.orientationMarker,
-                           .scaleBar = values.scaleBar,
-                           .frame = scene.frame};  // DICOM: patient LPS
-    options.vss = values.vss;
-    options.ao = values.ao;
-    options.antialiasing = values.antialiasing;
-    const std::string& array = options.style.array;
+    options.display = static_cast<const app::DisplaySettings&>(values);
+    options.display.style.light = values.light;
+    options.display.style.array = values.array.value_or(render::defaultArrayName(scene));
+    const std::string& array = options.display.style.array;
     const auto known = render::pointArrayNames(scene);
     if (values.session && values.arrayFromSession) {
         // As the GUI: a mesh without the array shows "no data"; none having it is an error.

@@ -12,12 +12,13 @@
 #include <glm/glm.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "cli/Arguments.h"
 #include "common/DisplaySettings.h"
 #include "common/Session.h"
-#include "vv/render/FrameRenderer.h"
+#include "common/SettingsSchema.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/scene/Mesh.h"
@@ -70,6 +71,14 @@ bool parseRenderOption(const std::vector<std::string>& args, std::size_t& i,
 /// into the display setting `key` (SettingsSchema.h) of `settings`. Throws
 /// UsageError naming the option for an invalid value.
 void parseSettingValue(Arguments& args, std::string_view key, app::DisplaySettings& settings);
+
+/// `text` (as on the command line) as a value of the display setting `key`
+/// (SettingsSchema.h: its type and range), for commands that take a setting
+/// their own way (a list of them: `bench --p 2,4,8`). Throws UsageError
+/// "<what> <problem>" for an invalid value, as parseSettingValue() does
+/// ("bench: --p must be within 0.25..64, not 100").
+[[nodiscard]] app::SettingValue parseSettingOption(std::string_view key, std::string_view text,
+                                                   const std::string& what);
 
 /// `render --tile N`: the largest side of one rendered piece, at least
 /// report::kMinTileSide (larger images are rendered in tiles that give the

@@ -30,6 +30,7 @@
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/render/Camera.h"
+#include "vv/render/DisplaySettings.h"
 #include "vv/render/OffscreenRenderer.h"
 
 #if defined(__GLIBC__)
@@ -75,6 +76,39 @@ std::uint64_t residentAfterTrimKiB(bool trim) {
 
 std::string mib(std::uint64_t kib) {
     return vv::fixedText(static_cast<double>(kib) / 1024.0, 1) + " MiB";
+}
+
+/// The display settings of soak frame `f` (1..): every setting changes now
+/// and then, each on its own period; `arrays` are the scene's ("" = none).
+/// No orientation marker or scale bar, as in OffscreenOptions{}.
+render::DisplaySettings frameDisplay(long f, const std::vector<std::string>& arrays) {
+    constexpr std::array<colormaps::DepthScale, 3> kScales = {
+        colormaps::DepthScale::Chromadepth, colormaps::DepthScale::PseudoChromadepth,
+        colormaps::DepthScale::DarkMeansDeep};
+    constexpr std::array<colormaps::ColorMap, 4> kMaps = {
+        colormaps::ColorMap::Viridis, colormaps::ColorMap::Cividis, colormaps::ColorMap::Inferno,
+        colormaps::ColorMap::BlueWhiteRed};
+    constexpr std::array<render::VesselCue, 5> kCues = {
+        render::VesselCue::None, render::VesselCue::Chromadepth,
+        render::VesselCue::PseudoChromadepth, render::VesselCue::Fog, render::VesselCue::Fresnel};
+    constexpr std::array<double, 4> kPowers = {2.0, 4.0, 1.0, 8.0};
+
+    const auto k = static_cast<std::size_t>(f);
+    render::DisplaySettings display = render::OffscreenOptions{}.display;
+    display.style.array = arrays[(k / 3) % arrays.size()];
+    display.style.colorMap = kMaps[(k / 5) % kMaps.size()];
+    display.style.bins = (f / 7) % 3 == 0 ? 0 : static_cast<int>(2 + (k / 7) % 9);
+    display.vss.enabled = f % 11 != 0;
+    display.vss.scale = kScales[(k / 4) % kScales.size()];
+    display.vss.solver.p = kPowers[(k / 9) % kPowers.size()];
+    display.vss.isoLines = static_cast<int>((k / 2) % 13);
+    display.vss.preview = f % 6 == 0;
+    display.cue.cue = kCues[(k / 13) % kCues.size()];
+    display.ao.enabled = f % 5 != 0;
+    display.antialiasing = f % 3 != 0;
+    display.legends = f % 17 == 0;
+    display.background = glm::vec3(0.1F + 0.05F * static_cast<float>(f % 4), 0.14F, 0.16F);
+    return display;
 }
 
 /// printf's "%+.2f%%".
@@ -125,23 +159,12 @@ std::optional<SoakOptions> parseSoakArguments(const std::vector<std::string>& ar
     return soak;
 }
 
-/// What frame `f` (1-based) renders: the size, the camera and the settings,
-/// each cycling with its own period so that the frames go through their
-/// combinations. `arrays` are the mesh's point arrays, "" (none) first.
+/// What frame `f` (1-based) renders: the size, the camera and the settings
+/// (frameDisplay()), each cycling with its own period so that the frames go
+/// through their combinations. `arrays` are the mesh's point arrays, "" (none)
+/// first.
 render::OffscreenOptions frameOptions(long f, const SoakOptions& soak, const Aabb& bounds,
                                       const std::vector<std::string>& arrays) {
-    constexpr std::array<colormaps::DepthScale, 3> kScales = {
-        colormaps::DepthScale::Chromadepth, colormaps::DepthScale::PseudoChromadepth,
-        colormaps::DepthScale::DarkMeansDeep};
-    constexpr std::array<colormaps::ColorMap, 4> kMaps = {
-        colormaps::ColorMap::Viridis, colormaps::ColorMap::Cividis, colormaps::ColorMap::Inferno,
-        colormaps::ColorMap::BlueWhiteRed};
-    constexpr std::array<render::VesselCue, 5> kCues = {
-        render::VesselCue::None, render::VesselCue::Chromadepth,
-        render::VesselCue::PseudoChromadepth, render::VesselCue::Fog, render::VesselCue::Fresnel};
-    constexpr std::array<double, 4> kPowers = {2.0, 4.0, 1.0, 8.0};
-
-    const auto k = static_cast<std::size_t>(f);
     render::OffscreenOptions options;
     const bool small = soak.resizeEvery > 0 && (f / soak.resizeEvery) % 2 == 1;
     options.width = small ? soak.width * 3 / 4 : soak.width;
@@ -153,19 +176,7 @@ render::OffscreenOptions frameOptions(long f, const SoakOptions& soak, const Aab
     camera.rotateView(static_cast<float>(f % 97) * 0.011F, glm::vec3(1.0F, 0.0F, 0.0F));
     camera.pan(glm::vec2(static_cast<float>(f % 13) - 6.0F, static_cast<float>(f % 7) - 3.0F));
     options.camera = camera;
-    options.style.array = arrays[(k / 3) % arrays.size()];
-    options.style.colorMap = kMaps[(k / 5) % kMaps.size()];
-    options.style.bins = (f / 7) % 3 == 0 ? 0 : static_cast<int>(2 + (k / 7) % 9);
-    options.vss.enabled = f % 11 != 0;
-    options.vss.scale = kScales[(k / 4) % kScales.size()];
-    options.vss.solver.p = kPowers[(k / 9) % kPowers.size()];
-    options.vss.isoLines = static_cast<int>((k / 2) % 13);
-    options.vss.preview = f % 6 == 0;
-    options.cue.cue = kCues[(k / 13) % kCues.size()];
-    options.ao.enabled = f % 5 != 0;
-    options.antialiasing = f % 3 != 0;
-    options.legends = f % 17 == 0;
-    options.background = glm::vec3(0.1F + 0.05F * static_cast<float>(f % 4), 0.14F, 0.16F);
+    options.display = frameDisplay(f, arrays);
     return options;
 }
 

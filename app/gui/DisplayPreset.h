@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
-#include "vv/render/FrameRenderer.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/MeshStyle.h"
 
 namespace vv::gui {

@@ -20,6 +20,7 @@
 #include <utility>
 
 #include "gui/EngineTexts.h"
+#include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
 #include "vv/core/Error.h"
 
@@ -63,19 +64,13 @@ render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int widt
     render::OffscreenOptions options;
     options.width = width;
     options.height = height;
-    options.background = viewer.background();
-    options.style = viewer.style();
-    options.vss = viewer.vssSettings();
-    options.vss.preview = false;  // the exact VSS, as the view shows once settled
-    options.cue = viewer.vesselCue();
-    options.ao = viewer.aoSettings();
-    options.antialiasing = true;  // the viewer always runs FXAA
-    options.legends = false;
-    options.annotations = viewer.viewAnnotations();
+    // The exact VSS, as the view shows once settled, and FXAA, as the viewer runs it.
+    options.display = displaySettings(viewer);
+    options.display.legends = false;  // the export paints them (report::ViewExportOptions)
     options.camera = viewer.camera();
     options.volume = viewer.volume();  // a ray-cast volume, when one is shown
     options.isoValue = viewer.isoValue();
-    pinVisibleDepthRange(viewer, width, height, options.vss.range);
+    pinVisibleDepthRange(viewer, width, height, options.display.vss.range);
     return options;
 }
 

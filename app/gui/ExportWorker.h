@@ -24,9 +24,11 @@ namespace vv::gui {
 class ViewerWidget;
 
 /// Offscreen options that reproduce what `viewer` shows: its camera,
-/// background, mesh style (array, colour map, range, bins), ray-cast volume, VSS (the exact
-/// solve, never the preview), vessel cue, ambient occlusion and FXAA, at
-/// width x height pixels. Legends are left to report::renderView().
+/// ray-cast volume and display settings (displaySettings(): background, mesh
+/// style with array, colour map, range and bins, VSS with the exact solve,
+/// never the preview, vessel cue, ambient occlusion, FXAA, orientation marker
+/// and scale bar), at width x height pixels. Legends are left to
+/// report::renderView().
 /// With the depth range "Visible vessels", an export framed as the view (the
 /// same aspect) takes the settled view's range as a fixed one, so that its
 /// depth colours and legend are the screen's: at another resolution a few

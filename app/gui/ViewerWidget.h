@@ -17,9 +17,10 @@
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
 #include "vv/render/FrameMeter.h"
-#include "vv/render/FrameRenderer.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/MeshStyle.h"
+#include "vv/render/RenderGraph.h"
 #include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
@@ -172,9 +173,6 @@ class ViewerWidget : public QOpenGLWidget {
     }
     /// Progressive refinement on (default) or off (every frame asks for the exact VSS).
     void setProgressiveRefinement(bool on);
-    [[nodiscard]] bool progressiveRefinement() const noexcept {
-        return view_.refinement().progressive();
-    }
     /// How long after the last camera change the camera counts as stopped (ms).
     void setSettleDelay(int milliseconds);
     [[nodiscard]] int settleDelay() const noexcept { return settleDelayMs_; }
@@ -185,16 +183,6 @@ class ViewerWidget : public QOpenGLWidget {
     /// and shaded at `vssScale` of the widget (at most `scale`; default:
     /// `scale`, see RefinementPolicy::setInteractiveScale).
     void setInteractiveScale(float scale, float vssScale = std::numeric_limits<float>::quiet_NaN());
-    /// The scale moving frames render at; with a frame budget the next
-    /// camera move takes the size the last one's timing chose.
-    [[nodiscard]] float interactiveScale() const noexcept {
-        return view_.refinement().interactiveScale();
-    }
-    /// The scale moving frames solve and shade their VSS at (chosen with
-    /// interactiveScale()).
-    [[nodiscard]] float interactiveVssScale() const noexcept {
-        return view_.refinement().interactiveVssScale();
-    }
     /// Dynamic resolution while the camera moves: after each moving frame the
     /// interactive scales step down (RefinementPolicy::kScaleSteps, with the
     /// VSS's: ~0.7 of the pixels a step) when the frame took over 1.15 x the budget,
@@ -210,11 +198,6 @@ class ViewerWidget : public QOpenGLWidget {
     /// time) on a GPU. Default 30 ms; 0 = a fixed scale. Non-finite or
     /// negative values count as 0.
     void setFrameBudget(double milliseconds);
-    [[nodiscard]] double frameBudget() const noexcept { return view_.refinement().frameBudget(); }
-    /// The cost (ms) the frame budget saw for the last measured moving frame.
-    [[nodiscard]] double lastFrameCost() const noexcept {
-        return view_.refinement().lastFrameCost();
-    }
     static constexpr float kMinInteractiveScale = render::RefinementPolicy::kMinInteractiveScale;
     /// Triangle budget of the simplified geometry drawn while the camera
     /// moves (default 60,000); 0 = always draw the full meshes. Applies to
@@ -225,52 +208,10 @@ class ViewerWidget : public QOpenGLWidget {
     /// frames on software rasterisers draw fewer triangles.
     void setPreviewTriangles(std::size_t triangles) noexcept { previewTriangles_ = triangles; }
     [[nodiscard]] std::size_t previewTriangles() const noexcept { return previewTriangles_; }
-    /// True once the simplified geometry of the current scene is ready.
-    [[nodiscard]] bool hasPreviewGeometry() const noexcept { return view_.hasPreviewGeometry(); }
-    /// Triangles of each simplified level, finest first (empty until ready).
-    [[nodiscard]] std::vector<std::size_t> previewLevelTriangles() const {
-        return view_.previewLevelTriangles();
-    }
-    /// The meshes the last frame drew: 0 = the scene's, k = simplified level k.
-    [[nodiscard]] std::size_t lastGeometryLevel() const noexcept {
-        return view_.frameRenderer().lastGeometryLevel();
-    }
     /// MeshRenderer::setBackFaceCulling (on by default); off for comparisons.
     void setBackFaceCulling(bool on) noexcept { view_.meshRenderer().setBackFaceCulling(on); }
-    /// True once the closures of the current scene's meshes (checked on a
-    /// worker thread after setScene()) are known; until then every mesh is
-    /// drawn two-sided.
-    [[nodiscard]] bool surfaceClosuresKnown() const noexcept {
-        return view_.surfaceClosuresKnown();
-    }
-    /// How many meshes the last frame's G-buffer drew with back-face culling.
-    [[nodiscard]] std::size_t lastCulledMeshes() const noexcept {
-        return view_.meshRenderer().lastCulledMeshes();
-    }
-    /// True when the last frame drew the simplified geometry.
-    [[nodiscard]] bool lastFrameSimplified() const noexcept {
-        return view_.frameRenderer().lastFrameSimplified();
-    }
     /// The size (device pixels) the passes of the last frame ran at.
     [[nodiscard]] QSize lastRenderSize() const noexcept { return lastRenderSize_; }
-    /// The size (device pixels) the last frame's VSS was solved and shaded at.
-    [[nodiscard]] QSize lastVssSize() const noexcept {
-        const glm::ivec2 size = view_.frameRenderer().lastVssSize();
-        return {size.x, size.y};
-    }
-    /// How often settling started the exact solve directly from the last
-    /// preview frame's depth (no frame drawn in between).
-    [[nodiscard]] quint64 solvesRequestedOnSettle() const noexcept {
-        return view_.solvesRequestedOnSettle();
-    }
-    /// How often settling drew only the G-buffer and started the exact solve
-    /// from it (FrameRenderer::prepareSolve), because the last preview frame
-    /// had another size or the simplified meshes.
-    [[nodiscard]] quint64 solvesPreparedOnSettle() const noexcept {
-        return view_.solvesPreparedOnSettle();
-    }
-    /// True while the camera moves (frames use the preview VSS).
-    [[nodiscard]] bool cameraMoving() const noexcept { return view_.refinement().moving(); }
     /// True from the moment the camera settles until the frame with the
     /// exact VSS is on screen: those frames leave out the ambient occlusion
     /// (the slowest pass on software rasterisers) and FXAA, and the frame
@@ -278,34 +219,24 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] bool occlusionDeferred() const noexcept {
         return view_.refinement().occlusionDeferred();
     }
-    /// The worker's solve counters (submitted, completed, cancelled).
-    [[nodiscard]] render::SolveCounters solveCounters() const {
-        return view_.frameRenderer().solveCounters();
-    }
-    /// The VSS height the last frame showed (GL row order; empty when none).
-    [[nodiscard]] Image<float> shownVssHeight() const {
-        return view_.frameRenderer().shownHeight();
-    }
     /// The passes of the last frame (state, reason, CPU time).
     [[nodiscard]] const std::vector<render::PassInfo>& lastPasses() const noexcept {
         return view_.frameRenderer().lastPasses();
     }
     /// Benchmarks: when on, every frame waits for its GPU timers and keeps
-    /// the per-pass CPU / GPU times (lastTimings()) and the wall time of
+    /// the per-pass CPU / GPU times (view().lastTimings()) and the wall time of
     /// paintGL (lastPaintMilliseconds()). Off by default: waiting for the
     /// timers stalls the pipeline on real GPUs.
     void setRecordTimings(bool on) noexcept { view_.setRecordTimings(on); }
-    /// The last frame's per-pass times (empty unless setRecordTimings(true)).
-    [[nodiscard]] const std::vector<render::GlPassTiming>& lastTimings() const noexcept {
-        return view_.lastTimings();
-    }
     /// Wall time of the last paintGL in milliseconds (with setRecordTimings(true)).
     [[nodiscard]] double lastPaintMilliseconds() const noexcept { return paintMilliseconds_; }
-    /// Wall time of the last settle (the exact solve's request or the
-    /// G-buffer it needs; with setRecordTimings(true)).
-    [[nodiscard]] double lastSettleMilliseconds() const noexcept {
-        return view_.lastSettleMilliseconds();
-    }
+    /// The view renderer behind the widget, read-only, for what the widget
+    /// does not forward: the refinement state (view().refinement():
+    /// interactive scales, frame budget, moving), the last frame's sizes,
+    /// geometry level and solve counters (view().frameRenderer()), the
+    /// simplified levels, settle counters and times. Changes go through the
+    /// widget's setters, which ask for a frame.
+    [[nodiscard]] const render::ViewRenderer& view() const noexcept { return view_; }
 
     /// Background colour, sRGB in [0, 1].
     void setBackground(const glm::vec3& color);
@@ -319,11 +250,6 @@ class ViewerWidget : public QOpenGLWidget {
     /// resetCamera() or fitToData() the view is no longer refitted when the
     /// widget resizes.
     void setCamera(const render::Camera& camera);
-
-    /// The colour-map range of the last frame; nullopt when no array is shown.
-    [[nodiscard]] std::optional<std::pair<float, float>> shownRange() const noexcept {
-        return view_.shownRange();
-    }
 
     /// Non-empty when OpenGL could not be used; the reason.
     [[nodiscard]] const QString& renderError() const noexcept { return error_; }

@@ -53,7 +53,7 @@ class AnatomicalViewGuiTest : public GuiFixture {
         }
         EXPECT_TRUE(waitUntil([&] {
             const QSize device = viewer->size() * viewer->devicePixelRatioF();
-            return (!change || frames > 0) && !viewer->cameraMoving() &&
+            return (!change || frames > 0) && !viewer->view().refinement().moving() &&
                    viewer->lastRenderSize() == device;
         })) << "no settled frame";
         QObject::disconnect(counting);

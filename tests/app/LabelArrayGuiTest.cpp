@@ -47,7 +47,7 @@ class LabelArrayGuiTest : public GuiFixture {
         const quint64 frames = viewer->framesWithScene();
         return waitUntil([&] {
             const QSize device = viewer->size() * viewer->devicePixelRatioF();
-            return viewer->framesWithScene() > frames && !viewer->cameraMoving() &&
+            return viewer->framesWithScene() > frames && !viewer->view().refinement().moving() &&
                    viewer->lastRenderSize() == device;
         });
     }

@@ -36,7 +36,7 @@ TEST(LightOption, GoodValuesBecomeTheLightAngles) {
     vv::cli::RenderOptionValues values;
     values.light = {45.0F, 10.0F};
     values.array = "";
-    EXPECT_EQ(vv::cli::offscreenOptions(values, scene, "x.vtp").style.light, values.light);
+    EXPECT_EQ(vv::cli::offscreenOptions(values, scene, "x.vtp").display.style.light, values.light);
 }
 
 TEST(LightOption, BadValuesAreUsageErrorsNamingTheOption) {

@@ -176,10 +176,10 @@ TEST_F(PanelsTest, VssPanelControlsChangeTheViewer) {
 
     // Re-shading settings re-run only the shading: the VSS is not solved again.
     const quint64 frames = viewer->framesWithScene();
-    const auto solves = viewer->solveCounters().submitted;
+    const auto solves = viewer->view().frameRenderer().solveCounters().submitted;
     isoLines->setValue(4);
     ASSERT_TRUE(waitForFrames(frames + 1));
-    EXPECT_EQ(viewer->solveCounters().submitted, solves);
+    EXPECT_EQ(viewer->view().frameRenderer().solveCounters().submitted, solves);
     for (const auto& pass : viewer->lastPasses()) {
         if (pass.name == "vss-solve") {
             EXPECT_EQ(pass.state, render::PassState::Cached);

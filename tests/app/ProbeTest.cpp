@@ -51,7 +51,7 @@ class ProbeTest : public GuiFixture {
         // A settled frame: rendered at the full size.
         return waitUntil([&] {
             const QSize device = viewer->size() * viewer->devicePixelRatioF();
-            return !viewer->cameraMoving() && viewer->lastRenderSize() == device;
+            return !viewer->view().refinement().moving() && viewer->lastRenderSize() == device;
         });
     }
 

@@ -19,6 +19,7 @@
 #include <ctime>
 #include <filesystem>
 #include <functional>
+#include <glm/glm.hpp>
 #include <map>
 #include <memory>
 #include <numbers>
@@ -167,11 +168,11 @@ vv::render::PassState passStateOf(const ViewerWidget& viewer, const char* name) 
 
 /// One view as a moving frame and as the settled frame.
 struct MovingAndSettled {
-    QImage moving;        ///< the frame drawn while the camera moves, with this view's preview VSS
-    QImage settled;       ///< the same view after the release: exact VSS, occlusion, FXAA
-    QSize movingSize;     ///< the moving frame's render size
-    QSize movingVssSize;  ///< the size its VSS was solved and shaded at
-    bool ok = false;      ///< both frames were drawn
+    QImage moving;     ///< the frame drawn while the camera moves, with this view's preview VSS
+    QImage settled;    ///< the same view after the release: exact VSS, occlusion, FXAA
+    QSize movingSize;  ///< the moving frame's render size
+    glm::ivec2 movingVssSize{0};  ///< the size its VSS was solved and shaded at
+    bool ok = false;              ///< both frames were drawn
 };
 
 /// Drags the viewer by `moves` steps of `step`, holds the button until the
@@ -190,13 +191,13 @@ MovingAndSettled movingAndSettled(ViewerWidget& viewer, int moves, QPointF step)
             return out;
         }
     }
-    if (!waitUntil([&] { return previewShown(viewer) && viewer.cameraMoving(); })) {
+    if (!waitUntil([&] { return previewShown(viewer) && viewer.view().refinement().moving(); })) {
         drag.release();
         return out;
     }
     out.moving = viewer.grabFramebuffer();
     out.movingSize = viewer.lastRenderSize();
-    out.movingVssSize = viewer.lastVssSize();
+    out.movingVssSize = viewer.view().frameRenderer().lastVssSize();
     drag.release();
     out.ok = waitUntil([&] {
         return exactShown(viewer) && !viewer.occlusionDeferred() &&
@@ -237,7 +238,7 @@ TEST_F(ProgressiveTest, PreviewWhileRotatingThenExactWithinTheTolerance) {
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) || !viewer.renderError().isEmpty(); }))
         << "the first exact VSS never arrived";
     ASSERT_TRUE(viewer.renderError().isEmpty()) << viewer.renderError().toStdString();
-    EXPECT_FALSE(viewer.cameraMoving());
+    EXPECT_FALSE(viewer.view().refinement().moving());
     EXPECT_TRUE(waitUntil([&] {
         // The default fast solver: its error bound, not "exact".
         return window_->vssQualityLabel()->text().startsWith(QStringLiteral("VSS: within"));
@@ -249,9 +250,9 @@ TEST_F(ProgressiveTest, PreviewWhileRotatingThenExactWithinTheTolerance) {
     viewer.setInteractiveScale(1.0F);
     Drag drag(viewer);
     drag.moveBy({60, 25});
-    EXPECT_TRUE(viewer.cameraMoving());
+    EXPECT_TRUE(viewer.view().refinement().moving());
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); })) << "no preview VSS arrived";
-    EXPECT_TRUE(viewer.cameraMoving());
+    EXPECT_TRUE(viewer.view().refinement().moving());
     // AO is skipped while moving.
     for (const auto& pass : viewer.lastPasses()) {
         if (pass.name == "ssao") {
@@ -261,13 +262,13 @@ TEST_F(ProgressiveTest, PreviewWhileRotatingThenExactWithinTheTolerance) {
     EXPECT_TRUE(waitUntil([&] {
         return window_->vssQualityLabel()->text() == QStringLiteral("VSS: preview");
     })) << window_->vssQualityLabel()->text().toStdString();
-    const vv::Image<float> preview = viewer.shownVssHeight();
+    const vv::Image<float> preview = viewer.view().frameRenderer().shownHeight();
 
     // Released: the camera stopped, the exact solve of the same view follows.
     drag.release();
-    EXPECT_FALSE(viewer.cameraMoving());
+    EXPECT_FALSE(viewer.view().refinement().moving());
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); })) << "no exact VSS after stopping";
-    const vv::Image<float> exact = viewer.shownVssHeight();
+    const vv::Image<float> exact = viewer.view().frameRenderer().shownHeight();
     EXPECT_TRUE(waitUntil([&] {
         // The default fast solver: its error bound, not "exact".
         return window_->vssQualityLabel()->text().startsWith(QStringLiteral("VSS: within"));
@@ -314,14 +315,14 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
             frames.push_back({exactShown(viewer), passState("ssao"), passState("fxaa"),
                               passState("vessel-shading")});
         });
-    const quint64 prepared = viewer.solvesPreparedOnSettle();
+    const quint64 prepared = viewer.view().solvesPreparedOnSettle();
     drag.release();
     EXPECT_TRUE(viewer.occlusionDeferred());
     // The moving frames were smaller: settling drew this view's G-buffer,
     // started the solve and shaded the vessels meanwhile.
-    EXPECT_EQ(viewer.solvesPreparedOnSettle(), prepared + 1);
+    EXPECT_EQ(viewer.view().solvesPreparedOnSettle(), prepared + 1);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.occlusionDeferred(); }));
-    const auto solved = viewer.solveCounters().completed;
+    const auto solved = viewer.view().frameRenderer().solveCounters().completed;
     ASSERT_TRUE(waitUntil([&] {
         return !frames.empty() && frames.back().exact &&
                frames.back().ssao == vv::render::PassState::Executed;
@@ -342,7 +343,8 @@ TEST_F(ProgressiveTest, SettlingShowsTheExactVssFirstThenTheOcclusionAndFxaa) {
     EXPECT_EQ(frames[firstExact + 1].ssao, vv::render::PassState::Executed);
     EXPECT_EQ(frames[firstExact + 1].fxaa, vv::render::PassState::Executed);
     EXPECT_TRUE(frames[firstExact + 1].exact);
-    EXPECT_EQ(viewer.solveCounters().completed, solved) << "adding the occlusion solved again";
+    EXPECT_EQ(viewer.view().frameRenderer().solveCounters().completed, solved)
+        << "adding the occlusion solved again";
     // The vessels were shaded while the solve ran: the exact frame reused them.
     EXPECT_EQ(frames[firstExact].vessels, vv::render::PassState::Cached);
 
@@ -410,7 +412,7 @@ TEST_F(ProgressiveTest, RepaintsWithoutAChangeKeepTheLastFrame) {
 TEST_F(ProgressiveTest, MovingFramesAdaptTheirSizeToTheFrameBudget) {
     ViewerWidget& viewer = open(makeScene(), 640, 480);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
-    EXPECT_GT(viewer.frameBudget(), 0.0);  // on by default
+    EXPECT_GT(viewer.view().refinement().frameBudget(), 0.0);  // on by default
     viewer.setSettleDelay(600000);
     const auto rotate = [&](int moves) {
         Drag drag(viewer);
@@ -425,16 +427,17 @@ TEST_F(ProgressiveTest, MovingFramesAdaptTheirSizeToTheFrameBudget) {
     // No frame fits in 0.01 ms: down to the smallest scale.
     viewer.setFrameBudget(0.01);
     rotate(12);
-    EXPECT_FLOAT_EQ(viewer.interactiveScale(), ViewerWidget::kMinInteractiveScale);
+    EXPECT_FLOAT_EQ(viewer.view().refinement().interactiveScale(),
+                    ViewerWidget::kMinInteractiveScale);
     // Every frame fits in 100 s: up to full size, which the last moving frame used.
     viewer.setFrameBudget(1e5);
     rotate(12);
-    EXPECT_FLOAT_EQ(viewer.interactiveScale(), 1.0F);
+    EXPECT_FLOAT_EQ(viewer.view().refinement().interactiveScale(), 1.0F);
     // A set scale is fixed.
     viewer.setInteractiveScale(0.5F);
-    EXPECT_EQ(viewer.frameBudget(), 0.0);
+    EXPECT_EQ(viewer.view().refinement().frameBudget(), 0.0);
     rotate(3);
-    EXPECT_FLOAT_EQ(viewer.interactiveScale(), 0.5F);
+    EXPECT_FLOAT_EQ(viewer.view().refinement().interactiveScale(), 0.5F);
 }
 
 TEST_F(ProgressiveTest, WheelZoomSettlesByTheTimer) {
@@ -445,11 +448,11 @@ TEST_F(ProgressiveTest, WheelZoomSettlesByTheTimer) {
     QWheelEvent wheel(centre, viewer.mapToGlobal(centre), QPoint(), QPoint(0, 120), Qt::NoButton,
                       Qt::NoModifier, Qt::NoScrollPhase, false);
     QCoreApplication::sendEvent(&viewer, &wheel);
-    EXPECT_TRUE(viewer.cameraMoving());
+    EXPECT_TRUE(viewer.view().refinement().moving());
     bool settled = false;
     QObject::connect(&viewer, &ViewerWidget::cameraSettled, [&] { settled = true; });
     ASSERT_TRUE(waitUntil([&] { return settled; }, 10000)) << "the settle timer never fired";
-    EXPECT_FALSE(viewer.cameraMoving());
+    EXPECT_FALSE(viewer.view().refinement().moving());
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
 }
 
@@ -461,32 +464,34 @@ TEST_F(ProgressiveTest, RotatingDuringAnExactSolveCancelsIt) {
     ViewerWidget& viewer = open(makeScene(), 800, 600, &vss);
     ASSERT_TRUE(waitUntil([&] {
         return viewer.framesWithScene() > 0 && viewer.vssStatus().pending &&
-               viewer.solveCounters().submitted >= 1;
+               viewer.view().frameRenderer().solveCounters().submitted >= 1;
     }));
     QThread::msleep(30);            // the worker has picked the exact job up
     viewer.setSettleDelay(600000);  // the held drag stays a preview
-    const auto before = viewer.solveCounters();
+    const auto before = viewer.view().frameRenderer().solveCounters();
     EXPECT_EQ(before.cancelled, 0U);
     EXPECT_EQ(before.completed, 0U) << "the exact solve finished too fast to be interrupted";
 
     Drag drag(viewer);
     drag.moveBy({50, 10});
-    ASSERT_TRUE(waitUntil([&] { return viewer.solveCounters().cancelled >= 1; }))
-        << "the stale exact solve was not cancelled";
+    ASSERT_TRUE(waitUntil([&] {
+        return viewer.view().frameRenderer().solveCounters().cancelled >= 1;
+    })) << "the stale exact solve was not cancelled";
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
     drag.release();
     // The preview, then the exact solve of the new view.
-    EXPECT_TRUE(
-        waitUntil([&] { return viewer.solveCounters().submitted >= before.submitted + 2; }));
+    EXPECT_TRUE(waitUntil([&] {
+        return viewer.view().frameRenderer().solveCounters().submitted >= before.submitted + 2;
+    }));
     // The exact one was started by the settling itself (from a G-buffer drawn
     // for it), not by a frame.
-    EXPECT_EQ(viewer.solvesPreparedOnSettle() + viewer.solvesRequestedOnSettle(), 1U);
+    EXPECT_EQ(viewer.view().solvesPreparedOnSettle() + viewer.view().solvesRequestedOnSettle(), 1U);
 }
 
 TEST_F(ProgressiveTest, ReducedResolutionWhileMovingThenFull) {
     ViewerWidget& viewer = open(makeScene(), 800, 600);
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
-    EXPECT_FLOAT_EQ(viewer.interactiveScale(), 0.5F);
+    EXPECT_FLOAT_EQ(viewer.view().refinement().interactiveScale(), 0.5F);
     viewer.setInteractiveScale(0.5F);  // fixed: no dynamic resolution here
     const qreal ratio = viewer.devicePixelRatioF();
     const QSize full(static_cast<int>(std::lround(viewer.width() * ratio)),
@@ -494,33 +499,34 @@ TEST_F(ProgressiveTest, ReducedResolutionWhileMovingThenFull) {
     EXPECT_EQ(viewer.lastRenderSize(), full);
 
     viewer.setSettleDelay(600000);
-    const quint64 directBefore = viewer.solvesRequestedOnSettle();
+    const quint64 directBefore = viewer.view().solvesRequestedOnSettle();
     Drag drag(viewer);
     drag.moveBy({40, 10});
     const quint64 frames = viewer.framesWithScene();
     ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
-    EXPECT_TRUE(viewer.cameraMoving());
+    EXPECT_TRUE(viewer.view().refinement().moving());
     const QSize half(static_cast<int>(std::lround(full.width() * 0.5)),
                      static_cast<int>(std::lround(full.height() * 0.5)));
     EXPECT_EQ(viewer.lastRenderSize(), half);
     // The preview VSS is solved at the reduced size too.
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
-    EXPECT_EQ(viewer.shownVssHeight().width(), half.width());
+    EXPECT_EQ(viewer.view().frameRenderer().shownHeight().width(), half.width());
 
     // Settled: the preview depth has the wrong size for the exact solve, so
     // settling draws only the full-size G-buffer and submits the exact solve
     // from it, without a frame; the solve's arrival draws the one frame.
-    const quint64 preparedBefore = viewer.solvesPreparedOnSettle();
-    const auto countersBefore = viewer.solveCounters();
+    const quint64 preparedBefore = viewer.view().solvesPreparedOnSettle();
+    const auto countersBefore = viewer.view().frameRenderer().solveCounters();
     const quint64 framesBeforeRelease = viewer.framesWithScene();
     drag.release();
-    EXPECT_EQ(viewer.solvesRequestedOnSettle(), directBefore);
-    EXPECT_EQ(viewer.solvesPreparedOnSettle(), preparedBefore + 1);
-    EXPECT_EQ(viewer.solveCounters().submitted, countersBefore.submitted + 1);
+    EXPECT_EQ(viewer.view().solvesRequestedOnSettle(), directBefore);
+    EXPECT_EQ(viewer.view().solvesPreparedOnSettle(), preparedBefore + 1);
+    EXPECT_EQ(viewer.view().frameRenderer().solveCounters().submitted,
+              countersBefore.submitted + 1);
     EXPECT_EQ(viewer.framesWithScene(), framesBeforeRelease);  // nothing drawn yet
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
     EXPECT_EQ(viewer.lastRenderSize(), full);
-    EXPECT_EQ(viewer.shownVssHeight().width(), full.width());
+    EXPECT_EQ(viewer.view().frameRenderer().shownHeight().width(), full.width());
     // The frame that shows it found the G-buffer of the settled view cached.
     const auto& passes = viewer.lastPasses();
     const auto geometry = std::find_if(passes.begin(), passes.end(),
@@ -528,7 +534,8 @@ TEST_F(ProgressiveTest, ReducedResolutionWhileMovingThenFull) {
     ASSERT_NE(geometry, passes.end());
     EXPECT_EQ(geometry->state, vv::render::PassState::Cached) << geometry->reason;
     // And no second solve was needed.
-    EXPECT_EQ(viewer.solveCounters().submitted, countersBefore.submitted + 1);
+    EXPECT_EQ(viewer.view().frameRenderer().solveCounters().submitted,
+              countersBefore.submitted + 1);
 }
 
 TEST_F(ProgressiveTest, SettlingAtFullResolutionRequestsTheExactSolveWithoutAFrame) {
@@ -542,24 +549,24 @@ TEST_F(ProgressiveTest, SettlingAtFullResolutionRequestsTheExactSolveWithoutAFra
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
     viewer.setInteractiveScale(1.0F);  // no-op for the size; lets a pending repaint run
     ASSERT_TRUE(waitUntil([&] { return previewShown(viewer); }));
-    const auto before = viewer.solveCounters();
-    const quint64 directBefore = viewer.solvesRequestedOnSettle();
+    const auto before = viewer.view().frameRenderer().solveCounters();
+    const quint64 directBefore = viewer.view().solvesRequestedOnSettle();
     const quint64 frames = viewer.framesWithScene();
 
     // The release is handled synchronously: the exact solve is submitted
     // before any event loop turn, hence before any frame is drawn.
     drag.release();
-    EXPECT_FALSE(viewer.cameraMoving());
+    EXPECT_FALSE(viewer.view().refinement().moving());
     EXPECT_EQ(viewer.framesWithScene(), frames);
-    EXPECT_EQ(viewer.solvesRequestedOnSettle(), directBefore + 1);
-    EXPECT_EQ(viewer.solveCounters().submitted, before.submitted + 1);
+    EXPECT_EQ(viewer.view().solvesRequestedOnSettle(), directBefore + 1);
+    EXPECT_EQ(viewer.view().frameRenderer().solveCounters().submitted, before.submitted + 1);
 
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
     EXPECT_GT(viewer.framesWithScene(), frames);
     // No frame had to request it again.
-    EXPECT_EQ(viewer.solveCounters().submitted, before.submitted + 1);
+    EXPECT_EQ(viewer.view().frameRenderer().solveCounters().submitted, before.submitted + 1);
     const qreal ratio = viewer.devicePixelRatioF();
-    EXPECT_EQ(viewer.shownVssHeight().width(),
+    EXPECT_EQ(viewer.view().frameRenderer().shownHeight().width(),
               static_cast<int>(std::lround(viewer.width() * ratio)));
 }
 
@@ -590,7 +597,7 @@ TEST_F(ProgressiveTest, PreviewArrivalsDrawNoFrameOfTheirOwnDuringADragButAPause
     EXPECT_GE(frames, kMoves);
     // The hand pauses (button still down): the last preview shows, solved
     // for this very view.
-    ASSERT_TRUE(viewer.cameraMoving());
+    ASSERT_TRUE(viewer.view().refinement().moving());
     EXPECT_TRUE(waitUntil([&] { return previewShown(viewer); }, 10000));
     drag.release();
     EXPECT_TRUE(waitUntil([&] { return exactShown(viewer); }));
@@ -606,11 +613,13 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     QObject::connect(&viewer, &ViewerWidget::previewGeometryReady, [&ready] { ++ready; });
     window_->setScene(makeScene(), QStringLiteral("simplified"));
     window_->show();
-    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && viewer.hasPreviewGeometry(); }));
+    ASSERT_TRUE(
+        waitUntil([&] { return exactShown(viewer) && viewer.view().hasPreviewGeometry(); }));
     EXPECT_EQ(ready, 1);
-    EXPECT_FALSE(viewer.lastFrameSimplified());  // still frames draw the full meshes
-    EXPECT_EQ(viewer.lastGeometryLevel(), 0U);
-    const std::vector<std::size_t> levels = viewer.previewLevelTriangles();
+    EXPECT_FALSE(
+        viewer.view().frameRenderer().lastFrameSimplified());  // still frames draw the full meshes
+    EXPECT_EQ(viewer.view().frameRenderer().lastGeometryLevel(), 0U);
+    const std::vector<std::size_t> levels = viewer.view().previewLevelTriangles();
     ASSERT_EQ(levels.size(), 2U);
     EXPECT_LE(levels[0], 2000U);
     EXPECT_GT(levels[0], 1000U);
@@ -624,9 +633,9 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     quint64 frames = viewer.framesWithScene();
     drag.moveBy(QPointF(15, 4));
     ASSERT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
-    EXPECT_TRUE(viewer.cameraMoving());
-    EXPECT_TRUE(viewer.lastFrameSimplified());
-    EXPECT_EQ(viewer.lastGeometryLevel(), 1U);
+    EXPECT_TRUE(viewer.view().refinement().moving());
+    EXPECT_TRUE(viewer.view().frameRenderer().lastFrameSimplified());
+    EXPECT_EQ(viewer.view().frameRenderer().lastGeometryLevel(), 1U);
     // ... tiny ones (a tenth of the size: fewer than 3 pixels a triangle of
     // the finer level) the coarser one.
     viewer.setInteractiveScale(0.1F);
@@ -637,16 +646,19 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     ASSERT_LT(static_cast<long long>(tiny.width()) * tiny.height(),
               static_cast<long long>(levels[0]) * vv::render::kPixelsPerPreviewTriangle)
         << tiny.width() << "x" << tiny.height();
-    EXPECT_EQ(viewer.lastGeometryLevel(), 2U);
+    EXPECT_EQ(viewer.view().frameRenderer().lastGeometryLevel(), 2U);
     drag.release();
-    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && !viewer.cameraMoving(); }));
-    EXPECT_FALSE(viewer.lastFrameSimplified());  // the exact VSS is solved on the full meshes
-    EXPECT_EQ(viewer.lastGeometryLevel(), 0U);
+    ASSERT_TRUE(
+        waitUntil([&] { return exactShown(viewer) && !viewer.view().refinement().moving(); }));
+    EXPECT_FALSE(viewer.view()
+                     .frameRenderer()
+                     .lastFrameSimplified());  // the exact VSS is solved on the full meshes
+    EXPECT_EQ(viewer.view().frameRenderer().lastGeometryLevel(), 0U);
 
     // A new scene drops the old preview until its own is ready.
     viewer.setPreviewTriangles(0);
     window_->setScene(makeScene(), QStringLiteral("no preview"));
-    EXPECT_FALSE(viewer.hasPreviewGeometry());
+    EXPECT_FALSE(viewer.view().hasPreviewGeometry());
 }
 
 TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout) {
@@ -658,13 +670,14 @@ TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout
     ViewerWidget& viewer = open(tree, 400, 300);
     // The closures are checked on a worker thread; frames before that draw
     // both sides.
-    ASSERT_TRUE(waitUntil([&] { return exactShown(viewer) && viewer.surfaceClosuresKnown(); }));
+    ASSERT_TRUE(
+        waitUntil([&] { return exactShown(viewer) && viewer.view().surfaceClosuresKnown(); }));
     Drag drag(viewer);
     const auto moveAndCount = [&] {
         const quint64 frames = viewer.framesWithScene();
         drag.moveBy(QPointF(10, 2));
         EXPECT_TRUE(waitUntil([&] { return viewer.framesWithScene() > frames; }));
-        return viewer.lastCulledMeshes();
+        return viewer.view().meshRenderer().lastCulledMeshes();
     };
     EXPECT_EQ(moveAndCount(), 1U);  // watertight, seen from outside
     viewer.setBackFaceCulling(false);
@@ -673,12 +686,14 @@ TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout
     ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
 
     ViewerWidget& tubes = open(makeScene(), 400, 300);
-    ASSERT_TRUE(waitUntil([&] { return exactShown(tubes) && tubes.surfaceClosuresKnown(); }));
+    ASSERT_TRUE(
+        waitUntil([&] { return exactShown(tubes) && tubes.view().surfaceClosuresKnown(); }));
     Drag tubeDrag(tubes);
     const quint64 frames = tubes.framesWithScene();
     tubeDrag.moveBy(QPointF(10, 2));
     ASSERT_TRUE(waitUntil([&] { return tubes.framesWithScene() > frames; }));
-    EXPECT_EQ(tubes.lastCulledMeshes(), 0U);  // open ends: the inside can be seen
+    EXPECT_EQ(tubes.view().meshRenderer().lastCulledMeshes(),
+              0U);  // open ends: the inside can be seen
     tubeDrag.release();
 }
 
@@ -696,7 +711,7 @@ double processCpuMilliseconds() {
 class PassTable {
   public:
     void add(const ViewerWidget& viewer) {
-        for (const auto& t : viewer.lastTimings()) {
+        for (const auto& t : viewer.view().lastTimings()) {
             ms_[t.pass].push_back(t.gpuMilliseconds.value_or(t.cpuMilliseconds));
         }
         paint_.push_back(viewer.lastPaintMilliseconds());
@@ -761,10 +776,10 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
     ASSERT_TRUE(waitUntil([&] { return viewer.size() == benchSize && exactShown(viewer); }))
         << viewer.width() << "x" << viewer.height();
     // The simplified geometry for moving frames is built in the background.
-    ASSERT_TRUE(waitUntil([&] { return viewer.hasPreviewGeometry(); }));
+    ASSERT_TRUE(waitUntil([&] { return viewer.view().hasPreviewGeometry(); }));
     std::printf("[bench] preview geometry: at most %zu triangles; levels:",
                 viewer.previewTriangles());
-    for (const std::size_t triangles : viewer.previewLevelTriangles()) {
+    for (const std::size_t triangles : viewer.view().previewLevelTriangles()) {
         std::printf(" %zu", triangles);
     }
     std::printf("\n");
@@ -822,13 +837,13 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             warmUp.release();
             ASSERT_TRUE(waitUntil([&] { return exactShown(viewer); }));
             std::printf("[bench]   after a warm-up drag of 8 moves: scale %.2f (VSS %.2f)\n",
-                        static_cast<double>(viewer.interactiveScale()),
-                        static_cast<double>(viewer.interactiveVssScale()));
+                        static_cast<double>(viewer.view().refinement().interactiveScale()),
+                        static_cast<double>(viewer.view().refinement().interactiveVssScale()));
         }
-        const auto countersBefore = viewer.solveCounters();
-        const quint64 directBefore = viewer.solvesRequestedOnSettle();
+        const auto countersBefore = viewer.view().frameRenderer().solveCounters();
+        const quint64 directBefore = viewer.view().solvesRequestedOnSettle();
         QSize movingSize;
-        QSize movingVssSize;
+        glm::ivec2 movingVssSize{0};
         std::size_t movingLevel = 0;
         std::size_t movingCulled = 0;
         std::vector<double> frameMs;
@@ -854,13 +869,13 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             frameMs.push_back(static_cast<double>(t.nsecsElapsed()) / 1e6);
             cpuMs.push_back(processCpuMilliseconds() - cpuBefore);
             paintMs.push_back(viewer.lastPaintMilliseconds());
-            costMs.push_back(viewer.lastFrameCost());
+            costMs.push_back(viewer.view().refinement().lastFrameCost());
             moving.add(viewer);
             movingSize = viewer.lastRenderSize();
-            movingVssSize = viewer.lastVssSize();
-            ++sizesUsed[{movingSize.width(), movingVssSize.width()}];
-            movingLevel = viewer.lastGeometryLevel();
-            movingCulled = viewer.lastCulledMeshes();
+            movingVssSize = viewer.view().frameRenderer().lastVssSize();
+            ++sizesUsed[{movingSize.width(), movingVssSize.x}];
+            movingLevel = viewer.view().frameRenderer().lastGeometryLevel();
+            movingCulled = viewer.view().meshRenderer().lastCulledMeshes();
             const auto& s = viewer.vssStatus();
             withCurrentVss += (s.shown && s.current) ? 1 : 0;
             previews += s.preview ? 1 : 0;
@@ -878,7 +893,7 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
                     std::printf("[bench]   frame after release (%s, %.0f ms after it):",
                                 exactShown(viewer) ? "exact VSS" : "no exact VSS yet",
                                 static_cast<double>(settle.nsecsElapsed()) / 1e6);
-                    for (const auto& t : viewer.lastTimings()) {
+                    for (const auto& t : viewer.view().lastTimings()) {
                         std::printf(" %s %.1f", t.pass.c_str(),
                                     t.gpuMilliseconds.value_or(t.cpuMilliseconds));
                     }
@@ -895,8 +910,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         const double exactCpuMs =
             1000.0 * static_cast<double>(std::clock() - cpuAtRelease) / CLOCKS_PER_SEC;
         const quint64 framesAfterRelease = viewer.framesWithScene() - framesAtRelease;
-        const bool direct = viewer.solvesRequestedOnSettle() > directBefore;
-        const auto countersAfter = viewer.solveCounters();
+        const bool direct = viewer.view().solvesRequestedOnSettle() > directBefore;
+        const auto countersAfter = viewer.view().frameRenderer().solveCounters();
 
         std::vector<double> sorted = frameMs;
         std::sort(sorted.begin(), sorted.end());
@@ -937,9 +952,9 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             "release -> exact VSS shown %.0f ms after %llu frame(s), solve requested on settle: "
             "%s (solve %.0f ms); solves submitted %llu, completed %llu, cancelled %llu\n",
             progressive ? "on" : "off", static_cast<double>(config.scale), movingSize.width(),
-            movingSize.height(), movingVssSize.width(), movingVssSize.height(), viewer.width(),
-            viewer.height(), totalMs, 30000.0 / totalMs, median, sorted.front(), sorted.back(),
-            withCurrentVss, previews, exactMs, static_cast<unsigned long long>(framesAfterRelease),
+            movingSize.height(), movingVssSize.x, movingVssSize.y, viewer.width(), viewer.height(),
+            totalMs, 30000.0 / totalMs, median, sorted.front(), sorted.back(), withCurrentVss,
+            previews, exactMs, static_cast<unsigned long long>(framesAfterRelease),
             direct ? "yes" : "no", viewer.vssStatus().solveMilliseconds,
             static_cast<unsigned long long>(countersAfter.submitted - countersBefore.submitted),
             static_cast<unsigned long long>(countersAfter.completed - countersBefore.completed),
@@ -947,11 +962,12 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
         std::printf(
             "[bench]   release -> exact VSS: %.0f ms of CPU time in this process (%d cores); "
             "meshes culled in its G-buffer %zu\n",
-            exactCpuMs, QThread::idealThreadCount(), viewer.lastCulledMeshes());
+            exactCpuMs, QThread::idealThreadCount(),
+            viewer.view().meshRenderer().lastCulledMeshes());
         if (passTimes) {
             moving.print("moving");
             std::printf("[bench]   settle (exact solve requested / G-buffer prepared): %.1f ms\n",
-                        viewer.lastSettleMilliseconds());
+                        viewer.view().lastSettleMilliseconds());
             settling.print("after release");
         }
         std::fflush(stdout);
@@ -961,7 +977,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
             EXPECT_EQ(previews, 0);
         }
         if (config.budget > 0.0) {
-            dynamicScale = {viewer.interactiveScale(), viewer.interactiveVssScale()};
+            dynamicScale = {viewer.view().refinement().interactiveScale(),
+                            viewer.view().refinement().interactiveVssScale()};
         }
     }
 
@@ -1001,8 +1018,8 @@ TEST_F(ProgressiveTest, DISABLED_RotatingTheDemoBenchmark) {
                 "frame: SSIM %.3f (luma %.3f); settled frame against the first scale's: SSIM "
                 "%.4f\n",
                 view, static_cast<double>(scale), frames.movingSize.width(),
-                frames.movingSize.height(), frames.movingVssSize.width(),
-                frames.movingVssSize.height(), 1.0 - c.difference, 1.0 - c.lumaDifference,
+                frames.movingSize.height(), frames.movingVssSize.x, frames.movingVssSize.y,
+                1.0 - c.difference, 1.0 - c.lumaDifference,
                 1.0 - vv::test::compareImages(frames.settled, firstSettled).difference);
             if (!shots.isEmpty()) {
                 const QString tag =

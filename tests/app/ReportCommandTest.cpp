@@ -320,7 +320,7 @@ TEST(ReportCommandTest, EverySecondViewsLegendDescribesItsOwnImage) {
         const auto view = vv::render::namedViewFromName(name);
         ASSERT_TRUE(view.has_value());
         const auto [dmin, dmax] = vv::report::test::ownDepthRange(
-            renderer, scene, base, *view, base.vss.range, vv::report::PaperSize::A4);
+            renderer, scene, base, *view, base.display.vss.range, vv::report::PaperSize::A4);
         const std::string caption = vv::report::namedViewCaption(name);
         vv::render::DepthLegend legend;
         legend.dmin = dmin;

@@ -40,7 +40,7 @@ TEST(SettingsSchema, DefaultsAreTheEnginesAndValid) {
     EXPECT_EQ(std::get<double>(app::defaultValue(app::setting("style.light[1]"))),
               static_cast<double>(render::LightAngles{}.elevation));
     EXPECT_EQ(std::get<glm::vec3>(app::defaultValue(app::setting("background"))),
-              render::FrameSettings{}.background);
+              render::kDefaultBackground);
     for (const Setting& s : app::settingsSchema()) {
         EXPECT_EQ(app::problemWith(s, app::defaultValue(s)), "") << s.key << ": default invalid";
         EXPECT_NE(std::string(s.label), "") << s.key;

@@ -78,7 +78,7 @@ TEST_F(SettingsTest, DisplaySettingsAreRememberedAndReset) {
     EXPECT_EQ(viewer->style().bins, 0);
     EXPECT_EQ(viewer->style().vesselColor, render::MeshStyle{}.vesselColor);
     EXPECT_EQ(viewer->vesselCue().cue, render::VesselCue::None);
-    EXPECT_EQ(viewer->background(), render::FrameSettings{}.background);
+    EXPECT_EQ(viewer->background(), render::kDefaultBackground);
     EXPECT_TRUE(viewer->legendsVisible());
     EXPECT_FALSE(window_->colorBlindSafeToggle()->isChecked());
     EXPECT_DOUBLE_EQ(window_->vssPowerBox()->value(), defaults.solver.p);
@@ -105,7 +105,7 @@ TEST_F(SettingsTest, InvalidStoredValuesAreIgnored) {
     EXPECT_EQ(viewer->vssSettings().solver.kind, defaults.solver.kind);
     EXPECT_EQ(viewer->style().bins, 0);
     EXPECT_EQ(viewer->vesselCue().cue, render::VesselCue::None);
-    EXPECT_EQ(viewer->background(), render::FrameSettings{}.background);
+    EXPECT_EQ(viewer->background(), render::kDefaultBackground);
     EXPECT_EQ(viewer->style().vesselColor, render::MeshStyle{}.vesselColor);
     EXPECT_EQ(viewer->vssSettings().isoLines, 7);  // the valid one is taken
 }

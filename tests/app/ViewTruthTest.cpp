@@ -223,7 +223,7 @@ TEST_F(ViewTruthTest, AnExportFramedAsTheViewHasTheViewsDepthRange) {
     render::OffscreenRenderer renderer;
     report::ViewExportOptions options;
     options.render = gui::currentViewOptions(*viewer, 2 * view.width(), 2 * view.height());
-    EXPECT_EQ(options.render.vss.range.mode, vss::RangeMode::Fixed);
+    EXPECT_EQ(options.render.display.vss.range.mode, vss::RangeMode::Fixed);
     const report::RenderedView exported = report::renderView(renderer, *scene, options);
     ASSERT_TRUE(exported.vss.shown);
     EXPECT_EQ(exported.vss.dmin, screen.dmin);
@@ -233,21 +233,22 @@ TEST_F(ViewTruthTest, AnExportFramedAsTheViewHasTheViewsDepthRange) {
     EXPECT_EQ(exported.legends.depth->dmax, screen.dmax);
 
     // Its own visible range at that size differs (what the pinning is for)...
-    options.render.vss.range = {};
+    options.render.display.vss.range = {};
     const report::RenderedView own = report::renderView(renderer, *scene, options);
     EXPECT_NE(own.vss.dmax, screen.dmax);
     // ... and framed otherwise (another aspect) the export keeps its own.
-    EXPECT_EQ(gui::currentViewOptions(*viewer, 2 * view.width(), view.height()).vss.range.mode,
-              vss::RangeMode::Visible);
+    EXPECT_EQ(
+        gui::currentViewOptions(*viewer, 2 * view.width(), view.height()).display.vss.range.mode,
+        vss::RangeMode::Visible);
     // A fixed range chosen by the user stays as chosen.
     render::VssSettings fixed = viewer->vssSettings();
     fixed.range = {vss::RangeMode::Fixed, 1.0, 99.0};
     viewer->setVssSettings(fixed);
     const render::OffscreenOptions chosen =
         gui::currentViewOptions(*viewer, view.width(), view.height());
-    EXPECT_EQ(chosen.vss.range.mode, vss::RangeMode::Fixed);
-    EXPECT_EQ(chosen.vss.range.dmin, 1.0);
-    EXPECT_EQ(chosen.vss.range.dmax, 99.0);
+    EXPECT_EQ(chosen.display.vss.range.mode, vss::RangeMode::Fixed);
+    EXPECT_EQ(chosen.display.vss.range.dmin, 1.0);
+    EXPECT_EQ(chosen.display.vss.range.dmax, 99.0);
 }
 
 }  // namespace

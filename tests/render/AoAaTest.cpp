@@ -76,9 +76,9 @@ class AoAaTest : public vv::render::test::GlRenderTest {
     /// Vessel pixels: those that differ from the background with the VSS off.
     static std::vector<bool> vesselMask(OffscreenRenderer& renderer, const vv::scene::Scene& scene,
                                         OffscreenOptions o) {
-        o.vss.enabled = false;
-        o.ao.enabled = false;
-        o.antialiasing = false;
+        o.display.vss.enabled = false;
+        o.display.ao.enabled = false;
+        o.display.antialiasing = false;
         const QImage off = renderer.render(scene, o);
         const QRgb bg = off.pixel(0, 0);
         std::vector<bool> mask(static_cast<std::size_t>(off.width() * off.height()));
@@ -101,24 +101,24 @@ TEST_F(AoAaTest, AoOffCullsTheAoPassesAndAoOnRunsThemCachedOnColourChanges) {
     EXPECT_EQ(state(*renderer, "ao-blur"), PassState::Culled);
     EXPECT_EQ(state(*renderer, "composite"), PassState::Executed);
 
-    o.ao.enabled = true;
+    o.display.ao.enabled = true;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "ssao"), PassState::Executed);
     EXPECT_EQ(state(*renderer, "ao-blur"), PassState::Executed);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Cached);
 
     // AO depends on depth + VSS + radius: not on the colour scale or strength.
-    o.vss.scale = vv::colormaps::DepthScale::DarkMeansDeep;
-    o.ao.strength = 0.5F;
+    o.display.vss.scale = vv::colormaps::DepthScale::DarkMeansDeep;
+    o.display.ao.strength = 0.5F;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-shading"), PassState::Executed);
     EXPECT_EQ(state(*renderer, "ssao"), PassState::Cached);
     EXPECT_EQ(state(*renderer, "ao-blur"), PassState::Cached);
 
-    o.ao.radius = 2.0F;
+    o.display.ao.radius = 2.0F;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "ssao"), PassState::Executed);
-    o.vss.solver.p = 4.0;
+    o.display.vss.solver.p = 4.0;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
     EXPECT_EQ(state(*renderer, "ssao"), PassState::Executed);
@@ -129,11 +129,11 @@ TEST_F(AoAaTest, AoDarkensTheVssNextToVesselsAndLeavesFarAreasAlone) {
     ASSERT_TRUE(renderer);
     const auto scene = twoTubes();
     auto o = options();
-    o.ao.radius = 1.5F;  // the tubes' radius is 1
-    o.ao.strength = 1.0F;
+    o.display.ao.radius = 1.5F;  // the tubes' radius is 1
+    o.display.ao.strength = 1.0F;
     const auto mask = vesselMask(*renderer, scene, o);
     const QImage off = renderer->render(scene, o);
-    o.ao.enabled = true;
+    o.display.ao.enabled = true;
     const QImage on = renderer->render(scene, o);
     keep(off, "ao-off");
     keep(on, "ao-on");
@@ -182,15 +182,15 @@ TEST_F(AoAaTest, HalfResolutionAoKeepsTheFullResolutionShade) {
     const auto scene = twoTubes();
     // Small pixels, as on a 4K screen: the AO's disc spans ~25 of them.
     auto o = vv::render::test::exactOptions(960, 720);
-    o.antialiasing = false;
-    o.ao.radius = 1.5F;
-    o.ao.strength = 1.0F;
+    o.display.antialiasing = false;
+    o.display.ao.radius = 1.5F;
+    o.display.ao.strength = 1.0F;
     const auto mask = vesselMask(*renderer, scene, o);
-    o.ao.enabled = false;
+    o.display.ao.enabled = false;
     const QImage off = renderer->render(scene, o);
-    o.ao.enabled = true;
+    o.display.ao.enabled = true;
     const QImage full = renderer->render(scene, o);
-    o.ao.fullResolutionPixels = 0;
+    o.display.ao.fullResolutionPixels = 0;
     const QImage half = renderer->render(scene, o);
     keep(full, "ao-full-resolution");
     keep(half, "ao-half-resolution");
@@ -225,7 +225,7 @@ TEST_F(AoAaTest, FxaaSoftensStairStepsWithoutMovingTheSilhouette) {
     ASSERT_TRUE(renderer);
     const auto scene = twoTubes();
     auto o = options();
-    o.vss.enabled = false;
+    o.display.vss.enabled = false;
     vv::render::Camera camera;
     camera.setViewport(o.width, o.height);
     camera.fit(scene.bounds());
@@ -234,7 +234,7 @@ TEST_F(AoAaTest, FxaaSoftensStairStepsWithoutMovingTheSilhouette) {
     const QImage hard = renderer->render(scene, o);
     EXPECT_TRUE(std::none_of(renderer->lastPasses().begin(), renderer->lastPasses().end(),
                              [](const auto& pass) { return pass.name == "fxaa"; }));
-    o.antialiasing = true;
+    o.display.antialiasing = true;
     const QImage soft = renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "fxaa"), PassState::Executed);
     keep(hard, "aa-off");
@@ -295,7 +295,7 @@ TEST_F(AoAaTest, VssLightingHasNoBrightSpecksAlongContours) {
     auto o = options();
     o.width = 640;
     o.height = 360;
-    o.vss.isoLines = 0;
+    o.display.vss.isoLines = 0;
     const auto mask = vesselMask(*renderer, scene, o);
     const QImage image = renderer->render(scene, o);
     keep(image, "lit-contours");

@@ -200,8 +200,8 @@ TEST_F(CulledRenderTest, TheDemoTreeFromOutsideIsCulledAndLooksTheSame) {
     scene.meshes.push_back(demo::generateDemoMesh(demo));
     ASSERT_EQ(scene::surfaceClosure(scene.meshes[0]), scene::SurfaceClosure::ClosedOutward);
     OffscreenOptions options = test::exactOptions(320, 240);
-    options.style.array = "wss";
-    options.vss.enabled = true;
+    options.display.style.array = "wss";
+    options.display.vss.enabled = true;
     EXPECT_EQ(expectSame(scene, options, "demo_far"), 1U);
     // Close: the eye inside the tree's bounds, between the vessels.
     Camera close = OffscreenRenderer::cameraFor(scene, options);

@@ -69,9 +69,9 @@ class FrameDataFlowTest : public vv::render::test::GlRenderTest {
   protected:
     OffscreenOptions options(VesselCue cue, bool vss) const {
         OffscreenOptions o = vv::render::test::exactOptions(200, 150);
-        o.vss.enabled = vss;
-        o.cue.cue = cue;
-        o.style.array.clear();
+        o.display.vss.enabled = vss;
+        o.display.cue.cue = cue;
+        o.display.style.array.clear();
         return o;
     }
 };
@@ -110,14 +110,14 @@ TEST_F(FrameDataFlowTest, ShadingPassesReadTheValuesTheyUse) {
     ASSERT_TRUE(renderer);
     const auto scene = vv::render::test::twoTubes(1.5F, 5.0F, 40, 16);
     OffscreenOptions o = options(VesselCue::Fresnel, true);
-    o.ao.enabled = true;
+    o.display.ao.enabled = true;
     ObjectStyle translucent;
     translucent.opacity = 0.5F;
-    o.style.objects = {translucent};  // the near tube
+    o.display.style.objects = {translucent};  // the near tube
     // A fixed VSS range, so that the cue's range tells the VSS's from the visible one.
-    o.vss.range.mode = vv::vss::RangeMode::Fixed;
-    o.vss.range.dmin = 1.0;
-    o.vss.range.dmax = 100.0;
+    o.display.vss.range.mode = vv::vss::RangeMode::Fixed;
+    o.display.vss.range.dmin = 1.0;
+    o.display.vss.range.dmax = 100.0;
     static_cast<void>(renderer->render(scene, o));
     const auto& passes = renderer->lastPasses();
     // The cue's range: the shown VSS's, else the visible one.

@@ -54,9 +54,9 @@ class ObjectStyleTest : public vv::render::test::GlRenderTest {
   protected:
     OffscreenOptions options(bool vss) const {
         OffscreenOptions o = vv::render::test::exactOptions(240, 180);
-        o.background = background_;
-        o.vss.enabled = vss;
-        o.style.array.clear();
+        o.display.background = background_;
+        o.display.vss.enabled = vss;
+        o.display.style.array.clear();
         return o;
     }
     /// A 160 x 120 harness, or a test failure naming why there is none.
@@ -214,16 +214,16 @@ TEST_F(ObjectStyleTest, HalfOpacityShowsTheVssThroughAndZeroHides) {
     const vv::scene::Scene s = scene();
     // Where the near tube is: the pixels it covers alone, without a VSS.
     OffscreenOptions alone = options(false);
-    alone.style.hidden = {1};
+    alone.display.style.hidden = {1};
     const QImage nearTube = renderer->render(s, alone);
     OffscreenOptions o = options(true);
     const QImage opaque = renderer->render(s, o);
     EXPECT_EQ(state(*renderer, "translucent"), PassState::Culled);
-    o.style.hidden = {0};
+    o.display.style.hidden = {0};
     const QImage hidden = renderer->render(s, o);
-    o.style.hidden.clear();
-    o.style.objects.resize(1);
-    o.style.objects[0].opacity = 0.5F;
+    o.display.style.hidden.clear();
+    o.display.style.objects.resize(1);
+    o.display.style.objects[0].opacity = 0.5F;
     const QImage half = renderer->render(s, o);
     EXPECT_EQ(state(*renderer, "translucent"), PassState::Executed);
     keep(half, "half");
@@ -243,7 +243,7 @@ TEST_F(ObjectStyleTest, HalfOpacityShowsTheVssThroughAndZeroHides) {
     EXPECT_GT(checked, 5);
     // What shows through is the VSS, not the background.
     EXPECT_NE(hidden.pixel(x, half.height() / 4), backgroundRgb_);
-    o.style.objects[0].opacity = 0.0F;
+    o.display.style.objects[0].opacity = 0.0F;
     EXPECT_EQ(renderer->render(s, o), hidden);
     EXPECT_EQ(state(*renderer, "translucent"), PassState::Culled);
 }
@@ -306,7 +306,7 @@ TEST_F(ObjectStyleTest, LightDirectionReshadesVesselsAndVssWithoutANewSolve) {
     OffscreenOptions o = options(true);
     const QImage before = renderer->render(s, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
-    o.style.light = LightAngles{60.0F, -40.0F};
+    o.display.style.light = LightAngles{60.0F, -40.0F};
     const QImage after = renderer->render(s, o);
     keep(before, "light-default");
     keep(after, "light-moved");
@@ -329,7 +329,7 @@ TEST_F(ObjectStyleTest, LightDirectionReshadesVesselsAndVssWithoutANewSolve) {
     EXPECT_GT(vesselChanged, 300);
     EXPECT_GT(vssChanged, 300);
     // Back to the default: the first image again.
-    o.style.light = LightAngles{};
+    o.display.style.light = LightAngles{};
     EXPECT_EQ(renderer->render(s, o), before);
 }
 

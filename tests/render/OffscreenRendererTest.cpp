@@ -111,7 +111,8 @@ class OffscreenRendererTest : public vv::render::test::GlRenderTest {
     /// Options of the given size that show the vessels against the background.
     static OffscreenOptions flatOptions(int width, int height) {
         OffscreenOptions options = vv::render::test::exactOptions(width, height);
-        options.vss.enabled = false;  // these tests check the vessels against the background
+        options.display.vss.enabled =
+            false;  // these tests check the vessels against the background
         return options;
     }
 };
@@ -170,8 +171,8 @@ TEST_F(OffscreenRendererTest, ColourMappedPixelsAreLutColours) {
     vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(320, 120);
-    options.style.array = "wss";
-    options.style.lighting = false;  // exact map colours
+    options.display.style.array = "wss";
+    options.display.style.lighting = false;  // exact map colours
     const QImage image = renderer->render(scene, options);
     keep(image, "tube-unlit");
     ASSERT_TRUE(renderer->lastRange().has_value());
@@ -225,9 +226,9 @@ TEST_F(OffscreenRendererTest, LitColourMappedRenderShowsManyHues) {
     vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(320, 120);
-    options.style.array = "wss";
+    options.display.style.array = "wss";
     const QImage mapped = renderer->render(scene, options);
-    options.style.array.clear();
+    options.display.style.array.clear();
     const QImage neutral = renderer->render(scene, options);
     keep(mapped, "tube-lit");
     keep(neutral, "tube-neutral");
@@ -252,8 +253,8 @@ TEST_F(OffscreenRendererTest, NanValuesShowTheNoDataColour) {
     vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(160, 80);
-    options.style.array = "pressure";  // all NaN
-    options.style.lighting = false;
+    options.display.style.array = "pressure";  // all NaN
+    options.display.style.lighting = false;
     const QImage image = renderer->render(scene, options);
     keep(image, "tube-nan");
     EXPECT_FALSE(renderer->lastRange().has_value());
@@ -278,8 +279,8 @@ TEST_F(OffscreenRendererTest, PartlyMissingValuesShowNoDataOnlyWhereMissing) {
     }
     scene.meshes.push_back(std::move(tube));
     OffscreenOptions options = flatOptions(320, 120);
-    options.style.array = "wss";
-    options.style.lighting = false;
+    options.display.style.array = "wss";
+    options.display.style.lighting = false;
     const QImage image = renderer->render(scene, options);
     keep(image, "tube-half-nan");
     const QRgb noData = toRgb(vv::colormaps::noDataColor(vv::colormaps::ColorMap::Viridis));
@@ -318,10 +319,10 @@ TEST_F(OffscreenRendererTest, ExplicitRangeClampsValues) {
     vv::scene::Scene scene;
     scene.meshes.push_back(makeTube(1.0F, 20.0F));
     OffscreenOptions options = flatOptions(160, 80);
-    options.style.array = "wss";
-    options.style.lighting = false;
-    options.style.colorMap = vv::colormaps::ColorMap::Cividis;
-    options.style.range = std::make_pair(100.0F, 200.0F);  // every value (0..10) is below
+    options.display.style.array = "wss";
+    options.display.style.lighting = false;
+    options.display.style.colorMap = vv::colormaps::ColorMap::Cividis;
+    options.display.style.range = std::make_pair(100.0F, 200.0F);  // every value (0..10) is below
     const QImage image = renderer->render(scene, options);
     const QRgb first = toRgb(vv::colormaps::sample(vv::colormaps::ColorMap::Cividis, 0.0F));
     const auto pixels = interiorPixels(image, backgroundRgb_);
@@ -338,10 +339,10 @@ TEST_F(OffscreenRendererTest, EmptySceneIsAllBackground) {
     OffscreenOptions options;
     options.width = 64;
     options.height = 48;
-    options.background = {1.0F, 0.5F, 0.0F};
+    options.display.background = {1.0F, 0.5F, 0.0F};
     const QImage image = renderer->render(scene, options);
     ASSERT_EQ(image.size(), QSize(64, 48));
-    const QRgb expected = toRgb(options.background);
+    const QRgb expected = toRgb(options.display.background);
     for (int y = 0; y < image.height(); ++y) {
         for (int x = 0; x < image.width(); ++x) {
             ASSERT_EQ(image.pixel(x, y), expected) << x << "," << y;

@@ -87,9 +87,9 @@ OffscreenOptions exactOptions(int width, int height) {
     OffscreenOptions o;
     o.width = width;
     o.height = height;
-    o.background = {26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
-    o.ao.enabled = false;
-    o.antialiasing = false;
+    o.display.background = {26.0F / 255.0F, 51.0F / 255.0F, 77.0F / 255.0F};
+    o.display.ao.enabled = false;
+    o.display.antialiasing = false;
     return o;
 }
 

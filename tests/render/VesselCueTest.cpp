@@ -63,10 +63,10 @@ class VesselCueTest : public vv::render::test::GlRenderTest {
         OffscreenOptions o;
         o.width = 320;
         o.height = 240;
-        o.background = background_;
-        o.vss.enabled = vss;
-        o.cue.cue = cue;
-        o.style.array.clear();
+        o.display.background = background_;
+        o.display.vss.enabled = vss;
+        o.display.cue.cue = cue;
+        o.display.style.array.clear();
         return o;
     }
 
@@ -122,8 +122,8 @@ TEST_F(VesselCueTest, NoneEqualsThePreviousOutputAndLeavesNoStateBehind) {
     OffscreenOptions plain;  // no cue field touched: what render() drew before cues existed
     plain.width = 320;
     plain.height = 240;
-    plain.background = background_;
-    plain.vss.enabled = false;
+    plain.display.background = background_;
+    plain.display.vss.enabled = false;
     const QImage before = renderer->render(scene, plain);
     const QImage none = renderer->render(scene, options(VesselCue::None));
     EXPECT_EQ(before, none);
@@ -246,10 +246,10 @@ TEST_F(VesselCueTest, LegendsArePaintedExactlyWhenTheirScalesAreUsed) {
     for (const Case& c : {Case{false, "", false, false}, Case{true, "", true, false},
                           Case{false, "speed", false, true}, Case{true, "speed", true, true}}) {
         auto o = options(VesselCue::None, c.vss);
-        o.style.array = c.array;
-        o.legends = false;
+        o.display.style.array = c.array;
+        o.display.legends = false;
         const QImage off = renderer->render(scene, o);
-        o.legends = true;
+        o.display.legends = true;
         const QImage on = renderer->render(scene, o);
         keep(on, "legends-" + std::string(c.vss ? "vss" : "novss") + "-" +
                      (c.array.empty() ? "noarray" : c.array));

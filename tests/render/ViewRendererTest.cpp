@@ -34,8 +34,8 @@ scene::Scene tubesWithWss() {
 
 OffscreenOptions optionsFor(int width, int height) {
     OffscreenOptions options = test::exactOptions(width, height);
-    options.style.array = "wss";
-    options.style.range = std::make_pair(-10.0F, 10.0F);
+    options.display.style.array = "wss";
+    options.display.style.range = std::make_pair(-10.0F, 10.0F);
     return options;
 }
 
@@ -194,7 +194,7 @@ TEST_F(ViewRendererTest, ADetachedSceneIsNotDrawnButItsMeshesStay) {
         }
     }
     EXPECT_EQ(drawn, 0) << "pixels of the detached scene";
-    view_.setBackground(FrameSettings{}.background);
+    view_.setBackground(kDefaultBackground);
     view_.setScene(scene, sceneFingerprint(*scene));
     (void)view_.render(camera_, target());
     EXPECT_EQ(fbo_->toImage(), shown);

@@ -181,9 +181,9 @@ TEST_F(VolumeRaycastTest, VssSpansTheVoidBetweenTwoBalls) {
     const Ball farBall{{9.0, 0.0, -10.0}, 7.0};
     const auto volume = ballVolume({nearBall, farBall});
     auto o = options(volume);
-    o.vss.enabled = false;
+    o.display.vss.enabled = false;
     const QImage off = renderer->render(vv::scene::Scene{}, o);
-    o.vss.enabled = true;
+    o.display.vss.enabled = true;
     const QImage on = renderer->render(vv::scene::Scene{}, o);
     vv::render::test::saveImage(off, "raycast-", "two-balls-off");
     vv::render::test::saveImage(on, "raycast-", "two-balls-vss");

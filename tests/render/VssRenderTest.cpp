@@ -61,7 +61,7 @@ TEST_F(VssRenderTest, VssOffShowsBackgroundInTheVoidAndCullsTheVssPasses) {
     ASSERT_TRUE(renderer);
     const auto scene = twoTubes();
     auto o = options();
-    o.vss.enabled = false;
+    o.display.vss.enabled = false;
     const QImage image = renderer->render(scene, o);
     keep(image, "off");
     long vessel = 0;
@@ -85,9 +85,9 @@ TEST_F(VssRenderTest, VssOnColoursTheVoidAndKeepsVesselPixels) {
     ASSERT_TRUE(renderer);
     const auto scene = twoTubes();
     auto o = options();
-    o.vss.enabled = false;
+    o.display.vss.enabled = false;
     const QImage off = renderer->render(scene, o);
-    o.vss.enabled = true;  // chromadepth, lighting, iso-lines: the defaults
+    o.display.vss.enabled = true;  // chromadepth, lighting, iso-lines: the defaults
     const QImage on = renderer->render(scene, o);
     keep(on, "on-chromadepth");
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
@@ -143,16 +143,16 @@ TEST_F(VssRenderTest, DarkMeansDeepGreyFallsMonotonicallyFromNearToFar) {
     ASSERT_TRUE(renderer);
     const auto scene = twoTubes();
     auto o = options();
-    o.vss.enabled = false;
+    o.display.vss.enabled = false;
     const QImage off = renderer->render(scene, o);
-    o.vss.enabled = true;
-    o.vss.scale = DepthScale::DarkMeansDeep;
-    o.vss.isoLines = 0;
-    o.vss.lighting = 0.0F;  // the plain scale
+    o.display.vss.enabled = true;
+    o.display.vss.scale = DepthScale::DarkMeansDeep;
+    o.display.vss.isoLines = 0;
+    o.display.vss.lighting = 0.0F;  // the plain scale
     const QImage on = renderer->render(scene, o);
     keep(on, "dmd-flat");
-    o.vss.isoLines = 8;
-    o.vss.lighting = 1.0F;
+    o.display.vss.isoLines = 8;
+    o.display.vss.lighting = 1.0F;
     keep(renderer->render(scene, o), "dmd-lit");
 
     for (const int x : {on.width() / 3, on.width() / 2, 2 * on.width() / 3}) {
@@ -194,12 +194,12 @@ TEST_F(VssRenderTest, ScaleAndIsoLinesReShadeWithoutReSolvingButPAndTheCameraReS
     ASSERT_TRUE(renderer);
     const auto scene = twoTubes();
     auto o = options();
-    o.vss.scale = DepthScale::DarkMeansDeep;
+    o.display.vss.scale = DepthScale::DarkMeansDeep;
     const QImage first = renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "geometry"), PassState::Executed);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
 
-    o.vss.scale = DepthScale::PseudoChromadepth;
+    o.display.vss.scale = DepthScale::PseudoChromadepth;
     const QImage second = renderer->render(scene, o);
     keep(second, "pcd");
     EXPECT_EQ(state(*renderer, "geometry"), PassState::Cached);
@@ -207,12 +207,12 @@ TEST_F(VssRenderTest, ScaleAndIsoLinesReShadeWithoutReSolvingButPAndTheCameraReS
     EXPECT_EQ(state(*renderer, "vss-shading"), PassState::Executed);
     EXPECT_NE(first, second);  // and the colours did change
 
-    o.vss.isoLines = 3;
-    o.vss.isoLineWidth = 3.0F;
+    o.display.vss.isoLines = 3;
+    o.display.vss.isoLineWidth = 3.0F;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Cached);
 
-    o.vss.solver.p = 4.0;
+    o.display.vss.solver.p = 4.0;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "geometry"), PassState::Cached);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
@@ -226,10 +226,10 @@ TEST_F(VssRenderTest, ScaleAndIsoLinesReShadeWithoutReSolvingButPAndTheCameraReS
     EXPECT_EQ(state(*renderer, "geometry"), PassState::Executed);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
 
-    o.vss.solver.tolerance = 1e-3;
+    o.display.vss.solver.tolerance = 1e-3;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
-    o.vss.solver.kind = vv::vss::SolverKind::Brute;
+    o.display.vss.solver.kind = vv::vss::SolverKind::Brute;
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
     (void)renderer->render(scene, o);
@@ -249,21 +249,21 @@ TEST_F(VssRenderTest, AFixedDepthRangeIsUsedAndReSolvesWhenItChanges) {
     ASSERT_LT(visibleMin, visibleMax);
 
     // A fixed range twice as deep as the visible one, starting at the same depth.
-    o.vss.range.mode = vv::vss::RangeMode::Fixed;
-    o.vss.range.dmin = visibleMin;
-    o.vss.range.dmax = visibleMin + 2.0 * (visibleMax - visibleMin);
+    o.display.vss.range.mode = vv::vss::RangeMode::Fixed;
+    o.display.vss.range.dmin = visibleMin;
+    o.display.vss.range.dmax = visibleMin + 2.0 * (visibleMax - visibleMin);
     const QImage fixed = renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "geometry"), PassState::Cached);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Executed);
-    EXPECT_DOUBLE_EQ(renderer->vssStatus().dmin, o.vss.range.dmin);
-    EXPECT_DOUBLE_EQ(renderer->vssStatus().dmax, o.vss.range.dmax);
+    EXPECT_DOUBLE_EQ(renderer->vssStatus().dmin, o.display.vss.range.dmin);
+    EXPECT_DOUBLE_EQ(renderer->vssStatus().dmax, o.display.vss.range.dmax);
     EXPECT_NE(visible, fixed);  // the far tube is now half way down the scale
     (void)renderer->render(scene, o);
     EXPECT_EQ(state(*renderer, "vss-solve"), PassState::Cached);
 
-    o.vss.range.dmax = o.vss.range.dmin - 1.0;
+    o.display.vss.range.dmax = o.display.vss.range.dmin - 1.0;
     EXPECT_THROW((void)renderer->render(scene, o), vv::InvalidArgumentError);
-    o.vss.range.dmax = std::numeric_limits<double>::quiet_NaN();
+    o.display.vss.range.dmax = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW((void)renderer->render(scene, o), vv::InvalidArgumentError);
 }
 
@@ -314,7 +314,7 @@ TEST_F(VssRenderTest, EveryScaleRenders) {
     o.width = 480;
     o.height = 360;
     for (const auto scale : vv::colormaps::allDepthScales()) {
-        o.vss.scale = scale;
+        o.display.vss.scale = scale;
         const QImage image = renderer->render(scene, o);
         keep(image, std::string(vv::colormaps::shortName(scale)));
         EXPECT_NE(image.pixel(image.width() / 2, image.height() / 2), backgroundRgb_);

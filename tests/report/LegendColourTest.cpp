@@ -146,12 +146,12 @@ TEST_F(ExportedLegendTest, PngAndSecondaryCaptureLegendsShowTheColourMapsColours
     ReportJobOptions o;
     o.view.width = 1600;
     o.view.height = 1200;
-    o.view.style.array = "wss";
-    o.view.style.colorMap = colormaps::ColorMap::Inferno;
-    o.view.style.bins = kBins;
-    o.view.vss.enabled = true;
-    o.view.vss.scale = colormaps::DepthScale::Chromadepth;
-    o.view.ao.enabled = false;
+    o.view.display.style.array = "wss";
+    o.view.display.style.colorMap = colormaps::ColorMap::Inferno;
+    o.view.display.style.bins = kBins;
+    o.view.display.vss.enabled = true;
+    o.view.display.vss.scale = colormaps::DepthScale::Chromadepth;
+    o.view.display.ao.enabled = false;
     const fs::path dir = test::testDir("legend-exports");
     o.outputs.png = dir / "view.png";
     o.outputs.dicomSc = dir / "view.dcm";

@@ -49,9 +49,9 @@ class ReportJobTest : public ::testing::Test {
         ReportJobOptions o;
         o.view.width = 320;
         o.view.height = 240;
-        o.view.style.array = "wss";
-        o.view.vss.enabled = false;
-        o.view.ao.enabled = false;
+        o.view.display.style.array = "wss";
+        o.view.display.vss.enabled = false;
+        o.view.display.ao.enabled = false;
         o.findings = "Findings of the job test.";
         o.source.files = {"tube.vtp"};
         return o;
@@ -189,7 +189,7 @@ TEST_F(ReportJobTest, NamedViewCaptions) {
 TEST_F(ReportJobTest, RendererOnAWorkerThreadMatchesTheGuiThread) {
     ViewExportOptions view;
     view.render = options().view;
-    view.render.vss.enabled = true;  // the solve runs on the worker too
+    view.render.display.vss.enabled = true;  // the solve runs on the worker too
     view.render.width = 400;
     view.render.height = 300;
     const QImage onGuiThread = renderView(*renderer_, scene_, view).image;

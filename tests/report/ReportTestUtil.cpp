@@ -133,7 +133,7 @@ std::pair<double, double> ownDepthRange(render::OffscreenRenderer& renderer,
         std::lround(options.render.width * static_cast<double>(base.height) / base.width));
     options.render.camera = render::presetCamera(scene, options.render.width, options.render.height,
                                                  view.preset, view.rotation);
-    options.render.vss.range = range;
+    options.render.display.vss.range = range;
     options.legends = false;
     const RenderedView rendered = renderView(renderer, scene, options);
     EXPECT_TRUE(rendered.vss.shown);

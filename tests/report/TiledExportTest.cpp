@@ -106,11 +106,11 @@ class TiledExportTest : public ::testing::Test {
         ViewExportOptions o;
         o.render.width = 900;
         o.render.height = 600;
-        o.render.style.array = "wss";
-        o.render.vss.enabled = true;
-        o.render.vss.isoLines = 8;
-        o.render.ao.enabled = true;
-        o.render.antialiasing = true;
+        o.render.display.style.array = "wss";
+        o.render.display.vss.enabled = true;
+        o.render.display.vss.isoLines = 8;
+        o.render.display.ao.enabled = true;
+        o.render.display.antialiasing = true;
         o.legends = true;
         return o;
     }
@@ -184,10 +184,10 @@ TEST_F(TiledExportTest, TilesMatchOnePieceWithoutVssAndAoAndWithAFogCue) {
     auto r = renderer();
     ASSERT_TRUE(r);
     ViewExportOptions o = everythingOn();
-    o.render.vss.enabled = false;
-    o.render.ao.enabled = false;
+    o.render.display.vss.enabled = false;
+    o.render.display.ao.enabled = false;
     // The fog cue spans the visible depth range: the whole frame's in every tile.
-    o.render.cue.cue = render::VesselCue::Fog;
+    o.render.display.cue.cue = render::VesselCue::Fog;
     expectTilesMatchOnePiece(*r, scene_, o);
 }
 
@@ -253,11 +253,11 @@ TEST_F(TiledExportTest, AnInjectedVssIsShownAndItsVersionRerunsTheCachedPasses) 
     render::OffscreenOptions o;
     o.width = 200;
     o.height = 150;
-    o.style.array = "";
-    o.ao.enabled = false;
-    o.antialiasing = false;
-    o.vss.isoLines = 0;
-    o.vss.lighting = 0.0F;  // flat chromadepth: red near, blue far
+    o.display.style.array = "";
+    o.display.ao.enabled = false;
+    o.display.antialiasing = false;
+    o.display.vss.isoLines = 0;
+    o.display.vss.lighting = 0.0F;  // flat chromadepth: red near, blue far
     const QImage solved = r->render(scene_, o);
 
     render::ExternalVss injected;

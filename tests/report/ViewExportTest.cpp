@@ -38,9 +38,9 @@ class ViewExportTest : public ::testing::Test {
         ViewExportOptions o;
         o.render.width = width;
         o.render.height = height;
-        o.render.style.array = "wss";
-        o.render.vss.enabled = false;  // background stays background
-        o.render.ao.enabled = false;
+        o.render.display.style.array = "wss";
+        o.render.display.vss.enabled = false;  // background stays background
+        o.render.display.ao.enabled = false;
         return o;
     }
 

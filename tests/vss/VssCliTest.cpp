@@ -231,5 +231,25 @@ TEST(ArtefactsCliTest, RejectsBadOptions) {
               kInvalidInput);
 }
 
+// The VSS exponent is the display setting "vss.p" (app/common/SettingsSchema.h)
+// wherever the command line takes it: one range, one message.
+TEST(ArtefactsCliTest, ExponentHasTheSettingsRangeAndMessage) {
+    const std::string problem = "--p must be a number within 0.25..64, not 100";
+    const std::vector<std::vector<std::string>> commands{
+        {"render", "in.vtp", "-o", "out.png", "--p", "100"},
+        {"vss", "--depth", "in.pfm", "-o", "out.pfm", "--p", "100"},
+        {"artefacts", "--p", "100"},
+        {"bench", "--quick", "--p", "2,100"},
+    };
+    for (const auto& args : commands) {
+        const Outcome o = runCli(args);
+        EXPECT_EQ(o.code, kUsage) << args.front() << ": " << o.err;
+        EXPECT_NE(o.err.find(problem), std::string::npos) << args.front() << ": " << o.err;
+    }
+    // Below the range too, where bench took any p > 0 before.
+    EXPECT_EQ(runCli({"bench", "--quick", "--p", "0.1"}).code, kUsage);
+    EXPECT_EQ(runCli({"artefacts", "--p", "0.1"}).code, kUsage);
+}
+
 }  // namespace
 }  // namespace vv::cli

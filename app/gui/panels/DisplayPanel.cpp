@@ -17,6 +17,7 @@
 
 #include "gui/ViewerWidget.h"
 #include "gui/panels/PanelUtil.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/MeshStyle.h"
 #include "vv/render/ViewPresets.h"
 
@@ -30,7 +31,7 @@ struct BackgroundChoice {
     glm::vec3 color;
 };
 const BackgroundChoice kBackgrounds[] = {
-    {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Dark grey"), {0.13F, 0.14F, 0.16F}},
+    {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Dark grey"), render::kDefaultBackground},
     {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Black"), {0.0F, 0.0F, 0.0F}},
     {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "Mid grey"), {0.5F, 0.5F, 0.5F}},
     {QT_TRANSLATE_NOOP("vv::gui::panels::DisplayPanel", "White"), {1.0F, 1.0F, 1.0F}},

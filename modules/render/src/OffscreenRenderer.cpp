@@ -169,6 +169,12 @@ Image<float> OffscreenRenderer::lastLinearDepth() const {
     return topRowFirst(view_->frameRenderer().lastSolvedDepth());
 }
 
+ViewAnnotations viewAnnotations(const DisplaySettings& display, SceneFrame frame) noexcept {
+    return {.orientationMarker = display.orientationMarker,
+            .scaleBar = display.scaleBar,
+            .frame = frame};
+}
+
 Camera OffscreenRenderer::cameraFor(const scene::Scene& scene, const OffscreenOptions& options) {
     Aabb bounds = scene.bounds();
     if (options.volume && !options.volume->empty()) {
@@ -207,12 +213,7 @@ Camera OffscreenRenderer::setUpScene(const scene::Scene& scene, const OffscreenO
         // Once per scene content, not once per render.
         view_->setSurfaceClosures(scene::surfaceClosures(scene));
     }
-    view_->setStyle(options.style);
-    view_->setBackground(options.background);
-    view_->setVssSettings(options.vss);
-    view_->setVesselCue(options.cue);
-    view_->setAoSettings(options.ao);
-    view_->setAntialiasing(options.antialiasing);
+    view_->setDisplay(options.display);
     // Volume depth source: ray cast after the meshes; its box joins the bounds.
     view_->setVolume(options.volume, options.isoValue);
     return camera;
@@ -290,7 +291,7 @@ QImage OffscreenRenderer::render(const scene::Scene& scene, const OffscreenOptio
     const Camera camera = setUpScene(scene, options);
     view_->render(camera, FrameTarget{output_->framebuffer(), options.width, options.height});
     lastRange_ = view_->shownRange();
-    const Legends legends = options.legends ? view_->legends() : Legends{};
+    const Legends legends = options.display.legends ? view_->legends() : Legends{};
 
     QImage image(options.width, options.height, QImage::Format_RGBA8888);
     if (image.isNull()) {
@@ -306,14 +307,14 @@ QImage OffscreenRenderer::render(const scene::Scene& scene, const OffscreenOptio
     checkGlError(*gl, "reading the rendered image back");
     // GL rows start at the bottom.
     QImage result = image.mirrored(false, true).convertToFormat(QImage::Format_RGB32);
-    if (options.legends) {
+    if (options.display.legends) {
         paintLegends(result, legends);
     }
     // A tile (a camera window) is part of a larger image: that one has them.
-    if ((options.annotations.orientationMarker || options.annotations.scaleBar) &&
-        !camera.window()) {
+    if ((options.display.orientationMarker || options.display.scaleBar) && !camera.window()) {
         QPainter painter(&result);
-        paintViewAnnotations(painter, QRectF(result.rect()), camera, options.annotations);
+        paintViewAnnotations(painter, QRectF(result.rect()), camera,
+                             viewAnnotations(options.display, scene.frame));
     }
     return result;
 }

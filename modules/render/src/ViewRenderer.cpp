@@ -114,6 +114,11 @@ void ViewRenderer::setStyle(const MeshStyle& style) {
     styleDirty_ = true;
 }
 
+void ViewRenderer::setDisplay(const DisplaySettings& display) {
+    setStyle(display.style);
+    display_ = render::frameSettings(display);  // not the member frameSettings()
+}
+
 void ViewRenderer::prepareFrame() {
     MeshRenderer& meshes = frame_.meshRenderer();
     uploadScene();

@@ -80,15 +80,15 @@ std::optional<ReportParameter> parameterOf(const scene::Scene& scene,
                                            const render::OffscreenOptions& view,
                                            const std::optional<std::pair<float, float>>& range,
                                            const StatsThresholds& thresholds) {
-    if (view.style.array.empty() || !range) {
+    if (view.display.style.array.empty() || !range) {
         return std::nullopt;
     }
     ReportParameter parameter;
-    parameter.name = view.style.array;
+    parameter.name = view.display.style.array;
     parameter.unit = arrayUnit(scene, parameter.name);
     parameter.range = *range;
-    parameter.map = view.style.colorMap;
-    parameter.bins = view.style.bins;
+    parameter.map = view.display.style.colorMap;
+    parameter.bins = view.display.style.bins;
     parameter.thresholds = thresholds;
     if (!thresholds.below && !thresholds.above && parameter.name == "wss") {
         parameter.thresholds.below = 0.4;  // low wall shear stress, Pa
@@ -219,7 +219,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             view.render.width = width;
             view.render.height = height;
             view.render.camera = camera;
-            view.render.vss.range = depthRange;
+            view.render.display.vss.range = depthRange;
             view.legends = false;  // painted by the report as vectors
             RenderedView rendered = renderView(renderer, scene, view, rendering);
             return std::pair{ReportView{rendered.image, caption, rendered.legends}, rendered.range};
@@ -236,7 +236,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         content.syntheticDemo = options.source.syntheticDemo;
         content.segmentation = options.source.segmentation;
         auto [view, range] = reportView(
-            base.camera, base.vss.range,
+            base.camera, base.display.vss.range,
             options.viewCaption.empty() ? namedViewCaption({}, scene.frame) : options.viewCaption,
             steps.next(kRenderWeight, ReportText::tr("Rendering the report's view")));
         content.view = std::move(view);
@@ -246,7 +246,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             content.secondView =
                 reportView(render::presetCamera(scene, width, height, options.secondView->preset,
                                                 options.secondView->rotation),
-                           options.secondViewDepthRange.value_or(base.vss.range),
+                           options.secondViewDepthRange.value_or(base.display.vss.range),
                            namedViewCaption(options.secondViewName, scene.frame), rendering)
                     .first;
         }
@@ -258,11 +258,11 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         }
         steps.next(kPdfWeight, ReportText::tr("Laying out the PDF"));
         content.parameter = parameterOf(scene, base, range, options.thresholds);
-        content.settings.vss = base.vss;
-        content.settings.errorBound = vss::makeSolver(base.vss.solver)->errorBound();
-        content.settings.cue = base.cue;
-        content.settings.ambientOcclusion = base.ao.enabled;
-        content.settings.antialiasing = base.antialiasing;
+        content.settings.vss = base.display.vss;
+        content.settings.errorBound = vss::makeSolver(base.display.vss.solver)->errorBound();
+        content.settings.cue = base.display.cue;
+        content.settings.ambientOcclusion = base.display.ao.enabled;
+        content.settings.antialiasing = base.display.antialiasing;
         content.settings.view = options.viewDescription.empty()
                                     ? ReportText::tr("default (fitted)").toStdString()
                                     : options.viewDescription;

@@ -81,9 +81,9 @@ QImage renderFrame(render::OffscreenRenderer& renderer, const scene::Scene& scen
     // Two frames that differ only in the background: the second re-runs the
     // composite, not the solve (the graph caches it).
     render::OffscreenOptions over = frame;
-    over.background = glm::vec3(0.0F);
+    over.display.background = glm::vec3(0.0F);
     const QImage overBlack = renderer.render(scene, over);
-    over.background = glm::vec3(1.0F);
+    over.display.background = glm::vec3(1.0F);
     const QImage overWhite = renderer.render(scene, over);
     return unmix(overBlack, overWhite);
 }
@@ -141,7 +141,7 @@ Image<float> cutForGl(const Image<float>& image, const render::PixelRect& rect) 
 int guardBand(const render::OffscreenOptions& frame, const render::Camera& camera, double nearest,
               int side) {
     double reach = 0.0;
-    const render::AoSettings& ao = frame.ao;
+    const render::AoSettings& ao = frame.display.ao;
     if (ao.enabled && ao.strength > 0.0F) {
         const double pixelScale =
             2.0 * std::tan(glm::radians(static_cast<double>(camera.fieldOfView())) * 0.5) /
@@ -222,7 +222,7 @@ void renderTiled(render::OffscreenRenderer& renderer, const scene::Scene& scene,
     const Image<float> depth =
         tiledDepth(renderer, scene, frame, camera, side, progress.sub(0.0, 0.3));
     progress.report(0.3, "solving the VSS");
-    const render::ExternalVss whole = solveWholeFrame(depth, frame.vss, progress);
+    const render::ExternalVss whole = solveWholeFrame(depth, frame.display.vss, progress);
     double nearest = whole.visibleRange ? whole.visibleRange->first : 0.0;
     if (whole.height.width() != 0 && std::isfinite(whole.dmin)) {
         nearest = std::min(nearest, whole.dmin);  // a fixed VSS range may start nearer
@@ -302,8 +302,9 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
     const int limit = renderer.maxRenderSide();  // its own context: no probe surface
     int side = tileSideFor(options, limit);
     render::OffscreenOptions frame = options.render;
-    frame.legends = false;
-    frame.annotations = {.orientationMarker = false, .scaleBar = false};  // painted below
+    frame.display.legends = false;  // both painted below
+    frame.display.orientationMarker = false;
+    frame.display.scaleBar = false;
     RenderedView result;
     progress.throwIfCancelled();
     if (side == 0) {
@@ -326,13 +327,8 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
     result.range = renderer.lastRange();
     result.vss = renderer.vssStatus();
 
-    render::FrameSettings settings;
-    settings.background = options.render.background;
-    settings.vss = frame.vss;
-    settings.cue = frame.cue;
-    settings.ao = frame.ao;
-    settings.antialiasing = frame.antialiasing;
-    result.legends = render::legendsFor(&scene, frame.style, result.range, settings, result.vss,
+    result.legends = render::legendsFor(&scene, frame.display.style, result.range,
+                                        render::frameSettings(frame.display), result.vss,
                                         renderer.lastCueDepthRange());
     if (options.legends && !result.legends.empty()) {
         const double scale =
@@ -344,11 +340,12 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
         render::paintLegends(painter, QRectF(0.0, 0.0, width / scale, height / scale),
                              result.legends);
     }
-    if (options.render.annotations.orientationMarker || options.render.annotations.scaleBar) {
+    const render::DisplaySettings& display = options.render.display;
+    if (display.orientationMarker || display.scaleBar) {
         QPainter painter(&result.image);  // over the whole image, with its whole camera
         render::paintViewAnnotations(painter, QRectF(result.image.rect()),
                                      render::OffscreenRenderer::cameraFor(scene, options.render),
-                                     options.render.annotations);
+                                     render::viewAnnotations(display, scene.frame));
     }
     return result;
 }

@@ -14,6 +14,10 @@
 
 namespace vv::render {
 
+/// The default background: a dark grey (sRGB), of frames, offscreen renders,
+/// exports and the display settings alike.
+inline constexpr glm::vec3 kDefaultBackground{0.13F, 0.14F, 0.16F};
+
 /// How the Void Space Surface is computed and shaded.
 struct VssSettings {
     bool enabled = true;
@@ -95,9 +99,11 @@ struct AoSettings {
 }
 
 /// Everything a frame needs besides the camera, the scene and the mesh style
-/// (which lives in FrameRenderer::meshRenderer()).
+/// (which lives in FrameRenderer::meshRenderer()). A still frame's are
+/// frameSettings() of the display settings (DisplaySettings.h); the
+/// refinement policy lowers them for moving frames.
 struct FrameSettings {
-    glm::vec3 background{0.13F, 0.14F, 0.16F};  ///< sRGB
+    glm::vec3 background{kDefaultBackground};  ///< sRGB
     VssSettings vss;
     VesselCueSettings cue;
     AoSettings ao;

@@ -10,7 +10,7 @@
 
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
-#include "vv/render/FrameRenderer.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/MeshStyle.h"
 #include "vv/scene/ArrayLabels.h"
 #include "vv/scene/Mesh.h"

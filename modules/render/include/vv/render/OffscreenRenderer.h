@@ -3,7 +3,6 @@
 
 #include <QImage>
 #include <cstdint>
-#include <glm/glm.hpp>
 #include <memory>
 #include <optional>
 #include <string>
@@ -11,8 +10,8 @@
 #include <vector>
 
 #include "vv/render/Camera.h"
+#include "vv/render/DisplaySettings.h"
 #include "vv/render/FrameRenderer.h"
-#include "vv/render/MeshStyle.h"
 #include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
@@ -27,9 +26,26 @@ namespace vv::render {
 struct OffscreenOptions {
     int width = 1024;  ///< pixels, 1..16384
     int height = 768;  ///< pixels, 1..16384
-    /// Background colour, sRGB in [0, 1].
-    glm::vec3 background{0.13F, 0.14F, 0.16F};
-    MeshStyle style;
+    /// The display settings: background, mesh style, VSS (on by default:
+    /// chromadepth, fast solver; void pixels show it where one exists, else
+    /// the background), vessel cue (none by default), ambient occlusion over
+    /// vessels + VSS and FXAA on the final image (both on by default; the
+    /// VSS input is unaffected). Painted over the image: the legends of the
+    /// scales in use (LegendPainter: the depth legend when a VSS is shown,
+    /// the parameter legend when an array is), and the orientation marker
+    /// and scale bar (paintViewAnnotations with the frame's camera and the
+    /// scene's frame, viewAnnotations()). Unlike DisplaySettings{}, all three
+    /// are off by default: the CLI and the GUI's exports take them from
+    /// their display settings.
+    DisplaySettings display{.vss = {},
+                            .ao = {},
+                            .cue = {},
+                            .style = {},
+                            .background = kDefaultBackground,
+                            .legends = false,
+                            .orientationMarker = false,
+                            .scaleBar = false,
+                            .antialiasing = true};
     /// The view; nullopt = the scene's home orientation (homeRotation() of
     /// its frame: anterior for the patient frame) fitted to the scene.
     /// A given camera gets its viewport set to width x height, unless it has
@@ -38,26 +54,8 @@ struct OffscreenOptions {
     std::optional<Camera> camera;
     /// Multisampling samples: kept for compatibility and ignored, because the
     /// frame's G-buffer is not multisampled (the VSS needs one depth per
-    /// pixel); edges are anti-aliased by FXAA instead (`antialiasing`).
+    /// pixel); edges are anti-aliased by FXAA instead (display.antialiasing).
     int samples = 4;
-    /// The Void Space Surface: on by default (chromadepth, fast solver).
-    /// With it on, void pixels show the VSS where one exists; off, they show
-    /// the background.
-    VssSettings vss;
-    /// A depth cue on the vessels themselves (none by default).
-    VesselCueSettings cue;
-    /// Ambient occlusion over vessels + VSS (on by default).
-    AoSettings ao;
-    /// FXAA on the final image (on by default); the VSS input is unaffected.
-    bool antialiasing = true;
-    /// Paint the legends of the scales in use onto the image (LegendPainter):
-    /// the depth legend when a VSS is shown, the parameter legend when an
-    /// array is shown. Off by default; the CLI turns it on.
-    bool legends = false;
-    /// Orientation marker and scale bar painted over the image
-    /// (paintViewAnnotations, with the camera of the frame). Off by default;
-    /// the GUI's exports and the CLI take them from the display settings.
-    ViewAnnotations annotations{.orientationMarker = false, .scaleBar = false};
     /// Volume depth source: a volume ray cast into the G-buffer after the
     /// scene's meshes (FrameRenderer::setVolume) at the iso value `isoValue`
     /// (its units, e.g. HU); nullptr = none. Its world bounds join the
@@ -65,6 +63,11 @@ struct OffscreenOptions {
     std::shared_ptr<const scene::Volume> volume;
     float isoValue = 150.0F;
 };
+
+/// The orientation marker and scale bar `display` asks for, named in
+/// `frame` (the rendered scene's scene::Scene::frame).
+[[nodiscard]] ViewAnnotations viewAnnotations(const DisplaySettings& display,
+                                              SceneFrame frame) noexcept;
 
 /// Renders scenes into images without a window: its own OpenGL 4.1 core
 /// context on a QOffscreenSurface and the same ViewRenderer (scene upload,

@@ -13,6 +13,7 @@
 #include "vv/core/Image.h"
 #include "vv/core/Math.h"
 #include "vv/render/Camera.h"
+#include "vv/render/DisplaySettings.h"
 #include "vv/render/FrameRenderer.h"
 #include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
@@ -157,6 +158,10 @@ class ViewRenderer {
     void setVesselCue(const VesselCueSettings& cue) noexcept { display_.cue = cue; }
     void setBackground(const glm::vec3& color) noexcept { display_.background = color; }
     void setAntialiasing(bool on) noexcept { display_.antialiasing = on; }
+    /// The style and the still frames' settings of `display` at once
+    /// (setStyle(display.style), frameSettings(display)); its legends and
+    /// annotations are the caller's to paint.
+    void setDisplay(const DisplaySettings& display);
     /// The display settings (what a still frame is drawn with).
     [[nodiscard]] const FrameSettings& displaySettings() const noexcept { return display_; }
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "vv/colormaps/ColorMap.h"
-#include "vv/render/FrameRenderer.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/report/ParameterStats.h"
 #include "vv/report/ReportPatient.h"

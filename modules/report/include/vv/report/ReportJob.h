@@ -63,7 +63,7 @@ struct ReportJobOptions {
     /// An optional second view (a preset camera on the scene) and its name.
     std::optional<render::NamedView> secondView;
     std::string secondViewName;
-    /// The depth range of the second view; nullopt = view.vss.range. Every
+    /// The depth range of the second view; nullopt = view.display.vss.range. Every
     /// legend describes its own image: when `view` pins the first view's
     /// "Visible vessels" range to the screen's (gui::currentViewOptions), the
     /// second view, another camera, takes the range the user chose (its own

@@ -7,7 +7,7 @@
 #include <utility>
 
 #include "vv/core/Progress.h"
-#include "vv/render/FrameRenderer.h"
+#include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/scene/Mesh.h"
@@ -20,14 +20,14 @@ inline constexpr long long kMaxExportPixels = 7680LL * 4320LL;
 
 /// How to export the view as an image.
 struct ViewExportOptions {
-    /// Size, camera, style, VSS, cue, AO, FXAA, background. `render.legends`
-    /// is ignored: the legends are painted by renderView() (`legends` below).
+    /// Size, camera and display settings. `render.display.legends` is
+    /// ignored: the legends are painted by renderView() (`legends` below).
     render::OffscreenOptions render;
     /// Paint the legends of the scales in use (render::paintLegends), scaled
     /// with the image so that they cover the same share of it at any size
     /// (as in a 1600 x 1200 view).
     bool legends = true;
-    /// Background pixels transparent (alpha 0) instead of `render.background`;
+    /// Background pixels transparent (alpha 0) instead of `render.display.background`;
     /// partly covered pixels (anti-aliased edges, a VSS with opacity < 1, fog)
     /// get the matching partial alpha.
     bool transparentBackground = false;
