@@ -15,6 +15,323 @@
 #include "FastKernel.h"
 
 namespace vv::vss::detail::fast {
+namespace {
+
+// coefficients below float's normal range lose at most 2^-149 each (<= 169 of them)
+constexpr double kUnderflow = 1e-40;
+constexpr std::size_t kSquare = static_cast<std::size_t>(kS) * kS;
+constexpr std::size_t kTilePixels = static_cast<std::size_t>(kLeafTile) * kLeafTile;
+
+// The tile in the images: origin, size and the rows with region pixels.
+struct LeafTile {
+    int x0 = 0, y0 = 0;  // origin (X0, Y0)
+    int cols = 0, rows = 0;
+    std::uint32_t rowMask = 0;  // bit r: row r has region pixels
+};
+
+LeafTile leafTile(const Region& rg, int ix, int iy) {
+    LeafTile t;
+    t.x0 = rg.rx0 + ix * kLeafTile;
+    t.y0 = rg.ry0 + iy * kLeafTile;
+    t.cols = std::min(kLeafTile, rg.rx1 - t.x0);
+    t.rows = std::min(kLeafTile, rg.ry1 - t.y0);
+    for (int r = 0; r < t.rows; ++r) {
+        const std::int32_t* lab = rg.labels.row(t.y0 + r) + t.x0;
+        for (int c = 0; c < t.cols; ++c) {
+            if (lab[c] == rg.id) {
+                t.rowMask |= 1U << r;
+                break;
+            }
+        }
+    }
+    return t;
+}
+
+// Row r's failure bits (bit c: pixel c failed), all set when every pixel fails.
+std::uint32_t failBits(const std::array<std::uint32_t, kLeafTile>& fail, bool allFail, int r) {
+    return allFail ? ~0U : fail[static_cast<std::size_t>(r)];
+}
+
+// Scratch of one thread, reused by every leaf.
+struct Scratch {
+    std::vector<float> px, py, pz;  // the near points, relative to the tile origin
+    std::vector<float> ax, ay, az;  // every contour point of the region, likewise
+};
+
+Scratch& scratch() {
+    thread_local Scratch s;
+    return s;
+}
+
+// The near points (K of them) relative to the tile origin; returns the
+// squared distance of the nearest to the pixel box.
+double gatherNearPoints(const Region& rg, const BoxGeo& geo, const std::vector<int>& nearNodes,
+                        std::size_t count, const LeafTile& t, Scratch& sc) {
+    if (sc.px.size() < count) {
+        sc.px.resize(count);
+        sc.py.resize(count);
+        sc.pz.resize(count);
+    }
+    double dbm2 = std::numeric_limits<double>::infinity();
+    std::size_t k = 0;
+    for (int nd : nearNodes) {
+        const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
+        for (int i = c.begin; i < c.end; ++i) {
+            const Point& q = rg.tree.pts[static_cast<std::size_t>(i)];
+            sc.px[k] = static_cast<float>(q.x - t.x0);
+            sc.py[k] = static_cast<float>(q.y - t.y0);
+            sc.pz[k] = q.z;
+            ++k;
+            const double gx = std::max({0, q.x - geo.maxx, geo.minx - q.x});
+            const double gy = std::max({0, q.y - geo.maxy, geo.miny - q.y});
+            dbm2 = std::min(dbm2, gx * gx + gy * gy);
+        }
+    }
+    return dbm2;
+}
+
+// The tile's local expansion as polynomials (zero without one) and the sums
+// of their |c_ij|.
+struct LeafPoly {
+    bool has = false;
+    std::array<double, kSquare> cD{}, cN{};
+    double sumD = 0.0, sumN = 0.0;
+};
+
+void leafPolynomial(const Local* far, const PowerTables& tab, LeafPoly& poly) {
+    poly.has = far != nullptr;
+    if (!poly.has) {
+        return;
+    }
+    localToPoly(far->d, tab.degree, tab, poly.cD);
+    localToPoly(far->n, tab.degree, tab, poly.cN);
+    double sumD = 0.0;  // in registers, not through poly
+    double sumN = 0.0;
+    for (std::size_t i = 0; i < kSquare; ++i) {
+        sumD += std::abs(poly.cD[i]);
+        sumN += std::abs(poly.cN[i]);
+    }
+    poly.sumD = sumD;
+    poly.sumN = sumN;
+}
+
+// The check's mode and constants (the comment at the top of FastSolver.cpp).
+struct LeafTolerances {
+    bool tileMode = false;  // one weight scale for the tile (else one per pixel)
+    double tolRem = 0.0;    // tol per unit of D left after the near sums' arithmetic
+    double farArith = 0.0;  // the polynomial's round-off
+};
+
+LeafTolerances leafTolerances(const Region& rg, const BoxGeo& geo, const LeafBounds& bounds,
+                              const LeafPoly& poly, std::size_t count, double dbm2) {
+    const PowerTables& tab = *rg.tab;
+    LeafTolerances tl;
+    const double diag = std::hypot(static_cast<double>(geo.maxx - geo.minx),
+                                   static_cast<double>(geo.maxy - geo.miny));
+    tl.tileMode = count > 0 && tab.p * std::log2((std::sqrt(dbm2) + diag + 1.0) / bounds.S) <= 60.0;
+    const double gammaK = (static_cast<double>(count) + 8.0) * kU * 1.01;
+    const double gammaPoly = (3.0 * tab.degree + 12.0) * kU * 1.01;
+    const double deltaAll = rg.deltaW * (tl.tileMode ? 1.0 : 2.0);
+    tl.tolRem = rg.tol * (1.0 - 1e-6) - rg.dz * (deltaAll + gammaK) - 16.0 * kU;
+    tl.farArith =
+        gammaPoly * (poly.sumN + (0.5 * rg.dz + kU) * poly.sumD) + 1e-11 * bounds.W * (1.0 + rg.dz);
+    return tl;
+}
+
+// The kernel's arguments and the float coefficients they point at (not to
+// be copied); allFail: the kernel is not run, every pixel is exact.
+struct KernelInput {
+    LeafKernelArgs args;
+    std::array<float, kSquare> fD{}, fN{};
+    bool allFail = false;
+    KernelInput() = default;
+    KernelInput(const KernelInput&) = delete;
+    KernelInput(KernelInput&&) = delete;
+    KernelInput& operator=(const KernelInput&) = delete;
+    KernelInput& operator=(KernelInput&&) = delete;
+    ~KernelInput() = default;
+};
+
+// The weights' scale: one for the tile, or per pixel (large p, far from
+// the points; the polynomial then scaled to S_F). Returns the polynomial's scale.
+double setWeightScale(const Region& rg, const LeafBounds& bounds, const LeafTolerances& tl,
+                      bool hasLocal, KernelInput& in) {
+    const PowerTables& tab = *rg.tab;
+    LeafKernelArgs& a = in.args;
+    double polyScale = 1.0;
+    if (tl.tileMode) {
+        a.perPixel = false;
+        a.s2 = static_cast<float>(bounds.S * bounds.S);
+        // (1 + p u): the near weights use S^2 rounded to float
+        a.errAbs =
+            static_cast<float>((bounds.E + tl.farArith) * (1.0 + 1e-6 + tab.p * kU) + kUnderflow);
+        return polyScale;
+    }
+    a.perPixel = true;
+    if (hasLocal) {
+        polyScale = tab.pw((bounds.Sexp * bounds.Sexp) / (bounds.S * bounds.S));
+        a.s2 = static_cast<float>(bounds.Sexp * bounds.Sexp);
+        if (!std::isfinite(polyScale) || !std::isfinite(a.s2)) {
+            in.allFail = true;
+        }
+    } else {
+        a.s2 = std::numeric_limits<float>::infinity();
+    }
+    a.farArith = static_cast<float>(tl.farArith * polyScale * (1.0 + 1e-6) + kUnderflow);
+    if (!std::isfinite(a.farArith)) {
+        in.allFail = true;
+    }
+    const double margin = 1e-4 + tab.halfP * 4e-6;
+    a.log2DzE = bounds.E > 0.0 ? static_cast<float>(std::log2(bounds.E) + margin) : -1000.0F;
+    a.log2LeafS2 = static_cast<float>(std::log2(bounds.S * bounds.S));
+    return polyScale;
+}
+
+// Fills in: the near points, the check's constants, the weight scale and the
+// polynomial (its coefficients times polyScale).
+void setUpKernel(const Region& rg, const BoxGeo& geo, const LeafTile& t, const LeafBounds& bounds,
+                 const LeafPoly& poly, const LeafTolerances& tl, std::size_t count,
+                 const Scratch& sc, KernelInput& in) {
+    LeafKernelArgs& a = in.args;
+    a.rows = t.rows;
+    a.rowMask = t.rowMask;
+    a.px = sc.px.data();
+    a.py = sc.py.data();
+    a.pz = sc.pz.data();
+    a.count = static_cast<int>(count);
+    a.zref = static_cast<float>(rg.zref);
+    a.zmin = rg.zminOut;
+    a.zmax = rg.zmaxOut;
+    a.power = rg.kp;
+    a.tolRemaining = static_cast<float>(tl.tolRem);
+    in.allFail = tl.tolRem <= 0.0;
+    const double polyScale = setWeightScale(rg, bounds, tl, poly.has, in);
+    if (poly.has && (poly.sumD + poly.sumN) * polyScale > 1e30) {
+        in.allFail = true;  // would not fit in float (not seen in practice): be exact
+    }
+    if (poly.has) {
+        a.degree = rg.tab->degree;
+        for (std::size_t i = 0; i < kSquare; ++i) {
+            in.fD[i] = static_cast<float>(poly.cD[i] * polyScale);
+            in.fN[i] = static_cast<float>(poly.cN[i] * polyScale);
+        }
+        a.polyD = in.fD.data();
+        a.polyN = in.fN.data();
+        a.tu = static_cast<float>(geo.tx - t.x0);
+        a.tv = static_cast<float>(geo.ty - t.y0);
+        a.invA = static_cast<float>(1.0 / geo.an);
+    }
+}
+
+// The kernel's values and failure bits of a tile.
+struct TileValues {
+    std::array<float, kTilePixels> z{};
+    std::array<std::uint32_t, kLeafTile> fail{};
+};
+
+// Region pixels of the tile that failed the check.
+int countFailures(const Region& rg, const LeafTile& t, const TileValues& v, bool allFail) {
+    int nFail = 0;
+    for (int r = 0; r < t.rows; ++r) {
+        if (((t.rowMask >> r) & 1U) == 0) {
+            continue;
+        }
+        const std::int32_t* lab = rg.labels.row(t.y0 + r) + t.x0;
+        const std::uint32_t rowFail = failBits(v.fail, allFail, r);
+        for (int c = 0; c < t.cols; ++c) {
+            nFail += (lab[c] == rg.id && ((rowFail >> c) & 1U) != 0) ? 1 : 0;
+        }
+    }
+    return nFail;
+}
+
+// Safety net: when many pixels of the tile fail the check, evaluate the whole
+// tile exactly (every contour point of the region, no expansion) with the
+// kernel before falling back to the per-pixel double-precision sum. Returns
+// whether it did (into exact).
+bool exactTile(const Region& rg, const LeafTile& t, const KernelInput& in, const TileValues& v,
+               Scratch& sc, TileValues& exact) {
+    std::uint32_t anyFail = in.allFail ? 1U : 0U;
+    for (int r = 0; r < t.rows; ++r) {
+        anyFail |= v.fail[static_cast<std::size_t>(r)];
+    }
+    if (anyFail == 0) {  // no pixel failed: skip the count (the common case)
+        return false;
+    }
+    const int nFail = countFailures(rg, t, v, in.allFail);
+    const double nAll = rg.n;
+    const double tolAll =
+        rg.tol * (1.0 - 1e-6) - rg.dz * (2.0 * rg.deltaW + (nAll + 8.0) * kU * 1.01) - 16.0 * kU;
+    if (!(nFail > 16 && tolAll > 0.0 && nAll < 1e7)) {
+        return false;
+    }
+    const std::size_t nn = rg.tree.pts.size();
+    sc.ax.resize(nn);
+    sc.ay.resize(nn);
+    sc.az.resize(nn);
+    for (std::size_t i = 0; i < nn; ++i) {
+        const Point& q = rg.tree.pts[i];
+        sc.ax[i] = static_cast<float>(q.x - t.x0);
+        sc.ay[i] = static_cast<float>(q.y - t.y0);
+        sc.az[i] = q.z;
+    }
+    LeafKernelArgs b = in.args;
+    b.px = sc.ax.data();
+    b.py = sc.ay.data();
+    b.pz = sc.az.data();
+    b.count = static_cast<int>(nn);
+    b.degree = -1;
+    b.perPixel = true;
+    b.s2 = std::numeric_limits<float>::infinity();
+    b.farArith = 0.0F;
+    b.log2DzE = -1000.0F;
+    b.tolRemaining = static_cast<float>(tolAll);
+    leafKernel(b, exact.z.data(), exact.fail.data());
+    return true;
+}
+
+// Writes every region pixel of the tile: the kernel's value, or for one that
+// failed the exact tile's (when it has one that passed) or the
+// double-precision sum. Returns how many pixels it wrote, how many failed.
+struct Written {
+    std::int64_t pixels = 0;
+    std::int64_t fallbacks = 0;
+};
+
+Written writePixels(const Region& rg, const LeafTile& t, const TileValues& v, bool allFail,
+                    const TileValues* exact) {
+    std::int64_t pixels = 0;  // in registers, not through a struct
+    std::int64_t fallbacks = 0;
+    for (int r = 0; r < t.rows; ++r) {
+        if (((t.rowMask >> r) & 1U) == 0) {
+            continue;
+        }
+        const std::int32_t* lab = rg.labels.row(t.y0 + r) + t.x0;
+        float* o = rg.out.row(t.y0 + r) + t.x0;
+        const std::uint32_t rowFail = failBits(v.fail, allFail, r);
+        for (int c = 0; c < t.cols; ++c) {
+            if (lab[c] != rg.id) {
+                continue;
+            }
+            ++pixels;
+            const auto i = static_cast<std::size_t>(r) * kLeafTile + static_cast<std::size_t>(c);
+            if (((rowFail >> c) & 1U) != 0) {
+                ++fallbacks;
+                if (exact != nullptr &&
+                    ((exact->fail[static_cast<std::size_t>(r)] >> c) & 1U) == 0) {
+                    o[c] = exact->z[i];
+                } else {
+                    o[c] = exactPixel(rg, t.x0 + c, t.y0 + r);
+                }
+            } else {
+                o[c] = v.z[i];
+            }
+        }
+    }
+    return {pixels, fallbacks};
+}
+
+}  // namespace
 
 __attribute__((noinline)) float exactPixel(const Region& rg, int x, int y) {
     double dmin2 = std::numeric_limits<double>::infinity();
@@ -24,244 +341,45 @@ __attribute__((noinline)) float exactPixel(const Region& rg, int x, int y) {
         dmin2 = std::min(dmin2, dx * dx + dy * dy);
     }
     dmin2 = std::max(dmin2, 1e-300);
-    double D = 0.0;
-    double N = 0.0;
+    double sumD = 0.0;
+    double sumN = 0.0;
     for (const Point& q : rg.tree.pts) {
         const double dx = static_cast<double>(x) - q.x;
         const double dy = static_cast<double>(y) - q.y;
         const double d2 = std::max(dx * dx + dy * dy, 1e-300);
         const double w = rg.tab->pw(dmin2 / d2);
-        D += w;
-        N += w * static_cast<double>(q.z);
+        sumD += w;
+        sumN += w * static_cast<double>(q.z);
     }
-    const double z = rg.zref + N / D;
+    const double z = rg.zref + sumN / sumD;
     return std::clamp(static_cast<float>(z), rg.zminOut, rg.zmaxOut);
 }
 
 LeafCounts evalLeaf(const Region& rg, int ix, int iy, const BoxGeo& geo,
                     const std::vector<int>& nearNodes, const Local* far, const LeafBounds& bounds) {
-    const bool hasLocal = far != nullptr;
-    const double S = bounds.S;
-    const double E = bounds.E;
-    const double W = bounds.W;
-    const double Sexp = bounds.Sexp;
-    const PowerTables& tab = *rg.tab;
-    const int X0 = rg.rx0 + ix * kLeafTile;
-    const int Y0 = rg.ry0 + iy * kLeafTile;
-    const int cols = std::min(kLeafTile, rg.rx1 - X0);
-    const int rows = std::min(kLeafTile, rg.ry1 - Y0);
-    std::uint32_t rowMask = 0;
-    for (int r = 0; r < rows; ++r) {
-        const std::int32_t* lab = rg.labels.row(Y0 + r) + X0;
-        for (int c = 0; c < cols; ++c) {
-            if (lab[c] == rg.id) {
-                rowMask |= 1U << r;
-                break;
-            }
-        }
+    const LeafTile t = leafTile(rg, ix, iy);
+    const std::size_t count = pointCount(rg.tree, nearNodes);
+    Scratch& sc = scratch();
+    const double dbm2 = gatherNearPoints(rg, geo, nearNodes, count, t, sc);
+    LeafPoly poly;
+    leafPolynomial(far, *rg.tab, poly);
+    const LeafTolerances tl = leafTolerances(rg, geo, bounds, poly, count, dbm2);
+    KernelInput in;
+    setUpKernel(rg, geo, t, bounds, poly, tl, count, sc, in);
+    TileValues v;
+    if (!in.allFail) {
+        leafKernel(in.args, v.z.data(), v.fail.data());
     }
-    // near points, relative to the tile origin
-    std::size_t K = 0;
-    for (int nd : nearNodes) {
-        K += static_cast<std::size_t>(rg.tree.nodes[static_cast<std::size_t>(nd)].count());
-    }
-    thread_local std::vector<float> px;  // scratch, reused by every leaf of this thread
-    thread_local std::vector<float> py;
-    thread_local std::vector<float> pz;
-    if (px.size() < K) {
-        px.resize(K);
-        py.resize(K);
-        pz.resize(K);
-    }
-    double dbm2 = std::numeric_limits<double>::infinity();  // nearest point to the pixel box
-    std::size_t k = 0;
-    for (int nd : nearNodes) {
-        const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
-        for (int i = c.begin; i < c.end; ++i) {
-            const Point& q = rg.tree.pts[static_cast<std::size_t>(i)];
-            px[k] = static_cast<float>(q.x - X0);
-            py[k] = static_cast<float>(q.y - Y0);
-            pz[k] = q.z;
-            ++k;
-            const double gx = std::max({0, q.x - geo.maxx, geo.minx - q.x});
-            const double gy = std::max({0, q.y - geo.maxy, geo.miny - q.y});
-            dbm2 = std::min(dbm2, gx * gx + gy * gy);
-        }
-    }
-    const int deg = tab.degree;
-    std::array<double, kS * kS> cD{};
-    std::array<double, kS * kS> cN{};
-    double sumD = 0.0;
-    double sumN = 0.0;
-    if (hasLocal) {
-        localToPoly(far->d, deg, tab, cD);
-        localToPoly(far->n, deg, tab, cN);
-        for (int i = 0; i < kS * kS; ++i) {
-            sumD += std::abs(cD[static_cast<std::size_t>(i)]);
-            sumN += std::abs(cN[static_cast<std::size_t>(i)]);
-        }
-    }
-    const double diag = std::hypot(static_cast<double>(geo.maxx - geo.minx),
-                                   static_cast<double>(geo.maxy - geo.miny));
-    const bool tileMode = K > 0 && tab.p * std::log2((std::sqrt(dbm2) + diag + 1.0) / S) <= 60.0;
-    const double gammaK = (static_cast<double>(K) + 8.0) * kU * 1.01;
-    const double gammaPoly = (3.0 * deg + 12.0) * kU * 1.01;
-    const double deltaAll = rg.deltaW * (tileMode ? 1.0 : 2.0);
-    const double tolRem = rg.tol * (1.0 - 1e-6) - rg.dz * (deltaAll + gammaK) - 16.0 * kU;
-    const double farArith =
-        gammaPoly * (sumN + (0.5 * rg.dz + kU) * sumD) + 1e-11 * W * (1.0 + rg.dz);
-    // coefficients below float's normal range lose at most 2^-149 each (<= 169 of them)
-    constexpr double kUnderflow = 1e-40;
+    TileValues exact;
+    const bool haveExact = exactTile(rg, t, in, v, sc, exact);
 
-    LeafKernelArgs a;
-    a.rows = rows;
-    a.rowMask = rowMask;
-    a.px = px.data();
-    a.py = py.data();
-    a.pz = pz.data();
-    a.count = static_cast<int>(K);
-    a.zref = static_cast<float>(rg.zref);
-    a.zmin = rg.zminOut;
-    a.zmax = rg.zmaxOut;
-    a.power = rg.kp;
-    a.tolRemaining = static_cast<float>(tolRem);
-    std::array<float, kS * kS> fD{};
-    std::array<float, kS * kS> fN{};
-    bool allFail = tolRem <= 0.0;
-    double polyScale = 1.0;
-    if (tileMode) {
-        a.perPixel = false;
-        a.s2 = static_cast<float>(S * S);
-        // (1 + p u): the near weights use S^2 rounded to float
-        a.errAbs = static_cast<float>((E + farArith) * (1.0 + 1e-6 + tab.p * kU) + kUnderflow);
-    } else {
-        a.perPixel = true;
-        if (hasLocal) {
-            polyScale = tab.pw((Sexp * Sexp) / (S * S));
-            a.s2 = static_cast<float>(Sexp * Sexp);
-            if (!std::isfinite(polyScale) || !std::isfinite(a.s2)) {
-                allFail = true;
-            }
-        } else {
-            a.s2 = std::numeric_limits<float>::infinity();
-        }
-        a.farArith = static_cast<float>(farArith * polyScale * (1.0 + 1e-6) + kUnderflow);
-        if (!std::isfinite(a.farArith)) {
-            allFail = true;
-        }
-        const double margin = 1e-4 + tab.halfP * 4e-6;
-        a.log2DzE = E > 0.0 ? static_cast<float>(std::log2(E) + margin) : -1000.0F;
-        a.log2LeafS2 = static_cast<float>(std::log2(S * S));
-    }
-    if (hasLocal && (sumD + sumN) * polyScale > 1e30) {
-        allFail = true;  // would not fit in float (not seen in practice): be exact
-    }
-    if (hasLocal) {
-        a.degree = deg;
-        for (int i = 0; i < kS * kS; ++i) {
-            fD[static_cast<std::size_t>(i)] =
-                static_cast<float>(cD[static_cast<std::size_t>(i)] * polyScale);
-            fN[static_cast<std::size_t>(i)] =
-                static_cast<float>(cN[static_cast<std::size_t>(i)] * polyScale);
-        }
-        a.polyD = fD.data();
-        a.polyN = fN.data();
-        a.tu = static_cast<float>(geo.tx - X0);
-        a.tv = static_cast<float>(geo.ty - Y0);
-        a.invA = static_cast<float>(1.0 / geo.an);
-    }
-    std::array<float, kLeafTile * kLeafTile> z{};
-    std::array<std::uint32_t, kLeafTile> fail{};
-    if (!allFail) {
-        leafKernel(a, z.data(), fail.data());
-    }
-    // Safety net: when many pixels of the tile fail the check, evaluate the whole
-    // tile exactly (every contour point of the region, no expansion) with the
-    // kernel before falling back to the per-pixel double-precision sum.
-    std::array<float, kLeafTile * kLeafTile> z2{};
-    std::array<std::uint32_t, kLeafTile> fail2{};
-    bool haveExactTile = false;
-    std::uint32_t anyFail = allFail ? 1U : 0U;
-    for (int r = 0; r < rows; ++r) {
-        anyFail |= fail[static_cast<std::size_t>(r)];
-    }
-    if (anyFail != 0) {  // else no pixel failed: skip the count (the common case)
-        int nFail = 0;
-        for (int r = 0; r < rows; ++r) {
-            if (((rowMask >> r) & 1U) == 0) {
-                continue;
-            }
-            const std::int32_t* lab = rg.labels.row(Y0 + r) + X0;
-            for (int c = 0; c < cols; ++c) {
-                nFail += (lab[c] == rg.id &&
-                          (allFail || ((fail[static_cast<std::size_t>(r)] >> c) & 1U) != 0))
-                             ? 1
-                             : 0;
-            }
-        }
-        const double nAll = rg.n;
-        const double tolAll = rg.tol * (1.0 - 1e-6) -
-                              rg.dz * (2.0 * rg.deltaW + (nAll + 8.0) * kU * 1.01) - 16.0 * kU;
-        if (nFail > 16 && tolAll > 0.0 && nAll < 1e7) {
-            thread_local std::vector<float> ax;
-            thread_local std::vector<float> ay;
-            thread_local std::vector<float> az;
-            const std::size_t nn = rg.tree.pts.size();
-            ax.resize(nn);
-            ay.resize(nn);
-            az.resize(nn);
-            for (std::size_t i = 0; i < nn; ++i) {
-                const Point& q = rg.tree.pts[i];
-                ax[i] = static_cast<float>(q.x - X0);
-                ay[i] = static_cast<float>(q.y - Y0);
-                az[i] = q.z;
-            }
-            LeafKernelArgs b = a;
-            b.px = ax.data();
-            b.py = ay.data();
-            b.pz = az.data();
-            b.count = static_cast<int>(nn);
-            b.degree = -1;
-            b.perPixel = true;
-            b.s2 = std::numeric_limits<float>::infinity();
-            b.farArith = 0.0F;
-            b.log2DzE = -1000.0F;
-            b.tolRemaining = static_cast<float>(tolAll);
-            leafKernel(b, z2.data(), fail2.data());
-            haveExactTile = true;
-        }
-    }
-    std::int64_t pixels = 0;
-    std::int64_t fallbacks = 0;
-    for (int r = 0; r < rows; ++r) {
-        if (((rowMask >> r) & 1U) == 0) {
-            continue;
-        }
-        const std::int32_t* lab = rg.labels.row(Y0 + r) + X0;
-        float* o = rg.out.row(Y0 + r) + X0;
-        for (int c = 0; c < cols; ++c) {
-            if (lab[c] != rg.id) {
-                continue;
-            }
-            ++pixels;
-            if (allFail || ((fail[static_cast<std::size_t>(r)] >> c) & 1U) != 0) {
-                ++fallbacks;
-                if (haveExactTile && ((fail2[static_cast<std::size_t>(r)] >> c) & 1U) == 0) {
-                    o[c] = z2[static_cast<std::size_t>(r * kLeafTile + c)];
-                } else {
-                    o[c] = exactPixel(rg, X0 + c, Y0 + r);
-                }
-            } else {
-                o[c] = z[static_cast<std::size_t>(r * kLeafTile + c)];
-            }
-        }
-    }
+    const Written written = writePixels(rg, t, v, in.allFail, haveExact ? &exact : nullptr);
     LeafCounts counts;
-    counts.pixels = pixels;
-    counts.fallbackPixels = fallbacks;
-    counts.nearPairs = static_cast<std::int64_t>(K) * std::popcount(rowMask);
-    counts.perPixel = !tileMode;
-    counts.exactTile = haveExactTile;
+    counts.pixels = written.pixels;
+    counts.fallbackPixels = written.fallbacks;
+    counts.nearPairs = static_cast<std::int64_t>(count) * std::popcount(t.rowMask);
+    counts.perPixel = !tl.tileMode;
+    counts.exactTile = haveExact;
     return counts;
 }
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <vector>
 
 #include "FastMath.h"
@@ -61,6 +62,15 @@ struct SourceTree {
     std::vector<Cx> momD;  // nodes.size() * layout.count
     std::vector<Cx> momN;
 };
+
+/// Points of the given nodes of tree (their count() summed). Throws nothing.
+inline std::size_t pointCount(const SourceTree& tree, const std::vector<int>& nodes) {
+    std::size_t n = 0;
+    for (const int nd : nodes) {
+        n += static_cast<std::size_t>(tree.nodes[static_cast<std::size_t>(nd)].count());
+    }
+    return n;
+}
 
 /// Builds the tree over tree.pts (the region's contour points, at least one;
 /// their order changes): tree.nodes (root 0, the children of a node next to
