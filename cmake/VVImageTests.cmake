@@ -54,7 +54,7 @@ function(vv_add_image_test)
       --threshold ${ARG_THRESHOLD}
       -- ${input} --size ${ARG_SIZE} ${ARG_ARGS})
   set_tests_properties(${test} PROPERTIES
-    LABELS baseline
+    LABELS "gl;baseline"
     TIMEOUT 300)
   if(ARG_DISABLED)
     set_tests_properties(${test} PROPERTIES DISABLED TRUE)

@@ -286,6 +286,14 @@ void ViewerWidget::setSettleDelay(int milliseconds) {
     settleTimer_->setInterval(settleDelayMs_);
 }
 
+void ViewerWidget::setPreviewArrivalDelay(int milliseconds) {
+    previewArrivalTimer_->setInterval(std::max(milliseconds, 0));
+}
+
+int ViewerWidget::previewArrivalDelay() const {
+    return previewArrivalTimer_->interval();
+}
+
 void ViewerWidget::setFrameBudget(double milliseconds) {
     view_.refinement().setFrameBudget(milliseconds);
 }

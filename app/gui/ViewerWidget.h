@@ -176,6 +176,15 @@ class ViewerWidget : public QOpenGLWidget {
     /// How long after the last camera change the camera counts as stopped (ms).
     void setSettleDelay(int milliseconds);
     [[nodiscard]] int settleDelay() const noexcept { return settleDelayMs_; }
+    /// While the camera moves, a preview solve's arrival draws a frame only
+    /// when no camera move drew one within this delay (the camera paused):
+    /// during a drag the next move's frame shows the preview anyway, and a
+    /// frame per arrival would double the work per mouse move.
+    static constexpr int kPreviewArrivalDelayMs = 60;
+    /// The delay above (ms), for tests that hold the camera's pace apart
+    /// from the machine's.
+    void setPreviewArrivalDelay(int milliseconds);
+    [[nodiscard]] int previewArrivalDelay() const;
     /// Render size of frames while the camera moves, relative to the widget,
     /// in [0.1, 1] (default 0.5: a quarter of the pixels). 1 = full size,
     /// which lets the exact solve start from the last preview frame's depth.
@@ -362,11 +371,6 @@ class ViewerWidget : public QOpenGLWidget {
     // Refinement timing: the settle timer, preview arrivals, the frame budget.
     int settleDelayMs_ = 150;
     QTimer* settleTimer_ = nullptr;
-    /// While the camera moves, a preview solve's arrival draws a frame only
-    /// when no camera move drew one within this delay (the camera paused):
-    /// during a drag the next move's frame shows the preview anyway, and a
-    /// frame per arrival would double the work per mouse move.
-    static constexpr int kPreviewArrivalDelayMs = 60;
     QTimer* previewArrivalTimer_ = nullptr;
     /// Measures camera-move frames for the frame budget, up to their swap
     /// (frameSwapped).

@@ -61,8 +61,10 @@ class ScopedConnection {
     QMetaObject::Connection connection_;
 };
 
-/// Processes events until `done` holds or `timeoutMs` passed; returns `done()`.
-inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 30000) {
+/// Processes events until `done` holds or `timeoutMs` passed (a bound for a
+/// broken program only: generous, so that load on CI never reaches it);
+/// returns `done()`.
+inline bool waitUntil(const std::function<bool()>& done, int timeoutMs = 60000) {
     return pollUntil(done, std::chrono::milliseconds(timeoutMs), [] {
         QCoreApplication::processEvents(QEventLoop::AllEvents, 20);
         QThread::msleep(2);

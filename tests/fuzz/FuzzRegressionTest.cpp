@@ -70,8 +70,9 @@ TEST_P(FuzzRegression, EveryFileLoadsOrFailsWithAMessageNamingIt) {
         EXPECT_NO_THROW(outcome = feed(target, bytes));
         const double seconds =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-        // libFuzzer's -timeout is 10 s; the sanitizer-free build is far faster.
-        EXPECT_LT(seconds, 10.0);
+        // Recorded, not judged: a hang ends at ctest's timeout, and load on
+        // CI must not fail a slow but finished load.
+        RecordProperty(file.filename().string(), std::to_string(seconds));
         if (!outcome.loaded) {
             const std::string& error = outcome.error;
             EXPECT_NE(error.find(outcome.file.string()), std::string::npos)

@@ -119,11 +119,9 @@ TEST(PacsFaultTest, OrthancKilledDuringAMoveLeavesNothingComplete) {
     EXPECT_TRUE(killed);
     EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
     // The listener's association from the dead peer ends without a release.
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(15);
-    while (listener.stats().acceptedAssociations > listener.stats().discardedAssociations &&
-           std::chrono::steady_clock::now() < deadline) {
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
-    }
+    vv::test::waitUntil([&] {
+        return listener.stats().acceptedAssociations <= listener.stats().discardedAssociations;
+    });
     EXPECT_TRUE(store.studies().empty());
     EXPECT_EQ(listener.stats().committedInstances, 0U);
     EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));

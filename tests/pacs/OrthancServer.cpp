@@ -18,6 +18,7 @@
 #include <stdexcept>
 #include <thread>
 
+#include "WaitUntil.h"
 #include "vv/pacs/Echo.h"
 
 namespace fs = std::filesystem;
@@ -233,13 +234,10 @@ void OrthancServer::stop() {
     }
     ::kill(pid_, SIGCONT);  // a paused Orthanc cannot stop
     ::kill(pid_, SIGTERM);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-    while (std::chrono::steady_clock::now() < deadline) {
-        if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
-            pid_ = -1;
-            return;
-        }
-        std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    if (vv::test::pollUntil([this] { return ::waitpid(pid_, nullptr, WNOHANG) == pid_; },
+                            std::chrono::seconds(10))) {
+        pid_ = -1;
+        return;
     }
     kill();
 }

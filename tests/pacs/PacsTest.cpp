@@ -18,6 +18,7 @@
 #include "ListenerPeers.h"
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
+#include "TcpTable.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/Echo.h"
 #include "vv/pacs/Find.h"
@@ -149,17 +150,19 @@ TEST(PacsFaultTest, APeerThatStallsInTheMiddleOfItsAnswerIsDroppedAfterTheRespon
     EXPECT_TRUE(answered.get()) << "the echo did not fail";
 }
 
-/// Runs `call(stop token)` against a peer that never answers, requests the
-/// stop after 300 ms from another thread, and returns how long after the
-/// stop `call` took to throw CancelledError. The callers' waits are 60 s
-/// long: a stop that only took effect when a wait ran out would take that
-/// long; one that aborts takes milliseconds (bench, not test, for the figure).
+/// Runs `call(stop token)` against `peer` (which never answers), requests
+/// the stop from another thread once the call's request waits at the peer,
+/// and returns how long after the stop `call` took to throw CancelledError.
+/// The callers' waits are 60 s long: a stop that only took effect when a
+/// wait ran out would take that long; one that aborts takes milliseconds
+/// (bench, not test, for the figure).
 template <typename Call>
-std::chrono::milliseconds timeToNoticeTheStop(Call call) {
+std::chrono::milliseconds timeToNoticeTheStop(const vv::test::SilentPeer& peer, Call call) {
     std::stop_source stop;
     std::chrono::steady_clock::time_point stopped;
     std::thread canceller([&] {
-        std::this_thread::sleep_for(std::chrono::milliseconds(300));
+        EXPECT_TRUE(vv::test::waitUntil([&] { return vv::test::unreadBytesAt(peer.port()) > 0; }))
+            << "no request reached the peer";
         stopped = std::chrono::steady_clock::now();
         stop.request_stop();
     });
@@ -181,8 +184,8 @@ TEST(PacsFaultTest, AStopAbortsAnEchoWaitingForASilentPeerAtOnce) {
     const vv::test::SilentPeer peer;
     const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
     const LocalAe patient{kOurAe, Timeouts{5, 60, 60}};
-    const auto noticed =
-        timeToNoticeTheStop([&](std::stop_token stop) { echo(patient, silent, std::move(stop)); });
+    const auto noticed = timeToNoticeTheStop(
+        peer, [&](std::stop_token stop) { echo(patient, silent, std::move(stop)); });
     EXPECT_LT(noticed, std::chrono::seconds(30)) << "the stop waited for the association timeout";
 }
 
@@ -190,7 +193,7 @@ TEST(PacsFaultTest, AStopAbortsAFindWaitingForASilentPeerAtOnce) {
     const vv::test::SilentPeer peer;
     const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
     const LocalAe patient{kOurAe, Timeouts{5, 60, 60}};
-    const auto noticed = timeToNoticeTheStop([&](std::stop_token stop) {
+    const auto noticed = timeToNoticeTheStop(peer, [&](std::stop_token stop) {
         (void)findStudies(patient, silent, StudyQuery{}, {}, std::move(stop));
     });
     EXPECT_LT(noticed, std::chrono::seconds(30)) << "the stop waited for the association timeout";

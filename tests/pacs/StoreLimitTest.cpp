@@ -21,6 +21,7 @@
 #include <string>
 #include <thread>
 
+#include "WaitUntil.h"
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
 
@@ -284,10 +285,9 @@ TEST(StoreLimitTest, ACleanUpKilledMidwayLeavesNoIndexedStudyWithoutFiles) {
         {
             Helper cleaner("clean-up", root, "1");  // removes every study, one at a time
             ASSERT_EQ(cleaner.said(), "cleaning\n");
-            const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(10);
-            while (studyFolders() > 40 - removedBeforeKill &&
-                   std::chrono::steady_clock::now() < deadline) {
-            }
+            vv::test::pollUntil([&] { return studyFolders() <= 40 - removedBeforeKill; },
+                                std::chrono::seconds(10),
+                                [] {});  // a busy poll: the clean-up is fast
             cleaner.kill();
         }
         const std::size_t left = store.studies().size();

@@ -444,22 +444,3 @@ TEST(VesselsFromVolume, DicomSegLoadsAsLabelMapsAndMeshes) {
     EXPECT_THROW((void)loadDicomSegLabelMaps(ct / "slice0.dcm"), FormatError);
     EXPECT_THROW((void)loadDicomSegLabelMaps(ct / "missing.dcm"), IoError);
 }
-
-// Timing on a larger grid (not run by default: --gtest_also_run_disabled_tests).
-TEST(VesselsFromVolume, DISABLED_LargeVolumeTiming) {
-    const auto start = std::chrono::steady_clock::now();
-    const test::SyntheticCta big = test::makeSyntheticCta({320, 320, 240}, 5);
-    const auto built = std::chrono::steady_clock::now();
-    const Segmentation seg = segmentVessels(big.volume);
-    const auto segmented = std::chrono::steady_clock::now();
-    const Mesh mesh = extractSurface(seg.labelMap);
-    const auto extracted = std::chrono::steady_clock::now();
-    const auto ms = [](auto a, auto b) {
-        return std::chrono::duration<double, std::milli>(b - a).count();
-    };
-    std::printf(
-        "320x320x240: volume %.0f ms, segmentation %.0f ms, surface %.0f ms (%zu "
-        "triangles)\n",
-        ms(start, built), ms(built, segmented), ms(segmented, extracted), mesh.triangleCount());
-    EXPECT_EQ(seg.labelMap.components.size(), 1U);
-}

@@ -395,12 +395,10 @@ TEST(FastSolverTest, AMillionContourPixelsAroundASmallVoid) {
         detail::makeFastSolver(o)->solveRegion(labels.view(), r, out.view(), {});
         const double secs =
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        // Optimised builds; an -O0 sanitizer build (asan preset) takes 10-16 s.
-#if defined(__OPTIMIZE__) && !defined(__SANITIZE_ADDRESS__)
-        EXPECT_LT(secs, 10.0) << "p " << p;
-#else
-        EXPECT_LT(secs, 120.0) << "p " << p;
-#endif
+        // The time is recorded, not judged (load on CI would judge it):
+        // bench/vss_fast_micro measures the solver's speed.
+        ::testing::Test::RecordProperty("seconds_p" + std::to_string(static_cast<int>(p * 10)),
+                                        std::to_string(secs));
         double maxErr = 0.0;
         for (int y = r.y0; y < r.y1; y += 3) {
             for (int x = r.x0; x < r.x1; x += 3) {

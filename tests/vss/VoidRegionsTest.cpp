@@ -308,12 +308,9 @@ TEST(VoidRegionsTest, Huge7680x4320) {
     EXPECT_EQ(found.regions[2].pixelCount, 1);
     EXPECT_EQ(found.regions[2].contour.size(), 8U);
     EXPECT_EQ(found.labels(100, 100), 2);
-#if defined(__OPTIMIZE__) && !defined(__SANITIZE_ADDRESS__)
-    EXPECT_LT(s, 5.0) << "labelling 33 Mpixels should take well under a second";
-#else
-    // -O0 sanitizer build (asan preset): about 5 s on two loaded cores
-    EXPECT_LT(s, 60.0) << "labelling 33 Mpixels, unoptimised";
-#endif
+    // Recorded, not judged (load on CI would judge it); bench/vss_solve_pfm
+    // times the labelling with the solve.
+    RecordProperty("seconds", std::to_string(s));
 }
 
 }  // namespace

@@ -144,6 +144,7 @@ void SolveWorker::run(const std::stop_token& stop) {
             jobStop = runningStop_.get_token();
             running_ = true;
             runningKey_ = job.key;
+            ++counters_.started;
         }
         std::shared_ptr<const SolvedFrame> solved;
         bool cancelled = false;

@@ -30,6 +30,8 @@ namespace vv::render {
 /// Asynchronous solves so far (FrameRenderer::solveCounters()).
 struct SolveCounters {
     std::uint64_t submitted = 0;  ///< jobs handed to the worker
+    std::uint64_t started =
+        0;  ///< jobs the worker picked up (a newer request replaces a queued one)
     std::uint64_t completed = 0;  ///< solves that finished
     std::uint64_t cancelled = 0;  ///< running solves stopped by a newer request
 };
