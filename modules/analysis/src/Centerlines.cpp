@@ -1,0 +1,516 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "vv/analysis/Centerlines.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include "CurveGeometry.h"
+#include "MinimalPaths.h"
+#include "PreparedSurface.h"
+#include "SurfaceDistance.h"
+#include "VoronoiGraph.h"
+
+namespace vv::analysis {
+namespace {
+
+using detail::PathTree;
+using detail::PreparedSurface;
+using detail::SurfaceDistance;
+using detail::VoronoiGraph;
+
+constexpr std::uint32_t kNone = UINT32_MAX;
+/// A path's inscribed spheres, grown by this, hold what the path covers
+/// (tip search).
+constexpr double kCoverFactor = 1.5;
+/// A tip is kept when its path runs this many radii beyond the covered part.
+constexpr double kMinBranchRadii = 1.0;
+/// Smoothing of the Voronoi path: sigma = this times the inscribed radius.
+constexpr double kSmoothingRadii = 0.5;
+/// Resolution of the raw path before smoothing, mm (at most the step).
+constexpr double kRawStepMm = 0.1;
+
+std::string pointText(const glm::dvec3& p) {
+    char text[96];
+    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x, p.y, p.z);
+    return text;
+}
+
+[[noreturn]] void fail(const PreparedSurface& s, const std::string& problem) {
+    throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") + problem);
+}
+
+/// An end resolved onto the Voronoi graph.
+struct ResolvedEnd {
+    EndPoint end;
+    std::uint32_t vertex = kNone;  ///< where the minimal path ends
+    int loop = -1;                 ///< the boundary loop it is the centre of
+};
+
+/// The pole of the surface vertex nearest to `p` among those of `triangle`
+/// that have one.
+std::uint32_t poleNear(const PreparedSurface& s, const VoronoiGraph& g, std::uint32_t triangle,
+                       const glm::dvec3& p) {
+    std::uint32_t best = kNone;
+    double bestDistance = std::numeric_limits<double>::max();
+    for (const std::uint32_t v : s.triangles[triangle]) {
+        const double d = glm::length(s.positions[v] - p);
+        if (g.poles[v] != kNone && d < bestDistance) {
+            best = g.poles[v];
+            bestDistance = d;
+        }
+    }
+    return best;
+}
+
+ResolvedEnd loopEnd(const PreparedSurface& s, const VoronoiGraph& g, int loop) {
+    const detail::BoundaryLoop& l = s.loops[static_cast<std::size_t>(loop)];
+    ResolvedEnd r;
+    r.end.kind = EndPoint::Kind::OpenEnd;
+    r.end.position = l.centre;
+    r.end.requested = l.centre;
+    r.end.radiusMm = l.radiusMm;
+    r.vertex = g.poles[l.capCentre];
+    r.loop = loop;
+    return r;
+}
+
+/// A point the user gave: at an open end (within 1.5 loop radii of its
+/// centre) the loop's centre; elsewhere the inscribed sphere touching the
+/// nearest surface point.
+ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g,
+                     const SurfaceDistance& surface, const glm::dvec3& point, const char* role) {
+    const SurfaceDistance::Nearest nearest = surface.nearest(point);
+    for (std::size_t i = 0; i < s.loops.size(); ++i) {
+        if (glm::length(nearest.point - s.loops[i].centre) <= 1.5 * s.loops[i].radiusMm) {
+            ResolvedEnd r = loopEnd(s, g, static_cast<int>(i));
+            r.end.kind = EndPoint::Kind::Given;
+            r.end.requested = point;
+            r.end.offsetMm = nearest.distance;
+            return r;
+        }
+    }
+    ResolvedEnd r;
+    r.end.kind = EndPoint::Kind::Given;
+    r.end.requested = point;
+    r.end.offsetMm = nearest.distance;
+    r.vertex = poleNear(s, g, nearest.triangle, nearest.point);
+    if (r.vertex == kNone) {
+        fail(s, std::string("no inscribed sphere touches the surface near the ") + role + " " +
+                    pointText(point));
+    }
+    r.end.position = g.centres[r.vertex];
+    r.end.radiusMm = g.radii[r.vertex];
+    // Farther from the surface than the vessel is wide: not this piece's point.
+    if (nearest.distance > 3.0 * r.end.radiusMm + 1.0) {
+        char text[64];
+        std::snprintf(text, sizeof text, "%.1f", nearest.distance);
+        fail(s, std::string("the ") + role + " " + pointText(point) + " is " + text +
+                    " mm from the analysed surface (off the surface, or on another piece)");
+    }
+    return r;
+}
+
+/// A closed vessel's tip, found as the Voronoi vertex `tip` farthest along
+/// its vessel. The medial axis fans out near a closed end (to the rim of a
+/// flat cap, over a rounded one), so the path is cut back where it still has
+/// two radii to go and continued straight along the vessel's axis there to
+/// the surface: the centre of a flat cap, the apex of a rounded one.
+ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceDistance& surface, const PathTree& tree,
+                   std::uint32_t tip) {
+    const std::vector<std::uint32_t> path = tree.pathTo(tip);
+    std::size_t cut = path.size() - 1;
+    while (cut > 0 && tree.lengthMm[tip] - tree.lengthMm[path[cut]] < 2.0 * g.radii[path[cut]]) {
+        --cut;
+    }
+    std::size_t back = cut;
+    while (back > 0 &&
+           tree.lengthMm[path[cut]] - tree.lengthMm[path[back]] < 2.0 * g.radii[path[cut]]) {
+        --back;
+    }
+    ResolvedEnd r;
+    r.end.kind = EndPoint::Kind::Tip;
+    r.vertex = path[cut];
+    r.end.radiusMm = g.radii[path[cut]];
+    const glm::dvec3 from = g.centres[path[cut]];
+    const glm::dvec3 along = from - g.centres[path[back]];
+    std::optional<glm::dvec3> hit;
+    if (back < cut && glm::length(along) > 0.0) {
+        hit = surface.firstHit(from, glm::normalize(along));
+    }
+    r.end.position = hit ? *hit : surface.nearest(g.centres[tip]).point;
+    r.end.requested = r.end.position;
+    return r;
+}
+
+/// The radius a vessel has near its tip: going back along the path from the
+/// tip until the path is two radii long.
+double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_t tip) {
+    const std::vector<std::uint32_t> path = tree.pathTo(tip);
+    for (auto it = path.rbegin(); it != path.rend(); ++it) {
+        if (tree.lengthMm[tip] - tree.lengthMm[*it] >= 2.0 * g.radii[*it]) {
+            return g.radii[*it];
+        }
+    }
+    return g.radii[path.front()];
+}
+
+/// Source end when none is given: the widest open end, or on a closed
+/// surface the tip of the widest vessel.
+ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
+                          const SurfaceDistance& surface, const Progress& progress) {
+    if (!s.loops.empty()) {
+        int widest = 0;
+        for (std::size_t i = 1; i < s.loops.size(); ++i) {
+            if (s.loops[i].radiusMm > s.loops[static_cast<std::size_t>(widest)].radiusMm) {
+                widest = static_cast<int>(i);
+            }
+        }
+        return loopEnd(s, g, widest);
+    }
+    const auto widestVertex = static_cast<std::uint32_t>(
+        std::max_element(g.radii.begin(), g.radii.end()) - g.radii.begin());
+    const PathTree fromWidest = detail::minimalPaths(g, widestVertex, progress);
+    const std::vector<std::uint32_t> tips =
+        detail::uncoveredTips(g, fromWidest, {}, kCoverFactor, kMinBranchRadii, progress);
+    if (tips.empty()) {
+        fail(s, "the surface has no vessel end to start from");
+    }
+    std::uint32_t best = tips.front();
+    double bestRadius = 0.0;
+    for (const std::uint32_t tip : tips) {
+        const double r = radiusBehindTip(g, fromWidest, tip);
+        if (r > bestRadius) {
+            bestRadius = r;
+            best = tip;
+        }
+    }
+    return tipEnd(g, surface, fromWidest, best);
+}
+
+/// One source-to-target path, smoothed and measured, at the output step.
+struct PathProfile {
+    std::vector<CenterlinePoint> points;  ///< abscissa from the source
+    std::vector<double> abscissae;        ///< the points' abscissae
+    /// Raw (Voronoi path) arc length -> abscissa, for locating graph vertices.
+    std::vector<double> rawArc;
+    std::vector<double> smoothArc;
+    std::vector<std::uint32_t> vertices;  ///< the Voronoi path
+    std::vector<double> vertexRawArc;     ///< raw arc length at each path vertex
+    int endIndex = -1;
+
+    [[nodiscard]] double abscissaOfVertex(std::size_t pathIndex) const {
+        return detail::interpolate(rawArc, smoothArc, vertexRawArc[pathIndex]);
+    }
+    /// The centreline at abscissa `s`, interpolated between samples.
+    [[nodiscard]] CenterlinePoint at(double s) const;
+};
+
+CenterlinePoint PathProfile::at(double s) const {
+    s = std::clamp(s, abscissae.front(), abscissae.back());
+    auto upper = std::upper_bound(abscissae.begin(), abscissae.end(), s);
+    if (upper == abscissae.end()) {
+        return points.back();
+    }
+    const auto i = static_cast<std::size_t>(upper - abscissae.begin());
+    if (i == 0) {
+        return points.front();
+    }
+    const CenterlinePoint& a = points[i - 1];
+    const CenterlinePoint& b = points[i];
+    const double span = b.abscissaMm - a.abscissaMm;
+    const double t = span > 0.0 ? (s - a.abscissaMm) / span : 0.0;
+    CenterlinePoint p;
+    p.position = glm::mix(a.position, b.position, t);
+    p.radiusMm = a.radiusMm + t * (b.radiusMm - a.radiusMm);
+    p.abscissaMm = s;
+    p.tangent = glm::normalize(glm::mix(a.tangent, b.tangent, t));
+    const glm::dvec3 n = glm::mix(a.normal, b.normal, t);
+    p.normal = glm::normalize(n - glm::dot(n, p.tangent) * p.tangent);
+    p.curvature = a.curvature + t * (b.curvature - a.curvature);
+    p.torsion = a.torsion + t * (b.torsion - a.torsion);
+    return p;
+}
+
+PathProfile profilePath(const VoronoiGraph& g, const SurfaceDistance& surface,
+                        const ResolvedEnd& source, const ResolvedEnd& target,
+                        const std::vector<std::uint32_t>& vertices, double step) {
+    PathProfile profile;
+    profile.vertices = vertices;
+    // The raw polyline: source end, the Voronoi centres, target end.
+    std::vector<glm::dvec3> raw{source.end.position};
+    std::vector<double> rawRadius{source.end.radiusMm};
+    for (const std::uint32_t v : vertices) {
+        raw.push_back(g.centres[v]);
+        rawRadius.push_back(g.radii[v]);
+    }
+    raw.push_back(target.end.position);
+    rawRadius.push_back(std::max(target.end.radiusMm, g.radii[vertices.back()]));
+    const std::vector<double> rawAt = detail::arcLengths(raw);
+    profile.vertexRawArc.assign(rawAt.begin() + 1, rawAt.end() - 1);
+
+    const double fineStep = std::min(step, kRawStepMm);
+    const std::vector<glm::dvec3> fine = detail::resample(raw, fineStep);
+    const std::vector<double> fineAt = detail::arcLengths(fine);
+    std::vector<double> sigma(fine.size());
+    for (std::size_t i = 0; i < fine.size(); ++i) {
+        sigma[i] = kSmoothingRadii * detail::interpolate(rawAt, rawRadius, fineAt[i]);
+    }
+    const std::vector<glm::dvec3> smooth = detail::smoothAlong(fine, sigma);
+    profile.rawArc = fineAt;
+    profile.smoothArc = detail::arcLengths(smooth);
+
+    const std::vector<glm::dvec3> positions = detail::resample(smooth, step);
+    const std::vector<double> at = detail::arcLengths(positions);
+    const std::vector<glm::dvec3> t = detail::tangents(positions);
+    const std::vector<glm::dvec3> normals = detail::rotationMinimisingNormals(positions, t);
+    std::vector<double> radius(positions.size());
+    std::vector<double> scale(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        radius[i] = surface.distance(positions[i]);
+        scale[i] = std::max(2.0 * step,
+                            detail::interpolate(profile.smoothArc, sigma, at[i]) / kSmoothingRadii);
+    }
+    const std::vector<double> k = detail::curvatures(positions, scale);
+    const std::vector<double> tau = detail::torsions(positions, scale);
+    profile.points.resize(positions.size());
+    for (std::size_t i = 0; i < positions.size(); ++i) {
+        CenterlinePoint& p = profile.points[i];
+        p.position = positions[i];
+        p.radiusMm = radius[i];
+        p.abscissaMm = at[i];
+        p.tangent = t[i];
+        p.normal = normals[i];
+        p.curvature = k[i];
+        p.torsion = tau[i];
+    }
+    profile.abscissae = at;
+    return profile;
+}
+
+/// The points of `profile` over [from, to] every `step`, both ends included.
+std::vector<CenterlinePoint> stretch(const PathProfile& profile, double from, double to,
+                                     double step) {
+    std::vector<CenterlinePoint> points;
+    for (double s = from; s < to - 1e-6 * step; s += step) {
+        points.push_back(profile.at(s));
+    }
+    points.push_back(profile.at(to));
+    if (points.size() < 2) {
+        points.insert(points.begin(), profile.at(from));
+    }
+    return points;
+}
+
+/// A branch while the tree is assembled: which path owns it, over which
+/// abscissae of that path.
+struct BranchSpan {
+    int path = 0;
+    double from = 0.0;
+    double to = 0.0;
+    int parent = -1;
+    std::vector<int> children;
+    int endIndex = -1;
+};
+
+/// Splits the paths into branches where they part (the last Voronoi vertex
+/// a path shares with the paths before it).
+std::vector<BranchSpan> splitIntoBranches(const std::vector<PathProfile>& paths,
+                                          std::size_t graphSize) {
+    std::vector<BranchSpan> spans;
+    std::vector<int> firstPath(graphSize, -1);
+    std::vector<std::vector<int>> owned(paths.size());  // per path, its spans by abscissa
+    for (std::size_t k = 0; k < paths.size(); ++k) {
+        const PathProfile& path = paths[k];
+        std::size_t junctionIndex = kNone;
+        for (std::size_t i = 0; i < path.vertices.size(); ++i) {
+            if (firstPath[path.vertices[i]] >= 0) {
+                junctionIndex = i;
+            }
+        }
+        BranchSpan span;
+        span.path = static_cast<int>(k);
+        span.to = path.abscissae.back();
+        span.endIndex = path.endIndex;
+        if (junctionIndex != kNone) {
+            const auto m = static_cast<std::size_t>(firstPath[path.vertices[junctionIndex]]);
+            const std::size_t inM = static_cast<std::size_t>(
+                std::find(paths[m].vertices.begin(), paths[m].vertices.end(),
+                          path.vertices[junctionIndex]) -
+                paths[m].vertices.begin());
+            const double x = paths[m].abscissaOfVertex(inM);
+            span.from = path.abscissaOfVertex(junctionIndex);
+            // The span of path m that holds x; split it there unless x is its end.
+            int holder = owned[m].back();
+            for (const int id : owned[m]) {
+                if (x >= spans[static_cast<std::size_t>(id)].from &&
+                    x <= spans[static_cast<std::size_t>(id)].to) {
+                    holder = id;
+                    break;
+                }
+            }
+            BranchSpan& h = spans[static_cast<std::size_t>(holder)];
+            if (x < h.to - 1e-9) {
+                BranchSpan rest = h;
+                rest.from = x;
+                rest.parent = holder;
+                h.to = x;
+                h.endIndex = -1;
+                const int restId = static_cast<int>(spans.size());
+                for (const int child : rest.children) {
+                    spans[static_cast<std::size_t>(child)].parent = restId;
+                }
+                h.children = {restId};
+                spans.push_back(rest);
+                auto& list = owned[m];
+                list.insert(std::find(list.begin(), list.end(), holder) + 1, restId);
+            }
+            span.parent = holder;
+            spans[static_cast<std::size_t>(holder)].children.push_back(
+                static_cast<int>(spans.size()));
+        }
+        owned[k].push_back(static_cast<int>(spans.size()));
+        spans.push_back(span);
+        for (const std::uint32_t v : path.vertices) {
+            if (firstPath[v] < 0) {
+                firstPath[v] = static_cast<int>(k);
+            }
+        }
+    }
+    return spans;
+}
+
+/// Parents before children, ids = indices.
+std::vector<Branch> orderBranches(const std::vector<BranchSpan>& spans,
+                                  const std::vector<PathProfile>& paths, double step) {
+    std::vector<int> order{0};
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        for (const int child : spans[static_cast<std::size_t>(order[i])].children) {
+            order.push_back(child);
+        }
+    }
+    std::vector<int> newId(spans.size(), -1);
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        newId[static_cast<std::size_t>(order[i])] = static_cast<int>(i);
+    }
+    std::vector<Branch> branches(order.size());
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        const BranchSpan& span = spans[static_cast<std::size_t>(order[i])];
+        Branch& b = branches[i];
+        b.id = static_cast<int>(i);
+        b.parent = span.parent < 0 ? -1 : newId[static_cast<std::size_t>(span.parent)];
+        for (const int child : span.children) {
+            b.children.push_back(newId[static_cast<std::size_t>(child)]);
+        }
+        b.endIndex = span.endIndex;
+        b.points = stretch(paths[static_cast<std::size_t>(span.path)], span.from, span.to, step);
+        b.lengthMm = b.points.back().abscissaMm - b.points.front().abscissaMm;
+        b.chordMm = glm::length(b.points.back().position - b.points.front().position);
+    }
+    return branches;
+}
+
+void validate(const CenterlineOptions& options) {
+    if (!(options.stepMm >= 0.01 && options.stepMm <= 10.0)) {
+        throw InvalidArgumentError("centrelines: the step must be in [0.01, 10] mm");
+    }
+    const auto finite = [](const glm::dvec3& p) {
+        return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
+    };
+    if (options.source && !finite(*options.source)) {
+        throw InvalidArgumentError("centrelines: the source point is not finite");
+    }
+    for (const auto& target : options.targets) {
+        if (!finite(target)) {
+            throw InvalidArgumentError("centrelines: a target point is not finite");
+        }
+    }
+}
+
+/// The targets: the given ones, or every other open end and every tip the
+/// paths to them leave uncovered.
+std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiGraph& g,
+                                        const SurfaceDistance& surface, const ResolvedEnd& source,
+                                        const PathTree& tree, const CenterlineOptions& options,
+                                        const Progress& progress) {
+    std::vector<ResolvedEnd> targets;
+    if (!options.targets.empty()) {
+        for (const glm::dvec3& point : options.targets) {
+            targets.push_back(givenEnd(s, g, surface, point, "target"));
+        }
+        return targets;
+    }
+    std::vector<std::vector<std::uint32_t>> known;
+    for (std::size_t i = 0; i < s.loops.size(); ++i) {
+        if (static_cast<int>(i) == source.loop) {
+            continue;
+        }
+        ResolvedEnd end = loopEnd(s, g, static_cast<int>(i));
+        if (end.vertex != kNone && tree.reaches(end.vertex)) {
+            known.push_back(tree.pathTo(end.vertex));
+        }
+        targets.push_back(end);
+    }
+    for (const std::uint32_t tip :
+         detail::uncoveredTips(g, tree, known, kCoverFactor, kMinBranchRadii, progress)) {
+        targets.push_back(tipEnd(g, surface, tree, tip));
+    }
+    return targets;
+}
+
+}  // namespace
+
+CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptions& options,
+                                  const Progress& progress) {
+    validate(options);
+    progress.report(0.0, "Preparing the surface");
+    const PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
+    const SurfaceDistance surface(s);
+    const VoronoiGraph g = detail::buildVoronoiGraph(s, progress.sub(0.05, 0.6));
+    progress.report(0.6, "Finding the vessels' ends");
+
+    const ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")
+                                              : defaultSource(s, g, surface, progress);
+    if (source.vertex == kNone) {
+        fail(s, "no inscribed sphere touches the source end");
+    }
+    const PathTree tree = detail::minimalPaths(g, source.vertex, progress);
+    std::vector<ResolvedEnd> targets =
+        resolveTargets(s, g, surface, source, tree, options, progress);
+    if (targets.empty()) {
+        fail(s, "the surface has only one vessel end; a centreline needs two");
+    }
+    for (const ResolvedEnd& target : targets) {
+        if (target.vertex == kNone || !tree.reaches(target.vertex)) {
+            fail(s, "no path inside the surface joins the source " +
+                        pointText(source.end.position) + " and the end " +
+                        pointText(target.end.position));
+        }
+    }
+    // Longest path first: the main vessel is branch 0.
+    std::sort(targets.begin(), targets.end(), [&](const ResolvedEnd& a, const ResolvedEnd& b) {
+        return tree.lengthMm[a.vertex] > tree.lengthMm[b.vertex];
+    });
+
+    progress.report(0.7, "Tracing the centrelines");
+    CenterlineTree result;
+    result.voronoiVertices = g.size();
+    result.notes = s.notes;
+    result.ends.push_back(source.end);
+    std::vector<PathProfile> paths;
+    for (const ResolvedEnd& target : targets) {
+        progress.throwIfCancelled();
+        paths.push_back(
+            profilePath(g, surface, source, target, tree.pathTo(target.vertex), options.stepMm));
+        paths.back().endIndex = static_cast<int>(result.ends.size());
+        result.ends.push_back(target.end);
+    }
+    result.branches = orderBranches(splitIntoBranches(paths, g.size()), paths, options.stepMm);
+    progress.report(1.0, "Centrelines done");
+    return result;
+}
+
+}  // namespace vv::analysis

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to vv::analysis: minimal paths over the internal Voronoi graph
+// with cost 1/R (Dijkstra from one source), and the search for the tips a
+// closed surface's vessels end in (TEASAR's idea, Sato et al. 2000: the
+// farthest vertex not yet covered by the inscribed spheres of the paths
+// found so far is the next tip).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "VoronoiGraph.h"
+#include "vv/core/Progress.h"
+
+namespace vv::analysis::detail {
+
+/// The shortest-path tree from one Voronoi vertex.
+struct PathTree {
+    std::uint32_t source = 0;
+    std::vector<double> cost;             ///< integral of ds / R along the path; +inf: unreachable
+    std::vector<double> lengthMm;         ///< arc length of the same path
+    std::vector<std::uint32_t> previous;  ///< towards the source; UINT32_MAX at the source
+
+    [[nodiscard]] bool reaches(std::uint32_t v) const;
+    /// The path from the source to `v`, source first. `v` must be reachable.
+    [[nodiscard]] std::vector<std::uint32_t> pathTo(std::uint32_t v) const;
+};
+
+/// Dijkstra from `source`, an edge costing its length times the mean of 1/R
+/// at its ends. Checks for a stop request now and then.
+[[nodiscard]] PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source,
+                                    const Progress& progress);
+
+/// Tips of the vessels that `known` (paths already taken, e.g. to the open
+/// ends) do not reach: repeatedly the reachable vertex farthest (along its
+/// path) from the source that no inscribed sphere of a path so far, grown by
+/// `coverFactor`, holds; it is a tip when its path runs at least
+/// `minLengthFactor` times the radius where it leaves the covered part
+/// outside it. Returns the tips' vertices, farthest first.
+[[nodiscard]] std::vector<std::uint32_t> uncoveredTips(
+    const VoronoiGraph& graph, const PathTree& tree,
+    const std::vector<std::vector<std::uint32_t>>& known, double coverFactor,
+    double minLengthFactor, const Progress& progress);
+
+}  // namespace vv::analysis::detail

@@ -1,0 +1,61 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to vv::analysis: a vessel surface made fit for the Voronoi diagram
+// and the sections: welded, without degenerate or repeated triangles, one
+// connected piece, its boundary loops found, oriented outward, and a capped
+// copy (each loop closed by a fan around its centre) whose vertex normals
+// tell inside from outside.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <glm/glm.hpp>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "vv/core/Progress.h"
+#include "vv/scene/Mesh.h"
+
+namespace vv::analysis::detail {
+
+using Triangle = std::array<std::uint32_t, 3>;
+
+/// An open end of the surface.
+struct BoundaryLoop {
+    std::vector<std::uint32_t> vertices;  ///< in order around the loop
+    glm::dvec3 centre{0.0};               ///< the loop's centroid (by edge length)
+    /// Unit, pointing into the vessel (for an outward-facing surface).
+    glm::dvec3 inward{0.0};
+    double radiusMm = 0.0;        ///< mean distance of the loop from its centre
+    std::uint32_t capCentre = 0;  ///< the fan's centre vertex in the capped surface
+};
+
+struct PreparedSurface {
+    std::filesystem::path source;  ///< the mesh's file, for messages
+    std::string name;              ///< the mesh's name, for messages
+    /// The kept piece: vertices (welded), triangles facing outward.
+    std::vector<glm::dvec3> positions;
+    std::vector<Triangle> triangles;
+    std::vector<BoundaryLoop> loops;
+    /// positions + one centre per loop; triangles + the caps' fans.
+    std::vector<glm::dvec3> cappedPositions;
+    std::vector<Triangle> cappedTriangles;
+    /// Per capped vertex, unit, outward (area-weighted over its triangles).
+    std::vector<glm::dvec3> cappedNormals;
+    std::vector<std::string> notes;
+    double diagonalMm = 0.0;  ///< of the kept piece's bounding box
+};
+
+/// Prepares `mesh`. `anchor`, when given, picks the piece whose nearest
+/// vertex is nearest to it; otherwise the piece with the most triangles.
+/// Throws AnalysisError for no triangles, non-finite coordinates or indices
+/// out of range; CancelledError on a stop request.
+[[nodiscard]] PreparedSurface prepareSurface(const scene::Mesh& mesh,
+                                             const std::optional<glm::dvec3>& anchor,
+                                             const Progress& progress);
+
+/// The message prefix naming the mesh: its file, else its name.
+[[nodiscard]] std::string meshLabel(const PreparedSurface& surface);
+
+}  // namespace vv::analysis::detail
