@@ -268,7 +268,7 @@ TEST(Centerline, OfSeveralPiecesTheLargestIsTakenAndNoted) {
     const auto offset = static_cast<std::uint32_t>(mesh.positions.size());
     for (const auto& p : small.positions) {
         mesh.positions.push_back(p + glm::vec3(40.0F, 0.0F, 0.0F));
-        mesh.normals.push_back({0, 0, 1});
+        mesh.normals.emplace_back(0, 0, 1);
     }
     for (const auto index : small.indices) {
         mesh.indices.push_back(index + offset);

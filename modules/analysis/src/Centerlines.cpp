@@ -3,8 +3,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <limits>
+#include <ranges>
 #include <string>
 #include <utility>
 
@@ -13,6 +13,7 @@
 #include "PreparedSurface.h"
 #include "SurfaceDistance.h"
 #include "VoronoiGraph.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::analysis {
 namespace {
@@ -34,9 +35,7 @@ constexpr double kSmoothingRadii = 0.5;
 constexpr double kRawStepMm = 0.1;
 
 std::string pointText(const glm::dvec3& p) {
-    char text[96];
-    std::snprintf(text, sizeof text, "(%.2f, %.2f, %.2f)", p.x, p.y, p.z);
-    return text;
+    return "(" + fixedText(p.x, 2) + ", " + fixedText(p.y, 2) + ", " + fixedText(p.z, 2) + ")";
 }
 
 [[noreturn]] void fail(const PreparedSurface& s, const std::string& problem) {
@@ -106,9 +105,8 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g,
     r.end.radiusMm = g.radii[r.vertex];
     // Farther from the surface than the vessel is wide: not this piece's point.
     if (nearest.distance > 3.0 * r.end.radiusMm + 1.0) {
-        char text[64];
-        std::snprintf(text, sizeof text, "%.1f", nearest.distance);
-        fail(s, std::string("the ") + role + " " + pointText(point) + " is " + text +
+        fail(s, std::string("the ") + role + " " + pointText(point) + " is " +
+                    fixedText(nearest.distance, 1) +
                     " mm from the analysed surface (off the surface, or on another piece)");
     }
     return r;
@@ -150,9 +148,9 @@ ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceDistance& surface, const 
 /// tip until the path is two radii long.
 double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_t tip) {
     const std::vector<std::uint32_t> path = tree.pathTo(tip);
-    for (auto it = path.rbegin(); it != path.rend(); ++it) {
-        if (tree.lengthMm[tip] - tree.lengthMm[*it] >= 2.0 * g.radii[*it]) {
-            return g.radii[*it];
+    for (const std::uint32_t v : std::ranges::reverse_view(path)) {
+        if (tree.lengthMm[tip] - tree.lengthMm[v] >= 2.0 * g.radii[v]) {
+            return g.radii[v];
         }
     }
     return g.radii[path.front()];

@@ -16,7 +16,7 @@ namespace vv::analysis::detail {
 /// The polyline sampled every `step` along its arc length from its first
 /// point, plus its last point (the last interval may be shorter). Keeps at
 /// least the two ends. Points closer than 1e-9 mm to the previous are dropped.
-[[nodiscard]] std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& points, double step);
+[[nodiscard]] std::vector<glm::dvec3> resample(const std::vector<glm::dvec3>& input, double step);
 
 /// Linear interpolation of `values` (given at `at`, increasing) at `s`.
 [[nodiscard]] double interpolate(const std::vector<double>& at, const std::vector<double>& values,

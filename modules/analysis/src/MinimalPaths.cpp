@@ -50,7 +50,7 @@ class VertexGrid {
 
   private:
     [[nodiscard]] glm::ivec3 cellOf(const glm::dvec3& p) const {
-        return glm::ivec3(glm::floor(p / cell_));
+        return glm::ivec3{glm::floor(p / cell_)};
     }
     static std::int64_t key(const glm::ivec3& c) {
         constexpr std::int64_t kSpan = 1 << 20;

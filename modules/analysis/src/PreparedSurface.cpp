@@ -385,7 +385,7 @@ PreparedSurface prepareSurface(const scene::Mesh& mesh, const std::optional<glm:
     keepOnePiece(s, anchor);
     progress.throwIfCancelled();
     if (windConsistently(s.triangles) > 0) {
-        s.notes.push_back("Triangles wound against their neighbours were turned round.");
+        s.notes.emplace_back("Triangles wound against their neighbours were turned round.");
     }
     s.loops = findLoops(s);
     for (BoundaryLoop& loop : s.loops) {

@@ -19,6 +19,8 @@ class SurfaceDistance {
     ~SurfaceDistance();
     SurfaceDistance(const SurfaceDistance&) = delete;
     SurfaceDistance& operator=(const SurfaceDistance&) = delete;
+    SurfaceDistance(SurfaceDistance&&) = delete;
+    SurfaceDistance& operator=(SurfaceDistance&&) = delete;
 
     struct Nearest {
         glm::dvec3 point{0.0};

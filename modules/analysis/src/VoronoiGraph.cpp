@@ -54,7 +54,7 @@ Delaunay triangulate(const PreparedSurface& s) {
         const glm::dvec3& p = s.cappedPositions[i];
         points.emplace_back(Kernel::Point_3(p.x, p.y, p.z), i);
     }
-    return Delaunay(points.begin(), points.end());
+    return {points.begin(), points.end()};
 }
 
 }  // namespace

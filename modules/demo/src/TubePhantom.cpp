@@ -89,7 +89,7 @@ AxisFrame frameAt(const TubePhantomOptions& o, double s) {
 
 /// Rings x sides for about `target` triangles with near-square quads.
 std::pair<int, int> ringsAndSides(const TubePhantomOptions& o, double length) {
-    const double target = static_cast<double>(o.targetTriangles);
+    const auto target = static_cast<double>(o.targetTriangles);
     const int sides =
         std::max(8, static_cast<int>(std::lround(std::sqrt(target * kPi * o.radiusMm / length))));
     const int rings = std::max(3, static_cast<int>(std::lround(target / (2.0 * sides))) + 1);
@@ -130,7 +130,8 @@ const char* shapeName(TubeShape shape) {
 }
 
 scene::Mesh tubeMesh(const TubePhantomOptions& o, double length) {
-    const auto [rings, sides] = ringsAndSides(o, length);
+    const auto [rings, sidesFound] = ringsAndSides(o, length);
+    const int sides = sidesFound;  // a plain variable: lambdas capture it
     Jitter jitter(o.seed, o.jitterFraction * o.radiusMm);
     scene::Mesh mesh;
     mesh.name = shapeName(o.shape);
