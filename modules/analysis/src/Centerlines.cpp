@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <ranges>
 #include <string>
 #include <utility>
 
@@ -148,9 +147,9 @@ ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceDistance& surface, const 
 /// tip until the path is two radii long.
 double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_t tip) {
     const std::vector<std::uint32_t> path = tree.pathTo(tip);
-    for (const std::uint32_t v : std::ranges::reverse_view(path)) {
-        if (tree.lengthMm[tip] - tree.lengthMm[v] >= 2.0 * g.radii[v]) {
-            return g.radii[v];
+    for (std::size_t i = path.size(); i-- > 0;) {
+        if (tree.lengthMm[tip] - tree.lengthMm[path[i]] >= 2.0 * g.radii[path[i]]) {
+            return g.radii[path[i]];
         }
     }
     return g.radii[path.front()];
