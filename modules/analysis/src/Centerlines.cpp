@@ -10,7 +10,7 @@
 #include "CurveGeometry.h"
 #include "MinimalPaths.h"
 #include "PreparedSurface.h"
-#include "SurfaceDistance.h"
+#include "SurfaceIndex.h"
 #include "VoronoiGraph.h"
 #include "vv/core/NumberText.h"
 
@@ -19,7 +19,7 @@ namespace {
 
 using detail::PathTree;
 using detail::PreparedSurface;
-using detail::SurfaceDistance;
+using detail::SurfaceIndex;
 using detail::VoronoiGraph;
 
 constexpr std::uint32_t kNone = UINT32_MAX;
@@ -79,9 +79,9 @@ ResolvedEnd loopEnd(const PreparedSurface& s, const VoronoiGraph& g, int loop) {
 /// A point the user gave: at an open end (within 1.5 loop radii of its
 /// centre) the loop's centre; elsewhere the inscribed sphere touching the
 /// nearest surface point.
-ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g,
-                     const SurfaceDistance& surface, const glm::dvec3& point, const char* role) {
-    const SurfaceDistance::Nearest nearest = surface.nearest(point);
+ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const SurfaceIndex& surface,
+                     const glm::dvec3& point, const char* role) {
+    const SurfaceIndex::Nearest nearest = surface.nearest(point);
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
         if (glm::length(nearest.point - s.loops[i].centre) <= 1.5 * s.loops[i].radiusMm) {
             ResolvedEnd r = loopEnd(s, g, static_cast<int>(i));
@@ -116,7 +116,7 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g,
 /// flat cap, over a rounded one), so the path is cut back where it still has
 /// two radii to go and continued straight along the vessel's axis there to
 /// the surface: the centre of a flat cap, the apex of a rounded one.
-ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceDistance& surface, const PathTree& tree,
+ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceIndex& surface, const PathTree& tree,
                    std::uint32_t tip) {
     const std::vector<std::uint32_t> path = tree.pathTo(tip);
     std::size_t cut = path.size() - 1;
@@ -158,7 +158,7 @@ double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_
 /// Source end when none is given: the widest open end, or on a closed
 /// surface the tip of the widest vessel.
 ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
-                          const SurfaceDistance& surface, const Progress& progress) {
+                          const SurfaceIndex& surface, const Progress& progress) {
     if (!s.loops.empty()) {
         int widest = 0;
         for (std::size_t i = 1; i < s.loops.size(); ++i) {
@@ -232,7 +232,7 @@ CenterlinePoint PathProfile::at(double s) const {
     return p;
 }
 
-PathProfile profilePath(const VoronoiGraph& g, const SurfaceDistance& surface,
+PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
                         const ResolvedEnd& source, const ResolvedEnd& target,
                         const std::vector<std::uint32_t>& vertices, double step) {
     PathProfile profile;
@@ -430,7 +430,7 @@ void validate(const CenterlineOptions& options) {
 /// The targets: the given ones, or every other open end and every tip the
 /// paths to them leave uncovered.
 std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiGraph& g,
-                                        const SurfaceDistance& surface, const ResolvedEnd& source,
+                                        const SurfaceIndex& surface, const ResolvedEnd& source,
                                         const PathTree& tree, const CenterlineOptions& options,
                                         const Progress& progress) {
     std::vector<ResolvedEnd> targets;
@@ -465,7 +465,7 @@ CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptio
     validate(options);
     progress.report(0.0, "Preparing the surface");
     const PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
-    const SurfaceDistance surface(s);
+    const SurfaceIndex surface(s);
     const VoronoiGraph g = detail::buildVoronoiGraph(s, progress.sub(0.05, 0.6));
     progress.report(0.6, "Finding the vessels' ends");
 

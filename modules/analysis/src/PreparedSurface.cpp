@@ -8,8 +8,8 @@
 #include <map>
 #include <numeric>
 #include <queue>
-#include <set>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 
 #include "vv/analysis/AnalysisError.h"
@@ -89,7 +89,15 @@ std::vector<Triangle> cleanTriangles(const scene::Mesh& mesh, const std::vector<
                                      std::vector<std::string>& notes) {
     const double diagonal = diagonalOf(positions);
     const double minArea2 = std::pow(1e-12 * diagonal * diagonal, 2.0);
-    std::set<Triangle> seen;
+    struct TriangleHash {
+        std::size_t operator()(const Triangle& t) const noexcept {
+            return (static_cast<std::size_t>(t[0]) * 73856093U) ^
+                   (static_cast<std::size_t>(t[1]) * 19349663U) ^
+                   (static_cast<std::size_t>(t[2]) * 83492791U);
+        }
+    };
+    std::unordered_set<Triangle, TriangleHash> seen;
+    seen.reserve(mesh.indices.size() / 3);
     std::vector<Triangle> triangles;
     triangles.reserve(mesh.indices.size() / 3);
     std::size_t degenerate = 0;
@@ -194,15 +202,16 @@ void keepOnePiece(PreparedSurface& s, const std::optional<glm::dvec3>& anchor) {
     s.triangles = std::move(triangles);
 }
 
-using EdgeKey = std::pair<std::uint32_t, std::uint32_t>;
+using EdgeKey = std::uint64_t;
 EdgeKey undirected(std::uint32_t a, std::uint32_t b) {
-    return a < b ? EdgeKey{a, b} : EdgeKey{b, a};
+    return a < b ? (static_cast<EdgeKey>(a) << 32U) | b : (static_cast<EdgeKey>(b) << 32U) | a;
 }
 
 /// Winds neighbouring triangles alike (across edges two triangles share),
 /// piece by piece from its first triangle. Returns how many it flipped.
 std::size_t windConsistently(std::vector<Triangle>& triangles) {
-    std::map<EdgeKey, std::vector<std::uint32_t>> edgeTriangles;
+    std::unordered_map<EdgeKey, std::vector<std::uint32_t>> edgeTriangles;
+    edgeTriangles.reserve(triangles.size() * 2);
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
         for (int e = 0; e < 3; ++e) {
             edgeTriangles[undirected(triangles[t][e], triangles[t][(e + 1) % 3])].push_back(t);
@@ -253,7 +262,8 @@ std::size_t windConsistently(std::vector<Triangle>& triangles) {
 
 /// The boundary loops: chains of edges that only one triangle has.
 std::vector<BoundaryLoop> findLoops(const PreparedSurface& s) {
-    std::map<EdgeKey, int> count;
+    std::unordered_map<EdgeKey, int> count;
+    count.reserve(s.triangles.size() * 2);
     for (const Triangle& t : s.triangles) {
         for (int e = 0; e < 3; ++e) {
             ++count[undirected(t[e], t[(e + 1) % 3])];

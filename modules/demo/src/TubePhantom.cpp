@@ -7,6 +7,7 @@
 #include <numbers>
 #include <random>
 #include <string>
+#include <tuple>
 
 #include "vv/core/Error.h"
 
@@ -208,6 +209,7 @@ TubePhantom makeTubePhantom(const TubePhantomOptions& options) {
     phantom.narrowestAbscissaMm = phantom.lengthMm / 2.0;
     phantom.narrowestRadiusMm = radiusAt(options, phantom.narrowestAbscissaMm);
     phantom.mesh = tubeMesh(options, phantom.lengthMm);
+    std::tie(phantom.rings, phantom.sides) = ringsAndSides(options, phantom.lengthMm);
     return phantom;
 }
 

@@ -74,6 +74,11 @@ struct TubePhantom {
     /// axis' middle and radiusMm.
     double narrowestAbscissaMm = 0.0;
     double narrowestRadiusMm = 0.0;
+    /// The mesh's rings (along the axis) and sides (around it): a section
+    /// perpendicular to the axis through the unjittered mesh is the regular
+    /// polygon of `sides` corners on the true circle.
+    int rings = 0;
+    int sides = 0;
 
     /// The true axis at abscissa `s` (clamped to [0, lengthMm]), exactly.
     [[nodiscard]] AxisSample axisAt(double s) const;

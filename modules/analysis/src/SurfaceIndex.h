@@ -1,26 +1,28 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// Private to vv::analysis: nearest points on a prepared surface (its own
-// triangles, without the caps), through CGAL's AABB tree.
+// Private to vv::analysis: a prepared surface's triangles (without the
+// caps) in CGAL's AABB tree: nearest points, rays, and the triangles a
+// section plane crosses.
 #pragma once
 
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
+#include <vector>
 
 #include "PreparedSurface.h"
 
 namespace vv::analysis::detail {
 
-class SurfaceDistance {
+class SurfaceIndex {
   public:
     /// Indexes `surface`'s triangles; the surface must outlive this object.
-    explicit SurfaceDistance(const PreparedSurface& surface);
-    ~SurfaceDistance();
-    SurfaceDistance(const SurfaceDistance&) = delete;
-    SurfaceDistance& operator=(const SurfaceDistance&) = delete;
-    SurfaceDistance(SurfaceDistance&&) = delete;
-    SurfaceDistance& operator=(SurfaceDistance&&) = delete;
+    explicit SurfaceIndex(const PreparedSurface& surface);
+    ~SurfaceIndex();
+    SurfaceIndex(const SurfaceIndex&) = delete;
+    SurfaceIndex& operator=(const SurfaceIndex&) = delete;
+    SurfaceIndex(SurfaceIndex&&) = delete;
+    SurfaceIndex& operator=(SurfaceIndex&&) = delete;
 
     struct Nearest {
         glm::dvec3 point{0.0};
@@ -36,6 +38,14 @@ class SurfaceDistance {
     /// the surface; nullopt when it meets none.
     [[nodiscard]] std::optional<glm::dvec3> firstHit(const glm::dvec3& origin,
                                                      const glm::dvec3& direction) const;
+
+    /// The triangles the plane through `point` with normal `normal` crosses
+    /// or touches whose bounding boxes meet the box [lo, hi];
+    /// indices into surface.triangles, in no order.
+    [[nodiscard]] std::vector<std::uint32_t> trianglesOnPlane(const glm::dvec3& point,
+                                                              const glm::dvec3& normal,
+                                                              const glm::dvec3& lo,
+                                                              const glm::dvec3& hi) const;
 
   private:
     struct Tree;

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "SurfaceDistance.h"
+#include "SurfaceIndex.h"
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 namespace vv::analysis::detail {
@@ -23,12 +24,12 @@ Kernel::Point_3 toPoint(const glm::dvec3& p) {
 }
 }  // namespace
 
-struct SurfaceDistance::Tree {
+struct SurfaceIndex::Tree {
     std::vector<Triangle3> triangles;
     AabbTree tree;
 };
 
-SurfaceDistance::SurfaceDistance(const PreparedSurface& surface) : tree_(std::make_unique<Tree>()) {
+SurfaceIndex::SurfaceIndex(const PreparedSurface& surface) : tree_(std::make_unique<Tree>()) {
     tree_->triangles.reserve(surface.triangles.size());
     for (const Triangle& t : surface.triangles) {
         tree_->triangles.emplace_back(toPoint(surface.positions[t[0]]),
@@ -40,9 +41,9 @@ SurfaceDistance::SurfaceDistance(const PreparedSurface& surface) : tree_(std::ma
     tree_->tree.accelerate_distance_queries();
 }
 
-SurfaceDistance::~SurfaceDistance() = default;
+SurfaceIndex::~SurfaceIndex() = default;
 
-SurfaceDistance::Nearest SurfaceDistance::nearest(const glm::dvec3& p) const {
+SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
     const auto [point, primitive] = tree_->tree.closest_point_and_primitive(toPoint(p));
     Nearest n;
     n.point = {point.x(), point.y(), point.z()};
@@ -51,12 +52,12 @@ SurfaceDistance::Nearest SurfaceDistance::nearest(const glm::dvec3& p) const {
     return n;
 }
 
-double SurfaceDistance::distance(const glm::dvec3& p) const {
+double SurfaceIndex::distance(const glm::dvec3& p) const {
     return std::sqrt(tree_->tree.squared_distance(toPoint(p)));
 }
 
-std::optional<glm::dvec3> SurfaceDistance::firstHit(const glm::dvec3& origin,
-                                                    const glm::dvec3& direction) const {
+std::optional<glm::dvec3> SurfaceIndex::firstHit(const glm::dvec3& origin,
+                                                 const glm::dvec3& direction) const {
     const Kernel::Ray_3 ray(toPoint(origin),
                             Kernel::Vector_3(direction.x, direction.y, direction.z));
     const auto hit = tree_->tree.first_intersection(ray);
@@ -72,6 +73,26 @@ std::optional<glm::dvec3> SurfaceDistance::firstHit(const glm::dvec3& origin,
         return glm::dvec3(p.x(), p.y(), p.z());
     }
     return std::nullopt;
+}
+
+std::vector<std::uint32_t> SurfaceIndex::trianglesOnPlane(const glm::dvec3& point,
+                                                          const glm::dvec3& normal,
+                                                          const glm::dvec3& lo,
+                                                          const glm::dvec3& hi) const {
+    // The tree prunes by the plane (only the boxes it crosses are opened);
+    // the triangles found are then kept to the box around the point.
+    const Kernel::Plane_3 plane(toPoint(point), Kernel::Vector_3(normal.x, normal.y, normal.z));
+    std::vector<Iterator> hits;
+    tree_->tree.all_intersected_primitives(plane, std::back_inserter(hits));
+    const CGAL::Bbox_3 box(lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
+    std::vector<std::uint32_t> crossing;
+    crossing.reserve(hits.size());
+    for (const Iterator& hit : hits) {
+        if (CGAL::do_overlap(box, hit->bbox())) {
+            crossing.push_back(static_cast<std::uint32_t>(hit - tree_->triangles.cbegin()));
+        }
+    }
+    return crossing;
 }
 
 }  // namespace vv::analysis::detail

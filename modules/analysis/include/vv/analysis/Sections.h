@@ -1,0 +1,70 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+// Cross-sections of a vessel surface perpendicular to its centrelines: at
+// every centreline point, the closed lumen contour around the point in the
+// plane normal to the tangent (never a neighbouring vessel's contour, which
+// does not hold the point), and its size.
+//
+// Which diameter is which (every table, JSON and tooltip names them so):
+// - equivalent diameter: 2 sqrt(A / pi), of the circle with the section's
+//   area A; what "the diameter" of a round vessel means, and what stenosis
+//   grading by area uses;
+// - minimum / maximum diameter: the smallest and the largest Feret width of
+//   the contour (the distance between two parallel lines that touch it, over
+//   all directions): what calipers measure; for an oval lumen they differ;
+// - inscribed diameter: twice the radius of the largest sphere centred on
+//   the centreline that stays inside the surface (VMTK's
+//   MaximumInscribedSphereRadius); at most the minimum diameter.
+
+#include <cstdint>
+#include <glm/glm.hpp>
+#include <vector>
+
+#include "vv/analysis/Centerlines.h"
+#include "vv/core/Progress.h"
+#include "vv/scene/Mesh.h"
+
+namespace vv::analysis {
+
+struct CrossSection {
+    enum class Status : std::uint8_t {
+        Ok,
+        /// The plane cuts no closed contour around the centreline point (at
+        /// an open end, or where the surface has a hole): no size.
+        NoContour,
+    };
+    Status status = Status::NoContour;
+    int branch = 0;              ///< CenterlineTree::branches index
+    std::size_t pointIndex = 0;  ///< into that branch's points
+    double abscissaMm = 0.0;     ///< the point's abscissa
+    glm::dvec3 centre{0.0};      ///< the centreline point, mm
+    glm::dvec3 normal{0.0};      ///< the plane's normal: the centreline's tangent
+    /// In-plane axes: the centreline's rotation-minimising normal and
+    /// binormal, so consecutive sections do not twist.
+    glm::dvec3 axisU{0.0};
+    glm::dvec3 axisV{0.0};
+    /// The lumen contour in (u, v) mm about the centre, counter-clockwise
+    /// seen along the normal, not repeating its first point.
+    std::vector<glm::dvec2> contour;
+    double areaMm2 = 0.0;
+    double perimeterMm = 0.0;
+    double equivalentDiameterMm = 0.0;  ///< 2 sqrt(area / pi)
+    double minDiameterMm = 0.0;         ///< the smallest Feret width
+    double maxDiameterMm = 0.0;         ///< the largest Feret width
+    double inscribedDiameterMm = 0.0;   ///< 2 x the maximal inscribed sphere's radius
+    double circularity = 0.0;           ///< 4 pi area / perimeter^2: 1 for a circle
+    /// The distance from the centreline point to the contour's centroid, mm
+    /// (how far off centre the centreline runs here).
+    double centreOffsetMm = 0.0;
+};
+
+/// The sections of every branch of `tree` (made from `mesh`), one per
+/// centreline point: result[b][i] is branch b's point i. Progress is
+/// reported; a stop request throws CancelledError. Throws AnalysisError for
+/// a mesh that cannot be prepared (as computeCenterlines).
+[[nodiscard]] std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
+                                                                     const CenterlineTree& tree,
+                                                                     const Progress& progress = {});
+
+}  // namespace vv::analysis
