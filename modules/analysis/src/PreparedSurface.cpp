@@ -207,16 +207,66 @@ EdgeKey undirected(std::uint32_t a, std::uint32_t b) {
     return a < b ? (static_cast<EdgeKey>(a) << 32U) | b : (static_cast<EdgeKey>(b) << 32U) | a;
 }
 
-/// Winds neighbouring triangles alike (across edges two triangles share),
-/// piece by piece from its first triangle. Returns how many it flipped.
-std::size_t windConsistently(std::vector<Triangle>& triangles) {
-    std::unordered_map<EdgeKey, std::vector<std::uint32_t>> edgeTriangles;
-    edgeTriangles.reserve(triangles.size() * 2);
+/// Per triangle, its three edges (by key) and the triangle across each:
+/// kBoundary when no other triangle has the edge, kNonManifold when more
+/// than one does. Built once from a sorted list of the edges.
+constexpr std::uint32_t kBoundary = UINT32_MAX;
+constexpr std::uint32_t kNonManifold = UINT32_MAX - 1;
+
+struct EdgeNeighbours {
+    std::vector<std::array<EdgeKey, 3>> keys;
+    std::vector<std::array<std::uint32_t, 3>> across;
+
+    /// The triangle across edge (a, b) of triangle t.
+    [[nodiscard]] std::uint32_t acrossEdge(std::uint32_t t, std::uint32_t a,
+                                           std::uint32_t b) const {
+        const EdgeKey key = undirected(a, b);
+        for (std::size_t e = 0; e < 3; ++e) {
+            if (keys[t][e] == key) {
+                return across[t][e];
+            }
+        }
+        return kBoundary;
+    }
+};
+
+EdgeNeighbours edgeNeighbours(const std::vector<Triangle>& triangles) {
+    EdgeNeighbours n;
+    n.keys.resize(triangles.size());
+    n.across.resize(triangles.size());
+    std::vector<std::pair<EdgeKey, std::uint32_t>> uses;  // (edge, triangle * 3 + edge index)
+    uses.reserve(triangles.size() * 3);
     for (std::uint32_t t = 0; t < triangles.size(); ++t) {
-        for (int e = 0; e < 3; ++e) {
-            edgeTriangles[undirected(triangles[t][e], triangles[t][(e + 1) % 3])].push_back(t);
+        for (std::uint32_t e = 0; e < 3; ++e) {
+            const EdgeKey key = undirected(triangles[t][e], triangles[t][(e + 1) % 3]);
+            n.keys[t][e] = key;
+            uses.emplace_back(key, t * 3 + e);
         }
     }
+    std::sort(uses.begin(), uses.end());
+    for (std::size_t i = 0; i < uses.size();) {
+        std::size_t j = i;
+        while (j < uses.size() && uses[j].first == uses[i].first) {
+            ++j;
+        }
+        for (std::size_t k = i; k < j; ++k) {
+            const std::uint32_t use = uses[k].second;
+            std::uint32_t other = kBoundary;
+            if (j - i == 2) {
+                other = uses[k == i ? i + 1 : i].second / 3;
+            } else if (j - i > 2) {
+                other = kNonManifold;
+            }
+            n.across[use / 3][use % 3] = other;
+        }
+        i = j;
+    }
+    return n;
+}
+
+/// Winds neighbouring triangles alike (across edges two triangles share),
+/// piece by piece from its first triangle. Returns how many it flipped.
+std::size_t windConsistently(std::vector<Triangle>& triangles, const EdgeNeighbours& neighbours) {
     const auto runsForward = [&](std::uint32_t t, std::uint32_t a, std::uint32_t b) {
         for (int e = 0; e < 3; ++e) {
             if (triangles[t][e] == a && triangles[t][(e + 1) % 3] == b) {
@@ -240,13 +290,9 @@ std::size_t windConsistently(std::vector<Triangle>& triangles) {
             for (int e = 0; e < 3; ++e) {
                 const std::uint32_t a = triangles[t][e];
                 const std::uint32_t b = triangles[t][(e + 1) % 3];
-                const auto& around = edgeTriangles[undirected(a, b)];
-                if (around.size() != 2) {
-                    continue;  // a boundary or a non-manifold edge: no neighbour to follow
-                }
-                const std::uint32_t n = around[0] == t ? around[1] : around[0];
-                if (done[n] != 0) {
-                    continue;
+                const std::uint32_t n = neighbours.acrossEdge(t, a, b);
+                if (n == kBoundary || n == kNonManifold || done[n] != 0) {
+                    continue;  // no single neighbour to follow, or already wound
                 }
                 done[n] = 1;
                 if (runsForward(n, a, b)) {
@@ -261,19 +307,13 @@ std::size_t windConsistently(std::vector<Triangle>& triangles) {
 }
 
 /// The boundary loops: chains of edges that only one triangle has.
-std::vector<BoundaryLoop> findLoops(const PreparedSurface& s) {
-    std::unordered_map<EdgeKey, int> count;
-    count.reserve(s.triangles.size() * 2);
-    for (const Triangle& t : s.triangles) {
-        for (int e = 0; e < 3; ++e) {
-            ++count[undirected(t[e], t[(e + 1) % 3])];
-        }
-    }
+std::vector<BoundaryLoop> findLoops(const PreparedSurface& s, const EdgeNeighbours& neighbours) {
     std::multimap<std::uint32_t, std::uint32_t> next;  // boundary half-edges a -> b
-    for (const Triangle& t : s.triangles) {
+    for (std::uint32_t t = 0; t < s.triangles.size(); ++t) {
+        const Triangle& tri = s.triangles[t];
         for (int e = 0; e < 3; ++e) {
-            if (count[undirected(t[e], t[(e + 1) % 3])] == 1) {
-                next.emplace(t[e], t[(e + 1) % 3]);
+            if (neighbours.acrossEdge(t, tri[e], tri[(e + 1) % 3]) == kBoundary) {
+                next.emplace(tri[e], tri[(e + 1) % 3]);
             }
         }
     }
@@ -394,10 +434,11 @@ PreparedSurface prepareSurface(const scene::Mesh& mesh, const std::optional<glm:
     }
     keepOnePiece(s, anchor);
     progress.throwIfCancelled();
-    if (windConsistently(s.triangles) > 0) {
+    const EdgeNeighbours neighbours = edgeNeighbours(s.triangles);
+    if (windConsistently(s.triangles, neighbours) > 0) {
         s.notes.emplace_back("Triangles wound against their neighbours were turned round.");
     }
-    s.loops = findLoops(s);
+    s.loops = findLoops(s, neighbours);
     for (BoundaryLoop& loop : s.loops) {
         measureLoop(loop, s.positions);
     }
