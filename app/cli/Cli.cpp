@@ -75,6 +75,12 @@ constexpr const char* kUsageText =
     "                                       and settings that made it (VTP field data, STL\n"
     "                                       header, PLY comments); warns when a bright\n"
     "                                       tube continues past the segmentation\n"
+    "  centerline FILE -o CENTERLINES.vtp [--source X,Y,Z] [--target X,Y,Z ...] [--step MM]\n"
+    "         [--scale F] [--sections SECTIONS.csv] [--json] [DICOM options as for render]\n"
+    "                                       centrelines (VMTK's method), sections with their\n"
+    "                                       diameters, stenoses and bifurcation angles of a\n"
+    "                                       mesh or of segmented DICOM vessels; exit code 3\n"
+    "                                       when the surface cannot be analysed\n"
     "  report FILE -o REPORT.pdf [render options as for render] [--png IMAGE.png]\n"
     "         [--transparent] [--dicom-sc SC.dcm] [--dicom-pdf DOC.dcm] [--paper a4|letter]\n"
     "         [--title TEXT] [--note TEXT] [--second-view VIEW] [--below V] [--above V]\n"
@@ -256,6 +262,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "segment") {
             return segmentCommand(rest, out, err);
+        }
+        if (command == "centerline") {
+            return centerlineCommand(rest, out, err);
         }
         if (command == "pacs") {
             return pacsCommand(rest, out, err);

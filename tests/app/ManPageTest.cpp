@@ -153,7 +153,8 @@ TEST(ManPage, DescribesEveryFormOfEveryCommand) {
          {"info FILE...", "demo -o FILE.vtp", "demo --dicom DIR", "render FILE -o IMAGE.png",
           "render --session F.vvs -o IMAGE.png", "report FILE -o REPORT.pdf",
           "report --session F.vvs -o REPORT.pdf", "report --batch LIST.txt --out-dir DIR",
-          "vss --depth IN.pfm -o OUT.pfm", "bench", "pacs echo|find|get|send|listen"}) {
+          "vss --depth IN.pfm -o OUT.pfm", "bench", "centerline FILE -o CENTERLINES.vtp",
+          "pacs echo|find|get|send|listen"}) {
         // In SYNOPSIS (vesselview-cli FORM) and in COMMANDS.
         const std::string text = cliPage();
         const std::size_t commands = text.find(" COMMANDS ");

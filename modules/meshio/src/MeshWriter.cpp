@@ -1,8 +1,15 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/meshio/MeshWriter.h"
 
+#include <vtkCellArray.h>
+#include <vtkCellData.h>
+#include <vtkDoubleArray.h>
 #include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkIntArray.h>
 #include <vtkPLYWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSTLWriter.h>
 #include <vtkSmartPointer.h>
@@ -12,6 +19,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <set>
 #include <string>
 #include <utility>
@@ -136,6 +144,37 @@ void writeVtpFile(vtkPolyData* poly, const std::filesystem::path& file) {
     writeThrough(writer.Get(), file, "VTP");
 }
 
+/// A VTK array of `array`: 32-bit integers for an integer array whose
+/// values are all finite and in range, floats otherwise.
+vtkSmartPointer<vtkDataArray> vtkArrayOf(const scene::DataArray& array) {
+    const bool asInt =
+        array.integer && std::all_of(array.values.begin(), array.values.end(), [](float v) {
+            return std::isfinite(v) && std::abs(v) < 2.0e9F;
+        });
+    vtkSmartPointer<vtkDataArray> out;
+    if (asInt) {
+        out = vtkSmartPointer<vtkIntArray>::New();
+    } else {
+        out = vtkSmartPointer<vtkFloatArray>::New();
+    }
+    out->SetName(array.name.c_str());
+    out->SetNumberOfComponents(array.components);
+    out->SetNumberOfTuples(static_cast<vtkIdType>(array.tupleCount()));
+    for (std::size_t i = 0; i < array.values.size(); ++i) {
+        out->SetVariantValue(static_cast<vtkIdType>(i), vtkVariant(array.values[i]));
+    }
+    return out;
+}
+
+void addFieldData(vtkPolyData* poly, const MeshFileMetadata& metadata) {
+    for (const auto& [name, value] : metadata.fields) {
+        auto array = vtkSmartPointer<vtkStringArray>::New();
+        array->SetName(name.c_str());
+        array->InsertNextValue(value);
+        poly->GetFieldData()->AddArray(array);
+    }
+}
+
 std::string lowerExtension(const std::filesystem::path& file) {
     std::string ext = file.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(),
@@ -185,14 +224,52 @@ void writeMeshFile(const scene::Mesh& mesh, const std::filesystem::path& file,
         }
         writeThrough(writer.Get(), file, "PLY", ".ply");
     } else {
-        for (const auto& [name, value] : metadata.fields) {
-            auto array = vtkSmartPointer<vtkStringArray>::New();
-            array->SetName(name.c_str());
-            array->InsertNextValue(value);
-            poly->GetFieldData()->AddArray(array);
-        }
+        addFieldData(poly, metadata);
         writeVtpFile(poly, file);
     }
+}
+
+void writePolylinesVtp(const PolylineSet& lines, const std::filesystem::path& file,
+                       const MeshFileMetadata& metadata) {
+    for (const auto& line : lines.lines) {
+        if (line.size() < 2) {
+            throw InvalidArgumentError(file, "a polyline has fewer than two points");
+        }
+        for (const std::uint32_t index : line) {
+            if (index >= lines.points.size()) {
+                throw InvalidArgumentError(file, "a polyline refers to point " +
+                                                     std::to_string(index) + " of " +
+                                                     std::to_string(lines.points.size()));
+            }
+        }
+    }
+    checkArrays(lines.pointArrays, lines.points.size(), "point", file);
+    checkArrays(lines.lineArrays, lines.lines.size(), "line", file);
+    auto points = vtkSmartPointer<vtkPoints>::New();
+    points->SetDataTypeToDouble();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(lines.points.size()));
+    for (std::size_t i = 0; i < lines.points.size(); ++i) {
+        const glm::dvec3& p = lines.points[i];
+        points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+    }
+    auto cells = vtkSmartPointer<vtkCellArray>::New();
+    for (const auto& line : lines.lines) {
+        cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
+        for (const std::uint32_t index : line) {
+            cells->InsertCellPoint(static_cast<vtkIdType>(index));
+        }
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetLines(cells);
+    for (const auto& array : lines.pointArrays) {
+        poly->GetPointData()->AddArray(vtkArrayOf(array));
+    }
+    for (const auto& array : lines.lineArrays) {
+        poly->GetCellData()->AddArray(vtkArrayOf(array));
+    }
+    addFieldData(poly, metadata);
+    writeVtpFile(poly, file);
 }
 
 }  // namespace vv::meshio

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
+#include <glm/glm.hpp>
 #include <string>
 #include <utility>
 #include <vector>
@@ -54,5 +56,24 @@ struct MeshFileMetadata {
 /// written.
 void writeMeshFile(const scene::Mesh& mesh, const std::filesystem::path& file,
                    const MeshFileMetadata& metadata = {});
+
+/// Polylines with per-point and per-line arrays: centrelines for other tools
+/// (VMTK, 3D Slicer, ParaView).
+struct PolylineSet {
+    std::vector<glm::dvec3> points;
+    std::vector<std::vector<std::uint32_t>> lines;  ///< each >= 2 indices into points
+    /// Written under their names as they are (no "[unit]" added).
+    std::vector<scene::DataArray> pointArrays;  ///< tupleCount() == points.size()
+    std::vector<scene::DataArray> lineArrays;   ///< tupleCount() == lines.size()
+};
+
+/// Writes `lines` as VTK XML polydata (.vtp, binary, zlib-compressed; points
+/// in double precision, integer arrays as 32-bit integers) with each
+/// metadata field as a one-value string array of the field data; atomically
+/// (as writeVtp). Throws InvalidArgumentError naming `file` for an index out
+/// of range, a line of fewer than two points or arrays that do not fit
+/// (as writeVtp), IoError naming `file` when it cannot be written.
+void writePolylinesVtp(const PolylineSet& lines, const std::filesystem::path& file,
+                       const MeshFileMetadata& metadata = {});
 
 }  // namespace vv::meshio

@@ -1,0 +1,385 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli centerline FILE -o CENTERLINES.vtp [...]`: the centrelines
+// of a vessel surface (a mesh file, or a DICOM series segmented as `render`
+// segments it), their sections and stenoses (vv::analysis), written for
+// VMTK, 3D Slicer and ParaView (VTK polylines with VMTK's array names), as a
+// CSV of sections and as JSON.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <vector>
+
+#include "cli/Arguments.h"
+#include "cli/Cli.h"
+#include "cli/JsonWriter.h"
+#include "cli/OutputFiles.h"
+#include "vv/analysis/Bifurcations.h"
+#include "vv/analysis/Centerlines.h"
+#include "vv/analysis/Sections.h"
+#include "vv/analysis/Stenosis.h"
+#include "vv/core/AtomicFile.h"
+#include "vv/core/Error.h"
+#include "vv/core/NumberText.h"
+#include "vv/meshio/MeshWriter.h"
+#include "vv/segmentation/SceneSource.h"
+
+namespace vv::cli {
+
+namespace {
+
+constexpr const char* kCenterlineUsage =
+    "usage: vesselview-cli centerline FILE -o CENTERLINES.vtp [--source X,Y,Z]\n"
+    "       [--target X,Y,Z ...] [--step MM] [--scale F] [--sections SECTIONS.csv] [--json]\n"
+    "       [DICOM options as for segment]\n"
+    "  The centrelines of a vessel surface (a mesh file, or a DICOM series\n"
+    "  segmented as render and segment do), by VMTK's method: the internal\n"
+    "  Voronoi diagram and minimal paths with cost 1/R, resampled every --step\n"
+    "  mm (default 0.5). The ends are the open ends' centres and the closed\n"
+    "  vessels' tips unless --source / --target give them (points near the\n"
+    "  surface; the distance to it is reported). Scene units are mm: a mesh\n"
+    "  in metres needs --scale 1000 (a warning says when the size suggests it).\n"
+    "  -o, --output FILE    the centrelines, VTK polylines (.vtp), one line per\n"
+    "                       branch, point arrays as VMTK names them\n"
+    "                       (MaximumInscribedSphereRadius, Abscissas, Curvature,\n"
+    "                       Torsion, ParallelTransportNormals) plus branch_id and\n"
+    "                       the sections' CenterlineSectionArea,\n"
+    "                       EquivalentDiameter, CenterlineSectionMinSize,\n"
+    "                       CenterlineSectionMaxSize (mm, mm^2, 1/mm)\n"
+    "  --sections FILE.csv  one row per section, units in the header\n"
+    "  --json               branches with lengths, diameters at the narrowest and\n"
+    "                       widest points, stenoses and bifurcation angles on\n"
+    "                       stdout\n"
+    "  Diameters: equivalent = 2 sqrt(area / pi); minimum / maximum = the\n"
+    "  smallest / largest caliper (Feret) width of the section; inscribed =\n"
+    "  twice the largest sphere on the centreline inside the surface.\n"
+    "  Exit code 3 when the surface cannot be analysed, with the reason.\n";
+
+glm::dvec3 parsePoint(const std::string& text, const std::string& what) {
+    const std::vector<std::string> items = splitList(text, what);
+    if (items.size() != 3) {
+        throw UsageError(what + " must be X,Y,Z (mm), got '" + text + "'");
+    }
+    return {parseNumber(items[0], what), parseNumber(items[1], what), parseNumber(items[2], what)};
+}
+
+struct CenterlineArgs {
+    std::filesystem::path input;
+    std::filesystem::path output;
+    std::filesystem::path sectionsCsv;
+    bool json = false;
+    analysis::CenterlineOptions options;
+    segmentation::SceneSourceOptions source;
+};
+
+/// Parses the arguments; nullopt after printing --help.
+std::optional<CenterlineArgs> parseArgs(const std::vector<std::string>& args, std::ostream& out) {
+    CenterlineArgs c;
+    bool haveInput = false;
+    for (Arguments a("centerline", args); a.next();) {
+        const std::string& name = a.name();
+        if (name == "--help" || name == "-h") {
+            out << kCenterlineUsage;
+            return std::nullopt;
+        }
+        if (name == "-o" || name == "--output") {
+            c.output = a.path();
+        } else if (name == "--sections") {
+            c.sectionsCsv = a.path();
+        } else if (name == "--json") {
+            c.json = true;
+        } else if (name == "--source") {
+            c.options.source = parsePoint(a.value(), "--source");
+        } else if (name == "--target") {
+            c.options.targets.push_back(parsePoint(a.value(), "--target"));
+        } else if (name == "--step") {
+            c.options.stepMm = parseNumber(a.value(), "--step");
+            if (!(c.options.stepMm >= 0.01 && c.options.stepMm <= 10.0)) {
+                a.fail("--step must be within 0.01..10 mm");
+            }
+        } else if (name == "--scale") {
+            c.source.mesh.scale = parseNumber(a.value(), "--scale");
+            if (!(c.source.mesh.scale > 0.0)) {
+                a.fail("--scale must be > 0");
+            }
+        } else if (segmentation::setSceneSourceOption(name, a.peekValue(), c.source)) {
+            a.takeValue();
+        } else {
+            a.takeOneInput(c.input, haveInput);
+        }
+    }
+    if (!haveInput) {
+        throw UsageError("centerline needs an input: a mesh file or a DICOM series");
+    }
+    if (c.output.empty()) {
+        throw UsageError("centerline needs an output file: -o CENTERLINES.vtp");
+    }
+    if (c.output.extension() != ".vtp") {
+        throw UsageError("centerline: the output must end in .vtp, not '" + c.output.string() +
+                         "'");
+    }
+    return c;
+}
+
+/// A warning when the surface's size says it is not in mm.
+void warnAboutUnits(const scene::Mesh& mesh, std::ostream& err) {
+    const double across = glm::length(glm::dvec3(mesh.bounds().size()));
+    if (across > 0.0 && across < 2.0) {
+        err << "vesselview-cli: warning: the surface is " << significantText(across, 3)
+            << " across: if it is in metres, give --scale 1000 (scene units are mm)\n";
+    } else if (across > 5000.0) {
+        err << "vesselview-cli: warning: the surface is " << significantText(across, 3)
+            << " mm across: if it is in micrometres, give --scale 0.001 (scene units are mm)\n";
+    }
+}
+
+float valueOr(bool ok, double value) {
+    return ok ? static_cast<float>(value) : std::numeric_limits<float>::quiet_NaN();
+}
+
+/// The branches as polylines with VMTK's point arrays and the sections'.
+meshio::PolylineSet polylines(const analysis::CenterlineTree& tree,
+                              const std::vector<std::vector<analysis::CrossSection>>& sections) {
+    meshio::PolylineSet set;
+    const auto array = [](const char* name, int components, bool integer) {
+        scene::DataArray a;
+        a.name = name;
+        a.components = components;
+        a.integer = integer;
+        return a;
+    };
+    scene::DataArray radius = array("MaximumInscribedSphereRadius", 1, false);
+    scene::DataArray abscissa = array("Abscissas", 1, false);
+    scene::DataArray curvature = array("Curvature", 1, false);
+    scene::DataArray torsion = array("Torsion", 1, false);
+    scene::DataArray normals = array("ParallelTransportNormals", 3, false);
+    scene::DataArray branchId = array("branch_id", 1, true);
+    scene::DataArray area = array("CenterlineSectionArea", 1, false);
+    scene::DataArray equivalent = array("EquivalentDiameter", 1, false);
+    scene::DataArray minSize = array("CenterlineSectionMinSize", 1, false);
+    scene::DataArray maxSize = array("CenterlineSectionMaxSize", 1, false);
+    scene::DataArray lineBranch = array("branch_id", 1, true);
+    for (std::size_t b = 0; b < tree.branches.size(); ++b) {
+        std::vector<std::uint32_t> line;
+        const auto& branch = tree.branches[b];
+        for (std::size_t i = 0; i < branch.points.size(); ++i) {
+            const auto& p = branch.points[i];
+            const auto& s = sections[b][i];
+            const bool ok = s.status == analysis::CrossSection::Status::Ok;
+            line.push_back(static_cast<std::uint32_t>(set.points.size()));
+            set.points.push_back(p.position);
+            radius.values.push_back(static_cast<float>(p.radiusMm));
+            abscissa.values.push_back(static_cast<float>(p.abscissaMm));
+            curvature.values.push_back(static_cast<float>(p.curvature));
+            torsion.values.push_back(static_cast<float>(p.torsion));
+            for (int c = 0; c < 3; ++c) {
+                normals.values.push_back(static_cast<float>(p.normal[c]));
+            }
+            branchId.values.push_back(static_cast<float>(branch.id));
+            area.values.push_back(valueOr(ok, s.areaMm2));
+            equivalent.values.push_back(valueOr(ok, s.equivalentDiameterMm));
+            minSize.values.push_back(valueOr(ok, s.minDiameterMm));
+            maxSize.values.push_back(valueOr(ok, s.maxDiameterMm));
+        }
+        set.lines.push_back(std::move(line));
+        lineBranch.values.push_back(static_cast<float>(branch.id));
+    }
+    set.pointArrays = {radius,   abscissa, curvature,  torsion, normals,
+                       branchId, area,     equivalent, minSize, maxSize};
+    set.lineArrays = {lineBranch};
+    return set;
+}
+
+void writeSectionsCsv(const std::filesystem::path& file,
+                      const std::vector<std::vector<analysis::CrossSection>>& sections) {
+    try {
+        writeAtomically(file, [&](const std::filesystem::path& temporary) {
+            std::ofstream out(temporary, std::ios::binary);
+            out << "branch_id,point,abscissa_mm,x_mm,y_mm,z_mm,area_mm2,equivalent_diameter_mm,"
+                   "min_diameter_mm,max_diameter_mm,inscribed_diameter_mm,perimeter_mm,"
+                   "circularity,status\n";
+            for (const auto& branch : sections) {
+                for (const auto& s : branch) {
+                    const bool ok = s.status == analysis::CrossSection::Status::Ok;
+                    const auto number = [ok](double v) { return ok ? fixedText(v, 4) : ""; };
+                    out << s.branch << ',' << s.pointIndex << ',' << fixedText(s.abscissaMm, 3)
+                        << ',' << fixedText(s.centre.x, 4) << ',' << fixedText(s.centre.y, 4) << ','
+                        << fixedText(s.centre.z, 4) << ',' << number(s.areaMm2) << ','
+                        << number(s.equivalentDiameterMm) << ',' << number(s.minDiameterMm) << ','
+                        << number(s.maxDiameterMm) << ',' << fixedText(s.inscribedDiameterMm, 4)
+                        << ',' << number(s.perimeterMm) << ',' << number(s.circularity) << ','
+                        << (ok ? "ok" : "no contour") << '\n';
+                }
+            }
+            out.flush();
+            if (!out) {
+                throw IoError(file, "cannot write the sections");
+            }
+        });
+    } catch (const IoError& e) {
+        throw OutputError(e.what());
+    }
+}
+
+/// Narrowest and widest measured section of a branch (nullptr when none).
+std::pair<const analysis::CrossSection*, const analysis::CrossSection*> extremes(
+    const std::vector<analysis::CrossSection>& sections) {
+    const analysis::CrossSection* narrowest = nullptr;
+    const analysis::CrossSection* widest = nullptr;
+    for (const auto& s : sections) {
+        if (s.status != analysis::CrossSection::Status::Ok) {
+            continue;
+        }
+        if (narrowest == nullptr || s.equivalentDiameterMm < narrowest->equivalentDiameterMm) {
+            narrowest = &s;
+        }
+        if (widest == nullptr || s.equivalentDiameterMm > widest->equivalentDiameterMm) {
+            widest = &s;
+        }
+    }
+    return {narrowest, widest};
+}
+
+void writeSection(JsonWriter& json, const char* name, const analysis::CrossSection* s) {
+    json.key(name);
+    if (s == nullptr) {
+        json.null();
+        return;
+    }
+    json.beginObject();
+    json.member("abscissa_mm", s->abscissaMm);
+    json.member("equivalent_diameter_mm", s->equivalentDiameterMm);
+    json.member("min_diameter_mm", s->minDiameterMm);
+    json.member("max_diameter_mm", s->maxDiameterMm);
+    json.member("inscribed_diameter_mm", s->inscribedDiameterMm);
+    json.member("area_mm2", s->areaMm2);
+    json.endObject();
+}
+
+void writeJson(std::ostream& out, const analysis::CenterlineTree& tree,
+               const std::vector<std::vector<analysis::CrossSection>>& sections) {
+    JsonWriter json(out);
+    json.beginObject();
+    json.key("diameters");
+    json.string(
+        "equivalent: 2 sqrt(area / pi); min / max: smallest / largest Feret (caliper) "
+        "width; inscribed: twice the largest sphere on the centreline inside the surface");
+    json.key("branches");
+    json.beginArray();
+    for (const auto& branch : tree.branches) {
+        json.beginObject();
+        json.member("id", branch.id);
+        json.member("parent", branch.parent);
+        json.member("length_mm", branch.lengthMm);
+        json.member("tortuosity", branch.tortuosity());
+        const auto [narrowest, widest] = extremes(sections[static_cast<std::size_t>(branch.id)]);
+        writeSection(json, "narrowest", narrowest);
+        writeSection(json, "widest", widest);
+        json.key("stenosis");
+        const auto stenosis = analysis::gradeStenosis(tree, sections, branch.id);
+        if (stenosis) {
+            json.beginObject();
+            json.member("abscissa_mm", stenosis->abscissaMm);
+            json.member("diameter_percent", stenosis->diameterPercent);
+            json.member("area_percent", stenosis->areaPercent);
+            json.member("reference_diameter_mm", stenosis->referenceDiameterMm);
+            json.member("reference", stenosis->method);
+            json.endObject();
+        } else {
+            json.null();
+        }
+        json.endObject();
+    }
+    json.endArray();
+    json.key("bifurcations");
+    json.beginArray();
+    for (const auto& b : analysis::findBifurcations(tree)) {
+        json.beginObject();
+        json.member("parent", b.parent);
+        json.key("children");
+        json.beginArray();
+        for (const int c : b.children) {
+            json.integer(c);
+        }
+        json.endArray();
+        json.member("angle_deg", b.angleDeg);
+        json.endObject();
+    }
+    json.endArray();
+    json.key("notes");
+    json.beginArray();
+    for (const auto& note : tree.notes) {
+        json.string(note);
+    }
+    json.endArray();
+    json.endObject();
+    json.finish();
+}
+
+}  // namespace
+
+int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    const auto parsed = parseArgs(args, out);
+    if (!parsed) {
+        return kOk;
+    }
+    const CenterlineArgs& c = *parsed;
+    std::error_code ec;
+    if (!std::filesystem::exists(c.input, ec)) {
+        throw IoError(c.input, "no such file or folder");
+    }
+    checkOutputPath(c.output);
+    if (!c.sectionsCsv.empty()) {
+        checkOutputPath(c.sectionsCsv);
+    }
+    const scene::Scene scene = segmentation::loadSceneSource(c.input, c.source);
+    if (scene.meshes.empty()) {
+        throw FormatError(c.input, "holds no surface to analyse");
+    }
+    const scene::Mesh& mesh = scene.meshes.front();
+    if (scene.meshes.size() > 1) {
+        err << "vesselview-cli: note: " << c.input.string() << " holds " << scene.meshes.size()
+            << " surfaces; the first, '" << mesh.name << "', is analysed\n";
+    }
+    warnAboutUnits(mesh, err);
+    const analysis::CenterlineTree tree = analysis::computeCenterlines(mesh, c.options);
+    const auto sections = analysis::computeSections(mesh, tree);
+    for (const auto& note : tree.notes) {
+        err << "vesselview-cli: note: " << note << "\n";
+    }
+    for (const auto& end : tree.ends) {
+        if (end.kind == analysis::EndPoint::Kind::Given && end.offsetMm > 0.5) {
+            err << "vesselview-cli: note: the point (" << fixedText(end.requested.x, 2) << ", "
+                << fixedText(end.requested.y, 2) << ", " << fixedText(end.requested.z, 2) << ") is "
+                << fixedText(end.offsetMm, 2) << " mm from the surface\n";
+        }
+    }
+    meshio::MeshFileMetadata metadata;
+    metadata.fields = {{"software", "VesselView"},
+                       {"source", c.input.string()},
+                       {"units", "mm"},
+                       {"step_mm", shortestText(c.options.stepMm)}};
+    try {
+        meshio::writePolylinesVtp(polylines(tree, sections), c.output, metadata);
+    } catch (const IoError& e) {
+        throw OutputError(e.what());
+    }
+    if (!c.sectionsCsv.empty()) {
+        writeSectionsCsv(c.sectionsCsv, sections);
+    }
+    if (c.json) {
+        writeJson(out, tree, sections);
+    } else {
+        double length = 0.0;
+        for (const auto& b : tree.branches) {
+            length += b.lengthMm;
+        }
+        out << tree.branches.size() << " branches, " << tree.ends.size() << " ends, "
+            << fixedText(length, 1) << " mm of centreline -> " << c.output.string() << "\n";
+    }
+    return kOk;
+}
+
+}  // namespace vv::cli
