@@ -20,6 +20,7 @@
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
 #include "vv/analysis/Stenosis.h"
+#include "vv/analysis/SurfaceBranches.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
@@ -32,7 +33,8 @@ namespace {
 
 constexpr const char* kCenterlineUsage =
     "usage: vesselview-cli centerline FILE -o CENTERLINES.vtp [--source X,Y,Z]\n"
-    "       [--target X,Y,Z ...] [--step MM] [--scale F] [--sections SECTIONS.csv] [--json]\n"
+    "       [--target X,Y,Z ...] [--step MM] [--scale F] [--sections SECTIONS.csv]\n"
+    "       [--surface-out SURFACE.vtp] [--json]\n"
     "       [DICOM options as for segment]\n"
     "  The centrelines of a vessel surface (a mesh file, or a DICOM series\n"
     "  segmented as render and segment do), by VMTK's method: the internal\n"
@@ -49,6 +51,9 @@ constexpr const char* kCenterlineUsage =
     "                       EquivalentDiameter, CenterlineSectionMinSize,\n"
     "                       CenterlineSectionMaxSize (mm, mm^2, 1/mm)\n"
     "  --sections FILE.csv  one row per section, units in the header\n"
+    "  --surface-out FILE.vtp  the surface with the point array branch_id (which\n"
+    "                       branch each vertex belongs to, named 'branch N': render\n"
+    "                       --array branch_id shows it with swatches)\n"
     "  --json               branches with lengths, diameters at the narrowest and\n"
     "                       widest points, stenoses and bifurcation angles on\n"
     "                       stdout\n"
@@ -69,6 +74,7 @@ struct CenterlineArgs {
     std::filesystem::path input;
     std::filesystem::path output;
     std::filesystem::path sectionsCsv;
+    std::filesystem::path surfaceOut;
     bool json = false;
     analysis::CenterlineOptions options;
     segmentation::SceneSourceOptions source;
@@ -88,6 +94,11 @@ std::optional<CenterlineArgs> parseArgs(const std::vector<std::string>& args, st
             c.output = a.path();
         } else if (name == "--sections") {
             c.sectionsCsv = a.path();
+        } else if (name == "--surface-out") {
+            c.surfaceOut = a.path();
+            if (c.surfaceOut.extension() != ".vtp") {
+                a.fail("--surface-out must end in .vtp");
+            }
         } else if (name == "--json") {
             c.json = true;
         } else if (name == "--source") {
@@ -199,7 +210,7 @@ void writeSectionsCsv(const std::filesystem::path& file,
             std::ofstream out(temporary, std::ios::binary);
             out << "branch_id,point,abscissa_mm,x_mm,y_mm,z_mm,area_mm2,equivalent_diameter_mm,"
                    "min_diameter_mm,max_diameter_mm,inscribed_diameter_mm,perimeter_mm,"
-                   "circularity,status\n";
+                   "circularity,status,end_zone\n";
             for (const auto& branch : sections) {
                 for (const auto& s : branch) {
                     const bool ok = s.status == analysis::CrossSection::Status::Ok;
@@ -210,7 +221,8 @@ void writeSectionsCsv(const std::filesystem::path& file,
                         << number(s.equivalentDiameterMm) << ',' << number(s.minDiameterMm) << ','
                         << number(s.maxDiameterMm) << ',' << fixedText(s.inscribedDiameterMm, 4)
                         << ',' << number(s.perimeterMm) << ',' << number(s.circularity) << ','
-                        << (ok ? "ok" : "no contour") << '\n';
+                        << (ok ? "ok" : "no contour") << ',' << (s.inEndZone ? "yes" : "no")
+                        << '\n';
                 }
             }
             out.flush();
@@ -223,14 +235,15 @@ void writeSectionsCsv(const std::filesystem::path& file,
     }
 }
 
-/// Narrowest and widest measured section of a branch (nullptr when none).
+/// Narrowest and widest measured section of a branch outside its end zones
+/// (nullptr when none).
 std::pair<const analysis::CrossSection*, const analysis::CrossSection*> extremes(
     const std::vector<analysis::CrossSection>& sections) {
     const analysis::CrossSection* narrowest = nullptr;
     const analysis::CrossSection* widest = nullptr;
     for (const auto& s : sections) {
-        if (s.status != analysis::CrossSection::Status::Ok) {
-            continue;
+        if (s.status != analysis::CrossSection::Status::Ok || s.inEndZone) {
+            continue;  // no contour, or a cap's or a junction's section
         }
         if (narrowest == nullptr || s.equivalentDiameterMm < narrowest->equivalentDiameterMm) {
             narrowest = &s;
@@ -334,6 +347,9 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
     if (!c.sectionsCsv.empty()) {
         checkOutputPath(c.sectionsCsv);
     }
+    if (!c.surfaceOut.empty()) {
+        checkOutputPath(c.surfaceOut);
+    }
     const scene::Scene scene = segmentation::loadSceneSource(c.input, c.source);
     if (scene.meshes.empty()) {
         throw FormatError(c.input, "holds no surface to analyse");
@@ -368,6 +384,13 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
     }
     if (!c.sectionsCsv.empty()) {
         writeSectionsCsv(c.sectionsCsv, sections);
+    }
+    if (!c.surfaceOut.empty()) {
+        try {
+            meshio::writeMeshFile(analysis::withBranchIds(mesh, tree), c.surfaceOut, metadata);
+        } catch (const IoError& e) {
+            throw OutputError(e.what());
+        }
     }
     if (c.json) {
         writeJson(out, tree, sections);

@@ -9,6 +9,7 @@
 
 #include "vv/analysis/Bifurcations.h"
 #include "vv/analysis/Centerlines.h"
+#include "vv/analysis/SurfaceBranches.h"
 #include "vv/demo/BifurcationPhantom.h"
 
 namespace {
@@ -86,5 +87,50 @@ INSTANTIATE_TEST_SUITE_P(Angles, YBifurcation, ::testing::Values(30.0, 60.0, 90.
                          [](const ::testing::TestParamInfo<double>& angle) {
                              return std::to_string(static_cast<int>(angle.param)) + "deg";
                          });
+
+// The surface split into branches: the parent's wall below the junction,
+// each daughter's wall along it, every vertex some branch; the array goes
+// the categorical-label way (integer, names).
+TEST(SurfaceBranches, EachWallGoesToItsOwnBranch) {
+    BifurcationPhantomOptions options;
+    options.angleDeg = 60.0;
+    const BifurcationPhantom truth = makeBifurcationPhantom(options);
+    const auto tree = computeCenterlines(truth.mesh);
+    ASSERT_EQ(tree.branches.size(), 3U);
+    const auto ids = vv::analysis::surfaceBranchIds(truth.mesh, tree);
+    ASSERT_EQ(ids.size(), truth.mesh.positions.size());
+    // The daughter towards +x is the child whose tip has x > 0.
+    int plusX = -1;
+    for (const int child : tree.branches[0].children) {
+        if (tree.branches[static_cast<std::size_t>(child)].points.back().position.x > 0.0) {
+            plusX = child;
+        }
+    }
+    ASSERT_GE(plusX, 0);
+    const int minusX = tree.branches[0].children[0] == plusX ? tree.branches[0].children[1]
+                                                             : tree.branches[0].children[0];
+    int checked = 0;
+    for (std::size_t v = 0; v < ids.size(); ++v) {
+        const glm::dvec3 p(truth.mesh.positions[v]);
+        EXPECT_GE(ids[v], 0);
+        // Two parent radii clear of the junction on each side.
+        if (p.z < -10.0) {
+            EXPECT_EQ(ids[v], 0) << "parent wall at z = " << p.z;
+            ++checked;
+        } else if (glm::dot(p, truth.daughterDirections[0]) > 15.0 && p.x > 5.0) {
+            EXPECT_EQ(ids[v], plusX);
+            ++checked;
+        } else if (glm::dot(p, truth.daughterDirections[1]) > 15.0 && p.x < -5.0) {
+            EXPECT_EQ(ids[v], minusX);
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, static_cast<int>(ids.size() / 2));
+    const auto labelled = vv::analysis::withBranchIds(truth.mesh, tree);
+    const auto* array = labelled.pointArray("branch_id");
+    ASSERT_NE(array, nullptr);
+    EXPECT_TRUE(array->integer);
+    EXPECT_EQ(labelled.labelNames.at("branch_id").size(), 3U);
+}
 
 }  // namespace

@@ -21,6 +21,7 @@
 
 #include "CliRun.h"
 #include "vv/demo/TubePhantom.h"
+#include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshWriter.h"
 
 namespace {
@@ -54,9 +55,18 @@ TEST(CenterlineCommand, WritesVmtkArraysSectionsAndJson) {
     const auto input = writePhantom("stenosis.vtp");
     const auto output = scratch() / "centerlines.vtp";
     const auto csv = scratch() / "sections.csv";
+    const auto surface = scratch() / "branches.vtp";
     const auto run = runCli({"centerline", input.string(), "-o", output.string(), "--sections",
-                             csv.string(), "--json"});
+                             csv.string(), "--surface-out", surface.string(), "--json"});
     ASSERT_EQ(run.code, 0) << run.err;
+    // The surface with its branch ids, as the categorical-label path reads it.
+    const vv::scene::Mesh labelled = vv::meshio::loadMesh(surface);
+    const auto* ids = labelled.pointArray("branch_id");
+    ASSERT_NE(ids, nullptr);
+    EXPECT_TRUE(ids->integer);
+    EXPECT_EQ(ids->finiteRange(), (std::make_optional(std::pair<float, float>{0.0F, 0.0F})));
+    ASSERT_TRUE(labelled.labelNames.contains("branch_id"));
+    EXPECT_EQ(labelled.labelNames.at("branch_id").at(0), "branch 0");
 
     auto reader = vtkSmartPointer<vtkXMLPolyDataReader>::New();
     reader->SetFileName(output.c_str());

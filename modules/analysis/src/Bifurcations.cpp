@@ -18,6 +18,14 @@ namespace {
 constexpr double kChildFrom = 2.0;
 constexpr double kChildTo = 4.0;
 
+/// How many of the branch's points lie in [from, to].
+std::size_t pointsWithin(const Branch& branch, double from, double to) {
+    return static_cast<std::size_t>(
+        std::count_if(branch.points.begin(), branch.points.end(), [&](const CenterlinePoint& p) {
+            return p.abscissaMm >= from - 1e-9 && p.abscissaMm <= to + 1e-9;
+        }));
+}
+
 /// The principal axis of `points` (power iteration on their covariance),
 /// oriented from the first point towards the last.
 glm::dvec3 principalAxis(const std::vector<glm::dvec3>& points) {
@@ -94,15 +102,19 @@ std::vector<Bifurcation> findBifurcations(const CenterlineTree& tree) {
         const double s = end.abscissaMm;
         const double parentFrom = std::max(parent.points.front().abscissaMm, s - 3.0 * r);
         b.parentDirection =
-            parentFrom < s - 1.0 * r
+            parentFrom < s - 1.0 * r && pointsWithin(parent, parentFrom, s - 1.0 * r) >= 2
                 ? directionOver(tree, parent.id, parentFrom, s - 1.0 * r)
                 : directionOver(tree, parent.id, parent.points.front().abscissaMm, s);
         for (const int c : b.children) {
             const Branch& child = tree.branches[static_cast<std::size_t>(c)];
             const double start = child.points.front().abscissaMm;
             const double last = child.points.back().abscissaMm;
-            const double to = std::min(last, start + kChildTo * r);
-            const double from = std::min(start + kChildFrom * r, to - 0.5 * (to - start));
+            double to = std::min(last, start + kChildTo * r);
+            double from = std::min(start + kChildFrom * r, to - 0.5 * (to - start));
+            if (pointsWithin(child, from, to) < 2) {
+                from = start;  // a short branch: all of it
+                to = last;
+            }
             b.childDirections.push_back(directionOver(tree, c, from, to));
             b.deviationDeg.push_back(angleBetweenDeg(b.parentDirection, b.childDirections.back()));
         }

@@ -47,15 +47,11 @@ StretchSize stretchSize(const std::vector<const CrossSection*>& measured, double
     return size;
 }
 
-/// The measured sections of the branch away from its ends (one inscribed
-/// radius), in order.
-std::vector<const CrossSection*> measuredSections(const Branch& branch,
-                                                  const std::vector<CrossSection>& sections) {
-    const double from = branch.points.front().abscissaMm + branch.points.front().radiusMm;
-    const double to = branch.points.back().abscissaMm - branch.points.back().radiusMm;
+/// The measured sections of the branch outside its end zones, in order.
+std::vector<const CrossSection*> measuredSections(const std::vector<CrossSection>& sections) {
     std::vector<const CrossSection*> measured;
     for (const CrossSection& s : sections) {
-        if (s.status == CrossSection::Status::Ok && s.abscissaMm >= from && s.abscissaMm <= to) {
+        if (s.status == CrossSection::Status::Ok && !s.inEndZone) {
             measured.push_back(&s);
         }
     }
@@ -148,7 +144,7 @@ std::optional<Stenosis> gradeStenosis(const CenterlineTree& tree,
         throw InvalidArgumentError("stenosis: no branch " + std::to_string(branch));
     }
     const Branch& b = tree.branches[static_cast<std::size_t>(branch)];
-    const auto measured = measuredSections(b, sections[static_cast<std::size_t>(branch)]);
+    const auto measured = measuredSections(sections[static_cast<std::size_t>(branch)]);
     if (measured.size() < kMinSections) {
         return std::nullopt;
     }

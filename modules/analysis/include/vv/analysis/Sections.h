@@ -57,6 +57,14 @@ struct CrossSection {
     /// The distance from the centreline point to the contour's centroid, mm
     /// (how far off centre the centreline runs here).
     double centreOffsetMm = 0.0;
+    /// Within an end zone of its branch: at a vessel's end (the rounded cap
+    /// of a closed tip, an open end's rim) or where the branch meets its
+    /// parent or children (the lumens merge there). Such a section is not
+    /// a vessel's cross-section: narrowest / widest points and stenosis
+    /// grading leave it out. A zone is twice the branch's median inscribed
+    /// radius long, or 1.5 times the radius at its end point where that is
+    /// larger (a junction's merged lumen).
+    bool inEndZone = false;
 };
 
 /// The sections of every branch of `tree` (made from `mesh`), one per

@@ -60,8 +60,8 @@ struct Stenosis {
 };
 
 /// Grades branch `branch` of `tree` from its `sections` (computeSections).
-/// Sections within one inscribed radius of the branch's ends are not
-/// candidates for the narrowest point. Returns nullopt when the branch has
+/// Sections in the branch's end zones (CrossSection::inEndZone) are left
+/// out. Returns nullopt when the branch has
 /// too few measured sections (fewer than 5) or no room for a reference.
 /// Throws InvalidArgumentError for a branch out of range or given
 /// abscissae outside the branch.
