@@ -41,6 +41,28 @@ std::string pointText(const glm::dvec3& p) {
     throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") + problem);
 }
 
+/// An opening whose cap's inscribed sphere is this many times wider than
+/// the opening is a hole in a wall, not a vessel's end (at an end the
+/// sphere is about as wide as the loop; behind a hole, as wide as the
+/// vessel).
+constexpr double kHoleRatio = 1.5;
+
+/// Marks the loops that are holes and notes them.
+void markHoles(PreparedSurface& s, const VoronoiGraph& g) {
+    int holes = 0;
+    for (detail::BoundaryLoop& loop : s.loops) {
+        const std::uint32_t pole = g.poles[loop.capCentre];
+        loop.hole = pole != kNone && g.radii[pole] > kHoleRatio * loop.radiusMm;
+        holes += loop.hole ? 1 : 0;
+    }
+    if (holes > 0) {
+        s.notes.push_back(
+            std::to_string(holes) +
+            (holes == 1 ? " hole in a vessel wall was" : " holes in vessel walls were") +
+            " closed, not taken for vessel ends.");
+    }
+}
+
 /// An end resolved onto the Voronoi graph.
 struct ResolvedEnd {
     EndPoint end;
@@ -76,14 +98,15 @@ ResolvedEnd loopEnd(const PreparedSurface& s, const VoronoiGraph& g, int loop) {
     return r;
 }
 
-/// A point the user gave: at an open end (within 1.5 loop radii of its
-/// centre) the loop's centre; elsewhere the inscribed sphere touching the
+/// A point the user gave: at an open end (the point within 1.5 loop radii
+/// of its centre) the loop's centre; elsewhere the inscribed sphere touching the
 /// nearest surface point.
 ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const SurfaceIndex& surface,
                      const glm::dvec3& point, const char* role) {
     const SurfaceIndex::Nearest nearest = surface.nearest(point);
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
-        if (glm::length(nearest.point - s.loops[i].centre) <= 1.5 * s.loops[i].radiusMm) {
+        if (!s.loops[i].hole &&
+            glm::length(point - s.loops[i].centre) <= 1.5 * s.loops[i].radiusMm) {
             ResolvedEnd r = loopEnd(s, g, static_cast<int>(i));
             r.end.kind = EndPoint::Kind::Given;
             r.end.requested = point;
@@ -159,13 +182,15 @@ double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_
 /// surface the tip of the widest vessel.
 ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
                           const SurfaceIndex& surface, const Progress& progress) {
-    if (!s.loops.empty()) {
-        int widest = 0;
-        for (std::size_t i = 1; i < s.loops.size(); ++i) {
-            if (s.loops[i].radiusMm > s.loops[static_cast<std::size_t>(widest)].radiusMm) {
-                widest = static_cast<int>(i);
-            }
+    int widest = -1;
+    for (std::size_t i = 0; i < s.loops.size(); ++i) {
+        if (!s.loops[i].hole &&
+            (widest < 0 ||
+             s.loops[i].radiusMm > s.loops[static_cast<std::size_t>(widest)].radiusMm)) {
+            widest = static_cast<int>(i);
         }
+    }
+    if (widest >= 0) {
         return loopEnd(s, g, widest);
     }
     const auto widestVertex = static_cast<std::uint32_t>(
@@ -442,7 +467,7 @@ std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiG
     }
     std::vector<std::vector<std::uint32_t>> known;
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
-        if (static_cast<int>(i) == source.loop) {
+        if (static_cast<int>(i) == source.loop || s.loops[i].hole) {
             continue;
         }
         ResolvedEnd end = loopEnd(s, g, static_cast<int>(i));
@@ -464,9 +489,10 @@ CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptio
                                   const Progress& progress) {
     validate(options);
     progress.report(0.0, "Preparing the surface");
-    const PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
+    PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
     const SurfaceIndex surface(s);
     const VoronoiGraph g = detail::buildVoronoiGraph(s, progress.sub(0.05, 0.6));
+    markHoles(s, g);
     progress.report(0.6, "Finding the vessels' ends");
 
     const ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")

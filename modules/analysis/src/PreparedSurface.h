@@ -29,6 +29,10 @@ struct BoundaryLoop {
     glm::dvec3 inward{0.0};
     double radiusMm = 0.0;        ///< mean distance of the loop from its centre
     std::uint32_t capCentre = 0;  ///< the fan's centre vertex in the capped surface
+    /// A hole in a vessel's wall rather than a vessel's end: the inscribed
+    /// sphere behind its cap is much wider than the opening (set by the
+    /// centreline step, which knows the spheres).
+    bool hole = false;
 };
 
 struct PreparedSurface {
