@@ -7,12 +7,14 @@
 // the bifurcation angle's error; then the demo tree's centrelines and
 // sections: time and peak memory against the mesh's own size.
 //
-//   build/release/bench/analysis_accuracy [--quick]   (--quick: no 1M rows)
+//   build/release/bench/analysis_accuracy [--quick | --demo]
+//   (--quick: no 1M rows; --demo: the demo tree's row alone)
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -129,8 +131,31 @@ void bifurcationTable(const std::vector<std::size_t>& densities) {
     }
 }
 
+/// Distance from `p` to the polyline `line`.
+double distanceToPolyline(const glm::dvec3& p, const std::vector<glm::vec3>& line) {
+    double best = std::numeric_limits<double>::max();
+    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
+        const glm::dvec3 a(line[i]);
+        const glm::dvec3 ab = glm::dvec3(line[i + 1]) - a;
+        const double t =
+            std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-12), 0.0, 1.0);
+        best = std::min(best, glm::length(p - (a + t * ab)));
+    }
+    return best;
+}
+
+double percentile(std::vector<double> values, double q) {
+    if (values.empty()) {
+        return std::nan("");
+    }
+    std::sort(values.begin(), values.end());
+    return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))];
+}
+
 void demoTree() {
-    const auto mesh = vv::demo::generateDemoMesh();
+    const vv::demo::DemoTreeOptions options;
+    const vv::demo::VesselTree truth = vv::demo::generateVesselTree(options);
+    const auto mesh = vv::demo::buildVesselSurface(truth, options);
     vv::resetPeakResident();
     const auto before = vv::residentKiB().value_or(0);
     auto start = Clock::now();
@@ -142,31 +167,65 @@ void demoTree() {
     const auto peak = vv::peakResidentKiB().value_or(0);
     std::size_t ok = 0;
     std::size_t all = 0;
-    for (const auto& branch : sections) {
-        for (const auto& s : branch) {
+    std::vector<double> offAxis;  // per r of the nearest construction segment
+    std::vector<double> diameterError;
+    for (std::size_t b = 0; b < sections.size(); ++b) {
+        for (std::size_t i = 0; i < sections[b].size(); ++i) {
+            const auto& s = sections[b][i];
             ok += s.status == CrossSection::Status::Ok ? 1 : 0;
             ++all;
+            if (s.inEndZone) {
+                continue;  // caps and junctions: the construction has no axis there
+            }
+            const glm::dvec3 p = tree.branches[b].points[i].position;
+            double nearest = std::numeric_limits<double>::max();
+            double radius = 0.0;
+            for (const auto& segment : truth.segments) {
+                const double d = distanceToPolyline(p, segment.centerline);
+                if (d < nearest) {
+                    nearest = d;
+                    radius = segment.radiusMm;
+                }
+            }
+            offAxis.push_back(nearest / radius);
+            if (s.status == CrossSection::Status::Ok) {
+                diameterError.push_back(s.equivalentDiameterMm / (2.0 * radius) - 1.0);
+            }
         }
     }
+    std::size_t leaves = 0;
+    for (const auto& segment : truth.segments) {
+        leaves += segment.children.empty() ? 1 : 0;
+    }
     std::printf(
-        "\n| demo tree | triangles | branches | ends | sections (ok / all) | centrelines (s) "
-        "| sections (s) | peak memory above the mesh (MiB) | mesh (MiB) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|\n");
-    std::printf("| default | %zu | %zu | %zu | %zu / %zu | %.2f | %.2f | %.0f | %.1f |\n",
-                mesh.triangleCount(), tree.branches.size(), tree.ends.size(), ok, all,
-                centrelineSeconds, sectionSeconds,
-                static_cast<double>(peak > before ? peak - before : 0) / 1024.0, meshMiB(mesh));
+        "| demo tree | triangles | segments / leaves built | branches / ends found | "
+        "sections (ok / all) | off the built axis, median / 95 %% (%% r) | equiv. "
+        "diameter against the built, median / 95 %% (%%) | centrelines (s) | sections (s) "
+        "| peak memory above the mesh (MiB) | mesh (MiB) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| default | %zu | %zu / %zu | %zu / %zu | %zu / %zu | %.1f / %.1f | %+.1f / %+.1f | "
+        "%.2f | %.2f | %.0f | %.1f |\n",
+        mesh.triangleCount(), truth.segments.size(), leaves, tree.branches.size(), tree.ends.size(),
+        ok, all, 100.0 * percentile(offAxis, 0.5), 100.0 * percentile(offAxis, 0.95),
+        100.0 * percentile(diameterError, 0.5), 100.0 * percentile(diameterError, 0.95),
+        centrelineSeconds, sectionSeconds,
+        static_cast<double>(peak > before ? peak - before : 0) / 1024.0, meshMiB(mesh));
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
+    const bool demoOnly = argc > 1 && std::strcmp(argv[1], "--demo") == 0;
     std::vector<std::size_t> densities{1'000, 50'000};
     if (!quick) {
         densities.push_back(1'000'000);
     }
     demoTree();
+    if (demoOnly) {
+        return 0;
+    }
     std::printf("\n");
     tubeTable(densities);
     bifurcationTable(densities);
