@@ -29,7 +29,7 @@ namespace {
 using vv::test::runCli;
 
 std::filesystem::path scratch() {
-    const auto dir = vv::test::processTestDir("centerline");
+    auto dir = vv::test::processTestDir("centerline");
     std::filesystem::create_directories(dir);
     return dir;
 }
@@ -46,7 +46,7 @@ std::filesystem::path writePhantom(const std::string& name, double scale = 1.0) 
     for (auto& p : mesh.positions) {
         p *= static_cast<float>(scale);
     }
-    const auto file = scratch() / name;
+    auto file = scratch() / name;
     vv::meshio::writeVtp(mesh, file);
     return file;
 }

@@ -66,6 +66,7 @@ std::string mm(double value) {
 bool automaticReference(const std::vector<const CrossSection*>& measured, std::size_t narrowest,
                         Stenosis& result) {
     std::vector<double> diameters;
+    diameters.reserve(measured.size());
     for (const CrossSection* s : measured) {
         diameters.push_back(s->equivalentDiameterMm);
     }

@@ -77,10 +77,10 @@ BifurcationPhantom makeBifurcationPhantom(const BifurcationPhantomOptions& optio
     // more extraction corrects the guess.
     DemoTreeOptions surface;
     surface.maxTriangles = 0;
-    const double target = static_cast<double>(o.targetTriangles);
+    const auto target = static_cast<double>(o.targetTriangles);
     surface.voxelSizeMm = std::sqrt(2.0 * tubeArea(phantom.tree) / target);
     phantom.mesh = buildVesselSurface(phantom.tree, surface, progress.sub(0.0, 0.5));
-    const double got = static_cast<double>(phantom.mesh.triangleCount());
+    const auto got = static_cast<double>(phantom.mesh.triangleCount());
     if (std::abs(got / target - 1.0) > 0.2) {
         surface.voxelSizeMm *= std::sqrt(got / target);
         phantom.mesh = buildVesselSurface(phantom.tree, surface, progress.sub(0.5, 1.0));

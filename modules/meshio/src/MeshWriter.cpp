@@ -254,7 +254,7 @@ void writePolylinesVtp(const PolylineSet& lines, const std::filesystem::path& fi
     }
     auto cells = vtkSmartPointer<vtkCellArray>::New();
     for (const auto& line : lines.lines) {
-        cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
+        cells->InsertNextCell(static_cast<int>(line.size()));
         for (const std::uint32_t index : line) {
             cells->InsertCellPoint(static_cast<vtkIdType>(index));
         }
