@@ -5,6 +5,7 @@
 // a single point. Each gets a result or a clear error, never a hang.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "vv/analysis/Centerlines.h"
@@ -26,12 +27,8 @@ vv::scene::Mesh cylinder(std::size_t triangles = 20'000) {
 }
 
 bool notesSay(const vv::analysis::CenterlineTree& tree, const std::string& what) {
-    for (const auto& note : tree.notes) {
-        if (note.find(what) != std::string::npos) {
-            return true;
-        }
-    }
-    return false;
+    return std::ranges::any_of(
+        tree.notes, [&](const std::string& note) { return note.find(what) != std::string::npos; });
 }
 
 void expectOneTube(const vv::analysis::CenterlineTree& tree) {
@@ -94,8 +91,8 @@ TEST(Robustness, AHoleInTheWallIsNotAVesselEnd) {
 // and a patch of triangles wound the wrong way.
 TEST(Robustness, ANonManifoldFinAndTrianglesWoundTheWrongWay) {
     vv::scene::Mesh mesh = cylinder();
-    const std::uint32_t a = mesh.indices[3 * 500];
-    const std::uint32_t b = mesh.indices[3 * 500 + 1];
+    const std::uint32_t a = mesh.indices[std::size_t{3} * 500];
+    const std::uint32_t b = mesh.indices[std::size_t{3} * 500 + 1];
     mesh.positions.push_back(mesh.positions[a] * 1.3F);
     mesh.normals.emplace_back(0.0F, 0.0F, 1.0F);
     mesh.indices.insert(mesh.indices.end(),
