@@ -10,6 +10,7 @@
 #include <stop_token>
 #include <string>
 
+#include "TubeOptions.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/demo/TubePhantom.h"
 
@@ -27,14 +28,7 @@ using vv::demo::TubeShape;
 
 TubePhantom phantom(TubeShape shape, double radius, std::size_t triangles, double jitter = 0.0,
                     bool capped = false) {
-    TubePhantomOptions o;
-    o.shape = shape;
-    o.radiusMm = radius;
-    o.lengthMm = 20.0 * radius;
-    o.bendRadiusMm = 10.0 * radius;
-    o.stenosisLengthMm = 4.0 * radius;
-    o.targetTriangles = triangles;
-    o.jitterFraction = jitter;
+    TubePhantomOptions o = vv::test::tubeOptions(shape, radius, triangles, jitter);
     o.capped = capped;
     return makeTubePhantom(o);
 }

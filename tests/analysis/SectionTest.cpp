@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 
+#include "TubeOptions.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
 #include "vv/demo/TubePhantom.h"
@@ -39,18 +40,7 @@ Measured measure(const TubePhantomOptions& options) {
     return m;
 }
 
-TubePhantomOptions tube(TubeShape shape, double radius, std::size_t triangles,
-                        double jitter = 0.0) {
-    TubePhantomOptions o;
-    o.shape = shape;
-    o.radiusMm = radius;
-    o.lengthMm = 20.0 * radius;
-    o.bendRadiusMm = 10.0 * radius;
-    o.stenosisLengthMm = 4.0 * radius;
-    o.targetTriangles = triangles;
-    o.jitterFraction = jitter;
-    return o;
-}
+using vv::test::tubeOptions;
 
 /// Checks every section at least one radius from the ends against the true
 /// radius there (the equivalent diameter within `tolerance`, the Feret
@@ -82,7 +72,7 @@ int expectCircles(const Measured& m, double tolerance, double feretTolerance = 0
 
 TEST(Sections, OfCylindersAreCirclesOfTheirDiameter) {
     for (const double r : {1.0, 5.0, 15.0}) {
-        const Measured m = measure(tube(TubeShape::Cylinder, r, 50'000));
+        const Measured m = measure(tubeOptions(TubeShape::Cylinder, r, 50'000));
         EXPECT_GT(expectCircles(m, 0.01), 30) << "r = " << r;
     }
 }
@@ -91,7 +81,7 @@ TEST(Sections, OfCylindersAreCirclesOfTheirDiameter) {
 // the Feret widths are those of the rough contour, as calipers would take
 // them (up to twice the jitter wider), and the rough contour is longer.
 TEST(Sections, OfANoisyCylinderWithinOnePercent) {
-    const Measured m = measure(tube(TubeShape::Cylinder, 5.0, 50'000, 0.02));
+    const Measured m = measure(tubeOptions(TubeShape::Cylinder, 5.0, 50'000, 0.02));
     EXPECT_GT(expectCircles(m, 0.01, 0.04, 0.9), 100);
 }
 
@@ -99,7 +89,7 @@ TEST(Sections, OfANoisyCylinderWithinOnePercent) {
 // through a 300 degree bend also cuts the far side of the bend, and each
 // section keeps to its own lumen.
 TEST(Sections, OfABendKeepToTheirOwnLumen) {
-    TubePhantomOptions o = tube(TubeShape::TorusSegment, 5.0, 100'000);
+    TubePhantomOptions o = tubeOptions(TubeShape::TorusSegment, 5.0, 100'000);
     o.bendAngleDeg = 300.0;
     const Measured m = measure(o);
     EXPECT_GT(expectCircles(m, 0.01), 300);
@@ -108,7 +98,7 @@ TEST(Sections, OfABendKeepToTheirOwnLumen) {
 // At a 50 % stenosis the equivalent diameter follows the narrowing: half the
 // normal diameter at the throat.
 TEST(Sections, FollowAStenosis) {
-    const Measured m = measure(tube(TubeShape::Stenosis, 5.0, 50'000));
+    const Measured m = measure(tubeOptions(TubeShape::Stenosis, 5.0, 50'000));
     EXPECT_GT(expectCircles(m, 0.01), 100);
     double narrowest = 1e9;
     for (const auto& s : m.sections[0]) {
@@ -123,7 +113,7 @@ TEST(Sections, FollowAStenosis) {
 // is smaller than the circle it stands for: recorded, so that the docs can
 // say how much a faceted mesh loses.
 TEST(Sections, OfAFacetedTubeAreItsPolygon) {
-    const Measured m = measure(tube(TubeShape::Cylinder, 5.0, 1'000));
+    const Measured m = measure(tubeOptions(TubeShape::Cylinder, 5.0, 1'000));
     const int n = m.truth.sides;
     ASSERT_GE(n, 8);
     const double polygonArea = 0.5 * n * 25.0 * std::sin(2.0 * kPi / n);
@@ -145,7 +135,7 @@ TEST(Sections, OfAFacetedTubeAreItsPolygon) {
 // One section per centreline point, in order, with frames that follow the
 // centreline's.
 TEST(Sections, OnePerCentrelinePoint) {
-    const Measured m = measure(tube(TubeShape::TorusSegment, 5.0, 20'000));
+    const Measured m = measure(tubeOptions(TubeShape::TorusSegment, 5.0, 20'000));
     ASSERT_EQ(m.sections.size(), m.tree.branches.size());
     for (std::size_t b = 0; b < m.sections.size(); ++b) {
         ASSERT_EQ(m.sections[b].size(), m.tree.branches[b].points.size());
