@@ -290,9 +290,13 @@ PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
     const std::vector<glm::dvec3> t = detail::tangents(positions);
     const std::vector<glm::dvec3> normals = detail::rotationMinimisingNormals(positions, t);
     std::vector<double> radius(positions.size());
+    glm::dvec3 hint(0.0);  // the previous point's nearest surface point
     std::vector<double> scale(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
-        radius[i] = surface.distance(positions[i]);
+        if (i == 0) {
+            hint = surface.nearest(positions[0]).point;
+        }
+        radius[i] = surface.distance(positions[i], hint);
         scale[i] = std::max(2.0 * step,
                             detail::interpolate(profile.smoothArc, sigma, at[i]) / kSmoothingRadii);
     }

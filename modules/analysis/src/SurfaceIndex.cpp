@@ -56,6 +56,12 @@ double SurfaceIndex::distance(const glm::dvec3& p) const {
     return std::sqrt(tree_->tree.squared_distance(toPoint(p)));
 }
 
+double SurfaceIndex::distance(const glm::dvec3& p, glm::dvec3& hint) const {
+    const Kernel::Point_3 nearest = tree_->tree.closest_point(toPoint(p), toPoint(hint));
+    hint = {nearest.x(), nearest.y(), nearest.z()};
+    return glm::length(hint - p);
+}
+
 std::optional<glm::dvec3> SurfaceIndex::firstHit(const glm::dvec3& origin,
                                                  const glm::dvec3& direction) const {
     const Kernel::Ray_3 ray(toPoint(origin),
