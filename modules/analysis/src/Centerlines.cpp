@@ -13,6 +13,7 @@
 #include "SurfaceIndex.h"
 #include "VoronoiGraph.h"
 #include "vv/core/NumberText.h"
+#include "vv/core/Parallel.h"
 
 namespace vv::analysis {
 namespace {
@@ -528,12 +529,22 @@ CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptio
     result.notes = s.notes;
     result.ends.push_back(source.end);
     std::vector<PathProfile> paths;
-    for (const ResolvedEnd& target : targets) {
-        progress.throwIfCancelled();
-        paths.push_back(
-            profilePath(g, surface, source, target, tree.pathTo(target.vertex), options.stepMm));
-        paths.back().endIndex = static_cast<int>(result.ends.size());
-        result.ends.push_back(target.end);
+    // The paths are independent: traced on every core (the surface's AABB
+    // tree and the graph are only read).
+    paths.resize(targets.size());
+    parallelFor(
+        0, static_cast<long>(targets.size()), 1,
+        [&](long begin, long end) {
+            for (long i = begin; i < end; ++i) {
+                const ResolvedEnd& target = targets[static_cast<std::size_t>(i)];
+                paths[static_cast<std::size_t>(i)] = profilePath(
+                    g, surface, source, target, tree.pathTo(target.vertex), options.stepMm);
+            }
+        },
+        progress.stopToken());
+    for (std::size_t i = 0; i < targets.size(); ++i) {
+        paths[i].endIndex = static_cast<int>(result.ends.size());
+        result.ends.push_back(targets[i].end);
     }
     result.branches = orderBranches(splitIntoBranches(paths, g.size()), paths, options.stepMm);
     progress.report(1.0, "Centrelines done");

@@ -39,6 +39,11 @@ SurfaceIndex::SurfaceIndex(const PreparedSurface& surface) : tree_(std::make_uni
     tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
     tree_->tree.build();
     tree_->tree.accelerate_distance_queries();
+    // Build what CGAL builds on the first query now, so that queries from
+    // several threads only read the tree.
+    if (!tree_->triangles.empty()) {
+        static_cast<void>(tree_->tree.squared_distance(tree_->triangles.front().vertex(0)));
+    }
 }
 
 SurfaceIndex::~SurfaceIndex() = default;

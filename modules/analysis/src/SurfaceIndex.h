@@ -17,6 +17,7 @@ namespace vv::analysis::detail {
 class SurfaceIndex {
   public:
     /// Indexes `surface`'s triangles; the surface must outlive this object.
+    /// Built whole here: its queries may run on several threads at once.
     explicit SurfaceIndex(const PreparedSurface& surface);
     ~SurfaceIndex();
     SurfaceIndex(const SurfaceIndex&) = delete;
