@@ -242,7 +242,7 @@ std::pair<const analysis::CrossSection*, const analysis::CrossSection*> extremes
     const analysis::CrossSection* narrowest = nullptr;
     const analysis::CrossSection* widest = nullptr;
     for (const auto& s : sections) {
-        if (s.status != analysis::CrossSection::Status::Ok || s.inEndZone) {
+        if (!s.measuresTheVessel()) {
             continue;  // no contour, or a cap's or a junction's section
         }
         if (narrowest == nullptr || s.equivalentDiameterMm < narrowest->equivalentDiameterMm) {

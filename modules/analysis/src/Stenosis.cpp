@@ -51,7 +51,7 @@ StretchSize stretchSize(const std::vector<const CrossSection*>& measured, double
 std::vector<const CrossSection*> measuredSections(const std::vector<CrossSection>& sections) {
     std::vector<const CrossSection*> measured;
     for (const CrossSection& s : sections) {
-        if (s.status == CrossSection::Status::Ok && !s.inEndZone) {
+        if (s.measuresTheVessel()) {
             measured.push_back(&s);
         }
     }

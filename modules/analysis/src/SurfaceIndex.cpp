@@ -57,10 +57,6 @@ SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
     return n;
 }
 
-double SurfaceIndex::distance(const glm::dvec3& p) const {
-    return std::sqrt(tree_->tree.squared_distance(toPoint(p)));
-}
-
 double SurfaceIndex::distance(const glm::dvec3& p, glm::dvec3& hint) const {
     const Kernel::Point_3 nearest = tree_->tree.closest_point(toPoint(p), toPoint(hint));
     hint = {nearest.x(), nearest.y(), nearest.z()};

@@ -33,12 +33,9 @@ class SurfaceIndex {
     /// The surface point nearest to `p`.
     [[nodiscard]] Nearest nearest(const glm::dvec3& p) const;
     /// Distance from `p` to the surface (the radius of the largest sphere
-    /// centred at `p` that no triangle enters).
-    [[nodiscard]] double distance(const glm::dvec3& p) const;
-    /// As distance(), starting the search from `hint`, a surface point near
-    /// the answer (the nearest point of the previous query along a path):
-    /// the same value, found in a fraction of the time. Returns the nearest
-    /// point in `hint`.
+    /// centred at `p` that no triangle enters), the search starting from
+    /// `hint`, a surface point near the answer (the nearest point of the
+    /// previous query along a path). Returns the nearest point in `hint`.
     [[nodiscard]] double distance(const glm::dvec3& p, glm::dvec3& hint) const;
     /// Where the ray from `origin` along `direction` (non-zero) first meets
     /// the surface; nullopt when it meets none.

@@ -65,6 +65,12 @@ struct CrossSection {
     /// radius long, or 1.5 times the radius at its end point where that is
     /// larger (a junction's merged lumen).
     bool inEndZone = false;
+
+    /// A size of the vessel itself: a closed contour outside the end zones.
+    /// What narrowest / widest points and stenosis grading use.
+    [[nodiscard]] bool measuresTheVessel() const noexcept {
+        return status == Status::Ok && !inEndZone;
+    }
 };
 
 /// The sections of every branch of `tree` (made from `mesh`), one per
