@@ -3830,6 +3830,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>Viewing distance</source>
         <translation>Abstand vom Betrachter</translation>
     </message>
+    <message>
+        <source>Centreline: inscribed diameter</source>
+        <translation>Mittellinie: einbeschriebener Durchmesser</translation>
+    </message>
 </context>
 <context>
     <name>vv::render::ViewAnnotations</name>

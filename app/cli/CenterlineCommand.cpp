@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "cli/Arguments.h"
+#include "cli/CenterlineDrawing.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
 #include "cli/OutputFiles.h"
@@ -132,18 +133,6 @@ std::optional<CenterlineArgs> parseArgs(const std::vector<std::string>& args, st
                          "'");
     }
     return c;
-}
-
-/// A warning when the surface's size says it is not in mm.
-void warnAboutUnits(const scene::Mesh& mesh, std::ostream& err) {
-    const double across = glm::length(glm::dvec3(mesh.bounds().size()));
-    if (across > 0.0 && across < 2.0) {
-        err << "vesselview-cli: warning: the surface is " << significantText(across, 3)
-            << " across: if it is in metres, give --scale 1000 (scene units are mm)\n";
-    } else if (across > 5000.0) {
-        err << "vesselview-cli: warning: the surface is " << significantText(across, 3)
-            << " mm across: if it is in micrometres, give --scale 0.001 (scene units are mm)\n";
-    }
 }
 
 float valueOr(bool ok, double value) {
@@ -351,15 +340,7 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
         checkOutputPath(c.surfaceOut);
     }
     const scene::Scene scene = segmentation::loadSceneSource(c.input, c.source);
-    if (scene.meshes.empty()) {
-        throw FormatError(c.input, "holds no surface to analyse");
-    }
-    const scene::Mesh& mesh = scene.meshes.front();
-    if (scene.meshes.size() > 1) {
-        err << "vesselview-cli: note: " << c.input.string() << " holds " << scene.meshes.size()
-            << " surfaces; the first, '" << mesh.name << "', is analysed\n";
-    }
-    warnAboutUnits(mesh, err);
+    const scene::Mesh& mesh = analysedSurface(scene, c.input, err);
     const analysis::CenterlineTree tree = analysis::computeCenterlines(mesh, c.options);
     const auto sections = analysis::computeSections(mesh, tree);
     for (const auto& note : tree.notes) {

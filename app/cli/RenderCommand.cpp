@@ -8,6 +8,7 @@
 //                            [--view far|medium|close|anterior|posterior|left|right|
 //                                    superior|inferior]
 //                            [--depth-out DEPTH.pfm] [--tile N]
+//                            [--centerlines on|off] [--centerline-colour diameter|branch]
 //                            [every display setting with an option in SettingsSchema.h]
 // vesselview-cli render --session F.vvs -o IMAGE.png [options]
 // --session renders what the GUI saved: its files (DICOM: with the stored
@@ -35,6 +36,7 @@
 #include <vector>
 
 #include "cli/Arguments.h"
+#include "cli/CenterlineDrawing.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
 #include "cli/JsonWriter.h"
@@ -133,6 +135,9 @@ RenderArguments parse(const std::vector<std::string>& args) {
         // Both describe one frame's G-buffer and passes; tiles have many.
         throw UsageError("render: --tile cannot be combined with --timings or --depth-out");
     }
+    if (parsed.raycast && parsed.centerlines) {
+        throw UsageError("render: --centerlines needs a surface; --raycast has none");
+    }
     if (parsed.raycast && !parsed.depthOutput.empty() && !parsed.vss.enabled) {
         // The depth comes from the VSS solve's read-back; the CPU rasteriser has no volumes.
         throw UsageError("render: --depth-out with --raycast needs the VSS on");
@@ -178,6 +183,46 @@ void writeTimings(std::ostream& out, render::OffscreenRenderer& renderer, const 
     json.finish();
 }
 
+/// The summary's "wrote IMAGE (size, array, VSS, cue, centrelines" (the caller closes it).
+void describeImage(std::ostream& summary, const RenderArguments& parsed, const scene::Scene& scene,
+                   const render::OffscreenOptions& options,
+                   const render::OffscreenRenderer& renderer, const QImage& image, int tiles,
+                   const std::optional<render::CenterlineOverlay>& centerlines) {
+    summary << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
+    if (tiles > 1) {
+        summary << " in " << tiles << " tiles";
+    }
+    const render::DisplaySettings& display = options.display;
+    const auto labels = display.style.array.empty()
+                            ? std::nullopt
+                            : render::shownLabels(scene, display.style, display.style.array);
+    if (display.style.array.empty()) {
+        summary << ", no array";
+    } else if (labels) {
+        summary << ", " << display.style.array << " as " << labels->size() << " labels";
+    } else {
+        summary << ", " << display.style.array << " through "
+                << colormaps::name(display.style.colorMap);
+        if (const auto range = renderer.lastRange()) {
+            summary << " over [" << range->first << ", " << range->second << "]";
+        } else {
+            summary << ", no finite values";
+        }
+    }
+    if (display.vss.enabled) {
+        summary << ", VSS " << colormaps::name(display.vss.scale) << " p=" << display.vss.solver.p;
+    }
+    if (display.cue.cue != render::VesselCue::None) {
+        summary << ", cue " << render::name(display.cue.cue);
+    }
+    if (centerlines) {
+        summary << ", " << centerlines->lines.size() << " centrelines by "
+                << (centerlines->colouring == render::CenterlineColouring::Branch
+                        ? "branch"
+                        : "inscribed diameter");
+    }
+}
+
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -220,6 +265,11 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     options.volume = volume;
     options.isoValue = iso;
     const render::Camera camera = *options.camera;
+    std::optional<render::CenterlineOverlay> centerlines;
+    if (parsed.centerlines) {
+        centerlines = centerlineOverlay(scene, parsed.input, parsed.centerlineColouring,
+                                        options.display.style.colorMap, err);
+    }
 
     ensureGuiApplication();
     render::OffscreenRenderer renderer;
@@ -232,14 +282,17 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         exported.render = options;
         exported.legends = options.display.legends;
         exported.maxTileSide = parsed.maxTileSide;
+        exported.centerlines = centerlines;
         report::RenderedView view = report::renderView(renderer, scene, exported);
         image = std::move(view.image);
         tiles = view.tiles;
-    } else if (parsed.maxTileSide > 0) {
+    } else if (parsed.maxTileSide > 0 || centerlines) {
+        // In tiles, or with the centrelines drawn before the legends.
         report::ViewExportOptions tiled;
         tiled.render = options;
         tiled.legends = false;  // painted below as render() paints them
         tiled.maxTileSide = parsed.maxTileSide;
+        tiled.centerlines = centerlines;
         report::RenderedView view = report::renderView(renderer, scene, tiled);
         if (options.display.legends) {
             render::paintLegends(view.image, view.legends);
@@ -285,33 +338,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
                 << " file(s), " << scene.meshes.size() << " mesh(es), its camera"
                 << (parsed.sessionCamera ? "" : " replaced by --view") << "\n";
     }
-    summary << "wrote " << parsed.output.string() << " (" << image.width() << "x" << image.height();
-    if (tiles > 1) {
-        summary << " in " << tiles << " tiles";
-    }
-    const render::DisplaySettings& display = options.display;
-    const auto labels = display.style.array.empty()
-                            ? std::nullopt
-                            : render::shownLabels(scene, display.style, display.style.array);
-    if (display.style.array.empty()) {
-        summary << ", no array";
-    } else if (labels) {
-        summary << ", " << display.style.array << " as " << labels->size() << " labels";
-    } else {
-        summary << ", " << display.style.array << " through "
-                << colormaps::name(display.style.colorMap);
-        if (const auto range = renderer.lastRange()) {
-            summary << " over [" << range->first << ", " << range->second << "]";
-        } else {
-            summary << ", no finite values";
-        }
-    }
-    if (display.vss.enabled) {
-        summary << ", VSS " << colormaps::name(display.vss.scale) << " p=" << display.vss.solver.p;
-    }
-    if (display.cue.cue != render::VesselCue::None) {
-        summary << ", cue " << render::name(display.cue.cue);
-    }
+    describeImage(summary, parsed, scene, options, renderer, image, tiles, centerlines);
     summary << ")\n";
     if (!parsed.depthOutput.empty()) {
         summary << "wrote " << parsed.depthOutput.string() << " (linear depth, background +Inf)\n";

@@ -120,6 +120,21 @@ bool parseRenderOption(Arguments& a, RenderOptionValues& values) {
         values.sessionCamera = false;
     } else if (name == "--session") {
         useSession(a.path(), values);
+    } else if (name == "--centerlines") {
+        const std::string& value = a.value();
+        if (value != "on" && value != "off") {
+            a.fail("--centerlines must be on or off, not '" + value + "'");
+        }
+        values.centerlines = value == "on";
+    } else if (name == "--centerline-colour" || name == "--centerline-color") {
+        const std::string& value = a.value();
+        if (value == "diameter") {
+            values.centerlineColouring = render::CenterlineColouring::InscribedDiameter;
+        } else if (value == "branch") {
+            values.centerlineColouring = render::CenterlineColouring::Branch;
+        } else {
+            a.fail("--centerline-colour must be diameter or branch, not '" + value + "'");
+        }
     } else if (segmentation::setSceneSourceOption(name, a.peekValue(), values.source)) {
         a.takeValue();  // a DICOM option and its value
     } else if (const app::Setting* setting = app::settingForOption(name)) {

@@ -19,6 +19,7 @@
 #include "common/DisplaySettings.h"
 #include "common/Session.h"
 #include "common/SettingsSchema.h"
+#include "vv/render/CenterlineOverlay.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/scene/Mesh.h"
@@ -48,6 +49,13 @@ struct RenderOptionValues : app::DisplaySettings {
     std::filesystem::path sessionFile;
     bool sessionCamera = false;     ///< the session's camera is the view
     bool arrayFromSession = false;  ///< `array` is the session's
+    /// --centerlines on|off: the surface's centrelines (vv::analysis) drawn
+    /// over the view (CenterlineOverlay.h); off by default.
+    bool centerlines = false;
+    /// --centerline-colour diameter|branch: by the inscribed diameter (with a
+    /// legend) or one colour and number per branch.
+    render::CenterlineColouring centerlineColouring =
+        render::CenterlineColouring::InscribedDiameter;
 };
 
 /// "AZ,EL" (degrees; within the ranges of the settings style.light[0] and

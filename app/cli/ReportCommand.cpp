@@ -31,6 +31,7 @@
 #include <vector>
 
 #include "cli/Arguments.h"
+#include "cli/CenterlineDrawing.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
 #include "cli/OutputFiles.h"
@@ -321,6 +322,10 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
     job.secondView = a.secondView;
     job.secondViewName = a.secondViewName;
     job.legends = a.legends;
+    if (a.centerlines) {
+        job.centerlines = centerlineOverlay(scene, input, a.centerlineColouring,
+                                            job.view.display.style.colorMap, err);
+    }
     job.transparent = a.transparent;
     job.anonymise = a.anonymise;
     job.title = a.title;

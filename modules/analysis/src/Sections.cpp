@@ -194,12 +194,15 @@ CrossSection sectionAt(const PreparedSurface& s, const SurfaceIndex& index, cons
     return section;
 }
 
-/// The length of a branch's end zone at its start (or end): twice the
-/// branch's median inscribed radius (a closed tip's cap, where the radius
-/// grows from 0 on the surface to the vessel's, is one radius long), or 1.5
-/// times the radius at the end point where that is larger (a junction, its
-/// point in the merged lumen).
-double endZone(const Branch& branch, bool atStart) {
+}  // namespace
+
+EndZones endZones(const Branch& branch) {
+    if (branch.points.empty()) {
+        return {};
+    }
+    // A closed tip's cap, where the radius grows from 0 on the surface to
+    // the vessel's, is one radius long; a junction's end point lies in the
+    // merged lumen, whose radius is the larger.
     std::vector<double> radii;
     radii.reserve(branch.points.size());
     for (const CenterlinePoint& p : branch.points) {
@@ -207,11 +210,18 @@ double endZone(const Branch& branch, bool atStart) {
     }
     const auto middle = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
     std::nth_element(radii.begin(), middle, radii.end());
-    const double end = atStart ? branch.points.front().radiusMm : branch.points.back().radiusMm;
-    return std::max(2.0 * *middle, 1.5 * end);
+    return {.startMm = std::max(2.0 * *middle, 1.5 * branch.points.front().radiusMm),
+            .endMm = std::max(2.0 * *middle, 1.5 * branch.points.back().radiusMm)};
 }
 
-}  // namespace
+bool EndZones::contains(const Branch& branch, std::size_t i) const noexcept {
+    if (i >= branch.points.size()) {
+        return false;
+    }
+    const double at = branch.points[i].abscissaMm;
+    return at < branch.points.front().abscissaMm + startMm ||
+           at > branch.points.back().abscissaMm - endMm;
+}
 
 std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
                                                        const CenterlineTree& tree,
@@ -229,18 +239,14 @@ std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
     }
     std::size_t done = 0;
     for (std::size_t b = 0; b < tree.branches.size(); ++b) {
-        const Branch& zoned = tree.branches[b];
-        const double startZone = endZone(zoned, true);
-        const double endZoneLength = endZone(zoned, false);
         const Branch& branch = tree.branches[b];
+        const EndZones zones = endZones(branch);
         const double step = branch.points.size() > 1
                                 ? branch.points[1].abscissaMm - branch.points[0].abscissaMm
                                 : 0.5;
         for (std::size_t i = 0; i < branch.points.size(); ++i) {
             sections[b].push_back(sectionAt(s, index, branch, static_cast<int>(b), i, step));
-            const double at = branch.points[i].abscissaMm;
-            sections[b].back().inEndZone = at < branch.points.front().abscissaMm + startZone ||
-                                           at > branch.points.back().abscissaMm - endZoneLength;
+            sections[b].back().inEndZone = zones.contains(branch, i);
             if (++done % 64 == 0) {
                 progress.report(static_cast<double>(done) / static_cast<double>(total),
                                 "Cutting the sections");

@@ -197,6 +197,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         view.render = base;
         view.legends = options.legends;
         view.transparentBackground = options.transparent;
+        view.centerlines = options.centerlines;
         shown = renderView(renderer, scene, view, rendering);
     }
 
@@ -221,6 +222,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             view.render.camera = camera;
             view.render.display.vss.range = depthRange;
             view.legends = false;  // painted by the report as vectors
+            view.centerlines = options.centerlines;
             RenderedView rendered = renderView(renderer, scene, view, rendering);
             return std::pair{ReportView{rendered.image, caption, rendered.legends}, rendered.range};
         };

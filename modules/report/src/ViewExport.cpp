@@ -20,6 +20,7 @@
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/core/ImageRange.h"
+#include "vv/render/DepthRasterizer.h"
 #include "vv/render/GlResources.h"
 #include "vv/render/TileProjection.h"
 #include "vv/vss/DepthNormalization.h"
@@ -268,6 +269,21 @@ void renderTiled(render::OffscreenRenderer& renderer, const scene::Scene& scene,
     result.tiles = static_cast<int>(tiles.size());
 }
 
+/// Paints options.centerlines over result.image and adds their legend.
+void paintCenterlines(render::OffscreenRenderer& renderer, const scene::Scene& scene,
+                      const ViewExportOptions& options, double scale, RenderedView& result) {
+    const render::Camera camera = render::OffscreenRenderer::cameraFor(scene, options.render);
+    // The depth the VSS solve read for this frame when it was one piece;
+    // else the CPU rasteriser's, with the same convention and camera.
+    Image<float> depth =
+        result.tiles == 1 && result.vss.current ? renderer.lastLinearDepth() : Image<float>();
+    if (depth.width() != options.render.width || depth.height() != options.render.height) {
+        depth = render::rasterizeDepth(scene, camera);
+    }
+    render::paintCenterlines(result.image, camera, depth, *options.centerlines, scale);
+    render::addCenterlineLegend(result.legends, *options.centerlines);
+}
+
 }  // namespace
 
 int maxRenderSide() {
@@ -292,6 +308,10 @@ int maxRenderSide() {
 
 RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene& scene,
                         const ViewExportOptions& options, const Progress& progress) {
+    if (options.centerlines && options.render.volume) {
+        throw InvalidArgumentError(
+            "centrelines cannot be drawn over a volume ray cast: they need the surface");
+    }
     const int width = options.render.width;
     const int height = options.render.height;
     if (width < 1 || height < 1 || width > kMaxExportSide || height > kMaxExportSide ||
@@ -330,9 +350,12 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
     result.legends = render::legendsFor(&scene, frame.display.style, result.range,
                                         render::frameSettings(frame.display), result.vss,
                                         renderer.lastCueDepthRange());
+    const double scale =
+        std::max(1.0, std::min(width / kLegendReferenceWidth, height / kLegendReferenceHeight));
+    if (options.centerlines) {
+        paintCenterlines(renderer, scene, options, scale, result);
+    }
     if (options.legends && !result.legends.empty()) {
-        const double scale =
-            std::max(1.0, std::min(width / kLegendReferenceWidth, height / kLegendReferenceHeight));
         QPainter painter(&result.image);
         painter.setRenderHint(QPainter::Antialiasing);
         painter.setRenderHint(QPainter::TextAntialiasing);

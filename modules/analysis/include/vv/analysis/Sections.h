@@ -73,6 +73,17 @@ struct CrossSection {
     }
 };
 
+/// A branch's end zones (CrossSection::inEndZone): each twice the branch's
+/// median inscribed radius long, or 1.5 times the radius at its end point
+/// where that is larger.
+struct EndZones {
+    double startMm = 0.0;  ///< length from the branch's first point
+    double endMm = 0.0;    ///< length back from its last point
+    /// Whether point `i` of `branch` (the branch these zones are of) lies in one.
+    [[nodiscard]] bool contains(const Branch& branch, std::size_t i) const noexcept;
+};
+[[nodiscard]] EndZones endZones(const Branch& branch);
+
 /// The sections of every branch of `tree` (made from `mesh`), one per
 /// centreline point: result[b][i] is branch b's point i. Progress is
 /// reported; a stop request throws CancelledError. Throws AnalysisError for

@@ -8,6 +8,7 @@
 
 #include "vv/core/Error.h"
 #include "vv/core/Progress.h"
+#include "vv/render/CenterlineOverlay.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/report/ParameterStats.h"
@@ -75,6 +76,10 @@ struct ReportJobOptions {
     /// (voxels stay sharp).
     QImage slice;
     std::string sliceCaption;
+    /// Centrelines over every view (ViewExportOptions::centerlines): the
+    /// PNG, the Secondary Capture and the PDF's views, each with their
+    /// legend; nullopt = none.
+    std::optional<render::CenterlineOverlay> centerlines;
     bool legends = true;       ///< legends on the PNG / Secondary Capture
     bool transparent = false;  ///< transparent background of the PNG
     /// Print "anonymised" for the patient and leave the identifiers out of the

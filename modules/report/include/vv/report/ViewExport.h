@@ -7,6 +7,7 @@
 #include <utility>
 
 #include "vv/core/Progress.h"
+#include "vv/render/CenterlineOverlay.h"
 #include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
 #include "vv/render/OffscreenRenderer.h"
@@ -36,6 +37,13 @@ struct ViewExportOptions {
     /// the frame fits maxRenderSide() and kAutoTileBudgetBytes of GPU memory,
     /// else in tiles of kAutoTileSide. Else at least kMinTileSide.
     int maxTileSide = 0;
+    /// Centrelines drawn over the view (render::paintCenterlines, widths
+    /// scaled with the image as the legends are) before the legends, whose
+    /// list gains the overlay's (render::addCenterlineLegend); nullopt =
+    /// none. Their visibility is judged against the G-buffer depth the VSS
+    /// solve read, or the CPU rasteriser's (render::rasterizeDepth) when
+    /// there was none: meshes only, so not with a volume ray cast.
+    std::optional<render::CenterlineOverlay> centerlines;
 };
 
 /// Automatic tiling: the GPU memory one piece may take (the frame's textures,
@@ -84,11 +92,12 @@ struct RenderedView {
 ///     and a guard band as wide as the screen-space passes reach (SSAO, its
 ///     blur, VSS normals, FXAA; at most a quarter of the tile side), which is
 ///     cropped away.
-/// The legends are painted on the whole image afterwards.
+/// The centrelines, then the legends are painted on the whole image afterwards.
 /// `progress` gets the fraction done per tile and stops between tiles and
 /// inside the solve (CancelledError).
 /// Throws InvalidArgumentError for a size out of range or maxTileSide in
-/// 1..kMinTileSide-1 or negative, RenderError when GL fails, CancelledError.
+/// 1..kMinTileSide-1 or negative, or centrelines with a volume,
+/// RenderError when GL fails, CancelledError.
 [[nodiscard]] RenderedView renderView(render::OffscreenRenderer& renderer,
                                       const scene::Scene& scene, const ViewExportOptions& options,
                                       const Progress& progress = {});
