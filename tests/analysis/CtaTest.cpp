@@ -40,12 +40,12 @@ TEST(CtaAnalysis, SegmentedSeriesAgreesWithItsTree) {
     EXPECT_GE(static_cast<double>(a.sectionsOk), 0.95 * static_cast<double>(a.sectionsAll));
     EXPECT_GT(a.compared, 100U);
 
-    // The segmented wall lies within half a voxel of the built one (the
-    // threshold sits near half the lumen's contrast; the surface of the
-    // binary mask is smoothed back to it), so each section's radius is
-    // within h / 2 of the built radius: relative to the thinnest vessel's
-    // radius, the largest error any section may have; its median too. The
-    // same holds for the centreline's distance from the built axis.
+    // The segmented wall lies within about half a voxel of the built one
+    // (the threshold sits near half the lumen's contrast; the surface of
+    // the binary mask is smoothed back towards it), so a section's radius is
+    // within about h / 2 of the built radius: per the thinnest vessel's
+    // radius, the most a typical section may be off; the median must keep
+    // inside it. The same for the centreline's distance from the built axis.
     double thinnest = ct.tree.segments.front().radiusMm;
     for (const auto& segment : ct.tree.segments) {
         thinnest = std::min(thinnest, segment.radiusMm);

@@ -191,7 +191,7 @@ vtkSmartPointer<vtkPolyData> extract(const Field& field, const detail::FieldGrid
 
 /// Cuts the surface open at each axis' end: keeps the side of the plane
 /// through `origin` that `normal` points to.
-vtkSmartPointer<vtkPolyData> cut(vtkSmartPointer<vtkPolyData> surface, const glm::dvec3& origin,
+vtkSmartPointer<vtkPolyData> cut(vtkPolyData* surface, const glm::dvec3& origin,
                                  const glm::dvec3& normal, const Progress& progress) {
     auto plane = vtkSmartPointer<vtkPlane>::New();
     plane->SetOrigin(origin.x, origin.y, origin.z);

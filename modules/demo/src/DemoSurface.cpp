@@ -30,10 +30,10 @@ namespace vv::demo {
 namespace {
 
 using detail::Bins;
-using detail::Piece;
-using detail::pieceDistance2;
 using detail::kBandVoxels;
 using detail::kZeroGuardVoxels;
+using detail::Piece;
+using detail::pieceDistance2;
 using detail::smoothMin;
 
 // Grid and field (see docs/demo-data.md).

@@ -48,7 +48,9 @@ struct AneurysmPhantomOptions {
     /// Each branch's axis, from the bifurcation point; >= 4 radiusMm (the
     /// bifurcation angle is measured 2 to 4 trunk radii along them).
     double iliacLengthMm = 80.0;
-    /// About this many triangles; in [1000, 5'000'000].
+    /// About this many triangles, in [1000, 5'000'000]; with open ends,
+    /// before they are cut (the cut takes the caps and the tubes past it:
+    /// about 14 % of them).
     std::size_t targetTriangles = 50'000;
     /// Each vertex moved by a uniform random offset in [-j, j] per axis, j =
     /// jitterFraction * radiusMm (of the trunk); in [0, 0.2].
