@@ -4,26 +4,35 @@
 // phantoms and Y-bifurcations, at about 1k, 50k and 1M triangles, with and
 // without a 2 % jitter) the centreline's largest distance from the true
 // axis (per r), the length error, the equivalent diameter's largest error,
-// the bifurcation angle's error; then the demo tree's centrelines and
-// sections: time and peak memory against the mesh's own size.
+// the bifurcation angle's error; the aneurysm phantom's widest section,
+// axes, trunk length and angle; then the demo tree's centrelines and
+// sections against its construction: time and peak memory against the
+// mesh's own size; and the synthetic CTA segmented as `render` segments a
+// DICOM series, against the tree it was voxelised from.
 //
-//   build/release/bench/analysis_accuracy [--quick | --demo]
-//   (--quick: no 1M rows; --demo: the demo tree's row alone)
+//   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm]
+//   (--quick: no 1M rows; --demo: the demo tree's row alone; --cta: the
+//   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
+//   rows included)
 #include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <limits>
+#include <filesystem>
 #include <string>
 #include <vector>
 
+#include "AnalysisAgreement.h"
 #include "vv/analysis/Bifurcations.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
+#include "vv/core/Error.h"
 #include "vv/core/ProcessMemory.h"
+#include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/BifurcationPhantom.h"
+#include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/demo/TubePhantom.h"
 
@@ -42,6 +51,25 @@ double meshMiB(const vv::scene::Mesh& mesh) {
     const double bytes = static_cast<double>(mesh.positions.size()) * 24.0 +
                          static_cast<double>(mesh.indices.size()) * 4.0;
     return bytes / (1024.0 * 1024.0);
+}
+
+/// A surface's centrelines and sections, and how long each took.
+struct Analysed {
+    vv::analysis::CenterlineTree tree;
+    std::vector<std::vector<CrossSection>> sections;
+    double centrelineSeconds = 0.0;
+    double sectionSeconds = 0.0;
+};
+
+Analysed analyse(const vv::scene::Mesh& mesh) {
+    Analysed a;
+    auto start = Clock::now();
+    a.tree = vv::analysis::computeCenterlines(mesh);
+    a.centrelineSeconds = secondsSince(start);
+    start = Clock::now();
+    a.sections = vv::analysis::computeSections(mesh, a.tree);
+    a.sectionSeconds = secondsSince(start);
+    return a;
 }
 
 struct TubeRow {
@@ -74,12 +102,9 @@ void tubeTable(const std::vector<std::size_t>& densities) {
                 o.targetTriangles = triangles;
                 o.jitterFraction = jitter;
                 const auto truth = vv::demo::makeTubePhantom(o);
-                auto start = Clock::now();
-                const auto tree = vv::analysis::computeCenterlines(truth.mesh);
-                const double centrelineSeconds = secondsSince(start);
-                start = Clock::now();
-                const auto sections = vv::analysis::computeSections(truth.mesh, tree);
-                const double sectionSeconds = secondsSince(start);
+                const Analysed analysed = analyse(truth.mesh);
+                const auto& tree = analysed.tree;
+                const auto& sections = analysed.sections;
                 double worst = 0.0;
                 double length = 0.0;
                 double diameterError = 0.0;
@@ -104,7 +129,8 @@ void tubeTable(const std::vector<std::size_t>& densities) {
                 std::printf("| %s | %g | %zu | %g %% | %.2f | %+.2f | %.2f | %.2f | %.2f |\n",
                             row.name, row.radius, truth.mesh.triangleCount(), jitter * 100.0,
                             100.0 * worst / row.radius, 100.0 * (length / truth.lengthMm - 1.0),
-                            100.0 * diameterError, centrelineSeconds, sectionSeconds);
+                            100.0 * diameterError, analysed.centrelineSeconds,
+                            analysed.sectionSeconds);
                 std::fflush(stdout);
             }
         }
@@ -134,25 +160,49 @@ void bifurcationTable(const std::vector<std::size_t>& densities) {
     }
 }
 
-/// Distance from `p` to the polyline `line`.
-double distanceToPolyline(const glm::dvec3& p, const std::vector<glm::vec3>& line) {
-    double best = std::numeric_limits<double>::max();
-    for (std::size_t i = 0; i + 1 < line.size(); ++i) {
-        const glm::dvec3 a(line[i]);
-        const glm::dvec3 ab = glm::dvec3(line[i + 1]) - a;
-        const double t =
-            std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-12), 0.0, 1.0);
-        best = std::min(best, glm::length(p - (a + t * ab)));
-    }
-    return best;
+/// The measured columns of one aneurysm row.
+void aneurysmRow(const vv::demo::AneurysmPhantom& truth) {
+    const Analysed analysed = analyse(truth.mesh);
+    const auto a = vv::bench::measureAneurysm(truth, analysed.tree, analysed.sections);
+    std::printf("%zu / %zu | %+.2f | %+.2f | %.2f | %+.2f | %+.2f | %.2f | %.2f |\n", a.branches,
+                a.ends, 100.0 * a.maxDiameterError,
+                a.widestAbscissaMm - truth.maxDiameterAbscissaMm, 100.0 * a.worstAxisDistancePerR,
+                100.0 * a.trunkLengthError, a.angleErrorDeg, analysed.centrelineSeconds,
+                analysed.sectionSeconds);
 }
 
-double percentile(std::vector<double> values, double q) {
-    if (values.empty()) {
-        return std::nan("");
+void aneurysmTable(const std::vector<std::size_t>& densities) {
+    std::printf(
+        "\n| aneurysm | triangles | jitter | branches / ends | max. equiv. diameter error (%%) "
+        "| widest at, off the truth (mm) | axis distance (%% r) | trunk length error (%%) | "
+        "angle error (deg) | centrelines (s) | sections (s) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+    for (const std::size_t triangles : densities) {
+        for (const bool open : {false, true}) {
+            for (const double jitter : {0.0, 0.02}) {
+                vv::demo::AneurysmPhantomOptions o;
+                o.targetTriangles = std::max<std::size_t>(triangles, 1000);
+                o.openEnds = open;
+                o.jitterFraction = jitter;
+                const auto truth = vv::demo::makeAneurysmPhantom(o);
+                std::printf("| %s | %zu | %g %% | ", open ? "open ends" : "closed",
+                            truth.mesh.triangleCount(), jitter * 100.0);
+                try {
+                    aneurysmRow(truth);
+                } catch (const vv::Error& e) {
+                    std::printf("the analysis failed: %s |\n", e.what());
+                }
+                std::fflush(stdout);
+            }
+        }
     }
-    std::sort(values.begin(), values.end());
-    return values[static_cast<std::size_t>(q * static_cast<double>(values.size() - 1))];
+}
+
+void printAgreement(const vv::bench::ConstructionAgreement& a) {
+    std::printf("%zu / %zu | %zu | %zu | %zu / %zu | %.1f / %.1f | %+.1f / %.1f", a.segments,
+                a.leaves, a.leavesFound, a.endsElsewhere, a.sectionsOk, a.sectionsAll,
+                100.0 * a.offAxisMedian, 100.0 * a.offAxisP95, 100.0 * a.diameterErrorMedian,
+                100.0 * a.diameterErrorP95);
 }
 
 void demoTree() {
@@ -161,77 +211,87 @@ void demoTree() {
     const auto mesh = vv::demo::buildVesselSurface(truth, options);
     vv::resetPeakResident();
     const auto before = vv::residentKiB().value_or(0);
-    auto start = Clock::now();
-    const auto tree = vv::analysis::computeCenterlines(mesh);
-    const double centrelineSeconds = secondsSince(start);
-    start = Clock::now();
-    const auto sections = vv::analysis::computeSections(mesh, tree);
-    const double sectionSeconds = secondsSince(start);
+    const Analysed analysed = analyse(mesh);
     const auto peak = vv::peakResidentKiB().value_or(0);
-    std::size_t ok = 0;
-    std::size_t all = 0;
-    std::vector<double> offAxis;  // per r of the nearest construction segment
-    std::vector<double> diameterError;
-    for (std::size_t b = 0; b < sections.size(); ++b) {
-        for (std::size_t i = 0; i < sections[b].size(); ++i) {
-            const auto& s = sections[b][i];
-            ok += s.status == CrossSection::Status::Ok ? 1 : 0;
-            ++all;
-            if (s.inEndZone) {
-                continue;  // caps and junctions: the construction has no axis there
-            }
-            const glm::dvec3 p = tree.branches[b].points[i].position;
-            double nearest = std::numeric_limits<double>::max();
-            double radius = 0.0;
-            for (const auto& segment : truth.segments) {
-                const double d = distanceToPolyline(p, segment.centerline);
-                if (d < nearest) {
-                    nearest = d;
-                    radius = segment.radiusMm;
-                }
-            }
-            offAxis.push_back(nearest / radius);
-            if (s.status == CrossSection::Status::Ok) {
-                diameterError.push_back(s.equivalentDiameterMm / (2.0 * radius) - 1.0);
-            }
-        }
-    }
-    std::size_t leaves = 0;
-    for (const auto& segment : truth.segments) {
-        leaves += segment.children.empty() ? 1 : 0;
-    }
     std::printf(
-        "| demo tree | triangles | segments / leaves built | branches / ends found | "
+        "| demo tree | triangles | segments / leaves built | leaves found | other ends | "
         "sections (ok / all) | off the built axis, median / 95 %% (%% r) | equiv. "
-        "diameter against the built, median / 95 %% (%%) | centrelines (s) | sections (s) "
-        "| peak memory above the mesh (MiB) | mesh (MiB) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+        "diameter against the built, median / 95 %% of its size (%%) | centrelines (s) | "
+        "sections (s) | peak memory above the mesh (MiB) | mesh (MiB) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| default | %zu | ", mesh.triangleCount());
+    printAgreement(vv::bench::compareWithConstruction(truth, analysed.tree, analysed.sections));
+    std::printf(" | %.2f | %.2f | %.0f | %.1f |\n", analysed.centrelineSeconds,
+                analysed.sectionSeconds,
+                static_cast<double>(peak > before ? peak - before : 0) / 1024.0, meshMiB(mesh));
+}
+
+/// The synthetic CTA (the demo tree voxelised, vv/demo/DemoCtSeries.h)
+/// written as a CT series, segmented as `vesselview-cli render` segments it,
+/// analysed, and compared with the tree it was made from.
+void ctaTable() {
     std::printf(
-        "| default | %zu | %zu / %zu | %zu / %zu | %zu / %zu | %.1f / %.1f | %+.1f / %+.1f | "
-        "%.2f | %.2f | %.0f | %.1f |\n",
-        mesh.triangleCount(), truth.segments.size(), leaves, tree.branches.size(), tree.ends.size(),
-        ok, all, 100.0 * percentile(offAxis, 0.5), 100.0 * percentile(offAxis, 0.95),
-        100.0 * percentile(diameterError, 0.5), 100.0 * percentile(diameterError, 0.95),
-        centrelineSeconds, sectionSeconds,
-        static_cast<double>(peak > before ? peak - before : 0) / 1024.0, meshMiB(mesh));
+        "\n| synthetic CTA | voxels | voxel (mm) | triangles | segments / leaves built | "
+        "leaves found | other ends | sections (ok / all) | off the built axis, median / 95 "
+        "%% (%% r) | equiv. diameter against the built, median / 95 %% of its size (%%) | "
+        "segmentation (s) | centrelines (s) | sections (s) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    struct Row {
+        int generations;
+        glm::ivec3 dims;
+    };
+    const std::array<Row, 4> rows{
+        {{3, {64, 64, 64}}, {4, {96, 96, 80}}, {4, {192, 192, 160}}, {5, {192, 192, 160}}}};
+    const auto folder = std::filesystem::temp_directory_path() / "vv_analysis_accuracy_cta";
+    for (const Row& row : rows) {
+        vv::demo::DemoCtOptions options;
+        options.generations = row.generations;
+        options.dims = row.dims;
+        const vv::demo::DemoCt ct = vv::demo::generateDemoCt(options);
+        std::filesystem::remove_all(folder);
+        const auto start = Clock::now();
+        const auto mesh = vv::bench::segmentAsRenderDoes(ct, folder);
+        const double segmentationSeconds = secondsSince(start);
+        std::filesystem::remove_all(folder);
+        const Analysed analysed = analyse(mesh);
+        const glm::dvec3 spacing = ct.volume.spacing();
+        const double voxel = std::max({spacing.x, spacing.y, spacing.z});
+        std::printf("| %d generations | %d x %d x %d | %.2f x %.2f x %.2f | %zu | ",
+                    row.generations, row.dims.x, row.dims.y, row.dims.z, spacing.x, spacing.y,
+                    spacing.z, mesh.triangleCount());
+        printAgreement(
+            vv::bench::compareWithConstruction(ct.tree, analysed.tree, analysed.sections, voxel));
+        std::printf(" | %.2f | %.2f | %.2f |\n", segmentationSeconds, analysed.centrelineSeconds,
+                    analysed.sectionSeconds);
+        std::fflush(stdout);
+    }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    const bool quick = argc > 1 && std::strcmp(argv[1], "--quick") == 0;
-    const bool demoOnly = argc > 1 && std::strcmp(argv[1], "--demo") == 0;
+    const auto mode = [&](const char* name) { return argc > 1 && std::strcmp(argv[1], name) == 0; };
     std::vector<std::size_t> densities{1'000, 50'000};
-    if (!quick) {
+    if (!mode("--quick")) {
         densities.push_back(1'000'000);
     }
+    if (mode("--aneurysm")) {
+        aneurysmTable(densities);
+        return 0;
+    }
+    if (mode("--cta")) {
+        ctaTable();
+        return 0;
+    }
     demoTree();
-    if (demoOnly) {
+    if (mode("--demo")) {
         return 0;
     }
     std::printf("\n");
     tubeTable(densities);
     bifurcationTable(densities);
+    aneurysmTable(densities);
+    ctaTable();
     return 0;
 }
 // NOLINTEND(cppcoreguidelines-pro-type-vararg)

@@ -1,20 +1,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // The surface of a vessel tree: a narrow-band signed distance field (smooth
 // union of tubes along the centrelines) sampled slab by slab, flying edges at
-// 0, windowed-sinc smoothing, outward normals; the per-vertex flow data come
+// 0, windowed-sinc smoothing, outward normals (FieldSurface.h); the per-vertex flow data come
 // from DemoFlowFields.cpp. Also generateDemoMesh: the tree (DemoTree.cpp) and
 // its surface. See docs/demo-data.md.
-#include <vtkCellArray.h>
-#include <vtkFloatArray.h>
-#include <vtkFlyingEdges3D.h>
-#include <vtkImageData.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
-#include <vtkPolyDataAlgorithm.h>
-#include <vtkPolyDataNormals.h>
 #include <vtkSmartPointer.h>
-#include <vtkWindowedSincPolyDataFilter.h>
 
 #include <algorithm>
 #include <array>
@@ -24,44 +15,37 @@
 #include <numbers>
 #include <span>
 #include <string>
-#include <string_view>
-#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #include "DemoSurfaceDetail.h"
 #include "DemoValidation.h"
+#include "FieldSurface.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 #include "vv/demo/DemoTree.h"
-#include "vv/meshio/vtkext/RunAlgorithm.h"
-#include "vv/meshio/vtkext/VtkConvert.h"
-#include "vv/scene/MeshTopology.h"
 
 namespace vv::demo {
 
 namespace {
 
 using detail::Bins;
+using detail::kBandVoxels;
+using detail::kZeroGuardVoxels;
 using detail::Piece;
 using detail::pieceDistance2;
+using detail::smoothMin;
 
 // Grid and field (see docs/demo-data.md).
 constexpr int kBinVoxels = 8;                   // bins of 8^3 voxels for the narrow band
-constexpr int kSlabVoxels = 4 * kBinVoxels;     // voxel layers extracted at a time
 constexpr int kMaxAxisVoxels = 4096;            // keeps float index coordinates exact enough
 constexpr double kMaxVoxels = 256e6;            // bounds the time; slabs bound the memory
-constexpr double kZeroGuardVoxels = 0.05;       // field values kept this far from 0
 constexpr double kTargetTriangles = 300000.0;   // the automatic voxel size aims here
 constexpr double kTrianglesPerVoxelArea = 2.9;  // flying edges, measured: per h^2 of surface
 constexpr double kVoxelsPerRadius = 2.0;        // automatic: >= 4 voxels across a diameter
-constexpr double kBandVoxels = 3.0;             // the field is exact within this band
 constexpr double kMinRadiusVoxels = 1.25;       // thinner vessels are drawn this thick
 constexpr double kBlendPerRadius = 0.6;         // smooth-union width / radius of the added tube
 constexpr float kFar = 1e30F;
-
-// Finishing.
-constexpr int kSmoothingIterations = 20;
-constexpr double kSmoothingPassBand = 0.05;
 
 // Progress of the stages. Extraction may run up to kMaxExtractions times,
 // each on a coarser grid, to stay within the triangle limit; attempt i
@@ -71,19 +55,11 @@ constexpr std::array<double, kMaxExtractions + 1> kExtractEnds = {0.0, 0.45, 0.5
 constexpr double kSmoothEnd = 0.85;
 constexpr double kNormalsEnd = 0.9;
 
-struct Grid {
-    glm::dvec3 origin{0.0};
-    double spacing = 0.0;
-    int nx = 0;
-    int ny = 0;
-    int nz = 0;
-    [[nodiscard]] double voxelCount() const {
-        return static_cast<double>(nx) * static_cast<double>(ny) * static_cast<double>(nz);
-    }
-    [[nodiscard]] bool tooLarge() const {
-        return voxelCount() > kMaxVoxels || std::max({nx, ny, nz}) > kMaxAxisVoxels;
-    }
-};
+using Grid = detail::FieldGrid;
+
+bool tooLarge(const Grid& grid) {
+    return grid.voxelCount() > kMaxVoxels || std::max({grid.nx, grid.ny, grid.nz}) > kMaxAxisVoxels;
+}
 
 double drawnRadius(double radius, double spacing) {
     return std::max(radius, kMinRadiusVoxels * spacing);
@@ -141,7 +117,7 @@ double automaticVoxelSize(const VesselTree& tree, int maxTriangles) {
     }
     for (int i = 0; i < 16; ++i) {
         const Grid grid = makeGrid(tree, spacing);
-        if (!grid.tooLarge()) {
+        if (!tooLarge(grid)) {
             break;
         }
         const double longest = std::max({grid.nx, grid.ny, grid.nz});
@@ -271,13 +247,6 @@ std::vector<SegmentShape> makeShapes(const VesselTree& tree, double spacing) {
     return shapes;
 }
 
-/// Polynomial smooth minimum of width k: min(a, b) away from a == b, blended
-/// (and at most k / 4 lower) where they are within k of each other.
-inline float smoothMin(float a, float b, float k) {
-    const float h = std::max(k - std::abs(a - b), 0.0F) / k;
-    return std::min(a, b) - h * h * k * 0.25F;
-}
-
 /// The field at p from the pieces of one bin. Per segment the exact distance
 /// d to its tube (minimum over its pieces); then the minimum over the terms
 /// smin(d_child, d_parent, k_child) and smin(d_a, d_b, min(k_a, k_b)) for
@@ -326,9 +295,8 @@ inline float fieldAt(const glm::vec3& p, std::span<const Bins::Run> runs,
 }
 
 /// Samples the field for the voxel layers z0..z1 (all x and y) into values,
-/// x fastest. Values within a small guard of 0 are moved to +-guard, so that
-/// no surface point lies on (or rounds onto) a grid point or grid plane.
-void sampleSlab(const Grid& grid, const std::vector<Piece>& pieces, const Bins& bins,
+/// x fastest, as detail::SlabSampler: false when no piece reaches the slab.
+bool sampleSlab(const Grid& grid, const std::vector<Piece>& pieces, const Bins& bins,
                 const std::vector<SegmentShape>& shapes, float band, int z0, int z1, float* values,
                 const std::stop_token& stop) {
     const long nx = grid.nx;
@@ -339,6 +307,10 @@ void sampleSlab(const Grid& grid, const std::vector<Piece>& pieces, const Bins& 
     const long layer0 = z0 / kBinVoxels;
     const long layer1 = z1 / kBinVoxels;
     const long binsPerLayer = static_cast<long>(bins.nx) * bins.ny;
+    if (bins.start[static_cast<std::size_t>(binsPerLayer * layer0)] ==
+        bins.start[static_cast<std::size_t>(binsPerLayer * (layer1 + 1))]) {
+        return false;
+    }
     const auto body = [&](long begin, long end) {
         std::vector<float> distance(bins.maxRunsPerBin);
         for (long i = begin; i < end; ++i) {
@@ -363,237 +335,16 @@ void sampleSlab(const Grid& grid, const std::vector<Piece>& pieces, const Bins& 
                         const glm::vec3 p =
                             origin + h * glm::vec3(static_cast<float>(x), static_cast<float>(y),
                                                    static_cast<float>(z));
-                        float v = std::clamp(
-                            fieldAt(p, runs, bins.items, pieces, shapes, distance.data()), -band,
-                            band);
-                        if (std::abs(v) < guard) {
-                            v = v < 0.0F ? -guard : guard;
-                        }
-                        row[x] = v;
+                        row[x] = detail::guardedFieldValue(
+                            fieldAt(p, runs, bins.items, pieces, shapes, distance.data()), band,
+                            guard);
                     }
                 }
             }
         }
     };
     parallelFor(0, binsPerLayer * (layer1 - layer0 + 1), 4, body, stop);
-}
-
-/// Points of a slab's output that lie on a grid plane z = const, by their
-/// (x, y) voxel cell, to join them with the next slab's.
-class PlanePoints {
-  public:
-    explicit PlanePoints(long nx) : nx_(nx) {}
-    void clear() { cells_.clear(); }
-    [[nodiscard]] bool empty() const { return cells_.empty(); }
-    void add(const glm::vec3& p, vtkIdType id) {
-        cells_.emplace(key(cellOf(p.x), cellOf(p.y)), Entry{p, id});
-    }
-    /// The id of the point within tolerance of p in (x, y), or -1.
-    [[nodiscard]] vtkIdType find(const glm::vec3& p, float tolerance) const {
-        const long cx = cellOf(p.x);
-        const long cy = cellOf(p.y);
-        for (long dy = -1; dy <= 1; ++dy) {
-            for (long dx = -1; dx <= 1; ++dx) {
-                const auto [first, last] = cells_.equal_range(key(cx + dx, cy + dy));
-                for (auto it = first; it != last; ++it) {
-                    if (std::abs(it->second.p.x - p.x) <= tolerance &&
-                        std::abs(it->second.p.y - p.y) <= tolerance) {
-                        return it->second.id;
-                    }
-                }
-            }
-        }
-        return -1;
-    }
-
-  private:
-    struct Entry {
-        glm::vec3 p;
-        vtkIdType id;
-    };
-    static long cellOf(float v) { return static_cast<long>(std::floor(v)); }
-    [[nodiscard]] long key(long cx, long cy) const { return (cx + 1) + (nx_ + 3) * (cy + 1); }
-    long nx_;
-    std::unordered_multimap<long, Entry> cells_;
-};
-
-/// The zero level of the field, built slab by slab (kSlabVoxels layers of
-/// voxels at a time, neighbours sharing one layer) so that the whole grid
-/// never needs to be in memory; slabs the narrow band does not reach are
-/// skipped. Flying edges runs in index space (origin 0, spacing 1, the slab's
-/// z extent), so the points a slab makes on its last layer are the next
-/// slab's points on its first layer; they are joined into one point.
-vtkSmartPointer<vtkPolyData> extractSurface(const Grid& grid, const std::vector<Piece>& pieces,
-                                            const Bins& bins,
-                                            const std::vector<SegmentShape>& shapes, float band,
-                                            const Progress& progress) {
-    const std::string_view stage = "Extracting surface";
-    // Surface points are at least this far (in voxels) from any grid plane
-    // they do not lie in, thanks to the guard; joining tolerates a quarter.
-    const auto tolerance = static_cast<float>(0.25 * kZeroGuardVoxels / (2.0 * kBandVoxels));
-    std::vector<glm::vec3> points;  // index space
-    std::vector<vtkIdType> triangles;
-    PlanePoints below(grid.nx);  // previous slab's points on this slab's first layer
-    PlanePoints above(grid.nx);
-    const long binsPerLayer = static_cast<long>(bins.nx) * bins.ny;
-    const int slabCount = std::max(1, (grid.nz - 1 + kSlabVoxels - 1) / kSlabVoxels);
-    auto scalars = vtkSmartPointer<vtkFloatArray>::New();
-    for (int slab = 0; slab < slabCount; ++slab) {
-        progress.report(static_cast<double>(slab) / slabCount, stage);
-        const int z0 = slab * kSlabVoxels;
-        const int z1 = std::min(grid.nz - 1, z0 + kSlabVoxels);
-        const long firstBin = binsPerLayer * (z0 / kBinVoxels);
-        const long endBin = binsPerLayer * (z1 / kBinVoxels + 1);
-        if (bins.start[static_cast<std::size_t>(firstBin)] ==
-            bins.start[static_cast<std::size_t>(endBin)]) {
-            below.clear();  // no piece reaches the slab: no surface in it
-            continue;
-        }
-        auto image = vtkSmartPointer<vtkImageData>::New();
-        image->SetExtent(0, grid.nx - 1, 0, grid.ny - 1, z0, z1);
-        image->SetOrigin(0.0, 0.0, 0.0);
-        image->SetSpacing(1.0, 1.0, 1.0);
-        scalars->SetNumberOfTuples(static_cast<vtkIdType>(grid.nx) * grid.ny * (z1 - z0 + 1));
-        image->GetPointData()->SetScalars(scalars);
-        sampleSlab(grid, pieces, bins, shapes, band, z0, z1, scalars->GetPointer(0),
-                   progress.stopToken());
-
-        auto extract = vtkSmartPointer<vtkFlyingEdges3D>::New();
-        extract->SetInputData(image);
-        extract->SetNumberOfContours(1);
-        extract->SetValue(0, 0.0);
-        extract->ComputeNormalsOff();
-        extract->ComputeGradientsOff();
-        extract->ComputeScalarsOff();
-        extract->InterpolateAttributesOff();
-        extract->Update();
-        vtkPolyData* out = extract->GetOutput();
-
-        const vtkIdType localCount = out->GetNumberOfPoints();
-        std::vector<vtkIdType> globalId(static_cast<std::size_t>(localCount));
-        above.clear();
-        for (vtkIdType i = 0; i < localCount; ++i) {
-            double x[3];
-            out->GetPoint(i, x);
-            const glm::vec3 p(static_cast<float>(x[0]), static_cast<float>(x[1]),
-                              static_cast<float>(x[2]));
-            vtkIdType id = -1;
-            if (std::abs(p.z - static_cast<float>(z0)) <= tolerance) {
-                id = below.find(p, tolerance);
-                if (id < 0) {
-                    throw Error(
-                        "vessel surface: internal error, slabs do not join at voxel layer " +
-                        std::to_string(z0));
-                }
-            } else {
-                id = static_cast<vtkIdType>(points.size());
-                points.push_back(p);
-            }
-            if (std::abs(p.z - static_cast<float>(z1)) <= tolerance) {
-                above.add(p, id);
-            }
-            globalId[static_cast<std::size_t>(i)] = id;
-        }
-        vtkCellArray* polys = out->GetPolys();
-        vtkIdType count = 0;
-        const vtkIdType* ids = nullptr;
-        for (polys->InitTraversal(); polys->GetNextCell(count, ids) != 0;) {
-            if (count != 3) {
-                throw Error("vessel surface: internal error, flying edges made a non-triangle");
-            }
-            for (vtkIdType k = 0; k < 3; ++k) {
-                triangles.push_back(globalId[static_cast<std::size_t>(ids[k])]);
-            }
-        }
-        std::swap(below, above);
-    }
-    progress.report(1.0, stage);
-
-    auto worldPoints = vtkSmartPointer<vtkPoints>::New();
-    worldPoints->SetDataTypeToFloat();
-    worldPoints->SetNumberOfPoints(static_cast<vtkIdType>(points.size()));
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::dvec3 w = grid.origin + grid.spacing * glm::dvec3(points[i]);
-        worldPoints->SetPoint(static_cast<vtkIdType>(i), w.x, w.y, w.z);
-    }
-    auto cells = vtkSmartPointer<vtkCellArray>::New();
-    cells->AllocateExact(static_cast<vtkIdType>(triangles.size() / 3),
-                         static_cast<vtkIdType>(triangles.size()));
-    for (std::size_t t = 0; t < triangles.size(); t += 3) {
-        cells->InsertNextCell(3, triangles.data() + t);
-    }
-    auto surface = vtkSmartPointer<vtkPolyData>::New();
-    surface->SetPoints(worldPoints);
-    surface->SetPolys(cells);
-    return surface;
-}
-
-/// Runs the filter with meshio's progress forwarding and error capture
-/// (meshio::detail::runAlgorithm); returns a copy of its output (so the
-/// filter and its input can go). Throws CancelledError when cancelled and
-/// FormatError when the filter reports an error.
-vtkSmartPointer<vtkPolyData> runFilter(vtkPolyDataAlgorithm* filter, const Progress& progress,
-                                       std::string_view stage) {
-    progress.report(0.0, stage);
-    meshio::detail::runAlgorithm(filter, {}, "demo surface", progress, 0.0, 1.0,
-                                 std::string(stage));
-    progress.report(1.0, stage);
-    auto output = vtkSmartPointer<vtkPolyData>::New();
-    output->ShallowCopy(filter->GetOutput());
-    return output;
-}
-
-/// Keeps only the connected component with the most triangles. The tubes are
-/// joined by construction; anything else flying edges finds can only be a
-/// speck a voxel or two wide (sampling of a thin tube or of a blend).
-void keepLargestComponent(scene::Mesh& mesh) {
-    const std::size_t vertexCount = mesh.positions.size();
-    std::vector<std::uint32_t> parent(vertexCount);
-    for (std::uint32_t v = 0; v < vertexCount; ++v) {
-        parent[v] = v;
-    }
-    const auto find = [&](std::uint32_t v) {
-        while (parent[v] != v) {
-            parent[v] = parent[parent[v]];
-            v = parent[v];
-        }
-        return v;
-    };
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        const std::uint32_t a = find(mesh.indices[t]);
-        parent[find(mesh.indices[t + 1])] = a;
-        parent[find(mesh.indices[t + 2])] = a;
-    }
-    std::vector<std::size_t> triangles(vertexCount, 0);
-    for (std::size_t t = 0; t < mesh.indices.size(); t += 3) {
-        ++triangles[find(mesh.indices[t])];
-    }
-    const auto largest = static_cast<std::uint32_t>(
-        std::max_element(triangles.begin(), triangles.end()) - triangles.begin());
-    if (triangles[largest] * 3 == mesh.indices.size()) {
-        return;  // one component
-    }
-    std::vector<std::uint32_t> newIndex(vertexCount, std::numeric_limits<std::uint32_t>::max());
-    std::vector<glm::vec3> positions;
-    std::vector<glm::vec3> normals;
-    std::vector<std::uint32_t> indices;
-    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
-        if (find(mesh.indices[t]) != largest) {
-            continue;
-        }
-        for (std::size_t k = 0; k < 3; ++k) {
-            const std::uint32_t v = mesh.indices[t + k];
-            if (newIndex[v] == std::numeric_limits<std::uint32_t>::max()) {
-                newIndex[v] = static_cast<std::uint32_t>(positions.size());
-                positions.push_back(mesh.positions[v]);
-                normals.push_back(mesh.normals[v]);
-            }
-            indices.push_back(newIndex[v]);
-        }
-    }
-    mesh.positions = std::move(positions);
-    mesh.normals = std::move(normals);
-    mesh.indices = std::move(indices);
+    return true;
 }
 
 /// Everything one extraction at a voxel size needs and makes; the pieces and
@@ -606,7 +357,7 @@ struct Extraction {
 
 Extraction extractAt(const VesselTree& tree, double spacing, const Progress& progress) {
     const Grid grid = makeGrid(tree, spacing);
-    if (grid.tooLarge()) {
+    if (tooLarge(grid)) {
         throw InvalidArgumentError(
             "vessel surface: voxel size " + std::to_string(spacing) + " mm needs a grid of " +
             std::to_string(grid.nx) + " x " + std::to_string(grid.ny) + " x " +
@@ -614,12 +365,18 @@ Extraction extractAt(const VesselTree& tree, double spacing, const Progress& pro
             std::to_string(static_cast<long long>(kMaxVoxels)) + " voxels or " +
             std::to_string(kMaxAxisVoxels) + " along an axis; use a larger voxel size");
     }
-    const auto band = static_cast<float>(kBandVoxels * spacing);
+    const auto band = static_cast<float>(detail::kBandVoxels * spacing);
     Extraction extraction;
     extraction.pieces = makePieces(tree, spacing);
     extraction.bins = makeBins(grid, extraction.pieces, static_cast<double>(band));
-    extraction.surface = extractSurface(grid, extraction.pieces, extraction.bins,
-                                        makeShapes(tree, spacing), band, progress);
+    const std::vector<SegmentShape> shapes = makeShapes(tree, spacing);
+    extraction.surface = detail::extractZeroLevel(
+        grid,
+        [&](int z0, int z1, float* values) {
+            return sampleSlab(grid, extraction.pieces, extraction.bins, shapes, band, z0, z1,
+                              values, progress.stopToken());
+        },
+        progress);
     if (extraction.surface->GetNumberOfPolys() == 0) {
         throw Error("vessel surface: the distance field has no zero level (empty surface)");
     }
@@ -657,34 +414,10 @@ scene::Mesh buildVesselSurface(const VesselTree& tree, const DemoTreeOptions& op
     progress.report(kExtractEnds.back(), "Extracting surface");
 
     if (options.smooth) {
-        auto smoother = vtkSmartPointer<vtkWindowedSincPolyDataFilter>::New();
-        smoother->SetInputData(surface);
-        smoother->SetNumberOfIterations(kSmoothingIterations);
-        smoother->SetPassBand(kSmoothingPassBand);
-        smoother->BoundarySmoothingOff();
-        smoother->FeatureEdgeSmoothingOff();
-        smoother->NonManifoldSmoothingOn();
-        smoother->NormalizeCoordinatesOn();
-        surface =
-            runFilter(smoother, progress.sub(kExtractEnds.back(), kSmoothEnd), "Smoothing surface");
+        surface = detail::smoothSurface(surface, progress.sub(kExtractEnds.back(), kSmoothEnd));
     }
-
-    auto normals = vtkSmartPointer<vtkPolyDataNormals>::New();
-    normals->SetInputData(surface);
-    normals->SplittingOff();
-    normals->ConsistencyOn();
-    normals->AutoOrientNormalsOff();
-    normals->ComputePointNormalsOn();
-    normals->ComputeCellNormalsOff();
-    surface = runFilter(normals, progress.sub(kSmoothEnd, kNormalsEnd), "Computing normals");
-
-    scene::Mesh mesh = meshio::detail::meshFromPolyData(surface, {});
-    surface = nullptr;
-    if (!mesh.pointArrays.empty() || !mesh.cellArrays.empty()) {
-        throw Error("vessel surface: internal error, unexpected data arrays on the surface");
-    }
-    keepLargestComponent(mesh);
-    scene::orientOutward(mesh);
+    scene::Mesh mesh =
+        detail::finishSurface(std::move(surface), progress.sub(kSmoothEnd, kNormalsEnd));
     mesh.name = "vessel tree";
     detail::addFlowFields(mesh, tree, extraction.pieces, extraction.bins,
                           progress.sub(kNormalsEnd, 1.0));

@@ -5,10 +5,10 @@
 #include <cmath>
 #include <cstdint>
 #include <numbers>
-#include <random>
 #include <string>
 #include <tuple>
 
+#include "PhantomJitter.h"
 #include "vv/core/Error.h"
 
 namespace vv::demo {
@@ -97,27 +97,6 @@ std::pair<int, int> ringsAndSides(const TubePhantomOptions& o, double length) {
     return {rings, sides};
 }
 
-class Jitter {
-  public:
-    Jitter(std::uint32_t seed, double amplitude) : random_(seed), amplitude_(amplitude) {}
-    glm::dvec3 next() {
-        if (amplitude_ == 0.0) {
-            return glm::dvec3(0.0);
-        }
-        return {unit(), unit(), unit()};
-    }
-
-  private:
-    // From the generator's raw output, so the same seed gives the same mesh
-    // with every standard library.
-    double unit() {
-        const double u = static_cast<double>(random_()) / 4294967295.0;
-        return amplitude_ * (2.0 * u - 1.0);
-    }
-    std::mt19937 random_;
-    double amplitude_;
-};
-
 const char* shapeName(TubeShape shape) {
     switch (shape) {
         case TubeShape::Cylinder:
@@ -133,7 +112,7 @@ const char* shapeName(TubeShape shape) {
 scene::Mesh tubeMesh(const TubePhantomOptions& o, double length) {
     const auto [rings, sidesFound] = ringsAndSides(o, length);
     const int sides = sidesFound;  // a plain variable: lambdas capture it
-    Jitter jitter(o.seed, o.jitterFraction * o.radiusMm);
+    detail::PhantomJitter jitter(o.seed, o.jitterFraction * o.radiusMm);
     scene::Mesh mesh;
     mesh.name = shapeName(o.shape);
     auto add = [&](const glm::dvec3& p) {
