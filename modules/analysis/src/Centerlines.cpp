@@ -69,6 +69,9 @@ struct ResolvedEnd {
     EndPoint end;
     std::uint32_t vertex = kNone;  ///< where the minimal path ends
     int loop = -1;                 ///< the boundary loop it is the centre of
+    /// A tip's Voronoi vertex farthest along its vessel, in its cap (`vertex`
+    /// is cut back from it); kNone for other ends.
+    std::uint32_t capVertex = kNone;
 };
 
 /// The pole of the surface vertex nearest to `p` among those of `triangle`
@@ -155,6 +158,7 @@ ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceIndex& surface, const Pat
     ResolvedEnd r;
     r.end.kind = EndPoint::Kind::Tip;
     r.vertex = path[cut];
+    r.capVertex = tip;
     r.end.radiusMm = g.radii[path[cut]];
     const glm::dvec3 from = g.centres[path[cut]];
     const glm::dvec3 along = from - g.centres[path[back]];
@@ -471,6 +475,11 @@ std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiG
         return targets;
     }
     std::vector<std::vector<std::uint32_t>> known;
+    // A source at a closed tip: its own cap is covered, as a found tip's is,
+    // or the medial axis' spikes over a rough cap read as short vessels.
+    if (source.capVertex != kNone && tree.reaches(source.capVertex)) {
+        known.push_back(tree.pathTo(source.capVertex));
+    }
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
         if (static_cast<int>(i) == source.loop || s.loops[i].hole) {
             continue;
