@@ -21,7 +21,11 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <optional>
+#include <stop_token>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 #include "AnalysisAgreement.h"
@@ -30,6 +34,7 @@
 #include "vv/analysis/Sections.h"
 #include "vv/core/Error.h"
 #include "vv/core/ProcessMemory.h"
+#include "vv/core/Progress.h"
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/BifurcationPhantom.h"
 #include "vv/demo/DemoCtSeries.h"
@@ -61,14 +66,61 @@ struct Analysed {
     double sectionSeconds = 0.0;
 };
 
-Analysed analyse(const vv::scene::Mesh& mesh) {
+/// The time from each stage the analysis reports (its progress messages)
+/// to the next.
+class StageClock {
+  public:
+    /// A progress report of `stage`: a new stage starts when it changes.
+    void record(std::string_view stage) {
+        if (stages_.empty() || stages_.back().first != stage) {
+            lap();
+            stages_.emplace_back(std::string(stage), 0.0);
+        }
+    }
+    /// Ends the current stage.
+    void lap() {
+        const auto now = Clock::now();
+        if (!stages_.empty()) {
+            stages_.back().second += std::chrono::duration<double>(now - last_).count();
+        }
+        last_ = now;
+    }
+    [[nodiscard]] const std::vector<std::pair<std::string, double>>& stages() const noexcept {
+        return stages_;
+    }
+
+  private:
+    std::vector<std::pair<std::string, double>> stages_;
+    Clock::time_point last_ = Clock::now();
+};
+
+/// analyseVessels(), timed: the centrelines up to the first section, the
+/// sections from there.
+Analysed analyse(const vv::scene::Mesh& mesh, StageClock* clock = nullptr) {
     Analysed a;
-    auto start = Clock::now();
-    a.tree = vv::analysis::computeCenterlines(mesh);
-    a.centrelineSeconds = secondsSince(start);
-    start = Clock::now();
-    a.sections = vv::analysis::computeSections(mesh, a.tree);
-    a.sectionSeconds = secondsSince(start);
+    const auto start = Clock::now();
+    std::optional<Clock::time_point> sectionsStart;
+    const vv::Progress progress(
+        [&](double fraction, std::string_view stage) {
+            if (!sectionsStart && stage == "Cutting the sections") {
+                sectionsStart = Clock::now();
+            }
+            if (clock != nullptr) {
+                clock->record(stage);
+            }
+            static_cast<void>(fraction);
+        },
+        std::stop_token());
+    vv::analysis::VesselAnalysis analysed = vv::analysis::analyseVessels(mesh, {}, progress);
+    const auto end = Clock::now();
+    a.tree = std::move(analysed.tree);
+    a.sections = std::move(analysed.sections);
+    const auto split = sectionsStart.value_or(end);
+    a.centrelineSeconds = std::chrono::duration<double>(split - start).count();
+    a.sectionSeconds = std::chrono::duration<double>(end - split).count();
+    if (clock != nullptr) {
+        clock->lap();
+    }
     return a;
 }
 
@@ -211,7 +263,8 @@ void demoTree() {
     const auto mesh = vv::demo::buildVesselSurface(truth, options);
     vv::resetPeakResident();
     const auto before = vv::residentKiB().value_or(0);
-    const Analysed analysed = analyse(mesh);
+    StageClock clock;
+    const Analysed analysed = analyse(mesh, &clock);
     const auto peak = vv::peakResidentKiB().value_or(0);
     std::printf(
         "| demo tree | triangles | segments / leaves built | leaves found | other ends | "
@@ -224,6 +277,13 @@ void demoTree() {
     std::printf(" | %.2f | %.2f | %.0f | %.1f |\n", analysed.centrelineSeconds,
                 analysed.sectionSeconds,
                 static_cast<double>(peak > before ? peak - before : 0) / 1024.0, meshMiB(mesh));
+    for (const auto& note : analysed.tree.notes) {
+        std::printf("\nnote: %s\n", note.c_str());
+    }
+    std::printf("\n| stage (as the progress names it) | seconds |\n|---|---|\n");
+    for (const auto& [stage, seconds] : clock.stages()) {
+        std::printf("| %s | %.2f |\n", stage.c_str(), seconds);
+    }
 }
 
 /// The synthetic CTA (the demo tree voxelised, vv/demo/DemoCtSeries.h)

@@ -341,8 +341,9 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
     }
     const scene::Scene scene = segmentation::loadSceneSource(c.input, c.source);
     const scene::Mesh& mesh = analysedSurface(scene, c.input, err);
-    const analysis::CenterlineTree tree = analysis::computeCenterlines(mesh, c.options);
-    const auto sections = analysis::computeSections(mesh, tree);
+    const analysis::VesselAnalysis analysed = analysis::analyseVessels(mesh, c.options);
+    const analysis::CenterlineTree& tree = analysed.tree;
+    const auto& sections = analysed.sections;
     for (const auto& note : tree.notes) {
         err << "vesselview-cli: note: " << note << "\n";
     }

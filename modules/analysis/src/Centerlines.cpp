@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "AnalysisSteps.h"
 #include "CurveGeometry.h"
 #include "MinimalPaths.h"
 #include "PreparedSurface.h"
@@ -129,6 +130,31 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const Surf
     }
     r.end.position = g.centres[r.vertex];
     r.end.radiusMm = g.radii[r.vertex];
+    // The sphere touching the surface at the nearest point exactly: centred
+    // halfway to the opposite wall along the inward normal there (the
+    // diagram's pole may be a sample's, up to a quarter radius away), and the
+    // diagram's vertex nearest that centre for the path.
+    const detail::Triangle& t = s.triangles[nearest.triangle];
+    const glm::dvec3 normal =
+        glm::cross(s.positions[t[1]] - s.positions[t[0]], s.positions[t[2]] - s.positions[t[0]]);
+    if (glm::dot(normal, normal) > 0.0) {
+        const glm::dvec3 inward = -glm::normalize(normal);
+        const double inset = 1e-6 * s.diagonalMm;
+        const auto opposite = surface.firstHit(nearest.point + inset * inward, inward);
+        if (opposite && glm::length(*opposite - nearest.point) < 4.0 * r.end.radiusMm) {
+            const glm::dvec3 centre = 0.5 * (nearest.point + *opposite);
+            r.end.position = centre;
+            r.end.radiusMm = 0.5 * glm::length(*opposite - nearest.point);
+            double best = glm::length(g.centres[r.vertex] - centre);
+            for (std::uint32_t v = 0; v < g.size(); ++v) {
+                const double d = glm::length(g.centres[v] - centre);
+                if (d < best) {
+                    best = d;
+                    r.vertex = v;
+                }
+            }
+        }
+    }
     // Farther from the surface than the vessel is wide: not this piece's point.
     if (nearest.distance > 3.0 * r.end.radiusMm + 1.0) {
         fail(s, std::string("the ") + role + " " + pointText(point) + " is " +
@@ -262,15 +288,36 @@ CenterlinePoint PathProfile::at(double s) const {
     return p;
 }
 
+/// `vertices` without the Voronoi vertices at either end that lie past the
+/// end point (a given end between two samples' vertices): no hook back.
+std::vector<std::uint32_t> trimmedAtTheEnds(const VoronoiGraph& g, const ResolvedEnd& source,
+                                            const ResolvedEnd& target,
+                                            std::vector<std::uint32_t> vertices) {
+    const auto past = [&](std::uint32_t vertex, std::uint32_t inner, const glm::dvec3& end) {
+        return glm::dot(g.centres[vertex] - g.centres[inner], end - g.centres[vertex]) < 0.0;
+    };
+    while (vertices.size() > 2 &&
+           past(vertices.back(), vertices[vertices.size() - 2], target.end.position)) {
+        vertices.pop_back();
+    }
+    std::size_t first = 0;
+    while (vertices.size() - first > 2 &&
+           past(vertices[first], vertices[first + 1], source.end.position)) {
+        ++first;
+    }
+    vertices.erase(vertices.begin(), vertices.begin() + static_cast<std::ptrdiff_t>(first));
+    return vertices;
+}
+
 PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
                         const ResolvedEnd& source, const ResolvedEnd& target,
                         const std::vector<std::uint32_t>& vertices, double step) {
     PathProfile profile;
-    profile.vertices = vertices;
+    profile.vertices = trimmedAtTheEnds(g, source, target, vertices);
     // The raw polyline: source end, the Voronoi centres, target end.
     std::vector<glm::dvec3> raw{source.end.position};
     std::vector<double> rawRadius{source.end.radiusMm};
-    for (const std::uint32_t v : vertices) {
+    for (const std::uint32_t v : profile.vertices) {
         raw.push_back(g.centres[v]);
         rawRadius.push_back(g.radii[v]);
     }
@@ -504,9 +551,46 @@ CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptio
     validate(options);
     progress.report(0.0, "Preparing the surface");
     PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
+    // The diagram first: its tetrahedralisation is freed before the index is built.
+    const VoronoiGraph g = detail::diagramOf(s, progress);
     const SurfaceIndex surface(s);
-    const VoronoiGraph g = detail::buildVoronoiGraph(s, progress.sub(0.05, 0.6));
+    return detail::centerlinesOf(s, g, surface, options, progress);
+}
+
+VesselAnalysis analyseVessels(const scene::Mesh& mesh, const CenterlineOptions& options,
+                              const Progress& progress) {
+    validate(options);
+    progress.report(0.0, "Preparing the surface");
+    PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
+    const VoronoiGraph g = detail::diagramOf(s, progress);
+    const SurfaceIndex surface(s);
+    VesselAnalysis analysis;
+    analysis.tree = detail::centerlinesOf(s, g, surface, options, progress);
+    analysis.sections = detail::sectionsOf(s, surface, analysis.tree, progress);
+    return analysis;
+}
+
+namespace detail {
+
+VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
+    const detail::VoronoiSamples samples = detail::chooseVoronoiSamples(s, progress);
+    if (samples.reduced) {
+        s.notes.push_back(
+            "the surface is finer than its vessels need: the Voronoi diagram was built from " +
+            std::to_string(samples.kept.size()) + " of its " +
+            std::to_string(s.cappedPositions.size()) +
+            " points, one per quarter of the local radius (each left-out point within " +
+            fixedText(samples.largestGapMm, 2) +
+            " mm of one kept; the chords between kept points lie within 0.8 % of the radius of "
+            "the wall); the sections use every point");
+    }
+    VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     markHoles(s, g);
+    return g;
+}
+
+CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const SurfaceIndex& surface,
+                             const CenterlineOptions& options, const Progress& progress) {
     progress.report(0.6, "Finding the vessels' ends");
 
     const ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")
@@ -559,5 +643,7 @@ CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptio
     progress.report(1.0, "Centrelines done");
     return result;
 }
+
+}  // namespace detail
 
 }  // namespace vv::analysis

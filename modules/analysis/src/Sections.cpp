@@ -11,9 +11,11 @@
 #include <unordered_map>
 #include <utility>
 
+#include "AnalysisSteps.h"
 #include "ContourSize.h"
 #include "PreparedSurface.h"
 #include "SurfaceIndex.h"
+#include "vv/core/Parallel.h"
 
 namespace vv::analysis {
 namespace {
@@ -226,32 +228,54 @@ bool EndZones::contains(const Branch& branch, std::size_t i) const noexcept {
 std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
                                                        const CenterlineTree& tree,
                                                        const Progress& progress) {
-    std::vector<std::vector<CrossSection>> sections(tree.branches.size());
     if (tree.branches.empty()) {
-        return sections;
+        return {};
     }
     const PreparedSurface s =
         detail::prepareSurface(mesh, tree.branches.front().points.front().position, progress);
     const SurfaceIndex index(s);
-    std::size_t total = 0;
-    for (const Branch& b : tree.branches) {
-        total += b.points.size();
-    }
-    std::size_t done = 0;
+    return detail::sectionsOf(s, index, tree, progress);
+}
+
+std::vector<std::vector<CrossSection>> detail::sectionsOf(const PreparedSurface& s,
+                                                          const SurfaceIndex& index,
+                                                          const CenterlineTree& tree,
+                                                          const Progress& progress) {
+    std::vector<std::vector<CrossSection>> sections(tree.branches.size());
+    // Every (branch, point) as one job: the sections are independent, cut on
+    // every core (the index is only read) in batches, progress between them.
+    std::vector<std::pair<std::size_t, std::size_t>> jobs;
+    std::vector<double> steps(tree.branches.size(), 0.5);
+    std::vector<EndZones> zones(tree.branches.size());
     for (std::size_t b = 0; b < tree.branches.size(); ++b) {
         const Branch& branch = tree.branches[b];
-        const EndZones zones = endZones(branch);
-        const double step = branch.points.size() > 1
-                                ? branch.points[1].abscissaMm - branch.points[0].abscissaMm
-                                : 0.5;
-        for (std::size_t i = 0; i < branch.points.size(); ++i) {
-            sections[b].push_back(sectionAt(s, index, branch, static_cast<int>(b), i, step));
-            sections[b].back().inEndZone = zones.contains(branch, i);
-            if (++done % 64 == 0) {
-                progress.report(static_cast<double>(done) / static_cast<double>(total),
-                                "Cutting the sections");
-            }
+        sections[b].resize(branch.points.size());
+        zones[b] = endZones(branch);
+        if (branch.points.size() > 1) {
+            steps[b] = branch.points[1].abscissaMm - branch.points[0].abscissaMm;
         }
+        for (std::size_t i = 0; i < branch.points.size(); ++i) {
+            jobs.emplace_back(b, i);
+        }
+    }
+    constexpr std::size_t kBatch = 512;
+    progress.report(0.0, "Cutting the sections");
+    for (std::size_t first = 0; first < jobs.size(); first += kBatch) {
+        const std::size_t last = std::min(jobs.size(), first + kBatch);
+        parallelFor(
+            static_cast<long>(first), static_cast<long>(last), 16,
+            [&](long begin, long end) {
+                for (long j = begin; j < end; ++j) {
+                    const auto [b, i] = jobs[static_cast<std::size_t>(j)];
+                    const Branch& branch = tree.branches[b];
+                    CrossSection& section = sections[b][i];
+                    section = sectionAt(s, index, branch, static_cast<int>(b), i, steps[b]);
+                    section.inEndZone = zones[b].contains(branch, i);
+                }
+            },
+            progress.stopToken());
+        progress.report(static_cast<double>(last) / static_cast<double>(jobs.size()),
+                        "Cutting the sections");
     }
     return sections;
 }

@@ -47,10 +47,10 @@ std::optional<glm::dvec3> circumcentre(const glm::dvec3& a, const glm::dvec3& b,
     return a + offset;
 }
 
-Delaunay triangulate(const PreparedSurface& s) {
+Delaunay triangulate(const PreparedSurface& s, const std::vector<std::uint32_t>& kept) {
     std::vector<std::pair<Kernel::Point_3, std::uint32_t>> points;
-    points.reserve(s.cappedPositions.size());
-    for (std::uint32_t i = 0; i < s.cappedPositions.size(); ++i) {
+    points.reserve(kept.size());
+    for (const std::uint32_t i : kept) {
         const glm::dvec3& p = s.cappedPositions[i];
         points.emplace_back(Kernel::Point_3(p.x, p.y, p.z), i);
     }
@@ -59,9 +59,10 @@ Delaunay triangulate(const PreparedSurface& s) {
 
 }  // namespace
 
-VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const Progress& progress) {
+VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& samples,
+                               const Progress& progress) {
     progress.report(0.0, "Tetrahedralising the surface");
-    Delaunay delaunay = triangulate(s);
+    Delaunay delaunay = triangulate(s, samples.kept);
     progress.report(0.5, "Finding the inside of the surface");
     VoronoiGraph graph;
     graph.poles.assign(s.cappedPositions.size(), kOutside);
@@ -105,6 +106,13 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const Progress& progres
     if (graph.centres.empty()) {
         throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") +
                                           "the surface encloses no space (no inside was found)");
+    }
+    // A vertex left out of the diagram has its representative's pole.
+    for (std::size_t v = 0; v < graph.poles.size(); ++v) {
+        const std::uint32_t r = samples.representative[v];
+        if (r != v) {
+            graph.poles[v] = graph.poles[r];
+        }
     }
     progress.report(0.8, "Joining the Voronoi diagram");
     graph.offsets.assign(graph.centres.size() + 1, 0);

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "PreparedSurface.h"
+#include "VoronoiSamples.h"
 
 namespace vv::analysis::detail {
 
@@ -28,12 +29,14 @@ struct VoronoiGraph {
     [[nodiscard]] std::size_t size() const noexcept { return centres.size(); }
 };
 
-/// The diagram of `surface` (its capped points and their outward normals):
+/// The diagram of `surface`'s capped points chosen by `samples` (and their
+/// outward normals); a left-out point's pole is its representative's:
 /// a tetrahedron counts as inside when its circumcentre lies behind the
 /// tangent plane of each of its four points (VMTK's test), and its
 /// circumradius is finite and below the surface's diagonal. Throws
 /// AnalysisError when nothing is inside; CancelledError on a stop.
 [[nodiscard]] VoronoiGraph buildVoronoiGraph(const PreparedSurface& surface,
+                                             const VoronoiSamples& samples,
                                              const Progress& progress);
 
 }  // namespace vv::analysis::detail

@@ -92,4 +92,18 @@ struct EndZones {
                                                                      const CenterlineTree& tree,
                                                                      const Progress& progress = {});
 
+/// A surface's centrelines and their sections.
+struct VesselAnalysis {
+    CenterlineTree tree;
+    /// sections[b][i]: branch b's point i (computeSections()).
+    std::vector<std::vector<CrossSection>> sections;
+};
+
+/// computeCenterlines() and computeSections() with the surface prepared
+/// (welded, cleaned, indexed) once for both: the same results, sooner.
+/// Throws as they do.
+[[nodiscard]] VesselAnalysis analyseVessels(const scene::Mesh& mesh,
+                                            const CenterlineOptions& options = {},
+                                            const Progress& progress = {});
+
 }  // namespace vv::analysis

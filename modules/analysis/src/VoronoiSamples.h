@@ -1,0 +1,46 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// Private to vv::analysis: which surface points the Voronoi diagram is built
+// from. A surface much finer than its vessels need (a 1M-triangle aorta: a
+// hundred points around a 20 mm lumen) costs the Delaunay step time and
+// memory and buys the medial axis nothing; where a vessel's wall is sampled
+// more densely than kSpacingPerRadius of its radius, one point per cell of
+// that size is kept. The sections and the ends still use every point.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "PreparedSurface.h"
+#include "vv/core/Progress.h"
+
+namespace vv::analysis::detail {
+
+/// The spacing kept, in local radii: a quarter radius puts 25 points around a
+/// lumen; the chords between them lie at most kSpacingPerRadius^2 / 8 of the
+/// radius (0.8 %) inside the circle through them.
+inline constexpr double kSpacingPerRadius = 0.25;
+
+struct VoronoiSamples {
+    /// The capped surface's vertices to triangulate, ascending; every one
+    /// when the surface is nowhere finer than needed (`reduced` false).
+    std::vector<std::uint32_t> kept;
+    /// Per capped vertex: the kept vertex standing for it (itself when kept).
+    std::vector<std::uint32_t> representative;
+    bool reduced = false;
+    /// The largest distance from a left-out vertex to its representative, mm.
+    double largestGapMm = 0.0;
+};
+
+/// Chooses the samples of `surface`. The local radius at a vertex is the
+/// inverse of the largest curvature its edges see (how fast the normal,
+/// averaged four times over its neighbours, turns along them), the smallest over the vertex and its
+/// neighbours (a rough surface curves more, and keeps more points); the cell is kSpacingPerRadius
+/// of it (where that is at least twice the vertex's shortest edge, and its own normal is within 15
+/// degrees of the averaged one, not on a rough wall; else the vertex is kept), rounded down to a
+/// power of two of the finest cell; boundary loops and cap centres are always kept. Keeps
+/// everything when that would leave out less than a fifth of the points. Deterministic;
+/// CancelledError on a stop.
+[[nodiscard]] VoronoiSamples chooseVoronoiSamples(const PreparedSurface& surface,
+                                                  const Progress& progress);
+
+}  // namespace vv::analysis::detail

@@ -1,0 +1,100 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// A surface much finer than its vessel needs: the Voronoi diagram is built
+// from fewer points (one per quarter radius), says so, and the centreline,
+// its length, a given end and the sections keep their accuracy; a rough
+// (jittered) surface keeps every point; analyseVessels gives what
+// computeCenterlines and computeSections give.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "TubeOptions.h"
+#include "vv/analysis/Centerlines.h"
+#include "vv/analysis/Sections.h"
+#include "vv/demo/TubePhantom.h"
+
+namespace vv::analysis {
+namespace {
+
+bool reducedNote(const CenterlineTree& tree) {
+    for (const auto& note : tree.notes) {
+        if (note.find("the Voronoi diagram was built from") != std::string::npos) {
+            return true;
+        }
+    }
+    return false;
+}
+
+double worstAxisDistance(const CenterlineTree& tree, const demo::TubePhantom& truth) {
+    double worst = 0.0;
+    const double r = truth.options.radiusMm;
+    for (const auto& branch : tree.branches) {
+        for (const auto& p : branch.points) {
+            const auto [distance, s] = truth.distanceToAxis(p.position);
+            if (s > r && s < truth.lengthMm - r) {
+                worst = std::max(worst, distance);
+            }
+        }
+    }
+    return worst;
+}
+
+// A 10 mm cylinder in 300k triangles: some 150 points around its lumen.
+TEST(VoronoiSampling, ANeedlesslyFineSurfaceIsSampledAndStaysAccurate) {
+    const auto truth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 10.0, 300'000));
+    CenterlineOptions options;
+    options.targets = {glm::dvec3(0.0, -11.0, 150.0)};  // 1 mm outside the wall at z = 150
+    const VesselAnalysis analysed = analyseVessels(truth.mesh, options);
+    const CenterlineTree& tree = analysed.tree;
+    EXPECT_TRUE(reducedNote(tree));
+    ASSERT_EQ(tree.branches.size(), 1U);
+    EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
+    // The given end: the sphere touching the wall there, exactly, not a
+    // sample's pole a quarter radius away.
+    ASSERT_EQ(tree.ends.size(), 2U);
+    EXPECT_NEAR(tree.ends[1].position.z, 150.0, 0.1);
+    EXPECT_NEAR(tree.ends[1].radiusMm, 10.0, 0.1);
+    EXPECT_NEAR(tree.branches[0].lengthMm, 150.0, 0.01 * 150.0);
+    // The sections are cut from every point: the 300k surface's polygon.
+    int measured = 0;
+    for (const CrossSection& s : analysed.sections[0]) {
+        if (s.measuresTheVessel()) {
+            EXPECT_NEAR(s.equivalentDiameterMm, 20.0, 0.01 * 20.0);
+            ++measured;
+        }
+    }
+    EXPECT_GT(measured, 200);
+}
+
+TEST(VoronoiSampling, ARoughSurfaceKeepsEveryPoint) {
+    const auto truth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 10.0, 300'000, 0.02));
+    const CenterlineTree tree = computeCenterlines(truth.mesh);
+    EXPECT_FALSE(reducedNote(tree));
+    EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
+}
+
+TEST(VoronoiSampling, AnalyseVesselsGivesWhatTheTwoStepsGive) {
+    const auto truth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Stenosis, 5.0, 40'000));
+    const VesselAnalysis together = analyseVessels(truth.mesh);
+    const CenterlineTree tree = computeCenterlines(truth.mesh);
+    const auto sections = computeSections(truth.mesh, tree);
+    ASSERT_EQ(together.tree.branches.size(), tree.branches.size());
+    ASSERT_EQ(together.sections.size(), sections.size());
+    for (std::size_t b = 0; b < sections.size(); ++b) {
+        ASSERT_EQ(together.tree.branches[b].points.size(), tree.branches[b].points.size());
+        ASSERT_EQ(together.sections[b].size(), sections[b].size());
+        for (std::size_t i = 0; i < sections[b].size(); ++i) {
+            EXPECT_EQ(together.tree.branches[b].points[i].position,
+                      tree.branches[b].points[i].position);
+            EXPECT_EQ(together.sections[b][i].status, sections[b][i].status);
+            EXPECT_EQ(together.sections[b][i].areaMm2, sections[b][i].areaMm2);
+            EXPECT_EQ(together.sections[b][i].inEndZone, sections[b][i].inEndZone);
+        }
+    }
+}
+
+}  // namespace
+}  // namespace vv::analysis
