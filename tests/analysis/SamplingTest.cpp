@@ -11,6 +11,7 @@
 #include "TubeOptions.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
+#include "vv/core/Error.h"
 #include "vv/demo/TubePhantom.h"
 
 namespace vv::analysis {
@@ -94,6 +95,45 @@ TEST(VoronoiSampling, AnalyseVesselsGivesWhatTheTwoStepsGive) {
             EXPECT_EQ(together.sections[b][i].inEndZone, sections[b][i].inEndZone);
         }
     }
+}
+
+// More triangles than the analysis takes (a 10M-triangle export, here 60k
+// against a limit of 15k): the points are merged in cubes, a note says how
+// far they moved, and the measures keep within what that allows.
+TEST(SurfaceCoarsening, AMeshOverTheLimitIsCoarsenedAndSaysSo) {
+    const auto truth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 5.0, 60'000));
+    CenterlineOptions options;
+    options.maxTriangles = 15'000;
+    const VesselAnalysis analysed = analyseVessels(truth.mesh, options);
+    std::string note;
+    for (const auto& n : analysed.tree.notes) {
+        if (n.find("points were merged in cubes of") != std::string::npos) {
+            note = n;
+        }
+    }
+    ASSERT_FALSE(note.empty());
+    EXPECT_NE(note.find(std::to_string(truth.mesh.triangleCount()) + " triangles"),
+              std::string::npos)
+        << note;
+    ASSERT_EQ(analysed.tree.branches.size(), 1U);
+    EXPECT_LT(worstAxisDistance(analysed.tree, truth), 0.02 * 5.0);
+    EXPECT_NEAR(analysed.tree.branches[0].lengthMm, truth.lengthMm, 0.01 * truth.lengthMm);
+    int measured = 0;
+    for (const CrossSection& s : analysed.sections[0]) {
+        if (s.measuresTheVessel()) {
+            EXPECT_NEAR(s.equivalentDiameterMm, 10.0, 0.03 * 10.0);
+            ++measured;
+        }
+    }
+    EXPECT_GT(measured, 100);
+    // Under the limit, nothing is merged.
+    options.maxTriangles = 100'000;
+    for (const auto& n : analyseVessels(truth.mesh, options).tree.notes) {
+        EXPECT_EQ(n.find("merged in cubes"), std::string::npos) << n;
+    }
+    options.maxTriangles = 999;
+    EXPECT_THROW(static_cast<void>(computeCenterlines(truth.mesh, options)), InvalidArgumentError);
 }
 
 }  // namespace

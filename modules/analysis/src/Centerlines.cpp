@@ -495,6 +495,9 @@ void validate(const CenterlineOptions& options) {
     if (!(options.stepMm >= 0.01 && options.stepMm <= 10.0)) {
         throw InvalidArgumentError("centrelines: the step must be in [0.01, 10] mm");
     }
+    if (options.maxTriangles < 1000) {
+        throw InvalidArgumentError("centrelines: the largest triangle count must be >= 1000");
+    }
     const auto finite = [](const glm::dvec3& p) {
         return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z);
     };
@@ -550,7 +553,8 @@ CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptio
                                   const Progress& progress) {
     validate(options);
     progress.report(0.0, "Preparing the surface");
-    PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
+    PreparedSurface s =
+        detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
     // The diagram first: its tetrahedralisation is freed before the index is built.
     const VoronoiGraph g = detail::diagramOf(s, progress);
     const SurfaceIndex surface(s);
@@ -561,7 +565,8 @@ VesselAnalysis analyseVessels(const scene::Mesh& mesh, const CenterlineOptions& 
                               const Progress& progress) {
     validate(options);
     progress.report(0.0, "Preparing the surface");
-    PreparedSurface s = detail::prepareSurface(mesh, options.source, progress);
+    PreparedSurface s =
+        detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
     const VoronoiGraph g = detail::diagramOf(s, progress);
     const SurfaceIndex surface(s);
     VesselAnalysis analysis;

@@ -13,6 +13,7 @@
 #include <utility>
 
 #include "vv/analysis/AnalysisError.h"
+#include "vv/core/NumberText.h"
 
 namespace vv::analysis::detail {
 namespace {
@@ -54,6 +55,46 @@ struct PositionHash {
 };
 
 /// Points at the same position become one; returns old index -> new index.
+/// Points in the same cube of side `cell` become the cube's first point;
+/// returns old index -> new index.
+std::vector<std::uint32_t> cluster(const scene::Mesh& mesh, double cell,
+                                   std::vector<glm::dvec3>& positions) {
+    struct CellHash {
+        std::size_t operator()(const glm::i64vec3& c) const noexcept {
+            return (static_cast<std::size_t>(c.x) * 73856093U) ^
+                   (static_cast<std::size_t>(c.y) * 19349663U) ^
+                   (static_cast<std::size_t>(c.z) * 83492791U);
+        }
+    };
+    std::unordered_map<glm::i64vec3, std::uint32_t, CellHash> seen;
+    seen.reserve(mesh.positions.size() / 2);
+    std::vector<std::uint32_t> map(mesh.positions.size());
+    for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
+        const glm::dvec3 p(mesh.positions[i]);
+        const glm::i64vec3 key(glm::floor(p / cell));
+        const auto [it, added] =
+            seen.try_emplace(key, static_cast<std::uint32_t>(positions.size()));
+        if (added) {
+            positions.push_back(p);
+        }
+        map[i] = it->second;
+    }
+    return map;
+}
+
+/// The cube side that leaves about `maxTriangles` triangles of `mesh`: a
+/// surface of area A cut into cubes of side c has about 2 A / c^2 triangles.
+double clusterCell(const scene::Mesh& mesh, std::size_t maxTriangles) {
+    double area = 0.0;
+    for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+        const glm::dvec3 a(mesh.positions[mesh.indices[t]]);
+        const glm::dvec3 b(mesh.positions[mesh.indices[t + 1]]);
+        const glm::dvec3 c(mesh.positions[mesh.indices[t + 2]]);
+        area += 0.5 * glm::length(glm::cross(b - a, c - a));
+    }
+    return std::sqrt(2.0 * area / static_cast<double>(maxTriangles));
+}
+
 std::vector<std::uint32_t> weld(const scene::Mesh& mesh, std::vector<glm::dvec3>& positions) {
     std::unordered_map<PositionKey, std::uint32_t, PositionHash> seen;
     seen.reserve(mesh.positions.size());
@@ -421,14 +462,26 @@ std::string meshLabel(const PreparedSurface& surface) {
 }
 
 PreparedSurface prepareSurface(const scene::Mesh& mesh, const std::optional<glm::dvec3>& anchor,
-                               const Progress& progress) {
+                               const Progress& progress, std::size_t maxTriangles) {
     checkInput(mesh);
     PreparedSurface s;
     s.source = mesh.source;
     s.name = mesh.name;
-    const std::vector<std::uint32_t> map = weld(mesh, s.positions);
+    std::vector<std::uint32_t> map;
+    const bool coarsened = mesh.triangleCount() > maxTriangles;
+    const double cell = coarsened ? clusterCell(mesh, maxTriangles) : 0.0;
+    map = coarsened ? cluster(mesh, cell, s.positions) : weld(mesh, s.positions);
     progress.throwIfCancelled();
-    s.triangles = cleanTriangles(mesh, map, s.positions, s.notes);
+    std::vector<std::string> cleaning;
+    s.triangles = cleanTriangles(mesh, map, s.positions, coarsened ? cleaning : s.notes);
+    if (coarsened) {  // the merge's own dropped triangles are its doing, not the file's
+        s.notes.push_back("the surface's " + std::to_string(mesh.triangleCount()) +
+                          " triangles are more than the analysis needs (at most " +
+                          std::to_string(maxTriangles) + "): its points were merged in cubes of " +
+                          fixedText(cell, 3) + " mm (each moved at most " +
+                          fixedText(cell * std::sqrt(3.0), 3) + " mm), leaving " +
+                          std::to_string(s.triangles.size()) + " triangles");
+    }
     if (s.triangles.empty()) {
         fail(mesh, "the surface has no triangle with an area");
     }

@@ -52,12 +52,15 @@ struct PreparedSurface {
 };
 
 /// Prepares `mesh`. `anchor`, when given, picks the piece whose nearest
-/// vertex is nearest to it; otherwise the piece with the most triangles.
+/// vertex is nearest to it; otherwise the piece with the most triangles. A
+/// mesh of more than `maxTriangles` triangles has its points merged into
+/// cubic cells sized to leave about that many (each cell's first point
+/// stands for it), and a note says so and how far a point moved at most.
 /// Throws AnalysisError for no triangles, non-finite coordinates or indices
 /// out of range; CancelledError on a stop request.
 [[nodiscard]] PreparedSurface prepareSurface(const scene::Mesh& mesh,
                                              const std::optional<glm::dvec3>& anchor,
-                                             const Progress& progress);
+                                             const Progress& progress, std::size_t maxTriangles);
 
 /// The message prefix naming the mesh: its file, else its name.
 [[nodiscard]] std::string meshLabel(const PreparedSurface& surface);

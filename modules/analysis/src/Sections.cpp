@@ -231,8 +231,8 @@ std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
     if (tree.branches.empty()) {
         return {};
     }
-    const PreparedSurface s =
-        detail::prepareSurface(mesh, tree.branches.front().points.front().position, progress);
+    const PreparedSurface s = detail::prepareSurface(
+        mesh, tree.branches.front().points.front().position, progress, kDefaultMaxTriangles);
     const SurfaceIndex index(s);
     return detail::sectionsOf(s, index, tree, progress);
 }

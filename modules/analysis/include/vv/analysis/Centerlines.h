@@ -77,6 +77,9 @@ struct Branch {
     int endIndex = -1;  ///< CenterlineTree::ends index of its far end; -1 at a bifurcation
 };
 
+/// CenterlineOptions::maxTriangles by default.
+inline constexpr std::size_t kDefaultMaxTriangles = 3'000'000;
+
 struct CenterlineOptions {
     /// The source end; nullopt: the largest open end, or, on a closed
     /// surface, the end of the widest vessel.
@@ -84,6 +87,11 @@ struct CenterlineOptions {
     /// The target ends; empty: every other open end and every closed tip.
     std::vector<glm::dvec3> targets;
     double stepMm = 0.5;  ///< resampling step along the centrelines, in [0.01, 10]
+    /// A surface of more triangles is analysed coarsened to about this many:
+    /// its points merged into cells (each moves at most a cell's diagonal,
+    /// which a note states); >= 1000. Bounds time and memory (a 10M-triangle
+    /// export of a segmentation is far finer than its vessels need).
+    std::size_t maxTriangles = kDefaultMaxTriangles;
 };
 
 struct CenterlineTree {

@@ -87,7 +87,9 @@ struct EndZones {
 /// The sections of every branch of `tree` (made from `mesh`), one per
 /// centreline point: result[b][i] is branch b's point i. Progress is
 /// reported; a stop request throws CancelledError. Throws AnalysisError for
-/// a mesh that cannot be prepared (as computeCenterlines).
+/// a mesh that cannot be prepared (as computeCenterlines). A mesh of more
+/// than kDefaultMaxTriangles is coarsened as computeCenterlines coarsens it
+/// (analyseVessels() takes CenterlineOptions::maxTriangles for both).
 [[nodiscard]] std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
                                                                      const CenterlineTree& tree,
                                                                      const Progress& progress = {});
