@@ -10,8 +10,8 @@
 #include <bit>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
+#include <iostream>
 #include <optional>
 #include <stop_token>
 #include <string>
@@ -45,7 +45,7 @@ constexpr std::uint8_t kStepBits = 0x07U;
 
 /// A broken invariant: reported and aborted, so that libFuzzer keeps the input.
 [[noreturn]] void violated(const std::string& what) {
-    std::fprintf(stderr, "vv::fuzz::feedAnalysis: invariant broken: %s\n", what.c_str());
+    std::cerr << "vv::fuzz::feedAnalysis: invariant broken: " << what << "\n";
     std::abort();
 }
 
