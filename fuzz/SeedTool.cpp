@@ -6,18 +6,29 @@
 //   OUTDIR/dicom/    two slices of a small demo CT series (writeCtSeries)
 //   OUTDIR/vtp/      a small demo vessel tree (writeVtp: binary, appended)
 //   OUTDIR/pfm/      small grayscale PFMs (writePfm, plus a big-endian one)
+//   OUTDIR/analysis/ small tube and bifurcation phantoms (~200 to ~1000
+//                    triangles) as compact meshes (encodeAnalysisInput), one
+//                    with a given source and target, two disjoint tubes, and
+//                    a tube as an 'S' + binary STL and a 'P' + PLY input
+#include <array>
 #include <cmath>
+#include <cstdint>
 #include <exception>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <utility>
+#include <vector>
 
+#include "FuzzBodies.h"
 #include "vv/core/Image.h"
+#include "vv/demo/BifurcationPhantom.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
+#include "vv/demo/TubePhantom.h"
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/meshio/MeshWriter.h"
 #include "vv/vss/Pfm.h"
@@ -75,6 +86,67 @@ void pfmSeeds(const fs::path& dir) {
                std::string("Pf\n2 1\n1.0\n") + std::string("\x3f\x80\x00\x00\xc0\x00\x00\x00", 8));
 }
 
+void writeBytes(const fs::path& file, const std::vector<std::uint8_t>& bytes) {
+    writeBytes(file, std::string(bytes.begin(), bytes.end()));
+}
+
+vv::scene::Mesh tube(vv::demo::TubeShape shape, std::size_t triangles, bool capped) {
+    vv::demo::TubePhantomOptions options;
+    options.shape = shape;
+    options.radiusMm = 2.0;
+    options.lengthMm = 20.0;
+    options.bendRadiusMm = 10.0;
+    options.stenosisLengthMm = 8.0;
+    options.targetTriangles = triangles;
+    options.capped = capped;
+    return vv::demo::makeTubePhantom(options).mesh;
+}
+
+/// `mesh` as a file of the type `extension` names, behind the selector byte.
+void fileSeed(const vv::scene::Mesh& mesh, const fs::path& file, char selector) {
+    const fs::path scratch = file.parent_path() / ("scratch" + file.extension().string());
+    vv::meshio::writeMeshFile(mesh, scratch);
+    std::ifstream in(scratch, std::ios::binary);
+    const std::string content{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    in.close();
+    fs::remove(scratch);
+    writeBytes(file, selector + content);
+}
+
+void analysisSeeds(const fs::path& dir) {
+    using vv::demo::TubeShape;
+    using vv::fuzz::encodeAnalysisInput;
+    const vv::scene::Mesh cylinder = tube(TubeShape::Cylinder, 200, false);
+    writeBytes(dir / "cylinder-open.mesh", encodeAnalysisInput(cylinder));
+    writeBytes(dir / "cylinder-capped.mesh",
+               encodeAnalysisInput(tube(TubeShape::Cylinder, 300, true), {.step = 1}));
+    writeBytes(dir / "bend.mesh", encodeAnalysisInput(tube(TubeShape::TorusSegment, 600, false)));
+    writeBytes(dir / "stenosis.mesh",
+               encodeAnalysisInput(tube(TubeShape::Stenosis, 1000, false), {.step = 3}));
+    writeBytes(dir / "cylinder-given-ends.mesh",
+               encodeAnalysisInput(cylinder, {.step = 1,
+                                              .source = std::array{0.0F, 0.0F, 0.0F},
+                                              .target = std::array{0.0F, 0.0F, 20.0F}}));
+    vv::scene::Mesh twoTubes = cylinder;
+    const auto offset = static_cast<std::uint32_t>(cylinder.positions.size());
+    for (const glm::vec3& p : cylinder.positions) {
+        twoTubes.positions.push_back(p + glm::vec3(10.0F, 0.0F, 0.0F));
+    }
+    for (const std::uint32_t i : cylinder.indices) {
+        twoTubes.indices.push_back(i + offset);
+    }
+    writeBytes(dir / "two-disjoint-tubes.mesh", encodeAnalysisInput(twoTubes));
+    vv::demo::BifurcationPhantomOptions y;
+    y.parentRadiusMm = 2.0;
+    y.parentLengthMm = 10.0;
+    y.daughterLengthMm = 10.0;
+    y.targetTriangles = 1000;
+    writeBytes(dir / "bifurcation.mesh",
+               encodeAnalysisInput(vv::demo::makeBifurcationPhantom(y).mesh));
+    fileSeed(cylinder, dir / "cylinder.stl", 'S');
+    fileSeed(cylinder, dir / "cylinder.ply", 'P');
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -84,12 +156,13 @@ int main(int argc, char** argv) {
     }
     try {
         const fs::path out = argv[1];
-        for (const char* sub : {"dicom", "vtp", "pfm"}) {
+        for (const char* sub : {"dicom", "vtp", "pfm", "analysis"}) {
             fs::create_directories(out / sub);
         }
         dicomSeeds(out / "dicom");
         vtpSeeds(out / "vtp");
         pfmSeeds(out / "pfm");
+        analysisSeeds(out / "analysis");
     } catch (const std::exception& e) {
         std::cerr << "vv_fuzz_seeds: " << e.what() << "\n";
         return 1;

@@ -139,4 +139,29 @@ TEST(Robustness, ASinglePointIsAClearError) {
     }
 }
 
+// A surface far larger than a vessel in mm (here the cylinder in
+// micrometres, fuzz finding: a 3e10 mm surface hung tracing its path at
+// 0.1 mm): refused with a message at the default step, analysed at a step
+// that keeps the centreline under 100,000 points.
+TEST(Robustness, ASurfaceInMicrometresIsRefusedAtAStepOfHalfAMillimetre) {
+    vv::scene::Mesh mesh = cylinder(2'000);
+    for (glm::vec3& p : mesh.positions) {
+        p *= 1000.0F;
+    }
+    try {
+        static_cast<void>(computeCenterlines(mesh));
+        ADD_FAILURE() << "a 100,000 mm centreline at 0.5 mm was not refused";
+    } catch (const AnalysisError& e) {
+        EXPECT_NE(std::string(e.what()).find("is the surface in mm?"), std::string::npos)
+            << e.what();
+    }
+    CenterlineOptions options;
+    options.stepMm = 10.0;
+    const auto tree = computeCenterlines(mesh, options);
+    ASSERT_EQ(tree.branches.size(), 1U);
+    EXPECT_NEAR(tree.branches[0].lengthMm, 100'000.0, 1'000.0);
+    EXPECT_NEAR(tree.branches[0].points[tree.branches[0].points.size() / 2].radiusMm, 5'000.0,
+                250.0);
+}
+
 }  // namespace

@@ -52,6 +52,9 @@ vv::fuzz::Outcome feed(const std::string& target, vv::fuzz::Bytes bytes) {
     if (target == "session") {
         return vv::fuzz::feedSession(bytes);
     }
+    if (target == "analysis") {
+        return vv::fuzz::feedAnalysis(bytes);
+    }
     return vv::fuzz::feedMesh(bytes, "." + target);
 }
 

@@ -34,6 +34,16 @@ constexpr double kMinBranchRadii = 1.0;
 constexpr double kSmoothingRadii = 0.5;
 /// Resolution of the raw path before smoothing, mm (at most the step).
 constexpr double kRawStepMm = 0.1;
+/// The raw path is resampled no finer than into this many samples over its
+/// length and this many per smoothing sigma (its largest), which bounds the
+/// smoothing's work (its window is 6 sigma) on a surface far larger than a
+/// vessel in mm; vessels up to 2 m long and 40 mm wide keep kRawStepMm.
+constexpr double kMaxRawSamples = 20'000.0;
+constexpr double kRawSamplesPerSigma = 200.0;
+/// A centreline from the source to one end has at most this many points at
+/// the output step (50 m at the default 0.5 mm): a longer one means a
+/// surface in other units than mm, or not a vessel; refused.
+constexpr double kMaxPathPoints = 100'000.0;
 
 std::string pointText(const glm::dvec3& p) {
     return "(" + fixedText(p.x, 2) + ", " + fixedText(p.y, 2) + ", " + fixedText(p.z, 2) + ")";
@@ -326,7 +336,10 @@ PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
     const std::vector<double> rawAt = detail::arcLengths(raw);
     profile.vertexRawArc.assign(rawAt.begin() + 1, rawAt.end() - 1);
 
-    const double fineStep = std::min(step, kRawStepMm);
+    const double fineStep =
+        std::max({std::min(step, kRawStepMm), rawAt.back() / kMaxRawSamples,
+                  kSmoothingRadii * *std::max_element(rawRadius.begin(), rawRadius.end()) /
+                      kRawSamplesPerSigma});
     const std::vector<glm::dvec3> fine = detail::resample(raw, fineStep);
     const std::vector<double> fineAt = detail::arcLengths(fine);
     std::vector<double> sigma(fine.size());
@@ -547,6 +560,23 @@ std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiG
     return targets;
 }
 
+/// Refuses a path with more than kMaxPathPoints points at `step`.
+void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const PathTree& tree,
+                      const ResolvedEnd& source, const std::vector<ResolvedEnd>& targets,
+                      double step) {
+    const double start = glm::length(g.centres[source.vertex] - source.end.position);
+    for (const ResolvedEnd& target : targets) {
+        const double length = start + tree.lengthMm[target.vertex] +
+                              glm::length(target.end.position - g.centres[target.vertex]);
+        if (!(length / step <= kMaxPathPoints)) {
+            fail(s, "the centreline to the end " + pointText(target.end.position) + " would be " +
+                        fixedText(length, 0) + " mm long, more than " +
+                        fixedText(kMaxPathPoints, 0) + " points at a step of " +
+                        fixedText(step, 2) + " mm (is the surface in mm?)");
+        }
+    }
+}
+
 }  // namespace
 
 CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptions& options,
@@ -616,6 +646,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
                         pointText(target.end.position));
         }
     }
+    checkPathLengths(s, g, tree, source, targets, options.stepMm);
     // Longest path first: the main vessel is branch 0.
     std::sort(targets.begin(), targets.end(), [&](const ResolvedEnd& a, const ResolvedEnd& b) {
         return tree.lengthMm[a.vertex] > tree.lengthMm[b.vertex];

@@ -21,27 +21,40 @@ class VertexGrid {
   public:
     VertexGrid(const std::vector<glm::dvec3>& points, double cell) : points_(points), cell_(cell) {
         for (std::uint32_t i = 0; i < points.size(); ++i) {
-            buckets_[key(cellOf(points[i]))].push_back(i);
+            buckets_[key(glm::ivec3(cellOf(points[i])))].push_back(i);
         }
     }
 
     void forEachWithin(const glm::dvec3& centre, double radius,
                        const std::function<void(std::uint32_t)>& visit) const {
-        const glm::ivec3 lo = cellOf(centre - glm::dvec3(radius));
-        const glm::ivec3 hi = cellOf(centre + glm::dvec3(radius));
+        const glm::dvec3 lo = cellOf(centre - glm::dvec3(radius));
+        const glm::dvec3 hi = cellOf(centre + glm::dvec3(radius));
         const double radius2 = radius * radius;
-        for (int x = lo.x; x <= hi.x; ++x) {
-            for (int y = lo.y; y <= hi.y; ++y) {
-                for (int z = lo.z; z <= hi.z; ++z) {
+        const auto visitBucket = [&](const std::vector<std::uint32_t>& bucket) {
+            for (const std::uint32_t i : bucket) {
+                const glm::dvec3 d = points_[i] - centre;
+                if (glm::dot(d, d) <= radius2) {
+                    visit(i);
+                }
+            }
+        };
+        // A ball over more cells than are occupied (a sphere far wider than
+        // the cell): every occupied cell instead.
+        const glm::dvec3 cells = hi - lo + 1.0;
+        if (cells.x * cells.y * cells.z > static_cast<double>(buckets_.size())) {
+            for (const auto& [cell, bucket] : buckets_) {
+                visitBucket(bucket);
+            }
+            return;
+        }
+        const glm::ivec3 from(lo);
+        const glm::ivec3 to(hi);
+        for (int x = from.x; x <= to.x; ++x) {
+            for (int y = from.y; y <= to.y; ++y) {
+                for (int z = from.z; z <= to.z; ++z) {
                     const auto it = buckets_.find(key({x, y, z}));
-                    if (it == buckets_.end()) {
-                        continue;
-                    }
-                    for (const std::uint32_t i : it->second) {
-                        const glm::dvec3 d = points_[i] - centre;
-                        if (glm::dot(d, d) <= radius2) {
-                            visit(i);
-                        }
+                    if (it != buckets_.end()) {
+                        visitBucket(it->second);
                     }
                 }
             }
@@ -49,11 +62,15 @@ class VertexGrid {
     }
 
   private:
-    [[nodiscard]] glm::ivec3 cellOf(const glm::dvec3& p) const {
-        return glm::ivec3{glm::floor(p / cell_)};
+    static constexpr std::int64_t kSpan = 1 << 20;
+
+    /// The cell of `p`, clamped to [-kSpan, kSpan) per axis: far points
+    /// share the border cells, which keeps queries exact (the distance is
+    /// checked per point) and the cast in range.
+    [[nodiscard]] glm::dvec3 cellOf(const glm::dvec3& p) const {
+        return glm::clamp(glm::floor(p / cell_), glm::dvec3(-kSpan), glm::dvec3(kSpan - 1));
     }
     static std::int64_t key(const glm::ivec3& c) {
-        constexpr std::int64_t kSpan = 1 << 20;
         return ((static_cast<std::int64_t>(c.x) + kSpan) * 2 * kSpan +
                 (static_cast<std::int64_t>(c.y) + kSpan)) *
                    2 * kSpan +

@@ -110,7 +110,8 @@ struct CenterlineTree {
 /// throws CancelledError. Throws InvalidArgumentError for options out of
 /// range, AnalysisError (naming the mesh's source) when the surface cannot be
 /// analysed: no triangles, no inside, fewer than two ends, an end on another
-/// piece, non-finite coordinates.
+/// piece, non-finite coordinates, a centreline of more than 100,000 points at
+/// the step (a surface in other units than mm).
 [[nodiscard]] CenterlineTree computeCenterlines(const scene::Mesh& mesh,
                                                 const CenterlineOptions& options = {},
                                                 const Progress& progress = {});
