@@ -276,9 +276,11 @@ Outcome analyse(const scene::Mesh& mesh, const analysis::CenterlineOptions& opti
     Budget budget;
     const Progress progress = budget.progress();
     try {
-        const CenterlineTree tree = analysis::computeCenterlines(mesh, options, progress);
+        // The application's path: one preparation for both (analyseVessels).
+        const analysis::VesselAnalysis analysed = analysis::analyseVessels(mesh, options, progress);
+        const CenterlineTree& tree = analysed.tree;
         checkTree(tree);
-        const Sections sections = analysis::computeSections(mesh, tree, progress);
+        const Sections& sections = analysed.sections;
         checkSections(tree, sections);
         gradeAndLabel(mesh, tree, sections);
         outcome.loaded = true;
