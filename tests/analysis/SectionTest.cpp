@@ -60,7 +60,9 @@ int expectCircles(const Measured& m, double tolerance, double feretTolerance = 0
             EXPECT_NEAR(s.equivalentDiameterMm, d, tolerance * d) << "at s = " << at;
             EXPECT_NEAR(s.minDiameterMm, d, feretTolerance * d) << "at s = " << at;
             EXPECT_NEAR(s.maxDiameterMm, d, feretTolerance * d) << "at s = " << at;
-            EXPECT_LE(s.inscribedDiameterMm, s.minDiameterMm * (1.0 + 1e-6)) << "at s = " << at;
+            // The inscribed sphere touches the faceted surface, the contour
+            // lies on the curved wall its normals describe: within 0.1 %.
+            EXPECT_LE(s.inscribedDiameterMm, s.minDiameterMm * (1.0 + 1e-3)) << "at s = " << at;
             EXPECT_GT(s.circularity, minCircularity) << "at s = " << at;
             EXPECT_LT(s.centreOffsetMm, 0.02 * r0) << "at s = " << at;
             EXPECT_NEAR(std::abs(glm::dot(s.normal, m.truth.axisAt(at).tangent)), 1.0, 1e-3);
@@ -109,26 +111,33 @@ TEST(Sections, FollowAStenosis) {
     EXPECT_NEAR(narrowest, 2.0 * m.truth.narrowestRadiusMm, 0.01 * 2.0 * m.truth.narrowestRadiusMm);
 }
 
-// A coarse tube's section is its polygon exactly (the cut is right), which
-// is smaller than the circle it stands for: recorded, so that the docs can
-// say how much a faceted mesh loses.
-TEST(Sections, OfAFacetedTubeAreItsPolygon) {
+// A coarse tube (1k triangles, a dozen or so sides) is a polygon inside the
+// circle it stands for: the section is cut from the curved wall its normals
+// describe, so it measures the circle, whichever way the plane meets the
+// facets, where the polygon alone is about 2 % small in diameter.
+TEST(Sections, OfAFacetedTubeMeasureTheCurvedWall) {
     const Measured m = measure(tubeOptions(TubeShape::Cylinder, 5.0, 1'000));
     const int n = m.truth.sides;
     ASSERT_GE(n, 8);
     const double polygonArea = 0.5 * n * 25.0 * std::sin(2.0 * kPi / n);
+    const double circleArea = kPi * 25.0;
     int checked = 0;
+    double worst = 0.0;
     for (const auto& s : m.sections[0]) {
         const double at = m.truth.distanceToAxis(s.centre).second;
         if (at < 5.0 || at > m.truth.lengthMm - 5.0) {
             continue;
         }
         ASSERT_EQ(s.status, CrossSection::Status::Ok);
-        EXPECT_NEAR(s.areaMm2, polygonArea, 1e-3 * polygonArea) << "at s = " << at;
+        EXPECT_GT(s.areaMm2, polygonArea + 0.5 * (circleArea - polygonArea)) << "at s = " << at;
+        EXPECT_NEAR(s.equivalentDiameterMm, 10.0, 0.002 * 10.0) << "at s = " << at;
+        EXPECT_NEAR(s.perimeterMm, 10.0 * kPi, 0.005 * 10.0 * kPi) << "at s = " << at;
+        worst = std::max(worst, std::abs(s.equivalentDiameterMm / 10.0 - 1.0));
         ++checked;
     }
     EXPECT_GT(checked, 100);
-    RecordProperty("faceted_equivalent_diameter_error",
+    RecordProperty("faceted_equivalent_diameter_error", std::to_string(worst));
+    RecordProperty("polygon_equivalent_diameter_error",
                    std::to_string(std::sqrt(polygonArea / kPi) / 5.0 - 1.0));
 }
 
