@@ -164,6 +164,20 @@ AneurysmAgreement measureAneurysm(const demo::AneurysmPhantom& phantom,
     return result;
 }
 
+/// The area centroid of the closed polygon `contour`.
+glm::dvec2 polygonCentroid(const std::vector<glm::dvec2>& contour) {
+    double twiceArea = 0.0;
+    glm::dvec2 sum(0.0);
+    for (std::size_t i = 0; i < contour.size(); ++i) {
+        const glm::dvec2& a = contour[i];
+        const glm::dvec2& b = contour[(i + 1) % contour.size()];
+        const double cross = a.x * b.y - b.x * a.y;
+        twiceArea += cross;
+        sum += (a + b) * cross;
+    }
+    return twiceArea != 0.0 ? sum / (3.0 * twiceArea) : glm::dvec2(0.0);
+}
+
 ConstructionAgreement compareWithConstruction(
     const demo::VesselTree& truth, const analysis::CenterlineTree& tree,
     const std::vector<std::vector<analysis::CrossSection>>& sections, double slackMm) {
@@ -172,6 +186,7 @@ ConstructionAgreement compareWithConstruction(
     matchEnds(truth, tree, slackMm, result);
     std::vector<double> offAxis;
     std::vector<double> diameterError;
+    std::vector<double> centroidOffAxis;
     for (std::size_t b = 0; b < sections.size(); ++b) {
         for (std::size_t i = 0; i < sections[b].size(); ++i) {
             const CrossSection& s = sections[b][i];
@@ -193,12 +208,20 @@ ConstructionAgreement compareWithConstruction(
             offAxis.push_back(nearest / radius);
             if (s.status == CrossSection::Status::Ok) {
                 diameterError.push_back(s.equivalentDiameterMm / (2.0 * radius) - 1.0);
+                const glm::dvec2 c = polygonCentroid(s.contour);
+                const glm::dvec3 centroid = s.centre + c.x * s.axisU + c.y * s.axisV;
+                double toAxis = std::numeric_limits<double>::max();
+                for (const auto& segment : truth.segments) {
+                    toAxis = std::min(toAxis, distanceToPolyline(centroid, segment.centerline));
+                }
+                centroidOffAxis.push_back(toAxis / radius);
             }
         }
     }
     result.compared = offAxis.size();
     result.offAxisMedian = percentile(offAxis, 0.5);
     result.offAxisP95 = percentile(offAxis, 0.95);
+    result.centroidOffAxisMedian = percentile(centroidOffAxis, 0.5);
     result.diameterErrorMedian = percentile(diameterError, 0.5);
     for (double& e : diameterError) {
         e = std::abs(e);

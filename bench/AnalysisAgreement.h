@@ -40,6 +40,11 @@ struct ConstructionAgreement {
     /// centreline, per that segment's radius: median and 95th percentile.
     double offAxisMedian = 0.0;
     double offAxisP95 = 0.0;
+    /// The same for the centroid of each compared point's closed contour
+    /// (the lumen's centre as the surface has it): near offAxisMedian when
+    /// the surface itself lies off the constructed axes, near 0 when the
+    /// centreline strays from a well-placed lumen.
+    double centroidOffAxisMedian = 0.0;
     /// The equivalent diameter of each compared point's closed section
     /// against twice the nearest segment's radius, relative (d / 2r - 1):
     /// the median (signed) and the 95th percentile of its magnitude.

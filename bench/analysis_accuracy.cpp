@@ -251,10 +251,10 @@ void aneurysmTable(const std::vector<std::size_t>& densities) {
 }
 
 void printAgreement(const vv::bench::ConstructionAgreement& a) {
-    std::printf("%zu / %zu | %zu | %zu | %zu / %zu | %.1f / %.1f | %+.1f / %.1f", a.segments,
+    std::printf("%zu / %zu | %zu | %zu | %zu / %zu | %.1f / %.1f | %.1f | %+.1f / %.1f", a.segments,
                 a.leaves, a.leavesFound, a.endsElsewhere, a.sectionsOk, a.sectionsAll,
-                100.0 * a.offAxisMedian, 100.0 * a.offAxisP95, 100.0 * a.diameterErrorMedian,
-                100.0 * a.diameterErrorP95);
+                100.0 * a.offAxisMedian, 100.0 * a.offAxisP95, 100.0 * a.centroidOffAxisMedian,
+                100.0 * a.diameterErrorMedian, 100.0 * a.diameterErrorP95);
 }
 
 void demoTree() {
@@ -268,10 +268,11 @@ void demoTree() {
     const auto peak = vv::peakResidentKiB().value_or(0);
     std::printf(
         "| demo tree | triangles | segments / leaves built | leaves found | other ends | "
-        "sections (ok / all) | off the built axis, median / 95 %% (%% r) | equiv. "
+        "sections (ok / all) | off the built axis, median / 95 %% (%% r) | lumen centroid "
+        "off the built axis, median (%% r) | equiv. "
         "diameter against the built, median / 95 %% of its size (%%) | centrelines (s) | "
         "sections (s) | peak memory above the mesh (MiB) | mesh (MiB) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     std::printf("| default | %zu | ", mesh.triangleCount());
     printAgreement(vv::bench::compareWithConstruction(truth, analysed.tree, analysed.sections));
     std::printf(" | %.2f | %.2f | %.0f | %.1f |\n", analysed.centrelineSeconds,
@@ -293,9 +294,10 @@ void ctaTable() {
     std::printf(
         "\n| synthetic CTA | voxels | voxel (mm) | triangles | segments / leaves built | "
         "leaves found | other ends | sections (ok / all) | off the built axis, median / 95 "
-        "%% (%% r) | equiv. diameter against the built, median / 95 %% of its size (%%) | "
+        "%% (%% r) | lumen centroid off the built axis, median (%% r) | equiv. diameter against "
+        "the built, median / 95 %% of its size (%%) | "
         "segmentation (s) | centrelines (s) | sections (s) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     struct Row {
         int generations;
         glm::ivec3 dims;

@@ -6,6 +6,7 @@
 // computeCenterlines and computeSections give.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
 
 #include "TubeOptions.h"
@@ -18,12 +19,9 @@ namespace vv::analysis {
 namespace {
 
 bool reducedNote(const CenterlineTree& tree) {
-    for (const auto& note : tree.notes) {
-        if (note.find("the Voronoi diagram was built from") != std::string::npos) {
-            return true;
-        }
-    }
-    return false;
+    return std::ranges::any_of(tree.notes, [](const std::string& note) {
+        return note.find("the Voronoi diagram was built from") != std::string::npos;
+    });
 }
 
 double worstAxisDistance(const CenterlineTree& tree, const demo::TubePhantom& truth) {

@@ -14,20 +14,20 @@
 
 namespace vv::analysis::detail {
 
-/// The internal Voronoi diagram of a prepared surface (VoronoiSamples.h's
-/// points, a note when they are fewer than the surface's); marks the
-/// surface's loops that are holes and notes them.
-[[nodiscard]] VoronoiGraph diagramOf(PreparedSurface& surface, const Progress& progress);
+/// The internal Voronoi diagram of the prepared surface `s`
+/// (VoronoiSamples.h's points, a note when they are fewer than the
+/// surface's); marks the surface's loops that are holes and notes them.
+[[nodiscard]] VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress);
 
-/// computeCenterlines() on a prepared surface (options validated) and its
-/// diagram; its notes are surface.notes.
-[[nodiscard]] CenterlineTree centerlinesOf(PreparedSurface& surface, const VoronoiGraph& graph,
-                                           const SurfaceIndex& index,
+/// computeCenterlines() on the prepared surface `s` (options validated),
+/// its diagram `g` and its index `surface`; its notes are s.notes.
+[[nodiscard]] CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g,
+                                           const SurfaceIndex& surface,
                                            const CenterlineOptions& options,
                                            const Progress& progress);
 
 /// computeSections() on a prepared surface.
-[[nodiscard]] std::vector<std::vector<CrossSection>> sectionsOf(const PreparedSurface& surface,
+[[nodiscard]] std::vector<std::vector<CrossSection>> sectionsOf(const PreparedSurface& s,
                                                                 const SurfaceIndex& index,
                                                                 const CenterlineTree& tree,
                                                                 const Progress& progress);

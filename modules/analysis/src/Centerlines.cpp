@@ -579,30 +579,39 @@ void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const Pat
 
 }  // namespace
 
-CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptions& options,
-                                  const Progress& progress) {
+/// Prepares `mesh` for `options`, builds its diagram and then its index (the
+/// tetrahedralisation is freed before the index takes its memory), and
+/// returns step(surface, diagram, index).
+template <class Step>
+auto onPrepared(const scene::Mesh& mesh, const CenterlineOptions& options, const Progress& progress,
+                Step&& step) {
     validate(options);
     progress.report(0.0, "Preparing the surface");
     PreparedSurface s =
         detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
-    // The diagram first: its tetrahedralisation is freed before the index is built.
     const VoronoiGraph g = detail::diagramOf(s, progress);
     const SurfaceIndex surface(s);
-    return detail::centerlinesOf(s, g, surface, options, progress);
+    return std::forward<Step>(step)(s, g, surface);
+}
+
+CenterlineTree computeCenterlines(const scene::Mesh& mesh, const CenterlineOptions& options,
+                                  const Progress& progress) {
+    return onPrepared(mesh, options, progress,
+                      [&](PreparedSurface& s, const VoronoiGraph& g, const SurfaceIndex& surface) {
+                          return detail::centerlinesOf(s, g, surface, options, progress);
+                      });
 }
 
 VesselAnalysis analyseVessels(const scene::Mesh& mesh, const CenterlineOptions& options,
                               const Progress& progress) {
-    validate(options);
-    progress.report(0.0, "Preparing the surface");
-    PreparedSurface s =
-        detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
-    const VoronoiGraph g = detail::diagramOf(s, progress);
-    const SurfaceIndex surface(s);
-    VesselAnalysis analysis;
-    analysis.tree = detail::centerlinesOf(s, g, surface, options, progress);
-    analysis.sections = detail::sectionsOf(s, surface, analysis.tree, progress);
-    return analysis;
+    return onPrepared(mesh, options, progress,
+                      [&](PreparedSurface& s, const VoronoiGraph& g, const SurfaceIndex& surface) {
+                          VesselAnalysis analysis;
+                          analysis.tree = detail::centerlinesOf(s, g, surface, options, progress);
+                          analysis.sections =
+                              detail::sectionsOf(s, surface, analysis.tree, progress);
+                          return analysis;
+                      });
 }
 
 namespace detail {

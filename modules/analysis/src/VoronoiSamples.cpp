@@ -115,7 +115,7 @@ VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& pr
     struct KeyHash {
         std::size_t operator()(const Key& k) const noexcept {
             const auto [l, x, y, z] = k;
-            std::size_t h = static_cast<std::size_t>(l);
+            auto h = static_cast<std::size_t>(l);
             for (const std::int64_t c : {x, y, z}) {
                 h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(c);
             }
