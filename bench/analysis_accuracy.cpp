@@ -10,10 +10,10 @@
 // mesh's own size; and the synthetic CTA segmented as `render` segments a
 // DICOM series, against the tree it was voxelised from.
 //
-//   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm]
+//   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm | --huge]
 //   (--quick: no 1M rows; --demo: the demo tree's row alone; --cta: the
 //   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
-//   rows included)
+//   rows included; --huge: a 10M-triangle cylinder alone)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -130,6 +130,77 @@ struct TubeRow {
     double radius;
 };
 
+/// A tube phantom's errors: the largest axis distance (per r) and section
+/// diameter error at least one radius from the ends, the length's error.
+struct TubeErrors {
+    double worstAxisPerR = 0.0;
+    double lengthError = 0.0;
+    double diameterError = 0.0;
+};
+
+TubeErrors tubeErrors(const vv::demo::TubePhantom& truth, const Analysed& analysed) {
+    const double radius = truth.options.radiusMm;
+    const auto& tree = analysed.tree;
+    double worst = 0.0;
+    double length = 0.0;
+    double diameterError = 0.0;
+    for (std::size_t b = 0; b < tree.branches.size(); ++b) {
+        length += tree.branches[b].lengthMm;
+        for (std::size_t i = 0; i < tree.branches[b].points.size(); ++i) {
+            const auto [d, s] = truth.distanceToAxis(tree.branches[b].points[i].position);
+            if (s < radius || s > truth.lengthMm - radius) {
+                continue;
+            }
+            worst = std::max(worst, d);
+            const CrossSection& section = analysed.sections[b][i];
+            if (section.status == CrossSection::Status::Ok) {
+                diameterError = std::max(
+                    diameterError,
+                    std::abs(section.equivalentDiameterMm / (2.0 * truth.axisAt(s).radiusMm) -
+                             1.0));
+            }
+        }
+    }
+    return {.worstAxisPerR = worst / radius,
+            .lengthError = length / truth.lengthMm - 1.0,
+            .diameterError = diameterError};
+}
+
+/// A 10-million-triangle cylinder (r = 10 mm): coarsened to the analysis'
+/// limit (CenterlineOptions::maxTriangles), then measured; time and memory.
+void hugeTable() {
+    std::printf(
+        "| cylinder r = 10 mm | triangles | analysed as | axis distance (%% r) | length error "
+        "(%%) | equiv. diameter error, max (%%) | centrelines (s) | sections (s) | peak memory "
+        "above the mesh (MiB) | mesh (MiB) |\n|---|---|---|---|---|---|---|---|---|---|\n");
+    vv::demo::TubePhantomOptions o;
+    o.radiusMm = 10.0;
+    o.lengthMm = 200.0;
+    o.targetTriangles = 10'000'000;
+    const auto truth = vv::demo::makeTubePhantom(o);
+    vv::resetPeakResident();
+    const auto before = vv::residentKiB().value_or(0);
+    const Analysed analysed = analyse(truth.mesh);
+    const auto peak = vv::peakResidentKiB().value_or(0);
+    const TubeErrors e = tubeErrors(truth, analysed);
+    std::string analysedAs = "all";
+    for (const auto& note : analysed.tree.notes) {
+        const auto at = note.find("leaving ");
+        if (at != std::string::npos) {
+            analysedAs = note.substr(at + 8);
+        }
+    }
+    std::printf("| unjittered | %zu | %s | %.2f | %+.2f | %.2f | %.2f | %.2f | %.0f | %.0f |\n",
+                truth.mesh.triangleCount(), analysedAs.c_str(), 100.0 * e.worstAxisPerR,
+                100.0 * e.lengthError, 100.0 * e.diameterError, analysed.centrelineSeconds,
+                analysed.sectionSeconds,
+                static_cast<double>(peak > before ? peak - before : 0) / 1024.0,
+                meshMiB(truth.mesh));
+    for (const auto& note : analysed.tree.notes) {
+        std::printf("\nnote: %s\n", note.c_str());
+    }
+}
+
 void tubeTable(const std::vector<std::size_t>& densities) {
     std::printf(
         "| phantom | r (mm) | triangles | jitter | axis distance (%% r) | length error (%%) "
@@ -155,34 +226,11 @@ void tubeTable(const std::vector<std::size_t>& densities) {
                 o.jitterFraction = jitter;
                 const auto truth = vv::demo::makeTubePhantom(o);
                 const Analysed analysed = analyse(truth.mesh);
-                const auto& tree = analysed.tree;
-                const auto& sections = analysed.sections;
-                double worst = 0.0;
-                double length = 0.0;
-                double diameterError = 0.0;
-                for (std::size_t b = 0; b < tree.branches.size(); ++b) {
-                    length += tree.branches[b].lengthMm;
-                    for (std::size_t i = 0; i < tree.branches[b].points.size(); ++i) {
-                        const auto& p = tree.branches[b].points[i];
-                        const auto [d, s] = truth.distanceToAxis(p.position);
-                        if (s < row.radius || s > truth.lengthMm - row.radius) {
-                            continue;
-                        }
-                        worst = std::max(worst, d);
-                        const CrossSection& section = sections[b][i];
-                        const double trueDiameter = 2.0 * truth.axisAt(s).radiusMm;
-                        if (section.status == CrossSection::Status::Ok) {
-                            diameterError = std::max(
-                                diameterError,
-                                std::abs(section.equivalentDiameterMm / trueDiameter - 1.0));
-                        }
-                    }
-                }
+                const TubeErrors e = tubeErrors(truth, analysed);
                 std::printf("| %s | %g | %zu | %g %% | %.2f | %+.2f | %.2f | %.2f | %.2f |\n",
                             row.name, row.radius, truth.mesh.triangleCount(), jitter * 100.0,
-                            100.0 * worst / row.radius, 100.0 * (length / truth.lengthMm - 1.0),
-                            100.0 * diameterError, analysed.centrelineSeconds,
-                            analysed.sectionSeconds);
+                            100.0 * e.worstAxisPerR, 100.0 * e.lengthError, 100.0 * e.diameterError,
+                            analysed.centrelineSeconds, analysed.sectionSeconds);
                 std::fflush(stdout);
             }
         }
@@ -339,6 +387,10 @@ int main(int argc, char** argv) {
     }
     if (mode("--aneurysm")) {
         aneurysmTable(densities);
+        return 0;
+    }
+    if (mode("--huge")) {
+        hugeTable();
         return 0;
     }
     if (mode("--cta")) {
