@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 #include <regex>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "CliRun.h"
@@ -163,18 +164,23 @@ TEST(CenterlineRender, TheLinesFollowTheTrueAxesInTheColourOfTheirDiameter) {
 
     // Every changed pixel lies on a line along a true axis (the halo is
     // 4.5 px wide at this size); the line follows the axes' whole length.
-    long changed = 0;
-    double farthest = 0.0;
-    for (int y = 0; y < kHeight; ++y) {
-        for (int x = 0; x < kWidth; ++x) {
-            if (on.pixel(x, y) != off.pixel(x, y)) {
-                ++changed;
-                farthest = std::max(farthest, distanceToAxes(QPointF(x + 0.5, y + 0.5), axes));
+    // So too in tiles, whose visibility is judged on the tiles' depth.
+    const QImage tiledOff = renderPhantom("tiled-off.png", {"--tile", "256"});
+    const QImage tiledOn = renderPhantom("tiled-on.png", {"--tile", "256", "--centerlines", "on"});
+    for (const auto& [with, without] : {std::pair{&on, &off}, std::pair{&tiledOn, &tiledOff}}) {
+        long changed = 0;
+        double farthest = 0.0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                if (with->pixel(x, y) != without->pixel(x, y)) {
+                    ++changed;
+                    farthest = std::max(farthest, distanceToAxes(QPointF(x + 0.5, y + 0.5), axes));
+                }
             }
         }
+        EXPECT_GT(changed, 500);
+        EXPECT_LT(farthest, 5.0);
     }
-    EXPECT_GT(changed, 500);
-    EXPECT_LT(farthest, 5.0);
 
     // Away from the ends and the junction, the pixel on each true axis shows
     // the map's colour: the parent's diameter is the widest, the daughters'

@@ -216,12 +216,12 @@ class ExternalVssScope {
 };
 
 /// A tiled render of `frame` (no legends) into result.image; sets result.tiles.
-void renderTiled(render::OffscreenRenderer& renderer, const scene::Scene& scene,
-                 const render::OffscreenOptions& frame, bool transparent, int side,
-                 const Progress& progress, RenderedView& result) {
+/// Returns the whole frame's G-buffer depth, assembled from the tiles.
+Image<float> renderTiled(render::OffscreenRenderer& renderer, const scene::Scene& scene,
+                         const render::OffscreenOptions& frame, bool transparent, int side,
+                         const Progress& progress, RenderedView& result) {
     const render::Camera camera = render::OffscreenRenderer::cameraFor(scene, frame);
-    const Image<float> depth =
-        tiledDepth(renderer, scene, frame, camera, side, progress.sub(0.0, 0.3));
+    Image<float> depth = tiledDepth(renderer, scene, frame, camera, side, progress.sub(0.0, 0.3));
     progress.report(0.3, "solving the VSS");
     const render::ExternalVss whole = solveWholeFrame(depth, frame.display.vss, progress);
     double nearest = whole.visibleRange ? whole.visibleRange->first : 0.0;
@@ -267,16 +267,20 @@ void renderTiled(render::OffscreenRenderer& renderer, const scene::Scene& scene,
     }
     tileProgress.report(1.0, "rendering tiles");
     result.tiles = static_cast<int>(tiles.size());
+    return depth;
 }
 
 /// Paints options.centerlines over result.image and adds their legend.
+/// `depth`: the whole frame's G-buffer depth when the render has it (tiles).
 void paintCenterlines(render::OffscreenRenderer& renderer, const scene::Scene& scene,
-                      const ViewExportOptions& options, double scale, RenderedView& result) {
+                      const ViewExportOptions& options, double scale, Image<float> depth,
+                      RenderedView& result) {
     const render::Camera camera = render::OffscreenRenderer::cameraFor(scene, options.render);
-    // The depth the VSS solve read for this frame when it was one piece;
-    // else the CPU rasteriser's, with the same convention and camera.
-    Image<float> depth =
-        result.tiles == 1 && result.vss.current ? renderer.lastLinearDepth() : Image<float>();
+    // The tiles' depth, or the depth the VSS solve read for a frame in one
+    // piece; else the CPU rasteriser's, with the same convention and camera.
+    if (depth.width() == 0 && result.tiles == 1 && result.vss.current) {
+        depth = renderer.lastLinearDepth();
+    }
     if (depth.width() != options.render.width || depth.height() != options.render.height) {
         depth = render::rasterizeDepth(scene, camera);
     }
@@ -340,8 +344,10 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
             renderer.clearCache();  // free what the failed frame holds
         }
     }
+    Image<float> wholeDepth;
     if (side != 0) {
-        renderTiled(renderer, scene, frame, options.transparentBackground, side, progress, result);
+        wholeDepth = renderTiled(renderer, scene, frame, options.transparentBackground, side,
+                                 progress, result);
     }
     progress.report(1.0, "rendering");
     result.range = renderer.lastRange();
@@ -353,7 +359,7 @@ RenderedView renderView(render::OffscreenRenderer& renderer, const scene::Scene&
     const double scale =
         std::max(1.0, std::min(width / kLegendReferenceWidth, height / kLegendReferenceHeight));
     if (options.centerlines) {
-        paintCenterlines(renderer, scene, options, scale, result);
+        paintCenterlines(renderer, scene, options, scale, std::move(wholeDepth), result);
     }
     if (options.legends && !result.legends.empty()) {
         QPainter painter(&result.image);
