@@ -53,6 +53,13 @@ constexpr double kCreaseCosine = 0.5;
 /// wall the edge's normals describe.
 class PlaneCut {
   public:
+    /// A point of the cut and the wall's normal there (in the plane, unit;
+    /// zero where the normals give none).
+    struct CutPoint {
+        glm::dvec3 point{0.0};
+        glm::dvec3 normal{0.0};
+    };
+
     PlaneCut(const PreparedSurface& s, const glm::dvec3& point, const glm::dvec3& normal)
         : s_(s), point_(point), normal_(normal) {}
 
@@ -113,23 +120,28 @@ class PlaneCut {
     /// chord's slant along a tube) lies (d . (n_b - n_a)) / 8 from the
     /// chord's middle, outward where the normals spread (convex), inward
     /// where they close; at u, 4 u (1 - u) times that (a parabola). Moved
-    /// along the normal interpolated at u, within the cut plane. On a fine
+    /// along the normal interpolated at u, within the cut plane, which is
+    /// returned with the point (straight across a crease). On a fine
     /// smooth surface the move is tiny; on a 1k tube it restores the circle
     /// the polygon's chords cut inside.
-    [[nodiscard]] glm::dvec3 onCurvedEdge(std::uint32_t a, std::uint32_t b, double u) const {
+    [[nodiscard]] CutPoint onCurvedEdge(std::uint32_t a, std::uint32_t b, double u) const {
         const glm::dvec3& pa = s_.positions[a];
         const glm::dvec3& pb = s_.positions[b];
-        const glm::dvec3 straight = pa + u * (pb - pa);
         const glm::dvec3& na = s_.cappedNormals[a];
         const glm::dvec3& nb = s_.cappedNormals[b];
-        glm::dvec3 n = (1.0 - u) * na + u * nb;
-        n -= glm::dot(n, normal_) * normal_;
-        const double norm = glm::length(n);
-        if (glm::dot(na, nb) < kCreaseCosine || !(norm > 0.0)) {
-            return straight;  // a crease the normals do not describe, or no normal
+        CutPoint cut{.point = pa + u * (pb - pa), .normal = (1.0 - u) * na + u * nb};
+        cut.normal -= glm::dot(cut.normal, normal_) * normal_;
+        const double norm = glm::length(cut.normal);
+        if (!(norm > 0.0)) {
+            cut.normal = glm::dvec3(0.0);  // no normal: cut straight
+            return cut;
         }
-        const double sag = glm::dot(pb - pa, nb - na) / 8.0;
-        return straight + 4.0 * u * (1.0 - u) * sag * (n / norm);
+        cut.normal /= norm;
+        if (glm::dot(na, nb) >= kCreaseCosine) {  // not a crease the normals do not describe
+            const double sag = glm::dot(pb - pa, nb - na) / 8.0;
+            cut.point += 4.0 * u * (1.0 - u) * sag * cut.normal;
+        }
+        return cut;
     }
 
     void addTriangle(const detail::Triangle& t) {
@@ -146,12 +158,7 @@ class PlaneCut {
             const EdgeKey key = edgeKey(a, b);
             const auto [at, added] = points_.try_emplace(key);
             if (added) {
-                const double u = da / (da - db);
-                at->second.point = onCurvedEdge(a, b, u);
-                glm::dvec3 n = (1.0 - u) * s_.cappedNormals[a] + u * s_.cappedNormals[b];
-                n -= glm::dot(n, normal_) * normal_;
-                const double norm = glm::length(n);
-                at->second.normal = norm > 0.0 ? n / norm : glm::dvec3(0.0);
+                at->second = onCurvedEdge(a, b, da / (da - db));
             }
             crossed[static_cast<std::size_t>(count++)] = key;
         }
@@ -164,10 +171,6 @@ class PlaneCut {
     const PreparedSurface& s_;
     glm::dvec3 point_;
     glm::dvec3 normal_;
-    struct CutPoint {
-        glm::dvec3 point{0.0};
-        glm::dvec3 normal{0.0};  ///< the wall's, in the plane, unit
-    };
     std::unordered_map<EdgeKey, CutPoint> points_;
     std::unordered_map<EdgeKey, std::vector<EdgeKey>> links_;
 };
