@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <string>
 #include <utility>
 
@@ -219,10 +220,20 @@ double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_
     return g.radii[path.front()];
 }
 
+/// The source end when none is given, and on a closed surface the other
+/// tips found with it.
+struct DefaultSource {
+    ResolvedEnd source;
+    /// The tips of the other vessels (a closed surface's source is the tip
+    /// of its widest vessel, found among all of them); nullopt when the
+    /// source is an open end.
+    std::optional<std::vector<std::uint32_t>> otherTips;
+};
+
 /// Source end when none is given: the widest open end, or on a closed
 /// surface the tip of the widest vessel.
-ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
-                          const SurfaceIndex& surface, const Progress& progress) {
+DefaultSource defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
+                            const SurfaceIndex& surface, const Progress& progress) {
     int widest = -1;
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
         if (!s.loops[i].hole &&
@@ -232,7 +243,7 @@ ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
         }
     }
     if (widest >= 0) {
-        return loopEnd(s, g, widest);
+        return {.source = loopEnd(s, g, widest), .otherTips = std::nullopt};
     }
     const auto widestVertex = static_cast<std::uint32_t>(
         std::max_element(g.radii.begin(), g.radii.end()) - g.radii.begin());
@@ -242,16 +253,18 @@ ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
     if (tips.empty()) {
         fail(s, "the surface has no vessel end to start from");
     }
-    std::uint32_t best = tips.front();
+    std::size_t best = 0;
     double bestRadius = 0.0;
-    for (const std::uint32_t tip : tips) {
-        const double r = radiusBehindTip(g, fromWidest, tip);
+    for (std::size_t i = 0; i < tips.size(); ++i) {
+        const double r = radiusBehindTip(g, fromWidest, tips[i]);
         if (r > bestRadius) {
             bestRadius = r;
-            best = tip;
+            best = i;
         }
     }
-    return tipEnd(g, surface, fromWidest, best);
+    DefaultSource result{.source = tipEnd(g, surface, fromWidest, tips[best]), .otherTips = tips};
+    result.otherTips->erase(result.otherTips->begin() + static_cast<std::ptrdiff_t>(best));
+    return result;
 }
 
 /// One source-to-target path, smoothed and measured, at the output step.
@@ -319,8 +332,7 @@ std::vector<std::uint32_t> trimmedAtTheEnds(const VoronoiGraph& g, const Resolve
     return vertices;
 }
 
-PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
-                        const ResolvedEnd& source, const ResolvedEnd& target,
+PathProfile profilePath(const VoronoiGraph& g, const ResolvedEnd& source, const ResolvedEnd& target,
                         const std::vector<std::uint32_t>& vertices, double step) {
     PathProfile profile;
     profile.vertices = trimmedAtTheEnds(g, source, target, vertices);
@@ -354,14 +366,8 @@ PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
     const std::vector<double> at = detail::arcLengths(positions);
     const std::vector<glm::dvec3> t = detail::tangents(positions);
     const std::vector<glm::dvec3> normals = detail::rotationMinimisingNormals(positions, t);
-    std::vector<double> radius(positions.size());
-    glm::dvec3 hint(0.0);  // the previous point's nearest surface point
     std::vector<double> scale(positions.size());
     for (std::size_t i = 0; i < positions.size(); ++i) {
-        if (i == 0) {
-            hint = surface.nearest(positions[0]).point;
-        }
-        radius[i] = surface.distance(positions[i], hint);
         scale[i] = std::max(2.0 * step,
                             detail::interpolate(profile.smoothArc, sigma, at[i]) / kSmoothingRadii);
     }
@@ -371,7 +377,6 @@ PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
     for (std::size_t i = 0; i < positions.size(); ++i) {
         CenterlinePoint& p = profile.points[i];
         p.position = positions[i];
-        p.radiusMm = radius[i];
         p.abscissaMm = at[i];
         p.tangent = t[i];
         p.normal = normals[i];
@@ -380,6 +385,24 @@ PathProfile profilePath(const VoronoiGraph& g, const SurfaceIndex& surface,
     }
     profile.abscissae = at;
     return profile;
+}
+
+/// Each branch point's inscribed-sphere radius: its distance to the surface
+/// (measured once per point of the tree, not once per path through it).
+void measureRadii(const SurfaceIndex& surface, std::vector<Branch>& branches,
+                  const Progress& progress) {
+    parallelFor(
+        0, static_cast<long>(branches.size()), 1,
+        [&](long begin, long end) {
+            for (long b = begin; b < end; ++b) {
+                auto& points = branches[static_cast<std::size_t>(b)].points;
+                glm::dvec3 hint = surface.nearest(points.front().position).point;
+                for (CenterlinePoint& p : points) {
+                    p.radiusMm = surface.distance(p.position, hint);
+                }
+            }
+        },
+        progress.stopToken());
 }
 
 /// The points of `profile` over [from, to] every `step`, both ends included.
@@ -524,16 +547,24 @@ void validate(const CenterlineOptions& options) {
     }
 }
 
-/// The targets: the given ones, or every other open end and every tip the
-/// paths to them leave uncovered.
+/// The targets: the given ones; on a closed surface whose source was
+/// found among its tips, the other tips (`knownTips`); else every other open
+/// end and every tip the paths to them leave uncovered.
 std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiGraph& g,
                                         const SurfaceIndex& surface, const ResolvedEnd& source,
                                         const PathTree& tree, const CenterlineOptions& options,
+                                        const std::optional<std::vector<std::uint32_t>>& knownTips,
                                         const Progress& progress) {
     std::vector<ResolvedEnd> targets;
     if (!options.targets.empty()) {
         for (const glm::dvec3& point : options.targets) {
             targets.push_back(givenEnd(s, g, surface, point, "target"));
+        }
+        return targets;
+    }
+    if (knownTips) {
+        for (const std::uint32_t tip : *knownTips) {
+            targets.push_back(tipEnd(g, surface, tree, tip));
         }
         return targets;
     }
@@ -637,14 +668,19 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
                              const CenterlineOptions& options, const Progress& progress) {
     progress.report(0.6, "Finding the vessels' ends");
 
-    const ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")
-                                              : defaultSource(s, g, surface, progress);
+    DefaultSource found;
+    if (options.source) {
+        found.source = givenEnd(s, g, surface, *options.source, "source");
+    } else {
+        found = defaultSource(s, g, surface, progress);
+    }
+    const ResolvedEnd& source = found.source;
     if (source.vertex == kNone) {
         fail(s, "no inscribed sphere touches the source end");
     }
     const PathTree tree = detail::minimalPaths(g, source.vertex, progress);
     std::vector<ResolvedEnd> targets =
-        resolveTargets(s, g, surface, source, tree, options, progress);
+        resolveTargets(s, g, surface, source, tree, options, found.otherTips, progress);
     if (targets.empty()) {
         fail(s, "the surface has only one vessel end; a centreline needs two");
     }
@@ -675,8 +711,8 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         [&](long begin, long end) {
             for (long i = begin; i < end; ++i) {
                 const ResolvedEnd& target = targets[static_cast<std::size_t>(i)];
-                paths[static_cast<std::size_t>(i)] = profilePath(
-                    g, surface, source, target, tree.pathTo(target.vertex), options.stepMm);
+                paths[static_cast<std::size_t>(i)] =
+                    profilePath(g, source, target, tree.pathTo(target.vertex), options.stepMm);
             }
         },
         progress.stopToken());
@@ -685,6 +721,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         result.ends.push_back(targets[i].end);
     }
     result.branches = orderBranches(splitIntoBranches(paths, g.size()), paths, options.stepMm);
+    measureRadii(surface, result.branches, progress);
     progress.report(1.0, "Centrelines done");
     return result;
 }

@@ -106,36 +106,61 @@ std::vector<std::uint32_t> PathTree::pathTo(std::uint32_t v) const {
 
 PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source, const Progress& progress) {
     const std::size_t n = graph.size();
-    PathTree tree;
-    tree.source = source;
-    tree.cost.assign(n, std::numeric_limits<double>::infinity());
-    tree.lengthMm.assign(n, 0.0);
-    tree.previous.assign(n, kNone);
+    // One record per vertex (a relaxation touches one cache line, not
+    // three), split into the tree's arrays at the end.
+    struct Label {
+        double cost;
+        double lengthMm;
+        std::uint32_t previous;
+    };
+    std::vector<Label> labels(n, Label{std::numeric_limits<double>::infinity(), 0.0, kNone});
+    std::vector<double> inverseRadius(n);
+    for (std::size_t v = 0; v < n; ++v) {
+        inverseRadius[v] = 0.5 / graph.radii[v];
+    }
     using Entry = std::pair<double, std::uint32_t>;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<>> queue;
-    tree.cost[source] = 0.0;
-    queue.emplace(0.0, source);
+    std::vector<Entry> heap;
+    heap.reserve(n);
+    const auto push = [&](double cost, std::uint32_t v) {
+        heap.emplace_back(cost, v);
+        std::push_heap(heap.begin(), heap.end(), std::greater<>());
+    };
+    labels[source].cost = 0.0;
+    push(0.0, source);
     std::size_t settled = 0;
-    while (!queue.empty()) {
-        const auto [cost, v] = queue.top();
-        queue.pop();
-        if (cost > tree.cost[v]) {
+    while (!heap.empty()) {
+        std::pop_heap(heap.begin(), heap.end(), std::greater<>());
+        const auto [cost, v] = heap.back();
+        heap.pop_back();
+        if (cost > labels[v].cost) {
             continue;
         }
         if (++settled % 65536 == 0) {
             progress.throwIfCancelled();
         }
+        const glm::dvec3 at = graph.centres[v];
+        const double length0 = labels[v].lengthMm;
+        const double inverse0 = inverseRadius[v];
         for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e) {
             const std::uint32_t w = graph.neighbours[e];
-            const double length = glm::length(graph.centres[w] - graph.centres[v]);
-            const double next = cost + length * 0.5 * (1.0 / graph.radii[v] + 1.0 / graph.radii[w]);
-            if (next < tree.cost[w]) {
-                tree.cost[w] = next;
-                tree.lengthMm[w] = tree.lengthMm[v] + length;
-                tree.previous[w] = v;
-                queue.emplace(next, w);
+            const double length = glm::length(graph.centres[w] - at);
+            const double next = cost + length * (inverse0 + inverseRadius[w]);
+            Label& label = labels[w];
+            if (next < label.cost) {
+                label = Label{next, length0 + length, v};
+                push(next, w);
             }
         }
+    }
+    PathTree tree;
+    tree.source = source;
+    tree.cost.resize(n);
+    tree.lengthMm.resize(n);
+    tree.previous.resize(n);
+    for (std::size_t v = 0; v < n; ++v) {
+        tree.cost[v] = labels[v].cost;
+        tree.lengthMm[v] = labels[v].lengthMm;
+        tree.previous[v] = labels[v].previous;
     }
     return tree;
 }

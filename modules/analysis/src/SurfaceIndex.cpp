@@ -82,23 +82,75 @@ std::optional<glm::dvec3> SurfaceIndex::firstHit(const glm::dvec3& origin,
     return std::nullopt;
 }
 
+namespace {
+
+/// A plane cut limited to a box: CGAL's AABB traversal opens only the nodes
+/// whose boxes meet the box and straddle the plane, and lists the triangles
+/// whose corners lie on both sides of it (a corner on the plane counts as
+/// above, as the cut that uses them counts it) and whose boxes meet the box.
+struct PlaneInBox {
+    glm::dvec3 point;
+    glm::dvec3 normal;
+    CGAL::Bbox_3 box;
+};
+
+class PlaneInBoxTraversal {
+  public:
+    PlaneInBoxTraversal(Iterator first, std::vector<std::uint32_t>& out)
+        : first_(first), out_(out) {}
+
+    // The names below are the ones CGAL's AABB traversal calls.
+    // NOLINTNEXTLINE(readability-identifier-naming)
+    [[nodiscard]] static constexpr bool go_further() { return true; }
+
+    void intersection(const PlaneInBox& q, const Primitive& primitive) {
+        const Triangle3& t = *primitive.id();
+        if (!CGAL::do_overlap(q.box, t.bbox())) {
+            return;
+        }
+        int above = 0;
+        for (int k = 0; k < 3; ++k) {
+            const auto& v = t.vertex(k);
+            above += glm::dot(glm::dvec3(v.x(), v.y(), v.z()) - q.point, q.normal) >= 0.0 ? 1 : 0;
+        }
+        if (above == 1 || above == 2) {
+            out_.push_back(static_cast<std::uint32_t>(primitive.id() - first_));
+        }
+    }
+
+    // NOLINTNEXTLINE(readability-identifier-naming)
+    [[nodiscard]] static bool do_intersect(const PlaneInBox& q,
+                                           const CGAL::AABB_node<Traits>& node) {
+        const CGAL::Bbox_3& b = node.bbox();
+        if (!CGAL::do_overlap(q.box, b)) {
+            return false;
+        }
+        const glm::dvec3 lo(b.xmin(), b.ymin(), b.zmin());
+        const glm::dvec3 hi(b.xmax(), b.ymax(), b.zmax());
+        const glm::dvec3 centre = 0.5 * (lo + hi);
+        const glm::dvec3 half = 0.5 * (hi - lo);
+        const double reach = glm::dot(glm::abs(q.normal), half);
+        const double offset = std::abs(glm::dot(centre - q.point, q.normal));
+        // A margin for rounding: a node that only grazes the plane is opened.
+        return offset <= reach * (1.0 + 1e-9) + 1e-9 * glm::length(centre - q.point);
+    }
+
+  private:
+    Iterator first_;
+    std::vector<std::uint32_t>& out_;
+};
+
+}  // namespace
+
 std::vector<std::uint32_t> SurfaceIndex::trianglesOnPlane(const glm::dvec3& point,
                                                           const glm::dvec3& normal,
                                                           const glm::dvec3& lo,
                                                           const glm::dvec3& hi) const {
-    // The tree prunes by the plane (only the boxes it crosses are opened);
-    // the triangles found are then kept to the box around the point.
-    const Kernel::Plane_3 plane(toPoint(point), Kernel::Vector_3(normal.x, normal.y, normal.z));
-    std::vector<Iterator> hits;
-    tree_->tree.all_intersected_primitives(plane, std::back_inserter(hits));
-    const CGAL::Bbox_3 box(lo.x, lo.y, lo.z, hi.x, hi.y, hi.z);
     std::vector<std::uint32_t> crossing;
-    crossing.reserve(hits.size());
-    for (const Iterator& hit : hits) {
-        if (CGAL::do_overlap(box, hit->bbox())) {
-            crossing.push_back(static_cast<std::uint32_t>(hit - tree_->triangles.cbegin()));
-        }
-    }
+    PlaneInBoxTraversal traversal(tree_->triangles.cbegin(), crossing);
+    tree_->tree.traversal(
+        PlaneInBox{.point = point, .normal = normal, .box = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}},
+        traversal);
     return crossing;
 }
 

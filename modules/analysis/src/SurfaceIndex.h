@@ -42,9 +42,12 @@ class SurfaceIndex {
     [[nodiscard]] std::optional<glm::dvec3> firstHit(const glm::dvec3& origin,
                                                      const glm::dvec3& direction) const;
 
-    /// The triangles the plane through `point` with normal `normal` crosses
-    /// or touches whose bounding boxes meet the box [lo, hi];
-    /// indices into surface.triangles, in no order.
+    /// The triangles that have corners on both sides of the plane through
+    /// `point` with normal `normal` (a corner on the plane counts as on the
+    /// side the normal points to, as the section's cut counts it) and whose
+    /// bounding boxes meet the box [lo, hi]; indices into
+    /// surface.triangles, in no order. Only the tree's nodes that meet the
+    /// box and straddle the plane are opened.
     [[nodiscard]] std::vector<std::uint32_t> trianglesOnPlane(const glm::dvec3& point,
                                                               const glm::dvec3& normal,
                                                               const glm::dvec3& lo,

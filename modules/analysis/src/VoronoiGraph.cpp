@@ -7,7 +7,10 @@
 #include <CGAL/Triangulation_cell_base_with_info_3.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numeric>
 #include <utility>
 
 #include "vv/analysis/AnalysisError.h"
@@ -55,6 +58,44 @@ Delaunay triangulate(const PreparedSurface& s, const std::vector<std::uint32_t>&
         points.emplace_back(Kernel::Point_3(p.x, p.y, p.z), i);
     }
     return {points.begin(), points.end()};
+}
+
+/// Spreads the low 21 bits of `x` to every third bit.
+std::uint64_t spreadBits(std::uint64_t x) {
+    x &= 0x1fffffULL;
+    x = (x | x << 32U) & 0x1f00000000ffffULL;
+    x = (x | x << 16U) & 0x1f0000ff0000ffULL;
+    x = (x | x << 8U) & 0x100f00f00f00f00fULL;
+    x = (x | x << 4U) & 0x10c30c30c30c30c3ULL;
+    x = (x | x << 2U) & 0x1249249249249249ULL;
+    return x;
+}
+
+/// Per point, its rank along a Z-order (Morton) curve through the points'
+/// bounding box, 2^21 steps per axis.
+std::vector<std::uint32_t> zOrderRanks(const std::vector<glm::dvec3>& points) {
+    glm::dvec3 lo(std::numeric_limits<double>::max());
+    glm::dvec3 hi(std::numeric_limits<double>::lowest());
+    for (const glm::dvec3& p : points) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300});
+    const double scale = 2097151.0 / extent;
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const glm::dvec3 q = glm::clamp((points[i] - lo) * scale, 0.0, 2097151.0);
+        keys[i] = {spreadBits(static_cast<std::uint64_t>(q.x)) |
+                       spreadBits(static_cast<std::uint64_t>(q.y)) << 1U |
+                       spreadBits(static_cast<std::uint64_t>(q.z)) << 2U,
+                   static_cast<std::uint32_t>(i)};
+    }
+    std::sort(keys.begin(), keys.end());
+    std::vector<std::uint32_t> rank(points.size());
+    for (std::size_t i = 0; i < keys.size(); ++i) {
+        rank[keys[i].second] = static_cast<std::uint32_t>(i);
+    }
+    return rank;
 }
 
 }  // namespace
@@ -107,6 +148,31 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") +
                                           "the surface encloses no space (no inside was found)");
     }
+    // Renumbered along a Z-order curve: the walks over the graph (minimal
+    // paths, tips, covering) then read neighbouring memory, not the cells'
+    // order in the triangulation's storage.
+    const std::vector<std::uint32_t> rank = zOrderRanks(graph.centres);
+    {
+        std::vector<glm::dvec3> centres(graph.centres.size());
+        std::vector<double> radii(graph.radii.size());
+        for (std::size_t v = 0; v < rank.size(); ++v) {
+            centres[rank[v]] = graph.centres[v];
+            radii[rank[v]] = graph.radii[v];
+        }
+        graph.centres = std::move(centres);
+        graph.radii = std::move(radii);
+        for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
+             ++cell) {
+            if (cell->info() != kOutside) {
+                cell->info() = rank[cell->info()];
+            }
+        }
+        for (std::uint32_t& pole : graph.poles) {
+            if (pole != kOutside) {
+                pole = rank[pole];
+            }
+        }
+    }
     // A vertex left out of the diagram has its representative's pole.
     for (std::size_t v = 0; v < graph.poles.size(); ++v) {
         const std::uint32_t r = samples.representative[v];
@@ -115,31 +181,31 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         }
     }
     progress.report(0.8, "Joining the Voronoi diagram");
+    // Compressed rows in two passes over the cells (count, then fill): no
+    // list of edge pairs as large as the rows themselves.
     graph.offsets.assign(graph.centres.size() + 1, 0);
-    std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
-    edges.reserve(graph.centres.size() * 4);
-    for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end(); ++cell) {
-        const std::uint32_t a = cell->info();
-        if (a == kOutside) {
-            continue;
-        }
-        for (int i = 0; i < 4; ++i) {
-            const auto neighbour = cell->neighbor(i);
-            if (delaunay.is_infinite(neighbour) || neighbour->info() == kOutside) {
+    const auto forEachEdge = [&](const auto& visit) {
+        for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
+             ++cell) {
+            const std::uint32_t a = cell->info();
+            if (a == kOutside) {
                 continue;
             }
-            edges.emplace_back(a, neighbour->info());
-            ++graph.offsets[a + 1];
+            for (int i = 0; i < 4; ++i) {
+                const auto neighbour = cell->neighbor(i);
+                if (!delaunay.is_infinite(neighbour) && neighbour->info() != kOutside) {
+                    visit(a, neighbour->info());
+                }
+            }
         }
-    }
+    };
+    forEachEdge([&](std::uint32_t a, std::uint32_t) { ++graph.offsets[a + 1]; });
     for (std::size_t v = 1; v < graph.offsets.size(); ++v) {
         graph.offsets[v] += graph.offsets[v - 1];
     }
-    graph.neighbours.resize(edges.size());
+    graph.neighbours.resize(graph.offsets.back());
     std::vector<std::uint32_t> fill(graph.offsets.begin(), graph.offsets.end() - 1);
-    for (const auto& [a, b] : edges) {
-        graph.neighbours[fill[a]++] = b;
-    }
+    forEachEdge([&](std::uint32_t a, std::uint32_t b) { graph.neighbours[fill[a]++] = b; });
     return graph;
 }
 

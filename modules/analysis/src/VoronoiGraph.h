@@ -15,6 +15,8 @@
 
 namespace vv::analysis::detail {
 
+/// The vertices are numbered along a Z-order curve through their centres,
+/// so that the walks over the graph read neighbouring memory.
 struct VoronoiGraph {
     std::vector<glm::dvec3> centres;
     std::vector<double> radii;
