@@ -88,6 +88,39 @@ INSTANTIATE_TEST_SUITE_P(Angles, YBifurcation, ::testing::Values(30.0, 60.0, 90.
                              return std::to_string(static_cast<int>(angle.param)) + "deg";
                          });
 
+// A coarse segmentation: the Y decimated to 1000 triangles (its straight
+// tubes become a few rings joined by triangles up to 50 mm long, 10 of the
+// parent's radii). Without the points added on such facets the diagram had
+// no axis along the parent, the source went to a daughter's tip and the
+// "bifurcation angle" was 45 to 107 degrees off.
+class CoarseYBifurcation : public ::testing::TestWithParam<double> {};
+
+TEST_P(CoarseYBifurcation, IsAnalysedAsTheYItIsAndTheAngleIsWithinOneDegree) {
+    BifurcationPhantomOptions options;
+    options.angleDeg = GetParam();
+    options.targetTriangles = 1000;
+    const BifurcationPhantom truth = makeBifurcationPhantom(options);
+    ASSERT_LE(truth.mesh.triangleCount(), 1100U);
+    const auto tree = computeCenterlines(truth.mesh);
+    ASSERT_EQ(tree.branches.size(), 3U);
+    EXPECT_NEAR(tree.ends[0].position.z, -options.parentLengthMm - options.parentRadiusMm, 1.5);
+    const auto bifurcations = findBifurcations(tree);
+    ASSERT_EQ(bifurcations.size(), 1U);
+    EXPECT_NEAR(bifurcations[0].angleDeg, options.angleDeg, 1.0);
+    EXPECT_NEAR(glm::dot(bifurcations[0].parentDirection, truth.parentDirection), 1.0, 1e-3);
+    bool noted = false;
+    for (const std::string& note : tree.notes) {
+        noted = noted || note.find("points added") != std::string::npos;
+    }
+    EXPECT_TRUE(noted) << "the user is told the diagram was built from added points";
+    RecordProperty("angle_error_deg", std::to_string(bifurcations[0].angleDeg - options.angleDeg));
+}
+
+INSTANTIATE_TEST_SUITE_P(Angles, CoarseYBifurcation, ::testing::Values(30.0, 60.0, 90.0),
+                         [](const ::testing::TestParamInfo<double>& angle) {
+                             return std::to_string(static_cast<int>(angle.param)) + "deg";
+                         });
+
 // The surface split into branches: the parent's wall below the junction,
 // each daughter's wall along it, every vertex some branch; the array goes
 // the categorical-label way (integer, names).

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <optional>
 #include <string>
 #include <utility>
 
@@ -50,6 +49,16 @@ std::string pointText(const glm::dvec3& p) {
     return "(" + fixedText(p.x, 2) + ", " + fixedText(p.y, 2) + ", " + fixedText(p.z, 2) + ")";
 }
 
+/// " (... is the surface in mm?)" when the surface's size says it may not
+/// be in mm (under 2 or over 5000 across, as the command line warns), else
+/// empty: a failure on such a surface most likely has that cause.
+std::string unitsHint(const PreparedSurface& s) {
+    if (s.diagonalMm >= 2.0 && s.diagonalMm <= 5000.0) {
+        return {};
+    }
+    return " (the surface is " + fixedText(s.diagonalMm, 2) + " mm across: is the surface in mm?)";
+}
+
 [[noreturn]] void fail(const PreparedSurface& s, const std::string& problem) {
     throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") + problem);
 }
@@ -60,11 +69,29 @@ std::string pointText(const glm::dvec3& p) {
 /// vessel).
 constexpr double kHoleRatio = 1.5;
 
+/// The pole of a loop's cap: the largest inscribed sphere touching the
+/// cap's centre, else (no inside tetrahedron has the centre as a corner, as
+/// when the wall next to the rim had points added) the largest touching the
+/// rim; kNone when neither has one.
+std::uint32_t loopPole(const detail::BoundaryLoop& loop, const VoronoiGraph& g) {
+    std::uint32_t pole = g.poles[loop.capCentre];
+    if (pole != kNone) {
+        return pole;
+    }
+    for (const std::uint32_t v : loop.vertices) {
+        const std::uint32_t p = g.poles[v];
+        if (p != kNone && (pole == kNone || g.radii[p] > g.radii[pole])) {
+            pole = p;
+        }
+    }
+    return pole;
+}
+
 /// Marks the loops that are holes and notes them.
 void markHoles(PreparedSurface& s, const VoronoiGraph& g) {
     int holes = 0;
     for (detail::BoundaryLoop& loop : s.loops) {
-        const std::uint32_t pole = g.poles[loop.capCentre];
+        const std::uint32_t pole = loopPole(loop, g);
         loop.hole = pole != kNone && g.radii[pole] > kHoleRatio * loop.radiusMm;
         holes += loop.hole ? 1 : 0;
     }
@@ -109,7 +136,7 @@ ResolvedEnd loopEnd(const PreparedSurface& s, const VoronoiGraph& g, int loop) {
     r.end.position = l.centre;
     r.end.requested = l.centre;
     r.end.radiusMm = l.radiusMm;
-    r.vertex = g.poles[l.capCentre];
+    r.vertex = loopPole(l, g);
     r.loop = loop;
     return r;
 }
@@ -220,20 +247,10 @@ double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_
     return g.radii[path.front()];
 }
 
-/// The source end when none is given, and on a closed surface the other
-/// tips found with it.
-struct DefaultSource {
-    ResolvedEnd source;
-    /// The tips of the other vessels (a closed surface's source is the tip
-    /// of its widest vessel, found among all of them); nullopt when the
-    /// source is an open end.
-    std::optional<std::vector<std::uint32_t>> otherTips;
-};
-
 /// Source end when none is given: the widest open end, or on a closed
 /// surface the tip of the widest vessel.
-DefaultSource defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
-                            const SurfaceIndex& surface, const Progress& progress) {
+ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
+                          const SurfaceIndex& surface, const Progress& progress) {
     int widest = -1;
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
         if (!s.loops[i].hole &&
@@ -243,7 +260,7 @@ DefaultSource defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
         }
     }
     if (widest >= 0) {
-        return {.source = loopEnd(s, g, widest), .otherTips = std::nullopt};
+        return loopEnd(s, g, widest);
     }
     const auto widestVertex = static_cast<std::uint32_t>(
         std::max_element(g.radii.begin(), g.radii.end()) - g.radii.begin());
@@ -262,9 +279,7 @@ DefaultSource defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
             best = i;
         }
     }
-    DefaultSource result{.source = tipEnd(g, surface, fromWidest, tips[best]), .otherTips = tips};
-    result.otherTips->erase(result.otherTips->begin() + static_cast<std::ptrdiff_t>(best));
-    return result;
+    return tipEnd(g, surface, fromWidest, tips[best]);
 }
 
 /// One source-to-target path, smoothed and measured, at the output step.
@@ -547,24 +562,16 @@ void validate(const CenterlineOptions& options) {
     }
 }
 
-/// The targets: the given ones; on a closed surface whose source was
-/// found among its tips, the other tips (`knownTips`); else every other open
-/// end and every tip the paths to them leave uncovered.
+/// The targets: the given ones, or every other open end and every tip the
+/// paths to them leave uncovered.
 std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiGraph& g,
                                         const SurfaceIndex& surface, const ResolvedEnd& source,
                                         const PathTree& tree, const CenterlineOptions& options,
-                                        const std::optional<std::vector<std::uint32_t>>& knownTips,
                                         const Progress& progress) {
     std::vector<ResolvedEnd> targets;
     if (!options.targets.empty()) {
         for (const glm::dvec3& point : options.targets) {
             targets.push_back(givenEnd(s, g, surface, point, "target"));
-        }
-        return targets;
-    }
-    if (knownTips) {
-        for (const std::uint32_t tip : *knownTips) {
-            targets.push_back(tipEnd(g, surface, tree, tip));
         }
         return targets;
     }
@@ -659,6 +666,14 @@ VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
             " mm of one kept; the chords between kept points lie within 0.8 % of the radius of "
             "the wall); the sections use every point");
     }
+    if (!samples.addedPositions.empty()) {
+        s.notes.push_back("the surface is coarser than its vessels need (facets longer than " +
+                          fixedText(kCoarseFacetRadii, 2) +
+                          " of the local radius): the Voronoi diagram was built with " +
+                          std::to_string(samples.addedPositions.size()) +
+                          " points added on those facets, " + fixedText(kDenseSpacingPerRadius, 3) +
+                          " of the local radius apart; the sections cut the facets as they are");
+    }
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     markHoles(s, g);
     return g;
@@ -668,19 +683,14 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
                              const CenterlineOptions& options, const Progress& progress) {
     progress.report(0.6, "Finding the vessels' ends");
 
-    DefaultSource found;
-    if (options.source) {
-        found.source = givenEnd(s, g, surface, *options.source, "source");
-    } else {
-        found = defaultSource(s, g, surface, progress);
-    }
-    const ResolvedEnd& source = found.source;
+    const ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")
+                                              : defaultSource(s, g, surface, progress);
     if (source.vertex == kNone) {
         fail(s, "no inscribed sphere touches the source end");
     }
     const PathTree tree = detail::minimalPaths(g, source.vertex, progress);
     std::vector<ResolvedEnd> targets =
-        resolveTargets(s, g, surface, source, tree, options, found.otherTips, progress);
+        resolveTargets(s, g, surface, source, tree, options, progress);
     if (targets.empty()) {
         fail(s, "the surface has only one vessel end; a centreline needs two");
     }
@@ -688,7 +698,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         if (target.vertex == kNone || !tree.reaches(target.vertex)) {
             fail(s, "no path inside the surface joins the source " +
                         pointText(source.end.position) + " and the end " +
-                        pointText(target.end.position));
+                        pointText(target.end.position) + unitsHint(s));
         }
     }
     checkPathLengths(s, g, tree, source, targets, options.stepMm);

@@ -28,16 +28,22 @@ using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 
 constexpr std::uint32_t kOutside = UINT32_MAX;
 
+/// Below this volume, relative to the product of its edges from one corner,
+/// a tetrahedron is flat to the digits of a double: its circumcentre is
+/// rounding noise (four points on one facet of a coarse surface give one
+/// anywhere, e.g. 60 mm outside a 5 mm tube).
+constexpr double kFlatVolume = 1e-10;
+
 /// The circumcentre of the tetrahedron (a, b, c, d), computed relative to
 /// `a` (which keeps the digits of small tetrahedra far from the origin);
-/// nullopt when it is flat.
+/// nullopt when it is flat (kFlatVolume).
 std::optional<glm::dvec3> circumcentre(const glm::dvec3& a, const glm::dvec3& b,
                                        const glm::dvec3& c, const glm::dvec3& d) {
     const glm::dvec3 u = b - a;
     const glm::dvec3 v = c - a;
     const glm::dvec3 w = d - a;
     const double det = 2.0 * glm::dot(u, glm::cross(v, w));
-    if (det == 0.0 || !std::isfinite(det)) {
+    if (!(std::abs(det) > 2.0 * kFlatVolume * glm::length(u) * glm::length(v) * glm::length(w))) {
         return std::nullopt;
     }
     const glm::dvec3 offset =
@@ -50,11 +56,32 @@ std::optional<glm::dvec3> circumcentre(const glm::dvec3& a, const glm::dvec3& b,
     return a + offset;
 }
 
-Delaunay triangulate(const PreparedSurface& s, const std::vector<std::uint32_t>& kept) {
+/// The samples' points and normals by id: the capped surface's vertices,
+/// then the points added on coarse facets.
+class SamplePoints {
+  public:
+    SamplePoints(const PreparedSurface& s, const VoronoiSamples& samples)
+        : s_(s), samples_(samples), first_(s.cappedPositions.size()) {}
+
+    [[nodiscard]] const glm::dvec3& position(std::uint32_t id) const {
+        return id < first_ ? s_.cappedPositions[id] : samples_.addedPositions[id - first_];
+    }
+    [[nodiscard]] const glm::dvec3& normal(std::uint32_t id) const {
+        return id < first_ ? s_.cappedNormals[id] : samples_.addedNormals[id - first_];
+    }
+    [[nodiscard]] bool onSurfaceVertex(std::uint32_t id) const { return id < first_; }
+
+  private:
+    const PreparedSurface& s_;
+    const VoronoiSamples& samples_;
+    std::size_t first_;
+};
+
+Delaunay triangulate(const SamplePoints& samplePoints, const std::vector<std::uint32_t>& kept) {
     std::vector<std::pair<Kernel::Point_3, std::uint32_t>> points;
     points.reserve(kept.size());
     for (const std::uint32_t i : kept) {
-        const glm::dvec3& p = s.cappedPositions[i];
+        const glm::dvec3& p = samplePoints.position(i);
         points.emplace_back(Kernel::Point_3(p.x, p.y, p.z), i);
     }
     return {points.begin(), points.end()};
@@ -103,7 +130,8 @@ std::vector<std::uint32_t> zOrderRanks(const std::vector<glm::dvec3>& points) {
 VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& samples,
                                const Progress& progress) {
     progress.report(0.0, "Tetrahedralising the surface");
-    Delaunay delaunay = triangulate(s, samples.kept);
+    const SamplePoints points(s, samples);
+    Delaunay delaunay = triangulate(points, samples.kept);
     progress.report(0.5, "Finding the inside of the surface");
     VoronoiGraph graph;
     graph.poles.assign(s.cappedPositions.size(), kOutside);
@@ -117,18 +145,18 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         for (int i = 0; i < 4; ++i) {
             ids[i] = cell->vertex(i)->info();
         }
-        const auto& p = s.cappedPositions;
-        const auto centre = circumcentre(p[ids[0]], p[ids[1]], p[ids[2]], p[ids[3]]);
+        const auto centre = circumcentre(points.position(ids[0]), points.position(ids[1]),
+                                         points.position(ids[2]), points.position(ids[3]));
         if (!centre) {
             continue;
         }
-        const double radius = glm::length(*centre - p[ids[0]]);
+        const double radius = glm::length(*centre - points.position(ids[0]));
         if (!(radius < s.diagonalMm)) {
             continue;
         }
         bool inside = true;
         for (const std::uint32_t id : ids) {
-            inside = inside && glm::dot(s.cappedNormals[id], *centre - p[id]) < 0.0;
+            inside = inside && glm::dot(points.normal(id), *centre - points.position(id)) < 0.0;
         }
         if (!inside) {
             continue;
@@ -138,6 +166,9 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         graph.centres.push_back(*centre);
         graph.radii.push_back(radius);
         for (const std::uint32_t id : ids) {
+            if (!points.onSurfaceVertex(id)) {
+                continue;  // an added point has no pole
+            }
             std::uint32_t& pole = graph.poles[id];
             if (pole == kOutside || graph.radii[pole] < radius) {
                 pole = index;

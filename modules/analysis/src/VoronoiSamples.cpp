@@ -20,9 +20,24 @@ constexpr double kCoarserThan = 2.0;
 /// A vertex whose normal is more than 15 degrees from its averaged normal
 /// lies on a rough wall.
 const double kRoughCosine = std::cos(15.0 * std::numbers::pi / 180.0);
-}  // namespace
+/// A grid cell: its level (side = finest * 2^level) and its integer
+/// coordinates.
+using Key = std::tuple<int, std::int64_t, std::int64_t, std::int64_t>;
+struct KeyHash {
+    std::size_t operator()(const Key& k) const noexcept {
+        const auto [l, x, y, z] = k;
+        auto h = static_cast<std::size_t>(l);
+        for (const std::int64_t c : {x, y, z}) {
+            h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(c);
+        }
+        return h;
+    }
+};
 
-VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& progress) {
+/// The reduction part of chooseVoronoiSamples(); `radius` receives the
+/// local radius per surface vertex.
+VoronoiSamples reducedSamples(const PreparedSurface& s, std::vector<double>& radius,
+                              const Progress& progress) {
     const std::size_t capped = s.cappedPositions.size();
     const std::size_t n = s.positions.size();
     VoronoiSamples samples;
@@ -77,7 +92,7 @@ VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& pr
     });
     progress.throwIfCancelled();
     // The local radius: the smallest over the vertex and its neighbours.
-    std::vector<double> radius(n, std::numeric_limits<double>::infinity());
+    radius.assign(n, std::numeric_limits<double>::infinity());
     forEachEdge([&](std::uint32_t a, std::uint32_t b) {
         const double r = 1.0 / std::max({curvature[a], curvature[b], 1e-12});
         radius[a] = std::min(radius[a], r);
@@ -111,17 +126,6 @@ VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& pr
 
     // One vertex per cell of a grid of side finest * 2^level; the first
     // vertex of a cell (in index order) stands for the cell.
-    using Key = std::tuple<int, std::int64_t, std::int64_t, std::int64_t>;
-    struct KeyHash {
-        std::size_t operator()(const Key& k) const noexcept {
-            const auto [l, x, y, z] = k;
-            auto h = static_cast<std::size_t>(l);
-            for (const std::int64_t c : {x, y, z}) {
-                h = h * 0x9E3779B97F4A7C15ULL + static_cast<std::size_t>(c);
-            }
-            return h;
-        }
-    };
     std::unordered_map<Key, std::uint32_t, KeyHash> owner;
     owner.reserve(n / 4);
     samples.kept.clear();
@@ -149,6 +153,134 @@ VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& pr
         return keepAll();
     }
     samples.reduced = true;
+    return samples;
+}
+
+/// A coarse facet: its index in the wall's triangles and the spacing its
+/// added points keep.
+struct CoarseFacet {
+    std::size_t triangle;
+    double spacing;
+};
+
+/// The wall's facets coarser than kCoarseFacetRadii (`radius`: the local
+/// radius per surface vertex), with the spacing for each, and the number of
+/// points they would take (about their area over the spacing squared).
+std::vector<CoarseFacet> coarseFacets(const PreparedSurface& s, const std::vector<double>& radius,
+                                      double& expectedPoints) {
+    std::vector<CoarseFacet> facets;
+    expectedPoints = 0.0;
+    for (std::size_t t = 0; t < s.triangles.size(); ++t) {
+        const Triangle& tri = s.triangles[t];
+        const glm::dvec3& a = s.positions[tri[0]];
+        const glm::dvec3& b = s.positions[tri[1]];
+        const glm::dvec3& c = s.positions[tri[2]];
+        const double ab = glm::length(b - a);
+        const double bc = glm::length(c - b);
+        const double ca = glm::length(a - c);
+        const double longest = std::max({ab, bc, ca});
+        const double r = std::max(std::min({radius[tri[0]], radius[tri[1]], radius[tri[2]]}),
+                                  std::min({ab, bc, ca}));
+        if (!std::isfinite(r) || !(r > 0.0) || !(longest > kCoarseFacetRadii * r)) {
+            continue;
+        }
+        const double spacing = std::max(kDenseSpacingPerRadius * r, longest / kMaxFacetSteps);
+        facets.push_back({t, spacing});
+        expectedPoints += 0.5 * glm::length(glm::cross(b - a, c - a)) / (spacing * spacing);
+    }
+    return facets;
+}
+
+/// Adds points on the wall's coarse facets (coarseFacets()), at most about
+/// kMaxAddedPoints: one per grid cell of a facet's spacing that holds no
+/// vertex of the surface (the cells of a grid as fine as the finest spacing,
+/// by level, as in the reduction).
+void addPointsOnCoarseFacets(const PreparedSurface& s, const std::vector<double>& radius,
+                             VoronoiSamples& samples, const Progress& progress) {
+    double expected = 0.0;
+    std::vector<CoarseFacet> facets = coarseFacets(s, radius, expected);
+    if (facets.empty()) {
+        return;
+    }
+    // Over the budget, every spacing grows alike.
+    samples.addedSpacingScale = std::max(1.0, std::sqrt(expected / kMaxAddedPoints));
+    double finest = std::numeric_limits<double>::infinity();
+    for (CoarseFacet& facet : facets) {
+        facet.spacing *= samples.addedSpacingScale;
+        finest = std::min(finest, facet.spacing);
+    }
+    const auto levelOf = [&](double spacing) {
+        return static_cast<int>(std::floor(std::log2(spacing / finest)));
+    };
+    const auto keyOf = [&](const glm::dvec3& p, int level) {
+        const glm::dvec3 c = glm::floor(p / (finest * std::exp2(level)));
+        return Key{level, static_cast<std::int64_t>(c.x), static_cast<std::int64_t>(c.y),
+                   static_cast<std::int64_t>(c.z)};
+    };
+    // The cells the surface's vertices hold, at each level a facet uses.
+    std::vector<int> levels;
+    levels.reserve(facets.size());
+    for (const CoarseFacet& facet : facets) {
+        levels.push_back(levelOf(facet.spacing));
+    }
+    std::sort(levels.begin(), levels.end());
+    levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
+    std::unordered_map<Key, char, KeyHash> taken;
+    for (const glm::dvec3& p : s.cappedPositions) {
+        for (const int level : levels) {
+            taken.emplace(keyOf(p, level), 0);
+        }
+    }
+    const auto firstId = static_cast<std::uint32_t>(s.cappedPositions.size());
+    for (std::size_t f = 0; f < facets.size(); ++f) {
+        if (f % 1024 == 0) {
+            progress.throwIfCancelled();
+        }
+        const Triangle& tri = s.triangles[facets[f].triangle];
+        const double spacing = facets[f].spacing;
+        const int level = levelOf(spacing);
+        const glm::dvec3& a = s.positions[tri[0]];
+        const glm::dvec3& b = s.positions[tri[1]];
+        const glm::dvec3& c = s.positions[tri[2]];
+        const double longest =
+            std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
+        // A barycentric lattice the spacing apart along the longest edge,
+        // corners left out (they are the surface's own vertices).
+        const auto steps = std::min(kMaxFacetSteps, static_cast<int>(std::ceil(longest / spacing)));
+        for (int i = 0; i <= steps; ++i) {
+            for (int j = 0; i + j <= steps; ++j) {
+                const int k = steps - i - j;
+                if (i == steps || j == steps || k == steps) {
+                    continue;
+                }
+                const double u = static_cast<double>(i) / steps;
+                const double v = static_cast<double>(j) / steps;
+                const double w = static_cast<double>(k) / steps;
+                const glm::dvec3 point = u * a + v * b + w * c;
+                if (!taken.emplace(keyOf(point, level), 0).second) {
+                    continue;
+                }
+                const glm::dvec3 normal = u * s.cappedNormals[tri[0]] +
+                                          v * s.cappedNormals[tri[1]] + w * s.cappedNormals[tri[2]];
+                const double length = glm::length(normal);
+                if (!(length > 0.0)) {
+                    continue;
+                }
+                samples.kept.push_back(firstId +
+                                       static_cast<std::uint32_t>(samples.addedPositions.size()));
+                samples.addedPositions.push_back(point);
+                samples.addedNormals.push_back(normal / length);
+            }
+        }
+    }
+}
+
+}  // namespace
+
+VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& progress) {
+    std::vector<double> radius;
+    VoronoiSamples samples = reducedSamples(s, radius, progress);
+    addPointsOnCoarseFacets(s, radius, samples, progress);
     return samples;
 }
 

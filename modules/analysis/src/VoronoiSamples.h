@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstdint>
+#include <glm/glm.hpp>
 #include <vector>
 
 #include "PreparedSurface.h"
@@ -20,10 +21,38 @@ namespace vv::analysis::detail {
 /// radius (0.8 %) inside the circle through them.
 inline constexpr double kSpacingPerRadius = 0.25;
 
+/// Where a facet of the wall is longer than kCoarseFacetRadii times its
+/// local radius (its longest edge against the larger of its vertices'
+/// smallest local radius and its own shortest edge), points are added on it
+/// for the diagram, kDenseSpacingPerRadius of that radius apart (at most
+/// kMaxFacetSteps along the facet): the Voronoi diagram of samples that far
+/// apart is no longer near the medial axis (a decimated straight tube is two
+/// rings joined by 50 mm long triangles, and its diagram has no axis
+/// between them). A tube sampled in near-square quads (a facet's diagonal
+/// under a radius) keeps its points as they are. Measured on the 1k-triangle
+/// phantoms (docs/benchmarks/analysis.md): a lower threshold (1.25-1.5)
+/// gives better angles on the decimated Y but false vessel ends on the
+/// staircase surface of a coarse CTA segmentation; a wider spacing (0.375)
+/// misses the 30-degree Y by 4 degrees.
+inline constexpr double kCoarseFacetRadii = 2.0;
+inline constexpr double kDenseSpacingPerRadius = 0.25;
+inline constexpr int kMaxFacetSteps = 256;
+/// About this many points at most are added; beyond, every spacing grows
+/// alike (VoronoiSamples::addedSpacingScale).
+inline constexpr double kMaxAddedPoints = 2'000'000.0;
+
 struct VoronoiSamples {
     /// The capped surface's vertices to triangulate, ascending; every one
     /// when the surface is nowhere finer than needed (`reduced` false).
+    /// Ids from cappedPositions.size() on are the added points.
     std::vector<std::uint32_t> kept;
+    /// Points added on coarse facets (flat, inside the facet or on its
+    /// edges) and their normals (interpolated over the facet, unit).
+    std::vector<glm::dvec3> addedPositions;
+    std::vector<glm::dvec3> addedNormals;
+    /// The added points' spacing against kDenseSpacingPerRadius: above 1
+    /// when kMaxAddedPoints made it wider.
+    double addedSpacingScale = 1.0;
     /// Per capped vertex: the kept vertex standing for it (itself when kept).
     std::vector<std::uint32_t> representative;
     bool reduced = false;
@@ -38,8 +67,9 @@ struct VoronoiSamples {
 /// of it (where that is at least twice the vertex's shortest edge, and its own normal is within 15
 /// degrees of the averaged one, not on a rough wall; else the vertex is kept), rounded down to a
 /// power of two of the finest cell; boundary loops and cap centres are always kept. Keeps
-/// everything when that would leave out less than a fifth of the points. Deterministic;
-/// CancelledError on a stop.
+/// everything when that would leave out less than a fifth of the points. Coarse facets of the
+/// wall (kCoarseFacetRadii; not the caps) get points added, one per cell of their spacing that
+/// holds no vertex. Deterministic; CancelledError on a stop.
 [[nodiscard]] VoronoiSamples chooseVoronoiSamples(const PreparedSurface& surface,
                                                   const Progress& progress);
 

@@ -16,6 +16,7 @@
 #include "PhantomJitter.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
+#include "vv/meshio/MeshSimplify.h"
 
 namespace vv::demo {
 namespace {
@@ -244,8 +245,10 @@ AneurysmPhantom makeAneurysmPhantom(const AneurysmPhantomOptions& options,
     const Field field(phantom);
 
     // The voxel size for the triangle count; one more extraction corrects
-    // the guess when it is more than 10 % off.
-    const auto target = static_cast<double>(options.targetTriangles);
+    // the guess when it is more than 10 % off. A coarse phantom is a finer
+    // one decimated (kFinestExtractionTriangles).
+    const auto target =
+        static_cast<double>(std::max(options.targetTriangles, detail::kFinestExtractionTriangles));
     double spacing = std::sqrt(kTrianglesPerVoxelArea * surfaceArea(options) / target);
     vtkSmartPointer<vtkPolyData> surface =
         extract(field, gridFor(field, phantom, spacing), progress.sub(0.0, 0.4));
@@ -264,7 +267,11 @@ AneurysmPhantom makeAneurysmPhantom(const AneurysmPhantomOptions& options,
                 cut(surface, phantom.bifurcationPoint + options.iliacLengthMm * d, -d, opening);
         }
     }
-    phantom.mesh = detail::finishSurface(std::move(surface), progress.sub(0.9, 1.0));
+    phantom.mesh = detail::finishSurface(std::move(surface), progress.sub(0.9, 0.95));
+    if (options.targetTriangles < detail::kFinestExtractionTriangles) {
+        phantom.mesh =
+            meshio::simplifiedMesh(phantom.mesh, options.targetTriangles, progress.sub(0.95, 1.0));
+    }
     if (options.jitterFraction > 0.0) {
         detail::PhantomJitter jitter(options.seed, options.jitterFraction * options.radiusMm);
         for (glm::vec3& p : phantom.mesh.positions) {

@@ -1,11 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/demo/BifurcationPhantom.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <string>
 
+#include "FieldSurface.h"
 #include "vv/core/Error.h"
+#include "vv/meshio/MeshSimplify.h"
 
 namespace vv::demo {
 namespace {
@@ -74,16 +77,22 @@ BifurcationPhantom makeBifurcationPhantom(const BifurcationPhantomOptions& optio
     }
 
     // Flying edges gives about 2 triangles per voxel face of surface; one
-    // more extraction corrects the guess.
+    // more extraction corrects the guess. A coarse phantom is a finer one
+    // decimated (kFinestExtractionTriangles).
+    const std::size_t extracted = std::max(o.targetTriangles, detail::kFinestExtractionTriangles);
     DemoTreeOptions surface;
     surface.maxTriangles = 0;
-    const auto target = static_cast<double>(o.targetTriangles);
+    const auto target = static_cast<double>(extracted);
     surface.voxelSizeMm = std::sqrt(2.0 * tubeArea(phantom.tree) / target);
-    phantom.mesh = buildVesselSurface(phantom.tree, surface, progress.sub(0.0, 0.5));
+    phantom.mesh = buildVesselSurface(phantom.tree, surface, progress.sub(0.0, 0.4));
     const auto got = static_cast<double>(phantom.mesh.triangleCount());
     if (std::abs(got / target - 1.0) > 0.2) {
         surface.voxelSizeMm *= std::sqrt(got / target);
-        phantom.mesh = buildVesselSurface(phantom.tree, surface, progress.sub(0.5, 1.0));
+        phantom.mesh = buildVesselSurface(phantom.tree, surface, progress.sub(0.4, 0.8));
+    }
+    if (o.targetTriangles < extracted) {
+        phantom.mesh =
+            meshio::simplifiedMesh(phantom.mesh, o.targetTriangles, progress.sub(0.8, 1.0));
     }
     phantom.mesh.name = "bifurcation phantom";
     phantom.mesh.pointArrays.clear();

@@ -13,7 +13,8 @@
 // trunk's surface of revolution and the branches' round tubes exactly,
 // blended where they meet (within about one trunk radius of the bifurcation
 // point), extracted as the demo tree's surface is (flying edges,
-// windowed-sinc smoothing) at about a chosen triangle count. Every section
+// windowed-sinc smoothing) at about a chosen triangle count (under 20k
+// extracted at 20k and decimated, as coarse segmentations are made). Every section
 // of the trunk perpendicular to +z away from the bifurcation is a circle of
 // the profile's radius centred on the axis. Used by tests/analysis and
 // bench/analysis_accuracy (docs/benchmarks/analysis.md).
@@ -50,7 +51,8 @@ struct AneurysmPhantomOptions {
     double iliacLengthMm = 80.0;
     /// About this many triangles, in [1000, 5'000'000]; with open ends,
     /// before they are cut (the cut takes the caps and the tubes past it:
-    /// about 14 % of them).
+    /// about 14 % of them), except under 20k, where the cut surface is
+    /// decimated to this many.
     std::size_t targetTriangles = 50'000;
     /// Each vertex moved by a uniform random offset in [-j, j] per axis, j =
     /// jitterFraction * radiusMm (of the trunk); in [0, 0.2].
