@@ -2,7 +2,8 @@
 // A surface much finer than its vessel needs: the Voronoi diagram is built
 // from fewer points (one per quarter radius), says so, and the centreline,
 // its length, a given end and the sections keep their accuracy; a rough
-// (jittered) surface keeps every point; analyseVessels gives what
+// (jittered) surface keeps every point; neither gets points added (that is
+// for facets coarse against their vessel); analyseVessels gives what
 // computeCenterlines and computeSections give.
 #include <gtest/gtest.h>
 
@@ -21,6 +22,13 @@ namespace {
 bool reducedNote(const CenterlineTree& tree) {
     return std::ranges::any_of(tree.notes, [](const std::string& note) {
         return note.find("the Voronoi diagram was built from") != std::string::npos;
+    });
+}
+
+/// The note that points were added on coarse facets.
+bool addedNote(const CenterlineTree& tree) {
+    return std::ranges::any_of(tree.notes, [](const std::string& note) {
+        return note.find("points added") != std::string::npos;
     });
 }
 
@@ -47,6 +55,9 @@ TEST(VoronoiSampling, ANeedlesslyFineSurfaceIsSampledAndStaysAccurate) {
     const VesselAnalysis analysed = analyseVessels(truth.mesh, options);
     const CenterlineTree& tree = analysed.tree;
     EXPECT_TRUE(reducedNote(tree));
+    // Fine everywhere, its open ends too (where the rim's turn onto the cap
+    // once read as a tiny radius): no points added.
+    EXPECT_FALSE(addedNote(tree));
     ASSERT_EQ(tree.branches.size(), 1U);
     EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
     // The given end: the sphere touching the wall there, exactly, not a
@@ -71,6 +82,8 @@ TEST(VoronoiSampling, ARoughSurfaceKeepsEveryPoint) {
         demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 10.0, 300'000, 0.02));
     const CenterlineTree tree = computeCenterlines(truth.mesh);
     EXPECT_FALSE(reducedNote(tree));
+    // Its curvature measures the roughness, not the vessel: no points added.
+    EXPECT_FALSE(addedNote(tree));
     EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
 }
 
