@@ -671,7 +671,8 @@ VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
                           fixedText(kCoarseFacetRadii, 2) +
                           " of the local radius): the Voronoi diagram was built with " +
                           std::to_string(samples.addedPositions.size()) +
-                          " points added on those facets, " + fixedText(kDenseSpacingPerRadius, 3) +
+                          " points added on those facets, " +
+                          fixedText(kDenseSpacingPerRadius * samples.addedSpacingScale, 3) +
                           " of the local radius apart; the sections cut the facets as they are");
     }
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));

@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <utility>
 
 #include "vv/analysis/AnalysisError.h"
@@ -181,7 +180,8 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     }
     // Renumbered along a Z-order curve: the walks over the graph (minimal
     // paths, tips, covering) then read neighbouring memory, not the cells'
-    // order in the triangulation's storage.
+    // order in the triangulation's storage. A cell's info keeps its old
+    // number; the adjacency below maps it.
     const std::vector<std::uint32_t> rank = zOrderRanks(graph.centres);
     {
         std::vector<glm::dvec3> centres(graph.centres.size());
@@ -192,12 +192,6 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         }
         graph.centres = std::move(centres);
         graph.radii = std::move(radii);
-        for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
-             ++cell) {
-            if (cell->info() != kOutside) {
-                cell->info() = rank[cell->info()];
-            }
-        }
         for (std::uint32_t& pole : graph.poles) {
             if (pole != kOutside) {
                 pole = rank[pole];
@@ -218,14 +212,14 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     const auto forEachEdge = [&](const auto& visit) {
         for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
              ++cell) {
-            const std::uint32_t a = cell->info();
-            if (a == kOutside) {
+            if (cell->info() == kOutside) {
                 continue;
             }
+            const std::uint32_t a = rank[cell->info()];
             for (int i = 0; i < 4; ++i) {
                 const auto neighbour = cell->neighbor(i);
                 if (!delaunay.is_infinite(neighbour) && neighbour->info() != kOutside) {
-                    visit(a, neighbour->info());
+                    visit(a, rank[neighbour->info()]);
                 }
             }
         }

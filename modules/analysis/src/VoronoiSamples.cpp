@@ -34,6 +34,25 @@ struct KeyHash {
     }
 };
 
+/// Cells of sides finest * 2^level, the level of a size rounded down: the
+/// grid both the reduction and the added points keep one point per cell of.
+class LevelGrid {
+  public:
+    explicit LevelGrid(double finest) : finest_(finest) {}
+
+    [[nodiscard]] int levelOf(double size) const {
+        return static_cast<int>(std::floor(std::log2(size / finest_)));
+    }
+    [[nodiscard]] Key cellOf(const glm::dvec3& p, int level) const {
+        const glm::dvec3 c = glm::floor(p / (finest_ * std::exp2(level)));
+        return Key{level, static_cast<std::int64_t>(c.x), static_cast<std::int64_t>(c.y),
+                   static_cast<std::int64_t>(c.z)};
+    }
+
+  private:
+    double finest_;
+};
+
 /// What the reduction learns of each surface vertex: its local radius, and
 /// whether it lies on a rough wall (its normal more than 15 degrees from its
 /// averaged one).
@@ -137,6 +156,7 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
 
     // One vertex per cell of a grid of side finest * 2^level; the first
     // vertex of a cell (in index order) stands for the cell.
+    const LevelGrid grid(finest);
     std::unordered_map<Key, std::uint32_t, KeyHash> owner;
     owner.reserve(n / 4);
     samples.kept.clear();
@@ -145,11 +165,7 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
             samples.kept.push_back(v);
             continue;
         }
-        const int level = static_cast<int>(std::floor(std::log2(cell[v] / finest)));
-        const double side = finest * std::exp2(level);
-        const glm::dvec3 c = glm::floor(s.cappedPositions[v] / side);
-        const Key key{level, static_cast<std::int64_t>(c.x), static_cast<std::int64_t>(c.y),
-                      static_cast<std::int64_t>(c.z)};
+        const Key key = grid.cellOf(s.cappedPositions[v], grid.levelOf(cell[v]));
         const auto [at, inserted] = owner.try_emplace(key, v);
         if (inserted) {
             samples.kept.push_back(v);
@@ -171,6 +187,7 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
 /// added points keep.
 struct CoarseFacet {
     std::size_t triangle;
+    double longest;  ///< its longest edge, mm
     double spacing;
 };
 
@@ -228,7 +245,7 @@ std::vector<CoarseFacet> coarseFacets(const PreparedSurface& s, const LocalShape
             continue;
         }
         const double spacing = std::max(kDenseSpacingPerRadius * r, longest / kMaxFacetSteps);
-        facets.push_back({t, spacing});
+        facets.push_back({t, longest, spacing});
         expectedPoints += 0.5 * glm::length(glm::cross(b - a, c - a)) / (spacing * spacing);
     }
     return facets;
@@ -252,26 +269,19 @@ void addPointsOnCoarseFacets(const PreparedSurface& s, const LocalShape& shape,
         facet.spacing *= samples.addedSpacingScale;
         finest = std::min(finest, facet.spacing);
     }
-    const auto levelOf = [&](double spacing) {
-        return static_cast<int>(std::floor(std::log2(spacing / finest)));
-    };
-    const auto keyOf = [&](const glm::dvec3& p, int level) {
-        const glm::dvec3 c = glm::floor(p / (finest * std::exp2(level)));
-        return Key{level, static_cast<std::int64_t>(c.x), static_cast<std::int64_t>(c.y),
-                   static_cast<std::int64_t>(c.z)};
-    };
+    const LevelGrid grid(finest);
     // The cells the surface's vertices hold, at each level a facet uses.
     std::vector<int> levels;
     levels.reserve(facets.size());
     for (const CoarseFacet& facet : facets) {
-        levels.push_back(levelOf(facet.spacing));
+        levels.push_back(grid.levelOf(facet.spacing));
     }
     std::sort(levels.begin(), levels.end());
     levels.erase(std::unique(levels.begin(), levels.end()), levels.end());
     std::unordered_map<Key, char, KeyHash> taken;
     for (const glm::dvec3& p : s.cappedPositions) {
         for (const int level : levels) {
-            taken.emplace(keyOf(p, level), 0);
+            taken.emplace(grid.cellOf(p, level), 0);
         }
     }
     const auto firstId = static_cast<std::uint32_t>(s.cappedPositions.size());
@@ -281,15 +291,14 @@ void addPointsOnCoarseFacets(const PreparedSurface& s, const LocalShape& shape,
         }
         const Triangle& tri = s.triangles[facets[f].triangle];
         const double spacing = facets[f].spacing;
-        const int level = levelOf(spacing);
+        const int level = grid.levelOf(spacing);
         const glm::dvec3& a = s.positions[tri[0]];
         const glm::dvec3& b = s.positions[tri[1]];
         const glm::dvec3& c = s.positions[tri[2]];
-        const double longest =
-            std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
         // A barycentric lattice the spacing apart along the longest edge,
         // corners left out (they are the surface's own vertices).
-        const auto steps = std::min(kMaxFacetSteps, static_cast<int>(std::ceil(longest / spacing)));
+        const auto steps =
+            std::min(kMaxFacetSteps, static_cast<int>(std::ceil(facets[f].longest / spacing)));
         for (int i = 0; i <= steps; ++i) {
             for (int j = 0; i + j <= steps; ++j) {
                 const int k = steps - i - j;
@@ -300,7 +309,7 @@ void addPointsOnCoarseFacets(const PreparedSurface& s, const LocalShape& shape,
                 const double v = static_cast<double>(j) / steps;
                 const double w = static_cast<double>(k) / steps;
                 const glm::dvec3 point = u * a + v * b + w * c;
-                if (!taken.emplace(keyOf(point, level), 0).second) {
+                if (!taken.emplace(grid.cellOf(point, level), 0).second) {
                     continue;
                 }
                 const glm::dvec3 normal = u * s.cappedNormals[tri[0]] +
