@@ -10,10 +10,12 @@
 // mesh's own size; and the synthetic CTA segmented as `render` segments a
 // DICOM series, against the tree it was voxelised from.
 //
-//   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm | --huge]
+//   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm | --huge
+//                                          | --slabs [ROUNDS]]
 //   (--quick: no 1M rows; --demo: the demo tree's row alone; --cta: the
 //   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
-//   rows included; --huge: a 10M-triangle cylinder alone)
+//   rows included; --huge: a 10M-triangle cylinder alone; --slabs: the
+//   Voronoi diagram in one slab against one per core, in turn)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -29,6 +31,9 @@
 #include <vector>
 
 #include "AnalysisAgreement.h"
+#include "PreparedSurface.h"
+#include "VoronoiGraph.h"
+#include "VoronoiSamples.h"
 #include "vv/analysis/Bifurcations.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
@@ -402,6 +407,53 @@ void ctaTable() {
 
 }  // namespace
 
+/// The diagram step alone on the demo tree (and its 1M-triangle aneurysm
+/// phantom): in one slab against the default slabs (one per core), taken in
+/// turn `rounds` times; the median and the fastest time. (The peak memory is
+/// --demo's: within one process the second run reuses the first's pages.)
+void slabTable(int rounds) {
+    namespace detail = vv::analysis::detail;
+    const vv::demo::DemoTreeOptions treeOptions;
+    vv::demo::AneurysmPhantomOptions aneurysmOptions;
+    aneurysmOptions.targetTriangles = 1'000'000;
+    aneurysmOptions.jitterFraction = 0.02;  // rough: every point is kept
+    const std::vector<std::pair<std::string, vv::scene::Mesh>> meshes{
+        {"demo tree",
+         vv::demo::buildVesselSurface(vv::demo::generateVesselTree(treeOptions), treeOptions)},
+        {"aneurysm, closed, 2 % jitter", vv::demo::makeAneurysmPhantom(aneurysmOptions).mesh}};
+    std::printf(
+        "| surface | triangles | points | slabs | seconds, median / fastest | diagram vertices "
+        "|\n|---|---|---|---|---|---|\n");
+    for (const auto& [name, mesh] : meshes) {
+        const detail::PreparedSurface s =
+            detail::prepareSurface(mesh, std::nullopt, {}, vv::analysis::kDefaultMaxTriangles);
+        const detail::VoronoiSamples samples = detail::chooseVoronoiSamples(s, {});
+        detail::SlabPolicy whole;
+        whole.splitFrom = SIZE_MAX;
+        const std::array<detail::SlabPolicy, 2> policies{whole, detail::SlabPolicy{}};
+        std::array<std::vector<double>, 2> seconds;
+        std::array<int, 2> slabs{};
+        std::size_t vertices = 0;
+        for (int round = 0; round < rounds; ++round) {
+            for (std::size_t p = 0; p < policies.size(); ++p) {
+                const auto start = Clock::now();
+                const detail::VoronoiGraph g =
+                    detail::buildVoronoiGraph(s, samples, {}, policies[p]);
+                seconds[p].push_back(std::chrono::duration<double>(Clock::now() - start).count());
+                slabs[p] = g.slabs;
+                vertices = g.size();
+            }
+        }
+        for (std::size_t p = 0; p < policies.size(); ++p) {
+            std::ranges::sort(seconds[p]);
+            std::printf("| %s | %zu | %zu | %d | %.2f / %.2f | %zu |\n", name.c_str(),
+                        mesh.triangleCount(), samples.kept.size() + samples.addedPositions.size(),
+                        slabs[p], seconds[p][seconds[p].size() / 2], seconds[p].front(), vertices);
+        }
+        std::fflush(stdout);
+    }
+}
+
 int main(int argc, char** argv) {
     const auto mode = [&](const char* name) { return argc > 1 && std::strcmp(argv[1], name) == 0; };
     std::vector<std::size_t> densities{1'000, 50'000};
@@ -414,6 +466,10 @@ int main(int argc, char** argv) {
     }
     if (mode("--huge")) {
         hugeTable();
+        return 0;
+    }
+    if (mode("--slabs")) {
+        slabTable(argc > 2 ? std::max(1, std::atoi(argv[2])) : 5);
         return 0;
     }
     if (mode("--cta")) {

@@ -12,7 +12,12 @@
 #include <limits>
 #include <utility>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 #include "vv/analysis/AnalysisError.h"
+#include "vv/core/Parallel.h"
 
 namespace vv::analysis::detail {
 namespace {
@@ -76,16 +81,6 @@ class SamplePoints {
     std::size_t first_;
 };
 
-Delaunay triangulate(const SamplePoints& samplePoints, const std::vector<std::uint32_t>& kept) {
-    std::vector<std::pair<Kernel::Point_3, std::uint32_t>> points;
-    points.reserve(kept.size());
-    for (const std::uint32_t i : kept) {
-        const glm::dvec3& p = samplePoints.position(i);
-        points.emplace_back(Kernel::Point_3(p.x, p.y, p.z), i);
-    }
-    return {points.begin(), points.end()};
-}
-
 /// Spreads the low 21 bits of `x` to every third bit.
 std::uint64_t spreadBits(std::uint64_t x) {
     x &= 0x1fffffULL;
@@ -97,106 +92,375 @@ std::uint64_t spreadBits(std::uint64_t x) {
     return x;
 }
 
-/// Per point, its rank along a Z-order (Morton) curve through the points'
-/// bounding box, 2^21 steps per axis.
-std::vector<std::uint32_t> zOrderRanks(const std::vector<glm::dvec3>& points) {
+/// Per point (`count` of them, `point(i)` the i-th), its rank along a
+/// Z-order (Morton) curve through the points' bounding box, 2^21 steps per
+/// axis; equal keys keep their order.
+template <class PointAt>
+std::vector<std::uint32_t> zOrderRanks(std::size_t count, const PointAt& point) {
     glm::dvec3 lo(std::numeric_limits<double>::max());
     glm::dvec3 hi(std::numeric_limits<double>::lowest());
-    for (const glm::dvec3& p : points) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
+    for (std::size_t i = 0; i < count; ++i) {
+        lo = glm::min(lo, point(i));
+        hi = glm::max(hi, point(i));
     }
     const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 1e-300});
     const double scale = 2097151.0 / extent;
-    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(points.size());
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::dvec3 q = glm::clamp((points[i] - lo) * scale, 0.0, 2097151.0);
+    std::vector<std::pair<std::uint64_t, std::uint32_t>> keys(count);
+    for (std::size_t i = 0; i < count; ++i) {
+        const glm::dvec3 q = glm::clamp((point(i) - lo) * scale, 0.0, 2097151.0);
         keys[i] = {spreadBits(static_cast<std::uint64_t>(q.x)) |
                        spreadBits(static_cast<std::uint64_t>(q.y)) << 1U |
                        spreadBits(static_cast<std::uint64_t>(q.z)) << 2U,
                    static_cast<std::uint32_t>(i)};
     }
     std::sort(keys.begin(), keys.end());
-    std::vector<std::uint32_t> rank(points.size());
+    std::vector<std::uint32_t> rank(count);
     for (std::size_t i = 0; i < keys.size(); ++i) {
         rank[keys[i].second] = static_cast<std::uint32_t>(i);
     }
     return rank;
 }
 
+/// A slab of space across `axis`: the diagram's vertices whose centres lie
+/// in [lo, hi) belong to it (its core; ±infinity at the ends), and it is
+/// tetrahedralised from the points within `margin` of the core.
+struct Slab {
+    int axis = 0;
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
+    double margin = 0.0;
+};
+
+/// A face of a tetrahedron (its three point ids, ascending) and the diagram
+/// vertex on one side of it, its number within its slab.
+struct FaceRecord {
+    std::array<std::uint32_t, 3> face{};
+    std::uint32_t cell = 0;
+};
+
+/// A surface vertex and a diagram vertex (within its slab) whose sphere
+/// touches it.
+struct PoleCandidate {
+    std::uint32_t vertex = 0;
+    std::uint32_t cell = 0;
+};
+
+/// What one slab gives: its diagram vertices, the edges between them (rows
+/// by their numbers within the slab), the faces through which its vertices
+/// may meet another slab's, and the poles its spheres offer.
+struct SlabDiagram {
+    std::vector<glm::dvec3> centres;
+    std::vector<double> radii;
+    std::vector<std::uint32_t> offsets;
+    std::vector<std::uint32_t> neighbours;
+    std::vector<FaceRecord> faces;
+    std::vector<PoleCandidate> poles;
+    int retries = 0;
+};
+
+/// A cell of a slab's triangulation that is not one of its diagram
+/// vertices: its sphere is not known to be empty of every point, or its
+/// centre is another slab's (kElsewhere); or it is this slab's, empty, and
+/// outside the surface (kOwnOutside: no diagram vertex lies across its faces).
+constexpr std::uint32_t kElsewhere = UINT32_MAX;
+constexpr std::uint32_t kOwnOutside = UINT32_MAX - 1;
+
+/// The Delaunay diagram inside the surface of the points of `slab`, the
+/// vertices whose centres lie in its core. A tetrahedron of the slab's points
+/// is one of all the points' when its circumsphere lies within the points
+/// taken (within `margin` of the core, or beyond the last point on that
+/// side); an inside one whose sphere reaches further means the margin was
+/// too narrow, and the slab is done again with a wider one. `low` and
+/// `high`: the smallest and largest coordinate of any point along the axis.
+SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
+                        const std::vector<std::uint32_t>& kept, Slab slab, double low, double high,
+                        const Progress& progress) {
+    const int axis = slab.axis;
+    for (SlabDiagram out;; ++out.retries) {
+        const double from = slab.lo - slab.margin;
+        const double to = slab.hi + slab.margin;
+        const bool lowOpen = from <= low;
+        const bool highOpen = to >= high;
+        std::vector<std::uint32_t> ids;
+        std::vector<std::pair<Kernel::Point_3, std::uint32_t>> input;
+        for (const std::uint32_t i : kept) {
+            const glm::dvec3& p = points.position(i);
+            if (p[axis] >= from && p[axis] <= to) {
+                input.emplace_back(Kernel::Point_3(p.x, p.y, p.z),
+                                   static_cast<std::uint32_t>(ids.size()));
+                ids.push_back(i);
+            }
+        }
+        Delaunay delaunay(input.begin(), input.end());
+        input = {};
+        progress.throwIfCancelled();
+        double needed = 0.0;
+        std::size_t visited = 0;
+        for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
+             ++cell) {
+            cell->info() = kElsewhere;
+            if (++visited % 65536 == 0) {
+                progress.throwIfCancelled();
+            }
+            // By ascending id: the same four points give the same centre, to
+            // the last bit, in every slab that has them.
+            std::array<std::uint32_t, 4> g{};
+            for (int i = 0; i < 4; ++i) {
+                g[i] = ids[cell->vertex(i)->info()];
+            }
+            std::sort(g.begin(), g.end());
+            const auto centre = circumcentre(points.position(g[0]), points.position(g[1]),
+                                             points.position(g[2]), points.position(g[3]));
+            if (!centre || !((*centre)[axis] >= slab.lo && (*centre)[axis] < slab.hi)) {
+                continue;
+            }
+            const double radius = glm::length(*centre - points.position(g[0]));
+            if (!(radius < s.diagonalMm)) {
+                continue;
+            }
+            const double c = (*centre)[axis];
+            const bool empty = (lowOpen || c - radius >= from) && (highOpen || c + radius <= to);
+            bool inside = true;
+            for (const std::uint32_t id : g) {
+                inside = inside && glm::dot(points.normal(id), *centre - points.position(id)) < 0.0;
+            }
+            if (!inside) {
+                cell->info() = empty ? kOwnOutside : kElsewhere;
+                continue;
+            }
+            if (!empty) {
+                needed = std::max({needed, slab.lo - (c - radius), (c + radius) - slab.hi});
+                continue;
+            }
+            cell->info() = static_cast<std::uint32_t>(out.centres.size());
+            out.centres.push_back(*centre);
+            out.radii.push_back(radius);
+        }
+        if (needed > 0.0) {
+            slab.margin = std::max(1.25 * needed, 2.0 * slab.margin);
+            out.centres.clear();
+            out.radii.clear();
+            continue;
+        }
+        // Per point of the slab, its widest sphere here.
+        std::vector<std::uint32_t> best(ids.size(), kElsewhere);
+        const auto isVertex = [](std::uint32_t info) { return info < kOwnOutside; };
+        for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
+             ++cell) {
+            if (!isVertex(cell->info())) {
+                continue;
+            }
+            for (int i = 0; i < 4; ++i) {
+                std::uint32_t& b = best[cell->vertex(i)->info()];
+                if (b == kElsewhere || out.radii[b] < out.radii[cell->info()]) {
+                    b = cell->info();
+                }
+            }
+        }
+        for (std::size_t i = 0; i < ids.size(); ++i) {
+            if (best[i] != kElsewhere && points.onSurfaceVertex(ids[i])) {
+                out.poles.push_back({ids[i], best[i]});
+            }
+        }
+        best = {};
+        // The edges within the slab, in compressed rows (count, then fill);
+        // across a face whose other side is not known here, a record.
+        out.offsets.assign(out.centres.size() + 1, 0);
+        const auto forEachFace = [&](const auto& visit) {
+            for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
+                 ++cell) {
+                if (isVertex(cell->info())) {
+                    for (int i = 0; i < 4; ++i) {
+                        visit(cell, i, cell->neighbor(i));
+                    }
+                }
+            }
+        };
+        forEachFace([&](const auto& cell, int, const auto& other) {
+            if (!delaunay.is_infinite(other) && isVertex(other->info())) {
+                ++out.offsets[cell->info() + 1];
+            }
+        });
+        for (std::size_t v = 1; v < out.offsets.size(); ++v) {
+            out.offsets[v] += out.offsets[v - 1];
+        }
+        out.neighbours.resize(out.offsets.back());
+        std::vector<std::uint32_t> fill(out.offsets.begin(), out.offsets.end() - 1);
+        forEachFace([&](const auto& cell, int i, const auto& other) {
+            const bool finite = !delaunay.is_infinite(other);
+            if (finite && isVertex(other->info())) {
+                out.neighbours[fill[cell->info()]++] = other->info();
+            } else if (!finite || other->info() == kElsewhere) {
+                FaceRecord record{.face = {}, .cell = cell->info()};
+                for (int k = 0, j = 0; k < 4; ++k) {
+                    if (k != i) {
+                        record.face[j++] = ids[cell->vertex(k)->info()];
+                    }
+                }
+                std::sort(record.face.begin(), record.face.end());
+                out.faces.push_back(record);
+            }
+        });
+        return out;
+    }
+}
+
+/// How many slabs `points` points are cut into under `policy`.
+std::size_t slabCount(std::size_t points, const SlabPolicy& policy) {
+    if (points < std::max<std::size_t>(policy.splitFrom, 1)) {
+        return 1;
+    }
+    const auto cores = static_cast<std::size_t>(policy.cores > 0 ? policy.cores : workerCount());
+    const std::size_t most = std::max<std::size_t>(policy.maxPointsPerSlab, 1);
+    return std::clamp<std::size_t>(std::max(cores, (points + most - 1) / most), 1, kMaxSlabs);
+}
+
+/// The `count` slabs for the kept points, across the
+/// longest side of their bounding box, cut at the points' quantiles; each
+/// with a first margin of `marginPerRadius` times the widest local radius of
+/// the wall near its cuts, or its own width where the wall says nothing.
+std::vector<Slab> slabsFor(const PreparedSurface& s, const SamplePoints& points,
+                           const VoronoiSamples& samples, std::size_t count, double marginPerRadius,
+                           double& low, double& high) {
+    glm::dvec3 lo(std::numeric_limits<double>::max());
+    glm::dvec3 hi(std::numeric_limits<double>::lowest());
+    for (const std::uint32_t i : samples.kept) {
+        lo = glm::min(lo, points.position(i));
+        hi = glm::max(hi, points.position(i));
+    }
+    const glm::dvec3 size = hi - lo;
+    const int axis = size.x >= size.y && size.x >= size.z ? 0 : (size.y >= size.z ? 1 : 2);
+    low = lo[axis];
+    high = hi[axis];
+    std::vector<Slab> slabs(count);
+    for (Slab& slab : slabs) {
+        slab.axis = axis;
+    }
+    if (count == 1) {
+        return slabs;
+    }
+    std::vector<double> coordinates;
+    coordinates.reserve(samples.kept.size());
+    for (const std::uint32_t i : samples.kept) {
+        coordinates.push_back(points.position(i)[axis]);
+    }
+    std::vector<double> cuts;
+    for (std::size_t k = 1; k < count; ++k) {
+        const auto at = static_cast<std::ptrdiff_t>(k * coordinates.size() / count);
+        std::nth_element(coordinates.begin(), coordinates.begin() + at, coordinates.end());
+        cuts.push_back(coordinates[static_cast<std::size_t>(at)]);
+    }
+    coordinates = {};
+    // The widest wall radius within half a slab of each cut.
+    const double band = 0.5 * (high - low) / static_cast<double>(count);
+    std::vector<double> widest(cuts.size(), 0.0);
+    for (std::size_t v = 0; v < samples.wallRadiusMm.size(); ++v) {
+        const double r = samples.wallRadiusMm[v];
+        if (!(r > 0.0) || !std::isfinite(r)) {
+            continue;
+        }
+        const double x = s.positions[v][axis];
+        for (std::size_t k = 0; k < cuts.size(); ++k) {
+            if (std::abs(x - cuts[k]) <= band) {
+                widest[k] = std::max(widest[k], r);
+            }
+        }
+    }
+    for (std::size_t k = 0; k < count; ++k) {
+        Slab& slab = slabs[k];
+        if (k > 0) {
+            slab.lo = cuts[k - 1];
+        }
+        if (k + 1 < count) {
+            slab.hi = cuts[k];
+        }
+        double margin = 0.0;
+        for (const std::size_t cut : {k - 1, k}) {
+            if (cut < cuts.size()) {
+                margin = std::max(margin,
+                                  widest[cut] > 0.0 ? marginPerRadius * widest[cut] : 2.0 * band);
+            }
+        }
+        slab.margin = margin;
+    }
+    return slabs;
+}
+
 }  // namespace
 
 VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& samples,
-                               const Progress& progress) {
+                               const Progress& progress, const SlabPolicy& policy) {
     progress.report(0.0, "Tetrahedralising the surface");
     const SamplePoints points(s, samples);
-    Delaunay delaunay = triangulate(points, samples.kept);
-    progress.report(0.5, "Finding the inside of the surface");
+    double low = 0.0;
+    double high = 0.0;
+    const std::vector<Slab> slabs =
+        slabsFor(s, points, samples, slabCount(samples.kept.size(), policy), policy.marginPerRadius,
+                 low, high);
+    // The slabs on every core; each frees its tetrahedralisation when done,
+    // so at most one per core is held.
+    std::vector<SlabDiagram> parts(slabs.size());
+    parallelFor(
+        0, static_cast<long>(slabs.size()), 1,
+        [&](long begin, long end) {
+            for (long k = begin; k < end; ++k) {
+                const auto i = static_cast<std::size_t>(k);
+                parts[i] = slabDiagram(s, points, samples.kept, slabs[i], low, high, progress);
+            }
+        },
+        progress.stopToken());
+#if defined(__GLIBC__)
+    // The slabs' tetrahedra were freed on the worker threads, into arenas
+    // this thread does not allocate from: handed back to the system, or the
+    // graph and the surface index below take new memory beside them (the
+    // demo tree's peak 184 -> 147 MiB).
+    malloc_trim(0);
+#endif
+    progress.report(0.8, "Joining the Voronoi diagram");
     VoronoiGraph graph;
-    graph.poles.assign(s.cappedPositions.size(), kOutside);
-    std::size_t visited = 0;
-    for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end(); ++cell) {
-        cell->info() = kOutside;
-        if (++visited % 65536 == 0) {
-            progress.throwIfCancelled();
-        }
-        std::array<std::uint32_t, 4> ids{};
-        for (int i = 0; i < 4; ++i) {
-            ids[i] = cell->vertex(i)->info();
-        }
-        const auto centre = circumcentre(points.position(ids[0]), points.position(ids[1]),
-                                         points.position(ids[2]), points.position(ids[3]));
-        if (!centre) {
-            continue;
-        }
-        const double radius = glm::length(*centre - points.position(ids[0]));
-        if (!(radius < s.diagonalMm)) {
-            continue;
-        }
-        bool inside = true;
-        for (const std::uint32_t id : ids) {
-            inside = inside && glm::dot(points.normal(id), *centre - points.position(id)) < 0.0;
-        }
-        if (!inside) {
-            continue;
-        }
-        const auto index = static_cast<std::uint32_t>(graph.centres.size());
-        cell->info() = index;
-        graph.centres.push_back(*centre);
-        graph.radii.push_back(radius);
-        for (const std::uint32_t id : ids) {
-            if (!points.onSurfaceVertex(id)) {
-                continue;  // an added point has no pole
-            }
-            std::uint32_t& pole = graph.poles[id];
-            if (pole == kOutside || graph.radii[pole] < radius) {
-                pole = index;
-            }
-        }
+    graph.slabs = static_cast<int>(slabs.size());
+    std::vector<std::uint32_t> base(parts.size() + 1, 0);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        base[k + 1] = base[k] + static_cast<std::uint32_t>(parts[k].centres.size());
+        graph.slabRetries += parts[k].retries;
     }
-    if (graph.centres.empty()) {
+    const std::size_t total = base.back();
+    if (total == 0) {
         throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") +
                                           "the surface encloses no space (no inside was found)");
     }
-    // Renumbered along a Z-order curve: the walks over the graph (minimal
-    // paths, tips, covering) then read neighbouring memory, not the cells'
-    // order in the triangulation's storage. A cell's info keeps its old
-    // number; the adjacency below maps it.
-    const std::vector<std::uint32_t> rank = zOrderRanks(graph.centres);
-    {
-        std::vector<glm::dvec3> centres(graph.centres.size());
-        std::vector<double> radii(graph.radii.size());
-        for (std::size_t v = 0; v < rank.size(); ++v) {
-            centres[rank[v]] = graph.centres[v];
-            radii[rank[v]] = graph.radii[v];
-        }
-        graph.centres = std::move(centres);
-        graph.radii = std::move(radii);
-        for (std::uint32_t& pole : graph.poles) {
-            if (pole != kOutside) {
-                pole = rank[pole];
+    // Numbered along a Z-order curve: the walks over the graph (minimal
+    // paths, tips, covering) then read neighbouring memory.
+    std::vector<std::uint32_t> partOf(total);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        std::fill(partOf.begin() + base[k], partOf.begin() + base[k + 1],
+                  static_cast<std::uint32_t>(k));
+    }
+    const auto centreAt = [&](std::size_t v) -> const glm::dvec3& {
+        return parts[partOf[v]].centres[v - base[partOf[v]]];
+    };
+    const std::vector<std::uint32_t> rank = zOrderRanks(total, centreAt);
+    graph.centres.resize(total);
+    graph.radii.resize(total);
+    for (std::size_t v = 0; v < total; ++v) {
+        graph.centres[rank[v]] = centreAt(v);
+        graph.radii[rank[v]] = parts[partOf[v]].radii[v - base[partOf[v]]];
+    }
+    partOf = {};
+    // A surface vertex's pole: its widest sphere over the slabs (the first
+    // slab's among equals).
+    graph.poles.assign(s.cappedPositions.size(), kOutside);
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        for (const PoleCandidate& candidate : parts[k].poles) {
+            const std::uint32_t v = rank[base[k] + candidate.cell];
+            std::uint32_t& pole = graph.poles[candidate.vertex];
+            if (pole == kOutside || graph.radii[pole] < graph.radii[v]) {
+                pole = v;
             }
         }
+        parts[k].poles = {};
+        parts[k].centres = {};
+        parts[k].radii = {};
     }
     // A vertex left out of the diagram has its representative's pole.
     for (std::size_t v = 0; v < graph.poles.size(); ++v) {
@@ -205,25 +469,43 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
             graph.poles[v] = graph.poles[r];
         }
     }
-    progress.report(0.8, "Joining the Voronoi diagram");
-    // Compressed rows in two passes over the cells (count, then fill): no
-    // list of edge pairs as large as the rows themselves.
-    graph.offsets.assign(graph.centres.size() + 1, 0);
+    // The edges across slabs: the two sides of one face.
+    std::vector<FaceRecord> faces;
+    for (std::size_t k = 0; k < parts.size(); ++k) {
+        for (FaceRecord record : parts[k].faces) {
+            record.cell = rank[base[k] + record.cell];
+            faces.push_back(record);
+        }
+        parts[k].faces = {};
+    }
+    std::sort(faces.begin(), faces.end(), [](const FaceRecord& a, const FaceRecord& b) {
+        return a.face < b.face || (a.face == b.face && a.cell < b.cell);
+    });
+    std::vector<std::pair<std::uint32_t, std::uint32_t>> across;
+    for (std::size_t i = 0; i + 1 < faces.size(); ++i) {
+        if (faces[i].face == faces[i + 1].face && faces[i].cell != faces[i + 1].cell) {
+            across.emplace_back(faces[i].cell, faces[i + 1].cell);
+            ++i;
+        }
+    }
+    faces = {};
+    // Compressed rows, each row ascending: the same graph however the
+    // points were cut into slabs.
     const auto forEachEdge = [&](const auto& visit) {
-        for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
-             ++cell) {
-            if (cell->info() == kOutside) {
-                continue;
-            }
-            const std::uint32_t a = rank[cell->info()];
-            for (int i = 0; i < 4; ++i) {
-                const auto neighbour = cell->neighbor(i);
-                if (!delaunay.is_infinite(neighbour) && neighbour->info() != kOutside) {
-                    visit(a, rank[neighbour->info()]);
+        for (std::size_t k = 0; k < parts.size(); ++k) {
+            const SlabDiagram& part = parts[k];
+            for (std::size_t a = 0; a + 1 < part.offsets.size(); ++a) {
+                for (std::uint32_t e = part.offsets[a]; e < part.offsets[a + 1]; ++e) {
+                    visit(rank[base[k] + a], rank[base[k] + part.neighbours[e]]);
                 }
             }
         }
+        for (const auto& [a, b] : across) {
+            visit(a, b);
+            visit(b, a);
+        }
     };
+    graph.offsets.assign(total + 1, 0);
     forEachEdge([&](std::uint32_t a, std::uint32_t) { ++graph.offsets[a + 1]; });
     for (std::size_t v = 1; v < graph.offsets.size(); ++v) {
         graph.offsets[v] += graph.offsets[v - 1];
@@ -231,6 +513,10 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     graph.neighbours.resize(graph.offsets.back());
     std::vector<std::uint32_t> fill(graph.offsets.begin(), graph.offsets.end() - 1);
     forEachEdge([&](std::uint32_t a, std::uint32_t b) { graph.neighbours[fill[a]++] = b; });
+    for (std::size_t v = 0; v < total; ++v) {
+        std::sort(graph.neighbours.begin() + graph.offsets[v],
+                  graph.neighbours.begin() + graph.offsets[v + 1]);
+    }
     return graph;
 }
 

@@ -28,8 +28,34 @@ struct VoronoiGraph {
     /// inscribed sphere that touches it (UINT32_MAX when none does).
     std::vector<std::uint32_t> poles;
 
+    /// How many slabs the points were tetrahedralised in, and how many
+    /// times a slab was done again with a wider margin.
+    int slabs = 1;
+    int slabRetries = 0;
+
     [[nodiscard]] std::size_t size() const noexcept { return centres.size(); }
 };
+
+/// How the points are cut into slabs, each tetrahedralised on its own (on
+/// every core; each slab with the points within a margin of it).
+struct SlabPolicy {
+    /// From this many points on, one slab per core: the demo tree's 150k
+    /// points take 0.7-1.0 s in two slabs on two cores against 1.0-1.6 s in
+    /// one (docs/benchmarks/analysis.md); below, the margins cost more than
+    /// the cores give.
+    std::size_t splitFrom = 60'000;
+    /// At most about this many points per slab: the tetrahedralisation takes
+    /// about 470 bytes per point, so a slab of 400k holds about 180 MiB, and
+    /// a 10M-triangle surface is never tetrahedralised whole.
+    std::size_t maxPointsPerSlab = 400'000;
+    /// Slabs wanted from splitFrom on (the worker threads by default).
+    int cores = 0;
+    /// A slab's first margin, in the widest local radius of the wall near
+    /// its cuts (the inscribed spheres there are about that wide); a slab
+    /// whose margin proves too narrow is done again with a wider one.
+    double marginPerRadius = 1.25;
+};
+inline constexpr std::size_t kMaxSlabs = 256;
 
 /// The diagram of `surface`'s capped points chosen by `samples` (and their
 /// outward normals); a left-out point's pole is its representative's:
@@ -37,8 +63,16 @@ struct VoronoiGraph {
 /// tangent plane of each of its four points (VMTK's test), and its
 /// circumradius is finite and below the surface's diagonal. Throws
 /// AnalysisError when nothing is inside; CancelledError on a stop.
+///
+/// The points are cut across the longest side of their box into slabs
+/// (`slabs`); a slab's tetrahedra whose circumspheres lie within
+/// the points it took are those of all the points, and each diagram vertex
+/// is taken from the slab its centre lies in. The graph is the same however
+/// the points were cut (each row ascending; the numbering of vertices with
+/// equal Z-order keys aside).
 [[nodiscard]] VoronoiGraph buildVoronoiGraph(const PreparedSurface& surface,
                                              const VoronoiSamples& samples,
-                                             const Progress& progress);
+                                             const Progress& progress,
+                                             const SlabPolicy& slabs = {});
 
 }  // namespace vv::analysis::detail

@@ -332,6 +332,10 @@ void addPointsOnCoarseFacets(const PreparedSurface& s, const LocalShape& shape,
 VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& progress) {
     LocalShape shape;
     VoronoiSamples samples = reducedSamples(s, shape, progress);
+    samples.wallRadiusMm.resize(shape.radius.size());
+    for (std::size_t v = 0; v < shape.radius.size(); ++v) {
+        samples.wallRadiusMm[v] = shape.rough[v] != 0 ? 0.0F : static_cast<float>(shape.radius[v]);
+    }
     addPointsOnCoarseFacets(s, shape, samples, progress);
     return samples;
 }

@@ -58,6 +58,9 @@ struct VoronoiSamples {
     bool reduced = false;
     /// The largest distance from a left-out vertex to its representative, mm.
     double largestGapMm = 0.0;
+    /// Per surface vertex: its local radius (as the reduction measures it),
+    /// 0 where the wall is rough there; infinite on a flat wall.
+    std::vector<float> wallRadiusMm;
 };
 
 /// Chooses the samples of `surface`. The local radius at a vertex is the
