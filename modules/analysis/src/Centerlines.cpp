@@ -618,8 +618,9 @@ void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const Pat
 }  // namespace
 
 /// Prepares `mesh` for `options`, builds its diagram and then its index (the
-/// tetrahedralisation is freed before the index takes its memory), and
-/// returns step(surface, diagram, index).
+/// tetrahedralisation is freed before the index takes its memory; the index
+/// is built on another thread as the step begins), and returns
+/// step(surface, diagram, index).
 template <class Step>
 auto onPrepared(const scene::Mesh& mesh, const CenterlineOptions& options, const Progress& progress,
                 Step&& step) {
@@ -628,7 +629,9 @@ auto onPrepared(const scene::Mesh& mesh, const CenterlineOptions& options, const
     PreparedSurface s =
         detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
     const VoronoiGraph g = detail::diagramOf(s, progress);
-    const SurfaceIndex surface(s);
+    // Built on another core while the first minimal paths and the tips are
+    // searched (they need no index); its first query waits for it.
+    const SurfaceIndex surface(s, SurfaceIndex::Build::InBackground);
     return std::forward<Step>(step)(s, g, surface);
 }
 

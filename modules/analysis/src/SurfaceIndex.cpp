@@ -7,6 +7,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <cmath>
+#include <future>
 #include <iterator>
 #include <vector>
 
@@ -27,38 +28,59 @@ Kernel::Point_3 toPoint(const glm::dvec3& p) {
 struct SurfaceIndex::Tree {
     std::vector<Triangle3> triangles;
     AabbTree tree;
+
+    void fill(const PreparedSurface& surface) {
+        triangles.reserve(surface.triangles.size());
+        for (const Triangle& t : surface.triangles) {
+            triangles.emplace_back(toPoint(surface.positions[t[0]]),
+                                   toPoint(surface.positions[t[1]]),
+                                   toPoint(surface.positions[t[2]]));
+        }
+        tree.insert(triangles.cbegin(), triangles.cend());
+        tree.build();
+        tree.accelerate_distance_queries();
+        // Build what CGAL builds on the first query now, so that queries
+        // from several threads only read the tree.
+        if (!triangles.empty()) {
+            static_cast<void>(tree.squared_distance(triangles.front().vertex(0)));
+        }
+    }
 };
 
-SurfaceIndex::SurfaceIndex(const PreparedSurface& surface) : tree_(std::make_unique<Tree>()) {
-    tree_->triangles.reserve(surface.triangles.size());
-    for (const Triangle& t : surface.triangles) {
-        tree_->triangles.emplace_back(toPoint(surface.positions[t[0]]),
-                                      toPoint(surface.positions[t[1]]),
-                                      toPoint(surface.positions[t[2]]));
+SurfaceIndex::SurfaceIndex(const PreparedSurface& surface, Build build)
+    : tree_(std::make_unique<Tree>()) {
+    if (build == Build::Now) {
+        tree_->fill(surface);
+        return;
     }
-    tree_->tree.insert(tree_->triangles.cbegin(), tree_->triangles.cend());
-    tree_->tree.build();
-    tree_->tree.accelerate_distance_queries();
-    // Build what CGAL builds on the first query now, so that queries from
-    // several threads only read the tree.
-    if (!tree_->triangles.empty()) {
-        static_cast<void>(tree_->tree.squared_distance(tree_->triangles.front().vertex(0)));
+    Tree* tree = tree_.get();
+    built_ = std::async(std::launch::async, [tree, &surface] { tree->fill(surface); }).share();
+}
+
+SurfaceIndex::~SurfaceIndex() {
+    if (built_.valid()) {
+        built_.wait();  // the thread still writes to tree_
     }
 }
 
-SurfaceIndex::~SurfaceIndex() = default;
+const SurfaceIndex::Tree& SurfaceIndex::tree() const {
+    if (built_.valid()) {
+        built_.get();  // waits; rethrows what the building threw
+    }
+    return *tree_;
+}
 
 SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
-    const auto [point, primitive] = tree_->tree.closest_point_and_primitive(toPoint(p));
+    const auto [point, primitive] = tree().tree.closest_point_and_primitive(toPoint(p));
     Nearest n;
     n.point = {point.x(), point.y(), point.z()};
     n.distance = glm::length(n.point - p);
-    n.triangle = static_cast<std::uint32_t>(primitive - tree_->triangles.cbegin());
+    n.triangle = static_cast<std::uint32_t>(primitive - tree().triangles.cbegin());
     return n;
 }
 
 double SurfaceIndex::distance(const glm::dvec3& p, glm::dvec3& hint) const {
-    const Kernel::Point_3 nearest = tree_->tree.closest_point(toPoint(p), toPoint(hint));
+    const Kernel::Point_3 nearest = tree().tree.closest_point(toPoint(p), toPoint(hint));
     hint = {nearest.x(), nearest.y(), nearest.z()};
     return glm::length(hint - p);
 }
@@ -67,7 +89,7 @@ std::optional<glm::dvec3> SurfaceIndex::firstHit(const glm::dvec3& origin,
                                                  const glm::dvec3& direction) const {
     const Kernel::Ray_3 ray(toPoint(origin),
                             Kernel::Vector_3(direction.x, direction.y, direction.z));
-    const auto hit = tree_->tree.first_intersection(ray);
+    const auto hit = tree().tree.first_intersection(ray);
     if (!hit) {
         return std::nullopt;
     }
@@ -147,8 +169,8 @@ std::vector<std::uint32_t> SurfaceIndex::trianglesOnPlane(const glm::dvec3& poin
                                                           const glm::dvec3& lo,
                                                           const glm::dvec3& hi) const {
     std::vector<std::uint32_t> crossing;
-    PlaneInBoxTraversal traversal(tree_->triangles.cbegin(), crossing);
-    tree_->tree.traversal(
+    PlaneInBoxTraversal traversal(tree().triangles.cbegin(), crossing);
+    tree().tree.traversal(
         PlaneInBox{.point = point, .normal = normal, .box = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}},
         traversal);
     return crossing;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <cstdint>
+#include <future>
 #include <glm/glm.hpp>
 #include <memory>
 #include <optional>
@@ -16,9 +17,16 @@ namespace vv::analysis::detail {
 
 class SurfaceIndex {
   public:
-    /// Indexes `surface`'s triangles; the surface must outlive this object.
-    /// Built whole here: its queries may run on several threads at once.
-    explicit SurfaceIndex(const PreparedSurface& surface);
+    /// Where the index is built: here, or on a thread of its own from here
+    /// on (the first query waits for it, and rethrows what building threw,
+    /// e.g. std::bad_alloc; the destructor waits for it too).
+    enum class Build : std::uint8_t { Now, InBackground };
+
+    /// Indexes `surface`'s triangles; the surface must outlive this object,
+    /// and its positions and triangles must not change while it is built.
+    /// Built whole before the first query answers: its queries may run on
+    /// several threads at once.
+    explicit SurfaceIndex(const PreparedSurface& surface, Build build = Build::Now);
     ~SurfaceIndex();
     SurfaceIndex(const SurfaceIndex&) = delete;
     SurfaceIndex& operator=(const SurfaceIndex&) = delete;
@@ -55,7 +63,9 @@ class SurfaceIndex {
 
   private:
     struct Tree;
+    [[nodiscard]] const Tree& tree() const;
     std::unique_ptr<Tree> tree_;
+    std::shared_future<void> built_;  ///< valid when built in the background
 };
 
 }  // namespace vv::analysis::detail
