@@ -21,32 +21,51 @@ std::vector<cv::Point2f> toCvFloat(const std::vector<glm::dvec2>& contour,
     return points;
 }
 
-/// Smallest and largest width of a convex polygon: the largest is the
-/// largest distance between two of its points; the smallest is found with
-/// one side of the calipers on an edge (rotating calipers, Toussaint 1983).
+/// Smallest and largest width of a convex polygon (in order, either way
+/// round), by rotating calipers (Shamos 1978; Toussaint 1983): for each
+/// edge, the vertex farthest from its line (which moves on monotonically
+/// as the edges go round) gives the width across that edge, the smallest
+/// of which is the smallest width; every vertex the calipers pass on the
+/// way is antipodal to the edge's first corner, and the largest width is
+/// the largest distance between an antipodal pair. O(n), where the
+/// sections of a 1M-triangle surface have hulls of a thousand points.
 std::pair<double, double> feretWidths(const std::vector<cv::Point2f>& hull) {
     const std::size_t n = hull.size();
-    double largest = 0.0;
+    if (n < 2) {
+        return {0.0, 0.0};
+    }
+    const auto at = [&](std::size_t i) { return cv::Point2d(hull[i % n]); };
+    const auto squared = [](const cv::Point2d& d) { return d.x * d.x + d.y * d.y; };
+    // Twice the area of the triangle (a, b, p): the distance of p from the
+    // line ab times |ab|.
+    const auto across = [](const cv::Point2d& a, const cv::Point2d& b, const cv::Point2d& p) {
+        const cv::Point2d e = b - a;
+        const cv::Point2d d = p - a;
+        return std::abs(e.x * d.y - e.y * d.x);
+    };
+    double largest2 = 0.0;
     double smallest = std::numeric_limits<double>::max();
+    std::size_t j = 1;
     for (std::size_t i = 0; i < n; ++i) {
-        const cv::Point2d a = hull[i];
-        const cv::Point2d b = hull[(i + 1) % n];
-        const cv::Point2d edge = b - a;
-        const double length = std::hypot(edge.x, edge.y);
-        double farthest = 0.0;
-        for (std::size_t j = 0; j < n; ++j) {
-            const cv::Point2d p = hull[j];
-            largest = std::max(largest, std::hypot(p.x - a.x, p.y - a.y));
-            if (length > 0.0) {
-                const cv::Point2d d = p - a;
-                farthest = std::max(farthest, std::abs(edge.x * d.y - edge.y * d.x) / length);
-            }
+        const cv::Point2d a = at(i);
+        const cv::Point2d b = at(i + 1);
+        largest2 = std::max(largest2, squared(at(j) - a));
+        // On to the farthest vertex from this edge's line; at most once
+        // round (a plateau, where an edge is parallel to this one, is
+        // crossed: its far end is antipodal too).
+        for (std::size_t steps = 0;
+             steps < n && across(a, b, at(j + 1)) >= across(a, b, at(j)) && (j + 1) % n != i;
+             ++steps) {
+            j = (j + 1) % n;
+            largest2 = std::max(largest2, squared(at(j) - a));
         }
+        largest2 = std::max(largest2, squared(at(j) - b));
+        const double length = std::sqrt(squared(b - a));
         if (length > 0.0) {
-            smallest = std::min(smallest, farthest);
+            smallest = std::min(smallest, across(a, b, at(j)) / length);
         }
     }
-    return {smallest == std::numeric_limits<double>::max() ? 0.0 : smallest, largest};
+    return {smallest == std::numeric_limits<double>::max() ? 0.0 : smallest, std::sqrt(largest2)};
 }
 
 }  // namespace
