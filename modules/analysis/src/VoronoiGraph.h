@@ -65,7 +65,7 @@ inline constexpr std::size_t kMaxSlabs = 256;
 /// AnalysisError when nothing is inside; CancelledError on a stop.
 ///
 /// The points are cut across the longest side of their box into slabs
-/// (`slabs`); a slab's tetrahedra whose circumspheres lie within
+/// (`policy`); a slab's tetrahedra whose circumspheres lie within
 /// the points it took are those of all the points, and each diagram vertex
 /// is taken from the slab its centre lies in. The graph is the same however
 /// the points were cut (each row ascending; the numbering of vertices with
@@ -73,6 +73,6 @@ inline constexpr std::size_t kMaxSlabs = 256;
 [[nodiscard]] VoronoiGraph buildVoronoiGraph(const PreparedSurface& surface,
                                              const VoronoiSamples& samples,
                                              const Progress& progress,
-                                             const SlabPolicy& slabs = {});
+                                             const SlabPolicy& policy = {});
 
 }  // namespace vv::analysis::detail
