@@ -32,6 +32,13 @@ bool addedNote(const CenterlineTree& tree) {
     });
 }
 
+/// The note that the wall folds over itself.
+bool foldedNote(const CenterlineTree& tree) {
+    return std::ranges::any_of(tree.notes, [](const std::string& note) {
+        return note.find("folds over itself") != std::string::npos;
+    });
+}
+
 double worstAxisDistance(const CenterlineTree& tree, const demo::TubePhantom& truth) {
     double worst = 0.0;
     const double r = truth.options.radiusMm;
@@ -84,7 +91,22 @@ TEST(VoronoiSampling, ARoughSurfaceKeepsEveryPoint) {
     EXPECT_FALSE(reducedNote(tree));
     // Its curvature measures the roughness, not the vessel: no points added.
     EXPECT_FALSE(addedNote(tree));
+    // Rough, but its noise (2 % of r) is under its triangles: no fold.
+    EXPECT_FALSE(foldedNote(tree));
     EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
+}
+
+// Noise larger than the triangles (10 % of r on a 50k tube: 6 % of its
+// vertices' normals point against their neighbourhood's) is said, with how
+// much of the wall it takes.
+TEST(VoronoiSampling, AWallThatFoldsOverItselfIsNamed) {
+    const auto truth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 5.0, 50'000, 0.1));
+    const CenterlineTree tree = computeCenterlines(truth.mesh);
+    EXPECT_TRUE(foldedNote(tree));
+    const auto smooth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 5.0, 50'000, 0.05));
+    EXPECT_FALSE(foldedNote(computeCenterlines(smooth.mesh)));
 }
 
 TEST(VoronoiSampling, AnalyseVesselsGivesWhatTheTwoStepsGive) {

@@ -683,6 +683,13 @@ VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
                           fixedText(kDenseSpacingPerRadius * samples.addedSpacingScale, 3) +
                           " of the local radius apart; the sections cut the facets as they are");
     }
+    if (samples.foldedFraction > kFoldedFraction) {
+        s.notes.push_back("the wall folds over itself at " +
+                          fixedText(100.0 * samples.foldedFraction, 1) +
+                          " % of its vertices (its noise is larger than its triangles): the "
+                          "centrelines and sections may follow the noise rather than the vessel, "
+                          "most where it narrows or bends; smooth the surface first");
+    }
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     markHoles(s, g);
     return g;

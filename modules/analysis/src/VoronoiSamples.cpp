@@ -107,6 +107,11 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
             normals[v] = length > 0.0 ? sum[v] / length : normals[v];
         }
     }
+    std::size_t folded = 0;
+    for (std::size_t v = 0; v < n; ++v) {
+        folded += glm::dot(s.cappedNormals[v], normals[v]) < 0.0 ? 1 : 0;
+    }
+    samples.foldedFraction = static_cast<double>(folded) / static_cast<double>(n);
     forEachEdge([&](std::uint32_t a, std::uint32_t b) {
         const double length = glm::length(s.positions[a] - s.positions[b]);
         if (!(length > 0.0)) {

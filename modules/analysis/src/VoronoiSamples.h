@@ -41,6 +41,14 @@ inline constexpr int kMaxFacetSteps = 256;
 /// alike (VoronoiSamples::addedSpacingScale).
 inline constexpr double kMaxAddedPoints = 2'000'000.0;
 
+/// Above this fraction of its vertices folded (VoronoiSamples::foldedFraction)
+/// a wall's noise is larger than its triangles, and the analysis says so:
+/// measured, every phantom up to 5 % jitter and every decimated or segmented
+/// surface folds at under 0.03 % of its vertices; the jittered 1M tubes
+/// (0.1 mm of noise on 0.08 mm triangles) at 1-5 %, where the narrowed and
+/// bent ones go wrong (docs/benchmarks/analysis.md).
+inline constexpr double kFoldedFraction = 0.005;
+
 struct VoronoiSamples {
     /// The capped surface's vertices to triangulate, ascending; every one
     /// when the surface is nowhere finer than needed (`reduced` false).
@@ -58,6 +66,10 @@ struct VoronoiSamples {
     bool reduced = false;
     /// The largest distance from a left-out vertex to its representative, mm.
     double largestGapMm = 0.0;
+    /// The fraction of the surface's vertices whose own normal points away
+    /// from their neighbourhood's (more than 90 degrees from it, averaged
+    /// over four rings): there the wall folds over itself.
+    double foldedFraction = 0.0;
     /// Per surface vertex: its local radius (as the reduction measures it),
     /// 0 where the wall is rough there; infinite on a flat wall.
     std::vector<float> wallRadiusMm;
