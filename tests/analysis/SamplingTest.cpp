@@ -109,6 +109,18 @@ TEST(VoronoiSampling, AWallThatFoldsOverItselfIsNamed) {
     EXPECT_FALSE(foldedNote(computeCenterlines(smooth.mesh)));
 }
 
+// Noise of 20 % of r: whether the analysis still finds a path or not, the
+// fold is named, in the notes or in the error.
+TEST(VoronoiSampling, AFoldedWallIsNamedInTheErrorToo) {
+    const auto truth =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Stenosis, 5.0, 50'000, 0.2));
+    try {
+        EXPECT_TRUE(foldedNote(computeCenterlines(truth.mesh)));
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("folds over itself"), std::string::npos) << e.what();
+    }
+}
+
 TEST(VoronoiSampling, AnalyseVesselsGivesWhatTheTwoStepsGive) {
     const auto truth =
         demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Stenosis, 5.0, 40'000));

@@ -59,6 +59,16 @@ std::string unitsHint(const PreparedSurface& s) {
     return " (the surface is " + fixedText(s.diagonalMm, 2) + " mm across: is the surface in mm?)";
 }
 
+/// " (the wall folds over itself ...)" when it does (kFoldedFraction), else
+/// empty: the inside of such a wall breaks up where the vessel narrows.
+std::string foldHint(const PreparedSurface& s) {
+    if (!(s.foldedFraction > detail::kFoldedFraction)) {
+        return {};
+    }
+    return " (the wall folds over itself at " + fixedText(100.0 * s.foldedFraction, 1) +
+           " % of its vertices: its noise is larger than its triangles; smooth the surface first)";
+}
+
 [[noreturn]] void fail(const PreparedSurface& s, const std::string& problem) {
     throw AnalysisError(s.source, (s.source.empty() ? s.name + ": " : "") + problem);
 }
@@ -683,9 +693,10 @@ VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
                           fixedText(kDenseSpacingPerRadius * samples.addedSpacingScale, 3) +
                           " of the local radius apart; the sections cut the facets as they are");
     }
-    if (samples.foldedFraction > kFoldedFraction) {
+    s.foldedFraction = samples.foldedFraction;
+    if (s.foldedFraction > kFoldedFraction) {
         s.notes.push_back("the wall folds over itself at " +
-                          fixedText(100.0 * samples.foldedFraction, 1) +
+                          fixedText(100.0 * s.foldedFraction, 1) +
                           " % of its vertices (its noise is larger than its triangles): the "
                           "centrelines and sections may follow the noise rather than the vessel, "
                           "most where it narrows or bends; smooth the surface first");
@@ -714,7 +725,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         if (target.vertex == kNone || !tree.reaches(target.vertex)) {
             fail(s, "no path inside the surface joins the source " +
                         pointText(source.end.position) + " and the end " +
-                        pointText(target.end.position) + unitsHint(s));
+                        pointText(target.end.position) + unitsHint(s) + foldHint(s));
         }
     }
     checkPathLengths(s, g, tree, source, targets, options.stepMm);

@@ -49,6 +49,9 @@ struct PreparedSurface {
     std::vector<glm::dvec3> cappedNormals;
     std::vector<std::string> notes;
     double diagonalMm = 0.0;  ///< of the kept piece's bounding box
+    /// The fraction of its vertices where the wall folds over itself (set
+    /// with the Voronoi samples: VoronoiSamples::foldedFraction).
+    double foldedFraction = 0.0;
 };
 
 /// Prepares `mesh`. `anchor`, when given, picks the piece whose nearest
