@@ -59,14 +59,21 @@ std::string unitsHint(const PreparedSurface& s) {
     return " (the surface is " + fixedText(s.diagonalMm, 2) + " mm across: is the surface in mm?)";
 }
 
-/// " (the wall folds over itself ...)" when it does (kFoldedFraction), else
-/// empty: the inside of such a wall breaks up where the vessel narrows.
-std::string foldHint(const PreparedSurface& s) {
-    if (!(s.foldedFraction > detail::kFoldedFraction)) {
-        return {};
-    }
-    return " (the wall folds over itself at " + fixedText(100.0 * s.foldedFraction, 1) +
-           " % of its vertices: its noise is larger than its triangles; smooth the surface first)";
+/// Whether the wall folds over itself (kFoldedFraction), and the finding's
+/// words: the note on a result and the hint on a failure share them.
+bool folds(const PreparedSurface& s) {
+    return s.foldedFraction > detail::kFoldedFraction;
+}
+std::string foldFinding(const PreparedSurface& s) {
+    return "the wall folds over itself at " + fixedText(100.0 * s.foldedFraction, 1) +
+           " % of its vertices: its noise is larger than its triangles";
+}
+
+/// What about the surface may explain a failure: its size (unitsHint) and
+/// a wall that folds over itself (the inside of such a wall breaks up where
+/// the vessel narrows); empty when neither.
+std::string surfaceHints(const PreparedSurface& s) {
+    return unitsHint(s) + (folds(s) ? " (" + foldFinding(s) + "; smooth the surface first)" : "");
 }
 
 [[noreturn]] void fail(const PreparedSurface& s, const std::string& problem) {
@@ -694,12 +701,10 @@ VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
                           " of the local radius apart; the sections cut the facets as they are");
     }
     s.foldedFraction = samples.foldedFraction;
-    if (s.foldedFraction > kFoldedFraction) {
-        s.notes.push_back("the wall folds over itself at " +
-                          fixedText(100.0 * s.foldedFraction, 1) +
-                          " % of its vertices (its noise is larger than its triangles): the "
-                          "centrelines and sections may follow the noise rather than the vessel, "
-                          "most where it narrows or bends; smooth the surface first");
+    if (folds(s)) {
+        s.notes.push_back(foldFinding(s) +
+                          "; the centrelines and sections may follow the noise rather than the "
+                          "vessel, most where it narrows or bends; smooth the surface first");
     }
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     markHoles(s, g);
@@ -725,7 +730,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         if (target.vertex == kNone || !tree.reaches(target.vertex)) {
             fail(s, "no path inside the surface joins the source " +
                         pointText(source.end.position) + " and the end " +
-                        pointText(target.end.position) + unitsHint(s) + foldHint(s));
+                        pointText(target.end.position) + surfaceHints(s));
         }
     }
     checkPathLengths(s, g, tree, source, targets, options.stepMm);

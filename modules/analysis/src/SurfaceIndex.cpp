@@ -71,11 +71,12 @@ const SurfaceIndex::Tree& SurfaceIndex::tree() const {
 }
 
 SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
-    const auto [point, primitive] = tree().tree.closest_point_and_primitive(toPoint(p));
+    const Tree& t = tree();
+    const auto [point, primitive] = t.tree.closest_point_and_primitive(toPoint(p));
     Nearest n;
     n.point = {point.x(), point.y(), point.z()};
     n.distance = glm::length(n.point - p);
-    n.triangle = static_cast<std::uint32_t>(primitive - tree().triangles.cbegin());
+    n.triangle = static_cast<std::uint32_t>(primitive - t.triangles.cbegin());
     return n;
 }
 
@@ -169,8 +170,9 @@ std::vector<std::uint32_t> SurfaceIndex::trianglesOnPlane(const glm::dvec3& poin
                                                           const glm::dvec3& lo,
                                                           const glm::dvec3& hi) const {
     std::vector<std::uint32_t> crossing;
-    PlaneInBoxTraversal traversal(tree().triangles.cbegin(), crossing);
-    tree().tree.traversal(
+    const Tree& t = tree();
+    PlaneInBoxTraversal traversal(t.triangles.cbegin(), crossing);
+    t.tree.traversal(
         PlaneInBox{.point = point, .normal = normal, .box = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}},
         traversal);
     return crossing;

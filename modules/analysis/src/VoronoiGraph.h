@@ -40,12 +40,12 @@ struct VoronoiGraph {
 /// every core; each slab with the points within a margin of it).
 struct SlabPolicy {
     /// From this many points on, one slab per core: the demo tree's 150k
-    /// points take 0.7-1.0 s in two slabs on two cores against 1.0-1.6 s in
-    /// one (docs/benchmarks/analysis.md); below, the margins cost more than
-    /// the cores give.
+    /// points take 1.2 s in two slabs on two cores against 1.6-1.8 s in one
+    /// (`bench/analysis_accuracy --slabs`); below, the margins cost more
+    /// than the cores give.
     std::size_t splitFrom = 60'000;
     /// At most about this many points per slab: the tetrahedralisation takes
-    /// about 470 bytes per point, so a slab of 400k holds about 180 MiB, and
+    /// about 480 bytes per point, so a slab of 400k holds about 180 MiB, and
     /// a 10M-triangle surface is never tetrahedralised whole.
     std::size_t maxPointsPerSlab = 400'000;
     /// Slabs wanted from splitFrom on (the worker threads by default).

@@ -107,11 +107,6 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
             normals[v] = length > 0.0 ? sum[v] / length : normals[v];
         }
     }
-    std::size_t folded = 0;
-    for (std::size_t v = 0; v < n; ++v) {
-        folded += glm::dot(s.cappedNormals[v], normals[v]) < 0.0 ? 1 : 0;
-    }
-    samples.foldedFraction = static_cast<double>(folded) / static_cast<double>(n);
     forEachEdge([&](std::uint32_t a, std::uint32_t b) {
         const double length = glm::length(s.positions[a] - s.positions[b]);
         if (!(length > 0.0)) {
@@ -137,10 +132,14 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
     // 0 (kept alone) where that is no coarser than the surface already is.
     std::vector<double> cell(capped, 0.0);
     double finest = std::numeric_limits<double>::infinity();
+    std::size_t folded = 0;
     for (std::size_t v = 0; v < n; ++v) {
         // A rough wall (its normal far from its neighbourhood's) keeps every
-        // point: sparse points on it give spiky inscribed spheres.
-        if (glm::dot(s.cappedNormals[v], normals[v]) < kRoughCosine) {
+        // point: sparse points on it give spiky inscribed spheres. Where it
+        // points against it, the wall folds over itself.
+        const double agreement = glm::dot(s.cappedNormals[v], normals[v]);
+        folded += agreement < 0.0 ? 1 : 0;
+        if (agreement < kRoughCosine) {
             shape.rough[v] = 1;
             continue;
         }
@@ -150,6 +149,7 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
             finest = std::min(finest, size);
         }
     }
+    samples.foldedFraction = static_cast<double>(folded) / static_cast<double>(n);
     for (const BoundaryLoop& loop : s.loops) {
         for (const std::uint32_t v : loop.vertices) {
             cell[v] = 0.0;  // the rims decide the open ends' centres
