@@ -11,8 +11,9 @@
 // DICOM series, against the tree it was voxelised from.
 //
 //   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm | --huge
-//                                          | --slabs [ROUNDS]]
-//   (--quick: no 1M rows; --demo: the demo tree's row alone; --cta: the
+//                                          | --slabs [ROUNDS] | --tubes [TRIANGLES]]
+//   (--quick: no 1M rows; --demo: the demo tree's row alone; --tubes: the
+//   tube table alone at one density, 1M triangles unless given; --cta: the
 //   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
 //   rows included; --huge: a 10M-triangle cylinder alone; --slabs: the
 //   Voronoi diagram in one slab against one per core, in turn)
@@ -475,6 +476,10 @@ int main(int argc, char** argv) {
     }
     if (mode("--slabs")) {
         slabTable(argc > 2 ? std::max(1, std::atoi(argv[2])) : 5);
+        return 0;
+    }
+    if (mode("--tubes")) {  // the tube table at one density: --tubes [TRIANGLES]
+        tubeTable({argc > 2 ? static_cast<std::size_t>(std::atol(argv[2])) : 1'000'000});
         return 0;
     }
     if (mode("--cta")) {

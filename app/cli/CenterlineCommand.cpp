@@ -35,7 +35,7 @@ namespace {
 constexpr const char* kCenterlineUsage =
     "usage: vesselview-cli centerline FILE -o CENTERLINES.vtp [--source X,Y,Z]\n"
     "       [--target X,Y,Z ...] [--step MM] [--scale F] [--sections SECTIONS.csv]\n"
-    "       [--surface-out SURFACE.vtp] [--json]\n"
+    "       [--surface-out SURFACE.vtp] [--json] [--smooth-folded on|off]\n"
     "       [DICOM options as for segment]\n"
     "  The centrelines of a vessel surface (a mesh file, or a DICOM series\n"
     "  segmented as render and segment do), by VMTK's method: the internal\n"
@@ -58,6 +58,12 @@ constexpr const char* kCenterlineUsage =
     "  --json               branches with lengths, diameters at the narrowest and\n"
     "                       widest points, stenoses and bifurcation angles on\n"
     "                       stdout\n"
+    "  --smooth-folded on|off  a wall whose noise is larger than its triangles\n"
+    "                       folds over itself, and its inside breaks up where\n"
+    "                       the vessel narrows: on (the default), such a wall is\n"
+    "                       smoothed first (a low-pass filter that keeps the\n"
+    "                       vessel's shape; a note says how far its points\n"
+    "                       moved); off, it is analysed as it is, with a note\n"
     "  Diameters: equivalent = 2 sqrt(area / pi); minimum / maximum = the\n"
     "  smallest / largest caliper (Feret) width of the section; inscribed =\n"
     "  twice the largest sphere on the centreline inside the surface.\n"
@@ -111,6 +117,12 @@ std::optional<CenterlineArgs> parseArgs(const std::vector<std::string>& args, st
             if (!(c.options.stepMm >= 0.01 && c.options.stepMm <= 10.0)) {
                 a.fail("--step must be within 0.01..10 mm");
             }
+        } else if (name == "--smooth-folded") {
+            const std::string& value = a.value();
+            if (value != "on" && value != "off") {
+                a.fail("--smooth-folded must be on or off, not '" + value + "'");
+            }
+            c.options.smoothFoldedWall = value == "on";
         } else if (name == "--scale") {
             c.source.mesh.scale = parseNumber(a.value(), "--scale");
             if (!(c.source.mesh.scale > 0.0)) {

@@ -82,7 +82,7 @@ constexpr const char* kUsageText =
     "                                       tube continues past the segmentation\n"
     "  centerline FILE -o CENTERLINES.vtp [--source X,Y,Z] [--target X,Y,Z ...] [--step MM]\n"
     "         [--scale F] [--sections SECTIONS.csv] [--surface-out SURFACE.vtp] [--json]\n"
-    "         [DICOM options as for render]\n"
+    "         [--smooth-folded on|off] [DICOM options as for render]\n"
     "                                       centrelines (VMTK's method), sections with their\n"
     "                                       diameters, stenoses and bifurcation angles of a\n"
     "                                       mesh or of segmented DICOM vessels; exit code 3\n"

@@ -33,21 +33,6 @@ TubePhantom phantom(TubeShape shape, double radius, std::size_t triangles, doubl
     return makeTubePhantom(o);
 }
 
-/// The largest distance from the centreline to the true axis over the points
-/// at least `margin` from both ends of the axis.
-double worstAxisDistance(const CenterlineTree& tree, const TubePhantom& truth, double margin) {
-    double worst = 0.0;
-    for (const auto& branch : tree.branches) {
-        for (const auto& point : branch.points) {
-            const auto [distance, s] = truth.distanceToAxis(point.position);
-            if (s >= margin && s <= truth.lengthMm - margin) {
-                worst = std::max(worst, distance);
-            }
-        }
-    }
-    return worst;
-}
-
 double totalLength(const CenterlineTree& tree) {
     double length = 0.0;
     for (const auto& branch : tree.branches) {
@@ -78,7 +63,7 @@ TEST_P(TubeCenterline, FollowsTheTrueAxis) {
         EXPECT_EQ(end.kind, EndPoint::Kind::OpenEnd);
         EXPECT_NEAR(end.radiusMm, c.radius, 0.05 * c.radius);
     }
-    const double worst = worstAxisDistance(tree, truth, c.radius);
+    const double worst = vv::test::worstAxisDistance(tree, truth, c.radius);
     RecordProperty("worst_axis_distance_per_r", std::to_string(worst / c.radius));
     RecordProperty("length_error", std::to_string(totalLength(tree) / truth.lengthMm - 1.0));
     EXPECT_LT(worst, 0.02 * c.radius);
@@ -186,7 +171,7 @@ TEST(Centerline, ClosedTubeEndsAtItsTips) {
     for (const EndPoint& end : tree.ends) {
         EXPECT_EQ(end.kind, EndPoint::Kind::Tip);
     }
-    EXPECT_LT(worstAxisDistance(tree, truth, 5.0), 0.02 * 5.0);
+    EXPECT_LT(vv::test::worstAxisDistance(tree, truth, 5.0), 0.02 * 5.0);
     EXPECT_NEAR(totalLength(tree), truth.lengthMm, 0.01 * truth.lengthMm);
 }
 

@@ -39,20 +39,6 @@ bool foldedNote(const CenterlineTree& tree) {
     });
 }
 
-double worstAxisDistance(const CenterlineTree& tree, const demo::TubePhantom& truth) {
-    double worst = 0.0;
-    const double r = truth.options.radiusMm;
-    for (const auto& branch : tree.branches) {
-        for (const auto& p : branch.points) {
-            const auto [distance, s] = truth.distanceToAxis(p.position);
-            if (s > r && s < truth.lengthMm - r) {
-                worst = std::max(worst, distance);
-            }
-        }
-    }
-    return worst;
-}
-
 // A 10 mm cylinder in 300k triangles: some 150 points around its lumen.
 TEST(VoronoiSampling, ANeedlesslyFineSurfaceIsSampledAndStaysAccurate) {
     const auto truth =
@@ -66,7 +52,7 @@ TEST(VoronoiSampling, ANeedlesslyFineSurfaceIsSampledAndStaysAccurate) {
     // once read as a tiny radius): no points added.
     EXPECT_FALSE(addedNote(tree));
     ASSERT_EQ(tree.branches.size(), 1U);
-    EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
+    EXPECT_LT(test::worstAxisDistance(tree, truth, truth.options.radiusMm), 0.02 * 10.0);
     // The given end: the sphere touching the wall there, exactly, not a
     // sample's pole a quarter radius away.
     ASSERT_EQ(tree.ends.size(), 2U);
@@ -93,7 +79,7 @@ TEST(VoronoiSampling, ARoughSurfaceKeepsEveryPoint) {
     EXPECT_FALSE(addedNote(tree));
     // Rough, but its noise (2 % of r) is under its triangles: no fold.
     EXPECT_FALSE(foldedNote(tree));
-    EXPECT_LT(worstAxisDistance(tree, truth), 0.02 * 10.0);
+    EXPECT_LT(test::worstAxisDistance(tree, truth, truth.options.radiusMm), 0.02 * 10.0);
 }
 
 // Noise larger than the triangles (10 % of r on a 50k tube: 6 % of its
@@ -162,7 +148,7 @@ TEST(SurfaceCoarsening, AMeshOverTheLimitIsCoarsenedAndSaysSo) {
               std::string::npos)
         << note;
     ASSERT_EQ(analysed.tree.branches.size(), 1U);
-    EXPECT_LT(worstAxisDistance(analysed.tree, truth), 0.02 * 5.0);
+    EXPECT_LT(test::worstAxisDistance(analysed.tree, truth, truth.options.radiusMm), 0.02 * 5.0);
     EXPECT_NEAR(analysed.tree.branches[0].lengthMm, truth.lengthMm, 0.01 * truth.lengthMm);
     int measured = 0;
     for (const CrossSection& s : analysed.sections[0]) {

@@ -16,8 +16,11 @@ namespace vv::analysis::detail {
 
 /// The internal Voronoi diagram of the prepared surface `s`
 /// (VoronoiSamples.h's points, a note when they are fewer than the
-/// surface's); marks the surface's loops that are holes and notes them.
-[[nodiscard]] VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress);
+/// surface's); marks the surface's loops that are holes and notes them. A
+/// wall that folds over itself is smoothed first when `smoothFoldedWall`
+/// (CenterlineOptions::smoothFoldedWall; WallSmoothing.h), and noted.
+[[nodiscard]] VoronoiGraph diagramOf(PreparedSurface& s, bool smoothFoldedWall,
+                                     const Progress& progress);
 
 /// computeCenterlines() on the prepared surface `s` (options validated),
 /// its diagram `g` and its index `surface`; its notes are s.notes.

@@ -13,6 +13,8 @@
 #include "PreparedSurface.h"
 #include "SurfaceIndex.h"
 #include "VoronoiGraph.h"
+#include "VoronoiSamples.h"
+#include "WallSmoothing.h"
 #include "vv/core/NumberText.h"
 #include "vv/core/Parallel.h"
 
@@ -59,21 +61,20 @@ std::string unitsHint(const PreparedSurface& s) {
     return " (the surface is " + fixedText(s.diagonalMm, 2) + " mm across: is the surface in mm?)";
 }
 
-/// Whether the wall folds over itself (kFoldedFraction), and the finding's
-/// words: the note on a result and the hint on a failure share them.
-bool folds(const PreparedSurface& s) {
-    return s.foldedFraction > detail::kFoldedFraction;
-}
-std::string foldFinding(const PreparedSurface& s) {
-    return "the wall folds over itself at " + fixedText(100.0 * s.foldedFraction, 1) +
-           " % of its vertices: its noise is larger than its triangles";
-}
-
 /// What about the surface may explain a failure: its size (unitsHint) and
 /// a wall that folds over itself (the inside of such a wall breaks up where
 /// the vessel narrows); empty when neither.
 std::string surfaceHints(const PreparedSurface& s) {
-    return unitsHint(s) + (folds(s) ? " (" + foldFinding(s) + "; smooth the surface first)" : "");
+    std::string hints = unitsHint(s);
+    if (folds(s)) {
+        hints += s.foldedFractionBeforeSmoothing > 0.0
+                     ? " (even smoothed, " + foldFinding(s) + ")"
+                     : " (" + foldFinding(s) + "; smooth the surface first)";
+    } else if (s.foldedFractionBeforeSmoothing > 0.0) {
+        hints += " (the wall was smoothed first: it folded over itself at " +
+                 fixedText(100.0 * s.foldedFractionBeforeSmoothing, 1) + " % of its vertices)";
+    }
+    return hints;
 }
 
 [[noreturn]] void fail(const PreparedSurface& s, const std::string& problem) {
@@ -650,7 +651,7 @@ auto onPrepared(const scene::Mesh& mesh, const CenterlineOptions& options, const
     progress.report(0.0, "Preparing the surface");
     PreparedSurface s =
         detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
-    const VoronoiGraph g = detail::diagramOf(s, progress);
+    const VoronoiGraph g = detail::diagramOf(s, options.smoothFoldedWall, progress);
     // Built on another core while the first minimal paths and the tips are
     // searched (they need no index); its first query waits for it.
     const SurfaceIndex surface(s, SurfaceIndex::Build::InBackground);
@@ -679,8 +680,12 @@ VesselAnalysis analyseVessels(const scene::Mesh& mesh, const CenterlineOptions& 
 
 namespace detail {
 
-VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
-    const detail::VoronoiSamples samples = detail::chooseVoronoiSamples(s, progress);
+VoronoiGraph diagramOf(PreparedSurface& s, bool smoothFoldedWall, const Progress& progress) {
+    detail::VoronoiSamples samples = detail::chooseVoronoiSamples(s, progress);
+    s.foldedFraction = samples.foldedFraction;
+    if (smoothFoldedWall && smoothIfFolded(s, progress.sub(0.02, 0.05))) {
+        samples = detail::chooseVoronoiSamples(s, progress);
+    }
     if (samples.reduced) {
         s.notes.push_back(
             "the surface is finer than its vessels need: the Voronoi diagram was built from " +
@@ -700,11 +705,12 @@ VoronoiGraph diagramOf(PreparedSurface& s, const Progress& progress) {
                           fixedText(kDenseSpacingPerRadius * samples.addedSpacingScale, 3) +
                           " of the local radius apart; the sections cut the facets as they are");
     }
-    s.foldedFraction = samples.foldedFraction;
     if (folds(s)) {
-        s.notes.push_back(foldFinding(s) +
-                          "; the centrelines and sections may follow the noise rather than the "
-                          "vessel, most where it narrows or bends; smooth the surface first");
+        s.notes.push_back(
+            (s.foldedFractionBeforeSmoothing > 0.0 ? "even smoothed, " : "") + foldFinding(s) +
+            "; the centrelines and sections may follow the noise rather than the vessel, most "
+            "where it narrows or bends" +
+            (s.foldedFractionBeforeSmoothing > 0.0 ? "" : "; smooth the surface first"));
     }
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     markHoles(s, g);

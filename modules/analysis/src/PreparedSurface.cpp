@@ -457,6 +457,19 @@ void computeCappedNormals(PreparedSurface& s) {
 
 }  // namespace
 
+void movePositions(PreparedSurface& s, std::vector<glm::dvec3> positions) {
+    s.positions = std::move(positions);
+    for (BoundaryLoop& loop : s.loops) {
+        measureLoop(loop, s.positions);
+    }
+    std::copy(s.positions.begin(), s.positions.end(), s.cappedPositions.begin());
+    for (const BoundaryLoop& loop : s.loops) {
+        s.cappedPositions[loop.capCentre] = loop.centre;
+    }
+    computeCappedNormals(s);
+    s.diagonalMm = diagonalOf(s.positions);
+}
+
 std::string meshLabel(const PreparedSurface& surface) {
     return surface.source.empty() ? surface.name : surface.source.string();
 }

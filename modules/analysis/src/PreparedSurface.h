@@ -52,6 +52,9 @@ struct PreparedSurface {
     /// The fraction of its vertices where the wall folds over itself (set
     /// with the Voronoi samples: VoronoiSamples::foldedFraction).
     double foldedFraction = 0.0;
+    /// foldedFraction before the wall was smoothed (WallSmoothing.h); 0 when
+    /// it was not.
+    double foldedFractionBeforeSmoothing = 0.0;
 };
 
 /// Prepares `mesh`. `anchor`, when given, picks the piece whose nearest
@@ -64,6 +67,11 @@ struct PreparedSurface {
 [[nodiscard]] PreparedSurface prepareSurface(const scene::Mesh& mesh,
                                              const std::optional<glm::dvec3>& anchor,
                                              const Progress& progress, std::size_t maxTriangles);
+
+/// Moves the kept piece's vertices to `positions` (one per vertex, in their
+/// order) and re-measures what depends on them: the loops' centres, radii
+/// and directions, the caps, the normals and the diagonal.
+void movePositions(PreparedSurface& s, std::vector<glm::dvec3> positions);
 
 /// The message prefix naming the mesh: its file, else its name.
 [[nodiscard]] std::string meshLabel(const PreparedSurface& surface);

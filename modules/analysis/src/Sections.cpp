@@ -15,6 +15,8 @@
 #include "ContourSize.h"
 #include "PreparedSurface.h"
 #include "SurfaceIndex.h"
+#include "VoronoiSamples.h"
+#include "WallSmoothing.h"
 #include "vv/core/Parallel.h"
 
 namespace vv::analysis {
@@ -328,10 +330,14 @@ std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
     if (tree.branches.empty()) {
         return {};
     }
-    const PreparedSurface s = detail::prepareSurface(
-        mesh, tree.branches.front().points.front().position, progress, kDefaultMaxTriangles);
+    PreparedSurface s = detail::prepareSurface(mesh, tree.branches.front().points.front().position,
+                                               progress, kDefaultMaxTriangles);
+    // A wall that folds over itself is cut smoothed, as computeCenterlines
+    // smooths it by default.
+    s.foldedFraction = detail::foldedFractionOf(s);
+    detail::smoothIfFolded(s, progress.sub(0.0, 0.1));
     const SurfaceIndex index(s);
-    return detail::sectionsOf(s, index, tree, progress);
+    return detail::sectionsOf(s, index, tree, progress.sub(0.1, 1.0));
 }
 
 std::vector<std::vector<CrossSection>> detail::sectionsOf(const PreparedSurface& s,

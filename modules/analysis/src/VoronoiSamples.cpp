@@ -61,6 +61,44 @@ struct LocalShape {
     std::vector<char> rough;
 };
 
+/// Calls visit(a, b) for each triangle's edges (an edge two triangles share,
+/// twice).
+template <typename Visit>
+void forEachEdgeOf(const std::vector<Triangle>& triangles, const Visit& visit) {
+    for (const Triangle& t : triangles) {
+        for (std::size_t k = 0; k < 3; ++k) {
+            visit(t[k], t[(k + 1) % 3]);
+        }
+    }
+}
+
+/// Per surface vertex, its normal averaged over its neighbours
+/// (kNormalSmoothingPasses times, unit): a jittered wall's normals scatter
+/// from triangle to triangle, its vessel's do not.
+std::vector<glm::dvec3> neighbourhoodNormals(const PreparedSurface& s) {
+    const std::size_t n = s.positions.size();
+    std::vector<glm::dvec3> normals(s.cappedNormals.begin(),
+                                    s.cappedNormals.begin() + static_cast<std::ptrdiff_t>(n));
+    for (int pass = 0; pass < kNormalSmoothingPasses; ++pass) {
+        std::vector<glm::dvec3> sum = normals;
+        forEachEdgeOf(s.triangles, [&](std::uint32_t a, std::uint32_t b) {
+            sum[a] += normals[b];
+            sum[b] += normals[a];
+        });
+        for (std::size_t v = 0; v < n; ++v) {
+            const double length = glm::length(sum[v]);
+            normals[v] = length > 0.0 ? sum[v] / length : normals[v];
+        }
+    }
+    return normals;
+}
+
+/// Whether the wall folds over itself at a vertex: its own normal points
+/// against its neighbourhood's (`averaged`).
+bool foldedAt(const PreparedSurface& s, const glm::dvec3& averaged, std::size_t v) {
+    return glm::dot(s.cappedNormals[v], averaged) < 0.0;
+}
+
 /// The reduction part of chooseVoronoiSamples(); `shape` receives what it
 /// learns of the vertices.
 VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
@@ -85,28 +123,8 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
     // radius r; more on a rough surface, which keeps more points).
     std::vector<double> edge(n, std::numeric_limits<double>::infinity());
     std::vector<double> curvature(n, 0.0);
-    const auto forEachEdge = [&](const auto& visit) {
-        for (const Triangle& t : s.triangles) {
-            for (std::size_t k = 0; k < 3; ++k) {
-                visit(t[k], t[(k + 1) % 3]);
-            }
-        }
-    };
-    // Normals averaged over their neighbours (kNormalSmoothingPasses times): a jittered wall's
-    // normals scatter from triangle to triangle, its vessel's do not.
-    std::vector<glm::dvec3> normals(s.cappedNormals.begin(),
-                                    s.cappedNormals.begin() + static_cast<std::ptrdiff_t>(n));
-    for (int pass = 0; pass < kNormalSmoothingPasses; ++pass) {
-        std::vector<glm::dvec3> sum = normals;
-        forEachEdge([&](std::uint32_t a, std::uint32_t b) {
-            sum[a] += normals[b];
-            sum[b] += normals[a];
-        });
-        for (std::size_t v = 0; v < n; ++v) {
-            const double length = glm::length(sum[v]);
-            normals[v] = length > 0.0 ? sum[v] / length : normals[v];
-        }
-    }
+    const auto forEachEdge = [&](const auto& visit) { forEachEdgeOf(s.triangles, visit); };
+    const std::vector<glm::dvec3> normals = neighbourhoodNormals(s);
     forEachEdge([&](std::uint32_t a, std::uint32_t b) {
         const double length = glm::length(s.positions[a] - s.positions[b]);
         if (!(length > 0.0)) {
@@ -138,7 +156,7 @@ VoronoiSamples reducedSamples(const PreparedSurface& s, LocalShape& shape,
         // point: sparse points on it give spiky inscribed spheres. Where it
         // points against it, the wall folds over itself.
         const double agreement = glm::dot(s.cappedNormals[v], normals[v]);
-        folded += agreement < 0.0 ? 1 : 0;
+        folded += foldedAt(s, normals[v], v) ? 1 : 0;
         if (agreement < kRoughCosine) {
             shape.rough[v] = 1;
             continue;
@@ -343,6 +361,16 @@ VoronoiSamples chooseVoronoiSamples(const PreparedSurface& s, const Progress& pr
     }
     addPointsOnCoarseFacets(s, shape, samples, progress);
     return samples;
+}
+
+double foldedFractionOf(const PreparedSurface& s) {
+    const std::vector<glm::dvec3> normals = neighbourhoodNormals(s);
+    std::size_t folded = 0;
+    for (std::size_t v = 0; v < normals.size(); ++v) {
+        folded += foldedAt(s, normals[v], v) ? 1 : 0;
+    }
+    return normals.empty() ? 0.0
+                           : static_cast<double>(folded) / static_cast<double>(normals.size());
 }
 
 }  // namespace vv::analysis::detail

@@ -88,4 +88,8 @@ struct VoronoiSamples {
 [[nodiscard]] VoronoiSamples chooseVoronoiSamples(const PreparedSurface& surface,
                                                   const Progress& progress);
 
+/// VoronoiSamples::foldedFraction alone: the fraction of the surface's
+/// vertices where its wall folds over itself.
+[[nodiscard]] double foldedFractionOf(const PreparedSurface& surface);
+
 }  // namespace vv::analysis::detail

@@ -16,35 +16,11 @@
 
 #include "vv/core/Error.h"
 #include "vv/meshio/vtkext/RunAlgorithm.h"
+#include "vv/meshio/vtkext/VtkConvert.h"
 
 namespace vv::meshio {
 
 namespace {
-
-/// The bare triangle surface of `mesh` (no arrays: the decimation would
-/// otherwise weigh them into its error metric).
-vtkSmartPointer<vtkPolyData> trianglesOf(const scene::Mesh& mesh) {
-    vtkNew<vtkPoints> points;
-    points->SetDataTypeToFloat();
-    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.vertexCount()));
-    for (std::size_t i = 0; i < mesh.vertexCount(); ++i) {
-        const glm::vec3& p = mesh.positions[i];
-        points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
-    }
-    vtkNew<vtkCellArray> triangles;
-    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangleCount()),
-                             static_cast<vtkIdType>(mesh.indices.size()));
-    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
-        const vtkIdType ids[3] = {static_cast<vtkIdType>(mesh.indices[3 * t]),
-                                  static_cast<vtkIdType>(mesh.indices[3 * t + 1]),
-                                  static_cast<vtkIdType>(mesh.indices[3 * t + 2])};
-        triangles->InsertNextCell(3, ids);
-    }
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(points);
-    poly->SetPolys(triangles);
-    return poly;
-}
 
 std::string describe(const scene::Mesh& mesh) {
     return mesh.source.empty() ? "mesh '" + mesh.name + "'" : mesh.source.string();
@@ -70,7 +46,7 @@ scene::Mesh simplifiedMesh(const scene::Mesh& mesh, std::size_t targetTriangles,
                                                   std::to_string(mesh.vertexCount()));
         }
     }
-    const vtkSmartPointer<vtkPolyData> input = trianglesOf(mesh);
+    const vtkSmartPointer<vtkPolyData> input = detail::bareTriangles(mesh);
     vtkNew<vtkQuadricDecimation> decimate;
     decimate->SetInputData(input);
     decimate->SetTargetReduction(1.0 - static_cast<double>(targetTriangles) /

@@ -11,6 +11,7 @@
 #include <vtkIdList.h>
 #include <vtkIntArray.h>
 #include <vtkLogger.h>
+#include <vtkNew.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
 #include <vtkPointData.h>
@@ -270,6 +271,29 @@ int supportedCellPointCount(int type) noexcept {
         default:
             return -1;
     }
+}
+
+vtkSmartPointer<vtkPolyData> bareTriangles(const scene::Mesh& mesh) {
+    vtkNew<vtkPoints> points;
+    points->SetDataTypeToFloat();
+    points->SetNumberOfPoints(static_cast<vtkIdType>(mesh.vertexCount()));
+    for (std::size_t i = 0; i < mesh.vertexCount(); ++i) {
+        const glm::vec3& p = mesh.positions[i];
+        points->SetPoint(static_cast<vtkIdType>(i), p.x, p.y, p.z);
+    }
+    vtkNew<vtkCellArray> triangles;
+    triangles->AllocateExact(static_cast<vtkIdType>(mesh.triangleCount()),
+                             static_cast<vtkIdType>(mesh.indices.size()));
+    for (std::size_t t = 0; t < mesh.triangleCount(); ++t) {
+        const vtkIdType ids[3] = {static_cast<vtkIdType>(mesh.indices[3 * t]),
+                                  static_cast<vtkIdType>(mesh.indices[3 * t + 1]),
+                                  static_cast<vtkIdType>(mesh.indices[3 * t + 2])};
+        triangles->InsertNextCell(3, ids);
+    }
+    auto poly = vtkSmartPointer<vtkPolyData>::New();
+    poly->SetPoints(points);
+    poly->SetPolys(triangles);
+    return poly;
 }
 
 namespace {

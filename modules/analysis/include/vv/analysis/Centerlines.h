@@ -92,6 +92,12 @@ struct CenterlineOptions {
     /// which a note states); >= 1000. Bounds time and memory (a 10M-triangle
     /// export of a segmentation is far finer than its vessels need).
     std::size_t maxTriangles = kDefaultMaxTriangles;
+    /// A wall whose noise is larger than its triangles folds over itself, and
+    /// its inside breaks up where the vessel narrows: such a wall is smoothed
+    /// first (a low-pass filter over the mesh that keeps the vessel's shape;
+    /// a note says how far its points moved). false: analysed as it is, with
+    /// a note that the results may follow the noise.
+    bool smoothFoldedWall = true;
 };
 
 struct CenterlineTree {

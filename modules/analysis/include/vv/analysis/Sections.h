@@ -88,8 +88,10 @@ struct EndZones {
 /// centreline point: result[b][i] is branch b's point i. Progress is
 /// reported; a stop request throws CancelledError. Throws AnalysisError for
 /// a mesh that cannot be prepared (as computeCenterlines). A mesh of more
-/// than kDefaultMaxTriangles is coarsened as computeCenterlines coarsens it
-/// (analyseVessels() takes CenterlineOptions::maxTriangles for both).
+/// than kDefaultMaxTriangles is coarsened as computeCenterlines coarsens it,
+/// and a wall that folds over itself is smoothed as computeCenterlines
+/// smooths it by default (analyseVessels() takes CenterlineOptions'
+/// maxTriangles and smoothFoldedWall for both).
 [[nodiscard]] std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
                                                                      const CenterlineTree& tree,
                                                                      const Progress& progress = {});

@@ -40,6 +40,11 @@ namespace vv::meshio::detail {
 /// in the mesh too, so that loading the polydata again recreates them.
 [[nodiscard]] vtkSmartPointer<vtkPolyData> polyDataFromMesh(const scene::Mesh& mesh);
 
+/// The bare triangle surface of `mesh`: its points (float) and triangles,
+/// no normals and no arrays (a filter that weighs arrays, as the quadric
+/// decimation does, must not see them). The indices must be in range.
+[[nodiscard]] vtkSmartPointer<vtkPolyData> bareTriangles(const scene::Mesh& mesh);
+
 /// Splits "wss [Pa]" into {"wss", "Pa"}; a name without brackets gives {name, ""}.
 [[nodiscard]] std::pair<std::string, std::string> splitNameAndUnit(const std::string& vtkName);
 
