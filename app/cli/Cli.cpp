@@ -109,6 +109,10 @@ constexpr const char* kUsageText =
     "                                       --lang: the report's language; --batch: one input\n"
     "                                       a line, a summary,\n"
     "                                       exit code of the first failure\n"
+    "  study analyse RESULTS.csv... [--tables DIR] [--alpha A] [--correction bonferroni|holm]\n"
+    "                                       the depth-judgement study's answers: exclusions,\n"
+    "                                       per-condition accuracy and response time with 95 %\n"
+    "                                       intervals, Friedman's test, post-hoc comparisons\n"
     "  vss --depth IN.pfm -o OUT.pfm [--p P] [--solver NAME] [--step K] [--tolerance T]\n"
     "      [--fixed-range A,B] [--labels OUT.png] [--stats]\n"
     "                                       void space surface of a PFM depth image\n"
@@ -271,6 +275,9 @@ int run(const std::vector<std::string>& args, std::ostream& out, std::ostream& e
         }
         if (command == "centerline") {
             return centerlineCommand(rest, out, err);
+        }
+        if (command == "study") {
+            return studyCommand(rest, out, err);
         }
         if (command == "pacs") {
             return pacsCommand(rest, out, err);

@@ -43,6 +43,7 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
 int pacsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int segmentCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
+int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err);
 
 /// Thrown when an output file cannot be written; maps to kCannotWrite.
 class OutputError : public std::exception {

@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli study analyse`: two results files of simulated
+// participants read as one study; the summary names the exclusion and the
+// differences, the tables are written; a bad file exits 3 naming it and its
+// line; bad options exit 2.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+
+#include "CliRun.h"
+#include "vv/study/Results.h"
+
+namespace {
+
+using vv::study::Answer;
+using vv::study::Side;
+using vv::test::runCli;
+
+std::filesystem::path scratch() {
+    auto dir = vv::test::processTestDir("study");
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+/// Participants `first`..`last` (P<n>): 20 answers in each of three
+/// conditions, accurate 90 %, 90 %, 60 %; "guesser" guesses.
+std::filesystem::path writeResults(const std::string& name, int first, int last, bool withGuesser) {
+    auto file = scratch() / name;
+    std::filesystem::remove(file);
+    std::mt19937 random(static_cast<std::uint32_t>(first));
+    std::uniform_real_distribution<double> uniform(0.0, 1.0);
+    const std::vector<std::string> conditions{"VSS-CD", "vessel-CD", "baseline"};
+    const std::vector<double> accuracy{0.9, 0.9, 0.6};
+    std::vector<std::string> ids;
+    for (int p = first; p <= last; ++p) {
+        ids.push_back("P" + std::to_string(p));
+    }
+    if (withGuesser) {
+        ids.emplace_back("guesser");
+    }
+    for (const std::string& id : ids) {
+        int trial = 0;
+        for (std::size_t c = 0; c < conditions.size(); ++c) {
+            for (int i = 0; i < 20; ++i) {
+                Answer a;
+                a.participant = id;
+                a.trial = ++trial;
+                a.stimulus = conditions[c] + "/" + std::to_string(i);
+                a.scene = "demo";
+                a.condition = conditions[c];
+                a.correctAnswer = i % 2 == 0 ? Side::Left : Side::Right;
+                const double p = id == "guesser" ? 0.5 : accuracy[c];
+                a.answer = uniform(random) < p
+                               ? a.correctAnswer
+                               : (a.correctAnswer == Side::Left ? Side::Right : Side::Left);
+                a.responseMs = 1000.0 + 500.0 * uniform(random);
+                vv::study::appendAnswer(file, a);
+            }
+        }
+    }
+    return file;
+}
+
+TEST(StudyCommand, AnalysesSeveralFilesAsOneStudy) {
+    const auto first = writeResults("first.csv", 1, 6, false);
+    const auto second = writeResults("second.csv", 7, 12, true);
+    const auto tables = scratch() / "tables";
+    std::filesystem::remove_all(tables);
+    const auto run = runCli({"study", "analyse", first.string(), second.string(), "--tables",
+                             tables.string(), "--correction", "holm"});
+    ASSERT_EQ(run.code, 0) << run.err;
+    EXPECT_NE(run.out.find("Participants: 13, included 12"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("excluded guesser: at chance level"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("accuracy: Friedman chi^2(2)"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("post hoc (Holm"), std::string::npos) << run.out;
+    EXPECT_NE(run.out.find("VSS-CD vs baseline"), std::string::npos) << run.out;
+    for (const char* table : {"conditions.csv", "comparisons.csv", "participants.csv"}) {
+        EXPECT_TRUE(std::filesystem::exists(tables / table)) << table;
+    }
+}
+
+TEST(StudyCommand, ABadFileExitsThreeNamingItsLine) {
+    const auto file = scratch() / "bad.csv";
+    {
+        std::ofstream out(file);
+        out << vv::study::resultsHeader() << "\nP1,main,1,s1,demo,VSS-CD,left,left,1,fast\n";
+    }
+    const auto run = runCli({"study", "analyse", file.string()});
+    EXPECT_EQ(run.code, 3);
+    EXPECT_NE(run.err.find("bad.csv"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("line 2"), std::string::npos) << run.err;
+}
+
+TEST(StudyCommand, BadOptionsAreUsageErrors) {
+    const auto file = writeResults("options.csv", 1, 3, false);
+    EXPECT_EQ(runCli({"study"}).code, 2);
+    EXPECT_EQ(runCli({"study", "make"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse", file.string(), "--alpha", "2"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse", file.string(), "--correction", "none"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse", file.string(), "--frobnicate"}).code, 2);
+    EXPECT_EQ(runCli({"study", "--help"}).code, 0);
+}
+
+}  // namespace
