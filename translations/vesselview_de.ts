@@ -4214,5 +4214,168 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>Segmentation</source>
         <translation>Segmentierung</translation>
     </message>
+    <message>
+        <source>Accuracy</source>
+        <translation>Treffsicherheit</translation>
+    </message>
+    <message>
+        <source>Response time</source>
+        <translation>Antwortzeit</translation>
+    </message>
+    <message>
+        <source>Accuracy (mean, 95 % CI)</source>
+        <translation>Treffsicherheit (Mittelwert, 95-%-KI)</translation>
+    </message>
+    <message>
+        <source>chance level</source>
+        <translation>Zufallsniveau</translation>
+    </message>
+    <message>
+        <source>Response time (ms)</source>
+        <translation>Antwortzeit (ms)</translation>
+    </message>
+    <message>
+        <source>Condition</source>
+        <translation>Bedingung</translation>
+    </message>
+    <message>
+        <source>n</source>
+        <translation>n</translation>
+    </message>
+    <message>
+        <source>95 % CI</source>
+        <translation>95-%-KI</translation>
+    </message>
+    <message>
+        <source>Median</source>
+        <translation>Median</translation>
+    </message>
+    <message>
+        <source>Median CI</source>
+        <translation>KI des Medians</translation>
+    </message>
+    <message>
+        <source>Rank sum</source>
+        <translation>Rangsumme</translation>
+    </message>
+    <message>
+        <source>Per participant and condition: %1. Mean with its Student&apos;s t interval; median with the interval between two order statistics (it covers %2).</source>
+        <translation>Je Teilnehmer und Bedingung: %1. Mittelwert mit seinem t-Intervall nach Student; Median mit dem Intervall zwischen zwei Ordnungsstatistiken (es überdeckt %2).</translation>
+    </message>
+    <message>
+        <source>the share of correct answers</source>
+        <translation>der Anteil richtiger Antworten</translation>
+    </message>
+    <message>
+        <source>the median response time</source>
+        <translation>der Median der Antwortzeit</translation>
+    </message>
+    <message>
+        <source>Pair</source>
+        <translation>Paar</translation>
+    </message>
+    <message>
+        <source>Rank-sum difference</source>
+        <translation>Differenz der Rangsummen</translation>
+    </message>
+    <message>
+        <source>Corrected p</source>
+        <translation>Korrigiertes p</translation>
+    </message>
+    <message>
+        <source>Significant</source>
+        <translation>Signifikant</translation>
+    </message>
+    <message>
+        <source>yes</source>
+        <translation>ja</translation>
+    </message>
+    <message>
+        <source>no</source>
+        <translation>nein</translation>
+    </message>
+    <message>
+        <source>Bonferroni</source>
+        <translation>Bonferroni</translation>
+    </message>
+    <message>
+        <source>Holm</source>
+        <translation>Holm</translation>
+    </message>
+    <message>
+        <source>Post-hoc comparisons of the conditions&apos; rank sums (Siegel and Castellan), corrected by %1 at α = %2; the critical difference of rank sums (Bonferroni) is %3.</source>
+        <translation>Post-hoc-Vergleiche der Rangsummen der Bedingungen (Siegel und Castellan), korrigiert nach %1 bei α = %2; die kritische Differenz der Rangsummen (Bonferroni) beträgt %3.</translation>
+    </message>
+    <message>
+        <source>Friedman&apos;s test: χ²(%1) = %2, p %3; Kendall&apos;s W = %4.</source>
+        <translation>Friedman-Test: χ²(%1) = %2, p %3; Kendalls W = %4.</translation>
+    </message>
+    <message>
+        <source>Participant</source>
+        <translation>Teilnehmer</translation>
+    </message>
+    <message>
+        <source>Answers</source>
+        <translation>Antworten</translation>
+    </message>
+    <message>
+        <source>Correct</source>
+        <translation>Richtig</translation>
+    </message>
+    <message>
+        <source>Median time</source>
+        <translation>Median der Zeit</translation>
+    </message>
+    <message>
+        <source>p (chance)</source>
+        <translation>p (Zufall)</translation>
+    </message>
+    <message>
+        <source>Included</source>
+        <translation>Einbezogen</translation>
+    </message>
+    <message>
+        <source>%1: no answer in %2 condition(s), first %3</source>
+        <translation>%1: keine Antwort in %2 Bedingung(en), zuerst %3</translation>
+    </message>
+    <message>
+        <source>%1: at chance level, %2 of %3 correct (p = %4)</source>
+        <translation>%1: auf Zufallsniveau, %2 von %3 richtig (p = %4)</translation>
+    </message>
+    <message>
+        <source>Participants</source>
+        <translation>Teilnehmer</translation>
+    </message>
+    <message>
+        <source>Conditions</source>
+        <translation>Bedingungen</translation>
+    </message>
+    <message>
+        <source>Results files</source>
+        <translation>Ergebnisdateien</translation>
+    </message>
+    <message>
+        <source>A participant is excluded when their main-block answers are not above chance (the one-sided exact binomial test against %1 gives p ≥ %2), or when they have no answer in some condition.</source>
+        <translation>Ausgeschlossen wird, wessen Antworten im Hauptblock nicht über dem Zufallsniveau liegen (der einseitige exakte Binomialtest gegen %1 ergibt p ≥ %2) oder wer in einer Bedingung keine Antwort gegeben hat.</translation>
+    </message>
+    <message>
+        <source>Excluded — %1</source>
+        <translation>Ausgeschlossen — %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n answer(s) repeated a stimulus already answered (a resumed run): only the first counts.</source>
+        <translation>
+            <numerusform>%n Antwort wiederholte einen schon beantworteten Stimulus (ein fortgesetzter Durchlauf): nur die erste zählt.</numerusform>
+            <numerusform>%n Antworten wiederholten einen schon beantworteten Stimulus (ein fortgesetzter Durchlauf): nur die erste zählt.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Participants&apos; answers (main block)</source>
+        <translation>Antworten der Teilnehmer (Hauptblock)</translation>
+    </message>
+    <message>
+        <source>Depth-judgement study</source>
+        <translation>Studie zur Tiefenwahrnehmung</translation>
+    </message>
 </context>
 </TS>

@@ -65,4 +65,14 @@
         </translation>
     </message>
 </context>
+<context>
+    <name>vv::report::ReportText</name>
+    <message numerus="yes">
+        <source>%n answer(s) repeated a stimulus already answered (a resumed run): only the first counts.</source>
+        <translation>
+            <numerusform>%n answer repeated a stimulus already answered (a resumed run): only the first counts.</numerusform>
+            <numerusform>%n answers repeated a stimulus already answered (a resumed run): only the first counts.</numerusform>
+        </translation>
+    </message>
+</context>
 </TS>

@@ -14,8 +14,8 @@
 
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
-#include "evaluation/ArtefactBenchmark.h"
 #include "cli/RenderOptions.h"
+#include "evaluation/ArtefactBenchmark.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshSimplify.h"

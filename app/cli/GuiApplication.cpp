@@ -3,8 +3,11 @@
 
 #include <QCoreApplication>
 #include <QGuiApplication>
+#include <QLocale>
+#include <QStringList>
 #include <clocale>
 
+#include "cli/Cli.h"
 #include "common/Language.h"
 #include "vv/core/Error.h"
 
@@ -39,6 +42,21 @@ void ensureGuiApplication() {
     // The text drawn into images (legends, scale bar) is English unless a
     // command installs a language (report --lang): its numbers too.
     app::useEnglishLocale();
+}
+
+void checkLanguage(const std::string& command, const std::string& language) {
+    const QStringList known = app::availableLanguages();
+    if (!known.contains(QString::fromStdString(language))) {
+        throw UsageError(command + ": --lang must be one of " +
+                         known.join(QStringLiteral(", ")).toStdString() + ", got '" + language +
+                         "'");
+    }
+}
+
+void useLanguage(const std::string& language) {
+    const QString name = QString::fromStdString(language);
+    (void)app::installTranslations(*QCoreApplication::instance(), name);
+    QLocale::setDefault(QLocale(name));
 }
 
 }  // namespace vv::cli

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #pragma once
 
+#include <string>
+
 namespace vv::cli {
 
 /// Makes sure the process has a QGuiApplication (needed for OpenGL contexts
@@ -15,5 +17,14 @@ namespace vv::cli {
 /// Throws vv::RenderError when the process already has a QCoreApplication
 /// that is not a QGuiApplication.
 void ensureGuiApplication();
+
+/// `language` checked against the installed translations (app::
+/// availableLanguages); throws UsageError "<command>: --lang must be one of
+/// ..." when it is not one of them.
+void checkLanguage(const std::string& command, const std::string& language);
+
+/// A report's language: its translator installed and, for numbers and
+/// dates, the default QLocale (after ensureGuiApplication()).
+void useLanguage(const std::string& language);
 
 }  // namespace vv::cli

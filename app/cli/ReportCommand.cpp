@@ -37,7 +37,6 @@
 #include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
 #include "cli/SegmentSummary.h"
-#include "common/Language.h"
 #include "common/ResourcePaths.h"
 #include "common/SegmentationText.h"
 #include "common/SliceReport.h"
@@ -193,12 +192,7 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.disclaimer = a.value();
         } else if (name == "--lang") {
             parsed.language = a.value();
-            const QStringList known = app::availableLanguages();
-            if (!known.contains(QString::fromStdString(parsed.language))) {
-                throw UsageError("report: --lang must be one of " +
-                                 known.join(QStringLiteral(", ")).toStdString() + ", got '" +
-                                 parsed.language + "'");
-            }
+            checkLanguage("report", parsed.language);
         } else if (name == "--second-view") {
             parsed.secondViewName = a.value();
             parsed.secondView = render::namedViewFromName(parsed.secondViewName);
@@ -440,13 +434,6 @@ int exitCode(const std::exception_ptr& error) {
     } catch (...) {
         return kInternalError;
     }
-}
-
-/// The report's language: its translator and, for numbers and dates, its locale.
-void useLanguage(const std::string& language) {
-    const QString name = QString::fromStdString(language);
-    (void)app::installTranslations(*QCoreApplication::instance(), name);
-    QLocale::setDefault(QLocale(name));
 }
 
 int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {

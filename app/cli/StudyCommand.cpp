@@ -9,7 +9,9 @@
 
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
+#include "cli/GuiApplication.h"
 #include "vv/core/NumberText.h"
+#include "vv/report/StudyReport.h"
 #include "vv/study/Analysis.h"
 
 namespace vv::cli {
@@ -17,8 +19,8 @@ namespace vv::cli {
 namespace {
 
 constexpr const char* kStudyUsage =
-    "usage: vesselview-cli study analyse RESULTS.csv... [--tables DIR] [--alpha A]\n"
-    "       [--correction bonferroni|holm]\n"
+    "usage: vesselview-cli study analyse RESULTS.csv... [-o STUDY.pdf] [--lang en|de]\n"
+    "       [--paper a4|letter] [--tables DIR] [--alpha A] [--correction bonferroni|holm]\n"
     "  The answers of a depth-judgement study (one CSV row per answer, as the\n"
     "  study runner writes them; several files are read as one study) analysed\n"
     "  as the paper (Kreiser et al. 2018) reports it: per participant the\n"
@@ -29,6 +31,11 @@ constexpr const char* kStudyUsage =
     "  Friedman's test and the post-hoc comparisons of the conditions' rank\n"
     "  sums (critical difference with Bonferroni's correction; Holm's as the\n"
     "  option). A summary goes to stdout.\n"
+    "  -o, --output FILE.pdf  the analysis as a PDF: the participants and the\n"
+    "                       exclusions, per measure a chart (accuracy: mean and\n"
+    "                       95 % interval per condition; response time: box\n"
+    "                       plots), Friedman's test, the tables and the post-hoc\n"
+    "                       comparisons; --lang its language, --paper its page\n"
     "  --tables DIR         conditions.csv, comparisons.csv, participants.csv\n"
     "                       (the folder is created)\n"
     "  --alpha A            significance level, default 0.05\n"
@@ -100,6 +107,9 @@ int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     }
     std::vector<std::filesystem::path> inputs;
     std::filesystem::path tables;
+    std::filesystem::path pdfOutput;
+    std::string language = "en";
+    report::PaperSize paper = report::PaperSize::A4;
     study::AnalysisOptions options;
     for (Arguments a("study analyse", args, 1); a.next();) {
         const std::string& name = a.name();
@@ -109,6 +119,21 @@ int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         }
         if (name == "--tables") {
             tables = a.path();
+        } else if (name == "-o" || name == "--output") {
+            pdfOutput = a.path();
+            if (pdfOutput.extension() != ".pdf") {
+                a.fail("the output must end in .pdf, not '" + pdfOutput.string() + "'");
+            }
+        } else if (name == "--lang") {
+            language = a.value();
+            checkLanguage("study analyse", language);
+        } else if (name == "--paper") {
+            const std::string& paperName = a.value();
+            const auto chosen = report::paperSizeFromName(paperName);
+            if (!chosen) {
+                a.fail("--paper must be a4 or letter, not '" + paperName + "'");
+            }
+            paper = *chosen;
         } else if (name == "--alpha") {
             options.alpha = parseNumber(a.value(), "--alpha");
             if (!(options.alpha > 0.0 && options.alpha < 1.0)) {
@@ -137,6 +162,20 @@ int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     }
     const study::StudyAnalysis analysis = study::analyseStudy(answers, options);
     printSummary(analysis, out);
+    if (!pdfOutput.empty()) {
+        ensureGuiApplication();  // fonts
+        useLanguage(language);
+        report::StudyReportContent content;
+        for (const auto& input : inputs) {
+            content.sources.push_back(input.filename().string());
+        }
+        try {
+            report::writeStudyPdf(pdfOutput, analysis, content, paper);
+        } catch (const IoError& e) {
+            throw OutputError(e.what());
+        }
+        err << "vesselview-cli: wrote " << pdfOutput.string() << "\n";
+    }
     if (!tables.empty()) {
         std::error_code error;
         std::filesystem::create_directories(tables, error);

@@ -5,6 +5,8 @@
 // line; bad options exit 2.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
@@ -82,6 +84,40 @@ TEST(StudyCommand, AnalysesSeveralFilesAsOneStudy) {
     }
 }
 
+/// Runs `command` through the shell; its exit status, its output in `text`.
+int runShell(const std::string& command, std::string& text) {
+    std::FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
+    if (pipe == nullptr) {
+        return -1;
+    }
+    std::array<char, 4096> buffer{};
+    for (std::size_t n = 0; (n = std::fread(buffer.data(), 1, buffer.size(), pipe)) > 0;) {
+        text.append(buffer.data(), n);
+    }
+    return ::pclose(pipe);
+}
+
+// The program itself (it finds its translations as installed, next to it).
+TEST(StudyCommand, WritesThePdfInTheAskedLanguage) {
+    const auto results = writeResults("pdf.csv", 1, 8, true);
+    const auto pdf = scratch() / "study-de.pdf";
+    std::filesystem::remove(pdf);
+    std::string output;
+    ASSERT_EQ(runShell(std::string("'") + VV_CLI_EXE + "' study analyse '" + results.string() +
+                           "' -o '" + pdf.string() + "' --lang de --paper letter",
+                       output),
+              0)
+        << output;
+    std::ifstream in(pdf, std::ios::binary);
+    std::string head(4, '\0');
+    in.read(head.data(), 4);
+    EXPECT_EQ(head, "%PDF");
+    std::string text;
+    ASSERT_EQ(runShell("pdftotext '" + pdf.string() + "' -", text), 0) << text;
+    EXPECT_NE(text.find("Rangsumme"), std::string::npos) << text.substr(0, 400);
+    EXPECT_NE(text.find("guesser"), std::string::npos);
+}
+
 TEST(StudyCommand, ABadFileExitsThreeNamingItsLine) {
     const auto file = scratch() / "bad.csv";
     {
@@ -102,6 +138,9 @@ TEST(StudyCommand, BadOptionsAreUsageErrors) {
     EXPECT_EQ(runCli({"study", "analyse", file.string(), "--alpha", "2"}).code, 2);
     EXPECT_EQ(runCli({"study", "analyse", file.string(), "--correction", "none"}).code, 2);
     EXPECT_EQ(runCli({"study", "analyse", file.string(), "--frobnicate"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse", file.string(), "-o", "study.txt"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse", file.string(), "-o", "s.pdf", "--lang", "xx"}).code, 2);
+    EXPECT_EQ(runCli({"study", "analyse", file.string(), "-o", "s.pdf", "--paper", "a3"}).code, 2);
     EXPECT_EQ(runCli({"study", "--help"}).code, 0);
 }
 

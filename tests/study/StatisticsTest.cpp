@@ -141,6 +141,22 @@ TEST(Summary, MeanAndMedianIntervals) {
     EXPECT_NEAR(s.mean - s.meanLow, s.meanHigh - s.mean, 1e-12);
 }
 
+TEST(Summary, BoxPlotStatistics) {
+    // R: quantile(c(1, 2, 3, 4, 5, 6, 7, 8, 9, 100), c(.25, .5, .75)) = 3.25, 5.5, 7.75.
+    const BoxStatistics b = boxStatistics({100.0, 9.0, 8.0, 7.0, 6.0, 5.0, 4.0, 3.0, 2.0, 1.0});
+    EXPECT_DOUBLE_EQ(b.lowerQuartile, 3.25);
+    EXPECT_DOUBLE_EQ(b.median, 5.5);
+    EXPECT_DOUBLE_EQ(b.upperQuartile, 7.75);
+    // 1.5 IQR = 6.75: whiskers at 1 and 9, 100 beyond.
+    EXPECT_EQ(b.lowerWhisker, 1.0);
+    EXPECT_EQ(b.upperWhisker, 9.0);
+    EXPECT_EQ(b.outliers, std::vector<double>{100.0});
+    const BoxStatistics one = boxStatistics({4.0});
+    EXPECT_EQ(one.lowerQuartile, 4.0);
+    EXPECT_EQ(one.upperWhisker, 4.0);
+    EXPECT_THROW(static_cast<void>(boxStatistics({})), InvalidArgumentError);
+}
+
 /// Reads the cases of a reference file and checks each; returns how many.
 int checkReference(const std::filesystem::path& file) {
     std::ifstream in(file);

@@ -2,8 +2,12 @@
 #include "PdfFlow.h"
 
 #include <QFontMetricsF>
+#include <QPageLayout>
 #include <QRegularExpression>
 #include <algorithm>
+
+#include "ReportText.h"
+#include "vv/core/Error.h"
 
 namespace vv::report::pdf {
 
@@ -90,13 +94,32 @@ double Flow::widestWord(const QString& text, const QFont& f) const {
     return widest;
 }
 
+double Flow::paragraphInset(const QString& text, const QFont& f) const {
+    // A glyph that reaches left of its origin (an italic J) would cross the
+    // margin at the start of a line: such a paragraph is inset by the most
+    // any of its glyphs reaches.
+    double inset = 0.0;
+    if (f.italic()) {
+        const QFontMetricsF fm(f, &writer_);
+        for (const QChar c : text) {
+            inset = std::max(inset, -fm.leftBearing(c));
+        }
+    }
+    return inset;
+}
+
+double Flow::paragraphHeight(const QString& text, const QFont& f) const {
+    return textHeight(text, f, width() - paragraphInset(text, f));
+}
+
 void Flow::paragraph(const QString& text, const QFont& f, const QColor& colour, double spaceAfter) {
-    const double h = textHeight(text, f, width());
+    const double inset = paragraphInset(text, f);
+    const double h = textHeight(text, f, width() - inset);
     ensure(h);
     if (draw_) {
         painter_.setFont(f);
         painter_.setPen(colour);
-        painter_.drawText(QRectF(left(), y_, width(), h), Qt::TextWordWrap, text);
+        painter_.drawText(QRectF(left() + inset, y_, width() - inset, h), Qt::TextWordWrap, text);
     }
     y_ += h + spaceAfter;
 }
@@ -178,6 +201,133 @@ void fieldGrid(Flow& flow, const Fields& fields, int columns) {
         }
         flow.advance(h + mm(kRowGapMm));
     }
+}
+
+Table::Table(const Flow& flow, QStringList headers, std::vector<QStringList> rows, QString note,
+             QString emptyMessage)
+    : headers_(std::move(headers)),
+      rows_(std::move(rows)),
+      note_(std::move(note)),
+      empty_(std::move(emptyMessage)) {
+    const auto columns = static_cast<std::size_t>(headers_.size());
+    const double numeric = mm(std::min(24.0, 110.0 / static_cast<double>(columns - 1)));
+    widths_.assign(columns, numeric);
+    double taken = 0.0;
+    for (std::size_t c = 1; c < columns; ++c) {
+        const auto column = static_cast<qsizetype>(c);
+        double needed = flow.widestWord(headers_[column], headFont_);
+        for (const QStringList& r : rows_) {
+            needed = std::max(needed, flow.widestWord(r[column], cellFont_));
+        }
+        widths_[c] = std::max(numeric, needed + 2 * pad_ + mm(0.5));
+        taken += widths_[c];
+    }
+    widths_[0] = flow.width() - taken;
+    for (std::size_t c = 0; c < columns; ++c) {
+        headHeight_ = std::max(headHeight_, flow.textHeight(headers_[static_cast<qsizetype>(c)],
+                                                            headFont_, widths_[c] - 2 * pad_));
+    }
+    headHeight_ += 2 * pad_;
+    rowHeight_ = flow.textHeight(QStringLiteral("0"), cellFont_, flow.width()) + 2 * pad_;
+    noteHeight_ = note_.isEmpty() ? 0.0 : flow.paragraphHeight(note_, noteFont_) + mm(1.5);
+}
+
+double Table::height() const {
+    const auto rows = std::max<std::size_t>(rows_.size(), 1);
+    return headHeight_ + static_cast<double>(rows) * rowHeight_ + mm(1.5) + noteHeight_;
+}
+
+void Table::draw(Flow& flow) const {
+    if (height() <= flow.pageHeight()) {
+        flow.ensure(height());  // never split a table that fits on a page
+    }
+    header(flow);
+    for (std::size_t index = 0; index < rows_.size(); ++index) {
+        const int before = flow.page();
+        // The last row stays with the note below the table.
+        const bool last = index + 1 == rows_.size();
+        flow.ensure(rowHeight_ + (last ? noteHeight_ : 0.0));
+        if (flow.page() != before) {
+            header(flow);  // the table goes on: repeat its header
+        }
+        if (index % 2 == 1) {
+            flow.fill(QRectF(flow.left(), flow.y(), flow.width(), rowHeight_), kZebra);
+        }
+        row(flow, rows_[index], cellFont_, rowHeight_, kInk);
+        flow.advance(rowHeight_);
+    }
+    if (rows_.empty()) {
+        flow.paragraph(empty_, font(9.0, false, true), kMuted);
+    }
+    flow.rule(flow.y(), kRule, 0.25);
+    flow.advance(mm(1.5));
+    if (!note_.isEmpty()) {
+        flow.paragraph(note_, noteFont_, kMuted);
+    }
+}
+
+void Table::row(Flow& flow, const QStringList& cells, const QFont& f, double h,
+                const QColor& colour) const {
+    double x = flow.left();
+    for (std::size_t c = 0; c < widths_.size(); ++c) {
+        const double cw = widths_[c];
+        const int align = (c == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter;
+        flow.text(QRectF(x + pad_, flow.y(), cw - 2 * pad_, h), cells[static_cast<qsizetype>(c)], f,
+                  colour, align | Qt::TextWordWrap);
+        x += cw;
+    }
+}
+
+void Table::header(Flow& flow) const {
+    flow.ensure(headHeight_ + rowHeight_);
+    row(flow, headers_, headFont_, headHeight_, kMuted);
+    flow.advance(headHeight_);
+    flow.rule(flow.y(), kInk, 0.3);
+}
+
+QPageSize pageSize(PaperSize paper) {
+    return QPageSize(paper == PaperSize::A4 ? QPageSize::A4 : QPageSize::Letter);
+}
+
+void setUpPage(QPdfWriter& writer, PaperSize paper) {
+    writer.setResolution(kDpi);
+    writer.setPageLayout(
+        QPageLayout(pageSize(paper), QPageLayout::Portrait,
+                    QMarginsF(kMarginSideMm, kMarginTopMm, kMarginSideMm, kMarginBottomMm),
+                    QPageLayout::Millimeter));
+}
+
+void paintPages(QPdfWriter& writer, const QString& footer, const std::function<void(Flow&)>& body) {
+    QPainter painter;
+    if (!painter.begin(&writer)) {
+        throw IoError("cannot start the PDF painter");
+    }
+    painter.setRenderHint(QPainter::Antialiasing);
+    painter.setRenderHint(QPainter::TextAntialiasing);
+    // Images as they are (Flate): JPEG would shift the colours of a view.
+    painter.setRenderHint(QPainter::LosslessImageRendering);
+    const QRect page = writer.pageLayout().paintRectPixels(kDpi);
+    const QRectF content(0.0, 0.0, page.width(), page.height() - mm(9.0));
+    int pages = 1;
+    for (const bool draw : {false, true}) {
+        Flow flow(painter, writer, content, draw);
+        flow.onPageDone([&](int pageNumber) {
+            const double top = page.height() - mm(6.0);
+            painter.setPen(QPen(QBrush(kRule), mm(0.25), Qt::SolidLine, Qt::FlatCap));
+            painter.drawLine(QPointF(0.0, top), QPointF(page.width(), top));
+            const QRectF box(0.0, top + mm(1.0), page.width(), mm(5.0));
+            painter.setFont(font(7.0));
+            painter.setPen(kMuted);
+            painter.drawText(box, Qt::AlignLeft | Qt::AlignVCenter, footer);
+            painter.drawText(
+                box, Qt::AlignRight | Qt::AlignVCenter,
+                ReportText::tr("Page %1 of %2").arg(integer(pageNumber), integer(pages)));
+        });
+        body(flow);
+        flow.finish();
+        pages = flow.page();
+    }
+    painter.end();
 }
 
 }  // namespace vv::report::pdf

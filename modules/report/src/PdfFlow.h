@@ -5,17 +5,25 @@
 
 #include <QColor>
 #include <QFont>
+#include <QPageSize>
 #include <QPainter>
 #include <QPdfWriter>
 #include <QRectF>
 #include <QString>
+#include <QStringList>
 #include <functional>
 #include <utility>
 #include <vector>
 
+#include "vv/report/PdfReport.h"
+
 namespace vv::report::pdf {
 
 inline constexpr int kDpi = 300;
+/// The page's margins (the footer lies in the content's last 9 mm).
+inline constexpr double kMarginSideMm = 18.0;
+inline constexpr double kMarginTopMm = 15.0;
+inline constexpr double kMarginBottomMm = 15.0;
 
 inline const QColor kInk(28, 32, 38);
 inline const QColor kMuted(96, 104, 114);
@@ -62,7 +70,10 @@ class Flow {
     /// Width of the widest word of `text` in `f`: the least a box can be that
     /// wraps `text` without cutting a word.
     [[nodiscard]] double widestWord(const QString& text, const QFont& f) const;
-    /// Draws `text` at the cursor (wrapped) and advances by its height.
+    /// The height paragraph() takes for `text` in `f`.
+    [[nodiscard]] double paragraphHeight(const QString& text, const QFont& f) const;
+    /// Draws `text` at the cursor (wrapped; inset by what its glyphs reach
+    /// left of their origin, as italic ones do) and advances by its height.
     void paragraph(const QString& text, const QFont& f, const QColor& colour,
                    double spaceAfter = 0.0);
     void text(const QRectF& box, const QString& text, const QFont& f, const QColor& colour,
@@ -76,6 +87,8 @@ class Flow {
     void heading(const QString& title, double keep);
 
   private:
+    [[nodiscard]] double paragraphInset(const QString& text, const QFont& f) const;
+
     QPainter& painter_;
     QPdfWriter& writer_;
     QRectF content_;
@@ -85,6 +98,18 @@ class Flow {
     std::function<void(int)> pageDone_ = [](int) {};
 };
 
+/// The page of `paper`.
+[[nodiscard]] QPageSize pageSize(PaperSize paper);
+
+/// The report's page on `writer`: `paper`, portrait, the margins, 300 dpi.
+void setUpPage(QPdfWriter& writer, PaperSize paper);
+
+/// Paints a document onto `writer` (set up by setUpPage): `body` lays it out
+/// through a Flow twice, a dry run counting the pages and the drawing run;
+/// every page gets the footer: a rule, `footer` on the left, "Page n of N"
+/// on the right. Throws IoError when the painter cannot start.
+void paintPages(QPdfWriter& writer, const QString& footer, const std::function<void(Flow&)>& body);
+
 /// Label / value pairs in `columns` columns (labels muted, values ink).
 using Fields = std::vector<std::pair<QString, QString>>;
 
@@ -93,5 +118,41 @@ using Fields = std::vector<std::pair<QString, QString>>;
 
 /// Draws the grid at the cursor, on one page when it fits on one.
 void fieldGrid(Flow& flow, const Fields& fields, int columns);
+
+/// A table over pages: a header row (muted, repeated when the table goes on
+/// to a new page), rows in zebra stripes, a rule and a note below; on one
+/// page whenever it fits on one, its last row kept with the note. The first
+/// column is left-aligned and takes what the others leave; every other
+/// column is right-aligned and as wide as its header's longest word and its
+/// widest value need (no word is ever cut), at least its share of 110 mm
+/// (24 mm at most).
+class Table {
+  public:
+    /// `emptyMessage` is printed in place of the rows when there are none.
+    Table(const Flow& flow, QStringList headers, std::vector<QStringList> rows, QString note,
+          QString emptyMessage);
+
+    /// The height of the whole table with its note.
+    [[nodiscard]] double height() const;
+    void draw(Flow& flow) const;
+
+  private:
+    void row(Flow& flow, const QStringList& cells, const QFont& f, double h,
+             const QColor& colour) const;
+    void header(Flow& flow) const;
+
+    QStringList headers_;
+    std::vector<QStringList> rows_;
+    QString note_;
+    QString empty_;
+    std::vector<double> widths_;
+    QFont headFont_ = font(8.0, true);
+    QFont cellFont_ = font(9.0);
+    QFont noteFont_ = font(7.5, false, true);
+    double pad_ = mm(1.6);
+    double headHeight_ = 0.0;
+    double rowHeight_ = 0.0;
+    double noteHeight_ = 0.0;
+};
 
 }  // namespace vv::report::pdf

@@ -33,18 +33,11 @@ using pdf::font;
 using pdf::kDpi;
 using pdf::mm;
 
-constexpr double kMarginSideMm = 18.0;
-constexpr double kMarginTopMm = 15.0;
-constexpr double kMarginBottomMm = 15.0;
 /// The legends are laid out as on a view this many logical pixels wide.
 constexpr double kLegendViewWidth = 1100.0;
 
-QPageSize pageSize(PaperSize paper) {
-    return QPageSize(paper == PaperSize::A4 ? QPageSize::A4 : QPageSize::Letter);
-}
-
 double contentWidthMm(PaperSize paper) {
-    return pageSize(paper).size(QPageSize::Millimeter).width() - 2.0 * kMarginSideMm;
+    return pdf::pageSize(paper).size(QPageSize::Millimeter).width() - 2.0 * pdf::kMarginSideMm;
 }
 
 QString onOff(bool on) {
@@ -114,142 +107,43 @@ void viewBlock(Flow& flow, const ReportView& view, const QSizeF& size) {
     }
 }
 
-/// The statistics table: one row per object, its header repeated on a new
-/// page; on one page (with its note) whenever it fits on one.
-class StatsTable {
-  public:
-    StatsTable(const Flow& flow, const ReportParameter& parameter) : parameter_(parameter) {
-        headers_ = {ReportText::tr("Object"), ReportText::tr("Coverage"), ReportText::tr("Min"),
-                    ReportText::tr("Mean"), ReportText::tr("Max")};
-        if (parameter.thresholds.below) {
-            headers_ << ReportText::tr("Area < %1")
-                            .arg(withUnit(exact(*parameter.thresholds.below), parameter.unit));
-        }
-        if (parameter.thresholds.above) {
-            headers_ << ReportText::tr("Area > %1")
-                            .arg(withUnit(exact(*parameter.thresholds.above), parameter.unit));
-        }
-        columns_ = static_cast<int>(headers_.size());
-        for (const ParameterStats& s : parameter.stats) {
-            rows_.push_back(cells(s));
-        }
-        // A numeric column is as wide as its header's longest word and its
-        // widest value need (no word is ever cut: "Abdeckung", not
-        // "bdeckung"), at least its share; the object column takes the rest.
-        const double numeric = mm(std::min(24.0, 110.0 / (columns_ - 1)));
-        widths_.assign(static_cast<std::size_t>(columns_), numeric);
-        double taken = 0.0;
-        for (int c = 1; c < columns_; ++c) {
-            double needed = flow.widestWord(headers_[c], headFont_);
-            for (const QStringList& row : rows_) {
-                needed = std::max(needed, flow.widestWord(row[c], cellFont_));
-            }
-            widths_[column(c)] = std::max(numeric, needed + 2 * pad_ + mm(0.5));
-            taken += widths_[column(c)];
-        }
-        widths_[0] = flow.width() - taken;
-        for (int c = 0; c < columns_; ++c) {
-            headHeight_ = std::max(headHeight_, flow.textHeight(headers_[c], headFont_,
-                                                                widths_[column(c)] - 2 * pad_));
-        }
-        headHeight_ += 2 * pad_;
-        rowHeight_ = flow.textHeight(QStringLiteral("0"), cellFont_, flow.width()) + 2 * pad_;
-        note_ = (parameter.unit.empty() ? ReportText::tr("Values in the array's unit.")
-                                        : ReportText::tr("Values in %1.").arg(qs(parameter.unit))) +
-                QLatin1Char(' ') +
-                ReportText::tr(
-                    "Coverage: share of the surface with finite values; the statistics are over "
-                    "that part. Mean and area shares are weighted by surface area, with values "
-                    "interpolated linearly within each triangle.");
-        noteHeight_ = flow.textHeight(note_, noteFont_, flow.width()) + mm(1.5);
+/// The parameter statistics' table: one row per object, with the note on
+/// what coverage and the weighting mean.
+pdf::Table statsTable(const Flow& flow, const ReportParameter& parameter) {
+    QStringList headers = {ReportText::tr("Object"), ReportText::tr("Coverage"),
+                           ReportText::tr("Min"), ReportText::tr("Mean"), ReportText::tr("Max")};
+    if (parameter.thresholds.below) {
+        headers << ReportText::tr("Area < %1")
+                       .arg(withUnit(exact(*parameter.thresholds.below), parameter.unit));
     }
-
-    /// The height of the whole table with its note.
-    [[nodiscard]] double height() const {
-        const auto rows = std::max<std::size_t>(parameter_.stats.size(), 1);
-        return headHeight_ + static_cast<double>(rows) * rowHeight_ + mm(1.5) + noteHeight_;
+    if (parameter.thresholds.above) {
+        headers << ReportText::tr("Area > %1")
+                       .arg(withUnit(exact(*parameter.thresholds.above), parameter.unit));
     }
-
-    void draw(Flow& flow) const {
-        if (height() <= flow.pageHeight()) {
-            flow.ensure(height());  // never split a table that fits on a page
-        }
-        header(flow);
-        int index = 0;
-        for (const QStringList& cells : rows_) {
-            const int before = flow.page();
-            // The last row stays with the note below the table.
-            const bool last = index + 1 == static_cast<int>(parameter_.stats.size());
-            flow.ensure(rowHeight_ + (last ? noteHeight_ : 0.0));
-            if (flow.page() != before) {
-                header(flow);  // the table goes on: repeat its header
-            }
-            if (index % 2 == 1) {
-                flow.fill(QRectF(flow.left(), flow.y(), flow.width(), rowHeight_), pdf::kZebra);
-            }
-            row(flow, cells, cellFont_, rowHeight_, pdf::kInk);
-            flow.advance(rowHeight_);
-            ++index;
-        }
-        if (parameter_.stats.empty()) {
-            flow.paragraph(ReportText::tr("No object has finite values of this parameter."),
-                           font(9.0, false, true), pdf::kMuted);
-        }
-        flow.rule(flow.y(), pdf::kRule, 0.25);
-        flow.advance(mm(1.5));
-        flow.paragraph(note_, noteFont_, pdf::kMuted);
-    }
-
-  private:
-    static std::size_t column(int c) { return static_cast<std::size_t>(c); }
-
-    /// One object's row as printed.
-    [[nodiscard]] QStringList cells(const ParameterStats& s) const {
+    std::vector<QStringList> rows;
+    for (const ParameterStats& s : parameter.stats) {
         QStringList cells = {s.object.empty() ? ReportText::tr("(unnamed)") : qs(s.object),
                              percent(s.coveredFraction), number(s.min), number(s.mean),
                              number(s.max)};
-        if (parameter_.thresholds.below) {
+        if (parameter.thresholds.below) {
             cells << (s.fractionBelow ? percent(*s.fractionBelow) : QStringLiteral("\u2014"));
         }
-        if (parameter_.thresholds.above) {
+        if (parameter.thresholds.above) {
             cells << (s.fractionAbove ? percent(*s.fractionAbove) : QStringLiteral("\u2014"));
         }
-        return cells;
+        rows.push_back(cells);
     }
-
-    void row(Flow& flow, const QStringList& cells, const QFont& f, double h,
-             const QColor& colour) const {
-        double x = flow.left();
-        for (int c = 0; c < columns_; ++c) {
-            const double cw = widths_[column(c)];
-            const int align = (c == 0 ? Qt::AlignLeft : Qt::AlignRight) | Qt::AlignVCenter;
-            flow.text(QRectF(x + pad_, flow.y(), cw - 2 * pad_, h), cells[c], f, colour,
-                      align | Qt::TextWordWrap);
-            x += cw;
-        }
-    }
-
-    void header(Flow& flow) const {
-        flow.ensure(headHeight_ + rowHeight_);
-        row(flow, headers_, headFont_, headHeight_, pdf::kMuted);
-        flow.advance(headHeight_);
-        flow.rule(flow.y(), pdf::kInk, 0.3);
-    }
-
-    const ReportParameter& parameter_;
-    QStringList headers_;
-    std::vector<QStringList> rows_;  ///< the cells of each object's row
-    int columns_ = 0;
-    std::vector<double> widths_;
-    QFont headFont_ = font(8.0, true);
-    QFont cellFont_ = font(9.0);
-    QFont noteFont_ = font(7.5, false, true);
-    double pad_ = mm(1.6);
-    double headHeight_ = 0.0;
-    double rowHeight_ = 0.0;
-    QString note_;
-    double noteHeight_ = 0.0;
-};
+    const QString note =
+        (parameter.unit.empty() ? ReportText::tr("Values in the array's unit.")
+                                : ReportText::tr("Values in %1.").arg(qs(parameter.unit))) +
+        QLatin1Char(' ') +
+        ReportText::tr(
+            "Coverage: share of the surface with finite values; the statistics are over "
+            "that part. Mean and area shares are weighted by surface area, with values "
+            "interpolated linearly within each triangle.");
+    return {flow, headers, rows, note,
+            ReportText::tr("No object has finite values of this parameter.")};
+}
 
 QString solverName(vss::SolverKind kind) {
     switch (kind) {
@@ -437,43 +331,16 @@ void titleBlock(Flow& flow, const ReportContent& content, const QString& softwar
 }
 
 void paint(QPdfWriter& writer, const ReportContent& content) {
-    QPainter painter;
-    if (!painter.begin(&writer)) {
-        throw IoError("cannot start the PDF painter");
-    }
-    painter.setRenderHint(QPainter::Antialiasing);
-    painter.setRenderHint(QPainter::TextAntialiasing);
-    // Images as they are (Flate): JPEG would shift the colours of the view.
-    painter.setRenderHint(QPainter::LosslessImageRendering);
-    const QRect page = writer.pageLayout().paintRectPixels(kDpi);
-    const QRectF contentRect(0.0, 0.0, page.width(), page.height() - mm(9.0));
     const QString created =
         formatDateTime(content.created) + QLatin1Char(' ') + content.created.timeZoneAbbreviation();
     const QString software = QStringLiteral("VesselView ") + QString::fromLatin1(vv::kVersion);
-
-    int pages = 1;
-    for (const bool draw : {false, true}) {
-        Flow flow(painter, writer, contentRect, draw);
-        flow.onPageDone([&](int pageNumber) {
-            const double top = page.height() - mm(6.0);
-            painter.setPen(QPen(QBrush(pdf::kRule), mm(0.25), Qt::SolidLine, Qt::FlatCap));
-            painter.drawLine(QPointF(0.0, top), QPointF(page.width(), top));
-            QString left = software + QStringLiteral(" \u00b7 ") + titleOf(content) +
-                           QStringLiteral(" \u00b7 ") + created;
-            if (const QString patient =
-                    content.patient ? footerPatient(*content.patient) : QString();
-                !patient.isEmpty()) {
-                left += QStringLiteral(" \u00b7 ") + patient;
-            }
-            const QRectF box(0.0, top + mm(1.0), page.width(), mm(5.0));
-            painter.setFont(font(7.0));
-            painter.setPen(pdf::kMuted);
-            painter.drawText(box, Qt::AlignLeft | Qt::AlignVCenter, left);
-            painter.drawText(
-                box, Qt::AlignRight | Qt::AlignVCenter,
-                ReportText::tr("Page %1 of %2").arg(integer(pageNumber), integer(pages)));
-        });
-
+    QString footer = software + QStringLiteral(" \u00b7 ") + titleOf(content) +
+                     QStringLiteral(" \u00b7 ") + created;
+    if (const QString patient = content.patient ? footerPatient(*content.patient) : QString();
+        !patient.isEmpty()) {
+        footer += QStringLiteral(" \u00b7 ") + patient;
+    }
+    pdf::paintPages(writer, footer, [&](Flow& flow) {
         titleBlock(flow, content, software, created);
 
         if (content.patient) {
@@ -510,7 +377,7 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
             const ReportParameter& parameter = *content.parameter;
             const QString name = qs(scene::quantityTitle(parameter.name, parameter.unit));
             const QString scale = scaleText(parameter);
-            const StatsTable table(flow, parameter);
+            const pdf::Table table = statsTable(flow, parameter);
             flow.heading(
                 ReportText::tr("Parameter statistics \u2014 %1").arg(name),
                 flow.textHeight(scale, font(8.5), flow.width()) + mm(2.0) + table.height());
@@ -531,11 +398,7 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
         const pdf::Fields settings = settingsFields(content.settings);
         flow.heading(ReportText::tr("Rendering settings"), pdf::fieldGridHeight(flow, settings, 2));
         pdf::fieldGrid(flow, settings, 2);
-
-        flow.finish();
-        pages = flow.page();
-    }
-    painter.end();
+    });
 }
 
 }  // namespace
@@ -592,11 +455,7 @@ QByteArray renderPdf(const ReportContent& content, PaperSize paper) {
     buffer.open(QIODevice::WriteOnly);
     {
         QPdfWriter writer(&buffer);
-        writer.setResolution(kDpi);
-        writer.setPageLayout(
-            QPageLayout(pageSize(paper), QPageLayout::Portrait,
-                        QMarginsF(kMarginSideMm, kMarginTopMm, kMarginSideMm, kMarginBottomMm),
-                        QPageLayout::Millimeter));
+        pdf::setUpPage(writer, paper);
         writer.setTitle(titleOf(content));
         writer.setCreator(QStringLiteral("VesselView ") + QString::fromLatin1(vv::kVersion));
         paint(writer, content);

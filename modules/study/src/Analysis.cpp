@@ -81,6 +81,7 @@ StudyAnalysis analyseStudy(const std::vector<Answer>& answers, const AnalysisOpt
         cell.correct += a.correct() ? 1 : 0;
         cell.times.push_back(a.responseMs);
     }
+    study.repeatedAnswers = repeated;
     if (repeated > 0) {
         study.notes.push_back(std::to_string(repeated) +
                               " main-block answers repeated a stimulus the participant had "

@@ -227,4 +227,31 @@ Summary summarise(std::vector<double> values, double confidence) {
     return s;
 }
 
+BoxStatistics boxStatistics(std::vector<double> values) {
+    const Summary checked = summarise(values);  // refuses empty and non-finite input
+    std::ranges::sort(values);
+    const auto quantile = [&](double q) {
+        const double at = q * static_cast<double>(values.size() - 1);
+        const auto below = static_cast<std::size_t>(std::floor(at));
+        const std::size_t above = std::min(below + 1, values.size() - 1);
+        return values[below] + (at - static_cast<double>(below)) * (values[above] - values[below]);
+    };
+    BoxStatistics b;
+    b.lowerQuartile = quantile(0.25);
+    b.median = checked.median;
+    b.upperQuartile = quantile(0.75);
+    const double reach = 1.5 * (b.upperQuartile - b.lowerQuartile);
+    b.lowerWhisker = b.lowerQuartile;
+    b.upperWhisker = b.upperQuartile;
+    for (const double v : values) {
+        if (v < b.lowerQuartile - reach || v > b.upperQuartile + reach) {
+            b.outliers.push_back(v);
+        } else {
+            b.lowerWhisker = std::min(b.lowerWhisker, v);
+            b.upperWhisker = std::max(b.upperWhisker, v);
+        }
+    }
+    return b;
+}
+
 }  // namespace vv::study

@@ -58,7 +58,10 @@ struct StudyAnalysis {
     MeasureResult accuracy;      ///< per participant and condition: correct / answers
     MeasureResult responseTime;  ///< per participant and condition: median ms
     AnalysisOptions options;
-    /// What the reader should know: answers counted twice and dropped, ...
+    /// Main-block answers to a stimulus the participant had answered before
+    /// (a resumed run): left out, the first answer counts.
+    std::size_t repeatedAnswers = 0;
+    /// What the reader should know, in words: the repeated answers, ...
     std::vector<std::string> notes;
 };
 

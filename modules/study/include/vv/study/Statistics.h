@@ -118,4 +118,20 @@ struct Summary {
 /// or confidence outside (0, 1).
 [[nodiscard]] Summary summarise(std::vector<double> values, double confidence = 0.95);
 
+/// What a box plot of `values` shows (Tukey's): the quartiles (R's default,
+/// type 7: linear between order statistics), the whiskers at the most
+/// extreme values within 1.5 interquartile ranges of the box, and the
+/// values beyond them.
+struct BoxStatistics {
+    double lowerQuartile = 0.0;
+    double median = 0.0;
+    double upperQuartile = 0.0;
+    double lowerWhisker = 0.0;
+    double upperWhisker = 0.0;
+    std::vector<double> outliers;  ///< ascending
+};
+
+/// Throws InvalidArgumentError for no values or a value that is not finite.
+[[nodiscard]] BoxStatistics boxStatistics(std::vector<double> values);
+
 }  // namespace vv::study
