@@ -2,9 +2,13 @@
 // `vesselview-cli study analyse`: the depth-judgement study's answers
 // (results CSV files, vv/study/Results.h) analysed as the paper reports
 // them (vv/study/Analysis.h): a summary on stdout, the tables as CSV.
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <ostream>
+#include <set>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "cli/Arguments.h"
@@ -12,13 +16,31 @@
 #include "cli/GuiApplication.h"
 #include "vv/core/NumberText.h"
 #include "vv/report/StudyReport.h"
+#include "vv/segmentation/SceneSource.h"
 #include "vv/study/Analysis.h"
+#include "vv/study/Stimuli.h"
 
 namespace vv::cli {
 
 namespace {
 
 constexpr const char* kStudyUsage =
+    "usage: vesselview-cli study make SCENE... -o DIR [--conditions NAME,...] [--pairs N]\n"
+    "       [--seed S] [--size WxH] [DICOM options as for render]\n"
+    "  The stimuli of a depth-judgement study (the paper's \"Stimuli\"): per scene (a\n"
+    "  mesh file or a DICOM series) its marker pairs, on visible vessel surface, their\n"
+    "  depths at least 10 % of the view's depth range apart, clearly left and right,\n"
+    "  balanced over screen distance, depth difference and whether the two border\n"
+    "  the same void region; per pair and condition an image with the two markers.\n"
+    "  -o, --output DIR     the study folder: stimuli/*.png and manifest.json\n"
+    "                       (conditions, cameras, markers with their pixels and\n"
+    "                       depths, the answer key, the criteria' values)\n"
+    "  --conditions LIST    of the paper's VSS-CD, VSS-PCD, vessel-CD, vessel-PCD,\n"
+    "                       baseline (default: all five)\n"
+    "  --pairs N            marker pairs per scene, default 5 (the paper's)\n"
+    "  --seed S             the same seed makes the same study, default 1\n"
+    "  --size WxH           the images' size, default 1280x720\n"
+    "\n"
     "usage: vesselview-cli study analyse RESULTS.csv... [-o STUDY.pdf] [--lang en|de]\n"
     "       [--paper a4|letter] [--tables DIR] [--alpha A] [--correction bonferroni|holm]\n"
     "  The answers of a depth-judgement study (one CSV row per answer, as the\n"
@@ -95,6 +117,91 @@ void printSummary(const study::StudyAnalysis& s, std::ostream& out) {
     printMeasure(s, s.responseTime, out);
 }
 
+/// The conditions named in `list` (comma-separated), of the paper's five.
+std::vector<study::StimulusCondition> conditionsNamed(const std::string& list) {
+    const std::vector<study::StimulusCondition> paper = study::paperConditions();
+    std::vector<study::StimulusCondition> chosen;
+    for (const std::string& name : splitList(list, "--conditions")) {
+        const auto found = std::ranges::find_if(
+            paper, [&](const study::StimulusCondition& c) { return c.name == name; });
+        if (found == paper.end()) {
+            throw UsageError("study make: --conditions: unknown condition '" + name +
+                             "' (VSS-CD, VSS-PCD, vessel-CD, vessel-PCD, baseline)");
+        }
+        chosen.push_back(*found);
+    }
+    return chosen;
+}
+
+int studyMake(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
+    std::vector<std::filesystem::path> inputs;
+    std::filesystem::path folder;
+    std::vector<study::StimulusCondition> conditions = study::paperConditions();
+    study::StimulusOptions options;
+    segmentation::SceneSourceOptions source;
+    for (Arguments a("study make", args, 1); a.next();) {
+        const std::string& name = a.name();
+        if (name == "--help" || name == "-h") {
+            out << kStudyUsage;
+            return kOk;
+        }
+        if (name == "-o" || name == "--output") {
+            folder = a.path();
+        } else if (name == "--conditions") {
+            conditions = conditionsNamed(a.value());
+        } else if (name == "--pairs") {
+            const double pairs = parseNumber(a.value(), "--pairs");
+            if (!(pairs >= 1.0 && pairs <= 1000.0) || pairs != std::floor(pairs)) {
+                a.fail("--pairs must be a whole number from 1 to 1000");
+            }
+            options.pairsPerScene = static_cast<std::size_t>(pairs);
+        } else if (name == "--seed") {
+            const double seed = parseNumber(a.value(), "--seed");
+            if (!(seed >= 0.0 && seed <= 9.0e15) || seed != std::floor(seed)) {
+                a.fail("--seed must be a whole number >= 0");
+            }
+            options.seed = static_cast<std::uint64_t>(seed);
+        } else if (name == "--size") {
+            std::tie(options.width, options.height) = parseSize(a.value(), "--size", 64, 8192);
+        } else if (segmentation::setSceneSourceOption(name, a.peekValue(), source)) {
+            a.takeValue();
+        } else if (a.isOption()) {
+            a.fail("unknown option '" + name + "'");
+        } else {
+            inputs.emplace_back(a.current());
+        }
+    }
+    if (inputs.empty()) {
+        throw UsageError("study make needs one or more scenes (mesh files or DICOM series)");
+    }
+    if (folder.empty()) {
+        throw UsageError("study make needs the study folder: -o DIR");
+    }
+    std::vector<study::StimulusScene> scenes;
+    std::set<std::string> names;
+    for (const auto& input : inputs) {
+        std::string name = input.stem().string();
+        for (int n = 2; !names.insert(name).second; ++n) {
+            name = input.stem().string() + "-" + std::to_string(n);
+        }
+        scenes.push_back({name, input.string(), segmentation::loadSceneSource(input, source)});
+    }
+    ensureGuiApplication();
+    render::OffscreenRenderer renderer;
+    study::StudyStimuli made;
+    try {
+        made = study::makeStimuli(renderer, scenes, conditions, options, folder);
+    } catch (const IoError& e) {
+        throw OutputError(e.what());
+    }
+    for (const std::string& note : made.notes) {
+        err << "vesselview-cli: note: " << note << "\n";
+    }
+    out << made.stimuli.size() << " stimuli (" << scenes.size() << " scene(s) x "
+        << conditions.size() << " condition(s) x their pairs) in " << folder.string() << "\n";
+    return kOk;
+}
+
 }  // namespace
 
 int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -102,8 +209,11 @@ int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::o
         (args.empty() ? err : out) << kStudyUsage;
         return args.empty() ? kUsage : kOk;
     }
+    if (args.front() == "make") {
+        return studyMake(args, out, err);
+    }
     if (args.front() != "analyse" && args.front() != "analyze") {
-        throw UsageError("unknown study command '" + args.front() + "' (analyse)");
+        throw UsageError("unknown study command '" + args.front() + "' (make, analyse)");
     }
     std::vector<std::filesystem::path> inputs;
     std::filesystem::path tables;

@@ -1,18 +1,25 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
+// `vesselview-cli study make`: the stimuli of a mesh file.
 // `vesselview-cli study analyse`: two results files of simulated
 // participants read as one study; the summary names the exclusion and the
 // differences, the tables are written; a bad file exits 3 naming it and its
 // line; bad options exit 2.
 #include <gtest/gtest.h>
 
+#include <QJsonArray>
+#include <QJsonDocument>
+#include <QJsonObject>
 #include <array>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <random>
+#include <sstream>
 #include <string>
 
 #include "CliRun.h"
+#include "vv/demo/DemoTree.h"
+#include "vv/meshio/MeshWriter.h"
 #include "vv/study/Results.h"
 
 namespace {
@@ -130,10 +137,48 @@ TEST(StudyCommand, ABadFileExitsThreeNamingItsLine) {
     EXPECT_NE(run.err.find("line 2"), std::string::npos) << run.err;
 }
 
+// Stimuli from a mesh file: the asked conditions and pairs, a manifest that
+// lists them; bad options exit 2, a missing scene 3.
+TEST(StudyCommand, MakesTheStimuliOfAMeshFile) {
+    vv::demo::DemoTreeOptions o;
+    o.generations = 3;
+    const auto mesh = scratch() / "tree.vtp";
+    vv::meshio::writeVtp(vv::demo::buildVesselSurface(vv::demo::generateVesselTree(o), o), mesh);
+    const auto folder = scratch() / "made";
+    std::filesystem::remove_all(folder);
+    const auto run =
+        runCli({"study", "make", mesh.string(), "-o", folder.string(), "--pairs", "2",
+                "--conditions", "VSS-CD,baseline", "--size", "400x300", "--seed", "9"});
+    ASSERT_EQ(run.code, 0) << run.err;
+    EXPECT_NE(run.out.find("4 stimuli"), std::string::npos) << run.out;
+    for (const char* name : {"tree-p1-VSS-CD.png", "tree-p2-baseline.png"}) {
+        EXPECT_TRUE(std::filesystem::exists(folder / "stimuli" / name)) << name;
+    }
+    std::ifstream in(folder / "manifest.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    const QJsonObject manifest =
+        QJsonDocument::fromJson(QByteArray::fromStdString(text.str())).object();
+    EXPECT_EQ(manifest["stimuli"].toArray().size(), 4);
+    EXPECT_EQ(manifest["seed"].toString(), "9");
+    EXPECT_EQ(manifest["width"].toInt(), 400);
+
+    EXPECT_EQ(
+        runCli({"study", "make", mesh.string(), "-o", folder.string(), "--conditions", "VSS-XX"})
+            .code,
+        2);
+    EXPECT_EQ(runCli({"study", "make", mesh.string(), "-o", folder.string(), "--pairs", "0"}).code,
+              2);
+    EXPECT_EQ(runCli({"study", "make", mesh.string()}).code, 2);
+    EXPECT_EQ(
+        runCli({"study", "make", (scratch() / "missing.vtp").string(), "-o", folder.string()}).code,
+        3);
+}
+
 TEST(StudyCommand, BadOptionsAreUsageErrors) {
     const auto file = writeResults("options.csv", 1, 3, false);
     EXPECT_EQ(runCli({"study"}).code, 2);
-    EXPECT_EQ(runCli({"study", "make"}).code, 2);
+    EXPECT_EQ(runCli({"study", "frobnicate"}).code, 2);
     EXPECT_EQ(runCli({"study", "analyse"}).code, 2);
     EXPECT_EQ(runCli({"study", "analyse", file.string(), "--alpha", "2"}).code, 2);
     EXPECT_EQ(runCli({"study", "analyse", file.string(), "--correction", "none"}).code, 2);

@@ -63,11 +63,11 @@ TEST(MarkerPairs, EveryPairMeetsTheCriteriaAndItsRegionFlagIsTrue) {
         const int b = Bars::barOf(p.right.x);
         ASSERT_GE(a, 0);
         ASSERT_GE(b, 0);
-        // The footprint lies inside one bar: its centre a radius from the edges.
+        // The marked point's neighbourhood lies inside one bar.
         for (const MarkerSite* s : {&p.left, &p.right}) {
             const int bar = Bars::barOf(s->x);
-            EXPECT_GE(s->x - criteria.markerRadius, Bars::kLeft[bar]);
-            EXPECT_LT(s->x + criteria.markerRadius, Bars::kLeft[bar] + 40);
+            EXPECT_GE(s->x - criteria.surfaceRadius, Bars::kLeft[bar]);
+            EXPECT_LT(s->x + criteria.surfaceRadius, Bars::kLeft[bar] + 40);
             EXPECT_FLOAT_EQ(static_cast<float>(s->depth), bars.depth.view()(s->x, s->y));
             EXPECT_TRUE(sites.insert({s->x, s->y}).second) << "a site used twice";
         }
@@ -137,9 +137,9 @@ TEST(MarkerPairs, NoMarkerSitsOnAnEdgeBetweenTwoVessels) {
     ASSERT_FALSE(set.pairs.empty());
     for (const MarkerPair& p : set.pairs) {
         for (const MarkerSite* s : {&p.left, &p.right}) {
-            if (s->depth > 15.0) {  // on the far vessel: a radius from the near one's edges
-                EXPECT_TRUE(s->x + criteria.markerRadius < 220 ||
-                            s->x - criteria.markerRadius >= 270)
+            if (s->depth > 15.0) {  // on the far vessel: clear of the near one's edges
+                EXPECT_TRUE(s->x + criteria.surfaceRadius < 220 ||
+                            s->x - criteria.surfaceRadius >= 270)
                     << s->x;
             }
         }

@@ -27,10 +27,12 @@ void checkCriteria(const PairCriteria& c) {
     if (!fraction(c.minDepthDifference) || !fraction(c.largeDepthDifference) ||
         !fraction(c.minHorizontalSeparation) || !fraction(c.farScreenDistance) ||
         !fraction(c.flatness) || !(c.maxSlope > 0.0) || c.markerRadius < 1 ||
-        c.markerRadius > 200 || c.siteStep < 1 || c.siteStep > 200) {
+        c.markerRadius > 200 || c.surfaceRadius < 0 || c.surfaceRadius > c.markerRadius ||
+        c.siteStep < 1 || c.siteStep > 200) {
         throw InvalidArgumentError(
             "marker pair criteria out of range (fractions in [0, 1], a positive slope, a "
-            "marker radius and a site step of 1 to 200 px)");
+            "marker radius and a site step of 1 to 200 px, a surface radius up to the "
+            "marker's)");
     }
 }
 
@@ -38,7 +40,8 @@ bool isVessel(float d) {
     return std::isfinite(d);
 }
 
-/// Whether the marker's footprint around (x, y) lies on one visible surface.
+/// Whether the marked point's neighbourhood around (x, y) lies on one
+/// visible surface.
 bool flatFootprint(ImageView<const float> depth, int x, int y, int radius, double tolerance) {
     const float centre = depth(x, y);
     for (int dy = -radius; dy <= radius; ++dy) {
@@ -141,7 +144,8 @@ PairSet pickMarkerPairs(ImageView<const float> depth, std::size_t count, std::ui
     const int r = c.markerRadius;
     for (int y = r; y < h - r; y += c.siteStep) {
         for (int x = r; x < w - r; x += c.siteStep) {
-            if (isVessel(depth(x, y)) && flatFootprint(depth, x, y, r, c.flatness * range)) {
+            if (isVessel(depth(x, y)) &&
+                flatFootprint(depth, x, y, c.surfaceRadius, c.flatness * range)) {
                 sites.push_back({x, y, depth(x, y), borderingRegions(regions.labels, x, y)});
             }
         }

@@ -52,11 +52,14 @@ struct PairCriteria {
     double maxSlope = 1.0;
     /// Above this screen distance (of the diagonal) a pair is in the "far" strata.
     double farScreenDistance = 0.35;
-    /// A marker's footprint radius, px: every pixel within it is vessel and
-    /// within flatness of the centre's depth (one visible surface, not an edge
-    /// between two vessels); markers keep this far from the image's border too.
+    /// The marker's reach, px (its arms; they may lie over anything):
+    /// markers keep this far from the image's border.
     int markerRadius = 10;
-    /// Of the depth range: how far the footprint's depths may stray.
+    /// The marked point's neighbourhood, px: every pixel within it is vessel
+    /// and within `flatness` of the centre's depth (one visible surface: not
+    /// an edge where a vessel passes behind another, nor a grazing rim).
+    int surfaceRadius = 3;
+    /// Of the depth range: how far the neighbourhood's depths may stray.
     double flatness = 0.02;
     /// Sites are looked for every this many pixels.
     int siteStep = 4;
