@@ -4224,7 +4224,8 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     </message>
     <message>
         <source>Accuracy (mean, 95 % CI)</source>
-        <translation>Treffsicherheit (Mittelwert, 95-%-KI)</translation>
+        <translation>Treffsicherheit
+(Mittelwert, 95-%-KI)</translation>
     </message>
     <message>
         <source>chance level</source>

@@ -194,6 +194,21 @@ TEST_F(StudyReportTest, ThePdfInBothLanguagesKeepsItsMarginsAndItsNumbers) {
         EXPECT_TRUE(hasWord(words, std::string(language) == "de" ? "Treffsicherheit" : "Accuracy"))
             << language;
         EXPECT_TRUE(hasWord(words, "P21")) << language;  // the excluded guesser, named
+        // Each interval on one line of its cell: its two ends side by side
+        // (a cell wrapped onto a second line runs over the next row).
+        for (const study::Summary& s : analysis.accuracy.perCondition) {
+            const std::string low = locale.toString(100.0 * s.meanLow, 'f', 1).toStdString();
+            const std::string high = locale.toString(100.0 * s.meanHigh, 'f', 1).toStdString();
+            bool sideBySide = false;
+            for (const test::PdfWord& a : words) {
+                for (const test::PdfWord& b : words) {
+                    sideBySide = sideBySide || (a.text == low && b.text == high &&
+                                                a.page == b.page &&
+                                                std::abs(a.top - b.top) < 1.0 && b.left > a.left);
+                }
+            }
+            EXPECT_TRUE(sideBySide) << language << ": " << low << " - " << high;
+        }
         const std::vector<QImage> pages = test::pdfPages(pdf, dir, 100);
         ASSERT_GE(pages.size(), 2U);
         for (std::size_t i = 0; i < pages.size(); ++i) {

@@ -229,12 +229,26 @@ Table::Table(const Flow& flow, QStringList headers, std::vector<QStringList> row
     }
     headHeight_ += 2 * pad_;
     rowHeight_ = flow.textHeight(QStringLiteral("0"), cellFont_, flow.width()) + 2 * pad_;
+    // A row as tall as its tallest cell: a cell that wraps never runs over
+    // the next row.
+    for (const QStringList& r : rows_) {
+        double tallest = rowHeight_;
+        for (std::size_t c = 0; c < columns; ++c) {
+            tallest = std::max(tallest, flow.textHeight(r[static_cast<qsizetype>(c)], cellFont_,
+                                                        widths_[c] - 2 * pad_) +
+                                            2 * pad_);
+        }
+        rowHeights_.push_back(tallest);
+    }
     noteHeight_ = note_.isEmpty() ? 0.0 : flow.paragraphHeight(note_, noteFont_) + mm(1.5);
 }
 
 double Table::height() const {
-    const auto rows = std::max<std::size_t>(rows_.size(), 1);
-    return headHeight_ + static_cast<double>(rows) * rowHeight_ + mm(1.5) + noteHeight_;
+    double rows = rows_.empty() ? rowHeight_ : 0.0;
+    for (const double h : rowHeights_) {
+        rows += h;
+    }
+    return headHeight_ + rows + mm(1.5) + noteHeight_;
 }
 
 void Table::draw(Flow& flow) const {
@@ -246,15 +260,16 @@ void Table::draw(Flow& flow) const {
         const int before = flow.page();
         // The last row stays with the note below the table.
         const bool last = index + 1 == rows_.size();
-        flow.ensure(rowHeight_ + (last ? noteHeight_ : 0.0));
+        const double h = rowHeights_[index];
+        flow.ensure(h + (last ? noteHeight_ : 0.0));
         if (flow.page() != before) {
             header(flow);  // the table goes on: repeat its header
         }
         if (index % 2 == 1) {
-            flow.fill(QRectF(flow.left(), flow.y(), flow.width(), rowHeight_), kZebra);
+            flow.fill(QRectF(flow.left(), flow.y(), flow.width(), h), kZebra);
         }
-        row(flow, rows_[index], cellFont_, rowHeight_, kInk);
-        flow.advance(rowHeight_);
+        row(flow, rows_[index], cellFont_, h, kInk);
+        flow.advance(h);
     }
     if (rows_.empty()) {
         flow.paragraph(empty_, font(9.0, false, true), kMuted);

@@ -120,7 +120,7 @@ using Fields = std::vector<std::pair<QString, QString>>;
 void fieldGrid(Flow& flow, const Fields& fields, int columns);
 
 /// A table over pages: a header row (muted, repeated when the table goes on
-/// to a new page), rows in zebra stripes, a rule and a note below; on one
+/// to a new page), rows in zebra stripes (each as tall as its tallest cell), a rule and a note below; on one
 /// page whenever it fits on one, its last row kept with the note. The first
 /// column is left-aligned and takes what the others leave; every other
 /// column is right-aligned and as wide as its header's longest word and its
@@ -151,7 +151,8 @@ class Table {
     QFont noteFont_ = font(7.5, false, true);
     double pad_ = mm(1.6);
     double headHeight_ = 0.0;
-    double rowHeight_ = 0.0;
+    double rowHeight_ = 0.0;         ///< of one line of cells
+    std::vector<double> rowHeights_;  ///< each row's, its tallest cell's
     double noteHeight_ = 0.0;
 };
 

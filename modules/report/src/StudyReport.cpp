@@ -26,9 +26,11 @@ QString pText(double p) {
 }
 
 /// A measure's value as read: a share as "92.5 %", a time as "1520 ms"
-/// (no group separators, as every number of the reports).
+/// (no group separators, as every number of the reports), on one line
+/// (a table cell never breaks it).
 QString valueText(const study::MeasureResult& m, double v) {
-    return m.unit.empty() ? percent(v) : withUnit(integer(std::llround(v)), m.unit);
+    QString text = m.unit.empty() ? percent(v) : withUnit(integer(std::llround(v)), m.unit);
+    return text.replace(QLatin1Char(' '), QChar(0x00a0));
 }
 
 /// "low – high", kept on one line (a table cell never wraps it).
