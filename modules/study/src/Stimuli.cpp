@@ -156,7 +156,8 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
         view.display = conditions.front().display;
         view.camera = render::OffscreenRenderer::cameraFor(scene.scene, view);
         const Image<float> depth = renderer.renderDepth(scene.scene, view);
-        // Each scene its own stream of pairs, the same for any scene order.
+        // Each scene its own stream of pairs (the seed plus its index): its
+        // pairs do not depend on what the other scenes show.
         const PairSet pairs = pickMarkerPairs(depth.view(), options.pairsPerScene,
                                               options.seed + 7919 * s, options.criteria);
         for (const std::string& note : pairs.notes) {
