@@ -24,6 +24,7 @@
 #include <sstream>
 
 #include "vv/core/AtomicFile.h"
+#include "vv/core/CsvField.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
 #include "vv/core/Parallel.h"
@@ -180,17 +181,6 @@ void markFailed(VssBenchmarkRow& row, const std::string& why) {
     row.errorBound = kNaN;
 }
 
-std::string csvField(const std::string& text) {
-    if (text.find_first_of(",\"\n") == std::string::npos) {
-        return text;
-    }
-    std::string quoted = "\"";
-    for (const char c : text) {
-        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    }
-    return quoted + "\"";
-}
-
 /// A CSV value: nine significant digits; empty when not measured (NaN).
 std::string number(double value) {
     return std::isnan(value) ? std::string() : significantText(value, 9);
@@ -219,17 +209,6 @@ std::string scientific(double value) {
         return "inf";
     }
     return scientificText(value, 2);
-}
-
-void writeText(const std::filesystem::path& file, const std::string& text) {
-    writeAtomically(file, [&](const std::filesystem::path& temporary) {
-        std::ofstream stream(temporary, std::ios::binary | std::ios::trunc);
-        stream << text;
-        stream.flush();
-        if (!stream) {
-            throw IoError(file, "cannot write the file");
-        }
-    });
 }
 
 }  // namespace
@@ -635,11 +614,12 @@ std::string csvText(const VssBenchmarkResult& result) {
 }
 
 void writeCsv(const std::filesystem::path& file, const VssBenchmarkResult& result) {
-    writeText(file, csvText(result));
+    writeFileAtomically(file, csvText(result));
 }
 
 void writeMarkdown(const std::filesystem::path& file, const VssBenchmarkResult& result) {
-    writeText(file, "<!-- SPDX-License-Identifier: GPL-3.0-or-later -->\n" + markdownTable(result));
+    writeFileAtomically(
+        file, "<!-- SPDX-License-Identifier: GPL-3.0-or-later -->\n" + markdownTable(result));
 }
 
 }  // namespace vv::evaluation

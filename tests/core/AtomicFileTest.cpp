@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "vv/core/AtomicFile.h"
+#include "vv/core/CsvField.h"
 #include "vv/core/Error.h"
 
 namespace fs = std::filesystem;
@@ -32,6 +33,27 @@ TEST(AtomicFile, WritesAndReplaces) {
     vv::writeAtomically(target, [](const fs::path& tmp) { std::ofstream(tmp) << "second"; });
     EXPECT_EQ(slurp(target), "second");
     EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+}
+
+// The bytes as given (a NUL, a carriage return), replacing the old file.
+TEST(AtomicFile, WritesBytesAsGiven) {
+    const fs::path dir = freshDir("atomic-bytes");
+    const fs::path target = dir / "out.bin";
+    vv::writeFileAtomically(target, "old");
+    const std::string bytes("a\0b\r\nc", 6);
+    vv::writeFileAtomically(target, bytes);
+    EXPECT_EQ(slurp(target), bytes);
+    EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1);
+    EXPECT_THROW(vv::writeFileAtomically(dir / "missing" / "x.txt", "x"), vv::IoError);
+}
+
+TEST(CsvField, QuotesOnlyWhatNeedsIt) {
+    EXPECT_EQ(vv::csvField("VSS-CD"), "VSS-CD");
+    EXPECT_EQ(vv::csvField(""), "");
+    EXPECT_EQ(vv::csvField("Doe, J"), "\"Doe, J\"");
+    EXPECT_EQ(vv::csvField("say \"hi\""), "\"say \"\"hi\"\"\"");
+    EXPECT_EQ(vv::csvField("two\nlines"), "\"two\nlines\"");
+    EXPECT_EQ(vv::csvField("cr\r"), "\"cr\r\"");
 }
 
 TEST(AtomicFile, FailedWriteKeepsOldFileAndLeavesNoTemporary) {

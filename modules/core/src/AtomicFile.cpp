@@ -6,6 +6,7 @@
 #include <atomic>
 #include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <string>
 #include <system_error>
 
@@ -69,6 +70,17 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
         fs::remove(temporary, ec);
         throw IoError(target, "cannot write: " + ec.message());
     }
+}
+
+void writeFileAtomically(const fs::path& target, std::string_view contents) {
+    writeAtomically(target, [&](const fs::path& temporary) {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        out.write(contents.data(), static_cast<std::streamsize>(contents.size()));
+        out.flush();
+        if (!out) {
+            throw IoError(target, "cannot write the file");
+        }
+    });
 }
 
 }  // namespace vv

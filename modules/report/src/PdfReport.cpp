@@ -465,13 +465,8 @@ QByteArray renderPdf(const ReportContent& content, PaperSize paper) {
 }
 
 void writePdfBytes(const std::filesystem::path& path, const QByteArray& pdf) {
-    writeAtomically(path, [&](const std::filesystem::path& temporary) {
-        QFile file(QFile::decodeName(temporary.c_str()));
-        if (!file.open(QIODevice::WriteOnly) || file.write(pdf) != pdf.size() || !file.flush()) {
-            throw IoError(path, "cannot write the PDF report: " + file.errorString().toStdString());
-        }
-        file.close();
-    });
+    writeFileAtomically(path,
+                        std::string_view(pdf.constData(), static_cast<std::size_t>(pdf.size())));
 }
 
 void writePdf(const std::filesystem::path& path, const ReportContent& content, PaperSize paper) {

@@ -1,14 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include <sstream>
 
-#include "CsvText.h"
+#include "vv/core/AtomicFile.h"
+#include "vv/core/CsvField.h"
 #include "vv/core/NumberText.h"
 #include "vv/study/Analysis.h"
 
 namespace vv::study {
 namespace {
-
-using detail::csvField;
 
 std::string number(double value) {
     return significantText(value, 6);
@@ -71,9 +70,9 @@ std::string participantsTable(const StudyAnalysis& study) {
 }  // namespace
 
 void writeAnalysisTables(const StudyAnalysis& study, const std::filesystem::path& folder) {
-    detail::writeTextFile(folder / "conditions.csv", conditionsTable(study));
-    detail::writeTextFile(folder / "comparisons.csv", comparisonsTable(study));
-    detail::writeTextFile(folder / "participants.csv", participantsTable(study));
+    writeFileAtomically(folder / "conditions.csv", conditionsTable(study));
+    writeFileAtomically(folder / "comparisons.csv", comparisonsTable(study));
+    writeFileAtomically(folder / "participants.csv", participantsTable(study));
 }
 
 }  // namespace vv::study

@@ -8,7 +8,8 @@
 #include <iomanip>
 #include <sstream>
 
-#include "CsvText.h"
+#include "vv/core/AtomicFile.h"
+#include "vv/core/CsvField.h"
 
 namespace vv::study {
 namespace {
@@ -156,11 +157,11 @@ std::string resultsHeader() {
 std::string resultsRow(const Answer& a) {
     std::ostringstream row;
     row.imbue(std::locale::classic());
-    row << detail::csvField(a.participant) << ',' << (a.block == Block::Main ? "main" : "training")
-        << ',' << a.trial << ',' << detail::csvField(a.stimulus) << ',' << detail::csvField(a.scene)
-        << ',' << detail::csvField(a.condition) << ',' << sideText(a.answer) << ','
-        << sideText(a.correctAnswer) << ',' << (a.correct() ? 1 : 0) << ',' << std::fixed
-        << std::setprecision(3) << a.responseMs;
+    row << csvField(a.participant) << ',' << (a.block == Block::Main ? "main" : "training") << ','
+        << a.trial << ',' << csvField(a.stimulus) << ',' << csvField(a.scene) << ','
+        << csvField(a.condition) << ',' << sideText(a.answer) << ',' << sideText(a.correctAnswer)
+        << ',' << (a.correct() ? 1 : 0) << ',' << std::fixed << std::setprecision(3)
+        << a.responseMs;
     return row.str();
 }
 
@@ -204,7 +205,7 @@ void appendAnswer(const std::filesystem::path& file, const Answer& answer) {
         text = resultsHeader() + "\n";
     }
     text += resultsRow(answer) + "\n";
-    detail::writeTextFile(file, text);
+    writeFileAtomically(file, text);
 }
 
 }  // namespace vv::study

@@ -9,7 +9,7 @@
 #include <QPainterPath>
 #include <set>
 
-#include "CsvText.h"
+#include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
 #include "vv/study/Results.h"
 
@@ -83,10 +83,6 @@ QJsonObject cameraJson(const render::Camera& c) {
             {"target", QJsonArray{target.x, target.y, target.z}},
             {"up", QJsonArray{up.x, up.y, up.z}},
             {"field_of_view_deg", c.fieldOfView()}};
-}
-
-void writeBytes(const std::filesystem::path& file, const QByteArray& bytes) {
-    detail::writeTextFile(file, bytes.toStdString());
 }
 
 }  // namespace
@@ -198,7 +194,9 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
                 if (!image.save(&buffer, "PNG")) {
                     throw IoError(folder / stimulus.image, "cannot encode the image");
                 }
-                writeBytes(folder / stimulus.image, png);
+                writeFileAtomically(
+                    folder / stimulus.image,
+                    std::string_view(png.constData(), static_cast<std::size_t>(png.size())));
                 stimulusArray.append(
                     QJsonObject{{"id", qs(stimulus.id)},
                                 {"image", qs(stimulus.image)},
@@ -242,7 +240,9 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
              }
              return notes;
          }())}};
-    writeBytes(folder / "manifest.json", QJsonDocument(manifest).toJson());
+    const QByteArray json = QJsonDocument(manifest).toJson();
+    writeFileAtomically(folder / "manifest.json",
+                        std::string_view(json.constData(), static_cast<std::size_t>(json.size())));
     progress.report(1.0, "Stimuli written");
     return out;
 }

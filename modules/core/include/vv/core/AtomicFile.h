@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <string_view>
 
 namespace vv {
 
@@ -16,5 +17,9 @@ namespace vv {
 /// writable, or the rename fails.
 void writeAtomically(const std::filesystem::path& target,
                      const std::function<void(const std::filesystem::path& temporary)>& write);
+
+/// writeAtomically() of `contents`, byte for byte. Throws IoError naming
+/// `target` as writeAtomically() does, and when the bytes cannot be written.
+void writeFileAtomically(const std::filesystem::path& target, std::string_view contents);
 
 }  // namespace vv
