@@ -1412,6 +1412,14 @@ Ersetzen?</translation>
         <source>Session saved to %1, with the applied segmentation (the preview on screen was not applied)</source>
         <translation>Sitzung gespeichert unter %1, mit der angewendeten Segmentierung (die Vorschau auf dem Bildschirm wurde nicht angewendet)</translation>
     </message>
+    <message>
+        <source>&amp;Study</source>
+        <translation>&amp;Studie</translation>
+    </message>
+    <message>
+        <source>&amp;Run Study…</source>
+        <translation>Studie &amp;durchführen…</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -2746,6 +2754,217 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
         <source>YYYY-MM-DD</source>
         <extracomment>How a date is typed, in the letters of the language: the date format of dates on screen (&quot;yyyy-MM-dd&quot; above) with Y = year, M = month, D = day; TT.MM.JJJJ in German.</extracomment>
         <translation>TT.MM.JJJJ</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::StudyRunDialog</name>
+    <message>
+        <source>Run Depth-Judgement Study</source>
+        <translation>Tiefenurteil-Studie durchführen</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Study folder (made by vesselview-cli study make)</source>
+        <translation>Studienordner (von vesselview-cli study make erstellt)</translation>
+    </message>
+    <message>
+        <source>&amp;Study folder:</source>
+        <translation>&amp;Studienordner:</translation>
+    </message>
+    <message>
+        <source>&amp;Results file:</source>
+        <translation>&amp;Ergebnisdatei:</translation>
+    </message>
+    <message>
+        <source>Results file</source>
+        <translation>Ergebnisdatei</translation>
+    </message>
+    <message>
+        <source>Results (*.csv)</source>
+        <translation>Ergebnisse (*.csv)</translation>
+    </message>
+    <message>
+        <source>e.g. P07</source>
+        <translation>z. B. P07</translation>
+    </message>
+    <message>
+        <source>&amp;Participant:</source>
+        <translation>&amp;Teilnehmer:</translation>
+    </message>
+    <message>
+        <source>&amp;Training images first, with feedback</source>
+        <translation>Zuerst Ü&amp;bungsbilder, mit Rückmeldung</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keiner</translation>
+    </message>
+    <message>
+        <source>&amp;Countdown before each image:</source>
+        <translation>&amp;Countdown vor jedem Bild:</translation>
+    </message>
+    <message>
+        <source>no breaks</source>
+        <translation>keine Pausen</translation>
+    </message>
+    <message>
+        <source>every </source>
+        <translation>alle </translation>
+    </message>
+    <message>
+        <source> images</source>
+        <translation> Bilder</translation>
+    </message>
+    <message>
+        <source>&amp;Break:</source>
+        <translation>&amp;Pause:</translation>
+    </message>
+    <message>
+        <source>Choose the folder that vesselview-cli study make wrote.</source>
+        <translation>Wählen Sie den Ordner, den vesselview-cli study make geschrieben hat.</translation>
+    </message>
+    <message>
+        <source>Type the participant&apos;s id.</source>
+        <translation>Geben Sie die Kennung des Teilnehmers ein.</translation>
+    </message>
+    <message>
+        <source>A new participant (%1).</source>
+        <translation>Ein neuer Teilnehmer (%1).</translation>
+    </message>
+    <message>
+        <source>%1 has answered all %2 images.</source>
+        <translation>%1 hat alle %2 Bilder beantwortet.</translation>
+    </message>
+    <message>
+        <source>%1 has answered %2 of %3 images; the run goes on from image %4 (%5).</source>
+        <translation>%1 hat %2 von %3 Bildern beantwortet; der Durchgang geht bei Bild %4 weiter (%5).</translation>
+    </message>
+    <message>
+        <source>St&amp;art</source>
+        <translation>St&amp;arten</translation>
+    </message>
+    <message>
+        <source>%1 images in %2 conditions from %3; %4 training images.</source>
+        <translation>%1 Bilder in %2 Bedingungen aus %3; %4 Übungsbilder.</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n scene(s)</source>
+        <translation>
+            <numerusform>%n Szene</numerusform>
+            <numerusform>%n Szenen</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>order %1: the Latin square&apos;s row %2 of %3</source>
+        <translation>Reihenfolge %1: Zeile %2 von %3 des lateinischen Quadrats</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::StudyRunnerWidget</name>
+    <message>
+        <source>Depth-judgement study</source>
+        <translation>Tiefenurteil-Studie</translation>
+    </message>
+    <message>
+        <source>The image %1 cannot be read. The run stops; the answers given so far are saved.</source>
+        <translation>Das Bild %1 kann nicht gelesen werden. Der Durchgang endet; die bisherigen Antworten sind gespeichert.</translation>
+    </message>
+    <message>
+        <source>The answer cannot be saved: %1
+The run stops; the answers saved before stay in the file.</source>
+        <translation>Die Antwort kann nicht gespeichert werden: %1
+Der Durchgang endet; die zuvor gespeicherten Antworten bleiben in der Datei.</translation>
+    </message>
+    <message>
+        <source>Stop the run? The answers given so far are saved; the same participant id goes on from here.</source>
+        <translation>Den Durchgang beenden? Die bisherigen Antworten sind gespeichert; mit derselben Teilnehmerkennung geht es hier weiter.</translation>
+    </message>
+    <message>
+        <source>Press the space bar to go on.</source>
+        <translation>Drücken Sie die Leertaste, um fortzufahren.</translation>
+    </message>
+    <message>
+        <source>Which marker is closer to you?</source>
+        <translation>Welche Markierung ist näher bei Ihnen?</translation>
+    </message>
+    <message>
+        <source>Each image shows vessels with two markers. Press F (or the left arrow) when the left marker is closer to you, J (or the right arrow) when the right one is. Answer as quickly as you can while being sure.
+
+A countdown comes before each image; between images this grey screen waits for the space bar.</source>
+        <translation>Jedes Bild zeigt Gefäße mit zwei Markierungen. Drücken Sie F (oder den Pfeil nach links), wenn die linke Markierung näher bei Ihnen ist, J (oder den Pfeil nach rechts), wenn es die rechte ist. Antworten Sie so schnell Sie können, aber sicher.
+
+Vor jedem Bild läuft ein Countdown; zwischen den Bildern wartet dieser graue Bildschirm auf die Leertaste.</translation>
+    </message>
+    <message>
+        <source>You begin with training images and are told after each whether your answer was right. Go on with them until you feel familiar with the task, then press Enter.</source>
+        <translation>Sie beginnen mit Übungsbildern und erfahren nach jedem, ob Ihre Antwort richtig war. Üben Sie, bis Sie mit der Aufgabe vertraut sind, und drücken Sie dann die Eingabetaste.</translation>
+    </message>
+    <message>
+        <source>Welcome back: %1 of %2 images are answered; the study goes on from there.</source>
+        <translation>Willkommen zurück: %1 von %2 Bildern sind beantwortet; die Studie geht dort weiter.</translation>
+    </message>
+    <message>
+        <source>Press the space bar to begin.</source>
+        <translation>Drücken Sie die Leertaste, um zu beginnen.</translation>
+    </message>
+    <message>
+        <source>Image %1 of %2</source>
+        <translation>Bild %1 von %2</translation>
+    </message>
+    <message>
+        <source>Correct</source>
+        <translation>Richtig</translation>
+    </message>
+    <message>
+        <source>Not correct</source>
+        <translation>Nicht richtig</translation>
+    </message>
+    <message>
+        <source>The left marker was closer.</source>
+        <translation>Die linke Markierung war näher.</translation>
+    </message>
+    <message>
+        <source>The right marker was closer.</source>
+        <translation>Die rechte Markierung war näher.</translation>
+    </message>
+    <message>
+        <source>Space bar: another training image. Enter: begin the study.</source>
+        <translation>Leertaste: ein weiteres Übungsbild. Eingabetaste: die Studie beginnen.</translation>
+    </message>
+    <message>
+        <source>The study begins</source>
+        <translation>Die Studie beginnt</translation>
+    </message>
+    <message>
+        <source>From now on you are not told whether an answer was right. %1 images.</source>
+        <translation>Ab jetzt erfahren Sie nicht mehr, ob eine Antwort richtig war. %1 Bilder.</translation>
+    </message>
+    <message>
+        <source>Break</source>
+        <translation>Pause</translation>
+    </message>
+    <message>
+        <source>Take a rest: %1 of %2 images are done.</source>
+        <translation>Ruhen Sie sich aus: %1 von %2 Bildern sind geschafft.</translation>
+    </message>
+    <message>
+        <source>Press the space bar when you are ready.</source>
+        <translation>Drücken Sie die Leertaste, wenn Sie bereit sind.</translation>
+    </message>
+    <message>
+        <source>Thank you</source>
+        <translation>Vielen Dank</translation>
+    </message>
+    <message>
+        <source>The study is complete and your answers are saved. The person running the study closes this screen with Escape.</source>
+        <translation>Die Studie ist abgeschlossen, Ihre Antworten sind gespeichert. Die Studienleitung schließt diesen Bildschirm mit Escape.</translation>
     </message>
 </context>
 <context>

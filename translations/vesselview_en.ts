@@ -66,6 +66,16 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::StudyRunDialog</name>
+    <message numerus="yes">
+        <source>%n scene(s)</source>
+        <translation>
+            <numerusform>%n scene</numerusform>
+            <numerusform>%n scenes</numerusform>
+        </translation>
+    </message>
+</context>
+<context>
     <name>vv::report::ReportText</name>
     <message numerus="yes">
         <source>%n answer(s) repeated a stimulus already answered (a resumed run): only the first counts.</source>

@@ -110,6 +110,7 @@ constexpr const char* kUsageText =
     "                                       a line, a summary,\n"
     "                                       exit code of the first failure\n"
     "  study make SCENE... -o DIR [--conditions NAME,...] [--pairs N] [--seed S] [--size WxH]\n"
+    "         [--condition NAME:SETTING=VALUE,...] [--training-pairs N]\n"
     "                                       the depth-judgement study's stimuli: marker pairs\n"
     "                                       by the paper's criteria, an image per pair and\n"
     "                                       condition, manifest.json\n"

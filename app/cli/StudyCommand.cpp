@@ -14,6 +14,8 @@
 #include "cli/Arguments.h"
 #include "cli/Cli.h"
 #include "cli/GuiApplication.h"
+#include "cli/RenderOptions.h"
+#include "common/SettingsSchema.h"
 #include "vv/core/NumberText.h"
 #include "vv/report/StudyReport.h"
 #include "vv/segmentation/SceneSource.h"
@@ -25,7 +27,8 @@ namespace vv::cli {
 namespace {
 
 constexpr const char* kStudyUsage =
-    "usage: vesselview-cli study make SCENE... -o DIR [--conditions NAME,...] [--pairs N]\n"
+    "usage: vesselview-cli study make SCENE... -o DIR [--conditions NAME,...]\n"
+    "       [--condition NAME:SETTING=VALUE,...] [--pairs N] [--training-pairs N]\n"
     "       [--seed S] [--size WxH] [DICOM options as for render]\n"
     "  The stimuli of a depth-judgement study (the paper's \"Stimuli\"): per scene (a\n"
     "  mesh file or a DICOM series) its marker pairs, on visible vessel surface, their\n"
@@ -36,8 +39,16 @@ constexpr const char* kStudyUsage =
     "                       (conditions, cameras, markers with their pixels and\n"
     "                       depths, the answer key, the criteria' values)\n"
     "  --conditions LIST    of the paper's VSS-CD, VSS-PCD, vessel-CD, vessel-PCD,\n"
-    "                       baseline (default: all five)\n"
+    "                       baseline (default: all five; none for none)\n"
+    "  --condition NAME:SETTING=VALUE,...\n"
+    "                       adds a condition of its own (repeatable): a paper\n"
+    "                       condition's settings (from=NAME, default baseline) with\n"
+    "                       the display options of render, without their dashes\n"
+    "                       (e.g. VSS-iso:from=VSS-CD,isolines=8 or\n"
+    "                       fog:fog-strength=0.6 or lit:light=-30,20)\n"
     "  --pairs N            marker pairs per scene, default 5 (the paper's)\n"
+    "  --training-pairs N   further pairs per scene for the training phase (never\n"
+    "                       in the main block), default 1; 0 for none\n"
     "  --seed S             the same seed makes the same study, default 1\n"
     "  --size WxH           the images' size, default 1280x720\n"
     "\n"
@@ -133,10 +144,66 @@ std::vector<study::StimulusCondition> conditionsNamed(const std::string& list) {
     return chosen;
 }
 
+/// `--condition NAME:SETTING=VALUE,...`: a condition of its own, from the
+/// settings of a paper condition (`from=NAME`, baseline when not given)
+/// with the display settings named by the render command's options
+/// (without their dashes: isolines=8, fog-strength=0.5, light=-30,20).
+study::StimulusCondition customCondition(const std::string& text) {
+    const std::string what = "study make: --condition '" + text + "':";
+    const auto colon = text.find(':');
+    if (colon == std::string::npos || colon == 0 || colon + 1 == text.size()) {
+        throw UsageError(what + " NAME:SETTING=VALUE,... expected (e.g. fog:fog-strength=0.6)");
+    }
+    // Pieces "key=value"; a piece without '=' continues the value before
+    // it (a value with a comma: light=-30,20).
+    std::vector<std::pair<std::string, std::string>> pieces;
+    for (const std::string& piece : splitList(text.substr(colon + 1), "--condition")) {
+        const auto equals = piece.find('=');
+        if (equals == std::string::npos && !pieces.empty()) {
+            pieces.back().second.append(",").append(piece);
+        } else if (equals == std::string::npos || equals == 0) {
+            throw UsageError(
+                std::string(what).append(" '").append(piece).append("' is not SETTING=VALUE"));
+        } else {
+            pieces.emplace_back(piece.substr(0, equals), piece.substr(equals + 1));
+        }
+    }
+    const std::vector<study::StimulusCondition> paper = study::paperConditions();
+    study::StimulusCondition condition{text.substr(0, colon), paper.back().display,
+                                       text.substr(colon + 1)};
+    for (const auto& [key, value] : pieces) {
+        if (key == "from") {
+            condition.display = conditionsNamed(value).at(0).display;
+        }
+    }
+    for (const auto& [key, value] : pieces) {
+        const app::Setting* setting = app::settingForOption("--" + key);
+        if (key == "from") {
+            continue;
+        }
+        if (key == "light") {
+            condition.display.style.light = parseLightAngles(value);
+        } else if (setting == nullptr || setting->field.set == nullptr) {
+            throw UsageError(std::string(what).append(" '").append(key).append(
+                "' is no display setting (the display options of render, without their "
+                "dashes: isolines, fog-strength, vss-lighting, ...)"));
+        } else {
+            try {
+                setting->field.set(condition.display, app::parseSettingText(*setting, value));
+            } catch (const InvalidArgumentError& e) {
+                throw UsageError(
+                    std::string(what).append(" ").append(key).append(" ").append(e.problem()));
+            }
+        }
+    }
+    return condition;
+}
+
 int studyMake(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     std::vector<std::filesystem::path> inputs;
     std::filesystem::path folder;
     std::vector<study::StimulusCondition> conditions = study::paperConditions();
+    std::vector<study::StimulusCondition> added;
     study::StimulusOptions options;
     segmentation::SceneSourceOptions source;
     for (Arguments a("study make", args, 1); a.next();) {
@@ -148,13 +215,23 @@ int studyMake(const std::vector<std::string>& args, std::ostream& out, std::ostr
         if (name == "-o" || name == "--output") {
             folder = a.path();
         } else if (name == "--conditions") {
-            conditions = conditionsNamed(a.value());
+            const std::string list = a.value();
+            conditions =
+                list == "none" ? std::vector<study::StimulusCondition>{} : conditionsNamed(list);
+        } else if (name == "--condition") {
+            added.push_back(customCondition(a.value()));
         } else if (name == "--pairs") {
             const double pairs = parseNumber(a.value(), "--pairs");
             if (!(pairs >= 1.0 && pairs <= 1000.0) || pairs != std::floor(pairs)) {
                 a.fail("--pairs must be a whole number from 1 to 1000");
             }
             options.pairsPerScene = static_cast<std::size_t>(pairs);
+        } else if (name == "--training-pairs") {
+            const double pairs = parseNumber(a.value(), "--training-pairs");
+            if (!(pairs >= 0.0 && pairs <= 1000.0) || pairs != std::floor(pairs)) {
+                a.fail("--training-pairs must be a whole number from 0 to 1000");
+            }
+            options.trainingPairsPerScene = static_cast<std::size_t>(pairs);
         } else if (name == "--seed") {
             const double seed = parseNumber(a.value(), "--seed");
             if (!(seed >= 0.0 && seed <= 9.0e15) || seed != std::floor(seed)) {
@@ -173,6 +250,10 @@ int studyMake(const std::vector<std::string>& args, std::ostream& out, std::ostr
     }
     if (inputs.empty()) {
         throw UsageError("study make needs one or more scenes (mesh files or DICOM series)");
+    }
+    conditions.insert(conditions.end(), added.begin(), added.end());
+    if (conditions.empty()) {
+        throw UsageError("study make needs at least one condition");
     }
     if (folder.empty()) {
         throw UsageError("study make needs the study folder: -o DIR");
@@ -197,8 +278,12 @@ int studyMake(const std::vector<std::string>& args, std::ostream& out, std::ostr
     for (const std::string& note : made.notes) {
         err << "vesselview-cli: note: " << note << "\n";
     }
-    out << made.stimuli.size() << " stimuli (" << scenes.size() << " scene(s) x "
-        << conditions.size() << " condition(s) x their pairs) in " << folder.string() << "\n";
+    const auto training = static_cast<std::size_t>(
+        std::count_if(made.stimuli.begin(), made.stimuli.end(),
+                      [](const study::Stimulus& s) { return s.block == study::Block::Training; }));
+    out << made.stimuli.size() - training << " stimuli and " << training << " training stimuli ("
+        << scenes.size() << " scene(s) x " << conditions.size()
+        << " condition(s) x their pairs) in " << folder.string() << "\n";
     return kOk;
 }
 

@@ -80,8 +80,17 @@ void useEnglishLocale() {
 
 QString installTranslations(QCoreApplication& app, const QString& language) {
     const QLocale locale = language.isEmpty() ? QLocale::system() : QLocale(language);
-    const auto english = [] {
+    const auto english = [&app] {
         useEnglishLocale();
+        // English's own plural forms ("1 scene", "2 scenes" for "%n scene(s)").
+        if (const auto dir = translationsDir()) {
+            auto* plurals = new QTranslator(&app);
+            if (plurals->load(QStringLiteral("vesselview_en"), *dir)) {
+                QCoreApplication::installTranslator(plurals);
+            } else {
+                delete plurals;
+            }
+        }
         return QStringLiteral("en");
     };
     if (locale.language() == QLocale::English || locale.language() == QLocale::C) {

@@ -23,7 +23,8 @@ namespace vv::app {
 /// a system of another language gets useEnglishLocale(), so a text never
 /// mixes English words with, say, German decimal commas. Returns the
 /// language installed ("en" when none fits: English, the source language,
-/// needs no translator). Never throws.
+/// needs only its plural forms, vesselview_en.qm, installed when found).
+/// Never throws.
 QString installTranslations(QCoreApplication& app, const QString& language);
 
 /// Why installTranslations(`language`) shows English although another

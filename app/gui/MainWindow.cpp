@@ -53,6 +53,7 @@
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
 #include "gui/panels/VssPanel.h"
+#include "gui/study/StudyRunDialog.h"
 #include "vv/render/MeshStyle.h"
 
 namespace vv::gui {
@@ -225,6 +226,15 @@ void MainWindow::buildMenus() {
     dicomMenu_ = new DicomMenu(this);  // network preferences, PACS browser
     menuBar()->addMenu(dicomMenu_);
     listener_ = addLocalStudyActions(*this, *dicomMenu_);  // listener, Local Studies, Send
+
+    // The depth-judgement study: its runner (the stimuli come from
+    // `vesselview-cli study make`, the analysis from `study analyse`).
+    QMenu* studyMenu = menuBar()->addMenu(tr("&Study"));
+    studyMenu->addAction(tr("&Run Study…"), this, [this] {
+        auto* dialog = new StudyRunDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
 
     QMenu* help = menuBar()->addMenu(tr("&Help"));
     QAction* keys = help->addAction(tr("&Keyboard Shortcuts"), this, &MainWindow::showShortcuts);

@@ -19,6 +19,7 @@
 
 #include "ClippingCheck.h"
 #include "GuiFixture.h"
+#include "StudyFolder.h"
 #include "UiLanguage.h"
 #include "gui/EngineTexts.h"
 #include "gui/ExportImageDialog.h"
@@ -32,6 +33,7 @@
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
+#include "gui/study/StudyRunDialog.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/dicom/Dicom.h"
 #include "vv/dicom/SeriesWriter.h"
@@ -258,6 +260,23 @@ TEST_P(ClippingTest, MoreDialogsShowEveryTextInFull) {
     expectWhole(query, "query-pacs");
     vv::gui::NetworkPreferencesDialog preferences(window_.get());
     expectWhole(preferences, "network-preferences");
+    // Study > Run Study… (issue 34) with its longest summary: a participant
+    // who answered some of the images.
+    const auto study = std::filesystem::path(VV_TEST_TMP) / "clipping-study" /
+                       (std::string(GetParam().language) + std::to_string(GetParam().width));
+    vv::study::test::writeStudyFolder(study);
+    vv::study::Answer answered;
+    answered.participant = "P07";
+    answered.trial = 1;
+    answered.stimulus = "tree-p1-VSS-CD";
+    answered.scene = "tree";
+    answered.condition = "VSS-CD";
+    vv::study::appendAnswer(study / "results.csv", answered);
+    vv::gui::StudyRunDialog run(window_.get());
+    run.setStudyFolder(QString::fromStdString(study.string()));
+    run.setParticipant(QStringLiteral("P07"));
+    ASSERT_TRUE(run.participantSummary().contains(QStringLiteral("P07")));
+    expectWhole(run, "run-study");
     vv::gui::ExportImageDialog image(*window_->viewer(), window_.get());
     image.sizeChooser()->setCurrentIndex(
         image.sizeChooser()->findData(vv::gui::ExportImageDialog::Uhd4k));

@@ -6,6 +6,7 @@
 // line; bad options exit 2.
 #include <gtest/gtest.h>
 
+#include <QImage>
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
@@ -137,21 +138,34 @@ TEST(StudyCommand, ABadFileExitsThreeNamingItsLine) {
     EXPECT_NE(run.err.find("line 2"), std::string::npos) << run.err;
 }
 
+/// A three-generation demo tree written to `name` in the scratch folder.
+std::filesystem::path smallTree(const std::string& name) {
+    vv::demo::DemoTreeOptions o;
+    o.generations = 3;
+    auto mesh = scratch() / name;
+    vv::meshio::writeVtp(vv::demo::buildVesselSurface(vv::demo::generateVesselTree(o), o), mesh);
+    return mesh;
+}
+
+/// The scratch folder `name`, emptied.
+std::filesystem::path emptied(const std::string& name) {
+    auto folder = scratch() / name;
+    std::filesystem::remove_all(folder);
+    return folder;
+}
+
 // Stimuli from a mesh file: the asked conditions and pairs, a manifest that
 // lists them; bad options exit 2, a missing scene 3.
 TEST(StudyCommand, MakesTheStimuliOfAMeshFile) {
-    vv::demo::DemoTreeOptions o;
-    o.generations = 3;
-    const auto mesh = scratch() / "tree.vtp";
-    vv::meshio::writeVtp(vv::demo::buildVesselSurface(vv::demo::generateVesselTree(o), o), mesh);
-    const auto folder = scratch() / "made";
-    std::filesystem::remove_all(folder);
-    const auto run =
-        runCli({"study", "make", mesh.string(), "-o", folder.string(), "--pairs", "2",
-                "--conditions", "VSS-CD,baseline", "--size", "400x300", "--seed", "9"});
+    const auto mesh = smallTree("tree.vtp");
+    const auto folder = emptied("made");
+    const auto run = runCli({"study", "make", mesh.string(), "-o", folder.string(), "--pairs", "2",
+                             "--conditions", "VSS-CD,baseline", "--size", "400x300", "--seed", "9",
+                             "--training-pairs", "1"});
     ASSERT_EQ(run.code, 0) << run.err;
-    EXPECT_NE(run.out.find("4 stimuli"), std::string::npos) << run.out;
-    for (const char* name : {"tree-p1-VSS-CD.png", "tree-p2-baseline.png"}) {
+    EXPECT_NE(run.out.find("4 stimuli and 2 training stimuli"), std::string::npos) << run.out;
+    for (const char* name :
+         {"tree-p1-VSS-CD.png", "tree-p2-baseline.png", "tree-t1-baseline.png"}) {
         EXPECT_TRUE(std::filesystem::exists(folder / "stimuli" / name)) << name;
     }
     std::ifstream in(folder / "manifest.json");
@@ -159,12 +173,16 @@ TEST(StudyCommand, MakesTheStimuliOfAMeshFile) {
     text << in.rdbuf();
     const QJsonObject manifest =
         QJsonDocument::fromJson(QByteArray::fromStdString(text.str())).object();
-    EXPECT_EQ(manifest["stimuli"].toArray().size(), 4);
+    EXPECT_EQ(manifest["stimuli"].toArray().size(), 6);
     EXPECT_EQ(manifest["seed"].toString(), "9");
     EXPECT_EQ(manifest["width"].toInt(), 400);
 
     EXPECT_EQ(
         runCli({"study", "make", mesh.string(), "-o", folder.string(), "--conditions", "VSS-XX"})
+            .code,
+        2);
+    EXPECT_EQ(
+        runCli({"study", "make", mesh.string(), "-o", folder.string(), "--training-pairs", "-1"})
             .code,
         2);
     EXPECT_EQ(runCli({"study", "make", mesh.string(), "-o", folder.string(), "--pairs", "0"}).code,
@@ -173,6 +191,65 @@ TEST(StudyCommand, MakesTheStimuliOfAMeshFile) {
     EXPECT_EQ(
         runCli({"study", "make", (scratch() / "missing.vtp").string(), "-o", folder.string()}).code,
         3);
+}
+
+// Conditions of one's own: any display setting of the schema, from a paper
+// condition; what they show is in the images and the manifest says how
+// they were given; a setting that is not one, or a bad value, exits 2.
+TEST(StudyCommand, ConditionsFromAnyDisplaySetting) {
+    const auto mesh = smallTree("tree-conditions.vtp");
+    const auto folder = emptied("conditions");
+    const auto run = runCli({"study", "make", mesh.string(), "-o", folder.string(), "--pairs", "1",
+                             "--training-pairs", "0", "--size", "320x240", "--conditions",
+                             "baseline", "--condition", "fog:cue=fog,fog-strength=1", "--condition",
+                             "VSS-iso:from=VSS-CD,isolines=8,light=-30,20"});
+    ASSERT_EQ(run.code, 0) << run.err;
+    std::ifstream in(folder / "manifest.json");
+    std::stringstream text;
+    text << in.rdbuf();
+    const QJsonObject manifest =
+        QJsonDocument::fromJson(QByteArray::fromStdString(text.str())).object();
+    const QJsonArray conditions = manifest["conditions"].toArray();
+    ASSERT_EQ(conditions.size(), 3);
+    EXPECT_EQ(conditions[0].toObject()["name"].toString(), "baseline");
+    const QJsonObject fog = conditions[1].toObject();
+    EXPECT_EQ(fog["name"].toString(), "fog");
+    EXPECT_EQ(fog["settings"].toString(), "cue=fog,fog-strength=1");
+    EXPECT_EQ(fog["display"].toObject()["vessel_cue"].toString(), "fog");
+    EXPECT_DOUBLE_EQ(fog["display"].toObject()["fog_strength"].toDouble(), 1.0);
+    EXPECT_FALSE(fog["display"].toObject()["vss"].toBool());
+    const QJsonObject iso = conditions[2].toObject()["display"].toObject();
+    EXPECT_TRUE(iso["vss"].toBool());
+    EXPECT_EQ(iso["vss_scale"].toString(), "chromadepth");
+    EXPECT_EQ(iso["iso_lines"].toInt(), 8);
+    EXPECT_DOUBLE_EQ(iso["light_azimuth_deg"].toDouble(), -30.0);
+    // The fog condition's image differs from the baseline's: the far vessels
+    // fade toward the background.
+    const QImage plain(
+        QString::fromStdString((folder / "stimuli/tree-conditions-p1-baseline.png").string()));
+    const QImage fogged(
+        QString::fromStdString((folder / "stimuli/tree-conditions-p1-fog.png").string()));
+    ASSERT_FALSE(plain.isNull());
+    ASSERT_EQ(plain.size(), fogged.size());
+    int differing = 0;
+    for (int y = 0; y < plain.height(); ++y) {
+        for (int x = 0; x < plain.width(); ++x) {
+            differing += plain.pixel(x, y) != fogged.pixel(x, y) ? 1 : 0;
+        }
+    }
+    EXPECT_GT(differing, 500);
+
+    for (const char* bad : {"fog", "fog:", ":cue=fog", "fog:frobnicate=1", "fog:isolines=-3",
+                            "fog:from=VSS-XX", "fog:cue"}) {
+        const auto refused =
+            runCli({"study", "make", mesh.string(), "-o", folder.string(), "--condition", bad});
+        EXPECT_EQ(refused.code, 2) << bad;
+        EXPECT_NE(refused.err.find("--condition"), std::string::npos) << refused.err;
+    }
+    EXPECT_EQ(
+        runCli({"study", "make", mesh.string(), "-o", folder.string(), "--conditions", "none"})
+            .code,
+        2);
 }
 
 TEST(StudyCommand, BadOptionsAreUsageErrors) {

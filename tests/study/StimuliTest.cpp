@@ -11,11 +11,13 @@
 #include <QJsonArray>
 #include <QJsonDocument>
 #include <QJsonObject>
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
 #include "GlTestSupport.h"
 #include "vv/demo/DemoTree.h"
+#include "vv/study/Manifest.h"
 #include "vv/study/Stimuli.h"
 
 namespace vv::study {
@@ -49,6 +51,7 @@ class StimuliTest : public ::testing::Test {
         o.width = kWidth;
         o.height = kHeight;
         o.pairsPerScene = 3;
+        o.trainingPairsPerScene = 1;
         o.seed = 5;
         return o;
     }
@@ -85,10 +88,37 @@ TEST_F(StimuliTest, TheMarkersSitWhereTheManifestSaysAndTheKeyFollowsTheDepths) 
     ASSERT_NE(renderer, nullptr);
     const auto dir = folder("main");
     const StudyStimuli made = makeStimuli(*renderer, {tree()}, twoConditions(), options(), dir);
-    ASSERT_EQ(made.stimuli.size(), 6U);
+    ASSERT_EQ(made.stimuli.size(), 8U);  // (3 main + 1 training pair) x 2 conditions
     const QJsonObject manifest = manifestOf(dir);
     const QJsonArray stimuli = manifest["stimuli"].toArray();
-    ASSERT_EQ(stimuli.size(), 6);
+    ASSERT_EQ(stimuli.size(), 8);
+
+    // The runner reads back what was written: blocks, answers, markers.
+    const StudyManifest read = readManifest(dir);
+    ASSERT_EQ(read.stimuli.size(), made.stimuli.size());
+    EXPECT_EQ(read.conditions, (std::vector<std::string>{"VSS-CD", "baseline"}));
+    EXPECT_EQ(read.indicesOf(Block::Training).size(), 2U);
+    for (std::size_t i = 0; i < read.stimuli.size(); ++i) {
+        const Stimulus& m = made.stimuli[i];
+        const ManifestStimulus& r = read.stimuli[i];
+        EXPECT_EQ(r.id, m.id);
+        EXPECT_EQ(r.block, m.block);
+        EXPECT_EQ(r.correctAnswer, m.markers.leftIsCloser ? Side::Left : Side::Right);
+        EXPECT_EQ(r.left.x, m.markers.left.x);
+        EXPECT_EQ(r.right.y, m.markers.right.y);
+        EXPECT_TRUE(std::filesystem::is_regular_file(r.image));
+        if (m.block == Block::Training) {
+            EXPECT_NE(m.id.find("-t1-"), std::string::npos) << m.id;
+            // A training pair is none of the main pairs.
+            for (const Stimulus& other : made.stimuli) {
+                if (other.block == Block::Main) {
+                    EXPECT_FALSE(other.markers.left.x == m.markers.left.x &&
+                                 other.markers.left.y == m.markers.left.y)
+                        << m.id << " repeats " << other.id;
+                }
+            }
+        }
+    }
 
     render::OffscreenOptions view;
     view.width = kWidth;
@@ -140,9 +170,12 @@ TEST_F(StimuliTest, TheConditionsShowWhatTheirNamesSay) {
     const auto dir = folder("conditions");
     const StudyStimuli made = makeStimuli(*renderer, {tree()}, twoConditions(), options(), dir);
     const QImage vss(QString::fromStdString((dir / made.stimuli[0].image).string()));
-    const QImage baseline(QString::fromStdString((dir / made.stimuli[3].image).string()));
+    const auto firstBaseline =
+        std::find_if(made.stimuli.begin(), made.stimuli.end(),
+                     [](const auto& s) { return s.condition == "baseline"; });
+    ASSERT_NE(firstBaseline, made.stimuli.end());
+    const QImage baseline(QString::fromStdString((dir / firstBaseline->image).string()));
     ASSERT_EQ(made.stimuli[0].condition, "VSS-CD");
-    ASSERT_EQ(made.stimuli[3].condition, "baseline");
     // On the background (no vessel) the VSS paints the void; the baseline does not.
     render::OffscreenOptions view;
     view.width = kWidth;

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "vv/core/AtomicFile.h"
 
+#include <fcntl.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -29,6 +30,20 @@ std::string diskFullNote(const fs::path& folder) {
         return {};
     }
     return " (no space left on device: the disk is full)";
+}
+
+/// Asks the kernel to put `path` (a file or a folder) on the disk now:
+/// without it a power cut can leave a renamed file empty or the rename
+/// itself undone. Returns false when it could not.
+bool flushToDisk(const fs::path& path) {
+    // NOLINTNEXTLINE(cppcoreguidelines-pro-type-vararg): POSIX's open(2)
+    const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+    if (fd < 0) {
+        return false;
+    }
+    const bool flushed = ::fsync(fd) == 0;
+    ::close(fd);
+    return flushed;
 }
 
 }  // namespace
@@ -65,11 +80,19 @@ void writeAtomically(const fs::path& target, const std::function<void(const fs::
                       "cannot write: nothing was written" +
                           (full.empty() ? std::string(" (no permission or disk full?)") : full));
     }
+    // The bytes on the disk before the name points at them, and the new
+    // name on the disk after: a power cut leaves the old file or the new.
+    if (!flushToDisk(temporary)) {
+        fs::remove(temporary, ec);
+        throw IoError(target, "cannot write: the file cannot be flushed to the disk");
+    }
     fs::rename(temporary, target, ec);
     if (ec) {
         fs::remove(temporary, ec);
         throw IoError(target, "cannot write: " + ec.message());
     }
+    static_cast<void>(
+        flushToDisk(folder));  // some file systems cannot sync a folder; the rename stands
 }
 
 void writeFileAtomically(const fs::path& target, std::string_view contents) {

@@ -28,8 +28,9 @@ void checkInputs(const std::vector<StimulusScene>& scenes,
     if (o.width < 64 || o.height < 64 || o.width > 8192 || o.height > 8192) {
         throw InvalidArgumentError("a stimulus must be 64 to 8192 pixels wide and high");
     }
-    if (o.pairsPerScene < 1 || o.pairsPerScene > 1000) {
-        throw InvalidArgumentError("1 to 1000 marker pairs per scene");
+    if (o.pairsPerScene < 1 || o.pairsPerScene > 1000 || o.trainingPairsPerScene > 1000) {
+        throw InvalidArgumentError(
+            "1 to 1000 marker pairs per scene, 0 to 1000 training pairs per scene");
     }
     const auto unique = [](const auto& items, const char* what) {
         std::set<std::string> names;
@@ -56,23 +57,17 @@ QJsonObject displayJson(const render::DisplaySettings& d) {
                : s == colormaps::DepthScale::PseudoChromadepth ? "pseudo-chromadepth"
                                                                : "other";
     };
-    const auto cueName = [](render::VesselCue c) {
-        switch (c) {
-            case render::VesselCue::None:
-                return "none";
-            case render::VesselCue::Chromadepth:
-                return "chromadepth";
-            case render::VesselCue::PseudoChromadepth:
-                return "pseudo-chromadepth";
-            default:
-                return "other";
-        }
-    };
-    return {{"vss", d.vss.enabled},
-            {"vss_scale", scaleName(d.vss.scale)},
-            {"iso_lines", d.vss.isoLines},
-            {"vessel_cue", cueName(d.cue.cue)},
-            {"ambient_occlusion", d.ao.enabled}};
+    return {
+        {"vss", d.vss.enabled},
+        {"vss_scale", scaleName(d.vss.scale)},
+        {"iso_lines", d.vss.isoLines},
+        {"vessel_cue", QString::fromUtf8(render::name(d.cue.cue).data(),
+                                         static_cast<qsizetype>(render::name(d.cue.cue).size()))},
+        {"fog_strength", d.cue.fogStrength},
+        {"fresnel_exponent", d.cue.fresnelExponent},
+        {"ambient_occlusion", d.ao.enabled},
+        {"light_azimuth_deg", d.style.light.azimuth},
+        {"light_elevation_deg", d.style.light.elevation}};
 }
 
 QJsonObject cameraJson(const render::Camera& c) {
@@ -105,11 +100,11 @@ std::vector<StimulusCondition> paperConditions() {
     };
     using colormaps::DepthScale;
     using render::VesselCue;
-    return {{"VSS-CD", with(true, DepthScale::Chromadepth, VesselCue::None)},
-            {"VSS-PCD", with(true, DepthScale::PseudoChromadepth, VesselCue::None)},
-            {"vessel-CD", with(false, DepthScale::Chromadepth, VesselCue::Chromadepth)},
-            {"vessel-PCD", with(false, DepthScale::Chromadepth, VesselCue::PseudoChromadepth)},
-            {"baseline", plain}};
+    return {{"VSS-CD", with(true, DepthScale::Chromadepth, VesselCue::None), {}},
+            {"VSS-PCD", with(true, DepthScale::PseudoChromadepth, VesselCue::None), {}},
+            {"vessel-CD", with(false, DepthScale::Chromadepth, VesselCue::Chromadepth), {}},
+            {"vessel-PCD", with(false, DepthScale::Chromadepth, VesselCue::PseudoChromadepth), {}},
+            {"baseline", plain, {}}};
 }
 
 void drawMarker(QImage& image, QPoint centre, int radius) {
@@ -154,8 +149,9 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
         const Image<float> depth = renderer.renderDepth(scene.scene, view);
         // Each scene its own stream of pairs (the seed plus its index): its
         // pairs do not depend on what the other scenes show.
-        const PairSet pairs = pickMarkerPairs(depth.view(), options.pairsPerScene,
-                                              options.seed + 7919 * s, options.criteria);
+        const PairSet pairs =
+            pickMarkerPairs(depth.view(), options.pairsPerScene + options.trainingPairsPerScene,
+                            options.seed + 7919 * s, options.criteria);
         for (const std::string& note : pairs.notes) {
             out.notes.push_back(scene.name + ": " + note);
         }
@@ -178,12 +174,16 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
             const QImage plain = renderer.render(scene.scene, view);
             for (std::size_t p = 0; p < pairs.pairs.size(); ++p) {
                 const MarkerPair& pair = pairs.pairs[p];
-                Stimulus stimulus{scene.name + "-p" + std::to_string(p + 1) + "-" + condition.name,
+                const bool training = p >= options.pairsPerScene;
+                const std::size_t number = training ? p - options.pairsPerScene + 1 : p + 1;
+                Stimulus stimulus{scene.name + (training ? "-t" : "-p") + std::to_string(number) +
+                                      "-" + condition.name,
                                   {},
                                   scene.name,
                                   condition.name,
-                                  p,
-                                  pair};
+                                  number - 1,
+                                  pair,
+                                  training ? Block::Training : Block::Main};
                 stimulus.image = "stimuli/" + stimulus.id + ".png";
                 QImage image = plain.convertToFormat(QImage::Format_RGB32);
                 drawMarker(image, {pair.left.x, pair.left.y}, options.criteria.markerRadius);
@@ -202,7 +202,8 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
                                 {"image", qs(stimulus.image)},
                                 {"scene", qs(scene.name)},
                                 {"condition", qs(condition.name)},
-                                {"pair", static_cast<int>(p + 1)},
+                                {"pair", static_cast<int>(number)},
+                                {"block", training ? "training" : "main"},
                                 {"left", markerJson(pair.left)},
                                 {"right", markerJson(pair.right)},
                                 {"correct_answer", pair.leftIsCloser ? "left" : "right"},
@@ -217,8 +218,11 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
     }
     QJsonArray conditionArray;
     for (const StimulusCondition& c : conditions) {
-        conditionArray.append(
-            QJsonObject{{"name", qs(c.name)}, {"display", displayJson(c.display)}});
+        QJsonObject condition{{"name", qs(c.name)}, {"display", displayJson(c.display)}};
+        if (!c.settings.empty()) {
+            condition["settings"] = qs(c.settings);
+        }
+        conditionArray.append(condition);
     }
     const QJsonObject manifest{
         {"format", "vesselview-study-1"},
@@ -226,6 +230,7 @@ StudyStimuli makeStimuli(render::OffscreenRenderer& renderer,
         {"width", options.width},
         {"height", options.height},
         {"pairs_per_scene", static_cast<int>(options.pairsPerScene)},
+        {"training_pairs_per_scene", static_cast<int>(options.trainingPairsPerScene)},
         {"criteria",
          QJsonObject{{"min_depth_difference", options.criteria.minDepthDifference},
                      {"min_horizontal_separation", options.criteria.minHorizontalSeparation},

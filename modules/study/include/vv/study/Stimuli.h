@@ -17,6 +17,7 @@
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/scene/Mesh.h"
 #include "vv/study/MarkerPairs.h"
+#include "vv/study/Results.h"
 
 namespace vv::study {
 
@@ -24,6 +25,9 @@ namespace vv::study {
 struct StimulusCondition {
     std::string name;
     render::DisplaySettings display;
+    /// How the settings were given (`study make --condition`'s text), for
+    /// the manifest; empty for the paper's conditions.
+    std::string settings;
 };
 
 /// The paper's five conditions: VSS-CD and VSS-PCD (the VSS in chromadepth /
@@ -43,18 +47,22 @@ struct StimulusOptions {
     int width = 1280;
     int height = 720;
     std::size_t pairsPerScene = 5;  ///< the paper: 5 pairs per model
+    /// Further pairs per scene for the training phase (never shown in the
+    /// main block); 0 for none.
+    std::size_t trainingPairsPerScene = 1;
     std::uint64_t seed = 1;
     PairCriteria criteria;
 };
 
 /// One image of the study.
 struct Stimulus {
-    std::string id;     ///< "<scene>-p<pair>-<condition>"
+    std::string id;     ///< "<scene>-p<pair>-<condition>" ("-t<pair>-" for training)
     std::string image;  ///< its file, relative to the study folder
     std::string scene;
     std::string condition;
-    std::size_t pair = 0;  ///< the pair's index within its scene
+    std::size_t pair = 0;  ///< the pair's index within its scene and block
     MarkerPair markers;
+    Block block = Block::Main;
 };
 
 struct StudyStimuli {
@@ -73,6 +81,9 @@ void drawMarker(QImage& image, QPoint centre, int radius);
 /// stimulus with its markers' pixels and depths, the answer and the
 /// criteria' values), every file written atomically. Every condition of a
 /// scene is rendered from the same camera (the scene's home view fitted).
+/// A scene's training pairs are picked after its main pairs, from the same
+/// image, so that they never repeat a main pair; a scene short of pairs
+/// gives its main block what it has first.
 /// Progress per image; a stop request throws CancelledError. Throws
 /// InvalidArgumentError for no scenes, no conditions, duplicate names or an
 /// image size out of range, StudyError when a scene gives no pair, IoError
