@@ -1420,6 +1420,10 @@ Ersetzen?</translation>
         <source>&amp;Run Study…</source>
         <translation>Studie &amp;durchführen…</translation>
     </message>
+    <message>
+        <source>&amp;Analyse Results…</source>
+        <translation>Ergebnisse &amp;auswerten…</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -2744,6 +2748,113 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
     </message>
 </context>
 <context>
+    <name>vv::gui::StudyAnalysisDialog</name>
+    <message>
+        <source>&amp;Analyse</source>
+        <translation>&amp;Auswerten</translation>
+    </message>
+    <message>
+        <source>&amp;Open the PDF</source>
+        <translation>PDF ö&amp;ffnen</translation>
+    </message>
+    <message>
+        <source>Analyse Depth-Judgement Study</source>
+        <translation>Tiefenurteil-Studie auswerten</translation>
+    </message>
+    <message>
+        <source>A&amp;dd…</source>
+        <translation>&amp;Hinzufügen…</translation>
+    </message>
+    <message>
+        <source>Re&amp;move</source>
+        <translation>&amp;Entfernen</translation>
+    </message>
+    <message>
+        <source>Results &amp;files:</source>
+        <translation>Ergebnis&amp;dateien:</translation>
+    </message>
+    <message>
+        <source>Results files of the study</source>
+        <translation>Ergebnisdateien der Studie</translation>
+    </message>
+    <message>
+        <source>Results (*.csv)</source>
+        <translation>Ergebnisse (*.csv)</translation>
+    </message>
+    <message>
+        <source>Bonferroni</source>
+        <translation>Bonferroni</translation>
+    </message>
+    <message>
+        <source>Holm</source>
+        <translation>Holm</translation>
+    </message>
+    <message>
+        <source>Post-hoc &amp;correction:</source>
+        <translation>Post-hoc-&amp;Korrektur:</translation>
+    </message>
+    <message>
+        <source>Significance &amp;level α:</source>
+        <translation>Signifikanz&amp;niveau α:</translation>
+    </message>
+    <message>
+        <source>A4</source>
+        <translation>A4</translation>
+    </message>
+    <message>
+        <source>Letter</source>
+        <translation>Letter</translation>
+    </message>
+    <message>
+        <source>&amp;Paper:</source>
+        <translation>&amp;Papier:</translation>
+    </message>
+    <message>
+        <source>PDF f&amp;ile:</source>
+        <translation>PDF-Da&amp;tei:</translation>
+    </message>
+    <message>
+        <source>The study&apos;s PDF</source>
+        <translation>PDF der Studie</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf)</source>
+        <translation>PDF (*.pdf)</translation>
+    </message>
+    <message>
+        <source>none</source>
+        <translation>keiner</translation>
+    </message>
+    <message>
+        <source>Browse…</source>
+        <translation>Durchsuchen…</translation>
+    </message>
+    <message>
+        <source>Folder for the tables</source>
+        <translation>Ordner für die Tabellen</translation>
+    </message>
+    <message>
+        <source>&amp;Tables (CSV) in:</source>
+        <translation>Tabellen (CSV) &amp;in:</translation>
+    </message>
+    <message>
+        <source>Add the study&apos;s results files.</source>
+        <translation>Fügen Sie die Ergebnisdateien der Studie hinzu.</translation>
+    </message>
+    <message>
+        <source>Give the PDF a file name ending in .pdf.</source>
+        <translation>Geben Sie dem PDF einen Dateinamen, der auf .pdf endet.</translation>
+    </message>
+    <message>
+        <source>Analysing…</source>
+        <translation>Wird ausgewertet…</translation>
+    </message>
+    <message>
+        <source>Written: %1</source>
+        <translation>Geschrieben: %1</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::StudyDate</name>
     <message>
         <source>yyyy-MM-dd</source>
@@ -2754,6 +2865,21 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
         <source>YYYY-MM-DD</source>
         <extracomment>How a date is typed, in the letters of the language: the date format of dates on screen (&quot;yyyy-MM-dd&quot; above) with Y = year, M = month, D = day; TT.MM.JJJJ in German.</extracomment>
         <translation>TT.MM.JJJJ</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::StudyProblem</name>
+    <message>
+        <source>Details (in English): %1</source>
+        <translation>Details (auf Englisch): %1</translation>
+    </message>
+    <message>
+        <source>The study&apos;s answers cannot be analysed as they are.</source>
+        <translation>Die Antworten der Studie können so nicht ausgewertet werden.</translation>
+    </message>
+    <message>
+        <source>%1 does not hold what the study needs.</source>
+        <translation>%1 enthält nicht, was die Studie braucht.</translation>
     </message>
 </context>
 <context>
@@ -2877,12 +3003,6 @@ Klick: diesen Punkt in allen Ansichten zeigen</translation>
         <translation>Das Bild %1 kann nicht gelesen werden. Der Durchgang endet; die bisherigen Antworten sind gespeichert.</translation>
     </message>
     <message>
-        <source>The answer cannot be saved: %1
-The run stops; the answers saved before stay in the file.</source>
-        <translation>Die Antwort kann nicht gespeichert werden: %1
-Der Durchgang endet; die zuvor gespeicherten Antworten bleiben in der Datei.</translation>
-    </message>
-    <message>
         <source>Stop the run? The answers given so far are saved; the same participant id goes on from here.</source>
         <translation>Den Durchgang beenden? Die bisherigen Antworten sind gespeichert; mit derselben Teilnehmerkennung geht es hier weiter.</translation>
     </message>
@@ -2965,6 +3085,10 @@ Vor jedem Bild läuft ein Countdown; zwischen den Bildern wartet dieser graue Bi
     <message>
         <source>The study is complete and your answers are saved. The person running the study closes this screen with Escape.</source>
         <translation>Die Studie ist abgeschlossen, Ihre Antworten sind gespeichert. Die Studienleitung schließt diesen Bildschirm mit Escape.</translation>
+    </message>
+    <message>
+        <source>The answer cannot be saved; the run stops, and the answers saved before stay in the file.</source>
+        <translation>Die Antwort kann nicht gespeichert werden; der Durchgang endet, die zuvor gespeicherten Antworten bleiben in der Datei.</translation>
     </message>
 </context>
 <context>
@@ -4596,6 +4720,14 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Depth-judgement study</source>
         <translation>Studie zur Tiefenwahrnehmung</translation>
+    </message>
+    <message>
+        <source>Pairs that differ significantly: %1</source>
+        <translation>Signifikant verschiedene Paare: %1</translation>
+    </message>
+    <message>
+        <source>No pair of conditions differs significantly.</source>
+        <translation>Kein Paar von Bedingungen unterscheidet sich signifikant.</translation>
     </message>
 </context>
 </TS>

@@ -53,6 +53,7 @@
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
 #include "gui/panels/VssPanel.h"
+#include "gui/study/StudyAnalysisDialog.h"
 #include "gui/study/StudyRunDialog.h"
 #include "vv/render/MeshStyle.h"
 
@@ -228,10 +229,15 @@ void MainWindow::buildMenus() {
     listener_ = addLocalStudyActions(*this, *dicomMenu_);  // listener, Local Studies, Send
 
     // The depth-judgement study: its runner (the stimuli come from
-    // `vesselview-cli study make`, the analysis from `study analyse`).
+    // `vesselview-cli study make`; the analysis is `study analyse`'s).
     QMenu* studyMenu = menuBar()->addMenu(tr("&Study"));
     studyMenu->addAction(tr("&Run Study…"), this, [this] {
         auto* dialog = new StudyRunDialog(this);
+        dialog->setAttribute(Qt::WA_DeleteOnClose);
+        dialog->open();
+    });
+    studyMenu->addAction(tr("&Analyse Results…"), this, [this] {
+        auto* dialog = new StudyAnalysisDialog(this);
         dialog->setAttribute(Qt::WA_DeleteOnClose);
         dialog->open();
     });

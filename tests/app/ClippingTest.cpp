@@ -33,6 +33,7 @@
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
+#include "gui/study/StudyAnalysisDialog.h"
 #include "gui/study/StudyRunDialog.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/dicom/Dicom.h"
@@ -277,6 +278,17 @@ TEST_P(ClippingTest, MoreDialogsShowEveryTextInFull) {
     run.setParticipant(QStringLiteral("P07"));
     ASSERT_TRUE(run.participantSummary().contains(QStringLiteral("P07")));
     expectWhole(run, "run-study");
+    // Study > Analyse Results… with a results file and its longest outcome:
+    // an error naming the file and its line.
+    vv::gui::StudyAnalysisDialog analysis(window_.get());
+    analysis.addResultsFile(QString::fromStdString((study / "results.csv").string()));
+    analysis.setPdfPath(QString::fromStdString((study / "study.pdf").string()));
+    bool analysed = false;
+    QObject::connect(&analysis, &vv::gui::StudyAnalysisDialog::finished,
+                     [&analysed] { analysed = true; });
+    ASSERT_TRUE(analysis.analyse());
+    ASSERT_TRUE(waitUntil([&] { return analysed; }, 60000));
+    expectWhole(analysis, "analyse-study");
     vv::gui::ExportImageDialog image(*window_->viewer(), window_.get());
     image.sizeChooser()->setCurrentIndex(
         image.sizeChooser()->findData(vv::gui::ExportImageDialog::Uhd4k));

@@ -19,6 +19,7 @@
 #include <string>
 
 #include "CliRun.h"
+#include "SimulatedResults.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/meshio/MeshWriter.h"
 #include "vv/study/Results.h"
@@ -35,42 +36,10 @@ std::filesystem::path scratch() {
     return dir;
 }
 
-/// Participants `first`..`last` (P<n>): 20 answers in each of three
-/// conditions, accurate 90 %, 90 %, 60 %; "guesser" guesses.
+/// Simulated participants `first`..`last` (and a guesser) in `name`.
 std::filesystem::path writeResults(const std::string& name, int first, int last, bool withGuesser) {
     auto file = scratch() / name;
-    std::filesystem::remove(file);
-    std::mt19937 random(static_cast<std::uint32_t>(first));
-    std::uniform_real_distribution<double> uniform(0.0, 1.0);
-    const std::vector<std::string> conditions{"VSS-CD", "vessel-CD", "baseline"};
-    const std::vector<double> accuracy{0.9, 0.9, 0.6};
-    std::vector<std::string> ids;
-    for (int p = first; p <= last; ++p) {
-        ids.push_back("P" + std::to_string(p));
-    }
-    if (withGuesser) {
-        ids.emplace_back("guesser");
-    }
-    for (const std::string& id : ids) {
-        int trial = 0;
-        for (std::size_t c = 0; c < conditions.size(); ++c) {
-            for (int i = 0; i < 20; ++i) {
-                Answer a;
-                a.participant = id;
-                a.trial = ++trial;
-                a.stimulus = conditions[c] + "/" + std::to_string(i);
-                a.scene = "demo";
-                a.condition = conditions[c];
-                a.correctAnswer = i % 2 == 0 ? Side::Left : Side::Right;
-                const double p = id == "guesser" ? 0.5 : accuracy[c];
-                a.answer = uniform(random) < p
-                               ? a.correctAnswer
-                               : (a.correctAnswer == Side::Left ? Side::Right : Side::Left);
-                a.responseMs = 1000.0 + 500.0 * uniform(random);
-                vv::study::appendAnswer(file, a);
-            }
-        }
-    }
+    vv::study::test::writeSimulatedResults(file, first, last, withGuesser);
     return file;
 }
 

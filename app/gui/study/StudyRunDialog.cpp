@@ -8,13 +8,13 @@
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
-#include <QMessageBox>
 #include <QPushButton>
 #include <QScreen>
 #include <QSpinBox>
 #include <set>
 
 #include "gui/PathField.h"
+#include "gui/study/StudyProblem.h"
 #include "gui/study/StudyRunnerWidget.h"
 #include "vv/study/RunPlan.h"
 #include "vv/study/StudyRun.h"
@@ -136,7 +136,7 @@ void StudyRunDialog::folderChanged() {
                     .arg(tr("%n scene(s)", nullptr, static_cast<int>(scenes.size())))
                     .arg(count(manifest_->indicesOf(study::Block::Training).size())));
         } catch (const Error& e) {
-            studySummary_->setText(QString::fromStdString(e.what()));
+            studySummary_->setText(studyProblemText(e));
         }
     }
     if (manifest_ && (results_->text().isEmpty() || results_->text() == defaultResults_)) {
@@ -156,7 +156,7 @@ void StudyRunDialog::resultsChanged() {
             answers_ = study::readResults(file);
         } catch (const Error& e) {
             resultsReadable_ = false;
-            participantSummary_->setText(QString::fromStdString(e.what()));
+            participantSummary_->setText(studyProblemText(e));
         }
     }
     participantChanged();
@@ -241,7 +241,7 @@ StudyRunnerWidget* StudyRunDialog::start() {
         run = std::make_unique<study::StudyRun>(
             *manifest_, participant_->text().trimmed().toStdString(), pathOf(results_), options);
     } catch (const Error& e) {
-        QMessageBox::warning(this, windowTitle(), QString::fromStdString(e.what()));
+        showProblem(this, QStringLiteral("runProblem"), windowTitle(), studyProblem(e));
         return nullptr;
     }
     auto* runner = new StudyRunnerWidget(std::move(run), countdown_->value() * 1000);

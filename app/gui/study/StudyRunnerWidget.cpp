@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 
+#include "gui/EngineTexts.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
@@ -85,10 +86,12 @@ void StudyRunnerWidget::answer(study::Side side, double ms) {
     try {
         given = run_->answer(side, ms);
     } catch (const Error& e) {
+        // The runner is full screen: the message on it, then the run closes.
         QMessageBox::critical(this, tr("Depth-judgement study"),
-                              tr("The answer cannot be saved: %1\nThe run stops; the answers "
-                                 "saved before stay in the file.")
-                                  .arg(QString::fromStdString(e.what())));
+                              tr("The answer cannot be saved; the run stops, and the answers "
+                                 "saved before stay in the file.") +
+                                  QStringLiteral("\n\n") +
+                                  describeProblem(e, FileAccess::Writing).line());
         close();
         return;
     }

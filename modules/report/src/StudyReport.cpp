@@ -136,12 +136,15 @@ pdf::Table comparisonTable(const Flow& flow, const study::StudyAnalysis& s,
     return {flow, headers, rows, note, QString()};
 }
 
-void measureSection(Flow& flow, const study::StudyAnalysis& s, const study::MeasureResult& m) {
+QString friedmanText(const study::MeasureResult& m) {
     const study::FriedmanResult& f = m.friedman;
-    const QString friedman =
-        ReportText::tr("Friedman's test: \u03c7\u00b2(%1) = %2, p %3; Kendall's W = %4.")
-            .arg(integer(f.degreesOfFreedom), QLocale().toString(f.chiSquared, 'f', 2),
-                 pText(f.pValue), QLocale().toString(f.kendallW, 'f', 2));
+    return ReportText::tr("Friedman's test: \u03c7\u00b2(%1) = %2, p %3; Kendall's W = %4.")
+        .arg(integer(f.degreesOfFreedom), QLocale().toString(f.chiSquared, 'f', 2), pText(f.pValue),
+             QLocale().toString(f.kendallW, 'f', 2));
+}
+
+void measureSection(Flow& flow, const study::StudyAnalysis& s, const study::MeasureResult& m) {
+    const QString friedman = friedmanText(m);
     flow.heading(measureTitle(m), mm(kChartHeightMm + 2.0) +
                                       flow.textHeight(friedman, font(9.5), flow.width()) + mm(2.0));
     chart(flow, s, m);
@@ -222,6 +225,34 @@ void body(Flow& flow, const study::StudyAnalysis& s, const StudyReportContent& c
 }
 
 }  // namespace
+
+QStringList studySummaryLines(const study::StudyAnalysis& s) {
+    QStringList lines;
+    lines << ReportText::tr("Participants") + QStringLiteral(": ") +
+                 integer(static_cast<long long>(s.participants.size())) + QStringLiteral(", ") +
+                 ReportText::tr("Included") + QStringLiteral(": ") +
+                 integer(static_cast<long long>(s.included));
+    for (const study::ParticipantResult& p : s.participants) {
+        if (p.excluded) {
+            lines << ReportText::tr("Excluded \u2014 %1").arg(exclusionText(p));
+        }
+    }
+    for (const study::MeasureResult* m : {&s.accuracy, &s.responseTime}) {
+        lines << measureTitle(*m) + QStringLiteral(": ") + friedmanText(*m);
+        QStringList differing;
+        for (const study::PairComparison& pair : m->postHoc.pairs) {
+            if (pair.significant) {
+                differing << qs(s.conditions[pair.first]) + QStringLiteral(" \u2013 ") +
+                                 qs(s.conditions[pair.second]);
+            }
+        }
+        lines << (differing.isEmpty()
+                      ? ReportText::tr("No pair of conditions differs significantly.")
+                      : ReportText::tr("Pairs that differ significantly: %1")
+                            .arg(differing.join(QStringLiteral(", "))));
+    }
+    return lines;
+}
 
 QByteArray renderStudyPdf(const study::StudyAnalysis& analysis, const StudyReportContent& content,
                           PaperSize paper) {

@@ -3,6 +3,7 @@
 
 #include <QByteArray>
 #include <QDateTime>
+#include <QStringList>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -27,6 +28,12 @@ struct StudyReportContent {
 /// table. In the installed translation (the default QLocale's numbers).
 [[nodiscard]] QByteArray renderStudyPdf(const study::StudyAnalysis& analysis,
                                         const StudyReportContent& content, PaperSize paper);
+
+/// The analysis in a few lines, worded as the PDF words it (the installed
+/// translation, the default QLocale's numbers): the participants and how
+/// many are included, each exclusion with its reason, and per measure
+/// Friedman's test and the pairs of conditions that differ significantly.
+[[nodiscard]] QStringList studySummaryLines(const study::StudyAnalysis& analysis);
 
 /// renderStudyPdf() written atomically to `path`. Throws IoError.
 void writeStudyPdf(const std::filesystem::path& path, const study::StudyAnalysis& analysis,
