@@ -8,6 +8,9 @@
 // about the nominal rate; conditions that do are found.
 #include <gtest/gtest.h>
 
+#include <boost/math/distributions/chi_squared.hpp>
+#include <boost/math/distributions/non_central_chi_squared.hpp>
+#include <boost/math/distributions/normal.hpp>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -288,6 +291,44 @@ TEST(SimulatedStudies, IdenticalConditionsAreRejectedAtTheNominalRate) {
 // participants, 5 conditions) is found in nearly every study.
 TEST(SimulatedStudies, ARealEffectIsFound) {
     EXPECT_GT(rejectionRate(500, 20, 5, 0.5, 12), 0.95);
+}
+
+/// The power of Friedman's test at 5 % that the design predicts (the
+/// large-sample approximation: the rank sums' noncentral chi-squared). A
+/// condition's expected rank under a shift `effect` per condition step with
+/// unit normal noise is 1 + sum over the others of Phi((d_j - d_i) / sqrt 2);
+/// lambda = 12 n / (k (k + 1)) * sum_j (E[R_j] - (k + 1) / 2)^2.
+double predictedPower(int participants, int conditions, double effect) {
+    const boost::math::normal unit;
+    double spread = 0.0;
+    for (int j = 0; j < conditions; ++j) {
+        double rank = 1.0;
+        for (int i = 0; i < conditions; ++i) {
+            if (i != j) {
+                rank += boost::math::cdf(unit, effect * (j - i) / std::sqrt(2.0));
+            }
+        }
+        spread += std::pow(rank - (conditions + 1) / 2.0, 2.0);
+    }
+    const double lambda = 12.0 * participants / (conditions * (conditions + 1.0)) * spread;
+    const double df = conditions - 1.0;
+    const double critical = boost::math::quantile(boost::math::chi_squared(df), 0.95);
+    return boost::math::cdf(
+        boost::math::complement(boost::math::non_central_chi_squared(df, lambda), critical));
+}
+
+// Participants whose values depend on the condition by a known amount are
+// detected at the power the design predicts: a small effect (0.2 SD per
+// step, 20 participants, 5 conditions; predicted power 0.469, measured
+// 0.448 with this seed), 1000 studies (binomial standard error 1.6 %).
+TEST(SimulatedStudies, AKnownEffectIsDetectedAtThePredictedPower) {
+    const double predicted = predictedPower(20, 5, 0.2);
+    ASSERT_GT(predicted, 0.3) << predicted;
+    ASSERT_LT(predicted, 0.9);
+    const double measured = rejectionRate(1000, 20, 5, 0.2, 13);
+    EXPECT_NEAR(measured, predicted, 0.07) << "predicted " << predicted;
+    RecordProperty("predicted", std::to_string(predicted));
+    RecordProperty("measured", std::to_string(measured));
 }
 
 }  // namespace
