@@ -17,6 +17,7 @@
 
 #include "PdfFlow.h"
 #include "ReportTestUtil.h"
+#include "SimulatedResults.h"
 #include "StudyCharts.h"
 #include "vv/report/StudyReport.h"
 #include "vv/study/Analysis.h"
@@ -202,9 +203,9 @@ TEST_F(StudyReportTest, ThePdfInBothLanguagesKeepsItsMarginsAndItsNumbers) {
             bool sideBySide = false;
             for (const test::PdfWord& a : words) {
                 for (const test::PdfWord& b : words) {
-                    sideBySide = sideBySide || (a.text == low && b.text == high &&
-                                                a.page == b.page &&
-                                                std::abs(a.top - b.top) < 1.0 && b.left > a.left);
+                    sideBySide =
+                        sideBySide || (a.text == low && b.text == high && a.page == b.page &&
+                                       std::abs(a.top - b.top) < 1.0 && b.left > a.left);
                 }
             }
             EXPECT_TRUE(sideBySide) << language << ": " << low << " - " << high;
@@ -218,6 +219,27 @@ TEST_F(StudyReportTest, ThePdfInBothLanguagesKeepsItsMarginsAndItsNumbers) {
         }
         QCoreApplication::removeTranslator(&translator);
     }
+}
+
+// A table kept whole (it fits on a page) takes its heading along: 13
+// participants in 3 conditions put the participants' table on a new page,
+// where its heading was left behind on the page before.
+TEST_F(StudyReportTest, AHeadingStaysWithItsTable) {
+    const auto dir = test::testDir("study-heading");
+    study::test::writeSimulatedResults(dir / "results.csv", 1, 12, true);
+    const study::StudyAnalysis analysis =
+        study::analyseStudy(study::readResults(dir / "results.csv"));
+    const auto pdf = dir / "study.pdf";
+    writeStudyPdf(pdf, analysis, {}, PaperSize::A4);
+    const std::vector<test::PdfWord> words = test::pdfWords(pdf);
+    const auto heading =
+        std::find_if(words.begin(), words.end(), [](const auto& w) { return w.text == "block)"; });
+    const auto lastRow = std::find_if(words.rbegin(), words.rend(),
+                                      [](const auto& w) { return w.text == "guesser"; });
+    ASSERT_NE(heading, words.end());
+    ASSERT_NE(lastRow, words.rend());
+    EXPECT_EQ(heading->page, lastRow->page);
+    EXPECT_GT(lastRow->top, heading->top);
 }
 
 }  // namespace

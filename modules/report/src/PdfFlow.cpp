@@ -208,7 +208,8 @@ Table::Table(const Flow& flow, QStringList headers, std::vector<QStringList> row
     : headers_(std::move(headers)),
       rows_(std::move(rows)),
       note_(std::move(note)),
-      empty_(std::move(emptyMessage)) {
+      empty_(std::move(emptyMessage)),
+      pageHeight_(flow.pageHeight()) {
     const auto columns = static_cast<std::size_t>(headers_.size());
     const double numeric = mm(std::min(24.0, 110.0 / static_cast<double>(columns - 1)));
     widths_.assign(columns, numeric);
@@ -249,6 +250,13 @@ double Table::height() const {
         rows += h;
     }
     return headHeight_ + rows + mm(1.5) + noteHeight_;
+}
+
+double Table::keepHeight() const {
+    if (height() <= pageHeight_) {
+        return height();
+    }
+    return headHeight_ + (rowHeights_.empty() ? rowHeight_ : rowHeights_.front());
 }
 
 void Table::draw(Flow& flow) const {

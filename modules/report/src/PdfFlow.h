@@ -120,12 +120,11 @@ using Fields = std::vector<std::pair<QString, QString>>;
 void fieldGrid(Flow& flow, const Fields& fields, int columns);
 
 /// A table over pages: a header row (muted, repeated when the table goes on
-/// to a new page), rows in zebra stripes (each as tall as its tallest cell), a rule and a note below; on one
-/// page whenever it fits on one, its last row kept with the note. The first
-/// column is left-aligned and takes what the others leave; every other
-/// column is right-aligned and as wide as its header's longest word and its
-/// widest value need (no word is ever cut), at least its share of 110 mm
-/// (24 mm at most).
+/// to a new page), rows in zebra stripes (each as tall as its tallest cell), a rule and a note
+/// below; on one page whenever it fits on one, its last row kept with the note. The first column is
+/// left-aligned and takes what the others leave; every other column is right-aligned and as wide as
+/// its header's longest word and its widest value need (no word is ever cut), at least its share of
+/// 110 mm (24 mm at most).
 class Table {
   public:
     /// `emptyMessage` is printed in place of the rows when there are none.
@@ -134,6 +133,11 @@ class Table {
 
     /// The height of the whole table with its note.
     [[nodiscard]] double height() const;
+    /// What a heading right above the table must keep with it (its `keep`):
+    /// the whole table when draw() keeps it whole (it fits on a page), else
+    /// the header and the first row — so the heading never stays behind on
+    /// a page the table leaves.
+    [[nodiscard]] double keepHeight() const;
     void draw(Flow& flow) const;
 
   private:
@@ -151,9 +155,10 @@ class Table {
     QFont noteFont_ = font(7.5, false, true);
     double pad_ = mm(1.6);
     double headHeight_ = 0.0;
-    double rowHeight_ = 0.0;         ///< of one line of cells
+    double rowHeight_ = 0.0;          ///< of one line of cells
     std::vector<double> rowHeights_;  ///< each row's, its tallest cell's
     double noteHeight_ = 0.0;
+    double pageHeight_ = 0.0;
 };
 
 }  // namespace vv::report::pdf

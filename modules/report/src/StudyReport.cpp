@@ -219,8 +219,7 @@ void body(Flow& flow, const study::StudyAnalysis& s, const StudyReportContent& c
     measureSection(flow, s, s.accuracy);
     measureSection(flow, s, s.responseTime);
     const pdf::Table participants = participantTable(flow, s);
-    flow.heading(ReportText::tr("Participants' answers (main block)"),
-                 std::min(participants.height(), mm(30.0)));
+    flow.heading(ReportText::tr("Participants' answers (main block)"), participants.keepHeight());
     participants.draw(flow);
 }
 
