@@ -128,9 +128,10 @@ class StudyRunnerGui : public ::testing::Test {
 /// at its own size in the middle of the screen).
 QColor shownAt(StudyRunnerWidget& runner, const study::MarkerPixel& pixel, QSize image) {
     const QImage frame = runner.grabFramebuffer();
+    // One image pixel on one device pixel, the image in the middle.
     const double ratio = runner.devicePixelRatioF();
-    const int x = static_cast<int>(((runner.width() - image.width()) / 2.0 + pixel.x) * ratio);
-    const int y = static_cast<int>(((runner.height() - image.height()) / 2.0 + pixel.y) * ratio);
+    const int x = static_cast<int>((runner.width() * ratio - image.width()) / 2.0 + pixel.x);
+    const int y = static_cast<int>((runner.height() * ratio - image.height()) / 2.0 + pixel.y);
     return frame.pixelColor(x, y);
 }
 

@@ -232,11 +232,14 @@ void StudyRunnerWidget::paintGL() {
     painter.setRenderHint(QPainter::SmoothPixmapTransform);
     const study::RunScreen screen = run_->screen();
     if (screen == study::RunScreen::Stimulus && !image_.isNull()) {
-        // The render's own background around the image; never enlarged,
-        // made smaller (keeping its shape) only when the screen is smaller.
+        // The render's own background around the image; one image pixel on
+        // one screen pixel (on a high-DPI screen too), made smaller (keeping
+        // its shape) only when the screen is smaller.
         painter.fillRect(rect(), image_.pixelColor(0, 0));
-        const double scale = std::min({1.0, static_cast<double>(width()) / image_.width(),
-                                       static_cast<double>(height()) / image_.height()});
+        const double ratio = devicePixelRatioF();
+        const double scale =
+            std::min({1.0 / ratio, static_cast<double>(width()) / image_.width(),
+                      static_cast<double>(height()) / image_.height()});
         const QSizeF size(image_.width() * scale, image_.height() * scale);
         const QRectF target(QPointF((width() - size.width()) / 2, (height() - size.height()) / 2),
                             size);
