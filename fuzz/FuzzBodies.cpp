@@ -63,8 +63,8 @@ Outcome run(const std::filesystem::path& file, Load&& load) {
 }  // namespace
 
 const std::vector<std::string>& targetNames() {
-    static const std::vector<std::string> names{"dicom", "stl", "obj",     "ply",     "vtp",
-                                                "vtk",   "pfm", "session", "analysis"};
+    static const std::vector<std::string> names{"dicom", "stl", "obj",     "ply",      "vtp",
+                                                "vtk",   "pfm", "session", "analysis", "study"};
     return names;
 }
 

@@ -35,7 +35,7 @@ struct Outcome {
 };
 
 /// The fuzz targets by name: dicom, stl, obj, ply, vtp, vtk, pfm, session,
-/// analysis.
+/// analysis, study.
 [[nodiscard]] const std::vector<std::string>& targetNames();
 
 /// A scratch file called `name` in this process's scratch folder
@@ -80,6 +80,17 @@ struct Outcome {
 /// and computeSections, which may refuse with a vv::Error, the later steps
 /// must not throw at all (their arguments are in range).
 [[nodiscard]] Outcome feedAnalysis(Bytes bytes);
+
+/// study: the depth-judgement study's files (defined in StudyBody.cpp,
+/// which needs vv::study). First byte 'M': the rest is a study folder's
+/// manifest.json (the folder holds stimuli/a.png ... h.png), read with
+/// readManifest, planned for three participants (each plan must be the
+/// main block's images, each once) and, up to 40 main images, run through
+/// StudyRun to the end with every answer saved. Anything else: the rest
+/// is a results file through analyseResultsFiles (accuracies in [0, 1],
+/// p values in [0, 1], corrected ones not below their p). A broken
+/// promise aborts.
+[[nodiscard]] Outcome feedStudy(Bytes bytes);
 
 /// At most this many vertices and triangles of a compact mesh are read.
 inline constexpr std::size_t kAnalysisMaxVertices = 2048;

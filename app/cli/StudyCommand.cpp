@@ -350,12 +350,7 @@ int studyCommand(const std::vector<std::string>& args, std::ostream& out, std::o
     if (inputs.empty()) {
         throw UsageError("study analyse needs one or more results files");
     }
-    std::vector<study::Answer> answers;
-    for (const auto& input : inputs) {
-        const std::vector<study::Answer> read = study::readResults(input);
-        answers.insert(answers.end(), read.begin(), read.end());
-    }
-    const study::StudyAnalysis analysis = study::analyseStudy(answers, options);
+    const study::StudyAnalysis analysis = study::analyseResultsFiles(inputs, options);
     printSummary(analysis, out);
     if (!pdfOutput.empty()) {
         ensureGuiApplication();  // fonts

@@ -55,6 +55,9 @@ vv::fuzz::Outcome feed(const std::string& target, vv::fuzz::Bytes bytes) {
     if (target == "analysis") {
         return vv::fuzz::feedAnalysis(bytes);
     }
+    if (target == "study") {
+        return vv::fuzz::feedStudy(bytes);
+    }
     return vv::fuzz::feedMesh(bytes, "." + target);
 }
 

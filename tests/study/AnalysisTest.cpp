@@ -156,6 +156,49 @@ TEST(StudyAnalysis, TooLittleToAnalyseIsSaid) {
     EXPECT_THROW(static_cast<void>(analyseStudy(simulatedStudy(), bad)), InvalidArgumentError);
 }
 
+// Files analysed as one study: their answers together, and an analysis
+// that cannot be made names the files it read.
+TEST(StudyAnalysis, ResultsFilesAreAnalysedAsOneAndTheirErrorsNameThem) {
+    const auto dir = std::filesystem::path(VV_TEST_TMP) / "study-analysis-files";
+    std::filesystem::create_directories(dir);
+    const std::vector<Answer> all = simulatedStudy();
+    const auto half = static_cast<std::ptrdiff_t>(all.size() / 2);
+    // Split at a participant's first answer: each file holds whole participants.
+    auto cut = all.begin() + half;
+    while (cut != all.end() && cut->participant == (cut - 1)->participant) {
+        ++cut;
+    }
+    const auto write = [&](const std::string& name, auto from, auto to) {
+        const auto file = dir / name;
+        std::ofstream out(file, std::ios::binary | std::ios::trunc);
+        out << resultsHeader() << "\n";
+        for (auto a = from; a != to; ++a) {
+            out << resultsRow(*a) << "\n";
+        }
+        return file;
+    };
+    const auto first = write("first.csv", all.begin(), cut);
+    const auto second = write("second.csv", cut, all.end());
+    const StudyAnalysis together = analyseResultsFiles({first, second});
+    const StudyAnalysis direct = analyseStudy(all);
+    EXPECT_EQ(together.participants.size(), direct.participants.size());
+    EXPECT_DOUBLE_EQ(together.accuracy.friedman.chiSquared, direct.accuracy.friedman.chiSquared);
+
+    std::mt19937 random(3);
+    std::vector<Answer> alone;
+    simulate("P1", 0.0, random, alone);
+    const auto lonely = write("lonely.csv", alone.begin(), alone.end());
+    try {
+        static_cast<void>(analyseResultsFiles({lonely}));
+        ADD_FAILURE() << "analysed one participant";
+    } catch (const StudyError& e) {
+        EXPECT_EQ(e.file(), lonely);
+        EXPECT_NE(std::string(e.what()).find("1 of 1 participants"), std::string::npos) << e.what();
+    }
+    EXPECT_THROW(static_cast<void>(analyseResultsFiles({})), InvalidArgumentError);
+    EXPECT_THROW(static_cast<void>(analyseResultsFiles({dir / "missing.csv"})), Error);
+}
+
 /// The rows of a CSV table (no quoted fields in these).
 std::vector<std::vector<std::string>> rowsOf(const std::filesystem::path& file) {
     std::ifstream in(file);

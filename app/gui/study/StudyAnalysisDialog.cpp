@@ -170,14 +170,11 @@ bool StudyAnalysisDialog::analyse() {
     watcher_.setFuture(QtConcurrent::run([inputs, pdf, tables, options, paper]() -> Outcome {
         Outcome out;
         try {
-            std::vector<study::Answer> answers;
             report::StudyReportContent content;
             for (const auto& input : inputs) {
-                const std::vector<study::Answer> read = study::readResults(input);
-                answers.insert(answers.end(), read.begin(), read.end());
                 content.sources.push_back(input.filename().string());
             }
-            out.analysis = study::analyseStudy(answers, options);
+            out.analysis = study::analyseResultsFiles(inputs, options);
             report::writeStudyPdf(pdf, *out.analysis, content, paper);
             if (!tables.empty()) {
                 std::error_code error;

@@ -149,4 +149,26 @@ StudyAnalysis analyseStudy(const std::vector<Answer>& answers, const AnalysisOpt
     return study;
 }
 
+StudyAnalysis analyseResultsFiles(const std::vector<std::filesystem::path>& files,
+                                  const AnalysisOptions& options) {
+    if (files.empty()) {
+        throw InvalidArgumentError("an analysis needs at least one results file");
+    }
+    std::vector<Answer> answers;
+    std::string names;
+    for (const auto& file : files) {
+        const std::vector<Answer> read = readResults(file);
+        answers.insert(answers.end(), read.begin(), read.end());
+        names += (names.empty() ? "" : ", ") + file.string();
+    }
+    try {
+        return analyseStudy(answers, options);
+    } catch (const StudyError& e) {
+        if (!e.file().empty()) {
+            throw;
+        }
+        throw StudyError(names, e.problem());
+    }
+}
+
 }  // namespace vv::study

@@ -76,6 +76,14 @@ struct StudyAnalysis {
 [[nodiscard]] StudyAnalysis analyseStudy(const std::vector<Answer>& answers,
                                          const AnalysisOptions& options = {});
 
+/// readResults() of every file in turn, then analyseStudy() of all their
+/// answers as one study. An error of the analysis itself (too few
+/// participants or conditions left) names the files it read ("a.csv, b.csv:
+/// ..."). Throws what readResults() and analyseStudy() throw;
+/// InvalidArgumentError for no file.
+[[nodiscard]] StudyAnalysis analyseResultsFiles(const std::vector<std::filesystem::path>& files,
+                                                const AnalysisOptions& options = {});
+
 /// Writes the analysis as three CSV tables into `folder` (which must exist),
 /// each written atomically, numbers with a decimal point, units in the
 /// headers:
