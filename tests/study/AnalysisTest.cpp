@@ -169,7 +169,7 @@ TEST(StudyAnalysis, ResultsFilesAreAnalysedAsOneAndTheirErrorsNameThem) {
         ++cut;
     }
     const auto write = [&](const std::string& name, auto from, auto to) {
-        const auto file = dir / name;
+        auto file = dir / name;
         std::ofstream out(file, std::ios::binary | std::ios::trunc);
         out << resultsHeader() << "\n";
         for (auto a = from; a != to; ++a) {
