@@ -13,7 +13,9 @@
 #include <QEventLoop>
 #include <QGuiApplication>
 #include <QMenuBar>
+#include <QMessageBox>
 #include <QPointer>
+#include <QPushButton>
 #include <QScreen>
 #include <QSpinBox>
 #include <QTimer>
@@ -249,6 +251,28 @@ TEST_F(StudyRunnerGui, TheSameParticipantGoesOnWhereTheRunStopped) {
             pressKey(XK_f);
             ASSERT_TRUE(runUntil([&] { return answered == i + 1; }));
         }
+        // Escape on an image, then "No": the image comes again from its
+        // countdown, with a new onset (the pause never counts).
+        shown = false;
+        pressKey(XK_space);
+        ASSERT_TRUE(runUntil([&] { return shown; }));
+        const std::string paused = runner->run().stimulus()->id;
+        shown = false;
+        bool declined = false;
+        QTimer decline;
+        QObject::connect(&decline, &QTimer::timeout, [&] {
+            for (QWidget* w : QApplication::topLevelWidgets()) {
+                if (auto* box = qobject_cast<QMessageBox*>(w); box != nullptr && box->isVisible()) {
+                    box->button(QMessageBox::No)->click();
+                    declined = true;
+                }
+            }
+        });
+        decline.start(20);
+        pressKey(XK_Escape);
+        ASSERT_TRUE(runUntil([&] { return declined && shown; }));
+        decline.stop();
+        EXPECT_EQ(runner->run().stimulus()->id, paused);
         runner->close();  // as a crash or Escape would leave it
         ASSERT_TRUE(runUntil([&] { return alive.isNull(); }));
     }

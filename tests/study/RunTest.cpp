@@ -320,6 +320,26 @@ TEST(StudyRunStates, ResultsOfAnotherStudyAreRefused) {
     EXPECT_EQ(other.plan().order, 1U);
 }
 
+// A pause on an image shows it again from its countdown; its response time
+// runs from the new onset, never over the pause.
+TEST(StudyRunStates, AnInterruptedImageIsShownAgainAndTimedFromItsNewOnset) {
+    const auto dir = scratch("restart");
+    test::writeStudyFolder(dir);
+    StudyRun run(readManifest(dir), "P01", dir / "results.csv", {.training = false});
+    run.space();
+    run.countdownFinished();
+    run.stimulusShown(1000.0);
+    const std::string shown = run.stimulus()->id;
+    run.restartTrial();  // the pause
+    EXPECT_EQ(run.screen(), RunScreen::Countdown);
+    EXPECT_EQ(run.stimulus()->id, shown);
+    const Answer a = answerNow(run, Side::Left, 60000.0, 450.0);
+    EXPECT_DOUBLE_EQ(a.responseMs, 450.0);
+    EXPECT_EQ(a.stimulus, shown);
+    run.restartTrial();  // not on an image: nothing happens
+    EXPECT_EQ(run.screen(), RunScreen::Ready);
+}
+
 TEST(StudyRunStates, AStudyWithoutTrainingImagesStartsWithTheMainBlock) {
     const auto dir = scratch("no-training");
     test::writeStudyFolder(dir, {.trainingPairs = 0});

@@ -106,6 +106,11 @@ void StudyRunnerWidget::stop() {
         close();
         return;
     }
+    // A pause on an image: the image comes again from its countdown, so the
+    // pause never counts in its response time.
+    const bool onImage = run_->screen() == study::RunScreen::Countdown ||
+                         run_->screen() == study::RunScreen::Stimulus;
+    countdown_.stop();
     setCursor(Qt::ArrowCursor);
     const auto choice = QMessageBox::question(
         this, tr("Depth-judgement study"),
@@ -114,6 +119,9 @@ void StudyRunnerWidget::stop() {
     setCursor(Qt::BlankCursor);
     if (choice == QMessageBox::Yes) {
         close();
+    } else if (onImage) {
+        run_->restartTrial();
+        enterScreen();
     }
 }
 
@@ -237,9 +245,8 @@ void StudyRunnerWidget::paintGL() {
         // its shape) only when the screen is smaller.
         painter.fillRect(rect(), image_.pixelColor(0, 0));
         const double ratio = devicePixelRatioF();
-        const double scale =
-            std::min({1.0 / ratio, static_cast<double>(width()) / image_.width(),
-                      static_cast<double>(height()) / image_.height()});
+        const double scale = std::min({1.0 / ratio, static_cast<double>(width()) / image_.width(),
+                                       static_cast<double>(height()) / image_.height()});
         const QSizeF size(image_.width() * scale, image_.height() * scale);
         const QRectF target(QPointF((width() - size.width()) / 2, (height() - size.height()) / 2),
                             size);

@@ -105,6 +105,13 @@ void StudyRun::countdownFinished() {
     }
 }
 
+void StudyRun::restartTrial() {
+    if (screen_ == RunScreen::Countdown || screen_ == RunScreen::Stimulus) {
+        onset_.reset();
+        screen_ = RunScreen::Countdown;
+    }
+}
+
 void StudyRun::stimulusShown(double ms) {
     if (screen_ == RunScreen::Stimulus && !onset_) {
         onset_ = ms;

@@ -75,6 +75,10 @@ class StudyRun {
     /// Enter on Feedback: the training ends (MainReady).
     void enter();
     void countdownFinished();
+    /// The image was interrupted (the person running the study paused on
+    /// it): on Countdown or Stimulus it is shown again from its countdown,
+    /// its onset forgotten, so its response time never counts the pause.
+    void restartTrial();
     /// The image is on screen (after the buffer swap) at `ms`.
     void stimulusShown(double ms);
     /// A left/right key at `ms`: records the answer (appended to the results
