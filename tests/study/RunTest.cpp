@@ -84,6 +84,20 @@ TEST(StudyManifestFile, BadManifestsAreRefusedNamingTheProblem) {
               std::string::npos);
     EXPECT_NE(messageOf(dir, withStimulus("id", "tree-p1-VSS-PCD")).find("used twice"),
               std::string::npos);
+    // A second image of a pair in one condition (here: pair 2's first image
+    // claims to be pair 1): one of the two would never be shown.
+    EXPECT_NE(messageOf(dir,
+                        [&] {
+                            QJsonObject m = good;
+                            QJsonArray stimuli = m["stimuli"].toArray();
+                            QJsonObject other = stimuli[5].toObject();  // tree-p2-VSS-CD
+                            other["pair"] = 1;
+                            stimuli[5] = other;
+                            m["stimuli"] = stimuli;
+                            return m;
+                        }())
+                  .find("has a second image in condition 'VSS-CD'"),
+              std::string::npos);
     EXPECT_NE(messageOf(dir, withStimulus("id", QJsonValue(QJsonValue::Undefined)))
                   .find("\"id\" is missing"),
               std::string::npos);

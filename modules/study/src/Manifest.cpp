@@ -6,8 +6,10 @@
 #include <QJsonObject>
 #include <QJsonParseError>
 #include <fstream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <tuple>
 
 namespace vv::study {
 namespace {
@@ -140,6 +142,9 @@ StudyManifest readManifest(const std::filesystem::path& folder) {
         r.fail("the manifest lists no condition");
     }
     std::set<std::string> ids;
+    // A marker pair has one image per condition and block: a second one
+    // would drop the first from every participant's order.
+    std::map<std::tuple<Block, std::string, int, std::string>, std::string> taken;
     const QJsonArray stimuli = root.value("stimuli").toArray();
     for (qsizetype i = 0; i < stimuli.size(); ++i) {
         const std::string where = "stimulus " + std::to_string(i + 1);
@@ -173,6 +178,12 @@ StudyManifest readManifest(const std::filesystem::path& folder) {
                        .append("' (left or right expected)"));
         }
         s.correctAnswer = answer == "left" ? Side::Left : Side::Right;
+        const auto [slot, fresh] = taken.try_emplace({s.block, s.scene, s.pair, s.condition}, s.id);
+        if (!fresh) {
+            r.fail(named + ": scene '" + s.scene + "' pair " + std::to_string(s.pair) +
+                   " has a second image in condition '" + s.condition + "' (the first is '" +
+                   slot->second + "')");
+        }
         s.left = r.marker(o, "left", named, m);
         s.right = r.marker(o, "right", named, m);
         m.stimuli.push_back(std::move(s));

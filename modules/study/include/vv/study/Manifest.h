@@ -48,6 +48,7 @@ struct StudyManifest {
 /// Throws StudyError naming the file and the problem: missing or unreadable,
 /// larger than 16 MiB, not JSON, not the format "vesselview-study-1", a
 /// stimulus with a field missing or of the wrong type, an id used twice, a
+/// second image of a scene's pair in the same condition and block, a
 /// condition the manifest does not list, an image path that is absolute or
 /// leaves the folder's stimuli/ directory, an image that is missing, a marker
 /// outside the image, or no main-block image at all. Manifests written
