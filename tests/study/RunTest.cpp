@@ -82,6 +82,10 @@ TEST(StudyManifestFile, BadManifestsAreRefusedNamingTheProblem) {
     EXPECT_NE(messageOf(dir, withStimulus("left", QJsonObject{{"x", 5000}, {"y", 1}}))
                   .find("marker left"),
               std::string::npos);
+    EXPECT_NE(messageOf(dir, withStimulus("left", QJsonObject{{"x", 1e60}, {"y", 1}}))
+                  .find("marker left"),
+              std::string::npos);
+    EXPECT_NE(messageOf(dir, withStimulus("pair", 1.5)).find("\"pair\""), std::string::npos);
     EXPECT_NE(messageOf(dir, withStimulus("id", "tree-p1-VSS-PCD")).find("used twice"),
               std::string::npos);
     // A second image of a pair in one condition (here: pair 2's first image

@@ -5,6 +5,7 @@
 #include <QJsonDocument>
 #include <QJsonObject>
 #include <QJsonParseError>
+#include <cmath>
 #include <fstream>
 #include <map>
 #include <set>
@@ -63,8 +64,8 @@ class ManifestReader {
               int high) const {
         const QJsonValue v = o.value(key);
         const double d = v.toDouble(-1.0e300);
-        if (!v.isDouble() || d != static_cast<double>(static_cast<long long>(d)) || d < low ||
-            d > high) {
+        // The range first: a cast of a number beyond long long is undefined.
+        if (!v.isDouble() || !(d >= low && d <= high) || d != std::floor(d)) {
             fail(where + ": \"" + key + "\" is missing or not a whole number from " +
                  std::to_string(low) + " to " + std::to_string(high));
         }
