@@ -127,15 +127,10 @@ QString thresholdRuleText(const segmentation::ThresholdRange& range,
     return QString::fromStdString(range.rule);
 }
 
-namespace {
-
-/// True when the UI speaks English: the modules' details are then readable as they are.
 bool englishUi() {
     const char* probe = QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "An unexpected error occurred.");
     return QCoreApplication::translate(kContext, probe) == QLatin1String(probe);
 }
-
-}  // namespace
 
 QString ProblemText::line() const {
     return details.isEmpty() || !englishUi() ? summary : summary + QLatin1Char(' ') + details;

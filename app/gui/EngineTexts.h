@@ -49,6 +49,10 @@ struct ProblemText {
     [[nodiscard]] QString line() const;
 };
 
+/// True when the UI speaks English (no translation installed answers for
+/// it): the modules' English details are then readable as they are.
+[[nodiscard]] bool englishUi();
+
 /// What the caller was doing with the file when it failed (an IoError says
 /// "could not be read" or "could not be written").
 enum class FileAccess { Reading, Writing };

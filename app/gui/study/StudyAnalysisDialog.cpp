@@ -135,10 +135,6 @@ void StudyAnalysisDialog::setCorrection(study::Correction correction) {
     correction_->setCurrentIndex(correction_->findData(static_cast<int>(correction)));
 }
 
-bool StudyAnalysisDialog::isRunning() const {
-    return watcher_.isRunning();
-}
-
 QString StudyAnalysisDialog::outcome() const {
     return outcome_->toPlainText();
 }

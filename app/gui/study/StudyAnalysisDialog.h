@@ -43,7 +43,6 @@ class StudyAnalysisDialog : public QDialog {
     /// Starts the analysis (the Analyse button); false when a field is
     /// missing (the dialog says which).
     bool analyse();
-    [[nodiscard]] bool isRunning() const;
     /// What the dialog shows of the last analysis (or its error).
     [[nodiscard]] QString outcome() const;
 

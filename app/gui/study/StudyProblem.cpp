@@ -37,12 +37,10 @@ QString studyProblemText(const std::exception& error) {
     if (problem.details.isEmpty()) {
         return problem.summary;
     }
-    // The UI speaks English when this text comes back untranslated.
     const char* details = QT_TRANSLATE_NOOP("vv::gui::StudyProblem", "Details (in English): %1");
-    const QString translated = QCoreApplication::translate(kContext, details);
-    const bool english = translated == QLatin1String(details);
     return problem.summary + QStringLiteral("\n\n") +
-           (english ? problem.details : translated.arg(problem.details));
+           (englishUi() ? problem.details
+                        : QCoreApplication::translate(kContext, details).arg(problem.details));
 }
 
 }  // namespace vv::gui

@@ -86,7 +86,8 @@ StudyRunDialog::StudyRunDialog(QWidget* parent)
     connect(buttons_, &QDialogButtonBox::accepted, this, [this] { static_cast<void>(start()); });
     connect(buttons_, &QDialogButtonBox::rejected, this, &QDialog::reject);
     connect(folder_, &QLineEdit::editingFinished, this, &StudyRunDialog::folderChanged);
-    connect(results_, &QLineEdit::editingFinished, this, &StudyRunDialog::resultsChanged);
+    // Typed or browsed (every change; the default the folder sets is read
+    // by folderChanged itself).
     connect(results_, &QLineEdit::textChanged, this, [this] {
         if (results_->text() != defaultResults_) {
             resultsChanged();
