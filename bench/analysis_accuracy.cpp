@@ -77,27 +77,41 @@ struct Analysed {
 /// to the next.
 class StageClock {
   public:
+    /// Memory is counted above the resident size at `baseKiB`.
+    explicit StageClock(std::uint64_t baseKiB = 0) : baseKiB_(baseKiB) {
+        static_cast<void>(vv::resetPeakResident());
+    }
     /// A progress report of `stage`: a new stage starts when it changes.
     void record(std::string_view stage) {
-        if (stages_.empty() || stages_.back().first != stage) {
+        if (stages_.empty() || stages_.back().name != stage) {
             lap();
-            stages_.emplace_back(std::string(stage), 0.0);
+            stages_.push_back({std::string(stage), 0.0, 0.0});
         }
     }
-    /// Ends the current stage.
+    /// Ends the current stage: its time, and its peak resident size (the
+    /// peak since the stage began; the kernel's peak is reset for the next).
     void lap() {
         const auto now = Clock::now();
         if (!stages_.empty()) {
-            stages_.back().second += std::chrono::duration<double>(now - last_).count();
+            Stage& stage = stages_.back();
+            stage.seconds += std::chrono::duration<double>(now - last_).count();
+            const auto peak = vv::peakResidentKiB().value_or(0);
+            stage.peakMiB = std::max(
+                stage.peakMiB, static_cast<double>(peak > baseKiB_ ? peak - baseKiB_ : 0) / 1024.0);
+            static_cast<void>(vv::resetPeakResident());
         }
         last_ = now;
     }
-    [[nodiscard]] const std::vector<std::pair<std::string, double>>& stages() const noexcept {
-        return stages_;
-    }
+    struct Stage {
+        std::string name;
+        double seconds = 0.0;
+        double peakMiB = 0.0;  ///< above the base
+    };
+    [[nodiscard]] const std::vector<Stage>& stages() const noexcept { return stages_; }
 
   private:
-    std::vector<std::pair<std::string, double>> stages_;
+    std::uint64_t baseKiB_ = 0;
+    std::vector<Stage> stages_;
     Clock::time_point last_ = Clock::now();
 };
 
@@ -321,11 +335,13 @@ void demoTree() {
     const vv::demo::DemoTreeOptions options;
     const vv::demo::VesselTree truth = vv::demo::generateVesselTree(options);
     const auto mesh = vv::demo::buildVesselSurface(truth, options);
-    vv::resetPeakResident();
     const auto before = vv::residentKiB().value_or(0);
-    StageClock clock;
+    StageClock clock(before);
     const Analysed analysed = analyse(mesh, &clock);
-    const auto peak = vv::peakResidentKiB().value_or(0);
+    double peakMiB = 0.0;  // the stages' peaks: the clock resets the kernel's at each
+    for (const auto& stage : clock.stages()) {
+        peakMiB = std::max(peakMiB, stage.peakMiB);
+    }
     std::printf(
         "| demo tree | triangles | segments / leaves built | leaves found | other ends | "
         "sections (ok / all) | off the built axis, median / 95 %% (%% r) | lumen centroid "
@@ -336,14 +352,15 @@ void demoTree() {
     std::printf("| default | %zu | ", mesh.triangleCount());
     printAgreement(vv::bench::compareWithConstruction(truth, analysed.tree, analysed.sections));
     std::printf(" | %.2f | %.2f | %.0f | %.1f |\n", analysed.centrelineSeconds,
-                analysed.sectionSeconds,
-                static_cast<double>(peak > before ? peak - before : 0) / 1024.0, meshMiB(mesh));
+                analysed.sectionSeconds, peakMiB, meshMiB(mesh));
     for (const auto& note : analysed.tree.notes) {
         std::printf("\nnote: %s\n", note.c_str());
     }
-    std::printf("\n| stage (as the progress names it) | seconds |\n|---|---|\n");
-    for (const auto& [stage, seconds] : clock.stages()) {
-        std::printf("| %s | %.2f |\n", stage.c_str(), seconds);
+    std::printf(
+        "\n| stage (as the progress names it) | seconds | peak memory above the mesh (MiB) "
+        "|\n|---|---|---|\n");
+    for (const auto& stage : clock.stages()) {
+        std::printf("| %s | %.2f | %.0f |\n", stage.name.c_str(), stage.seconds, stage.peakMiB);
     }
     // The same tree as a coarse segmentation comes: decimated (quadric edge
     // collapse) to 60k, 20k and 8k triangles.

@@ -25,7 +25,7 @@ namespace {
 using Point = std::array<double, 4>;  // centre and radius
 
 Point pointOf(const VoronoiGraph& g, std::uint32_t v) {
-    return {g.centres[v].x, g.centres[v].y, g.centres[v].z, g.radii[v]};
+    return {g.centre(v).x, g.centre(v).y, g.centre(v).z, g.radius(v)};
 }
 
 /// The graph without its numbering: its vertices, its edges and each surface

@@ -19,6 +19,9 @@ namespace vv::analysis::detail {
 /// surface's); marks the surface's loops that are holes and notes them. A
 /// wall that folds over itself is smoothed first when `smoothFoldedWall`
 /// (CenterlineOptions::smoothFoldedWall; WallSmoothing.h), and noted.
+/// Releases `s.cappedPositions` and `s.cappedTriangles` (left empty: no step
+/// after the diagram reads them; the graph's poles still number the capped
+/// vertices).
 [[nodiscard]] VoronoiGraph diagramOf(PreparedSurface& s, bool smoothFoldedWall,
                                      const Progress& progress);
 

@@ -98,7 +98,7 @@ std::uint32_t loopPole(const detail::BoundaryLoop& loop, const VoronoiGraph& g) 
     }
     for (const std::uint32_t v : loop.vertices) {
         const std::uint32_t p = g.poles[v];
-        if (p != kNone && (pole == kNone || g.radii[p] > g.radii[pole])) {
+        if (p != kNone && (pole == kNone || g.radius(p) > g.radius(pole))) {
             pole = p;
         }
     }
@@ -110,7 +110,7 @@ void markHoles(PreparedSurface& s, const VoronoiGraph& g) {
     int holes = 0;
     for (detail::BoundaryLoop& loop : s.loops) {
         const std::uint32_t pole = loopPole(loop, g);
-        loop.hole = pole != kNone && g.radii[pole] > kHoleRatio * loop.radiusMm;
+        loop.hole = pole != kNone && g.radius(pole) > kHoleRatio * loop.radiusMm;
         holes += loop.hole ? 1 : 0;
     }
     if (holes > 0) {
@@ -184,8 +184,8 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const Surf
         fail(s, std::string("no inscribed sphere touches the surface near the ") + role + " " +
                     pointText(point));
     }
-    r.end.position = g.centres[r.vertex];
-    r.end.radiusMm = g.radii[r.vertex];
+    r.end.position = g.centre(r.vertex);
+    r.end.radiusMm = g.radius(r.vertex);
     // The sphere touching the surface at the nearest point exactly: centred
     // halfway to the opposite wall along the inward normal there (the
     // diagram's pole may be a sample's, up to a quarter radius away), and the
@@ -201,9 +201,9 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const Surf
             const glm::dvec3 centre = 0.5 * (nearest.point + *opposite);
             r.end.position = centre;
             r.end.radiusMm = 0.5 * glm::length(*opposite - nearest.point);
-            double best = glm::length(g.centres[r.vertex] - centre);
+            double best = glm::length(g.centre(r.vertex) - centre);
             for (std::uint32_t v = 0; v < g.size(); ++v) {
-                const double d = glm::length(g.centres[v] - centre);
+                const double d = glm::length(g.centre(v) - centre);
                 if (d < best) {
                     best = d;
                     r.vertex = v;
@@ -233,27 +233,27 @@ ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceIndex& surface, const Pat
     // vessel), and two of their radii back is still off the axis (a
     // jittered 1M aneurysm's source ended 3 mm aside, its trunk 1.2 % long).
     std::size_t cut = path.size() - 1;
-    double widest = g.radii[path[cut]];
-    while (cut > 0 && tree.lengthMm[tip] - tree.lengthMm[path[cut]] < 2.0 * widest) {
+    double widest = g.radius(path[cut]);
+    while (cut > 0 && tree.lengthMm(tip) - tree.lengthMm(path[cut]) < 2.0 * widest) {
         --cut;
-        widest = std::max(widest, g.radii[path[cut]]);
+        widest = std::max(widest, g.radius(path[cut]));
     }
     std::size_t back = cut;
-    while (back > 0 && tree.lengthMm[path[cut]] - tree.lengthMm[path[back]] < 2.0 * widest) {
+    while (back > 0 && tree.lengthMm(path[cut]) - tree.lengthMm(path[back]) < 2.0 * widest) {
         --back;
     }
     ResolvedEnd r;
     r.end.kind = EndPoint::Kind::Tip;
     r.vertex = path[cut];
     r.capVertex = tip;
-    r.end.radiusMm = g.radii[path[cut]];
-    const glm::dvec3 from = g.centres[path[cut]];
-    const glm::dvec3 along = from - g.centres[path[back]];
+    r.end.radiusMm = g.radius(path[cut]);
+    const glm::dvec3 from = g.centre(path[cut]);
+    const glm::dvec3 along = from - g.centre(path[back]);
     std::optional<glm::dvec3> hit;
     if (back < cut && glm::length(along) > 0.0) {
         hit = surface.firstHit(from, glm::normalize(along));
     }
-    r.end.position = hit ? *hit : surface.nearest(g.centres[tip]).point;
+    r.end.position = hit ? *hit : surface.nearest(g.centre(tip)).point;
     r.end.requested = r.end.position;
     return r;
 }
@@ -263,11 +263,11 @@ ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceIndex& surface, const Pat
 double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_t tip) {
     const std::vector<std::uint32_t> path = tree.pathTo(tip);
     for (std::size_t i = path.size(); i-- > 0;) {
-        if (tree.lengthMm[tip] - tree.lengthMm[path[i]] >= 2.0 * g.radii[path[i]]) {
-            return g.radii[path[i]];
+        if (tree.lengthMm(tip) - tree.lengthMm(path[i]) >= 2.0 * g.radius(path[i])) {
+            return g.radius(path[i]);
         }
     }
-    return g.radii[path.front()];
+    return g.radius(path.front());
 }
 
 /// Source end when none is given: the widest open end, or on a closed
@@ -355,7 +355,7 @@ std::vector<std::uint32_t> trimmedAtTheEnds(const VoronoiGraph& g, const Resolve
                                             const ResolvedEnd& target,
                                             std::vector<std::uint32_t> vertices) {
     const auto past = [&](std::uint32_t vertex, std::uint32_t inner, const glm::dvec3& end) {
-        return glm::dot(g.centres[vertex] - g.centres[inner], end - g.centres[vertex]) < 0.0;
+        return glm::dot(g.centre(vertex) - g.centre(inner), end - g.centre(vertex)) < 0.0;
     };
     while (vertices.size() > 2 &&
            past(vertices.back(), vertices[vertices.size() - 2], target.end.position)) {
@@ -378,11 +378,11 @@ PathProfile profilePath(const VoronoiGraph& g, const ResolvedEnd& source, const 
     std::vector<glm::dvec3> raw{source.end.position};
     std::vector<double> rawRadius{source.end.radiusMm};
     for (const std::uint32_t v : profile.vertices) {
-        raw.push_back(g.centres[v]);
-        rawRadius.push_back(g.radii[v]);
+        raw.push_back(g.centre(v));
+        rawRadius.push_back(g.radius(v));
     }
     raw.push_back(target.end.position);
-    rawRadius.push_back(std::max(target.end.radiusMm, g.radii[vertices.back()]));
+    rawRadius.push_back(std::max(target.end.radiusMm, g.radius(vertices.back())));
     const std::vector<double> rawAt = detail::arcLengths(raw);
     profile.vertexRawArc.assign(rawAt.begin() + 1, rawAt.end() - 1);
 
@@ -625,10 +625,10 @@ std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiG
 void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const PathTree& tree,
                       const ResolvedEnd& source, const std::vector<ResolvedEnd>& targets,
                       double step) {
-    const double start = glm::length(g.centres[source.vertex] - source.end.position);
+    const double start = glm::length(g.centre(source.vertex) - source.end.position);
     for (const ResolvedEnd& target : targets) {
-        const double length = start + tree.lengthMm[target.vertex] +
-                              glm::length(target.end.position - g.centres[target.vertex]);
+        const double length = start + tree.lengthMm(target.vertex) +
+                              glm::length(target.end.position - g.centre(target.vertex));
         if (!(length / step <= kMaxPathPoints)) {
             fail(s, "the centreline to the end " + pointText(target.end.position) + " would be " +
                         fixedText(length, 0) + " mm long, more than " +
@@ -714,6 +714,11 @@ VoronoiGraph diagramOf(PreparedSurface& s, bool smoothFoldedWall, const Progress
     }
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     markHoles(s, g);
+    // Only the diagram needed the caps' points and fans; the steps after it
+    // cut the wall (positions, triangles, normals). Released here, as they
+    // would be held through the analysis' peak.
+    s.cappedPositions = {};
+    s.cappedTriangles = {};
     return g;
 }
 
@@ -742,7 +747,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
     checkPathLengths(s, g, tree, source, targets, options.stepMm);
     // Longest path first: the main vessel is branch 0.
     std::sort(targets.begin(), targets.end(), [&](const ResolvedEnd& a, const ResolvedEnd& b) {
-        return tree.lengthMm[a.vertex] > tree.lengthMm[b.vertex];
+        return tree.lengthMm(a.vertex) > tree.lengthMm(b.vertex);
     });
 
     progress.report(0.7, "Tracing the centrelines");

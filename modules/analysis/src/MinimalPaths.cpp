@@ -7,7 +7,6 @@
 #include <limits>
 #include <numeric>
 #include <queue>
-#include <unordered_map>
 #include <utility>
 
 namespace vv::analysis::detail {
@@ -26,8 +25,8 @@ constexpr std::uint32_t kNone = UINT32_MAX;
 /// 1 s, but cost the demo tree 0.35 s and 12 MiB more than the grid.)
 class VertexGrid {
   public:
-    VertexGrid(const std::vector<glm::dvec3>& points, double cell) : points_(points) {
-        levels_.emplace_back(points, cell);
+    VertexGrid(const VoronoiGraph& graph, double cell) : graph_(graph) {
+        levels_.emplace_back(graph, cell);
     }
 
     void forEachWithin(const glm::dvec3& centre, double radius,
@@ -35,16 +34,17 @@ class VertexGrid {
         std::size_t k = 0;
         while (spannedCells(levels_[k].cell, radius) > kMaxCells && k + 1 < kMaxLevels) {
             if (++k == levels_.size()) {
-                levels_.emplace_back(points_, 4.0 * levels_.back().cell);
+                levels_.emplace_back(graph_, 4.0 * levels_.back().cell);
             }
         }
         const Level& level = levels_[k];
         const glm::dvec3 lo = level.cellOf(centre - glm::dvec3(radius));
         const glm::dvec3 hi = level.cellOf(centre + glm::dvec3(radius));
         const double radius2 = radius * radius;
-        const auto visitBucket = [&](const std::vector<std::uint32_t>& bucket) {
-            for (const std::uint32_t i : bucket) {
-                const glm::dvec3 d = points_[i] - centre;
+        const auto visitCells = [&](std::size_t first, std::size_t last) {
+            for (std::uint32_t at = level.starts[first]; at < level.starts[last]; ++at) {
+                const std::uint32_t i = level.ids[at];
+                const glm::dvec3 d = graph_.centre(i) - centre;
                 if (glm::dot(d, d) <= radius2) {
                     visit(i);
                 }
@@ -52,22 +52,22 @@ class VertexGrid {
         };
         // A ball over more cells than are occupied: every occupied cell.
         const glm::dvec3 cells = hi - lo + 1.0;
-        if (cells.x * cells.y * cells.z > static_cast<double>(level.buckets.size())) {
-            for (const auto& [key, bucket] : level.buckets) {
-                visitBucket(bucket);
-            }
+        if (cells.x * cells.y * cells.z > static_cast<double>(level.keys.size())) {
+            visitCells(0, level.keys.size());
             return;
         }
+        // The cells of one (x, y) column have consecutive keys: one search
+        // per column.
         const glm::ivec3 from(lo);
         const glm::ivec3 to(hi);
         for (int x = from.x; x <= to.x; ++x) {
             for (int y = from.y; y <= to.y; ++y) {
-                for (int z = from.z; z <= to.z; ++z) {
-                    const auto it = level.buckets.find(Level::key({x, y, z}));
-                    if (it != level.buckets.end()) {
-                        visitBucket(it->second);
-                    }
-                }
+                const auto begin = std::lower_bound(level.keys.begin(), level.keys.end(),
+                                                    Level::key({x, y, from.z}));
+                const auto end =
+                    std::upper_bound(begin, level.keys.end(), Level::key({x, y, to.z}));
+                visitCells(static_cast<std::size_t>(begin - level.keys.begin()),
+                           static_cast<std::size_t>(end - level.keys.begin()));
             }
         }
     }
@@ -82,11 +82,30 @@ class VertexGrid {
         return side * side * side;
     }
 
+    /// The points sorted by their cells' keys: `ids[starts[c] .. starts[c + 1])`
+    /// are the points of the occupied cell `keys[c]` (4 bytes per point and
+    /// 12 per occupied cell; a hash map of buckets took several times that).
     struct Level {
-        Level(const std::vector<glm::dvec3>& points, double size) : cell(size) {
-            for (std::uint32_t i = 0; i < points.size(); ++i) {
-                buckets[key(glm::ivec3(cellOf(points[i])))].push_back(i);
+        Level(const VoronoiGraph& graph, double size) : cell(size) {
+            std::vector<std::int64_t> pointKeys(graph.size());
+            for (std::size_t i = 0; i < graph.size(); ++i) {
+                pointKeys[i] = key(glm::ivec3(cellOf(graph.centre(i))));
             }
+            ids.resize(graph.size());
+            std::iota(ids.begin(), ids.end(), 0U);
+            std::sort(ids.begin(), ids.end(), [&](std::uint32_t a, std::uint32_t b) {
+                return pointKeys[a] < pointKeys[b] || (pointKeys[a] == pointKeys[b] && a < b);
+            });
+            for (std::uint32_t k = 0; k < ids.size(); ++k) {
+                const std::int64_t c = pointKeys[ids[k]];
+                if (keys.empty() || keys.back() != c) {
+                    keys.push_back(c);
+                    starts.push_back(k);
+                }
+            }
+            starts.push_back(static_cast<std::uint32_t>(ids.size()));
+            keys.shrink_to_fit();
+            starts.shrink_to_fit();
         }
         /// The cell of `p`, clamped to [-kSpan, kSpan) per axis: far points
         /// share the border cells, which keeps queries exact (the distance
@@ -102,15 +121,25 @@ class VertexGrid {
         }
 
         double cell;
-        std::unordered_map<std::int64_t, std::vector<std::uint32_t>> buckets;
+        std::vector<std::int64_t> keys;
+        std::vector<std::uint32_t> starts;
+        std::vector<std::uint32_t> ids;
     };
 
-    const std::vector<glm::dvec3>& points_;
+    const VoronoiGraph& graph_;
     std::vector<Level> levels_;
 };
 
+/// The median radius of at most about 65k vertices spread over the graph
+/// (it sizes the grid's cells: a sample serves, and a copy of every radius
+/// would cost 8 bytes per vertex at the analysis' peak).
 double medianRadius(const VoronoiGraph& graph) {
-    std::vector<double> radii = graph.radii;
+    const std::size_t stride = std::max<std::size_t>(1, graph.radii.size() / 65536);
+    std::vector<double> radii;
+    radii.reserve(graph.radii.size() / stride + 1);
+    for (std::size_t v = 0; v < graph.radii.size(); v += stride) {
+        radii.push_back(graph.radius(v));
+    }
     const auto middle = radii.begin() + static_cast<std::ptrdiff_t>(radii.size() / 2);
     std::nth_element(radii.begin(), middle, radii.end());
     return *middle;
@@ -119,12 +148,12 @@ double medianRadius(const VoronoiGraph& graph) {
 }  // namespace
 
 bool PathTree::reaches(std::uint32_t v) const {
-    return v < cost.size() && std::isfinite(cost[v]);
+    return v < labels.size() && std::isfinite(labels[v].cost);
 }
 
 std::vector<std::uint32_t> PathTree::pathTo(std::uint32_t v) const {
     std::vector<std::uint32_t> path;
-    for (std::uint32_t at = v; at != kNone; at = previous[at]) {
+    for (std::uint32_t at = v; at != kNone; at = labels[at].previous) {
         path.push_back(at);
     }
     std::reverse(path.begin(), path.end());
@@ -133,21 +162,16 @@ std::vector<std::uint32_t> PathTree::pathTo(std::uint32_t v) const {
 
 PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source, const Progress& progress) {
     const std::size_t n = graph.size();
-    // One record per vertex (a relaxation touches one cache line, not
-    // three), split into the tree's arrays at the end.
-    struct Label {
-        double cost;
-        double lengthMm;
-        std::uint32_t previous;
-    };
-    std::vector<Label> labels(n, Label{std::numeric_limits<double>::infinity(), 0.0, kNone});
-    std::vector<double> inverseRadius(n);
+    PathTree tree;
+    tree.source = source;
+    tree.labels.resize(n);
+    std::vector<PathTree::Label>& labels = tree.labels;
     for (std::size_t v = 0; v < n; ++v) {
-        inverseRadius[v] = 0.5 / graph.radii[v];
+        labels[v] = {
+            .cost = std::numeric_limits<double>::infinity(), .lengthMm = 0.0F, .previous = kNone};
     }
     using Entry = std::pair<double, std::uint32_t>;
     std::vector<Entry> heap;
-    heap.reserve(n);
     const auto push = [&](double cost, std::uint32_t v) {
         heap.emplace_back(cost, v);
         std::push_heap(heap.begin(), heap.end(), std::greater<>());
@@ -165,29 +189,21 @@ PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source, const Pro
         if (++settled % 65536 == 0) {
             progress.throwIfCancelled();
         }
-        const glm::dvec3 at = graph.centres[v];
+        const glm::dvec3 at = graph.centre(v);
         const double length0 = labels[v].lengthMm;
-        const double inverse0 = inverseRadius[v];
+        const double inverse0 = 0.5 / graph.radius(v);
         for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e) {
             const std::uint32_t w = graph.neighbours[e];
-            const double length = glm::length(graph.centres[w] - at);
-            const double next = cost + length * (inverse0 + inverseRadius[w]);
-            Label& label = labels[w];
+            const double length = glm::length(graph.centre(w) - at);
+            PathTree::Label& label = labels[w];
+            const double next = cost + length * (inverse0 + 0.5 / graph.radius(w));
             if (next < label.cost) {
-                label = Label{next, length0 + length, v};
+                label.cost = next;
+                label.lengthMm = static_cast<float>(length0 + length);
+                label.previous = v;
                 push(next, w);
             }
         }
-    }
-    PathTree tree;
-    tree.source = source;
-    tree.cost.resize(n);
-    tree.lengthMm.resize(n);
-    tree.previous.resize(n);
-    for (std::size_t v = 0; v < n; ++v) {
-        tree.cost[v] = labels[v].cost;
-        tree.lengthMm[v] = labels[v].lengthMm;
-        tree.previous[v] = labels[v].previous;
     }
     return tree;
 }
@@ -196,7 +212,7 @@ std::vector<std::uint32_t> uncoveredTips(const VoronoiGraph& graph, const PathTr
                                          const std::vector<std::vector<std::uint32_t>>& known,
                                          double coverFactor, double minLengthFactor,
                                          const Progress& progress) {
-    VertexGrid grid(graph.centres, std::max(medianRadius(graph), 1e-6));
+    VertexGrid grid(graph, std::max(medianRadius(graph), 1e-6));
     std::vector<char> covered(graph.size(), 0);
     // Whose grown sphere has been covered already: each is covered once
     // (the junction of every spike off a path would be again, and a rough
@@ -209,17 +225,17 @@ std::vector<std::uint32_t> uncoveredTips(const VoronoiGraph& graph, const PathTr
         for (std::size_t i = from; i < path.size(); ++i) {
             const std::uint32_t p = path[i];
             covered[p] = 1;
-            const double step = glm::length(graph.centres[p] - last);
-            if (step < 0.25 * graph.radii[p] && i + 1 < path.size()) {
+            const double step = glm::length(graph.centre(p) - last);
+            if (step < 0.25 * graph.radius(p) && i + 1 < path.size()) {
                 continue;
             }
-            last = graph.centres[p];
+            last = graph.centre(p);
             if (applied[p] != 0) {
                 continue;
             }
             applied[p] = 1;
-            grid.forEachWithin(graph.centres[p],
-                               coverFactor * graph.radii[p] + 0.25 * graph.radii[p],
+            grid.forEachWithin(graph.centre(p),
+                               coverFactor * graph.radius(p) + 0.25 * graph.radius(p),
                                [&](std::uint32_t v) { covered[v] = 1; });
         }
     };
@@ -235,7 +251,7 @@ std::vector<std::uint32_t> uncoveredTips(const VoronoiGraph& graph, const PathTr
         }
     }
     std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return tree.lengthMm[a] > tree.lengthMm[b];
+        return tree.lengthMm(a) > tree.lengthMm(b);
     });
     std::vector<std::uint32_t> tips;
     for (const std::uint32_t v : order) {
@@ -248,13 +264,13 @@ std::vector<std::uint32_t> uncoveredTips(const VoronoiGraph& graph, const PathTr
         // walked from v: a rough wall gives thousands of short spikes off
         // a long covered path.
         std::vector<std::uint32_t> spike{v};
-        while (covered[spike.back()] == 0 && tree.previous[spike.back()] != kNone) {
-            spike.push_back(tree.previous[spike.back()]);
+        while (covered[spike.back()] == 0 && tree.previous(spike.back()) != kNone) {
+            spike.push_back(tree.previous(spike.back()));
         }
         std::reverse(spike.begin(), spike.end());
         const std::uint32_t junction = spike.front();
-        const double outside = tree.lengthMm[v] - tree.lengthMm[junction];
-        if (outside >= minLengthFactor * graph.radii[junction]) {
+        const double outside = tree.lengthMm(v) - tree.lengthMm(junction);
+        if (outside >= minLengthFactor * graph.radius(junction)) {
             tips.push_back(v);
         }
         cover(spike, 0);

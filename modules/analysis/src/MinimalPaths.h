@@ -14,13 +14,21 @@
 
 namespace vv::analysis::detail {
 
-/// The shortest-path tree from one Voronoi vertex.
+/// The shortest-path tree from one Voronoi vertex: one 16-byte record per
+/// vertex (a relaxation touches one cache line, and the search's records
+/// are the tree, not copied into it: it is held through the analysis' peak).
 struct PathTree {
+    struct Label {
+        double cost = 0.0;           ///< integral of ds / R along the path; +inf: unreachable
+        float lengthMm = 0.0F;       ///< arc length of the same path (to 0.1 µm over 1 m)
+        std::uint32_t previous = 0;  ///< towards the source; UINT32_MAX at the source
+    };
     std::uint32_t source = 0;
-    std::vector<double> cost;             ///< integral of ds / R along the path; +inf: unreachable
-    std::vector<double> lengthMm;         ///< arc length of the same path
-    std::vector<std::uint32_t> previous;  ///< towards the source; UINT32_MAX at the source
+    std::vector<Label> labels;
 
+    [[nodiscard]] double cost(std::uint32_t v) const { return labels[v].cost; }
+    [[nodiscard]] double lengthMm(std::uint32_t v) const { return labels[v].lengthMm; }
+    [[nodiscard]] std::uint32_t previous(std::uint32_t v) const { return labels[v].previous; }
     [[nodiscard]] bool reaches(std::uint32_t v) const;
     /// The path from the source to `v`, source first. `v` must be reachable.
     [[nodiscard]] std::vector<std::uint32_t> pathTo(std::uint32_t v) const;

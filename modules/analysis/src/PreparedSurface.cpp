@@ -239,6 +239,10 @@ void keepOnePiece(PreparedSurface& s, const std::optional<glm::dvec3>& anchor) {
         }
         triangles.push_back(t);
     }
+    // Held to the end of the analysis: no spare capacity (up to half
+    // again of their size, after push_back).
+    kept.shrink_to_fit();
+    triangles.shrink_to_fit();
     s.positions = std::move(kept);
     s.triangles = std::move(triangles);
 }

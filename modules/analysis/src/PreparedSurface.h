@@ -42,7 +42,8 @@ struct PreparedSurface {
     std::vector<glm::dvec3> positions;
     std::vector<Triangle> triangles;
     std::vector<BoundaryLoop> loops;
-    /// positions + one centre per loop; triangles + the caps' fans.
+    /// positions + one centre per loop; triangles + the caps' fans. Emptied
+    /// once the Voronoi diagram is built (diagramOf in AnalysisSteps.h).
     std::vector<glm::dvec3> cappedPositions;
     std::vector<Triangle> cappedTriangles;
     /// Per capped vertex, unit, outward (area-weighted over its triangles).

@@ -1,11 +1,13 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "SurfaceIndex.h"
 
+#include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
 #include <cmath>
 #include <future>
 #include <iterator>
@@ -15,34 +17,70 @@ namespace vv::analysis::detail {
 namespace {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 using Triangle3 = Kernel::Triangle_3;
-using Iterator = std::vector<Triangle3>::const_iterator;
-using Primitive = CGAL::AABB_triangle_primitive<Kernel, Iterator>;
-using Traits = CGAL::AABB_traits<Kernel, Primitive>;
-using AabbTree = CGAL::AABB_tree<Traits>;
 
 Kernel::Point_3 toPoint(const glm::dvec3& p) {
     return {p.x, p.y, p.z};
 }
+
+/// A triangle of the surface by its index, made from the surface's own
+/// positions when the tree asks for it: the tree keeps no copy of them.
+struct TriangleMap {
+    using key_type = std::uint32_t;
+    using value_type = Triangle3;
+    using reference = Triangle3;
+    using category = boost::readable_property_map_tag;
+    const PreparedSurface* surface = nullptr;
+
+    friend Triangle3 get(const TriangleMap& map, std::uint32_t id) {
+        const Triangle& t = map.surface->triangles[id];
+        const auto& p = map.surface->positions;
+        return {toPoint(p[t[0]]), toPoint(p[t[1]]), toPoint(p[t[2]])};
+    }
+};
+
+/// A point of each triangle (its first corner), as CGAL's reference point.
+struct CornerMap {
+    using key_type = std::uint32_t;
+    using value_type = Kernel::Point_3;
+    using reference = Kernel::Point_3;
+    using category = boost::readable_property_map_tag;
+    const PreparedSurface* surface = nullptr;
+
+    friend Kernel::Point_3 get(const CornerMap& map, std::uint32_t id) {
+        return toPoint(map.surface->positions[map.surface->triangles[id][0]]);
+    }
+};
+
+using Primitive =
+    CGAL::AABB_primitive<std::uint32_t, TriangleMap, CornerMap, CGAL::Tag_true, CGAL::Tag_false>;
+using Traits = CGAL::AABB_traits<Kernel, Primitive>;
+using AabbTree = CGAL::AABB_tree<Traits>;
+
+constexpr std::uint32_t kHintStride = 8;
 }  // namespace
 
 struct SurfaceIndex::Tree {
-    std::vector<Triangle3> triangles;
+    const PreparedSurface* surface = nullptr;
     AabbTree tree;
 
-    void fill(const PreparedSurface& surface) {
-        triangles.reserve(surface.triangles.size());
-        for (const Triangle& t : surface.triangles) {
-            triangles.emplace_back(toPoint(surface.positions[t[0]]),
-                                   toPoint(surface.positions[t[1]]),
-                                   toPoint(surface.positions[t[2]]));
-        }
-        tree.insert(triangles.cbegin(), triangles.cend());
+    void fill(const PreparedSurface& s) {
+        surface = &s;
+        const auto count = static_cast<std::uint32_t>(s.triangles.size());
+        tree.insert(boost::counting_iterator<std::uint32_t>(0),
+                    boost::counting_iterator<std::uint32_t>(count), TriangleMap{&s}, CornerMap{&s});
         tree.build();
-        tree.accelerate_distance_queries();
-        // Build what CGAL builds on the first query now, so that queries
-        // from several threads only read the tree.
-        if (!triangles.empty()) {
-            static_cast<void>(tree.squared_distance(triangles.front().vertex(0)));
+        // The hints of the distance queries (a start near the answer; the
+        // answer is exact whatever the hint): the first corner of every
+        // kHintStride-th triangle, not CGAL's default of one point per
+        // triangle, whose kd-tree held some 40 bytes per triangle at the
+        // analysis' peak for hints a few triangles nearer.
+        std::vector<AabbTree::Point_and_primitive_id> hints;
+        hints.reserve(count / kHintStride + 1);
+        for (std::uint32_t id = 0; id < count; id += kHintStride) {
+            hints.emplace_back(toPoint(s.positions[s.triangles[id][0]]), id);
+        }
+        if (!hints.empty()) {
+            tree.accelerate_distance_queries(hints.cbegin(), hints.cend());
         }
     }
 };
@@ -76,7 +114,7 @@ SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
     Nearest n;
     n.point = {point.x(), point.y(), point.z()};
     n.distance = glm::length(n.point - p);
-    n.triangle = static_cast<std::uint32_t>(primitive - t.triangles.cbegin());
+    n.triangle = primitive;
     return n;
 }
 
@@ -119,15 +157,15 @@ struct PlaneInBox {
 
 class PlaneInBoxTraversal {
   public:
-    PlaneInBoxTraversal(Iterator first, std::vector<std::uint32_t>& out)
-        : first_(first), out_(out) {}
+    PlaneInBoxTraversal(const PreparedSurface& surface, std::vector<std::uint32_t>& out)
+        : triangles_{&surface}, out_(out) {}
 
     // The names below are the ones CGAL's AABB traversal calls.
     // NOLINTNEXTLINE(readability-identifier-naming)
     [[nodiscard]] static constexpr bool go_further() { return true; }
 
     void intersection(const PlaneInBox& q, const Primitive& primitive) {
-        const Triangle3& t = *primitive.id();
+        const Triangle3 t = get(triangles_, primitive.id());
         if (!CGAL::do_overlap(q.box, t.bbox())) {
             return;
         }
@@ -137,7 +175,7 @@ class PlaneInBoxTraversal {
             above += glm::dot(glm::dvec3(v.x(), v.y(), v.z()) - q.point, q.normal) >= 0.0 ? 1 : 0;
         }
         if (above == 1 || above == 2) {
-            out_.push_back(static_cast<std::uint32_t>(primitive.id() - first_));
+            out_.push_back(primitive.id());
         }
     }
 
@@ -159,7 +197,7 @@ class PlaneInBoxTraversal {
     }
 
   private:
-    Iterator first_;
+    TriangleMap triangles_;
     std::vector<std::uint32_t>& out_;
 };
 
@@ -171,7 +209,7 @@ std::vector<std::uint32_t> SurfaceIndex::trianglesOnPlane(const glm::dvec3& poin
                                                           const glm::dvec3& hi) const {
     std::vector<std::uint32_t> crossing;
     const Tree& t = tree();
-    PlaneInBoxTraversal traversal(t.triangles.cbegin(), crossing);
+    PlaneInBoxTraversal traversal(*t.surface, crossing);
     t.tree.traversal(
         PlaneInBox{.point = point, .normal = normal, .box = {lo.x, lo.y, lo.z, hi.x, hi.y, hi.z}},
         traversal);

@@ -16,10 +16,16 @@
 namespace vv::analysis::detail {
 
 /// The vertices are numbered along a Z-order curve through their centres,
-/// so that the walks over the graph read neighbouring memory.
+/// so that the walks over the graph read neighbouring memory. Centres and
+/// radii are computed in double and kept in float, the centres relative to
+/// `origin` (the middle of the points' box): rounded to one part in 16
+/// million of half the box (0.01 µm on a 300 mm tree), far below the wall's
+/// own sampling, at half the memory; the graph is held through the whole
+/// analysis.
 struct VoronoiGraph {
-    std::vector<glm::dvec3> centres;
-    std::vector<double> radii;
+    glm::dvec3 origin{0.0};
+    std::vector<glm::vec3> localCentres;  ///< centre - origin
+    std::vector<float> radii;
     /// Adjacency in compressed rows: the neighbours of v are
     /// neighbours[offsets[v] .. offsets[v + 1]).
     std::vector<std::uint32_t> offsets;
@@ -33,7 +39,11 @@ struct VoronoiGraph {
     int slabs = 1;
     int slabRetries = 0;
 
-    [[nodiscard]] std::size_t size() const noexcept { return centres.size(); }
+    [[nodiscard]] std::size_t size() const noexcept { return radii.size(); }
+    [[nodiscard]] glm::dvec3 centre(std::size_t v) const {
+        return origin + glm::dvec3(localCentres[v]);
+    }
+    [[nodiscard]] double radius(std::size_t v) const { return radii[v]; }
 };
 
 /// How the points are cut into slabs, each tetrahedralised on its own (on
@@ -44,10 +54,13 @@ struct SlabPolicy {
     /// (`bench/analysis_accuracy --slabs`); below, the margins cost more
     /// than the cores give.
     std::size_t splitFrom = 60'000;
-    /// At most about this many points per slab: the tetrahedralisation takes
-    /// about 480 bytes per point, so a slab of 400k holds about 180 MiB, and
+    /// At most about this many points per slab (its margins aside): the
+    /// tetrahedralisation takes about 480 bytes per point, and one slab per
+    /// core is held at a time. 20k keeps the demo tree's peak under 10 times
+    /// its mesh on two cores (400k: 21 times) for about 0.15 s more
+    /// (`bench/analysis_accuracy --demo`, docs/benchmarks/analysis.md), and
     /// a 10M-triangle surface is never tetrahedralised whole.
-    std::size_t maxPointsPerSlab = 400'000;
+    std::size_t maxPointsPerSlab = 20'000;
     /// Slabs wanted from splitFrom on (the worker threads by default).
     int cores = 0;
     /// A slab's first margin, in the widest local radius of the wall near
