@@ -10,9 +10,10 @@
 // mesh's own size; and the synthetic CTA segmented as `render` segments a
 // DICOM series, against the tree it was voxelised from.
 //
-//   build/release/bench/analysis_accuracy [--quick | --demo | --cta | --aneurysm | --huge
-//                                          | --slabs [ROUNDS] | --tubes [TRIANGLES]]
-//   (--quick: no 1M rows; --demo: the demo tree's row alone; --tubes: the
+//   build/release/bench/analysis_accuracy [--quick | --demo [whole] | --cta | --aneurysm
+//                                          | --huge | --slabs [ROUNDS] | --tubes [TRIANGLES]]
+//   (--quick: no 1M rows; --demo: the demo tree's rows alone, `whole`: without
+//   the decimated ones, e.g. under heaptrack; --tubes: the
 //   tube table alone at one density, 1M triangles unless given; --cta: the
 //   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
 //   rows included; --huge: a 10M-triangle cylinder alone; --slabs: the
@@ -30,6 +31,10 @@
 #include <string_view>
 #include <utility>
 #include <vector>
+
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 #include "AnalysisAgreement.h"
 #include "PreparedSurface.h"
@@ -115,6 +120,23 @@ class StageClock {
     Clock::time_point last_ = Clock::now();
 };
 
+/// The resident size now, with what earlier rows freed handed back first
+/// (else a row reuses it unseen and its peak above this reads too low); the
+/// kernel's peak is reset.
+std::uint64_t residentBaseKiB() {
+#if defined(__GLIBC__)
+    malloc_trim(0);
+#endif
+    static_cast<void>(vv::resetPeakResident());
+    return vv::residentKiB().value_or(0);
+}
+
+/// The peak resident size since residentBaseKiB() returned `base`, above it.
+double peakAboveMiB(std::uint64_t base) {
+    const auto peak = vv::peakResidentKiB().value_or(0);
+    return static_cast<double>(peak > base ? peak - base : 0) / 1024.0;
+}
+
 /// analyseVessels(), timed: the centrelines up to the first section, the
 /// sections from there.
 Analysed analyse(const vv::scene::Mesh& mesh, StageClock* clock = nullptr) {
@@ -199,10 +221,9 @@ void hugeTable() {
     o.lengthMm = 200.0;
     o.targetTriangles = 10'000'000;
     const auto truth = vv::demo::makeTubePhantom(o);
-    vv::resetPeakResident();
-    const auto before = vv::residentKiB().value_or(0);
+    const auto base = residentBaseKiB();
     const Analysed analysed = analyse(truth.mesh);
-    const auto peak = vv::peakResidentKiB().value_or(0);
+    const double peak = peakAboveMiB(base);
     const TubeErrors e = tubeErrors(truth, analysed);
     std::string analysedAs = "all";
     for (const auto& note : analysed.tree.notes) {
@@ -214,9 +235,7 @@ void hugeTable() {
     std::printf("| unjittered | %zu | %s | %.2f | %+.2f | %.2f | %.2f | %.2f | %.0f | %.0f |\n",
                 truth.mesh.triangleCount(), analysedAs.c_str(), 100.0 * e.worstAxisPerR,
                 100.0 * e.lengthError, 100.0 * e.diameterError, analysed.centrelineSeconds,
-                analysed.sectionSeconds,
-                static_cast<double>(peak > before ? peak - before : 0) / 1024.0,
-                meshMiB(truth.mesh));
+                analysed.sectionSeconds, peak, meshMiB(truth.mesh));
     for (const auto& note : analysed.tree.notes) {
         std::printf("\nnote: %s\n", note.c_str());
     }
@@ -288,21 +307,26 @@ void bifurcationTable(const std::vector<std::size_t>& densities) {
 
 /// The measured columns of one aneurysm row.
 void aneurysmRow(const vv::demo::AneurysmPhantom& truth) {
+    const auto base = residentBaseKiB();
     const Analysed analysed = analyse(truth.mesh);
+    const double peak = peakAboveMiB(base);
     const auto a = vv::bench::measureAneurysm(truth, analysed.tree, analysed.sections);
-    std::printf("%zu / %zu | %+.2f | %+.2f | %.2f | %+.2f | %+.2f | %.2f | %.2f |\n", a.branches,
-                a.ends, 100.0 * a.maxDiameterError,
-                a.widestAbscissaMm - truth.maxDiameterAbscissaMm, 100.0 * a.worstAxisDistancePerR,
-                100.0 * a.trunkLengthError, a.angleErrorDeg, analysed.centrelineSeconds,
-                analysed.sectionSeconds);
+    std::printf(
+        "%zu / %zu | %+.2f | %+.2f | %.2f | %+.2f | %+.2f | %.2f | %.2f | %.0f / %.1f (%.1f x) "
+        "|\n",
+        a.branches, a.ends, 100.0 * a.maxDiameterError,
+        a.widestAbscissaMm - truth.maxDiameterAbscissaMm, 100.0 * a.worstAxisDistancePerR,
+        100.0 * a.trunkLengthError, a.angleErrorDeg, analysed.centrelineSeconds,
+        analysed.sectionSeconds, peak, meshMiB(truth.mesh), peak / meshMiB(truth.mesh));
 }
 
 void aneurysmTable(const std::vector<std::size_t>& densities) {
     std::printf(
         "\n| aneurysm | triangles | jitter | branches / ends | max. equiv. diameter error (%%) "
         "| widest at, off the truth (mm) | axis distance (%% r) | trunk length error (%%) | "
-        "angle error (deg) | centrelines (s) | sections (s) |\n");
-    std::printf("|---|---|---|---|---|---|---|---|---|---|---|\n");
+        "angle error (deg) | centrelines (s) | sections (s) | peak memory above the mesh / "
+        "mesh (MiB) |\n");
+    std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
     for (const std::size_t triangles : densities) {
         for (const bool open : {false, true}) {
             for (const double jitter : {0.0, 0.02}) {
@@ -331,12 +355,13 @@ void printAgreement(const vv::bench::ConstructionAgreement& a) {
                 100.0 * a.diameterErrorMedian, 100.0 * a.diameterErrorP95);
 }
 
-void demoTree() {
+/// The demo tree's row and stages; then, when `withDecimated`, the tree
+/// decimated as a coarse segmentation comes.
+void demoTree(bool withDecimated = true) {
     const vv::demo::DemoTreeOptions options;
     const vv::demo::VesselTree truth = vv::demo::generateVesselTree(options);
     const auto mesh = vv::demo::buildVesselSurface(truth, options);
-    const auto before = vv::residentKiB().value_or(0);
-    StageClock clock(before);
+    StageClock clock(residentBaseKiB());
     const Analysed analysed = analyse(mesh, &clock);
     double peakMiB = 0.0;  // the stages' peaks: the clock resets the kernel's at each
     for (const auto& stage : clock.stages()) {
@@ -361,6 +386,9 @@ void demoTree() {
         "|\n|---|---|---|\n");
     for (const auto& stage : clock.stages()) {
         std::printf("| %s | %.2f | %.0f |\n", stage.name.c_str(), stage.seconds, stage.peakMiB);
+    }
+    if (!withDecimated) {
+        return;
     }
     // The same tree as a coarse segmentation comes: decimated (quadric edge
     // collapse) to 60k, 20k and 8k triangles.
@@ -503,10 +531,11 @@ int main(int argc, char** argv) {
         ctaTable();
         return 0;
     }
-    demoTree();
-    if (mode("--demo")) {
+    if (mode("--demo")) {  // --demo [whole]: the whole tree alone, not decimated too
+        demoTree(!(argc > 2 && std::strcmp(argv[2], "whole") == 0));
         return 0;
     }
+    demoTree();
     std::printf("\n");
     tubeTable(densities);
     bifurcationTable(densities);

@@ -11,6 +11,7 @@
 #include "CurveGeometry.h"
 #include "MinimalPaths.h"
 #include "PreparedSurface.h"
+#include "Release.h"
 #include "SurfaceIndex.h"
 #include "VoronoiGraph.h"
 #include "VoronoiSamples.h"
@@ -712,13 +713,20 @@ VoronoiGraph diagramOf(PreparedSurface& s, bool smoothFoldedWall, const Progress
             "where it narrows or bends" +
             (s.foldedFractionBeforeSmoothing > 0.0 ? "" : "; smooth the surface first"));
     }
+    // The diagram reads the capped surface only, whose first points and
+    // triangles are the wall's own: those are set aside while it is built
+    // (the analysis' peak) and copied back after. Only the diagram needs
+    // the caps' points and fans; they are released then.
+    const auto vertexCount = static_cast<std::ptrdiff_t>(s.positions.size());
+    const auto triangleCount = static_cast<std::ptrdiff_t>(s.triangles.size());
+    release(s.positions);
+    release(s.triangles);
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
+    s.positions.assign(s.cappedPositions.begin(), s.cappedPositions.begin() + vertexCount);
+    s.triangles.assign(s.cappedTriangles.begin(), s.cappedTriangles.begin() + triangleCount);
+    release(s.cappedPositions);
+    release(s.cappedTriangles);
     markHoles(s, g);
-    // Only the diagram needed the caps' points and fans; the steps after it
-    // cut the wall (positions, triangles, normals). Released here, as they
-    // would be held through the analysis' peak.
-    s.cappedPositions = {};
-    s.cappedTriangles = {};
     return g;
 }
 

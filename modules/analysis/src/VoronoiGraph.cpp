@@ -16,6 +16,7 @@
 #include <malloc.h>
 #endif
 
+#include "Release.h"
 #include "vv/analysis/AnalysisError.h"
 #include "vv/core/Parallel.h"
 
@@ -193,7 +194,7 @@ SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
             }
         }
         Delaunay delaunay(input.begin(), input.end());
-        input = {};
+        release(input);
         progress.throwIfCancelled();
         double needed = 0.0;
         std::size_t visited = 0;
@@ -263,7 +264,7 @@ SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
                 out.poles.push_back({ids[i], best[i]});
             }
         }
-        best = {};
+        release(best);
         // The edges within the slab, in compressed rows (count, then fill);
         // across a face whose other side is not known here, a record.
         out.localCentres.shrink_to_fit();
@@ -353,7 +354,7 @@ std::vector<Slab> slabsFor(const PreparedSurface& s, const SamplePoints& points,
         std::nth_element(coordinates.begin(), coordinates.begin() + at, coordinates.end());
         cuts.push_back(coordinates[static_cast<std::size_t>(at)]);
     }
-    coordinates = {};
+    release(coordinates);
     // The widest wall radius within half a slab of each cut.
     const double band = 0.5 * (high - low) / static_cast<double>(count);
     std::vector<double> widest(cuts.size(), 0.0);
@@ -362,7 +363,7 @@ std::vector<Slab> slabsFor(const PreparedSurface& s, const SamplePoints& points,
         if (!(r > 0.0) || !std::isfinite(r)) {
             continue;
         }
-        const double x = s.positions[v][axis];
+        const double x = s.cappedPositions[v][axis];
         for (std::size_t k = 0; k < cuts.size(); ++k) {
             if (std::abs(x - cuts[k]) <= band) {
                 widest[k] = std::max(widest[k], r);
@@ -463,7 +464,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         graph.localCentres[rank[v]] = centreAt(v);
         graph.radii[rank[v]] = parts[partOf[v]].radii[v - base[partOf[v]]];
     }
-    partOf = {};
+    release(partOf);
     // A surface vertex's pole: its widest sphere over the slabs (the first
     // slab's among equals).
     graph.poles.assign(s.cappedPositions.size(), kOutside);
@@ -475,9 +476,9 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
                 pole = v;
             }
         }
-        parts[k].poles = {};
-        parts[k].localCentres = {};
-        parts[k].radii = {};
+        release(parts[k].poles);
+        release(parts[k].localCentres);
+        release(parts[k].radii);
     }
     // A vertex left out of the diagram has its representative's pole.
     for (std::size_t v = 0; v < graph.poles.size(); ++v) {
@@ -493,7 +494,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
             record.cell = rank[base[k] + record.cell];
             faces.push_back(record);
         }
-        parts[k].faces = {};
+        release(parts[k].faces);
     }
     std::sort(faces.begin(), faces.end(), [](const FaceRecord& a, const FaceRecord& b) {
         return a.face < b.face || (a.face == b.face && a.cell < b.cell);
@@ -505,7 +506,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
             ++i;
         }
     }
-    faces = {};
+    release(faces);
     // Compressed rows, each row ascending: the same graph however the
     // points were cut into slabs.
     const auto forEachEdge = [&](const auto& visit) {
@@ -538,7 +539,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     // The slabs' parts were freed here while the graph was built beside
     // them: handed back, so that they are not counted with what the
     // analysis holds from here on (the demo tree's peak about 5 MiB lower).
-    parts = {};
+    release(parts);
     malloc_trim(0);
 #endif
     return graph;

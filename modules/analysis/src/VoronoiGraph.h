@@ -71,11 +71,10 @@ struct SlabPolicy {
 inline constexpr std::size_t kMaxSlabs = 256;
 
 /// The diagram of `surface`'s capped points chosen by `samples` (and their
-/// outward normals); a left-out point's pole is its representative's:
-/// a tetrahedron counts as inside when its circumcentre lies behind the
-/// tangent plane of each of its four points (VMTK's test), and its
-/// circumradius is finite and below the surface's diagonal. Throws
-/// AnalysisError when nothing is inside; CancelledError on a stop.
+/// outward normals; only the capped arrays are read); a left-out point's pole is its
+/// representative's: a tetrahedron counts as inside when its circumcentre lies behind the tangent
+/// plane of each of its four points (VMTK's test), and its circumradius is finite and below the
+/// surface's diagonal. Throws AnalysisError when nothing is inside; CancelledError on a stop.
 ///
 /// The points are cut across the longest side of their box into slabs
 /// (`policy`); a slab's tetrahedra whose circumspheres lie within
