@@ -48,9 +48,9 @@ SolvedView solveView(const scene::Scene& scene, const render::Camera& camera, do
 }
 
 /// vss::fittedSlopes, vss::addNormalCoherence and vssLuminance of `height`
-/// (z' over the range of `view`) under the headlight.
+/// (z' over the range of `view`) under `sceneLight`.
 Image<float> lightVss(const SolvedView& view, ImageView<const float> height,
-                      const std::stop_token& stop) {
+                      const std::stop_token& stop, const render::Lighting& sceneLight) {
     Image<glm::vec4> slopes = vss::fittedSlopes(height, view.vessels.view(), stop);
     VssLight light;
     light.dmin = view.vss.dmin;
@@ -58,7 +58,6 @@ Image<float> lightVss(const SolvedView& view, ImageView<const float> height,
     light.pixelScale = view.pixelScale;
     vss::addNormalCoherence(slopes, height, view.vessels.view(),
                             {view.vss.dmin, view.vss.dmax, light.pixelScale});
-    const render::Lighting& sceneLight = render::sceneLighting();
     light.lightX = sceneLight.direction.x;
     light.lightY = sceneLight.direction.y;
     light.lightZ = sceneLight.direction.z;
@@ -72,16 +71,16 @@ Image<float> lightVss(const SolvedView& view, ImageView<const float> height,
 }  // namespace
 
 LitVss litVss(const scene::Scene& scene, const render::Camera& camera, double p,
-              const std::stop_token& stop) {
+              const std::stop_token& stop, const render::Lighting& lighting) {
     SolvedView view = solveView(scene, camera, p, {}, stop);
     LitVss lit;
-    lit.luminance = lightVss(view, view.vss.height.view(), stop);
+    lit.luminance = lightVss(view, view.vss.height.view(), stop, lighting);
     lit.vessels = std::move(view.vessels);
     return lit;
 }
 
 LitVss referenceLitVss(const scene::Scene& scene, const render::Camera& camera, double p, int scale,
-                       const std::stop_token& stop) {
+                       const std::stop_token& stop, const render::Lighting& lighting) {
     if (scale < 1 || scale % 2 == 0) {
         throw InvalidArgumentError("referenceLitVss: the scale must be odd and >= 1, got " +
                                    std::to_string(scale));
@@ -107,7 +106,7 @@ LitVss referenceLitVss(const scene::Scene& scene, const render::Camera& camera, 
         }
     }
     LitVss lit;
-    lit.luminance = lightVss(view, height.view(), stop);
+    lit.luminance = lightVss(view, height.view(), stop, lighting);
     lit.vessels = std::move(view.vessels);
     return lit;
 }
@@ -128,18 +127,27 @@ std::vector<ArtefactRow> runArtefactBenchmark(const std::vector<ArtefactCase>& c
     }
     const render::Camera camera =
         render::presetCamera(cases.front().scene, options.width, options.height, options.view);
+    const render::Lighting lighting = render::lightingFor(options.light);
     std::vector<ArtefactRow> rows;
     for (const ArtefactCase& c : cases) {
-        const LitVss lit = litVss(c.scene, camera, options.p, options.stop);
+        const LitVss lit = litVss(c.scene, camera, options.p, options.stop, lighting);
         ArtefactRow row;
         row.label = c.label;
         for (const scene::Mesh& mesh : c.scene.meshes) {
             row.triangles += mesh.triangleCount();
         }
         row.score = artefactScore(lit.luminance.view(), lit.vessels.view(), options.score);
+        ArtefactScoreOptions band = options.score;
+        band.spacing = kBumpSpacing;
+        band.bandNear = kNearBand[0];
+        band.bandFar = kNearBand[1];
+        row.near = artefactScore(lit.luminance.view(), lit.vessels.view(), band);
+        band.bandNear = kFarBand[0];
+        band.bandFar = kFarBand[1];
+        row.far = artefactScore(lit.luminance.view(), lit.vessels.view(), band);
         if (options.referenceScale != 0) {
-            const LitVss reference =
-                referenceLitVss(c.scene, camera, options.p, options.referenceScale, options.stop);
+            const LitVss reference = referenceLitVss(
+                c.scene, camera, options.p, options.referenceScale, options.stop, lighting);
             row.reference =
                 artefactScore(reference.luminance.view(), reference.vessels.view(), options.score);
         }
@@ -151,8 +159,9 @@ std::vector<ArtefactRow> runArtefactBenchmark(const std::vector<ArtefactCase>& c
 std::string artefactTable(const std::vector<ArtefactRow>& rows) {
     std::ostringstream out;
     out << "| mesh | triangles | band pixels | score (1/1000) | reference (1/1000) | "
-           "score / reference | relative to the first |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|\n";
+           "score / reference | relative to the first | 2-6 px (1/1000) | 12-30 px (1/1000) | "
+           "2-6 px / 12-30 px |\n"
+        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     const double first = rows.empty() ? 0.0 : rows.front().score.rms;
     const auto ratio = [](double a, double b) {
         return b > 0.0 ? fixedText(a / b, 2) : std::string("-");
@@ -163,7 +172,9 @@ std::string artefactTable(const std::vector<ArtefactRow>& rows) {
             << fixedText(row.score.rms * 1000.0, 3) << " | "
             << (referenced ? fixedText(row.reference.rms * 1000.0, 3) : std::string("-")) << " | "
             << (referenced ? ratio(row.score.rms, row.reference.rms) : std::string("-")) << " | "
-            << ratio(row.score.rms, first) << " |\n";
+            << ratio(row.score.rms, first) << " | " << fixedText(row.near.rms * 1000.0, 3) << " | "
+            << fixedText(row.far.rms * 1000.0, 3) << " | " << ratio(row.near.rms, row.far.rms)
+            << " |\n";
     }
     return out.str();
 }

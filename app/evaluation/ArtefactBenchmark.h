@@ -4,6 +4,7 @@
 // Markdown table. Used by `vesselview-cli artefacts` and the tests.
 #pragma once
 
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <stop_token>
@@ -13,6 +14,7 @@
 #include "evaluation/ArtefactScore.h"
 #include "vv/core/Image.h"
 #include "vv/render/Camera.h"
+#include "vv/render/MeshStyle.h"
 #include "vv/render/ViewPresets.h"
 #include "vv/scene/Mesh.h"
 
@@ -26,10 +28,11 @@ struct LitVss {
 
 /// render::rasterizeDepth of `scene` through `camera`, vss::solve with the
 /// fast solver at power `p` (default tolerance), vss::fittedSlopes,
-/// vss::addNormalCoherence and vssLuminance under render::sceneLighting()
-/// (the headlight). Throws as those do.
+/// vss::addNormalCoherence and vssLuminance under `lighting` (by default
+/// render::sceneLighting(), the viewer's default key light). Throws as those do.
 [[nodiscard]] LitVss litVss(const scene::Scene& scene, const render::Camera& camera, double p,
-                            const std::stop_token& stop = {});
+                            const std::stop_token& stop = {},
+                            const render::Lighting& lighting = render::sceneLighting());
 
 /// The reference of the artefact score, a frame without the pixel
 /// staircase: litVss with z' on each void pixel taken from the same view
@@ -40,7 +43,8 @@ struct LitVss {
 /// void pixel whose centre the fine raster finds covered keeps its own z'.
 /// Throws InvalidArgumentError unless scale is odd and >= 1, and as litVss.
 [[nodiscard]] LitVss referenceLitVss(const scene::Scene& scene, const render::Camera& camera,
-                                     double p, int scale, const std::stop_token& stop = {});
+                                     double p, int scale, const std::stop_token& stop = {},
+                                     const render::Lighting& lighting = render::sceneLighting());
 
 struct ArtefactCase {
     std::string label;  ///< row name
@@ -52,6 +56,8 @@ struct ArtefactBenchmarkOptions {
     int height = 720;
     render::ViewPreset view = render::ViewPreset::Close;
     double p = 2.0;  ///< finite, > 0
+    /// The key light (the viewer's default unless set).
+    render::LightAngles light;
     /// The clean reference of each case (referenceLitVss at this scale): 0 =
     /// none; else 3, 5 or 7.
     int referenceScale = 3;
@@ -64,7 +70,24 @@ struct ArtefactRow {
     std::size_t triangles = 0;
     ArtefactScore score;
     ArtefactScore reference;  ///< of the supersampled reference (rms 0 without one)
+    /// The score next to the silhouettes and away from them (bands
+    /// kNearBand and kFarBand, second differences kBumpSpacing apart): a
+    /// faceted silhouette's bumps raise the first and not the second,
+    /// whatever the view's own smoothness.
+    ArtefactScore near;
+    ArtefactScore far;
 };
+
+/// The bands of ArtefactRow::near and ::far, in px from the nearest vessel
+/// pixel (issue 36's measure of bumps along silhouettes: the roughness 2-6
+/// px from the vessels over that 12-30 px away).
+inline constexpr std::array<double, 2> kNearBand{2.0, 6.0};
+inline constexpr std::array<double, 2> kFarBand{12.0, 30.0};
+/// px between the samples of those bands' second differences: a coarse
+/// facet's light or dark blob along a silhouette spans some 20-40 px in the
+/// demo's views at 1280x720, which the score's own 3 px (made for the pixel
+/// staircase) barely sees.
+inline constexpr double kBumpSpacing = 10.0;
 
 /// The score of every case, all seen through the preset camera of the FIRST
 /// case (so that a decimated copy is seen exactly as its original). Throws
@@ -76,8 +99,8 @@ struct ArtefactRow {
 /// The rows as a GitHub Markdown table: label, triangles, band pixels, score
 /// in 1/1000 of the luminance range, the reference's score and the score
 /// over it (1 = as clean as the supersampled frame; "-" without a
-/// reference), and the score relative to the first row (C-locale numbers: a
-/// machine format for the docs).
+/// reference), the score relative to the first row, and the near and far
+/// scores and their ratio (C-locale numbers: a machine format for the docs).
 [[nodiscard]] std::string artefactTable(const std::vector<ArtefactRow>& rows);
 
 }  // namespace vv::evaluation

@@ -10,6 +10,7 @@
 #include <random>
 #include <stop_token>
 
+#include "RingGrid.h"
 #include "vv/core/Error.h"
 #include "vv/meshio/MeshSmooth.h"
 
@@ -39,15 +40,7 @@ Mesh noisyCylinder(double noise) {
             index.values.push_back(static_cast<float>(mesh.positions.size() - 1));
         }
     }
-    const auto at = [](int j, int i) {
-        return static_cast<std::uint32_t>(j * kAround + (i % kAround));
-    };
-    for (int j = 0; j < kAlong; ++j) {
-        for (int i = 0; i < kAround; ++i) {
-            mesh.indices.insert(mesh.indices.end(), {at(j, i), at(j, i + 1), at(j + 1, i)});
-            mesh.indices.insert(mesh.indices.end(), {at(j, i + 1), at(j + 1, i + 1), at(j + 1, i)});
-        }
-    }
+    test::addRingGridTriangles(mesh, kAround, kAlong);
     mesh.pointArrays = {index};
     computeNormals(mesh);
     return mesh;

@@ -14,6 +14,7 @@
 #include <limits>
 #include <string>
 
+#include "MeshChecks.h"
 #include "vv/core/Error.h"
 #include "vv/core/Math.h"
 #include "vv/meshio/vtkext/RunAlgorithm.h"
@@ -25,7 +26,7 @@ namespace {
 using scene::Mesh;
 
 std::string describe(const scene::Mesh& mesh) {
-    return mesh.source.empty() ? "mesh '" + mesh.name + "'" : mesh.source.string();
+    return detail::describeMesh(mesh);
 }
 
 void checkSmoothable(const scene::Mesh& mesh, const SmoothingOptions& options) {
@@ -37,21 +38,7 @@ void checkSmoothable(const scene::Mesh& mesh, const SmoothingOptions& options) {
         throw InvalidArgumentError("the smoothing's pass band must lie in (0, 2), got " +
                                    std::to_string(options.passBand));
     }
-    if (mesh.triangleCount() == 0) {
-        throw FormatError(describe(mesh), "there are no triangles to smooth");
-    }
-    for (const std::uint32_t index : mesh.indices) {
-        if (index >= mesh.vertexCount()) {
-            throw FormatError(describe(mesh), "a triangle refers to vertex " +
-                                                  std::to_string(index) + " of " +
-                                                  std::to_string(mesh.vertexCount()));
-        }
-    }
-    for (const glm::vec3& p : mesh.positions) {
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-            throw FormatError(describe(mesh), "a point's coordinates are not finite");
-        }
-    }
+    detail::checkTriangleMesh(mesh, "smooth");
 }
 
 vtkNew<vtkWindowedSincPolyDataFilter> filterFor(const SmoothingOptions& options) {

@@ -1,0 +1,129 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// meshio's Loop subdivision on a coarse closed cylinder (a faceted vessel):
+// four triangles for one per level, the faceted wall brought towards the
+// round one it stands for, the deviation it reports is the one measured, a
+// point array linear in the position stays so; bad levels and bad meshes
+// are refused with messages naming them.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <numbers>
+
+#include "RingGrid.h"
+#include "vv/core/Error.h"
+#include "vv/meshio/MeshSubdivide.h"
+
+namespace vv::meshio {
+using scene::DataArray;
+using scene::Mesh;
+namespace {
+
+constexpr int kAround = 8;  // an octagon: facets as long as 0.77 radii
+constexpr int kAlong = 10;
+constexpr double kRadius = 10.0;
+constexpr double kLength = 100.0;
+
+/// An octagonal tube along z, its points on the circle of kRadius, closed
+/// at both ends by a centre point; with the array "linear" = x + 2 y + 3 z.
+Mesh coarseTube() {
+    Mesh mesh;
+    mesh.name = "coarse tube";
+    DataArray linear{
+        .name = "linear", .unit = "mm", .components = 1, .values = {}, .integer = false};
+    for (int j = 0; j <= kAlong; ++j) {
+        for (int i = 0; i < kAround; ++i) {
+            const double phi = 2.0 * std::numbers::pi * i / kAround;
+            mesh.positions.emplace_back(kRadius * std::cos(phi), kRadius * std::sin(phi),
+                                        kLength * j / kAlong);
+        }
+    }
+    test::addRingGridTriangles(mesh, kAround, kAlong);
+    const auto at = [](int j, int i) {
+        return static_cast<std::uint32_t>(j * kAround + (i % kAround));
+    };
+    const auto bottom = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.emplace_back(0.0F, 0.0F, 0.0F);
+    const auto top = static_cast<std::uint32_t>(mesh.positions.size());
+    mesh.positions.emplace_back(0.0F, 0.0F, static_cast<float>(kLength));
+    for (int i = 0; i < kAround; ++i) {
+        mesh.indices.insert(mesh.indices.end(), {bottom, at(0, i + 1), at(0, i)});
+        mesh.indices.insert(mesh.indices.end(), {top, at(kAlong, i), at(kAlong, i + 1)});
+    }
+    for (const glm::vec3& p : mesh.positions) {
+        linear.values.push_back(p.x + 2.0F * p.y + 3.0F * p.z);
+    }
+    mesh.pointArrays = {linear};
+    computeNormals(mesh);
+    return mesh;
+}
+
+double radiusOf(const glm::vec3& p) {
+    return std::hypot(static_cast<double>(p.x), static_cast<double>(p.y));
+}
+
+TEST(MeshSubdivide, RefinesAFacetedTubeTowardsTheRoundOne) {
+    const Mesh tube = coarseTube();
+    // The octagon's facets lie as far inside the circle as 1 - cos(pi / 8)
+    // of its radius at their middles: 7.6 % at most.
+    const double sag = kRadius * (1.0 - std::cos(std::numbers::pi / kAround));
+    const SubdividedMesh one = subdividedMesh(tube, 1);
+    const SubdividedMesh two = subdividedMesh(tube, 2);
+    EXPECT_EQ(one.mesh.triangleCount(), 4 * tube.triangleCount());
+    EXPECT_EQ(two.mesh.triangleCount(), 16 * tube.triangleCount());
+    EXPECT_EQ(one.mesh.name, tube.name);
+    ASSERT_EQ(one.mesh.normals.size(), one.mesh.positions.size());
+    // Along the middle of the tube (away from the caps, which round it off)
+    // the points of the refined wall lie closer to one circle than the
+    // octagon's points and facets do to theirs: the spread of their radii
+    // is a fraction of the facets' sag.
+    for (const SubdividedMesh* s : {&one, &two}) {
+        double lo = kRadius;
+        double hi = 0.0;
+        for (const glm::vec3& p : s->mesh.positions) {
+            if (p.z > 30.0F && p.z < 70.0F) {
+                lo = std::min(lo, radiusOf(p));
+                hi = std::max(hi, radiusOf(p));
+            }
+        }
+        EXPECT_LT(hi - lo, 0.5 * sag);
+        EXPECT_GT(lo, kRadius - 2.0 * sag);
+    }
+    // The deviation it reports: positive, under the facets' sag along the
+    // tube and the caps' rounding, the mean under the largest.
+    EXPECT_GT(one.largestDeviation, 0.0);
+    EXPECT_LT(one.largestDeviation, 0.25 * kRadius);
+    EXPECT_GT(one.meanDeviation, 0.0);
+    EXPECT_LT(one.meanDeviation, one.largestDeviation);
+    // Loop's weights sum to one: a point array linear in the position is
+    // carried as the position is.
+    ASSERT_EQ(two.mesh.pointArrays.size(), 1U);
+    const DataArray& linear = two.mesh.pointArrays.front();
+    ASSERT_EQ(linear.values.size(), two.mesh.positions.size());
+    for (std::size_t i = 0; i < linear.values.size(); ++i) {
+        const glm::vec3& p = two.mesh.positions[i];
+        EXPECT_NEAR(linear.values[i], p.x + 2.0F * p.y + 3.0F * p.z, 1e-3) << i;
+    }
+}
+
+TEST(MeshSubdivide, BadLevelsAndBadMeshesAreRefusedByName) {
+    const Mesh tube = coarseTube();
+    EXPECT_THROW(static_cast<void>(subdividedMesh(tube, 0)), InvalidArgumentError);
+    EXPECT_THROW(static_cast<void>(subdividedMesh(tube, 4)), InvalidArgumentError);
+    Mesh empty;
+    empty.name = "nothing";
+    try {
+        static_cast<void>(subdividedMesh(empty, 1));
+        ADD_FAILURE() << "an empty mesh was subdivided";
+    } catch (const FormatError& e) {
+        EXPECT_NE(std::string(e.what()).find("nothing"), std::string::npos) << e.what();
+    }
+    Mesh broken = tube;
+    broken.positions[3].y = std::nanf("");
+    EXPECT_THROW(static_cast<void>(subdividedMesh(broken, 1)), FormatError);
+    Mesh outOfRange = tube;
+    outOfRange.indices[5] = 10'000;
+    EXPECT_THROW(static_cast<void>(subdividedMesh(outOfRange, 1)), FormatError);
+}
+
+}  // namespace
+}  // namespace vv::meshio
