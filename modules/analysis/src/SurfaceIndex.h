@@ -23,7 +23,8 @@ class SurfaceIndex {
     enum class Build : std::uint8_t { Now, InBackground };
 
     /// Indexes `surface`'s triangles; the surface must outlive this object,
-    /// and its positions and triangles must not change while it is built.
+    /// and its positions and triangles must not change while it lives (the
+    /// tree reads each triangle from them when a query needs it).
     /// Built whole before the first query answers: its queries may run on
     /// several threads at once.
     explicit SurfaceIndex(const PreparedSurface& surface, Build build = Build::Now);
