@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "evaluation/ArtefactBenchmark.h"
 
+#include <algorithm>
 #include <cmath>
+#include <glm/glm.hpp>
 #include <glm/trigonometric.hpp>
 #include <sstream>
+#include <vector>
 
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
@@ -111,6 +114,37 @@ LitVss referenceLitVss(const scene::Scene& scene, const render::Camera& camera, 
     return lit;
 }
 
+double medianEdgePixels(const scene::Scene& scene, const render::Camera& camera) {
+    const glm::mat4 toClip = camera.projectionMatrix() * camera.viewMatrix();
+    const glm::vec2 half(0.5F * static_cast<float>(camera.viewportWidth()),
+                         0.5F * static_cast<float>(camera.viewportHeight()));
+    std::vector<double> lengths;
+    for (const scene::Mesh& mesh : scene.meshes) {
+        std::vector<glm::vec4> clip(mesh.positions.size());
+        for (std::size_t i = 0; i < clip.size(); ++i) {
+            clip[i] = toClip * glm::vec4(mesh.positions[i], 1.0F);
+        }
+        for (std::size_t t = 0; t + 2 < mesh.indices.size(); t += 3) {
+            for (std::size_t k = 0; k < 3; ++k) {
+                const glm::vec4& a = clip[mesh.indices[t + k]];
+                const glm::vec4& b = clip[mesh.indices[t + (k + 1) % 3]];
+                if (!(a.w > 0.0F) || !(b.w > 0.0F)) {
+                    continue;  // behind the camera
+                }
+                const glm::vec2 pa = glm::vec2(a) / a.w * half;
+                const glm::vec2 pb = glm::vec2(b) / b.w * half;
+                lengths.push_back(glm::length(pa - pb));
+            }
+        }
+    }
+    if (lengths.empty()) {
+        return 0.0;
+    }
+    const auto middle = lengths.begin() + static_cast<std::ptrdiff_t>(lengths.size() / 2);
+    std::nth_element(lengths.begin(), middle, lengths.end());
+    return *middle;
+}
+
 std::vector<ArtefactRow> runArtefactBenchmark(const std::vector<ArtefactCase>& cases,
                                               const ArtefactBenchmarkOptions& options) {
     if (cases.empty()) {
@@ -137,6 +171,7 @@ std::vector<ArtefactRow> runArtefactBenchmark(const std::vector<ArtefactCase>& c
             row.triangles += mesh.triangleCount();
         }
         row.score = artefactScore(lit.luminance.view(), lit.vessels.view(), options.score);
+        row.medianEdgePx = medianEdgePixels(c.scene, camera);
         ArtefactScoreOptions band = options.score;
         band.spacing = kBumpSpacing;
         band.bandNear = kNearBand[0];
@@ -160,8 +195,8 @@ std::string artefactTable(const std::vector<ArtefactRow>& rows) {
     std::ostringstream out;
     out << "| mesh | triangles | band pixels | score (1/1000) | reference (1/1000) | "
            "score / reference | relative to the first | 2-6 px (1/1000) | 12-30 px (1/1000) | "
-           "2-6 px / 12-30 px |\n"
-        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+           "2-6 px / 12-30 px | median edge (px) |\n"
+        << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
     const double first = rows.empty() ? 0.0 : rows.front().score.rms;
     const auto ratio = [](double a, double b) {
         return b > 0.0 ? fixedText(a / b, 2) : std::string("-");
@@ -174,7 +209,7 @@ std::string artefactTable(const std::vector<ArtefactRow>& rows) {
             << (referenced ? ratio(row.score.rms, row.reference.rms) : std::string("-")) << " | "
             << ratio(row.score.rms, first) << " | " << fixedText(row.near.rms * 1000.0, 3) << " | "
             << fixedText(row.far.rms * 1000.0, 3) << " | " << ratio(row.near.rms, row.far.rms)
-            << " |\n";
+            << " | " << fixedText(row.medianEdgePx, 1) << " |\n";
     }
     return out.str();
 }

@@ -76,7 +76,15 @@ struct ArtefactRow {
     /// whatever the view's own smoothness.
     ArtefactScore near;
     ArtefactScore far;
+    /// The median length of the meshes' triangle edges on screen (px), over
+    /// the edges in front of the camera: how coarse the facets are for this
+    /// view (0 without one).
+    double medianEdgePx = 0.0;
 };
+
+/// medianEdgePx of ArtefactRow: every triangle edge of `scene` with both
+/// ends in front of `camera`, projected into its viewport.
+[[nodiscard]] double medianEdgePixels(const scene::Scene& scene, const render::Camera& camera);
 
 /// The bands of ArtefactRow::near and ::far, in px from the nearest vessel
 /// pixel (issue 36's measure of bumps along silhouettes: the roughness 2-6
@@ -99,8 +107,9 @@ inline constexpr double kBumpSpacing = 10.0;
 /// The rows as a GitHub Markdown table: label, triangles, band pixels, score
 /// in 1/1000 of the luminance range, the reference's score and the score
 /// over it (1 = as clean as the supersampled frame; "-" without a
-/// reference), the score relative to the first row, and the near and far
-/// scores and their ratio (C-locale numbers: a machine format for the docs).
+/// reference), the score relative to the first row, the near and far
+/// scores and their ratio, and the median edge on screen (C-locale numbers:
+/// a machine format for the docs).
 [[nodiscard]] std::string artefactTable(const std::vector<ArtefactRow>& rows);
 
 }  // namespace vv::evaluation

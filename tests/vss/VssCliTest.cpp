@@ -253,9 +253,9 @@ TEST(ArtefactsCliTest, FacetBumpsOfACoarseAortaAndItsSubdividedCopy) {
     const auto control = rowOf(o.out, "aorta (smooth control)");
     const auto coarse = rowOf(o.out, "aorta decimated to 2000 |");
     const auto refined = rowOf(o.out, "aorta decimated to 2000, subdivided 1x (within ");
-    ASSERT_EQ(control.size(), 10U) << o.out;
-    ASSERT_EQ(coarse.size(), 10U) << o.out;
-    ASSERT_EQ(refined.size(), 10U) << o.out;
+    ASSERT_EQ(control.size(), 11U) << o.out;
+    ASSERT_EQ(coarse.size(), 11U) << o.out;
+    ASSERT_EQ(refined.size(), 11U) << o.out;
     EXPECT_EQ(coarse[1], "2000");
     EXPECT_EQ(refined[1], "8000");
     const double controlNear = std::stod(control[7]);
@@ -263,6 +263,13 @@ TEST(ArtefactsCliTest, FacetBumpsOfACoarseAortaAndItsSubdividedCopy) {
     const double refinedNear = std::stod(refined[7]);
     EXPECT_GT(coarseNear, 1.3 * controlNear) << o.out;
     EXPECT_LT(refinedNear, 0.8 * coarseNear) << o.out;
+    // The coarse copy's facets are longer on screen, the subdivided copy's
+    // a half of them (each edge split once).
+    const double controlEdge = std::stod(control[10]);
+    const double coarseEdge = std::stod(coarse[10]);
+    const double refinedEdge = std::stod(refined[10]);
+    EXPECT_GT(coarseEdge, 3.0 * controlEdge) << o.out;
+    EXPECT_NEAR(refinedEdge, 0.5 * coarseEdge, 0.15 * coarseEdge) << o.out;
     // The far band sees the VSS away from the silhouettes: alike for all.
     EXPECT_NEAR(std::stod(coarse[8]), std::stod(control[8]), 0.3 * std::stod(control[8]));
     const auto within = refined[0].find("within ");
