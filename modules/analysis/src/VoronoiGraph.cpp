@@ -150,7 +150,7 @@ struct PoleCandidate {
 /// by their numbers within the slab), the faces through which its vertices
 /// may meet another slab's, and the poles its spheres offer.
 struct SlabDiagram {
-    std::vector<glm::vec3> localCentres;  ///< as VoronoiGraph's, from its origin
+    std::vector<glm::vec3> localCentres;  ///< as VoronoiGraph's, in its frame
     std::vector<float> radii;
     std::vector<std::uint32_t> offsets;
     std::vector<std::uint32_t> neighbours;
@@ -173,10 +173,10 @@ constexpr std::uint32_t kOwnOutside = UINT32_MAX - 1;
 /// side); an inside one whose sphere reaches further means the margin was
 /// too narrow, and the slab is done again with a wider one. `low` and
 /// `high`: the smallest and largest coordinate of any point along the axis;
-/// the centres are kept relative to `origin`, in float.
+/// the centres and radii are kept in `frame`, in float.
 SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
                         const std::vector<std::uint32_t>& kept, Slab slab, double low, double high,
-                        const glm::dvec3& origin, const Progress& progress) {
+                        const LocalFrame& frame, const Progress& progress) {
     const int axis = slab.axis;
     for (SlabDiagram out;; ++out.retries) {
         const double from = slab.lo - slab.margin;
@@ -235,8 +235,8 @@ SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
                 continue;
             }
             cell->info() = static_cast<std::uint32_t>(out.radii.size());
-            out.localCentres.emplace_back(*centre - origin);
-            out.radii.push_back(static_cast<float>(radius));
+            out.localCentres.push_back(frame.toLocal(*centre));
+            out.radii.push_back(frame.toLocalLength(radius));
         }
         if (needed > 0.0) {
             slab.margin = std::max(1.25 * needed, 2.0 * slab.margin);
@@ -408,8 +408,12 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         pointsLow = glm::min(pointsLow, points.position(i));
         pointsHigh = glm::max(pointsHigh, points.position(i));
     }
-    const glm::dvec3 origin =
-        samples.kept.empty() ? glm::dvec3(0.0) : 0.5 * (pointsLow + pointsHigh);
+    LocalFrame frame;
+    if (!samples.kept.empty()) {
+        frame.origin = 0.5 * (pointsLow + pointsHigh);
+        frame.scale =
+            std::max(0.5 * glm::length(pointsHigh - pointsLow), std::numeric_limits<double>::min());
+    }
     // The slabs on every core; each frees its tetrahedralisation when done,
     // so at most one per core is held.
     std::vector<SlabDiagram> parts(slabs.size());
@@ -419,7 +423,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
             for (long k = begin; k < end; ++k) {
                 const auto i = static_cast<std::size_t>(k);
                 parts[i] =
-                    slabDiagram(s, points, samples.kept, slabs[i], low, high, origin, progress);
+                    slabDiagram(s, points, samples.kept, slabs[i], low, high, frame, progress);
             }
         },
         progress.stopToken());
@@ -457,7 +461,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     };
     const auto wideCentreAt = [&](std::size_t v) { return glm::dvec3(centreAt(v)); };
     const std::vector<std::uint32_t> rank = zOrderRanks(total, wideCentreAt);
-    graph.origin = origin;
+    graph.frame = frame;
     graph.localCentres.resize(total);
     graph.radii.resize(total);
     for (std::size_t v = 0; v < total; ++v) {

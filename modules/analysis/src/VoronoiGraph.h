@@ -15,17 +15,33 @@
 
 namespace vv::analysis::detail {
 
+/// Where the graph's float coordinates are measured from: `origin` (the
+/// middle of the points' box), in units of `scale` mm (half its diagonal),
+/// so that every centre and radius is a few units at most whatever the
+/// mesh's size (in mm, a huge mesh's far circumcentres overflow a float).
+struct LocalFrame {
+    glm::dvec3 origin{0.0};
+    double scale = 1.0;  ///< > 0
+
+    [[nodiscard]] glm::vec3 toLocal(const glm::dvec3& p) const {
+        return glm::vec3((p - origin) / scale);
+    }
+    [[nodiscard]] float toLocalLength(double mm) const { return static_cast<float>(mm / scale); }
+    [[nodiscard]] glm::dvec3 fromLocal(const glm::vec3& p) const {
+        return origin + scale * glm::dvec3(p);
+    }
+};
+
 /// The vertices are numbered along a Z-order curve through their centres,
 /// so that the walks over the graph read neighbouring memory. Centres and
-/// radii are computed in double and kept in float, the centres relative to
-/// `origin` (the middle of the points' box): rounded to one part in 16
-/// million of half the box (0.01 µm on a 300 mm tree), far below the wall's
-/// own sampling, at half the memory; the graph is held through the whole
-/// analysis.
+/// radii are computed in double and kept in float in `frame`: rounded to
+/// one part in 16 million of half the points' box (0.01 µm on a 300 mm
+/// tree), far below the wall's own sampling, at half the memory; the graph
+/// is held through the whole analysis.
 struct VoronoiGraph {
-    glm::dvec3 origin{0.0};
-    std::vector<glm::vec3> localCentres;  ///< centre - origin
-    std::vector<float> radii;
+    LocalFrame frame;
+    std::vector<glm::vec3> localCentres;  ///< frame.toLocal(centre)
+    std::vector<float> radii;             ///< frame.toLocalLength(radius)
     /// Adjacency in compressed rows: the neighbours of v are
     /// neighbours[offsets[v] .. offsets[v + 1]).
     std::vector<std::uint32_t> offsets;
@@ -41,9 +57,11 @@ struct VoronoiGraph {
 
     [[nodiscard]] std::size_t size() const noexcept { return radii.size(); }
     [[nodiscard]] glm::dvec3 centre(std::size_t v) const {
-        return origin + glm::dvec3(localCentres[v]);
+        return frame.fromLocal(localCentres[v]);
     }
-    [[nodiscard]] double radius(std::size_t v) const { return radii[v]; }
+    [[nodiscard]] double radius(std::size_t v) const {
+        return frame.scale * static_cast<double>(radii[v]);
+    }
 };
 
 /// How the points are cut into slabs, each tetrahedralised on its own (on
