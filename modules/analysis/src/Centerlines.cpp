@@ -447,6 +447,10 @@ void measureRadii(const SurfaceIndex& surface, std::vector<Branch>& branches,
 /// The points of `profile` over [from, to] every `step`, both ends included.
 std::vector<CenterlinePoint> stretch(const PathProfile& profile, double from, double to,
                                      double step) {
+    // A span that ends where it starts (a path whose end lies on another
+    // path) may come out a rounding error short: it has no length, not a
+    // negative one.
+    to = std::max(to, from);
     std::vector<CenterlinePoint> points;
     for (double s = from; s < to - 1e-6 * step; s += step) {
         points.push_back(profile.at(s));

@@ -164,11 +164,12 @@ PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source, const Pro
     const std::size_t n = graph.size();
     PathTree tree;
     tree.source = source;
+    tree.scale = graph.frame.scale;
     tree.labels.resize(n);
     std::vector<PathTree::Label>& labels = tree.labels;
     for (std::size_t v = 0; v < n; ++v) {
         labels[v] = {
-            .cost = std::numeric_limits<double>::infinity(), .lengthMm = 0.0F, .previous = kNone};
+            .cost = std::numeric_limits<double>::infinity(), .length = 0.0F, .previous = kNone};
     }
     using Entry = std::pair<double, std::uint32_t>;
     std::vector<Entry> heap;
@@ -190,7 +191,7 @@ PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source, const Pro
             progress.throwIfCancelled();
         }
         const glm::dvec3 at = graph.centre(v);
-        const double length0 = labels[v].lengthMm;
+        const double length0 = labels[v].length;
         const double inverse0 = 0.5 / graph.radius(v);
         for (std::uint32_t e = graph.offsets[v]; e < graph.offsets[v + 1]; ++e) {
             const std::uint32_t w = graph.neighbours[e];
@@ -199,7 +200,7 @@ PathTree minimalPaths(const VoronoiGraph& graph, std::uint32_t source, const Pro
             const double next = cost + length * (inverse0 + 0.5 / graph.radius(w));
             if (next < label.cost) {
                 label.cost = next;
-                label.lengthMm = static_cast<float>(length0 + length);
+                label.length = static_cast<float>(length0 + length / graph.frame.scale);
                 label.previous = v;
                 push(next, w);
             }

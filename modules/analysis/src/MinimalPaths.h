@@ -15,19 +15,24 @@
 namespace vv::analysis::detail {
 
 /// The shortest-path tree from one Voronoi vertex: one 16-byte record per
-/// vertex (a relaxation touches one cache line, and the search's records
-/// are the tree, not copied into it: it is held through the analysis' peak).
+/// vertex (its length in float; to 0.1 µm over 1 m) (a relaxation touches one cache line, and the
+/// search's records are the tree, not copied into it: it is held through the analysis' peak).
 struct PathTree {
     struct Label {
-        double cost = 0.0;           ///< integral of ds / R along the path; +inf: unreachable
-        float lengthMm = 0.0F;       ///< arc length of the same path (to 0.1 µm over 1 m)
+        double cost = 0.0;  ///< integral of ds / R along the path; +inf: unreachable
+        /// Arc length of the same path in the graph's units (its frame's
+        /// scale: lengthMm() in mm), so that a huge mesh's never overflows.
+        float length = 0.0F;
         std::uint32_t previous = 0;  ///< towards the source; UINT32_MAX at the source
     };
     std::uint32_t source = 0;
+    double scale = 1.0;  ///< mm per unit of Label::length (the graph's frame)
     std::vector<Label> labels;
 
     [[nodiscard]] double cost(std::uint32_t v) const { return labels[v].cost; }
-    [[nodiscard]] double lengthMm(std::uint32_t v) const { return labels[v].lengthMm; }
+    [[nodiscard]] double lengthMm(std::uint32_t v) const {
+        return scale * static_cast<double>(labels[v].length);
+    }
     [[nodiscard]] std::uint32_t previous(std::uint32_t v) const { return labels[v].previous; }
     [[nodiscard]] bool reaches(std::uint32_t v) const;
     /// The path from the source to `v`, source first. `v` must be reachable.
