@@ -390,6 +390,24 @@ std::vector<Slab> slabsFor(const PreparedSurface& s, const SamplePoints& points,
     return slabs;
 }
 
+/// The graph's frame for the kept points: the middle of their box, half
+/// its diagonal (the smallest positive double when they coincide).
+LocalFrame frameOf(const SamplePoints& points, const std::vector<std::uint32_t>& kept) {
+    LocalFrame frame;
+    if (kept.empty()) {
+        return frame;
+    }
+    glm::dvec3 lo(std::numeric_limits<double>::max());
+    glm::dvec3 hi(std::numeric_limits<double>::lowest());
+    for (const std::uint32_t i : kept) {
+        lo = glm::min(lo, points.position(i));
+        hi = glm::max(hi, points.position(i));
+    }
+    frame.origin = 0.5 * (lo + hi);
+    frame.scale = std::max(0.5 * glm::length(hi - lo), std::numeric_limits<double>::min());
+    return frame;
+}
+
 }  // namespace
 
 VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& samples,
@@ -402,18 +420,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
         slabsFor(s, points, samples, slabCount(samples.kept.size(), policy), policy.marginPerRadius,
                  low, high);
     // The centres are kept in float from this point (VoronoiGraph).
-    glm::dvec3 pointsLow(std::numeric_limits<double>::max());
-    glm::dvec3 pointsHigh(std::numeric_limits<double>::lowest());
-    for (const std::uint32_t i : samples.kept) {
-        pointsLow = glm::min(pointsLow, points.position(i));
-        pointsHigh = glm::max(pointsHigh, points.position(i));
-    }
-    LocalFrame frame;
-    if (!samples.kept.empty()) {
-        frame.origin = 0.5 * (pointsLow + pointsHigh);
-        frame.scale =
-            std::max(0.5 * glm::length(pointsHigh - pointsLow), std::numeric_limits<double>::min());
-    }
+    const LocalFrame frame = frameOf(points, samples.kept);
     // The slabs on every core; each frees its tetrahedralisation when done,
     // so at most one per core is held.
     std::vector<SlabDiagram> parts(slabs.size());

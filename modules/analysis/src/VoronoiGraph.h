@@ -24,7 +24,7 @@ struct LocalFrame {
     double scale = 1.0;  ///< > 0
 
     [[nodiscard]] glm::vec3 toLocal(const glm::dvec3& p) const {
-        return glm::vec3((p - origin) / scale);
+        return static_cast<glm::vec3>((p - origin) / scale);
     }
     [[nodiscard]] float toLocalLength(double mm) const { return static_cast<float>(mm / scale); }
     [[nodiscard]] glm::dvec3 fromLocal(const glm::vec3& p) const {
