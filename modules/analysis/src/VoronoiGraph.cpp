@@ -438,7 +438,8 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     // The slabs' tetrahedra were freed on the worker threads, into arenas
     // this thread does not allocate from: handed back to the system, or the
     // graph and the surface index below take new memory beside them (the
-    // demo tree's peak 184 -> 147 MiB). One slab ran on this thread.
+    // demo tree's peak 184 -> 147 MiB, measured with one slab per core). One
+    // slab ran on this thread.
     if (slabs.size() > 1) {
         malloc_trim(0);
     }

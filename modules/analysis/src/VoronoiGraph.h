@@ -74,8 +74,9 @@ struct SlabPolicy {
     std::size_t splitFrom = 60'000;
     /// At most about this many points per slab (its margins aside): the
     /// tetrahedralisation takes about 480 bytes per point, and one slab per
-    /// core is held at a time. 20k keeps the demo tree's peak under 10 times
-    /// its mesh on two cores (400k: 21 times) for about 0.15 s more
+    /// core is held at a time. With 20k (and the float graph) the demo
+    /// tree's peak heap is 80 MB above its mesh on two cores, against 196 MB
+    /// with 400k and the graph in double, for about 0.2 s more
     /// (`bench/analysis_accuracy --demo`, docs/benchmarks/analysis.md), and
     /// a 10M-triangle surface is never tetrahedralised whole.
     std::size_t maxPointsPerSlab = 20'000;

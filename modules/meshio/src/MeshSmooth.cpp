@@ -25,10 +25,6 @@ namespace {
 
 using scene::Mesh;
 
-std::string describe(const scene::Mesh& mesh) {
-    return detail::describeMesh(mesh);
-}
-
 void checkSmoothable(const scene::Mesh& mesh, const SmoothingOptions& options) {
     if (options.iterations < 1 || options.iterations > 500) {
         throw InvalidArgumentError("smoothing needs 1 to 500 iterations, got " +
@@ -100,12 +96,12 @@ scene::Mesh smoothedMesh(const scene::Mesh& mesh, const SmoothingOptions& option
     }
     vtkNew<vtkWindowedSincPolyDataFilter> filter = filterFor(options);
     filter->SetInputData(detail::bareTriangles(normalised));
-    detail::runAlgorithm(filter, describe(mesh), "mesh smoothing", progress, 0.0, 0.95,
+    detail::runAlgorithm(filter, detail::describeMesh(mesh), "mesh smoothing", progress, 0.0, 0.95,
                          "smoothing");
     vtkPoints* points = filter->GetOutput()->GetPoints();
     if (points == nullptr ||
         points->GetNumberOfPoints() != static_cast<vtkIdType>(mesh.vertexCount())) {
-        throw FormatError(describe(mesh), "smoothing did not keep the mesh's points");
+        throw FormatError(detail::describeMesh(mesh), "smoothing did not keep the mesh's points");
     }
     const double scale = half / filterGain(options);
     scene::Mesh out = mesh;

@@ -23,10 +23,6 @@
 namespace vv::meshio {
 namespace {
 
-std::string describe(const scene::Mesh& mesh) {
-    return detail::describeMesh(mesh);
-}
-
 void checkSubdividable(const scene::Mesh& mesh, int levels) {
     if (levels < 1 || levels > 3) {
         throw InvalidArgumentError("subdivision needs 1 to 3 levels, got " +
@@ -48,7 +44,7 @@ SubdividedMesh subdividedMesh(const scene::Mesh& mesh, int levels, const Progres
     vtkNew<vtkLoopSubdivisionFilter> filter;
     filter->SetNumberOfSubdivisions(levels);
     filter->SetInputData(input);
-    detail::runAlgorithm(filter, describe(mesh), "mesh subdivision", progress, 0.0, 0.8,
+    detail::runAlgorithm(filter, detail::describeMesh(mesh), "mesh subdivision", progress, 0.0, 0.8,
                          "subdividing");
     SubdividedMesh out;
     out.mesh = detail::meshFromPolyData(filter->GetOutput(), mesh.source);
