@@ -17,7 +17,8 @@
 //   tube table alone at one density, 1M triangles unless given; --cta: the
 //   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
 //   rows included; --huge: a 10M-triangle cylinder alone; --slabs: the
-//   Voronoi diagram in one slab against one per core, in turn)
+//   Voronoi diagram in one slab, in slabs with one margin per cut, and in
+//   slabs with margins per column, in turn)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -473,33 +474,45 @@ void slabTable(int rounds) {
          vv::demo::buildVesselSurface(vv::demo::generateVesselTree(treeOptions), treeOptions)},
         {"aneurysm, closed, 2 % jitter", vv::demo::makeAneurysmPhantom(aneurysmOptions).mesh}};
     std::printf(
-        "| surface | triangles | points | slabs | seconds, median / fastest | diagram vertices "
-        "|\n|---|---|---|---|---|---|\n");
+        "| surface | triangles | points | slabs | margins | points tetrahedralised | "
+        "seconds, median / fastest | peak resident above the start, median (MiB) | "
+        "diagram vertices |\n|---|---|---|---|---|---|---|---|---|\n");
     for (const auto& [name, mesh] : meshes) {
         const detail::PreparedSurface s =
             detail::prepareSurface(mesh, std::nullopt, {}, vv::analysis::kDefaultMaxTriangles);
         const detail::VoronoiSamples samples = detail::chooseVoronoiSamples(s, {});
         detail::SlabPolicy whole;
         whole.splitFrom = SIZE_MAX;
-        const std::array<detail::SlabPolicy, 2> policies{whole, detail::SlabPolicy{}};
-        std::array<std::vector<double>, 2> seconds;
-        std::array<int, 2> slabs{};
+        detail::SlabPolicy perCut;
+        perCut.marginColumns = 1;
+        const std::array<std::pair<const char*, detail::SlabPolicy>, 3> policies{
+            {{"-", whole}, {"one per cut", perCut}, {"per column", detail::SlabPolicy{}}}};
+        std::array<std::vector<double>, 3> seconds;
+        std::array<std::vector<double>, 3> peaks;
+        std::array<int, 3> slabs{};
+        std::array<std::size_t, 3> taken{};
         std::size_t vertices = 0;
         for (int round = 0; round < rounds; ++round) {
             for (std::size_t p = 0; p < policies.size(); ++p) {
+                const auto base = residentBaseKiB();
                 const auto start = Clock::now();
                 const detail::VoronoiGraph g =
-                    detail::buildVoronoiGraph(s, samples, {}, policies[p]);
+                    detail::buildVoronoiGraph(s, samples, {}, policies[p].second);
                 seconds[p].push_back(std::chrono::duration<double>(Clock::now() - start).count());
+                peaks[p].push_back(peakAboveMiB(base));
                 slabs[p] = g.slabs;
+                taken[p] = g.tetrahedralisedPoints;
                 vertices = g.size();
             }
         }
         for (std::size_t p = 0; p < policies.size(); ++p) {
             std::ranges::sort(seconds[p]);
-            std::printf("| %s | %zu | %zu | %d | %.2f / %.2f | %zu |\n", name.c_str(),
-                        mesh.triangleCount(), samples.kept.size() + samples.addedPositions.size(),
-                        slabs[p], seconds[p][seconds[p].size() / 2], seconds[p].front(), vertices);
+            std::ranges::sort(peaks[p]);
+            std::printf("| %s | %zu | %zu | %d | %s | %zu | %.2f / %.2f | %.0f | %zu |\n",
+                        name.c_str(), mesh.triangleCount(),
+                        samples.kept.size() + samples.addedPositions.size(), slabs[p],
+                        policies[p].first, taken[p], seconds[p][seconds[p].size() / 2],
+                        seconds[p].front(), peaks[p][peaks[p].size() / 2], vertices);
         }
         std::fflush(stdout);
     }

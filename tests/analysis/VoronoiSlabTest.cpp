@@ -17,6 +17,7 @@
 #include "VoronoiSamples.h"
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/BifurcationPhantom.h"
+#include "vv/demo/DemoTree.h"
 #include "vv/demo/TubePhantom.h"
 
 namespace vv::analysis::detail {
@@ -109,6 +110,47 @@ TEST(VoronoiSlabs, ARoughTubeInSlabsIsTheWholeDiagram) {
     expectSameDiagram(
         demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 5.0, 20'000, 0.02)).mesh,
         manySlabs());
+}
+
+TEST(VoronoiSlabs, MarginsPerColumnTakeFewerPointsThanOnePerCut) {
+    // The demo tree's trunk beside its thin branches: one margin per cut is
+    // set by the trunk's radius for the branches too.
+    demo::DemoTreeOptions options;
+    options.generations = 4;
+    options.maxTriangles = 100'000;
+    const scene::Mesh mesh = demo::buildVesselSurface(demo::generateVesselTree(options), options);
+    // Eight slabs either way: as many as "cores", which are never made fewer.
+    SlabPolicy perColumnPolicy = manySlabs();
+    perColumnPolicy.maxPointsPerSlab = SIZE_MAX;
+    perColumnPolicy.cores = 8;
+    SlabPolicy perCut = perColumnPolicy;
+    perCut.marginColumns = 1;
+    const VoronoiGraph onePerCut = expectSameDiagram(mesh, perCut);
+    const VoronoiGraph perColumn = expectSameDiagram(mesh, perColumnPolicy);
+    EXPECT_EQ(perColumn.slabs, 8);
+    EXPECT_EQ(onePerCut.slabs, 8);
+    EXPECT_LT(static_cast<double>(perColumn.tetrahedralisedPoints),
+              0.95 * static_cast<double>(onePerCut.tetrahedralisedPoints))
+        << "points tetrahedralised: one margin per cut " << onePerCut.tetrahedralisedPoints
+        << ", per column " << perColumn.tetrahedralisedPoints;
+}
+
+TEST(VoronoiSlabs, SlabsThinnerThanTheirMarginsAreMadeFewer) {
+    // A rough aneurysm, every point kept, asked for slabs of 500 points:
+    // a few millimetres each across a sac 50 mm wide.
+    demo::AneurysmPhantomOptions options;
+    options.targetTriangles = 20'000;
+    options.jitterFraction = 0.02;
+    SlabPolicy thin = manySlabs();
+    thin.maxPointsPerSlab = 500;
+    const VoronoiGraph g = expectSameDiagram(demo::makeAneurysmPhantom(options).mesh, thin);
+    const PreparedSurface s =
+        prepareSurface(demo::makeAneurysmPhantom(options).mesh, std::nullopt, {}, 3'000'000);
+    const std::size_t kept = chooseVoronoiSamples(s, {}).kept.size();
+    EXPECT_LT(static_cast<std::size_t>(g.slabs), (kept + 499) / 500 / 2)
+        << "slabs for " << kept << " points kept";
+    EXPECT_LE(static_cast<double>(g.tetrahedralisedPoints), 3.0 * static_cast<double>(kept))
+        << g.slabs << " slabs";
 }
 
 }  // namespace

@@ -22,8 +22,10 @@
 namespace vv::analysis {
 namespace {
 
+using detail::handBackFreedMemory;
 using detail::PathTree;
 using detail::PreparedSurface;
+using detail::release;
 using detail::SurfaceIndex;
 using detail::VoronoiGraph;
 
@@ -130,6 +132,12 @@ struct ResolvedEnd {
     /// A tip's Voronoi vertex farthest along its vessel, in its cap (`vertex`
     /// is cut back from it); kNone for other ends.
     std::uint32_t capVertex = kNone;
+    /// A tip whose point on the surface is not yet known (placeTip): it is
+    /// where the ray from `vertex`'s centre along `tipAxis` meets the
+    /// surface, or (no ray: a zero axis, or no hit) the surface point
+    /// nearest to `capVertex`'s centre.
+    bool placed = true;
+    glm::dvec3 tipAxis{0.0};
 };
 
 /// The pole of the surface vertex nearest to `p` among those of `triangle`
@@ -226,8 +234,7 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const Surf
 /// flat cap, over a rounded one), so the path is cut back where it still has
 /// two radii to go and continued straight along the vessel's axis there to
 /// the surface: the centre of a flat cap, the apex of a rounded one.
-ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceIndex& surface, const PathTree& tree,
-                   std::uint32_t tip) {
+ResolvedEnd tipEnd(const VoronoiGraph& g, const PathTree& tree, std::uint32_t tip) {
     const std::vector<std::uint32_t> path = tree.pathTo(tip);
     // Two radii from the tip, by the widest sphere on the way: on a rough
     // cap the path's last spheres are the spikes' (1 mm in a 10 mm
@@ -248,15 +255,28 @@ ResolvedEnd tipEnd(const VoronoiGraph& g, const SurfaceIndex& surface, const Pat
     r.vertex = path[cut];
     r.capVertex = tip;
     r.end.radiusMm = g.radius(path[cut]);
-    const glm::dvec3 from = g.centre(path[cut]);
-    const glm::dvec3 along = from - g.centre(path[back]);
-    std::optional<glm::dvec3> hit;
+    const glm::dvec3 along = g.centre(path[cut]) - g.centre(path[back]);
     if (back < cut && glm::length(along) > 0.0) {
-        hit = surface.firstHit(from, glm::normalize(along));
+        r.tipAxis = glm::normalize(along);
     }
-    r.end.position = hit ? *hit : surface.nearest(g.centre(tip)).point;
-    r.end.requested = r.end.position;
+    r.placed = false;
     return r;
+}
+
+/// Places a tip found by tipEnd on the surface (ResolvedEnd::placed). The
+/// tips are found before the surface's index is built, which then never
+/// shares the memory with the minimal paths' covering grids.
+void placeTip(const VoronoiGraph& g, const SurfaceIndex& surface, ResolvedEnd& r) {
+    if (r.placed) {
+        return;
+    }
+    std::optional<glm::dvec3> hit;
+    if (r.tipAxis != glm::dvec3(0.0)) {
+        hit = surface.firstHit(g.centre(r.vertex), r.tipAxis);
+    }
+    r.end.position = hit ? *hit : surface.nearest(g.centre(r.capVertex)).point;
+    r.end.requested = r.end.position;
+    r.placed = true;
 }
 
 /// The radius a vessel has near its tip: going back along the path from the
@@ -274,7 +294,7 @@ double radiusBehindTip(const VoronoiGraph& g, const PathTree& tree, std::uint32_
 /// Source end when none is given: the widest open end, or on a closed
 /// surface the tip of the widest vessel.
 ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
-                          const SurfaceIndex& surface, const Progress& progress) {
+                          const Progress& progress) {
     int widest = -1;
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
         if (!s.loops[i].hole &&
@@ -303,7 +323,7 @@ ResolvedEnd defaultSource(const PreparedSurface& s, const VoronoiGraph& g,
             best = i;
         }
     }
-    return tipEnd(g, surface, fromWidest, tips[best]);
+    return tipEnd(g, fromWidest, tips[best]);
 }
 
 /// One source-to-target path, smoothed and measured, at the output step.
@@ -621,21 +641,28 @@ std::vector<ResolvedEnd> resolveTargets(const PreparedSurface& s, const VoronoiG
     }
     for (const std::uint32_t tip :
          detail::uncoveredTips(g, tree, known, kCoverFactor, kMinBranchRadii, progress)) {
-        targets.push_back(tipEnd(g, surface, tree, tip));
+        targets.push_back(tipEnd(g, tree, tip));
     }
     return targets;
 }
 
+/// A target, and the minimal path to it from the source.
+struct TargetPath {
+    ResolvedEnd end;
+    std::vector<std::uint32_t> vertices;  ///< source first
+    double lengthMm = 0.0;                ///< along the graph
+};
+
 /// Refuses a path with more than kMaxPathPoints points at `step`.
-void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const PathTree& tree,
-                      const ResolvedEnd& source, const std::vector<ResolvedEnd>& targets,
-                      double step) {
+void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const ResolvedEnd& source,
+                      const std::vector<TargetPath>& targets, double step) {
     const double start = glm::length(g.centre(source.vertex) - source.end.position);
-    for (const ResolvedEnd& target : targets) {
-        const double length = start + tree.lengthMm(target.vertex) +
-                              glm::length(target.end.position - g.centre(target.vertex));
+    for (const TargetPath& target : targets) {
+        const ResolvedEnd& end = target.end;
+        const double length =
+            start + target.lengthMm + glm::length(end.end.position - g.centre(end.vertex));
         if (!(length / step <= kMaxPathPoints)) {
-            fail(s, "the centreline to the end " + pointText(target.end.position) + " would be " +
+            fail(s, "the centreline to the end " + pointText(end.end.position) + " would be " +
                         fixedText(length, 0) + " mm long, more than " +
                         fixedText(kMaxPathPoints, 0) + " points at a step of " +
                         fixedText(step, 2) + " mm (is the surface in mm?)");
@@ -643,11 +670,52 @@ void checkPathLengths(const PreparedSurface& s, const VoronoiGraph& g, const Pat
     }
 }
 
+/// The targets (resolveTargets) and their paths in `tree`, longest first
+/// (the main vessel is branch 0), every end placed on the surface. The
+/// tree is freed before the surface's index is first asked for: the two
+/// were the analysis' peak together.
+std::vector<TargetPath> targetPaths(const PreparedSurface& s, const VoronoiGraph& g,
+                                    const SurfaceIndex& surface, ResolvedEnd& source, PathTree tree,
+                                    const CenterlineOptions& options, const Progress& progress) {
+    std::vector<TargetPath> targets;
+    for (ResolvedEnd& end : resolveTargets(s, g, surface, source, tree, options, progress)) {
+        targets.push_back({.end = end, .vertices = {}, .lengthMm = 0.0});
+    }
+    if (targets.empty()) {
+        fail(s, "the surface has only one vessel end; a centreline needs two");
+    }
+    for (TargetPath& target : targets) {
+        const ResolvedEnd& end = target.end;
+        if (end.vertex == kNone || !tree.reaches(end.vertex)) {
+            placeTip(g, surface, source);
+            fail(s, "no path inside the surface joins the source " +
+                        pointText(source.end.position) + " and the end " +
+                        pointText(end.end.position) + surfaceHints(s));
+        }
+        target.vertices = tree.pathTo(end.vertex);
+        target.lengthMm = tree.lengthMm(end.vertex);
+    }
+    release(tree.labels);
+    // The covering grids and the tree are freed: their pages handed back
+    // before the index takes its own.
+    handBackFreedMemory();
+    placeTip(g, surface, source);
+    for (TargetPath& target : targets) {
+        placeTip(g, surface, target.end);
+    }
+    handBackFreedMemory();  // what building the index freed
+    checkPathLengths(s, g, source, targets, options.stepMm);
+    std::stable_sort(targets.begin(), targets.end(), [](const TargetPath& a, const TargetPath& b) {
+        return a.lengthMm > b.lengthMm;
+    });
+    return targets;
+}
+
 }  // namespace
 
 /// Prepares `mesh` for `options`, builds its diagram and then its index (the
 /// tetrahedralisation is freed before the index takes its memory; the index
-/// is built on another thread as the step begins), and returns
+/// is built when a step first asks for it), and returns
 /// step(surface, diagram, index).
 template <class Step>
 auto onPrepared(const scene::Mesh& mesh, const CenterlineOptions& options, const Progress& progress,
@@ -657,9 +725,10 @@ auto onPrepared(const scene::Mesh& mesh, const CenterlineOptions& options, const
     PreparedSurface s =
         detail::prepareSurface(mesh, options.source, progress, options.maxTriangles);
     const VoronoiGraph g = detail::diagramOf(s, options.smoothFoldedWall, progress);
-    // Built on another core while the first minimal paths and the tips are
-    // searched (they need no index); its first query waits for it.
-    const SurfaceIndex surface(s, SurfaceIndex::Build::InBackground);
+    // Built when first asked (a given end; else the tips, once the minimal
+    // paths and their covering grids are freed: beside them it was the
+    // analysis' peak).
+    const SurfaceIndex surface(s, SurfaceIndex::Build::OnFirstQuery);
     return std::forward<Step>(step)(s, g, surface);
 }
 
@@ -725,11 +794,16 @@ VoronoiGraph diagramOf(PreparedSurface& s, bool smoothFoldedWall, const Progress
     const auto triangleCount = static_cast<std::ptrdiff_t>(s.triangles.size());
     release(s.positions);
     release(s.triangles);
+    // What preparing the surface and choosing the samples freed, handed
+    // back before the slabs take theirs (the demo tree's resident peak in
+    // the diagram's stage 74-81 -> 74-75 MiB).
+    handBackFreedMemory();
     VoronoiGraph g = detail::buildVoronoiGraph(s, samples, progress.sub(0.05, 0.6));
     s.positions.assign(s.cappedPositions.begin(), s.cappedPositions.begin() + vertexCount);
     s.triangles.assign(s.cappedTriangles.begin(), s.cappedTriangles.begin() + triangleCount);
     release(s.cappedPositions);
     release(s.cappedTriangles);
+    handBackFreedMemory();
     markHoles(s, g);
     return g;
 }
@@ -738,29 +812,13 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
                              const CenterlineOptions& options, const Progress& progress) {
     progress.report(0.6, "Finding the vessels' ends");
 
-    const ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")
-                                              : defaultSource(s, g, surface, progress);
+    ResolvedEnd source = options.source ? givenEnd(s, g, surface, *options.source, "source")
+                                        : defaultSource(s, g, progress);
     if (source.vertex == kNone) {
         fail(s, "no inscribed sphere touches the source end");
     }
-    const PathTree tree = detail::minimalPaths(g, source.vertex, progress);
-    std::vector<ResolvedEnd> targets =
-        resolveTargets(s, g, surface, source, tree, options, progress);
-    if (targets.empty()) {
-        fail(s, "the surface has only one vessel end; a centreline needs two");
-    }
-    for (const ResolvedEnd& target : targets) {
-        if (target.vertex == kNone || !tree.reaches(target.vertex)) {
-            fail(s, "no path inside the surface joins the source " +
-                        pointText(source.end.position) + " and the end " +
-                        pointText(target.end.position) + surfaceHints(s));
-        }
-    }
-    checkPathLengths(s, g, tree, source, targets, options.stepMm);
-    // Longest path first: the main vessel is branch 0.
-    std::sort(targets.begin(), targets.end(), [&](const ResolvedEnd& a, const ResolvedEnd& b) {
-        return tree.lengthMm(a.vertex) > tree.lengthMm(b.vertex);
-    });
+    std::vector<TargetPath> targets = targetPaths(
+        s, g, surface, source, detail::minimalPaths(g, source.vertex, progress), options, progress);
 
     progress.report(0.7, "Tracing the centrelines");
     CenterlineTree result;
@@ -775,15 +833,15 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         0, static_cast<long>(targets.size()), 1,
         [&](long begin, long end) {
             for (long i = begin; i < end; ++i) {
-                const ResolvedEnd& target = targets[static_cast<std::size_t>(i)];
+                TargetPath& target = targets[static_cast<std::size_t>(i)];
                 paths[static_cast<std::size_t>(i)] =
-                    profilePath(g, source, target, tree.pathTo(target.vertex), options.stepMm);
+                    profilePath(g, source, target.end, target.vertices, options.stepMm);
             }
         },
         progress.stopToken());
     for (std::size_t i = 0; i < targets.size(); ++i) {
         paths[i].endIndex = static_cast<int>(result.ends.size());
-        result.ends.push_back(targets[i].end);
+        result.ends.push_back(targets[i].end.end);
     }
     result.branches = orderBranches(splitIntoBranches(paths, g.size()), paths, options.stepMm);
     measureRadii(surface, result.branches, progress);

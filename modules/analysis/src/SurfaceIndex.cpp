@@ -8,6 +8,7 @@
 
 #include <boost/iterator/counting_iterator.hpp>
 #include <boost/property_map/property_map.hpp>
+#include <chrono>
 #include <cmath>
 #include <future>
 #include <iterator>
@@ -92,12 +93,16 @@ SurfaceIndex::SurfaceIndex(const PreparedSurface& surface, Build build)
         return;
     }
     Tree* tree = tree_.get();
-    built_ = std::async(std::launch::async, [tree, &surface] { tree->fill(surface); }).share();
+    built_ = std::async(build == Build::InBackground ? std::launch::async : std::launch::deferred,
+                        [tree, &surface] { tree->fill(surface); })
+                 .share();
 }
 
 SurfaceIndex::~SurfaceIndex() {
-    if (built_.valid()) {
-        built_.wait();  // the thread still writes to tree_
+    // A thread may still write to tree_; a build never asked for is not run.
+    if (built_.valid() &&
+        built_.wait_for(std::chrono::seconds(0)) != std::future_status::deferred) {
+        built_.wait();
     }
 }
 

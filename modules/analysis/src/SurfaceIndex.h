@@ -17,10 +17,12 @@ namespace vv::analysis::detail {
 
 class SurfaceIndex {
   public:
-    /// Where the index is built: here, or on a thread of its own from here
+    /// Where the index is built: here; on a thread of its own from here
     /// on (the first query waits for it, and rethrows what building threw,
-    /// e.g. std::bad_alloc; the destructor waits for it too).
-    enum class Build : std::uint8_t { Now, InBackground };
+    /// e.g. std::bad_alloc; the destructor waits for it too); or by the
+    /// first query, on its thread (queries on other threads wait for it;
+    /// never, when nothing asks).
+    enum class Build : std::uint8_t { Now, InBackground, OnFirstQuery };
 
     /// Indexes `surface`'s triangles; the surface must outlive this object,
     /// and its positions and triangles must not change while it lives (the
@@ -66,7 +68,7 @@ class SurfaceIndex {
     struct Tree;
     [[nodiscard]] const Tree& tree() const;
     std::unique_ptr<Tree> tree_;
-    std::shared_future<void> built_;  ///< valid when built in the background
+    std::shared_future<void> built_;  ///< valid unless built Now
 };
 
 }  // namespace vv::analysis::detail

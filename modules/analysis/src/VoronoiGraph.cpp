@@ -8,14 +8,12 @@
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 #include <utility>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
+#include "CutMargins.h"
 #include "Release.h"
 #include "vv/analysis/AnalysisError.h"
 #include "vv/core/Parallel.h"
@@ -32,6 +30,11 @@ using Tds = CGAL::Triangulation_data_structure_3<VertexBase, CellBase>;
 using Delaunay = CGAL::Delaunay_triangulation_3<Kernel, Tds>;
 
 constexpr std::uint32_t kOutside = UINT32_MAX;
+
+/// The most points the slabs may take with their first margins, per point
+/// kept, before they are made fewer and wider (chooseSlabs). The demo
+/// tree's take 1.65 with margins per column.
+constexpr double kMostTakenPerKept = 2.0;
 
 /// Below this volume, relative to the product of its edges from one corner,
 /// a tetrahedron is flat to the digits of a double: its circumcentre is
@@ -124,13 +127,75 @@ std::vector<std::uint32_t> zOrderRanks(std::size_t count, const PointAt& point) 
 
 /// A slab of space across `axis`: the diagram's vertices whose centres lie
 /// in [lo, hi) belong to it (its core; ±infinity at the ends), and it is
-/// tetrahedralised from the points within `margin` of the core.
+/// tetrahedralised from the points of the core and those within a margin
+/// of it, per column (`below` past lo, `above` past hi).
 struct Slab {
     int axis = 0;
     double lo = -std::numeric_limits<double>::infinity();
     double hi = std::numeric_limits<double>::infinity();
-    double margin = 0.0;
+    CutMargins below;
+    CutMargins above;
+
+    /// Whether the slab takes the point `p`.
+    [[nodiscard]] bool takes(const glm::dvec3& p) const {
+        const double x = p[axis];
+        if (x < lo) {
+            return x >= lo - below.at(p);
+        }
+        return x <= hi || x <= hi + above.at(p);
+    }
 };
+
+/// How far the sphere of `radius` about `centre` reaches past the points
+/// `slab` took, below and above (0 where it stays within them: every point
+/// inside it was taken). `low`, `high`: the extreme coordinates of all the
+/// points along the axis (a margin that reaches past them took every point).
+std::array<double, 2> reachPast(const Slab& slab, const glm::dvec3& centre, double radius,
+                                double low, double high) {
+    std::array<double, 2> reach{0.0, 0.0};
+    const double c = centre[slab.axis];
+    if (slab.lo > low && c - radius < slab.lo) {
+        const double margin = slab.below.leastOver(centre, radius);
+        const double past = slab.lo - (c - radius);
+        reach[0] = past > margin && slab.lo - margin > low ? past : 0.0;
+    }
+    if (slab.hi < high && c + radius > slab.hi) {
+        const double margin = slab.above.leastOver(centre, radius);
+        const double past = (c + radius) - slab.hi;
+        reach[1] = past > margin && slab.hi + margin < high ? past : 0.0;
+    }
+    return reach;
+}
+
+/// A sphere that reached past the points its slab took.
+struct Overreach {
+    glm::dvec3 centre{0.0};
+    double radius = 0.0;
+    std::array<double, 2> reach{};
+};
+
+/// Widens `slab`'s margins so that each of `spheres` stays within them, by
+/// a quarter more than it reached, at least doubling the columns it
+/// covers; from the third try on, every column to the widest (the old
+/// uniform margin, doubling each time).
+void widen(Slab& slab, const std::vector<Overreach>& spheres, int retries) {
+    // Doubled from the margins the spheres were found with (doubling the
+    // raised ones in turn grew them without bound).
+    const std::array<CutMargins, 2> before{slab.below, slab.above};
+    for (const Overreach& o : spheres) {
+        std::array<CutMargins*, 2> side{&slab.below, &slab.above};
+        for (std::size_t k = 0; k < 2; ++k) {
+            if (o.reach[k] > 0.0) {
+                const double least = before[k].leastOver(o.centre, o.radius);
+                side[k]->raise(o.centre, o.radius, std::max(1.25 * o.reach[k], 2.0 * least));
+            }
+        }
+    }
+    if (retries >= 2) {
+        slab.below.raiseAll(slab.below.largest());
+        slab.above.raiseAll(slab.above.largest());
+    }
+}
 
 /// A face of a tetrahedron (its three point ids, ascending) and the diagram
 /// vertex on one side of it, its number within its slab.
@@ -157,6 +222,7 @@ struct SlabDiagram {
     std::vector<FaceRecord> faces;
     std::vector<PoleCandidate> poles;
     int retries = 0;
+    std::size_t points = 0;  ///< tetrahedralised in the last try
 };
 
 /// A cell of a slab's triangulation that is not one of its diagram
@@ -169,9 +235,10 @@ constexpr std::uint32_t kOwnOutside = UINT32_MAX - 1;
 /// The Delaunay diagram inside the surface of the points of `slab`, the
 /// vertices whose centres lie in its core. A tetrahedron of the slab's points
 /// is one of all the points' when its circumsphere lies within the points
-/// taken (within `margin` of the core, or beyond the last point on that
-/// side); an inside one whose sphere reaches further means the margin was
-/// too narrow, and the slab is done again with a wider one. `low` and
+/// taken (reachPast: within the margins of the columns it covers, or beyond
+/// the last point on that side); an inside one whose sphere reaches further
+/// means those margins were too narrow, and the slab is done again with
+/// them widened (widen). `low` and
 /// `high`: the smallest and largest coordinate of any point along the axis;
 /// the centres and radii are kept in `frame`, in float.
 SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
@@ -179,24 +246,21 @@ SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
                         const LocalFrame& frame, const Progress& progress) {
     const int axis = slab.axis;
     for (SlabDiagram out;; ++out.retries) {
-        const double from = slab.lo - slab.margin;
-        const double to = slab.hi + slab.margin;
-        const bool lowOpen = from <= low;
-        const bool highOpen = to >= high;
         std::vector<std::uint32_t> ids;
         std::vector<std::pair<Kernel::Point_3, std::uint32_t>> input;
         for (const std::uint32_t i : kept) {
             const glm::dvec3& p = points.position(i);
-            if (p[axis] >= from && p[axis] <= to) {
+            if (slab.takes(p)) {
                 input.emplace_back(Kernel::Point_3(p.x, p.y, p.z),
                                    static_cast<std::uint32_t>(ids.size()));
                 ids.push_back(i);
             }
         }
+        out.points = input.size();
         Delaunay delaunay(input.begin(), input.end());
         release(input);
         progress.throwIfCancelled();
-        double needed = 0.0;
+        std::vector<Overreach> overreaching;
         std::size_t visited = 0;
         for (auto cell = delaunay.finite_cells_begin(); cell != delaunay.finite_cells_end();
              ++cell) {
@@ -220,8 +284,8 @@ SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
             if (!(radius < s.diagonalMm)) {
                 continue;
             }
-            const double c = (*centre)[axis];
-            const bool empty = (lowOpen || c - radius >= from) && (highOpen || c + radius <= to);
+            const std::array<double, 2> reach = reachPast(slab, *centre, radius, low, high);
+            const bool empty = reach[0] == 0.0 && reach[1] == 0.0;
             bool inside = true;
             for (const std::uint32_t id : g) {
                 inside = inside && glm::dot(points.normal(id), *centre - points.position(id)) < 0.0;
@@ -231,15 +295,15 @@ SlabDiagram slabDiagram(const PreparedSurface& s, const SamplePoints& points,
                 continue;
             }
             if (!empty) {
-                needed = std::max({needed, slab.lo - (c - radius), (c + radius) - slab.hi});
+                overreaching.push_back({*centre, radius, reach});
                 continue;
             }
             cell->info() = static_cast<std::uint32_t>(out.radii.size());
             out.localCentres.push_back(frame.toLocal(*centre));
             out.radii.push_back(frame.toLocalLength(radius));
         }
-        if (needed > 0.0) {
-            slab.margin = std::max(1.25 * needed, 2.0 * slab.margin);
+        if (!overreaching.empty()) {
+            widen(slab, overreaching, out.retries);
             out.localCentres.clear();
             out.radii.clear();
             continue;
@@ -316,16 +380,18 @@ std::size_t slabCount(std::size_t points, const SlabPolicy& policy) {
     }
     const auto cores = static_cast<std::size_t>(policy.cores > 0 ? policy.cores : workerCount());
     const std::size_t most = std::max<std::size_t>(policy.maxPointsPerSlab, 1);
-    return std::clamp<std::size_t>(std::max(cores, (points + most - 1) / most), 1, kMaxSlabs);
+    const std::size_t needed = points / most + (points % most != 0 ? 1 : 0);
+    return std::clamp<std::size_t>(std::max(cores, needed), 1, kMaxSlabs);
 }
 
 /// The `count` slabs for the kept points, across the
 /// longest side of their bounding box, cut at the points' quantiles; each
-/// with a first margin of `marginPerRadius` times the widest local radius of
-/// the wall near its cuts, or its own width where the wall says nothing.
+/// with a first margin per column of the policy's marginPerRadius times the widest
+/// local radius of the wall near its cuts there, or half a slab's width
+/// where the wall says nothing near a cut.
 std::vector<Slab> slabsFor(const PreparedSurface& s, const SamplePoints& points,
-                           const VoronoiSamples& samples, std::size_t count, double marginPerRadius,
-                           double& low, double& high) {
+                           const VoronoiSamples& samples, std::size_t count,
+                           const SlabPolicy& policy, double& low, double& high) {
     glm::dvec3 lo(std::numeric_limits<double>::max());
     glm::dvec3 hi(std::numeric_limits<double>::lowest());
     for (const std::uint32_t i : samples.kept) {
@@ -355,39 +421,78 @@ std::vector<Slab> slabsFor(const PreparedSurface& s, const SamplePoints& points,
         cuts.push_back(coordinates[static_cast<std::size_t>(at)]);
     }
     release(coordinates);
-    // The widest wall radius within half a slab of each cut.
+    // Per cut and column, the margin for the widest wall radius whose
+    // spheres may cross the cut there: a sphere of radius r touching a
+    // vertex lies within 2r of it. A cut with no radius near it (a rough or
+    // flat wall) takes half a slab on each side everywhere.
     const double band = 0.5 * (high - low) / static_cast<double>(count);
-    std::vector<double> widest(cuts.size(), 0.0);
+    std::vector<CutMargins> margins(cuts.size(),
+                                    CutMargins(axis, lo, hi, policy.marginColumns, 0.0));
+    std::vector<bool> seen(cuts.size(), false);
     for (std::size_t v = 0; v < samples.wallRadiusMm.size(); ++v) {
         const double r = samples.wallRadiusMm[v];
         if (!(r > 0.0) || !std::isfinite(r)) {
             continue;
         }
-        const double x = s.cappedPositions[v][axis];
+        const glm::dvec3& p = s.cappedPositions[v];
         for (std::size_t k = 0; k < cuts.size(); ++k) {
-            if (std::abs(x - cuts[k]) <= band) {
-                widest[k] = std::max(widest[k], r);
+            if (std::abs(p[axis] - cuts[k]) <= std::min(2.0 * r, band)) {
+                margins[k].raise(p, 2.0 * r, policy.marginPerRadius * r);
+                seen[k] = true;
             }
+        }
+    }
+    for (std::size_t k = 0; k < cuts.size(); ++k) {
+        if (!seen[k]) {
+            margins[k].raiseAll(2.0 * band);
         }
     }
     for (std::size_t k = 0; k < count; ++k) {
         Slab& slab = slabs[k];
         if (k > 0) {
             slab.lo = cuts[k - 1];
+            slab.below = margins[k - 1];
         }
         if (k + 1 < count) {
             slab.hi = cuts[k];
+            slab.above = margins[k];
         }
-        double margin = 0.0;
-        for (const std::size_t cut : {k - 1, k}) {
-            if (cut < cuts.size()) {
-                margin = std::max(margin,
-                                  widest[cut] > 0.0 ? marginPerRadius * widest[cut] : 2.0 * band);
-            }
-        }
-        slab.margin = margin;
     }
     return slabs;
+}
+
+/// How many points the slabs take in all, their margins' with their cores'.
+std::size_t pointsTaken(const SamplePoints& points, const std::vector<std::uint32_t>& kept,
+                        const std::vector<Slab>& slabs) {
+    std::size_t taken = 0;
+    for (const std::uint32_t i : kept) {
+        for (const Slab& slab : slabs) {
+            taken += slab.takes(points.position(i)) ? 1 : 0;
+        }
+    }
+    return taken;
+}
+
+/// The slabs for the policy: slabCount() of them, fewer (not below one
+/// per core) while their first margins would take more than
+/// kMostTakenPerKept times the kept points. Slabs thinner than the
+/// vessels across them are mostly margin: a rough 1M-triangle aneurysm
+/// (every point kept) in 36 slabs 5 mm wide, its sac 50 mm across, took
+/// 2.4M points for its 491k and 6.9 s for the 2.4 s of one slab.
+std::vector<Slab> chooseSlabs(const PreparedSurface& s, const SamplePoints& points,
+                              const VoronoiSamples& samples, const SlabPolicy& policy, double& low,
+                              double& high) {
+    const auto cores = std::clamp<std::size_t>(
+        static_cast<std::size_t>(policy.cores > 0 ? policy.cores : workerCount()), 1, kMaxSlabs);
+    std::size_t count = slabCount(samples.kept.size(), policy);
+    for (;;) {
+        std::vector<Slab> slabs = slabsFor(s, points, samples, count, policy, low, high);
+        if (count <= cores || static_cast<double>(pointsTaken(points, samples.kept, slabs)) <=
+                                  kMostTakenPerKept * static_cast<double>(samples.kept.size())) {
+            return slabs;
+        }
+        count = std::max(cores, count * 2 / 3);
+    }
 }
 
 /// The graph's frame for the kept points: the middle of their box, half
@@ -416,9 +521,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     const SamplePoints points(s, samples);
     double low = 0.0;
     double high = 0.0;
-    const std::vector<Slab> slabs =
-        slabsFor(s, points, samples, slabCount(samples.kept.size(), policy), policy.marginPerRadius,
-                 low, high);
+    const std::vector<Slab> slabs = chooseSlabs(s, points, samples, policy, low, high);
     // The centres are kept in float from this point (VoronoiGraph).
     const LocalFrame frame = frameOf(points, samples.kept);
     // The slabs on every core; each frees its tetrahedralisation when done,
@@ -434,16 +537,14 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
             }
         },
         progress.stopToken());
-#if defined(__GLIBC__)
     // The slabs' tetrahedra were freed on the worker threads, into arenas
     // this thread does not allocate from: handed back to the system, or the
     // graph and the surface index below take new memory beside them (the
     // demo tree's peak 184 -> 147 MiB, measured with one slab per core). One
     // slab ran on this thread.
     if (slabs.size() > 1) {
-        malloc_trim(0);
+        handBackFreedMemory();
     }
-#endif
     progress.report(0.8, "Joining the Voronoi diagram");
     VoronoiGraph graph;
     graph.slabs = static_cast<int>(slabs.size());
@@ -451,6 +552,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     for (std::size_t k = 0; k < parts.size(); ++k) {
         base[k + 1] = base[k] + static_cast<std::uint32_t>(parts[k].radii.size());
         graph.slabRetries += parts[k].retries;
+        graph.tetrahedralisedPoints += parts[k].points;
     }
     const std::size_t total = base.back();
     if (total == 0) {
@@ -551,9 +653,7 @@ VoronoiGraph buildVoronoiGraph(const PreparedSurface& s, const VoronoiSamples& s
     // freed, and handed back (glibc), so that they are not counted with what
     // the analysis holds from here on (the demo tree's peak about 5 MiB lower).
     release(parts);
-#if defined(__GLIBC__)
-    malloc_trim(0);
-#endif
+    handBackFreedMemory();
     return graph;
 }
 

@@ -54,6 +54,9 @@ struct VoronoiGraph {
     /// times a slab was done again with a wider margin.
     int slabs = 1;
     int slabRetries = 0;
+    /// Points in the slabs' tetrahedralisations (each slab's last try):
+    /// the points kept, in one slab; in several, the margins' points too.
+    std::size_t tetrahedralisedPoints = 0;
 
     [[nodiscard]] std::size_t size() const noexcept { return radii.size(); }
     [[nodiscard]] glm::dvec3 centre(std::size_t v) const {
@@ -73,19 +76,25 @@ struct SlabPolicy {
     /// than the cores give.
     std::size_t splitFrom = 60'000;
     /// At most about this many points per slab (its margins aside): the
-    /// tetrahedralisation takes about 480 bytes per point, and one slab per
-    /// core is held at a time. With 20k (and the float graph) the demo
-    /// tree's peak heap is 80 MB above its mesh on two cores, against 196 MB
-    /// with 400k and the graph in double, for about 0.2 s more
-    /// (`bench/analysis_accuracy --demo`, docs/benchmarks/analysis.md), and
-    /// a 10M-triangle surface is never tetrahedralised whole.
-    std::size_t maxPointsPerSlab = 20'000;
+    /// tetrahedralisation takes about 500 bytes per point, and one slab per
+    /// core is held at a time. With 14k, margins per column and the float
+    /// graph, the demo tree's peak heap is 72 MB above the analysis' start
+    /// on two cores (196 MB with 400k, one margin per cut and the graph in
+    /// double), for about 0.15 s more (`bench/analysis_accuracy --demo`,
+    /// docs/benchmarks/analysis.md), and a 10M-triangle surface is never
+    /// tetrahedralised whole.
+    std::size_t maxPointsPerSlab = 14'000;
     /// Slabs wanted from splitFrom on (the worker threads by default).
     int cores = 0;
     /// A slab's first margin, in the widest local radius of the wall near
     /// its cuts (the inscribed spheres there are about that wide); a slab
     /// whose margin proves too narrow is done again with a wider one.
     double marginPerRadius = 1.25;
+    /// The margins are set per column of a grid across the slabs' axis,
+    /// this many columns along its longer side (1: one margin per cut, set
+    /// by the widest vessel there). With 64, the demo tree's slabs take
+    /// 1.4 times their core's points, against 1.8 with one margin per cut.
+    int marginColumns = 64;
 };
 inline constexpr std::size_t kMaxSlabs = 256;
 
