@@ -1,12 +1,14 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // meshio's Loop subdivision on a coarse closed cylinder (a faceted vessel):
 // four triangles for one per level, the faceted wall brought towards the
-// round one it stands for, the deviation it reports is the one measured, a
-// point array linear in the position stays so; bad levels and bad meshes
-// are refused with messages naming them.
+// round one it stands for, the deviation it reports is the one measured,
+// the arrays taken from the input where each point lies over it (labels
+// stay labels, no data stays where it was); bad levels and bad meshes are
+// refused with messages naming them.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 #include "RingGrid.h"
@@ -94,15 +96,63 @@ TEST(MeshSubdivide, RefinesAFacetedTubeTowardsTheRoundOne) {
     EXPECT_LT(one.largestDeviation, 0.25 * kRadius);
     EXPECT_GT(one.meanDeviation, 0.0);
     EXPECT_LT(one.meanDeviation, one.largestDeviation);
-    // Loop's weights sum to one: a point array linear in the position is
-    // carried as the position is.
+    // Each point takes the input's values where it lies over the input: a
+    // point array linear in the position differs from its value at the
+    // point by at most its gradient (sqrt 14) times the point's distance
+    // from the input, and is exact where the point lies on it.
     ASSERT_EQ(two.mesh.pointArrays.size(), 1U);
     const DataArray& linear = two.mesh.pointArrays.front();
     ASSERT_EQ(linear.values.size(), two.mesh.positions.size());
+    int off = 0;
     for (std::size_t i = 0; i < linear.values.size(); ++i) {
         const glm::vec3& p = two.mesh.positions[i];
-        EXPECT_NEAR(linear.values[i], p.x + 2.0F * p.y + 3.0F * p.z, 1e-3) << i;
+        const double exact = p.x + 2.0 * p.y + 3.0 * p.z;
+        EXPECT_LE(std::abs(linear.values[i] - exact), std::sqrt(14.0) * two.largestDeviation + 1e-3)
+            << i;
+        off += std::abs(linear.values[i] - exact) > 1e-3 ? 1 : 0;
     }
+    EXPECT_GT(off, 0);  // the points moved off the input, and the values stayed its
+}
+
+TEST(MeshSubdivide, LabelsStayLabelsAndNoDataStaysWhereItWas) {
+    Mesh tube = coarseTube();
+    // A label per half of the tube, and one vertex without data.
+    DataArray label{
+        .name = "segment_id", .unit = "", .components = 1, .values = {}, .integer = true};
+    DataArray gaps{.name = "wss", .unit = "Pa", .components = 1, .values = {}, .integer = false};
+    for (const glm::vec3& p : tube.positions) {
+        label.values.push_back(p.z < 0.5F * kLength ? 3.0F : 7.0F);
+        gaps.values.push_back(1.0F);
+    }
+    const std::size_t hole = 5 * kAround + 2;  // ring 5, the tube's middle
+    gaps.values[hole] = std::numeric_limits<float>::quiet_NaN();
+    tube.pointArrays = {label, gaps};
+    const SubdividedMesh two = subdividedMesh(tube, 2);
+    ASSERT_EQ(two.mesh.pointArrays.size(), 2U);
+    const DataArray& labels = two.mesh.pointArrays[0];
+    const DataArray& values = two.mesh.pointArrays[1];
+    EXPECT_TRUE(labels.integer);
+    int nan = 0;
+    // The longest edge of a triangle at the hole: its quads' diagonal.
+    const double edge =
+        std::hypot(glm::length(tube.positions[1] - tube.positions[0]), kLength / kAlong);
+    for (std::size_t i = 0; i < labels.values.size(); ++i) {
+        const glm::vec3& p = two.mesh.positions[i];
+        // Never a mix of 3 and 7; each half keeps its own away from the cut.
+        EXPECT_TRUE(labels.values[i] == 3.0F || labels.values[i] == 7.0F) << labels.values[i];
+        if (p.z < 0.4F * kLength) {
+            EXPECT_EQ(labels.values[i], 3.0F) << i;
+        } else if (p.z > 0.6F * kLength) {
+            EXPECT_EQ(labels.values[i], 7.0F) << i;
+        }
+        if (std::isnan(values.values[i])) {
+            ++nan;
+            EXPECT_LT(glm::length(p - tube.positions[hole]), edge) << i;
+        } else {
+            EXPECT_EQ(values.values[i], 1.0F) << i;
+        }
+    }
+    EXPECT_GT(nan, 0);
 }
 
 TEST(MeshSubdivide, BadLevelsAndBadMeshesAreRefusedByName) {

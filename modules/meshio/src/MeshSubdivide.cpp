@@ -13,7 +13,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
+#include <vector>
 
 #include "MeshChecks.h"
 #include "vv/core/Error.h"
@@ -31,33 +33,87 @@ void checkSubdividable(const scene::Mesh& mesh, int levels) {
     detail::checkTriangleMesh(mesh, "subdivide");
 }
 
+/// The point arrays of `input` at the point `p` of its triangle `t`
+/// (barycentric weights `w`): interpolated linearly, as the input's own
+/// triangles show them; an integer (id, label) array, or one with no data
+/// at a corner that counts, takes the value of the nearest corner.
+void transferArrays(const scene::Mesh& input, std::size_t t, const std::array<double, 3>& w,
+                    std::vector<scene::DataArray>& arrays, std::size_t at) {
+    const std::array<std::uint32_t, 3> corner{input.indices[3 * t], input.indices[3 * t + 1],
+                                              input.indices[3 * t + 2]};
+    const auto nearest = static_cast<std::size_t>(std::max_element(w.begin(), w.end()) - w.begin());
+    for (std::size_t a = 0; a < arrays.size(); ++a) {
+        const scene::DataArray& from = input.pointArrays[a];
+        scene::DataArray& to = arrays[a];
+        const auto n = static_cast<std::size_t>(std::max(from.components, 1));
+        for (std::size_t c = 0; c < n; ++c) {
+            const auto value = [&](std::size_t k) { return from.values[corner[k] * n + c]; };
+            double sum = 0.0;
+            bool finite = !from.integer;
+            for (std::size_t k = 0; k < 3 && finite; ++k) {
+                finite = w[k] <= 0.0 || std::isfinite(value(k));
+                sum += w[k] * static_cast<double>(value(k));
+            }
+            to.values[at * n + c] = finite ? static_cast<float>(sum) : value(nearest);
+        }
+    }
+}
+
+/// Barycentric weights of `p` (on or near the triangle a, b, c), clamped to
+/// the triangle.
+std::array<double, 3> barycentric(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                                  const glm::dvec3& c) {
+    const glm::dvec3 u = b - a;
+    const glm::dvec3 v = c - a;
+    const glm::dvec3 d = p - a;
+    const double uu = glm::dot(u, u);
+    const double uv = glm::dot(u, v);
+    const double vv = glm::dot(v, v);
+    const double det = uu * vv - uv * uv;
+    if (!(det > 0.0)) {
+        return {1.0, 0.0, 0.0};  // a degenerate triangle: its first corner
+    }
+    double s = (vv * glm::dot(d, u) - uv * glm::dot(d, v)) / det;
+    double t = (uu * glm::dot(d, v) - uv * glm::dot(d, u)) / det;
+    s = std::clamp(s, 0.0, 1.0);
+    t = std::clamp(t, 0.0, 1.0 - s);
+    return {1.0 - s - t, s, t};
+}
+
 }  // namespace
 
 SubdividedMesh subdividedMesh(const scene::Mesh& mesh, int levels, const Progress& progress) {
     checkSubdividable(mesh, levels);
-    vtkSmartPointer<vtkPolyData> input = detail::polyDataFromMesh(mesh);
-    // Normals are computed afresh from the finer triangles; a cell array
-    // would have to be spread over each triangle's children, which the
-    // filter does not do.
-    input->GetPointData()->SetNormals(nullptr);
-    input->GetCellData()->Initialize();
+    // The filter refines the bare triangles; normals are computed afresh
+    // and the arrays taken from the input below (the filter's own averages
+    // would smooth a peak of wall shear stress away, and mix labels).
     vtkNew<vtkLoopSubdivisionFilter> filter;
     filter->SetNumberOfSubdivisions(levels);
-    filter->SetInputData(input);
+    filter->SetInputData(detail::bareTriangles(mesh));
     detail::runAlgorithm(filter, detail::describeMesh(mesh), "mesh subdivision", progress, 0.0, 0.8,
                          "subdividing");
     SubdividedMesh out;
     out.mesh = detail::meshFromPolyData(filter->GetOutput(), mesh.source);
     out.mesh.name = mesh.name;
     out.mesh.source = mesh.source;
-    // How far the refined surface lies from the input's triangles.
+    out.mesh.pointArrays.clear();
+    out.mesh.cellArrays.clear();
+    out.mesh.labelNames = mesh.labelNames;
+    const std::size_t count = out.mesh.positions.size();
+    for (const scene::DataArray& array : mesh.pointArrays) {
+        scene::DataArray copy = array;
+        copy.values.assign(count * static_cast<std::size_t>(std::max(array.components, 1)), 0.0F);
+        out.mesh.pointArrays.push_back(std::move(copy));
+    }
+    // How far the refined surface lies from the input's triangles, and the
+    // input's arrays where each point lies over them.
     vtkSmartPointer<vtkPolyData> surface = detail::bareTriangles(mesh);
     vtkNew<vtkStaticCellLocator> locator;
     locator->SetDataSet(surface);
     locator->BuildLocator();
     vtkNew<vtkGenericCell> cell;
     double sum = 0.0;
-    for (std::size_t i = 0; i < out.mesh.positions.size(); ++i) {
+    for (std::size_t i = 0; i < count; ++i) {
         if (i % 65536 == 0) {
             progress.throwIfCancelled();
         }
@@ -71,10 +127,41 @@ SubdividedMesh subdividedMesh(const scene::Mesh& mesh, int levels, const Progres
         const double d = std::sqrt(std::max(distance2, 0.0));
         out.largestDeviation = std::max(out.largestDeviation, d);
         sum += d;
+        if (cellId < 0 || out.mesh.pointArrays.empty()) {
+            continue;
+        }
+        const auto t = static_cast<std::size_t>(cellId);
+        const auto corner = [&](std::size_t k) {
+            return glm::dvec3(mesh.positions[mesh.indices[3 * t + k]]);
+        };
+        transferArrays(
+            mesh, t,
+            barycentric({closest[0], closest[1], closest[2]}, corner(0), corner(1), corner(2)),
+            out.mesh.pointArrays, i);
     }
-    out.meanDeviation =
-        out.mesh.positions.empty() ? 0.0 : sum / static_cast<double>(out.mesh.positions.size());
+    out.meanDeviation = count == 0 ? 0.0 : sum / static_cast<double>(count);
     progress.report(1.0, "subdividing");
+    return out;
+}
+
+SubdividedScene subdividedScene(const scene::Scene& scene, int levels, const Progress& progress) {
+    SubdividedScene out;
+    out.scene.frame = scene.frame;
+    std::size_t done = 0;
+    const std::size_t total = std::max<std::size_t>(scene.triangleCount(), 1);
+    double sum = 0.0;
+    std::size_t points = 0;
+    for (const scene::Mesh& mesh : scene.meshes) {
+        const double from = static_cast<double>(done) / static_cast<double>(total);
+        done += mesh.triangleCount();
+        const double to = static_cast<double>(done) / static_cast<double>(total);
+        SubdividedMesh refined = subdividedMesh(mesh, levels, progress.sub(from, to));
+        out.largestDeviation = std::max(out.largestDeviation, refined.largestDeviation);
+        sum += refined.meanDeviation * static_cast<double>(refined.mesh.positions.size());
+        points += refined.mesh.positions.size();
+        out.scene.meshes.push_back(std::move(refined.mesh));
+    }
+    out.meanDeviation = points == 0 ? 0.0 : sum / static_cast<double>(points);
     return out;
 }
 
