@@ -291,6 +291,10 @@
         <source>Values</source>
         <translation>Werte</translation>
     </message>
+    <message>
+        <source>Smooth coarse meshes up close</source>
+        <translation>Grobe Netze aus der Nähe glätten</translation>
+    </message>
 </context>
 <context>
     <name>vv::app::SliceReport</name>
@@ -1423,6 +1427,22 @@ Ersetzen?</translation>
     <message>
         <source>&amp;Analyse Results…</source>
         <translation>Ergebnisse &amp;auswerten…</translation>
+    </message>
+    <message>
+        <source>Smooth &amp;Coarse Meshes Up Close</source>
+        <translation>&amp;Grobe Netze aus der Nähe glätten</translation>
+    </message>
+    <message>
+        <source>Where a coarse mesh&apos;s facets are large on screen, draw it from a smooth (subdivided) copy, so that the lit void space surface shows no blob per facet; the status bar says how far the copy moves the wall</source>
+        <translation>Wo die Facetten eines groben Netzes auf dem Bildschirm groß sind, es aus einer glatten (unterteilten) Kopie zeichnen, damit die beleuchtete Void Space Surface keinen Fleck je Facette zeigt; die Statusleiste nennt, wie weit die Kopie die Wand verschiebt</translation>
+    </message>
+    <message>
+        <source>Coarse facets are drawn smoothed up close: the wall moves by at most %1 mm (%2 mm on average)</source>
+        <translation>Grobe Facetten werden aus der Nähe geglättet gezeichnet: die Wand verschiebt sich um höchstens %1 mm (im Mittel %2 mm)</translation>
+    </message>
+    <message>
+        <source>Smoothed up close: wall ≤ %1 mm</source>
+        <translation>Aus der Nähe geglättet: Wand ≤ %1 mm</translation>
     </message>
 </context>
 <context>
@@ -4728,6 +4748,14 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>No pair of conditions differs significantly.</source>
         <translation>Kein Paar von Bedingungen unterscheidet sich signifikant.</translation>
+    </message>
+    <message>
+        <source>Coarse facets</source>
+        <translation>Grobe Facetten</translation>
+    </message>
+    <message>
+        <source>smoothed up close (the wall moved by at most %1)</source>
+        <translation>aus der Nähe geglättet (die Wand um höchstens %1 verschoben)</translation>
     </message>
 </context>
 </TS>

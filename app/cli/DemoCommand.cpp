@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // `vesselview-cli demo -o FILE.vtp [--seed N] [--generations G] [--voxel-size MM]`:
-// writes the synthetic demo vessel tree; `demo --dicom DIR` writes it as a CT series.
+// writes the synthetic demo vessel tree; `demo --dicom DIR` writes it as a CT series;
+// `demo --aorta -o FILE.vtp [--triangles N]` an aorta with an aneurysm, coarse on request.
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -8,6 +9,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <limits>
+#include <optional>
 #include <ostream>
 #include <stdexcept>
 #include <string>
@@ -19,9 +21,11 @@
 #include "cli/OutputFiles.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
+#include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/DemoCtSeries.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/dicom/SeriesWriter.h"
+#include "vv/meshio/MeshSimplify.h"
 #include "vv/meshio/MeshWriter.h"
 
 namespace vv::cli {
@@ -31,16 +35,21 @@ namespace {
 constexpr const char* kDemoUsage =
     "usage: vesselview-cli demo -o FILE.vtp [--seed N] [--generations G] [--voxel-size MM]\n"
     "       vesselview-cli demo --dicom DIR\n"
-    "  Writes the synthetic demo vessel tree with pressure [mmHg], wss [Pa],\n"
-    "  segment_id and generation point arrays as VTK XML polydata.\n"
     "  --dicom DIR         instead: write the tree (4 generations) voxelised as a\n"
     "                      CT angiography series into DIR (lumen ~400 HU, tissue\n"
     "                      ~40 HU with noise, a bone-like block ~1000 HU; 96 x 96\n"
     "                      x 80 voxels, one file per slice)\n"
+    "       vesselview-cli demo --aorta -o FILE.vtp [--triangles N]\n"
+    "  Writes the synthetic demo vessel tree with pressure [mmHg], wss [Pa],\n"
+    "  segment_id and generation point arrays as VTK XML polydata.\n"
     "  -o, --output FILE   the .vtp file to write (required)\n"
     "  --seed N            random seed (same seed, same tree)\n"
     "  --generations G     branching generations, 1..10 (default 6)\n"
-    "  --voxel-size MM     surface sampling grid in mm (default: automatic)\n";
+    "  --voxel-size MM     surface sampling grid in mm (default: automatic)\n"
+    "  --aorta             instead: an abdominal aorta with a fusiform aneurysm and\n"
+    "                      both iliacs (the analysis' aneurysm phantom, 60k\n"
+    "                      triangles), decimated to N triangles with --triangles\n"
+    "                      (at least 100), as a coarse segmentation comes\n";
 
 std::uint64_t parseUnsigned(const std::string& option, const std::string& text) {
     const bool digits = !text.empty() && std::all_of(text.begin(), text.end(), [](unsigned char c) {
@@ -84,6 +93,18 @@ int writeDemoDicom(const std::filesystem::path& folder, std::ostream& out) {
     return kOk;
 }
 
+/// `demo --aorta`: the aneurysm phantom, decimated to `triangles` when given.
+vv::scene::Mesh aortaMesh(std::optional<std::size_t> triangles) {
+    vv::demo::AneurysmPhantomOptions options;
+    options.targetTriangles = 60'000;
+    vv::scene::Mesh mesh = vv::demo::makeAneurysmPhantom(options).mesh;
+    if (triangles) {
+        mesh = vv::meshio::simplifiedMesh(mesh, *triangles);
+    }
+    mesh.name = "aorta";
+    return mesh;
+}
+
 }  // namespace
 
 int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& /*err*/) {
@@ -91,6 +112,8 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     std::filesystem::path dicomFolder;
     vv::demo::DemoTreeOptions options;
     bool treeOptionGiven = false;
+    bool aorta = false;
+    std::optional<std::size_t> aortaTriangles;
     for (Arguments arg("demo", args); arg.next();) {
         const std::string& name = arg.name();
         if (name == "--help" || name == "-h") {
@@ -110,11 +133,21 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
         } else if (name == "--voxel-size") {
             options.voxelSizeMm = parseNumber(arg.value(), name);
             treeOptionGiven = true;
+        } else if (name == "--aorta") {
+            aorta = true;
+        } else if (name == "--triangles") {
+            aortaTriangles = static_cast<std::size_t>(parseWholeNumber(arg.value(), name, 100));
         } else if (arg.isOption()) {
             arg.fail("unknown option '" + arg.current() + "'");
         } else {
             arg.fail("unexpected argument '" + arg.current() + "' (the output goes after -o)");
         }
+    }
+    if (aortaTriangles && !aorta) {
+        throw UsageError("demo --triangles N goes with --aorta");
+    }
+    if (aorta && (treeOptionGiven || !dicomFolder.empty())) {
+        throw UsageError("demo --aorta takes no tree option and no --dicom");
     }
     if (!dicomFolder.empty()) {
         if (!output.empty() || treeOptionGiven) {
@@ -133,7 +166,8 @@ int demoCommand(const std::vector<std::string>& args, std::ostream& out, std::os
     checkOutputPath(output);
 
     // Out-of-range options throw InvalidArgumentError, which run() maps to a usage error.
-    const vv::scene::Mesh mesh = vv::demo::generateDemoMesh(options);
+    const vv::scene::Mesh mesh =
+        aorta ? aortaMesh(aortaTriangles) : vv::demo::generateDemoMesh(options);
     try {
         vv::meshio::writeVtp(mesh, output);
     } catch (const vv::IoError& e) {

@@ -43,6 +43,7 @@
 #include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
 #include "cli/SegmentSummary.h"
+#include "common/SmoothCopy.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/DepthScale.h"
 #include "vv/core/Error.h"
@@ -310,7 +311,7 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
         Image<float> depth =
             renderer.vssStatus().current ? renderer.lastLinearDepth() : Image<float>();
         if (depth.width() != parsed.width || depth.height() != parsed.height) {
-            depth = render::rasterizeDepth(scene, camera);
+            depth = render::rasterizeDepth(renderer.lastDrawnScene(scene, options), camera);
         }
         try {
             vss::writePfm(parsed.depthOutput, std::as_const(depth).view());
@@ -340,6 +341,9 @@ int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::
     }
     describeImage(summary, parsed, scene, options, renderer, image, tiles, centerlines);
     summary << ")\n";
+    if (renderer.lastFrameRefined() && options.refined) {
+        summary << app::smoothCopyNote(*options.refined) << "\n";
+    }
     if (!parsed.depthOutput.empty()) {
         summary << "wrote " << parsed.depthOutput.string() << " (linear depth, background +Inf)\n";
     }

@@ -8,6 +8,7 @@
 
 #include "cli/Cli.h"
 #include "common/SettingsSchema.h"
+#include "common/SmoothCopy.h"
 #include "vv/core/Error.h"
 #include "vv/render/MeshStyle.h"
 #include "vv/report/ViewExport.h"
@@ -206,6 +207,11 @@ render::OffscreenOptions offscreenOptions(const RenderOptionValues& values,
                          "' (it has: " + joined(known) + ")");
     }
     options.camera = cameraFor(values, scene, values.width, values.height);
+    if (options.display.smoothCoarseMeshes) {
+        // A coarse scene's smooth copy (none for a fine one): drawn where
+        // its facets are large in this view.
+        options.refined = app::smoothCopyOf(scene);
+    }
     return options;
 }
 

@@ -70,6 +70,10 @@ render::OffscreenOptions currentViewOptions(const ViewerWidget& viewer, int widt
     options.camera = viewer.camera();
     options.volume = viewer.volume();  // a ray-cast volume, when one is shown
     options.isoValue = viewer.isoValue();
+    // The smooth copy the view draws up close, for the same picture.
+    if (viewer.smoothCopy().scene) {
+        options.refined = viewer.smoothCopy();
+    }
     pinVisibleDepthRange(viewer, width, height, options.display.vss.range);
     return options;
 }

@@ -361,6 +361,20 @@ void MainWindow::buildViewMenu() {
             viewer_->setViewAnnotations(annotations);
         });
     }
+    // Coarse meshes drawn smooth up close (a note says how far the wall moved).
+    smoothAction_ = view->addAction(tr("Smooth &Coarse Meshes Up Close"));
+    smoothAction_->setObjectName(QStringLiteral("smoothCoarseToggle"));
+    smoothAction_->setCheckable(true);
+    smoothAction_->setChecked(viewer_->smoothCoarseMeshes());
+    smoothAction_->setToolTip(
+        tr("Where a coarse mesh's facets are large on screen, draw it from a smooth "
+           "(subdivided) copy, so that the lit void space surface shows no blob per facet; "
+           "the status bar says how far the copy moves the wall"));
+    connect(smoothAction_, &QAction::toggled, this, [this](bool on) {
+        viewer_->setSmoothCoarseMeshes(on);
+        showSmoothCopyNote();
+    });
+    connect(viewer_, &ViewerWidget::smoothCopyReady, this, [this] { showSmoothCopyNote(); });
     view->addAction(vssAction_);
     view->addAction(aoAction_);
     view->addAction(cvdAction_);
@@ -523,6 +537,11 @@ void MainWindow::syncControls() {
         const QSignalBlocker legends(legendsAction_);
         legendsAction_->setChecked(viewer_->legendsVisible());
     }
+    if (smoothAction_ != nullptr && smoothAction_->isChecked() != viewer_->smoothCoarseMeshes()) {
+        const QSignalBlocker smooth(smoothAction_);
+        smoothAction_->setChecked(viewer_->smoothCoarseMeshes());
+        showSmoothCopyNote();  // a session or a reset switched it
+    }
     for (QAction* action : {markerAction_, scaleBarAction_}) {
         if (action != nullptr) {
             const QSignalBlocker blocker(action);
@@ -532,6 +551,21 @@ void MainWindow::syncControls() {
         }
     }
     updateRangeLabel();
+}
+
+void MainWindow::showSmoothCopyNote() {
+    const render::RefinedGeometry& copy = viewer_->smoothCopy();
+    if (!viewer_->smoothCoarseMeshes() || !copy.scene) {
+        smoothLabel_->hide();
+        return;
+    }
+    const QLocale locale;
+    const QString largest = locale.toString(copy.largestDeviationMm, 'f', 2);
+    smoothLabel_->setText(tr("Smoothed up close: wall ≤ %1 mm").arg(largest));
+    smoothLabel_->setToolTip(tr("Coarse facets are drawn smoothed up close: the wall moves by at "
+                                "most %1 mm (%2 mm on average)")
+                                 .arg(largest, locale.toString(copy.meanDeviationMm, 'f', 3)));
+    smoothLabel_->show();
 }
 
 QComboBox* MainWindow::arrayChooser() const {
@@ -599,6 +633,9 @@ void MainWindow::buildStatusBar() {
     rangeLabel_->setObjectName(QStringLiteral("arrayRangeLabel"));
     vssLabel_ = new QLabel(this);
     vssLabel_->setObjectName(QStringLiteral("vssQualityLabel"));
+    smoothLabel_ = new QLabel(this);
+    smoothLabel_->setObjectName(QStringLiteral("smoothCopyLabel"));
+    smoothLabel_->hide();  // while no smooth copy is drawn
     progressBar_ = new QProgressBar(this);
     progressBar_->setRange(0, 1000);
     progressBar_->setMaximumWidth(240);
@@ -617,6 +654,7 @@ void MainWindow::buildStatusBar() {
     statusBar()->addPermanentWidget(measureLabel_);
     connect(viewer_, &ViewerWidget::pointPicked, measure_, &MeasureTool::addPoint);
     connect(viewer_, &ViewerWidget::pickMissed, measure_, &MeasureTool::missed);
+    statusBar()->addPermanentWidget(smoothLabel_);
     statusBar()->addPermanentWidget(vssLabel_);
     statusBar()->addPermanentWidget(rangeLabel_);
     statusBar()->addPermanentWidget(progressBar_);

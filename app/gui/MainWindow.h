@@ -202,8 +202,10 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] QString aboutText() const;
     /// View > Show Legends (checked = legends drawn).
     [[nodiscard]] QAction* legendsToggle() const noexcept { return legendsAction_; }
+    [[nodiscard]] QAction* smoothCoarseToggle() const noexcept { return smoothAction_; }
     /// The status bar's VSS quality: "VSS: preview", "VSS: exact, N ms", …
     [[nodiscard]] QLabel* vssQualityLabel() const noexcept { return vssLabel_; }
+    [[nodiscard]] QLabel* smoothCopyLabel() const noexcept { return smoothLabel_; }
     /// View > Measure (M): while checked, left clicks on vessels pick points
     /// (Ctrl + click always does). Two picked points give their 3-D distance
     /// and depth difference in measureLabel(); a third click starts anew.
@@ -262,6 +264,9 @@ class MainWindow : public QMainWindow {
     void buildStatusBar();
     /// Every control shows the viewer's current settings.
     void syncControls();
+    /// Shows how far the smooth copy moves the wall in the status bar while
+    /// the switch is on and a copy exists; hides it otherwise.
+    void showSmoothCopyNote();
     void setColorBlindSafe(bool on);
     /// The document's signals to the viewer, panels and status bar.
     void connectDocument();
@@ -309,7 +314,10 @@ class MainWindow : public QMainWindow {
     QAction* legendsAction_ = nullptr;
     QAction* markerAction_ = nullptr;    ///< View > Show Orientation Marker
     QAction* scaleBarAction_ = nullptr;  ///< View > Show Scale Bar
+    QAction* smoothAction_ = nullptr;    ///< View > Smooth Coarse Meshes Up Close
     QLabel* vssLabel_ = nullptr;
+    /// How far the smooth copy of a coarse scene moves the wall, while drawn.
+    QLabel* smoothLabel_ = nullptr;
     QAction* measureAction_ = nullptr;
     QLabel* measureLabel_ = nullptr;
     MeasureTool* measure_ = nullptr;

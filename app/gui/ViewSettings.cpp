@@ -21,6 +21,7 @@ app::DisplaySettings displaySettings(const ViewerWidget& viewer) {
     s.orientationMarker = viewer.viewAnnotations().orientationMarker;
     s.scaleBar = viewer.viewAnnotations().scaleBar;
     s.antialiasing = true;
+    s.smoothCoarseMeshes = viewer.smoothCoarseMeshes();
     return s;
 }
 
@@ -37,6 +38,7 @@ void applyDisplaySettings(ViewerWidget& viewer, const app::DisplaySettings& sett
     annotations.orientationMarker = settings.orientationMarker;
     annotations.scaleBar = settings.scaleBar;
     viewer.setViewAnnotations(annotations);
+    viewer.setSmoothCoarseMeshes(settings.smoothCoarseMeshes);
 }
 
 void saveViewSettings(const ViewerWidget& viewer, QSettings& settings) {

@@ -20,6 +20,7 @@
 #include <limits>
 #include <utility>
 
+#include "common/SmoothCopy.h"
 #include "gui/EngineTexts.h"
 #include "gui/ViewOverlay.h"
 #include "vv/core/Error.h"
@@ -135,6 +136,7 @@ void ViewerWidget::setScene(std::shared_ptr<const scene::Scene> scene) {
     view_.setScene(std::move(scene));
     view_.refinement().forgetCosts();  // another scene, other frame costs
     startPreviewGeometry();
+    startSmoothCopy();
     startClosureCheck();
     framesWithScene_ = 0;
     camera_.setViewport(width(), height());
@@ -237,6 +239,43 @@ void ViewerWidget::startPreviewGeometry() {
             view_.setPreviewGeometry(std::move(levels));
             emit previewGeometryReady();
         });
+}
+
+void ViewerWidget::startSmoothCopy() {
+    smoothRun_.cancel();
+    const std::shared_ptr<const scene::Scene> scene = view_.scene();
+    if (!scene || !smoothCoarseMeshes() || view_.refinedGeometry().scene) {
+        return;
+    }
+    smoothRun_.start(
+        [scene](const std::stop_token& stop) -> std::optional<render::RefinedGeometry> {
+            try {
+                return app::smoothCopyOf(*scene, Progress({}, stop));
+            } catch (const CancelledError&) {
+                return std::nullopt;
+            }
+        },
+        [this, scene](std::optional<render::RefinedGeometry> copy) {
+            if (!copy || view_.scene() != scene) {
+                return;  // none wanted, cancelled, or another scene by now
+            }
+            const double largest = copy->largestDeviationMm;
+            const double mean = copy->meanDeviationMm;
+            view_.setRefinedGeometry(std::move(*copy));
+            requestFrame();
+            emit smoothCopyReady(largest, mean);
+        });
+}
+
+void ViewerWidget::setSmoothCoarseMeshes(bool on) {
+    if (on == smoothCoarseMeshes()) {
+        return;
+    }
+    view_.setSmoothCoarseMeshes(on);
+    if (on) {
+        startSmoothCopy();
+    }
+    requestFrame();
 }
 
 void ViewerWidget::setStyle(const render::MeshStyle& style) {

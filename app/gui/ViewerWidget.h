@@ -157,6 +157,18 @@ class ViewerWidget : public QOpenGLWidget {
     }
     /// Legends of the scales in use (depth bottom-left, parameter bottom-right),
     /// painted over the frame; on by default.
+    /// Draw coarse meshes from a smooth (Loop-subdivided) copy where their
+    /// facets are large on screen (render::FrameSettings::smoothCoarseMeshes);
+    /// the copy is made in the background for a scene that gets one
+    /// (app::smoothCopyOf), once the switch is on.
+    void setSmoothCoarseMeshes(bool on);
+    [[nodiscard]] bool smoothCoarseMeshes() const noexcept {
+        return view_.displaySettings().smoothCoarseMeshes;
+    }
+    /// The smooth copy drawn (its deviation from the mesh), or none yet.
+    [[nodiscard]] const render::RefinedGeometry& smoothCopy() const noexcept {
+        return view_.refinedGeometry();
+    }
     void setLegendsVisible(bool visible);
     [[nodiscard]] bool legendsVisible() const noexcept { return legendsVisible_; }
     /// The orientation marker and the scale bar over the view, and the
@@ -294,6 +306,9 @@ class ViewerWidget : public QOpenGLWidget {
   signals:
     /// The simplified geometry of the current scene is ready (hasPreviewGeometry()).
     void previewGeometryReady();
+    /// The smooth copy of a coarse scene is drawn from now on: it moves the
+    /// wall by at most `largestMm`, by `meanMm` on average.
+    void smoothCopyReady(double largestMm, double meanMm);
     /// A frame was drawn (emitted at the end of paintGL; connect queued to grab it).
     void frameRendered();
     /// A VSS solve for the current view arrived (a repaint follows).
@@ -337,6 +352,9 @@ class ViewerWidget : public QOpenGLWidget {
     void solveArrived();
     /// Starts building the simplified geometry of the scene on a worker.
     void startPreviewGeometry();
+    /// Makes the smooth copy of the scene in the background, when the
+    /// switch is on and the scene has none yet.
+    void startSmoothCopy();
     /// Starts scene::surfaceClosures of the scene's meshes on a worker.
     void startClosureCheck();
     /// The device pixels of the widget, drawn into its framebuffer.
@@ -366,6 +384,7 @@ class ViewerWidget : public QOpenGLWidget {
     static constexpr std::size_t kPreviewLevelRatio = 3;
     std::size_t previewTriangles_ = 60000;
     LatestRun<render::PreviewGeometry, AtDestruction::Wait> previewRun_{this};
+    LatestRun<std::optional<render::RefinedGeometry>, AtDestruction::Wait> smoothRun_{this};
     LatestRun<std::vector<scene::SurfaceClosure>, AtDestruction::Wait> closureRun_{this};
 
     // Refinement timing: the settle timer, preview arrivals, the frame budget.

@@ -8,6 +8,7 @@
 #include <QApplication>
 #include <QImage>
 #include <QLabel>
+#include <QLocale>
 #include <QMouseEvent>
 #include <QThread>
 #include <QWheelEvent>
@@ -24,6 +25,7 @@
 #include "ViewerDrive.h"
 #include "gui/MainWindow.h"
 #include "gui/ViewerWidget.h"
+#include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/DemoTree.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/RefinementPolicy.h"
@@ -475,6 +477,8 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     ViewerWidget& viewer = *window_->viewer();
     // The tubes have ~3,500 triangles: two simplified levels are built.
     viewer.setPreviewTriangles(2000);
+    // Still frames draw the scene's own meshes, not a smooth copy of them.
+    viewer.setSmoothCoarseMeshes(false);
     int ready = 0;
     QObject::connect(&viewer, &ViewerWidget::previewGeometryReady, [&ready] { ++ready; });
     window_->setScene(makeScene(), QStringLiteral("simplified"));
@@ -525,6 +529,49 @@ TEST_F(ProgressiveTest, MovingFramesDrawTheSimplifiedGeometryOnceItIsReady) {
     viewer.setPreviewTriangles(0);
     window_->setScene(makeScene(), QStringLiteral("no preview"));
     EXPECT_FALSE(viewer.view().hasPreviewGeometry());
+}
+
+TEST_F(ProgressiveTest, ACoarseSceneIsDrawnFromItsSmoothCopyWhileTheSwitchIsOn) {
+    // An aorta of 2000 triangles: facets of 5-10 mm, tens of pixels here.
+    vv::demo::AneurysmPhantomOptions aorta;
+    aorta.targetTriangles = 2'000;
+    auto scene = std::make_shared<vv::scene::Scene>();
+    scene->meshes.push_back(vv::demo::makeAneurysmPhantom(aorta).mesh);
+    window_ = std::make_unique<vv::gui::MainWindow>();
+    window_->resize(800, 600);
+    ViewerWidget& viewer = *window_->viewer();
+    ASSERT_TRUE(viewer.smoothCoarseMeshes());  // the default
+    window_->setScene(scene, QStringLiteral("coarse aorta"));
+    window_->show();
+    // Made in the background; still frames draw it once it is there.
+    ASSERT_TRUE(waitUntil([&] {
+        return exactShown(viewer) &&
+               viewer.view().frameRenderer().lastGeometryLevel() == vv::render::kRefinedLevel;
+    }));
+    ASSERT_TRUE(viewer.smoothCopy().scene);
+    EXPECT_EQ(viewer.smoothCopy().scene->triangleCount(), 4 * scene->triangleCount());
+    EXPECT_FALSE(viewer.view().frameRenderer().lastFrameSimplified());
+    // The status bar says how far it moves the wall, in the UI's numbers.
+    QLabel* label = window_->smoothCopyLabel();
+    ASSERT_TRUE(waitUntil([&] { return label->isVisible(); }));
+    const QString largest = QLocale().toString(viewer.smoothCopy().largestDeviationMm, 'f', 2);
+    EXPECT_TRUE(label->text().contains(largest)) << label->text().toStdString();
+    EXPECT_GT(viewer.smoothCopy().largestDeviationMm, 0.0);
+
+    // Off: the mesh as it is, and the status bar no longer says it.
+    window_->smoothCoarseToggle()->trigger();
+    EXPECT_FALSE(viewer.smoothCoarseMeshes());
+    ASSERT_TRUE(waitUntil([&] {
+        return exactShown(viewer) && viewer.view().frameRenderer().lastGeometryLevel() == 0U;
+    }));
+    EXPECT_FALSE(label->isVisible());
+    // On again: the copy is kept, drawn at once.
+    window_->smoothCoarseToggle()->trigger();
+    ASSERT_TRUE(waitUntil([&] {
+        return exactShown(viewer) &&
+               viewer.view().frameRenderer().lastGeometryLevel() == vv::render::kRefinedLevel;
+    }));
+    EXPECT_TRUE(label->isVisible());
 }
 
 TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout) {

@@ -9,7 +9,8 @@ FrameSettings frameSettings(const DisplaySettings& display) {
             .vss = display.vss,
             .cue = display.cue,
             .ao = display.ao,
-            .antialiasing = display.antialiasing};
+            .antialiasing = display.antialiasing,
+            .smoothCoarseMeshes = display.smoothCoarseMeshes};
 }
 
 }  // namespace vv::render

@@ -365,16 +365,20 @@ void FrameRenderer::clearCache() {
     impl_->lastDepthView.reset();
 }
 
-std::size_t FrameRenderer::geometryLevel(const FrameSettings& settings,
+std::size_t FrameRenderer::geometryLevel(const Camera& camera, const FrameSettings& settings,
                                          glm::ivec2 renderSize) const noexcept {
-    if (!settings.simplifiedGeometry || !meshes_.hasPreviewScene()) {
-        return 0;
+    if (settings.simplifiedGeometry && meshes_.hasPreviewScene()) {
+        return meshes_.previewLevelFor(static_cast<long long>(renderSize.x) * renderSize.y);
     }
-    return meshes_.previewLevelFor(static_cast<long long>(renderSize.x) * renderSize.y);
+    if (settings.smoothCoarseMeshes && meshes_.refinedWanted(camera)) {
+        return kRefinedLevel;
+    }
+    return 0;
 }
 
 std::uint64_t FrameRenderer::geometryRevision(std::size_t level) const noexcept {
-    // Up to 7 preview levels told apart (there are two).
+    // Up to 6 preview levels told apart (there are two); the refined copy
+    // (kRefinedLevel) is 7.
     std::uint64_t revision = sceneRevision_ * 8U + std::min<std::uint64_t>(level, 7U);
     if (volume_.volume()) {
         // Volume depth source: its revision tells depth views apart too.
@@ -404,7 +408,7 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
     const glm::ivec2 renderSize = renderSizeFor(settings, target);
     const std::uint64_t depthView =
         viewKey(camera.viewMatrix(), camera.projectionMatrix(), renderSize,
-                geometryRevision(geometryLevel(settings, renderSize)));
+                geometryRevision(geometryLevel(camera, settings, renderSize)));
     if (depthView != *impl_->lastDepthView || impl_->lastDepth->width() != renderSize.x ||
         impl_->lastDepth->height() != renderSize.y) {
         return false;  // the depth shows another view: the next frame reads it back
@@ -674,7 +678,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     shape.targetSize = glm::ivec2(target.width, target.height);
     const glm::ivec2 size = shape.size;
     renderSize_ = size;
-    shape.meshLevel = geometryLevel(settings, size);
+    shape.meshLevel = geometryLevel(camera, settings, size);
     lastGeometryLevel_ = shape.meshLevel;
     // The scene's revision, told apart for each simplified (preview) level.
     const std::uint64_t sceneRevision = geometryRevision(shape.meshLevel);

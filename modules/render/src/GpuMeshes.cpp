@@ -124,6 +124,7 @@ void GpuMeshes::uploadMeshes(QOpenGLFunctions_4_1_Core& gl, const scene::Scene& 
 void GpuMeshes::upload(QOpenGLFunctions_4_1_Core& gl, std::shared_ptr<const scene::Scene> scene) {
     deleteMeshes(gl, meshes_);
     deletePreviews(gl);
+    deleteRefined(gl);
     scene_ = std::move(scene);
     if (!scene_) {
         return;
@@ -167,6 +168,36 @@ void GpuMeshes::deletePreviews(QOpenGLFunctions_4_1_Core& gl) {
     previewTriangles_.clear();
 }
 
+void GpuMeshes::checkCopy(const scene::Scene& copy, const char* what) const {
+    if (!scene_ || copy.meshes.size() != scene_->meshes.size()) {
+        throw InvalidArgumentError(std::string("the ") + what +
+                                   " scene must have one mesh for each mesh of the scene (" +
+                                   std::to_string(copy.meshes.size()) + " for " +
+                                   std::to_string(scene_ ? scene_->meshes.size() : 0) + ")");
+    }
+}
+
+void GpuMeshes::deleteRefined(QOpenGLFunctions_4_1_Core& gl) {
+    deleteMeshes(gl, refined_.meshes);
+    refined_.scene.reset();
+}
+
+void GpuMeshes::setRefined(QOpenGLFunctions_4_1_Core& gl,
+                           std::shared_ptr<const scene::Scene> refined) {
+    deleteRefined(gl);
+    if (!refined) {
+        return;
+    }
+    checkCopy(*refined, "refined");
+    try {
+        uploadMeshes(gl, *refined, refined_.meshes);
+    } catch (...) {
+        deleteRefined(gl);
+        throw;
+    }
+    refined_.scene = std::move(refined);
+}
+
 void GpuMeshes::setPreviews(QOpenGLFunctions_4_1_Core& gl,
                             std::vector<std::shared_ptr<const scene::Scene>> previews) {
     deletePreviews(gl);
@@ -175,12 +206,7 @@ void GpuMeshes::setPreviews(QOpenGLFunctions_4_1_Core& gl,
         return;
     }
     for (const auto& preview : previews) {
-        if (!scene_ || preview->meshes.size() != scene_->meshes.size()) {
-            throw InvalidArgumentError(
-                "the preview scene must have one mesh for each mesh of the scene (" +
-                std::to_string(preview->meshes.size()) + " for " +
-                std::to_string(scene_ ? scene_->meshes.size() : 0) + ")");
-        }
+        checkCopy(*preview, "preview");
     }
     std::stable_sort(previews.begin(), previews.end(), [](const auto& a, const auto& b) {
         return a->triangleCount() > b->triangleCount();
@@ -204,6 +230,9 @@ std::size_t GpuMeshes::previewLevelFor(long long pixels) const noexcept {
 }
 
 const std::vector<GpuMesh>& GpuMeshes::meshesOf(std::size_t level) const noexcept {
+    if (level == kRefinedLevel) {
+        return hasRefined() ? refined_.meshes : meshes_;
+    }
     if (level == 0 || previews_.empty()) {
         return meshes_;
     }
@@ -215,10 +244,16 @@ std::vector<GpuMeshes::Level> GpuMeshes::levels() const {
     for (const PreviewLevel& level : previews_) {
         all.push_back(Level{level.scene.get(), &level.meshes});
     }
+    if (hasRefined()) {
+        all.push_back(Level{refined_.scene.get(), &refined_.meshes});
+    }
     return all;
 }
 
 const std::vector<GpuMesh>* GpuMeshes::levelMeshes(std::size_t level) const noexcept {
+    if (level == kRefinedLevel) {
+        return hasRefined() ? &refined_.meshes : nullptr;
+    }
     if (level > previews_.size()) {
         return nullptr;
     }
@@ -226,6 +261,9 @@ const std::vector<GpuMesh>* GpuMeshes::levelMeshes(std::size_t level) const noex
 }
 
 std::vector<GpuMesh>* GpuMeshes::levelMeshes(std::size_t level) noexcept {
+    if (level == kRefinedLevel) {
+        return hasRefined() ? &refined_.meshes : nullptr;
+    }
     if (level > previews_.size()) {
         return nullptr;
     }
@@ -236,8 +274,10 @@ void GpuMeshes::setSurfaceClosures(std::size_t level,
                                    const std::vector<scene::SurfaceClosure>& closures) {
     std::vector<GpuMesh>* meshes = levelMeshes(level);
     if (meshes == nullptr) {
-        throw InvalidArgumentError("no geometry level " + std::to_string(level) + " (" +
-                                   std::to_string(previews_.size()) + " preview levels)");
+        throw InvalidArgumentError(
+            "no geometry level " +
+            (level == kRefinedLevel ? std::string("refined") : std::to_string(level)) + " (" +
+            std::to_string(previews_.size()) + " preview levels)");
     }
     if (closures.size() != meshes->size()) {
         throw InvalidArgumentError("level " + std::to_string(level) + " has " +
@@ -268,12 +308,14 @@ CullFace GpuMeshes::cullableFacesOf(const GpuMesh& mesh, const glm::mat4& view,
 void GpuMeshes::clear(QOpenGLFunctions_4_1_Core& gl) {
     deleteMeshes(gl, meshes_);
     deletePreviews(gl);
+    deleteRefined(gl);
 }
 
 void GpuMeshes::forget() noexcept {
     meshes_.clear();
     previews_.clear();
     previewTriangles_.clear();
+    refined_ = {};
 }
 
 }  // namespace vv::render

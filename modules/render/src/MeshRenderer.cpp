@@ -5,7 +5,9 @@
 #include <QOpenGLFunctions_4_1_Core>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <numbers>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -134,6 +136,34 @@ void MeshRenderer::setPreviewScenes(std::vector<std::shared_ptr<const scene::Sce
     if (geometry_.hasPreviews()) {
         material_.uploadScalars(f, geometry_);
     }
+}
+
+void MeshRenderer::setRefinedScene(std::shared_ptr<const scene::Scene> refined,
+                                   double sourceEdgeMm) {
+    auto& f = gl();
+    ++shadingRevision_;
+    geometry_.setRefined(f, std::move(refined));
+    refinedSourceEdgeMm_ = geometry_.hasRefined() ? sourceEdgeMm : 0.0;
+    if (geometry_.hasRefined()) {
+        const Aabb box = geometry_.scene()->bounds();
+        refinedCentre_ = box.empty() ? glm::vec3(0.0F) : 0.5F * (box.min + box.max);
+        material_.uploadScalars(f, geometry_);
+    }
+}
+
+bool MeshRenderer::refinedWanted(const Camera& camera) const noexcept {
+    const int height = camera.viewportHeight();
+    if (!geometry_.hasRefined() || !(refinedSourceEdgeMm_ > 0.0) || height <= 0) {
+        return false;
+    }
+    const double distance = glm::length(camera.eye() - refinedCentre_);
+    const double halfHeight =
+        distance * std::tan(0.5 * glm::radians(static_cast<double>(camera.fieldOfView())));
+    if (!(halfHeight > 0.0)) {
+        return true;  // at the scene's middle: every facet is huge
+    }
+    const double pixelsPerMm = 0.5 * static_cast<double>(height) / halfHeight;
+    return 0.25 * std::numbers::pi * refinedSourceEdgeMm_ * pixelsPerMm >= kCoarseEdgePixels;
 }
 
 std::size_t MeshRenderer::previewLevelFor(long long pixels) const noexcept {

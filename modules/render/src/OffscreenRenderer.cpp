@@ -213,6 +213,11 @@ Camera OffscreenRenderer::setUpScene(const scene::Scene& scene, const OffscreenO
         // Once per scene content, not once per render.
         view_->setSurfaceClosures(scene::surfaceClosures(scene));
     }
+    if (options.refined && options.refined->scene != view_->refinedGeometry().scene) {
+        view_->setRefinedGeometry(*options.refined);
+    } else if (!options.refined && view_->refinedGeometry().scene) {
+        view_->setRefinedGeometry({});
+    }
     view_->setDisplay(options.display);
     // Volume depth source: ray cast after the meshes; its box joins the bounds.
     view_->setVolume(options.volume, options.isoValue);
@@ -247,6 +252,16 @@ void OffscreenRenderer::setBackFaceCulling(bool enabled) {
 
 std::uint64_t OffscreenRenderer::sceneUploads() const noexcept {
     return view_->sceneUploads();
+}
+
+bool OffscreenRenderer::lastFrameRefined() const noexcept {
+    return view_->frameRenderer().lastGeometryLevel() == kRefinedLevel;
+}
+
+const scene::Scene& OffscreenRenderer::lastDrawnScene(
+    const scene::Scene& scene, const OffscreenOptions& options) const noexcept {
+    return lastFrameRefined() && options.refined && options.refined->scene ? *options.refined->scene
+                                                                           : scene;
 }
 
 std::size_t OffscreenRenderer::lastCulledMeshes() const noexcept {

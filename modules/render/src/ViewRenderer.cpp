@@ -26,6 +26,7 @@ void ViewRenderer::setScene(std::shared_ptr<const scene::Scene> scene) {
     revision_ = ++nextRevision_;
     sceneDirty_ = true;
     previews_ = {};
+    refined_ = {};
     closures_.clear();
     closuresKnown_ = false;
     closuresDirty_ = false;
@@ -68,6 +69,7 @@ bool ViewRenderer::uploadScene() {
         meshes.setScene(scene_);
         uploaded_ = scene_ ? content_ : std::nullopt;
         previewDirty_ = true;
+        refinedDirty_ = true;
         closuresDirty_ = closuresKnown_;  // the upload left every mesh Open
     }
     frame_.setSceneRevision(revision_);
@@ -79,6 +81,11 @@ bool ViewRenderer::uploadScene() {
 void ViewRenderer::setPreviewGeometry(PreviewGeometry geometry) {
     previews_ = std::move(geometry);
     previewDirty_ = true;
+}
+
+void ViewRenderer::setRefinedGeometry(RefinedGeometry geometry) {
+    refined_ = std::move(geometry);
+    refinedDirty_ = true;
 }
 
 std::vector<std::size_t> ViewRenderer::previewLevelTriangles() const {
@@ -129,8 +136,17 @@ void ViewRenderer::prepareFrame() {
         }
         previewDirty_ = false;
     }
+    if (refinedDirty_) {
+        meshes.setRefinedScene(scene_ ? refined_.scene : nullptr, refined_.sourceEdgeMm);
+        refinedDirty_ = false;
+        closuresDirty_ = closuresKnown_;  // the refined copy's meshes start Open
+    }
     if (closuresDirty_ && scene_) {
+        // Subdivision keeps a surface closed or open: the copy culls as the scene.
         meshes.setSurfaceClosures(0, closures_);
+        if (meshes.hasRefinedScene()) {
+            meshes.setSurfaceClosures(kRefinedLevel, closures_);
+        }
         closuresDirty_ = false;
     }
     if (styleDirty_) {

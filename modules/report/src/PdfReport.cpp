@@ -283,6 +283,11 @@ pdf::Fields settingsFields(const ReportSettings& s) {
                           engineName(render::displayName(s.cue.cue)));
     settings.emplace_back(ReportText::tr("Ambient occlusion"), onOff(s.ambientOcclusion));
     settings.emplace_back(ReportText::tr("Anti-aliasing (FXAA)"), onOff(s.antialiasing));
+    if (s.smoothedWallMm) {
+        settings.emplace_back(ReportText::tr("Coarse facets"),
+                              ReportText::tr("smoothed up close (the wall moved by at most %1)")
+                                  .arg(withUnit(number(*s.smoothedWallMm), "mm")));
+    }
     if (!s.view.empty()) {
         settings.emplace_back(ReportText::tr("Camera"), qs(s.view));
     }

@@ -212,6 +212,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         const int height = std::max(
             1,
             static_cast<int>(std::lround(width * static_cast<double>(base.height) / base.width)));
+        bool smoothed = false;  // a view drew the smooth copy of a coarse scene
         const auto reportView = [&](const std::optional<render::Camera>& camera,
                                     const vss::DepthRange& depthRange, const std::string& caption,
                                     const Progress& rendering) {
@@ -224,6 +225,7 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
             view.legends = false;  // painted by the report as vectors
             view.centerlines = options.centerlines;
             RenderedView rendered = renderView(renderer, scene, view, rendering);
+            smoothed = smoothed || renderer.lastFrameRefined();
             return std::pair{ReportView{rendered.image, caption, rendered.legends}, rendered.range};
         };
         ReportContent content;
@@ -265,6 +267,9 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
         content.settings.cue = base.display.cue;
         content.settings.ambientOcclusion = base.display.ao.enabled;
         content.settings.antialiasing = base.display.antialiasing;
+        if (smoothed && base.refined) {
+            content.settings.smoothedWallMm = base.refined->largestDeviationMm;
+        }
         content.settings.view = options.viewDescription.empty()
                                     ? ReportText::tr("default (fitted)").toStdString()
                                     : options.viewDescription;

@@ -282,7 +282,7 @@ void paintCenterlines(render::OffscreenRenderer& renderer, const scene::Scene& s
         depth = renderer.lastLinearDepth();
     }
     if (depth.width() != options.render.width || depth.height() != options.render.height) {
-        depth = render::rasterizeDepth(scene, camera);
+        depth = render::rasterizeDepth(renderer.lastDrawnScene(scene, options.render), camera);
     }
     render::paintCenterlines(result.image, camera, depth, *options.centerlines, scale);
     render::addCenterlineLegend(result.legends, *options.centerlines);

@@ -36,6 +36,9 @@ struct DisplaySettings {
     bool scaleBar = true;
     /// FXAA; the GUI always runs it (only the command line turns it off).
     bool antialiasing = true;
+    /// Coarse meshes drawn smooth where their facets are large on screen
+    /// (FrameSettings::smoothCoarseMeshes).
+    bool smoothCoarseMeshes = true;
 };
 
 /// What a still frame with `display` is drawn with: its background, VSS,

@@ -198,7 +198,9 @@ class FrameRenderer {
     /// size, or less (FrameSettings::vssResolutionScale).
     [[nodiscard]] glm::ivec2 lastVssSize() const noexcept { return vssSize_; }
     /// True when the last frame's G-buffer came from the simplified (preview) meshes.
-    [[nodiscard]] bool lastFrameSimplified() const noexcept { return lastGeometryLevel_ > 0; }
+    [[nodiscard]] bool lastFrameSimplified() const noexcept {
+        return lastGeometryLevel_ > 0 && lastGeometryLevel_ != kRefinedLevel;
+    }
     /// The meshes the last frame drew: 0 = the scene's, k = preview level k
     /// (MeshRenderer::drawGBuffer).
     [[nodiscard]] std::size_t lastGeometryLevel() const noexcept { return lastGeometryLevel_; }
@@ -284,9 +286,10 @@ class FrameRenderer {
     enum class GraphMode { Frame, SolveOnly, DepthOnly };
     void renderGraph(const Camera& camera, const FrameSettings& settings, const FrameTarget& target,
                      GraphMode mode);
-    /// The meshes a frame of `settings` at `renderSize` draws: 0 = the
-    /// scene's, k = the mesh renderer's preview level k (previewLevelFor).
-    [[nodiscard]] std::size_t geometryLevel(const FrameSettings& settings,
+    /// The meshes a frame of `camera` and `settings` at `renderSize` draws:
+    /// 0 = the scene's, k = the mesh renderer's preview level k
+    /// (previewLevelFor), kRefinedLevel = its refined copy (refinedWanted).
+    [[nodiscard]] std::size_t geometryLevel(const Camera& camera, const FrameSettings& settings,
                                             glm::ivec2 renderSize) const noexcept;
     /// The scene revision told apart for geometry `level` (geometryLevel()).
     [[nodiscard]] std::uint64_t geometryRevision(std::size_t level) const noexcept;

@@ -132,6 +132,13 @@ struct FrameSettings {
     /// frame time of software rasterisers. The VSS of such a frame is solved on that
     /// geometry's depth (a preview, never cached as the exact one).
     bool simplifiedGeometry = false;
+    /// Draw the G-buffer from the mesh renderer's refined copy of the scene
+    /// (MeshRenderer::setRefinedScene, Loop-subdivided) when it has one and
+    /// the scene's facets are coarse for the view: its median edge at least
+    /// kCoarseEdgePixels on screen (MeshRenderer::refinedWanted). A coarse
+    /// mesh's silhouette zig-zags in depth from vertex to vertex, and the
+    /// lit VSS shows every facet as a blob along it (issue 36).
+    bool smoothCoarseMeshes = true;
 };
 
 /// The framebuffer a frame is drawn into: `framebuffer` (0 = the default one)

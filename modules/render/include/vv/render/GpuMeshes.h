@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -25,6 +26,16 @@ namespace vv::render {
 /// llvmpipe, its SSIM against the settled frame the same: 0.930 / 0.939
 /// against 0.936 / 0.930 in the rotating benchmark's two views).
 constexpr long long kPixelsPerPreviewTriangle = 4;
+
+/// The level of the refined (subdivided) copy of the scene (GpuMeshes::
+/// setRefined), drawn in place of level 0 where its facets are coarse for
+/// the view (FrameRenderer::geometryLevel).
+inline constexpr std::size_t kRefinedLevel = std::numeric_limits<std::size_t>::max();
+/// The median edge on screen, in pixels, from which a scene's facets are
+/// coarse for the view: a coarse aorta's lit VSS shows a blob per facet
+/// along its silhouettes from about 8 px on (`vesselview-cli artefacts
+/// --aorta`, docs/benchmarks/vss.md, "Bumps along coarse silhouettes").
+inline constexpr double kCoarseEdgePixels = 8.0;
 
 /// The preview level (1-based, as MeshRenderer::drawGBuffer) for a frame of
 /// `pixels` pixels among levels of `triangles` (most first): the finest level
@@ -70,7 +81,8 @@ class GpuMeshes {
     /// when its mesh or vertex counts differ from the uploaded ones.
     void attach(std::shared_ptr<const scene::Scene> scene);
     /// Forgets the scene (and its sources) but keeps the buffers, for a later
-    /// attach() of the same content. Only the preview levels keep their scenes.
+    /// attach() of the same content. Only the preview levels and the refined
+    /// copy keep their scenes.
     void detach() noexcept;
     /// The attached scene; null after detach() or without one.
     [[nodiscard]] const std::shared_ptr<const scene::Scene>& scene() const noexcept {
@@ -96,7 +108,16 @@ class GpuMeshes {
     /// choosePreviewLevel() over previewTriangles(); 0 without previews.
     [[nodiscard]] std::size_t previewLevelFor(long long pixels) const noexcept;
 
-    /// The meshes `level` draws: 0 = the scene's; k = preview level k (the
+    /// Uploads a refined copy of the scene (one mesh for each of its
+    /// meshes, in order) as kRefinedLevel, replacing an earlier one; nullptr
+    /// clears it. upload() clears it too. Throws like upload(), and
+    /// InvalidArgumentError when its mesh count differs from the scene's
+    /// (then none is kept).
+    void setRefined(QOpenGLFunctions_4_1_Core& gl, std::shared_ptr<const scene::Scene> refined);
+    [[nodiscard]] bool hasRefined() const noexcept { return refined_.scene != nullptr; }
+
+    /// The meshes `level` draws: 0 = the scene's; kRefinedLevel = the
+    /// refined copy's (the scene's without one); k = preview level k (the
     /// coarsest when k exceeds the levels, the scene's when there are none).
     [[nodiscard]] const std::vector<GpuMesh>& meshesOf(std::size_t level) const noexcept;
     /// Level 0 or preview level `level` exactly, with its scene (null for
@@ -105,7 +126,7 @@ class GpuMeshes {
         const scene::Scene* scene = nullptr;
         const std::vector<GpuMesh>* meshes = nullptr;
     };
-    /// Level 0 and every preview level, in order.
+    /// Level 0, every preview level in order, then the refined copy.
     [[nodiscard]] std::vector<Level> levels() const;
 
     /// Sets the closures of `level`'s meshes (one per mesh, in order). Throws
@@ -120,7 +141,8 @@ class GpuMeshes {
     [[nodiscard]] static CullFace cullableFacesOf(const GpuMesh& mesh, const glm::mat4& view,
                                                   const glm::mat4& projection) noexcept;
 
-    /// Deletes every buffer (preview levels too); the scene stays attached.
+    /// Deletes every buffer (preview levels and the refined copy too); the
+    /// scene stays attached.
     void clear(QOpenGLFunctions_4_1_Core& gl);
     /// Forgets the buffers without deleting them (their context is gone).
     void forget() noexcept;
@@ -135,6 +157,9 @@ class GpuMeshes {
                              std::vector<GpuMesh>& target);
     static void deleteMeshes(QOpenGLFunctions_4_1_Core& gl, std::vector<GpuMesh>& meshes);
     void deletePreviews(QOpenGLFunctions_4_1_Core& gl);
+    void deleteRefined(QOpenGLFunctions_4_1_Core& gl);
+    /// Throws InvalidArgumentError unless `copy` has one mesh per scene mesh.
+    void checkCopy(const scene::Scene& copy, const char* what) const;
     /// Level 0 or preview level `level`; null when there is no such level.
     [[nodiscard]] const std::vector<GpuMesh>* levelMeshes(std::size_t level) const noexcept;
     [[nodiscard]] std::vector<GpuMesh>* levelMeshes(std::size_t level) noexcept;
@@ -143,6 +168,7 @@ class GpuMeshes {
     std::vector<GpuMesh> meshes_;
     std::vector<PreviewLevel> previews_;         ///< most triangles first
     std::vector<std::size_t> previewTriangles_;  ///< each level's triangles, same order
+    PreviewLevel refined_;                       ///< kRefinedLevel; no scene when none
     std::uint64_t uploads_ = 0;
 };
 

@@ -93,6 +93,22 @@ class MeshRenderer {
     /// (choosePreviewLevel over previewTriangles()); 0 without previews.
     [[nodiscard]] std::size_t previewLevelFor(long long pixels) const noexcept;
 
+    /// Uploads a refined (subdivided) copy of the current scene, one mesh
+    /// per scene mesh with its arrays (meshio::subdividedScene), replacing an
+    /// earlier one; drawGBuffer(camera, kRefinedLevel) draws it instead of
+    /// the scene. `sourceEdgeMm` is the median edge length of the scene's
+    /// own meshes (refinedWanted). nullptr clears it, and setScene() clears
+    /// it too. Same throws as setScene(), and InvalidArgumentError when its
+    /// mesh count differs from the scene's (then none is kept).
+    void setRefinedScene(std::shared_ptr<const scene::Scene> refined, double sourceEdgeMm);
+    [[nodiscard]] bool hasRefinedScene() const noexcept { return geometry_.hasRefined(); }
+    /// Whether a frame of `camera` should draw the refined copy: there is
+    /// one, and the scene's median edge, as seen from the camera at the
+    /// middle of the scene's box (foreshortened by pi / 4 on average),
+    /// spans at least kCoarseEdgePixels of the camera's viewport (the whole
+    /// image's, for every tile of it and at every render scale alike).
+    [[nodiscard]] bool refinedWanted(const Camera& camera) const noexcept;
+
     /// Sets the style. With the context current, re-uploads the per-vertex
     /// scalars when the array changed and the colour-map texture when the map
     /// or its bins changed (throwing RenderError when GL fails); otherwise
@@ -218,6 +234,8 @@ class MeshRenderer {
     Program deferredProgram_;
     unsigned emptyVao_ = 0;
     GpuMeshes geometry_;
+    double refinedSourceEdgeMm_ = 0.0;  ///< setRefinedScene()
+    glm::vec3 refinedCentre_{0.0F};     ///< of the scene's box, at setRefinedScene()
     MeshMaterial material_;
     std::uint64_t shadingRevision_ = 0;
     bool backFaceCulling_ = true;

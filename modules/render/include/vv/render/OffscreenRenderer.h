@@ -12,6 +12,7 @@
 #include "vv/render/Camera.h"
 #include "vv/render/DisplaySettings.h"
 #include "vv/render/FrameRenderer.h"
+#include "vv/render/RefinedGeometry.h"
 #include "vv/render/ViewAnnotations.h"
 #include "vv/render/ViewRenderer.h"
 #include "vv/scene/Mesh.h"
@@ -62,6 +63,11 @@ struct OffscreenOptions {
     /// scene's for the default camera and the clip planes.
     std::shared_ptr<const scene::Volume> volume;
     float isoValue = 150.0F;
+    /// A refined copy of the scene (app::smoothCopyOf), drawn where its
+    /// facets are coarse for the view when display.smoothCoarseMeshes is
+    /// on; nullopt: the scene as it is. It must be the copy of the scene
+    /// rendered (one mesh per mesh; else InvalidArgumentError).
+    std::optional<RefinedGeometry> refined;
 };
 
 /// The orientation marker and scale bar `display` asks for, named in
@@ -139,6 +145,14 @@ class OffscreenRenderer {
 
     /// MeshRenderer::setBackFaceCulling for the following renders (on by default).
     void setBackFaceCulling(bool enabled);
+    /// Whether the last render drew the refined copy of its scene
+    /// (OffscreenOptions::refined) rather than the scene.
+    [[nodiscard]] bool lastFrameRefined() const noexcept;
+    /// The scene the last render of `scene` with `options` drew: the refined
+    /// copy's when lastFrameRefined(), else `scene` (for what reads the same
+    /// geometry on the CPU: rasterizeDepth).
+    [[nodiscard]] const scene::Scene& lastDrawnScene(
+        const scene::Scene& scene, const OffscreenOptions& options) const noexcept;
     /// MeshRenderer::lastCulledMeshes of the last render's G-buffer.
     [[nodiscard]] std::size_t lastCulledMeshes() const noexcept;
 

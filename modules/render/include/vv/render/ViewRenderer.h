@@ -19,6 +19,7 @@
 #include "vv/render/LegendPainter.h"
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/MeshStyle.h"
+#include "vv/render/RefinedGeometry.h"
 #include "vv/render/RefinementPolicy.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/MeshTopology.h"
@@ -135,6 +136,12 @@ class ViewRenderer {
     /// Triangles of each simplified level, finest first (empty without).
     [[nodiscard]] std::vector<std::size_t> previewLevelTriangles() const;
 
+    /// The refined copy of the current scene (no scene: none), drawn by
+    /// frames with FrameSettings::smoothCoarseMeshes where the scene's
+    /// facets are coarse for the view. setScene() drops it.
+    void setRefinedGeometry(RefinedGeometry geometry);
+    [[nodiscard]] const RefinedGeometry& refinedGeometry() const noexcept { return refined_; }
+
     /// The closures of the current scene's meshes (scene::surfaceClosures),
     /// for back-face culling; until set, every mesh is drawn two-sided.
     void setSurfaceClosures(std::vector<scene::SurfaceClosure> closures);
@@ -158,6 +165,7 @@ class ViewRenderer {
     void setVesselCue(const VesselCueSettings& cue) noexcept { display_.cue = cue; }
     void setBackground(const glm::vec3& color) noexcept { display_.background = color; }
     void setAntialiasing(bool on) noexcept { display_.antialiasing = on; }
+    void setSmoothCoarseMeshes(bool on) noexcept { display_.smoothCoarseMeshes = on; }
     /// The style and the still frames' settings of `display` at once
     /// (setStyle(display.style), frameSettings(display)); its legends and
     /// annotations are the caller's to paint.
@@ -244,11 +252,13 @@ class ViewRenderer {
     std::uint64_t revision_ = 0;
     std::uint64_t nextRevision_ = 0;
     PreviewGeometry previews_;
+    RefinedGeometry refined_;
     std::vector<scene::SurfaceClosure> closures_;  ///< of scene_'s meshes
     bool closuresKnown_ = false;
     float isoValue_ = 0.0F;
     bool sceneDirty_ = false;     ///< scene_ not uploaded or attached yet
     bool previewDirty_ = false;   ///< previews_ not uploaded yet
+    bool refinedDirty_ = false;   ///< refined_ not uploaded yet
     bool closuresDirty_ = false;  ///< closures_ known but not handed over yet
     bool styleDirty_ = true;
     std::uint64_t requested_ = 0;

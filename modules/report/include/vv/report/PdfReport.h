@@ -70,6 +70,9 @@ struct ReportSettings {
     bool ambientOcclusion = true;
     bool antialiasing = true;
     std::string view;  ///< the camera, e.g. "far"
+    /// When a view drew the smooth copy of a coarse scene (OffscreenOptions::
+    /// refined): the most it moves the wall, mm.
+    std::optional<double> smoothedWallMm;
 };
 
 /// The report's title when none is given: "Vessel tree report", translated.
