@@ -23,8 +23,8 @@ namespace vv::app {
 inline constexpr std::size_t kMaxSmoothedTriangles = 150'000;
 /// The most a smooth copy may move the wall, in the scene's median edges:
 /// Loop subdivision moves a coarse vessel's wall inward by a fraction of
-/// its facets' sag (0.31 mm on the 2k-triangle aorta of `vesselview-cli
-/// artefacts --aorta --decimate 2000`); more
+/// its facets' sag (0.62 mm at most, both ways, on the 2k-triangle aorta of
+/// `vesselview-cli demo --aorta --triangles 2000`); more
 /// means the mesh is not a faceted smooth surface (a staircase, spikes),
 /// and it is drawn as it is.
 inline constexpr double kMaxSmoothDeviationEdges = 0.5;

@@ -7,6 +7,7 @@
 // refused with messages naming them.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <numbers>
@@ -112,6 +113,55 @@ TEST(MeshSubdivide, RefinesAFacetedTubeTowardsTheRoundOne) {
         off += std::abs(linear.values[i] - exact) > 1e-3 ? 1 : 0;
     }
     EXPECT_GT(off, 0);  // the points moved off the input, and the values stayed its
+}
+
+/// Distance from `p` to the segment [a, b].
+double segmentDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b) {
+    const glm::dvec3 ab = b - a;
+    const double t = std::clamp(glm::dot(p - a, ab) / std::max(glm::dot(ab, ab), 1e-300), 0.0, 1.0);
+    return glm::length(p - (a + t * ab));
+}
+
+/// Distance from `p` to the triangle (a, b, c): to its plane where the foot
+/// lies inside it, else to its nearest edge.
+double triangleDistance(const glm::dvec3& p, const glm::dvec3& a, const glm::dvec3& b,
+                        const glm::dvec3& c) {
+    const glm::dvec3 n = glm::cross(b - a, c - a);
+    if (glm::dot(n, n) > 0.0) {
+        const glm::dvec3 unit = glm::normalize(n);
+        const glm::dvec3 foot = p - glm::dot(p - a, unit) * unit;
+        const bool inside = glm::dot(glm::cross(b - a, foot - a), n) >= 0.0 &&
+                            glm::dot(glm::cross(c - b, foot - b), n) >= 0.0 &&
+                            glm::dot(glm::cross(a - c, foot - c), n) >= 0.0;
+        if (inside) {
+            return std::abs(glm::dot(p - a, unit));
+        }
+    }
+    return std::min({segmentDistance(p, a, b), segmentDistance(p, b, c), segmentDistance(p, c, a)});
+}
+
+TEST(MeshSubdivide, TheLargestDeviationIsTheHausdorffDistanceBothWays) {
+    // The caps' centres stand out of the refined surface (Loop rounds them
+    // off) by more than any refined point lies from the octagon's facets.
+    const Mesh tube = coarseTube();
+    const SubdividedMesh one = subdividedMesh(tube, 1);
+    const auto fromRefined = [&](const glm::vec3& q) {
+        double d = std::numeric_limits<double>::max();
+        const auto& r = one.mesh;
+        for (std::size_t t = 0; t + 2 < r.indices.size(); t += 3) {
+            d = std::min(
+                d, triangleDistance(q, r.positions[r.indices[t]], r.positions[r.indices[t + 1]],
+                                    r.positions[r.indices[t + 2]]));
+        }
+        return d;
+    };
+    double outward = 0.0;
+    for (const glm::vec3& q : tube.positions) {
+        outward = std::max(outward, fromRefined(q));
+    }
+    EXPECT_GT(outward, 0.0);
+    EXPECT_GE(one.largestDeviation, outward - 1e-4);
+    EXPECT_LE(one.largestDeviation, 0.25 * kRadius);
 }
 
 TEST(MeshSubdivide, LabelsStayLabelsAndNoDataStaysWhereItWas) {

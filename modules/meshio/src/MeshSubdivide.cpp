@@ -80,6 +80,61 @@ std::array<double, 3> barycentric(const glm::dvec3& p, const glm::dvec3& a, cons
     return {1.0 - s - t, s, t};
 }
 
+/// The nearest points of a surface's triangles (VTK's static cell locator).
+class SurfaceLocator {
+  public:
+    explicit SurfaceLocator(vtkPolyData* surface) {
+        locator_->SetDataSet(surface);
+        locator_->BuildLocator();
+    }
+    struct Nearest {
+        glm::dvec3 point{0.0};
+        vtkIdType cell = -1;  ///< the triangle it lies on; -1 when none
+        double distance = 0.0;
+    };
+    [[nodiscard]] Nearest closest(const glm::vec3& p) const {
+        std::array<double, 3> query{p.x, p.y, p.z};
+        std::array<double, 3> closest{};
+        Nearest nearest;
+        int subId = 0;
+        double distance2 = 0.0;
+        locator_->FindClosestPoint(query.data(), closest.data(), cell_, nearest.cell, subId,
+                                   distance2);
+        nearest.point = {closest[0], closest[1], closest[2]};
+        nearest.distance = std::sqrt(std::max(distance2, 0.0));
+        return nearest;
+    }
+
+  private:
+    vtkNew<vtkStaticCellLocator> locator_;
+    vtkNew<vtkGenericCell> cell_;  ///< scratch of FindClosestPoint
+};
+
+/// The largest distance of the input's vertices and triangle centres from
+/// the refined surface: the other half of the Hausdorff distance (a convex
+/// tip of the input stands out of the refined surface by more than any
+/// refined point lies from the input).
+double farthestFromRefined(const scene::Mesh& input, vtkPolyData* refined,
+                           const Progress& progress) {
+    const SurfaceLocator locator(refined);
+    double largest = 0.0;
+    const auto distanceOf = [&](const glm::vec3& p) {
+        largest = std::max(largest, locator.closest(p).distance);
+    };
+    for (std::size_t i = 0; i < input.positions.size(); ++i) {
+        if (i % 65536 == 0) {
+            progress.throwIfCancelled();
+        }
+        distanceOf(input.positions[i]);
+    }
+    for (std::size_t t = 0; t + 2 < input.indices.size(); t += 3) {
+        distanceOf((input.positions[input.indices[t]] + input.positions[input.indices[t + 1]] +
+                    input.positions[input.indices[t + 2]]) /
+                   3.0F);
+    }
+    return largest;
+}
+
 }  // namespace
 
 SubdividedMesh subdividedMesh(const scene::Mesh& mesh, int levels, const Progress& progress) {
@@ -108,38 +163,28 @@ SubdividedMesh subdividedMesh(const scene::Mesh& mesh, int levels, const Progres
     // How far the refined surface lies from the input's triangles, and the
     // input's arrays where each point lies over them.
     vtkSmartPointer<vtkPolyData> surface = detail::bareTriangles(mesh);
-    vtkNew<vtkStaticCellLocator> locator;
-    locator->SetDataSet(surface);
-    locator->BuildLocator();
-    vtkNew<vtkGenericCell> cell;
+    const SurfaceLocator locator(surface);
     double sum = 0.0;
     for (std::size_t i = 0; i < count; ++i) {
         if (i % 65536 == 0) {
             progress.throwIfCancelled();
         }
-        const glm::vec3& p = out.mesh.positions[i];
-        std::array<double, 3> query{p.x, p.y, p.z};
-        std::array<double, 3> closest{};
-        vtkIdType cellId = -1;
-        int subId = 0;
-        double distance2 = 0.0;
-        locator->FindClosestPoint(query.data(), closest.data(), cell, cellId, subId, distance2);
-        const double d = std::sqrt(std::max(distance2, 0.0));
-        out.largestDeviation = std::max(out.largestDeviation, d);
-        sum += d;
-        if (cellId < 0 || out.mesh.pointArrays.empty()) {
+        const SurfaceLocator::Nearest nearest = locator.closest(out.mesh.positions[i]);
+        out.largestDeviation = std::max(out.largestDeviation, nearest.distance);
+        sum += nearest.distance;
+        if (nearest.cell < 0 || out.mesh.pointArrays.empty()) {
             continue;
         }
-        const auto t = static_cast<std::size_t>(cellId);
+        const auto t = static_cast<std::size_t>(nearest.cell);
         const auto corner = [&](std::size_t k) {
             return glm::dvec3(mesh.positions[mesh.indices[3 * t + k]]);
         };
-        transferArrays(
-            mesh, t,
-            barycentric({closest[0], closest[1], closest[2]}, corner(0), corner(1), corner(2)),
-            out.mesh.pointArrays, i);
+        transferArrays(mesh, t, barycentric(nearest.point, corner(0), corner(1), corner(2)),
+                       out.mesh.pointArrays, i);
     }
     out.meanDeviation = count == 0 ? 0.0 : sum / static_cast<double>(count);
+    out.largestDeviation =
+        std::max(out.largestDeviation, farthestFromRefined(mesh, filter->GetOutput(), progress));
     progress.report(1.0, "subdividing");
     return out;
 }

@@ -10,9 +10,12 @@ namespace vv::meshio {
 /// made from.
 struct SubdividedMesh {
     scene::Mesh mesh;
-    /// The largest and the mean distance of its points from the input
-    /// surface (its triangles), in the mesh's units: what the refinement
-    /// moved the surface by.
+    /// What the refinement moved the surface by, in the mesh's units:
+    /// `largestDeviation` the Hausdorff distance between the two surfaces
+    /// (the farthest of its points from the input's triangles, and of the
+    /// input's vertices and triangle centres from its triangles);
+    /// `meanDeviation` the mean distance of its points from the input's
+    /// triangles.
     double largestDeviation = 0.0;
     double meanDeviation = 0.0;
 };
