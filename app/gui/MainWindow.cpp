@@ -555,8 +555,8 @@ void MainWindow::syncControls() {
 
 void MainWindow::showSmoothCopyNote() {
     const render::RefinedGeometry& copy = viewer_->smoothCopy();
-    if (!viewer_->smoothCoarseMeshes() || !copy.scene) {
-        smoothLabel_->hide();
+    if (!viewer_->smoothCoarseMeshes() || !copy.scene || !viewer_->lastFrameSmoothed()) {
+        smoothLabel_->hide();  // the image shows the mesh as it is
         return;
     }
     const QLocale locale;
@@ -904,6 +904,7 @@ void MainWindow::updateVssLabel() {
 
 void MainWindow::onFrameRendered() {
     updateVssLabel();
+    showSmoothCopyNote();
     vssPanel_->updateStatus();
     displayPanel_->frameRendered();
     if (screenshot_ != nullptr) {

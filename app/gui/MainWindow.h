@@ -265,7 +265,7 @@ class MainWindow : public QMainWindow {
     /// Every control shows the viewer's current settings.
     void syncControls();
     /// Shows how far the smooth copy moves the wall in the status bar while
-    /// the switch is on and a copy exists; hides it otherwise.
+    /// the view shows it (the last frame drew it); hides it otherwise.
     void showSmoothCopyNote();
     void setColorBlindSafe(bool on);
     /// The document's signals to the viewer, panels and status bar.

@@ -165,6 +165,10 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] bool smoothCoarseMeshes() const noexcept {
         return view_.displaySettings().smoothCoarseMeshes;
     }
+    /// Whether the last frame drew the smooth copy (the view shows it).
+    [[nodiscard]] bool lastFrameSmoothed() const noexcept {
+        return view_.frameRenderer().lastGeometryLevel() == render::kRefinedLevel;
+    }
     /// The smooth copy drawn (its deviation from the mesh), or none yet.
     [[nodiscard]] const render::RefinedGeometry& smoothCopy() const noexcept {
         return view_.refinedGeometry();

@@ -571,7 +571,16 @@ TEST_F(ProgressiveTest, ACoarseSceneIsDrawnFromItsSmoothCopyWhileTheSwitchIsOn) 
         return exactShown(viewer) &&
                viewer.view().frameRenderer().lastGeometryLevel() == vv::render::kRefinedLevel;
     }));
-    EXPECT_TRUE(label->isVisible());
+    EXPECT_TRUE(waitUntil([&] { return label->isVisible(); }));
+    // Far away its facets are small on screen: the mesh as it is, and the
+    // status bar says nothing of a copy the image does not show.
+    vv::render::Camera far = viewer.camera();
+    far.setDistance(40.0F * far.distance());
+    viewer.setCamera(far);
+    ASSERT_TRUE(waitUntil([&] {
+        return exactShown(viewer) && viewer.view().frameRenderer().lastGeometryLevel() == 0U;
+    }));
+    EXPECT_TRUE(waitUntil([&] { return !label->isVisible(); }));
 }
 
 TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout) {
