@@ -10,9 +10,8 @@
 // a Markdown table (docs/benchmarks/artefacts.md). --save writes the meshes
 // it made (the control and its decimated copies) into DIR as VTP, to be
 // rendered or compared. --subdivide adds each decimated copy refined by
-// LEVELS steps of Loop subdivision (meshio::subdividedMesh), with the
-// largest distance of its points from the copy (issue 36).
-#include <algorithm>
+// LEVELS steps of Loop subdivision (meshio::subdividedScene), with its
+// Hausdorff distance from the copy (issue 36).
 #include <filesystem>
 #include <optional>
 #include <ostream>
@@ -155,17 +154,12 @@ int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, st
             {control + " decimated to " + std::to_string(t),
              meshio::simplifiedScene(cases.front().scene, static_cast<std::size_t>(t))});
         if (parsed.subdivide > 0) {
-            scene::Scene refined;
-            double largest = 0.0;
-            for (const scene::Mesh& mesh : cases.back().scene.meshes) {
-                meshio::SubdividedMesh subdivided = meshio::subdividedMesh(mesh, parsed.subdivide);
-                largest = std::max(largest, subdivided.largestDeviation);
-                refined.meshes.push_back(std::move(subdivided.mesh));
-            }
+            meshio::SubdividedScene refined =
+                meshio::subdividedScene(cases.back().scene, parsed.subdivide);
             cases.push_back({control + " decimated to " + std::to_string(t) + ", subdivided " +
                                  std::to_string(parsed.subdivide) + "x (within " +
-                                 fixedText(largest, 3) + " mm of it)",
-                             std::move(refined)});
+                                 fixedText(refined.largestDeviation, 3) + " mm of it)",
+                             std::move(refined.scene)});
         }
     }
     if (parsed.save) {

@@ -155,8 +155,6 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] const render::VesselCueSettings& vesselCue() const noexcept {
         return view_.displaySettings().cue;
     }
-    /// Legends of the scales in use (depth bottom-left, parameter bottom-right),
-    /// painted over the frame; on by default.
     /// Draw coarse meshes from a smooth (Loop-subdivided) copy where their
     /// facets are large on screen (render::FrameSettings::smoothCoarseMeshes);
     /// the copy is made in the background for a scene that gets one
@@ -173,6 +171,8 @@ class ViewerWidget : public QOpenGLWidget {
     [[nodiscard]] const render::RefinedGeometry& smoothCopy() const noexcept {
         return view_.refinedGeometry();
     }
+    /// Legends of the scales in use (depth bottom-left, parameter bottom-right),
+    /// painted over the frame; on by default.
     void setLegendsVisible(bool visible);
     [[nodiscard]] bool legendsVisible() const noexcept { return legendsVisible_; }
     /// The orientation marker and the scale bar over the view, and the

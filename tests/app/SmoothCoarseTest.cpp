@@ -3,7 +3,8 @@
 // the copy for a coarse scene and none for a fine one or one it would
 // deform; `render --smooth-coarse on` draws it where the facets are large
 // on screen, and the depth the renderer writes shows a round tube where the
-// mesh is an octagon; off, or with facets small on screen, the mesh as it is.
+// mesh is an octagon (seen end-on: the "left" view looks along x); off, or
+// with facets small on screen, the mesh as it is.
 // Rendering needs OpenGL: run under `xvfb-run -a` (QT_QPA_PLATFORM=xcb).
 #include <gtest/gtest.h>
 
@@ -17,6 +18,7 @@
 
 #include "CliRun.h"
 #include "ReportTestUtil.h"
+#include "TestMeshes.h"
 #include "common/SmoothCopy.h"
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/meshio/MeshLoader.h"
@@ -36,39 +38,14 @@ fs::path testDir() {
     return dir;
 }
 
-/// A closed tube along z of radius 10 mm and length 60 mm, `around` points
-/// per ring on the circle, `along` + 1 rings, a centre point closing each end.
+/// A tube along x of radius 10 mm and length 60 mm (open: its rims are
+/// its outline seen end-on), `around` points per ring on the circle.
 Mesh tube(int around, int along) {
-    constexpr double kRadius = 10.0;
-    constexpr double kLength = 60.0;
-    Mesh mesh;
-    mesh.name = "tube";
-    for (int j = 0; j <= along; ++j) {
-        for (int i = 0; i < around; ++i) {
-            const double phi = 2.0 * std::numbers::pi * i / around;
-            mesh.positions.emplace_back(kRadius * std::cos(phi), kRadius * std::sin(phi),
-                                        kLength * j / along);
-        }
-    }
-    const auto at = [&](int j, int i) {
-        return static_cast<std::uint32_t>(j * around + (i % around));
-    };
-    for (int j = 0; j < along; ++j) {
-        for (int i = 0; i < around; ++i) {
-            mesh.indices.insert(mesh.indices.end(), {at(j, i), at(j, i + 1), at(j + 1, i)});
-            mesh.indices.insert(mesh.indices.end(), {at(j, i + 1), at(j + 1, i + 1), at(j + 1, i)});
-        }
-    }
-    const auto bottom = static_cast<std::uint32_t>(mesh.positions.size());
-    mesh.positions.emplace_back(0.0F, 0.0F, 0.0F);
-    const auto top = static_cast<std::uint32_t>(mesh.positions.size());
-    mesh.positions.emplace_back(0.0F, 0.0F, static_cast<float>(kLength));
-    for (int i = 0; i < around; ++i) {
-        mesh.indices.insert(mesh.indices.end(), {bottom, at(0, i + 1), at(0, i)});
-        mesh.indices.insert(mesh.indices.end(), {top, at(along, i), at(along, i + 1)});
-    }
-    vv::scene::computeNormals(mesh);
-    return mesh;
+    return vv::test::tube({.radius = 10.0F,
+                           .start = glm::vec3(0.0F),
+                           .length = 60.0F,
+                           .segments = around,
+                           .rings = along});
 }
 
 using Result = vv::test::CliRunResult;
@@ -166,7 +143,7 @@ TEST(SmoothCoarseRender, AnOctagonalTubeEndOnIsDrawnRoundWhereItsFacetsAreLarge)
     for (const bool on : {false, true}) {
         const fs::path depth = dir / (on ? "on.pfm" : "off.pfm");
         const Result r = cli({"render", file.string(), "-o", (dir / "image.png").string(), "--size",
-                              "400x400", "--view", "superior", "--depth-out", depth.string(),
+                              "400x400", "--view", "left", "--depth-out", depth.string(),
                               "--smooth-coarse", on ? "on" : "off"});
         ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
         // The note says so, with how far the wall moved; off, nothing.
@@ -185,12 +162,12 @@ TEST(SmoothCoarseRender, FacetsSmallOnScreenAreDrawnAsTheyAre) {
     vv::meshio::writeVtp(tube(64, 40), file);  // edges about 1-1.5 mm
     // 48 px across a 20 mm tube: 2-3 px per mm, a median edge of a few px.
     const Result small = cli({"render", file.string(), "-o", (dir / "small.png").string(), "--size",
-                              "64x64", "--view", "superior"});
+                              "64x64", "--view", "left"});
     ASSERT_EQ(small.code, vv::cli::kOk) << small.err;
     EXPECT_EQ(small.out.find("drawn smoothed"), std::string::npos) << small.out;
     // The same tube filling 400 px: 15 px per mm, smoothed.
     const Result large = cli({"render", file.string(), "-o", (dir / "large.png").string(), "--size",
-                              "400x400", "--view", "superior"});
+                              "400x400", "--view", "left"});
     ASSERT_EQ(large.code, vv::cli::kOk) << large.err;
     EXPECT_NE(large.out.find("drawn smoothed"), std::string::npos) << large.out;
 }
