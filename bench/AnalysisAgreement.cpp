@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 #include <tuple>
 #include <utility>
@@ -83,22 +84,40 @@ const CrossSection* widestTrunkSection(const demo::AneurysmPhantom& phantom,
     return widest;
 }
 
+/// Whether `q` lies where the axis distance is measured: two radii clear of
+/// the ends and the bifurcation point; sets `r` to its part's radius.
+bool inMeasuredZone(const demo::AneurysmPhantom& phantom, const demo::AneurysmAxisPoint& axis,
+                    const glm::dvec3& q, double& r) {
+    const auto& o = phantom.options;
+    if (glm::length(q - phantom.bifurcationPoint) < 2.0 * o.radiusMm) {
+        return false;
+    }
+    const bool trunk = axis.part == demo::AneurysmPart::Trunk;
+    r = trunk ? o.radiusMm : o.iliacRadiusMm;
+    const double end = trunk ? 0.0 : o.iliacLengthMm;
+    return std::abs(axis.abscissaMm - end) >= 2.0 * r;
+}
+
+/// AneurysmAgreement::worstWallDistancePerR.
+double wallDistance(const demo::AneurysmPhantom& phantom) {
+    return worstOverFacets(phantom.mesh, [&](const glm::dvec3& q) {
+        const auto axis = phantom.nearestAxisPoint(q);
+        double r = 0.0;
+        return inMeasuredZone(phantom, axis, q, r) ? std::abs(axis.distanceMm - axis.radiusMm) / r
+                                                   : std::nan("");
+    });
+}
+
 /// Worst distance per r and the points counted (AneurysmAgreement).
 std::pair<double, std::size_t> axisDistance(const demo::AneurysmPhantom& phantom,
                                             const analysis::CenterlineTree& tree) {
-    const auto& o = phantom.options;
     double worst = 0.0;
     std::size_t checked = 0;
     for (const auto& branch : tree.branches) {
         for (const auto& p : branch.points) {
-            if (glm::length(p.position - phantom.bifurcationPoint) < 2.0 * o.radiusMm) {
-                continue;
-            }
             const auto axis = phantom.nearestAxisPoint(p.position);
-            const bool trunk = axis.part == demo::AneurysmPart::Trunk;
-            const double r = trunk ? o.radiusMm : o.iliacRadiusMm;
-            const double end = trunk ? 0.0 : o.iliacLengthMm;
-            if (std::abs(axis.abscissaMm - end) < 2.0 * r) {
+            double r = 0.0;
+            if (!inMeasuredZone(phantom, axis, p.position, r)) {
                 continue;
             }
             worst = std::max(worst, axis.distanceMm / r);
@@ -146,6 +165,7 @@ AneurysmAgreement measureAneurysm(const demo::AneurysmPhantom& phantom,
         result.widestTrueRadiusMm = phantom.trunkRadiusAt(result.widestAbscissaMm);
     }
     std::tie(result.worstAxisDistancePerR, result.axisPoints) = axisDistance(phantom, tree);
+    result.worstWallDistancePerR = wallDistance(phantom);
     result.trunkLengthError =
         tree.branches.empty() ? std::nan("") : trunkLengthError(phantom, tree);
     if (!tree.branches.empty()) {
@@ -234,6 +254,29 @@ scene::Mesh segmentAsRenderDoes(const demo::DemoCt& ct, const std::filesystem::p
     (void)dicom::writeCtSeries(folder, ct.volume);
     scene::Scene scene = segmentation::loadSceneSource(folder, segmentation::SceneSourceOptions{});
     return std::move(scene.meshes.front());
+}
+
+double worstOverFacets(const scene::Mesh& mesh,
+                       const std::function<double(const glm::dvec3&)>& distance) {
+    constexpr int kSteps = 8;
+    const auto& positions = mesh.positions;
+    const auto& indices = mesh.indices;
+    double worst = 0.0;
+    for (std::size_t t = 0; t + 2 < indices.size(); t += 3) {
+        const glm::dvec3 a(positions[indices[t]]);
+        const glm::dvec3 b(positions[indices[t + 1]]);
+        const glm::dvec3 c(positions[indices[t + 2]]);
+        for (int i = 0; i <= kSteps; ++i) {
+            for (int j = 0; i + j <= kSteps; ++j) {
+                const double d =
+                    distance(a + (b - a) * (i / double{kSteps}) + (c - a) * (j / double{kSteps}));
+                if (!std::isnan(d)) {
+                    worst = std::max(worst, d);
+                }
+            }
+        }
+    }
+    return worst;
 }
 
 }  // namespace vv::bench

@@ -12,6 +12,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <vector>
 
 #include "vv/analysis/Centerlines.h"
@@ -76,6 +77,13 @@ struct AneurysmAgreement {
     /// points that took in.
     double worstAxisDistancePerR = 0.0;
     std::size_t axisPoints = 0;
+    /// The mesh's own largest distance from the true wall over the same
+    /// stretch (along the radius of the nearest part's axis, sampled 45
+    /// times a facet), per its part's radius: how far the input itself is
+    /// from the analytic surface. A centreline is only as near the true axis
+    /// as its wall is near the true wall: on a coarse mesh the facets' chords
+    /// lie inside the circle and a decimated mesh's are uneven around it.
+    double worstWallDistancePerR = 0.0;
     /// The abscissa where branch 0's path crosses the bifurcation point's
     /// plane (continued straight when the paths part before it) against the
     /// true distance from the source's end (trunk length, plus the trunk's
@@ -89,6 +97,13 @@ struct AneurysmAgreement {
     /// The first bifurcation's angle minus the true one, degrees; NaN without one.
     double angleErrorDeg = 0.0;
 };
+
+/// The largest of `distance(q)` over points q on every facet of `mesh` (a
+/// barycentric lattice of 8 steps along each edge: corners, edges and
+/// inside, 45 points a facet), NaNs (points left out) skipped; 0 when none
+/// is counted. How far a mesh's own facets lie from a phantom's true wall.
+[[nodiscard]] double worstOverFacets(const scene::Mesh& mesh,
+                                     const std::function<double(const glm::dvec3&)>& distance);
 
 /// Measures `tree` and `sections` (computeSections of it) of `phantom`'s mesh.
 [[nodiscard]] AneurysmAgreement measureAneurysm(

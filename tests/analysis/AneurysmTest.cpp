@@ -171,6 +171,58 @@ TEST(Aneurysm, AMillionJitteredTrianglesKeepTheSourceAtTheApex) {
     expectTheTrunkLength(m);
 }
 
+// A thousand triangles (a coarse, decimated segmentation): the facets'
+// chords and their uneven spacing around the lumen put the mesh's own wall
+// 6 to 9 % of r off the true wall, so the 2 % axis goal cannot be checked
+// against analytic truth here. The centreline is nearer the true axis than
+// the wall is to the true wall; every other goal holds. The trunk ends at
+// the bifurcation: on the symmetric open surface the minimal-path tree forked
+// 40 mm before it and ran two paths 0.2 mm apart down the trunk, which made
+// the bifurcation there and its angle 58 degrees off.
+TEST(Aneurysm, AThousandTrianglesKeepTheAxisNearerTheTruthThanTheirOwnWall) {
+    for (const bool open : {false, true}) {
+        for (const double jitter : {0.0, 0.02}) {
+            SCOPED_TRACE(std::string(open ? "open" : "closed") +
+                         (jitter > 0.0 ? ", jittered" : ""));
+            AneurysmPhantomOptions o = phantomOptions(open, jitter);
+            o.targetTriangles = 1'000;
+            const Measured m = measure(o);
+            const AneurysmAgreement& a = m.agreement;
+            EXPECT_GT(a.axisPoints, 50U);
+            EXPECT_GT(a.worstWallDistancePerR, 0.02);
+            EXPECT_LT(a.worstAxisDistancePerR, a.worstWallDistancePerR);
+            EXPECT_EQ(a.branches, 3U);
+            EXPECT_EQ(a.ends, 3U);
+            EXPECT_NEAR(a.maxDiameterError, 0.0, 0.01);
+            EXPECT_NEAR(a.trunkLengthError, 0.0, 0.01);
+            ASSERT_EQ(a.bifurcations, 1U);
+            EXPECT_NEAR(a.angleErrorDeg, 0.0, 1.0);
+            ASSERT_FALSE(m.tree.branches.empty());
+            EXPECT_NEAR(m.tree.branches[0].points.back().position.z, o.trunkLengthMm,
+                        0.5 * o.radiusMm);
+            record("worst_axis_distance_per_r", a.worstAxisDistancePerR);
+            record("worst_wall_distance_per_r", a.worstWallDistancePerR);
+        }
+    }
+}
+
+// The wall measure itself: under 2 % of r on a wall of 20k triangles (its
+// vertices on the truth, its chords a little inside), and the distance of a
+// wall moved outward by a known amount.
+TEST(AneurysmPhantom, TheWallsOwnDistanceMeasuresAKnownOffset) {
+    AneurysmPhantomOptions o = phantomOptions();
+    o.targetTriangles = 20'000;
+    AneurysmPhantom p = makeAneurysmPhantom(o);
+    const double before = vv::bench::measureAneurysm(p, {}, {}).worstWallDistancePerR;
+    EXPECT_LT(before, 0.02);    // its vertices on the truth, its chords inside it
+    const double offset = 0.5;  // mm: 5 % of the trunk's r, 8 % of an iliac's
+    for (std::size_t i = 0; i < p.mesh.positions.size(); ++i) {
+        p.mesh.positions[i] += static_cast<float>(offset) * glm::normalize(p.mesh.normals[i]);
+    }
+    const double after = vv::bench::measureAneurysm(p, {}, {}).worstWallDistancePerR;
+    EXPECT_NEAR(after, offset / o.iliacRadiusMm, before + 0.005);
+}
+
 TEST(AneurysmPhantom, IsDeterministicAndRefusesOptionsOutOfRange) {
     AneurysmPhantomOptions o;
     o.targetTriangles = 2'000;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <string>
+#include <tuple>
 #include <utility>
 
 #include "AnalysisSteps.h"
@@ -441,6 +442,8 @@ PathProfile profilePath(const VoronoiGraph& g, const ResolvedEnd& source, const 
         p.normal = normals[i];
         p.curvature = k[i];
         p.torsion = tau[i];
+        // The Voronoi radius along the path, until measureRadii measures it.
+        p.radiusMm = detail::interpolate(profile.smoothArc, sigma, at[i]) / kSmoothingRadii;
     }
     profile.abscissae = at;
     return profile;
@@ -493,8 +496,38 @@ struct BranchSpan {
     int endIndex = -1;
 };
 
+/// Two paths are one vessel while they run within this many of the local
+/// inscribed radius of each other.
+constexpr double kPartingRadii = 0.1;
+/// The step (mm) at which two paths are compared past their last shared vertex.
+constexpr double kPartingStepMm = 0.25;
+
+/// Where two paths that share a Voronoi vertex at abscissae `from` (of `k`)
+/// and `x` (of `m`) really part: the minimal-path tree can fork early in a
+/// wide straight lumen (its Voronoi vertices a cloud around the axis, two
+/// routes through it as cheap as each other) and run two paths side by side
+/// to the bifurcation; they are one vessel while they stay within
+/// kPartingRadii of the local radius. Returns the pair moved to the last
+/// point where they still do, at equal arc lengths along both.
+std::pair<double, double> whereThePathsPart(const PathProfile& k, double from, const PathProfile& m,
+                                            double x) {
+    const double reach = std::min(k.abscissae.back() - from, m.abscissae.back() - x);
+    double along = 0.0;
+    for (double d = kPartingStepMm; d <= reach; d += kPartingStepMm) {
+        const CenterlinePoint a = k.at(from + d);
+        const CenterlinePoint b = m.at(x + d);
+        if (glm::length(a.position - b.position) >
+            kPartingRadii * std::min(a.radiusMm, b.radiusMm)) {
+            break;
+        }
+        along = d;
+    }
+    return {from + along, x + along};
+}
+
 /// Splits the paths into branches where they part (the last Voronoi vertex
-/// a path shares with the paths before it).
+/// a path shares with the paths before it, moved on while the two run side
+/// by side: whereThePathsPart).
 std::vector<BranchSpan> splitIntoBranches(const std::vector<PathProfile>& paths,
                                           std::size_t graphSize) {
     std::vector<BranchSpan> spans;
@@ -518,8 +551,9 @@ std::vector<BranchSpan> splitIntoBranches(const std::vector<PathProfile>& paths,
                 std::find(paths[m].vertices.begin(), paths[m].vertices.end(),
                           path.vertices[junctionIndex]) -
                 paths[m].vertices.begin());
-            const double x = paths[m].abscissaOfVertex(inM);
-            span.from = path.abscissaOfVertex(junctionIndex);
+            double x = 0.0;
+            std::tie(span.from, x) = whereThePathsPart(path, path.abscissaOfVertex(junctionIndex),
+                                                       paths[m], paths[m].abscissaOfVertex(inM));
             // The span of path m that holds x; split it there unless x is its end.
             int holder = owned[m].back();
             for (const int id : owned[m]) {

@@ -130,6 +130,33 @@ class Field {
     double blend_;
 };
 
+/// Moves every vertex of `mesh` onto the field's zero level (Newton steps
+/// along its gradient, by central differences) and recomputes the normals.
+/// The extraction and its smoothing leave the vertices up to 0.15 voxel off
+/// it (0.3 mm at 20k triangles: 5 % of an iliac's radius); on it, only the
+/// facets' chords depart from the truth.
+void projectOntoTheWall(scene::Mesh& mesh, const Field& field) {
+    constexpr int kSteps = 4;
+    constexpr double kH = 1e-3;  // mm, the differences' half-step
+    for (glm::vec3& position : mesh.positions) {
+        glm::dvec3 q(position);
+        for (int step = 0; step < kSteps; ++step) {
+            const double f = field.at(q);
+            const glm::dvec3 gradient(
+                field.at(q + glm::dvec3(kH, 0.0, 0.0)) - field.at(q - glm::dvec3(kH, 0.0, 0.0)),
+                field.at(q + glm::dvec3(0.0, kH, 0.0)) - field.at(q - glm::dvec3(0.0, kH, 0.0)),
+                field.at(q + glm::dvec3(0.0, 0.0, kH)) - field.at(q - glm::dvec3(0.0, 0.0, kH)));
+            const double squared = glm::dot(gradient, gradient) / (4.0 * kH * kH);
+            if (!(squared > 1e-6)) {
+                break;  // a flat spot (never on a tube's wall): leave the vertex
+            }
+            q -= f * gradient / (2.0 * kH * squared);
+        }
+        position = glm::vec3(q);
+    }
+    scene::computeNormals(mesh);
+}
+
 /// The surface's area, roughly (for the voxel size of a triangle count).
 double surfaceArea(const AneurysmPhantomOptions& o) {
     const double trunk =
@@ -268,9 +295,11 @@ AneurysmPhantom makeAneurysmPhantom(const AneurysmPhantomOptions& options,
         }
     }
     phantom.mesh = detail::finishSurface(std::move(surface), progress.sub(0.9, 0.95));
+    projectOntoTheWall(phantom.mesh, field);
     if (options.targetTriangles < detail::kFinestExtractionTriangles) {
         phantom.mesh =
             meshio::simplifiedMesh(phantom.mesh, options.targetTriangles, progress.sub(0.95, 1.0));
+        projectOntoTheWall(phantom.mesh, field);  // decimation moves the vertices it keeps
     }
     if (options.jitterFraction > 0.0) {
         detail::PhantomJitter jitter(options.seed, options.jitterFraction * options.radiusMm);

@@ -14,9 +14,11 @@
 // blended where they meet (within about one trunk radius of the bifurcation
 // point), extracted as the demo tree's surface is (flying edges,
 // windowed-sinc smoothing) at about a chosen triangle count (under 20k
-// extracted at 20k and decimated, as coarse segmentations are made). Every section
-// of the trunk perpendicular to +z away from the bifurcation is a circle of
-// the profile's radius centred on the axis. Used by tests/analysis and
+// extracted at 20k and decimated, as coarse segmentations are made), every
+// vertex then moved onto the zero level (before any jitter), so that only
+// the facets' chords depart from the truth. Every section of the trunk
+// perpendicular to +z away from the bifurcation is a circle of the
+// profile's radius centred on the axis (the facets' polygon inscribed in it). Used by tests/analysis and
 // bench/analysis_accuracy (docs/benchmarks/analysis.md).
 
 #include <array>
