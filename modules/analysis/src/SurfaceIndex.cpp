@@ -12,7 +12,11 @@
 #include <cmath>
 #include <future>
 #include <iterator>
+#include <limits>
+#include <mutex>
 #include <vector>
+
+#include "vv/core/Parallel.h"
 
 namespace vv::analysis::detail {
 namespace {
@@ -58,6 +62,81 @@ using Traits = CGAL::AABB_traits<Kernel, Primitive>;
 using AabbTree = CGAL::AABB_tree<Traits>;
 
 constexpr std::uint32_t kHintStride = 8;
+/// The triangles scanned by one task of a scan.
+constexpr long kScanGrain = 16384;
+
+/// SurfaceIndex::nearest by a scan of every triangle: the nearest point of
+/// each (CGAL's projection onto a triangle), the least distance, the lowest
+/// triangle id among equals.
+SurfaceIndex::Nearest nearestByScan(const PreparedSurface& s, const glm::dvec3& p) {
+    const Kernel::Point_3 query = toPoint(p);
+    const auto project = Kernel().construct_projected_point_3_object();
+    std::mutex mutex;
+    SurfaceIndex::Nearest best;
+    best.distance = std::numeric_limits<double>::infinity();
+    parallelFor(0, static_cast<long>(s.triangles.size()), kScanGrain, [&](long begin, long end) {
+        SurfaceIndex::Nearest local;
+        local.distance = std::numeric_limits<double>::infinity();
+        const TriangleMap triangles{&s};
+        for (long id = begin; id < end; ++id) {
+            const auto point = project(get(triangles, static_cast<std::uint32_t>(id)), query);
+            const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(point, query)));
+            if (d < local.distance) {
+                local = {{point.x(), point.y(), point.z()}, d, static_cast<std::uint32_t>(id)};
+            }
+        }
+        const std::scoped_lock lock(mutex);
+        if (local.distance < best.distance ||
+            (local.distance == best.distance && local.triangle < best.triangle)) {
+            best = local;
+        }
+    });
+    best.distance = glm::length(best.point - p);
+    return best;
+}
+
+/// SurfaceIndex::firstHit by a scan of every triangle: the hit nearest the
+/// ray's origin (a segment's nearer end where the ray runs in a triangle's
+/// plane).
+std::optional<glm::dvec3> firstHitByScan(const PreparedSurface& s, const Kernel::Ray_3& ray) {
+    std::mutex mutex;
+    std::optional<glm::dvec3> best;
+    double bestDistance = std::numeric_limits<double>::infinity();
+    const glm::dvec3 origin(ray.source().x(), ray.source().y(), ray.source().z());
+    parallelFor(0, static_cast<long>(s.triangles.size()), kScanGrain, [&](long begin, long end) {
+        std::optional<glm::dvec3> local;
+        double localDistance = std::numeric_limits<double>::infinity();
+        const TriangleMap triangles{&s};
+        for (long id = begin; id < end; ++id) {
+            const auto hit =
+                CGAL::intersection(ray, get(triangles, static_cast<std::uint32_t>(id)));
+            if (!hit) {
+                continue;
+            }
+            std::optional<glm::dvec3> point;
+            if (const auto* p = boost::get<Kernel::Point_3>(&*hit)) {
+                point = glm::dvec3(p->x(), p->y(), p->z());
+            } else if (const auto* segment = boost::get<Kernel::Segment_3>(&*hit)) {
+                const glm::dvec3 a(segment->source().x(), segment->source().y(),
+                                   segment->source().z());
+                const glm::dvec3 b(segment->target().x(), segment->target().y(),
+                                   segment->target().z());
+                point = glm::length(a - origin) <= glm::length(b - origin) ? a : b;
+            }
+            if (point && glm::length(*point - origin) < localDistance) {
+                localDistance = glm::length(*point - origin);
+                local = point;
+            }
+        }
+        const std::scoped_lock lock(mutex);
+        if (local && localDistance < bestDistance) {
+            bestDistance = localDistance;
+            best = local;
+        }
+    });
+    return best;
+}
+
 }  // namespace
 
 struct SurfaceIndex::Tree {
@@ -87,10 +166,13 @@ struct SurfaceIndex::Tree {
 };
 
 SurfaceIndex::SurfaceIndex(const PreparedSurface& surface, Build build)
-    : tree_(std::make_unique<Tree>()) {
+    : surface_(&surface), tree_(std::make_unique<Tree>()) {
     if (build == Build::Now) {
         tree_->fill(surface);
         return;
+    }
+    if (build == Build::OnFirstQuery) {
+        scansLeft_ = kScanQueries;
     }
     Tree* tree = tree_.get();
     built_ = std::async(build == Build::InBackground ? std::launch::async : std::launch::deferred,
@@ -113,7 +195,22 @@ const SurfaceIndex::Tree& SurfaceIndex::tree() const {
     return *tree_;
 }
 
+bool SurfaceIndex::built() const {
+    return !built_.valid() || built_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
+}
+
+bool SurfaceIndex::scanInstead() const {
+    if (built_.valid() &&
+        built_.wait_for(std::chrono::seconds(0)) == std::future_status::deferred) {
+        return scansLeft_.fetch_sub(1) > 0;
+    }
+    return false;
+}
+
 SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
+    if (scanInstead()) {
+        return nearestByScan(*surface_, p);
+    }
     const Tree& t = tree();
     const auto [point, primitive] = t.tree.closest_point_and_primitive(toPoint(p));
     Nearest n;
@@ -133,6 +230,9 @@ std::optional<glm::dvec3> SurfaceIndex::firstHit(const glm::dvec3& origin,
                                                  const glm::dvec3& direction) const {
     const Kernel::Ray_3 ray(toPoint(origin),
                             Kernel::Vector_3(direction.x, direction.y, direction.z));
+    if (scanInstead()) {
+        return firstHitByScan(*surface_, ray);
+    }
     const auto hit = tree().tree.first_intersection(ray);
     if (!hit) {
         return std::nullopt;
