@@ -206,6 +206,22 @@ TEST(Aneurysm, AThousandTrianglesKeepTheAxisNearerTheTruthThanTheirOwnWall) {
     }
 }
 
+// The same symmetric surface ten times smaller (a 1 mm trunk): the paths are
+// compared in steps of the local radius, so they part at the bifurcation at
+// every scale.
+TEST(Aneurysm, PathsPartAtTheBifurcationAtATenthOfTheSize) {
+    AneurysmPhantomOptions o = phantomOptions(true);
+    o.targetTriangles = 1'000;
+    AneurysmPhantom p = makeAneurysmPhantom(o);
+    for (glm::vec3& position : p.mesh.positions) {
+        position *= 0.1F;
+    }
+    const auto tree = vv::analysis::computeCenterlines(p.mesh);
+    ASSERT_EQ(tree.branches.size(), 3U);
+    EXPECT_NEAR(tree.branches[0].points.back().position.z, 0.1 * o.trunkLengthMm,
+                0.05 * o.radiusMm);
+}
+
 // The wall measure itself: under 2 % of r on a wall of 20k triangles (its
 // vertices on the truth, its chords a little inside), and the distance of a
 // wall moved outward by a known amount.

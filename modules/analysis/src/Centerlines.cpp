@@ -499,8 +499,10 @@ struct BranchSpan {
 /// Two paths are one vessel while they run within this many of the local
 /// inscribed radius of each other.
 constexpr double kPartingRadii = 0.1;
-/// The step (mm) at which two paths are compared past their last shared vertex.
-constexpr double kPartingStepMm = 0.25;
+/// The step at which two paths are compared past their last shared vertex,
+/// in local radii at that vertex (at most kMaxPartingSteps steps in all).
+constexpr double kPartingStepRadii = 0.25;
+constexpr double kMaxPartingSteps = 1e5;
 
 /// Where two paths that share a Voronoi vertex at abscissae `from` (of `k`)
 /// and `x` (of `m`) really part: the minimal-path tree can fork early in a
@@ -512,8 +514,13 @@ constexpr double kPartingStepMm = 0.25;
 std::pair<double, double> whereThePathsPart(const PathProfile& k, double from, const PathProfile& m,
                                             double x) {
     const double reach = std::min(k.abscissae.back() - from, m.abscissae.back() - x);
+    const double radius = std::min(k.at(from).radiusMm, m.at(x).radiusMm);
+    const double step = std::max(kPartingStepRadii * radius, reach / kMaxPartingSteps);
+    if (!(step > 0.0)) {
+        return {from, x};  // no length left, or no radius known
+    }
     double along = 0.0;
-    for (double d = kPartingStepMm; d <= reach; d += kPartingStepMm) {
+    for (double d = step; d <= reach; d += step) {
         const CenterlinePoint a = k.at(from + d);
         const CenterlinePoint b = m.at(x + d);
         if (glm::length(a.position - b.position) >
