@@ -113,10 +113,12 @@ TEST(SurfaceIndex, AnswersAsEveryTriangleTriedInTurn) {
     EXPECT_EQ(crossing, expected);
 }
 
-// Built when first asked, the first kScanQueries nearest points and ray
-// hits come from a scan of every triangle, without building the tree; they
-// are the tree's answers, and the query after them builds it.
-TEST(SurfaceIndex, TheFirstQueriesAreScannedAndAnswerAsTheTree) {
+// Built when first asked, the first kScanQueries queries that ask for a
+// scan come from a scan of every triangle, without building the tree; they
+// are the tree's answers. A query that does not ask for one, or one past
+// the budget, builds the tree.
+TEST(SurfaceIndex, ScannedQueriesAnswerAsTheTreeWithoutBuildingIt) {
+    using Lookup = SurfaceIndex::Lookup;
     const auto tube =
         demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::TorusSegment, 5.0, 20'000));
     const PreparedSurface s = prepareSurface(tube.mesh, std::nullopt, {}, 3'000'000);
@@ -127,23 +129,36 @@ TEST(SurfaceIndex, TheFirstQueriesAreScannedAndAnswerAsTheTree) {
     for (int i = 0; i < SurfaceIndex::kScanQueries / 2; ++i) {
         const glm::dvec3 p(coordinate(random), coordinate(random) / 4.0, coordinate(random));
         const SurfaceIndex::Nearest a = tree.nearest(p);
-        const SurfaceIndex::Nearest b = scanned.nearest(p);
+        const SurfaceIndex::Nearest b = scanned.nearest(p, Lookup::ScanUnlessBuilt);
         EXPECT_NEAR(b.distance, a.distance, 1e-12) << i;
         EXPECT_NEAR(glm::length(b.point - a.point), 0.0, 1e-9) << i;
-        // From inside the lumen outward, the wall; from outside away, nothing.
+        // From inside the lumen outward, the wall.
         const glm::dvec3 inside = tube.axisAt(10.0 * (i + 1)).position;
         const glm::dvec3 direction(std::cos(i), std::sin(i), 0.3);
         const auto hitA = tree.firstHit(inside, direction);
-        const auto hitB = scanned.firstHit(inside, direction);
+        const auto hitB = scanned.firstHit(inside, direction, Lookup::ScanUnlessBuilt);
         ASSERT_TRUE(hitA.has_value());
         ASSERT_TRUE(hitB.has_value());
         EXPECT_NEAR(glm::length(*hitB - *hitA), 0.0, 1e-9) << i;
         EXPECT_NEAR(tube.distanceToAxis(*hitB).first, 5.0, 0.05) << i;  // on the wall
     }
     EXPECT_FALSE(scanned.built());
-    EXPECT_FALSE(scanned.firstHit({0.0, 100.0, 0.0}, {0.0, 1.0, 0.0}).has_value());
-    EXPECT_TRUE(scanned.built());  // the query after the scans built the tree
-    EXPECT_FALSE(scanned.firstHit({0.0, 100.0, 0.0}, {0.0, 1.0, 0.0}).has_value());
+    // Past the budget: the tree. From outside, away from the tube: nothing.
+    EXPECT_FALSE(
+        scanned.firstHit({0.0, 100.0, 0.0}, {0.0, 1.0, 0.0}, Lookup::ScanUnlessBuilt).has_value());
+    EXPECT_TRUE(scanned.built());
+}
+
+// A query that does not ask for a scan builds the tree at once (the tips'
+// and the radii's queries: many of them, after the paths' tree is freed).
+TEST(SurfaceIndex, AQueryWithoutAScanBuildsTheTree) {
+    const auto tube =
+        demo::makeTubePhantom(test::tubeOptions(demo::TubeShape::Cylinder, 5.0, 2'000));
+    const PreparedSurface s = prepareSurface(tube.mesh, std::nullopt, {}, 3'000'000);
+    const SurfaceIndex index(s, SurfaceIndex::Build::OnFirstQuery);
+    EXPECT_FALSE(index.built());
+    EXPECT_NEAR(index.nearest({0.0, 0.0, 50.0}).distance, 5.0, 0.25);  // a chord inside
+    EXPECT_TRUE(index.built());
 }
 
 }  // namespace

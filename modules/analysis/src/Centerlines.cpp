@@ -174,7 +174,9 @@ ResolvedEnd loopEnd(const PreparedSurface& s, const VoronoiGraph& g, int loop) {
 /// nearest surface point.
 ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const SurfaceIndex& surface,
                      const glm::dvec3& point, const char* role) {
-    const SurfaceIndex::Nearest nearest = surface.nearest(point);
+    // Before the minimal paths: scanned, not the tree built beside them.
+    constexpr auto kLookup = SurfaceIndex::Lookup::ScanUnlessBuilt;
+    const SurfaceIndex::Nearest nearest = surface.nearest(point, kLookup);
     for (std::size_t i = 0; i < s.loops.size(); ++i) {
         if (!s.loops[i].hole &&
             glm::length(point - s.loops[i].centre) <= 1.5 * s.loops[i].radiusMm) {
@@ -206,7 +208,7 @@ ResolvedEnd givenEnd(const PreparedSurface& s, const VoronoiGraph& g, const Surf
     if (glm::dot(normal, normal) > 0.0) {
         const glm::dvec3 inward = -glm::normalize(normal);
         const double inset = 1e-6 * s.diagonalMm;
-        const auto opposite = surface.firstHit(nearest.point + inset * inward, inward);
+        const auto opposite = surface.firstHit(nearest.point + inset * inward, inward, kLookup);
         if (opposite && glm::length(*opposite - nearest.point) < 4.0 * r.end.radiusMm) {
             const glm::dvec3 centre = 0.5 * (nearest.point + *opposite);
             r.end.position = centre;
@@ -874,7 +876,7 @@ CenterlineTree centerlinesOf(PreparedSurface& s, const VoronoiGraph& g, const Su
         0, static_cast<long>(targets.size()), 1,
         [&](long begin, long end) {
             for (long i = begin; i < end; ++i) {
-                TargetPath& target = targets[static_cast<std::size_t>(i)];
+                const TargetPath& target = targets[static_cast<std::size_t>(i)];
                 paths[static_cast<std::size_t>(i)] =
                     profilePath(g, source, target.end, target.vertices, options.stepMm);
             }

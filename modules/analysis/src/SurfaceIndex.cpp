@@ -80,7 +80,7 @@ SurfaceIndex::Nearest nearestByScan(const PreparedSurface& s, const glm::dvec3& 
         const TriangleMap triangles{&s};
         for (long id = begin; id < end; ++id) {
             const auto point = project(get(triangles, static_cast<std::uint32_t>(id)), query);
-            const double d = std::sqrt(CGAL::to_double(CGAL::squared_distance(point, query)));
+            const double d = CGAL::squared_distance(point, query);  // squared until the end
             if (d < local.distance) {
                 local = {{point.x(), point.y(), point.z()}, d, static_cast<std::uint32_t>(id)};
             }
@@ -171,9 +171,7 @@ SurfaceIndex::SurfaceIndex(const PreparedSurface& surface, Build build)
         tree_->fill(surface);
         return;
     }
-    if (build == Build::OnFirstQuery) {
-        scansLeft_ = kScanQueries;
-    }
+    scansLeft_ = kScanQueries;
     Tree* tree = tree_.get();
     built_ = std::async(build == Build::InBackground ? std::launch::async : std::launch::deferred,
                         [tree, &surface] { tree->fill(surface); })
@@ -199,16 +197,14 @@ bool SurfaceIndex::built() const {
     return !built_.valid() || built_.wait_for(std::chrono::seconds(0)) == std::future_status::ready;
 }
 
-bool SurfaceIndex::scanInstead() const {
-    if (built_.valid() &&
-        built_.wait_for(std::chrono::seconds(0)) == std::future_status::deferred) {
-        return scansLeft_.fetch_sub(1) > 0;
-    }
-    return false;
+bool SurfaceIndex::scanInstead(Lookup lookup) const {
+    return lookup == Lookup::ScanUnlessBuilt && built_.valid() &&
+           built_.wait_for(std::chrono::seconds(0)) == std::future_status::deferred &&
+           scansLeft_.fetch_sub(1) > 0;
 }
 
-SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p) const {
-    if (scanInstead()) {
+SurfaceIndex::Nearest SurfaceIndex::nearest(const glm::dvec3& p, Lookup lookup) const {
+    if (scanInstead(lookup)) {
         return nearestByScan(*surface_, p);
     }
     const Tree& t = tree();
@@ -227,10 +223,10 @@ double SurfaceIndex::distance(const glm::dvec3& p, glm::dvec3& hint) const {
 }
 
 std::optional<glm::dvec3> SurfaceIndex::firstHit(const glm::dvec3& origin,
-                                                 const glm::dvec3& direction) const {
+                                                 const glm::dvec3& direction, Lookup lookup) const {
     const Kernel::Ray_3 ray(toPoint(origin),
                             Kernel::Vector_3(direction.x, direction.y, direction.z));
-    if (scanInstead()) {
+    if (scanInstead(lookup)) {
         return firstHitByScan(*surface_, ray);
     }
     const auto hit = tree().tree.first_intersection(ray);

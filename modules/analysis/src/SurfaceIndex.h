@@ -22,13 +22,19 @@ class SurfaceIndex {
     /// on (the first query waits for it, and rethrows what building threw,
     /// e.g. std::bad_alloc; the destructor waits for it too); or by the
     /// first query, on its thread (queries on other threads wait for it;
-    /// never, when nothing asks). OnFirstQuery answers its first
-    /// kScanQueries nearest() and firstHit() queries by a scan of every
-    /// triangle instead (on every core; a few ms on 300k triangles, the
-    /// same answers): a given source or a few given targets are resolved
-    /// before the minimal paths, and the tree, built then, was held beside
-    /// the paths' tree (about 10 MB more on the demo tree).
+    /// never, when nothing asks).
     enum class Build : std::uint8_t { Now, InBackground, OnFirstQuery };
+
+    /// How a nearest() or firstHit() query is answered. ScanUnlessBuilt:
+    /// while the tree is not built (OnFirstQuery), by a scan of every
+    /// triangle (on every core; a few ms on 300k triangles, the tree's
+    /// answers), for at most kScanQueries such queries; then, or once the
+    /// tree is built, by the tree. For the queries that come while building
+    /// the tree would hold it beside other large arrays: a given source or
+    /// a few given targets, resolved before the minimal paths (the tree
+    /// built then was held beside the paths' tree, 16 MiB more at the demo
+    /// tree's peak).
+    enum class Lookup : std::uint8_t { Tree, ScanUnlessBuilt };
     static constexpr int kScanQueries = 8;
 
     /// Indexes `surface`'s triangles; the surface must outlive this object,
@@ -49,7 +55,7 @@ class SurfaceIndex {
         std::uint32_t triangle = 0;  ///< index into surface.triangles
     };
     /// The surface point nearest to `p`.
-    [[nodiscard]] Nearest nearest(const glm::dvec3& p) const;
+    [[nodiscard]] Nearest nearest(const glm::dvec3& p, Lookup lookup = Lookup::Tree) const;
     /// Distance from `p` to the surface (the radius of the largest sphere
     /// centred at `p` that no triangle enters), the search starting from
     /// `hint`, a surface point near the answer (the nearest point of the
@@ -58,7 +64,8 @@ class SurfaceIndex {
     /// Where the ray from `origin` along `direction` (non-zero) first meets
     /// the surface; nullopt when it meets none.
     [[nodiscard]] std::optional<glm::dvec3> firstHit(const glm::dvec3& origin,
-                                                     const glm::dvec3& direction) const;
+                                                     const glm::dvec3& direction,
+                                                     Lookup lookup = Lookup::Tree) const;
 
     /// The triangles that have corners on both sides of the plane through
     /// `point` with normal `normal` (a corner on the plane counts as on the
@@ -78,9 +85,8 @@ class SurfaceIndex {
   private:
     struct Tree;
     [[nodiscard]] const Tree& tree() const;
-    /// Whether this query is one of the first kScanQueries, to be answered
-    /// by a scan (OnFirstQuery only, while the tree is not built).
-    [[nodiscard]] bool scanInstead() const;
+    /// Whether a query looked up as `lookup` is answered by a scan (Lookup).
+    [[nodiscard]] bool scanInstead(Lookup lookup) const;
     const PreparedSurface* surface_;
     std::unique_ptr<Tree> tree_;
     std::shared_future<void> built_;  ///< valid unless built Now
