@@ -5,6 +5,7 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <tuple>
 #include <utility>
 
@@ -84,27 +85,28 @@ const CrossSection* widestTrunkSection(const demo::AneurysmPhantom& phantom,
     return widest;
 }
 
-/// Whether `q` lies where the axis distance is measured: two radii clear of
-/// the ends and the bifurcation point; sets `r` to its part's radius.
-bool inMeasuredZone(const demo::AneurysmPhantom& phantom, const demo::AneurysmAxisPoint& axis,
-                    const glm::dvec3& q, double& r) {
+/// The radius of the part `axis` (nearestAxisPoint of `q`) lies on, where
+/// the axis distance is measured: two radii clear of the ends and the
+/// bifurcation point; nullopt elsewhere.
+std::optional<double> measuredRadius(const demo::AneurysmPhantom& phantom,
+                                     const demo::AneurysmAxisPoint& axis, const glm::dvec3& q) {
     const auto& o = phantom.options;
-    if (glm::length(q - phantom.bifurcationPoint) < 2.0 * o.radiusMm) {
-        return false;
-    }
     const bool trunk = axis.part == demo::AneurysmPart::Trunk;
-    r = trunk ? o.radiusMm : o.iliacRadiusMm;
+    const double r = trunk ? o.radiusMm : o.iliacRadiusMm;
     const double end = trunk ? 0.0 : o.iliacLengthMm;
-    return std::abs(axis.abscissaMm - end) >= 2.0 * r;
+    if (glm::length(q - phantom.bifurcationPoint) < 2.0 * o.radiusMm ||
+        std::abs(axis.abscissaMm - end) < 2.0 * r) {
+        return std::nullopt;
+    }
+    return r;
 }
 
 /// AneurysmAgreement::worstWallDistancePerR.
 double wallDistance(const demo::AneurysmPhantom& phantom) {
     return worstOverFacets(phantom.mesh, [&](const glm::dvec3& q) {
         const auto axis = phantom.nearestAxisPoint(q);
-        double r = 0.0;
-        return inMeasuredZone(phantom, axis, q, r) ? std::abs(axis.distanceMm - axis.radiusMm) / r
-                                                   : std::nan("");
+        const auto r = measuredRadius(phantom, axis, q);
+        return r ? std::abs(axis.distanceMm - axis.radiusMm) / *r : std::nan("");
     });
 }
 
@@ -116,11 +118,11 @@ std::pair<double, std::size_t> axisDistance(const demo::AneurysmPhantom& phantom
     for (const auto& branch : tree.branches) {
         for (const auto& p : branch.points) {
             const auto axis = phantom.nearestAxisPoint(p.position);
-            double r = 0.0;
-            if (!inMeasuredZone(phantom, axis, p.position, r)) {
+            const auto r = measuredRadius(phantom, axis, p.position);
+            if (!r) {
                 continue;
             }
-            worst = std::max(worst, axis.distanceMm / r);
+            worst = std::max(worst, axis.distanceMm / *r);
             ++checked;
         }
     }
