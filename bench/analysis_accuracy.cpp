@@ -10,15 +10,19 @@
 // mesh's own size; and the synthetic CTA segmented as `render` segments a
 // DICOM series, against the tree it was voxelised from.
 //
-//   build/release/bench/analysis_accuracy [--quick | --demo [whole] | --cta | --aneurysm
-//                                          | --huge | --slabs [ROUNDS] | --tubes [TRIANGLES]]
+//   build/release/bench/analysis_accuracy [--quick | --demo [whole] [--on-a-thread] | --cta
+//                                          | --aneurysm | --huge | --slabs [ROUNDS]
+//                                          | --tubes [TRIANGLES]] [--glibc-default]
 //   (--quick: no 1M rows; --demo: the demo tree's rows alone, `whole`: without
-//   the decimated ones, e.g. under heaptrack; --tubes: the
+//   the decimated ones, e.g. under heaptrack, `--on-a-thread`: analysed from a
+//   worker thread, as the GUI runs it; --tubes: the
 //   tube table alone at one density, 1M triangles unless given; --cta: the
 //   synthetic CTA's table alone; --aneurysm: the aneurysm's table alone, 1M
 //   rows included; --huge: a 10M-triangle cylinder alone; --slabs: the
 //   Voronoi diagram in one slab, in slabs with one margin per cut, and in
-//   slabs with margins per column, in turn)
+//   slabs with margins per column, in turn; --glibc-default: the C library's
+//   defaults for handing freed memory back, not the CLI's `centerline`'s,
+//   vv::handFreedMemoryBackAtOnce)
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -30,6 +34,7 @@
 #include <stop_token>
 #include <string>
 #include <string_view>
+#include <thread>
 #include <utility>
 #include <vector>
 
@@ -534,6 +539,15 @@ void slabTable(int rounds) {
 
 int main(int argc, char** argv) {
     const auto mode = [&](const char* name) { return argc > 1 && std::strcmp(argv[1], name) == 0; };
+    const auto flag = [&](const char* name) {
+        return std::any_of(argv + 1, argv + argc,
+                           [name](const char* arg) { return std::strcmp(arg, name) == 0; });
+    };
+    // The memory the CLI's `centerline` reads (it asks the same), unless the
+    // C library's defaults are asked for.
+    if (!flag("--glibc-default") && !vv::handFreedMemoryBackAtOnce()) {
+        std::printf("(the C library does not hand freed memory back at once here)\n");
+    }
     std::vector<std::size_t> densities{1'000, 50'000};
     if (!mode("--quick")) {
         densities.push_back(1'000'000);
@@ -558,8 +572,15 @@ int main(int argc, char** argv) {
         ctaTable();
         return 0;
     }
-    if (mode("--demo")) {  // --demo [whole]: the whole tree alone, not decimated too
-        demoTree(!(argc > 2 && std::strcmp(argv[2], "whole") == 0));
+    if (mode("--demo")) {  // --demo [whole] [--on-a-thread]
+        const bool whole = argc > 2 && std::strcmp(argv[2], "whole") == 0;
+        if (flag("--on-a-thread")) {  // as the GUI runs it: from a worker thread, the main one
+                                      // waiting
+            std::thread worker([whole] { demoTree(!whole); });
+            worker.join();
+        } else {
+            demoTree(!whole);
+        }
         return 0;
     }
     demoTree();

@@ -5,6 +5,10 @@
 #include <string>
 #include <string_view>
 
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
+
 namespace vv {
 
 namespace {
@@ -45,6 +49,17 @@ bool resetPeakResident(int pid) {
     std::ofstream out(procFile(pid, "clear_refs"));
     out << "5" << std::flush;
     return static_cast<bool>(out);
+}
+
+bool handFreedMemoryBackAtOnce() {
+#if defined(__GLIBC__)
+    // glibc's own defaults, fixed: setting either stops their raising.
+    constexpr int kMapThresholdBytes = 128 * 1024;
+    return mallopt(M_MMAP_THRESHOLD, kMapThresholdBytes) == 1 &&
+           mallopt(M_TRIM_THRESHOLD, kMapThresholdBytes) == 1;
+#else
+    return false;
+#endif
 }
 
 }  // namespace vv

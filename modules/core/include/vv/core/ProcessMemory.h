@@ -24,4 +24,18 @@ namespace vv {
 /// does not allow it (then peakResidentKiB() keeps the older peak).
 bool resetPeakResident(int pid = 0);
 
+/// Asks the C library to hand large blocks back to the system as soon as
+/// they are freed, on every thread (glibc: blocks of 128 KiB and more are
+/// mapped on their own and unmapped when freed, its default made fixed). By
+/// default glibc raises that threshold to the largest mapped block freed (up
+/// to 32 MiB), so later large blocks come from the heap of the thread that
+/// allocates them, and a worker thread's heap keeps what it freed resident
+/// beside what the next stage, on another thread, allocates. For a process
+/// that runs one large computation and ends (the CLI's vessel analysis): its
+/// resident peak is then what the computation holds. Not for the GUI:
+/// large buffers freed and allocated again every frame would pay for their
+/// pages each time. Process-wide and lasting. Returns false where it cannot
+/// be set (another C library, an allocator that ignores it).
+bool handFreedMemoryBackAtOnce();
+
 }  // namespace vv
