@@ -26,9 +26,12 @@ std::size_t pointsWithin(const Branch& branch, double from, double to) {
         }));
 }
 
-/// The principal axis of `points` (power iteration on their covariance),
-/// oriented from the first point towards the last.
-glm::dvec3 principalAxis(const std::vector<glm::dvec3>& points) {
+}  // namespace
+
+glm::dvec3 principalDirection(const std::vector<glm::dvec3>& points) {
+    if (points.size() < 2) {
+        return glm::dvec3(0.0);
+    }
     glm::dvec3 mean(0.0);
     for (const auto& p : points) {
         mean += p;
@@ -53,8 +56,6 @@ glm::dvec3 principalAxis(const std::vector<glm::dvec3>& points) {
     }
     return glm::dot(axis, points.back() - points.front()) < 0.0 ? -axis : axis;
 }
-
-}  // namespace
 
 double angleBetweenDeg(const glm::dvec3& a, const glm::dvec3& b) {
     const double la = glm::length(a);
@@ -83,7 +84,7 @@ glm::dvec3 directionOver(const CenterlineTree& tree, int branch, double from, do
         throw InvalidArgumentError("centrelines: the stretch of branch " + std::to_string(branch) +
                                    " has fewer than two points");
     }
-    const glm::dvec3 axis = principalAxis(stretch);
+    const glm::dvec3 axis = principalDirection(stretch);
     return from <= to ? axis : -axis;
 }
 

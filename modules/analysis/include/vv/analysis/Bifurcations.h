@@ -39,6 +39,12 @@ struct Bifurcation {
 [[nodiscard]] glm::dvec3 directionOver(const CenterlineTree& tree, int branch, double from,
                                        double to);
 
+/// The principal axis of `points` (the direction of their largest spread,
+/// by power iteration on their covariance), unit, oriented from the first
+/// point towards the last; zero for fewer than two points or where the first
+/// and the last coincide.
+[[nodiscard]] glm::dvec3 principalDirection(const std::vector<glm::dvec3>& points);
+
 /// The angle in degrees ([0, 180]) between two directions.
 [[nodiscard]] double angleBetweenDeg(const glm::dvec3& a, const glm::dvec3& b);
 
