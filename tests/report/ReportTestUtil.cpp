@@ -18,6 +18,7 @@
 #include <set>
 #include <sstream>
 
+#include "RunTool.h"
 #include "TestMeshes.h"
 #include "vv/core/Error.h"
 #include "vv/render/LegendPainter.h"
@@ -54,17 +55,7 @@ QImage testImage(int width, int height) {
 }
 
 int runTool(const std::string& command, std::string& output) {
-    output.clear();
-    FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");
-    if (pipe == nullptr) {
-        return -1;
-    }
-    std::array<char, 4096> buffer{};
-    while (std::fgets(buffer.data(), static_cast<int>(buffer.size()), pipe) != nullptr) {
-        output += buffer.data();
-    }
-    const int status = ::pclose(pipe);
-    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    return vv::test::runTool(command, output);
 }
 
 bool haveTool(const std::string& tool) {
