@@ -14,6 +14,7 @@
 
 #include "cli/Arguments.h"
 #include "cli/CenterlineDrawing.h"
+#include "cli/CenterlineLandmarks.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
 #include "cli/OutputFiles.h"
@@ -36,7 +37,8 @@ namespace {
 constexpr const char* kCenterlineUsage =
     "usage: vesselview-cli centerline FILE -o CENTERLINES.vtp [--source X,Y,Z]\n"
     "       [--target X,Y,Z ...] [--step MM] [--scale F] [--sections SECTIONS.csv]\n"
-    "       [--surface-out SURFACE.vtp] [--json] [--smooth-folded on|off]\n"
+    "       [--surface-out SURFACE.vtp] [--json [--landmark KEY=X,Y,Z ...]]\n"
+    "       [--smooth-folded on|off]\n"
     "       [DICOM options as for segment]\n"
     "  The centrelines of a vessel surface (a mesh file, or a DICOM series\n"
     "  segmented as render and segment do), by VMTK's method: the internal\n"
@@ -59,6 +61,16 @@ constexpr const char* kCenterlineUsage =
     "  --json               branches with lengths, diameters at the narrowest and\n"
     "                       widest points, stenoses and bifurcation angles on\n"
     "                       stdout\n"
+    "  --landmark KEY=X,Y,Z  with --json: a landmark at the centreline place\n"
+    "                       nearest the point (repeatable). KEY: lowest_renal_artery,\n"
+    "                       aneurysm_start, largest_aneurysm_diameter,\n"
+    "                       aortic_bifurcation, left_internal_iliac_origin,\n"
+    "                       right_internal_iliac_origin (one near a bifurcation\n"
+    "                       goes to the bifurcation), or free:NAME. The JSON then\n"
+    "                       gives each landmark's section, the lengths along the\n"
+    "                       centreline and straight between every two, and with\n"
+    "                       any preset the aortic sizing table (each value, or\n"
+    "                       why it is blank)\n"
     "  --smooth-folded on|off  a wall whose noise is larger than its triangles\n"
     "                       folds over itself, and its inside breaks up where\n"
     "                       the vessel narrows: on (the default), such a wall is\n"
@@ -84,6 +96,7 @@ struct CenterlineArgs {
     std::filesystem::path sectionsCsv;
     std::filesystem::path surfaceOut;
     bool json = false;
+    std::vector<GivenLandmark> landmarks;
     analysis::CenterlineOptions options;
     segmentation::SceneSourceOptions source;
 };
@@ -109,6 +122,8 @@ std::optional<CenterlineArgs> parseArgs(const std::vector<std::string>& args, st
             }
         } else if (name == "--json") {
             c.json = true;
+        } else if (name == "--landmark") {
+            c.landmarks.push_back(parseLandmark(a.value()));
         } else if (name == "--source") {
             c.options.source = parsePoint(a.value(), "--source");
         } else if (name == "--target") {
@@ -140,6 +155,9 @@ std::optional<CenterlineArgs> parseArgs(const std::vector<std::string>& args, st
     }
     if (c.output.empty()) {
         throw UsageError("centerline needs an output file: -o CENTERLINES.vtp");
+    }
+    if (!c.landmarks.empty() && !c.json) {
+        throw UsageError("centerline: --landmark's measurements are written by --json");
     }
     if (c.output.extension() != ".vtp") {
         throw UsageError("centerline: the output must end in .vtp, not '" + c.output.string() +
@@ -274,7 +292,8 @@ void writeSection(JsonWriter& json, const char* name, const analysis::CrossSecti
 }
 
 void writeJson(std::ostream& out, const analysis::CenterlineTree& tree,
-               const std::vector<std::vector<analysis::CrossSection>>& sections) {
+               const std::vector<std::vector<analysis::CrossSection>>& sections,
+               const std::vector<PlacedLandmark>& landmarks) {
     JsonWriter json(out);
     json.beginObject();
     json.key("diameters");
@@ -329,6 +348,9 @@ void writeJson(std::ostream& out, const analysis::CenterlineTree& tree,
         json.string(note);
     }
     json.endArray();
+    if (!landmarks.empty()) {
+        writeLandmarksJson(json, tree, sections, landmarks);
+    }
     json.endObject();
     json.finish();
 }
@@ -392,8 +414,9 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
             throw OutputError(e.what());
         }
     }
+    const std::vector<PlacedLandmark> landmarks = placeLandmarks(tree, c.landmarks, err);
     if (c.json) {
-        writeJson(out, tree, sections);
+        writeJson(out, tree, sections, landmarks);
     } else {
         double length = 0.0;
         for (const auto& b : tree.branches) {

@@ -3,7 +3,8 @@
 // back as VTK polylines with VMTK's array names and the right values, a CSV
 // of sections and JSON with the stenosis; a surface in metres is warned
 // about; a wall folded by noise is smoothed unless --smooth-folded off; a
-// surface that cannot be analysed exits 3 with the reason.
+// surface that cannot be analysed exits 3 with the reason; landmarks on the
+// aneurysm phantom give their sections, lengths and the aortic sizing table.
 #include <gtest/gtest.h>
 #include <vtkCellData.h>
 #include <vtkDataArray.h>
@@ -21,6 +22,7 @@
 #include <string>
 
 #include "CliRun.h"
+#include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/TubePhantom.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshWriter.h"
@@ -186,6 +188,118 @@ TEST(CenterlineCommand, BadOptionsAreUsageErrors) {
     EXPECT_EQ(runCli({"centerline", input.string()}).code, 2);
     EXPECT_EQ(
         runCli({"centerline", input.string(), "-o", "x.vtp", "--smooth-folded", "maybe"}).code, 2);
+    // Landmarks: only with --json, a known key or free:NAME, three numbers.
+    EXPECT_EQ(
+        runCli({"centerline", input.string(), "-o", "x.vtp", "--landmark", "aneurysm_start=0,0,1"})
+            .code,
+        2);
+    const auto unknown = runCli(
+        {"centerline", input.string(), "-o", "x.vtp", "--json", "--landmark", "renal=0,0,1"});
+    EXPECT_EQ(unknown.code, 2);
+    EXPECT_NE(unknown.err.find("lowest_renal_artery"), std::string::npos) << unknown.err;
+    EXPECT_EQ(
+        runCli({"centerline", input.string(), "-o", "x.vtp", "--json", "--landmark", "free:=0,0,1"})
+            .code,
+        2);
+    EXPECT_EQ(runCli({"centerline", input.string(), "-o", "x.vtp", "--json", "--landmark",
+                      "aneurysm_start=0,0"})
+                  .code,
+              2);
+}
+
+/// The aneurysm phantom (20k triangles, closed: its source is the trunk's
+/// tip at z = -10) written to a file.
+std::filesystem::path writeAneurysm() {
+    vv::demo::AneurysmPhantomOptions o;
+    o.targetTriangles = 20'000;
+    auto file = scratch() / "aneurysm.vtp";
+    vv::meshio::writeVtp(vv::demo::makeAneurysmPhantom(o).mesh, file);
+    return file;
+}
+
+QJsonObject runJson(const std::vector<std::string>& args, std::string* err = nullptr) {
+    const auto run = runCli(args);
+    EXPECT_EQ(run.code, 0) << run.err;
+    if (err != nullptr) {
+        *err = run.err;
+    }
+    return QJsonDocument::fromJson(QByteArray::fromStdString(run.out)).object();
+}
+
+// The landmarks at the phantom's truth: each one's section, the lengths
+// between them and the sizing table, against the truth (the trunk r 10 mm
+// widening from z 35 to a 40 mm sac at z 80, the axes meeting at z 170, the
+// iliacs r 6 mm, 30 degrees either side of +z).
+TEST(CenterlineCommand, LandmarksGiveTheirSectionsLengthsAndTheAorticSizingTable) {
+    const auto input = writeAneurysm();
+    const auto output = scratch() / "aneurysm-centerlines.vtp";
+    std::string err;
+    const QJsonObject json =
+        runJson({"centerline", input.string(), "-o", output.string(), "--json", "--landmark",
+                 "lowest_renal_artery=0,0,20", "--landmark", "aneurysm_start=0,0,35", "--landmark",
+                 "largest_aneurysm_diameter=0,0,80", "--landmark", "aortic_bifurcation=0,0,170",
+                 "--landmark", "left_internal_iliac_origin=-20,0,204.64", "--landmark",
+                 "right_internal_iliac_origin=20,0,204.64", "--landmark", "free:clamp=30,0,60"},
+                &err);
+    const QJsonArray landmarks = json["landmarks"].toArray();
+    ASSERT_EQ(landmarks.size(), 7);
+    EXPECT_EQ(landmarks[0].toObject()["kind"].toString(), "lowest_renal_artery");
+    EXPECT_EQ(landmarks[6].toObject()["name"].toString(), "clamp");
+    EXPECT_EQ(landmarks[6].toObject()["kind"].toString(), "free");
+    EXPECT_NEAR(landmarks[6].toObject()["given_distance_mm"].toDouble(), 30.0, 0.5);
+    EXPECT_NE(err.find("'clamp'"), std::string::npos) << "outside its vessel: " << err;
+    EXPECT_NEAR(landmarks[2].toObject()["section"].toObject()["equivalent_diameter_mm"].toDouble(),
+                40.0, 0.4);
+    EXPECT_EQ(json["landmark_pairs"].toArray().size(), 7 * 6 / 2);
+    const QJsonObject first = json["landmark_pairs"].toArray()[0].toObject();
+    EXPECT_NEAR(first["along_centreline_mm"].toDouble(), 15.0, 0.15);
+    EXPECT_NEAR(first["straight_mm"].toDouble(), 15.0, 0.15);
+
+    const QJsonObject sizing = json["aortic_sizing"].toObject();
+    const auto value = [&](const char* name) { return sizing[name].toObject()["value"]; };
+    const QJsonArray neck = sizing["neck_diameters"].toArray();
+    ASSERT_EQ(neck.size(), 4);
+    for (const auto& cell : neck) {
+        EXPECT_NEAR(cell.toObject()["sizes"].toObject()["equivalent_diameter_mm"].toDouble(), 20.0,
+                    0.2);
+    }
+    EXPECT_NEAR(value("neck_length_mm").toDouble(), 15.0, 0.15);
+    EXPECT_NEAR(value("alpha_deg").toDouble(), 0.0, 1.0);
+    EXPECT_NEAR(value("beta_deg").toDouble(), 0.0, 1.0);
+    EXPECT_NEAR(value("largest_aneurysm").toObject()["max_diameter_mm"].toDouble(), 40.0, 0.4);
+    // The bifurcation landmark went to the tree's bifurcation, on the trunk's axis.
+    const double forkZ = landmarks[3].toObject()["position"].toArray()[2].toDouble();
+    EXPECT_NEAR(forkZ, 170.0, 2.0);
+    EXPECT_NEAR(value("renal_to_aortic_bifurcation_mm").toDouble(), forkZ - 20.0,
+                0.01 * (forkZ - 20.0));
+    for (const char* side : {"left", "right"}) {
+        const std::string prefix(side);
+        const double along =
+            value((prefix + "_aortic_bifurcation_to_internal_iliac_mm").c_str()).toDouble();
+        const double truth = (170.0 - forkZ) + 40.0;  // along the axes through where they meet
+        EXPECT_NEAR(along, truth, 0.01 * truth) << side;
+        EXPECT_NEAR(value((prefix + "_smallest_iliac").c_str())
+                        .toObject()["equivalent_diameter_mm"]
+                        .toDouble(),
+                    12.0, 0.12)
+            << side;
+    }
+
+    // Without the start of the aneurysm: the neck's length blank, and why.
+    const QJsonObject partial =
+        runJson({"centerline", input.string(), "-o", output.string(), "--json", "--landmark",
+                 "lowest_renal_artery=0,0,20", "--landmark", "aortic_bifurcation=0,0,170"});
+    const QJsonObject neckLength = partial["aortic_sizing"].toObject()["neck_length_mm"].toObject();
+    EXPECT_TRUE(neckLength["value"].isNull());
+    EXPECT_TRUE(neckLength["blank"].toString().contains("Start of the aneurysm"))
+        << neckLength["blank"].toString().toStdString();
+    // Free landmarks alone: their sections and lengths, no sizing table.
+    const QJsonObject free =
+        runJson({"centerline", input.string(), "-o", output.string(), "--json", "--landmark",
+                 "free:a=0,0,20", "--landmark", "free:b=0,0,60"});
+    EXPECT_FALSE(free.contains("aortic_sizing"));
+    EXPECT_NEAR(free["landmark_pairs"].toArray()[0].toObject()["along_centreline_mm"].toDouble(),
+                40.0, 0.4);
 }
 
 }  // namespace
