@@ -56,7 +56,8 @@ void writeValue(JsonWriter& json, const char* name, const planning::SizingValue<
         write(*v.value);
     } else {
         json.null();
-        json.member("blank", v.blankBecause);
+        json.member("blank", planning::blankText(v.blank));
+        json.member("blank_reason", std::string(planning::blankKey(v.blank.reason)));
     }
     json.endObject();
 }
@@ -84,7 +85,9 @@ void writeSizing(JsonWriter& json, const planning::AorticSizing& t) {
             writeSizes(json, *t.neckDiameters[i].value);
         } else {
             json.null();
-            json.member("blank", t.neckDiameters[i].blankBecause);
+            json.member("blank", planning::blankText(t.neckDiameters[i].blank));
+            json.member("blank_reason",
+                        std::string(planning::blankKey(t.neckDiameters[i].blank.reason)));
         }
         json.endObject();
     }

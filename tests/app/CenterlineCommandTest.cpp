@@ -291,6 +291,7 @@ TEST(CenterlineCommand, LandmarksGiveTheirSectionsLengthsAndTheAorticSizingTable
                  "lowest_renal_artery=0,0,20", "--landmark", "aortic_bifurcation=0,0,170"});
     const QJsonObject neckLength = partial["aortic_sizing"].toObject()["neck_length_mm"].toObject();
     EXPECT_TRUE(neckLength["value"].isNull());
+    EXPECT_EQ(neckLength["blank_reason"].toString(), "landmark_missing");
     EXPECT_TRUE(neckLength["blank"].toString().contains("Start of the aneurysm"))
         << neckLength["blank"].toString().toStdString();
     // Free landmarks alone: their sections and lengths, no sizing table.

@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <set>
+#include <string_view>
 
 #include "TreeBuilder.h"
 #include "vv/analysis/Bifurcations.h"
@@ -66,7 +68,7 @@ TEST(AorticSizing, ReadsTheNeckAnglesAndLengthsOfAKnownAorta) {
     const AorticSizing table = aorticSizing(a.tree, a.sections, a.landmarks);
     for (std::size_t i = 0; i < AorticSizing::kNeckDepthsMm.size(); ++i) {
         const auto& cell = table.neckDiameters[i];
-        ASSERT_TRUE(cell.value.has_value()) << cell.blankBecause;
+        ASSERT_TRUE(cell.value.has_value()) << blankText(cell.blank);
         const double s = 40.0 + AorticSizing::kNeckDepthsMm[i];
         EXPECT_NEAR(cell.value->equivalentDiameterMm, 2.0 * AngulatedAorta::aorticRadius(s), 1e-9)
             << "at " << s << " mm";
@@ -75,9 +77,10 @@ TEST(AorticSizing, ReadsTheNeckAnglesAndLengthsOfAKnownAorta) {
     ASSERT_TRUE(table.neckLengthMm.value.has_value());
     EXPECT_NEAR(*table.neckLengthMm.value, 25.0, 1e-9);
     ASSERT_TRUE(table.suprarenalToNeckDeg.value.has_value())
-        << table.suprarenalToNeckDeg.blankBecause;
+        << blankText(table.suprarenalToNeckDeg.blank);
     EXPECT_NEAR(*table.suprarenalToNeckDeg.value, 20.0, 1e-6);
-    ASSERT_TRUE(table.neckToAneurysmDeg.value.has_value()) << table.neckToAneurysmDeg.blankBecause;
+    ASSERT_TRUE(table.neckToAneurysmDeg.value.has_value())
+        << blankText(table.neckToAneurysmDeg.blank);
     EXPECT_NEAR(*table.neckToAneurysmDeg.value, 35.0, 1e-6);
     ASSERT_TRUE(table.largestAneurysm.value.has_value());
     EXPECT_NEAR(table.largestAneurysm.value->maxDiameterMm, 50.0, 1e-9);
@@ -97,13 +100,16 @@ TEST(AorticSizing, LeavesBlankWhatItsLandmarksDoNotGiveAndSaysWhy) {
     const AngulatedAorta a = angulatedAorta();
     const AorticSizing none = aorticSizing(a.tree, a.sections, {});
     EXPECT_FALSE(none.neckDiameters[0].value.has_value());
-    EXPECT_NE(none.neckDiameters[0].blankBecause.find("Lowest renal artery"), std::string::npos)
-        << none.neckDiameters[0].blankBecause;
+    EXPECT_NE(blankText(none.neckDiameters[0].blank).find("Lowest renal artery"), std::string::npos)
+        << blankText(none.neckDiameters[0].blank);
     EXPECT_FALSE(none.neckLengthMm.value.has_value());
     EXPECT_FALSE(none.largestAneurysm.value.has_value());
-    EXPECT_NE(none.largestAneurysm.blankBecause.find("Largest aneurysm diameter"),
+    EXPECT_NE(blankText(none.largestAneurysm.blank).find("Largest aneurysm diameter"),
               std::string::npos);
     EXPECT_FALSE(none.smallestIliac[1].value.has_value());
+    EXPECT_EQ(none.neckDiameters[0].blank.reason, Blank::Reason::LandmarkMissing);
+    EXPECT_EQ(none.neckDiameters[0].blank.landmark, LandmarkKind::LowestRenalArtery);
+    EXPECT_EQ(none.smallestIliac[1].blank.landmark, LandmarkKind::AorticBifurcation);
 
     // Without the bifurcation: the neck from the sac's widest point, beta blank.
     auto some = a.landmarks;
@@ -112,7 +118,8 @@ TEST(AorticSizing, LeavesBlankWhatItsLandmarksDoNotGiveAndSaysWhy) {
     EXPECT_NEAR(partial.neckLengthMm.value.value(), 25.0, 1e-9);
     EXPECT_NEAR(partial.suprarenalToNeckDeg.value.value(), 20.0, 1e-6);
     EXPECT_FALSE(partial.neckToAneurysmDeg.value.has_value());
-    EXPECT_NE(partial.neckToAneurysmDeg.blankBecause.find("Aortic bifurcation"), std::string::npos);
+    EXPECT_NE(blankText(partial.neckToAneurysmDeg.blank).find("Aortic bifurcation"),
+              std::string::npos);
     EXPECT_FALSE(partial.renalToBifurcationMm.value.has_value());
 
     // An aneurysm "starting" above the renal artery gives no neck, not a negative one.
@@ -121,19 +128,32 @@ TEST(AorticSizing, LeavesBlankWhatItsLandmarksDoNotGiveAndSaysWhy) {
     const AorticSizing wrong = aorticSizing(a.tree, a.sections, swapped);
     EXPECT_FALSE(wrong.neckLengthMm.value.has_value());
     EXPECT_FALSE(wrong.suprarenalToNeckDeg.value.has_value());
+    EXPECT_EQ(wrong.neckLengthMm.blank.reason, Blank::Reason::AneurysmNotBelowRenal);
 
     // A renal landmark on an iliac is not on the aortic path.
     auto offPath = a.landmarks;
     offPath[0].location = {1, 140.0};
     const AorticSizing off = aorticSizing(a.tree, a.sections, offPath);
     EXPECT_FALSE(off.neckDiameters[0].value.has_value());
-    EXPECT_NE(off.neckDiameters[0].blankBecause.find("not on the centreline"), std::string::npos);
+    EXPECT_NE(blankText(off.neckDiameters[0].blank).find("not on the centreline"),
+              std::string::npos);
 
     // A section without a contour is blank, never its neighbour's size.
     auto holed = a.sections;
     holed[0][40].status = analysis::CrossSection::Status::NoContour;
     const AorticSizing hole = aorticSizing(a.tree, holed, a.landmarks);
     EXPECT_FALSE(hole.neckDiameters[0].value.has_value());
+    EXPECT_EQ(hole.neckDiameters[0].blank.reason, Blank::Reason::NoContour);
+    EXPECT_EQ(off.neckDiameters[0].blank.reason, Blank::Reason::NotOnAorticPath);
+    EXPECT_EQ(off.neckDiameters[0].blank.other, LandmarkKind::AorticBifurcation);
+    // Every reason has its own key and sentence.
+    std::set<std::string_view> keys;
+    for (int r = 0; r <= static_cast<int>(Blank::Reason::NoVesselSection); ++r) {
+        const Blank b{static_cast<Blank::Reason>(r), LandmarkKind::AneurysmStart,
+                      LandmarkKind::AorticBifurcation, 5.0};
+        EXPECT_TRUE(keys.insert(blankKey(b.reason)).second) << r;
+        EXPECT_EQ(blankText(b).empty(), b.reason == Blank::Reason::None) << r;
+    }
     EXPECT_TRUE(hole.neckDiameters[1].value.has_value());
 }
 
@@ -202,7 +222,7 @@ TEST_P(AorticSizingOnThePhantom, MeasuresItAsItsTruth) {
     const AorticSizing table = aorticSizing(tree, analysed.sections, landmarks);
     for (std::size_t i = 0; i < AorticSizing::kNeckDepthsMm.size(); ++i) {
         const auto& cell = table.neckDiameters[i];
-        ASSERT_TRUE(cell.value.has_value()) << cell.blankBecause;
+        ASSERT_TRUE(cell.value.has_value()) << blankText(cell.blank);
         const double truth = 2.0 * phantom.trunkRadiusAt(renalZ + AorticSizing::kNeckDepthsMm[i]);
         EXPECT_NEAR(cell.value->equivalentDiameterMm, truth, 0.01 * truth) << i;
     }
@@ -231,7 +251,7 @@ TEST_P(AorticSizingOnThePhantom, MeasuresItAsItsTruth) {
                     0.01 * length(0, origin))
             << side;
         ASSERT_TRUE(table.smallestIliac[side].value.has_value())
-            << table.smallestIliac[side].blankBecause;
+            << blankText(table.smallestIliac[side].blank);
         const double iliac = 2.0 * options.iliacRadiusMm;
         EXPECT_NEAR(table.smallestIliac[side].value->minDiameterMm, iliac,
                     0.01 * iliac + feretSlack)

@@ -20,8 +20,14 @@ constexpr double kSuprarenalMm = 15.0;
 constexpr double kShortestAxisMm = 5.0;
 
 template <class T>
-SizingValue<T> blank(std::string because) {
-    return {std::nullopt, std::move(because)};
+SizingValue<T> blank(Blank because) {
+    return {std::nullopt, because};
+}
+
+template <class T>
+SizingValue<T> blank(Blank::Reason reason, LandmarkKind landmark = LandmarkKind::Free,
+                     LandmarkKind other = LandmarkKind::Free, double mm = 0.0) {
+    return {std::nullopt, Blank{reason, landmark, other, mm}};
 }
 
 template <class T>
@@ -37,8 +43,8 @@ std::string nameOf(LandmarkKind kind) {
     return name;
 }
 
-std::string missing(LandmarkKind kind) {
-    return "no landmark \"" + std::string(landmarkEnglishName(kind)) + "\" is placed";
+Blank missing(LandmarkKind kind) {
+    return {Blank::Reason::LandmarkMissing, kind};
 }
 
 /// The aortic path and where the aortic landmarks lie on it.
@@ -67,15 +73,11 @@ class AorticPath {
             return blank<double>(missing(kind));
         }
         if (!path_) {
-            return blank<double>(
-                "no landmark below the neck (aortic bifurcation, largest aneurysm diameter or "
-                "start of the aneurysm) is placed to set the aortic path");
+            return blank<double>(Blank::Reason::NoAorticPath);
         }
         const auto s = path_->abscissaOf(tree_, l->location);
         if (!s) {
-            return blank<double>("the " + nameOf(kind) +
-                                 " is not on the centreline from the source to the " +
-                                 nameOf(distal_));
+            return blank<double>(Blank::Reason::NotOnAorticPath, kind, distal_);
         }
         return known(*s);
     }
@@ -111,26 +113,25 @@ void fillNeck(const CenterlineTree& tree, const Sections& sections, const Aortic
         const double depth = AorticSizing::kNeckDepthsMm[i];
         auto& cell = table.neckDiameters[i];
         if (!renal.value) {
-            cell = blank<SectionSizes>(renal.blankBecause);
+            cell = blank<SectionSizes>(renal.blank);
         } else if (*renal.value + depth > aorta.path()->lengthMm() + 1e-9) {
-            cell = blank<SectionSizes>("the aortic path ends less than " + fixedText(depth, 0) +
-                                       " mm below the lowest renal artery");
+            cell = blank<SectionSizes>(Blank::Reason::PathEndsTooSoon, LandmarkKind::Free,
+                                       LandmarkKind::Free, depth);
         } else if (const auto sizes = sectionSizesAt(
                        tree, sections, aorta.path()->locationAt(*renal.value + depth))) {
             cell = known(*sizes);
         } else {
-            cell = blank<SectionSizes>("the section there has no closed lumen contour");
+            cell = blank<SectionSizes>(Blank::Reason::NoContour);
         }
     }
     if (!renal.value || !start.value) {
-        table.neckLengthMm = blank<double>(!renal.value ? renal.blankBecause : start.blankBecause);
+        table.neckLengthMm = blank<double>(!renal.value ? renal.blank : start.blank);
         table.suprarenalToNeckDeg = table.neckLengthMm;
         table.neckToAneurysmDeg = table.neckLengthMm;
         return;
     }
     if (*start.value <= *renal.value) {
-        table.neckLengthMm =
-            blank<double>("the start of the aneurysm is not below the lowest renal artery");
+        table.neckLengthMm = blank<double>(Blank::Reason::AneurysmNotBelowRenal);
         table.suprarenalToNeckDeg = table.neckLengthMm;
         table.neckToAneurysmDeg = table.neckLengthMm;
         return;
@@ -139,25 +140,25 @@ void fillNeck(const CenterlineTree& tree, const Sections& sections, const Aortic
     const auto neck = aorta.axisOver(*renal.value, *start.value);
     const auto above = aorta.axisOver(std::max(0.0, *renal.value - kSuprarenalMm), *renal.value);
     if (!neck) {
-        table.suprarenalToNeckDeg = blank<double>(
-            "the neck is shorter than " + fixedText(kShortestAxisMm, 0) + " mm: it has no axis");
+        table.suprarenalToNeckDeg = blank<double>(Blank::Reason::NeckTooShort, LandmarkKind::Free,
+                                                  LandmarkKind::Free, kShortestAxisMm);
         table.neckToAneurysmDeg = table.suprarenalToNeckDeg;
         return;
     }
     table.suprarenalToNeckDeg =
         above ? known(analysis::angleBetweenDeg(*above, *neck))
-              : blank<double>("less than " + fixedText(kShortestAxisMm, 0) +
-                              " mm of centreline above the lowest renal artery");
+              : blank<double>(Blank::Reason::TooLittleAboveRenal, LandmarkKind::Free,
+                              LandmarkKind::Free, kShortestAxisMm);
     const auto bifurcation = aorta.at(LandmarkKind::AorticBifurcation);
     if (!bifurcation.value) {
-        table.neckToAneurysmDeg = blank<double>(bifurcation.blankBecause);
+        table.neckToAneurysmDeg = blank<double>(bifurcation.blank);
         return;
     }
     const auto sac = aorta.axisOver(*start.value, *bifurcation.value);
     table.neckToAneurysmDeg =
         sac ? known(analysis::angleBetweenDeg(*neck, *sac))
-            : blank<double>("the aneurysm is shorter than " + fixedText(kShortestAxisMm, 0) +
-                            " mm: it has no axis");
+            : blank<double>(Blank::Reason::AneurysmTooShort, LandmarkKind::Free, LandmarkKind::Free,
+                            kShortestAxisMm);
 }
 
 /// The length along the centreline between the landmarks of two kinds.
@@ -195,13 +196,74 @@ SizingValue<SectionSizes> narrowestBetween(const CenterlineTree& tree, const Sec
              tree.branches[static_cast<std::size_t>(p.branch)].points[p.pointIndex].abscissaMm});
     }
     if (!narrowest) {
-        return blank<SectionSizes>("no section between the " + nameOf(a) + " and the " + nameOf(b) +
-                                   " measures the vessel itself");
+        return blank<SectionSizes>(Blank::Reason::NoVesselSection, a, b);
     }
     return known(*narrowest);
 }
 
 }  // namespace
+
+std::string blankText(const Blank& b) {
+    const std::string mm = fixedText(b.mm, 0) + " mm";
+    switch (b.reason) {
+        case Blank::Reason::None:
+            return {};
+        case Blank::Reason::LandmarkMissing:
+            return "no landmark \"" + std::string(landmarkEnglishName(b.landmark)) + "\" is placed";
+        case Blank::Reason::NoAorticPath:
+            return "no landmark below the neck (aortic bifurcation, largest aneurysm diameter or "
+                   "start of the aneurysm) is placed to set the aortic path";
+        case Blank::Reason::NotOnAorticPath:
+            return "the " + nameOf(b.landmark) +
+                   " is not on the centreline from the source to "
+                   "the " +
+                   nameOf(b.other);
+        case Blank::Reason::PathEndsTooSoon:
+            return "the aortic path ends less than " + mm + " below the lowest renal artery";
+        case Blank::Reason::NoContour:
+            return "the section there has no closed lumen contour";
+        case Blank::Reason::AneurysmNotBelowRenal:
+            return "the start of the aneurysm is not below the lowest renal artery";
+        case Blank::Reason::NeckTooShort:
+            return "the neck is shorter than " + mm + ": it has no axis";
+        case Blank::Reason::TooLittleAboveRenal:
+            return "less than " + mm + " of centreline above the lowest renal artery";
+        case Blank::Reason::AneurysmTooShort:
+            return "the aneurysm is shorter than " + mm + ": it has no axis";
+        case Blank::Reason::NoVesselSection:
+            return "no section between the " + nameOf(b.landmark) + " and the " + nameOf(b.other) +
+                   " measures the vessel itself";
+    }
+    return {};
+}
+
+std::string_view blankKey(Blank::Reason reason) {
+    switch (reason) {
+        case Blank::Reason::None:
+            return "none";
+        case Blank::Reason::LandmarkMissing:
+            return "landmark_missing";
+        case Blank::Reason::NoAorticPath:
+            return "no_aortic_path";
+        case Blank::Reason::NotOnAorticPath:
+            return "not_on_aortic_path";
+        case Blank::Reason::PathEndsTooSoon:
+            return "path_ends_too_soon";
+        case Blank::Reason::NoContour:
+            return "no_contour";
+        case Blank::Reason::AneurysmNotBelowRenal:
+            return "aneurysm_not_below_renal";
+        case Blank::Reason::NeckTooShort:
+            return "neck_too_short";
+        case Blank::Reason::TooLittleAboveRenal:
+            return "too_little_above_renal";
+        case Blank::Reason::AneurysmTooShort:
+            return "aneurysm_too_short";
+        case Blank::Reason::NoVesselSection:
+            return "no_vessel_section";
+    }
+    return "none";
+}
 
 AorticSizing aorticSizing(const CenterlineTree& tree, const Sections& sections,
                           const std::vector<Landmark>& landmarks) {
@@ -214,8 +276,7 @@ AorticSizing aorticSizing(const CenterlineTree& tree, const Sections& sections,
     if (const Landmark* widest = findLandmark(landmarks, LandmarkKind::LargestAneurysmDiameter)) {
         const auto sizes = sectionSizesAt(tree, sections, widest->location);
         table.largestAneurysm =
-            sizes ? known(*sizes)
-                  : blank<SectionSizes>("the section there has no closed lumen contour");
+            sizes ? known(*sizes) : blank<SectionSizes>(Blank::Reason::NoContour);
     } else {
         table.largestAneurysm = blank<SectionSizes>(missing(LandmarkKind::LargestAneurysmDiameter));
     }

@@ -32,19 +32,56 @@
 //   merge.
 
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "vv/planning/Landmarks.h"
 
 namespace vv::planning {
 
+/// Why a value of the table is blank: a reason and what it names, so that
+/// each front end says it in its language (blankText: English).
+struct Blank {
+    enum class Reason : std::uint8_t {
+        None,             ///< not blank
+        LandmarkMissing,  ///< no landmark of kind `landmark` is placed
+        /// No aortic bifurcation, largest-diameter or aneurysm-start landmark
+        /// sets the aortic path.
+        NoAorticPath,
+        /// The `landmark` is not on the centreline from the source to the
+        /// `other` (the aortic path's end).
+        NotOnAorticPath,
+        PathEndsTooSoon,        ///< the aortic path ends less than `mm` below the lowest renal
+        NoContour,              ///< the section there has no closed lumen contour
+        AneurysmNotBelowRenal,  ///< the start of the aneurysm is not below the lowest renal
+        NeckTooShort,           ///< the neck is shorter than `mm`: no axis
+        TooLittleAboveRenal,    ///< less than `mm` of centreline above the lowest renal
+        AneurysmTooShort,       ///< the aneurysm is shorter than `mm`: no axis
+        /// No section between the `landmark` and the `other` measures the
+        /// vessel itself (all where lumens merge, or without a contour).
+        NoVesselSection,
+    };
+    Reason reason = Reason::None;
+    LandmarkKind landmark = LandmarkKind::Free;
+    LandmarkKind other = LandmarkKind::Free;
+    double mm = 0.0;
+};
+
+/// The reason in an English sentence ("no landmark \"Lowest renal artery\" is
+/// placed"); empty for Reason::None.
+[[nodiscard]] std::string blankText(const Blank& blank);
+
+/// The key of a reason in measurement files ("landmark_missing"). Stable.
+[[nodiscard]] std::string_view blankKey(Blank::Reason reason);
+
 /// A value of the table, or why it is blank.
 template <class T>
 struct SizingValue {
     std::optional<T> value;
-    std::string blankBecause;  ///< a sentence; empty when there is a value
+    Blank blank;  ///< Reason::None when there is a value
 };
 
 struct AorticSizing {
