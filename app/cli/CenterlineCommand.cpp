@@ -17,6 +17,7 @@
 #include "cli/CenterlineLandmarks.h"
 #include "cli/Cli.h"
 #include "cli/JsonWriter.h"
+#include "common/MeasurementFile.h"
 #include "cli/OutputFiles.h"
 #include "vv/analysis/Bifurcations.h"
 #include "vv/analysis/Centerlines.h"
@@ -296,6 +297,7 @@ void writeJson(std::ostream& out, const analysis::CenterlineTree& tree,
                const std::vector<PlacedLandmark>& landmarks) {
     JsonWriter json(out);
     json.beginObject();
+    json.member("format", std::string(app::kMeasurementFormat));
     json.key("diameters");
     json.string(
         "equivalent: 2 sqrt(area / pi); min / max: smallest / largest Feret (caliper) "

@@ -45,7 +45,23 @@ void writeSizes(JsonWriter& json, const planning::SectionSizes& s) {
     json.endObject();
 }
 
-/// {"value": V} or {"value": null, "blank": "why"}.
+/// Why a value is blank: the sentence, and the reason's key with what it
+/// names (for a reader that words it in its own language).
+void writeBlank(JsonWriter& json, const planning::Blank& blank) {
+    json.member("blank", planning::blankText(blank));
+    json.member("blank_reason", std::string(planning::blankKey(blank.reason)));
+    if (blank.landmark != LandmarkKind::Free) {
+        json.member("blank_landmark", std::string(planning::landmarkKey(blank.landmark)));
+    }
+    if (blank.other != LandmarkKind::Free) {
+        json.member("blank_other", std::string(planning::landmarkKey(blank.other)));
+    }
+    if (blank.mm != 0.0) {
+        json.member("blank_mm", blank.mm);
+    }
+}
+
+/// {"value": V} or {"value": null, "blank": "why", "blank_reason": key, ...}.
 template <class T, class Write>
 void writeValue(JsonWriter& json, const char* name, const planning::SizingValue<T>& v,
                 Write write) {
@@ -56,8 +72,7 @@ void writeValue(JsonWriter& json, const char* name, const planning::SizingValue<
         write(*v.value);
     } else {
         json.null();
-        json.member("blank", planning::blankText(v.blank));
-        json.member("blank_reason", std::string(planning::blankKey(v.blank.reason)));
+        writeBlank(json, v.blank);
     }
     json.endObject();
 }
@@ -85,9 +100,7 @@ void writeSizing(JsonWriter& json, const planning::AorticSizing& t) {
             writeSizes(json, *t.neckDiameters[i].value);
         } else {
             json.null();
-            json.member("blank", planning::blankText(t.neckDiameters[i].blank));
-            json.member("blank_reason",
-                        std::string(planning::blankKey(t.neckDiameters[i].blank.reason)));
+            writeBlank(json, t.neckDiameters[i].blank);
         }
         json.endObject();
     }

@@ -18,12 +18,19 @@
 #include <QJsonObject>
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "CliRun.h"
+#include "RunTool.h"
+#include "common/MeasurementFile.h"
+#include "vv/core/Error.h"
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/demo/TubePhantom.h"
+#include "vv/dicom/Uid.h"
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshWriter.h"
 
@@ -301,6 +308,119 @@ TEST(CenterlineCommand, LandmarksGiveTheirSectionsLengthsAndTheAorticSizingTable
     EXPECT_FALSE(free.contains("aortic_sizing"));
     EXPECT_NEAR(free["landmark_pairs"].toArray()[0].toObject()["along_centreline_mm"].toDouble(),
                 40.0, 0.4);
+}
+
+/// The aneurysm's centrelines with the preset landmarks and a free one, as
+/// a measurement file.
+std::filesystem::path writeMeasurementFile() {
+    auto file = scratch() / "measurements.json";
+    const auto run =
+        runCli({"centerline", writeAneurysm().string(), "-o", (scratch() / "m.vtp").string(),
+                "--json", "--landmark", "lowest_renal_artery=0,0,20", "--landmark",
+                "aneurysm_start=0,0,35", "--landmark", "largest_aneurysm_diameter=0,0,80",
+                "--landmark", "aortic_bifurcation=0,0,170", "--landmark",
+                "left_internal_iliac_origin=-20,0,204.64", "--landmark",
+                "right_internal_iliac_origin=20,0,204.64", "--landmark", "free:clamp=0,0,60"});
+    EXPECT_EQ(run.code, 0) << run.err;
+    std::ofstream(file) << run.out;
+    return file;
+}
+
+// What `centerline --json` writes reads back as it was written, and its
+// measurement groups make a valid TID 1500 report.
+TEST(MeasurementFile, ReadsWhatCenterlineWroteAndMakesAValidStructuredReport) {
+    const auto file = writeMeasurementFile();
+    std::ifstream in(file);
+    const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const QJsonObject json = QJsonDocument::fromJson(QByteArray::fromStdString(text)).object();
+    const vv::app::ReportMeasurements m = vv::app::readMeasurements(file);
+    ASSERT_EQ(m.branches.size(), 3U);
+    EXPECT_DOUBLE_EQ(m.branches[1].lengthMm,
+                     json["branches"].toArray()[1].toObject()["length_mm"].toDouble());
+    ASSERT_EQ(m.landmarks.size(), 7U);
+    EXPECT_EQ(m.landmarks[6].name, "clamp");
+    EXPECT_EQ(m.landmarks[3].kind, vv::planning::LandmarkKind::AorticBifurcation);
+    ASSERT_TRUE(m.landmarks[2].section.has_value());
+    EXPECT_NEAR(m.landmarks[2].section->equivalentDiameterMm, 40.0, 0.4);
+    EXPECT_EQ(m.lengths.size(), 21U);
+    ASSERT_TRUE(m.sizing.has_value());
+    EXPECT_DOUBLE_EQ(
+        m.sizing->neckLengthMm.value.value(),
+        json["aortic_sizing"].toObject()["neck_length_mm"].toObject()["value"].toDouble());
+    ASSERT_TRUE(m.sizing->smallestIliac[1].value.has_value());
+
+    const auto groups = vv::app::measurementGroups(m);
+    // Seven landmarks with sections, the lengths, the sizing, three branches.
+    ASSERT_EQ(groups.size(), 7U + 1U + 1U + 3U);
+    std::set<std::string> ids;
+    for (const auto& g : groups) {
+        EXPECT_TRUE(ids.insert(g.trackingId).second) << g.trackingId;
+        EXPECT_FALSE(g.numbers.empty()) << g.trackingId;
+    }
+    vv::dicom::MeasurementReportContent content;
+    content.groups = groups;
+    vv::dicom::ExportStudy study;
+    study.studyInstanceUid = vv::dicom::newUid();
+    const auto sr = scratch() / "measurements-sr.dcm";
+    vv::dicom::writeMeasurementReport(sr, content, study, {});
+    std::string output;
+    vv::test::runTool("dciodvfy '" + sr.string() + "'", output);
+    EXPECT_EQ(output.find("Error"), std::string::npos) << output;
+    ASSERT_EQ(vv::test::runTool("dsrdump +Pl '" + sr.string() + "'", output), 0) << output;
+    for (const char* expected :
+         {"Neck angulation beta, neck to aneurysm axis",
+          "Lowest renal artery to aortic bifurcation, along the centreline", "Aortic sizing",
+          "Lengths between landmarks", "clamp", "Smallest left iliac access diameter"}) {
+        EXPECT_NE(output.find(expected), std::string::npos) << expected;
+    }
+}
+
+// A file that is not a measurement file is an error naming it and saying
+// what is wrong, and it stays as it was.
+TEST(MeasurementFile, AnythingElseIsAClearErrorAndStaysUntouched) {
+    std::ifstream in(writeMeasurementFile());
+    const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto replaced = [&good](const std::string& from, const std::string& to) {
+        std::string text = good;
+        const auto at = text.find(from);
+        EXPECT_NE(at, std::string::npos) << from;
+        return text.replace(at, from.size(), to);
+    };
+    const std::vector<std::pair<std::string, std::string>> cases{
+        {"", "not JSON"},
+        {R"({"branches": [])", "not JSON"},
+        {"[1, 2]", "is not named"},
+        {replaced("vesselview-measurements-1", "vesselview-measurements-9"), "is not named"},
+        {replaced(R"("length_mm")", R"("length")"), "length_mm"},
+        {replaced(R"("kind": "aortic_bifurcation")", R"("kind": "carina")"), "landmark kind"},
+        {replaced(R"("along_centreline_mm": )", R"("along_centreline_mm": "x", "y": )"),
+         "along_centreline_mm"},
+    };
+    for (std::size_t i = 0; i < cases.size(); ++i) {
+        const auto file = scratch() / ("bad-" + std::to_string(i) + ".json");
+        std::ofstream(file, std::ios::binary) << cases[i].first;
+        try {
+            static_cast<void>(vv::app::readMeasurements(file));
+            ADD_FAILURE() << "no error for case " << i;
+        } catch (const vv::FormatError& e) {
+            EXPECT_NE(std::string(e.what()).find(cases[i].second), std::string::npos)
+                << i << ": " << e.what();
+            EXPECT_NE(std::string(e.what()).find(file.filename().string()), std::string::npos)
+                << e.what();
+        }
+        std::ifstream back(file, std::ios::binary);
+        EXPECT_EQ(
+            std::string((std::istreambuf_iterator<char>(back)), std::istreambuf_iterator<char>()),
+            cases[i].first)
+            << "case " << i << " was changed";
+    }
+    // Huge (sparse) and missing files.
+    const auto huge = scratch() / "huge.json";
+    std::ofstream(huge) << "{";
+    std::filesystem::resize_file(huge, 65ULL << 20U);
+    EXPECT_THROW(static_cast<void>(vv::app::readMeasurements(huge)), vv::FormatError);
+    EXPECT_THROW(static_cast<void>(vv::app::readMeasurements(scratch() / "no-such.json")),
+                 vv::IoError);
 }
 
 }  // namespace

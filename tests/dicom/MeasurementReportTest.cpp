@@ -160,6 +160,15 @@ TEST(MeasurementReport, AnonymisedKeepsNoIdentityAndStaysValid) {
     EXPECT_NE(text(data, DCM_ContentDate), "20261205");
 }
 
+TEST(MeasurementReport, WithoutDatesTheDocumentsOwnAreWritten) {
+    const fs::path file = testDir("sr-no-dates") / "measurements.dcm";
+    writeMeasurementReport(file, content(), study(false), ExportSeries{});
+    expectValid(file);  // Content Date / Time are type 1
+    DcmFileFormat read;
+    ASSERT_TRUE(read.loadFile(file.c_str()).good());
+    EXPECT_EQ(text(*read.getDataset(), DCM_ContentDate).size(), 8U);
+}
+
 TEST(MeasurementReport, AMeshWithoutADicomSourceListsNoEvidence) {
     const fs::path file = testDir("sr-mesh") / "measurements.dcm";
     MeasurementReportContent c = content();

@@ -213,20 +213,30 @@ std::string writeMeasurementReport(const std::filesystem::path& path,
     check(document.write(data), path, "write the document");
     detail::putPatientAndStudy(data, path, study);
     const bool anonymise = detail::anonymised(study);
-    // Content Date / Time are type 1 in an SR: a dummy when anonymising
-    // (the profile's D), as Instance Creation's are left out (X).
-    put(data, DCM_ContentDate, anonymise ? "19000101" : series.contentDate, path);
-    put(data, DCM_ContentTime, anonymise ? "000000" : series.contentTime, path);
+    // Content Date / Time are type 1 in an SR: the document's own (now) unless
+    // given, a dummy when anonymising (the profile's D), as Instance
+    // Creation's are left out (X).
     if (anonymise) {
+        put(data, DCM_ContentDate, "19000101", path);
+        put(data, DCM_ContentTime, "000000", path);
         data.findAndDeleteElement(DCM_InstanceCreationDate);
         data.findAndDeleteElement(DCM_InstanceCreationTime);
     } else {
-        put(data, DCM_InstanceCreationDate, series.creationDate, path);
-        put(data, DCM_InstanceCreationTime, series.creationTime, path);
-        put(data, DCM_SeriesDate, series.contentDate, path);
-        put(data, DCM_SeriesTime, series.contentTime, path);
+        const auto putGiven = [&](const DcmTagKey& tag, const std::string& value) {
+            if (!value.empty()) {
+                put(data, tag, value, path);
+            }
+        };
+        putGiven(DCM_ContentDate, series.contentDate);
+        putGiven(DCM_ContentTime, series.contentTime);
+        putGiven(DCM_InstanceCreationDate, series.creationDate);
+        putGiven(DCM_InstanceCreationTime, series.creationTime);
+        putGiven(DCM_SeriesDate, series.contentDate);
+        putGiven(DCM_SeriesTime, series.contentTime);
     }
-    put(data, DCM_SoftwareVersions, series.softwareVersion, path);
+    if (!series.softwareVersion.empty()) {
+        put(data, DCM_SoftwareVersions, series.softwareVersion, path);
+    }
     OFString sopInstance;
     document.getSOPInstanceUID(sopInstance);
     detail::save(file, path);
