@@ -21,6 +21,229 @@
     </message>
 </context>
 <context>
+    <name>vv::app::MeasurementText</name>
+    <message>
+        <source>Equivalent diameter: 2√(area/π) of the lumen section perpendicular to the centreline; minimum and maximum: its smallest and largest caliper (Feret) width. Lengths along the centreline unless marked straight.</source>
+        <translation>Äquivalenter Durchmesser: 2√(Fläche/π) des Lumenquerschnitts senkrecht zur Mittellinie; minimaler und maximaler Durchmesser: seine kleinste und größte Messschieber-(Feret-)Breite. Längen entlang der Mittellinie, sofern nicht als gerade bezeichnet.</translation>
+    </message>
+    <message>
+        <source>Landmarks</source>
+        <translation>Landmarken</translation>
+    </message>
+    <message>
+        <source>Landmark</source>
+        <translation>Landmarke</translation>
+    </message>
+    <message>
+        <source>Equivalent diameter</source>
+        <translation>Äquivalenter Durchmesser</translation>
+    </message>
+    <message>
+        <source>Minimum diameter</source>
+        <translation>Minimaler Durchmesser</translation>
+    </message>
+    <message>
+        <source>Maximum diameter</source>
+        <translation>Maximaler Durchmesser</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>the section there has no closed lumen contour</source>
+        <translation>der Querschnitt dort hat keine geschlossene Lumenkontur</translation>
+    </message>
+    <message>
+        <source>* Where lumens merge: the section holds part of the other lumen.</source>
+        <translation>* Wo Lumina zusammenlaufen: der Querschnitt enthält einen Teil des anderen Lumens.</translation>
+    </message>
+    <message>
+        <source>Lengths between landmarks</source>
+        <translation>Längen zwischen Landmarken</translation>
+    </message>
+    <message>
+        <source>From – to</source>
+        <translation>Von – bis</translation>
+    </message>
+    <message>
+        <source>Along the centreline</source>
+        <translation>Entlang der Mittellinie</translation>
+    </message>
+    <message>
+        <source>Straight</source>
+        <translation>Gerade</translation>
+    </message>
+    <message>
+        <source>Aortic sizing: diameters</source>
+        <translation>Aortale Vermessung: Durchmesser</translation>
+    </message>
+    <message>
+        <source>Place</source>
+        <translation>Ort</translation>
+    </message>
+    <message>
+        <source>Neck at the lowest renal artery</source>
+        <translation>Hals an der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>Neck %1 mm below the lowest renal artery</source>
+        <translation>Hals %1 mm unterhalb der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>Largest aneurysm diameter</source>
+        <translation>Größter Aneurysmadurchmesser</translation>
+    </message>
+    <message>
+        <source>Smallest left iliac (access)</source>
+        <translation>Kleinster Durchmesser links iliakal (Zugang)</translation>
+    </message>
+    <message>
+        <source>Smallest right iliac (access)</source>
+        <translation>Kleinster Durchmesser rechts iliakal (Zugang)</translation>
+    </message>
+    <message>
+        <source>Below: along the centreline from the tree&apos;s source towards the aortic bifurcation. Smallest iliac: the section of smallest minimum diameter from the aortic bifurcation to the internal iliac origin.</source>
+        <translation>Unterhalb: entlang der Mittellinie vom Ursprung des Baums zur Aortenbifurkation hin. Kleinster iliakaler Durchmesser: der Querschnitt mit dem kleinsten minimalen Durchmesser von der Aortenbifurkation bis zum Abgang der A. iliaca interna.</translation>
+    </message>
+    <message>
+        <source>Aortic sizing: lengths and angles</source>
+        <translation>Aortale Vermessung: Längen und Winkel</translation>
+    </message>
+    <message>
+        <source>Measure</source>
+        <translation>Maß</translation>
+    </message>
+    <message>
+        <source>Value</source>
+        <translation>Wert</translation>
+    </message>
+    <message>
+        <source>Neck length (lowest renal artery to start of the aneurysm)</source>
+        <translation>Halslänge (unterste Nierenarterie bis Beginn des Aneurysmas)</translation>
+    </message>
+    <message>
+        <source>Angle α (suprarenal aorta to neck)</source>
+        <translation>Winkel α (suprarenale Aorta zum Hals)</translation>
+    </message>
+    <message>
+        <source>Angle β (neck to aneurysm)</source>
+        <translation>Winkel β (Hals zum Aneurysma)</translation>
+    </message>
+    <message>
+        <source>Lowest renal artery to aortic bifurcation</source>
+        <translation>Unterste Nierenarterie bis Aortenbifurkation</translation>
+    </message>
+    <message>
+        <source>Lowest renal artery to left internal iliac origin</source>
+        <translation>Unterste Nierenarterie bis Abgang der A. iliaca interna links</translation>
+    </message>
+    <message>
+        <source>Lowest renal artery to right internal iliac origin</source>
+        <translation>Unterste Nierenarterie bis Abgang der A. iliaca interna rechts</translation>
+    </message>
+    <message>
+        <source>Aortic bifurcation to left internal iliac origin</source>
+        <translation>Aortenbifurkation bis Abgang der A. iliaca interna links</translation>
+    </message>
+    <message>
+        <source>Aortic bifurcation to right internal iliac origin</source>
+        <translation>Aortenbifurkation bis Abgang der A. iliaca interna rechts</translation>
+    </message>
+    <message>
+        <source>Angles between the principal axes of the centreline: the suprarenal aorta over 15 mm above the lowest renal artery, the neck, and the aneurysm from its start to the aortic bifurcation.</source>
+        <translation>Winkel zwischen den Hauptachsen der Mittellinie: die suprarenale Aorta über 15 mm oberhalb der untersten Nierenarterie, der Hals und das Aneurysma von seinem Beginn bis zur Aortenbifurkation.</translation>
+    </message>
+    <message>
+        <source>Branches</source>
+        <translation>Äste</translation>
+    </message>
+    <message>
+        <source>Branch</source>
+        <translation>Ast</translation>
+    </message>
+    <message>
+        <source>Length</source>
+        <translation>Länge</translation>
+    </message>
+    <message>
+        <source>Narrowest</source>
+        <translation>Engste Stelle</translation>
+    </message>
+    <message>
+        <source>Widest</source>
+        <translation>Weiteste Stelle</translation>
+    </message>
+    <message>
+        <source>Stenosis (diameter)</source>
+        <translation>Stenose (Durchmesser)</translation>
+    </message>
+    <message>
+        <source>Branch %1</source>
+        <translation>Ast %1</translation>
+    </message>
+    <message>
+        <source>Narrowest and widest: equivalent diameters outside the branch&apos;s ends and junctions; stenosis at the narrowest point against the reference diameter.</source>
+        <translation>Engste und weiteste Stelle: äquivalente Durchmesser außerhalb der Enden und Verzweigungen des Asts; Stenose an der engsten Stelle gegenüber dem Referenzdurchmesser.</translation>
+    </message>
+    <message>
+        <source>Lowest renal artery</source>
+        <translation>Unterste Nierenarterie</translation>
+    </message>
+    <message>
+        <source>Start of the aneurysm</source>
+        <translation>Beginn des Aneurysmas</translation>
+    </message>
+    <message>
+        <source>Aortic bifurcation</source>
+        <translation>Aortenbifurkation</translation>
+    </message>
+    <message>
+        <source>Left internal iliac origin</source>
+        <translation>Abgang der A. iliaca interna links</translation>
+    </message>
+    <message>
+        <source>Right internal iliac origin</source>
+        <translation>Abgang der A. iliaca interna rechts</translation>
+    </message>
+    <message>
+        <source>no landmark “%1” is placed</source>
+        <translation>keine Landmarke „%1“ gesetzt</translation>
+    </message>
+    <message>
+        <source>no landmark below the neck sets the aortic path</source>
+        <translation>keine Landmarke unterhalb des Halses legt den aortalen Pfad fest</translation>
+    </message>
+    <message>
+        <source>“%1” is not on the centreline from the source to “%2”</source>
+        <translation>„%1“ liegt nicht auf der Mittellinie vom Ursprung bis „%2“</translation>
+    </message>
+    <message>
+        <source>the aortic path ends less than %1 mm below the lowest renal artery</source>
+        <translation>der aortale Pfad endet weniger als %1 mm unterhalb der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>the start of the aneurysm is not below the lowest renal artery</source>
+        <translation>der Beginn des Aneurysmas liegt nicht unterhalb der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>the neck is shorter than %1 mm</source>
+        <translation>der Hals ist kürzer als %1 mm</translation>
+    </message>
+    <message>
+        <source>less than %1 mm of centreline above the lowest renal artery</source>
+        <translation>weniger als %1 mm Mittellinie oberhalb der untersten Nierenarterie</translation>
+    </message>
+    <message>
+        <source>the aneurysm is shorter than %1 mm</source>
+        <translation>das Aneurysma ist kürzer als %1 mm</translation>
+    </message>
+    <message>
+        <source>no section between “%1” and “%2” measures the vessel itself</source>
+        <translation>kein Querschnitt zwischen „%1“ und „%2“ misst das Gefäß selbst</translation>
+    </message>
+</context>
+<context>
     <name>vv::app::SegmentationText</name>
     <message>
         <source>towards the head</source>
@@ -4756,6 +4979,18 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>smoothed up close (the wall moved by at most %1)</source>
         <translation>aus der Nähe geglättet (die Wand um höchstens %1 verschoben)</translation>
+    </message>
+    <message>
+        <source>Blank (—): %1.</source>
+        <translation>Leer (—): %1.</translation>
+    </message>
+    <message>
+        <source>Nothing measured.</source>
+        <translation>Nichts gemessen.</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
     </message>
 </context>
 </TS>

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 // vesselview-cli report INPUT -o OUT.pdf [render options] [--png OUT.png]
 //                       [--dicom-sc OUT.dcm] [--dicom-pdf OUT.dcm] [--transparent]
+//                       [--measurements MEAS.json [--dicom-sr SR.dcm]]
 //                       [--anonymise] [--note TEXT] [--title TEXT] [--second-view VIEW]
 //                       [--paper a4|letter] [--below V] [--above V]
 //                       [--slice axial|coronal|sagittal[@MM]] (DICOM image series)
@@ -37,6 +38,7 @@
 #include "cli/OutputFiles.h"
 #include "cli/RenderOptions.h"
 #include "cli/SegmentSummary.h"
+#include "common/MeasurementSection.h"
 #include "common/ResourcePaths.h"
 #include "common/SegmentationText.h"
 #include "common/SliceReport.h"
@@ -58,6 +60,9 @@ using Outputs = report::ReportOutputs;
 struct ReportArguments : RenderOptionValues {
     fs::path input;
     Outputs outputs;
+    /// A measurement file (centerline --json): the PDF's Measurements
+    /// section and the --dicom-sr report.
+    fs::path measurements;
     fs::path batch;
     fs::path outDir;
     std::set<std::string> formats{"pdf"};
@@ -166,6 +171,10 @@ ReportArguments parse(const std::vector<std::string>& args) {
             parsed.outputs.dicomSc = a.path();
         } else if (name == "--dicom-pdf") {
             parsed.outputs.dicomPdf = a.path();
+        } else if (name == "--dicom-sr") {
+            parsed.outputs.dicomSr = a.path();
+        } else if (name == "--measurements") {
+            parsed.measurements = a.path();
         } else if (name == "--batch") {
             parsed.batch = a.path();
         } else if (name == "--out-dir") {
@@ -232,9 +241,10 @@ ReportArguments parse(const std::vector<std::string>& args) {
     }
     if (!parsed.batch.empty()) {
         if (haveInput || !parsed.outputs.pdf.empty() || !parsed.outputs.png.empty() ||
-            !parsed.outputs.dicomSc.empty() || !parsed.outputs.dicomPdf.empty()) {
+            !parsed.outputs.dicomSc.empty() || !parsed.outputs.dicomPdf.empty() ||
+            !parsed.outputs.dicomSr.empty() || !parsed.measurements.empty()) {
             throw UsageError(
-                "report: --batch takes no INPUT, -o, --png or --dicom-*; "
+                "report: --batch takes no INPUT, -o, --png, --dicom-* or --measurements; "
                 "choose the outputs with --formats");
         }
         if (parsed.outDir.empty()) {
@@ -251,6 +261,10 @@ ReportArguments parse(const std::vector<std::string>& args) {
     if (parsed.outputs.pdf.empty()) {
         throw UsageError("report: no output report (-o REPORT.pdf)");
     }
+    if (!parsed.outputs.dicomSr.empty() && parsed.measurements.empty()) {
+        throw UsageError(
+            "report: --dicom-sr writes the measurements: give --measurements MEAS.json");
+    }
     return parsed;
 }
 
@@ -262,7 +276,8 @@ bool samePath(const fs::path& a, const fs::path& b) {
 /// Refuses outputs that are the input or each other.
 void checkOutputs(const fs::path& input, const Outputs& outputs) {
     std::vector<fs::path> all;
-    for (const fs::path* p : {&outputs.pdf, &outputs.png, &outputs.dicomSc, &outputs.dicomPdf}) {
+    for (const fs::path* p :
+         {&outputs.pdf, &outputs.png, &outputs.dicomSc, &outputs.dicomPdf, &outputs.dicomSr}) {
         if (p->empty()) {
             continue;
         }
@@ -377,6 +392,18 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
         } catch (const InvalidArgumentError& e) {
             throw UsageError("report: --slice: " + input.string() + ": " + e.what());
         }
+    }
+    if (!a.measurements.empty()) {
+        for (const fs::path* p :
+             {&outputs.pdf, &outputs.png, &outputs.dicomSc, &outputs.dicomPdf, &outputs.dicomSr}) {
+            if (!p->empty() && samePath(*p, a.measurements)) {
+                throw UsageError("report: output '" + p->string() +
+                                 "' would overwrite the measurements");
+            }
+        }
+        const app::ReportMeasurements measured = app::readMeasurements(a.measurements);
+        job.measurements = app::measurementSection(measured);
+        job.measurementGroups = app::measurementGroups(measured);
     }
     job.outputs = outputs;
     std::vector<report::WrittenOutput> written;

@@ -66,7 +66,7 @@ scene::Scene ReportJobTest::scene_;
 TEST_F(ReportJobTest, WritesEveryOutputAndReportsProgressInOrder) {
     const fs::path dir = test::testDir("job-all");
     ReportJobOptions o = options();
-    o.outputs = {dir / "r.pdf", dir / "v.png", dir / "sc.dcm", dir / "doc.dcm"};
+    o.outputs = {dir / "r.pdf", dir / "v.png", dir / "sc.dcm", dir / "doc.dcm", {}};
     o.secondView = render::namedViewFromName("anterior");
     o.secondViewName = "anterior";
     o.paper = PaperSize::Letter;

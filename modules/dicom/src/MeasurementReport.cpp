@@ -171,6 +171,29 @@ void addGroup(TID1500_MeasurementReport& report, const SrGroup& group, bool firs
 
 }  // namespace
 
+std::vector<SrSourceInstance> readSourceInstances(const std::vector<std::filesystem::path>& files) {
+    std::vector<SrSourceInstance> instances;
+    instances.reserve(files.size());
+    for (const std::filesystem::path& file : files) {
+        DcmFileFormat format;
+        const OFCondition status =
+            format.loadFileUntilTag(OFFilename(file.c_str()), EXS_Unknown, EGL_noChange,
+                                    DCM_MaxReadLength, ERM_autoDetect, DCM_PixelData);
+        if (status.bad()) {
+            throw IoError(file, std::string("cannot read the DICOM header: ") + status.text());
+        }
+        OFString sopClass;
+        OFString sopInstance;
+        format.getDataset()->findAndGetOFString(DCM_SOPClassUID, sopClass);
+        format.getDataset()->findAndGetOFString(DCM_SOPInstanceUID, sopInstance);
+        if (sopClass.empty() || sopInstance.empty()) {
+            throw FormatError(file, "the DICOM file has no SOP Class or Instance UID");
+        }
+        instances.push_back({sopClass, sopInstance});
+    }
+    return instances;
+}
+
 std::string writeMeasurementReport(const std::filesystem::path& path,
                                    const MeasurementReportContent& content,
                                    const ExportStudy& study, const ExportSeries& series) {

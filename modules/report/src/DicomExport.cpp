@@ -145,4 +145,10 @@ std::string writeEncapsulatedPdf(const std::filesystem::path& path, const QByteA
         exportStudy(study), exportSeries(series));
 }
 
+std::string writeMeasurementSr(const std::filesystem::path& path,
+                               const dicom::MeasurementReportContent& content,
+                               const DicomStudy& study, const DicomSeries& series) {
+    return dicom::writeMeasurementReport(path, content, exportStudy(study), exportSeries(series));
+}
+
 }  // namespace vv::report

@@ -5,6 +5,7 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QFont>
+#include <QLocale>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPainter>
@@ -143,6 +144,63 @@ pdf::Table statsTable(const Flow& flow, const ReportParameter& parameter) {
             "interpolated linearly within each triangle.");
     return {flow, headers, rows, note,
             ReportText::tr("No object has finite values of this parameter.")};
+}
+
+/// A measurement's text: the number in the report's locale with its unit,
+/// or a dash.
+QString cellText(const MeasurementCell& cell) {
+    if (!cell.value) {
+        return QStringLiteral("\u2014");
+    }
+    const QString number = QLocale().toString(*cell.value, 'f', cell.decimals);
+    // Degrees follow the number without a space (35°); other units after one.
+    return cell.unit == "\u00b0" ? number + QStringLiteral("\u00b0") : withUnit(number, cell.unit);
+}
+
+/// A measurement table: its rows, a dash for each blank value and, in its
+/// note, the definitions and why each blank value is blank.
+pdf::Table measurementTable(const Flow& flow, const MeasurementTable& t) {
+    QStringList headers;
+    for (const std::string& column : t.columns) {
+        headers << qs(column);
+    }
+    std::vector<QStringList> rows;
+    QStringList blanks;
+    for (const MeasurementRow& row : t.rows) {
+        QStringList cells{qs(row.label)};
+        for (const MeasurementCell& cell : row.cells) {
+            cells << cellText(cell);
+            if (!cell.value && !cell.blankNote.empty() &&
+                !blanks.contains(qs(row.label) + QStringLiteral(": ") + qs(cell.blankNote))) {
+                blanks << qs(row.label) + QStringLiteral(": ") + qs(cell.blankNote);
+            }
+        }
+        rows.push_back(cells);
+    }
+    QString note = qs(t.note);
+    if (!blanks.isEmpty()) {
+        note += (note.isEmpty() ? QString() : QStringLiteral(" ")) +
+                ReportText::tr("Blank (\u2014): %1.").arg(blanks.join(QStringLiteral("; ")));
+    }
+    return {flow, headers, rows, note, ReportText::tr("Nothing measured.")};
+}
+
+void measurementSection(Flow& flow, const ReportMeasurementSection& section) {
+    bool first = true;
+    for (const MeasurementTable& t : section.tables) {
+        const pdf::Table table = measurementTable(flow, t);
+        const double titleHeight = flow.paragraphHeight(qs(t.title), font(9.5, true));
+        const double keep = titleHeight + mm(1.5) + table.keepHeight();
+        if (first) {
+            flow.heading(ReportText::tr("Measurements"), keep);
+            first = false;
+        } else {
+            flow.ensure(keep + mm(3.0));
+            flow.advance(mm(3.0));
+        }
+        flow.paragraph(qs(t.title), font(9.5, true), pdf::kInk, mm(1.5));
+        table.draw(flow);
+    }
 }
 
 QString solverName(vss::SolverKind kind) {
@@ -388,6 +446,10 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
                 flow.textHeight(scale, font(8.5), flow.width()) + mm(2.0) + table.height());
             flow.paragraph(scale, font(8.5), pdf::kInk, mm(2.0));
             table.draw(flow);
+        }
+
+        if (content.measurements && !content.measurements->tables.empty()) {
+            measurementSection(flow, *content.measurements);
         }
 
         const pdf::Fields data = dataFields(content);

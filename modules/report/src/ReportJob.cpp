@@ -52,12 +52,21 @@ constexpr double kScanWeight = 1.0;
 constexpr double kPdfWeight = 1.0;
 constexpr double kWriteWeight = 0.5;
 
+/// The study the DICOM exports go into, and the series the data came from.
+struct ExportSource {
+    DicomStudy study;
+    std::string modality;   ///< of the source series; empty for meshes
+    std::string seriesUid;  ///< the source series; empty for meshes
+    std::vector<std::filesystem::path> files;
+};
+
 /// The study the DICOM exports go into: the source's (with its patient) for
 /// DICOM data, else a new one.
-DicomStudy studyOf(const ReportSource& source, bool anonymise, const Progress& progress) {
-    DicomStudy study = newStudy();
+ExportSource studyOf(const ReportSource& source, bool anonymise, const Progress& progress) {
+    ExportSource exports{newStudy(), {}, {}, {}};
+    DicomStudy& study = exports.study;
     if (source.dicomPath.empty()) {
-        return study;
+        return exports;
     }
     const dicom::DicomScanResult scan = dicom::scanDicom(source.dicomPath, progress);
     std::string uid = source.seriesInstanceUid;
@@ -72,7 +81,65 @@ DicomStudy studyOf(const ReportSource& source, bool anonymise, const Progress& p
     if (anonymise && study.patient) {
         study.patient->anonymise = true;
     }
-    return study;
+    if (const dicom::DicomSeries* series = scan.findSeries(uid)) {
+        exports.modality = series->modality;
+        exports.seriesUid = series->seriesInstanceUid;
+        exports.files = series->files;
+    }
+    return exports;
+}
+
+/// The exports of mesh data: a new study, with the patient entered for it.
+ExportSource meshSource(const ReportJobOptions& options) {
+    ExportSource source{newStudy(), {}, {}, {}};
+    if (options.patient) {
+        source.study.patient = options.patient;
+        source.study.patient->anonymise = options.anonymise;
+    }
+    return source;
+}
+
+/// The measurement SR's content: the groups, and the source series'
+/// instances as evidence (pseudonyms when anonymising, as the study's UID).
+dicom::MeasurementReportContent srContent(const ReportJobOptions& options,
+                                          const ExportSource& source, bool anonymise) {
+    dicom::MeasurementReportContent content;
+    content.groups = options.measurementGroups;
+    content.sourceModality = source.modality;
+    if (!source.seriesUid.empty()) {
+        content.sourceSeriesUid = anonymise ? anonymisedUid(source.seriesUid) : source.seriesUid;
+        content.sourceInstances = dicom::readSourceInstances(source.files);
+        if (anonymise) {
+            for (auto& instance : content.sourceInstances) {
+                instance.sopInstanceUid = anonymisedUid(instance.sopInstanceUid);
+            }
+        }
+    }
+    return content;
+}
+
+/// Writes the measurement SR in a new series of `study`; what was written.
+WrittenOutput writeSrOutput(const std::filesystem::path& path,
+                            const dicom::MeasurementReportContent& content,
+                            const DicomStudy& study) {
+    DicomSeries series;
+    series.description = "VesselView measurements";
+    series.seriesNumber = 902;
+    static_cast<void>(writeMeasurementSr(path, content, study, series));
+    return {path, "DICOM Structured Report (TID 1500 measurements)"};
+}
+
+/// Throws InvalidArgumentError when no output is asked for, or a measurement
+/// SR without measurements.
+void requireOutputs(const ReportJobOptions& options) {
+    const ReportOutputs& out = options.outputs;
+    if (out.pdf.empty() && out.png.empty() && out.dicomSc.empty() && out.dicomPdf.empty() &&
+        out.dicomSr.empty()) {
+        throw InvalidArgumentError("report: no output file given");
+    }
+    if (!out.dicomSr.empty() && options.measurementGroups.empty()) {
+        throw InvalidArgumentError("report: a measurement SR needs measurements");
+    }
 }
 
 /// The parameter section: only when an array is shown and had a range.
@@ -164,12 +231,10 @@ std::string namedViewCaption(const std::string& name, scene::SceneFrame frame) {
 std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
                                         const scene::Scene& scene, const ReportJobOptions& options,
                                         const Progress& progress) {
+    requireOutputs(options);
     const ReportOutputs& out = options.outputs;
     const bool image = !out.png.empty() || !out.dicomSc.empty();
     const bool report = !out.pdf.empty() || !out.dicomPdf.empty();
-    if (!image && !report) {
-        throw InvalidArgumentError("report: no output file given");
-    }
     // A report laid out now, or one exported before and sent as it is.
     const bool layout = report && options.existingPdf.empty();
     const render::OffscreenOptions& base = options.view;
@@ -180,14 +245,12 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
     Steps steps(progress, total);
 
     // The study of the DICOM exports and the patient block.
-    DicomStudy study = newStudy();
-    if (!options.source.dicomPath.empty()) {
-        study = studyOf(options.source, options.anonymise,
-                        steps.next(kScanWeight, ReportText::tr("Reading the patient and study")));
-    } else if (options.patient) {
-        study.patient = options.patient;  // entered for mesh data
-        study.patient->anonymise = options.anonymise;
-    }
+    ExportSource source =
+        options.source.dicomPath.empty()
+            ? meshSource(options)
+            : studyOf(options.source, options.anonymise,
+                      steps.next(kScanWeight, ReportText::tr("Reading the patient and study")));
+    DicomStudy& study = source.study;
 
     std::optional<RenderedView> shown;
     if (image) {
@@ -274,9 +337,16 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
                                     ? ReportText::tr("default (fitted)").toStdString()
                                     : options.viewDescription;
         content.findings = options.findings;
+        content.measurements = options.measurements;
         content.patient = study.patient;
         pdf = renderPdf(content, options.paper);
     }
+
+    // The SR's evidence is read before anything is written.
+    const std::optional<dicom::MeasurementReportContent> sr =
+        out.dicomSr.empty()
+            ? std::nullopt
+            : std::optional(srContent(options, source, options.anonymise && study.patient));
 
     // Last chance to stop: from here on the outputs are written.
     steps.next(kWriteWeight, ReportText::tr("Writing the files"));
@@ -303,6 +373,9 @@ std::vector<WrittenOutput> runReportJob(render::OffscreenRenderer& renderer,
                                        study);
         });
         written.push_back({out.dicomPdf, "DICOM Encapsulated PDF"});
+    }
+    if (sr) {
+        writing([&] { written.push_back(writeSrOutput(out.dicomSr, *sr, study)); });
     }
     return written;
 }

@@ -71,6 +71,13 @@ struct SrSourceInstance {
     std::string sopInstanceUid;
 };
 
+/// The SOP Class and Instance UIDs of `files` (a source series' files, as
+/// scanDicom() lists them), read from their headers up to the pixel data.
+/// Throws IoError naming a file that cannot be read, FormatError naming one
+/// without the two UIDs.
+[[nodiscard]] std::vector<SrSourceInstance> readSourceInstances(
+    const std::vector<std::filesystem::path>& files);
+
 struct MeasurementReportContent {
     /// The modality of the source series ("CT", "MR"; empty for a mesh made
     /// elsewhere): chooses the procedure reported.

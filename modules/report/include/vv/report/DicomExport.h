@@ -8,6 +8,7 @@
 #include <optional>
 #include <string>
 
+#include "vv/dicom/MeasurementReport.h"
 #include "vv/report/ReportPatient.h"
 
 namespace vv::report {
@@ -66,5 +67,14 @@ std::string writeSecondaryCapture(const std::filesystem::path& path, const QImag
 std::string writeEncapsulatedPdf(const std::filesystem::path& path, const QByteArray& pdf,
                                  const std::string& title, const DicomStudy& study,
                                  const DicomSeries& series = {});
+
+/// Writes the planning measurements `content` (dicom::MeasurementReport.h:
+/// TID 1500 measurement groups, the source series' instances as evidence)
+/// as an Enhanced SR instance in a new series of `study` to `path`,
+/// atomically. Returns the SOP Instance UID. Throws as
+/// dicom::writeMeasurementReport.
+std::string writeMeasurementSr(const std::filesystem::path& path,
+                               const dicom::MeasurementReportContent& content,
+                               const DicomStudy& study, const DicomSeries& series = {});
 
 }  // namespace vv::report

@@ -75,6 +75,36 @@ struct ReportSettings {
     std::optional<double> smoothedWallMm;
 };
 
+/// One value of a measurement table: a number with its unit and decimals,
+/// or blank (a dash) with the reason, which the table's note lists.
+struct MeasurementCell {
+    std::optional<double> value;
+    int decimals = 1;
+    std::string unit;       ///< "mm", "mm²", "°"; empty = none
+    std::string blankNote;  ///< why it is blank, in the report's language
+};
+
+/// One row: what is measured and its values, one per column after the first.
+struct MeasurementRow {
+    std::string label;
+    std::vector<MeasurementCell> cells;
+};
+
+/// One table of the Measurements section, every text in the report's
+/// language (the front end words them).
+struct MeasurementTable {
+    std::string title;                 ///< printed above it
+    std::vector<std::string> columns;  ///< headers, the label column's first
+    std::vector<MeasurementRow> rows;
+    std::string note;  ///< under it (the definitions of its values)
+};
+
+/// The planning measurements (issue 35): the landmarks, the lengths between
+/// them, the aortic sizing table, the branches.
+struct ReportMeasurementSection {
+    std::vector<MeasurementTable> tables;
+};
+
 /// The report's title when none is given: "Vessel tree report", translated.
 [[nodiscard]] std::string defaultReportTitle();
 
@@ -87,7 +117,7 @@ struct ReportSettings {
 
 /// Everything the PDF report shows, in this order: the title block and the
 /// disclaimer, the patient (when given), the findings, the view(s), the
-/// parameter statistics, the data (file names, provenance), the segmentation
+/// parameter statistics, the measurements, the data (file names, provenance), the segmentation
 /// and the rendering settings. Absent parts are left out of the page (no
 /// patient block without `patient`, no parameter legend and table without
 /// `parameter`, no second view without `secondView`, no segmentation section
@@ -116,6 +146,8 @@ struct ReportContent {
     /// under the view(s); no legends.
     std::optional<ReportView> slice;
     std::optional<ReportParameter> parameter;
+    /// The Measurements section, after the parameter statistics; none = left out.
+    std::optional<ReportMeasurementSection> measurements;
     ReportSettings settings;
     std::string findings;  ///< free text; may have several lines
     QDateTime created = QDateTime::currentDateTime();

@@ -8,6 +8,7 @@
 
 #include "vv/core/Error.h"
 #include "vv/core/Progress.h"
+#include "vv/dicom/MeasurementReport.h"
 #include "vv/render/CenterlineOverlay.h"
 #include "vv/render/OffscreenRenderer.h"
 #include "vv/render/ViewPresets.h"
@@ -46,6 +47,9 @@ struct ReportOutputs {
     std::filesystem::path png;       ///< the view as an image (legends, transparency as asked)
     std::filesystem::path dicomSc;   ///< that image as DICOM Secondary Capture
     std::filesystem::path dicomPdf;  ///< the PDF as DICOM Encapsulated PDF
+    /// The planning measurements as a DICOM TID 1500 Structured Report
+    /// (ReportJobOptions::measurementGroups; the source series as evidence).
+    std::filesystem::path dicomSr;
 };
 
 /// Everything one report needs besides the scene.
@@ -93,6 +97,11 @@ struct ReportJobOptions {
     /// The line under the title; empty = none.
     std::string disclaimer = defaultDisclaimer();
     std::string findings;  ///< free text, may have several lines
+    /// The PDF's Measurements section (planning measurements, worded by the
+    /// front end); none = left out.
+    std::optional<ReportMeasurementSection> measurements;
+    /// The same measurements as TID 1500 groups, for outputs.dicomSr.
+    std::vector<dicom::SrGroup> measurementGroups;
     /// A PDF report exported before for the same data (File > Export
     /// Report): the PDF outputs are its bytes as they are (its findings,
     /// views and paper), instead of a new layout. Empty = lay out a new one.

@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "common/MeasurementSection.h"
+
+#include <QCoreApplication>
+#include <QLocale>
+#include <QString>
+#include <array>
+#include <utility>
+
+namespace vv::app {
+
+/// The section's texts, translated in this context.
+class MeasurementText {
+    Q_DECLARE_TR_FUNCTIONS(vv::app::MeasurementText)
+};
+
+namespace {
+
+using planning::Blank;
+using planning::LandmarkKind;
+using report::MeasurementCell;
+using report::MeasurementRow;
+using report::MeasurementTable;
+
+std::string str(const QString& text) {
+    return text.toStdString();
+}
+
+const char* const kMm = "mm";
+const char* const kMm2 = "mm\u00b2";
+const char* const kDegree = "\u00b0";
+
+MeasurementCell mm(std::optional<double> value, std::string blank = {}) {
+    return {value, 1, kMm, std::move(blank)};
+}
+
+/// Equivalent, minimum and maximum diameter of a section, or three blanks.
+std::vector<MeasurementCell> diameters(const std::optional<planning::SectionSizes>& s,
+                                       const std::string& blank) {
+    if (!s) {
+        return {mm(std::nullopt, blank), mm(std::nullopt), mm(std::nullopt)};
+    }
+    return {mm(s->equivalentDiameterMm), mm(s->minDiameterMm), mm(s->maxDiameterMm)};
+}
+
+std::string definitions() {
+    return str(QCoreApplication::translate(
+        "vv::app::MeasurementText",
+        "Equivalent diameter: 2\u221a(area/\u03c0) of the lumen section perpendicular to the "
+        "centreline; minimum and maximum: its smallest and largest caliper (Feret) width. "
+        "Lengths along the centreline unless marked straight."));
+}
+
+/// A landmark's name as the report shows it: a preset's in the UI language
+/// unless the user renamed it.
+std::string shownName(const std::string& name, LandmarkKind kind) {
+    return kind != LandmarkKind::Free && name == planning::landmarkEnglishName(kind)
+               ? landmarkName(kind)
+               : name;
+}
+
+/// shownName of the landmark called `name` in the file.
+std::string shownName(const ReportMeasurements& m, const std::string& name) {
+    for (const MeasuredLandmark& l : m.landmarks) {
+        if (l.name == name) {
+            return shownName(l.name, l.kind);
+        }
+    }
+    return name;
+}
+
+MeasurementTable landmarkTable(const ReportMeasurements& m) {
+    MeasurementTable t;
+    t.title = str(MeasurementText::tr("Landmarks"));
+    t.columns = {str(MeasurementText::tr("Landmark")),
+                 str(MeasurementText::tr("Equivalent diameter")),
+                 str(MeasurementText::tr("Minimum diameter")),
+                 str(MeasurementText::tr("Maximum diameter")), str(MeasurementText::tr("Area"))};
+    bool junction = false;
+    for (const MeasuredLandmark& l : m.landmarks) {
+        MeasurementRow row;
+        row.label = shownName(l.name, l.kind);
+        if (l.section && l.section->atAJunction) {
+            row.label += " *";
+            junction = true;
+        }
+        row.cells = diameters(
+            l.section, str(MeasurementText::tr("the section there has no closed lumen contour")));
+        row.cells.push_back(l.section ? MeasurementCell{l.section->areaMm2, 0, kMm2, {}}
+                                      : MeasurementCell{std::nullopt, 0, kMm2, {}});
+        t.rows.push_back(std::move(row));
+    }
+    t.note = definitions();
+    if (junction) {
+        t.note += " " + str(MeasurementText::tr(
+                            "* Where lumens merge: the section holds part of the other lumen."));
+    }
+    return t;
+}
+
+MeasurementTable lengthTable(const ReportMeasurements& m) {
+    MeasurementTable t;
+    t.title = str(MeasurementText::tr("Lengths between landmarks"));
+    t.columns = {str(MeasurementText::tr("From \u2013 to")),
+                 str(MeasurementText::tr("Along the centreline")),
+                 str(MeasurementText::tr("Straight"))};
+    for (const MeasuredLength& length : m.lengths) {
+        t.rows.push_back({shownName(m, length.from) + " \u2013 " + shownName(m, length.to),
+                          {mm(length.alongMm), mm(length.straightMm)}});
+    }
+    return t;
+}
+
+MeasurementTable aorticDiameterTable(const planning::AorticSizing& s) {
+    MeasurementTable t;
+    t.title = str(MeasurementText::tr("Aortic sizing: diameters"));
+    t.columns = {str(MeasurementText::tr("Place")), str(MeasurementText::tr("Equivalent diameter")),
+                 str(MeasurementText::tr("Minimum diameter")),
+                 str(MeasurementText::tr("Maximum diameter"))};
+    const auto add = [&t](const QString& label,
+                          const planning::SizingValue<planning::SectionSizes>& v) {
+        t.rows.push_back({str(label), diameters(v.value, blankNote(v.blank))});
+    };
+    add(MeasurementText::tr("Neck at the lowest renal artery"), s.neckDiameters[0]);
+    for (std::size_t i = 1; i < s.neckDiameters.size(); ++i) {
+        add(MeasurementText::tr("Neck %1 mm below the lowest renal artery")
+                .arg(QLocale().toString(planning::AorticSizing::kNeckDepthsMm[i], 'f', 0)),
+            s.neckDiameters[i]);
+    }
+    add(MeasurementText::tr("Largest aneurysm diameter"), s.largestAneurysm);
+    add(MeasurementText::tr("Smallest left iliac (access)"), s.smallestIliac[0]);
+    add(MeasurementText::tr("Smallest right iliac (access)"), s.smallestIliac[1]);
+    t.note = str(MeasurementText::tr(
+        "Below: along the centreline from the tree's source towards the aortic "
+        "bifurcation. Smallest iliac: the section of smallest minimum diameter from "
+        "the aortic bifurcation to the internal iliac origin."));
+    return t;
+}
+
+MeasurementTable aorticLengthTable(const planning::AorticSizing& s) {
+    MeasurementTable t;
+    t.title = str(MeasurementText::tr("Aortic sizing: lengths and angles"));
+    t.columns = {str(MeasurementText::tr("Measure")), str(MeasurementText::tr("Value"))};
+    const auto length = [&t](const QString& label, const planning::SizingValue<double>& v) {
+        t.rows.push_back({str(label), {mm(v.value, blankNote(v.blank))}});
+    };
+    const auto angle = [&t](const QString& label, const planning::SizingValue<double>& v) {
+        t.rows.push_back({str(label), {{v.value, 0, kDegree, blankNote(v.blank)}}});
+    };
+    length(MeasurementText::tr("Neck length (lowest renal artery to start of the aneurysm)"),
+           s.neckLengthMm);
+    angle(MeasurementText::tr("Angle \u03b1 (suprarenal aorta to neck)"), s.suprarenalToNeckDeg);
+    angle(MeasurementText::tr("Angle \u03b2 (neck to aneurysm)"), s.neckToAneurysmDeg);
+    length(MeasurementText::tr("Lowest renal artery to aortic bifurcation"),
+           s.renalToBifurcationMm);
+    length(MeasurementText::tr("Lowest renal artery to left internal iliac origin"),
+           s.renalToInternalIliacMm[0]);
+    length(MeasurementText::tr("Lowest renal artery to right internal iliac origin"),
+           s.renalToInternalIliacMm[1]);
+    length(MeasurementText::tr("Aortic bifurcation to left internal iliac origin"),
+           s.bifurcationToInternalIliacMm[0]);
+    length(MeasurementText::tr("Aortic bifurcation to right internal iliac origin"),
+           s.bifurcationToInternalIliacMm[1]);
+    t.note = str(MeasurementText::tr(
+        "Angles between the principal axes of the centreline: the suprarenal aorta "
+        "over 15 mm above the lowest renal artery, the neck, and the aneurysm from "
+        "its start to the aortic bifurcation."));
+    return t;
+}
+
+MeasurementTable branchTable(const ReportMeasurements& m) {
+    MeasurementTable t;
+    t.title = str(MeasurementText::tr("Branches"));
+    t.columns = {str(MeasurementText::tr("Branch")), str(MeasurementText::tr("Length")),
+                 str(MeasurementText::tr("Narrowest")), str(MeasurementText::tr("Widest")),
+                 str(MeasurementText::tr("Stenosis (diameter)"))};
+    for (const MeasuredBranch& b : m.branches) {
+        const auto equivalent = [](const std::optional<MeasuredSection>& s) {
+            return mm(s ? std::optional<double>(s->equivalentDiameterMm) : std::nullopt);
+        };
+        t.rows.push_back({b.name.empty() ? str(MeasurementText::tr("Branch %1").arg(b.id)) : b.name,
+                          {mm(b.lengthMm),
+                           equivalent(b.narrowest),
+                           equivalent(b.widest),
+                           {b.stenosisDiameterPercent, 0, "%", {}}}});
+    }
+    t.note = str(MeasurementText::tr(
+        "Narrowest and widest: equivalent diameters outside the branch's ends and "
+        "junctions; stenosis at the narrowest point against the reference diameter."));
+    return t;
+}
+
+}  // namespace
+
+std::string landmarkName(LandmarkKind kind) {
+    switch (kind) {
+        case LandmarkKind::Free:
+            return {};
+        case LandmarkKind::LowestRenalArtery:
+            return str(
+                QCoreApplication::translate("vv::app::MeasurementText", "Lowest renal artery"));
+        case LandmarkKind::AneurysmStart:
+            return str(
+                QCoreApplication::translate("vv::app::MeasurementText", "Start of the aneurysm"));
+        case LandmarkKind::LargestAneurysmDiameter:
+            return str(QCoreApplication::translate("vv::app::MeasurementText",
+                                                   "Largest aneurysm diameter"));
+        case LandmarkKind::AorticBifurcation:
+            return str(
+                QCoreApplication::translate("vv::app::MeasurementText", "Aortic bifurcation"));
+        case LandmarkKind::LeftInternalIliacOrigin:
+            return str(QCoreApplication::translate("vv::app::MeasurementText",
+                                                   "Left internal iliac origin"));
+        case LandmarkKind::RightInternalIliacOrigin:
+            return str(QCoreApplication::translate("vv::app::MeasurementText",
+                                                   "Right internal iliac origin"));
+    }
+    return {};
+}
+
+std::string blankNote(const Blank& b) {
+    const QString landmark = QString::fromStdString(landmarkName(b.landmark));
+    const QString other = QString::fromStdString(landmarkName(b.other));
+    const QString length = QLocale().toString(b.mm, 'f', 0);
+    switch (b.reason) {
+        case Blank::Reason::None:
+            return {};
+        case Blank::Reason::LandmarkMissing:
+            return str(QCoreApplication::translate("vv::app::MeasurementText",
+                                                   "no landmark \u201c%1\u201d is placed")
+                           .arg(landmark));
+        case Blank::Reason::NoAorticPath:
+            return str(QCoreApplication::translate(
+                "vv::app::MeasurementText", "no landmark below the neck sets the aortic path"));
+        case Blank::Reason::NotOnAorticPath:
+            return str(
+                QCoreApplication::translate(
+                    "vv::app::MeasurementText",
+                    "\u201c%1\u201d is not on the centreline from the source to \u201c%2\u201d")
+                    .arg(landmark, other));
+        case Blank::Reason::PathEndsTooSoon:
+            return str(QCoreApplication::translate(
+                           "vv::app::MeasurementText",
+                           "the aortic path ends less than %1 mm below the lowest renal artery")
+                           .arg(length));
+        case Blank::Reason::NoContour:
+            return str(QCoreApplication::translate(
+                "vv::app::MeasurementText", "the section there has no closed lumen contour"));
+        case Blank::Reason::AneurysmNotBelowRenal:
+            return str(QCoreApplication::translate(
+                "vv::app::MeasurementText",
+                "the start of the aneurysm is not below the lowest renal artery"));
+        case Blank::Reason::NeckTooShort:
+            return str(QCoreApplication::translate("vv::app::MeasurementText",
+                                                   "the neck is shorter than %1 mm")
+                           .arg(length));
+        case Blank::Reason::TooLittleAboveRenal:
+            return str(QCoreApplication::translate(
+                           "vv::app::MeasurementText",
+                           "less than %1 mm of centreline above the lowest renal artery")
+                           .arg(length));
+        case Blank::Reason::AneurysmTooShort:
+            return str(QCoreApplication::translate("vv::app::MeasurementText",
+                                                   "the aneurysm is shorter than %1 mm")
+                           .arg(length));
+        case Blank::Reason::NoVesselSection:
+            return str(QCoreApplication::translate(
+                           "vv::app::MeasurementText",
+                           "no section between \u201c%1\u201d and \u201c%2\u201d measures the "
+                           "vessel itself")
+                           .arg(landmark, other));
+    }
+    return {};
+}
+
+report::ReportMeasurementSection measurementSection(const ReportMeasurements& m) {
+    report::ReportMeasurementSection section;
+    const auto add = [&section](MeasurementTable t) {
+        if (!t.rows.empty()) {
+            section.tables.push_back(std::move(t));
+        }
+    };
+    if (m.sizing) {
+        add(aorticDiameterTable(*m.sizing));
+        add(aorticLengthTable(*m.sizing));
+    }
+    add(landmarkTable(m));
+    add(lengthTable(m));
+    add(branchTable(m));
+    return section;
+}
+
+}  // namespace vv::app
