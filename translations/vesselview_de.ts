@@ -242,6 +242,10 @@
         <source>no section between “%1” and “%2” measures the vessel itself</source>
         <translation>kein Querschnitt zwischen „%1“ und „%2“ misst das Gefäß selbst</translation>
     </message>
+    <message>
+        <source>not graded: too few sections measure the branch, or it has no healthy reference</source>
+        <translation>nicht bewertet: zu wenige Querschnitte messen den Ast, oder er hat keine gesunde Referenz</translation>
+    </message>
 </context>
 <context>
     <name>vv::app::SegmentationText</name>

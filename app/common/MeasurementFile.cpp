@@ -115,16 +115,12 @@ class MeasurementReader {
         return *k;
     }
 
-    [[nodiscard]] MeasuredSection section(const QJsonObject& o, const std::string& where) const {
-        return {number(o, "abscissa_mm", where), number(o, "equivalent_diameter_mm", where),
-                number(o, "min_diameter_mm", where), number(o, "max_diameter_mm", where),
-                number(o, "area_mm2", where)};
-    }
-
-    [[nodiscard]] planning::SectionSizes sizes(const QJsonObject& o,
-                                               const std::string& where) const {
+    /// A section's sizes; on `branch` when the object does not name one.
+    [[nodiscard]] planning::SectionSizes sizes(const QJsonObject& o, const std::string& where,
+                                               std::optional<int> branch = std::nullopt) const {
         planning::SectionSizes s;
-        s.location = {whole(o, "branch", where), number(o, "abscissa_mm", where)};
+        s.location = {branch ? *branch : whole(o, "branch", where),
+                      number(o, "abscissa_mm", where)};
         s.equivalentDiameterMm = number(o, "equivalent_diameter_mm", where);
         s.minDiameterMm = number(o, "min_diameter_mm", where);
         s.maxDiameterMm = number(o, "max_diameter_mm", where);
@@ -136,16 +132,11 @@ class MeasurementReader {
     [[nodiscard]] Blank blank(const QJsonObject& o, const std::string& where) const {
         Blank b;
         const std::string reason = text(o, "blank_reason", where);
-        bool known = false;
-        for (int r = 0; r <= static_cast<int>(Blank::Reason::NoVesselSection); ++r) {
-            if (planning::blankKey(static_cast<Blank::Reason>(r)) == reason) {
-                b.reason = static_cast<Blank::Reason>(r);
-                known = true;
-            }
-        }
-        if (!known || b.reason == Blank::Reason::None) {
+        const auto known = planning::blankReasonOfKey(reason);
+        if (!known || *known == Blank::Reason::None) {
             fail(where + ": the blank reason \"" + reason + "\" is not known");
         }
+        b.reason = *known;
         if (o.contains("blank_landmark")) {
             b.landmark = kind(o, "blank_landmark", where);
         }
@@ -251,12 +242,7 @@ void addSizing(std::vector<dicom::SrNumber>& n, const planning::AorticSizing& s)
             const std::string where = depth == 0.0 ? ", neck at the lowest renal artery"
                                                    : ", neck " + fixedText(depth, 0) +
                                                          " mm below the lowest renal artery";
-            n.push_back(diameter(cell->equivalentDiameterMm, std::nullopt,
-                                 "Equivalent diameter (2 sqrt(area / pi))" + where));
-            n.push_back(diameter(cell->minDiameterMm, dicom::sr::minimum(),
-                                 "Minimum Feret (caliper) diameter" + where));
-            n.push_back(diameter(cell->maxDiameterMm, dicom::sr::maximum(),
-                                 "Maximum Feret (caliper) diameter" + where));
+            addSizes(n, *cell, where);
         }
     }
     if (s.neckLengthMm.value) {
@@ -318,7 +304,8 @@ ReportMeasurements readMeasurements(const std::filesystem::path& path) {
         for (auto [key, target] :
              {std::pair{"narrowest", &branch.narrowest}, std::pair{"widest", &branch.widest}}) {
             if (!b.value(key).isNull()) {
-                *target = r.section(r.object(b.value(key), where + "." + key), where + "." + key);
+                *target = r.sizes(r.object(b.value(key), where + "." + key), where + "." + key,
+                                  branch.id);
             }
         }
         if (!b.value("stenosis").isNull()) {

@@ -17,21 +17,14 @@
 
 namespace vv::app {
 
-/// The sizes of one section as the file gives them.
-struct MeasuredSection {
-    double abscissaMm = 0.0;
-    double equivalentDiameterMm = 0.0;  ///< 2 sqrt(area / pi)
-    double minDiameterMm = 0.0;         ///< smallest Feret width
-    double maxDiameterMm = 0.0;         ///< largest Feret width
-    double areaMm2 = 0.0;
-};
-
 struct MeasuredBranch {
     int id = 0;
     std::string name;  ///< as the user named it; empty = "Branch <id>"
     double lengthMm = 0.0;
-    std::optional<MeasuredSection> narrowest;
-    std::optional<MeasuredSection> widest;
+    /// Its narrowest and widest sections by equivalent diameter (outside its
+    /// end zones); nullopt where none measures the vessel.
+    std::optional<planning::SectionSizes> narrowest;
+    std::optional<planning::SectionSizes> widest;
     /// At the narrowest point against the reference; nullopt = not graded.
     std::optional<double> stenosisDiameterPercent;
     std::optional<double> stenosisAreaPercent;

@@ -175,14 +175,17 @@ MeasurementTable branchTable(const ReportMeasurements& m) {
                  str(MeasurementText::tr("Narrowest")), str(MeasurementText::tr("Widest")),
                  str(MeasurementText::tr("Stenosis (diameter)"))};
     for (const MeasuredBranch& b : m.branches) {
-        const auto equivalent = [](const std::optional<MeasuredSection>& s) {
+        const auto equivalent = [](const std::optional<planning::SectionSizes>& s) {
             return mm(s ? std::optional<double>(s->equivalentDiameterMm) : std::nullopt);
         };
         t.rows.push_back({b.name.empty() ? str(MeasurementText::tr("Branch %1").arg(b.id)) : b.name,
                           {mm(b.lengthMm),
                            equivalent(b.narrowest),
                            equivalent(b.widest),
-                           {b.stenosisDiameterPercent, 0, "%", {}}}});
+                           {b.stenosisDiameterPercent, 0, "%",
+                            str(MeasurementText::tr("not graded: too few sections measure "
+                                                    "the branch, or it has no healthy "
+                                                    "reference"))}}});
     }
     t.note = str(MeasurementText::tr(
         "Narrowest and widest: equivalent diameters outside the branch's ends and "

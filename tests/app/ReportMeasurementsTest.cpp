@@ -149,6 +149,16 @@ TEST(ReportMeasurements, ThePdfShowsTheFilesValuesAndTheSrCarriesThem) {
             << label << " should read " << millimetres(value, english) << ": " << line;
     }
     EXPECT_NE(text.find("2√(area/π)"), std::string::npos) << "the diameters are defined";
+    // Numbers as the rest of the report writes them: no group separators (a
+    // German reader could take "1.257" for a decimal point).
+    const double area = sizing.largestAneurysm.value->areaMm2;
+    ASSERT_GT(area, 1000.0);
+    QLocale plain(QLocale::English);
+    plain.setNumberOptions(QLocale::OmitGroupSeparator);
+    EXPECT_NE(text.find(plain.toString(area, 'f', 0).toStdString() + " mm²"), std::string::npos)
+        << text;
+    EXPECT_EQ(text.find(english.toString(area, 'f', 0).toStdString() + " mm²"), std::string::npos)
+        << "a group separator in " << english.toString(area, 'f', 0).toStdString();
     // The lengths between landmarks, by their names.
     const auto& first = file.lengths.front();
     EXPECT_NE(

@@ -152,8 +152,10 @@ TEST(AorticSizing, LeavesBlankWhatItsLandmarksDoNotGiveAndSaysWhy) {
         const Blank b{static_cast<Blank::Reason>(r), LandmarkKind::AneurysmStart,
                       LandmarkKind::AorticBifurcation, 5.0};
         EXPECT_TRUE(keys.insert(blankKey(b.reason)).second) << r;
+        EXPECT_EQ(blankReasonOfKey(blankKey(b.reason)), b.reason) << r;
         EXPECT_EQ(blankText(b).empty(), b.reason == Blank::Reason::None) << r;
     }
+    EXPECT_FALSE(blankReasonOfKey("landmark missing").has_value());
     EXPECT_TRUE(hole.neckDiameters[1].value.has_value());
 }
 

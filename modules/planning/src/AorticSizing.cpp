@@ -215,9 +215,7 @@ std::string blankText(const Blank& b) {
                    "start of the aneurysm) is placed to set the aortic path";
         case Blank::Reason::NotOnAorticPath:
             return "the " + nameOf(b.landmark) +
-                   " is not on the centreline from the source to "
-                   "the " +
-                   nameOf(b.other);
+                   " is not on the centreline from the source to the " + nameOf(b.other);
         case Blank::Reason::PathEndsTooSoon:
             return "the aortic path ends less than " + mm + " below the lowest renal artery";
         case Blank::Reason::NoContour:
@@ -263,6 +261,15 @@ std::string_view blankKey(Blank::Reason reason) {
             return "no_vessel_section";
     }
     return "none";
+}
+
+std::optional<Blank::Reason> blankReasonOfKey(std::string_view key) {
+    for (int r = 0; r <= static_cast<int>(Blank::Reason::NoVesselSection); ++r) {
+        if (blankKey(static_cast<Blank::Reason>(r)) == key) {
+            return static_cast<Blank::Reason>(r);
+        }
+    }
+    return std::nullopt;
 }
 
 AorticSizing aorticSizing(const CenterlineTree& tree, const Sections& sections,

@@ -109,9 +109,8 @@ bool namesABifurcation(LandmarkKind kind) noexcept {
 
 TreeLocation placeLandmark(const analysis::CenterlineTree& tree, LandmarkKind kind,
                            const glm::dvec3& point) {
-    const NearestLocation nearest = nearestLocation(tree, point);
     if (!namesABifurcation(kind)) {
-        return nearest.location;
+        return nearestLocation(tree, point).location;
     }
     std::optional<TreeLocation> node;
     double nodeDistance = 0.0;
@@ -126,7 +125,7 @@ TreeLocation placeLandmark(const analysis::CenterlineTree& tree, LandmarkKind ki
             nodeDistance = d;
         }
     }
-    return node ? *node : nearest.location;
+    return node ? *node : nearestLocation(tree, point).location;
 }
 
 const Landmark* findLandmark(const std::vector<Landmark>& landmarks, LandmarkKind kind) {

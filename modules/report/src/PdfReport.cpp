@@ -5,7 +5,6 @@
 #include <QFile>
 #include <QFileInfo>
 #include <QFont>
-#include <QLocale>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPainter>
@@ -152,9 +151,7 @@ QString cellText(const MeasurementCell& cell) {
     if (!cell.value) {
         return QStringLiteral("\u2014");
     }
-    const QString number = QLocale().toString(*cell.value, 'f', cell.decimals);
-    // Degrees follow the number without a space (35°); other units after one.
-    return cell.unit == "\u00b0" ? number + QStringLiteral("\u00b0") : withUnit(number, cell.unit);
+    return withUnit(fixed(*cell.value, cell.decimals), cell.unit);
 }
 
 /// A measurement table: its rows, a dash for each blank value and, in its

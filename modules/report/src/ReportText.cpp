@@ -71,8 +71,15 @@ QString integer(long long value) {
     return locale().toString(value);
 }
 
+QString fixed(double value, int decimals) {
+    return locale().toString(value, 'f', decimals);
+}
+
 QString withUnit(const QString& value, const std::string& unit) {
-    return unit.empty() ? value : value + QChar(0x202F) + qs(unit);
+    if (unit.empty()) {
+        return value;
+    }
+    return unit == "\u00b0" ? value + qs(unit) : value + QChar(0x202F) + qs(unit);
 }
 
 QString formatDate(const QDate& date) {

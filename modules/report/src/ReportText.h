@@ -36,7 +36,11 @@ class ReportText {
 [[nodiscard]] QString percent(double fraction);
 /// An integer in the default locale, without group separators.
 [[nodiscard]] QString integer(long long value);
-/// `value` with `unit` after a narrow no-break space; `value` alone without unit.
+/// `value` with `decimals` decimals in the default locale, without group
+/// separators ("1257,3" in German).
+[[nodiscard]] QString fixed(double value, int decimals);
+/// `value` with `unit` after a narrow no-break space ("15,0 mm"); a degree
+/// sign follows it directly ("35°"); `value` alone without unit.
 [[nodiscard]] QString withUnit(const QString& value, const std::string& unit);
 /// A date / a date and time in the report's (translated) format.
 [[nodiscard]] QString formatDate(const QDate& date);

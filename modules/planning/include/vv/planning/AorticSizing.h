@@ -76,6 +76,8 @@ struct Blank {
 
 /// The key of a reason in measurement files ("landmark_missing"). Stable.
 [[nodiscard]] std::string_view blankKey(Blank::Reason reason);
+/// The reason of a key; nullopt for an unknown key.
+[[nodiscard]] std::optional<Blank::Reason> blankReasonOfKey(std::string_view key);
 
 /// A value of the table, or why it is blank.
 template <class T>
