@@ -16,13 +16,10 @@
 #include "cli/CenterlineDrawing.h"
 #include "cli/CenterlineLandmarks.h"
 #include "cli/Cli.h"
-#include "cli/JsonWriter.h"
-#include "common/MeasurementFile.h"
 #include "cli/OutputFiles.h"
-#include "vv/analysis/Bifurcations.h"
+#include "common/MeasurementFile.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
-#include "vv/analysis/Stenosis.h"
 #include "vv/analysis/SurfaceBranches.h"
 #include "vv/core/AtomicFile.h"
 #include "vv/core/Error.h"
@@ -256,107 +253,6 @@ void writeSectionsCsv(const std::filesystem::path& file,
     }
 }
 
-/// Narrowest and widest measured section of a branch outside its end zones
-/// (nullptr when none).
-std::pair<const analysis::CrossSection*, const analysis::CrossSection*> extremes(
-    const std::vector<analysis::CrossSection>& sections) {
-    const analysis::CrossSection* narrowest = nullptr;
-    const analysis::CrossSection* widest = nullptr;
-    for (const auto& s : sections) {
-        if (!s.measuresTheVessel()) {
-            continue;  // no contour, or a cap's or a junction's section
-        }
-        if (narrowest == nullptr || s.equivalentDiameterMm < narrowest->equivalentDiameterMm) {
-            narrowest = &s;
-        }
-        if (widest == nullptr || s.equivalentDiameterMm > widest->equivalentDiameterMm) {
-            widest = &s;
-        }
-    }
-    return {narrowest, widest};
-}
-
-void writeSection(JsonWriter& json, const char* name, const analysis::CrossSection* s) {
-    json.key(name);
-    if (s == nullptr) {
-        json.null();
-        return;
-    }
-    json.beginObject();
-    json.member("abscissa_mm", s->abscissaMm);
-    json.member("equivalent_diameter_mm", s->equivalentDiameterMm);
-    json.member("min_diameter_mm", s->minDiameterMm);
-    json.member("max_diameter_mm", s->maxDiameterMm);
-    json.member("inscribed_diameter_mm", s->inscribedDiameterMm);
-    json.member("area_mm2", s->areaMm2);
-    json.endObject();
-}
-
-void writeJson(std::ostream& out, const analysis::CenterlineTree& tree,
-               const std::vector<std::vector<analysis::CrossSection>>& sections,
-               const std::vector<PlacedLandmark>& landmarks) {
-    JsonWriter json(out);
-    json.beginObject();
-    json.member("format", std::string(app::kMeasurementFormat));
-    json.key("diameters");
-    json.string(
-        "equivalent: 2 sqrt(area / pi); min / max: smallest / largest Feret (caliper) "
-        "width; inscribed: twice the largest sphere on the centreline inside the surface");
-    json.key("branches");
-    json.beginArray();
-    for (const auto& branch : tree.branches) {
-        json.beginObject();
-        json.member("id", branch.id);
-        json.member("parent", branch.parent);
-        json.member("length_mm", branch.lengthMm);
-        json.member("tortuosity", branch.tortuosity());
-        const auto [narrowest, widest] = extremes(sections[static_cast<std::size_t>(branch.id)]);
-        writeSection(json, "narrowest", narrowest);
-        writeSection(json, "widest", widest);
-        json.key("stenosis");
-        const auto stenosis = analysis::gradeStenosis(tree, sections, branch.id);
-        if (stenosis) {
-            json.beginObject();
-            json.member("abscissa_mm", stenosis->abscissaMm);
-            json.member("diameter_percent", stenosis->diameterPercent);
-            json.member("area_percent", stenosis->areaPercent);
-            json.member("reference_diameter_mm", stenosis->referenceDiameterMm);
-            json.member("reference", stenosis->method);
-            json.endObject();
-        } else {
-            json.null();
-        }
-        json.endObject();
-    }
-    json.endArray();
-    json.key("bifurcations");
-    json.beginArray();
-    for (const auto& b : analysis::findBifurcations(tree)) {
-        json.beginObject();
-        json.member("parent", b.parent);
-        json.key("children");
-        json.beginArray();
-        for (const int c : b.children) {
-            json.integer(c);
-        }
-        json.endArray();
-        json.member("angle_deg", b.angleDeg);
-        json.endObject();
-    }
-    json.endArray();
-    json.key("notes");
-    json.beginArray();
-    for (const auto& note : tree.notes) {
-        json.string(note);
-    }
-    json.endArray();
-    if (!landmarks.empty()) {
-        writeLandmarksJson(json, tree, sections, landmarks);
-    }
-    json.endObject();
-    json.finish();
-}
-
 }  // namespace
 
 int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -418,7 +314,7 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
     }
     const std::vector<PlacedLandmark> landmarks = placeLandmarks(tree, c.landmarks, err);
     if (c.json) {
-        writeJson(out, tree, sections, landmarks);
+        app::writeMeasurementJson(out, {&analysed, landmarks, {}, std::nullopt});
     } else {
         double length = 0.0;
         for (const auto& b : tree.branches) {

@@ -2,16 +2,15 @@
 #pragma once
 
 // `vesselview-cli centerline --landmark KEY=X,Y,Z`: landmarks given as
-// points, placed on the centrelines (vv::planning), and what `--json` says
-// of them: each landmark's place and section, the lengths between every
-// pair, and, with any preset of aortic planning, the aortic sizing table.
+// points, placed on the centrelines (vv::planning); `--json` writes them into
+// the measurement file (common/MeasurementFile.h).
 
 #include <glm/vec3.hpp>
 #include <ostream>
 #include <string>
 #include <vector>
 
-#include "cli/JsonWriter.h"
+#include "common/MeasurementFile.h"
 #include "vv/analysis/Sections.h"
 #include "vv/planning/Landmarks.h"
 
@@ -28,13 +27,7 @@ struct GivenLandmark {
 /// `free:NAME`. Throws UsageError naming the option and listing the keys.
 [[nodiscard]] GivenLandmark parseLandmark(const std::string& text);
 
-/// A landmark placed on the tree, and how far the given point was from the
-/// centreline.
-struct PlacedLandmark {
-    planning::Landmark landmark;
-    glm::dvec3 given{0.0};
-    double distanceMm = 0.0;  ///< from the given point to the centreline
-};
+using app::PlacedLandmark;
 
 /// Places each given landmark (planning::placeLandmark). Writes a note to
 /// `err` for a point farther from the centreline than the vessel's
@@ -43,11 +36,5 @@ struct PlacedLandmark {
 [[nodiscard]] std::vector<PlacedLandmark> placeLandmarks(const analysis::CenterlineTree& tree,
                                                          const std::vector<GivenLandmark>& given,
                                                          std::ostream& err);
-
-/// Writes the members "landmarks", "landmark_pairs" and, when a preset is
-/// among them, "aortic_sizing" into the open JSON object.
-void writeLandmarksJson(JsonWriter& json, const analysis::CenterlineTree& tree,
-                        const std::vector<std::vector<analysis::CrossSection>>& sections,
-                        const std::vector<PlacedLandmark>& placed);
 
 }  // namespace vv::cli

@@ -35,7 +35,8 @@ class MeasurementReader {
         throw FormatError(file_, "not a VesselView measurement file: " + problem);
     }
 
-    [[nodiscard]] QJsonObject document() const {
+    /// The file's text, at most 64 MiB. Throws IoError when it cannot be read.
+    [[nodiscard]] std::string fileText() const {
         std::error_code error;
         const std::uintmax_t size = std::filesystem::file_size(file_, error);
         if (error) {
@@ -50,7 +51,13 @@ class MeasurementReader {
         if (!in) {
             throw IoError(file_, "cannot read the measurements");
         }
-        const std::string text = bytes.str();
+        return bytes.str();
+    }
+
+    [[nodiscard]] QJsonObject document(const std::string& text) const {
+        if (text.size() > kMaxBytes) {
+            fail("it is larger than 64 MiB");
+        }
         QJsonParseError parse{};
         const QJsonDocument json = QJsonDocument::fromJson(
             QByteArray(text.data(), static_cast<qsizetype>(text.size())), &parse);
@@ -290,8 +297,12 @@ void addSizing(std::vector<dicom::SrNumber>& n, const planning::AorticSizing& s)
 }  // namespace
 
 ReportMeasurements readMeasurements(const std::filesystem::path& path) {
-    const MeasurementReader r(path);
-    const QJsonObject root = r.document();
+    return readMeasurementText(MeasurementReader(path).fileText(), path);
+}
+
+ReportMeasurements readMeasurementText(const std::string& text, const std::filesystem::path& file) {
+    const MeasurementReader r(file);
+    const QJsonObject root = r.document(text);
     ReportMeasurements m;
     const QJsonArray branches = r.array(root, "branches", "the file");
     for (qsizetype i = 0; i < branches.size(); ++i) {

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "cli/JsonWriter.h"
+#include "common/JsonWriter.h"
 
 #include <cmath>
 #include <cstdint>
@@ -7,7 +7,7 @@
 
 #include "vv/core/NumberText.h"
 
-namespace vv::cli {
+namespace vv::app {
 
 std::string jsonString(std::string_view text) {
     std::string out = "\"";
@@ -159,4 +159,4 @@ void JsonWriter::newline() {
     out_ << '\n' << std::string(first_.size() * 2, ' ');
 }
 
-}  // namespace vv::cli
+}  // namespace vv::app
