@@ -18,6 +18,7 @@
 #include "cli/Cli.h"
 #include "cli/OutputFiles.h"
 #include "common/MeasurementFile.h"
+#include "common/SectionsCsv.h"
 #include "vv/analysis/Centerlines.h"
 #include "vv/analysis/Sections.h"
 #include "vv/analysis/SurfaceBranches.h"
@@ -221,38 +222,6 @@ meshio::PolylineSet polylines(const analysis::CenterlineTree& tree,
     return set;
 }
 
-void writeSectionsCsv(const std::filesystem::path& file,
-                      const std::vector<std::vector<analysis::CrossSection>>& sections) {
-    try {
-        writeAtomically(file, [&](const std::filesystem::path& temporary) {
-            std::ofstream out(temporary, std::ios::binary);
-            out << "branch_id,point,abscissa_mm,x_mm,y_mm,z_mm,area_mm2,equivalent_diameter_mm,"
-                   "min_diameter_mm,max_diameter_mm,inscribed_diameter_mm,perimeter_mm,"
-                   "circularity,status,end_zone\n";
-            for (const auto& branch : sections) {
-                for (const auto& s : branch) {
-                    const bool ok = s.status == analysis::CrossSection::Status::Ok;
-                    const auto number = [ok](double v) { return ok ? fixedText(v, 4) : ""; };
-                    out << s.branch << ',' << s.pointIndex << ',' << fixedText(s.abscissaMm, 3)
-                        << ',' << fixedText(s.centre.x, 4) << ',' << fixedText(s.centre.y, 4) << ','
-                        << fixedText(s.centre.z, 4) << ',' << number(s.areaMm2) << ','
-                        << number(s.equivalentDiameterMm) << ',' << number(s.minDiameterMm) << ','
-                        << number(s.maxDiameterMm) << ',' << fixedText(s.inscribedDiameterMm, 4)
-                        << ',' << number(s.perimeterMm) << ',' << number(s.circularity) << ','
-                        << (ok ? "ok" : "no contour") << ',' << (s.inEndZone ? "yes" : "no")
-                        << '\n';
-                }
-            }
-            out.flush();
-            if (!out) {
-                throw IoError(file, "cannot write the sections");
-            }
-        });
-    } catch (const IoError& e) {
-        throw OutputError(e.what());
-    }
-}
-
 }  // namespace
 
 int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
@@ -303,7 +272,11 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
         throw OutputError(e.what());
     }
     if (!c.sectionsCsv.empty()) {
-        writeSectionsCsv(c.sectionsCsv, sections);
+        try {
+            app::writeSectionsCsv(c.sectionsCsv, analysed, app::allSectionRows(analysed));
+        } catch (const IoError& e) {
+            throw OutputError(e.what());
+        }
     }
     if (!c.surfaceOut.empty()) {
         try {

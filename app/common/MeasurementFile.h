@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "vv/analysis/Sections.h"
+#include "vv/analysis/Stenosis.h"
 #include "vv/dicom/MeasurementReport.h"
 #include "vv/planning/AorticSizing.h"
 #include "vv/planning/VesselPath.h"
@@ -78,6 +79,8 @@ struct MeasurementInput {
     const analysis::VesselAnalysis* analysis = nullptr;  ///< not null
     std::vector<PlacedLandmark> landmarks;
     std::map<int, std::string> branchNames;
+    /// The stenosis references the user set, by branch id (others automatic).
+    std::map<int, analysis::StenosisReference> stenosisReferences;
     struct Path {
         int fromEnd = 0;
         int toEnd = 0;

@@ -233,7 +233,11 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
         writeSection(json, "narrowest", e.narrowest);
         writeSection(json, "widest", e.widest);
         json.key("stenosis");
-        const auto stenosis = analysis::gradeStenosis(tree, sections, branch.id);
+        const auto given = input.stenosisReferences.find(branch.id);
+        const auto stenosis = analysis::gradeStenosis(tree, sections, branch.id,
+                                                      given != input.stenosisReferences.end()
+                                                          ? given->second
+                                                          : analysis::StenosisReference{});
         if (stenosis) {
             json.beginObject();
             json.member("abscissa_mm", stenosis->abscissaMm);

@@ -28,6 +28,14 @@ constexpr std::array kStages = {
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Computing normals"),
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Assigning vessel data"),
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Voxelising the demo tree"),
+    // analysis
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Preparing the surface"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Tetrahedralising the surface"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Joining the Voronoi diagram"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Finding the vessels' ends"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Tracing the centrelines"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Centrelines done"),
+    QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Cutting the sections"),
     // dicom
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Listing DICOM files"),
     QT_TRANSLATE_NOOP("vv::gui::EngineTexts", "Reading DICOM headers"),

@@ -43,8 +43,12 @@
 #include "gui/SeriesDialog.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/analysis/DiameterProfile.h"
+#include "gui/analysis/PlanningOverlay.h"
+#include "gui/analysis/PlanningState.h"
 #include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/LocalStudyActions.h"
+#include "gui/panels/AnalysisPanel.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/DataPanel.h"
 #include "gui/panels/DisplayPanel.h"
@@ -398,6 +402,7 @@ void MainWindow::buildViewMenu() {
     for (QDockWidget* dock : docks_) {
         panelsMenu->addAction(dock->toggleViewAction());
     }
+    panelsMenu->addAction(profileDock_->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
     view->addSeparator();
@@ -415,6 +420,8 @@ void MainWindow::buildDocks() {
     displayPanel_ = new panels::DisplayPanel(viewer_, this);
     dataPanel_ = new panels::DataPanel(viewer_, this);
     segmentationPanel_ = new panels::SegmentationPanel(viewer_, this);
+    planning_ = new PlanningState(this);
+    analysisPanel_ = new panels::AnalysisPanel(viewer_, planning_, this);
     // One side panel, its parts one under the other: what a newcomer needs
     // first is open, the rest folded.
     sidePanel_ = new panels::SidePanel(this);
@@ -423,11 +430,13 @@ void MainWindow::buildDocks() {
     sidePanel_->addSection(tr("Display"), displayPanel_, false);
     sidePanel_->addSection(tr("Data"), dataPanel_, false);
     sidePanel_->addSection(tr("Segmentation"), segmentationPanel_, false);
+    sidePanel_->addSection(tr("Analysis"), analysisPanel_, false);
     auto* dock = new QDockWidget(tr("Side Panel"), this);
     dock->setObjectName(QStringLiteral("sidePanelDock"));
     dock->setWidget(sidePanel_);
     addDockWidget(Qt::RightDockWidgetArea, dock);
     docks_ << dock;
+    buildPlanning();
     connect(vssPanel_, &panels::VssPanel::changed, this, &MainWindow::syncControls);
     connect(functionalPanel_, &panels::FunctionalPanel::changed, this, &MainWindow::syncControls);
     connect(displayPanel_, &panels::DisplayPanel::changed, this, &MainWindow::syncControls);
@@ -461,6 +470,25 @@ void MainWindow::buildDocks() {
         }
     });
     connect(segmentationPanel_, &panels::SegmentationPanel::statusMessage, this,
+            [this](const QString& message) { statusLabel_->setText(message); });
+}
+
+void MainWindow::buildPlanning() {
+    // The diameter profile under the views: shown when an analysis arrives
+    // (not one of docks_: Reset Layout does not show it without one).
+    profile_ = new DiameterProfile(planning_, this);
+    profileDock_ = new QDockWidget(tr("Diameter Profile"), this);
+    profileDock_->setObjectName(QStringLiteral("diameterProfileDock"));
+    profileDock_->setWidget(profile_);
+    addDockWidget(Qt::BottomDockWidgetArea, profileDock_);
+    profileDock_->hide();
+    planningOverlay_ = new PlanningOverlay(viewer_, planning_);
+    connect(planning_, &PlanningState::analysisChanged, this,
+            [this] { profileDock_->setVisible(planning_->hasAnalysis()); });
+    connect(profile_, &DiameterProfile::hovered, planningOverlay_, &PlanningOverlay::setHoverMm);
+    connect(profile_, &DiameterProfile::placeRequested, analysisPanel_->placeButton(),
+            &QPushButton::click);
+    connect(analysisPanel_, &panels::AnalysisPanel::statusMessage, this,
             [this](const QString& message) { statusLabel_->setText(message); });
 }
 
@@ -617,6 +645,7 @@ void MainWindow::resetLayout() {
     for (panels::CollapsibleSection* section : sidePanel_->sections()) {
         section->resetToDefault();
     }
+    profileDock_->setVisible(planning_->hasAnalysis());
 }
 
 void MainWindow::revealPanel(const QWidget* panel) {
@@ -689,6 +718,7 @@ void MainWindow::showScene(const std::shared_ptr<const scene::Scene>& scene, con
                            const QStringList& files) {
     clearMeasurement();  // points on the old data mean nothing on the new
     viewer_->setScene(scene);
+    analysisPanel_->sceneChanged();  // so are centrelines and landmarks
     functionalPanel_->sceneChanged();
     dataPanel_->sceneChanged(title, files);
     dataPanel_->setDicomSource(document_->dicomSource());

@@ -37,13 +37,17 @@ struct DicomScanResult;
 namespace vv::gui {
 
 class DicomMenu;
+class DiameterProfile;
 class ListenerService;
+class PlanningOverlay;
+class PlanningState;
 class MeasureOverlay;
 class ScreenshotMode;
 class SeriesDialog;
 class ViewerWidget;
 
 namespace panels {
+class AnalysisPanel;
 class DataPanel;
 class DisplayPanel;
 class FunctionalPanel;
@@ -184,6 +188,14 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
         return document_->volume();
     }
+    /// The "Analysis" panel (centrelines, path, landmarks, measurements) and
+    /// the planning work it shows (issue 35).
+    [[nodiscard]] panels::AnalysisPanel* analysisPanel() const noexcept { return analysisPanel_; }
+    [[nodiscard]] PlanningState* planning() const noexcept { return planning_; }
+    /// The diameter profile along the chosen path, in a dock under the views
+    /// ("diameterProfileDock"), shown when an analysis arrives.
+    [[nodiscard]] DiameterProfile* diameterProfile() const noexcept { return profile_; }
+    [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept { return profileDock_; }
     /// The side panel (scrolls vertically; its sections hold the panels).
     [[nodiscard]] panels::SidePanel* sidePanel() const noexcept { return sidePanel_; }
     /// Shows the side panel and opens and scrolls to the section holding
@@ -256,6 +268,8 @@ class MainWindow : public QMainWindow {
 
   private:
     void buildDocks();
+    /// The planning views: the diameter profile's dock and the 3-D overlay.
+    void buildPlanning();
     /// File, View, DICOM and Help, in the menu bar's order.
     void buildMenus();
     void buildFileMenu();
@@ -305,6 +319,11 @@ class MainWindow : public QMainWindow {
     DocumentController* document_ = nullptr;
     DicomMenu* dicomMenu_ = nullptr;
     QList<QDockWidget*> docks_;
+    PlanningState* planning_ = nullptr;
+    panels::AnalysisPanel* analysisPanel_ = nullptr;
+    DiameterProfile* profile_ = nullptr;
+    QDockWidget* profileDock_ = nullptr;
+    PlanningOverlay* planningOverlay_ = nullptr;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;
     QAction* aoAction_ = nullptr;

@@ -5,6 +5,7 @@
 #include <set>
 #include <string_view>
 
+#include "AneurysmTruth.h"
 #include "TreeBuilder.h"
 #include "vv/analysis/Bifurcations.h"
 #include "vv/demo/AneurysmPhantom.h"
@@ -159,23 +160,6 @@ TEST(AorticSizing, LeavesBlankWhatItsLandmarksDoNotGiveAndSaysWhy) {
     EXPECT_TRUE(hole.neckDiameters[1].value.has_value());
 }
 
-/// The length along the phantom's axes between the axis points nearest to
-/// two places of the tree: the truth a length along the centreline between
-/// landmarks there is measured against.
-double truthAlongAxes(const demo::AneurysmPhantom& phantom, const analysis::CenterlineTree& tree,
-                      const TreeLocation& a, const TreeLocation& b) {
-    const auto pa = phantom.nearestAxisPoint(sampleAt(tree, a).position);
-    const auto pb = phantom.nearestAxisPoint(sampleAt(tree, b).position);
-    const double trunk = phantom.options.trunkLengthMm;
-    const auto fromTheFork = [trunk](const demo::AneurysmAxisPoint& p) {
-        return p.part == demo::AneurysmPart::Trunk ? trunk - p.abscissaMm : p.abscissaMm;
-    };
-    if (pa.part == pb.part) {
-        return std::abs(pa.abscissaMm - pb.abscissaMm);
-    }
-    return fromTheFork(pa) + fromTheFork(pb);  // through the point where the axes meet
-}
-
 // The aneurysm phantom analysed (50k triangles; open ends as a CFD surface
 // comes, or closed and jittered by 2 % of r as a noisy segmentation): the landmarks placed where a
 // planner would click, at the truth's places, and every value against the truth within the
@@ -229,7 +213,8 @@ TEST_P(AorticSizingOnThePhantom, MeasuresItAsItsTruth) {
         EXPECT_NEAR(cell.value->equivalentDiameterMm, truth, 0.01 * truth) << i;
     }
     const auto length = [&](std::size_t a, std::size_t b) {
-        return truthAlongAxes(phantom, tree, landmarks[a].location, landmarks[b].location);
+        return vv::test::truthAlongAxes(phantom, tree, landmarks[a].location,
+                                        landmarks[b].location);
     };
     EXPECT_NEAR(table.neckLengthMm.value.value(), length(0, 1), 0.01 * length(0, 1));
     EXPECT_NEAR(table.suprarenalToNeckDeg.value.value(), 0.0, 1.0);

@@ -145,15 +145,6 @@ pdf::Table statsTable(const Flow& flow, const ReportParameter& parameter) {
             ReportText::tr("No object has finite values of this parameter.")};
 }
 
-/// A measurement's text: the number in the report's locale with its unit,
-/// or a dash.
-QString cellText(const MeasurementCell& cell) {
-    if (!cell.value) {
-        return QStringLiteral("\u2014");
-    }
-    return withUnit(fixed(*cell.value, cell.decimals), cell.unit);
-}
-
 /// A measurement table: its rows, a dash for each blank value and, in its
 /// note, the definitions and why each blank value is blank.
 pdf::Table measurementTable(const Flow& flow, const MeasurementTable& t) {
@@ -166,7 +157,7 @@ pdf::Table measurementTable(const Flow& flow, const MeasurementTable& t) {
     for (const MeasurementRow& row : t.rows) {
         QStringList cells{qs(row.label)};
         for (const MeasurementCell& cell : row.cells) {
-            cells << cellText(cell);
+            cells << qs(measurementCellText(cell));
             if (!cell.value && !cell.blankNote.empty() &&
                 !blanks.contains(qs(row.label) + QStringLiteral(": ") + qs(cell.blankNote))) {
                 blanks << qs(row.label) + QStringLiteral(": ") + qs(cell.blankNote);
@@ -466,6 +457,13 @@ void paint(QPdfWriter& writer, const ReportContent& content) {
 }
 
 }  // namespace
+
+std::string measurementCellText(const MeasurementCell& cell) {
+    if (!cell.value) {
+        return "\u2014";
+    }
+    return withUnit(fixed(*cell.value, cell.decimals), cell.unit).toStdString();
+}
 
 std::string defaultReportTitle() {
     return QCoreApplication::translate("vv::report::ReportText", "Vessel tree report")

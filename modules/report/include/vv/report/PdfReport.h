@@ -84,6 +84,11 @@ struct MeasurementCell {
     std::string blankNote;  ///< why it is blank, in the report's language
 };
 
+/// A measurement as the report prints it: the number in the UI locale without
+/// group separators and with its unit ("15,0 mm", "35°"), or a dash when blank.
+/// UTF-8; the GUI's tables print the same.
+[[nodiscard]] std::string measurementCellText(const MeasurementCell& cell);
+
 /// One row: what is measured and its values, one per column after the first.
 struct MeasurementRow {
     std::string label;

@@ -1,0 +1,83 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/analysis/AnalysisTask.h"
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <mutex>
+#include <string>
+#include <utility>
+
+#include "vv/analysis/AnalysisError.h"
+#include "vv/core/Error.h"
+
+namespace vv::gui {
+
+namespace {
+
+/// Progress signals of one stage at most this often.
+constexpr std::chrono::milliseconds kProgressInterval{50};
+
+}  // namespace
+
+AnalysisTask::AnalysisTask(std::shared_ptr<const scene::Scene> scene,
+                           analysis::CenterlineOptions options, QObject* parent)
+    : QObject(parent), scene_(std::move(scene)), options_(std::move(options)) {
+    connect(&run_.watcher(), &QFutureWatcher<Result>::finished, this, &AnalysisTask::deliver);
+}
+
+void AnalysisTask::start() {
+    run_.start([this](std::stop_token stop) { return work(std::move(stop)); });
+}
+
+AnalysisTask::Result AnalysisTask::work(std::stop_token stop) {
+    // Worker thread: reads scene_ and options_ (immutable while running),
+    // emits progressChanged (queued to the GUI thread).
+    Result result;
+    if (scene_ == nullptr || scene_->meshes.empty()) {
+        result.problem = {tr("The scene has no vessel surface to analyse."), {}};
+        return result;
+    }
+    std::mutex lock;
+    auto last = std::chrono::steady_clock::time_point{};
+    std::string lastStage;
+    const Progress progress(
+        [this, &lock, &last, &lastStage](double fraction, std::string_view stage) {
+            const auto now = std::chrono::steady_clock::now();
+            const std::lock_guard guard(lock);
+            if (stage == lastStage && now - last < kProgressInterval) {
+                return;
+            }
+            last = now;
+            lastStage = std::string(stage);
+            emit progressChanged(std::clamp(fraction, 0.0, 1.0),
+                                 translatedStage(QString::fromUtf8(
+                                     stage.data(), static_cast<qsizetype>(stage.size()))));
+        },
+        std::move(stop));
+    try {
+        result.analysis = std::make_shared<const analysis::VesselAnalysis>(
+            analysis::analyseVessels(scene_->meshes.front(), options_, progress));
+    } catch (const CancelledError&) {
+        result.cancelled = true;
+    } catch (const analysis::AnalysisError& e) {
+        result.problem = {tr("The surface cannot be analysed."), QString::fromStdString(e.what())};
+    } catch (const std::exception& e) {
+        result.problem = describeProblem(e, FileAccess::Reading);
+    }
+    return result;
+}
+
+void AnalysisTask::deliver() {
+    const Result result = run_.result();
+    if (result.cancelled || run_.stopRequested()) {
+        emit cancelled();
+    } else if (result.analysis) {
+        emit succeeded(result.analysis);
+    } else {
+        emit failed(result.problem);
+    }
+    emit finished();
+}
+
+}  // namespace vv::gui

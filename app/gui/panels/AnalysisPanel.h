@@ -1,0 +1,146 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#pragma once
+
+#include <QPointF>
+#include <QPointer>
+#include <QString>
+#include <QWidget>
+#include <filesystem>
+
+#include "gui/EngineTexts.h"
+
+class QComboBox;
+class QLabel;
+class QLineEdit;
+class QProgressBar;
+class QPushButton;
+class QTableWidget;
+class QTreeWidget;
+
+namespace vv::gui {
+
+class AnalysisTask;
+class PlanningState;
+class ViewerWidget;
+
+namespace panels {
+
+/// The "Analysis" panel (issue 35): the planning workflow on the shown
+/// vessel surface.
+///
+/// - "Find centrelines" analyses the scene's first surface on a worker
+///   (AnalysisTask) with progress and Cancel; a new scene cancels it and
+///   clears the analysis. The GUI thread never waits for it.
+/// - The branch table: each branch's name (editable: the name goes into
+///   measurement files and reports), length, narrowest and widest
+///   equivalent diameter; the stenosis table: each graded branch's diameter
+///   and area percent, where along the path, the reference in its tooltip.
+/// - The path: from one end to another (PlanningState::choosePath); the
+///   cursor's place on it and its section's sizes.
+/// - Landmarks: a preset of aortic planning or a free name, placed at the
+///   cursor; the list (select one to move it with "Move to cursor" or
+///   Ctrl+Left / Ctrl+Right in the diameter profile); Remove.
+/// - The measurements as the report prints them (app::measurementSection):
+///   the landmarks' sections, the lengths between them, the aortic sizing
+///   table, the branches; a blank value with why.
+/// - "Save measurements…" (a measurement file `vesselview-cli report
+///   --measurements` reads) and "Export sections…" (CSV of the sections
+///   along the path).
+/// - "Pick on vessel": a click on the vessel (press and release without
+///   moving) moves the cursor to the path place nearest it.
+class AnalysisPanel : public QWidget {
+    Q_OBJECT
+
+  public:
+    /// The task is a child: deleting the panel cancels and waits for it.
+    AnalysisPanel(ViewerWidget* viewer, PlanningState* state, QWidget* parent = nullptr);
+    ~AnalysisPanel() override;
+
+    /// Starts the analysis of the viewer's scene (what "Find centrelines"
+    /// does); cancels one running. Does nothing without a scene.
+    void findCenterlines();
+    /// Cancels a running analysis (the Cancel button).
+    void cancelAnalysis();
+    /// From findCenterlines() until its result (or failure) is shown.
+    [[nodiscard]] bool analysing() const;
+    /// The viewer shows another scene: cancels a running analysis, clears
+    /// the state, enables "Find centrelines" when the scene has a surface.
+    void sceneChanged();
+
+    /// Writes the measurement file to `path` (atomically). Returns the
+    /// problem, empty on success.
+    [[nodiscard]] ProblemText saveMeasurementsTo(const std::filesystem::path& path);
+    /// Writes the sections along the path as CSV to `path` (atomically).
+    [[nodiscard]] ProblemText exportSectionsTo(const std::filesystem::path& path);
+
+    [[nodiscard]] QPushButton* findButton() const noexcept { return find_; }
+    [[nodiscard]] QPushButton* cancelButton() const noexcept { return cancel_; }
+    [[nodiscard]] QPushButton* pickButton() const noexcept { return pick_; }
+    [[nodiscard]] QTableWidget* branchTable() const noexcept { return branches_; }
+    /// The graded stenoses: branch (tooltip: the reference), diameter and
+    /// area percent, where along the path.
+    [[nodiscard]] QTableWidget* stenosisTable() const noexcept { return stenoses_; }
+    [[nodiscard]] QComboBox* fromEndChooser() const noexcept { return from_; }
+    [[nodiscard]] QComboBox* toEndChooser() const noexcept { return to_; }
+    [[nodiscard]] QComboBox* landmarkKindChooser() const noexcept { return kind_; }
+    [[nodiscard]] QLineEdit* freeNameField() const noexcept { return freeName_; }
+    [[nodiscard]] QPushButton* placeButton() const noexcept { return place_; }
+    [[nodiscard]] QTableWidget* landmarkTable() const noexcept { return landmarks_; }
+    /// The measurement tables: one top-level item per table (its title), one
+    /// child per row (label, then the values as the report prints them).
+    [[nodiscard]] QTreeWidget* measurementTree() const noexcept { return measurements_; }
+    [[nodiscard]] QLabel* statusLabel() const noexcept { return status_; }
+    [[nodiscard]] QLabel* cursorLabel() const noexcept { return cursor_; }
+
+  signals:
+    /// A one-line message for the status bar.
+    void statusMessage(const QString& message);
+
+  protected:
+    /// "Pick on vessel": a click on the viewer moves the cursor.
+    bool eventFilter(QObject* watched, QEvent* event) override;
+
+  private:
+    void buildAnalysisRows();
+    void buildPathRows();
+    void buildLandmarkRows();
+    void showAnalysis();
+    void showBranches();
+    void showEnds();
+    void showCursor();
+    void showLandmarks();
+    void showMeasurements();
+    void analysisFinished();
+    void saveMeasurements();
+    void exportSections();
+
+    ViewerWidget* viewer_;
+    PlanningState* state_;
+    QPointer<AnalysisTask> task_;
+    QPushButton* find_ = nullptr;
+    QPushButton* cancel_ = nullptr;
+    QProgressBar* progress_ = nullptr;
+    QLabel* status_ = nullptr;
+    QTableWidget* branches_ = nullptr;
+    QTableWidget* stenoses_ = nullptr;
+    QComboBox* from_ = nullptr;
+    QComboBox* to_ = nullptr;
+    QLabel* cursor_ = nullptr;
+    QPushButton* pick_ = nullptr;
+    QComboBox* kind_ = nullptr;
+    QLineEdit* freeName_ = nullptr;
+    QPushButton* place_ = nullptr;
+    QTableWidget* landmarks_ = nullptr;
+    QPushButton* moveHere_ = nullptr;
+    QPushButton* remove_ = nullptr;
+    QTreeWidget* measurements_ = nullptr;
+    QPushButton* save_ = nullptr;
+    QPushButton* csv_ = nullptr;
+    QWidget* analysed_ = nullptr;  ///< everything shown once there is an analysis
+    bool filling_ = false;         ///< while tables are refilled: edits are not the user's
+    bool pressed_ = false;         ///< the left button went down on the viewer
+    QPointF pressPosition_;
+};
+
+}  // namespace panels
+}  // namespace vv::gui

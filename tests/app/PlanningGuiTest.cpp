@@ -1,0 +1,428 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+// The planning workflow in the GUI (issue 35), driven as a planner drives it:
+// Find centrelines (progress, Cancel, the GUI thread free meanwhile), a path
+// chosen between two ends, the cursor moved by the keyboard and by a click on
+// the vessel, the six aortic presets placed at the cursor, the sizing table
+// read off the panel and compared with the phantom's truth; a branch renamed,
+// the measurement file and the section CSV saved and read back; the diameter
+// profile's curves against the truth; and the segmented synthetic CTA
+// measured against the tree it was voxelised from.
+#include <QComboBox>
+#include <QDockWidget>
+#include <QKeyEvent>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLineSeries>
+#include <QLocale>
+#include <QProgressBar>
+#include <QPushButton>
+#include <QTableWidget>
+#include <QTreeWidget>
+#include <cmath>
+#include <fstream>
+#include <glm/geometric.hpp>
+#include <map>
+#include <sstream>
+#include <string>
+
+#include "AneurysmTruth.h"
+#include "DicomTestUtil.h"
+#include "GuiFixture.h"
+#include "SyntheticCta.h"
+#include "common/MeasurementFile.h"
+#include "gui/analysis/AnalysisTask.h"
+#include "gui/analysis/DiameterProfile.h"
+#include "gui/analysis/PlanningState.h"
+#include "gui/panels/AnalysisPanel.h"
+#include "vv/analysis/Stenosis.h"
+#include "vv/demo/AneurysmPhantom.h"
+#include "vv/planning/AorticSizing.h"
+
+namespace vv::test {
+namespace {
+
+using planning::LandmarkKind;
+
+class PlanningGui : public GuiFixture {
+  protected:
+    gui::panels::AnalysisPanel& panel() { return *window_->analysisPanel(); }
+    gui::PlanningState& state() { return *window_->planning(); }
+
+    /// Clicks Find Centrelines and waits for the analysis; checks on the way
+    /// that the GUI thread stayed free (the viewer drew frames while it ran)
+    /// and that progress showed.
+    void findCenterlines() {
+        ASSERT_TRUE(panel().findButton()->isEnabled())
+            << panel().findButton()->toolTip().toStdString();
+        panel().findButton()->click();
+        ASSERT_TRUE(panel().analysing());
+        EXPECT_TRUE(panel().cancelButton()->isEnabled());
+        EXPECT_FALSE(panel().findButton()->isEnabled());
+        EXPECT_TRUE(window_->findChild<QProgressBar*>(QStringLiteral("analysisProgress"))
+                        ->isVisibleTo(&panel()));
+        const quint64 frames = window_->viewer()->framesWithScene();
+        window_->viewer()->update();
+        EXPECT_TRUE(waitUntil([&] {
+            return window_->viewer()->framesWithScene() > frames || !panel().analysing();
+        })) << "no frame while the analysis ran";
+        ASSERT_TRUE(waitUntil([&] { return !panel().analysing(); }, 240000));
+        ASSERT_TRUE(state().hasAnalysis()) << panel().statusLabel()->text().toStdString();
+        EXPECT_TRUE(panel().findButton()->isEnabled());
+        EXPECT_FALSE(panel().cancelButton()->isEnabled());
+        EXPECT_TRUE(window_->diameterProfileDock()->isVisible());
+    }
+
+    /// Chooses the path by the end choosers as a person does.
+    void choosePath(int from, int to) {
+        QComboBox* a = panel().fromEndChooser();
+        QComboBox* b = panel().toEndChooser();
+        a->setCurrentIndex(a->findData(from));
+        emit a->activated(a->currentIndex());
+        b->setCurrentIndex(b->findData(to));
+        emit b->activated(b->currentIndex());
+        ASSERT_EQ(state().pathFrom(), from);
+        ASSERT_EQ(state().pathTo(), to);
+    }
+
+    /// The end whose branch runs towards `direction` from the tree's source.
+    int endToward(const glm::dvec3& point) {
+        const auto& tree = state().analysis()->tree;
+        int best = -1;
+        double bestDistance = 1e300;
+        for (int end = 1; end < static_cast<int>(tree.ends.size()); ++end) {
+            const double d = glm::length(tree.ends[static_cast<std::size_t>(end)].position - point);
+            if (d < bestDistance) {
+                bestDistance = d;
+                best = end;
+            }
+        }
+        return best;
+    }
+
+    /// Places a preset (or free) landmark with the panel's controls at the
+    /// path place nearest `point`.
+    void place(LandmarkKind kind, const glm::dvec3& point, const QString& name = {}) {
+        ASSERT_TRUE(state().moveCursorNear(point))
+            << "not on the path: " << static_cast<int>(kind) << " at " << point.x << "," << point.y
+            << "," << point.z;
+        QComboBox* kinds = panel().landmarkKindChooser();
+        kinds->setCurrentIndex(kinds->findData(static_cast<int>(kind)));
+        panel().freeNameField()->setText(name);
+        const auto before = state().landmarks().size();
+        panel().placeButton()->click();
+        ASSERT_GE(state().landmarks().size(), kind == LandmarkKind::Free ? before + 1 : before);
+    }
+
+    /// The number in the measurement tree's table `title`, row `label`,
+    /// value column `column` (1 = the first value); NaN when blank ("—").
+    double tableValue(const QString& title, const QString& label, int column = 1) {
+        QTreeWidget* tree = panel().measurementTree();
+        for (int t = 0; t < tree->topLevelItemCount(); ++t) {
+            QTreeWidgetItem* table = tree->topLevelItem(t);
+            if (table->text(0) != title) {
+                continue;
+            }
+            for (int r = 1; r < table->childCount(); ++r) {
+                if (table->child(r)->text(0) == label) {
+                    const QString text = table->child(r)->text(column);
+                    if (text == QStringLiteral("\u2014")) {
+                        return std::nan("");
+                    }
+                    // "20.0 mm", "35°": the number before the unit.
+                    QString number;
+                    for (const QChar c : text) {
+                        if (c.isDigit() || c == QLocale().decimalPoint() || c == u'-' ||
+                            c == QLocale().negativeSign()) {
+                            number += c;
+                        } else if (!number.isEmpty()) {
+                            break;
+                        }
+                    }
+                    bool ok = false;
+                    const double value = QLocale().toDouble(number, &ok);
+                    EXPECT_TRUE(ok) << text.toStdString();
+                    return value;
+                }
+            }
+            ADD_FAILURE() << "no row " << label.toStdString() << " in " << title.toStdString();
+            return std::nan("");
+        }
+        ADD_FAILURE() << "no table " << title.toStdString();
+        return std::nan("");
+    }
+};
+
+/// The phantom of AorticSizingTest (open ends as a CFD surface comes).
+demo::AneurysmPhantom phantom() {
+    demo::AneurysmPhantomOptions options;
+    options.targetTriangles = 50'000;
+    options.openEnds = true;
+    return demo::makeAneurysmPhantom(options);
+}
+
+TEST_F(PlanningGui, CancelStopsTheAnalysisAndLeavesNoneBehind) {
+    auto scene = std::make_shared<scene::Scene>();
+    scene->meshes.push_back(phantom().mesh);
+    window_->setScene(scene, QStringLiteral("phantom"));
+    ASSERT_TRUE(waitForFrames());
+    panel().findButton()->click();
+    ASSERT_TRUE(panel().analysing());
+    panel().cancelButton()->click();
+    EXPECT_FALSE(panel().analysing());
+    EXPECT_TRUE(panel().findButton()->isEnabled());
+    EXPECT_FALSE(panel().cancelButton()->isEnabled());
+    EXPECT_EQ(panel().statusLabel()->text(), QStringLiteral("Cancelled."));
+    // A result arriving after the cancel is not taken.
+    QCoreApplication::processEvents();
+    EXPECT_TRUE(waitUntil([&] { return panel().findChildren<gui::AnalysisTask*>().isEmpty(); }));
+    EXPECT_FALSE(state().hasAnalysis());
+    EXPECT_FALSE(window_->diameterProfileDock()->isVisible());
+}
+
+TEST_F(PlanningGui, ThePresetsOnThePhantomFillTheSizingTableWithItsTruth) {
+    const demo::AneurysmPhantom truth = phantom();
+    const auto& o = truth.options;
+    auto scene = std::make_shared<scene::Scene>();
+    scene->meshes.push_back(truth.mesh);
+    window_->setScene(scene, QStringLiteral("phantom"));
+    ASSERT_TRUE(waitForFrames());
+    ASSERT_NO_FATAL_FAILURE(findCenterlines());
+    const auto& tree = state().analysis()->tree;
+    ASSERT_EQ(tree.ends.size(), 3U);
+
+    // The default path runs from the source to the farthest end; the left
+    // iliac's end (iliacDirections[1]) is chosen.
+    const double iliacMm = 40.0;
+    const glm::dvec3 left = truth.bifurcationPoint + iliacMm * truth.iliacDirections[1];
+    const glm::dvec3 right = truth.bifurcationPoint + iliacMm * truth.iliacDirections[0];
+    const int leftEnd =
+        endToward(truth.bifurcationPoint + o.iliacLengthMm * truth.iliacDirections[1]);
+    const int rightEnd =
+        endToward(truth.bifurcationPoint + o.iliacLengthMm * truth.iliacDirections[0]);
+    ASSERT_NE(leftEnd, rightEnd);
+    choosePath(0, leftEnd);
+
+    // The profile: equivalent diameters on the straight trunk as built.
+    const QList<QLineSeries*> equivalent =
+        window_->diameterProfile()->seriesNamed(QStringLiteral("Equivalent"));
+    ASSERT_FALSE(equivalent.isEmpty());
+    std::size_t checked = 0;
+    for (const gui::ProfilePoint& p : state().profile()) {
+        if (p.measured && p.location.branch == 0) {
+            const double z = planning::sampleAt(tree, p.location).position.z;
+            const double built = 2.0 * truth.trunkRadiusAt(z);
+            EXPECT_NEAR(p.equivalentMm, built, 0.02 * built) << "at z " << z;
+            ++checked;
+        }
+    }
+    EXPECT_GT(checked, 200U);
+    std::size_t plotted = 0;
+    for (const QLineSeries* run : equivalent) {
+        plotted += static_cast<std::size_t>(run->count());
+    }
+    EXPECT_EQ(plotted, static_cast<std::size_t>(
+                           std::count_if(state().profile().begin(), state().profile().end(),
+                                         [](const gui::ProfilePoint& p) { return p.measured; })));
+
+    // The cursor: the keyboard steps one section, a click on the vessel moves it.
+    window_->diameterProfile()->setFocus();
+    state().setCursorMm(50.0);
+    const double before = state().cursorMm();
+    QKeyEvent right1(QEvent::KeyPress, Qt::Key_Right, Qt::NoModifier);
+    QCoreApplication::sendEvent(window_->diameterProfile(), &right1);
+    EXPECT_NEAR(state().cursorMm() - before, 0.5, 0.05) << "one section (the 0.5 mm step)";
+
+    // The presets, placed where a planner clicks.
+    const double renalZ = 20.0;
+    const double startZ = o.bulgeCentreMm - o.bulgeLengthMm / 2.0;
+    place(LandmarkKind::LowestRenalArtery, {0, 0, renalZ});
+    place(LandmarkKind::AneurysmStart, {0, 0, startZ});
+    place(LandmarkKind::LargestAneurysmDiameter, {0, 0, o.bulgeCentreMm});
+    place(LandmarkKind::AorticBifurcation, truth.bifurcationPoint);
+    place(LandmarkKind::LeftInternalIliacOrigin, left);
+    choosePath(0, rightEnd);
+    place(LandmarkKind::RightInternalIliacOrigin, right);
+    ASSERT_EQ(state().landmarks().size(), 6U);
+    EXPECT_EQ(panel().landmarkTable()->rowCount(), 6);
+
+    // The sizing table as the panel shows it, against the truth (1 %, 1 degree).
+    const QString diameters = QStringLiteral("Aortic sizing: diameters");
+    const QString lengths = QStringLiteral("Aortic sizing: lengths and angles");
+    for (std::size_t i = 0; i < planning::AorticSizing::kNeckDepthsMm.size(); ++i) {
+        const double depth = planning::AorticSizing::kNeckDepthsMm[i];
+        const QString label = i == 0 ? QStringLiteral("Neck at the lowest renal artery")
+                                     : QStringLiteral("Neck %1 mm below the lowest renal artery")
+                                           .arg(static_cast<int>(depth));
+        const double built = 2.0 * truth.trunkRadiusAt(renalZ + depth);
+        EXPECT_NEAR(tableValue(diameters, label), built, 0.01 * built + 0.05)
+            << label.toStdString();
+    }
+    EXPECT_NEAR(tableValue(diameters, QStringLiteral("Largest aneurysm diameter")),
+                truth.maxDiameterMm, 0.01 * truth.maxDiameterMm + 0.05);
+    const double iliac = 2.0 * o.iliacRadiusMm;
+    EXPECT_NEAR(tableValue(diameters, QStringLiteral("Smallest left iliac (access)"), 2), iliac,
+                0.01 * iliac + 0.05);
+    EXPECT_NEAR(tableValue(diameters, QStringLiteral("Smallest right iliac (access)"), 2), iliac,
+                0.01 * iliac + 0.05);
+    // Lengths: along the phantom's axes between where the landmarks are.
+    const auto along = [&](LandmarkKind from, LandmarkKind to) {
+        const auto* a = planning::findLandmark(state().landmarks(), from);
+        const auto* b = planning::findLandmark(state().landmarks(), to);
+        return truthAlongAxes(truth, tree, a->location, b->location);
+    };
+    const double neck = along(LandmarkKind::LowestRenalArtery, LandmarkKind::AneurysmStart);
+    EXPECT_NEAR(neck, startZ - renalZ, 0.5) << "the landmarks went where they were clicked";
+    EXPECT_NEAR(
+        tableValue(lengths,
+                   QStringLiteral("Neck length (lowest renal artery to start of the aneurysm)")),
+        neck, 0.01 * neck + 0.05);
+    EXPECT_NEAR(tableValue(lengths, QStringLiteral("Angle \u03b1 (suprarenal aorta to neck)")), 0.0,
+                1.0);
+    EXPECT_NEAR(tableValue(lengths, QStringLiteral("Angle \u03b2 (neck to aneurysm)")), 0.0, 1.0);
+    const double toFork = along(LandmarkKind::LowestRenalArtery, LandmarkKind::AorticBifurcation);
+    EXPECT_NEAR(tableValue(lengths, QStringLiteral("Lowest renal artery to aortic bifurcation")),
+                toFork, 0.01 * toFork + 0.05);
+    for (const auto& [side, origin] :
+         {std::pair{QStringLiteral("left"), LandmarkKind::LeftInternalIliacOrigin},
+          std::pair{QStringLiteral("right"), LandmarkKind::RightInternalIliacOrigin}}) {
+        const double fromFork = along(LandmarkKind::AorticBifurcation, origin);
+        EXPECT_NEAR(fromFork, iliacMm, 1.5) << "the landmarks went where they were clicked";
+        EXPECT_NEAR(
+            tableValue(lengths,
+                       QStringLiteral("Aortic bifurcation to %1 internal iliac origin").arg(side)),
+            fromFork, 0.01 * fromFork + 0.05);
+        const double fromRenal = along(LandmarkKind::LowestRenalArtery, origin);
+        EXPECT_NEAR(
+            tableValue(lengths,
+                       QStringLiteral("Lowest renal artery to %1 internal iliac origin").arg(side)),
+            fromRenal, 0.01 * fromRenal + 0.05);
+    }
+
+    // A landmark moved by the keyboard changes the table: the neck grows by one section.
+    state().selectLandmark(1);  // the start of the aneurysm
+    ASSERT_TRUE(state().pathMmOf(state().landmarks()[1].location).has_value());
+    const double neckBefore = tableValue(
+        lengths, QStringLiteral("Neck length (lowest renal artery to start of the aneurysm)"));
+    QKeyEvent ctrlRight(QEvent::KeyPress, Qt::Key_Right, Qt::ControlModifier);
+    QCoreApplication::sendEvent(window_->diameterProfile(), &ctrlRight);
+    EXPECT_NEAR(
+        tableValue(lengths,
+                   QStringLiteral("Neck length (lowest renal artery to start of the aneurysm)")) -
+            neckBefore,
+        0.5, 0.11);
+
+    // The trunk's stenosis: by default against healthy stretches the engine
+    // finds (on an aneurysmal trunk the bulge raises them); against the
+    // neck's diameter at the renal artery and above the bifurcation, as a
+    // planner sets it, the narrowest section is no narrowing at all.
+    const auto trunkStenosis = [&] {
+        for (const gui::PathStenosis& s : state().stenoses()) {
+            if (s.branch == 0) {
+                return s.diameterPercent;
+            }
+        }
+        return std::nan("");
+    };
+    const auto automatic = analysis::gradeStenosis(tree, state().analysis()->sections, 0);
+    ASSERT_TRUE(automatic.has_value());
+    EXPECT_DOUBLE_EQ(trunkStenosis(), automatic->diameterPercent);
+    ASSERT_TRUE(state().moveCursorNear({0, 0, renalZ}));
+    window_->findChild<QPushButton*>(QStringLiteral("referenceProximal"))->click();
+    ASSERT_TRUE(state().moveCursorNear({0, 0, o.trunkLengthMm - 12.0}));
+    window_->findChild<QPushButton*>(QStringLiteral("referenceDistal"))->click();
+    EXPECT_EQ(state().stenosisReference(0).kind, analysis::StenosisReference::Kind::Given);
+    EXPECT_NEAR(trunkStenosis(), 0.0, 2.0) << "the neck against the neck's own diameter";
+    QTableWidget* stenoses = panel().stenosisTable();
+    ASSERT_GE(stenoses->rowCount(), 1);
+    EXPECT_TRUE(stenoses->item(0, 0)->toolTip().contains(QStringLiteral("mm")))
+        << "names its reference";
+
+    // A branch renamed: the table, the end names and the measurement file carry the name.
+    QTableWidgetItem* name = panel().branchTable()->item(0, 0);
+    ASSERT_NE(name, nullptr);
+    name->setText(QStringLiteral("abdominal aorta"));
+    EXPECT_EQ(state().branchName(0), QStringLiteral("abdominal aorta"));
+    EXPECT_TRUE(panel().fromEndChooser()->itemText(0).contains(QStringLiteral("abdominal aorta")));
+    const fs::path dir = panelTestDir() / "planning";
+    fs::create_directories(dir);
+    const ::testing::TestInfo* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    const fs::path file = dir / (std::string(info->name()) + ".json");
+    const gui::ProblemText saved = panel().saveMeasurementsTo(file);
+    ASSERT_TRUE(saved.summary.isEmpty()) << saved.line().toStdString();
+    const app::ReportMeasurements read = app::readMeasurements(file);
+    ASSERT_TRUE(read.sizing.has_value());
+    EXPECT_NEAR(
+        read.sizing->neckLengthMm.value.value(),
+        tableValue(lengths,
+                   QStringLiteral("Neck length (lowest renal artery to start of the aneurysm)")),
+        0.051);
+    ASSERT_FALSE(read.branches.empty());
+    EXPECT_EQ(read.branches[0].name, "abdominal aorta");
+    ASSERT_TRUE(read.branches[0].stenosisDiameterPercent.has_value());
+    EXPECT_NEAR(*read.branches[0].stenosisDiameterPercent, trunkStenosis(), 1e-9)
+        << "the file grades as the panel does";
+    EXPECT_EQ(read.landmarks.size(), 6U);
+
+    // The sections along the path as CSV: one row per profile point, in its order.
+    const fs::path csv = dir / (std::string(info->name()) + ".csv");
+    const gui::ProblemText exported = panel().exportSectionsTo(csv);
+    ASSERT_TRUE(exported.summary.isEmpty()) << exported.line().toStdString();
+    std::ifstream in(csv);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header.rfind("path_mm,branch_id,branch_name,point,", 0), 0U) << header;
+    std::size_t rows = 0;
+    double last = -1.0;
+    for (std::string line; std::getline(in, line);) {
+        const double rowMm = std::stod(line.substr(0, line.find(',')));
+        EXPECT_GE(rowMm, last);
+        last = rowMm;
+        ++rows;
+    }
+    EXPECT_EQ(rows, state().profile().size());
+    EXPECT_NEAR(last, state().path().lengthMm(), 1e-3);
+
+    // A new scene clears the analysis and its views.
+    window_->setScene(makeTubeScene(), QStringLiteral("tube"));
+    EXPECT_FALSE(state().hasAnalysis());
+    EXPECT_FALSE(window_->diameterProfileDock()->isVisible());
+}
+
+TEST_F(PlanningGui, TheSegmentedCtaMeasuresAsTheTreeItWasBuiltFrom) {
+    const auto cta = makeSyntheticCta({96, 96, 80}, 3);
+    const fs::path dir = panelTestDir() / "planning-cta";
+    fs::remove_all(dir);
+    (void)writeCtSeries(dir / "series", cta.volume);
+    openDicomFolder(dir / "series");
+    ASSERT_TRUE(waitForFrames());
+    ASSERT_NO_FATAL_FAILURE(findCenterlines());
+    // The root vessel: from the source, along the root's built centreline.
+    const auto& root = cta.tree.segments.front();
+    const glm::dvec3 a(root.centerline[root.centerline.size() / 4]);
+    const glm::dvec3 b(root.centerline[root.centerline.size() / 2]);
+    // The path from the source to any end passes the root.
+    ASSERT_TRUE(state().moveCursorNear(a)) << "the root's first quarter is not on the default path";
+    place(LandmarkKind::Free, a, QStringLiteral("A"));
+    place(LandmarkKind::Free, b, QStringLiteral("B"));
+    ASSERT_EQ(state().landmarks().size(), 2U);
+    double builtAlong = 0.0;
+    for (std::size_t i = root.centerline.size() / 4; i < root.centerline.size() / 2; ++i) {
+        builtAlong +=
+            glm::length(glm::dvec3(root.centerline[i + 1]) - glm::dvec3(root.centerline[i]));
+    }
+    const glm::dvec3 spacing = cta.volume.spacing();
+    const double voxel = std::max({spacing.x, spacing.y, spacing.z});
+    // A section's wall within half a voxel on each side: the diameter within a voxel.
+    const QString landmarks = QStringLiteral("Landmarks");
+    for (const QString& label : {QStringLiteral("A"), QStringLiteral("B")}) {
+        EXPECT_NEAR(tableValue(landmarks, label), 2.0 * root.radiusMm, voxel)
+            << label.toStdString();
+    }
+    // The length between them along the centreline: each end within a voxel.
+    EXPECT_NEAR(
+        tableValue(QStringLiteral("Lengths between landmarks"), QStringLiteral("A \u2013 B")),
+        builtAlong, 2.0 * voxel);
+}
+
+}  // namespace
+}  // namespace vv::test
