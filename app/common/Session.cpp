@@ -200,6 +200,9 @@ QByteArray sessionToJson(const Session& s, const std::filesystem::path& file) {
             QJsonObject{{QStringLiteral("points"),
                          QJsonArray{array3(s.measurement->at(0)), array3(s.measurement->at(1))}}});
     }
+    if (s.planning) {
+        root.insert(QStringLiteral("planning"), detail::planningToJson(*s.planning));
+    }
     return QJsonDocument(root).toJson(QJsonDocument::Indented);
 }
 
@@ -252,6 +255,9 @@ Session sessionFromJson(const QByteArray& json, const std::filesystem::path& fil
     }
     if (const QJsonValue m = root.value(QLatin1String("measurement")); !m.isUndefined()) {
         s.measurement = readMeasurement(r, m);
+    }
+    if (const QJsonValue p = root.value(QLatin1String("planning")); !p.isUndefined()) {
+        s.planning = detail::readPlanning(r, p);
     }
     return s;
 }

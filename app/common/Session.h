@@ -7,10 +7,15 @@
 #include <filesystem>
 #include <glm/glm.hpp>
 #include <glm/gtc/quaternion.hpp>
+#include <map>
 #include <optional>
+#include <string>
+#include <vector>
 
 #include "common/DisplaySettings.h"
+#include "vv/analysis/Stenosis.h"
 #include "vv/core/Progress.h"
+#include "vv/planning/Landmarks.h"
 #include "vv/render/Camera.h"
 #include "vv/scene/Mesh.h"
 #include "vv/segmentation/SceneSource.h"
@@ -51,6 +56,13 @@ namespace vv::app {
 ///                   "coronal": { ... }, "sagittal": { ... },
 ///                   "cursor": [x, y, z] },                      // optional
 ///       "measurement": { "points": [[x, y, z], [x, y, z]] },     // optional
+///       "planning": { "path": { "from": end, "to": end },        // optional
+///                     "cursor_mm": mm, "source": [x, y, z],     // source, targets
+///                     "targets": [[x, y, z], ...],              //   optional
+///                     "branch_names": [ { "branch", "name" } ],
+///                     "landmarks": [ { "name", "kind", "branch", "abscissa_mm" } ],
+///                     "stenosis_references": [ { "branch", "kind": "given",
+///                                                "proximal_mm", "distal_mm" } ] },
 ///       "layout": "<base64 QMainWindow::saveState>" }            // optional
 ///
 /// The keys below "view" are the settings' keys (SettingsSchema.h), which
@@ -93,6 +105,22 @@ struct SliceSessionState {
     std::optional<glm::dvec3> cursor;     ///< the linked cursor, LPS mm
 };
 
+/// The planning work of a session (the "planning" object, issue 35): the
+/// centrelines were found (with the given end points, if any), and on them
+/// the chosen path, the cursor, branch names, landmarks and stenosis
+/// references. The analysis is found again when the session opens (the same
+/// surface and end points give the same tree).
+struct PlanningSessionState {
+    std::optional<glm::dvec3> source;  ///< a given source point; nullopt: automatic ends
+    std::vector<glm::dvec3> targets;   ///< given target points
+    int pathFrom = 0;                  ///< CenterlineTree::ends indices
+    int pathTo = 0;
+    double cursorMm = 0.0;  ///< along the path
+    std::map<int, std::string> branchNames;
+    std::vector<planning::Landmark> landmarks;
+    std::map<int, analysis::StenosisReference> stenosisReferences;
+};
+
 struct Session : DisplaySettings {
     QStringList files;  ///< absolute paths once loaded
     glm::vec3 cameraTarget{0.0F};
@@ -123,6 +151,9 @@ struct Session : DisplaySettings {
     /// same measurement. Absent when none was shown (and in older sessions).
     /// The command line ignores it (it is still checked).
     std::optional<std::array<glm::vec3, 2>> measurement;
+    /// The planning work (centrelines found); absent when none was done (and
+    /// in older sessions). The command line ignores it (it is still checked).
+    std::optional<PlanningSessionState> planning;
 };
 
 /// The version saveSession() writes.

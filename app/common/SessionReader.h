@@ -87,6 +87,10 @@ void readView(const SessionReader& reader, const QJsonObject& view, DisplaySetti
 
 /// Reads the "slices" object `value`; fails naming the field ("slices.axial.zoom").
 [[nodiscard]] SliceSessionState readSlices(const SessionReader& reader, const QJsonValue& value);
+/// The "planning" object (SessionPlanning.cpp).
+[[nodiscard]] QJsonObject planningToJson(const PlanningSessionState& state);
+[[nodiscard]] PlanningSessionState readPlanning(const SessionReader& reader,
+                                                const QJsonValue& value);
 
 /// Brings `root` (any supported version) to the current version, one step at a time.
 [[nodiscard]] QJsonObject migrateSession(QJsonObject root, const SessionReader& reader);

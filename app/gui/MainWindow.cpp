@@ -206,6 +206,12 @@ void MainWindow::connectDocument() {
             QTimer::singleShot(
                 0, slices_, [this, state = *session.slices] { slices_->applySessionState(state); });
         }
+        if (session.planning) {
+            // The centrelines are found again from the scene now shown.
+            QTimer::singleShot(0, analysisPanel_, [this, state = *session.planning] {
+                analysisPanel_->restoreSession(state);
+            });
+        }
     });
     connect(document_, &DocumentController::sceneShown, this, &MainWindow::sceneWasShown);
     connect(document_, &DocumentController::sessionApplied, this, &MainWindow::sessionApplied);
@@ -795,6 +801,7 @@ bool MainWindow::saveSessionTo(const QString& path) {
     view.layout = saveState(kLayoutVersion);
     view.slices = slices_->sessionState();
     view.measurement = measure_->completePoints();
+    view.planning = analysisPanel_->sessionState();
     if (!document_->saveSession(path, std::move(view))) {
         return false;
     }

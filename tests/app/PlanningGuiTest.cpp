@@ -19,6 +19,7 @@
 #include <QTableWidget>
 #include <QTreeWidget>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <glm/geometric.hpp>
 #include <map>
@@ -30,12 +31,15 @@
 #include "GuiFixture.h"
 #include "SyntheticCta.h"
 #include "common/MeasurementFile.h"
+#include "common/Session.h"
 #include "gui/analysis/AnalysisTask.h"
 #include "gui/analysis/DiameterProfile.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/AnalysisPanel.h"
 #include "vv/analysis/Stenosis.h"
+#include "vv/core/Error.h"
 #include "vv/demo/AneurysmPhantom.h"
+#include "vv/meshio/MeshWriter.h"
 #include "vv/planning/AorticSizing.h"
 
 namespace vv::test {
@@ -422,6 +426,92 @@ TEST_F(PlanningGui, TheSegmentedCtaMeasuresAsTheTreeItWasBuiltFrom) {
     EXPECT_NEAR(
         tableValue(QStringLiteral("Lengths between landmarks"), QStringLiteral("A \u2013 B")),
         builtAlong, 2.0 * voxel);
+}
+
+TEST_F(PlanningGui, ASessionReopensTheCentrelinesPathLandmarksAndCursor) {
+    const demo::AneurysmPhantom truth = phantom();
+    const fs::path dir = panelTestDir() / "planning-session";
+    fs::create_directories(dir);
+    const fs::path surface = dir / "aorta.vtp";
+    meshio::writeMeshFile(truth.mesh, surface);
+    window_->openFiles({QString::fromStdString(surface.string())});
+    ASSERT_TRUE(waitUntil([&] { return window_->viewer()->scene() != nullptr; }));
+    ASSERT_TRUE(waitForFrames());
+    ASSERT_NO_FATAL_FAILURE(findCenterlines());
+    const int last = static_cast<int>(state().analysis()->tree.ends.size()) - 1;
+    choosePath(last, 0);  // against the default direction
+    place(LandmarkKind::LowestRenalArtery, {0, 0, 20.0});
+    place(LandmarkKind::Free, {0, 0, 100.0}, QStringLiteral("Thrombus begins"));
+    state().renameBranch(0, QStringLiteral("aorta"));
+    ASSERT_TRUE(state().moveCursorNear({0, 0, 30.0}));
+    ASSERT_TRUE(state().setReferenceAtCursor(true));
+    ASSERT_TRUE(state().moveCursorNear({0, 0, 60.0}));
+    const auto before = state().sessionState();
+    ASSERT_TRUE(before.has_value());
+    const fs::path session = dir / "planning.vvs";
+    ASSERT_TRUE(window_->saveSessionTo(QString::fromStdString(session.string())));
+
+    ASSERT_TRUE(openSessionInNewWindow(QString::fromStdString(session.string())));
+    ASSERT_TRUE(waitUntil([&] { return state().hasAnalysis() && !panel().analysing(); }, 240000))
+        << panel().statusLabel()->text().toStdString();
+    const auto after = state().sessionState();
+    ASSERT_TRUE(after.has_value());
+    EXPECT_EQ(after->pathFrom, last);
+    EXPECT_EQ(after->pathTo, 0);
+    EXPECT_NEAR(after->cursorMm, before->cursorMm, 1e-9);
+    EXPECT_EQ(after->branchNames, before->branchNames);
+    ASSERT_EQ(after->landmarks.size(), 2U);
+    for (std::size_t i = 0; i < 2; ++i) {
+        EXPECT_EQ(after->landmarks[i].name, before->landmarks[i].name);
+        EXPECT_EQ(after->landmarks[i].kind, before->landmarks[i].kind);
+        EXPECT_EQ(after->landmarks[i].location.branch, before->landmarks[i].location.branch);
+        EXPECT_NEAR(after->landmarks[i].location.abscissaMm,
+                    before->landmarks[i].location.abscissaMm, 1e-9);
+    }
+    ASSERT_EQ(after->stenosisReferences.count(0), 1U);
+    EXPECT_NEAR(after->stenosisReferences.at(0).proximalMm,
+                before->stenosisReferences.at(0).proximalMm, 1e-9);
+    // What the person sees: the panel's rows and the profile's dock.
+    EXPECT_EQ(panel().landmarkTable()->rowCount(), 2);
+    EXPECT_EQ(panel().branchTable()->item(0, 0)->text(), QStringLiteral("aorta"));
+    EXPECT_TRUE(window_->diameterProfileDock()->isVisible());
+}
+
+TEST(PlanningSession, ABadPlanningObjectIsRefusedNamingItsField) {
+    app::Session s;
+    s.files << QStringLiteral("/data/aorta.vtp");
+    app::PlanningSessionState p;
+    p.pathTo = 2;
+    p.landmarks.push_back({"Lowest renal artery", LandmarkKind::LowestRenalArtery, {0, 12.5}});
+    p.branchNames[1] = "left iliac";
+    s.planning = p;
+    const fs::path file = "/tmp/x.vvs";
+    const QByteArray json = app::sessionToJson(s, file);
+    const app::Session back = app::sessionFromJson(json, file);
+    ASSERT_TRUE(back.planning.has_value());
+    EXPECT_EQ(back.planning->pathTo, 2);
+    EXPECT_EQ(back.planning->landmarks.at(0).kind, LandmarkKind::LowestRenalArtery);
+    EXPECT_EQ(back.planning->branchNames.at(1), "left iliac");
+    const std::pair<const char*, const char*> broken[] = {
+        {"\"kind\": \"lowest_renal_artery\"", "\"kind\": \"renal\""},
+        {"\"cursor_mm\": 0", "\"cursor_mm\": -5"},
+        {"\"to\": 2", "\"to\": \"two\""},
+    };
+    const std::string fields[] = {"planning.landmarks[0].kind", "planning.cursor_mm",
+                                  "planning.path.to"};
+    for (std::size_t i = 0; i < std::size(broken); ++i) {
+        std::string text = json.toStdString();
+        const auto at = text.find(broken[i].first);
+        ASSERT_NE(at, std::string::npos) << broken[i].first << " in " << text;
+        text.replace(at, std::strlen(broken[i].first), broken[i].second);
+        try {
+            (void)app::sessionFromJson(QByteArray::fromStdString(text), file);
+            ADD_FAILURE() << "accepted " << broken[i].second;
+        } catch (const FormatError& e) {
+            EXPECT_NE(std::string(e.what()).find(fields[i]), std::string::npos) << e.what();
+            EXPECT_NE(std::string(e.what()).find("x.vvs"), std::string::npos) << e.what();
+        }
+    }
 }
 
 }  // namespace

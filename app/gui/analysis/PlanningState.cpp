@@ -387,6 +387,85 @@ void PlanningState::stepSelectedLandmark(int steps) {
     moveLandmark(selected_, profile_[static_cast<std::size_t>(std::clamp(at, 0LL, last))].pathMm);
 }
 
+void PlanningState::setGivenEnds(std::optional<glm::dvec3> source,
+                                 std::vector<glm::dvec3> targets) {
+    source_ = source;
+    targets_ = std::move(targets);
+}
+
+analysis::CenterlineOptions PlanningState::centerlineOptions() const {
+    analysis::CenterlineOptions options;
+    options.source = source_;
+    options.targets = targets_;
+    return options;
+}
+
+std::optional<app::PlanningSessionState> PlanningState::sessionState() const {
+    if (!analysis_) {
+        return std::nullopt;
+    }
+    app::PlanningSessionState s;
+    s.source = source_;
+    s.targets = targets_;
+    s.pathFrom = from_;
+    s.pathTo = to_;
+    s.cursorMm = cursorMm_;
+    s.branchNames = names_;
+    s.landmarks = landmarks_;
+    s.stenosisReferences = references_;
+    return s;
+}
+
+int PlanningState::applySessionState(const app::PlanningSessionState& saved) {
+    if (!analysis_) {
+        return 0;
+    }
+    const auto& tree = analysis_->tree;
+    const auto branches = static_cast<int>(tree.branches.size());
+    int dropped = 0;
+    names_.clear();
+    for (const auto& [id, name] : saved.branchNames) {
+        if (id < branches) {
+            names_[id] = name;
+        } else {
+            ++dropped;
+        }
+    }
+    references_.clear();
+    for (const auto& [id, reference] : saved.stenosisReferences) {
+        bool fits = false;
+        try {
+            fits = id < branches &&
+                   analysis::gradeStenosis(tree, analysis_->sections, id, reference).has_value();
+        } catch (const InvalidArgumentError&) {
+            fits = false;
+        }
+        if (fits) {
+            references_[id] = reference;
+        } else {
+            ++dropped;
+        }
+    }
+    landmarks_.clear();
+    selected_ = -1;
+    for (const planning::Landmark& l : saved.landmarks) {
+        if (l.location.branch < branches) {
+            landmarks_.push_back({l.name, l.kind, planning::clampedLocation(tree, l.location)});
+        } else {
+            ++dropped;
+        }
+    }
+    if (!choosePath(saved.pathFrom, saved.pathTo)) {
+        ++dropped;  // the default path stays
+    }
+    emit branchNamesChanged();
+    emit stenosesChanged();
+    emit landmarksChanged();
+    emit landmarkSelected(selected_);
+    setCursorMm(saved.cursorMm);
+    return dropped;
+}
+
 app::MeasurementInput PlanningState::measurementInput() const {
     app::MeasurementInput input;
     input.analysis = analysis_.get();

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/MeasurementFile.h"
+#include "common/Session.h"
 #include "vv/analysis/Sections.h"
 #include "vv/analysis/Stenosis.h"
 #include "vv/planning/Landmarks.h"
@@ -148,6 +149,22 @@ class PlanningState : public QObject {
     /// (the keyboard's step); nothing without a selection.
     void stepSelectedLandmark(int steps);
 
+    // Sessions ----------------------------------------------------------------
+    /// The end points the analysis is asked to use (nullopt source: the
+    /// automatic ends); sessions keep them.
+    [[nodiscard]] const std::optional<glm::dvec3>& givenSource() const noexcept { return source_; }
+    [[nodiscard]] const std::vector<glm::dvec3>& givenTargets() const noexcept { return targets_; }
+    void setGivenEnds(std::optional<glm::dvec3> source, std::vector<glm::dvec3> targets);
+    /// The analysis's options: the defaults with the given ends.
+    [[nodiscard]] analysis::CenterlineOptions centerlineOptions() const;
+    /// What a session keeps of the planning work; nullopt without an analysis.
+    [[nodiscard]] std::optional<app::PlanningSessionState> sessionState() const;
+    /// Restores names, references, path, landmarks and cursor onto the
+    /// current analysis (found again from the session's surface and ends).
+    /// What does not fit the tree (a branch or an end it lacks) is left out;
+    /// the returned count says how many items were. Emits the signals of what changed.
+    int applySessionState(const app::PlanningSessionState& saved);
+
     // Measurements ------------------------------------------------------------
     /// What a measurement file is written from (common/MeasurementFile.h);
     /// its `analysis` points into this state: use it while the state holds it.
@@ -176,6 +193,8 @@ class PlanningState : public QObject {
     double cursorMm_ = 0.0;
     std::vector<planning::Landmark> landmarks_;
     int selected_ = -1;
+    std::optional<glm::dvec3> source_;
+    std::vector<glm::dvec3> targets_;
 };
 
 }  // namespace vv::gui

@@ -310,6 +310,8 @@ void AnalysisPanel::buildLandmarkRows() {
 
 void AnalysisPanel::sceneChanged() {
     cancelAnalysis();
+    pending_.reset();
+    state_->setGivenEnds(std::nullopt, {});
     state_->setAnalysis(nullptr);
     const auto& scene = viewer_->scene();
     const bool surface = scene != nullptr && !scene->meshes.empty();
@@ -323,8 +325,8 @@ void AnalysisPanel::findCenterlines() {
     if (scene == nullptr || scene->meshes.empty()) {
         return;
     }
-    cancelAnalysis();
-    auto* task = new AnalysisTask(scene, analysis::CenterlineOptions{}, this);
+    stopTask();  // a restored session's pending state stays for the new run
+    auto* task = new AnalysisTask(scene, state_->centerlineOptions(), this);
     task_ = task;
     connect(task, &AnalysisTask::progressChanged, this,
             [this, task](double fraction, const QString& stage) {
@@ -337,6 +339,16 @@ void AnalysisPanel::findCenterlines() {
             [this, task](const std::shared_ptr<const analysis::VesselAnalysis>& analysis) {
                 if (task_ == task) {
                     state_->setAnalysis(analysis);
+                    if (pending_) {
+                        const int dropped = state_->applySessionState(*pending_);
+                        pending_.reset();
+                        if (dropped > 0) {
+                            emit statusMessage(
+                                tr("%1 saved item(s) do not fit the centrelines found and were "
+                                   "left out")
+                                    .arg(dropped));
+                        }
+                    }
                 }
             });
     connect(task, &AnalysisTask::failed, this, [this, task](const ProblemText& problem) {
@@ -365,7 +377,25 @@ void AnalysisPanel::findCenterlines() {
     task->start();
 }
 
+void AnalysisPanel::restoreSession(const app::PlanningSessionState& saved) {
+    state_->setGivenEnds(saved.source, saved.targets);
+    pending_ = saved;
+    findCenterlines();
+}
+
+std::optional<app::PlanningSessionState> AnalysisPanel::sessionState() const {
+    if (pending_ && task_ != nullptr) {
+        return pending_;
+    }
+    return state_->sessionState();
+}
+
 void AnalysisPanel::cancelAnalysis() {
+    pending_.reset();
+    stopTask();
+}
+
+void AnalysisPanel::stopTask() {
     if (task_ != nullptr) {
         AnalysisTask* task = task_;
         task_ = nullptr;  // its signals no longer count

@@ -6,7 +6,9 @@
 #include <QString>
 #include <QWidget>
 #include <filesystem>
+#include <optional>
 
+#include "common/Session.h"
 #include "gui/EngineTexts.h"
 
 class QComboBox;
@@ -67,6 +69,14 @@ class AnalysisPanel : public QWidget {
     /// the state, enables "Find centrelines" when the scene has a surface.
     void sceneChanged();
 
+    /// A session's planning work: finds the centrelines again (with its end
+    /// points) and then restores its path, names, landmarks, references and
+    /// cursor (PlanningState::applySessionState).
+    void restoreSession(const app::PlanningSessionState& saved);
+    /// What a session saves now: the state's, or, while a restored session's
+    /// analysis runs, the session's own.
+    [[nodiscard]] std::optional<app::PlanningSessionState> sessionState() const;
+
     /// Writes the measurement file to `path` (atomically). Returns the
     /// problem, empty on success.
     [[nodiscard]] ProblemText saveMeasurementsTo(const std::filesystem::path& path);
@@ -111,12 +121,15 @@ class AnalysisPanel : public QWidget {
     void showLandmarks();
     void showMeasurements();
     void analysisFinished();
+    /// Stops a running analysis (its result is not taken).
+    void stopTask();
     void saveMeasurements();
     void exportSections();
 
     ViewerWidget* viewer_;
     PlanningState* state_;
     QPointer<AnalysisTask> task_;
+    std::optional<app::PlanningSessionState> pending_;  ///< restored once its analysis arrives
     QPushButton* find_ = nullptr;
     QPushButton* cancel_ = nullptr;
     QProgressBar* progress_ = nullptr;
