@@ -11,6 +11,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
+#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -27,6 +28,7 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QUrl>
+#include <QVBoxLayout>
 #include <cmath>
 #include <utility>
 
@@ -41,8 +43,11 @@
 #include "gui/ReportDialog.h"
 #include "gui/ScreenshotMode.h"
 #include "gui/SeriesDialog.h"
+#include "gui/SliceCursor.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
+#include "gui/analysis/CrossSectionView.h"
+#include "gui/analysis/CurvedReformation.h"
 #include "gui/analysis/DiameterProfile.h"
 #include "gui/analysis/PlanningOverlay.h"
 #include "gui/analysis/PlanningState.h"
@@ -225,6 +230,9 @@ void MainWindow::connectDocument() {
                 segmentationPanel_->showCutOff(document_->loadedReport().cutOff,
                                                document_->loadedReport().intensityCorrected);
                 slices_->setVolume(volume, document_->labelMap());
+                reformation_->setVolume(volume);
+                reformation_->setVisible(volume != nullptr);
+                crossSection_->setVolume(volume);
             });
     connect(document_, &DocumentController::recentFilesChanged, this,
             &MainWindow::rebuildRecentMenu);
@@ -482,10 +490,44 @@ void MainWindow::buildDocks() {
 void MainWindow::buildPlanning() {
     // The diameter profile under the views: shown when an analysis arrives
     // (not one of docks_: Reset Layout does not show it without one).
-    profile_ = new DiameterProfile(planning_, this);
-    profileDock_ = new QDockWidget(tr("Diameter Profile"), this);
+    // Under the views, along the path: the curved reformation (image series
+    // only) over the diameter profile, sharing its distances, and the
+    // cross-section at the cursor beside them.
+    auto* along = new QWidget(this);
+    profile_ = new DiameterProfile(planning_, along);
+    reformation_ = new CurvedReformation(planning_, along);
+    reformation_->hide();
+    crossSection_ = new CrossSectionView(planning_, along);
+    auto* column = new QVBoxLayout;
+    column->addWidget(reformation_, 2);
+    column->addWidget(profile_, 3);
+    auto* row = new QHBoxLayout(along);
+    row->setContentsMargins(2, 2, 2, 2);
+    row->addLayout(column, 1);
+    row->addWidget(crossSection_);
+    profileDock_ = new QDockWidget(tr("Along the Path"), this);
     profileDock_->setObjectName(QStringLiteral("diameterProfileDock"));
-    profileDock_->setWidget(profile_);
+    profileDock_->setWidget(along);
+    connect(profile_, &DiameterProfile::plotExtentChanged, reformation_,
+            &CurvedReformation::setHorizontalExtent);
+    connect(slices_, &SliceWorkspace::windowChanged, this, [this](const slices::Window& window) {
+        reformation_->setWindow(window);
+        crossSection_->setWindow(window);
+    });
+    // The cursor in the slice views follows the path's cursor.
+    connect(planning_, &PlanningState::cursorMoved, this, [this] {
+        if (planning_->hasAnalysis() && slices_->volume() != nullptr) {
+            slices_->cursor()->setPoint(
+                planning::sampleAt(planning_->analysis()->tree, planning_->cursorLocation())
+                    .position);
+        }
+    });
+    // A click on a slice moves the cursor while "Pick on Vessel" is on.
+    connect(slices_, &SliceWorkspace::sliceClicked, this, [this](const glm::dvec3& world) {
+        if (analysisPanel_->pickButton()->isChecked()) {
+            planning_->moveCursorNear(world);
+        }
+    });
     addDockWidget(Qt::BottomDockWidgetArea, profileDock_);
     profileDock_->hide();
     planningOverlay_ = new PlanningOverlay(viewer_, planning_);

@@ -37,6 +37,8 @@ struct DicomScanResult;
 namespace vv::gui {
 
 class DicomMenu;
+class CrossSectionView;
+class CurvedReformation;
 class DiameterProfile;
 class ListenerService;
 class PlanningOverlay;
@@ -192,9 +194,13 @@ class MainWindow : public QMainWindow {
     /// the planning work it shows (issue 35).
     [[nodiscard]] panels::AnalysisPanel* analysisPanel() const noexcept { return analysisPanel_; }
     [[nodiscard]] PlanningState* planning() const noexcept { return planning_; }
-    /// The diameter profile along the chosen path, in a dock under the views
-    /// ("diameterProfileDock"), shown when an analysis arrives.
+    /// The views along the chosen path, in a dock under the views
+    /// ("diameterProfileDock", "Along the Path"), shown when an analysis
+    /// arrives: the diameter profile, the curved reformation over it (scenes
+    /// from an image series), the cross-section at the cursor beside them.
     [[nodiscard]] DiameterProfile* diameterProfile() const noexcept { return profile_; }
+    [[nodiscard]] CurvedReformation* curvedReformation() const noexcept { return reformation_; }
+    [[nodiscard]] CrossSectionView* crossSection() const noexcept { return crossSection_; }
     [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept { return profileDock_; }
     /// The side panel (scrolls vertically; its sections hold the panels).
     [[nodiscard]] panels::SidePanel* sidePanel() const noexcept { return sidePanel_; }
@@ -322,6 +328,8 @@ class MainWindow : public QMainWindow {
     PlanningState* planning_ = nullptr;
     panels::AnalysisPanel* analysisPanel_ = nullptr;
     DiameterProfile* profile_ = nullptr;
+    CurvedReformation* reformation_ = nullptr;
+    CrossSectionView* crossSection_ = nullptr;
     QDockWidget* profileDock_ = nullptr;
     PlanningOverlay* planningOverlay_ = nullptr;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored

@@ -333,6 +333,7 @@ void SliceWorkspace::applyPreset(std::size_t index) {
 
 void SliceWorkspace::setWindow(const slices::Window& window) {
     window_ = window;
+    emit windowChanged(window_);
     for (SliceView* view : views_) {
         if (view->window().center != window.center || view->window().width != window.width) {
             view->setWindow(window);

@@ -116,6 +116,9 @@ class SliceWorkspace : public QWidget {
   signals:
     /// The layout on screen changed.
     void layoutChanged();
+    /// The window / level of the slice views changed (the cross-section and
+    /// the curved reformation follow it).
+    void windowChanged(const vv::slices::Window& window);
     /// A left click without dragging on a slice at `world` (LPS mm): the
     /// cursor moved there; the Segmentation panel takes it as a seed while
     /// it picks one.

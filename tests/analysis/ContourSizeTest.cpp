@@ -57,6 +57,18 @@ TEST(ContourSize, AnEllipsesFeretWidthsAreItsAxes) {
     const ContourSize size = measureContour(ellipse(10.0, 4.0, 3000, 0.7));
     EXPECT_NEAR(size.minFeret, 8.0, 1e-3);
     EXPECT_NEAR(size.maxFeret, 20.0, 1e-3);
+    // The calipers lie along the axes, through the centre (30, -12): the
+    // major one turned by 0.7, the minor one across it.
+    const glm::dvec2 centre(30.0, -12.0);
+    const glm::dvec2 major(std::cos(0.7), std::sin(0.7));
+    const glm::dvec2 maxMid = 0.5 * (size.maxFrom + size.maxTo);
+    const glm::dvec2 minMid = 0.5 * (size.minFrom + size.minTo);
+    EXPECT_NEAR(glm::length(size.maxTo - size.maxFrom), size.maxFeret, 1e-9);
+    EXPECT_NEAR(glm::length(size.minTo - size.minFrom), size.minFeret, 1e-6);
+    EXPECT_NEAR(glm::length(maxMid - centre), 0.0, 0.02);
+    EXPECT_NEAR(glm::length(minMid - centre), 0.0, 0.02);
+    EXPECT_NEAR(std::abs(glm::dot(glm::normalize(size.maxTo - size.maxFrom), major)), 1.0, 1e-4);
+    EXPECT_NEAR(std::abs(glm::dot(glm::normalize(size.minTo - size.minFrom), major)), 0.0, 1e-2);
 }
 
 TEST(ContourSize, ASquaresFeretWidthsAreItsSideAndDiagonal) {
@@ -90,6 +102,15 @@ TEST(ContourSize, RandomPolygonsWidthsAreTheBruteForceOnes) {
         EXPECT_NEAR(size.maxFeret, largest, 1e-4) << polygon;
         EXPECT_NEAR(size.minFeret, smallest, 2e-3 * largest) << polygon;
         EXPECT_LE(size.minFeret, smallest + 1e-4) << polygon;
+        // The largest caliper joins two of the polygon's points; the smallest
+        // runs from one of them, as long as the width.
+        const auto isVertex = [&contour](const glm::dvec2& p) {
+            return std::any_of(contour.begin(), contour.end(),
+                               [&p](const glm::dvec2& q) { return glm::length(p - q) < 1e-4; });
+        };
+        EXPECT_TRUE(isVertex(size.maxFrom) && isVertex(size.maxTo)) << polygon;
+        EXPECT_TRUE(isVertex(size.minFrom)) << polygon;
+        EXPECT_NEAR(glm::length(size.minTo - size.minFrom), size.minFeret, 1e-4) << polygon;
     }
 }
 

@@ -16,8 +16,10 @@
 #include <QLocale>
 #include <QProgressBar>
 #include <QPushButton>
+#include <QSlider>
 #include <QTableWidget>
 #include <QTreeWidget>
+#include <QWheelEvent>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -25,6 +27,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "AneurysmTruth.h"
 #include "DicomTestUtil.h"
@@ -33,6 +36,8 @@
 #include "common/MeasurementFile.h"
 #include "common/Session.h"
 #include "gui/analysis/AnalysisTask.h"
+#include "gui/analysis/CrossSectionView.h"
+#include "gui/analysis/CurvedReformation.h"
 #include "gui/analysis/DiameterProfile.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/AnalysisPanel.h"
@@ -41,6 +46,7 @@
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/meshio/MeshWriter.h"
 #include "vv/planning/AorticSizing.h"
+#include "vv/report/PdfReport.h"
 
 namespace vv::test {
 namespace {
@@ -235,6 +241,15 @@ TEST_F(PlanningGui, ThePresetsOnThePhantomFillTheSizingTableWithItsTruth) {
     QKeyEvent right1(QEvent::KeyPress, Qt::Key_Right, Qt::NoModifier);
     QCoreApplication::sendEvent(window_->diameterProfile(), &right1);
     EXPECT_NEAR(state().cursorMm() - before, 0.5, 0.05) << "one section (the 0.5 mm step)";
+
+    // The cross-section of a mesh: the contour alone, its calipers the
+    // widest section's 40 mm at the bulge's centre.
+    ASSERT_TRUE(state().moveCursorNear({0, 0, o.bulgeCentreMm}));
+    const auto& widest = window_->crossSection()->section();
+    ASSERT_TRUE(widest.has_value());
+    EXPECT_TRUE(window_->crossSection()->image().isNull());
+    EXPECT_NEAR(widest->maxDiameterMm, truth.maxDiameterMm, 0.01 * truth.maxDiameterMm);
+    EXPECT_FALSE(window_->curvedReformation()->isVisible()) << "no image series";
 
     // The presets, placed where a planner clicks.
     const double renalZ = 20.0;

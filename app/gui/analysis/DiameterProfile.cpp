@@ -118,6 +118,9 @@ void DiameterProfile::rebuild() {
         }
     }
     area_->setRange(0.0, areaTop * 1.1);
+    for (QValueAxis* axis : {along_, diameter_, area_}) {
+        axis->applyNiceNumbers();  // ticks at round values
+    }
     c->addAxis(along_, Qt::AlignBottom);
     c->addAxis(diameter_, Qt::AlignLeft);
     c->addAxis(area_, Qt::AlignRight);
@@ -248,6 +251,9 @@ void DiameterProfile::placeLabels() {
         return;
     }
     const QRectF plot = chart()->plotArea();
+    emit plotExtentChanged(mapFromScene(chart()->mapToScene(plot.topLeft())).x(),
+                           mapFromScene(chart()->mapToScene(plot.topRight())).x(), along_->min(),
+                           along_->max());
     // Landmark names stand at the top of the plot, stacked where they would overlap.
     QList<QRectF> placed;
     for (QGraphicsSimpleTextItem* label : labels_) {

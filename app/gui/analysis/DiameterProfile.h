@@ -52,6 +52,10 @@ class DiameterProfile : public QChartView {
     void hovered(double pathMm);
     /// Insert: place the chosen landmark at the cursor.
     void placeRequested();
+    /// The plot area's horizontal extent in this widget's x, and the path
+    /// distances (mm) at its two sides (for views that line up with it: the
+    /// curved reformation above it).
+    void plotExtentChanged(double left, double right, double fromMm, double toMm);
 
   protected:
     void mousePressEvent(QMouseEvent* event) override;

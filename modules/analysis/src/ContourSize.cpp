@@ -29,10 +29,19 @@ std::vector<cv::Point2f> toCvFloat(const std::vector<glm::dvec2>& contour,
 /// way is antipodal to the edge's first corner, and the largest width is
 /// the largest distance between an antipodal pair. O(n), where the
 /// sections of a 1M-triangle surface have hulls of a thousand points.
-std::pair<double, double> feretWidths(const std::vector<cv::Point2f>& hull) {
+/// Also where they lie: the largest width's two vertices; the smallest
+/// width's far vertex and its foot on the edge's line.
+struct Calipers {
+    double smallest = 0.0;
+    double largest = 0.0;
+    cv::Point2d smallestFrom, smallestTo, largestFrom, largestTo;
+};
+
+Calipers feretWidths(const std::vector<cv::Point2f>& hull) {
     const std::size_t n = hull.size();
+    Calipers c;
     if (n < 2) {
-        return {0.0, 0.0};
+        return c;
     }
     const auto at = [&](std::size_t i) { return cv::Point2d(hull[i % n]); };
     const auto squared = [](const cv::Point2d& d) { return d.x * d.x + d.y * d.y; };
@@ -44,12 +53,20 @@ std::pair<double, double> feretWidths(const std::vector<cv::Point2f>& hull) {
         return std::abs(e.x * d.y - e.y * d.x);
     };
     double largest2 = 0.0;
+    const auto pair = [&](const cv::Point2d& p, const cv::Point2d& q) {
+        const double d2 = squared(q - p);
+        if (d2 > largest2) {
+            largest2 = d2;
+            c.largestFrom = p;
+            c.largestTo = q;
+        }
+    };
     double smallest = std::numeric_limits<double>::max();
     std::size_t j = 1;
     for (std::size_t i = 0; i < n; ++i) {
         const cv::Point2d a = at(i);
         const cv::Point2d b = at(i + 1);
-        largest2 = std::max(largest2, squared(at(j) - a));
+        pair(a, at(j));
         // On to the farthest vertex from this edge's line; at most once
         // round (a plateau, where an edge is parallel to this one, is
         // crossed: its far end is antipodal too).
@@ -57,15 +74,22 @@ std::pair<double, double> feretWidths(const std::vector<cv::Point2f>& hull) {
              steps < n && across(a, b, at(j + 1)) >= across(a, b, at(j)) && (j + 1) % n != i;
              ++steps) {
             j = (j + 1) % n;
-            largest2 = std::max(largest2, squared(at(j) - a));
+            pair(a, at(j));
         }
-        largest2 = std::max(largest2, squared(at(j) - b));
+        pair(b, at(j));
         const double length = std::sqrt(squared(b - a));
-        if (length > 0.0) {
-            smallest = std::min(smallest, across(a, b, at(j)) / length);
+        if (length > 0.0 && across(a, b, at(j)) / length < smallest) {
+            smallest = across(a, b, at(j)) / length;
+            const cv::Point2d p = at(j);
+            const cv::Point2d e = (b - a) * (1.0 / length);
+            const double t = (p - a).dot(e);
+            c.smallestFrom = p;
+            c.smallestTo = a + e * t;
         }
     }
-    return {smallest == std::numeric_limits<double>::max() ? 0.0 : smallest, std::sqrt(largest2)};
+    c.smallest = smallest == std::numeric_limits<double>::max() ? 0.0 : smallest;
+    c.largest = std::sqrt(largest2);
+    return c;
 }
 
 }  // namespace
@@ -89,9 +113,14 @@ ContourSize measureContour(const std::vector<glm::dvec2>& contour) {
                         : origin;
     std::vector<cv::Point2f> hull;
     cv::convexHull(local, hull);
-    const auto [smallest, largest] = feretWidths(hull);
-    size.minFeret = smallest;
-    size.maxFeret = largest;
+    const Calipers calipers = feretWidths(hull);
+    size.minFeret = calipers.smallest;
+    size.maxFeret = calipers.largest;
+    const auto back = [&origin](const cv::Point2d& p) { return origin + glm::dvec2(p.x, p.y); };
+    size.minFrom = back(calipers.smallestFrom);
+    size.minTo = back(calipers.smallestTo);
+    size.maxFrom = back(calipers.largestFrom);
+    size.maxTo = back(calipers.largestTo);
     return size;
 }
 

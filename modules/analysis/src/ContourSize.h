@@ -14,6 +14,9 @@ struct ContourSize {
     double perimeter = 0.0;
     double minFeret = 0.0;  ///< smallest width over all directions
     double maxFeret = 0.0;  ///< largest width (the hull's diameter)
+    /// Where they lie: the smallest width from a hull vertex to its foot on
+    /// the opposite edge's line, the largest between two hull vertices.
+    glm::dvec2 minFrom{0.0}, minTo{0.0}, maxFrom{0.0}, maxTo{0.0};
     glm::dvec2 centroid{0.0};
 };
 

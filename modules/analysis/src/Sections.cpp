@@ -324,6 +324,16 @@ bool EndZones::contains(const Branch& branch, std::size_t i) const noexcept {
            at > branch.points.back().abscissaMm - endMm;
 }
 
+FeretCalipers feretCalipers(const std::vector<glm::dvec2>& contour) {
+    const detail::ContourSize size = detail::measureContour(contour);
+    FeretCalipers c;
+    c.minMm = size.minFeret;
+    c.maxMm = size.maxFeret;
+    c.minSegment = {size.minFrom, size.minTo};
+    c.maxSegment = {size.maxFrom, size.maxTo};
+    return c;
+}
+
 std::vector<std::vector<CrossSection>> computeSections(const scene::Mesh& mesh,
                                                        const CenterlineTree& tree,
                                                        const Progress& progress) {

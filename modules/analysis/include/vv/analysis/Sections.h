@@ -17,6 +17,7 @@
 //   the centreline that stays inside the surface (VMTK's
 //   MaximumInscribedSphereRadius); at most the minimum diameter.
 
+#include <array>
 #include <cstdint>
 #include <glm/glm.hpp>
 #include <vector>
@@ -72,6 +73,23 @@ struct CrossSection {
         return status == Status::Ok && !inEndZone;
     }
 };
+
+/// Where a contour's Feret widths lie (in its own coordinates, mm): the
+/// smallest from a point of the contour's hull straight across to the
+/// opposite edge's line, the largest between two points of the hull. What a
+/// cross-section view draws as the calipers of its minimum and maximum
+/// diameter.
+struct FeretCalipers {
+    double minMm = 0.0;
+    double maxMm = 0.0;
+    std::array<glm::dvec2, 2> minSegment{};
+    std::array<glm::dvec2, 2> maxSegment{};
+};
+
+/// The calipers of the closed polygon `contour` (>= 3 points, first not
+/// repeated; fewer: all zero). Their widths are the section's
+/// minDiameterMm / maxDiameterMm for its contour.
+[[nodiscard]] FeretCalipers feretCalipers(const std::vector<glm::dvec2>& contour);
 
 /// A branch's end zones (CrossSection::inEndZone): each twice the branch's
 /// median inscribed radius long, or 1.5 times the radius at its end point

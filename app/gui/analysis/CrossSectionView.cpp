@@ -1,0 +1,220 @@
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "gui/analysis/CrossSectionView.h"
+
+#include <QKeyEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QWheelEvent>
+#include <algorithm>
+#include <cmath>
+#include <exception>
+
+#include "gui/analysis/PlanningState.h"
+#include "vv/report/PdfReport.h"
+#include "vv/slices/Reslice.h"
+
+namespace vv::gui {
+
+namespace {
+
+/// Pixels of the resliced square (its side).
+constexpr int kPixels = 160;
+
+const QColor kContour(255, 214, 0);
+const QColor kMinimum(213, 94, 0);
+const QColor kMaximum(0, 158, 115);
+
+QString millimetres(double mm) {
+    return QString::fromStdString(report::measurementCellText({mm, 1, "mm", {}}));
+}
+
+}  // namespace
+
+CrossSectionView::CrossSectionView(PlanningState* state, QWidget* parent)
+    : QWidget(parent), state_(state) {
+    setObjectName(QStringLiteral("crossSectionView"));
+    setFocusPolicy(Qt::StrongFocus);
+    setToolTip(
+        tr("The section perpendicular to the path at the cursor; the wheel or the "
+           "arrow keys move along the path"));
+    for (const auto signal : {&PlanningState::analysisChanged, &PlanningState::pathChanged}) {
+        connect(state_, signal, this, &CrossSectionView::follow);
+    }
+    connect(state_, &PlanningState::cursorMoved, this, &CrossSectionView::follow);
+    follow();
+}
+
+void CrossSectionView::setVolume(std::shared_ptr<const scene::Volume> volume) {
+    volume_ = std::move(volume);
+    reslice();
+    update();
+}
+
+void CrossSectionView::setWindow(const slices::Window& window) {
+    window_ = window;
+    reslice();
+    update();
+}
+
+void CrossSectionView::follow() {
+    section_.reset();
+    const auto point = state_->cursorPoint();
+    if (point && state_->hasAnalysis()) {
+        const auto& a = *state_->analysis();
+        const auto& branch = a.tree.branches[static_cast<std::size_t>(point->location.branch)];
+        // The profile point's own section (its abscissa is a centreline point's).
+        std::size_t index = 0;
+        for (std::size_t i = 0; i < branch.points.size(); ++i) {
+            if (std::abs(branch.points[i].abscissaMm - point->location.abscissaMm) <
+                std::abs(branch.points[index].abscissaMm - point->location.abscissaMm)) {
+                index = i;
+            }
+        }
+        section_ = a.sections[static_cast<std::size_t>(point->location.branch)][index];
+        calipers_ = analysis::feretCalipers(section_->contour);
+        const double size = section_->status == analysis::CrossSection::Status::Ok
+                                ? section_->maxDiameterMm
+                                : section_->inscribedDiameterMm;
+        fieldMm_ = std::max(20.0, 2.5 * size);
+    }
+    reslice();
+    update();
+}
+
+void CrossSectionView::reslice() {
+    image_ = QImage();
+    if (!volume_ || !section_) {
+        return;
+    }
+    slices::SlicePlane plane;
+    plane.width = kPixels;
+    plane.height = kPixels;
+    plane.pixelSpacing = fieldMm_ / kPixels;
+    plane.right = section_->axisU;
+    plane.down = -section_->axisV;
+    const double half = 0.5 * (kPixels - 1) * plane.pixelSpacing;
+    plane.origin = section_->centre - half * plane.right - half * plane.down;
+    try {
+        const Image<float> values = slices::reslice(*volume_, plane);
+        const Image<std::uint8_t> gray = slices::applyWindow(values.view(), window_);
+        image_ = QImage(kPixels, kPixels, QImage::Format_Grayscale8);
+        for (int y = 0; y < kPixels; ++y) {
+            std::copy_n(gray.row(y), kPixels, image_.scanLine(y));
+        }
+    } catch (const std::exception&) {
+        image_ = QImage();  // outside or unusable: the contour alone
+    }
+}
+
+QStringList CrossSectionView::texts() const {
+    if (!section_) {
+        return {};
+    }
+    if (section_->status != analysis::CrossSection::Status::Ok) {
+        return {tr("No closed lumen contour here")};
+    }
+    QStringList lines{
+        tr("Minimum %1, maximum %2")
+            .arg(millimetres(section_->minDiameterMm), millimetres(section_->maxDiameterMm)),
+        tr("Equivalent %1, area %2")
+            .arg(millimetres(section_->equivalentDiameterMm),
+                 QString::fromStdString(
+                     report::measurementCellText({section_->areaMm2, 0, "mm²", {}})))};
+    if (section_->inEndZone) {
+        lines << tr("At an end or a junction: not a vessel size");
+    }
+    return lines;
+}
+
+void CrossSectionView::paintEvent(QPaintEvent* event) {
+    Q_UNUSED(event);
+    QPainter painter(this);
+    painter.fillRect(rect(), Qt::black);
+    painter.setRenderHint(QPainter::Antialiasing);
+    const QFontMetrics metrics(font());
+    if (!section_) {
+        painter.setPen(Qt::lightGray);
+        painter.drawText(rect(), Qt::AlignCenter | Qt::TextWordWrap,
+                         tr("Find the centrelines to see the cross-section"));
+        return;
+    }
+    const QStringList lines = texts();
+    const int textHeight = metrics.lineSpacing() * static_cast<int>(lines.size() + 1) + 6;
+    const int side = std::max(10, std::min(width(), height() - textHeight));
+    const QRectF square((width() - side) / 2.0, metrics.lineSpacing() + 4.0, side, side);
+    if (!image_.isNull()) {
+        painter.drawImage(square, image_);
+    }
+    const double scale = side / fieldMm_;  // px per mm
+    const QPointF centre = square.center();
+    const auto toWidget = [&](const glm::dvec2& uv) {
+        return QPointF(centre.x() + uv.x * scale, centre.y() - uv.y * scale);
+    };
+    painter.setPen(Qt::white);
+    painter.drawText(QRectF(0, 0, width(), metrics.lineSpacing() + 2), Qt::AlignCenter,
+                     tr("%1 along the path").arg(millimetres(state_->cursorMm())));
+    if (section_->status == analysis::CrossSection::Status::Ok && section_->contour.size() >= 3) {
+        QPainterPath contour;
+        contour.moveTo(toWidget(section_->contour.front()));
+        for (const glm::dvec2& p : section_->contour) {
+            contour.lineTo(toWidget(p));
+        }
+        contour.closeSubpath();
+        painter.setPen(QPen(kContour, 2.0));
+        painter.drawPath(contour);
+        for (const auto& [segment, colour] : {std::pair{calipers_.maxSegment, kMaximum},
+                                              std::pair{calipers_.minSegment, kMinimum}}) {
+            painter.setPen(QPen(Qt::black, 4.0, Qt::SolidLine, Qt::RoundCap));
+            painter.drawLine(toWidget(segment[0]), toWidget(segment[1]));
+            painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap));
+            painter.drawLine(toWidget(segment[0]), toWidget(segment[1]));
+        }
+    }
+    // The centreline point.
+    painter.setPen(QPen(Qt::red, 1.5));
+    painter.drawLine(centre + QPointF(-5, 0), centre + QPointF(5, 0));
+    painter.drawLine(centre + QPointF(0, -5), centre + QPointF(0, 5));
+    // A 10 mm scale bar, bottom left of the square.
+    const double bar = 10.0 * scale;
+    const QPointF barStart = square.bottomLeft() + QPointF(8.0, -10.0);
+    painter.setPen(QPen(Qt::white, 2.0));
+    painter.drawLine(barStart, barStart + QPointF(bar, 0.0));
+    painter.drawText(barStart + QPointF(0.0, -4.0),
+                     QString::fromStdString(report::measurementCellText({10.0, 0, "mm", {}})));
+    // The sizes under the square, each in its caliper's colour.
+    double y = square.bottom() + metrics.ascent() + 4.0;
+    for (qsizetype i = 0; i < lines.size(); ++i) {
+        painter.setPen(i == 0 ? QColor(255, 200, 150) : Qt::white);
+        painter.drawText(QRectF(0, y - metrics.ascent(), width(), metrics.lineSpacing()),
+                         Qt::AlignCenter, lines[i]);
+        y += metrics.lineSpacing();
+    }
+}
+
+void CrossSectionView::wheelEvent(QWheelEvent* event) {
+    const int steps = event->angleDelta().y() / 120;
+    if (steps != 0) {
+        state_->stepCursor(-steps);
+    }
+    event->accept();
+}
+
+void CrossSectionView::keyPressEvent(QKeyEvent* event) {
+    const int step = (event->modifiers() & Qt::ShiftModifier) != 0 ? 10 : 1;
+    switch (event->key()) {
+        case Qt::Key_Left:
+        case Qt::Key_Down:
+            state_->stepCursor(-step);
+            break;
+        case Qt::Key_Right:
+        case Qt::Key_Up:
+            state_->stepCursor(step);
+            break;
+        default:
+            QWidget::keyPressEvent(event);
+            return;
+    }
+    event->accept();
+}
+
+}  // namespace vv::gui
