@@ -287,7 +287,10 @@ int centerlineCommand(const std::vector<std::string>& args, std::ostream& out, s
     }
     const std::vector<PlacedLandmark> landmarks = placeLandmarks(tree, c.landmarks, err);
     if (c.json) {
-        app::writeMeasurementJson(out, {&analysed, landmarks, {}, std::nullopt});
+        app::MeasurementInput input;
+        input.analysis = &analysed;
+        input.landmarks = landmarks;
+        app::writeMeasurementJson(out, input);
     } else {
         double length = 0.0;
         for (const auto& b : tree.branches) {

@@ -136,6 +136,27 @@ class MeasurementReader {
         return s;
     }
 
+    /// [u, v] in mm (within a kilometre).
+    [[nodiscard]] glm::dvec2 uv(const QJsonValue& v, const std::string& where) const {
+        const QJsonArray a = v.toArray();
+        if (!v.isArray() || a.size() != 2 || !a[0].isDouble() || !a[1].isDouble() ||
+            std::abs(a[0].toDouble()) > 1e6 || std::abs(a[1].toDouble()) > 1e6) {
+            fail(where + " is not a point [u, v]");
+        }
+        return {a[0].toDouble(), a[1].toDouble()};
+    }
+
+    /// A number or null (a blank); nullopt for null.
+    [[nodiscard]] std::optional<double> maybe(const QJsonValue& v, const std::string& where) const {
+        if (v.isNull()) {
+            return std::nullopt;
+        }
+        if (!v.isDouble() || !std::isfinite(v.toDouble())) {
+            fail(where + " is not a number or null");
+        }
+        return v.toDouble();
+    }
+
     [[nodiscard]] Blank blank(const QJsonObject& o, const std::string& where) const {
         Blank b;
         const std::string reason = text(o, "blank_reason", where);
@@ -178,6 +199,30 @@ class MeasurementReader {
   private:
     std::filesystem::path file_;
 };
+
+/// A landmark section's contour and calipers, where the file has them.
+void readContour(const MeasurementReader& r, const QJsonObject& section, const std::string& where,
+                 MeasuredLandmark& landmark) {
+    if (section.contains("contour")) {
+        const QJsonArray contour = r.array(section, "contour", where);
+        for (qsizetype i = 0; i < contour.size(); ++i) {
+            landmark.contour.push_back(
+                r.uv(contour[i], where + ".contour[" + std::to_string(i) + "]"));
+        }
+    }
+    if (section.contains("calipers")) {
+        const QJsonObject calipers = r.object(section.value("calipers"), where + ".calipers");
+        for (auto [key, target] :
+             {std::pair{"min", &landmark.minCaliper}, std::pair{"max", &landmark.maxCaliper}}) {
+            const std::string at = where + ".calipers." + key;
+            const QJsonArray segment = r.array(calipers, key, where + ".calipers");
+            if (segment.size() != 2) {
+                r.fail(at + " is not two points");
+            }
+            *target = std::array<glm::dvec2, 2>{r.uv(segment[0], at), r.uv(segment[1], at)};
+        }
+    }
+}
 
 planning::AorticSizing readSizing(const MeasurementReader& r, const QJsonObject& t) {
     planning::AorticSizing s;
@@ -323,6 +368,9 @@ ReportMeasurements readMeasurementText(const std::string& text, const std::files
             const QJsonObject s = r.object(b.value("stenosis"), where + ".stenosis");
             branch.stenosisDiameterPercent = r.number(s, "diameter_percent", where + ".stenosis");
             branch.stenosisAreaPercent = r.number(s, "area_percent", where + ".stenosis");
+            if (s.contains("path_mm")) {
+                branch.stenosisPathMm = r.maybe(s.value("path_mm"), where + ".stenosis.path_mm");
+            }
         }
         m.branches.push_back(std::move(branch));
     }
@@ -331,10 +379,16 @@ ReportMeasurements readMeasurementText(const std::string& text, const std::files
         for (qsizetype i = 0; i < landmarks.size(); ++i) {
             const std::string where = "landmarks[" + std::to_string(i) + "]";
             const QJsonObject l = r.object(landmarks[i], where);
-            MeasuredLandmark landmark{r.text(l, "name", where), r.kind(l, "kind", where), {}};
+            MeasuredLandmark landmark;
+            landmark.name = r.text(l, "name", where);
+            landmark.kind = r.kind(l, "kind", where);
+            if (l.contains("path_mm")) {
+                landmark.pathMm = r.maybe(l.value("path_mm"), where + ".path_mm");
+            }
             if (!l.value("section").isNull()) {
-                landmark.section =
-                    r.sizes(r.object(l.value("section"), where + ".section"), where + ".section");
+                const QJsonObject section = r.object(l.value("section"), where + ".section");
+                landmark.section = r.sizes(section, where + ".section");
+                readContour(r, section, where + ".section", landmark);
             }
             m.landmarks.push_back(std::move(landmark));
         }
@@ -345,6 +399,32 @@ ReportMeasurements readMeasurementText(const std::string& text, const std::files
             m.lengths.push_back({r.text(p, "from", where), r.text(p, "to", where),
                                  r.number(p, "along_centreline_mm", where),
                                  r.number(p, "straight_mm", where)});
+        }
+    }
+    if (root.contains("path")) {
+        const QJsonObject path = r.object(root.value("path"), "path");
+        if (path.contains("profile")) {
+            MeasuredProfile profile;
+            profile.fromEnd = r.whole(path, "from_end", "path");
+            profile.toEnd = r.whole(path, "to_end", "path");
+            profile.lengthMm = r.number(path, "length_mm", "path");
+            profile.chosen = path.value("chosen").toBool(false);
+            const QJsonArray points = r.array(path, "profile", "path");
+            for (qsizetype i = 0; i < points.size(); ++i) {
+                const std::string where = "path.profile[" + std::to_string(i) + "]";
+                const QJsonArray p = points[i].toArray();
+                if (!points[i].isArray() || p.size() != 5) {
+                    r.fail(where + " is not [path_mm, equivalent, min, max, area]");
+                }
+                MeasuredProfile::Point point;
+                point.pathMm = r.maybe(p[0], where).value_or(0.0);
+                point.equivalentMm = r.maybe(p[1], where);
+                point.minMm = r.maybe(p[2], where);
+                point.maxMm = r.maybe(p[3], where);
+                point.areaMm2 = r.maybe(p[4], where);
+                profile.points.push_back(point);
+            }
+            m.profile = std::move(profile);
         }
     }
     if (root.contains("aortic_sizing")) {

@@ -7,6 +7,7 @@
 // measurement groups of a DICOM TID 1500 Structured Report. Here, not in vv::report: it reads
 // vv::planning's types, and the report module reaches no VTK (docs/architecture.md).
 
+#include <array>
 #include <filesystem>
 #include <glm/vec3.hpp>
 #include <iosfwd>
@@ -34,6 +35,8 @@ struct MeasuredBranch {
     /// At the narrowest point against the reference; nullopt = not graded.
     std::optional<double> stenosisDiameterPercent;
     std::optional<double> stenosisAreaPercent;
+    /// Where its narrowest point lies along the file's path; nullopt off it.
+    std::optional<double> stenosisPathMm;
 };
 
 struct MeasuredLandmark {
@@ -41,6 +44,27 @@ struct MeasuredLandmark {
     planning::LandmarkKind kind = planning::LandmarkKind::Free;
     /// Its section; nullopt where the section has no closed contour.
     std::optional<planning::SectionSizes> section;
+    /// Where it lies along the file's path; nullopt off it.
+    std::optional<double> pathMm;
+    /// The section's lumen contour and calipers in its plane, (u, v) mm about
+    /// the centreline point; empty / nullopt in files without them.
+    std::vector<glm::dvec2> contour;
+    std::optional<std::array<glm::dvec2, 2>> minCaliper;
+    std::optional<std::array<glm::dvec2, 2>> maxCaliper;
+};
+
+/// The diameter profile along the file's path.
+struct MeasuredProfile {
+    int fromEnd = 0;
+    int toEnd = 0;
+    double lengthMm = 0.0;
+    bool chosen = false;  ///< chosen by the user (else the source to the farthest end)
+    struct Point {
+        double pathMm = 0.0;
+        /// nullopt where no section measures the vessel (an end, a junction).
+        std::optional<double> equivalentMm, minMm, maxMm, areaMm2;
+    };
+    std::vector<Point> points;
 };
 
 struct MeasuredLength {
@@ -56,6 +80,8 @@ struct ReportMeasurements {
     std::vector<MeasuredLength> lengths;  ///< between every two landmarks
     /// The aortic sizing table; nullopt when no preset landmark was placed.
     std::optional<planning::AorticSizing> sizing;
+    /// The profile along the path; nullopt in files without one.
+    std::optional<MeasuredProfile> profile;
 };
 
 /// The format a measurement file names itself with.

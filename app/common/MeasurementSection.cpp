@@ -4,7 +4,9 @@
 #include <QCoreApplication>
 #include <QLocale>
 #include <QString>
+#include <algorithm>
 #include <array>
+#include <limits>
 #include <utility>
 
 namespace vv::app {
@@ -193,6 +195,73 @@ MeasurementTable branchTable(const ReportMeasurements& m) {
     return t;
 }
 
+/// The profile along the file's path, its landmarks and stenoses marked.
+report::ProfileFigure profileFigure(const ReportMeasurements& m, const MeasuredProfile& profile) {
+    report::ProfileFigure f;
+    f.title = str(MeasurementText::tr("Diameter profile along the path (%1 long)")
+                      .arg(QString::fromStdString(
+                          report::measurementCellText({profile.lengthMm, 1, "mm", {}}))));
+    f.note = str(
+        MeasurementText::tr(
+            "Solid: equivalent diameter; dashed: minimum and maximum caliper diameter. Gaps: no "
+            "section measures the vessel there (an end, a junction). Marked: narrowings of %1 or "
+            "more in diameter.")
+            .arg(QString::fromStdString(
+                report::measurementCellText({kMarkedStenosisPercent, 0, "%", {}}))));
+    f.lengthMm = profile.lengthMm;
+    f.xTitle = str(MeasurementText::tr("Distance along the path (mm)"));
+    f.yTitle = str(MeasurementText::tr("Diameter (mm)"));
+    f.series = {{str(MeasurementText::tr("Equivalent")), {}},
+                {str(MeasurementText::tr("Minimum")), {}},
+                {str(MeasurementText::tr("Maximum")), {}}};
+    const double gap = std::numeric_limits<double>::quiet_NaN();
+    for (const MeasuredProfile::Point& p : profile.points) {
+        f.pathMm.push_back(p.pathMm);
+        f.series[0].values.push_back(p.equivalentMm.value_or(gap));
+        f.series[1].values.push_back(p.minMm.value_or(gap));
+        f.series[2].values.push_back(p.maxMm.value_or(gap));
+    }
+    for (const MeasuredLandmark& l : m.landmarks) {
+        if (l.pathMm) {
+            f.landmarks.push_back({*l.pathMm, shownName(l.name, l.kind)});
+        }
+    }
+    for (const MeasuredBranch& b : m.branches) {
+        if (b.stenosisPathMm && b.stenosisDiameterPercent &&
+            *b.stenosisDiameterPercent >= kMarkedStenosisPercent) {
+            f.stenoses.push_back(
+                {*b.stenosisPathMm,
+                 report::measurementCellText({*b.stenosisDiameterPercent, 0, "%", {}})});
+        }
+    }
+    return f;
+}
+
+/// The cross-section at each landmark that has its contour in the file.
+std::vector<report::SectionFigure> sectionFigures(const ReportMeasurements& m) {
+    std::vector<report::SectionFigure> figures;
+    for (const MeasuredLandmark& l : m.landmarks) {
+        if (!l.section || l.contour.size() < 3) {
+            continue;
+        }
+        report::SectionFigure f;
+        f.title = shownName(l.name, l.kind);
+        const planning::SectionSizes& s = *l.section;
+        f.caption =
+            str(MeasurementText::tr("Minimum %1, maximum %2, equivalent %3")
+                    .arg(QString::fromStdString(report::measurementCellText(mm(s.minDiameterMm))),
+                         QString::fromStdString(report::measurementCellText(mm(s.maxDiameterMm))),
+                         QString::fromStdString(
+                             report::measurementCellText(mm(s.equivalentDiameterMm)))));
+        f.contour = l.contour;
+        f.minCaliper = l.minCaliper;
+        f.maxCaliper = l.maxCaliper;
+        f.fieldMm = std::max(20.0, 2.5 * s.maxDiameterMm);
+        figures.push_back(std::move(f));
+    }
+    return figures;
+}
+
 }  // namespace
 
 std::string landmarkName(LandmarkKind kind) {
@@ -290,6 +359,10 @@ report::ReportMeasurementSection measurementSection(const ReportMeasurements& m)
     add(landmarkTable(m));
     add(lengthTable(m));
     add(branchTable(m));
+    if (m.profile && m.profile->points.size() >= 2) {
+        section.profile = profileFigure(m, *m.profile);
+    }
+    section.sections = sectionFigures(m);
     return section;
 }
 

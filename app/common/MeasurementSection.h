@@ -12,6 +12,11 @@
 
 namespace vv::app {
 
+/// Profiles mark a graded narrowing from this diameter reduction on (%):
+/// smaller ones lie within what the sections' own scatter gives on a healthy
+/// vessel (a few percent), and marking them would hide the real ones.
+inline constexpr double kMarkedStenosisPercent = 20.0;
+
 /// A landmark preset's name in the UI language ("Lowest renal artery").
 [[nodiscard]] std::string landmarkName(planning::LandmarkKind kind);
 

@@ -2,8 +2,10 @@
 // The measurement file's writer (MeasurementFile.h): the one JSON form of the
 // planning measurements, for `centerline --json` and the GUI alike.
 #include <array>
+#include <cmath>
 #include <fstream>
 #include <glm/geometric.hpp>
+#include <optional>
 #include <ostream>
 #include <sstream>
 #include <string>
@@ -31,7 +33,55 @@ void writePoint(JsonWriter& json, const char* name, const glm::dvec3& p) {
     json.endArray();
 }
 
-void writeSizes(JsonWriter& json, const planning::SectionSizes& s) {
+void writeUv(JsonWriter& json, const glm::dvec2& p) {
+    json.beginArray();
+    json.number(p.x);
+    json.number(p.y);
+    json.endArray();
+}
+
+/// The section's plane geometry: its lumen contour and the calipers of its
+/// minimum and maximum diameter, in the plane's (u, v) mm about the
+/// centreline point (what the report draws at a landmark).
+void writeContour(JsonWriter& json, const analysis::CrossSection& section) {
+    json.key("contour");
+    json.beginArray();
+    for (const glm::dvec2& p : section.contour) {
+        writeUv(json, p);
+    }
+    json.endArray();
+    const analysis::FeretCalipers c = analysis::feretCalipers(section.contour);
+    json.key("calipers");
+    json.beginObject();
+    for (const auto& [name, segment] :
+         {std::pair{"min", c.minSegment}, std::pair{"max", c.maxSegment}}) {
+        json.key(name);
+        json.beginArray();
+        writeUv(json, segment[0]);
+        writeUv(json, segment[1]);
+        json.endArray();
+    }
+    json.endObject();
+}
+
+/// The section of the centreline point nearest `at` on its branch.
+const analysis::CrossSection& sectionAt(
+    const analysis::CenterlineTree& tree,
+    const std::vector<std::vector<analysis::CrossSection>>& sections,
+    const planning::TreeLocation& at) {
+    const auto& points = tree.branches[static_cast<std::size_t>(at.branch)].points;
+    std::size_t nearest = 0;
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        if (std::abs(points[i].abscissaMm - at.abscissaMm) <
+            std::abs(points[nearest].abscissaMm - at.abscissaMm)) {
+            nearest = i;
+        }
+    }
+    return sections[static_cast<std::size_t>(at.branch)][nearest];
+}
+
+void writeSizes(JsonWriter& json, const planning::SectionSizes& s,
+                const analysis::CrossSection* geometry = nullptr) {
     json.beginObject();
     json.member("branch", s.location.branch);
     json.member("abscissa_mm", s.location.abscissaMm);
@@ -40,6 +90,9 @@ void writeSizes(JsonWriter& json, const planning::SectionSizes& s) {
     json.member("max_diameter_mm", s.maxDiameterMm);
     json.member("area_mm2", s.areaMm2);
     json.member("at_a_junction", s.atAJunction);
+    if (geometry != nullptr && geometry->status == analysis::CrossSection::Status::Ok) {
+        writeContour(json, *geometry);
+    }
     json.endObject();
 }
 
@@ -138,7 +191,8 @@ void writeSection(JsonWriter& json, const char* name, const analysis::CrossSecti
 
 void writeLandmarks(JsonWriter& json, const analysis::CenterlineTree& tree,
                     const std::vector<std::vector<analysis::CrossSection>>& sections,
-                    const std::vector<PlacedLandmark>& placed) {
+                    const std::vector<PlacedLandmark>& placed,
+                    const std::optional<planning::VesselPath>& path) {
     json.key("landmarks");
     json.beginArray();
     std::vector<planning::Landmark> landmarks;
@@ -153,13 +207,19 @@ void writeLandmarks(JsonWriter& json, const analysis::CenterlineTree& tree,
         json.member("branch", l.location.branch);
         json.member("abscissa_mm", l.location.abscissaMm);
         writePoint(json, "position", planning::sampleAt(tree, l.location).position);
+        json.key("path_mm");
+        if (const auto along = path ? path->abscissaOf(tree, l.location) : std::nullopt) {
+            json.number(*along);
+        } else {
+            json.null();
+        }
         if (p.given) {
             writePoint(json, "given", *p.given);
             json.member("given_distance_mm", p.distanceMm);
         }
         json.key("section");
         if (const auto sizes = planning::sectionSizesAt(tree, sections, l.location)) {
-            writeSizes(json, *sizes);
+            writeSizes(json, *sizes, &sectionAt(tree, sections, sizes->location));
         } else {
             json.null();
         }
@@ -211,6 +271,16 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
     }
     const analysis::CenterlineTree& tree = input.analysis->tree;
     const auto& sections = input.analysis->sections;
+    // The path measured along: the one chosen, else from the source to the
+    // farthest end (the main vessel).
+    std::optional<MeasurementInput::Path> chosen = input.path;
+    if (!chosen && planning::farthestEnd(tree) > 0) {
+        chosen = MeasurementInput::Path{0, planning::farthestEnd(tree)};
+    }
+    std::optional<planning::VesselPath> path;
+    if (chosen) {
+        path = planning::VesselPath::betweenEnds(tree, chosen->fromEnd, chosen->toEnd);
+    }
     JsonWriter json(out);
     json.beginObject();
     json.member("format", std::string(kMeasurementFormat));
@@ -245,6 +315,13 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
             json.member("area_percent", stenosis->areaPercent);
             json.member("reference_diameter_mm", stenosis->referenceDiameterMm);
             json.member("reference", stenosis->method);
+            json.key("path_mm");
+            if (const auto along = path ? path->abscissaOf(tree, {branch.id, stenosis->abscissaMm})
+                                        : std::nullopt) {
+                json.number(*along);
+            } else {
+                json.null();
+            }
             json.endObject();
         } else {
             json.null();
@@ -273,18 +350,38 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
         json.string(note);
     }
     json.endArray();
-    if (input.path) {
-        const auto path =
-            planning::VesselPath::betweenEnds(tree, input.path->fromEnd, input.path->toEnd);
+    if (path) {
         json.key("path");
         json.beginObject();
-        json.member("from_end", input.path->fromEnd);
-        json.member("to_end", input.path->toEnd);
-        json.member("length_mm", path.lengthMm());
+        json.member("from_end", chosen->fromEnd);
+        json.member("to_end", chosen->toEnd);
+        json.member("length_mm", path->lengthMm());
+        json.member("chosen", input.path.has_value());
+        // The diameter profile: per centreline point along the path, its
+        // distance and its section's equivalent, minimum and maximum diameter
+        // and area, or nulls where no section measures the vessel.
+        json.key("profile");
+        json.beginArray();
+        for (const planning::PathPoint& p : path->points(tree)) {
+            const analysis::CrossSection& c =
+                sections[static_cast<std::size_t>(p.branch)][p.pointIndex];
+            json.beginArray();
+            json.number(p.pathMm);
+            for (const double v :
+                 {c.equivalentDiameterMm, c.minDiameterMm, c.maxDiameterMm, c.areaMm2}) {
+                if (c.measuresTheVessel()) {
+                    json.number(v);
+                } else {
+                    json.null();
+                }
+            }
+            json.endArray();
+        }
+        json.endArray();
         json.endObject();
     }
     if (!input.landmarks.empty()) {
-        writeLandmarks(json, tree, sections, input.landmarks);
+        writeLandmarks(json, tree, sections, input.landmarks, path);
     }
     json.endObject();
     json.finish();

@@ -50,6 +50,7 @@
 #include "gui/analysis/CurvedReformation.h"
 #include "gui/analysis/DiameterProfile.h"
 #include "gui/analysis/PlanningOverlay.h"
+#include "gui/analysis/PlanningReport.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/LocalStudyActions.h"
@@ -324,6 +325,14 @@ void MainWindow::buildFileMenu() {
         }
         // The findings of the data's last report (or Send to PACS) to start from.
         dialog->findingsEdit()->setPlainText(document_->findings());
+        if (planning_->hasAnalysis()) {
+            try {
+                PlanningReport planned = planningReport(*planning_, *reformation_, *crossSection_);
+                dialog->setMeasurements(std::move(planned.section), std::move(planned.groups));
+            } catch (const vv::Error& e) {
+                statusLabel_->setText(describeProblem(e, FileAccess::Writing).line());
+            }
+        }
         connect(
             dialog, &ReportDialog::exportStarted, document_, [this, dialog](ExportWorker* worker) {
                 const QString findings = dialog->findingsEdit()->toPlainText();

@@ -244,7 +244,7 @@ std::optional<report::ReportPatient> ReportDialog::enteredPatient() const {
 }
 
 QCheckBox* ReportDialog::addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
-                                   const QString& filter) {
+                                   const QString& filter, int row) {
     auto* box = new QCheckBox(label, this);
     edit = new QLineEdit(this);
     edit->setEnabled(false);
@@ -255,8 +255,47 @@ QCheckBox* ReportDialog::addOutput(const QString& label, QLineEdit*& edit, const
             path->setText(besidePdf(pdf_->text(), suffix));
         }
     });
-    form_->addRow(box, browseRow(edit, label, filter, this));
+    if (row >= 0) {
+        form_->insertRow(row, box, browseRow(edit, label, filter, this));
+    } else {
+        form_->addRow(box, browseRow(edit, label, filter, this));
+    }
     return box;
+}
+
+void ReportDialog::setMeasurements(report::ReportMeasurementSection section,
+                                   std::vector<dicom::SrGroup> groups) {
+    measurements_ = std::move(section);
+    measurementGroups_ = std::move(groups);
+    if (measurementsBox_ != nullptr) {
+        return;
+    }
+    measurementsBox_ = new QCheckBox(tr("I&nclude them"), this);
+    measurementsBox_->setObjectName(QStringLiteral("reportMeasurementsBox"));
+    measurementsBox_->setChecked(true);
+    measurementsBox_->setToolTip(
+        tr("The sizing and branch tables, the diameter profile, the curved reformation and the "
+           "cross-section at each landmark (Analysis panel)"));
+    const int secondRow = form_->indexOf(secondView_);
+    int at = 0;
+    QFormLayout::ItemRole role{};
+    form_->getItemPosition(secondRow, &at, &role);
+    form_->insertRow(at + (sliceBox_ != nullptr ? 2 : 1), tr("Measurements:"), measurementsBox_);
+    // The SR after the other outputs, before the buttons.
+    int pngRow = 0;
+    form_->getItemPosition(form_->indexOf(png_), &pngRow, &role);
+    dicomSr_ = addOutput(tr("DICOM St&ructured Report (measurements)"), dicomSrPath_,
+                         QStringLiteral("-sr.dcm"), tr("DICOM files (*.dcm)"), pngRow + 1);
+    dicomSr_->setObjectName(QStringLiteral("reportDicomSrBox"));
+    dicomSr_->setToolTip(
+        tr("The measurements as a DICOM TID 1500 Measurement Report, read as "
+           "data by a PACS and other viewers"));
+    connect(measurementsBox_, &QCheckBox::toggled, dicomSr_, [this](bool on) {
+        dicomSr_->setEnabled(on);
+        if (!on) {
+            dicomSr_->setChecked(false);
+        }
+    });
 }
 
 void ReportDialog::setSlice(const QImage& image, const QString& caption) {
@@ -306,6 +345,11 @@ report::ReportJobOptions ReportDialog::jobOptions() const {
     job.outputs.dicomSc = optional(dicomSc_, dicomScPath_);
     job.outputs.dicomPdf = optional(dicomPdf_, dicomPdfPath_);
     job.outputs.png = optional(png_, pngPath_);
+    if (measurementsBox_ != nullptr && measurementsBox_->isChecked()) {
+        job.measurements = measurements_;
+        job.measurementGroups = measurementGroups_;
+        job.outputs.dicomSr = optional(dicomSr_, dicomSrPath_);
+    }
     return job;
 }
 
@@ -321,6 +365,9 @@ std::vector<std::pair<std::filesystem::path, QString>> ReportDialog::outputs() c
         if (box->isChecked()) {
             outputs.emplace_back(*path, box->text().remove(QLatin1Char('&')));
         }
+    }
+    if (!job.outputs.dicomSr.empty()) {
+        outputs.emplace_back(job.outputs.dicomSr, dicomSr_->text().remove(QLatin1Char('&')));
     }
     return outputs;
 }

@@ -88,6 +88,16 @@ class ReportDialog : public ExportDialog {
     /// Null until setSlice().
     [[nodiscard]] QCheckBox* sliceBox() const noexcept { return sliceBox_; }
 
+    /// Offers the planning measurements (the Analysis panel's): a check box
+    /// "Measurements" (on) under the second view, and the optional DICOM
+    /// Structured Report output (TID 1500, `groups`) after the others.
+    void setMeasurements(report::ReportMeasurementSection section,
+                         std::vector<dicom::SrGroup> groups);
+    /// Null until setMeasurements().
+    [[nodiscard]] QCheckBox* measurementsBox() const noexcept { return measurementsBox_; }
+    [[nodiscard]] QCheckBox* dicomSrBox() const noexcept { return dicomSr_; }
+    [[nodiscard]] QLineEdit* dicomSrEdit() const noexcept { return dicomSrPath_; }
+
     /// The job the fields describe (view = the viewer's, at its size).
     [[nodiscard]] report::ReportJobOptions jobOptions() const;
 
@@ -109,8 +119,9 @@ class ReportDialog : public ExportDialog {
     /// One optional output: a check box and a path, filled from the PDF's name.
     void addPatientFields();
     [[nodiscard]] std::optional<report::ReportPatient> enteredPatient() const;
+    /// At form row `row`, or at the end (-1).
     QCheckBox* addOutput(const QString& label, QLineEdit*& edit, const QString& suffix,
-                         const QString& filter);
+                         const QString& filter, int row = -1);
     /// The PDF and each output checked, with what it is ("PDF report").
     [[nodiscard]] std::vector<std::pair<std::filesystem::path, QString>> outputs() const;
 
@@ -134,6 +145,11 @@ class ReportDialog : public ExportDialog {
     QLineEdit* dicomPdfPath_ = nullptr;
     QCheckBox* png_ = nullptr;
     QLineEdit* pngPath_ = nullptr;
+    QCheckBox* measurementsBox_ = nullptr;
+    report::ReportMeasurementSection measurements_;
+    std::vector<dicom::SrGroup> measurementGroups_;
+    QCheckBox* dicomSr_ = nullptr;
+    QLineEdit* dicomSrPath_ = nullptr;
     QGroupBox* patientGroup_ = nullptr;
     QLineEdit* patientName_ = nullptr;
     QLineEdit* patientId_ = nullptr;

@@ -7,6 +7,7 @@
 // the measurement file and the section CSV saved and read back; the diameter
 // profile's curves against the truth; and the segmented synthetic CTA
 // measured against the tree it was voxelised from.
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDockWidget>
 #include <QKeyEvent>
@@ -32,9 +33,11 @@
 #include "AneurysmTruth.h"
 #include "DicomTestUtil.h"
 #include "GuiFixture.h"
+#include "ReportTestUtil.h"
 #include "SyntheticCta.h"
 #include "common/MeasurementFile.h"
 #include "common/Session.h"
+#include "gui/ReportDialog.h"
 #include "gui/analysis/AnalysisTask.h"
 #include "gui/analysis/CrossSectionView.h"
 #include "gui/analysis/CurvedReformation.h"
@@ -441,6 +444,112 @@ TEST_F(PlanningGui, TheSegmentedCtaMeasuresAsTheTreeItWasBuiltFrom) {
     EXPECT_NEAR(
         tableValue(QStringLiteral("Lengths between landmarks"), QStringLiteral("A \u2013 B")),
         builtAlong, 2.0 * voxel);
+
+    // The curved reformation: the path straight along x. Its middle row runs
+    // down the lumen (contrast ~400 HU) wherever a section measures the
+    // vessel; rows two radii and two voxels off it lie in tissue (~40 HU).
+    gui::CurvedReformation* cpr = window_->curvedReformation();
+    ASSERT_TRUE(cpr->isVisible());
+    {
+        const Image<float>& values = cpr->values();
+        ASSERT_EQ(static_cast<std::size_t>(values.width()), state().profile().size());
+        const int middle = values.height() / 2;
+        EXPECT_NEAR(middle * cpr->rowSpacingMm(), cpr->halfWidthMm(), cpr->rowSpacingMm());
+        std::vector<float> lumen;
+        std::vector<float> tissue;
+        for (int c = 0; c < values.width(); ++c) {
+            const gui::ProfilePoint& p = state().profile()[static_cast<std::size_t>(c)];
+            if (!p.measured) {
+                continue;
+            }
+            lumen.push_back(values(c, middle));
+            const int off =
+                static_cast<int>(std::ceil((p.maxMm + 2.0 * voxel) / cpr->rowSpacingMm()));
+            for (const int r : {middle - off, middle + off}) {
+                if (r >= 0 && r < values.height() && std::isfinite(values(c, r))) {
+                    tissue.push_back(values(c, r));
+                }
+            }
+        }
+        const auto median = [](std::vector<float> v) {
+            std::nth_element(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(v.size() / 2),
+                             v.end());
+            return v[v.size() / 2];
+        };
+        ASSERT_GT(lumen.size(), 50U);
+        ASSERT_GT(tissue.size(), 50U);
+        EXPECT_GT(median(lumen), 250.0F);
+        EXPECT_LT(median(tissue), 150.0F);
+    }
+    // Turned about the path the lumen stays in the middle row.
+    cpr->rotationSlider()->setValue(90);
+    EXPECT_EQ(cpr->rotation(), 90);
+    EXPECT_GT(cpr->values()(cpr->values().width() / 2, cpr->values().height() / 2), 250.0F)
+        << "at the path's middle";
+
+    // The cross-section at the cursor: the image resliced across the
+    // vessel, bright at the centreline, its calipers the section's sizes.
+    ASSERT_TRUE(state().moveCursorNear(a));
+    gui::CrossSectionView* section = window_->crossSection();
+    ASSERT_TRUE(section->section().has_value());
+    const QImage& image = section->image();
+    ASSERT_FALSE(image.isNull());
+    EXPECT_GT(qGray(image.pixel(image.width() / 2, image.height() / 2)), 160);
+    EXPECT_LT(qGray(image.pixel(2, 2)), 160) << "tissue or outside at the corner";
+    const QString texts = section->texts().join(QLatin1Char(' '));
+    EXPECT_TRUE(texts.contains(QString::fromStdString(
+        report::measurementCellText({section->section()->minDiameterMm, 1, "mm", {}}))))
+        << texts.toStdString();
+
+    // File > Export Report with the measurements and their SR: the PDF shows
+    // the profile (its equivalent diameter's colour), the reformation and
+    // the cross-sections (the contour's colour) within its margins; the SR
+    // carries the landmarks' diameters.
+    const fs::path pdf = dir / "report.pdf";
+    const fs::path sr = dir / "report-sr.dcm";
+    const QString failure = exportReport(pdf, [&](gui::ReportDialog& dialog) {
+        ASSERT_NE(dialog.measurementsBox(), nullptr);
+        EXPECT_TRUE(dialog.measurementsBox()->isChecked());
+        dialog.dicomSrBox()->setChecked(true);
+        dialog.dicomSrEdit()->setText(QString::fromStdString(sr.string()));
+    });
+    ASSERT_TRUE(failure.isEmpty()) << failure.toStdString();
+    std::string text;
+    ASSERT_EQ(report::test::runTool("pdftotext -layout '" + pdf.string() + "' -", text), 0);
+    text = report::test::withoutLigatures(text);
+    EXPECT_NE(text.find("Diameter profile along the path"), std::string::npos);
+    EXPECT_NE(text.find("Curved reformation along the path"), std::string::npos);
+    const std::vector<QImage> pages = report::test::pdfPages(pdf, dir / "pages", 100);
+    int blue = 0;
+    int contour = 0;
+    for (const QImage& page : pages) {
+        EXPECT_TRUE(report::test::marginProblems(page, 100).empty());
+        for (int y = 0; y < page.height(); ++y) {
+            for (int x = 0; x < page.width(); ++x) {
+                const QColor c = page.pixelColor(x, y);
+                const auto near = [&c](int red, int green, int blue2) {
+                    return std::abs(c.red() - red) < 30 && std::abs(c.green() - green) < 30 &&
+                           std::abs(c.blue() - blue2) < 30;
+                };
+                blue += near(0, 114, 178) ? 1 : 0;
+                contour += near(230, 170, 0) ? 1 : 0;
+            }
+        }
+    }
+    EXPECT_GT(blue, 200) << "the profile's equivalent diameter line";
+    EXPECT_GT(contour, 100) << "the cross-sections' contours";
+    std::string dump;
+    ASSERT_EQ(report::test::runTool("dsrdump +Pl '" + sr.string() + "'", dump), 0) << dump;
+    EXPECT_NE(dump.find("Equivalent diameter (2 sqrt(area / pi)), at A"), std::string::npos)
+        << dump;
+
+    // The wheel steps along the path, one section a notch.
+    state().stepCursor(0);  // onto a section
+    const double before = state().cursorMm();
+    QWheelEvent wheel(QPointF(10, 10), section->mapToGlobal(QPointF(10, 10)), QPoint(),
+                      QPoint(0, -120), Qt::NoButton, Qt::NoModifier, Qt::NoScrollPhase, false);
+    QCoreApplication::sendEvent(section, &wheel);
+    EXPECT_NEAR(state().cursorMm() - before, 0.5, 0.05);
 }
 
 TEST_F(PlanningGui, ASessionReopensTheCentrelinesPathLandmarksAndCursor) {

@@ -64,6 +64,18 @@ TEST(VesselPath, FromTheSourceRunsDownItsBranches) {
     EXPECT_EQ(back.stretches().back().branch, 0);
 }
 
+TEST(VesselPath, TheFarthestEndIsTheLongerBranchsTip) {
+    EXPECT_EQ(farthestEnd(aY()), 2);  // 100 + 80 against 100 + 60
+    test::TreeBuilder builder;
+    const auto r = [](double) { return 5.0; };
+    builder.add(-1, {0, 0, 0}, {{{0, 0, 1}, 100.0}}, r);
+    builder.add(0, {0, 0, 100}, {{test::tilted(30), 90.0}}, r);
+    builder.add(0, {0, 0, 100}, {{test::tilted(-30), 20.0}}, r);
+    EXPECT_EQ(farthestEnd(builder.finish()), 1);
+    analysis::CenterlineTree none;
+    EXPECT_EQ(farthestEnd(none), -1);
+}
+
 TEST(VesselPath, PlacesAndAbscissaeRoundTrip) {
     const auto tree = aY();
     const VesselPath path = VesselPath::betweenEnds(tree, 1, 2);

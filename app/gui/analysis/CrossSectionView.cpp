@@ -81,28 +81,34 @@ void CrossSectionView::follow() {
     update();
 }
 
-void CrossSectionView::reslice() {
-    image_ = QImage();
-    if (!volume_ || !section_) {
-        return;
-    }
+QImage CrossSectionView::resliceImage(const scene::Volume& volume,
+                                      const analysis::CrossSection& section, double fieldMm,
+                                      const slices::Window& window) {
     slices::SlicePlane plane;
     plane.width = kPixels;
     plane.height = kPixels;
-    plane.pixelSpacing = fieldMm_ / kPixels;
-    plane.right = section_->axisU;
-    plane.down = -section_->axisV;
+    plane.pixelSpacing = fieldMm / kPixels;
+    plane.right = section.axisU;
+    plane.down = -section.axisV;
     const double half = 0.5 * (kPixels - 1) * plane.pixelSpacing;
-    plane.origin = section_->centre - half * plane.right - half * plane.down;
+    plane.origin = section.centre - half * plane.right - half * plane.down;
     try {
-        const Image<float> values = slices::reslice(*volume_, plane);
-        const Image<std::uint8_t> gray = slices::applyWindow(values.view(), window_);
-        image_ = QImage(kPixels, kPixels, QImage::Format_Grayscale8);
+        const Image<float> values = slices::reslice(volume, plane);
+        const Image<std::uint8_t> gray = slices::applyWindow(values.view(), window);
+        QImage image(kPixels, kPixels, QImage::Format_Grayscale8);
         for (int y = 0; y < kPixels; ++y) {
-            std::copy_n(gray.row(y), kPixels, image_.scanLine(y));
+            std::copy_n(gray.row(y), kPixels, image.scanLine(y));
         }
+        return image;
     } catch (const std::exception&) {
-        image_ = QImage();  // outside or unusable: the contour alone
+        return {};  // outside or unusable: the contour alone
+    }
+}
+
+void CrossSectionView::reslice() {
+    image_ = QImage();
+    if (volume_ && section_) {
+        image_ = resliceImage(*volume_, *section_, fieldMm_, window_);
     }
 }
 

@@ -34,6 +34,10 @@ class CrossSectionView : public QWidget {
     /// The volume to reslice (nullptr: a mesh scene, the contour alone).
     void setVolume(std::shared_ptr<const scene::Volume> volume);
     void setWindow(const slices::Window& window);
+    [[nodiscard]] const slices::Window& window() const noexcept { return window_; }
+    [[nodiscard]] const std::shared_ptr<const scene::Volume>& volume() const noexcept {
+        return volume_;
+    }
 
     /// The section shown (the profile point nearest the cursor); nullopt
     /// without a path.
@@ -44,6 +48,12 @@ class CrossSectionView : public QWidget {
     [[nodiscard]] const QImage& image() const noexcept { return image_; }
     /// Its field of view: the square's side, mm.
     [[nodiscard]] double fieldMm() const noexcept { return fieldMm_; }
+    /// `volume` resliced in `section`'s plane over a `fieldMm` square centred
+    /// on its centreline point (axisU right, axisV up), grey in `window`;
+    /// null outside the volume or when it cannot be resampled.
+    [[nodiscard]] static QImage resliceImage(const scene::Volume& volume,
+                                             const analysis::CrossSection& section, double fieldMm,
+                                             const slices::Window& window);
     /// The texts drawn: diameters and area (in the UI locale).
     [[nodiscard]] QStringList texts() const;
 

@@ -35,6 +35,7 @@ class CurvedReformation : public QWidget {
 
     void setVolume(std::shared_ptr<const scene::Volume> volume);
     void setWindow(const slices::Window& window);
+    [[nodiscard]] const slices::Window& window() const noexcept { return window_; }
     /// The rotation about the path, degrees in [0, 180).
     void setRotation(int degrees);
     [[nodiscard]] int rotation() const noexcept { return rotation_; }

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 
+#include "common/MeasurementSection.h"
 #include "gui/analysis/PlanningState.h"
 #include "vv/report/PdfReport.h"
 
@@ -173,8 +174,8 @@ void DiameterProfile::rebuild() {
     stenoses_->attachAxis(along_);
     stenoses_->attachAxis(diameter_);
     for (const PathStenosis& s : state_->pathStenoses()) {
-        if (std::lround(s.diameterPercent) < 1) {
-            continue;  // no narrowing to mark
+        if (s.diameterPercent < app::kMarkedStenosisPercent) {
+            continue;  // within the sections' scatter: not marked (the tables list it)
         }
         const auto& points = state_->profile();
         const auto nearest = std::min_element(

@@ -32,27 +32,15 @@ void PlanningState::setAnalysis(std::shared_ptr<const analysis::VesselAnalysis> 
     profile_.clear();
     from_ = 0;
     to_ = 0;
-    if (analysis_ && analysis_->tree.ends.size() >= 2 && !analysis_->tree.branches.empty()) {
-        // The source to the end farthest from it along the centrelines: the
-        // main vessel, the path a planner measures first.
-        const auto& tree = analysis_->tree;
-        const planning::TreeLocation source = planning::endLocation(tree, 0);
-        double farthest = -1.0;
-        for (int end = 1; end < static_cast<int>(tree.ends.size()); ++end) {
-            try {
-                const double length =
-                    planning::lengthAlong(tree, source, planning::endLocation(tree, end));
-                if (length > farthest) {
-                    farthest = length;
-                    to_ = end;
-                }
-            } catch (const InvalidArgumentError&) {
-                // an end no branch reaches: not a path's end
-            }
-        }
+    if (analysis_) {
+        // The source to the end farthest from it: the main vessel, the path
+        // a planner measures first.
+        to_ = planning::farthestEnd(analysis_->tree);
         if (to_ > 0) {
-            path_ = planning::VesselPath::betweenEnds(tree, 0, to_);
+            path_ = planning::VesselPath::betweenEnds(analysis_->tree, 0, to_);
             rebuildProfile();
+        } else {
+            to_ = 0;
         }
     }
     emit analysisChanged();

@@ -179,6 +179,26 @@ VesselPath VesselPath::between(const CenterlineTree& tree, const TreeLocation& f
     return path;
 }
 
+int farthestEnd(const CenterlineTree& tree) {
+    if (tree.ends.size() < 2 || tree.branches.empty()) {
+        return -1;
+    }
+    const TreeLocation source = endLocation(tree, 0);
+    int best = -1;
+    double farthest = -1.0;
+    for (const auto& branch : tree.branches) {
+        if (branch.endIndex <= 0) {
+            continue;  // ends at a bifurcation, or at the source
+        }
+        const double length = lengthAlong(tree, source, endLocation(tree, branch.endIndex));
+        if (length > farthest) {
+            farthest = length;
+            best = branch.endIndex;
+        }
+    }
+    return best;
+}
+
 VesselPath VesselPath::betweenEnds(const CenterlineTree& tree, int fromEnd, int toEnd) {
     if (fromEnd == toEnd) {
         throw InvalidArgumentError("centrelines: a path needs two different ends (both are end " +

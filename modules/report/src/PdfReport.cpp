@@ -15,6 +15,7 @@
 #include <utility>
 #include <vector>
 
+#include "MeasurementFigures.h"
 #include "PdfFlow.h"
 #include "ReportText.h"
 #include "vv/Version.h"
@@ -189,6 +190,16 @@ void measurementSection(Flow& flow, const ReportMeasurementSection& section) {
         flow.paragraph(qs(t.title), font(9.5, true), pdf::kInk, mm(1.5));
         table.draw(flow);
     }
+    if (first && (section.profile || section.reformation || !section.sections.empty())) {
+        flow.heading(ReportText::tr("Measurements"), mm(70.0));
+    }
+    if (section.profile) {
+        figures::profileFigure(flow, *section.profile);
+    }
+    if (section.reformation) {
+        figures::reformationFigure(flow, *section.reformation);
+    }
+    figures::sectionFigures(flow, section.sections);
 }
 
 QString solverName(vss::SolverKind kind) {

@@ -64,6 +64,11 @@ struct NearestLocation {
 /// of range or one no branch reaches.
 [[nodiscard]] TreeLocation endLocation(const analysis::CenterlineTree& tree, int end);
 
+/// The end farthest from the source (end 0) along the centrelines: where the
+/// path a planner measures first (the main vessel) runs to. -1 for a tree
+/// with fewer than two ends or none reached by a branch.
+[[nodiscard]] int farthestEnd(const analysis::CenterlineTree& tree);
+
 /// One branch's part of a path: from abscissa `fromMm` to `toMm` of the
 /// branch (fromMm > toMm: the path runs against the branch, towards the
 /// source).

@@ -4,7 +4,9 @@
 #include <QByteArray>
 #include <QDateTime>
 #include <QImage>
+#include <array>
 #include <filesystem>
+#include <glm/vec2.hpp>
 #include <optional>
 #include <string>
 #include <utility>
@@ -104,10 +106,65 @@ struct MeasurementTable {
     std::string note;  ///< under it (the definitions of its values)
 };
 
+/// A place marked along a profile or a reformation: a landmark (its name)
+/// or a stenosis (its percent).
+struct PathMark {
+    double pathMm = 0.0;
+    std::string label;
+};
+
+/// The diameter profile along a path, drawn as a chart: each series against
+/// the distance along the path, a gap where a value is NaN (no section
+/// measures the vessel there), the landmarks as dashed vertical lines with
+/// their names, the stenoses as marks with their percent.
+struct ProfileFigure {
+    std::string title;  ///< above it
+    std::string note;   ///< under it: what the lines are
+    double lengthMm = 0.0;
+    std::vector<double> pathMm;
+    struct Series {
+        std::string name;            ///< in the legend
+        std::vector<double> values;  ///< one per pathMm, mm; NaN = a gap
+    };
+    /// Drawn in the report's colours in order: equivalent, minimum, maximum.
+    std::vector<Series> series;
+    std::vector<PathMark> landmarks;
+    std::vector<PathMark> stenoses;
+    std::string xTitle;  ///< "Distance along the path (mm)"
+    std::string yTitle;  ///< "Diameter (mm)"
+};
+
+/// A cross-section at a landmark: the lumen contour and the calipers of its
+/// minimum and maximum diameter, in the section's plane ((u, v) mm about the
+/// centreline point, v up), over the volume resliced there when there is one.
+struct SectionFigure {
+    std::string title;    ///< the landmark's name
+    std::string caption;  ///< its sizes in words
+    std::vector<glm::dvec2> contour;
+    std::optional<std::array<glm::dvec2, 2>> minCaliper;
+    std::optional<std::array<glm::dvec2, 2>> maxCaliper;
+    double fieldMm = 40.0;  ///< the square's side
+    QImage image;           ///< optional: the resliced volume over that square
+};
+
+/// The stretched curved reformation along the path: the path straight along
+/// x (0 .. lengthMm), across it +-halfWidthMm; the landmarks marked.
+struct ReformationFigure {
+    QImage image;
+    double lengthMm = 0.0;
+    double halfWidthMm = 0.0;
+    std::vector<PathMark> landmarks;
+    std::string caption;
+};
+
 /// The planning measurements (issue 35): the landmarks, the lengths between
-/// them, the aortic sizing table, the branches.
+/// them, the aortic sizing table, the branches; the diameter profile, the
+/// curved reformation and the cross-section at each landmark.
 struct ReportMeasurementSection {
     std::vector<MeasurementTable> tables;
+    std::optional<ProfileFigure> profile;
+    std::optional<ReformationFigure> reformation;
+    std::vector<SectionFigure> sections;
 };
 
 /// The report's title when none is given: "Vessel tree report", translated.
