@@ -325,13 +325,8 @@ void MainWindow::buildFileMenu() {
         }
         // The findings of the data's last report (or Send to PACS) to start from.
         dialog->findingsEdit()->setPlainText(document_->findings());
-        if (planning_->hasAnalysis()) {
-            try {
-                PlanningReport planned = planningReport(*planning_, *reformation_, *crossSection_);
-                dialog->setMeasurements(std::move(planned.section), std::move(planned.groups));
-            } catch (const vv::Error& e) {
-                statusLabel_->setText(describeProblem(e, FileAccess::Writing).line());
-            }
+        if (auto planned = plannedReport()) {
+            dialog->setMeasurements(std::move(planned->section), std::move(planned->groups));
         }
         connect(
             dialog, &ReportDialog::exportStarted, document_, [this, dialog](ExportWorker* worker) {
@@ -547,6 +542,18 @@ void MainWindow::buildPlanning() {
             &QPushButton::click);
     connect(analysisPanel_, &panels::AnalysisPanel::statusMessage, this,
             [this](const QString& message) { statusLabel_->setText(message); });
+}
+
+std::optional<PlanningReport> MainWindow::plannedReport() {
+    if (!planning_->hasAnalysis()) {
+        return std::nullopt;
+    }
+    try {
+        return planningReport(*planning_, *reformation_, *crossSection_);
+    } catch (const vv::Error& e) {
+        statusLabel_->setText(describeProblem(e, FileAccess::Writing).line());
+        return std::nullopt;
+    }
 }
 
 void MainWindow::buildToolBar() {

@@ -16,6 +16,7 @@
 #include "gui/Session.h"
 #include "gui/SliceWorkspace.h"
 #include "gui/ViewerWidget.h"
+#include "gui/analysis/PlanningReport.h"
 #include "vv/report/ReportJob.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
@@ -202,6 +203,10 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] CurvedReformation* curvedReformation() const noexcept { return reformation_; }
     [[nodiscard]] CrossSectionView* crossSection() const noexcept { return crossSection_; }
     [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept { return profileDock_; }
+    /// The planning work for a report or a PACS (planningReport()); nullopt
+    /// without an analysis, or when it cannot be put together (the status
+    /// bar says why).
+    [[nodiscard]] std::optional<PlanningReport> plannedReport();
     /// The side panel (scrolls vertically; its sections hold the panels).
     [[nodiscard]] panels::SidePanel* sidePanel() const noexcept { return sidePanel_; }
     /// Shows the side panel and opens and scrolls to the section holding

@@ -44,11 +44,13 @@
 #include "gui/MainWindow.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
+#include "gui/analysis/PlanningState.h"
 #include "gui/pacs/ListenerService.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/PacsSettings.h"
 #include "gui/pacs/SendDialog.h"
 #include "gui/pacs/StoreLeases.h"
+#include "gui/panels/AnalysisPanel.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/SeriesWriter.h"
@@ -663,6 +665,60 @@ TEST_F(PacsGuiTest, TheAppliedSegmentationIsSentNeverAPreview) {
     std::string text;
     ASSERT_EQ(vv::report::test::runTool("pdftotext '" + pdf.string() + "' -", text), 0) << text;
     EXPECT_NE(text.find("chosen in the Segmentation panel"), std::string::npos) << text;
+}
+
+TEST_F(PacsGuiTest, TheMeasurementsGoToThePacsAsAStructuredReportInTheSeriesStudy) {
+    restartWith(settings(false));
+    const fs::path cta = testDir() / "cta-measurements";
+    writeCta(cta, "VV-GUI-SR", "Measured CTA");
+    ASSERT_TRUE(
+        openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
+    // Without centrelines there is nothing to send as measurements.
+    {
+        QAction* action = window_->findChild<QAction*>(QStringLiteral("sendToPacs"));
+        action->trigger();
+        auto* before = window_->findChild<SendDialog*>();
+        ASSERT_NE(before, nullptr);
+        EXPECT_FALSE(before->measurementsBox()->isEnabled());
+        EXPECT_FALSE(before->measurementsBox()->isChecked());
+        delete before;
+    }
+    vv::gui::panels::AnalysisPanel* analysis = window_->analysisPanel();
+    analysis->findCenterlines();
+    ASSERT_TRUE(waitUntil([&] { return !analysis->analysing(); }, 120000));
+    ASSERT_TRUE(window_->planning()->hasAnalysis());
+    window_->planning()->setCursorMm(window_->planning()->path().lengthMm() / 3.0);
+    ASSERT_GE(window_->planning()->placeLandmarkAtCursor(vv::planning::LandmarkKind::Free,
+                                                         QStringLiteral("Proximal landing")),
+              0);
+    SendDialog* dialog = sendReport([](SendDialog& send) {
+        EXPECT_TRUE(send.measurementsBox()->isEnabled());
+        EXPECT_TRUE(send.measurementsBox()->isChecked());
+        send.secondaryCaptureBox()->setChecked(false);
+        send.pdfBox()->setChecked(false);
+        send.segmentationBox()->setChecked(false);
+    });
+    ASSERT_NE(dialog, nullptr);
+    const QString peer = QString::fromStdString(vv::pacs::describe(orthanc_->node()));
+    EXPECT_EQ(dialog->summaryLabel()->text(), QStringLiteral("1 of 1 accepted by %1").arg(peer));
+    ASSERT_EQ(dialog->resultTable()->topLevelItemCount(), 1);
+    EXPECT_EQ(dialog->resultTable()->topLevelItem(0)->text(0),
+              QStringLiteral("Measurements (DICOM Structured Report)"));
+
+    // Orthanc has it as an SR in the CTA's study, with the landmark's sizes.
+    vv::pacs::StudyQuery query;
+    query.patientId = "VV-GUI-SR";
+    const auto studies = vv::pacs::findStudies(me(), orthanc_->node(), query);
+    ASSERT_EQ(studies.size(), 1U);
+    const fs::path srFile =
+        retrievedInstance(studies[0].studyInstanceUid, "SR", testDir() / "sr-retrieved");
+    ASSERT_FALSE(srFile.empty());
+    std::string dump;
+    ASSERT_EQ(vv::report::test::runTool("dsrdump +Pl '" + srFile.string() + "'", dump), 0) << dump;
+    EXPECT_NE(dump.find("\"Proximal landing\""), std::string::npos) << dump;
+    EXPECT_NE(dump.find("Equivalent diameter (2 sqrt(area / pi)), at Proximal landing"),
+              std::string::npos)
+        << dump;
 }
 
 TEST_F(PacsGuiTest, TheReportExportedLastIsSentAsItIs) {

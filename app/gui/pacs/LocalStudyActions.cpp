@@ -55,6 +55,9 @@ void showSendDialog(MainWindow& window) {
     const DocumentController::ExportedReport exported = document->exportedReport();
     dialog->setExportedReport(exported.pdf, exported.findings);
     dialog->setSegmentation(document->labelMap());
+    if (const auto planned = window.plannedReport()) {
+        dialog->setMeasurements(planned->section, planned->groups);
+    }
     QObject::connect(dialog, &SendDialog::findingsEdited, document,
                      &DocumentController::setFindings);
     // A segmentation preview on screen that was not applied is never sent.

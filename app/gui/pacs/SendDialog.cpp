@@ -51,6 +51,8 @@ QString itemName(SendKind kind) {
             return SendDialog::tr("Report image (Secondary Capture)");
         case SendKind::EncapsulatedPdf:
             return SendDialog::tr("Report PDF (Encapsulated PDF)");
+        case SendKind::MeasurementReport:
+            return SendDialog::tr("Measurements (DICOM Structured Report)");
         case SendKind::Segmentation:
             break;
     }
@@ -117,10 +119,14 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     seg_ = new QCheckBox(tr("The segmentation (DICOM SEG)"), this);
     seg_->setObjectName(QStringLiteral("sendSegmentation"));
     seg_->setToolTip(tr("Only for data opened from DICOM and segmented"));
+    sr_ = new QCheckBox(tr("The measurements (DICOM Structured Report)"), this);
+    sr_->setObjectName(QStringLiteral("sendMeasurements"));
+    sr_->setToolTip(tr("Find the centrelines first (Analysis panel)"));
     auto* what = new QVBoxLayout;
     what->addWidget(sc_);
     what->addWidget(pdf_);
     what->addWidget(seg_);
+    what->addWidget(sr_);
     auto* form = new QFormLayout;
     form->addRow(tr("Data:"), data_);
     form->addRow(tr("&Report:"), reportChoice_);
@@ -160,6 +166,7 @@ SendDialog::SendDialog(const ViewerWidget& viewer, report::ReportSource source,
     connect(sc_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
     connect(pdf_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
     connect(seg_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
+    connect(sr_, &QCheckBox::toggled, this, &SendDialog::updateButtons);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
@@ -247,6 +254,17 @@ void SendDialog::setSegmentation(std::shared_ptr<const scene::LabelMap> labelMap
     updateButtons();
 }
 
+void SendDialog::setMeasurements(report::ReportMeasurementSection section,
+                                 std::vector<dicom::SrGroup> groups) {
+    measurements_ = std::move(section);
+    measurementGroups_ = std::move(groups);
+    sr_->setChecked(!measurementGroups_.empty());
+    sr_->setToolTip(
+        tr("The landmarks' sections, the lengths, the sizing table and the branches "
+           "as a TID 1500 Measurement Report, read as data by a PACS"));
+    updateButtons();
+}
+
 void SendDialog::setBlocked(const QString& reason) {
     blocked_ = reason;
     send_->setToolTip(reason);
@@ -256,8 +274,9 @@ void SendDialog::setBlocked(const QString& reason) {
 void SendDialog::updateButtons() {
     const bool sending = worker_ != nullptr;
     const bool segmentation = labelMap_ != nullptr && seg_->isChecked();
+    const bool measurements = !measurementGroups_.empty() && sr_->isChecked();
     send_->setEnabled(!sending && blocked_.isEmpty() && node_->count() > 0 &&
-                      (sc_->isChecked() || pdf_->isChecked() || segmentation));
+                      (sc_->isChecked() || pdf_->isChecked() || segmentation || measurements));
     node_->setEnabled(!sending);
     const bool exported = !reportChoice_->currentData().toString().isEmpty();
     reportChoice_->setEnabled(!sending);
@@ -267,6 +286,7 @@ void SendDialog::updateButtons() {
     sc_->setEnabled(!sending);
     pdf_->setEnabled(!sending);
     seg_->setEnabled(!sending && labelMap_ != nullptr);
+    sr_->setEnabled(!sending && !measurementGroups_.empty());
     close_->setText(sending ? tr("Cancel") : tr("Close"));
 }
 
@@ -295,6 +315,11 @@ void SendDialog::send() {
     job.source = source_;
     request.secondaryCapture = sc_->isChecked();
     request.encapsulatedPdf = pdf_->isChecked();
+    if (measurements_) {
+        job.measurements = measurements_;  // a new report shows them too
+        job.measurementGroups = measurementGroups_;
+        request.measurementReport = sr_->isChecked();
+    }
     if (labelMap_ != nullptr && seg_->isChecked()) {
         request.segmentation = labelMap_;
     }

@@ -92,6 +92,13 @@ class SendDialog : public QDialog {
     [[nodiscard]] QCheckBox* secondaryCaptureBox() const noexcept { return sc_; }
     [[nodiscard]] QCheckBox* pdfBox() const noexcept { return pdf_; }
     [[nodiscard]] QCheckBox* segmentationBox() const noexcept { return seg_; }
+    /// The planning measurements as a DICOM SR (enabled by setMeasurements()).
+    [[nodiscard]] QCheckBox* measurementsBox() const noexcept { return sr_; }
+    /// The planning measurements of the scene (the Analysis panel's): the
+    /// new report's Measurements section and the SR's groups; checks the
+    /// measurements box. Without them the box is off and says why.
+    void setMeasurements(report::ReportMeasurementSection section,
+                         std::vector<dicom::SrGroup> groups);
     [[nodiscard]] QPushButton* sendButton() const noexcept { return send_; }
     [[nodiscard]] QProgressBar* progressBar() const noexcept { return progress_; }
     /// One top-level row per instance: what it is, and the node's answer.
@@ -142,6 +149,9 @@ class SendDialog : public QDialog {
     QCheckBox* sc_ = nullptr;
     QCheckBox* pdf_ = nullptr;
     QCheckBox* seg_ = nullptr;
+    QCheckBox* sr_ = nullptr;
+    std::optional<report::ReportMeasurementSection> measurements_;
+    std::vector<dicom::SrGroup> measurementGroups_;
     std::shared_ptr<const scene::LabelMap> labelMap_;
     QPushButton* send_ = nullptr;
     QPushButton* close_ = nullptr;

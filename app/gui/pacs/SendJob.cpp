@@ -58,13 +58,20 @@ SendOutcome runSendJob(render::OffscreenRenderer& renderer, const scene::Scene& 
         job.outputs.dicomPdf = request.folder / "report-pdf.dcm";
         outcome.items.push_back({SendKind::EncapsulatedPdf, job.outputs.dicomPdf});
     }
+    if (request.measurementReport) {
+        if (job.measurementGroups.empty()) {
+            throw InvalidArgumentError("no measurements to send: find the centrelines first");
+        }
+        job.outputs.dicomSr = request.folder / "measurements-sr.dcm";
+        outcome.items.push_back({SendKind::MeasurementReport, job.outputs.dicomSr});
+    }
     if (request.segmentation) {
         outcome.items.push_back({SendKind::Segmentation, request.folder / "segmentation.dcm"});
     }
     if (outcome.items.empty()) {
         throw InvalidArgumentError("nothing to send: choose the report or the segmentation");
     }
-    if (request.secondaryCapture || request.encapsulatedPdf) {
+    if (request.secondaryCapture || request.encapsulatedPdf || request.measurementReport) {
         (void)report::runReportJob(renderer, scene, job, progress.sub(0.0, kSegmentationStart));
     }
     if (request.segmentation) {

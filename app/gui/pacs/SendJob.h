@@ -21,7 +21,7 @@
 namespace vv::gui {
 
 /// One DICOM instance the job makes and sends.
-enum class SendKind { SecondaryCapture, EncapsulatedPdf, Segmentation };
+enum class SendKind { SecondaryCapture, EncapsulatedPdf, Segmentation, MeasurementReport };
 
 struct SendItem {
     SendKind kind;
@@ -39,6 +39,9 @@ struct SendRequest {
     /// The segmentation of a DICOM scene as DICOM SEG, in the source series'
     /// study and frame of reference (report.source names the series).
     std::shared_ptr<const scene::LabelMap> segmentation;
+    /// The planning measurements (report.measurementGroups) as a DICOM TID
+    /// 1500 Structured Report, in the source series' study when it has one.
+    bool measurementReport = false;
     std::string softwareVersion;  ///< of the SEG's equipment module
     pacs::LocalAe me;
     pacs::Node node;

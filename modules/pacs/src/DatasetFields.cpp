@@ -90,6 +90,7 @@ const std::vector<const char*>& usableStorageClasses() {
         UID_SecondaryCaptureImageStorage,
         UID_EncapsulatedPDFStorage,
         UID_SegmentationStorage,
+        UID_EnhancedSRStorage,  // the planning measurements (TID 1500)
     };
     return classes;
 }

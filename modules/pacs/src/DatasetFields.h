@@ -30,7 +30,8 @@ InstanceFields fieldsOfFile(const std::filesystem::path& path, const std::string
 void writeInstance(DcmDataset& dataset, const std::filesystem::path& path);
 
 /// The storage SOP classes VesselView opens or produces: CT, enhanced CT, MR,
-/// enhanced MR, X-ray angiography, Secondary Capture, Encapsulated PDF, Segmentation.
+/// enhanced MR, X-ray angiography, Secondary Capture, Encapsulated PDF,
+/// Segmentation, Enhanced SR (the measurement reports).
 const std::vector<const char*>& usableStorageClasses();
 
 /// The transfer syntaxes we receive: explicit / implicit little endian, and
