@@ -23,28 +23,12 @@
 <context>
     <name>vv::app::MeasurementText</name>
     <message>
-        <source>Equivalent diameter: 2√(area/π) of the lumen section perpendicular to the centreline; minimum and maximum: its smallest and largest caliper (Feret) width. Lengths along the centreline unless marked straight.</source>
-        <translation>Äquivalenter Durchmesser: 2√(Fläche/π) des Lumenquerschnitts senkrecht zur Mittellinie; minimaler und maximaler Durchmesser: seine kleinste und größte Messschieber-(Feret-)Breite. Längen entlang der Mittellinie, sofern nicht als gerade bezeichnet.</translation>
-    </message>
-    <message>
         <source>Landmarks</source>
         <translation>Landmarken</translation>
     </message>
     <message>
         <source>Landmark</source>
         <translation>Landmarke</translation>
-    </message>
-    <message>
-        <source>Equivalent diameter</source>
-        <translation>Äquivalenter Durchmesser</translation>
-    </message>
-    <message>
-        <source>Minimum diameter</source>
-        <translation>Minimaler Durchmesser</translation>
-    </message>
-    <message>
-        <source>Maximum diameter</source>
-        <translation>Maximaler Durchmesser</translation>
     </message>
     <message>
         <source>Area</source>
@@ -245,6 +229,54 @@
     <message>
         <source>not graded: too few sections measure the branch, or it has no healthy reference</source>
         <translation>nicht bewertet: zu wenige Querschnitte messen den Ast, oder er hat keine gesunde Referenz</translation>
+    </message>
+    <message>
+        <source>Minimum %1, maximum %2, equivalent %3</source>
+        <translation>Minimum %1, Maximum %2, Äquivalent %3</translation>
+    </message>
+    <message>
+        <source>Diameter profile along the path (%1 long)</source>
+        <translation>Durchmesserprofil entlang des Pfads (%1 lang)</translation>
+    </message>
+    <message>
+        <source>Solid: equivalent diameter; dashed: minimum and maximum caliper diameter. Gaps: no section measures the vessel there (an end, a junction). Marked: narrowings of %1 or more in diameter.</source>
+        <translation>Durchgezogen: Äquivalentdurchmesser; gestrichelt: minimaler und maximaler Messschieberdurchmesser. Lücken: Dort misst kein Schnitt das Gefäß (ein Ende, eine Verzweigung). Markiert: Einengungen ab %1 im Durchmesser.</translation>
+    </message>
+    <message>
+        <source>Distance along the path (mm)</source>
+        <translation>Abstand entlang des Pfads (mm)</translation>
+    </message>
+    <message>
+        <source>Diameter (mm)</source>
+        <translation>Durchmesser (mm)</translation>
+    </message>
+    <message>
+        <source>Equivalent</source>
+        <translation>Äquivalent</translation>
+    </message>
+    <message>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>Ø: diameter. Equivalent Ø: 2√(area/π) of the lumen section perpendicular to the centreline; minimum and maximum Ø: its smallest and largest caliper (Feret) width. Lengths along the centreline unless marked straight.</source>
+        <translation>Ø: Durchmesser. Äquivalenter Ø: 2√(Fläche/π) des Lumenquerschnitts senkrecht zur Mittellinie; minimaler und maximaler Ø: seine kleinste und größte Messschieber-(Feret-)Breite. Längen entlang der Mittellinie, sofern nicht als gerade bezeichnet.</translation>
+    </message>
+    <message>
+        <source>Equivalent Ø</source>
+        <translation>Äquivalenter Ø</translation>
+    </message>
+    <message>
+        <source>Minimum Ø</source>
+        <translation>Minimaler Ø</translation>
+    </message>
+    <message>
+        <source>Maximum Ø</source>
+        <translation>Maximaler Ø</translation>
     </message>
 </context>
 <context>
@@ -553,6 +585,110 @@
     </message>
 </context>
 <context>
+    <name>vv::gui::AnalysisTask</name>
+    <message>
+        <source>The scene has no vessel surface to analyse.</source>
+        <translation>Die Szene hat keine Gefäßoberfläche, die analysiert werden kann.</translation>
+    </message>
+    <message>
+        <source>The surface cannot be analysed.</source>
+        <translation>Die Oberfläche kann nicht analysiert werden.</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::CrossSectionView</name>
+    <message>
+        <source>The section perpendicular to the path at the cursor; the wheel or the arrow keys move along the path</source>
+        <translation>Der Schnitt senkrecht zum Pfad am Cursor; Mausrad oder Pfeiltasten bewegen ihn entlang des Pfads</translation>
+    </message>
+    <message>
+        <source>No closed lumen contour here</source>
+        <translation>Hier keine geschlossene Lumenkontur</translation>
+    </message>
+    <message>
+        <source>Minimum %1, maximum %2</source>
+        <translation>Minimum %1, Maximum %2</translation>
+    </message>
+    <message>
+        <source>Equivalent %1, area %2</source>
+        <translation>Äquivalent %1, Fläche %2</translation>
+    </message>
+    <message>
+        <source>At an end or a junction: not a vessel size</source>
+        <translation>An einem Ende oder einer Verzweigung: keine Gefäßgröße</translation>
+    </message>
+    <message>
+        <source>Find the centrelines to see the cross-section</source>
+        <translation>Finden Sie die Mittellinien, um den Querschnitt zu sehen</translation>
+    </message>
+    <message>
+        <source>%1 along the path</source>
+        <translation>%1 entlang des Pfads</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::CurvedReformation</name>
+    <message>
+        <source>The volume along the path, straightened (distances true along it); a click moves the cursor</source>
+        <translation>Das Volumen entlang des Pfads, gestreckt (Abstände entlang des Pfads maßstabsgetreu); ein Klick bewegt den Cursor</translation>
+    </message>
+    <message>
+        <source>Rotation about the path</source>
+        <translation>Drehung um den Pfad</translation>
+    </message>
+    <message>
+        <source>Find the centrelines to see the curved reformation</source>
+        <translation>Finden Sie die Mittellinien, um die gekrümmte Reformation zu sehen</translation>
+    </message>
+    <message>
+        <source>The curved reformation needs an image series</source>
+        <translation>Die gekrümmte Reformation braucht eine Bildserie</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::DiameterProfile</name>
+    <message>
+        <source>Find the centrelines to see the diameter profile</source>
+        <translation>Finden Sie die Mittellinien, um das Durchmesserprofil zu sehen</translation>
+    </message>
+    <message>
+        <source>Diameters along the path: %1 → %2</source>
+        <translation>Durchmesser entlang des Pfads: %1 → %2</translation>
+    </message>
+    <message>
+        <source>Distance along the path (mm)</source>
+        <translation>Abstand entlang des Pfads (mm)</translation>
+    </message>
+    <message>
+        <source>Area (mm²)</source>
+        <translation>Fläche (mm²)</translation>
+    </message>
+    <message>
+        <source>Area</source>
+        <translation>Fläche</translation>
+    </message>
+    <message>
+        <source>Minimum</source>
+        <translation>Minimum</translation>
+    </message>
+    <message>
+        <source>Maximum</source>
+        <translation>Maximum</translation>
+    </message>
+    <message>
+        <source>Equivalent</source>
+        <translation>Äquivalent</translation>
+    </message>
+    <message>
+        <source>Stenosis</source>
+        <translation>Stenose</translation>
+    </message>
+    <message>
+        <source>Ø (mm)</source>
+        <translation>Ø (mm)</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::DicomMenu</name>
     <message>
         <source>&amp;DICOM</source>
@@ -794,6 +930,34 @@
     <message>
         <source>Checking the segmentation&apos;s ends</source>
         <translation>Enden der Segmentierung werden geprüft</translation>
+    </message>
+    <message>
+        <source>Preparing the surface</source>
+        <translation>Oberfläche wird vorbereitet</translation>
+    </message>
+    <message>
+        <source>Tetrahedralising the surface</source>
+        <translation>Oberfläche wird tetraedrisiert</translation>
+    </message>
+    <message>
+        <source>Joining the Voronoi diagram</source>
+        <translation>Voronoi-Diagramm wird zusammengefügt</translation>
+    </message>
+    <message>
+        <source>Finding the vessels&apos; ends</source>
+        <translation>Gefäßenden werden gesucht</translation>
+    </message>
+    <message>
+        <source>Tracing the centrelines</source>
+        <translation>Mittellinien werden verfolgt</translation>
+    </message>
+    <message>
+        <source>Centrelines done</source>
+        <translation>Mittellinien fertig</translation>
+    </message>
+    <message>
+        <source>Cutting the sections</source>
+        <translation>Querschnitte werden gelegt</translation>
     </message>
 </context>
 <context>
@@ -1671,6 +1835,18 @@ Ersetzen?</translation>
         <source>Smoothed up close: wall ≤ %1 mm</source>
         <translation>Aus der Nähe geglättet: Wand ≤ %1 mm</translation>
     </message>
+    <message>
+        <source>Analysis</source>
+        <translation>Gefäßanalyse</translation>
+    </message>
+    <message>
+        <source>Along the Path</source>
+        <translation>Entlang des Pfads</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -2330,6 +2506,32 @@ Ersetzen?</translation>
     </message>
 </context>
 <context>
+    <name>vv::gui::PlanningReport</name>
+    <message>
+        <source>Curved reformation along the path (stretched: the path straight, distances true along it), turned %1° about the path; window width %2, level %3.</source>
+        <translation>Gekrümmte Reformation entlang des Pfads (gestreckt: der Pfad gerade, Abstände entlang des Pfads maßstabsgetreu), um %1° um den Pfad gedreht; Fensterbreite %2, Fenstermitte %3.</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::PlanningState</name>
+    <message>
+        <source>Branch %1</source>
+        <translation>Ast %1</translation>
+    </message>
+    <message>
+        <source>Start (%1)</source>
+        <translation>Anfang (%1)</translation>
+    </message>
+    <message>
+        <source>End %1 (%2)</source>
+        <translation>Ende %1 (%2)</translation>
+    </message>
+    <message>
+        <source>End %1</source>
+        <translation>Ende %1</translation>
+    </message>
+</context>
+<context>
     <name>vv::gui::ReportDialog</name>
     <message>
         <source>Export Report</source>
@@ -2559,6 +2761,26 @@ Ersetzen?</translation>
         <source>The %1 &quot;%2&quot; is not a date: enter it as %3 (for example %4).</source>
         <translation>„%2“ ist kein gültiges Datum (%1): bitte als %3 eingeben (zum Beispiel %4).</translation>
     </message>
+    <message>
+        <source>I&amp;nclude them</source>
+        <translation>Ei&amp;nschließen</translation>
+    </message>
+    <message>
+        <source>The sizing and branch tables, the diameter profile, the curved reformation and the cross-section at each landmark (Analysis panel)</source>
+        <translation>Die Größen- und Asttabellen, das Durchmesserprofil, die gekrümmte Reformation und der Querschnitt an jeder Landmarke (Bereich Gefäßanalyse)</translation>
+    </message>
+    <message>
+        <source>Measurements:</source>
+        <translation>Messungen:</translation>
+    </message>
+    <message>
+        <source>DICOM St&amp;ructured Report (measurements)</source>
+        <translation>Strukturierter DICOM-Be&amp;richt (Messungen)</translation>
+    </message>
+    <message>
+        <source>The measurements as a DICOM TID 1500 Measurement Report, read as data by a PACS and other viewers</source>
+        <translation>Die Messungen als DICOM-TID-1500-Messbericht, den ein PACS und andere Betrachter als Daten lesen</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::ScreenshotMode</name>
@@ -2748,6 +2970,22 @@ Ersetzen?</translation>
     <message>
         <source>The transfer to %1 failed: the PACS closed the connection or reported a failure. The table says what was accepted before. Try again; if it keeps happening, ask the PACS administrator.</source>
         <translation>Die Übertragung an %1 ist fehlgeschlagen: Das PACS hat die Verbindung geschlossen oder einen Fehler gemeldet. Die Tabelle zeigt, was vorher angenommen wurde. Versuchen Sie es erneut; wenn es wieder geschieht, wenden Sie sich an die PACS-Administration.</translation>
+    </message>
+    <message>
+        <source>Measurements (DICOM Structured Report)</source>
+        <translation>Messungen (strukturierter DICOM-Bericht)</translation>
+    </message>
+    <message>
+        <source>The measurements (DICOM Structured Report)</source>
+        <translation>Die Messungen (strukturierter DICOM-Bericht)</translation>
+    </message>
+    <message>
+        <source>Find the centrelines first (Analysis panel)</source>
+        <translation>Finden Sie zuerst die Mittellinien (Bereich Gefäßanalyse)</translation>
+    </message>
+    <message>
+        <source>The landmarks&apos; sections, the lengths, the sizing table and the branches as a TID 1500 Measurement Report, read as data by a PACS</source>
+        <translation>Die Querschnitte der Landmarken, die Längen, die Größentabelle und die Äste als TID-1500-Messbericht, den ein PACS als Daten liest</translation>
     </message>
 </context>
 <context>
@@ -3464,6 +3702,241 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>%1: %2 mm</source>
         <translation>%1: %2 mm</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::panels::AnalysisPanel</name>
+    <message>
+        <source>Find Centrelines</source>
+        <translation>Mittellinien finden</translation>
+    </message>
+    <message>
+        <source>Compute the centrelines of the shown surface, their cross-sections and stenoses</source>
+        <translation>Berechnet die Mittellinien der gezeigten Oberfläche, ihre Querschnitte und Stenosen</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Abbrechen</translation>
+    </message>
+    <message>
+        <source>Branch</source>
+        <translation>Ast</translation>
+    </message>
+    <message>
+        <source>Stenosis</source>
+        <translation>Stenose</translation>
+    </message>
+    <message>
+        <source>The narrowest point of each branch against its reference diameter (hover a row for how the reference was found)</source>
+        <translation>Die engste Stelle jedes Asts gegen seinen Referenzdurchmesser (wie die Referenz gefunden wurde: Maus auf die Zeile)</translation>
+    </message>
+    <message>
+        <source>Reference:</source>
+        <translation>Referenz:</translation>
+    </message>
+    <message>
+        <source>Proximal</source>
+        <translation>Proximal</translation>
+    </message>
+    <message>
+        <source>Grade the branch at the cursor against the diameter here (proximal reference) and at its distal reference</source>
+        <translation>Den Ast am Cursor gegen den Durchmesser hier (proximale Referenz) und an seiner distalen Referenz graduieren</translation>
+    </message>
+    <message>
+        <source>Distal</source>
+        <translation>Distal</translation>
+    </message>
+    <message>
+        <source>Grade the branch at the cursor against the diameter here (distal reference) and at its proximal reference</source>
+        <translation>Den Ast am Cursor gegen den Durchmesser hier (distale Referenz) und an seiner proximalen Referenz graduieren</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatisch</translation>
+    </message>
+    <message>
+        <source>Grade the branch at the cursor against healthy stretches either side of its narrowest point</source>
+        <translation>Den Ast am Cursor gegen gesunde Abschnitte beiderseits seiner engsten Stelle graduieren</translation>
+    </message>
+    <message>
+        <source>The branch cannot be graded against a reference here</source>
+        <translation>Der Ast kann hier nicht gegen eine Referenz graduiert werden</translation>
+    </message>
+    <message>
+        <source>Path from:</source>
+        <translation>Pfad von:</translation>
+    </message>
+    <message>
+        <source>to:</source>
+        <translation>bis:</translation>
+    </message>
+    <message>
+        <source>Pick on Vessel</source>
+        <translation>Am Gefäß wählen</translation>
+    </message>
+    <message>
+        <source>Click a vessel in the 3-D view: the cursor moves to the path there</source>
+        <translation>Klicken Sie in der 3D-Ansicht auf ein Gefäß: Der Cursor springt dort auf den Pfad</translation>
+    </message>
+    <message>
+        <source>A path needs two different ends</source>
+        <translation>Ein Pfad braucht zwei verschiedene Enden</translation>
+    </message>
+    <message>
+        <source>Free name</source>
+        <translation>Freier Name</translation>
+    </message>
+    <message>
+        <source>Name</source>
+        <translation>Name</translation>
+    </message>
+    <message>
+        <source>Place at Cursor</source>
+        <translation>Am Cursor setzen</translation>
+    </message>
+    <message>
+        <source>Place the landmark at the cursor (Insert in the diameter profile)</source>
+        <translation>Die Landmarke am Cursor setzen (Einfg im Durchmesserprofil)</translation>
+    </message>
+    <message>
+        <source>Landmark:</source>
+        <translation>Landmarke:</translation>
+    </message>
+    <message>
+        <source>Name:</source>
+        <translation>Name:</translation>
+    </message>
+    <message>
+        <source>Landmark</source>
+        <translation>Landmarke</translation>
+    </message>
+    <message>
+        <source>Select a landmark to move it: Ctrl+Left / Ctrl+Right in the diameter profile, or drag its line there</source>
+        <translation>Wählen Sie eine Landmarke, um sie zu verschieben: Strg+Links / Strg+Rechts im Durchmesserprofil, oder ziehen Sie dort ihre Linie</translation>
+    </message>
+    <message>
+        <source>Move to Cursor</source>
+        <translation>Zum Cursor</translation>
+    </message>
+    <message>
+        <source>Remove</source>
+        <translation>Entfernen</translation>
+    </message>
+    <message>
+        <source>Save Measurements…</source>
+        <translation>Messungen speichern…</translation>
+    </message>
+    <message>
+        <source>A measurement file for the report (vesselview-cli report --measurements) and other programs</source>
+        <translation>Eine Messdatei für den Bericht (vesselview-cli report --measurements) und andere Programme</translation>
+    </message>
+    <message>
+        <source>Export Sections…</source>
+        <translation>Querschnitte exportieren…</translation>
+    </message>
+    <message>
+        <source>The cross-sections along the path as CSV</source>
+        <translation>Die Querschnitte entlang des Pfads als CSV</translation>
+    </message>
+    <message>
+        <source>A free landmark needs a name</source>
+        <translation>Eine freie Landmarke braucht einen Namen</translation>
+    </message>
+    <message>
+        <source>Open a vessel surface first</source>
+        <translation>Öffnen Sie zuerst eine Gefäßoberfläche</translation>
+    </message>
+    <message>
+        <source>Find the centrelines to measure along the vessels.</source>
+        <translation>Finden Sie die Mittellinien, um entlang der Gefäße zu messen.</translation>
+    </message>
+    <message>
+        <source>%1 saved item(s) do not fit the centrelines found and were left out</source>
+        <translation>%1 gespeicherte Einträge passen nicht zu den gefundenen Mittellinien und wurden weggelassen</translation>
+    </message>
+    <message>
+        <source>Cancelled.</source>
+        <translation>Abgebrochen.</translation>
+    </message>
+    <message>
+        <source>Starting…</source>
+        <translation>Wird gestartet…</translation>
+    </message>
+    <message>
+        <source>Branches: %1; centreline: %2.</source>
+        <translation>Äste: %1; Mittellinie: %2.</translation>
+    </message>
+    <message>
+        <source>Reference %1: %2</source>
+        <translation>Referenz %1: %2</translation>
+    </message>
+    <message>
+        <source>not on the path</source>
+        <translation>nicht auf dem Pfad</translation>
+    </message>
+    <message>
+        <source>Cursor at %1 along the path (%2).</source>
+        <translation>Cursor bei %1 entlang des Pfads (%2).</translation>
+    </message>
+    <message>
+        <source>Diameter %1 (minimum %2, maximum %3), area %4</source>
+        <translation>Durchmesser %1 (Minimum %2, Maximum %3), Fläche %4</translation>
+    </message>
+    <message>
+        <source>No section here (an end or a junction)</source>
+        <translation>Hier kein Querschnitt (ein Ende oder eine Verzweigung)</translation>
+    </message>
+    <message>
+        <source>Find the centrelines first.</source>
+        <translation>Finden Sie zuerst die Mittellinien.</translation>
+    </message>
+    <message>
+        <source>Save Measurements</source>
+        <translation>Messungen speichern</translation>
+    </message>
+    <message>
+        <source>Measurement files (*.json)</source>
+        <translation>Messdateien (*.json)</translation>
+    </message>
+    <message>
+        <source>Measurements saved to %1</source>
+        <translation>Messungen gespeichert in %1</translation>
+    </message>
+    <message>
+        <source>Export Sections</source>
+        <translation>Querschnitte exportieren</translation>
+    </message>
+    <message>
+        <source>CSV files (*.csv)</source>
+        <translation>CSV-Dateien (*.csv)</translation>
+    </message>
+    <message>
+        <source>Sections exported to %1</source>
+        <translation>Querschnitte exportiert nach %1</translation>
+    </message>
+    <message>
+        <source>No vessel of the path under the mouse</source>
+        <translation>Kein Gefäß des Pfads unter der Maus</translation>
+    </message>
+    <message>
+        <source>Length (mm)</source>
+        <translation>Länge (mm)</translation>
+    </message>
+    <message>
+        <source>Ø (mm)</source>
+        <translation>Ø (mm)</translation>
+    </message>
+    <message>
+        <source>Double-click a name to rename the branch (the name goes into reports). Ø: the narrowest and the widest equivalent diameter, 2√(area/π), outside the ends of the branch.</source>
+        <translation>Doppelklick auf einen Namen benennt den Ast um (der Name erscheint in Berichten). Ø: der engste und der weiteste Äquivalentdurchmesser, 2√(Fläche/π), außerhalb der Enden des Asts.</translation>
+    </message>
+    <message>
+        <source>Ø / area (%)</source>
+        <translation>Ø / Fläche (%)</translation>
+    </message>
+    <message>
+        <source>At (mm)</source>
+        <translation>Bei (mm)</translation>
     </message>
 </context>
 <context>
@@ -4995,6 +5468,10 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
     <message>
         <source>Measurements</source>
         <translation>Messungen</translation>
+    </message>
+    <message>
+        <source>Drawn %1 times as high as long, to be read.</source>
+        <translation>%1-fach überhöht gezeichnet, damit sie lesbar ist.</translation>
     </message>
 </context>
 </TS>

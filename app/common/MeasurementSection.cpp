@@ -48,9 +48,9 @@ std::vector<MeasurementCell> diameters(const std::optional<planning::SectionSize
 std::string definitions() {
     return str(QCoreApplication::translate(
         "vv::app::MeasurementText",
-        "Equivalent diameter: 2\u221a(area/\u03c0) of the lumen section perpendicular to the "
-        "centreline; minimum and maximum: its smallest and largest caliper (Feret) width. "
-        "Lengths along the centreline unless marked straight."));
+        "\u00d8: diameter. Equivalent \u00d8: 2\u221a(area/\u03c0) of the lumen section "
+        "perpendicular to the centreline; minimum and maximum \u00d8: its smallest and largest "
+        "caliper (Feret) width. Lengths along the centreline unless marked straight."));
 }
 
 /// A landmark's name as the report shows it: a preset's in the UI language
@@ -75,9 +75,9 @@ MeasurementTable landmarkTable(const ReportMeasurements& m) {
     MeasurementTable t;
     t.title = str(MeasurementText::tr("Landmarks"));
     t.columns = {str(MeasurementText::tr("Landmark")),
-                 str(MeasurementText::tr("Equivalent diameter")),
-                 str(MeasurementText::tr("Minimum diameter")),
-                 str(MeasurementText::tr("Maximum diameter")), str(MeasurementText::tr("Area"))};
+                 str(MeasurementText::tr("Equivalent \u00d8")),
+                 str(MeasurementText::tr("Minimum \u00d8")),
+                 str(MeasurementText::tr("Maximum \u00d8")), str(MeasurementText::tr("Area"))};
     bool junction = false;
     for (const MeasuredLandmark& l : m.landmarks) {
         MeasurementRow row;
@@ -116,9 +116,9 @@ MeasurementTable lengthTable(const ReportMeasurements& m) {
 MeasurementTable aorticDiameterTable(const planning::AorticSizing& s) {
     MeasurementTable t;
     t.title = str(MeasurementText::tr("Aortic sizing: diameters"));
-    t.columns = {str(MeasurementText::tr("Place")), str(MeasurementText::tr("Equivalent diameter")),
-                 str(MeasurementText::tr("Minimum diameter")),
-                 str(MeasurementText::tr("Maximum diameter"))};
+    t.columns = {str(MeasurementText::tr("Place")), str(MeasurementText::tr("Equivalent \u00d8")),
+                 str(MeasurementText::tr("Minimum \u00d8")),
+                 str(MeasurementText::tr("Maximum \u00d8"))};
     const auto add = [&t](const QString& label,
                           const planning::SizingValue<planning::SectionSizes>& v) {
         t.rows.push_back({str(label), diameters(v.value, blankNote(v.blank))});
@@ -198,22 +198,25 @@ MeasurementTable branchTable(const ReportMeasurements& m) {
 /// The profile along the file's path, its landmarks and stenoses marked.
 report::ProfileFigure profileFigure(const ReportMeasurements& m, const MeasuredProfile& profile) {
     report::ProfileFigure f;
-    f.title = str(MeasurementText::tr("Diameter profile along the path (%1 long)")
+    f.title = str(QCoreApplication::translate("vv::app::MeasurementText",
+                                              "Diameter profile along the path (%1 long)")
                       .arg(QString::fromStdString(
                           report::measurementCellText({profile.lengthMm, 1, "mm", {}}))));
     f.note = str(
-        MeasurementText::tr(
+        QCoreApplication::translate(
+            "vv::app::MeasurementText",
             "Solid: equivalent diameter; dashed: minimum and maximum caliper diameter. Gaps: no "
             "section measures the vessel there (an end, a junction). Marked: narrowings of %1 or "
             "more in diameter.")
             .arg(QString::fromStdString(
                 report::measurementCellText({kMarkedStenosisPercent, 0, "%", {}}))));
     f.lengthMm = profile.lengthMm;
-    f.xTitle = str(MeasurementText::tr("Distance along the path (mm)"));
-    f.yTitle = str(MeasurementText::tr("Diameter (mm)"));
-    f.series = {{str(MeasurementText::tr("Equivalent")), {}},
-                {str(MeasurementText::tr("Minimum")), {}},
-                {str(MeasurementText::tr("Maximum")), {}}};
+    f.xTitle = str(
+        QCoreApplication::translate("vv::app::MeasurementText", "Distance along the path (mm)"));
+    f.yTitle = str(QCoreApplication::translate("vv::app::MeasurementText", "Diameter (mm)"));
+    f.series = {{str(QCoreApplication::translate("vv::app::MeasurementText", "Equivalent")), {}},
+                {str(QCoreApplication::translate("vv::app::MeasurementText", "Minimum")), {}},
+                {str(QCoreApplication::translate("vv::app::MeasurementText", "Maximum")), {}}};
     const double gap = std::numeric_limits<double>::quiet_NaN();
     for (const MeasuredProfile::Point& p : profile.points) {
         f.pathMm.push_back(p.pathMm);

@@ -49,6 +49,7 @@
 #include "gui/analysis/CrossSectionView.h"
 #include "gui/analysis/CurvedReformation.h"
 #include "gui/analysis/DiameterProfile.h"
+#include "gui/analysis/MeasurementTables.h"
 #include "gui/analysis/PlanningOverlay.h"
 #include "gui/analysis/PlanningReport.h"
 #include "gui/analysis/PlanningState.h"
@@ -421,6 +422,7 @@ void MainWindow::buildViewMenu() {
         panelsMenu->addAction(dock->toggleViewAction());
     }
     panelsMenu->addAction(profileDock_->toggleViewAction());
+    panelsMenu->addAction(measurementsDock_->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
     view->addSeparator();
@@ -534,9 +536,25 @@ void MainWindow::buildPlanning() {
     });
     addDockWidget(Qt::BottomDockWidgetArea, profileDock_);
     profileDock_->hide();
+    measurementsDock_ = new QDockWidget(tr("Measurements"), this);
+    measurementsDock_->setObjectName(QStringLiteral("measurementsDock"));
+    measurementsDock_->setWidget(analysisPanel_->measurementTables());
+    analysisPanel_->measurementTables()->show();
+    // Right of the views along the path.
+    addDockWidget(Qt::BottomDockWidgetArea, measurementsDock_);
+    splitDockWidget(profileDock_, measurementsDock_, Qt::Horizontal);
+    measurementsDock_->hide();
     planningOverlay_ = new PlanningOverlay(viewer_, planning_);
-    connect(planning_, &PlanningState::analysisChanged, this,
-            [this] { profileDock_->setVisible(planning_->hasAnalysis()); });
+    connect(planning_, &PlanningState::analysisChanged, this, [this] {
+        const bool first = planning_->hasAnalysis() && profileDock_->isHidden();
+        profileDock_->setVisible(planning_->hasAnalysis());
+        measurementsDock_->setVisible(planning_->hasAnalysis());
+        if (first) {
+            // The views along the path take most of the width.
+            resizeDocks({profileDock_, measurementsDock_}, {width() * 3 / 5, width() * 2 / 5},
+                        Qt::Horizontal);
+        }
+    });
     connect(profile_, &DiameterProfile::hovered, planningOverlay_, &PlanningOverlay::setHoverMm);
     connect(profile_, &DiameterProfile::placeRequested, analysisPanel_->placeButton(),
             &QPushButton::click);
@@ -710,6 +728,7 @@ void MainWindow::resetLayout() {
         section->resetToDefault();
     }
     profileDock_->setVisible(planning_->hasAnalysis());
+    measurementsDock_->setVisible(planning_->hasAnalysis());
 }
 
 void MainWindow::revealPanel(const QWidget* panel) {

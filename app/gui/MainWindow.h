@@ -203,6 +203,9 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] CurvedReformation* curvedReformation() const noexcept { return reformation_; }
     [[nodiscard]] CrossSectionView* crossSection() const noexcept { return crossSection_; }
     [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept { return profileDock_; }
+    /// The measurement tables (AnalysisPanel::measurementTables()) in a dock
+    /// beside it ("measurementsDock"), shown with the analysis.
+    [[nodiscard]] QDockWidget* measurementsDock() const noexcept { return measurementsDock_; }
     /// The planning work for a report or a PACS (planningReport()); nullopt
     /// without an analysis, or when it cannot be put together (the status
     /// bar says why).
@@ -336,6 +339,7 @@ class MainWindow : public QMainWindow {
     CurvedReformation* reformation_ = nullptr;
     CrossSectionView* crossSection_ = nullptr;
     QDockWidget* profileDock_ = nullptr;
+    QDockWidget* measurementsDock_ = nullptr;
     PlanningOverlay* planningOverlay_ = nullptr;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;

@@ -6,7 +6,9 @@
 // text, no '&' shows literally, and nothing needs a horizontal scroll bar.
 #include <gtest/gtest.h>
 
+#include <QCheckBox>
 #include <QDir>
+#include <QDockWidget>
 #include <QLayout>
 #include <QMessageBox>
 #include <QPointer>
@@ -26,10 +28,12 @@
 #include "gui/ExportSurfaceDialog.h"
 #include "gui/ReportDialog.h"
 #include "gui/SeriesDialog.h"
+#include "gui/analysis/PlanningState.h"
 #include "gui/pacs/LocalStudiesBrowser.h"
 #include "gui/pacs/NetworkPreferencesDialog.h"
 #include "gui/pacs/PacsBrowser.h"
 #include "gui/pacs/SendDialog.h"
+#include "gui/panels/AnalysisPanel.h"
 #include "gui/panels/CollapsibleSection.h"
 #include "gui/panels/SegmentationPanel.h"
 #include "gui/panels/SidePanel.h"
@@ -184,6 +188,56 @@ TEST_P(ClippingTest, SidePanelWithAVolumeShowsEveryTextInFull) {
             .string()));
     const std::vector<std::string> problems = ClippingCheck::problems(side);
     EXPECT_TRUE(problems.empty()) << "cut off in the side panel:" << listed(problems);
+}
+
+TEST_P(ClippingTest, TheAnalysisPanelAndTheViewsAlongThePathShowEveryTextInFull) {
+    // The demo tree analysed, the longest preset and a free landmark placed,
+    // a stenosis reference set: every row and button of the Analysis panel
+    // is on screen, and the dock under the views.
+    auto* side = window_->sidePanel();
+    for (auto* section : side->findChildren<vv::gui::panels::CollapsibleSection*>()) {
+        section->setExpanded(section->objectName() == QStringLiteral("analysisPanelSection"));
+    }
+    vv::gui::panels::AnalysisPanel* panel = window_->analysisPanel();
+    panel->findCenterlines();
+    ASSERT_TRUE(waitUntil([&] { return !panel->analysing(); }, 240000));
+    vv::gui::PlanningState* state = window_->planning();
+    ASSERT_TRUE(state->hasAnalysis()) << panel->statusLabel()->text().toStdString();
+    state->setCursorMm(state->path().lengthMm() / 2.0);
+    ASSERT_GE(state->placeLandmarkAtCursor(vv::planning::LandmarkKind::RightInternalIliacOrigin),
+              0);
+    state->setCursorMm(state->path().lengthMm() / 4.0);
+    ASSERT_GE(state->placeLandmarkAtCursor(vv::planning::LandmarkKind::Free,
+                                           QStringLiteral("Proximal landing zone")),
+              0);
+    (void)state->setReferenceAtCursor(true);
+    settle();
+    side->widget()->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("side-panel-analysis-" + caseName({GetParam(), 0}) + ".png"))
+            .string()));
+    std::vector<std::string> problems = ClippingCheck::problems(side);
+    EXPECT_TRUE(problems.empty()) << "cut off in the Analysis panel:" << listed(problems);
+    EXPECT_LE(side->widget()->minimumSizeHint().width(), side->viewport()->width())
+        << "the Analysis panel is wider than the side panel";
+    QWidget* along = window_->diameterProfileDock();
+    ASSERT_TRUE(along->isVisible());
+    window_->grab().save(QString::fromStdString(
+        (vv::test::panelTestDir() / ("window-analysis-" + caseName({GetParam(), 0}) + ".png"))
+            .string()));
+    problems = ClippingCheck::problems(along);
+    EXPECT_TRUE(problems.empty()) << "cut off along the path:" << listed(problems);
+    ASSERT_TRUE(window_->measurementsDock()->isVisible());
+    problems = ClippingCheck::problems(window_->measurementsDock());
+    EXPECT_TRUE(problems.empty()) << "cut off in the measurements:" << listed(problems);
+
+    // Export Report offers the measurements and their SR.
+    const auto planned = window_->plannedReport();
+    ASSERT_TRUE(planned.has_value());
+    vv::gui::ReportDialog report(*window_->viewer(), window_->reportSource(), window_.get());
+    report.setMeasurements(planned->section, planned->groups);
+    ASSERT_NE(report.measurementsBox(), nullptr);
+    report.dicomSrBox()->setChecked(true);
+    expectWhole(report, "report-dialog-measurements");
 }
 
 TEST_P(ClippingTest, DialogsShowEveryTextInFull) {

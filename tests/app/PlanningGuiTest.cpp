@@ -19,7 +19,6 @@
 #include <QPushButton>
 #include <QSlider>
 #include <QTableWidget>
-#include <QTreeWidget>
 #include <QWheelEvent>
 #include <cmath>
 #include <cstring>
@@ -42,6 +41,7 @@
 #include "gui/analysis/CrossSectionView.h"
 #include "gui/analysis/CurvedReformation.h"
 #include "gui/analysis/DiameterProfile.h"
+#include "gui/analysis/MeasurementTables.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/AnalysisPanel.h"
 #include "vv/analysis/Stenosis.h"
@@ -129,38 +129,35 @@ class PlanningGui : public GuiFixture {
     /// The number in the measurement tree's table `title`, row `label`,
     /// value column `column` (1 = the first value); NaN when blank ("—").
     double tableValue(const QString& title, const QString& label, int column = 1) {
-        QTreeWidget* tree = panel().measurementTree();
-        for (int t = 0; t < tree->topLevelItemCount(); ++t) {
-            QTreeWidgetItem* table = tree->topLevelItem(t);
-            if (table->text(0) != title) {
-                continue;
-            }
-            for (int r = 1; r < table->childCount(); ++r) {
-                if (table->child(r)->text(0) == label) {
-                    const QString text = table->child(r)->text(column);
-                    if (text == QStringLiteral("\u2014")) {
-                        return std::nan("");
-                    }
-                    // "20.0 mm", "35°": the number before the unit.
-                    QString number;
-                    for (const QChar c : text) {
-                        if (c.isDigit() || c == QLocale().decimalPoint() || c == u'-' ||
-                            c == QLocale().negativeSign()) {
-                            number += c;
-                        } else if (!number.isEmpty()) {
-                            break;
-                        }
-                    }
-                    bool ok = false;
-                    const double value = QLocale().toDouble(number, &ok);
-                    EXPECT_TRUE(ok) << text.toStdString();
-                    return value;
-                }
-            }
-            ADD_FAILURE() << "no row " << label.toStdString() << " in " << title.toStdString();
+        QTableWidget* table = panel().measurementTables()->table(title);
+        if (table == nullptr) {
+            ADD_FAILURE() << "no table " << title.toStdString();
             return std::nan("");
         }
-        ADD_FAILURE() << "no table " << title.toStdString();
+        for (int r = 0; r < table->rowCount(); ++r) {
+            if (table->item(r, 0)->text() != label) {
+                continue;
+            }
+            const QString text = table->item(r, column)->text();
+            if (text == QStringLiteral("\u2014")) {
+                return std::nan("");
+            }
+            // "20.0 mm", "35°": the number before the unit.
+            QString number;
+            for (const QChar c : text) {
+                if (c.isDigit() || c == QLocale().decimalPoint() || c == u'-' ||
+                    c == QLocale().negativeSign()) {
+                    number += c;
+                } else if (!number.isEmpty()) {
+                    break;
+                }
+            }
+            bool ok = false;
+            const double value = QLocale().toDouble(number, &ok);
+            EXPECT_TRUE(ok) << text.toStdString();
+            return value;
+        }
+        ADD_FAILURE() << "no row " << label.toStdString() << " in " << title.toStdString();
         return std::nan("");
     }
 };

@@ -145,7 +145,13 @@ void CrossSectionView::paintEvent(QPaintEvent* event) {
         return;
     }
     const QStringList lines = texts();
-    const int textHeight = metrics.lineSpacing() * static_cast<int>(lines.size() + 1) + 6;
+    // The sizes under the square, wrapped to the width (German is long).
+    const QRect textBox(2, 0, std::max(10, width() - 4), height());
+    int textHeight = metrics.lineSpacing() + 6;
+    for (const QString& line : lines) {
+        textHeight +=
+            metrics.boundingRect(textBox, Qt::AlignCenter | Qt::TextWordWrap, line).height();
+    }
     const int side = std::max(10, std::min(width(), height() - textHeight));
     const QRectF square((width() - side) / 2.0, metrics.lineSpacing() + 4.0, side, side);
     if (!image_.isNull()) {
@@ -188,12 +194,14 @@ void CrossSectionView::paintEvent(QPaintEvent* event) {
     painter.drawText(barStart + QPointF(0.0, -4.0),
                      QString::fromStdString(report::measurementCellText({10.0, 0, "mm", {}})));
     // The sizes under the square, each in its caliper's colour.
-    double y = square.bottom() + metrics.ascent() + 4.0;
+    int y = static_cast<int>(square.bottom()) + 4;
     for (qsizetype i = 0; i < lines.size(); ++i) {
         painter.setPen(i == 0 ? QColor(255, 200, 150) : Qt::white);
-        painter.drawText(QRectF(0, y - metrics.ascent(), width(), metrics.lineSpacing()),
-                         Qt::AlignCenter, lines[i]);
-        y += metrics.lineSpacing();
+        const QRect box =
+            metrics.boundingRect(textBox, Qt::AlignHCenter | Qt::TextWordWrap, lines[i]);
+        painter.drawText(QRect(textBox.left(), y, textBox.width(), box.height()),
+                         Qt::AlignHCenter | Qt::TextWordWrap, lines[i]);
+        y += box.height();
     }
 }
 

@@ -57,7 +57,7 @@ class CrossSectionView : public QWidget {
     /// The texts drawn: diameters and area (in the UI locale).
     [[nodiscard]] QStringList texts() const;
 
-    [[nodiscard]] QSize sizeHint() const override { return {260, 260}; }
+    [[nodiscard]] QSize sizeHint() const override { return {220, 260}; }
     [[nodiscard]] QSize minimumSizeHint() const override { return {180, 200}; }
 
   protected:

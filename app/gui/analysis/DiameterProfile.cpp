@@ -58,6 +58,11 @@ DiameterProfile::DiameterProfile(PlanningState* state, QWidget* parent)
     setMinimumHeight(260);
     chart()->setLocalizeNumbers(true);
     chart()->legend()->setAlignment(Qt::AlignTop);
+    // Smaller than the widgets' text: legend and title must fit a narrow dock.
+    QFont small = font();
+    small.setPointSizeF(small.pointSizeF() * 0.85);
+    chart()->legend()->setFont(small);
+    chart()->setTitleFont(small);
     chart()->setMargins(QMargins(4, 4, 4, 4));
     connect(state_, &PlanningState::analysisChanged, this, &DiameterProfile::rebuild);
     connect(state_, &PlanningState::pathChanged, this, &DiameterProfile::rebuild);
@@ -106,7 +111,7 @@ void DiameterProfile::rebuild() {
     along_->setRange(0.0, std::max(1.0, state_->path().lengthMm()));
     along_->setLabelFormat(QStringLiteral("%.0f"));
     diameter_ = new QValueAxis(c);
-    diameter_->setTitleText(tr("Diameter (mm)"));
+    diameter_->setTitleText(tr("\u00d8 (mm)"));  // short: the plot is low
     diameter_->setRange(0.0, diameterTop());
     diameter_->setLabelFormat(QStringLiteral("%.0f"));
     area_ = new QValueAxis(c);
@@ -262,6 +267,9 @@ void DiameterProfile::placeLabels() {
         QRectF box(QPointF(at.x() + 3.0, plot.top() + 2.0), label->boundingRect().size());
         if (box.right() > plot.right()) {
             box.moveRight(at.x() - 3.0);
+        }
+        if (box.left() < plot.left()) {
+            box.moveLeft(plot.left());  // never out of the plot, even over its line
         }
         for (bool moved = true; moved;) {
             moved = false;

@@ -13,7 +13,6 @@
 #include <QProgressBar>
 #include <QPushButton>
 #include <QTableWidget>
-#include <QTreeWidget>
 #include <QVBoxLayout>
 #include <cmath>
 #include <exception>
@@ -26,6 +25,7 @@
 #include "common/SectionsCsv.h"
 #include "gui/ViewerWidget.h"
 #include "gui/analysis/AnalysisTask.h"
+#include "gui/analysis/MeasurementTables.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/report/PdfReport.h"
@@ -50,8 +50,14 @@ QString millimetres(double mm, int decimals = 1) {
     return QString::fromStdString(report::measurementCellText(cell));
 }
 
-QString percent(double value) {
-    report::MeasurementCell cell{value, 0, "%", {}};
+/// `value` in the UI locale without a unit (the column's header names it),
+/// or a dash.
+QString number(double value, int decimals = 1) {
+    report::MeasurementCell cell;
+    if (std::isfinite(value)) {
+        cell.value = value;
+    }
+    cell.decimals = decimals;
     return QString::fromStdString(report::measurementCellText(cell));
 }
 
@@ -68,8 +74,11 @@ QTableWidget* compactTable(QWidget* parent, const QString& objectName, const QSt
     table->verticalHeader()->hide();
     table->setSelectionBehavior(QAbstractItemView::SelectRows);
     table->setSelectionMode(QAbstractItemView::SingleSelection);
+    // The side panel is narrow: the first column takes what the others
+    // (numbers, sized to their contents) leave.
     table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    table->horizontalHeader()->setStretchLastSection(true);
+    table->horizontalHeader()->setSectionResizeMode(0, QHeaderView::Stretch);
+    table->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
     table->setMinimumHeight(110);
     return table;
 }
@@ -152,14 +161,14 @@ void AnalysisPanel::buildAnalysisRows() {
 void AnalysisPanel::buildPathRows() {
     auto* inner = qobject_cast<QVBoxLayout*>(analysed_->layout());
     branches_ = compactTable(analysed_, QStringLiteral("branchTable"),
-                             {tr("Branch"), tr("Length"), tr("Narrowest"), tr("Widest")});
+                             {tr("Branch"), tr("Length (mm)"), tr("\u00d8 (mm)")});
     branches_->setToolTip(
         tr("Double-click a name to rename the branch (the name goes into reports). "
-           "Narrowest and widest: equivalent diameter, 2\u221a(area/\u03c0), outside the "
-           "ends of the branch."));
+           "\u00d8: the narrowest and the widest equivalent diameter, 2\u221a(area/\u03c0), "
+           "outside the ends of the branch."));
     inner->addWidget(branches_);
     stenoses_ = compactTable(analysed_, QStringLiteral("stenosisTable"),
-                             {tr("Stenosis"), tr("Diameter"), tr("Area"), tr("Along path")});
+                             {tr("Stenosis"), tr("\u00d8 / area (%)"), tr("At (mm)")});
     stenoses_->setToolTip(
         tr("The narrowest point of each branch against its reference diameter (hover a row "
            "for how the reference was found)"));
@@ -255,8 +264,8 @@ void AnalysisPanel::buildLandmarkRows() {
     form->addRow(tr("Name:"), freeName_);
     inner->addLayout(form);
     inner->addWidget(place_);
-    landmarks_ = compactTable(analysed_, QStringLiteral("landmarkTable"),
-                              {tr("Landmark"), tr("Along path"), tr("Diameter")});
+    landmarks_ =
+        compactTable(analysed_, QStringLiteral("landmarkTable"), {tr("Landmark"), tr("At (mm)")});
     landmarks_->setToolTip(
         tr("Select a landmark to move it: Ctrl+Left / Ctrl+Right in the "
            "diameter profile, or drag its line there"));
@@ -269,12 +278,10 @@ void AnalysisPanel::buildLandmarkRows() {
     buttons->addWidget(moveHere_);
     buttons->addWidget(remove_);
     inner->addLayout(buttons);
-    measurements_ = new QTreeWidget(analysed_);
-    measurements_->setObjectName(QStringLiteral("measurementTree"));
-    measurements_->setRootIsDecorated(true);
-    measurements_->setMinimumHeight(180);
-    measurements_->header()->setSectionResizeMode(QHeaderView::ResizeToContents);
-    inner->addWidget(measurements_);
+    // Shown by the window in a dock of its own: its tables are wider than
+    // the side panel.
+    measurements_ = new MeasurementTables(analysed_);
+    measurements_->hide();
     save_ = new QPushButton(tr("Save Measurements…"), analysed_);
     save_->setObjectName(QStringLiteral("saveMeasurements"));
     save_->setToolTip(
@@ -455,14 +462,15 @@ void AnalysisPanel::showBranches() {
             auto* name = new QTableWidgetItem(state_->branchName(b.id));
             name->setData(Qt::UserRole, b.id);
             branches_->setItem(row, 0, name);
-            branches_->setItem(row, 1, readOnly(millimetres(b.lengthMm)));
+            branches_->setItem(row, 1, readOnly(number(b.lengthMm)));
             const app::BranchExtremes e =
                 app::branchExtremes(a.sections[static_cast<std::size_t>(b.id)]);
-            branches_->setItem(
-                row, 2,
-                readOnly(millimetres(e.narrowest ? e.narrowest->equivalentDiameterMm : kNaN)));
-            branches_->setItem(
-                row, 3, readOnly(millimetres(e.widest ? e.widest->equivalentDiameterMm : kNaN)));
+            branches_->setItem(row, 2,
+                               readOnly(e.narrowest != nullptr && e.widest != nullptr
+                                            ? QStringLiteral("%1\u2013%2")
+                                                  .arg(number(e.narrowest->equivalentDiameterMm),
+                                                       number(e.widest->equivalentDiameterMm))
+                                            : number(kNaN)));
         }
     }
     stenoses_->setRowCount(0);
@@ -475,11 +483,14 @@ void AnalysisPanel::showBranches() {
                 tr("Reference %1: %2")
                     .arg(millimetres(s.referenceMm), QString::fromStdString(s.reference)));
             stenoses_->setItem(row, 0, name);
-            stenoses_->setItem(row, 1, readOnly(percent(s.diameterPercent)));
-            stenoses_->setItem(row, 2, readOnly(percent(s.areaPercent)));
-            stenoses_->setItem(
-                row, 3,
-                readOnly(std::isfinite(s.pathMm) ? millimetres(s.pathMm) : tr("not on the path")));
+            stenoses_->setItem(row, 1,
+                               readOnly(QStringLiteral("%1 / %2").arg(number(s.diameterPercent, 0),
+                                                                      number(s.areaPercent, 0))));
+            auto* at = readOnly(number(s.pathMm));  // a dash off the path
+            if (!std::isfinite(s.pathMm)) {
+                at->setToolTip(tr("not on the path"));
+            }
+            stenoses_->setItem(row, 2, at);
         }
     }
     filling_ = false;
@@ -531,14 +542,11 @@ void AnalysisPanel::showLandmarks() {
         const int row = static_cast<int>(i);
         landmarks_->setItem(row, 0, readOnly(PlanningState::landmarkLabel(list[i])));
         const auto along = state_->pathMmOf(list[i].location);
-        landmarks_->setItem(row, 1, readOnly(along ? millimetres(*along) : tr("not on the path")));
-        std::optional<planning::SectionSizes> sizes;
-        if (state_->hasAnalysis()) {
-            sizes = planning::sectionSizesAt(state_->analysis()->tree, state_->analysis()->sections,
-                                             list[i].location);
+        auto* at = readOnly(number(along ? *along : kNaN));
+        if (!along) {
+            at->setToolTip(tr("not on the path"));
         }
-        landmarks_->setItem(row, 2,
-                            readOnly(millimetres(sizes ? sizes->equivalentDiameterMm : kNaN)));
+        landmarks_->setItem(row, 1, at);
     }
     landmarks_->selectRow(state_->selectedLandmark());
     moveHere_->setEnabled(state_->selectedLandmark() >= 0);
@@ -551,46 +559,11 @@ void AnalysisPanel::showMeasurements() {
     if (!state_->hasAnalysis()) {
         return;
     }
-    report::ReportMeasurementSection section;
     try {
-        section = app::measurementSection(app::measurementsOf(state_->measurementInput()));
+        measurements_->setSection(
+            app::measurementSection(app::measurementsOf(state_->measurementInput())));
     } catch (const std::exception& e) {
         emit statusMessage(QString::fromStdString(e.what()));
-        return;
-    }
-    int columns = 1;
-    for (const report::MeasurementTable& t : section.tables) {
-        columns = std::max(columns, static_cast<int>(t.columns.size()));
-    }
-    measurements_->setColumnCount(columns);
-    measurements_->setHeaderHidden(true);
-    for (const report::MeasurementTable& t : section.tables) {
-        auto* table = new QTreeWidgetItem(measurements_);
-        table->setText(0, QString::fromStdString(t.title));
-        table->setFirstColumnSpanned(true);
-        auto* header = new QTreeWidgetItem(table);
-        for (std::size_t c = 0; c < t.columns.size(); ++c) {
-            header->setText(static_cast<int>(c), QString::fromStdString(t.columns[c]));
-            QFont bold = header->font(0);
-            bold.setBold(true);
-            header->setFont(static_cast<int>(c), bold);
-        }
-        for (const report::MeasurementRow& r : t.rows) {
-            auto* item = new QTreeWidgetItem(table);
-            item->setText(0, QString::fromStdString(r.label));
-            for (std::size_t c = 0; c < r.cells.size(); ++c) {
-                item->setText(static_cast<int>(c) + 1,
-                              QString::fromStdString(report::measurementCellText(r.cells[c])));
-                if (!r.cells[c].value && !r.cells[c].blankNote.empty()) {
-                    item->setToolTip(static_cast<int>(c) + 1,
-                                     QString::fromStdString(r.cells[c].blankNote));
-                }
-            }
-        }
-        if (!t.note.empty()) {
-            table->setToolTip(0, QString::fromStdString(t.note));
-        }
-        table->setExpanded(true);
     }
 }
 

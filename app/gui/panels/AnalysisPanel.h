@@ -17,11 +17,11 @@ class QLineEdit;
 class QProgressBar;
 class QPushButton;
 class QTableWidget;
-class QTreeWidget;
 
 namespace vv::gui {
 
 class AnalysisTask;
+class MeasurementTables;
 class PlanningState;
 class ViewerWidget;
 
@@ -37,6 +37,7 @@ namespace panels {
 ///   measurement files and reports), length, narrowest and widest
 ///   equivalent diameter; the stenosis table: each graded branch's diameter
 ///   and area percent, where along the path, the reference in its tooltip.
+///   Numbers in the UI locale, the units in the headers (the panel is narrow).
 /// - The path: from one end to another (PlanningState::choosePath); the
 ///   cursor's place on it and its section's sizes.
 /// - Landmarks: a preset of aortic planning or a free name, placed at the
@@ -44,7 +45,8 @@ namespace panels {
 ///   Ctrl+Left / Ctrl+Right in the diameter profile); Remove.
 /// - The measurements as the report prints them (app::measurementSection):
 ///   the landmarks' sections, the lengths between them, the aortic sizing
-///   table, the branches; a blank value with why.
+///   table, the branches; a blank value with why (measurementTables(): the
+///   window shows it in a dock of its own, wider than the side panel).
 /// - "Save measurements…" (a measurement file `vesselview-cli report
 ///   --measurements` reads) and "Export sections…" (CSV of the sections
 ///   along the path).
@@ -96,9 +98,8 @@ class AnalysisPanel : public QWidget {
     [[nodiscard]] QLineEdit* freeNameField() const noexcept { return freeName_; }
     [[nodiscard]] QPushButton* placeButton() const noexcept { return place_; }
     [[nodiscard]] QTableWidget* landmarkTable() const noexcept { return landmarks_; }
-    /// The measurement tables: one top-level item per table (its title), one
-    /// child per row (label, then the values as the report prints them).
-    [[nodiscard]] QTreeWidget* measurementTree() const noexcept { return measurements_; }
+    /// The measurement tables (the window shows them in a dock of its own).
+    [[nodiscard]] MeasurementTables* measurementTables() const noexcept { return measurements_; }
     [[nodiscard]] QLabel* statusLabel() const noexcept { return status_; }
     [[nodiscard]] QLabel* cursorLabel() const noexcept { return cursor_; }
 
@@ -146,7 +147,7 @@ class AnalysisPanel : public QWidget {
     QTableWidget* landmarks_ = nullptr;
     QPushButton* moveHere_ = nullptr;
     QPushButton* remove_ = nullptr;
-    QTreeWidget* measurements_ = nullptr;
+    MeasurementTables* measurements_ = nullptr;
     QPushButton* save_ = nullptr;
     QPushButton* csv_ = nullptr;
     QWidget* analysed_ = nullptr;  ///< everything shown once there is an analysis
