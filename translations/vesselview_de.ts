@@ -3938,6 +3938,54 @@ R: Ansicht zurücksetzen · F: an Daten anpassen · Strg+Klick: messen</translat
         <source>At (mm)</source>
         <translation>Bei (mm)</translation>
     </message>
+    <message>
+        <source>Pick Ends</source>
+        <translation>Enden wählen</translation>
+    </message>
+    <message>
+        <source>Click the vessel where the centrelines start (first click) and where they end (each further click); Find Centrelines then uses them instead of the automatic ends</source>
+        <translation>Klicken Sie auf das Gefäß, wo die Mittellinien beginnen (erster Klick) und wo sie enden (jeder weitere Klick); Mittellinien finden nimmt dann diese statt der automatisch gefundenen Enden</translation>
+    </message>
+    <message>
+        <source>Automatic Ends</source>
+        <translation>Enden automatisch</translation>
+    </message>
+    <message>
+        <source>Forget the picked ends: the open ends and tips are found</source>
+        <translation>Die gewählten Enden vergessen: Die offenen Enden und Spitzen werden gefunden</translation>
+    </message>
+    <message>
+        <source>Path highlighted</source>
+        <translation>Pfad hervorgehoben</translation>
+    </message>
+    <message>
+        <source>By branch</source>
+        <translation>Nach Ast</translation>
+    </message>
+    <message>
+        <source>By diameter</source>
+        <translation>Nach Durchmesser</translation>
+    </message>
+    <message>
+        <source>How the centrelines are coloured in the 3-D view</source>
+        <translation>Wie die Mittellinien in der 3D-Ansicht gefärbt sind</translation>
+    </message>
+    <message>
+        <source>Lines:</source>
+        <translation>Linien:</translation>
+    </message>
+    <message>
+        <source>Ends: found automatically</source>
+        <translation>Enden: automatisch gefunden</translation>
+    </message>
+    <message>
+        <source>Ends: picked, a start and %1 more</source>
+        <translation>Enden: gewählt, ein Anfang und %1 weitere</translation>
+    </message>
+    <message>
+        <source>No vessel under the mouse: click on a vessel</source>
+        <translation>Kein Gefäß unter der Maus: ein Gefäß anklicken</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::panels::ArrayValuesWidget</name>

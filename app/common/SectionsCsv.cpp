@@ -6,26 +6,11 @@
 #include <string>
 
 #include "vv/core/AtomicFile.h"
+#include "vv/core/CsvField.h"
 #include "vv/core/Error.h"
 #include "vv/core/NumberText.h"
 
 namespace vv::app {
-
-namespace {
-
-/// A CSV field: quoted when it holds a separator, a quote or a line break.
-std::string field(const std::string& text) {
-    if (text.find_first_of(",\"\r\n") == std::string::npos) {
-        return text;
-    }
-    std::string quoted = "\"";
-    for (const char c : text) {
-        quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
-    }
-    return quoted + "\"";
-}
-
-}  // namespace
 
 std::vector<SectionRow> allSectionRows(const analysis::VesselAnalysis& analysis) {
     std::vector<SectionRow> rows;
@@ -66,7 +51,7 @@ void writeSectionsCsv(const std::filesystem::path& file, const analysis::VesselA
             out << s.branch << ',';
             if (withNames) {
                 const auto name = names.find(s.branch);
-                out << (name != names.end() ? field(name->second) : "") << ',';
+                out << (name != names.end() ? csvField(name->second) : "") << ',';
             }
             out << s.pointIndex << ',' << fixedText(s.abscissaMm, 3) << ','
                 << fixedText(s.centre.x, 4) << ',' << fixedText(s.centre.y, 4) << ','

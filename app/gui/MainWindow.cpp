@@ -556,6 +556,10 @@ void MainWindow::buildPlanning() {
         }
     });
     connect(profile_, &DiameterProfile::hovered, planningOverlay_, &PlanningOverlay::setHoverMm);
+    connect(analysisPanel_, &panels::AnalysisPanel::linesColouringChosen, planningOverlay_,
+            [this](int colouring) {
+                planningOverlay_->setColouring(static_cast<PlanningOverlay::Colouring>(colouring));
+            });
     connect(profile_, &DiameterProfile::placeRequested, analysisPanel_->placeButton(),
             &QPushButton::click);
     connect(analysisPanel_, &panels::AnalysisPanel::statusMessage, this,

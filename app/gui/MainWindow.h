@@ -202,6 +202,8 @@ class MainWindow : public QMainWindow {
     [[nodiscard]] DiameterProfile* diameterProfile() const noexcept { return profile_; }
     [[nodiscard]] CurvedReformation* curvedReformation() const noexcept { return reformation_; }
     [[nodiscard]] CrossSectionView* crossSection() const noexcept { return crossSection_; }
+    /// The planning marks over the 3-D view.
+    [[nodiscard]] PlanningOverlay* planningOverlay() const noexcept { return planningOverlay_; }
     [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept { return profileDock_; }
     /// The measurement tables (AnalysisPanel::measurementTables()) in a dock
     /// beside it ("measurementsDock"), shown with the analysis.

@@ -42,9 +42,11 @@
 #include "gui/analysis/CurvedReformation.h"
 #include "gui/analysis/DiameterProfile.h"
 #include "gui/analysis/MeasurementTables.h"
+#include "gui/analysis/PlanningOverlay.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/AnalysisPanel.h"
 #include "vv/analysis/Stenosis.h"
+#include "vv/colormaps/LabelPalette.h"
 #include "vv/core/Error.h"
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/meshio/MeshWriter.h"
@@ -596,6 +598,75 @@ TEST_F(PlanningGui, ASessionReopensTheCentrelinesPathLandmarksAndCursor) {
     EXPECT_EQ(panel().landmarkTable()->rowCount(), 2);
     EXPECT_EQ(panel().branchTable()->item(0, 0)->text(), QStringLiteral("aorta"));
     EXPECT_TRUE(window_->diameterProfileDock()->isVisible());
+}
+
+TEST_F(PlanningGui, PickedEndsAreWhereTheCentrelinesStartAndEndAndLinesTakeTheirColours) {
+    demo::AneurysmPhantomOptions options;
+    options.targetTriangles = 30'000;
+    options.openEnds = false;  // closed: the automatic ends are the tips
+    const demo::AneurysmPhantom truth = demo::makeAneurysmPhantom(options);
+    auto scene = std::make_shared<scene::Scene>();
+    scene->meshes.push_back(truth.mesh);
+    window_->setScene(scene, QStringLiteral("phantom"));
+    ASSERT_TRUE(waitForFrames());
+    // A click on the trunk picks the start (through the viewer's probe).
+    panel().pickEndsButton()->setChecked(true);
+    const auto at = window_->planningOverlay()->project({0.0, 0.0, 40.0});
+    ASSERT_TRUE(at.has_value());
+    QMouseEvent press(QEvent::MouseButtonPress, *at, window_->viewer()->mapToGlobal(*at),
+                      Qt::LeftButton, Qt::LeftButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(window_->viewer(), &press);
+    QMouseEvent release(QEvent::MouseButtonRelease, *at, window_->viewer()->mapToGlobal(*at),
+                        Qt::LeftButton, Qt::NoButton, Qt::NoModifier);
+    QCoreApplication::sendEvent(window_->viewer(), &release);
+    ASSERT_TRUE(state().givenSource().has_value()) << "the click picked no start";
+    EXPECT_LT(std::hypot(state().givenSource()->x, state().givenSource()->y),
+              1.5 * options.radiusMm)
+        << "on the trunk";
+    // The right iliac's end only, 50 mm down it: the left iliac is left out.
+    panel().addEnd(truth.bifurcationPoint + 50.0 * truth.iliacDirections[0]);
+    EXPECT_TRUE(panel().endsLabel()->text().contains(QStringLiteral("1")));
+    ASSERT_NO_FATAL_FAILURE(findCenterlines());
+    const auto& tree = state().analysis()->tree;
+    ASSERT_EQ(tree.ends.size(), 2U);
+    EXPECT_EQ(tree.ends[0].kind, analysis::EndPoint::Kind::Given);
+    // Where the click's ray met the wall (the surface nearest the viewer).
+    EXPECT_LT(glm::length(tree.ends[0].position - *state().givenSource()),
+              options.maxRadiusMm + 3.0);
+    EXPECT_NEAR(glm::length(tree.ends[1].position -
+                            (truth.bifurcationPoint + 50.0 * truth.iliacDirections[0])),
+                0.0, 3.0);
+    ASSERT_TRUE(state().sessionState()->source.has_value()) << "sessions keep the picked ends";
+
+    // The lines by branch: the overlay paints the label palette's colours.
+    const auto countColour = [&](const glm::vec3& c) {
+        window_->planningOverlay()->repaint();
+        const QImage image = window_->planningOverlay()->grab().toImage();
+        const QColor want = QColor::fromRgbF(c.r, c.g, c.b);
+        int n = 0;
+        for (int y = 0; y < image.height(); ++y) {
+            for (int x = 0; x < image.width(); ++x) {
+                const QColor got = image.pixelColor(x, y);
+                n += std::abs(got.red() - want.red()) + std::abs(got.green() - want.green()) +
+                                 std::abs(got.blue() - want.blue()) <
+                             30
+                         ? 1
+                         : 0;
+            }
+        }
+        return n;
+    };
+    const glm::vec3 branchOne = colormaps::labelColor(0);  // the one branch
+    const int before = countColour(branchOne);
+    QComboBox* lines = panel().linesChooser();
+    lines->setCurrentIndex(
+        lines->findData(static_cast<int>(gui::PlanningOverlay::Colouring::Branch)));
+    EXPECT_EQ(window_->planningOverlay()->colouring(), gui::PlanningOverlay::Colouring::Branch);
+    EXPECT_GT(countColour(branchOne), before + 20) << "branch 0 in its palette colour";
+
+    // Back to the automatic ends.
+    panel().automaticEndsButton()->click();
+    EXPECT_FALSE(state().givenSource().has_value());
 }
 
 TEST(PlanningSession, ABadPlanningObjectIsRefusedNamingItsField) {

@@ -55,6 +55,7 @@ AnalysisTask::Result AnalysisTask::work(std::stop_token stop) {
                                      stage.data(), static_cast<qsizetype>(stage.size()))));
         },
         std::move(stop));
+    const auto started = std::chrono::steady_clock::now();
     try {
         result.analysis = std::make_shared<const analysis::VesselAnalysis>(
             analysis::analyseVessels(scene_->meshes.front(), options_, progress));
@@ -65,11 +66,14 @@ AnalysisTask::Result AnalysisTask::work(std::stop_token stop) {
     } catch (const std::exception& e) {
         result.problem = describeProblem(e, FileAccess::Reading);
     }
+    result.seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     return result;
 }
 
 void AnalysisTask::deliver() {
     const Result result = run_.result();
+    workSeconds_ = result.seconds;
     if (result.cancelled || run_.stopRequested()) {
         emit cancelled();
     } else if (result.analysis) {

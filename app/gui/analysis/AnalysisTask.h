@@ -35,6 +35,8 @@ class AnalysisTask : public QObject {
     void start();
     void cancel() noexcept { run_.cancel(); }
     [[nodiscard]] bool isRunning() const { return run_.isRunning(); }
+    /// How long the worker took (wall seconds), once finished() came.
+    [[nodiscard]] double workSeconds() const noexcept { return workSeconds_; }
 
   signals:
     void progressChanged(double fraction, const QString& stage);
@@ -51,12 +53,14 @@ class AnalysisTask : public QObject {
         std::shared_ptr<const analysis::VesselAnalysis> analysis;
         ProblemText problem;
         bool cancelled = false;
+        double seconds = 0.0;
     };
     [[nodiscard]] Result work(std::stop_token stop);
     void deliver();
 
     std::shared_ptr<const scene::Scene> scene_;
     analysis::CenterlineOptions options_;
+    double workSeconds_ = 0.0;
     WorkerRun<Result> run_;  ///< after what the work reads: waits for the worker before they go
 };
 

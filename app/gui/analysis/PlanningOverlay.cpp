@@ -4,13 +4,18 @@
 #include <QEvent>
 #include <QPainter>
 #include <QPainterPath>
+#include <algorithm>
 #include <cmath>
 #include <glm/glm.hpp>
 #include <limits>
 
 #include "gui/ViewerWidget.h"
 #include "gui/analysis/PlanningState.h"
+#include "vv/colormaps/ColorMap.h"
+#include "vv/colormaps/LabelPalette.h"
 #include "vv/planning/VesselPath.h"
+#include "vv/render/CenterlineOverlay.h"
+#include "vv/render/LegendPainter.h"
 
 namespace vv::gui {
 
@@ -20,6 +25,14 @@ const QColor kHalo(0, 0, 0, 190);
 const QColor kLine(255, 255, 255, 200);
 const QColor kPath(255, 214, 0);
 const QColor kCursor(255, 60, 60);
+/// The diameter colouring's map: not the vessels' usual ones (Viridis, the
+/// CVD-safe Cividis), so that the two legends cannot be read for each other.
+constexpr colormaps::ColorMap kDiameterMap = colormaps::ColorMap::Inferno;
+
+QColor toColour(const glm::vec3& c) {
+    return QColor::fromRgbF(std::clamp(c.r, 0.0F, 1.0F), std::clamp(c.g, 0.0F, 1.0F),
+                            std::clamp(c.b, 0.0F, 1.0F));
+}
 
 void haloText(QPainter& painter, const QPointF& at, const QString& text) {
     QPainterPath path;
@@ -58,6 +71,25 @@ PlanningOverlay::PlanningOverlay(ViewerWidget* viewer, PlanningState* state)
     connect(state_, &PlanningState::cursorMoved, this, [this] { update(); });
     connect(state_, &PlanningState::landmarkSelected, this, [this] { update(); });
     follow();
+}
+
+void PlanningOverlay::setColouring(Colouring colouring) {
+    colouring_ = colouring;
+    update();
+}
+
+std::pair<float, float> PlanningOverlay::diameterRange() const {
+    float lo = std::numeric_limits<float>::max();
+    float hi = 0.0F;
+    if (state_->hasAnalysis()) {
+        for (const auto& branch : state_->analysis()->tree.branches) {
+            for (const auto& p : branch.points) {
+                lo = std::min(lo, static_cast<float>(2.0 * p.radiusMm));
+                hi = std::max(hi, static_cast<float>(2.0 * p.radiusMm));
+            }
+        }
+    }
+    return lo <= hi ? std::pair{lo, hi} : std::pair{0.0F, 1.0F};
 }
 
 void PlanningOverlay::follow() {
@@ -111,32 +143,70 @@ void PlanningOverlay::paintEvent(QPaintEvent* event) {
         }
         return path;
     };
-    // Every centreline, thin.
-    QPainterPath all;
-    for (const auto& branch : tree.branches) {
-        std::vector<glm::dvec3> points;
-        for (const auto& p : branch.points) {
-            points.push_back(p.position);
-        }
-        all.addPath(polyline(points));
-    }
-    painter.setBrush(Qt::NoBrush);
-    painter.setPen(QPen(kHalo, 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-    painter.drawPath(all);
-    painter.setPen(QPen(kLine, 1.2, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-    painter.drawPath(all);
-    // The chosen path, wider.
+    // The chosen path: a wide dark band under the lines, and in the Path
+    // colouring a yellow core over them.
+    QPainterPath chosen;
     if (!state_->profile().empty()) {
         std::vector<glm::dvec3> points;
         for (const planning::PathPoint& p : state_->path().points(tree)) {
             points.push_back(
                 tree.branches[static_cast<std::size_t>(p.branch)].points[p.pointIndex].position);
         }
-        const QPainterPath path = polyline(points);
+        chosen = polyline(points);
+        painter.setBrush(Qt::NoBrush);
         painter.setPen(QPen(kHalo, 5.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        painter.drawPath(path);
+        painter.drawPath(chosen);
+    }
+    // Every centreline, thin: white, or per branch, or by diameter per segment.
+    painter.setBrush(Qt::NoBrush);
+    const auto [lo, hi] = diameterRange();
+    for (const auto& branch : tree.branches) {
+        std::vector<glm::dvec3> points;
+        for (const auto& p : branch.points) {
+            points.push_back(p.position);
+        }
+        const QPainterPath line = polyline(points);
+        painter.setPen(QPen(kHalo, 3.0, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
+        painter.drawPath(line);
+        if (colouring_ == Colouring::Diameter) {
+            for (std::size_t i = 1; i < branch.points.size(); ++i) {
+                const auto a = project(branch.points[i - 1].position);
+                const auto b = project(branch.points[i].position);
+                if (!a || !b) {
+                    continue;
+                }
+                const double d = branch.points[i - 1].radiusMm + branch.points[i].radiusMm;
+                const float t = hi > lo ? (static_cast<float>(d) - lo) / (hi - lo) : 0.5F;
+                painter.setPen(QPen(toColour(colormaps::sample(kDiameterMap, t)), 1.6,
+                                    Qt::SolidLine, Qt::RoundCap));
+                painter.drawLine(*a, *b);
+            }
+            continue;
+        }
+        const QColor colour =
+            colouring_ == Colouring::Branch
+                ? toColour(colormaps::labelColor(static_cast<std::size_t>(branch.id)))
+                : kLine;
+        painter.setPen(QPen(colour, colouring_ == Colouring::Branch ? 1.8 : 1.2, Qt::SolidLine,
+                            Qt::RoundCap, Qt::RoundJoin));
+        painter.drawPath(line);
+    }
+    if (colouring_ == Colouring::Path && !chosen.isEmpty()) {
         painter.setPen(QPen(kPath, 2.5, Qt::SolidLine, Qt::RoundCap, Qt::RoundJoin));
-        painter.drawPath(path);
+        painter.drawPath(chosen);
+    }
+    if (colouring_ == Colouring::Diameter) {
+        // The colours' legend, above the viewer's own parameter legend.
+        render::Legends legends;
+        render::ParameterLegend legend;
+        legend.name = "inscribed diameter";
+        legend.unit = "mm";
+        legend.title = render::centerlineLegendTitle();
+        legend.min = lo;
+        legend.max = hi;
+        legend.map = kDiameterMap;
+        legends.parameter = legend;
+        render::paintLegends(painter, QRectF(0.0, 0.0, width(), height() - 90.0), legends);
     }
     // Landmarks.
     const auto& landmarks = state_->landmarks();

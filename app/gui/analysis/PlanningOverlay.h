@@ -5,6 +5,7 @@
 #include <QWidget>
 #include <glm/vec3.hpp>
 #include <optional>
+#include <utility>
 
 namespace vv::gui {
 
@@ -25,7 +26,19 @@ class PlanningOverlay : public QWidget {
     Q_OBJECT
 
   public:
+    /// What the centrelines' colour shows.
+    enum class Colouring {
+        Path,      ///< white, the chosen path wider in yellow
+        Branch,    ///< one colour per branch (the label palette), the path wider
+        Diameter,  ///< the inscribed diameter along them (a colour map, with its legend)
+    };
+
     PlanningOverlay(ViewerWidget* viewer, PlanningState* state);
+
+    void setColouring(Colouring colouring);
+    [[nodiscard]] Colouring colouring() const noexcept { return colouring_; }
+    /// The diameter colouring's range (mm) and map, for its legend.
+    [[nodiscard]] std::pair<float, float> diameterRange() const;
 
     /// Where `world` appears in the viewer now (logical widget coordinates);
     /// nullopt behind the camera.
@@ -43,6 +56,7 @@ class PlanningOverlay : public QWidget {
     ViewerWidget* viewer_;
     PlanningState* state_;
     double hoverMm_;
+    Colouring colouring_ = Colouring::Path;
 };
 
 }  // namespace vv::gui

@@ -26,6 +26,7 @@
 #include "gui/ViewerWidget.h"
 #include "gui/analysis/AnalysisTask.h"
 #include "gui/analysis/MeasurementTables.h"
+#include "gui/analysis/PlanningOverlay.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/report/PdfReport.h"
@@ -144,6 +145,34 @@ void AnalysisPanel::buildAnalysisRows() {
     row->addWidget(find_, 1);
     row->addWidget(cancel_);
     outer->addLayout(row);
+    pickEnds_ = new QPushButton(tr("Pick Ends"), this);
+    pickEnds_->setObjectName(QStringLiteral("pickEnds"));
+    pickEnds_->setCheckable(true);
+    pickEnds_->setToolTip(
+        tr("Click the vessel where the centrelines start (first click) and "
+           "where they end (each further click); Find Centrelines then uses "
+           "them instead of the automatic ends"));
+    clearEnds_ = new QPushButton(tr("Automatic Ends"), this);
+    clearEnds_->setObjectName(QStringLiteral("automaticEnds"));
+    clearEnds_->setToolTip(tr("Forget the picked ends: the open ends and tips are found"));
+    auto* ends = new QHBoxLayout;
+    ends->addWidget(pickEnds_, 1);
+    ends->addWidget(clearEnds_, 1);
+    outer->addLayout(ends);
+    ends_ = new QLabel(this);
+    ends_->setObjectName(QStringLiteral("endsLabel"));
+    ends_->setWordWrap(true);
+    outer->addWidget(ends_);
+    connect(clearEnds_, &QPushButton::clicked, this, [this] {
+        state_->setGivenEnds(std::nullopt, {});
+        pickEnds_->setChecked(false);
+        showEnds();
+    });
+    connect(pickEnds_, &QPushButton::toggled, this, [this](bool on) {
+        if (on) {
+            pick_->setChecked(false);  // one kind of click at a time
+        }
+    });
     progress_ = new QProgressBar(this);
     progress_->setObjectName(QStringLiteral("analysisProgress"));
     progress_->setRange(0, 1000);
@@ -219,6 +248,17 @@ void AnalysisPanel::buildPathRows() {
     }
     form->addRow(tr("Path from:"), from_);
     form->addRow(tr("to:"), to_);
+    lines_ = new QComboBox(analysed_);
+    lines_->setObjectName(QStringLiteral("linesColouring"));
+    lines_->addItem(tr("Path highlighted"), static_cast<int>(PlanningOverlay::Colouring::Path));
+    lines_->addItem(tr("By branch"), static_cast<int>(PlanningOverlay::Colouring::Branch));
+    lines_->addItem(tr("By diameter"), static_cast<int>(PlanningOverlay::Colouring::Diameter));
+    lines_->setToolTip(tr("How the centrelines are coloured in the 3-D view"));
+    lines_->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    lines_->setMinimumContentsLength(12);
+    form->addRow(tr("Lines:"), lines_);
+    connect(lines_, &QComboBox::currentIndexChanged, this,
+            [this] { emit linesColouringChosen(lines_->currentData().toInt()); });
     inner->addLayout(form);
     cursor_ = new QLabel(analysed_);
     cursor_->setObjectName(QStringLiteral("cursorSizes"));
@@ -319,6 +359,7 @@ void AnalysisPanel::sceneChanged() {
     cancelAnalysis();
     pending_.reset();
     state_->setGivenEnds(std::nullopt, {});
+    pickEnds_->setChecked(false);
     state_->setAnalysis(nullptr);
     const auto& scene = viewer_->scene();
     const bool surface = scene != nullptr && !scene->meshes.empty();
@@ -345,6 +386,7 @@ void AnalysisPanel::findCenterlines() {
     connect(task, &AnalysisTask::succeeded, this,
             [this, task](const std::shared_ptr<const analysis::VesselAnalysis>& analysis) {
                 if (task_ == task) {
+                    lastWorkSeconds_ = task->workSeconds();
                     state_->setAnalysis(analysis);
                     if (pending_) {
                         const int dropped = state_->applySessionState(*pending_);
@@ -382,6 +424,17 @@ void AnalysisPanel::findCenterlines() {
     cancel_->setEnabled(true);
     status_->setText(tr("Starting…"));
     task->start();
+}
+
+void AnalysisPanel::addEnd(const glm::dvec3& point) {
+    if (!state_->givenSource()) {
+        state_->setGivenEnds(point, {});
+    } else {
+        std::vector<glm::dvec3> targets = state_->givenTargets();
+        targets.push_back(point);
+        state_->setGivenEnds(state_->givenSource(), std::move(targets));
+    }
+    showEnds();
 }
 
 void AnalysisPanel::restoreSession(const app::PlanningSessionState& saved) {
@@ -497,6 +550,12 @@ void AnalysisPanel::showBranches() {
 }
 
 void AnalysisPanel::showEnds() {
+    const auto& targets = state_->givenTargets();
+    ends_->setText(!state_->givenSource()
+                       ? tr("Ends: found automatically")
+                       : tr("Ends: picked, a start and %1 more")
+                             .arg(QLocale().toString(static_cast<qulonglong>(targets.size()))));
+    clearEnds_->setEnabled(state_->givenSource().has_value());
     filling_ = true;
     from_->clear();
     to_->clear();
@@ -637,6 +696,23 @@ bool AnalysisPanel::eventFilter(QObject* watched, QEvent* event) {
                 const auto hit = viewer_->probeAt(mouse->position());
                 if (!hit || !state_->moveCursorNear(glm::dvec3(hit->worldPosition))) {
                     emit statusMessage(tr("No vessel of the path under the mouse"));
+                }
+            }
+        }
+    }
+    if (watched == viewer_ && pickEnds_->isChecked()) {
+        const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
+        if (mouse != nullptr && event->type() == QEvent::MouseButtonPress) {
+            pressed_ = mouse->button() == Qt::LeftButton;
+            pressPosition_ = mouse->position();
+        } else if (mouse != nullptr && event->type() == QEvent::MouseButtonRelease && pressed_) {
+            pressed_ = false;
+            if (mouse->button() == Qt::LeftButton &&
+                (mouse->position() - pressPosition_).manhattanLength() < kClickSlop) {
+                if (const auto hit = viewer_->probeAt(mouse->position())) {
+                    addEnd(glm::dvec3(hit->worldPosition));
+                } else {
+                    emit statusMessage(tr("No vessel under the mouse: click on a vessel"));
                 }
             }
         }

@@ -6,6 +6,7 @@
 #include <QString>
 #include <QWidget>
 #include <filesystem>
+#include <glm/vec3.hpp>
 #include <optional>
 
 #include "common/Session.h"
@@ -32,7 +33,9 @@ namespace panels {
 ///
 /// - "Find centrelines" analyses the scene's first surface on a worker
 ///   (AnalysisTask) with progress and Cancel; a new scene cancels it and
-///   clears the analysis. The GUI thread never waits for it.
+///   clears the analysis. The GUI thread never waits for it. Its ends are
+///   found automatically (open ends, closed tips) or picked: "Pick Ends",
+///   then a click on the vessel for the start and one for each end.
 /// - The branch table: each branch's name (editable: the name goes into
 ///   measurement files and reports), length, narrowest and widest
 ///   equivalent diameter; the stenosis table: each graded branch's diameter
@@ -67,6 +70,8 @@ class AnalysisPanel : public QWidget {
     void cancelAnalysis();
     /// From findCenterlines() until its result (or failure) is shown.
     [[nodiscard]] bool analysing() const;
+    /// How long the last analysis's worker took (wall seconds; benchmarks).
+    [[nodiscard]] double lastWorkSeconds() const noexcept { return lastWorkSeconds_; }
     /// The viewer shows another scene: cancels a running analysis, clears
     /// the state, enables "Find centrelines" when the scene has a surface.
     void sceneChanged();
@@ -88,12 +93,22 @@ class AnalysisPanel : public QWidget {
     [[nodiscard]] QPushButton* findButton() const noexcept { return find_; }
     [[nodiscard]] QPushButton* cancelButton() const noexcept { return cancel_; }
     [[nodiscard]] QPushButton* pickButton() const noexcept { return pick_; }
+    /// "Pick Ends": while checked, a click on the vessel adds an end point
+    /// (the first the start); "Automatic Ends" forgets them.
+    [[nodiscard]] QPushButton* pickEndsButton() const noexcept { return pickEnds_; }
+    [[nodiscard]] QPushButton* automaticEndsButton() const noexcept { return clearEnds_; }
+    [[nodiscard]] QLabel* endsLabel() const noexcept { return ends_; }
+    /// Adds an end point for the next analysis (what a click does while
+    /// picking ends): the start first, then the ends.
+    void addEnd(const glm::dvec3& point);
     [[nodiscard]] QTableWidget* branchTable() const noexcept { return branches_; }
     /// The graded stenoses: branch (tooltip: the reference), diameter and
     /// area percent, where along the path.
     [[nodiscard]] QTableWidget* stenosisTable() const noexcept { return stenoses_; }
     [[nodiscard]] QComboBox* fromEndChooser() const noexcept { return from_; }
     [[nodiscard]] QComboBox* toEndChooser() const noexcept { return to_; }
+    /// How the centrelines are coloured in 3-D (item data: PlanningOverlay::Colouring as int).
+    [[nodiscard]] QComboBox* linesChooser() const noexcept { return lines_; }
     [[nodiscard]] QComboBox* landmarkKindChooser() const noexcept { return kind_; }
     [[nodiscard]] QLineEdit* freeNameField() const noexcept { return freeName_; }
     [[nodiscard]] QPushButton* placeButton() const noexcept { return place_; }
@@ -106,6 +121,8 @@ class AnalysisPanel : public QWidget {
   signals:
     /// A one-line message for the status bar.
     void statusMessage(const QString& message);
+    /// The lines' colouring was chosen (PlanningOverlay::Colouring as int).
+    void linesColouringChosen(int colouring);
 
   protected:
     /// "Pick on vessel": a click on the viewer moves the cursor.
@@ -133,12 +150,16 @@ class AnalysisPanel : public QWidget {
     std::optional<app::PlanningSessionState> pending_;  ///< restored once its analysis arrives
     QPushButton* find_ = nullptr;
     QPushButton* cancel_ = nullptr;
+    QPushButton* pickEnds_ = nullptr;
+    QPushButton* clearEnds_ = nullptr;
+    QLabel* ends_ = nullptr;
     QProgressBar* progress_ = nullptr;
     QLabel* status_ = nullptr;
     QTableWidget* branches_ = nullptr;
     QTableWidget* stenoses_ = nullptr;
     QComboBox* from_ = nullptr;
     QComboBox* to_ = nullptr;
+    QComboBox* lines_ = nullptr;
     QLabel* cursor_ = nullptr;
     QPushButton* pick_ = nullptr;
     QComboBox* kind_ = nullptr;
@@ -151,8 +172,9 @@ class AnalysisPanel : public QWidget {
     QPushButton* save_ = nullptr;
     QPushButton* csv_ = nullptr;
     QWidget* analysed_ = nullptr;  ///< everything shown once there is an analysis
-    bool filling_ = false;         ///< while tables are refilled: edits are not the user's
-    bool pressed_ = false;         ///< the left button went down on the viewer
+    double lastWorkSeconds_ = 0.0;
+    bool filling_ = false;  ///< while tables are refilled: edits are not the user's
+    bool pressed_ = false;  ///< the left button went down on the viewer
     QPointF pressPosition_;
 };
 
