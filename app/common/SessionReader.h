@@ -88,9 +88,8 @@ void readView(const SessionReader& reader, const QJsonObject& view, DisplaySetti
 /// Reads the "slices" object `value`; fails naming the field ("slices.axial.zoom").
 [[nodiscard]] SliceSessionState readSlices(const SessionReader& reader, const QJsonValue& value);
 /// The "planning" object (SessionPlanning.cpp).
-[[nodiscard]] QJsonObject planningToJson(const PlanningSessionState& state);
-[[nodiscard]] PlanningSessionState readPlanning(const SessionReader& reader,
-                                                const QJsonValue& value);
+[[nodiscard]] QJsonObject planningToJson(const PlanningSessionState& p);
+[[nodiscard]] PlanningSessionState readPlanning(const SessionReader& r, const QJsonValue& value);
 
 /// Brings `root` (any supported version) to the current version, one step at a time.
 [[nodiscard]] QJsonObject migrateSession(QJsonObject root, const SessionReader& reader);

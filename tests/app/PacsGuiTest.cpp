@@ -675,7 +675,7 @@ TEST_F(PacsGuiTest, TheMeasurementsGoToThePacsAsAStructuredReportInTheSeriesStud
         openDicomAndAccept([&] { window_->openDicom(QString::fromStdString(cta.string())); }));
     // Without centrelines there is nothing to send as measurements.
     {
-        QAction* action = window_->findChild<QAction*>(QStringLiteral("sendToPacs"));
+        auto* action = window_->findChild<QAction*>(QStringLiteral("sendToPacs"));
         action->trigger();
         auto* before = window_->findChild<SendDialog*>();
         ASSERT_NE(before, nullptr);

@@ -20,6 +20,7 @@
 #include <QSlider>
 #include <QTableWidget>
 #include <QWheelEvent>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <fstream>
@@ -684,13 +685,13 @@ TEST(PlanningSession, ABadPlanningObjectIsRefusedNamingItsField) {
     EXPECT_EQ(back.planning->pathTo, 2);
     EXPECT_EQ(back.planning->landmarks.at(0).kind, LandmarkKind::LowestRenalArtery);
     EXPECT_EQ(back.planning->branchNames.at(1), "left iliac");
-    const std::pair<const char*, const char*> broken[] = {
-        {"\"kind\": \"lowest_renal_artery\"", "\"kind\": \"renal\""},
-        {"\"cursor_mm\": 0", "\"cursor_mm\": -5"},
-        {"\"to\": 2", "\"to\": \"two\""},
-    };
-    const std::string fields[] = {"planning.landmarks[0].kind", "planning.cursor_mm",
-                                  "planning.path.to"};
+    const std::array<std::pair<const char*, const char*>, 3> broken{{
+        {R"("kind": "lowest_renal_artery")", R"("kind": "renal")"},
+        {R"("cursor_mm": 0)", R"("cursor_mm": -5)"},
+        {R"("to": 2)", R"("to": "two")"},
+    }};
+    const std::array<std::string, 3> fields{"planning.landmarks[0].kind", "planning.cursor_mm",
+                                            "planning.path.to"};
     for (std::size_t i = 0; i < std::size(broken); ++i) {
         std::string text = json.toStdString();
         const auto at = text.find(broken[i].first);

@@ -33,17 +33,18 @@ glm::dvec3 perpendicular(const glm::dvec3& t) {
 }  // namespace
 
 CurvedReformation::CurvedReformation(PlanningState* state, QWidget* parent)
-    : QWidget(parent), state_(state) {
+    : QWidget(parent),
+      state_(state),
+      slider_(new QSlider(Qt::Vertical, this)),
+      angle_(new QLabel(this)) {
     setObjectName(QStringLiteral("curvedReformation"));
     setMinimumHeight(120);
     setToolTip(
         tr("The volume along the path, straightened (distances true along it); a click "
            "moves the cursor"));
-    slider_ = new QSlider(Qt::Vertical, this);
     slider_->setObjectName(QStringLiteral("cprRotation"));
     slider_->setRange(0, 179);
     slider_->setToolTip(tr("Rotation about the path"));
-    angle_ = new QLabel(this);
     angle_->setObjectName(QStringLiteral("cprAngle"));
     angle_->setAlignment(Qt::AlignCenter);
     auto* side = new QVBoxLayout;
@@ -115,6 +116,7 @@ void CurvedReformation::resample() {
     // A rotation-minimising frame along the path: the previous across
     // direction projected off each new tangent.
     std::vector<glm::dvec3> points;
+    points.reserve(profile.size());
     for (const ProfilePoint& p : profile) {
         points.push_back(planning::sampleAt(tree, p.location).position);
     }

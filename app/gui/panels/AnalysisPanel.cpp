@@ -87,11 +87,10 @@ QTableWidget* compactTable(QWidget* parent, const QString& objectName, const QSt
 }  // namespace
 
 AnalysisPanel::AnalysisPanel(ViewerWidget* viewer, PlanningState* state, QWidget* parent)
-    : QWidget(parent), viewer_(viewer), state_(state) {
+    : QWidget(parent), viewer_(viewer), state_(state), analysed_(new QWidget(this)) {
     setObjectName(QStringLiteral("analysisPanel"));
     auto* outer = new QVBoxLayout(this);
     buildAnalysisRows();
-    analysed_ = new QWidget(this);
     auto* inner = new QVBoxLayout(analysed_);
     inner->setContentsMargins(0, 0, 0, 0);
     outer->addWidget(analysed_);

@@ -62,6 +62,10 @@ class AnalysisPanel : public QWidget {
     /// The task is a child: deleting the panel cancels and waits for it.
     AnalysisPanel(ViewerWidget* viewer, PlanningState* state, QWidget* parent = nullptr);
     ~AnalysisPanel() override;
+    AnalysisPanel(const AnalysisPanel&) = delete;
+    AnalysisPanel& operator=(const AnalysisPanel&) = delete;
+    AnalysisPanel(AnalysisPanel&&) = delete;
+    AnalysisPanel& operator=(AnalysisPanel&&) = delete;
 
     /// Starts the analysis of the viewer's scene (what "Find centrelines"
     /// does); cancels one running. Does nothing without a scene.
