@@ -80,6 +80,17 @@ const analysis::CrossSection& sectionAt(
     return sections[static_cast<std::size_t>(at.branch)][nearest];
 }
 
+/// "path_mm": where `at` lies along `path`, or null off it (or without one).
+void writeAlong(JsonWriter& json, const analysis::CenterlineTree& tree,
+                const std::optional<planning::VesselPath>& path, const planning::TreeLocation& at) {
+    json.key("path_mm");
+    if (const auto along = path ? path->abscissaOf(tree, at) : std::nullopt) {
+        json.number(*along);
+    } else {
+        json.null();
+    }
+}
+
 void writeSizes(JsonWriter& json, const planning::SectionSizes& s,
                 const analysis::CrossSection* geometry = nullptr) {
     json.beginObject();
@@ -207,12 +218,7 @@ void writeLandmarks(JsonWriter& json, const analysis::CenterlineTree& tree,
         json.member("branch", l.location.branch);
         json.member("abscissa_mm", l.location.abscissaMm);
         writePoint(json, "position", planning::sampleAt(tree, l.location).position);
-        json.key("path_mm");
-        if (const auto along = path ? path->abscissaOf(tree, l.location) : std::nullopt) {
-            json.number(*along);
-        } else {
-            json.null();
-        }
+        writeAlong(json, tree, path, l.location);
         if (p.given) {
             writePoint(json, "given", *p.given);
             json.member("given_distance_mm", p.distanceMm);
@@ -315,13 +321,7 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
             json.member("area_percent", stenosis->areaPercent);
             json.member("reference_diameter_mm", stenosis->referenceDiameterMm);
             json.member("reference", stenosis->method);
-            json.key("path_mm");
-            if (const auto along = path ? path->abscissaOf(tree, {branch.id, stenosis->abscissaMm})
-                                        : std::nullopt) {
-                json.number(*along);
-            } else {
-                json.null();
-            }
+            writeAlong(json, tree, path, {branch.id, stenosis->abscissaMm});
             json.endObject();
         } else {
             json.null();

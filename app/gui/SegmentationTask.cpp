@@ -6,21 +6,14 @@
 #include <cmath>
 #include <exception>
 #include <limits>
-#include <mutex>
 #include <string>
 #include <utility>
 
 #include "gui/EngineTexts.h"
+#include "gui/StageProgress.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
-
-namespace {
-
-/// Progress signals of one stage at most this often.
-constexpr std::chrono::milliseconds kProgressInterval{50};
-
-}  // namespace
 
 SegmentationTask::SegmentationTask(segmentation::SegmentationRequest request, QObject* parent)
     : QObject(parent), request_(std::move(request)) {
@@ -35,22 +28,8 @@ SegmentationTask::Result SegmentationTask::work(std::stop_token stop) {
     // Worker thread: reads request_ (immutable while running), emits
     // progressChanged (queued to the GUI thread).
     Result result;
-    std::mutex lock;
-    auto last = std::chrono::steady_clock::time_point{};
-    std::string lastStage;
-    const Progress progress(
-        [this, &lock, &last, &lastStage](double fraction, std::string_view stage) {
-            const auto now = std::chrono::steady_clock::now();
-            const std::lock_guard guard(lock);
-            if (stage == lastStage && now - last < kProgressInterval) {
-                return;
-            }
-            last = now;
-            lastStage = std::string(stage);
-            emit progressChanged(std::clamp(fraction, 0.0, 1.0),
-                                 translatedStage(QString::fromUtf8(
-                                     stage.data(), static_cast<qsizetype>(stage.size()))));
-        },
+    const Progress progress = stageProgress(
+        [this](double fraction, const QString& stage) { emit progressChanged(fraction, stage); },
         std::move(stop));
     try {
         result.outcome = std::make_shared<const segmentation::SegmentationOutcome>(

@@ -4,21 +4,14 @@
 #include <algorithm>
 #include <chrono>
 #include <exception>
-#include <mutex>
 #include <string>
 #include <utility>
 
+#include "gui/StageProgress.h"
 #include "vv/analysis/AnalysisError.h"
 #include "vv/core/Error.h"
 
 namespace vv::gui {
-
-namespace {
-
-/// Progress signals of one stage at most this often.
-constexpr std::chrono::milliseconds kProgressInterval{50};
-
-}  // namespace
 
 AnalysisTask::AnalysisTask(std::shared_ptr<const scene::Scene> scene,
                            analysis::CenterlineOptions options, QObject* parent)
@@ -38,22 +31,8 @@ AnalysisTask::Result AnalysisTask::work(std::stop_token stop) {
         result.problem = {tr("The scene has no vessel surface to analyse."), {}};
         return result;
     }
-    std::mutex lock;
-    auto last = std::chrono::steady_clock::time_point{};
-    std::string lastStage;
-    const Progress progress(
-        [this, &lock, &last, &lastStage](double fraction, std::string_view stage) {
-            const auto now = std::chrono::steady_clock::now();
-            const std::lock_guard guard(lock);
-            if (stage == lastStage && now - last < kProgressInterval) {
-                return;
-            }
-            last = now;
-            lastStage = std::string(stage);
-            emit progressChanged(std::clamp(fraction, 0.0, 1.0),
-                                 translatedStage(QString::fromUtf8(
-                                     stage.data(), static_cast<qsizetype>(stage.size()))));
-        },
+    const Progress progress = stageProgress(
+        [this](double fraction, const QString& stage) { emit progressChanged(fraction, stage); },
         std::move(stop));
     const auto started = std::chrono::steady_clock::now();
     try {

@@ -10,6 +10,8 @@
 #include <exception>
 
 #include "gui/analysis/PlanningState.h"
+#include "gui/panels/PanelUtil.h"
+#include "vv/colormaps/LabelPalette.h"
 #include "vv/report/PdfReport.h"
 #include "vv/slices/Reslice.h"
 
@@ -21,8 +23,8 @@ namespace {
 constexpr int kPixels = 160;
 
 const QColor kContour(255, 214, 0);
-const QColor kMinimum(213, 94, 0);
-const QColor kMaximum(0, 158, 115);
+const QColor kMinimum = panels::toQColor(colormaps::diameterColors().minimum);
+const QColor kMaximum = panels::toQColor(colormaps::diameterColors().maximum);
 
 QString millimetres(double mm) {
     return QString::fromStdString(report::measurementCellText({mm, 1, "mm", {}}));

@@ -17,6 +17,8 @@
 
 #include "common/MeasurementSection.h"
 #include "gui/analysis/PlanningState.h"
+#include "gui/panels/PanelUtil.h"
+#include "vv/colormaps/LabelPalette.h"
 #include "vv/report/PdfReport.h"
 
 namespace vv::gui {
@@ -26,10 +28,10 @@ namespace {
 /// A press this close (px) to a landmark's line grabs it.
 constexpr double kGrabPixels = 6.0;
 
-// Okabe-Ito colours: told apart with any colour vision.
-const QColor kEquivalent(0, 114, 178);
-const QColor kMinimum(213, 94, 0);
-const QColor kMaximum(0, 158, 115);
+// The diameters' colours (told apart with any colour vision), the report's too.
+const QColor kEquivalent = panels::toQColor(colormaps::diameterColors().equivalent);
+const QColor kMinimum = panels::toQColor(colormaps::diameterColors().minimum);
+const QColor kMaximum = panels::toQColor(colormaps::diameterColors().maximum);
 const QColor kArea(120, 120, 120);
 const QColor kLandmark(60, 60, 60);
 const QColor kCursor(204, 0, 0);

@@ -11,6 +11,7 @@
 
 #include "gui/ViewerWidget.h"
 #include "gui/analysis/PlanningState.h"
+#include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/ColorMap.h"
 #include "vv/colormaps/LabelPalette.h"
 #include "vv/planning/VesselPath.h"
@@ -28,11 +29,6 @@ const QColor kCursor(255, 60, 60);
 /// The diameter colouring's map: not the vessels' usual ones (Viridis, the
 /// CVD-safe Cividis), so that the two legends cannot be read for each other.
 constexpr colormaps::ColorMap kDiameterMap = colormaps::ColorMap::Inferno;
-
-QColor toColour(const glm::vec3& c) {
-    return QColor::fromRgbF(std::clamp(c.r, 0.0F, 1.0F), std::clamp(c.g, 0.0F, 1.0F),
-                            std::clamp(c.b, 0.0F, 1.0F));
-}
 
 void haloText(QPainter& painter, const QPointF& at, const QString& text) {
     QPainterPath path;
@@ -177,7 +173,7 @@ void PlanningOverlay::paintEvent(QPaintEvent* event) {
                 }
                 const double d = branch.points[i - 1].radiusMm + branch.points[i].radiusMm;
                 const float t = hi > lo ? (static_cast<float>(d) - lo) / (hi - lo) : 0.5F;
-                painter.setPen(QPen(toColour(colormaps::sample(kDiameterMap, t)), 1.6,
+                painter.setPen(QPen(panels::toQColor(colormaps::sample(kDiameterMap, t)), 1.6,
                                     Qt::SolidLine, Qt::RoundCap));
                 painter.drawLine(*a, *b);
             }
@@ -185,7 +181,7 @@ void PlanningOverlay::paintEvent(QPaintEvent* event) {
         }
         const QColor colour =
             colouring_ == Colouring::Branch
-                ? toColour(colormaps::labelColor(static_cast<std::size_t>(branch.id)))
+                ? panels::toQColor(colormaps::labelColor(static_cast<std::size_t>(branch.id)))
                 : kLine;
         painter.setPen(QPen(colour, colouring_ == Colouring::Branch ? 1.8 : 1.2, Qt::SolidLine,
                             Qt::RoundCap, Qt::RoundJoin));

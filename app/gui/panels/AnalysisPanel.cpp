@@ -37,9 +37,6 @@ namespace {
 
 constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
-/// A press and release closer than this (px) is a click, not a drag.
-constexpr int kClickSlop = 4;
-
 /// `mm` as the report prints it ("15,0 mm"), or a dash.
 QString millimetres(double mm, int decimals = 1) {
     report::MeasurementCell cell;
@@ -683,36 +680,18 @@ void AnalysisPanel::exportSections() {
 }
 
 bool AnalysisPanel::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == viewer_ && pick_->isChecked() && state_->hasAnalysis()) {
-        const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
-        if (mouse != nullptr && event->type() == QEvent::MouseButtonPress) {
-            pressed_ = mouse->button() == Qt::LeftButton;
-            pressPosition_ = mouse->position();
-        } else if (mouse != nullptr && event->type() == QEvent::MouseButtonRelease && pressed_) {
-            pressed_ = false;
-            if (mouse->button() == Qt::LeftButton &&
-                (mouse->position() - pressPosition_).manhattanLength() < kClickSlop) {
-                const auto hit = viewer_->probeAt(mouse->position());
-                if (!hit || !state_->moveCursorNear(glm::dvec3(hit->worldPosition))) {
-                    emit statusMessage(tr("No vessel of the path under the mouse"));
-                }
-            }
-        }
-    }
-    if (watched == viewer_ && pickEnds_->isChecked()) {
-        const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
-        if (mouse != nullptr && event->type() == QEvent::MouseButtonPress) {
-            pressed_ = mouse->button() == Qt::LeftButton;
-            pressPosition_ = mouse->position();
-        } else if (mouse != nullptr && event->type() == QEvent::MouseButtonRelease && pressed_) {
-            pressed_ = false;
-            if (mouse->button() == Qt::LeftButton &&
-                (mouse->position() - pressPosition_).manhattanLength() < kClickSlop) {
-                if (const auto hit = viewer_->probeAt(mouse->position())) {
+    const bool picking = pick_->isChecked() && state_->hasAnalysis();
+    if (watched == viewer_ && (picking || pickEnds_->isChecked())) {
+        if (const auto at = click_.clicked(event)) {
+            const auto hit = viewer_->probeAt(*at);
+            if (pickEnds_->isChecked()) {
+                if (hit) {
                     addEnd(glm::dvec3(hit->worldPosition));
                 } else {
                     emit statusMessage(tr("No vessel under the mouse: click on a vessel"));
                 }
+            } else if (!hit || !state_->moveCursorNear(glm::dvec3(hit->worldPosition))) {
+                emit statusMessage(tr("No vessel of the path under the mouse"));
             }
         }
     }

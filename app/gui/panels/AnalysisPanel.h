@@ -11,6 +11,7 @@
 
 #include "common/Session.h"
 #include "gui/EngineTexts.h"
+#include "gui/panels/PanelUtil.h"
 
 class QComboBox;
 class QLabel;
@@ -178,8 +179,7 @@ class AnalysisPanel : public QWidget {
     QWidget* analysed_ = nullptr;  ///< everything shown once there is an analysis
     double lastWorkSeconds_ = 0.0;
     bool filling_ = false;  ///< while tables are refilled: edits are not the user's
-    bool pressed_ = false;  ///< the left button went down on the viewer
-    QPointF pressPosition_;
+    ClickDetector click_;   ///< clicks on the viewer (picking ends or the cursor)
 };
 
 }  // namespace panels

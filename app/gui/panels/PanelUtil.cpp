@@ -6,6 +6,7 @@
 #include <QCoreApplication>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
+#include <QMouseEvent>
 #include <QSlider>
 #include <QSpinBox>
 #include <QStyle>
@@ -135,6 +136,26 @@ void makeNarrow(QWidget* panel) {
         form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
         form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     }
+}
+
+std::optional<QPointF> ClickDetector::clicked(const QEvent* event) {
+    /// A press and release closer than this (px) is a click, not a drag.
+    constexpr int kClickSlop = 4;
+    const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
+    if (mouse == nullptr) {
+        return std::nullopt;
+    }
+    if (event->type() == QEvent::MouseButtonPress) {
+        pressed_ = mouse->button() == Qt::LeftButton;
+        at_ = mouse->position();
+    } else if (event->type() == QEvent::MouseButtonRelease && pressed_) {
+        pressed_ = false;
+        if (mouse->button() == Qt::LeftButton &&
+            (mouse->position() - at_).manhattanLength() < kClickSlop) {
+            return mouse->position();
+        }
+    }
+    return std::nullopt;
 }
 
 }  // namespace vv::gui::panels

@@ -2,10 +2,12 @@
 #pragma once
 
 #include <QColor>
+#include <QPointF>
 #include <QString>
 #include <QVariant>
 #include <QWidget>
 #include <glm/glm.hpp>
+#include <optional>
 #include <string>
 #include <string_view>
 
@@ -19,6 +21,19 @@ struct Scene;
 }
 
 namespace vv::gui::panels {
+
+/// Tells a click (a left press and release within a few pixels) from a drag
+/// in a widget's mouse events: for the panels that pick a point on the
+/// viewer while its drags still turn the view.
+class ClickDetector {
+  public:
+    /// Feeds `event` (any type); the release's position when it ends a click.
+    [[nodiscard]] std::optional<QPointF> clicked(const QEvent* event);
+
+  private:
+    bool pressed_ = false;
+    QPointF at_;
+};
 
 /// A QString of UTF-8 text (the modules' names and labels).
 inline QString fromUtf8(std::string_view text) {

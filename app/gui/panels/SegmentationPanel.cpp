@@ -38,8 +38,6 @@ constexpr int kDebounceMs = 300;
 constexpr int kPreviewTriangles = 40000;
 /// A seed taken from a surface point may lie this many voxels from it.
 constexpr int kSeedRadius = 2;
-/// A click moves the mouse by less than this (Manhattan length, pixels).
-constexpr double kClickSlop = 4.0;
 constexpr int kMaxTriangles = 10000000;
 constexpr int kTriangleStep = 10000;
 
@@ -812,16 +810,8 @@ void SegmentationPanel::pickAt(const QPointF& position) {
 
 bool SegmentationPanel::eventFilter(QObject* watched, QEvent* event) {
     if (watched == viewer_ && pickSeed_->isChecked() && volume_) {
-        const auto* mouse = dynamic_cast<const QMouseEvent*>(event);
-        if (mouse != nullptr && event->type() == QEvent::MouseButtonPress) {
-            pressed_ = mouse->button() == Qt::LeftButton;
-            pressPosition_ = mouse->position();
-        } else if (mouse != nullptr && event->type() == QEvent::MouseButtonRelease && pressed_) {
-            pressed_ = false;
-            if (mouse->button() == Qt::LeftButton &&
-                (mouse->position() - pressPosition_).manhattanLength() < kClickSlop) {
-                pickAt(mouse->position());
-            }
+        if (const auto at = click_.clicked(event)) {
+            pickAt(*at);
         }
     }
     return QWidget::eventFilter(watched, event);

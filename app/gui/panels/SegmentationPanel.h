@@ -12,6 +12,7 @@
 
 #include "gui/EngineTexts.h"
 #include "gui/LatestRun.h"
+#include "gui/panels/PanelUtil.h"
 #include "vv/scene/Mesh.h"
 #include "vv/scene/Volume.h"
 #include "vv/segmentation/SegmentationPipeline.h"
@@ -255,8 +256,7 @@ class SegmentationPanel : public QWidget {
     bool isoFollowsLower_ = true;
     bool filling_ = false;  ///< setVolume() is filling the controls
     int previewsShown_ = 0;
-    QPointF pressPosition_;
-    bool pressed_ = false;
+    ClickDetector click_;  ///< clicks on the viewer while picking a seed
 
     QComboBox* displayBox_ = nullptr;
     QDoubleSpinBox* iso_ = nullptr;

@@ -33,4 +33,8 @@ glm::vec3 labelColor(std::size_t index) noexcept {
     return kPalette[index % kPalette.size()];
 }
 
+DiameterColors diameterColors() noexcept {
+    return {kPalette[4], kPalette[3], kPalette[2]};
+}
+
 }  // namespace vv::colormaps

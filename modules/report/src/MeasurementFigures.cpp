@@ -8,6 +8,7 @@
 
 #include "ReportText.h"
 #include "StudyCharts.h"
+#include "vv/colormaps/LabelPalette.h"
 
 namespace vv::report::figures {
 
@@ -217,8 +218,11 @@ void paintSection(QPainter& p, const QRectF& square, const SectionFigure& f) {
 }  // namespace
 
 const std::vector<QColor>& seriesColours() {
-    static const std::vector<QColor> colours{QColor(0, 114, 178), QColor(213, 94, 0),
-                                             QColor(0, 158, 115)};
+    static const std::vector<QColor> colours = [] {
+        const auto c = colormaps::diameterColors();
+        const auto q = [](const glm::vec3& v) { return QColor::fromRgbF(v.r, v.g, v.b); };
+        return std::vector<QColor>{q(c.equivalent), q(c.minimum), q(c.maximum)};
+    }();
     return colours;
 }
 

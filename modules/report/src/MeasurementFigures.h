@@ -13,8 +13,7 @@
 namespace vv::report::figures {
 
 /// The profile's series colours in order (equivalent, minimum, maximum):
-/// Okabe-Ito blue, vermillion and bluish green, told apart with any colour
-/// vision, as the GUI's profile draws them.
+/// colormaps::diameterColors(), as the GUI draws them.
 [[nodiscard]] const std::vector<QColor>& seriesColours();
 /// The contour's colour in a section figure, and the calipers' (minimum,
 /// maximum: the series' colours).

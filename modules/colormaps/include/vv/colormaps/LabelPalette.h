@@ -27,4 +27,14 @@ namespace vv::colormaps {
 /// labelPalette()[index % size]. Never throws.
 [[nodiscard]] glm::vec3 labelColor(std::size_t index) noexcept;
 
+/// The colours of the planning's three diameters wherever they are drawn
+/// (the GUI's profile and cross-section, the report's figures), from the
+/// same palette: equivalent blue, minimum vermillion, maximum bluish green.
+struct DiameterColors {
+    glm::vec3 equivalent;
+    glm::vec3 minimum;
+    glm::vec3 maximum;
+};
+[[nodiscard]] DiameterColors diameterColors() noexcept;
+
 }  // namespace vv::colormaps
