@@ -27,22 +27,21 @@ struct Throttle {
 
 Progress stageProgress(std::function<void(double, const QString&)> report, std::stop_token stop) {
     auto throttle = std::make_shared<Throttle>();
-    return Progress(
-        [throttle, report = std::move(report)](double fraction, std::string_view stage) {
-            const auto now = std::chrono::steady_clock::now();
-            {
-                const std::lock_guard guard(throttle->lock);
-                if (stage == throttle->lastStage && now - throttle->last < kProgressInterval) {
-                    return;
+    return {[throttle, report = std::move(report)](double fraction, std::string_view stage) {
+                const auto now = std::chrono::steady_clock::now();
+                {
+                    const std::lock_guard guard(throttle->lock);
+                    if (stage == throttle->lastStage && now - throttle->last < kProgressInterval) {
+                        return;
+                    }
+                    throttle->last = now;
+                    throttle->lastStage = std::string(stage);
                 }
-                throttle->last = now;
-                throttle->lastStage = std::string(stage);
-            }
-            report(std::clamp(fraction, 0.0, 1.0),
-                   translatedStage(
-                       QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size()))));
-        },
-        std::move(stop));
+                report(std::clamp(fraction, 0.0, 1.0),
+                       translatedStage(
+                           QString::fromUtf8(stage.data(), static_cast<qsizetype>(stage.size()))));
+            },
+            std::move(stop)};
 }
 
 }  // namespace vv::gui
