@@ -36,6 +36,20 @@ const QColor kArea(120, 120, 120);
 const QColor kLandmark(60, 60, 60);
 const QColor kCursor(204, 0, 0);
 
+/// 1, 2 or 5 times a power of ten, at least `rough`.
+double niceStep(double rough) {
+    if (!(rough > 0.0) || !std::isfinite(rough)) {
+        return 1.0;
+    }
+    const double power = std::pow(10.0, std::floor(std::log10(rough)));
+    for (const double m : {1.0, 2.0, 5.0}) {
+        if (m * power >= rough) {
+            return m * power;
+        }
+    }
+    return 10.0 * power;
+}
+
 QLineSeries* verticalLine(QChart* chart, const QColor& colour, Qt::PenStyle style, double width,
                           QValueAxis* x, QValueAxis* y) {
     auto* line = new QLineSeries(chart);
@@ -126,8 +140,12 @@ void DiameterProfile::rebuild() {
         }
     }
     area_->setRange(0.0, areaTop * 1.1);
+    // Ticks at round values from 0, the range kept: the distance axis ends
+    // where the path does (the reformation above lines up with it).
     for (QValueAxis* axis : {along_, diameter_, area_}) {
-        axis->applyNiceNumbers();  // ticks at round values
+        axis->setTickType(QValueAxis::TicksDynamic);
+        axis->setTickAnchor(0.0);
+        axis->setTickInterval(niceStep(axis->max() / 5.0));
     }
     c->addAxis(along_, Qt::AlignBottom);
     c->addAxis(diameter_, Qt::AlignLeft);

@@ -39,6 +39,11 @@ void PlanningState::setAnalysis(std::shared_ptr<const analysis::VesselAnalysis> 
         if (to_ > 0) {
             path_ = planning::VesselPath::betweenEnds(analysis_->tree, 0, to_);
             rebuildProfile();
+            // The cursor on the first section that measures the vessel (the
+            // path's first ones lie in its end's zone).
+            const auto first = std::find_if(profile_.begin(), profile_.end(),
+                                            [](const ProfilePoint& p) { return p.measured; });
+            cursorMm_ = first != profile_.end() ? first->pathMm : 0.0;
         } else {
             to_ = 0;
         }
