@@ -278,6 +278,10 @@
         <source>Maximum Ø</source>
         <translation>Maximaler Ø</translation>
     </message>
+    <message>
+        <source>Curved reformation along the path (stretched: the path straight, distances true along it), turned %1° about the path; window width %2, level %3.</source>
+        <translation>Gekrümmte Reformation entlang des Pfads (gestreckt: der Pfad gerade, Abstände entlang des Pfads maßstabsgetreu), um %1° um den Pfad gedreht; Fensterbreite %2, Fenstermitte %3.</translation>
+    </message>
 </context>
 <context>
     <name>vv::app::SegmentationText</name>
@@ -2503,13 +2507,6 @@ Ersetzen?</translation>
     <message>
         <source>Browse…</source>
         <translation>Durchsuchen…</translation>
-    </message>
-</context>
-<context>
-    <name>vv::gui::PlanningReport</name>
-    <message>
-        <source>Curved reformation along the path (stretched: the path straight, distances true along it), turned %1° about the path; window width %2, level %3.</source>
-        <translation>Gekrümmte Reformation entlang des Pfads (gestreckt: der Pfad gerade, Abstände entlang des Pfads maßstabsgetreu), um %1° um den Pfad gedreht; Fensterbreite %2, Fenstermitte %3.</translation>
     </message>
 </context>
 <context>

@@ -48,6 +48,7 @@
 #include "vv/report/ReportJob.h"
 #include "vv/report/ViewExport.h"
 #include "vv/segmentation/SceneSource.h"
+#include "vv/slices/WindowLevel.h"
 
 namespace vv::cli {
 
@@ -404,6 +405,14 @@ void produce(const ReportArguments& a, const fs::path& input, const Outputs& out
         const app::ReportMeasurements measured = app::readMeasurements(a.measurements);
         job.measurements = app::measurementSection(measured);
         job.measurementGroups = app::measurementGroups(measured);
+        if (loaded.volume) {
+            // An image series: the reformation and the sections over the
+            // volume, in its default window (the slice views' first).
+            const auto presets = slices::windowPresets(*loaded.volume);
+            app::addVolumePictures(
+                *job.measurements, measured, *loaded.volume,
+                presets.empty() ? slices::Window{300.0, 600.0} : presets.front().window);
+        }
     }
     job.outputs = outputs;
     std::vector<report::WrittenOutput> written;

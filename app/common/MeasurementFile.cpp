@@ -146,6 +146,22 @@ class MeasurementReader {
         return {a[0].toDouble(), a[1].toDouble()};
     }
 
+    /// [x, y, z] in mm (within a kilometre).
+    [[nodiscard]] glm::dvec3 point(const QJsonValue& v, const std::string& where) const {
+        const QJsonArray a = v.toArray();
+        if (!v.isArray() || a.size() != 3) {
+            fail(where + " is not a point [x, y, z]");
+        }
+        glm::dvec3 p(0.0);
+        for (int i = 0; i < 3; ++i) {
+            if (!a[i].isDouble() || !(std::abs(a[i].toDouble()) <= 1e6)) {
+                fail(where + " is not a point [x, y, z]");
+            }
+            p[i] = a[i].toDouble();
+        }
+        return p;
+    }
+
     /// A number or null (a blank); nullopt for null.
     [[nodiscard]] std::optional<double> maybe(const QJsonValue& v, const std::string& where) const {
         if (v.isNull()) {
@@ -209,6 +225,13 @@ void readContour(const MeasurementReader& r, const QJsonObject& section, const s
             landmark.contour.push_back(
                 r.uv(contour[i], where + ".contour[" + std::to_string(i) + "]"));
         }
+    }
+    if (section.contains("centre")) {
+        MeasuredLandmark::Plane plane;
+        plane.centre = r.point(section.value("centre"), where + ".centre");
+        plane.u = r.point(section.value("axis_u"), where + ".axis_u");
+        plane.v = r.point(section.value("axis_v"), where + ".axis_v");
+        landmark.plane = plane;
     }
     if (section.contains("calipers")) {
         const QJsonObject calipers = r.object(section.value("calipers"), where + ".calipers");
@@ -413,8 +436,8 @@ ReportMeasurements readMeasurementText(const std::string& text, const std::files
             for (qsizetype i = 0; i < points.size(); ++i) {
                 const std::string where = "path.profile[" + std::to_string(i) + "]";
                 const QJsonArray p = points[i].toArray();
-                if (!points[i].isArray() || p.size() != 5) {
-                    r.fail(where + " is not [path_mm, equivalent, min, max, area]");
+                if (!points[i].isArray() || (p.size() != 5 && p.size() != 8)) {
+                    r.fail(where + " is not [path_mm, equivalent, min, max, area(, x, y, z)]");
                 }
                 MeasuredProfile::Point point;
                 point.pathMm = r.maybe(p[0], where).value_or(0.0);
@@ -422,6 +445,9 @@ ReportMeasurements readMeasurementText(const std::string& text, const std::files
                 point.minMm = r.maybe(p[2], where);
                 point.maxMm = r.maybe(p[3], where);
                 point.areaMm2 = r.maybe(p[4], where);
+                if (p.size() == 8) {
+                    point.position = r.point(QJsonArray{p[5], p[6], p[7]}, where);
+                }
                 profile.points.push_back(point);
             }
             m.profile = std::move(profile);

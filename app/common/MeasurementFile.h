@@ -51,6 +51,14 @@ struct MeasuredLandmark {
     std::vector<glm::dvec2> contour;
     std::optional<std::array<glm::dvec2, 2>> minCaliper;
     std::optional<std::array<glm::dvec2, 2>> maxCaliper;
+    /// The section's plane (its centre and in-plane axes u, v), in files
+    /// that have it: where a volume is resliced to show the section.
+    struct Plane {
+        glm::dvec3 centre{0.0};
+        glm::dvec3 u{1.0, 0.0, 0.0};
+        glm::dvec3 v{0.0, 1.0, 0.0};
+    };
+    std::optional<Plane> plane;
 };
 
 /// The diameter profile along the file's path.
@@ -63,6 +71,8 @@ struct MeasuredProfile {
         double pathMm = 0.0;
         /// nullopt where no section measures the vessel (an end, a junction).
         std::optional<double> equivalentMm, minMm, maxMm, areaMm2;
+        /// The centreline point, in files that have it (the reformation's path).
+        std::optional<glm::dvec3> position;
     };
     std::vector<Point> points;
 };

@@ -6,8 +6,15 @@
 #include <QString>
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <utility>
+#include <vector>
+
+#include "common/SliceReport.h"
+#include "vv/core/Error.h"
+#include "vv/slices/CurvedReformation.h"
+#include "vv/slices/Reslice.h"
 
 namespace vv::app {
 
@@ -259,7 +266,7 @@ std::vector<report::SectionFigure> sectionFigures(const ReportMeasurements& m) {
         f.contour = l.contour;
         f.minCaliper = l.minCaliper;
         f.maxCaliper = l.maxCaliper;
-        f.fieldMm = std::max(20.0, 2.5 * s.maxDiameterMm);
+        f.fieldMm = sectionFieldMm(s.maxDiameterMm);
         figures.push_back(std::move(f));
     }
     return figures;
@@ -367,6 +374,86 @@ report::ReportMeasurementSection measurementSection(const ReportMeasurements& m)
     }
     section.sections = sectionFigures(m);
     return section;
+}
+
+double sectionFieldMm(double maxDiameterMm) noexcept {
+    return std::max(20.0, 2.5 * maxDiameterMm);
+}
+
+ReformationGrid reformationGrid(const scene::Volume& volume, double widestMm) {
+    const glm::dvec3 spacing = volume.spacing();
+    return {std::max(10.0, 1.5 * widestMm),
+            std::clamp(std::min({spacing.x, spacing.y, spacing.z}), 0.25, 1.0)};
+}
+
+void addVolumePictures(report::ReportMeasurementSection& section, const ReportMeasurements& m,
+                       const scene::Volume& volume, const slices::Window& window, double degrees) {
+    /// Pixels along a section picture's side.
+    constexpr int kSectionPixels = 160;
+    const ImageView<const std::uint8_t> noLabels;
+    const auto grey = [&](const Image<float>& values) {
+        return sliceImage(values.view(), noLabels, window, slices::OverlayStyle{});
+    };
+    if (m.profile && m.profile->points.size() >= 2) {
+        std::vector<glm::dvec3> points;
+        double widest = 0.0;
+        for (const MeasuredProfile::Point& p : m.profile->points) {
+            if (!p.position) {
+                points.clear();
+                break;  // a file without positions
+            }
+            points.push_back(*p.position);
+            widest = std::max(widest, p.maxMm.value_or(0.0));
+        }
+        if (points.size() >= 2) {
+            const ReformationGrid grid = reformationGrid(volume, widest);
+            try {
+                report::ReformationFigure figure;
+                figure.image = grey(slices::curvedReformation(volume, points, grid.halfWidthMm,
+                                                              grid.rowSpacingMm, degrees));
+                figure.lengthMm = m.profile->lengthMm;
+                figure.halfWidthMm = grid.halfWidthMm;
+                for (const MeasuredLandmark& l : m.landmarks) {
+                    if (l.pathMm) {
+                        figure.landmarks.push_back({*l.pathMm, shownName(l.name, l.kind)});
+                    }
+                }
+                figure.caption =
+                    str(QCoreApplication::translate(
+                            "vv::app::MeasurementText",
+                            "Curved reformation along the path (stretched: the path straight, "
+                            "distances true along it), turned %1° about the path; window width %2, "
+                            "level %3.")
+                            .arg(QLocale().toString(std::lround(degrees)))
+                            .arg(QLocale().toString(window.width, 'f', 0))
+                            .arg(QLocale().toString(window.center, 'f', 0)));
+                section.reformation = std::move(figure);
+            } catch (const InvalidArgumentError&) {
+                // a path the volume cannot follow: no reformation
+            }
+        }
+    }
+    // The section figures follow the landmarks with a contour, in order.
+    std::size_t next = 0;
+    for (const MeasuredLandmark& l : m.landmarks) {
+        if (!l.section || l.contour.size() < 3) {
+            continue;
+        }
+        if (next >= section.sections.size()) {
+            break;
+        }
+        report::SectionFigure& figure = section.sections[next++];
+        if (!l.plane) {
+            continue;
+        }
+        try {
+            figure.image = grey(slices::reslice(
+                volume, slices::sectionPlane(l.plane->centre, l.plane->u, l.plane->v,
+                                             figure.fieldMm, kSectionPixels)));
+        } catch (const InvalidArgumentError&) {
+            figure.image = QImage();  // the contour alone
+        }
+    }
 }
 
 }  // namespace vv::app

@@ -103,6 +103,10 @@ void writeSizes(JsonWriter& json, const planning::SectionSizes& s,
     json.member("at_a_junction", s.atAJunction);
     if (geometry != nullptr && geometry->status == analysis::CrossSection::Status::Ok) {
         writeContour(json, *geometry);
+        // The section's plane: where a volume is resliced to show it.
+        writePoint(json, "centre", geometry->centre);
+        writePoint(json, "axis_u", geometry->axisU);
+        writePoint(json, "axis_v", geometry->axisV);
     }
     json.endObject();
 }
@@ -359,7 +363,8 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
         json.member("chosen", input.path.has_value());
         // The diameter profile: per centreline point along the path, its
         // distance and its section's equivalent, minimum and maximum diameter
-        // and area, or nulls where no section measures the vessel.
+        // and area, or nulls where no section measures the vessel, and the
+        // point's position (x, y, z).
         json.key("profile");
         json.beginArray();
         for (const planning::PathPoint& p : path->points(tree)) {
@@ -374,6 +379,9 @@ void writeMeasurementJson(std::ostream& out, const MeasurementInput& input) {
                 } else {
                     json.null();
                 }
+            }
+            for (int axis = 0; axis < 3; ++axis) {
+                json.number(c.centre[axis]);  // where it is: the reformation's path
             }
             json.endArray();
         }

@@ -520,14 +520,19 @@ void MainWindow::buildPlanning() {
         reformation_->setWindow(window);
         crossSection_->setWindow(window);
     });
-    // The cursor in the slice views follows the path's cursor.
-    connect(planning_, &PlanningState::cursorMoved, this, [this] {
-        if (planning_->hasAnalysis() && slices_->volume() != nullptr) {
+    // The cursor in the slice views follows the path's cursor, and the
+    // mouse while it hovers the profile (back to the cursor when it leaves).
+    const auto showInSlices = [this](double pathMm) {
+        if (planning_->hasAnalysis() && slices_->volume() != nullptr &&
+            !planning_->profile().empty()) {
+            const double at = std::isfinite(pathMm) ? pathMm : planning_->cursorMm();
             slices_->cursor()->setPoint(
-                planning::sampleAt(planning_->analysis()->tree, planning_->cursorLocation())
+                planning::sampleAt(planning_->analysis()->tree, planning_->path().locationAt(at))
                     .position);
         }
-    });
+    };
+    connect(planning_, &PlanningState::cursorMoved, this, showInSlices);
+    connect(profile_, &DiameterProfile::hovered, this, showInSlices);
     // A click on a slice moves the cursor while "Pick on Vessel" is on.
     connect(slices_, &SliceWorkspace::sliceClicked, this, [this](const glm::dvec3& world) {
         if (analysisPanel_->pickButton()->isChecked()) {

@@ -38,6 +38,8 @@
 #include "common/MeasurementFile.h"
 #include "common/Session.h"
 #include "gui/ReportDialog.h"
+#include "gui/SliceCursor.h"
+#include "gui/SliceWorkspace.h"
 #include "gui/analysis/AnalysisTask.h"
 #include "gui/analysis/CrossSectionView.h"
 #include "gui/analysis/CurvedReformation.h"
@@ -542,6 +544,18 @@ TEST_F(PlanningGui, TheSegmentedCtaMeasuresAsTheTreeItWasBuiltFrom) {
     ASSERT_EQ(report::test::runTool("dsrdump +Pl '" + sr.string() + "'", dump), 0) << dump;
     EXPECT_NE(dump.find("Equivalent diameter (2 sqrt(area / pi)), at A"), std::string::npos)
         << dump;
+
+    // The slice views follow the cursor, and the mouse over the profile.
+    const auto placeAt = [&](double mm) {
+        return planning::sampleAt(state().analysis()->tree, state().path().locationAt(mm)).position;
+    };
+    gui::SliceCursor* slices = window_->sliceWorkspace()->cursor();
+    ASSERT_TRUE(slices->point().has_value());
+    EXPECT_LT(glm::distance(*slices->point(), placeAt(state().cursorMm())), 1e-6);
+    emit window_->diameterProfile()->hovered(20.0);
+    EXPECT_LT(glm::distance(*slices->point(), placeAt(20.0)), 1e-6);
+    emit window_->diameterProfile()->hovered(std::nan(""));
+    EXPECT_LT(glm::distance(*slices->point(), placeAt(state().cursorMm())), 1e-6);
 
     // The wheel steps along the path, one section a notch.
     state().stepCursor(0);  // onto a section

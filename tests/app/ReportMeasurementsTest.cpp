@@ -9,8 +9,11 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <QColor>
+#include <QImage>
 #include <QLocale>
 #include <QString>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -29,7 +32,10 @@
 namespace {
 
 namespace fs = std::filesystem;
+using vv::shortestText;
+using vv::report::test::pdfPages;
 using vv::report::test::runTool;
+using vv::report::test::withoutLigatures;
 
 fs::path freshDir(const std::string& name) {
     fs::path dir =
@@ -218,8 +224,17 @@ TEST(ReportMeasurements, TheSrOfADicomSeriesListsItsInstancesAsEvidence) {
     const std::string series = vv::test::writeCtSeries(dir / "series", cta.volume);
     const std::vector<std::string> dicomOptions{"--series", series,        "--threshold",
                                                 "200:700",  "--triangles", "20000"};
-    std::vector<std::string> args{"centerline", (dir / "series").string(), "-o",
-                                  (dir / "c.vtp").string(), "--json"};
+    // A landmark on the root vessel, halfway along its built centreline.
+    const auto& root = cta.tree.segments.front().centerline;
+    const glm::vec3 mid = root[root.size() / 2];
+    std::vector<std::string> args{"centerline",
+                                  (dir / "series").string(),
+                                  "-o",
+                                  (dir / "c.vtp").string(),
+                                  "--json",
+                                  "--landmark",
+                                  "free:Mid root=" + shortestText(mid.x) + "," +
+                                      shortestText(mid.y) + "," + shortestText(mid.z)};
     args.insert(args.end(), dicomOptions.begin(), dicomOptions.end());
     const RunResult centreline = cli(args);
     ASSERT_EQ(centreline.code, 0) << centreline.err;
@@ -248,6 +263,36 @@ TEST(ReportMeasurements, TheSrOfADicomSeriesListsItsInstancesAsEvidence) {
         }
         const RunResult r = cli(report);
         ASSERT_EQ(r.code, 0) << r.err;
+        if (!anonymise) {
+            // The image series under the measurements: the reformation along
+            // the file's path and the landmark's section over the volume,
+            // drawn by the command line as the GUI draws them.
+            std::string text;
+            ASSERT_EQ(runTool("pdftotext -layout '" + (dir / "r.pdf").string() + "' -", text), 0);
+            text = withoutLigatures(text);
+            EXPECT_NE(text.find("Diameter profile along the path"), std::string::npos) << text;
+            EXPECT_NE(text.find("Curved reformation along the path"), std::string::npos) << text;
+            EXPECT_NE(text.find("Mid root"), std::string::npos) << text;
+            int contour = 0;
+            int grey = 0;
+            for (const QImage& page : pdfPages(dir / "r.pdf", dir / "pages", 100)) {
+                for (int y = 0; y < page.height(); ++y) {
+                    for (int x = 0; x < page.width(); ++x) {
+                        const QColor c = page.pixelColor(x, y);
+                        contour += std::abs(c.red() - 230) + std::abs(c.green() - 170) +
+                                               std::abs(c.blue()) <
+                                           60
+                                       ? 1
+                                       : 0;
+                        // The volume's dark tissue: grey, well below the page's white.
+                        grey +=
+                            c.red() == c.green() && c.green() == c.blue() && c.red() < 90 ? 1 : 0;
+                    }
+                }
+            }
+            EXPECT_GT(contour, 50) << "the section's contour";
+            EXPECT_GT(grey, 5000) << "the volume under the reformation and the section";
+        }
         std::string dump;
         runTool("dciodvfy '" + sr.string() + "'", dump);
         EXPECT_EQ(dump.find("Error"), std::string::npos) << dump;

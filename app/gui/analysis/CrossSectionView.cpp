@@ -9,10 +9,13 @@
 #include <cmath>
 #include <exception>
 
+#include "common/MeasurementSection.h"
+#include "common/SliceReport.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/panels/PanelUtil.h"
 #include "vv/colormaps/LabelPalette.h"
 #include "vv/report/PdfReport.h"
+#include "vv/slices/CurvedReformation.h"
 #include "vv/slices/Reslice.h"
 
 namespace vv::gui {
@@ -77,7 +80,7 @@ void CrossSectionView::follow() {
         const double size = section_->status == analysis::CrossSection::Status::Ok
                                 ? section_->maxDiameterMm
                                 : section_->inscribedDiameterMm;
-        fieldMm_ = std::max(20.0, 2.5 * size);
+        fieldMm_ = app::sectionFieldMm(size);
     }
     reslice();
     update();
@@ -86,22 +89,11 @@ void CrossSectionView::follow() {
 QImage CrossSectionView::resliceImage(const scene::Volume& volume,
                                       const analysis::CrossSection& section, double fieldMm,
                                       const slices::Window& window) {
-    slices::SlicePlane plane;
-    plane.width = kPixels;
-    plane.height = kPixels;
-    plane.pixelSpacing = fieldMm / kPixels;
-    plane.right = section.axisU;
-    plane.down = -section.axisV;
-    const double half = 0.5 * (kPixels - 1) * plane.pixelSpacing;
-    plane.origin = section.centre - half * plane.right - half * plane.down;
     try {
-        const Image<float> values = slices::reslice(volume, plane);
-        const Image<std::uint8_t> gray = slices::applyWindow(values.view(), window);
-        QImage image(kPixels, kPixels, QImage::Format_Grayscale8);
-        for (int y = 0; y < kPixels; ++y) {
-            std::copy_n(gray.row(y), kPixels, image.scanLine(y));
-        }
-        return image;
+        const Image<float> values = slices::reslice(
+            volume,
+            slices::sectionPlane(section.centre, section.axisU, section.axisV, fieldMm, kPixels));
+        return app::sliceImage(values.view(), {}, window, slices::OverlayStyle{});
     } catch (const std::exception&) {
         return {};  // outside or unusable: the contour alone
     }

@@ -15,22 +15,12 @@
 #include <glm/gtc/constants.hpp>
 #include <limits>
 
+#include "common/MeasurementSection.h"
+#include "common/SliceReport.h"
 #include "gui/analysis/PlanningState.h"
-#include "vv/slices/Reslice.h"
+#include "vv/slices/CurvedReformation.h"
 
 namespace vv::gui {
-
-namespace {
-
-constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
-
-/// Any unit vector perpendicular to `t`.
-glm::dvec3 perpendicular(const glm::dvec3& t) {
-    const glm::dvec3 axis = std::abs(t.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    return glm::normalize(glm::cross(t, axis));
-}
-
-}  // namespace
 
 CurvedReformation::CurvedReformation(PlanningState* state, QWidget* parent)
     : QWidget(parent),
@@ -106,67 +96,29 @@ void CurvedReformation::resample() {
     for (const ProfilePoint& p : profile) {
         widest = std::max(widest, p.measured ? p.maxMm : 0.0);
     }
-    halfWidthMm_ = std::max(10.0, 1.5 * widest);
-    const double spacing =
-        std::min(volume_->spacing().x, std::min(volume_->spacing().y, volume_->spacing().z));
-    rowSpacingMm_ = std::clamp(spacing, 0.25, 1.0);
-    const int rows =
-        std::clamp(static_cast<int>(std::lround(2.0 * halfWidthMm_ / rowSpacingMm_)) + 1, 3, 2048);
-    values_ = Image<float>(static_cast<int>(profile.size()), rows);
-    // A rotation-minimising frame along the path: the previous across
-    // direction projected off each new tangent.
+    const app::ReformationGrid grid = app::reformationGrid(*volume_, widest);
+    halfWidthMm_ = grid.halfWidthMm;
+    rowSpacingMm_ = grid.rowSpacingMm;
     std::vector<glm::dvec3> points;
     points.reserve(profile.size());
     for (const ProfilePoint& p : profile) {
         points.push_back(planning::sampleAt(tree, p.location).position);
+        columnsMm_.push_back(p.pathMm);
     }
-    const auto tangentAt = [&points](std::size_t i) {
-        const std::size_t a = i == 0 ? 0 : i - 1;
-        const std::size_t b = std::min(points.size() - 1, i + 1);
-        const glm::dvec3 d = points[b] - points[a];
-        return glm::length(d) > 0.0 ? glm::normalize(d) : glm::dvec3(0, 0, 1);
-    };
-    glm::dvec3 across = perpendicular(tangentAt(0));
-    const double angle = rotation_ * glm::pi<double>() / 180.0;
-    for (std::size_t i = 0; i < points.size(); ++i) {
-        const glm::dvec3 t = tangentAt(i);
-        const glm::dvec3 projected = across - glm::dot(across, t) * t;
-        across = glm::length(projected) > 1e-9 ? glm::normalize(projected) : perpendicular(t);
-        const glm::dvec3 binormal = glm::cross(t, across);
-        const glm::dvec3 d = std::cos(angle) * across + std::sin(angle) * binormal;
-        slices::SlicePlane column;
-        column.width = 1;
-        column.height = rows;
-        column.pixelSpacing = rowSpacingMm_;
-        column.right = t;
-        column.down = -d;
-        column.origin = points[i] + halfWidthMm_ * d;
-        try {
-            const Image<float> line = slices::reslice(*volume_, column);
-            for (int r = 0; r < rows; ++r) {
-                values_(static_cast<int>(i), r) = line(0, r);
-            }
-        } catch (const std::exception&) {
-            for (int r = 0; r < rows; ++r) {
-                values_(static_cast<int>(i), r) = static_cast<float>(kNaN);
-            }
-        }
-        columnsMm_.push_back(profile[i].pathMm);
+    try {
+        values_ =
+            slices::curvedReformation(*volume_, points, halfWidthMm_, rowSpacingMm_, rotation_);
+    } catch (const std::exception&) {
+        values_ = Image<float>();  // a path the volume cannot follow: the message instead
+        columnsMm_.clear();
     }
     colour();
     update();
 }
 
 void CurvedReformation::colour() {
-    if (values_.empty()) {
-        image_ = QImage();
-        return;
-    }
-    const Image<std::uint8_t> gray = slices::applyWindow(values_.view(), window_);
-    image_ = QImage(gray.width(), gray.height(), QImage::Format_Grayscale8);
-    for (int y = 0; y < gray.height(); ++y) {
-        std::copy_n(gray.row(y), gray.width(), image_.scanLine(y));
-    }
+    image_ = values_.empty() ? QImage()
+                             : app::sliceImage(values_.view(), {}, window_, slices::OverlayStyle{});
 }
 
 QRectF CurvedReformation::plotRect() const {
