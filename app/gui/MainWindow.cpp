@@ -11,7 +11,6 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QGuiApplication>
-#include <QHBoxLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QLocale>
@@ -28,7 +27,6 @@
 #include <QTimer>
 #include <QToolBar>
 #include <QUrl>
-#include <QVBoxLayout>
 #include <cmath>
 #include <utility>
 
@@ -43,15 +41,9 @@
 #include "gui/ReportDialog.h"
 #include "gui/ScreenshotMode.h"
 #include "gui/SeriesDialog.h"
-#include "gui/SliceCursor.h"
 #include "gui/ViewSettings.h"
 #include "gui/ViewerWidget.h"
-#include "gui/analysis/CrossSectionView.h"
-#include "gui/analysis/CurvedReformation.h"
-#include "gui/analysis/DiameterProfile.h"
-#include "gui/analysis/MeasurementTables.h"
-#include "gui/analysis/PlanningOverlay.h"
-#include "gui/analysis/PlanningReport.h"
+#include "gui/analysis/PlanningDocks.h"
 #include "gui/analysis/PlanningState.h"
 #include "gui/pacs/DicomMenu.h"
 #include "gui/pacs/LocalStudyActions.h"
@@ -232,9 +224,7 @@ void MainWindow::connectDocument() {
                 segmentationPanel_->showCutOff(document_->loadedReport().cutOff,
                                                document_->loadedReport().intensityCorrected);
                 slices_->setVolume(volume, document_->labelMap());
-                reformation_->setVolume(volume);
-                reformation_->setVisible(volume != nullptr);
-                crossSection_->setVolume(volume);
+                planningDocks_->setVolume(volume);
             });
     connect(document_, &DocumentController::recentFilesChanged, this,
             &MainWindow::rebuildRecentMenu);
@@ -421,8 +411,8 @@ void MainWindow::buildViewMenu() {
     for (QDockWidget* dock : docks_) {
         panelsMenu->addAction(dock->toggleViewAction());
     }
-    panelsMenu->addAction(profileDock_->toggleViewAction());
-    panelsMenu->addAction(measurementsDock_->toggleViewAction());
+    panelsMenu->addAction(planningDocks_->profileDock()->toggleViewAction());
+    panelsMenu->addAction(planningDocks_->measurementsDock()->toggleViewAction());
     panelsMenu->addSeparator();
     panelsMenu->addAction(tr("&Reset Layout"), this, &MainWindow::resetLayout);
     view->addSeparator();
@@ -494,93 +484,14 @@ void MainWindow::buildDocks() {
 }
 
 void MainWindow::buildPlanning() {
-    // The diameter profile under the views: shown when an analysis arrives
-    // (not one of docks_: Reset Layout does not show it without one).
-    // Under the views, along the path: the curved reformation (image series
-    // only) over the diameter profile, sharing its distances, and the
-    // cross-section at the cursor beside them.
-    auto* along = new QWidget(this);
-    profile_ = new DiameterProfile(planning_, along);
-    reformation_ = new CurvedReformation(planning_, along);
-    reformation_->hide();
-    crossSection_ = new CrossSectionView(planning_, along);
-    auto* column = new QVBoxLayout;
-    column->addWidget(reformation_, 2);
-    column->addWidget(profile_, 3);
-    auto* row = new QHBoxLayout(along);
-    row->setContentsMargins(2, 2, 2, 2);
-    row->addLayout(column, 1);
-    row->addWidget(crossSection_);
-    profileDock_ = new QDockWidget(tr("Along the Path"), this);
-    profileDock_->setObjectName(QStringLiteral("diameterProfileDock"));
-    profileDock_->setWidget(along);
-    connect(profile_, &DiameterProfile::plotExtentChanged, reformation_,
-            &CurvedReformation::setHorizontalExtent);
-    connect(slices_, &SliceWorkspace::windowChanged, this, [this](const slices::Window& window) {
-        reformation_->setWindow(window);
-        crossSection_->setWindow(window);
-    });
-    // The cursor in the slice views follows the path's cursor, and the
-    // mouse while it hovers the profile (back to the cursor when it leaves).
-    const auto showInSlices = [this](double pathMm) {
-        if (planning_->hasAnalysis() && slices_->volume() != nullptr &&
-            !planning_->profile().empty()) {
-            const double at = std::isfinite(pathMm) ? pathMm : planning_->cursorMm();
-            slices_->cursor()->setPoint(
-                planning::sampleAt(planning_->analysis()->tree, planning_->path().locationAt(at))
-                    .position);
-        }
-    };
-    connect(planning_, &PlanningState::cursorMoved, this, showInSlices);
-    connect(profile_, &DiameterProfile::hovered, this, showInSlices);
-    // A click on a slice moves the cursor while "Pick on Vessel" is on.
-    connect(slices_, &SliceWorkspace::sliceClicked, this, [this](const glm::dvec3& world) {
-        if (analysisPanel_->pickButton()->isChecked()) {
-            planning_->moveCursorNear(world);
-        }
-    });
-    addDockWidget(Qt::BottomDockWidgetArea, profileDock_);
-    profileDock_->hide();
-    measurementsDock_ = new QDockWidget(tr("Measurements"), this);
-    measurementsDock_->setObjectName(QStringLiteral("measurementsDock"));
-    measurementsDock_->setWidget(analysisPanel_->measurementTables());
-    analysisPanel_->measurementTables()->show();
-    // Right of the views along the path.
-    addDockWidget(Qt::BottomDockWidgetArea, measurementsDock_);
-    splitDockWidget(profileDock_, measurementsDock_, Qt::Horizontal);
-    measurementsDock_->hide();
-    planningOverlay_ = new PlanningOverlay(viewer_, planning_);
-    connect(planning_, &PlanningState::analysisChanged, this, [this] {
-        const bool first = planning_->hasAnalysis() && profileDock_->isHidden();
-        profileDock_->setVisible(planning_->hasAnalysis());
-        measurementsDock_->setVisible(planning_->hasAnalysis());
-        if (first) {
-            // The views along the path take most of the width.
-            resizeDocks({profileDock_, measurementsDock_}, {width() * 3 / 5, width() * 2 / 5},
-                        Qt::Horizontal);
-        }
-    });
-    connect(profile_, &DiameterProfile::hovered, planningOverlay_, &PlanningOverlay::setHoverMm);
-    connect(analysisPanel_, &panels::AnalysisPanel::linesColouringChosen, planningOverlay_,
-            [this](int colouring) {
-                planningOverlay_->setColouring(static_cast<PlanningOverlay::Colouring>(colouring));
-            });
-    connect(profile_, &DiameterProfile::placeRequested, analysisPanel_->placeButton(),
-            &QPushButton::click);
-    connect(analysisPanel_, &panels::AnalysisPanel::statusMessage, this,
-            [this](const QString& message) { statusLabel_->setText(message); });
+    planningDocks_ = new PlanningDocks(this, viewer_, slices_, planning_, analysisPanel_);
+    const auto status = [this](const QString& message) { statusLabel_->setText(message); };
+    connect(planningDocks_, &PlanningDocks::statusMessage, this, status);
+    connect(analysisPanel_, &panels::AnalysisPanel::statusMessage, this, status);
 }
 
 std::optional<PlanningReport> MainWindow::plannedReport() {
-    if (!planning_->hasAnalysis()) {
-        return std::nullopt;
-    }
-    try {
-        return planningReport(*planning_, *reformation_, *crossSection_);
-    } catch (const vv::Error& e) {
-        statusLabel_->setText(describeProblem(e, FileAccess::Writing).line());
-        return std::nullopt;
-    }
+    return planningDocks_->plannedReport();
 }
 
 void MainWindow::buildToolBar() {
@@ -736,8 +647,7 @@ void MainWindow::resetLayout() {
     for (panels::CollapsibleSection* section : sidePanel_->sections()) {
         section->resetToDefault();
     }
-    profileDock_->setVisible(planning_->hasAnalysis());
-    measurementsDock_->setVisible(planning_->hasAnalysis());
+    planningDocks_->showForAnalysis();
 }
 
 void MainWindow::revealPanel(const QWidget* panel) {

@@ -16,6 +16,7 @@
 #include "gui/Session.h"
 #include "gui/SliceWorkspace.h"
 #include "gui/ViewerWidget.h"
+#include "gui/analysis/PlanningDocks.h"
 #include "gui/analysis/PlanningReport.h"
 #include "vv/report/ReportJob.h"
 #include "vv/scene/Mesh.h"
@@ -199,15 +200,27 @@ class MainWindow : public QMainWindow {
     /// ("diameterProfileDock", "Along the Path"), shown when an analysis
     /// arrives: the diameter profile, the curved reformation over it (scenes
     /// from an image series), the cross-section at the cursor beside them.
-    [[nodiscard]] DiameterProfile* diameterProfile() const noexcept { return profile_; }
-    [[nodiscard]] CurvedReformation* curvedReformation() const noexcept { return reformation_; }
-    [[nodiscard]] CrossSectionView* crossSection() const noexcept { return crossSection_; }
+    [[nodiscard]] DiameterProfile* diameterProfile() const noexcept {
+        return planningDocks_->profile();
+    }
+    [[nodiscard]] CurvedReformation* curvedReformation() const noexcept {
+        return planningDocks_->reformation();
+    }
+    [[nodiscard]] CrossSectionView* crossSection() const noexcept {
+        return planningDocks_->crossSection();
+    }
     /// The planning marks over the 3-D view.
-    [[nodiscard]] PlanningOverlay* planningOverlay() const noexcept { return planningOverlay_; }
-    [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept { return profileDock_; }
+    [[nodiscard]] PlanningOverlay* planningOverlay() const noexcept {
+        return planningDocks_->overlay();
+    }
+    [[nodiscard]] QDockWidget* diameterProfileDock() const noexcept {
+        return planningDocks_->profileDock();
+    }
     /// The measurement tables (AnalysisPanel::measurementTables()) in a dock
     /// beside it ("measurementsDock"), shown with the analysis.
-    [[nodiscard]] QDockWidget* measurementsDock() const noexcept { return measurementsDock_; }
+    [[nodiscard]] QDockWidget* measurementsDock() const noexcept {
+        return planningDocks_->measurementsDock();
+    }
     /// The planning work for a report or a PACS (planningReport()); nullopt
     /// without an analysis, or when it cannot be put together (the status
     /// bar says why).
@@ -284,7 +297,7 @@ class MainWindow : public QMainWindow {
 
   private:
     void buildDocks();
-    /// The planning views: the diameter profile's dock and the 3-D overlay.
+    /// The planning views (PlanningDocks) and their messages.
     void buildPlanning();
     /// File, View, DICOM and Help, in the menu bar's order.
     void buildMenus();
@@ -337,12 +350,7 @@ class MainWindow : public QMainWindow {
     QList<QDockWidget*> docks_;
     PlanningState* planning_ = nullptr;
     panels::AnalysisPanel* analysisPanel_ = nullptr;
-    DiameterProfile* profile_ = nullptr;
-    CurvedReformation* reformation_ = nullptr;
-    CrossSectionView* crossSection_ = nullptr;
-    QDockWidget* profileDock_ = nullptr;
-    QDockWidget* measurementsDock_ = nullptr;
-    PlanningOverlay* planningOverlay_ = nullptr;
+    PlanningDocks* planningDocks_ = nullptr;
     QByteArray defaultLayout_;  ///< saveState() before the saved layout was restored
     QAction* vssAction_ = nullptr;
     QAction* aoAction_ = nullptr;

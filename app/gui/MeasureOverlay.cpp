@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/MeasureOverlay.h"
 
-#include <QEvent>
 #include <QLocale>
 #include <QPainter>
 #include <QPainterPath>
@@ -9,14 +8,8 @@
 
 namespace vv::gui {
 
-MeasureOverlay::MeasureOverlay(ViewerWidget* viewer) : QWidget(viewer), viewer_(viewer) {
-    setObjectName(QStringLiteral("measureOverlay"));
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setAttribute(Qt::WA_NoSystemBackground);
-    setAttribute(Qt::WA_TranslucentBackground);
-    setFocusPolicy(Qt::NoFocus);
-    setGeometry(viewer->rect());
-    viewer->installEventFilter(this);
+MeasureOverlay::MeasureOverlay(ViewerWidget* viewer)
+    : FollowingOverlay(viewer, QStringLiteral("measureOverlay")) {
     connect(viewer, &ViewerWidget::frameRendered, this, [this] {
         if (!points_.isEmpty()) {
             update();
@@ -37,16 +30,7 @@ void MeasureOverlay::setPoints(const QList<ProbeResult>& points) {
 }
 
 std::optional<QPointF> MeasureOverlay::project(const ProbeResult& point) const {
-    const render::Camera& camera = viewer_->camera();
-    const glm::vec4 clip =
-        camera.projectionMatrix() * camera.viewMatrix() * glm::vec4(point.worldPosition, 1.0F);
-    if (clip.w <= 0.0F) {
-        return std::nullopt;
-    }
-    const float x = clip.x / clip.w;
-    const float y = clip.y / clip.w;
-    return QPointF((static_cast<double>(x) + 1.0) * 0.5 * viewer_->width(),
-                   (1.0 - static_cast<double>(y)) * 0.5 * viewer_->height());
+    return FollowingOverlay::project(point.worldPosition);
 }
 
 void MeasureOverlay::paintEvent(QPaintEvent* event) {
@@ -69,7 +53,7 @@ void MeasureOverlay::paintEvent(QPaintEvent* event) {
             painter.setPen(QPen(color, width, Qt::DashLine, Qt::RoundCap));
             painter.drawLine(screen[0], screen[1]);
         }
-        const Measurement m = measure(points_[0], points_[1], viewer_->camera());
+        const Measurement m = measure(points_[0], points_[1], viewer()->camera());
         const QString text =
             tr("%1 mm").arg(QLocale().toString(static_cast<double>(m.distance), 'f', 1));
         QPainterPath path;
@@ -94,13 +78,6 @@ void MeasureOverlay::paintEvent(QPaintEvent* event) {
         painter.drawPath(label);
         painter.fillPath(label, ink);
     }
-}
-
-bool MeasureOverlay::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == viewer_ && event->type() == QEvent::Resize) {
-        setGeometry(viewer_->rect());
-    }
-    return QWidget::eventFilter(watched, event);
 }
 
 }  // namespace vv::gui

@@ -6,6 +6,7 @@
 #include <QWidget>
 #include <optional>
 
+#include "gui/FollowingOverlay.h"
 #include "gui/ViewerWidget.h"
 
 namespace vv::gui {
@@ -17,7 +18,7 @@ namespace vv::gui {
 /// projected with the viewer's current camera at every repaint (call
 /// update() after a frame), so they stay on the vessels as the camera moves.
 /// Not part of the GL frame (grabFramebuffer() stays the frame alone).
-class MeasureOverlay : public QWidget {
+class MeasureOverlay : public FollowingOverlay {
     Q_OBJECT
 
   public:
@@ -36,10 +37,8 @@ class MeasureOverlay : public QWidget {
 
   protected:
     void paintEvent(QPaintEvent* event) override;
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
-    ViewerWidget* viewer_;
     QList<ProbeResult> points_;
 };
 

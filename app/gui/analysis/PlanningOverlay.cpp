@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "gui/analysis/PlanningOverlay.h"
 
-#include <QEvent>
 #include <QPainter>
 #include <QPainterPath>
 #include <algorithm>
@@ -44,17 +43,9 @@ void haloText(QPainter& painter, const QPointF& at, const QString& text) {
 }  // namespace
 
 PlanningOverlay::PlanningOverlay(ViewerWidget* viewer, PlanningState* state)
-    : QWidget(viewer),
-      viewer_(viewer),
+    : FollowingOverlay(viewer, QStringLiteral("planningOverlay")),
       state_(state),
       hoverMm_(std::numeric_limits<double>::quiet_NaN()) {
-    setObjectName(QStringLiteral("planningOverlay"));
-    setAttribute(Qt::WA_TransparentForMouseEvents);
-    setAttribute(Qt::WA_NoSystemBackground);
-    setAttribute(Qt::WA_TranslucentBackground);
-    setFocusPolicy(Qt::NoFocus);
-    setGeometry(viewer->rect());
-    viewer->installEventFilter(this);
     connect(viewer, &ViewerWidget::frameRendered, this, [this] {
         if (isVisible()) {
             update();
@@ -103,14 +94,7 @@ void PlanningOverlay::setHoverMm(double pathMm) {
 }
 
 std::optional<QPointF> PlanningOverlay::project(const glm::dvec3& world) const {
-    const render::Camera& camera = viewer_->camera();
-    const glm::vec4 clip =
-        camera.projectionMatrix() * camera.viewMatrix() * glm::vec4(glm::vec3(world), 1.0F);
-    if (clip.w <= 0.0F) {
-        return std::nullopt;
-    }
-    return QPointF((static_cast<double>(clip.x / clip.w) + 1.0) * 0.5 * viewer_->width(),
-                   (1.0 - static_cast<double>(clip.y / clip.w)) * 0.5 * viewer_->height());
+    return FollowingOverlay::project(glm::vec3(world));
 }
 
 void PlanningOverlay::paintEvent(QPaintEvent* event) {
@@ -155,7 +139,9 @@ void PlanningOverlay::paintEvent(QPaintEvent* event) {
     }
     // Every centreline, thin: white, or per branch, or by diameter per segment.
     painter.setBrush(Qt::NoBrush);
-    const auto [lo, hi] = diameterRange();
+    // The diameters' range: only the diameter colouring needs it (every paint).
+    const auto [lo, hi] =
+        colouring_ == Colouring::Diameter ? diameterRange() : std::pair{0.0F, 1.0F};
     for (const auto& branch : tree.branches) {
         std::vector<glm::dvec3> points;
         for (const auto& p : branch.points) {
@@ -227,7 +213,7 @@ void PlanningOverlay::paintEvent(QPaintEvent* event) {
         }
         // The inscribed radius on screen: project a point one radius off the
         // axis, across the view.
-        const render::Camera& camera = viewer_->camera();
+        const render::Camera& camera = viewer()->camera();
         const glm::vec3 right = glm::vec3(glm::inverse(camera.viewMatrix())[0]);
         const auto edge = project(sample.position + glm::dvec3(right) * sample.radiusMm);
         const double r = std::max(
@@ -244,13 +230,6 @@ void PlanningOverlay::paintEvent(QPaintEvent* event) {
         }
         ring(state_->cursorMm(), kCursor, true);
     }
-}
-
-bool PlanningOverlay::eventFilter(QObject* watched, QEvent* event) {
-    if (watched == viewer_ && event->type() == QEvent::Resize) {
-        setGeometry(viewer_->rect());
-    }
-    return QWidget::eventFilter(watched, event);
 }
 
 }  // namespace vv::gui

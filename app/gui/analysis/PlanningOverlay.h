@@ -2,10 +2,11 @@
 #pragma once
 
 #include <QPointF>
-#include <QWidget>
 #include <glm/vec3.hpp>
 #include <optional>
 #include <utility>
+
+#include "gui/FollowingOverlay.h"
 
 namespace vv::gui {
 
@@ -15,14 +16,11 @@ class ViewerWidget;
 /// The planning marks over the 3-D view (issue 35): the centrelines as thin
 /// lines (the chosen path wider), the landmarks as labelled dots, the cursor
 /// as a ring where the profile's cursor is, and a hollow ring where the mouse
-/// hovers the profile. A transparent child of the viewer that lets the mouse
-/// through and follows its size; the marks are world positions projected
-/// with the viewer's camera at every repaint (after each frame), so they
-/// stay on the vessels as the camera moves. Drawn over the vessels (a
+/// hovers the profile; repainted after each frame (FollowingOverlay). Drawn over the vessels (a
 /// centreline lies inside its vessel), each in a dark halo so that it reads
 /// on any colour. Not part of the GL frame (grabFramebuffer() stays the
 /// frame alone). Hidden without an analysis.
-class PlanningOverlay : public QWidget {
+class PlanningOverlay : public FollowingOverlay {
     Q_OBJECT
 
   public:
@@ -40,20 +38,17 @@ class PlanningOverlay : public QWidget {
     /// The diameter colouring's range (mm) and map, for its legend.
     [[nodiscard]] std::pair<float, float> diameterRange() const;
 
-    /// Where `world` appears in the viewer now (logical widget coordinates);
-    /// nullopt behind the camera.
+    /// Where `world` appears in the viewer now (FollowingOverlay::project).
     [[nodiscard]] std::optional<QPointF> project(const glm::dvec3& world) const;
     /// The hover mark at `pathMm` along the path; NaN removes it.
     void setHoverMm(double pathMm);
 
   protected:
     void paintEvent(QPaintEvent* event) override;
-    bool eventFilter(QObject* watched, QEvent* event) override;
 
   private:
     void follow();
 
-    ViewerWidget* viewer_;
     PlanningState* state_;
     double hoverMm_;
     Colouring colouring_ = Colouring::Path;
