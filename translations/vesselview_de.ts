@@ -1843,14 +1843,6 @@ Ersetzen?</translation>
         <source>Analysis</source>
         <translation>Gefäßanalyse</translation>
     </message>
-    <message>
-        <source>Along the Path</source>
-        <translation>Entlang des Pfads</translation>
-    </message>
-    <message>
-        <source>Measurements</source>
-        <translation>Messungen</translation>
-    </message>
 </context>
 <context>
     <name>vv::gui::MeasureOverlay</name>
@@ -2507,6 +2499,17 @@ Ersetzen?</translation>
     <message>
         <source>Browse…</source>
         <translation>Durchsuchen…</translation>
+    </message>
+</context>
+<context>
+    <name>vv::gui::PlanningDocks</name>
+    <message>
+        <source>Along the Path</source>
+        <translation>Entlang des Pfads</translation>
+    </message>
+    <message>
+        <source>Measurements</source>
+        <translation>Messungen</translation>
     </message>
 </context>
 <context>
