@@ -251,6 +251,9 @@ struct BoxState {
     double Sexp = std::numeric_limits<double>::infinity();  // ... to expanded clusters
 };
 
+// Regions of at least this many pixels count their leaf tiles' pixels in parallel.
+constexpr std::int64_t kParallelTilePixels = 65536;
+
 // Cost of summing one point exactly at a near box's samples (at most 16 x 17
 // of them; ~0.3 cycles per sample and point in the kernel, as the leaves').
 constexpr double kNearBoxExactCost = 16.0 * 17.0 * 0.3;
@@ -498,6 +501,86 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
     }
 }
 
+// Target boxes of the region (rg: images, id and box set): leaf tiles of 16 x
+// 16 pixels and a quadtree above them, each with its region pixels' count and
+// bounding box (rg.lv, rg.lvNx, rg.lvNy).
+void buildTargetBoxes(Region& rg, std::int64_t pixelCount) {
+    const ImageView<const std::int32_t> labels = rg.labels;
+    const std::int32_t id = rg.id;
+    const int x0 = rg.rx0;
+    const int y0 = rg.ry0;
+    const int x1 = rg.rx1;
+    const int y1 = rg.ry1;
+    const int nx0 = (x1 - x0 + kLeafTile - 1) / kLeafTile;
+    const int ny0 = (y1 - y0 + kLeafTile - 1) / kLeafTile;
+    rg.lv.emplace_back(static_cast<std::size_t>(nx0) * static_cast<std::size_t>(ny0));
+    rg.lvNx.push_back(nx0);
+    rg.lvNy.push_back(ny0);
+    // the leaf tiles of kLeafTile image rows from ya: their pixels' count and box
+    const auto countTileRow = [&](int ty) {
+        const int ya = y0 + ty * kLeafTile;
+        const int yb = std::min(y1, ya + kLeafTile);
+        for (int y = ya; y < yb; ++y) {
+            const std::int32_t* lab = labels.row(y);
+            for (int tx = 0; tx < nx0; ++tx) {
+                const int xa = x0 + tx * kLeafTile;
+                const int xb = std::min(x1, xa + kLeafTile);
+                int cnt = 0;
+                for (int x = xa; x < xb; ++x) {
+                    cnt += lab[x] == id ? 1 : 0;
+                }
+                if (cnt == 0) {
+                    continue;
+                }
+                int first = xa;
+                while (lab[first] != id) {
+                    ++first;
+                }
+                int last = xb - 1;
+                while (lab[last] != id) {
+                    --last;
+                }
+                TileInfo& t = rg.lv[0][static_cast<std::size_t>(ty * nx0 + tx)];
+                t.count += cnt;
+                t.minx = std::min(t.minx, first);
+                t.maxx = std::max(t.maxx, last);
+                t.miny = std::min(t.miny, y);
+                t.maxy = std::max(t.maxy, y);
+            }
+        }
+    };
+    // rows of tiles are disjoint: in parallel for a large region (small ones
+    // are solved several at a time already)
+    if (pixelCount >= kParallelTilePixels) {
+        parallelFor(0, ny0, 1, [&](long b, long e) {
+            for (long ty = b; ty < e; ++ty) {
+                countTileRow(static_cast<int>(ty));
+            }
+        });
+    } else {
+        for (int ty = 0; ty < ny0; ++ty) {
+            countTileRow(ty);
+        }
+    }
+    while (rg.lvNx.back() > 1 || rg.lvNy.back() > 1) {
+        const std::size_t l = rg.lv.size() - 1;
+        const int nx = (rg.lvNx[l] + 1) / 2;
+        const int ny = (rg.lvNy[l] + 1) / 2;
+        std::vector<TileInfo> up(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
+        for (int j = 0; j < rg.lvNy[l]; ++j) {
+            for (int i = 0; i < rg.lvNx[l]; ++i) {
+                const TileInfo& t = rg.lv[l][static_cast<std::size_t>(j * rg.lvNx[l] + i)];
+                if (t.count > 0) {
+                    up[static_cast<std::size_t>((j / 2) * nx + i / 2)].add(t);
+                }
+            }
+        }
+        rg.lv.push_back(std::move(up));
+        rg.lvNx.push_back(nx);
+        rg.lvNy.push_back(ny);
+    }
+}
+
 // ---------------------------------------------------------------- the solver
 class FastSolver final : public Solver {
   public:
@@ -637,58 +720,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.tolA = (0.75 * tol - rg.dz * (2.0 * deltaW_ + 2048.0 * kU)) * budgetScale_;
     buildSourceTree(rg.tree, lay_, tab_);
 
-    // Target boxes: leaf tiles of 16 x 16 pixels and a quadtree above them.
-    const int nx0 = (x1 - x0 + kLeafTile - 1) / kLeafTile;
-    const int ny0 = (y1 - y0 + kLeafTile - 1) / kLeafTile;
-    rg.lv.emplace_back(static_cast<std::size_t>(nx0) * static_cast<std::size_t>(ny0));
-    rg.lvNx.push_back(nx0);
-    rg.lvNy.push_back(ny0);
-    for (int y = y0; y < y1; ++y) {
-        const std::int32_t* lab = labels.row(y);
-        const int ty = (y - y0) / kLeafTile;
-        for (int tx = 0; tx < nx0; ++tx) {
-            const int xa = x0 + tx * kLeafTile;
-            const int xb = std::min(x1, xa + kLeafTile);
-            int cnt = 0;
-            for (int x = xa; x < xb; ++x) {
-                cnt += lab[x] == id ? 1 : 0;
-            }
-            if (cnt == 0) {
-                continue;
-            }
-            int first = xa;
-            while (lab[first] != id) {
-                ++first;
-            }
-            int last = xb - 1;
-            while (lab[last] != id) {
-                --last;
-            }
-            TileInfo& t = rg.lv[0][static_cast<std::size_t>(ty * nx0 + tx)];
-            t.count += cnt;
-            t.minx = std::min(t.minx, first);
-            t.maxx = std::max(t.maxx, last);
-            t.miny = std::min(t.miny, y);
-            t.maxy = std::max(t.maxy, y);
-        }
-    }
-    while (rg.lvNx.back() > 1 || rg.lvNy.back() > 1) {
-        const std::size_t l = rg.lv.size() - 1;
-        const int nx = (rg.lvNx[l] + 1) / 2;
-        const int ny = (rg.lvNy[l] + 1) / 2;
-        std::vector<TileInfo> up(static_cast<std::size_t>(nx) * static_cast<std::size_t>(ny));
-        for (int j = 0; j < rg.lvNy[l]; ++j) {
-            for (int i = 0; i < rg.lvNx[l]; ++i) {
-                const TileInfo& t = rg.lv[l][static_cast<std::size_t>(j * rg.lvNx[l] + i)];
-                if (t.count > 0) {
-                    up[static_cast<std::size_t>((j / 2) * nx + i / 2)].add(t);
-                }
-            }
-        }
-        rg.lv.push_back(std::move(up));
-        rg.lvNx.push_back(nx);
-        rg.lvNy.push_back(ny);
-    }
+    buildTargetBoxes(rg, region.pixelCount);
     const int top = static_cast<int>(rg.lv.size()) - 1;
     if (rg.lv[static_cast<std::size_t>(top)][0].count == 0) {
         return;

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <numeric>
 
-#include "SolverCommon.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 #include "vv/vss/VoidRegions.h"
@@ -25,11 +24,6 @@ void throwIfStopped(const std::stop_token& stop) {
         throw CancelledError();
     }
 }
-
-/// Regions with less work than this (pixels * contour pixels) are solved
-/// several at a time, one per thread, instead of one after another (the
-/// direct solvers solve them on the calling thread).
-constexpr double kSmallRegionPairs = detail::kSerialPairs;
 
 }  // namespace
 
@@ -64,28 +58,21 @@ VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
         return result.regions[a].pixelCount > result.regions[b].pixelCount;
     });
-    const auto work = [&](std::size_t i) {
-        const VoidRegion& r = result.regions[i];
-        return static_cast<double>(r.pixelCount) *
-               static_cast<double>(std::max<std::size_t>(1, r.contour.size()));
-    };
     const ImageView<const std::int32_t> labels = result.labels.view();
     const ImageView<float> out = result.height.view();
-    std::size_t next = 0;
-    for (; next < order.size() && work(order[next]) >= kSmallRegionPairs; ++next) {
-        solver.solveRegion(labels, result.regions[order[next]], out, stop);
-    }
-    if (next < order.size()) {
-        parallelFor(
-            static_cast<long>(next), static_cast<long>(order.size()), 16,
-            [&](long b, long e) {
-                for (long i = b; i < e; ++i) {
-                    solver.solveRegion(labels, result.regions[order[static_cast<std::size_t>(i)]],
-                                       out, stop);
-                }
-            },
-            stop);
-    }
+    // Largest first, a region per thread at a time. A region's own parallel
+    // work (the solver's parallelFor) is joined by the threads that run out of
+    // regions (parallelFor's pool takes nested calls), so one large region
+    // and several middle-sized ones keep every core busy to the end.
+    parallelFor(
+        0, static_cast<long>(order.size()), 1,
+        [&](long b, long e) {
+            for (long i = b; i < e; ++i) {
+                solver.solveRegion(labels, result.regions[order[static_cast<std::size_t>(i)]], out,
+                                   stop);
+            }
+        },
+        stop);
     result.stats.interpolateMs = msSince(start);
     throwIfStopped(stop);
 

@@ -11,8 +11,11 @@ namespace vv {
 [[nodiscard]] int workerCount();
 
 /// Calls body(begin_chunk, end_chunk) over [begin, end) split into chunks of at
-/// least `grain` indices, on up to workerCount() threads (the caller's thread
-/// included). Returns when every chunk is done. The first exception thrown by
+/// least `grain` indices, on up to workerCount() threads: the caller's thread
+/// and threads of a pool that lives as long as the process (started when first
+/// needed). Calls may nest (a body may call parallelFor): the caller always
+/// takes chunks itself, so a call finishes even when every pool thread is busy.
+/// Returns when every chunk is done. The first exception thrown by
 /// a body is rethrown here after all threads have stopped. If `stop` is
 /// requested, chunks not yet started are skipped and CancelledError is thrown.
 void parallelFor(long begin, long end, long grain, const std::function<void(long, long)>& body,

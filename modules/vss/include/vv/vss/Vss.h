@@ -42,9 +42,9 @@ struct VssResult {
 
 /// The whole pipeline: normalise the depth (normalizeDepth: mask nonzero =
 /// vessel, non-finite depth = background), find the void regions and their
-/// contours (findVoidRegions), interpolate every region with `solver`, largest
-/// region first (each solve parallel inside; small regions are solved
-/// concurrently with each other).
+/// contours (findVoidRegions), interpolate every region with `solver`: the
+/// regions largest first, one per thread at a time, each solve parallel inside
+/// (threads that run out of regions join the solves still running).
 /// A full mask gives no region and no error; an empty mask gives NaN everywhere.
 /// Throws InvalidArgumentError (sizes differ, bad fixed range), CancelledError
 /// when `stop` is requested.
