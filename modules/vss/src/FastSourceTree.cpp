@@ -8,51 +8,16 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
-#include <vector>
-
-#include "vv/core/Parallel.h"
 
 namespace vv::vss::detail::fast {
 namespace {
 
 constexpr int kLeafPoints = 16;  // contour points per source leaf
-// trees of fewer points are built on the calling thread (small regions are
-// solved several at a time already)
-constexpr std::size_t kParallelPoints = 4096;
 
-// Node ranges and child links of the tree over n points: they depend on n
-// only (median splits while a node has more than kLeafPoints points), so
-// they are laid out first, depth first (children next to each other, every
-// node after its parent), and the points are split afterwards, level by level.
-// levels[d]: the nodes at depth d.
-void layOutNodes(SourceTree& tree, int node, int depth, std::vector<std::vector<int>>& levels) {
-    if (levels.size() <= static_cast<std::size_t>(depth)) {
-        levels.resize(static_cast<std::size_t>(depth) + 1);
-    }
-    levels[static_cast<std::size_t>(depth)].push_back(node);
-    const SrcNode nd = tree.nodes[static_cast<std::size_t>(node)];
-    if (nd.count() <= kLeafPoints) {
-        return;
-    }
-    const int mid = nd.begin + nd.count() / 2;
-    const int child = static_cast<int>(tree.nodes.size());
-    tree.nodes[static_cast<std::size_t>(node)].child = child;
-    SrcNode left;
-    left.begin = nd.begin;
-    left.end = mid;
-    SrcNode right;
-    right.begin = mid;
-    right.end = nd.end;
-    tree.nodes.push_back(left);
-    tree.nodes.push_back(right);
-    layOutNodes(tree, child, depth + 1, levels);
-    layOutNodes(tree, child + 1, depth + 1, levels);
-}
-
-// Fills the node's box, centre, radius and z-range from its points and, for
-// an inner node, orders them about the median of the box's longer side (the
-// first half to the first child).
-void fillNode(SourceTree& tree, int node) {
+// Fills the node's box, centre, radius and z-range from its points and splits
+// it (median of the longer side, children appended) while it has more than
+// kLeafPoints points.
+void buildNode(SourceTree& tree, int node) {
     SrcNode& nd = tree.nodes[static_cast<std::size_t>(node)];
     int bx0 = std::numeric_limits<int>::max();
     int by0 = bx0;
@@ -86,46 +51,47 @@ void fillNode(SourceTree& tree, int node) {
     }
     nd.s = std::sqrt(s2) * (1.0 + 1e-15);
     nd.sn = std::max(nd.s, 0.5);
-    if (nd.child < 0) {
+    if (nd.count() <= kLeafPoints) {
         return;
     }
     const bool splitX = (bx1 - bx0) >= (by1 - by0);
     const int mid = nd.begin + nd.count() / 2;
     const auto first = tree.pts.begin() + nd.begin;
-    std::nth_element(first, tree.pts.begin() + mid, tree.pts.begin() + nd.end,
-                     [splitX](const Point& a, const Point& b) {
-                         return splitX ? (a.x < b.x || (a.x == b.x && a.y < b.y))
-                                       : (a.y < b.y || (a.y == b.y && a.x < b.x));
-                     });
-}
-
-// Calls f(node) for every node of the list: in parallel when the tree is
-// large enough to pay for it (the nodes of one level touch disjoint points
-// and moments), else here.
-template <typename F>
-void forNodes(const SourceTree& tree, const std::vector<int>& list, F&& f) {
-    if (tree.pts.size() < kParallelPoints || list.size() < 2) {
-        for (const int node : list) {
-            f(node);
-        }
-        return;
+    if (splitX) {
+        std::nth_element(
+            first, tree.pts.begin() + mid, tree.pts.begin() + nd.end,
+            [](const Point& a, const Point& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+    } else {
+        std::nth_element(
+            first, tree.pts.begin() + mid, tree.pts.begin() + nd.end,
+            [](const Point& a, const Point& b) { return a.y < b.y || (a.y == b.y && a.x < b.x); });
     }
-    parallelFor(0, static_cast<long>(list.size()), 1, [&](long b, long e) {
-        for (long i = b; i < e; ++i) {
-            f(list[static_cast<std::size_t>(i)]);
-        }
-    });
+    const int begin = nd.begin;
+    const int end = nd.end;
+    const int child = static_cast<int>(tree.nodes.size());
+    tree.nodes[static_cast<std::size_t>(node)].child = child;  // nd may dangle after push_back
+    SrcNode left;
+    left.begin = begin;
+    left.end = mid;
+    SrcNode right;
+    right.begin = mid;
+    right.end = end;
+    tree.nodes.push_back(left);
+    tree.nodes.push_back(right);
+    buildNode(tree, child);
+    buildNode(tree, child + 1);
 }
 
 // Moments of every node about its centre, normalised by sn:
 // M_{r,r'} = sum_i w_i (v_i / sn)^r conj(v_i / sn)^r', v_i = y_i - c, for
-// w = 1 (D) and w = z - zref (N), of node k (tree.momD / momN zeroed before):
-// a leaf directly, an inner node by exact shifts of its children's.
-__attribute__((target_clones("arch=x86-64-v3", "default"))) void nodeMoments(
-    SourceTree& tree, const MomentLayout& lay, const PowerTables& tab, std::size_t k) {
+// w = 1 (D) and w = z - zref (N). Leaves directly, inner nodes by exact shifts.
+__attribute__((target_clones("arch=x86-64-v3", "default"))) void buildMoments(
+    SourceTree& tree, const MomentLayout& lay, const PowerTables& tab) {
     const int d = lay.degree;
     const std::size_t mc = static_cast<std::size_t>(lay.count);
-    {
+    tree.momD.assign(tree.nodes.size() * mc, Cx{});
+    tree.momN.assign(tree.nodes.size() * mc, Cx{});
+    for (std::size_t k = tree.nodes.size(); k-- > 0;) {
         const SrcNode& nd = tree.nodes[k];
         Cx* mD = &tree.momD[k * mc];
         Cx* mN = &tree.momN[k * mc];
@@ -155,7 +121,7 @@ __attribute__((target_clones("arch=x86-64-v3", "default"))) void nodeMoments(
                 mD[i] = Cx{v[0], v[1]};
                 mN[i] = Cx{v[2], v[3]};
             }
-            return;
+            continue;
         }
         for (int c = 0; c < 2; ++c) {
             const std::size_t ck = static_cast<std::size_t>(nd.child + c);
@@ -210,20 +176,8 @@ void buildSourceTree(SourceTree& tree, const MomentLayout& lay, const PowerTable
     root.begin = 0;
     root.end = static_cast<int>(tree.pts.size());
     tree.nodes.push_back(root);
-    std::vector<std::vector<int>> levels;
-    layOutNodes(tree, 0, 0, levels);
-    // a node's points are ordered by its parent's split before it is filled
-    for (const std::vector<int>& level : levels) {
-        forNodes(tree, level, [&tree](int node) { fillNode(tree, node); });
-    }
-    const auto mc = static_cast<std::size_t>(lay.count);
-    tree.momD.assign(tree.nodes.size() * mc, Cx{});
-    tree.momN.assign(tree.nodes.size() * mc, Cx{});
-    // a node's children (one level deeper) before the node
-    for (std::size_t depth = levels.size(); depth-- > 0;) {
-        forNodes(tree, levels[depth],
-                 [&](int node) { nodeMoments(tree, lay, tab, static_cast<std::size_t>(node)); });
-    }
+    buildNode(tree, 0);
+    buildMoments(tree, lay, tab);
 }
 
 }  // namespace vv::vss::detail::fast
