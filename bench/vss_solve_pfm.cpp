@@ -7,13 +7,18 @@
 // first run apart, it pays the first touches of a fresh process), the stage
 // medians (wall), and the counters of the fast solver.
 //
+// With --previous A.pfm, each solve of FILE is given the solve of A (same
+// solver) as its previous one (vss::solve's `previous`: the regions that did
+// not change are taken from it); the last column says how many pixels were.
+//
 //   vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] [--solver fast|brute] [--near-split]
-//                 [--no-band-boxes] FILE.pfm...
+//                 [--no-band-boxes] [--previous A.pfm] FILE.pfm...
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -47,6 +52,7 @@ int main(int argc, char** argv) {
     std::vector<double> powers = {2.0, 4.0, 8.0};
     vss::SolverOptions options;
     std::vector<std::string> files;
+    std::string previousFile;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
@@ -63,12 +69,15 @@ int main(int argc, char** argv) {
             vv::vss::detail::setFastSolverNearSplitForTesting(true);
         } else if (a == "--no-band-boxes") {
             vv::vss::detail::setFastSolverBandBoxesForTesting(false);
+        } else if (a == "--previous" && more) {
+            previousFile = argv[++i];
         } else if (!a.empty() && a[0] != '-') {
             files.push_back(a);
         } else {
             std::fprintf(stderr,
                          "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
-                         "[--solver fast|brute] [--near-split] [--no-band-boxes] FILE.pfm...\n");
+                         "[--solver fast|brute] [--near-split] [--no-band-boxes] "
+                         "[--previous A.pfm] FILE.pfm...\n");
             return 2;
         }
     }
@@ -76,17 +85,29 @@ int main(int argc, char** argv) {
         "| file | size | p | first wall ms | wall ms (median) | wall ms (min) | cpu ms "
         "(median) | cpu ms (min) | normalize | regions | interpolate | M2L | near "
         "pairs/px | near-tile px | coarse px | near-box px | near-box points | band-box px | "
-        "band exact px | band samples |\n");
+        "band exact px | band samples | taken from previous |\n");
     std::printf(
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|-"
         "--:|"
-        "---:|\n");
+        "---:|---:|\n");
+    const Image<float> previousDepth =
+        previousFile.empty() ? Image<float>() : vss::readPfm(previousFile);
+    const Image<std::uint8_t> previousMask = vss::maskFromFiniteDepth(previousDepth.view());
     for (const std::string& file : files) {
         const Image<float> depth = vss::readPfm(file);
         const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(depth.view());
         for (const double p : powers) {
             options.p = p;
             const auto solver = vss::makeSolver(options);
+            std::optional<vss::VssResult> before;
+            if (!previousFile.empty()) {
+                before = vss::solve(previousDepth.view(), previousMask.view(), *solver, {});
+            }
+            const vss::PreviousSolve previous =
+                before ? vss::PreviousSolve{before->height.view(), before->labels.view(),
+                                            &before->regions}
+                       : vss::PreviousSolve{};
+            double takenShare = 0.0;
             std::vector<double> wall;
             std::vector<double> cpu;
             std::vector<double> norm;
@@ -98,7 +119,10 @@ int main(int argc, char** argv) {
                 vv::vss::detail::resetFastSolverStats();
                 const auto t0 = std::chrono::steady_clock::now();
                 const std::clock_t c0 = std::clock();
-                const vss::VssResult r = vss::solve(depth.view(), mask.view(), *solver, {});
+                const vss::VssResult r = vss::solve(depth.view(), mask.view(), *solver, {}, {},
+                                                    before ? &previous : nullptr);
+                takenShare = 100.0 * static_cast<double>(r.stats.reusedPixels) /
+                             static_cast<double>(std::max<std::int64_t>(1, r.stats.voidPixels));
                 const double c = 1000.0 * static_cast<double>(std::clock() - c0) / CLOCKS_PER_SEC;
                 const double t =
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
@@ -118,7 +142,7 @@ int main(int argc, char** argv) {
             std::printf(
                 "| %s | %dx%d | %g | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
                 "%.1f | %lld | %.1f | %.1f %% | %.1f %% | %.1f %% | %lld | %.1f %% | %.1f %% | "
-                "%lld |\n",
+                "%lld | %.1f %% |\n",
                 file.c_str(), depth.width(), depth.height(), p, first, median(wall), minOf(wall),
                 median(cpu), minOf(cpu), median(norm), median(regions), median(interp),
                 static_cast<long long>(st.m2l), 16.0 * static_cast<double>(st.nearPairs) / px,
@@ -128,7 +152,7 @@ int main(int argc, char** argv) {
                 static_cast<long long>(st.nearBoxPoints),
                 100.0 * static_cast<double>(st.bandBoxPixels) / px,
                 100.0 * static_cast<double>(st.bandExactPixels) / px,
-                static_cast<long long>(st.bandSamples));
+                static_cast<long long>(st.bandSamples), takenShare);
             std::fflush(stdout);
         }
     }

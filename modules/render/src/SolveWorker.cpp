@@ -18,7 +18,8 @@ namespace vv::render {
 SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
                        const vss::DepthRange& range, float pixelScale, float reduction,
-                       glm::ivec2 solveSize, const std::stop_token& stop) {
+                       glm::ivec2 solveSize, const std::stop_token& stop,
+                       const SolvedFrame* previous) {
     const auto start = std::chrono::steady_clock::now();
     // A VSS below the render size: solved from the depth reduced to its
     // size, each reduced pixel's depth from the render size's silhouette.
@@ -31,25 +32,38 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                                       ? pixelScale * static_cast<float>(depth.height()) /
                                             static_cast<float>(std::max(solveSize.y, 1))
                                       : pixelScale;
-    vss::VssOptions vssOptions;
-    vssOptions.solver = options;
-    vssOptions.range = range;
-    vssOptions.stop = stop;
+    vss::DepthRange solveRange = range;
     // A reduced frame solves from contour depths moved to the silhouette
     // (thin vessels widened by a pixel, so the mask follows that depth),
     // normalised over the depth as read: the moved contours must not widen it.
     const bool reduced = silhouetteReach(reduction) > 0.0F;
     if (reduced && range.mode == vss::RangeMode::Visible) {
         if (const auto visible = finiteRange(input.view())) {
-            vssOptions.range = {vss::RangeMode::Fixed, visible->first, visible->second};
+            solveRange = {vss::RangeMode::Fixed, visible->first, visible->second};
         }
     }
     auto solved = std::make_shared<Image<float>>(
         reduced ? silhouetteDepth(input, reduction, inputPixelScale) : Image<float>{});
     const ImageView<const float> solvedView = reduced ? solved->view() : input.view();
     const Image<std::uint8_t> mask = vss::maskFromFiniteDepth(solvedView);
-    vss::VssResult result = vss::solve(solvedView, mask.view(), vssOptions);
+    const SolvedRegions* before = previous != nullptr && !preview && previous->regions != nullptr &&
+                                          previous->regions->options == options
+                                      ? previous->regions.get()
+                                      : nullptr;
+    const vss::PreviousSolve previousSolve =
+        before != nullptr
+            ? vss::PreviousSolve{previous->height.view(), before->labels.view(), &before->regions}
+            : vss::PreviousSolve{};
+    const std::unique_ptr<vss::Solver> solver = vss::makeSolver(options);
+    vss::VssResult result = vss::solve(solvedView, mask.view(), *solver, solveRange, stop,
+                                       before != nullptr ? &previousSolve : nullptr);
     SolvedFrame frame;
+    frame.reusedRegions = result.stats.reusedRegions;
+    frame.reusedPixels = result.stats.reusedPixels;
+    if (!preview) {
+        frame.regions = std::make_shared<const SolvedRegions>(
+            SolvedRegions{std::move(result.labels), std::move(result.regions), options});
+    }
     frame.key = key;
     frame.height = std::move(result.height);
     frame.dmin = result.dmin;
@@ -146,12 +160,17 @@ void SolveWorker::run(const std::stop_token& stop) {
             runningKey_ = job.key;
             ++counters_.started;
         }
+        std::shared_ptr<const SolvedFrame> previous;
+        {
+            const std::lock_guard lock(mutex_);
+            previous = latest_;  // kept alive here while its regions are read
+        }
         std::shared_ptr<const SolvedFrame> solved;
         bool cancelled = false;
         try {
             solved = std::make_shared<const SolvedFrame>(
                 solveFrame(job.key, *job.depth, job.options, job.preview, job.range, job.pixelScale,
-                           job.reduction, job.solveSize, jobStop));
+                           job.reduction, job.solveSize, jobStop, previous.get()));
         } catch (const CancelledError&) {
             cancelled = true;
         } catch (const std::exception&) {

@@ -14,6 +14,7 @@
 #include <stop_token>
 #include <thread>
 #include <utility>
+#include <vector>
 
 #include "vv/core/Image.h"
 #include "vv/render/FrameRenderer.h"
@@ -26,6 +27,15 @@ namespace vv::render {
 /// solver's thread (16 bytes a pixel, CPU and texture); larger ones (big
 /// exports) let the shader fit them, slower but without the memory.
 constexpr long long kMaxCpuSlopePixels = 3840LL * 2160LL;
+
+/// The void regions of an exact solve, kept with its frame so that the next
+/// exact solve of the same size and solver options takes the regions that
+/// did not change (vss::PreviousSolve): 4 bytes a pixel and the contours.
+struct SolvedRegions {
+    Image<std::int32_t> labels;
+    std::vector<vss::VoidRegion> regions;
+    vss::SolverOptions options;
+};
 
 /// A solved VSS for one view.
 struct SolvedFrame {
@@ -46,6 +56,11 @@ struct SolvedFrame {
     /// size as `height`; empty for previews (quick normals) and above
     /// kMaxCpuSlopePixels (the shader fits them itself there).
     Image<glm::vec4> slopes;
+    /// Exact solves: their regions, for the next solve (solveFrame's
+    /// `previous`); null for previews.
+    std::shared_ptr<const SolvedRegions> regions;
+    std::size_t reusedRegions = 0;  ///< regions taken from `previous` (vss::VssStatistics)
+    std::int64_t reusedPixels = 0;  ///< their void pixels
 };
 
 /// Solves the VSS of `depth` (mask = finite depth); exact solves also get
@@ -59,17 +74,26 @@ struct SolvedFrame {
 /// A `solveSize` below `depth`'s size (a VSS solved below the render size;
 /// {0, 0} = `depth`'s size) solves reduceDepth(depth, solveSize) instead,
 /// `pixelScale` and `reduction` being those of `depth`, and the frame keeps
-/// that depth (SolvedFrame::solvedDepth). Throws what vss::solve throws
-/// (CancelledError when `stop` is requested) and InvalidArgumentError for a
-/// `solveSize` larger than `depth`.
+/// that depth (SolvedFrame::solvedDepth).
+///
+/// An exact solve given the `previous` exact frame (any view; solved with
+/// the same `options` and at the same size, else it is ignored) takes from it
+/// the void regions whose pixels and contour did not change (vss::solve's
+/// `previous`): a view whose depth changed in one place (an object hidden,
+/// shown or made translucent) re-solves only the regions next to it. Throws
+/// what vss::solve throws (CancelledError when `stop` is requested) and
+/// InvalidArgumentError for a `solveSize` larger than `depth`.
 [[nodiscard]] SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                                      const vss::SolverOptions& options, bool preview,
                                      const vss::DepthRange& range, float pixelScale,
                                      float reduction, glm::ivec2 solveSize,
-                                     const std::stop_token& stop);
+                                     const std::stop_token& stop,
+                                     const SolvedFrame* previous = nullptr);
 
 /// One worker thread solving the latest requested view; a newer request
-/// cancels a running stale one (vss::solve's stop token).
+/// cancels a running stale one (vss::solve's stop token). An exact solve
+/// takes the unchanged regions of the latest exact one (solveFrame's
+/// `previous`).
 class SolveWorker {
   public:
     struct Job {

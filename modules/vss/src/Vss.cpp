@@ -4,7 +4,10 @@
 #include <algorithm>
 #include <chrono>
 #include <numeric>
+#include <optional>
+#include <vector>
 
+#include "RegionReuse.h"
 #include "vv/core/Error.h"
 #include "vv/core/Parallel.h"
 #include "vv/vss/VoidRegions.h"
@@ -28,7 +31,8 @@ void throwIfStopped(const std::stop_token& stop) {
 }  // namespace
 
 VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask,
-                const Solver& solver, const DepthRange& range, const std::stop_token& stop) {
+                const Solver& solver, const DepthRange& range, const std::stop_token& stop,
+                const PreviousSolve* previous) {
     VssResult result;
     throwIfStopped(stop);
 
@@ -64,12 +68,22 @@ VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask
     // work (the solver's parallelFor) is joined by the threads that run out of
     // regions (parallelFor's pool takes nested calls), so one large region
     // and several middle-sized ones keep every core busy to the end.
+    std::optional<detail::PreviousRegions> before;
+    if (previous != nullptr && previous->regions != nullptr) {
+        before.emplace(*previous);
+    }
+    std::vector<char> reused(result.regions.size(), 0);
     parallelFor(
         0, static_cast<long>(order.size()), 1,
         [&](long b, long e) {
             for (long i = b; i < e; ++i) {
-                solver.solveRegion(labels, result.regions[order[static_cast<std::size_t>(i)]], out,
-                                   stop);
+                const std::size_t k = order[static_cast<std::size_t>(i)];
+                const VoidRegion& region = result.regions[k];
+                if (before && before->copyIfSame(labels, region, out)) {
+                    reused[k] = 1;
+                    continue;
+                }
+                solver.solveRegion(labels, region, out, stop);
             }
         },
         stop);
@@ -83,6 +97,10 @@ VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask
         result.stats.contourPixels.push_back(n);
         result.stats.maxContourPixels = std::max(result.stats.maxContourPixels, n);
         result.stats.voidPixels += r.pixelCount;
+        if (reused[static_cast<std::size_t>(r.id)] != 0) {
+            ++result.stats.reusedRegions;
+            result.stats.reusedPixels += r.pixelCount;
+        }
     }
     return result;
 }

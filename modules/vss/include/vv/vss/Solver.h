@@ -69,9 +69,11 @@ enum class SolverKind {
 
 struct SolverOptions {
     SolverKind kind = SolverKind::Fast;
-    double p = 2.0;                    ///< IDW power, 0.25 <= p <= 64 (wider is allowed but untested)
-    int step = 3;                      ///< Step solver: every k-th contour pixel, k >= 1
-    double tolerance = 0.5 / 255.0;    ///< Fast solver: max abs error of z' (normalised depth)
+    double p = 2.0;                  ///< IDW power, 0.25 <= p <= 64 (wider is allowed but untested)
+    int step = 3;                    ///< Step solver: every k-th contour pixel, k >= 1
+    double tolerance = 0.5 / 255.0;  ///< Fast solver: max abs error of z' (normalised depth)
+
+    bool operator==(const SolverOptions&) const = default;
 };
 
 /// Interpolates z' (VSS.md, "Interpolation") for the void pixels of regions.
@@ -79,7 +81,7 @@ struct SolverOptions {
 /// region's contour depths, no NaN / Inf for any p in range, weights scaled
 /// by the nearest contour distance (computed in log space), invariance.
 class Solver {
-public:
+  public:
     Solver() = default;
     Solver(const Solver&) = delete;
     Solver& operator=(const Solver&) = delete;

@@ -22,6 +22,8 @@ struct VssStatistics {
     std::vector<std::int64_t> contourPixels;  ///< per region, indexed by region id
     std::int64_t maxContourPixels = 0;        ///< over all regions (0 without regions)
     std::int64_t voidPixels = 0;              ///< background pixels (all regions)
+    std::size_t reusedRegions = 0;            ///< regions taken from `previous` (solve)
+    std::int64_t reusedPixels = 0;            ///< their void pixels
     double normalizeMs = 0.0;                 ///< wall time per stage
     double regionsMs = 0.0;
     double interpolateMs = 0.0;
@@ -40,17 +42,34 @@ struct VssResult {
     VssStatistics stats;
 };
 
+/// A finished solve (its VssResult's height, labels and regions) that the
+/// next solve may take whole regions from. It must come from a solver with
+/// the same options (kind, p, step, tolerance) as the next one; a solve of
+/// another size is ignored.
+struct PreviousSolve {
+    ImageView<const float> height;
+    ImageView<const std::int32_t> labels;
+    const std::vector<VoidRegion>* regions = nullptr;
+};
+
 /// The whole pipeline: normalise the depth (normalizeDepth: mask nonzero =
 /// vessel, non-finite depth = background), find the void regions and their
 /// contours (findVoidRegions), interpolate every region with `solver`: the
 /// regions largest first, one per thread at a time, each solve parallel inside
 /// (threads that run out of regions join the solves still running).
+/// With `previous`, a region with the same pixels and the same contour (the
+/// same positions and normalised depths, bit for bit) as one of the previous
+/// solve's takes that region's z' instead of being solved: the solver's
+/// result for it would be the same, and a view whose depth changed in one
+/// place (an object hidden, made translucent or shown again) re-solves only
+/// the regions next to that place (stats.reusedRegions, reusedPixels).
 /// A full mask gives no region and no error; an empty mask gives NaN everywhere.
 /// Throws InvalidArgumentError (sizes differ, bad fixed range), CancelledError
 /// when `stop` is requested.
 [[nodiscard]] VssResult solve(ImageView<const float> depth, ImageView<const std::uint8_t> mask,
                               const Solver& solver, const DepthRange& range = {},
-                              const std::stop_token& stop = {});
+                              const std::stop_token& stop = {},
+                              const PreviousSolve* previous = nullptr);
 
 /// As above with the solver made by makeSolver(options.solver) (which throws
 /// InvalidArgumentError for bad solver options).
