@@ -9,6 +9,7 @@
 #include <QOffscreenSurface>
 #include <QOpenGLContext>
 #include <QOpenGLFramebufferObject>
+#include <cmath>
 #include <memory>
 
 #include "RenderTestUtil.h"
@@ -238,6 +239,49 @@ TEST_F(ViewRendererTest, SettlingAfterAFullSizePreviewRequestsTheSolveElseDrawsI
     ASSERT_TRUE(view_.refinement().cameraMoved());
     ASSERT_TRUE(view_.refinement().settle());
     EXPECT_EQ(view_.settle(camera_, target(), makeCurrent), SettleResult::None);
+}
+
+TEST_F(ViewRendererTest, HidingAnObjectReSolvesTheVssOnTheWorkerAndAnArrayDoesNot) {
+    const auto scene = std::make_shared<const scene::Scene>(tubesWithWss());
+    camera_.fit(scene->bounds());
+    view_.setSolveMode(FrameRenderer::SolveMode::Asynchronous);
+    view_.setScene(scene);
+    MeshStyle style = view_.style();
+    style.array = "wss";
+    view_.setStyle(style);
+    const auto settled = [&] {
+        (void)view_.render(camera_, target());
+        view_.frameRenderer().waitForSolves();
+        (void)view_.render(camera_, target());  // shows the finished solve
+        return view_.frameRenderer().shownHeight();
+    };
+    const Image<float> both = settled();
+    ASSERT_EQ(both.width(), kWidth);
+    const auto solves = [&] { return view_.frameRenderer().solveCounters().submitted; };
+    const auto before = solves();
+
+    // Another array: the same depth, no new solve.
+    style.array.clear();
+    view_.setStyle(style);
+    (void)settled();
+    EXPECT_EQ(solves(), before);
+
+    // One tube hidden: its pixels are void now, and the VSS is solved again
+    // (before, the worker's frame of the same camera counted as this view's,
+    // and the hidden tube's old depths stayed on screen as VSS).
+    style.hidden = {1};
+    view_.setStyle(style);
+    const Image<float> one = settled();
+    EXPECT_GT(solves(), before);
+    int changed = 0;
+    for (int y = 0; y < kHeight; ++y) {
+        for (int x = 0; x < kWidth; ++x) {
+            const float a = both(x, y);
+            const float b = one(x, y);
+            changed += std::isfinite(a) && std::isfinite(b) && std::abs(a - b) > 1e-3F ? 1 : 0;
+        }
+    }
+    EXPECT_GT(changed, kWidth * kHeight / 20) << "the VSS did not change with the hidden tube";
 }
 
 }  // namespace

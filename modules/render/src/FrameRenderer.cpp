@@ -387,6 +387,12 @@ std::uint64_t FrameRenderer::geometryRevision(std::size_t level) const noexcept 
     return revision;
 }
 
+std::uint64_t FrameRenderer::depthRevision(std::size_t level) const {
+    Hasher hash;
+    hash.value(geometryRevision(level)).value(meshes_.style().depthKey());
+    return hash.result();
+}
+
 // --- Volume depth source (issue 5) ------------------------------------------
 void FrameRenderer::setVolume(std::shared_ptr<const scene::Volume> volume, float isoValue) {
     if (volume == volume_.volume() && (!volume || isoValue == volumeIso_)) {
@@ -408,7 +414,7 @@ bool FrameRenderer::requestSolve(const Camera& camera, const FrameSettings& sett
     const glm::ivec2 renderSize = renderSizeFor(settings, target);
     const std::uint64_t depthView =
         viewKey(camera.viewMatrix(), camera.projectionMatrix(), renderSize,
-                geometryRevision(geometryLevel(camera, settings, renderSize)));
+                depthRevision(geometryLevel(camera, settings, renderSize)));
     if (depthView != *impl_->lastDepthView || impl_->lastDepth->width() != renderSize.x ||
         impl_->lastDepth->height() != renderSize.y) {
         return false;  // the depth shows another view: the next frame reads it back
@@ -730,7 +736,7 @@ void FrameRenderer::renderGraph(const Camera& camera, const FrameSettings& setti
     const bool async = mode_ == SolveMode::Asynchronous && impl.worker != nullptr;
     impl.importSolveInputs(graph, async);
     const std::uint64_t depthView =
-        viewKey(camera.viewMatrix(), shape.projection, size, sceneRevision);
+        viewKey(camera.viewMatrix(), shape.projection, size, depthRevision(shape.meshLevel));
     // The VSS's size: the render size, or below it for a moving frame.
     shape.vssSize = vssSettings.enabled ? vssSizeFor(settings, size, external != nullptr) : size;
     vssSize_ = shape.vssSize;

@@ -6,6 +6,7 @@
 #include <cctype>
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "vv/core/Error.h"
 #include "vv/core/Hash.h"
@@ -325,6 +326,23 @@ std::uint64_t MeshStyle::geometryKey() const noexcept {
         const std::uint64_t size = shown.size();
         const bool drawn = opaque(i);
         hash.value(i).value(size).text(shown).value(drawn);
+    }
+    return hash.result();
+}
+
+std::uint64_t MeshStyle::depthKey() const {
+    std::vector<std::size_t> notOpaque(hidden);
+    for (std::size_t i = 0; i < objects.size(); ++i) {
+        if (!opaque(i)) {
+            notOpaque.push_back(i);
+        }
+    }
+    std::sort(notOpaque.begin(), notOpaque.end());
+    notOpaque.erase(std::unique(notOpaque.begin(), notOpaque.end()), notOpaque.end());
+    Hasher hash;
+    hash.value(notOpaque.size());
+    for (const std::size_t index : notOpaque) {
+        hash.value(index);
     }
     return hash.result();
 }

@@ -293,6 +293,11 @@ class FrameRenderer {
                                             glm::ivec2 renderSize) const noexcept;
     /// The scene revision told apart for geometry `level` (geometryLevel()).
     [[nodiscard]] std::uint64_t geometryRevision(std::size_t level) const noexcept;
+    /// What the depth of a view drawn at geometry `level` depends on besides
+    /// the camera and size: geometryRevision() and which objects the style
+    /// draws opaque (MeshStyle::depthKey). The solve worker's frames are
+    /// told apart by it, so hiding an object re-solves the VSS.
+    [[nodiscard]] std::uint64_t depthRevision(std::size_t level) const;
 
     std::uint64_t sceneRevision_ = 0;
     std::size_t lastGeometryLevel_ = 0;

@@ -117,6 +117,11 @@ struct MeshStyle {
     /// A hash of what the geometry pass writes: the array of each object and
     /// which objects are drawn opaque (for the render graph's cache).
     [[nodiscard]] std::uint64_t geometryKey() const noexcept;
+    /// A hash of which objects write the depth (the set of objects that are
+    /// not opaque: hidden or translucent), the same for styles that differ
+    /// only in arrays or colours: the depth, and so the VSS, of one view
+    /// changes with it (the solve's key). Allocates: throws std::bad_alloc.
+    [[nodiscard]] std::uint64_t depthKey() const;
 };
 
 /// Throws InvalidArgumentError unless every object's opacity is within
