@@ -24,7 +24,7 @@ SolvedFrame solved(const Image<float>& depth, double p, bool preview,
     vv::vss::SolverOptions options;
     options.p = p;
     return solveFrame(1, depth, options, preview, {}, 1.0F, 1.0F, {0, 0}, std::stop_token{},
-                      previous);
+                      previous, true);
 }
 
 bool sameBytes(const Image<float>& a, const Image<float>& b) {
@@ -63,6 +63,15 @@ TEST(SolveReuse, AnotherPOrAPreviewSolvesEverything) {
     // and a preview as the previous frame offers nothing
     const SolvedFrame afterPreview = solved(depth, 4.0, false, &preview);
     EXPECT_EQ(afterPreview.reusedRegions, 0U);
+}
+
+TEST(SolveReuse, AnInlineSolveKeepsNoRegions) {
+    // exports and the command line solve once: no labels kept (4 bytes a pixel)
+    vv::vss::SolverOptions options;
+    const SolvedFrame frame = solveFrame(1, vv::test::ringSceneDepth(vv::test::baseRings()),
+                                         options, false, {}, 1.0F, 1.0F, {0, 0}, std::stop_token{});
+    EXPECT_EQ(frame.regions, nullptr);
+    EXPECT_EQ(frame.height.width(), vv::test::kRingSceneWidth);
 }
 
 TEST(SolveReuse, TheWorkerPassesItsLatestExactFrame) {

@@ -19,7 +19,7 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
                        const vss::SolverOptions& options, bool preview,
                        const vss::DepthRange& range, float pixelScale, float reduction,
                        glm::ivec2 solveSize, const std::stop_token& stop,
-                       const SolvedFrame* previous) {
+                       const SolvedFrame* previous, bool keepRegions) {
     const auto start = std::chrono::steady_clock::now();
     // A VSS below the render size: solved from the depth reduced to its
     // size, each reduced pixel's depth from the render size's silhouette.
@@ -60,7 +60,7 @@ SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
     SolvedFrame frame;
     frame.reusedRegions = result.stats.reusedRegions;
     frame.reusedPixels = result.stats.reusedPixels;
-    if (!preview) {
+    if (keepRegions && !preview) {
         frame.regions = std::make_shared<const SolvedRegions>(
             SolvedRegions{std::move(result.labels), std::move(result.regions), options});
     }
@@ -170,7 +170,7 @@ void SolveWorker::run(const std::stop_token& stop) {
         try {
             solved = std::make_shared<const SolvedFrame>(
                 solveFrame(job.key, *job.depth, job.options, job.preview, job.range, job.pixelScale,
-                           job.reduction, job.solveSize, jobStop, previous.get()));
+                           job.reduction, job.solveSize, jobStop, previous.get(), true));
         } catch (const CancelledError&) {
             cancelled = true;
         } catch (const std::exception&) {

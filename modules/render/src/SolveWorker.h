@@ -56,8 +56,8 @@ struct SolvedFrame {
     /// size as `height`; empty for previews (quick normals) and above
     /// kMaxCpuSlopePixels (the shader fits them itself there).
     Image<glm::vec4> slopes;
-    /// Exact solves: their regions, for the next solve (solveFrame's
-    /// `previous`); null for previews.
+    /// Exact solves kept for the next one (solveFrame's `keepRegions`):
+    /// their regions, for its `previous`; null otherwise.
     std::shared_ptr<const SolvedRegions> regions;
     std::size_t reusedRegions = 0;  ///< regions taken from `previous` (vss::VssStatistics)
     std::int64_t reusedPixels = 0;  ///< their void pixels
@@ -80,15 +80,17 @@ struct SolvedFrame {
 /// the same `options` and at the same size, else it is ignored) takes from it
 /// the void regions whose pixels and contour did not change (vss::solve's
 /// `previous`): a view whose depth changed in one place (an object hidden,
-/// shown or made translucent) re-solves only the regions next to it. Throws
-/// what vss::solve throws (CancelledError when `stop` is requested) and
+/// shown or made translucent) re-solves only the regions next to it. With
+/// `keepRegions`, an exact frame keeps its labels and regions
+/// (SolvedFrame::regions, 4 bytes a pixel) to serve as the next one's
+/// `previous` (the solve worker's frames); an inline solve (exports, the
+/// command line) has no next solve to serve and keeps none. Throws what
+/// vss::solve throws (CancelledError when `stop` is requested) and
 /// InvalidArgumentError for a `solveSize` larger than `depth`.
-[[nodiscard]] SolvedFrame solveFrame(std::uint64_t key, const Image<float>& depth,
-                                     const vss::SolverOptions& options, bool preview,
-                                     const vss::DepthRange& range, float pixelScale,
-                                     float reduction, glm::ivec2 solveSize,
-                                     const std::stop_token& stop,
-                                     const SolvedFrame* previous = nullptr);
+[[nodiscard]] SolvedFrame solveFrame(
+    std::uint64_t key, const Image<float>& depth, const vss::SolverOptions& options, bool preview,
+    const vss::DepthRange& range, float pixelScale, float reduction, glm::ivec2 solveSize,
+    const std::stop_token& stop, const SolvedFrame* previous = nullptr, bool keepRegions = false);
 
 /// One worker thread solving the latest requested view; a newer request
 /// cancels a running stale one (vss::solve's stop token). An exact solve
