@@ -19,13 +19,15 @@ namespace vv {
 /// kept for the next image of the same rounded size: a solve at 3840x2160
 /// allocates its z, vessel and label images anew every time, and each fresh
 /// mapping costs the kernel's page clearing and faults on the first touch
-/// (issue 19; docs/benchmarks/vss.md, "Fourth step"). At most kMaxBuffers
-/// buffers and kMaxBytes in all; a buffer that does not fit is freed. Thread
+/// (issue 19; docs/benchmarks/vss.md, "Fourth step"); so does one at
+/// 1280x720, whose 3.7 MB images went to malloc's fresh mappings: 1 800
+/// page faults a solve before they were kept here (issue 36). At most
+/// kMaxBuffers buffers and kMaxBytes in all; a buffer that does not fit is freed. Thread
 /// safe; never destroyed (images with static storage may return buffers at
 /// exit). Throws nothing.
 class LargeBufferPool {
   public:
-    static constexpr std::size_t kMaxBuffers = 8;
+    static constexpr std::size_t kMaxBuffers = 16;
     static constexpr std::size_t kMaxBytes = std::size_t{256} << 20U;
 
     static LargeBufferPool& instance() noexcept {
@@ -87,7 +89,8 @@ class LargeBufferPool {
 };
 
 /// std::allocator for image pixels, except that on Linux buffers of at least
-/// kHugeBytes are aligned to 2 MiB and marked MADV_HUGEPAGE (the
+/// kHugeBytes (512 KiB: a 1280x720 mask of bytes and up) are aligned to 2 MiB
+/// and marked MADV_HUGEPAGE (the
 /// kernel's "madvise" mode of transparent huge pages): the first touch of a
 /// 4K image (33 MB of float) then takes ~16 page faults instead of ~8000,
 /// which was a large share of a 3840x2160 VSS solve (issue 19; measured in
@@ -100,7 +103,7 @@ struct PixelAllocator {
     using value_type = T;
 
     static constexpr std::size_t kHugePage = std::size_t{2} << 20U;
-    static constexpr std::size_t kHugeBytes = std::size_t{4} << 20U;
+    static constexpr std::size_t kHugeBytes = std::size_t{512} << 10U;
 
     PixelAllocator() noexcept = default;
     template <typename U>
