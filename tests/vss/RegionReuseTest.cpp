@@ -123,12 +123,18 @@ TEST_P(RegionReuse, ADifferentPixelSetIsSolvedAgain) {
 }
 
 TEST_P(RegionReuse, APreviousSolveOfAnotherSizeIsIgnored) {
+    // The same rings in an image 20 rows taller: the rings' insides have the
+    // same boxes, pixels and contours, but the previous images another size.
     const auto s = solver();
     const Image<float> depth = ringSceneDepth(baseRings());
-    Image<float> other(vv::test::kRingSceneWidth / 2, vv::test::kRingSceneHeight, kInf);
-    other(10, 10) = 0.5F;
-    const vss::VssResult small = solveOf(other, *s);
-    const vss::PreviousSolve previous = previousOf(small);
+    Image<float> taller(depth.width(), depth.height() + 20, kInf);
+    for (int y = 0; y < depth.height(); ++y) {
+        for (int x = 0; x < depth.width(); ++x) {
+            taller(x, y) = depth(x, y);
+        }
+    }
+    const vss::VssResult other = solveOf(taller, *s);
+    const vss::PreviousSolve previous = previousOf(other);
     const vss::VssResult r = solveOf(depth, *s, &previous);
     expectSameBytes(r.height, solveOf(depth, *s).height);
     EXPECT_EQ(r.stats.reusedRegions, 0U);

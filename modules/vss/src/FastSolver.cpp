@@ -251,9 +251,6 @@ struct BoxState {
     double Sexp = std::numeric_limits<double>::infinity();  // ... to expanded clusters
 };
 
-// Regions of at least this many pixels count their leaf tiles' pixels in parallel.
-constexpr std::int64_t kParallelTilePixels = 65536;
-
 // Cost of summing one point exactly at a near box's samples (at most 16 x 17
 // of them; ~0.3 cycles per sample and point in the kernel, as the leaves').
 constexpr double kNearBoxExactCost = 16.0 * 17.0 * 0.3;
@@ -504,7 +501,7 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
 // Target boxes of the region (rg: images, id and box set): leaf tiles of 16 x
 // 16 pixels and a quadtree above them, each with its region pixels' count and
 // bounding box (rg.lv, rg.lvNx, rg.lvNy).
-void buildTargetBoxes(Region& rg, std::int64_t pixelCount) {
+void buildTargetBoxes(Region& rg) {
     const ImageView<const std::int32_t> labels = rg.labels;
     const std::int32_t id = rg.id;
     const int x0 = rg.rx0;
@@ -516,50 +513,33 @@ void buildTargetBoxes(Region& rg, std::int64_t pixelCount) {
     rg.lv.emplace_back(static_cast<std::size_t>(nx0) * static_cast<std::size_t>(ny0));
     rg.lvNx.push_back(nx0);
     rg.lvNy.push_back(ny0);
-    // the leaf tiles of kLeafTile image rows from ya: their pixels' count and box
-    const auto countTileRow = [&](int ty) {
-        const int ya = y0 + ty * kLeafTile;
-        const int yb = std::min(y1, ya + kLeafTile);
-        for (int y = ya; y < yb; ++y) {
-            const std::int32_t* lab = labels.row(y);
-            for (int tx = 0; tx < nx0; ++tx) {
-                const int xa = x0 + tx * kLeafTile;
-                const int xb = std::min(x1, xa + kLeafTile);
-                int cnt = 0;
-                for (int x = xa; x < xb; ++x) {
-                    cnt += lab[x] == id ? 1 : 0;
-                }
-                if (cnt == 0) {
-                    continue;
-                }
-                int first = xa;
-                while (lab[first] != id) {
-                    ++first;
-                }
-                int last = xb - 1;
-                while (lab[last] != id) {
-                    --last;
-                }
-                TileInfo& t = rg.lv[0][static_cast<std::size_t>(ty * nx0 + tx)];
-                t.count += cnt;
-                t.minx = std::min(t.minx, first);
-                t.maxx = std::max(t.maxx, last);
-                t.miny = std::min(t.miny, y);
-                t.maxy = std::max(t.maxy, y);
+    for (int y = y0; y < y1; ++y) {
+        const std::int32_t* lab = labels.row(y);
+        const int ty = (y - y0) / kLeafTile;
+        for (int tx = 0; tx < nx0; ++tx) {
+            const int xa = x0 + tx * kLeafTile;
+            const int xb = std::min(x1, xa + kLeafTile);
+            int cnt = 0;
+            for (int x = xa; x < xb; ++x) {
+                cnt += lab[x] == id ? 1 : 0;
             }
-        }
-    };
-    // rows of tiles are disjoint: in parallel for a large region (small ones
-    // are solved several at a time already)
-    if (pixelCount >= kParallelTilePixels) {
-        parallelFor(0, ny0, 1, [&](long b, long e) {
-            for (long ty = b; ty < e; ++ty) {
-                countTileRow(static_cast<int>(ty));
+            if (cnt == 0) {
+                continue;
             }
-        });
-    } else {
-        for (int ty = 0; ty < ny0; ++ty) {
-            countTileRow(ty);
+            int first = xa;
+            while (lab[first] != id) {
+                ++first;
+            }
+            int last = xb - 1;
+            while (lab[last] != id) {
+                --last;
+            }
+            TileInfo& t = rg.lv[0][static_cast<std::size_t>(ty * nx0 + tx)];
+            t.count += cnt;
+            t.minx = std::min(t.minx, first);
+            t.maxx = std::max(t.maxx, last);
+            t.miny = std::min(t.miny, y);
+            t.maxy = std::max(t.maxy, y);
         }
     }
     while (rg.lvNx.back() > 1 || rg.lvNy.back() > 1) {
@@ -720,7 +700,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.tolA = (0.75 * tol - rg.dz * (2.0 * deltaW_ + 2048.0 * kU)) * budgetScale_;
     buildSourceTree(rg.tree, lay_, tab_);
 
-    buildTargetBoxes(rg, region.pixelCount);
+    buildTargetBoxes(rg);
     const int top = static_cast<int>(rg.lv.size()) - 1;
     if (rg.lv[static_cast<std::size_t>(top)][0].count == 0) {
         return;
