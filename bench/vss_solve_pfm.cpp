@@ -85,11 +85,11 @@ int main(int argc, char** argv) {
         "| file | size | p | first wall ms | wall ms (median) | wall ms (min) | cpu ms "
         "(median) | cpu ms (min) | normalize | regions | interpolate | M2L | near "
         "pairs/px | near-tile px | coarse px | near-box px | near-box points | band-box px | "
-        "band exact px | band samples | taken from previous |\n");
+        "band exact px | band samples | taken from previous | fall-back px |\n");
     std::printf(
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|-"
         "--:|"
-        "---:|---:|\n");
+        "---:|---:|---:|\n");
     const Image<float> previousDepth =
         previousFile.empty() ? Image<float>() : vss::readPfm(previousFile);
     const Image<std::uint8_t> previousMask = vss::maskFromFiniteDepth(previousDepth.view());
@@ -142,7 +142,7 @@ int main(int argc, char** argv) {
             std::printf(
                 "| %s | %dx%d | %g | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
                 "%.1f | %lld | %.1f | %.1f %% | %.1f %% | %.1f %% | %lld | %.1f %% | %.1f %% | "
-                "%lld | %.1f %% |\n",
+                "%lld | %.1f %% | %lld |\n",
                 file.c_str(), depth.width(), depth.height(), p, first, median(wall), minOf(wall),
                 median(cpu), minOf(cpu), median(norm), median(regions), median(interp),
                 static_cast<long long>(st.m2l), 16.0 * static_cast<double>(st.nearPairs) / px,
@@ -152,7 +152,8 @@ int main(int argc, char** argv) {
                 static_cast<long long>(st.nearBoxPoints),
                 100.0 * static_cast<double>(st.bandBoxPixels) / px,
                 100.0 * static_cast<double>(st.bandExactPixels) / px,
-                static_cast<long long>(st.bandSamples), takenShare);
+                static_cast<long long>(st.bandSamples), takenShare,
+                static_cast<long long>(st.fallbackPixels));
             std::fflush(stdout);
         }
     }
