@@ -34,3 +34,25 @@ function(vv_target_defaults target)
     target_compile_options(${target} PRIVATE -Werror)
   endif()
 endfunction()
+
+# vv_unity_build(<target>): compile the target's sources in batches of
+# VV_UNITY_BATCH, one translation unit per batch (CMake's unity build). For
+# targets whose files spend most of their compile time in the same large
+# headers (Qt Widgets, GoogleTest): the GUI and its tests parse them once per
+# batch instead of once per file. The sources of one target must then not
+# repeat a name at namespace scope, anonymous namespaces included.
+# -DVV_UNITY=OFF compiles every file alone (to find such a clash, or to edit).
+option(VV_UNITY "Unity builds of the GUI, the CLI and the test programs" ON)
+set(VV_UNITY_BATCH 8 CACHE STRING "Sources per unity translation unit")
+
+function(vv_unity_build target)
+  if(NOT VV_UNITY)
+    return()
+  endif()
+  set_target_properties(${target} PROPERTIES UNITY_BUILD ON UNITY_BUILD_BATCH_SIZE ${VV_UNITY_BATCH})
+  if(CMAKE_CXX_COMPILER_ID STREQUAL "GNU")
+    # A batch includes its .cpp files, which GCC then treats as headers: a
+    # test fixture in an anonymous namespace would warn as if a header held it.
+    target_compile_options(${target} PRIVATE -Wno-subobject-linkage)
+  endif()
+endfunction()

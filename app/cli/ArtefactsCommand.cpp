@@ -49,7 +49,7 @@ struct ArtefactsArguments {
     int subdivide = 0;
 };
 
-ArtefactsArguments parse(const std::vector<std::string>& args) {
+ArtefactsArguments parseArtefactsArguments(const std::vector<std::string>& args) {
     ArtefactsArguments parsed;
     for (Arguments arg("artefacts", args); arg.next();) {
         const std::string& a = arg.name();
@@ -122,7 +122,7 @@ std::string labelFileName(const std::string& label) {
 }  // namespace
 
 int artefactsCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const ArtefactsArguments parsed = parse(args);
+    const ArtefactsArguments parsed = parseArtefactsArguments(args);
     evaluation::ArtefactBenchmarkOptions options;
     if (parsed.size) {
         options.width = parsed.size->first;

@@ -59,7 +59,7 @@ double parsePositive(const std::string& text, const std::string& what) {
     return value;
 }
 
-BenchArguments parse(const std::vector<std::string>& args) {
+BenchArguments parseBenchArguments(const std::vector<std::string>& args) {
     BenchArguments parsed;
     for (Arguments arg("bench", args); arg.next();) {
         const std::string& a = arg.name();
@@ -166,7 +166,7 @@ std::vector<evaluation::SolverSetting> solverSettings(const BenchArguments& pars
 }  // namespace
 
 int benchCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const BenchArguments parsed = parse(args);
+    const BenchArguments parsed = parseBenchArguments(args);
 
     evaluation::VssBenchmarkOptions options;
     options.sizes = parsed.sizes;

@@ -90,7 +90,7 @@ scene::Scene cornerScene(const scene::Volume& volume) {
     return scene;
 }
 
-RenderArguments parse(const std::vector<std::string>& args) {
+RenderArguments parseRenderArguments(const std::vector<std::string>& args) {
     RenderArguments parsed;
     bool haveInput = false;
     bool haveOutput = false;
@@ -227,7 +227,7 @@ void describeImage(std::ostream& summary, const RenderArguments& parsed, const s
 }  // namespace
 
 int renderCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const RenderArguments parsed = parse(args);
+    const RenderArguments parsed = parseRenderArguments(args);
     // Fail before the (possibly long) load and render when an output cannot be written.
     for (const std::filesystem::path& output : {parsed.output, parsed.depthOutput}) {
         if (!output.empty()) {

@@ -158,7 +158,7 @@ bool parsePatientOption(Arguments& a, ReportArguments& parsed) {
     return true;
 }
 
-ReportArguments parse(const std::vector<std::string>& args) {
+ReportArguments parseReportArguments(const std::vector<std::string>& args) {
     ReportArguments parsed;
     bool haveInput = false;
     bool haveFormats = false;
@@ -526,7 +526,7 @@ int runBatch(const ReportArguments& a, std::ostream& out, std::ostream& err) {
 }  // namespace
 
 int reportCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
-    const ReportArguments parsed = parse(args);
+    const ReportArguments parsed = parseReportArguments(args);
     if (!parsed.batch.empty()) {
         return runBatch(parsed, out, err);
     }

@@ -36,7 +36,7 @@ struct VssArguments {
     bool stats = false;
 };
 
-VssArguments parse(const std::vector<std::string>& args) {
+VssArguments parseVssArguments(const std::vector<std::string>& args) {
     VssArguments parsed;
     bool haveDepth = false;
     bool haveOutput = false;
@@ -122,7 +122,7 @@ void writeLabels(const std::filesystem::path& file, const vss::VssResult& result
 
 int vssCommand(const std::vector<std::string>& args, std::ostream& out, std::ostream& err) {
     static_cast<void>(err);
-    const VssArguments parsed = parse(args);
+    const VssArguments parsed = parseVssArguments(args);
     const auto solver = vss::makeSolver(parsed.solver);  // bad options: InvalidArgumentError
     checkOutputPath(parsed.output);
     if (parsed.labels) {

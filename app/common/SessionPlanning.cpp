@@ -15,9 +15,8 @@ namespace vv::app::detail {
 
 namespace {
 
-/// Branch ids, ends and abscissae stay within these bounds.
+/// Branch ids and ends stay below this bound (abscissae within kMaxMm).
 constexpr int kMaxIndex = 1'000'000;
-constexpr double kMaxMm = 1e6;
 
 QJsonArray array3(const glm::dvec3& p) {
     return QJsonArray{p.x, p.y, p.z};

@@ -20,6 +20,9 @@ namespace vv::app::detail {
 
 /// Large enough for any coordinate or value a session holds.
 inline constexpr double kHuge = 1e30;
+/// Positions in millimetres (slice positions, pans, cursors, landmarks) lie
+/// within a kilometre of the origin.
+inline constexpr double kMaxMm = 1e6;
 
 /// The JSON value of `value` for `setting` (SettingsSchema.h): a bool, a
 /// number, a Choice's name, a colour as [r, g, b], text, or null.

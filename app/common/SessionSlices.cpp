@@ -20,8 +20,6 @@ constexpr std::array<const char*, 3> kViewKeys{"axial", "coronal", "sagittal"};
 constexpr std::array<slices::WindowPreset, 5> kPresets{
     slices::WindowPreset::Cta, slices::WindowPreset::Mra, slices::WindowPreset::SoftTissue,
     slices::WindowPreset::Bone, slices::WindowPreset::FullRange};
-/// Slice positions, pans and the cursor lie within a kilometre of the origin.
-constexpr double kMaxMm = 1e6;
 
 QString presetName(slices::WindowPreset preset) {
     return text(slices::presetKey(preset));

@@ -17,6 +17,8 @@
 #include "vv/core/Error.h"
 #include "vv/demo/AneurysmPhantom.h"
 
+namespace aneurysm_test {
+
 namespace {
 
 using vv::analysis::EndPoint;
@@ -267,3 +269,5 @@ TEST(AneurysmPhantom, IsDeterministicAndRefusesOptionsOutOfRange) {
 }
 
 }  // namespace
+
+}  // namespace aneurysm_test

@@ -21,6 +21,8 @@
 #include "vv/meshio/MeshWriter.h"
 #include "vv/vss/Pfm.h"
 
+namespace bench_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -346,3 +348,5 @@ TEST(BenchCommandTest, BadOptionsExitWithUsage) {
 }
 
 }  // namespace
+
+}  // namespace bench_test

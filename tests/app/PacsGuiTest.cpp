@@ -61,6 +61,8 @@
 #include "vv/pacs/Retrieve.h"
 #include "vv/pacs/Send.h"
 
+namespace pacs_gui_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -1114,3 +1116,5 @@ TEST_F(PacsGuiTest, ListenerTlsFilesThatCannotBeReadAreAClearStateNotPlainTcp) {
     EXPECT_THROW(vv::pacs::echo(orthancAe, vv::pacs::Node{kOurAe, "127.0.0.1", scpPort_, {}}),
                  vv::pacs::ConnectionRefusedError);
 }
+
+}  // namespace pacs_gui_test

@@ -43,6 +43,8 @@
 #include "vv/dicom/SeriesWriter.h"
 #include "vv/pacs/LocalStore.h"
 
+namespace pacs_local_studies_gui_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -578,3 +580,5 @@ TEST_F(SeriesChooserTest, ShowsStudyDatesAndSeriesNumbersAsTheBrowsersDo) {
 }
 
 }  // namespace
+
+}  // namespace pacs_local_studies_gui_test

@@ -30,6 +30,8 @@
 #include "vv/render/MeshRenderer.h"
 #include "vv/render/RefinementPolicy.h"
 
+namespace progressive_test {
+
 namespace {
 
 using vv::gui::ViewerWidget;
@@ -620,3 +622,5 @@ TEST_F(ProgressiveTest, AClosedTreeIsDrawnWithBackFaceCullingAndOpenTubesWithout
 }
 
 }  // namespace
+
+}  // namespace progressive_test

@@ -17,6 +17,8 @@
 #include "cli/Cli.h"
 #include "vv/vss/Pfm.h"
 
+namespace render_view_depth_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -162,3 +164,5 @@ TEST(RenderViewDepthTest, GpuAndCpuDepthAgreeAndViewsDiffer) {
 }
 
 }  // namespace
+
+}  // namespace render_view_depth_test

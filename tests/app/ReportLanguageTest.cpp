@@ -25,6 +25,8 @@
 #include "TestMeshes.h"
 #include "vv/meshio/MeshWriter.h"
 
+namespace report_language_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -320,8 +322,8 @@ TEST(ReportLanguageTest, TheGermanStatisticsTableShowsEveryHeaderWhole) {
 /// The numbers under a legend's title word `title` (its first word) on page 1:
 /// the labels of that legend, left to right.
 std::vector<Word> legendLabels(const std::vector<Word>& all, const std::string& title) {
-    const auto heading = std::find_if(all.begin(), all.end(),
-                                      [&](const Word& b) { return b.page == 1 && b.text == title; });
+    const auto heading = std::find_if(
+        all.begin(), all.end(), [&](const Word& b) { return b.page == 1 && b.text == title; });
     EXPECT_NE(heading, all.end()) << "no legend titled " << title;
     std::vector<Word> labels;
     if (heading == all.end()) {
@@ -556,3 +558,5 @@ TEST(ReportLanguageTest, ASliceOfAMeshOrOutsideTheVolumeIsAUsageError) {
 }
 
 }  // namespace
+
+}  // namespace report_language_test

@@ -29,6 +29,8 @@
 #include "vv/demo/AneurysmPhantom.h"
 #include "vv/meshio/MeshWriter.h"
 
+namespace report_measurements_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -330,3 +332,5 @@ TEST(ReportMeasurements, WithoutMeasurementsOrWithABadFileNothingIsWritten) {
 }
 
 }  // namespace
+
+}  // namespace report_measurements_test

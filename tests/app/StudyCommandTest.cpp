@@ -24,6 +24,8 @@
 #include "vv/meshio/MeshWriter.h"
 #include "vv/study/Results.h"
 
+namespace study_command_test {
+
 namespace {
 
 using vv::study::Answer;
@@ -236,3 +238,5 @@ TEST(StudyCommand, BadOptionsAreUsageErrors) {
 }
 
 }  // namespace
+
+}  // namespace study_command_test

@@ -17,6 +17,8 @@
 #include "vv/dicom/DicomSeg.h"
 #include "vv/dicom/DicomSegWriter.h"
 
+namespace dicom_seg_writer_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -146,3 +148,5 @@ TEST(DicomSegWriter, EmptyOrUnlabelledMapsAreRefusedAndNothingIsWritten) {
 }
 
 }  // namespace
+
+}  // namespace dicom_seg_writer_test

@@ -14,7 +14,7 @@
 #include "vv/core/Error.h"
 #include "vv/meshio/MeshSmooth.h"
 
-namespace vv::meshio {
+namespace vv::meshio::mesh_smooth_test {
 using scene::DataArray;
 using scene::Mesh;
 namespace {
@@ -154,4 +154,4 @@ TEST(MeshSmooth, AStopRequestStopsIt) {
 }
 
 }  // namespace
-}  // namespace vv::meshio
+}  // namespace vv::meshio::mesh_smooth_test

@@ -16,7 +16,7 @@
 #include "vv/core/Error.h"
 #include "vv/meshio/MeshSubdivide.h"
 
-namespace vv::meshio {
+namespace vv::meshio::mesh_subdivide_test {
 using scene::DataArray;
 using scene::Mesh;
 namespace {
@@ -226,4 +226,4 @@ TEST(MeshSubdivide, BadLevelsAndBadMeshesAreRefusedByName) {
 }
 
 }  // namespace
-}  // namespace vv::meshio
+}  // namespace vv::meshio::mesh_subdivide_test

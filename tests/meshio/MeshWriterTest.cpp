@@ -15,6 +15,8 @@
 #include "vv/meshio/MeshLoader.h"
 #include "vv/meshio/MeshWriter.h"
 
+namespace mesh_writer_test {
+
 namespace {
 
 namespace fs = std::filesystem;
@@ -314,3 +316,5 @@ TEST_F(MeshWriterTest, LabelNamesFromLegacyFieldData) {
 }
 
 }  // namespace
+
+}  // namespace mesh_writer_test

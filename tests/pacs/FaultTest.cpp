@@ -29,6 +29,8 @@
 #include "vv/pacs/Send.h"
 #include "vv/pacs/StorageScp.h"
 
+namespace fault_test {
+
 namespace fs = std::filesystem;
 using namespace vv::pacs;
 using vv::test::OrthancServer;
@@ -149,3 +151,5 @@ TEST(PacsFaultTest, APeerThatStopsAnsweringDuringAGetTimesOut) {
     EXPECT_NO_THROW(getInto(store, me(), orthanc.node(), RetrieveRequest{study, ""}));
     EXPECT_EQ(store.studies().size(), 1U) << "the same retrieve works once the peer answers";
 }
+
+}  // namespace fault_test

@@ -32,6 +32,8 @@
 #include "vv/pacs/Send.h"
 #include "vv/pacs/StorageScp.h"
 
+namespace listener_load_test {
+
 namespace fs = std::filesystem;
 using namespace vv::pacs;
 using vv::bench::Bytes;
@@ -477,3 +479,5 @@ TEST(ListenerLoadTest, DestroyingABusyListenerReturnsAndLeavesNothingBehind) {
     EXPECT_TRUE(store.studies().empty());
     EXPECT_TRUE(stagingEmpty(store));
 }
+
+}  // namespace listener_load_test

@@ -29,6 +29,8 @@
 #include "vv/pacs/Send.h"
 #include "vv/pacs/StorageScp.h"
 
+namespace listener_tls_test {
+
 namespace fs = std::filesystem;
 using namespace vv::pacs;
 
@@ -234,3 +236,5 @@ TEST_F(ListenerTlsTest, MissingOrUnreadableFilesAreTlsErrors) {
     config.tls.privateKey = certificates_.clientKey;  // not the key of the server certificate
     EXPECT_THROW(StorageScp(store, config), TlsError);
 }
+
+}  // namespace listener_tls_test

@@ -23,6 +23,8 @@
 #include "PacsTestUtil.h"
 #include "vv/pacs/LocalStore.h"
 
+namespace round_trip_test {
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -177,3 +179,5 @@ TEST(PacsRoundTripTest, SendFindRetrieveRenderReportAndFindTheReport) {
     EXPECT_EQ(values(found.output, "seriesInstanceUid").size(), 3U) << found.output;
     vv::test::removeTestCtaSeries(dir / "series", cta);
 }
+
+}  // namespace round_trip_test

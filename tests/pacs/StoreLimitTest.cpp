@@ -25,6 +25,8 @@
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
 
+namespace store_limit_test {
+
 namespace fs = std::filesystem;
 using namespace vv::pacs;
 
@@ -342,3 +344,5 @@ TEST(StoreLimitTest, RemovingAStudyOpenInAnotherProcessIsRefused) {
     EXPECT_TRUE(indexed(store).empty());
     expectIndexAndDiskAgree(store);
 }
+
+}  // namespace store_limit_test

@@ -11,6 +11,8 @@
 #include "vv/core/Error.h"
 #include "vv/pacs/LocalStore.h"
 
+namespace store_test {
+
 namespace fs = std::filesystem;
 using namespace vv::pacs;
 
@@ -96,3 +98,5 @@ TEST(LocalStoreTest, MalformedUidIsRefusedAndItsFileRemoved) {
     EXPECT_THROW(t.add(staged, bad), vv::InvalidArgumentError);
     EXPECT_FALSE(fs::exists(staged));
 }
+
+}  // namespace store_test

@@ -16,6 +16,8 @@
 #include "vv/pacs/Find.h"
 #include "vv/pacs/PacsError.h"
 
+namespace tls_test {
+
 namespace fs = std::filesystem;
 using namespace vv::pacs;
 using vv::test::OrthancServer;
@@ -99,3 +101,5 @@ TEST_F(TlsTest, PlainConnectionToTlsPortFails) {
     node.tls = {};
     EXPECT_THROW(echo(me(), node), NetworkError);
 }
+
+}  // namespace tls_test

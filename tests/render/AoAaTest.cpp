@@ -19,6 +19,8 @@
 #include "vv/demo/DemoTree.h"
 #include "vv/render/OffscreenRenderer.h"
 
+namespace ao_aa_test {
+
 namespace {
 
 using vv::render::OffscreenOptions;
@@ -337,3 +339,5 @@ TEST_F(AoAaTest, VssLightingHasNoBrightSpecksAlongContours) {
 }
 
 }  // namespace
+
+}  // namespace ao_aa_test

@@ -27,6 +27,8 @@
 #include "vv/render/FrameSettings.h"
 #include "vv/render/LegendPainter.h"
 
+namespace legend_text_test {
+
 namespace {
 
 using vv::test::PaintedText;
@@ -288,3 +290,5 @@ TEST(LegendTitleTest, TheDepthLegendHasOneTitleWithItsUnit) {
 }
 
 }  // namespace
+
+}  // namespace legend_text_test

@@ -17,7 +17,7 @@
 #include "passes/SilhouetteRuns.h"
 #include "vv/core/Error.h"
 
-namespace vv::render {
+namespace vv::render::silhouette_runs_test {
 namespace {
 
 bool inside(const std::vector<glm::ivec4>& rects, int x, int y) {
@@ -177,4 +177,4 @@ TEST(SilhouetteRunsTest, BadArgumentsThrow) {
 }
 
 }  // namespace
-}  // namespace vv::render
+}  // namespace vv::render::silhouette_runs_test

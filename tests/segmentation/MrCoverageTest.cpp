@@ -20,6 +20,8 @@
 #include "vv/segmentation/SegmentationPipeline.h"
 #include "vv/segmentation/VolumeSegmentation.h"
 
+namespace mr_coverage_test {
+
 using namespace vv;
 using namespace vv::segmentation;
 using vv::demo::PhantomModality;
@@ -238,3 +240,5 @@ TEST(MrCoverage, CorrectionIsRefusedForCtAndCancels) {
     dark.setModality("MR");
     EXPECT_TRUE(estimateGainField(dark).identity());
 }
+
+}  // namespace mr_coverage_test

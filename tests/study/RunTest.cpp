@@ -16,7 +16,7 @@
 #include "vv/study/RunPlan.h"
 #include "vv/study/StudyRun.h"
 
-namespace vv::study {
+namespace vv::study::run_test {
 namespace {
 
 std::filesystem::path scratch(const std::string& name) {
@@ -368,4 +368,4 @@ TEST(StudyRunStates, AStudyWithoutTrainingImagesStartsWithTheMainBlock) {
 }
 
 }  // namespace
-}  // namespace vv::study
+}  // namespace vv::study::run_test

@@ -25,7 +25,7 @@
 #include "vv/core/Image.h"
 #include "vv/vss/Solver.h"
 
-namespace vv::vss {
+namespace vv::vss::fast_solver_test {
 namespace {
 
 using namespace fasttest;  // NOLINT(google-build-using-namespace): the shared test scenes
@@ -570,4 +570,4 @@ TEST(FastSolverTest, KernelLog2AndExp2MeetTheirDocumentedBounds) {
 }
 
 }  // namespace
-}  // namespace vv::vss
+}  // namespace vv::vss::fast_solver_test

@@ -26,8 +26,6 @@ namespace {
 constexpr int kPixels = 160;
 
 const QColor kContour(255, 214, 0);
-const QColor kMinimum = panels::toQColor(colormaps::diameterColors().minimum);
-const QColor kMaximum = panels::toQColor(colormaps::diameterColors().maximum);
 
 QString millimetres(double mm) {
     return QString::fromStdString(report::measurementCellText({mm, 1, "mm", {}}));
@@ -168,8 +166,11 @@ void CrossSectionView::paintEvent(QPaintEvent* event) {
         contour.closeSubpath();
         painter.setPen(QPen(kContour, 2.0));
         painter.drawPath(contour);
-        for (const auto& [segment, colour] : {std::pair{calipers_.maxSegment, kMaximum},
-                                              std::pair{calipers_.minSegment, kMinimum}}) {
+        for (const auto& [segment, colour] :
+             {std::pair{calipers_.maxSegment,
+                        panels::toQColor(colormaps::diameterColors().maximum)},
+              std::pair{calipers_.minSegment,
+                        panels::toQColor(colormaps::diameterColors().minimum)}}) {
             painter.setPen(QPen(Qt::black, 4.0, Qt::SolidLine, Qt::RoundCap));
             painter.drawLine(toWidget(segment[0]), toWidget(segment[1]));
             painter.setPen(QPen(colour, 2.0, Qt::SolidLine, Qt::RoundCap));

@@ -30,8 +30,6 @@ constexpr double kGrabPixels = 6.0;
 
 // The diameters' colours (told apart with any colour vision), the report's too.
 const QColor kEquivalent = panels::toQColor(colormaps::diameterColors().equivalent);
-const QColor kMinimum = panels::toQColor(colormaps::diameterColors().minimum);
-const QColor kMaximum = panels::toQColor(colormaps::diameterColors().maximum);
 const QColor kArea(120, 120, 120);
 const QColor kLandmark(60, 60, 60);
 const QColor kCursor(204, 0, 0);
@@ -160,8 +158,10 @@ void DiameterProfile::rebuild() {
     };
     const std::array quantities{
         Quantity{tr("Area"), kArea, Qt::DotLine, 1.5, &ProfilePoint::areaMm2, area_},
-        Quantity{tr("Minimum"), kMinimum, Qt::DashLine, 1.5, &ProfilePoint::minMm, diameter_},
-        Quantity{tr("Maximum"), kMaximum, Qt::DashLine, 1.5, &ProfilePoint::maxMm, diameter_},
+        Quantity{tr("Minimum"), panels::toQColor(colormaps::diameterColors().minimum), Qt::DashLine,
+                 1.5, &ProfilePoint::minMm, diameter_},
+        Quantity{tr("Maximum"), panels::toQColor(colormaps::diameterColors().maximum), Qt::DashLine,
+                 1.5, &ProfilePoint::maxMm, diameter_},
         Quantity{tr("Equivalent"), kEquivalent, Qt::SolidLine, 2.5, &ProfilePoint::equivalentMm,
                  diameter_},
     };

@@ -34,8 +34,6 @@ namespace vv::gui {
 
 namespace {
 
-constexpr int kMaxPort = 65535;
-
 enum Column { NameColumn, AeColumn, HostColumn, PortColumn, TlsColumn, PushColumn, ColumnCount };
 
 /// True for a dotted IPv4 address ("127.0.0.1", "0.0.0.0").

@@ -17,12 +17,6 @@
 
 namespace vv::gui {
 
-namespace {
-
-constexpr int kMaxPort = 65535;
-
-}  // namespace
-
 QString aeTitleProblem(const QString& aeTitle, const QString& field) {
     try {
         pacs::validateAeTitle(aeTitle.toStdString());

@@ -15,8 +15,6 @@
 namespace vv::gui {
 namespace {
 
-constexpr int kMaxPort = 65535;
-
 std::string text(const QSettings& store, const QString& key, const std::string& fallback) {
     const QVariant value = store.value(key);
     return value.isValid() ? value.toString().toStdString() : fallback;

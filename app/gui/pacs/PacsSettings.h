@@ -22,6 +22,9 @@ class QSettings;
 
 namespace vv::gui {
 
+/// The highest TCP port a node or the listener may name.
+inline constexpr int kMaxPort = 65535;
+
 /// One configured peer: a display name and the node itself. `allowPush`
 /// lets the node push studies to our listener (it then joins the listener's
 /// allowed peers, by calling AE title and host).
