@@ -69,6 +69,10 @@ class ClippingTest : public vv::test::GuiFixture, public ::testing::WithParamInt
         ASSERT_TRUE(vv::test::installUiLanguage(GetParam().language, VV_QM_DIR));
         GuiFixture::SetUp();
         window_->resize(GetParam().width, GetParam().height);
+        // No simplified copies for moving frames (0: always the full
+        // meshes): nothing here moves the view, and building them would
+        // take as long again as loading the demo.
+        window_->viewer()->setPreviewTriangles(0);
         bool shown = false;
         const vv::test::ScopedConnection keep1(QObject::connect(
             window_.get(), &vv::gui::MainWindow::sceneShown, [&shown] { shown = true; }));

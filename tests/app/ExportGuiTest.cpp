@@ -472,14 +472,17 @@ TEST_F(ExportGuiTest, DicomDataGivesThePatientBlockAndAnonymiseHidesIt) {
 TEST_F(ExportGuiTest, EverySecondViewsLegendDescribesItsOwnImage) {
     // The demo tree without arrays: only the depth legend is over the views.
     auto scene = std::make_shared<scene::Scene>();
-    // (A smaller tree than the bundled one: nine reports stay quick.)
+    // (A smaller tree than the bundled one, drawn as its facets (the smooth
+    // copy of a coarse mesh has tests of its own: SmoothCoarseTest): nine
+    // reports stay quick.)
     scene::Mesh tree = demo::generateDemoMesh({.generations = 4, .maxTriangles = 40000});
     tree.pointArrays.clear();
     tree.cellArrays.clear();
     scene->meshes.push_back(std::move(tree));
+    gui::ViewerWidget* viewer = window_->viewer();
+    viewer->setSmoothCoarseMeshes(false);
     window_->setScene(scene, QStringLiteral("demo"));
     ASSERT_TRUE(waitForFrames() && waitForVss());
-    gui::ViewerWidget* viewer = window_->viewer();
     const vss::DepthRange chosen = viewer->vssSettings().range;
     ASSERT_EQ(chosen.mode, vss::RangeMode::Visible);
     render::OffscreenRenderer renderer;

@@ -302,20 +302,23 @@ TEST(ReportCommandTest, EverySecondViewsLegendDescribesItsOwnImage) {
     // The demo tree without arrays: only the depth legend is over the views.
     const fs::path dir = freshDir("second-views");
     const fs::path input = dir / "demo.vtp";
-    // (A smaller tree than the bundled one: nine reports stay quick.)
+    // (A smaller tree than the bundled one, drawn as its facets (the smooth
+    // copy of a coarse mesh has tests of its own: SmoothCoarseTest): nine
+    // reports stay quick.)
     vv::meshio::writeVtp(vv::demo::generateDemoMesh({.generations = 4, .maxTriangles = 40000}),
                          input);
     vv::report::test::ensureGuiApplication();
     const vv::scene::Scene scene = vv::segmentation::loadSceneSource(input);
     vv::cli::RenderOptionValues values;
     values.array = "";
+    values.smoothCoarseMeshes = false;
     const vv::render::OffscreenOptions base = vv::cli::offscreenOptions(values, scene, input);
     vv::render::OffscreenRenderer renderer;
     for (const std::string& name : vv::report::test::namedViews()) {
         SCOPED_TRACE(name);
         const fs::path pdf = dir / (name + ".pdf");
-        const auto r =
-            report({input.string(), "-o", pdf.string(), "--second-view", name, "--array", "none"});
+        const auto r = report({input.string(), "-o", pdf.string(), "--second-view", name, "--array",
+                               "none", "--smooth-coarse", "off"});
         ASSERT_EQ(r.code, vv::cli::kOk) << r.err;
         const auto view = vv::render::namedViewFromName(name);
         ASSERT_TRUE(view.has_value());

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <string>
 
+#include "vv/core/AsciiText.h"
 #include "vv/core/Error.h"
 
 namespace vv::colormaps {
@@ -193,11 +194,7 @@ std::string_view displayName(ColorMap map) noexcept {
 
 std::optional<ColorMap> colorMapFromName(std::string_view text) noexcept {
     const auto matches = [&](std::string_view candidate) {
-        return !candidate.empty() && candidate.size() == text.size() &&
-               std::equal(candidate.begin(), candidate.end(), text.begin(), [](char a, char b) {
-                   return std::tolower(static_cast<unsigned char>(a)) ==
-                          std::tolower(static_cast<unsigned char>(b));
-               });
+        return !candidate.empty() && equalsIgnoringCase(candidate, text);
     };
     for (const auto& d : kDefinitions) {
         if (matches(d.name) || matches(d.aliases[0]) || matches(d.aliases[1])) {

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "vv/colormaps/ColorMap.h"
+#include "vv/core/AsciiText.h"
 #include "vv/core/Error.h"
 
 namespace vv::colormaps {
@@ -57,13 +58,6 @@ glm::vec3 interpolate(const std::array<Stop, N>& stops, float t) noexcept {
         }
     }
     return stops.back().color;
-}
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b) noexcept {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
 }
 
 }  // namespace

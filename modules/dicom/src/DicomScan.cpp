@@ -13,6 +13,7 @@
 #include <tuple>
 
 #include "DicomHeader.h"
+#include "vv/core/AsciiText.h"
 #include "vv/core/Error.h"
 #include "vv/core/Log.h"
 #include "vv/dicom/Dicom.h"
@@ -44,11 +45,7 @@ fs::path resolveReferenced(const fs::path& root, const std::string& id) {
         fs::path next;
         for (fs::directory_iterator it(current, ec), end; !ec && it != end; it.increment(ec)) {
             const std::string name = it->path().filename().string();
-            if (name.size() == part.size() &&
-                std::equal(name.begin(), name.end(), part.begin(), [](char a, char b) {
-                    return std::tolower(static_cast<unsigned char>(a)) ==
-                           std::tolower(static_cast<unsigned char>(b));
-                })) {
+            if (equalsIgnoringCase(name, part)) {
                 next = it->path();
                 break;
             }

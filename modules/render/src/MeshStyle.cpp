@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "vv/core/AsciiText.h"
 #include "vv/core/Error.h"
 #include "vv/core/Hash.h"
 
@@ -23,13 +24,6 @@ std::string lower(std::string s) {
 
 constexpr std::array kAllValues{ArrayValues::Auto, ArrayValues::Continuous,
                                 ArrayValues::Categories};
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b) noexcept {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
 
 constexpr std::array kAllCues{VesselCue::None, VesselCue::Chromadepth, VesselCue::PseudoChromadepth,
                               VesselCue::Fog, VesselCue::Fresnel};

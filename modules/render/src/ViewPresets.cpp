@@ -8,6 +8,7 @@
 #include <limits>
 #include <string>
 
+#include "vv/core/AsciiText.h"
 #include "vv/core/Error.h"
 
 namespace vv::render {
@@ -16,13 +17,6 @@ namespace {
 
 constexpr std::array<ViewPreset, 3> kPresets{ViewPreset::Far, ViewPreset::Medium,
                                              ViewPreset::Close};
-
-bool equalsIgnoringCase(std::string_view a, std::string_view b) noexcept {
-    return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), [](char x, char y) {
-               return std::tolower(static_cast<unsigned char>(x)) ==
-                      std::tolower(static_cast<unsigned char>(y));
-           });
-}
 
 /// A camera with everything but the distance set up: viewport, orientation,
 /// target at the box centre, scene bounds.

@@ -25,7 +25,7 @@ constexpr ProgramSpec kCompositeProgram{kFullscreenVertex, kCompositeFragment, "
 constexpr ProgramSpec kReducedVssProgram{kFullscreenVertex, kCompositeFragment,
                                          "composite (reduced VSS)", kReducedVss};
 
-struct Data {
+struct CompositeData {
     Handle<Texture> vessels;
     Handle<Texture> vss;
     Handle<Texture> ao;
@@ -34,7 +34,7 @@ struct Data {
     RenderTargetId target;
 };
 
-void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const Data& d) {
+void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const CompositeData& d) {
     const PassContext& context = in.context;
     auto& g = *context.gl;
     context.beginFullscreen(r, d.target, in.size);
@@ -90,9 +90,9 @@ void composite(const CompositeInputs& in, const RenderGraph::Resources& r, const
 }  // namespace
 
 CompositeOutputs addCompositePass(RenderGraph& graph, const CompositeInputs& inputs) {
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<CompositeData>(
         "composite",
-        [&](RenderGraph::Builder& b, Data& d) {
+        [&](RenderGraph::Builder& b, CompositeData& d) {
             d.vessels = b.read(inputs.vessels);
             if (inputs.useVss) {
                 d.vss = b.read(inputs.vss);
@@ -110,7 +110,9 @@ CompositeOutputs addCompositePass(RenderGraph& graph, const CompositeInputs& inp
             d.target =
                 b.declareRenderTarget("composite", RenderTargetAttachments{{d.out.color}, {}});
         },
-        [inputs](const RenderGraph::Resources& r, const Data& d) { composite(inputs, r, d); });
+        [inputs](const RenderGraph::Resources& r, const CompositeData& d) {
+            composite(inputs, r, d);
+        });
     if (!inputs.toTexture) {
         graph.blackboard().put(board::kOutput, data.out.color);
     }

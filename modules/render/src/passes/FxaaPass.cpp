@@ -13,13 +13,13 @@ namespace {
 constexpr std::string_view kFxaaFragment[] = {":/vv/shaders/fxaa.frag"};
 constexpr ProgramSpec kFxaaProgram{kFullscreenVertex, kFxaaFragment, "FXAA", {}};
 
-struct Data {
+struct FxaaData {
     Handle<Texture> input;
     FxaaOutputs out;
     RenderTargetId target;
 };
 
-void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const Data& d) {
+void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const FxaaData& d) {
     const PassContext& context = inputs.context;
     auto& g = *context.gl;
     const glm::ivec2 size = inputs.targetSize;
@@ -41,14 +41,14 @@ void fxaa(const FxaaInputs& inputs, const RenderGraph::Resources& r, const Data&
 }  // namespace
 
 FxaaOutputs addFxaaPass(RenderGraph& graph, const FxaaInputs& inputs) {
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<FxaaData>(
         "fxaa",
-        [&](RenderGraph::Builder& b, Data& d) {
+        [&](RenderGraph::Builder& b, FxaaData& d) {
             d.input = b.read(inputs.color);
             d.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
             d.target = b.declareRenderTarget("output", RenderTargetAttachments{{d.out.output}, {}});
         },
-        [inputs](const RenderGraph::Resources& r, const Data& d) { fxaa(inputs, r, d); });
+        [inputs](const RenderGraph::Resources& r, const FxaaData& d) { fxaa(inputs, r, d); });
     graph.blackboard().put(board::kOutput, data.out.output);
     return data.out;
 }

@@ -29,7 +29,7 @@ constexpr ProgramSpec kEdgesProgram{kRectsVertex, kUpscaleFragment, "upscale (ed
 constexpr ProgramSpec kEdgesColorProgram{kRectsVertex, kUpscaleFragment,
                                          "upscale (edges, colour only)", kEdgesColorOnly};
 
-struct Data {
+struct UpscaleData {
     Handle<Texture> input;
     UpscaleOutputs out;
     RenderTargetId target;
@@ -46,7 +46,7 @@ struct Data {
 /// The render size's depth when it is the colour's size (what the
 /// silhouettes are drawn from), else null: no silhouettes.
 const Image<float>* edgeDepth(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
-                              const Data& d) {
+                              const UpscaleData& d) {
     if (!inputs.sharpEdges) {
         return nullptr;
     }
@@ -75,7 +75,7 @@ void uploadRuns(QOpenGLFunctions_4_1_Core& g, const GlTexture& texture,
 /// (UpscaleTiles.h) when they are what the height texture holds; else the
 /// whole target, with iso-lines when there are any.
 UpscaleTiles upscaleTiles(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
-                          const Data& d) {
+                          const UpscaleData& d) {
     // Target pixels: llvmpipe's bins (scissors on their edges leave whole
     // bins to one program). Against one full-screen draw with the iso-lines,
     // 3.0 against 3.9 ms wall, 5.7 against 7.6 ms CPU at 1280x720 (the
@@ -124,8 +124,8 @@ void useUpscale(const UpscaleInputs& inputs, const Program& program, bool lines)
 /// Draws the silhouettes of `vessels` over the upscaled frame (upscale.frag's
 /// EDGES variant, the depth texture on unit 2, the runs on unit 3) in the
 /// rectangles that need it (silhouetteRects()).
-void drawSilhouettes(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const Data& d,
-                     const Image<std::uint8_t>& vessels) {
+void drawSilhouettes(const UpscaleInputs& inputs, const RenderGraph::Resources& r,
+                     const UpscaleData& d, const Image<std::uint8_t>& vessels) {
     auto& g = *inputs.context.gl;
     const std::vector<glm::ivec4> rects = silhouetteRects(vessels, inputs.targetSize);
     if (rects.empty()) {
@@ -152,7 +152,7 @@ void drawSilhouettes(const UpscaleInputs& inputs, const RenderGraph::Resources& 
     g.glBindTexture(GL_TEXTURE_2D, 0);
 }
 
-void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const Data& d) {
+void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const UpscaleData& d) {
     const PassContext& context = inputs.context;
     auto& g = *context.gl;
     const UpscaleTiles tiles = upscaleTiles(inputs, r, d);
@@ -193,9 +193,9 @@ void upscale(const UpscaleInputs& inputs, const RenderGraph::Resources& r, const
 }  // namespace
 
 UpscaleOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs) {
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<UpscaleData>(
         "upscale",
-        [&](RenderGraph::Builder& b, Data& d) {
+        [&](RenderGraph::Builder& b, UpscaleData& d) {
             d.input = b.read(inputs.color);
             if (inputs.isoLines > 0) {
                 d.height = b.read(inputs.vssHeight);
@@ -210,7 +210,7 @@ UpscaleOutputs addUpscalePass(RenderGraph& graph, const UpscaleInputs& inputs) {
             d.out.output = b.write(graph.blackboard().get<Texture>(board::kOutput));
             d.target = b.declareRenderTarget("output", RenderTargetAttachments{{d.out.output}, {}});
         },
-        [inputs](const RenderGraph::Resources& r, const Data& d) { upscale(inputs, r, d); });
+        [inputs](const RenderGraph::Resources& r, const UpscaleData& d) { upscale(inputs, r, d); });
     graph.blackboard().put(board::kOutput, data.out.output);
     return data.out;
 }

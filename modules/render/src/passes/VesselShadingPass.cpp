@@ -16,7 +16,7 @@ struct CueKey {
     glm::vec3 background{0.0F};
 };
 
-struct Data {
+struct VesselShadingData {
     Handle<Texture> linearDepth;
     Handle<Texture> normal;
     Handle<Texture> objectId;
@@ -29,7 +29,8 @@ struct Data {
 
 /// The cue of this frame, normalised with the VSS's range when one is shown
 /// and the cue uses it, else with the visible range.
-ShadedCue shadedCue(const VesselShadingInputs& in, const RenderGraph::Resources& r, const Data& d) {
+ShadedCue shadedCue(const VesselShadingInputs& in, const RenderGraph::Resources& r,
+                    const VesselShadingData& d) {
     ShadedCue shaded;
     VesselCueParameters& cue = shaded.cue;
     cue.cue = in.cue.cue;
@@ -57,9 +58,9 @@ VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadin
     cueKey.fresnelExponent = inputs.cue.fresnelExponent;
     cueKey.background = inputs.background;
     const TextureDescriptor colorFormat = sized(inputs.size, TextureFormat::RGBA8);
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<VesselShadingData>(
         "vessel-shading",
-        [&](RenderGraph::Builder& b, Data& d) {
+        [&](RenderGraph::Builder& b, VesselShadingData& d) {
             b.dependsOn("cue", cueKey);
             b.dependsOn("shading", inputs.shadingRevision);  // style, light, scene
             const GeometryOutputs& gbuffer = inputs.gbuffer;
@@ -80,7 +81,7 @@ VesselShadingOutputs addVesselShadingPass(RenderGraph& graph, const VesselShadin
             d.out.cue = b.write(b.createPersistent<CpuValue<ShadedCue>>("vessel-cue", {}));
             d.target = b.declareRenderTarget("vessels", RenderTargetAttachments{{d.out.color}, {}});
         },
-        [inputs](const RenderGraph::Resources& r, const Data& d) {
+        [inputs](const RenderGraph::Resources& r, const VesselShadingData& d) {
             const PassContext& context = inputs.context;
             auto& g = *context.gl;
             const ShadedCue shaded = shadedCue(inputs, r, d);

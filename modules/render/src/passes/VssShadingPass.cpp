@@ -22,7 +22,7 @@ constexpr ProgramSpec kQuickProgram{kFullscreenVertex, kVssFragment, "VSS shadin
 constexpr ProgramSpec kSlopeProgram{kFullscreenVertex, kVssFragment, "VSS shading (fitted slopes)",
                                     kSlopeTexture};
 
-struct Data {
+struct VssShadingData {
     Handle<Texture> height;
     Handle<Texture> slope;
     Handle<Texture> linearDepth;
@@ -31,7 +31,7 @@ struct Data {
     RenderTargetId target;
 };
 
-void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Data& d) {
+void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const VssShadingData& d) {
     const PassContext& context = in.context;
     auto& g = *context.gl;
     const VssSettings& settings = in.settings;
@@ -90,9 +90,9 @@ void shade(const VssShadingInputs& in, const RenderGraph::Resources& r, const Da
 }  // namespace
 
 VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& inputs) {
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<VssShadingData>(
         "vss-shading",
-        [&](RenderGraph::Builder& b, Data& d) {
+        [&](RenderGraph::Builder& b, VssShadingData& d) {
             d.height = b.read(inputs.vss.height);
             d.slope = b.read(inputs.vss.slope);
             d.linearDepth = b.read(inputs.reduced ? inputs.vss.depth : inputs.linearDepth);
@@ -101,7 +101,9 @@ VssShadingOutputs addVssShadingPass(RenderGraph& graph, const VssShadingInputs& 
                 b.write(b.create<Texture>("vss-color", sized(inputs.size, TextureFormat::RGBA8)));
             d.target = b.declareRenderTarget("vss", RenderTargetAttachments{{d.out.color}, {}});
         },
-        [inputs](const RenderGraph::Resources& r, const Data& d) { shade(inputs, r, d); });
+        [inputs](const RenderGraph::Resources& r, const VssShadingData& d) {
+            shade(inputs, r, d);
+        });
     return data.out;
 }
 

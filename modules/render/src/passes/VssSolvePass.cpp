@@ -83,7 +83,7 @@ void uploadSolvedDepth(QOpenGLFunctions_4_1_Core& g, const GlTexture& texture,
     checkGlError(g, "uploading the VSS's depth");
 }
 
-struct Data {
+struct VssSolveData {
     Handle<CpuValue<DepthImage>> depth;
     Handle<SolvedFrameRef> solved;
     Handle<ExternalFrame> external;
@@ -92,7 +92,7 @@ struct Data {
 
 /// The execute callback: shows the external VSS, a solve made now, or the
 /// worker's latest (submitting this view's solve when nobody asked for it).
-void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const Data& d) {
+void solve(const VssSolveInputs& in, const RenderGraph::Resources& r, const VssSolveData& d) {
     auto& g = *in.context.gl;
     const GlTexture& heightTexture = glTex(r.get(d.out.height));
     const GlTexture& slopeTexture = glTex(r.get(d.out.slope));
@@ -162,9 +162,9 @@ SolverKey solverKey(const vss::SolverOptions& options, const vss::DepthRange& ra
 }
 
 VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs) {
-    const auto& data = graph.addPass<Data>(
+    const auto& data = graph.addPass<VssSolveData>(
         "vss-solve",
-        [&](RenderGraph::Builder& b, Data& d) {
+        [&](RenderGraph::Builder& b, VssSolveData& d) {
             b.dependsOn("solver", solverKey(inputs.options, inputs.range));
             b.dependsOn("preview", inputs.preview);
             b.dependsOn("reduction", inputs.reduction);
@@ -190,7 +190,7 @@ VssSolveOutputs addVssSolvePass(RenderGraph& graph, const VssSolveInputs& inputs
             out.shown = b.write(b.createPersistent<CpuValue<ShownVss>>("shown-vss", {}));
             out.input = b.write(b.createPersistent<CpuValue<SolveInput>>("solve-input", {}));
         },
-        [inputs](const RenderGraph::Resources& r, const Data& d) { solve(inputs, r, d); });
+        [inputs](const RenderGraph::Resources& r, const VssSolveData& d) { solve(inputs, r, d); });
     return data.out;
 }
 

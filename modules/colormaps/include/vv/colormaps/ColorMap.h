@@ -34,9 +34,9 @@ enum class ColorMap : std::uint8_t {
 /// Human-readable name ("Viridis").
 [[nodiscard]] std::string_view displayName(ColorMap map) noexcept;
 
-/// The map whose name() equals `name`, ignoring ASCII case (for blue-white-red also
+/// The map whose name() equals `text`, ignoring ASCII case (for blue-white-red also
 /// "bwr" and "diverging"); nullopt when none does.
-[[nodiscard]] std::optional<ColorMap> colorMapFromName(std::string_view name) noexcept;
+[[nodiscard]] std::optional<ColorMap> colorMapFromName(std::string_view text) noexcept;
 
 /// The colour a map stands for "no data" (NaN values). It is chosen to be
 /// absent from the map itself, so missing values never read as a value. For

@@ -39,9 +39,9 @@ enum class DepthScale : std::uint8_t {
 /// Human-readable name ("Chromadepth").
 [[nodiscard]] std::string_view displayName(DepthScale scale) noexcept;
 
-/// The scale whose name() or shortName() equals `name`, ignoring ASCII case;
+/// The scale whose name() or shortName() equals `text`, ignoring ASCII case;
 /// nullopt when none does.
-[[nodiscard]] std::optional<DepthScale> depthScaleFromName(std::string_view name) noexcept;
+[[nodiscard]] std::optional<DepthScale> depthScaleFromName(std::string_view text) noexcept;
 
 /// The scale's sRGB colour (components in [0, 1]) at normalised depth `t`
 /// (0 = near, 1 = far). t is clamped to [0, 1]; NaN gives the colour at 0.5
