@@ -38,11 +38,12 @@ endfunction()
 # vv_unity_build(<target>): compile the target's sources in batches of
 # VV_UNITY_BATCH, one translation unit per batch (CMake's unity build). For
 # targets whose files spend most of their compile time in the same large
-# headers (Qt Widgets, GoogleTest): the GUI and its tests parse them once per
-# batch instead of once per file. The sources of one target must then not
-# repeat a name at namespace scope, anonymous namespaces included.
+# headers (Qt Widgets, OpenGL, GoogleTest): the app's libraries, vv_render and
+# the test programs parse them once per batch instead of once per file. The
+# sources of one target must then not repeat a name at namespace scope,
+# anonymous namespaces included.
 # -DVV_UNITY=OFF compiles every file alone (to find such a clash, or to edit).
-option(VV_UNITY "Unity builds of the GUI, the CLI and the test programs" ON)
+option(VV_UNITY "Unity builds of the app's libraries, vv_render and the test programs" ON)
 set(VV_UNITY_BATCH 8 CACHE STRING "Sources per unity translation unit")
 
 function(vv_unity_build target)
