@@ -148,22 +148,6 @@ inline double referencePixel(const VoidRegion& r, int x, int y, double p) {
     if (p == 0.5) {
         return referencePixelWith(r, x, y, [](double q) { return std::sqrt(std::sqrt(q)); });
     }
-    // (The common powers spelt out: a constant power vectorises.)
-    if (p == 1.0) {
-        return referencePixelWith(r, x, y, [](double q) { return std::sqrt(q); });
-    }
-    if (p == 2.0) {
-        return referencePixelWith(r, x, y, [](double q) { return q; });
-    }
-    if (p == 3.0) {
-        return referencePixelWith(r, x, y, [](double q) { return q * std::sqrt(q); });
-    }
-    if (p == 4.0) {
-        return referencePixelWith(r, x, y, [](double q) { return q * q; });
-    }
-    if (p == 8.0) {
-        return referencePixelWith(r, x, y, [](double q) { return integerPower(q, 4U); });
-    }
     if (p >= 1.0 && p <= 256.0 && p == std::floor(p)) {
         const auto whole = static_cast<unsigned>(p);
         const unsigned half = whole / 2U;
