@@ -69,15 +69,18 @@ int main(int argc, char** argv) {
             vv::vss::detail::setFastSolverNearSplitForTesting(true);
         } else if (a == "--no-band-boxes") {
             vv::vss::detail::setFastSolverBandBoxesForTesting(false);
+        } else if (a == "--no-distance-table") {
+            vv::vss::detail::setFastSolverDistanceTableForTesting(false);
         } else if (a == "--previous" && more) {
             previousFile = argv[++i];
         } else if (!a.empty() && a[0] != '-') {
             files.push_back(a);
         } else {
-            std::fprintf(stderr,
-                         "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
-                         "[--solver fast|brute] [--near-split] [--no-band-boxes] "
-                         "[--previous A.pfm] FILE.pfm...\n");
+            std::fprintf(
+                stderr,
+                "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
+                "[--solver fast|brute] [--near-split] [--no-band-boxes] [--no-distance-table] "
+                "[--previous A.pfm] FILE.pfm...\n");
             return 2;
         }
     }
@@ -85,11 +88,11 @@ int main(int argc, char** argv) {
         "| file | size | p | first wall ms | wall ms (median) | wall ms (min) | cpu ms "
         "(median) | cpu ms (min) | normalize | regions | interpolate | M2L | near "
         "pairs/px | near-tile px | coarse px | near-box px | near-box points | band-box px | "
-        "band exact px | band samples | taken from previous | fall-back px |\n");
+        "band exact px | band samples | table pairs | taken from previous | fall-back px |\n");
     std::printf(
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|-"
         "--:|"
-        "---:|---:|---:|\n");
+        "---:|---:|---:|---:|\n");
     const Image<float> previousDepth =
         previousFile.empty() ? Image<float>() : vss::readPfm(previousFile);
     const Image<std::uint8_t> previousMask = vss::maskFromFiniteDepth(previousDepth.view());
@@ -142,7 +145,7 @@ int main(int argc, char** argv) {
             std::printf(
                 "| %s | %dx%d | %g | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
                 "%.1f | %lld | %.1f | %.1f %% | %.1f %% | %.1f %% | %lld | %.1f %% | %.1f %% | "
-                "%lld | %.1f %% | %lld |\n",
+                "%lld | %.1f %% | %.1f %% | %lld |\n",
                 file.c_str(), depth.width(), depth.height(), p, first, median(wall), minOf(wall),
                 median(cpu), minOf(cpu), median(norm), median(regions), median(interp),
                 static_cast<long long>(st.m2l), 16.0 * static_cast<double>(st.nearPairs) / px,
@@ -152,8 +155,10 @@ int main(int argc, char** argv) {
                 static_cast<long long>(st.nearBoxPoints),
                 100.0 * static_cast<double>(st.bandBoxPixels) / px,
                 100.0 * static_cast<double>(st.bandExactPixels) / px,
-                static_cast<long long>(st.bandSamples), takenShare,
-                static_cast<long long>(st.fallbackPixels));
+                static_cast<long long>(st.bandSamples),
+                100.0 * static_cast<double>(st.tablePairs) /
+                    static_cast<double>(std::max<std::int64_t>(1, st.nearPairs)),
+                takenShare, static_cast<long long>(st.fallbackPixels));
             std::fflush(stdout);
         }
     }

@@ -19,6 +19,7 @@ std::atomic<bool> gNearSplit{false};
 std::atomic<bool> gBandBoxes{true};
 std::atomic<double> gBandBoundScale{1.0};
 std::atomic<double> gNearSplitBudgetScale{1.0};
+std::atomic<bool> gDistanceTable{true};
 // NOLINTEND(cppcoreguidelines-avoid-non-const-global-variables)
 
 }  // namespace vv::vss::detail::fast
@@ -40,6 +41,8 @@ FastSolverStats fastSolverStats() {
     r.coarsePixels = s.coarsePixels.load();
     r.nearLeaves = s.nearLeaves.load();
     r.nearLeafPixels = s.nearLeafPixels.load();
+    r.tableLeaves = s.tableLeaves.load();
+    r.tablePairs = s.tablePairs.load();
     r.nearBoxes = s.nearBoxes.load();
     r.nearBoxPixels = s.nearBoxPixels.load();
     r.nearBoxPoints = s.nearBoxPoints.load();
@@ -64,6 +67,8 @@ void resetFastSolverStats() {
     s.coarsePixels = 0;
     s.nearLeaves = 0;
     s.nearLeafPixels = 0;
+    s.tableLeaves = 0;
+    s.tablePairs = 0;
     s.nearBoxes = 0;
     s.nearBoxPixels = 0;
     s.nearBoxPoints = 0;
@@ -95,6 +100,10 @@ void setFastSolverNearBoxesForTesting(bool on) {
 
 void setFastSolverBandBoxesForTesting(bool on) {
     fast::gBandBoxes = on;
+}
+
+void setFastSolverDistanceTableForTesting(bool on) {
+    fast::gDistanceTable = on;
 }
 
 void setFastSolverBandBoundScaleForTesting(double scale) {

@@ -5,7 +5,9 @@
 // run time, so PCs without AVX2 still run it.
 #include "FastKernel.h"
 
+#include <array>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <limits>
 
@@ -14,9 +16,91 @@
 namespace vv::vss::detail {
 namespace {
 
-template <int Sq, bool PerPixel>
+// Near sums of one tile row from the distance table (LeafKernelArgs::table):
+// one unaligned 16-float load per point; two partial sums per accumulator,
+// each taking two points at once, so that fewer additions wait on the one
+// before (their rounding error is within the sequential sum's bound, gamma_K,
+// which the check charges).
+VV_FAST_INLINE void tableRowSums(const LeafKernelArgs& a, int row, vf& accD, vf& accN) {
+    const float* __restrict rowBase = a.table + static_cast<std::ptrdiff_t>(row) * kDistTableStride;
+    const std::int32_t* __restrict off = a.tableOffset;
+    const float* __restrict pz = a.pz;
+    const int n = a.tableCount;
+    const auto entry = [&](int k) {
+        vf w;
+        __builtin_memcpy(&w, rowBase + off[k], sizeof(vf));
+        return w;
+    };
+    vf d0 = {};
+    vf d1 = {};
+    vf n0 = {};
+    vf n1 = {};
+    int k = 0;
+    for (; k + 3 < n; k += 4) {
+        const vf w0 = entry(k);
+        const vf w1 = entry(k + 1);
+        const vf w2 = entry(k + 2);
+        const vf w3 = entry(k + 3);
+        d0 += w0 + w2;
+        d1 += w1 + w3;
+        n0 += w0 * pz[k] + w2 * pz[k + 2];
+        n1 += w1 * pz[k + 1] + w3 * pz[k + 3];
+    }
+    for (; k < n; ++k) {
+        const vf w = entry(k);
+        d0 += w;
+        n0 += w * pz[k];
+    }
+    accD = d0 + d1;
+    accN = n0 + n1;
+}
+
+// The far polynomial by columns: d[j] lane i = the coefficient of u^i v^j of
+// D (n: of N), zero for i + j > degree.
+constexpr int kPolyStride = kMaxPolyDegree + 1;
+static_assert(kPolyStride <= kLanes);
+struct PolyColumns {
+    std::array<vf, kPolyStride> d;
+    std::array<vf, kPolyStride> n;
+};
+
+VV_FAST_INLINE PolyColumns polyColumns(const LeafKernelArgs& a) {
+    PolyColumns c{};
+    for (int j = 0; j <= a.degree; ++j) {
+        for (int i = 0; i + j <= a.degree; ++i) {
+            c.d[j][i] = a.polyD[i * kPolyStride + j];
+            c.n[j][i] = a.polyN[i * kPolyStride + j];
+        }
+    }
+    return c;
+}
+
+// The polynomials at one row (v) and its 16 pixels (u): first the row's
+// coefficients of u^i, every i at once (lane i), by Horner in v over the
+// columns (the zero terms above degree - i leave each lane with exactly the
+// scalar Horner's operations), then Horner in u.
+VV_FAST_INLINE void rowPolynomial(const PolyColumns& c, int degree, float v, vf u, vf& farD,
+                                  vf& farN) {
+    vf rowD = c.d[degree];
+    vf rowN = c.n[degree];
+    for (int j = degree - 1; j >= 0; --j) {
+        rowD = rowD * v + c.d[j];
+        rowN = rowN * v + c.n[j];
+    }
+    alignas(64) std::array<float, kLanes> cD{};
+    alignas(64) std::array<float, kLanes> cN{};
+    __builtin_memcpy(cD.data(), &rowD, sizeof(vf));
+    __builtin_memcpy(cN.data(), &rowN, sizeof(vf));
+    farD = splat(cD[degree]);
+    farN = splat(cN[degree]);
+    for (int i = degree - 1; i >= 0; --i) {
+        farD = farD * u + cD[i];
+        farN = farN * u + cN[i];
+    }
+}
+
+template <int Sq, bool PerPixel, bool Table>
 VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32_t* failRows) {
-    constexpr int kStride = kMaxPolyDegree + 1;
     const vf lane = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11, 12, 13, 14, 15};
     const vf u = (lane - a.tu) * a.invA;
     const float halfP = a.power.halfP;
@@ -34,6 +118,7 @@ VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32
         s2e1 = e[0];
         s2f1 = f[0];
     }
+    const PolyColumns cols = polyColumns(a);
     for (int row = 0; row < a.rows; ++row) {
         failRows[row] = 0;
         if (((a.rowMask >> row) & 1U) == 0) {
@@ -57,6 +142,10 @@ VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32
         vf accD = {};
         vf accN = {};
         int k = 0;
+        if constexpr (Table) {
+            tableRowSums(a, row, accD, accN);
+            k = a.tableCount;  // the rest computed, in the same (absolute) scale: s2 = 1
+        }
         if constexpr (Sq >= 0) {
             // two points per division: r = S^2 / (d2a d2b), then S^2/d2a = r d2b
             for (; k + 1 < n; k += 2) {
@@ -84,25 +173,7 @@ VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32
         vf farD = {};
         vf farN = {};
         if (a.degree >= 0) {
-            const float v = (yr - a.tv) * a.invA;
-            float cD[kStride];
-            float cN[kStride];
-            for (int i = 0; i <= a.degree; ++i) {
-                float sD = 0.0F;
-                float sN = 0.0F;
-                for (int j = a.degree - i; j >= 0; --j) {
-                    sD = sD * v + a.polyD[i * kStride + j];
-                    sN = sN * v + a.polyN[i * kStride + j];
-                }
-                cD[i] = sD;
-                cN[i] = sN;
-            }
-            farD = splat(cD[a.degree]);
-            farN = splat(cN[a.degree]);
-            for (int i = a.degree - 1; i >= 0; --i) {
-                farD = farD * u + cD[i];
-                farN = farN * u + cN[i];
-            }
+            rowPolynomial(cols, a.degree, (yr - a.tv) * a.invA, u, farD, farN);
         }
         vf ok;
         vf d;
@@ -155,38 +226,40 @@ VV_FAST_INLINE void kernelBody(const LeafKernelArgs& a, float* zOut, std::uint32
 
 using KernelFn = void (*)(const LeafKernelArgs&, float*, std::uint32_t*);
 
-template <bool PerPixel>
+template <bool PerPixel, bool Table>
 VV_FAST_INLINE void dispatchPower(const LeafKernelArgs& a, float* z, std::uint32_t* f) {
     switch (a.power.squarings) {
         case 0:
-            kernelBody<0, PerPixel>(a, z, f);
+            kernelBody<0, PerPixel, Table>(a, z, f);
             break;
         case 1:
-            kernelBody<1, PerPixel>(a, z, f);
+            kernelBody<1, PerPixel, Table>(a, z, f);
             break;
         case 2:
-            kernelBody<2, PerPixel>(a, z, f);
+            kernelBody<2, PerPixel, Table>(a, z, f);
             break;
         case 3:
-            kernelBody<3, PerPixel>(a, z, f);
+            kernelBody<3, PerPixel, Table>(a, z, f);
             break;
         case 4:
-            kernelBody<4, PerPixel>(a, z, f);
+            kernelBody<4, PerPixel, Table>(a, z, f);
             break;
         case 5:
-            kernelBody<5, PerPixel>(a, z, f);
+            kernelBody<5, PerPixel, Table>(a, z, f);
             break;
         default:
-            kernelBody<-1, PerPixel>(a, z, f);
+            kernelBody<-1, PerPixel, Table>(a, z, f);
             break;
     }
 }
 
 VV_FAST_INLINE void kernelAll(const LeafKernelArgs& a, float* z, std::uint32_t* f) {
-    if (a.perPixel) {
-        dispatchPower<true>(a, z, f);
+    if (a.table != nullptr && !a.perPixel) {
+        dispatchPower<false, true>(a, z, f);
+    } else if (a.perPixel) {
+        dispatchPower<true, false>(a, z, f);
     } else {
-        dispatchPower<false>(a, z, f);
+        dispatchPower<false, false>(a, z, f);
     }
 }
 

@@ -19,6 +19,13 @@ struct KernelPower {
     float halfP = 1.0F;
 };
 
+/// Half-width of the distance table: it holds the offsets (dx, dy) from a
+/// point to a tile pixel for points within kDistTableHalf of the tile origin
+/// in x and in y: -kDistTableHalf <= dx, dy < kDistTableHalf + kLeafTile.
+inline constexpr int kDistTableHalf = 128;
+/// Its row stride and row count.
+inline constexpr int kDistTableStride = 2 * kDistTableHalf + kLeafTile;
+
 /// One leaf tile: near contour points evaluated exactly, the rest of the
 /// region as a polynomial. Coordinates are relative to the tile origin.
 struct LeafKernelArgs {
@@ -51,6 +58,19 @@ struct LeafKernelArgs {
     /// rows in rowMask (the coarse boxes, FastCoarse.h).
     float* sumD = nullptr;
     float* sumN = nullptr;
+    /// When set (tile mode only): the weights of the first tableCount near
+    /// points are read from this table, entry [(dy + kDistTableHalf) *
+    /// kDistTableStride + dx + kDistTableHalf] = (dx^2 + dy^2)^(-p/2), and those
+    /// of the others computed with s2 = 1: both in absolute scale, as the
+    /// polynomial and errAbs must then be. Contour points and pixels are on the
+    /// integer lattice, so a tile row's 16 weights of one point are 16
+    /// consecutive entries: those of point k at row r start at
+    /// tableOffset[k] + r * kDistTableStride, tableOffset[k] =
+    /// (kDistTableHalf - y_k) * kDistTableStride + kDistTableHalf - x_k (|x_k|,
+    /// |y_k| <= kDistTableHalf).
+    const float* table = nullptr;
+    const std::int32_t* tableOffset = nullptr;
+    int tableCount = 0;
 };
 
 /// Evaluates z' for the rows in `a.rowMask` into z[16 * 16] (row-major) and sets

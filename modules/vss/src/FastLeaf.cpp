@@ -54,8 +54,9 @@ std::uint32_t failBits(const std::array<std::uint32_t, kLeafTile>& fail, bool al
 
 // Scratch of one thread, reused by every leaf.
 struct Scratch {
-    std::vector<float> px, py, pz;  // the near points, relative to the tile origin
-    std::vector<float> ax, ay, az;  // every contour point of the region, likewise
+    std::vector<float> px, py, pz;   // the near points, relative to the tile origin
+    std::vector<std::int32_t> toff;  // their distance-table offsets (FastKernel.h)
+    std::vector<float> ax, ay, az;   // every contour point of the region, likewise
 };
 
 Scratch& scratch() {
@@ -63,31 +64,50 @@ Scratch& scratch() {
     return s;
 }
 
-// The near points (K of them) relative to the tile origin; returns the
-// squared distance of the nearest to the pixel box.
-double gatherNearPoints(const Region& rg, const BoxGeo& geo, const std::vector<int>& nearNodes,
-                        std::size_t count, const LeafTile& t, Scratch& sc) {
+// The near points: their squared distance to the pixel box (the nearest),
+// how many come first because the distance table holds every offset of them
+// to a tile pixel, and the largest distance of any to the tile's origin.
+struct NearExtent {
+    double dbm2 = std::numeric_limits<double>::infinity();
+    std::size_t inTable = 0;
+    double dmax = 0.0;
+};
+
+// The near points (K of them) relative to the tile origin, those within the
+// distance table first, with their table indices.
+NearExtent gatherNearPoints(const Region& rg, const BoxGeo& geo, const std::vector<int>& nearNodes,
+                            std::size_t count, const LeafTile& t, Scratch& sc) {
     if (sc.px.size() < count) {
         sc.px.resize(count);
         sc.py.resize(count);
         sc.pz.resize(count);
+        sc.toff.resize(count);
     }
-    double dbm2 = std::numeric_limits<double>::infinity();
-    std::size_t k = 0;
+    NearExtent ext;
+    std::size_t front = 0;     // points within the table fill from the front
+    std::size_t back = count;  // the others from the back
+    int d2max = 0;
     for (int nd : nearNodes) {
         const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
         for (int i = c.begin; i < c.end; ++i) {
             const Point& q = rg.tree.pts[static_cast<std::size_t>(i)];
-            sc.px[k] = static_cast<float>(q.x - t.x0);
-            sc.py[k] = static_cast<float>(q.y - t.y0);
+            const int x = q.x - t.x0;
+            const int y = q.y - t.y0;
+            const bool in = std::abs(x) <= kDistTableHalf && std::abs(y) <= kDistTableHalf;
+            const std::size_t k = in ? front++ : --back;
+            sc.px[k] = static_cast<float>(x);
+            sc.py[k] = static_cast<float>(y);
             sc.pz[k] = q.z;
-            ++k;
+            sc.toff[k] = (kDistTableHalf - y) * kDistTableStride + kDistTableHalf - x;
+            d2max = std::max(d2max, x * x + y * y);
             const double gx = std::max({0, q.x - geo.maxx, geo.minx - q.x});
             const double gy = std::max({0, q.y - geo.maxy, geo.miny - q.y});
-            dbm2 = std::min(dbm2, gx * gx + gy * gy);
+            ext.dbm2 = std::min(ext.dbm2, gx * gx + gy * gy);
         }
     }
-    return dbm2;
+    ext.inTable = front;
+    ext.dmax = std::sqrt(static_cast<double>(d2max));
+    return ext;
 }
 
 // The tile's local expansion as polynomials (zero without one) and the sums
@@ -152,13 +172,36 @@ struct KernelInput {
     ~KernelInput() = default;
 };
 
+// Whether the tile's near weights come from the distance table (in absolute
+// scale): in tile mode, with S^-p (the polynomial's scale then) and the
+// farthest near point's weight far inside float's range.
+const float* distanceTable(const Region& rg, const LeafBounds& bounds, const LeafTolerances& tl,
+                           const NearExtent& ext) {
+    if (rg.dist == nullptr || !tl.tileMode || ext.inTable == 0 ||
+        rg.tab->p * std::log2(bounds.S) > 72.0 ||
+        !DistanceTable::fits(rg.tab->p, ext.dmax + 2.0 * kLeafTile)) {
+        return nullptr;
+    }
+    return rg.dist->get(*rg.tab);
+}
+
 // The weights' scale: one for the tile, or per pixel (large p, far from
-// the points; the polynomial then scaled to S_F). Returns the polynomial's scale.
+// the points; the polynomial then scaled to S_F), or none with the distance
+// table (true weights: the polynomial and E scaled by S^-p). Returns the
+// polynomial's scale.
 double setWeightScale(const Region& rg, const LeafBounds& bounds, const LeafTolerances& tl,
                       bool hasLocal, KernelInput& in) {
     const PowerTables& tab = *rg.tab;
     LeafKernelArgs& a = in.args;
     double polyScale = 1.0;
+    if (a.table != nullptr) {
+        a.perPixel = false;
+        a.s2 = 1.0F;  // the computed near weights in absolute scale too
+        polyScale = tab.pw(1.0 / (bounds.S * bounds.S));
+        a.errAbs =
+            static_cast<float>((bounds.E + tl.farArith) * polyScale * (1.0 + 1e-6) + kUnderflow);
+        return polyScale;
+    }
     if (tl.tileMode) {
         a.perPixel = false;
         a.s2 = static_cast<float>(bounds.S * bounds.S);
@@ -191,8 +234,13 @@ double setWeightScale(const Region& rg, const LeafBounds& bounds, const LeafTole
 // polynomial (its coefficients times polyScale).
 void setUpKernel(const Region& rg, const BoxGeo& geo, const LeafTile& t, const LeafBounds& bounds,
                  const LeafPoly& poly, const LeafTolerances& tl, std::size_t count,
-                 const Scratch& sc, KernelInput& in) {
+                 const Scratch& sc, const NearExtent& ext, KernelInput& in) {
     LeafKernelArgs& a = in.args;
+    a.table = distanceTable(rg, bounds, tl, ext);
+    if (a.table != nullptr) {
+        a.tableOffset = sc.toff.data();
+        a.tableCount = static_cast<int>(ext.inTable);
+    }
     a.rows = t.rows;
     a.rowMask = t.rowMask;
     a.px = sc.px.data();
@@ -282,6 +330,7 @@ bool exactTile(const Region& rg, const LeafTile& t, const KernelInput& in, const
     b.count = static_cast<int>(nn);
     b.degree = -1;
     b.perPixel = true;
+    b.table = nullptr;  // every contour point: beyond the table
     b.s2 = std::numeric_limits<float>::infinity();
     b.farArith = 0.0F;
     b.log2DzE = -1000.0F;
@@ -360,12 +409,12 @@ LeafCounts evalLeaf(const Region& rg, int ix, int iy, const BoxGeo& geo,
     const LeafTile t = leafTile(rg, ix, iy);
     const std::size_t count = pointCount(rg.tree, nearNodes);
     Scratch& sc = scratch();
-    const double dbm2 = gatherNearPoints(rg, geo, nearNodes, count, t, sc);
+    const NearExtent ext = gatherNearPoints(rg, geo, nearNodes, count, t, sc);
     LeafPoly poly;
     leafPolynomial(far, *rg.tab, poly);
-    const LeafTolerances tl = leafTolerances(rg, geo, bounds, poly, count, dbm2);
+    const LeafTolerances tl = leafTolerances(rg, geo, bounds, poly, count, ext.dbm2);
     KernelInput in;
-    setUpKernel(rg, geo, t, bounds, poly, tl, count, sc, in);
+    setUpKernel(rg, geo, t, bounds, poly, tl, count, sc, ext, in);
     TileValues v;
     if (!in.allFail) {
         leafKernel(in.args, v.z.data(), v.fail.data());
@@ -378,6 +427,8 @@ LeafCounts evalLeaf(const Region& rg, int ix, int iy, const BoxGeo& geo,
     counts.pixels = written.pixels;
     counts.fallbackPixels = written.fallbacks;
     counts.nearPairs = static_cast<std::int64_t>(count) * std::popcount(t.rowMask);
+    counts.tablePairs =
+        in.allFail ? 0 : static_cast<std::int64_t>(in.args.tableCount) * std::popcount(t.rowMask);
     counts.perPixel = !tl.tileMode;
     counts.exactTile = haveExact;
     return counts;

@@ -31,6 +31,7 @@ struct LeafCounts {
     std::int64_t pixels = 0;          ///< region pixels written
     std::int64_t fallbackPixels = 0;  ///< of which failed the kernel's check
     std::int64_t nearPairs = 0;       ///< near points x computed rows
+    std::int64_t tablePairs = 0;      ///< of those, with the weight from the distance table
     bool perPixel = false;            ///< per-pixel scale mode (large p, far from the points)
     bool exactTile = false;           ///< the tile was re-evaluated with every contour point
 };

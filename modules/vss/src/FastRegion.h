@@ -76,6 +76,8 @@ struct Region {
     double nearSplitBudgetScale = 1.0;  // test hook: loosens the budget of that split
     double budgetScale = 1.0;           // test hook: loosens the a-priori choices (FastStats.h)
     KernelPower kp;
+    const DistanceTable* dist =
+        nullptr;  // the leaves' weights by lattice offset; nullptr: computed
     std::stop_token stop;
 };
 

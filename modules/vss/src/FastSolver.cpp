@@ -36,6 +36,17 @@
 //     summed exactly; 16 lanes = one tile row; AVX-512 / AVX2 / baseline builds
 //     dispatched at run time. p/2 in {1, 2, 4, ..., 32}: r = S^2/d^2 raised by
 //     squarings (one division per two points); other p: own log2 / exp2.
+//     DISTANCE TABLE (FastTables.h): pixels and contour points lie on the
+//     integer lattice, so the weight of a point at a tile row's 16 pixels is 16
+//     consecutive entries of a table of d^-p over the offsets |dx|, |dy| <= 128
+//     (+15), built once per solver on first use (p <= ~12: its far entries
+//     must stay normal floats). A tile in tile mode reads the weights of its
+//     near points within the table there (one load per point and row instead
+//     of a division's share, the squarings or log2 / exp2) and computes the
+//     others with S = 1, so the whole tile (polynomial, E) is in absolute
+//     scale. Each entry is pw(1/d^2) rounded once: relative error <= u + 1e-13,
+//     within delta_w below. Measured: the near sums 38 -> 27 % of a p = 8
+//     solve (docs/benchmarks/vss.md, "Part 2, third step").
 //
 // ERROR BOUND. Write x - y = W + zeta - v (W = t - c, R = |W|, |zeta| <= a,
 // |v| <= s). Then |x-y|^-p = R^-p (1+u)^(-p/2) (1+conj u)^(-p/2) with
@@ -195,7 +206,7 @@ struct LocalStats {
                  perPixelLeaves = 0, exactTiles = 0, coarseBoxes = 0, coarsePixels = 0,
                  nearLeaves = 0, nearLeafPixels = 0, nearBoxes = 0, nearBoxPixels = 0,
                  nearBoxPoints = 0, bandBoxes = 0, bandBoxPixels = 0, bandExactPixels = 0,
-                 bandSamples = 0;
+                 bandSamples = 0, tableLeaves = 0, tablePairs = 0;
 };
 thread_local LocalStats tlStats;
 void flushStats() {
@@ -213,6 +224,8 @@ void flushStats() {
     s.coarsePixels += l.coarsePixels;
     s.nearLeaves += l.nearLeaves;
     s.nearLeafPixels += l.nearLeafPixels;
+    s.tableLeaves += l.tableLeaves;
+    s.tablePairs += l.tablePairs;
     s.nearBoxes += l.nearBoxes;
     s.nearBoxPixels += l.nearBoxPixels;
     s.nearBoxPoints += l.nearBoxPoints;
@@ -308,6 +321,39 @@ std::int64_t tryNearBox(const Region& rg, int level, const BoxGeo& geo, double S
     return written;
 }
 
+// Adds what a leaf tile did to this thread's counters.
+void countLeaf(const LeafCounts& n, bool hasNearPoints) {
+    LocalStats& s = tlStats;
+    s.pixels += n.pixels;
+    s.fallbackPixels += n.fallbackPixels;
+    s.leaves += 1;
+    s.nearPairs += n.nearPairs;
+    s.perPixelLeaves += n.perPixel ? 1 : 0;
+    s.exactTiles += n.exactTile ? 1 : 0;
+    if (hasNearPoints) {
+        s.nearLeaves += 1;
+        s.nearLeafPixels += n.pixels;
+        s.tableLeaves += n.tablePairs > 0 ? 1 : 0;
+        s.tablePairs += n.tablePairs;
+    }
+}
+
+// What a box hands its children: the clusters it deferred, its local
+// expansion (centre tx, ty, scale an) and its bounds (BoxState).
+struct Handed {
+    const std::vector<int>* deferred = nullptr;
+    const Local* loc = nullptr;
+    bool hasLocal = false;
+    double tx = 0.0, ty = 0.0, an = 1.0;
+    double S = 1.0, E = 0.0, Dlo = 0.0, W = 0.0;
+    double Sacc = 0.0, Sexp = 0.0;
+};
+
+// Processes the children of box st (level >= 1) with what it hands them; with
+// tasks, those of taskLevel are queued there instead.
+void processChildren(const Region& rg, const BoxState& st, const Handed& h,
+                     std::vector<BoxState>* tasks, int taskLevel);
+
 // Places the source clusters box st inherits (drop, expand, defer to the
 // children, or near points of a leaf), then evaluates the leaf tile or
 // recurses into the children; with tasks, the boxes of taskLevel are queued
@@ -398,19 +444,9 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
     tlStats.m2l += nM2l;
     tlStats.dropped += nDrop;
     if (leaf) {
-        const LeafCounts n = evalLeaf(rg, st.ix, st.iy, geo, nearNodes, hasLocal ? &loc : nullptr,
-                                      LeafBounds{S, E, W, Sexp});
-        LocalStats& s = tlStats;
-        s.pixels += n.pixels;
-        s.fallbackPixels += n.fallbackPixels;
-        s.leaves += 1;
-        s.nearPairs += n.nearPairs;
-        s.perPixelLeaves += n.perPixel ? 1 : 0;
-        s.exactTiles += n.exactTile ? 1 : 0;
-        if (!nearNodes.empty()) {
-            s.nearLeaves += 1;
-            s.nearLeafPixels += n.pixels;
-        }
+        countLeaf(evalLeaf(rg, st.ix, st.iy, geo, nearNodes, hasLocal ? &loc : nullptr,
+                           LeafBounds{S, E, W, Sexp}),
+                  !nearNodes.empty());
         return;
     }
     // 5. A box far from every contour point: a coarse grid when the bound allows.
@@ -454,6 +490,14 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
         }
     }
     // 6. Children.
+    processChildren(rg, st,
+                    Handed{&deferred, &loc, hasLocal, geo.tx, geo.ty, geo.an, S, E, Dlo + DloAcc, W,
+                           Sacc, Sexp},
+                    tasks, taskLevel);
+}
+
+void processChildren(const Region& rg, const BoxState& st, const Handed& h,
+                     std::vector<BoxState>* tasks, int taskLevel) {
     for (int dy = 0; dy < 2; ++dy) {
         for (int dx = 0; dx < 2; ++dx) {
             const int cx = st.ix * 2 + dx;
@@ -469,26 +513,26 @@ void processBox(const Region& rg, BoxState& st, std::vector<BoxState>* tasks, in
             ch.level = st.level - 1;
             ch.ix = cx;
             ch.iy = cy;
-            ch.hasLocal = hasLocal;
+            ch.hasLocal = h.hasLocal;
             const bool task = tasks != nullptr && ch.level == taskLevel;
             if (task) {
-                ch.list = deferred;
-                if (hasLocal) {
-                    ch.loc = std::make_unique<Local>(loc);
+                ch.list = *h.deferred;
+                if (h.hasLocal) {
+                    ch.loc = std::make_unique<Local>(*h.loc);
                 }
             } else {
-                ch.listRef = &deferred;
-                ch.locRef = &loc;
+                ch.listRef = h.deferred;
+                ch.locRef = h.loc;
             }
-            ch.lx = geo.tx;
-            ch.ly = geo.ty;
-            ch.la = geo.an;
-            ch.S = S;
-            ch.E = E;
-            ch.Dlo = Dlo + DloAcc;
-            ch.W = W;
-            ch.Sacc = Sacc;
-            ch.Sexp = Sexp;
+            ch.lx = h.tx;
+            ch.ly = h.ty;
+            ch.la = h.an;
+            ch.S = h.S;
+            ch.E = h.E;
+            ch.Dlo = h.Dlo;
+            ch.W = h.W;
+            ch.Sacc = h.Sacc;
+            ch.Sexp = h.Sexp;
             if (task) {
                 tasks->push_back(std::move(ch));
             } else {
@@ -602,6 +646,8 @@ class FastSolver final : public Solver {
     bool bandBoxes_ = gBandBoxes.load();
     double bandBoundScale_ = gBandBoundScale.load();
     double nearSplitBudgetScale_ = gNearSplitBudgetScale.load();
+    bool distanceTable_ = gDistanceTable.load();
+    DistanceTable dist_;  // built by the first leaf that uses it
 };
 
 void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
@@ -671,6 +717,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.stop = stop;
     rg.kp = kp_;
     rg.deltaW = deltaW_;
+    rg.dist = distanceTable_ ? &dist_ : nullptr;
     rg.coarse = coarse_;
     rg.nearBoxesOn = nearBoxes_;
     rg.nearSplit = nearSplit_;

@@ -26,6 +26,8 @@ struct FastSolverStats {
     std::int64_t bandBoxPixels = 0;    ///< of the pixels, written by those boxes
     std::int64_t bandExactPixels = 0;  ///< of those, summed exactly at the pixel
     std::int64_t bandSamples = 0;      ///< grid samples those boxes evaluated
+    std::int64_t tableLeaves = 0;      ///< leaf tiles that read weights from the distance table
+    std::int64_t tablePairs = 0;       ///< of nearPairs, those whose weights came from the table
 };
 
 /// Totals since the last reset (all solver instances, all threads).
@@ -68,5 +70,10 @@ void setFastSolverNearSplitForTesting(bool on);
 /// the parts a near box expands or drops then carry truncation bounds that its
 /// interpolation check must charge. Affects solvers created afterwards.
 void setFastSolverNearSplitBudgetScaleForTesting(double scale);
+
+/// Test / benchmark hook: leaf tiles read their near weights from the
+/// distance table (FastKernel.h, LeafKernelArgs::table; on, the default) or
+/// compute them (off). Affects solvers created afterwards.
+void setFastSolverDistanceTableForTesting(bool on);
 
 }  // namespace vv::vss::detail

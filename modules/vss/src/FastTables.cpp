@@ -4,7 +4,9 @@
 
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <cstddef>
+#include <limits>
 
 namespace vv::vss::detail::fast {
 
@@ -61,6 +63,40 @@ PowerTables::PowerTables(double pIn) : p(pIn), halfP(pIn / 2.0) {
             }
         }
     }
+}
+
+bool DistanceTable::fits(double p, double d) {
+    return p * std::log2(std::max(d, 1.0)) <= 96.0;
+}
+
+const float* DistanceTable::get(const PowerTables& tab) const {
+    constexpr int kH = kDistTableHalf;
+    // the farthest entry: dx = dy = kH + 15
+    if (!fits(tab.p, std::hypot(kH + kLeafTile - 1.0, kH + kLeafTile - 1.0))) {
+        return nullptr;
+    }
+    std::call_once(once_, [this, &tab] {
+        constexpr auto kStride = static_cast<std::size_t>(kDistTableStride);
+        w_.assign(kStride * kStride, 0.0F);
+        // the quadrant dx, dy >= 0, then its mirror images (|dx|, |dy| <= kH)
+        for (int dy = 0; dy < kH + kLeafTile; ++dy) {
+            float* row = &w_[static_cast<std::size_t>(kH + dy) * kStride];
+            for (int dx = 0; dx < kH + kLeafTile; ++dx) {
+                const double d2 = static_cast<double>(dx) * dx + static_cast<double>(dy) * dy;
+                // d = 0 is a contour pixel, never a region pixel: its lane is not used
+                row[kH + dx] = d2 > 0.0 ? static_cast<float>(tab.pw(1.0 / d2))
+                                        : std::numeric_limits<float>::infinity();
+            }
+            for (int dx = 1; dx <= kH; ++dx) {
+                row[kH - dx] = row[kH + dx];
+            }
+        }
+        for (int dy = 1; dy <= kH; ++dy) {
+            std::copy_n(&w_[static_cast<std::size_t>(kH + dy) * kStride], kStride,
+                        &w_[static_cast<std::size_t>(kH - dy) * kStride]);
+        }
+    });
+    return w_.data();
 }
 
 }  // namespace vv::vss::detail::fast

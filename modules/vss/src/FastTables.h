@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <mutex>
 #include <vector>
 
 #include "FastKernel.h"
@@ -119,6 +120,26 @@ struct PowerTables {
         tauOut = tail;
         return m;
     }
+};
+
+/// The weights (dx^2 + dy^2)^(-p/2) of every lattice offset a leaf tile's
+/// kernel can meet (FastKernel.h, LeafKernelArgs::table), built on first use
+/// (only leaf tiles with near points in tile mode need it; at p <= 4 the band
+/// boxes take almost all of them) and then shared by every thread. Each entry
+/// is the float nearest PowerTables::pw(1 / d^2) (relative error <= u plus pw's).
+class DistanceTable {
+  public:
+    /// The table for tab.p, or nullptr when its smallest weight would leave
+    /// float's normal range (p above ~24). Thread-safe.
+    [[nodiscard]] const float* get(const PowerTables& tab) const;
+
+    /// Whether weights down to distance d stay in float's normal range with
+    /// room for the tile's polynomial (2^-96).
+    [[nodiscard]] static bool fits(double p, double d);
+
+  private:
+    mutable std::once_flag once_;
+    mutable std::vector<float> w_;
 };
 
 }  // namespace vv::vss::detail::fast
