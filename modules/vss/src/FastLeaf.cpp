@@ -73,6 +73,11 @@ struct NearExtent {
     double dmax = 0.0;
 };
 
+// x^2 + y^2 without overflow for any image size.
+std::int64_t squared(int x, int y) {
+    return static_cast<std::int64_t>(x) * x + static_cast<std::int64_t>(y) * y;
+}
+
 // The near points (K of them) relative to the tile origin, those within the
 // distance table first, with their table indices.
 NearExtent gatherNearPoints(const Region& rg, const BoxGeo& geo, const std::vector<int>& nearNodes,
@@ -86,7 +91,8 @@ NearExtent gatherNearPoints(const Region& rg, const BoxGeo& geo, const std::vect
     NearExtent ext;
     std::size_t front = 0;     // points within the table fill from the front
     std::size_t back = count;  // the others from the back
-    int d2max = 0;
+    std::int64_t d2max = 0;
+    std::int64_t dbm2 = std::numeric_limits<std::int64_t>::max();
     for (int nd : nearNodes) {
         const SrcNode& c = rg.tree.nodes[static_cast<std::size_t>(nd)];
         for (int i = c.begin; i < c.end; ++i) {
@@ -99,11 +105,14 @@ NearExtent gatherNearPoints(const Region& rg, const BoxGeo& geo, const std::vect
             sc.py[k] = static_cast<float>(y);
             sc.pz[k] = q.z;
             sc.toff[k] = (kDistTableHalf - y) * kDistTableStride + kDistTableHalf - x;
-            d2max = std::max(d2max, x * x + y * y);
-            const double gx = std::max({0, q.x - geo.maxx, geo.minx - q.x});
-            const double gy = std::max({0, q.y - geo.maxy, geo.miny - q.y});
-            ext.dbm2 = std::min(ext.dbm2, gx * gx + gy * gy);
+            d2max = std::max(d2max, squared(x, y));
+            const int gx = std::max(0, std::max(q.x - geo.maxx, geo.minx - q.x));
+            const int gy = std::max(0, std::max(q.y - geo.maxy, geo.miny - q.y));
+            dbm2 = std::min(dbm2, squared(gx, gy));
         }
+    }
+    if (count > 0) {
+        ext.dbm2 = static_cast<double>(dbm2);
     }
     ext.inTable = front;
     ext.dmax = std::sqrt(static_cast<double>(d2max));
