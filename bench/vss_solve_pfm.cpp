@@ -9,12 +9,18 @@
 //
 // With --previous A.pfm, each solve of FILE is given the solve of A (same
 // solver) as its previous one (vss::solve's `previous`: the regions that did
-// not change are taken from it); the last column says how many pixels were.
+// not change are taken from it); the column "taken from previous" says how
+// many pixels were. With --max-error, the last column is the largest
+// |z' - z'_brute| over every void pixel of the last run, against one solve by
+// the brute solver (slow: minutes at 3840x2160); else "-".
 //
 //   vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] [--solver fast|brute] [--near-split]
-//                 [--no-band-boxes] [--previous A.pfm] FILE.pfm...
+//                 [--no-band-boxes] [--no-distance-table] [--max-error] [--previous A.pfm]
+//                 FILE.pfm...
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <ctime>
@@ -45,6 +51,20 @@ double minOf(const std::vector<double>& v) {
     return *std::min_element(v.begin(), v.end());
 }
 
+// The largest |a - b| over the void pixels (label >= 0) of a solve.
+double maxVoidDifference(const vss::VssResult& a, const vss::VssResult& b) {
+    double worst = 0.0;
+    for (int y = 0; y < a.height.height(); ++y) {
+        for (int x = 0; x < a.height.width(); ++x) {
+            if (a.labels(x, y) >= 0) {
+                worst = std::max(worst, std::abs(static_cast<double>(a.height(x, y)) -
+                                                 static_cast<double>(b.height(x, y))));
+            }
+        }
+    }
+    return worst;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -53,6 +73,7 @@ int main(int argc, char** argv) {
     vss::SolverOptions options;
     std::vector<std::string> files;
     std::string previousFile;
+    bool maxError = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         const bool more = i + 1 < argc;
@@ -69,6 +90,8 @@ int main(int argc, char** argv) {
             vv::vss::detail::setFastSolverNearSplitForTesting(true);
         } else if (a == "--no-band-boxes") {
             vv::vss::detail::setFastSolverBandBoxesForTesting(false);
+        } else if (a == "--max-error") {
+            maxError = true;
         } else if (a == "--no-distance-table") {
             vv::vss::detail::setFastSolverDistanceTableForTesting(false);
         } else if (a == "--previous" && more) {
@@ -80,6 +103,7 @@ int main(int argc, char** argv) {
                 stderr,
                 "usage: vss_solve_pfm [--runs N] [--p 2,4,8] [--tol T] "
                 "[--solver fast|brute] [--near-split] [--no-band-boxes] [--no-distance-table] "
+                "[--max-error] "
                 "[--previous A.pfm] FILE.pfm...\n");
             return 2;
         }
@@ -88,11 +112,12 @@ int main(int argc, char** argv) {
         "| file | size | p | first wall ms | wall ms (median) | wall ms (min) | cpu ms "
         "(median) | cpu ms (min) | normalize | regions | interpolate | M2L | near "
         "pairs/px | near-tile px | coarse px | near-box px | near-box points | band-box px | "
-        "band exact px | band samples | table pairs | taken from previous | fall-back px |\n");
+        "band exact px | band samples | table pairs | taken from previous | fall-back px | "
+        "max error |\n");
     std::printf(
         "|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|-"
         "--:|"
-        "---:|---:|---:|---:|\n");
+        "---:|---:|---:|---:|---:|\n");
     const Image<float> previousDepth =
         previousFile.empty() ? Image<float>() : vss::readPfm(previousFile);
     const Image<std::uint8_t> previousMask = vss::maskFromFiniteDepth(previousDepth.view());
@@ -118,6 +143,7 @@ int main(int argc, char** argv) {
             std::vector<double> interp;
             double first = 0.0;
             vv::vss::detail::FastSolverStats st{};
+            std::optional<vss::VssResult> last;
             for (int k = 0; k < runs; ++k) {
                 vv::vss::detail::resetFastSolverStats();
                 const auto t0 = std::chrono::steady_clock::now();
@@ -131,6 +157,9 @@ int main(int argc, char** argv) {
                     std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
                         .count();
                 st = vv::vss::detail::fastSolverStats();
+                if (k == runs - 1 && maxError) {
+                    last = r;
+                }
                 if (k == 0) {
                     first = t;  // a fresh process: first touches of every buffer
                     continue;
@@ -141,11 +170,21 @@ int main(int argc, char** argv) {
                 regions.push_back(r.stats.regionsMs);
                 interp.push_back(r.stats.interpolateMs);
             }
+            std::string errText = "-";
+            if (last) {
+                vss::SolverOptions bo = options;
+                bo.kind = vss::SolverKind::Brute;
+                const vss::VssResult ref =
+                    vss::solve(depth.view(), mask.view(), *vss::makeSolver(bo), {});
+                std::array<char, 32> buf{};
+                std::snprintf(buf.data(), buf.size(), "%.2e", maxVoidDifference(*last, ref));
+                errText = buf.data();
+            }
             const auto px = static_cast<double>(std::max<std::int64_t>(1, st.pixels));
             std::printf(
                 "| %s | %dx%d | %g | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | %.1f | "
                 "%.1f | %lld | %.1f | %.1f %% | %.1f %% | %.1f %% | %lld | %.1f %% | %.1f %% | "
-                "%lld | %.1f %% | %.1f %% | %lld |\n",
+                "%lld | %.1f %% | %.1f %% | %lld | %s |\n",
                 file.c_str(), depth.width(), depth.height(), p, first, median(wall), minOf(wall),
                 median(cpu), minOf(cpu), median(norm), median(regions), median(interp),
                 static_cast<long long>(st.m2l), 16.0 * static_cast<double>(st.nearPairs) / px,
@@ -158,7 +197,7 @@ int main(int argc, char** argv) {
                 static_cast<long long>(st.bandSamples),
                 100.0 * static_cast<double>(st.tablePairs) /
                     static_cast<double>(std::max<std::int64_t>(1, st.nearPairs)),
-                takenShare, static_cast<long long>(st.fallbackPixels));
+                takenShare, static_cast<long long>(st.fallbackPixels), errText.c_str());
             std::fflush(stdout);
         }
     }

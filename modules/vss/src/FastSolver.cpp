@@ -39,14 +39,15 @@
 //     DISTANCE TABLE (FastTables.h): pixels and contour points lie on the
 //     integer lattice, so the weight of a point at a tile row's 16 pixels is 16
 //     consecutive entries of a table of d^-p over the offsets |dx|, |dy| <= 128
-//     (+15), built once per solver on first use (p <= ~12: its far entries
-//     must stay normal floats). A tile in tile mode reads the weights of its
-//     near points within the table there (one load per point and row instead
-//     of a division's share, the squarings or log2 / exp2) and computes the
-//     others with S = 1, so the whole tile (polynomial, E) is in absolute
-//     scale. Each entry is pw(1/d^2) rounded once: relative error <= u + 1e-13,
-//     within delta_w below. Measured: the near sums 38 -> 27 % of a p = 8
-//     solve (docs/benchmarks/vss.md, "Part 2, third step").
+//     (+15), fetched on a solver's first use and kept for the process per p
+//     (p <= ~12: its far entries must stay normal floats). A tile in tile
+//     mode reads the weights of its near points within the table there (one
+//     load per point and row instead of a division's share, the squarings or
+//     log2 / exp2) and computes the others with S = 1, so the whole tile
+//     (polynomial, E) is in absolute scale. Each entry is pw(1/d^2) rounded
+//     once: relative error <= u + 1e-13, within delta_w below. Measured: the
+//     near sums 38 -> 23 % of a p = 8 solve (docs/benchmarks/vss.md, "Part 2,
+//     third step").
 //
 // ERROR BOUND. Write x - y = W + zeta - v (W = t - c, R = |W|, |zeta| <= a,
 // |v| <= s). Then |x-y|^-p = R^-p (1+u)^(-p/2) (1+conj u)^(-p/2) with

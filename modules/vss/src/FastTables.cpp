@@ -7,6 +7,9 @@
 #include <cmath>
 #include <cstddef>
 #include <limits>
+#include <memory>
+#include <mutex>
+#include <utility>
 
 namespace vv::vss::detail::fast {
 
@@ -69,34 +72,62 @@ bool DistanceTable::fits(double p, double d) {
     return p * std::log2(std::max(d, 1.0)) <= 96.0;
 }
 
-const float* DistanceTable::get(const PowerTables& tab) const {
+namespace {
+
+// The table for tab.p (DistanceTable): the quadrant dx, dy >= 0, then its
+// mirror images.
+std::shared_ptr<const std::vector<float>> buildDistanceTable(const PowerTables& tab) {
     constexpr int kH = kDistTableHalf;
-    // the farthest entry: dx = dy = kH + 15
-    if (!fits(tab.p, std::hypot(kH + kLeafTile - 1.0, kH + kLeafTile - 1.0))) {
+    constexpr auto kStride = static_cast<std::size_t>(kDistTableStride);
+    auto w = std::make_shared<std::vector<float>>(kStride * kStride, 0.0F);
+    for (int dy = 0; dy < kH + kLeafTile; ++dy) {
+        float* row = &(*w)[static_cast<std::size_t>(kH + dy) * kStride];
+        for (int dx = 0; dx < kH + kLeafTile; ++dx) {
+            const double d2 = static_cast<double>(dx) * dx + static_cast<double>(dy) * dy;
+            // d = 0 is a contour pixel, never a region pixel: its lane is not used
+            row[kH + dx] = d2 > 0.0 ? static_cast<float>(tab.pw(1.0 / d2))
+                                    : std::numeric_limits<float>::infinity();
+        }
+        for (int dx = 1; dx <= kH; ++dx) {
+            row[kH - dx] = row[kH + dx];
+        }
+    }
+    for (int dy = 1; dy <= kH; ++dy) {
+        std::copy_n(&(*w)[static_cast<std::size_t>(kH + dy) * kStride], kStride,
+                    &(*w)[static_cast<std::size_t>(kH - dy) * kStride]);
+    }
+    return w;
+}
+
+// The tables of the last kKept powers, most recent first.
+std::shared_ptr<const std::vector<float>> sharedDistanceTable(const PowerTables& tab) {
+    constexpr std::size_t kKept = 4;
+    static std::mutex mutex;
+    static std::vector<std::pair<double, std::shared_ptr<const std::vector<float>>>> kept;
+    const std::scoped_lock lock(mutex);
+    const auto it =
+        std::find_if(kept.begin(), kept.end(), [&tab](const auto& e) { return e.first == tab.p; });
+    if (it != kept.end()) {
+        std::rotate(kept.begin(), it, it + 1);
+        return kept.front().second;
+    }
+    kept.insert(kept.begin(), {tab.p, buildDistanceTable(tab)});
+    if (kept.size() > kKept) {
+        kept.pop_back();
+    }
+    return kept.front().second;
+}
+
+}  // namespace
+
+const float* DistanceTable::get(const PowerTables& tab) const {
+    // the farthest entry: dx = dy = kDistTableHalf + 15
+    if (!fits(tab.p,
+              std::hypot(kDistTableHalf + kLeafTile - 1.0, kDistTableHalf + kLeafTile - 1.0))) {
         return nullptr;
     }
-    std::call_once(once_, [this, &tab] {
-        constexpr auto kStride = static_cast<std::size_t>(kDistTableStride);
-        w_.assign(kStride * kStride, 0.0F);
-        // the quadrant dx, dy >= 0, then its mirror images (|dx|, |dy| <= kH)
-        for (int dy = 0; dy < kH + kLeafTile; ++dy) {
-            float* row = &w_[static_cast<std::size_t>(kH + dy) * kStride];
-            for (int dx = 0; dx < kH + kLeafTile; ++dx) {
-                const double d2 = static_cast<double>(dx) * dx + static_cast<double>(dy) * dy;
-                // d = 0 is a contour pixel, never a region pixel: its lane is not used
-                row[kH + dx] = d2 > 0.0 ? static_cast<float>(tab.pw(1.0 / d2))
-                                        : std::numeric_limits<float>::infinity();
-            }
-            for (int dx = 1; dx <= kH; ++dx) {
-                row[kH - dx] = row[kH + dx];
-            }
-        }
-        for (int dy = 1; dy <= kH; ++dy) {
-            std::copy_n(&w_[static_cast<std::size_t>(kH + dy) * kStride], kStride,
-                        &w_[static_cast<std::size_t>(kH - dy) * kStride]);
-        }
-    });
-    return w_.data();
+    std::call_once(once_, [this, &tab] { w_ = sharedDistanceTable(tab); });
+    return w_->data();
 }
 
 }  // namespace vv::vss::detail::fast

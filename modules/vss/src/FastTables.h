@@ -6,6 +6,7 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <mutex>
 #include <vector>
 
@@ -123,10 +124,12 @@ struct PowerTables {
 };
 
 /// The weights (dx^2 + dy^2)^(-p/2) of every lattice offset a leaf tile's
-/// kernel can meet (FastKernel.h, LeafKernelArgs::table), built on first use
+/// kernel can meet (FastKernel.h, LeafKernelArgs::table), fetched on first use
 /// (only leaf tiles with near points in tile mode need it; at p <= 4 the band
 /// boxes take almost all of them) and then shared by every thread. Each entry
 /// is the float nearest PowerTables::pw(1 / d^2) (relative error <= u plus pw's).
+/// The tables of the last few p are kept for the process (296 KB each; a
+/// solver is made per frame, and building one takes 0.2-0.7 ms).
 class DistanceTable {
   public:
     /// The table for tab.p, or nullptr when its smallest weight would leave
@@ -139,7 +142,7 @@ class DistanceTable {
 
   private:
     mutable std::once_flag once_;
-    mutable std::vector<float> w_;
+    mutable std::shared_ptr<const std::vector<float>> w_;
 };
 
 }  // namespace vv::vss::detail::fast
