@@ -16,6 +16,15 @@
 namespace vv::vss::detail {
 namespace {
 
+// 16 floats from any address. Always inlined (no lambda: a lambda is a call
+// at -O0, and a vector returned across the kernels' ISAs is read from the
+// wrong place; FastKernelSimd.h).
+VV_FAST_INLINE vf loadUnaligned(const float* p) {
+    vf w;
+    __builtin_memcpy(&w, p, sizeof(vf));
+    return w;
+}
+
 // Near sums of one tile row from the distance table (LeafKernelArgs::table):
 // one unaligned 16-float load per point; two partial sums per accumulator,
 // each taking two points at once, so that fewer additions wait on the one
@@ -26,28 +35,23 @@ VV_FAST_INLINE void tableRowSums(const LeafKernelArgs& a, int row, vf& accD, vf&
     const std::int32_t* __restrict off = a.tableOffset;
     const float* __restrict pz = a.pz;
     const int n = a.tableCount;
-    const auto entry = [&](int k) {
-        vf w;
-        __builtin_memcpy(&w, rowBase + off[k], sizeof(vf));
-        return w;
-    };
     vf d0 = {};
     vf d1 = {};
     vf n0 = {};
     vf n1 = {};
     int k = 0;
     for (; k + 3 < n; k += 4) {
-        const vf w0 = entry(k);
-        const vf w1 = entry(k + 1);
-        const vf w2 = entry(k + 2);
-        const vf w3 = entry(k + 3);
+        const vf w0 = loadUnaligned(rowBase + off[k]);
+        const vf w1 = loadUnaligned(rowBase + off[k + 1]);
+        const vf w2 = loadUnaligned(rowBase + off[k + 2]);
+        const vf w3 = loadUnaligned(rowBase + off[k + 3]);
         d0 += w0 + w2;
         d1 += w1 + w3;
         n0 += w0 * pz[k] + w2 * pz[k + 2];
         n1 += w1 * pz[k + 1] + w3 * pz[k + 3];
     }
     for (; k < n; ++k) {
-        const vf w = entry(k);
+        const vf w = loadUnaligned(rowBase + off[k]);
         d0 += w;
         n0 += w * pz[k];
     }
