@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
-// The fast VSS solver's distance table (FastTables.h, DistanceTable): every
+// The fast VSS solver's distance table (FastTables.h, distanceTable): every
 // entry is the weight of its lattice offset rounded once; the leaf tiles that
 // read it (and compute the points beyond it in the same scale) keep the
 // tolerance on every pixel, and the switch really changes the path taken.
@@ -26,11 +26,11 @@ using detail::kDistTableStride;
 TEST(FastDistanceTableTest, HoldsTheWeightOfEveryOffsetRoundedOnce) {
     for (const double p : {1.0, 2.0, 3.3, 8.0, 12.0}) {
         const detail::fast::PowerTables tab(p);
-        const detail::fast::DistanceTable table;
-        const float* w = table.get(tab);
-        ASSERT_NE(w, nullptr) << p;
-        EXPECT_EQ(table.get(tab), w) << "fetched once";
-        EXPECT_EQ(detail::fast::DistanceTable().get(tab), w) << "kept for the next solver";
+        const auto table = detail::fast::distanceTable(tab);
+        ASSERT_NE(table, nullptr) << p;
+        ASSERT_EQ(table->size(), static_cast<std::size_t>(kDistTableStride) * kDistTableStride);
+        const float* w = table->data();
+        EXPECT_EQ(detail::fast::distanceTable(tab), table) << "kept for the next solver";
         double worst = 0.0;
         for (int dy = -kDistTableHalf; dy < kDistTableHalf + detail::kLeafTile; ++dy) {
             for (int dx = -kDistTableHalf; dx < kDistTableHalf + detail::kLeafTile; ++dx) {
@@ -52,7 +52,7 @@ TEST(FastDistanceTableTest, HoldsTheWeightOfEveryOffsetRoundedOnce) {
     // Beyond p ~ 12 the far entries would leave float's normal range: no table.
     for (const double p : {16.0, 64.0}) {
         const detail::fast::PowerTables tab(p);
-        EXPECT_EQ(detail::fast::DistanceTable().get(tab), nullptr) << p;
+        EXPECT_EQ(detail::fast::distanceTable(tab), nullptr) << p;
     }
 }
 

@@ -188,10 +188,10 @@ const float* distanceTable(const Region& rg, const LeafBounds& bounds, const Lea
                            const NearExtent& ext) {
     if (rg.dist == nullptr || !tl.tileMode || ext.inTable == 0 ||
         rg.tab->p * std::log2(bounds.S) > 72.0 ||
-        !DistanceTable::fits(rg.tab->p, ext.dmax + 2.0 * kLeafTile)) {
+        !distanceTableFits(rg.tab->p, ext.dmax + 2.0 * kLeafTile)) {
         return nullptr;
     }
-    return rg.dist->get(*rg.tab);
+    return rg.dist;
 }
 
 // The weights' scale: one for the tile, or per pixel (large p, far from

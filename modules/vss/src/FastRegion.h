@@ -76,8 +76,8 @@ struct Region {
     double nearSplitBudgetScale = 1.0;  // test hook: loosens the budget of that split
     double budgetScale = 1.0;           // test hook: loosens the a-priori choices (FastStats.h)
     KernelPower kp;
-    const DistanceTable* dist =
-        nullptr;  // the leaves' weights by lattice offset; nullptr: computed
+    // the leaves' weights by lattice offset (FastTables.h); nullptr: computed
+    const float* dist = nullptr;
     std::stop_token stop;
 };
 

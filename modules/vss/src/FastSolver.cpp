@@ -39,7 +39,7 @@
 //     DISTANCE TABLE (FastTables.h): pixels and contour points lie on the
 //     integer lattice, so the weight of a point at a tile row's 16 pixels is 16
 //     consecutive entries of a table of d^-p over the offsets |dx|, |dy| <= 128
-//     (+15), fetched on a solver's first use and kept for the process per p
+//     (+15), fetched when the solver is made and kept for the process per p
 //     (p <= ~12: its far entries must stay normal floats). A tile in tile
 //     mode reads the weights of its near points within the table there (one
 //     load per point and row instead of a division's share, the squarings or
@@ -647,8 +647,9 @@ class FastSolver final : public Solver {
     bool bandBoxes_ = gBandBoxes.load();
     double bandBoundScale_ = gBandBoundScale.load();
     double nearSplitBudgetScale_ = gNearSplitBudgetScale.load();
-    bool distanceTable_ = gDistanceTable.load();
-    DistanceTable dist_;  // built by the first leaf that uses it
+    // the leaves' weights by lattice offset (FastTables.h); nullptr: computed
+    std::shared_ptr<const std::vector<float>> dist_ =
+        gDistanceTable.load() ? distanceTable(tab_) : nullptr;
 };
 
 void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidRegion& region,
@@ -718,7 +719,7 @@ void FastSolver::solveRegion(ImageView<const std::int32_t> labels, const VoidReg
     rg.stop = stop;
     rg.kp = kp_;
     rg.deltaW = deltaW_;
-    rg.dist = distanceTable_ ? &dist_ : nullptr;
+    rg.dist = dist_ != nullptr ? dist_->data() : nullptr;
     rg.coarse = coarse_;
     rg.nearBoxesOn = nearBoxes_;
     rg.nearSplit = nearSplit_;

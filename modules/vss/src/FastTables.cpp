@@ -68,13 +68,13 @@ PowerTables::PowerTables(double pIn) : p(pIn), halfP(pIn / 2.0) {
     }
 }
 
-bool DistanceTable::fits(double p, double d) {
+bool distanceTableFits(double p, double d) {
     return p * std::log2(std::max(d, 1.0)) <= 96.0;
 }
 
 namespace {
 
-// The table for tab.p (DistanceTable): the quadrant dx, dy >= 0, then its
+// The table for tab.p (distanceTable): the quadrant dx, dy >= 0, then its
 // mirror images.
 std::shared_ptr<const std::vector<float>> buildDistanceTable(const PowerTables& tab) {
     constexpr int kH = kDistTableHalf;
@@ -99,8 +99,15 @@ std::shared_ptr<const std::vector<float>> buildDistanceTable(const PowerTables& 
     return w;
 }
 
-// The tables of the last kKept powers, most recent first.
-std::shared_ptr<const std::vector<float>> sharedDistanceTable(const PowerTables& tab) {
+}  // namespace
+
+std::shared_ptr<const std::vector<float>> distanceTable(const PowerTables& tab) {
+    // the farthest entry: dx = dy = kDistTableHalf + 15
+    if (!distanceTableFits(tab.p, std::hypot(kDistTableHalf + kLeafTile - 1.0,
+                                             kDistTableHalf + kLeafTile - 1.0))) {
+        return nullptr;
+    }
+    // the tables of the last kKept powers, most recent first
     constexpr std::size_t kKept = 4;
     static std::mutex mutex;
     static std::vector<std::pair<double, std::shared_ptr<const std::vector<float>>>> kept;
@@ -116,18 +123,6 @@ std::shared_ptr<const std::vector<float>> sharedDistanceTable(const PowerTables&
         kept.pop_back();
     }
     return kept.front().second;
-}
-
-}  // namespace
-
-const float* DistanceTable::get(const PowerTables& tab) const {
-    // the farthest entry: dx = dy = kDistTableHalf + 15
-    if (!fits(tab.p,
-              std::hypot(kDistTableHalf + kLeafTile - 1.0, kDistTableHalf + kLeafTile - 1.0))) {
-        return nullptr;
-    }
-    std::call_once(once_, [this, &tab] { w_ = sharedDistanceTable(tab); });
-    return w_->data();
 }
 
 }  // namespace vv::vss::detail::fast

@@ -7,7 +7,6 @@
 
 #include <array>
 #include <memory>
-#include <mutex>
 #include <vector>
 
 #include "FastKernel.h"
@@ -124,25 +123,16 @@ struct PowerTables {
 };
 
 /// The weights (dx^2 + dy^2)^(-p/2) of every lattice offset a leaf tile's
-/// kernel can meet (FastKernel.h, LeafKernelArgs::table), fetched on first use
-/// (only leaf tiles with near points in tile mode need it; at p <= 4 the band
-/// boxes take almost all of them) and then shared by every thread. Each entry
-/// is the float nearest PowerTables::pw(1 / d^2) (relative error <= u plus pw's).
-/// The tables of the last few p are kept for the process (296 KB each; a
-/// solver is made per frame, and building one takes 0.2-0.7 ms).
-class DistanceTable {
-  public:
-    /// The table for tab.p, or nullptr when its smallest weight would leave
-    /// float's normal range (p above ~24). Thread-safe.
-    [[nodiscard]] const float* get(const PowerTables& tab) const;
+/// kernel can meet (FastKernel.h, LeafKernelArgs::table): kDistTableStride^2
+/// floats, each the float nearest PowerTables::pw(1 / d^2) (relative error
+/// <= u plus pw's); read-only, shared by every thread. The tables of the last
+/// four p are kept for the process (296 KB each; a solver is made per frame,
+/// and building one takes 0.2-0.7 ms). nullptr when the table's smallest
+/// weight would leave float's normal range (p above ~12). Thread-safe.
+[[nodiscard]] std::shared_ptr<const std::vector<float>> distanceTable(const PowerTables& tab);
 
-    /// Whether weights down to distance d stay in float's normal range with
-    /// room for the tile's polynomial (2^-96).
-    [[nodiscard]] static bool fits(double p, double d);
-
-  private:
-    mutable std::once_flag once_;
-    mutable std::shared_ptr<const std::vector<float>> w_;
-};
+/// Whether weights down to distance d stay in float's normal range with room
+/// for the tile's polynomial (2^-96).
+[[nodiscard]] bool distanceTableFits(double p, double d);
 
 }  // namespace vv::vss::detail::fast
