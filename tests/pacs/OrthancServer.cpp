@@ -17,7 +17,9 @@
 #include <sstream>
 #include <stdexcept>
 #include <thread>
+#include <utility>
 
+#include "FileLock.h"
 #include "WaitUntil.h"
 #include "vv/pacs/Echo.h"
 
@@ -25,36 +27,101 @@ namespace fs = std::filesystem;
 
 namespace vv::test {
 
-std::uint16_t anyFreePort();
-
-std::uint16_t freePort() {
-    // Never the same port twice in one process (the kernel may hand a just
-    // closed port out again).
-    static std::mutex mutex;
-    static std::set<std::uint16_t> given;
-    const std::lock_guard lock(mutex);
-    for (int attempt = 0; attempt < 100; ++attempt) {
-        const std::uint16_t port = anyFreePort();
-        if (given.insert(port).second) {
-            return port;
-        }
+std::pair<int, int> ephemeralPorts() {
+    std::ifstream in("/proc/sys/net/ipv4/ip_local_port_range");
+    int first = 0;
+    int last = 0;
+    if (in >> first >> last && first > 0 && first <= last && last <= 65535) {
+        return {first, last};
     }
-    throw std::runtime_error("no free port");
+    return {32768, 60999};
 }
 
-std::uint16_t anyFreePort() {
-    const int fd = ::socket(AF_INET, SOCK_STREAM, 0);
+namespace {
+
+/// The ports tests listen on: outside the ephemeral range, so that no
+/// connection made meanwhile (by this test, Orthanc, or a test running beside
+/// it) can take the port between its choice and its listener's bind.
+std::pair<int, int> testPorts() {
+    constexpr int kLowest = 10000;
+    constexpr int kEnough = 1000;
+    const auto [first, last] = ephemeralPorts();
+    if (first - 1 - kLowest >= kEnough) {
+        return {kLowest, first - 1};
+    }
+    if (65535 - (last + 1) >= kEnough) {
+        return {last + 1, 65535};
+    }
+    return {1024, 65535};  // no room outside: the checks below still hold
+}
+
+/// True when nothing uses `port` on any address right now: a bind without
+/// SO_REUSEADDR fails for a listener, a connection or a TIME_WAIT on it.
+bool unused(int port) {
+    const int fd = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+    if (fd < 0) {
+        return false;
+    }
     sockaddr_in address{};
     address.sin_family = AF_INET;
-    address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
-    address.sin_port = 0;
-    socklen_t length = sizeof address;
-    if (fd < 0 || ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) != 0 ||
-        ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length) != 0) {
-        throw std::runtime_error("no free port");
-    }
+    address.sin_addr.s_addr = htonl(INADDR_ANY);
+    address.sin_port = htons(static_cast<std::uint16_t>(port));
+    const bool bound = ::bind(fd, reinterpret_cast<sockaddr*>(&address), sizeof address) == 0;
     ::close(fd);
-    return ntohs(address.sin_port);
+    return bound;
+}
+
+/// Reserves `port` among this user's test processes until this process
+/// ends: an exclusive flock on a file named after it, never released (the
+/// kernel releases it at exit, also after a crash). Tests run side by side
+/// under ctest -j, each its own process.
+bool reserve(int port) {
+    auto lock =
+        vv::pacs::detail::FileLock::tryExclusive(portLockFile(static_cast<std::uint16_t>(port)));
+    if (!lock) {
+        return false;
+    }
+    (void)lock->release();  // the descriptor stays open: the lock is held until exit
+    return true;
+}
+
+}  // namespace
+
+fs::path portLockFile(std::uint16_t port) {
+    static const fs::path folder = [] {
+        fs::path path =
+            fs::temp_directory_path() / ("vesselview-test-ports-" + std::to_string(::getuid()));
+        std::error_code ignored;
+        fs::create_directories(path, ignored);
+        return path;
+    }();
+    return folder / (std::to_string(port) + ".lock");
+}
+
+std::uint16_t freePort() {
+    static std::mutex mutex;
+    static std::set<int> given;
+    const std::lock_guard lock(mutex);
+    const auto [first, last] = testPorts();
+    const int count = last - first + 1;
+    // Start at a different place in each process, so that processes started
+    // together seldom contend for the same lock files.
+    static int next = static_cast<int>(
+        (static_cast<unsigned>(::getpid()) * 2654435761U +
+         static_cast<unsigned>(std::chrono::steady_clock::now().time_since_epoch().count())) %
+        static_cast<unsigned>(count));
+    for (int tried = 0; tried < count; ++tried) {
+        const int port = first + next;
+        next = (next + 1) % count;
+        if (!given.contains(port) && unused(port) && reserve(port)) {
+            if (unused(port)) {  // again, now that no other test can take it
+                given.insert(port);
+                return static_cast<std::uint16_t>(port);
+            }
+        }
+    }
+    throw std::runtime_error("no free port between " + std::to_string(first) + " and " +
+                             std::to_string(last));
 }
 
 SilentPeer::SilentPeer() : fd_(::socket(AF_INET, SOCK_STREAM, 0)) {

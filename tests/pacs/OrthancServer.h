@@ -10,13 +10,25 @@
 #include <cstdint>
 #include <filesystem>
 #include <string>
+#include <utility>
 
 #include "vv/pacs/Node.h"
 
 namespace vv::test {
 
-/// A TCP port nobody listens on right now (bound to 0, read back, closed).
+/// A TCP port nobody uses right now, for a listener the test starts next:
+/// outside the kernel's ephemeral range (so no connection takes it
+/// meanwhile), never given twice in this process, and reserved against the
+/// user's other test processes until this one ends. Throws
+/// std::runtime_error when none is left.
 std::uint16_t freePort();
+
+/// The file whose flock reserves `port` for the process that holds it.
+std::filesystem::path portLockFile(std::uint16_t port);
+
+/// The ports the kernel gives a connection's local end
+/// (net.ipv4.ip_local_port_range); 32768-60999 when that cannot be read.
+std::pair<int, int> ephemeralPorts();
 
 /// A peer that never answers: a socket listening on 127.0.0.1 that the
 /// kernel accepts connections for (its backlog) but nobody reads; closed in

@@ -5,6 +5,8 @@
 // storage SCP, and the faults (unknown node pushing, Orthanc killed in the
 // middle of a retrieve, cancel, a too-big C-FIND answer).
 #include <gtest/gtest.h>
+#include <netinet/in.h>
+#include <sys/socket.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -12,9 +14,11 @@
 #include <future>
 #include <memory>
 #include <optional>
+#include <set>
 #include <stop_token>
 #include <thread>
 
+#include "FileLock.h"
 #include "ListenerPeers.h"
 #include "OrthancServer.h"
 #include "PacsTestUtil.h"
@@ -105,6 +109,35 @@ TEST_F(PacsTest, WrongCalledAeTitleIsRejected) {
 TEST_F(PacsTest, UnknownCallingAeTitleIsRejected) {
     const LocalAe stranger{"STRANGER", Timeouts{2, 5, 10}};
     EXPECT_THROW(echo(stranger, orthanc_->node()), AssociationRejectedError);
+}
+
+// The ports the tests' listeners take (a connection made meanwhile took one
+// from under a listener in CI: "Address already in use").
+TEST(TestPortsTest, AreOutsideTheEphemeralRangeUnusedAndReservedUntilTheProcessEnds) {
+    const auto [first, last] = vv::test::ephemeralPorts();
+    const bool roomOutside = first > 11000 || last < 64535;
+    std::set<std::uint16_t> seen;
+    for (int i = 0; i < 20; ++i) {
+        const std::uint16_t port = vv::test::freePort();
+        EXPECT_TRUE(seen.insert(port).second) << port << " given twice";
+        if (roomOutside) {
+            EXPECT_TRUE(port < first || port > last)
+                << port << " lies in the ephemeral range " << first << "-" << last;
+        }
+        // Another process (a new open file description) cannot reserve it.
+        EXPECT_FALSE(vv::pacs::detail::FileLock::tryExclusive(vv::test::portLockFile(port)))
+            << port << " is not reserved";
+        // And a listener can take it.
+        const int listener = ::socket(AF_INET, SOCK_STREAM | SOCK_CLOEXEC, 0);
+        sockaddr_in address{};
+        address.sin_family = AF_INET;
+        address.sin_addr.s_addr = htonl(INADDR_LOOPBACK);
+        address.sin_port = htons(port);
+        EXPECT_EQ(::bind(listener, reinterpret_cast<sockaddr*>(&address), sizeof address), 0)
+            << port;
+        EXPECT_EQ(::listen(listener, 1), 0) << port;
+        ::close(listener);
+    }
 }
 
 TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
