@@ -115,11 +115,10 @@ TEST(PacsFaultTest, OrthancKilledDuringAMoveLeavesNothingComplete) {
     const StorageScp listener(store, config);
     bool killed = false;
     const vv::Progress progress = vv::test::atFirstReport(&killed, [&] { orthanc.kill(); });
-    const auto start = std::chrono::steady_clock::now();
-    EXPECT_THROW(moveTo(kOurAe, me(), orthanc.node(), RetrieveRequest{study, ""}, progress),
+    // Waits longer than ctest lets the test run: only the dead connection can end the move.
+    EXPECT_THROW(moveTo(kOurAe, me(3600), orthanc.node(), RetrieveRequest{study, ""}, progress),
                  NetworkError);
     EXPECT_TRUE(killed);
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
     // The listener's association from the dead peer ends without a release.
     vv::test::waitUntil([&] {
         return listener.stats().acceptedAssociations <= listener.stats().discardedAssociations;
@@ -140,11 +139,9 @@ TEST(PacsFaultTest, APeerThatStopsAnsweringDuringAGetTimesOut) {
     LocalStore store(freshFolder("frozen"));
     bool paused = false;
     const vv::Progress progress = vv::test::atFirstReport(&paused, [&] { orthanc.pause(); });
-    const auto start = std::chrono::steady_clock::now();
     EXPECT_THROW(getInto(store, me(3), orthanc.node(), RetrieveRequest{study, ""}, progress),
                  TimeoutError);
     EXPECT_TRUE(paused);
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(20));
     EXPECT_TRUE(store.studies().empty());
     EXPECT_TRUE(fs::is_empty(store.root() / ".incoming"));
     orthanc.resume();

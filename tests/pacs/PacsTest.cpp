@@ -153,9 +153,8 @@ TEST(PacsFaultTest, RefusedPortIsConnectionRefused) {
 TEST(PacsFaultTest, SilentPeerTimesOut) {
     const vv::test::SilentPeer peer;
     const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
-    const auto start = std::chrono::steady_clock::now();
+    // Without the timeout the echo would wait for ever (ctest's limit ends the test).
     EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
 }
 
 TEST(PacsFaultTest, APeerThatStallsInTheMiddleOfItsAnswerIsDroppedAfterTheResponseTimeout) {
@@ -183,20 +182,22 @@ TEST(PacsFaultTest, APeerThatStallsInTheMiddleOfItsAnswerIsDroppedAfterTheRespon
     EXPECT_TRUE(answered.get()) << "the echo did not fail";
 }
 
+/// Timeouts far beyond ctest's limit on a test (300 s): a call against a
+/// silent peer with these ends only when something else ends it, so no test
+/// needs to time it.
+const Timeouts kLongerThanTheTest{5, 3600, 3600};
+
 /// Runs `call(stop token)` against `peer` (which never answers), requests
 /// the stop from another thread once the call's request waits at the peer,
-/// and returns how long after the stop `call` took to throw CancelledError.
-/// The callers' waits are 60 s long: a stop that only took effect when a
-/// wait ran out would take that long; one that aborts takes milliseconds
-/// (bench, not test, for the figure).
+/// and expects `call` to throw CancelledError. The callers' waits are
+/// kLongerThanTheTest: a stop that only took effect when a wait ran out
+/// would leave the test to ctest's limit.
 template <typename Call>
-std::chrono::milliseconds timeToNoticeTheStop(const vv::test::SilentPeer& peer, Call call) {
+void expectTheStopAbortsIt(const vv::test::SilentPeer& peer, Call call) {
     std::stop_source stop;
-    std::chrono::steady_clock::time_point stopped;
     std::thread canceller([&] {
         EXPECT_TRUE(vv::test::waitUntil([&] { return vv::test::unreadBytesAt(peer.port()) > 0; }))
             << "no request reached the peer";
-        stopped = std::chrono::steady_clock::now();
         stop.request_stop();
     });
     bool cancelled = false;
@@ -207,29 +208,25 @@ std::chrono::milliseconds timeToNoticeTheStop(const vv::test::SilentPeer& peer, 
     } catch (const std::exception& e) {
         ADD_FAILURE() << "not cancelled: " << e.what();
     }
-    const auto ended = std::chrono::steady_clock::now();
     canceller.join();
     EXPECT_TRUE(cancelled);
-    return std::chrono::duration_cast<std::chrono::milliseconds>(ended - stopped);
 }
 
 TEST(PacsFaultTest, AStopAbortsAnEchoWaitingForASilentPeerAtOnce) {
     const vv::test::SilentPeer peer;
     const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
-    const LocalAe patient{kOurAe, Timeouts{5, 60, 60}};
-    const auto noticed = timeToNoticeTheStop(
-        peer, [&](std::stop_token stop) { echo(patient, silent, std::move(stop)); });
-    EXPECT_LT(noticed, std::chrono::seconds(30)) << "the stop waited for the association timeout";
+    const LocalAe patient{kOurAe, kLongerThanTheTest};
+    expectTheStopAbortsIt(peer,
+                          [&](std::stop_token stop) { echo(patient, silent, std::move(stop)); });
 }
 
 TEST(PacsFaultTest, AStopAbortsAFindWaitingForASilentPeerAtOnce) {
     const vv::test::SilentPeer peer;
     const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
-    const LocalAe patient{kOurAe, Timeouts{5, 60, 60}};
-    const auto noticed = timeToNoticeTheStop(peer, [&](std::stop_token stop) {
+    const LocalAe patient{kOurAe, kLongerThanTheTest};
+    expectTheStopAbortsIt(peer, [&](std::stop_token stop) {
         (void)findStudies(patient, silent, StudyQuery{}, {}, std::move(stop));
     });
-    EXPECT_LT(noticed, std::chrono::seconds(30)) << "the stop waited for the association timeout";
 }
 
 TEST(PacsFaultTest, AStopRequestedBeforeTheCallCancelsIt) {
@@ -237,11 +234,9 @@ TEST(PacsFaultTest, AStopRequestedBeforeTheCallCancelsIt) {
     const Node silent{"SILENT", "127.0.0.1", peer.port(), {}};
     std::stop_source stop;
     stop.request_stop();
-    const auto start = std::chrono::steady_clock::now();
-    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{5, 60, 60}}, silent, stop.get_token()),
+    // Not connected at all: the waits are longer than the test may take.
+    EXPECT_THROW(echo(LocalAe{kOurAe, kLongerThanTheTest}, silent, stop.get_token()),
                  vv::CancelledError);
-    // Not connected at all: well before the 60 s wait would have ended.
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(30));
 }
 
 TEST_F(PacsTest, FindsTheStudyByItsKeys) {

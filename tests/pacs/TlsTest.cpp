@@ -91,9 +91,8 @@ TEST_F(TlsTest, ATlsPortThatNeverAnswersTimesOut) {
     const vv::test::SilentPeer port;  // never answers the TLS handshake
     Node silent = orthanc_->node();
     silent.port = port.port();
-    const auto start = std::chrono::steady_clock::now();
-    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), NetworkError);
-    EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(15));
+    // Without the timeout the handshake would wait for ever (ctest's limit ends the test).
+    EXPECT_THROW(echo(LocalAe{kOurAe, Timeouts{2, 2, 2}}, silent), TimeoutError);
 }
 
 TEST_F(TlsTest, PlainConnectionToTlsPortFails) {

@@ -111,6 +111,12 @@ T_ASC_PresentationContextID contextFor(DcmSCU& scu, const Node& peer, const char
 void fail(const OFCondition& cond, const Node& peer, const std::string& what) {
     const std::string text = cond.text() != nullptr ? cond.text() : "unknown error";
     const std::string where = describe(peer) + ": " + what + " failed: ";
+    // A TLS read or write that did not complete within the socket's timeout
+    // (OpenSSL's WANT_READ / WANT_WRITE on a blocking socket): the peer did
+    // not answer, which says nothing about certificates.
+    if (contains(text, "SSL_ERROR_WANT_READ") || contains(text, "SSL_ERROR_WANT_WRITE")) {
+        throw TimeoutError(where + "no answer in time (" + text + ")");
+    }
     if (cond.module() == OFM_dcmtls || contains(text, "TLS") || contains(text, "SSL") ||
         contains(text, "certificate")) {
         throw TlsError(where + "TLS failed (" + text + ")");
