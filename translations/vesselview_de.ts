@@ -2228,6 +2228,46 @@ Ersetzen?</translation>
         <source>Not saved: the listener limits do not fit together.</source>
         <translation>Nicht gespeichert: Die Grenzen des Empfangsdienstes passen nicht zusammen.</translation>
     </message>
+    <message>
+        <source>Timeouts</source>
+        <translation>Zeitlimits</translation>
+    </message>
+    <message>
+        <source>How long VesselView waits for a PACS node before it gives up</source>
+        <translation>Wie lange VesselView auf einen PACS-Knoten wartet, bevor es aufgibt</translation>
+    </message>
+    <message>
+        <source> s</source>
+        <translation> s</translation>
+    </message>
+    <message>
+        <source>How long the node&apos;s computer may take to accept the connection</source>
+        <translation>Wie lange der Rechner des Knotens brauchen darf, um die Verbindung anzunehmen</translation>
+    </message>
+    <message>
+        <source>How long the node may take to accept or reject the association, and to release it</source>
+        <translation>Wie lange der Knoten brauchen darf, um die Assoziation anzunehmen oder abzulehnen und um sie freizugeben</translation>
+    </message>
+    <message>
+        <source>How long the node may take for each answer (a search result, a status, an image); raise it for a slow PACS</source>
+        <translation>Wie lange der Knoten für jede Antwort brauchen darf (ein Suchergebnis, einen Status, ein Bild); für ein langsames PACS erhöhen</translation>
+    </message>
+    <message>
+        <source>Connect:</source>
+        <translation>Verbindung:</translation>
+    </message>
+    <message>
+        <source>Association:</source>
+        <translation>Assoziation:</translation>
+    </message>
+    <message>
+        <source>Each answer:</source>
+        <translation>Jede Antwort:</translation>
+    </message>
+    <message>
+        <source>Not saved: each timeout must be 1 to %L1 s.</source>
+        <translation>Nicht gespeichert: Jedes Zeitlimit muss 1 bis %L1 s betragen.</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::NodeEditDialog</name>

@@ -268,6 +268,36 @@ TEST_F(PacsBrowserGuiTest, ListenerLimitsAreEditedInPreferencesAndSurviveARestar
     EXPECT_EQ(restored.maxAssociationBytes, defaults.maxAssociationBytes);
 }
 
+TEST_F(PacsBrowserGuiTest, TimeoutsAreEditedInPreferencesAndSurviveARestart) {
+    auto* dialog = preferences();
+    const vv::pacs::Timeouts defaults;
+    EXPECT_EQ(dialog->connectTimeoutBox()->text(),
+              QStringLiteral("%1 s").arg(defaults.connectSeconds));
+    EXPECT_EQ(dialog->associateTimeoutBox()->value(), defaults.associateSeconds);
+    EXPECT_EQ(dialog->responseTimeoutBox()->value(), defaults.responseSeconds);
+    EXPECT_EQ(dialog->responseTimeoutBox()->maximum(), vv::gui::kMaxTimeoutSeconds);
+    EXPECT_EQ(dialog->responseTimeoutBox()->minimum(), 1);
+    dialog->connectTimeoutBox()->setValue(3);
+    dialog->associateTimeoutBox()->setValue(20);
+    dialog->responseTimeoutBox()->setValue(600);
+    // What a Test of the node would use now, before OK.
+    EXPECT_EQ(dialog->settings().me.timeouts.responseSeconds, 600);
+    QPointer<vv::gui::NetworkPreferencesDialog> guard(dialog);
+    clickOk(dialog);
+    ASSERT_TRUE(waitUntil([&] { return guard == nullptr || !guard->isVisible(); }, 5000))
+        << dialog->error().toStdString();
+    const vv::pacs::Timeouts saved = vv::gui::readPacsSettings(QSettings()).me.timeouts;
+    EXPECT_EQ(saved.connectSeconds, 3);
+    EXPECT_EQ(saved.associateSeconds, 20);
+    EXPECT_EQ(saved.responseSeconds, 600);
+    // A new window, as after a restart, shows them.
+    window_ = std::make_unique<vv::gui::MainWindow>();
+    auto* again = preferences();
+    EXPECT_EQ(again->connectTimeoutBox()->value(), 3);
+    EXPECT_EQ(again->associateTimeoutBox()->value(), 20);
+    EXPECT_EQ(again->responseTimeoutBox()->text(), QStringLiteral("600 s"));
+}
+
 /// Needs the listener core of issue 31 (the per-address cap).
 TEST_F(PacsBrowserGuiTest, ListenerLimitsSetInPreferencesReachTheRunningListener) {
     auto* dialog = preferences();

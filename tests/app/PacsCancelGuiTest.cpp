@@ -15,7 +15,6 @@
 #include <unistd.h>
 
 #include <QComboBox>
-#include <QElapsedTimer>
 #include <QImage>
 #include <QLabel>
 #include <QLineEdit>
@@ -43,11 +42,6 @@ namespace {
 
 using vv::test::waitUntil;
 
-/// The association timeout (ACSE) of our default settings: the stalled
-/// request would end on its own after this long, so a close of the
-/// connection before it is the cancel's.
-constexpr qint64 kAssociateTimeoutMs = vv::pacs::Timeouts{}.associateSeconds * 1000LL;
-
 /// A DICOM peer that never answers: accepts each TCP connection on
 /// 127.0.0.1, reads what comes and writes nothing; notes when the other side
 /// closed it. Runs on the GUI thread's event loop (the tests' waits).
@@ -66,7 +60,6 @@ class StallingPeer {
             return;
         }
         port_ = ntohs(address.sin_port);
-        clock_.start();
         auto* accepting = new QSocketNotifier(listener_, QSocketNotifier::Read, &context_);
         QObject::connect(accepting, &QSocketNotifier::activated, &context_, [this] { accept(); });
     }
@@ -88,9 +81,6 @@ class StallingPeer {
     [[nodiscard]] int closed() const noexcept { return closed_; }
     /// Bytes read from all connections (the A-ASSOCIATE-RQ, once sent).
     [[nodiscard]] std::size_t received() const noexcept { return received_; }
-    /// Milliseconds since the start when the last connection was closed by the caller.
-    [[nodiscard]] qint64 closedAfter() const noexcept { return closedAfter_; }
-    [[nodiscard]] qint64 now() const { return clock_.elapsed(); }
 
   private:
     void accept() {
@@ -110,7 +100,6 @@ class StallingPeer {
             }
             reading->setEnabled(false);  // closed by the caller (or failed)
             ++closed_;
-            closedAfter_ = clock_.elapsed();
             open_.erase(fd);
             ::close(fd);
         });
@@ -120,11 +109,9 @@ class StallingPeer {
     std::uint16_t port_ = 0;
     QObject context_;
     std::set<int> open_;
-    QElapsedTimer clock_;
     int accepted_ = 0;
     int closed_ = 0;
     std::size_t received_ = 0;
-    qint64 closedAfter_ = -1;
 };
 
 /// True when `label` shows its text in the red of problems (PacsWidgets'
@@ -172,10 +159,14 @@ TEST_F(BackgroundCallTest, AnAnswerThatIsAlreadyThereArrivesLaterNeverInsideTheC
 
 class PacsCancelGuiTest : public vv::test::PacsGuiFixture {
   protected:
-    /// The stalling peer added as a second node ("Stalling") to the settings.
+    /// The stalling peer added as a second node ("Stalling") to the settings,
+    /// with the longest timeouts the settings take: a stalled call then ends
+    /// before the test's waits do only when the cancel ends it.
     void addStallingNode() {
         QSettings settings;
         vv::gui::PacsSettings s = vv::gui::readPacsSettings(settings);
+        s.me.timeouts.associateSeconds = vv::gui::kMaxTimeoutSeconds;
+        s.me.timeouts.responseSeconds = vv::gui::kMaxTimeoutSeconds;
         vv::gui::PacsNode node;
         node.name = "Stalling";
         node.node = {"STALL", "127.0.0.1", peer_.port(), {}};
@@ -206,7 +197,6 @@ TEST_F(PacsCancelGuiTest, CancelSearchAbortsTheFindAtOnceAndSaysCancelled) {
     b->grab().save(
         QString::fromStdString((vv::test::panelTestDir() / "search-running.png").string()));
 
-    const qint64 clicked = peer_.now();
     QTest::mouseClick(b->cancelSearchButton(), Qt::LeftButton);
     // Usable again at once, and saying so: cancelled, not failed, not "0 found".
     ASSERT_TRUE(waitUntil([&] { return b->searchButton()->isEnabled(); }));
@@ -217,8 +207,6 @@ TEST_F(PacsCancelGuiTest, CancelSearchAbortsTheFindAtOnceAndSaysCancelled) {
     EXPECT_EQ(b->studyTable()->rowCount(), 0) << "the earlier answer is not this search's";
     // The worker aborted its association: the peer saw the connection close.
     ASSERT_TRUE(waitUntil([&] { return peer_.closed() == 1; })) << "the association stays open";
-    EXPECT_LT(peer_.closedAfter() - clicked, kAssociateTimeoutMs)
-        << "closed by the association timeout, not by the cancel";
     b->grab().save(
         QString::fromStdString((vv::test::panelTestDir() / "search-cancelled.png").string()));
     waitUntil([] { return false; }, 500);  // no late answer of the aborted worker shows up
@@ -251,7 +239,6 @@ TEST_F(PacsCancelGuiTest, CancelTestAbortsTheEchoAtOnceAndSaysCancelled) {
     dialog->grab().save(
         QString::fromStdString((vv::test::panelTestDir() / "test-running.png").string()));
 
-    const qint64 clicked = peer_.now();
     QTest::mouseClick(dialog->cancelTestButton(), Qt::LeftButton);
     ASSERT_TRUE(waitUntil([&] { return dialog->testButton()->isEnabled(); }));
     EXPECT_FALSE(dialog->testRunning());
@@ -259,8 +246,6 @@ TEST_F(PacsCancelGuiTest, CancelTestAbortsTheEchoAtOnceAndSaysCancelled) {
     EXPECT_FALSE(dialog->cancelTestButton()->isEnabled());
     EXPECT_EQ(dialog->testResult(), QStringLiteral("Test cancelled."));
     ASSERT_TRUE(waitUntil([&] { return peer_.closed() == 1; })) << "the association stays open";
-    EXPECT_LT(peer_.closedAfter() - clicked, kAssociateTimeoutMs)
-        << "closed by the association timeout, not by the cancel";
     waitUntil([] { return false; }, 500);
     EXPECT_EQ(dialog->testResult(), QStringLiteral("Test cancelled."));
 

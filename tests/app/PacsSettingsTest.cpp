@@ -311,6 +311,48 @@ TEST_F(PacsSettingsTest, WritingRefusesListenerLimitsThatDoNotFitTogether) {
     EXPECT_EQ(readPacsSettings(store_).listenerLimits.maxAssociations, 4) << "nothing written";
 }
 
+TEST_F(PacsSettingsTest, TimeoutsAreWrittenAndReadBackAndInvalidOnesSkipped) {
+    EXPECT_EQ(readPacsSettings(store_).me.timeouts.responseSeconds,
+              pacs::Timeouts{}.responseSeconds);
+    PacsSettings s;
+    s.me.timeouts = {7, 1, kMaxTimeoutSeconds};
+    writePacsSettings(s, store_);
+    store_.sync();
+    const QSettings again(store_.fileName(), QSettings::IniFormat);
+    const pacs::Timeouts read = readPacsSettings(again).me.timeouts;
+    EXPECT_EQ(read.connectSeconds, 7);
+    EXPECT_EQ(read.associateSeconds, 1);
+    EXPECT_EQ(read.responseSeconds, kMaxTimeoutSeconds);
+
+    // Written by hand out of range, or not a number: that one takes its default.
+    const pacs::Timeouts defaults;
+    store_.setValue(QStringLiteral("pacs/timeouts/connectSeconds"), 0);
+    store_.setValue(QStringLiteral("pacs/timeouts/associateSeconds"), kMaxTimeoutSeconds + 1);
+    store_.setValue(QStringLiteral("pacs/timeouts/responseSeconds"), QStringLiteral("soon"));
+    const pacs::Timeouts skipped = readPacsSettings(store_).me.timeouts;
+    EXPECT_EQ(skipped.connectSeconds, defaults.connectSeconds);
+    EXPECT_EQ(skipped.associateSeconds, defaults.associateSeconds);
+    EXPECT_EQ(skipped.responseSeconds, defaults.responseSeconds);
+    store_.setValue(QStringLiteral("pacs/timeouts/responseSeconds"), 45);
+    EXPECT_EQ(readPacsSettings(store_).me.timeouts.responseSeconds, 45);
+
+    // Out of range is refused when written, naming the setting; nothing is written.
+    writePacsSettings(s, store_);
+    for (const pacs::Timeouts bad : {pacs::Timeouts{0, 10, 30}, pacs::Timeouts{5, 10, -1},
+                                     pacs::Timeouts{5, kMaxTimeoutSeconds + 1, 30}}) {
+        PacsSettings wrong = s;
+        wrong.me.timeouts = bad;
+        try {
+            writePacsSettings(wrong, store_);
+            ADD_FAILURE() << "timeouts " << bad.connectSeconds << "/" << bad.associateSeconds << "/"
+                          << bad.responseSeconds << " written";
+        } catch (const PacsSettingsError& e) {
+            EXPECT_EQ(e.setting(), PacsSettingsError::Setting::Timeouts) << e.what();
+        }
+    }
+    EXPECT_EQ(readPacsSettings(store_).me.timeouts.connectSeconds, 7) << "nothing written";
+}
+
 /// What the front ends offer limit by limit (ListenerLimits::kMax… / kMin…) is what
 /// ListenerLimits::validate() allows: its ends pass, one beyond is refused.
 TEST_F(PacsSettingsTest, TheListenerLimitRangesOfTheFrontEndsAreThoseValidateAllows) {

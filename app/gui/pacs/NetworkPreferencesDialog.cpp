@@ -100,6 +100,8 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
         tr("Nodes sending to us must then use TLS with a certificate signed by the trusted CA"));
     oursForm->addRow(listenerTls_);
 
+    QGroupBox* waits = makeTimeoutsBox(s.me.timeouts);
+
     auto* store = new QGroupBox(tr("Local study store"), this);
     auto* storeForm = new QFormLayout(store);
     storeFolder_ = new QLineEdit(QString::fromStdString(s.storeFolder.string()), store);
@@ -177,7 +179,11 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
 
     auto* layout = new QVBoxLayout(this);
     auto* top = new QHBoxLayout;
-    top->addWidget(ours);
+    auto* left = new QVBoxLayout;
+    left->addWidget(ours);
+    left->addWidget(waits);
+    left->addStretch();
+    top->addLayout(left);
     auto* right = new QVBoxLayout;
     right->addWidget(store);
     right->addWidget(limits_);
@@ -190,9 +196,41 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     fillTable();
 }
 
+QGroupBox* NetworkPreferencesDialog::makeTimeoutsBox(const pacs::Timeouts& t) {
+    auto* waits = new QGroupBox(tr("Timeouts"), this);
+    waits->setObjectName(QStringLiteral("timeouts"));
+    waits->setToolTip(tr("How long VesselView waits for a PACS node before it gives up"));
+    auto* waitsForm = new QFormLayout(waits);
+    const auto secondsBox = [waits](const QString& name, int seconds, const QString& tip) {
+        auto* box = new QSpinBox(waits);
+        box->setObjectName(name);
+        box->setRange(1, kMaxTimeoutSeconds);
+        box->setSuffix(tr(" s"));
+        box->setValue(seconds);
+        box->setToolTip(tip);
+        return box;
+    };
+    connectTimeout_ =
+        secondsBox(QStringLiteral("connectTimeout"), t.connectSeconds,
+                   tr("How long the node's computer may take to accept the connection"));
+    associateTimeout_ = secondsBox(
+        QStringLiteral("associateTimeout"), t.associateSeconds,
+        tr("How long the node may take to accept or reject the association, and to release it"));
+    responseTimeout_ = secondsBox(
+        QStringLiteral("responseTimeout"), t.responseSeconds,
+        tr("How long the node may take for each answer (a search result, a status, an image); "
+           "raise it for a slow PACS"));
+    waitsForm->addRow(tr("Connect:"), connectTimeout_);
+    waitsForm->addRow(tr("Association:"), associateTimeout_);
+    waitsForm->addRow(tr("Each answer:"), responseTimeout_);
+    return waits;
+}
+
 PacsSettings NetworkPreferencesDialog::settings() const {
-    PacsSettings s = readPacsSettings(QSettings());  // keeps the timeouts
+    PacsSettings s = readPacsSettings(QSettings());
     s.me.aeTitle = aeTitle_->text().trimmed().toStdString();
+    s.me.timeouts = {connectTimeout_->value(), associateTimeout_->value(),
+                     responseTimeout_->value()};
     s.listenerEnabled = listener_->isChecked();
     s.listenerPort = static_cast<std::uint16_t>(listenerPort_->value());
     s.listenerBindAddress = bind_->currentText().trimmed().toStdString();
@@ -387,6 +425,11 @@ void NetworkPreferencesDialog::refuse(const PacsSettingsError& error) {
         case Setting::ListenerLimits:
             problem.summary = tr("Not saved: the listener limits do not fit together.");
             field = limits_;
+            break;
+        case Setting::Timeouts:
+            problem.summary =
+                tr("Not saved: each timeout must be 1 to %L1 s.").arg(kMaxTimeoutSeconds);
+            field = connectTimeout_;
             break;
         case Setting::NodeName:
             problem.summary = node.isEmpty()

@@ -10,6 +10,7 @@
 class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
+class QGroupBox;
 class QLabel;
 class QLineEdit;
 class QPushButton;
@@ -22,7 +23,9 @@ class ListenerLimitsBox;
 class TlsFilesBox;
 
 /// DICOM > Preferences…: our AE title, the listener (on/off, port, the
-/// interface it binds, TLS), its limits (ListenerLimitsBox), the local study
+/// interface it binds, TLS), how long we wait for a node (connect,
+/// association, each answer; 1 s to an hour), the listener's limits
+/// (ListenerLimitsBox), the local study
 /// store (folder, size limit in GB) and the PACS nodes (a table with Add /
 /// Edit / Remove, and Test: C-ECHO on a worker, the answer or what failed
 /// shown under the table). Reads and, on
@@ -55,6 +58,9 @@ class NetworkPreferencesDialog : public QDialog {
     [[nodiscard]] QComboBox* bindBox() const noexcept { return bind_; }
     [[nodiscard]] TlsFilesBox* listenerTlsBox() const noexcept { return listenerTls_; }
     [[nodiscard]] ListenerLimitsBox* listenerLimitsBox() const noexcept { return limits_; }
+    [[nodiscard]] QSpinBox* connectTimeoutBox() const noexcept { return connectTimeout_; }
+    [[nodiscard]] QSpinBox* associateTimeoutBox() const noexcept { return associateTimeout_; }
+    [[nodiscard]] QSpinBox* responseTimeoutBox() const noexcept { return responseTimeout_; }
     [[nodiscard]] QLineEdit* storeFolderEdit() const noexcept { return storeFolder_; }
     [[nodiscard]] QDoubleSpinBox* storeLimitBox() const noexcept { return storeLimit_; }
     [[nodiscard]] QTableWidget* nodeTable() const noexcept { return table_; }
@@ -78,6 +84,8 @@ class NetworkPreferencesDialog : public QDialog {
     void testFinished(bool ok);
 
   private:
+    /// The group "Timeouts": a spin box (1 s to kMaxTimeoutSeconds) for each of `t`.
+    QGroupBox* makeTimeoutsBox(const pacs::Timeouts& t);
     void fillTable();
     void editNode(int row);
     void testNode();
@@ -98,6 +106,9 @@ class NetworkPreferencesDialog : public QDialog {
     QComboBox* bind_ = nullptr;
     TlsFilesBox* listenerTls_ = nullptr;
     ListenerLimitsBox* limits_ = nullptr;
+    QSpinBox* connectTimeout_ = nullptr;
+    QSpinBox* associateTimeout_ = nullptr;
+    QSpinBox* responseTimeout_ = nullptr;
     QLineEdit* storeFolder_ = nullptr;
     QDoubleSpinBox* storeLimit_ = nullptr;
     QTableWidget* table_ = nullptr;

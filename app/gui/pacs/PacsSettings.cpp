@@ -7,6 +7,7 @@
 #include <QString>
 #include <functional>
 #include <set>
+#include <string>
 #include <system_error>
 
 #include "vv/core/Error.h"
@@ -126,6 +127,24 @@ void writeTls(const pacs::TlsSettings& tls, const QString& prefix, QSettings& st
                    QString::fromStdString(tls.privateKey.string()));
 }
 
+/// How long we wait for a node, under "pacs/timeouts/": each out of range skipped.
+pacs::Timeouts readTimeouts(const QSettings& store) {
+    pacs::Timeouts t;
+    t.connectSeconds = wholeNumber(store, QStringLiteral("pacs/timeouts/connectSeconds"), 1,
+                                   kMaxTimeoutSeconds, t.connectSeconds);
+    t.associateSeconds = wholeNumber(store, QStringLiteral("pacs/timeouts/associateSeconds"), 1,
+                                     kMaxTimeoutSeconds, t.associateSeconds);
+    t.responseSeconds = wholeNumber(store, QStringLiteral("pacs/timeouts/responseSeconds"), 1,
+                                    kMaxTimeoutSeconds, t.responseSeconds);
+    return t;
+}
+
+void writeTimeouts(const pacs::Timeouts& t, QSettings& store) {
+    store.setValue(QStringLiteral("pacs/timeouts/connectSeconds"), t.connectSeconds);
+    store.setValue(QStringLiteral("pacs/timeouts/associateSeconds"), t.associateSeconds);
+    store.setValue(QStringLiteral("pacs/timeouts/responseSeconds"), t.responseSeconds);
+}
+
 void checkBeforeWriting(const PacsSettings& settings) {
     using Setting = PacsSettingsError::Setting;
     try {
@@ -147,6 +166,14 @@ void checkBeforeWriting(const PacsSettings& settings) {
         settings.listenerLimits.validate();
     } catch (const InvalidArgumentError& e) {
         throw PacsSettingsError(Setting::ListenerLimits, {}, e.what());
+    }
+    const pacs::Timeouts& t = settings.me.timeouts;
+    for (const int seconds : {t.connectSeconds, t.associateSeconds, t.responseSeconds}) {
+        if (seconds < 1 || seconds > kMaxTimeoutSeconds) {
+            throw PacsSettingsError(
+                Setting::Timeouts, {},
+                "timeouts: each must be 1 to " + std::to_string(kMaxTimeoutSeconds) + " s");
+        }
     }
     std::set<std::string> names;
     for (const PacsNode& node : settings.nodes) {
@@ -194,6 +221,7 @@ PacsSettings readPacsSettings(const QSettings& store) {
     if (passes([&] { pacs::validateAeTitle(ae); })) {
         s.me.aeTitle = ae;
     }
+    s.me.timeouts = readTimeouts(store);
     s.listenerEnabled = store.value(QStringLiteral("pacs/listener/enabled"), false).toBool();
     s.listenerPort = port(store, QStringLiteral("pacs/listener/port"), s.listenerPort);
     s.listenerBindAddress =
@@ -232,6 +260,7 @@ void writePacsSettings(const PacsSettings& settings, QSettings& store) {
     checkBeforeWriting(settings);
     store.remove(QStringLiteral("pacs"));
     store.setValue(QStringLiteral("pacs/aeTitle"), QString::fromStdString(settings.me.aeTitle));
+    writeTimeouts(settings.me.timeouts, store);
     store.setValue(QStringLiteral("pacs/listener/enabled"), settings.listenerEnabled);
     store.setValue(QStringLiteral("pacs/listener/port"), int{settings.listenerPort});
     store.setValue(QStringLiteral("pacs/listener/bind"),

@@ -34,8 +34,13 @@ struct PacsNode {
     bool allowPush = true;
 };
 
+/// The longest timeout the settings take (each from 1 s): an hour.
+inline constexpr int kMaxTimeoutSeconds = 3600;
+
 struct PacsSettings {
-    pacs::LocalAe me;              ///< our AE title and timeouts
+    /// Our AE title and how long we wait for a node (connect, association,
+    /// each DIMSE message; each 1 to kMaxTimeoutSeconds).
+    pacs::LocalAe me;
     bool listenerEnabled = false;  ///< run the storage SCP while the app runs
     std::uint16_t listenerPort = 11112;
     std::string listenerBindAddress = "127.0.0.1";  ///< IPv4; 0.0.0.0: all interfaces
@@ -60,7 +65,8 @@ struct PacsSettings {
 /// Reads the settings from `store` ("pacs/" group). Missing entries take the
 /// defaults above (storeFolder: defaultStoreFolder()); an invalid entry (AE
 /// title, port out of range, a node without host, a listener limit out of
-/// the range ListenerLimits::validate() states) is skipped, never guessed.
+/// the range ListenerLimits::validate() states, a timeout not within 1 to
+/// kMaxTimeoutSeconds) is skipped, never guessed.
 /// Listener limits that do not fit together (connections in all below the
 /// simultaneous associations, per address above in all; the largest
 /// association below the largest instance) are skipped together: the
@@ -79,6 +85,7 @@ class PacsSettingsError : public InvalidArgumentError {
         ListenerPort,    ///< the listener port is 0
         ListenerTls,     ///< the listener's TLS is on without its three files
         ListenerLimits,  ///< ListenerLimits::validate() refused the listener's limits
+        Timeouts,        ///< a timeout is not within 1 to kMaxTimeoutSeconds
         NodeName,        ///< a node has no name (node() empty) or shares node()'s
         Node,            ///< node()'s AE title, host or port is invalid
     };
@@ -96,9 +103,9 @@ class PacsSettingsError : public InvalidArgumentError {
 /// Writes `settings` into `store` ("pacs/" group), replacing what was there.
 /// Throws PacsSettingsError (an InvalidArgumentError) naming the setting when
 /// our AE title, a node or a port is invalid, when two nodes share a name,
-/// when the listener's TLS is on without its three files, or when its limits
-/// are invalid (what() then is ListenerLimits::validate()'s); then nothing
-/// is written.
+/// when the listener's TLS is on without its three files, when its limits
+/// are invalid (what() then is ListenerLimits::validate()'s), or when a
+/// timeout is not within 1 to kMaxTimeoutSeconds; then nothing is written.
 void writePacsSettings(const PacsSettings& settings, QSettings& store);
 
 /// The local study store of `settings` (storeFolder, made when missing) with
