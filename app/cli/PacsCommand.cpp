@@ -162,7 +162,8 @@ Options parse(const std::string& sub, const std::vector<std::string>& args) {
         } else if (n == "--aet") {
             o.me.aeTitle = a.value();
         } else if (n == "--timeout") {
-            o.me.timeouts.responseSeconds = parseWholeNumber(a.value(), "--timeout", 1, 3600);
+            o.me.timeouts.responseSeconds =
+                parseWholeNumber(a.value(), "--timeout", 1, pacs::Timeouts::kMaxSeconds);
         } else if (n == "--patient-name") {
             o.study.patientName = a.value();
         } else if (n == "--patient-id") {

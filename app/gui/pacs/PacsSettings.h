@@ -34,8 +34,8 @@ struct PacsNode {
     bool allowPush = true;
 };
 
-/// The longest timeout the settings take (each from 1 s): an hour.
-inline constexpr int kMaxTimeoutSeconds = 3600;
+/// The longest timeout the settings take (each from 1 s), as the CLI's --timeout.
+inline constexpr int kMaxTimeoutSeconds = pacs::Timeouts::kMaxSeconds;
 
 struct PacsSettings {
     /// Our AE title and how long we wait for a node (connect, association,

@@ -12,6 +12,8 @@ namespace vv::pacs {
 
 /// How long each network wait may take. Every wait of vv::pacs has one of these.
 struct Timeouts {
+    /// The longest wait the front ends take for any of these (an hour; each from 1 s).
+    static constexpr int kMaxSeconds = 3600;
     int connectSeconds = 5;     ///< TCP connect
     int associateSeconds = 10;  ///< association request / release (ACSE)
     int responseSeconds = 30;   ///< each DIMSE message (a response, a dataset)
