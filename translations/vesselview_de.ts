@@ -2268,6 +2268,18 @@ Ersetzen?</translation>
         <source>Not saved: each timeout must be 1 to %L1 s.</source>
         <translation>Nicht gespeichert: Jedes Zeitlimit muss 1 bis %L1 s betragen.</translation>
     </message>
+    <message>
+        <source>Restore Defaults</source>
+        <translation>Standardwerte wiederherstellen</translation>
+    </message>
+    <message>
+        <source>Put the default timeouts into these fields; OK saves them</source>
+        <translation>Die Standard-Zeitlimits in diese Felder eintragen; OK speichert sie</translation>
+    </message>
+    <message>
+        <source>Defaults: %1, %2, %3</source>
+        <translation>Standardwerte: %1, %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>vv::gui::NodeEditDialog</name>

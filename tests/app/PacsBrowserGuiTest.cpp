@@ -296,6 +296,16 @@ TEST_F(PacsBrowserGuiTest, TimeoutsAreEditedInPreferencesAndSurviveARestart) {
     EXPECT_EQ(again->connectTimeoutBox()->value(), 3);
     EXPECT_EQ(again->associateTimeoutBox()->value(), 20);
     EXPECT_EQ(again->responseTimeoutBox()->text(), QStringLiteral("600 s"));
+    // The defaults are named (a number never split from its unit) and restored in one click.
+    auto* named = again->findChild<QLabel*>(QStringLiteral("timeoutsDefaults"));
+    ASSERT_NE(named, nullptr);
+    EXPECT_EQ(named->text(), QStringLiteral("Defaults: 5\u00a0s, 10\u00a0s, 30\u00a0s"));
+    auto* restore = again->findChild<QPushButton*>(QStringLiteral("restoreTimeouts"));
+    ASSERT_NE(restore, nullptr);
+    restore->click();
+    EXPECT_EQ(again->connectTimeoutBox()->value(), defaults.connectSeconds);
+    EXPECT_EQ(again->associateTimeoutBox()->value(), defaults.associateSeconds);
+    EXPECT_EQ(again->responseTimeoutBox()->value(), defaults.responseSeconds);
 }
 
 /// Needs the listener core of issue 31 (the per-address cap).

@@ -53,6 +53,10 @@ TEST_P(PacsGuiLanguageTest, PreferencesShowEveryTextInFull) {
     auto* dialog = preferences();
     dialog->nodeTable()->selectRow(0);
     expectWhole(*dialog, "pacs-preferences");
+    // It can also be made small enough for a 1280 x 720 screen, with room for
+    // a title bar and a panel (60 px).
+    EXPECT_LE(dialog->minimumSizeHint().height(), 720 - 60);
+    EXPECT_LE(dialog->minimumSizeHint().width(), 1280);
     // The listener limits among them: in the UI language, numbers in its locale.
     const bool german = QLatin1String(GetParam()) == QLatin1String("de");
     const vv::gui::ListenerLimitsBox* limits = dialog->listenerLimitsBox();

@@ -104,13 +104,13 @@ ListenerLimitsBox::ListenerLimitsBox(const pacs::ListenerLimits& limits, QWidget
     restore_->setObjectName(QStringLiteral("restoreListenerLimits"));
     restore_->setToolTip(tr("Put the defaults into these fields; OK saves them"));
     connect(restore_, &QPushButton::clicked, this, [this] { setLimits(pacs::ListenerLimits{}); });
+    // The button beside the defaults, not under them: the dialog fits 1280 x 720.
     auto* restoreRow = new QHBoxLayout;
-    restoreRow->addStretch();
-    restoreRow->addWidget(restore_);
+    restoreRow->addWidget(defaults_, 1);
+    restoreRow->addWidget(restore_, 0, Qt::AlignBottom);
 
     auto* layout = new QVBoxLayout(this);
     layout->addLayout(form);
-    layout->addWidget(defaults_);
     layout->addLayout(restoreRow);
     setLimits(limits);
 }

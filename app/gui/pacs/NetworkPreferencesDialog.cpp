@@ -7,11 +7,13 @@
 #include <QDoubleSpinBox>
 #include <QFileDialog>
 #include <QFormLayout>
+#include <QGridLayout>
 #include <QGroupBox>
 #include <QHBoxLayout>
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
+#include <QLocale>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
@@ -134,7 +136,7 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
     table_ = makeResultTable(
         nodes, QStringLiteral("pacsNodes"),
         {tr("Name"), tr("AE title"), tr("Host"), tr("Port"), tr("TLS"), tr("May send to us")});
-    table_->setMinimumHeight(140);
+    table_->setMinimumHeight(110);  // a header and three nodes
     nodesLayout->addWidget(table_);
     auto* buttonRow = new QHBoxLayout;
     add_ = new QPushButton(tr("&Add…"), nodes);
@@ -197,32 +199,57 @@ NetworkPreferencesDialog::NetworkPreferencesDialog(QWidget* parent) : QDialog(pa
 }
 
 QGroupBox* NetworkPreferencesDialog::makeTimeoutsBox(const pacs::Timeouts& t) {
+    // Two rows (names over boxes), so that the dialog fits a 1280 x 720 screen.
     auto* waits = new QGroupBox(tr("Timeouts"), this);
     waits->setObjectName(QStringLiteral("timeouts"));
     waits->setToolTip(tr("How long VesselView waits for a PACS node before it gives up"));
-    auto* waitsForm = new QFormLayout(waits);
-    const auto secondsBox = [waits](const QString& name, int seconds, const QString& tip) {
+    auto* grid = new QGridLayout(waits);
+    int column = 0;
+    const auto secondsBox = [waits, grid, &column](const QString& name, const QString& label,
+                                                   int seconds, const QString& tip) {
         auto* box = new QSpinBox(waits);
         box->setObjectName(name);
         box->setRange(1, kMaxTimeoutSeconds);
         box->setSuffix(tr(" s"));
         box->setValue(seconds);
         box->setToolTip(tip);
+        auto* title = new QLabel(label, waits);
+        title->setBuddy(box);
+        grid->addWidget(title, 0, column);
+        grid->addWidget(box, 1, column);
+        ++column;
         return box;
     };
     connectTimeout_ =
-        secondsBox(QStringLiteral("connectTimeout"), t.connectSeconds,
+        secondsBox(QStringLiteral("connectTimeout"), tr("Connect:"), t.connectSeconds,
                    tr("How long the node's computer may take to accept the connection"));
     associateTimeout_ = secondsBox(
-        QStringLiteral("associateTimeout"), t.associateSeconds,
+        QStringLiteral("associateTimeout"), tr("Association:"), t.associateSeconds,
         tr("How long the node may take to accept or reject the association, and to release it"));
     responseTimeout_ = secondsBox(
-        QStringLiteral("responseTimeout"), t.responseSeconds,
+        QStringLiteral("responseTimeout"), tr("Each answer:"), t.responseSeconds,
         tr("How long the node may take for each answer (a search result, a status, an image); "
            "raise it for a slow PACS"));
-    waitsForm->addRow(tr("Connect:"), connectTimeout_);
-    waitsForm->addRow(tr("Association:"), associateTimeout_);
-    waitsForm->addRow(tr("Each answer:"), responseTimeout_);
+    const pacs::Timeouts standard;
+    const QLocale locale;
+    // A number never breaks from its unit.
+    const auto seconds = [&locale](int n) { return locale.toString(n) + QChar(0x00A0) + 's'; };
+    auto* defaults =
+        new QLabel(tr("Defaults: %1, %2, %3")
+                       .arg(seconds(standard.connectSeconds), seconds(standard.associateSeconds),
+                            seconds(standard.responseSeconds)),
+                   waits);
+    defaults->setObjectName(QStringLiteral("timeoutsDefaults"));
+    auto* restore = new QPushButton(tr("Restore Defaults"), waits);
+    restore->setObjectName(QStringLiteral("restoreTimeouts"));
+    restore->setToolTip(tr("Put the default timeouts into these fields; OK saves them"));
+    connect(restore, &QPushButton::clicked, this, [this, standard] {
+        connectTimeout_->setValue(standard.connectSeconds);
+        associateTimeout_->setValue(standard.associateSeconds);
+        responseTimeout_->setValue(standard.responseSeconds);
+    });
+    grid->addWidget(defaults, 0, column);
+    grid->addWidget(restore, 1, column);
     return waits;
 }
 
