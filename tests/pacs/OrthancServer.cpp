@@ -13,7 +13,6 @@
 #include <cstdlib>
 #include <fstream>
 #include <mutex>
-#include <set>
 #include <sstream>
 #include <stdexcept>
 #include <thread>
@@ -73,8 +72,9 @@ bool unused(int port) {
 
 /// Reserves `port` among this user's test processes until this process
 /// ends: an exclusive flock on a file named after it, never released (the
-/// kernel releases it at exit, also after a crash). Tests run side by side
-/// under ctest -j, each its own process.
+/// kernel releases it at exit, also after a crash), also when the port
+/// turns out to be in use. Tests run side by side under ctest -j, each its
+/// own process.
 bool reserve(int port) {
     auto lock =
         vv::pacs::detail::FileLock::tryExclusive(portLockFile(static_cast<std::uint16_t>(port)));
@@ -100,7 +100,6 @@ fs::path portLockFile(std::uint16_t port) {
 
 std::uint16_t freePort() {
     static std::mutex mutex;
-    static std::set<int> given;
     const std::lock_guard lock(mutex);
     const auto [first, last] = testPorts();
     const int count = last - first + 1;
@@ -113,11 +112,11 @@ std::uint16_t freePort() {
     for (int tried = 0; tried < count; ++tried) {
         const int port = first + next;
         next = (next + 1) % count;
-        if (!given.contains(port) && unused(port) && reserve(port)) {
-            if (unused(port)) {  // again, now that no other test can take it
-                given.insert(port);
-                return static_cast<std::uint16_t>(port);
-            }
+        // Reserved first, then checked: no other test can take it in between. A
+        // port this process gave out earlier stays reserved by it, so it fails
+        // here too (flock: another open file of the same process is refused).
+        if (reserve(port) && unused(port)) {
+            return static_cast<std::uint16_t>(port);
         }
     }
     throw std::runtime_error("no free port between " + std::to_string(first) + " and " +

@@ -81,19 +81,15 @@ ListenerLimitsBox::ListenerLimitsBox(const pacs::ListenerLimits& limits, QWidget
     const pacs::ListenerLimits standard;
     const QLocale locale;
     const auto count = [&locale](int n) { return locale.toString(n); };
-    // A quantity never breaks between its number and its unit.
-    const auto quantity = [&locale](double value, const char* unit) {
-        return locale.toString(value, 'g', 6) + QChar(0x00A0) + QLatin1String(unit);
-    };
-    const auto gigabytes = [&quantity](std::uint64_t bytes) {
-        return quantity(static_cast<double>(bytes) / kBytesPerGb, "GB");
+    const auto gigabytes = [](std::uint64_t bytes) {
+        return quantityText(static_cast<double>(bytes) / kBytesPerGb, "GB");
     };
     defaults_ = new QLabel(
         tr("Defaults: %1 associations, %2 per address, %3 in all, %4, %5 per instance, %6 per "
            "association. Addresses that are no configured node get at most %7 connections each, "
            "%8 together.")
             .arg(count(standard.maxAssociations), count(standard.maxConnectionsPerAddress),
-                 count(standard.maxConnections), quantity(standard.requestSeconds, "s"),
+                 count(standard.maxConnections), quantityText(standard.requestSeconds, "s"),
                  gigabytes(standard.maxInstanceBytes), gigabytes(standard.maxAssociationBytes),
                  count(pacs::ListenerLimits::kStrangerConnectionsPerAddress),
                  count(pacs::ListenerLimits::kStrangerConnections)),

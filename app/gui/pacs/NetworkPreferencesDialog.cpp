@@ -13,7 +13,6 @@
 #include <QLabel>
 #include <QLayout>
 #include <QLineEdit>
-#include <QLocale>
 #include <QPushButton>
 #include <QSettings>
 #include <QSpinBox>
@@ -231,9 +230,7 @@ QGroupBox* NetworkPreferencesDialog::makeTimeoutsBox(const pacs::Timeouts& t) {
         tr("How long the node may take for each answer (a search result, a status, an image); "
            "raise it for a slow PACS"));
     const pacs::Timeouts standard;
-    const QLocale locale;
-    // A number never breaks from its unit.
-    const auto seconds = [&locale](int n) { return locale.toString(n) + QChar(0x00A0) + 's'; };
+    const auto seconds = [](int n) { return quantityText(n, "s"); };
     auto* defaults =
         new QLabel(tr("Defaults: %1, %2, %3")
                        .arg(seconds(standard.connectSeconds), seconds(standard.associateSeconds),

@@ -87,6 +87,10 @@ QDoubleSpinBox* makeGigabyteBox(QWidget* parent, const QString& objectName, int 
     return box;
 }
 
+QString quantityText(double value, const char* unit) {
+    return QLocale().toString(value, 'g', 6) + QChar(0x00A0) + QLatin1String(unit);
+}
+
 std::uint64_t bytesOf(const QDoubleSpinBox* box) {
     return static_cast<std::uint64_t>(std::llround(box->value() * kBytesPerGb));
 }

@@ -38,6 +38,10 @@ void showProblemText(QLabel* label, const ProblemText& problem);
 /// OK and Cancel, wired to `dialog`'s accept() and reject().
 [[nodiscard]] QDialogButtonBox* makeOkCancel(QDialog* dialog);
 
+/// `value` in the UI locale (up to 6 significant digits) and its `unit`
+/// ("5 s", "4 GB"), joined by a no-break space: never split over two lines.
+[[nodiscard]] QString quantityText(double value, const char* unit);
+
 /// Bytes in a GB of the UI, as the CLI's NGB counts them.
 inline constexpr double kBytesPerGb = 1e9;
 
